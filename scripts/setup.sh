@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Installs every Debian package Bridgescope needs to build, test and run.
+# Non-interactive and idempotent: when everything is present it only asks dpkg and exits.
+set -euo pipefail
+
+PACKAGES=(
+    # toolchain
+    g++ cmake ninja-build pkg-config ccache
+    # Qt 6 (Widgets, Charts, Svg, Sql/SQLite, translations)
+    qt6-base-dev libqt6opengl6-dev libxkbcommon-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    libqt6sql6-sqlite qtkeychain-qt6-dev
+    # MQTT: the C++ package does not pull in the C library it needs
+    libpaho-mqttpp-dev libpaho-mqtt-dev libssl-dev openssl
+    # YAML
+    libyaml-cpp-dev
+    # ROS 1 (roscpp, generic subscribers, bags, message headers used by tests)
+    libroscpp-dev libtopic-tools-dev librosbag-dev ros-core-dev
+    libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
+    # servers the tests and the demo start
+    mosquitto mosquitto-clients
+    # headless GUI runs, report checks, reference computations
+    xvfb xauth poppler-utils python3-numpy python3-yaml python3-genmsg
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    exit 0
+fi
+
+echo "setup: installing ${#missing[@]} Debian package(s): ${missing[*]}"
+SUDO=()
+if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null; then
+        SUDO=(sudo)
+    else
+        echo "setup: need root (or sudo) to install: ${missing[*]}" >&2
+        exit 1
+    fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${SUDO[@]}" apt-get update -qq
+"${SUDO[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"
