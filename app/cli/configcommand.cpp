@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: MIT
+#include "configcommand.h"
+
+#include "clioutput.h"
+#include "common/atomicfile.h"
+#include "config/configreader.h"
+#include "config/configvalidator.h"
+#include "config/configwriter.h"
+#include "config/peerconfig.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFile>
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+using CliOutput::out;
+
+namespace {
+
+class ConfigCommand
+{
+    Q_DECLARE_TR_FUNCTIONS(ConfigCommand)
+public:
+    enum Exit { Valid = 0, Invalid = 1, Unreadable = 2 };
+
+    static QString usage()
+    {
+        return tr(
+            "Usage: bridgescope config <command> [options]\n"
+            "\n"
+            "Commands:\n"
+            "  validate FILE...                         check bridge configs; exit 0 valid, 1 invalid, 2 "
+            "unreadable\n"
+            "  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout\n"
+            "  peer FILE [--client-id ID]               write the config for the other end of the link\n"
+            "\n"
+            "Run 'bridgescope config <command> --help' for the options of a command.");
+    }
+
+    // Parses a sub-command's options; returns -1 to go on, or the exit code.
+    static int parse(QCommandLineParser& parser, const QStringList& args, const QString& description)
+    {
+        parser.setApplicationDescription(description);
+        const QCommandLineOption help({u"h"_s, u"help"_s}, tr("Show this help."));
+        parser.addOption(help);
+        if (!parser.parse(args)) {
+            err(parser.errorText());
+            err(tr("Run '%1 --help' for usage.").arg(args.first()));
+            return Unreadable;
+        }
+        if (parser.isSet(help)) {
+            out(parser.helpText());
+            return Valid;
+        }
+        return -1;
+    }
+
+    struct Loaded
+    {
+        ConfigReadResult read;
+        int exit = Valid;
+    };
+
+    static Loaded load(const QString& path)
+    {
+        Loaded l;
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly)) {
+            err(tr("%1: error: cannot read the file: %2").arg(path, file.errorString()));
+            l.exit = Unreadable;
+            return l;
+        }
+        l.read = ConfigReader::read(file.readAll());
+        if (!l.read.parsed) {
+            for (const Problem& p : std::as_const(l.read.problems))
+                err(p.format(path));
+            l.exit = Invalid;
+        }
+        return l;
+    }
+
+    static int writeOutput(const QString& outPath, const QString& text)
+    {
+        if (outPath.isEmpty() || outPath == u"-"_s) {
+            QByteArray bytes = text.toUtf8();
+            std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stdout);
+            std::fflush(stdout);
+            return Valid;
+        }
+        QString error;
+        if (!AtomicFile::write(outPath, text.toUtf8(), &error)) {
+            err(tr("%1: error: %2").arg(outPath, error));
+            return Unreadable;
+        }
+        return Valid;
+    }
+
+    static int validate(const QStringList& args)
+    {
+        QCommandLineParser parser;
+        const QCommandLineOption quiet({u"q"_s, u"quiet"_s}, tr("Print errors only, no warnings."));
+        parser.addOption(quiet);
+        parser.addPositionalArgument(u"FILE"_s, tr("Bridge configs (mqtt_client ROS 1/ROS 2, mqtt_bridge)."),
+                                     u"FILE..."_s);
+        if (const int r
+            = parse(parser, args,
+                    tr("Checks bridge configs. Prints FILE:LINE:COL: severity: message (fix) for each "
+                       "problem. Exit status: 0 all valid (warnings allowed), 1 some invalid, 2 some "
+                       "unreadable."));
+            r >= 0)
+            return r;
+        const QStringList files = parser.positionalArguments();
+        if (files.isEmpty()) {
+            err(tr("bridgescope config validate: no FILE given"));
+            return Unreadable;
+        }
+        int worst = Valid;
+        for (const QString& path : files) {
+            Loaded l = load(path);
+            if (l.exit != Valid) {
+                worst = std::max(worst, l.exit);
+                continue;
+            }
+            QList<Problem> problems = l.read.problems + ConfigValidator::validate(l.read.config);
+            std::stable_sort(problems.begin(), problems.end(), [](const Problem& a, const Problem& b) {
+                return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.column < b.pos.column;
+            });
+            for (const Problem& p : std::as_const(problems)) {
+                if (p.severity == Severity::Error || !parser.isSet(quiet))
+                    out(p.format(path));
+            }
+            if (hasErrors(problems))
+                worst = std::max(worst, int(Invalid));
+        }
+        return worst;
+    }
+
+    static int convert(const QStringList& args)
+    {
+        QCommandLineParser parser;
+        const QCommandLineOption to(u"to"_s, tr("Layout to write: ros1, ros2 or mqtt_bridge."), u"LAYOUT"_s);
+        const QCommandLineOption output({u"o"_s, u"output"_s}, tr("Write to OUT instead of standard output."),
+                                        u"OUT"_s);
+        const QCommandLineOption node(u"node"_s,
+                                      tr("ROS 2 node name above ros__parameters (default: as read, "
+                                         "or mqtt_client)."),
+                                      u"NAME"_s);
+        parser.addOptions({to, output, node});
+        parser.addPositionalArgument(u"FILE"_s, tr("The bridge config to convert."));
+        if (const int r = parse(parser, args,
+                                tr("Writes a bridge config in another layout; unknown keys, "
+                                   "substitutions and values behind aliases are kept."));
+            r >= 0)
+            return r;
+        ConfigLayout layout;
+        if (parser.positionalArguments().size() != 1 || !parser.isSet(to)
+            || !layoutFromName(parser.value(to), &layout)) {
+            err(tr("Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT]"));
+            return Unreadable;
+        }
+        const QString path = parser.positionalArguments().first();
+        Loaded l = load(path);
+        if (l.exit != Valid)
+            return l.exit;
+        BridgeConfig cfg = l.read.config;
+        if (parser.isSet(node))
+            cfg.ros2NodeName = parser.value(node);
+        QStringList notes;
+        const QString text = ConfigWriter::write(cfg, layout, &notes);
+        for (const QString& n : std::as_const(notes))
+            err(tr("%1: note: %2").arg(path, n));
+        return writeOutput(parser.value(output), text);
+    }
+
+    static int peer(const QStringList& args)
+    {
+        QCommandLineParser parser;
+        const QCommandLineOption output({u"o"_s, u"output"_s}, tr("Write to OUT instead of standard output."),
+                                        u"OUT"_s);
+        const QCommandLineOption clientId(u"client-id"_s,
+                                          tr("Client id of the peer (default: the id with "
+                                             "\"_peer\" appended)."),
+                                          u"ID"_s);
+        const QCommandLineOption to(u"to"_s, tr("Layout to write (default: the input's)."), u"LAYOUT"_s);
+        parser.addOptions({output, clientId, to});
+        parser.addPositionalArgument(u"FILE"_s, tr("This host's bridge config."));
+        if (const int r = parse(parser, args,
+                                tr("Writes the config for the other end of the link: every ros2mqtt "
+                                   "becomes an mqtt2ros and the reverse."));
+            r >= 0)
+            return r;
+        if (parser.positionalArguments().size() != 1) {
+            err(tr("Usage: bridgescope config peer FILE [-o OUT] [--client-id ID]"));
+            return Unreadable;
+        }
+        const QString path = parser.positionalArguments().first();
+        Loaded l = load(path);
+        if (l.exit != Valid)
+            return l.exit;
+        ConfigLayout layout = l.read.config.layout;
+        if (parser.isSet(to) && !layoutFromName(parser.value(to), &layout)) {
+            err(tr("--to takes ros1, ros2 or mqtt_bridge"));
+            return Unreadable;
+        }
+        const PeerConfig::Result peerResult = PeerConfig::make(l.read.config, parser.value(clientId));
+        QStringList notes = peerResult.notes;
+        const QString text = ConfigWriter::write(peerResult.config, layout, &notes);
+        for (const QString& n : std::as_const(notes))
+            err(tr("%1: note: %2").arg(path, n));
+        return writeOutput(parser.value(output), text);
+    }
+};
+
+} // namespace
+
+int runConfigCommand(const QStringList& arguments)
+{
+    // arguments: "config", <command>, ...
+    if (arguments.size() < 2 || arguments[1] == u"--help"_s || arguments[1] == u"-h"_s) {
+        out(ConfigCommand::usage());
+        return arguments.size() < 2 ? ConfigCommand::Unreadable : ConfigCommand::Valid;
+    }
+    const QString command = arguments[1];
+    QStringList rest = arguments.mid(2);
+    rest.prepend(u"bridgescope config "_s + command);
+    if (command == u"validate"_s)
+        return ConfigCommand::validate(rest);
+    if (command == u"convert"_s)
+        return ConfigCommand::convert(rest);
+    if (command == u"peer"_s)
+        return ConfigCommand::peer(rest);
+    err(ConfigCommand::tr("bridgescope config: unknown command '%1'").arg(command));
+    err(ConfigCommand::usage());
+    return ConfigCommand::Unreadable;
+}

@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: MIT
+#include "configdocument.h"
+
+#include "common/atomicfile.h"
+#include "configpatcher.h"
+#include "configreader.h"
+#include "configwriter.h"
+
+#include <algorithm>
+#include <QFile>
+#include <QFileInfo>
+
+using namespace Qt::StringLiterals;
+
+ConfigDocument::ConfigDocument(QObject* parent)
+    : QObject(parent)
+{
+    revalidate();
+}
+
+ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
+{
+    LoadResult result;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        result.unreadable = true;
+        result.error = tr("Cannot open %1: %2").arg(path, file.errorString());
+        return result;
+    }
+    const QByteArray text = file.readAll();
+    const ConfigReadResult read = ConfigReader::read(text);
+    if (!read.parsed) {
+        result.problems = read.problems;
+        result.error = read.problems.isEmpty() ? tr("%1 is not a bridge config.").arg(path)
+                                               : read.problems.first().format(path);
+        return result;
+    }
+    emit aboutToReset();
+    m_path = QFileInfo(path).absoluteFilePath();
+    m_suggestedPath.clear();
+    m_text = text;
+    m_baseline = read.config;
+    m_current = read.config;
+    m_layout = read.config.layout;
+    m_lossy = read.lossy;
+    m_modified = false;
+    m_readProblems = read.problems;
+    revalidate();
+    emit resetDone();
+    emit filePathChanged(m_path);
+    emit layoutChanged(m_layout);
+    emit modifiedChanged(false);
+    emit problemsChanged();
+    result.ok = true;
+    return result;
+}
+
+void ConfigDocument::reset(const BridgeConfig& config, const QString& suggestedPath)
+{
+    emit aboutToReset();
+    m_path.clear();
+    m_suggestedPath = suggestedPath;
+    m_text.clear();
+    m_baseline = BridgeConfig();
+    m_baseline.layout = config.layout;
+    m_current = config;
+    m_current.assignIds();
+    m_layout = config.layout;
+    m_lossy = false;
+    m_modified = true;
+    m_readProblems.clear();
+    revalidate();
+    emit resetDone();
+    emit filePathChanged(m_path);
+    emit layoutChanged(m_layout);
+    emit modifiedChanged(m_modified);
+    emit problemsChanged();
+}
+
+void ConfigDocument::clear()
+{
+    reset(BridgeConfig());
+    m_modified = false;
+    emit modifiedChanged(false);
+}
+
+void ConfigDocument::setLayout(ConfigLayout layout)
+{
+    if (layout == m_layout)
+        return;
+    m_layout = layout;
+    m_current.layout = layout;
+    emit layoutChanged(layout);
+    changed();
+}
+
+void ConfigDocument::setValidationOptions(const ConfigValidator::Options& options)
+{
+    m_validation = options;
+    revalidate();
+    emit problemsChanged();
+}
+
+QString ConfigDocument::preview(ConfigLayout layout, bool* keepsComments, QStringList* notes) const
+{
+    if (!m_text.isEmpty() && layout == m_baseline.layout && !m_lossy) {
+        BridgeConfig wanted = m_current;
+        wanted.layout = layout;
+        if (const auto patched = ConfigPatcher::patch(m_text, m_baseline, wanted)) {
+            if (keepsComments)
+                *keepsComments = true;
+            return QString::fromUtf8(*patched);
+        }
+    }
+    if (keepsComments)
+        *keepsComments = m_text.isEmpty();
+    return ConfigWriter::write(m_current, layout, notes);
+}
+
+ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayout layout, bool allowRewrite)
+{
+    SaveResult result;
+    BridgeConfig wanted = m_current;
+    wanted.layout = layout;
+    QByteArray bytes;
+    if (!m_text.isEmpty() && layout == m_baseline.layout && !m_lossy) {
+        QString why;
+        if (const auto patched = ConfigPatcher::patch(m_text, m_baseline, wanted, &why))
+            bytes = *patched;
+        else
+            result.rewriteReason = tr("this edit cannot be made in place (%1)").arg(why);
+    } else if (!m_text.isEmpty()) {
+        result.rewriteReason = m_lossy ? tr("parts of the file could not be read and would be lost")
+                                       : tr("the file is saved in another layout");
+    }
+    if (bytes.isEmpty()) {
+        if (!m_text.isEmpty() && !allowRewrite) {
+            result.status = SaveResult::NeedsRewrite;
+            return result;
+        }
+        bytes = ConfigWriter::write(wanted, layout, &result.notes).toUtf8();
+        result.rewritten = !m_text.isEmpty();
+    }
+    if (!AtomicFile::write(path, bytes, &result.error)) {
+        result.status = SaveResult::Failed;
+        return result;
+    }
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    const bool pathChanged = absolute != m_path;
+    m_path = absolute;
+    m_suggestedPath.clear();
+    if (m_layout != layout) {
+        m_layout = layout;
+        emit layoutChanged(layout);
+    }
+    adoptSaved(bytes);
+    if (pathChanged)
+        emit filePathChanged(m_path);
+    result.status = SaveResult::Saved;
+    return result;
+}
+
+// After a save, the written text is the new baseline: read it back and give its mappings the
+// ids of the mappings in memory (matched by content), so that undo history and views stay valid.
+void ConfigDocument::adoptSaved(const QByteArray& text)
+{
+    const ConfigReadResult read = ConfigReader::read(text);
+    m_text = text;
+    m_lossy = false;
+    m_readProblems = read.problems;
+    BridgeConfig baseline = read.config;
+    QList<bool> used(m_current.mappings.size(), false);
+    for (Mapping& b : baseline.mappings) {
+        for (int i = 0; i < m_current.mappings.size(); ++i) {
+            if (!used[i] && m_current.mappings[i].sameContent(b)) {
+                used[i] = true;
+                b.id = m_current.mappings[i].id;
+                m_current.mappings[i].block.source = b.block.source;
+                break;
+            }
+        }
+    }
+    m_current.broker.source = baseline.broker.source;
+    m_current.client.source = baseline.client.source;
+    m_current.layout = baseline.layout;
+    m_baseline = baseline;
+    m_modified = false;
+    emit modifiedChanged(false);
+    revalidate();
+    emit problemsChanged();
+}
+
+void ConfigDocument::insertMappings(int row, const QList<Mapping>& mappings)
+{
+    if (mappings.isEmpty())
+        return;
+    row = std::clamp(row, 0, mappingCount());
+    emit mappingsAboutToBeInserted(row, row + int(mappings.size()) - 1);
+    for (int i = 0; i < mappings.size(); ++i) {
+        Mapping m = mappings[i];
+        if (m.id == 0)
+            m.id = Mapping::nextId();
+        m_current.mappings.insert(row + i, m);
+    }
+    emit mappingsInserted();
+    changed();
+}
+
+void ConfigDocument::removeMappings(const QList<quint64>& ids)
+{
+    QList<int> rows;
+    for (quint64 id : ids) {
+        const int row = rowOf(id);
+        if (row >= 0)
+            rows << row;
+    }
+    if (rows.isEmpty())
+        return;
+    std::sort(rows.begin(), rows.end());
+    // Remove contiguous runs from the back, so that each signal names rows that still exist.
+    int i = int(rows.size()) - 1;
+    while (i >= 0) {
+        int j = i;
+        while (j > 0 && rows[j - 1] == rows[j] - 1)
+            --j;
+        emit mappingsAboutToBeRemoved(rows[j], rows[i]);
+        m_current.mappings.remove(rows[j], rows[i] - rows[j] + 1);
+        emit mappingsRemoved();
+        i = j - 1;
+    }
+    changed();
+}
+
+void ConfigDocument::replaceMapping(const Mapping& mapping)
+{
+    const int row = rowOf(mapping.id);
+    if (row < 0)
+        return;
+    Mapping m = mapping;
+    if (m.direction != m_current.mappings[row].direction)
+        m.block.source = SourceMap(); // a new entry in the other list
+    m_current.mappings[row] = m;
+    emit mappingChanged(row);
+    changed();
+}
+
+void ConfigDocument::setBlock(OptionScope scope, const OptionBlock& block)
+{
+    if (scope != OptionScope::Broker && scope != OptionScope::Client)
+        return;
+    OptionBlock& target = m_current.block(scope);
+    const SourceMap source = target.source;
+    target = block;
+    target.source = source;
+    emit settingsChanged();
+    changed();
+}
+
+QList<Problem> ConfigDocument::problemsOf(quint64 mappingId) const
+{
+    QList<Problem> out;
+    for (const Problem& p : m_problems) {
+        if (p.mappingId == mappingId)
+            out << p;
+    }
+    return out;
+}
+
+Severity ConfigDocument::worstSeverity(quint64 mappingId, bool* any) const
+{
+    const auto it = m_severity.constFind(mappingId);
+    if (any)
+        *any = it != m_severity.cend();
+    return it == m_severity.cend() ? Severity::Info : *it;
+}
+
+void ConfigDocument::changed()
+{
+    bool modified = m_current.layout != m_baseline.layout || !m_current.sameSettings(m_baseline)
+        || m_current.mappings.size() != m_baseline.mappings.size();
+    for (int i = 0; !modified && i < m_current.mappings.size(); ++i) {
+        const Mapping& a = m_current.mappings[i];
+        const Mapping& b = m_baseline.mappings[i];
+        modified = a.id != b.id || !a.sameContent(b);
+    }
+    if (m_text.isEmpty() && m_path.isEmpty())
+        modified = modified || !m_current.mappings.isEmpty();
+    revalidate();
+    emit problemsChanged();
+    if (modified != m_modified) {
+        m_modified = modified;
+        emit modifiedChanged(modified);
+    }
+}
+
+void ConfigDocument::revalidate()
+{
+    // Reading problems (structure) stay visible beside the rule checks.
+    m_problems = m_readProblems + ConfigValidator::validate(m_current, m_validation);
+    m_severity.clear();
+    for (const Problem& p : std::as_const(m_problems)) {
+        if (p.mappingId == 0)
+            continue;
+        auto it = m_severity.find(p.mappingId);
+        if (it == m_severity.end())
+            m_severity.insert(p.mappingId, p.severity);
+        else if (int(p.severity) > int(*it))
+            *it = p.severity;
+    }
+}

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "bridgeconfig.h"
+#include "configvalidator.h"
+#include "problem.h"
+
+#include <QObject>
+
+/// An open bridge config: the file it came from, its edits, and its problems.
+///
+/// Views and undo commands change it only through the edit functions below; each emits
+/// fine-grained signals (rows about to be inserted/removed, one row changed) so that models can
+/// forward them without resetting. Saving edits the original text in place where possible, so
+/// comments survive (see ConfigPatcher).
+class ConfigDocument : public QObject
+{
+    Q_OBJECT
+public:
+    explicit ConfigDocument(QObject* parent = nullptr);
+
+    struct LoadResult
+    {
+        bool ok = false;
+        bool unreadable = false; ///< the file could not be read at all (as opposed to invalid)
+        QString error; ///< why it could not be opened
+        QList<Problem> problems; ///< syntax/structure problems when !ok
+    };
+    struct SaveResult
+    {
+        enum Status { Saved, NeedsRewrite, Failed };
+        Status status = Failed;
+        QString error; ///< when Failed
+        QString rewriteReason; ///< when NeedsRewrite: why comments cannot be kept
+        bool rewritten = false; ///< when Saved: the whole file was written anew
+        QStringList notes; ///< what the layout could not express
+    };
+
+    LoadResult load(const QString& path);
+    /// Replaces the document by `config` (no file), e.g. a generated peer config.
+    void reset(const BridgeConfig& config, const QString& suggestedPath = QString());
+    void clear();
+    /// Saves to `path` in `layout`. Without `allowRewrite`, a save that cannot keep the file's
+    /// comments stops with NeedsRewrite so that the user can be asked first.
+    SaveResult save(const QString& path, ConfigLayout layout, bool allowRewrite);
+    /// What a save in `layout` would write now, and whether the file's comments would be kept.
+    QString preview(ConfigLayout layout, bool* keepsComments = nullptr, QStringList* notes = nullptr) const;
+
+    const BridgeConfig& config() const { return m_current; }
+    const Mapping& mapping(int row) const { return m_current.mappings.at(row); }
+    int mappingCount() const { return int(m_current.mappings.size()); }
+    int rowOf(quint64 id) const { return m_current.indexOfMapping(id); }
+    QString filePath() const { return m_path; }
+    QString suggestedPath() const { return m_suggestedPath; }
+    ConfigLayout layout() const { return m_layout; }
+    void setLayout(ConfigLayout layout);
+    bool isModified() const { return m_modified; }
+    bool hasFileText() const { return !m_text.isEmpty(); }
+    const QList<Problem>& problems() const { return m_problems; }
+    QList<Problem> problemsOf(quint64 mappingId) const;
+    Severity worstSeverity(quint64 mappingId, bool* any) const;
+    void setValidationOptions(const ConfigValidator::Options& options);
+
+    // Edits (each one emits its signals and revalidates).
+    void insertMappings(int row, const QList<Mapping>& mappings);
+    void removeMappings(const QList<quint64>& ids);
+    void replaceMapping(const Mapping& mapping);
+    void setBlock(OptionScope scope, const OptionBlock& block);
+
+signals:
+    void aboutToReset();
+    void resetDone();
+    void mappingsAboutToBeInserted(int first, int last);
+    void mappingsInserted();
+    void mappingsAboutToBeRemoved(int first, int last);
+    void mappingsRemoved();
+    void mappingChanged(int row);
+    void settingsChanged();
+    void problemsChanged();
+    void modifiedChanged(bool modified);
+    void filePathChanged(const QString& path);
+    void layoutChanged(ConfigLayout layout);
+
+private:
+    void changed();
+    void revalidate();
+    void adoptSaved(const QByteArray& text);
+
+    QString m_path;
+    QString m_suggestedPath;
+    QByteArray m_text; ///< the file as last read or written
+    BridgeConfig m_baseline; ///< what m_text reads as
+    BridgeConfig m_current;
+    ConfigLayout m_layout = ConfigLayout::Ros1;
+    bool m_lossy = false;
+    bool m_modified = false;
+    QList<Problem> m_readProblems; ///< structure problems found when the file was read
+    QList<Problem> m_problems;
+    QHash<quint64, Severity> m_severity;
+    ConfigValidator::Options m_validation;
+};

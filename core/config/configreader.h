@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "bridgeconfig.h"
+#include "problem.h"
+
+#include <QByteArray>
+#include <QCoreApplication>
+
+/// What reading a config file gave: the config, and what was wrong with the text itself.
+struct ConfigReadResult
+{
+    BridgeConfig config;
+    QList<Problem> problems; ///< YAML syntax and structure problems (rules come from ConfigValidator)
+    bool parsed = false; ///< false: not YAML, or not a bridge config at all
+    bool lossy = false; ///< parts of the file have no place in the model; a rewrite would lose them
+};
+
+/// Reads mqtt_client (ROS 1 and ROS 2 layouts) and mqtt_bridge configs; detects the layout.
+class ConfigReader
+{
+    Q_DECLARE_TR_FUNCTIONS(ConfigReader)
+public:
+    static ConfigReadResult read(const QByteArray& text);
+    /// mqtt_bridge "std_msgs.msg:Bool" <-> ROS "std_msgs/Bool".
+    static QString rosTypeFromMqttBridge(const QString& msgType);
+    static QString mqttBridgeTypeFromRos(const QString& rosType);
+};

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "bridgeconfig.h"
+#include "problem.h"
+
+#include <functional>
+#include <QCoreApplication>
+
+/// Checks a config against what mqtt_client accepts and what works on a real link.
+///
+/// Every problem names the mapping, says how to fix it, and points at the line it came from.
+/// Errors make a file invalid; warnings (missing TLS files, a buffer without client id, ...) do not.
+class ConfigValidator
+{
+    Q_DECLARE_TR_FUNCTIONS(ConfigValidator)
+public:
+    struct Options
+    {
+        /// Where mqtt_client resolves relative paths; empty: $ROS_HOME, else ~/.ros.
+        QString rosHome;
+        /// Whether a file exists (replaceable in tests); default: QFileInfo::exists.
+        std::function<bool(const QString&)> fileExists;
+    };
+
+    static QList<Problem> validate(const BridgeConfig& config, const Options& options = {});
+
+    /// ROS graph resource name rules (ROS 1; `strict` adds the ROS 2 ones).
+    static bool isValidRosName(const QString& name, bool strict, QString* why = nullptr);
+    /// MQTT topic rules; `publish` forbids wildcards.
+    static bool isValidMqttTopic(const QString& topic, bool publish, QString* why = nullptr);
+    static bool hasWildcard(const QString& topic);
+    /// Whether an MQTT subscription filter matches a topic name.
+    static bool topicMatches(const QString& filter, const QString& topic);
+    /// How mqtt_client resolves a relative file path.
+    static QString resolvePath(const QString& path, const QString& rosHome);
+};

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#include "problem.h"
+
+#include <QCoreApplication>
+
+using namespace Qt::StringLiterals;
+
+QString Problem::severityName(Severity s)
+{
+    switch (s) {
+    case Severity::Info:
+        return u"note"_s;
+    case Severity::Warning:
+        return u"warning"_s;
+    case Severity::Error:
+        return u"error"_s;
+    }
+    return QString();
+}
+
+QString Problem::format(const QString& fileName) const
+{
+    const int line = pos.isValid() ? pos.line + 1 : 1;
+    const int column = pos.isValid() ? pos.column + 1 : 1;
+    QString text = fileName + u':' + QString::number(line) + u':' + QString::number(column) + u": "_s
+        + severityName(severity) + u": "_s + message;
+    if (!fix.isEmpty())
+        text += u" ("_s + fix + u')';
+    return text;
+}
+
+bool hasErrors(const QList<Problem>& problems)
+{
+    for (const Problem& p : problems) {
+        if (p.severity == Severity::Error)
+            return true;
+    }
+    return false;
+}

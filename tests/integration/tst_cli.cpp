@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// The command line contract of `bridgescope config ...`, run as the real program.
+#include "config/configreader.h"
+#include "fixtures.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+struct Run
+{
+    int exit = -1;
+    QString out;
+    QString err;
+};
+
+Run bridgescope(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
+    Run r;
+    if (!p.waitForFinished(30000)) {
+        p.kill();
+        return r;
+    }
+    r.exit = p.exitCode();
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& text)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    f.write(text);
+    return path;
+}
+} // namespace
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+private slots:
+    void validateExitCodes()
+    {
+        QTemporaryDir dir;
+        const QString valid = Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s);
+        const QString invalid = writeFile(
+            dir, u"bad.yaml"_s, "bridge:\n  ros2mqtt:\n    - ros_topic: /a\n      mqtt_topic: a/#\n");
+        const QString syntax = writeFile(dir, u"syntax.yaml"_s, "bridge: [\n");
+
+        Run r = bridgescope({u"config"_s, u"validate"_s, valid});
+        QCOMPARE(r.exit, 0);
+        QCOMPARE(r.out, QString());
+
+        r = bridgescope({u"config"_s, u"validate"_s, valid, invalid});
+        QCOMPARE(r.exit, 1);
+        QVERIFY2(r.out.startsWith(invalid + u":4:19: error: "_s), qPrintable(r.out));
+
+        r = bridgescope({u"config"_s, u"validate"_s, syntax});
+        QCOMPARE(r.exit, 1);
+        QVERIFY2(r.err.contains(syntax + u":2:1: error: YAML syntax error"_s), qPrintable(r.err));
+
+        r = bridgescope({u"config"_s, u"validate"_s, invalid, dir.filePath(u"missing.yaml"_s)});
+        QCOMPARE(r.exit, 2);
+        QVERIFY(r.err.contains(u"missing.yaml"_s));
+
+        // Warnings alone keep a file valid.
+        r = bridgescope(
+            {u"config"_s, u"validate"_s, Fixtures::path(u"mqtt_client/ros1-era-params.aws.yaml"_s)});
+        QCOMPARE(r.exit, 0);
+        QVERIFY(r.out.contains(u": warning: "_s));
+        r = bridgescope({u"config"_s, u"validate"_s, u"--quiet"_s,
+                         Fixtures::path(u"mqtt_client/ros1-era-params.aws.yaml"_s)});
+        QCOMPARE(r.out, QString());
+    }
+
+    void convertAndPeerWriteFiles()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath(u"ros2.yaml"_s);
+        Run r = bridgescope({u"config"_s, u"convert"_s,
+                             Fixtures::path(u"benchmarking_suite/mqtt_client_cloud.yaml"_s), u"--to"_s,
+                             u"ros2"_s, u"-o"_s, out});
+        QCOMPARE(r.exit, 0);
+        QFile f(out);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const ConfigReadResult read = ConfigReader::read(f.readAll());
+        QCOMPARE(read.config.layout, ConfigLayout::Ros2);
+        QCOMPARE(read.config.mappings.size(), 11);
+
+        r = bridgescope({u"config"_s, u"peer"_s, Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s),
+                         u"--client-id"_s, u"far_end"_s});
+        QCOMPARE(r.exit, 0);
+        const ConfigReadResult peer = ConfigReader::read(r.out.toUtf8());
+        QCOMPARE(peer.config.client.values.text(u"id"_s), u"far_end"_s);
+        QCOMPARE(peer.config.mappings.size(), 4);
+
+        r = bridgescope({u"config"_s, u"convert"_s, Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s),
+                         u"--to"_s, u"mqtt_bridge"_s});
+        QCOMPARE(r.exit, 0);
+        QVERIFY(r.err.contains(u"note:"_s)); // no ros_type: mqtt_bridge needs it
+        QVERIFY(r.out.contains(u"factory: mqtt_bridge.bridge:RosToMqttBridge"_s));
+
+        r = bridgescope({u"config"_s, u"convert"_s, Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s),
+                         u"--to"_s, u"ros3"_s});
+        QCOMPARE(r.exit, 2);
+    }
+
+    void everyCommandHasHelp_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("config") << QStringList {u"config"_s, u"--help"_s};
+        QTest::newRow("validate") << QStringList {u"config"_s, u"validate"_s, u"--help"_s};
+        QTest::newRow("convert") << QStringList {u"config"_s, u"convert"_s, u"--help"_s};
+        QTest::newRow("peer") << QStringList {u"config"_s, u"peer"_s, u"--help"_s};
+        QTest::newRow("top") << QStringList {u"--help"_s};
+    }
+    void everyCommandHasHelp()
+    {
+        QFETCH(QStringList, args);
+        const Run r = bridgescope(args);
+        QCOMPARE(r.exit, 0);
+        QVERIFY2(r.out.contains(u"Usage"_s) || r.out.contains(u"usage"_s), qPrintable(r.out + r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
