@@ -1,17 +1,41 @@
 // SPDX-License-Identifier: MIT
 #include "cli/clioutput.h"
 #include "cli/configcommand.h"
+#include "guimain.h"
 
 #include <QCoreApplication>
 
 using namespace Qt::StringLiterals;
 
+namespace {
+void setIdentity()
+{
+    QCoreApplication::setOrganizationName(u"Bridgescope"_s);
+    QCoreApplication::setApplicationName(u"bridgescope"_s);
+    QCoreApplication::setApplicationVersion(QStringLiteral(BRIDGESCOPE_VERSION));
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv);
-    const QStringList args = app.arguments().mid(1);
-    if (!args.isEmpty() && args.first() == u"config"_s)
+    setIdentity();
+    const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
+    const bool help = first == u"-h"_s || first == u"--help"_s;
+    const bool version = first == u"-v"_s || first == u"--version"_s;
+    if (first == u"config"_s || help || version) {
+        // Commands need no display.
+        QCoreApplication app(argc, argv);
+        installTranslations(app);
+        const QStringList args = app.arguments().mid(1);
+        if (help) {
+            CliOutput::out(bridgescopeUsage());
+            return 0;
+        }
+        if (version) {
+            CliOutput::out(u"bridgescope "_s + QCoreApplication::applicationVersion());
+            return 0;
+        }
         return runConfigCommand(args);
-    CliOutput::err(u"usage: bridgescope config ..."_s);
-    return 2;
+    }
+    return runGui(argc, argv);
 }

@@ -31,6 +31,16 @@ void ProblemModel::refresh()
     emit countsChanged(m_errors, m_warnings);
 }
 
+QString ProblemModel::countText(int errors, int warnings)
+{
+    QStringList parts;
+    if (errors > 0)
+        parts << (errors == 1 ? tr("1 error") : tr("%1 errors").arg(errors));
+    if (warnings > 0)
+        parts << (warnings == 1 ? tr("1 warning") : tr("%1 warnings").arg(warnings));
+    return parts.isEmpty() ? tr("no problems") : parts.join(u", "_s);
+}
+
 int ProblemModel::rowCount(const QModelIndex& parent) const
 {
     return parent.isValid() ? 0 : int(m_problems.size());

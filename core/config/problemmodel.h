@@ -26,6 +26,8 @@ public:
     const Problem& problem(int row) const { return m_problems.at(row); }
     int errorCount() const { return m_errors; }
     int warningCount() const { return m_warnings; }
+    /// "no problems", "1 error", "2 errors, 1 warning", ...
+    static QString countText(int errors, int warnings);
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include "guimain.h"
+
+#include "cli/clioutput.h"
+#include "configfilecontroller.h"
+#include "mainwindow.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QLibraryInfo>
+#include <QTimer>
+#include <QTranslator>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+class Gui
+{
+    Q_DECLARE_TR_FUNCTIONS(Gui)
+};
+} // namespace
+
+void installTranslations(QCoreApplication& app)
+{
+    auto* ours = new QTranslator(&app);
+    if (ours->load(QLocale(), u"bridgescope"_s, u"_"_s, u":/i18n"_s))
+        app.installTranslator(ours);
+    auto* qt = new QTranslator(&app);
+    if (qt->load(QLocale(), u"qtbase"_s, u"_"_s, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        app.installTranslator(qt);
+}
+
+QString bridgescopeUsage()
+{
+    return Gui::tr("Usage: bridgescope [options] [FILE.yaml]\n"
+                   "       bridgescope <command> [options]\n"
+                   "\n"
+                   "Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.\n"
+                   "\n"
+                   "Options:\n"
+                   "  --screenshot PNG   render the main window to PNG and exit\n"
+                   "  --after SECONDS    wait this long before the screenshot (default 1)\n"
+                   "  -h, --help         show this help\n"
+                   "  -v, --version      show the version\n"
+                   "\n"
+                   "Commands:\n"
+                   "  config validate|convert|peer   check, convert and pair bridge configs\n"
+                   "\n"
+                   "Run 'bridgescope <command> --help' for the options of a command.");
+}
+
+int runGui(int& argc, char** argv)
+{
+    QApplication app(argc, argv);
+    installTranslations(app);
+    QCommandLineParser parser;
+    const QCommandLineOption screenshot(u"screenshot"_s, Gui::tr("Render the main window to PNG and exit."),
+                                        u"PNG"_s);
+    const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
+                                   u"SECONDS"_s, u"1"_s);
+    parser.addOptions({screenshot, after});
+    parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
+    if (!parser.parse(app.arguments())) {
+        CliOutput::err(parser.errorText());
+        CliOutput::err(bridgescopeUsage());
+        return 2;
+    }
+    MainWindow window;
+    const QStringList files = parser.positionalArguments();
+    if (!files.isEmpty())
+        window.files()->openFile(files.first());
+    window.show();
+    if (parser.isSet(screenshot)) {
+        const QString png = parser.value(screenshot);
+        bool ok = false;
+        const double seconds = parser.value(after).toDouble(&ok);
+        if (!ok || seconds < 0) {
+            CliOutput::err(Gui::tr("--after takes a number of seconds"));
+            return 2;
+        }
+        QTimer::singleShot(int(seconds * 1000), &window, [&window, png] {
+            const bool saved = window.grab().save(png);
+            if (!saved)
+                CliOutput::err(Gui::tr("Cannot write the screenshot %1").arg(png));
+            QCoreApplication::exit(saved ? 0 : 1);
+        });
+    }
+    return app.exec();
+}

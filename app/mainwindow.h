@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QMainWindow>
+
+class ConfigDocument;
+class ConfigEditor;
+class ConfigFileController;
+class QLabel;
+class QMenu;
+class QTabWidget;
+class QUndoStack;
+
+/// The main window: wires the pages, menus and status bar together and does nothing else.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    ConfigDocument* document() const { return m_document; }
+    QUndoStack* undoStack() const { return m_undo; }
+    ConfigEditor* configEditor() const { return m_configEditor; }
+    ConfigFileController* files() const { return m_files; }
+    QTabWidget* pages() const { return m_pages; }
+
+protected:
+    void closeEvent(class QCloseEvent* event) override;
+
+private:
+    void createMenus();
+    void updateTitle();
+    void updateRecentMenu(const QStringList& files);
+
+    ConfigDocument* m_document;
+    QUndoStack* m_undo;
+    ConfigFileController* m_files;
+    QTabWidget* m_pages;
+    ConfigEditor* m_configEditor;
+    QMenu* m_recentMenu = nullptr;
+    QLabel* m_problemStatus;
+};

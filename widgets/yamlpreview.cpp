@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+#include "yamlpreview.h"
+
+#include "config/configdocument.h"
+
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QRegularExpression>
+#include <QScrollBar>
+#include <QSyntaxHighlighter>
+#include <QTimer>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Keys, comments and substitutions in colour, so that the structure reads at a glance.
+class YamlHighlighter : public QSyntaxHighlighter
+{
+public:
+    using QSyntaxHighlighter::QSyntaxHighlighter;
+
+protected:
+    void highlightBlock(const QString& text) override
+    {
+        static const QRegularExpression key(uR"(^\s*(- )?([^\s#:][^#:]*):(\s|$))"_s);
+        static const QRegularExpression comment(uR"((^|\s)#.*$)"_s);
+        static const QRegularExpression substitution(uR"(\$\([^)]*\))"_s);
+        QTextCharFormat keyFormat;
+        keyFormat.setForeground(QColor(0x1f, 0x5f, 0xa8));
+        keyFormat.setFontWeight(QFont::DemiBold);
+        QTextCharFormat commentFormat;
+        commentFormat.setForeground(QColor(0x6a, 0x73, 0x7d));
+        commentFormat.setFontItalic(true);
+        QTextCharFormat subFormat;
+        subFormat.setForeground(QColor(0x8a, 0x3f, 0xa0));
+        if (const auto m = key.match(text); m.hasMatch())
+            setFormat(int(m.capturedStart(2)), int(m.capturedLength(2)), keyFormat);
+        for (auto it = substitution.globalMatch(text); it.hasNext();) {
+            const auto m = it.next();
+            setFormat(int(m.capturedStart()), int(m.capturedLength()), subFormat);
+        }
+        if (const auto m = comment.match(text); m.hasMatch())
+            setFormat(int(m.capturedStart()), int(m.capturedLength()), commentFormat);
+    }
+};
+} // namespace
+
+YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
+    : QWidget(parent)
+    , m_doc(document)
+    , m_timer(new QTimer(this))
+{
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    auto* h = new QHBoxLayout;
+    m_layout = new QComboBox(this);
+    m_layout->setObjectName(u"previewLayout"_s);
+    m_layout->addItem(tr("mqtt_client, ROS 1"), int(ConfigLayout::Ros1));
+    m_layout->addItem(tr("mqtt_client, ROS 2"), int(ConfigLayout::Ros2));
+    m_layout->addItem(tr("mqtt_bridge"), int(ConfigLayout::MqttBridge));
+    auto* label = new QLabel(tr("&Layout:"), this);
+    label->setBuddy(m_layout);
+    h->addWidget(label);
+    h->addWidget(m_layout);
+    h->addStretch(1);
+    v->addLayout(h);
+    m_note = new QLabel(this);
+    m_note->setWordWrap(true);
+    v->addWidget(m_note);
+    m_text = new QPlainTextEdit(this);
+    m_text->setObjectName(u"previewText"_s);
+    m_text->setReadOnly(true);
+    m_text->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    new YamlHighlighter(m_text->document());
+    v->addWidget(m_text, 1);
+
+    // Quick edits arrive one after another; the preview is computed once they pause.
+    m_timer->setSingleShot(true);
+    m_timer->setInterval(150);
+    connect(m_timer, &QTimer::timeout, this, &YamlPreview::refreshNow);
+    auto later = [this] { m_timer->start(); };
+    connect(m_doc, &ConfigDocument::problemsChanged, this, later);
+    connect(m_doc, &ConfigDocument::resetDone, this, [this] {
+        setLayout(m_doc->layout());
+        m_timer->start();
+    });
+    connect(m_doc, &ConfigDocument::layoutChanged, this, [this](ConfigLayout l) { setLayout(l); });
+    connect(m_layout, &QComboBox::currentIndexChanged, this, later);
+    refreshNow();
+}
+
+ConfigLayout YamlPreview::layout() const
+{
+    return ConfigLayout(m_layout->currentData().toInt());
+}
+
+void YamlPreview::setLayout(ConfigLayout layout)
+{
+    m_layout->setCurrentIndex(m_layout->findData(int(layout)));
+}
+
+QString YamlPreview::text() const
+{
+    return m_text->toPlainText();
+}
+
+void YamlPreview::refreshNow()
+{
+    m_timer->stop();
+    bool keeps = false;
+    QStringList notes;
+    const QString yaml = m_doc->preview(layout(), &keeps, &notes);
+    QStringList lines;
+    if (m_doc->hasFileText()) {
+        lines << (keeps ? tr("Saving edits the file in place: comments and formatting are kept.")
+                        : tr("Saving in this layout writes the file anew: its comments are not kept."));
+    }
+    lines += notes;
+    m_note->setText(lines.join(u'\n'));
+    m_note->setVisible(!lines.isEmpty());
+    // Keep the reader's place when the text is replaced.
+    const int scroll = m_text->verticalScrollBar() ? m_text->verticalScrollBar()->value() : 0;
+    m_text->setPlainText(yaml);
+    m_text->verticalScrollBar()->setValue(scroll);
+}

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "config/bridgeconfig.h"
+
+#include <QWidget>
+
+class ConfigDocument;
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QTimer;
+
+/// The YAML that saving would write, in a chosen layout, updated as the config changes.
+class YamlPreview : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit YamlPreview(ConfigDocument* document, QWidget* parent = nullptr);
+    ConfigLayout layout() const;
+    void setLayout(ConfigLayout layout);
+    QString text() const;
+    /// Recomputes now instead of after the short delay that batches quick edits.
+    void refreshNow();
+
+private:
+    ConfigDocument* m_doc;
+    QComboBox* m_layout;
+    QLabel* m_note;
+    QPlainTextEdit* m_text;
+    QTimer* m_timer;
+};
