@@ -1,4 +1,1367 @@
-<?xml version="1.0" encoding="utf-8"?>
+<?xml version='1.0' encoding='utf-8'?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
+<context>
+    <name>AtomicFile</name>
+    <message>
+        <source>cannot create a temporary file in %1: %2</source>
+        <translation>kann in %1 keine temporäre Datei anlegen: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>kann %1 nicht schreiben: %2</translation>
+    </message>
+    <message>
+        <source>cannot keep the previous file as %1: %2</source>
+        <translation>kann die vorige Datei nicht als %1 behalten: %2</translation>
+    </message>
+    <message>
+        <source>cannot keep the previous file as %1</source>
+        <translation>kann die vorige Datei nicht als %1 behalten</translation>
+    </message>
+    <message>
+        <source>cannot replace %1: %2</source>
+        <translation>kann %1 nicht ersetzen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigCommand</name>
+    <message>
+        <source>Usage: bridgescope config &lt;command&gt; [options]
+
+Commands:
+  validate FILE...                         check bridge configs; exit 0 valid, 1 invalid, 2 unreadable
+  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout
+  peer FILE [--client-id ID]               write the config for the other end of the link
+
+Run 'bridgescope config &lt;command&gt; --help' for the options of a command.</source>
+        <translation>Aufruf: bridgescope config &lt;Befehl&gt; [Optionen]
+
+Befehle:
+  validate DATEI...                        Bridge-Konfigurationen prüfen; Status 0 gültig, 1 ungültig, 2 unlesbar
+  convert DATEI --to ros1|ros2|mqtt_bridge Konfiguration in einem anderen Layout schreiben
+  peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben
+
+'bridgescope config &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+    </message>
+    <message>
+        <source>Show this help.</source>
+        <translation>Diese Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Run '%1 --help' for usage.</source>
+        <translation>'%1 --help' zeigt die Verwendung.</translation>
+    </message>
+    <message>
+        <source>%1: error: cannot read the file: %2</source>
+        <translation>%1: error: Datei nicht lesbar: %2</translation>
+    </message>
+    <message>
+        <source>%1: error: %2</source>
+        <translation>%1: error: %2</translation>
+    </message>
+    <message>
+        <source>Print errors only, no warnings.</source>
+        <translation>Nur Fehler ausgeben, keine Warnungen.</translation>
+    </message>
+    <message>
+        <source>Bridge configs (mqtt_client ROS 1/ROS 2, mqtt_bridge).</source>
+        <translation>Bridge-Konfigurationen (mqtt_client ROS 1/ROS 2, mqtt_bridge).</translation>
+    </message>
+    <message>
+        <source>Checks bridge configs. Prints FILE:LINE:COL: severity: message (fix) for each problem. Exit status: 0 all valid (warnings allowed), 1 some invalid, 2 some unreadable.</source>
+        <translation>Prüft Bridge-Konfigurationen. Gibt je Problem DATEI:ZEILE:SPALTE: Schwere: Meldung (Abhilfe) aus. Exit-Status: 0 alle gültig (Warnungen erlaubt), 1 mindestens eine ungültig, 2 mindestens eine unlesbar.</translation>
+    </message>
+    <message>
+        <source>bridgescope config validate: no FILE given</source>
+        <translation>bridgescope config validate: keine DATEI angegeben</translation>
+    </message>
+    <message>
+        <source>Layout to write: ros1, ros2 or mqtt_bridge.</source>
+        <translation>Zu schreibendes Layout: ros1, ros2 oder mqtt_bridge.</translation>
+    </message>
+    <message>
+        <source>Write to OUT instead of standard output.</source>
+        <translation>Nach AUS statt auf die Standardausgabe schreiben.</translation>
+    </message>
+    <message>
+        <source>ROS 2 node name above ros__parameters (default: as read, or mqtt_client).</source>
+        <translation>ROS-2-Knotenname über ros__parameters (Vorgabe: wie gelesen, sonst mqtt_client).</translation>
+    </message>
+    <message>
+        <source>The bridge config to convert.</source>
+        <translation>Die zu konvertierende Bridge-Konfiguration.</translation>
+    </message>
+    <message>
+        <source>Writes a bridge config in another layout; unknown keys, substitutions and values behind aliases are kept.</source>
+        <translation>Schreibt eine Bridge-Konfiguration in einem anderen Layout; unbekannte Schlüssel, Substitutionen und Werte hinter Aliasen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT]</source>
+        <translation>Aufruf: bridgescope config convert DATEI --to ros1|ros2|mqtt_bridge [-o AUS]</translation>
+    </message>
+    <message>
+        <source>%1: note: %2</source>
+        <translation>%1: note: %2</translation>
+    </message>
+    <message>
+        <source>Client id of the peer (default: the id with "_peer" appended).</source>
+        <translation>Client-ID der Gegenstelle (Vorgabe: die ID mit angehängtem "_peer").</translation>
+    </message>
+    <message>
+        <source>Layout to write (default: the input's).</source>
+        <translation>Zu schreibendes Layout (Vorgabe: das der Eingabe).</translation>
+    </message>
+    <message>
+        <source>This host's bridge config.</source>
+        <translation>Die Bridge-Konfiguration dieses Rechners.</translation>
+    </message>
+    <message>
+        <source>Writes the config for the other end of the link: every ros2mqtt becomes an mqtt2ros and the reverse.</source>
+        <translation>Schreibt die Konfiguration für das andere Ende der Strecke: aus jedem ros2mqtt wird ein mqtt2ros und umgekehrt.</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope config peer FILE [-o OUT] [--client-id ID]</source>
+        <translation>Aufruf: bridgescope config peer DATEI [-o AUS] [--client-id ID]</translation>
+    </message>
+    <message>
+        <source>--to takes ros1, ros2 or mqtt_bridge</source>
+        <translation>--to erwartet ros1, ros2 oder mqtt_bridge</translation>
+    </message>
+    <message>
+        <source>bridgescope config: unknown command '%1'</source>
+        <translation>bridgescope config: unbekannter Befehl '%1'</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigDocument</name>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 lässt sich nicht öffnen: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a bridge config.</source>
+        <translation>%1 ist keine Bridge-Konfiguration.</translation>
+    </message>
+    <message>
+        <source>this edit cannot be made in place (%1)</source>
+        <translation>diese Änderung lässt sich nicht direkt in der Datei vornehmen (%1)</translation>
+    </message>
+    <message>
+        <source>parts of the file could not be read and would be lost</source>
+        <translation>Teile der Datei waren nicht lesbar und gingen verloren</translation>
+    </message>
+    <message>
+        <source>the file is saved in another layout</source>
+        <translation>die Datei wird in einem anderen Layout gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigEditor</name>
+    <message>
+        <source>Edit topic</source>
+        <translation>Topic bearbeiten</translation>
+    </message>
+    <message>
+        <source>Add ROS → MQTT Mapping</source>
+        <translation>Zuordnung ROS → MQTT hinzufügen</translation>
+    </message>
+    <message>
+        <source>Bridge a ROS topic to MQTT (Insert)</source>
+        <translation>Ein ROS-Topic nach MQTT übertragen (Einfg)</translation>
+    </message>
+    <message>
+        <source>+ ROS → MQTT</source>
+        <translation>+ ROS → MQTT</translation>
+    </message>
+    <message>
+        <source>Add MQTT → ROS Mapping</source>
+        <translation>Zuordnung MQTT → ROS hinzufügen</translation>
+    </message>
+    <message>
+        <source>Bridge an MQTT topic to ROS (Shift+Insert)</source>
+        <translation>Ein MQTT-Topic nach ROS übertragen (Umschalt+Einfg)</translation>
+    </message>
+    <message>
+        <source>+ MQTT → ROS</source>
+        <translation>+ MQTT → ROS</translation>
+    </message>
+    <message>
+        <source>Delete Mappings</source>
+        <translation>Zuordnungen löschen</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Duplicate Mappings</source>
+        <translation>Zuordnungen duplizieren</translation>
+    </message>
+    <message>
+        <source>Filter mappings (topic or option)…</source>
+        <translation>Zuordnungen filtern (Topic oder Option) …</translation>
+    </message>
+    <message>
+        <source>Both directions</source>
+        <translation>Beide Richtungen</translation>
+    </message>
+    <message>
+        <source>With problems</source>
+        <translation>Mit Problemen</translation>
+    </message>
+    <message>
+        <source>&amp;Mapping</source>
+        <translation>&amp;Zuordnung</translation>
+    </message>
+    <message>
+        <source>&amp;Broker &amp;&amp; client</source>
+        <translation>&amp;Broker und Client</translation>
+    </message>
+    <message>
+        <source>&amp;YAML</source>
+        <translation>&amp;YAML</translation>
+    </message>
+    <message>
+        <source>Add ROS → MQTT mapping</source>
+        <translation>Zuordnung ROS → MQTT hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add MQTT → ROS mapping</source>
+        <translation>Zuordnung MQTT → ROS hinzufügen</translation>
+    </message>
+    <message>
+        <source>Delete mapping</source>
+        <translation>Zuordnung löschen</translation>
+    </message>
+    <message>
+        <source>Delete %1 mappings</source>
+        <translation>%1 Zuordnungen löschen</translation>
+    </message>
+    <message>
+        <source>Duplicate mapping</source>
+        <translation>Zuordnung duplizieren</translation>
+    </message>
+    <message>
+        <source>Duplicate %1 mappings</source>
+        <translation>%1 Zuordnungen duplizieren</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigFileController</name>
+    <message>
+        <source>mqtt_client config, ROS 1 (*.yaml *.yml)</source>
+        <translation>mqtt_client-Konfiguration, ROS 1 (*.yaml *.yml)</translation>
+    </message>
+    <message>
+        <source>mqtt_client config, ROS 2 (*.yaml *.yml)</source>
+        <translation>mqtt_client-Konfiguration, ROS 2 (*.yaml *.yml)</translation>
+    </message>
+    <message>
+        <source>mqtt_bridge config (*.yaml *.yml)</source>
+        <translation>mqtt_bridge-Konfiguration (*.yaml *.yml)</translation>
+    </message>
+    <message>
+        <source>Cannot open the config</source>
+        <translation>Konfiguration lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>Opened %1 (mappings: %2)</source>
+        <translation>%1 geöffnet (Zuordnungen: %2)</translation>
+    </message>
+    <message>
+        <source>The file cannot keep its comments and formatting: %1.
+
+Saving writes it anew (the previous file stays as %2.bak). Save anyway?</source>
+        <translation>Die Datei kann ihre Kommentare und Formatierung nicht behalten: %1.
+
+Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erhalten). Trotzdem speichern?</translation>
+    </message>
+    <message>
+        <source>Rewrite the file?</source>
+        <translation>Datei neu schreiben?</translation>
+    </message>
+    <message>
+        <source>Cannot save the config</source>
+        <translation>Konfiguration lässt sich nicht speichern</translation>
+    </message>
+    <message>
+        <source>Nothing was changed on disk: %1</source>
+        <translation>Auf der Festplatte wurde nichts verändert: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Cannot export the config</source>
+        <translation>Konfiguration lässt sich nicht exportieren</translation>
+    </message>
+    <message>
+        <source>Exported %1 as %2%3</source>
+        <translation>%1 als %2 exportiert%3</translation>
+    </message>
+    <message>
+        <source>Cannot write the peer config</source>
+        <translation>Gegenstellen-Konfiguration lässt sich nicht schreiben</translation>
+    </message>
+    <message>
+        <source>Wrote the peer config %1%2</source>
+        <translation>Gegenstellen-Konfiguration %1 geschrieben%2</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The bridge config has unsaved changes. Save them?</source>
+        <translation>Die Bridge-Konfiguration hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Open Bridge Config</source>
+        <translation>Bridge-Konfiguration öffnen</translation>
+    </message>
+    <message>
+        <source>YAML files (*.yaml *.yml);;All files (*)</source>
+        <translation>YAML-Dateien (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save Bridge Config</source>
+        <translation>Bridge-Konfiguration speichern</translation>
+    </message>
+    <message>
+        <source>Export Bridge Config</source>
+        <translation>Bridge-Konfiguration exportieren</translation>
+    </message>
+    <message>
+        <source>Save Peer Config</source>
+        <translation>Gegenstellen-Konfiguration speichern</translation>
+    </message>
+    <message>
+        <source>Peer config written</source>
+        <translation>Gegenstellen-Konfiguration geschrieben</translation>
+    </message>
+    <message>
+        <source>Open the peer config %1 now?</source>
+        <translation>Die Gegenstellen-Konfiguration %1 jetzt öffnen?</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigReader</name>
+    <message>
+        <source>'%1' must be a map of options, not a %2.</source>
+        <translation>'%1' muss eine Map von Optionen sein, keine %2.</translation>
+    </message>
+    <message>
+        <source>Write the options as 'key: value' lines below '%1'.</source>
+        <translation>Optionen als Zeilen 'schlüssel: wert' unter '%1' schreiben.</translation>
+    </message>
+    <message>
+        <source>'%1' must be a single value, not a %2.</source>
+        <translation>'%1' muss ein einzelner Wert sein, keine %2.</translation>
+    </message>
+    <message>
+        <source>Write it as '%1: value'.</source>
+        <translation>Als '%1: wert' schreiben.</translation>
+    </message>
+    <message>
+        <source>map</source>
+        <translation>Map</translation>
+    </message>
+    <message>
+        <source>list</source>
+        <translation>Liste</translation>
+    </message>
+    <message>
+        <source>empty value</source>
+        <translation>leerer Wert</translation>
+    </message>
+    <message>
+        <source>single value</source>
+        <translation>Einzelwert</translation>
+    </message>
+    <message>
+        <source>'bridge' must be a map with 'ros2mqtt' and 'mqtt2ros' lists.</source>
+        <translation>'bridge' muss eine Map mit den Listen 'ros2mqtt' und 'mqtt2ros' sein.</translation>
+    </message>
+    <message>
+        <source>'bridge.%1' must be a list of mappings ('- ros_topic: ...').</source>
+        <translation>'bridge.%1' muss eine Liste von Zuordnungen sein ('- ros_topic: ...').</translation>
+    </message>
+    <message>
+        <source>This looks like the ROS 2 layout; it needs '&lt;node&gt;: ros__parameters:' around it, or write the mappings as a list.</source>
+        <translation>Das sieht nach dem ROS-2-Layout aus; dann gehört '&lt;knoten&gt;: ros__parameters:' darum, sonst die Zuordnungen als Liste schreiben.</translation>
+    </message>
+    <message>
+        <source>Entry %1 of 'bridge.%2' must be a map with 'ros_topic' and 'mqtt_topic'.</source>
+        <translation>Eintrag %1 von 'bridge.%2' muss eine Map mit 'ros_topic' und 'mqtt_topic' sein.</translation>
+    </message>
+    <message>
+        <source>'bridge' must be a map with 'ros2mqtt' and 'mqtt2ros'.</source>
+        <translation>'bridge' muss eine Map mit 'ros2mqtt' und 'mqtt2ros' sein.</translation>
+    </message>
+    <message>
+        <source>'bridge.%1' must be a map with '%2' and one entry per topic.</source>
+        <translation>'bridge.%1' muss eine Map mit '%2' und einem Eintrag je Topic sein.</translation>
+    </message>
+    <message>
+        <source>'bridge.%1.%2' must be a list of topic names.</source>
+        <translation>'bridge.%1.%2' muss eine Liste von Topic-Namen sein.</translation>
+    </message>
+    <message>
+        <source>'%1' is listed in '%2' but has no settings below 'bridge.%3'.</source>
+        <translation>'%1' steht in '%2', hat aber keine Einstellungen unter 'bridge.%3'.</translation>
+    </message>
+    <message>
+        <source>Add '%1:' with its '%2' below 'bridge.%3'.</source>
+        <translation>'%1:' mit '%2' unter 'bridge.%3' ergänzen.</translation>
+    </message>
+    <message>
+        <source>'%1' has settings below 'bridge.%2' but is not listed in '%3'; mqtt_client ignores it.</source>
+        <translation>'%1' hat Einstellungen unter 'bridge.%2', steht aber nicht in '%3'; mqtt_client ignoriert es.</translation>
+    </message>
+    <message>
+        <source>Add '%1' to '%2' or remove its settings.</source>
+        <translation>'%1' in '%2' aufnehmen oder seine Einstellungen entfernen.</translation>
+    </message>
+    <message>
+        <source>mqtt_bridge's 'bridge' must be a list of factories.</source>
+        <translation>'bridge' von mqtt_bridge muss eine Liste von Factories sein.</translation>
+    </message>
+    <message>
+        <source>Entry %1 of 'bridge' must be a map with 'factory', 'msg_type', 'topic_from' and 'topic_to'.</source>
+        <translation>Eintrag %1 von 'bridge' muss eine Map mit 'factory', 'msg_type', 'topic_from' und 'topic_to' sein.</translation>
+    </message>
+    <message>
+        <source>Entry %1 of 'bridge' has factory '%2'; only mqtt_bridge's RosToMqttBridge and MqttToRosBridge are understood.</source>
+        <translation>Eintrag %1 von 'bridge' hat die Factory '%2'; verstanden werden nur RosToMqttBridge und MqttToRosBridge von mqtt_bridge.</translation>
+    </message>
+    <message>
+        <source>YAML syntax error: %1</source>
+        <translation>YAML-Syntaxfehler: %1</translation>
+    </message>
+    <message>
+        <source>Fix the YAML at this place; nothing else could be checked.</source>
+        <translation>YAML an dieser Stelle korrigieren; sonst ließ sich nichts prüfen.</translation>
+    </message>
+    <message>
+        <source>The file is empty.</source>
+        <translation>Die Datei ist leer.</translation>
+    </message>
+    <message>
+        <source>The file is not a map; an mqtt_client config starts with 'broker:', 'client:' and 'bridge:' (or '&lt;node&gt;: ros__parameters:').</source>
+        <translation>Die Datei ist keine Map; eine mqtt_client-Konfiguration beginnt mit 'broker:', 'client:' und 'bridge:' (oder '&lt;knoten&gt;: ros__parameters:').</translation>
+    </message>
+    <message>
+        <source>'ros__parameters' must be a map.</source>
+        <translation>'ros__parameters' muss eine Map sein.</translation>
+    </message>
+    <message>
+        <source>This is not an mqtt_client or mqtt_bridge config: it has no 'bridge', 'broker', 'client' or 'ros__parameters' key.</source>
+        <translation>Das ist keine mqtt_client- oder mqtt_bridge-Konfiguration: Es fehlt ein Schlüssel 'bridge', 'broker', 'client' oder 'ros__parameters'.</translation>
+    </message>
+    <message>
+        <source>Open a bridge config; pipeline files belong on the Measure page.</source>
+        <translation>Eine Bridge-Konfiguration öffnen; Pipeline-Dateien gehören auf die Seite Messen.</translation>
+    </message>
+    <message>
+        <source>Unexpected YAML structure: %1</source>
+        <translation>Unerwartete YAML-Struktur: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigValidator</name>
+    <message>
+        <source>ros2mqtt '%1' → '%2'</source>
+        <translation>ros2mqtt '%1' → '%2'</translation>
+    </message>
+    <message>
+        <source>mqtt2ros '%1' → '%2'</source>
+        <translation>mqtt2ros '%1' → '%2'</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is only understood by the ROS 2 mqtt_client (2.3 and later); the ROS 1 mqtt_client ignores it.</source>
+        <translation>%1: '%2' versteht nur der ROS-2-mqtt_client (ab 2.3); der ROS-1-mqtt_client ignoriert es.</translation>
+    </message>
+    <message>
+        <source>Remove '%1' or save the config in the ROS 2 layout.</source>
+        <translation>'%1' entfernen oder die Konfiguration im ROS-2-Layout speichern.</translation>
+    </message>
+    <message>
+        <source>%1: QoS '%2' is not 0, 1 or 2.</source>
+        <translation>%1: QoS '%2' ist nicht 0, 1 oder 2.</translation>
+    </message>
+    <message>
+        <source>Set %1 to 0 (at most once), 1 (at least once) or 2 (exactly once).</source>
+        <translation>%1 auf 0 (höchstens einmal), 1 (mindestens einmal) oder 2 (genau einmal) setzen.</translation>
+    </message>
+    <message>
+        <source>a whole number</source>
+        <translation>eine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true oder false</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is '%3', which is not %4.</source>
+        <translation>%1: '%2' ist '%3', das ist nicht %4.</translation>
+    </message>
+    <message>
+        <source>Write %1 as %2.</source>
+        <translation>%1 als %2 schreiben.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is %3, outside %4..%5.</source>
+        <translation>%1: '%2' ist %3, außerhalb von %4..%5.</translation>
+    </message>
+    <message>
+        <source>Choose a value from %1 to %2.</source>
+        <translation>Einen Wert von %1 bis %2 wählen.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' must not be negative.</source>
+        <translation>%1: '%2' darf nicht negativ sein.</translation>
+    </message>
+    <message>
+        <source>Use 0 or a positive number.</source>
+        <translation>0 oder eine positive Zahl verwenden.</translation>
+    </message>
+    <message>
+        <source>%1: '%2: %3' is read as a number or boolean, but mqtt_client expects text%4.</source>
+        <translation>%1: '%2: %3' wird als Zahl oder Wahrheitswert gelesen, mqtt_client erwartet aber Text%4.</translation>
+    </message>
+    <message>
+        <source> (ROS 2 rejects the parameter)</source>
+        <translation> (ROS 2 lehnt den Parameter ab)</translation>
+    </message>
+    <message>
+        <source>Quote it: %1: "%2".</source>
+        <translation>In Anführungszeichen setzen: %1: "%2".</translation>
+    </message>
+    <message>
+        <source>%1: unknown key '%2'; mqtt_client ignores it.</source>
+        <translation>%1: unbekannter Schlüssel '%2'; mqtt_client ignoriert ihn.</translation>
+    </message>
+    <message>
+        <source>Did you mean '%1'?</source>
+        <translation>Ist '%1' gemeint?</translation>
+    </message>
+    <message>
+        <source>%1 has no ROS topic; mqtt_client ignores the mapping.</source>
+        <translation>%1 hat kein ROS-Topic; mqtt_client ignoriert die Zuordnung.</translation>
+    </message>
+    <message>
+        <source>Set ros_topic, e.g. /vehicle/points.</source>
+        <translation>ros_topic setzen, z. B. /vehicle/points.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a valid ROS topic name: %3.</source>
+        <translation>%1: '%2' ist kein gültiger ROS-Topic-Name: %3.</translation>
+    </message>
+    <message>
+        <source>Use letters, digits, '_' and '/', starting with a letter, '/' or '~'.</source>
+        <translation>Buchstaben, Ziffern, '_' und '/' verwenden, beginnend mit Buchstabe, '/' oder '~'.</translation>
+    </message>
+    <message>
+        <source>%1 has no MQTT topic; mqtt_client ignores the mapping.</source>
+        <translation>%1 hat kein MQTT-Topic; mqtt_client ignoriert die Zuordnung.</translation>
+    </message>
+    <message>
+        <source>Set mqtt_topic, e.g. vehicle/points.</source>
+        <translation>mqtt_topic setzen, z. B. vehicle/points.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' contains '+' or '#', but ros2mqtt publishes on it and MQTT forbids wildcards in published topics.</source>
+        <translation>%1: '%2' enthält '+' oder '#', aber ros2mqtt veröffentlicht darauf, und MQTT verbietet Platzhalter in veröffentlichten Topics.</translation>
+    </message>
+    <message>
+        <source>Replace the wildcard by a concrete topic level.</source>
+        <translation>Den Platzhalter durch eine konkrete Topic-Ebene ersetzen.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a valid MQTT topic: %3.</source>
+        <translation>%1: '%2' ist kein gültiges MQTT-Topic: %3.</translation>
+    </message>
+    <message>
+        <source>Fix the topic name.</source>
+        <translation>Den Topic-Namen korrigieren.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is a wildcard filter; mqtt_client looks incoming messages up by their exact topic, so messages matching it are dropped.</source>
+        <translation>%1: '%2' ist ein Platzhalter-Filter; mqtt_client sucht eingehende Nachrichten über ihr genaues Topic, passende Nachrichten gehen daher verloren.</translation>
+    </message>
+    <message>
+        <source>Bridge each MQTT topic with its own mqtt2ros mapping.</source>
+        <translation>Jedes MQTT-Topic mit einer eigenen mqtt2ros-Zuordnung übertragen.</translation>
+    </message>
+    <message>
+        <source>%1: '%2' starts with '/', which makes an empty first level in MQTT (a common slip when copying ROS names).</source>
+        <translation>%1: '%2' beginnt mit '/', das ergibt in MQTT eine leere erste Ebene (ein häufiges Versehen beim Kopieren von ROS-Namen).</translation>
+    </message>
+    <message>
+        <source>Remove the leading '/': '%1'.</source>
+        <translation>Das führende '/' entfernen: '%1'.</translation>
+    </message>
+    <message>
+        <source>%1: topics starting with '$' are reserved for the broker ($SYS).</source>
+        <translation>%1: Topics, die mit '$' beginnen, sind dem Broker vorbehalten ($SYS).</translation>
+    </message>
+    <message>
+        <source>Choose a topic that does not start with '$'.</source>
+        <translation>Ein Topic wählen, das nicht mit '$' beginnt.</translation>
+    </message>
+    <message>
+        <source>%1: inject_timestamp cannot be used with primitive: a primitive is sent as plain text with no room for a time stamp.</source>
+        <translation>%1: inject_timestamp geht nicht mit primitive: Ein Primitivwert wird als reiner Text gesendet, ohne Platz für einen Zeitstempel.</translation>
+    </message>
+    <message>
+        <source>Turn off primitive, or turn off inject_timestamp.</source>
+        <translation>primitive oder inject_timestamp ausschalten.</translation>
+    </message>
+    <message>
+        <source>%1: json needs ros_type: mqtt_client cannot build a ROS message from JSON without knowing its type.</source>
+        <translation>%1: json braucht ros_type: Ohne den Typ kann mqtt_client aus JSON keine ROS-Nachricht bauen.</translation>
+    </message>
+    <message>
+        <source>%1: json without ros_type: this side deduces the type from the publisher, but the receiving mqtt2ros needs it written down.</source>
+        <translation>%1: json ohne ros_type: Diese Seite ermittelt den Typ vom Publisher, das empfangende mqtt2ros braucht ihn aber ausdrücklich.</translation>
+    </message>
+    <message>
+        <source>Set ros_type, e.g. std_msgs/msg/String.</source>
+        <translation>ros_type setzen, z. B. std_msgs/msg/String.</translation>
+    </message>
+    <message>
+        <source>%1: json and primitive exclude each other.</source>
+        <translation>%1: json und primitive schließen sich aus.</translation>
+    </message>
+    <message>
+        <source>Turn one of them off.</source>
+        <translation>Eines von beiden ausschalten.</translation>
+    </message>
+    <message>
+        <source>%1: ROS topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
+        <translation>%1: ROS-Topic '%2' wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
+    </message>
+    <message>
+        <source>Remove one of the two mappings, or bridge a different ROS topic.</source>
+        <translation>Eine der beiden Zuordnungen entfernen oder ein anderes ROS-Topic übertragen.</translation>
+    </message>
+    <message>
+        <source>%1: MQTT topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
+        <translation>%1: MQTT-Topic '%2' wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
+    </message>
+    <message>
+        <source>Remove one of the two mappings, or subscribe a different MQTT topic.</source>
+        <translation>Eine der beiden Zuordnungen entfernen oder ein anderes MQTT-Topic abonnieren.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 form a loop: every message on '%3' goes to MQTT and comes back to '%3'.</source>
+        <translation>%1 und %2 bilden eine Schleife: Jede Nachricht auf '%3' geht nach MQTT und kommt auf '%3' zurück.</translation>
+    </message>
+    <message>
+        <source>Publish the returning messages on a different ROS topic.</source>
+        <translation>Die zurückkommenden Nachrichten auf einem anderen ROS-Topic veröffentlichen.</translation>
+    </message>
+    <message>
+        <source>%1.%2: '%3' does not exist on this machine (looked for %4).</source>
+        <translation>%1.%2: '%3' gibt es auf diesem Rechner nicht (gesucht als %4).</translation>
+    </message>
+    <message>
+        <source>Check the path on the machine that runs mqtt_client; relative paths are resolved against ROS_HOME.</source>
+        <translation>Den Pfad auf dem Rechner prüfen, auf dem mqtt_client läuft; relative Pfade gelten ab ROS_HOME.</translation>
+    </message>
+    <message>
+        <source>client.buffer is set but client.id is empty; mqtt_client only buffers for a client with an ID.</source>
+        <translation>client.buffer ist gesetzt, client.id aber leer; mqtt_client puffert nur für einen Client mit ID.</translation>
+    </message>
+    <message>
+        <source>Set client.id, e.g. vehicle.</source>
+        <translation>client.id setzen, z. B. vehicle.</translation>
+    </message>
+    <message>
+        <source>client.last_will.topic '%1' is not a topic the broker can publish on: %2.</source>
+        <translation>client.last_will.topic '%1' ist kein Topic, auf dem der Broker veröffentlichen kann: %2.</translation>
+    </message>
+    <message>
+        <source>Use a topic without '+' and '#'.</source>
+        <translation>Ein Topic ohne '+' und '#' verwenden.</translation>
+    </message>
+    <message>
+        <source>The config bridges nothing: it has no entries under 'bridge' (fine for a settings fragment loaded beside the bridge list).</source>
+        <translation>Die Konfiguration überträgt nichts: Unter 'bridge' steht kein Eintrag (in Ordnung für ein Einstellungs-Fragment neben der Bridge-Liste).</translation>
+    </message>
+    <message>
+        <source>The config bridges nothing: mqtt_client exits when it finds no ros2mqtt or mqtt2ros mapping.</source>
+        <translation>Die Konfiguration überträgt nichts: mqtt_client beendet sich, wenn es keine ros2mqtt- oder mqtt2ros-Zuordnung findet.</translation>
+    </message>
+    <message>
+        <source>Add a mapping.</source>
+        <translation>Eine Zuordnung hinzufügen.</translation>
+    </message>
+    <message>
+        <source>it is empty</source>
+        <translation>er ist leer</translation>
+    </message>
+    <message>
+        <source>it must start with a letter, '/' or '~'</source>
+        <translation>er muss mit einem Buchstaben, '/' oder '~' beginnen</translation>
+    </message>
+    <message>
+        <source>'%1' is not allowed (only letters, digits, '_' and '/')</source>
+        <translation>'%1' ist nicht erlaubt (nur Buchstaben, Ziffern, '_' und '/')</translation>
+    </message>
+    <message>
+        <source>it contains '//'</source>
+        <translation>er enthält '//'</translation>
+    </message>
+    <message>
+        <source>it ends with '/'</source>
+        <translation>er endet auf '/'</translation>
+    </message>
+    <message>
+        <source>'~' must be followed by '/'</source>
+        <translation>auf '~' muss '/' folgen</translation>
+    </message>
+    <message>
+        <source>in ROS 2 a name level must not start with a digit</source>
+        <translation>in ROS 2 darf eine Namensebene nicht mit einer Ziffer beginnen</translation>
+    </message>
+    <message>
+        <source>it contains a NUL character</source>
+        <translation>er enthält ein NUL-Zeichen</translation>
+    </message>
+    <message>
+        <source>it is longer than 65535 bytes</source>
+        <translation>er ist länger als 65535 Bytes</translation>
+    </message>
+    <message>
+        <source>wildcards are not allowed in a published topic</source>
+        <translation>Platzhalter sind in einem veröffentlichten Topic nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>'#' must be a whole level and the last one</source>
+        <translation>'#' muss eine ganze Ebene und die letzte sein</translation>
+    </message>
+    <message>
+        <source>'+' must be a whole level</source>
+        <translation>'+' muss eine ganze Ebene sein</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigWriter</name>
+    <message>
+        <source>%1: '%2' is bridged twice; the ROS 2 layout keys mappings by topic, so only the last one is written.</source>
+        <translation>%1: '%2' wird doppelt übertragen; das ROS-2-Layout ordnet Zuordnungen nach Topic, daher wird nur die letzte geschrieben.</translation>
+    </message>
+    <message>
+        <source>client.%1 has no equivalent in mqtt_bridge and is not written.</source>
+        <translation>client.%1 hat in mqtt_bridge keine Entsprechung und wird nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>%1: mqtt_bridge needs the message type; set ros_type (written as %2).</source>
+        <translation>%1: mqtt_bridge braucht den Nachrichtentyp; ros_type setzen (geschrieben als %2).</translation>
+    </message>
+    <message>
+        <source>%1: '%2' has no equivalent in mqtt_bridge and is not written.</source>
+        <translation>%1: '%2' hat in mqtt_bridge keine Entsprechung und wird nicht geschrieben.</translation>
+    </message>
+</context>
+<context>
+    <name>Gui</name>
+    <message>
+        <source>Usage: bridgescope [options] [FILE.yaml]
+       bridgescope &lt;command&gt; [options]
+
+Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.
+
+Options:
+  --screenshot PNG   render the main window to PNG and exit
+  --after SECONDS    wait this long before the screenshot (default 1)
+  -h, --help         show this help
+  -v, --version      show the version
+
+Commands:
+  config validate|convert|peer   check, convert and pair bridge configs
+
+Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
+        <translation>Aufruf: bridgescope [Optionen] [DATEI.yaml]
+        bridgescope &lt;Befehl&gt; [Optionen]
+
+ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.
+
+Optionen:
+  --screenshot PNG   das Hauptfenster als PNG speichern und beenden
+  --after SEKUNDEN   so lange vor dem Bildschirmfoto warten (Vorgabe 1)
+  -h, --help         diese Hilfe anzeigen
+  -v, --version      die Version anzeigen
+
+Befehle:
+  config validate|convert|peer   Bridge-Konfigurationen prüfen, umwandeln und paaren
+
+'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+    </message>
+    <message>
+        <source>Render the main window to PNG and exit.</source>
+        <translation>Das Hauptfenster als PNG speichern und beenden.</translation>
+    </message>
+    <message>
+        <source>Seconds to wait before the screenshot.</source>
+        <translation>Sekunden Wartezeit vor dem Bildschirmfoto.</translation>
+    </message>
+    <message>
+        <source>Bridge config to open.</source>
+        <translation>Zu öffnende Bridge-Konfiguration.</translation>
+    </message>
+    <message>
+        <source>--after takes a number of seconds</source>
+        <translation>--after erwartet eine Anzahl Sekunden</translation>
+    </message>
+    <message>
+        <source>Cannot write the screenshot %1</source>
+        <translation>Bildschirmfoto %1 lässt sich nicht schreiben</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <source>Map</source>
+        <translation>Zuordnen</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Öffnen …</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>&amp;Export As</source>
+        <translation>&amp;Exportieren als</translation>
+    </message>
+    <message>
+        <source>mqtt_client, ROS &amp;1…</source>
+        <translation>mqtt_client, ROS &amp;1 …</translation>
+    </message>
+    <message>
+        <source>mqtt_client, ROS &amp;2…</source>
+        <translation>mqtt_client, ROS &amp;2 …</translation>
+    </message>
+    <message>
+        <source>mqtt_&amp;bridge…</source>
+        <translation>mqtt_&amp;bridge …</translation>
+    </message>
+    <message>
+        <source>Generate &amp;Peer Config…</source>
+        <translation>&amp;Gegenstellen-Konfiguration erzeugen …</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Find Mapping</source>
+        <translation>Zuordnung &amp;suchen</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About Bridgescope</source>
+        <translation>&amp;Über Bridgescope</translation>
+    </message>
+    <message>
+        <source>About Bridgescope</source>
+        <translation>Über Bridgescope</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Bridgescope %1&lt;/h3&gt;&lt;p&gt;Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Bridgescope %1&lt;/h3&gt;&lt;p&gt;ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
+    <name>MappingInspector</name>
+    <message>
+        <source>Select a mapping to edit it, or add one with Insert.</source>
+        <translation>Eine Zuordnung auswählen, um sie zu bearbeiten, oder mit Einfg eine hinzufügen.</translation>
+    </message>
+    <message>
+        <source>&amp;Direction</source>
+        <translation>&amp;Richtung</translation>
+    </message>
+    <message>
+        <source>&amp;ROS topic</source>
+        <translation>&amp;ROS-Topic</translation>
+    </message>
+    <message>
+        <source>M&amp;QTT topic</source>
+        <translation>M&amp;QTT-Topic</translation>
+    </message>
+    <message>
+        <source>Set %1</source>
+        <translation>%1 setzen</translation>
+    </message>
+    <message>
+        <source>%1 mappings selected: a change applies to all of them.</source>
+        <translation>%1 Zuordnungen ausgewählt: Eine Änderung gilt für alle.</translation>
+    </message>
+    <message>
+        <source>e.g. /vehicle/points</source>
+        <translation>z. B. /vehicle/points</translation>
+    </message>
+    <message>
+        <source>(several)</source>
+        <translation>(mehrere)</translation>
+    </message>
+    <message>
+        <source>e.g. vehicle/points</source>
+        <translation>z. B. vehicle/points</translation>
+    </message>
+    <message>
+        <source>Error: %1</source>
+        <translation>Fehler: %1</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>Problems in the selection: %1</source>
+        <translation>Probleme in der Auswahl: %1</translation>
+    </message>
+    <message>
+        <source>%1 on %2 mappings</source>
+        <translation>%1 für %2 Zuordnungen</translation>
+    </message>
+    <message>
+        <source>Set ROS topic</source>
+        <translation>ROS-Topic setzen</translation>
+    </message>
+    <message>
+        <source>Set MQTT topic</source>
+        <translation>MQTT-Topic setzen</translation>
+    </message>
+    <message>
+        <source>Change direction</source>
+        <translation>Richtung ändern</translation>
+    </message>
+</context>
+<context>
+    <name>MappingModel</name>
+    <message>
+        <source>ROS → MQTT</source>
+        <translation>ROS → MQTT</translation>
+    </message>
+    <message>
+        <source>MQTT → ROS</source>
+        <translation>MQTT → ROS</translation>
+    </message>
+    <message>
+        <source>primitive</source>
+        <translation>primitiv</translation>
+    </message>
+    <message>
+        <source>JSON</source>
+        <translation>JSON</translation>
+    </message>
+    <message>
+        <source>stamped</source>
+        <translation>mit Zeitstempel</translation>
+    </message>
+    <message>
+        <source>QoS %1</source>
+        <translation>QoS %1</translation>
+    </message>
+    <message>
+        <source>retained</source>
+        <translation>retained</translation>
+    </message>
+    <message>
+        <source>latched</source>
+        <translation>latched</translation>
+    </message>
+    <message>
+        <source>queue %1</source>
+        <translation>Warteschlange %1</translation>
+    </message>
+    <message>
+        <source>suite stamps</source>
+        <translation>Suite-Zeitstempel</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>ROS topic</source>
+        <translation>ROS-Topic</translation>
+    </message>
+    <message>
+        <source>MQTT topic</source>
+        <translation>MQTT-Topic</translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation>Optionen</translation>
+    </message>
+</context>
+<context>
+    <name>OptionForm</name>
+    <message>
+        <source>benchmarking suite</source>
+        <translation>Benchmarking-Suite</translation>
+    </message>
+    <message>
+        <source>general</source>
+        <translation>allgemein</translation>
+    </message>
+    <message>
+        <source>Default: %1</source>
+        <translation>Vorgabe: %1</translation>
+    </message>
+    <message>
+        <source>Only understood by the ROS 2 mqtt_client.</source>
+        <translation>Versteht nur der ROS-2-mqtt_client.</translation>
+    </message>
+    <message>
+        <source>Benchmarking suite extension; mqtt_client ignores it.</source>
+        <translation>Erweiterung der Benchmarking-Suite; mqtt_client ignoriert sie.</translation>
+    </message>
+    <message>
+        <source>Choose a file</source>
+        <translation>Datei wählen</translation>
+    </message>
+    <message>
+        <source>Choose %1</source>
+        <translation>%1 wählen</translation>
+    </message>
+    <message>
+        <source>not set</source>
+        <translation>nicht gesetzt</translation>
+    </message>
+    <message>
+        <source>(mixed)</source>
+        <translation>(gemischt)</translation>
+    </message>
+    <message>
+        <source>default (%1)</source>
+        <translation>Vorgabe (%1)</translation>
+    </message>
+    <message>
+        <source>default: %1</source>
+        <translation>Vorgabe: %1</translation>
+    </message>
+</context>
+<context>
+    <name>OptionSchema</name>
+    <message>
+        <source>IP address or hostname of the MQTT broker</source>
+        <translation>IP-Adresse oder Hostname des MQTT-Brokers</translation>
+    </message>
+    <message>
+        <source>port the broker listens on</source>
+        <translation>Port, auf dem der Broker lauscht</translation>
+    </message>
+    <message>
+        <source>user name for the broker (anonymous if empty)</source>
+        <translation>Benutzername für den Broker (anonym, wenn leer)</translation>
+    </message>
+    <message>
+        <source>password for the broker</source>
+        <translation>Passwort für den Broker</translation>
+    </message>
+    <message>
+        <source>connect with SSL/TLS</source>
+        <translation>mit SSL/TLS verbinden</translation>
+    </message>
+    <message>
+        <source>CA certificate the client trusts (relative to ROS_HOME)</source>
+        <translation>CA-Zertifikat, dem der Client vertraut (relativ zu ROS_HOME)</translation>
+    </message>
+    <message>
+        <source>unique client ID (the broker may generate one if empty)</source>
+        <translation>eindeutige Client-ID (wenn leer, vergibt der Broker eine)</translation>
+    </message>
+    <message>
+        <source>messages buffered while disconnected (needs a client ID)</source>
+        <translation>gepufferte Nachrichten ohne Verbindung (braucht eine Client-ID)</translation>
+    </message>
+    <message>
+        <source>directory for buffered messages (relative to ROS_HOME)</source>
+        <translation>Verzeichnis für gepufferte Nachrichten (relativ zu ROS_HOME)</translation>
+    </message>
+    <message>
+        <source>buffer messages while disconnected</source>
+        <translation>Nachrichten ohne Verbindung puffern</translation>
+    </message>
+    <message>
+        <source>topic of the last-will message (none if empty)</source>
+        <translation>Topic der Last-Will-Nachricht (keine, wenn leer)</translation>
+    </message>
+    <message>
+        <source>last-will message</source>
+        <translation>Last-Will-Nachricht</translation>
+    </message>
+    <message>
+        <source>QoS of the last-will message</source>
+        <translation>QoS der Last-Will-Nachricht</translation>
+    </message>
+    <message>
+        <source>retain the last-will message</source>
+        <translation>Last-Will-Nachricht behalten (retained)</translation>
+    </message>
+    <message>
+        <source>start a clean session on every connect</source>
+        <translation>bei jeder Verbindung eine frische Sitzung beginnen</translation>
+    </message>
+    <message>
+        <source>keep-alive interval in seconds</source>
+        <translation>Keep-Alive-Intervall in Sekunden</translation>
+    </message>
+    <message>
+        <source>maximum number of messages in flight</source>
+        <translation>höchste Zahl unbestätigter Nachrichten</translation>
+    </message>
+    <message>
+        <source>client certificate (relative to ROS_HOME)</source>
+        <translation>Client-Zertifikat (relativ zu ROS_HOME)</translation>
+    </message>
+    <message>
+        <source>client private key (relative to ROS_HOME)</source>
+        <translation>privater Schlüssel des Clients (relativ zu ROS_HOME)</translation>
+    </message>
+    <message>
+        <source>password of the client private key</source>
+        <translation>Passwort des privaten Client-Schlüssels</translation>
+    </message>
+    <message>
+        <source>TLS version as Paho's ssl_options value (3 = TLS 1.2)</source>
+        <translation>TLS-Version als Wert von Pahos ssl_options (3 = TLS 1.2)</translation>
+    </message>
+    <message>
+        <source>verify the broker's certificate</source>
+        <translation>Zertifikat des Brokers prüfen</translation>
+    </message>
+    <message>
+        <source>ALPN protocols to negotiate (e.g. x-amzn-mqtt-ca)</source>
+        <translation>auszuhandelnde ALPN-Protokolle (z. B. x-amzn-mqtt-ca)</translation>
+    </message>
+    <message>
+        <source>ROS topic to subscribe to</source>
+        <translation>zu abonnierendes ROS-Topic</translation>
+    </message>
+    <message>
+        <source>ROS topic to publish on</source>
+        <translation>ROS-Topic, auf dem veröffentlicht wird</translation>
+    </message>
+    <message>
+        <source>MQTT topic to publish on</source>
+        <translation>MQTT-Topic, auf dem veröffentlicht wird</translation>
+    </message>
+    <message>
+        <source>MQTT topic to subscribe to</source>
+        <translation>zu abonnierendes MQTT-Topic</translation>
+    </message>
+    <message>
+        <source>send std_msgs primitives as plain text</source>
+        <translation>std_msgs-Primitivwerte als reinen Text senden</translation>
+    </message>
+    <message>
+        <source>send messages as JSON (needs ros_type)</source>
+        <translation>Nachrichten als JSON senden (braucht ros_type)</translation>
+    </message>
+    <message>
+        <source>fixed ROS message type, e.g. std_msgs/msg/Bool</source>
+        <translation>fester ROS-Nachrichtentyp, z. B. std_msgs/msg/Bool</translation>
+    </message>
+    <message>
+        <source>prepend a send time stamp for latency measurement</source>
+        <translation>einen Sende-Zeitstempel zur Latenzmessung voranstellen</translation>
+    </message>
+    <message>
+        <source>ROS subscriber queue size</source>
+        <translation>Warteschlangenlänge des ROS-Subscribers</translation>
+    </message>
+    <message>
+        <source>ROS publisher queue size</source>
+        <translation>Warteschlangenlänge des ROS-Publishers</translation>
+    </message>
+    <message>
+        <source>latch the ROS publisher</source>
+        <translation>ROS-Publisher als latched anlegen</translation>
+    </message>
+    <message>
+        <source>ROS 2 QoS reliability</source>
+        <translation>ROS-2-QoS Zuverlässigkeit</translation>
+    </message>
+    <message>
+        <source>ROS 2 QoS durability</source>
+        <translation>ROS-2-QoS Dauerhaftigkeit</translation>
+    </message>
+    <message>
+        <source>MQTT QoS (0, 1 or 2)</source>
+        <translation>MQTT-QoS (0, 1 oder 2)</translation>
+    </message>
+    <message>
+        <source>publish retained on MQTT</source>
+        <translation>auf MQTT als retained veröffentlichen</translation>
+    </message>
+    <message>
+        <source>benchmarking suite: publish in/out time stamps under this prefix</source>
+        <translation>Benchmarking-Suite: Ein-/Ausgangs-Zeitstempel unter diesem Präfix veröffentlichen</translation>
+    </message>
+</context>
+<context>
+    <name>PeerConfig</name>
+    <message>
+        <source>client.last_will.topic '%1' is kept; both ends would announce their death on the same topic.</source>
+        <translation>client.last_will.topic '%1' bleibt; beide Enden melden ihren Ausfall dann auf demselben Topic.</translation>
+    </message>
+    <message>
+        <source>ros2mqtt '%1' publishes on '%2', which has a wildcard; it has no peer mapping.</source>
+        <translation>ros2mqtt '%1' veröffentlicht auf '%2', das einen Platzhalter enthält; es bekommt keine Gegen-Zuordnung.</translation>
+    </message>
+    <message>
+        <source>mqtt2ros '%1' is a wildcard subscription; the peer cannot publish on it, so it has no peer mapping.</source>
+        <translation>mqtt2ros '%1' ist ein Platzhalter-Abo; die Gegenstelle kann darauf nicht veröffentlichen, daher keine Gegen-Zuordnung.</translation>
+    </message>
+    <message>
+        <source>'%1' is stamped: the peer publishes its latency on ~/latencies%2.</source>
+        <translation>'%1' trägt Zeitstempel: Die Gegenstelle veröffentlicht die Latenz auf ~/latencies%2.</translation>
+    </message>
+    <message>
+        <source>timestamp_topic_prefix of '%1' names this host's stamps; set the peer's own prefix by hand.</source>
+        <translation>timestamp_topic_prefix von '%1' benennt die Zeitstempel dieses Rechners; das eigene Präfix der Gegenstelle von Hand setzen.</translation>
+    </message>
+</context>
+<context>
+    <name>ProblemModel</name>
+    <message>
+        <source>1 error</source>
+        <translation>1 Fehler</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>%1 Fehler</translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 Warnung</translation>
+    </message>
+    <message>
+        <source>%1 warnings</source>
+        <translation>%1 Warnungen</translation>
+    </message>
+    <message>
+        <source>no problems</source>
+        <translation>keine Probleme</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
+    </message>
+    <message>
+        <source>new mapping</source>
+        <translation>neue Zuordnung</translation>
+    </message>
+    <message>
+        <source>Problem</source>
+        <translation>Problem</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Ort</translation>
+    </message>
+</context>
+<context>
+    <name>ProblemsPanel</name>
+    <message>
+        <source>&amp;Problems: %1</source>
+        <translation>&amp;Probleme: %1</translation>
+    </message>
+</context>
+<context>
+    <name>SettingsInspector</name>
+    <message>
+        <source>&lt;b&gt;Broker&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Broker&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Client&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Client&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Set %1.%2</source>
+        <translation>%1.%2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>YamlPreview</name>
+    <message>
+        <source>mqtt_client, ROS 1</source>
+        <translation>mqtt_client, ROS 1</translation>
+    </message>
+    <message>
+        <source>mqtt_client, ROS 2</source>
+        <translation>mqtt_client, ROS 2</translation>
+    </message>
+    <message>
+        <source>mqtt_bridge</source>
+        <translation>mqtt_bridge</translation>
+    </message>
+    <message>
+        <source>&amp;Layout:</source>
+        <translation>&amp;Layout:</translation>
+    </message>
+    <message>
+        <source>Saving edits the file in place: comments and formatting are kept.</source>
+        <translation>Beim Speichern wird die Datei an Ort und Stelle geändert: Kommentare und Formatierung bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Saving in this layout writes the file anew: its comments are not kept.</source>
+        <translation>In diesem Layout wird die Datei neu geschrieben: Ihre Kommentare gehen verloren.</translation>
+    </message>
+</context>
 </TS>

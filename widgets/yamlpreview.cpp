@@ -82,7 +82,13 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     // Quick edits arrive one after another; the preview is computed once they pause.
     m_timer->setSingleShot(true);
     m_timer->setInterval(150);
-    connect(m_timer, &QTimer::timeout, this, &YamlPreview::refreshNow);
+    // A large config takes a moment to render; do it only while the preview can be seen.
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isVisible())
+            refreshNow();
+        else
+            m_stale = true;
+    });
     auto later = [this] { m_timer->start(); };
     connect(m_doc, &ConfigDocument::problemsChanged, this, later);
     connect(m_doc, &ConfigDocument::resetDone, this, [this] {
@@ -91,7 +97,14 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     });
     connect(m_doc, &ConfigDocument::layoutChanged, this, [this](ConfigLayout l) { setLayout(l); });
     connect(m_layout, &QComboBox::currentIndexChanged, this, later);
-    refreshNow();
+    m_stale = true;
+}
+
+void YamlPreview::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_stale)
+        refreshNow();
 }
 
 ConfigLayout YamlPreview::layout() const
@@ -112,6 +125,7 @@ QString YamlPreview::text() const
 void YamlPreview::refreshNow()
 {
     m_timer->stop();
+    m_stale = false;
     bool keeps = false;
     QStringList notes;
     const QString yaml = m_doc->preview(layout(), &keeps, &notes);

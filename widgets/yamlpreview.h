@@ -29,4 +29,8 @@ private:
     QLabel* m_note;
     QPlainTextEdit* m_text;
     QTimer* m_timer;
+    bool m_stale = false;
+
+protected:
+    void showEvent(class QShowEvent* event) override;
 };

@@ -123,9 +123,10 @@ ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayou
     BridgeConfig wanted = m_current;
     wanted.layout = layout;
     QByteArray bytes;
+    ConfigReadResult written;
     if (!m_text.isEmpty() && layout == m_baseline.layout && !m_lossy) {
         QString why;
-        if (const auto patched = ConfigPatcher::patch(m_text, m_baseline, wanted, &why))
+        if (const auto patched = ConfigPatcher::patch(m_text, m_baseline, wanted, &why, &written))
             bytes = *patched;
         else
             result.rewriteReason = tr("this edit cannot be made in place (%1)").arg(why);
@@ -140,6 +141,7 @@ ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayou
         }
         bytes = ConfigWriter::write(wanted, layout, &result.notes).toUtf8();
         result.rewritten = !m_text.isEmpty();
+        written = ConfigReader::read(bytes);
     }
     if (!AtomicFile::write(path, bytes, &result.error)) {
         result.status = SaveResult::Failed;
@@ -153,7 +155,7 @@ ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayou
         m_layout = layout;
         emit layoutChanged(layout);
     }
-    adoptSaved(bytes);
+    adoptSaved(bytes, written);
     if (pathChanged)
         emit filePathChanged(m_path);
     result.status = SaveResult::Saved;
@@ -162,9 +164,8 @@ ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayou
 
 // After a save, the written text is the new baseline: read it back and give its mappings the
 // ids of the mappings in memory (matched by content), so that undo history and views stay valid.
-void ConfigDocument::adoptSaved(const QByteArray& text)
+void ConfigDocument::adoptSaved(const QByteArray& text, const ConfigReadResult& read)
 {
-    const ConfigReadResult read = ConfigReader::read(text);
     m_text = text;
     m_lossy = false;
     m_readProblems = read.problems;

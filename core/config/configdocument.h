@@ -2,6 +2,7 @@
 #pragma once
 
 #include "bridgeconfig.h"
+#include "configreader.h"
 #include "configvalidator.h"
 #include "problem.h"
 
@@ -84,7 +85,7 @@ signals:
 private:
     void changed();
     void revalidate();
-    void adoptSaved(const QByteArray& text);
+    void adoptSaved(const QByteArray& text, const ConfigReadResult& read);
 
     QString m_path;
     QString m_suggestedPath;

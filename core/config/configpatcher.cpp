@@ -666,9 +666,8 @@ void patchRos2Mappings(Patcher& p, const YAML::Node& bridge, const BridgeConfig&
 }
 
 // The patched text must read back as exactly the wanted config; returns what differs.
-QString readBackDifference(const QByteArray& text, const BridgeConfig& want)
+QString readBackDifference(const ConfigReadResult& r, const BridgeConfig& want)
 {
-    const ConfigReadResult r = ConfigReader::read(text);
     if (!r.parsed)
         return u"not readable: "_s + r.problems.value(0).message;
     if (r.config.layout != want.layout || r.config.ros2NodeName != want.ros2NodeName)
@@ -694,7 +693,8 @@ QString readBackDifference(const QByteArray& text, const BridgeConfig& want)
 } // namespace
 
 std::optional<QByteArray> ConfigPatcher::patch(const QByteArray& text, const BridgeConfig& baseline,
-                                               const BridgeConfig& wanted, QString* whyNot)
+                                               const BridgeConfig& wanted, QString* whyNot,
+                                               ConfigReadResult* readBack)
 {
     try {
         if (baseline.layout != wanted.layout || wanted.layout == ConfigLayout::MqttBridge)
@@ -708,8 +708,11 @@ std::optional<QByteArray> ConfigPatcher::patch(const QByteArray& text, const Bri
             bool sameIds = true;
             for (int i = 0; i < wanted.mappings.size(); ++i)
                 sameIds = sameIds && baseline.mappings[i].id == wanted.mappings[i].id;
-            if (sameIds)
+            if (sameIds) {
+                if (readBack)
+                    *readBack = ConfigReader::read(text);
                 return text;
+            }
         }
         // Work on text that ends with a newline, so that lines appended at the end stand alone.
         QByteArray source = text;
@@ -743,11 +746,14 @@ std::optional<QByteArray> ConfigPatcher::patch(const QByteArray& text, const Bri
         else
             patchRos2Mappings(p, bridge.value, baseline, wanted);
         QByteArray out = p.apply();
-        if (const QString diff = readBackDifference(out, wanted); !diff.isEmpty()) {
+        ConfigReadResult check = ConfigReader::read(out);
+        if (const QString diff = readBackDifference(check, wanted); !diff.isEmpty()) {
             if (qEnvironmentVariableIsSet("BRIDGESCOPE_DEBUG_PATCH"))
                 qWarning("patched text:\n%s", out.constData());
             giveUp(u"the edited text does not read back as the edited config: "_s + diff);
         }
+        if (readBack)
+            *readBack = std::move(check);
         return out;
     } catch (const GiveUp& g) {
         if (whyNot)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "bridgeconfig.h"
+#include "configreader.h"
 
 #include <optional>
 #include <QByteArray>
@@ -19,6 +20,9 @@ class ConfigPatcher
 public:
     /// `baseline` is what `text` was read as (with its source positions), `wanted` the edited
     /// config (mappings matched to the baseline by id).
+    /// `readBack` receives what the patched text reads as (its verification), so that a caller
+    /// adopting the saved text need not parse it again.
     static std::optional<QByteArray> patch(const QByteArray& text, const BridgeConfig& baseline,
-                                           const BridgeConfig& wanted, QString* whyNot = nullptr);
+                                           const BridgeConfig& wanted, QString* whyNot = nullptr,
+                                           ConfigReadResult* readBack = nullptr);
 };

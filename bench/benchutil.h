@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QElapsedTimer>
+#include <QList>
+#include <QString>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+
+/// Small helpers shared by the benchmarks: repeat, take the median, print a table row.
+namespace Bench {
+
+/// Median wall time of `runs` calls, in milliseconds.
+inline double medianMs(int runs, const std::function<void()>& work)
+{
+    QList<double> times;
+    for (int i = 0; i < runs; ++i) {
+        QElapsedTimer t;
+        t.start();
+        work();
+        times << t.nsecsElapsed() / 1e6;
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
+
+inline void row(const QString& what, double ms, const QString& note = QString())
+{
+    std::printf("| %-58s | %9.1f | %s\n", qPrintable(what), ms, qPrintable(note));
+    std::fflush(stdout);
+}
+} // namespace Bench
