@@ -12,17 +12,15 @@
 #include "configfilecontroller.h"
 #include "mainwindow.h"
 
-#include <yaml-cpp/yaml.h>
-
+#include <fstream>
 #include <QApplication>
 #include <QDir>
-#include <QFileInfo>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTableView>
 #include <QTemporaryDir>
-
-#include <fstream>
+#include <yaml-cpp/yaml.h>
 
 using namespace Qt::StringLiterals;
 
@@ -37,15 +35,16 @@ QByteArray makeConfig(int mappings)
         if (i % 10 == 0)
             text += "    # vehicle " + QByteArray::number(i / 10) + "\n";
         text += "    - ros_topic: /vehicle_" + QByteArray::number(i / 10) + "/sensor_" + QByteArray::number(i)
-            + "\n      mqtt_topic: fleet/vehicle_" + QByteArray::number(i / 10) + "/sensor_" + QByteArray::number(i)
-            + "\n";
+            + "\n      mqtt_topic: fleet/vehicle_" + QByteArray::number(i / 10) + "/sensor_"
+            + QByteArray::number(i) + "\n";
         if (i % 3 == 0)
-            text += "      inject_timestamp: true\n      advanced:\n        mqtt:\n          qos: $(arg qos)\n";
+            text += "      inject_timestamp: true\n      advanced:\n        mqtt:\n          qos: $(arg "
+                    "qos)\n";
     }
     text += "  mqtt2ros:\n";
     for (int i = 0; i < mappings / 2; ++i) {
-        text += "    - mqtt_topic: fleet/commands/vehicle_" + QByteArray::number(i) + "\n      ros_topic: /commands_"
-            + QByteArray::number(i) + "  # from the cloud\n";
+        text += "    - mqtt_topic: fleet/commands/vehicle_" + QByteArray::number(i)
+            + "\n      ros_topic: /commands_" + QByteArray::number(i) + "  # from the cloud\n";
         if (i % 4 == 0)
             text += "      primitive: true\n";
     }
@@ -141,9 +140,11 @@ int main(int argc, char** argv)
             qFatal("save failed");
     });
     Bench::row(u"open + validate + edit + save (the goal: < 1000 ms)"_s, total,
-               u"%1x yaml-cpp, %2x PyYAML"_s.arg(total / yamlCpp, 0, 'f', 2).arg(py > 0 ? total / py : 0, 0, 'f', 2));
+               u"%1x yaml-cpp, %2x PyYAML"_s.arg(total / yamlCpp, 0, 'f', 2)
+                   .arg(py > 0 ? total / py : 0, 0, 'f', 2));
 
-    const double convert = Bench::medianMs(runs, [&] { ConfigWriter::write(doc.config(), ConfigLayout::Ros2); });
+    const double convert
+        = Bench::medianMs(runs, [&] { ConfigWriter::write(doc.config(), ConfigLayout::Ros2); });
     Bench::row(u"write the whole config as ROS 2"_s, convert);
 
     // The editor window: model, views, preview.

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <QElapsedTimer>
-#include <QList>
-#include <QString>
-
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <QElapsedTimer>
+#include <QList>
+#include <QString>
 
 /// Small helpers shared by the benchmarks: repeat, take the median, print a table row.
 namespace Bench {

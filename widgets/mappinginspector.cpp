@@ -216,7 +216,7 @@ void MappingInspector::setDirection(int index)
 {
     if (m_refreshing || index < 0)
         return;
-    const Direction d = Direction(index);
+    const auto d = Direction(index);
     applyToSelection(tr("Change direction"), [d](Mapping& m) {
         if (m.direction == d)
             return;
@@ -224,12 +224,8 @@ void MappingInspector::setDirection(int index)
         Mapping turned = Mapping::create(d, m.rosTopic(), m.mqttTopic());
         turned.id = m.id;
         for (const QString& path : m.block.values.paths()) {
-            if (!OptionSchema::find(scopeOf(d), path))
-                continue;
-            if (m.block.values.isList(path))
-                turned.block.values.setList(path, m.block.values.list(path));
-            else
-                turned.set(path, m.value(path));
+            if (OptionSchema::find(scopeOf(d), path))
+                turned.block.values.copyFrom(m.block.values, path);
         }
         turned.block.extras = m.block.extras;
         m = turned;

@@ -57,7 +57,7 @@ void OptionForm::buildRow(const OptionSpec& spec, QWidget* parent, QFormLayout* 
 {
     Row row;
     row.spec = &spec;
-    QWidget* field = new QWidget(parent);
+    auto* field = new QWidget(parent);
     auto* h = new QHBoxLayout(field);
     h->setContentsMargins(0, 0, 0, 0);
     const QString tip = OptionSchema::summary(spec)

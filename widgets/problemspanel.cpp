@@ -37,7 +37,7 @@ ProblemsPanel::ProblemsPanel(ConfigDocument* document, QWidget* parent)
     connect(m_model, &ProblemModel::countsChanged, this, updateTitle);
     updateTitle(m_model->errorCount(), m_model->warningCount());
     connect(m_view, &QTreeView::activated, this, [this](const QModelIndex& index) {
-        const quint64 id = index.data(ProblemModel::MappingIdRole).value<quint64>();
+        const auto id = index.data(ProblemModel::MappingIdRole).value<quint64>();
         const QString field = index.data(ProblemModel::FieldRole).toString();
         if (id)
             emit mappingProblemActivated(id, field);

@@ -221,7 +221,7 @@ int runConfigCommand(const QStringList& arguments)
         out(ConfigCommand::usage());
         return arguments.size() < 2 ? ConfigCommand::Unreadable : ConfigCommand::Valid;
     }
-    const QString command = arguments[1];
+    const QString& command = arguments[1];
     QStringList rest = arguments.mid(2);
     rest.prepend(u"bridgescope config "_s + command);
     if (command == u"validate"_s)

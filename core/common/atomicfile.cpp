@@ -15,7 +15,7 @@ namespace {
 
 QString errnoText()
 {
-    return QString::fromLocal8Bit(std::strerror(errno));
+    return qt_error_string(errno);
 }
 
 bool writeAll(int fd, const QByteArray& data)

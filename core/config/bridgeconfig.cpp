@@ -87,6 +87,17 @@ void OptionValues::remove(const QString& path)
         m_entries.removeAt(i);
 }
 
+void OptionValues::copyFrom(const OptionValues& other, const QString& path)
+{
+    const int i = other.indexOf(path);
+    if (i < 0)
+        remove(path);
+    else if (other.m_entries[i].isList)
+        setList(path, other.m_entries[i].list);
+    else
+        setText(path, other.m_entries[i].text);
+}
+
 QStringList OptionValues::paths() const
 {
     QStringList out;

@@ -51,6 +51,8 @@ public:
     void setText(const QString& path, const QString& text);
     void setList(const QString& path, const QStringList& list);
     void remove(const QString& path);
+    /// Takes over `path` from `other` as it is there (text, list, or not set).
+    void copyFrom(const OptionValues& other, const QString& path);
     QStringList paths() const;
     bool isEmpty() const { return m_entries.isEmpty(); }
     bool operator==(const OptionValues& other) const;

@@ -26,8 +26,8 @@ struct GiveUp
 class Text
 {
 public:
-    explicit Text(const QByteArray& text)
-        : m_text(text)
+    explicit Text(QByteArray text)
+        : m_text(std::move(text))
     {
         m_starts.push_back(0);
         for (int i = 0; i < m_text.size(); ++i) {
@@ -492,10 +492,7 @@ public:
                 groups.append({prefix, at, indent, {}});
                 group = &groups.last();
             }
-            if (want.values.isList(path))
-                group->block.values.setList(path, want.values.list(path));
-            else
-                group->block.values.setText(path, want.values.text(path));
+            group->block.values.copyFrom(want.values, path);
         }
         for (const Group& g : std::as_const(groups)) {
             const QString text = ConfigWriter::blockText(scope, g.block, m_layout, g.prefix);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "configreader.h"
 
+#include "yamltree.h"
+
 #include <yaml-cpp/yaml.h>
 
 using namespace Qt::StringLiterals;
@@ -40,6 +42,18 @@ void addExtra(QList<ExtraValue>& extras, const QStringList& path, const YAML::No
         return;
     }
     extras.append({path, dump(node)});
+}
+
+// "ros2mqtt" / "mqtt2ros" as a direction; false for any other key below "bridge".
+bool directionOfKey(const QString& key, Direction* d)
+{
+    if (key == u"ros2mqtt"_s)
+        *d = Direction::Ros2Mqtt;
+    else if (key == u"mqtt2ros"_s)
+        *d = Direction::Mqtt2Ros;
+    else
+        return false;
+    return true;
 }
 
 bool isQuoted(const YAML::Node& n)
@@ -157,11 +171,7 @@ public:
         for (auto it = bridge.begin(); it != bridge.end(); ++it) {
             const QString key = keyText(it->first);
             Direction d = Direction::Ros2Mqtt;
-            if (key == u"ros2mqtt"_s)
-                d = Direction::Ros2Mqtt;
-            else if (key == u"mqtt2ros"_s)
-                d = Direction::Mqtt2Ros;
-            else {
+            if (!directionOfKey(key, &d)) {
                 addExtra(cfg.bridgeExtras, {key}, it->second);
                 continue;
             }
@@ -210,11 +220,7 @@ public:
         for (auto it = bridge.begin(); it != bridge.end(); ++it) {
             const QString key = keyText(it->first);
             Direction d = Direction::Ros2Mqtt;
-            if (key == u"ros2mqtt"_s)
-                d = Direction::Ros2Mqtt;
-            else if (key == u"mqtt2ros"_s)
-                d = Direction::Mqtt2Ros;
-            else {
+            if (!directionOfKey(key, &d)) {
                 addExtra(cfg.bridgeExtras, {key}, it->second);
                 continue;
             }
@@ -263,12 +269,8 @@ public:
                     // The topic is the key: keep it first, as in the list layout.
                     OptionValues ordered;
                     ordered.setText(topicField, topic);
-                    for (const QString& p : m.block.values.paths()) {
-                        if (m.block.values.isList(p))
-                            ordered.setList(p, m.block.values.list(p));
-                        else
-                            ordered.setText(p, m.block.values.text(p));
-                    }
+                    for (const QString& p : m.block.values.paths())
+                        ordered.copyFrom(m.block.values, p);
                     m.block.values = ordered;
                     m.block.source.keys.insert(topicField, posOf(t));
                     if (t.IsScalar() && isQuoted(t))
@@ -331,7 +333,7 @@ public:
                 cfg.client.values.setText(u"tls.key"_s, text);
                 cfg.client.source.keys.insert(u"tls.key"_s, posOf(v));
             } else if (k == u"tls_insecure"_s) {
-                const bool insecure = text == u"true"_s || text == u"True"_s || text == u"yes"_s;
+                const bool insecure = YamlText::isTrue(text);
                 cfg.client.values.setText(u"tls.verify"_s, insecure ? u"false"_s : u"true"_s);
             } else {
                 addExtra(cfg.rootExtras, prefix + QStringList {k}, v);

@@ -11,11 +11,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-bool isTrue(const QString& t)
-{
-    return t == u"true"_s || t == u"True"_s || t == u"TRUE"_s || t == u"yes"_s || t == u"on"_s;
-}
-
 bool parsesAs(OptionKind kind, const QString& text, const OptionSpec& spec)
 {
     bool ok = false;
@@ -26,11 +21,8 @@ bool parsesAs(OptionKind kind, const QString& text, const OptionSpec& spec)
     case OptionKind::Double:
         text.toDouble(&ok);
         return ok;
-    case OptionKind::Bool: {
-        static const QStringList bools = {u"true"_s,  u"false"_s, u"True"_s, u"False"_s, u"TRUE"_s,
-                                          u"FALSE"_s, u"yes"_s,   u"no"_s,   u"on"_s,    u"off"_s};
-        return bools.contains(text);
-    }
+    case OptionKind::Bool:
+        return YamlText::isTrue(text) || YamlText::isFalse(text);
     case OptionKind::Enum:
         return spec.enumValues.contains(text);
     default:
@@ -266,8 +258,9 @@ public:
 
     void checkMappingOptions(const Mapping& m)
     {
-        const bool primitive = isTrue(m.effective(u"primitive"_s));
-        if (m.direction == Direction::Ros2Mqtt && primitive && isTrue(m.effective(u"inject_timestamp"_s))) {
+        const bool primitive = YamlText::isTrue(m.effective(u"primitive"_s));
+        if (m.direction == Direction::Ros2Mqtt && primitive
+            && YamlText::isTrue(m.effective(u"inject_timestamp"_s))) {
             add(Severity::Error, u"timestamp-with-primitive"_s, &m, m.scope(), u"inject_timestamp"_s,
                 tr("%1: inject_timestamp cannot be used with primitive: a primitive is sent as plain text "
                    "with "
@@ -275,7 +268,7 @@ public:
                     .arg(describe(m)),
                 tr("Turn off primitive, or turn off inject_timestamp."));
         }
-        if (isTrue(m.effective(u"json"_s)) && m.value(u"ros_type"_s).isEmpty()) {
+        if (YamlText::isTrue(m.effective(u"json"_s)) && m.value(u"ros_type"_s).isEmpty()) {
             const bool in = m.direction == Direction::Mqtt2Ros;
             add(in ? Severity::Error : Severity::Warning, u"json-without-ros-type"_s, &m, m.scope(),
                 u"json"_s,
@@ -287,7 +280,7 @@ public:
                          .arg(describe(m)),
                 tr("Set ros_type, e.g. std_msgs/msg/String."));
         }
-        if (primitive && isTrue(m.effective(u"json"_s))) {
+        if (primitive && YamlText::isTrue(m.effective(u"json"_s))) {
             add(Severity::Error, u"json-with-primitive"_s, &m, m.scope(), u"json"_s,
                 tr("%1: json and primitive exclude each other.").arg(describe(m)),
                 tr("Turn one of them off."));
@@ -307,8 +300,7 @@ public:
                 if (const Mapping* first = outByRos.value(m.rosTopic())) {
                     add(Severity::Error, u"duplicate-ros-topic"_s, &m, m.scope(), u"ros_topic"_s,
                         tr("%1: ROS topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only "
-                           "one "
-                           "of them.")
+                           "one of them.")
                             .arg(describe(m), m.rosTopic(), describe(*first))
                             .arg(first->block.source.start.line + 1),
                         tr("Remove one of the two mappings, or bridge a different ROS topic."));
@@ -322,8 +314,7 @@ public:
                 if (const Mapping* first = inByMqtt.value(m.mqttTopic())) {
                     add(Severity::Error, u"duplicate-mqtt-topic"_s, &m, m.scope(), u"mqtt_topic"_s,
                         tr("%1: MQTT topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only "
-                           "one "
-                           "of them.")
+                           "one of them.")
                             .arg(describe(m), m.mqttTopic(), describe(*first))
                             .arg(first->block.source.start.line + 1),
                         tr("Remove one of the two mappings, or subscribe a different MQTT topic."));
@@ -382,7 +373,7 @@ public:
         checkFile(OptionScope::Client, u"tls.key"_s);
         const OptionValues& c = m_cfg.client.values;
         const bool buffer = c.has(u"buffer.size"_s) || c.has(u"buffer.directory"_s)
-            || (c.has(u"buffer.enabled"_s) && isTrue(c.text(u"buffer.enabled"_s)));
+            || (c.has(u"buffer.enabled"_s) && YamlText::isTrue(c.text(u"buffer.enabled"_s)));
         if (buffer && c.text(u"id"_s).isEmpty()) {
             add(Severity::Warning, u"buffer-without-client-id"_s, nullptr, OptionScope::Client,
                 c.has(u"buffer.size"_s)

@@ -8,20 +8,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-bool isTrueText(const QString& t)
-{
-    static const QStringList yes = {u"true"_s, u"True"_s, u"TRUE"_s, u"yes"_s, u"Yes"_s, u"YES"_s,
-                                    u"on"_s,   u"On"_s,   u"ON"_s,   u"y"_s,   u"Y"_s};
-    return yes.contains(t);
-}
-
-bool isFalseText(const QString& t)
-{
-    static const QStringList no = {u"false"_s, u"False"_s, u"FALSE"_s, u"no"_s, u"No"_s, u"NO"_s,
-                                   u"off"_s,   u"Off"_s,   u"OFF"_s,   u"n"_s,  u"N"_s};
-    return no.contains(t);
-}
-
 // ROS 2 parameters are strictly typed: a double written as "60" is an integer to rclcpp, and
 // "yes" is a string to its YAML 1.2 parser. Normalise what the ROS 2 layout would misread.
 QString normalisedForRos2(OptionKind kind, const QString& text)
@@ -34,9 +20,9 @@ QString normalisedForRos2(OptionKind kind, const QString& text)
         if (ok)
             return text + u".0"_s;
     } else if (kind == OptionKind::Bool) {
-        if (isTrueText(text))
+        if (YamlText::isTrue(text))
             return u"true"_s;
-        if (isFalseText(text))
+        if (YamlText::isFalse(text))
             return u"false"_s;
     }
     return text;
@@ -176,12 +162,12 @@ QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes)
     put(OptionScope::Client, u"keep_alive_interval"_s, {u"connection"_s, u"keepalive"_s}, typed);
     put(OptionScope::Broker, u"user"_s, {u"account"_s, u"username"_s});
     put(OptionScope::Broker, u"pass"_s, {u"account"_s, u"password"_s});
-    if (isTrueText(cfg.effective(OptionScope::Broker, u"tls.enabled"_s))) {
+    if (YamlText::isTrue(cfg.effective(OptionScope::Broker, u"tls.enabled"_s))) {
         put(OptionScope::Broker, u"tls.ca_certificate"_s, {u"tls"_s, u"ca_certs"_s});
         put(OptionScope::Client, u"tls.certificate"_s, {u"tls"_s, u"certfile"_s});
         put(OptionScope::Client, u"tls.key"_s, {u"tls"_s, u"keyfile"_s});
         if (cfg.client.values.has(u"tls.verify"_s)) {
-            const bool verify = isTrueText(cfg.client.values.text(u"tls.verify"_s));
+            const bool verify = YamlText::isTrue(cfg.client.values.text(u"tls.verify"_s));
             mqtt.insertAt({u"tls"_s, u"tls_insecure"_s},
                           YamlTree::scalar(verify ? u"false"_s : u"true"_s, typed));
         }

@@ -2,6 +2,7 @@
 #include "mappingmodel.h"
 
 #include "configdocument.h"
+#include "yamltree.h"
 
 using namespace Qt::StringLiterals;
 
@@ -49,10 +50,7 @@ QString MappingModel::directionText(Direction d)
 QString MappingModel::optionsSummary(const Mapping& m)
 {
     QStringList parts;
-    auto isTrue = [&m](const QString& path) {
-        const QString v = m.value(path);
-        return v == u"true"_s || v == u"True"_s || v == u"yes"_s;
-    };
+    auto isTrue = [&m](const QString& path) { return YamlText::isTrue(m.value(path)); };
     if (isTrue(u"primitive"_s))
         parts << tr("primitive");
     if (isTrue(u"json"_s))

@@ -62,12 +62,8 @@ PeerConfig::Result PeerConfig::make(const BridgeConfig& config, const QString& c
         }
         Mapping p
             = Mapping::create(out ? Direction::Mqtt2Ros : Direction::Ros2Mqtt, m.rosTopic(), m.mqttTopic());
-        for (const QString& path : carried) {
-            if (m.block.values.isList(path))
-                p.block.values.setList(path, m.block.values.list(path));
-            else if (m.isSet(path))
-                p.set(path, m.value(path));
-        }
+        for (const QString& path : carried)
+            p.block.values.copyFrom(m.block.values, path);
         // A retained MQTT message and a latched ROS topic both give late subscribers the last value.
         if (out && m.isSet(u"advanced.mqtt.retained"_s))
             p.set(u"advanced.ros.latched"_s, m.value(u"advanced.mqtt.retained"_s));

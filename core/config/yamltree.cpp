@@ -98,6 +98,20 @@ QString key(const QString& text)
     return quoted(text);
 }
 
+bool isTrue(const QString& text)
+{
+    static const QStringList yes = {u"true"_s, u"True"_s, u"TRUE"_s, u"yes"_s, u"Yes"_s, u"YES"_s,
+                                    u"on"_s,   u"On"_s,   u"ON"_s,   u"y"_s,   u"Y"_s};
+    return yes.contains(text);
+}
+
+bool isFalse(const QString& text)
+{
+    static const QStringList no = {u"false"_s, u"False"_s, u"FALSE"_s, u"no"_s, u"No"_s, u"NO"_s,
+                                   u"off"_s,   u"Off"_s,   u"OFF"_s,   u"n"_s,  u"N"_s};
+    return no.contains(text);
+}
+
 bool isSubstitution(const QString& text)
 {
     static const QRegularExpression re(uR"(\$\((arg|env|optenv|find|anon|eval|dirname)\b[^)]*\))"_s);

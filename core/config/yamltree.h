@@ -59,6 +59,9 @@ QString quoted(const QString& text);
 QString scalar(const QString& text, YamlTree::ScalarStyle style);
 /// A key as YAML (topic names as keys may need quotes).
 QString key(const QString& text);
+/// A YAML 1.1 boolean as the ROS 1 parameter server reads it (true/True/yes/on/...).
+bool isTrue(const QString& text);
+bool isFalse(const QString& text);
 /// True for roslaunch substitutions such as "$(arg qos)".
 bool isSubstitution(const QString& text);
 } // namespace YamlText

@@ -33,7 +33,8 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
         // Name the untranslated sources, so the failure says what to translate.
-        static const QRegularExpression unfinished(uR"(<source>([^<]*)</source>\s*<translation type="unfinished")"_s);
+        static const QRegularExpression unfinished(
+            uR"(<source>([^<]*)</source>\s*<translation type="unfinished")"_s);
         QStringList missing;
         for (auto it = unfinished.globalMatch(text); it.hasNext();)
             missing << it.next().captured(1);
