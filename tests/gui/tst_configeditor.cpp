@@ -16,6 +16,7 @@
 #include "settingsinspector.h"
 #include "yamlpreview.h"
 
+#include <QAbstractItemModelTester>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -160,6 +161,11 @@ private slots:
         ConfigEditor* editor = w.configEditor();
         ProblemModel* problems = editor->problems()->model();
         QCOMPARE(problems->errorCount(), 0);
+        // The whole chain the table shows (filter over icons over mappings) stays consistent.
+        QAbstractItemModelTester tableTester(editor->table()->model(),
+                                             QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QAbstractItemModelTester problemTester(editor->problems()->view()->model(),
+                                               QAbstractItemModelTester::FailureReportingMode::QtTest);
 
         // Editing a topic in the table itself: a wildcard in a published topic is an error.
         QTableView* table = editor->table();
