@@ -46,6 +46,7 @@ QString bridgescopeUsage()
                    "\n"
                    "Commands:\n"
                    "  config validate|convert|peer   check, convert and pair bridge configs\n"
+                   "  discover [--json]              list ROS and MQTT topics\n"
                    "\n"
                    "Run 'bridgescope <command> --help' for the options of a command.");
 }

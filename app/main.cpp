@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "cli/clioutput.h"
 #include "cli/configcommand.h"
+#include "cli/discovercommand.h"
 #include "guimain.h"
 
 #include <QCoreApplication>
@@ -22,7 +23,8 @@ int main(int argc, char** argv)
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
-    if (first == u"config"_s || help || version) {
+    static const QStringList commands = {u"config"_s, u"discover"_s};
+    if (commands.contains(first) || help || version) {
         // Commands need no display.
         QCoreApplication app(argc, argv);
         installTranslations(app);
@@ -35,6 +37,8 @@ int main(int argc, char** argv)
             CliOutput::out(u"bridgescope "_s + QCoreApplication::applicationVersion());
             return 0;
         }
+        if (first == u"discover"_s)
+            return runDiscoverCommand(args);
         return runConfigCommand(args);
     }
     return runGui(argc, argv);

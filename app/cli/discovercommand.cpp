@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: MIT
+#include "discovercommand.h"
+
+#include "clioutput.h"
+#include "mqtt/mqttconnection.h"
+#include "mqtt/mqtttopictree.h"
+#include "ros/rosgraphpoller.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTimer>
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+using CliOutput::out;
+
+namespace {
+class Discover
+{
+    Q_DECLARE_TR_FUNCTIONS(DiscoverCommand)
+public:
+    static QJsonObject rosJson(const RosGraphPoller& poller)
+    {
+        QJsonObject ros;
+        ros.insert(u"master"_s, poller.masterUri());
+        ros.insert(u"reachable"_s, poller.isReachable());
+        if (!poller.isReachable())
+            ros.insert(u"error"_s, poller.lastError());
+        QJsonArray topics;
+        for (const RosTopicInfo& t : poller.graph().topics) {
+            QJsonObject o;
+            o.insert(u"name"_s, t.name);
+            o.insert(u"type"_s, t.type);
+            o.insert(u"publishers"_s, QJsonArray::fromStringList(t.publishers));
+            o.insert(u"subscribers"_s, QJsonArray::fromStringList(t.subscribers));
+            topics.append(o);
+        }
+        ros.insert(u"topics"_s, topics);
+        ros.insert(u"nodes"_s, QJsonArray::fromStringList(poller.graph().nodes));
+        return ros;
+    }
+
+    static QJsonObject mqttJson(const MqttConnection& connection, const MqttTopicTree& tree,
+                                bool everConnected)
+    {
+        QJsonObject mqtt;
+        mqtt.insert(u"broker"_s, connection.profile().url);
+        mqtt.insert(u"connected"_s, everConnected);
+        if (!everConnected)
+            mqtt.insert(u"error"_s, connection.stateDetail());
+        QJsonArray topics;
+        for (const MqttTopicTree::TopicInfo& t : tree.topics()) {
+            QJsonObject o;
+            o.insert(u"name"_s, t.topic);
+            o.insert(u"messages"_s, qint64(t.messages));
+            o.insert(u"bytes"_s, qint64(t.bytes));
+            o.insert(u"retained"_s, t.retainedMessages > 0);
+            if (t.rosType) {
+                o.insert(u"ros_type"_s, t.rosType->name);
+                o.insert(u"stamped"_s, t.rosType->stamped);
+            }
+            topics.append(o);
+        }
+        mqtt.insert(u"topics"_s, topics);
+        return mqtt;
+    }
+
+    static void printText(const RosGraphPoller& poller, const MqttConnection& connection,
+                          const MqttTopicTree& tree, bool connected)
+    {
+        out(tr("ROS master %1: %2")
+                .arg(poller.masterUri(),
+                     poller.isReachable() ? tr("reachable")
+                                          : tr("unreachable (%1)").arg(poller.lastError())));
+        for (const RosTopicInfo& t : poller.graph().topics)
+            out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type)
+                    .arg(t.publishers.size())
+                    .arg(t.subscribers.size()));
+        out(tr("MQTT broker %1: %2")
+                .arg(connection.profile().url,
+                     connected ? tr("connected") : tr("not connected (%1)").arg(connection.stateDetail())));
+        for (const MqttTopicTree::TopicInfo& t : tree.topics()) {
+            out(u"  %1  %2 msg  %3 B%4%5"_s.arg(t.topic)
+                    .arg(t.messages)
+                    .arg(t.bytes)
+                    .arg(t.retainedMessages ? tr("  retained") : QString())
+                    .arg(t.rosType ? u"  "_s + t.rosType->name : QString()));
+        }
+    }
+};
+} // namespace
+
+int runDiscoverCommand(const QStringList& arguments)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Discover::tr(
+        "Lists what is on the ROS master and the MQTT broker after listening for a while. Exit status: "
+        "0 when at least one of them answered, 1 when neither did, 2 on bad options."));
+    const QCommandLineOption help({u"h"_s, u"help"_s}, Discover::tr("Show this help."));
+    const QCommandLineOption broker(u"broker"_s, Discover::tr("Broker URL (default tcp://localhost:1883)."),
+                                    u"URL"_s, u"tcp://localhost:1883"_s);
+    const QCommandLineOption master(u"ros-master"_s,
+                                    Discover::tr("ROS master URI (default $ROS_MASTER_URI)."), u"URI"_s,
+                                    RosMasterApi::defaultMasterUri());
+    const QCommandLineOption seconds(u"seconds"_s, Discover::tr("How long to listen (default 2)."), u"N"_s,
+                                     u"2"_s);
+    const QCommandLineOption json(u"json"_s, Discover::tr("Print one JSON document."));
+    const QCommandLineOption filter(
+        u"filter"_s, Discover::tr("MQTT topic filter to subscribe (default #; repeatable)."), u"FILTER"_s);
+    parser.addOptions({help, broker, master, seconds, json, filter});
+    QStringList args = arguments;
+    args.replace(0, u"bridgescope discover"_s);
+    if (!parser.parse(args)) {
+        err(parser.errorText());
+        return 2;
+    }
+    if (parser.isSet(help)) {
+        out(parser.helpText());
+        return 0;
+    }
+    bool ok = false;
+    const double secs = parser.value(seconds).toDouble(&ok);
+    if (!ok || secs <= 0) {
+        err(Discover::tr("--seconds takes a positive number"));
+        return 2;
+    }
+    MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
+    if (parser.isSet(filter))
+        profile.filters = parser.values(filter);
+    QString why;
+    if (!profile.validate(&why)) {
+        err(why);
+        return 2;
+    }
+
+    RosGraphPoller poller;
+    poller.setMasterUri(parser.value(master));
+    poller.start(500);
+    MqttConnection connection;
+    MqttTopicTree tree;
+    bool connected = false;
+    QObject::connect(&connection, &MqttConnection::stateChanged, [&connected](MqttConnection::State s) {
+        connected = connected || s == MqttConnection::State::Connected;
+    });
+    connection.open(profile);
+    QTimer drain;
+    QObject::connect(&drain, &QTimer::timeout, [&] { tree.apply(connection.takeMessages()); });
+    drain.start(33);
+    QTimer::singleShot(int(secs * 1000), QCoreApplication::instance(), [] { QCoreApplication::exit(0); });
+    QCoreApplication::exec();
+    tree.apply(connection.takeMessages());
+
+    if (parser.isSet(json)) {
+        QJsonObject doc;
+        doc.insert(u"ros"_s, Discover::rosJson(poller));
+        doc.insert(u"mqtt"_s, Discover::mqttJson(connection, tree, connected));
+        out(QString::fromUtf8(QJsonDocument(doc).toJson(QJsonDocument::Indented)).trimmed());
+    } else {
+        Discover::printText(poller, connection, tree, connected);
+    }
+    if (!poller.isReachable() && !connected) {
+        err(Discover::tr("Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.")
+                .arg(poller.masterUri(), profile.url));
+        return 1;
+    }
+    return 0;
+}

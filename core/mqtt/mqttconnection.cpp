@@ -1,0 +1,412 @@
+// SPDX-License-Identifier: MIT
+#include "mqttconnection.h"
+
+#include <atomic>
+#include <chrono>
+#include <mqtt/async_client.h>
+#include <QDateTime>
+#include <QFile>
+#include <QPointer>
+#include <QRandomGenerator>
+#include <QSslConfiguration>
+#include <QSslKey>
+#include <QSslSocket>
+#include <QTimer>
+#include <QUrl>
+#include <QUuid>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+qint64 nowNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+// Why a CONNECT was refused, in words (MQTT 3.1.1 return codes and MQTT 5 reason codes).
+QString refusalText(int code)
+{
+    switch (code) {
+    case 1:
+        return MqttConnection::tr("the broker does not speak this MQTT version");
+    case 2:
+        return MqttConnection::tr("the broker rejected the client id");
+    case 3:
+        return MqttConnection::tr("the broker is unavailable");
+    case 4:
+    case 0x86:
+        return MqttConnection::tr("the broker refused the user name or password");
+    case 5:
+    case 0x87:
+        return MqttConnection::tr("the client is not authorised to connect");
+    default:
+        return QString();
+    }
+}
+
+bool isAuthFailure(int code)
+{
+    return code == 4 || code == 5 || code == 0x86 || code == 0x87;
+}
+} // namespace
+
+// State shared with Paho's threads; it lives as long as the last callback that holds it.
+// Paho threads never touch the MqttConnection: they post to `notifier`, a QObject that lives
+// as long as this block, and the posted call looks the connection up on the GUI thread.
+struct Shared
+{
+    EventBuffer<MqttMessage> buffer;
+    std::atomic<quint64> received {0};
+    std::atomic<quint64> bytes {0};
+    std::atomic<int> connects {0};
+    std::atomic<bool> alive {true};
+    QObject* notifier = new QObject;
+    QPointer<MqttConnection> owner; ///< read on the GUI thread only
+
+    ~Shared() { notifier->deleteLater(); }
+
+    /// Runs `f` with the connection on the GUI thread, if both still exist by then.
+    template<typename F> void post(std::shared_ptr<Shared> self, F f)
+    {
+        QMetaObject::invokeMethod(
+            notifier,
+            [self, f] {
+                if (self->alive && self->owner)
+                    f(self->owner.data());
+            },
+            Qt::QueuedConnection);
+    }
+};
+
+struct MqttConnection::Private
+{
+    std::shared_ptr<Shared> shared = std::make_shared<Shared>();
+    std::unique_ptr<mqtt::async_client> client;
+    std::unique_ptr<mqtt::iaction_listener> listener;
+    QTimer retry;
+    int retrySeconds = 1;
+};
+
+namespace {
+class ConnectListener : public mqtt::iaction_listener
+{
+public:
+    ConnectListener(std::shared_ptr<Shared> shared, QString url)
+        : m_shared(std::move(shared))
+        , m_url(std::move(url))
+    { }
+    void on_success(const mqtt::token&) override { }
+    void on_failure(const mqtt::token& tok) override
+    {
+        if (!m_shared->alive)
+            return;
+        const int code = tok.get_return_code();
+        const int reason = int(tok.get_reason_code());
+        QString why = refusalText(code > 0 ? code : reason);
+        if (why.isEmpty() && code == -1)
+            why = MqttConnection::tr("no broker answers at %1").arg(m_url);
+        if (why.isEmpty())
+            why = MqttConnection::tr("cannot connect to %1 (Paho error %2)").arg(m_url).arg(code);
+        const bool auth = isAuthFailure(code) || isAuthFailure(reason);
+        m_shared->post(m_shared, [why, auth](MqttConnection* c) {
+            QMetaObject::invokeMethod(c, "onConnectFailed", Qt::DirectConnection, Q_ARG(QString, why),
+                                      Q_ARG(bool, auth));
+        });
+    }
+
+private:
+    std::shared_ptr<Shared> m_shared;
+    QString m_url;
+};
+} // namespace
+
+MqttConnection::MqttConnection(QObject* parent)
+    : QObject(parent)
+    , d(std::make_unique<Private>())
+{
+    qRegisterMetaType<MqttConnection::State>();
+    d->shared->owner = this;
+    d->retry.setSingleShot(true);
+    connect(&d->retry, &QTimer::timeout, this, &MqttConnection::startClient);
+}
+
+MqttConnection::~MqttConnection()
+{
+    close();
+}
+
+QString MqttConnection::stateText(State state)
+{
+    switch (state) {
+    case State::Disconnected:
+        return tr("disconnected");
+    case State::Connecting:
+        return tr("connecting");
+    case State::Connected:
+        return tr("connected");
+    case State::Reconnecting:
+        return tr("reconnecting");
+    case State::Failed:
+        return tr("failed");
+    }
+    return QString();
+}
+
+void MqttConnection::setState(State state, const QString& detail)
+{
+    if (state == m_state && detail == m_detail)
+        return;
+    m_state = state;
+    m_detail = detail;
+    emit stateChanged(state, detail);
+}
+
+void MqttConnection::open(const MqttProfile& profile)
+{
+    close();
+    m_profile = profile;
+    QString error;
+    if (!profile.validate(&error)) {
+        setState(State::Failed, error);
+        return;
+    }
+    d->retrySeconds = 1;
+    startClient();
+}
+
+void MqttConnection::close()
+{
+    d->retry.stop();
+    if (d->client) {
+        // Callbacks still to come see `alive == false` and do nothing; the shared state outlives
+        // them. (Paho refuses to change callbacks while it connects, so they stay set.)
+        d->shared->alive = false;
+        try {
+            if (d->client->is_connected())
+                d->client->disconnect(0);
+        } catch (const mqtt::exception&) { }
+        d->client.reset();
+        // A fresh shared block for the next connection; counters carry over.
+        auto next = std::make_shared<Shared>();
+        next->owner = this;
+        next->received = d->shared->received.load();
+        next->bytes = d->shared->bytes.load();
+        next->connects = d->shared->connects.load();
+        d->shared = next;
+    }
+    if (m_state != State::Failed)
+        setState(State::Disconnected, QString());
+}
+
+void MqttConnection::scheduleRetry(const QString& why)
+{
+    setState(State::Reconnecting, tr("%1; retrying in %2 s").arg(why).arg(d->retrySeconds));
+    d->retry.start(d->retrySeconds * 1000);
+    d->retrySeconds = std::min(d->retrySeconds * 2, 30);
+}
+
+void MqttConnection::startClient()
+{
+    const MqttProfile& p = m_profile;
+    std::shared_ptr<Shared> shared = d->shared;
+    shared->alive = true;
+    const std::string clientId = p.clientId.isEmpty()
+        ? u"bridgescope-%1"_s.arg(QUuid::createUuid().toString(QUuid::Id128).left(12)).toStdString()
+        : p.clientId.toStdString();
+    try {
+        if (!d->client) {
+            mqtt::create_options createOpts(p.mqttVersion == 5 ? MQTTVERSION_5 : MQTTVERSION_3_1_1);
+            d->client = std::make_unique<mqtt::async_client>(p.pahoUri().toStdString(), clientId, createOpts,
+                                                             nullptr);
+            const std::vector<std::string> filters = [&] {
+                std::vector<std::string> f;
+                for (const QString& s : p.filters)
+                    f.push_back(s.toStdString());
+                if (p.brokerStatistics)
+                    f.push_back("$SYS/#");
+                return f;
+            }();
+            mqtt::async_client* client = d->client.get();
+            d->client->set_message_callback([shared](mqtt::const_message_ptr msg) {
+                if (!shared->alive)
+                    return;
+                MqttMessage m;
+                m.topic = QString::fromStdString(msg->get_topic());
+                const mqtt::binary_ref& data = msg->get_payload_ref();
+                m.payload = QByteArray(data.data(), qsizetype(data.size()));
+                m.receivedNs = nowNs();
+                m.qos = quint8(msg->get_qos());
+                m.retained = msg->is_retained();
+                const std::size_t size = std::size_t(m.payload.size());
+                shared->received.fetch_add(1, std::memory_order_relaxed);
+                shared->bytes.fetch_add(size, std::memory_order_relaxed);
+                shared->buffer.push(std::move(m), size + 64);
+            });
+            d->client->set_connected_handler([shared, client, filters](const std::string&) {
+                if (!shared->alive)
+                    return;
+                shared->connects.fetch_add(1);
+                try {
+                    // Subscribed again on every (re)connect: a clean session forgets them.
+                    client->subscribe(mqtt::string_collection::create(filters),
+                                      std::vector<int>(filters.size(), 0));
+                } catch (const mqtt::exception&) { }
+                shared->post(shared, [](MqttConnection* c) {
+                    QMetaObject::invokeMethod(c, "onConnected", Qt::DirectConnection);
+                });
+            });
+            d->client->set_connection_lost_handler([shared](const std::string& cause) {
+                if (!shared->alive)
+                    return;
+                const QString why = cause.empty() ? tr("connection lost") : QString::fromStdString(cause);
+                shared->post(shared, [why](MqttConnection* c) {
+                    QMetaObject::invokeMethod(c, "onConnectionLost", Qt::DirectConnection,
+                                              Q_ARG(QString, why));
+                });
+            });
+        }
+        auto builder = mqtt::connect_options_builder();
+        builder.keep_alive_interval(std::chrono::seconds(std::max(1, p.keepAliveSeconds)))
+            .automatic_reconnect(std::chrono::seconds(1), std::chrono::seconds(30))
+            .connect_timeout(std::chrono::seconds(5));
+        if (p.mqttVersion == 5)
+            builder.mqtt_version(MQTTVERSION_5).clean_start(p.cleanSession);
+        else
+            builder.mqtt_version(MQTTVERSION_3_1_1).clean_session(p.cleanSession);
+        if (!p.username.isEmpty())
+            builder.user_name(p.username.toStdString()).password(p.password.toStdString());
+        if (p.isTls()) {
+            mqtt::ssl_options ssl;
+            if (!p.caFile.isEmpty())
+                ssl.set_trust_store(p.caFile.toStdString());
+            if (!p.certFile.isEmpty()) {
+                ssl.set_key_store(p.certFile.toStdString());
+                ssl.set_private_key(p.keyFile.toStdString());
+                if (!p.keyPassword.isEmpty())
+                    ssl.set_private_key_password(p.keyPassword.toStdString());
+            }
+            ssl.set_enable_server_cert_auth(p.verifyServer);
+            ssl.set_verify(p.verifyServer);
+            // No ssl error handler: Paho C++ 1.2 hands OpenSSL a pointer to the ssl_options object
+            // it was set on, which its copies leave dangling. TLS failures are diagnosed with
+            // QSslSocket instead (diagnoseTls).
+            builder.ssl(std::move(ssl));
+        }
+        setState(d->shared->connects > 0 ? State::Reconnecting : State::Connecting, p.url);
+        d->listener = std::make_unique<ConnectListener>(shared, p.url);
+        d->client->connect(builder.finalize(), nullptr, *d->listener);
+    } catch (const mqtt::exception& e) {
+        d->client.reset();
+        setState(State::Failed, tr("cannot connect to %1: %2").arg(p.url, QString::fromStdString(e.what())));
+    }
+}
+
+void MqttConnection::onConnected()
+{
+    d->retrySeconds = 1;
+    setState(State::Connected, QString());
+}
+
+void MqttConnection::onConnectionLost(const QString& why)
+{
+    setState(State::Reconnecting, tr("%1; reconnecting").arg(why));
+}
+
+void MqttConnection::onConnectFailed(const QString& why, bool authFailure)
+{
+    if (authFailure) {
+        d->retry.stop();
+        setState(State::Failed, why);
+        return;
+    }
+    if (m_profile.isTls() && d->retrySeconds == 1) {
+        diagnoseTls(why);
+        return;
+    }
+    scheduleRetry(why);
+}
+
+// Paho says little about a failed TLS handshake; a handshake of our own with the same files says
+// what is wrong (unknown CA, expired certificate, wrong host name, no client certificate, ...).
+void MqttConnection::diagnoseTls(const QString& fallback)
+{
+    const QUrl url(m_profile.pahoUri());
+    auto* socket = new QSslSocket(this);
+    QSslConfiguration conf = QSslConfiguration::defaultConfiguration();
+    if (!m_profile.caFile.isEmpty())
+        conf.setCaCertificates(QSslCertificate::fromPath(m_profile.caFile));
+    if (!m_profile.certFile.isEmpty()) {
+        conf.setLocalCertificate(QSslCertificate::fromPath(m_profile.certFile).value(0));
+        QFile keyFile(m_profile.keyFile);
+        if (keyFile.open(QIODevice::ReadOnly)) {
+            const QByteArray pem = keyFile.readAll();
+            QSslKey key(pem, QSsl::Rsa, QSsl::Pem, QSsl::PrivateKey, m_profile.keyPassword.toUtf8());
+            if (key.isNull())
+                key = QSslKey(pem, QSsl::Ec, QSsl::Pem, QSsl::PrivateKey, m_profile.keyPassword.toUtf8());
+            conf.setPrivateKey(key);
+        }
+    }
+    conf.setPeerVerifyMode(m_profile.verifyServer ? QSslSocket::VerifyPeer : QSslSocket::VerifyNone);
+    socket->setSslConfiguration(conf);
+    auto problems = std::make_shared<QStringList>();
+    auto finish = [this, socket, problems, fallback](const QString& extra) {
+        if (!socket->property("done").toBool()) {
+            socket->setProperty("done", true);
+            QStringList all = *problems;
+            if (!extra.isEmpty() && !all.contains(extra))
+                all << extra;
+            socket->abort();
+            socket->deleteLater();
+            scheduleRetry(all.isEmpty() ? fallback : tr("TLS failed: %1").arg(all.join(u"; "_s)));
+        }
+    };
+    connect(socket, &QSslSocket::sslErrors, this, [problems](const QList<QSslError>& errors) {
+        for (const QSslError& e : errors)
+            *problems << e.errorString();
+    });
+    connect(socket, &QSslSocket::errorOccurred, this, [socket, finish] { finish(socket->errorString()); });
+    connect(socket, &QSslSocket::encrypted, this, [finish, fallback] { finish(QString()); });
+    connect(socket, &QSslSocket::disconnected, this, [finish] { finish(QString()); });
+    QTimer::singleShot(3000, socket, [finish] { finish(QString()); });
+    socket->connectToHostEncrypted(url.host(), quint16(url.port(8883)));
+}
+
+std::vector<MqttMessage> MqttConnection::takeMessages()
+{
+    return d->shared->buffer.take();
+}
+
+quint64 MqttConnection::received() const
+{
+    return d->shared->received.load();
+}
+
+quint64 MqttConnection::receivedBytes() const
+{
+    return d->shared->bytes.load();
+}
+
+quint64 MqttConnection::dropped() const
+{
+    return d->shared->buffer.dropped();
+}
+
+int MqttConnection::connects() const
+{
+    return d->shared->connects.load();
+}
+
+bool MqttConnection::publish(const QString& topic, const QByteArray& payload, int qos, bool retained)
+{
+    if (!d->client || !d->client->is_connected())
+        return false;
+    try {
+        d->client->publish(topic.toStdString(), payload.constData(), std::size_t(payload.size()), qos,
+                           retained);
+        return true;
+    } catch (const mqtt::exception&) {
+        return false;
+    }
+}

@@ -1,0 +1,536 @@
+// SPDX-License-Identifier: MIT
+#include "mqtttopictree.h"
+
+#include "ros/rosmessage.h"
+
+#include <algorithm>
+#include <QDateTime>
+#include <QLocale>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr int kLatencyWindow = 100;
+constexpr int kRateHistory = 120;
+constexpr qsizetype kSearchTextChars = 256;
+
+bool looksLikeText(const QByteArray& payload)
+{
+    const qsizetype n = std::min<qsizetype>(payload.size(), 512);
+    for (qsizetype i = 0; i < n; ++i) {
+        const uchar c = uchar(payload[i]);
+        if (c < 0x09 || (c > 0x0d && c < 0x20))
+            return false;
+    }
+    return true;
+}
+} // namespace
+
+struct MqttTopicTree::Node
+{
+    QString name;
+    QString path;
+    Node* parent = nullptr;
+    int row = 0;
+    bool visible = false;
+    std::vector<std::unique_ptr<Node>> children;
+    std::vector<std::unique_ptr<Node>> pending; ///< created in this batch, not yet announced
+    QHash<QString, Node*> byName;
+
+    bool isTopic = false;
+    quint64 messages = 0;
+    quint64 bytes = 0;
+    quint64 retainedMessages = 0;
+    int lastSize = 0;
+    bool retained = false;
+    quint8 qos = 0;
+    qint64 lastNs = 0;
+    std::deque<HistoryEntry> history;
+    qint64 historyBytes = 0;
+
+    quint64 subMessages = 0;
+    quint64 subBytes = 0;
+    quint64 subMessagesAtTick = 0;
+    double rate = 0;
+    std::deque<float> rateHistory;
+
+    std::deque<double> latencies;
+    double latencySum = 0;
+    double lastLatencyMs = 0;
+    quint64 latencySamples = 0;
+    quint64 malformed = 0;
+    QString typeError;
+    bool dirty = false;
+    bool typedTouched = false;
+
+    void markVisible()
+    {
+        visible = true;
+        for (auto& c : children)
+            c->markVisible();
+    }
+};
+
+struct MqttTopicTree::TypeState
+{
+    RosMsgTypeInfo info;
+    std::shared_ptr<RosTypeRegistry> registry;
+    QString error;
+};
+
+MqttTopicTree::MqttTopicTree(QObject* parent)
+    : QAbstractItemModel(parent)
+    , m_root(std::make_unique<Node>())
+{
+    m_root->visible = true;
+}
+
+MqttTopicTree::~MqttTopicTree() = default;
+
+void MqttTopicTree::setHistoryDepth(int messages)
+{
+    m_historyDepth = std::max(1, messages);
+}
+
+void MqttTopicTree::clear()
+{
+    beginResetModel();
+    m_root = std::make_unique<Node>();
+    m_root->visible = true;
+    m_byTopic.clear();
+    m_types.clear();
+    m_sys.clear();
+    m_totalMessages = 0;
+    m_malformedTypes = 0;
+    m_malformedPayloads = 0;
+    endResetModel();
+    emit brokerStatisticsChanged();
+}
+
+MqttTopicTree::Node* MqttTopicTree::nodeFor(const QString& topic, std::vector<Node*>& withPending)
+{
+    if (Node* n = m_byTopic.value(topic))
+        return n;
+    Node* node = m_root.get();
+    qsizetype start = 0;
+    while (true) {
+        const qsizetype slash = topic.indexOf(u'/', start);
+        const QString level = topic.mid(start, slash < 0 ? -1 : slash - start);
+        Node* child = node->byName.value(level);
+        if (!child) {
+            auto created = std::make_unique<Node>();
+            created->name = level;
+            created->path = slash < 0 ? topic : topic.left(slash);
+            created->parent = node;
+            child = created.get();
+            node->byName.insert(level, child);
+            if (node->visible) {
+                // Announced in one go for this parent at the end of the batch.
+                if (node->pending.empty())
+                    withPending.push_back(node);
+                node->pending.push_back(std::move(created));
+            } else {
+                child->row = int(node->children.size());
+                node->children.push_back(std::move(created));
+            }
+        }
+        node = child;
+        if (slash < 0)
+            break;
+        start = slash + 1;
+    }
+    return node;
+}
+
+void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload,
+                                           Node* typeNode)
+{
+    if (payload.isEmpty())
+        return; // a retained announcement being deleted
+    QString error;
+    const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
+    if (!info) {
+        ++m_malformedTypes;
+        typeNode->typeError = error;
+        return;
+    }
+    typeNode->typeError.clear();
+    std::shared_ptr<TypeState>& state = m_types[dataTopic];
+    if (state && state->info == *info)
+        return;
+    state = std::make_shared<TypeState>();
+    state->info = *info;
+    auto registry = std::make_shared<RosTypeRegistry>();
+    if (registry->addDefinition(info->name, info->definition, &state->error))
+        state->registry = registry;
+    if (Node* data = m_byTopic.value(dataTopic))
+        data->dirty = true;
+}
+
+void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
+{
+    if (batch.empty())
+        return;
+    std::vector<Node*> withPending;
+    std::vector<Node*> dirty;
+    std::vector<Node*> typed;
+    bool sysChanged = false;
+    const QString typePrefix = MqttClientWire::typeTopicPrefix();
+    for (MqttMessage& msg : batch) {
+        ++m_totalMessages;
+        if (msg.topic.startsWith(u"$SYS/"_s)) {
+            m_sys.insert(msg.topic, QString::fromUtf8(msg.payload));
+            sysChanged = true;
+            continue;
+        }
+        Node* n = nodeFor(msg.topic, withPending);
+        if (!n->isTopic) {
+            n->isTopic = true;
+            m_byTopic.insert(msg.topic, n);
+        }
+        const int size = int(msg.payload.size());
+        ++n->messages;
+        n->bytes += quint64(size);
+        n->lastSize = size;
+        n->retained = msg.retained;
+        n->retainedMessages += msg.retained ? 1 : 0;
+        n->qos = msg.qos;
+        n->lastNs = msg.receivedNs;
+        for (Node* p = n; p; p = p->parent) {
+            ++p->subMessages;
+            p->subBytes += quint64(size);
+            if (!p->dirty) {
+                p->dirty = true;
+                dirty.push_back(p);
+            }
+        }
+        if (msg.topic.startsWith(typePrefix))
+            absorbTypeAnnouncement(msg.topic.mid(typePrefix.size()), msg.payload, n);
+        if (const auto type = m_types.value(msg.topic)) {
+            if (type->info.stamped) {
+                if (const auto stamped = MqttClientWire::splitStamped(msg.payload)) {
+                    const double ms = double(msg.receivedNs - stamped->stampNs) / 1e6;
+                    n->lastLatencyMs = ms;
+                    n->latencies.push_back(ms);
+                    n->latencySum += ms;
+                    if (n->latencies.size() > kLatencyWindow) {
+                        n->latencySum -= n->latencies.front();
+                        n->latencies.pop_front();
+                    }
+                    ++n->latencySamples;
+                } else {
+                    ++n->malformed;
+                    ++m_malformedPayloads;
+                }
+            }
+            if (!n->typedTouched) {
+                n->typedTouched = true;
+                typed.push_back(n);
+            }
+        }
+        n->historyBytes += size;
+        n->history.push_back({msg.receivedNs, std::move(msg.payload), msg.retained, msg.qos});
+        while (n->history.size() > 1
+               && (int(n->history.size()) > m_historyDepth || n->historyBytes > m_historyBytesPerTopic)) {
+            n->historyBytes -= n->history.front().payload.size();
+            n->history.pop_front();
+        }
+    }
+
+    // New topics: one insert per parent.
+    for (Node* parent : withPending) {
+        const int first = int(parent->children.size());
+        const int last = first + int(parent->pending.size()) - 1;
+        beginInsertRows(indexOf(parent, 0), first, last);
+        for (auto& child : parent->pending) {
+            child->row = int(parent->children.size());
+            parent->children.push_back(std::move(child));
+            parent->children.back()->markVisible();
+        }
+        parent->pending.clear();
+        endInsertRows();
+    }
+
+    // Payloads of announced types must decode: check the newest one of each topic in the batch.
+    for (Node* n : typed) {
+        n->typedTouched = false;
+        const auto type = m_types.value(n->path);
+        if (!type || !type->registry || n->history.empty())
+            continue;
+        QByteArray payload = n->history.back().payload;
+        if (type->info.stamped) {
+            const auto s = MqttClientWire::splitStamped(payload);
+            if (!s)
+                continue; // counted above
+            payload = s->message;
+        }
+        RosDecodeLimits limits;
+        limits.maxArrayElements = 1;
+        limits.maxStringChars = 64;
+        if (!RosMessageDecoder::decode(*type->registry, type->info.name, payload, nullptr, limits)) {
+            ++n->malformed;
+            ++m_malformedPayloads;
+        }
+    }
+
+    // Changed figures: one dataChanged per parent, spanning the changed rows.
+    QHash<Node*, std::pair<int, int>> spans;
+    for (Node* n : dirty) {
+        n->dirty = false;
+        if (n == m_root.get() || !n->visible)
+            continue;
+        auto it = spans.find(n->parent);
+        if (it == spans.end())
+            spans.insert(n->parent, {n->row, n->row});
+        else
+            *it = {std::min(it->first, n->row), std::max(it->second, n->row)};
+    }
+    for (auto it = spans.cbegin(); it != spans.cend(); ++it) {
+        const QModelIndex parent = indexOf(it.key(), 0);
+        emit dataChanged(index(it->first, MessagesColumn, parent),
+                         index(it->second, ColumnCount - 1, parent));
+    }
+    if (sysChanged)
+        emit brokerStatisticsChanged();
+}
+
+void MqttTopicTree::tick(qint64 nowNs)
+{
+    if (m_lastTickNs == 0) {
+        m_lastTickNs = nowNs;
+        return;
+    }
+    const qint64 elapsed = nowNs - m_lastTickNs;
+    if (elapsed < 1000000000LL)
+        return;
+    m_lastTickNs = nowNs;
+    const double seconds = double(elapsed) / 1e9;
+    // Walk the visible tree; one dataChanged of the rate column per parent.
+    std::vector<Node*> stack {m_root.get()};
+    while (!stack.empty()) {
+        Node* parent = stack.back();
+        stack.pop_back();
+        for (auto& c : parent->children) {
+            Node* n = c.get();
+            n->rate = double(n->subMessages - n->subMessagesAtTick) / seconds;
+            n->subMessagesAtTick = n->subMessages;
+            n->rateHistory.push_back(float(n->rate));
+            if (n->rateHistory.size() > kRateHistory)
+                n->rateHistory.pop_front();
+            if (!n->children.empty())
+                stack.push_back(n);
+        }
+        if (!parent->children.empty()) {
+            const QModelIndex p = indexOf(parent, 0);
+            emit dataChanged(index(0, RateColumn, p), index(int(parent->children.size()) - 1, RateColumn, p));
+        }
+    }
+}
+
+QModelIndex MqttTopicTree::indexOf(const Node* node, int column) const
+{
+    if (!node || node == m_root.get() || !node->visible)
+        return {};
+    return createIndex(node->row, column, const_cast<Node*>(node));
+}
+
+QModelIndex MqttTopicTree::indexOf(const QString& topic, int column) const
+{
+    return indexOf(m_byTopic.value(topic), column);
+}
+
+std::optional<MqttTopicTree::TopicInfo> MqttTopicTree::info(const QString& topic) const
+{
+    const Node* n = m_byTopic.value(topic);
+    if (!n)
+        return std::nullopt;
+    TopicInfo i;
+    i.topic = topic;
+    i.messages = n->messages;
+    i.bytes = n->bytes;
+    i.retainedMessages = n->retainedMessages;
+    i.lastSize = n->lastSize;
+    i.retained = n->retained;
+    i.qos = n->qos;
+    i.lastNs = n->lastNs;
+    i.rate = n->rate;
+    if (const auto type = m_types.value(topic))
+        i.rosType = type->info;
+    i.typeError = n->typeError;
+    i.malformedPayloads = n->malformed;
+    i.lastLatencyMs = n->lastLatencyMs;
+    i.meanLatencyMs = n->latencies.empty() ? 0 : n->latencySum / double(n->latencies.size());
+    i.latencySamples = n->latencySamples;
+    for (float r : n->rateHistory)
+        i.rateHistory << double(r);
+    return i;
+}
+
+QList<MqttTopicTree::TopicInfo> MqttTopicTree::topics() const
+{
+    QStringList names = m_byTopic.keys();
+    names.sort();
+    QList<TopicInfo> out;
+    out.reserve(names.size());
+    for (const QString& t : std::as_const(names))
+        out << *info(t);
+    return out;
+}
+
+const std::deque<MqttTopicTree::HistoryEntry>* MqttTopicTree::history(const QString& topic) const
+{
+    const Node* n = m_byTopic.value(topic);
+    return n ? &n->history : nullptr;
+}
+
+std::shared_ptr<const RosTypeRegistry> MqttTopicTree::registryFor(const QString& topic) const
+{
+    const auto type = m_types.value(topic);
+    return type ? type->registry : nullptr;
+}
+
+QModelIndex MqttTopicTree::index(int row, int column, const QModelIndex& parent) const
+{
+    if (row < 0 || column < 0 || column >= ColumnCount)
+        return {};
+    const Node* p = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : m_root.get();
+    if (row >= int(p->children.size()))
+        return {};
+    return createIndex(row, column, p->children[size_t(row)].get());
+}
+
+QModelIndex MqttTopicTree::parent(const QModelIndex& child) const
+{
+    if (!child.isValid())
+        return {};
+    const Node* n = static_cast<const Node*>(child.internalPointer());
+    return indexOf(n->parent, 0);
+}
+
+int MqttTopicTree::rowCount(const QModelIndex& parent) const
+{
+    if (parent.isValid() && parent.column() != 0)
+        return 0;
+    const Node* p = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : m_root.get();
+    return int(p->children.size());
+}
+
+int MqttTopicTree::columnCount(const QModelIndex&) const
+{
+    return ColumnCount;
+}
+
+QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid())
+        return {};
+    const Node* n = static_cast<const Node*>(index.internalPointer());
+    const auto type = n->isTopic ? m_types.value(n->path) : nullptr;
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case TopicColumn:
+            return n->name.isEmpty() ? tr("(empty level)") : n->name;
+        case MessagesColumn:
+            return QString::number(n->subMessages);
+        case RateColumn:
+            return QString::number(n->rate, 'f', n->rate < 10 ? 1 : 0);
+        case BytesColumn:
+            return QLocale::system().formattedDataSize(qint64(n->subBytes), 1,
+                                                       QLocale::DataSizeTraditionalFormat);
+        case SizeColumn:
+            return n->isTopic
+                ? QLocale::system().formattedDataSize(n->lastSize, 1, QLocale::DataSizeTraditionalFormat)
+                : QString();
+        case RetainedColumn:
+            return n->isTopic && n->retained ? tr("retained") : QString();
+        case QosColumn:
+            return n->isTopic ? QString::number(n->qos) : QString();
+        case LastColumn:
+            return n->isTopic
+                ? QDateTime::fromMSecsSinceEpoch(n->lastNs / 1000000).toString(u"HH:mm:ss.zzz"_s)
+                : QString();
+        case RosTypeColumn:
+            if (!n->typeError.isEmpty())
+                return tr("malformed type announcement");
+            return type ? type->info.name + (type->info.stamped ? tr(" (stamped)") : QString()) : QString();
+        case LatencyColumn:
+            return n->latencySamples ? tr("%1 ms").arg(n->lastLatencyMs, 0, 'f', 1) : QString();
+        }
+        break;
+    case SortRole:
+        switch (index.column()) {
+        case TopicColumn:
+            return n->name;
+        case MessagesColumn:
+            return n->subMessages;
+        case RateColumn:
+            return n->rate;
+        case BytesColumn:
+            return n->subBytes;
+        case SizeColumn:
+            return n->lastSize;
+        case RetainedColumn:
+            return n->retained;
+        case QosColumn:
+            return n->qos;
+        case LastColumn:
+            return n->lastNs;
+        case RosTypeColumn:
+            return type ? type->info.name : QString();
+        case LatencyColumn:
+            return n->lastLatencyMs;
+        }
+        break;
+    case Qt::ToolTipRole:
+        if (index.column() == LatencyColumn && n->latencySamples)
+            return tr(
+                "Receive time minus the stamp mqtt_client injected on the sending host: valid only as far as "
+                "the two clocks agree.");
+        if (!n->typeError.isEmpty())
+            return n->typeError;
+        return n->path;
+    case FullTopicRole:
+        return n->path;
+    case IsTopicRole:
+        return n->isTopic;
+    case SearchTextRole:
+        if (n->history.empty() || !looksLikeText(n->history.back().payload))
+            return QString();
+        return QString::fromUtf8(n->history.back().payload.left(kSearchTextChars));
+    case RosTypeRole:
+        return type ? type->info.name : QString();
+    case StampedRole:
+        return type && type->info.stamped;
+    }
+    return {};
+}
+
+QVariant MqttTopicTree::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case TopicColumn:
+        return tr("Topic");
+    case MessagesColumn:
+        return tr("Messages");
+    case RateColumn:
+        return tr("Rate (Hz)");
+    case BytesColumn:
+        return tr("Bytes");
+    case SizeColumn:
+        return tr("Last size");
+    case RetainedColumn:
+        return tr("Retained");
+    case QosColumn:
+        return tr("QoS");
+    case LastColumn:
+        return tr("Last message");
+    case RosTypeColumn:
+        return tr("ROS type");
+    case LatencyColumn:
+        return tr("Latency");
+    }
+    return {};
+}

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "mqttclientwire.h"
+#include "mqttconnection.h"
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <QAbstractItemModel>
+#include <QHash>
+#include <vector>
+
+class RosTypeRegistry;
+
+/// The broker's topics as a tree of levels, with live figures, updated in batches.
+///
+/// Every topic keeps its message and byte counts, rate, last size, retained flag and QoS, the time
+/// of its last message, and a bounded history of payloads; every level sums its subtree. Topics
+/// that mqtt_client announces get their ROS type; stamped ones their one-way latency. $SYS topics
+/// are kept apart as broker statistics. Batches come from the GUI drain timer (apply()); one batch
+/// gives one row-insert per parent and one dataChanged per parent, never a signal per message.
+class MqttTopicTree : public QAbstractItemModel
+{
+    Q_OBJECT
+public:
+    enum Column {
+        TopicColumn,
+        MessagesColumn,
+        RateColumn,
+        BytesColumn,
+        SizeColumn,
+        RetainedColumn,
+        QosColumn,
+        LastColumn,
+        RosTypeColumn,
+        LatencyColumn,
+        ColumnCount
+    };
+    enum Role {
+        FullTopicRole = Qt::UserRole + 1, ///< "a/b/c"
+        IsTopicRole, ///< bool: messages arrived on exactly this topic
+        SortRole,
+        SearchTextRole, ///< the last payload as text (for filtering by content)
+        RosTypeRole,
+        StampedRole,
+    };
+
+    struct HistoryEntry
+    {
+        qint64 receivedNs = 0;
+        QByteArray payload;
+        bool retained = false;
+        quint8 qos = 0;
+    };
+
+    /// What is known about one topic (for the detail pane and the discover command).
+    struct TopicInfo
+    {
+        QString topic;
+        quint64 messages = 0; ///< on this topic itself
+        quint64 bytes = 0;
+        quint64 retainedMessages = 0;
+        int lastSize = 0;
+        bool retained = false; ///< the last message was retained
+        int qos = 0;
+        qint64 lastNs = 0;
+        double rate = 0;
+        std::optional<RosMsgTypeInfo> rosType;
+        QString typeError; ///< a type announcement that could not be decoded
+        quint64 malformedPayloads = 0;
+        double lastLatencyMs = 0;
+        double meanLatencyMs = 0;
+        quint64 latencySamples = 0;
+        QList<double> rateHistory; ///< one value per second, oldest first
+    };
+
+    explicit MqttTopicTree(QObject* parent = nullptr);
+    ~MqttTopicTree() override;
+
+    void setHistoryDepth(int messages);
+    int historyDepth() const { return m_historyDepth; }
+    void apply(std::vector<MqttMessage>&& batch);
+    /// Updates rates once a second; `nowNs` is wall-clock time.
+    void tick(qint64 nowNs);
+    void clear();
+
+    int topicCount() const { return int(m_byTopic.size()); }
+    quint64 totalMessages() const { return m_totalMessages; }
+    quint64 malformedTypeAnnouncements() const { return m_malformedTypes; }
+    quint64 malformedPayloads() const { return m_malformedPayloads; }
+    QModelIndex indexOf(const QString& topic, int column = 0) const;
+    std::optional<TopicInfo> info(const QString& topic) const;
+    QList<TopicInfo> topics() const; ///< every topic, by name
+    const std::deque<HistoryEntry>* history(const QString& topic) const;
+    /// A registry able to decode the topic's payloads, when mqtt_client announced its type.
+    std::shared_ptr<const RosTypeRegistry> registryFor(const QString& topic) const;
+    const QHash<QString, QString>& brokerStatistics() const { return m_sys; }
+
+    QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
+    QModelIndex parent(const QModelIndex& child) const override;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+signals:
+    void brokerStatisticsChanged();
+
+private:
+    struct Node;
+    struct TypeState;
+    Node* nodeFor(const QString& topic, std::vector<Node*>& visibleParentsWithPending);
+    QModelIndex indexOf(const Node* node, int column) const;
+    void absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
+
+    std::unique_ptr<Node> m_root;
+    QHash<QString, Node*> m_byTopic;
+    QHash<QString, std::shared_ptr<TypeState>> m_types; ///< by data topic
+    QHash<QString, QString> m_sys;
+    int m_historyDepth = 20;
+    qint64 m_historyBytesPerTopic = 16 * 1024 * 1024;
+    quint64 m_totalMessages = 0;
+    quint64 m_malformedTypes = 0;
+    quint64 m_malformedPayloads = 0;
+    qint64 m_lastTickNs = 0;
+};

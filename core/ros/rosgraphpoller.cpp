@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+#include "rosgraphpoller.h"
+
+#include <QTimer>
+
+class RosGraphPoller::Worker : public QObject
+{
+    Q_OBJECT
+public:
+    QTimer timer;
+    QString uri;
+    int timeoutMs = 800;
+
+    void poll()
+    {
+        const QString current = uri;
+        RosMasterApi api(current);
+        QString error;
+        const std::optional<RosGraph> graph = api.graph(timeoutMs, &error);
+        std::optional<qint64> pid;
+        if (graph)
+            pid = api.pid(timeoutMs, &error);
+        emit result(graph && pid, graph.value_or(RosGraph()), pid.value_or(-1), error, current);
+    }
+
+signals:
+    void result(bool ok, const RosGraph& graph, qint64 pid, const QString& error, const QString& uri);
+};
+
+RosGraphPoller::RosGraphPoller(QObject* parent)
+    : QObject(parent)
+    , m_uri(RosMasterApi::defaultMasterUri())
+{
+    qRegisterMetaType<RosGraph>();
+    m_worker = new Worker;
+    m_worker->uri = m_uri;
+    m_worker->moveToThread(&m_thread);
+    m_worker->timer.moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    connect(&m_worker->timer, &QTimer::timeout, m_worker, &Worker::poll);
+    connect(m_worker, &Worker::result, this, &RosGraphPoller::onResult);
+    m_thread.setObjectName(QStringLiteral("ros-master-poller"));
+    m_thread.start();
+}
+
+RosGraphPoller::~RosGraphPoller()
+{
+    stop();
+    m_thread.quit();
+    m_thread.wait();
+}
+
+void RosGraphPoller::setMasterUri(const QString& uri)
+{
+    m_uri = uri;
+    m_known = false;
+    m_pid = -1;
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, uri] { w->uri = uri; });
+    pollNow();
+}
+
+void RosGraphPoller::start(int intervalMs)
+{
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, intervalMs] {
+        w->timeoutMs = std::max(100, intervalMs * 4 / 5);
+        w->timer.start(intervalMs);
+        w->poll();
+    });
+}
+
+void RosGraphPoller::stop()
+{
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker] { w->timer.stop(); }, Qt::BlockingQueuedConnection);
+}
+
+void RosGraphPoller::pollNow()
+{
+    QMetaObject::invokeMethod(m_worker, [w = m_worker] { w->poll(); });
+}
+
+void RosGraphPoller::onResult(bool ok, const RosGraph& graph, qint64 pid, const QString& error,
+                              const QString& uri)
+{
+    if (uri != m_uri)
+        return; // an answer from the master we left
+    ++m_polls;
+    if (!ok) {
+        m_error = error;
+        if (m_reachable || !m_known) {
+            m_reachable = false;
+            m_known = true;
+            emit reachabilityChanged(false, error);
+        }
+        emit polled();
+        return;
+    }
+    m_error.clear();
+    const bool restarted = m_pid >= 0 && pid != m_pid;
+    const bool cameBack = m_known && !m_reachable;
+    m_pid = pid;
+    if (!m_reachable || !m_known) {
+        m_reachable = true;
+        m_known = true;
+        emit reachabilityChanged(true, QString());
+    }
+    if (restarted || cameBack)
+        emit masterRestarted();
+    if (graph != m_graph) {
+        m_graph = graph;
+        emit graphChanged(m_graph);
+    }
+    emit polled();
+}
+
+#include "rosgraphpoller.moc"

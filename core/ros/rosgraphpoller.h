@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "rosmasterapi.h"
+
+#include <QObject>
+#include <QThread>
+
+/// Polls the ROS master about once a second on a worker thread and reports only changes.
+///
+/// A dead master shows as unreachable within one poll and never blocks the caller's thread; when
+/// it answers again (a restarted master has a new pid), masterRestarted() tells subscribers to
+/// register anew.
+class RosGraphPoller : public QObject
+{
+    Q_OBJECT
+public:
+    explicit RosGraphPoller(QObject* parent = nullptr);
+    ~RosGraphPoller() override;
+
+    void setMasterUri(const QString& uri);
+    QString masterUri() const { return m_uri; }
+    /// Starts polling every `intervalMs` (each call times out before the next is due).
+    void start(int intervalMs = 1000);
+    void stop();
+    /// Asks for a poll now (the answer comes as signals, like every other).
+    void pollNow();
+
+    const RosGraph& graph() const { return m_graph; }
+    bool isReachable() const { return m_reachable; }
+    QString lastError() const { return m_error; }
+    int polls() const { return m_polls; }
+
+signals:
+    void graphChanged(const RosGraph& graph);
+    void reachabilityChanged(bool reachable, const QString& detail);
+    void masterRestarted();
+    void polled(); ///< after every poll, changed or not
+
+private:
+    void onResult(bool ok, const RosGraph& graph, qint64 pid, const QString& error, const QString& uri);
+
+    class Worker;
+    QThread m_thread;
+    Worker* m_worker = nullptr;
+    QString m_uri;
+    RosGraph m_graph;
+    bool m_reachable = false;
+    bool m_known = false;
+    qint64 m_pid = -1;
+    QString m_error;
+    int m_polls = 0;
+};

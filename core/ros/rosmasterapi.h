@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <optional>
+#include <QCoreApplication>
+#include <QList>
+#include <QMetaType>
+#include <QString>
+#include <QStringList>
+#include <QVariant>
+
+/// One topic of the ROS graph.
+struct RosTopicInfo
+{
+    QString name;
+    QString type;
+    QStringList publishers; ///< node names
+    QStringList subscribers;
+    bool operator==(const RosTopicInfo& o) const
+    {
+        return name == o.name && type == o.type && publishers == o.publishers && subscribers == o.subscribers;
+    }
+};
+
+/// What the master knows: topics (sorted by name) and nodes.
+struct RosGraph
+{
+    QList<RosTopicInfo> topics;
+    QStringList nodes;
+    bool operator==(const RosGraph& o) const { return topics == o.topics && nodes == o.nodes; }
+    bool operator!=(const RosGraph& o) const { return !(*this == o); }
+    const RosTopicInfo* topic(const QString& name) const;
+};
+Q_DECLARE_METATYPE(RosGraph)
+
+/// The ROS master's XML-RPC API, spoken directly over TCP with a deadline on every call.
+///
+/// It needs no roscpp (which allows one master per process and waits for it without end), so a
+/// dead or unreachable master costs at most the timeout, and the master can change at run time.
+/// Calls block: use them on a worker thread.
+class RosMasterApi
+{
+    Q_DECLARE_TR_FUNCTIONS(RosMasterApi)
+public:
+    explicit RosMasterApi(const QString& masterUri, const QString& callerId = QStringLiteral("/bridgescope"));
+
+    /// Calls `method` and returns the master's value (the third element of [code, status, value]).
+    std::optional<QVariant> call(const QString& method, const QVariantList& params, int timeoutMs,
+                                 QString* error = nullptr) const;
+    std::optional<RosGraph> graph(int timeoutMs, QString* error = nullptr) const;
+    std::optional<qint64> pid(int timeoutMs, QString* error = nullptr) const;
+
+    /// An XML-RPC request body; a response body parsed into QVariant (arrays become QVariantList).
+    static QByteArray encodeCall(const QString& method, const QVariantList& params);
+    static std::optional<QVariant> decodeResponse(const QByteArray& body, QString* error);
+    /// http://host:port/ from ROS_MASTER_URI (default http://localhost:11311/).
+    static QString defaultMasterUri();
+
+private:
+    QString m_uri;
+    QString m_callerId;
+};

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <QByteArray>
+#include <QHash>
+#include <QObject>
+#include <QString>
+
+/// Figures of one monitored ROS topic, like rqt_topic shows them.
+struct RosMonitorStats
+{
+    quint64 messages = 0;
+    quint64 bytes = 0;
+    int lastSize = 0;
+    qint64 lastNs = 0; ///< wall clock of the last message
+    double rateHz = 0; ///< over the last few seconds, like rostopic hz
+    double bytesPerSecond = 0;
+    QString type;
+    QString md5;
+    QString definition;
+    QByteArray lastMessage; ///< serialized
+};
+
+/// Generic subscriptions to ROS topics for monitoring (the only code that uses roscpp).
+///
+/// The process gets one roscpp node, started on first use, registered with the master given
+/// here; subscribing happens on a worker thread (the master may be slow or gone), callbacks on a
+/// roscpp spinner thread that only updates the figures under a lock. The GUI takes snapshots.
+class RosMonitor : public QObject
+{
+    Q_OBJECT
+public:
+    explicit RosMonitor(QObject* parent = nullptr);
+    ~RosMonitor() override;
+
+    /// The master to register with; switches the process's roscpp node when it changes.
+    void setMasterUri(const QString& uri);
+    void monitor(const QString& topic);
+    void unmonitor(const QString& topic);
+    bool isMonitored(const QString& topic) const;
+    /// Registers every monitored topic again (after the master restarted).
+    void resubscribeAll();
+    /// Current figures of every monitored topic (rates computed for `nowNs`).
+    QHash<QString, RosMonitorStats> snapshot(qint64 nowNs) const;
+
+signals:
+    void monitorFailed(const QString& topic, const QString& why);
+
+private:
+    struct Private;
+    std::shared_ptr<Private> d;
+};

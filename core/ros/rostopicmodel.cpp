@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: MIT
+#include "rostopicmodel.h"
+
+#include <algorithm>
+#include <QLocale>
+
+using namespace Qt::StringLiterals;
+
+RosTopicModel::RosTopicModel(QObject* parent)
+    : QAbstractTableModel(parent)
+{ }
+
+int RosTopicModel::rowOf(const QString& topic) const
+{
+    const auto it = std::lower_bound(m_graph.topics.cbegin(), m_graph.topics.cend(), topic,
+                                     [](const RosTopicInfo& t, const QString& n) { return t.name < n; });
+    return it != m_graph.topics.cend() && it->name == topic ? int(it - m_graph.topics.cbegin()) : -1;
+}
+
+void RosTopicModel::setGraph(const RosGraph& graph)
+{
+    // Both lists are sorted: remove what went away (from the back), insert what is new in place,
+    // then tell about rows whose type or nodes changed.
+    QSet<QString> next;
+    for (const RosTopicInfo& t : graph.topics)
+        next.insert(t.name);
+    for (int row = int(m_graph.topics.size()) - 1; row >= 0; --row) {
+        if (!next.contains(m_graph.topics[row].name)) {
+            beginRemoveRows({}, row, row);
+            m_graph.topics.removeAt(row);
+            endRemoveRows();
+        }
+    }
+    for (int row = 0; row < graph.topics.size(); ++row) {
+        const RosTopicInfo& t = graph.topics[row];
+        if (row < m_graph.topics.size() && m_graph.topics[row].name == t.name) {
+            if (!(m_graph.topics[row] == t)) {
+                m_graph.topics[row] = t;
+                emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+            }
+            continue;
+        }
+        beginInsertRows({}, row, row);
+        m_graph.topics.insert(row, t);
+        endInsertRows();
+    }
+    m_graph.nodes = graph.nodes;
+}
+
+void RosTopicModel::setMonitorStats(const QHash<QString, RosMonitorStats>& stats, qint64 nowNs)
+{
+    m_stats = stats;
+    m_nowNs = nowNs;
+    if (!m_graph.topics.isEmpty() && !m_monitored.isEmpty())
+        emit dataChanged(index(0, RateColumn), index(int(m_graph.topics.size()) - 1, AgeColumn));
+}
+
+void RosTopicModel::setMonitored(const QString& topic, bool on)
+{
+    if (on == m_monitored.contains(topic))
+        return;
+    if (on)
+        m_monitored.insert(topic);
+    else
+        m_monitored.remove(topic);
+    const int row = rowOf(topic);
+    if (row >= 0)
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    emit monitorRequested(topic, on);
+}
+
+const RosMonitorStats* RosTopicModel::stats(const QString& topic) const
+{
+    const auto it = m_stats.constFind(topic);
+    return it == m_stats.cend() ? nullptr : &*it;
+}
+
+int RosTopicModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : int(m_graph.topics.size());
+}
+
+int RosTopicModel::columnCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant RosTopicModel::data(const QModelIndex& index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const RosTopicInfo& t = m_graph.topics[index.row()];
+    const bool monitored = m_monitored.contains(t.name);
+    const RosMonitorStats* s = monitored ? stats(t.name) : nullptr;
+    const bool any = s && s->messages > 0;
+    switch (role) {
+    case Qt::CheckStateRole:
+        return index.column() == MonitorColumn ? QVariant(monitored ? Qt::Checked : Qt::Unchecked)
+                                               : QVariant();
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case TopicColumn:
+            return t.name;
+        case TypeColumn:
+            return t.type;
+        case PublishersColumn:
+            return QString::number(t.publishers.size());
+        case SubscribersColumn:
+            return QString::number(t.subscribers.size());
+        case RateColumn:
+            return any ? QString::number(s->rateHz, 'f', s->rateHz < 10 ? 2 : 1) : QString();
+        case BandwidthColumn:
+            return any ? QLocale::system().formattedDataSize(qint64(s->bytesPerSecond), 1,
+                                                             QLocale::DataSizeTraditionalFormat)
+                    + tr("/s")
+                       : QString();
+        case SizeColumn:
+            return any
+                ? QLocale::system().formattedDataSize(s->lastSize, 1, QLocale::DataSizeTraditionalFormat)
+                : QString();
+        case AgeColumn:
+            if (any)
+                return tr("%1 s").arg(double(m_nowNs - s->lastNs) / 1e9, 0, 'f', 1);
+            return monitored ? tr("waiting…") : QString();
+        }
+        break;
+    case Qt::ToolTipRole:
+        if (index.column() == PublishersColumn)
+            return t.publishers.join(u'\n');
+        if (index.column() == SubscribersColumn)
+            return t.subscribers.join(u'\n');
+        if (index.column() == MonitorColumn)
+            return tr("Subscribe and show rate, bandwidth and the last message");
+        return t.name;
+    case SortRole:
+        switch (index.column()) {
+        case MonitorColumn:
+            return monitored;
+        case PublishersColumn:
+            return int(t.publishers.size());
+        case SubscribersColumn:
+            return int(t.subscribers.size());
+        case RateColumn:
+            return any ? s->rateHz : -1.0;
+        case BandwidthColumn:
+            return any ? s->bytesPerSecond : -1.0;
+        case SizeColumn:
+            return any ? s->lastSize : -1;
+        case AgeColumn:
+            return any ? s->lastNs : qint64(0);
+        default:
+            return data(index, Qt::DisplayRole);
+        }
+    case TopicRole:
+        return t.name;
+    case TypeRole:
+        return t.type;
+    case MonitoredRole:
+        return monitored;
+    }
+    return {};
+}
+
+bool RosTopicModel::setData(const QModelIndex& index, const QVariant& value, int role)
+{
+    if (role != Qt::CheckStateRole || index.column() != MonitorColumn
+        || !checkIndex(index, CheckIndexOption::IndexIsValid))
+        return false;
+    setMonitored(m_graph.topics[index.row()].name, value.toInt() == Qt::Checked);
+    return true;
+}
+
+Qt::ItemFlags RosTopicModel::flags(const QModelIndex& index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.isValid() && index.column() == MonitorColumn)
+        f |= Qt::ItemIsUserCheckable;
+    return f;
+}
+
+QVariant RosTopicModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case MonitorColumn:
+        return tr("Monitor");
+    case TopicColumn:
+        return tr("Topic");
+    case TypeColumn:
+        return tr("Type");
+    case PublishersColumn:
+        return tr("Pubs");
+    case SubscribersColumn:
+        return tr("Subs");
+    case RateColumn:
+        return tr("Rate (Hz)");
+    case BandwidthColumn:
+        return tr("Bandwidth");
+    case SizeColumn:
+        return tr("Size");
+    case AgeColumn:
+        return tr("Last");
+    }
+    return {};
+}

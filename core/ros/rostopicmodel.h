@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "rosmasterapi.h"
+#include "rosmonitor.h"
+
+#include <QAbstractTableModel>
+#include <QSet>
+
+/// The ROS graph's topics as a table: name, type, publishers, subscribers, and for monitored
+/// topics rate, bandwidth, size and the time since the last message.
+///
+/// A new graph is merged in row by row (inserts and removes, never a reset); checking the
+/// Monitor column asks for a subscription through monitorRequested().
+class RosTopicModel : public QAbstractTableModel
+{
+    Q_OBJECT
+public:
+    enum Column {
+        MonitorColumn,
+        TopicColumn,
+        TypeColumn,
+        PublishersColumn,
+        SubscribersColumn,
+        RateColumn,
+        BandwidthColumn,
+        SizeColumn,
+        AgeColumn,
+        ColumnCount
+    };
+    enum Role { TopicRole = Qt::UserRole + 1, TypeRole, SortRole, MonitoredRole };
+
+    explicit RosTopicModel(QObject* parent = nullptr);
+
+    void setGraph(const RosGraph& graph);
+    void setMonitorStats(const QHash<QString, RosMonitorStats>& stats, qint64 nowNs);
+    void setMonitored(const QString& topic, bool on);
+    const RosGraph& graph() const { return m_graph; }
+    const RosMonitorStats* stats(const QString& topic) const;
+    int rowOf(const QString& topic) const;
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+signals:
+    void monitorRequested(const QString& topic, bool on);
+
+private:
+    RosGraph m_graph;
+    QSet<QString> m_monitored;
+    QHash<QString, RosMonitorStats> m_stats;
+    qint64 m_nowNs = 0;
+};

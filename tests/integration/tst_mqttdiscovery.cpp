@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: MIT
+// MQTT discovery against a real mosquitto: exact counts, mqtt_client type announcements, TLS with
+// client certificates, passwords, a broker that dies and comes back, large and binary payloads.
+#include "fixtures.h"
+#include "mqtt/mqttconnection.h"
+#include "mqtt/mqtttopictree.h"
+#include "testservers.h"
+#include "tlsfiles.h"
+
+#include <QProcess>
+#include <QRandomGenerator>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+// A discovery connection with its tree, drained on demand like the GUI's timer does.
+struct Discovery
+{
+    MqttConnection connection;
+    MqttTopicTree tree;
+
+    void open(const MqttProfile& p) { connection.open(p); }
+    void drain() { tree.apply(connection.takeMessages()); }
+    quint64 messages(const QString& topic)
+    {
+        drain();
+        const auto i = tree.info(topic);
+        return i ? i->messages : 0;
+    }
+    bool connected() const { return connection.state() == MqttConnection::State::Connected; }
+};
+
+QString run(const QString& program, const QStringList& args, const QByteArray& input = {})
+{
+    QProcess p;
+    p.start(program, args);
+    if (!input.isEmpty()) {
+        p.write(input);
+        p.closeWriteChannel();
+    }
+    if (!p.waitForFinished(30000))
+        return u"<timeout>"_s;
+    return QString::fromLocal8Bit(p.readAllStandardOutput() + p.readAllStandardError()).trimmed();
+}
+
+QStringList pubArgs(const TestServers& s)
+{
+    return {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(s.mosquittoPort())};
+}
+} // namespace
+
+class TestMqttDiscovery : public QObject
+{
+    Q_OBJECT
+private slots:
+    void retainedAndLiveTopicsAreCountedExactly()
+    {
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto(), qPrintable(servers.errorString()));
+        // Retained before anyone listens: they count as soon as discovery subscribes.
+        for (int i = 0; i < 3; ++i)
+            run(u"mosquitto_pub"_s,
+                pubArgs(servers)
+                    + QStringList {u"-t"_s, u"site/retained/%1"_s.arg(i), u"-r"_s, u"-m"_s,
+                                   u"state %1"_s.arg(i)});
+        Discovery d;
+        d.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.topicCount()), 3, 10000);
+        for (int i = 0; i < 3; ++i) {
+            const auto info = d.tree.info(u"site/retained/%1"_s.arg(i));
+            QCOMPARE(info->messages, 1u);
+            QVERIFY(info->retained);
+        }
+        // 250 live messages, one per line, at QoS 1.
+        QByteArray lines;
+        for (int i = 0; i < 250; ++i)
+            lines += "sample " + QByteArray::number(i) + '\n';
+        run(u"mosquitto_pub"_s,
+            pubArgs(servers) + QStringList {u"-t"_s, u"site/live"_s, u"-q"_s, u"1"_s, u"-l"_s}, lines);
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"site/live"_s), 250u, 10000);
+        QTest::qWait(200); // nothing more arrives
+        QCOMPARE(d.messages(u"site/live"_s), 250u);
+        QVERIFY(!d.tree.info(u"site/live"_s)->retained);
+        QCOMPARE(d.connection.received(), 253u);
+        QCOMPARE(d.connection.dropped(), 0u);
+        QCOMPARE(d.tree.history(u"site/live"_s)->back().payload, QByteArray("sample 249"));
+    }
+
+    void mqttClientTypeAnnouncementsAreDecoded()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        Discovery d;
+        d.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 10000);
+        run(u"mosquitto_pub"_s,
+            pubArgs(servers)
+                + QStringList {u"-t"_s, u"mqtt_client/ros_msg_type/cap/pose"_s, u"-r"_s, u"-f"_s,
+                               Fixtures::path(u"mqtt_client/wire/pose.type.bin"_s)});
+        run(u"mosquitto_pub"_s,
+            pubArgs(servers)
+                + QStringList {u"-t"_s, u"cap/pose"_s, u"-f"_s,
+                               Fixtures::path(u"mqtt_client/wire/pose.payload.bin"_s)});
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"cap/pose"_s), 1u, 10000);
+        const auto info = d.tree.info(u"cap/pose"_s);
+        QVERIFY(info->rosType);
+        QCOMPARE(info->rosType->name, u"geometry_msgs/PoseStamped"_s);
+        QCOMPARE(info->malformedPayloads, 0u);
+
+        // A malformed announcement and a payload that does not fit its type are counted.
+        run(u"mosquitto_pub"_s,
+            pubArgs(servers)
+                + QStringList {u"-t"_s, u"mqtt_client/ros_msg_type/broken"_s, u"-m"_s, u"junk"_s});
+        run(u"mosquitto_pub"_s,
+            pubArgs(servers) + QStringList {u"-t"_s, u"cap/pose"_s, u"-m"_s, u"not a pose"_s});
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"cap/pose"_s), 2u, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.malformedTypeAnnouncements()), 1u, 10000);
+        QCOMPARE(d.tree.malformedPayloads(), 1u);
+    }
+
+    void tlsWithClientCertificates()
+    {
+        TestServers servers;
+        TlsFiles tls;
+        QVERIFY2(tls.make(servers.tempPath()), qPrintable(tls.error));
+        TestMosquittoOptions opts;
+        opts.caFile = tls.ca;
+        opts.certFile = tls.serverCert;
+        opts.keyFile = tls.serverKey;
+        opts.requireCertificate = true;
+        QVERIFY2(servers.startMosquitto(opts), qPrintable(servers.errorString()));
+        QVERIFY(servers.brokerUrl().startsWith(u"ssl://"_s));
+
+        MqttProfile profile = MqttProfile::fromUrl(servers.brokerUrl());
+        profile.caFile = tls.ca;
+        profile.certFile = tls.clientCert;
+        profile.keyFile = tls.clientKey;
+        Discovery good;
+        good.open(profile);
+        QTRY_VERIFY_WITH_TIMEOUT(good.connected(), 15000);
+        run(u"mosquitto_pub"_s,
+            pubArgs(servers)
+                + QStringList {u"--cafile"_s, tls.ca, u"--cert"_s, tls.clientCert, u"--key"_s, tls.clientKey,
+                               u"-t"_s, u"secure/t"_s, u"-m"_s, u"x"_s});
+        QTRY_COMPARE_WITH_TIMEOUT(good.messages(u"secure/t"_s), 1u, 10000);
+
+        // A broker certificate from another CA is refused, and the user is told why.
+        MqttProfile wrongCa = profile;
+        wrongCa.caFile = tls.otherCa;
+        Discovery bad;
+        bad.open(wrongCa);
+        QTRY_VERIFY_WITH_TIMEOUT(bad.connection.state() == MqttConnection::State::Reconnecting, 15000);
+        QVERIFY2(bad.connection.stateDetail().contains(u"TLS"_s)
+                     || bad.connection.stateDetail().contains(u"certificate"_s),
+                 qPrintable(bad.connection.stateDetail()));
+    }
+
+    void passwordsAreCheckedAndWrongOnesSaidSo()
+    {
+        TestServers servers;
+        const QString passwd = servers.tempPath() + u"/passwd"_s;
+        QCOMPARE(run(u"mosquitto_passwd"_s, {u"-c"_s, u"-b"_s, passwd, u"alice"_s, u"s3cret"_s}), QString());
+        TestMosquittoOptions opts;
+        opts.allowAnonymous = false;
+        opts.passwordFile = passwd;
+        QVERIFY2(servers.startMosquitto(opts), qPrintable(servers.errorString()));
+
+        MqttProfile profile = MqttProfile::fromUrl(servers.brokerUrl());
+        profile.username = u"alice"_s;
+        profile.password = u"s3cret"_s;
+        Discovery good;
+        good.open(profile);
+        QTRY_VERIFY_WITH_TIMEOUT(good.connected(), 10000);
+
+        profile.password = u"wrong"_s;
+        Discovery bad;
+        QSignalSpy states(&bad.connection, &MqttConnection::stateChanged);
+        bad.open(profile);
+        QTRY_VERIFY_WITH_TIMEOUT(bad.connection.state() == MqttConnection::State::Failed, 10000);
+        QVERIFY2(bad.connection.stateDetail().contains(u"user name or password"_s)
+                     || bad.connection.stateDetail().contains(u"not authorised"_s),
+                 qPrintable(bad.connection.stateDetail()));
+        // A refused password is not retried in a loop.
+        QTest::qWait(1500);
+        QCOMPARE(bad.connection.state(), MqttConnection::State::Failed);
+
+        Discovery anonymous;
+        anonymous.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(anonymous.connection.state() == MqttConnection::State::Failed, 10000);
+    }
+
+    void brokerRestartIsSurvivedAndCountingGoesOn()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        const quint16 port = servers.mosquittoPort();
+        Discovery d;
+        d.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 10000);
+        QByteArray ten;
+        for (int i = 0; i < 10; ++i)
+            ten += "x\n";
+        run(u"mosquitto_pub"_s, pubArgs(servers) + QStringList {u"-t"_s, u"r/t"_s, u"-q"_s, u"1"_s, u"-l"_s},
+            ten);
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"r/t"_s), 10u, 10000);
+
+        servers.stopMosquitto();
+        QTRY_VERIFY_WITH_TIMEOUT(d.connection.state() == MqttConnection::State::Reconnecting, 10000);
+        QVERIFY(servers.startMosquittoOnPort(port));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 30000);
+        QCOMPARE(d.connection.connects(), 2);
+        run(u"mosquitto_pub"_s, pubArgs(servers) + QStringList {u"-t"_s, u"r/t"_s, u"-q"_s, u"1"_s, u"-l"_s},
+            ten);
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"r/t"_s), 20u, 10000);
+        QCOMPARE(d.connection.received(), 20u);
+    }
+
+    void largeAndBinaryPayloadsAreKeptWhole()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        Discovery d;
+        d.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 10000);
+        QByteArray big(2 * 1024 * 1024, Qt::Uninitialized);
+        QRandomGenerator rng(7);
+        for (auto& c : big)
+            c = char(rng.bounded(256));
+        const QString file = servers.tempPath() + u"/big.bin"_s;
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(big);
+        f.close();
+        run(u"mosquitto_pub"_s, pubArgs(servers) + QStringList {u"-t"_s, u"blob/scan"_s, u"-f"_s, file});
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"blob/scan"_s), 1u, 10000);
+        QCOMPARE(d.tree.history(u"blob/scan"_s)->back().payload, big);
+        QCOMPARE(d.tree.info(u"blob/scan"_s)->lastSize, 2 * 1024 * 1024);
+    }
+
+    void badUrlsFailWithAClearMessage_data()
+    {
+        QTest::addColumn<QString>("url");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("scheme") << u"http://127.0.0.1:1883"_s << u"scheme"_s;
+        QTest::newRow("no host") << u"tcp://:1883"_s << u"host"_s;
+        QTest::newRow("nonsense") << u"broker"_s << u"URL"_s;
+    }
+    void badUrlsFailWithAClearMessage()
+    {
+        QFETCH(QString, url);
+        QFETCH(QString, expected);
+        MqttConnection c;
+        c.open(MqttProfile::fromUrl(url));
+        QCOMPARE(c.state(), MqttConnection::State::Failed);
+        QVERIFY2(c.stateDetail().contains(expected), qPrintable(c.stateDetail()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMqttDiscovery)
+#include "tst_mqttdiscovery.moc"

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+// ROS discovery against a real rosmaster: topics, types, publishers and subscribers of real nodes
+// (rostopic), monitoring through roscpp, and a master that dies and comes back.
+#include "ros/rosgraphpoller.h"
+#include "ros/rosmessage.h"
+#include "ros/rosmonitor.h"
+#include "ros/rostopicmodel.h"
+#include "testservers.h"
+
+#include <chrono>
+#include <memory>
+#include <QAbstractItemModelTester>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+qint64 nowNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+// A ROS node of its own: `rostopic pub` or `rostopic echo`, stopped (and unregistered) on destruction.
+class Node
+{
+public:
+    Node(const TestServers& servers, const QStringList& args)
+    {
+        m_process.setProcessEnvironment(servers.rosEnvironment());
+        m_process.setProcessChannelMode(QProcess::MergedChannels);
+        m_process.start(u"rostopic"_s, args);
+        m_process.waitForStarted(10000);
+    }
+    ~Node() { stop(); }
+    void stop()
+    {
+        if (m_process.state() == QProcess::NotRunning)
+            return;
+        m_process.terminate(); // rospy unregisters from the master on SIGTERM
+        if (!m_process.waitForFinished(10000)) {
+            m_process.kill();
+            m_process.waitForFinished();
+        }
+    }
+
+private:
+    QProcess m_process;
+};
+
+const RosTopicInfo* topic(const RosGraphPoller& poller, const QString& name)
+{
+    return poller.graph().topic(name);
+}
+} // namespace
+
+class TestRosDiscovery : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
+        // roscpp in this process (RosMonitor) reads these.
+        const QProcessEnvironment env = m_servers.rosEnvironment();
+        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
+            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
+        qunsetenv("ROS_HOSTNAME");
+    }
+
+    void topicsTypesAndNodesAppearAndDisappear()
+    {
+        RosGraphPoller poller;
+        poller.setMasterUri(m_servers.rosMasterUri());
+        poller.start(200);
+        QTRY_VERIFY_WITH_TIMEOUT(poller.isReachable(), 10000);
+        RosTopicModel model;
+        QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        connect(&poller, &RosGraphPoller::graphChanged, &model, &RosTopicModel::setGraph);
+
+        auto pub = std::make_unique<Node>(
+            m_servers,
+            QStringList {u"pub"_s, u"-r"_s, u"5"_s, u"/chatter"_s, u"std_msgs/String"_s, u"data: hello"_s});
+        auto sub = std::make_unique<Node>(m_servers, QStringList {u"echo"_s, u"/chatter"_s});
+        QTRY_VERIFY_WITH_TIMEOUT(topic(poller, u"/chatter"_s)
+                                     && topic(poller, u"/chatter"_s)->publishers.size() == 1
+                                     && topic(poller, u"/chatter"_s)->subscribers.size() == 1,
+                                 20000);
+        const RosTopicInfo* t = topic(poller, u"/chatter"_s);
+        QCOMPARE(t->type, u"std_msgs/String"_s);
+        QVERIFY(t->publishers.first().startsWith(u"/rostopic_"_s));
+        QVERIFY(t->subscribers.first() != t->publishers.first());
+        QVERIFY(poller.graph().nodes.contains(t->publishers.first()));
+        const int row = model.rowOf(u"/chatter"_s);
+        QVERIFY(row >= 0);
+        QCOMPARE(model.index(row, RosTopicModel::TypeColumn).data().toString(), u"std_msgs/String"_s);
+        QCOMPARE(model.index(row, RosTopicModel::PublishersColumn).data().toString(), u"1"_s);
+
+        pub->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            topic(poller, u"/chatter"_s) && topic(poller, u"/chatter"_s)->publishers.isEmpty(), 20000);
+        sub->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(!topic(poller, u"/chatter"_s), 20000);
+        QCOMPARE(model.rowOf(u"/chatter"_s), -1);
+    }
+
+    void monitoringShowsRateAndDecodableMessages()
+    {
+        RosMonitor monitor;
+        monitor.setMasterUri(m_servers.rosMasterUri());
+        Node pub(
+            m_servers,
+            {u"pub"_s, u"-r"_s, u"10"_s, u"/pose"_s, u"geometry_msgs/PoseStamped"_s,
+             u"{header: {frame_id: map}, pose: {position: {x: 1.5, y: -2.0}, orientation: {w: 1.0}}}"_s});
+        monitor.monitor(u"/pose"_s);
+        QVERIFY(monitor.isMonitored(u"/pose"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/pose"_s).messages >= 15, 30000);
+        const RosMonitorStats s = monitor.snapshot(nowNs()).value(u"/pose"_s);
+        QCOMPARE(s.type, u"geometry_msgs/PoseStamped"_s);
+        QCOMPARE(s.md5, u"d3812c3cbc69362b77dc0b19b345f8f5"_s);
+        // rostopic pub -r 10: the measured rate is near 10 Hz (wide bounds: a loaded CI machine).
+        QVERIFY2(s.rateHz > 3 && s.rateHz < 30, qPrintable(QString::number(s.rateHz)));
+        QVERIFY(s.bytesPerSecond > 0);
+        RosTypeRegistry reg;
+        QVERIFY(reg.addDefinition(s.type, s.definition));
+        QString error;
+        const auto v = RosMessageDecoder::decode(reg, s.type, s.lastMessage, &error);
+        QVERIFY2(v, qPrintable(error));
+        QCOMPARE(v->find(u"header.frame_id"_s)->value.toString(), u"map"_s);
+        QCOMPARE(v->find(u"pose.position.x"_s)->value.toDouble(), 1.5);
+        QCOMPARE(v->find(u"pose.position.y"_s)->value.toDouble(), -2.0);
+
+        monitor.unmonitor(u"/pose"_s);
+        QVERIFY(!monitor.snapshot(nowNs()).contains(u"/pose"_s));
+    }
+
+    void deadMasterIsReportedNotWaitedFor()
+    {
+        RosGraphPoller poller;
+        QSignalSpy reach(&poller, &RosGraphPoller::reachabilityChanged);
+        poller.setMasterUri(u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort()));
+        poller.start(200);
+        QTRY_VERIFY_WITH_TIMEOUT(!reach.isEmpty(), 5000);
+        QCOMPARE(reach.first().at(0).toBool(), false);
+        QVERIFY(poller.lastError().contains(u"no ROS master"_s));
+    }
+
+    // Runs last: it restarts the master the other functions use.
+    void masterRestartIsRecoveredFrom()
+    {
+        RosGraphPoller poller;
+        poller.setMasterUri(m_servers.rosMasterUri());
+        poller.start(200);
+        RosMonitor monitor;
+        monitor.setMasterUri(m_servers.rosMasterUri());
+        connect(&poller, &RosGraphPoller::masterRestarted, &monitor, &RosMonitor::resubscribeAll);
+        QSignalSpy restarted(&poller, &RosGraphPoller::masterRestarted);
+        QTRY_VERIFY_WITH_TIMEOUT(poller.isReachable(), 10000);
+        monitor.monitor(u"/beat"_s);
+        {
+            Node pub(m_servers, {u"pub"_s, u"-r"_s, u"10"_s, u"/beat"_s, u"std_msgs/UInt32"_s, u"data: 1"_s});
+            QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/beat"_s).messages >= 3, 30000);
+        }
+        const quint16 port = m_servers.rosMasterPort();
+        m_servers.stopRosMaster();
+        QTRY_VERIFY_WITH_TIMEOUT(!poller.isReachable(), 10000);
+        QVERIFY(m_servers.startRosMasterOnPort(port));
+        QTRY_VERIFY_WITH_TIMEOUT(poller.isReachable(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!restarted.isEmpty(), 10000);
+        // A publisher on the new master reaches the monitor, which registered again.
+        const quint64 before = monitor.snapshot(nowNs()).value(u"/beat"_s).messages;
+        Node pub(m_servers, {u"pub"_s, u"-r"_s, u"10"_s, u"/beat"_s, u"std_msgs/UInt32"_s, u"data: 2"_s});
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/beat"_s).messages >= before + 3, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(poller.graph().topic(u"/beat"_s) != nullptr, 10000);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRosDiscovery)
+#include "tst_rosdiscovery.moc"

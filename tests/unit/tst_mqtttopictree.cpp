@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// The MQTT topic tree: exact counts, subtree sums, bounded history, mqtt_client awareness, and
+// batched, consistent model signals.
+#include "fixtures.h"
+#include "mqtt/mqttclientwire.h"
+#include "mqtt/mqtttopictree.h"
+
+#include <QAbstractItemModelTester>
+#include <QSignalSpy>
+#include <QSortFilterProxyModel>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+MqttMessage msg(const QString& topic, const QByteArray& payload, bool retained = false,
+                qint64 ns = 1'000'000'000, quint8 qos = 0)
+{
+    MqttMessage m;
+    m.topic = topic;
+    m.payload = payload;
+    m.retained = retained;
+    m.receivedNs = ns;
+    m.qos = qos;
+    return m;
+}
+
+// The tree as "path messages" lines, depth first, children in model order.
+QStringList dump(const QAbstractItemModel& model, const QModelIndex& parent = {}, int depth = 0)
+{
+    QStringList out;
+    for (int r = 0; r < model.rowCount(parent); ++r) {
+        const QModelIndex i = model.index(r, 0, parent);
+        out << QString(depth * 2, u' ') + i.data().toString() + u' '
+                + model.index(r, MqttTopicTree::MessagesColumn, parent).data().toString();
+        out += dump(model, i, depth + 1);
+    }
+    return out;
+}
+} // namespace
+
+class TestMqttTopicTree : public QObject
+{
+    Q_OBJECT
+private slots:
+    void countsAndSumsAreExact()
+    {
+        MqttTopicTree tree;
+        QAbstractItemModelTester tester(&tree, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"vehicle/lidar/points"_s, QByteArray(100, 'x')));
+        batch.push_back(msg(u"vehicle/lidar/points"_s, QByteArray(50, 'x')));
+        batch.push_back(msg(u"vehicle/status"_s, "ok", true));
+        batch.push_back(msg(u"cloud/objects"_s, "[]", false, 2, 1));
+        batch.push_back(msg(u"vehicle"_s, "itself a topic"));
+        tree.apply(std::move(batch));
+        QCOMPARE(dump(tree),
+                 (QStringList {u"vehicle 4"_s, u"  lidar 2"_s, u"    points 2"_s, u"  status 1"_s,
+                               u"cloud 1"_s, u"  objects 1"_s}));
+        QCOMPARE(tree.topicCount(), 4);
+        QCOMPARE(tree.totalMessages(), 5u);
+        const auto points = tree.info(u"vehicle/lidar/points"_s);
+        QCOMPARE(points->messages, 2u);
+        QCOMPARE(points->bytes, 150u);
+        QCOMPARE(points->lastSize, 50);
+        QCOMPARE(tree.info(u"vehicle/status"_s)->retained, true);
+        QCOMPARE(tree.info(u"cloud/objects"_s)->qos, 1);
+        QCOMPARE(tree.index(0, MqttTopicTree::BytesColumn).data(MqttTopicTree::SortRole).toULongLong(), 166u);
+        QVERIFY(!tree.info(u"vehicle/lidar"_s)); // a level, not a topic
+    }
+
+    void oneInsertPerParentPerBatch()
+    {
+        MqttTopicTree tree;
+        QAbstractItemModelTester tester(&tree, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QSignalSpy inserted(&tree, &QAbstractItemModel::rowsInserted);
+        QSignalSpy changed(&tree, &QAbstractItemModel::dataChanged);
+        std::vector<MqttMessage> batch;
+        for (int i = 0; i < 1000; ++i)
+            batch.push_back(msg(u"fleet/car%1/speed"_s.arg(i % 100), QByteArray::number(i)));
+        tree.apply(std::move(batch));
+        QCOMPARE(inserted.size(), 1); // "fleet" (with its new subtree) under the root
+        QCOMPARE(tree.topicCount(), 100);
+        inserted.clear();
+        changed.clear();
+        batch.clear();
+        for (int i = 0; i < 1000; ++i)
+            batch.push_back(msg(u"fleet/car%1/%2"_s.arg(i % 100).arg(i < 500 ? u"speed"_s : u"fuel"_s), "1"));
+        tree.apply(std::move(batch));
+        // New "fuel" children: one insert under each car that got one; figures: one signal per parent.
+        QCOMPARE(inserted.size(), 100);
+        QVERIFY(changed.size() <= 102);
+        QCOMPARE(tree.info(u"fleet/car7/speed"_s)->messages, 15u);
+    }
+
+    void historyIsBoundedAndKeepsPayloadsIntact()
+    {
+        MqttTopicTree tree;
+        tree.setHistoryDepth(5);
+        std::vector<MqttMessage> batch;
+        for (int i = 0; i < 12; ++i)
+            batch.push_back(msg(u"t"_s, QByteArray::number(i), false, i));
+        QByteArray big(2 * 1024 * 1024, '\0');
+        for (int i = 0; i < big.size(); ++i)
+            big[i] = char(i * 7);
+        batch.push_back(msg(u"blob"_s, big));
+        tree.apply(std::move(batch));
+        const auto* h = tree.history(u"t"_s);
+        QCOMPARE(int(h->size()), 5);
+        QCOMPARE(h->front().payload, QByteArray("7"));
+        QCOMPARE(h->back().payload, QByteArray("11"));
+        QCOMPARE(tree.history(u"blob"_s)->back().payload, big);
+        QCOMPARE(tree.info(u"blob"_s)->lastSize, 2 * 1024 * 1024);
+        QCOMPARE(tree.indexOf(u"blob"_s).data(MqttTopicTree::SearchTextRole).toString(), QString());
+        QCOMPARE(tree.indexOf(u"t"_s).data(MqttTopicTree::SearchTextRole).toString(), u"11"_s);
+    }
+
+    void learnsTypesFromMqttClientAnnouncements()
+    {
+        MqttTopicTree tree;
+        QAbstractItemModelTester tester(&tree, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/cap/pose"_s,
+                            Fixtures::read(u"mqtt_client/wire/pose.type.bin"_s), true));
+        batch.push_back(msg(u"cap/pose"_s, Fixtures::read(u"mqtt_client/wire/pose.payload.bin"_s)));
+        tree.apply(std::move(batch));
+        const auto pose = tree.info(u"cap/pose"_s);
+        QVERIFY(pose->rosType);
+        QCOMPARE(pose->rosType->name, u"geometry_msgs/PoseStamped"_s);
+        QCOMPARE(pose->malformedPayloads, 0u);
+        QVERIFY(tree.registryFor(u"cap/pose"_s));
+        QCOMPARE(tree.indexOf(u"cap/pose"_s, MqttTopicTree::RosTypeColumn).data().toString(),
+                 u"geometry_msgs/PoseStamped"_s);
+
+        // Stamped: the latency is receive time minus the injected stamp.
+        const QByteArray payload = Fixtures::read(u"mqtt_client/wire/string_stamped.payload.bin"_s);
+        const qint64 stamp = MqttClientWire::splitStamped(payload)->stampNs;
+        batch.clear();
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/cap/string_stamped"_s,
+                            Fixtures::read(u"mqtt_client/wire/string_stamped.type.bin"_s), true));
+        batch.push_back(msg(u"cap/string_stamped"_s, payload, false, stamp + 12'500'000));
+        tree.apply(std::move(batch));
+        const auto s = tree.info(u"cap/string_stamped"_s);
+        QCOMPARE(s->rosType->stamped, true);
+        QCOMPARE(s->lastLatencyMs, 12.5);
+        QCOMPARE(s->latencySamples, 1u);
+    }
+
+    void malformedAnnouncementsAndPayloadsAreCounted()
+    {
+        MqttTopicTree tree;
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/bad"_s, "garbage", true));
+        batch.push_back(
+            msg(u"mqtt_client/ros_msg_type/cap/pose"_s, Fixtures::read(u"mqtt_client/wire/pose.type.bin"_s)));
+        batch.push_back(msg(u"cap/pose"_s, "not a pose"));
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/cap/s"_s,
+                            Fixtures::read(u"mqtt_client/wire/string_stamped.type.bin"_s)));
+        batch.push_back(msg(u"cap/s"_s, "short"));
+        tree.apply(std::move(batch));
+        QCOMPARE(tree.malformedTypeAnnouncements(), 1u);
+        QVERIFY(!tree.info(u"mqtt_client/ros_msg_type/bad"_s)->typeError.isEmpty());
+        QCOMPARE(tree.info(u"cap/pose"_s)->malformedPayloads, 1u);
+        QCOMPARE(tree.info(u"cap/s"_s)->malformedPayloads, 1u);
+        QCOMPARE(tree.malformedPayloads(), 2u);
+    }
+
+    void sysTopicsAreBrokerStatistics()
+    {
+        MqttTopicTree tree;
+        QSignalSpy stats(&tree, &MqttTopicTree::brokerStatisticsChanged);
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"$SYS/broker/version"_s, "mosquitto version 2.0.11", true));
+        batch.push_back(msg(u"a"_s, "1"));
+        tree.apply(std::move(batch));
+        QCOMPARE(stats.size(), 1);
+        QCOMPARE(tree.brokerStatistics().value(u"$SYS/broker/version"_s), u"mosquitto version 2.0.11"_s);
+        QCOMPARE(tree.topicCount(), 1);
+    }
+
+    void ratesComeFromTicks()
+    {
+        MqttTopicTree tree;
+        tree.tick(1'000'000'000);
+        std::vector<MqttMessage> batch;
+        for (int i = 0; i < 40; ++i)
+            batch.push_back(msg(u"a/b"_s, "x"));
+        tree.apply(std::move(batch));
+        tree.tick(3'000'000'000); // two seconds later
+        QCOMPARE(tree.info(u"a/b"_s)->rate, 20.0);
+        QCOMPARE(tree.index(0, MqttTopicTree::RateColumn).data(MqttTopicTree::SortRole).toDouble(), 20.0);
+        QCOMPARE(tree.info(u"a/b"_s)->rateHistory, QList<double> {20.0});
+    }
+
+    void recursiveFilterFindsDeepTopics()
+    {
+        MqttTopicTree tree;
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"a/b/needle"_s, "hay"));
+        batch.push_back(msg(u"a/c"_s, "payload with needle"));
+        batch.push_back(msg(u"d"_s, "x"));
+        tree.apply(std::move(batch));
+        QSortFilterProxyModel proxy;
+        proxy.setSourceModel(&tree);
+        proxy.setRecursiveFilteringEnabled(true);
+        QAbstractItemModelTester tester(&proxy, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        proxy.setFilterFixedString(u"needle"_s);
+        QCOMPARE(dump(proxy), (QStringList {u"a 2"_s, u"  b 1"_s, u"    needle 1"_s}));
+        proxy.setFilterRole(MqttTopicTree::SearchTextRole);
+        QCOMPARE(dump(proxy), (QStringList {u"a 2"_s, u"  c 1"_s}));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMqttTopicTree)
+#include "tst_mqtttopictree.moc"
