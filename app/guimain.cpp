@@ -3,6 +3,7 @@
 
 #include "cli/clioutput.h"
 #include "configfilecontroller.h"
+#include "discoverpage.h"
 #include "mainwindow.h"
 
 #include <QApplication>
@@ -33,12 +34,14 @@ void installTranslations(QCoreApplication& app)
 
 QString bridgescopeUsage()
 {
-    return Gui::tr("Usage: bridgescope [options] [FILE.yaml]\n"
+    return Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]\n"
                    "       bridgescope <command> [options]\n"
                    "\n"
                    "Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.\n"
                    "\n"
                    "Options:\n"
+                   "  --broker URL       MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)\n"
+                   "  --ros-master URI   ROS master (default $ROS_MASTER_URI)\n"
                    "  --screenshot PNG   render the main window to PNG and exit\n"
                    "  --after SECONDS    wait this long before the screenshot (default 1)\n"
                    "  -h, --help         show this help\n"
@@ -61,7 +64,10 @@ int runGui(int& argc, char** argv)
                                         u"PNG"_s);
     const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
                                    u"SECONDS"_s, u"1"_s);
-    parser.addOptions({screenshot, after});
+    const QCommandLineOption broker(u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."),
+                                    u"URL"_s);
+    const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."), u"URI"_s);
+    parser.addOptions({screenshot, after, broker, master});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
     if (!parser.parse(app.arguments())) {
         CliOutput::err(parser.errorText());
@@ -69,6 +75,17 @@ int runGui(int& argc, char** argv)
         return 2;
     }
     MainWindow window;
+    if (parser.isSet(master))
+        window.discoverPage()->setRosMasterUri(parser.value(master));
+    if (parser.isSet(broker)) {
+        MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
+        QString error;
+        if (!profile.validate(&error)) {
+            CliOutput::err(error);
+            return 2;
+        }
+        window.discoverPage()->connectBroker(profile);
+    }
     const QStringList files = parser.positionalArguments();
     if (!files.isEmpty())
         window.files()->openFile(files.first());

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
 
+#include "common/livesession.h"
 #include "config/configdocument.h"
+#include "discoverpage.h"
 #include "config/problemmodel.h"
 #include "configeditor.h"
 #include "configfilecontroller.h"
@@ -22,15 +24,18 @@ using namespace Qt::StringLiterals;
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
+    , m_session(new LiveSession(this))
     , m_document(new ConfigDocument(this))
     , m_undo(new QUndoStack(this))
     , m_files(new ConfigFileController(m_document, m_undo, this))
     , m_pages(new QTabWidget(this))
+    , m_discover(new DiscoverPage(m_session, m_pages))
     , m_configEditor(new ConfigEditor(m_document, m_undo, m_pages))
     , m_problemStatus(new QLabel(this))
 {
     setObjectName(u"mainWindow"_s);
     m_pages->setDocumentMode(true);
+    m_pages->addTab(m_discover, tr("Discover"));
     m_pages->addTab(m_configEditor, tr("Map"));
     setCentralWidget(m_pages);
     statusBar()->addPermanentWidget(m_problemStatus);
@@ -38,6 +43,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(m_document, &ConfigDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ConfigDocument::filePathChanged, this, &MainWindow::updateTitle);
+    // Opening a config shows it.
+    connect(m_document, &ConfigDocument::resetDone, this, [this] { m_pages->setCurrentWidget(m_configEditor); });
     connect(m_files, &ConfigFileController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
     connect(m_files, &ConfigFileController::recentFilesChanged, this, &MainWindow::updateRecentMenu);
@@ -94,6 +101,12 @@ void MainWindow::createMenus()
         m_configEditor->filterEdit()->setFocus(Qt::ShortcutFocusReason);
         m_configEditor->filterEdit()->selectAll();
     });
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    for (int i = 0; i < m_pages->count(); ++i) {
+        QAction* a = view->addAction(m_pages->tabText(i), this, [this, i] { m_pages->setCurrentIndex(i); });
+        a->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + i)));
+    }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About Bridgescope"), this, [this] {

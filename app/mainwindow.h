@@ -4,6 +4,8 @@
 #include <QMainWindow>
 
 class ConfigDocument;
+class DiscoverPage;
+class LiveSession;
 class ConfigEditor;
 class ConfigFileController;
 class QLabel;
@@ -23,6 +25,8 @@ public:
     QUndoStack* undoStack() const { return m_undo; }
     ConfigEditor* configEditor() const { return m_configEditor; }
     ConfigFileController* files() const { return m_files; }
+    LiveSession* session() const { return m_session; }
+    DiscoverPage* discoverPage() const { return m_discover; }
     QTabWidget* pages() const { return m_pages; }
 
 protected:
@@ -33,10 +37,12 @@ private:
     void updateTitle();
     void updateRecentMenu(const QStringList& files);
 
+    LiveSession* m_session;
     ConfigDocument* m_document;
     QUndoStack* m_undo;
     ConfigFileController* m_files;
     QTabWidget* m_pages;
+    DiscoverPage* m_discover;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;

@@ -92,8 +92,7 @@ int main(int argc, char** argv)
     }
     std::printf("bench_config: %d mappings, %lld bytes, median of %d runs\n\n", mappings,
                 static_cast<long long>(QFileInfo(path).size()), runs);
-    std::printf("| %-58s | %9s | %s\n", "operation", "ms", "note");
-    std::printf("|%s|%s|%s\n", QByteArray(60, '-').constData(), QByteArray(11, '-').constData(), "------");
+    Bench::header("ms");
 
     // Peers: parse + dump with yaml-cpp alone, and with PyYAML.
     const double yamlCpp = Bench::medianMs(runs, [&] {

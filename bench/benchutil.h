@@ -25,9 +25,15 @@ inline double medianMs(int runs, const std::function<void()>& work)
     return times[times.size() / 2];
 }
 
-inline void row(const QString& what, double ms, const QString& note = QString())
+inline void header(const char* valueTitle)
 {
-    std::printf("| %-58s | %9.1f | %s\n", qPrintable(what), ms, qPrintable(note));
+    std::printf("| %-58s | %12s | %s\n", "measure", valueTitle, "note");
+    std::printf("|%s|%s|%s\n", QByteArray(60, '-').constData(), QByteArray(14, '-').constData(), "------");
+}
+
+inline void row(const QString& what, double value, const QString& note = QString())
+{
+    std::printf("| %-58s | %12.1f | %s\n", qPrintable(what), value, qPrintable(note));
     std::fflush(stdout);
 }
 } // namespace Bench

@@ -6,6 +6,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/build.sh" "$root/build-release" Release -DBRIDGESCOPE_BUILD_TESTS=OFF -DBRIDGESCOPE_BUILD_BENCH=ON
 export QT_QPA_PLATFORM=offscreen
 for b in "$root"/build-release/bench/bench_*; do
+    [[ "$(basename "$b")" == bench_loadgen ]] && continue
     [ -x "$b" ] || continue
     if [ $# -gt 0 ] && [[ ! " $* " == *" $(basename "$b") "* ]]; then continue; fi
     echo "== $(basename "$b")"

@@ -772,39 +772,332 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
-    <name>Gui</name>
+    <name>DetailPane</name>
     <message>
-        <source>Usage: bridgescope [options] [FILE.yaml]
-       bridgescope &lt;command&gt; [options]
-
-Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.
-
-Options:
-  --screenshot PNG   render the main window to PNG and exit
-  --after SECONDS    wait this long before the screenshot (default 1)
-  -h, --help         show this help
-  -v, --version      show the version
-
-Commands:
-  config validate|convert|peer   check, convert and pair bridge configs
-
-Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
-        <translation>Aufruf: bridgescope [Optionen] [DATEI.yaml]
-        bridgescope &lt;Befehl&gt; [Optionen]
-
-ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.
-
-Optionen:
-  --screenshot PNG   das Hauptfenster als PNG speichern und beenden
-  --after SEKUNDEN   so lange vor dem Bildschirmfoto warten (Vorgabe 1)
-  -h, --help         diese Hilfe anzeigen
-  -v, --version      die Version anzeigen
-
-Befehle:
-  config validate|convert|peer   Bridge-Konfigurationen prüfen, umwandeln und paaren
-
-'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+        <source>%1 bytes: %2%3</source>
+        <translation>%1 Bytes: %2%3</translation>
     </message>
+    <message>
+        <source>%1 elements%2</source>
+        <translation>%1 Elemente%2</translation>
+    </message>
+    <message>
+        <source>, first %1 shown</source>
+        <translation>, die ersten %1 gezeigt</translation>
+    </message>
+    <message>
+        <source>%1 elements</source>
+        <translation>%1 Elemente</translation>
+    </message>
+    <message>
+        <source>Select a ROS or MQTT topic to see what it carries.</source>
+        <translation>Ein ROS- oder MQTT-Topic auswählen, um zu sehen, was es trägt.</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>&amp;Fields</source>
+        <translation>&amp;Felder</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>JSON</source>
+        <translation>JSON</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>&amp;Show as:</source>
+        <translation>&amp;Anzeigen als:</translation>
+    </message>
+    <message>
+        <source>&amp;Payload</source>
+        <translation>&amp;Nutzdaten</translation>
+    </message>
+    <message>
+        <source>Received</source>
+        <translation>Empfangen</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Retained</source>
+        <translation>Retained</translation>
+    </message>
+    <message>
+        <source>&amp;History</source>
+        <translation>&amp;Verlauf</translation>
+    </message>
+    <message>
+        <source>&amp;Rate</source>
+        <translation>&amp;Rate</translation>
+    </message>
+    <message>
+        <source>$SYS topic</source>
+        <translation>$SYS-Topic</translation>
+    </message>
+    <message>
+        <source>&amp;Broker</source>
+        <translation>&amp;Broker</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: a level of the topic tree; select a topic below it.</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: eine Ebene des Topic-Baums; ein Topic darunter auswählen.</translation>
+    </message>
+    <message>
+        <source>(no messages on this level itself)</source>
+        <translation>(keine Nachrichten auf dieser Ebene selbst)</translation>
+    </message>
+    <message>
+        <source>%1 messages, %2, last %3, QoS %4%5</source>
+        <translation>%1 Nachrichten, %2, zuletzt %3, QoS %4%5</translation>
+    </message>
+    <message>
+        <source>, retained</source>
+        <translation>, retained</translation>
+    </message>
+    <message>
+        <source>ROS type %1 (announced by mqtt_client)%2</source>
+        <translation>ROS-Typ %1 (von mqtt_client angekündigt)%2</translation>
+    </message>
+    <message>
+        <source>, stamped</source>
+        <translation>, mit Zeitstempel</translation>
+    </message>
+    <message>
+        <source>one-way latency %1 ms (mean of the last %2: %3 ms); valid only as far as the sender's clock agrees with this one</source>
+        <translation>Einweg-Latenz %1 ms (Mittel der letzten %2: %3 ms); nur so genau, wie die Uhr des Senders mit dieser übereinstimmt</translation>
+    </message>
+    <message>
+        <source>%1 payloads did not decode as the announced type</source>
+        <translation>%1 Nutzdaten ließen sich nicht als der angekündigte Typ dekodieren</translation>
+    </message>
+    <message>
+        <source>malformed type announcement: %1</source>
+        <translation>fehlerhafte Typankündigung: %1</translation>
+    </message>
+    <message>
+        <source>does not decode as %1: %2</source>
+        <translation>lässt sich nicht als %1 dekodieren: %2</translation>
+    </message>
+    <message>
+        <source>(no structure known: see Payload)</source>
+        <translation>(keine Struktur bekannt: siehe Nutzdaten)</translation>
+    </message>
+    <message>
+        <source>retained</source>
+        <translation>retained</translation>
+    </message>
+    <message>
+        <source>msg/s</source>
+        <translation>Nachr./s</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <source>%1; publishers: %2; subscribers: %3</source>
+        <translation>%1; Publisher: %2; Subscriber: %3</translation>
+    </message>
+    <message>
+        <source>Check Monitor to subscribe and see its messages.</source>
+        <translation>Mon ankreuzen, um es zu abonnieren und seine Nachrichten zu sehen.</translation>
+    </message>
+    <message>
+        <source>(not monitored)</source>
+        <translation>(nicht beobachtet)</translation>
+    </message>
+    <message>
+        <source>%1 messages, %2 Hz, %3/s, last %4</source>
+        <translation>%1 Nachrichten, %2 Hz, %3/s, zuletzt %4</translation>
+    </message>
+    <message>
+        <source>(waiting for the first message)</source>
+        <translation>(warte auf die erste Nachricht)</translation>
+    </message>
+    <message>
+        <source>Turn on $SYS in the connection profile to see the broker's figures.</source>
+        <translation>$SYS im Verbindungsprofil einschalten, um die Kennzahlen des Brokers zu sehen.</translation>
+    </message>
+</context>
+<context>
+    <name>DiscoverCommand</name>
+    <message>
+        <source>ROS master %1: %2</source>
+        <translation>ROS-Master %1: %2</translation>
+    </message>
+    <message>
+        <source>reachable</source>
+        <translation>erreichbar</translation>
+    </message>
+    <message>
+        <source>unreachable (%1)</source>
+        <translation>nicht erreichbar (%1)</translation>
+    </message>
+    <message>
+        <source>MQTT broker %1: %2</source>
+        <translation>MQTT-Broker %1: %2</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>not connected (%1)</source>
+        <translation>nicht verbunden (%1)</translation>
+    </message>
+    <message>
+        <source>  retained</source>
+        <translation>  retained</translation>
+    </message>
+    <message>
+        <source>Lists what is on the ROS master and the MQTT broker after listening for a while. Exit status: 0 when at least one of them answered, 1 when neither did, 2 on bad options.</source>
+        <translation>Listet auf, was es beim ROS-Master und beim MQTT-Broker gibt, nachdem eine Weile zugehört wurde. Exit-Status: 0, wenn mindestens einer antwortete, 1, wenn keiner antwortete, 2 bei falschen Optionen.</translation>
+    </message>
+    <message>
+        <source>Show this help.</source>
+        <translation>Diese Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Broker URL (default tcp://localhost:1883).</source>
+        <translation>Broker-URL (Vorgabe tcp://localhost:1883).</translation>
+    </message>
+    <message>
+        <source>ROS master URI (default $ROS_MASTER_URI).</source>
+        <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
+    </message>
+    <message>
+        <source>How long to listen (default 2).</source>
+        <translation>Wie lange zuhören (Vorgabe 2).</translation>
+    </message>
+    <message>
+        <source>Print one JSON document.</source>
+        <translation>Ein JSON-Dokument ausgeben.</translation>
+    </message>
+    <message>
+        <source>MQTT topic filter to subscribe (default #; repeatable).</source>
+        <translation>Zu abonnierender MQTT-Topic-Filter (Vorgabe #; mehrfach möglich).</translation>
+    </message>
+    <message>
+        <source>--seconds takes a positive number</source>
+        <translation>--seconds erwartet eine positive Zahl</translation>
+    </message>
+    <message>
+        <source>Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.</source>
+        <translation>Weder der ROS-Master (%1) noch der MQTT-Broker (%2) war erreichbar.</translation>
+    </message>
+</context>
+<context>
+    <name>DiscoverPage</name>
+    <message>
+        <source>ROS master URI; Enter applies it</source>
+        <translation>ROS-Master-URI; Eingabetaste übernimmt sie</translation>
+    </message>
+    <message>
+        <source>ROS &amp;master:</source>
+        <translation>ROS-&amp;Master:</translation>
+    </message>
+    <message>
+        <source>MQTT &amp;broker:</source>
+        <translation>MQTT-&amp;Broker:</translation>
+    </message>
+    <message>
+        <source>Edit…</source>
+        <translation>Bearbeiten …</translation>
+    </message>
+    <message>
+        <source>Edit the connection profile (URL, TLS, credentials, subscriptions)</source>
+        <translation>Das Verbindungsprofil bearbeiten (URL, TLS, Zugangsdaten, Abonnements)</translation>
+    </message>
+    <message>
+        <source>New…</source>
+        <translation>Neu …</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <source>Filter ROS topics or types…</source>
+        <translation>ROS-Topics oder -Typen filtern …</translation>
+    </message>
+    <message>
+        <source>Filter MQTT topics…</source>
+        <translation>MQTT-Topics filtern …</translation>
+    </message>
+    <message>
+        <source>in &amp;payloads too</source>
+        <translation>auch in &amp;Nutzdaten</translation>
+    </message>
+    <message>
+        <source>The password was not kept: %1</source>
+        <translation>Das Passwort wurde nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>broker %1</source>
+        <translation>Broker %1</translation>
+    </message>
+    <message>
+        <source>asking %1…</source>
+        <translation>frage %1 …</translation>
+    </message>
+    <message>
+        <source>asking the master…</source>
+        <translation>frage den Master …</translation>
+    </message>
+    <message>
+        <source>reachable: %1 topics, %2 nodes</source>
+        <translation>erreichbar: %1 Topics, %2 Knoten</translation>
+    </message>
+    <message>
+        <source>unreachable: %1 (retrying every second)</source>
+        <translation>nicht erreichbar: %1 (neuer Versuch jede Sekunde)</translation>
+    </message>
+    <message>
+        <source>Dis&amp;connect</source>
+        <translation>&amp;Trennen</translation>
+    </message>
+    <message>
+        <source>%1 topics</source>
+        <translation>%1 Topics</translation>
+    </message>
+    <message>
+        <source>%1 messages</source>
+        <translation>%1 Nachrichten</translation>
+    </message>
+    <message>
+        <source>%1 dropped</source>
+        <translation>%1 verworfen</translation>
+    </message>
+    <message>
+        <source>%1 malformed</source>
+        <translation>%1 fehlerhaft</translation>
+    </message>
+</context>
+<context>
+    <name>Gui</name>
     <message>
         <source>Render the main window to PNG and exit.</source>
         <translation>Das Hauptfenster als PNG speichern und beenden.</translation>
@@ -824,6 +1117,52 @@ Befehle:
     <message>
         <source>Cannot write the screenshot %1</source>
         <translation>Bildschirmfoto %1 lässt sich nicht schreiben</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]
+       bridgescope &lt;command&gt; [options]
+
+Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.
+
+Options:
+  --broker URL       MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)
+  --ros-master URI   ROS master (default $ROS_MASTER_URI)
+  --screenshot PNG   render the main window to PNG and exit
+  --after SECONDS    wait this long before the screenshot (default 1)
+  -h, --help         show this help
+  -v, --version      show the version
+
+Commands:
+  config validate|convert|peer   check, convert and pair bridge configs
+  discover [--json]              list ROS and MQTT topics
+
+Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
+        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml]
+        bridgescope &lt;Befehl&gt; [Optionen]
+
+ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.
+
+Optionen:
+  --broker URL       MQTT-Broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)
+  --ros-master URI   ROS-Master (Vorgabe $ROS_MASTER_URI)
+  --screenshot PNG   das Hauptfenster als PNG speichern und beenden
+  --after SEKUNDEN   so lange vor dem Bildschirmfoto warten (Vorgabe 1)
+  -h, --help         diese Hilfe anzeigen
+  -v, --version      die Version anzeigen
+
+Befehle:
+  config validate|convert|peer   Bridge-Konfigurationen prüfen, umwandeln und paaren
+  discover [--json]              ROS- und MQTT-Topics auflisten
+
+'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+    </message>
+    <message>
+        <source>MQTT broker to connect to (tcp://host:port, ssl://...).</source>
+        <translation>MQTT-Broker, mit dem verbunden wird (tcp://host:port, ssl://...).</translation>
+    </message>
+    <message>
+        <source>ROS master URI (default $ROS_MASTER_URI).</source>
+        <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
     </message>
 </context>
 <context>
@@ -919,6 +1258,14 @@ Befehle:
     <message>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>Discover</source>
+        <translation>Entdecken</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
     </message>
 </context>
 <context>
@@ -1045,6 +1392,313 @@ Befehle:
     <message>
         <source>Options</source>
         <translation>Optionen</translation>
+    </message>
+</context>
+<context>
+    <name>MqttClientWire</name>
+    <message>
+        <source>type announcement ends before the length of '%1' (byte %2)</source>
+        <translation>Typankündigung endet vor der Länge von '%1' (Byte %2)</translation>
+    </message>
+    <message>
+        <source>'%1' claims %2 bytes but only %3 follow</source>
+        <translation>'%1' gibt %2 Bytes an, es folgen aber nur %3</translation>
+    </message>
+    <message>
+        <source>type announcement has %1 bytes after the strings, expected 1 (stamped)</source>
+        <translation>Typankündigung hat %1 Bytes nach den Zeichenketten, erwartet 1 (stamped)</translation>
+    </message>
+    <message>
+        <source>'%1' is not an MD5 sum</source>
+        <translation>'%1' ist keine MD5-Summe</translation>
+    </message>
+    <message>
+        <source>'%1' is not a ROS type name</source>
+        <translation>'%1' ist kein ROS-Typname</translation>
+    </message>
+</context>
+<context>
+    <name>MqttConnection</name>
+    <message>
+        <source>the broker does not speak this MQTT version</source>
+        <translation>der Broker spricht diese MQTT-Version nicht</translation>
+    </message>
+    <message>
+        <source>the broker rejected the client id</source>
+        <translation>der Broker lehnt die Client-ID ab</translation>
+    </message>
+    <message>
+        <source>the broker is unavailable</source>
+        <translation>der Broker ist nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>the broker refused the user name or password</source>
+        <translation>der Broker lehnt Benutzername oder Passwort ab</translation>
+    </message>
+    <message>
+        <source>the client is not authorised to connect</source>
+        <translation>der Client darf sich nicht verbinden</translation>
+    </message>
+    <message>
+        <source>no broker answers at %1</source>
+        <translation>unter %1 antwortet kein Broker</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1 (Paho error %2)</source>
+        <translation>keine Verbindung zu %1 (Paho-Fehler %2)</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbinde</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>verbinde erneut</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>%1; retrying in %2 s</source>
+        <translation>%1; neuer Versuch in %2 s</translation>
+    </message>
+    <message>
+        <source>connection lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>keine Verbindung zu %1: %2</translation>
+    </message>
+    <message>
+        <source>%1; reconnecting</source>
+        <translation>%1; verbinde erneut</translation>
+    </message>
+    <message>
+        <source>TLS failed: %1</source>
+        <translation>TLS fehlgeschlagen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>MqttProfile</name>
+    <message>
+        <source>'%1' is not a broker URL; write it as tcp://host:1883 or ssl://host:8883.</source>
+        <translation>'%1' ist keine Broker-URL; als tcp://host:1883 oder ssl://host:8883 schreiben.</translation>
+    </message>
+    <message>
+        <source>'%1' is not a broker scheme; use tcp, ssl, mqtt, mqtts, ws or wss.</source>
+        <translation>'%1' ist kein Broker-Schema; tcp, ssl, mqtt, mqtts, ws oder wss verwenden.</translation>
+    </message>
+    <message>
+        <source>'%1' names no host.</source>
+        <translation>'%1' nennt keinen Host.</translation>
+    </message>
+    <message>
+        <source>'%1': port 0 is not a port.</source>
+        <translation>'%1': Port 0 ist kein Port.</translation>
+    </message>
+    <message>
+        <source>MQTT version must be 3.1.1 (4) or 5.</source>
+        <translation>Die MQTT-Version muss 3.1.1 (4) oder 5 sein.</translation>
+    </message>
+    <message>
+        <source>Subscribe at least one topic filter, e.g. #.</source>
+        <translation>Mindestens einen Topic-Filter abonnieren, z. B. #.</translation>
+    </message>
+    <message>
+        <source>Filter '%1': %2.</source>
+        <translation>Filter '%1': %2.</translation>
+    </message>
+    <message>
+        <source>A client certificate needs its key file.</source>
+        <translation>Ein Client-Zertifikat braucht seine Schlüsseldatei.</translation>
+    </message>
+</context>
+<context>
+    <name>MqttProfileDialog</name>
+    <message>
+        <source>Broker Connection</source>
+        <translation>Broker-Verbindung</translation>
+    </message>
+    <message>
+        <source>tcp://, mqtt:// (plain), ssl://, mqtts:// (TLS), ws://, wss:// (WebSocket)</source>
+        <translation>tcp://, mqtt:// (unverschlüsselt), ssl://, mqtts:// (TLS), ws://, wss:// (WebSocket)</translation>
+    </message>
+    <message>
+        <source>random bridgescope-… id</source>
+        <translation>zufällige bridgescope-…-ID</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Start a clean session</source>
+        <translation>Eine frische Sitzung beginnen</translation>
+    </message>
+    <message>
+        <source>Keep the password in the system keyring (never in a file)</source>
+        <translation>Das Passwort im Schlüsselbund des Systems aufbewahren (nie in einer Datei)</translation>
+    </message>
+    <message>
+        <source>CA certificate</source>
+        <translation>CA-Zertifikat</translation>
+    </message>
+    <message>
+        <source>Client certificate</source>
+        <translation>Client-Zertifikat</translation>
+    </message>
+    <message>
+        <source>Client key</source>
+        <translation>Client-Schlüssel</translation>
+    </message>
+    <message>
+        <source>Verify the broker's certificate and host name</source>
+        <translation>Zertifikat und Hostnamen des Brokers prüfen</translation>
+    </message>
+    <message>
+        <source>Topic filters to subscribe, separated by commas; # subscribes to everything.</source>
+        <translation>Zu abonnierende Topic-Filter, durch Kommas getrennt; # abonniert alles.</translation>
+    </message>
+    <message>
+        <source>Also subscribe $SYS/# (broker statistics)</source>
+        <translation>Auch $SYS/# abonnieren (Broker-Kennzahlen)</translation>
+    </message>
+    <message>
+        <source> messages per topic</source>
+        <translation> Nachrichten je Topic</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;URL:</source>
+        <translation>&amp;URL:</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protokoll:</translation>
+    </message>
+    <message>
+        <source>&amp;Client id:</source>
+        <translation>&amp;Client-ID:</translation>
+    </message>
+    <message>
+        <source>&amp;Keep-alive:</source>
+        <translation>&amp;Keep-Alive:</translation>
+    </message>
+    <message>
+        <source>&amp;User:</source>
+        <translation>&amp;Benutzer:</translation>
+    </message>
+    <message>
+        <source>Pass&amp;word:</source>
+        <translation>Pass&amp;wort:</translation>
+    </message>
+    <message>
+        <source>C&amp;A file:</source>
+        <translation>C&amp;A-Datei:</translation>
+    </message>
+    <message>
+        <source>Cer&amp;tificate:</source>
+        <translation>Zer&amp;tifikat:</translation>
+    </message>
+    <message>
+        <source>&amp;Key file:</source>
+        <translation>&amp;Schlüsseldatei:</translation>
+    </message>
+    <message>
+        <source>Key pass&amp;word:</source>
+        <translation>Schlüssel-Pass&amp;wort:</translation>
+    </message>
+    <message>
+        <source>&amp;Subscribe:</source>
+        <translation>&amp;Abonnieren:</translation>
+    </message>
+    <message>
+        <source>&amp;History:</source>
+        <translation>&amp;Verlauf:</translation>
+    </message>
+    <message>
+        <source>Choose a file</source>
+        <translation>Datei wählen</translation>
+    </message>
+</context>
+<context>
+    <name>MqttTopicTree</name>
+    <message>
+        <source>(empty level)</source>
+        <translation>(leere Ebene)</translation>
+    </message>
+    <message>
+        <source>retained</source>
+        <translation>retained</translation>
+    </message>
+    <message>
+        <source>malformed type announcement</source>
+        <translation>fehlerhafte Typankündigung</translation>
+    </message>
+    <message>
+        <source> (stamped)</source>
+        <translation> (mit Zeitstempel)</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Receive time minus the stamp mqtt_client injected on the sending host: valid only as far as the two clocks agree.</source>
+        <translation>Empfangszeit minus dem Zeitstempel, den mqtt_client beim Sender eingefügt hat: nur so genau, wie die beiden Uhren übereinstimmen.</translation>
+    </message>
+    <message>
+        <source>Topic</source>
+        <translation>Topic</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Nachrichten</translation>
+    </message>
+    <message>
+        <source>Rate (Hz)</source>
+        <translation>Rate (Hz)</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>Last size</source>
+        <translation>Letzte Größe</translation>
+    </message>
+    <message>
+        <source>Retained</source>
+        <translation>Retained</translation>
+    </message>
+    <message>
+        <source>QoS</source>
+        <translation>QoS</translation>
+    </message>
+    <message>
+        <source>Last message</source>
+        <translation>Letzte Nachricht</translation>
+    </message>
+    <message>
+        <source>ROS type</source>
+        <translation>ROS-Typ</translation>
+    </message>
+    <message>
+        <source>Latency</source>
+        <translation>Latenz</translation>
     </message>
 </context>
 <context>
@@ -1254,6 +1908,17 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>PayloadText</name>
+    <message>
+        <source>%1; not JSON: %2 at byte %3</source>
+        <translation>%1; kein JSON: %2 bei Byte %3</translation>
+    </message>
+    <message>
+        <source>%1; showing the first %2</source>
+        <translation>%1; gezeigt werden die ersten %2</translation>
+    </message>
+</context>
+<context>
     <name>PeerConfig</name>
     <message>
         <source>client.last_will.topic '%1' is kept; both ends would announce their death on the same topic.</source>
@@ -1320,6 +1985,177 @@ Befehle:
     <message>
         <source>&amp;Problems: %1</source>
         <translation>&amp;Probleme: %1</translation>
+    </message>
+</context>
+<context>
+    <name>RateChart</name>
+    <message>
+        <source>seconds ago</source>
+        <translation>vor Sekunden</translation>
+    </message>
+</context>
+<context>
+    <name>RosMasterApi</name>
+    <message>
+        <source>an integer that is none</source>
+        <translation>eine Ganzzahl, die keine ist</translation>
+    </message>
+    <message>
+        <source>unexpected &lt;%1&gt; in an array</source>
+        <translation>unerwartetes &lt;%1&gt; in einem Array</translation>
+    </message>
+    <message>
+        <source>unknown XML-RPC type &lt;%1&gt;</source>
+        <translation>unbekannter XML-RPC-Typ &lt;%1&gt;</translation>
+    </message>
+    <message>
+        <source>the response ends inside a value</source>
+        <translation>die Antwort endet mitten in einem Wert</translation>
+    </message>
+    <message>
+        <source>XML-RPC fault %1: %2</source>
+        <translation>XML-RPC-Fehler %1: %2</translation>
+    </message>
+    <message>
+        <source>malformed XML-RPC response: %1</source>
+        <translation>fehlerhafte XML-RPC-Antwort: %1</translation>
+    </message>
+    <message>
+        <source>the XML-RPC response holds no value</source>
+        <translation>die XML-RPC-Antwort enthält keinen Wert</translation>
+    </message>
+    <message>
+        <source>'%1' is not a ROS master URI (http://host:11311)</source>
+        <translation>'%1' ist keine ROS-Master-URI (http://host:11311)</translation>
+    </message>
+    <message>
+        <source>no ROS master at %1: %2</source>
+        <translation>kein ROS-Master unter %1: %2</translation>
+    </message>
+    <message>
+        <source>the ROS master at %1 did not answer within %2 ms</source>
+        <translation>der ROS-Master unter %1 antwortete nicht binnen %2 ms</translation>
+    </message>
+    <message>
+        <source>the ROS master at %1 sent no HTTP response</source>
+        <translation>der ROS-Master unter %1 schickte keine HTTP-Antwort</translation>
+    </message>
+    <message>
+        <source>the ROS master at %1 answered %2</source>
+        <translation>der ROS-Master unter %1 antwortete %2</translation>
+    </message>
+    <message>
+        <source>the ROS master's answer to %1 is not [code, status, value]</source>
+        <translation>die Antwort des ROS-Masters auf %1 ist nicht [Code, Status, Wert]</translation>
+    </message>
+    <message>
+        <source>the ROS master refused %1: %2</source>
+        <translation>der ROS-Master lehnte %1 ab: %2</translation>
+    </message>
+</context>
+<context>
+    <name>RosMessageDecoder</name>
+    <message>
+        <source>byte %1: %2</source>
+        <translation>Byte %1: %2</translation>
+    </message>
+    <message>
+        <source>the message ends while reading '%1' (needs %2 more bytes, %3 left)</source>
+        <translation>die Nachricht endet beim Lesen von '%1' (braucht %2 weitere Bytes, %3 übrig)</translation>
+    </message>
+    <message>
+        <source>unknown type '%1'</source>
+        <translation>unbekannter Typ '%1'</translation>
+    </message>
+    <message>
+        <source>nested deeper than %1 levels</source>
+        <translation>tiefer als %1 Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <source>no definition for '%1'</source>
+        <translation>keine Definition für '%1'</translation>
+    </message>
+    <message>
+        <source>%1 bytes left over after the message</source>
+        <translation>%1 Bytes bleiben nach der Nachricht übrig</translation>
+    </message>
+</context>
+<context>
+    <name>RosTopicModel</name>
+    <message>
+        <source>/s</source>
+        <translation>/s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>waiting…</source>
+        <translation>warte …</translation>
+    </message>
+    <message>
+        <source>Subscribe and show rate, bandwidth and the last message</source>
+        <translation>Abonnieren und Rate, Bandbreite und letzte Nachricht zeigen</translation>
+    </message>
+    <message>
+        <source>Monitor: subscribe and show rate, bandwidth and the last message</source>
+        <translation>Beobachten: abonnieren und Rate, Bandbreite und letzte Nachricht zeigen</translation>
+    </message>
+    <message>
+        <source>Mon</source>
+        <translation>Beob.</translation>
+    </message>
+    <message>
+        <source>Topic</source>
+        <translation>Topic</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Pubs</source>
+        <translation>Pubs</translation>
+    </message>
+    <message>
+        <source>Subs</source>
+        <translation>Subs</translation>
+    </message>
+    <message>
+        <source>Rate (Hz)</source>
+        <translation>Rate (Hz)</translation>
+    </message>
+    <message>
+        <source>Bandwidth</source>
+        <translation>Bandbreite</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Last</source>
+        <translation>Zuletzt</translation>
+    </message>
+</context>
+<context>
+    <name>RosTypeRegistry</name>
+    <message>
+        <source>line %1: expected 'MSG: package/Type' after the separator</source>
+        <translation>Zeile %1: nach dem Trenner wird 'MSG: paket/Typ' erwartet</translation>
+    </message>
+    <message>
+        <source>line %1: '%2' is not 'type name'</source>
+        <translation>Zeile %1: '%2' ist nicht 'typ name'</translation>
+    </message>
+    <message>
+        <source>line %1: bad array type '%2'</source>
+        <translation>Zeile %1: fehlerhafter Array-Typ '%2'</translation>
+    </message>
+    <message>
+        <source>line %1: field without a name</source>
+        <translation>Zeile %1: Feld ohne Namen</translation>
     </message>
 </context>
 <context>

@@ -180,11 +180,15 @@ Qt::ItemFlags RosTopicModel::flags(const QModelIndex& index) const
 
 QVariant RosTopicModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+    if (orientation != Qt::Horizontal)
+        return {};
+    if (role == Qt::ToolTipRole && section == MonitorColumn)
+        return tr("Monitor: subscribe and show rate, bandwidth and the last message");
+    if (role != Qt::DisplayRole)
         return {};
     switch (section) {
     case MonitorColumn:
-        return tr("Monitor");
+        return tr("Mon");
     case TopicColumn:
         return tr("Topic");
     case TypeColumn:

@@ -2,6 +2,11 @@
 // The command line contract of `bridgescope config ...`, run as the real program.
 #include "config/configreader.h"
 #include "fixtures.h"
+#include "testservers.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 
 #include <QProcess>
 #include <QTemporaryDir>
@@ -110,6 +115,60 @@ private slots:
         r = bridgescope({u"config"_s, u"convert"_s, Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s),
                          u"--to"_s, u"ros3"_s});
         QCOMPARE(r.exit, 2);
+    }
+
+    void discoverPrintsBothSidesAsJson()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        QVERIFY(servers.startRosMaster());
+        QProcess pub;
+        pub.setProcessEnvironment(servers.rosEnvironment());
+        pub.start(u"rostopic"_s, {u"pub"_s, u"-r"_s, u"5"_s, u"/odom_x"_s, u"std_msgs/Float64"_s, u"data: 1.5"_s});
+        QProcess retained;
+        retained.start(u"mosquitto_pub"_s, {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()),
+                                            u"-t"_s, u"plant/state"_s, u"-r"_s, u"-m"_s, u"on"_s});
+        retained.waitForFinished(10000);
+        // Wait until the master knows the publisher.
+        QTRY_VERIFY_WITH_TIMEOUT(bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
+                                              servers.brokerUrl(), u"--seconds"_s, u"0.5"_s})
+                                     .out.contains(u"/odom_x"_s),
+                                 30000);
+        const Run r = bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
+                                   servers.brokerUrl(), u"--seconds"_s, u"1"_s, u"--json"_s});
+        pub.terminate();
+        pub.waitForFinished(10000);
+        QCOMPARE(r.exit, 0);
+        const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject ros = doc.value(u"ros"_s).toObject();
+        QCOMPARE(ros.value(u"reachable"_s).toBool(), true);
+        QCOMPARE(ros.value(u"master"_s).toString(), servers.rosMasterUri());
+        bool found = false;
+        for (const QJsonValue& t : ros.value(u"topics"_s).toArray()) {
+            if (t[u"name"_s].toString() == u"/odom_x"_s) {
+                found = true;
+                QCOMPARE(t[u"type"_s].toString(), u"std_msgs/Float64"_s);
+                QCOMPARE(t[u"publishers"_s].toArray().size(), 1);
+            }
+        }
+        QVERIFY(found);
+        const QJsonObject mqtt = doc.value(u"mqtt"_s).toObject();
+        QCOMPARE(mqtt.value(u"connected"_s).toBool(), true);
+        const QJsonArray topics = mqtt.value(u"topics"_s).toArray();
+        QCOMPARE(topics.size(), 1);
+        QCOMPARE(topics[0][u"name"_s].toString(), u"plant/state"_s);
+        QCOMPARE(topics[0][u"messages"_s].toInt(), 1);
+        QCOMPARE(topics[0][u"retained"_s].toBool(), true);
+    }
+
+    void discoverFailsWhenNothingAnswers()
+    {
+        const Run r = bridgescope({u"discover"_s, u"--ros-master"_s, u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort()),
+                                   u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()), u"--seconds"_s,
+                                   u"1"_s, u"--json"_s});
+        QCOMPARE(r.exit, 1);
+        QVERIFY(r.err.contains(u"Neither the ROS master"_s));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"ros"_s).toObject().value(u"reachable"_s).toBool(), false);
     }
 
     void everyCommandHasHelp_data()

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "mqtt/mqttconnection.h"
+
+#include <QWidget>
+
+class DetailPane;
+class LiveSession;
+class MqttTopicFilter;
+class PasswordStore;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSortFilterProxyModel;
+class QTableView;
+class QTreeView;
+
+/// The Discover page: the ROS graph on the left, the broker's topic tree in the middle, and what
+/// the selected topic carries on the right, all live.
+class DiscoverPage : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit DiscoverPage(LiveSession* session, QWidget* parent = nullptr);
+
+    /// Connects to `profile` (and remembers it as the last one used).
+    void connectBroker(const MqttProfile& profile);
+    void setRosMasterUri(const QString& uri);
+
+    QTableView* rosView() const { return m_rosView; }
+    QTreeView* mqttView() const { return m_mqttView; }
+    DetailPane* detail() const { return m_detail; }
+    QLineEdit* rosFilter() const { return m_rosFilter; }
+    QLineEdit* mqttFilter() const { return m_mqttFilter; }
+    MqttTopicFilter* mqttFilterModel() const { return m_mqttProxy; }
+    QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
+    QLabel* mqttStatus() const { return m_mqttState; }
+    QLabel* rosStatus() const { return m_rosState; }
+
+private:
+    void updateRosStatus();
+    void updateMqttStatus();
+    void reloadProfiles(const QString& select);
+    void editProfile(bool asNew);
+    void toggleConnection();
+
+    LiveSession* m_session;
+    PasswordStore* m_passwords;
+    QList<MqttProfile> m_profiles;
+    QLineEdit* m_masterUri;
+    QLabel* m_rosState;
+    QComboBox* m_profileBox;
+    QPushButton* m_connect;
+    QLabel* m_mqttState;
+    QLabel* m_counters;
+    QLineEdit* m_rosFilter;
+    QSortFilterProxyModel* m_rosProxy;
+    QTableView* m_rosView;
+    QLineEdit* m_mqttFilter;
+    QCheckBox* m_searchPayloads;
+    MqttTopicFilter* m_mqttProxy;
+    QTreeView* m_mqttView;
+    DetailPane* m_detail;
+};

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#include "ratechart.h"
+
+#include <QChart>
+#include <QLineSeries>
+#include <QValueAxis>
+
+#include <algorithm>
+
+RateChart::RateChart(QWidget* parent)
+    : QChartView(parent)
+    , m_series(new QLineSeries)
+    , m_x(new QValueAxis)
+    , m_y(new QValueAxis)
+{
+    auto* chart = new QChart;
+    chart->legend()->hide();
+    chart->addSeries(m_series);
+    chart->addAxis(m_x, Qt::AlignBottom);
+    chart->addAxis(m_y, Qt::AlignLeft);
+    m_series->attachAxis(m_x);
+    m_series->attachAxis(m_y);
+    m_x->setTitleText(tr("seconds ago"));
+    m_x->setLabelFormat(QStringLiteral("%d"));
+    m_y->setLabelFormat(QStringLiteral("%.3g"));
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    setChart(chart);
+    setRenderHint(QPainter::Antialiasing);
+    setMinimumHeight(160);
+}
+
+void RateChart::setSamples(const QList<double>& samples, const QString& unit)
+{
+    QList<QPointF> points;
+    points.reserve(samples.size());
+    double top = 0;
+    const int n = int(samples.size());
+    for (int i = 0; i < n; ++i) {
+        points.append(QPointF(i - n + 1, samples[i]));
+        top = std::max(top, samples[i]);
+    }
+    m_series->replace(points);
+    m_x->setRange(std::min(-10, 1 - n), 0);
+    m_y->setRange(0, top > 0 ? top * 1.15 : 1);
+    m_y->setTitleText(unit);
+}
