@@ -64,9 +64,10 @@ int runGui(int& argc, char** argv)
                                         u"PNG"_s);
     const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
                                    u"SECONDS"_s, u"1"_s);
-    const QCommandLineOption broker(u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."),
-                                    u"URL"_s);
-    const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."), u"URI"_s);
+    const QCommandLineOption broker(
+        u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."), u"URL"_s);
+    const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."),
+                                    u"URI"_s);
     parser.addOptions({screenshot, after, broker, master});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
     if (!parser.parse(app.arguments())) {

@@ -3,10 +3,11 @@
 
 #include "common/livesession.h"
 #include "config/configdocument.h"
-#include "discoverpage.h"
 #include "config/problemmodel.h"
 #include "configeditor.h"
 #include "configfilecontroller.h"
+#include "discoverpage.h"
+#include "mappage.h"
 #include "problemspanel.h"
 
 #include <QApplication>
@@ -30,13 +31,14 @@ MainWindow::MainWindow(QWidget* parent)
     , m_files(new ConfigFileController(m_document, m_undo, this))
     , m_pages(new QTabWidget(this))
     , m_discover(new DiscoverPage(m_session, m_pages))
-    , m_configEditor(new ConfigEditor(m_document, m_undo, m_pages))
+    , m_map(new MapPage(m_session, m_document, m_undo, m_pages))
+    , m_configEditor(m_map->editor())
     , m_problemStatus(new QLabel(this))
 {
     setObjectName(u"mainWindow"_s);
     m_pages->setDocumentMode(true);
     m_pages->addTab(m_discover, tr("Discover"));
-    m_pages->addTab(m_configEditor, tr("Map"));
+    m_pages->addTab(m_map, tr("Map"));
     setCentralWidget(m_pages);
     statusBar()->addPermanentWidget(m_problemStatus);
     createMenus();
@@ -44,7 +46,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &ConfigDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ConfigDocument::filePathChanged, this, &MainWindow::updateTitle);
     // Opening a config shows it.
-    connect(m_document, &ConfigDocument::resetDone, this, [this] { m_pages->setCurrentWidget(m_configEditor); });
+    connect(m_document, &ConfigDocument::resetDone, this, [this] { m_pages->setCurrentWidget(m_map); });
     connect(m_files, &ConfigFileController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
     connect(m_files, &ConfigFileController::recentFilesChanged, this, &MainWindow::updateRecentMenu);
@@ -96,6 +98,9 @@ void MainWindow::createMenus()
     edit->addAction(m_configEditor->addMqtt2RosAction());
     edit->addAction(m_configEditor->duplicateAction());
     edit->addAction(m_configEditor->deleteAction());
+    edit->addSeparator();
+    edit->addAction(m_map->bridgeToMqttAction());
+    edit->addAction(m_map->bridgeToRosAction());
     edit->addSeparator();
     edit->addAction(tr("&Find Mapping"), QKeySequence::Find, this, [this] {
         m_configEditor->filterEdit()->setFocus(Qt::ShortcutFocusReason);

@@ -5,6 +5,7 @@
 
 class ConfigDocument;
 class DiscoverPage;
+class MapPage;
 class LiveSession;
 class ConfigEditor;
 class ConfigFileController;
@@ -27,6 +28,7 @@ public:
     ConfigFileController* files() const { return m_files; }
     LiveSession* session() const { return m_session; }
     DiscoverPage* discoverPage() const { return m_discover; }
+    MapPage* mapPage() const { return m_map; }
     QTabWidget* pages() const { return m_pages; }
 
 protected:
@@ -43,6 +45,7 @@ private:
     ConfigFileController* m_files;
     QTabWidget* m_pages;
     DiscoverPage* m_discover;
+    MapPage* m_map;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;

@@ -25,6 +25,13 @@
     </message>
 </context>
 <context>
+    <name>BridgedTopicsProxy</name>
+    <message>
+        <source>Bridged: %1</source>
+        <translation>Übertragen: %1</translation>
+    </message>
+</context>
+<context>
     <name>ConfigCommand</name>
     <message>
         <source>Usage: bridgescope config &lt;command&gt; [options]
@@ -1269,6 +1276,180 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>MapPage</name>
+    <message>
+        <source>Bridge Selected ROS Topics to MQTT</source>
+        <translation>Ausgewählte ROS-Topics nach MQTT übertragen</translation>
+    </message>
+    <message>
+        <source>ROS → MQTT</source>
+        <translation>ROS → MQTT</translation>
+    </message>
+    <message>
+        <source>Bridge the selected ROS topics; under the selected MQTT level, if any (Ctrl+Shift+M)</source>
+        <translation>Die ausgewählten ROS-Topics übertragen; unter die ausgewählte MQTT-Ebene, falls eine gewählt ist (Strg+Umschalt+M)</translation>
+    </message>
+    <message>
+        <source>Bridge Selected MQTT Topics to ROS</source>
+        <translation>Ausgewählte MQTT-Topics nach ROS übertragen</translation>
+    </message>
+    <message>
+        <source>MQTT → ROS</source>
+        <translation>MQTT → ROS</translation>
+    </message>
+    <message>
+        <source>Bridge the selected MQTT topics; beside the selected ROS topic, if any (Ctrl+Shift+R)</source>
+        <translation>Die ausgewählten MQTT-Topics übertragen; neben das ausgewählte ROS-Topic, falls eines gewählt ist (Strg+Umschalt+R)</translation>
+    </message>
+    <message>
+        <source>Bridge selected:</source>
+        <translation>Auswahl übertragen:</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>New MQTT topics go below this prefix (for example the client id), unless dropped on a level</source>
+        <translation>Neue MQTT-Topics kommen unter dieses Präfix (zum Beispiel die Client-ID), außer sie werden auf eine Ebene gezogen</translation>
+    </message>
+    <message>
+        <source>MQTT &amp;prefix:</source>
+        <translation>MQTT-&amp;Präfix:</translation>
+    </message>
+    <message>
+        <source>Drag ROS topics onto the MQTT tree and MQTT topics onto the ROS topics; drop a topic on a mapping to retarget it.</source>
+        <translation>ROS-Topics auf den MQTT-Baum ziehen und MQTT-Topics auf die ROS-Topics; ein Topic auf einer Zuordnung ablegen, um sie umzulenken.</translation>
+    </message>
+    <message>
+        <source>Filter ROS topics…</source>
+        <translation>ROS-Topics filtern …</translation>
+    </message>
+    <message>
+        <source>Filter MQTT topics…</source>
+        <translation>MQTT-Topics filtern …</translation>
+    </message>
+    <message>
+        <source>Bridge %1 to MQTT</source>
+        <translation>%1 nach MQTT übertragen</translation>
+    </message>
+    <message>
+        <source>Bridge %1 ROS topics to MQTT</source>
+        <translation>%1 ROS-Topics nach MQTT übertragen</translation>
+    </message>
+    <message>
+        <source>Bridge %1 to ROS</source>
+        <translation>%1 nach ROS übertragen</translation>
+    </message>
+    <message>
+        <source>Bridge %1 MQTT topics to ROS</source>
+        <translation>%1 MQTT-Topics nach ROS übertragen</translation>
+    </message>
+    <message>
+        <source>Retarget to %1</source>
+        <translation>Auf %1 umlenken</translation>
+    </message>
+</context>
+<context>
+    <name>MappingHealth</name>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>no publisher</source>
+        <translation>kein Publisher</translation>
+    </message>
+    <message>
+        <source>silent</source>
+        <translation>still</translation>
+    </message>
+    <message>
+        <source>never seen</source>
+        <translation>nie gesehen</translation>
+    </message>
+    <message>
+        <source>ROS master not reachable</source>
+        <translation>ROS-Master nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>broker not connected</source>
+        <translation>Broker nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Connect to the ROS master and the broker on the Discover page to see this mapping's traffic.</source>
+        <translation>Auf der Seite Entdecken mit ROS-Master und Broker verbinden, um den Verkehr dieser Zuordnung zu sehen.</translation>
+    </message>
+    <message>
+        <source>ROS topic not on the master</source>
+        <translation>ROS-Topic nicht beim Master</translation>
+    </message>
+    <message>
+        <source>Nobody publishes or subscribes '%1' on this master.</source>
+        <translation>Niemand veröffentlicht oder abonniert '%1' bei diesem Master.</translation>
+    </message>
+    <message>
+        <source>no publisher on ROS</source>
+        <translation>kein Publisher auf ROS</translation>
+    </message>
+    <message>
+        <source>'%1' exists but nobody publishes it, so there is nothing to bridge.</source>
+        <translation>'%1' gibt es, aber niemand veröffentlicht es; es gibt nichts zu übertragen.</translation>
+    </message>
+    <message>
+        <source>no bridge running?</source>
+        <translation>keine Bridge aktiv?</translation>
+    </message>
+    <message>
+        <source>'%1' is published (%2) but nothing arrived on '%3' in the last %4 s.</source>
+        <translation>'%1' wird veröffentlicht (%2), aber auf '%3' kam in den letzten %4 s nichts an.</translation>
+    </message>
+    <message>
+        <source>'%1' (%2) arrives on '%3' (%4).</source>
+        <translation>'%1' (%2) kommt auf '%3' an (%4).</translation>
+    </message>
+    <message>
+        <source>MQTT topic never seen</source>
+        <translation>MQTT-Topic nie gesehen</translation>
+    </message>
+    <message>
+        <source>Nothing has been published on '%1' since Bridgescope connected.</source>
+        <translation>Auf '%1' wurde nichts veröffentlicht, seit Bridgescope verbunden ist.</translation>
+    </message>
+    <message>
+        <source>MQTT topic silent</source>
+        <translation>MQTT-Topic still</translation>
+    </message>
+    <message>
+        <source>'%1' has been silent for %2 s.</source>
+        <translation>'%1' ist seit %2 s still.</translation>
+    </message>
+    <message>
+        <source>'%1' carries %2 but nobody publishes '%3' on ROS.</source>
+        <translation>'%1' trägt %2, aber niemand veröffentlicht '%3' auf ROS.</translation>
+    </message>
+    <message>
+        <source>'%1' (%2) is published on '%3' (%4).</source>
+        <translation>'%1' (%2) wird auf '%3' veröffentlicht (%4).</translation>
+    </message>
+    <message>
+        <source>type mismatch</source>
+        <translation>Typen passen nicht</translation>
+    </message>
+    <message>
+        <source>The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.</source>
+        <translation>Der Broker kündigt '%1' für '%2' an, aber '%3' hat auf ROS den Typ '%4'.</translation>
+    </message>
+    <message>
+        <source>, %1 ms</source>
+        <translation>, %1 ms</translation>
+    </message>
+    <message>
+        <source>publishers: %1</source>
+        <translation>Publisher: %1</translation>
+    </message>
+</context>
+<context>
     <name>MappingInspector</name>
     <message>
         <source>Select a mapping to edit it, or add one with Insert.</source>
@@ -1392,6 +1573,10 @@ Befehle:
     <message>
         <source>Options</source>
         <translation>Optionen</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>Zustand</translation>
     </message>
 </context>
 <context>

@@ -42,6 +42,7 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
         m_undo->push(new ConfigCommands::EditMappings(m_doc, {before}, {after}, tr("Edit topic")));
     });
     m_icons->setSourceModel(m_model);
+    m_icons->setHealthColumn(MappingModel::HealthColumn, MappingModel::HealthStateRole);
     m_filter->setSourceModel(m_icons);
 
     m_addOut = new QAction(tr("Add ROS → MQTT Mapping"), this);
@@ -72,6 +73,7 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     m_filterEdit->setObjectName(u"mappingFilter"_s);
     m_filterEdit->setPlaceholderText(tr("Filter mappings (topic or option)…"));
     m_filterEdit->setClearButtonEnabled(true);
+    m_filterEdit->setMinimumWidth(150);
     m_directionFilter = new QComboBox(left);
     m_directionFilter->addItem(tr("Both directions"), int(MappingFilterProxy::AllDirections));
     m_directionFilter->addItem(MappingModel::directionText(Direction::Ros2Mqtt), int(Direction::Ros2Mqtt));
@@ -106,7 +108,9 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     header->setSectionResizeMode(MappingModel::RosTopicColumn, QHeaderView::Stretch);
     header->setSectionResizeMode(MappingModel::MqttTopicColumn, QHeaderView::Stretch);
     header->setSectionResizeMode(MappingModel::OptionsColumn, QHeaderView::Interactive);
-    m_table->setColumnWidth(MappingModel::OptionsColumn, 200);
+    header->setSectionResizeMode(MappingModel::HealthColumn, QHeaderView::Interactive);
+    m_table->setColumnWidth(MappingModel::OptionsColumn, 150);
+    m_table->setColumnWidth(MappingModel::HealthColumn, 170);
     m_table->addAction(m_delete);
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
     m_table->addAction(m_duplicate);
@@ -123,6 +127,7 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     m_tabs->addTab(m_preview, tr("&YAML"));
 
     auto* top = new QSplitter(Qt::Horizontal, this);
+    m_split = top;
     top->addWidget(left);
     top->addWidget(m_tabs);
     top->setStretchFactor(0, 3);
@@ -155,6 +160,12 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     connect(m_problems, &ProblemsPanel::mappingProblemActivated, this, &ConfigEditor::showMappingProblem);
     connect(m_problems, &ProblemsPanel::settingsProblemActivated, this, &ConfigEditor::showSettingsProblem);
     updateActions();
+}
+
+void ConfigEditor::setInspectorWidth(int width)
+{
+    const int total = std::max(m_split->width(), width * 3);
+    m_split->setSizes({total - width, width});
 }
 
 QList<quint64> ConfigEditor::selectedIds() const

@@ -44,6 +44,8 @@ public:
     QLineEdit* filterEdit() const { return m_filterEdit; }
 
     QList<quint64> selectedIds() const;
+    /// Width of the inspector beside the table (the rest goes to the table).
+    void setInspectorWidth(int width);
     void selectMappings(const QList<quint64>& ids);
     /// Adds a mapping (topics proposed) and puts the cursor on its ROS topic.
     void addMapping(Direction direction);
@@ -66,6 +68,7 @@ private:
     QComboBox* m_directionFilter;
     QCheckBox* m_onlyProblems;
     QTabWidget* m_tabs;
+    class QSplitter* m_split;
     MappingInspector* m_inspector;
     SettingsInspector* m_settings;
     YamlPreview* m_preview;

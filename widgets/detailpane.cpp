@@ -19,8 +19,8 @@
 #include <QLocale>
 #include <QPlainTextEdit>
 #include <QStandardItemModel>
-#include <QTabWidget>
 #include <QTableWidget>
+#include <QTabWidget>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -49,8 +49,13 @@ void addValue(QStandardItem* parent, const RosValue& value)
         text = value.value.toString() + (value.truncated ? u"…"_s : QString());
     else if (value.kind == RosValue::Array)
         text = value.value.isValid()
-            ? DetailPane::tr("%1 bytes: %2%3").arg(value.arrayLength).arg(value.value.toString(), value.truncated ? u" …"_s : QString())
-            : DetailPane::tr("%1 elements%2").arg(value.arrayLength).arg(value.truncated ? DetailPane::tr(", first %1 shown").arg(value.children.size()) : QString());
+            ? DetailPane::tr("%1 bytes: %2%3")
+                  .arg(value.arrayLength)
+                  .arg(value.value.toString(), value.truncated ? u" …"_s : QString())
+            : DetailPane::tr("%1 elements%2")
+                  .arg(value.arrayLength)
+                  .arg(value.truncated ? DetailPane::tr(", first %1 shown").arg(value.children.size())
+                                       : QString());
     QList<QStandardItem*> items = row(value.name, text, value.type);
     for (const RosValue& c : value.children)
         addValue(items.first(), c);
@@ -71,8 +76,17 @@ void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v)
         for (int i = 0; i < a.size() && i < 256; ++i)
             addJson(items.first(), u"[%1]"_s.arg(i), a[i]);
     } else {
-        const QString type = v.isString() ? u"string"_s : v.isBool() ? u"bool"_s : v.isNull() ? u"null"_s : u"number"_s;
-        items = row(name, v.isString() ? v.toString() : QString::fromUtf8(QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact)).mid(1).chopped(1), type);
+        const QString type = v.isString() ? u"string"_s
+            : v.isBool()                  ? u"bool"_s
+            : v.isNull()                  ? u"null"_s
+                                          : u"number"_s;
+        items = row(name,
+                    v.isString()
+                        ? v.toString()
+                        : QString::fromUtf8(QJsonDocument(QJsonArray {v}).toJson(QJsonDocument::Compact))
+                              .mid(1)
+                              .chopped(1),
+                    type);
     }
     parent->appendRow(items);
 }
@@ -202,7 +216,8 @@ void DetailPane::showJsonFields(const QByteArray& json)
         for (auto it = o.begin(); it != o.end(); ++it)
             addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value());
     } else {
-        addJson(m_fieldModel->invisibleRootItem(), u"(root)"_s, doc.isArray() ? QJsonValue(doc.array()) : QJsonValue());
+        addJson(m_fieldModel->invisibleRootItem(), u"(root)"_s,
+                doc.isArray() ? QJsonValue(doc.array()) : QJsonValue());
     }
     m_fields->expandToDepth(1);
     m_fields->resizeColumnToContents(0);
@@ -221,7 +236,8 @@ void DetailPane::refreshMqtt(bool force)
     MqttTopicTree* tree = m_session->mqttTopics();
     const auto info = tree->info(m_topic);
     if (!info) {
-        m_title->setText(tr("<b>%1</b>: a level of the topic tree; select a topic below it.").arg(m_topic.toHtmlEscaped()));
+        m_title->setText(tr("<b>%1</b>: a level of the topic tree; select a topic below it.")
+                             .arg(m_topic.toHtmlEscaped()));
         showNoFields(tr("(no messages on this level itself)"));
         return;
     }
@@ -236,21 +252,25 @@ void DetailPane::refreshMqtt(bool force)
               .arg(info->qos)
               .arg(info->retained ? tr(", retained") : QString());
     if (info->rosType) {
-        title += u"<br>"_s + tr("ROS type %1 (announced by mqtt_client)%2")
-                                 .arg(info->rosType->name.toHtmlEscaped(), info->rosType->stamped ? tr(", stamped") : QString());
+        title += u"<br>"_s
+            + tr("ROS type %1 (announced by mqtt_client)%2")
+                  .arg(info->rosType->name.toHtmlEscaped(),
+                       info->rosType->stamped ? tr(", stamped") : QString());
         if (info->latencySamples)
-            title += u"<br>"_s + tr("one-way latency %1 ms (mean of the last %2: %3 ms); valid only as far as the "
-                                    "sender's clock agrees with this one")
-                                     .arg(info->lastLatencyMs, 0, 'f', 1)
-                                     .arg(std::min<quint64>(info->latencySamples, 100))
-                                     .arg(info->meanLatencyMs, 0, 'f', 1);
+            title += u"<br>"_s
+                + tr("one-way latency %1 ms (mean of the last %2: %3 ms); valid only as far as the "
+                     "sender's clock agrees with this one")
+                      .arg(info->lastLatencyMs, 0, 'f', 1)
+                      .arg(std::min<quint64>(info->latencySamples, 100))
+                      .arg(info->meanLatencyMs, 0, 'f', 1);
     }
     if (info->malformedPayloads)
-        title += u"<br><font color=\"#b00020\">"_s + tr("%1 payloads did not decode as the announced type").arg(info->malformedPayloads)
+        title += u"<br><font color=\"#b00020\">"_s
+            + tr("%1 payloads did not decode as the announced type").arg(info->malformedPayloads)
             + u"</font>"_s;
     if (!info->typeError.isEmpty())
-        title += u"<br><font color=\"#b00020\">"_s + tr("malformed type announcement: %1").arg(info->typeError.toHtmlEscaped())
-            + u"</font>"_s;
+        title += u"<br><font color=\"#b00020\">"_s
+            + tr("malformed type announcement: %1").arg(info->typeError.toHtmlEscaped()) + u"</font>"_s;
     m_title->setText(title);
 
     const auto* history = tree->history(m_topic);
@@ -267,7 +287,8 @@ void DetailPane::refreshMqtt(bool force)
         QString error;
         RosDecodeLimits limits;
         limits.maxArrayElements = 32;
-        if (const auto value = RosMessageDecoder::decode(*registry, info->rosType->name, message, &error, limits))
+        if (const auto value
+            = RosMessageDecoder::decode(*registry, info->rosType->name, message, &error, limits))
             showFields(*value);
         else
             showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
@@ -282,7 +303,10 @@ void DetailPane::refreshMqtt(bool force)
         m_history->setRowCount(n);
         for (int i = 0; i < n; ++i) {
             const MqttTopicTree::HistoryEntry& e = (*history)[size_t(n - 1 - i)];
-            m_history->setItem(i, 0, new QTableWidgetItem(QDateTime::fromMSecsSinceEpoch(e.receivedNs / 1000000).toString(u"HH:mm:ss.zzz"_s)));
+            m_history->setItem(
+                i, 0,
+                new QTableWidgetItem(
+                    QDateTime::fromMSecsSinceEpoch(e.receivedNs / 1000000).toString(u"HH:mm:ss.zzz"_s)));
             m_history->setItem(i, 1, new QTableWidgetItem(sizeText(e.payload.size())));
             m_history->setItem(i, 2, new QTableWidgetItem(e.retained ? tr("retained") : QString()));
         }
@@ -309,9 +333,10 @@ void DetailPane::refreshRos(bool force)
     m_shownMessages = messages;
     QString title = u"<b>%1</b>"_s.arg(m_topic.toHtmlEscaped());
     if (t) {
-        title += u"<br>"_s + tr("%1; publishers: %2; subscribers: %3")
-                                 .arg(t->type.toHtmlEscaped(), t->publishers.join(u", "_s).toHtmlEscaped(),
-                                      t->subscribers.join(u", "_s).toHtmlEscaped());
+        title += u"<br>"_s
+            + tr("%1; publishers: %2; subscribers: %3")
+                  .arg(t->type.toHtmlEscaped(), t->publishers.join(u", "_s).toHtmlEscaped(),
+                       t->subscribers.join(u", "_s).toHtmlEscaped());
     }
     if (!s) {
         title += u"<br>"_s + tr("Check Monitor to subscribe and see its messages.");
@@ -321,8 +346,11 @@ void DetailPane::refreshRos(bool force)
         showPayload(m_lastPayload);
         return;
     }
-    title += u"<br>"_s + tr("%1 messages, %2 Hz, %3/s, last %4").arg(s->messages).arg(s->rateHz, 0, 'f', 2)
-                            .arg(sizeText(qint64(s->bytesPerSecond)), sizeText(s->lastSize));
+    title += u"<br>"_s
+        + tr("%1 messages, %2 Hz, %3/s, last %4")
+              .arg(s->messages)
+              .arg(s->rateHz, 0, 'f', 2)
+              .arg(sizeText(qint64(s->bytesPerSecond)), sizeText(s->lastSize));
     m_title->setText(title);
     m_lastPayload = s->lastMessage;
     showPayload(m_lastPayload);
@@ -336,7 +364,8 @@ void DetailPane::refreshRos(bool force)
     limits.maxArrayElements = 32;
     if (!registry.addDefinition(s->type, s->definition, &error)) {
         showNoFields(error);
-    } else if (const auto value = RosMessageDecoder::decode(registry, s->type, s->lastMessage, &error, limits)) {
+    } else if (const auto value
+               = RosMessageDecoder::decode(registry, s->type, s->lastMessage, &error, limits)) {
         showFields(*value);
     } else {
         showNoFields(error);
@@ -355,6 +384,8 @@ void DetailPane::refreshBroker()
     }
     if (keys.isEmpty()) {
         m_broker->setRowCount(1);
-        m_broker->setItem(0, 0, new QTableWidgetItem(tr("Turn on $SYS in the connection profile to see the broker's figures.")));
+        m_broker->setItem(
+            0, 0,
+            new QTableWidgetItem(tr("Turn on $SYS in the connection profile to see the broker's figures.")));
     }
 }

@@ -140,16 +140,18 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     m_mqttView->sortByColumn(MqttTopicTree::TopicColumn, Qt::AscendingOrder);
     m_mqttView->header()->setSectionResizeMode(MqttTopicTree::TopicColumn, QHeaderView::Interactive);
     m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 260);
-    for (int c : {MqttTopicTree::BytesColumn, MqttTopicTree::SizeColumn, MqttTopicTree::QosColumn, MqttTopicTree::LastColumn})
+    for (int c : {MqttTopicTree::BytesColumn, MqttTopicTree::SizeColumn, MqttTopicTree::QosColumn,
+                  MqttTopicTree::LastColumn})
         m_mqttView->setColumnHidden(c, true);
     mv->addWidget(m_mqttView, 1);
     // New top-level levels open, so that the first look shows more than a handful of roots.
-    connect(m_mqttProxy, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex& parent, int first, int last) {
-        if (parent.isValid())
-            return;
-        for (int r = first; r <= last; ++r)
-            m_mqttView->expand(m_mqttProxy->index(r, 0));
-    });
+    connect(m_mqttProxy, &QAbstractItemModel::rowsInserted, this,
+            [this](const QModelIndex& parent, int first, int last) {
+                if (parent.isValid())
+                    return;
+                for (int r = first; r <= last; ++r)
+                    m_mqttView->expand(m_mqttProxy->index(r, 0));
+            });
 
     m_detail = new DetailPane(session, this);
 
@@ -164,7 +166,8 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     v->addWidget(split, 1);
 
     // Wiring.
-    connect(m_masterUri, &QLineEdit::returnPressed, this, [this] { setRosMasterUri(m_masterUri->text().trimmed()); });
+    connect(m_masterUri, &QLineEdit::returnPressed, this,
+            [this] { setRosMasterUri(m_masterUri->text().trimmed()); });
     connect(session->rosGraph(), &RosGraphPoller::reachabilityChanged, this, &DiscoverPage::updateRosStatus);
     connect(session->rosGraph(), &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
     connect(session->mqtt(), &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
@@ -174,14 +177,16 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     connect(edit, &QToolButton::clicked, this, [this] { editProfile(false); });
     connect(add, &QToolButton::clicked, this, [this] { editProfile(true); });
     connect(m_connect, &QPushButton::clicked, this, &DiscoverPage::toggleConnection);
-    connect(m_rosView->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this](const QModelIndex& i) {
-        if (i.isValid())
-            m_detail->showRosTopic(i.data(RosTopicModel::TopicRole).toString());
-    });
-    connect(m_mqttView->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this](const QModelIndex& i) {
-        if (i.isValid())
-            m_detail->showMqttTopic(i.data(MqttTopicTree::FullTopicRole).toString());
-    });
+    connect(m_rosView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& i) {
+                if (i.isValid())
+                    m_detail->showRosTopic(i.data(RosTopicModel::TopicRole).toString());
+            });
+    connect(m_mqttView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& i) {
+                if (i.isValid())
+                    m_detail->showMqttTopic(i.data(MqttTopicTree::FullTopicRole).toString());
+            });
     // The detail pane follows its topic a few times a second, not at the drain rate.
     auto* refresh = new QTimer(this);
     connect(refresh, &QTimer::timeout, m_detail, &DetailPane::refresh);
@@ -248,13 +253,14 @@ void DiscoverPage::toggleConnection()
         if (!p.username.isEmpty() && p.password.isEmpty()) {
             // The password comes from the keyring, if it is there.
             auto conn = std::make_shared<QMetaObject::Connection>();
-            *conn = connect(m_passwords, &PasswordStore::fetched, this,
-                            [this, p, conn](const QString&, const QString& password, bool ok, const QString&) mutable {
-                                disconnect(*conn);
-                                if (ok)
-                                    p.password = password;
-                                connectBroker(p);
-                            });
+            *conn = connect(
+                m_passwords, &PasswordStore::fetched, this,
+                [this, p, conn](const QString&, const QString& password, bool ok, const QString&) mutable {
+                    disconnect(*conn);
+                    if (ok)
+                        p.password = password;
+                    connectBroker(p);
+                });
             m_passwords->fetch(u"mqtt/"_s + p.name);
             return;
         }
@@ -275,7 +281,8 @@ void DiscoverPage::connectBroker(const MqttProfile& profile)
     }
     if (index < 0) {
         m_profiles << profile;
-        m_profileBox->addItem(profile.name == profile.url ? profile.url : u"%1 (%2)"_s.arg(profile.name, profile.url));
+        m_profileBox->addItem(profile.name == profile.url ? profile.url
+                                                          : u"%1 (%2)"_s.arg(profile.name, profile.url));
         index = int(m_profiles.size()) - 1;
     } else {
         m_profiles[index] = profile;
@@ -299,11 +306,12 @@ void DiscoverPage::updateRosStatus()
     if (p->polls() == 0)
         m_rosState->setText(bullet(u"#888"_s, tr("asking the master…")));
     else if (p->isReachable())
-        m_rosState->setText(bullet(u"#2e7d32"_s, tr("reachable: %1 topics, %2 nodes")
-                                                     .arg(p->graph().topics.size())
-                                                     .arg(p->graph().nodes.size())));
+        m_rosState->setText(bullet(
+            u"#2e7d32"_s,
+            tr("reachable: %1 topics, %2 nodes").arg(p->graph().topics.size()).arg(p->graph().nodes.size())));
     else
-        m_rosState->setText(bullet(u"#b00020"_s, tr("unreachable: %1 (retrying every second)").arg(p->lastError())));
+        m_rosState->setText(
+            bullet(u"#b00020"_s, tr("unreachable: %1 (retrying every second)").arg(p->lastError())));
 }
 
 void DiscoverPage::updateMqttStatus()
@@ -327,7 +335,7 @@ void DiscoverPage::updateMqttStatus()
     const bool idle = s == MqttConnection::State::Disconnected || s == MqttConnection::State::Failed;
     m_connect->setText(idle ? tr("&Connect") : tr("Dis&connect"));
     const MqttTopicTree* t = m_session->mqttTopics();
-    QStringList parts{tr("%1 topics").arg(t->topicCount()), tr("%1 messages").arg(c->received())};
+    QStringList parts {tr("%1 topics").arg(t->topicCount()), tr("%1 messages").arg(c->received())};
     if (c->dropped())
         parts << tr("%1 dropped").arg(c->dropped());
     if (t->malformedTypeAnnouncements() || t->malformedPayloads())

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "ratechart.h"
 
+#include <algorithm>
 #include <QChart>
 #include <QLineSeries>
 #include <QValueAxis>
-
-#include <algorithm>
 
 RateChart::RateChart(QWidget* parent)
     : QChartView(parent)

@@ -3,11 +3,10 @@
 
 #include "mqtt/mqttconnection.h"
 
+#include <functional>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
-
-#include <functional>
 #include <vector>
 
 class MqttTopicTree;

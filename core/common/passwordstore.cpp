@@ -9,8 +9,7 @@ const QString kService = QStringLiteral("bridgescope");
 
 PasswordStore::PasswordStore(QObject* parent)
     : QObject(parent)
-{
-}
+{ }
 
 void PasswordStore::store(const QString& key, const QString& password)
 {

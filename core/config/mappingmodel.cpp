@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "mappingmodel.h"
 
+#include "common/topicmime.h"
 #include "configdocument.h"
 #include "yamltree.h"
+
+#include <QMimeData>
 
 using namespace Qt::StringLiterals;
 
@@ -90,9 +93,23 @@ QVariant MappingModel::data(const QModelIndex& index, int role) const
             return m.mqttTopic();
         case OptionsColumn:
             return optionsSummary(m);
+        case HealthColumn: {
+            const MappingHealth* h = health(m.id);
+            if (role == SortRole)
+                return h ? int(h->state) : -1;
+            return h ? h->summary : QString();
+        }
         }
         break;
+    case HealthStateRole: {
+        const MappingHealth* h = health(m.id);
+        return h ? int(h->state) : -1;
+    }
     case Qt::ToolTipRole: {
+        if (index.column() == HealthColumn) {
+            const MappingHealth* h = health(m.id);
+            return h ? QVariant(h->detail) : QVariant();
+        }
         QStringList lines;
         for (const Problem& p : m_document->problemsOf(m.id))
             lines << p.message + (p.fix.isEmpty() ? QString() : u"\n  → "_s + p.fix);
@@ -130,13 +147,15 @@ QVariant MappingModel::headerData(int section, Qt::Orientation orientation, int 
         return tr("MQTT topic");
     case OptionsColumn:
         return tr("Options");
+    case HealthColumn:
+        return tr("Health");
     }
     return {};
 }
 
 Qt::ItemFlags MappingModel::flags(const QModelIndex& index) const
 {
-    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    Qt::ItemFlags f = QAbstractTableModel::flags(index) | Qt::ItemIsDropEnabled;
     if (index.isValid() && (index.column() == RosTopicColumn || index.column() == MqttTopicColumn))
         f |= Qt::ItemIsEditable;
     return f;
@@ -170,6 +189,45 @@ QHash<int, QByteArray> MappingModel::roleNames() const
     names.insert(SeverityRole, "severity");
     names.insert(ProblemsRole, "problems");
     return names;
+}
+
+void MappingModel::setHealth(const QHash<quint64, MappingHealth>& health)
+{
+    m_health = health;
+    if (rowCount() > 0)
+        emit dataChanged(index(0, HealthColumn), index(rowCount() - 1, HealthColumn),
+                         {Qt::DisplayRole, HealthStateRole, Qt::ToolTipRole});
+}
+
+const MappingHealth* MappingModel::health(quint64 id) const
+{
+    const auto it = m_health.constFind(id);
+    return it == m_health.cend() ? nullptr : &*it;
+}
+
+QStringList MappingModel::mimeTypes() const
+{
+    return {TopicMime::rosType(), TopicMime::mqttType()};
+}
+
+Qt::DropActions MappingModel::supportedDropActions() const
+{
+    return Qt::CopyAction | Qt::MoveAction | Qt::LinkAction;
+}
+
+bool MappingModel::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
+{
+    return m_dropHandler && data
+        && (data->hasFormat(TopicMime::rosType()) || data->hasFormat(TopicMime::mqttType()));
+}
+
+bool MappingModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                                const QModelIndex& parent)
+{
+    if (!canDropMimeData(data, action, row, column, parent))
+        return false;
+    // Dropped on a mapping: the parent index is that mapping; between rows or below: a new one.
+    return m_dropHandler(data, parent.isValid() ? parent.row() : -1);
 }
 
 void MappingModel::onProblemsChanged()

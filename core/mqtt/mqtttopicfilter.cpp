@@ -37,5 +37,6 @@ bool MqttTopicFilter::filterAcceptsRow(int sourceRow, const QModelIndex& sourceP
     const QModelIndex index = sourceModel()->index(sourceRow, 0, sourceParent);
     if (index.data(MqttTopicTree::FullTopicRole).toString().contains(m_text, Qt::CaseInsensitive))
         return true;
-    return m_payloads && index.data(MqttTopicTree::SearchTextRole).toString().contains(m_text, Qt::CaseInsensitive);
+    return m_payloads
+        && index.data(MqttTopicTree::SearchTextRole).toString().contains(m_text, Qt::CaseInsensitive);
 }

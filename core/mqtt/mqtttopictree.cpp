@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "mqtttopictree.h"
 
+#include "common/topicmime.h"
 #include "ros/rosmessage.h"
 
 #include <algorithm>
 #include <QDateTime>
 #include <QLocale>
+#include <QMimeData>
+#include <QSet>
 
 using namespace Qt::StringLiterals;
 
@@ -504,6 +507,91 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
         return type && type->info.stamped;
     }
     return {};
+}
+
+const MqttTopicTree::Node* MqttTopicTree::nodeAt(const QString& path) const
+{
+    const Node* n = m_root.get();
+    if (path.isEmpty())
+        return n;
+    for (const QString& level : path.split(u'/')) {
+        n = n->byName.value(level);
+        if (!n)
+            return nullptr;
+    }
+    return n;
+}
+
+bool MqttTopicTree::hasChildren(const QString& path) const
+{
+    const Node* n = nodeAt(path);
+    return n && !n->children.empty();
+}
+
+QStringList MqttTopicTree::topicsBelow(const QString& path, int limit) const
+{
+    QStringList out;
+    const Node* start = nodeAt(path);
+    if (!start)
+        return out;
+    std::vector<const Node*> stack {start};
+    while (!stack.empty() && out.size() < limit) {
+        const Node* n = stack.back();
+        stack.pop_back();
+        if (n->isTopic)
+            out << n->path;
+        for (auto it = n->children.rbegin(); it != n->children.rend(); ++it)
+            stack.push_back(it->get());
+    }
+    return out;
+}
+
+Qt::ItemFlags MqttTopicTree::flags(const QModelIndex& index) const
+{
+    Qt::ItemFlags f = QAbstractItemModel::flags(index) | Qt::ItemIsDropEnabled;
+    if (index.isValid())
+        f |= Qt::ItemIsDragEnabled;
+    return f;
+}
+
+QStringList MqttTopicTree::mimeTypes() const
+{
+    return {TopicMime::mqttType()};
+}
+
+QMimeData* MqttTopicTree::mimeData(const QModelIndexList& indexes) const
+{
+    // A topic drags itself; a level drags every topic below it.
+    QList<TopicMime::Topic> topics;
+    QSet<QString> seen;
+    for (const QModelIndex& i : indexes) {
+        if (!i.isValid() || i.column() != 0)
+            continue;
+        const Node* n = static_cast<const Node*>(i.internalPointer());
+        const QStringList names = n->isTopic ? QStringList {n->path} : topicsBelow(n->path);
+        for (const QString& t : names) {
+            if (seen.contains(t))
+                continue;
+            seen.insert(t);
+            const auto type = m_types.value(t);
+            topics.append({t, type ? type->info.name : QString()});
+        }
+    }
+    return topics.isEmpty() ? nullptr : TopicMime::encode(TopicMime::mqttType(), topics);
+}
+
+bool MqttTopicTree::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
+{
+    return m_dropHandler && data && data->hasFormat(TopicMime::rosType());
+}
+
+bool MqttTopicTree::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                                 const QModelIndex& parent)
+{
+    if (!canDropMimeData(data, action, row, column, parent))
+        return false;
+    const Node* target = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : nullptr;
+    return m_dropHandler(data, target ? target->path : QString());
 }
 
 QVariant MqttTopicTree::headerData(int section, Qt::Orientation orientation, int role) const

@@ -5,6 +5,7 @@
 #include "mqttconnection.h"
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <QAbstractItemModel>
@@ -75,7 +76,15 @@ public:
         QList<double> rateHistory; ///< one value per second, oldest first
     };
 
+    /// Handles ROS topics dropped on a level (its path) or beside the tree (empty).
+    using DropHandler = std::function<bool(const QMimeData* data, const QString& targetPath)>;
+
     explicit MqttTopicTree(QObject* parent = nullptr);
+    void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
+    /// Every topic at or below a level (a topic itself, or all topics of a subtree).
+    QStringList topicsBelow(const QString& path, int limit = 1000) const;
+    /// Whether a level has levels below it.
+    bool hasChildren(const QString& path) const;
     ~MqttTopicTree() override;
 
     void setHistoryDepth(int messages);
@@ -103,6 +112,18 @@ public:
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    QStringList mimeTypes() const override;
+    QMimeData* mimeData(const QModelIndexList& indexes) const override;
+    Qt::DropActions supportedDragActions() const override { return Qt::CopyAction | Qt::LinkAction; }
+    Qt::DropActions supportedDropActions() const override
+    {
+        return Qt::CopyAction | Qt::LinkAction | Qt::MoveAction;
+    }
+    bool canDropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                         const QModelIndex& parent) const override;
+    bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                      const QModelIndex& parent) override;
 
 signals:
     void brokerStatisticsChanged();
@@ -124,4 +145,6 @@ private:
     quint64 m_malformedTypes = 0;
     quint64 m_malformedPayloads = 0;
     qint64 m_lastTickNs = 0;
+    DropHandler m_dropHandler;
+    const Node* nodeAt(const QString& path) const;
 };

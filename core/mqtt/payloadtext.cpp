@@ -46,7 +46,8 @@ QString PayloadText::hexDump(const QByteArray& bytes)
 PayloadText::Rendered PayloadText::render(const QByteArray& payload, Mode mode, qsizetype limitBytes)
 {
     Rendered r;
-    const QString size = QLocale::system().formattedDataSize(payload.size(), 1, QLocale::DataSizeTraditionalFormat);
+    const QString size
+        = QLocale::system().formattedDataSize(payload.size(), 1, QLocale::DataSizeTraditionalFormat);
     const bool cut = payload.size() > limitBytes;
     const QByteArray shown = cut ? payload.left(limitBytes) : payload;
     if (mode == Mode::Auto) {
@@ -77,8 +78,10 @@ PayloadText::Rendered PayloadText::render(const QByteArray& payload, Mode mode, 
         r.text = QString::fromUtf8(shown);
         break;
     }
-    r.note = cut ? tr("%1; showing the first %2").arg(size, QLocale::system().formattedDataSize(
-                                                                limitBytes, 0, QLocale::DataSizeTraditionalFormat))
-                 : size;
+    r.note = cut
+        ? tr("%1; showing the first %2")
+              .arg(size,
+                   QLocale::system().formattedDataSize(limitBytes, 0, QLocale::DataSizeTraditionalFormat))
+        : size;
     return r;
 }

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "rostopicmodel.h"
 
+#include "common/topicmime.h"
+
 #include <algorithm>
 #include <QLocale>
+#include <QMimeData>
 
 using namespace Qt::StringLiterals;
 
@@ -172,10 +175,46 @@ bool RosTopicModel::setData(const QModelIndex& index, const QVariant& value, int
 
 Qt::ItemFlags RosTopicModel::flags(const QModelIndex& index) const
 {
-    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    Qt::ItemFlags f = QAbstractTableModel::flags(index) | Qt::ItemIsDropEnabled;
+    if (index.isValid())
+        f |= Qt::ItemIsDragEnabled;
     if (index.isValid() && index.column() == MonitorColumn)
         f |= Qt::ItemIsUserCheckable;
     return f;
+}
+
+QStringList RosTopicModel::mimeTypes() const
+{
+    return {TopicMime::rosType()};
+}
+
+QMimeData* RosTopicModel::mimeData(const QModelIndexList& indexes) const
+{
+    QList<TopicMime::Topic> topics;
+    QSet<int> rows;
+    for (const QModelIndex& i : indexes) {
+        if (!i.isValid() || rows.contains(i.row()))
+            continue;
+        rows.insert(i.row());
+        const RosTopicInfo& t = m_graph.topics[i.row()];
+        topics.append({t.name, t.type});
+    }
+    return topics.isEmpty() ? nullptr : TopicMime::encode(TopicMime::rosType(), topics);
+}
+
+bool RosTopicModel::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
+{
+    return m_dropHandler && data && data->hasFormat(TopicMime::mqttType());
+}
+
+bool RosTopicModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                                 const QModelIndex& parent)
+{
+    if (!canDropMimeData(data, action, row, column, parent))
+        return false;
+    const int target = parent.isValid() ? parent.row() : -1;
+    return m_dropHandler(
+        data, target >= 0 && target < m_graph.topics.size() ? m_graph.topics[target].name : QString());
 }
 
 QVariant RosTopicModel::headerData(int section, Qt::Orientation orientation, int role) const

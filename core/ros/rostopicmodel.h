@@ -4,6 +4,7 @@
 #include "rosmasterapi.h"
 #include "rosmonitor.h"
 
+#include <functional>
 #include <QAbstractTableModel>
 #include <QSet>
 
@@ -29,12 +30,15 @@ public:
         ColumnCount
     };
     enum Role { TopicRole = Qt::UserRole + 1, TypeRole, SortRole, MonitoredRole };
+    /// Handles MQTT topics dropped on a ROS topic (its name) or beside the topics (empty).
+    using DropHandler = std::function<bool(const QMimeData* data, const QString& targetTopic)>;
 
     explicit RosTopicModel(QObject* parent = nullptr);
 
     void setGraph(const RosGraph& graph);
     void setMonitorStats(const QHash<QString, RosMonitorStats>& stats, qint64 nowNs);
     void setMonitored(const QString& topic, bool on);
+    void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
     const RosGraph& graph() const { return m_graph; }
     const RosMonitorStats* stats(const QString& topic) const;
     int rowOf(const QString& topic) const;
@@ -45,6 +49,17 @@ public:
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QStringList mimeTypes() const override;
+    QMimeData* mimeData(const QModelIndexList& indexes) const override;
+    Qt::DropActions supportedDragActions() const override { return Qt::CopyAction | Qt::LinkAction; }
+    Qt::DropActions supportedDropActions() const override
+    {
+        return Qt::CopyAction | Qt::LinkAction | Qt::MoveAction;
+    }
+    bool canDropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                         const QModelIndex& parent) const override;
+    bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                      const QModelIndex& parent) override;
 
 signals:
     void monitorRequested(const QString& topic, bool on);
@@ -54,4 +69,5 @@ private:
     QSet<QString> m_monitored;
     QHash<QString, RosMonitorStats> m_stats;
     qint64 m_nowNs = 0;
+    DropHandler m_dropHandler;
 };

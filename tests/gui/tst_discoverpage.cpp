@@ -18,8 +18,8 @@
 #include <QProcess>
 #include <QSortFilterProxyModel>
 #include <QStandardPaths>
-#include <QTabWidget>
 #include <QTableView>
+#include <QTabWidget>
 #include <QTest>
 #include <QTimer>
 #include <QTreeView>
@@ -27,7 +27,8 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-QModelIndex findTopic(QAbstractItemModel* model, const QString& topic, int role, const QModelIndex& parent = {})
+QModelIndex findTopic(QAbstractItemModel* model, const QString& topic, int role,
+                      const QModelIndex& parent = {})
 {
     for (int r = 0; r < model->rowCount(parent); ++r) {
         const QModelIndex i = model->index(r, 0, parent);
@@ -67,7 +68,10 @@ private:
     TestServers m_servers;
     std::unique_ptr<QProcess> m_pub;
 
-    QStringList pubArgs() const { return {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(m_servers.mosquittoPort())}; }
+    QStringList pubArgs() const
+    {
+        return {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(m_servers.mosquittoPort())};
+    }
 
 private slots:
     void initTestCase()
@@ -80,14 +84,21 @@ private slots:
             qputenv(qPrintable(key), env.value(key).toLocal8Bit());
         m_pub = std::make_unique<QProcess>();
         m_pub->setProcessEnvironment(env);
-        m_pub->start(u"rostopic"_s, {u"pub"_s, u"-r"_s, u"10"_s, u"/vehicle/pose"_s, u"geometry_msgs/PoseStamped"_s,
-                                     u"{header: {frame_id: base_link}, pose: {position: {x: 4.25}}}"_s});
-        run(u"mosquitto_pub"_s, pubArgs() + QStringList{u"-t"_s, u"mqtt_client/ros_msg_type/vehicle/pose"_s, u"-r"_s, u"-f"_s,
-                                                        Fixtures::path(u"mqtt_client/wire/pose.type.bin"_s)});
-        run(u"mosquitto_pub"_s, pubArgs() + QStringList{u"-t"_s, u"vehicle/pose"_s, u"-r"_s, u"-f"_s,
-                                                        Fixtures::path(u"mqtt_client/wire/pose.payload.bin"_s)});
-        run(u"mosquitto_pub"_s, pubArgs() + QStringList{u"-t"_s, u"fleet/car1/status"_s, u"-r"_s, u"-m"_s,
-                                                        u"{\"speed\": 12.5, \"gear\": \"D\"}"_s});
+        m_pub->start(u"rostopic"_s,
+                     {u"pub"_s, u"-r"_s, u"10"_s, u"/vehicle/pose"_s, u"geometry_msgs/PoseStamped"_s,
+                      u"{header: {frame_id: base_link}, pose: {position: {x: 4.25}}}"_s});
+        run(u"mosquitto_pub"_s,
+            pubArgs()
+                + QStringList {u"-t"_s, u"mqtt_client/ros_msg_type/vehicle/pose"_s, u"-r"_s, u"-f"_s,
+                               Fixtures::path(u"mqtt_client/wire/pose.type.bin"_s)});
+        run(u"mosquitto_pub"_s,
+            pubArgs()
+                + QStringList {u"-t"_s, u"vehicle/pose"_s, u"-r"_s, u"-f"_s,
+                               Fixtures::path(u"mqtt_client/wire/pose.payload.bin"_s)});
+        run(u"mosquitto_pub"_s,
+            pubArgs()
+                + QStringList {u"-t"_s, u"fleet/car1/status"_s, u"-r"_s, u"-m"_s,
+                               u"{\"speed\": 12.5, \"gear\": \"D\"}"_s});
     }
 
     void cleanupTestCase()
@@ -104,41 +115,55 @@ private slots:
         page->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QAbstractItemModelTester treeTester(page->mqttView()->model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QAbstractItemModelTester rosTester(page->rosView()->model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QAbstractItemModelTester treeTester(page->mqttView()->model(),
+                                            QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QAbstractItemModelTester rosTester(page->rosView()->model(),
+                                           QAbstractItemModelTester::FailureReportingMode::QtTest);
 
         // Both sides fill up.
-        QTRY_VERIFY_WITH_TIMEOUT(findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole).isValid(), 15000);
-        QTRY_VERIFY_WITH_TIMEOUT(findTopic(page->rosView()->model(), u"/vehicle/pose"_s, RosTopicModel::TopicRole).isValid(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole).isValid(),
+            15000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            findTopic(page->rosView()->model(), u"/vehicle/pose"_s, RosTopicModel::TopicRole).isValid(),
+            20000);
         QVERIFY(page->mqttStatus()->text().contains(u"connected"_s));
         QVERIFY(page->rosStatus()->text().contains(u"reachable"_s));
 
         // The MQTT topic that mqtt_client announced decodes into fields.
-        const QModelIndex pose = findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole);
+        const QModelIndex pose
+            = findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole);
         page->mqttView()->setCurrentIndex(pose);
         QTRY_VERIFY(page->detail()->title()->text().contains(u"geometry_msgs/PoseStamped"_s));
         const QStringList fields = fieldNames(page->detail()->fieldsView()->model());
         QVERIFY2(fields.contains(u"pose.position.x"_s), qPrintable(fields.join(u' ')));
 
         // JSON shows as fields too.
-        page->mqttView()->setCurrentIndex(findTopic(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole));
+        page->mqttView()->setCurrentIndex(
+            findTopic(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole));
         QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model()).contains(u"speed"_s));
         QVERIFY(page->detail()->payloadView()->toPlainText().contains(u"\"gear\": \"D\""_s));
 
         // Filtering by name keeps the path to a match.
         QTest::keyClicks(page->mqttFilter(), u"car1"_s);
-        QTRY_VERIFY(!findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole).isValid());
-        QVERIFY(findTopic(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole).isValid());
+        QTRY_VERIFY(
+            !findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole).isValid());
+        QVERIFY(findTopic(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole)
+                    .isValid());
         page->mqttFilter()->clear();
 
         // Monitoring a ROS topic subscribes to it; its last message decodes.
         QAbstractItemModel* ros = page->rosView()->model();
         const QModelIndex rosPose = findTopic(ros, u"/vehicle/pose"_s, RosTopicModel::TopicRole);
-        QVERIFY(ros->setData(rosPose.siblingAtColumn(RosTopicModel::MonitorColumn), Qt::Checked, Qt::CheckStateRole));
+        QVERIFY(ros->setData(rosPose.siblingAtColumn(RosTopicModel::MonitorColumn), Qt::Checked,
+                             Qt::CheckStateRole));
         page->rosView()->setCurrentIndex(rosPose);
-        QTRY_VERIFY_WITH_TIMEOUT(fieldNames(page->detail()->fieldsView()->model()).contains(u"pose.position.x"_s), 30000);
-        QTRY_VERIFY_WITH_TIMEOUT(!rosPose.siblingAtColumn(RosTopicModel::RateColumn).data().toString().isEmpty(), 10000);
-        QVERIFY(page->detail()->title()->text().contains(u"base_link"_s) == false); // fields, not the title, hold values
+        QTRY_VERIFY_WITH_TIMEOUT(
+            fieldNames(page->detail()->fieldsView()->model()).contains(u"pose.position.x"_s), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !rosPose.siblingAtColumn(RosTopicModel::RateColumn).data().toString().isEmpty(), 10000);
+        QVERIFY(page->detail()->title()->text().contains(u"base_link"_s)
+                == false); // fields, not the title, hold values
 
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
             // For the docs: a few live topics beside the retained ones.
@@ -150,15 +175,19 @@ private slots:
             connect(&live, &QTimer::timeout, [&] {
                 ++n;
                 for (int car = 1; car <= 4; ++car) {
-                    fleet.publish(u"fleet/car%1/speed"_s.arg(car), QByteArray::number(10 + car + (n % 7) * 0.5));
+                    fleet.publish(u"fleet/car%1/speed"_s.arg(car),
+                                  QByteArray::number(10 + car + (n % 7) * 0.5));
                     if (n % 5 == 0)
                         fleet.publish(u"fleet/car%1/status"_s.arg(car),
-                                      u"{\"speed\": %1, \"gear\": \"D\", \"battery\": %2}"_s.arg(10 + car).arg(80 - n % 20).toUtf8());
+                                      u"{\"speed\": %1, \"gear\": \"D\", \"battery\": %2}"_s.arg(10 + car)
+                                          .arg(80 - n % 20)
+                                          .toUtf8());
                 }
             });
             live.start(100);
             QTest::qWait(3500);
-            page->mqttView()->setCurrentIndex(findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole));
+            page->mqttView()->setCurrentIndex(
+                findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole));
             QTest::qWait(600);
             w.grab().save(dir + u"/discover.png"_s);
         }
@@ -179,9 +208,12 @@ private slots:
         page->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
         w.show();
         QTRY_VERIFY_WITH_TIMEOUT(page->mqttStatus()->text().contains(u"connected"_s), 10000);
-        run(u"mosquitto_pub"_s, pubArgs() + QStringList{u"-t"_s, u"lidar/raw"_s, u"-f"_s, file});
-        QTRY_VERIFY_WITH_TIMEOUT(findTopic(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole).isValid(), 10000);
-        page->mqttView()->setCurrentIndex(findTopic(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole));
+        run(u"mosquitto_pub"_s, pubArgs() + QStringList {u"-t"_s, u"lidar/raw"_s, u"-f"_s, file});
+        QTRY_VERIFY_WITH_TIMEOUT(
+            findTopic(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole).isValid(),
+            10000);
+        page->mqttView()->setCurrentIndex(
+            findTopic(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole));
         QTRY_VERIFY(page->detail()->payloadNote()->text().contains(u"showing the first"_s));
         // Hex, because the bytes are no text; the stored payload is whole.
         QVERIFY(page->detail()->payloadView()->toPlainText().startsWith(u"00000000  00 83 06 89"_s));

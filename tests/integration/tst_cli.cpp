@@ -7,7 +7,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -124,14 +123,16 @@ private slots:
         QVERIFY(servers.startRosMaster());
         QProcess pub;
         pub.setProcessEnvironment(servers.rosEnvironment());
-        pub.start(u"rostopic"_s, {u"pub"_s, u"-r"_s, u"5"_s, u"/odom_x"_s, u"std_msgs/Float64"_s, u"data: 1.5"_s});
+        pub.start(u"rostopic"_s,
+                  {u"pub"_s, u"-r"_s, u"5"_s, u"/odom_x"_s, u"std_msgs/Float64"_s, u"data: 1.5"_s});
         QProcess retained;
-        retained.start(u"mosquitto_pub"_s, {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()),
-                                            u"-t"_s, u"plant/state"_s, u"-r"_s, u"-m"_s, u"on"_s});
+        retained.start(u"mosquitto_pub"_s,
+                       {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()), u"-t"_s,
+                        u"plant/state"_s, u"-r"_s, u"-m"_s, u"on"_s});
         retained.waitForFinished(10000);
         // Wait until the master knows the publisher.
-        QTRY_VERIFY_WITH_TIMEOUT(bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
-                                              servers.brokerUrl(), u"--seconds"_s, u"0.5"_s})
+        QTRY_VERIFY_WITH_TIMEOUT(bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(),
+                                              u"--broker"_s, servers.brokerUrl(), u"--seconds"_s, u"0.5"_s})
                                      .out.contains(u"/odom_x"_s),
                                  30000);
         const Run r = bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
@@ -163,12 +164,19 @@ private slots:
 
     void discoverFailsWhenNothingAnswers()
     {
-        const Run r = bridgescope({u"discover"_s, u"--ros-master"_s, u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort()),
-                                   u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()), u"--seconds"_s,
+        const Run r = bridgescope({u"discover"_s, u"--ros-master"_s,
+                                   u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort()), u"--broker"_s,
+                                   u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()), u"--seconds"_s,
                                    u"1"_s, u"--json"_s});
         QCOMPARE(r.exit, 1);
         QVERIFY(r.err.contains(u"Neither the ROS master"_s));
-        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"ros"_s).toObject().value(u"reachable"_s).toBool(), false);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8())
+                     .object()
+                     .value(u"ros"_s)
+                     .toObject()
+                     .value(u"reachable"_s)
+                     .toBool(),
+                 false);
     }
 
     void everyCommandHasHelp_data()

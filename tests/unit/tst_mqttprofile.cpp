@@ -121,10 +121,14 @@ private slots:
         QVERIFY(call.contains("<i4>3</i4>"));
         QString error;
         const auto v = RosMasterApi::decodeResponse(
-            "<?xml version='1.0'?><methodResponse><params><param><value><array><data><value><int>1</int></value>"
-            "<value><string>ok</string></value><value><array><data><value>/x</value><value><i4>-2</i4></value>"
-            "<value><boolean>1</boolean></value><value><struct><member><name>k</name><value><double>1.5</double>"
-            "</value></member></struct></value></data></array></value></data></array></value></param></params>"
+            "<?xml "
+            "version='1.0'?><methodResponse><params><param><value><array><data><value><int>1</int></value>"
+            "<value><string>ok</string></value><value><array><data><value>/x</value><value><i4>-2</i4></"
+            "value>"
+            "<value><boolean>1</boolean></value><value><struct><member><name>k</name><value><double>1.5</"
+            "double>"
+            "</value></member></struct></value></data></array></value></data></array></value></param></"
+            "params>"
             "</methodResponse>",
             &error);
         QVERIFY2(v, qPrintable(error));
@@ -140,11 +144,13 @@ private slots:
     void xmlRpcFaultsAndGarbageAreErrors_data()
     {
         QTest::addColumn<QByteArray>("body");
-        QTest::newRow("fault") << QByteArray("<methodResponse><fault><value><struct><member><name>faultCode</name><value>"
-                                             "<int>1</int></value></member><member><name>faultString</name><value>"
-                                             "<string>boom</string></value></member></struct></value></fault></methodResponse>");
+        QTest::newRow("fault") << QByteArray(
+            "<methodResponse><fault><value><struct><member><name>faultCode</name><value>"
+            "<int>1</int></value></member><member><name>faultString</name><value>"
+            "<string>boom</string></value></member></struct></value></fault></methodResponse>");
         QTest::newRow("garbage") << QByteArray("<html>not xml-rpc");
-        QTest::newRow("bad int") << QByteArray("<methodResponse><params><param><value><int>x</int></value></param></params></methodResponse>");
+        QTest::newRow("bad int") << QByteArray(
+            "<methodResponse><params><param><value><int>x</int></value></param></params></methodResponse>");
         QTest::newRow("cut") << QByteArray("<methodResponse><params><param><value><array><data><value>");
     }
     void xmlRpcFaultsAndGarbageAreErrors()

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "config/bridgeconfig.h"
+
+#include <QCoreApplication>
+#include <QHash>
+
+struct RosGraph;
+struct RosMonitorStats;
+class MqttTopicTree;
+
+/// Whether a mapping carries data, from what discovery sees on both sides.
+struct MappingHealth
+{
+    enum State {
+        Unknown, ///< a side cannot be seen (master unreachable, broker not connected)
+        Healthy, ///< traffic on the source and on the destination
+        Idle, ///< nothing is sent on the source
+        Missing, ///< the source topic does not exist on its side
+        NoBridge, ///< the source publishes, the destination stays silent
+        TypeMismatch, ///< the broker announces another type than the ROS graph has
+    };
+    State state = Unknown;
+    QString summary; ///< a few words for the table
+    QString detail; ///< what was seen and what to do
+    double latencyMs = -1; ///< stamped mappings: last one-way latency seen on the broker
+};
+
+/// Evaluates every mapping of a config against the ROS graph, the monitored ROS topics and the
+/// broker's topic tree.
+class MappingHealthEvaluator
+{
+    Q_DECLARE_TR_FUNCTIONS(MappingHealth)
+public:
+    struct Inputs
+    {
+        const RosGraph* graph = nullptr;
+        bool rosReachable = false;
+        const QHash<QString, RosMonitorStats>* monitored = nullptr;
+        const MqttTopicTree* mqtt = nullptr;
+        bool mqttConnected = false;
+        qint64 nowNs = 0;
+        qint64 activeWindowNs = 5'000'000'000LL; ///< a topic counts as active for this long after a message
+    };
+    static QHash<quint64, MappingHealth> evaluate(const BridgeConfig& config, const Inputs& in);
+    /// "pkg/msg/Type" and "pkg/Type" name the same type.
+    static bool sameType(const QString& a, const QString& b);
+};

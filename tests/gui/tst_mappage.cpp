@@ -1,0 +1,305 @@
+// SPDX-License-Identifier: MIT
+// The Map page driven through its real views and models: drops of dragged topics create and
+// retarget mappings, undo takes them back, the saved file validates and holds what was made, and
+// health tells a publisher without a bridge from traffic on both sides (real rosmaster, mosquitto).
+#include "common/livesession.h"
+#include "common/mappinghealth.h"
+#include "config/configdocument.h"
+#include "config/configreader.h"
+#include "config/mappingmodel.h"
+#include "configeditor.h"
+#include "configfilecontroller.h"
+#include "discoverpage.h"
+#include "fixtures.h"
+#include "mainwindow.h"
+#include "mappage.h"
+#include "mqtt/mqtttopictree.h"
+#include "ros/rostopicmodel.h"
+#include "testservers.h"
+
+#include <QAbstractItemModelTester>
+#include <QAction>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTreeView>
+#include <QUndoStack>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QModelIndex find(QAbstractItemModel* model, const QString& name, int role, const QModelIndex& parent = {})
+{
+    for (int r = 0; r < model->rowCount(parent); ++r) {
+        const QModelIndex i = model->index(r, 0, parent);
+        if (i.data(role).toString() == name)
+            return i;
+        const QModelIndex deeper = find(model, name, role, i);
+        if (deeper.isValid())
+            return deeper;
+    }
+    return {};
+}
+
+// A drag from `from` (its model makes the MIME data, as in a real drag) dropped at `pos` of `to`.
+void dragAndDrop(QAbstractItemView* from, const QModelIndexList& dragged, QAbstractItemView* to,
+                 const QPoint& pos)
+{
+    std::unique_ptr<QMimeData> data(from->model()->mimeData(dragged));
+    QVERIFY(data);
+    QDragEnterEvent enter(pos, Qt::CopyAction | Qt::LinkAction, data.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(to->viewport(), &enter);
+    QDragMoveEvent move(pos, Qt::CopyAction | Qt::LinkAction, data.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(to->viewport(), &move);
+    QVERIFY2(move.isAccepted(), "the view refused the drag");
+    QDropEvent drop(QPointF(pos), Qt::CopyAction | Qt::LinkAction, data.get(), Qt::LeftButton,
+                    Qt::NoModifier);
+    QCoreApplication::sendEvent(to->viewport(), &drop);
+}
+
+QPoint centre(QAbstractItemView* view, const QModelIndex& index)
+{
+    return view->visualRect(index).center();
+}
+
+QPoint below(QAbstractItemView* view)
+{
+    return QPoint(view->viewport()->width() / 2, view->viewport()->height() - 3);
+}
+
+QStringList mappings(const ConfigDocument& doc)
+{
+    QStringList out;
+    for (const Mapping& m : doc.config().mappings)
+        out << u"%1 %2 %3%4"_s.arg(m.direction == Direction::Ros2Mqtt ? u"out"_s : u"in"_s, m.rosTopic(),
+                                   m.mqttTopic(), m.isSet(u"primitive"_s) ? u" primitive"_s : QString());
+    return out;
+}
+
+int healthOf(MapPage* page, const QString& ros, const QString& mqtt)
+{
+    page->updateHealth();
+    MappingModel* model = page->editor()->model();
+    for (int r = 0; r < model->rowCount(); ++r) {
+        const QModelIndex i = model->index(r, 0);
+        if (model->index(r, MappingModel::RosTopicColumn).data().toString() == ros
+            && model->index(r, MappingModel::MqttTopicColumn).data().toString() == mqtt)
+            return i.data(MappingModel::HealthStateRole).toInt();
+    }
+    return -2;
+}
+} // namespace
+
+class TestMapPage : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    std::vector<std::unique_ptr<QProcess>> m_nodes;
+
+    void rostopic(const QStringList& args)
+    {
+        auto p = std::make_unique<QProcess>();
+        p->setProcessEnvironment(m_servers.rosEnvironment());
+        p->start(u"rostopic"_s, args);
+        m_nodes.push_back(std::move(p));
+    }
+    void mqttPub(const QStringList& args)
+    {
+        QProcess p;
+        p.start(u"mosquitto_pub"_s,
+                QStringList {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(m_servers.mosquittoPort())}
+                    + args);
+        p.waitForFinished(10000);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(m_servers.startMosquitto());
+        QVERIFY(m_servers.startRosMaster());
+        const QProcessEnvironment env = m_servers.rosEnvironment();
+        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
+            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
+        rostopic({u"pub"_s, u"-r"_s, u"5"_s, u"/vehicle/speed"_s, u"std_msgs/Float64"_s, u"data: 12.5"_s});
+        rostopic({u"pub"_s, u"-r"_s, u"2"_s, u"/lidar/points"_s, u"std_msgs/String"_s, u"data: scan"_s});
+        mqttPub({u"-t"_s, u"plant/temperature"_s, u"-r"_s, u"-m"_s, u"21.5"_s});
+        mqttPub({u"-t"_s, u"mqtt_client/ros_msg_type/cloud/objects"_s, u"-r"_s, u"-f"_s,
+                 Fixtures::path(u"mqtt_client/wire/pose.type.bin"_s)});
+        mqttPub({u"-t"_s, u"cloud/objects"_s, u"-r"_s, u"-f"_s,
+                 Fixtures::path(u"mqtt_client/wire/pose.payload.bin"_s)});
+    }
+
+    void cleanupTestCase()
+    {
+        for (auto& p : m_nodes) {
+            p->terminate();
+            p->waitForFinished(10000);
+        }
+    }
+
+    void dragDropUndoSaveReload()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        MapPage* page = w.mapPage();
+        w.pages()->setCurrentWidget(page);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QAbstractItemModelTester mappingTester(page->editor()->table()->model(),
+                                               QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QAbstractItemModelTester rosTester(page->rosView()->model(),
+                                           QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QAbstractItemModelTester mqttTester(page->mqttView()->model(),
+                                            QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            find(page->rosView()->model(), u"/vehicle/speed"_s, RosTopicModel::TopicRole).isValid()
+                && find(page->rosView()->model(), u"/lidar/points"_s, RosTopicModel::TopicRole).isValid(),
+            30000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            find(page->mqttView()->model(), u"cloud/objects"_s, MqttTopicTree::FullTopicRole).isValid()
+                && find(page->mqttView()->model(), u"plant/temperature"_s, MqttTopicTree::FullTopicRole)
+                       .isValid(),
+            10000);
+        page->mqttView()->expandAll();
+        ConfigDocument* doc = w.document();
+        QUndoStack* undo = w.undoStack();
+
+        QAbstractItemView* ros = page->rosView();
+        QAbstractItemView* mqtt = page->mqttView();
+        QAbstractItemView* table = page->editor()->table();
+        auto rosRow = [&](const QString& t) { return find(ros->model(), t, RosTopicModel::TopicRole); };
+        auto mqttNode
+            = [&](const QString& t) { return find(mqtt->model(), t, MqttTopicTree::FullTopicRole); };
+
+        // 1. A ROS topic onto an MQTT level: under that level.
+        dragAndDrop(ros, {rosRow(u"/vehicle/speed"_s)}, mqtt, centre(mqtt, mqttNode(u"plant"_s)));
+        QCOMPARE(mappings(*doc), QStringList {u"out /vehicle/speed plant/vehicle/speed"_s});
+        // 2. Onto an existing MQTT topic that a device fills with plain text: exactly it, as a
+        //    primitive. mqtt_client bridges a ROS topic once, so the mapping moves there.
+        dragAndDrop(ros, {rosRow(u"/vehicle/speed"_s)}, mqtt, centre(mqtt, mqttNode(u"plant/temperature"_s)));
+        QCOMPARE(mappings(*doc), QStringList {u"out /vehicle/speed plant/temperature primitive"_s});
+        // 3. An MQTT topic onto the ROS topics (not onto one): a new ROS name.
+        dragAndDrop(mqtt, {mqttNode(u"cloud/objects"_s)}, ros, below(ros));
+        QCOMPARE(mappings(*doc).last(), u"in /cloud/objects cloud/objects"_s);
+        // 4. Several ROS topics onto the mapping table: under the prefix.
+        page->prefixEdit()->setText(u"vehicle"_s);
+        dragAndDrop(ros, {rosRow(u"/lidar/points"_s), rosRow(u"/vehicle/speed"_s)}, table, below(table));
+        QCOMPARE(mappings(*doc),
+                 (QStringList {u"out /vehicle/speed vehicle/vehicle/speed primitive"_s,
+                               u"in /cloud/objects cloud/objects"_s,
+                               u"out /lidar/points vehicle/lidar/points"_s}));
+        QCOMPARE(undo->count(), 4); // one undo step per drop
+        // 5. An MQTT topic onto a mapping: retargeted.
+        const QModelIndex first = table->model()->index(0, MappingModel::MqttTopicColumn);
+        dragAndDrop(mqtt, {mqttNode(u"cloud/objects"_s)}, table, centre(table, first));
+        QCOMPARE(mappings(*doc).first(), u"out /vehicle/speed cloud/objects primitive"_s);
+        // Undo the retarget and the last drop, redo one.
+        undo->undo();
+        QCOMPARE(mappings(*doc).first(), u"out /vehicle/speed vehicle/vehicle/speed primitive"_s);
+        undo->undo();
+        QCOMPARE(mappings(*doc),
+                 (QStringList {u"out /vehicle/speed plant/temperature primitive"_s,
+                               u"in /cloud/objects cloud/objects"_s}));
+        undo->redo();
+        QCOMPARE(doc->mappingCount(), 3);
+
+        // 6. The keyboard way: select a ROS topic, bridge it (here: moves its mapping).
+        ros->selectionModel()->select(rosRow(u"/lidar/points"_s),
+                                      QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        mqtt->selectionModel()->clearSelection();
+        page->prefixEdit()->setText(u"kbd"_s);
+        page->bridgeToMqttAction()->trigger();
+        QCOMPARE(mappings(*doc).last(), u"out /lidar/points kbd/lidar/points"_s);
+        ros->selectionModel()->select(rosRow(u"/lidar/points"_s),
+                                      QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        mqtt->selectionModel()->select(mqttNode(u"cloud/objects"_s),
+                                       QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        ros->selectionModel()->clearSelection();
+        page->bridgeToRosAction()->trigger(); // cloud/objects is bridged already: nothing new
+        QCOMPARE(doc->mappingCount(), 3);
+
+        // Save, check with the command line, reload: the mappings that were made.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"vehicle.yaml"_s);
+        QVERIFY(w.files()->saveTo(path, ConfigLayout::Ros1));
+        QProcess validate;
+        validate.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"config"_s, u"validate"_s, path});
+        QVERIFY(validate.waitForFinished(20000));
+        QVERIFY2(validate.exitCode() == 0, validate.readAllStandardOutput().constData());
+        QStringList made = mappings(*doc);
+        ConfigDocument reloaded;
+        QVERIFY(reloaded.load(path).ok);
+        QStringList back = mappings(reloaded);
+        made.sort(); // the file lists ros2mqtt before mqtt2ros
+        back.sort();
+        QCOMPARE(back, made);
+    }
+
+    void healthSeesBridgesAndTheirAbsence()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        MapPage* page = w.mapPage();
+        w.show();
+        QTRY_VERIFY_WITH_TIMEOUT(w.session()->rosTopics()->rowOf(u"/vehicle/speed"_s) >= 0, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.session()->mqtt()->state() == MqttConnection::State::Connected, 10000);
+        page->bridgeRosTopics({{u"/vehicle/speed"_s, u"std_msgs/Float64"_s}}, u"health"_s);
+        page->bridgeRosTopics({{u"/not/published"_s, u"std_msgs/Float64"_s}}, u"health"_s);
+        // A publisher with no bridge behind it is flagged.
+        QCOMPARE(healthOf(page, u"/vehicle/speed"_s, u"health/vehicle/speed"_s),
+                 int(MappingHealth::NoBridge));
+        QCOMPARE(healthOf(page, u"/not/published"_s, u"health/not/published"_s), int(MappingHealth::Missing));
+        // Traffic on both sides: healthy.
+        QTimer feeder;
+        connect(&feeder, &QTimer::timeout, this, [this] {
+            mqttPub({u"-t"_s, u"health/vehicle/speed"_s, u"-m"_s, u"12.5"_s});
+        });
+        feeder.start(200);
+        QTRY_COMPARE_WITH_TIMEOUT(healthOf(page, u"/vehicle/speed"_s, u"health/vehicle/speed"_s),
+                                  int(MappingHealth::Healthy), 15000);
+        feeder.stop();
+        const QModelIndex row = page->editor()->model()->indexOfMapping(w.document()->mapping(0).id,
+                                                                        MappingModel::HealthColumn);
+        QVERIFY(row.data().toString().contains(u"→"_s));
+
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty()) {
+            // For the docs: the paper's vehicle config on top of what is discovered. Test publishers
+            // stand in for the vehicle's nodes and for a cloud bridge: lidar packets on ROS and on
+            // MQTT (a bridge running), the object list on MQTT only (no bridge on this side yet).
+            rostopic({u"pub"_s, u"-r"_s, u"10"_s, u"/benchmarking_suite/packets"_s, u"std_msgs/String"_s,
+                      u"data: scan"_s});
+            QVERIFY(w.files()->openFile(
+                QStringLiteral(BRIDGESCOPE_SOURCE_DIR "/resources/examples/paper_vehicle.yaml")));
+            w.pages()->setCurrentWidget(page);
+            w.resize(1600, 950);
+            page->editor()->setInspectorWidth(380);
+            QTimer traffic;
+            int n = 0;
+            connect(&traffic, &QTimer::timeout, this, [&] {
+                ++n;
+                mqttPub({u"-t"_s, u"benchmarking_suite/packets"_s, u"-m"_s, QString::number(n)});
+                mqttPub({u"-t"_s, u"benchmarking_suite/object_list"_s, u"-m"_s, u"[]"_s});
+            });
+            traffic.start(100);
+            QTRY_VERIFY_WITH_TIMEOUT(w.session()->rosTopics()->rowOf(u"/benchmarking_suite/packets"_s) >= 0,
+                                     30000);
+            QTest::qWait(2500);
+            page->mqttView()->expandAll();
+            page->updateHealth();
+            w.grab().save(shots + u"/map.png"_s);
+            traffic.stop();
+        }
+    }
+};
+
+QTEST_MAIN(TestMapPage)
+#include "tst_mappage.moc"

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// Names and options proposed for new mappings, and health from synthetic discovery data.
+#include "common/mappinghealth.h"
+#include "config/configvalidator.h"
+#include "config/mappingfactory.h"
+#include "mqtt/mqttclientwire.h"
+#include "mqtt/mqtttopictree.h"
+#include "ros/rosmasterapi.h"
+#include "ros/rosmonitor.h"
+
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+class TestMappingFactory : public QObject
+{
+    Q_OBJECT
+private slots:
+    void mqttNames_data()
+    {
+        QTest::addColumn<QString>("ros");
+        QTest::addColumn<QString>("prefix");
+        QTest::addColumn<QString>("mqtt");
+        QTest::newRow("leading slash dropped") << u"/lidar/points"_s << QString() << u"lidar/points"_s;
+        QTest::newRow("under a prefix") << u"/lidar/points"_s << u"vehicle"_s << u"vehicle/lidar/points"_s;
+        QTest::newRow("prefix with slashes") << u"/a"_s << u"/fleet/car1/"_s << u"fleet/car1/a"_s;
+        QTest::newRow("private name") << u"~/status"_s << u"car"_s << u"car/status"_s;
+    }
+    void mqttNames()
+    {
+        QFETCH(QString, ros);
+        QFETCH(QString, prefix);
+        QFETCH(QString, mqtt);
+        QCOMPARE(MappingFactory::mqttTopicFor(ros, prefix), mqtt);
+    }
+
+    void rosNames_data()
+    {
+        QTest::addColumn<QString>("mqtt");
+        QTest::addColumn<QString>("ns");
+        QTest::addColumn<QString>("ros");
+        QTest::newRow("plain") << u"cloud/objects"_s << QString() << u"/cloud/objects"_s;
+        QTest::newRow("namespace") << u"objects"_s << u"/cloud"_s << u"/cloud/objects"_s;
+        QTest::newRow("invalid characters")
+            << u"plant/temp-sensor 1"_s << u"/"_s << u"/plant/temp_sensor_1"_s;
+        QTest::newRow("digit level") << u"fleet/2/speed"_s << QString() << u"/fleet/_2/speed"_s;
+        QTest::newRow("empty levels") << u"/a//b"_s << QString() << u"/a/b"_s;
+    }
+    void rosNames()
+    {
+        QFETCH(QString, mqtt);
+        QFETCH(QString, ns);
+        QFETCH(QString, ros);
+        const QString name = MappingFactory::rosTopicFor(mqtt, ns);
+        QCOMPARE(name, ros);
+        QVERIFY(ConfigValidator::isValidRosName(name, true));
+    }
+
+    void optionsFollowWhatDiscoveryKnows()
+    {
+        MappingFactory::MqttFacts plain {true, QString(), "21.5"};
+        MappingFactory::MqttFacts json {true, QString(), "{\"speed\": 3}"};
+        MappingFactory::MqttFacts announced {true, u"sensor_msgs/PointCloud2"_s, "\x01\x02"};
+        MappingFactory::MqttFacts unseen;
+
+        // A std_msgs primitive to a topic that non-ROS devices read: plain text.
+        Mapping m = MappingFactory::ros2mqtt(u"/speed"_s, u"std_msgs/Float64"_s, u"plant/speed"_s, plain,
+                                             ConfigLayout::Ros1);
+        QCOMPARE(m.value(u"primitive"_s), u"true"_s);
+        QVERIFY(!m.isSet(u"ros_type"_s));
+        m = MappingFactory::ros2mqtt(u"/speed"_s, u"std_msgs/Float64"_s, u"plant/speed"_s, plain,
+                                     ConfigLayout::Ros2);
+        QCOMPARE(m.value(u"ros_type"_s), u"std_msgs/msg/Float64"_s);
+        // Not primitive: unknown destination, or a message type.
+        QVERIFY(
+            !MappingFactory::ros2mqtt(u"/speed"_s, u"std_msgs/Float64"_s, u"x"_s, unseen, ConfigLayout::Ros1)
+                 .isSet(u"primitive"_s));
+        QVERIFY(!MappingFactory::ros2mqtt(u"/p"_s, u"geometry_msgs/Pose"_s, u"x"_s, plain, ConfigLayout::Ros1)
+                     .isSet(u"primitive"_s));
+
+        // MQTT to ROS: primitives and JSON from devices; announced types need nothing.
+        m = MappingFactory::mqtt2ros(u"plant/temp"_s, plain, u"/temp"_s, ConfigLayout::Ros2);
+        QCOMPARE(m.value(u"primitive"_s), u"true"_s);
+        QCOMPARE(m.value(u"ros_type"_s), u"std_msgs/msg/Float64"_s);
+        m = MappingFactory::mqtt2ros(u"car/status"_s, json, u"/status"_s, ConfigLayout::Ros2);
+        QCOMPARE(m.value(u"json"_s), u"true"_s);
+        m = MappingFactory::mqtt2ros(u"points"_s, announced, u"/points"_s, ConfigLayout::Ros1);
+        QVERIFY(m.block.values.paths() == (QStringList {u"mqtt_topic"_s, u"ros_topic"_s}));
+        QCOMPARE(MappingFactory::primitiveTypeOf("true"), u"std_msgs/Bool"_s);
+        QCOMPARE(MappingFactory::primitiveTypeOf("42"), u"std_msgs/Int64"_s);
+        QCOMPARE(MappingFactory::primitiveTypeOf("hello world"), u"std_msgs/String"_s);
+        QCOMPARE(MappingFactory::primitiveTypeOf(QByteArray("\x00\x01", 2)), QString());
+    }
+
+    void healthFromDiscovery()
+    {
+        BridgeConfig cfg;
+        const Mapping flowing = Mapping::create(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        const Mapping noBridge = Mapping::create(Direction::Ros2Mqtt, u"/b"_s, u"b"_s);
+        const Mapping missing = Mapping::create(Direction::Ros2Mqtt, u"/nothere"_s, u"n"_s);
+        const Mapping idle = Mapping::create(Direction::Ros2Mqtt, u"/subonly"_s, u"s"_s);
+        const Mapping inFlowing = Mapping::create(Direction::Mqtt2Ros, u"/c"_s, u"c"_s);
+        const Mapping inNoBridge = Mapping::create(Direction::Mqtt2Ros, u"/d"_s, u"d"_s);
+        const Mapping mismatch = Mapping::create(Direction::Ros2Mqtt, u"/e"_s, u"e"_s);
+        cfg.mappings = {flowing, noBridge, missing, idle, inFlowing, inNoBridge, mismatch};
+
+        RosGraph graph;
+        graph.topics = {{u"/a"_s, u"std_msgs/String"_s, {u"/talker"_s}, {u"/mqtt_client"_s}},
+                        {u"/b"_s, u"std_msgs/String"_s, {u"/talker"_s}, {}},
+                        {u"/c"_s, u"std_msgs/String"_s, {u"/mqtt_client"_s}, {}},
+                        {u"/e"_s, u"std_msgs/String"_s, {u"/talker"_s}, {}},
+                        {u"/subonly"_s, u"std_msgs/String"_s, {}, {u"/listener"_s}}};
+        MqttTopicTree tree;
+        const qint64 now = 100'000'000'000LL;
+        std::vector<MqttMessage> batch;
+        for (const QString& t : {u"a"_s, u"c"_s, u"d"_s, u"e"_s})
+            batch.push_back({t, "x", now - 1'000'000'000LL, 0, false});
+        RosMsgTypeInfo pose {u"d3812c3cbc69362b77dc0b19b345f8f5"_s, u"geometry_msgs/PoseStamped"_s,
+                             u"Header header"_s, false};
+        batch.push_back({u"mqtt_client/ros_msg_type/e"_s, MqttClientWire::encodeType(pose), now, 0, true});
+        tree.apply(std::move(batch));
+        MappingHealthEvaluator::Inputs in;
+        in.graph = &graph;
+        in.rosReachable = true;
+        in.mqtt = &tree;
+        in.mqttConnected = true;
+        in.nowNs = now;
+        const auto h = MappingHealthEvaluator::evaluate(cfg, in);
+        QCOMPARE(h[flowing.id].state, MappingHealth::Healthy);
+        QCOMPARE(h[noBridge.id].state, MappingHealth::NoBridge);
+        QVERIFY(h[noBridge.id].summary.contains(u"no bridge running"_s));
+        QVERIFY(h[noBridge.id].detail.contains(u"nothing arrived"_s));
+        QCOMPARE(h[missing.id].state, MappingHealth::Missing);
+        QCOMPARE(h[idle.id].state, MappingHealth::Idle);
+        QCOMPARE(h[inFlowing.id].state, MappingHealth::Healthy);
+        QCOMPARE(h[inNoBridge.id].state, MappingHealth::NoBridge);
+        QCOMPARE(h[mismatch.id].state, MappingHealth::TypeMismatch);
+        QVERIFY(h[mismatch.id].detail.contains(u"geometry_msgs/PoseStamped"_s));
+
+        // A message older than the window is silence.
+        in.nowNs = now + 10'000'000'000LL;
+        QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[flowing.id].state, MappingHealth::NoBridge);
+        QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[inFlowing.id].state, MappingHealth::Idle);
+        // Without the broker, nothing is claimed.
+        in.mqttConnected = false;
+        QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[flowing.id].state, MappingHealth::Unknown);
+        QVERIFY(MappingHealthEvaluator::sameType(u"std_msgs/msg/Bool"_s, u"std_msgs/Bool"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMappingFactory)
+#include "tst_mappingfactory.moc"

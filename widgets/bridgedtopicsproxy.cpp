@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "bridgedtopicsproxy.h"
+
+#include <QFont>
+
+BridgedTopicsProxy::BridgedTopicsProxy(int topicRole, QObject* parent)
+    : QIdentityProxyModel(parent)
+    , m_topicRole(topicRole)
+{ }
+
+void BridgedTopicsProxy::setBridged(const QHash<QString, QString>& topicToMapping)
+{
+    if (topicToMapping == m_bridged)
+        return;
+    m_bridged = topicToMapping;
+    // Fonts of any row may change; views repaint what they show.
+    if (rowCount() > 0)
+        emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1),
+                         {Qt::FontRole, Qt::ToolTipRole});
+}
+
+QVariant BridgedTopicsProxy::data(const QModelIndex& index, int role) const
+{
+    if (role == Qt::FontRole || (role == Qt::ToolTipRole && index.column() <= 1)) {
+        const auto it = m_bridged.constFind(QIdentityProxyModel::data(index, m_topicRole).toString());
+        if (it != m_bridged.cend()) {
+            if (role == Qt::ToolTipRole)
+                return tr("Bridged: %1").arg(*it);
+            QFont f;
+            f.setBold(true);
+            return f;
+        }
+    }
+    return QIdentityProxyModel::data(index, role);
+}
