@@ -34,24 +34,30 @@ void installTranslations(QCoreApplication& app)
 
 QString bridgescopeUsage()
 {
-    return Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]\n"
-                   "       bridgescope <command> [options]\n"
-                   "\n"
-                   "Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.\n"
-                   "\n"
-                   "Options:\n"
-                   "  --broker URL       MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)\n"
-                   "  --ros-master URI   ROS master (default $ROS_MASTER_URI)\n"
-                   "  --screenshot PNG   render the main window to PNG and exit\n"
-                   "  --after SECONDS    wait this long before the screenshot (default 1)\n"
-                   "  -h, --help         show this help\n"
-                   "  -v, --version      show the version\n"
-                   "\n"
-                   "Commands:\n"
-                   "  config validate|convert|peer   check, convert and pair bridge configs\n"
-                   "  discover [--json]              list ROS and MQTT topics\n"
-                   "\n"
-                   "Run 'bridgescope <command> --help' for the options of a command.");
+    // One line per entry: a new option or command adds one string to translate, not a page.
+    const QList<std::pair<QString, QString>> options = {
+        {u"--broker URL"_s, Gui::tr("MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)")},
+        {u"--ros-master URI"_s, Gui::tr("ROS master (default $ROS_MASTER_URI)")},
+        {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
+        {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
+        {u"-h, --help"_s, Gui::tr("show this help")},
+        {u"-v, --version"_s, Gui::tr("show the version")},
+    };
+    const QList<std::pair<QString, QString>> commands = {
+        {u"config validate|convert|peer"_s, Gui::tr("check, convert and pair bridge configs")},
+        {u"discover [--json]"_s, Gui::tr("list ROS and MQTT topics")},
+        {u"report INPUT... [--pipeline P]"_s, Gui::tr("latency statistics of measurement files")},
+    };
+    QString text = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]")
+        + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s
+        + Gui::tr("Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.")
+        + u"\n\n"_s + Gui::tr("Options:") + u'\n';
+    for (const auto& [name, what] : options)
+        text += u"  "_s + name.leftJustified(20) + u' ' + what + u'\n';
+    text += u'\n' + Gui::tr("Commands:") + u'\n';
+    for (const auto& [name, what] : commands)
+        text += u"  "_s + name.leftJustified(32) + u' ' + what + u'\n';
+    return text + u'\n' + Gui::tr("Run 'bridgescope <command> --help' for the options of a command.");
 }
 
 int runGui(int& argc, char** argv)

@@ -2,6 +2,7 @@
 #include "cli/clioutput.h"
 #include "cli/configcommand.h"
 #include "cli/discovercommand.h"
+#include "cli/reportcommand.h"
 #include "guimain.h"
 
 #include <QCoreApplication>
@@ -23,7 +24,7 @@ int main(int argc, char** argv)
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
-    static const QStringList commands = {u"config"_s, u"discover"_s};
+    static const QStringList commands = {u"config"_s, u"discover"_s, u"report"_s};
     if (commands.contains(first) || help || version) {
         // Commands need no display.
         QCoreApplication app(argc, argv);
@@ -39,6 +40,8 @@ int main(int argc, char** argv)
         }
         if (first == u"discover"_s)
             return runDiscoverCommand(args);
+        if (first == u"report"_s)
+            return runReportCommand(args);
         return runConfigCommand(args);
     }
     return runGui(argc, argv);

@@ -32,6 +32,17 @@
     </message>
 </context>
 <context>
+    <name>Cli</name>
+    <message>
+        <source>Show this help.</source>
+        <translation>Diese Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Run '%1 --help' for usage.</source>
+        <translation>'%1 --help' zeigt die Verwendung.</translation>
+    </message>
+</context>
+<context>
     <name>ConfigCommand</name>
     <message>
         <source>Usage: bridgescope config &lt;command&gt; [options]
@@ -50,14 +61,6 @@ Befehle:
   peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben
 
 'bridgescope config &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
-    </message>
-    <message>
-        <source>Show this help.</source>
-        <translation>Diese Hilfe anzeigen.</translation>
-    </message>
-    <message>
-        <source>Run '%1 --help' for usage.</source>
-        <translation>'%1 --help' zeigt die Verwendung.</translation>
     </message>
     <message>
         <source>%1: error: cannot read the file: %2</source>
@@ -984,10 +987,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Listet auf, was es beim ROS-Master und beim MQTT-Broker gibt, nachdem eine Weile zugehört wurde. Exit-Status: 0, wenn mindestens einer antwortete, 1, wenn keiner antwortete, 2 bei falschen Optionen.</translation>
     </message>
     <message>
-        <source>Show this help.</source>
-        <translation>Diese Hilfe anzeigen.</translation>
-    </message>
-    <message>
         <source>Broker URL (default tcp://localhost:1883).</source>
         <translation>Broker-URL (Vorgabe tcp://localhost:1883).</translation>
     </message>
@@ -1126,50 +1125,158 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Bildschirmfoto %1 lässt sich nicht schreiben</translation>
     </message>
     <message>
-        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]
-       bridgescope &lt;command&gt; [options]
-
-Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.
-
-Options:
-  --broker URL       MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)
-  --ros-master URI   ROS master (default $ROS_MASTER_URI)
-  --screenshot PNG   render the main window to PNG and exit
-  --after SECONDS    wait this long before the screenshot (default 1)
-  -h, --help         show this help
-  -v, --version      show the version
-
-Commands:
-  config validate|convert|peer   check, convert and pair bridge configs
-  discover [--json]              list ROS and MQTT topics
-
-Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
-        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml]
-        bridgescope &lt;Befehl&gt; [Optionen]
-
-ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.
-
-Optionen:
-  --broker URL       MQTT-Broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)
-  --ros-master URI   ROS-Master (Vorgabe $ROS_MASTER_URI)
-  --screenshot PNG   das Hauptfenster als PNG speichern und beenden
-  --after SEKUNDEN   so lange vor dem Bildschirmfoto warten (Vorgabe 1)
-  -h, --help         diese Hilfe anzeigen
-  -v, --version      die Version anzeigen
-
-Befehle:
-  config validate|convert|peer   Bridge-Konfigurationen prüfen, umwandeln und paaren
-  discover [--json]              ROS- und MQTT-Topics auflisten
-
-'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
-    </message>
-    <message>
         <source>MQTT broker to connect to (tcp://host:port, ssl://...).</source>
         <translation>MQTT-Broker, mit dem verbunden wird (tcp://host:port, ssl://...).</translation>
     </message>
     <message>
         <source>ROS master URI (default $ROS_MASTER_URI).</source>
         <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
+    </message>
+    <message>
+        <source>MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)</source>
+        <translation>MQTT-Broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)</translation>
+    </message>
+    <message>
+        <source>ROS master (default $ROS_MASTER_URI)</source>
+        <translation>ROS-Master (Vorgabe $ROS_MASTER_URI)</translation>
+    </message>
+    <message>
+        <source>render the main window to PNG and exit</source>
+        <translation>das Hauptfenster als PNG speichern und beenden</translation>
+    </message>
+    <message>
+        <source>wait this long before the screenshot (default 1)</source>
+        <translation>so lange vor dem Bildschirmfoto warten (Vorgabe 1)</translation>
+    </message>
+    <message>
+        <source>show this help</source>
+        <translation>diese Hilfe anzeigen</translation>
+    </message>
+    <message>
+        <source>show the version</source>
+        <translation>die Version anzeigen</translation>
+    </message>
+    <message>
+        <source>check, convert and pair bridge configs</source>
+        <translation>Bridge-Konfigurationen prüfen, umwandeln und paaren</translation>
+    </message>
+    <message>
+        <source>list ROS and MQTT topics</source>
+        <translation>ROS- und MQTT-Topics auflisten</translation>
+    </message>
+    <message>
+        <source>latency statistics of measurement files</source>
+        <translation>Latenzstatistik von Messdateien</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]</source>
+        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml]</translation>
+    </message>
+    <message>
+        <source>       bridgescope &lt;command&gt; [options]</source>
+        <translation>        bridgescope &lt;Befehl&gt; [Optionen]</translation>
+    </message>
+    <message>
+        <source>Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.</source>
+        <translation>ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.</translation>
+    </message>
+    <message>
+        <source>Options:</source>
+        <translation>Optionen:</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>Befehle:</translation>
+    </message>
+    <message>
+        <source>Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
+        <translation>'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+    </message>
+</context>
+<context>
+    <name>LatencyEngine</name>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>communication, round trip</source>
+        <translation>Kommunikation, hin und zurück</translation>
+    </message>
+    <message>
+        <source>communication, one way (half the round trip)</source>
+        <translation>Kommunikation, eine Richtung (halbe Umlaufzeit)</translation>
+    </message>
+    <message>
+        <source>clock offset (%1 ahead of %2)</source>
+        <translation>Uhrenversatz (%1 vor %2)</translation>
+    </message>
+</context>
+<context>
+    <name>LatencyStatsModel</name>
+    <message>
+        <source>Crosses from %1 to %2: the raw value includes the clock offset between the hosts.</source>
+        <translation>Geht von %1 zu %2: der Rohwert enthält den Uhrenversatz zwischen den Rechnern.</translation>
+    </message>
+    <message>
+        <source>Derived per sample: total minus every stage that stays on one host.</source>
+        <translation>Je Probe abgeleitet: gesamt minus jede Stufe, die auf einem Rechner bleibt.</translation>
+    </message>
+    <message>
+        <source>Half the round trip: the mean of both ways, as in the paper.</source>
+        <translation>Halbe Umlaufzeit: das Mittel beider Richtungen, wie im Paper.</translation>
+    </message>
+    <message>
+        <source>((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.</source>
+        <translation>((c_in − v_out) − (v_in − c_out)) / 2 je Probe, unter der Annahme, dass beide Richtungen gleich lang dauern.</translation>
+    </message>
+    <message>
+        <source>Measured by the bridge itself (single-stage series).</source>
+        <translation>Von der Bridge selbst gemessen (einstufige Reihe).</translation>
+    </message>
+    <message>
+        <source>Stage</source>
+        <translation>Stufe</translation>
+    </message>
+    <message>
+        <source>Mean [ms]</source>
+        <translation>Mittel [ms]</translation>
+    </message>
+    <message>
+        <source>Median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>Std</source>
+        <translation>Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min.</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>p90</source>
+        <translation>p90</translation>
+    </message>
+    <message>
+        <source>p95</source>
+        <translation>p95</translation>
+    </message>
+    <message>
+        <source>p99</source>
+        <translation>p99</translation>
+    </message>
+    <message>
+        <source>p99.9</source>
+        <translation>p99,9</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
     </message>
 </context>
 <context>
@@ -2127,6 +2234,57 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>Pipeline</name>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>a pipeline is a mapping with topics_in_order</source>
+        <translation>eine Pipeline ist eine Zuordnung mit topics_in_order</translation>
+    </message>
+    <message>
+        <source>topics_in_order is missing or not a list</source>
+        <translation>topics_in_order fehlt oder ist keine Liste</translation>
+    </message>
+    <message>
+        <source>%1: every entry of topics_in_order must be a topic name</source>
+        <translation>%1: jeder Eintrag von topics_in_order muss ein Topic-Name sein</translation>
+    </message>
+    <message>
+        <source>topics_in_order is empty</source>
+        <translation>topics_in_order ist leer</translation>
+    </message>
+    <message>
+        <source>%1: metrics_window must be a whole number of samples (0: whole run)</source>
+        <translation>%1: metrics_window muss eine ganze Zahl von Proben sein (0: ganzer Lauf)</translation>
+    </message>
+    <message>
+        <source>%1: hosts must map topics to host names</source>
+        <translation>%1: hosts muss Topics Rechnernamen zuordnen</translation>
+    </message>
+    <message>
+        <source>%1: the host of %2 must be a name</source>
+        <translation>%1: der Rechner von %2 muss ein Name sein</translation>
+    </message>
+    <message>
+        <source>%1: hosts names %2, which is not in topics_in_order</source>
+        <translation>%1: hosts nennt %2, das nicht in topics_in_order steht</translation>
+    </message>
+    <message>
+        <source>%1 (%2 → %3)</source>
+        <translation>%1 (%2 → %3)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+</context>
+<context>
     <name>ProblemModel</name>
     <message>
         <source>1 error</source>
@@ -2177,6 +2335,59 @@ Befehle:
     <message>
         <source>seconds ago</source>
         <translation>vor Sekunden</translation>
+    </message>
+</context>
+<context>
+    <name>ReportCommand</name>
+    <message>
+        <source>Computes the latency statistics of measurement files (the benchmarking suite's timestamp CSV) over the whole run: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. Several inputs are joined into one run.
+Exit status: 0 report written, 1 no complete sample, 2 bad options or unreadable input.</source>
+        <translation>Berechnet die Latenzstatistik von Messdateien (der Zeitstempel-CSV der Benchmarking-Suite) über den ganzen Lauf: jede Stufe, die Gesamtlatenz und, mit Rechnern in der Pipeline, die Umlaufzeit der Kommunikation, ihre Hälfte für eine Richtung und den Uhrenversatz. Mehrere Eingaben werden zu einem Lauf verbunden.
+Rückgabewert: 0 Bericht geschrieben, 1 keine vollständige Probe, 2 falsche Optionen oder unlesbare Eingabe.</translation>
+    </message>
+    <message>
+        <source>Pipeline YAML (the suite's metrics-logger file; hosts: optional).</source>
+        <translation>Pipeline-YAML (die Metrics-Logger-Datei der Suite; hosts: optional).</translation>
+    </message>
+    <message>
+        <source>Output format: json (default).</source>
+        <translation>Ausgabeformat: json (Vorgabe).</translation>
+    </message>
+    <message>
+        <source>Statistics over the last N samples (default 0: all).</source>
+        <translation>Statistik über die letzten N Proben (Vorgabe 0: alle).</translation>
+    </message>
+    <message>
+        <source>Write to FILE instead of stdout.</source>
+        <translation>In DATEI statt auf die Standardausgabe schreiben.</translation>
+    </message>
+    <message>
+        <source>Suite timestamp CSV files.</source>
+        <translation>Zeitstempel-CSV-Dateien der Suite.</translation>
+    </message>
+    <message>
+        <source>unknown format %1 (known: json)</source>
+        <translation>unbekanntes Format %1 (bekannt: json)</translation>
+    </message>
+    <message>
+        <source>--window takes a number of samples (0: all)</source>
+        <translation>--window erwartet eine Anzahl Proben (0: alle)</translation>
+    </message>
+    <message>
+        <source>no input files; see bridgescope report --help</source>
+        <translation>keine Eingabedateien; siehe bridgescope report --help</translation>
+    </message>
+    <message>
+        <source>%1 (row skipped)</source>
+        <translation>%1 (Zeile übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 more rows skipped</source>
+        <translation>%1 weitere Zeilen übersprungen</translation>
+    </message>
+    <message>
+        <source>no complete sample in the input</source>
+        <translation>keine vollständige Probe in der Eingabe</translation>
     </message>
 </context>
 <context>
@@ -2344,6 +2555,25 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>RunLoader</name>
+    <message>
+        <source>no input files</source>
+        <translation>keine Eingabedateien</translation>
+    </message>
+    <message>
+        <source>%1: a pipeline needs at least two stamp topics, the file has %2</source>
+        <translation>%1: eine Pipeline braucht mindestens zwei Zeitstempel-Topics, die Datei hat %2</translation>
+    </message>
+    <message>
+        <source>%1: no column for stamp topic %2</source>
+        <translation>%1: keine Spalte für das Zeitstempel-Topic %2</translation>
+    </message>
+    <message>
+        <source>%1: its columns differ from %2's; give --pipeline to pick the common topics</source>
+        <translation>%1: ihre Spalten weichen von denen in %2 ab; --pipeline wählt die gemeinsamen Topics</translation>
+    </message>
+</context>
+<context>
     <name>SettingsInspector</name>
     <message>
         <source>&lt;b&gt;Broker&lt;/b&gt;</source>
@@ -2356,6 +2586,88 @@ Befehle:
     <message>
         <source>Set %1.%2</source>
         <translation>%1.%2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>StampCodec</name>
+    <message>
+        <source>TimeStamped message too short (%1 bytes)</source>
+        <translation>TimeStamped-Nachricht zu kurz (%1 Bytes)</translation>
+    </message>
+    <message>
+        <source>TimeStamped frame_id claims %1 bytes, only %2 left</source>
+        <translation>TimeStamped-frame_id gibt %1 Bytes an, nur %2 übrig</translation>
+    </message>
+    <message>
+        <source>TimeStamped message ends before its time field</source>
+        <translation>TimeStamped-Nachricht endet vor ihrem Feld time</translation>
+    </message>
+    <message>
+        <source>TimeStamped message has %1 bytes too many</source>
+        <translation>TimeStamped-Nachricht hat %1 Bytes zu viel</translation>
+    </message>
+    <message>
+        <source>not JSON: %1 at byte %2</source>
+        <translation>kein JSON: %1 bei Byte %2</translation>
+    </message>
+    <message>
+        <source>JSON stamp must be an object</source>
+        <translation>ein JSON-Zeitstempel muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <source>JSON stamp needs "sample" and "time"</source>
+        <translation>ein JSON-Zeitstempel braucht "sample" und "time"</translation>
+    </message>
+    <message>
+        <source>JSON stamp's "sample" is not a usable number</source>
+        <translation>"sample" des JSON-Zeitstempels ist keine brauchbare Zahl</translation>
+    </message>
+    <message>
+        <source>JSON stamp's "sample" must be a string or a number</source>
+        <translation>"sample" des JSON-Zeitstempels muss eine Zeichenkette oder Zahl sein</translation>
+    </message>
+    <message>
+        <source>JSON stamp's "time" must be seconds or "sec.nsec"</source>
+        <translation>"time" des JSON-Zeitstempels muss Sekunden oder "sek.nsek" sein</translation>
+    </message>
+</context>
+<context>
+    <name>SuiteCsv</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>empty file: expected a header row of stamp topics</source>
+        <translation>leere Datei: eine Kopfzeile mit Zeitstempel-Topics erwartet</translation>
+    </message>
+    <message>
+        <source>unterminated quote in the header row</source>
+        <translation>nicht geschlossenes Anführungszeichen in der Kopfzeile</translation>
+    </message>
+    <message>
+        <source>column %1 of the header row has no topic name</source>
+        <translation>Spalte %1 der Kopfzeile hat keinen Topic-Namen</translation>
+    </message>
+    <message>
+        <source>the first row holds times, not topic names: is the header row missing?</source>
+        <translation>die erste Zeile enthält Zeiten, keine Topic-Namen: fehlt die Kopfzeile?</translation>
+    </message>
+    <message>
+        <source>topic %1 appears twice in the header row</source>
+        <translation>Topic %1 steht zweimal in der Kopfzeile</translation>
+    </message>
+    <message>
+        <source>unterminated quote</source>
+        <translation>nicht geschlossenes Anführungszeichen</translation>
+    </message>
+    <message>
+        <source>%1 cells, the header has %2</source>
+        <translation>%1 Zellen, die Kopfzeile hat %2</translation>
+    </message>
+    <message>
+        <source>column %1 (%2): "%3" is not a time in seconds</source>
+        <translation>Spalte %1 (%2): "%3" ist keine Zeit in Sekunden</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,8 @@
 #include "clioutput.h"
 
 #include <cstdio>
+#include <QCommandLineParser>
+#include <QCoreApplication>
 
 namespace CliOutput {
 
@@ -19,6 +21,24 @@ void err(const QString& text)
     std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
     std::fputc('\n', stderr);
     std::fflush(stderr);
+}
+
+int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description)
+{
+    parser.setApplicationDescription(description);
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QCoreApplication::translate("Cli", "Show this help."));
+    parser.addOption(help);
+    if (!parser.parse(args)) {
+        err(parser.errorText());
+        err(QCoreApplication::translate("Cli", "Run '%1 --help' for usage.").arg(args.first()));
+        return 2;
+    }
+    if (parser.isSet(help)) {
+        out(parser.helpText());
+        return 0;
+    }
+    return -1;
 }
 
 } // namespace CliOutput

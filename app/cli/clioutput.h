@@ -2,9 +2,15 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
+
+class QCommandLineParser;
 
 /// Plain text to the terminal, without going through the Qt message handler.
 namespace CliOutput {
 void out(const QString& text); ///< a line to stdout
 void err(const QString& text); ///< a line to stderr
+/// Adds -h/--help and the description, parses `args` (args[0] names the command). Returns -1 to
+/// go on, 0 after printing the help, 2 after printing the error.
+int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description);
 } // namespace CliOutput

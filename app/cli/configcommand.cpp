@@ -41,19 +41,7 @@ public:
     // Parses a sub-command's options; returns -1 to go on, or the exit code.
     static int parse(QCommandLineParser& parser, const QStringList& args, const QString& description)
     {
-        parser.setApplicationDescription(description);
-        const QCommandLineOption help({u"h"_s, u"help"_s}, tr("Show this help."));
-        parser.addOption(help);
-        if (!parser.parse(args)) {
-            err(parser.errorText());
-            err(tr("Run '%1 --help' for usage.").arg(args.first()));
-            return Unreadable;
-        }
-        if (parser.isSet(help)) {
-            out(parser.helpText());
-            return Valid;
-        }
-        return -1;
+        return CliOutput::parseCommand(parser, args, description);
     }
 
     struct Loaded

@@ -97,10 +97,6 @@ public:
 int runDiscoverCommand(const QStringList& arguments)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(Discover::tr(
-        "Lists what is on the ROS master and the MQTT broker after listening for a while. Exit status: "
-        "0 when at least one of them answered, 1 when neither did, 2 on bad options."));
-    const QCommandLineOption help({u"h"_s, u"help"_s}, Discover::tr("Show this help."));
     const QCommandLineOption broker(u"broker"_s, Discover::tr("Broker URL (default tcp://localhost:1883)."),
                                     u"URL"_s, u"tcp://localhost:1883"_s);
     const QCommandLineOption master(u"ros-master"_s,
@@ -111,17 +107,15 @@ int runDiscoverCommand(const QStringList& arguments)
     const QCommandLineOption json(u"json"_s, Discover::tr("Print one JSON document."));
     const QCommandLineOption filter(
         u"filter"_s, Discover::tr("MQTT topic filter to subscribe (default #; repeatable)."), u"FILTER"_s);
-    parser.addOptions({help, broker, master, seconds, json, filter});
+    parser.addOptions({broker, master, seconds, json, filter});
     QStringList args = arguments;
     args.replace(0, u"bridgescope discover"_s);
-    if (!parser.parse(args)) {
-        err(parser.errorText());
-        return 2;
-    }
-    if (parser.isSet(help)) {
-        out(parser.helpText());
-        return 0;
-    }
+    const int parsed = CliOutput::parseCommand(
+        parser, args,
+        Discover::tr("Lists what is on the ROS master and the MQTT broker after listening for a while. Exit "
+                     "status: 0 when at least one of them answered, 1 when neither did, 2 on bad options."));
+    if (parsed >= 0)
+        return parsed;
     bool ok = false;
     const double secs = parser.value(seconds).toDouble(&ok);
     if (!ok || secs <= 0) {

@@ -2,6 +2,9 @@
 // The command line contract of `bridgescope config ...`, run as the real program.
 #include "config/configreader.h"
 #include "fixtures.h"
+#include "pythonref.h"
+#include "record/suitecsv.h"
+#include "syntheticrun.h"
 #include "testservers.h"
 
 #include <QJsonArray>
@@ -179,6 +182,96 @@ private slots:
                  false);
     }
 
+    // The report of a two-host run equals what numpy computes from the same CSV, to the last digit
+    // that float64 arithmetic on ms values can hold.
+    void reportMatchesNumpyOnASuiteCsv()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun run = SyntheticRun::paper(600, 120'000'000, 77);
+        const QString csv = writeFile(dir, u"run.csv"_s, SuiteCsv::write(run.topics, run.samples));
+        QByteArray pipeline = Fixtures::read(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s);
+        pipeline += "\nhosts:\n";
+        for (int i = 0; i < run.topics.size(); ++i)
+            pipeline += "  " + run.topics[i].toUtf8() + ": " + run.hosts()[i].toUtf8() + "\n";
+        const QString pipe = writeFile(dir, u"pipe.yaml"_s, pipeline);
+        const QString out = dir.filePath(u"report.json"_s);
+        const Run r
+            = bridgescope({u"report"_s, csv, u"--pipeline"_s, pipe, u"--format"_s, u"json"_s, u"-o"_s, out});
+        QCOMPARE(r.exit, 0);
+        QFile f(out);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject ours = QJsonDocument::fromJson(f.readAll()).object();
+        const QJsonObject ref
+            = PythonRef::run(u"latency_reference.py"_s, {csv, u"--hosts"_s, run.hosts().join(u',')}).object();
+        QVERIFY(!ref.isEmpty());
+        QCOMPARE(ours.value(u"samples"_s).toInt(), 600);
+        QCOMPARE(ours.value(u"dropped"_s).toInt(), 0);
+        const QJsonArray stages = ours.value(u"stages"_s).toArray();
+        QCOMPARE(stages.size(), 11);
+        QCOMPARE(stages[2].toObject().value(u"crossing"_s).toBool(), true);
+        QCOMPARE(stages[3].toObject().value(u"crossing"_s).toBool(), false);
+        QCOMPARE(stages[0].toObject().value(u"from"_s).toString(), run.topics[0]);
+        const auto same = [](const QJsonObject& a, const QJsonObject& b) {
+            for (auto it = b.begin(); it != b.end(); ++it) {
+                const double x = a.value(it.key()).toDouble();
+                const double y = it.value().toDouble();
+                if (std::abs(x - y) > 1e-9 + 1e-10 * std::abs(y))
+                    return false;
+            }
+            return a.keys() == b.keys();
+        };
+        for (int s = 0; s < 11; ++s)
+            QVERIFY2(
+                same(stages[s].toObject().value(u"stats"_s).toObject(), ref.value(u"stages"_s)[s].toObject()),
+                qPrintable(QString::number(s)));
+        QVERIFY(same(ours.value(u"total"_s).toObject(), ref.value(u"total"_s).toObject()));
+        const QJsonObject comm = ours.value(u"communication"_s).toObject();
+        QVERIFY(same(comm.value(u"one_way"_s).toObject(),
+                     ref.value(u"communication"_s)[u"one_way"_s].toObject()));
+        QVERIFY(same(comm.value(u"round_trip"_s).toObject(),
+                     ref.value(u"communication"_s)[u"round_trip"_s].toObject()));
+        const QJsonObject offset = ours.value(u"clock_offset"_s).toObject();
+        QVERIFY(same(offset, ref.value(u"clock_offset"_s).toObject()));
+        // The offset the run was made with shows through (the jitter makes the ways differ a little).
+        QVERIFY(std::abs(offset.value(u"median_ms"_s).toDouble() - 120.0) < 2.0);
+    }
+
+    void reportWithoutHostsHasNoCommunication()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun run = SyntheticRun::paper(10, 0, 1);
+        QByteArray text = SuiteCsv::write(run.topics, run.samples);
+        text += "1,2\r\n"; // malformed: reported on stderr, counted, not fatal
+        const QString csv = writeFile(dir, u"run.csv"_s, text);
+        const Run r = bridgescope({u"report"_s, csv, csv}); // two inputs: one run of 20 samples
+        QCOMPARE(r.exit, 0);
+        const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(doc.value(u"samples"_s).toInt(), 20);
+        QVERIFY(doc.value(u"communication"_s).isNull());
+        QVERIFY(doc.value(u"clock_offset"_s).isNull());
+        QCOMPARE(doc.value(u"malformed_rows"_s).toInt(), 2);
+        QVERIFY2(r.err.contains(csv + u":12: 2 cells"_s), qPrintable(r.err));
+    }
+
+    void reportRefusesWhatItCannotRead()
+    {
+        QTemporaryDir dir;
+        Run r = bridgescope({u"report"_s, dir.filePath(u"missing.csv"_s)});
+        QCOMPARE(r.exit, 2);
+        QVERIFY(r.err.contains(u"missing.csv"_s));
+        const QString csv = writeFile(dir, u"run.csv"_s, "/a,/b\r\n1.0,2.0\r\n");
+        r = bridgescope({u"report"_s, csv, u"--format"_s, u"docx"_s});
+        QCOMPARE(r.exit, 2);
+        const QString pipe = writeFile(dir, u"p.yaml"_s, "topics_in_order: [/a, /c]\n");
+        r = bridgescope({u"report"_s, csv, u"--pipeline"_s, pipe});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"no column for stamp topic /c"_s), qPrintable(r.err));
+        const QString empty = writeFile(dir, u"empty.csv"_s, "/a,/b\r\n");
+        r = bridgescope({u"report"_s, empty});
+        QCOMPARE(r.exit, 1);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"samples"_s).toInt(), 0);
+    }
+
     void everyCommandHasHelp_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -187,6 +280,8 @@ private slots:
         QTest::newRow("convert") << QStringList {u"config"_s, u"convert"_s, u"--help"_s};
         QTest::newRow("peer") << QStringList {u"config"_s, u"peer"_s, u"--help"_s};
         QTest::newRow("top") << QStringList {u"--help"_s};
+        QTest::newRow("report") << QStringList {u"report"_s, u"--help"_s};
+        QTest::newRow("discover") << QStringList {u"discover"_s, u"--help"_s};
     }
     void everyCommandHasHelp()
     {

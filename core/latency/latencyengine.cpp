@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+#include "latencyengine.h"
+
+using namespace Qt::StringLiterals;
+
+LatencyEngine::LatencyEngine(const Pipeline& pipeline)
+{
+    setPipeline(pipeline);
+}
+
+LatencyEngine::~LatencyEngine() = default;
+LatencyEngine::LatencyEngine(LatencyEngine&&) noexcept = default;
+LatencyEngine& LatencyEngine::operator=(LatencyEngine&&) noexcept = default;
+
+void LatencyEngine::setPipeline(const Pipeline& pipeline)
+{
+    m_pipeline = pipeline;
+    m_window = pipeline.window();
+    m_joiner.reset(pipeline.topicCount());
+    m_samples = 0;
+    rebuildSeries();
+}
+
+int LatencyEngine::addSeries(SeriesInfo info, double msPerUnit)
+{
+    const int index = int(m_series.size());
+    m_byId.insert(info.id, index);
+    m_info.push_back(std::move(info));
+    m_series.push_back(std::make_unique<LatencySeries>(msPerUnit));
+    m_series.back()->setWindow(m_window);
+    return index;
+}
+
+void LatencyEngine::rebuildSeries()
+{
+    // Externals survive a pipeline change: they do not depend on it.
+    std::vector<SeriesInfo> externalInfo;
+    std::vector<std::unique_ptr<LatencySeries>> externalSeries;
+    for (std::size_t i = 0; i < m_info.size(); ++i) {
+        if (m_info[i].kind == Kind::External) {
+            externalInfo.push_back(m_info[i]);
+            externalSeries.push_back(std::move(m_series[i]));
+        }
+    }
+    m_info.clear();
+    m_series.clear();
+    m_byId.clear();
+    m_total = m_roundTrip = m_oneWay = m_clockOffset = -1;
+    m_crossings.clear();
+    m_sameHost.clear();
+    m_offsetStages = {-1, -1};
+
+    const Pipeline& p = m_pipeline;
+    for (int s = 0; s < p.stageCount(); ++s) {
+        SeriesInfo info;
+        info.id = u"stage:"_s + QString::number(s);
+        info.label = p.stageLabel(s);
+        info.kind = Kind::Stage;
+        info.stage = s;
+        info.crossing = p.isCrossing(s);
+        info.hostFrom = p.host(s);
+        info.hostTo = p.host(s + 1);
+        if (info.crossing)
+            m_crossings.push_back(s);
+        else if (!info.hostFrom.isEmpty() && info.hostFrom == info.hostTo)
+            m_sameHost.push_back(s);
+        addSeries(std::move(info), 1e-6);
+    }
+    if (p.stageCount() > 0) {
+        SeriesInfo total;
+        total.id = u"total"_s;
+        total.label = tr("total");
+        total.kind = Kind::Total;
+        total.hostFrom = p.host(0);
+        total.hostTo = p.host(p.topicCount() - 1);
+        m_total = addSeries(std::move(total), 1e-6);
+    }
+    if (!m_crossings.empty()) {
+        SeriesInfo rt;
+        rt.id = u"round_trip"_s;
+        rt.label = tr("communication, round trip");
+        rt.kind = Kind::RoundTrip;
+        m_roundTrip = addSeries(std::move(rt), 1e-6);
+        SeriesInfo ow;
+        ow.id = u"one_way"_s;
+        ow.label = tr("communication, one way (half the round trip)");
+        ow.kind = Kind::OneWay;
+        m_oneWay = addSeries(std::move(ow), 0.5e-6);
+        if (const auto pair = p.outAndReturnCrossings()) {
+            m_offsetStages = *pair;
+            SeriesInfo off;
+            off.id = u"clock_offset"_s;
+            off.hostFrom = p.host(pair->first);
+            off.hostTo = p.host(pair->first + 1);
+            off.label = tr("clock offset (%1 ahead of %2)").arg(off.hostTo, off.hostFrom);
+            off.kind = Kind::ClockOffset;
+            m_clockOffset = addSeries(std::move(off), 0.5e-6);
+        }
+    }
+    for (std::size_t i = 0; i < externalInfo.size(); ++i) {
+        const int index = int(m_series.size());
+        m_byId.insert(externalInfo[i].id, index);
+        m_info.push_back(std::move(externalInfo[i]));
+        m_series.push_back(std::move(externalSeries[i]));
+        m_series.back()->setWindow(m_window);
+    }
+    ++m_revision;
+    ++m_layoutRevision;
+}
+
+void LatencyEngine::setWindow(qint64 samples)
+{
+    m_window = std::max<qint64>(0, samples);
+    for (auto& s : m_series)
+        s->setWindow(m_window);
+    ++m_revision;
+}
+
+void LatencyEngine::ingest(const StampEvent& event)
+{
+    ingest(m_pipeline.indexOf(event.topic), event.sampleNs, event.timeNs, event.receivedNs);
+}
+
+void LatencyEngine::ingest(const std::vector<StampEvent>& events)
+{
+    for (const StampEvent& e : events)
+        ingest(e);
+}
+
+void LatencyEngine::ingest(int topicIndex, qint64 sampleNs, qint64 timeNs, qint64 receivedNs)
+{
+    if (m_joiner.add(topicIndex, sampleNs, timeNs, receivedNs, m_times)) {
+        takeSample(m_times);
+        if (m_listener)
+            m_listener(sampleNs, m_times);
+    }
+}
+
+void LatencyEngine::ingest(const LatencyValue& value)
+{
+    const QString id = u"ext:"_s + value.series;
+    int index = m_byId.value(id, -1);
+    if (index < 0) {
+        SeriesInfo info;
+        info.id = id;
+        info.label = value.series;
+        info.kind = Kind::External;
+        index = addSeries(std::move(info), 1e-6);
+        ++m_layoutRevision;
+    }
+    m_series[std::size_t(index)]->append(value.valueNs);
+    ++m_revision;
+}
+
+void LatencyEngine::addSample(const std::vector<qint64>& times)
+{
+    if (int(times.size()) != m_pipeline.topicCount())
+        return;
+    takeSample(times);
+}
+
+void LatencyEngine::takeSample(const std::vector<qint64>& t)
+{
+    const int stages = m_pipeline.stageCount();
+    if (stages == 0)
+        return;
+    for (int s = 0; s < stages; ++s)
+        m_series[std::size_t(s)]->append(t[std::size_t(s) + 1] - t[std::size_t(s)]);
+    m_series[std::size_t(m_total)]->append(t.back() - t.front());
+    if (m_roundTrip >= 0) {
+        // As in the paper: total minus every stage that stays on one host.
+        qint64 rt = t.back() - t.front();
+        for (int s : m_sameHost)
+            rt -= t[std::size_t(s) + 1] - t[std::size_t(s)];
+        m_series[std::size_t(m_roundTrip)]->append(rt);
+        m_series[std::size_t(m_oneWay)]->append(rt); // read at half scale
+    }
+    if (m_clockOffset >= 0) {
+        const auto [out, back] = m_offsetStages;
+        const qint64 outbound = t[std::size_t(out) + 1] - t[std::size_t(out)];
+        const qint64 inbound = t[std::size_t(back) + 1] - t[std::size_t(back)];
+        m_series[std::size_t(m_clockOffset)]->append(outbound - inbound); // read at half scale
+    }
+    ++m_samples;
+    ++m_revision;
+}
+
+void LatencyEngine::expire(qint64 nowNs)
+{
+    const quint64 before = m_joiner.counters().dropped();
+    m_joiner.expire(nowNs);
+    if (m_joiner.counters().dropped() != before)
+        ++m_revision;
+}
+
+void LatencyEngine::reset()
+{
+    m_joiner.reset(m_pipeline.topicCount());
+    for (auto& s : m_series)
+        s->clear();
+    m_samples = 0;
+    ++m_revision;
+}

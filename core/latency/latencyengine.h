@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "latencyseries.h"
+#include "pipeline.h"
+#include "samplejoiner.h"
+#include "stampevent.h"
+
+#include <functional>
+#include <memory>
+#include <QCoreApplication>
+#include <QHash>
+#include <QString>
+#include <vector>
+
+/// The measurement engine: joins stamps into samples and keeps one latency series per stage, the
+/// total, the derived communication figures, and any single-stage series measured elsewhere.
+///
+/// Pure logic (no ROS, no MQTT, no widgets): sources hand it plain events on the GUI thread, the
+/// report command hands it samples from files. Per sample it does O(stages · log window) work.
+class LatencyEngine
+{
+    Q_DECLARE_TR_FUNCTIONS(LatencyEngine)
+public:
+    enum class Kind {
+        Stage, ///< stamp i to stamp i+1
+        Total, ///< first stamp to last
+        RoundTrip, ///< total minus every same-host stage: the sum of the crossings
+        OneWay, ///< half the round trip (the paper's "average of both ways")
+        ClockOffset, ///< ((c_in - v_out) - (v_in - c_out)) / 2: the far host's clock ahead of ours
+        External, ///< a latency measured by somebody else (mqtt_client's ~/latencies, stamped MQTT)
+    };
+    struct SeriesInfo
+    {
+        QString id; ///< stable: "stage:3", "total", "round_trip", "one_way", "clock_offset", "ext:<name>"
+        QString label;
+        Kind kind = Kind::Stage;
+        int stage = -1;
+        bool crossing = false;
+        QString hostFrom;
+        QString hostTo;
+    };
+    /// Called with each complete sample's stamps in pipeline order (for recording).
+    using SampleListener = std::function<void(qint64 sampleNs, const std::vector<qint64>& times)>;
+
+    explicit LatencyEngine(const Pipeline& pipeline = {});
+    ~LatencyEngine();
+    LatencyEngine(LatencyEngine&&) noexcept;
+    LatencyEngine& operator=(LatencyEngine&&) noexcept;
+
+    /// Starts over with another pipeline (externals are kept).
+    void setPipeline(const Pipeline& pipeline);
+    const Pipeline& pipeline() const { return m_pipeline; }
+    /// Last N samples, or 0 for the whole run.
+    void setWindow(qint64 samples);
+    qint64 window() const { return m_window; }
+    void setTimeoutNs(qint64 ns) { m_joiner.setTimeoutNs(ns); }
+    void setMaxPending(int samples) { m_joiner.setMaxPending(samples); }
+    void setSampleListener(SampleListener listener) { m_listener = std::move(listener); }
+
+    void ingest(const StampEvent& event);
+    void ingest(const std::vector<StampEvent>& events);
+    /// The fast path for a source that resolved the topic already (indexOf()).
+    void ingest(int topicIndex, qint64 sampleNs, qint64 timeNs, qint64 receivedNs);
+    void ingest(const LatencyValue& value);
+    /// A sample joined elsewhere (a CSV row): its stamps in pipeline order.
+    void addSample(const std::vector<qint64>& times);
+    void expire(qint64 nowNs);
+    /// Forgets every value and counter; keeps the pipeline and the series.
+    void reset();
+
+    int seriesCount() const { return int(m_series.size()); }
+    const SeriesInfo& info(int series) const { return m_info[std::size_t(series)]; }
+    const LatencySeries& series(int series) const { return *m_series[std::size_t(series)]; }
+    int indexOf(const QString& id) const { return m_byId.value(id, -1); }
+    int stageSeries(int stage) const { return stage; }
+    int totalSeries() const { return m_total; }
+    int roundTripSeries() const { return m_roundTrip; }
+    int oneWaySeries() const { return m_oneWay; }
+    int clockOffsetSeries() const { return m_clockOffset; }
+
+    const SampleJoiner::Counters& counters() const { return m_joiner.counters(); }
+    int pending() const { return m_joiner.pending(); }
+    /// Samples that left the statistics since the last reset (counted by addSample too).
+    qint64 samples() const { return m_samples; }
+    /// Changes whenever a value arrives or the series change (redraw only when it moved).
+    quint64 revision() const { return m_revision; }
+    quint64 layoutRevision() const { return m_layoutRevision; }
+
+private:
+    void rebuildSeries();
+    int addSeries(SeriesInfo info, double msPerUnit);
+    void takeSample(const std::vector<qint64>& times);
+
+    Pipeline m_pipeline;
+    qint64 m_window = Pipeline::kDefaultWindow;
+    SampleJoiner m_joiner;
+    std::vector<SeriesInfo> m_info;
+    std::vector<std::unique_ptr<LatencySeries>> m_series;
+    QHash<QString, int> m_byId;
+    int m_total = -1;
+    int m_roundTrip = -1;
+    int m_oneWay = -1;
+    int m_clockOffset = -1;
+    std::vector<int> m_crossings;
+    std::vector<int> m_sameHost;
+    std::pair<int, int> m_offsetStages {-1, -1};
+    std::vector<qint64> m_times; ///< scratch for the joiner
+    SampleListener m_listener;
+    qint64 m_samples = 0;
+    quint64 m_revision = 0;
+    quint64 m_layoutRevision = 0;
+};

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+#include "latencyreport.h"
+
+#include "latencyengine.h"
+
+#include <cmath>
+#include <QJsonArray>
+
+using namespace Qt::StringLiterals;
+
+QJsonValue LatencyReport::number(double value)
+{
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
+}
+
+QJsonObject LatencyReport::statsJson(const LatencyStats& s)
+{
+    QJsonObject o;
+    o.insert(u"count"_s, s.count);
+    o.insert(u"mean_ms"_s, number(s.mean));
+    o.insert(u"median_ms"_s, number(s.median));
+    o.insert(u"std_ms"_s, number(s.std));
+    o.insert(u"min_ms"_s, number(s.min));
+    o.insert(u"max_ms"_s, number(s.max));
+    o.insert(u"p90_ms"_s, number(s.p90));
+    o.insert(u"p95_ms"_s, number(s.p95));
+    o.insert(u"p99_ms"_s, number(s.p99));
+    o.insert(u"p999_ms"_s, number(s.p999));
+    return o;
+}
+
+QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped)
+{
+    const Pipeline& p = engine.pipeline();
+    QJsonObject doc;
+    doc.insert(u"samples"_s, engine.samples());
+    doc.insert(u"dropped"_s, qint64(engine.counters().dropped()) + extraDropped);
+    QJsonArray stages;
+    for (int s = 0; s < p.stageCount(); ++s) {
+        QJsonObject stage;
+        stage.insert(u"from"_s, p.topics()[s]);
+        stage.insert(u"to"_s, p.topics()[s + 1]);
+        stage.insert(u"crossing"_s, p.isCrossing(s));
+        stage.insert(u"stats"_s, statsJson(engine.series(engine.stageSeries(s)).stats()));
+        stages.append(stage);
+    }
+    doc.insert(u"stages"_s, stages);
+    doc.insert(u"total"_s,
+               engine.totalSeries() >= 0 ? QJsonValue(statsJson(engine.series(engine.totalSeries()).stats()))
+                                         : QJsonValue(QJsonValue::Null));
+    if (engine.roundTripSeries() >= 0) {
+        QJsonObject comm;
+        comm.insert(u"round_trip"_s, statsJson(engine.series(engine.roundTripSeries()).stats()));
+        comm.insert(u"one_way"_s, statsJson(engine.series(engine.oneWaySeries()).stats()));
+        doc.insert(u"communication"_s, comm);
+    } else {
+        doc.insert(u"communication"_s, QJsonValue::Null);
+    }
+    doc.insert(u"clock_offset"_s,
+               engine.clockOffsetSeries() >= 0
+                   ? QJsonValue(statsJson(engine.series(engine.clockOffsetSeries()).stats()))
+                   : QJsonValue(QJsonValue::Null));
+    return doc;
+}

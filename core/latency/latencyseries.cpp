@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include "latencyseries.h"
+
+#include <algorithm>
+#include <cmath>
+
+LatencySeries::LatencySeries(double msPerUnit)
+    : m_msPerUnit(msPerUnit)
+{ }
+
+void LatencySeries::add(qint64 value)
+{
+    if (!m_hasRef) {
+        m_ref = value;
+        m_hasRef = true;
+    }
+    const LatencyInt128 d = value - m_ref;
+    m_sum += d;
+    m_sumSq += d * d;
+    m_sorted.insert(value);
+}
+
+void LatencySeries::remove(qint64 value)
+{
+    const LatencyInt128 d = value - m_ref;
+    m_sum -= d;
+    m_sumSq -= d * d;
+    m_sorted.erase(value);
+}
+
+void LatencySeries::append(qint64 value)
+{
+    ++m_appended;
+    m_values.push_back(value);
+    add(value);
+    if (m_window > 0 && m_sorted.size() > m_window)
+        remove(m_values[m_windowStart++]);
+    if (m_values.size() > kMaxKept) {
+        // Forget the oldest tenth in one move; in whole-run mode they leave the statistics too.
+        const std::size_t drop = kMaxKept / 10;
+        for (std::size_t i = m_windowStart; i < drop; ++i)
+            remove(m_values[i]);
+        m_values.erase(m_values.begin(), m_values.begin() + std::ptrdiff_t(drop));
+        m_windowStart = m_windowStart > drop ? m_windowStart - drop : 0;
+    }
+}
+
+void LatencySeries::clear()
+{
+    m_values.clear();
+    m_values.shrink_to_fit();
+    m_windowStart = 0;
+    m_sorted.clear();
+    m_appended = 0;
+    m_hasRef = false;
+    m_sum = 0;
+    m_sumSq = 0;
+}
+
+void LatencySeries::setWindow(qint64 samples)
+{
+    samples = std::max<qint64>(samples, 0);
+    if (samples == m_window)
+        return;
+    m_window = samples;
+    m_sorted.clear();
+    m_sum = 0;
+    m_sumSq = 0;
+    m_hasRef = false;
+    m_windowStart = m_window > 0 && m_values.size() > std::size_t(m_window)
+        ? m_values.size() - std::size_t(m_window)
+        : 0;
+    for (std::size_t i = m_windowStart; i < m_values.size(); ++i)
+        add(m_values[i]);
+}
+
+double LatencySeries::meanMs() const
+{
+    const qint64 n = count();
+    if (n == 0)
+        return LatencyStats::nan();
+    const long double mean = static_cast<long double>(m_ref) + static_cast<long double>(m_sum) / n;
+    return double(mean * m_msPerUnit);
+}
+
+double LatencySeries::stdMs() const
+{
+    const qint64 n = count();
+    if (n < 2)
+        return LatencyStats::nan();
+    const long double s = static_cast<long double>(m_sum);
+    const long double var = (static_cast<long double>(m_sumSq) - s * s / n) / (n - 1);
+    return double(std::sqrt(std::max<long double>(var, 0)) * std::abs(m_msPerUnit));
+}
+
+double LatencySeries::quantileMs(double q) const
+{
+    const qint64 n = count();
+    if (n == 0)
+        return LatencyStats::nan();
+    // numpy's "linear" method: virtual index q*(n-1), and its lerp that is exact at both ends.
+    const double index = q * double(n - 1);
+    const qint64 lo = std::clamp<qint64>(qint64(std::floor(index)), 0, n - 1);
+    const qint64 hi = std::min<qint64>(lo + 1, n - 1);
+    const double t = index - double(lo);
+    const double a = toMs(m_sorted.at(lo));
+    const double b = toMs(m_sorted.at(hi));
+    const double diff = b - a;
+    return t >= 0.5 ? b - diff * (1 - t) : a + diff * t;
+}
+
+LatencyStats LatencySeries::stats() const
+{
+    LatencyStats s;
+    s.count = count();
+    if (s.count == 0)
+        return s;
+    s.mean = meanMs();
+    s.std = stdMs();
+    s.min = toMs(m_sorted.min());
+    s.max = toMs(m_sorted.max());
+    s.median = quantileMs(0.5);
+    s.p90 = quantileMs(0.90);
+    s.p95 = quantileMs(0.95);
+    s.p99 = quantileMs(0.99);
+    s.p999 = quantileMs(0.999);
+    return s;
+}

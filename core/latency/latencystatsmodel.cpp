@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+#include "latencystatsmodel.h"
+
+#include <cmath>
+
+using namespace Qt::StringLiterals;
+
+LatencyStatsModel::LatencyStatsModel(QObject* parent)
+    : QAbstractTableModel(parent)
+{
+    m_checked.insert(u"total"_s);
+}
+
+QString LatencyStatsModel::msText(double ms)
+{
+    return std::isnan(ms) ? u"–"_s : QString::number(ms, 'f', 2);
+}
+
+void LatencyStatsModel::refresh(const LatencyEngine& engine)
+{
+    const int n = engine.seriesCount();
+    if (engine.layoutRevision() != m_layout) {
+        m_layout = engine.layoutRevision();
+        // Series only added at the end (a new external latency): insert rows, keep the views' state.
+        bool prefix = n >= int(m_rows.size());
+        for (int i = 0; prefix && i < int(m_rows.size()); ++i)
+            prefix = m_rows[std::size_t(i)].info.id == engine.info(i).id;
+        if (prefix && n > int(m_rows.size())) {
+            beginInsertRows({}, int(m_rows.size()), n - 1);
+            for (int i = int(m_rows.size()); i < n; ++i)
+                m_rows.push_back({engine.info(i), engine.series(i).stats()});
+            endInsertRows();
+        } else if (!prefix || n != int(m_rows.size())) {
+            beginResetModel();
+            m_rows.clear();
+            for (int i = 0; i < n; ++i)
+                m_rows.push_back({engine.info(i), engine.series(i).stats()});
+            endResetModel();
+        }
+    }
+    for (int i = 0; i < n && i < int(m_rows.size()); ++i) {
+        m_rows[std::size_t(i)].info = engine.info(i);
+        m_rows[std::size_t(i)].stats = engine.series(i).stats();
+    }
+    if (!m_rows.empty())
+        emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1),
+                         {Qt::DisplayRole, ValueRole, Qt::ToolTipRole});
+}
+
+int LatencyStatsModel::rowOf(const QString& seriesId) const
+{
+    for (std::size_t i = 0; i < m_rows.size(); ++i)
+        if (m_rows[i].info.id == seriesId)
+            return int(i);
+    return -1;
+}
+
+QStringList LatencyStatsModel::checkedSeries() const
+{
+    QStringList out;
+    for (const Row& r : m_rows)
+        if (m_checked.contains(r.info.id))
+            out << r.info.id;
+    return out;
+}
+
+void LatencyStatsModel::setChecked(const QString& seriesId, bool checked)
+{
+    if (checked == m_checked.contains(seriesId))
+        return;
+    if (checked)
+        m_checked.insert(seriesId);
+    else
+        m_checked.remove(seriesId);
+    const int row = rowOf(seriesId);
+    if (row >= 0)
+        emit dataChanged(index(row, 0), index(row, 0), {Qt::CheckStateRole});
+    emit checkedChanged();
+}
+
+int LatencyStatsModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int LatencyStatsModel::columnCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const Row& r = m_rows[std::size_t(index.row())];
+    const LatencyStats& s = r.stats;
+    const auto value = [&]() -> double {
+        switch (index.column()) {
+        case MeanColumn:
+            return s.mean;
+        case MedianColumn:
+            return s.median;
+        case StdColumn:
+            return s.std;
+        case MinColumn:
+            return s.min;
+        case MaxColumn:
+            return s.max;
+        case P90Column:
+            return s.p90;
+        case P95Column:
+            return s.p95;
+        case P99Column:
+            return s.p99;
+        case P999Column:
+            return s.p999;
+        default:
+            return LatencyStats::nan();
+        }
+    };
+    switch (role) {
+    case Qt::DisplayRole:
+        if (index.column() == SeriesColumn)
+            return r.info.crossing ? QString(u"⇄ "_s + r.info.label) : r.info.label;
+        if (index.column() == CountColumn)
+            return QString::number(s.count);
+        return msText(value());
+    case ValueRole:
+        if (index.column() == SeriesColumn)
+            return r.info.label;
+        if (index.column() == CountColumn)
+            return s.count;
+        return value();
+    case Qt::TextAlignmentRole:
+        return index.column() == SeriesColumn ? QVariant(Qt::AlignLeft | Qt::AlignVCenter)
+                                              : QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    case Qt::CheckStateRole:
+        if (index.column() == SeriesColumn)
+            return m_checked.contains(r.info.id) ? Qt::Checked : Qt::Unchecked;
+        return {};
+    case Qt::ToolTipRole:
+        if (index.column() == SeriesColumn) {
+            if (r.info.crossing)
+                return tr("Crosses from %1 to %2: the raw value includes the clock offset between the hosts.")
+                    .arg(r.info.hostFrom, r.info.hostTo);
+            if (r.info.kind == LatencyEngine::Kind::RoundTrip)
+                return tr("Derived per sample: total minus every stage that stays on one host.");
+            if (r.info.kind == LatencyEngine::Kind::OneWay)
+                return tr("Half the round trip: the mean of both ways, as in the paper.");
+            if (r.info.kind == LatencyEngine::Kind::ClockOffset)
+                return tr(
+                    "((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.");
+            if (r.info.kind == LatencyEngine::Kind::External)
+                return tr("Measured by the bridge itself (single-stage series).");
+            return {};
+        }
+        if (index.column() != CountColumn && !std::isnan(value()))
+            return QString(QString::number(value(), 'g', 17) + u" ms"_s);
+        return {};
+    case SeriesIdRole:
+        return r.info.id;
+    case KindRole:
+        return int(r.info.kind);
+    case CrossingRole:
+        return r.info.crossing;
+    default:
+        return {};
+    }
+}
+
+bool LatencyStatsModel::setData(const QModelIndex& index, const QVariant& value, int role)
+{
+    if (!index.isValid() || index.column() != SeriesColumn || role != Qt::CheckStateRole)
+        return false;
+    setChecked(m_rows[std::size_t(index.row())].info.id, value.value<Qt::CheckState>() == Qt::Checked);
+    return true;
+}
+
+QVariant LatencyStatsModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case SeriesColumn:
+        return tr("Stage");
+    case MeanColumn:
+        return tr("Mean [ms]");
+    case MedianColumn:
+        return tr("Median");
+    case StdColumn:
+        return tr("Std");
+    case MinColumn:
+        return tr("Min");
+    case MaxColumn:
+        return tr("Max");
+    case P90Column:
+        return tr("p90");
+    case P95Column:
+        return tr("p95");
+    case P99Column:
+        return tr("p99");
+    case P999Column:
+        return tr("p99.9");
+    case CountColumn:
+        return tr("Count");
+    default:
+        return {};
+    }
+}
+
+Qt::ItemFlags LatencyStatsModel::flags(const QModelIndex& index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.isValid() && index.column() == SeriesColumn)
+        f |= Qt::ItemIsUserCheckable;
+    return f;
+}

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "latencyengine.h"
+
+#include <QAbstractTableModel>
+#include <QSet>
+#include <vector>
+
+/// The paper's Table I, live: one row per series of an engine (stages, total, derived
+/// communication figures, external latencies), statistics in ms.
+///
+/// refresh() takes the engine's current figures: rows are inserted when series appear, the whole
+/// model resets only when the pipeline changes, and the figures change with one dataChanged.
+/// The first column is checkable: checked series are drawn.
+class LatencyStatsModel : public QAbstractTableModel
+{
+    Q_OBJECT
+public:
+    enum Column {
+        SeriesColumn,
+        MeanColumn,
+        MedianColumn,
+        StdColumn,
+        MinColumn,
+        MaxColumn,
+        P90Column,
+        P95Column,
+        P99Column,
+        P999Column,
+        CountColumn,
+        ColumnCount
+    };
+    enum Role {
+        SeriesIdRole = Qt::UserRole + 1,
+        KindRole, ///< int(LatencyEngine::Kind)
+        CrossingRole, ///< bool
+        ValueRole, ///< double ms (count: qint64)
+    };
+
+    explicit LatencyStatsModel(QObject* parent = nullptr);
+
+    void refresh(const LatencyEngine& engine);
+    const LatencyStats& statsAt(int row) const { return m_rows[std::size_t(row)].stats; }
+    const LatencyEngine::SeriesInfo& infoAt(int row) const { return m_rows[std::size_t(row)].info; }
+    int rowOf(const QString& seriesId) const;
+
+    QStringList checkedSeries() const;
+    void setChecked(const QString& seriesId, bool checked);
+    bool isChecked(const QString& seriesId) const { return m_checked.contains(seriesId); }
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+
+    /// "12.34" (two decimals, as the paper's table shows sub-millisecond stages); "–" for NaN.
+    static QString msText(double ms);
+
+signals:
+    void checkedChanged();
+
+private:
+    struct Row
+    {
+        LatencyEngine::SeriesInfo info;
+        LatencyStats stats;
+    };
+    std::vector<Row> m_rows;
+    QSet<QString> m_checked;
+    quint64 m_layout = ~quint64(0);
+};

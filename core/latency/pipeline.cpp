@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: MIT
+#include "pipeline.h"
+
+#include "common/atomicfile.h"
+
+#include <QFile>
+#include <QRegularExpression>
+#include <yaml-cpp/yaml.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QString lineText(const YAML::Mark& mark)
+{
+    return QCoreApplication::translate("Pipeline", "line %1").arg(mark.line + 1);
+}
+
+/// The host a name part stands for, or empty.
+QString hostOfToken(QStringView token)
+{
+    static const QStringList vehicle {u"vehicle"_s, u"car"_s, u"robot"_s, u"ego"_s};
+    static const QStringList cloud {u"cloud"_s, u"edge"_s, u"server"_s, u"backend"_s};
+    for (const QString& v : vehicle)
+        if (token.compare(v, Qt::CaseInsensitive) == 0)
+            return u"vehicle"_s;
+    for (const QString& c : cloud)
+        if (token.compare(c, Qt::CaseInsensitive) == 0)
+            return u"cloud"_s;
+    return {};
+}
+
+QString quoted(const QString& s)
+{
+    QString out = s;
+    out.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
+    return u'"' + out + u'"';
+}
+} // namespace
+
+Pipeline::Pipeline(QStringList topics, int window)
+    : m_window(window)
+{
+    setTopics(std::move(topics));
+}
+
+QString Pipeline::normalized(QStringView topic)
+{
+    while (topic.startsWith(u'/'))
+        topic = topic.mid(1);
+    return topic.toString();
+}
+
+void Pipeline::setTopics(QStringList topics)
+{
+    m_topics.clear();
+    m_index.clear();
+    for (QString& t : topics) {
+        const QString key = normalized(t);
+        if (t.isEmpty() || m_index.contains(key))
+            continue;
+        m_index.insert(key, int(m_topics.size()));
+        m_topics.append(std::move(t));
+    }
+}
+
+int Pipeline::indexOf(QStringView topic) const
+{
+    QStringView t = topic;
+    while (t.startsWith(u'/'))
+        t = t.mid(1);
+    return m_index.value(t.toString(), -1);
+}
+
+std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* error)
+{
+    const auto fail = [error](const QString& why) -> std::optional<Pipeline> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    YAML::Node root;
+    try {
+        root = YAML::Load(yaml.toStdString());
+    } catch (const YAML::Exception& e) {
+        return fail(tr("%1: %2").arg(lineText(e.mark), QString::fromStdString(e.msg)));
+    }
+    if (!root.IsMap())
+        return fail(tr("a pipeline is a mapping with topics_in_order"));
+    const YAML::Node topics = root["topics_in_order"];
+    if (!topics || !topics.IsSequence())
+        return fail(tr("topics_in_order is missing or not a list"));
+    QStringList names;
+    for (const YAML::Node& t : topics) {
+        if (!t.IsScalar() || t.Scalar().empty())
+            return fail(
+                tr("%1: every entry of topics_in_order must be a topic name").arg(lineText(t.Mark())));
+        names << QString::fromStdString(t.Scalar());
+    }
+    if (names.isEmpty())
+        return fail(tr("topics_in_order is empty"));
+    Pipeline p(names);
+    if (const YAML::Node w = root["metrics_window"]) {
+        int window = 0;
+        if (!w.IsScalar() || !YAML::convert<int>::decode(w, window) || window < 0)
+            return fail(tr("%1: metrics_window must be a whole number of samples (0: whole run)")
+                            .arg(lineText(w.Mark())));
+        p.m_window = window;
+    }
+    if (const YAML::Node hosts = root["hosts"]) {
+        if (!hosts.IsMap())
+            return fail(tr("%1: hosts must map topics to host names").arg(lineText(hosts.Mark())));
+        for (const auto& kv : hosts) {
+            const QString topic = QString::fromStdString(kv.first.as<std::string>(""));
+            if (!kv.second.IsScalar())
+                return fail(tr("%1: the host of %2 must be a name").arg(lineText(kv.second.Mark()), topic));
+            if (p.indexOf(topic) < 0)
+                return fail(tr("%1: hosts names %2, which is not in topics_in_order")
+                                .arg(lineText(kv.first.Mark()), topic));
+            p.setHost(topic, QString::fromStdString(kv.second.Scalar()));
+        }
+    }
+    return p;
+}
+
+std::optional<Pipeline> Pipeline::load(const QString& path, QString* error)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = tr("%1: %2").arg(path, f.errorString());
+        return std::nullopt;
+    }
+    QString why;
+    std::optional<Pipeline> p = fromYaml(f.readAll(), &why);
+    if (!p && error)
+        *error = path + u": "_s + why;
+    return p;
+}
+
+QByteArray Pipeline::toYaml() const
+{
+    QString out = u"metrics_window: %1\ntopics_in_order:\n"_s.arg(m_window);
+    for (const QString& t : m_topics)
+        out += u"  - "_s + quoted(t) + u'\n';
+    if (hasHosts()) {
+        out += u"hosts:\n"_s;
+        for (const QString& t : m_topics) {
+            const QString h = m_hosts.value(t);
+            if (!h.isEmpty())
+                out += u"  "_s + quoted(t) + u": "_s + quoted(h) + u'\n';
+        }
+    }
+    return out.toUtf8();
+}
+
+bool Pipeline::save(const QString& path, QString* error) const
+{
+    return AtomicFile::write(path, toYaml(), error);
+}
+
+QString Pipeline::host(int topicIndex) const
+{
+    if (topicIndex < 0 || topicIndex >= m_topics.size())
+        return {};
+    return m_hosts.value(m_topics[topicIndex]);
+}
+
+void Pipeline::setHost(const QString& topic, const QString& host)
+{
+    const int i = indexOf(topic);
+    if (i < 0)
+        return;
+    if (host.trimmed().isEmpty())
+        m_hosts.remove(m_topics[i]);
+    else
+        m_hosts.insert(m_topics[i], host.trimmed());
+}
+
+bool Pipeline::hasHosts() const
+{
+    for (const QString& t : m_topics)
+        if (!m_hosts.value(t).isEmpty())
+            return true;
+    return false;
+}
+
+bool Pipeline::isCrossing(int stage) const
+{
+    const QString a = host(stage);
+    const QString b = host(stage + 1);
+    return !a.isEmpty() && !b.isEmpty() && a != b;
+}
+
+QList<int> Pipeline::crossings() const
+{
+    QList<int> out;
+    for (int s = 0; s < stageCount(); ++s)
+        if (isCrossing(s))
+            out << s;
+    return out;
+}
+
+std::optional<std::pair<int, int>> Pipeline::outAndReturnCrossings() const
+{
+    const QList<int> c = crossings();
+    if (c.size() != 2)
+        return std::nullopt;
+    const QString home = host(c[0]);
+    const QString away = host(c[0] + 1);
+    if (host(c[1]) != away || host(c[1] + 1) != home)
+        return std::nullopt;
+    return std::make_pair(c[0], c[1]);
+}
+
+QString Pipeline::shortTopic(int topicIndex) const
+{
+    if (topicIndex < 0 || topicIndex >= m_topics.size())
+        return {};
+    const QString& t = m_topics[topicIndex];
+    if (m_topics.size() < 2)
+        return t;
+    // The longest common prefix ending in '/'.
+    qsizetype common = m_topics.first().size();
+    for (const QString& other : m_topics) {
+        qsizetype i = 0;
+        while (i < common && i < other.size() && other[i] == m_topics.first()[i])
+            ++i;
+        common = i;
+    }
+    common = m_topics.first().lastIndexOf(u'/', common - 1) + 1;
+    const QString rest = t.mid(common);
+    return rest.isEmpty() ? t : rest;
+}
+
+QString Pipeline::stageLabel(int stage) const
+{
+    if (stage < 0 || stage >= stageCount())
+        return {};
+    const QString a = shortTopic(stage);
+    const QString b = shortTopic(stage + 1);
+    // Within one component ("x/data/in" -> "x/data/out"), name the component once.
+    const qsizetype slashA = a.lastIndexOf(u'/');
+    const qsizetype slashB = b.lastIndexOf(u'/');
+    if (slashA > 0 && slashA == slashB && a.left(slashA) == b.left(slashB))
+        return tr("%1 (%2 → %3)").arg(a.left(slashA), a.mid(slashA + 1), b.mid(slashB + 1));
+    return tr("%1 → %2").arg(a, b);
+}
+
+QHash<QString, QString> Pipeline::guessHosts(const QStringList& topics)
+{
+    static const QRegularExpression split(u"[^A-Za-z0-9]+"_s);
+    QStringList hosts;
+    for (const QString& t : topics) {
+        QString host;
+        const QStringList tokens = t.split(split, Qt::SkipEmptyParts);
+        for (const QString& token : tokens) {
+            host = hostOfToken(token);
+            if (!host.isEmpty())
+                break;
+        }
+        hosts << host;
+    }
+    // Unknown ones take the previous known host, or the next one at the start.
+    QString previous;
+    for (QString& h : hosts) {
+        if (h.isEmpty())
+            h = previous;
+        else
+            previous = h;
+    }
+    QString next;
+    for (qsizetype i = hosts.size() - 1; i >= 0; --i) {
+        if (hosts[i].isEmpty())
+            hosts[i] = next;
+        else
+            next = hosts[i];
+    }
+    QHash<QString, QString> out;
+    for (qsizetype i = 0; i < topics.size(); ++i)
+        if (!hosts[i].isEmpty())
+            out.insert(topics[i], hosts[i]);
+    return out;
+}

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <optional>
+#include <QCoreApplication>
+#include <QHash>
+#include <QString>
+#include <QStringList>
+
+/// The stamp topics of a measured pipeline, in the order a sample passes them.
+///
+/// The benchmarking suite's metrics-logger YAML (`topics_in_order`, `metrics_window`) is a valid
+/// pipeline file; `hosts: {<topic>: <host>}` is Bridgescope's extension. Stage i spans stamp i to
+/// stamp i+1; a stage whose stamps are on different hosts is a crossing (its raw value holds the
+/// clock offset between the hosts).
+class Pipeline
+{
+    Q_DECLARE_TR_FUNCTIONS(Pipeline)
+public:
+    static constexpr int kDefaultWindow = 600;
+
+    Pipeline() = default;
+    explicit Pipeline(QStringList topics, int window = kDefaultWindow);
+
+    /// Parses pipeline YAML; errors name the line. Repeated topics count once (as in the suite).
+    static std::optional<Pipeline> fromYaml(const QByteArray& yaml, QString* error = nullptr);
+    static std::optional<Pipeline> load(const QString& path, QString* error = nullptr);
+    QByteArray toYaml() const;
+    bool save(const QString& path, QString* error = nullptr) const;
+
+    const QStringList& topics() const { return m_topics; }
+    int topicCount() const { return int(m_topics.size()); }
+    int stageCount() const { return m_topics.size() < 2 ? 0 : int(m_topics.size()) - 1; }
+    bool isEmpty() const { return m_topics.isEmpty(); }
+    /// Index of a topic, matching with or without a leading '/' (MQTT topics carry none); -1 if absent.
+    int indexOf(QStringView topic) const;
+    void setTopics(QStringList topics);
+    /// Whether two names are the same stamp topic ("/a/b" on ROS is "a/b" on MQTT).
+    static bool sameTopic(QStringView a, QStringView b) { return normalized(a) == normalized(b); }
+
+    int window() const { return m_window; }
+    void setWindow(int samples) { m_window = samples; }
+
+    QString host(int topicIndex) const;
+    void setHost(const QString& topic, const QString& host);
+    const QHash<QString, QString>& hosts() const { return m_hosts; }
+    bool hasHosts() const;
+    bool isCrossing(int stage) const;
+    QList<int> crossings() const;
+    /// With exactly one crossing away from the first stamp's host and one back to it: (out, return).
+    std::optional<std::pair<int, int>> outAndReturnCrossings() const;
+
+    /// "mqtt_interface_vehicle/pointcloud/in → …/out": a short label for stage i.
+    QString stageLabel(int stage) const;
+    /// The topic without the prefix all topics share.
+    QString shortTopic(int topicIndex) const;
+
+    /// Hosts guessed from topic names: a name part "vehicle", "car", "robot" or "cloud", "edge",
+    /// "server" sets a host; topics without one take their neighbours' host.
+    static QHash<QString, QString> guessHosts(const QStringList& topics);
+
+    bool operator==(const Pipeline& o) const
+    {
+        return m_topics == o.m_topics && m_window == o.m_window && m_hosts == o.m_hosts;
+    }
+
+private:
+    static QString normalized(QStringView topic);
+
+    QStringList m_topics;
+    QHash<QString, int> m_index; ///< normalized topic -> index
+    QHash<QString, QString> m_hosts;
+    int m_window = kDefaultWindow;
+};

@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: MIT
+#include "stampcodec.h"
+
+#include <cmath>
+#include <cstring>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtEndian>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kNsPerSec = 1000000000LL;
+
+struct Reader
+{
+    const QByteArray& bytes;
+    qsizetype pos = 0;
+    bool u32(quint32& out)
+    {
+        if (bytes.size() - pos < 4)
+            return false;
+        out = qFromLittleEndian<quint32>(bytes.constData() + pos);
+        pos += 4;
+        return true;
+    }
+    bool time(qint64& ns)
+    {
+        quint32 sec = 0;
+        quint32 nsec = 0;
+        if (!u32(sec) || !u32(nsec))
+            return false;
+        ns = qint64(sec) * kNsPerSec + qint64(nsec);
+        return true;
+    }
+};
+
+void putU32(QByteArray& out, quint32 v)
+{
+    char b[4];
+    qToLittleEndian(v, b);
+    out.append(b, 4);
+}
+
+void putTime(QByteArray& out, qint64 ns)
+{
+    putU32(out, quint32(ns / kNsPerSec));
+    putU32(out, quint32(ns % kNsPerSec));
+}
+
+/// Seconds as ns, without the rounding error of multiplying an epoch time by 1e9 in double.
+qint64 secondsToNs(double seconds)
+{
+    const double whole = std::floor(seconds);
+    return qint64(whole) * kNsPerSec + qint64(std::llround((seconds - whole) * 1e9));
+}
+
+/// FNV-1a over the id's UTF-8 bytes; never negative, so it cannot collide with pre-1970 stamps.
+qint64 hashId(const QByteArray& id)
+{
+    quint64 h = 14695981039346656037ULL;
+    for (char c : id) {
+        h ^= quint8(c);
+        h *= 1099511628211ULL;
+    }
+    return qint64(h >> 1);
+}
+} // namespace
+
+QString StampCodec::definition()
+{
+    return u"# This represents a timestamp with a reference header, incl. a reference timestamp\n"
+           "Header header\n"
+           "time time\n"
+           "================================================================================\n"
+           "MSG: std_msgs/Header\n"
+           "# Standard metadata for higher-level stamped data types.\n"
+           "# This is generally used to communicate timestamped data \n"
+           "# in a particular coordinate frame.\n"
+           "# \n"
+           "# sequence ID: consecutively increasing ID \n"
+           "uint32 seq\n"
+           "#Two-integer timestamp that is expressed as:\n"
+           "# * stamp.sec: seconds (stamp_secs) since epoch (in Python the variable is called 'secs')\n"
+           "# * stamp.nsec: nanoseconds since stamp_secs (in Python the variable is called 'nsecs')\n"
+           "# time-handling sugar is provided by the client library\n"
+           "time stamp\n"
+           "#Frame this data is associated with\n"
+           "string frame_id\n"_s;
+}
+
+std::optional<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArray& bytes, QString* error)
+{
+    Reader r {bytes};
+    Decoded d;
+    quint32 frameLength = 0;
+    if (!r.u32(d.seq) || !r.time(d.sampleNs) || !r.u32(frameLength)) {
+        if (error)
+            *error = tr("TimeStamped message too short (%1 bytes)").arg(bytes.size());
+        return std::nullopt;
+    }
+    if (frameLength > quint32(bytes.size() - r.pos)) {
+        if (error)
+            *error = tr("TimeStamped frame_id claims %1 bytes, only %2 left")
+                         .arg(frameLength)
+                         .arg(bytes.size() - r.pos);
+        return std::nullopt;
+    }
+    d.frameId = QString::fromUtf8(bytes.constData() + r.pos, qsizetype(frameLength));
+    r.pos += qsizetype(frameLength);
+    if (!r.time(d.timeNs)) {
+        if (error)
+            *error = tr("TimeStamped message ends before its time field");
+        return std::nullopt;
+    }
+    if (r.pos != bytes.size()) {
+        if (error)
+            *error = tr("TimeStamped message has %1 bytes too many").arg(bytes.size() - r.pos);
+        return std::nullopt;
+    }
+    return d;
+}
+
+QByteArray StampCodec::encodeTimeStamped(const Decoded& stamp)
+{
+    const QByteArray frame = stamp.frameId.toUtf8();
+    QByteArray out;
+    out.reserve(24 + frame.size());
+    putU32(out, stamp.seq);
+    putTime(out, stamp.sampleNs);
+    putU32(out, quint32(frame.size()));
+    out.append(frame);
+    putTime(out, stamp.timeNs);
+    return out;
+}
+
+std::optional<qint64> StampCodec::parseTime(QStringView text)
+{
+    text = text.trimmed();
+    if (text.isEmpty())
+        return std::nullopt;
+    const qsizetype dot = text.indexOf(u'.');
+    const bool exponent = text.contains(u'e') || text.contains(u'E');
+    if (!exponent && !text.startsWith(u'-')) {
+        // Exact decimal: integer seconds and up to nine digits of fraction.
+        bool ok = false;
+        const QStringView secText = dot < 0 ? text : text.left(dot);
+        const qint64 sec = secText.isEmpty() ? 0 : secText.toLongLong(&ok);
+        if (!secText.isEmpty() && !ok)
+            return std::nullopt;
+        if (sec > std::numeric_limits<qint64>::max() / kNsPerSec - 1)
+            return std::nullopt;
+        qint64 ns = 0;
+        if (dot >= 0) {
+            const QStringView frac = text.mid(dot + 1);
+            if (frac.isEmpty() && secText.isEmpty())
+                return std::nullopt;
+            qint64 scale = kNsPerSec;
+            for (qsizetype i = 0; i < frac.size(); ++i) {
+                if (!frac[i].isDigit())
+                    return std::nullopt;
+                if (i < 9) {
+                    scale /= 10;
+                    ns += (frac[i].unicode() - u'0') * scale;
+                }
+            }
+        }
+        return sec * kNsPerSec + ns;
+    }
+    bool ok = false;
+    const double seconds = text.toDouble(&ok);
+    if (!ok || !std::isfinite(seconds) || std::abs(seconds) > 9.2e9)
+        return std::nullopt;
+    return secondsToNs(seconds);
+}
+
+std::optional<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payload, QString* error)
+{
+    QJsonParseError parseError {};
+    const QJsonDocument doc = QJsonDocument::fromJson(payload, &parseError);
+    if (!doc.isObject()) {
+        if (error)
+            *error = parseError.error != QJsonParseError::NoError
+                ? tr("not JSON: %1 at byte %2").arg(parseError.errorString()).arg(parseError.offset)
+                : tr("JSON stamp must be an object");
+        return std::nullopt;
+    }
+    const QJsonObject o = doc.object();
+    const QJsonValue sample = o.value(u"sample"_s);
+    const QJsonValue time = o.value(u"time"_s);
+    if (sample.isUndefined() || time.isUndefined()) {
+        if (error)
+            *error = tr("JSON stamp needs \"sample\" and \"time\"");
+        return std::nullopt;
+    }
+    Decoded d;
+    if (sample.isString()) {
+        const QString id = sample.toString();
+        const std::optional<qint64> asTime = parseTime(id);
+        d.sampleNs = asTime ? *asTime : hashId(id.toUtf8());
+        d.frameId = id;
+    } else if (sample.isDouble()) {
+        const std::optional<qint64> asTime = parseTime(QString::number(sample.toDouble(), 'f', 9));
+        if (!asTime) {
+            if (error)
+                *error = tr("JSON stamp's \"sample\" is not a usable number");
+            return std::nullopt;
+        }
+        d.sampleNs = *asTime;
+    } else {
+        if (error)
+            *error = tr("JSON stamp's \"sample\" must be a string or a number");
+        return std::nullopt;
+    }
+    std::optional<qint64> t;
+    if (time.isString())
+        t = parseTime(time.toString());
+    else if (time.isDouble() && std::isfinite(time.toDouble()) && std::abs(time.toDouble()) < 9.2e9)
+        t = secondsToNs(time.toDouble());
+    if (!t) {
+        if (error)
+            *error = tr("JSON stamp's \"time\" must be seconds or \"sec.nsec\"");
+        return std::nullopt;
+    }
+    d.timeNs = *t;
+    return d;
+}
+
+QByteArray StampCodec::encodeJson(qint64 sampleNs, qint64 timeNs)
+{
+    return "{\"sample\": \"" + timeText(sampleNs).toLatin1() + "\", \"time\": \""
+        + timeText(timeNs).toLatin1() + "\"}";
+}
+
+QString StampCodec::timeText(qint64 ns)
+{
+    const qint64 sec = ns >= 0 ? ns / kNsPerSec : -((-ns + kNsPerSec - 1) / kNsPerSec);
+    const qint64 nsec = ns - sec * kNsPerSec;
+    return QString::number(sec) + u'.' + QString::number(nsec).rightJustified(9, u'0');
+}
+
+std::optional<qint64> StampCodec::decodeFloat64Seconds(const QByteArray& bytes)
+{
+    if (bytes.size() != 8)
+        return std::nullopt;
+    double v = 0;
+    std::memcpy(&v, bytes.constData(), 8); // ROS is little-endian on every platform we build for
+    if (!std::isfinite(v) || std::abs(v) > 9.2e9)
+        return std::nullopt;
+    return secondsToNs(v);
+}

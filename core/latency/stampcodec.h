@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "stampevent.h"
+
+#include <optional>
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QString>
+
+/// The timestamp formats Bridgescope reads, decoded without ROS or MQTT libraries.
+///
+/// - `benchmarking_suite/TimeStamped {Header header; time time}`, ROS 1 serialized: the sample is
+///   `header.stamp`, the stamp is `time`.
+/// - JSON `{"sample": "<id>", "time": <seconds | "sec.nsec">}` from non-ROS devices. A sample id
+///   that reads as a time ("sec.nsec" or seconds) is that time, so it joins with ROS stamps of
+///   the same sample; any other id is hashed (FNV-1a, 64 bit).
+class StampCodec
+{
+    Q_DECLARE_TR_FUNCTIONS(StampCodec)
+public:
+    static constexpr const char* typeName() { return "benchmarking_suite/TimeStamped"; }
+    static constexpr const char* md5() { return "6c3188ca087b31af579ede0943a09e20"; }
+    /// The full definition as roscpp and mqtt_client carry it (with the Header dependency).
+    static QString definition();
+
+    struct Decoded
+    {
+        qint64 sampleNs = 0;
+        qint64 timeNs = 0;
+        quint32 seq = 0;
+        QString frameId;
+    };
+    static std::optional<Decoded> decodeTimeStamped(const QByteArray& bytes, QString* error = nullptr);
+    static QByteArray encodeTimeStamped(const Decoded& stamp);
+
+    static std::optional<Decoded> decodeJson(const QByteArray& payload, QString* error = nullptr);
+    static QByteArray encodeJson(qint64 sampleNs, qint64 timeNs);
+
+    /// "sec.nsec" or decimal seconds as ns since the epoch (exact for "sec.nsec" text).
+    static std::optional<qint64> parseTime(QStringView text);
+    /// ns since the epoch as "sec.nsec", nine digits of nanoseconds (the suite's CSV cells).
+    static QString timeText(qint64 ns);
+    /// A std_msgs/Float64 payload (8 bytes, little-endian) in seconds, as ns.
+    static std::optional<qint64> decodeFloat64Seconds(const QByteArray& bytes);
+};

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// ECDFs: exact steps, and the reduction for drawing that moves no step by more than a column.
+#include "latency/ecdf.h"
+#include "latency/latencyseries.h"
+
+#include <cmath>
+#include <QTest>
+#include <random>
+
+class TestEcdf : public QObject
+{
+    Q_OBJECT
+private:
+    /// Where the reduced curve first reaches `level` (its x), or NaN.
+    static double firstReach(const QList<QPointF>& curve, double level)
+    {
+        for (const QPointF& p : curve)
+            if (p.y() >= level - 1e-12)
+                return p.x();
+        return std::nan("");
+    }
+
+private slots:
+    void stepsAreExact()
+    {
+        LatencySeries s;
+        for (qint64 v : {3, 1, 3, 2})
+            s.append(v * 1'000'000);
+        const QList<QPointF> steps = Ecdf::steps(s);
+        QCOMPARE(steps, (QList<QPointF> {{1.0, 0.25}, {2.0, 0.5}, {3.0, 1.0}}));
+    }
+
+    void reductionMovesNoStepByMoreThanAColumn_data()
+    {
+        QTest::addColumn<int>("values");
+        QTest::addColumn<bool>("logScale");
+        QTest::newRow("100k, linear") << 100'000 << false;
+        QTest::newRow("100k, log") << 100'000 << true;
+    }
+
+    void reductionMovesNoStepByMoreThanAColumn()
+    {
+        QFETCH(int, values);
+        QFETCH(bool, logScale);
+        std::mt19937_64 rng(17);
+        std::lognormal_distribution<double> dist(std::log(80.0), 0.08); // ms, like the paper's totals
+        LatencySeries s;
+        s.setWindow(0);
+        for (int i = 0; i < values; ++i)
+            s.append(qint64(dist(rng) * 1e6));
+        const double lo = 50;
+        const double hi = 130;
+        const int columns = 800;
+        const QList<QPointF> reduced = Ecdf::reduced(s, lo, hi, columns, logScale);
+        QVERIFY(reduced.size() <= 2 * columns + 2);
+        for (qsizetype i = 1; i < reduced.size(); ++i) {
+            QVERIFY(reduced[i].x() >= reduced[i - 1].x());
+            QVERIFY(reduced[i].y() >= reduced[i - 1].y());
+        }
+        QCOMPARE(reduced.last().y(), 1.0);
+        const auto px = [&](double x) {
+            return logScale ? (std::log(x) - std::log(lo)) / (std::log(hi) - std::log(lo)) * columns
+                            : (x - lo) / (hi - lo) * columns;
+        };
+        for (const QPointF& step : Ecdf::steps(s)) {
+            if (step.x() < lo || step.x() > hi)
+                continue;
+            const double drawn = firstReach(reduced, step.y());
+            QVERIFY(!std::isnan(drawn));
+            QVERIFY2(std::abs(px(drawn) - px(step.x())) <= 1.0 + 1e-9,
+                     qPrintable(QStringLiteral("step at %1 drawn at %2").arg(step.x()).arg(drawn)));
+        }
+    }
+
+    void valuesInColumnsOfTheirOwnAreDrawnExactly()
+    {
+        // Column width 0.1 ms; values 0.25 ms apart: one per column, so every step is exact.
+        LatencySeries s;
+        s.setWindow(0);
+        for (int k = 0; k < 300; ++k)
+            s.append(50'000'000 + qint64(k) * 250'000 + (k % 7) * 1000);
+        const QList<QPointF> reduced = Ecdf::reduced(s, 50, 130, 800);
+        const QList<QPointF> steps = Ecdf::steps(s);
+        QCOMPARE(steps.size(), 300);
+        for (const QPointF& step : steps)
+            QCOMPARE(firstReach(reduced, step.y()), step.x());
+    }
+
+    void valuesOutsideTheAxisSetTheLevels()
+    {
+        LatencySeries s;
+        for (qint64 v : {1, 5, 10, 20})
+            s.append(v * 1'000'000);
+        const QList<QPointF> r = Ecdf::reduced(s, 4, 12, 100);
+        QCOMPARE(r.first(), QPointF(4, 0.25)); // 1 ms lies left of the axis
+        QCOMPARE(r.last(), QPointF(12, 0.75)); // 20 ms lies right of it
+        QVERIFY(Ecdf::reduced(s, 0, 12, 100, true).isEmpty()); // a log axis cannot start at 0
+    }
+
+    // The reduction's cost depends on the columns, not on the values (regression guard for a
+    // window of a million samples on a 30 Hz redraw).
+    void reductionOfAMillionValuesIsBoundedByColumns()
+    {
+        LatencySeries s;
+        s.setWindow(0);
+        for (int i = 0; i < 1'000'000; ++i)
+            s.append(qint64(i) * 997 % 100'000'000);
+        const QList<QPointF> r = Ecdf::reduced(s, 0, 100, 1000);
+        QVERIFY(r.size() <= 2002);
+        QCOMPARE(r.last().y(), 1.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestEcdf)
+#include "tst_ecdf.moc"

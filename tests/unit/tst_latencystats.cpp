@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+// Statistics of the latency engine against independent references: numpy (run by the test on the
+// same samples) and figures derived by hand below.
+#include "latency/latencyengine.h"
+#include "latency/latencyreport.h"
+#include "latency/sortedblocks.h"
+#include "pythonref.h"
+#include "record/suitecsv.h"
+#include "syntheticrun.h"
+
+#include <cmath>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+#include <set>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Equal to numpy's figure within what float64 arithmetic on ms values can differ.
+bool close(double ours, double theirs)
+{
+    if (std::isnan(ours) || std::isnan(theirs))
+        return std::isnan(ours) && std::isnan(theirs);
+    return std::abs(ours - theirs) <= 1e-9 + 1e-10 * std::abs(theirs);
+}
+
+void compareStats(const QString& what, const LatencyStats& ours, const QJsonObject& theirs)
+{
+    QCOMPARE(ours.count, theirs.value(u"count"_s).toInteger());
+    if (ours.count == 0)
+        return;
+    const std::pair<const char*, double> figures[]
+        = {{"mean_ms", ours.mean}, {"median_ms", ours.median}, {"std_ms", ours.std},
+           {"min_ms", ours.min},   {"max_ms", ours.max},       {"p90_ms", ours.p90},
+           {"p95_ms", ours.p95},   {"p99_ms", ours.p99},       {"p999_ms", ours.p999}};
+    for (const auto& [name, value] : figures) {
+        const QJsonValue ref = theirs.value(QLatin1StringView(name));
+        const double expected = ref.isNull() ? LatencyStats::nan() : ref.toDouble();
+        if (!close(value, expected))
+            QFAIL(qPrintable(u"%1 %2: ours %3, numpy %4"_s.arg(what, QLatin1StringView(name))
+                                 .arg(value, 0, 'g', 17)
+                                 .arg(expected, 0, 'g', 17)));
+    }
+}
+
+LatencyEngine engineFor(const SyntheticRun& run, bool withHosts, qint64 window)
+{
+    Pipeline p(run.topics, int(window));
+    if (withHosts) {
+        const QStringList hosts = run.hosts();
+        for (int i = 0; i < run.topics.size(); ++i)
+            p.setHost(run.topics[i], hosts[i]);
+    }
+    LatencyEngine engine(p);
+    for (const auto& s : run.samples)
+        engine.addSample(s);
+    return engine;
+}
+} // namespace
+
+class TestLatencyStats : public QObject
+{
+    Q_OBJECT
+private slots:
+    void statisticsMatchNumpy_data()
+    {
+        QTest::addColumn<int>("samples");
+        QTest::addColumn<qint64>("offsetNs");
+        QTest::addColumn<bool>("hosts");
+        QTest::addColumn<qint64>("window");
+        QTest::newRow("paper run, whole") << 600 << qint64(0) << false << qint64(0);
+        QTest::newRow("window 600 of 2500") << 2500 << qint64(0) << false << qint64(600);
+        QTest::newRow("two hosts, cloud 250 ms ahead") << 1000 << qint64(250'000'000) << true << qint64(0);
+        QTest::newRow("two hosts, cloud 40 ms behind, window")
+            << 1500 << qint64(-40'000'000) << true << qint64(600);
+        QTest::newRow("one sample") << 1 << qint64(0) << true << qint64(0);
+        QTest::newRow("two samples") << 2 << qint64(3'000'000) << true << qint64(0);
+        QTest::newRow("window larger than the run") << 50 << qint64(0) << true << qint64(600);
+    }
+
+    void statisticsMatchNumpy()
+    {
+        QFETCH(int, samples);
+        QFETCH(qint64, offsetNs);
+        QFETCH(bool, hosts);
+        QFETCH(qint64, window);
+        const SyntheticRun run = SyntheticRun::paper(samples, offsetNs, 42 + quint64(samples));
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(u"run.csv"_s);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(SuiteCsv::write(run.topics, run.samples));
+        f.close();
+
+        const LatencyEngine engine = engineFor(run, hosts, window);
+        QStringList args {csv, u"--window"_s, QString::number(window)};
+        if (hosts)
+            args << u"--hosts"_s << run.hosts().join(u',');
+        const QJsonObject ref = PythonRef::run(u"latency_reference.py"_s, args).object();
+        QVERIFY2(!ref.isEmpty(), "the numpy reference did not run");
+
+        const QJsonArray stages = ref.value(u"stages"_s).toArray();
+        QCOMPARE(stages.size(), engine.pipeline().stageCount());
+        for (int s = 0; s < stages.size(); ++s)
+            compareStats(u"stage %1"_s.arg(s), engine.series(engine.stageSeries(s)).stats(),
+                         stages[s].toObject());
+        compareStats(u"total"_s, engine.series(engine.totalSeries()).stats(),
+                     ref.value(u"total"_s).toObject());
+        if (!hosts) {
+            QCOMPARE(engine.roundTripSeries(), -1);
+            QVERIFY(ref.value(u"communication"_s).isNull());
+            return;
+        }
+        const QJsonObject comm = ref.value(u"communication"_s).toObject();
+        compareStats(u"round trip"_s, engine.series(engine.roundTripSeries()).stats(),
+                     comm.value(u"round_trip"_s).toObject());
+        compareStats(u"one way"_s, engine.series(engine.oneWaySeries()).stats(),
+                     comm.value(u"one_way"_s).toObject());
+        compareStats(u"clock offset"_s, engine.series(engine.clockOffsetSeries()).stats(),
+                     ref.value(u"clock_offset"_s).toObject());
+    }
+
+    // Hand derivation, two hosts: vehicle stamps v0 (send), v1 (out of the vehicle bridge); the
+    // cloud stamps c_in = v1 + d_out + off, c_out = c_in + p; the vehicle gets it back at
+    // v_in = c_out - off + d_back and finishes at v_end = v_in + 1 ms.
+    // Per sample: round trip = total - same-host stages = d_out + d_back;
+    // clock offset = ((c_in - v1) - (v_in - c_out)) / 2 = off + (d_out - d_back) / 2.
+    void derivedCommunicationTwoHosts()
+    {
+        const QStringList topics {u"/v/send"_s,       u"/v/bridge_out"_s, u"/c/bridge_in"_s,
+                                  u"/c/bridge_out"_s, u"/v/bridge_in"_s,  u"/v/done"_s};
+        Pipeline p(topics, 0);
+        for (const QString& t : topics)
+            p.setHost(t, t.startsWith(u"/v"_s) ? u"vehicle"_s : u"cloud"_s);
+        LatencyEngine engine(p);
+        const qint64 ms = 1'000'000;
+        const qint64 off = 250 * ms; // the cloud's clock runs 250 ms ahead
+        // (d_out, d_back, processing) per sample in ms: round trips 30, 40, 50; offsets
+        // 250 + (10-20)/2 = 245, 250 + (20-20)/2 = 250, 250 + (35-15)/2 = 260.
+        const qint64 runs[3][3] = {{10, 20, 5}, {20, 20, 7}, {35, 15, 9}};
+        qint64 base = 1'700'000'000LL * 1'000'000'000LL;
+        for (const auto& r : runs) {
+            const qint64 v0 = base;
+            const qint64 v1 = v0 + 2 * ms;
+            const qint64 cIn = v1 + r[0] * ms + off;
+            const qint64 cOut = cIn + r[2] * ms;
+            const qint64 vIn = cOut - off + r[1] * ms;
+            const qint64 vEnd = vIn + 1 * ms;
+            engine.addSample({v0, v1, cIn, cOut, vIn, vEnd});
+            base += 100 * ms;
+        }
+        QCOMPARE(engine.pipeline().crossings(), (QList<int> {1, 3}));
+        const LatencyStats rt = engine.series(engine.roundTripSeries()).stats();
+        QCOMPARE(rt.count, 3);
+        QCOMPARE(rt.mean, 40.0);
+        QCOMPARE(rt.median, 40.0);
+        QCOMPARE(rt.std, 10.0); // deviations -10, 0, 10: sqrt(200 / 2)
+        QCOMPARE(rt.min, 30.0);
+        QCOMPARE(rt.max, 50.0);
+        const LatencyStats oneWay = engine.series(engine.oneWaySeries()).stats();
+        QCOMPARE(oneWay.mean, 20.0);
+        QCOMPARE(oneWay.std, 5.0);
+        const LatencyStats offset = engine.series(engine.clockOffsetSeries()).stats();
+        QCOMPARE(offset.min, 245.0);
+        QCOMPARE(offset.median, 250.0);
+        QCOMPARE(offset.max, 260.0);
+        QCOMPARE(offset.mean, 755.0 / 3.0);
+        // The raw crossing stages hold the offset; the total does not.
+        QCOMPARE(engine.series(1).stats().mean, (10 + 20 + 35) / 3.0 + 250.0);
+        QCOMPARE(engine.series(engine.totalSeries()).stats().mean, 2 + (5 + 7 + 9) / 3.0 + 40 + 1);
+        QCOMPARE(engine.info(engine.clockOffsetSeries()).hostTo, u"cloud"_s);
+    }
+
+    // Hand derivation for 1..10 ms: mean 5.5; variance sum((k - 5.5)^2) / 9 = 82.5 / 9; the
+    // median sits between ranks 4 and 5 (5.5); p90 at virtual index 0.9 * 9 = 8.1 -> 9 + 0.1 =
+    // 9.1; p99.9 at 8.991 -> 9.991.
+    void percentilesByHand()
+    {
+        LatencySeries s;
+        s.setWindow(0);
+        for (int k : {7, 3, 10, 1, 5, 9, 2, 8, 6, 4})
+            s.append(qint64(k) * 1'000'000);
+        const LatencyStats st = s.stats();
+        QCOMPARE(st.mean, 5.5);
+        QCOMPARE(st.median, 5.5);
+        QVERIFY(close(st.std, std::sqrt(82.5 / 9.0)));
+        QVERIFY(close(st.p90, 9.1));
+        QVERIFY(close(st.p99, 9.91));
+        QVERIFY(close(st.p999, 9.991));
+        QCOMPARE(st.min, 1.0);
+        QCOMPARE(st.max, 10.0);
+    }
+
+    void undefinedFiguresAreNaNAndNull()
+    {
+        LatencySeries s;
+        QVERIFY(std::isnan(s.stats().mean));
+        s.append(1'500'000);
+        QCOMPARE(s.stats().mean, 1.5);
+        QVERIFY(std::isnan(s.stats().std));
+        QVERIFY(LatencyReport::statsJson(s.stats()).value(u"std_ms"_s).isNull());
+    }
+
+    // The incremental window equals a fresh computation over the last N values, whatever the
+    // order of appends, window changes and duplicate values.
+    void windowIsIncrementalAndExact()
+    {
+        std::mt19937_64 rng(7);
+        std::uniform_int_distribution<qint64> value(0, 50); // many duplicates
+        LatencySeries live;
+        live.setWindow(100);
+        std::vector<qint64> all;
+        for (int i = 0; i < 5000; ++i) {
+            const qint64 v = value(rng) * 1000;
+            live.append(v);
+            all.push_back(v);
+            if (i == 2500)
+                live.setWindow(37);
+            if (i % 97 == 0 || i == 4999) {
+                const qint64 w = live.window();
+                LatencySeries fresh;
+                fresh.setWindow(0);
+                for (std::size_t k = all.size() > std::size_t(w) ? all.size() - std::size_t(w) : 0;
+                     k < all.size(); ++k)
+                    fresh.append(all[k]);
+                const LatencyStats a = live.stats();
+                const LatencyStats b = fresh.stats();
+                QCOMPARE(a.count, b.count);
+                QVERIFY(close(a.mean, b.mean));
+                QVERIFY(close(a.std, b.std));
+                QCOMPARE(a.median, b.median);
+                QCOMPARE(a.p99, b.p99);
+                QCOMPARE(a.min, b.min);
+                QCOMPARE(a.max, b.max);
+            }
+        }
+        QCOMPARE(live.totalCount(), 5000);
+    }
+
+    void sortedBlocksBehaveLikeAMultiset()
+    {
+        std::mt19937_64 rng(11);
+        std::uniform_int_distribution<qint64> value(-3000, 3000);
+        SortedBlocks blocks;
+        std::multiset<qint64> ref;
+        std::vector<qint64> inserted;
+        for (int i = 0; i < 60000; ++i) {
+            if (ref.empty() || rng() % 3 != 0) {
+                const qint64 v = value(rng);
+                blocks.insert(v);
+                ref.insert(v);
+                inserted.push_back(v);
+            } else {
+                const qint64 v = inserted[rng() % inserted.size()];
+                const bool there = ref.count(v) > 0;
+                QCOMPARE(blocks.erase(v), there);
+                if (there)
+                    ref.erase(ref.find(v));
+            }
+            if (i % 1000 == 0) {
+                QCOMPARE(blocks.size(), qint64(ref.size()));
+                QCOMPARE(blocks.toVector(), std::vector<qint64>(ref.begin(), ref.end()));
+                const qint64 probe = value(rng);
+                QCOMPARE(blocks.countBelow(probe),
+                         qint64(std::distance(ref.begin(), ref.lower_bound(probe))));
+                QCOMPARE(blocks.countAtMost(probe),
+                         qint64(std::distance(ref.begin(), ref.upper_bound(probe))));
+                if (!ref.empty()) {
+                    const qint64 k = qint64(rng() % ref.size());
+                    QCOMPARE(blocks.at(k), *std::next(ref.begin(), k));
+                }
+            }
+        }
+        QVERIFY(blocks.blockCount() > 1);
+    }
+
+    void whatTheEngineCounts()
+    {
+        const SyntheticRun run = SyntheticRun::paper(10, 0, 1);
+        LatencyEngine engine(Pipeline(run.topics));
+        QCOMPARE(engine.seriesCount(), 12); // 11 stages and the total, no hosts: nothing derived
+        engine.addSample(run.samples[0]);
+        engine.addSample({1, 2}); // wrong width: ignored
+        QCOMPARE(engine.samples(), 1);
+        engine.ingest(LatencyValue {u"/mqtt_client/latencies/pointcloud"_s, 19'000'000, 0});
+        QCOMPARE(engine.seriesCount(), 13);
+        QCOMPARE(engine.info(12).kind, LatencyEngine::Kind::External);
+        QCOMPARE(engine.series(12).stats().mean, 19.0);
+        engine.reset();
+        QCOMPARE(engine.samples(), 0);
+        QCOMPARE(engine.series(0).count(), 0);
+        QCOMPARE(engine.seriesCount(), 13);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLatencyStats)
+#include "tst_latencystats.moc"

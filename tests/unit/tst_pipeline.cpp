@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// Pipelines: the suite's metrics-logger files, the hosts extension, host guessing, stage labels,
+// and finding a pipeline in stamps alone.
+#include "fixtures.h"
+#include "latency/pipeline.h"
+#include "latency/pipelinediscovery.h"
+#include "syntheticrun.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+#include <random>
+
+using namespace Qt::StringLiterals;
+
+class TestPipeline : public QObject
+{
+    Q_OBJECT
+private slots:
+    void readsTheSuitesMetricsLoggerFiles_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("topics");
+        QTest::newRow("mqtt interface") << u"metrics_logger_mqtt_interface.yaml"_s << 12;
+        QTest::newRow("transmission only") << u"metrics_logger_mqtt_interface_transmission-only.yaml"_s << 2;
+        QTest::newRow("in vehicle") << u"metrics_logger_in_vehicle.yaml"_s << 4;
+        QTest::newRow("overlay") << u"metrics_logger_overlay.yaml"_s << 4;
+    }
+
+    void readsTheSuitesMetricsLoggerFiles()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, topics);
+        QString error;
+        const std::optional<Pipeline> p
+            = Pipeline::load(Fixtures::path(u"benchmarking_suite/"_s + file), &error);
+        QVERIFY2(p, qPrintable(error));
+        QCOMPARE(p->topicCount(), topics);
+        QCOMPARE(p->window(), 600);
+        QVERIFY(p->topics().first().startsWith(u"/benchmarking_suite/timestamps/"_s));
+        QVERIFY(!p->hasHosts());
+    }
+
+    void hostsExtensionRoundTrips()
+    {
+        std::optional<Pipeline> p
+            = Pipeline::load(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
+        QVERIFY(p);
+        const QHash<QString, QString> guessed = Pipeline::guessHosts(p->topics());
+        for (auto it = guessed.cbegin(); it != guessed.cend(); ++it)
+            p->setHost(it.key(), it.value());
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY2(p->save(dir.filePath(u"p.yaml"_s), &error), qPrintable(error));
+        const std::optional<Pipeline> back = Pipeline::load(dir.filePath(u"p.yaml"_s), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(*back, *p);
+    }
+
+    // The paper's pipeline: the vehicle's benchmark IO and bridge, the cloud's bridge and the
+    // detection, and back. "pointcloud" is not "cloud": names are split into words.
+    void guessesThePapersHosts()
+    {
+        const std::optional<Pipeline> p
+            = Pipeline::load(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
+        QVERIFY(p);
+        const QHash<QString, QString> hosts = Pipeline::guessHosts(p->topics());
+        QStringList got;
+        for (const QString& t : p->topics())
+            got << hosts.value(t);
+        QCOMPARE(got, SyntheticRun::paper(1, 0, 1).hosts());
+        Pipeline withHosts = *p;
+        for (auto it = hosts.cbegin(); it != hosts.cend(); ++it)
+            withHosts.setHost(it.key(), it.value());
+        QCOMPARE(withHosts.crossings(), (QList<int> {2, 8}));
+        QCOMPARE(withHosts.outAndReturnCrossings(), std::make_optional(std::make_pair(2, 8)));
+        QCOMPARE(withHosts.stageLabel(1), u"mqtt_interface_vehicle/pointcloud (in → out)"_s);
+        QCOMPARE(withHosts.stageLabel(2),
+                 u"mqtt_interface_vehicle/pointcloud/out → mqtt_interface_cloud/pointcloud/in"_s);
+        QCOMPARE(withHosts.shortTopic(0), u"pointcloud"_s);
+    }
+
+    void badPipelinesSayWhereAndWhy_data()
+    {
+        QTest::addColumn<QByteArray>("yaml");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("not yaml") << QByteArray("topics_in_order: [a,\n  b") << u"line"_s;
+        QTest::newRow("no topics") << QByteArray("metrics_window: 5\n") << u"topics_in_order is missing"_s;
+        QTest::newRow("window") << QByteArray("topics_in_order: [/a, /b]\nmetrics_window: lots\n")
+                                << u"line 2"_s;
+        QTest::newRow("host of a stranger")
+            << QByteArray("topics_in_order: [/a, /b]\nhosts:\n  /c: x\n") << u"line 3: hosts names /c"_s;
+        QTest::newRow("nested topic") << QByteArray("topics_in_order:\n  - [/a]\n") << u"line 2"_s;
+    }
+
+    void badPipelinesSayWhereAndWhy()
+    {
+        QFETCH(QByteArray, yaml);
+        QFETCH(QString, message);
+        QString error;
+        QVERIFY(!Pipeline::fromYaml(yaml, &error));
+        QVERIFY2(error.contains(message), qPrintable(error));
+    }
+
+    void duplicateTopicsCountOnceAndSlashesDoNotMatter()
+    {
+        const Pipeline p({u"/a/x"_s, u"/a/y"_s, u"/a/x"_s, u"a/y"_s, u"/a/z"_s});
+        QCOMPARE(p.topics(), (QStringList {u"/a/x"_s, u"/a/y"_s, u"/a/z"_s}));
+        QCOMPARE(p.indexOf(u"a/z"), 2);
+        QCOMPARE(p.indexOf(u"/a/y"), 1);
+        QCOMPARE(p.indexOf(u"/a"), -1);
+    }
+
+    // Stamps of the paper's twelve topics, arriving in random order over ROS and MQTT spellings,
+    // give back the pipeline in order, with hosts.
+    void discoveryOrdersTopicsByTheirTimeInTheSample()
+    {
+        const SyntheticRun run = SyntheticRun::paper(50, 3'000'000, 5);
+        std::vector<StampEvent> events;
+        for (const auto& s : run.samples)
+            for (int t = 0; t < run.topics.size(); ++t) {
+                const QString topic = t % 2 ? run.topics[t].mid(1) : run.topics[t]; // MQTT drops the '/'
+                events.push_back({topic, s.front(), s[std::size_t(t)], 0});
+            }
+        std::mt19937 rng(9);
+        std::shuffle(events.begin(), events.end(), rng);
+        PipelineDiscovery d;
+        for (const StampEvent& e : events)
+            d.add(e);
+        d.add(events.front()); // a duplicate changes nothing
+        // Topic 1 also seen on ROS: its ROS name wins; the others keep the spelling they came with.
+        d.add({run.topics[1], run.samples[0].front(), run.samples[0][1], 0});
+        QCOMPARE(d.completeSamples(), 50);
+        const Pipeline p = d.propose();
+        QStringList expected = run.topics;
+        for (int t = 3; t < expected.size(); t += 2)
+            expected[t] = expected[t].mid(1);
+        QCOMPARE(p.topics(), expected);
+        QCOMPARE(p.host(3), u"cloud"_s);
+        QCOMPARE(p.host(11), u"vehicle"_s);
+        QCOMPARE(d.stampCount(run.topics[3]), 50u);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPipeline)
+#include "tst_pipeline.moc"

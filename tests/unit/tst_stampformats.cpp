@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// The formats stamps come in: TimeStamped (checked against genmsg), JSON stamps, Float64
+// latencies, and the suite's timestamp CSV (checked against Python's csv writer).
+#include "fixtures.h"
+#include "latency/stampcodec.h"
+#include "pythonref.h"
+#include "record/suitecsv.h"
+#include "syntheticrun.h"
+
+#include <cstring>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+class TestStampFormats : public QObject
+{
+    Q_OBJECT
+private slots:
+    void timeStampedMatchesTheSuitesMessageFile()
+    {
+        const QJsonObject ref
+            = PythonRef::run(u"msg_md5.py"_s,
+                             {u"benchmarking_suite/TimeStamped"_s, Fixtures::path(u"benchmarking_suite"_s)})
+                  .object();
+        QVERIFY2(!ref.isEmpty(), "genmsg did not run");
+        QCOMPARE(ref.value(u"md5"_s).toString(), QLatin1StringView(StampCodec::md5()));
+        QCOMPARE(ref.value(u"definition"_s).toString(), StampCodec::definition());
+    }
+
+    void timeStampedRoundTripsAndRejectsBadBytes()
+    {
+        // Bytes as roscpp serializes them: seq, stamp (sec, nsec), frame_id (length + bytes), time.
+        const QByteArray wire = QByteArray::fromHex("07000000"
+                                                    "00f15365"
+                                                    "15cd5b07"
+                                                    "04000000"
+                                                    "6c696461"
+                                                    "01f15365"
+                                                    "00e1f505");
+        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(wire);
+        QVERIFY(d);
+        QCOMPARE(d->seq, 7u);
+        QCOMPARE(d->sampleNs, 0x6553f100LL * 1'000'000'000LL + 123456789);
+        QCOMPARE(d->frameId, u"lida"_s);
+        QCOMPARE(d->timeNs, 0x6553f101LL * 1'000'000'000LL + 100'000'000);
+        QCOMPARE(StampCodec::encodeTimeStamped(*d), wire);
+        QString error;
+        QVERIFY(!StampCodec::decodeTimeStamped(wire.left(20), &error));
+        QVERIFY(error.contains(u"short"_s) || error.contains(u"ends"_s));
+        QVERIFY(!StampCodec::decodeTimeStamped(wire + "x", &error));
+        QByteArray lying = wire;
+        lying[12] = char(0xff); // frame_id length far beyond the message
+        QVERIFY(!StampCodec::decodeTimeStamped(lying, &error));
+        QVERIFY(error.contains(u"frame_id"_s));
+    }
+
+    void jsonStamps_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<qint64>("sample");
+        QTest::addColumn<qint64>("time");
+        const qint64 s = 1'700'000'000LL * 1'000'000'000LL;
+        QTest::newRow("sec.nsec strings")
+            << QByteArray(R"({"sample": "1700000000.000000042", "time": "1700000000.5"})") << s + 42
+            << s + 500'000'000;
+        QTest::newRow("float time") << QByteArray(
+            R"({"sample": "1700000000.000000042", "time": 1700000000.25})")
+                                    << s + 42 << s + 250'000'000;
+        QTest::newRow("numeric sample")
+            << QByteArray(R"({"sample": 12, "time": "3.000000001"})") << 12'000'000'000LL << 3'000'000'001LL;
+    }
+
+    void jsonStamps()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(qint64, sample);
+        QFETCH(qint64, time);
+        const std::optional<StampCodec::Decoded> d = StampCodec::decodeJson(json);
+        QVERIFY(d);
+        QCOMPARE(d->sampleNs, sample);
+        QCOMPARE(d->timeNs, time);
+        const std::optional<StampCodec::Decoded> back
+            = StampCodec::decodeJson(StampCodec::encodeJson(sample, time));
+        QVERIFY(back);
+        QCOMPARE(back->sampleNs, sample);
+        QCOMPARE(back->timeNs, time);
+    }
+
+    void jsonSampleIdsThatAreNotTimesAreHashedConsistently()
+    {
+        const auto a = StampCodec::decodeJson(R"({"sample": "frame-0042", "time": 1.0})");
+        const auto b = StampCodec::decodeJson(R"({"sample": "frame-0042", "time": 2.0})");
+        const auto c = StampCodec::decodeJson(R"({"sample": "frame-0043", "time": 2.0})");
+        QVERIFY(a && b && c);
+        QCOMPARE(a->sampleNs, b->sampleNs);
+        QVERIFY(a->sampleNs != c->sampleNs);
+        QVERIFY(a->sampleNs >= 0);
+    }
+
+    void badJsonStampsSayWhy_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("not json") << QByteArray("{sample") << u"not JSON"_s;
+        QTest::newRow("array") << QByteArray("[1, 2]") << u"object"_s;
+        QTest::newRow("no time") << QByteArray(R"({"sample": "1"})") << u"\"sample\" and \"time\""_s;
+        QTest::newRow("time text") << QByteArray(R"({"sample": "1", "time": "soon"})") << u"\"time\""_s;
+        QTest::newRow("sample object") << QByteArray(R"({"sample": {}, "time": 1})") << u"\"sample\""_s;
+    }
+
+    void badJsonStampsSayWhy()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, message);
+        QString error;
+        QVERIFY(!StampCodec::decodeJson(json, &error));
+        QVERIFY2(error.contains(message), qPrintable(error));
+    }
+
+    void timesParseExactly()
+    {
+        QCOMPARE(StampCodec::parseTime(u"1700000000.123456789"),
+                 std::make_optional(1'700'000'000'123'456'789LL));
+        QCOMPARE(StampCodec::parseTime(u"5.5"), std::make_optional(5'500'000'000LL));
+        QCOMPARE(StampCodec::parseTime(u"5"), std::make_optional(5'000'000'000LL));
+        QCOMPARE(StampCodec::parseTime(u"1e-3"), std::make_optional(1'000'000LL));
+        QVERIFY(!StampCodec::parseTime(u"1.2.3"));
+        QVERIFY(!StampCodec::parseTime(u""));
+        QVERIFY(!StampCodec::parseTime(u"abc"));
+        QCOMPARE(StampCodec::timeText(1'700'000'000'000'000'042LL), u"1700000000.000000042"_s);
+        double seconds = 0.0195;
+        QByteArray f64(8, Qt::Uninitialized);
+        std::memcpy(f64.data(), &seconds, 8);
+        QCOMPARE(StampCodec::decodeFloat64Seconds(f64), std::make_optional(19'500'000LL));
+        QVERIFY(!StampCodec::decodeFloat64Seconds("1234"));
+    }
+
+    void suiteCsvIsWrittenByteForByteLikeTheSuite()
+    {
+        const SyntheticRun run = SyntheticRun::paper(25, 1'234'567, 2);
+        QTemporaryDir dir;
+        QJsonArray samples;
+        for (const auto& s : run.samples) {
+            QJsonArray row;
+            for (qint64 t : s)
+                row.append(t);
+            samples.append(row);
+        }
+        QFile in(dir.filePath(u"in.json"_s));
+        QVERIFY(in.open(QIODevice::WriteOnly));
+        in.write(QJsonDocument(QJsonObject {{u"topics"_s, QJsonArray::fromStringList(run.topics)},
+                                            {u"samples"_s, samples}})
+                     .toJson());
+        in.close();
+        const QString theirs = dir.filePath(u"suite.csv"_s);
+        QVERIFY(!PythonRef::run(u"suite_csv_writer.py"_s, {in.fileName(), theirs}).isNull());
+        QFile f(theirs);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray suiteBytes = f.readAll();
+        QCOMPARE(SuiteCsv::write(run.topics, run.samples), suiteBytes);
+        QString error;
+        const std::optional<SuiteCsv::Data> back = SuiteCsv::parse(suiteBytes, u"suite.csv"_s, &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->topics, run.topics);
+        QCOMPARE(back->samples, run.samples);
+        QCOMPARE(back->malformed, 0);
+    }
+
+    void badCsvRowsAreSkippedWithTheirLineAndCounted()
+    {
+        const QByteArray csv = "\xef\xbb\xbf/a,/b,\"/c,with comma\"\n"
+                               "1.000000000,1.5,2\n"
+                               "1.1,,2.2\n" // incomplete sample
+                               "\n"
+                               "3,x,4\n" // not a time
+                               "4,5\n" // too few cells
+                               "5,6,7\n";
+        QString error;
+        const std::optional<SuiteCsv::Data> d = SuiteCsv::parse(csv, u"run.csv"_s, &error);
+        QVERIFY2(d, qPrintable(error));
+        QCOMPARE(d->topics, (QStringList {u"/a"_s, u"/b"_s, u"/c,with comma"_s}));
+        QCOMPARE(d->samples.size(), 2u);
+        QCOMPARE(d->samples[1], (std::vector<qint64> {5'000'000'000LL, 6'000'000'000LL, 7'000'000'000LL}));
+        QCOMPARE(d->incomplete, 1);
+        QCOMPARE(d->malformed, 2);
+        QCOMPARE(d->problems.size(), 2);
+        QVERIFY2(d->problems[0].startsWith(u"run.csv:5: column 2 (/b)"_s), qPrintable(d->problems[0]));
+        QVERIFY2(d->problems[1].startsWith(u"run.csv:6: 2 cells"_s), qPrintable(d->problems[1]));
+    }
+
+    void unusableCsvFilesAreRefused_data()
+    {
+        QTest::addColumn<QByteArray>("csv");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("empty") << QByteArray("\n\n") << u"run.csv:3: empty file"_s;
+        QTest::newRow("no header") << QByteArray("1.0,2.0\n") << u"header row missing"_s;
+        QTest::newRow("twice") << QByteArray("/a,/a\n") << u"appears twice"_s;
+        QTest::newRow("blank name") << QByteArray("/a,\n") << u"column 2"_s;
+    }
+
+    void unusableCsvFilesAreRefused()
+    {
+        QFETCH(QByteArray, csv);
+        QFETCH(QString, message);
+        QString error;
+        QVERIFY(!SuiteCsv::parse(csv, u"run.csv"_s, &error));
+        QVERIFY2(error.contains(message), qPrintable(error));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStampFormats)
+#include "tst_stampformats.moc"
