@@ -1927,6 +1927,13 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
+    <name>MqttStampDecoder</name>
+    <message>
+        <source>stamped payload shorter than its 8-byte stamp</source>
+        <translation>Nutzlast mit Zeitstempel ist kürzer als ihr 8-Byte-Zeitstempel</translation>
+    </message>
+</context>
+<context>
     <name>MqttTopicTree</name>
     <message>
         <source>(empty level)</source>

@@ -1,20 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
+#include "rosnode.h"
+
 #include <deque>
 #include <mutex>
+#include <QPointer>
 #include <QSet>
-#include <QThread>
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
 
 using namespace Qt::StringLiterals;
-
-namespace ros::master {
-// Exported by libroscpp but not declared in its headers: points master calls at another URI.
-void init(const M_string& remappings);
-} // namespace ros::master
 
 namespace {
 constexpr qint64 kRateWindowNs = 5'000'000'000LL;
@@ -37,13 +33,9 @@ struct RosMonitor::Private
     mutable std::mutex mutex;
     QHash<QString, TopicState> topics;
     QSet<QString> wanted;
-    QThread thread;
-    QObject* worker = nullptr; ///< lives in `thread`; roscpp calls that may block run there
-    ros::CallbackQueue queue; ///< our own, so that other spinners in the process do not interfere
-    std::unique_ptr<ros::NodeHandle> node;
-    std::unique_ptr<ros::AsyncSpinner> spinner;
-    QHash<QString, ros::Subscriber> subscribers; ///< touched on the worker thread only
-    QString masterUri;
+    std::shared_ptr<RosNode> rosNode = RosNode::acquire();
+    int hook = 0;
+    QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
     {
@@ -72,43 +64,45 @@ struct RosMonitor::Private
             t.arrivals.pop_front();
     }
 
-    // On the worker thread.
-    void ensureNode()
+    // On the node's worker thread.
+    void subscribe(ros::NodeHandle& node, const QString& topic, const std::weak_ptr<Private>& self,
+                   QPointer<RosMonitor> owner)
     {
-        if (node)
-            return;
-        ros::M_string remappings;
-        remappings["__master"] = masterUri.toStdString();
-        if (!ros::isInitialized())
-            ros::init(remappings, "bridgescope",
-                      ros::init_options::AnonymousName | ros::init_options::NoSigintHandler
-                          | ros::init_options::NoRosout);
-        // A dead master must not hold a subscription forever.
-        ros::master::setRetryTimeout(ros::WallDuration(2.0));
-        node = std::make_unique<ros::NodeHandle>();
-        node->setCallbackQueue(&queue);
-        spinner = std::make_unique<ros::AsyncSpinner>(1, &queue);
-        spinner->start();
-    }
-
-    void subscribe(const QString& topic, const std::weak_ptr<Private>& self, RosMonitor* owner)
-    {
-        ensureNode();
         subscribers.remove(topic);
-        const std::string name = topic.toStdString();
         boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> cb
             = [self, topic](const topic_tools::ShapeShifter::ConstPtr& msg) {
                   if (auto p = self.lock())
                       p->record(topic, msg);
               };
         try {
-            ros::Subscriber sub = node->subscribe<topic_tools::ShapeShifter>(name, 10, cb);
-            subscribers.insert(topic, sub);
+            subscribers.insert(topic, node.subscribe<topic_tools::ShapeShifter>(topic.toStdString(), 10, cb));
         } catch (const ros::Exception& e) {
             const QString why = QString::fromStdString(e.what());
             QMetaObject::invokeMethod(
-                owner, [owner, topic, why] { emit owner->monitorFailed(topic, why); }, Qt::QueuedConnection);
+                owner,
+                [owner, topic, why] {
+                    if (owner)
+                        emit owner->monitorFailed(topic, why);
+                },
+                Qt::QueuedConnection);
         }
+    }
+
+    void subscribeAll(const std::shared_ptr<Private>& self, QPointer<RosMonitor> owner)
+    {
+        std::weak_ptr<Private> weak = self;
+        rosNode->post([weak, owner](ros::NodeHandle& node) {
+            auto p = weak.lock();
+            if (!p)
+                return;
+            QList<QString> topics;
+            {
+                std::lock_guard<std::mutex> lock(p->mutex);
+                topics = p->wanted.values();
+            }
+            for (const QString& t : std::as_const(topics))
+                p->subscribe(node, t, weak, owner);
+        });
     }
 };
 
@@ -116,47 +110,25 @@ RosMonitor::RosMonitor(QObject* parent)
     : QObject(parent)
     , d(std::make_shared<Private>())
 {
-    d->worker = new QObject;
-    d->worker->moveToThread(&d->thread);
-    connect(&d->thread, &QThread::finished, d->worker, &QObject::deleteLater);
-    d->thread.setObjectName(u"ros-monitor"_s);
-    d->thread.start();
-    d->masterUri = qEnvironmentVariable("ROS_MASTER_URI", u"http://localhost:11311/"_s);
+    std::weak_ptr<Private> weak = d;
+    QPointer<RosMonitor> self(this);
+    d->hook = d->rosNode->addMasterChangedHook([weak, self] {
+        if (auto p = weak.lock())
+            p->subscribeAll(p, self);
+    });
 }
 
 RosMonitor::~RosMonitor()
 {
-    std::shared_ptr<Private> p = d;
-    QMetaObject::invokeMethod(
-        p->worker,
-        [p] {
-            p->subscribers.clear();
-            if (p->spinner)
-                p->spinner->stop();
-            p->spinner.reset();
-            p->node.reset();
-        },
-        Qt::BlockingQueuedConnection);
-    d->thread.quit();
-    d->thread.wait();
+    d->rosNode->removeHook(d->hook);
+    Private* p = d.get();
+    // Subscribers die on the worker, before this object and its figures do.
+    d->rosNode->postAndWait([p] { p->subscribers.clear(); });
 }
 
 void RosMonitor::setMasterUri(const QString& uri)
 {
-    std::shared_ptr<Private> p = d;
-    QMetaObject::invokeMethod(p->worker, [p, uri, this] {
-        if (uri == p->masterUri && p->node)
-            return;
-        p->masterUri = uri;
-        if (!p->node)
-            return; // used when the node starts
-        ros::M_string remappings;
-        remappings["__master"] = uri.toStdString();
-        ros::master::init(remappings);
-        const QList<QString> topics = p->subscribers.keys();
-        for (const QString& t : topics)
-            p->subscribe(t, p, this);
-    });
+    d->rosNode->setMasterUri(uri);
 }
 
 void RosMonitor::monitor(const QString& topic)
@@ -168,8 +140,12 @@ void RosMonitor::monitor(const QString& topic)
         d->wanted.insert(topic);
         d->topics.insert(topic, TopicState());
     }
-    std::shared_ptr<Private> p = d;
-    QMetaObject::invokeMethod(p->worker, [p, topic, this] { p->subscribe(topic, p, this); });
+    std::weak_ptr<Private> weak = d;
+    QPointer<RosMonitor> self(this);
+    d->rosNode->post([weak, topic, self](ros::NodeHandle& node) {
+        if (auto p = weak.lock())
+            p->subscribe(node, topic, weak, self);
+    });
 }
 
 void RosMonitor::unmonitor(const QString& topic)
@@ -179,8 +155,11 @@ void RosMonitor::unmonitor(const QString& topic)
         d->wanted.remove(topic);
         d->topics.remove(topic);
     }
-    std::shared_ptr<Private> p = d;
-    QMetaObject::invokeMethod(p->worker, [p, topic] { p->subscribers.remove(topic); });
+    std::weak_ptr<Private> weak = d;
+    d->rosNode->post([weak, topic](ros::NodeHandle&) {
+        if (auto p = weak.lock())
+            p->subscribers.remove(topic);
+    });
 }
 
 bool RosMonitor::isMonitored(const QString& topic) const
@@ -191,16 +170,7 @@ bool RosMonitor::isMonitored(const QString& topic) const
 
 void RosMonitor::resubscribeAll()
 {
-    std::shared_ptr<Private> p = d;
-    QMetaObject::invokeMethod(p->worker, [p, this] {
-        QList<QString> topics;
-        {
-            std::lock_guard<std::mutex> lock(p->mutex);
-            topics = p->wanted.values();
-        }
-        for (const QString& t : std::as_const(topics))
-            p->subscribe(t, p, this);
-    });
+    d->subscribeAll(d, this);
 }
 
 QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "latency/latencyengine.h"
+#include "latency/pipelinediscovery.h"
+#include "mqtt/mqttstampdecoder.h"
+
+#include <QObject>
+#include <QSet>
+#include <vector>
+
+class LatencyStatsModel;
+class LiveSession;
+class RosStampSource;
+struct RosGraph;
+
+/// The live measurement: stamps from ROS and MQTT, joined by the latency engine, on the live
+/// session's drain tick.
+///
+/// Every `benchmarking_suite/TimeStamped` topic on the master is subscribed, and every MQTT
+/// message is looked at for stamps; without a pipeline of the user's, one is proposed from the
+/// stamps seen (and proposed again when new stamp topics appear). Figures are pushed to the stats
+/// model at most once per drain, and not while paused.
+class MeasureSession : public QObject
+{
+    Q_OBJECT
+public:
+    explicit MeasureSession(LiveSession* live, QObject* parent = nullptr);
+    ~MeasureSession() override;
+
+    const LatencyEngine& engine() const { return m_engine; }
+    LatencyStatsModel* statsModel() const { return m_stats; }
+    const PipelineDiscovery& discovery() const { return m_discovery; }
+    RosStampSource* rosSource() const { return m_ros; }
+
+    /// The user's pipeline: from now on nothing is proposed automatically.
+    void setPipeline(const Pipeline& pipeline);
+    const Pipeline& pipeline() const { return m_engine.pipeline(); }
+    /// Back to proposing a pipeline from the stamps seen.
+    void setAutomatic();
+    bool isAutomatic() const { return m_automatic; }
+
+    void setWindow(qint64 samples);
+    void setTimeoutNs(qint64 ns) { m_engine.setTimeoutNs(ns); }
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+    /// Forgets every value and count; keeps the pipeline.
+    void reset();
+
+    quint64 malformedStamps() const;
+    QString lastStampError() const { return m_mqttDecoder.lastError(); }
+
+    /// Called with every complete sample (for recording).
+    void setSampleListener(LatencyEngine::SampleListener listener)
+    {
+        m_engine.setSampleListener(std::move(listener));
+    }
+
+signals:
+    /// The figures moved (at most once per drain tick).
+    void updated();
+    void pipelineChanged();
+    /// New stamp topics were seen.
+    void stampTopicsChanged();
+
+private:
+    void onGraph(const RosGraph& graph);
+    void onDrained(qint64 nowNs);
+    void updateSubscriptions();
+    void proposeIfNew();
+    void publish();
+
+    LiveSession* m_live;
+    RosStampSource* m_ros;
+    LatencyEngine m_engine;
+    LatencyStatsModel* m_stats;
+    PipelineDiscovery m_discovery;
+    MqttStampDecoder m_mqttDecoder;
+    std::vector<StampEvent> m_pendingStamps;
+    std::vector<LatencyValue> m_pendingLatencies;
+    QSet<QString> m_graphStampTopics;
+    QSet<QString> m_graphLatencyTopics;
+    bool m_automatic = true;
+    bool m_paused = false;
+    int m_proposedTopics = 0;
+    bool m_proposedWithCompleteSamples = false;
+    quint64 m_publishedRevision = ~quint64(0);
+};

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "latency/stampevent.h"
+#include "mqttconnection.h"
+
+#include <QCoreApplication>
+#include <QHash>
+#include <QString>
+#include <vector>
+
+/// Stamps from MQTT, in a batch as the drain timer takes it from the connection:
+/// - `benchmarking_suite/TimeStamped` carried by mqtt_client (its type announcement on
+///   `mqtt_client/ros_msg_type/<topic>`, then ROS-serialized payloads, stamped or not);
+/// - JSON stamps `{"sample": "<id>", "time": <seconds | "sec.nsec">}` on any topic;
+/// - every stamped mqtt_client payload (any type) as a single-stage latency series: receive
+///   time minus the injected send stamp, as mqtt_client computes for `~/latencies/<topic>`.
+///
+/// Stamp topics keep their MQTT names ("a/b"); pipelines match them to ROS names ("/a/b").
+class MqttStampDecoder
+{
+    Q_DECLARE_TR_FUNCTIONS(MqttStampDecoder)
+public:
+    /// The series name of a stamped MQTT topic's latency.
+    static QString latencySeries(const QString& topic) { return QStringLiteral("mqtt:") + topic; }
+
+    void decode(const std::vector<MqttMessage>& batch, std::vector<StampEvent>& stamps,
+                std::vector<LatencyValue>& latencies);
+    void clear();
+
+    quint64 malformed() const { return m_malformed; }
+    QString lastError() const { return m_lastError; }
+
+private:
+    struct TopicType
+    {
+        bool timeStamped = false;
+        bool stamped = false;
+    };
+    void fail(const QString& topic, const QString& why);
+
+    QHash<QString, TopicType> m_types; ///< by data topic, from the announcements
+    quint64 m_malformed = 0;
+    QString m_lastError;
+};

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+#include "rosnode.h"
+
+#include <map>
+#include <mutex>
+#include <QObject>
+#include <QThread>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+
+using namespace Qt::StringLiterals;
+
+namespace ros::master {
+// Exported by libroscpp but not declared in its headers: points master calls at another URI.
+void init(const M_string& remappings);
+} // namespace ros::master
+
+struct RosNode::Private
+{
+    QThread thread;
+    QObject* worker = nullptr; ///< lives in `thread`
+    ros::CallbackQueue queue; ///< our own, so that other spinners in the process do not interfere
+    std::unique_ptr<ros::NodeHandle> node;
+    std::unique_ptr<ros::AsyncSpinner> spinner;
+    QString masterUri; ///< touched on the worker only
+    std::mutex hookMutex;
+    std::map<int, std::function<void()>> hooks;
+    int nextHook = 1;
+
+    // On the worker thread.
+    void ensureNode()
+    {
+        if (node)
+            return;
+        ros::M_string remappings;
+        remappings["__master"] = masterUri.toStdString();
+        if (!ros::isInitialized())
+            ros::init(remappings, "bridgescope",
+                      ros::init_options::AnonymousName | ros::init_options::NoSigintHandler
+                          | ros::init_options::NoRosout);
+        else
+            ros::master::init(remappings); // an earlier node of this process may have used another master
+        // A dead master must not hold a subscription forever.
+        ros::master::setRetryTimeout(ros::WallDuration(2.0));
+        node = std::make_unique<ros::NodeHandle>();
+        node->setCallbackQueue(&queue);
+        spinner = std::make_unique<ros::AsyncSpinner>(1, &queue);
+        spinner->start();
+    }
+
+    void runHooks()
+    {
+        std::map<int, std::function<void()>> copy;
+        {
+            std::lock_guard<std::mutex> lock(hookMutex);
+            copy = hooks;
+        }
+        for (const auto& [id, hook] : copy)
+            hook();
+    }
+};
+
+std::shared_ptr<RosNode> RosNode::acquire()
+{
+    static std::mutex mutex;
+    static std::weak_ptr<RosNode> shared;
+    std::lock_guard<std::mutex> lock(mutex);
+    std::shared_ptr<RosNode> node = shared.lock();
+    if (!node) {
+        node.reset(new RosNode);
+        shared = node;
+    }
+    return node;
+}
+
+RosNode::RosNode()
+    : d(std::make_unique<Private>())
+{
+    d->worker = new QObject;
+    d->worker->moveToThread(&d->thread);
+    QObject::connect(&d->thread, &QThread::finished, d->worker, &QObject::deleteLater);
+    d->thread.setObjectName(u"ros-node"_s);
+    d->thread.start();
+    d->masterUri = qEnvironmentVariable("ROS_MASTER_URI", u"http://localhost:11311/"_s);
+}
+
+RosNode::~RosNode()
+{
+    Private* p = d.get();
+    postAndWait([p] {
+        if (p->spinner)
+            p->spinner->stop();
+        p->spinner.reset();
+        p->node.reset();
+    });
+    d->thread.quit();
+    d->thread.wait();
+}
+
+void RosNode::setMasterUri(const QString& uri)
+{
+    Private* p = d.get();
+    QMetaObject::invokeMethod(p->worker, [p, uri] {
+        if (uri == p->masterUri)
+            return;
+        p->masterUri = uri;
+        if (!p->node)
+            return; // used when the node starts
+        ros::M_string remappings;
+        remappings["__master"] = uri.toStdString();
+        ros::master::init(remappings);
+        p->runHooks();
+    });
+}
+
+void RosNode::post(Job job)
+{
+    Private* p = d.get();
+    QMetaObject::invokeMethod(p->worker, [p, job = std::move(job)] {
+        p->ensureNode();
+        job(*p->node);
+    });
+}
+
+void RosNode::postAndWait(const std::function<void()>& job)
+{
+    if (QThread::currentThread() == &d->thread) {
+        job();
+        return;
+    }
+    QMetaObject::invokeMethod(d->worker, job, Qt::BlockingQueuedConnection);
+}
+
+int RosNode::addMasterChangedHook(std::function<void()> hook)
+{
+    std::lock_guard<std::mutex> lock(d->hookMutex);
+    const int id = d->nextHook++;
+    d->hooks.emplace(id, std::move(hook));
+    return id;
+}
+
+void RosNode::removeHook(int id)
+{
+    std::lock_guard<std::mutex> lock(d->hookMutex);
+    d->hooks.erase(id);
+}

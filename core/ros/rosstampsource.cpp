@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: MIT
+#include "rosstampsource.h"
+
+#include "common/eventbuffer.h"
+#include "latency/stampcodec.h"
+#include "rosnode.h"
+
+#include <atomic>
+#include <mutex>
+#include <QHash>
+#include <QPointer>
+#include <ros/ros.h>
+#include <topic_tools/shape_shifter.h>
+
+namespace {
+qint64 wallNs()
+{
+    const ros::WallTime t = ros::WallTime::now();
+    return qint64(t.sec) * 1000000000LL + t.nsec;
+}
+
+QByteArray serialized(const topic_tools::ShapeShifter& msg)
+{
+    QByteArray bytes(qsizetype(msg.size()), Qt::Uninitialized);
+    ros::serialization::OStream stream(reinterpret_cast<uint8_t*>(bytes.data()), uint32_t(bytes.size()));
+    msg.write(stream);
+    return bytes;
+}
+} // namespace
+
+struct RosStampSource::Private
+{
+    std::shared_ptr<RosNode> rosNode = RosNode::acquire();
+    int hook = 0;
+    EventBuffer<StampEvent> stamps {200000};
+    EventBuffer<LatencyValue> latencies {200000};
+    std::atomic<quint64> received {0};
+    std::atomic<quint64> malformed {0};
+    std::atomic<quint64> wrongType {0};
+    mutable std::mutex mutex;
+    QSet<QString> wantedStamps; ///< guarded by mutex
+    QSet<QString> wantedLatencies;
+    QHash<QString, ros::Subscriber> subscribers; ///< the node's worker thread only
+
+    // roscpp spinner thread.
+    void onStamp(const QString& topic, const topic_tools::ShapeShifter& msg)
+    {
+        const qint64 now = wallNs();
+        received.fetch_add(1, std::memory_order_relaxed);
+        if (msg.getMD5Sum() != StampCodec::md5()) {
+            wrongType.fetch_add(1, std::memory_order_relaxed);
+            return;
+        }
+        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(serialized(msg));
+        if (!d) {
+            malformed.fetch_add(1, std::memory_order_relaxed);
+            return;
+        }
+        stamps.push(StampEvent {topic, d->sampleNs, d->timeNs, now});
+    }
+
+    void onLatency(const QString& topic, const topic_tools::ShapeShifter& msg)
+    {
+        const qint64 now = wallNs();
+        received.fetch_add(1, std::memory_order_relaxed);
+        if (msg.getMD5Sum() != float64Md5()) {
+            wrongType.fetch_add(1, std::memory_order_relaxed);
+            return;
+        }
+        const std::optional<qint64> ns = StampCodec::decodeFloat64Seconds(serialized(msg));
+        if (!ns) {
+            malformed.fetch_add(1, std::memory_order_relaxed);
+            return;
+        }
+        latencies.push(LatencyValue {topic, *ns, now});
+    }
+
+    // The node's worker thread: makes the subscriptions match what is wanted.
+    void sync(ros::NodeHandle& node, const std::weak_ptr<Private>& self,
+              const QPointer<RosStampSource>& owner, bool again)
+    {
+        QSet<QString> stampTopics;
+        QSet<QString> latencyTopics;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            stampTopics = wantedStamps;
+            latencyTopics = wantedLatencies;
+        }
+        for (auto it = subscribers.begin(); it != subscribers.end();) {
+            if (again || (!stampTopics.contains(it.key()) && !latencyTopics.contains(it.key())))
+                it = subscribers.erase(it);
+            else
+                ++it;
+        }
+        const auto subscribe = [&](const QString& topic, bool stamp) {
+            if (subscribers.contains(topic))
+                return;
+            boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> cb
+                = [self, topic, stamp](const topic_tools::ShapeShifter::ConstPtr& msg) {
+                      if (auto p = self.lock()) {
+                          if (stamp)
+                              p->onStamp(topic, *msg);
+                          else
+                              p->onLatency(topic, *msg);
+                      }
+                  };
+            try {
+                // A deep queue: stamps come in bursts of one per component and must not be lost.
+                subscribers.insert(topic,
+                                   node.subscribe<topic_tools::ShapeShifter>(topic.toStdString(), 1000, cb));
+            } catch (const ros::Exception& e) {
+                const QString why = QString::fromStdString(e.what());
+                QMetaObject::invokeMethod(
+                    owner,
+                    [owner, topic, why] {
+                        if (owner)
+                            emit owner->subscribeFailed(topic, why);
+                    },
+                    Qt::QueuedConnection);
+            }
+        };
+        for (const QString& t : std::as_const(stampTopics))
+            subscribe(t, true);
+        for (const QString& t : std::as_const(latencyTopics))
+            subscribe(t, false);
+    }
+
+    void post(const std::shared_ptr<Private>& self, const QPointer<RosStampSource>& owner, bool again)
+    {
+        std::weak_ptr<Private> weak = self;
+        rosNode->post([weak, owner, again](ros::NodeHandle& node) {
+            if (auto p = weak.lock())
+                p->sync(node, weak, owner, again);
+        });
+    }
+};
+
+RosStampSource::RosStampSource(QObject* parent)
+    : QObject(parent)
+    , d(std::make_shared<Private>())
+{
+    std::weak_ptr<Private> weak = d;
+    QPointer<RosStampSource> self(this);
+    d->hook = d->rosNode->addMasterChangedHook([weak, self] {
+        if (auto p = weak.lock())
+            p->post(p, self, true);
+    });
+}
+
+RosStampSource::~RosStampSource()
+{
+    d->rosNode->removeHook(d->hook);
+    Private* p = d.get();
+    d->rosNode->postAndWait([p] { p->subscribers.clear(); });
+}
+
+void RosStampSource::setMasterUri(const QString& uri)
+{
+    d->rosNode->setMasterUri(uri);
+}
+
+void RosStampSource::setTopics(const QSet<QString>& stampTopics, const QSet<QString>& latencyTopics)
+{
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        if (d->wantedStamps == stampTopics && d->wantedLatencies == latencyTopics)
+            return;
+        d->wantedStamps = stampTopics;
+        d->wantedLatencies = latencyTopics;
+    }
+    d->post(d, this, false);
+}
+
+QSet<QString> RosStampSource::stampTopics() const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->wantedStamps;
+}
+
+QSet<QString> RosStampSource::latencyTopics() const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->wantedLatencies;
+}
+
+void RosStampSource::resubscribeAll()
+{
+    d->post(d, this, true);
+}
+
+std::vector<StampEvent> RosStampSource::takeStamps()
+{
+    return d->stamps.take();
+}
+
+std::vector<LatencyValue> RosStampSource::takeLatencies()
+{
+    return d->latencies.take();
+}
+
+quint64 RosStampSource::received() const
+{
+    return d->received.load(std::memory_order_relaxed);
+}
+
+quint64 RosStampSource::malformed() const
+{
+    return d->malformed.load(std::memory_order_relaxed);
+}
+
+quint64 RosStampSource::wrongType() const
+{
+    return d->wrongType.load(std::memory_order_relaxed);
+}
+
+quint64 RosStampSource::dropped() const
+{
+    return d->stamps.dropped() + d->latencies.dropped();
+}

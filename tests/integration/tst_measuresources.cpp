@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// Stamps from a real rosmaster (a roscpp node publishing TimeStamped and Float64) and a real
+// mosquitto (mqtt_client's wire format, stamped, and JSON stamps) end up as exact statistics.
+#include "common/livesession.h"
+#include "common/measuresession.h"
+#include "latency/latencystatsmodel.h"
+#include "latency/stampcodec.h"
+#include "mqtt/mqttclientwire.h"
+#include "mqtt/mqttconnection.h"
+#include "mqtt/mqttstampdecoder.h"
+#include "testservers.h"
+
+#include <algorithm>
+#include <chrono>
+#include <QAbstractItemModelTester>
+#include <QProcess>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kUs = 1000;
+constexpr qint64 kFirstSample = 1'700'000'000LL * 1'000'000'000LL;
+constexpr int kSamples = 40;
+constexpr double kRate = 20;
+
+qint64 sampleNs(int s)
+{
+    return kFirstSample + qint64(double(s) * 1e9 / kRate);
+}
+
+/// What stamp_publisher does for the stream at `index` with `offsetUs` (and what the test does
+/// on MQTT for its streams).
+qint64 stampNs(int s, int index, qint64 offsetUs)
+{
+    return sampleNs(s) + offsetUs * kUs + qint64(index) * (s % 7) * 100 * kUs;
+}
+
+qint64 wallNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+std::vector<qint64> sortedValues(const LatencySeries& s)
+{
+    return s.sorted().toVector();
+}
+
+class Publisher
+{
+public:
+    Publisher(const TestServers& servers, const QStringList& args)
+    {
+        m_process.setProcessEnvironment(servers.rosEnvironment());
+        m_process.setProcessChannelMode(QProcess::MergedChannels);
+        m_process.start(QStringLiteral(STAMP_PUBLISHER),
+                        QStringList {u"--samples"_s, QString::number(kSamples), u"--rate"_s,
+                                     QString::number(kRate), u"--first-sample"_s,
+                                     QString::number(kFirstSample / 1'000'000'000LL)}
+                            + args);
+    }
+    ~Publisher()
+    {
+        m_process.kill();
+        m_process.waitForFinished();
+    }
+    QString output() { return QString::fromUtf8(m_process.readAll()); }
+
+private:
+    QProcess m_process;
+};
+} // namespace
+
+class TestMeasureSources : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
+        const QProcessEnvironment env = m_servers.rosEnvironment();
+        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
+            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
+        qunsetenv("ROS_HOSTNAME");
+    }
+
+    // Four stamps per sample: two from ROS (vehicle), one through the broker in mqtt_client's
+    // stamped wire format (cloud), one as JSON (vehicle again). Stage values are known exactly.
+    void rosAndMqttStampsJoinIntoExactStages()
+    {
+        LiveSession live;
+        live.setRosMasterUri(m_servers.rosMasterUri());
+        live.connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        MeasureSession measure(&live);
+        QAbstractItemModelTester tester(measure.statsModel());
+        measure.setTimeoutNs(60'000'000'000LL); // ROS subscriptions take a poll or two to appear
+        Pipeline pipeline({u"/bench/a"_s, u"/bench/b"_s, u"/bench/c"_s, u"/bench/d"_s}, 0);
+        pipeline.setHost(u"/bench/a"_s, u"vehicle"_s);
+        pipeline.setHost(u"/bench/b"_s, u"vehicle"_s);
+        pipeline.setHost(u"/bench/c"_s, u"cloud"_s);
+        pipeline.setHost(u"/bench/d"_s, u"vehicle"_s);
+        measure.setPipeline(pipeline);
+        QTRY_COMPARE_WITH_TIMEOUT(live.mqtt()->state(), MqttConnection::State::Connected, 10000);
+
+        Publisher ros(m_servers,
+                      {u"--stamp"_s, u"/bench/a:0"_s, u"--stamp"_s, u"/bench/b:1500"_s, u"--latency"_s,
+                       u"/mqtt_client/latencies/bench/a:0.0195"_s});
+
+        MqttConnection mqtt;
+        mqtt.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QTRY_COMPARE_WITH_TIMEOUT(mqtt.state(), MqttConnection::State::Connected, 10000);
+        const RosMsgTypeInfo type {QLatin1StringView(StampCodec::md5()),
+                                   QLatin1StringView(StampCodec::typeName()), StampCodec::definition(), true};
+        QVERIFY(mqtt.publish(MqttClientWire::typeTopicPrefix() + u"bench/c"_s,
+                             MqttClientWire::encodeType(type), 1, true));
+        for (int s = 0; s < kSamples; ++s) {
+            StampCodec::Decoded d;
+            d.sampleNs = sampleNs(s);
+            d.timeNs = stampNs(s, 2, 20000);
+            QVERIFY(mqtt.publish(u"bench/c"_s,
+                                 MqttClientWire::stamped(wallNs(), StampCodec::encodeTimeStamped(d)), 1));
+            QVERIFY(mqtt.publish(u"bench/d"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 3, 45000)), 1));
+        }
+
+        QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), qint64(kSamples), 40000);
+        const LatencyEngine& e = measure.engine();
+        const qint64 offsets[] = {0, 1500, 20000, 45000};
+        for (int stage = 0; stage < 3; ++stage) {
+            std::vector<qint64> expected;
+            for (int s = 0; s < kSamples; ++s)
+                expected.push_back(stampNs(s, stage + 1, offsets[stage + 1])
+                                   - stampNs(s, stage, offsets[stage]));
+            std::sort(expected.begin(), expected.end());
+            QCOMPARE(sortedValues(e.series(e.stageSeries(stage))), expected);
+        }
+        QCOMPARE(e.counters().dropped(), 0u);
+        QCOMPARE(e.counters().unknownTopic, 0u);
+        // Outbound crossing b -> c takes 18.5 ms + jitter, the return c -> d 25 ms + the same
+        // jitter: the offset estimate is (18.5 - 25) / 2 = -3.25 ms for every sample.
+        const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
+        QCOMPARE(offset.min, -3.25);
+        QCOMPARE(offset.max, -3.25);
+        QCOMPARE(e.series(e.roundTripSeries()).stats().count, kSamples);
+
+        // Single-stage series: mqtt_client's ~/latencies on ROS, and the stamped MQTT payloads.
+        QTRY_VERIFY_WITH_TIMEOUT(e.indexOf(u"ext:/mqtt_client/latencies/bench/a"_s) >= 0
+                                     && e.series(e.indexOf(u"ext:/mqtt_client/latencies/bench/a"_s)).count()
+                                         == kSamples,
+                                 10000);
+        QCOMPARE(e.series(e.indexOf(u"ext:/mqtt_client/latencies/bench/a"_s)).stats().median, 19.5);
+        const int stamped = e.indexOf(u"ext:"_s + MqttStampDecoder::latencySeries(u"bench/c"_s));
+        QVERIFY(stamped >= 0);
+        QCOMPARE(e.series(stamped).count(), kSamples);
+        QVERIFY(e.series(stamped).stats().min >= 0); // same clock, loopback
+        QVERIFY(e.series(stamped).stats().max < 5000);
+
+        // The table shows it all: 3 stages, total, round trip, one way, offset, 2 externals.
+        QCOMPARE(measure.statsModel()->rowCount(), 9);
+        QCOMPARE(measure.statsModel()->index(1, 0).data(LatencyStatsModel::CrossingRole).toBool(), true);
+        QCOMPARE(measure.malformedStamps(), 0u);
+    }
+
+    // Without a pipeline file the stamps order themselves: by mean time within the sample, not
+    // by the order they were announced in.
+    void automaticPipelineFollowsTheStamps()
+    {
+        LiveSession live;
+        live.setRosMasterUri(m_servers.rosMasterUri());
+        MeasureSession measure(&live);
+        measure.setTimeoutNs(60'000'000'000LL);
+        QVERIFY(measure.isAutomatic());
+        Publisher ros(m_servers,
+                      {u"--stamp"_s, u"/auto/vehicle/z:9000"_s, u"--stamp"_s, u"/auto/vehicle/x:0"_s,
+                       u"--stamp"_s, u"/auto/cloud/y:5000"_s});
+        QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), qint64(kSamples), 40000);
+        QCOMPARE(measure.pipeline().topics(),
+                 (QStringList {u"/auto/vehicle/x"_s, u"/auto/cloud/y"_s, u"/auto/vehicle/z"_s}));
+        QCOMPARE(measure.pipeline().crossings(), (QList<int> {0, 1}));
+        QCOMPARE(measure.discovery().stampCount(u"/auto/cloud/y"_s), quint64(kSamples));
+        QVERIFY(measure.engine().clockOffsetSeries() >= 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMeasureSources)
+#include "tst_measuresources.moc"
