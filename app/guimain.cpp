@@ -5,6 +5,7 @@
 #include "configfilecontroller.h"
 #include "discoverpage.h"
 #include "mainwindow.h"
+#include "measurepage.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -40,6 +41,8 @@ QString bridgescopeUsage()
         {u"--ros-master URI"_s, Gui::tr("ROS master (default $ROS_MASTER_URI)")},
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
+        {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
+        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map or measure")},
         {u"-h, --help"_s, Gui::tr("show this help")},
         {u"-v, --version"_s, Gui::tr("show the version")},
     };
@@ -74,7 +77,12 @@ int runGui(int& argc, char** argv)
         u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."), u"URL"_s);
     const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."),
                                     u"URI"_s);
-    parser.addOptions({screenshot, after, broker, master});
+    const QCommandLineOption pipeline(
+        u"pipeline"_s, Gui::tr("Measure with this pipeline (the suite's metrics-logger YAML)."),
+        u"PIPE.yaml"_s);
+    const QCommandLineOption page(u"page"_s, Gui::tr("Open on this page: discover, map or measure."),
+                                  u"PAGE"_s);
+    parser.addOptions({screenshot, after, broker, master, pipeline, page});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
     if (!parser.parse(app.arguments())) {
         CliOutput::err(parser.errorText());
@@ -96,6 +104,23 @@ int runGui(int& argc, char** argv)
     const QStringList files = parser.positionalArguments();
     if (!files.isEmpty())
         window.files()->openFile(files.first());
+    if (parser.isSet(pipeline)) {
+        QString error;
+        if (!window.measurePage()->loadPipeline(parser.value(pipeline), &error)) {
+            CliOutput::err(error);
+            return 2;
+        }
+        window.pages()->setCurrentWidget(window.measurePage());
+    }
+    if (parser.isSet(page)) {
+        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s};
+        const int index = int(names.indexOf(parser.value(page).toLower()));
+        if (index < 0) {
+            CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
+            return 2;
+        }
+        window.pages()->setCurrentIndex(index);
+    }
     window.show();
     if (parser.isSet(screenshot)) {
         const QString png = parser.value(screenshot);

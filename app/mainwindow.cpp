@@ -2,12 +2,14 @@
 #include "mainwindow.h"
 
 #include "common/livesession.h"
+#include "common/measuresession.h"
 #include "config/configdocument.h"
 #include "config/problemmodel.h"
 #include "configeditor.h"
 #include "configfilecontroller.h"
 #include "discoverpage.h"
 #include "mappage.h"
+#include "measurepage.h"
 #include "problemspanel.h"
 
 #include <QApplication>
@@ -26,12 +28,14 @@ using namespace Qt::StringLiterals;
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
     , m_session(new LiveSession(this))
+    , m_measure(new MeasureSession(m_session, this))
     , m_document(new ConfigDocument(this))
     , m_undo(new QUndoStack(this))
     , m_files(new ConfigFileController(m_document, m_undo, this))
     , m_pages(new QTabWidget(this))
     , m_discover(new DiscoverPage(m_session, m_pages))
     , m_map(new MapPage(m_session, m_document, m_undo, m_pages))
+    , m_measurePage(new MeasurePage(m_measure, m_pages))
     , m_configEditor(m_map->editor())
     , m_problemStatus(new QLabel(this))
 {
@@ -39,6 +43,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->setDocumentMode(true);
     m_pages->addTab(m_discover, tr("Discover"));
     m_pages->addTab(m_map, tr("Map"));
+    m_pages->addTab(m_measurePage, tr("Measure"));
     setCentralWidget(m_pages);
     statusBar()->addPermanentWidget(m_problemStatus);
     createMenus();

@@ -6,6 +6,8 @@
 class ConfigDocument;
 class DiscoverPage;
 class MapPage;
+class MeasurePage;
+class MeasureSession;
 class LiveSession;
 class ConfigEditor;
 class ConfigFileController;
@@ -29,6 +31,8 @@ public:
     LiveSession* session() const { return m_session; }
     DiscoverPage* discoverPage() const { return m_discover; }
     MapPage* mapPage() const { return m_map; }
+    MeasurePage* measurePage() const { return m_measurePage; }
+    MeasureSession* measure() const { return m_measure; }
     QTabWidget* pages() const { return m_pages; }
 
 protected:
@@ -40,12 +44,14 @@ private:
     void updateRecentMenu(const QStringList& files);
 
     LiveSession* m_session;
+    MeasureSession* m_measure;
     ConfigDocument* m_document;
     QUndoStack* m_undo;
     ConfigFileController* m_files;
     QTabWidget* m_pages;
     DiscoverPage* m_discover;
     MapPage* m_map;
+    MeasurePage* m_measurePage;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;

@@ -1103,6 +1103,21 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
+    <name>EcdfChart</name>
+    <message>
+        <source>latency [ms]</source>
+        <translation>Latenz [ms]</translation>
+    </message>
+    <message>
+        <source>ECDF</source>
+        <translation>ECDF</translation>
+    </message>
+    <message>
+        <source>Check a series in the table to plot its ECDF</source>
+        <translation>Eine Reihe in der Tabelle ankreuzen, um ihre ECDF zu zeichnen</translation>
+    </message>
+</context>
+<context>
     <name>Gui</name>
     <message>
         <source>Render the main window to PNG and exit.</source>
@@ -1191,6 +1206,26 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
         <translation>'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+    </message>
+    <message>
+        <source>measure with this pipeline</source>
+        <translation>mit dieser Pipeline messen</translation>
+    </message>
+    <message>
+        <source>open on a page: discover, map or measure</source>
+        <translation>auf einer Seite öffnen: discover, map oder measure</translation>
+    </message>
+    <message>
+        <source>Measure with this pipeline (the suite's metrics-logger YAML).</source>
+        <translation>Mit dieser Pipeline messen (die Metrics-Logger-YAML der Suite).</translation>
+    </message>
+    <message>
+        <source>Open on this page: discover, map or measure.</source>
+        <translation>Auf dieser Seite öffnen: discover, map oder measure.</translation>
+    </message>
+    <message>
+        <source>--page takes one of: %1</source>
+        <translation>--page erwartet eins von: %1</translation>
     </message>
 </context>
 <context>
@@ -1380,6 +1415,10 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Messen</translation>
     </message>
 </context>
 <context>
@@ -1684,6 +1723,133 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Health</source>
         <translation>Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurePage</name>
+    <message>
+        <source>&amp;Log scale</source>
+        <translation>&amp;Logarithmisch</translation>
+    </message>
+    <message>
+        <source>Small &amp;multiples</source>
+        <translation>&amp;Einzeldiagramme</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>L&amp;oad Pipeline…</source>
+        <translation>Pipeline &amp;laden …</translation>
+    </message>
+    <message>
+        <source>&amp;Save Pipeline…</source>
+        <translation>Pipeline &amp;speichern …</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automatisch</translation>
+    </message>
+    <message>
+        <source>Find the pipeline in the stamps that arrive: every stamp topic, ordered by its mean time within the samples, hosts guessed from the names</source>
+        <translation>Die Pipeline in den eintreffenden Zeitstempeln finden: jedes Zeitstempel-Topic, geordnet nach seiner mittleren Zeit innerhalb der Proben, Rechner aus den Namen geraten</translation>
+    </message>
+    <message>
+        <source>whole run</source>
+        <translation>ganzer Lauf</translation>
+    </message>
+    <message>
+        <source> samples</source>
+        <translation> Proben</translation>
+    </message>
+    <message>
+        <source>Statistics and ECDFs over the last N complete samples (the paper: 600), or 0 for the whole run</source>
+        <translation>Statistik und ECDFs über die letzten N vollständigen Proben (im Paper: 600), oder 0 für den ganzen Lauf</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>&amp;Fenster:</translation>
+    </message>
+    <message>
+        <source>Freeze the chart and the table; measuring goes on (Ctrl+P)</source>
+        <translation>Diagramm und Tabelle anhalten; gemessen wird weiter (Strg+P)</translation>
+    </message>
+    <message>
+        <source>Forget every sample and count; keep the pipeline (Ctrl+R)</source>
+        <translation>Alle Proben und Zähler vergessen; die Pipeline bleibt (Strg+R)</translation>
+    </message>
+    <message>
+        <source>Remove from Pipeline</source>
+        <translation>Aus der Pipeline entfernen</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <source>Drag a stamp topic into the pipeline, or press Enter to append it</source>
+        <translation>Ein Zeitstempel-Topic in die Pipeline ziehen oder mit Eingabe anhängen</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Pipeline&lt;/b&gt;: stamp topics in the order a sample passes them</source>
+        <translation>&lt;b&gt;Pipeline&lt;/b&gt;: Zeitstempel-Topics in der Reihenfolge, in der eine Probe sie durchläuft</translation>
+    </message>
+    <message>
+        <source>Stamp topics &amp;seen:</source>
+        <translation>&amp;Gesehene Zeitstempel-Topics:</translation>
+    </message>
+    <message>
+        <source>Automatic: waiting for stamps (benchmarking_suite/TimeStamped on ROS or MQTT, or JSON stamps on MQTT).</source>
+        <translation>Automatisch: warte auf Zeitstempel (benchmarking_suite/TimeStamped über ROS oder MQTT, oder JSON-Zeitstempel über MQTT).</translation>
+    </message>
+    <message>
+        <source>Automatic: ordered by the stamps' times, hosts guessed from the names. Drag rows to reorder, double-click a host to change it.</source>
+        <translation>Automatisch: nach den Zeiten der Zeitstempel geordnet, Rechner aus den Namen geraten. Zeilen ziehen zum Umordnen, Rechner doppelklicken zum Ändern.</translation>
+    </message>
+    <message>
+        <source>From %1.</source>
+        <translation>Aus %1.</translation>
+    </message>
+    <message>
+        <source>Edited by hand.</source>
+        <translation>Von Hand bearbeitet.</translation>
+    </message>
+    <message>
+        <source>Samples: %1 complete · %2 dropped · %3 incomplete · %4 duplicate stamps · %5 from unknown topics</source>
+        <translation>Proben: %1 vollständig · %2 verworfen · %3 unvollständig · %4 doppelte Zeitstempel · %5 von unbekannten Topics</translation>
+    </message>
+    <message>
+        <source> · %1 malformed (%2)</source>
+        <translation> · %1 fehlerhaft (%2)</translation>
+    </message>
+    <message>
+        <source> · paused</source>
+        <translation> · angehalten</translation>
+    </message>
+    <message>
+        <source>Load Pipeline</source>
+        <translation>Pipeline laden</translation>
+    </message>
+    <message>
+        <source>Pipelines (*.yaml *.yml);;All files (*)</source>
+        <translation>Pipelines (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save Pipeline</source>
+        <translation>Pipeline speichern</translation>
+    </message>
+    <message>
+        <source>Pipelines (*.yaml *.yml)</source>
+        <translation>Pipelines (*.yaml *.yml)</translation>
     </message>
 </context>
 <context>
@@ -2292,6 +2458,35 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
+    <name>PipelineModel</name>
+    <message>
+        <source>The machine whose clock stamps this topic; stages between different hosts are crossings.</source>
+        <translation>Der Rechner, dessen Uhr dieses Topic stempelt; Stufen zwischen verschiedenen Rechnern sind Übergänge.</translation>
+    </message>
+    <message>
+        <source>%1
+The stage from the previous stamp crosses from %2 to %3.</source>
+        <translation>%1
+Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Stamp topic</source>
+        <translation>Zeitstempel-Topic</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Rechner</translation>
+    </message>
+    <message>
+        <source>Stamps</source>
+        <translation>Zeitstempel</translation>
+    </message>
+</context>
+<context>
     <name>ProblemModel</name>
     <message>
         <source>1 error</source>
@@ -2636,6 +2831,21 @@ Rückgabewert: 0 Bericht geschrieben, 1 keine vollständige Probe, 2 falsche Opt
     <message>
         <source>JSON stamp's "time" must be seconds or "sec.nsec"</source>
         <translation>"time" des JSON-Zeitstempels muss Sekunden oder "sek.nsek" sein</translation>
+    </message>
+</context>
+<context>
+    <name>StampTopicModel</name>
+    <message>
+        <source>%1  (%2)</source>
+        <translation>%1  (%2)</translation>
+    </message>
+    <message>
+        <source>%1: in the pipeline</source>
+        <translation>%1: in der Pipeline</translation>
+    </message>
+    <message>
+        <source>%1: not in the pipeline; drag it there or press Enter</source>
+        <translation>%1: nicht in der Pipeline; dorthin ziehen oder Eingabe drücken</translation>
     </message>
 </context>
 <context>

@@ -55,6 +55,7 @@ void LatencyEngine::rebuildSeries()
         SeriesInfo info;
         info.id = u"stage:"_s + QString::number(s);
         info.label = p.stageLabel(s);
+        info.detail = p.topics()[s] + u" →\n"_s + p.topics()[s + 1];
         info.kind = Kind::Stage;
         info.stage = s;
         info.crossing = p.isCrossing(s);

@@ -34,6 +34,7 @@ public:
     {
         QString id; ///< stable: "stage:3", "total", "round_trip", "one_way", "clock_offset", "ext:<name>"
         QString label;
+        QString detail; ///< stages: both topics in full
         Kind kind = Kind::Stage;
         int stage = -1;
         bool crossing = false;

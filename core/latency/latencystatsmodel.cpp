@@ -141,8 +141,11 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
     case Qt::ToolTipRole:
         if (index.column() == SeriesColumn) {
             if (r.info.crossing)
-                return tr("Crosses from %1 to %2: the raw value includes the clock offset between the hosts.")
-                    .arg(r.info.hostFrom, r.info.hostTo);
+                return QString(
+                    r.info.detail + u'\n'
+                    + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
+                         "hosts.")
+                          .arg(r.info.hostFrom, r.info.hostTo));
             if (r.info.kind == LatencyEngine::Kind::RoundTrip)
                 return tr("Derived per sample: total minus every stage that stays on one host.");
             if (r.info.kind == LatencyEngine::Kind::OneWay)
@@ -152,7 +155,7 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
                     "((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.");
             if (r.info.kind == LatencyEngine::Kind::External)
                 return tr("Measured by the bridge itself (single-stage series).");
-            return {};
+            return r.info.detail;
         }
         if (index.column() != CountColumn && !std::isnan(value()))
             return QString(QString::number(value(), 'g', 17) + u" ms"_s);

@@ -232,10 +232,15 @@ QString Pipeline::shortTopic(int topicIndex) const
     return rest.isEmpty() ? t : rest;
 }
 
-QString Pipeline::stageLabel(int stage) const
+QString Pipeline::component(int topicIndex) const
 {
-    if (stage < 0 || stage >= stageCount())
-        return {};
+    const QString t = shortTopic(topicIndex);
+    const qsizetype slash = t.indexOf(u'/');
+    return slash > 0 ? t.left(slash) : t;
+}
+
+QString Pipeline::longStageLabel(int stage) const
+{
     const QString a = shortTopic(stage);
     const QString b = shortTopic(stage + 1);
     // Within one component ("x/data/in" -> "x/data/out"), name the component once.
@@ -244,6 +249,24 @@ QString Pipeline::stageLabel(int stage) const
     if (slashA > 0 && slashA == slashB && a.left(slashA) == b.left(slashB))
         return tr("%1 (%2 → %3)").arg(a.left(slashA), a.mid(slashA + 1), b.mid(slashB + 1));
     return tr("%1 → %2").arg(a, b);
+}
+
+QString Pipeline::stageLabel(int stage) const
+{
+    if (stage < 0 || stage >= stageCount())
+        return {};
+    // Between components, the components say it ("mqtt_interface_vehicle → mqtt_interface_cloud"),
+    // unless another stage would read the same.
+    const auto brief = [this](int s) {
+        const QString a = component(s);
+        const QString b = component(s + 1);
+        return a == b ? longStageLabel(s) : tr("%1 → %2").arg(a, b);
+    };
+    const QString label = brief(stage);
+    for (int s = 0; s < stageCount(); ++s)
+        if (s != stage && brief(s) == label)
+            return longStageLabel(stage);
+    return label;
 }
 
 QHash<QString, QString> Pipeline::guessHosts(const QStringList& topics)

@@ -50,8 +50,13 @@ public:
     /// With exactly one crossing away from the first stamp's host and one back to it: (out, return).
     std::optional<std::pair<int, int>> outAndReturnCrossings() const;
 
-    /// "mqtt_interface_vehicle/pointcloud/in → …/out": a short label for stage i.
+    /// A short label for stage i: "mqtt_interface_vehicle → mqtt_interface_cloud" between
+    /// components, "mqtt_interface_vehicle/pointcloud (in → out)" within one.
     QString stageLabel(int stage) const;
+    /// The stage's two topics without their common prefix.
+    QString longStageLabel(int stage) const;
+    /// The first name part after the common prefix ("mqtt_interface_vehicle").
+    QString component(int topicIndex) const;
     /// The topic without the prefix all topics share.
     QString shortTopic(int topicIndex) const;
 

@@ -10,6 +10,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rostopicmodel.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 
 #include <QAbstractItemModelTester>
 #include <QLabel>
@@ -27,20 +28,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-QModelIndex findTopic(QAbstractItemModel* model, const QString& topic, int role,
-                      const QModelIndex& parent = {})
-{
-    for (int r = 0; r < model->rowCount(parent); ++r) {
-        const QModelIndex i = model->index(r, 0, parent);
-        if (i.data(role).toString() == topic)
-            return i;
-        const QModelIndex deeper = findTopic(model, topic, role, i);
-        if (deeper.isValid())
-            return deeper;
-    }
-    return {};
-}
-
 QStringList fieldNames(QAbstractItemModel* model, const QModelIndex& parent = {})
 {
     QStringList out;
@@ -80,8 +67,7 @@ private slots:
         QVERIFY(m_servers.startMosquitto());
         QVERIFY(m_servers.startRosMaster());
         const QProcessEnvironment env = m_servers.rosEnvironment();
-        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
-            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
+        m_servers.exportRosEnvironment();
         m_pub = std::make_unique<QProcess>();
         m_pub->setProcessEnvironment(env);
         m_pub->start(u"rostopic"_s,
@@ -122,39 +108,43 @@ private slots:
 
         // Both sides fill up.
         QTRY_VERIFY_WITH_TIMEOUT(
-            findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole).isValid(),
+            ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole)
+                .isValid(),
             15000);
         QTRY_VERIFY_WITH_TIMEOUT(
-            findTopic(page->rosView()->model(), u"/vehicle/pose"_s, RosTopicModel::TopicRole).isValid(),
+            ViewHelpers::find(page->rosView()->model(), u"/vehicle/pose"_s, RosTopicModel::TopicRole)
+                .isValid(),
             20000);
         QVERIFY(page->mqttStatus()->text().contains(u"connected"_s));
         QVERIFY(page->rosStatus()->text().contains(u"reachable"_s));
 
         // The MQTT topic that mqtt_client announced decodes into fields.
         const QModelIndex pose
-            = findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole);
+            = ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole);
         page->mqttView()->setCurrentIndex(pose);
         QTRY_VERIFY(page->detail()->title()->text().contains(u"geometry_msgs/PoseStamped"_s));
         const QStringList fields = fieldNames(page->detail()->fieldsView()->model());
         QVERIFY2(fields.contains(u"pose.position.x"_s), qPrintable(fields.join(u' ')));
 
         // JSON shows as fields too.
-        page->mqttView()->setCurrentIndex(
-            findTopic(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole));
+        page->mqttView()->setCurrentIndex(ViewHelpers::find(page->mqttView()->model(), u"fleet/car1/status"_s,
+                                                            MqttTopicTree::FullTopicRole));
         QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model()).contains(u"speed"_s));
         QVERIFY(page->detail()->payloadView()->toPlainText().contains(u"\"gear\": \"D\""_s));
 
         // Filtering by name keeps the path to a match.
         QTest::keyClicks(page->mqttFilter(), u"car1"_s);
         QTRY_VERIFY(
-            !findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole).isValid());
-        QVERIFY(findTopic(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole)
-                    .isValid());
+            !ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole)
+                 .isValid());
+        QVERIFY(
+            ViewHelpers::find(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole)
+                .isValid());
         page->mqttFilter()->clear();
 
         // Monitoring a ROS topic subscribes to it; its last message decodes.
         QAbstractItemModel* ros = page->rosView()->model();
-        const QModelIndex rosPose = findTopic(ros, u"/vehicle/pose"_s, RosTopicModel::TopicRole);
+        const QModelIndex rosPose = ViewHelpers::find(ros, u"/vehicle/pose"_s, RosTopicModel::TopicRole);
         QVERIFY(ros->setData(rosPose.siblingAtColumn(RosTopicModel::MonitorColumn), Qt::Checked,
                              Qt::CheckStateRole));
         page->rosView()->setCurrentIndex(rosPose);
@@ -186,8 +176,8 @@ private slots:
             });
             live.start(100);
             QTest::qWait(3500);
-            page->mqttView()->setCurrentIndex(
-                findTopic(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole));
+            page->mqttView()->setCurrentIndex(ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s,
+                                                                MqttTopicTree::FullTopicRole));
             QTest::qWait(600);
             w.grab().save(dir + u"/discover.png"_s);
         }
@@ -210,10 +200,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(page->mqttStatus()->text().contains(u"connected"_s), 10000);
         run(u"mosquitto_pub"_s, pubArgs() + QStringList {u"-t"_s, u"lidar/raw"_s, u"-f"_s, file});
         QTRY_VERIFY_WITH_TIMEOUT(
-            findTopic(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole).isValid(),
+            ViewHelpers::find(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole)
+                .isValid(),
             10000);
         page->mqttView()->setCurrentIndex(
-            findTopic(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole));
+            ViewHelpers::find(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole));
         QTRY_VERIFY(page->detail()->payloadNote()->text().contains(u"showing the first"_s));
         // Hex, because the bytes are no text; the stored payload is whole.
         QVERIFY(page->detail()->payloadView()->toPlainText().startsWith(u"00000000  00 83 06 89"_s));

@@ -16,6 +16,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rostopicmodel.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -31,47 +32,9 @@
 #include <QUndoStack>
 
 using namespace Qt::StringLiterals;
+using namespace ViewHelpers;
 
 namespace {
-QModelIndex find(QAbstractItemModel* model, const QString& name, int role, const QModelIndex& parent = {})
-{
-    for (int r = 0; r < model->rowCount(parent); ++r) {
-        const QModelIndex i = model->index(r, 0, parent);
-        if (i.data(role).toString() == name)
-            return i;
-        const QModelIndex deeper = find(model, name, role, i);
-        if (deeper.isValid())
-            return deeper;
-    }
-    return {};
-}
-
-// A drag from `from` (its model makes the MIME data, as in a real drag) dropped at `pos` of `to`.
-void dragAndDrop(QAbstractItemView* from, const QModelIndexList& dragged, QAbstractItemView* to,
-                 const QPoint& pos)
-{
-    std::unique_ptr<QMimeData> data(from->model()->mimeData(dragged));
-    QVERIFY(data);
-    QDragEnterEvent enter(pos, Qt::CopyAction | Qt::LinkAction, data.get(), Qt::LeftButton, Qt::NoModifier);
-    QCoreApplication::sendEvent(to->viewport(), &enter);
-    QDragMoveEvent move(pos, Qt::CopyAction | Qt::LinkAction, data.get(), Qt::LeftButton, Qt::NoModifier);
-    QCoreApplication::sendEvent(to->viewport(), &move);
-    QVERIFY2(move.isAccepted(), "the view refused the drag");
-    QDropEvent drop(QPointF(pos), Qt::CopyAction | Qt::LinkAction, data.get(), Qt::LeftButton,
-                    Qt::NoModifier);
-    QCoreApplication::sendEvent(to->viewport(), &drop);
-}
-
-QPoint centre(QAbstractItemView* view, const QModelIndex& index)
-{
-    return view->visualRect(index).center();
-}
-
-QPoint below(QAbstractItemView* view)
-{
-    return QPoint(view->viewport()->width() / 2, view->viewport()->height() - 3);
-}
-
 QStringList mappings(const ConfigDocument& doc)
 {
     QStringList out;
@@ -125,8 +88,7 @@ private slots:
         QVERIFY(m_servers.startMosquitto());
         QVERIFY(m_servers.startRosMaster());
         const QProcessEnvironment env = m_servers.rosEnvironment();
-        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
-            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
+        m_servers.exportRosEnvironment();
         rostopic({u"pub"_s, u"-r"_s, u"5"_s, u"/vehicle/speed"_s, u"std_msgs/Float64"_s, u"data: 12.5"_s});
         rostopic({u"pub"_s, u"-r"_s, u"2"_s, u"/lidar/points"_s, u"std_msgs/String"_s, u"data: scan"_s});
         mqttPub({u"-t"_s, u"plant/temperature"_s, u"-r"_s, u"-m"_s, u"21.5"_s});

@@ -84,10 +84,7 @@ private slots:
     {
         QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
         QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
-        const QProcessEnvironment env = m_servers.rosEnvironment();
-        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
-            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
-        qunsetenv("ROS_HOSTNAME");
+        m_servers.exportRosEnvironment();
     }
 
     // Four stamps per sample: two from ROS (vehicle), one through the broker in mqtt_client's

@@ -67,11 +67,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
-        // roscpp in this process (RosMonitor) reads these.
-        const QProcessEnvironment env = m_servers.rosEnvironment();
-        for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
-            qputenv(qPrintable(key), env.value(key).toLocal8Bit());
-        qunsetenv("ROS_HOSTNAME");
+        m_servers.exportRosEnvironment(); // roscpp in this process (RosMonitor) reads it
     }
 
     void topicsTypesAndNodesAppearAndDisappear()

@@ -4,17 +4,19 @@
 // std_msgs/Float64 latencies, on a deterministic schedule the tests can recompute.
 //
 //   stamp_publisher --samples N --rate HZ --stamp TOPIC:OFFSET_US [--stamp ...]
-//                   [--latency TOPIC:SECONDS] [--first-sample SEC]
+//                   [--latency TOPIC:SECONDS] [--first-sample SEC] [--jitter-us J --seed N]
 //
 // Sample s has header.stamp = first + s / rate; topic i stamps it at
-// stamp + OFFSET_US_i + i * (s % 7) * 100 µs. It waits (up to 30 s) until every topic has a
-// subscriber, then publishes, and prints "done" when finished.
+// stamp + OFFSET_US_i + i * (s % 7) * 100 µs, or, with --jitter-us, at stamp + OFFSET_US_i plus
+// the sum of i exponential delays of mean J µs (stages stay in order, values look measured). It waits (up to
+// 30 s) until every topic has a subscriber, then publishes, and prints "done" when finished.
 #include "latency/stampcodec.h"
 
 #include <cstdio>
 #include <cstring>
 #include <QCoreApplication>
 #include <QStringList>
+#include <random>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
 
@@ -43,6 +45,8 @@ int main(int argc, char** argv)
     ros::init(argc, argv, "stamp_publisher", ros::init_options::AnonymousName | ros::init_options::NoRosout);
     QCoreApplication app(argc, argv);
     int samples = 10;
+    double jitterUs = 0;
+    unsigned seed = 1;
     double rate = 20;
     qint64 firstNs = 1'700'000'000LL * 1'000'000'000LL;
     std::vector<Stream> streams;
@@ -55,6 +59,10 @@ int main(int argc, char** argv)
             samples = val.toInt();
         else if (opt == QStringLiteral("--rate"))
             rate = val.toDouble();
+        else if (opt == QStringLiteral("--jitter-us"))
+            jitterUs = val.toDouble();
+        else if (opt == QStringLiteral("--seed"))
+            seed = val.toUInt();
         else if (opt == QStringLiteral("--first-sample"))
             firstNs = val.toLongLong() * 1'000'000'000LL;
         else if (opt == QStringLiteral("--stamp"))
@@ -96,14 +104,21 @@ int main(int argc, char** argv)
         return 1;
     }
     ros::WallDuration(0.3).sleep(); // let every connection finish its handshake
+    std::mt19937 rng(seed);
+    std::exponential_distribution<double> jitter(jitterUs > 0 ? 1.0 / jitterUs : 1.0);
     ros::WallRate pace(rate);
     for (int s = 0; s < samples && ros::ok(); ++s) {
         StampCodec::Decoded d;
         d.seq = quint32(s);
         d.sampleNs = firstNs + qint64(double(s) * 1e9 / rate);
         d.frameId = QStringLiteral("sample");
+        qint64 extraNs = 0;
         for (std::size_t i = 0; i < streams.size(); ++i) {
-            d.timeNs = d.sampleNs + streams[i].offsetNs + qint64(i) * (s % 7) * 100'000;
+            if (jitterUs > 0 && i > 0)
+                extraNs += qint64(jitter(rng) * 1000.0);
+            else if (jitterUs <= 0)
+                extraNs = qint64(i) * (s % 7) * 100'000;
+            d.timeNs = d.sampleNs + streams[i].offsetNs + extraNs;
             streams[i].pub.publish(shaped(md5, type, definition, StampCodec::encodeTimeStamped(d)));
         }
         for (std::size_t i = 0; i < latencyPubs.size(); ++i) {

@@ -237,3 +237,11 @@ QString TestServers::rosMasterLog() const
 {
     return readLog(m_dir.filePath(u"rosmaster.log"_s));
 }
+
+void TestServers::exportRosEnvironment() const
+{
+    const QProcessEnvironment env = rosEnvironment();
+    for (const QString& key : {u"ROS_MASTER_URI"_s, u"ROS_IP"_s, u"ROS_HOME"_s, u"ROS_LOG_DIR"_s})
+        qputenv(qPrintable(key), env.value(key).toLocal8Bit());
+    qunsetenv("ROS_HOSTNAME");
+}

@@ -51,6 +51,8 @@ public:
     /// Environment for ROS tools and nodes talking to this master (ROS_MASTER_URI, ROS_IP,
     /// ROS_HOME and ROS_LOG_DIR in the test's temporary directory).
     QProcessEnvironment rosEnvironment() const;
+    /// Sets that environment in this process too (roscpp here reads it).
+    void exportRosEnvironment() const;
     /// A directory that lives as long as this object.
     QString tempPath() const { return m_dir.path(); }
     QString errorString() const { return m_error; }

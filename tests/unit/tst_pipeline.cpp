@@ -74,8 +74,15 @@ private slots:
         QCOMPARE(withHosts.crossings(), (QList<int> {2, 8}));
         QCOMPARE(withHosts.outAndReturnCrossings(), std::make_optional(std::make_pair(2, 8)));
         QCOMPARE(withHosts.stageLabel(1), u"mqtt_interface_vehicle/pointcloud (in → out)"_s);
-        QCOMPARE(withHosts.stageLabel(2),
+        QCOMPARE(withHosts.stageLabel(2), u"mqtt_interface_vehicle → mqtt_interface_cloud"_s);
+        QCOMPARE(withHosts.stageLabel(0), u"pointcloud → mqtt_interface_vehicle"_s);
+        QCOMPARE(withHosts.stageLabel(5), u"object_detection (pointcloud → object_list)"_s);
+        QCOMPARE(withHosts.longStageLabel(2),
                  u"mqtt_interface_vehicle/pointcloud/out → mqtt_interface_cloud/pointcloud/in"_s);
+        // Labels that would read the same fall back to the long form.
+        const Pipeline twice({u"/t/a/x"_s, u"/t/b/x"_s, u"/t/a/y"_s, u"/t/b/y"_s});
+        QCOMPARE(twice.stageLabel(0), u"a/x → b/x"_s);
+        QCOMPARE(twice.stageLabel(1), u"b → a"_s);
         QCOMPARE(withHosts.shortTopic(0), u"pointcloud"_s);
     }
 

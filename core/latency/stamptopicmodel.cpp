@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#include "stamptopicmodel.h"
+
+#include "common/topicmime.h"
+#include "pipeline.h"
+#include "pipelinediscovery.h"
+
+StampTopicModel::StampTopicModel(QObject* parent)
+    : QAbstractListModel(parent)
+{ }
+
+void StampTopicModel::update(const PipelineDiscovery& discovery, const Pipeline& pipeline)
+{
+    const QStringList topics = discovery.topics();
+    if (topics.size() > qsizetype(m_rows.size())) {
+        beginInsertRows({}, int(m_rows.size()), int(topics.size()) - 1);
+        for (qsizetype i = qsizetype(m_rows.size()); i < topics.size(); ++i)
+            m_rows.push_back({topics[i], 0, false});
+        endInsertRows();
+    } else if (topics.size() < qsizetype(m_rows.size())) {
+        beginResetModel();
+        m_rows.clear();
+        for (const QString& t : topics)
+            m_rows.push_back({t, 0, false});
+        endResetModel();
+    }
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        m_rows[i].topic = topics[qsizetype(i)]; // a ROS spelling may have replaced the MQTT one
+        m_rows[i].stamps = discovery.stampCount(m_rows[i].topic);
+        m_rows[i].inPipeline = pipeline.indexOf(m_rows[i].topic) >= 0;
+    }
+    if (!m_rows.empty())
+        emit dataChanged(index(0), index(int(m_rows.size()) - 1));
+}
+
+int StampTopicModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+QVariant StampTopicModel::data(const QModelIndex& index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const Row& r = m_rows[std::size_t(index.row())];
+    switch (role) {
+    case Qt::DisplayRole:
+        return tr("%1  (%2)").arg(r.topic).arg(r.stamps);
+    case Qt::ToolTipRole:
+        return r.inPipeline ? tr("%1: in the pipeline").arg(r.topic)
+                            : tr("%1: not in the pipeline; drag it there or press Enter").arg(r.topic);
+    case TopicRole:
+        return r.topic;
+    case InPipelineRole:
+        return r.inPipeline;
+    default:
+        return {};
+    }
+}
+
+Qt::ItemFlags StampTopicModel::flags(const QModelIndex& index) const
+{
+    return QAbstractListModel::flags(index) | (index.isValid() ? Qt::ItemIsDragEnabled : Qt::NoItemFlags);
+}
+
+QStringList StampTopicModel::mimeTypes() const
+{
+    return {TopicMime::rosType(), TopicMime::mqttType()};
+}
+
+QMimeData* StampTopicModel::mimeData(const QModelIndexList& indexes) const
+{
+    QList<TopicMime::Topic> ros;
+    QList<TopicMime::Topic> mqtt;
+    for (const QModelIndex& i : indexes) {
+        const QString& t = m_rows[std::size_t(i.row())].topic;
+        (t.startsWith(u'/') ? ros : mqtt) << TopicMime::Topic {t, QString()};
+    }
+    return TopicMime::encode(ros.isEmpty() ? TopicMime::mqttType() : TopicMime::rosType(),
+                             ros.isEmpty() ? mqtt : ros + mqtt);
+}

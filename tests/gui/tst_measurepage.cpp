@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+// The Measure page on live stamps from a real rosmaster: the paper's pipeline with two hosts,
+// Table I with derived rows, ECDFs, pause and reset, and editing the pipeline by keyboard and drag.
+#include "common/measuresession.h"
+#include "discoverpage.h"
+#include "ecdfchart.h"
+#include "fixtures.h"
+#include "latency/latencystatsmodel.h"
+#include "latency/pipelinemodel.h"
+#include "latency/stamptopicmodel.h"
+#include "mainwindow.h"
+#include "measurepage.h"
+#include "syntheticrun.h"
+#include "testservers.h"
+#include "viewhelpers.h"
+
+#include <QAbstractItemModelTester>
+#include <QAction>
+#include <QChartView>
+#include <QCheckBox>
+#include <QLabel>
+#include <QListView>
+#include <QLogValueAxis>
+#include <QProcess>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+using namespace ViewHelpers;
+
+namespace {
+/// The paper's stage means (Table I, mqtt_client) as stamp offsets in µs; the cloud's clock runs
+/// 250 ms ahead of the vehicle's.
+QStringList paperStamps(const QStringList& topics)
+{
+    const qint64 stageUs[] = {200, 300, 19000, 100, 3600, 43400, 100, 100, 19000, 100, 200};
+    const std::vector<bool> cloud = SyntheticRun::paper(1, 0, 1).remote;
+    QStringList args;
+    qint64 t = 0;
+    for (int i = 0; i < topics.size(); ++i) {
+        if (i > 0)
+            t += stageUs[i - 1];
+        args << u"--stamp"_s << u"%1:%2"_s.arg(topics[i]).arg(t + (cloud[std::size_t(i)] ? 250'000 : 0));
+    }
+    return args;
+}
+
+int rowOf(QAbstractItemModel* model, const QString& id)
+{
+    for (int r = 0; r < model->rowCount(); ++r)
+        if (model->index(r, 0).data(LatencyStatsModel::SeriesIdRole).toString() == id)
+            return r;
+    return -1;
+}
+} // namespace
+
+class TestMeasurePage : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    QTemporaryDir m_dir;
+
+    /// Runs stamp_publisher; `seed` also picks the first sample's stamp, so runs never share samples.
+    std::unique_ptr<QProcess> publish(const QStringList& stamps, int samples, int seed)
+    {
+        auto p = std::make_unique<QProcess>();
+        p->setProcessEnvironment(m_servers.rosEnvironment());
+        p->start(QStringLiteral(STAMP_PUBLISHER),
+                 QStringList {u"--samples"_s, QString::number(samples), u"--rate"_s, u"100"_s,
+                              u"--jitter-us"_s, u"150"_s, u"--seed"_s, QString::number(seed),
+                              u"--first-sample"_s, QString::number(1'700'000'000 + seed * 10'000)}
+                     + stamps);
+        return p;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(m_servers.startRosMaster());
+        m_servers.exportRosEnvironment();
+    }
+
+    void measuresThePapersPipelineLive()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        MeasurePage* page = w.measurePage();
+        MeasureSession* measure = w.measure();
+        QAbstractItemModelTester statsTester(page->statsView()->model());
+        QAbstractItemModelTester pipelineTester(page->pipelineModel());
+        QAbstractItemModelTester seenTester(page->stampTopicsView()->model());
+        w.resize(1500, 950);
+        w.show();
+        w.pages()->setCurrentWidget(page);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+
+        // The suite's pipeline file plus our hosts extension.
+        QByteArray yaml = Fixtures::read(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s);
+        const std::optional<Pipeline> suite = Pipeline::fromYaml(yaml);
+        QVERIFY(suite);
+        const QStringList topics = suite->topics();
+        yaml += "\nhosts:\n";
+        for (int i = 0; i < topics.size(); ++i)
+            yaml
+                += "  " + topics[i].toUtf8() + ": " + SyntheticRun::paper(1, 0, 1).hosts()[i].toUtf8() + "\n";
+        const QString file = m_dir.filePath(u"pipeline.yaml"_s);
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(yaml);
+        f.close();
+        QString error;
+        QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
+        QCOMPARE(page->pipelineModel()->rowCount(), 12);
+        QCOMPARE(page->windowBox()->value(), 600);
+        QVERIFY(page->modeLabel()->text().contains(u"pipeline.yaml"_s));
+        // 11 stages, the total, round trip, one way and clock offset.
+        QAbstractItemModel* table = page->statsView()->model();
+        QCOMPARE(table->rowCount(), 15);
+
+        auto pub = publish(paperStamps(topics), 400, 3);
+        QTRY_VERIFY_WITH_TIMEOUT(measure->engine().samples() >= 400, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            table->index(rowOf(table, u"total"_s), LatencyStatsModel::CountColumn).data().toString(),
+            u"400"_s, 5000);
+        QVERIFY(pub->waitForFinished(10000));
+
+        // Table I: what the table shows is what the engine computed.
+        const LatencyEngine& e = measure->engine();
+        const int total = rowOf(table, u"total"_s);
+        QCOMPARE(table->index(total, LatencyStatsModel::MeanColumn).data().toString(),
+                 LatencyStatsModel::msText(e.series(e.totalSeries()).stats().mean));
+        QVERIFY(table->index(total, 0).data(Qt::FontRole).value<QFont>().bold());
+        const int crossing = rowOf(table, u"stage:2"_s);
+        QVERIFY(table->index(crossing, 0).data().toString().startsWith(u"⇄"_s));
+        QVERIFY(table->index(crossing, 0).data(Qt::FontRole).value<QFont>().italic());
+        // The cloud's 250 ms lead shows up in the offset estimate, not in the one-way latency.
+        const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
+        QVERIFY2(std::abs(offset.median - 250.0) < 1.0, qPrintable(QString::number(offset.median)));
+        const LatencyStats oneWay = e.series(e.oneWaySeries()).stats();
+        QVERIFY2(std::abs(oneWay.mean - 19.15) < 0.5, qPrintable(QString::number(oneWay.mean)));
+        QVERIFY(page->countsLabel()->text().contains(u"400 complete"_s));
+
+        // Plot the detection stage and the one-way latency next to the total.
+        table->setData(table->index(rowOf(table, u"stage:5"_s), 0), Qt::Checked, Qt::CheckStateRole);
+        table->setData(table->index(rowOf(table, u"one_way"_s), 0), Qt::Checked, Qt::CheckStateRole);
+        EcdfChart* chart = page->chart();
+        QCOMPARE(chart->series(), (QStringList {u"stage:5"_s, u"total"_s, u"one_way"_s}));
+        chart->refresh();
+        const qsizetype points = chart->pointCount(u"total"_s);
+        QVERIFY(points > 10);
+        QVERIFY(points <= 2 * chart->views().first()->width() + 2);
+        const auto [lo, hi] = chart->range(u"total"_s);
+        QVERIFY(lo <= e.series(e.oneWaySeries()).stats().min && hi >= e.series(e.totalSeries()).stats().max);
+        QTest::qWait(50); // the legend lays its markers out on the next event loop pass
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            w.grab().save(shots + u"/measure.png"_s);
+
+        page->logScaleBox()->click();
+        QVERIFY(qobject_cast<QLogValueAxis*>(chart->views().first()->chart()->axes(Qt::Horizontal).first()));
+        page->smallMultiplesBox()->click();
+        QCOMPARE(chart->views().size(), 3);
+        page->smallMultiplesBox()->click();
+        page->logScaleBox()->click();
+        QCOMPARE(chart->views().size(), 1);
+
+        // Pause freezes the table while measuring goes on; resuming shows what came meanwhile.
+        page->statsView()->setFocus();
+        QTest::keyClick(page->statsView(), Qt::Key_P, Qt::ControlModifier);
+        QVERIFY(page->pauseAction()->isChecked());
+        QVERIFY(page->countsLabel()->text().contains(u"paused"_s));
+        pub = publish(paperStamps(topics), 100, 4);
+        QTRY_VERIFY_WITH_TIMEOUT(e.samples() >= 500, 60000);
+        QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"400"_s);
+        QTest::keyClick(page->statsView(), Qt::Key_P, Qt::ControlModifier);
+        QTRY_COMPARE_WITH_TIMEOUT(table->index(total, LatencyStatsModel::CountColumn).data().toString(),
+                                  u"500"_s, 5000);
+        // The window: the last 100 samples only.
+        page->windowBox()->setValue(100);
+        QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"100"_s);
+        QTest::keyClick(page->statsView(), Qt::Key_R, Qt::ControlModifier);
+        QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"0"_s);
+        QVERIFY(page->countsLabel()->text().contains(u"0 complete"_s));
+    }
+
+    void pipelineIsEditedByKeyboardAndDrag()
+    {
+        MainWindow w;
+        MeasurePage* page = w.measurePage();
+        w.resize(1400, 900);
+        w.show();
+        w.pages()->setCurrentWidget(page);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        // Automatic: three stamp topics published in scrambled order come out sorted.
+        auto pub = publish({u"--stamp"_s, u"/lab/vehicle/done:30000"_s, u"--stamp"_s,
+                            u"/lab/vehicle/send:0"_s, u"--stamp"_s, u"/lab/cloud/recv:10000"_s},
+                           60, 5);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            w.measure()->pipeline().topics(),
+            (QStringList {u"/lab/vehicle/send"_s, u"/lab/cloud/recv"_s, u"/lab/vehicle/done"_s}), 60000);
+        QVERIFY(w.measure()->isAutomatic());
+        QVERIFY(page->modeLabel()->text().startsWith(u"Automatic"_s));
+        QTRY_COMPARE_WITH_TIMEOUT(page->stampTopicsView()->model()->rowCount(), 3, 5000);
+        QVERIFY(pub->waitForFinished(20000));
+
+        QTableView* view = page->pipelineView();
+        PipelineModel* model = page->pipelineModel();
+        view->setFocus();
+        view->setCurrentIndex(model->index(0, PipelineModel::TopicColumn));
+        QTest::keyClick(view, Qt::Key_Delete);
+        QCOMPARE(w.measure()->pipeline().topics(),
+                 (QStringList {u"/lab/cloud/recv"_s, u"/lab/vehicle/done"_s}));
+        QVERIFY(!w.measure()->isAutomatic());
+        QCOMPARE(page->modeLabel()->text(), u"Edited by hand."_s);
+
+        // Drag the removed topic back from the topics seen, onto the first row.
+        QListView* seen = page->stampTopicsView();
+        const QModelIndex send = find(seen->model(), u"/lab/vehicle/send"_s, StampTopicModel::TopicRole);
+        QVERIFY(send.isValid());
+        QVERIFY(!send.data(StampTopicModel::InPipelineRole).toBool());
+        dragAndDrop(seen, {send}, view, centre(view, model->index(0, PipelineModel::TopicColumn)));
+        QCOMPARE(w.measure()->pipeline().topics(),
+                 (QStringList {u"/lab/vehicle/send"_s, u"/lab/cloud/recv"_s, u"/lab/vehicle/done"_s}));
+
+        // Ctrl+Down and Ctrl+Up move a stamp.
+        view->setCurrentIndex(model->index(0, PipelineModel::TopicColumn));
+        QTest::keyClick(view, Qt::Key_Down, Qt::ControlModifier);
+        QCOMPARE(w.measure()->pipeline().topics().at(1), u"/lab/vehicle/send"_s);
+        QCOMPARE(view->currentIndex().row(), 1);
+        QTest::keyClick(view, Qt::Key_Up, Qt::ControlModifier);
+        QCOMPARE(w.measure()->pipeline().topics().at(0), u"/lab/vehicle/send"_s);
+
+        // Hosts are guessed from the names and can be edited: all on one host, no crossing left.
+        QCOMPARE(w.measure()->pipeline().crossings(), (QList<int> {0, 1}));
+        QVERIFY(model->setData(model->index(1, PipelineModel::HostColumn), u"vehicle"_s));
+        QCOMPARE(w.measure()->pipeline().crossings(), QList<int>());
+        QCOMPARE(w.measure()->engine().roundTripSeries(), -1);
+
+        // Save and load the pipeline as a file the suite can read too.
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY2(page->savePipeline(dir.filePath(u"p.yaml"_s), &error), qPrintable(error));
+        const std::optional<Pipeline> back = Pipeline::load(dir.filePath(u"p.yaml"_s));
+        QVERIFY(back);
+        QCOMPARE(back->topics(), w.measure()->pipeline().topics());
+        QCOMPARE(back->host(1), u"vehicle"_s);
+        // The Automatic button goes back to what the stamps say.
+        w.measure()->setAutomatic();
+        QCOMPARE(w.measure()->pipeline().crossings(), (QList<int> {0, 1}));
+    }
+};
+
+QTEST_MAIN(TestMeasurePage)
+#include "tst_measurepage.moc"

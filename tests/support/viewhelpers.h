@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <QAbstractItemView>
+#include <QCoreApplication>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QTest>
+
+/// What GUI tests do to item views: find rows, and drag between views as a real drag would.
+namespace ViewHelpers {
+/// The first index (column 0, any depth) whose `role` holds `name`.
+inline QModelIndex find(QAbstractItemModel* model, const QString& name, int role,
+                        const QModelIndex& parent = {})
+{
+    for (int r = 0; r < model->rowCount(parent); ++r) {
+        const QModelIndex i = model->index(r, 0, parent);
+        if (i.data(role).toString() == name)
+            return i;
+        const QModelIndex deeper = find(model, name, role, i);
+        if (deeper.isValid())
+            return deeper;
+    }
+    return {};
+}
+
+/// A drag from `from` (its model makes the MIME data, as in a real drag) dropped at `pos` of `to`.
+inline void dragAndDrop(QAbstractItemView* from, const QModelIndexList& dragged, QAbstractItemView* to,
+                        const QPoint& pos, Qt::DropActions actions = Qt::CopyAction | Qt::LinkAction)
+{
+    std::unique_ptr<QMimeData> data(from->model()->mimeData(dragged));
+    QVERIFY(data);
+    QDragEnterEvent enter(pos, actions, data.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(to->viewport(), &enter);
+    QDragMoveEvent move(pos, actions, data.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(to->viewport(), &move);
+    QVERIFY2(move.isAccepted(), "the view refused the drag");
+    QDropEvent drop(QPointF(pos), actions, data.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(to->viewport(), &drop);
+}
+
+inline QPoint centre(QAbstractItemView* view, const QModelIndex& index)
+{
+    return view->visualRect(index).center();
+}
+
+/// Just above the bottom edge of the viewport, below every row.
+inline QPoint below(QAbstractItemView* view)
+{
+    return QPoint(view->viewport()->width() / 2, view->viewport()->height() - 3);
+}
+} // namespace ViewHelpers

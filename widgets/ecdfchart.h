@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QColor>
+#include <QStringList>
+#include <QWidget>
+#include <vector>
+
+class LatencyEngine;
+class QAbstractAxis;
+class QChart;
+class QChartView;
+class QGridLayout;
+class QLineSeries;
+
+/// ECDFs of latency series as in the paper's Fig. 5: one curve per series, its mean as a dashed
+/// and its median as a dotted vertical line; overlaid in one chart or as small multiples.
+///
+/// refresh() redraws from the engine: each curve is reduced to about two points per pixel
+/// column and handed over with one replace() (the live page calls it at most once per drain).
+class EcdfChart : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit EcdfChart(QWidget* parent = nullptr);
+    ~EcdfChart() override;
+
+    void setEngine(const LatencyEngine* engine);
+    void setSeries(const QStringList& ids);
+    QStringList series() const { return m_ids; }
+    void setLogScale(bool on);
+    bool logScale() const { return m_log; }
+    void setSmallMultiples(bool on);
+    bool smallMultiples() const { return m_multiples; }
+    void refresh();
+
+    /// The chart views (one when overlaid).
+    QList<QChartView*> views() const;
+    /// Points drawn for a series' ECDF (tests, benchmarks).
+    qsizetype pointCount(const QString& id) const;
+    /// The x range of the chart showing `id`, in ms.
+    std::pair<double, double> range(const QString& id) const;
+    static QColor colorFor(int seriesIndex);
+
+private:
+    struct Panel;
+    struct Curve;
+    void rebuild();
+    Panel* panelOf(const QString& id) const;
+
+    const LatencyEngine* m_engine = nullptr;
+    QStringList m_ids;
+    bool m_log = false;
+    bool m_multiples = false;
+    QGridLayout* m_grid;
+    std::vector<std::unique_ptr<Panel>> m_panels;
+    quint64 m_layoutRevision = ~quint64(0);
+};

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QWidget>
+
+class EcdfChart;
+class MeasureSession;
+class Pipeline;
+class PipelineModel;
+class QAction;
+class QCheckBox;
+class QLabel;
+class QListView;
+class QSpinBox;
+class QTableView;
+class StampTopicModel;
+
+/// The Measure page: the pipeline (loaded, found in the stamps, or dragged together, with a host
+/// per stamp), live ECDFs of the selected series and the paper's Table I with sample counts.
+class MeasurePage : public QWidget
+{
+    Q_OBJECT
+public:
+    MeasurePage(MeasureSession* measure, QWidget* parent = nullptr);
+
+    bool loadPipeline(const QString& path, QString* error = nullptr);
+    bool savePipeline(const QString& path, QString* error = nullptr);
+
+    EcdfChart* chart() const { return m_chart; }
+    QTableView* statsView() const { return m_statsView; }
+    QTableView* pipelineView() const { return m_pipelineView; }
+    QListView* stampTopicsView() const { return m_seenView; }
+    PipelineModel* pipelineModel() const { return m_pipeline; }
+    QSpinBox* windowBox() const { return m_window; }
+    QAction* pauseAction() const { return m_pause; }
+    QAction* resetAction() const { return m_reset; }
+    QLabel* countsLabel() const { return m_counts; }
+    QCheckBox* logScaleBox() const { return m_log; }
+    QCheckBox* smallMultiplesBox() const { return m_multiples; }
+    QLabel* modeLabel() const { return m_mode; }
+
+private:
+    void applyEdit(const Pipeline& pipeline);
+    void onUpdated();
+    void onPipelineChanged();
+    void updateCounts();
+    void choosePipelineFile();
+    void chooseSaveFile();
+    void removeSelectedStamps();
+    void moveSelectedStamp(int delta);
+    void addSeenTopic(const QModelIndex& index);
+
+    MeasureSession* m_measure;
+    PipelineModel* m_pipeline;
+    StampTopicModel* m_seen;
+    EcdfChart* m_chart;
+    QTableView* m_statsView;
+    QTableView* m_pipelineView;
+    QListView* m_seenView;
+    QSpinBox* m_window;
+    QCheckBox* m_log;
+    QCheckBox* m_multiples;
+    QAction* m_pause;
+    QAction* m_reset;
+    QLabel* m_mode;
+    QLabel* m_counts;
+    QString m_pipelineFile;
+};
