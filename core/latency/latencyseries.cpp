@@ -32,9 +32,17 @@ void LatencySeries::append(qint64 value)
 {
     ++m_appended;
     m_values.push_back(value);
-    add(value);
-    if (m_window > 0 && m_sorted.size() > m_window)
-        remove(m_values[m_windowStart++]);
+    if (m_window > 0 && m_sorted.size() == m_window) {
+        // A full window slides: the oldest value leaves as the new one comes, in one move.
+        const qint64 out = m_values[m_windowStart++];
+        const LatencyInt128 dOut = out - m_ref;
+        const LatencyInt128 dIn = value - m_ref;
+        m_sum += dIn - dOut;
+        m_sumSq += dIn * dIn - dOut * dOut;
+        m_sorted.replace(out, value);
+    } else {
+        add(value);
+    }
     if (m_values.size() > kMaxKept) {
         // Forget the oldest tenth in one move; in whole-run mode they leave the statistics too.
         const std::size_t drop = kMaxKept / 10;
@@ -101,10 +109,10 @@ double LatencySeries::quantileMs(double q) const
     // numpy's "linear" method: virtual index q*(n-1), and its lerp that is exact at both ends.
     const double index = q * double(n - 1);
     const qint64 lo = std::clamp<qint64>(qint64(std::floor(index)), 0, n - 1);
-    const qint64 hi = std::min<qint64>(lo + 1, n - 1);
     const double t = index - double(lo);
-    const double a = toMs(m_sorted.at(lo));
-    const double b = toMs(m_sorted.at(hi));
+    const auto [first, second] = m_sorted.atPair(lo);
+    const double a = toMs(first);
+    const double b = toMs(second);
     const double diff = b - a;
     return t >= 0.5 ? b - diff * (1 - t) : a + diff * t;
 }

@@ -59,8 +59,18 @@ void Pipeline::setTopics(QStringList topics)
         if (t.isEmpty() || m_index.contains(key))
             continue;
         m_index.insert(key, int(m_topics.size()));
+        m_index.insert(u'/' + key, int(m_topics.size())); // the ROS spelling: found without a copy
         m_topics.append(std::move(t));
     }
+}
+
+int Pipeline::indexOf(const QString& topic) const
+{
+    // Both spellings are keys: the common case costs one hash lookup and no allocation.
+    const auto it = m_index.constFind(topic);
+    if (it != m_index.cend())
+        return *it;
+    return topic.startsWith(u"//") ? indexOf(QStringView(topic)) : -1;
 }
 
 int Pipeline::indexOf(QStringView topic) const

@@ -34,6 +34,8 @@ public:
     bool isEmpty() const { return m_topics.isEmpty(); }
     /// Index of a topic, matching with or without a leading '/' (MQTT topics carry none); -1 if absent.
     int indexOf(QStringView topic) const;
+    int indexOf(const QString& topic) const;
+    int indexOf(const char16_t* topic) const { return indexOf(QStringView(topic)); }
     void setTopics(QStringList topics);
     /// Whether two names are the same stamp topic ("/a/b" on ROS is "a/b" on MQTT).
     static bool sameTopic(QStringView a, QStringView b) { return normalized(a) == normalized(b); }
@@ -73,7 +75,7 @@ private:
     static QString normalized(QStringView topic);
 
     QStringList m_topics;
-    QHash<QString, int> m_index; ///< normalized topic -> index
+    QHash<QString, int> m_index; ///< normalized topic and "/" + normalized topic -> index
     QHash<QString, QString> m_hosts;
     int m_window = kDefaultWindow;
 };

@@ -2,6 +2,47 @@
 #include "sortedblocks.h"
 
 #include <algorithm>
+#include <cstring>
+
+namespace {
+// Branch-free binary searches: on random latencies the comparisons of std::lower_bound are coin
+// flips the branch predictor loses; a conditional move does not care.
+std::size_t lowerBound(const qint64* data, std::size_t n, qint64 value)
+{
+    if (n == 0)
+        return 0;
+    const qint64* base = data;
+    while (n > 1) {
+        const std::size_t half = n / 2;
+        base += half & (std::size_t(0) - std::size_t(base[half - 1] < value));
+        n -= half;
+    }
+    return std::size_t(base - data) + (*base < value);
+}
+
+std::size_t upperBound(const qint64* data, std::size_t n, qint64 value)
+{
+    if (n == 0)
+        return 0;
+    const qint64* base = data;
+    while (n > 1) {
+        const std::size_t half = n / 2;
+        base += half & (std::size_t(0) - std::size_t(base[half - 1] <= value));
+        n -= half;
+    }
+    return std::size_t(base - data) + (*base <= value);
+}
+
+std::size_t lowerBound(const std::vector<qint64>& v, qint64 value)
+{
+    return lowerBound(v.data(), v.size(), value);
+}
+
+std::size_t upperBound(const std::vector<qint64>& v, qint64 value)
+{
+    return upperBound(v.data(), v.size(), value);
+}
+} // namespace
 
 void SortedBlocks::insert(qint64 value)
 {
@@ -13,11 +54,11 @@ void SortedBlocks::insert(qint64 value)
         m_maxes.push_back(value);
         return;
     }
-    std::size_t i = std::size_t(std::lower_bound(m_maxes.begin(), m_maxes.end(), value) - m_maxes.begin());
+    std::size_t i = lowerBound(m_maxes, value);
     if (i == m_blocks.size())
         i = m_blocks.size() - 1;
     std::vector<qint64>& block = m_blocks[i];
-    block.insert(std::upper_bound(block.begin(), block.end(), value), value);
+    block.insert(block.begin() + std::ptrdiff_t(upperBound(block, value)), value);
     m_maxes[i] = block.back();
     if (block.size() > kMaxBlock) {
         std::vector<qint64> upper(block.begin() + std::ptrdiff_t(block.size() / 2), block.end());
@@ -28,17 +69,49 @@ void SortedBlocks::insert(qint64 value)
     }
 }
 
-bool SortedBlocks::erase(qint64 value)
+bool SortedBlocks::replace(qint64 out, qint64 in)
 {
-    const std::size_t i
-        = std::size_t(std::lower_bound(m_maxes.begin(), m_maxes.end(), value) - m_maxes.begin());
+    const std::size_t i = lowerBound(m_maxes, out);
     if (i == m_blocks.size())
         return false;
     std::vector<qint64>& block = m_blocks[i];
-    const auto it = std::lower_bound(block.begin(), block.end(), value);
-    if (it == block.end() || *it != value)
+    const std::size_t from = lowerBound(block, out);
+    if (from == block.size() || block[from] != out)
         return false;
-    block.erase(it);
+    // Does `in` belong in this block, with `out` gone? Between the previous block's max and the
+    // next block's first value.
+    const bool fits
+        = (i == 0 || m_maxes[i - 1] <= in) && (i + 1 == m_blocks.size() || in <= m_blocks[i + 1].front());
+    if (!fits) {
+        erase(out);
+        insert(in);
+        return true;
+    }
+    qint64* d = block.data();
+    if (in >= out) {
+        // Shift the values in (out, in] one place left, then put `in` after them.
+        const std::size_t to = upperBound(block, in) - 1;
+        std::memmove(d + from, d + from + 1, (to - from) * sizeof(qint64));
+        d[to] = in;
+    } else {
+        const std::size_t to = upperBound(d, from, in);
+        std::memmove(d + to + 1, d + to, (from - to) * sizeof(qint64));
+        d[to] = in;
+    }
+    m_maxes[i] = block.back();
+    return true; // sizes unchanged: the prefix counts stay valid
+}
+
+bool SortedBlocks::erase(qint64 value)
+{
+    const std::size_t i = lowerBound(m_maxes, value);
+    if (i == m_blocks.size())
+        return false;
+    std::vector<qint64>& block = m_blocks[i];
+    const std::size_t at = lowerBound(block, value);
+    if (at == block.size() || block[at] != value)
+        return false;
+    block.erase(block.begin() + std::ptrdiff_t(at));
     --m_size;
     m_prefixDirty = true;
     if (block.empty()) {
@@ -87,31 +160,39 @@ void SortedBlocks::updatePrefix() const
 qint64 SortedBlocks::at(qint64 k) const
 {
     updatePrefix();
-    const std::size_t i
-        = std::size_t(std::upper_bound(m_prefix.begin(), m_prefix.end(), k) - m_prefix.begin()) - 1;
+    const std::size_t i = upperBound(m_prefix, k) - 1;
     return m_blocks[i][std::size_t(k - m_prefix[i])];
+}
+
+std::pair<qint64, qint64> SortedBlocks::atPair(qint64 k) const
+{
+    updatePrefix();
+    const std::size_t i = upperBound(m_prefix, k) - 1;
+    const std::vector<qint64>& block = m_blocks[i];
+    const std::size_t j = std::size_t(k - m_prefix[i]);
+    if (j + 1 < block.size())
+        return {block[j], block[j + 1]};
+    if (i + 1 < m_blocks.size())
+        return {block[j], m_blocks[i + 1].front()};
+    return {block[j], block[j]};
 }
 
 qint64 SortedBlocks::countBelow(qint64 value) const
 {
-    const std::size_t i
-        = std::size_t(std::lower_bound(m_maxes.begin(), m_maxes.end(), value) - m_maxes.begin());
+    const std::size_t i = lowerBound(m_maxes, value);
     if (i == m_blocks.size())
         return m_size;
     updatePrefix();
-    const std::vector<qint64>& b = m_blocks[i];
-    return m_prefix[i] + (std::lower_bound(b.begin(), b.end(), value) - b.begin());
+    return m_prefix[i] + qint64(lowerBound(m_blocks[i], value));
 }
 
 qint64 SortedBlocks::countAtMost(qint64 value) const
 {
-    const std::size_t i
-        = std::size_t(std::upper_bound(m_maxes.begin(), m_maxes.end(), value) - m_maxes.begin());
+    const std::size_t i = upperBound(m_maxes, value);
     if (i == m_blocks.size())
         return m_size;
     updatePrefix();
-    const std::vector<qint64>& b = m_blocks[i];
-    return m_prefix[i] + (std::upper_bound(b.begin(), b.end(), value) - b.begin());
+    return m_prefix[i] + qint64(upperBound(m_blocks[i], value));
 }
 
 std::vector<qint64> SortedBlocks::toVector() const

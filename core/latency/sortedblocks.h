@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QtGlobal>
+#include <utility>
 #include <vector>
 
 /// A sorted multiset of integers in blocks of at most a thousand values.
@@ -15,12 +16,16 @@ public:
     void insert(qint64 value);
     /// Removes one occurrence; false if the value is not there.
     bool erase(qint64 value);
+    /// erase(out) and insert(in) in one move where both fall in one block (a sliding window's step).
+    bool replace(qint64 out, qint64 in);
     void clear();
 
     qint64 size() const { return m_size; }
     bool isEmpty() const { return m_size == 0; }
     /// The value of rank `k` (0: the smallest); k must be in [0, size).
     qint64 at(qint64 k) const;
+    /// The values of rank k and k+1 (or k again at the end): one search for an interpolation.
+    std::pair<qint64, qint64> atPair(qint64 k) const;
     /// How many values are below `value`.
     qint64 countBelow(qint64 value) const;
     /// How many values are at most `value`.

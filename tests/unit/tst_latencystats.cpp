@@ -247,7 +247,15 @@ private slots:
         std::multiset<qint64> ref;
         std::vector<qint64> inserted;
         for (int i = 0; i < 60000; ++i) {
-            if (ref.empty() || rng() % 3 != 0) {
+            if (!ref.empty() && rng() % 4 == 0) {
+                // A window's step: one value out, one in.
+                const qint64 out = *std::next(ref.begin(), qint64(rng() % ref.size()));
+                const qint64 in = value(rng);
+                QVERIFY(blocks.replace(out, in));
+                ref.erase(ref.find(out));
+                ref.insert(in);
+                inserted.push_back(in);
+            } else if (ref.empty() || rng() % 3 != 0) {
                 const qint64 v = value(rng);
                 blocks.insert(v);
                 ref.insert(v);
@@ -270,6 +278,9 @@ private slots:
                 if (!ref.empty()) {
                     const qint64 k = qint64(rng() % ref.size());
                     QCOMPARE(blocks.at(k), *std::next(ref.begin(), k));
+                    const auto [a, b] = blocks.atPair(k);
+                    QCOMPARE(a, *std::next(ref.begin(), k));
+                    QCOMPARE(b, *std::next(ref.begin(), std::min<qint64>(k + 1, qint64(ref.size()) - 1)));
                 }
             }
         }
