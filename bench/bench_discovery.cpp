@@ -12,6 +12,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "testservers.h"
 
+#include <algorithm>
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QFile>
@@ -21,8 +22,6 @@
 #include <QTest>
 #include <QTimer>
 #include <QTreeView>
-
-#include <algorithm>
 
 using namespace Qt::StringLiterals;
 
@@ -39,47 +38,34 @@ qint64 statusKb(const char* field)
     return -1;
 }
 
-double percentile(std::vector<double> v, double p)
-{
-    if (v.empty())
-        return 0;
-    std::sort(v.begin(), v.end());
-    const double rank = p * double(v.size() - 1);
-    const size_t lo = size_t(rank);
-    const size_t hi = std::min(lo + 1, v.size() - 1);
-    return v[lo] + (v[hi] - v[lo]) * (rank - double(lo));
-}
-
-int envInt(const char* name, int fallback)
-{
-    bool ok = false;
-    const int v = qEnvironmentVariableIntValue(name, &ok);
-    return ok && v > 0 ? v : fallback;
-}
 } // namespace
 
 int main(int argc, char** argv)
 {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
-    const int topics = envInt("BENCH_TOPICS", 10000);
-    const int rate = envInt("BENCH_RATE", 21000);
-    const int seconds = envInt("BENCH_SECONDS", 30);
+    const int topics = Bench::envInt("BENCH_TOPICS", 10000);
+    const int rate = Bench::envInt("BENCH_RATE", 21000);
+    const int seconds = Bench::envInt("BENCH_SECONDS", 30);
 
     TestServers servers;
-    if (!servers.startMosquitto(TestMosquittoOptions{true, {}, {}, {}, {}, false, u"max_queued_messages 0\n"_s})) {
+    if (!servers.startMosquitto(
+            TestMosquittoOptions {true, {}, {}, {}, {}, false, u"max_queued_messages 0\n"_s})) {
         std::fprintf(stderr, "cannot start mosquitto: %s\n", qPrintable(servers.errorString()));
         return 1;
     }
     const QString url = servers.brokerUrl();
-    std::printf("bench_discovery: %d topics, %d msg/s, %d s, broker %s\n\n", topics, rate, seconds, qPrintable(url));
+    std::printf("bench_discovery: %d topics, %d msg/s, %d s, broker %s\n\n", topics, rate, seconds,
+                qPrintable(url));
 
     // Peer: mosquitto_sub counting lines.
     QProcess sub;
     quint64 subLines = 0;
-    QObject::connect(&sub, &QProcess::readyReadStandardOutput, [&] { subLines += quint64(sub.readAllStandardOutput().count('\n')); });
-    sub.start(u"mosquitto_sub"_s, {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()), u"-t"_s,
-                                   u"#"_s, u"-F"_s, u"%t"_s});
+    QObject::connect(&sub, &QProcess::readyReadStandardOutput,
+                     [&] { subLines += quint64(sub.readAllStandardOutput().count('\n')); });
+    sub.start(u"mosquitto_sub"_s,
+              {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()), u"-t"_s, u"#"_s,
+               u"-F"_s, u"%t"_s});
 
     MainWindow window;
     window.resize(1400, 900);
@@ -131,13 +117,15 @@ int main(int argc, char** argv)
     Bench::row(u"published by the load generator"_s, double(published), u"messages"_s);
     Bench::row(u"peer: received by mosquitto_sub -t '#'"_s, double(subLines), u"messages"_s);
     Bench::row(u"received by Bridgescope discovery (window open)"_s, double(ours),
-               u"%1 % of mosquitto_sub (goal >= 95 %)"_s.arg(100.0 * double(ours) / double(std::max<quint64>(1, subLines)), 0, 'f', 1));
+               u"%1 % of mosquitto_sub (goal >= 95 %)"_s.arg(
+                   100.0 * double(ours) / double(std::max<quint64>(1, subLines)), 0, 'f', 1));
     Bench::row(u"  of those in the topic tree"_s, double(processed),
                u"dropped in the buffer: %1"_s.arg(window.session()->mqtt()->dropped()));
     Bench::row(u"topics in the tree"_s, window.session()->mqttTopics()->topicCount());
-    Bench::row(u"GUI event loop lag p50 (ms)"_s, percentile(lags, 0.5));
-    Bench::row(u"GUI event loop lag p99 (ms)"_s, percentile(lags, 0.99), u"goal < 50 ms"_s);
-    Bench::row(u"GUI event loop lag max (ms)"_s, lags.empty() ? 0 : *std::max_element(lags.begin(), lags.end()));
+    Bench::row(u"GUI event loop lag p50 (ms)"_s, Bench::percentile(lags, 0.5));
+    Bench::row(u"GUI event loop lag p99 (ms)"_s, Bench::percentile(lags, 0.99), u"goal < 50 ms"_s);
+    Bench::row(u"GUI event loop lag max (ms)"_s,
+               lags.empty() ? 0 : *std::max_element(lags.begin(), lags.end()));
     Bench::row(u"resident memory before load (MiB)"_s, double(rssBefore) / 1024);
     Bench::row(u"resident memory after load (MiB)"_s, double(rssAfter) / 1024);
     Bench::row(u"peak resident memory (MiB)"_s, double(rssPeak) / 1024);
@@ -163,8 +151,8 @@ int main(int argc, char** argv)
             keys.push_back(t.nsecsElapsed() / 1e6);
         }
     }
-    Bench::row(u"filter keystroke to repainted view, median (ms)"_s, percentile(keys, 0.5),
+    Bench::row(u"filter keystroke to repainted view, median (ms)"_s, Bench::percentile(keys, 0.5),
                u"%1 topics"_s.arg(window.session()->mqttTopics()->topicCount()));
-    Bench::row(u"filter keystroke to repainted view, p90 (ms)"_s, percentile(keys, 0.9));
+    Bench::row(u"filter keystroke to repainted view, p90 (ms)"_s, Bench::percentile(keys, 0.9));
     return 0;
 }

@@ -27,18 +27,12 @@ struct Event
     qint64 arrival; ///< on one clock: the order events arrive in
 };
 
-int envInt(const char* name, int fallback)
-{
-    bool ok = false;
-    const int v = qEnvironmentVariableIntValue(name, &ok);
-    return ok && v > 0 ? v : fallback;
-}
 } // namespace
 
 int main(int argc, char** argv)
 {
     QCoreApplication app(argc, argv);
-    const int samples = envInt("BENCH_SAMPLES", 5000);
+    const int samples = Bench::envInt("BENCH_SAMPLES", 5000);
     const int window = 600;
     const SyntheticRun run = SyntheticRun::paper(samples, 250'000'000, 1);
     const int topicCount = int(run.topics.size());

@@ -7,15 +7,14 @@
 // that writes every message on its own tops out near 25,000 msg/s on one core of this machine).
 //
 //   bench_loadgen URL TOPICS RATE SECONDS [PAYLOAD_BYTES]
-#include <QCoreApplication>
-#include <QElapsedTimer>
-#include <QThread>
-#include <QUrl>
-
 #include <arpa/inet.h>
 #include <cstdio>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QThread>
+#include <QUrl>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -86,7 +85,7 @@ int main(int argc, char** argv)
     }
 
     const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
+    sockaddr_in addr {};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(quint16(url.port(1883)));
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -97,16 +96,17 @@ int main(int argc, char** argv)
     QByteArray connectPacket;
     QByteArray body;
     appendString(body, "MQTT");
-    body.append(char(4));   // MQTT 3.1.1
-    body.append(char(2));   // clean session
-    body.append(char(0));   // keep-alive, high byte
+    body.append(char(4)); // MQTT 3.1.1
+    body.append(char(2)); // clean session
+    body.append(char(0)); // keep-alive, high byte
     body.append(char(120)); // keep-alive 120 s
     appendString(body, "bench-loadgen-" + QByteArray::number(::getpid()));
     connectPacket.append(char(0x10));
     appendLength(connectPacket, int(body.size()));
     connectPacket.append(body);
     char connack[4] = {};
-    if (!writeAll(fd, connectPacket) || ::recv(fd, connack, 4, MSG_WAITALL) != 4 || connack[0] != 0x20 || connack[3] != 0) {
+    if (!writeAll(fd, connectPacket) || ::recv(fd, connack, 4, MSG_WAITALL) != 4 || connack[0] != 0x20
+        || connack[3] != 0) {
         std::fprintf(stderr, "the broker did not accept the connection\n");
         return 1;
     }

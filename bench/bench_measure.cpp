@@ -32,23 +32,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-double percentile(std::vector<double> v, double p)
-{
-    if (v.empty())
-        return 0;
-    std::sort(v.begin(), v.end());
-    const double rank = p * double(v.size() - 1);
-    const size_t lo = size_t(rank);
-    const size_t hi = std::min(lo + 1, v.size() - 1);
-    return v[lo] + (v[hi] - v[lo]) * (rank - double(lo));
-}
-
-int envInt(const char* name, int fallback)
-{
-    bool ok = false;
-    const int v = qEnvironmentVariableIntValue(name, &ok);
-    return ok && v > 0 ? v : fallback;
-}
 
 /// How late a 10 ms timer fires in the GUI thread while `running` says so.
 std::vector<double> measureLag(const std::function<bool()>& running)
@@ -145,24 +128,25 @@ void chartUpdate()
     std::printf("chart: %d samples in the whole-run window (filled in %.0f ms), chart 1200x700\n\n", samples,
                 fillMs);
     Bench::header("ms");
-    Bench::row(u"peer: exact ECDF as a line, replace() (median of 5)"_s, percentile(peerUpdate, 0.5),
+    Bench::row(u"peer: exact ECDF as a line, replace() (median of 5)"_s, Bench::percentile(peerUpdate, 0.5),
                u"%1 points"_s.arg(2 * engine.series(engine.totalSeries()).count()));
-    Bench::row(u"peer: exact ECDF, replace() + repaint"_s, percentile(peerRender, 0.5));
-    Bench::row(u"EcdfChart::refresh (reduce, one replace per curve), median"_s, percentile(update, 0.5),
+    Bench::row(u"peer: exact ECDF, replace() + repaint"_s, Bench::percentile(peerRender, 0.5));
+    Bench::row(u"EcdfChart::refresh (reduce, one replace per curve), median"_s,
+               Bench::percentile(update, 0.5),
                u"%1 points; %2x faster than the peer"_s.arg(chart.pointCount(u"total"_s))
-                   .arg(percentile(peerUpdate, 0.5) / percentile(update, 0.5), 0, 'f', 0));
-    Bench::row(u"EcdfChart::refresh, p90"_s, percentile(update, 0.9));
-    Bench::row(
-        u"refresh + repaint, median (goal < 16 ms)"_s, percentile(render, 0.5),
-        u"%1x faster than the peer"_s.arg(percentile(peerRender, 0.5) / percentile(render, 0.5), 0, 'f', 0));
-    Bench::row(u"refresh + repaint, p90"_s, percentile(render, 0.9));
+                   .arg(Bench::percentile(peerUpdate, 0.5) / Bench::percentile(update, 0.5), 0, 'f', 0));
+    Bench::row(u"EcdfChart::refresh, p90"_s, Bench::percentile(update, 0.9));
+    Bench::row(u"refresh + repaint, median (goal < 16 ms)"_s, Bench::percentile(render, 0.5),
+               u"%1x faster than the peer"_s.arg(
+                   Bench::percentile(peerRender, 0.5) / Bench::percentile(render, 0.5), 0, 'f', 0));
+    Bench::row(u"refresh + repaint, p90"_s, Bench::percentile(render, 0.9));
     std::printf("\n");
 }
 
 int guiLag()
 {
-    const int seconds = envInt("BENCH_SECONDS", 20);
-    const int eventRate = envInt("BENCH_EVENT_RATE", 10000);
+    const int seconds = Bench::envInt("BENCH_SECONDS", 20);
+    const int eventRate = Bench::envInt("BENCH_EVENT_RATE", 10000);
     TestServers servers;
     if (!servers.startRosMaster()) {
         std::fprintf(stderr, "cannot start rosmaster: %s\n", qPrintable(servers.errorString()));
@@ -229,10 +213,10 @@ int guiLag()
     Bench::row(u"complete samples"_s, double(e.samples()),
                u"dropped %1, in the buffer lost %2"_s.arg(e.counters().dropped())
                    .arg(window.measure()->rosSource()->dropped()));
-    Bench::row(u"peer: idle window, event loop lag p50 (ms)"_s, percentile(idleLags, 0.5));
-    Bench::row(u"peer: idle window, event loop lag p99 (ms)"_s, percentile(idleLags, 0.99));
-    Bench::row(u"loaded, event loop lag p50 (ms)"_s, percentile(lags, 0.5));
-    Bench::row(u"loaded, event loop lag p99 (ms)"_s, percentile(lags, 0.99), u"goal < 50 ms"_s);
+    Bench::row(u"peer: idle window, event loop lag p50 (ms)"_s, Bench::percentile(idleLags, 0.5));
+    Bench::row(u"peer: idle window, event loop lag p99 (ms)"_s, Bench::percentile(idleLags, 0.99));
+    Bench::row(u"loaded, event loop lag p50 (ms)"_s, Bench::percentile(lags, 0.5));
+    Bench::row(u"loaded, event loop lag p99 (ms)"_s, Bench::percentile(lags, 0.99), u"goal < 50 ms"_s);
     Bench::row(u"loaded, event loop lag max (ms)"_s,
                lags.empty() ? 0 : *std::max_element(lags.begin(), lags.end()));
     return 0;

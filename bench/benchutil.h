@@ -7,6 +7,8 @@
 #include <QElapsedTimer>
 #include <QList>
 #include <QString>
+#include <QtGlobal>
+#include <vector>
 
 /// Small helpers shared by the benchmarks: repeat, take the median, print a table row.
 namespace Bench {
@@ -23,6 +25,26 @@ inline double medianMs(int runs, const std::function<void()>& work)
     }
     std::sort(times.begin(), times.end());
     return times[times.size() / 2];
+}
+
+/// The p-quantile (0..1) of `v`, interpolated linearly.
+inline double percentile(std::vector<double> v, double p)
+{
+    if (v.empty())
+        return 0;
+    std::sort(v.begin(), v.end());
+    const double rank = p * double(v.size() - 1);
+    const size_t lo = size_t(rank);
+    const size_t hi = std::min(lo + 1, v.size() - 1);
+    return v[lo] + (v[hi] - v[lo]) * (rank - double(lo));
+}
+
+/// A positive integer from the environment, or `fallback`.
+inline int envInt(const char* name, int fallback)
+{
+    bool ok = false;
+    const int v = qEnvironmentVariableIntValue(name, &ok);
+    return ok && v > 0 ? v : fallback;
 }
 
 inline void header(const char* valueTitle)
