@@ -68,13 +68,17 @@ struct Shared
     ~Shared() { notifier->deleteLater(); }
 
     /// Runs `f` with the connection on the GUI thread, if both still exist by then.
-    template<typename F> void post(std::shared_ptr<Shared> self, F f)
+    /// The posted call holds the block weakly: were it the last owner, the block would die
+    /// while Qt discards pending events under its post-event lock, and the deleteLater() in
+    /// ~Shared would wait for that lock forever.
+    template<typename F> void post(const std::shared_ptr<Shared>& self, F f)
     {
         QMetaObject::invokeMethod(
             notifier,
-            [self, f] {
-                if (self->alive && self->owner)
-                    f(self->owner.data());
+            [weak = std::weak_ptr<Shared>(self), f] {
+                const std::shared_ptr<Shared> block = weak.lock();
+                if (block && block->alive && block->owner)
+                    f(block->owner.data());
             },
             Qt::QueuedConnection);
     }
