@@ -141,6 +141,11 @@ std::optional<qint64> StampCodec::parseTime(QStringView text)
         return std::nullopt;
     const qsizetype dot = text.indexOf(u'.');
     const bool exponent = text.contains(u'e') || text.contains(u'E');
+    if (!exponent && text.startsWith(u'-') && text.size() > 1 && text[1] != u'-' && text[1] != u'+') {
+        // Before 1970 (clock offsets, hand-made files): the same exact decimal, negated.
+        const std::optional<qint64> magnitude = parseTime(text.mid(1));
+        return magnitude ? std::optional<qint64>(-*magnitude) : std::nullopt;
+    }
     if (!exponent && !text.startsWith(u'-')) {
         // Exact decimal: integer seconds and up to nine digits of fraction.
         bool ok = false;
@@ -234,9 +239,11 @@ QByteArray StampCodec::encodeJson(qint64 sampleNs, qint64 timeNs)
 
 QString StampCodec::timeText(qint64 ns)
 {
-    const qint64 sec = ns >= 0 ? ns / kNsPerSec : -((-ns + kNsPerSec - 1) / kNsPerSec);
-    const qint64 nsec = ns - sec * kNsPerSec;
-    return QString::number(sec) + u'.' + QString::number(nsec).rightJustified(9, u'0');
+    // Sign and magnitude, as people write it and as parseTime() reads it back: -1.5 s is
+    // "-1.500000000", not the floored "-2.500000000".
+    const quint64 magnitude = ns < 0 ? quint64(0) - quint64(ns) : quint64(ns);
+    return (ns < 0 ? u"-"_s : QString()) + QString::number(magnitude / kNsPerSec) + u'.'
+        + QString::number(magnitude % kNsPerSec).rightJustified(9, u'0');
 }
 
 std::optional<qint64> StampCodec::decodeFloat64Seconds(const QByteArray& bytes)
