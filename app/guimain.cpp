@@ -42,14 +42,15 @@ QString bridgescopeUsage()
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
-        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map or measure")},
+        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure or reports")},
         {u"-h, --help"_s, Gui::tr("show this help")},
         {u"-v, --version"_s, Gui::tr("show the version")},
     };
     const QList<std::pair<QString, QString>> commands = {
         {u"config validate|convert|peer"_s, Gui::tr("check, convert and pair bridge configs")},
         {u"discover [--json]"_s, Gui::tr("list ROS and MQTT topics")},
-        {u"report INPUT... [--pipeline P]"_s, Gui::tr("latency statistics of measurement files")},
+        {u"record --pipeline P -o RUN"_s, Gui::tr("record a measurement run")},
+        {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},
     };
     QString text = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]")
         + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s
@@ -80,7 +81,7 @@ int runGui(int& argc, char** argv)
     const QCommandLineOption pipeline(
         u"pipeline"_s, Gui::tr("Measure with this pipeline (the suite's metrics-logger YAML)."),
         u"PIPE.yaml"_s);
-    const QCommandLineOption page(u"page"_s, Gui::tr("Open on this page: discover, map or measure."),
+    const QCommandLineOption page(u"page"_s, Gui::tr("Open on this page: discover, map, measure or reports."),
                                   u"PAGE"_s);
     parser.addOptions({screenshot, after, broker, master, pipeline, page});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
@@ -113,7 +114,7 @@ int runGui(int& argc, char** argv)
         window.pages()->setCurrentWidget(window.measurePage());
     }
     if (parser.isSet(page)) {
-        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s};
+        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s};
         const int index = int(names.indexOf(parser.value(page).toLower()));
         if (index < 0) {
             CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));

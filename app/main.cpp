@@ -2,10 +2,12 @@
 #include "cli/clioutput.h"
 #include "cli/configcommand.h"
 #include "cli/discovercommand.h"
+#include "cli/recordcommand.h"
 #include "cli/reportcommand.h"
 #include "guimain.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 
 using namespace Qt::StringLiterals;
 
@@ -16,6 +18,16 @@ void setIdentity()
     QCoreApplication::setApplicationName(u"bridgescope"_s);
     QCoreApplication::setApplicationVersion(QStringLiteral(BRIDGESCOPE_VERSION));
 }
+/// Whether the command line asks for a PDF (--format pdf or --format=pdf).
+bool wantsPdf(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        if (a == "--format=pdf" || (a == "--format" && i + 1 < argc && QByteArray(argv[i + 1]) == "pdf"))
+            return true;
+    }
+    return false;
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -24,7 +36,15 @@ int main(int argc, char** argv)
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
-    static const QStringList commands = {u"config"_s, u"discover"_s, u"report"_s};
+    static const QStringList commands = {u"config"_s, u"discover"_s, u"record"_s, u"report"_s};
+    if (first == u"report"_s && wantsPdf(argc, argv)) {
+        // PDF reports lay text out with Qt GUI; no window ever opens, so no display is needed.
+        if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        QGuiApplication app(argc, argv);
+        installTranslations(app);
+        return runReportCommand(app.arguments().mid(1));
+    }
     if (commands.contains(first) || help || version) {
         // Commands need no display.
         QCoreApplication app(argc, argv);
@@ -40,6 +60,8 @@ int main(int argc, char** argv)
         }
         if (first == u"discover"_s)
             return runDiscoverCommand(args);
+        if (first == u"record"_s)
+            return runRecordCommand(args);
         if (first == u"report"_s)
             return runReportCommand(args);
         return runConfigCommand(args);

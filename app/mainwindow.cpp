@@ -11,9 +11,12 @@
 #include "mappage.h"
 #include "measurepage.h"
 #include "problemspanel.h"
+#include "reportspage.h"
+#include "runbar.h"
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
@@ -36,6 +39,7 @@ MainWindow::MainWindow(QWidget* parent)
     , m_discover(new DiscoverPage(m_session, m_pages))
     , m_map(new MapPage(m_session, m_document, m_undo, m_pages))
     , m_measurePage(new MeasurePage(m_measure, m_pages))
+    , m_reports(new ReportsPage(m_pages))
     , m_configEditor(m_map->editor())
     , m_problemStatus(new QLabel(this))
 {
@@ -44,6 +48,17 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_discover, tr("Discover"));
     m_pages->addTab(m_map, tr("Map"));
     m_pages->addTab(m_measurePage, tr("Measure"));
+    m_pages->addTab(m_reports, tr("Reports"));
+    // A finished recording is ready to report on; every run keeps the bridge config it ran with.
+    connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
+            [this](const QString& path) { m_reports->addInputs({path}); });
+    m_measurePage->runBar()->setBridgeConfigProvider([this]() -> std::pair<QString, QByteArray> {
+        const QString path = m_document->filePath();
+        QFile f(path);
+        if (path.isEmpty() || !f.open(QIODevice::ReadOnly))
+            return {};
+        return {path, f.readAll()};
+    });
     setCentralWidget(m_pages);
     statusBar()->addPermanentWidget(m_problemStatus);
     createMenus();

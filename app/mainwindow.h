@@ -8,6 +8,7 @@ class DiscoverPage;
 class MapPage;
 class MeasurePage;
 class MeasureSession;
+class ReportsPage;
 class LiveSession;
 class ConfigEditor;
 class ConfigFileController;
@@ -33,6 +34,7 @@ public:
     MapPage* mapPage() const { return m_map; }
     MeasurePage* measurePage() const { return m_measurePage; }
     MeasureSession* measure() const { return m_measure; }
+    ReportsPage* reportsPage() const { return m_reports; }
     QTabWidget* pages() const { return m_pages; }
 
 protected:
@@ -52,6 +54,7 @@ private:
     DiscoverPage* m_discover;
     MapPage* m_map;
     MeasurePage* m_measurePage;
+    ReportsPage* m_reports;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;

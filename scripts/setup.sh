@@ -15,7 +15,7 @@ PACKAGES=(
     # YAML
     libyaml-cpp-dev
     # ROS 1 (roscpp, generic subscribers, bags, message headers used by tests)
-    libroscpp-dev libtopic-tools-dev librosbag-dev ros-core-dev
+    libroscpp-dev libtopic-tools-dev librosbag-dev pluginlib-dev ros-core-dev
     libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
     python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-rospy python3-rostopic
     # servers the tests and the demo start

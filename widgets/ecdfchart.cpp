@@ -1,16 +1,24 @@
 // SPDX-License-Identifier: MIT
 #include "ecdfchart.h"
 
+#include "common/atomicfile.h"
 #include "latency/ecdf.h"
 #include "latency/latencyengine.h"
+#include "latency/palette.h"
 
 #include <cmath>
+#include <QApplication>
+#include <QBuffer>
 #include <QChart>
 #include <QChartView>
+#include <QClipboard>
+#include <QFileInfo>
 #include <QGridLayout>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QLogValueAxis>
+#include <QPainter>
+#include <QSvgGenerator>
 #include <QValueAxis>
 
 using namespace Qt::StringLiterals;
@@ -47,11 +55,7 @@ EcdfChart::~EcdfChart() = default;
 
 QColor EcdfChart::colorFor(int seriesIndex)
 {
-    // Distinct, print-friendly hues (Tableau 10).
-    static const QList<QColor> colors {QColor(0x4e79a7), QColor(0xf28e2b), QColor(0xe15759), QColor(0x76b7b2),
-                                       QColor(0x59a14f), QColor(0xedc948), QColor(0xb07aa1), QColor(0xff9da7),
-                                       QColor(0x9c755f), QColor(0xbab0ac)};
-    return colors[seriesIndex % colors.size()];
+    return QColor(seriesColor(seriesIndex));
 }
 
 void EcdfChart::setEngine(const LatencyEngine* engine)
@@ -247,4 +251,44 @@ void EcdfChart::refresh()
             c.median->replace(vertical(median));
         }
     }
+}
+
+QPixmap EcdfChart::toPixmap() const
+{
+    return const_cast<EcdfChart*>(this)->grab(); // grab() only paints
+}
+
+bool EcdfChart::save(const QString& path, QString* error) const
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != u"svg"_s && suffix != u"png"_s) {
+        if (error)
+            *error
+                = tr("%1: a chart is saved as SVG or PNG; give the file the suffix .svg or .png").arg(path);
+        return false;
+    }
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    if (suffix == u"svg"_s) {
+        QSvgGenerator svg;
+        svg.setOutputDevice(&buffer);
+        svg.setSize(size());
+        svg.setViewBox(rect());
+        svg.setTitle(tr("Latency ECDF"));
+        svg.setDescription(tr("Made with Bridgescope"));
+        QPainter painter(&svg);
+        // Vectors, not a screenshot: every chart view paints itself into the generator.
+        for (const auto& p : m_panels)
+            p->view->QWidget::render(&painter, p->view->mapTo(this, QPoint(0, 0)));
+    } else if (!toPixmap().save(&buffer, "PNG")) {
+        if (error)
+            *error = tr("cannot encode the chart as PNG");
+        return false;
+    }
+    return AtomicFile::write(path, buffer.data(), error, false);
+}
+
+void EcdfChart::copyToClipboard() const
+{
+    QApplication::clipboard()->setPixmap(toPixmap());
 }

@@ -12,6 +12,7 @@ class QChart;
 class QChartView;
 class QGridLayout;
 class QLineSeries;
+class QPixmap;
 
 /// ECDFs of latency series as in the paper's Fig. 5: one curve per series, its mean as a dashed
 /// and its median as a dotted vertical line; overlaid in one chart or as small multiples.
@@ -41,6 +42,12 @@ public:
     /// The x range of the chart showing `id`, in ms.
     std::pair<double, double> range(const QString& id) const;
     static QColor colorFor(int seriesIndex);
+
+    /// The chart as the user sees it, for PNG files and the clipboard.
+    QPixmap toPixmap() const;
+    /// Writes PNG or SVG (by the suffix), atomically.
+    bool save(const QString& path, QString* error = nullptr) const;
+    void copyToClipboard() const;
 
 private:
     struct Panel;

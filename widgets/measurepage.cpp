@@ -6,6 +6,7 @@
 #include "latency/latencystatsmodel.h"
 #include "latency/pipelinemodel.h"
 #include "latency/stamptopicmodel.h"
+#include "runbar.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -70,6 +71,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_reset(new QAction(tr("&Reset"), this))
     , m_mode(new QLabel(this))
     , m_counts(new QLabel(this))
+    , m_runBar(new RunBar(measure, this))
 {
     setObjectName(u"measurePage"_s);
 
@@ -114,7 +116,16 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     controls->addSpacing(16);
     controls->addWidget(m_log);
     controls->addWidget(m_multiples);
+    auto* saveChart = new QPushButton(tr("E&xport Chart…"), this);
+    saveChart->setToolTip(tr("Save the chart as PNG or SVG"));
+    auto* copyChart = new QPushButton(tr("Cop&y Chart"), this);
+    copyChart->setToolTip(tr("Copy the chart to the clipboard as an image"));
+    controls->addWidget(saveChart);
+    controls->addWidget(copyChart);
     controls->addStretch();
+    connect(saveChart, &QPushButton::clicked, this, &MeasurePage::chooseChartFile);
+    connect(copyChart, &QPushButton::clicked, m_chart, &EcdfChart::copyToClipboard);
+    m_pipelineControls = {load, save, automatic};
 
     // Pipeline and the stamp topics seen.
     m_pipelineView->setObjectName(u"pipelineView"_s);
@@ -162,7 +173,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     leftLayout->addWidget(m_mode);
     m_mode->setWordWrap(true);
     leftLayout->addWidget(m_pipelineView, 3);
-    auto* seenLabel = new QLabel(tr("Stamp topics &seen:"), left);
+    auto* seenLabel = new QLabel(tr("Stamp &topics seen:"), left);
     seenLabel->setBuddy(m_seenView);
     leftLayout->addWidget(seenLabel);
     leftLayout->addWidget(m_seenView, 1);
@@ -214,6 +225,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
+    layout->addWidget(m_runBar);
     layout->addWidget(split, 1);
     layout->addWidget(m_counts);
     m_counts->setObjectName(u"measureCounts"_s);
@@ -248,8 +260,42 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     connect(measure, &MeasureSession::pipelineChanged, this, &MeasurePage::onPipelineChanged);
     connect(measure, &MeasureSession::stampTopicsChanged, this,
             [this] { m_seen->update(m_measure->discovery(), m_measure->pipeline()); });
+    connect(measure, &MeasureSession::recordingChanged, this, &MeasurePage::updateEditable);
+    connect(measure, &MeasureSession::showingRunChanged, this, &MeasurePage::updateEditable);
     onPipelineChanged();
     updateCounts();
+    updateEditable();
+}
+
+void MeasurePage::updateEditable()
+{
+    // A run's pipeline is fixed: while recording, and while a recorded run is on screen.
+    const bool editable = !m_measure->isRecording() && !m_measure->isShowingRun();
+    for (QWidget* w : std::as_const(m_pipelineControls))
+        w->setEnabled(editable);
+    m_pipelineView->setEditTriggers(editable
+                                        ? QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                                            | QAbstractItemView::AnyKeyPressed
+                                        : QAbstractItemView::NoEditTriggers);
+    m_pipelineView->setAcceptDrops(editable);
+    m_reset->setEnabled(editable);
+    m_window->setEnabled(!m_measure->isRecording());
+}
+
+bool MeasurePage::saveChart(const QString& path, QString* error)
+{
+    return m_chart->save(path, error);
+}
+
+void MeasurePage::chooseChartFile()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Chart"), u"latency-ecdf.svg"_s,
+                                                      tr("SVG (*.svg);;PNG (*.png)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!saveChart(path, &error))
+        QMessageBox::warning(this, tr("Export Chart"), error);
 }
 
 void MeasurePage::applyEdit(const Pipeline& pipeline)
@@ -281,6 +327,8 @@ void MeasurePage::onPipelineChanged()
                      "stamps on MQTT).")
                 : tr("Automatic: ordered by the stamps' times, hosts guessed from the names. Drag rows to "
                      "reorder, double-click a host to change it."));
+    else if (m_measure->isShowingRun())
+        m_mode->setText(tr("The recorded run's pipeline."));
     else if (!m_pipelineFile.isEmpty())
         m_mode->setText(tr("From %1.").arg(QFileInfo(m_pipelineFile).fileName()));
     else

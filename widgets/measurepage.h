@@ -7,6 +7,7 @@ class EcdfChart;
 class MeasureSession;
 class Pipeline;
 class PipelineModel;
+class RunBar;
 class QAction;
 class QCheckBox;
 class QLabel;
@@ -38,6 +39,9 @@ public:
     QCheckBox* logScaleBox() const { return m_log; }
     QCheckBox* smallMultiplesBox() const { return m_multiples; }
     QLabel* modeLabel() const { return m_mode; }
+    RunBar* runBar() const { return m_runBar; }
+    /// Saves the chart as PNG or SVG (by the suffix).
+    bool saveChart(const QString& path, QString* error = nullptr);
 
 private:
     void applyEdit(const Pipeline& pipeline);
@@ -49,6 +53,8 @@ private:
     void removeSelectedStamps();
     void moveSelectedStamp(int delta);
     void addSeenTopic(const QModelIndex& index);
+    void chooseChartFile();
+    void updateEditable();
 
     MeasureSession* m_measure;
     PipelineModel* m_pipeline;
@@ -64,5 +70,7 @@ private:
     QAction* m_reset;
     QLabel* m_mode;
     QLabel* m_counts;
+    RunBar* m_runBar;
+    QList<QWidget*> m_pipelineControls; ///< disabled while recording or showing a run
     QString m_pipelineFile;
 };

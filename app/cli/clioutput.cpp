@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "clioutput.h"
 
+#include <csignal>
 #include <cstdio>
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -23,6 +24,26 @@ void err(const QString& text)
     std::fflush(stderr);
 }
 
+namespace {
+volatile std::sig_atomic_t g_stopRequested = 0;
+
+void requestStop(int)
+{
+    g_stopRequested = 1;
+}
+} // namespace
+
+void catchStopSignals()
+{
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
+}
+
+bool stopRequested()
+{
+    return g_stopRequested != 0;
+}
+
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description)
 {
     parser.setApplicationDescription(description);
@@ -35,7 +56,15 @@ int parseCommand(QCommandLineParser& parser, const QStringList& args, const QStr
         return 2;
     }
     if (parser.isSet(help)) {
-        out(parser.helpText());
+        // Qt names the program in the usage line; the command ("bridgescope report") is what to type.
+        QString text = parser.helpText();
+        const QString usage = QStringLiteral("Usage: ");
+        if (text.startsWith(usage)) {
+            const qsizetype end = text.indexOf(QStringLiteral(" [options]"));
+            if (end > 0 && !QCoreApplication::arguments().isEmpty())
+                text.replace(usage.size(), end - usage.size(), args.first());
+        }
+        out(text);
         return 0;
     }
     return -1;

@@ -13,4 +13,8 @@ void err(const QString& text); ///< a line to stderr
 /// Adds -h/--help and the description, parses `args` (args[0] names the command). Returns -1 to
 /// go on, 0 after printing the help, 2 after printing the error.
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description);
+/// From now on SIGINT and SIGTERM only set stopRequested(), so that a long command can finish or
+/// remove its file instead of dying halfway.
+void catchStopSignals();
+bool stopRequested();
 } // namespace CliOutput

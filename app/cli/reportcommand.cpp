@@ -3,20 +3,22 @@
 
 #include "clioutput.h"
 #include "common/atomicfile.h"
-#include "latency/latencyengine.h"
-#include "latency/latencyreport.h"
-#include "record/runloader.h"
+#include "record/report.h"
+#include "record/reportformats.h"
+#include "reportpdf.h"
 
+#include <cstdio>
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QJsonDocument>
+#include <QElapsedTimer>
+#include <unistd.h>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
 using CliOutput::out;
 
 namespace {
-class Report
+class ReportText
 {
     Q_DECLARE_TR_FUNCTIONS(ReportCommand)
 };
@@ -25,40 +27,60 @@ class Report
 int runReportCommand(const QStringList& arguments)
 {
     QCommandLineParser parser;
-    const QString description = Report::tr(
-        "Computes the latency statistics of measurement files (the benchmarking suite's timestamp CSV) "
-        "over the whole run: every stage, the total and, with hosts in the pipeline, the communication "
-        "round trip, its one-way half and the clock offset. Several inputs are joined into one run.\n"
-        "Exit status: 0 report written, 1 no complete sample, 2 bad options or unreadable input.");
+    const QString description = ReportText::tr(
+        "Reports the latency statistics of measured runs: every stage, the total and, with hosts in the "
+        "pipeline, "
+        "the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope "
+        "record), the benchmarking suite's timestamp CSV or a ROS bag with TimeStamped topics; several "
+        "inputs "
+        "are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join.\n"
+        "Exit status: 0 report written, 1 a run has no complete sample, 2 bad options or input, 130 "
+        "cancelled.");
     const QCommandLineOption pipeline(
-        u"pipeline"_s, Report::tr("Pipeline YAML (the suite's metrics-logger file; hosts: optional)."),
+        u"pipeline"_s, ReportText::tr("Pipeline YAML (the suite's metrics-logger file; hosts: optional)."),
         u"PIPE.yaml"_s);
-    const QCommandLineOption format(u"format"_s, Report::tr("Output format: json (default)."), u"FORMAT"_s,
-                                    u"json"_s);
+    const QCommandLineOption format(u"format"_s, ReportText::tr("json (default), csv, md, tex, html or pdf."),
+                                    u"FORMAT"_s, u"json"_s);
     const QCommandLineOption window(
-        u"window"_s, Report::tr("Statistics over the last N samples (default 0: all)."), u"N"_s, u"0"_s);
-    const QCommandLineOption output({u"o"_s, u"output"_s}, Report::tr("Write to FILE instead of stdout."),
+        u"window"_s, ReportText::tr("Statistics over the last N samples (default 0: all)."), u"N"_s, u"0"_s);
+    const QCommandLineOption output({u"o"_s, u"output"_s}, ReportText::tr("Write to FILE instead of stdout."),
                                     u"FILE"_s);
-    parser.addOptions({pipeline, format, window, output});
-    parser.addPositionalArgument(u"INPUT"_s, Report::tr("Suite timestamp CSV files."), u"INPUT..."_s);
+    const QCommandLineOption join(
+        u"join"_s, ReportText::tr("Join several inputs into one run instead of comparing them."));
+    const QCommandLineOption perSample(
+        u"per-sample-ms"_s,
+        ReportText::tr("csv: one row per sample of stage latencies in ms, not the stamps."));
+    const QCommandLineOption skip(
+        u"skip-bad-rows"_s,
+        ReportText::tr("Skip CSV rows that cannot be read (each is reported) instead of failing."));
+    const QCommandLineOption title(u"title"_s, ReportText::tr("Title of the report."), u"TEXT"_s);
+    parser.addOptions({pipeline, format, window, output, join, perSample, skip, title});
+    parser.addPositionalArgument(u"INPUT"_s, ReportText::tr("Runs, suite timestamp CSV files or bags."),
+                                 u"INPUT..."_s);
     QStringList args = arguments;
     args.replace(0, u"bridgescope report"_s);
     const int parsed = CliOutput::parseCommand(parser, args, description);
     if (parsed >= 0)
         return parsed;
-    if (parser.value(format) != u"json"_s) {
-        err(Report::tr("unknown format %1 (known: json)").arg(parser.value(format)));
+    ReportFormats::Format fmt;
+    if (!ReportFormats::parse(parser.value(format), &fmt)) {
+        err(ReportText::tr("unknown format %1 (known: json, csv, md, tex, html, pdf)")
+                .arg(parser.value(format)));
         return 2;
     }
     bool ok = false;
-    const qint64 windowSamples = parser.value(window).toLongLong(&ok);
-    if (!ok || windowSamples < 0) {
-        err(Report::tr("--window takes a number of samples (0: all)"));
+    Report::Options options;
+    options.window = parser.value(window).toLongLong(&ok);
+    if (!ok || options.window < 0) {
+        err(ReportText::tr("--window takes a number of samples (0: all)"));
         return 2;
     }
+    options.join = parser.isSet(join);
+    options.skipBadRows = parser.isSet(skip);
+    options.title = parser.value(title);
     const QStringList inputs = parser.positionalArguments();
     if (inputs.isEmpty()) {
-        err(Report::tr("no input files; see bridgescope report --help"));
+        err(ReportText::tr("no input files; see bridgescope report --help"));
         return 2;
     }
     std::optional<Pipeline> pipe;
@@ -70,35 +92,78 @@ int runReportCommand(const QStringList& arguments)
             return 2;
         }
     }
-    const std::optional<LoadedRun> run = RunLoader::load(inputs, pipe, &why);
-    if (!run) {
+
+    // Progress on a terminal; Ctrl+C cancels, and nothing is written then.
+    CliOutput::catchStopSignals();
+    const bool tty = ::isatty(STDERR_FILENO);
+    QElapsedTimer clock;
+    clock.start();
+    qint64 shown = -1000;
+    const Progress progress = [&](int percent) {
+        if (tty && clock.elapsed() > 1000 && clock.elapsed() - shown >= 200) {
+            shown = clock.elapsed();
+            std::fprintf(stderr, "\r%s", qPrintable(ReportText::tr("reading… %1 %").arg(percent)));
+            std::fflush(stderr);
+        }
+        return !CliOutput::stopRequested();
+    };
+    QStringList warnings;
+    std::optional<Report> report = Report::build(inputs, pipe, options, &why, &warnings, progress);
+    if (tty && shown >= 0)
+        std::fprintf(stderr, "\r\033[K");
+    if (CliOutput::stopRequested()) {
+        err(ReportText::tr("cancelled; nothing written"));
+        return 130;
+    }
+    if (!report) {
         err(why);
         return 2;
     }
-    for (const QString& problem : run->problems)
-        err(Report::tr("%1 (row skipped)").arg(problem));
-    if (run->malformed > run->problems.size())
-        err(Report::tr("%1 more rows skipped").arg(run->malformed - run->problems.size()));
+    for (const QString& w : std::as_const(warnings))
+        err(ReportText::tr("%1 (row skipped)").arg(w));
 
-    LatencyEngine engine(run->pipeline);
-    engine.setWindow(windowSamples);
-    for (const std::vector<qint64>& sample : run->samples)
-        engine.addSample(sample);
-    QJsonObject doc = LatencyReport::json(engine, run->incomplete);
-    if (run->malformed)
-        doc.insert(u"malformed_rows"_s, run->malformed);
-    const QByteArray text = QJsonDocument(doc).toJson(QJsonDocument::Indented);
+    QByteArray text;
+    switch (fmt) {
+    case ReportFormats::Format::Json:
+        text = ReportFormats::json(*report);
+        break;
+    case ReportFormats::Format::Csv:
+        text = ReportFormats::csv(*report, parser.isSet(perSample), &why);
+        if (text.isEmpty() && !why.isEmpty()) {
+            err(why);
+            return 2;
+        }
+        break;
+    case ReportFormats::Format::Markdown:
+        text = ReportFormats::markdown(*report);
+        break;
+    case ReportFormats::Format::Latex:
+        text = ReportFormats::latex(*report);
+        break;
+    case ReportFormats::Format::Html:
+        text = ReportFormats::html(*report);
+        break;
+    case ReportFormats::Format::Pdf:
+        text = ReportPdf::render(*report);
+        break;
+    }
     if (parser.isSet(output)) {
         if (!AtomicFile::write(parser.value(output), text, &why, false)) {
             err(why);
             return 2;
         }
+    } else if (fmt == ReportFormats::Format::Pdf) {
+        std::fwrite(text.constData(), 1, std::size_t(text.size()), stdout);
     } else {
-        out(QString::fromUtf8(text).trimmed());
+        std::fwrite(text.constData(), 1, std::size_t(text.size()), stdout);
+        std::fflush(stdout);
     }
-    if (run->samples.empty()) {
-        err(Report::tr("no complete sample in the input"));
-        return 1;
+    int status = 0;
+    for (const auto& run : report->runs()) {
+        if (run->engine->samples() == 0) {
+            err(ReportText::tr("%1: no complete sample").arg(run->path));
+            status = 1;
+        }
     }
-    return 0;
+    return status;
 }

@@ -4,9 +4,12 @@
 #include "latency/latencystatsmodel.h"
 #include "latency/stampcodec.h"
 #include "livesession.h"
+#include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosstampsource.h"
 
+#include <QDateTime>
+#include <QSysInfo>
 #include <QThread>
 
 using namespace Qt::StringLiterals;
@@ -16,7 +19,14 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
     , m_live(live)
     , m_ros(new RosStampSource(this))
     , m_stats(new LatencyStatsModel(this))
+    , m_recorder(new RunRecorder(this))
 {
+    connect(m_recorder, &RunRecorder::failed, this, [this](const QString& why) {
+        QString ignored;
+        m_recorder->stop(&ignored);
+        emit recordingChanged(false);
+        emit recordingFailed(why);
+    });
     // The MQTT batch comes before drained() in the same tick: collect it, ingest on drained().
     live->addMqttListener([this](const std::vector<MqttMessage>& batch) {
         m_mqttDecoder.decode(batch, m_pendingStamps, m_pendingLatencies);
@@ -64,11 +74,14 @@ void MeasureSession::onDrained(qint64 nowNs)
     std::vector<LatencyValue> latencies = m_ros->takeLatencies();
     latencies.insert(latencies.end(), m_pendingLatencies.begin(), m_pendingLatencies.end());
     m_pendingLatencies.clear();
+    if (m_showingRun)
+        return; // a recorded run is on screen: live stamps are not measured meanwhile
+    m_recorder->add(stamps, latencies, nowNs);
 
     const int topicsBefore = int(m_discovery.topics().size());
     for (const StampEvent& e : stamps)
         m_discovery.add(e);
-    if (m_automatic)
+    if (m_automatic && !m_recorder->isRecording())
         proposeIfNew();
     m_engine.ingest(stamps);
     for (const LatencyValue& v : latencies)
@@ -109,6 +122,10 @@ void MeasureSession::publish()
 
 void MeasureSession::setPipeline(const Pipeline& pipeline)
 {
+    if (m_recorder->isRecording() || m_showingRun) {
+        emit pipelineChanged(); // the views go back to the pipeline in force
+        return;
+    }
     m_automatic = false;
     m_engine.setPipeline(pipeline);
     updateSubscriptions();
@@ -118,6 +135,8 @@ void MeasureSession::setPipeline(const Pipeline& pipeline)
 
 void MeasureSession::setAutomatic()
 {
+    if (m_recorder->isRecording() || m_showingRun)
+        return;
     m_automatic = true;
     m_proposedTopics = 0;
     m_proposedWithCompleteSamples = false;
@@ -147,4 +166,91 @@ void MeasureSession::reset()
 quint64 MeasureSession::malformedStamps() const
 {
     return m_mqttDecoder.malformed() + m_ros->malformed();
+}
+
+bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* error)
+{
+    if (m_showingRun) {
+        if (error)
+            *error = tr("a recorded run is on screen: go back to live first");
+        return false;
+    }
+    if (m_engine.pipeline().isEmpty()) {
+        if (error)
+            *error = tr("no pipeline yet: load one, or wait until stamps arrive");
+        return false;
+    }
+    info.pipeline = m_engine.pipeline();
+    info.window = m_engine.window();
+    info.timeoutNs = m_engine.timeoutNs();
+    info.rosMaster = m_live->rosMasterUri();
+    info.broker = m_live->mqtt()->profile().url;
+    info.startedNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
+    if (info.host.isEmpty())
+        info.host = QSysInfo::machineHostName() + u" ("_s + QSysInfo::prettyProductName() + u')';
+    if (info.version.isEmpty())
+        info.version = u"Bridgescope "_s + QStringLiteral(BRIDGESCOPE_VERSION) + u", Qt "_s
+            + QString::fromLatin1(qVersion());
+    if (!m_recorder->start(path, info, error))
+        return false;
+    // A run starts from zero, so that opening it later shows exactly what was shown live.
+    m_engine.reset();
+    publish();
+    emit recordingChanged(true);
+    return true;
+}
+
+bool MeasureSession::stopRecording(QString* error)
+{
+    if (!m_recorder->isRecording())
+        return false;
+    const bool ok = m_recorder->stop(error);
+    emit recordingChanged(false);
+    return ok;
+}
+
+bool MeasureSession::isRecording() const
+{
+    return m_recorder->isRecording();
+}
+
+bool MeasureSession::showRun(const RunData& run, QString* error)
+{
+    if (m_recorder->isRecording()) {
+        if (error)
+            *error = tr("recording: stop it before opening a run");
+        return false;
+    }
+    if (!m_showingRun) {
+        m_livePipeline = m_engine.pipeline();
+        m_liveAutomatic = m_automatic;
+        m_liveTimeoutNs = m_engine.timeoutNs();
+    }
+    m_showingRun = true;
+    m_shownRun = run.info;
+    Pipeline p = run.info.pipeline;
+    p.setWindow(int(run.info.window));
+    m_engine.setPipeline(p);
+    m_engine.setTimeoutNs(run.info.timeoutNs > 0 ? run.info.timeoutNs : SampleJoiner::kDefaultTimeoutNs);
+    run.replay(m_engine);
+    emit pipelineChanged();
+    emit showingRunChanged(true);
+    publish();
+    return true;
+}
+
+void MeasureSession::showLive()
+{
+    if (!m_showingRun)
+        return;
+    m_showingRun = false;
+    m_shownRun = RunInfo();
+    m_engine.setTimeoutNs(m_liveTimeoutNs);
+    m_engine.setPipeline(m_livePipeline);
+    m_automatic = m_liveAutomatic;
+    m_proposedTopics = 0;
+    m_proposedWithCompleteSamples = false;
+    emit pipelineChanged();
+    emit showingRunChanged(false);
+    publish();
 }

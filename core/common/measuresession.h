@@ -4,12 +4,14 @@
 #include "latency/latencyengine.h"
 #include "latency/pipelinediscovery.h"
 #include "mqtt/mqttstampdecoder.h"
+#include "record/runfile.h"
 
 #include <QObject>
 #include <QSet>
 #include <vector>
 
 class LatencyStatsModel;
+class RunRecorder;
 class LiveSession;
 class RosStampSource;
 struct RosGraph;
@@ -50,15 +52,35 @@ public:
     quint64 malformedStamps() const;
     QString lastStampError() const { return m_mqttDecoder.lastError(); }
 
-    /// Called with every complete sample (for recording).
+    /// Called with every complete sample.
     void setSampleListener(LatencyEngine::SampleListener listener)
     {
         m_engine.setSampleListener(std::move(listener));
     }
 
+    /// Starts a run: the figures start from zero, the pipeline stays as it is until the run stops,
+    /// and every raw stamp from now on goes to `path` (pipeline, window, sources and times are
+    /// filled into `info`).
+    bool startRecording(const QString& path, RunInfo info, QString* error = nullptr);
+    bool stopRecording(QString* error = nullptr);
+    bool isRecording() const;
+    RunRecorder* recorder() const { return m_recorder; }
+
+    /// Shows a recorded run instead of the live measurement: the figures as they were at its end.
+    /// Live stamps are not measured meanwhile.
+    bool showRun(const RunData& run, QString* error = nullptr);
+    /// Back to measuring live (from zero, with the live pipeline).
+    void showLive();
+    bool isShowingRun() const { return m_showingRun; }
+    const RunInfo& shownRun() const { return m_shownRun; }
+
 signals:
     /// The figures moved (at most once per drain tick).
     void updated();
+    void recordingChanged(bool recording);
+    /// Recording stopped because the run file could not be written.
+    void recordingFailed(const QString& why);
+    void showingRunChanged(bool showingRun);
     void pipelineChanged();
     /// New stamp topics were seen.
     void stampTopicsChanged();
@@ -80,6 +102,12 @@ private:
     std::vector<LatencyValue> m_pendingLatencies;
     QSet<QString> m_graphStampTopics;
     QSet<QString> m_graphLatencyTopics;
+    RunRecorder* m_recorder;
+    bool m_showingRun = false;
+    RunInfo m_shownRun;
+    Pipeline m_livePipeline;
+    bool m_liveAutomatic = true;
+    qint64 m_liveTimeoutNs = SampleJoiner::kDefaultTimeoutNs;
     bool m_automatic = true;
     bool m_paused = false;
     int m_proposedTopics = 0;

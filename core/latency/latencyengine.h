@@ -56,6 +56,7 @@ public:
     void setWindow(qint64 samples);
     qint64 window() const { return m_window; }
     void setTimeoutNs(qint64 ns) { m_joiner.setTimeoutNs(ns); }
+    qint64 timeoutNs() const { return m_joiner.timeoutNs(); }
     void setMaxPending(int samples) { m_joiner.setMaxPending(samples); }
     void setSampleListener(SampleListener listener) { m_listener = std::move(listener); }
 

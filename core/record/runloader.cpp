@@ -1,59 +1,109 @@
 // SPDX-License-Identifier: MIT
 #include "runloader.h"
 
+#include "ros/rosbagimport.h"
 #include "suitecsv.h"
 
-#include <QSet>
+#include <QFileInfo>
 
-std::optional<LoadedRun> RunLoader::load(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
-                                         QString* error)
+using namespace Qt::StringLiterals;
+
+RunLoader::Kind RunLoader::kindOf(const QString& path)
 {
-    const auto fail = [error](const QString& why) -> std::optional<LoadedRun> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
-    if (inputs.isEmpty())
-        return fail(tr("no input files"));
-    LoadedRun run;
-    if (pipeline)
-        run.pipeline = *pipeline;
-    for (const QString& path : inputs) {
-        QString why;
-        std::optional<SuiteCsv::Data> data = SuiteCsv::read(path, &why);
-        if (!data)
-            return fail(why);
-        if (run.pipeline.isEmpty()) {
-            run.pipeline = Pipeline(data->topics, 0);
-            if (run.pipeline.topicCount() < 2)
-                return fail(tr("%1: a pipeline needs at least two stamp topics, the file has %2")
-                                .arg(path)
-                                .arg(data->topics.size()));
-        }
-        // Column of each pipeline topic in this file.
-        std::vector<int> column;
-        for (const QString& topic : run.pipeline.topics()) {
-            int found = -1;
-            for (int c = 0; c < data->topics.size(); ++c)
-                if (Pipeline::sameTopic(topic, data->topics[c]))
-                    found = c;
-            if (found < 0)
-                return fail(tr("%1: no column for stamp topic %2").arg(path, topic));
-            column.push_back(found);
-        }
-        if (!pipeline && data->topics.size() != run.pipeline.topicCount())
-            return fail(tr("%1: its columns differ from %2's; give --pipeline to pick the common topics")
-                            .arg(path, inputs.first()));
-        for (const std::vector<qint64>& row : data->samples) {
-            std::vector<qint64> times;
-            times.reserve(column.size());
-            for (int c : column)
-                times.push_back(row[std::size_t(c)]);
-            run.samples.push_back(std::move(times));
-        }
-        run.incomplete += data->incomplete;
-        run.malformed += data->malformed;
-        run.problems += data->problems;
+    if (RunFile::looksLikeRun(path))
+        return Kind::Run;
+    if (RosbagImport::looksLikeBag(path))
+        return Kind::Bag;
+    return Kind::SuiteCsv;
+}
+
+QString RunLoader::kindName(Kind kind)
+{
+    switch (kind) {
+    case Kind::Run:
+        return tr("run");
+    case Kind::Bag:
+        return tr("ROS bag");
+    case Kind::SuiteCsv:
+        return tr("suite CSV");
     }
+    return {};
+}
+
+std::optional<RunData> RunLoader::load(const QString& path, const Options& options, QString* error,
+                                       QStringList* warnings, const Progress& progress)
+{
+    const Kind kind = kindOf(path);
+    if (kind == Kind::Run)
+        return RunFile::read(path, error, progress);
+    if (kind == Kind::Bag)
+        return RosbagImport::read(path, error, progress);
+    std::optional<SuiteCsv::Data> csv = SuiteCsv::read(path, error);
+    if (!csv)
+        return std::nullopt;
+    if (csv->malformed > 0 && !options.skipBadRows) {
+        if (error)
+            *error = csv->problems.value(0)
+                + (csv->malformed > 1 ? tr(" (and %1 more rows that cannot be read)").arg(csv->malformed - 1)
+                                      : QString());
+        return std::nullopt;
+    }
+    if (warnings)
+        *warnings += csv->problems;
+    if (csv->topics.size() < 2) {
+        if (error)
+            *error = tr("%1: a pipeline needs at least two stamp topics, the file has %2")
+                         .arg(path)
+                         .arg(csv->topics.size());
+        return std::nullopt;
+    }
+    RunData run = RunData::fromSamples(Pipeline(csv->topics, 0), csv->samples);
+    run.droppedBeforeImport = csv->incomplete;
+    run.info.name = QFileInfo(path).completeBaseName();
+    run.info.source = QFileInfo(path).absoluteFilePath();
+    if (csv->malformed)
+        run.info.notes = tr("%1 rows that did not read were skipped.").arg(csv->malformed);
+    if (progress)
+        progress(100);
     return run;
+}
+
+RunData RunLoader::join(std::vector<RunData> runs)
+{
+    if (runs.empty())
+        return {};
+    RunData out = std::move(runs.front());
+    for (std::size_t r = 1; r < runs.size(); ++r) {
+        RunData& next = runs[r];
+        std::vector<int> topicMap;
+        for (const QString& t : next.topics) {
+            qsizetype i = out.topics.indexOf(t);
+            if (i < 0) {
+                i = out.topics.size();
+                out.topics << t;
+            }
+            topicMap.push_back(int(i));
+        }
+        std::vector<int> seriesMap;
+        for (const QString& s : next.series) {
+            qsizetype i = out.series.indexOf(s);
+            if (i < 0) {
+                i = out.series.size();
+                out.series << s;
+            }
+            seriesMap.push_back(int(i));
+        }
+        for (RecordedStamp s : next.stamps) {
+            s.topic = topicMap[std::size_t(s.topic)];
+            out.stamps.push_back(s);
+        }
+        for (RecordedLatency l : next.latencies) {
+            l.series = seriesMap[std::size_t(l.series)];
+            out.latencies.push_back(l);
+        }
+        out.droppedBeforeImport += next.droppedBeforeImport;
+        out.info.stoppedNs = std::max(out.info.stoppedNs, next.info.stoppedNs);
+        out.info.name += u" + "_s + next.info.name;
+    }
+    return out;
 }

@@ -1,32 +1,31 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latency/pipeline.h"
+#include "runfile.h"
 
 #include <optional>
 #include <QCoreApplication>
 #include <QStringList>
-#include <vector>
 
-/// Samples read from measurement files, joined into one run for a report.
-struct LoadedRun
-{
-    Pipeline pipeline;
-    std::vector<std::vector<qint64>> samples; ///< stamps in pipeline order, ns since the epoch
-    qint64 incomplete = 0; ///< samples that missed stamps (dropped)
-    qint64 malformed = 0; ///< unreadable rows or records, skipped
-    QStringList problems; ///< "FILE:LINE: what"
-};
-
-/// Reads the inputs of `bridgescope report` (suite CSV files) into one run.
-///
-/// Without a pipeline, the first file's columns are the pipeline and every other file must have
-/// the same topics; with one, every file must have all of its topics (in any order, other columns
-/// ignored), and its hosts and window apply.
+/// Reads any measurement input into a run: a run file, the suite's timestamp CSV, or a ROS bag
+/// (told apart by their first bytes, not their names). Inputs are only read, never changed.
 class RunLoader
 {
     Q_DECLARE_TR_FUNCTIONS(RunLoader)
 public:
-    static std::optional<LoadedRun> load(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
-                                         QString* error = nullptr);
+    enum class Kind { Run, Bag, SuiteCsv };
+    static Kind kindOf(const QString& path);
+    static QString kindName(Kind kind);
+
+    struct Options
+    {
+        /// A suite CSV row that does not read is an error; with this, it is skipped and reported.
+        bool skipBadRows = false;
+    };
+
+    /// The input as a run. `warnings` gets what was skipped ("FILE:LINE: what").
+    static std::optional<RunData> load(const QString& path, const Options& options, QString* error = nullptr,
+                                       QStringList* warnings = nullptr, const Progress& progress = {});
+    /// Several inputs as one run: their events one after the other (same stamp topics expected).
+    static RunData join(std::vector<RunData> runs);
 };

@@ -240,17 +240,52 @@ private slots:
     {
         QTemporaryDir dir;
         const SyntheticRun run = SyntheticRun::paper(10, 0, 1);
-        QByteArray text = SuiteCsv::write(run.topics, run.samples);
-        text += "1,2\r\n"; // malformed: reported on stderr, counted, not fatal
-        const QString csv = writeFile(dir, u"run.csv"_s, text);
-        const Run r = bridgescope({u"report"_s, csv, csv}); // two inputs: one run of 20 samples
+        const QString csv = writeFile(dir, u"run.csv"_s, SuiteCsv::write(run.topics, run.samples));
+        const Run r = bridgescope({u"report"_s, csv});
         QCOMPARE(r.exit, 0);
         const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8()).object();
-        QCOMPARE(doc.value(u"samples"_s).toInt(), 20);
+        QCOMPARE(doc.value(u"samples"_s).toInt(), 10);
         QVERIFY(doc.value(u"communication"_s).isNull());
         QVERIFY(doc.value(u"clock_offset"_s).isNull());
-        QCOMPARE(doc.value(u"malformed_rows"_s).toInt(), 2);
+    }
+
+    // Regression guard: a row that does not read is an error with its place, unless skipped on purpose.
+    void malformedRowsFailUnlessSkipped()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun run = SyntheticRun::paper(10, 0, 1);
+        QByteArray text = SuiteCsv::write(run.topics, run.samples);
+        text += "1,2\r\n";
+        const QString csv = writeFile(dir, u"run.csv"_s, text);
+        Run r = bridgescope({u"report"_s, csv});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(csv + u":12: 2 cells, the header has 12"_s), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+        r = bridgescope({u"report"_s, csv, u"--skip-bad-rows"_s});
+        QCOMPARE(r.exit, 0);
         QVERIFY2(r.err.contains(csv + u":12: 2 cells"_s), qPrintable(r.err));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"samples"_s).toInt(), 10);
+    }
+
+    void severalInputsCompareOrJoin()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun a = SyntheticRun::paper(10, 0, 1);
+        SyntheticRun b = SyntheticRun::paper(15, 0, 2);
+        for (auto& sample : b.samples) // an hour later
+            for (qint64& t : sample)
+                t += 3'600'000'000'000LL;
+        const QString first = writeFile(dir, u"a.csv"_s, SuiteCsv::write(a.topics, a.samples));
+        const QString second = writeFile(dir, u"b.csv"_s, SuiteCsv::write(b.topics, b.samples));
+        Run r = bridgescope({u"report"_s, first, second});
+        QCOMPARE(r.exit, 0);
+        const QJsonArray runs = QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"runs"_s).toArray();
+        QCOMPARE(runs.size(), 2);
+        QCOMPARE(runs[0].toObject().value(u"name"_s).toString(), u"a"_s);
+        QCOMPARE(runs[1].toObject().value(u"samples"_s).toInt(), 15);
+        r = bridgescope({u"report"_s, first, second, u"--join"_s});
+        QCOMPARE(r.exit, 0);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"samples"_s).toInt(), 25);
     }
 
     void reportRefusesWhatItCannotRead()
@@ -265,7 +300,7 @@ private slots:
         const QString pipe = writeFile(dir, u"p.yaml"_s, "topics_in_order: [/a, /c]\n");
         r = bridgescope({u"report"_s, csv, u"--pipeline"_s, pipe});
         QCOMPARE(r.exit, 2);
-        QVERIFY2(r.err.contains(u"no column for stamp topic /c"_s), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u"no stamps of topic /c (it has: /a, /b)"_s), qPrintable(r.err));
         const QString empty = writeFile(dir, u"empty.csv"_s, "/a,/b\r\n");
         r = bridgescope({u"report"_s, empty});
         QCOMPARE(r.exit, 1);
@@ -281,6 +316,7 @@ private slots:
         QTest::newRow("peer") << QStringList {u"config"_s, u"peer"_s, u"--help"_s};
         QTest::newRow("top") << QStringList {u"--help"_s};
         QTest::newRow("report") << QStringList {u"report"_s, u"--help"_s};
+        QTest::newRow("record") << QStringList {u"record"_s, u"--help"_s};
         QTest::newRow("discover") << QStringList {u"discover"_s, u"--help"_s};
     }
     void everyCommandHasHelp()

@@ -1,0 +1,490 @@
+// SPDX-License-Identifier: MIT
+#include "runfile.h"
+
+#include "latency/latencyengine.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QHash>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QUuid>
+#include <QVariant>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// A database connection of this thread that is removed again on destruction.
+class Connection
+{
+public:
+    explicit Connection(const QString& path, bool readOnly = false)
+        : m_name(u"bridgescope-run-"_s + QUuid::createUuid().toString(QUuid::WithoutBraces))
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, m_name);
+        db.setDatabaseName(path);
+        if (readOnly)
+            db.setConnectOptions(u"QSQLITE_OPEN_READONLY"_s);
+        m_open = db.open();
+        if (!m_open)
+            m_error = db.lastError().text();
+    }
+    ~Connection()
+    {
+        {
+            QSqlDatabase db = QSqlDatabase::database(m_name, false);
+            if (db.isOpen())
+                db.close();
+        }
+        QSqlDatabase::removeDatabase(m_name);
+    }
+    QSqlDatabase db() const { return QSqlDatabase::database(m_name, false); }
+    bool isOpen() const { return m_open; }
+    QString error() const { return m_error; }
+
+private:
+    QString m_name;
+    bool m_open = false;
+    QString m_error;
+};
+
+bool exec(QSqlQuery& q, const QString& sql, QString* error)
+{
+    if (q.exec(sql))
+        return true;
+    if (error)
+        *error = q.lastError().text();
+    return false;
+}
+
+QString metaText(const QHash<QString, QVariant>& meta, const QString& key)
+{
+    return meta.value(key).toString();
+}
+} // namespace
+
+struct RunWriter::Private
+{
+    std::unique_ptr<Connection> connection;
+    QHash<QString, qint64> topicIds;
+    QHash<QString, qint64> seriesIds;
+    std::unique_ptr<QSqlQuery> insertStamp;
+    std::unique_ptr<QSqlQuery> insertLatency;
+
+    void prepare()
+    {
+        QSqlDatabase db = connection->db();
+        insertStamp = std::make_unique<QSqlQuery>(db);
+        insertStamp->prepare(
+            u"INSERT INTO stamps(topic, sample_ns, time_ns, received_ns, drained_ns) VALUES (?, ?, ?, ?, ?)"_s);
+        insertLatency = std::make_unique<QSqlQuery>(db);
+        insertLatency->prepare(
+            u"INSERT INTO latencies(series, value_ns, received_ns, drained_ns) VALUES (?, ?, ?, ?)"_s);
+    }
+
+    qint64 idOf(QHash<QString, qint64>& ids, const QString& table, const QString& name, QString* error)
+    {
+        const auto it = ids.constFind(name);
+        if (it != ids.cend())
+            return *it;
+        QSqlQuery q(connection->db());
+        q.prepare(u"INSERT INTO %1(name) VALUES (?)"_s.arg(table));
+        q.addBindValue(name);
+        if (!q.exec()) {
+            if (error)
+                *error = q.lastError().text();
+            return -1;
+        }
+        const qint64 id = q.lastInsertId().toLongLong();
+        ids.insert(name, id);
+        return id;
+    }
+};
+
+RunWriter::RunWriter()
+    : d(std::make_unique<Private>())
+{ }
+
+RunWriter::~RunWriter()
+{
+    d->insertStamp.reset();
+    d->insertLatency.reset();
+    d->connection.reset();
+}
+
+bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
+{
+    if (QFileInfo::exists(path)) {
+        if (error)
+            *error = tr("%1 exists already; a run is never overwritten").arg(path);
+        return false;
+    }
+    if (!QDir().mkpath(QFileInfo(path).absolutePath())) {
+        if (error)
+            *error = tr("%1: cannot create its folder").arg(path);
+        return false;
+    }
+    d->connection = std::make_unique<Connection>(path);
+    if (!d->connection->isOpen()) {
+        if (error)
+            *error = tr("%1: %2").arg(path, d->connection->error());
+        return false;
+    }
+    QSqlDatabase db = d->connection->db();
+    QSqlQuery q(db);
+    // WAL: a commit is durable against a killed process, and readers never block the writer.
+    const QStringList schema {
+        u"PRAGMA journal_mode=WAL"_s,
+        u"PRAGMA synchronous=NORMAL"_s,
+        u"CREATE TABLE meta(key TEXT PRIMARY KEY, value)"_s,
+        u"CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE)"_s,
+        u"CREATE TABLE series(id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE)"_s,
+        u"CREATE TABLE stamps(topic INTEGER NOT NULL, sample_ns INTEGER NOT NULL, time_ns INTEGER NOT NULL, "
+        "received_ns INTEGER NOT NULL, drained_ns INTEGER NOT NULL)"_s,
+        u"CREATE TABLE latencies(series INTEGER NOT NULL, value_ns INTEGER NOT NULL, received_ns INTEGER NOT "
+        u"NULL, "
+        "drained_ns INTEGER NOT NULL)"_s,
+    };
+    for (const QString& sql : schema)
+        if (!exec(q, sql, error))
+            return false;
+    const QList<std::pair<QString, QVariant>> meta {
+        {u"format"_s, u"bridgescope-run"_s},
+        {u"format_version"_s, RunFile::kFormatVersion},
+        {u"name"_s, info.name},
+        {u"notes"_s, info.notes},
+        {u"started_ns"_s, info.startedNs},
+        {u"stopped_ns"_s, info.stoppedNs},
+        {u"host"_s, info.host},
+        {u"version"_s, info.version},
+        {u"ros_master"_s, info.rosMaster},
+        {u"broker"_s, info.broker},
+        {u"source"_s, info.source},
+        {u"pipeline"_s, QString::fromUtf8(info.pipeline.toYaml())},
+        {u"window"_s, info.window},
+        {u"timeout_ns"_s, info.timeoutNs},
+        {u"bridge_config_path"_s, info.bridgeConfigPath},
+        {u"bridge_config"_s, QString::fromUtf8(info.bridgeConfig)},
+    };
+    for (const auto& [key, value] : meta)
+        if (!setMeta(key, value, error))
+            return false;
+    d->prepare();
+    return true;
+}
+
+bool RunWriter::open(const QString& path, QString* error)
+{
+    d->connection = std::make_unique<Connection>(path);
+    if (!d->connection->isOpen()) {
+        if (error)
+            *error = tr("%1: %2").arg(path, d->connection->error());
+        return false;
+    }
+    QSqlQuery q(d->connection->db());
+    for (auto [table, ids] :
+         {std::make_pair(u"topics"_s, &d->topicIds), std::make_pair(u"series"_s, &d->seriesIds)}) {
+        if (!exec(q, u"SELECT id, name FROM %1"_s.arg(table), error))
+            return false;
+        while (q.next())
+            ids->insert(q.value(1).toString(), q.value(0).toLongLong());
+    }
+    if (!exec(q, u"SELECT count(*) FROM stamps"_s, error) || !q.next())
+        return false;
+    m_stamps = q.value(0).toLongLong();
+    d->prepare();
+    return true;
+}
+
+bool RunWriter::setMeta(const QString& key, const QVariant& value, QString* error)
+{
+    QSqlQuery q(d->connection->db());
+    q.prepare(u"INSERT OR REPLACE INTO meta(key, value) VALUES (?, ?)"_s);
+    q.addBindValue(key);
+    q.addBindValue(value);
+    if (q.exec())
+        return true;
+    if (error)
+        *error = q.lastError().text();
+    return false;
+}
+
+bool RunWriter::append(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
+                       qint64 drainedNs, QString* error)
+{
+    if (stamps.empty() && latencies.empty())
+        return true;
+    QSqlDatabase db = d->connection->db();
+    if (!db.transaction()) {
+        if (error)
+            *error = db.lastError().text();
+        return false;
+    }
+    const auto fail = [&](const QSqlQuery& q) {
+        if (error)
+            *error = q.lastError().text();
+        db.rollback();
+        return false;
+    };
+    QSqlQuery& s = *d->insertStamp;
+    for (const StampEvent& e : stamps) {
+        const qint64 topic = d->idOf(d->topicIds, u"topics"_s, e.topic, error);
+        if (topic < 0) {
+            db.rollback();
+            return false;
+        }
+        s.bindValue(0, topic);
+        s.bindValue(1, e.sampleNs);
+        s.bindValue(2, e.timeNs);
+        s.bindValue(3, e.receivedNs);
+        s.bindValue(4, drainedNs);
+        if (!s.exec())
+            return fail(s);
+    }
+    QSqlQuery& l = *d->insertLatency;
+    for (const LatencyValue& v : latencies) {
+        const qint64 series = d->idOf(d->seriesIds, u"series"_s, v.series, error);
+        if (series < 0) {
+            db.rollback();
+            return false;
+        }
+        l.bindValue(0, series);
+        l.bindValue(1, v.valueNs);
+        l.bindValue(2, v.receivedNs);
+        l.bindValue(3, drainedNs);
+        if (!l.exec())
+            return fail(l);
+    }
+    if (!db.commit()) {
+        if (error)
+            *error = db.lastError().text();
+        return false;
+    }
+    m_stamps += qint64(stamps.size());
+    return true;
+}
+
+bool RunWriter::finish(qint64 stoppedNs, QString* error)
+{
+    if (!setMeta(u"stopped_ns"_s, stoppedNs, error))
+        return false;
+    QSqlQuery q(d->connection->db());
+    // One self-contained file from now on: fold the log in and leave WAL mode.
+    return exec(q, u"PRAGMA wal_checkpoint(TRUNCATE)"_s, error)
+        && exec(q, u"PRAGMA journal_mode=DELETE"_s, error);
+}
+
+bool RunFile::looksLikeRun(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) && f.read(16) == QByteArray("SQLite format 3", 16);
+}
+
+std::optional<RunData> RunFile::read(const QString& path, QString* error, const Progress& progress)
+{
+    const auto fail = [&](const QString& why) -> std::optional<RunData> {
+        if (error)
+            *error = path + u": "_s + why;
+        return std::nullopt;
+    };
+    QFile probe(path);
+    if (!probe.open(QIODevice::ReadOnly))
+        return fail(probe.errorString());
+    if (probe.read(16) != QByteArray("SQLite format 3", 16))
+        return fail(tr("not a Bridgescope run (not an SQLite database)"));
+    probe.close();
+    // A run left by a killed recorder still has its write-ahead log: open it writable to recover it.
+    const bool recovering = QFileInfo::exists(path + u"-wal"_s);
+    Connection connection(path, !recovering);
+    if (!connection.isOpen())
+        return fail(connection.error());
+    QSqlQuery q(connection.db());
+    q.setForwardOnly(true);
+    QHash<QString, QVariant> meta;
+    if (!q.exec(u"SELECT key, value FROM meta"_s))
+        return fail(tr("not a Bridgescope run (%1)").arg(q.lastError().text()));
+    while (q.next())
+        meta.insert(q.value(0).toString(), q.value(1));
+    if (metaText(meta, u"format"_s) != u"bridgescope-run"_s)
+        return fail(tr("not a Bridgescope run (no run metadata)"));
+    if (meta.value(u"format_version"_s).toInt() > kFormatVersion)
+        return fail(tr("written by a newer Bridgescope (run format %1, this one reads %2)")
+                        .arg(meta.value(u"format_version"_s).toInt())
+                        .arg(kFormatVersion));
+    RunData run;
+    RunInfo& info = run.info;
+    info.name = metaText(meta, u"name"_s);
+    info.notes = metaText(meta, u"notes"_s);
+    info.startedNs = meta.value(u"started_ns"_s).toLongLong();
+    info.stoppedNs = meta.value(u"stopped_ns"_s).toLongLong();
+    info.host = metaText(meta, u"host"_s);
+    info.version = metaText(meta, u"version"_s);
+    info.rosMaster = metaText(meta, u"ros_master"_s);
+    info.broker = metaText(meta, u"broker"_s);
+    info.source = metaText(meta, u"source"_s);
+    info.window = meta.value(u"window"_s).toLongLong();
+    info.timeoutNs = meta.value(u"timeout_ns"_s, 5'000'000'000LL).toLongLong();
+    info.bridgeConfigPath = metaText(meta, u"bridge_config_path"_s);
+    info.bridgeConfig = metaText(meta, u"bridge_config"_s).toUtf8();
+    QString why;
+    const std::optional<Pipeline> pipeline = Pipeline::fromYaml(metaText(meta, u"pipeline"_s).toUtf8(), &why);
+    if (!pipeline)
+        return fail(tr("its pipeline cannot be read: %1").arg(why));
+    info.pipeline = *pipeline;
+
+    QHash<qint64, int> topicIndex;
+    if (!q.exec(u"SELECT id, name FROM topics ORDER BY id"_s))
+        return fail(q.lastError().text());
+    while (q.next()) {
+        topicIndex.insert(q.value(0).toLongLong(), int(run.topics.size()));
+        run.topics << q.value(1).toString();
+    }
+    QHash<qint64, int> seriesIndex;
+    if (!q.exec(u"SELECT id, name FROM series ORDER BY id"_s))
+        return fail(q.lastError().text());
+    while (q.next()) {
+        seriesIndex.insert(q.value(0).toLongLong(), int(run.series.size()));
+        run.series << q.value(1).toString();
+    }
+    qint64 total = 0;
+    if (q.exec(u"SELECT count(*) FROM stamps"_s) && q.next())
+        total = q.value(0).toLongLong();
+    run.stamps.reserve(std::size_t(total));
+    if (!q.exec(u"SELECT topic, sample_ns, time_ns, received_ns, drained_ns FROM stamps ORDER BY rowid"_s))
+        return fail(q.lastError().text());
+    qint64 n = 0;
+    while (q.next()) {
+        const auto topic = topicIndex.constFind(q.value(0).toLongLong());
+        if (topic == topicIndex.cend())
+            return fail(tr("stamp %1 names a topic the run does not have").arg(n + 1));
+        run.stamps.push_back({*topic, q.value(1).toLongLong(), q.value(2).toLongLong(),
+                              q.value(3).toLongLong(), q.value(4).toLongLong()});
+        if (progress && ++n % 50000 == 0 && !progress(int(90 * n / std::max<qint64>(total, 1))))
+            return fail(tr("cancelled"));
+    }
+    if (q.lastError().isValid())
+        return fail(q.lastError().text());
+    if (!q.exec(u"SELECT series, value_ns, received_ns, drained_ns FROM latencies ORDER BY rowid"_s))
+        return fail(q.lastError().text());
+    while (q.next()) {
+        const auto series = seriesIndex.constFind(q.value(0).toLongLong());
+        if (series == seriesIndex.cend())
+            return fail(tr("a latency names a series the run does not have"));
+        run.latencies.push_back(
+            {*series, q.value(1).toLongLong(), q.value(2).toLongLong(), q.value(3).toLongLong()});
+    }
+    if (progress)
+        progress(100);
+    return run;
+}
+
+bool RunFile::write(const QString& path, const RunData& run, QString* error, const Progress& progress)
+{
+    const QString temp = path + u".part-"_s + QUuid::createUuid().toString(QUuid::Id128).left(8);
+    const auto cleanUp = [&] {
+        for (const QString& suffix : {QString(), u"-wal"_s, u"-shm"_s, u"-journal"_s})
+            QFile::remove(temp + suffix);
+    };
+    {
+        RunWriter writer;
+        if (!writer.create(temp, run.info, error)) {
+            cleanUp();
+            return false;
+        }
+        // One transaction per drain tick as recorded, in chunks.
+        std::vector<StampEvent> stamps;
+        std::vector<LatencyValue> latencies;
+        std::size_t l = 0;
+        for (std::size_t i = 0; i < run.stamps.size();) {
+            const qint64 drained = run.stamps[i].drainedNs;
+            stamps.clear();
+            latencies.clear();
+            while (i < run.stamps.size() && run.stamps[i].drainedNs == drained && stamps.size() < 20000) {
+                const RecordedStamp& s = run.stamps[i++];
+                stamps.push_back({run.topics[s.topic], s.sampleNs, s.timeNs, s.receivedNs});
+            }
+            while (l < run.latencies.size() && run.latencies[l].drainedNs <= drained) {
+                const RecordedLatency& v = run.latencies[l++];
+                latencies.push_back({run.series[v.series], v.valueNs, v.receivedNs});
+            }
+            if (!writer.append(stamps, latencies, drained, error)) {
+                cleanUp();
+                return false;
+            }
+            if (progress && !progress(int(95 * i / run.stamps.size()))) {
+                cleanUp();
+                if (error)
+                    *error = tr("cancelled");
+                return false;
+            }
+        }
+        latencies.clear();
+        for (; l < run.latencies.size(); ++l)
+            latencies.push_back(
+                {run.series[run.latencies[l].series], run.latencies[l].valueNs, run.latencies[l].receivedNs});
+        if (!writer.append({}, latencies, run.latencies.empty() ? 0 : run.latencies.back().drainedNs, error)
+            || !writer.finish(run.info.stoppedNs, error)) {
+            cleanUp();
+            return false;
+        }
+    }
+    // rename(2) replaces the target in one step: readers see the old run or the new one.
+    if (std::rename(QFile::encodeName(temp).constData(), QFile::encodeName(path).constData()) != 0) {
+        if (error)
+            *error = tr("%1: cannot replace it (%2)").arg(path, QString::fromLocal8Bit(std::strerror(errno)));
+        cleanUp();
+        return false;
+    }
+    if (progress)
+        progress(100);
+    return true;
+}
+
+void RunData::replay(LatencyEngine& engine) const
+{
+    std::vector<int> topicIndex;
+    for (const QString& t : topics)
+        topicIndex.push_back(engine.pipeline().indexOf(t));
+    std::size_t l = 0;
+    for (std::size_t i = 0; i < stamps.size();) {
+        const qint64 drained = stamps[i].drainedNs;
+        for (; i < stamps.size() && stamps[i].drainedNs == drained; ++i) {
+            const RecordedStamp& s = stamps[i];
+            engine.ingest(topicIndex[std::size_t(s.topic)], s.sampleNs, s.timeNs, s.receivedNs);
+        }
+        for (; l < latencies.size() && latencies[l].drainedNs <= drained; ++l)
+            engine.ingest(
+                LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+        engine.expire(drained);
+    }
+    for (; l < latencies.size(); ++l)
+        engine.ingest(
+            LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+}
+
+RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples)
+{
+    RunData run;
+    run.info.pipeline = pipeline;
+    run.info.window = 0;
+    run.topics = pipeline.topics();
+    run.stamps.reserve(samples.size() * std::size_t(pipeline.topicCount()));
+    for (const std::vector<qint64>& s : samples) {
+        // The file does not say which sample a row is: its first stamp stands for it (unique in
+        // practice, also across files that are joined).
+        const qint64 key = s.front();
+        const qint64 last = *std::max_element(s.begin(), s.end());
+        for (std::size_t t = 0; t < s.size(); ++t)
+            run.stamps.push_back({int(t), key, s[t], last, last});
+    }
+    if (!samples.empty()) {
+        run.info.startedNs = samples.front().front();
+        run.info.stoppedNs = samples.back().back();
+    }
+    return run;
+}

@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: MIT
+#include "runrecorder.h"
+
+#include <atomic>
+#include <mutex>
+#include <QDateTime>
+#include <QPointer>
+#include <QThread>
+#include <QTimer>
+
+struct RunRecorder::Private
+{
+    struct Tick
+    {
+        std::vector<StampEvent> stamps;
+        std::vector<LatencyValue> latencies;
+        qint64 drainedNs = 0;
+    };
+    std::mutex mutex;
+    std::vector<Tick> queued; ///< guarded by mutex
+    std::atomic<qint64> queuedStamps {0};
+    std::atomic<qint64> committed {0};
+    std::atomic<bool> recording {false};
+    QString path;
+    QThread thread;
+    QObject* worker = nullptr; ///< lives in `thread`, owns the writer and the timer
+    std::unique_ptr<RunWriter> writer; ///< touched on the worker only
+    QTimer* timer = nullptr;
+
+    // Worker thread: one transaction per tick of the GUI, committed together.
+    bool flush(QString* error)
+    {
+        std::vector<Tick> ticks;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            ticks.swap(queued);
+        }
+        for (const Tick& t : ticks) {
+            if (!writer->append(t.stamps, t.latencies, t.drainedNs, error))
+                return false;
+            queuedStamps.fetch_sub(qint64(t.stamps.size()));
+        }
+        committed.store(writer->stampCount());
+        return true;
+    }
+};
+
+RunRecorder::RunRecorder(QObject* parent)
+    : QObject(parent)
+    , d(std::make_shared<Private>())
+{
+    d->thread.setObjectName(QStringLiteral("run-recorder"));
+}
+
+RunRecorder::~RunRecorder()
+{
+    if (isRecording())
+        stop();
+}
+
+bool RunRecorder::start(const QString& path, const RunInfo& info, QString* error)
+{
+    if (isRecording()) {
+        if (error)
+            *error = tr("already recording to %1").arg(d->path);
+        return false;
+    }
+    // The file is created here, so that a bad path is reported at once; writing moves to the worker.
+    auto writer = std::make_unique<RunWriter>();
+    if (!writer->create(path, info, error))
+        return false;
+    writer.reset(); // the connection belongs to this thread: reopen on the worker
+    d->path = path;
+    d->committed = 0;
+    d->queuedStamps = 0;
+    d->worker = new QObject;
+    d->worker->moveToThread(&d->thread);
+    connect(&d->thread, &QThread::finished, d->worker, &QObject::deleteLater);
+    d->thread.start();
+    d->recording = true;
+    std::shared_ptr<Private> p = d;
+    QPointer<RunRecorder> self(this);
+    QString openError;
+    QMetaObject::invokeMethod(
+        p->worker,
+        [p, self, &openError] {
+            p->writer = std::make_unique<RunWriter>();
+            if (!p->writer->open(p->path, &openError))
+                return;
+            p->timer = new QTimer(p->worker);
+            p->timer->setInterval(kCommitIntervalMs);
+            QObject::connect(p->timer, &QTimer::timeout, p->worker, [p, self] {
+                QString why;
+                if (!p->flush(&why)) {
+                    p->timer->stop();
+                    p->recording = false;
+                    QMetaObject::invokeMethod(self, [self, why] {
+                        if (self)
+                            emit self->failed(why);
+                    });
+                    return;
+                }
+                const qint64 n = p->committed.load();
+                QMetaObject::invokeMethod(self, [self, n] {
+                    if (self)
+                        emit self->committed(n);
+                });
+            });
+            p->timer->start();
+        },
+        Qt::BlockingQueuedConnection);
+    if (!openError.isEmpty()) {
+        d->recording = false;
+        d->thread.quit();
+        d->thread.wait();
+        if (error)
+            *error = openError;
+        return false;
+    }
+    return true;
+}
+
+void RunRecorder::add(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
+                      qint64 drainedNs)
+{
+    if (!d->recording || (stamps.empty() && latencies.empty()))
+        return;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    d->queued.push_back({stamps, latencies, drainedNs});
+    d->queuedStamps.fetch_add(qint64(stamps.size()));
+}
+
+bool RunRecorder::stop(QString* error)
+{
+    if (!d->thread.isRunning())
+        return false;
+    std::shared_ptr<Private> p = d;
+    QString why;
+    bool ok = false;
+    QMetaObject::invokeMethod(
+        p->worker,
+        [p, &why, &ok] {
+            if (p->timer)
+                p->timer->stop();
+            ok = p->writer && p->flush(&why)
+                && p->writer->finish(QDateTime::currentMSecsSinceEpoch() * 1'000'000, &why);
+            p->writer.reset();
+        },
+        Qt::BlockingQueuedConnection);
+    d->recording = false;
+    d->thread.quit();
+    d->thread.wait();
+    if (!ok && error)
+        *error = why;
+    return ok;
+}
+
+bool RunRecorder::isRecording() const
+{
+    return d->recording;
+}
+
+QString RunRecorder::path() const
+{
+    return d->path;
+}
+
+qint64 RunRecorder::committedStamps() const
+{
+    return d->committed.load();
+}
+
+qint64 RunRecorder::queuedStamps() const
+{
+    return d->queuedStamps.load();
+}

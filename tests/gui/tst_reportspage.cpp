@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// Runs and reports in the GUI: record from the Measure page against a real rosmaster, open the run
+// and go back to live, compare three suite CSV files on the Reports page (three columns), export
+// every kind of file, and save and copy the chart.
+#include "common/measuresession.h"
+#include "discoverpage.h"
+#include "ecdfchart.h"
+#include "mainwindow.h"
+#include "measurepage.h"
+#include "record/suitecsv.h"
+#include "reportspage.h"
+#include "runbar.h"
+#include "syntheticrun.h"
+#include "testservers.h"
+
+#include <QCheckBox>
+#include <QClipboard>
+#include <QComboBox>
+#include <QDragEnterEvent>
+#include <QGuiApplication>
+#include <QImage>
+#include <QLabel>
+#include <QListWidget>
+#include <QMimeData>
+#include <QProcess>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Writes `run` as a suite CSV, `hours` later than it was made (runs of a day never share samples).
+QString writeCsv(const QTemporaryDir& dir, const QString& name, SyntheticRun run, int hours)
+{
+    for (std::vector<qint64>& sample : run.samples)
+        for (qint64& t : sample)
+            t += hours * 3600LL * 1'000'000'000LL;
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (f.open(QIODevice::WriteOnly))
+        f.write(SuiteCsv::write(run.topics, run.samples));
+    return path;
+}
+
+/// The first Markdown table's header row: "| Mean latency [ms] | run a | run b | ... |".
+QStringList markdownColumns(const QString& md)
+{
+    for (const QString& line : md.split(u'\n'))
+        if (line.startsWith(u"| "_s)) {
+            QStringList cells = line.split(u'|');
+            cells.removeFirst();
+            cells.removeLast();
+            for (QString& c : cells)
+                c = c.trimmed();
+            return cells;
+        }
+    return {};
+}
+} // namespace
+
+class TestReportsPage : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    QTemporaryDir m_dir;
+    QStringList m_csvs;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_servers.startRosMaster());
+        m_servers.exportRosEnvironment();
+        m_csvs << writeCsv(m_dir, u"mqtt_client.csv"_s, SyntheticRun::paper(300, 250'000'000, 1), 0)
+               << writeCsv(m_dir, u"mqtt_bridge.csv"_s, SyntheticRun::paper(300, 250'000'000, 2), 1)
+               << writeCsv(m_dir, u"overlay.csv"_s, SyntheticRun::paper(300, 250'000'000, 3), 2);
+    }
+
+    void recordsOpensAndGoesBackToLive()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        MeasurePage* page = w.measurePage();
+        RunBar* bar = page->runBar();
+        w.show();
+        w.pages()->setCurrentWidget(page);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+
+        const QString pipe = m_dir.filePath(u"lab.yaml"_s);
+        QFile f(pipe);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("topics_in_order: [/lab/a, /lab/b, /lab/c]\nhosts: {/lab/c: cloud}\n");
+        f.close();
+        QString error;
+        QVERIFY2(page->loadPipeline(pipe, &error), qPrintable(error));
+
+        const QString path = m_dir.filePath(u"runs/gui.bsrun"_s); // the folder is made on the way
+        QSignalSpy recorded(bar, &RunBar::runRecorded);
+        QVERIFY2(bar->startRecording(path, u"gui run"_s, u"from the test"_s, &error), qPrintable(error));
+        QVERIFY(bar->recordButton()->text().contains(u"Stop"_s));
+        QVERIFY(!bar->openButton()->isEnabled());
+        QVERIFY(!page->windowBox()->isEnabled()); // the pipeline is fixed while recording
+
+        QProcess pub;
+        pub.setProcessEnvironment(m_servers.rosEnvironment());
+        pub.start(QStringLiteral(STAMP_PUBLISHER),
+                  {u"--samples"_s, u"150"_s, u"--rate"_s, u"100"_s, u"--first-sample"_s, u"1700300000"_s,
+                   u"--stamp"_s, u"/lab/a:0"_s, u"--stamp"_s, u"/lab/b:2000"_s, u"--stamp"_s,
+                   u"/lab/c:7000"_s});
+        QTRY_VERIFY_WITH_TIMEOUT(w.measure()->engine().samples() >= 150, 30000);
+        QVERIFY(pub.waitForFinished(10000));
+        QVERIFY(bar->statusLabel()->text().contains(u"gui run"_s));
+        const LatencyStats live = w.measure()->engine().series(w.measure()->engine().totalSeries()).stats();
+        QVERIFY2(bar->stopRecording(&error), qPrintable(error));
+        QCOMPARE(recorded.count(), 1);
+        QCOMPARE(recorded.first().first().toString(), path);
+        // The run goes to the Reports page's inputs straight away.
+        QVERIFY(w.reportsPage()->inputs().contains(path));
+        QVERIFY(page->windowBox()->isEnabled());
+
+        // Opened again, the Measure page shows it as it was; live stamps wait.
+        QVERIFY2(bar->openRun(path, &error), qPrintable(error));
+        QVERIFY(w.measure()->isShowingRun());
+        QVERIFY(bar->liveButton()->isVisible());
+        QVERIFY(!bar->recordButton()->isEnabled());
+        const LatencyStats shown = w.measure()->engine().series(w.measure()->engine().totalSeries()).stats();
+        QCOMPARE(shown.count, live.count);
+        QCOMPARE(shown.mean, live.mean);
+        QCOMPARE(shown.p999, live.p999);
+        QVERIFY(page->modeLabel()->text().contains(u"gui run"_s)
+                || bar->statusLabel()->text().contains(u"gui run"_s));
+
+        // Save the chart as PNG and SVG, copy it to the clipboard.
+        const QString png = m_dir.filePath(u"chart.png"_s);
+        const QString svg = m_dir.filePath(u"chart.svg"_s);
+        QVERIFY2(page->saveChart(png, &error), qPrintable(error));
+        QVERIFY2(page->saveChart(svg, &error), qPrintable(error));
+        const QImage image(png);
+        QVERIFY(!image.isNull() && image.width() > 100);
+        QFile svgFile(svg);
+        QVERIFY(svgFile.open(QIODevice::ReadOnly));
+        QXmlStreamReader xml(&svgFile);
+        int elements = 0;
+        bool isSvg = false;
+        while (!xml.atEnd())
+            if (xml.readNext() == QXmlStreamReader::StartElement && elements++ == 0)
+                isSvg = xml.name() == u"svg"_s;
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+        QVERIFY(isSvg && elements > 10);
+        QVERIFY(!page->saveChart(m_dir.filePath(u"chart.bmpx"_s), &error));
+        page->chart()->copyToClipboard();
+        QVERIFY(!QGuiApplication::clipboard()->image().isNull());
+
+        // Save As of a shown run writes a copy that opens.
+        const QString copy = m_dir.filePath(u"copy.bsrun"_s);
+        QVERIFY2(bar->saveRunAs(copy, &error), qPrintable(error));
+        QVERIFY(QFile::exists(copy));
+
+        bar->backToLive();
+        QVERIFY(!w.measure()->isShowingRun());
+        QVERIFY(bar->recordButton()->isEnabled());
+        QVERIFY(bar->liveButton()->isHidden());
+
+        // A broken file is refused with its name; the page stays live.
+        const QString broken = m_dir.filePath(u"broken.bsrun"_s);
+        QFile b(broken);
+        QVERIFY(b.open(QIODevice::WriteOnly));
+        b.write("SQLite format 3\0garbage", 23);
+        b.close();
+        QVERIFY(!bar->openRun(broken, &error));
+        QVERIFY2(error.contains(u"broken.bsrun"_s), qPrintable(error));
+        QVERIFY(!w.measure()->isShowingRun());
+    }
+
+    void comparesThreeRunsAndExportsEveryFormat()
+    {
+        MainWindow w;
+        ReportsPage* reports = w.reportsPage();
+        w.resize(1400, 900);
+        w.show();
+        w.pages()->setCurrentWidget(reports);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+
+        QSignalSpy updated(reports, &ReportsPage::previewUpdated);
+        reports->setFormat(ReportFormats::Format::Markdown);
+        reports->addInputs(m_csvs.mid(0, 2));
+        // The third comes dropped from a file manager.
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(m_csvs[2])});
+        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(reports, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(reports, &drop);
+        QCOMPARE(reports->inputList()->count(), 3);
+        QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty() && !reports->isBusy(), 30000);
+        const QStringList columns = markdownColumns(reports->previewText());
+        QCOMPARE(columns.size(), 4); // the stages and one column per run, in input order
+        QCOMPARE(columns.mid(1), (QStringList {u"mqtt_client"_s, u"mqtt_bridge"_s, u"overlay"_s}));
+        QVERIFY(reports->previewText().contains(u"Total"_s));
+
+        // Joined, the three files are one run: one column.
+        updated.clear();
+        reports->joinBox()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty() && !reports->isBusy(), 30000);
+        QCOMPARE(markdownColumns(reports->previewText()).first(), u"Stage"_s); // one run's statistics
+        reports->joinBox()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(markdownColumns(reports->previewText()).size() == 4 && !reports->isBusy(),
+                                 30000);
+
+        // The HTML preview shows the figure.
+        updated.clear();
+        reports->setFormat(ReportFormats::Format::Html);
+        QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty() && !reports->isBusy(), 30000);
+        QTest::qWait(50);
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            w.grab().save(shots + u"/reports.png"_s);
+
+        QString error;
+        const QString pdf = m_dir.filePath(u"report.pdf"_s);
+        reports->setFormat(ReportFormats::Format::Pdf);
+        QVERIFY2(reports->exportTo(pdf, &error), qPrintable(error));
+        QFile pdfFile(pdf);
+        QVERIFY(pdfFile.open(QIODevice::ReadOnly));
+        QVERIFY(pdfFile.read(5) == "%PDF-");
+        if (const QString pdfinfo = QStandardPaths::findExecutable(u"pdfinfo"_s); !pdfinfo.isEmpty()) {
+            QProcess p;
+            p.start(pdfinfo, {pdf});
+            QVERIFY(p.waitForFinished(30000));
+            QVERIFY(QString::fromUtf8(p.readAllStandardOutput())
+                        .contains(QRegularExpression(u"Pages:\\s+[1-9]"_s)));
+        }
+        // The suite CSV holds one run: a comparison is refused with the way out, joined it is written.
+        reports->setFormat(ReportFormats::Format::Csv);
+        QVERIFY(!reports->exportTo(m_dir.filePath(u"compared.csv"_s), &error));
+        QVERIFY2(error.contains(u"join"_s), qPrintable(error));
+        QVERIFY(!QFile::exists(m_dir.filePath(u"compared.csv"_s)));
+        reports->joinBox()->click();
+        QVERIFY2(reports->exportTo(m_dir.filePath(u"joined.csv"_s), &error), qPrintable(error));
+        QFile joined(m_dir.filePath(u"joined.csv"_s));
+        QVERIFY(joined.open(QIODevice::ReadOnly));
+        const std::optional<SuiteCsv::Data> rows
+            = SuiteCsv::parse(joined.readAll(), joined.fileName(), &error);
+        QVERIFY2(rows, qPrintable(error));
+        QCOMPARE(rows->samples.size(), std::size_t(900)); // three runs of 300 samples
+        reports->joinBox()->click();
+        for (const auto& [format, suffix] : {std::pair {ReportFormats::Format::Json, u"json"_s},
+                                             {ReportFormats::Format::Latex, u"tex"_s},
+                                             {ReportFormats::Format::Html, u"html"_s}}) {
+            reports->setFormat(format);
+            const QString out = m_dir.filePath(u"report."_s + suffix);
+            QVERIFY2(reports->exportTo(out, &error), qPrintable(error));
+            QVERIFY2(QFileInfo(out).size() > 100, qPrintable(out));
+        }
+        // An export that cannot be written says so and leaves nothing behind.
+        const QString nowhere = m_dir.filePath(u"missing/dir/report.md"_s);
+        reports->setFormat(ReportFormats::Format::Markdown);
+        QVERIFY(!reports->exportTo(nowhere, &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!QFile::exists(nowhere));
+    }
+};
+
+QTEST_MAIN(TestReportsPage)
+#include "tst_reportspage.moc"

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: MIT
+// Recording runs against a real rosmaster: a run reopens with the figures that were shown live,
+// the headless recorder stops by itself, and a recorder killed with SIGKILL leaves a file that
+// opens and lacks at most the last second.
+#include "common/livesession.h"
+#include "common/measuresession.h"
+#include "record/report.h"
+#include "record/runfile.h"
+#include "record/runrecorder.h"
+#include "syntheticrun.h"
+#include "testservers.h"
+
+#include <chrono>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+qint64 wallNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+const QStringList kTopics {u"/lab/vehicle/send"_s, u"/lab/cloud/recv"_s, u"/lab/cloud/done"_s,
+                           u"/lab/vehicle/back"_s};
+
+QByteArray pipelineYaml()
+{
+    return "metrics_window: 100\ntopics_in_order: [/lab/vehicle/send, /lab/cloud/recv, /lab/cloud/done, "
+           "/lab/vehicle/back]\nhosts:\n  /lab/vehicle/send: vehicle\n  /lab/cloud/recv: cloud\n"
+           "  /lab/cloud/done: cloud\n  /lab/vehicle/back: vehicle\n";
+}
+} // namespace
+
+class TestRecording : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    QTemporaryDir m_dir;
+
+    std::unique_ptr<QProcess> publish(int samples, int rate, int firstSample)
+    {
+        auto p = std::make_unique<QProcess>();
+        p->setProcessEnvironment(m_servers.rosEnvironment());
+        p->start(QStringLiteral(STAMP_PUBLISHER),
+                 {u"--samples"_s, QString::number(samples), u"--rate"_s, QString::number(rate),
+                  u"--jitter-us"_s, u"400"_s, u"--first-sample"_s, QString::number(firstSample), u"--stamp"_s,
+                  u"/lab/vehicle/send:0"_s, u"--stamp"_s, u"/lab/cloud/recv:50000"_s, u"--stamp"_s,
+                  u"/lab/cloud/done:60000"_s, u"--stamp"_s, u"/lab/vehicle/back:30000"_s, u"--latency"_s,
+                  u"/mqtt_client/latencies/lab:0.012"_s});
+        return p;
+    }
+
+    std::unique_ptr<QProcess> recorder(const QStringList& extra)
+    {
+        QFile pipe(m_dir.filePath(u"pipe.yaml"_s));
+        if (!pipe.exists() && pipe.open(QIODevice::WriteOnly))
+            pipe.write(pipelineYaml());
+        auto p = std::make_unique<QProcess>();
+        p->setProcessEnvironment(m_servers.rosEnvironment());
+        p->start(QStringLiteral(BRIDGESCOPE_BINARY),
+                 QStringList {u"record"_s, u"--pipeline"_s, pipe.fileName(), u"--ros-master"_s,
+                              m_servers.rosMasterUri(), u"--broker"_s, m_servers.brokerUrl()}
+                     + extra);
+        return p;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_servers.startRosMaster());
+        QVERIFY(m_servers.startMosquitto());
+        m_servers.exportRosEnvironment();
+    }
+
+    void aRecordedRunReopensWithTheFiguresShownLive()
+    {
+        LiveSession live;
+        live.setRosMasterUri(m_servers.rosMasterUri());
+        MeasureSession measure(&live);
+        std::optional<Pipeline> pipeline = Pipeline::fromYaml(pipelineYaml());
+        QVERIFY(pipeline);
+        measure.setPipeline(*pipeline);
+        const QString path = m_dir.filePath(u"live.bsrun"_s);
+        RunInfo info;
+        info.name = u"live test"_s;
+        info.notes = u"loopback, QoS 0"_s;
+        info.bridgeConfig = "bridge: {ros2mqtt: []}\n";
+        QString error;
+        QVERIFY2(measure.startRecording(path, info, &error), qPrintable(error));
+        QVERIFY(!measure.startRecording(path, info, &error)); // one at a time
+        auto pub = publish(200, 100, 1'700'000'000);
+        QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), 200, 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(measure.engine().indexOf(u"ext:/mqtt_client/latencies/lab"_s) >= 0, 10000);
+        QVERIFY(pub->waitForFinished(20000));
+        QTest::qWait(300);
+        QVERIFY2(measure.stopRecording(&error), qPrintable(error));
+        QVERIFY(!QFile::exists(path + u"-wal"_s));
+
+        const std::optional<RunData> run = RunFile::read(path, &error);
+        QVERIFY2(run, qPrintable(error));
+        QCOMPARE(run->info.name, u"live test"_s);
+        QCOMPARE(run->info.notes, u"loopback, QoS 0"_s);
+        QCOMPARE(run->info.pipeline.topics(), kTopics);
+        QCOMPARE(run->info.pipeline.host(1), u"cloud"_s);
+        QCOMPARE(run->info.window, 100);
+        QCOMPARE(run->info.bridgeConfig, QByteArray("bridge: {ros2mqtt: []}\n"));
+        QCOMPARE(run->info.rosMaster, m_servers.rosMasterUri());
+        QVERIFY(run->info.stoppedNs > run->info.startedNs);
+        QCOMPARE(qint64(run->stamps.size()), 800);
+
+        // Shown again, the run has exactly the live figures: every series, every statistic.
+        const LatencyEngine& shown = measure.engine();
+        std::vector<LatencyStats> liveStats;
+        for (int s = 0; s < shown.seriesCount(); ++s)
+            liveStats.push_back(shown.series(s).stats());
+        const int liveSeries = shown.seriesCount();
+        QVERIFY(measure.showRun(*run, &error));
+        QVERIFY(measure.isShowingRun());
+        QCOMPARE(measure.engine().seriesCount(), liveSeries);
+        for (int s = 0; s < liveSeries; ++s) {
+            const LatencyStats a = liveStats[std::size_t(s)];
+            const LatencyStats b = measure.engine().series(s).stats();
+            QCOMPARE(b.count, a.count);
+            QCOMPARE(b.mean, a.mean);
+            QCOMPARE(b.median, a.median);
+            QCOMPARE(b.std, a.std);
+            QCOMPARE(b.p999, a.p999);
+        }
+        measure.showLive();
+        QVERIFY(!measure.isShowingRun());
+    }
+
+    void theHeadlessRecorderStopsAfterTheSamples()
+    {
+        const QString path = m_dir.filePath(u"headless.bsrun"_s);
+        auto rec = recorder({u"--samples"_s, u"100"_s, u"--name"_s, u"headless"_s, u"-o"_s, path});
+        QVERIFY(rec->waitForStarted());
+        auto pub = publish(400, 100, 1'700'100'000);
+        QVERIFY(rec->waitForFinished(60000));
+        QCOMPARE(rec->exitCode(), 0);
+        QVERIFY2(QString::fromUtf8(rec->readAllStandardOutput()).contains(u"complete samples"_s),
+                 qPrintable(QString::fromUtf8(rec->readAllStandardError())));
+        pub->kill();
+        QString error;
+        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QVERIFY(report->runs().front()->engine->samples() >= 100);
+        QCOMPARE(report->runs().front()->info.name, u"headless"_s);
+        // A run is never overwritten.
+        auto again = recorder({u"--samples"_s, u"1"_s, u"-o"_s, path});
+        QVERIFY(again->waitForFinished(20000));
+        QCOMPARE(again->exitCode(), 2);
+        QVERIFY(QString::fromUtf8(again->readAllStandardError()).contains(u"exists already"_s));
+    }
+
+    // Crash safety: SIGKILL while recording at 100 samples/s; the file opens and holds every
+    // stamp received up to one second before the kill.
+    void aKilledRecorderLosesAtMostTheLastSecond()
+    {
+        const QString path = m_dir.filePath(u"killed.bsrun"_s);
+        auto rec = recorder({u"-o"_s, path});
+        QVERIFY(rec->waitForStarted());
+        auto pub = publish(3000, 100, 1'700'200'000);
+        qint64 reported = 0;
+        const QRegularExpression committed(u"(\\d+) stamps committed"_s);
+        QString log;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                log += QString::fromUtf8(rec->readAllStandardError());
+                auto it = committed.globalMatch(log);
+                while (it.hasNext())
+                    reported = it.next().captured(1).toLongLong();
+                return reported >= 1200; // a few seconds of stamps
+            }(),
+            60000);
+        QTest::qWait(600);
+        const qint64 killedAt = wallNs();
+        rec->kill(); // SIGKILL: no chance to flush or finish
+        QVERIFY(rec->waitForFinished(10000));
+        QCOMPARE(rec->exitStatus(), QProcess::CrashExit);
+        pub->kill();
+
+        QString error;
+        const std::optional<RunData> run = RunFile::read(path, &error);
+        QVERIFY2(run, qPrintable(error));
+        QCOMPARE(run->info.stoppedNs, 0); // it never stopped
+        QVERIFY(qint64(run->stamps.size()) >= reported);
+        qint64 last = 0;
+        for (const RecordedStamp& s : run->stamps)
+            last = std::max(last, s.receivedNs);
+        QVERIFY2(killedAt - last < 1'000'000'000LL,
+                 qPrintable(u"last stamp %1 ms before the kill"_s.arg((killedAt - last) / 1'000'000)));
+        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QVERIFY(report->runs().front()->engine->samples() > 250);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRecording)
+#include "tst_recording.moc"

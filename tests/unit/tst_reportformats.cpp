@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+// Every report format, checked for content: the suite CSV round trip byte for byte, Markdown and
+// LaTeX tables (three runs, three columns), HTML that parses and holds the SVG figure, a PDF whose
+// pages and text poppler reads.
+#include "fixtures.h"
+#include "record/ecdfsvg.h"
+#include "record/report.h"
+#include "record/reportformats.h"
+#include "record/suitecsv.h"
+#include "reportpdf.h"
+#include "syntheticrun.h"
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QString writeCsv(const QTemporaryDir& dir, const QString& name, const SyntheticRun& run)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    f.write(SuiteCsv::write(run.topics, run.samples));
+    return path;
+}
+
+Pipeline paperWithHosts()
+{
+    const SyntheticRun paper = SyntheticRun::paper(1, 0, 1);
+    Pipeline p(paper.topics, 0);
+    for (int i = 0; i < paper.topics.size(); ++i)
+        p.setHost(paper.topics[i], paper.hosts()[i]);
+    return p;
+}
+
+QString run(const QString& program, const QStringList& args)
+{
+    QProcess p;
+    p.start(program, args);
+    p.waitForFinished(60000);
+    return QString::fromUtf8(p.readAllStandardOutput());
+}
+} // namespace
+
+class TestReportFormats : public QObject
+{
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+    QStringList m_inputs; ///< three runs: mqtt_client-like, slower, faster
+
+private slots:
+    void initTestCase()
+    {
+        m_inputs << writeCsv(m_dir, u"client.csv"_s, SyntheticRun::paper(600, 250'000'000, 1));
+        SyntheticRun slower = SyntheticRun::paper(500, -20'000'000, 2);
+        for (auto& s : slower.samples)
+            for (std::size_t i = 1; i < s.size(); ++i)
+                s[i] += qint64(i) * 2'000'000;
+        m_inputs << writeCsv(m_dir, u"bridge.csv"_s, slower);
+        m_inputs << writeCsv(m_dir, u"overlay.csv"_s, SyntheticRun::paper(400, 0, 3));
+    }
+
+    void suiteCsvRoundTripIsByteIdentical()
+    {
+        QFile original(m_inputs.first());
+        QVERIFY(original.open(QIODevice::ReadOnly));
+        QString error;
+        const std::optional<Report> report = Report::build({m_inputs.first()}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QCOMPARE(ReportFormats::csv(*report, false), original.readAll());
+        // Per sample in ms: the stages of the first sample.
+        const QList<QByteArray> lines = ReportFormats::csv(*report, true).split('\n');
+        QCOMPARE(lines.size(), 602); // header, 600 rows, the empty rest
+        const SyntheticRun again = SyntheticRun::paper(600, 250'000'000, 1);
+        const QList<QByteArray> first = lines[1].trimmed().split(',');
+        QCOMPARE(first.size(), 12);
+        QCOMPARE(first[0].toDouble(), double(again.samples[0][1] - again.samples[0][0]) / 1e6);
+        QCOMPARE(first.last().toDouble(), double(again.samples[0].back() - again.samples[0].front()) / 1e6);
+        // CSV holds one run: a comparison is refused.
+        const std::optional<Report> three = Report::build(m_inputs, std::nullopt, {}, &error);
+        QVERIFY(ReportFormats::csv(*three, false, &error).isEmpty());
+        QVERIFY(error.contains(u"--join"_s));
+    }
+
+    void markdownAndLatexTablesOfOneAndThreeRuns()
+    {
+        QString error;
+        const std::optional<Report> one = Report::build({m_inputs.first()}, paperWithHosts(), {}, &error);
+        QVERIFY2(one, qPrintable(error));
+        const QString md = QString::fromUtf8(ReportFormats::markdown(*one));
+        QVERIFY(md.contains(u"| Stage | Mean [ms] | Median | Std | Min | Max | p99 | Count |"_s));
+        QVERIFY(md.contains(u"| **total** | **"_s));
+        QVERIFY(md.contains(u"| *communication, one way (half the round trip)* |"_s));
+        // The 250 ms the run was made with, within the jitter of the two crossings.
+        const QRegularExpressionMatch offset
+            = QRegularExpression(u"\\| \\*clock offset\\* \\| ([-0-9.]+) \\|"_s).match(md);
+        QVERIFY2(offset.hasMatch(), qPrintable(md));
+        QVERIFY2(std::abs(offset.captured(1).toDouble() - 250.0) < 1.0, qPrintable(offset.captured(1)));
+
+        const std::optional<Report> three = Report::build(m_inputs, paperWithHosts(), {}, &error);
+        QVERIFY2(three, qPrintable(error));
+        const QString md3 = QString::fromUtf8(ReportFormats::markdown(*three));
+        QVERIFY2(md3.contains(u"| Mean latency [ms] | client | bridge | overlay |"_s), qPrintable(md3));
+        const QString tex = QString::fromUtf8(ReportFormats::latex(*three));
+        QCOMPARE(tex.count(u"\\begin{tabular}"_s), 2);
+        QCOMPARE(tex.count(u"\\end{tabular}"_s), 2);
+        QCOMPARE(tex.count(u"\\toprule"_s), 2);
+        QCOMPARE(tex.count(u"\\bottomrule"_s), 2);
+        QVERIFY(tex.contains(u"\\begin{tabular}{lrrr}"_s)); // a label column and three runs
+        // Every row of the stage table has four cells.
+        const QString first = tex.section(u"\\end{tabular}"_s, 0, 0);
+        for (const QString& line : first.split(u'\n')) {
+            if (line.endsWith(u"\\\\"_s))
+                QCOMPARE(line.count(u" & "_s), 3);
+        }
+        QVERIFY(tex.contains(u"\\textbf{total}"_s));
+        QVERIFY(tex.contains(u"mqtt\\_interface\\_vehicle $\\rightarrow$ mqtt\\_interface\\_cloud"_s));
+        // With a TeX engine at hand, the tables must compile.
+        const QString pdflatex = QStandardPaths::findExecutable(u"pdflatex"_s);
+        if (pdflatex.isEmpty())
+            return;
+        QFile doc(m_dir.filePath(u"t.tex"_s));
+        QVERIFY(doc.open(QIODevice::WriteOnly));
+        doc.write(
+            "\\documentclass{article}\\usepackage{booktabs}\\usepackage[utf8]{inputenc}\\begin{document}\n"
+            + tex.toUtf8() + "\n\\end{document}\n");
+        doc.close();
+        QProcess p;
+        p.setWorkingDirectory(m_dir.path());
+        p.start(pdflatex, {u"-interaction=nonstopmode"_s, u"t.tex"_s});
+        QVERIFY(p.waitForFinished(120000));
+        QCOMPARE(p.exitCode(), 0);
+    }
+
+    void htmlParsesAndHoldsTheFigure()
+    {
+        QString error;
+        const std::optional<Report> three = Report::build(m_inputs, paperWithHosts(), {}, &error);
+        QVERIFY2(three, qPrintable(error));
+        const QByteArray html = ReportFormats::html(*three);
+        QXmlStreamReader xml(html);
+        int svgs = 0;
+        int polylines = 0;
+        int tables = 0;
+        while (!xml.atEnd()) {
+            xml.readNext();
+            if (xml.isStartElement()) {
+                svgs += xml.name() == u"svg"_s;
+                polylines += xml.name() == u"polyline"_s;
+                tables += xml.name() == u"table"_s;
+            }
+        }
+        QVERIFY2(!xml.hasError(),
+                 qPrintable(xml.errorString() + u" at line "_s + QString::number(xml.lineNumber())));
+        QCOMPARE(svgs, 1);
+        QCOMPARE(polylines, 3); // the three totals in one figure, as the paper's Fig. 5
+        QVERIFY(tables >= 5); // three runs' facts, the stage table, the totals
+        QVERIFY(html.contains("stroke-dasharray=\"6,4\"")); // means
+    }
+
+    void pdfHasPagesAndText()
+    {
+        if (QStandardPaths::findExecutable(u"pdfinfo"_s).isEmpty())
+            QSKIP("poppler-utils (pdfinfo) is not installed; scripts/setup.sh installs it");
+        QString error;
+        Report::Options options;
+        options.title = u"Bridgescope PDF test"_s;
+        const std::optional<Report> three = Report::build(m_inputs, paperWithHosts(), options, &error);
+        QVERIFY2(three, qPrintable(error));
+        const QString path = m_dir.filePath(u"three.pdf"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(ReportPdf::render(*three));
+        f.close();
+        const QString info = run(u"pdfinfo"_s, {path});
+        const QRegularExpressionMatch pages = QRegularExpression(u"Pages:\\s+(\\d+)"_s).match(info);
+        QVERIFY2(pages.hasMatch(), qPrintable(info));
+        QVERIFY(pages.captured(1).toInt() >= 1);
+        QVERIFY(info.contains(u"A4"_s) || info.contains(u"595."));
+        QVERIFY(info.contains(u"Bridgescope PDF test"_s)); // the document title
+        const QString text = run(u"pdftotext"_s, {path, u"-"_s});
+        QVERIFY(text.contains(u"Bridgescope PDF test"_s));
+        QVERIFY(text.contains(u"overlay"_s));
+        QVERIFY(text.contains(u"Total latency per run"_s));
+    }
+
+    void svgTicksAreRound_data()
+    {
+        QTest::addColumn<double>("lo");
+        QTest::addColumn<double>("hi");
+        QTest::addColumn<QList<double>>("ticks");
+        QTest::newRow("0..100") << 0.0 << 100.0 << QList<double> {0, 20, 40, 60, 80, 100};
+        QTest::newRow("70..136") << 70.0 << 136.0 << QList<double> {80, 100, 120};
+        QTest::newRow("negative") << -3.0 << 2.0 << QList<double> {-3, -2, -1, 0, 1, 2};
+    }
+
+    void svgTicksAreRound()
+    {
+        QFETCH(double, lo);
+        QFETCH(double, hi);
+        QFETCH(QList<double>, ticks);
+        QCOMPARE(EcdfSvg::ticks(lo, hi), ticks);
+    }
+};
+
+QTEST_MAIN(TestReportFormats)
+#include "tst_reportformats.moc"

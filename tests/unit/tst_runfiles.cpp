@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: MIT
+// Run files and imports: a run reads back as it was written, replays to the same figures, and
+// broken files are refused with a reason; bags written with rosbag's own API import unchanged.
+#include "latency/latencyengine.h"
+#include "latency/stampcodec.h"
+#include "record/report.h"
+#include "record/runfile.h"
+#include "record/runloader.h"
+#include "record/suitecsv.h"
+#include "ros/rosbagimport.h"
+#include "ros/rosstampsource.h"
+#include "syntheticrun.h"
+
+#include <cstring>
+#include <QCryptographicHash>
+#include <QFile>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+#include <QTest>
+#include <rosbag/bag.h>
+#include <topic_tools/shape_shifter.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// A live-like run: the paper's stamps arriving in ticks of 33 ms, a few samples missing a stamp.
+RunData liveLikeRun(int samples)
+{
+    const SyntheticRun synthetic = SyntheticRun::paper(samples, 40'000'000, 3);
+    RunData run;
+    run.info.name = u"unit run"_s;
+    run.info.pipeline = Pipeline(synthetic.topics);
+    const QStringList hosts = synthetic.hosts();
+    for (int i = 0; i < synthetic.topics.size(); ++i)
+        run.info.pipeline.setHost(synthetic.topics[i], hosts[i]);
+    run.info.window = 100;
+    run.info.startedNs = synthetic.samples.front().front();
+    run.topics = synthetic.topics;
+    run.series = QStringList {u"/mqtt_client/latencies/x"_s};
+    for (std::size_t s = 0; s < synthetic.samples.size(); ++s) {
+        const auto& t = synthetic.samples[s];
+        for (int i = 0; i < synthetic.topics.size(); ++i) {
+            if (s % 17 == 5 && i == 7)
+                continue; // lost: this sample is dropped after the timeout
+            const qint64 received
+                = t[std::size_t(i)] - (synthetic.remote[std::size_t(i)] ? 40'000'000 : 0) + 1'000'000;
+            const qint64 tick = received - received % 33'000'000 + 33'000'000;
+            run.stamps.push_back({i, t.front(), t[std::size_t(i)], received, tick});
+        }
+        run.latencies.push_back({0, 19'000'000 + qint64(s) * 1000, t.front(), t.front() + 33'000'000});
+    }
+    std::stable_sort(
+        run.stamps.begin(), run.stamps.end(),
+        [](const RecordedStamp& a, const RecordedStamp& b) { return a.drainedNs < b.drainedNs; });
+    return run;
+}
+
+QByteArray sha(const QString& path)
+{
+    QFile f(path);
+    f.open(QIODevice::ReadOnly);
+    return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
+}
+
+topic_tools::ShapeShifter shaped(const char* md5, const char* type, const std::string& definition,
+                                 const QByteArray& bytes)
+{
+    topic_tools::ShapeShifter s;
+    s.morph(md5, type, definition, "");
+    std::vector<uint8_t> buffer(bytes.begin(), bytes.end());
+    ros::serialization::IStream in(buffer.data(), uint32_t(buffer.size()));
+    s.read(in);
+    return s;
+}
+} // namespace
+
+class TestRunFiles : public QObject
+{
+    Q_OBJECT
+private slots:
+    void aRunReadsBackAndReplaysToTheSameFigures()
+    {
+        QTemporaryDir dir;
+        const RunData run = liveLikeRun(400);
+        const QString path = dir.filePath(u"unit.bsrun"_s);
+        QString error;
+        QVERIFY2(RunFile::write(path, run, &error), qPrintable(error));
+        QVERIFY(RunFile::looksLikeRun(path));
+        QVERIFY(!QFile::exists(path + u"-wal"_s)); // one self-contained file
+        const std::optional<RunData> back = RunFile::read(path, &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->info.name, run.info.name);
+        QCOMPARE(back->info.pipeline, run.info.pipeline);
+        QCOMPARE(back->info.window, 100);
+        QCOMPARE(back->topics, run.topics);
+        QCOMPARE(back->stamps.size(), run.stamps.size());
+        for (std::size_t i = 0; i < run.stamps.size(); i += 97) {
+            QCOMPARE(back->stamps[i].sampleNs, run.stamps[i].sampleNs);
+            QCOMPARE(back->stamps[i].timeNs, run.stamps[i].timeNs);
+            QCOMPARE(back->stamps[i].receivedNs, run.stamps[i].receivedNs);
+            QCOMPARE(back->stamps[i].drainedNs, run.stamps[i].drainedNs);
+        }
+        QCOMPARE(back->latencies.size(), run.latencies.size());
+
+        LatencyEngine a(run.info.pipeline);
+        a.setWindow(run.info.window);
+        run.replay(a);
+        LatencyEngine b(back->info.pipeline);
+        b.setWindow(back->info.window);
+        back->replay(b);
+        QCOMPARE(a.samples(), b.samples());
+        QCOMPARE(a.counters().timedOut, b.counters().timedOut);
+        QVERIFY(a.counters().timedOut > 0); // the lost stamps dropped their samples
+        QCOMPARE(a.seriesCount(), b.seriesCount());
+        for (int s = 0; s < a.seriesCount(); ++s) {
+            QCOMPARE(a.series(s).stats().mean, b.series(s).stats().mean);
+            QCOMPARE(a.series(s).stats().p99, b.series(s).stats().p99);
+        }
+    }
+
+    void brokenRunFilesAreRefusedWithAReason_data()
+    {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("not sqlite") << QByteArray("hello, this is no run") << u"not a Bridgescope run"_s;
+        QByteArray corrupt("SQLite format 3", 16);
+        corrupt += QByteArray(4000, '\x7f');
+        QTest::newRow("corrupt database") << corrupt << u"not a Bridgescope run"_s;
+    }
+
+    void brokenRunFilesAreRefusedWithAReason()
+    {
+        QFETCH(QByteArray, bytes);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"broken.bsrun"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(bytes);
+        f.close();
+        QString error;
+        QVERIFY(!RunFile::read(path, &error));
+        QVERIFY2(error.startsWith(path + u": "_s) && error.contains(message), qPrintable(error));
+    }
+
+    void aDatabaseThatIsNoRunIsRefused()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"other.sqlite"_s);
+        {
+            QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"other"_s);
+            db.setDatabaseName(path);
+            QVERIFY(db.open());
+            QSqlQuery q(db);
+            QVERIFY(q.exec(u"CREATE TABLE meta(key TEXT, value)"_s));
+            QVERIFY(q.exec(u"INSERT INTO meta VALUES ('format', 'something else')"_s));
+            db.close();
+        }
+        QSqlDatabase::removeDatabase(u"other"_s);
+        QString error;
+        QVERIFY(!RunFile::read(path, &error));
+        QVERIFY2(error.contains(u"no run metadata"_s), qPrintable(error));
+        // A run is never overwritten.
+        RunWriter writer;
+        QVERIFY(!writer.create(path, RunInfo(), &error));
+        QVERIFY(error.contains(u"exists already"_s));
+    }
+
+    // A bag written here with rosbag's own API: TimeStamped through a morphed ShapeShifter (the
+    // suite's package is not installed), a latency topic, and a topic that has nothing to do with it.
+    void bagsWithStampsImportAndAreNotChanged()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"stamps.bag"_s);
+        const SyntheticRun synthetic = SyntheticRun::paper(50, 0, 4);
+        {
+            rosbag::Bag bag(path.toStdString(), rosbag::bagmode::Write);
+            const std::string def = StampCodec::definition().toStdString();
+            for (const auto& t : synthetic.samples) {
+                for (int i = 0; i < synthetic.topics.size(); ++i) {
+                    StampCodec::Decoded d;
+                    d.sampleNs = t.front();
+                    d.timeNs = t[std::size_t(i)];
+                    const qint64 at = t[std::size_t(i)] + 500'000;
+                    bag.write(synthetic.topics[i].toStdString(),
+                              ros::Time(uint32_t(at / 1'000'000'000), uint32_t(at % 1'000'000'000)),
+                              shaped(StampCodec::md5(), StampCodec::typeName(), def,
+                                     StampCodec::encodeTimeStamped(d)));
+                }
+                double seconds = 0.0195;
+                QByteArray f64(8, Qt::Uninitialized);
+                std::memcpy(f64.data(), &seconds, 8);
+                const qint64 at = t.front();
+                bag.write("/mqtt_client/latencies/points",
+                          ros::Time(uint32_t(at / 1'000'000'000), uint32_t(at % 1'000'000'000)),
+                          shaped(RosStampSource::float64Md5(), "std_msgs/Float64", "float64 data\n", f64));
+                bag.write("/chatter", ros::Time(uint32_t(at / 1'000'000'000), 0),
+                          shaped("992ce8a1687cec8c8bd883ec73ca41d1", "std_msgs/String", "string data\n",
+                                 QByteArray("\x02\0\0\0hi", 6)));
+            }
+        }
+        const QByteArray before = sha(path);
+        QVERIFY(RosbagImport::looksLikeBag(path));
+        QCOMPARE(RunLoader::kindOf(path), RunLoader::Kind::Bag);
+        QString error;
+        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        const LatencyEngine& e = *report->runs().front()->engine;
+        QCOMPARE(e.pipeline().topics(), synthetic.topics); // found in the stamps, in order
+        QCOMPARE(e.samples(), 50);
+        QCOMPARE(e.series(e.indexOf(u"ext:/mqtt_client/latencies/points"_s)).stats().mean, 19.5);
+        // The stages are what was written.
+        qint64 sum = 0;
+        for (const auto& t : synthetic.samples)
+            sum += t[3] - t[2];
+        QVERIFY(std::abs(e.series(2).stats().mean - double(sum) / 50.0 / 1e6) < 1e-9);
+        QCOMPARE(sha(path), before);
+
+        // A bag without stamps says what it has.
+        const QString other = dir.filePath(u"other.bag"_s);
+        {
+            rosbag::Bag bag(other.toStdString(), rosbag::bagmode::Write);
+            bag.write("/chatter", ros::Time(1, 0),
+                      shaped("992ce8a1687cec8c8bd883ec73ca41d1", "std_msgs/String", "string data\n",
+                             QByteArray("\x02\0\0\0hi", 6)));
+        }
+        QVERIFY(!RunLoader::load(other, {}, &error));
+        QVERIFY2(error.contains(u"no benchmarking_suite/TimeStamped topics"_s)
+                     && error.contains(u"/chatter (std_msgs/String)"_s),
+                 qPrintable(error));
+        // A truncated bag is refused, not crashed on.
+        QFile bag(path);
+        QVERIFY(bag.open(QIODevice::ReadOnly));
+        const QByteArray head = bag.read(bag.size() / 2);
+        QFile cut(dir.filePath(u"cut.bag"_s));
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(head);
+        cut.close();
+        QVERIFY(!RunLoader::load(cut.fileName(), {}, &error));
+        QVERIFY2(error.startsWith(cut.fileName()), qPrintable(error));
+    }
+
+    void suiteCsvImportsAsARunThatSavesAndReopens()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun synthetic = SyntheticRun::paper(30, 0, 6);
+        QFile csv(dir.filePath(u"suite.csv"_s));
+        QVERIFY(csv.open(QIODevice::WriteOnly));
+        csv.write(SuiteCsv::write(synthetic.topics, synthetic.samples));
+        csv.close();
+        const QByteArray before = sha(csv.fileName());
+        QString error;
+        std::optional<RunData> run = RunLoader::load(csv.fileName(), {}, &error);
+        QVERIFY2(run, qPrintable(error));
+        QVERIFY(RunFile::write(dir.filePath(u"suite.bsrun"_s), *run, &error));
+        const std::optional<Report> report
+            = Report::build({dir.filePath(u"suite.bsrun"_s)}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QCOMPARE(report->runs().front()->engine->samples(), 30);
+        QCOMPARE(report->runs().front()->samples, synthetic.samples);
+        QCOMPARE(sha(csv.fileName()), before);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRunFiles)
+#include "tst_runfiles.moc"

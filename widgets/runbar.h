@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "record/runfile.h"
+
+#include <functional>
+#include <optional>
+#include <QWidget>
+
+class MeasureSession;
+class QLabel;
+class QPushButton;
+
+/// The Measure page's run controls: record the live measurement into a run file, open a run (or
+/// import a suite CSV or a bag) to see it as it was, save an import as a run, and go back to live.
+class RunBar : public QWidget
+{
+    Q_OBJECT
+public:
+    using ConfigProvider = std::function<std::pair<QString, QByteArray>()>;
+
+    explicit RunBar(MeasureSession* measure, QWidget* parent = nullptr);
+
+    /// Where the open bridge config comes from (path and text), kept with each run.
+    void setBridgeConfigProvider(ConfigProvider provider) { m_config = std::move(provider); }
+
+    bool startRecording(const QString& path, const QString& name, const QString& notes,
+                        QString* error = nullptr);
+    bool stopRecording(QString* error = nullptr);
+    /// Opens a run, suite CSV or bag (with a progress dialog when it takes long). When the user
+    /// cancels, it returns false and leaves `error` empty.
+    bool openRun(const QString& path, QString* error = nullptr);
+    bool saveRunAs(const QString& path, QString* error = nullptr);
+    void backToLive();
+
+    QPushButton* recordButton() const { return m_record; }
+    QPushButton* openButton() const { return m_open; }
+    QPushButton* saveButton() const { return m_save; }
+    QPushButton* liveButton() const { return m_live; }
+    QLabel* statusLabel() const { return m_status; }
+
+signals:
+    /// A recording finished and its file is complete.
+    void runRecorded(const QString& path);
+
+private:
+    void toggleRecording();
+    void chooseRun();
+    void chooseSaveRun();
+    void updateState();
+
+    MeasureSession* m_measure;
+    ConfigProvider m_config;
+    QPushButton* m_record;
+    QPushButton* m_open;
+    QPushButton* m_save;
+    QPushButton* m_live;
+    QLabel* m_status;
+    QString m_recordingName;
+    QString m_shownPath;
+    std::optional<RunData> m_shown;
+};
