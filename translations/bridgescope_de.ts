@@ -1116,6 +1116,33 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <source>Check a series in the table to plot its ECDF</source>
         <translation>Eine Reihe in der Tabelle ankreuzen, um ihre ECDF zu zeichnen</translation>
     </message>
+    <message>
+        <source>Latency ECDF</source>
+        <translation>Latenz-ECDF</translation>
+    </message>
+    <message>
+        <source>Made with Bridgescope</source>
+        <translation>Erstellt mit Bridgescope</translation>
+    </message>
+    <message>
+        <source>cannot encode the chart as PNG</source>
+        <translation>das Diagramm lässt sich nicht als PNG kodieren</translation>
+    </message>
+    <message>
+        <source>%1: a chart is saved as SVG or PNG; give the file the suffix .svg or .png</source>
+        <translation>%1: ein Diagramm wird als SVG oder PNG gespeichert; die Datei braucht die Endung .svg oder .png</translation>
+    </message>
+</context>
+<context>
+    <name>EcdfSvg</name>
+    <message>
+        <source>latency [ms]</source>
+        <translation>Latenz [ms]</translation>
+    </message>
+    <message>
+        <source>dashed: mean · dotted: median</source>
+        <translation>gestrichelt: Mittel · gepunktet: Median</translation>
+    </message>
 </context>
 <context>
     <name>Gui</name>
@@ -1180,10 +1207,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>ROS- und MQTT-Topics auflisten</translation>
     </message>
     <message>
-        <source>latency statistics of measurement files</source>
-        <translation>Latenzstatistik von Messdateien</translation>
-    </message>
-    <message>
         <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]</source>
         <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml]</translation>
     </message>
@@ -1212,20 +1235,28 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>mit dieser Pipeline messen</translation>
     </message>
     <message>
-        <source>open on a page: discover, map or measure</source>
-        <translation>auf einer Seite öffnen: discover, map oder measure</translation>
-    </message>
-    <message>
         <source>Measure with this pipeline (the suite's metrics-logger YAML).</source>
         <translation>Mit dieser Pipeline messen (die Metrics-Logger-YAML der Suite).</translation>
     </message>
     <message>
-        <source>Open on this page: discover, map or measure.</source>
-        <translation>Auf dieser Seite öffnen: discover, map oder measure.</translation>
-    </message>
-    <message>
         <source>--page takes one of: %1</source>
         <translation>--page erwartet eins von: %1</translation>
+    </message>
+    <message>
+        <source>open on a page: discover, map, measure or reports</source>
+        <translation>auf einer Seite öffnen: discover, map, measure oder reports</translation>
+    </message>
+    <message>
+        <source>record a measurement run</source>
+        <translation>einen Messlauf aufzeichnen</translation>
+    </message>
+    <message>
+        <source>latency reports of runs, CSV files and bags</source>
+        <translation>Latenzberichte zu Läufen, CSV-Dateien und Bags</translation>
+    </message>
+    <message>
+        <source>Open on this page: discover, map, measure or reports.</source>
+        <translation>Auf dieser Seite öffnen: discover, map, measure oder reports.</translation>
     </message>
 </context>
 <context>
@@ -1419,6 +1450,10 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Measure</source>
         <translation>Messen</translation>
+    </message>
+    <message>
+        <source>Reports</source>
+        <translation>Berichte</translation>
     </message>
 </context>
 <context>
@@ -1804,10 +1839,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>&lt;b&gt;Pipeline&lt;/b&gt;: Zeitstempel-Topics in der Reihenfolge, in der eine Probe sie durchläuft</translation>
     </message>
     <message>
-        <source>Stamp topics &amp;seen:</source>
-        <translation>&amp;Gesehene Zeitstempel-Topics:</translation>
-    </message>
-    <message>
         <source>Automatic: waiting for stamps (benchmarking_suite/TimeStamped on ROS or MQTT, or JSON stamps on MQTT).</source>
         <translation>Automatisch: warte auf Zeitstempel (benchmarking_suite/TimeStamped über ROS oder MQTT, oder JSON-Zeitstempel über MQTT).</translation>
     </message>
@@ -1850,6 +1881,53 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Pipelines (*.yaml *.yml)</source>
         <translation>Pipelines (*.yaml *.yml)</translation>
+    </message>
+    <message>
+        <source>Save the chart as PNG or SVG</source>
+        <translation>Das Diagramm als PNG oder SVG speichern</translation>
+    </message>
+    <message>
+        <source>Cop&amp;y Chart</source>
+        <translation>Diagramm &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>Copy the chart to the clipboard as an image</source>
+        <translation>Das Diagramm als Bild in die Zwischenablage kopieren</translation>
+    </message>
+    <message>
+        <source>SVG (*.svg);;PNG (*.png)</source>
+        <translation>SVG (*.svg);;PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>The recorded run's pipeline.</source>
+        <translation>Die Pipeline des aufgezeichneten Laufs.</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Chart…</source>
+        <translation>Diagramm e&amp;xportieren …</translation>
+    </message>
+    <message>
+        <source>Stamp &amp;topics seen:</source>
+        <translation>Gesehene Zeitstempel-&amp;Topics:</translation>
+    </message>
+    <message>
+        <source>Export Chart</source>
+        <translation>Diagramm exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>MeasureSession</name>
+    <message>
+        <source>a recorded run is on screen: go back to live first</source>
+        <translation>ein aufgezeichneter Lauf wird angezeigt: zuerst zurück zu Live</translation>
+    </message>
+    <message>
+        <source>no pipeline yet: load one, or wait until stamps arrive</source>
+        <translation>noch keine Pipeline: eine laden oder warten, bis Zeitstempel eintreffen</translation>
+    </message>
+    <message>
+        <source>recording: stop it before opening a run</source>
+        <translation>Aufzeichnung läuft: vor dem Öffnen eines Laufs beenden</translation>
     </message>
 </context>
 <context>
@@ -2540,20 +2618,183 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
     </message>
 </context>
 <context>
+    <name>RecordCommand</name>
+    <message>
+        <source>Pipeline YAML (the suite's metrics-logger file).</source>
+        <translation>Pipeline-YAML (die Metrics-Logger-Datei der Suite).</translation>
+    </message>
+    <message>
+        <source>Broker URL (default tcp://localhost:1883).</source>
+        <translation>Broker-URL (Vorgabe tcp://localhost:1883).</translation>
+    </message>
+    <message>
+        <source>ROS master URI (default $ROS_MASTER_URI).</source>
+        <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
+    </message>
+    <message>
+        <source>Stop after N complete samples.</source>
+        <translation>Nach N vollständigen Proben beenden.</translation>
+    </message>
+    <message>
+        <source>Stop after S seconds.</source>
+        <translation>Nach S Sekunden beenden.</translation>
+    </message>
+    <message>
+        <source>The run file to write (never overwritten).</source>
+        <translation>Die zu schreibende Laufdatei (wird nie überschrieben).</translation>
+    </message>
+    <message>
+        <source>Name of the run (default: the file's name).</source>
+        <translation>Name des Laufs (Vorgabe: der Dateiname).</translation>
+    </message>
+    <message>
+        <source>Notes to keep with the run.</source>
+        <translation>Notizen, die mit dem Lauf gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>The bridge config in use, kept with the run.</source>
+        <translation>Die verwendete Bridge-Konfiguration; wird mit dem Lauf gespeichert.</translation>
+    </message>
+    <message>
+        <source>Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C.
+Exit status: 0 recorded, 1 the run file could not be written, 2 bad options.</source>
+        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird.
+Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>record needs --pipeline and -o; see bridgescope record --help</source>
+        <translation>record braucht --pipeline und -o; siehe bridgescope record --help</translation>
+    </message>
+    <message>
+        <source>--samples takes a number of samples</source>
+        <translation>--samples erwartet eine Anzahl Proben</translation>
+    </message>
+    <message>
+        <source>--seconds takes a number of seconds</source>
+        <translation>--seconds erwartet eine Anzahl Sekunden</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 exists already; a run is never overwritten</source>
+        <translation>%1 existiert bereits; ein Lauf wird nie überschrieben</translation>
+    </message>
+    <message>
+        <source>recording failed: %1</source>
+        <translation>Aufzeichnung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>%1 s: %2 stamps committed, %3 complete samples, %4 dropped, %5 waiting</source>
+        <translation>%1 s: %2 Zeitstempel festgeschrieben, %3 vollständige Proben, %4 verworfen, %5 wartend</translation>
+    </message>
+    <message>
+        <source>%1: %2 complete samples, %3 stamps</source>
+        <translation>%1: %2 vollständige Proben, %3 Zeitstempel</translation>
+    </message>
+</context>
+<context>
+    <name>RecordDialog</name>
+    <message>
+        <source>Record a Run</source>
+        <translation>Lauf aufzeichnen</translation>
+    </message>
+    <message>
+        <source>run %1</source>
+        <translation>Lauf %1</translation>
+    </message>
+    <message>
+        <source>What is special about this run: link, QoS, load, software versions…</source>
+        <translation>Was diesen Lauf ausmacht: Strecke, QoS, Last, Softwareversionen …</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen …</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>N&amp;otes:</source>
+        <translation>N&amp;otizen:</translation>
+    </message>
+    <message>
+        <source>Run &amp;file:</source>
+        <translation>&amp;Laufdatei:</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Run File</source>
+        <translation>Laufdatei</translation>
+    </message>
+    <message>
+        <source>Bridgescope runs (*.%1)</source>
+        <translation>Bridgescope-Läufe (*.%1)</translation>
+    </message>
+</context>
+<context>
+    <name>Report</name>
+    <message>
+        <source>no input files</source>
+        <translation>keine Eingabedateien</translation>
+    </message>
+    <message>
+        <source>%1: no stamps of topic %2 (it has: %3)</source>
+        <translation>%1: keine Zeitstempel von Topic %2 (vorhanden: %3)</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <source>Latency report: %1</source>
+        <translation>Latenzbericht: %1</translation>
+    </message>
+    <message>
+        <source>Latency comparison: %1</source>
+        <translation>Latenzvergleich: %1</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>communication, one way (half the round trip)</source>
+        <translation>Kommunikation, eine Richtung (halbe Umlaufzeit)</translation>
+    </message>
+    <message>
+        <source>communication, round trip</source>
+        <translation>Kommunikation, hin und zurück</translation>
+    </message>
+    <message>
+        <source>clock offset</source>
+        <translation>Uhrenversatz</translation>
+    </message>
+</context>
+<context>
     <name>ReportCommand</name>
     <message>
-        <source>Computes the latency statistics of measurement files (the benchmarking suite's timestamp CSV) over the whole run: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. Several inputs are joined into one run.
-Exit status: 0 report written, 1 no complete sample, 2 bad options or unreadable input.</source>
-        <translation>Berechnet die Latenzstatistik von Messdateien (der Zeitstempel-CSV der Benchmarking-Suite) über den ganzen Lauf: jede Stufe, die Gesamtlatenz und, mit Rechnern in der Pipeline, die Umlaufzeit der Kommunikation, ihre Hälfte für eine Richtung und den Uhrenversatz. Mehrere Eingaben werden zu einem Lauf verbunden.
-Rückgabewert: 0 Bericht geschrieben, 1 keine vollständige Probe, 2 falsche Optionen oder unlesbare Eingabe.</translation>
+        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite's timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join.
+Exit status: 0 report written, 1 a run has no complete sample, 2 bad options or input, 130 cancelled.</source>
+        <translation>Berichtet die Latenzstatistik gemessener Läufe: jede Stufe, die Gesamtlatenz und, wenn die Pipeline Rechner angibt, die Umlaufzeit der Kommunikation, deren Hälfte für eine Richtung und den Uhrenversatz. INPUT ist ein Lauf (bridgescope record), die Zeitstempel-CSV der Benchmarking-Suite oder ein ROS-Bag mit TimeStamped-Topics; mehrere Eingaben werden nebeneinander verglichen (Tabelle I und Abb. 5 des Papers) oder mit --join zu einem Lauf zusammengeführt.
+Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 falsche Optionen oder Eingabe, 130 abgebrochen.</translation>
     </message>
     <message>
         <source>Pipeline YAML (the suite's metrics-logger file; hosts: optional).</source>
         <translation>Pipeline-YAML (die Metrics-Logger-Datei der Suite; hosts: optional).</translation>
     </message>
     <message>
-        <source>Output format: json (default).</source>
-        <translation>Ausgabeformat: json (Vorgabe).</translation>
+        <source>json (default), csv, md, tex, html or pdf.</source>
+        <translation>json (Vorgabe), csv, md, tex, html oder pdf.</translation>
     </message>
     <message>
         <source>Statistics over the last N samples (default 0: all).</source>
@@ -2561,15 +2802,31 @@ Rückgabewert: 0 Bericht geschrieben, 1 keine vollständige Probe, 2 falsche Opt
     </message>
     <message>
         <source>Write to FILE instead of stdout.</source>
-        <translation>In DATEI statt auf die Standardausgabe schreiben.</translation>
+        <translation>In FILE statt auf die Standardausgabe schreiben.</translation>
     </message>
     <message>
-        <source>Suite timestamp CSV files.</source>
-        <translation>Zeitstempel-CSV-Dateien der Suite.</translation>
+        <source>Join several inputs into one run instead of comparing them.</source>
+        <translation>Mehrere Eingaben zu einem Lauf zusammenführen, statt sie zu vergleichen.</translation>
     </message>
     <message>
-        <source>unknown format %1 (known: json)</source>
-        <translation>unbekanntes Format %1 (bekannt: json)</translation>
+        <source>csv: one row per sample of stage latencies in ms, not the stamps.</source>
+        <translation>csv: eine Zeile je Probe mit den Stufenlatenzen in ms statt der Zeitstempel.</translation>
+    </message>
+    <message>
+        <source>Skip CSV rows that cannot be read (each is reported) instead of failing.</source>
+        <translation>CSV-Zeilen, die nicht lesbar sind, überspringen (jede wird gemeldet), statt abzubrechen.</translation>
+    </message>
+    <message>
+        <source>Title of the report.</source>
+        <translation>Titel des Berichts.</translation>
+    </message>
+    <message>
+        <source>Runs, suite timestamp CSV files or bags.</source>
+        <translation>Läufe, Zeitstempel-CSV-Dateien der Suite oder Bags.</translation>
+    </message>
+    <message>
+        <source>unknown format %1 (known: json, csv, md, tex, html, pdf)</source>
+        <translation>unbekanntes Format %1 (bekannt: json, csv, md, tex, html, pdf)</translation>
     </message>
     <message>
         <source>--window takes a number of samples (0: all)</source>
@@ -2580,16 +2837,334 @@ Rückgabewert: 0 Bericht geschrieben, 1 keine vollständige Probe, 2 falsche Opt
         <translation>keine Eingabedateien; siehe bridgescope report --help</translation>
     </message>
     <message>
+        <source>reading… %1 %</source>
+        <translation>lese … %1 %</translation>
+    </message>
+    <message>
+        <source>cancelled; nothing written</source>
+        <translation>abgebrochen; nichts geschrieben</translation>
+    </message>
+    <message>
         <source>%1 (row skipped)</source>
         <translation>%1 (Zeile übersprungen)</translation>
     </message>
     <message>
-        <source>%1 more rows skipped</source>
-        <translation>%1 weitere Zeilen übersprungen</translation>
+        <source>%1: no complete sample</source>
+        <translation>%1: keine vollständige Probe</translation>
+    </message>
+</context>
+<context>
+    <name>ReportFormats</name>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
     </message>
     <message>
-        <source>no complete sample in the input</source>
-        <translation>keine vollständige Probe in der Eingabe</translation>
+        <source>Stage</source>
+        <translation>Stufe</translation>
+    </message>
+    <message>
+        <source>Mean [ms]</source>
+        <translation>Mittel [ms]</translation>
+    </message>
+    <message>
+        <source>Median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>Std</source>
+        <translation>Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min.</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>p99</source>
+        <translation>p99</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>Mean latency [ms]</source>
+        <translation>Mittlere Latenz [ms]</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Proben</translation>
+    </message>
+    <message>
+        <source>Dropped</source>
+        <translation>Verworfen</translation>
+    </message>
+    <message>
+        <source>not stopped</source>
+        <translation>nicht beendet</translation>
+    </message>
+    <message>
+        <source>%1 stamps, %2 stages</source>
+        <translation>%1 Zeitstempel, %2 Stufen</translation>
+    </message>
+    <message>
+        <source>; hosts %1; %2 crossings</source>
+        <translation>; Rechner %1; %2 Übergänge</translation>
+    </message>
+    <message>
+        <source>%1 complete, %2 dropped, %3 duplicate stamps</source>
+        <translation>%1 vollständig, %2 verworfen, %3 doppelte Zeitstempel</translation>
+    </message>
+    <message>
+        <source>the last %1 samples</source>
+        <translation>die letzten %1 Proben</translation>
+    </message>
+    <message>
+        <source>the whole run</source>
+        <translation>der ganze Lauf</translation>
+    </message>
+    <message>
+        <source>Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows in italics cross between hosts: their raw values include the clock offset. Communication: total minus every stage on one host, one way being half of it.</source>
+        <translation>Statistik in ms; Std.-Abw. ist die korrigierte Standardabweichung (ddof = 1). Kursive Zeilen gehen von einem Rechner zu einem anderen: Ihre Rohwerte enthalten den Uhrenversatz. Kommunikation: gesamt minus jede Stufe, die auf einem Rechner bleibt; eine Richtung ist die Hälfte davon.</translation>
+    </message>
+    <message>
+        <source>total [ms]</source>
+        <translation>gesamt [ms]</translation>
+    </message>
+    <message>
+        <source>Latency per stage</source>
+        <translation>Latenz je Stufe</translation>
+    </message>
+    <message>
+        <source>Total latency per run</source>
+        <translation>Gesamtlatenz je Lauf</translation>
+    </message>
+    <message>
+        <source>Written by Bridgescope; needs \usepackage{booktabs}.</source>
+        <translation>Geschrieben von Bridgescope; benötigt \usepackage{booktabs}.</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>communication, one way</source>
+        <translation>Kommunikation, eine Richtung</translation>
+    </message>
+    <message>
+        <source>Latency distribution</source>
+        <translation>Latenzverteilung</translation>
+    </message>
+    <message>
+        <source>ECDF</source>
+        <translation>ECDF</translation>
+    </message>
+    <message>
+        <source>Made with Bridgescope %1 on %2.</source>
+        <translation>Erstellt mit Bridgescope %1 am %2.</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Recorded</source>
+        <translation>Aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>Pipeline</source>
+        <translation>Pipeline</translation>
+    </message>
+    <message>
+        <source>Broker</source>
+        <translation>Broker</translation>
+    </message>
+    <message>
+        <source>ROS master</source>
+        <translation>ROS-Master</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>Fenster</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Rechner</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>a CSV file holds a single run: give one input, or join several with --join</source>
+        <translation>eine CSV-Datei enthält nur einen Lauf: eine Eingabe angeben oder mehrere mit --join zusammenführen</translation>
+    </message>
+</context>
+<context>
+    <name>ReportsPage</name>
+    <message>
+        <source>&amp;Join the inputs into one run</source>
+        <translation>Eingaben zu einem Lauf zusammen&amp;führen</translation>
+    </message>
+    <message>
+        <source>CSV: stage latencies in ms, one row per sample</source>
+        <translation>CSV: Stufenlatenzen in ms, eine Zeile je Probe</translation>
+    </message>
+    <message>
+        <source>Runs, suite timestamp CSV files and ROS bags; several are compared side by side</source>
+        <translation>Läufe, Zeitstempel-CSV-Dateien der Suite und ROS-Bags; mehrere werden nebeneinander verglichen</translation>
+    </message>
+    <message>
+        <source>PDF</source>
+        <translation>PDF</translation>
+    </message>
+    <message>
+        <source>HTML (tables and SVG figure)</source>
+        <translation>HTML (Tabellen und SVG-Grafik)</translation>
+    </message>
+    <message>
+        <source>Markdown</source>
+        <translation>Markdown</translation>
+    </message>
+    <message>
+        <source>LaTeX (booktabs tabular)</source>
+        <translation>LaTeX (tabular mit booktabs)</translation>
+    </message>
+    <message>
+        <source>CSV</source>
+        <translation>CSV</translation>
+    </message>
+    <message>
+        <source>JSON</source>
+        <translation>JSON</translation>
+    </message>
+    <message>
+        <source>whole run</source>
+        <translation>ganzer Lauf</translation>
+    </message>
+    <message>
+        <source> samples</source>
+        <translation> Proben</translation>
+    </message>
+    <message>
+        <source>from the run names</source>
+        <translation>aus den Laufnamen</translation>
+    </message>
+    <message>
+        <source>&amp;Add…</source>
+        <translation>Hin&amp;zufügen …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>&amp;Up</source>
+        <translation>Nach &amp;oben</translation>
+    </message>
+    <message>
+        <source>Do&amp;wn</source>
+        <translation>Nach &amp;unten</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>Durch&amp;suchen …</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>E&amp;xportieren …</translation>
+    </message>
+    <message>
+        <source>Write the report to a file (Ctrl+E)</source>
+        <translation>Den Bericht in eine Datei schreiben (Strg+E)</translation>
+    </message>
+    <message>
+        <source>&amp;Format:</source>
+        <translation>For&amp;mat:</translation>
+    </message>
+    <message>
+        <source>&amp;Pipeline:</source>
+        <translation>&amp;Pipeline:</translation>
+    </message>
+    <message>
+        <source>W&amp;indow:</source>
+        <translation>Fe&amp;nster:</translation>
+    </message>
+    <message>
+        <source>&amp;Title:</source>
+        <translation>&amp;Titel:</translation>
+    </message>
+    <message>
+        <source>&amp;Inputs:</source>
+        <translation>E&amp;ingaben:</translation>
+    </message>
+    <message>
+        <source>Add runs, suite CSV files or bags to report on.</source>
+        <translation>Läufe, Suite-CSV-Dateien oder Bags für den Bericht hinzufügen.</translation>
+    </message>
+    <message>
+        <source>Computing…</source>
+        <translation>Berechne …</translation>
+    </message>
+    <message>
+        <source>The report cannot be made: %1</source>
+        <translation>Der Bericht lässt sich nicht erstellen: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 runs, %3 complete samples</source>
+        <translation>%1: %2 Läufe, %3 vollständige Proben</translation>
+    </message>
+    <message>
+        <source>Computing the report…</source>
+        <translation>Berechne den Bericht …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>cancelled; nothing written</source>
+        <translation>abgebrochen; nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>Add Inputs</source>
+        <translation>Eingaben hinzufügen</translation>
+    </message>
+    <message>
+        <source>Runs, suite CSV and bags (*.%1 *.csv *.bag);;All files (*)</source>
+        <translation>Läufe, Suite-CSV und Bags (*.%1 *.csv *.bag);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Pipeline</source>
+        <translation>Pipeline</translation>
+    </message>
+    <message>
+        <source>Pipelines (*.yaml *.yml);;All files (*)</source>
+        <translation>Pipelines (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>%1 files (*.%2)</source>
+        <translation>%1-Dateien (*.%2)</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>Geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>optional; otherwise each input's own pipeline</source>
+        <translation>optional; sonst die eigene Pipeline jeder Eingabe</translation>
     </message>
 </context>
 <context>
@@ -2757,22 +3332,229 @@ Rückgabewert: 0 Bericht geschrieben, 1 keine vollständige Probe, 2 falsche Opt
     </message>
 </context>
 <context>
-    <name>RunLoader</name>
+    <name>RosbagImport</name>
     <message>
-        <source>no input files</source>
-        <translation>keine Eingabedateien</translation>
+        <source>cannot read it</source>
+        <translation>nicht lesbar</translation>
     </message>
+    <message>
+        <source>not a ROS 1 bag (no #ROSBAG V2.0 header)</source>
+        <translation>kein ROS-1-Bag (kein Header #ROSBAG V2.0)</translation>
+    </message>
+    <message>
+        <source>no %1 topics in the bag (it has: %2)</source>
+        <translation>keine Topics vom Typ %1 im Bag (vorhanden: %2)</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>%1 messages of the stamp types did not decode and were skipped.</source>
+        <translation>%1 Nachrichten der Zeitstempel-Typen ließen sich nicht dekodieren und wurden übersprungen.</translation>
+    </message>
+    <message>
+        <source>cannot read the bag: %1</source>
+        <translation>das Bag ist nicht lesbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>RunBar</name>
+    <message>
+        <source>● Re&amp;cord…</source>
+        <translation>● A&amp;ufzeichnen …</translation>
+    </message>
+    <message>
+        <source>Open R&amp;un…</source>
+        <translation>Lauf &amp;öffnen …</translation>
+    </message>
+    <message>
+        <source>Record every stamp from now on into a run file, to open, compare and report later</source>
+        <translation>Ab jetzt jeden Zeitstempel in eine Laufdatei aufzeichnen, um den Lauf später zu öffnen, zu vergleichen und auszuwerten</translation>
+    </message>
+    <message>
+        <source>Show a recorded run as it was, or import the suite's timestamp CSV or a ROS bag</source>
+        <translation>Einen aufgezeichneten Lauf so zeigen, wie er war, oder die Zeitstempel-CSV der Suite oder ein ROS-Bag importieren</translation>
+    </message>
+    <message>
+        <source>Save the run on screen (an imported CSV or bag) as a Bridgescope run</source>
+        <translation>Den angezeigten Lauf (eine importierte CSV oder ein Bag) als Bridgescope-Lauf speichern</translation>
+    </message>
+    <message>
+        <source>Recording Stopped</source>
+        <translation>Aufzeichnung gestoppt</translation>
+    </message>
+    <message>
+        <source>The run file could not be written: %1
+What was committed before is kept.</source>
+        <translation>Die Laufdatei ließ sich nicht schreiben: %1
+Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
+    </message>
+    <message>
+        <source>Stop Recording</source>
+        <translation>Aufzeichnung beenden</translation>
+    </message>
+    <message>
+        <source>Record a Run</source>
+        <translation>Lauf aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>Lese %1 …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Open Run</source>
+        <translation>Lauf öffnen</translation>
+    </message>
+    <message>
+        <source>no run on screen</source>
+        <translation>kein Lauf angezeigt</translation>
+    </message>
+    <message>
+        <source>Writing %1…</source>
+        <translation>Schreibe %1 …</translation>
+    </message>
+    <message>
+        <source>Runs, suite CSV and bags (*.%1 *.csv *.bag);;All files (*)</source>
+        <translation>Läufe, Suite-CSV und Bags (*.%1 *.csv *.bag);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save Run As</source>
+        <translation>Lauf speichern unter</translation>
+    </message>
+    <message>
+        <source>Bridgescope runs (*.%1)</source>
+        <translation>Bridgescope-Läufe (*.%1)</translation>
+    </message>
+    <message>
+        <source>■ Stop Re&amp;cording</source>
+        <translation>■ A&amp;ufzeichnung beenden</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Recording&lt;/b&gt; %1: %2 stamps committed to %3</source>
+        <translation>&lt;b&gt;Aufzeichnung&lt;/b&gt; %1: %2 Zeitstempel in %3 festgeschrieben</translation>
+    </message>
+    <message>
+        <source>unknown time</source>
+        <translation>unbekannte Zeit</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Showing the run&lt;/b&gt; %1 (%2, %3): live stamps are not measured meanwhile</source>
+        <translation>&lt;b&gt;Angezeigter Lauf&lt;/b&gt; %1 (%2, %3): Live-Zeitstempel werden währenddessen nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Live</source>
+        <translation>Live</translation>
+    </message>
+    <message>
+        <source>Save Ru&amp;n As…</source>
+        <translation>Lauf speichern u&amp;nter …</translation>
+    </message>
+    <message>
+        <source>&amp;Back to Live</source>
+        <translation>Zu&amp;rück zu Live</translation>
+    </message>
+    <message>
+        <source>%1 rows could not be read and were skipped:
+%2</source>
+        <translation>%1 Zeilen waren nicht lesbar und wurden übersprungen:
+%2</translation>
+    </message>
+</context>
+<context>
+    <name>RunFile</name>
+    <message>
+        <source>not a Bridgescope run (not an SQLite database)</source>
+        <translation>kein Bridgescope-Lauf (keine SQLite-Datenbank)</translation>
+    </message>
+    <message>
+        <source>not a Bridgescope run (%1)</source>
+        <translation>kein Bridgescope-Lauf (%1)</translation>
+    </message>
+    <message>
+        <source>not a Bridgescope run (no run metadata)</source>
+        <translation>kein Bridgescope-Lauf (keine Laufmetadaten)</translation>
+    </message>
+    <message>
+        <source>written by a newer Bridgescope (run format %1, this one reads %2)</source>
+        <translation>von einem neueren Bridgescope geschrieben (Laufformat %1, diese Version liest %2)</translation>
+    </message>
+    <message>
+        <source>stamp %1 names a topic the run does not have</source>
+        <translation>Zeitstempel %1 nennt ein Topic, das der Lauf nicht hat</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>a latency names a series the run does not have</source>
+        <translation>eine Latenz nennt eine Reihe, die der Lauf nicht hat</translation>
+    </message>
+    <message>
+        <source>%1: cannot replace it (%2)</source>
+        <translation>%1: lässt sich nicht ersetzen (%2)</translation>
+    </message>
+    <message>
+        <source>its pipeline cannot be read: %1</source>
+        <translation>seine Pipeline ist nicht lesbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>RunLoader</name>
     <message>
         <source>%1: a pipeline needs at least two stamp topics, the file has %2</source>
         <translation>%1: eine Pipeline braucht mindestens zwei Zeitstempel-Topics, die Datei hat %2</translation>
     </message>
     <message>
-        <source>%1: no column for stamp topic %2</source>
-        <translation>%1: keine Spalte für das Zeitstempel-Topic %2</translation>
+        <source>run</source>
+        <translation>Lauf</translation>
     </message>
     <message>
-        <source>%1: its columns differ from %2's; give --pipeline to pick the common topics</source>
-        <translation>%1: ihre Spalten weichen von denen in %2 ab; --pipeline wählt die gemeinsamen Topics</translation>
+        <source>ROS bag</source>
+        <translation>ROS-Bag</translation>
+    </message>
+    <message>
+        <source>suite CSV</source>
+        <translation>Suite-CSV</translation>
+    </message>
+    <message>
+        <source>%1 rows that did not read were skipped.</source>
+        <translation>%1 nicht lesbare Zeilen wurden übersprungen.</translation>
+    </message>
+    <message>
+        <source> (and %1 more rows that cannot be read)</source>
+        <translation> (und %1 weitere nicht lesbare Zeilen)</translation>
+    </message>
+</context>
+<context>
+    <name>RunRecorder</name>
+    <message>
+        <source>already recording to %1</source>
+        <translation>zeichnet bereits in %1 auf</translation>
+    </message>
+</context>
+<context>
+    <name>RunWriter</name>
+    <message>
+        <source>%1 exists already; a run is never overwritten</source>
+        <translation>%1 existiert bereits; ein Lauf wird nie überschrieben</translation>
+    </message>
+    <message>
+        <source>%1: cannot create its folder</source>
+        <translation>%1: Ordner lässt sich nicht anlegen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
