@@ -2,8 +2,11 @@
 #include "guimain.h"
 
 #include "cli/clioutput.h"
+#include "common/demolab.h"
+#include "common/measuresession.h"
 #include "configfilecontroller.h"
 #include "discoverpage.h"
+#include "latency/latencystatsmodel.h"
 #include "mainwindow.h"
 #include "measurepage.h"
 
@@ -11,6 +14,7 @@
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QLibraryInfo>
+#include <QStatusBar>
 #include <QTimer>
 #include <QTranslator>
 
@@ -42,6 +46,7 @@ QString bridgescopeUsage()
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
+        {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
         {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure or reports")},
         {u"-h, --help"_s, Gui::tr("show this help")},
         {u"-v, --version"_s, Gui::tr("show the version")},
@@ -49,6 +54,9 @@ QString bridgescopeUsage()
     const QList<std::pair<QString, QString>> commands = {
         {u"config validate|convert|peer"_s, Gui::tr("check, convert and pair bridge configs")},
         {u"discover [--json]"_s, Gui::tr("list ROS and MQTT topics")},
+        {u"bridge CONFIG.yaml [--broker URL]"_s, Gui::tr("run a config as a reference bridge")},
+        {u"probe [--sweep] [--echo]"_s, Gui::tr("round trips and throughput through the broker")},
+        {u"demo [--seconds N]"_s, Gui::tr("the demo lab without a window")},
         {u"record --pipeline P -o RUN"_s, Gui::tr("record a measurement run")},
         {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},
     };
@@ -83,14 +91,55 @@ int runGui(int& argc, char** argv)
         u"PIPE.yaml"_s);
     const QCommandLineOption page(u"page"_s, Gui::tr("Open on this page: discover, map, measure or reports."),
                                   u"PAGE"_s);
-    parser.addOptions({screenshot, after, broker, master, pipeline, page});
+    const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
+    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
     if (!parser.parse(app.arguments())) {
         CliOutput::err(parser.errorText());
         CliOutput::err(bridgescopeUsage());
         return 2;
     }
+    // The demo lab outlives the window: its servers go last.
+    std::unique_ptr<DemoLab> lab;
+    if (parser.isSet(demo)) {
+        lab = std::make_unique<DemoLab>();
+        CliOutput::err(Gui::tr("starting the demo lab…"));
+        QString error;
+        if (!lab->start({}, &error)) {
+            CliOutput::err(Gui::tr("the demo lab did not start: %1").arg(error));
+            return 1;
+        }
+    }
     MainWindow window;
+    if (lab) {
+        window.discoverPage()->setRosMasterUri(lab->rosMasterUri());
+        window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab->brokerUrl()));
+        window.files()->openFile(lab->vehicleConfigPath());
+        QString error;
+        if (!window.measurePage()->loadPipeline(lab->pipelinePath(), &error))
+            CliOutput::err(error);
+        window.pages()->setCurrentWidget(window.measurePage());
+        // The paper's Fig. 5 view: detection, one-way communication and the total.
+        window.measure()->statsModel()->setChecked(u"stage:5"_s, true);
+        window.measure()->statsModel()->setChecked(u"one_way"_s, true);
+        window.setWindowTitle(Gui::tr("Bridgescope — demo lab"));
+        auto* watch = new QTimer(&window);
+        QObject::connect(watch, &QTimer::timeout, &window, [&window, &lab, watch] {
+            if (lab->isRunning())
+                return;
+            watch->stop();
+            window.statusBar()->showMessage(Gui::tr("The demo lab stopped: %1").arg(lab->failure()));
+        });
+        watch->start(2000);
+        // Ctrl+C or SIGTERM close the window properly, so that the lab stops and cleans up.
+        CliOutput::catchStopSignals();
+        auto* stop = new QTimer(&window);
+        QObject::connect(stop, &QTimer::timeout, &app, [] {
+            if (CliOutput::stopRequested())
+                QCoreApplication::quit();
+        });
+        stop->start(100);
+    }
     if (parser.isSet(master))
         window.discoverPage()->setRosMasterUri(parser.value(master));
     if (parser.isSet(broker)) {

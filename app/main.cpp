@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include "cli/bridgecommand.h"
 #include "cli/clioutput.h"
 #include "cli/configcommand.h"
+#include "cli/democommand.h"
 #include "cli/discovercommand.h"
+#include "cli/probecommand.h"
 #include "cli/recordcommand.h"
 #include "cli/reportcommand.h"
 #include "guimain.h"
@@ -36,7 +39,8 @@ int main(int argc, char** argv)
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
-    static const QStringList commands = {u"config"_s, u"discover"_s, u"record"_s, u"report"_s};
+    static const QStringList commands = {u"bridge"_s,   u"config"_s, u"demo"_s,   u"demo-node"_s,
+                                         u"discover"_s, u"probe"_s,  u"record"_s, u"report"_s};
     if (first == u"report"_s && wantsPdf(argc, argv)) {
         // PDF reports lay text out with Qt GUI; no window ever opens, so no display is needed.
         if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
@@ -60,8 +64,16 @@ int main(int argc, char** argv)
         }
         if (first == u"discover"_s)
             return runDiscoverCommand(args);
+        if (first == u"probe"_s)
+            return runProbeCommand(args);
         if (first == u"record"_s)
             return runRecordCommand(args);
+        if (first == u"bridge"_s)
+            return runBridgeCommand(args);
+        if (first == u"demo"_s)
+            return runDemoCommand(args);
+        if (first == u"demo-node"_s)
+            return runDemoNodeCommand(args);
         if (first == u"report"_s)
             return runReportCommand(args);
         return runConfigCommand(args);

@@ -3,6 +3,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <malloc.h>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
@@ -42,6 +43,12 @@ void catchStopSignals()
 bool stopRequested()
 {
     return g_stopRequested != 0;
+}
+
+void keepFreedMemory()
+{
+    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024); // glibc's maximum on 64-bit
+    mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
 }
 
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The command line contract of `bridgescope config ...`, run as the real program.
+#include "clirun.h"
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "pythonref.h"
@@ -17,26 +18,11 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-struct Run
-{
-    int exit = -1;
-    QString out;
-    QString err;
-};
+using Run = CliRun::Result;
 
-Run bridgescope(const QStringList& args)
+Run bridgescope(const QStringList& args, int timeoutMs = 20000)
 {
-    QProcess p;
-    p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
-    Run r;
-    if (!p.waitForFinished(30000)) {
-        p.kill();
-        return r;
-    }
-    r.exit = p.exitCode();
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return CliRun::bridgescope(args, timeoutMs);
 }
 
 QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& text)

@@ -5,11 +5,28 @@
 #include <QAbstractItemView>
 #include <QCoreApplication>
 #include <QDropEvent>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMimeData>
 #include <QTest>
 
 /// What GUI tests do to item views: find rows, and drag between views as a real drag would.
 namespace ViewHelpers {
+/// The action `text` of the menu `menu` in `w`'s menu bar (accelerators ignored), or nullptr.
+inline QAction* menuAction(QMainWindow& w, const QString& menu, const QString& text)
+{
+    for (QAction* top : w.menuBar()->actions()) {
+        if (top->text().remove(u'&') != menu)
+            continue;
+        for (QAction* a : top->menu()->actions()) {
+            if (a->text().remove(u'&') == text)
+                return a;
+        }
+    }
+    return nullptr;
+}
+
 /// The first index (column 0, any depth) whose `role` holds `name`.
 inline QModelIndex find(QAbstractItemModel* model, const QString& name, int role,
                         const QModelIndex& parent = {})

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+#include "bridgecommand.h"
+
+#include "bridge/referencebridge.h"
+#include "clioutput.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFile>
+#include <QTimer>
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+
+namespace {
+class Bridge
+{
+    Q_DECLARE_TR_FUNCTIONS(BridgeCommand)
+};
+
+void logLine(const QString& line)
+{
+    err(QDateTime::currentDateTime().toString(u"HH:mm:ss.zzz"_s) + u' ' + line);
+}
+} // namespace
+
+int runBridgeCommand(const QStringList& arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption broker(
+        u"broker"_s, Bridge::tr("Broker URL; overrides the config's broker host and port."), u"URL"_s);
+    const QCommandLineOption master(u"ros-master"_s, Bridge::tr("ROS master URI (default $ROS_MASTER_URI)."),
+                                    u"URI"_s);
+    const QCommandLineOption name(u"name"_s, Bridge::tr("ROS node name (default mqtt_client)."), u"NODE"_s);
+    const QCommandLineOption arg(u"arg"_s, Bridge::tr("Value for $(arg NAME) in the config; repeatable."),
+                                 u"NAME=VALUE"_s);
+    const QCommandLineOption offset(
+        u"clock-offset-ms"_s,
+        Bridge::tr("Shift this bridge's clock (stamps, latencies) by MS milliseconds, "
+                   "as if it ran on a host whose clock is off."),
+        u"MS"_s, u"0"_s);
+    const QCommandLineOption everyMessage(
+        u"announce-every-message"_s,
+        Bridge::tr(
+            "Publish the type announcement with every message, exactly as mqtt_client v2.2.1 does (small "
+            "messages then wait up to 40 ms for TCP's delayed ACK); by default once per type and "
+            "connection."));
+    parser.addOptions({broker, master, name, arg, offset, everyMessage});
+    parser.addPositionalArgument(u"CONFIG"_s, Bridge::tr("mqtt_client config (ROS 1 or ROS 2 layout)."),
+                                 u"CONFIG.yaml"_s);
+    QStringList args = arguments;
+    args.replace(0, u"bridgescope bridge"_s);
+    const int parsed = CliOutput::parseCommand(
+        parser, args,
+        Bridge::tr(
+            "Runs an mqtt_client config as a reference bridge between the ROS master and the broker, with "
+            "mqtt_client's wire protocol (type announcements, injected stamps, latency topics, primitives) "
+            "and the benchmarking suite's timestamp_topic_prefix stamps. Stops cleanly on Ctrl+C or "
+            "SIGTERM.\nExit status: 0 stopped, 1 broker or master failed, 2 bad options or config."));
+    if (parsed >= 0)
+        return parsed;
+    if (parser.positionalArguments().size() != 1) {
+        err(Bridge::tr("bridge takes one config file; see bridgescope bridge --help"));
+        return 2;
+    }
+    const QString path = parser.positionalArguments().first();
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        err(Bridge::tr("%1: %2").arg(path, f.errorString()));
+        return 2;
+    }
+    ReferenceBridge::Options options;
+    options.brokerUrl = parser.value(broker);
+    options.rosMaster = parser.value(master);
+    options.nodeName = parser.value(name);
+    options.announceEveryMessage = parser.isSet(everyMessage);
+    bool ok = false;
+    options.clockOffsetNs = qint64(parser.value(offset).toDouble(&ok) * 1e6);
+    if (!ok) {
+        err(Bridge::tr("--clock-offset-ms takes a number of milliseconds"));
+        return 2;
+    }
+    for (const QString& a : parser.values(arg)) {
+        const qsizetype eq = a.indexOf(u'=');
+        if (eq <= 0) {
+            err(Bridge::tr("--arg takes NAME=VALUE, not '%1'").arg(a));
+            return 2;
+        }
+        options.args.insert(a.left(eq), a.mid(eq + 1));
+    }
+    CliOutput::keepFreedMemory();
+    ReferenceBridge bridge(logLine);
+    QString why;
+    if (!bridge.load(f.readAll(), options, &why)) {
+        err(u"%1: %2"_s.arg(path, why));
+        return 2;
+    }
+    CliOutput::catchStopSignals();
+    if (!bridge.start([] { return !CliOutput::stopRequested(); }, &why)) {
+        err(Bridge::tr("bridge failed: %1").arg(why));
+        return CliOutput::stopRequested() ? 0 : 1;
+    }
+    logLine(Bridge::tr("bridging %n mapping(s); Ctrl+C stops", nullptr, bridge.mappingCount()));
+    QTimer check;
+    QObject::connect(&check, &QTimer::timeout, [] {
+        if (CliOutput::stopRequested())
+            QCoreApplication::exit(0);
+    });
+    check.start(100);
+    QCoreApplication::exec();
+    const ReferenceBridge::Counters& c = bridge.counters();
+    bridge.stop();
+    logLine(Bridge::tr("stopped: %1 messages to MQTT, %2 to ROS, %3 failed")
+                .arg(c.toMqtt.load())
+                .arg(c.toRos.load())
+                .arg(c.failed.load()));
+    return 0;
+}

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+#include "democommand.h"
+
+#include "clioutput.h"
+#include "common/demolab.h"
+#include "common/livesession.h"
+#include "common/measuresession.h"
+#include "record/report.h"
+#include "record/reportformats.h"
+#include "record/runrecorder.h"
+#include "ros/demonodes.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QTimer>
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+using CliOutput::out;
+
+namespace {
+class Demo
+{
+    Q_DECLARE_TR_FUNCTIONS(DemoCommand)
+};
+} // namespace
+
+int runDemoCommand(const QStringList& arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption seconds(u"seconds"_s, Demo::tr("Run for N seconds (default: until Ctrl+C)."),
+                                     u"N"_s);
+    const QCommandLineOption output({u"o"_s, u"output"_s}, Demo::tr("Keep the recording as this run file."),
+                                    u"RUN"_s);
+    const QCommandLineOption format(u"format"_s, Demo::tr("Summary at the end: md (default) or json."),
+                                    u"FORMAT"_s, u"md"_s);
+    const QCommandLineOption size(u"size"_s, Demo::tr("Point cloud size in bytes (default 180000)."),
+                                  u"BYTES"_s, u"180000"_s);
+    parser.addOptions({seconds, output, format, size});
+    QStringList args = arguments;
+    args.replace(0, u"bridgescope demo"_s);
+    const int parsed = CliOutput::parseCommand(
+        parser, args,
+        Demo::tr(
+            "Runs the demo lab without a window: a private mosquitto and rosmaster, a vehicle and a cloud "
+            "reference bridge, a 0.18 MB point cloud at 10 Hz, a 40 ms object detection in the cloud whose "
+            "clock is 35 ms ahead, and stamps at every component; records every stamp and prints the "
+            "latency report at the end. Everything it started stops with it.\n"
+            "Exit status: 0 samples measured, 1 the lab failed or measured nothing, 2 bad options."));
+    if (parsed >= 0)
+        return parsed;
+    bool ok = true;
+    const double wantSeconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
+    if (!ok || wantSeconds < 0) {
+        err(Demo::tr("--seconds takes a number of seconds"));
+        return 2;
+    }
+    ReportFormats::Format summary;
+    if (!ReportFormats::parse(parser.value(format), &summary)
+        || (summary != ReportFormats::Format::Markdown && summary != ReportFormats::Format::Json)) {
+        err(Demo::tr("--format takes md or json"));
+        return 2;
+    }
+    DemoLab::Options labOptions;
+    labOptions.payloadBytes = parser.value(size).toInt(&ok);
+    if (!ok || labOptions.payloadBytes < 16) {
+        err(Demo::tr("--size takes a number of bytes (at least 16)"));
+        return 2;
+    }
+    QTemporaryDir scratch;
+    const QString runPath = parser.isSet(output) ? parser.value(output) : scratch.filePath(u"demo.bsrun"_s);
+    if (QFileInfo::exists(runPath)) {
+        err(Demo::tr("%1 exists already; a run is never overwritten").arg(runPath));
+        return 2;
+    }
+
+    CliOutput::catchStopSignals();
+    DemoLab lab;
+    QString why;
+    err(Demo::tr("starting the demo lab…"));
+    if (!lab.start(labOptions, &why)) {
+        err(Demo::tr("the demo lab did not start: %1").arg(why));
+        return 1;
+    }
+    err(Demo::tr("broker %1, ROS master %2, configs in %3")
+            .arg(lab.brokerUrl(), lab.rosMasterUri(), lab.directory()));
+    const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &why);
+    if (!pipeline) {
+        err(why);
+        return 1;
+    }
+    LiveSession live;
+    live.setRosMasterUri(lab.rosMasterUri());
+    live.connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
+    MeasureSession measure(&live);
+    measure.setPipeline(*pipeline);
+    RunInfo info;
+    info.name = Demo::tr("demo lab");
+    info.notes
+        = Demo::tr("bridgescope demo: %1 bytes at %2 Hz").arg(labOptions.payloadBytes).arg(labOptions.rateHz);
+    if (!measure.startRecording(runPath, info, &why)) {
+        err(why);
+        return 1;
+    }
+    int exitCode = 0;
+    QElapsedTimer clock;
+    clock.start();
+    QTimer check;
+    qint64 lastReport = 0;
+    QObject::connect(&check, &QTimer::timeout, [&] {
+        if (CliOutput::stopRequested()
+            || (wantSeconds > 0 && clock.elapsed() >= qint64(wantSeconds * 1000))) {
+            QCoreApplication::exit(0);
+            return;
+        }
+        if (!lab.isRunning()) {
+            err(Demo::tr("the demo lab failed: %1").arg(lab.failure()));
+            exitCode = 1;
+            QCoreApplication::exit(1);
+            return;
+        }
+        if (clock.elapsed() - lastReport >= 1000) {
+            lastReport = clock.elapsed();
+            const LatencyEngine& e = measure.engine();
+            const LatencyStats total = e.series(e.totalSeries()).stats();
+            err(Demo::tr("%1 s: %2 complete samples, total latency mean %3 ms")
+                    .arg(clock.elapsed() / 1000)
+                    .arg(e.samples())
+                    .arg(total.count > 0 ? QString::number(total.mean, 'f', 1) : u"–"_s));
+        }
+    });
+    check.start(50);
+    QCoreApplication::exec();
+    live.drainNow();
+    if (!measure.stopRecording(&why)) {
+        err(Demo::tr("recording failed: %1").arg(why));
+        exitCode = 1;
+    }
+    lab.stop();
+    if (exitCode != 0)
+        return exitCode;
+    const std::optional<Report> report = Report::build({runPath}, std::nullopt, {}, &why);
+    if (!report) {
+        err(why);
+        return 1;
+    }
+    const QByteArray text = summary == ReportFormats::Format::Json ? ReportFormats::json(*report)
+                                                                   : ReportFormats::markdown(*report);
+    out(QString::fromUtf8(text).trimmed());
+    if (parser.isSet(output))
+        err(Demo::tr("the run is in %1").arg(runPath));
+    return report->runs().front()->engine->samples() > 0 ? 0 : 1;
+}
+
+int runDemoNodeCommand(const QStringList& arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption master(u"ros-master"_s, Demo::tr("ROS master URI (default $ROS_MASTER_URI)."),
+                                    u"URI"_s);
+    const QCommandLineOption size(u"size"_s, Demo::tr("vehicle: point cloud size in bytes."), u"BYTES"_s,
+                                  u"180000"_s);
+    const QCommandLineOption rate(u"rate"_s, Demo::tr("vehicle: point clouds per second."), u"HZ"_s, u"10"_s);
+    const QCommandLineOption detection(u"detection-ms"_s, Demo::tr("cloud: mean detection time."), u"MS"_s,
+                                       u"40"_s);
+    const QCommandLineOption offset(u"clock-offset-ms"_s, Demo::tr("This host's clock error."), u"MS"_s,
+                                    u"0"_s);
+    parser.addOptions({master, size, rate, detection, offset});
+    parser.addPositionalArgument(u"ROLE"_s, Demo::tr("vehicle or cloud."), u"vehicle|cloud"_s);
+    QStringList args = arguments;
+    args.replace(0, u"bridgescope demo-node"_s);
+    const int parsed = CliOutput::parseCommand(
+        parser, args, Demo::tr("One of the demo lab's ROS nodes; the lab starts them."));
+    if (parsed >= 0)
+        return parsed;
+    const QString role = parser.positionalArguments().value(0);
+    if (role != u"vehicle"_s && role != u"cloud"_s) {
+        err(Demo::tr("demo-node takes vehicle or cloud"));
+        return 2;
+    }
+    DemoNodes::Options o;
+    o.masterUri = parser.value(master);
+    o.payloadBytes = parser.value(size).toInt();
+    o.rateHz = parser.value(rate).toDouble();
+    o.detectionMs = parser.value(detection).toDouble();
+    o.clockOffsetNs = qint64(parser.value(offset).toDouble() * 1e6);
+    CliOutput::catchStopSignals();
+    CliOutput::keepFreedMemory();
+    QString why;
+    const auto stop = [] { return CliOutput::stopRequested(); };
+    const bool ok
+        = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop, &why) : DemoNodes::runCloud(o, stop, &why);
+    if (!ok && !CliOutput::stopRequested()) {
+        err(Demo::tr("demo-node %1: %2").arg(role, why));
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "config/bridgeconfig.h"
+#include "mqtt/mqttprofile.h"
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QHash>
+#include <QString>
+#include <vector>
+
+struct RosRawMessage;
+
+/// std_msgs primitives as text, the way mqtt_client sends `primitive: true` mappings.
+namespace PrimitiveText {
+/// The text of a std_msgs primitive message (String, Bool, Int*/UInt*, Float32/64, Char, Byte);
+/// nullopt for other types.
+std::optional<QByteArray> toText(const QString& type, const QByteArray& bytes);
+/// A std_msgs message for received text: Bool for "true"/"false", Int32 for an integer that
+/// fits, Float64 for another number, else String.
+RosRawMessage fromText(const QByteArray& text);
+} // namespace PrimitiveText
+
+/// The reference bridge: runs an mqtt_client config (ROS 1 layout; ROS 2 and mqtt_bridge
+/// layouts are converted) between one ROS master and one broker, speaking mqtt_client v2.2.1's
+/// wire protocol byte for byte (see docs/formats.md), plus the benchmarking suite's
+/// `timestamp_topic_prefix`: TimeStamped on `<prefix>/in` when a message enters the bridge and
+/// `<prefix>/out` when it has left.
+///
+/// Messages are forwarded on the receiving library's thread, without queueing in between.
+class ReferenceBridge
+{
+    Q_DECLARE_TR_FUNCTIONS(ReferenceBridge)
+public:
+    using Log = std::function<void(const QString& line)>;
+
+    struct Options
+    {
+        QString brokerUrl; ///< overrides the config's broker (host, port, TLS) when set
+        QString rosMaster; ///< empty: ROS_MASTER_URI
+        QString nodeName; ///< empty: "mqtt_client"
+        QHash<QString, QString> args; ///< values for `$(arg NAME)` in the config
+        /// Added to this bridge's clock (stamps, injected times, latencies): a host whose clock
+        /// is off, for the demo lab.
+        qint64 clockOffsetNs = 0;
+        /// Announce the type with every message, as mqtt_client v2.2.1 does (and pay for it: see
+        /// docs/formats.md); by default once per type and connection (it is retained).
+        bool announceEveryMessage = false;
+    };
+
+    struct Counters
+    {
+        std::atomic<quint64> toMqtt {0};
+        std::atomic<quint64> toRos {0};
+        std::atomic<quint64> failed {0}; ///< could not be sent (broker away, bad payload)
+    };
+
+    explicit ReferenceBridge(Log log);
+    ~ReferenceBridge();
+
+    /// Reads the config (any layout). Errors: not a bridge config, no mapping, bad values.
+    bool load(const QByteArray& yaml, const Options& options, QString* error);
+    /// Connects to broker and master (waiting for the master while `keepWaiting`) and bridges.
+    bool start(const std::function<bool()>& keepWaiting, QString* error);
+    void stop();
+
+    const Counters& counters() const;
+    /// The broker profile in use (from the config, or --broker).
+    const MqttProfile& profile() const;
+    int mappingCount() const;
+
+private:
+    struct Private;
+    std::unique_ptr<Private> d;
+};

@@ -1,0 +1,288 @@
+// SPDX-License-Identifier: MIT
+#include "demolab.h"
+
+#include <csignal>
+#include <pwd.h>
+#include <QDeadlineTimer>
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QThread>
+#include <sys/prctl.h>
+#include <unistd.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+const QString kStamps = u"/benchmarking_suite/timestamps/"_s;
+
+quint16 freePort()
+{
+    QTcpServer server;
+    return server.listen(QHostAddress::LocalHost, 0) ? server.serverPort() : 0;
+}
+
+bool listening(quint16 port)
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, port);
+    return s.waitForConnected(200);
+}
+
+QString bridgeConfig(const QString& side)
+{
+    // The suite's configs, with the demo's own ROS topics for each host.
+    const bool vehicle = side == u"vehicle"_s;
+    const QString pc = u"      timestamp_topic_prefix: %1mqtt_interface_%2/pointcloud\n"_s.arg(kStamps, side);
+    const QString ol
+        = u"      timestamp_topic_prefix: %1mqtt_interface_%2/object_list\n"_s.arg(kStamps, side);
+    QString out
+        = u"# The %1 side of Bridgescope's demo lab, shaped like the paper's experiment.\n"_s.arg(side)
+        + u"broker:\n  host: localhost\n  port: 1883\nclient:\n  id: mqtt_interface_%1\n"_s.arg(side)
+        + u"bridge:\n"_s;
+    const QString pointcloud
+        = u"    - ros_topic: /%1/pointcloud\n      mqtt_topic: benchmarking_suite/pointcloud\n"_s;
+    const QString objects
+        = u"    - ros_topic: /%1/object_list\n      mqtt_topic: benchmarking_suite/object_list\n"_s;
+    const QString qos = u"      advanced:\n        mqtt:\n          qos: 0\n"_s;
+    if (vehicle) {
+        out += u"  ros2mqtt:\n"_s + pointcloud.arg(side) + u"      inject_timestamp: true\n"_s + pc + qos;
+        out += u"  mqtt2ros:\n"_s + objects.arg(side) + ol + qos;
+    } else {
+        out += u"  mqtt2ros:\n"_s + pointcloud.arg(side) + pc + qos;
+        out += u"  ros2mqtt:\n"_s + objects.arg(side) + u"      inject_timestamp: true\n"_s + ol + qos;
+    }
+    return out;
+}
+} // namespace
+
+struct DemoLab::Private
+{
+    QTemporaryDir dir {QDir::tempPath() + u"/bridgescope-demo-XXXXXX"_s};
+    std::vector<std::unique_ptr<QProcess>> processes; ///< in start order
+    QStringList names;
+    quint16 brokerPort = 0;
+    quint16 masterPort = 0;
+
+    QProcessEnvironment rosEnvironment() const
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_MASTER_URI"_s, u"http://127.0.0.1:%1/"_s.arg(masterPort));
+        env.insert(u"ROS_IP"_s, u"127.0.0.1"_s);
+        env.remove(u"ROS_HOSTNAME"_s);
+        env.insert(u"ROS_HOME"_s, dir.filePath(u"ros"_s));
+        env.insert(u"ROS_LOG_DIR"_s, dir.filePath(u"ros/log"_s));
+        return env;
+    }
+
+    QProcess* launch(const QString& name, const QString& program, const QStringList& args)
+    {
+        auto p = std::make_unique<QProcess>();
+        p->setProcessEnvironment(rosEnvironment());
+        p->setStandardOutputFile(dir.filePath(name + u".log"_s));
+        p->setStandardErrorFile(dir.filePath(name + u".log"_s), QIODevice::Append);
+        p->setChildProcessModifier([] {
+            // No orphans: the child gets SIGTERM when Bridgescope dies, however it dies.
+            ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+        });
+        p->start(program, args);
+        QProcess* raw = p.get();
+        processes.push_back(std::move(p));
+        names << name;
+        return raw;
+    }
+
+    QString logOf(const QString& name) const
+    {
+        QFile f(dir.filePath(name + u".log"_s));
+        return f.open(QIODevice::ReadOnly) ? QString::fromLocal8Bit(f.readAll()).right(600) : QString();
+    }
+};
+
+DemoLab::DemoLab()
+    : d(std::make_unique<Private>())
+{ }
+
+DemoLab::~DemoLab()
+{
+    stop();
+}
+
+QStringList DemoLab::pipelineTopics()
+{
+    QStringList t;
+    for (const char* s :
+         {"pointcloud", "mqtt_interface_vehicle/pointcloud/in", "mqtt_interface_vehicle/pointcloud/out",
+          "mqtt_interface_cloud/pointcloud/in", "mqtt_interface_cloud/pointcloud/out",
+          "object_detection/pointcloud", "object_detection/object_list",
+          "mqtt_interface_cloud/object_list/in", "mqtt_interface_cloud/object_list/out",
+          "mqtt_interface_vehicle/object_list/in", "mqtt_interface_vehicle/object_list/out", "object_list"})
+        t << kStamps + QString::fromLatin1(s);
+    return t;
+}
+
+bool DemoLab::start(const Options& o, QString* error)
+{
+    const auto fail = [this, error](const QString& why) {
+        if (error)
+            *error = why;
+        stop();
+        return false;
+    };
+    if (!d->dir.isValid())
+        return fail(tr("cannot make a folder for the demo: %1").arg(d->dir.errorString()));
+    QDir().mkpath(d->dir.filePath(u"ros/log"_s));
+    const QString program = o.program.isEmpty() ? QCoreApplication::applicationFilePath() : o.program;
+
+    // Configs: both bridges and the pipeline with hosts.
+    for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
+        QFile f(d->dir.filePath(side + u".yaml"_s));
+        if (!f.open(QIODevice::WriteOnly) || f.write(bridgeConfig(side).toUtf8()) < 0)
+            return fail(tr("cannot write %1").arg(f.fileName()));
+    }
+    QString pipe
+        = u"# The paper's pipeline (Fig. 4) with the demo's hosts.\nmetrics_window: 600\ntopics_in_order:\n"_s;
+    QString hosts = u"hosts:\n"_s;
+    for (const QString& t : pipelineTopics()) {
+        pipe += u"  - "_s + t + u'\n';
+        const bool cloud = t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s);
+        hosts += u"  "_s + t + (cloud ? u": cloud\n"_s : u": vehicle\n"_s);
+    }
+    QFile pf(pipelinePath());
+    if (!pf.open(QIODevice::WriteOnly) || pf.write((pipe + hosts).toUtf8()) < 0)
+        return fail(tr("cannot write %1").arg(pf.fileName()));
+    pf.close();
+
+    // The servers, on free loopback ports.
+    const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
+    const QString rosmaster = QStandardPaths::findExecutable(u"rosmaster"_s);
+    if (mosquitto.isEmpty() || rosmaster.isEmpty())
+        return fail(tr("the demo needs mosquitto and rosmaster (scripts/setup.sh installs them)"));
+    d->brokerPort = freePort();
+    d->masterPort = freePort();
+    QFile conf(d->dir.filePath(u"mosquitto.conf"_s));
+    if (!conf.open(QIODevice::WriteOnly)
+        || conf.write(
+               u"listener %1 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
+               // Run as whoever we are: a broker started as root drops to the "mosquitto" user,
+               // and a change of user clears the parent-death signal.
+               "user %2\n"_s.arg(d->brokerPort)
+                   .arg(QString::fromLocal8Bit(::getpwuid(::getuid()) ? ::getpwuid(::getuid())->pw_name
+                                                                      : "root"))
+                   .toUtf8())
+            < 0)
+        return fail(tr("cannot write %1").arg(conf.fileName()));
+    conf.close();
+    d->launch(u"mosquitto"_s, mosquitto, {u"-c"_s, conf.fileName()});
+    d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(d->masterPort)});
+    const QDeadlineTimer deadline(20000);
+    for (const auto& [name, port] :
+         {std::pair {u"mosquitto"_s, d->brokerPort}, {u"rosmaster"_s, d->masterPort}}) {
+        while (!listening(port)) {
+            if (deadline.hasExpired() || !isRunning())
+                return fail(tr("%1 did not start: %2").arg(name, d->logOf(name)));
+            QThread::msleep(50);
+        }
+    }
+
+    // The components.
+    const QString offset = QString::number(o.cloudOffsetMs);
+    const QStringList common {u"--ros-master"_s, rosMasterUri()};
+    d->launch(u"vehicle_bridge"_s, program,
+              QStringList {u"bridge"_s, vehicleConfigPath(), u"--broker"_s, brokerUrl(), u"--name"_s,
+                           u"mqtt_interface_vehicle"_s}
+                  + common);
+    d->launch(u"cloud_bridge"_s, program,
+              QStringList {u"bridge"_s, cloudConfigPath(), u"--broker"_s, brokerUrl(), u"--name"_s,
+                           u"mqtt_interface_cloud"_s, u"--clock-offset-ms"_s, offset}
+                  + common);
+    d->launch(u"object_detection"_s, program,
+              QStringList {u"demo-node"_s, u"cloud"_s, u"--clock-offset-ms"_s, offset, u"--detection-ms"_s,
+                           QString::number(o.detectionMs)}
+                  + common);
+    d->launch(u"vehicle"_s, program,
+              QStringList {u"demo-node"_s, u"vehicle"_s, u"--size"_s, QString::number(o.payloadBytes),
+                           u"--rate"_s, QString::number(o.rateHz)}
+                  + common);
+    for (const auto& p : d->processes)
+        if (!p->waitForStarted(5000))
+            return fail(tr("cannot start %1: %2").arg(p->program(), p->errorString()));
+    return true;
+}
+
+void DemoLab::stop()
+{
+    // Components first, servers last, each asked to stop (SIGTERM) before it is killed.
+    for (auto it = d->processes.rbegin(); it != d->processes.rend(); ++it)
+        if ((*it)->state() != QProcess::NotRunning)
+            (*it)->terminate();
+    for (auto it = d->processes.rbegin(); it != d->processes.rend(); ++it) {
+        if ((*it)->state() != QProcess::NotRunning && !(*it)->waitForFinished(5000)) {
+            (*it)->kill();
+            (*it)->waitForFinished(2000);
+        }
+    }
+    d->processes.clear();
+    d->names.clear();
+}
+
+bool DemoLab::isRunning() const
+{
+    if (d->processes.empty())
+        return false;
+    for (const auto& p : d->processes)
+        if (p->state() == QProcess::NotRunning)
+            return false;
+    return true;
+}
+
+QString DemoLab::failure() const
+{
+    for (std::size_t i = 0; i < d->processes.size(); ++i)
+        if (d->processes[i]->state() == QProcess::NotRunning)
+            return tr("%1 stopped: %2").arg(d->names[qsizetype(i)], d->logOf(d->names[qsizetype(i)]));
+    return QString();
+}
+
+QString DemoLab::brokerUrl() const
+{
+    return u"tcp://127.0.0.1:%1"_s.arg(d->brokerPort);
+}
+
+QString DemoLab::rosMasterUri() const
+{
+    return u"http://127.0.0.1:%1/"_s.arg(d->masterPort);
+}
+
+QString DemoLab::vehicleConfigPath() const
+{
+    return d->dir.filePath(u"vehicle.yaml"_s);
+}
+
+QString DemoLab::cloudConfigPath() const
+{
+    return d->dir.filePath(u"cloud.yaml"_s);
+}
+
+QString DemoLab::pipelinePath() const
+{
+    return d->dir.filePath(u"pipeline.yaml"_s);
+}
+
+QString DemoLab::directory() const
+{
+    return d->dir.path();
+}
+
+QList<qint64> DemoLab::processIds() const
+{
+    QList<qint64> ids;
+    for (const auto& p : d->processes)
+        if (p->processId() > 0)
+            ids << p->processId();
+    return ids;
+}

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "mqttprofile.h"
+
+#include <functional>
+#include <memory>
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QString>
+
+/// The last will a client leaves with the broker.
+struct MqttWill
+{
+    QString topic; ///< empty: none
+    QByteArray message;
+    int qos = 0;
+    bool retained = false;
+};
+
+/// A broker connection for forwarding (the reference bridge): messages are handed to a callback
+/// on Paho's thread the moment they arrive, and publish() may be called from any thread.
+///
+/// MqttConnection is the GUI's connection (buffered, drained on a timer); a bridge cannot wait
+/// for a timer tick per message. Reconnects by itself; subscriptions are renewed on every
+/// (re)connect, and onConnected lets the owner republish what must be retained.
+class MqttLink
+{
+    Q_DECLARE_TR_FUNCTIONS(MqttLink)
+public:
+    using MessageHandler
+        = std::function<void(const QString& topic, const QByteArray& payload, qint64 receivedNs)>;
+
+    MqttLink(const MqttProfile& profile, const MqttWill& will = {});
+    ~MqttLink();
+    MqttLink(const MqttLink&) = delete;
+    MqttLink& operator=(const MqttLink&) = delete;
+
+    void setMessageHandler(MessageHandler handler);
+    void setConnectedHandler(std::function<void(bool reconnect)> handler);
+    void setLostHandler(std::function<void(const QString& why)> handler);
+    /// Topic filters (and their QoS) to hold on every connection.
+    void addSubscription(const QString& filter, int qos);
+
+    /// Connects, waiting up to `timeoutMs` for the broker's answer.
+    bool connect(int timeoutMs, QString* error);
+    bool publish(const QString& topic, const QByteArray& payload, int qos, bool retained);
+    /// Disconnects cleanly (the broker does not send the last will).
+    void disconnect();
+    bool isConnected() const;
+
+private:
+    struct Private;
+    std::shared_ptr<Private> d;
+};

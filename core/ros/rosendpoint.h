@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QString>
+
+/// A ROS message as bytes, with the type it travels as.
+struct RosRawMessage
+{
+    QByteArray bytes; ///< ROS-serialized
+    QString type; ///< e.g. "sensor_msgs/PointCloud2"
+    QString md5;
+    QString definition; ///< full, with dependencies
+};
+
+/// The ROS side of a bridge process: one named roscpp node that subscribes to any topic
+/// generically and publishes raw serialized messages of any type (as mqtt_client does with
+/// topic_tools::ShapeShifter).
+///
+/// Unlike RosNode (the GUI's shared, anonymous node), this one is made for a process of its own
+/// (`bridgescope bridge`): callbacks run on roscpp's spinner threads and must not block;
+/// publish() may be called from any thread.
+class RosEndpoint
+{
+    Q_DECLARE_TR_FUNCTIONS(RosEndpoint)
+public:
+    using Handler = std::function<void(const RosRawMessage& message, qint64 receivedNs)>;
+
+    RosEndpoint();
+    ~RosEndpoint();
+    RosEndpoint(const RosEndpoint&) = delete;
+    RosEndpoint& operator=(const RosEndpoint&) = delete;
+
+    /// Starts the node `name` (no SIGINT handler: the caller stops) once `masterUri` answers;
+    /// `keepWaiting` is asked every half second while the master is not there.
+    bool start(const QString& name, const QString& masterUri, const std::function<bool()>& keepWaiting,
+               QString* error);
+    void shutdown();
+    /// The node's full name, e.g. "/mqtt_client".
+    QString nodeName() const;
+    /// `name` resolved as roscpp does ("~/x" is private to the node, "//" collapses).
+    QString resolve(const QString& name) const;
+
+    bool subscribe(const QString& topic, int queueSize, Handler handler, QString* error);
+    /// Advertises `topic` with the given type; returns a publisher id, or -1 with `error`.
+    int advertise(const QString& topic, const QString& type, const QString& md5, const QString& definition,
+                  int queueSize, bool latched, QString* error);
+    bool publish(int publisher, const QByteArray& bytes);
+    int subscriberCount(int publisher) const;
+
+    static qint64 wallNs();
+
+private:
+    struct Private;
+    std::unique_ptr<Private> d;
+};

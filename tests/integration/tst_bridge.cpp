@@ -1,0 +1,423 @@
+// SPDX-License-Identifier: MIT
+// The reference bridge (`bridgescope bridge`) against a real mosquitto and rosmaster: mqtt_client
+// v2.2.1's wire format byte for byte (the captured fixtures), announced types and latency topics
+// on the receiving side, two bridges carrying std_msgs and sensor_msgs both ways, and the
+// suite's timestamp_topic_prefix stamps joining into complete samples.
+#include "bridge/referencebridge.h"
+#include "config/configreader.h"
+#include "fixtures.h"
+#include "latency/latencyengine.h"
+#include "latency/stampcodec.h"
+#include "mqtt/mqttclientwire.h"
+#include "mqtt/mqttlink.h"
+#include "ros/rosendpoint.h"
+#include "testservers.h"
+
+#include <mutex>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <ros/serialization.h>
+#include <sensor_msgs/PointCloud2.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Everything that arrives on one side, by topic, newest last.
+struct Inbox
+{
+    std::mutex mutex;
+    QHash<QString, QList<QByteArray>> messages;
+    QHash<QString, RosRawMessage> rosTypes;
+
+    void add(const QString& topic, const QByteArray& bytes)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        messages[topic].append(bytes);
+    }
+    QList<QByteArray> on(const QString& topic)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        return messages.value(topic);
+    }
+};
+
+template<typename M> RosRawMessage rosMessage(const M& message)
+{
+    RosRawMessage m;
+    m.type = QString::fromLatin1(ros::message_traits::DataType<M>::value());
+    m.md5 = QString::fromLatin1(ros::message_traits::MD5Sum<M>::value());
+    m.definition = QString::fromLatin1(ros::message_traits::Definition<M>::value());
+    m.bytes = QByteArray(qsizetype(ros::serialization::serializationLength(message)), Qt::Uninitialized);
+    ros::serialization::OStream out(reinterpret_cast<uint8_t*>(m.bytes.data()), uint32_t(m.bytes.size()));
+    ros::serialization::serialize(out, message);
+    return m;
+}
+
+RosRawMessage fixtureMessage(const QString& name)
+{
+    const std::optional<RosMsgTypeInfo> type
+        = MqttClientWire::decodeType(Fixtures::read(u"mqtt_client/wire/"_s + name + u".type.bin"_s));
+    RosRawMessage m;
+    if (!type)
+        return m;
+    m.type = type->name;
+    m.md5 = type->md5;
+    m.definition = type->definition;
+    m.bytes = Fixtures::read(u"mqtt_client/wire/"_s + name + u".payload.bin"_s);
+    if (type->stamped)
+        m.bytes = m.bytes.mid(8);
+    return m;
+}
+} // namespace
+
+class TestBridge : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    QTemporaryDir m_dir;
+    RosEndpoint m_ros; ///< the test's own node: publishes and listens on ROS
+    std::unique_ptr<MqttLink> m_mqtt; ///< the test's MQTT client, subscribed to everything
+    Inbox m_fromMqtt;
+    Inbox m_fromRos;
+
+    /// Starts `bridgescope bridge` on `config`; its log goes to our stderr unless `captureLog`.
+    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QString& name, bool captureLog = false)
+    {
+        const QString path = m_dir.filePath(name + u".yaml"_s);
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly))
+            f.write(config);
+        f.close();
+        auto p = std::make_unique<QProcess>();
+        p->setProcessEnvironment(m_servers.rosEnvironment());
+        if (!captureLog)
+            p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        p->start(QStringLiteral(BRIDGESCOPE_BINARY),
+                 {u"bridge"_s, path, u"--broker"_s, m_servers.brokerUrl(), u"--name"_s, name});
+        return p;
+    }
+
+    void listenRos(const QString& topic)
+    {
+        QString error;
+        Inbox* inbox = &m_fromRos;
+        QVERIFY2(m_ros.subscribe(
+                     topic, 100,
+                     [inbox, topic](const RosRawMessage& m, qint64) {
+                         std::lock_guard<std::mutex> lock(inbox->mutex);
+                         inbox->messages[topic].append(m.bytes);
+                         inbox->rosTypes[topic] = m;
+                     },
+                     &error),
+                 qPrintable(error));
+    }
+
+    int advertise(const QString& topic, const RosRawMessage& m)
+    {
+        QString error;
+        const int id = m_ros.advertise(topic, m.type, m.md5, m.definition, 10, false, &error);
+        if (id < 0)
+            qWarning("%s", qPrintable(error));
+        return id;
+    }
+
+    /// Publishes until `arrived` holds (connections take a moment), at most 15 s.
+    bool publishUntil(const std::function<void()>& publish, const std::function<bool()>& arrived)
+    {
+        for (int i = 0; i < 150; ++i) {
+            publish();
+            if (QTest::qWaitFor(arrived, 100))
+                return true;
+        }
+        return false;
+    }
+
+    static void stopBridge(QProcess& p)
+    {
+        p.terminate(); // SIGTERM: a clean stop
+        QVERIFY(p.waitForFinished(10000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 0);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
+        QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
+        QString error;
+        QVERIFY2(m_ros.start(u"bridge_test"_s, m_servers.rosMasterUri(), {}, &error), qPrintable(error));
+        m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        Inbox* inbox = &m_fromMqtt;
+        m_mqtt->setMessageHandler(
+            [inbox](const QString& t, const QByteArray& p, qint64) { inbox->add(t, p); });
+        m_mqtt->addSubscription(u"#"_s, 0);
+        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+    }
+
+    void cleanupTestCase()
+    {
+        m_mqtt.reset();
+        m_ros.shutdown();
+    }
+
+    // ROS -> MQTT: the bytes mqtt_client v2.2.1 put on the broker, from the same ROS messages.
+    void ros2mqttSpeaksMqttClientsWireFormat()
+    {
+        auto p = bridge(
+            "bridge:\n  ros2mqtt:\n"
+            "    - {ros_topic: /cap/string_stamped, mqtt_topic: cap/string_stamped, inject_timestamp: true}\n"
+            "    - {ros_topic: /cap/header, mqtt_topic: cap/header}\n"
+            "    - {ros_topic: /cap/pose, mqtt_topic: cap/pose}\n"
+            "    - {ros_topic: /cap/int_primitive, mqtt_topic: cap/int_primitive, primitive: true}\n",
+            u"wire_out"_s);
+        for (const QString& name : {u"string_stamped"_s, u"header"_s, u"pose"_s}) {
+            const RosRawMessage m = fixtureMessage(name);
+            QVERIFY(!m.type.isEmpty());
+            const int pub = advertise(u"/cap/"_s + name, m);
+            const QString topic = u"cap/"_s + name;
+            QVERIFY2(publishUntil([&] { m_ros.publish(pub, m.bytes); },
+                                  [&] { return !m_fromMqtt.on(topic).isEmpty(); }),
+                     qPrintable(name));
+            // The retained type announcement, byte for byte.
+            const QList<QByteArray> types = m_fromMqtt.on(MqttClientWire::typeTopicPrefix() + topic);
+            QVERIFY(!types.isEmpty());
+            QCOMPARE(types.last(), Fixtures::read(u"mqtt_client/wire/"_s + name + u".type.bin"_s));
+            const QByteArray payload = m_fromMqtt.on(topic).last();
+            const QByteArray expected = Fixtures::read(u"mqtt_client/wire/"_s + name + u".payload.bin"_s);
+            if (name == u"string_stamped"_s) {
+                // Eight bytes of send time (uint32 sec, uint32 nsec LE), then the message.
+                QCOMPARE(payload.size(), expected.size());
+                QCOMPARE(payload.mid(8), expected.mid(8));
+                const std::optional<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
+                QVERIFY(s);
+                QVERIFY(std::abs(s->stampNs - RosEndpoint::wallNs()) < 5'000'000'000LL);
+            } else {
+                QCOMPARE(payload, expected);
+            }
+        }
+        const RosRawMessage count = PrimitiveText::fromText("42");
+        QCOMPARE(count.type, u"std_msgs/Int32"_s);
+        const int pub = advertise(u"/cap/int_primitive"_s, count);
+        QVERIFY(publishUntil([&] { m_ros.publish(pub, count.bytes); },
+                             [&] { return !m_fromMqtt.on(u"cap/int_primitive"_s).isEmpty(); }));
+        QCOMPARE(m_fromMqtt.on(u"cap/int_primitive"_s).last(),
+                 Fixtures::read(u"mqtt_client/wire/int_primitive.payload.bin"_s));
+        QVERIFY(m_fromMqtt.on(MqttClientWire::typeTopicPrefix() + u"cap/int_primitive"_s).isEmpty());
+        stopBridge(*p);
+    }
+
+    // MQTT -> ROS: the announced type is what the ROS topic carries; stamped topics get latencies.
+    void mqtt2rosPublishesTheAnnouncedTypeAndLatencies()
+    {
+        auto p = bridge("bridge:\n  mqtt2ros:\n"
+                        "    - {mqtt_topic: in/pose, ros_topic: /back/pose}\n"
+                        "    - {mqtt_topic: in/string, ros_topic: /back/string}\n"
+                        "    - {mqtt_topic: in/count, ros_topic: /back/count, primitive: true}\n",
+                        u"wire_in"_s);
+        listenRos(u"/back/pose"_s);
+        listenRos(u"/back/string"_s);
+        listenRos(u"/back/count"_s);
+        listenRos(u"/wire_in/latencies/back/string"_s);
+        const RosRawMessage pose = fixtureMessage(u"pose"_s);
+        const RosRawMessage text = fixtureMessage(u"string_stamped"_s);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s,
+                        Fixtures::read(u"mqtt_client/wire/pose.type.bin"_s), 0, true);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/string"_s,
+                        Fixtures::read(u"mqtt_client/wire/string_stamped.type.bin"_s), 0, true);
+        QVERIFY(publishUntil(
+            [&] {
+                m_mqtt->publish(u"in/pose"_s, pose.bytes, 0, false);
+                m_mqtt->publish(u"in/string"_s, MqttClientWire::stamped(RosEndpoint::wallNs(), text.bytes), 0,
+                                false);
+                m_mqtt->publish(u"in/count"_s, "42", 0, false);
+            },
+            [&] {
+                return !m_fromRos.on(u"/back/pose"_s).isEmpty() && !m_fromRos.on(u"/back/string"_s).isEmpty()
+                    && !m_fromRos.on(u"/back/count"_s).isEmpty()
+                    && !m_fromRos.on(u"/wire_in/latencies/back/string"_s).isEmpty();
+            }));
+        QCOMPARE(m_fromRos.on(u"/back/pose"_s).last(), pose.bytes);
+        QCOMPARE(m_fromRos.on(u"/back/string"_s).last(), text.bytes); // the stamp is taken off
+        {
+            std::lock_guard<std::mutex> lock(m_fromRos.mutex);
+            QCOMPARE(m_fromRos.rosTypes[u"/back/pose"_s].type, u"geometry_msgs/PoseStamped"_s);
+            QCOMPARE(m_fromRos.rosTypes[u"/back/pose"_s].md5, pose.md5);
+            QCOMPARE(m_fromRos.rosTypes[u"/back/string"_s].type, u"std_msgs/String"_s);
+            QCOMPARE(m_fromRos.rosTypes[u"/back/count"_s].type, u"std_msgs/Int32"_s);
+            QCOMPARE(m_fromRos.rosTypes[u"/wire_in/latencies/back/string"_s].type, u"std_msgs/Float64"_s);
+        }
+        const std::optional<qint64> latency
+            = StampCodec::decodeFloat64Seconds(m_fromRos.on(u"/wire_in/latencies/back/string"_s).last());
+        QVERIFY(latency);
+        QVERIFY2(*latency >= 0 && *latency < 5'000'000'000LL, qPrintable(QString::number(*latency)));
+        stopBridge(*p);
+    }
+
+    // Two bridges through the broker, both ways, with the suite's stamps at every bridge.
+    void twoBridgesCarryBothWaysAndStampEveryHop()
+    {
+        const QByteArray vehicle = "bridge:\n  ros2mqtt:\n"
+                                   "    - ros_topic: /vehicle/cloud\n      mqtt_topic: lab/cloud\n"
+                                   "      inject_timestamp: true\n"
+                                   "      timestamp_topic_prefix: /ts/vehicle_bridge/cloud\n"
+                                   "  mqtt2ros:\n"
+                                   "    - {mqtt_topic: lab/reply, ros_topic: /vehicle/reply}\n";
+        const QByteArray cloud = "bridge:\n  mqtt2ros:\n"
+                                 "    - mqtt_topic: lab/cloud\n      ros_topic: /cloud/cloud\n"
+                                 "      timestamp_topic_prefix: /ts/cloud_bridge/cloud\n"
+                                 "  ros2mqtt:\n"
+                                 "    - {ros_topic: /cloud/reply, mqtt_topic: lab/reply}\n";
+        auto v = bridge(vehicle, u"vehicle_bridge"_s);
+        auto c = bridge(cloud, u"cloud_bridge"_s);
+        const QStringList stampTopics {u"/ts/vehicle_bridge/cloud/in"_s, u"/ts/vehicle_bridge/cloud/out"_s,
+                                       u"/ts/cloud_bridge/cloud/in"_s, u"/ts/cloud_bridge/cloud/out"_s};
+        LatencyEngine engine(Pipeline(stampTopics, 0));
+        std::mutex engineMutex;
+        for (const QString& t : stampTopics) {
+            QString error;
+            QVERIFY2(m_ros.subscribe(
+                         t, 1000,
+                         [&engine, &engineMutex, t](const RosRawMessage& m, qint64 received) {
+                             const std::optional<StampCodec::Decoded> d
+                                 = StampCodec::decodeTimeStamped(m.bytes);
+                             if (!d)
+                                 return;
+                             std::lock_guard<std::mutex> lock(engineMutex);
+                             engine.ingest(StampEvent {t, d->sampleNs, d->timeNs, received});
+                         },
+                         &error),
+                     qPrintable(error));
+        }
+        listenRos(u"/cloud/cloud"_s);
+        listenRos(u"/vehicle/reply"_s);
+        listenRos(u"/cloud_bridge/latencies/cloud/cloud"_s);
+
+        // sensor_msgs/PointCloud2 out, std_msgs/String back.
+        sensor_msgs::PointCloud2 scan;
+        scan.header.frame_id = "velodyne";
+        scan.height = 1;
+        scan.width = 1000;
+        scan.point_step = 16;
+        scan.row_step = 16000;
+        scan.data.assign(16000, 7);
+        const RosRawMessage reply = PrimitiveText::fromText("objects: 3");
+        const int scanPub = advertise(u"/vehicle/cloud"_s, rosMessage(scan));
+        const int replyPub = advertise(u"/cloud/reply"_s, reply);
+        quint32 seq = 0;
+        const auto sendScan = [&] {
+            scan.header.seq = ++seq;
+            scan.header.stamp = ros::Time(1'700'000'000 + seq, 1000);
+            m_ros.publish(scanPub, rosMessage(scan).bytes);
+        };
+        QVERIFY(publishUntil(
+            [&] {
+                sendScan();
+                m_ros.publish(replyPub, reply.bytes);
+            },
+            [&] {
+                return !m_fromRos.on(u"/cloud/cloud"_s).isEmpty()
+                    && !m_fromRos.on(u"/vehicle/reply"_s).isEmpty();
+            }));
+        // Now 30 more samples at 50 Hz, every hop stamped.
+        for (int i = 0; i < 30; ++i) {
+            sendScan();
+            QTest::qWait(20);
+        }
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                std::lock_guard<std::mutex> lock(engineMutex);
+                return engine.samples() >= 30;
+            },
+            10000));
+        {
+            std::lock_guard<std::mutex> lock(m_fromRos.mutex);
+            QCOMPARE(m_fromRos.rosTypes[u"/cloud/cloud"_s].type, u"sensor_msgs/PointCloud2"_s);
+            QCOMPARE(m_fromRos.rosTypes[u"/cloud/cloud"_s].md5,
+                     QString::fromLatin1(ros::message_traits::MD5Sum<sensor_msgs::PointCloud2>::value()));
+            QCOMPARE(m_fromRos.rosTypes[u"/vehicle/reply"_s].type, u"std_msgs/String"_s);
+        }
+        scan.header.seq = seq;
+        scan.header.stamp = ros::Time(1'700'000'000 + seq, 1000);
+        QCOMPARE(m_fromRos.on(u"/cloud/cloud"_s).last(), rosMessage(scan).bytes);
+        QCOMPARE(m_fromRos.on(u"/vehicle/reply"_s).last(), reply.bytes);
+        QVERIFY(!m_fromRos.on(u"/cloud_bridge/latencies/cloud/cloud"_s).isEmpty());
+        {
+            std::lock_guard<std::mutex> lock(engineMutex);
+            // Samples are keyed by the scan's header stamp at every hop; each stage is a real,
+            // positive and small duration on one machine.
+            const LatencyStats total = engine.series(engine.totalSeries()).stats();
+            QVERIFY(total.count >= 30);
+            QVERIFY2(total.min >= 0 && total.max < 2000, qPrintable(QString::number(total.max)));
+            QCOMPARE(engine.counters().dropped(), quint64(0));
+        }
+        stopBridge(*v);
+        stopBridge(*c);
+    }
+
+    // The config's client settings reach the broker: a bridge that dies leaves its last will.
+    void aDeadBridgeLeavesItsLastWill()
+    {
+        auto p = bridge("client:\n  id: will_bridge\n  last_will:\n    topic: lab/status/will_bridge\n"
+                        "    message: gone\n    retained: true\n"
+                        "bridge:\n  ros2mqtt:\n    - {ros_topic: /will/x, mqtt_topic: will/x}\n",
+                        u"will_bridge"_s, true);
+        QString log;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                log += QString::fromUtf8(p->readAllStandardError());
+                return log.contains(u"bridging 1 mapping"_s);
+            },
+            10000));
+        QVERIFY2(log.contains(u"connected to "_s), qPrintable(log));
+        QVERIFY(m_fromMqtt.on(u"lab/status/will_bridge"_s).isEmpty());
+        p->kill();
+        QVERIFY(p->waitForFinished(5000));
+        QVERIFY(
+            QTest::qWaitFor([&] { return !m_fromMqtt.on(u"lab/status/will_bridge"_s).isEmpty(); }, 10000));
+        QCOMPARE(m_fromMqtt.on(u"lab/status/will_bridge"_s).last(), QByteArray("gone"));
+    }
+
+    // Every real config loads (the suite's with its roslaunch argument given), in any layout.
+    void loadsEveryFixtureConfig()
+    {
+        for (const QString& file : Fixtures::bridgeConfigs()) {
+            ReferenceBridge b([](const QString&) {});
+            ReferenceBridge::Options options;
+            options.args.insert(u"qos"_s, u"1"_s);
+            QString error;
+            const QByteArray yaml = Fixtures::read(file);
+            if (ConfigReader::read(yaml).config.mappings.isEmpty()) { // settings only: nothing to run
+                QVERIFY(!b.load(yaml, options, &error));
+                QVERIFY2(error.contains(u"no mapping"_s), qPrintable(error));
+                continue;
+            }
+            QVERIFY2(b.load(yaml, options, &error), qPrintable(file + u": "_s + error));
+            QVERIFY(b.mappingCount() > 0);
+        }
+    }
+
+    void badConfigsAreRefusedWithAMessage()
+    {
+        QProcess p;
+        const QString path = m_dir.filePath(u"qos.yaml"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: a, advanced: {mqtt: {qos: $(arg "
+                "qos)}}}\n");
+        f.close();
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                {u"bridge"_s, path, u"--broker"_s, m_servers.brokerUrl()});
+        QVERIFY(p.waitForFinished(10000));
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY(QString::fromUtf8(p.readAllStandardError()).contains(u"--arg qos=VALUE"_s));
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"bridge"_s, m_dir.filePath(u"missing.yaml"_s)});
+        QVERIFY(p.waitForFinished(10000));
+        QCOMPARE(p.exitCode(), 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBridge)
+#include "tst_bridge.moc"
