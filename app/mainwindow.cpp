@@ -10,6 +10,7 @@
 #include "discoverpage.h"
 #include "mappage.h"
 #include "measurepage.h"
+#include "probedialog.h"
 #include "problemspanel.h"
 #include "reportspage.h"
 #include "runbar.h"
@@ -132,6 +133,20 @@ void MainWindow::createMenus()
         QAction* a = view->addAction(m_pages->tabText(i), this, [this, i] { m_pages->setCurrentIndex(i); });
         a->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + i)));
     }
+
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    QAction* probe = tools->addAction(tr("Link &Probe…"), this, [this] {
+        auto* dialog = findChild<ProbeDialog*>();
+        if (!dialog) {
+            dialog = new ProbeDialog(this);
+            if (m_session->mqtt()->state() != MqttConnection::State::Disconnected)
+                dialog->setProfile(m_session->mqtt()->profile()); // the Discover page's broker
+        }
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
+    probe->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About Bridgescope"), this, [this] {

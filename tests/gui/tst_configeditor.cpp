@@ -14,6 +14,7 @@
 #include "optionform.h"
 #include "problemspanel.h"
 #include "settingsinspector.h"
+#include "viewhelpers.h"
 #include "yamlpreview.h"
 
 #include <QAbstractItemModelTester>
@@ -49,18 +50,7 @@ QStringList commentLines(const QByteArray& text)
     return out;
 }
 
-QAction* menuAction(QMainWindow& w, const QString& menu, const QString& text)
-{
-    for (QAction* top : w.menuBar()->actions()) {
-        if (top->text().remove(u'&') != menu)
-            continue;
-        for (QAction* a : top->menu()->actions()) {
-            if (a->text().remove(u'&') == text)
-                return a;
-        }
-    }
-    return nullptr;
-}
+using ViewHelpers::menuAction;
 
 // Replaces a line edit's text the way a user does: select all, type, press Enter.
 void typeInto(QLineEdit* edit, const QString& text)

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// The Link Probe dialog against a real mosquitto: a run counted, summarised and plotted as it goes,
+// stopping a long run, an unreachable broker reported in the dialog, and the way in from the menu.
+#include "discoverpage.h"
+#include "ecdfchart.h"
+#include "mainwindow.h"
+#include "probedialog.h"
+#include "testservers.h"
+#include "viewhelpers.h"
+
+#include <cmath>
+#include <QApplication>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+using ViewHelpers::menuAction;
+
+QString text(const ProbeDialog& w, ProbeDialog::Figure f)
+{
+    return w.figure(f)->text();
+}
+} // namespace
+
+class TestProbeDialog : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+
+    void configure(ProbeDialog& w, const QString& url, int count, double rateHz)
+    {
+        w.brokerEdit()->setText(url);
+        w.countBox()->setValue(count);
+        w.rateBox()->setValue(rateHz);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
+    }
+
+    void runShowsEveryRoundTripWithStatsAndEcdf()
+    {
+        ProbeDialog w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        configure(w, m_servers.brokerUrl(), 50, 100);
+        QSignalSpy finished(&w, &ProbeDialog::probeFinished);
+        QTest::mouseClick(w.startButton(), Qt::LeftButton);
+        QVERIFY(w.isRunning());
+        QVERIFY(!w.startButton()->isEnabled());
+        QVERIFY(w.stopButton()->isEnabled());
+        QVERIFY(!w.brokerEdit()->isEnabled());
+
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+        const auto report = finished.first().first().value<LinkProbeReport>();
+        QVERIFY2(report.error.isEmpty(), qPrintable(report.error));
+        QVERIFY(!w.isRunning());
+        QVERIFY(w.startButton()->isEnabled());
+        QVERIFY(!w.stopButton()->isEnabled());
+        QVERIFY(w.errorLabel()->isHidden());
+        QCOMPARE(text(w, ProbeDialog::Sent), u"50"_s);
+        QCOMPARE(text(w, ProbeDialog::Received), u"50"_s);
+        QCOMPARE(text(w, ProbeDialog::Lost), u"0 (0.0 %)"_s);
+        QCOMPARE(text(w, ProbeDialog::OutOfOrder), u"0"_s);
+
+        // The statistics are the step's, as the command prints them.
+        bool ok = false;
+        const double median = w.locale().toDouble(text(w, ProbeDialog::Median), &ok);
+        QVERIFY2(ok && median > 0, qPrintable(text(w, ProbeDialog::Median)));
+        QCOMPARE(median, std::round(report.steps.front().rtt.median * 1000) / 1000);
+        for (ProbeDialog::Figure f :
+             {ProbeDialog::Mean, ProbeDialog::Std, ProbeDialog::Min, ProbeDialog::Max, ProbeDialog::P99}) {
+            w.locale().toDouble(text(w, f), &ok);
+            QVERIFY2(ok, qPrintable(text(w, f)));
+        }
+        QVERIFY(w.locale().toDouble(text(w, ProbeDialog::Min)) <= median);
+        QVERIFY(w.locale().toDouble(text(w, ProbeDialog::Max)) >= median);
+
+        // One ECDF, of all 50 round trips.
+        QCOMPARE(w.chart()->series().size(), 1);
+        const QString series = w.chart()->series().first();
+        QVERIFY(w.chart()->pointCount(series) > 0);
+        const auto [lo, hi] = w.chart()->range(series);
+        QVERIFY(lo <= report.steps.front().rtt.min && hi >= report.steps.front().rtt.max);
+        QVERIFY(!w.stepsView()->isVisible()); // no sweep, no table
+
+        QTest::qWait(50); // the legend lays its markers out on the next event loop pass
+        if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty())
+            QVERIFY(w.grab().save(dir + u"/probe.png"_s));
+    }
+
+    void longRunUpdatesLiveAndStops()
+    {
+        ProbeDialog w;
+        w.show();
+        configure(w, m_servers.brokerUrl(), 100'000, 200);
+        QSignalSpy finished(&w, &ProbeDialog::probeFinished);
+        w.startButton()->click();
+        // Live: counts and the curve grow while the probe still sends.
+        QTRY_VERIFY_WITH_TIMEOUT(w.locale().toInt(text(w, ProbeDialog::Received)) >= 50, 10000);
+        QVERIFY(w.isRunning());
+        QVERIFY(!w.chart()->series().isEmpty());
+        QTRY_VERIFY(w.chart()->pointCount(w.chart()->series().first()) > 0);
+        bool ok = false;
+        QVERIFY(w.locale().toDouble(text(w, ProbeDialog::Median), &ok) > 0 && ok);
+
+        w.stopButton()->click();
+        QVERIFY(!w.stopButton()->isEnabled());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto report = finished.first().first().value<LinkProbeReport>();
+        QVERIFY(report.interrupted);
+        QVERIFY(report.steps.front().sent < 100'000);
+        QCOMPARE(text(w, ProbeDialog::Sent), w.locale().toString(report.steps.front().sent));
+        QCOMPARE(text(w, ProbeDialog::Received), w.locale().toString(report.steps.front().received));
+        QVERIFY(w.startButton()->isEnabled());
+    }
+
+    void sweepListsItsSteps()
+    {
+        ProbeDialog w;
+        w.show();
+        configure(w, m_servers.brokerUrl(), 100, 100);
+        w.sweepBox()->setChecked(true);
+        QVERIFY(!w.countBox()->isEnabled());
+        QVERIFY(w.stepsView()->isVisible());
+        QSignalSpy finished(&w, &ProbeDialog::probeFinished);
+        w.startButton()->click();
+        // Two steps are enough to see the table grow; then stop.
+        QTRY_VERIFY_WITH_TIMEOUT(w.stepsView()->rowCount() >= 2, 20000);
+        w.stopButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto report = finished.first().first().value<LinkProbeReport>();
+        QCOMPARE(w.stepsView()->rowCount(), int(report.steps.size()));
+        QCOMPARE(w.stepsView()->item(0, 0)->text(), w.locale().toString(100.0, 'f', 1));
+        QVERIFY(report.best >= 0);
+        QVERIFY2(w.sweepResult()->text().contains(w.locale().toString(report.maxRateHz(), 'f', 1)),
+                 qPrintable(w.sweepResult()->text()));
+        QVERIFY(!w.chart()->series().isEmpty());
+    }
+
+    void unreachableBrokerIsReportedInTheDialog()
+    {
+        ProbeDialog w;
+        w.show();
+        const QString url = u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort());
+        configure(w, url, 50, 100);
+        QSignalSpy finished(&w, &ProbeDialog::probeFinished);
+        w.startButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+        QVERIFY(w.startButton()->isEnabled());
+        QVERIFY(!w.stopButton()->isEnabled());
+        QVERIFY(w.brokerEdit()->isEnabled());
+        QVERIFY(!w.errorLabel()->isHidden());
+        QVERIFY2(w.errorLabel()->text().contains(url), qPrintable(w.errorLabel()->text()));
+        QVERIFY(!QApplication::activeModalWidget()); // said in the dialog, not in a message box
+        QCOMPARE(text(w, ProbeDialog::Received), u"0"_s);
+
+        // The next run clears the error.
+        configure(w, m_servers.brokerUrl(), 5, 50);
+        w.startButton()->click();
+        QVERIFY(w.errorLabel()->isHidden());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 20000);
+        QCOMPARE(text(w, ProbeDialog::Received), u"5"_s);
+    }
+
+    void toolsMenuOpensItOnTheDiscoverPagesBroker()
+    {
+        MainWindow w;
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QAction* action = menuAction(w, u"Tools"_s, u"Link Probe…"_s);
+        QVERIFY(action);
+        const QKeySequence shortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_P);
+        QCOMPARE(action->shortcut(), shortcut);
+        int owners = 0;
+        for (const QAction* a : w.findChildren<QAction*>())
+            owners += a->shortcuts().contains(shortcut) ? 1 : 0;
+        QCOMPARE(owners, 1);
+
+        action->trigger();
+        auto* dialog = w.findChild<ProbeDialog*>();
+        QVERIFY(dialog);
+        QVERIFY(dialog->isVisible());
+        QCOMPARE(dialog->brokerEdit()->text(), m_servers.brokerUrl());
+        dialog->close();
+        action->trigger();
+        QCOMPARE(w.findChildren<ProbeDialog*>().size(), 1); // the same dialog, with its last result
+        QVERIFY(dialog->isVisible());
+    }
+};
+
+QTEST_MAIN(TestProbeDialog)
+#include "tst_probedialog.moc"
