@@ -25,6 +25,74 @@
     </message>
 </context>
 <context>
+    <name>BridgeCommand</name>
+    <message>
+        <source>Broker URL; overrides the config's broker host and port.</source>
+        <translation>Broker-URL; ersetzt Rechner und Port des Brokers aus der Konfiguration.</translation>
+    </message>
+    <message>
+        <source>ROS master URI (default $ROS_MASTER_URI).</source>
+        <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
+    </message>
+    <message>
+        <source>ROS node name (default mqtt_client).</source>
+        <translation>ROS-Knotenname (Vorgabe mqtt_client).</translation>
+    </message>
+    <message>
+        <source>Value for $(arg NAME) in the config; repeatable.</source>
+        <translation>Wert für $(arg NAME) in der Konfiguration; mehrfach möglich.</translation>
+    </message>
+    <message>
+        <source>Shift this bridge's clock (stamps, latencies) by MS milliseconds, as if it ran on a host whose clock is off.</source>
+        <translation>Die Uhr dieser Bridge (Zeitstempel, Latenzen) um MS Millisekunden verschieben, als liefe sie auf einem Rechner mit falsch gehender Uhr.</translation>
+    </message>
+    <message>
+        <source>Publish the type announcement with every message, exactly as mqtt_client v2.2.1 does (small messages then wait up to 40 ms for TCP's delayed ACK); by default once per type and connection.</source>
+        <translation>Die Typankündigung mit jeder Nachricht veröffentlichen, genau wie mqtt_client v2.2.1 (kleine Nachrichten warten dann bis zu 40 ms auf das verzögerte ACK von TCP); Vorgabe: einmal je Typ und Verbindung.</translation>
+    </message>
+    <message>
+        <source>mqtt_client config (ROS 1 or ROS 2 layout).</source>
+        <translation>mqtt_client-Konfiguration (ROS-1- oder ROS-2-Layout).</translation>
+    </message>
+    <message>
+        <source>Runs an mqtt_client config as a reference bridge between the ROS master and the broker, with mqtt_client's wire protocol (type announcements, injected stamps, latency topics, primitives) and the benchmarking suite's timestamp_topic_prefix stamps. Stops cleanly on Ctrl+C or SIGTERM.
+Exit status: 0 stopped, 1 broker or master failed, 2 bad options or config.</source>
+        <translation>Führt eine mqtt_client-Konfiguration als Referenz-Bridge zwischen ROS-Master und Broker aus, mit dem Übertragungsprotokoll von mqtt_client (Typankündigungen, eingefügte Zeitstempel, Latenz-Topics, Primitivwerte) und den timestamp_topic_prefix-Zeitstempeln der Benchmarking-Suite. Beendet sich sauber bei Strg+C oder SIGTERM.
+Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen oder Konfiguration.</translation>
+    </message>
+    <message>
+        <source>bridge takes one config file; see bridgescope bridge --help</source>
+        <translation>bridge erwartet genau eine Konfigurationsdatei; siehe bridgescope bridge --help</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>--clock-offset-ms takes a number of milliseconds</source>
+        <translation>--clock-offset-ms erwartet eine Anzahl Millisekunden</translation>
+    </message>
+    <message>
+        <source>--arg takes NAME=VALUE, not '%1'</source>
+        <translation>--arg erwartet NAME=VALUE, nicht '%1'</translation>
+    </message>
+    <message>
+        <source>bridge failed: %1</source>
+        <translation>Bridge fehlgeschlagen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>bridging %n mapping(s); Ctrl+C stops</source>
+        <translation>
+            <numerusform>übertrage %n Zuordnung; Strg+C beendet</numerusform>
+            <numerusform>übertrage %n Zuordnungen; Strg+C beendet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stopped: %1 messages to MQTT, %2 to ROS, %3 failed</source>
+        <translation>beendet: %1 Nachrichten nach MQTT, %2 nach ROS, %3 fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
     <name>BridgedTopicsProxy</name>
     <message>
         <source>Bridged: %1</source>
@@ -782,6 +850,146 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
+    <name>DemoCommand</name>
+    <message>
+        <source>Keep the recording as this run file.</source>
+        <translation>Die Aufzeichnung als diese Laufdatei behalten.</translation>
+    </message>
+    <message>
+        <source>Summary at the end: md (default) or json.</source>
+        <translation>Zusammenfassung am Ende: md (Vorgabe) oder json.</translation>
+    </message>
+    <message>
+        <source>Point cloud size in bytes (default 180000).</source>
+        <translation>Größe der Punktwolke in Bytes (Vorgabe 180000).</translation>
+    </message>
+    <message>
+        <source>Runs the demo lab without a window: a private mosquitto and rosmaster, a vehicle and a cloud reference bridge, a 0.18 MB point cloud at 10 Hz, a 40 ms object detection in the cloud whose clock is 35 ms ahead, and stamps at every component; records every stamp and prints the latency report at the end. Everything it started stops with it.
+Exit status: 0 samples measured, 1 the lab failed or measured nothing, 2 bad options.</source>
+        <translation>Führt das Demo-Labor ohne Fenster aus: eigene Instanzen von mosquitto und rosmaster, je eine Referenz-Bridge im Fahrzeug und in der Cloud, eine Punktwolke von 0,18 MB mit 10 Hz, eine Objekterkennung von 40 ms in der Cloud, deren Uhr 35 ms vorgeht, und Zeitstempel an jeder Komponente; zeichnet jeden Zeitstempel auf und gibt am Ende den Latenzbericht aus. Alles, was es gestartet hat, endet mit ihm.
+Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>--seconds takes a number of seconds</source>
+        <translation>--seconds erwartet eine Anzahl Sekunden</translation>
+    </message>
+    <message>
+        <source>--format takes md or json</source>
+        <translation>--format erwartet md oder json</translation>
+    </message>
+    <message>
+        <source>--size takes a number of bytes (at least 16)</source>
+        <translation>--size erwartet eine Anzahl Bytes (mindestens 16)</translation>
+    </message>
+    <message>
+        <source>%1 exists already; a run is never overwritten</source>
+        <translation>%1 existiert bereits; ein Lauf wird nie überschrieben</translation>
+    </message>
+    <message>
+        <source>starting the demo lab…</source>
+        <translation>starte das Demo-Labor …</translation>
+    </message>
+    <message>
+        <source>the demo lab did not start: %1</source>
+        <translation>das Demo-Labor ist nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <source>broker %1, ROS master %2, configs in %3</source>
+        <translation>Broker %1, ROS-Master %2, Konfigurationen in %3</translation>
+    </message>
+    <message>
+        <source>demo lab</source>
+        <translation>Demo-Labor</translation>
+    </message>
+    <message>
+        <source>bridgescope demo: %1 bytes at %2 Hz</source>
+        <translation>bridgescope demo: %1 Bytes mit %2 Hz</translation>
+    </message>
+    <message>
+        <source>the demo lab failed: %1</source>
+        <translation>das Demo-Labor ist ausgefallen: %1</translation>
+    </message>
+    <message>
+        <source>%1 s: %2 complete samples, total latency mean %3 ms</source>
+        <translation>%1 s: %2 vollständige Proben, Gesamtlatenz im Mittel %3 ms</translation>
+    </message>
+    <message>
+        <source>recording failed: %1</source>
+        <translation>Aufzeichnung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>the run is in %1</source>
+        <translation>der Lauf liegt in %1</translation>
+    </message>
+    <message>
+        <source>ROS master URI (default $ROS_MASTER_URI).</source>
+        <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
+    </message>
+    <message>
+        <source>vehicle: point cloud size in bytes.</source>
+        <translation>vehicle: Größe der Punktwolke in Bytes.</translation>
+    </message>
+    <message>
+        <source>cloud: mean detection time.</source>
+        <translation>cloud: mittlere Erkennungsdauer.</translation>
+    </message>
+    <message>
+        <source>This host's clock error.</source>
+        <translation>Abweichung der Uhr dieses Rechners.</translation>
+    </message>
+    <message>
+        <source>vehicle or cloud.</source>
+        <translation>vehicle oder cloud.</translation>
+    </message>
+    <message>
+        <source>One of the demo lab's ROS nodes; the lab starts them.</source>
+        <translation>Einer der ROS-Knoten des Demo-Labors; das Labor startet sie.</translation>
+    </message>
+    <message>
+        <source>demo-node takes vehicle or cloud</source>
+        <translation>demo-node erwartet vehicle oder cloud</translation>
+    </message>
+    <message>
+        <source>demo-node %1: %2</source>
+        <translation>demo-node %1: %2</translation>
+    </message>
+    <message>
+        <source>Run for N seconds (default: until Ctrl+C).</source>
+        <translation>N Sekunden laufen (Vorgabe: bis Strg+C).</translation>
+    </message>
+    <message>
+        <source>vehicle: point clouds per second.</source>
+        <translation>vehicle: Punktwolken je Sekunde.</translation>
+    </message>
+</context>
+<context>
+    <name>DemoLab</name>
+    <message>
+        <source>cannot make a folder for the demo: %1</source>
+        <translation>Ordner für die Demo lässt sich nicht anlegen: %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 lässt sich nicht schreiben</translation>
+    </message>
+    <message>
+        <source>the demo needs mosquitto and rosmaster (scripts/setup.sh installs them)</source>
+        <translation>die Demo braucht mosquitto und rosmaster (scripts/setup.sh installiert sie)</translation>
+    </message>
+    <message>
+        <source>%1 did not start: %2</source>
+        <translation>%1 ist nicht gestartet: %2</translation>
+    </message>
+    <message>
+        <source>cannot start %1: %2</source>
+        <translation>%1 lässt sich nicht starten: %2</translation>
+    </message>
+    <message>
+        <source>%1 stopped: %2</source>
+        <translation>%1 hat sich beendet: %2</translation>
+    </message>
+</context>
+<context>
     <name>DetailPane</name>
     <message>
         <source>%1 bytes: %2%3</source>
@@ -1258,6 +1466,42 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <source>Open on this page: discover, map, measure or reports.</source>
         <translation>Auf dieser Seite öffnen: discover, map, measure oder reports.</translation>
     </message>
+    <message>
+        <source>start the embedded demo lab and show it</source>
+        <translation>das eingebaute Demo-Labor starten und anzeigen</translation>
+    </message>
+    <message>
+        <source>run a config as a reference bridge</source>
+        <translation>eine Konfiguration als Referenz-Bridge ausführen</translation>
+    </message>
+    <message>
+        <source>round trips and throughput through the broker</source>
+        <translation>Umlaufzeiten und Durchsatz über den Broker</translation>
+    </message>
+    <message>
+        <source>the demo lab without a window</source>
+        <translation>das Demo-Labor ohne Fenster</translation>
+    </message>
+    <message>
+        <source>Start the embedded demo lab and show it.</source>
+        <translation>Das eingebaute Demo-Labor starten und anzeigen.</translation>
+    </message>
+    <message>
+        <source>starting the demo lab…</source>
+        <translation>starte das Demo-Labor …</translation>
+    </message>
+    <message>
+        <source>the demo lab did not start: %1</source>
+        <translation>das Demo-Labor ist nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <source>Bridgescope — demo lab</source>
+        <translation>Bridgescope — Demo-Labor</translation>
+    </message>
+    <message>
+        <source>The demo lab stopped: %1</source>
+        <translation>Das Demo-Labor hat sich beendet: %1</translation>
+    </message>
 </context>
 <context>
     <name>LatencyEngine</name>
@@ -1343,6 +1587,93 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Count</source>
         <translation>Anzahl</translation>
+    </message>
+</context>
+<context>
+    <name>LinkProbe</name>
+    <message>
+        <source>no broker answers at %1</source>
+        <translation>unter %1 antwortet kein Broker</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>keine Verbindung zu %1: %2</translation>
+    </message>
+    <message>
+        <source>the connection to the broker was lost</source>
+        <translation>die Verbindung zum Broker ging verloren</translation>
+    </message>
+    <message>
+        <source>the connection to the broker was lost: %1</source>
+        <translation>die Verbindung zum Broker ging verloren: %1</translation>
+    </message>
+    <message>
+        <source>no answer from the broker at %1</source>
+        <translation>keine Antwort vom Broker unter %1</translation>
+    </message>
+    <message>
+        <source>the broker at %1 does not confirm the subscription to %2</source>
+        <translation>der Broker unter %1 bestätigt das Abonnement von %2 nicht</translation>
+    </message>
+    <message>
+        <source>the broker at %1 refuses the subscription to %2: %3</source>
+        <translation>der Broker unter %1 lehnt das Abonnement von %2 ab: %3</translation>
+    </message>
+    <message>
+        <source>cannot publish on %1: %2</source>
+        <translation>auf %1 lässt sich nicht veröffentlichen: %2</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>nothing came back at %1 Hz</source>
+        <translation>bei %1 Hz kam nichts zurück</translation>
+    </message>
+    <message>
+        <source>%1 % lost at %2 Hz</source>
+        <translation>%1 % verloren bei %2 Hz</translation>
+    </message>
+    <message>
+        <source>median round trip %1 ms at %2 Hz (limit %3 ms)</source>
+        <translation>Median der Umlaufzeit %1 ms bei %2 Hz (Grenze %3 ms)</translation>
+    </message>
+    <message>
+        <source>the sender reached only %1 of %2 Hz</source>
+        <translation>der Sender erreichte nur %1 von %2 Hz</translation>
+    </message>
+    <message>
+        <source>reached the maximum rate of %1 Hz</source>
+        <translation>Höchstrate von %1 Hz erreicht</translation>
+    </message>
+    <message>
+        <source>reached the time limit of %1 s</source>
+        <translation>Zeitgrenze von %1 s erreicht</translation>
+    </message>
+    <message>
+        <source>--size must be between %1 and %2 bytes</source>
+        <translation>--size muss zwischen %1 und %2 Bytes liegen</translation>
+    </message>
+    <message>
+        <source>--qos must be 0, 1 or 2</source>
+        <translation>--qos muss 0, 1 oder 2 sein</translation>
+    </message>
+    <message>
+        <source>--count must be between 1 and 100000000</source>
+        <translation>--count muss zwischen 1 und 100000000 liegen</translation>
+    </message>
+    <message>
+        <source>--max-rate must be at least --rate and at most 1000000 Hz</source>
+        <translation>--max-rate muss mindestens --rate und höchstens 1000000 Hz sein</translation>
+    </message>
+    <message>
+        <source>the sweep needs positive durations and a factor above 1</source>
+        <translation>der Sweep braucht positive Dauern und einen Faktor über 1</translation>
+    </message>
+    <message>
+        <source>--rate must be above 0 and at most 1000000 Hz</source>
+        <translation>--rate muss über 0 und höchstens 1000000 Hz sein</translation>
     </message>
 </context>
 <context>
@@ -1454,6 +1785,14 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Reports</source>
         <translation>Berichte</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Extras</translation>
+    </message>
+    <message>
+        <source>Link &amp;Probe…</source>
+        <translation>&amp;Streckentest …</translation>
     </message>
 </context>
 <context>
@@ -2025,6 +2364,17 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
+    <name>MqttLink</name>
+    <message>
+        <source>no answer from %1 within %2 s</source>
+        <translation>keine Antwort von %1 binnen %2 s</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>keine Verbindung zu %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>MqttProfile</name>
     <message>
         <source>'%1' is not a broker URL; write it as tcp://host:1883 or ssl://host:8883.</source>
@@ -2565,6 +2915,484 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
     </message>
 </context>
 <context>
+    <name>ProbeCommand</name>
+    <message>
+        <source>sent</source>
+        <translation>gesendet</translation>
+    </message>
+    <message>
+        <source>received</source>
+        <translation>empfangen</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>verloren</translation>
+    </message>
+    <message>
+        <source>%1 (%2 %)</source>
+        <translation>%1 (%2 %)</translation>
+    </message>
+    <message>
+        <source>out of order</source>
+        <translation>außer der Reihe</translation>
+    </message>
+    <message>
+        <source>duplicates</source>
+        <translation>Duplikate</translation>
+    </message>
+    <message>
+        <source>send rate</source>
+        <translation>Senderate</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Round trip (ms)</source>
+        <translation>Umlaufzeit (ms)</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>std</source>
+        <translation>Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>Min.</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>rate Hz</source>
+        <translation>Soll Hz</translation>
+    </message>
+    <message>
+        <source>sent Hz</source>
+        <translation>Ist Hz</translation>
+    </message>
+    <message>
+        <source>back</source>
+        <translation>zurück</translation>
+    </message>
+    <message>
+        <source>lost %</source>
+        <translation>Verl. %</translation>
+    </message>
+    <message>
+        <source>median ms</source>
+        <translation>Median ms</translation>
+    </message>
+    <message>
+        <source>p99 ms</source>
+        <translation>p99 ms</translation>
+    </message>
+    <message>
+        <source>MB/s</source>
+        <translation>MB/s</translation>
+    </message>
+    <message>
+        <source>via an echo client on %1</source>
+        <translation>über einen Echo-Client auf %1</translation>
+    </message>
+    <message>
+        <source>back on %1</source>
+        <translation>zurück auf %1</translation>
+    </message>
+    <message>
+        <source>Link probe of %1: %2 B, QoS %3, %4 Hz, %5</source>
+        <translation>Streckentest zu %1: %2 B, QoS %3, %4 Hz, %5</translation>
+    </message>
+    <message>
+        <source>Link sweep of %1: %2 B, QoS %3, %4</source>
+        <translation>Strecken-Sweep zu %1: %2 B, QoS %3, %4</translation>
+    </message>
+    <message>
+        <source>Highest sustainable rate: %1 Hz, %2 MB/s (stopped: %3)</source>
+        <translation>Höchste stabile Rate: %1 Hz, %2 MB/s (beendet: %3)</translation>
+    </message>
+    <message>
+        <source>No sustainable rate (stopped: %1)</source>
+        <translation>Keine stabile Rate (beendet: %1)</translation>
+    </message>
+    <message>
+        <source>At that rate:</source>
+        <translation>Bei dieser Rate:</translation>
+    </message>
+    <message>
+        <source>Broker URL (default tcp://localhost:1883).</source>
+        <translation>Broker-URL (Vorgabe tcp://localhost:1883).</translation>
+    </message>
+    <message>
+        <source>Payload size in bytes, at least 24 (default 1024).</source>
+        <translation>Nutzdatengröße in Bytes, mindestens 24 (Vorgabe 1024).</translation>
+    </message>
+    <message>
+        <source>Messages per second (default 10); the first rate of a sweep.</source>
+        <translation>Nachrichten je Sekunde (Vorgabe 10); die erste Rate eines Sweeps.</translation>
+    </message>
+    <message>
+        <source>QoS of the probe messages: 0, 1 or 2 (default 0).</source>
+        <translation>QoS der Testnachrichten: 0, 1 oder 2 (Vorgabe 0).</translation>
+    </message>
+    <message>
+        <source>Messages to send (default 100).</source>
+        <translation>Zu sendende Nachrichten (Vorgabe 100).</translation>
+    </message>
+    <message>
+        <source>Seconds to wait for stragglers after the last send (default 2).</source>
+        <translation>Sekunden, die nach dem letzten Senden auf Nachzügler gewartet wird (Vorgabe 2).</translation>
+    </message>
+    <message>
+        <source>Raise the rate by 1.5x per step (about a second each) until more than 1 % is lost, the median round trip exceeds 10x the first step's (at least 10 ms) or 1 s, or the sender falls behind; report the highest sustainable rate and its throughput.</source>
+        <translation>Die Rate je Schritt (jeweils etwa eine Sekunde) um das 1,5-Fache erhöhen, bis mehr als 1 % verloren geht, der Median der Umlaufzeit das Zehnfache des ersten Schritts (mindestens 10 ms) oder 1 s übersteigt oder der Sender nicht mehr nachkommt; die höchste stabile Rate und ihren Durchsatz melden.</translation>
+    </message>
+    <message>
+        <source>Sweep: the highest rate to try (default 5000).</source>
+        <translation>Sweep: höchste zu testende Rate (Vorgabe 5000).</translation>
+    </message>
+    <message>
+        <source>Print one JSON document.</source>
+        <translation>Ein JSON-Dokument ausgeben.</translation>
+    </message>
+    <message>
+        <source>Echo client: send every payload from bridgescope/probe/+/ping back unchanged on .../pong, until Ctrl+C.</source>
+        <translation>Echo-Client: jede Nutzlast von bridgescope/probe/+/ping unverändert auf .../pong zurücksenden, bis Strg+C.</translation>
+    </message>
+    <message>
+        <source>Listen for the echo client's copies (.../pong) instead of the broker's own.</source>
+        <translation>Auf die Kopien des Echo-Clients (.../pong) hören statt auf die des Brokers.</translation>
+    </message>
+    <message>
+        <source>Measures the link to a broker: publishes numbered, timed messages and times their round trip, back from the broker itself or through an echo client (probe --echo) elsewhere. Reports sent, received, lost, out of order, duplicates and the round trip statistics.
+Exit status: 0 measured, 1 the broker is unreachable or nothing came back, 2 bad options.</source>
+        <translation>Misst die Strecke zu einem Broker: veröffentlicht nummerierte Nachrichten mit Sendezeit und misst ihre Umlaufzeit, zurück vom Broker selbst oder über einen Echo-Client (probe --echo) an anderer Stelle. Meldet gesendete, empfangene, verlorene, vertauschte und doppelte Nachrichten sowie die Statistik der Umlaufzeit.
+Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>probe takes no arguments, only options; see bridgescope probe --help</source>
+        <translation>probe erwartet keine Argumente, nur Optionen; siehe bridgescope probe --help</translation>
+    </message>
+    <message>
+        <source>--size takes a number of bytes</source>
+        <translation>--size erwartet eine Anzahl Bytes</translation>
+    </message>
+    <message>
+        <source>--qos must be 0, 1 or 2</source>
+        <translation>--qos muss 0, 1 oder 2 sein</translation>
+    </message>
+    <message>
+        <source>--count takes a number of messages</source>
+        <translation>--count erwartet eine Anzahl Nachrichten</translation>
+    </message>
+    <message>
+        <source>--rate, --max-rate, --max-seconds and --wait take numbers</source>
+        <translation>--rate, --max-rate, --max-seconds und --wait erwarten Zahlen</translation>
+    </message>
+    <message>
+        <source>--echo answers other probes; it cannot be combined with --sweep or --via-echo</source>
+        <translation>--echo beantwortet andere Streckentests; es lässt sich nicht mit --sweep oder --via-echo kombinieren</translation>
+    </message>
+    <message>
+        <source>Echoing %1 back on .../pong at %2 as %3; Ctrl+C to stop.</source>
+        <translation>Sende %1 auf .../pong zurück, über %2 als %3; Strg+C beendet.</translation>
+    </message>
+    <message>
+        <source>Sweeping %1 B messages from %2 Hz up to %3 Hz at %4 (at most %5 s)</source>
+        <translation>Sweep mit Nachrichten zu %1 B von %2 Hz bis %3 Hz über %4 (höchstens %5 s)</translation>
+    </message>
+    <message>
+        <source>%1 Hz: %2 of %3 back, median %4 ms, p99 %5 ms</source>
+        <translation>%1 Hz: %2 von %3 zurück, Median %4 ms, p99 %5 ms</translation>
+    </message>
+    <message>
+        <source>%1 messages echoed</source>
+        <translation>%1 Nachrichten zurückgesendet</translation>
+    </message>
+    <message>
+        <source>Nothing came back from %1.</source>
+        <translation>Von %1 kam nichts zurück.</translation>
+    </message>
+    <message>
+        <source>Sweep: stop after S seconds (default 30).</source>
+        <translation>Sweep: nach S Sekunden beenden (Vorgabe 30).</translation>
+    </message>
+    <message>
+        <source>Nothing came back through %1; is 'bridgescope probe --echo' running on a host connected to it?</source>
+        <translation>Über %1 kam nichts zurück; läuft 'bridgescope probe --echo' auf einem Rechner, der mit diesem Broker verbunden ist?</translation>
+    </message>
+</context>
+<context>
+    <name>ProbeDialog</name>
+    <message>
+        <source>S&amp;weep the rate up to the link's limit</source>
+        <translation>S&amp;weep: Rate bis zur Grenze der Strecke steigern</translation>
+    </message>
+    <message>
+        <source>Back &amp;via an echo client</source>
+        <translation>Rückweg über einen &amp;Echo-Client</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>S&amp;tarten</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Anhalten</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Sweep</translation>
+    </message>
+    <message>
+        <source>Link Probe</source>
+        <translation>Streckentest</translation>
+    </message>
+    <message>
+        <source>tcp://, ssl://, mqtt://, mqtts://, ws:// or wss://, with the port</source>
+        <translation>tcp://, ssl://, mqtt://, mqtts://, ws:// oder wss://, mit Port</translation>
+    </message>
+    <message>
+        <source> B</source>
+        <translation> B</translation>
+    </message>
+    <message>
+        <source>The whole payload, its %1-byte header included</source>
+        <translation>Die gesamten Nutzdaten, einschließlich des %1-Byte-Kopfs</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>The rate of a plain run; the first step of a sweep</source>
+        <translation>Die Rate eines einfachen Tests; der erste Schritt eines Sweeps</translation>
+    </message>
+    <message>
+        <source>0: at most once</source>
+        <translation>0: höchstens einmal</translation>
+    </message>
+    <message>
+        <source>1: at least once</source>
+        <translation>1: mindestens einmal</translation>
+    </message>
+    <message>
+        <source>2: exactly once</source>
+        <translation>2: genau einmal</translation>
+    </message>
+    <message>
+        <source>QoS 1 and 2 round trips include TCP's delayed acknowledgements</source>
+        <translation>Umlaufzeiten mit QoS 1 und 2 enthalten die verzögerten Bestätigungen von TCP</translation>
+    </message>
+    <message>
+        <source> messages</source>
+        <translation> Nachrichten</translation>
+    </message>
+    <message>
+        <source>Raises the rate by 1.5x per step (about a second each) until more than 1 % is lost, the round trip grows tenfold or the sender falls behind</source>
+        <translation>Erhöht die Rate je Schritt (jeweils etwa eine Sekunde) um das 1,5-Fache, bis mehr als 1 % verloren geht, die Umlaufzeit sich verzehnfacht oder der Sender nicht mehr nachkommt</translation>
+    </message>
+    <message>
+        <source>Listen on …/pong for the copies of `bridgescope probe --echo` running on the other host, instead of on …/ping for the broker's own</source>
+        <translation>Auf …/pong die Kopien von `bridgescope probe --echo` auf dem anderen Rechner empfangen statt auf …/ping die des Brokers</translation>
+    </message>
+    <message>
+        <source>&amp;Broker:</source>
+        <translation>&amp;Broker:</translation>
+    </message>
+    <message>
+        <source>Payload si&amp;ze:</source>
+        <translation>Nutzdaten&amp;größe:</translation>
+    </message>
+    <message>
+        <source>&amp;Rate:</source>
+        <translation>&amp;Rate:</translation>
+    </message>
+    <message>
+        <source>&amp;QoS:</source>
+        <translation>&amp;QoS:</translation>
+    </message>
+    <message>
+        <source>Cou&amp;nt:</source>
+        <translation>An&amp;zahl:</translation>
+    </message>
+    <message>
+        <source>Round trips from this computer through the broker and back.</source>
+        <translation>Umlaufzeiten von diesem Rechner über den Broker und zurück.</translation>
+    </message>
+    <message>
+        <source>Rate Hz</source>
+        <translation>Rate Hz</translation>
+    </message>
+    <message>
+        <source>Sent Hz</source>
+        <translation>Gesendet Hz</translation>
+    </message>
+    <message>
+        <source>Median ms</source>
+        <translation>Median ms</translation>
+    </message>
+    <message>
+        <source>Lost %</source>
+        <translation>Verloren %</translation>
+    </message>
+    <message>
+        <source>Sent</source>
+        <translation>Gesendet</translation>
+    </message>
+    <message>
+        <source>Received</source>
+        <translation>Empfangen</translation>
+    </message>
+    <message>
+        <source>Lost</source>
+        <translation>Verloren</translation>
+    </message>
+    <message>
+        <source>Out of order</source>
+        <translation>Außer der Reihe</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>Median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>Std</source>
+        <translation>Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min.</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>Connected as %1; sending on %2.</source>
+        <translation>Verbunden als %1; sende auf %2.</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Verbinde mit %1 …</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Wird angehalten …</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>Step %1: sending at %2…</source>
+        <translation>Schritt %1: sende mit %2 …</translation>
+    </message>
+    <message>
+        <source>Sending %1 messages at %2…</source>
+        <translation>Sende %1 Nachrichten mit %2 …</translation>
+    </message>
+    <message>
+        <source>%1 in flight</source>
+        <translation>%1 unterwegs</translation>
+    </message>
+    <message>
+        <source>round trip [ms]</source>
+        <translation>Umlaufzeit [ms]</translation>
+    </message>
+    <message>
+        <source>Waiting for the first round trip…</source>
+        <translation>Warte auf den ersten Umlauf …</translation>
+    </message>
+    <message>
+        <source>Start the probe to plot the ECDF of its round trips</source>
+        <translation>Den Test starten, um die ECDF seiner Umlaufzeiten zu zeichnen</translation>
+    </message>
+    <message>
+        <source>%1 (%2 %)</source>
+        <translation>%1 (%2 %)</translation>
+    </message>
+    <message>
+        <source>Highest sustainable rate: &lt;b&gt;%1&lt;/b&gt;, &lt;b&gt;%2 MB/s&lt;/b&gt;&lt;br&gt;The sweep ended: %3.</source>
+        <translation>Höchste stabile Rate: &lt;b&gt;%1&lt;/b&gt;, &lt;b&gt;%2 MB/s&lt;/b&gt;&lt;br&gt;Sweep beendet: %3.</translation>
+    </message>
+    <message>
+        <source>No sustainable rate.&lt;br&gt;The sweep ended: %1.</source>
+        <translation>Keine stabile Rate.&lt;br&gt;Sweep beendet: %1.</translation>
+    </message>
+    <message>
+        <source>Stopped by an error after %1 round trips.</source>
+        <translation>Nach %1 Umläufen durch einen Fehler gestoppt.</translation>
+    </message>
+    <message>
+        <source>The probe could not run.</source>
+        <translation>Der Test ließ sich nicht ausführen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep stopped after %n step(s).</source>
+        <translation>
+            <numerusform>Sweep nach %n Schritt angehalten.</numerusform>
+            <numerusform>Sweep nach %n Schritten angehalten.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep done: %n step(s).</source>
+        <translation>
+            <numerusform>Sweep fertig: %n Schritt.</numerusform>
+            <numerusform>Sweep fertig: %n Schritte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stopped: %1 of %2 messages came back.</source>
+        <translation>Angehalten: %1 von %2 Nachrichten kamen zurück.</translation>
+    </message>
+    <message>
+        <source>Done: %1 of %2 messages came back.</source>
+        <translation>Fertig: %1 von %2 Nachrichten kamen zurück.</translation>
+    </message>
+    <message>
+        <source>The highest sustainable rate</source>
+        <translation>Die höchste stabile Rate</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Nachrichten</translation>
+    </message>
+    <message>
+        <source>Messages at %1</source>
+        <translation>Nachrichten bei %1</translation>
+    </message>
+    <message>
+        <source>Round trip [ms]</source>
+        <translation>Umlaufzeit [ms]</translation>
+    </message>
+    <message>
+        <source>Round trip at %1 [ms]</source>
+        <translation>Umlaufzeit bei %1 [ms]</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+</context>
+<context>
     <name>ProblemModel</name>
     <message>
         <source>1 error</source>
@@ -2735,6 +3563,89 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
     <message>
         <source>Bridgescope runs (*.%1)</source>
         <translation>Bridgescope-Läufe (*.%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ReferenceBridge</name>
+    <message>
+        <source>cannot publish %1 on %2: %3</source>
+        <translation>%1 lässt sich nicht auf %2 veröffentlichen: %3</translation>
+    </message>
+    <message>
+        <source>ignored a malformed type announcement for %1: %2</source>
+        <translation>fehlerhafte Typankündigung für %1 ignoriert: %2</translation>
+    </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2 (%3%4)</source>
+        <translation>MQTT %1 -&gt; ROS %2 (%3%4)</translation>
+    </message>
+    <message>
+        <source>, stamped</source>
+        <translation>, mit Zeitstempel</translation>
+    </message>
+    <message>
+        <source>not a bridge config: %1</source>
+        <translation>keine Bridge-Konfiguration: %1</translation>
+    </message>
+    <message>
+        <source>%1: qos must be 0, 1 or 2 (give $(arg ...) values with --arg NAME=VALUE)</source>
+        <translation>%1: qos muss 0, 1 oder 2 sein (Werte für $(arg ...) mit --arg NAME=VALUE angeben)</translation>
+    </message>
+    <message>
+        <source>a mapping without ros_topic or mqtt_topic</source>
+        <translation>eine Zuordnung ohne ros_topic oder mqtt_topic</translation>
+    </message>
+    <message>
+        <source>the config has no mapping to bridge</source>
+        <translation>die Konfiguration hat keine zu übertragende Zuordnung</translation>
+    </message>
+    <message>
+        <source>waiting for the ROS master…</source>
+        <translation>warte auf den ROS-Master …</translation>
+    </message>
+    <message>
+        <source>ROS node %1 started</source>
+        <translation>ROS-Knoten %1 gestartet</translation>
+    </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2 (primitive)</source>
+        <translation>MQTT %1 -&gt; ROS %2 (primitiv)</translation>
+    </message>
+    <message>
+        <source>reconnected to %1</source>
+        <translation>wieder mit %1 verbunden</translation>
+    </message>
+    <message>
+        <source>lost the broker (%1); reconnecting</source>
+        <translation>Broker verloren (%1); verbinde erneut</translation>
+    </message>
+    <message>
+        <source>connecting to %1…</source>
+        <translation>verbinde mit %1 …</translation>
+    </message>
+    <message>
+        <source>connected to %1</source>
+        <translation>mit %1 verbunden</translation>
+    </message>
+    <message>
+        <source>cannot subscribe to %1: %2</source>
+        <translation>%1 lässt sich nicht abonnieren: %2</translation>
+    </message>
+    <message>
+        <source>ROS %1 -&gt; MQTT %2%3</source>
+        <translation>ROS %1 -&gt; MQTT %2%3</translation>
+    </message>
+    <message>
+        <source> (primitive)</source>
+        <translation> (primitiv)</translation>
+    </message>
+    <message>
+        <source> (stamped)</source>
+        <translation> (mit Zeitstempel)</translation>
+    </message>
+    <message>
+        <source>the config uses %1: give the values with %2</source>
+        <translation>die Konfiguration verwendet %1: die Werte mit %2 angeben</translation>
     </message>
 </context>
 <context>
@@ -3165,6 +4076,13 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
     <message>
         <source>optional; otherwise each input's own pipeline</source>
         <translation>optional; sonst die eigene Pipeline jeder Eingabe</translation>
+    </message>
+</context>
+<context>
+    <name>RosEndpoint</name>
+    <message>
+        <source>no ROS master answers at %1</source>
+        <translation>unter %1 antwortet kein ROS-Master</translation>
     </message>
 </context>
 <context>
