@@ -229,9 +229,15 @@ void EcdfChart::refresh()
         if (!fits) {
             p.lo = m_log ? lo / 1.2 : lo - 0.05 * span;
             p.hi = m_log ? hi * 1.2 : hi + 0.05 * span;
+            // Latencies that are all positive keep the axis at 0 or above: a margin must not
+            // suggest negative values (crossings with a clock offset can be negative, and show so).
+            if (!m_log && lo >= 0)
+                p.lo = std::max(p.lo, 0.0);
             p.x->setRange(p.lo, p.hi);
             if (auto* linear = qobject_cast<QValueAxis*>(p.x)) {
                 linear->applyNiceNumbers(); // round tick labels; the range grows a little
+                if (lo >= 0 && linear->min() < 0)
+                    linear->setMin(0);
                 p.lo = linear->min();
                 p.hi = linear->max();
             }

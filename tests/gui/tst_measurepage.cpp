@@ -28,6 +28,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QValueAxis>
 
 using namespace Qt::StringLiterals;
 using namespace ViewHelpers;
@@ -160,6 +161,15 @@ private slots:
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass
         if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
             w.grab().save(shots + u"/measure.png"_s);
+        // A stage of a fraction of a ms next to the total: the axis margin stops at 0, since no
+        // plotted latency is negative.
+        table->setData(table->index(rowOf(table, u"stage:0"_s), 0), Qt::Checked, Qt::CheckStateRole);
+        chart->refresh();
+        auto* x = qobject_cast<QValueAxis*>(chart->views().first()->chart()->axes(Qt::Horizontal).first());
+        QVERIFY(x);
+        QCOMPARE(x->min(), 0.0);
+        table->setData(table->index(rowOf(table, u"stage:0"_s), 0), Qt::Unchecked, Qt::CheckStateRole);
+        chart->refresh();
 
         page->logScaleBox()->click();
         QVERIFY(qobject_cast<QLogValueAxis*>(chart->views().first()->chart()->axes(Qt::Horizontal).first()));
