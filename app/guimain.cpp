@@ -104,8 +104,11 @@ int runGui(int& argc, char** argv)
     if (parser.isSet(demo)) {
         lab = std::make_unique<DemoLab>();
         CliOutput::err(Gui::tr("starting the demo lab…"));
+        DemoLab::Options options;
+        options.brokerUrl = parser.value(broker); // given servers are used instead of private ones
+        options.rosMasterUri = parser.value(master);
         QString error;
-        if (!lab->start({}, &error)) {
+        if (!lab->start(options, &error)) {
             CliOutput::err(Gui::tr("the demo lab did not start: %1").arg(error));
             return 1;
         }

@@ -961,6 +961,14 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>vehicle: point clouds per second.</source>
         <translation>vehicle: Punktwolken je Sekunde.</translation>
     </message>
+    <message>
+        <source>Use this broker instead of a private mosquitto.</source>
+        <translation>Diesen Broker statt eines eigenen mosquitto verwenden.</translation>
+    </message>
+    <message>
+        <source>Use this ROS master instead of a private rosmaster.</source>
+        <translation>Diesen ROS-Master statt eines eigenen rosmaster verwenden.</translation>
+    </message>
 </context>
 <context>
     <name>DemoLab</name>
@@ -973,10 +981,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>%1 lässt sich nicht schreiben</translation>
     </message>
     <message>
-        <source>the demo needs mosquitto and rosmaster (scripts/setup.sh installs them)</source>
-        <translation>die Demo braucht mosquitto und rosmaster (scripts/setup.sh installiert sie)</translation>
-    </message>
-    <message>
         <source>%1 did not start: %2</source>
         <translation>%1 ist nicht gestartet: %2</translation>
     </message>
@@ -987,6 +991,14 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>%1 stopped: %2</source>
         <translation>%1 hat sich beendet: %2</translation>
+    </message>
+    <message>
+        <source>the demo needs mosquitto (scripts/setup.sh installs it) or --broker</source>
+        <translation>die Demo braucht mosquitto (scripts/setup.sh installiert es) oder --broker</translation>
+    </message>
+    <message>
+        <source>the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master</source>
+        <translation>die Demo braucht rosmaster (scripts/setup.sh installiert ihn) oder --ros-master</translation>
     </message>
 </context>
 <context>

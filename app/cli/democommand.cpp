@@ -39,7 +39,11 @@ int runDemoCommand(const QStringList& arguments)
                                     u"FORMAT"_s, u"md"_s);
     const QCommandLineOption size(u"size"_s, Demo::tr("Point cloud size in bytes (default 180000)."),
                                   u"BYTES"_s, u"180000"_s);
-    parser.addOptions({seconds, output, format, size});
+    const QCommandLineOption broker(u"broker"_s, Demo::tr("Use this broker instead of a private mosquitto."),
+                                    u"URL"_s);
+    const QCommandLineOption master(
+        u"ros-master"_s, Demo::tr("Use this ROS master instead of a private rosmaster."), u"URI"_s);
+    parser.addOptions({seconds, output, format, size, broker, master});
     QStringList args = arguments;
     args.replace(0, u"bridgescope demo"_s);
     const int parsed = CliOutput::parseCommand(
@@ -70,6 +74,8 @@ int runDemoCommand(const QStringList& arguments)
         err(Demo::tr("--size takes a number of bytes (at least 16)"));
         return 2;
     }
+    labOptions.brokerUrl = parser.value(broker);
+    labOptions.rosMasterUri = parser.value(master);
     QTemporaryDir scratch;
     const QString runPath = parser.isSet(output) ? parser.value(output) : scratch.filePath(u"demo.bsrun"_s);
     if (QFileInfo::exists(runPath)) {

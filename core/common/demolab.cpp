@@ -65,13 +65,13 @@ struct DemoLab::Private
     QTemporaryDir dir {QDir::tempPath() + u"/bridgescope-demo-XXXXXX"_s};
     std::vector<std::unique_ptr<QProcess>> processes; ///< in start order
     QStringList names;
-    quint16 brokerPort = 0;
-    quint16 masterPort = 0;
+    QString brokerUrl;
+    QString masterUri;
 
     QProcessEnvironment rosEnvironment() const
     {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(u"ROS_MASTER_URI"_s, u"http://127.0.0.1:%1/"_s.arg(masterPort));
+        env.insert(u"ROS_MASTER_URI"_s, masterUri);
         env.insert(u"ROS_IP"_s, u"127.0.0.1"_s);
         env.remove(u"ROS_HOSTNAME"_s);
         env.insert(u"ROS_HOME"_s, dir.filePath(u"ros"_s));
@@ -157,31 +157,43 @@ bool DemoLab::start(const Options& o, QString* error)
         return fail(tr("cannot write %1").arg(pf.fileName()));
     pf.close();
 
-    // The servers, on free loopback ports.
+    // The servers: the ones given, else private ones on free loopback ports.
     const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
     const QString rosmaster = QStandardPaths::findExecutable(u"rosmaster"_s);
-    if (mosquitto.isEmpty() || rosmaster.isEmpty())
-        return fail(tr("the demo needs mosquitto and rosmaster (scripts/setup.sh installs them)"));
-    d->brokerPort = freePort();
-    d->masterPort = freePort();
-    QFile conf(d->dir.filePath(u"mosquitto.conf"_s));
-    if (!conf.open(QIODevice::WriteOnly)
-        || conf.write(
-               u"listener %1 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
-               // Run as whoever we are: a broker started as root drops to the "mosquitto" user,
-               // and a change of user clears the parent-death signal.
-               "user %2\n"_s.arg(d->brokerPort)
-                   .arg(QString::fromLocal8Bit(::getpwuid(::getuid()) ? ::getpwuid(::getuid())->pw_name
-                                                                      : "root"))
-                   .toUtf8())
-            < 0)
-        return fail(tr("cannot write %1").arg(conf.fileName()));
-    conf.close();
-    d->launch(u"mosquitto"_s, mosquitto, {u"-c"_s, conf.fileName()});
-    d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(d->masterPort)});
+    QList<std::pair<QString, quint16>> started;
+    d->brokerUrl = o.brokerUrl;
+    if (d->brokerUrl.isEmpty()) {
+        if (mosquitto.isEmpty())
+            return fail(tr("the demo needs mosquitto (scripts/setup.sh installs it) or --broker"));
+        const quint16 port = freePort();
+        d->brokerUrl = u"tcp://127.0.0.1:%1"_s.arg(port);
+        QFile conf(d->dir.filePath(u"mosquitto.conf"_s));
+        const char* user = ::getpwuid(::getuid()) ? ::getpwuid(::getuid())->pw_name : "root";
+        if (!conf.open(QIODevice::WriteOnly)
+            || conf.write(
+                   u"listener %1 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
+                   // Run as whoever we are: a broker started as root drops to the "mosquitto"
+                   // user, and a change of user clears the parent-death signal.
+                   "user %2\n"_s.arg(port)
+                       .arg(QString::fromLocal8Bit(user))
+                       .toUtf8())
+                < 0)
+            return fail(tr("cannot write %1").arg(conf.fileName()));
+        conf.close();
+        d->launch(u"mosquitto"_s, mosquitto, {u"-c"_s, conf.fileName()});
+        started.append({u"mosquitto"_s, port});
+    }
+    d->masterUri = o.rosMasterUri;
+    if (d->masterUri.isEmpty()) {
+        if (rosmaster.isEmpty())
+            return fail(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
+        const quint16 port = freePort();
+        d->masterUri = u"http://127.0.0.1:%1/"_s.arg(port);
+        d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(port)});
+        started.append({u"rosmaster"_s, port});
+    }
     const QDeadlineTimer deadline(20000);
-    for (const auto& [name, port] :
-         {std::pair {u"mosquitto"_s, d->brokerPort}, {u"rosmaster"_s, d->masterPort}}) {
+    for (const auto& [name, port] : std::as_const(started)) {
         while (!listening(port)) {
             if (deadline.hasExpired() || !isRunning())
                 return fail(tr("%1 did not start: %2").arg(name, d->logOf(name)));
@@ -250,12 +262,12 @@ QString DemoLab::failure() const
 
 QString DemoLab::brokerUrl() const
 {
-    return u"tcp://127.0.0.1:%1"_s.arg(d->brokerPort);
+    return d->brokerUrl;
 }
 
 QString DemoLab::rosMasterUri() const
 {
-    return u"http://127.0.0.1:%1/"_s.arg(d->masterPort);
+    return d->masterUri;
 }
 
 QString DemoLab::vehicleConfigPath() const

@@ -11,7 +11,7 @@ class QProcess;
 /// The embedded demo lab: everything the paper's experiment needs, on this machine, started by
 /// Bridgescope and stopped with it.
 ///
-/// A private mosquitto and rosmaster on free loopback ports, a vehicle and a cloud reference
+/// A private mosquitto and rosmaster on free loopback ports (or the ones given), a vehicle and a cloud reference
 /// bridge (`bridgescope bridge`) from generated paper-shaped configs, the vehicle node (a 0.18 MB
 /// point cloud at 10 Hz) and the cloud's object detection (about 40 ms), the cloud's clock ahead
 /// by `cloudOffsetMs`; stamps at every component. Every child gets SIGTERM when this process dies
@@ -27,6 +27,8 @@ public:
         double rateHz = 10;
         double detectionMs = 40;
         double cloudOffsetMs = 35;
+        QString brokerUrl; ///< a broker to use instead of a private mosquitto
+        QString rosMasterUri; ///< a master to use instead of a private rosmaster
     };
 
     DemoLab();

@@ -92,6 +92,25 @@ private slots:
                 QVERIFY2(e.series(e.stageSeries(s)).stats().min >= 0, qPrintable(p.stageLabel(s)));
     }
 
+    // With servers given, the lab uses them and starts only its components.
+    void usesTheServersGiven()
+    {
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto() && servers.startRosMaster(), qPrintable(servers.errorString()));
+        QProcess demo;
+        demo.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                   {u"demo"_s, u"--seconds"_s, u"6"_s, u"--broker"_s, servers.brokerUrl(), u"--ros-master"_s,
+                    servers.rosMasterUri()});
+        QVERIFY(demo.waitForFinished(60000));
+        const QString log = QString::fromUtf8(demo.readAllStandardError());
+        QVERIFY2(demo.exitCode() == 0, qPrintable(log));
+        QVERIFY2(log.contains(u"broker %1, ROS master %2"_s.arg(servers.brokerUrl(), servers.rosMasterUri())),
+                 qPrintable(log));
+        QVERIFY(!log.contains(u"mosquitto did not"_s));
+        QVERIFY(QString::fromUtf8(demo.readAllStandardOutput()).contains(u"complete, "_s));
+        QVERIFY(servers.mosquittoRunning() && servers.rosMasterRunning()); // not ours to stop
+    }
+
     void leavesNoProcessWhenKilled()
     {
         QProcess demo;
