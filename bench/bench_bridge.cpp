@@ -19,6 +19,8 @@
 #include <mutex>
 #include <QCoreApplication>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtEndian>
@@ -80,9 +82,9 @@ int main(int argc, char** argv)
         return f.fileName();
     };
     const QString vehicle = write(
-        u"vehicle.yaml"_s, "bridge:\n  ros2mqtt:\n    - {ros_topic: /bench/in, mqtt_topic: bench/data}\n");
+        u"vehicle.yaml"_s, "bridge:\n  ros2mqtt:\n    - {ros_topic: /bench/in, mqtt_topic: bench/data, advanced: {ros: {queue_size: 100}}}\n");
     const QString cloud = write(
-        u"cloud.yaml"_s, "bridge:\n  mqtt2ros:\n    - {mqtt_topic: bench/data, ros_topic: /bench/out}\n");
+        u"cloud.yaml"_s, "bridge:\n  mqtt2ros:\n    - {mqtt_topic: bench/data, ros_topic: /bench/out, advanced: {ros: {queue_size: 100}}}\n");
     std::vector<std::unique_ptr<QProcess>> bridges;
     for (const auto& [config, name] : {std::pair {vehicle, u"bench_vehicle"_s}, {cloud, u"bench_cloud"_s}}) {
         auto p = std::make_unique<QProcess>();
@@ -103,7 +105,7 @@ int main(int argc, char** argv)
     Collector viaBroker;
     Collector viaOneBridge; ///< ROS -> vehicle bridge -> broker -> this client: where the time goes
     ros.subscribe(
-        u"/bench/out"_s, 10,
+        u"/bench/out"_s, 100,
         [&viaBridges](const RosRawMessage& m, qint64 receivedNs) {
             qint64 sent = 0;
             if (m.bytes.size() >= 12) {
@@ -112,7 +114,7 @@ int main(int argc, char** argv)
             }
         },
         &error);
-    const int pub = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 10, false, &error);
+    const int pub = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false, &error);
     MqttLink mqtt(MqttProfile::fromUrl(servers.brokerUrl()));
     mqtt.setMessageHandler([&](const QString& topic, const QByteArray& payload, qint64 receivedNs) {
         qint64 sent = 0;
@@ -179,6 +181,21 @@ int main(int argc, char** argv)
         Bench::row(u"%1 MB ROS -> one bridge -> MQTT (part of the above)"_s.arg(mb),
                    Bench::percentile(viaOneBridge.ms, 0.5),
                    u"p99 %1 ms"_s.arg(Bench::percentile(viaOneBridge.ms, 0.99), 0, 'f', 2));
+        // The literal peer of the issue: `bridgescope probe` in its own process, same size and rate.
+        QProcess probe;
+        probe.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"probe"_s, u"--broker"_s, servers.brokerUrl(), u"--size"_s, QString::number(size),
+                     u"--rate"_s, QString::number(rate), u"--count"_s, QString::number(std::min(count, 100)),
+                     u"--json"_s});
+        probe.waitForFinished(120000);
+        const double probeMed = QJsonDocument::fromJson(probe.readAllStandardOutput())
+                                    .object()
+                                    .value(u"rtt"_s)
+                                    .toObject()
+                                    .value(u"median_ms"_s)
+                                    .toDouble();
+        Bench::row(u"%1 MB bridgescope probe round trip (own process)"_s.arg(mb), probeMed,
+                   u"ratio bridges / probe %1"_s.arg(probeMed > 0 ? bMed / probeMed : 0, 0, 'f', 2));
         Bench::row(u"%1 MB ratio bridges / broker only (median)"_s.arg(mb), pMed > 0 ? bMed / pMed : 0,
                    u"bridges add %1 ms"_s.arg(bMed - pMed, 0, 'f', 2));
     }
