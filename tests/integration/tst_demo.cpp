@@ -80,11 +80,12 @@ private slots:
         const Pipeline& p = e.pipeline();
         QCOMPARE(p.topicCount(), 12);
         QCOMPARE(p.host(5), u"cloud"_s);
-        // The detection works about 40 ms; the cloud's clock is 35 ms ahead and the estimate finds it.
+        // The detection works about 40 ms; the cloud's clock is 35 ms ahead and the estimate finds it,
+        // off by half the difference between the two directions' transit (a few ms here).
         const LatencyStats detection = e.series(e.stageSeries(5)).stats();
         QVERIFY2(std::abs(detection.mean - 40) < 8, qPrintable(QString::number(detection.mean)));
         const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
-        QVERIFY2(std::abs(offset.median - 35) < 10, qPrintable(QString::number(offset.median)));
+        QVERIFY2(std::abs(offset.median - 35) < 15, qPrintable(QString::number(offset.median)));
         const LatencyStats total = e.series(e.totalSeries()).stats();
         QVERIFY2(total.mean > detection.mean && total.mean < 500, qPrintable(QString::number(total.mean)));
         for (int s = 0; s < p.stageCount(); ++s)
