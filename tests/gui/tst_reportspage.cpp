@@ -23,6 +23,7 @@
 #include <QListWidget>
 #include <QMimeData>
 #include <QProcess>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -30,6 +31,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QXmlStreamReader>
 
 using namespace Qt::StringLiterals;
@@ -264,6 +266,33 @@ private slots:
         QVERIFY(!reports->exportTo(nowhere, &error));
         QVERIFY(!error.isEmpty());
         QVERIFY(!QFile::exists(nowhere));
+    }
+
+    // A long export shows progress and stops when the user cancels; nothing is written.
+    void aLongExportCanBeCancelled()
+    {
+        const QString big = writeCsv(m_dir, u"long.csv"_s, SyntheticRun::paper(180'000, 0, 9), 5);
+        MainWindow w;
+        ReportsPage* reports = w.reportsPage();
+        w.show();
+        w.pages()->setCurrentWidget(reports);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        reports->setFormat(ReportFormats::Format::Html);
+        reports->addInputs({big});
+        QTRY_VERIFY_WITH_TIMEOUT(!reports->isBusy(), 60000); // the preview first
+        bool sawProgress = false;
+        QTimer::singleShot(300, reports, [&] {
+            if (auto* dialog = reports->findChild<QProgressDialog*>()) {
+                sawProgress = true;
+                dialog->cancel();
+            }
+        });
+        const QString out = m_dir.filePath(u"cancelled.html"_s);
+        QString error;
+        QVERIFY(!reports->exportTo(out, &error));
+        QVERIFY(sawProgress);
+        QVERIFY2(error.contains(u"cancelled"_s), qPrintable(error));
+        QVERIFY(!QFile::exists(out));
     }
 };
 

@@ -8,6 +8,8 @@
 #include "syntheticrun.h"
 #include "testservers.h"
 
+#include <csignal>
+#include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -233,6 +235,29 @@ private slots:
         QCOMPARE(doc.value(u"samples"_s).toInt(), 10);
         QVERIFY(doc.value(u"communication"_s).isNull());
         QVERIFY(doc.value(u"clock_offset"_s).isNull());
+    }
+
+    // A long report stops on Ctrl+C with exit 130 and leaves no file (180,000 samples take
+    // seconds in this build; the signal comes after a third of a second).
+    void ctrlCCancelsALongReportAndWritesNothing()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun run = SyntheticRun::paper(180'000, 0, 7);
+        const QString csv = writeFile(dir, u"long.csv"_s, SuiteCsv::write(run.topics, run.samples));
+        const QString out = dir.filePath(u"report.html"_s);
+        QProcess p;
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                {u"report"_s, csv, u"--format"_s, u"html"_s, u"-o"_s, out});
+        QVERIFY(p.waitForStarted());
+        QTest::qWait(300);
+        QCOMPARE(p.state(), QProcess::Running);
+        ::kill(pid_t(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 130);
+        QVERIFY(QString::fromUtf8(p.readAllStandardError()).contains(u"cancelled"_s));
+        QVERIFY(!QFile::exists(out));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList {u"long.csv"_s}); // no temporary left
     }
 
     // Regression guard: a row that does not read is an error with its place, unless skipped on purpose.
