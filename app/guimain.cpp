@@ -54,7 +54,7 @@ QString bridgescopeUsage()
     const QList<std::pair<QString, QString>> commands = {
         {u"config validate|convert|peer"_s, Gui::tr("check, convert and pair bridge configs")},
         {u"discover [--json]"_s, Gui::tr("list ROS and MQTT topics")},
-        {u"bridge CONFIG.yaml [--broker URL]"_s, Gui::tr("run a config as a reference bridge")},
+        {u"bridge CONFIG.yaml"_s, Gui::tr("run a config as a reference bridge")},
         {u"probe [--sweep] [--echo]"_s, Gui::tr("round trips and throughput through the broker")},
         {u"demo [--seconds N]"_s, Gui::tr("the demo lab without a window")},
         {u"record --pipeline P -o RUN"_s, Gui::tr("record a measurement run")},
