@@ -119,6 +119,15 @@ bool DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, 
     for (auto& b : scan.data)
         b = uint8_t(rng());
 
+    // Start when the bridge and a measuring Bridgescope listen (at most 15 s): samples sent
+    // before would count as dropped, though nothing was lost.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+    while (!stop() && std::chrono::steady_clock::now() < deadline
+           && (ros.subscriberCount(cloudPub) == 0 || ros.subscriberCount(sent.publisher) == 0))
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (!waitUntil(stop, 0.5)) // the other components' stamp subscriptions settle
+        return true;
+
     const double period = 1.0 / std::max(0.1, o.rateHz);
     auto next = std::chrono::steady_clock::now();
     quint32 seq = 0;
