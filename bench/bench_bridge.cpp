@@ -10,12 +10,13 @@
 //
 //   build-release/bench/bench_bridge
 #include "benchutil.h"
+#include "cli/clioutput.h"
+#include "common/wallclock.h"
 #include "mqtt/mqttlink.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"
 
 #include <cstring>
-#include <malloc.h>
 #include <mutex>
 #include <QCoreApplication>
 #include <QFile>
@@ -64,9 +65,7 @@ struct Collector
 int main(int argc, char** argv)
 {
     QCoreApplication app(argc, argv);
-    // As the bridges do (CliOutput::keepFreedMemory): both paths end in this process.
-    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
-    mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
+    CliOutput::keepFreedMemory(); // as the bridges do: both paths end in this process
     const int count = Bench::envInt("BENCH_COUNT", 200);
     const int rate = Bench::envInt("BENCH_RATE", 10);
     TestServers servers;
@@ -81,10 +80,12 @@ int main(int argc, char** argv)
         f.write(text);
         return f.fileName();
     };
-    const QString vehicle = write(
-        u"vehicle.yaml"_s, "bridge:\n  ros2mqtt:\n    - {ros_topic: /bench/in, mqtt_topic: bench/data, advanced: {ros: {queue_size: 100}}}\n");
-    const QString cloud = write(
-        u"cloud.yaml"_s, "bridge:\n  mqtt2ros:\n    - {mqtt_topic: bench/data, ros_topic: /bench/out, advanced: {ros: {queue_size: 100}}}\n");
+    const QString vehicle = write(u"vehicle.yaml"_s,
+                                  "bridge:\n  ros2mqtt:\n    - {ros_topic: /bench/in, mqtt_topic: "
+                                  "bench/data, advanced: {ros: {queue_size: 100}}}\n");
+    const QString cloud = write(u"cloud.yaml"_s,
+                                "bridge:\n  mqtt2ros:\n    - {mqtt_topic: bench/data, ros_topic: /bench/out, "
+                                "advanced: {ros: {queue_size: 100}}}\n");
     std::vector<std::unique_ptr<QProcess>> bridges;
     for (const auto& [config, name] : {std::pair {vehicle, u"bench_vehicle"_s}, {cloud, u"bench_cloud"_s}}) {
         auto p = std::make_unique<QProcess>();
@@ -133,7 +134,7 @@ int main(int argc, char** argv)
     }
     // Warm up: until a message makes it through both bridges (they announce the type first).
     for (int i = 0; i < 200 && viaBridges.size() == 0; ++i) {
-        ros.publish(pub, rosBlob(64, RosEndpoint::wallNs()));
+        ros.publish(pub, rosBlob(64, wallClockNs()));
         QThread::msleep(50);
     }
     if (viaBridges.size() == 0) {
@@ -144,25 +145,36 @@ int main(int argc, char** argv)
     std::printf(
         "ROS -> MQTT -> ROS through two reference bridges vs the broker alone, %d messages each at %d Hz\n\n",
         count, rate);
+    // One message of `size` bytes with its send time, through the bridges or to the broker alone.
+    const auto send = [&](bool bridges, int size) {
+        if (bridges) {
+            ros.publish(pub, rosBlob(size, wallClockNs()));
+            return;
+        }
+        QByteArray payload(size, '\x5a');
+        const qint64 now = wallClockNs(); // after making the payload, as the bridged path's time
+        std::memcpy(payload.data(), &now, 8);
+        mqtt.publish(u"bench/peer"_s, payload, 0, false);
+    };
+    const auto sleepUntil = [](qint64 wallNs) {
+        const qint64 wait = wallNs - wallClockNs();
+        if (wait > 0)
+            QThread::usleep(quint64(wait / 1000));
+    };
     Bench::header("median ms");
     for (const int size : {180'000, 1'080'000}) {
         viaBridges.ms.clear();
         viaBroker.ms.clear();
         viaOneBridge.ms.clear();
         const qint64 period = 1'000'000'000LL / rate;
-        qint64 next = RosEndpoint::wallNs();
+        qint64 next = wallClockNs();
         for (int i = 0; i < count; ++i) {
             // Alternate the two paths, half a period apart.
-            ros.publish(pub, rosBlob(size, RosEndpoint::wallNs()));
+            send(true, size);
             QThread::usleep(quint64(period / 2000));
-            QByteArray payload(size, '\x5a');
-            const qint64 now = RosEndpoint::wallNs();
-            std::memcpy(payload.data(), &now, 8);
-            mqtt.publish(u"bench/peer"_s, payload, 0, false);
+            send(false, size);
             next += period;
-            const qint64 wait = next - RosEndpoint::wallNs();
-            if (wait > 0)
-                QThread::usleep(quint64(wait / 1000));
+            sleepUntil(next);
         }
         QThread::msleep(1000);
         const std::vector<double> b = viaBridges.ms;
@@ -216,20 +228,11 @@ int main(int argc, char** argv)
             }
             const int n = int(hz);
             const qint64 period = qint64(1e9 / hz);
-            qint64 next = RosEndpoint::wallNs();
+            qint64 next = wallClockNs();
             for (int i = 0; i < n; ++i) {
-                const qint64 now = RosEndpoint::wallNs();
-                if (bridges) {
-                    ros.publish(pub, rosBlob(size, now));
-                } else {
-                    QByteArray payload(size, '\x5a');
-                    std::memcpy(payload.data(), &now, 8);
-                    mqtt.publish(u"bench/peer"_s, payload, 0, false);
-                }
+                send(bridges, size);
                 next += period;
-                const qint64 wait = next - RosEndpoint::wallNs();
-                if (wait > 0)
-                    QThread::usleep(quint64(wait / 1000));
+                sleepUntil(next);
             }
             QThread::msleep(500);
             std::vector<double> got;

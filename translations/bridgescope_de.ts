@@ -1604,36 +1604,12 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
 <context>
     <name>LinkProbe</name>
     <message>
-        <source>no broker answers at %1</source>
-        <translation>unter %1 antwortet kein Broker</translation>
-    </message>
-    <message>
-        <source>cannot connect to %1: %2</source>
-        <translation>keine Verbindung zu %1: %2</translation>
-    </message>
-    <message>
         <source>the connection to the broker was lost</source>
         <translation>die Verbindung zum Broker ging verloren</translation>
     </message>
     <message>
         <source>the connection to the broker was lost: %1</source>
         <translation>die Verbindung zum Broker ging verloren: %1</translation>
-    </message>
-    <message>
-        <source>no answer from the broker at %1</source>
-        <translation>keine Antwort vom Broker unter %1</translation>
-    </message>
-    <message>
-        <source>the broker at %1 does not confirm the subscription to %2</source>
-        <translation>der Broker unter %1 bestätigt das Abonnement von %2 nicht</translation>
-    </message>
-    <message>
-        <source>the broker at %1 refuses the subscription to %2: %3</source>
-        <translation>der Broker unter %1 lehnt das Abonnement von %2 ab: %3</translation>
-    </message>
-    <message>
-        <source>cannot publish on %1: %2</source>
-        <translation>auf %1 lässt sich nicht veröffentlichen: %2</translation>
     </message>
     <message>
         <source>stopped</source>
@@ -2384,6 +2360,22 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>cannot connect to %1: %2</source>
         <translation>keine Verbindung zu %1: %2</translation>
+    </message>
+    <message>
+        <source>no broker answers at %1</source>
+        <translation>unter %1 antwortet kein Broker</translation>
+    </message>
+    <message>
+        <source>the broker at %1 does not confirm the subscription to %2</source>
+        <translation>der Broker unter %1 bestätigt das Abonnement von %2 nicht</translation>
+    </message>
+    <message>
+        <source>the broker at %1 refuses the subscription to %2: %3</source>
+        <translation>der Broker unter %1 lehnt das Abonnement von %2 ab: %3</translation>
+    </message>
+    <message>
+        <source>cannot publish on %1: %2</source>
+        <translation>auf %1 lässt sich nicht veröffentlichen: %2</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "referencebridge.h"
 
+#include "common/wallclock.h"
 #include "config/configreader.h"
 #include "latency/stampcodec.h"
 #include "mqtt/mqttclientwire.h"
@@ -153,23 +154,11 @@ struct Route
 /// else a hash of its bytes (the same at every component that carries it).
 StampCodec::Decoded sampleOf(bool headerFirst, const QByteArray& bytes)
 {
+    if (headerFirst)
+        if (std::optional<StampCodec::Decoded> header = StampCodec::decodeHeader(bytes))
+            return *header;
     StampCodec::Decoded d;
-    if (headerFirst && bytes.size() >= 16) {
-        d.seq = qFromLittleEndian<quint32>(bytes.constData());
-        const quint32 sec = qFromLittleEndian<quint32>(bytes.constData() + 4);
-        const quint32 nsec = qFromLittleEndian<quint32>(bytes.constData() + 8);
-        const quint32 n = qFromLittleEndian<quint32>(bytes.constData() + 12);
-        d.sampleNs = qint64(sec) * 1'000'000'000LL + nsec;
-        if (qsizetype(n) <= bytes.size() - 16)
-            d.frameId = QString::fromUtf8(bytes.constData() + 16, qsizetype(n));
-        return d;
-    }
-    quint64 h = 14695981039346656037ULL; // FNV-1a
-    for (char c : bytes) {
-        h ^= quint8(c);
-        h *= 1099511628211ULL;
-    }
-    d.sampleNs = qint64(h % 4'000'000'000'000'000'000ULL); // fits the header's uint32 seconds
+    d.sampleNs = StampCodec::hashId(bytes) % 4'000'000'000'000'000'000LL; // fits the header's uint32 seconds
     return d;
 }
 
@@ -205,7 +194,7 @@ struct ReferenceBridge::Private
     std::unique_ptr<MqttLink> mqtt;
     QString stampDefinition = StampCodec::definition();
 
-    qint64 now() const { return RosEndpoint::wallNs() + options.clockOffsetNs; }
+    qint64 now() const { return wallClockNs() + options.clockOffsetNs; }
 
     QString value(const Mapping& m, const QString& path, QStringList* missing) const
     {

@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "demolab.h"
 
+#include "common/atomicfile.h"
+#include "common/loopbackports.h"
+#include "config/bridgeconfig.h"
+#include "config/configwriter.h"
+#include "latency/pipeline.h"
+
 #include <csignal>
 #include <pwd.h>
 #include <QDeadlineTimer>
@@ -8,10 +14,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
-#include <QTcpServer>
-#include <QTcpSocket>
 #include <QTemporaryDir>
-#include <QThread>
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -20,43 +23,26 @@ using namespace Qt::StringLiterals;
 namespace {
 const QString kStamps = u"/benchmarking_suite/timestamps/"_s;
 
-quint16 freePort()
-{
-    QTcpServer server;
-    return server.listen(QHostAddress::LocalHost, 0) ? server.serverPort() : 0;
-}
-
-bool listening(quint16 port)
-{
-    QTcpSocket s;
-    s.connectToHost(QHostAddress::LocalHost, port);
-    return s.waitForConnected(200);
-}
-
+/// The suite's bridge configs, with the demo's own ROS topics for each host.
 QString bridgeConfig(const QString& side)
 {
-    // The suite's configs, with the demo's own ROS topics for each host.
+    BridgeConfig c;
+    c.broker.values.setText(u"host"_s, u"localhost"_s);
+    c.broker.values.setText(u"port"_s, u"1883"_s);
+    c.client.values.setText(u"id"_s, u"mqtt_interface_"_s + side);
     const bool vehicle = side == u"vehicle"_s;
-    const QString pc = u"      timestamp_topic_prefix: %1mqtt_interface_%2/pointcloud\n"_s.arg(kStamps, side);
-    const QString ol
-        = u"      timestamp_topic_prefix: %1mqtt_interface_%2/object_list\n"_s.arg(kStamps, side);
-    QString out
-        = u"# The %1 side of Bridgescope's demo lab, shaped like the paper's experiment.\n"_s.arg(side)
-        + u"broker:\n  host: localhost\n  port: 1883\nclient:\n  id: mqtt_interface_%1\n"_s.arg(side)
-        + u"bridge:\n"_s;
-    const QString pointcloud
-        = u"    - ros_topic: /%1/pointcloud\n      mqtt_topic: benchmarking_suite/pointcloud\n"_s;
-    const QString objects
-        = u"    - ros_topic: /%1/object_list\n      mqtt_topic: benchmarking_suite/object_list\n"_s;
-    const QString qos = u"      advanced:\n        mqtt:\n          qos: 0\n"_s;
-    if (vehicle) {
-        out += u"  ros2mqtt:\n"_s + pointcloud.arg(side) + u"      inject_timestamp: true\n"_s + pc + qos;
-        out += u"  mqtt2ros:\n"_s + objects.arg(side) + ol + qos;
-    } else {
-        out += u"  mqtt2ros:\n"_s + pointcloud.arg(side) + pc + qos;
-        out += u"  ros2mqtt:\n"_s + objects.arg(side) + u"      inject_timestamp: true\n"_s + ol + qos;
+    for (const QString& data : {u"pointcloud"_s, u"object_list"_s}) {
+        // The point cloud goes out from the vehicle, the object list back from the cloud.
+        const bool outgoing = (data == u"pointcloud"_s) == vehicle;
+        Mapping m = Mapping::create(outgoing ? Direction::Ros2Mqtt : Direction::Mqtt2Ros,
+                                    u"/%1/%2"_s.arg(side, data), u"benchmarking_suite/"_s + data);
+        if (outgoing)
+            m.set(u"inject_timestamp"_s, u"true"_s);
+        m.set(u"timestamp_topic_prefix"_s, u"%1mqtt_interface_%2/%3"_s.arg(kStamps, side, data));
+        m.set(u"advanced.mqtt.qos"_s, u"0"_s);
+        c.mappings.append(m);
     }
-    return out;
+    return ConfigWriter::write(c, ConfigLayout::Ros1);
 }
 } // namespace
 
@@ -138,24 +124,17 @@ bool DemoLab::start(const Options& o, QString* error)
     QDir().mkpath(d->dir.filePath(u"ros/log"_s));
     const QString program = o.program.isEmpty() ? QCoreApplication::applicationFilePath() : o.program;
 
-    // Configs: both bridges and the pipeline with hosts.
-    for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
-        QFile f(d->dir.filePath(side + u".yaml"_s));
-        if (!f.open(QIODevice::WriteOnly) || f.write(bridgeConfig(side).toUtf8()) < 0)
-            return fail(tr("cannot write %1").arg(f.fileName()));
-    }
-    QString pipe
-        = u"# The paper's pipeline (Fig. 4) with the demo's hosts.\nmetrics_window: 600\ntopics_in_order:\n"_s;
-    QString hosts = u"hosts:\n"_s;
-    for (const QString& t : pipelineTopics()) {
-        pipe += u"  - "_s + t + u'\n';
-        const bool cloud = t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s);
-        hosts += u"  "_s + t + (cloud ? u": cloud\n"_s : u": vehicle\n"_s);
-    }
-    QFile pf(pipelinePath());
-    if (!pf.open(QIODevice::WriteOnly) || pf.write((pipe + hosts).toUtf8()) < 0)
-        return fail(tr("cannot write %1").arg(pf.fileName()));
-    pf.close();
+    // Configs: both bridges and the paper's pipeline (Fig. 4) with the demo's hosts.
+    QString why;
+    for (const QString& side : {u"vehicle"_s, u"cloud"_s})
+        if (!AtomicFile::write(d->dir.filePath(side + u".yaml"_s), bridgeConfig(side).toUtf8(), &why, false))
+            return fail(why);
+    Pipeline pipeline(pipelineTopics(), 600);
+    for (const QString& t : pipelineTopics())
+        pipeline.setHost(
+            t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
+    if (!AtomicFile::write(pipelinePath(), pipeline.toYaml(), &why, false))
+        return fail(why);
 
     // The servers: the ones given, else private ones on free loopback ports.
     const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
@@ -165,7 +144,7 @@ bool DemoLab::start(const Options& o, QString* error)
     if (d->brokerUrl.isEmpty()) {
         if (mosquitto.isEmpty())
             return fail(tr("the demo needs mosquitto (scripts/setup.sh installs it) or --broker"));
-        const quint16 port = freePort();
+        const quint16 port = LoopbackPorts::freePort();
         d->brokerUrl = u"tcp://127.0.0.1:%1"_s.arg(port);
         QFile conf(d->dir.filePath(u"mosquitto.conf"_s));
         const char* user = ::getpwuid(::getuid()) ? ::getpwuid(::getuid())->pw_name : "root";
@@ -187,19 +166,16 @@ bool DemoLab::start(const Options& o, QString* error)
     if (d->masterUri.isEmpty()) {
         if (rosmaster.isEmpty())
             return fail(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
-        const quint16 port = freePort();
+        const quint16 port = LoopbackPorts::freePort();
         d->masterUri = u"http://127.0.0.1:%1/"_s.arg(port);
         d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(port)});
         started.append({u"rosmaster"_s, port});
     }
     const QDeadlineTimer deadline(20000);
-    for (const auto& [name, port] : std::as_const(started)) {
-        while (!listening(port)) {
-            if (deadline.hasExpired() || !isRunning())
-                return fail(tr("%1 did not start: %2").arg(name, d->logOf(name)));
-            QThread::msleep(50);
-        }
-    }
+    for (const auto& [name, port] : std::as_const(started))
+        if (!LoopbackPorts::waitForListener(port, int(deadline.remainingTime()),
+                                            [this] { return isRunning(); }))
+            return fail(tr("%1 did not start: %2").arg(name, d->logOf(name)));
 
     // The components.
     const QString offset = QString::number(o.cloudOffsetMs);

@@ -1,21 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "livesession.h"
 
+#include "common/wallclock.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
 
 #include <chrono>
-
-namespace {
-qint64 wallNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-} // namespace
 
 LiveSession::LiveSession(QObject* parent)
     : QObject(parent)
@@ -71,7 +63,7 @@ void LiveSession::addMqttListener(MqttListener listener)
 
 void LiveSession::drainNow()
 {
-    const qint64 now = wallNs();
+    const qint64 now = wallClockNs();
     std::vector<MqttMessage> batch = m_mqtt->takeMessages();
     if (!batch.empty()) {
         for (const MqttListener& l : m_listeners)

@@ -55,17 +55,17 @@ qint64 secondsToNs(double seconds)
     return qint64(whole) * kNsPerSec + qint64(std::llround((seconds - whole) * 1e9));
 }
 
-/// FNV-1a over the id's UTF-8 bytes; never negative, so it cannot collide with pre-1970 stamps.
-qint64 hashId(const QByteArray& id)
+} // namespace
+
+qint64 StampCodec::hashId(const QByteArray& bytes)
 {
-    quint64 h = 14695981039346656037ULL;
-    for (char c : id) {
+    quint64 h = 14695981039346656037ULL; // FNV-1a, 64 bit
+    for (char c : bytes) {
         h ^= quint8(c);
         h *= 1099511628211ULL;
     }
     return qint64(h >> 1);
 }
-} // namespace
 
 QString StampCodec::definition()
 {
@@ -89,25 +89,35 @@ QString StampCodec::definition()
            "string frame_id\n"_s;
 }
 
-std::optional<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArray& bytes, QString* error)
+std::optional<StampCodec::Decoded> StampCodec::decodeHeader(const QByteArray& bytes, qsizetype* consumed)
 {
     Reader r {bytes};
     Decoded d;
     quint32 frameLength = 0;
-    if (!r.u32(d.seq) || !r.time(d.sampleNs) || !r.u32(frameLength)) {
-        if (error)
-            *error = tr("TimeStamped message too short (%1 bytes)").arg(bytes.size());
+    if (!r.u32(d.seq) || !r.time(d.sampleNs) || !r.u32(frameLength)
+        || frameLength > quint32(bytes.size() - r.pos))
         return std::nullopt;
-    }
-    if (frameLength > quint32(bytes.size() - r.pos)) {
-        if (error)
-            *error = tr("TimeStamped frame_id claims %1 bytes, only %2 left")
-                         .arg(frameLength)
-                         .arg(bytes.size() - r.pos);
-        return std::nullopt;
-    }
     d.frameId = QString::fromUtf8(bytes.constData() + r.pos, qsizetype(frameLength));
-    r.pos += qsizetype(frameLength);
+    if (consumed)
+        *consumed = r.pos + qsizetype(frameLength);
+    return d;
+}
+
+std::optional<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArray& bytes, QString* error)
+{
+    qsizetype headerBytes = 0;
+    std::optional<Decoded> header = decodeHeader(bytes, &headerBytes);
+    if (!header) {
+        if (error)
+            *error = bytes.size() < 16 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
+                                       : tr("TimeStamped frame_id claims %1 bytes, only %2 left")
+                                             .arg(qFromLittleEndian<quint32>(bytes.constData() + 12))
+                                             .arg(bytes.size() - 16);
+        return std::nullopt;
+    }
+    Decoded d = *header;
+    Reader r {bytes};
+    r.pos = headerBytes;
     if (!r.time(d.timeNs)) {
         if (error)
             *error = tr("TimeStamped message ends before its time field");

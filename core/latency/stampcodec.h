@@ -32,6 +32,11 @@ public:
         QString frameId;
     };
     static std::optional<Decoded> decodeTimeStamped(const QByteArray& bytes, QString* error = nullptr);
+    /// The std_msgs/Header a serialized message starts with (seq, stamp as `sampleNs`, frame_id);
+    /// `consumed` gets its length.
+    static std::optional<Decoded> decodeHeader(const QByteArray& bytes, qsizetype* consumed = nullptr);
+    /// A sample id for what has no time: FNV-1a (64 bit) of the bytes, never negative.
+    static qint64 hashId(const QByteArray& bytes);
     static QByteArray encodeTimeStamped(const Decoded& stamp);
 
     static std::optional<Decoded> decodeJson(const QByteArray& payload, QString* error = nullptr);

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "linkprobe.h"
 
+#include "common/wallclock.h"
 #include "latency/latencyseries.h"
-#include "pahooptions.h"
+#include "mqttlink.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
-#include <mqtt/async_client.h>
 #include <mutex>
 #include <QtEndian>
 
@@ -26,13 +26,6 @@ qint64 steadyNs()
         .count();
 }
 
-qint64 wallNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
 /// Sleeps until `deadlineNs` (steady clock) in short slices, so that a stop is seen soon.
 void sleepUntil(qint64 deadlineNs, const std::atomic<bool>& stop)
 {
@@ -42,13 +35,6 @@ void sleepUntil(qint64 deadlineNs, const std::atomic<bool>& stop)
             return;
         std::this_thread::sleep_for(std::chrono::nanoseconds(std::min<qint64>(left, 50'000'000)));
     }
-}
-
-QString connectError(const QString& url, const mqtt::exception& e)
-{
-    if (e.get_return_code() == -1)
-        return LinkProbe::tr("no broker answers at %1").arg(url);
-    return LinkProbe::tr("cannot connect to %1: %2").arg(url, QString::fromStdString(e.what()));
 }
 
 /// One step's book-keeping, shared between the sender and Paho's callback thread.
@@ -83,7 +69,7 @@ struct LinkProbe::Run
     QString sendError; ///< why the last publish failed
 
     LinkProbeReport report;
-    std::unique_ptr<mqtt::async_client> client;
+    std::unique_ptr<MqttLink> link;
 
     Run(LinkProbe* o, LinkProbeOptions opts, int m, std::atomic<bool>& s, std::atomic<qint64>& e, Live* l)
         : owner(o)
@@ -116,14 +102,14 @@ struct LinkProbe::Run
             o, [o, step] { emit o->stepFinished(step); }, Qt::QueuedConnection);
     }
 
-    void onArrival(const mqtt::const_message_ptr& msg)
+    /// `receivedWallNs` is when Paho handed the message over; round trips run on the steady clock.
+    void onArrival(const QByteArray& data, qint64 receivedWallNs)
     {
-        const qint64 now = steadyNs();
-        const mqtt::binary_ref& data = msg->get_payload_ref();
-        if (data.size() < std::size_t(LinkProbeOptions::kHeaderBytes)
-            || std::memcmp(data.data(), kMagic, sizeof kMagic) != 0)
+        const qint64 now = steadyNs() - (wallClockNs() - receivedWallNs);
+        if (data.size() < LinkProbeOptions::kHeaderBytes
+            || std::memcmp(data.constData(), kMagic, sizeof kMagic) != 0)
             return;
-        const auto* bytes = reinterpret_cast<const uchar*>(data.data());
+        const auto* bytes = reinterpret_cast<const uchar*>(data.constData());
         const auto run = qFromLittleEndian<quint32>(bytes + 4);
         const auto seq = qFromLittleEndian<quint64>(bytes + 8);
         std::lock_guard<std::mutex> lock(mutex);
@@ -146,82 +132,43 @@ struct LinkProbe::Run
             changed.notify_all();
     }
 
-    void onEcho(const mqtt::const_message_ptr& msg)
+    void onEcho(const QString& topic, const QByteArray& payload)
     {
-        const std::string& topic = msg->get_topic();
-        static const std::string ping = "/ping";
-        if (topic.size() <= ping.size() || topic.compare(topic.size() - ping.size(), ping.size(), ping) != 0)
+        if (!topic.endsWith(u"/ping"_s) || topic.size() <= 5)
             return;
-        const std::string pong = topic.substr(0, topic.size() - 4) + "pong";
-        try {
-            client->publish(pong, msg->get_payload_ref(), msg->get_qos(), false);
+        if (link->publish(topic.chopped(4) + u"pong"_s, payload, options.qos, false))
             echoed.fetch_add(1, std::memory_order_relaxed);
-        } catch (const mqtt::exception&) { }
     }
 
     bool connect()
     {
         const MqttProfile& p = options.profile;
-        report.clientId = QString::fromStdString(PahoOptions::clientId(p));
+        // A probe reports a broken link rather than hiding it behind reconnects.
+        link = std::make_unique<MqttLink>(p, MqttLink::Options {{}, false, 65535});
+        report.clientId = link->clientId();
         const QString id = report.clientId;
         report.sendTopic = pingTopic(id);
         report.receiveTopic = mode == Echo ? echoFilter() : (options.viaEcho ? pongTopic(id) : pingTopic(id));
         report.payloadBytes = options.payloadBytes;
         report.sweep = mode == Sweep;
-        try {
-            mqtt::create_options createOpts(p.mqttVersion == 5 ? MQTTVERSION_5 : MQTTVERSION_3_1_1);
-            client = std::make_unique<mqtt::async_client>(p.pahoUri().toStdString(), id.toStdString(),
-                                                          createOpts, nullptr);
-            client->set_message_callback([this](const mqtt::const_message_ptr& msg) {
-                if (mode == Echo)
-                    onEcho(msg);
-                else
-                    onArrival(msg);
-            });
-            client->set_connection_lost_handler([this](const std::string& cause) {
-                std::lock_guard<std::mutex> lock(mutex);
-                lost = true;
-                lostWhy = cause.empty()
-                    ? tr("the connection to the broker was lost")
-                    : tr("the connection to the broker was lost: %1").arg(QString::fromStdString(cause));
-                changed.notify_all();
-            });
-            // A probe reports a broken link rather than hiding it behind reconnects.
-            const mqtt::connect_options connectOptions
-                = PahoOptions::connectOptions(p).automatic_reconnect(false).max_inflight(65535).finalize();
-            if (!client->connect(connectOptions)->wait_for(std::chrono::seconds(10))) {
-                report.error = tr("no answer from the broker at %1").arg(p.url);
-                return false;
-            }
-        } catch (const mqtt::exception& e) {
-            report.error = connectError(p.url, e);
-            return false;
-        }
-        try {
-            if (!client->subscribe(report.receiveTopic.toStdString(), options.qos)
-                     ->wait_for(std::chrono::seconds(5))) {
-                report.error = tr("the broker at %1 does not confirm the subscription to %2")
-                                   .arg(p.url, report.receiveTopic);
-                return false;
-            }
-        } catch (const mqtt::exception& e) {
-            report.error = tr("the broker at %1 refuses the subscription to %2: %3")
-                               .arg(p.url, report.receiveTopic, QString::fromStdString(e.what()));
-            return false;
-        }
-        return true;
+        link->setMessageHandler([this](const QString& topic, const QByteArray& payload, qint64 receivedNs) {
+            if (mode == Echo)
+                onEcho(topic, payload);
+            else
+                onArrival(payload, receivedNs);
+        });
+        link->setLostHandler([this](const QString& cause) {
+            std::lock_guard<std::mutex> lock(mutex);
+            lost = true;
+            lostWhy = cause.isEmpty() ? tr("the connection to the broker was lost")
+                                      : tr("the connection to the broker was lost: %1").arg(cause);
+            changed.notify_all();
+        });
+        return link->connect(10000, &report.error)
+            && link->subscribeAndWait(report.receiveTopic, options.qos, 5000, &report.error);
     }
 
-    void disconnect()
-    {
-        if (!client)
-            return;
-        try {
-            if (client->is_connected())
-                client->disconnect(std::chrono::milliseconds(500))->wait_for(std::chrono::seconds(2));
-        } catch (const mqtt::exception&) { }
-        client.reset();
-    }
+    void disconnect() { link.reset(); }
 
     /// Sends `count` messages at `rateHz` and waits for them to come back.
     LinkProbeStep runStep(quint32 run, double rateHz, qint64 count)
@@ -244,7 +191,7 @@ struct LinkProbe::Run
         std::string payload(std::size_t(options.payloadBytes), '\0');
         std::memcpy(payload.data(), kMagic, sizeof kMagic);
         qToLittleEndian<quint32>(run, payload.data() + 4);
-        const std::string topic = report.sendTopic.toStdString();
+        const QString& topic = report.sendTopic;
         const double intervalNs = 1e9 / rateHz;
         const qint64 start = steadyNs();
         qint64 firstSend = 0;
@@ -260,7 +207,7 @@ struct LinkProbe::Run
                     break;
             }
             qToLittleEndian<quint64>(quint64(i), payload.data() + 8);
-            qToLittleEndian<qint64>(wallNs(), payload.data() + 16);
+            qToLittleEndian<qint64>(wallClockNs(), payload.data() + 16);
             const qint64 now = steadyNs();
             {
                 std::lock_guard<std::mutex> lock(mutex);
@@ -314,22 +261,21 @@ struct LinkProbe::Run
         return step;
     }
 
-    bool publish(const std::string& topic, const std::string& payload)
+    bool publish(const QString& topic, const std::string& payload)
     {
         // With QoS 1 and 2 Paho refuses more than max_inflight unacknowledged messages: wait for room.
         for (;;) {
-            try {
-                client->publish(topic, payload.data(), payload.size(), options.qos, false);
+            switch (link->tryPublish(topic, payload.data(), qsizetype(payload.size()), options.qos, false,
+                                     &sendError)) {
+            case MqttLink::Sent::Ok:
                 return true;
-            } catch (const mqtt::exception& e) {
-                if (e.get_return_code() != MQTTASYNC_MAX_MESSAGES_INFLIGHT) {
-                    sendError = tr("cannot publish on %1: %2")
-                                    .arg(QString::fromStdString(topic), QString::fromStdString(e.what()));
-                    return false;
-                }
+            case MqttLink::Sent::Failed:
+                return false;
+            case MqttLink::Sent::Full:
                 if (stop)
                     return false;
                 std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                break;
             }
         }
     }

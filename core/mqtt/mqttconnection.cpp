@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttconnection.h"
 
+#include "common/wallclock.h"
 #include "pahooptions.h"
 
 #include <atomic>
@@ -20,13 +21,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-qint64 nowNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
 // Why a CONNECT was refused, in words (MQTT 3.1.1 return codes and MQTT 5 reason codes).
 QString refusalText(int code)
 {
@@ -240,7 +234,7 @@ void MqttConnection::startClient()
                 m.topic = QString::fromStdString(msg->get_topic());
                 const mqtt::binary_ref& data = msg->get_payload_ref();
                 m.payload = QByteArray(data.data(), qsizetype(data.size()));
-                m.receivedNs = nowNs();
+                m.receivedNs = wallClockNs();
                 m.qos = quint8(msg->get_qos());
                 m.retained = msg->is_retained();
                 const std::size_t size = std::size_t(m.payload.size());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttlink.h"
 
+#include "common/wallclock.h"
 #include "pahooptions.h"
 
 #include <chrono>
@@ -8,19 +9,11 @@
 #include <mutex>
 #include <vector>
 
-namespace {
-qint64 nowNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-} // namespace
-
 struct MqttLink::Private
 {
     MqttProfile profile;
-    MqttWill will;
+    Options options;
+    QString clientId;
     std::unique_ptr<mqtt::async_client> client;
     std::mutex mutex; ///< guards the handlers and subscriptions
     MessageHandler onMessage;
@@ -52,10 +45,20 @@ struct MqttLink::Private
 };
 
 MqttLink::MqttLink(const MqttProfile& profile, const MqttWill& will)
+    : MqttLink(profile, Options {will, true, 0})
+{ }
+
+MqttLink::MqttLink(const MqttProfile& profile, const Options& options)
     : d(std::make_shared<Private>())
 {
     d->profile = profile;
-    d->will = will;
+    d->options = options;
+    d->clientId = QString::fromStdString(PahoOptions::clientId(profile));
+}
+
+const QString& MqttLink::clientId() const
+{
+    return d->clientId;
 }
 
 MqttLink::~MqttLink()
@@ -99,11 +102,11 @@ bool MqttLink::connect(int timeoutMs, QString* error)
     const MqttProfile& p = d->profile;
     try {
         mqtt::create_options createOpts(p.mqttVersion == 5 ? MQTTVERSION_5 : MQTTVERSION_3_1_1);
-        d->client = std::make_unique<mqtt::async_client>(p.pahoUri().toStdString(), PahoOptions::clientId(p),
+        d->client = std::make_unique<mqtt::async_client>(p.pahoUri().toStdString(), d->clientId.toStdString(),
                                                          createOpts, nullptr);
         std::weak_ptr<Private> weak = d;
         d->client->set_message_callback([weak](mqtt::const_message_ptr msg) {
-            const qint64 now = nowNs();
+            const qint64 now = wallClockNs();
             auto self = weak.lock();
             if (!self)
                 return;
@@ -146,9 +149,14 @@ bool MqttLink::connect(int timeoutMs, QString* error)
                 handler(QString::fromStdString(cause));
         });
         auto builder = PahoOptions::connectOptions(p);
-        if (!d->will.topic.isEmpty())
-            builder.will(mqtt::message(d->will.topic.toStdString(), d->will.message.constData(),
-                                       std::size_t(d->will.message.size()), d->will.qos, d->will.retained));
+        if (!d->options.autoReconnect)
+            builder.automatic_reconnect(false);
+        if (d->options.maxInflight > 0)
+            builder.max_inflight(d->options.maxInflight);
+        const MqttWill& will = d->options.will;
+        if (!will.topic.isEmpty())
+            builder.will(mqtt::message(will.topic.toStdString(), will.message.constData(),
+                                       std::size_t(will.message.size()), will.qos, will.retained));
         mqtt::token_ptr token = d->client->connect(builder.finalize());
         if (!token->wait_for(std::chrono::milliseconds(timeoutMs))) {
             if (error)
@@ -157,25 +165,59 @@ bool MqttLink::connect(int timeoutMs, QString* error)
         }
     } catch (const mqtt::exception& e) {
         if (error)
-            *error = tr("cannot connect to %1: %2")
-                         .arg(p.url,
-                              QString::fromStdString(e.get_message().empty() ? e.what() : e.get_message()));
+            *error = e.get_return_code() == -1
+                ? tr("no broker answers at %1").arg(p.url)
+                : tr("cannot connect to %1: %2")
+                      .arg(p.url,
+                           QString::fromStdString(e.get_message().empty() ? e.what() : e.get_message()));
         return false;
     }
     return true;
 }
 
+bool MqttLink::subscribeAndWait(const QString& filter, int qos, int timeoutMs, QString* error)
+{
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        d->subscriptions.emplace_back(filter.toStdString(), qos); // held on reconnects too
+    }
+    try {
+        if (d->client
+            && d->client->subscribe(filter.toStdString(), qos)
+                   ->wait_for(std::chrono::milliseconds(timeoutMs)))
+            return true;
+        if (error)
+            *error
+                = tr("the broker at %1 does not confirm the subscription to %2").arg(d->profile.url, filter);
+    } catch (const mqtt::exception& e) {
+        if (error)
+            *error = tr("the broker at %1 refuses the subscription to %2: %3")
+                         .arg(d->profile.url, filter, QString::fromStdString(e.what()));
+    }
+    return false;
+}
+
 bool MqttLink::publish(const QString& topic, const QByteArray& payload, int qos, bool retained)
 {
+    // Not connected (reconnecting) or too many in flight: the message is lost.
+    return tryPublish(topic, payload.constData(), payload.size(), qos, retained) == Sent::Ok;
+}
+
+MqttLink::Sent MqttLink::tryPublish(const QString& topic, const char* data, qsizetype size, int qos,
+                                    bool retained, QString* error)
+{
     if (!d->client)
-        return false;
+        return Sent::Failed;
     try {
-        d->client->publish(topic.toStdString(), payload.constData(), std::size_t(payload.size()), qos,
-                           retained);
-    } catch (const mqtt::exception&) {
-        return false; // not connected (reconnecting) or too many in flight: the message is lost
+        d->client->publish(topic.toStdString(), data, std::size_t(size), qos, retained);
+    } catch (const mqtt::exception& e) {
+        if (e.get_return_code() == MQTTASYNC_MAX_MESSAGES_INFLIGHT)
+            return Sent::Full;
+        if (error)
+            *error = tr("cannot publish on %1: %2").arg(topic, QString::fromStdString(e.what()));
+        return Sent::Failed;
     }
-    return true;
+    return Sent::Ok;
 }
 
 void MqttLink::disconnect()

@@ -31,9 +31,18 @@ public:
     using MessageHandler
         = std::function<void(const QString& topic, const QByteArray& payload, qint64 receivedNs)>;
 
+    struct Options
+    {
+        MqttWill will;
+        bool autoReconnect = true; ///< false: a lost connection stays lost (the probe reports it)
+        int maxInflight = 0; ///< unacknowledged QoS 1/2 messages; 0: Paho's default
+    };
+
     MqttLink(const MqttProfile& profile, const MqttWill& will = {});
+    MqttLink(const MqttProfile& profile, const Options& options);
     ~MqttLink();
     MqttLink(const MqttLink&) = delete;
+    const QString& clientId() const;
     MqttLink& operator=(const MqttLink&) = delete;
 
     void setMessageHandler(MessageHandler handler);
@@ -44,7 +53,13 @@ public:
 
     /// Connects, waiting up to `timeoutMs` for the broker's answer.
     bool connect(int timeoutMs, QString* error);
+    /// Subscribes now and waits up to `timeoutMs` for the broker to confirm (also held on reconnects).
+    bool subscribeAndWait(const QString& filter, int qos, int timeoutMs, QString* error);
     bool publish(const QString& topic, const QByteArray& payload, int qos, bool retained);
+    enum class Sent { Ok, Full, Failed };
+    /// publish() that tells a full in-flight window (QoS 1/2: try again soon) from a failure.
+    Sent tryPublish(const QString& topic, const char* data, qsizetype size, int qos, bool retained,
+                    QString* error = nullptr);
     /// Disconnects cleanly (the broker does not send the last will).
     void disconnect();
     bool isConnected() const;

@@ -1,35 +1,19 @@
 // SPDX-License-Identifier: MIT
 #include "demonodes.h"
 
+#include "common/wallclock.h"
 #include "latency/stampcodec.h"
+#include "rosbytes.h"
 #include "rosendpoint.h"
 
 #include <geometry_msgs/PoseArray.h>
 #include <random>
-#include <ros/serialization.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <thread>
 
 using namespace Qt::StringLiterals;
 
 namespace {
-template<typename M> QByteArray serialized(const M& message)
-{
-    QByteArray bytes(qsizetype(ros::serialization::serializationLength(message)), Qt::Uninitialized);
-    ros::serialization::OStream out(reinterpret_cast<uint8_t*>(bytes.data()), uint32_t(bytes.size()));
-    ros::serialization::serialize(out, message);
-    return bytes;
-}
-
-template<typename M> M deserialized(const QByteArray& bytes)
-{
-    M message;
-    ros::serialization::IStream in(reinterpret_cast<uint8_t*>(const_cast<char*>(bytes.constData())),
-                                   uint32_t(bytes.size()));
-    ros::serialization::deserialize(in, message);
-    return message;
-}
-
 template<typename M> int advertiseAs(RosEndpoint& ros, const QString& topic, int queue, QString* error)
 {
     return ros.advertise(topic, QString::fromLatin1(ros::message_traits::DataType<M>::value()),
@@ -93,7 +77,7 @@ bool DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, 
     if (!ros.subscribe(
             u"/vehicle/object_list"_s, 10,
             [&back](const RosRawMessage& m, qint64 receivedNs) {
-                back.stamp(deserialized<geometry_msgs::PoseArray>(m.bytes).header, receivedNs);
+                back.stamp(RosBytes::read<geometry_msgs::PoseArray>(m.bytes).header, receivedNs);
             },
             error))
         return false;
@@ -132,12 +116,12 @@ bool DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, 
     auto next = std::chrono::steady_clock::now();
     quint32 seq = 0;
     while (!stop()) {
-        const qint64 now = RosEndpoint::wallNs() + o.clockOffsetNs;
+        const qint64 now = wallClockNs() + o.clockOffsetNs;
         scan.header.seq = ++seq;
         scan.header.stamp.sec = uint32_t(now / 1'000'000'000LL);
         scan.header.stamp.nsec = uint32_t(now % 1'000'000'000LL);
-        const QByteArray bytes = serialized(scan);
-        sent.stamp(scan.header, RosEndpoint::wallNs());
+        const QByteArray bytes = RosBytes::of(scan);
+        sent.stamp(scan.header, wallClockNs());
         ros.publish(cloudPub, bytes);
         next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(
             std::chrono::duration<double>(period));
@@ -166,7 +150,7 @@ bool DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop, QS
     if (!ros.subscribe(
             u"/cloud/pointcloud"_s, 2,
             [&, rng, meanMs](const RosRawMessage& m, qint64 receivedNs) {
-                const sensor_msgs::PointCloud2 scan = deserialized<sensor_msgs::PointCloud2>(m.bytes);
+                const sensor_msgs::PointCloud2 scan = RosBytes::read<sensor_msgs::PointCloud2>(m.bytes);
                 in.stamp(scan.header, receivedNs);
                 // "Inference": about the mean, varying like a real network's run time.
                 std::gamma_distribution<double> work(16.0, meanMs / 16.0);
@@ -179,8 +163,8 @@ bool DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop, QS
                     objects.poses[i].position.x = double(i) * 2.5;
                     objects.poses[i].orientation.w = 1;
                 }
-                out.stamp(objects.header, RosEndpoint::wallNs());
-                ros.publish(listPub, serialized(objects));
+                out.stamp(objects.header, wallClockNs());
+                ros.publish(listPub, RosBytes::of(objects));
             },
             error))
         return false;

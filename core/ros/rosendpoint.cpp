@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rosendpoint.h"
 
+#include "common/wallclock.h"
+#include "rosbytes.h"
+
 #include <map>
 #include <mutex>
 #include <ros/ros.h>
@@ -9,20 +12,6 @@
 #include <vector>
 
 using namespace Qt::StringLiterals;
-
-namespace {
-topic_tools::ShapeShifter shaped(const std::string& md5, const std::string& type,
-                                 const std::string& definition, const QByteArray& bytes)
-{
-    topic_tools::ShapeShifter s;
-    s.morph(md5, type, definition, "");
-    // ShapeShifter::read copies from the stream; IStream wants a mutable pointer it never writes.
-    ros::serialization::IStream in(reinterpret_cast<uint8_t*>(const_cast<char*>(bytes.constData())),
-                                   uint32_t(bytes.size()));
-    s.read(in);
-    return s;
-}
-} // namespace
 
 struct RosEndpoint::Private
 {
@@ -45,12 +34,6 @@ RosEndpoint::RosEndpoint()
 RosEndpoint::~RosEndpoint()
 {
     shutdown();
-}
-
-qint64 RosEndpoint::wallNs()
-{
-    const ros::WallTime t = ros::WallTime::now();
-    return qint64(t.sec) * 1'000'000'000LL + t.nsec;
 }
 
 bool RosEndpoint::start(const QString& name, const QString& masterUri,
@@ -116,17 +99,25 @@ bool RosEndpoint::subscribe(const QString& topic, int queueSize, Handler handler
 {
     if (!d->node)
         return false;
+    // The type's texts are converted once per type, not per message (a definition is kilobytes);
+    // roscpp never runs one subscription's callbacks concurrently.
+    struct TypeCache
+    {
+        std::string md5;
+        RosRawMessage texts;
+    };
+    auto type = std::make_shared<TypeCache>();
     boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> cb
-        = [handler = std::move(handler)](const topic_tools::ShapeShifter::ConstPtr& msg) {
-              const qint64 now = wallNs();
-              RosRawMessage m;
-              m.bytes = QByteArray(qsizetype(msg->size()), Qt::Uninitialized);
-              ros::serialization::OStream out(reinterpret_cast<uint8_t*>(m.bytes.data()),
-                                              uint32_t(m.bytes.size()));
-              msg->write(out);
-              m.type = QString::fromStdString(msg->getDataType());
-              m.md5 = QString::fromStdString(msg->getMD5Sum());
-              m.definition = QString::fromStdString(msg->getMessageDefinition());
+        = [handler = std::move(handler), type](const topic_tools::ShapeShifter::ConstPtr& msg) {
+              const qint64 now = wallClockNs();
+              if (type->md5 != msg->getMD5Sum()) {
+                  type->md5 = msg->getMD5Sum();
+                  type->texts.type = QString::fromStdString(msg->getDataType());
+                  type->texts.md5 = QString::fromStdString(type->md5);
+                  type->texts.definition = QString::fromStdString(msg->getMessageDefinition());
+              }
+              RosRawMessage m = type->texts;
+              m.bytes = RosBytes::of(*msg);
               handler(m, now);
           };
     try {
@@ -170,7 +161,7 @@ bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
         return false;
     const Private::Publisher& p = d->publishers[std::size_t(publisher)];
     try {
-        p.pub.publish(shaped(p.md5, p.type, p.definition, bytes));
+        p.pub.publish(RosBytes::shaped(p.md5, p.type, p.definition, bytes));
     } catch (const ros::Exception&) {
         return false;
     }

@@ -51,8 +51,6 @@ public:
     bool publish(int publisher, const QByteArray& bytes);
     int subscriberCount(int publisher) const;
 
-    static qint64 wallNs();
-
 private:
     struct Private;
     std::unique_ptr<Private> d;

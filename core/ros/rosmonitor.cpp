@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
+#include "common/wallclock.h"
+#include "rosbytes.h"
 #include "rosnode.h"
 
 #include <deque>
@@ -14,12 +16,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr qint64 kRateWindowNs = 5'000'000'000LL;
-
-qint64 wallNs()
-{
-    const ros::WallTime t = ros::WallTime::now();
-    return qint64(t.sec) * 1000000000LL + t.nsec;
-}
 
 struct TopicState
 {
@@ -39,10 +35,8 @@ struct RosMonitor::Private
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
     {
-        const qint64 now = wallNs();
-        QByteArray bytes(qsizetype(msg->size()), Qt::Uninitialized);
-        ros::serialization::OStream stream(reinterpret_cast<uint8_t*>(bytes.data()), uint32_t(bytes.size()));
-        msg->write(stream);
+        const qint64 now = wallClockNs();
+        QByteArray bytes = RosBytes::of(*msg);
         std::lock_guard<std::mutex> lock(mutex);
         auto it = topics.find(topic);
         if (it == topics.end())

@@ -2,7 +2,9 @@
 #include "rosstampsource.h"
 
 #include "common/eventbuffer.h"
+#include "common/wallclock.h"
 #include "latency/stampcodec.h"
+#include "rosbytes.h"
 #include "rosnode.h"
 
 #include <atomic>
@@ -11,22 +13,6 @@
 #include <QPointer>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
-
-namespace {
-qint64 wallNs()
-{
-    const ros::WallTime t = ros::WallTime::now();
-    return qint64(t.sec) * 1000000000LL + t.nsec;
-}
-
-QByteArray serialized(const topic_tools::ShapeShifter& msg)
-{
-    QByteArray bytes(qsizetype(msg.size()), Qt::Uninitialized);
-    ros::serialization::OStream stream(reinterpret_cast<uint8_t*>(bytes.data()), uint32_t(bytes.size()));
-    msg.write(stream);
-    return bytes;
-}
-} // namespace
 
 struct RosStampSource::Private
 {
@@ -45,13 +31,13 @@ struct RosStampSource::Private
     // roscpp spinner thread.
     void onStamp(const QString& topic, const topic_tools::ShapeShifter& msg)
     {
-        const qint64 now = wallNs();
+        const qint64 now = wallClockNs();
         received.fetch_add(1, std::memory_order_relaxed);
         if (msg.getMD5Sum() != StampCodec::md5()) {
             wrongType.fetch_add(1, std::memory_order_relaxed);
             return;
         }
-        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(serialized(msg));
+        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(RosBytes::of(msg));
         if (!d) {
             malformed.fetch_add(1, std::memory_order_relaxed);
             return;
@@ -61,13 +47,13 @@ struct RosStampSource::Private
 
     void onLatency(const QString& topic, const topic_tools::ShapeShifter& msg)
     {
-        const qint64 now = wallNs();
+        const qint64 now = wallClockNs();
         received.fetch_add(1, std::memory_order_relaxed);
         if (msg.getMD5Sum() != float64Md5()) {
             wrongType.fetch_add(1, std::memory_order_relaxed);
             return;
         }
-        const std::optional<qint64> ns = StampCodec::decodeFloat64Seconds(serialized(msg));
+        const std::optional<qint64> ns = StampCodec::decodeFloat64Seconds(RosBytes::of(msg));
         if (!ns) {
             malformed.fetch_add(1, std::memory_order_relaxed);
             return;

@@ -4,12 +4,14 @@
 // on the receiving side, two bridges carrying std_msgs and sensor_msgs both ways, and the
 // suite's timestamp_topic_prefix stamps joining into complete samples.
 #include "bridge/referencebridge.h"
+#include "common/wallclock.h"
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "latency/latencyengine.h"
 #include "latency/stampcodec.h"
 #include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttlink.h"
+#include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"
 
@@ -17,7 +19,6 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
-#include <ros/serialization.h>
 #include <sensor_msgs/PointCloud2.h>
 
 using namespace Qt::StringLiterals;
@@ -44,14 +45,9 @@ struct Inbox
 
 template<typename M> RosRawMessage rosMessage(const M& message)
 {
-    RosRawMessage m;
-    m.type = QString::fromLatin1(ros::message_traits::DataType<M>::value());
-    m.md5 = QString::fromLatin1(ros::message_traits::MD5Sum<M>::value());
-    m.definition = QString::fromLatin1(ros::message_traits::Definition<M>::value());
-    m.bytes = QByteArray(qsizetype(ros::serialization::serializationLength(message)), Qt::Uninitialized);
-    ros::serialization::OStream out(reinterpret_cast<uint8_t*>(m.bytes.data()), uint32_t(m.bytes.size()));
-    ros::serialization::serialize(out, message);
-    return m;
+    return {RosBytes::of(message), QString::fromLatin1(ros::message_traits::DataType<M>::value()),
+            QString::fromLatin1(ros::message_traits::MD5Sum<M>::value()),
+            QString::fromLatin1(ros::message_traits::Definition<M>::value())};
 }
 
 RosRawMessage fixtureMessage(const QString& name)
@@ -193,7 +189,7 @@ private slots:
                 QCOMPARE(payload.mid(8), expected.mid(8));
                 const std::optional<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
                 QVERIFY(s);
-                QVERIFY(std::abs(s->stampNs - RosEndpoint::wallNs()) < 5'000'000'000LL);
+                QVERIFY(std::abs(s->stampNs - wallClockNs()) < 5'000'000'000LL);
             } else {
                 QCOMPARE(payload, expected);
             }
@@ -230,8 +226,7 @@ private slots:
         QVERIFY(publishUntil(
             [&] {
                 m_mqtt->publish(u"in/pose"_s, pose.bytes, 0, false);
-                m_mqtt->publish(u"in/string"_s, MqttClientWire::stamped(RosEndpoint::wallNs(), text.bytes), 0,
-                                false);
+                m_mqtt->publish(u"in/string"_s, MqttClientWire::stamped(wallClockNs(), text.bytes), 0, false);
                 m_mqtt->publish(u"in/count"_s, "42", 0, false);
             },
             [&] {

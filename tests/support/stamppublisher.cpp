@@ -11,6 +11,7 @@
 // the sum of i exponential delays of mean J µs (stages stay in order, values look measured). It waits (up to
 // 30 s) until every topic has a subscriber, then publishes, and prints "done" when finished.
 #include "latency/stampcodec.h"
+#include "ros/rosbytes.h"
 
 #include <cstdio>
 #include <cstring>
@@ -28,16 +29,6 @@ struct Stream
     ros::Publisher pub;
 };
 
-topic_tools::ShapeShifter shaped(const std::string& md5, const std::string& type,
-                                 const std::string& definition, const QByteArray& bytes)
-{
-    topic_tools::ShapeShifter s;
-    s.morph(md5, type, definition, "");
-    std::vector<uint8_t> buffer(bytes.begin(), bytes.end());
-    ros::serialization::IStream in(buffer.data(), uint32_t(buffer.size()));
-    s.read(in);
-    return s;
-}
 } // namespace
 
 int main(int argc, char** argv)
@@ -76,15 +67,16 @@ int main(int argc, char** argv)
     const std::string type = StampCodec::typeName();
     const std::string definition = StampCodec::definition().toStdString();
     for (Stream& s : streams) {
-        topic_tools::ShapeShifter proto = shaped(md5, type, definition, StampCodec::encodeTimeStamped({}));
+        topic_tools::ShapeShifter proto
+            = RosBytes::shaped(md5, type, definition, StampCodec::encodeTimeStamped({}));
         s.pub = proto.advertise(node, s.topic, 1000);
     }
     std::vector<ros::Publisher> latencyPubs;
     for (const auto& [topic, seconds] : latencies) {
         QByteArray bytes(8, Qt::Uninitialized);
         std::memcpy(bytes.data(), &seconds, 8);
-        topic_tools::ShapeShifter proto
-            = shaped("fdb28210bfa9d7c91146260178d9a584", "std_msgs/Float64", "float64 data\n", bytes);
+        topic_tools::ShapeShifter proto = RosBytes::shaped("fdb28210bfa9d7c91146260178d9a584",
+                                                           "std_msgs/Float64", "float64 data\n", bytes);
         latencyPubs.push_back(proto.advertise(node, topic, 1000));
     }
     const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(30.0);
@@ -119,13 +111,13 @@ int main(int argc, char** argv)
             else if (jitterUs <= 0)
                 extraNs = qint64(i) * (s % 7) * 100'000;
             d.timeNs = d.sampleNs + streams[i].offsetNs + extraNs;
-            streams[i].pub.publish(shaped(md5, type, definition, StampCodec::encodeTimeStamped(d)));
+            streams[i].pub.publish(RosBytes::shaped(md5, type, definition, StampCodec::encodeTimeStamped(d)));
         }
         for (std::size_t i = 0; i < latencyPubs.size(); ++i) {
             QByteArray bytes(8, Qt::Uninitialized);
             std::memcpy(bytes.data(), &latencies[i].second, 8);
-            latencyPubs[i].publish(
-                shaped("fdb28210bfa9d7c91146260178d9a584", "std_msgs/Float64", "float64 data\n", bytes));
+            latencyPubs[i].publish(RosBytes::shaped("fdb28210bfa9d7c91146260178d9a584", "std_msgs/Float64",
+                                                    "float64 data\n", bytes));
         }
         pace.sleep();
     }

@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "testservers.h"
 
+#include "common/loopbackports.h"
+
 #include <csignal>
-#include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
-#include <QTcpServer>
-#include <QTcpSocket>
-#include <QThread>
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -26,27 +24,12 @@ TestServers::~TestServers()
 
 quint16 TestServers::freePort()
 {
-    QTcpServer server;
-    if (!server.listen(QHostAddress::LocalHost, 0))
-        return 0;
-    const quint16 port = server.serverPort();
-    server.close();
-    return port;
+    return LoopbackPorts::freePort();
 }
 
 bool TestServers::waitForPort(quint16 port, int timeoutMs)
 {
-    const QDeadlineTimer deadline(timeoutMs);
-    while (!deadline.hasExpired()) {
-        QTcpSocket socket;
-        socket.connectToHost(QHostAddress::LocalHost, port);
-        if (socket.waitForConnected(200)) {
-            socket.disconnectFromHost();
-            return true;
-        }
-        QThread::msleep(50);
-    }
-    return false;
+    return LoopbackPorts::waitForListener(port, timeoutMs);
 }
 
 std::unique_ptr<QProcess> TestServers::startProcess(const QString& program, const QStringList& args,

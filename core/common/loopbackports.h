@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <functional>
+#include <QtGlobal>
+
+/// Ports on 127.0.0.1 for servers we start ourselves (the demo lab, the tests).
+namespace LoopbackPorts {
+/// A port nothing listens on right now (0 when none could be found).
+quint16 freePort();
+/// Waits until something accepts connections on `port`, at most `timeoutMs` and while
+/// `keepWaiting` (if given) holds.
+bool waitForListener(quint16 port, int timeoutMs, const std::function<bool()>& keepWaiting = {});
+} // namespace LoopbackPorts
