@@ -4,6 +4,7 @@
 #include "bridgedtopicsproxy.h"
 #include "common/livesession.h"
 #include "common/mappinghealth.h"
+#include "common/wallclock.h"
 #include "config/configdocument.h"
 #include "config/mappingfactory.h"
 #include "config/mappingmodel.h"
@@ -32,15 +33,6 @@
 #include <QVBoxLayout>
 
 using namespace Qt::StringLiterals;
-
-namespace {
-qint64 wallNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-} // namespace
 
 MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
     : QWidget(parent)
@@ -389,7 +381,7 @@ void MapPage::updateBridgedTopics()
 
 void MapPage::updateHealth()
 {
-    const qint64 now = wallNs();
+    const qint64 now = wallClockNs();
     const QHash<QString, RosMonitorStats> monitored = m_session->rosMonitor()->snapshot(now);
     MappingHealthEvaluator::Inputs in;
     in.graph = &m_session->rosGraph()->graph();
