@@ -263,7 +263,8 @@ struct LinkProbe::Run
 
     bool publish(const QString& topic, const std::string& payload)
     {
-        // With QoS 1 and 2 Paho refuses more than max_inflight unacknowledged messages: wait for room.
+        // Paho refuses more than max_inflight unacknowledged (QoS 1/2) or too many unwritten
+        // messages: wait for room, so an overloaded step shows as a sender falling behind.
         for (;;) {
             switch (link->tryPublish(topic, payload.data(), qsizetype(payload.size()), options.qos, false,
                                      &sendError)) {

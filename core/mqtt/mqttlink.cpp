@@ -211,7 +211,9 @@ MqttLink::Sent MqttLink::tryPublish(const QString& topic, const char* data, qsiz
     try {
         d->client->publish(topic.toStdString(), data, std::size_t(size), qos, retained);
     } catch (const mqtt::exception& e) {
-        if (e.get_return_code() == MQTTASYNC_MAX_MESSAGES_INFLIGHT)
+        // The in-flight window (QoS 1/2) or the queue of messages not yet written is full.
+        if (e.get_return_code() == MQTTASYNC_MAX_MESSAGES_INFLIGHT
+            || e.get_return_code() == MQTTASYNC_MAX_BUFFERED_MESSAGES)
             return Sent::Full;
         if (error)
             *error = tr("cannot publish on %1: %2").arg(topic, QString::fromStdString(e.what()));

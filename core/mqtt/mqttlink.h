@@ -57,7 +57,8 @@ public:
     bool subscribeAndWait(const QString& filter, int qos, int timeoutMs, QString* error);
     bool publish(const QString& topic, const QByteArray& payload, int qos, bool retained);
     enum class Sent { Ok, Full, Failed };
-    /// publish() that tells a full in-flight window (QoS 1/2: try again soon) from a failure.
+    /// publish() that tells a full window (QoS 1/2 in flight, or messages not yet written: try
+    /// again soon) from a failure.
     Sent tryPublish(const QString& topic, const char* data, qsizetype size, int qos, bool retained,
                     QString* error = nullptr);
     /// Disconnects cleanly (the broker does not send the last will).
