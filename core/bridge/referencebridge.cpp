@@ -132,6 +132,8 @@ struct Route
     RosMsgTypeInfo announced;
     bool haveType = false;
     int publisher = -1;
+    bool advertiseFailed = false; ///< not retried for every message, only when the type changes
+    quint64 typeChanges = 0;
     int latencyPublisher = -1;
     int stampIn = -1;
     int stampOut = -1;
@@ -282,15 +284,13 @@ struct ReferenceBridge::Private
         }
         {
             std::lock_guard<std::mutex> lock(r.mutex);
-            if (r.publisher < 0 || (r.primitive && !r.haveType)
-                || (r.primitive && r.announced.md5 != msg.md5)) {
-                QString error;
-                r.publisher = ros->advertise(r.rosTopic, msg.type, msg.md5, msg.definition, r.queueSize,
-                                             r.latched, &error);
+            if (r.primitive && (!r.haveType || r.announced.md5 != msg.md5)) {
+                // A primitive's type follows its text ("42", then "hello"): advertised anew.
                 r.announced = {msg.md5, msg.type, msg.definition, false};
                 r.haveType = true;
-                if (r.publisher < 0)
-                    log(tr("cannot publish %1 on %2: %3").arg(msg.type, r.rosTopic, error));
+                advertiseAnnounced(r);
+            } else if (r.publisher < 0 && !r.advertiseFailed) {
+                advertiseAnnounced(r);
             }
             publisher = r.publisher;
         }
@@ -305,6 +305,36 @@ struct ReferenceBridge::Private
             std::memcpy(bytes.data(), &seconds, 8);
             ros->publish(r.latencyPublisher, bytes);
         }
+    }
+
+    /// (Re)advertises `r.rosTopic` with the announced type, retiring the publisher of the type
+    /// before: roscpp refuses a second type on one topic. Called with `r.mutex` held.
+    void advertiseAnnounced(Route& r)
+    {
+        if (r.publisher >= 0) {
+            ros->retire(r.publisher);
+            r.publisher = -1;
+            ++r.typeChanges;
+        }
+        QString error;
+        const RosMsgTypeInfo& t = r.announced;
+        r.publisher = ros->advertise(r.rosTopic, t.name, t.md5, t.definition, r.queueSize, r.latched, &error);
+        r.advertiseFailed = r.publisher < 0;
+        // Anyone on the broker can flip a topic's type with every message: the first changes are
+        // logged, the rest only counted.
+        constexpr quint64 kLoggedChanges = 5;
+        if (r.typeChanges > kLoggedChanges)
+            return;
+        if (r.publisher < 0)
+            log(tr("cannot publish %1 on %2: %3").arg(t.name, r.rosTopic, error));
+        else if (r.typeChanges == 0)
+            log(tr("MQTT %1 -> ROS %2 (%3%4)")
+                    .arg(r.mqttTopic, r.rosTopic, t.name, t.stamped ? tr(", stamped") : QString()));
+        else
+            log(tr("MQTT %1 -> ROS %2: the type changed to %3%4")
+                    .arg(r.mqttTopic, r.rosTopic, t.name,
+                         r.typeChanges == kLoggedChanges ? tr(" (further changes are not logged)")
+                                                         : QString()));
     }
 
     // Paho thread: a type announcement for an mqtt2ros route.
@@ -322,16 +352,8 @@ struct ReferenceBridge::Private
         const bool changed = r.haveType && (r.announced.md5 != info->md5 || r.announced.name != info->name);
         r.announced = *info;
         r.haveType = true;
-        if (r.publisher < 0 || changed) {
-            r.publisher = ros->advertise(r.rosTopic, info->name, info->md5, info->definition, r.queueSize,
-                                         r.latched, &error);
-            if (r.publisher < 0)
-                log(tr("cannot publish %1 on %2: %3").arg(info->name, r.rosTopic, error));
-            else
-                log(tr("MQTT %1 -> ROS %2 (%3%4)")
-                        .arg(r.mqttTopic, r.rosTopic, info->name,
-                             info->stamped ? tr(", stamped") : QString()));
-        }
+        if (r.publisher < 0 || changed)
+            advertiseAnnounced(r);
         if (info->stamped && r.latencyPublisher < 0) {
             const QString topic = ros->resolve(u"~/latencies/"_s + r.rosTopic);
             r.latencyPublisher
@@ -399,8 +421,11 @@ bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QStri
         if (tls)
             p.caFile = setting(OptionScope::Broker, u"tls.ca_certificate"_s);
     }
-    p.username = setting(OptionScope::Broker, u"user"_s);
-    p.password = setting(OptionScope::Broker, u"pass"_s);
+    // Credentials in a --broker URL win over the config's, as its host and port do.
+    if (p.username.isEmpty() && p.password.isEmpty()) {
+        p.username = setting(OptionScope::Broker, u"user"_s);
+        p.password = setting(OptionScope::Broker, u"pass"_s);
+    }
     p.clientId = setting(OptionScope::Client, u"id"_s);
     p.cleanSession = setting(OptionScope::Client, u"clean_session"_s) != u"false"_s;
     p.keepAliveSeconds = qMax(1, int(setting(OptionScope::Client, u"keep_alive_interval"_s).toDouble()));
@@ -462,6 +487,7 @@ bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QStri
 bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* error)
 {
     d->ros = std::make_unique<RosEndpoint>();
+    d->ros->setNoticeHandler(d->log);
     const QString name = d->options.nodeName.isEmpty() ? u"mqtt_client"_s : d->options.nodeName;
     d->log(tr("waiting for the ROS master…"));
     if (!d->ros->start(name, d->options.rosMaster, keepWaiting, error))

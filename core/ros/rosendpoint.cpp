@@ -3,7 +3,9 @@
 
 #include "common/wallclock.h"
 #include "rosbytes.h"
+#include "rosreregistration.h"
 
+#include <condition_variable>
 #include <map>
 #include <mutex>
 #include <ros/ros.h>
@@ -24,7 +26,38 @@ struct RosEndpoint::Private
         ros::Publisher pub;
         std::string type, md5, definition;
     };
-    std::vector<Publisher> publishers;
+    std::vector<Publisher> publishers; ///< retired ones have an empty `pub`
+    std::vector<int> freeIds; ///< retired slots, reused so that type changes do not grow the table
+
+    // Watches the master: a restarted one is told about our topics again.
+    std::thread watch;
+    std::mutex watchMutex;
+    std::condition_variable watchWake;
+    bool watchStop = false;
+    std::function<void(const QString&)> notice; ///< set before start()
+
+    void watchMaster()
+    {
+        std::unique_lock<std::mutex> lock(watchMutex);
+        bool wasAway = false;
+        while (!watchWake.wait_for(lock, std::chrono::seconds(1), [this] { return watchStop; })) {
+            lock.unlock();
+            QString detail;
+            const RosReregistration::Result r = RosReregistration::check(&detail);
+            if (notice) {
+                if (r == RosReregistration::Result::MasterUnreachable && !wasAway)
+                    notice(RosEndpoint::tr("the ROS master does not answer; waiting for it"));
+                else if (r == RosReregistration::Result::Reregistered)
+                    notice(RosEndpoint::tr("the ROS master was restarted: %1").arg(detail));
+                else if (r == RosReregistration::Result::Failed)
+                    notice(RosEndpoint::tr("cannot register with the ROS master again: %1").arg(detail));
+                else if (r == RosReregistration::Result::Registered && wasAway)
+                    notice(RosEndpoint::tr("the ROS master answers again"));
+            }
+            wasAway = r == RosReregistration::Result::MasterUnreachable;
+            lock.lock();
+        }
+    }
 };
 
 RosEndpoint::RosEndpoint()
@@ -58,6 +91,8 @@ bool RosEndpoint::start(const QString& name, const QString& masterUri,
         // Two spinner threads: a big message being forwarded does not hold up the small ones.
         d->spinner = std::make_unique<ros::AsyncSpinner>(2);
         d->spinner->start();
+        d->watchStop = false;
+        d->watch = std::thread([p = d.get()] { p->watchMaster(); });
     } catch (const ros::Exception& e) {
         if (error)
             *error = QString::fromStdString(e.what());
@@ -70,15 +105,29 @@ void RosEndpoint::shutdown()
 {
     if (!d->node)
         return;
+    if (d->watch.joinable()) {
+        {
+            std::lock_guard<std::mutex> lock(d->watchMutex);
+            d->watchStop = true;
+        }
+        d->watchWake.notify_all();
+        d->watch.join();
+    }
     if (d->spinner)
         d->spinner->stop();
     d->subscribers.clear();
     {
         std::lock_guard<std::mutex> lock(d->mutex);
         d->publishers.clear();
+        d->freeIds.clear();
     }
     d->node.reset();
     ros::shutdown();
+}
+
+void RosEndpoint::setNoticeHandler(std::function<void(const QString&)> notice)
+{
+    d->notice = std::move(notice);
 }
 
 QString RosEndpoint::nodeName() const
@@ -149,9 +198,37 @@ int RosEndpoint::advertise(const QString& topic, const QString& type, const QStr
             *error = QString::fromStdString(e.what());
         return -1;
     }
+    // roscpp answers a second advertisement of a topic with another type by an invalid publisher
+    // (and a log line); publishing on it aborts a Debug build.
+    if (!p.pub) {
+        if (error)
+            *error = tr("this node already publishes %1 with another type").arg(topic);
+        return -1;
+    }
     std::lock_guard<std::mutex> lock(d->mutex);
+    if (!d->freeIds.empty()) {
+        const int id = d->freeIds.back();
+        d->freeIds.pop_back();
+        d->publishers[std::size_t(id)] = std::move(p);
+        return id;
+    }
     d->publishers.push_back(std::move(p));
     return int(d->publishers.size()) - 1;
+}
+
+void RosEndpoint::retire(int publisher)
+{
+    ros::Publisher old;
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        if (publisher < 0 || std::size_t(publisher) >= d->publishers.size()
+            || !d->publishers[std::size_t(publisher)].pub)
+            return;
+        old = std::move(d->publishers[std::size_t(publisher)].pub);
+        d->publishers[std::size_t(publisher)].pub = ros::Publisher();
+        d->freeIds.push_back(publisher);
+    }
+    old.shutdown(); // unregisters from the master: outside our lock
 }
 
 bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
@@ -160,6 +237,8 @@ bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
     if (publisher < 0 || std::size_t(publisher) >= d->publishers.size())
         return false;
     const Private::Publisher& p = d->publishers[std::size_t(publisher)];
+    if (!p.pub)
+        return false;
     try {
         p.pub.publish(RosBytes::shaped(p.md5, p.type, p.definition, bytes));
     } catch (const ros::Exception&) {
@@ -171,7 +250,8 @@ bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
 int RosEndpoint::subscriberCount(int publisher) const
 {
     std::lock_guard<std::mutex> lock(d->mutex);
-    if (publisher < 0 || std::size_t(publisher) >= d->publishers.size())
+    if (publisher < 0 || std::size_t(publisher) >= d->publishers.size()
+        || !d->publishers[std::size_t(publisher)].pub)
         return 0;
     return int(d->publishers[std::size_t(publisher)].pub.getNumSubscribers());
 }

@@ -39,15 +39,21 @@ public:
     bool start(const QString& name, const QString& masterUri, const std::function<bool()>& keepWaiting,
                QString* error);
     void shutdown();
+    /// Gets a line when the node registers again with a restarted master (on a thread of its own).
+    void setNoticeHandler(std::function<void(const QString& line)> notice);
     /// The node's full name, e.g. "/mqtt_client".
     QString nodeName() const;
     /// `name` resolved as roscpp does ("~/x" is private to the node, "//" collapses).
     QString resolve(const QString& name) const;
 
     bool subscribe(const QString& topic, int queueSize, Handler handler, QString* error);
-    /// Advertises `topic` with the given type; returns a publisher id, or -1 with `error`.
+    /// Advertises `topic` with the given type; returns a publisher id, or -1 with `error` (also when
+    /// roscpp refuses it: a topic this node already publishes with another type).
     int advertise(const QString& topic, const QString& type, const QString& md5, const QString& definition,
                   int queueSize, bool latched, QString* error);
+    /// Stops publishing with `publisher` (its topic can then be advertised with another type); the id
+    /// is invalid afterwards and may be handed out again.
+    void retire(int publisher);
     bool publish(int publisher, const QByteArray& bytes);
     int subscriberCount(int publisher) const;
 

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "rosnode.h"
 
+#include "rosreregistration.h"
+
 #include <map>
 #include <mutex>
 #include <QObject>
 #include <QThread>
+#include <QTimer>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 
@@ -23,6 +26,7 @@ struct RosNode::Private
     std::unique_ptr<ros::NodeHandle> node;
     std::unique_ptr<ros::AsyncSpinner> spinner;
     QString masterUri; ///< touched on the worker only
+    QTimer* masterWatch = nullptr; ///< on the worker: registers again with a restarted master
     std::mutex hookMutex;
     std::map<int, std::function<void()>> hooks;
     int nextHook = 1;
@@ -46,6 +50,16 @@ struct RosNode::Private
         node->setCallbackQueue(&queue);
         spinner = std::make_unique<ros::AsyncSpinner>(1, &queue);
         spinner->start();
+        if (!masterWatch) {
+            // A restarted master has forgotten our subscriptions; roscpp would never tell it again.
+            masterWatch = new QTimer(worker);
+            masterWatch->setInterval(1000);
+            QObject::connect(masterWatch, &QTimer::timeout, worker, [this] {
+                if (node)
+                    RosReregistration::check();
+            });
+            masterWatch->start();
+        }
     }
 
     void runHooks()

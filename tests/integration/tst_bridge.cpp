@@ -13,6 +13,7 @@
 #include "mqtt/mqttlink.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
+#include "ros/rosmasterapi.h"
 #include "testservers.h"
 
 #include <mutex>
@@ -411,6 +412,117 @@ private slots:
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"bridge"_s, m_dir.filePath(u"missing.yaml"_s)});
         QVERIFY(p.waitForFinished(10000));
         QCOMPARE(p.exitCode(), 2);
+    }
+
+    /// The type the master lists for `topic`, and who publishes it.
+    RosTopicInfo masterTopic(const QString& topic)
+    {
+        const std::optional<RosGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
+        const RosTopicInfo* t = g ? g->topic(topic) : nullptr;
+        return t ? *t : RosTopicInfo();
+    }
+
+    // Regression (issue 11, crashes 1 and 2): any client on the broker could kill a bridge by
+    // announcing another type for a mapped topic, or by sending "hello" after "42" on a primitive
+    // one: roscpp refused the second advertisement and the bridge published on the invalid
+    // publisher (an abort in a Debug build). Now the old publisher is retired first and the topic
+    // is advertised with the new type. (A subscriber keeps the type it first saw, as in roscpp:
+    // the new type is checked at the master.)
+    void typeChangesFromTheBrokerAreFollowedNotFatal()
+    {
+        auto p = bridge("bridge:\n  mqtt2ros:\n"
+                        "    - {mqtt_topic: evil/in, ros_topic: /evil_in}\n"
+                        "    - {mqtt_topic: evil/prim, ros_topic: /evil_prim, primitive: true}\n",
+                        u"evil"_s, true);
+        listenRos(u"/evil_in"_s);
+        const RosRawMessage header = fixtureMessage(u"header"_s);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/evil/in"_s,
+                        Fixtures::read(u"mqtt_client/wire/header.type.bin"_s), 0, true);
+        QVERIFY(publishUntil([&] { m_mqtt->publish(u"evil/in"_s, header.bytes, 0, false); },
+                             [&] { return !m_fromRos.on(u"/evil_in"_s).isEmpty(); }));
+        QCOMPARE(m_fromRos.on(u"/evil_in"_s).last(), header.bytes);
+        for (const QString& name : {u"pose"_s, u"header"_s, u"pose"_s}) {
+            const RosRawMessage m = fixtureMessage(name);
+            m_mqtt->publish(u"mqtt_client/ros_msg_type/evil/in"_s,
+                            Fixtures::read(u"mqtt_client/wire/"_s + name + u".type.bin"_s), 0, true);
+            QVERIFY2(publishUntil([&] { m_mqtt->publish(u"evil/in"_s, m.bytes, 0, false); },
+                                  [&] { return masterTopic(u"/evil_in"_s).type == m.type; }),
+                     qPrintable(name));
+        }
+        for (const auto& [text, type] : {std::pair {QByteArray("42"), u"std_msgs/Int32"_s},
+                                         {QByteArray("hello"), u"std_msgs/String"_s},
+                                         {QByteArray("2.5"), u"std_msgs/Float64"_s},
+                                         {QByteArray("7"), u"std_msgs/Int32"_s}}) {
+            QVERIFY2(publishUntil([&] { m_mqtt->publish(u"evil/prim"_s, text, 0, false); },
+                                  [&] { return masterTopic(u"/evil_prim"_s).type == type; }),
+                     text.constData());
+        }
+        QCOMPARE(p->state(), QProcess::Running);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/evil/in"_s, QByteArray(), 0,
+                        true); // clears the retained one
+        p->terminate();
+        QVERIFY(p->waitForFinished(10000));
+        QCOMPARE(p->exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p->exitCode(), 0);
+        const QString log = QString::fromUtf8(p->readAllStandardError());
+        QVERIFY2(log.contains(u"the type changed to std_msgs/String"_s), qPrintable(log));
+    }
+
+    // Regression (issue 11): after a ROS master restart the bridge never registered again: nodes
+    // started (or restarted) after it never found it, 0 messages either way, while it kept
+    // counting. Each round restarts the master and then connects anew on both ROS sides, as a
+    // restarted node would: a new publisher for the bridge to subscribe to, and a new subscriber
+    // process (rostopic) that must learn of the bridge's publication from the new master.
+    void aRestartedMasterIsToldAboutTheBridgeAgain()
+    {
+        auto p
+            = bridge("bridge:\n  ros2mqtt:\n    - {ros_topic: /mr/out, mqtt_topic: mr/out, primitive: true}\n"
+                     "  mqtt2ros:\n    - {mqtt_topic: mr/in, ros_topic: /mr/in, primitive: true}\n",
+                     u"restart"_s, true);
+        QString log;
+        const auto readLog = [&] { log += QString::fromUtf8(p->readAllStandardError()); };
+        const RosRawMessage text = PrimitiveText::fromText("through");
+        for (int round = 0; round < 3; ++round) {
+            if (round > 0) {
+                const quint16 port = m_servers.rosMasterPort();
+                m_servers.stopRosMaster();
+                QVERIFY2(m_servers.startRosMasterOnPort(port), qPrintable(m_servers.errorString()));
+            }
+            // ROS -> MQTT through a publisher that did not exist before the restart.
+            const int pub = advertise(u"/mr/out"_s, text);
+            {
+                std::lock_guard<std::mutex> lock(m_fromMqtt.mutex);
+                m_fromMqtt.messages.remove(u"mr/out"_s);
+            }
+            QVERIFY2(publishUntil([&] { m_ros.publish(pub, text.bytes); },
+                                  [&] { return !m_fromMqtt.on(u"mr/out"_s).isEmpty(); }),
+                     qPrintable(u"round %1 ROS -> MQTT; bridge log:\n"_s.arg(round) + (readLog(), log)));
+            m_ros.retire(pub);
+            // MQTT -> ROS into a subscriber that did not exist before the restart.
+            QProcess echo;
+            echo.setProcessEnvironment(m_servers.rosEnvironment());
+            echo.start(u"/usr/bin/python3"_s,
+                       {u"/usr/bin/rostopic"_s, u"echo"_s, u"-n"_s, u"1"_s, u"/mr/in"_s});
+            QVERIFY(echo.waitForStarted());
+            const bool arrived = publishUntil([&] { m_mqtt->publish(u"mr/in"_s, "back", 0, false); },
+                                              [&] { return echo.state() == QProcess::NotRunning; });
+            const QString echoed
+                = QString::fromUtf8(echo.readAllStandardOutput() + echo.readAllStandardError());
+            if (!arrived) {
+                echo.kill();
+                echo.waitForFinished();
+            }
+            readLog();
+            QVERIFY2(
+                arrived && echoed.contains(u"data: \"back\""_s),
+                qPrintable(u"round %1 MQTT -> ROS: "_s.arg(round) + echoed + u"\nbridge log:\n"_s + log));
+        }
+        QCOMPARE(p->state(), QProcess::Running);
+        p->terminate();
+        QVERIFY(p->waitForFinished(10000));
+        readLog();
+        QVERIFY2(log.contains(u"the ROS master was restarted"_s), qPrintable(log));
+        QCOMPARE(p->exitCode(), 0);
     }
 };
 
