@@ -204,7 +204,7 @@ void MqttConnection::scheduleRetry(const QString& why)
 {
     setState(State::Reconnecting, tr("%1; retrying in %2 s").arg(why).arg(d->retrySeconds));
     d->retry.start(d->retrySeconds * 1000);
-    d->retrySeconds = std::min(d->retrySeconds * 2, 30);
+    d->retrySeconds = std::min(d->retrySeconds * 2, PahoOptions::kMaxRetrySeconds);
 }
 
 void MqttConnection::startClient()
@@ -255,9 +255,10 @@ void MqttConnection::startClient()
                     QMetaObject::invokeMethod(c, "onConnected", Qt::DirectConnection);
                 });
             });
-            d->client->set_connection_lost_handler([shared](const std::string& cause) {
+            d->client->set_connection_lost_handler([shared, client](const std::string& cause) {
                 if (!shared->alive)
                     return;
+                PahoOptions::reconnectNow(*client);
                 const QString why = cause.empty() ? tr("connection lost") : QString::fromStdString(cause);
                 shared->post(shared, [why](MqttConnection* c) {
                     QMetaObject::invokeMethod(c, "onConnectionLost", Qt::DirectConnection,

@@ -21,6 +21,7 @@ struct MqttLink::Private
     std::function<void(const QString&)> onLost;
     std::vector<std::pair<std::string, int>> subscriptions;
     int connects = 0;
+    bool closing = false; ///< disconnect() has begun: no reconnect from a late callback
 
     void subscribeAll()
     {
@@ -136,15 +137,20 @@ bool MqttLink::connect(int timeoutMs, QString* error)
             if (handler)
                 handler(reconnect);
         });
-        d->client->set_connection_lost_handler([weak](const std::string& cause) {
+        mqtt::async_client* client = d->client.get(); // outlives its callbacks
+        d->client->set_connection_lost_handler([weak, client](const std::string& cause) {
             auto self = weak.lock();
             if (!self)
                 return;
             std::function<void(const QString&)> handler;
+            bool retry = false;
             {
                 std::lock_guard<std::mutex> lock(self->mutex);
                 handler = self->onLost;
+                retry = self->options.autoReconnect && !self->closing;
             }
+            if (retry)
+                PahoOptions::reconnectNow(*client);
             if (handler)
                 handler(QString::fromStdString(cause));
         });
@@ -231,6 +237,7 @@ void MqttLink::disconnect()
         d->onMessage = nullptr;
         d->onConnected = nullptr;
         d->onLost = nullptr;
+        d->closing = true;
     }
     try {
         if (d->client->is_connected())

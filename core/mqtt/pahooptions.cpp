@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "pahooptions.h"
 
+#include <mqtt/async_client.h>
 #include <QUuid>
 
 using namespace Qt::StringLiterals;
@@ -18,7 +19,7 @@ mqtt::connect_options_builder connectOptions(const MqttProfile& p)
 {
     auto builder = mqtt::connect_options_builder();
     builder.keep_alive_interval(std::chrono::seconds(std::max(1, p.keepAliveSeconds)))
-        .automatic_reconnect(std::chrono::seconds(1), std::chrono::seconds(30))
+        .automatic_reconnect(std::chrono::seconds(1), std::chrono::seconds(kMaxRetrySeconds))
         .connect_timeout(std::chrono::seconds(5));
     if (p.mqttVersion == 5)
         builder.mqtt_version(MQTTVERSION_5).clean_start(p.cleanSession);
@@ -43,6 +44,15 @@ mqtt::connect_options_builder connectOptions(const MqttProfile& p)
         builder.ssl(std::move(ssl));
     }
     return builder;
+}
+
+void reconnectNow(mqtt::async_client& client)
+{
+    try {
+        client.reconnect();
+    } catch (const mqtt::exception&) {
+        // Not connected before, or reconnecting already: the scheduled attempts go on.
+    }
 }
 
 } // namespace PahoOptions

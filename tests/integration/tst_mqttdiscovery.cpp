@@ -3,6 +3,7 @@
 // client certificates, passwords, a broker that dies and comes back, large and binary payloads.
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
+#include "mqtt/mqttlink.h"
 #include "mqtt/mqtttopictree.h"
 #include "testservers.h"
 #include "tlsfiles.h"
@@ -217,6 +218,37 @@ private slots:
             ten);
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"r/t"_s), 20u, 10000);
         QCOMPARE(d.connection.received(), 20u);
+    }
+
+    // Regression (issue 11): the wait between connection attempts doubled up to 30 s, so the
+    // first connection came up to 30 s after the broker was there (22 s for discover), and a
+    // bridge was offline 43 of 48 s through repeated restarts. The wait is now capped at 2 s and
+    // the first attempt after a loss is immediate. A discovery started while the broker is away
+    // for 16 s (when the old wait had grown to 16 s) connects within 8 s of its start; then the
+    // broker restarts three times and the discovery and a bridge's MqttLink are back within 5 s
+    // each time.
+    void aLongOutageDoesNotStretchTheReconnect()
+    {
+        TestServers servers;
+        const quint16 port = TestServers::freePort();
+        Discovery d;
+        d.open(MqttProfile::fromUrl(u"tcp://127.0.0.1:%1"_s.arg(port)));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connection.state() == MqttConnection::State::Reconnecting, 5000);
+        QTest::qWait(16000);
+        QVERIFY(servers.startMosquittoOnPort(port));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 8000);
+
+        MqttLink link(MqttProfile::fromUrl(servers.brokerUrl()));
+        QString error;
+        QVERIFY2(link.connect(5000, &error), qPrintable(error));
+        for (int restart = 0; restart < 3; ++restart) {
+            servers.stopMosquitto();
+            QTRY_VERIFY_WITH_TIMEOUT(!d.connected() && !link.isConnected(), 5000);
+            QTest::qWait(3000);
+            QVERIFY(servers.startMosquittoOnPort(port));
+            QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 5000);
+            QTRY_VERIFY_WITH_TIMEOUT(link.isConnected(), 5000);
+        }
     }
 
     void largeAndBinaryPayloadsAreKeptWhole()
