@@ -108,15 +108,17 @@ QLineEdit* MqttProfileDialog::fileField(const QString& text, const QString& titl
 
 MqttProfile MqttProfileDialog::profile() const
 {
-    MqttProfile p;
-    p.name = m_name->text().trimmed().isEmpty() ? m_url->text().trimmed() : m_name->text().trimmed();
-    p.url = m_url->text().trimmed();
+    // user:password@ typed into the URL fill the fields (when empty) and leave the URL.
+    MqttProfile p = MqttProfile::fromUrl(m_url->text().trimmed());
+    p.name = m_name->text().trimmed().isEmpty() ? p.url : m_name->text().trimmed();
     p.mqttVersion = m_version->currentData().toInt();
     p.clientId = m_clientId->text().trimmed();
     p.keepAliveSeconds = m_keepAlive->value();
     p.cleanSession = m_clean->isChecked();
-    p.username = m_user->text();
-    p.password = m_password->text();
+    if (!m_user->text().isEmpty() || p.username.isEmpty())
+        p.username = m_user->text();
+    if (!m_password->text().isEmpty() || p.password.isEmpty())
+        p.password = m_password->text();
     p.caFile = m_ca->text().trimmed();
     p.certFile = m_cert->text().trimmed();
     p.keyFile = m_key->text().trimmed();

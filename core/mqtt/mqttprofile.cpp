@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttprofile.h"
 
+#include "common/secrets.h"
 #include "config/configvalidator.h"
 
 #include <QSettings>
@@ -72,9 +73,23 @@ QString MqttProfile::pahoUri() const
 MqttProfile MqttProfile::fromUrl(const QString& url)
 {
     MqttProfile p;
-    p.url = url;
-    p.name = url;
+    p.url = withoutCredentials(url);
+    p.name = p.url;
+    if (p.url.size() != url.size()) {
+        // What was taken out is "user[:password]@", percent-encoded as URLs are.
+        const qsizetype start = url.indexOf(u"://"_s) + 3;
+        const QString userInfo = url.mid(start, url.size() - p.url.size() - 1);
+        const qsizetype colon = userInfo.indexOf(u':');
+        p.username = QUrl::fromPercentEncoding(userInfo.left(colon < 0 ? userInfo.size() : colon).toUtf8());
+        if (colon >= 0)
+            p.password = QUrl::fromPercentEncoding(userInfo.mid(colon + 1).toUtf8());
+    }
     return p;
+}
+
+QString MqttProfile::withoutCredentials(const QString& url)
+{
+    return Secrets::urlWithoutCredentials(url);
 }
 
 QList<MqttProfile> ProfileStore::load()
@@ -112,8 +127,9 @@ void ProfileStore::save(const QList<MqttProfile>& profiles)
     for (int i = 0; i < profiles.size(); ++i) {
         s.setArrayIndex(i);
         const MqttProfile& p = profiles[i];
-        s.setValue(u"name"_s, p.name);
-        s.setValue(u"url"_s, p.url);
+        // A URL typed with user:password@ keeps them out of the settings file.
+        s.setValue(u"name"_s, MqttProfile::withoutCredentials(p.name));
+        s.setValue(u"url"_s, MqttProfile::withoutCredentials(p.url));
         s.setValue(u"mqttVersion"_s, p.mqttVersion);
         s.setValue(u"clientId"_s, p.clientId);
         s.setValue(u"keepAlive"_s, p.keepAliveSeconds);

@@ -35,7 +35,11 @@ struct MqttProfile
     bool validate(QString* error) const;
     /// The URL with the scheme Paho understands (mqtt:// -> tcp://, mqtts:// -> ssl://).
     QString pahoUri() const;
+    /// A profile for `url`; credentials in it (`tcp://user:pass@host`) move to username and
+    /// password, so that the URL, which is shown, logged and stored, never holds them.
     static MqttProfile fromUrl(const QString& url);
+    /// `url` without user and password.
+    static QString withoutCredentials(const QString& url);
 };
 
 /// Saved connection profiles (QSettings), without any password.

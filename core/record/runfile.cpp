@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "runfile.h"
 
+#include "common/secrets.h"
 #include "latency/latencyengine.h"
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -15,6 +17,8 @@
 #include <QSqlQuery>
 #include <QUuid>
 #include <QVariant>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace Qt::StringLiterals;
 
@@ -129,6 +133,26 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
             *error = tr("%1: cannot create its folder").arg(path);
         return false;
     }
+    // No credential is stored: passwords in the bridge config are redacted, URLs lose their user
+    // info. A run that embeds a private config (or one that held a secret) is private too; the
+    // file is created with its mode before SQLite opens it, so it is never readable by others,
+    // and SQLite gives its journal files the same mode.
+    bool redacted = false;
+    const QByteArray bridgeConfig = Secrets::redactYaml(info.bridgeConfig, &redacted);
+    struct stat configStat
+    {
+    };
+    const bool privateConfig = !info.bridgeConfigPath.isEmpty()
+        && ::stat(QFile::encodeName(info.bridgeConfigPath).constData(), &configStat) == 0
+        && (configStat.st_mode & 0044) == 0;
+    const int fd = ::open(QFile::encodeName(path).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
+                          (redacted || privateConfig) ? 0600 : 0666);
+    if (fd < 0) {
+        if (error)
+            *error = tr("%1: %2").arg(path, qt_error_string(errno));
+        return false;
+    }
+    ::close(fd);
     d->connection = std::make_unique<Connection>(path);
     if (!d->connection->isOpen()) {
         if (error)
@@ -162,14 +186,14 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         {u"stopped_ns"_s, info.stoppedNs},
         {u"host"_s, info.host},
         {u"version"_s, info.version},
-        {u"ros_master"_s, info.rosMaster},
-        {u"broker"_s, info.broker},
+        {u"ros_master"_s, Secrets::urlWithoutCredentials(info.rosMaster)},
+        {u"broker"_s, Secrets::urlWithoutCredentials(info.broker)},
         {u"source"_s, info.source},
         {u"pipeline"_s, QString::fromUtf8(info.pipeline.toYaml())},
         {u"window"_s, info.window},
         {u"timeout_ns"_s, info.timeoutNs},
         {u"bridge_config_path"_s, info.bridgeConfigPath},
-        {u"bridge_config"_s, QString::fromUtf8(info.bridgeConfig)},
+        {u"bridge_config"_s, QString::fromUtf8(bridgeConfig)},
     };
     for (const auto& [key, value] : meta)
         if (!setMeta(key, value, error))
@@ -324,13 +348,14 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
     info.stoppedNs = meta.value(u"stopped_ns"_s).toLongLong();
     info.host = metaText(meta, u"host"_s);
     info.version = metaText(meta, u"version"_s);
-    info.rosMaster = metaText(meta, u"ros_master"_s);
-    info.broker = metaText(meta, u"broker"_s);
+    // Runs written before credentials were kept out may hold them: never passed on to a report.
+    info.rosMaster = Secrets::urlWithoutCredentials(metaText(meta, u"ros_master"_s));
+    info.broker = Secrets::urlWithoutCredentials(metaText(meta, u"broker"_s));
     info.source = metaText(meta, u"source"_s);
     info.window = meta.value(u"window"_s).toLongLong();
     info.timeoutNs = meta.value(u"timeout_ns"_s, 5'000'000'000LL).toLongLong();
     info.bridgeConfigPath = metaText(meta, u"bridge_config_path"_s);
-    info.bridgeConfig = metaText(meta, u"bridge_config"_s).toUtf8();
+    info.bridgeConfig = Secrets::redactYaml(metaText(meta, u"bridge_config"_s).toUtf8());
     QString why;
     const std::optional<Pipeline> pipeline = Pipeline::fromYaml(metaText(meta, u"pipeline"_s).toUtf8(), &why);
     if (!pipeline)
