@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "runloader.h"
 
-#include "ros/rosbagimport.h"
+#include "bagreaderprocess.h"
 #include "suitecsv.h"
 
 #include <QFileInfo>
@@ -12,7 +12,7 @@ RunLoader::Kind RunLoader::kindOf(const QString& path)
 {
     if (RunFile::looksLikeRun(path))
         return Kind::Run;
-    if (RosbagImport::looksLikeBag(path))
+    if (BagReaderProcess::looksLikeBag(path))
         return Kind::Bag;
     return Kind::SuiteCsv;
 }
@@ -37,7 +37,7 @@ std::optional<RunData> RunLoader::load(const QString& path, const Options& optio
     if (kind == Kind::Run)
         return RunFile::read(path, error, progress);
     if (kind == Kind::Bag)
-        return RosbagImport::read(path, error, progress);
+        return BagReaderProcess::read(path, error, progress); // rosbag crashes on damaged bags: never here
     std::optional<SuiteCsv::Data> csv = SuiteCsv::read(path, error);
     if (!csv)
         return std::nullopt;
