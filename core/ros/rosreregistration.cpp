@@ -47,20 +47,23 @@ std::vector<std::pair<std::string, std::string>> topicsOf(const XmlRpc::XmlRpcVa
 
 enum class Answer { Yes, No, Unreachable };
 
-/// Calls the master; `No` when it answers with an error code.
+/// Calls the master on a connection of its own; `No` when it answers with an error code.
+/// (Not ros::master::execute: its pooled client stayed unusable after the master was killed while
+/// a call was under way, so a restart was never noticed.)
 Answer askMaster(const std::string& method, const XmlRpc::XmlRpcValue& params, XmlRpc::XmlRpcValue* payload)
 {
+    XmlRpc::XmlRpcClient client(ros::master::getHost().c_str(), int(ros::master::getPort()), "/");
     XmlRpc::XmlRpcValue response;
-    XmlRpc::XmlRpcValue data;
-    if (ros::master::execute(method, params, response, data, false)) {
-        if (payload)
-            *payload = data;
-        return Answer::Yes;
-    }
-    // execute() is false both when nobody answers and when the master says no: tell them apart.
-    const bool answered = response.getType() == XmlRpc::XmlRpcValue::TypeArray && response.size() == 3
-        && response[0].getType() == XmlRpc::XmlRpcValue::TypeInt;
-    return answered ? Answer::No : Answer::Unreachable;
+    const bool ok = client.execute(method.c_str(), params, response);
+    client.close();
+    if (!ok || response.getType() != XmlRpc::XmlRpcValue::TypeArray || response.size() != 3
+        || response[0].getType() != XmlRpc::XmlRpcValue::TypeInt)
+        return Answer::Unreachable;
+    if (int(response[0]) != 1)
+        return Answer::No;
+    if (payload)
+        *payload = response[2];
+    return Answer::Yes;
 }
 
 } // namespace
