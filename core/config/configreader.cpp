@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "configreader.h"
 
+#include "yamllimits.h"
 #include "yamltree.h"
 
 #include <yaml-cpp/yaml.h>
@@ -497,7 +498,11 @@ ConfigReadResult ConfigReader::read(const QByteArray& text)
     Reader r;
     YAML::Node root;
     try {
-        root = YAML::Load(text.toStdString());
+        root = YamlLimits::load(text);
+    } catch (const YamlLimits::Exceeded& e) {
+        const YamlLimits::Violation& v = e.violation;
+        r.problem(Severity::Error, v.code, v.pos, v.message, v.fix);
+        return r.result;
     } catch (const YAML::Exception& e) {
         r.problem(Severity::Error, u"yaml-syntax"_s, {e.mark.line, e.mark.column},
                   tr("YAML syntax error: %1").arg(qs(e.msg)),
