@@ -58,12 +58,31 @@ void noteDropped(QStringList* dropped, const QString& where, const QStringList& 
                     .arg(full.isEmpty() ? u"(the whole file)"_s : full.join(u'.'));
 }
 
+// Whether something other than an empty placeholder is already written at `path` (a known option
+// and an unknown key of the same name: "tls: 5" beside "tls: {enabled: true}").
+bool occupied(YamlTree& tree, const QStringList& path)
+{
+    YamlTree* node = &tree;
+    for (const QString& key : path) {
+        if (node->type() != YamlTree::Type::Map)
+            return false;
+        node = node->find(key);
+        if (!node)
+            return false;
+    }
+    return node->type() == YamlTree::Type::Scalar || node->type() == YamlTree::Type::Raw || !node->isEmpty();
+}
+
+void insertExtra(YamlTree& tree, const ExtraValue& extra, QStringList* dropped, const QString& where)
+{
+    if (occupied(tree, extra.path) || !tree.insertAt(extra.path, YamlTree::raw(extra.yaml)))
+        noteDropped(dropped, where, extra.path);
+}
+
 void insertExtras(YamlTree& tree, const QList<ExtraValue>& extras, QStringList* dropped, const QString& where)
 {
-    for (const ExtraValue& extra : extras) {
-        if (!tree.insertAt(extra.path, YamlTree::raw(extra.yaml)))
-            noteDropped(dropped, where, extra.path);
-    }
+    for (const ExtraValue& extra : extras)
+        insertExtra(tree, extra, dropped, where);
 }
 
 // Options in schema order, then unknown keys where they were.
@@ -85,8 +104,8 @@ void fillBlock(YamlTree& tree, OptionScope scope, const OptionBlock& block, Conf
         // A block that was not a map ("broker: [1, 2]") is kept as it was written.
         if (extra.path.isEmpty() && tree.type() == YamlTree::Type::Map && tree.isEmpty())
             tree = YamlTree::raw(extra.yaml);
-        else if (!tree.insertAt(extra.path, YamlTree::raw(extra.yaml)))
-            noteDropped(dropped, where, extra.path);
+        else
+            insertExtra(tree, extra, dropped, where);
     }
 }
 
@@ -170,10 +189,9 @@ QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes, QStringList
     // Keep mqtt_bridge's own client settings (protocol, ...) that came in as extras.
     QList<ExtraValue> rest;
     for (const ExtraValue& e : cfg.rootExtras) {
-        if (e.path.size() > 1 && e.path.first() == u"mqtt"_s) {
-            if (!mqtt.insertAt(e.path.mid(1), YamlTree::raw(e.yaml)))
-                noteDropped(dropped, QString(), e.path);
-        } else
+        if (e.path.size() > 1 && e.path.first() == u"mqtt"_s)
+            insertExtra(mqtt, {e.path.mid(1), e.yaml}, dropped, u"mqtt"_s);
+        else
             rest << e;
     }
     if (!mqtt.find(u"client"_s) || !mqtt.child(u"client"_s).find(u"protocol"_s))

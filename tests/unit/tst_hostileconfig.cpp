@@ -217,6 +217,33 @@ private slots:
         QVERIFY2(error.contains(u"line 1"_s), qPrintable(error));
     }
 
+    // Regression (issue 11): writing anew lost content without a word: a block that is no map
+    // became "{}", and an unknown key of a known section's name replaced the section's options.
+    void writingAnewKeepsOrNamesWhatItCannotPlace()
+    {
+        for (ConfigLayout layout : {ConfigLayout::Ros1, ConfigLayout::Ros2}) {
+            QStringList notes, dropped;
+            const ConfigReadResult notAMap = read("broker: [1, 2]\n" + okBridge);
+            QString text = ConfigWriter::write(notAMap.config, layout, &notes, &dropped);
+            QVERIFY2(text.contains(u"broker: [1, 2]"_s), qPrintable(text));
+            QVERIFY(dropped.isEmpty());
+
+            const ConfigReadResult twice = read("broker:\n  tls: 5\n  tls:\n    enabled: true\n" + okBridge);
+            QVERIFY(twice.parsed);
+            text = ConfigWriter::write(twice.config, layout, &notes, &dropped);
+            QCOMPARE(read(text.toUtf8()).config.broker.values.text(u"tls.enabled"_s), u"true"_s);
+            QCOMPARE(dropped.size(), 1);
+            QVERIFY2(dropped.first().contains(u"'broker.tls'"_s), qPrintable(dropped.first()));
+        }
+        // Entries the model has no place for are named by the reader, with where they are.
+        const ConfigReadResult r
+            = read("bridge:\n  ros2mqtt:\n    - 5\n    - {ros_topic: /a, mqtt_topic: a}\n");
+        QVERIFY(r.lossy);
+        QCOMPARE(r.dropped.size(), 1);
+        QCOMPARE(r.dropped.first().pos.line, 2);
+        QVERIFY(r.dropped.first().message.contains(u"Entry 1 of 'bridge.ros2mqtt'"_s));
+    }
+
     void validUtf8StaysReadable()
     {
         const QByteArray text = "bridge:\n  ros2mqtt:\n    - ros_topic: /a\n      mqtt_topic: "
