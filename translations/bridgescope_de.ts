@@ -4718,8 +4718,8 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>Verschachteln Sie weniger tief.</translation>
     </message>
     <message>
-        <source>The file is %1 bytes; at most %2 bytes are read.</source>
-        <translation>Die Datei hat %1 Bytes; höchstens %2 Bytes werden gelesen.</translation>
+        <source>The file has more than %1 bytes; at most %1 are read.</source>
+        <translation>Die Datei hat mehr als %1 Bytes; höchstens %1 werden gelesen.</translation>
     </message>
     <message>
         <source>Byte 0x%1 is not valid UTF-8; the file must be UTF-8 text.</source>

@@ -280,10 +280,9 @@ bool YamlLimits::isUtf8(const QByteArray& bytes, qsizetype* badOffset)
 std::optional<YamlLimits::Violation> YamlLimits::check(const QByteArray& text)
 {
     if (text.size() > maxBytes)
-        return Violation {
-            positionOf(text, maxBytes), u"yaml-too-large"_s,
-            tr("The file is %1 bytes; at most %2 bytes are read.").arg(text.size()).arg(maxBytes),
-            tr("Split the file.")};
+        return Violation {positionOf(text, maxBytes), u"yaml-too-large"_s,
+                          tr("The file has more than %1 bytes; at most %1 are read.").arg(maxBytes),
+                          tr("Split the file.")};
     qsizetype bad = 0;
     if (!isUtf8(text, &bad))
         return Violation {positionOf(text, bad), u"invalid-utf8"_s,
