@@ -23,6 +23,46 @@
         <source>cannot replace %1: %2</source>
         <translation>kann %1 nicht ersetzen: %2</translation>
     </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>ein FIFO (eine benannte Pipe)</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>ein zeichenorientiertes Gerät</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>ein blockorientiertes Gerät</translation>
+    </message>
+    <message>
+        <source>a directory</source>
+        <translation>ein Ordner</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>ein Socket</translation>
+    </message>
+    <message>
+        <source>a symbolic link that leads nowhere (a loop)</source>
+        <translation>ein symbolischer Link, der nirgends hinführt (eine Schleife)</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine reguläre Datei</translation>
+    </message>
+    <message>
+        <source>cannot examine %1: %2</source>
+        <translation>%1 kann nicht untersucht werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2, not a regular file; only regular files are written over</source>
+        <translation>%1 ist %2, keine reguläre Datei; überschrieben werden nur reguläre Dateien</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; make it writable or choose another name</source>
+        <translation>%1 ist schreibgeschützt; machen Sie die Datei beschreibbar oder wählen Sie einen anderen Namen</translation>
+    </message>
 </context>
 <context>
     <name>BridgeCommand</name>
@@ -109,6 +149,10 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <source>Run '%1 --help' for usage.</source>
         <translation>'%1 --help' zeigt die Verwendung.</translation>
     </message>
+    <message>
+        <source>error: cannot write to standard output: %1</source>
+        <translation>Fehler: die Standardausgabe kann nicht geschrieben werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>ConfigCommand</name>
@@ -117,16 +161,16 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
 
 Commands:
   validate FILE...                         check bridge configs; exit 0 valid, 1 invalid, 2 unreadable
-  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout
-  peer FILE [--client-id ID]               write the config for the other end of the link
+  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout (a valid one, or --force)
+  peer FILE [--client-id ID]               write the config for the other end of the link (a valid one, or --force)
 
 Run 'bridgescope config &lt;command&gt; --help' for the options of a command.</source>
         <translation>Aufruf: bridgescope config &lt;Befehl&gt; [Optionen]
 
 Befehle:
   validate DATEI...                        Bridge-Konfigurationen prüfen; Status 0 gültig, 1 ungültig, 2 unlesbar
-  convert DATEI --to ros1|ros2|mqtt_bridge Konfiguration in einem anderen Layout schreiben
-  peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben
+  convert DATEI --to ros1|ros2|mqtt_bridge Konfiguration in einem anderen Layout schreiben (eine gültige, oder --force)
+  peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben (eine gültige, oder --force)
 
 'bridgescope config &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
     </message>
@@ -171,12 +215,12 @@ Befehle:
         <translation>Die zu konvertierende Bridge-Konfiguration.</translation>
     </message>
     <message>
-        <source>Writes a bridge config in another layout; unknown keys, substitutions and values behind aliases are kept.</source>
-        <translation>Schreibt eine Bridge-Konfiguration in einem anderen Layout; unbekannte Schlüssel, Substitutionen und Werte hinter Aliasen bleiben erhalten.</translation>
+        <source>Writes a bridge config in another layout; unknown keys, substitutions and values behind aliases are kept. An invalid config is refused (exit 1, its errors printed) unless --force.</source>
+        <translation>Schreibt eine Bridge-Konfiguration in einem anderen Layout; unbekannte Schlüssel, Substitutionen und Werte hinter Aliasen bleiben erhalten. Eine ungültige Konfiguration wird abgelehnt (Status 1, ihre Fehler werden ausgegeben), außer mit --force.</translation>
     </message>
     <message>
-        <source>Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT]</source>
-        <translation>Aufruf: bridgescope config convert DATEI --to ros1|ros2|mqtt_bridge [-o AUS]</translation>
+        <source>Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT] [--force]</source>
+        <translation>Aufruf: bridgescope config convert DATEI --to ros1|ros2|mqtt_bridge [-o AUS] [--force]</translation>
     </message>
     <message>
         <source>%1: note: %2</source>
@@ -195,12 +239,12 @@ Befehle:
         <translation>Die Bridge-Konfiguration dieses Rechners.</translation>
     </message>
     <message>
-        <source>Writes the config for the other end of the link: every ros2mqtt becomes an mqtt2ros and the reverse.</source>
-        <translation>Schreibt die Konfiguration für das andere Ende der Strecke: aus jedem ros2mqtt wird ein mqtt2ros und umgekehrt.</translation>
+        <source>Writes the config for the other end of the link: every ros2mqtt becomes an mqtt2ros and the reverse. An invalid config is refused (exit 1, its errors printed) unless --force.</source>
+        <translation>Schreibt die Konfiguration für das andere Ende der Strecke: aus jedem ros2mqtt wird ein mqtt2ros und umgekehrt. Eine ungültige Konfiguration wird abgelehnt (Status 1, ihre Fehler werden ausgegeben), außer mit --force.</translation>
     </message>
     <message>
-        <source>Usage: bridgescope config peer FILE [-o OUT] [--client-id ID]</source>
-        <translation>Aufruf: bridgescope config peer DATEI [-o AUS] [--client-id ID]</translation>
+        <source>Usage: bridgescope config peer FILE [-o OUT] [--client-id ID] [--force]</source>
+        <translation>Aufruf: bridgescope config peer DATEI [-o AUS] [--client-id ID] [--force]</translation>
     </message>
     <message>
         <source>--to takes ros1, ros2 or mqtt_bridge</source>
@@ -209,6 +253,18 @@ Befehle:
     <message>
         <source>bridgescope config: unknown command '%1'</source>
         <translation>bridgescope config: unbekannter Befehl '%1'</translation>
+    </message>
+    <message>
+        <source>Write even an invalid config; what cannot be written is named on standard error.</source>
+        <translation>Auch eine ungültige Konfiguration schreiben; was nicht geschrieben werden kann, wird auf der Standardfehlerausgabe genannt.</translation>
+    </message>
+    <message>
+        <source>%1: error: the config is invalid; nothing was written (--force writes it anyway)</source>
+        <translation>%1: Fehler: die Konfiguration ist ungültig; nichts wurde geschrieben (--force schreibt sie trotzdem)</translation>
+    </message>
+    <message>
+        <source>%1: warning: %2</source>
+        <translation>%1: Warnung: %2</translation>
     </message>
 </context>
 <context>
@@ -546,6 +602,22 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <source>Unexpected YAML structure: %1</source>
         <translation>Unerwartete YAML-Struktur: %1</translation>
     </message>
+    <message>
+        <source>%1 is dropped when the config is written anew.</source>
+        <translation>%1 geht verloren, wenn die Konfiguration neu geschrieben wird.</translation>
+    </message>
+    <message>
+        <source>Entry %1 of 'bridge.%2'</source>
+        <translation>Eintrag %1 von 'bridge.%2'</translation>
+    </message>
+    <message>
+        <source>Entry %1 of 'bridge'</source>
+        <translation>Eintrag %1 von 'bridge'</translation>
+    </message>
+    <message>
+        <source>The rest of the file from this place on</source>
+        <translation>Der Rest der Datei ab dieser Stelle</translation>
+    </message>
 </context>
 <context>
     <name>ConfigValidator</name>
@@ -829,6 +901,14 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <source>'+' must be a whole level</source>
         <translation>'+' muss eine ganze Ebene sein</translation>
     </message>
+    <message>
+        <source>it contains U+FFFD, the mark of bytes that were not valid UTF-8</source>
+        <translation>er enthält U+FFFD, das Zeichen für Bytes, die kein gültiges UTF-8 waren</translation>
+    </message>
+    <message>
+        <source>it is not valid Unicode (half of a UTF-16 surrogate pair)</source>
+        <translation>er ist kein gültiges Unicode (die Hälfte eines UTF-16-Surrogatpaars)</translation>
+    </message>
 </context>
 <context>
     <name>ConfigWriter</name>
@@ -847,6 +927,10 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>%1: '%2' has no equivalent in mqtt_bridge and is not written.</source>
         <translation>%1: '%2' hat in mqtt_bridge keine Entsprechung und wird nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>'%1' has no place in the written config and is dropped.</source>
+        <translation>'%1' hat in der geschriebenen Konfiguration keinen Platz und geht verloren.</translation>
     </message>
 </context>
 <context>
@@ -4589,6 +4673,61 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>column %1 (%2): "%3" is not a time in seconds</source>
         <translation>Spalte %1 (%2): "%3" ist keine Zeit in Sekunden</translation>
+    </message>
+</context>
+<context>
+    <name>YamlLimits</name>
+    <message>
+        <source>The alias *%1 refers to a node that contains it; the document would be infinite.</source>
+        <translation>Der Alias *%1 verweist auf einen Knoten, der ihn enthält; das Dokument wäre unendlich.</translation>
+    </message>
+    <message>
+        <source>Remove the alias or point it at a node outside its anchor.</source>
+        <translation>Entfernen Sie den Alias oder lassen Sie ihn auf einen Knoten außerhalb seines Ankers verweisen.</translation>
+    </message>
+    <message>
+        <source>The alias *%1 makes aliases repeat %2 nodes; at most %3 are read.</source>
+        <translation>Mit dem Alias *%1 wiederholen Aliase %2 Knoten; höchstens %3 werden gelesen.</translation>
+    </message>
+    <message>
+        <source>The alias *%1 makes aliases repeat %2 bytes of text; at most %3 are read.</source>
+        <translation>Mit dem Alias *%1 wiederholen Aliase %2 Bytes Text; höchstens %3 werden gelesen.</translation>
+    </message>
+    <message>
+        <source>The alias *%1 nests collections %2 deep; at most %3 are read.</source>
+        <translation>Der Alias *%1 verschachtelt Listen und Maps %2 tief; höchstens %3 werden gelesen.</translation>
+    </message>
+    <message>
+        <source>Anchors and aliases are for sharing a few values; write the values out instead.</source>
+        <translation>Anker und Aliase dienen dazu, wenige Werte zu teilen; schreiben Sie die Werte stattdessen aus.</translation>
+    </message>
+    <message>
+        <source>The document has more than %1 nodes (values, keys, lists and maps); at most %1 are read.</source>
+        <translation>Das Dokument hat mehr als %1 Knoten (Werte, Schlüssel, Listen und Maps); höchstens %1 werden gelesen.</translation>
+    </message>
+    <message>
+        <source>Split the file.</source>
+        <translation>Teilen Sie die Datei auf.</translation>
+    </message>
+    <message>
+        <source>Lists and maps are nested more than %1 deep here; at most %1 are read.</source>
+        <translation>Listen und Maps sind hier mehr als %1 tief verschachtelt; höchstens %1 werden gelesen.</translation>
+    </message>
+    <message>
+        <source>Flatten the structure.</source>
+        <translation>Verschachteln Sie weniger tief.</translation>
+    </message>
+    <message>
+        <source>The file has more than %1 bytes; at most %1 are read.</source>
+        <translation>Die Datei hat mehr als %1 Bytes; höchstens %1 werden gelesen.</translation>
+    </message>
+    <message>
+        <source>Byte 0x%1 is not valid UTF-8; the file must be UTF-8 text.</source>
+        <translation>Das Byte 0x%1 ist kein gültiges UTF-8; die Datei muss UTF-8-Text sein.</translation>
+    </message>
+    <message>
+        <source>Save the file as UTF-8, or correct the text at this place.</source>
+        <translation>Speichern Sie die Datei als UTF-8 oder korrigieren Sie den Text an dieser Stelle.</translation>
     </message>
 </context>
 <context>

@@ -1,20 +1,35 @@
 // SPDX-License-Identifier: MIT
 #include "clioutput.h"
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <malloc.h>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
 namespace CliOutput {
 
+namespace {
+int g_stdoutErrno = 0; // the first error of stdout, for finish()
+
+bool flushStdout()
+{
+    errno = 0;
+    const bool ok = std::fflush(stdout) == 0 && !std::ferror(stdout);
+    if (!ok && g_stdoutErrno == 0)
+        g_stdoutErrno = errno ? errno : EIO;
+    return ok;
+}
+} // namespace
+
 void out(const QString& text)
 {
     const QByteArray bytes = text.toLocal8Bit();
     std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stdout);
     std::fputc('\n', stdout);
-    std::fflush(stdout);
+    flushStdout();
 }
 
 void err(const QString& text)
@@ -23,6 +38,26 @@ void err(const QString& text)
     std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
     std::fputc('\n', stderr);
     std::fflush(stderr);
+}
+
+bool writeStdout(const QByteArray& bytes)
+{
+    if (!bytes.isEmpty())
+        std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stdout);
+    return flushStdout();
+}
+
+int finish(int exitCode)
+{
+    static bool reported = false;
+    if (flushStdout() && g_stdoutErrno == 0)
+        return exitCode;
+    if (!reported) {
+        err(QCoreApplication::translate("Cli", "error: cannot write to standard output: %1")
+                .arg(QString::fromLocal8Bit(std::strerror(g_stdoutErrno))));
+        reported = true;
+    }
+    return 2;
 }
 
 namespace {

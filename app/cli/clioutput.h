@@ -10,6 +10,12 @@ class QCommandLineParser;
 namespace CliOutput {
 void out(const QString& text); ///< a line to stdout
 void err(const QString& text); ///< a line to stderr
+/// Writes bytes to stdout as they are (a file printed with `-o -`); false when the stream failed.
+bool writeStdout(const QByteArray& bytes);
+/// Flushes stdout and says whether everything written to it arrived (a full disk, a closed pipe
+/// or /dev/full fail). On failure prints why to stderr and returns 2, otherwise `exitCode`:
+/// `return CliOutput::finish(code);` at the end of a command that prints its result.
+int finish(int exitCode);
 /// Adds -h/--help and the description, parses `args` (args[0] names the command). Returns -1 to
 /// go on, 0 after printing the help, 2 after printing the error.
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description);

@@ -7,6 +7,7 @@
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
 #include "config/peerconfig.h"
+#include "config/yamllimits.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -32,8 +33,10 @@ public:
             "Commands:\n"
             "  validate FILE...                         check bridge configs; exit 0 valid, 1 invalid, 2 "
             "unreadable\n"
-            "  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout\n"
-            "  peer FILE [--client-id ID]               write the config for the other end of the link\n"
+            "  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout (a valid one, "
+            "or --force)\n"
+            "  peer FILE [--client-id ID]               write the config for the other end of the link (a "
+            "valid one, or --force)\n"
             "\n"
             "Run 'bridgescope config <command> --help' for the options of a command.");
     }
@@ -59,7 +62,15 @@ public:
             l.exit = Unreadable;
             return l;
         }
-        l.read = ConfigReader::read(file.readAll());
+        // One byte past the limit is enough for the reader to say the file is too large; a device
+        // such as /dev/zero is not read for ever.
+        const QByteArray bytes = file.read(YamlLimits::maxBytes + 1);
+        if (file.error() != QFileDevice::NoError) {
+            err(tr("%1: error: cannot read the file: %2").arg(path, file.errorString()));
+            l.exit = Unreadable;
+            return l;
+        }
+        l.read = ConfigReader::read(bytes);
         if (!l.read.parsed) {
             for (const Problem& p : std::as_const(l.read.problems))
                 err(p.format(path));
@@ -70,18 +81,53 @@ public:
 
     static int writeOutput(const QString& outPath, const QString& text)
     {
-        if (outPath.isEmpty() || outPath == u"-"_s) {
-            QByteArray bytes = text.toUtf8();
-            std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stdout);
-            std::fflush(stdout);
-            return Valid;
-        }
+        if (outPath.isEmpty() || outPath == u"-"_s)
+            return CliOutput::finish(CliOutput::writeStdout(text.toUtf8()) ? Valid : Unreadable);
         QString error;
         if (!AtomicFile::write(outPath, text.toUtf8(), &error)) {
             err(tr("%1: error: %2").arg(outPath, error));
             return Unreadable;
         }
         return Valid;
+    }
+
+    static QCommandLineOption forceOption()
+    {
+        return QCommandLineOption(u"force"_s,
+                                  tr("Write even an invalid config; what cannot be written is named on "
+                                     "standard error."));
+    }
+
+    // An invalid config is not written (its content would not survive, see "broker: [1, 2]")
+    // unless forced; either way its errors are printed.
+    static bool acceptable(const QString& path, const ConfigReadResult& read, bool force)
+    {
+        QList<Problem> problems = read.problems + ConfigValidator::validate(read.config);
+        if (!hasErrors(problems))
+            return true;
+        std::stable_sort(problems.begin(), problems.end(), [](const Problem& a, const Problem& b) {
+            return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.column < b.pos.column;
+        });
+        for (const Problem& p : std::as_const(problems)) {
+            if (p.severity == Severity::Error)
+                err(p.format(path));
+        }
+        for (const Problem& p : read.dropped)
+            err(p.format(path));
+        if (!force) {
+            err(tr("%1: error: the config is invalid; nothing was written (--force writes it anyway)")
+                    .arg(path));
+            return false;
+        }
+        return true;
+    }
+
+    static void printNotes(const QString& path, const QStringList& notes, const QStringList& dropped)
+    {
+        for (const QString& n : notes)
+            err(tr("%1: note: %2").arg(path, n));
+        for (const QString& d : dropped)
+            err(tr("%1: warning: %2").arg(path, d));
     }
 
     static int validate(const QStringList& args)
@@ -134,30 +180,33 @@ public:
                                       tr("ROS 2 node name above ros__parameters (default: as read, "
                                          "or mqtt_client)."),
                                       u"NAME"_s);
-        parser.addOptions({to, output, node});
+        const QCommandLineOption force = forceOption();
+        parser.addOptions({to, output, node, force});
         parser.addPositionalArgument(u"FILE"_s, tr("The bridge config to convert."));
         if (const int r = parse(parser, args,
                                 tr("Writes a bridge config in another layout; unknown keys, "
-                                   "substitutions and values behind aliases are kept."));
+                                   "substitutions and values behind aliases are kept. An invalid config "
+                                   "is refused (exit 1, its errors printed) unless --force."));
             r >= 0)
             return r;
         ConfigLayout layout;
         if (parser.positionalArguments().size() != 1 || !parser.isSet(to)
             || !layoutFromName(parser.value(to), &layout)) {
-            err(tr("Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT]"));
+            err(tr("Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT] [--force]"));
             return Unreadable;
         }
         const QString path = parser.positionalArguments().first();
         Loaded l = load(path);
         if (l.exit != Valid)
             return l.exit;
+        if (!acceptable(path, l.read, parser.isSet(force)))
+            return Invalid;
         BridgeConfig cfg = l.read.config;
         if (parser.isSet(node))
             cfg.ros2NodeName = parser.value(node);
-        QStringList notes;
-        const QString text = ConfigWriter::write(cfg, layout, &notes);
-        for (const QString& n : std::as_const(notes))
-            err(tr("%1: note: %2").arg(path, n));
+        QStringList notes, dropped;
+        const QString text = ConfigWriter::write(cfg, layout, &notes, &dropped);
+        printNotes(path, notes, dropped);
         return writeOutput(parser.value(output), text);
     }
 
@@ -171,31 +220,34 @@ public:
                                              "\"_peer\" appended)."),
                                           u"ID"_s);
         const QCommandLineOption to(u"to"_s, tr("Layout to write (default: the input's)."), u"LAYOUT"_s);
-        parser.addOptions({output, clientId, to});
+        const QCommandLineOption force = forceOption();
+        parser.addOptions({output, clientId, to, force});
         parser.addPositionalArgument(u"FILE"_s, tr("This host's bridge config."));
         if (const int r = parse(parser, args,
                                 tr("Writes the config for the other end of the link: every ros2mqtt "
-                                   "becomes an mqtt2ros and the reverse."));
+                                   "becomes an mqtt2ros and the reverse. An invalid config is refused "
+                                   "(exit 1, its errors printed) unless --force."));
             r >= 0)
             return r;
         if (parser.positionalArguments().size() != 1) {
-            err(tr("Usage: bridgescope config peer FILE [-o OUT] [--client-id ID]"));
+            err(tr("Usage: bridgescope config peer FILE [-o OUT] [--client-id ID] [--force]"));
             return Unreadable;
         }
         const QString path = parser.positionalArguments().first();
         Loaded l = load(path);
         if (l.exit != Valid)
             return l.exit;
+        if (!acceptable(path, l.read, parser.isSet(force)))
+            return Invalid;
         ConfigLayout layout = l.read.config.layout;
         if (parser.isSet(to) && !layoutFromName(parser.value(to), &layout)) {
             err(tr("--to takes ros1, ros2 or mqtt_bridge"));
             return Unreadable;
         }
         const PeerConfig::Result peerResult = PeerConfig::make(l.read.config, parser.value(clientId));
-        QStringList notes = peerResult.notes;
-        const QString text = ConfigWriter::write(peerResult.config, layout, &notes);
-        for (const QString& n : std::as_const(notes))
-            err(tr("%1: note: %2").arg(path, n));
+        QStringList notes = peerResult.notes, dropped;
+        const QString text = ConfigWriter::write(peerResult.config, layout, &notes, &dropped);
+        printNotes(path, notes, dropped);
         return writeOutput(parser.value(output), text);
     }
 };
@@ -212,12 +264,13 @@ int runConfigCommand(const QStringList& arguments)
     const QString& command = arguments[1];
     QStringList rest = arguments.mid(2);
     rest.prepend(u"bridgescope config "_s + command);
+    // Every command prints its result to stdout: a full disk there is an error too.
     if (command == u"validate"_s)
-        return ConfigCommand::validate(rest);
+        return CliOutput::finish(ConfigCommand::validate(rest));
     if (command == u"convert"_s)
-        return ConfigCommand::convert(rest);
+        return CliOutput::finish(ConfigCommand::convert(rest));
     if (command == u"peer"_s)
-        return ConfigCommand::peer(rest);
+        return CliOutput::finish(ConfigCommand::peer(rest));
     err(ConfigCommand::tr("bridgescope config: unknown command '%1'").arg(command));
     err(ConfigCommand::usage());
     return ConfigCommand::Unreadable;

@@ -66,7 +66,70 @@ void syncDirectory(const QString& dir)
     }
 }
 
+// The file a path names: symbolic links followed (a bounded number of them), the last one may not
+// exist yet.
+QString resolvedTarget(const QString& path)
+{
+    QString p = QFileInfo(path).absoluteFilePath();
+    for (int i = 0; i < 40; ++i) {
+        const QFileInfo info(p);
+        if (!info.isSymLink())
+            break;
+        p = info.symLinkTarget();
+    }
+    return p;
+}
+
+QString kindName(mode_t mode)
+{
+    if (S_ISFIFO(mode))
+        return AtomicFile::tr("a FIFO (named pipe)");
+    if (S_ISCHR(mode))
+        return AtomicFile::tr("a character device");
+    if (S_ISBLK(mode))
+        return AtomicFile::tr("a block device");
+    if (S_ISDIR(mode))
+        return AtomicFile::tr("a directory");
+    if (S_ISSOCK(mode))
+        return AtomicFile::tr("a socket");
+    if (S_ISLNK(mode))
+        return AtomicFile::tr("a symbolic link that leads nowhere (a loop)");
+    return AtomicFile::tr("not a regular file");
+}
+
+QString refusal(const QString& path, const QByteArray& target)
+{
+    struct stat st
+    {
+    };
+    if (::lstat(target.constData(), &st) != 0) {
+        if (errno == ENOENT)
+            return QString();
+        return AtomicFile::tr("cannot examine %1: %2").arg(path, errnoText());
+    }
+    if (!S_ISREG(st.st_mode))
+        return AtomicFile::tr("%1 is %2, not a regular file; only regular files are written over")
+            .arg(path, kindName(st.st_mode));
+    // Renaming over a file ignores its permissions; a file nobody may write stays as it is. The
+    // mode bits count for root too, who passes access().
+    if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 || ::access(target.constData(), W_OK) != 0)
+        return AtomicFile::tr("%1 is read-only; make it writable or choose another name").arg(path);
+    return QString();
+}
+
 } // namespace
+
+QString AtomicFile::backupPath(const QString& path, int n)
+{
+    if (n == 0)
+        return path + u".bak"_s;
+    return path + u".bak."_s + QString::number(n);
+}
+
+QString AtomicFile::refusalReason(const QString& path)
+{
+    return refusal(path, QFile::encodeName(resolvedTarget(path)));
+}
 
 bool AtomicFile::write(const QString& path, const QByteArray& data, QString* error, bool keepBackup)
 {
@@ -74,10 +137,14 @@ bool AtomicFile::write(const QString& path, const QByteArray& data, QString* err
     if (!error)
         error = &ignored;
     // Write through a symbolic link to the file it names, keeping the link.
-    const QFileInfo link(path);
-    const QFileInfo info(link.isSymLink() ? link.symLinkTarget() : path);
+    const QFileInfo info(resolvedTarget(path));
     const QString dir = info.absolutePath();
-    const QByteArray target = QFile::encodeName(info.absoluteFilePath());
+    const QString targetName = info.absoluteFilePath();
+    const QByteArray target = QFile::encodeName(targetName);
+    if (const QString why = refusal(path, target); !why.isEmpty()) {
+        *error = why;
+        return false;
+    }
 
     mode_t mode = 0644;
     struct stat st
@@ -99,14 +166,26 @@ bool AtomicFile::write(const QString& path, const QByteArray& data, QString* err
     if (keepBackup && exists) {
         // The previous file becomes the backup by a hard link, so it is never copied half-way;
         // where links are not possible, a synced copy is made instead.
-        const QByteArray bak = target + ".bak";
+        const QByteArray bak = QFile::encodeName(backupPath(targetName, 0));
         QByteArray bakTmp = tmp + ".bak";
         bool ok = ::link(target.constData(), bakTmp.constData()) == 0;
         if (!ok) {
-            QFile old(path);
+            QFile old(targetName);
             if (old.open(QIODevice::ReadOnly)) {
                 bakTmp = writeTemp(dir, info.fileName() + u".bak"_s, old.readAll(), mode, error);
                 ok = !bakTmp.isEmpty();
+            }
+        }
+        // Older backups move one place down (.bak -> .bak.1 -> .bak.2 ...); the oldest is dropped.
+        for (int n = maxBackups - 1; ok && n > 0; --n) {
+            const QByteArray from = QFile::encodeName(backupPath(targetName, n - 1));
+            const QByteArray to = QFile::encodeName(backupPath(targetName, n));
+            if (::rename(from.constData(), to.constData()) != 0 && errno != ENOENT) {
+                *error = AtomicFile::tr("cannot keep the previous file as %1: %2")
+                             .arg(QFile::decodeName(to), errnoText());
+                ::unlink(bakTmp.constData());
+                ::unlink(tmp.constData());
+                return false;
             }
         }
         if (!ok || ::rename(bakTmp.constData(), bak.constData()) != 0) {

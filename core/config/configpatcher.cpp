@@ -3,6 +3,7 @@
 
 #include "configreader.h"
 #include "configwriter.h"
+#include "yamllimits.h"
 #include "yamltree.h"
 
 #include <algorithm>
@@ -717,7 +718,9 @@ std::optional<QByteArray> ConfigPatcher::patch(const QByteArray& text, const Bri
             source += '\n';
         YAML::Node root;
         try {
-            root = YAML::Load(source.toStdString());
+            root = YamlLimits::load(source);
+        } catch (const YamlLimits::Exceeded& e) {
+            giveUp(e.violation.message);
         } catch (const YAML::Exception&) {
             giveUp(u"the file is not valid YAML"_s);
         }

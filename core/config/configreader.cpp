@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "configreader.h"
 
+#include "yamllimits.h"
 #include "yamltree.h"
 
 #include <yaml-cpp/yaml.h>
@@ -77,6 +78,18 @@ public:
         p.message = message;
         p.fix = fix;
         result.problems.append(p);
+    }
+
+    // Part of the text that has no place in the model: a rewrite of the file loses it.
+    void drop(const TextPos& pos, const QString& what)
+    {
+        result.lossy = true;
+        Problem p;
+        p.severity = Severity::Warning;
+        p.code = u"dropped"_s;
+        p.pos = pos;
+        p.message = tr("%1 is dropped when the config is written anew.").arg(what);
+        result.dropped.append(p);
     }
 
     // Reads the keys of one block: known options become values, known sections are descended
@@ -196,7 +209,7 @@ public:
                             tr("Entry %1 of 'bridge.%2' must be a map with 'ros_topic' and 'mqtt_topic'.")
                                 .arg(index + 1)
                                 .arg(key));
-                    result.lossy = true;
+                    drop(posOf(item), tr("Entry %1 of 'bridge.%2'").arg(index + 1).arg(key));
                     ++index;
                     continue;
                 }
@@ -248,7 +261,7 @@ public:
             if (!topics.IsSequence()) {
                 problem(Severity::Error, u"expected-list"_s, posOf(topics),
                         tr("'bridge.%1.%2' must be a list of topic names.").arg(key, listKey));
-                result.lossy = true;
+                drop(posOf(topics), u"'bridge.%1.%2'"_s.arg(key, listKey));
             } else {
                 int index = 0;
                 for (const YAML::Node& t : topics) {
@@ -410,7 +423,7 @@ public:
                         tr("Entry %1 of 'bridge' must be a map with 'factory', 'msg_type', 'topic_from' and "
                            "'topic_to'.")
                             .arg(i + 1));
-                result.lossy = true;
+                drop(posOf(item), tr("Entry %1 of 'bridge'").arg(i + 1));
                 continue;
             }
             const YAML::Node factoryNode = item["factory"];
@@ -426,7 +439,7 @@ public:
                            "MqttToRosBridge are understood.")
                             .arg(i + 1)
                             .arg(factory));
-                result.lossy = true;
+                drop(posOf(item), tr("Entry %1 of 'bridge'").arg(i + 1));
                 continue;
             }
             Mapping m = newMapping(d, i, item);
@@ -497,7 +510,11 @@ ConfigReadResult ConfigReader::read(const QByteArray& text)
     Reader r;
     YAML::Node root;
     try {
-        root = YAML::Load(text.toStdString());
+        root = YamlLimits::load(text);
+    } catch (const YamlLimits::Exceeded& e) {
+        const YamlLimits::Violation& v = e.violation;
+        r.problem(Severity::Error, v.code, v.pos, v.message, v.fix);
+        return r.result;
     } catch (const YAML::Exception& e) {
         r.problem(Severity::Error, u"yaml-syntax"_s, {e.mark.line, e.mark.column},
                   tr("YAML syntax error: %1").arg(qs(e.msg)),
@@ -540,9 +557,11 @@ ConfigReadResult ConfigReader::read(const QByteArray& text)
                     const YAML::Node params = jt->second;
                     if (params.IsMap())
                         r.readMqttClientRoot(params, cfg, true);
-                    else if (!params.IsNull())
+                    else if (!params.IsNull()) {
                         r.problem(Severity::Error, u"expected-map"_s, posOf(params),
                                   tr("'ros__parameters' must be a map."));
+                        r.drop(posOf(params), u"'%1.ros__parameters'"_s.arg(key));
+                    }
                 }
             }
         } else if (looksLikeMqttBridge(root)) {
@@ -561,7 +580,7 @@ ConfigReadResult ConfigReader::read(const QByteArray& text)
     } catch (const YAML::Exception& e) {
         r.problem(Severity::Error, u"yaml-structure"_s, {e.mark.line, e.mark.column},
                   tr("Unexpected YAML structure: %1").arg(qs(e.msg)));
-        r.result.lossy = true;
+        r.drop({e.mark.line, e.mark.column}, tr("The rest of the file from this place on"));
     }
     r.result.parsed = true;
     return r.result;

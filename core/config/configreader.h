@@ -14,6 +14,7 @@ struct ConfigReadResult
     QList<Problem> problems; ///< YAML syntax and structure problems (rules come from ConfigValidator)
     bool parsed = false; ///< false: not YAML, or not a bridge config at all
     bool lossy = false; ///< parts of the file have no place in the model; a rewrite would lose them
+    QList<Problem> dropped; ///< those parts, as warnings naming each one and where it is
 };
 
 /// Reads mqtt_client (ROS 1 and ROS 2 layouts) and mqtt_bridge configs; detects the layout.

@@ -434,6 +434,24 @@ QList<Problem> ConfigValidator::validate(const BridgeConfig& config, const Optio
     return c.problems;
 }
 
+// Names that passed through a decoder which replaced bytes it could not read (U+FFFD), or strings
+// with halves of UTF-16 pairs: no broker or master would see the name the user meant.
+static QString encodingProblem(const QString& text)
+{
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const QChar c = text[i];
+        if (c.unicode() == 0xfffd)
+            return ConfigValidator::tr("it contains U+FFFD, the mark of bytes that were not valid UTF-8");
+        if (c.isHighSurrogate() && i + 1 < text.size() && text[i + 1].isLowSurrogate()) {
+            ++i;
+            continue;
+        }
+        if (c.isSurrogate())
+            return ConfigValidator::tr("it is not valid Unicode (half of a UTF-16 surrogate pair)");
+    }
+    return QString();
+}
+
 bool ConfigValidator::isValidRosName(const QString& name, bool strict, QString* why)
 {
     auto fail = [why](const QString& reason) {
@@ -443,6 +461,8 @@ bool ConfigValidator::isValidRosName(const QString& name, bool strict, QString* 
     };
     if (name.isEmpty())
         return fail(tr("it is empty"));
+    if (const QString bad = encodingProblem(name); !bad.isEmpty())
+        return fail(bad);
     const QChar first = name.front();
     if (!(first.isLetter() && first.unicode() < 128) && first != u'/' && first != u'~')
         return fail(tr("it must start with a letter, '/' or '~'"));
@@ -483,6 +503,8 @@ bool ConfigValidator::isValidMqttTopic(const QString& topic, bool publish, QStri
         return fail(tr("it is empty"));
     if (topic.contains(QChar(0)))
         return fail(tr("it contains a NUL character"));
+    if (const QString bad = encodingProblem(topic); !bad.isEmpty())
+        return fail(bad);
     if (topic.toUtf8().size() > 65535)
         return fail(tr("it is longer than 65535 bytes"));
     if (publish && hasWildcard(topic))

@@ -45,9 +45,50 @@ YamlTree valueTree(OptionScope scope, const QString& path, const OptionValues& v
     return YamlTree::scalar(text, typed ? YamlTree::ScalarStyle::Typed : YamlTree::ScalarStyle::String);
 }
 
+// Unknown content that cannot be put where it was read from (a value is in the way): never lose
+// it silently.
+void noteDropped(QStringList* dropped, const QString& where, const QStringList& path)
+{
+    if (!dropped)
+        return;
+    QStringList full = path;
+    if (!where.isEmpty())
+        full.prepend(where);
+    *dropped << ConfigWriter::tr("'%1' has no place in the written config and is dropped.")
+                    .arg(full.isEmpty() ? u"(the whole file)"_s : full.join(u'.'));
+}
+
+// Whether something other than an empty placeholder is already written at `path` (a known option
+// and an unknown key of the same name: "tls: 5" beside "tls: {enabled: true}").
+bool occupied(YamlTree& tree, const QStringList& path)
+{
+    YamlTree* node = &tree;
+    for (const QString& key : path) {
+        if (node->type() != YamlTree::Type::Map)
+            return false;
+        node = node->find(key);
+        if (!node)
+            return false;
+    }
+    return node->type() == YamlTree::Type::Scalar || node->type() == YamlTree::Type::Raw || !node->isEmpty();
+}
+
+void insertExtra(YamlTree& tree, const ExtraValue& extra, QStringList* dropped, const QString& where)
+{
+    if (occupied(tree, extra.path) || !tree.insertAt(extra.path, YamlTree::raw(extra.yaml)))
+        noteDropped(dropped, where, extra.path);
+}
+
+void insertExtras(YamlTree& tree, const QList<ExtraValue>& extras, QStringList* dropped, const QString& where)
+{
+    for (const ExtraValue& extra : extras)
+        insertExtra(tree, extra, dropped, where);
+}
+
 // Options in schema order, then unknown keys where they were.
 void fillBlock(YamlTree& tree, OptionScope scope, const OptionBlock& block, ConfigLayout layout,
-               const QString& skipPath = QString())
+               const QString& skipPath = QString(), QStringList* dropped = nullptr,
+               const QString& where = QString())
 {
     for (const OptionSpec& spec : OptionSchema::options(scope)) {
         if (spec.path == skipPath || !block.values.has(spec.path))
@@ -59,24 +100,26 @@ void fillBlock(YamlTree& tree, OptionScope scope, const OptionBlock& block, Conf
         if (path != skipPath && !OptionSchema::find(scope, path))
             tree.insertAt(path.split(u'.'), valueTree(scope, path, block.values, layout));
     }
-    for (const ExtraValue& extra : block.extras)
-        tree.insertAt(extra.path, YamlTree::raw(extra.yaml));
+    for (const ExtraValue& extra : block.extras) {
+        // A block that was not a map ("broker: [1, 2]") is kept as it was written.
+        if (extra.path.isEmpty() && tree.type() == YamlTree::Type::Map && tree.isEmpty())
+            tree = YamlTree::raw(extra.yaml);
+        else
+            insertExtra(tree, extra, dropped, where);
+    }
 }
 
-void insertExtras(YamlTree& tree, const QList<ExtraValue>& extras)
-{
-    for (const ExtraValue& extra : extras)
-        tree.insertAt(extra.path, YamlTree::raw(extra.yaml));
-}
-
-YamlTree mqttClientParams(const BridgeConfig& cfg, ConfigLayout layout, QStringList* notes)
+YamlTree mqttClientParams(const BridgeConfig& cfg, ConfigLayout layout, QStringList* notes,
+                          QStringList* dropped)
 {
     YamlTree root = YamlTree::map();
-    insertExtras(root, cfg.rootExtras);
+    insertExtras(root, cfg.rootExtras, dropped, QString());
     if (!cfg.broker.values.isEmpty() || !cfg.broker.extras.isEmpty())
-        fillBlock(root.child(u"broker"_s), OptionScope::Broker, cfg.broker, layout);
+        fillBlock(root.child(u"broker"_s), OptionScope::Broker, cfg.broker, layout, QString(), dropped,
+                  u"broker"_s);
     if (!cfg.client.values.isEmpty() || !cfg.client.extras.isEmpty())
-        fillBlock(root.child(u"client"_s), OptionScope::Client, cfg.client, layout);
+        fillBlock(root.child(u"client"_s), OptionScope::Client, cfg.client, layout, QString(), dropped,
+                  u"client"_s);
 
     YamlTree& bridge = root.child(u"bridge"_s);
     const bool any = !cfg.mappings.isEmpty();
@@ -98,7 +141,7 @@ YamlTree mqttClientParams(const BridgeConfig& cfg, ConfigLayout layout, QStringL
             YamlTree seq = YamlTree::seq();
             for (const Mapping* m : list) {
                 YamlTree item = YamlTree::map();
-                fillBlock(item, scope, m->block, layout);
+                fillBlock(item, scope, m->block, layout, QString(), dropped, key);
                 seq.append(std::move(item));
             }
             bridge.insert(key, std::move(seq));
@@ -123,16 +166,16 @@ YamlTree mqttClientParams(const BridgeConfig& cfg, ConfigLayout layout, QStringL
             dir.insert(out ? u"ros_topics"_s : u"mqtt_topics"_s, std::move(topics));
             for (const Mapping* m : list) {
                 YamlTree item = YamlTree::map();
-                fillBlock(item, scope, m->block, layout, keyField);
+                fillBlock(item, scope, m->block, layout, keyField, dropped, key + u'.' + m->value(keyField));
                 dir.insert(m->value(keyField), std::move(item));
             }
         }
     }
-    insertExtras(bridge, cfg.bridgeExtras);
+    insertExtras(bridge, cfg.bridgeExtras, dropped, u"bridge"_s);
     return root;
 }
 
-QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes)
+QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes, QStringList* dropped)
 {
     YamlTree root = YamlTree::map();
     YamlTree& mqtt = root.child(u"mqtt"_s);
@@ -147,7 +190,7 @@ QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes)
     QList<ExtraValue> rest;
     for (const ExtraValue& e : cfg.rootExtras) {
         if (e.path.size() > 1 && e.path.first() == u"mqtt"_s)
-            mqtt.insertAt(e.path.mid(1), YamlTree::raw(e.yaml));
+            insertExtra(mqtt, {e.path.mid(1), e.yaml}, dropped, u"mqtt"_s);
         else
             rest << e;
     }
@@ -180,7 +223,7 @@ QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes)
             *notes
                 << ConfigWriter::tr("client.%1 has no equivalent in mqtt_bridge and is not written.").arg(p);
     }
-    insertExtras(root, rest);
+    insertExtras(root, rest, dropped, QString());
 
     YamlTree bridge = YamlTree::seq();
     static const QStringList unsupported = {u"primitive"_s,
@@ -218,7 +261,7 @@ QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes)
                 *notes << ConfigWriter::tr("%1: '%2' has no equivalent in mqtt_bridge and is not written.")
                               .arg(m.sourceTopic(), p);
         }
-        insertExtras(item, m.block.extras);
+        insertExtras(item, m.block.extras, dropped, m.sourceTopic());
         bridge.append(std::move(item));
     }
     root.insert(u"bridge"_s, std::move(bridge));
@@ -227,24 +270,27 @@ QString writeMqttBridge(const BridgeConfig& cfg, QStringList* notes)
 
 } // namespace
 
-QString ConfigWriter::write(const BridgeConfig& config, ConfigLayout layout, QStringList* notes)
+QString ConfigWriter::write(const BridgeConfig& config, ConfigLayout layout, QStringList* notes,
+                            QStringList* dropped)
 {
+    if (!dropped)
+        dropped = notes;
     switch (layout) {
     case ConfigLayout::Ros1: {
-        YamlTree root = mqttClientParams(config, layout, notes);
-        insertExtras(root, config.documentExtras);
+        YamlTree root = mqttClientParams(config, layout, notes, dropped);
+        insertExtras(root, config.documentExtras, dropped, QString());
         return root.toText();
     }
     case ConfigLayout::Ros2: {
         YamlTree doc = YamlTree::map();
         YamlTree node = YamlTree::map();
-        node.insert(u"ros__parameters"_s, mqttClientParams(config, layout, notes));
+        node.insert(u"ros__parameters"_s, mqttClientParams(config, layout, notes, dropped));
         doc.insert(config.ros2NodeName.isEmpty() ? u"mqtt_client"_s : config.ros2NodeName, std::move(node));
-        insertExtras(doc, config.documentExtras);
+        insertExtras(doc, config.documentExtras, dropped, QString());
         return doc.toText();
     }
     case ConfigLayout::MqttBridge:
-        return writeMqttBridge(config, notes);
+        return writeMqttBridge(config, notes, dropped);
     }
     return QString();
 }

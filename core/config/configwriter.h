@@ -13,8 +13,10 @@ class ConfigWriter
     Q_DECLARE_TR_FUNCTIONS(ConfigWriter)
 public:
     /// The config as YAML text in the given layout. `notes` receives what the layout cannot
-    /// express (e.g. options mqtt_bridge has no equivalent for).
-    static QString write(const BridgeConfig& config, ConfigLayout layout, QStringList* notes = nullptr);
+    /// express (e.g. options mqtt_bridge has no equivalent for); `dropped` (or `notes` when null)
+    /// the unknown content that has no place in the written text.
+    static QString write(const BridgeConfig& config, ConfigLayout layout, QStringList* notes = nullptr,
+                         QStringList* dropped = nullptr);
     /// The YAML text of one mapping in the ROS 1 list layout (one item of ros2mqtt/mqtt2ros),
     /// without the leading "- ".
     static QString ros1MappingItem(const Mapping& mapping);

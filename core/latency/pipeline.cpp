@@ -2,6 +2,7 @@
 #include "pipeline.h"
 
 #include "common/atomicfile.h"
+#include "config/yamllimits.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -90,7 +91,7 @@ std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* erro
     };
     YAML::Node root;
     try {
-        root = YAML::Load(yaml.toStdString());
+        root = YamlLimits::load(yaml);
     } catch (const YAML::Exception& e) {
         return fail(tr("%1: %2").arg(lineText(e.mark), QString::fromStdString(e.msg)));
     }

@@ -16,6 +16,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 using namespace Qt::StringLiterals;
 
@@ -336,6 +338,156 @@ private slots:
         const Run r = bridgescope(args);
         QCOMPARE(r.exit, 0);
         QVERIFY2(r.out.contains(u"Usage"_s) || r.out.contains(u"usage"_s), qPrintable(r.out + r.err));
+    }
+
+    // Regression (issue 11, item 5 and the U+FFFD finding): a 600-byte alias bomb kept validate,
+    // convert, peer and bridge growing by 100 MB/s; a map that holds itself crashed them; bytes
+    // that are not UTF-8 became U+FFFD. Now each is a located error and no command walks the tree.
+    void hostileYamlIsALocatedErrorInEveryCommand_data()
+    {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<QString>("where"); // LINE:COL, or empty when computed by the limit
+        QTest::addColumn<QString>("what");
+        QByteArray bomb = "bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: a}\n"
+                          "junk:\n  b0: &b0 {x: 1}\n";
+        for (int i = 1; i <= 20; ++i)
+            bomb += "  b" + QByteArray::number(i) + ": &b" + QByteArray::number(i) + " {l: *b"
+                + QByteArray::number(i - 1) + ", r: *b" + QByteArray::number(i - 1) + "}\n";
+        QTest::newRow("alias bomb") << bomb << QString() << u"The alias *b"_s;
+        QTest::newRow("a map that holds itself")
+            << QByteArray("bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: a}\nx: &x {a: *x}\n")
+            << u"4:11"_s << u"The alias *x refers to a node that contains it"_s;
+        QTest::newRow("not UTF-8") << QByteArray(
+            "bridge:\n  ros2mqtt:\n    - ros_topic: /a\n      mqtt_topic: \"a\xff\"\n")
+                                   << u"4:21"_s << u"Byte 0xff is not valid UTF-8"_s;
+    }
+    void hostileYamlIsALocatedErrorInEveryCommand()
+    {
+        QFETCH(QByteArray, text);
+        QFETCH(QString, where);
+        QFETCH(QString, what);
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, u"hostile.yaml"_s, text);
+        const QString located = where.isEmpty() ? QString() : path + u':' + where + u": error: "_s + what;
+        const auto check = [&](const Run& r, int exit, bool locatedError = true) {
+            QCOMPARE(r.exit, exit);
+            if (locatedError && !located.isEmpty())
+                QVERIFY2(r.err.contains(located), qPrintable(r.err));
+            QVERIFY2(r.err.contains(what), qPrintable(r.err));
+        };
+        Run r = bridgescope({u"config"_s, u"validate"_s, path}, 60000);
+        check(r, 1);
+        QVERIFY2(r.err.startsWith(path + u':'), qPrintable(r.err)); // FILE:LINE:COL: error: ...
+        check(bridgescope({u"config"_s, u"convert"_s, path, u"--to"_s, u"ros2"_s, u"--force"_s}, 60000), 1);
+        check(bridgescope({u"config"_s, u"peer"_s, path, u"--force"_s}, 60000), 1);
+        // Nothing listens on port 1: the config must be refused before any connection. (bridge
+        // names the file but not yet the line.)
+        check(bridgescope({u"bridge"_s, path, u"--broker"_s, u"tcp://127.0.0.1:1"_s}, 60000), 2, false);
+    }
+
+    // Regression (issue 11): convert of `broker: [1, 2]` exited 0 and wrote `broker: {}`.
+    void convertAndPeerRefuseInvalidConfigsUnlessForced()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, u"invalid.yaml"_s,
+                                       "broker: [1, 2]\nbridge:\n  ros2mqtt:\n    - 5\n"
+                                       "    - ros_topic: /a\n      mqtt_topic: a\n");
+        const QString out = dir.filePath(u"out.yaml"_s);
+        for (const QString& command : {u"convert"_s, u"peer"_s}) {
+            QStringList args {u"config"_s, command, path, u"-o"_s, out};
+            if (command == u"convert"_s)
+                args << u"--to"_s << u"ros2"_s;
+            Run r = bridgescope(args);
+            QCOMPARE(r.exit, 1);
+            QVERIFY2(r.err.contains(path + u":1:9: error: 'broker' must be a map"_s), qPrintable(r.err));
+            QVERIFY2(r.err.contains(u"--force"_s), qPrintable(r.err));
+            QVERIFY(!QFile::exists(out));
+
+            r = bridgescope(args << u"--force"_s);
+            QCOMPARE(r.exit, 0);
+            QVERIFY2(r.err.contains(path + u":4:7: warning: Entry 1 of 'bridge.ros2mqtt' is dropped"_s),
+                     qPrintable(r.err));
+            QFile f(out);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QByteArray written = f.readAll();
+            QVERIFY2(written.contains("broker: [1, 2]"), written.constData());
+            QCOMPARE(ConfigReader::read(written).config.mappings.size(), 1);
+            f.close();
+            QVERIFY(QFile::remove(out));
+        }
+    }
+
+    // Regression (issue 11): -o onto a FIFO, a device or a read-only file replaced it with a
+    // regular file. (Not tried on /dev/full itself: the old code would have replaced it.)
+    void outputGoesOnlyToRegularFiles()
+    {
+        QTemporaryDir dir;
+        const QString config = Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s);
+        const QString fifo = dir.filePath(u"fifo.yaml"_s);
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0644), 0);
+        const QString device = dir.filePath(u"full.yaml"_s);
+        const bool haveDevice
+            = ::mknod(QFile::encodeName(device).constData(), S_IFCHR | 0666, makedev(1, 7)) == 0;
+        const QString readOnly = writeFile(dir, u"locked.yaml"_s, "keep\n");
+        QCOMPARE(::chmod(QFile::encodeName(readOnly).constData(), 0444), 0);
+
+        QStringList targets {fifo, readOnly};
+        if (haveDevice)
+            targets << device;
+        for (const QString& target : std::as_const(targets)) {
+            struct stat before
+            {
+            };
+            QCOMPARE(::stat(QFile::encodeName(target).constData(), &before), 0);
+            for (const QString& command : {u"convert"_s, u"peer"_s}) {
+                QStringList args {u"config"_s, command, config, u"-o"_s, target};
+                if (command == u"convert"_s)
+                    args << u"--to"_s << u"ros2"_s;
+                const Run r = bridgescope(args);
+                QCOMPARE(r.exit, 2);
+                QVERIFY2(r.err.contains(target + u": error: "_s), qPrintable(r.err));
+                QVERIFY2(r.err.contains(u"not a regular file"_s) || r.err.contains(u"read-only"_s),
+                         qPrintable(r.err));
+            }
+            struct stat after
+            {
+            };
+            QCOMPARE(::stat(QFile::encodeName(target).constData(), &after), 0);
+            QCOMPARE(after.st_mode, before.st_mode);
+            QCOMPARE(after.st_ino, before.st_ino);
+            QVERIFY(!QFile::exists(target + u".bak"_s));
+        }
+        QFile f(readOnly);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("keep\n"));
+    }
+
+    // Regression (issue 11): with standard output on a full disk, convert and validate exited 0.
+    void aFullStandardOutputIsAnError()
+    {
+        const auto run = [](const QStringList& args) {
+            QProcess p;
+            p.setStandardOutputFile(u"/dev/full"_s);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
+            if (!p.waitForFinished(30000)) {
+                p.kill();
+                p.waitForFinished();
+            }
+            return std::make_pair(p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+                                  QString::fromUtf8(p.readAllStandardError()));
+        };
+        const QString config = Fixtures::path(u"mqtt_client/ros1-era-params.aws.yaml"_s);
+        const QList<QStringList> commands {
+            {u"config"_s, u"convert"_s, config, u"--to"_s, u"ros2"_s},
+            {u"config"_s, u"peer"_s, config},
+            {u"config"_s, u"validate"_s, config}, // prints warnings
+        };
+        for (const QStringList& args : commands) {
+            const auto [exit, err] = run(args);
+            QCOMPARE(exit, 2);
+            QVERIFY2(err.contains(u"cannot write to standard output"_s), qPrintable(err));
+            QCOMPARE(err.count(u"cannot write to standard output"_s), 1);
+        }
     }
 };
 

@@ -15,6 +15,7 @@
 #include <QTest>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 using namespace Qt::StringLiterals;
 
@@ -371,6 +372,117 @@ private slots:
         QString error;
         QVERIFY(!AtomicFile::write(u"/nonexistent-dir-bridgescope/x.yaml"_s, "x", &error));
         QVERIFY(error.contains(u"nonexistent-dir-bridgescope"_s));
+    }
+
+    // Regression (issue 11): a second save overwrote the only backup. FILE.bak stays the newest
+    // previous version; older ones move to FILE.bak.1 ... up to the cap.
+    void atomicSaveKeepsNumberedBackups()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bridge.yaml"_s);
+        QString error;
+        const int saves = AtomicFile::maxBackups + 3;
+        for (int i = 1; i <= saves; ++i)
+            QVERIFY2(AtomicFile::write(path, "version " + QByteArray::number(i) + '\n', &error),
+                     qPrintable(error));
+        auto content = [](const QString& p) {
+            QFile f(p);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("(missing)");
+        };
+        QCOMPARE(content(path), "version " + QByteArray::number(saves) + '\n');
+        for (int n = 0; n < AtomicFile::maxBackups; ++n)
+            QCOMPARE(content(AtomicFile::backupPath(path, n)),
+                     "version " + QByteArray::number(saves - 1 - n) + '\n');
+        QCOMPARE(AtomicFile::backupPath(path, 0), path + u".bak"_s);
+        QCOMPARE(AtomicFile::backupPath(path, 3), path + u".bak.3"_s);
+        QVERIFY(!QFile::exists(AtomicFile::backupPath(path, AtomicFile::maxBackups)));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1 + AtomicFile::maxBackups);
+    }
+
+    void atomicSaveRefusesWhatIsNoRegularFile_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("FIFO") << u"fifo"_s;
+        QTest::newRow("directory") << u"dir"_s;
+        QTest::newRow("character device") << u"device"_s;
+        QTest::newRow("link to a FIFO") << u"link"_s;
+    }
+    // Regression (issue 11): `-o` onto a FIFO or a device replaced it with a regular file (the
+    // device became FILE.bak); /dev/full "accepted" the write.
+    void atomicSaveRefusesWhatIsNoRegularFile()
+    {
+        QFETCH(QString, kind);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"out.yaml"_s);
+        const QByteArray native = QFile::encodeName(path);
+        QString target = path;
+        if (kind == u"fifo"_s) {
+            QCOMPARE(::mkfifo(native.constData(), 0644), 0);
+        } else if (kind == u"dir"_s) {
+            QVERIFY(QDir(dir.path()).mkdir(u"out.yaml"_s));
+        } else if (kind == u"device"_s) {
+            // /dev/full's numbers: a write to it fails with ENOSPC.
+            if (::mknod(native.constData(), S_IFCHR | 0666, makedev(1, 7)) != 0)
+                QSKIP("cannot create a device node here");
+        } else {
+            target = dir.filePath(u"pipe"_s);
+            QCOMPARE(::mkfifo(QFile::encodeName(target).constData(), 0644), 0);
+            QVERIFY(QFile::link(target, path));
+        }
+        struct stat before
+        {
+        };
+        QCOMPARE(::stat(QFile::encodeName(target).constData(), &before), 0);
+        QString error;
+        QVERIFY(!AtomicFile::write(path, "x: 1\n", &error));
+        QVERIFY2(error.contains(u"not a regular file"_s), qPrintable(error));
+        struct stat after
+        {
+        };
+        QCOMPARE(::stat(QFile::encodeName(target).constData(), &after), 0);
+        QCOMPARE(after.st_mode, before.st_mode);
+        QCOMPARE(after.st_ino, before.st_ino);
+        QCOMPARE(after.st_rdev, before.st_rdev);
+        QVERIFY(!QFile::exists(path + u".bak"_s));
+        QCOMPARE(AtomicFile::refusalReason(path), error);
+    }
+
+    // Regression (issue 11): a read-only file was replaced, since a rename ignores its mode.
+    void atomicSaveRefusesReadOnlyFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"locked.yaml"_s);
+        QString error;
+        QVERIFY(AtomicFile::write(path, "keep\n", &error));
+        QCOMPARE(::chmod(QFile::encodeName(path).constData(), 0444), 0);
+        QVERIFY(!AtomicFile::write(path, "new\n", &error));
+        QVERIFY2(error.contains(u"read-only"_s), qPrintable(error));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("keep\n"));
+        struct stat st
+        {
+        };
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
+        QCOMPARE(int(st.st_mode & 0777), 0444);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList {u"locked.yaml"_s});
+    }
+
+    // Writing through a symbolic link to a regular file stays supported: the link stays a link.
+    void atomicSaveWritesThroughALink()
+    {
+        QTemporaryDir dir;
+        const QString real = dir.filePath(u"real.yaml"_s);
+        const QString link = dir.filePath(u"link.yaml"_s);
+        QString error;
+        QVERIFY(AtomicFile::write(real, "one\n", &error));
+        QVERIFY(QFile::link(real, link));
+        QVERIFY2(AtomicFile::write(link, "two\n", &error), qPrintable(error));
+        QVERIFY(QFileInfo(link).isSymLink());
+        QFile f(real), bak(real + u".bak"_s);
+        QVERIFY(f.open(QIODevice::ReadOnly) && bak.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("two\n"));
+        QCOMPARE(bak.readAll(), QByteArray("one\n"));
     }
 };
 

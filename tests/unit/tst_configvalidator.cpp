@@ -242,6 +242,34 @@ private slots:
         QFETCH(bool, matches);
         QCOMPARE(ConfigValidator::topicMatches(filter, topic), matches);
     }
+
+    // Regression (issue 11): a topic whose bytes were not UTF-8 arrives as U+FFFD (from a broker's
+    // topic list, a drag from the Discover page, or a decoder); it passed the MQTT topic rule.
+    // Broken UTF-16 (a lone surrogate) is as invalid.
+    void namesThatLostTheirBytesAreInvalid_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("replacement character") << u"plant/\uFFFD/state"_s;
+        QTest::newRow("lone high surrogate") << u"plant/"_s + QChar(0xd800) + u"/state"_s;
+        QTest::newRow("lone low surrogate") << u"plant/"_s + QChar(0xdc00);
+    }
+    void namesThatLostTheirBytesAreInvalid()
+    {
+        QFETCH(QString, name);
+        QString why;
+        QVERIFY(!ConfigValidator::isValidMqttTopic(name, false, &why));
+        QVERIFY2(why.contains(u"UTF"_s), qPrintable(why));
+        QVERIFY(!ConfigValidator::isValidRosName(u'/' + name, false, &why));
+        QVERIFY2(why.contains(u"UTF"_s), qPrintable(why));
+
+        BridgeConfig cfg;
+        cfg.mappings.append(Mapping::create(Direction::Mqtt2Ros, u"/state"_s, name));
+        const QList<Problem> problems = ConfigValidator::validate(cfg);
+        QVERIFY(hasErrors(problems));
+        QCOMPARE(problems.first().field, u"mqtt_topic"_s);
+        // Characters outside the BMP, as proper surrogate pairs, stay valid.
+        QVERIFY(ConfigValidator::isValidMqttTopic(u"plant/\U0001F600"_s, true));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestConfigValidator)
