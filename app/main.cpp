@@ -63,19 +63,19 @@ int main(int argc, char** argv)
             return 0;
         }
         if (first == u"discover"_s)
-            return runDiscoverCommand(args);
+            return CliOutput::finish(runDiscoverCommand(args));
         if (first == u"probe"_s)
-            return runProbeCommand(args);
+            return CliOutput::finish(runProbeCommand(args));
         if (first == u"record"_s)
-            return runRecordCommand(args);
+            return CliOutput::finish(runRecordCommand(args));
         if (first == u"bridge"_s)
-            return runBridgeCommand(args);
+            return CliOutput::finish(runBridgeCommand(args));
         if (first == u"demo"_s)
-            return runDemoCommand(args);
+            return CliOutput::finish(runDemoCommand(args));
         if (first == u"demo-node"_s)
             return runDemoNodeCommand(args);
         if (first == u"report"_s)
-            return runReportCommand(args);
+            return CliOutput::finish(runReportCommand(args));
         return runConfigCommand(args);
     }
     return runGui(argc, argv);

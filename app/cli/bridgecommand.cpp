@@ -3,6 +3,7 @@
 
 #include "bridge/referencebridge.h"
 #include "clioutput.h"
+#include "config/yamllimits.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -92,7 +93,8 @@ int runBridgeCommand(const QStringList& arguments)
     CliOutput::keepFreedMemory();
     ReferenceBridge bridge(logLine);
     QString why;
-    if (!bridge.load(f.readAll(), options, &why)) {
+    // At most one byte more than a config may have: /dev/zero is refused, not read forever.
+    if (!bridge.load(f.read(YamlLimits::maxBytes + 1), options, &why)) {
         err(u"%1: %2"_s.arg(path, why));
         return 2;
     }

@@ -398,7 +398,8 @@ bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QStri
     };
     ConfigReadResult read = ConfigReader::read(yaml);
     if (!read.parsed) {
-        const QString first = read.problems.isEmpty() ? QString() : read.problems.first().message;
+        // Located, as `config validate` says it: "LINE:COL: error: ...".
+        const QString first = read.problems.isEmpty() ? QString() : read.problems.first().format(QString()).mid(1);
         return fail(tr("not a bridge config: %1").arg(first));
     }
     d->options = options;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "runfile.h"
 
+#include "common/atomicfile.h"
 #include "common/secrets.h"
 #include "latency/latencyengine.h"
 
@@ -410,6 +411,12 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
 
 bool RunFile::write(const QString& path, const RunData& run, QString* error, const Progress& progress)
 {
+    // The rename at the end would replace a FIFO, a device or a read-only file like any other.
+    if (const QString refused = AtomicFile::refusalReason(path); !refused.isEmpty()) {
+        if (error)
+            *error = refused;
+        return false;
+    }
     const QString temp = path + u".part-"_s + QUuid::createUuid().toString(QUuid::Id128).left(8);
     const auto cleanUp = [&] {
         for (const QString& suffix : {QString(), u"-wal"_s, u"-shm"_s, u"-journal"_s})
