@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Bytes from a shared broker, as an attacker or an unlucky device sends them: every decoder of
 // MQTT payloads does bounded work, and every failure is counted for its topic (issue 11).
+#include "latency/latencyengine.h"
+#include "latency/latencyseries.h"
+#include "latency/samplejoiner.h"
 #include "latency/stampcodec.h"
 #include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttstampdecoder.h"
 #include "mqtt/payloadtext.h"
 
+#include <cmath>
+#include <limits>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -84,6 +89,58 @@ private slots:
         QCOMPARE(decoder.malformedByTopic().value(u"dev/c"_s), 1u);
         QVERIFY2(decoder.lastError().startsWith(u"dev/c: type announcement"_s),
                  qPrintable(decoder.lastError()));
+    }
+    // Extreme but accepted values: stage spans near 2^32 s, summed over many stages, and series
+    // of values whose squares overflow 128 bits. Figures are what the values say, never wrapped.
+    void extremeAcceptedStampsDoNotOverflow()
+    {
+        const qint64 top = StampCodec::kMaxTimeNs - 1;
+        QStringList topics;
+        for (int i = 0; i < 7; ++i)
+            topics << u"/veh/t%1"_s.arg(i);
+        Pipeline p(topics, 0);
+        // Every other stamp on the other host: all six stages are crossings.
+        for (int i = 0; i < 7; ++i)
+            p.setHost(topics[i], i % 2 ? u"cloud"_s : u"vehicle"_s);
+        LatencyEngine engine(p);
+        for (int k = 0; k < 3; ++k)
+            engine.addSample({0, top, 0, top, 0, top, 0});
+        const LatencyStats rt = engine.series(engine.roundTripSeries()).stats();
+        QCOMPARE(rt.count, 3);
+        QCOMPARE(rt.min, 0.0); // six spans of ±top that cancel: exactly 0, not a wrapped sum
+        QCOMPARE(engine.series(engine.stageSeries(0)).stats().mean, double(top) / 1e6);
+        QCOMPARE(engine.series(engine.stageSeries(1)).stats().mean, -double(top) / 1e6);
+
+        LatencySeries series;
+        series.setWindow(0);
+        const qint64 big = std::numeric_limits<qint64>::max();
+        for (int i = 0; i < 4; ++i) {
+            series.append(big);
+            series.append(-big);
+        }
+        QCOMPARE(series.meanMs(), 0.0);
+        const double expected = double(big) * 1e-6 * std::sqrt(8.0 / 7.0);
+        QVERIFY2(std::abs(series.stdMs() - expected) < expected * 1e-9,
+                 qPrintable(QString::number(series.stdMs())));
+        // Once the big values leave the window, the exact sums take over again.
+        series.setWindow(2);
+        series.append(5'000'000);
+        series.append(7'000'000);
+        QCOMPARE(series.meanMs(), 6.0);
+        QCOMPARE(series.stdMs(), std::sqrt(2.0));
+    }
+
+    // Clocks decades apart: the joiner's timeout is measured without overflowing.
+    void joinerTimeoutsSurviveExtremeClocks()
+    {
+        SampleJoiner joiner(2);
+        std::vector<qint64> times;
+        QVERIFY(!joiner.add(0, 1, 1, std::numeric_limits<qint64>::min() + 1, times));
+        joiner.expire(std::numeric_limits<qint64>::max());
+        QCOMPARE(joiner.counters().timedOut, 1u);
+        QVERIFY(!joiner.add(0, 2, 1, std::numeric_limits<qint64>::max(), times));
+        joiner.expire(std::numeric_limits<qint64>::min());
+        QCOMPARE(joiner.pending(), 1);
     }
 };
 
