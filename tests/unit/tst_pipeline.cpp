@@ -220,6 +220,23 @@ private slots:
         QCOMPARE(p.host(11), u"vehicle"_s);
         QCOMPARE(d.stampCount(run.topics[3]), 50u);
     }
+    // Stamps of a broker with many stamp topics: memory stays bounded by stamps, not only by
+    // samples (2,000 samples of 100,000 topics were 200 million kept stamps).
+    void discoveryKeepsABoundedNumberOfStamps()
+    {
+        QStringList topics;
+        for (int t = 0; t < 1000; ++t)
+            topics << u"/many/t%1"_s.arg(t);
+        PipelineDiscovery d;
+        const int samples = int(PipelineDiscovery::kKeptStamps / 1000) + 100;
+        for (int s = 0; s < samples; ++s)
+            for (int t = 0; t < 1000; ++t)
+                d.add({topics[t], qint64(s) * 1'000'000'000LL, qint64(s) * 1'000'000'000LL + t, 0});
+        QCOMPARE(d.completeSamples(), int(PipelineDiscovery::kKeptStamps / 1000));
+        QCOMPARE(d.topics().size(), 1000);
+        QCOMPARE(d.propose().topics(), topics);
+    }
+
     // Regression (issue 11, item 6): labelling was cubic in the topics. The labels must not change.
     void stageLabelsAreTheOldLabels()
     {
