@@ -1,4 +1,4 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
@@ -65,9 +65,67 @@
     </message>
 </context>
 <context>
+    <name>BagReader</name>
+    <message>
+        <source>usage: bridgescope-bagreader BAG OUT.bsrun</source>
+        <translation>Aufruf: bridgescope-bagreader BAG AUS.bsrun</translation>
+    </message>
+    <message>
+        <source>the bag asks for more memory than a bag of stamps needs: it is damaged</source>
+        <translation>das Bag verlangt mehr Speicher, als ein Bag mit Zeitstempeln braucht: es ist beschädigt</translation>
+    </message>
+    <message>
+        <source>cannot read the bag: %1</source>
+        <translation>das Bag ist nicht lesbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>BagReaderProcess</name>
+    <message>
+        <source>cannot read it</source>
+        <translation>nicht lesbar</translation>
+    </message>
+    <message>
+        <source>not a ROS 1 bag (no #ROSBAG V2.0 header)</source>
+        <translation>kein ROS-1-Bag (kein Header #ROSBAG V2.0)</translation>
+    </message>
+    <message>
+        <source>cannot read bags: the helper program bridgescope-bagreader is not installed</source>
+        <translation>Bags sind nicht lesbar: das Hilfsprogramm bridgescope-bagreader ist nicht installiert</translation>
+    </message>
+    <message>
+        <source>no temporary folder: %1</source>
+        <translation>kein temporärer Ordner: %1</translation>
+    </message>
+    <message>
+        <source>cannot start %1: %2</source>
+        <translation>%1 lässt sich nicht starten: %2</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>the bag reader made no progress for %1 s; the bag may be damaged</source>
+        <translation>der Bag-Leser kam %1 s lang nicht voran; das Bag ist vielleicht beschädigt</translation>
+    </message>
+    <message>
+        <source>the bag is damaged: rosbag&apos;s library crashed reading it%1</source>
+        <translation>das Bag ist beschädigt: die rosbag-Bibliothek ist beim Lesen abgestürzt%1</translation>
+    </message>
+    <message>
+        <source>the bag reader failed (exit %1)</source>
+        <translation>der Bag-Leser ist gescheitert (Status %1)</translation>
+    </message>
+    <message>
+        <source>the bag reader&apos;s result does not read: %1</source>
+        <translation>das Ergebnis des Bag-Lesers ist nicht lesbar: %1</translation>
+    </message>
+</context>
+<context>
     <name>BridgeCommand</name>
     <message>
-        <source>Broker URL; overrides the config's broker host and port.</source>
+        <source>Broker URL; overrides the config&apos;s broker host and port.</source>
         <translation>Broker-URL; ersetzt Rechner und Port des Brokers aus der Konfiguration.</translation>
     </message>
     <message>
@@ -83,11 +141,11 @@
         <translation>Wert für $(arg NAME) in der Konfiguration; mehrfach möglich.</translation>
     </message>
     <message>
-        <source>Shift this bridge's clock (stamps, latencies) by MS milliseconds, as if it ran on a host whose clock is off.</source>
+        <source>Shift this bridge&apos;s clock (stamps, latencies) by MS milliseconds, as if it ran on a host whose clock is off.</source>
         <translation>Die Uhr dieser Bridge (Zeitstempel, Latenzen) um MS Millisekunden verschieben, als liefe sie auf einem Rechner mit falsch gehender Uhr.</translation>
     </message>
     <message>
-        <source>Publish the type announcement with every message, exactly as mqtt_client v2.2.1 does (small messages then wait up to 40 ms for TCP's delayed ACK); by default once per type and connection.</source>
+        <source>Publish the type announcement with every message, exactly as mqtt_client v2.2.1 does (small messages then wait up to 40 ms for TCP&apos;s delayed ACK); by default once per type and connection.</source>
         <translation>Die Typankündigung mit jeder Nachricht veröffentlichen, genau wie mqtt_client v2.2.1 (kleine Nachrichten warten dann bis zu 40 ms auf das verzögerte ACK von TCP); Vorgabe: einmal je Typ und Verbindung.</translation>
     </message>
     <message>
@@ -95,7 +153,7 @@
         <translation>mqtt_client-Konfiguration (ROS-1- oder ROS-2-Layout).</translation>
     </message>
     <message>
-        <source>Runs an mqtt_client config as a reference bridge between the ROS master and the broker, with mqtt_client's wire protocol (type announcements, injected stamps, latency topics, primitives) and the benchmarking suite's timestamp_topic_prefix stamps. Stops cleanly on Ctrl+C or SIGTERM.
+        <source>Runs an mqtt_client config as a reference bridge between the ROS master and the broker, with mqtt_client&apos;s wire protocol (type announcements, injected stamps, latency topics, primitives) and the benchmarking suite&apos;s timestamp_topic_prefix stamps. Stops cleanly on Ctrl+C or SIGTERM.
 Exit status: 0 stopped, 1 broker or master failed, 2 bad options or config.</source>
         <translation>Führt eine mqtt_client-Konfiguration als Referenz-Bridge zwischen ROS-Master und Broker aus, mit dem Übertragungsprotokoll von mqtt_client (Typankündigungen, eingefügte Zeitstempel, Latenz-Topics, Primitivwerte) und den timestamp_topic_prefix-Zeitstempeln der Benchmarking-Suite. Beendet sich sauber bei Strg+C oder SIGTERM.
 Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen oder Konfiguration.</translation>
@@ -113,8 +171,8 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <translation>--clock-offset-ms erwartet eine Anzahl Millisekunden</translation>
     </message>
     <message>
-        <source>--arg takes NAME=VALUE, not '%1'</source>
-        <translation>--arg erwartet NAME=VALUE, nicht '%1'</translation>
+        <source>--arg takes NAME=VALUE, not &apos;%1&apos;</source>
+        <translation>--arg erwartet NAME=VALUE, nicht &apos;%1&apos;</translation>
     </message>
     <message>
         <source>bridge failed: %1</source>
@@ -146,8 +204,8 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <translation>Diese Hilfe anzeigen.</translation>
     </message>
     <message>
-        <source>Run '%1 --help' for usage.</source>
-        <translation>'%1 --help' zeigt die Verwendung.</translation>
+        <source>Run &apos;%1 --help&apos; for usage.</source>
+        <translation>&apos;%1 --help&apos; zeigt die Verwendung.</translation>
     </message>
     <message>
         <source>error: cannot write to standard output: %1</source>
@@ -164,7 +222,7 @@ Commands:
   convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout (a valid one, or --force)
   peer FILE [--client-id ID]               write the config for the other end of the link (a valid one, or --force)
 
-Run 'bridgescope config &lt;command&gt; --help' for the options of a command.</source>
+Run &apos;bridgescope config &lt;command&gt; --help&apos; for the options of a command.</source>
         <translation>Aufruf: bridgescope config &lt;Befehl&gt; [Optionen]
 
 Befehle:
@@ -172,7 +230,7 @@ Befehle:
   convert DATEI --to ros1|ros2|mqtt_bridge Konfiguration in einem anderen Layout schreiben (eine gültige, oder --force)
   peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben (eine gültige, oder --force)
 
-'bridgescope config &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+&apos;bridgescope config &lt;Befehl&gt; --help&apos; zeigt die Optionen eines Befehls.</translation>
     </message>
     <message>
         <source>%1: error: cannot read the file: %2</source>
@@ -227,15 +285,15 @@ Befehle:
         <translation>%1: note: %2</translation>
     </message>
     <message>
-        <source>Client id of the peer (default: the id with "_peer" appended).</source>
-        <translation>Client-ID der Gegenstelle (Vorgabe: die ID mit angehängtem "_peer").</translation>
+        <source>Client id of the peer (default: the id with &quot;_peer&quot; appended).</source>
+        <translation>Client-ID der Gegenstelle (Vorgabe: die ID mit angehängtem &quot;_peer&quot;).</translation>
     </message>
     <message>
-        <source>Layout to write (default: the input's).</source>
+        <source>Layout to write (default: the input&apos;s).</source>
         <translation>Zu schreibendes Layout (Vorgabe: das der Eingabe).</translation>
     </message>
     <message>
-        <source>This host's bridge config.</source>
+        <source>This host&apos;s bridge config.</source>
         <translation>Die Bridge-Konfiguration dieses Rechners.</translation>
     </message>
     <message>
@@ -251,8 +309,8 @@ Befehle:
         <translation>--to erwartet ros1, ros2 oder mqtt_bridge</translation>
     </message>
     <message>
-        <source>bridgescope config: unknown command '%1'</source>
-        <translation>bridgescope config: unbekannter Befehl '%1'</translation>
+        <source>bridgescope config: unknown command &apos;%1&apos;</source>
+        <translation>bridgescope config: unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
         <source>Write even an invalid config; what cannot be written is named on standard error.</source>
@@ -483,20 +541,20 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
 <context>
     <name>ConfigReader</name>
     <message>
-        <source>'%1' must be a map of options, not a %2.</source>
-        <translation>'%1' muss eine Map von Optionen sein, keine %2.</translation>
+        <source>&apos;%1&apos; must be a map of options, not a %2.</source>
+        <translation>&apos;%1&apos; muss eine Map von Optionen sein, keine %2.</translation>
     </message>
     <message>
-        <source>Write the options as 'key: value' lines below '%1'.</source>
-        <translation>Optionen als Zeilen 'schlüssel: wert' unter '%1' schreiben.</translation>
+        <source>Write the options as &apos;key: value&apos; lines below &apos;%1&apos;.</source>
+        <translation>Optionen als Zeilen &apos;schlüssel: wert&apos; unter &apos;%1&apos; schreiben.</translation>
     </message>
     <message>
-        <source>'%1' must be a single value, not a %2.</source>
-        <translation>'%1' muss ein einzelner Wert sein, keine %2.</translation>
+        <source>&apos;%1&apos; must be a single value, not a %2.</source>
+        <translation>&apos;%1&apos; muss ein einzelner Wert sein, keine %2.</translation>
     </message>
     <message>
-        <source>Write it as '%1: value'.</source>
-        <translation>Als '%1: wert' schreiben.</translation>
+        <source>Write it as &apos;%1: value&apos;.</source>
+        <translation>Als &apos;%1: wert&apos; schreiben.</translation>
     </message>
     <message>
         <source>map</source>
@@ -515,60 +573,60 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Einzelwert</translation>
     </message>
     <message>
-        <source>'bridge' must be a map with 'ros2mqtt' and 'mqtt2ros' lists.</source>
-        <translation>'bridge' muss eine Map mit den Listen 'ros2mqtt' und 'mqtt2ros' sein.</translation>
+        <source>&apos;bridge&apos; must be a map with &apos;ros2mqtt&apos; and &apos;mqtt2ros&apos; lists.</source>
+        <translation>&apos;bridge&apos; muss eine Map mit den Listen &apos;ros2mqtt&apos; und &apos;mqtt2ros&apos; sein.</translation>
     </message>
     <message>
-        <source>'bridge.%1' must be a list of mappings ('- ros_topic: ...').</source>
-        <translation>'bridge.%1' muss eine Liste von Zuordnungen sein ('- ros_topic: ...').</translation>
+        <source>&apos;bridge.%1&apos; must be a list of mappings (&apos;- ros_topic: ...&apos;).</source>
+        <translation>&apos;bridge.%1&apos; muss eine Liste von Zuordnungen sein (&apos;- ros_topic: ...&apos;).</translation>
     </message>
     <message>
-        <source>This looks like the ROS 2 layout; it needs '&lt;node&gt;: ros__parameters:' around it, or write the mappings as a list.</source>
-        <translation>Das sieht nach dem ROS-2-Layout aus; dann gehört '&lt;knoten&gt;: ros__parameters:' darum, sonst die Zuordnungen als Liste schreiben.</translation>
+        <source>This looks like the ROS 2 layout; it needs &apos;&lt;node&gt;: ros__parameters:&apos; around it, or write the mappings as a list.</source>
+        <translation>Das sieht nach dem ROS-2-Layout aus; dann gehört &apos;&lt;knoten&gt;: ros__parameters:&apos; darum, sonst die Zuordnungen als Liste schreiben.</translation>
     </message>
     <message>
-        <source>Entry %1 of 'bridge.%2' must be a map with 'ros_topic' and 'mqtt_topic'.</source>
-        <translation>Eintrag %1 von 'bridge.%2' muss eine Map mit 'ros_topic' und 'mqtt_topic' sein.</translation>
+        <source>Entry %1 of &apos;bridge.%2&apos; must be a map with &apos;ros_topic&apos; and &apos;mqtt_topic&apos;.</source>
+        <translation>Eintrag %1 von &apos;bridge.%2&apos; muss eine Map mit &apos;ros_topic&apos; und &apos;mqtt_topic&apos; sein.</translation>
     </message>
     <message>
-        <source>'bridge' must be a map with 'ros2mqtt' and 'mqtt2ros'.</source>
-        <translation>'bridge' muss eine Map mit 'ros2mqtt' und 'mqtt2ros' sein.</translation>
+        <source>&apos;bridge&apos; must be a map with &apos;ros2mqtt&apos; and &apos;mqtt2ros&apos;.</source>
+        <translation>&apos;bridge&apos; muss eine Map mit &apos;ros2mqtt&apos; und &apos;mqtt2ros&apos; sein.</translation>
     </message>
     <message>
-        <source>'bridge.%1' must be a map with '%2' and one entry per topic.</source>
-        <translation>'bridge.%1' muss eine Map mit '%2' und einem Eintrag je Topic sein.</translation>
+        <source>&apos;bridge.%1&apos; must be a map with &apos;%2&apos; and one entry per topic.</source>
+        <translation>&apos;bridge.%1&apos; muss eine Map mit &apos;%2&apos; und einem Eintrag je Topic sein.</translation>
     </message>
     <message>
-        <source>'bridge.%1.%2' must be a list of topic names.</source>
-        <translation>'bridge.%1.%2' muss eine Liste von Topic-Namen sein.</translation>
+        <source>&apos;bridge.%1.%2&apos; must be a list of topic names.</source>
+        <translation>&apos;bridge.%1.%2&apos; muss eine Liste von Topic-Namen sein.</translation>
     </message>
     <message>
-        <source>'%1' is listed in '%2' but has no settings below 'bridge.%3'.</source>
-        <translation>'%1' steht in '%2', hat aber keine Einstellungen unter 'bridge.%3'.</translation>
+        <source>&apos;%1&apos; is listed in &apos;%2&apos; but has no settings below &apos;bridge.%3&apos;.</source>
+        <translation>&apos;%1&apos; steht in &apos;%2&apos;, hat aber keine Einstellungen unter &apos;bridge.%3&apos;.</translation>
     </message>
     <message>
-        <source>Add '%1:' with its '%2' below 'bridge.%3'.</source>
-        <translation>'%1:' mit '%2' unter 'bridge.%3' ergänzen.</translation>
+        <source>Add &apos;%1:&apos; with its &apos;%2&apos; below &apos;bridge.%3&apos;.</source>
+        <translation>&apos;%1:&apos; mit &apos;%2&apos; unter &apos;bridge.%3&apos; ergänzen.</translation>
     </message>
     <message>
-        <source>'%1' has settings below 'bridge.%2' but is not listed in '%3'; mqtt_client ignores it.</source>
-        <translation>'%1' hat Einstellungen unter 'bridge.%2', steht aber nicht in '%3'; mqtt_client ignoriert es.</translation>
+        <source>&apos;%1&apos; has settings below &apos;bridge.%2&apos; but is not listed in &apos;%3&apos;; mqtt_client ignores it.</source>
+        <translation>&apos;%1&apos; hat Einstellungen unter &apos;bridge.%2&apos;, steht aber nicht in &apos;%3&apos;; mqtt_client ignoriert es.</translation>
     </message>
     <message>
-        <source>Add '%1' to '%2' or remove its settings.</source>
-        <translation>'%1' in '%2' aufnehmen oder seine Einstellungen entfernen.</translation>
+        <source>Add &apos;%1&apos; to &apos;%2&apos; or remove its settings.</source>
+        <translation>&apos;%1&apos; in &apos;%2&apos; aufnehmen oder seine Einstellungen entfernen.</translation>
     </message>
     <message>
-        <source>mqtt_bridge's 'bridge' must be a list of factories.</source>
-        <translation>'bridge' von mqtt_bridge muss eine Liste von Factories sein.</translation>
+        <source>mqtt_bridge&apos;s &apos;bridge&apos; must be a list of factories.</source>
+        <translation>&apos;bridge&apos; von mqtt_bridge muss eine Liste von Factories sein.</translation>
     </message>
     <message>
-        <source>Entry %1 of 'bridge' must be a map with 'factory', 'msg_type', 'topic_from' and 'topic_to'.</source>
-        <translation>Eintrag %1 von 'bridge' muss eine Map mit 'factory', 'msg_type', 'topic_from' und 'topic_to' sein.</translation>
+        <source>Entry %1 of &apos;bridge&apos; must be a map with &apos;factory&apos;, &apos;msg_type&apos;, &apos;topic_from&apos; and &apos;topic_to&apos;.</source>
+        <translation>Eintrag %1 von &apos;bridge&apos; muss eine Map mit &apos;factory&apos;, &apos;msg_type&apos;, &apos;topic_from&apos; und &apos;topic_to&apos; sein.</translation>
     </message>
     <message>
-        <source>Entry %1 of 'bridge' has factory '%2'; only mqtt_bridge's RosToMqttBridge and MqttToRosBridge are understood.</source>
-        <translation>Eintrag %1 von 'bridge' hat die Factory '%2'; verstanden werden nur RosToMqttBridge und MqttToRosBridge von mqtt_bridge.</translation>
+        <source>Entry %1 of &apos;bridge&apos; has factory &apos;%2&apos;; only mqtt_bridge&apos;s RosToMqttBridge and MqttToRosBridge are understood.</source>
+        <translation>Eintrag %1 von &apos;bridge&apos; hat die Factory &apos;%2&apos;; verstanden werden nur RosToMqttBridge und MqttToRosBridge von mqtt_bridge.</translation>
     </message>
     <message>
         <source>YAML syntax error: %1</source>
@@ -583,16 +641,16 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Die Datei ist leer.</translation>
     </message>
     <message>
-        <source>The file is not a map; an mqtt_client config starts with 'broker:', 'client:' and 'bridge:' (or '&lt;node&gt;: ros__parameters:').</source>
-        <translation>Die Datei ist keine Map; eine mqtt_client-Konfiguration beginnt mit 'broker:', 'client:' und 'bridge:' (oder '&lt;knoten&gt;: ros__parameters:').</translation>
+        <source>The file is not a map; an mqtt_client config starts with &apos;broker:&apos;, &apos;client:&apos; and &apos;bridge:&apos; (or &apos;&lt;node&gt;: ros__parameters:&apos;).</source>
+        <translation>Die Datei ist keine Map; eine mqtt_client-Konfiguration beginnt mit &apos;broker:&apos;, &apos;client:&apos; und &apos;bridge:&apos; (oder &apos;&lt;knoten&gt;: ros__parameters:&apos;).</translation>
     </message>
     <message>
-        <source>'ros__parameters' must be a map.</source>
-        <translation>'ros__parameters' muss eine Map sein.</translation>
+        <source>&apos;ros__parameters&apos; must be a map.</source>
+        <translation>&apos;ros__parameters&apos; muss eine Map sein.</translation>
     </message>
     <message>
-        <source>This is not an mqtt_client or mqtt_bridge config: it has no 'bridge', 'broker', 'client' or 'ros__parameters' key.</source>
-        <translation>Das ist keine mqtt_client- oder mqtt_bridge-Konfiguration: Es fehlt ein Schlüssel 'bridge', 'broker', 'client' oder 'ros__parameters'.</translation>
+        <source>This is not an mqtt_client or mqtt_bridge config: it has no &apos;bridge&apos;, &apos;broker&apos;, &apos;client&apos; or &apos;ros__parameters&apos; key.</source>
+        <translation>Das ist keine mqtt_client- oder mqtt_bridge-Konfiguration: Es fehlt ein Schlüssel &apos;bridge&apos;, &apos;broker&apos;, &apos;client&apos; oder &apos;ros__parameters&apos;.</translation>
     </message>
     <message>
         <source>Open a bridge config; pipeline files belong on the Measure page.</source>
@@ -607,12 +665,12 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>%1 geht verloren, wenn die Konfiguration neu geschrieben wird.</translation>
     </message>
     <message>
-        <source>Entry %1 of 'bridge.%2'</source>
-        <translation>Eintrag %1 von 'bridge.%2'</translation>
+        <source>Entry %1 of &apos;bridge.%2&apos;</source>
+        <translation>Eintrag %1 von &apos;bridge.%2&apos;</translation>
     </message>
     <message>
-        <source>Entry %1 of 'bridge'</source>
-        <translation>Eintrag %1 von 'bridge'</translation>
+        <source>Entry %1 of &apos;bridge&apos;</source>
+        <translation>Eintrag %1 von &apos;bridge&apos;</translation>
     </message>
     <message>
         <source>The rest of the file from this place on</source>
@@ -622,24 +680,24 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
 <context>
     <name>ConfigValidator</name>
     <message>
-        <source>ros2mqtt '%1' → '%2'</source>
-        <translation>ros2mqtt '%1' → '%2'</translation>
+        <source>ros2mqtt &apos;%1&apos; → &apos;%2&apos;</source>
+        <translation>ros2mqtt &apos;%1&apos; → &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>mqtt2ros '%1' → '%2'</source>
-        <translation>mqtt2ros '%1' → '%2'</translation>
+        <source>mqtt2ros &apos;%1&apos; → &apos;%2&apos;</source>
+        <translation>mqtt2ros &apos;%1&apos; → &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>%1: '%2' is only understood by the ROS 2 mqtt_client (2.3 and later); the ROS 1 mqtt_client ignores it.</source>
-        <translation>%1: '%2' versteht nur der ROS-2-mqtt_client (ab 2.3); der ROS-1-mqtt_client ignoriert es.</translation>
+        <source>%1: &apos;%2&apos; is only understood by the ROS 2 mqtt_client (2.3 and later); the ROS 1 mqtt_client ignores it.</source>
+        <translation>%1: &apos;%2&apos; versteht nur der ROS-2-mqtt_client (ab 2.3); der ROS-1-mqtt_client ignoriert es.</translation>
     </message>
     <message>
-        <source>Remove '%1' or save the config in the ROS 2 layout.</source>
-        <translation>'%1' entfernen oder die Konfiguration im ROS-2-Layout speichern.</translation>
+        <source>Remove &apos;%1&apos; or save the config in the ROS 2 layout.</source>
+        <translation>&apos;%1&apos; entfernen oder die Konfiguration im ROS-2-Layout speichern.</translation>
     </message>
     <message>
-        <source>%1: QoS '%2' is not 0, 1 or 2.</source>
-        <translation>%1: QoS '%2' ist nicht 0, 1 oder 2.</translation>
+        <source>%1: QoS &apos;%2&apos; is not 0, 1 or 2.</source>
+        <translation>%1: QoS &apos;%2&apos; ist nicht 0, 1 oder 2.</translation>
     </message>
     <message>
         <source>Set %1 to 0 (at most once), 1 (at least once) or 2 (exactly once).</source>
@@ -658,48 +716,48 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>true oder false</translation>
     </message>
     <message>
-        <source>%1: '%2' is '%3', which is not %4.</source>
-        <translation>%1: '%2' ist '%3', das ist nicht %4.</translation>
+        <source>%1: &apos;%2&apos; is &apos;%3&apos;, which is not %4.</source>
+        <translation>%1: &apos;%2&apos; ist &apos;%3&apos;, das ist nicht %4.</translation>
     </message>
     <message>
         <source>Write %1 as %2.</source>
         <translation>%1 als %2 schreiben.</translation>
     </message>
     <message>
-        <source>%1: '%2' is %3, outside %4..%5.</source>
-        <translation>%1: '%2' ist %3, außerhalb von %4..%5.</translation>
+        <source>%1: &apos;%2&apos; is %3, outside %4..%5.</source>
+        <translation>%1: &apos;%2&apos; ist %3, außerhalb von %4..%5.</translation>
     </message>
     <message>
         <source>Choose a value from %1 to %2.</source>
         <translation>Einen Wert von %1 bis %2 wählen.</translation>
     </message>
     <message>
-        <source>%1: '%2' must not be negative.</source>
-        <translation>%1: '%2' darf nicht negativ sein.</translation>
+        <source>%1: &apos;%2&apos; must not be negative.</source>
+        <translation>%1: &apos;%2&apos; darf nicht negativ sein.</translation>
     </message>
     <message>
         <source>Use 0 or a positive number.</source>
         <translation>0 oder eine positive Zahl verwenden.</translation>
     </message>
     <message>
-        <source>%1: '%2: %3' is read as a number or boolean, but mqtt_client expects text%4.</source>
-        <translation>%1: '%2: %3' wird als Zahl oder Wahrheitswert gelesen, mqtt_client erwartet aber Text%4.</translation>
+        <source>%1: &apos;%2: %3&apos; is read as a number or boolean, but mqtt_client expects text%4.</source>
+        <translation>%1: &apos;%2: %3&apos; wird als Zahl oder Wahrheitswert gelesen, mqtt_client erwartet aber Text%4.</translation>
     </message>
     <message>
         <source> (ROS 2 rejects the parameter)</source>
         <translation> (ROS 2 lehnt den Parameter ab)</translation>
     </message>
     <message>
-        <source>Quote it: %1: "%2".</source>
-        <translation>In Anführungszeichen setzen: %1: "%2".</translation>
+        <source>Quote it: %1: &quot;%2&quot;.</source>
+        <translation>In Anführungszeichen setzen: %1: &quot;%2&quot;.</translation>
     </message>
     <message>
-        <source>%1: unknown key '%2'; mqtt_client ignores it.</source>
-        <translation>%1: unbekannter Schlüssel '%2'; mqtt_client ignoriert ihn.</translation>
+        <source>%1: unknown key &apos;%2&apos;; mqtt_client ignores it.</source>
+        <translation>%1: unbekannter Schlüssel &apos;%2&apos;; mqtt_client ignoriert ihn.</translation>
     </message>
     <message>
-        <source>Did you mean '%1'?</source>
-        <translation>Ist '%1' gemeint?</translation>
+        <source>Did you mean &apos;%1&apos;?</source>
+        <translation>Ist &apos;%1&apos; gemeint?</translation>
     </message>
     <message>
         <source>%1 has no ROS topic; mqtt_client ignores the mapping.</source>
@@ -710,12 +768,12 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>ros_topic setzen, z. B. /vehicle/points.</translation>
     </message>
     <message>
-        <source>%1: '%2' is not a valid ROS topic name: %3.</source>
-        <translation>%1: '%2' ist kein gültiger ROS-Topic-Name: %3.</translation>
+        <source>%1: &apos;%2&apos; is not a valid ROS topic name: %3.</source>
+        <translation>%1: &apos;%2&apos; ist kein gültiger ROS-Topic-Name: %3.</translation>
     </message>
     <message>
-        <source>Use letters, digits, '_' and '/', starting with a letter, '/' or '~'.</source>
-        <translation>Buchstaben, Ziffern, '_' und '/' verwenden, beginnend mit Buchstabe, '/' oder '~'.</translation>
+        <source>Use letters, digits, &apos;_&apos; and &apos;/&apos;, starting with a letter, &apos;/&apos; or &apos;~&apos;.</source>
+        <translation>Buchstaben, Ziffern, &apos;_&apos; und &apos;/&apos; verwenden, beginnend mit Buchstabe, &apos;/&apos; oder &apos;~&apos;.</translation>
     </message>
     <message>
         <source>%1 has no MQTT topic; mqtt_client ignores the mapping.</source>
@@ -726,44 +784,44 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>mqtt_topic setzen, z. B. vehicle/points.</translation>
     </message>
     <message>
-        <source>%1: '%2' contains '+' or '#', but ros2mqtt publishes on it and MQTT forbids wildcards in published topics.</source>
-        <translation>%1: '%2' enthält '+' oder '#', aber ros2mqtt veröffentlicht darauf, und MQTT verbietet Platzhalter in veröffentlichten Topics.</translation>
+        <source>%1: &apos;%2&apos; contains &apos;+&apos; or &apos;#&apos;, but ros2mqtt publishes on it and MQTT forbids wildcards in published topics.</source>
+        <translation>%1: &apos;%2&apos; enthält &apos;+&apos; oder &apos;#&apos;, aber ros2mqtt veröffentlicht darauf, und MQTT verbietet Platzhalter in veröffentlichten Topics.</translation>
     </message>
     <message>
         <source>Replace the wildcard by a concrete topic level.</source>
         <translation>Den Platzhalter durch eine konkrete Topic-Ebene ersetzen.</translation>
     </message>
     <message>
-        <source>%1: '%2' is not a valid MQTT topic: %3.</source>
-        <translation>%1: '%2' ist kein gültiges MQTT-Topic: %3.</translation>
+        <source>%1: &apos;%2&apos; is not a valid MQTT topic: %3.</source>
+        <translation>%1: &apos;%2&apos; ist kein gültiges MQTT-Topic: %3.</translation>
     </message>
     <message>
         <source>Fix the topic name.</source>
         <translation>Den Topic-Namen korrigieren.</translation>
     </message>
     <message>
-        <source>%1: '%2' is a wildcard filter; mqtt_client looks incoming messages up by their exact topic, so messages matching it are dropped.</source>
-        <translation>%1: '%2' ist ein Platzhalter-Filter; mqtt_client sucht eingehende Nachrichten über ihr genaues Topic, passende Nachrichten gehen daher verloren.</translation>
+        <source>%1: &apos;%2&apos; is a wildcard filter; mqtt_client looks incoming messages up by their exact topic, so messages matching it are dropped.</source>
+        <translation>%1: &apos;%2&apos; ist ein Platzhalter-Filter; mqtt_client sucht eingehende Nachrichten über ihr genaues Topic, passende Nachrichten gehen daher verloren.</translation>
     </message>
     <message>
         <source>Bridge each MQTT topic with its own mqtt2ros mapping.</source>
         <translation>Jedes MQTT-Topic mit einer eigenen mqtt2ros-Zuordnung übertragen.</translation>
     </message>
     <message>
-        <source>%1: '%2' starts with '/', which makes an empty first level in MQTT (a common slip when copying ROS names).</source>
-        <translation>%1: '%2' beginnt mit '/', das ergibt in MQTT eine leere erste Ebene (ein häufiges Versehen beim Kopieren von ROS-Namen).</translation>
+        <source>%1: &apos;%2&apos; starts with &apos;/&apos;, which makes an empty first level in MQTT (a common slip when copying ROS names).</source>
+        <translation>%1: &apos;%2&apos; beginnt mit &apos;/&apos;, das ergibt in MQTT eine leere erste Ebene (ein häufiges Versehen beim Kopieren von ROS-Namen).</translation>
     </message>
     <message>
-        <source>Remove the leading '/': '%1'.</source>
-        <translation>Das führende '/' entfernen: '%1'.</translation>
+        <source>Remove the leading &apos;/&apos;: &apos;%1&apos;.</source>
+        <translation>Das führende &apos;/&apos; entfernen: &apos;%1&apos;.</translation>
     </message>
     <message>
-        <source>%1: topics starting with '$' are reserved for the broker ($SYS).</source>
-        <translation>%1: Topics, die mit '$' beginnen, sind dem Broker vorbehalten ($SYS).</translation>
+        <source>%1: topics starting with &apos;$&apos; are reserved for the broker ($SYS).</source>
+        <translation>%1: Topics, die mit &apos;$&apos; beginnen, sind dem Broker vorbehalten ($SYS).</translation>
     </message>
     <message>
-        <source>Choose a topic that does not start with '$'.</source>
-        <translation>Ein Topic wählen, das nicht mit '$' beginnt.</translation>
+        <source>Choose a topic that does not start with &apos;$&apos;.</source>
+        <translation>Ein Topic wählen, das nicht mit &apos;$&apos; beginnt.</translation>
     </message>
     <message>
         <source>%1: inject_timestamp cannot be used with primitive: a primitive is sent as plain text with no room for a time stamp.</source>
@@ -794,32 +852,32 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Eines von beiden ausschalten.</translation>
     </message>
     <message>
-        <source>%1: ROS topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
-        <translation>%1: ROS-Topic '%2' wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
+        <source>%1: ROS topic &apos;%2&apos; is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
+        <translation>%1: ROS-Topic &apos;%2&apos; wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
     </message>
     <message>
         <source>Remove one of the two mappings, or bridge a different ROS topic.</source>
         <translation>Eine der beiden Zuordnungen entfernen oder ein anderes ROS-Topic übertragen.</translation>
     </message>
     <message>
-        <source>%1: MQTT topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
-        <translation>%1: MQTT-Topic '%2' wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
+        <source>%1: MQTT topic &apos;%2&apos; is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
+        <translation>%1: MQTT-Topic &apos;%2&apos; wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
     </message>
     <message>
         <source>Remove one of the two mappings, or subscribe a different MQTT topic.</source>
         <translation>Eine der beiden Zuordnungen entfernen oder ein anderes MQTT-Topic abonnieren.</translation>
     </message>
     <message>
-        <source>%1 and %2 form a loop: every message on '%3' goes to MQTT and comes back to '%3'.</source>
-        <translation>%1 und %2 bilden eine Schleife: Jede Nachricht auf '%3' geht nach MQTT und kommt auf '%3' zurück.</translation>
+        <source>%1 and %2 form a loop: every message on &apos;%3&apos; goes to MQTT and comes back to &apos;%3&apos;.</source>
+        <translation>%1 und %2 bilden eine Schleife: Jede Nachricht auf &apos;%3&apos; geht nach MQTT und kommt auf &apos;%3&apos; zurück.</translation>
     </message>
     <message>
         <source>Publish the returning messages on a different ROS topic.</source>
         <translation>Die zurückkommenden Nachrichten auf einem anderen ROS-Topic veröffentlichen.</translation>
     </message>
     <message>
-        <source>%1.%2: '%3' does not exist on this machine (looked for %4).</source>
-        <translation>%1.%2: '%3' gibt es auf diesem Rechner nicht (gesucht als %4).</translation>
+        <source>%1.%2: &apos;%3&apos; does not exist on this machine (looked for %4).</source>
+        <translation>%1.%2: &apos;%3&apos; gibt es auf diesem Rechner nicht (gesucht als %4).</translation>
     </message>
     <message>
         <source>Check the path on the machine that runs mqtt_client; relative paths are resolved against ROS_HOME.</source>
@@ -834,16 +892,16 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>client.id setzen, z. B. vehicle.</translation>
     </message>
     <message>
-        <source>client.last_will.topic '%1' is not a topic the broker can publish on: %2.</source>
-        <translation>client.last_will.topic '%1' ist kein Topic, auf dem der Broker veröffentlichen kann: %2.</translation>
+        <source>client.last_will.topic &apos;%1&apos; is not a topic the broker can publish on: %2.</source>
+        <translation>client.last_will.topic &apos;%1&apos; ist kein Topic, auf dem der Broker veröffentlichen kann: %2.</translation>
     </message>
     <message>
-        <source>Use a topic without '+' and '#'.</source>
-        <translation>Ein Topic ohne '+' und '#' verwenden.</translation>
+        <source>Use a topic without &apos;+&apos; and &apos;#&apos;.</source>
+        <translation>Ein Topic ohne &apos;+&apos; und &apos;#&apos; verwenden.</translation>
     </message>
     <message>
-        <source>The config bridges nothing: it has no entries under 'bridge' (fine for a settings fragment loaded beside the bridge list).</source>
-        <translation>Die Konfiguration überträgt nichts: Unter 'bridge' steht kein Eintrag (in Ordnung für ein Einstellungs-Fragment neben der Bridge-Liste).</translation>
+        <source>The config bridges nothing: it has no entries under &apos;bridge&apos; (fine for a settings fragment loaded beside the bridge list).</source>
+        <translation>Die Konfiguration überträgt nichts: Unter &apos;bridge&apos; steht kein Eintrag (in Ordnung für ein Einstellungs-Fragment neben der Bridge-Liste).</translation>
     </message>
     <message>
         <source>The config bridges nothing: mqtt_client exits when it finds no ros2mqtt or mqtt2ros mapping.</source>
@@ -858,24 +916,24 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>er ist leer</translation>
     </message>
     <message>
-        <source>it must start with a letter, '/' or '~'</source>
-        <translation>er muss mit einem Buchstaben, '/' oder '~' beginnen</translation>
+        <source>it must start with a letter, &apos;/&apos; or &apos;~&apos;</source>
+        <translation>er muss mit einem Buchstaben, &apos;/&apos; oder &apos;~&apos; beginnen</translation>
     </message>
     <message>
-        <source>'%1' is not allowed (only letters, digits, '_' and '/')</source>
-        <translation>'%1' ist nicht erlaubt (nur Buchstaben, Ziffern, '_' und '/')</translation>
+        <source>&apos;%1&apos; is not allowed (only letters, digits, &apos;_&apos; and &apos;/&apos;)</source>
+        <translation>&apos;%1&apos; ist nicht erlaubt (nur Buchstaben, Ziffern, &apos;_&apos; und &apos;/&apos;)</translation>
     </message>
     <message>
-        <source>it contains '//'</source>
-        <translation>er enthält '//'</translation>
+        <source>it contains &apos;//&apos;</source>
+        <translation>er enthält &apos;//&apos;</translation>
     </message>
     <message>
-        <source>it ends with '/'</source>
-        <translation>er endet auf '/'</translation>
+        <source>it ends with &apos;/&apos;</source>
+        <translation>er endet auf &apos;/&apos;</translation>
     </message>
     <message>
-        <source>'~' must be followed by '/'</source>
-        <translation>auf '~' muss '/' folgen</translation>
+        <source>&apos;~&apos; must be followed by &apos;/&apos;</source>
+        <translation>auf &apos;~&apos; muss &apos;/&apos; folgen</translation>
     </message>
     <message>
         <source>in ROS 2 a name level must not start with a digit</source>
@@ -894,12 +952,12 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Platzhalter sind in einem veröffentlichten Topic nicht erlaubt</translation>
     </message>
     <message>
-        <source>'#' must be a whole level and the last one</source>
-        <translation>'#' muss eine ganze Ebene und die letzte sein</translation>
+        <source>&apos;#&apos; must be a whole level and the last one</source>
+        <translation>&apos;#&apos; muss eine ganze Ebene und die letzte sein</translation>
     </message>
     <message>
-        <source>'+' must be a whole level</source>
-        <translation>'+' muss eine ganze Ebene sein</translation>
+        <source>&apos;+&apos; must be a whole level</source>
+        <translation>&apos;+&apos; muss eine ganze Ebene sein</translation>
     </message>
     <message>
         <source>it contains U+FFFD, the mark of bytes that were not valid UTF-8</source>
@@ -913,8 +971,8 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
 <context>
     <name>ConfigWriter</name>
     <message>
-        <source>%1: '%2' is bridged twice; the ROS 2 layout keys mappings by topic, so only the last one is written.</source>
-        <translation>%1: '%2' wird doppelt übertragen; das ROS-2-Layout ordnet Zuordnungen nach Topic, daher wird nur die letzte geschrieben.</translation>
+        <source>%1: &apos;%2&apos; is bridged twice; the ROS 2 layout keys mappings by topic, so only the last one is written.</source>
+        <translation>%1: &apos;%2&apos; wird doppelt übertragen; das ROS-2-Layout ordnet Zuordnungen nach Topic, daher wird nur die letzte geschrieben.</translation>
     </message>
     <message>
         <source>client.%1 has no equivalent in mqtt_bridge and is not written.</source>
@@ -925,12 +983,12 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>%1: mqtt_bridge braucht den Nachrichtentyp; ros_type setzen (geschrieben als %2).</translation>
     </message>
     <message>
-        <source>%1: '%2' has no equivalent in mqtt_bridge and is not written.</source>
-        <translation>%1: '%2' hat in mqtt_bridge keine Entsprechung und wird nicht geschrieben.</translation>
+        <source>%1: &apos;%2&apos; has no equivalent in mqtt_bridge and is not written.</source>
+        <translation>%1: &apos;%2&apos; hat in mqtt_bridge keine Entsprechung und wird nicht geschrieben.</translation>
     </message>
     <message>
-        <source>'%1' has no place in the written config and is dropped.</source>
-        <translation>'%1' hat in der geschriebenen Konfiguration keinen Platz und geht verloren.</translation>
+        <source>&apos;%1&apos; has no place in the written config and is dropped.</source>
+        <translation>&apos;%1&apos; hat in der geschriebenen Konfiguration keinen Platz und geht verloren.</translation>
     </message>
 </context>
 <context>
@@ -1018,7 +1076,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>cloud: mittlere Erkennungsdauer.</translation>
     </message>
     <message>
-        <source>This host's clock error.</source>
+        <source>This host&apos;s clock error.</source>
         <translation>Abweichung der Uhr dieses Rechners.</translation>
     </message>
     <message>
@@ -1026,7 +1084,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>vehicle oder cloud.</translation>
     </message>
     <message>
-        <source>One of the demo lab's ROS nodes; the lab starts them.</source>
+        <source>One of the demo lab&apos;s ROS nodes; the lab starts them.</source>
         <translation>Einer der ROS-Knoten des Demo-Labors; das Labor startet sie.</translation>
     </message>
     <message>
@@ -1200,7 +1258,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>, mit Zeitstempel</translation>
     </message>
     <message>
-        <source>one-way latency %1 ms (mean of the last %2: %3 ms); valid only as far as the sender's clock agrees with this one</source>
+        <source>one-way latency %1 ms (mean of the last %2: %3 ms); valid only as far as the sender&apos;s clock agrees with this one</source>
         <translation>Einweg-Latenz %1 ms (Mittel der letzten %2: %3 ms); nur so genau, wie die Uhr des Senders mit dieser übereinstimmt</translation>
     </message>
     <message>
@@ -1252,7 +1310,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>(warte auf die erste Nachricht)</translation>
     </message>
     <message>
-        <source>Turn on $SYS in the connection profile to see the broker's figures.</source>
+        <source>Turn on $SYS in the connection profile to see the broker&apos;s figures.</source>
         <translation>$SYS im Verbindungsprofil einschalten, um die Kennzahlen des Brokers zu sehen.</translation>
     </message>
 </context>
@@ -1531,15 +1589,15 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Befehle:</translation>
     </message>
     <message>
-        <source>Run 'bridgescope &lt;command&gt; --help' for the options of a command.</source>
-        <translation>'bridgescope &lt;Befehl&gt; --help' zeigt die Optionen eines Befehls.</translation>
+        <source>Run &apos;bridgescope &lt;command&gt; --help&apos; for the options of a command.</source>
+        <translation>&apos;bridgescope &lt;Befehl&gt; --help&apos; zeigt die Optionen eines Befehls.</translation>
     </message>
     <message>
         <source>measure with this pipeline</source>
         <translation>mit dieser Pipeline messen</translation>
     </message>
     <message>
-        <source>Measure with this pipeline (the suite's metrics-logger YAML).</source>
+        <source>Measure with this pipeline (the suite&apos;s metrics-logger YAML).</source>
         <translation>Mit dieser Pipeline messen (die Metrics-Logger-YAML der Suite).</translation>
     </message>
     <message>
@@ -1969,7 +2027,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Broker nicht verbunden</translation>
     </message>
     <message>
-        <source>Connect to the ROS master and the broker on the Discover page to see this mapping's traffic.</source>
+        <source>Connect to the ROS master and the broker on the Discover page to see this mapping&apos;s traffic.</source>
         <translation>Auf der Seite Entdecken mit ROS-Master und Broker verbinden, um den Verkehr dieser Zuordnung zu sehen.</translation>
     </message>
     <message>
@@ -1977,60 +2035,60 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>ROS-Topic nicht beim Master</translation>
     </message>
     <message>
-        <source>Nobody publishes or subscribes '%1' on this master.</source>
-        <translation>Niemand veröffentlicht oder abonniert '%1' bei diesem Master.</translation>
+        <source>Nobody publishes or subscribes &apos;%1&apos; on this master.</source>
+        <translation>Niemand veröffentlicht oder abonniert &apos;%1&apos; bei diesem Master.</translation>
     </message>
     <message>
         <source>no publisher on ROS</source>
         <translation>kein Publisher auf ROS</translation>
     </message>
     <message>
-        <source>'%1' exists but nobody publishes it, so there is nothing to bridge.</source>
-        <translation>'%1' gibt es, aber niemand veröffentlicht es; es gibt nichts zu übertragen.</translation>
+        <source>&apos;%1&apos; exists but nobody publishes it, so there is nothing to bridge.</source>
+        <translation>&apos;%1&apos; gibt es, aber niemand veröffentlicht es; es gibt nichts zu übertragen.</translation>
     </message>
     <message>
         <source>no bridge running?</source>
         <translation>keine Bridge aktiv?</translation>
     </message>
     <message>
-        <source>'%1' is published (%2) but nothing arrived on '%3' in the last %4 s.</source>
-        <translation>'%1' wird veröffentlicht (%2), aber auf '%3' kam in den letzten %4 s nichts an.</translation>
+        <source>&apos;%1&apos; is published (%2) but nothing arrived on &apos;%3&apos; in the last %4 s.</source>
+        <translation>&apos;%1&apos; wird veröffentlicht (%2), aber auf &apos;%3&apos; kam in den letzten %4 s nichts an.</translation>
     </message>
     <message>
-        <source>'%1' (%2) arrives on '%3' (%4).</source>
-        <translation>'%1' (%2) kommt auf '%3' an (%4).</translation>
+        <source>&apos;%1&apos; (%2) arrives on &apos;%3&apos; (%4).</source>
+        <translation>&apos;%1&apos; (%2) kommt auf &apos;%3&apos; an (%4).</translation>
     </message>
     <message>
         <source>MQTT topic never seen</source>
         <translation>MQTT-Topic nie gesehen</translation>
     </message>
     <message>
-        <source>Nothing has been published on '%1' since Bridgescope connected.</source>
-        <translation>Auf '%1' wurde nichts veröffentlicht, seit Bridgescope verbunden ist.</translation>
+        <source>Nothing has been published on &apos;%1&apos; since Bridgescope connected.</source>
+        <translation>Auf &apos;%1&apos; wurde nichts veröffentlicht, seit Bridgescope verbunden ist.</translation>
     </message>
     <message>
         <source>MQTT topic silent</source>
         <translation>MQTT-Topic still</translation>
     </message>
     <message>
-        <source>'%1' has been silent for %2 s.</source>
-        <translation>'%1' ist seit %2 s still.</translation>
+        <source>&apos;%1&apos; has been silent for %2 s.</source>
+        <translation>&apos;%1&apos; ist seit %2 s still.</translation>
     </message>
     <message>
-        <source>'%1' carries %2 but nobody publishes '%3' on ROS.</source>
-        <translation>'%1' trägt %2, aber niemand veröffentlicht '%3' auf ROS.</translation>
+        <source>&apos;%1&apos; carries %2 but nobody publishes &apos;%3&apos; on ROS.</source>
+        <translation>&apos;%1&apos; trägt %2, aber niemand veröffentlicht &apos;%3&apos; auf ROS.</translation>
     </message>
     <message>
-        <source>'%1' (%2) is published on '%3' (%4).</source>
-        <translation>'%1' (%2) wird auf '%3' veröffentlicht (%4).</translation>
+        <source>&apos;%1&apos; (%2) is published on &apos;%3&apos; (%4).</source>
+        <translation>&apos;%1&apos; (%2) wird auf &apos;%3&apos; veröffentlicht (%4).</translation>
     </message>
     <message>
         <source>type mismatch</source>
         <translation>Typen passen nicht</translation>
     </message>
     <message>
-        <source>The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.</source>
-        <translation>Der Broker kündigt '%1' für '%2' an, aber '%3' hat auf ROS den Typ '%4'.</translation>
+        <source>The broker announces &apos;%1&apos; for &apos;%2&apos;, but &apos;%3&apos; has type &apos;%4&apos; on ROS.</source>
+        <translation>Der Broker kündigt &apos;%1&apos; für &apos;%2&apos; an, aber &apos;%3&apos; hat auf ROS den Typ &apos;%4&apos;.</translation>
     </message>
     <message>
         <source>, %1 ms</source>
@@ -2254,7 +2312,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Automatisch: warte auf Zeitstempel (benchmarking_suite/TimeStamped über ROS oder MQTT, oder JSON-Zeitstempel über MQTT).</translation>
     </message>
     <message>
-        <source>Automatic: ordered by the stamps' times, hosts guessed from the names. Drag rows to reorder, double-click a host to change it.</source>
+        <source>Automatic: ordered by the stamps&apos; times, hosts guessed from the names. Drag rows to reorder, double-click a host to change it.</source>
         <translation>Automatisch: nach den Zeiten der Zeitstempel geordnet, Rechner aus den Namen geraten. Zeilen ziehen zum Umordnen, Rechner doppelklicken zum Ändern.</translation>
     </message>
     <message>
@@ -2310,7 +2368,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>SVG (*.svg);;PNG (*.png)</translation>
     </message>
     <message>
-        <source>The recorded run's pipeline.</source>
+        <source>The recorded run&apos;s pipeline.</source>
         <translation>Die Pipeline des aufgezeichneten Laufs.</translation>
     </message>
     <message>
@@ -2344,24 +2402,28 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
 <context>
     <name>MqttClientWire</name>
     <message>
-        <source>type announcement ends before the length of '%1' (byte %2)</source>
-        <translation>Typankündigung endet vor der Länge von '%1' (Byte %2)</translation>
+        <source>type announcement ends before the length of &apos;%1&apos; (byte %2)</source>
+        <translation>Typankündigung endet vor der Länge von &apos;%1&apos; (Byte %2)</translation>
     </message>
     <message>
-        <source>'%1' claims %2 bytes but only %3 follow</source>
-        <translation>'%1' gibt %2 Bytes an, es folgen aber nur %3</translation>
+        <source>&apos;%1&apos; claims %2 bytes but only %3 follow</source>
+        <translation>&apos;%1&apos; gibt %2 Bytes an, es folgen aber nur %3</translation>
     </message>
     <message>
         <source>type announcement has %1 bytes after the strings, expected 1 (stamped)</source>
         <translation>Typankündigung hat %1 Bytes nach den Zeichenketten, erwartet 1 (stamped)</translation>
     </message>
     <message>
-        <source>'%1' is not an MD5 sum</source>
-        <translation>'%1' ist keine MD5-Summe</translation>
+        <source>&apos;%1&apos; is not an MD5 sum</source>
+        <translation>&apos;%1&apos; ist keine MD5-Summe</translation>
     </message>
     <message>
-        <source>'%1' is not a ROS type name</source>
-        <translation>'%1' ist kein ROS-Typname</translation>
+        <source>&apos;%1&apos; is not a ROS type name</source>
+        <translation>&apos;%1&apos; ist kein ROS-Typname</translation>
+    </message>
+    <message>
+        <source>type announcement of %1 bytes, more than the %2 one may have</source>
+        <translation>Typankündigung mit %1 Bytes, mehr als die erlaubten %2</translation>
     </message>
 </context>
 <context>
@@ -2465,20 +2527,20 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
 <context>
     <name>MqttProfile</name>
     <message>
-        <source>'%1' is not a broker URL; write it as tcp://host:1883 or ssl://host:8883.</source>
-        <translation>'%1' ist keine Broker-URL; als tcp://host:1883 oder ssl://host:8883 schreiben.</translation>
+        <source>&apos;%1&apos; is not a broker URL; write it as tcp://host:1883 or ssl://host:8883.</source>
+        <translation>&apos;%1&apos; ist keine Broker-URL; als tcp://host:1883 oder ssl://host:8883 schreiben.</translation>
     </message>
     <message>
-        <source>'%1' is not a broker scheme; use tcp, ssl, mqtt, mqtts, ws or wss.</source>
-        <translation>'%1' ist kein Broker-Schema; tcp, ssl, mqtt, mqtts, ws oder wss verwenden.</translation>
+        <source>&apos;%1&apos; is not a broker scheme; use tcp, ssl, mqtt, mqtts, ws or wss.</source>
+        <translation>&apos;%1&apos; ist kein Broker-Schema; tcp, ssl, mqtt, mqtts, ws oder wss verwenden.</translation>
     </message>
     <message>
-        <source>'%1' names no host.</source>
-        <translation>'%1' nennt keinen Host.</translation>
+        <source>&apos;%1&apos; names no host.</source>
+        <translation>&apos;%1&apos; nennt keinen Host.</translation>
     </message>
     <message>
-        <source>'%1': port 0 is not a port.</source>
-        <translation>'%1': Port 0 ist kein Port.</translation>
+        <source>&apos;%1&apos;: port 0 is not a port.</source>
+        <translation>&apos;%1&apos;: Port 0 ist kein Port.</translation>
     </message>
     <message>
         <source>MQTT version must be 3.1.1 (4) or 5.</source>
@@ -2489,8 +2551,8 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Mindestens einen Topic-Filter abonnieren, z. B. #.</translation>
     </message>
     <message>
-        <source>Filter '%1': %2.</source>
-        <translation>Filter '%1': %2.</translation>
+        <source>Filter &apos;%1&apos;: %2.</source>
+        <translation>Filter &apos;%1&apos;: %2.</translation>
     </message>
     <message>
         <source>A client certificate needs its key file.</source>
@@ -2536,7 +2598,7 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Client-Schlüssel</translation>
     </message>
     <message>
-        <source>Verify the broker's certificate and host name</source>
+        <source>Verify the broker&apos;s certificate and host name</source>
         <translation>Zertifikat und Hostnamen des Brokers prüfen</translation>
     </message>
     <message>
@@ -2614,6 +2676,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>stamped payload shorter than its 8-byte stamp</source>
         <translation>Nutzlast mit Zeitstempel ist kürzer als ihr 8-Byte-Zeitstempel</translation>
     </message>
+    <message>
+        <source>type announcement: %1</source>
+        <translation>Typankündigung: %1</translation>
+    </message>
 </context>
 <context>
     <name>MqttTopicTree</name>
@@ -2680,6 +2746,20 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Latency</source>
         <translation>Latenz</translation>
+    </message>
+    <message>
+        <source>the definition of %1 does not read: %2</source>
+        <translation>die Definition von %1 ist nicht lesbar: %2</translation>
+    </message>
+    <message>
+        <source>stamped payload shorter than its 8-byte stamp</source>
+        <translation>Nutzlast mit Zeitstempel ist kürzer als ihr 8-Byte-Zeitstempel</translation>
+    </message>
+    <message>
+        <source>%1
+%2 payloads did not decode; the last: %3</source>
+        <translation>%1
+%2 Nutzlasten ließen sich nicht dekodieren; die letzte: %3</translation>
     </message>
 </context>
 <context>
@@ -2812,11 +2892,11 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Passwort des privaten Client-Schlüssels</translation>
     </message>
     <message>
-        <source>TLS version as Paho's ssl_options value (3 = TLS 1.2)</source>
+        <source>TLS version as Paho&apos;s ssl_options value (3 = TLS 1.2)</source>
         <translation>TLS-Version als Wert von Pahos ssl_options (3 = TLS 1.2)</translation>
     </message>
     <message>
-        <source>verify the broker's certificate</source>
+        <source>verify the broker&apos;s certificate</source>
         <translation>Zertifikat des Brokers prüfen</translation>
     </message>
     <message>
@@ -2898,28 +2978,36 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>%1; showing the first %2</source>
         <translation>%1; gezeigt werden die ersten %2</translation>
     </message>
+    <message>
+        <source>%1; too large to show as JSON, showing the first %2 as text</source>
+        <translation>%1; zu groß für die JSON-Ansicht, die ersten %2 werden als Text gezeigt</translation>
+    </message>
+    <message>
+        <source>%1; indented view cut at %2 characters</source>
+        <translation>%1; eingerückte Ansicht nach %2 Zeichen abgeschnitten</translation>
+    </message>
 </context>
 <context>
     <name>PeerConfig</name>
     <message>
-        <source>client.last_will.topic '%1' is kept; both ends would announce their death on the same topic.</source>
-        <translation>client.last_will.topic '%1' bleibt; beide Enden melden ihren Ausfall dann auf demselben Topic.</translation>
+        <source>client.last_will.topic &apos;%1&apos; is kept; both ends would announce their death on the same topic.</source>
+        <translation>client.last_will.topic &apos;%1&apos; bleibt; beide Enden melden ihren Ausfall dann auf demselben Topic.</translation>
     </message>
     <message>
-        <source>ros2mqtt '%1' publishes on '%2', which has a wildcard; it has no peer mapping.</source>
-        <translation>ros2mqtt '%1' veröffentlicht auf '%2', das einen Platzhalter enthält; es bekommt keine Gegen-Zuordnung.</translation>
+        <source>ros2mqtt &apos;%1&apos; publishes on &apos;%2&apos;, which has a wildcard; it has no peer mapping.</source>
+        <translation>ros2mqtt &apos;%1&apos; veröffentlicht auf &apos;%2&apos;, das einen Platzhalter enthält; es bekommt keine Gegen-Zuordnung.</translation>
     </message>
     <message>
-        <source>mqtt2ros '%1' is a wildcard subscription; the peer cannot publish on it, so it has no peer mapping.</source>
-        <translation>mqtt2ros '%1' ist ein Platzhalter-Abo; die Gegenstelle kann darauf nicht veröffentlichen, daher keine Gegen-Zuordnung.</translation>
+        <source>mqtt2ros &apos;%1&apos; is a wildcard subscription; the peer cannot publish on it, so it has no peer mapping.</source>
+        <translation>mqtt2ros &apos;%1&apos; ist ein Platzhalter-Abo; die Gegenstelle kann darauf nicht veröffentlichen, daher keine Gegen-Zuordnung.</translation>
     </message>
     <message>
-        <source>'%1' is stamped: the peer publishes its latency on ~/latencies%2.</source>
-        <translation>'%1' trägt Zeitstempel: Die Gegenstelle veröffentlicht die Latenz auf ~/latencies%2.</translation>
+        <source>&apos;%1&apos; is stamped: the peer publishes its latency on ~/latencies%2.</source>
+        <translation>&apos;%1&apos; trägt Zeitstempel: Die Gegenstelle veröffentlicht die Latenz auf ~/latencies%2.</translation>
     </message>
     <message>
-        <source>timestamp_topic_prefix of '%1' names this host's stamps; set the peer's own prefix by hand.</source>
-        <translation>timestamp_topic_prefix von '%1' benennt die Zeitstempel dieses Rechners; das eigene Präfix der Gegenstelle von Hand setzen.</translation>
+        <source>timestamp_topic_prefix of &apos;%1&apos; names this host&apos;s stamps; set the peer&apos;s own prefix by hand.</source>
+        <translation>timestamp_topic_prefix von &apos;%1&apos; benennt die Zeitstempel dieses Rechners; das eigene Präfix der Gegenstelle von Hand setzen.</translation>
     </message>
 </context>
 <context>
@@ -3145,7 +3233,7 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
         <translation>Sekunden, die nach dem letzten Senden auf Nachzügler gewartet wird (Vorgabe 2).</translation>
     </message>
     <message>
-        <source>Raise the rate by 1.5x per step (about a second each) until more than 1 % is lost, the median round trip exceeds 10x the first step's (at least 10 ms) or 1 s, or the sender falls behind; report the highest sustainable rate and its throughput.</source>
+        <source>Raise the rate by 1.5x per step (about a second each) until more than 1 % is lost, the median round trip exceeds 10x the first step&apos;s (at least 10 ms) or 1 s, or the sender falls behind; report the highest sustainable rate and its throughput.</source>
         <translation>Die Rate je Schritt (jeweils etwa eine Sekunde) um das 1,5-Fache erhöhen, bis mehr als 1 % verloren geht, der Median der Umlaufzeit das Zehnfache des ersten Schritts (mindestens 10 ms) oder 1 s übersteigt oder der Sender nicht mehr nachkommt; die höchste stabile Rate und ihren Durchsatz melden.</translation>
     </message>
     <message>
@@ -3161,7 +3249,7 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
         <translation>Echo-Client: jede Nutzlast von bridgescope/probe/+/ping unverändert auf .../pong zurücksenden, bis Strg+C.</translation>
     </message>
     <message>
-        <source>Listen for the echo client's copies (.../pong) instead of the broker's own.</source>
+        <source>Listen for the echo client&apos;s copies (.../pong) instead of the broker&apos;s own.</source>
         <translation>Auf die Kopien des Echo-Clients (.../pong) hören statt auf die des Brokers.</translation>
     </message>
     <message>
@@ -3219,14 +3307,14 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>Sweep: nach S Sekunden beenden (Vorgabe 30).</translation>
     </message>
     <message>
-        <source>Nothing came back through %1; is 'bridgescope probe --echo' running on a host connected to it?</source>
-        <translation>Über %1 kam nichts zurück; läuft 'bridgescope probe --echo' auf einem Rechner, der mit diesem Broker verbunden ist?</translation>
+        <source>Nothing came back through %1; is &apos;bridgescope probe --echo&apos; running on a host connected to it?</source>
+        <translation>Über %1 kam nichts zurück; läuft &apos;bridgescope probe --echo&apos; auf einem Rechner, der mit diesem Broker verbunden ist?</translation>
     </message>
 </context>
 <context>
     <name>ProbeDialog</name>
     <message>
-        <source>S&amp;weep the rate up to the link's limit</source>
+        <source>S&amp;weep the rate up to the link&apos;s limit</source>
         <translation>S&amp;weep: Rate bis zur Grenze der Strecke steigern</translation>
     </message>
     <message>
@@ -3282,7 +3370,7 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>2: genau einmal</translation>
     </message>
     <message>
-        <source>QoS 1 and 2 round trips include TCP's delayed acknowledgements</source>
+        <source>QoS 1 and 2 round trips include TCP&apos;s delayed acknowledgements</source>
         <translation>Umlaufzeiten mit QoS 1 und 2 enthalten die verzögerten Bestätigungen von TCP</translation>
     </message>
     <message>
@@ -3294,7 +3382,7 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>Erhöht die Rate je Schritt (jeweils etwa eine Sekunde) um das 1,5-Fache, bis mehr als 1 % verloren geht, die Umlaufzeit sich verzehnfacht oder der Sender nicht mehr nachkommt</translation>
     </message>
     <message>
-        <source>Listen on …/pong for the copies of `bridgescope probe --echo` running on the other host, instead of on …/ping for the broker's own</source>
+        <source>Listen on …/pong for the copies of `bridgescope probe --echo` running on the other host, instead of on …/ping for the broker&apos;s own</source>
         <translation>Auf …/pong die Kopien von `bridgescope probe --echo` auf dem anderen Rechner empfangen statt auf …/ping die des Brokers</translation>
     </message>
     <message>
@@ -3536,7 +3624,7 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
 <context>
     <name>RecordCommand</name>
     <message>
-        <source>Pipeline YAML (the suite's metrics-logger file).</source>
+        <source>Pipeline YAML (the suite&apos;s metrics-logger file).</source>
         <translation>Pipeline-YAML (die Metrics-Logger-Datei der Suite).</translation>
     </message>
     <message>
@@ -3560,7 +3648,7 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>Die zu schreibende Laufdatei (wird nie überschrieben).</translation>
     </message>
     <message>
-        <source>Name of the run (default: the file's name).</source>
+        <source>Name of the run (default: the file&apos;s name).</source>
         <translation>Name des Laufs (Vorgabe: der Dateiname).</translation>
     </message>
     <message>
@@ -3735,6 +3823,14 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
         <source>the config uses %1: give the values with %2</source>
         <translation>die Konfiguration verwendet %1: die Werte mit %2 angeben</translation>
     </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2: the type changed to %3%4</source>
+        <translation>MQTT %1 -&gt; ROS %2: der Typ ist jetzt %3%4</translation>
+    </message>
+    <message>
+        <source> (further changes are not logged)</source>
+        <translation> (weitere Wechsel werden nicht protokolliert)</translation>
+    </message>
 </context>
 <context>
     <name>Report</name>
@@ -3782,13 +3878,13 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
 <context>
     <name>ReportCommand</name>
     <message>
-        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite's timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join.
+        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite&apos;s timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper&apos;s Table I and Fig. 5), or joined into one run with --join.
 Exit status: 0 report written, 1 a run has no complete sample, 2 bad options or input, 130 cancelled.</source>
         <translation>Berichtet die Latenzstatistik gemessener Läufe: jede Stufe, die Gesamtlatenz und, wenn die Pipeline Rechner angibt, die Umlaufzeit der Kommunikation, deren Hälfte für eine Richtung und den Uhrenversatz. INPUT ist ein Lauf (bridgescope record), die Zeitstempel-CSV der Benchmarking-Suite oder ein ROS-Bag mit TimeStamped-Topics; mehrere Eingaben werden nebeneinander verglichen (Tabelle I und Abb. 5 des Papers) oder mit --join zu einem Lauf zusammengeführt.
 Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 falsche Optionen oder Eingabe, 130 abgebrochen.</translation>
     </message>
     <message>
-        <source>Pipeline YAML (the suite's metrics-logger file; hosts: optional).</source>
+        <source>Pipeline YAML (the suite&apos;s metrics-logger file; hosts: optional).</source>
         <translation>Pipeline-YAML (die Metrics-Logger-Datei der Suite; hosts: optional).</translation>
     </message>
     <message>
@@ -4162,7 +4258,7 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
         <translation>Geschrieben: %1</translation>
     </message>
     <message>
-        <source>optional; otherwise each input's own pipeline</source>
+        <source>optional; otherwise each input&apos;s own pipeline</source>
         <translation>optional; sonst die eigene Pipeline jeder Eingabe</translation>
     </message>
 </context>
@@ -4171,6 +4267,26 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
     <message>
         <source>no ROS master answers at %1</source>
         <translation>unter %1 antwortet kein ROS-Master</translation>
+    </message>
+    <message>
+        <source>the ROS master does not answer; waiting for it</source>
+        <translation>der ROS-Master antwortet nicht; warte auf ihn</translation>
+    </message>
+    <message>
+        <source>the ROS master was restarted: %1</source>
+        <translation>der ROS-Master wurde neu gestartet: %1</translation>
+    </message>
+    <message>
+        <source>cannot register with the ROS master again: %1</source>
+        <translation>kann sich nicht erneut beim ROS-Master anmelden: %1</translation>
+    </message>
+    <message>
+        <source>the ROS master answers again</source>
+        <translation>der ROS-Master antwortet wieder</translation>
+    </message>
+    <message>
+        <source>this node already publishes %1 with another type</source>
+        <translation>dieser Knoten veröffentlicht %1 bereits mit einem anderen Typ</translation>
     </message>
 </context>
 <context>
@@ -4204,8 +4320,8 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
         <translation>die XML-RPC-Antwort enthält keinen Wert</translation>
     </message>
     <message>
-        <source>'%1' is not a ROS master URI (http://host:11311)</source>
-        <translation>'%1' ist keine ROS-Master-URI (http://host:11311)</translation>
+        <source>&apos;%1&apos; is not a ROS master URI (http://host:11311)</source>
+        <translation>&apos;%1&apos; ist keine ROS-Master-URI (http://host:11311)</translation>
     </message>
     <message>
         <source>no ROS master at %1: %2</source>
@@ -4224,7 +4340,7 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
         <translation>der ROS-Master unter %1 antwortete %2</translation>
     </message>
     <message>
-        <source>the ROS master's answer to %1 is not [code, status, value]</source>
+        <source>the ROS master&apos;s answer to %1 is not [code, status, value]</source>
         <translation>die Antwort des ROS-Masters auf %1 ist nicht [Code, Status, Wert]</translation>
     </message>
     <message>
@@ -4239,24 +4355,58 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
         <translation>Byte %1: %2</translation>
     </message>
     <message>
-        <source>the message ends while reading '%1' (needs %2 more bytes, %3 left)</source>
-        <translation>die Nachricht endet beim Lesen von '%1' (braucht %2 weitere Bytes, %3 übrig)</translation>
+        <source>the message ends while reading &apos;%1&apos; (needs %2 more bytes, %3 left)</source>
+        <translation>die Nachricht endet beim Lesen von &apos;%1&apos; (braucht %2 weitere Bytes, %3 übrig)</translation>
     </message>
     <message>
-        <source>unknown type '%1'</source>
-        <translation>unbekannter Typ '%1'</translation>
+        <source>unknown type &apos;%1&apos;</source>
+        <translation>unbekannter Typ &apos;%1&apos;</translation>
     </message>
     <message>
         <source>nested deeper than %1 levels</source>
         <translation>tiefer als %1 Ebenen verschachtelt</translation>
     </message>
     <message>
-        <source>no definition for '%1'</source>
-        <translation>keine Definition für '%1'</translation>
+        <source>no definition for &apos;%1&apos;</source>
+        <translation>keine Definition für &apos;%1&apos;</translation>
     </message>
     <message>
         <source>%1 bytes left over after the message</source>
         <translation>%1 Bytes bleiben nach der Nachricht übrig</translation>
+    </message>
+    <message>
+        <source>more than %1 steps (fields and array elements): too much work for one message</source>
+        <translation>mehr als %1 Schritte (Felder und Array-Elemente): zu viel Arbeit für eine Nachricht</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; claims %2 elements of at least %3 bytes, but only %4 bytes are left</source>
+        <translation>&apos;%1&apos; gibt %2 Elemente zu mindestens %3 Bytes an, aber nur %4 Bytes sind übrig</translation>
+    </message>
+    <message>
+        <source>more than %1 values to show: too much work for one message</source>
+        <translation>mehr als %1 Werte zum Anzeigen: zu viel Arbeit für eine Nachricht</translation>
+    </message>
+    <message>
+        <source>the message has %1 bytes, more than the %2 bytes one message may have</source>
+        <translation>die Nachricht hat %1 Bytes, mehr als die %2 Bytes, die eine Nachricht haben darf</translation>
+    </message>
+</context>
+<context>
+    <name>RosReregistration</name>
+    <message>
+        <source>cannot list this node&apos;s topics</source>
+        <translation>die Topics dieses Knotens lassen sich nicht auflisten</translation>
+    </message>
+    <message>
+        <source>the master refused %1</source>
+        <translation>der Master hat %1 abgelehnt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topic(s) registered again</source>
+        <translation>
+            <numerusform>%n Topic erneut angemeldet</numerusform>
+            <numerusform>%n Topics erneut angemeldet</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4321,16 +4471,16 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
 <context>
     <name>RosTypeRegistry</name>
     <message>
-        <source>line %1: expected 'MSG: package/Type' after the separator</source>
-        <translation>Zeile %1: nach dem Trenner wird 'MSG: paket/Typ' erwartet</translation>
+        <source>line %1: expected &apos;MSG: package/Type&apos; after the separator</source>
+        <translation>Zeile %1: nach dem Trenner wird &apos;MSG: paket/Typ&apos; erwartet</translation>
     </message>
     <message>
-        <source>line %1: '%2' is not 'type name'</source>
-        <translation>Zeile %1: '%2' ist nicht 'typ name'</translation>
+        <source>line %1: &apos;%2&apos; is not &apos;type name&apos;</source>
+        <translation>Zeile %1: &apos;%2&apos; ist nicht &apos;typ name&apos;</translation>
     </message>
     <message>
-        <source>line %1: bad array type '%2'</source>
-        <translation>Zeile %1: fehlerhafter Array-Typ '%2'</translation>
+        <source>line %1: bad array type &apos;%2&apos;</source>
+        <translation>Zeile %1: fehlerhafter Array-Typ &apos;%2&apos;</translation>
     </message>
     <message>
         <source>line %1: field without a name</source>
@@ -4383,7 +4533,7 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
         <translation>Ab jetzt jeden Zeitstempel in eine Laufdatei aufzeichnen, um den Lauf später zu öffnen, zu vergleichen und auszuwerten</translation>
     </message>
     <message>
-        <source>Show a recorded run as it was, or import the suite's timestamp CSV or a ROS bag</source>
+        <source>Show a recorded run as it was, or import the suite&apos;s timestamp CSV or a ROS bag</source>
         <translation>Einen aufgezeichneten Lauf so zeigen, wie er war, oder die Zeitstempel-CSV der Suite oder ein ROS-Bag importieren</translation>
     </message>
     <message>
@@ -4540,6 +4690,26 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source> (and %1 more rows that cannot be read)</source>
         <translation> (und %1 weitere nicht lesbare Zeilen)</translation>
     </message>
+    <message>
+        <source>%1: %2 %3 (%4), %5: %6 is %7</source>
+        <translation>%1: %2 %3 (%4), %5: %6 ist %7</translation>
+    </message>
+    <message>
+        <source>latency</source>
+        <translation>Latenz</translation>
+    </message>
+    <message>
+        <source>stamp</source>
+        <translation>Zeitstempel</translation>
+    </message>
+    <message>
+        <source>larger than any difference of two ROS times</source>
+        <translation>größer als jede Differenz zweier ROS-Zeiten</translation>
+    </message>
+    <message>
+        <source> (and %1 more values out of range)</source>
+        <translation> (und %1 weitere Werte außerhalb des Bereichs)</translation>
+    </message>
 </context>
 <context>
     <name>RunRecorder</name>
@@ -4605,20 +4775,32 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>ein JSON-Zeitstempel muss ein Objekt sein</translation>
     </message>
     <message>
-        <source>JSON stamp needs "sample" and "time"</source>
-        <translation>ein JSON-Zeitstempel braucht "sample" und "time"</translation>
+        <source>JSON stamp needs &quot;sample&quot; and &quot;time&quot;</source>
+        <translation>ein JSON-Zeitstempel braucht &quot;sample&quot; und &quot;time&quot;</translation>
     </message>
     <message>
-        <source>JSON stamp's "sample" is not a usable number</source>
-        <translation>"sample" des JSON-Zeitstempels ist keine brauchbare Zahl</translation>
+        <source>JSON stamp&apos;s &quot;sample&quot; must be a string or a number</source>
+        <translation>&quot;sample&quot; des JSON-Zeitstempels muss eine Zeichenkette oder Zahl sein</translation>
     </message>
     <message>
-        <source>JSON stamp's "sample" must be a string or a number</source>
-        <translation>"sample" des JSON-Zeitstempels muss eine Zeichenkette oder Zahl sein</translation>
+        <source>JSON stamp&apos;s &quot;time&quot; must be seconds or &quot;sec.nsec&quot;</source>
+        <translation>&quot;time&quot; des JSON-Zeitstempels muss Sekunden oder &quot;sek.nsek&quot; sein</translation>
     </message>
     <message>
-        <source>JSON stamp's "time" must be seconds or "sec.nsec"</source>
-        <translation>"time" des JSON-Zeitstempels muss Sekunden oder "sek.nsek" sein</translation>
+        <source>outside the times a ROS stamp can hold (0 to 4294967296 s after 1970)</source>
+        <translation>außerhalb der Zeiten, die ein ROS-Zeitstempel fassen kann (0 bis 4294967296 s nach 1970)</translation>
+    </message>
+    <message>
+        <source>JSON stamp of %1 bytes: a stamp has at most %2</source>
+        <translation>JSON-Zeitstempel mit %1 Bytes: ein Zeitstempel hat höchstens %2</translation>
+    </message>
+    <message>
+        <source>JSON stamp&apos;s &quot;sample&quot; is not a usable number (%1)</source>
+        <translation>&quot;sample&quot; des JSON-Zeitstempels ist keine brauchbare Zahl (%1)</translation>
+    </message>
+    <message>
+        <source>JSON stamp&apos;s &quot;time&quot; %1 is %2</source>
+        <translation>&quot;time&quot; %1 des JSON-Zeitstempels ist %2</translation>
     </message>
 </context>
 <context>
@@ -4671,8 +4853,24 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>%1 Zellen, die Kopfzeile hat %2</translation>
     </message>
     <message>
-        <source>column %1 (%2): "%3" is not a time in seconds</source>
-        <translation>Spalte %1 (%2): "%3" ist keine Zeit in Sekunden</translation>
+        <source>column %1 (%2): &quot;%3&quot; is not a time in seconds</source>
+        <translation>Spalte %1 (%2): &quot;%3&quot; ist keine Zeit in Sekunden</translation>
+    </message>
+    <message>
+        <source>column %1 of the header row holds a NUL byte</source>
+        <translation>Spalte %1 der Kopfzeile enthält ein NUL-Byte</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>column %1 (%2): a NUL byte in the cell</source>
+        <translation>Spalte %1 (%2): ein NUL-Byte in der Zelle</translation>
+    </message>
+    <message>
+        <source>column %1 (%2): %3 is %4</source>
+        <translation>Spalte %1 (%2): %3 ist %4</translation>
     </message>
 </context>
 <context>

@@ -147,6 +147,10 @@ int runReportCommand(const QStringList& arguments)
         text = ReportPdf::render(*report);
         break;
     }
+    if (CliOutput::stopRequested()) { // formatting thousands of stages takes a while too
+        err(ReportText::tr("cancelled; nothing written"));
+        return 130;
+    }
     if (parser.isSet(output)) {
         if (!AtomicFile::write(parser.value(output), text, &why, false)) {
             err(why);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "latencyengine.h"
 
+#include <limits>
+
 using namespace Qt::StringLiterals;
 
 LatencyEngine::LatencyEngine(const Pipeline& pipeline)
@@ -160,27 +162,43 @@ void LatencyEngine::addSample(const std::vector<qint64>& times)
     takeSample(times);
 }
 
+namespace {
+/// Differences of stamps in 128 bits, saturated to 64: sources keep stamps to ROS times, whose
+/// differences fit, but a sum over many stages of extreme (accepted) values would not.
+qint64 saturated(LatencyInt128 v)
+{
+    return v > std::numeric_limits<qint64>::max() ? std::numeric_limits<qint64>::max()
+        : v < std::numeric_limits<qint64>::min()  ? std::numeric_limits<qint64>::min()
+                                                  : qint64(v);
+}
+
+LatencyInt128 span(const std::vector<qint64>& t, std::size_t from, std::size_t to)
+{
+    return LatencyInt128(t[to]) - t[from];
+}
+} // namespace
+
 void LatencyEngine::takeSample(const std::vector<qint64>& t)
 {
     const int stages = m_pipeline.stageCount();
     if (stages == 0)
         return;
     for (int s = 0; s < stages; ++s)
-        m_series[std::size_t(s)]->append(t[std::size_t(s) + 1] - t[std::size_t(s)]);
-    m_series[std::size_t(m_total)]->append(t.back() - t.front());
+        m_series[std::size_t(s)]->append(saturated(span(t, std::size_t(s), std::size_t(s) + 1)));
+    m_series[std::size_t(m_total)]->append(saturated(span(t, 0, t.size() - 1)));
     if (m_roundTrip >= 0) {
         // As in the paper: total minus every stage that stays on one host.
-        qint64 rt = t.back() - t.front();
+        LatencyInt128 rt = span(t, 0, t.size() - 1);
         for (int s : m_sameHost)
-            rt -= t[std::size_t(s) + 1] - t[std::size_t(s)];
-        m_series[std::size_t(m_roundTrip)]->append(rt);
-        m_series[std::size_t(m_oneWay)]->append(rt); // read at half scale
+            rt -= span(t, std::size_t(s), std::size_t(s) + 1);
+        m_series[std::size_t(m_roundTrip)]->append(saturated(rt));
+        m_series[std::size_t(m_oneWay)]->append(saturated(rt)); // read at half scale
     }
     if (m_clockOffset >= 0) {
         const auto [out, back] = m_offsetStages;
-        const qint64 outbound = t[std::size_t(out) + 1] - t[std::size_t(out)];
-        const qint64 inbound = t[std::size_t(back) + 1] - t[std::size_t(back)];
-        m_series[std::size_t(m_clockOffset)]->append(outbound - inbound); // read at half scale
+        const LatencyInt128 outbound = span(t, std::size_t(out), std::size_t(out) + 1);
+        const LatencyInt128 inbound = span(t, std::size_t(back), std::size_t(back) + 1);
+        m_series[std::size_t(m_clockOffset)]->append(saturated(outbound - inbound)); // read at half scale
     }
     ++m_samples;
     ++m_revision;

@@ -8,23 +8,41 @@ LatencySeries::LatencySeries(double msPerUnit)
     : m_msPerUnit(msPerUnit)
 { }
 
-void LatencySeries::add(qint64 value)
+void LatencySeries::addToSums(qint64 value)
 {
+    if (value > kExactLimit || value < -kExactLimit) {
+        ++m_big;
+        return;
+    }
     if (!m_hasRef) {
         m_ref = value;
         m_hasRef = true;
     }
-    const LatencyInt128 d = value - m_ref;
+    const LatencyInt128 d = LatencyInt128(value) - m_ref; // |d| <= 2^51: d * d and sums fit
     m_sum += d;
     m_sumSq += d * d;
+}
+
+void LatencySeries::removeFromSums(qint64 value)
+{
+    if (value > kExactLimit || value < -kExactLimit) {
+        --m_big;
+        return;
+    }
+    const LatencyInt128 d = LatencyInt128(value) - m_ref;
+    m_sum -= d;
+    m_sumSq -= d * d;
+}
+
+void LatencySeries::add(qint64 value)
+{
+    addToSums(value);
     m_sorted.insert(value);
 }
 
 void LatencySeries::remove(qint64 value)
 {
-    const LatencyInt128 d = value - m_ref;
-    m_sum -= d;
-    m_sumSq -= d * d;
+    removeFromSums(value);
     m_sorted.erase(value);
 }
 
@@ -35,10 +53,8 @@ void LatencySeries::append(qint64 value)
     if (m_window > 0 && m_sorted.size() == m_window) {
         // A full window slides: the oldest value leaves as the new one comes, in one move.
         const qint64 out = m_values[m_windowStart++];
-        const LatencyInt128 dOut = out - m_ref;
-        const LatencyInt128 dIn = value - m_ref;
-        m_sum += dIn - dOut;
-        m_sumSq += dIn * dIn - dOut * dOut;
+        removeFromSums(out);
+        addToSums(value);
         m_sorted.replace(out, value);
     } else {
         add(value);
@@ -63,6 +79,7 @@ void LatencySeries::clear()
     m_hasRef = false;
     m_sum = 0;
     m_sumSq = 0;
+    m_big = 0;
 }
 
 void LatencySeries::setWindow(qint64 samples)
@@ -74,6 +91,7 @@ void LatencySeries::setWindow(qint64 samples)
     m_sorted.clear();
     m_sum = 0;
     m_sumSq = 0;
+    m_big = 0;
     m_hasRef = false;
     m_windowStart = m_window > 0 && m_values.size() > std::size_t(m_window)
         ? m_values.size() - std::size_t(m_window)
@@ -82,11 +100,29 @@ void LatencySeries::setWindow(qint64 samples)
         add(m_values[i]);
 }
 
+std::pair<long double, long double> LatencySeries::directMoments() const
+{
+    const qint64 n = count();
+    const std::size_t first = m_values.size() - std::size_t(n);
+    long double sum = 0;
+    for (std::size_t i = first; i < m_values.size(); ++i)
+        sum += static_cast<long double>(m_values[i]);
+    const long double mean = sum / n;
+    long double squares = 0;
+    for (std::size_t i = first; i < m_values.size(); ++i) {
+        const long double d = static_cast<long double>(m_values[i]) - mean;
+        squares += d * d;
+    }
+    return {mean, n > 1 ? squares / (n - 1) : 0};
+}
+
 double LatencySeries::meanMs() const
 {
     const qint64 n = count();
     if (n == 0)
         return LatencyStats::nan();
+    if (m_big > 0)
+        return double(directMoments().first * m_msPerUnit);
     const long double mean = static_cast<long double>(m_ref) + static_cast<long double>(m_sum) / n;
     return double(mean * m_msPerUnit);
 }
@@ -96,6 +132,8 @@ double LatencySeries::stdMs() const
     const qint64 n = count();
     if (n < 2)
         return LatencyStats::nan();
+    if (m_big > 0)
+        return double(std::sqrt(std::max<long double>(directMoments().second, 0)) * std::abs(m_msPerUnit));
     const long double s = static_cast<long double>(m_sum);
     const long double var = (static_cast<long double>(m_sumSq) - s * s / n) / (n - 1);
     return double(std::sqrt(std::max<long double>(var, 0)) * std::abs(m_msPerUnit));

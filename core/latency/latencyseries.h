@@ -4,6 +4,7 @@
 #include "latencystats.h"
 #include "sortedblocks.h"
 
+#include <utility>
 #include <vector>
 
 __extension__ typedef __int128 LatencyInt128; ///< exact sums of squared ns
@@ -45,9 +46,17 @@ public:
     double meanMs() const;
     double stdMs() const;
 
+    /// Values beyond this (about 13 days in ns) stay out of the exact sums, whose squares could
+    /// overflow 128 bits; while the window holds one, mean and std are computed from the values.
+    static constexpr qint64 kExactLimit = qint64(1) << 50;
+
 private:
     void add(qint64 value);
     void remove(qint64 value);
+    void addToSums(qint64 value);
+    void removeFromSums(qint64 value);
+    /// Mean and corrected variance of the window in long double, from the values themselves.
+    std::pair<long double, long double> directMoments() const;
 
     double m_msPerUnit;
     qint64 m_window = 600;
@@ -60,4 +69,5 @@ private:
     bool m_hasRef = false;
     LatencyInt128 m_sum = 0;
     LatencyInt128 m_sumSq = 0;
+    qint64 m_big = 0; ///< values in the window beyond kExactLimit (not in the sums)
 };

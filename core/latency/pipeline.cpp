@@ -63,6 +63,42 @@ void Pipeline::setTopics(QStringList topics)
         m_index.insert(u'/' + key, int(m_topics.size())); // the ROS spelling: found without a copy
         m_topics.append(std::move(t));
     }
+    relabel();
+}
+
+void Pipeline::relabel()
+{
+    // Linear in the topics: labelling used to recompute the common prefix in every call and
+    // compare every stage's label with every other's (cubic: 20,000 columns never finished).
+    m_prefix = 0;
+    m_stageLabels.clear();
+    if (m_topics.size() < 2)
+        return;
+    const QString& first = m_topics.first();
+    qsizetype common = first.size();
+    for (const QString& other : std::as_const(m_topics)) {
+        qsizetype i = 0;
+        while (i < common && i < other.size() && other[i] == first[i])
+            ++i;
+        common = i;
+    }
+    // The longest common prefix ending in '/' (none when the topics share no character).
+    m_prefix = common == 0 ? 0 : first.lastIndexOf(u'/', common - 1) + 1;
+
+    // Between components, the components say it ("mqtt_interface_vehicle → mqtt_interface_cloud"),
+    // unless another stage would read the same.
+    QStringList brief;
+    brief.reserve(stageCount());
+    QHash<QString, int> uses;
+    for (int s = 0; s < stageCount(); ++s) {
+        const QString a = component(s);
+        const QString b = component(s + 1);
+        brief << (a == b ? longStageLabel(s) : tr("%1 → %2").arg(a, b));
+        ++uses[brief.back()];
+    }
+    m_stageLabels.reserve(stageCount());
+    for (int s = 0; s < stageCount(); ++s)
+        m_stageLabels << (uses.value(brief[s]) > 1 ? longStageLabel(s) : brief[s]);
 }
 
 int Pipeline::indexOf(const QString& topic) const
@@ -228,18 +264,7 @@ QString Pipeline::shortTopic(int topicIndex) const
     if (topicIndex < 0 || topicIndex >= m_topics.size())
         return {};
     const QString& t = m_topics[topicIndex];
-    if (m_topics.size() < 2)
-        return t;
-    // The longest common prefix ending in '/'.
-    qsizetype common = m_topics.first().size();
-    for (const QString& other : m_topics) {
-        qsizetype i = 0;
-        while (i < common && i < other.size() && other[i] == m_topics.first()[i])
-            ++i;
-        common = i;
-    }
-    common = m_topics.first().lastIndexOf(u'/', common - 1) + 1;
-    const QString rest = t.mid(common);
+    const QString rest = t.mid(m_prefix);
     return rest.isEmpty() ? t : rest;
 }
 
@@ -264,20 +289,7 @@ QString Pipeline::longStageLabel(int stage) const
 
 QString Pipeline::stageLabel(int stage) const
 {
-    if (stage < 0 || stage >= stageCount())
-        return {};
-    // Between components, the components say it ("mqtt_interface_vehicle → mqtt_interface_cloud"),
-    // unless another stage would read the same.
-    const auto brief = [this](int s) {
-        const QString a = component(s);
-        const QString b = component(s + 1);
-        return a == b ? longStageLabel(s) : tr("%1 → %2").arg(a, b);
-    };
-    const QString label = brief(stage);
-    for (int s = 0; s < stageCount(); ++s)
-        if (s != stage && brief(s) == label)
-            return longStageLabel(stage);
-    return label;
+    return m_stageLabels.value(stage);
 }
 
 QHash<QString, QString> Pipeline::guessHosts(const QStringList& topics)

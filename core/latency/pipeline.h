@@ -73,8 +73,12 @@ public:
 
 private:
     static QString normalized(QStringView topic);
+    /// The common prefix and every stage label, in one pass over the topics (not per call).
+    void relabel();
 
     QStringList m_topics;
+    qsizetype m_prefix = 0; ///< length of the prefix all topics share, up to a '/'
+    QStringList m_stageLabels;
     QHash<QString, int> m_index; ///< normalized topic and "/" + normalized topic -> index
     QHash<QString, QString> m_hosts;
     int m_window = kDefaultWindow;

@@ -29,15 +29,25 @@ void PipelineDiscovery::add(const StampEvent& event)
     if (sample == m_samples.end()) {
         sample = m_samples.emplace(event.sampleNs, std::vector<std::pair<int, qint64>>()).first;
         m_order.push_back(event.sampleNs);
-        while (m_order.size() > kKeptSamples) {
-            m_samples.erase(m_order.front());
-            m_order.pop_front();
-        }
+        while (m_order.size() > kKeptSamples)
+            dropOldestSample();
     }
-    for (const auto& [t, time] : sample->second)
-        if (t == topic)
-            return;
+    if (!m_kept.emplace(event.sampleNs, topic).second)
+        return; // a second stamp of this topic for this sample
     sample->second.emplace_back(topic, event.timeNs);
+    while (m_kept.size() > kKeptStamps && m_order.size() > 1 && m_order.front() != event.sampleNs)
+        dropOldestSample();
+}
+
+void PipelineDiscovery::dropOldestSample()
+{
+    const auto it = m_samples.find(m_order.front());
+    if (it != m_samples.end()) {
+        for (const auto& [t, time] : it->second)
+            m_kept.erase({it->first, t});
+        m_samples.erase(it);
+    }
+    m_order.pop_front();
 }
 
 void PipelineDiscovery::clear()
@@ -46,6 +56,7 @@ void PipelineDiscovery::clear()
     m_index.clear();
     m_counts.clear();
     m_samples.clear();
+    m_kept.clear();
     m_order.clear();
 }
 

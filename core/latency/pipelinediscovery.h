@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QStringList>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 /// Finds a pipeline in whatever stamps arrive: the topics seen, ordered by their mean time within
@@ -19,6 +20,8 @@ class PipelineDiscovery
 {
 public:
     static constexpr std::size_t kKeptSamples = 2000;
+    /// Stamps kept over all samples: a broker with 100,000 stamp topics must not fill memory.
+    static constexpr std::size_t kKeptStamps = 1'000'000;
 
     void add(const StampEvent& event);
     void clear();
@@ -36,6 +39,17 @@ private:
     QStringList m_topics;
     QHash<QString, int> m_index; ///< normalized topic -> index in m_topics
     std::vector<quint64> m_counts;
+    void dropOldestSample();
+
+    struct PairHash
+    {
+        std::size_t operator()(const std::pair<qint64, int>& p) const noexcept
+        {
+            return std::hash<qint64>()(p.first) ^ (std::hash<int>()(p.second) * 0x9e3779b97f4a7c15ULL);
+        }
+    };
     std::unordered_map<qint64, std::vector<std::pair<int, qint64>>> m_samples;
+    /// (sample, topic) of every kept stamp: a scan of the sample per stamp was quadratic in topics.
+    std::unordered_set<std::pair<qint64, int>, PairHash> m_kept;
     std::deque<qint64> m_order;
 };

@@ -148,7 +148,9 @@ void SampleJoiner::expire(qint64 nowNs)
     popStaleOrder();
     while (!m_order.empty()) {
         const int slot = m_open.at(m_order.front().sample);
-        if (nowNs - m_slots[std::size_t(slot)].firstReceivedNs <= m_timeoutNs)
+        // Compared without a signed subtraction, which overflowed for clocks decades apart.
+        const qint64 first = m_slots[std::size_t(slot)].firstReceivedNs;
+        if (nowNs <= first || quint64(nowNs) - quint64(first) <= quint64(std::max<qint64>(m_timeoutNs, 0)))
             return;
         drop(slot, true);
         popStaleOrder();

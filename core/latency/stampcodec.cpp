@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "stampcodec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <QJsonDocument>
@@ -144,6 +145,11 @@ QByteArray StampCodec::encodeTimeStamped(const Decoded& stamp)
     return out;
 }
 
+QString StampCodec::rangeText()
+{
+    return tr("outside the times a ROS stamp can hold (0 to 4294967296 s after 1970)");
+}
+
 std::optional<qint64> StampCodec::parseTime(QStringView text)
 {
     text = text.trimmed();
@@ -160,6 +166,10 @@ std::optional<qint64> StampCodec::parseTime(QStringView text)
         // Exact decimal: integer seconds and up to nine digits of fraction.
         bool ok = false;
         const QStringView secText = dot < 0 ? text : text.left(dot);
+        // Digits only: toLongLong() stops at a NUL byte and took "12\0 99" for 12.
+        const QStringView digits = secText.startsWith(u'+') ? secText.mid(1) : secText;
+        if (!std::all_of(digits.begin(), digits.end(), [](QChar c) { return c >= u'0' && c <= u'9'; }))
+            return std::nullopt;
         const qint64 sec = secText.isEmpty() ? 0 : secText.toLongLong(&ok);
         if (!secText.isEmpty() && !ok)
             return std::nullopt;
@@ -172,7 +182,7 @@ std::optional<qint64> StampCodec::parseTime(QStringView text)
                 return std::nullopt;
             qint64 scale = kNsPerSec;
             for (qsizetype i = 0; i < frac.size(); ++i) {
-                if (!frac[i].isDigit())
+                if (frac[i] < u'0' || frac[i] > u'9')
                     return std::nullopt;
                 if (i < 9) {
                     scale /= 10;
@@ -191,6 +201,12 @@ std::optional<qint64> StampCodec::parseTime(QStringView text)
 
 std::optional<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payload, QString* error)
 {
+    if (payload.size() > kMaxJsonBytes) {
+        if (error)
+            *error
+                = tr("JSON stamp of %1 bytes: a stamp has at most %2").arg(payload.size()).arg(kMaxJsonBytes);
+        return std::nullopt;
+    }
     QJsonParseError parseError {};
     const QJsonDocument doc = QJsonDocument::fromJson(payload, &parseError);
     if (!doc.isObject()) {
@@ -212,13 +228,13 @@ std::optional<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payl
     if (sample.isString()) {
         const QString id = sample.toString();
         const std::optional<qint64> asTime = parseTime(id);
-        d.sampleNs = asTime ? *asTime : hashId(id.toUtf8());
+        d.sampleNs = asTime && inRange(*asTime) ? *asTime : hashId(id.toUtf8());
         d.frameId = id;
     } else if (sample.isDouble()) {
         const std::optional<qint64> asTime = parseTime(QString::number(sample.toDouble(), 'f', 9));
-        if (!asTime) {
+        if (!asTime || !inRange(*asTime)) {
             if (error)
-                *error = tr("JSON stamp's \"sample\" is not a usable number");
+                *error = tr("JSON stamp's \"sample\" is not a usable number (%1)").arg(rangeText());
             return std::nullopt;
         }
         d.sampleNs = *asTime;
@@ -235,6 +251,11 @@ std::optional<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payl
     if (!t) {
         if (error)
             *error = tr("JSON stamp's \"time\" must be seconds or \"sec.nsec\"");
+        return std::nullopt;
+    }
+    if (!inRange(*t)) {
+        if (error)
+            *error = tr("JSON stamp's \"time\" %1 is %2").arg(timeText(*t), rangeText());
         return std::nullopt;
     }
     d.timeNs = *t;
@@ -262,7 +283,7 @@ std::optional<qint64> StampCodec::decodeFloat64Seconds(const QByteArray& bytes)
         return std::nullopt;
     double v = 0;
     std::memcpy(&v, bytes.constData(), 8); // ROS is little-endian on every platform we build for
-    if (!std::isfinite(v) || std::abs(v) > 9.2e9)
+    if (!std::isfinite(v) || std::abs(v) >= double(kMaxTimeNs / kNsPerSec))
         return std::nullopt;
     return secondsToNs(v);
 }

@@ -39,6 +39,10 @@ std::optional<RosMsgTypeInfo> MqttClientWire::decodeType(const QByteArray& bytes
         pos += qsizetype(n);
         return true;
     };
+    if (bytes.size() > kMaxTypeBytes)
+        return fail(tr("type announcement of %1 bytes, more than the %2 one may have")
+                        .arg(bytes.size())
+                        .arg(kMaxTypeBytes));
     RosMsgTypeInfo info;
     if (!readString(&info.md5, "md5") || !readString(&info.name, "name")
         || !readString(&info.definition, "definition"))

@@ -32,6 +32,9 @@ public:
     /// For `mqtt_client/ros_msg_type/<topic>`, the data topic; otherwise empty.
     static QString dataTopicOf(const QString& typeTopic);
 
+    /// Announcements are a few kB; one larger than this is an error, not parsed (its definition
+    /// would be parsed and sized by every receiver).
+    static constexpr qsizetype kMaxTypeBytes = 1024 * 1024;
     static std::optional<RosMsgTypeInfo> decodeType(const QByteArray& bytes, QString* error = nullptr);
     static QByteArray encodeType(const RosMsgTypeInfo& info);
 

@@ -4,21 +4,30 @@
 #include "latency/stampcodec.h"
 #include "mqttclientwire.h"
 
+#include <algorithm>
+#include <string_view>
+
 namespace {
-/// Cheap test before parsing: a JSON object that mentions "sample".
+/// Cheap test before parsing: a JSON object that mentions "sample" near its start. A larger one is
+/// then refused by decodeJson() (and counted), never parsed.
 bool mayBeJsonStamp(const QByteArray& payload)
 {
     qsizetype i = 0;
     while (i < payload.size()
            && (payload[i] == ' ' || payload[i] == '\n' || payload[i] == '\r' || payload[i] == '\t'))
         ++i;
-    return i < payload.size() && payload[i] == '{' && payload.size() < 4096 && payload.contains("\"sample\"");
+    return i < payload.size() && payload[i] == '{'
+        && std::string_view(payload.constData(),
+                            std::size_t(std::min<qsizetype>(payload.size(), 2 * StampCodec::kMaxJsonBytes)))
+               .find("\"sample\"")
+        != std::string_view::npos;
 }
 } // namespace
 
 void MqttStampDecoder::fail(const QString& topic, const QString& why)
 {
     ++m_malformed;
+    ++m_malformedByTopic[topic];
     m_lastError = topic + QStringLiteral(": ") + why;
 }
 
@@ -33,9 +42,12 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
                 m_types.remove(data);
                 continue;
             }
-            if (const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(m.payload))
+            QString why;
+            if (const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(m.payload, &why))
                 m_types.insert(data, {info->md5 == QLatin1StringView(StampCodec::md5()), info->stamped});
-            continue; // the topic tree reports undecodable announcements
+            else if (m_types.contains(data) || m.payload.contains(StampCodec::typeName()))
+                fail(data, tr("type announcement: %1").arg(why)); // one meant for stamps, or replacing one
+            continue; // the topic tree reports every undecodable announcement
         }
         const auto type = m_types.constFind(m.topic);
         if (type != m_types.cend()) {
@@ -72,5 +84,6 @@ void MqttStampDecoder::clear()
 {
     m_types.clear();
     m_malformed = 0;
+    m_malformedByTopic.clear();
     m_lastError.clear();
 }

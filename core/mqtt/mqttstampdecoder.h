@@ -29,6 +29,8 @@ public:
     void clear();
 
     quint64 malformed() const { return m_malformed; }
+    /// Malformed stamps (and stamp type announcements) per MQTT topic.
+    const QHash<QString, quint64>& malformedByTopic() const { return m_malformedByTopic; }
     QString lastError() const { return m_lastError; }
 
 private:
@@ -41,5 +43,6 @@ private:
 
     QHash<QString, TopicType> m_types; ///< by data topic, from the announcements
     quint64 m_malformed = 0;
+    QHash<QString, quint64> m_malformedByTopic;
     QString m_lastError;
 };

@@ -62,6 +62,7 @@ struct MqttTopicTree::Node
     double lastLatencyMs = 0;
     quint64 latencySamples = 0;
     quint64 malformed = 0;
+    QString payloadError;
     QString typeError;
     bool dirty = false;
     bool typedTouched = false;
@@ -154,6 +155,7 @@ void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByte
     const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
     if (!info) {
         ++m_malformedTypes;
+        ++typeNode->malformed;
         typeNode->typeError = error;
         return;
     }
@@ -164,8 +166,13 @@ void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByte
     state = std::make_shared<TypeState>();
     state->info = *info;
     auto registry = std::make_shared<RosTypeRegistry>();
-    if (registry->addDefinition(info->name, info->definition, &state->error))
+    if (registry->addDefinition(info->name, info->definition, &state->error)) {
         state->registry = registry;
+    } else {
+        ++m_malformedTypes;
+        ++typeNode->malformed;
+        typeNode->typeError = tr("the definition of %1 does not read: %2").arg(info->name, state->error);
+    }
     if (Node* data = m_byTopic.value(dataTopic))
         data->dirty = true;
 }
@@ -224,6 +231,7 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
                 } else {
                     ++n->malformed;
                     ++m_malformedPayloads;
+                    n->payloadError = tr("stamped payload shorter than its 8-byte stamp");
                 }
             }
             if (!n->typedTouched) {
@@ -270,9 +278,11 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
         RosDecodeLimits limits;
         limits.maxArrayElements = 1;
         limits.maxStringChars = 64;
-        if (!RosMessageDecoder::decode(*type->registry, type->info.name, payload, nullptr, limits)) {
+        QString error;
+        if (!RosMessageDecoder::decode(*type->registry, type->info.name, payload, &error, limits)) {
             ++n->malformed;
             ++m_malformedPayloads;
+            n->payloadError = error;
         }
     }
 
@@ -361,6 +371,7 @@ std::optional<MqttTopicTree::TopicInfo> MqttTopicTree::info(const QString& topic
         i.rosType = type->info;
     i.typeError = n->typeError;
     i.malformedPayloads = n->malformed;
+    i.payloadError = n->payloadError;
     i.lastLatencyMs = n->lastLatencyMs;
     i.meanLatencyMs = n->latencies.empty() ? 0 : n->latencySum / double(n->latencies.size());
     i.latencySamples = n->latencySamples;
@@ -492,6 +503,11 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
                 "the two clocks agree.");
         if (!n->typeError.isEmpty())
             return n->typeError;
+        if (n->malformed && !n->payloadError.isEmpty())
+            return tr("%1\n%2 payloads did not decode; the last: %3")
+                .arg(n->path)
+                .arg(n->malformed)
+                .arg(n->payloadError);
         return n->path;
     case FullTopicRole:
         return n->path;

@@ -69,7 +69,8 @@ public:
         double rate = 0;
         std::optional<RosMsgTypeInfo> rosType;
         QString typeError; ///< a type announcement that could not be decoded
-        quint64 malformedPayloads = 0;
+        quint64 malformedPayloads = 0; ///< did not decode (also over a decode budget), per topic
+        QString payloadError; ///< why the last malformed payload did not decode
         double lastLatencyMs = 0;
         double meanLatencyMs = 0;
         quint64 latencySamples = 0;

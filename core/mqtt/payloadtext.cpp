@@ -60,6 +60,15 @@ PayloadText::Rendered PayloadText::render(const QByteArray& payload, Mode mode, 
     r.mode = mode;
     switch (mode) {
     case Mode::Json: {
+        if (cut) {
+            // Parsing and indenting 50 MB for a view that shows 64 kB is work without a bound.
+            r.text = QString::fromUtf8(shown);
+            r.note = tr("%1; too large to show as JSON, showing the first %2 as text")
+                         .arg(size,
+                              QLocale::system().formattedDataSize(limitBytes, 0,
+                                                                  QLocale::DataSizeTraditionalFormat));
+            return r;
+        }
         QJsonParseError error;
         const QJsonDocument doc = QJsonDocument::fromJson(payload, &error);
         if (doc.isNull()) {
@@ -68,6 +77,12 @@ PayloadText::Rendered PayloadText::render(const QByteArray& payload, Mode mode, 
             return r;
         }
         r.text = QString::fromUtf8(doc.toJson(QJsonDocument::Indented));
+        if (r.text.size() > 4 * limitBytes) {
+            // Deep nesting indents quadratically: 64 kB of brackets become megabytes.
+            r.text.truncate(4 * limitBytes);
+            r.note = tr("%1; indented view cut at %2 characters").arg(size).arg(4 * limitBytes);
+            return r;
+        }
         break;
     }
     case Mode::Hex:

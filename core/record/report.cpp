@@ -4,11 +4,12 @@
 #include "runloader.h"
 
 #include <QFileInfo>
+#include <QSet>
 
 using namespace Qt::StringLiterals;
 
 std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<Pipeline>& pipeline,
-                                           const Options& options)
+                                           const Options& options, const Progress& progress, int percent)
 {
     auto run = std::make_unique<ReportRun>();
     run->info = data.info;
@@ -23,8 +24,14 @@ std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<P
     std::vector<std::vector<qint64>>& samples = run->samples;
     run->engine->setSampleListener(
         [&samples](qint64, const std::vector<qint64>& times) { samples.push_back(times); });
-    data.replay(*run->engine);
+    // Ctrl+C is polled while replaying too: a run of millions of stamps takes a while.
+    const bool finished = data.replay(*run->engine, [&] { return !progress || progress(percent); });
     run->engine->setSampleListener({});
+    if (!finished)
+        return nullptr;
+    const LatencyEngine& e = *run->engine;
+    for (int s = e.pipeline().stageCount() - 1; s >= 0; --s) // backwards: the first of a label wins
+        run->stageByLabel.insert(e.info(e.stageSeries(s)).label, e.stageSeries(s));
     return run;
 }
 
@@ -51,10 +58,9 @@ std::optional<Report> Report::build(const QStringList& inputs, const std::option
             return std::nullopt;
         if (pipeline) {
             // Every topic the pipeline names must be in the input, or nothing would ever complete.
+            const Pipeline inInput(run->topics); // matches either spelling, by hash
             for (const QString& topic : pipeline->topics()) {
-                bool found = false;
-                for (const QString& t : run->topics)
-                    found = found || Pipeline::sameTopic(t, topic);
+                const bool found = inInput.indexOf(topic) >= 0;
                 if (!found && !run->stamps.empty()) {
                     if (error)
                         *error = tr("%1: no stamps of topic %2 (it has: %3)")
@@ -70,21 +76,28 @@ std::optional<Report> Report::build(const QStringList& inputs, const std::option
     }
     Report report;
     report.m_options = options;
+    const auto cancelled = [&] {
+        if (error)
+            *error = tr("cancelled");
+        return std::nullopt;
+    };
     if (options.join && data.size() > 1) {
         RunData joined = RunLoader::join(std::move(data));
-        report.m_runs.push_back(compute(std::move(joined), pipeline, options));
+        report.m_runs.push_back(compute(std::move(joined), pipeline, options, progress, 90));
+        if (!report.m_runs.back())
+            return cancelled();
         report.m_runs.back()->path = inputs.join(u", "_s);
         report.m_runs.back()->kind = kinds.first();
     } else {
         for (std::size_t i = 0; i < data.size(); ++i) {
-            report.m_runs.push_back(compute(std::move(data[i]), pipeline, options));
+            const int percent = 90 + int(10 * i / data.size());
+            report.m_runs.push_back(compute(std::move(data[i]), pipeline, options, progress, percent));
+            if (!report.m_runs.back())
+                return cancelled();
             report.m_runs.back()->path = inputs[qsizetype(i)];
             report.m_runs.back()->kind = kinds[qsizetype(i)];
-            if (progress && !progress(90 + int(10 * (i + 1) / data.size()))) {
-                if (error)
-                    *error = tr("cancelled");
-                return std::nullopt;
-            }
+            if (progress && !progress(90 + int(10 * (i + 1) / data.size())))
+                return cancelled();
         }
     }
     return report;
@@ -119,14 +132,14 @@ QString Report::title() const
 QList<Report::Row> Report::rows() const
 {
     QList<Row> out;
-    QStringList seen;
+    QSet<QString> seen;
     for (const auto& run : m_runs) {
         const LatencyEngine& e = *run->engine;
         for (int s = 0; s < e.pipeline().stageCount(); ++s) {
             const LatencyEngine::SeriesInfo& info = e.info(e.stageSeries(s));
             if (seen.contains(info.label))
                 continue;
-            seen << info.label;
+            seen.insert(info.label);
             out.append({info.label, info.id, info.crossing, false, false});
         }
     }
@@ -150,10 +163,8 @@ std::optional<LatencyStats> Report::stats(const ReportRun& run, const Row& row) 
 {
     const LatencyEngine& e = *run.engine;
     if (row.seriesId.startsWith(u"stage:"_s)) {
-        for (int s = 0; s < e.pipeline().stageCount(); ++s)
-            if (e.info(e.stageSeries(s)).label == row.label)
-                return e.series(e.stageSeries(s)).stats();
-        return std::nullopt;
+        const int series = run.stageByLabel.value(row.label, -1); // a scan per row was quadratic
+        return series < 0 ? std::nullopt : std::make_optional(e.series(series).stats());
     }
     const int index = e.indexOf(row.seriesId);
     if (index < 0)

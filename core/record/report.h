@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <QCoreApplication>
+#include <QHash>
 #include <QStringList>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct ReportRun
     std::unique_ptr<LatencyEngine> engine;
     qint64 droppedBeforeImport = 0;
     std::vector<std::vector<qint64>> samples; ///< complete samples in pipeline order (for CSV)
+    QHash<QString, int> stageByLabel; ///< the engine's stage series by label (first of each)
 
     qint64 dropped() const { return qint64(engine->counters().dropped()) + droppedBeforeImport; }
 };
@@ -64,8 +66,10 @@ public:
     std::optional<LatencyStats> stats(const ReportRun& run, const Row& row) const;
 
 private:
+    /// nullptr when `progress` cancelled it.
     static std::unique_ptr<ReportRun> compute(RunData&& data, const std::optional<Pipeline>& pipeline,
-                                              const Options& options);
+                                              const Options& options, const Progress& progress = {},
+                                              int percent = 0);
     std::vector<std::unique_ptr<ReportRun>> m_runs;
     Options m_options;
 };

@@ -12,6 +12,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLocale>
+#include <QSet>
 
 using namespace Qt::StringLiterals;
 
@@ -176,9 +177,14 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
                            .arg(p.stageCount());
     if (p.hasHosts()) {
         QStringList hosts;
-        for (int i = 0; i < p.topicCount(); ++i)
-            if (!hosts.contains(p.host(i)) && !p.host(i).isEmpty())
-                hosts << p.host(i);
+        QSet<QString> seen; // a list's contains() was quadratic in the hosts of a hostile pipeline
+        for (int i = 0; i < p.topicCount(); ++i) {
+            const QString h = p.host(i);
+            if (!h.isEmpty() && !seen.contains(h)) {
+                seen.insert(h);
+                hosts << h;
+            }
+        }
         pipeline += QCoreApplication::translate("ReportFormats", "; hosts %1; %2 crossings")
                         .arg(hosts.join(u", "_s))
                         .arg(p.crossings().size());

@@ -477,7 +477,7 @@ bool RunFile::write(const QString& path, const RunData& run, QString* error, con
     return true;
 }
 
-void RunData::replay(LatencyEngine& engine) const
+bool RunData::replay(LatencyEngine& engine, const std::function<bool()>& keepGoing) const
 {
     std::vector<int> topicIndex;
     for (const QString& t : topics)
@@ -488,6 +488,8 @@ void RunData::replay(LatencyEngine& engine) const
         for (; i < stamps.size() && stamps[i].drainedNs == drained; ++i) {
             const RecordedStamp& s = stamps[i];
             engine.ingest(topicIndex[std::size_t(s.topic)], s.sampleNs, s.timeNs, s.receivedNs);
+            if (keepGoing && i % 65536 == 65535 && !keepGoing())
+                return false;
         }
         for (; l < latencies.size() && latencies[l].drainedNs <= drained; ++l)
             engine.ingest(
@@ -497,6 +499,7 @@ void RunData::replay(LatencyEngine& engine) const
     for (; l < latencies.size(); ++l)
         engine.ingest(
             LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+    return true;
 }
 
 RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples)

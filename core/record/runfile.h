@@ -62,7 +62,8 @@ struct RunData
     qint64 droppedBeforeImport = 0; ///< e.g. incomplete rows of a suite CSV
 
     /// Feeds every event to `engine` (set to the run's pipeline before) tick by tick, as live.
-    void replay(LatencyEngine& engine) const;
+    /// `keepGoing` is polled now and then; false from it stops (and replay() returns false).
+    bool replay(LatencyEngine& engine, const std::function<bool()>& keepGoing = {}) const;
     /// A file with complete samples only (suite CSV): one stamp per cell, joined at once.
     static RunData fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples);
 };

@@ -2,11 +2,59 @@
 #include "runloader.h"
 
 #include "bagreaderprocess.h"
+#include "latency/stampcodec.h"
 #include "suitecsv.h"
 
 #include <QFileInfo>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+/// Every stamp of a run must be a ROS time and every latency smaller than the span of those, or
+/// the figures overflow (INT64-extreme stamps gave exit 0 and absurd statistics). The first bad
+/// one is named with its place; all are counted.
+bool validate(const RunData& run, const QString& path, QString* error)
+{
+    qint64 bad = 0;
+    QString first;
+    const auto check
+        = [&](qint64 value, bool latency, const char* column, qsizetype row, const QString& name) {
+              const bool ok = latency ? value > -StampCodec::kMaxTimeNs && value < StampCodec::kMaxTimeNs
+                                      : StampCodec::inRange(value);
+              if (ok)
+                  return;
+              if (++bad == 1)
+                  first = RunLoader::tr("%1: %2 %3 (%4), %5: %6 is %7")
+                              .arg(path, latency ? RunLoader::tr("latency") : RunLoader::tr("stamp"))
+                              .arg(row + 1)
+                              .arg(name, QLatin1StringView(column))
+                              .arg(value)
+                              .arg(latency ? RunLoader::tr("larger than any difference of two ROS times")
+                                           : StampCodec::rangeText());
+          };
+    for (std::size_t i = 0; i < run.stamps.size(); ++i) {
+        const RecordedStamp& s = run.stamps[i];
+        const QString topic = run.topics.value(s.topic);
+        check(s.sampleNs, false, "sample_ns", qsizetype(i), topic);
+        check(s.timeNs, false, "time_ns", qsizetype(i), topic);
+        check(s.receivedNs, false, "received_ns", qsizetype(i), topic);
+        check(s.drainedNs, false, "drained_ns", qsizetype(i), topic);
+    }
+    for (std::size_t i = 0; i < run.latencies.size(); ++i) {
+        const RecordedLatency& l = run.latencies[i];
+        const QString series = run.series.value(l.series);
+        check(l.valueNs, true, "value_ns", qsizetype(i), series);
+        check(l.receivedNs, false, "received_ns", qsizetype(i), series);
+        check(l.drainedNs, false, "drained_ns", qsizetype(i), series);
+    }
+    if (bad == 0)
+        return true;
+    if (error)
+        *error = first
+            + (bad > 1 ? RunLoader::tr(" (and %1 more values out of range)").arg(bad - 1) : QString());
+    return false;
+}
+} // namespace
 
 RunLoader::Kind RunLoader::kindOf(const QString& path)
 {
@@ -34,11 +82,20 @@ std::optional<RunData> RunLoader::load(const QString& path, const Options& optio
                                        QStringList* warnings, const Progress& progress)
 {
     const Kind kind = kindOf(path);
-    if (kind == Kind::Run)
-        return RunFile::read(path, error, progress);
-    if (kind == Kind::Bag)
-        return BagReaderProcess::read(path, error, progress); // rosbag crashes on damaged bags: never here
-    std::optional<SuiteCsv::Data> csv = SuiteCsv::read(path, error);
+    if (kind == Kind::Run) {
+        std::optional<RunData> run = RunFile::read(path, error, progress);
+        if (run && !validate(*run, path, error))
+            return std::nullopt;
+        return run;
+    }
+    if (kind == Kind::Bag) {
+        // rosbag's library crashes on damaged bags: never in this process.
+        std::optional<RunData> run = BagReaderProcess::read(path, error, progress);
+        if (run && !validate(*run, path, error))
+            return std::nullopt;
+        return run;
+    }
+    std::optional<SuiteCsv::Data> csv = SuiteCsv::read(path, error, progress);
     if (!csv)
         return std::nullopt;
     if (csv->malformed > 0 && !options.skipBadRows) {
@@ -75,24 +132,24 @@ RunData RunLoader::join(std::vector<RunData> runs)
     RunData out = std::move(runs.front());
     for (std::size_t r = 1; r < runs.size(); ++r) {
         RunData& next = runs[r];
-        std::vector<int> topicMap;
-        for (const QString& t : next.topics) {
-            qsizetype i = out.topics.indexOf(t);
-            if (i < 0) {
-                i = out.topics.size();
-                out.topics << t;
+        // By hash: indexOf() per name was quadratic in the columns.
+        const auto mapNames = [](QStringList& into, const QStringList& names) {
+            QHash<QString, int> index;
+            for (qsizetype i = 0; i < into.size(); ++i)
+                index.insert(into[i], int(i));
+            std::vector<int> map;
+            for (const QString& n : names) {
+                auto it = index.constFind(n);
+                if (it == index.cend()) {
+                    it = index.insert(n, int(into.size()));
+                    into << n;
+                }
+                map.push_back(*it);
             }
-            topicMap.push_back(int(i));
-        }
-        std::vector<int> seriesMap;
-        for (const QString& s : next.series) {
-            qsizetype i = out.series.indexOf(s);
-            if (i < 0) {
-                i = out.series.size();
-                out.series << s;
-            }
-            seriesMap.push_back(int(i));
-        }
+            return map;
+        };
+        const std::vector<int> topicMap = mapNames(out.topics, next.topics);
+        const std::vector<int> seriesMap = mapNames(out.series, next.series);
         for (RecordedStamp s : next.stamps) {
             s.topic = topicMap[std::size_t(s.topic)];
             out.stamps.push_back(s);

@@ -4,6 +4,7 @@
 #include "latency/stampcodec.h"
 
 #include <QFile>
+#include <QSet>
 
 using namespace Qt::StringLiterals;
 
@@ -72,7 +73,7 @@ QByteArray csvCell(const QString& s)
 }
 } // namespace
 
-std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error)
+std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error, const Progress& progress)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
@@ -80,10 +81,11 @@ std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error
             *error = tr("%1: %2").arg(path, f.errorString());
         return std::nullopt;
     }
-    return parse(f.readAll(), path, error);
+    return parse(f.readAll(), path, error, progress);
 }
 
-std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QString& name, QString* error)
+std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QString& name, QString* error,
+                                              const Progress& progress)
 {
     const auto fail = [&](int line, const QString& why) -> std::optional<Data> {
         if (error)
@@ -108,14 +110,19 @@ std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QSt
     const QStringList header = nextRecord(text, pos, ok, span);
     if (!ok)
         return fail(line, tr("unterminated quote in the header row"));
+    QSet<QString> seen; // a list's contains() made 20,000 columns quadratic
+    seen.reserve(header.size());
     for (qsizetype i = 0; i < header.size(); ++i) {
         const QString topic = header[i].trimmed();
         if (topic.isEmpty())
             return fail(line, tr("column %1 of the header row has no topic name").arg(i + 1));
+        if (topic.contains(QChar(0)))
+            return fail(line, tr("column %1 of the header row holds a NUL byte").arg(i + 1));
         if (StampCodec::parseTime(topic))
             return fail(line, tr("the first row holds times, not topic names: is the header row missing?"));
-        if (data.topics.contains(topic))
+        if (seen.contains(topic))
             return fail(line, tr("topic %1 appears twice in the header row").arg(topic));
+        seen.insert(topic);
         data.topics << topic;
     }
     line += span;
@@ -124,7 +131,15 @@ std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QSt
         if (data.problems.size() < kMaxProblems)
             data.problems << u"%1:%2: %3"_s.arg(name).arg(at).arg(why);
     };
+    qint64 cellsSincePoll = 0;
     while (pos < text.size()) {
+        // Polled by cells, not rows: one row of 20,000 columns is a lot of work already.
+        cellsSincePoll += data.topics.size();
+        if (progress && cellsSincePoll >= 100'000) {
+            cellsSincePoll = 0;
+            if (!progress(int(100 * pos / text.size())))
+                return fail(line, tr("cancelled"));
+        }
         const int at = line;
         const QStringList cells = nextRecord(text, pos, ok, span);
         line += span;
@@ -148,7 +163,17 @@ std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QSt
                 missing = true;
                 continue;
             }
+            if (cell.contains(QChar(0))) {
+                bad = tr("column %1 (%2): a NUL byte in the cell").arg(i + 1).arg(data.topics[i]);
+                break;
+            }
             const std::optional<qint64> t = StampCodec::parseTime(cell);
+            if (t && !StampCodec::inRange(*t)) {
+                bad = tr("column %1 (%2): %3 is %4")
+                          .arg(i + 1)
+                          .arg(data.topics[i], cell.left(40), StampCodec::rangeText());
+                break;
+            }
             if (!t) {
                 bad = tr("column %1 (%2): \"%3\" is not a time in seconds")
                           .arg(i + 1)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <QByteArray>
 #include <QCoreApplication>
@@ -12,8 +13,9 @@
 ///
 /// Written exactly as the suite's Python csv writer does (CRLF line ends, quoting only where
 /// needed). Reading is forgiving about line ends, a BOM and short fractions, and strict about
-/// everything else: a row with a cell that is not a time, or with too many or too few cells, is
-/// skipped and reported with its line; a row with empty cells is an incomplete sample.
+/// everything else: a row with a cell that is not a time (or holds a NUL byte, or a time outside
+/// what a ROS stamp can hold), or with too many or too few cells, is skipped and reported with its
+/// line; a row with empty cells is an incomplete sample.
 class SuiteCsv
 {
     Q_DECLARE_TR_FUNCTIONS(SuiteCsv)
@@ -28,8 +30,12 @@ public:
     };
 
     /// Unreadable files and files without a header row give nullopt and `error`.
-    static std::optional<Data> read(const QString& path, QString* error = nullptr);
-    static std::optional<Data> parse(const QByteArray& bytes, const QString& name, QString* error = nullptr);
+    /// `progress` (0..100, false to cancel) is polled while reading; cancelling gives nullopt.
+    using Progress = std::function<bool(int percent)>;
+    static std::optional<Data> read(const QString& path, QString* error = nullptr,
+                                    const Progress& progress = {});
+    static std::optional<Data> parse(const QByteArray& bytes, const QString& name, QString* error = nullptr,
+                                     const Progress& progress = {});
 
     static QByteArray header(const QStringList& topics);
     static QByteArray row(const std::vector<qint64>& times);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rosmessage.h"
 
+#include <algorithm>
 #include <cstring>
 #include <QRegularExpression>
 #include <QtEndian>
@@ -41,6 +42,25 @@ bool isSeparator(const QString& line)
 {
     return line.size() >= 3 && line.count(u'=') == line.size();
 }
+
+/// Type nesting followed when sizing a type; deeper definitions are sized conservatively (not
+/// fixed, no minimum) and left to the decoder's own depth limit, so a hostile chain of 100,000
+/// dependencies cannot exhaust the stack.
+constexpr int kMaxTypeDepth = 64;
+
+qint64 saturatedAdd(qint64 a, qint64 b)
+{
+    return std::min(a + b, RosTypeRegistry::kHugeSize); // both are at most kHugeSize: no overflow
+}
+
+qint64 saturatedMul(qint64 a, qint64 b)
+{
+    if (a == 0 || b == 0)
+        return 0;
+    return a > RosTypeRegistry::kHugeSize / b ? RosTypeRegistry::kHugeSize : a * b;
+}
+
+thread_local qint64 t_lastSteps = 0;
 
 } // namespace
 
@@ -112,8 +132,11 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
         if (bracket >= 0) {
             field.isArray = true;
             const QString len = typeToken.mid(bracket + 1, typeToken.size() - bracket - 2);
-            bool ok = true;
-            field.fixedLength = len.isEmpty() ? -1 : len.toInt(&ok);
+            // Digits only (no sign, no space), at most a uint32 as on the wire.
+            bool ok = std::all_of(len.cbegin(), len.cend(), [](QChar c) { return c >= u'0' && c <= u'9'; });
+            const qulonglong fixed = len.isEmpty() || !ok ? 0 : len.toULongLong(&ok);
+            ok = ok && fixed <= 0xffffffffULL;
+            field.fixedLength = len.isEmpty() ? -1 : qint64(fixed);
             if (!ok || !typeToken.endsWith(u']')) {
                 if (error)
                     *error = tr("line %1: bad array type '%2'").arg(i + 1).arg(typeToken);
@@ -133,6 +156,7 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
     for (auto it = parsed.cbegin(); it != parsed.cend(); ++it)
         m_types.insert(it.key(), it.value());
     m_fixedSizes.clear();
+    m_minSizes.clear();
     return true;
 }
 
@@ -142,26 +166,66 @@ const RosMessageType* RosTypeRegistry::find(const QString& type) const
     return it == m_types.cend() ? nullptr : &*it;
 }
 
-int RosTypeRegistry::fixedSize(const QString& type) const
+qint64 RosTypeRegistry::fixedSize(const QString& type) const
+{
+    return fixedSize(type, 0);
+}
+
+qint64 RosTypeRegistry::fixedSize(const QString& type, int depth) const
 {
     if (isBuiltin(type))
         return builtinSize(type);
     const auto cached = m_fixedSizes.constFind(type);
     if (cached != m_fixedSizes.cend())
         return *cached;
+    if (depth > kMaxTypeDepth)
+        return -1;
     m_fixedSizes.insert(type, -1); // guards against recursive definitions
     const RosMessageType* msg = find(type);
-    int total = msg ? 0 : -1;
-    for (int i = 0; msg && i < msg->fields.size() && total >= 0; ++i) {
+    qint64 total = msg ? 0 : -1;
+    for (qsizetype i = 0; msg && i < msg->fields.size() && total >= 0; ++i) {
         const RosField& f = msg->fields[i];
         if (f.isArray && f.fixedLength < 0) {
             total = -1;
             break;
         }
-        const int element = fixedSize(f.type);
-        total = element < 0 ? -1 : total + element * (f.isArray ? f.fixedLength : 1);
+        if (f.isArray && f.fixedLength == 0)
+            continue; // no bytes whatever the element (even "string[0]")
+        const qint64 element = fixedSize(f.type, depth + 1);
+        total = element < 0 ? -1 : saturatedAdd(total, saturatedMul(element, f.isArray ? f.fixedLength : 1));
     }
     m_fixedSizes.insert(type, total);
+    return total;
+}
+
+qint64 RosTypeRegistry::minSize(const QString& type) const
+{
+    return minSize(type, 0);
+}
+
+qint64 RosTypeRegistry::minSize(const QString& type, int depth) const
+{
+    if (type == u"string"_s)
+        return 4;
+    if (isBuiltin(type))
+        return builtinSize(type);
+    const auto cached = m_minSizes.constFind(type);
+    if (cached != m_minSizes.cend())
+        return *cached;
+    const RosMessageType* msg = find(type);
+    if (!msg || depth > kMaxTypeDepth)
+        return 0; // unknown: the decoder reports it; too deep: no claim
+    // A type met again while sizing itself contains itself unconditionally: no finite value.
+    m_minSizes.insert(type, kHugeSize);
+    qint64 total = 0;
+    for (const RosField& f : msg->fields) {
+        if (f.isArray && f.fixedLength < 0)
+            total = saturatedAdd(total, 4); // the length; zero elements may follow
+        else if (!f.isArray || f.fixedLength > 0)
+            total = saturatedAdd(total,
+                                 saturatedMul(minSize(f.type, depth + 1), f.isArray ? f.fixedLength : 1));
+    }
+    m_minSizes.insert(type, total);
     return total;
 }
 
@@ -202,7 +266,7 @@ public:
 
     const uchar* need(qsizetype n, const QString& field)
     {
-        if (n < 0 || m_pos + n > m_size)
+        if (n < 0 || n > m_size - m_pos)
             fail(tr("the message ends while reading '%1' (needs %2 more bytes, %3 left)")
                      .arg(field)
                      .arg(n)
@@ -258,12 +322,52 @@ public:
         fail(tr("unknown type '%1'").arg(type));
     }
 
+    qint64 steps() const { return m_steps; }
+
+    // One field or array element visited: the work budget that no definition or length can
+    // stretch (elements that take no bytes would otherwise cost nothing to claim).
+    void step()
+    {
+        if (++m_steps > m_limits.maxSteps)
+            fail(tr("more than %1 steps (fields and array elements): too much work for one message")
+                     .arg(m_limits.maxSteps));
+    }
+
+    // An array of n elements, each at least `element` bytes, must fit in what is left: a hostile
+    // length fails here at once instead of after n tries.
+    void checkCount(quint64 n, const QString& type, const QString& field)
+    {
+        const qint64 element = m_reg.minSize(type);
+        if (element > 0 && saturatedMul(qint64(n), element) > m_size - m_pos)
+            fail(tr("'%1' claims %2 elements of at least %3 bytes, but only %4 bytes are left")
+                     .arg(field)
+                     .arg(n)
+                     .arg(element)
+                     .arg(m_size - m_pos));
+    }
+
+    // Moves over n values of one type without building them.
+    void skipElements(quint64 n, const QString& type, const QString& field, int depth)
+    {
+        if (n == 0)
+            return;
+        const qint64 element = m_reg.fixedSize(type);
+        if (element >= 0) {
+            need(saturatedMul(qint64(n), element), field); // also elements of no bytes: no loop
+            return;
+        }
+        checkCount(n, type, field);
+        for (quint64 i = 0; i < n; ++i)
+            skip(type, field, depth);
+    }
+
     // Moves over one value without building it.
     void skip(const QString& type, const QString& field, int depth)
     {
+        step();
         if (depth > m_limits.maxDepth)
             fail(tr("nested deeper than %1 levels").arg(m_limits.maxDepth));
-        const int fixed = m_reg.fixedSize(type);
+        const qint64 fixed = m_reg.fixedSize(type);
         if (fixed >= 0) {
             need(fixed, field);
             return;
@@ -280,19 +384,24 @@ public:
                 skip(f.type, f.name, depth + 1);
                 continue;
             }
-            const quint32 n = f.fixedLength >= 0 ? quint32(f.fixedLength) : length(f.name);
-            const int element = m_reg.fixedSize(f.type);
-            if (element >= 0) {
-                need(qsizetype(n) * element, f.name);
-            } else {
-                for (quint32 i = 0; i < n; ++i)
-                    skip(f.type, f.name, depth + 1);
-            }
+            step();
+            const quint64 n = f.fixedLength >= 0 ? quint64(f.fixedLength) : length(f.name);
+            skipElements(n, f.type, f.name, depth + 1);
         }
+    }
+
+    // One value built: bounded apart from the steps, as 16 shown elements per level of nested
+    // arrays of empty messages are 16^depth values from no bytes at all.
+    void built()
+    {
+        step();
+        if (++m_values > m_limits.maxValues)
+            fail(tr("more than %1 values to show: too much work for one message").arg(m_limits.maxValues));
     }
 
     RosValue value(const QString& name, const QString& type, int depth)
     {
+        built();
         if (depth > m_limits.maxDepth)
             fail(tr("nested deeper than %1 levels").arg(m_limits.maxDepth));
         RosValue v;
@@ -317,6 +426,7 @@ public:
 
     RosValue array(const RosField& f, int depth)
     {
+        built();
         RosValue v;
         v.name = f.name;
         v.type = f.type + (f.fixedLength >= 0 ? u"[%1]"_s.arg(f.fixedLength) : u"[]"_s);
@@ -333,18 +443,13 @@ public:
             v.truncated = shown < qsizetype(n);
             return v;
         }
-        const quint32 shown = std::min<quint32>(n, quint32(m_limits.maxArrayElements));
+        checkCount(n, f.type, f.name);
+        const quint32 shown = std::min<quint32>(n, quint32(std::max(0, m_limits.maxArrayElements)));
         for (quint32 i = 0; i < shown; ++i)
             v.children.append(value(u"[%1]"_s.arg(i), f.type, depth + 1));
         if (shown < n) {
             v.truncated = true;
-            const int element = m_reg.fixedSize(f.type);
-            if (element >= 0) {
-                need(qsizetype(n - shown) * element, f.name);
-            } else {
-                for (quint32 i = shown; i < n; ++i)
-                    skip(f.type, f.name, depth + 1);
-            }
+            skipElements(n - shown, f.type, f.name, depth + 1);
         }
         return v;
     }
@@ -355,6 +460,8 @@ private:
     qsizetype m_size;
     qsizetype m_pos = 0;
     RosDecodeLimits m_limits;
+    qint64 m_steps = 0;
+    qint64 m_values = 0;
 };
 
 } // namespace
@@ -363,9 +470,18 @@ std::optional<RosValue> RosMessageDecoder::decode(const RosTypeRegistry& registr
                                                   const QByteArray& data, QString* error,
                                                   const RosDecodeLimits& limits)
 {
+    t_lastSteps = 0;
+    if (data.size() > limits.maxBytes) {
+        if (error)
+            *error = tr("the message has %1 bytes, more than the %2 bytes one message may have")
+                         .arg(data.size())
+                         .arg(limits.maxBytes);
+        return std::nullopt;
+    }
     Reader reader(registry, data, limits);
     try {
         RosValue root = reader.value(QString(), type, 0);
+        t_lastSteps = reader.steps();
         if (reader.pos() != reader.size()) {
             if (error)
                 *error = tr("%1 bytes left over after the message").arg(reader.size() - reader.pos());
@@ -373,10 +489,16 @@ std::optional<RosValue> RosMessageDecoder::decode(const RosTypeRegistry& registr
         }
         return root;
     } catch (const DecodeError& e) {
+        t_lastSteps = reader.steps();
         if (error)
             *error = e.message;
         return std::nullopt;
     }
+}
+
+qint64 RosMessageDecoder::lastSteps()
+{
+    return t_lastSteps;
 }
 
 QStringList RosValue::toLines(int indent) const

@@ -16,7 +16,7 @@ struct RosField
     QString name;
     QString type; ///< element type: "uint32", "time", "std_msgs/Header", ...
     bool isArray = false;
-    int fixedLength = -1; ///< arrays: element count, or -1 for a variable-length array
+    qint64 fixedLength = -1; ///< arrays: element count (up to 2^32 - 1), or -1 for a variable-length array
 };
 
 /// A ROS 1 message type: its fields in wire order (constants are not on the wire).
@@ -37,16 +37,25 @@ public:
     bool addDefinition(const QString& type, const QString& definition, QString* error = nullptr);
     const RosMessageType* find(const QString& type) const;
     bool contains(const QString& type) const { return m_types.contains(type); }
-    /// Bytes on the wire when every field has a fixed size, else -1.
-    int fixedSize(const QString& type) const;
+    /// Sizes at or above this are "too large for any message" (saturated, never overflowed).
+    static constexpr qint64 kHugeSize = qint64(1) << 62;
+    /// Bytes on the wire when every field has a fixed size, else -1 (saturated at kHugeSize).
+    qint64 fixedSize(const QString& type) const;
+    /// The fewest bytes any value of the type takes on the wire (saturated at kHugeSize, which
+    /// also stands for a type that contains itself and so has no finite value).
+    qint64 minSize(const QString& type) const;
 
     static bool isBuiltin(const QString& type);
     /// Wire size of a builtin, or -1 for string.
     static int builtinSize(const QString& type);
 
 private:
+    qint64 fixedSize(const QString& type, int depth) const;
+    qint64 minSize(const QString& type, int depth) const;
+
     QHash<QString, RosMessageType> m_types;
-    mutable QHash<QString, int> m_fixedSizes;
+    mutable QHash<QString, qint64> m_fixedSizes;
+    mutable QHash<QString, qint64> m_minSizes;
 };
 
 /// A decoded message as a tree: messages have fields, arrays have (some of) their elements.
@@ -67,12 +76,17 @@ struct RosValue
     const RosValue* find(const QString& path) const;
 };
 
-/// How much of a large message is turned into values; the rest is skipped, not read.
+/// How much of a large message is turned into values (the rest is skipped, not read), and the
+/// budget of work per message: bytes, fields and array elements visited. The bytes and the
+/// definition come from whoever published them; past a budget the message is a decode error.
 struct RosDecodeLimits
 {
     int maxArrayElements = 16;
     int maxStringChars = 4096;
     int maxDepth = 32;
+    qint64 maxBytes = 64 * 1024 * 1024;
+    qint64 maxSteps = 1'000'000; ///< fields and array elements visited, shown or skipped
+    qint64 maxValues = 50'000; ///< values built (each costs memory, unlike a skipped one)
 };
 
 /// Decodes ROS 1 serialized bytes with a type registry.
@@ -83,6 +97,8 @@ public:
     static std::optional<RosValue> decode(const RosTypeRegistry& registry, const QString& type,
                                           const QByteArray& data, QString* error = nullptr,
                                           const RosDecodeLimits& limits = {});
+    /// Steps the last decode() on this thread took (for tests of the work bound).
+    static qint64 lastSteps();
 };
 
 /// A ROS time (or duration) as "sec.nsec" with nine digits of nanoseconds.

@@ -489,6 +489,74 @@ private slots:
             QCOMPARE(err.count(u"cannot write to standard output"_s), 1);
         }
     }
+
+    // Regression (issue 11, item 6): stage labelling was cubic in the columns; 20,000 never ended.
+    void reportOnTwentyThousandColumnsFinishes()
+    {
+        QTemporaryDir dir;
+        QStringList topics;
+        for (int i = 0; i < 20000; ++i)
+            topics << u"/suite/timestamps/c%1/data/out"_s.arg(i);
+        std::vector<std::vector<qint64>> samples(3);
+        for (std::size_t r = 0; r < samples.size(); ++r)
+            for (int c = 0; c < 20000; ++c)
+                samples[r].push_back(1'700'000'000'000'000'000LL + qint64(r) * 1'000'000'000LL + c * 1000LL);
+        const QString csv = writeFile(dir, u"wide.csv"_s, SuiteCsv::write(topics, samples));
+        const Run r = bridgescope({u"report"_s, csv, u"--format"_s, u"md"_s}, 600000); // "finishes at all"
+        QCOMPARE(r.exit, 0);
+        QVERIFY2(r.out.contains(u"c0 → c1"_s), qPrintable(r.out.left(500)));
+        QVERIFY(r.out.contains(u"c19998 → c19999"_s));
+    }
+
+    // Ctrl+C while a wide CSV is read and labelled: exit 130 and nothing written (it was ignored
+    // until the labelling ended, which for thousands of columns was never).
+    void ctrlCCancelsAWideReport()
+    {
+        QTemporaryDir dir;
+        QStringList topics;
+        for (int i = 0; i < 20000; ++i)
+            topics << u"/suite/timestamps/c%1/data/out"_s.arg(i);
+        std::vector<std::vector<qint64>> samples(60);
+        for (std::size_t r = 0; r < samples.size(); ++r)
+            for (int c = 0; c < 20000; ++c)
+                samples[r].push_back(1'700'000'000'000'000'000LL + qint64(r) * 1'000'000'000LL + c * 1000LL);
+        const QString csv = writeFile(dir, u"wide.csv"_s, SuiteCsv::write(topics, samples));
+        const QString out = dir.filePath(u"report.md"_s);
+        QProcess p;
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, csv, u"--format"_s, u"md"_s, u"-o"_s, out});
+        QVERIFY(p.waitForStarted());
+        QTest::qWait(300);
+        QCOMPARE(p.state(), QProcess::Running);
+        ::kill(pid_t(p.processId()), SIGTERM);
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 130);
+        QVERIFY(!QFile::exists(out));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList {u"wide.csv"_s});
+    }
+
+    // Regression (issue 11): a NUL byte cut a time cell silently; extreme stamps in a CSV gave
+    // exit 0 and absurd figures. Both are errors with file and line.
+    void reportRefusesNulBytesAndStampsOutsideRosTime()
+    {
+        QTemporaryDir dir;
+        QByteArray text = "/a,/b\r\n1.0,2.0\r\n3.0,4";
+        text += '\0';
+        text += "5\r\n";
+        const QString nul = writeFile(dir, u"nul.csv"_s, text);
+        Run r = bridgescope({u"report"_s, nul});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(nul + u":3: column 2 (/b): a NUL byte in the cell"_s), qPrintable(r.err));
+        const QString extreme
+            = writeFile(dir, u"extreme.csv"_s, "/a,/b\r\n1.0,2.0\r\n0,9000000000\r\n-9000000000,1\r\n");
+        r = bridgescope({u"report"_s, extreme});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(extreme + u":3: column 2 (/b): 9000000000 is outside"_s), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u"and 1 more"_s), qPrintable(r.err));
+        r = bridgescope({u"report"_s, extreme, u"--skip-bad-rows"_s});
+        QCOMPARE(r.exit, 0);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"samples"_s).toInt(), 1);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)

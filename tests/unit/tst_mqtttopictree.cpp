@@ -8,6 +8,7 @@
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
+#include <QtEndian>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -208,6 +209,46 @@ private slots:
         QCOMPARE(dump(proxy), (QStringList {u"a 2"_s, u"  b 1"_s, u"    needle 1"_s}));
         proxy.setFilterRole(MqttTopicTree::SearchTextRole);
         QCOMPARE(dump(proxy), (QStringList {u"a 2"_s, u"  c 1"_s}));
+    }
+    // Regression (issue 11, item 4): this retained pair hung discovery and the GUI (4.3e9 empty
+    // elements stepped over one by one), at every start. Over a budget, a payload is counted.
+    void hostileAnnouncementsCostBoundedWork()
+    {
+        MqttTopicTree tree;
+        const auto announce = [](const QString& definition) {
+            RosMsgTypeInfo info;
+            info.md5 = u"*"_s;
+            info.name = u"pkg/Outer"_s;
+            info.definition = definition;
+            return MqttClientWire::encodeType(info);
+        };
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/evil/empty"_s,
+                            announce(u"Inner[] items\n===\nMSG: pkg/Inner\nstring[0] s\n"_s), true));
+        batch.push_back(msg(u"evil/empty"_s, QByteArray(4, '\xff'), true));
+        // A million and one elements of five bytes: more steps than one message may take.
+        QByteArray many(4, '\0');
+        qToLittleEndian<quint32>(1000001, many.data());
+        many += QByteArray(1000001 * 5, '\0');
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/evil/many"_s,
+                            announce(u"Item[] items\n===\nMSG: pkg/Item\nuint8 a\nuint8[] b\n"_s), true));
+        batch.push_back(msg(u"evil/many"_s, many, true));
+        // A definition that does not read, and an announcement over its size budget.
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/evil/def"_s, announce(u"int32[-1] x\n"_s), true));
+        batch.push_back(msg(u"mqtt_client/ros_msg_type/evil/big"_s,
+                            announce(QString(MqttClientWire::kMaxTypeBytes, u'#')), true));
+        tree.apply(std::move(batch));
+        QCOMPARE(tree.info(u"evil/empty"_s)->malformedPayloads, 0u);
+        QCOMPARE(tree.info(u"evil/many"_s)->malformedPayloads, 1u);
+        QVERIFY2(tree.info(u"evil/many"_s)->payloadError.contains(u"more than 1000000 steps"_s),
+                 qPrintable(tree.info(u"evil/many"_s)->payloadError));
+        QVERIFY(tree.data(tree.indexOf(u"evil/many"_s), Qt::ToolTipRole).toString().contains(u"more than"_s));
+        for (const QString& t :
+             {u"mqtt_client/ros_msg_type/evil/def"_s, u"mqtt_client/ros_msg_type/evil/big"_s}) {
+            QCOMPARE(tree.info(t)->malformedPayloads, 1u);
+            QVERIFY(!tree.info(t)->typeError.isEmpty());
+        }
+        QCOMPARE(tree.malformedTypeAnnouncements(), 2u);
     }
 };
 

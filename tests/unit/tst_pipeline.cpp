@@ -12,6 +12,80 @@
 
 using namespace Qt::StringLiterals;
 
+namespace {
+/// Stage labelling as it was before it became linear (one call per label, prefix recomputed each
+/// time): the reference the fast labels must equal. One fix: topics that share no character have
+/// no common prefix (lastIndexOf(u'/', -1) searched from the end and cut every topic to its leaf).
+struct OldLabels
+{
+    QStringList topics;
+    QString shortTopic(int i) const
+    {
+        const QString& t = topics[i];
+        if (topics.size() < 2)
+            return t;
+        qsizetype common = topics.first().size();
+        for (const QString& other : topics) {
+            qsizetype k = 0;
+            while (k < common && k < other.size() && other[k] == topics.first()[k])
+                ++k;
+            common = k;
+        }
+        common = common == 0 ? 0 : topics.first().lastIndexOf(u'/', common - 1) + 1;
+        const QString rest = t.mid(common);
+        return rest.isEmpty() ? t : rest;
+    }
+    QString component(int i) const
+    {
+        const QString t = shortTopic(i);
+        const qsizetype slash = t.indexOf(u'/');
+        return slash > 0 ? t.left(slash) : t;
+    }
+    QString longStageLabel(int s) const
+    {
+        const QString a = shortTopic(s);
+        const QString b = shortTopic(s + 1);
+        const qsizetype slashA = a.lastIndexOf(u'/');
+        const qsizetype slashB = b.lastIndexOf(u'/');
+        if (slashA > 0 && slashA == slashB && a.left(slashA) == b.left(slashB))
+            return u"%1 (%2 → %3)"_s.arg(a.left(slashA), a.mid(slashA + 1), b.mid(slashB + 1));
+        return u"%1 → %2"_s.arg(a, b);
+    }
+    QString brief(int s) const
+    {
+        const QString a = component(s);
+        const QString b = component(s + 1);
+        return a == b ? longStageLabel(s) : u"%1 → %2"_s.arg(a, b);
+    }
+    QString stageLabel(int stage) const
+    {
+        const QString label = brief(stage);
+        for (int s = 0; s + 1 < topics.size(); ++s)
+            if (s != stage && brief(s) == label)
+                return longStageLabel(stage);
+        return label;
+    }
+};
+
+/// Random pipelines over a few name parts, so that labels collide and prefixes vary.
+QStringList randomTopics(std::mt19937& rng, int count)
+{
+    static const QStringList parts {u"a"_s, u"b"_s, u"veh"_s, u"cloud"_s, u"in"_s, u"out"_s, u"x"_s};
+    std::uniform_int_distribution<int> part(0, int(parts.size()) - 1);
+    std::uniform_int_distribution<int> depth(1, 4);
+    const QString root = std::uniform_int_distribution<int>(0, 2)(rng) == 0 ? QString() : u"/t/"_s;
+    QStringList out;
+    while (out.size() < count) {
+        QString t = root;
+        for (int d = depth(rng); d > 0; --d)
+            t += parts[part(rng)] + (d > 1 ? u"/"_s : QString());
+        if (!out.contains(t))
+            out << t;
+    }
+    return out;
+}
+} // namespace
+
 class TestPipeline : public QObject
 {
     Q_OBJECT
@@ -145,6 +219,58 @@ private slots:
         QCOMPARE(p.host(3), u"cloud"_s);
         QCOMPARE(p.host(11), u"vehicle"_s);
         QCOMPARE(d.stampCount(run.topics[3]), 50u);
+    }
+    // Stamps of a broker with many stamp topics: memory stays bounded by stamps, not only by
+    // samples (2,000 samples of 100,000 topics were 200 million kept stamps).
+    void discoveryKeepsABoundedNumberOfStamps()
+    {
+        QStringList topics;
+        for (int t = 0; t < 1000; ++t)
+            topics << u"/many/t%1"_s.arg(t);
+        PipelineDiscovery d;
+        const int samples = int(PipelineDiscovery::kKeptStamps / 1000) + 100;
+        for (int s = 0; s < samples; ++s)
+            for (int t = 0; t < 1000; ++t)
+                d.add({topics[t], qint64(s) * 1'000'000'000LL, qint64(s) * 1'000'000'000LL + t, 0});
+        QCOMPARE(d.completeSamples(), int(PipelineDiscovery::kKeptStamps / 1000));
+        QCOMPARE(d.topics().size(), 1000);
+        QCOMPARE(d.propose().topics(), topics);
+    }
+
+    // Regression (issue 11, item 6): labelling was cubic in the topics. The labels must not change.
+    void stageLabelsAreTheOldLabels()
+    {
+        std::mt19937 rng(11);
+        for (int round = 0; round < 300; ++round) {
+            const QStringList topics = randomTopics(rng, 2 + round % 12);
+            const Pipeline p(topics);
+            const OldLabels old {p.topics()};
+            for (int s = 0; s < p.stageCount(); ++s)
+                QCOMPARE(p.stageLabel(s), old.stageLabel(s));
+            for (int t = 0; t < p.topicCount(); ++t)
+                QCOMPARE(p.shortTopic(t), old.shortTopic(t));
+        }
+        // A large pipeline: components repeat, so many labels fall back to the long form.
+        QStringList topics;
+        for (int i = 0; i < 100; ++i)
+            topics << u"/lab/timestamps/node%1/data/in"_s.arg(i % 40) + QString::number(i / 40)
+                   << u"/lab/timestamps/node%1/data/out"_s.arg(i % 40) + QString::number(i / 40);
+        const Pipeline big(topics);
+        const OldLabels old {big.topics()};
+        for (int s = 0; s < big.stageCount(); s += 7)
+            QCOMPARE(big.stageLabel(s), old.stageLabel(s));
+        // Every label of a pipeline of 20,000 topics, at once.
+        QStringList many;
+        for (int i = 0; i < 20000; ++i)
+            many << u"/suite/timestamps/c%1/d/out"_s.arg(i);
+        const Pipeline huge(many);
+        QCOMPARE(huge.stageLabel(0), u"c0 → c1"_s);
+        QCOMPARE(huge.stageLabel(19998), u"c19998 → c19999"_s);
+        QCOMPARE(huge.stageLabel(19999), QString());
+        QCOMPARE(huge.shortTopic(7), u"c7/d/out"_s);
+        // Topics sharing no character keep their components.
+        const Pipeline disjoint({u"veh/a/in"_s, u"cloud/a/out"_s});
+        QCOMPARE(disjoint.stageLabel(0), u"veh → cloud"_s);
     }
 };
 

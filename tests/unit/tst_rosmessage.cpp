@@ -7,6 +7,7 @@
 
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <QtEndian>
 #include <QTest>
 #include <ros/serialization.h>
 #include <sensor_msgs/Imu.h>
@@ -271,6 +272,129 @@ private slots:
         QVERIFY(reg.addDefinition(u"a/C"_s, u"int32 X=3 # three\nstring S=a#b\nuint8 v # value\n"_s, &error));
         QCOMPARE(reg.find(u"a/C"_s)->fields.size(), 1);
         QVERIFY(!RosMessageDecoder::decode(reg, u"a/Missing"_s, QByteArray(4, 0), &error));
+    }
+    // Regression (issue 11, item 4): a retained announcement of "Inner[] items" whose Inner takes no
+    // bytes, and the payload ff ff ff ff, made the decoder step over 4.3e9 empty elements.
+    void arraysOfEmptyElementsCostNoLoop()
+    {
+        RosTypeRegistry reg;
+        QVERIFY(reg.addDefinition(
+            u"pkg/Outer"_s,
+            u"Inner[] items\n"
+            "================================================================================\n"
+            "MSG: pkg/Inner\nstring[0] s\n"_s));
+        QCOMPARE(reg.fixedSize(u"pkg/Inner"_s), 0);
+        QCOMPARE(reg.minSize(u"pkg/Inner"_s), 0);
+        for (const int shown : {1, 16}) {
+            RosDecodeLimits limits;
+            limits.maxArrayElements = shown;
+            QString error;
+            const auto v
+                = RosMessageDecoder::decode(reg, u"pkg/Outer"_s, QByteArray(4, '\xff'), &error, limits);
+            QVERIFY2(v, qPrintable(error));
+            QCOMPARE(v->find(u"items"_s)->arrayLength, 0xffffffffu);
+            QCOMPARE(v->find(u"items"_s)->children.size(), shown);
+            QVERIFY(RosMessageDecoder::lastSteps() < 100);
+        }
+    }
+
+    void hostileLengthsFailBeforeTheLoop_data()
+    {
+        QTest::addColumn<QString>("definition");
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QString>("expected");
+        // Strings take at least their 4-byte length: 4e9 of them cannot follow 4 bytes.
+        QTest::newRow("strings") << u"string[] names"_s << QByteArray(4, '\xff')
+                                 << u"claims 4294967295 elements"_s;
+        QTest::newRow("messages of strings") << u"Item[] items\n===\nMSG: pkg/Item\nstring a\nuint8 b\n"_s
+                                             << QByteArray(4, '\xff') << u"at least 5 bytes"_s;
+        QTest::newRow("fixed array of messages of strings")
+            << u"Item[4000000000] items\n===\nMSG: pkg/Item\nstring a\n"_s << QByteArray(8, '\0')
+            << u"claims 4000000000 elements"_s;
+        // A type that contains itself has no finite value.
+        QTest::newRow("recursive elements")
+            << u"Node[] nodes\n===\nMSG: pkg/Node\nNode next\n"_s << QByteArray(4, '\xff') << u"claims"_s;
+        QTest::newRow("recursive field")
+            << u"Node n\n===\nMSG: pkg/Node\nNode next\n"_s << QByteArray(64, '\0') << u"nested deeper"_s;
+        // 16 elements shown per level of empty messages: 16^8 values from 0 bytes.
+        QString nest;
+        for (int i = 0; i < 8; ++i)
+            nest += u"L%1[16] a\n===\nMSG: pkg/L%1\n"_s.arg(i);
+        nest += u"uint8[0] end\n"_s;
+        QTest::newRow("nested empty arrays") << nest << QByteArray() << u"more than 50000 values"_s;
+        // Elements of at least one byte each, 1,000,001 of them: bytes alone would allow it.
+        QByteArray many(4, '\0');
+        qToLittleEndian<quint32>(1000001, many.data());
+        many += QByteArray(1000001 * 5, '\0');
+        QTest::newRow("many small elements") << u"Item[] items\n===\nMSG: pkg/Item\nuint8 a\nuint8[] b\n"_s
+                                             << many << u"more than 1000000 steps"_s;
+    }
+    void hostileLengthsFailBeforeTheLoop()
+    {
+        QFETCH(QString, definition);
+        QFETCH(QByteArray, bytes);
+        QFETCH(QString, expected);
+        RosTypeRegistry reg;
+        QString error;
+        QVERIFY2(reg.addDefinition(u"pkg/Top"_s, definition, &error), qPrintable(error));
+        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Top"_s, bytes, &error));
+        QVERIFY2(error.contains(expected), qPrintable(error));
+        QVERIFY(RosMessageDecoder::lastSteps() <= RosDecodeLimits().maxSteps + 1);
+    }
+
+    void workBudgetsAreLimits()
+    {
+        RosTypeRegistry reg;
+        QVERIFY(reg.addDefinition(u"pkg/Names"_s, u"string[] names\n"_s));
+        QByteArray bytes;
+        QDataStream out(&bytes, QIODevice::WriteOnly);
+        out.setByteOrder(QDataStream::LittleEndian);
+        out << quint32(1000);
+        for (int i = 0; i < 1000; ++i)
+            out << quint32(0);
+        QVERIFY(RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes));
+        RosDecodeLimits limits;
+        limits.maxSteps = 500;
+        QString error;
+        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes, &error, limits));
+        QVERIFY2(error.contains(u"more than 500 steps"_s), qPrintable(error));
+        limits = {};
+        limits.maxBytes = 100;
+        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes, &error, limits));
+        QVERIFY2(error.contains(u"4004 bytes"_s), qPrintable(error));
+    }
+
+    // Sizes are 64-bit and saturate: 16 bytes times 2^30 wrapped to 0 in an int.
+    void hostileDefinitionsAreSizedWithoutOverflow()
+    {
+        RosTypeRegistry reg;
+        QString error;
+        QVERIFY2(reg.addDefinition(u"pkg/Wrap"_s,
+                                   u"Pair[1073741824] x\n===\nMSG: pkg/Pair\nfloat64 a\nfloat64 b\n"_s,
+                                   &error),
+                 qPrintable(error));
+        QCOMPARE(reg.fixedSize(u"pkg/Wrap"_s), qint64(1) << 34);
+        QVERIFY2(reg.addDefinition(u"pkg/Huge"_s,
+                                   u"float64[4294967295] a\nHuge2[4294967295] b\n===\n"
+                                   "MSG: pkg/Huge2\nfloat64[4294967295] c\n"_s,
+                                   &error),
+                 qPrintable(error));
+        QCOMPARE(reg.fixedSize(u"pkg/Huge"_s), RosTypeRegistry::kHugeSize);
+        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Huge"_s, QByteArray(64, '\0'), &error));
+        QVERIFY2(error.contains(u"ends while reading"_s) || error.contains(u"claims"_s), qPrintable(error));
+        // Lengths beyond a uint32, signs and spaces are not array lengths.
+        for (const QString& bad : {u"int32[-1] x"_s, u"int32[4294967296] x"_s, u"int32[+3] x"_s})
+            QVERIFY2(!reg.addDefinition(u"pkg/Bad"_s, bad, &error), qPrintable(bad));
+        // A chain of 100,000 dependencies: sized without recursing 100,000 deep.
+        QString chain;
+        for (int i = 0; i < 100000; ++i)
+            chain += u"T%1 a\n===\nMSG: pkg/T%1\n"_s.arg(i + 1);
+        chain += u"uint8 end\n"_s;
+        QVERIFY(reg.addDefinition(u"pkg/T0"_s, chain, &error));
+        QCOMPARE(reg.fixedSize(u"pkg/T0"_s), -1);
+        QVERIFY(reg.minSize(u"pkg/T0"_s) >= 0);
+        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/T0"_s, QByteArray(1, '\0'), &error));
+        QVERIFY2(error.contains(u"nested deeper"_s), qPrintable(error));
     }
 };
 

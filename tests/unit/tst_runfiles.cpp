@@ -313,6 +313,41 @@ private slots:
         QCOMPARE(read + refused, 300);
         QVERIFY(crashed > 0); // the damage is of the kind that crashed in-process reading
     }
+
+    // Regression (issue 11): INT64-extreme and negative stamps in a run file gave exit 0 and absurd
+    // figures (overflowed differences); now the first is named with its place, and all counted.
+    void runsWithStampsOutsideRosTimeAreRefused()
+    {
+        QTemporaryDir dir;
+        const SyntheticRun synthetic = SyntheticRun::paper(5, 0, 6);
+        RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
+        run.info.name = u"extreme"_s;
+        run.stamps[7].timeNs = std::numeric_limits<qint64>::max();
+        run.stamps[9].timeNs = std::numeric_limits<qint64>::min();
+        run.stamps[11].sampleNs = -1;
+        const QString path = dir.filePath(u"extreme.bsrun"_s);
+        QString error;
+        QVERIFY2(RunFile::write(path, run, &error), qPrintable(error));
+        QVERIFY(!RunLoader::load(path, {}, &error));
+        QVERIFY2(error.startsWith(path + u": stamp 8 ("_s), qPrintable(error));
+        QVERIFY2(error.contains(u"time_ns: 9223372036854775807"_s), qPrintable(error));
+        QVERIFY2(error.contains(u"and 2 more"_s), qPrintable(error));
+        QVERIFY(!Report::build({path}, std::nullopt, {}, &error));
+        // The largest ROS time is fine, and so are the figures it gives.
+        run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
+        for (RecordedStamp& st : run.stamps)
+            st.timeNs
+                = StampCodec::kMaxTimeNs - 1 - (&st - run.stamps.data()) % 2 * (StampCodec::kMaxTimeNs - 1);
+        const QString edge = dir.filePath(u"edge.bsrun"_s);
+        QVERIFY2(RunFile::write(edge, run, &error), qPrintable(error));
+        const std::optional<Report> report = Report::build({edge}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        const LatencyEngine& e = *report->runs().front()->engine;
+        QCOMPARE(e.samples(), 5);
+        const double spanMs = double(StampCodec::kMaxTimeNs - 1) / 1e6;
+        QCOMPARE(e.series(e.stageSeries(0)).stats().min, -spanMs);
+        QCOMPARE(e.series(e.stageSeries(1)).stats().max, spanMs);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRunFiles)

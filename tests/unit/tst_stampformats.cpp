@@ -209,6 +209,35 @@ private slots:
         QVERIFY(!SuiteCsv::parse(csv, u"run.csv"_s, &error));
         QVERIFY2(error.contains(message), qPrintable(error));
     }
+    // Regression (issue 11): a NUL byte in a time cell cut the number ("12\0 99" read as 12), and
+    // times beyond what a ROS stamp holds overflowed later; both are located row errors now.
+    void csvCellsWithNulOrOutOfRangeTimesAreRowErrors()
+    {
+        QVERIFY(!StampCodec::parseTime(QStringView(u"12\0 99", 6)));
+        QVERIFY(!StampCodec::parseTime(QStringView(u"12.5\0", 5)));
+        QVERIFY(!StampCodec::parseTime(u"١٢")); // digits, but not ASCII ones
+        QByteArray csv = "/a,/b\n1,2\n3,4";
+        csv += '\0';
+        csv += "99\n5,-6\n7,5000000000\n9223372036854775807,1\n4294967295.999999999,4294967296\n8,9\n";
+        QString error;
+        const std::optional<SuiteCsv::Data> d = SuiteCsv::parse(csv, u"run.csv"_s, &error);
+        QVERIFY2(d, qPrintable(error));
+        QCOMPARE(d->samples.size(), 2u);
+        QCOMPARE(d->malformed, 5);
+        QVERIFY2(d->problems[0].startsWith(u"run.csv:3: column 2 (/b): a NUL byte"_s),
+                 qPrintable(d->problems[0]));
+        QVERIFY2(d->problems[1].startsWith(u"run.csv:4: column 2 (/b): \"-6\" is not a time"_s)
+                     || d->problems[1].startsWith(u"run.csv:4: column 2 (/b): -6 is outside"_s),
+                 qPrintable(d->problems[1]));
+        QVERIFY2(d->problems[2].startsWith(u"run.csv:5: column 2 (/b): 5000000000 is outside"_s),
+                 qPrintable(d->problems[2]));
+        QVERIFY2(d->problems[3].startsWith(u"run.csv:6: column 1 (/a)"_s), qPrintable(d->problems[3]));
+        QVERIFY2(d->problems[4].startsWith(u"run.csv:7: column 2 (/b): 4294967296 is outside"_s),
+                 qPrintable(d->problems[4]));
+        QVERIFY(!SuiteCsv::parse(QByteArray("/a,/", 4) + '\0' + "b\n1,2\n", u"run.csv"_s, &error));
+        QVERIFY2(error.startsWith(u"run.csv:1: column 2 of the header row holds a NUL byte"_s),
+                 qPrintable(error));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestStampFormats)
