@@ -8,6 +8,15 @@
 using namespace Qt::StringLiterals;
 
 namespace Secrets {
+namespace {
+qsizetype indentOf(const QString& line)
+{
+    qsizetype n = 0;
+    while (n < line.size() && line[n].isSpace())
+        ++n;
+    return n;
+}
+} // namespace
 
 QString urlWithoutCredentials(const QString& url)
 {
@@ -80,13 +89,11 @@ QByteArray redactYaml(const QByteArray& yaml, bool* changed)
                 from = valueEnd > m.capturedEnd() ? valueEnd : m.capturedEnd();
                 if (plain.isEmpty() && !flow) {
                     // A nested map or a value on the following, more indented lines.
-                    const qsizetype indent
-                        = line.size() - QString(line).remove(QRegularExpression(u"^\\s+"_s)).size();
+                    const qsizetype indent = indentOf(line);
                     qsizetype j = i + 1;
                     while (j < lines.size()) {
                         const QString next = QString::fromUtf8(lines[j]);
-                        const qsizetype nextIndent
-                            = next.size() - QString(next).remove(QRegularExpression(u"^\\s+"_s)).size();
+                        const qsizetype nextIndent = indentOf(next);
                         if (next.trimmed().isEmpty() || nextIndent <= indent)
                             break;
                         // Only a scalar continuation is a secret; a nested map is walked line by line.
@@ -101,13 +108,11 @@ QByteArray redactYaml(const QByteArray& yaml, bool* changed)
             }
             if (plain.startsWith(u'|') || plain.startsWith(u'>')) {
                 // A block scalar: its lines are the more indented ones that follow.
-                const qsizetype indent
-                    = line.size() - QString(line).remove(QRegularExpression(u"^\\s+"_s)).size();
+                const qsizetype indent = indentOf(line);
                 qsizetype j = i + 1;
                 while (j < lines.size()) {
                     const QString next = QString::fromUtf8(lines[j]);
-                    const qsizetype nextIndent
-                        = next.size() - QString(next).remove(QRegularExpression(u"^\\s+"_s)).size();
+                    const qsizetype nextIndent = indentOf(next);
                     if (!next.trimmed().isEmpty() && nextIndent <= indent)
                         break;
                     if (!next.trimmed().isEmpty())

@@ -3,6 +3,7 @@
 
 #include "latency/pipelinediscovery.h"
 #include "latency/stampcodec.h"
+#include "record/bagreaderprocess.h"
 #include "rosstampsource.h"
 
 #include <QFile>
@@ -13,12 +14,6 @@
 
 using namespace Qt::StringLiterals;
 
-bool RosbagImport::looksLikeBag(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) && f.read(13) == "#ROSBAG V2.0\n";
-}
-
 std::optional<RunData> RosbagImport::read(const QString& path, QString* error, const Progress& progress)
 {
     const auto fail = [&](const QString& why) -> std::optional<RunData> {
@@ -28,7 +23,7 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
     };
     if (!QFileInfo(path).isReadable())
         return fail(tr("cannot read it"));
-    if (!looksLikeBag(path))
+    if (!BagReaderProcess::looksLikeBag(path))
         return fail(tr("not a ROS 1 bag (no #ROSBAG V2.0 header)"));
     RunData run;
     try {

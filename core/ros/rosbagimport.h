@@ -15,7 +15,6 @@ class RosbagImport
 {
     Q_DECLARE_TR_FUNCTIONS(RosbagImport)
 public:
-    static bool looksLikeBag(const QString& path);
     static std::optional<RunData> read(const QString& path, QString* error = nullptr,
                                        const Progress& progress = {});
 };
