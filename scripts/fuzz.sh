@@ -68,7 +68,12 @@ if [ ! -f "$build/build.ninja" ] || [ "$(basename "$configured")" != "$(basename
         -DBRIDGESCOPE_FUZZ_SECONDS=0 >/dev/null
 fi
 started=$(date +%s)
-cmake --build "$build" -j "${BRIDGESCOPE_FUZZ_BUILD_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}" >/dev/null
+if ! cmake --build "$build" -j "${BRIDGESCOPE_FUZZ_BUILD_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}" \
+    >"$build/build.log" 2>&1; then
+    cat "$build/build.log" >&2
+    echo "fuzz: the build failed" >&2
+    exit 2
+fi
 engine="$(cat "$build/fuzz-engine.txt")"
 echo "fuzz: $engine targets built with $cxx in $(( $(date +%s) - started )) s" >&2
 

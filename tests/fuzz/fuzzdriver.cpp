@@ -2,7 +2,7 @@
 // A small mutation driver for LLVMFuzzerTestOneInput when libFuzzer is not there (GCC builds):
 // it runs every seed, then mutates seeds and earlier inputs (bit flips, byte and token inserts,
 // deletions, duplicated ranges, splices) for a fixed time. Crashes and sanitizer reports abort the
-// process; the input is first written to NAME-crash.bin so that it can be replayed. An input that
+// process, and the input is saved as NAME-crash.bin so that it can be replayed. An input that
 // runs longer than --timeout seconds, or a process that grows past --rss-limit-mb, is a finding
 // too (the stack of the input's thread is printed), as with libFuzzer's -timeout and -rss_limit_mb.
 //
@@ -14,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <fcntl.h>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -52,6 +53,7 @@ long g_rssLimitMb = 2048;
 pthread_t g_mainThread;
 std::atomic<int64_t> g_inputStartedMs {0}; ///< 0: no input running
 std::atomic<int> g_finding {0}; ///< 1 timeout, 2 out of memory
+void saveCurrent();
 
 int64_t nowMs()
 {
@@ -72,6 +74,7 @@ long rssMb()
 /// Runs on the thread that runs the input: says what happened, shows where, and ends the process.
 void onFinding(int)
 {
+    saveCurrent();
     const char* what = g_finding.load() == 1 ? "timeout: an input ran longer than the limit"
                                              : "out of memory: the process grew past the RSS limit";
     std::fprintf(stderr, "==fuzzdriver== %s; the input is in %s\n", what, g_artifact.c_str());
@@ -101,15 +104,45 @@ void watchdog()
     }
 }
 
+const Bytes* g_current = nullptr; ///< the input that runs, for the crash paths
+
+/// Saves the running input (async-signal-safe: called from signal handlers and sanitizer deaths).
+void saveCurrent()
+{
+    if (g_current == nullptr)
+        return;
+    const int fd = ::open(g_artifact.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0)
+        return;
+    const uint8_t* p = g_current->data();
+    std::size_t left = g_current->size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, p, left);
+        if (n <= 0)
+            break;
+        p += n;
+        left -= std::size_t(n);
+    }
+    ::close(fd);
+    const char note[] = "==fuzzdriver== the failing input is saved\n";
+    (void)!::write(2, note, sizeof note - 1);
+}
+
+/// A failed FUZZ_CHECK or an assertion: save the input, then die of the same signal.
+void onAbort(int sig)
+{
+    saveCurrent();
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
 void runOne(const Bytes& input)
 {
-    { // kept on disk while it runs: a crash leaves it behind
-        std::ofstream out(g_artifact, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(input.data()), std::streamsize(input.size()));
-    }
+    g_current = &input;
     g_inputStartedMs = nowMs();
     LLVMFuzzerTestOneInput(input.data(), input.size());
     g_inputStartedMs = 0;
+    g_current = nullptr;
 }
 
 /// Tokens of a libFuzzer dictionary: `"token"` or `name="token"` per line, `#` comments.
@@ -256,13 +289,16 @@ int main(int argc, char** argv)
     }
     g_mainThread = pthread_self();
     std::signal(SIGUSR2, onFinding);
+    std::signal(SIGABRT, onAbort);
+#ifdef FUZZ_HAVE_SANITIZER_STACK
+    __sanitizer_set_death_callback(saveCurrent); // ASan and UBSan reports end the process here
+#endif
     std::thread(watchdog).detach();
 
     for (const Bytes& input : pool)
         runOne(input);
     if (seconds <= 0 || (argc == 2 && files == 1)) {
         std::printf("replayed %zu inputs\n", pool.size());
-        std::remove(g_artifact.c_str());
         return 0;
     }
 
@@ -279,7 +315,6 @@ int main(int argc, char** argv)
                 pool.push_back(std::move(input));
         }
     }
-    std::remove(g_artifact.c_str());
     std::printf("%llu inputs in %.0f s, no failure\n", static_cast<unsigned long long>(runs), seconds);
     return 0;
 }
