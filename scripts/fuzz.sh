@@ -10,6 +10,7 @@
 #     --timeout S     one input longer than S seconds is a hang (default 10)
 #     --rss-limit-mb M  a target growing past M MB is a finding (default 2048)
 #   scripts/fuzz.sh --minimize TARGET INPUT [OUT]   shrinks a crash, hang or OOM input
+#   scripts/fuzz.sh --report [TARGET...]            the table of the last run again, from its logs
 #   scripts/fuzz.sh --list                          the targets
 #
 # The corpus grows in $BRIDGESCOPE_FUZZ_BUILD/corpus/<target> (default build-fuzz/), seeded from
@@ -32,6 +33,7 @@ keep_going=0
 timeout=10
 rss=2048
 minimize=()
+report_only=0
 targets=()
 all_targets() { (cd "$src" && ls fuzz_*.cpp | sed -e 's/^fuzz_//' -e 's/\.cpp$//'); }
 
@@ -44,7 +46,8 @@ while [ $# -gt 0 ]; do
         --rss-limit-mb) rss="$2"; shift 2 ;;
         --minimize) shift; minimize=("$@"); break ;;
         --list) all_targets; exit 0 ;;
-        -h|--help) sed -n '3,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --report) report_only=1; shift ;;
+        -h|--help) sed -n '3,23p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         [0-9]*) seconds="$1"; shift ;;
         *) targets+=("$1"); shift ;;
     esac
@@ -54,6 +57,7 @@ for t in "${targets[@]}"; do
     [ -f "$src/fuzz_$t.cpp" ] || { echo "fuzz: no target '$t' (scripts/fuzz.sh --list)" >&2; exit 2; }
 done
 
+if [ "$report_only" = 0 ]; then
 # clang with libFuzzer if there is one, else g++ and the driver (CMake checks that libFuzzer links).
 cxx="${BRIDGESCOPE_FUZZ_CXX:-}"
 if [ -z "$cxx" ]; then
@@ -124,6 +128,9 @@ for t in "${targets[@]}"; do
     run_target "$t" &
 done
 wait
+else
+    engine="$(cat "$build/fuzz-engine.txt")"
+fi
 
 # The summary: one Markdown row per target.
 failed=0
