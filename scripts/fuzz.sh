@@ -163,5 +163,9 @@ for t in "${targets[@]}"; do
     printf '| %s | %s | %s | %s | %s | %s | %s | %s s | %s |\n' "$t" "$result" "${execs:-?}" "${rate:-?}" \
         "${cov:--}" "${ft:--}" "${corp:--}" "$took" "$finding"
 done
-echo "fuzz: $engine, $seconds s per target${runs:+ or $runs runs}, -timeout=$timeout -rss_limit_mb=$rss, $(date -u +%Y-%m-%d), logs in $build/logs" >&2
+if [ "$report_only" = 0 ]; then
+    echo "fuzz: $engine, $seconds s per target${runs:+ or $runs runs}$([ $keep_going = 1 ] && echo ", fork mode"), -timeout=$timeout -rss_limit_mb=$rss, $(date -u +%Y-%m-%d), logs in $build/logs" >&2
+else
+    echo "fuzz: $engine, from the logs in $build/logs" >&2
+fi
 exit $failed
