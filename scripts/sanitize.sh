@@ -7,6 +7,7 @@
 #         its event buffer, live and measure sessions, the recorder, ROS discovery, the bridge)
 #
 #   scripts/sanitize.sh [asan|tsan|all] [ctest arguments...]     (default: all)
+#   scripts/sanitize.sh asan -L unit        only the unit tests (and only their targets are built)
 #
 # Only the targets the tests need are built. Suppressions (tests/sanitizers/*.supp) name only
 # third-party libraries. Prints how long each build and test run took; exits non-zero when a
@@ -45,7 +46,7 @@ run() {
     t0=$(date +%s)
     configure "$dir" "$san"
     if [ ${#targets[@]} -eq 0 ]; then # every test the selection names: ctest's names are the targets
-        mapfile -t targets < <(cd "$dir" && ctest -N "${select[@]}" | sed -n 's/^ *Test *#[0-9]*: *//p')
+        mapfile -t targets < <(cd "$dir" && ctest -N "${select[@]}" "${EXTRA_CTEST[@]}" | sed -n 's/^ *Test *#[0-9]*: *//p')
     fi
     echo "sanitize: $name: building ${#targets[@]} tests with -fsanitize=$san" >&2
     cmake --build "$dir" -j "$jobs" --target bridgescope stamp_publisher "${targets[@]}"
