@@ -89,7 +89,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const BridgeConfig wanted = edited(read.config, edit);
     QString whyNot;
     ConfigReadResult readBack;
-    if (const std::optional<QByteArray> patched = ConfigPatcher::patch(text, read.config, wanted, &whyNot, &readBack)) {
+    if (const std::optional<QByteArray> patched
+        = ConfigPatcher::patch(text, read.config, wanted, &whyNot, &readBack)) {
         const ConfigReadResult again = ConfigReader::read(*patched);
         FUZZ_CHECK(again.parsed, "a patched config does not read");
         FUZZ_CHECK(again.config.sameContent(wanted), "a patched config reads as another config");
@@ -105,7 +106,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         // A file with problems may lose what has no place (convert refuses it without --force).
         if (layout == read.config.layout && read.problems.isEmpty() && !read.lossy
             && layout != ConfigLayout::MqttBridge)
-            FUZZ_CHECK(sameConfig(again.config, read.config), "a config changes when written in its own layout");
+            FUZZ_CHECK(sameConfig(again.config, read.config),
+                       "a config changes when written in its own layout");
     }
     return 0;
 }

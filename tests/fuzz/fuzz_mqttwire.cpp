@@ -30,7 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
                    "a stamped payload changes when split and joined");
 
     if (info) {
-        const std::optional<RosMsgTypeInfo> again = MqttClientWire::decodeType(MqttClientWire::encodeType(*info));
+        const std::optional<RosMsgTypeInfo> again
+            = MqttClientWire::decodeType(MqttClientWire::encodeType(*info));
         FUZZ_CHECK(again && *again == *info, "an announcement does not survive encode and decode");
 
         RosTypeRegistry registry;

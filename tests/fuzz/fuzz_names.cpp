@@ -35,7 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         FUZZ_CHECK(!ConfigValidator::hasWildcard(name), "a valid published topic with a wildcard");
         FUZZ_CHECK(ConfigValidator::topicMatches(name, name), "a topic that does not match itself");
         if (!name.startsWith(u'$')) {
-            FUZZ_CHECK(ConfigValidator::topicMatches(QStringLiteral("#"), name), "'#' does not match a topic");
+            FUZZ_CHECK(ConfigValidator::topicMatches(QStringLiteral("#"), name),
+                       "'#' does not match a topic");
             QStringList plus = name.split(u'/');
             for (QString& level : plus)
                 level = QStringLiteral("+");

@@ -24,7 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QString path = dir.filePath(QStringLiteral("fuzz.bsrun"));
     {
         QFile file(path);
-        FUZZ_CHECK(file.open(QIODevice::WriteOnly | QIODevice::Truncate), "cannot write the temporary run file");
+        FUZZ_CHECK(file.open(QIODevice::WriteOnly | QIODevice::Truncate),
+                   "cannot write the temporary run file");
         FUZZ_CHECK(file.write(reinterpret_cast<const char*>(data), qint64(size)) == qint64(size),
                    "cannot write the temporary run file");
     }
@@ -42,7 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     for (const RecordedStamp& s : run->stamps)
         FUZZ_CHECK(s.topic >= 0 && s.topic < run->topics.size(), "a stamp of a topic that is not in the run");
     for (const RecordedLatency& l : run->latencies)
-        FUZZ_CHECK(l.series >= 0 && l.series < run->series.size(), "a latency of a series that is not in the run");
+        FUZZ_CHECK(l.series >= 0 && l.series < run->series.size(),
+                   "a latency of a series that is not in the run");
 
     LatencyEngine engine(run->info.pipeline);
     engine.setWindow(run->info.window);

@@ -10,13 +10,13 @@
 #include <QString>
 
 /// A property that must hold for every input; its failure is a finding like a crash.
-#define FUZZ_CHECK(condition, what)                                                                \
-    do {                                                                                           \
-        if (!(condition)) {                                                                        \
-            std::fprintf(stderr, "%s:%d: fuzz check failed: %s (%s)\n", __FILE__, __LINE__, what,  \
-                         #condition);                                                              \
-            std::abort();                                                                          \
-        }                                                                                          \
+#define FUZZ_CHECK(condition, what)                                                                          \
+    do {                                                                                                     \
+        if (!(condition)) {                                                                                  \
+            std::fprintf(stderr, "%s:%d: fuzz check failed: %s (%s)\n", __FILE__, __LINE__, what,            \
+                         #condition);                                                                        \
+            std::abort();                                                                                    \
+        }                                                                                                    \
     } while (false)
 
 namespace fuzz {

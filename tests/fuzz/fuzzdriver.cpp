@@ -14,10 +14,10 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
-#include <fcntl.h>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -178,18 +178,18 @@ std::vector<std::string> readDictionary(const std::string& path)
 /// Without a dictionary: pieces that matter to a CSV of times (separators, quotes, line ends,
 /// signs, exponents, long digits).
 std::vector<std::string> g_tokens {",",           "\"",
-                                        "\"\"",        "\r\n",
-                                        "\n",          "\r",
-                                        ".",           "-",
-                                        "+",           "e",
-                                        "E309",        "0",
-                                        "9",           "\xef\xbb\xbf",
-                                        "1700000000.", "999999999999999999999",
-                                        ".000000001",  "nan",
-                                        "inf",         " ",
-                                        "\t",          std::string(1, '\0'),
-                                        "/topic",      ",,",
-                                        "\"a,b\""};
+                                   "\"\"",        "\r\n",
+                                   "\n",          "\r",
+                                   ".",           "-",
+                                   "+",           "e",
+                                   "E309",        "0",
+                                   "9",           "\xef\xbb\xbf",
+                                   "1700000000.", "999999999999999999999",
+                                   ".000000001",  "nan",
+                                   "inf",         " ",
+                                   "\t",          std::string(1, '\0'),
+                                   "/topic",      ",,",
+                                   "\"a,b\""};
 
 Bytes mutate(Bytes b, const std::vector<Bytes>& pool, std::mt19937_64& rng)
 {

@@ -17,7 +17,8 @@ int main(int argc, char** argv)
     RunData run;
     run.info.name = QStringLiteral("seed");
     run.info.notes = QStringLiteral("fuzz seed");
-    run.info.pipeline = Pipeline({QStringLiteral("/a/in"), QStringLiteral("/a/out"), QStringLiteral("/b/in")}, 4);
+    run.info.pipeline
+        = Pipeline({QStringLiteral("/a/in"), QStringLiteral("/a/out"), QStringLiteral("/b/in")}, 4);
     run.info.pipeline.setHost(QStringLiteral("/a/in"), QStringLiteral("vehicle"));
     run.info.pipeline.setHost(QStringLiteral("/b/in"), QStringLiteral("cloud"));
     run.info.window = 4;
