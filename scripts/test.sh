@@ -1,11 +1,22 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs what is missing, builds, and runs every test (unit, integration, gui).
+# Installs what is missing, builds, and runs every test (unit, integration, gui, fuzz).
 # Exits non-zero when any test fails.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build_dir="${BRIDGESCOPE_TEST_BUILD_DIR:-$root/build}"
-"$root/scripts/build.sh" "$build_dir" Debug -DBRIDGESCOPE_BUILD_TESTS=ON -DBRIDGESCOPE_BUILD_BENCH=ON
+# Fuzzing: with clang, scripts/fuzz.sh fuzzes every target briefly with libFuzzer (coverage
+# guided) and the project's ctest only replays the seeds and saved crash inputs; without clang,
+# ctest runs the GCC mutation driver for a few seconds per target instead.
+fuzz_seconds="${BRIDGESCOPE_FUZZ_SECONDS:-12}"
+clang=0
+if command -v clang++-14 >/dev/null || command -v clang++ >/dev/null; then clang=1; fi
+"$root/scripts/build.sh" "$build_dir" Debug -DBRIDGESCOPE_BUILD_TESTS=ON -DBRIDGESCOPE_BUILD_BENCH=ON \
+    -DBRIDGESCOPE_FUZZ_SECONDS="$([ $clang = 1 ] && echo 0 || echo "$fuzz_seconds")"
 export QT_QPA_PLATFORM=offscreen
-cd "$build_dir"
-ctest --output-on-failure --timeout 600 -L 'unit|integration|gui|fuzz' "$@"
+status=0
+(cd "$build_dir" && ctest --output-on-failure --timeout 600 -L 'unit|integration|gui|fuzz' "$@") || status=1
+if [ $clang = 1 ] && [ "$fuzz_seconds" -gt 0 ]; then
+    "$root/scripts/fuzz.sh" -j "$(nproc)" "$fuzz_seconds" || status=1
+fi
+exit $status

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Fuzz target for the ROS 1 message decoder with the definition it decodes by: both come from the
+// broker (mqtt_client's type announcement carries the definition, the data topic the bytes).
+//
+// Input: the type name on the first line, the full definition (with "MSG: pkg/Type" dependencies
+// after "===" lines) up to the first NUL byte, then the serialized message. A definition that does
+// not parse is an error with a message; one that parses decodes the bytes within the limits or
+// says why not, and a decoded value prints and finds its fields without crashing.
+#include "fuzzcheck.h"
+#include "ros/rosmessage.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    const auto [text, payload] = fuzz::splitAtNul(fuzz::bytes(data, size));
+    const QString definitionText = QString::fromUtf8(text);
+    const qsizetype newline = definitionText.indexOf(u'\n');
+    const QString type = newline < 0 ? definitionText : definitionText.left(newline);
+    const QString definition = newline < 0 ? QString() : definitionText.mid(newline + 1);
+
+    RosTypeRegistry registry;
+    QString error;
+    if (!registry.addDefinition(type, definition, &error)) {
+        FUZZ_CHECK(!error.isEmpty(), "a definition rejected without a message");
+        return 0;
+    }
+    (void)registry.fixedSize(type);
+
+    error.clear();
+    const std::optional<RosValue> value = RosMessageDecoder::decode(registry, type, payload, &error);
+    if (!value) {
+        FUZZ_CHECK(!error.isEmpty(), "a message rejected without a message");
+        return 0;
+    }
+    const QStringList lines = value->toLines();
+    (void)lines;
+    for (const RosValue& child : value->children) // find() takes dotted paths: "a.b" is two levels
+        if (!child.name.contains(u'.'))
+            FUZZ_CHECK(value->find(child.name) != nullptr, "a decoded field that find() does not find");
+
+    // Tight limits take the other branches (cut strings and arrays, shallow nesting).
+    RosDecodeLimits tight;
+    tight.maxArrayElements = 1;
+    tight.maxStringChars = 2;
+    tight.maxDepth = 2;
+    (void)RosMessageDecoder::decode(registry, type, payload, &error, tight);
+    return 0;
+}

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Fuzz target for the timestamp formats: benchmarking_suite/TimeStamped and std_msgs/Header
+// (ROS 1 serialized), JSON stamps from devices, "sec.nsec" texts and Float64 seconds.
+//
+// The whole input goes to every decoder. Properties: what decodes encodes to something that
+// decodes to the same stamp; a time text read back is the same time; errors come with a message.
+#include "fuzzcheck.h"
+#include "latency/stampcodec.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    const QByteArray input = fuzz::bytes(data, size);
+    QString error;
+
+    if (const auto stamp = StampCodec::decodeTimeStamped(input, &error)) {
+        const auto again = StampCodec::decodeTimeStamped(StampCodec::encodeTimeStamped(*stamp));
+        FUZZ_CHECK(again && again->sampleNs == stamp->sampleNs && again->timeNs == stamp->timeNs
+                       && again->seq == stamp->seq && again->frameId == stamp->frameId,
+                   "a TimeStamped message changes in a round trip");
+    } else {
+        FUZZ_CHECK(!error.isEmpty(), "a TimeStamped message rejected without a message");
+    }
+
+    qsizetype consumed = -1;
+    if (StampCodec::decodeHeader(input, &consumed))
+        FUZZ_CHECK(consumed > 0 && consumed <= input.size(), "a header longer than its bytes");
+
+    error.clear();
+    if (const auto stamp = StampCodec::decodeJson(input, &error)) {
+        const auto again = StampCodec::decodeJson(StampCodec::encodeJson(stamp->sampleNs, stamp->timeNs));
+        FUZZ_CHECK(again && again->sampleNs == stamp->sampleNs && again->timeNs == stamp->timeNs,
+                   "a JSON stamp changes in a round trip");
+    } else {
+        FUZZ_CHECK(!error.isEmpty(), "a JSON stamp rejected without a message");
+    }
+
+    const QString text = QString::fromUtf8(input);
+    if (const std::optional<qint64> ns = StampCodec::parseTime(text)) {
+        const std::optional<qint64> again = StampCodec::parseTime(StampCodec::timeText(*ns));
+        FUZZ_CHECK(again && *again == *ns, "a time changes when written as text and read back");
+    }
+    (void)StampCodec::decodeFloat64Seconds(input);
+    FUZZ_CHECK(StampCodec::hashId(input) >= 0, "a negative hashed sample id");
+    return 0;
+}

@@ -1,0 +1,105 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Writes the seed corpora in corpus/<target>/ from the shared fixtures (real files from
+mqtt_client, the benchmarking suite and mqtt_bridge, see ../shared/fixtures/README.md) and a few
+hand-made inputs. Run it again after a fixture changes; fuzz_runfile's seed comes from
+make_runfile_seed (a real run file written by RunFile::write), see corpus/README.md.
+
+    tests/fuzz/make_seeds.py [FIXTURES_DIR]
+"""
+import pathlib
+import shutil
+import struct
+import sys
+
+here = pathlib.Path(__file__).resolve().parent
+root = here.parent.parent
+fixtures = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else root.parent / "shared" / "fixtures"
+if not (fixtures / "README.md").exists():
+    fixtures = root / "tests" / "data" / "fixtures"
+wire = fixtures / "mqtt_client" / "wire"
+
+
+def put(target, name, data):
+    d = here / "corpus" / target
+    d.mkdir(parents=True, exist_ok=True)
+    (d / name).write_bytes(data if isinstance(data, bytes) else data.encode())
+
+
+def ros_string(s):
+    b = s.encode()
+    return struct.pack("<I", len(b)) + b
+
+
+def announcement(path):
+    """(md5, name, definition, stamped) of a captured type announcement."""
+    b = path.read_bytes()
+    out, pos = [], 0
+    for _ in range(3):
+        (n,) = struct.unpack_from("<I", b, pos)
+        out.append(b[pos + 4:pos + 4 + n].decode())
+        pos += 4 + n
+    return out[0], out[1], out[2], b[pos] != 0
+
+
+# fuzz_rosmessage: "TYPE\nDEFINITION\0PAYLOAD"
+for kind in ("header", "pose", "string_stamped"):
+    md5, name, definition, stamped = announcement(wire / f"{kind}.type.bin")
+    payload = (wire / f"{kind}.payload.bin").read_bytes()
+    if stamped:
+        payload = payload[8:]
+    put("rosmessage", kind, name.encode() + b"\n" + definition.encode() + b"\0" + payload)
+header_def = announcement(wire / "header.type.bin")[2]
+timestamped_def = (fixtures / "benchmarking_suite" / "TimeStamped.msg").read_text() + "\n" + "=" * 80 + \
+    "\nMSG: std_msgs/Header\n" + header_def
+timestamped = struct.pack("<III", 1, 1700000000, 5) + ros_string("vehicle") + struct.pack("<II", 1700000000, 40000000)
+put("rosmessage", "timestamped", b"benchmarking_suite/TimeStamped\n" + timestamped_def.encode() + b"\0" + timestamped)
+put("rosmessage", "arrays", b"pkg/Arrays\nuint8[] data\nInner[2] fixed\nstring[] names\n" + b"=" * 80 +
+    b"\nMSG: pkg/Inner\nfloat64 x\nduration d\n\0" + struct.pack("<I", 3) + b"abc" + bytes(32) +
+    struct.pack("<I", 2) + ros_string("a") + ros_string("bc"))
+
+# fuzz_mqttwire: 16-bit length, type announcement, payload
+for kind in ("header", "pose", "string_stamped"):
+    t = (wire / f"{kind}.type.bin").read_bytes()
+    put("mqttwire", kind, struct.pack("<H", len(t)) + t + (wire / f"{kind}.payload.bin").read_bytes())
+put("mqttwire", "int_primitive", struct.pack("<H", 0) + (wire / "int_primitive.payload.bin").read_bytes())
+ts_announcement = ros_string("6c3188ca087b31af579ede0943a09e20") + ros_string("benchmarking_suite/TimeStamped") + \
+    ros_string(timestamped_def) + b"\x01"
+put("mqttwire", "timestamped_stamped", struct.pack("<H", len(ts_announcement)) + ts_announcement +
+    struct.pack("<II", 1700000000, 50000000) + timestamped)
+put("mqttwire", "json_stamp", struct.pack("<H", 0) + b'{"sample": "1700000000.000000005", "time": 1700000000.25}')
+
+# fuzz_stamps: the same bytes go to every decoder
+put("stamps", "timestamped", timestamped)
+put("stamps", "header", (wire / "header.payload.bin").read_bytes())
+put("stamps", "json_sec_nsec", b'{"sample": "1700000000.000000005", "time": "1700000000.040000000"}')
+put("stamps", "json_seconds", b'{"sample": "frame-17", "time": 1700000000.04}')
+put("stamps", "time_text", b"1700000000.123456789")
+put("stamps", "float64", struct.pack("<d", 1700000000.125))
+
+# fuzz_payloadtext
+put("payloadtext", "json", b'{"a": [1, 2.5, "x"], "b": {"c": null, "d": true}}')
+put("payloadtext", "text", b"hello mqtt\nline two\ttab\r\n")
+put("payloadtext", "binary", (wire / "pose.payload.bin").read_bytes())
+put("payloadtext", "int_primitive", (wire / "int_primitive.payload.bin").read_bytes())
+put("payloadtext", "utf8", "Grüße ✓ 🚗".encode())
+
+# fuzz_config: real configs of every layout (the last byte picks the edit)
+for sub, pattern in (("mqtt_client", "*.yaml"), ("benchmarking_suite", "mqtt_*.yaml"), ("mqtt_bridge", "*.yaml")):
+    for f in sorted((fixtures / sub).glob(pattern)):
+        put("config", f"{sub}-{f.name}", f.read_bytes())
+
+# fuzz_pipeline
+for f in sorted((fixtures / "benchmarking_suite").glob("metrics_logger_*.yaml")):
+    put("pipeline", f.name, f.read_bytes())
+put("pipeline", "hosts.yaml", "topics_in_order:\n  - /a/in\n  - /a/out\n  - /b/in\nmetrics_window: 100\n"
+    "hosts:\n  /a/in: vehicle\n  /a/out: vehicle\n  /b/in: cloud\n")
+
+# fuzz_names: a name, NUL, a filter
+for i, (name, flt) in enumerate([("/benchmarking_suite/timestamps/in", "a/+/c"),
+                                 ("mqtt_client/ros_msg_type/cap/pose", "mqtt_client/ros_msg_type/#"),
+                                 ("~/private_ns/topic", "$SYS/broker/#"),
+                                 ("vehicle/pointcloud", "+/pointcloud")]):
+    put("names", f"name{i}", name.encode() + b"\0" + flt.encode())
+
+# fuzz_suitecsv keeps its hand-made seeds (suite.csv is what the suite's logger writes).
