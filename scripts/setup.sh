@@ -7,6 +7,8 @@ set -euo pipefail
 PACKAGES=(
     # toolchain
     g++ cmake ninja-build pkg-config ccache
+    # fuzzing with libFuzzer, ASan and UBSan (scripts/fuzz.sh; test.sh runs every target briefly)
+    clang-14 libclang-rt-14-dev llvm-14
     # Qt 6 (Widgets, Charts, Svg, Sql/SQLite, translations)
     qt6-base-dev libqt6opengl6-dev libxkbcommon-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libqt6sql6-sqlite qtkeychain-qt6-dev

@@ -3,6 +3,7 @@
 
 #include <istream>
 #include <streambuf>
+#include <unordered_map>
 #include <vector>
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/parser.h>
@@ -57,14 +58,21 @@ class Counter : public YAML::EventHandler
 public:
     void OnDocumentStart(const YAML::Mark&) override { }
     void OnDocumentEnd() override { }
-    void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, 0); }
+    void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override
+    {
+        nextChild();
+        leaf(mark, anchor, 0);
+    }
     void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                   const std::string& value) override
     {
+        if (nextChild())
+            checkKey(mark, value);
         leaf(mark, anchor, qint64(value.size()));
     }
     void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override
     {
+        nextChild();
         countNode(mark);
         ++m_aliases;
         const AnchorSize* a = anchor < m_anchors.size() ? &m_anchors[anchor] : nullptr;
@@ -102,13 +110,15 @@ public:
     void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                          YAML::EmitterStyle::value) override
     {
-        open(mark, anchor);
+        nextChild();
+        open(mark, anchor, false);
     }
     void OnSequenceEnd() override { close(); }
     void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                     YAML::EmitterStyle::value) override
     {
-        open(mark, anchor);
+        nextChild();
+        open(mark, anchor, true);
     }
     void OnMapEnd() override { close(); }
     void OnAnchor(const YAML::Mark&, const std::string& name) override
@@ -123,7 +133,35 @@ private:
         qint64 nodesBefore;
         qint64 bytesBefore;
         int height = 1;
+        bool isMap = false;
+        bool keyNext = true; ///< in a map: the next child is a key
+        std::unordered_map<std::string, int> keys; ///< scalar keys of a map and their line
     };
+
+    /// Called at the start of every node: whether it is a key of the open map.
+    bool nextChild()
+    {
+        if (m_open.empty() || !m_open.back().isMap)
+            return false;
+        Open& o = m_open.back();
+        o.keyNext = !o.keyNext;
+        return !o.keyNext;
+    }
+
+    // YAML forbids a key twice in one mapping. yaml-cpp keeps both and its lookups find the
+    // first, while ROS's rosparam (PyYAML), which loads mqtt_client's configs, keeps the last:
+    // the bridge would run another config than the one shown.
+    void checkKey(const YAML::Mark& mark, const std::string& key)
+    {
+        const auto [it, inserted] = m_open.back().keys.emplace(key, mark.line);
+        if (!inserted)
+            stop(mark, u"yaml-duplicate-key"_s,
+                 tr("The key \"%1\" appears twice in this mapping (first on line %2); YAML forbids "
+                    "it, and readers disagree on which value counts.")
+                     .arg(QString::fromStdString(key))
+                     .arg(it->second + 1),
+                 tr("Remove one of the two, or rename it."));
+    }
 
     [[noreturn]] static void stop(const YAML::Mark& mark, const QString& code, const QString& message,
                                   const QString& fix)
@@ -180,7 +218,7 @@ private:
         child(0);
     }
 
-    void open(const YAML::Mark& mark, YAML::anchor_t anchor)
+    void open(const YAML::Mark& mark, YAML::anchor_t anchor, bool isMap)
     {
         const qint64 nodesBefore = expandedNodes();
         const qint64 bytesBefore = expandedBytes();
@@ -192,14 +230,16 @@ private:
                  tr("Flatten the structure."));
         if (anchor != YAML::NullAnchor)
             anchorSlot(anchor); // incomplete until its end: an alias inside it is a cycle
-        m_open.push_back({anchor, nodesBefore, bytesBefore});
+        Open o {anchor, nodesBefore, bytesBefore};
+        o.isMap = isMap;
+        m_open.push_back(std::move(o));
     }
 
     void close()
     {
         if (m_open.empty())
             return;
-        const Open o = m_open.back();
+        const Open o = std::move(m_open.back());
         m_open.pop_back();
         if (o.anchor != YAML::NullAnchor && o.anchor < m_anchors.size()) {
             AnchorSize& a = m_anchors[o.anchor];

@@ -203,6 +203,19 @@ QString spaces(int n)
     return QString(n, u' ');
 }
 
+// Whether raw YAML text can follow "key: " on the same line: one line that is no block
+// collection. A dumped block sequence is "- 1" and a map in one "- a: 1" (found by fuzz_config:
+// "extra: - 1" is not YAML).
+bool fitsAfterKey(const QString& text)
+{
+    if (text.contains(u'\n'))
+        return false;
+    if (text.startsWith(u'[') || text.startsWith(u'{') || text.startsWith(u'"') || text.startsWith(u'\''))
+        return true;
+    return !(text == u"-"_s || text.startsWith(u"- "_s) || text.startsWith(u"? "_s) || text.contains(u": "_s)
+             || text.endsWith(u':'));
+}
+
 void appendIndented(QString& out, const QString& text, int indent)
 {
     const QStringList lines = text.split(u'\n');
@@ -253,7 +266,7 @@ void YamlTree::writeValueAfterKey(QString& out, int indent) const
         out += u' ' + YamlText::scalar(m_text, m_style) + u'\n';
         break;
     case Type::Raw:
-        if (!m_text.contains(u'\n')) {
+        if (fitsAfterKey(m_text)) {
             out += u' ' + m_text + u'\n';
         } else {
             out += u'\n';

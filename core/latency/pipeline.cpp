@@ -30,11 +30,36 @@ QString hostOfToken(QStringView token)
     return {};
 }
 
+/// A double-quoted YAML scalar: control characters escaped, so that a line break in a name
+/// cannot be folded into a space (or end the scalar) when the file is read back.
 QString quoted(const QString& s)
 {
-    QString out = s;
-    out.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
-    return u'"' + out + u'"';
+    QString out;
+    out.reserve(s.size() + 2);
+    out += u'"';
+    for (const QChar c : s) {
+        if (c == u'\\' || c == u'"') {
+            out += u'\\';
+            out += c;
+        } else if (c.unicode() < 0x20 || c.unicode() == 0x7f || (c.unicode() >= 0x80 && c.unicode() < 0xa0)) {
+            out += u"\\u%1"_s.arg(uint(c.unicode()), 4, 16, QChar(u'0'));
+        } else {
+            out += c;
+        }
+    }
+    out += u'"';
+    return out;
+}
+
+/// The first control character in a name (a line break, a tab, NUL, ...), or -1. No ROS name has
+/// one and MQTT asks clients not to use them; in a pipeline file one is nearly always a folded
+/// line or a stray escape.
+qsizetype controlCharacter(const QString& s)
+{
+    for (qsizetype i = 0; i < s.size(); ++i)
+        if (s[i].unicode() < 0x20 || s[i].unicode() == 0x7f)
+            return i;
+    return -1;
 }
 } // namespace
 
@@ -142,6 +167,11 @@ std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* erro
             return fail(
                 tr("%1: every entry of topics_in_order must be a topic name").arg(lineText(t.Mark())));
         names << QString::fromStdString(t.Scalar());
+        if (const qsizetype at = controlCharacter(names.last()); at >= 0)
+            return fail(tr("%1: the topic %2 holds the control character U+%3 at %4")
+                            .arg(lineText(t.Mark()), quoted(names.last()))
+                            .arg(uint(names.last()[at].unicode()), 4, 16, QChar(u'0'))
+                            .arg(at + 1));
     }
     if (names.isEmpty())
         return fail(tr("topics_in_order is empty"));
@@ -163,7 +193,10 @@ std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* erro
             if (p.indexOf(topic) < 0)
                 return fail(tr("%1: hosts names %2, which is not in topics_in_order")
                                 .arg(lineText(kv.first.Mark()), topic));
-            p.setHost(topic, QString::fromStdString(kv.second.Scalar()));
+            const QString host = QString::fromStdString(kv.second.Scalar());
+            if (controlCharacter(host) >= 0)
+                return fail(tr("%1: the host of %2 holds a control character").arg(lineText(kv.second.Mark()), topic));
+            p.setHost(topic, host);
         }
     }
     return p;

@@ -17,6 +17,7 @@ struct Reader
 {
     const QByteArray& bytes;
     qsizetype pos = 0;
+    bool badNsec = false; ///< a time field held nsec >= 1e9: no ROS time, and no round trip
     bool u32(quint32& out)
     {
         if (bytes.size() - pos < 4)
@@ -31,6 +32,10 @@ struct Reader
         quint32 nsec = 0;
         if (!u32(sec) || !u32(nsec))
             return false;
+        if (nsec >= quint32(kNsPerSec)) {
+            badNsec = true;
+            return false;
+        }
         ns = qint64(sec) * kNsPerSec + qint64(nsec);
         return true;
     }
@@ -109,7 +114,10 @@ std::optional<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArra
     qsizetype headerBytes = 0;
     std::optional<Decoded> header = decodeHeader(bytes, &headerBytes);
     if (!header) {
-        if (error)
+        if (error && bytes.size() >= 12 && qFromLittleEndian<quint32>(bytes.constData() + 8) >= quint32(kNsPerSec))
+            *error = tr("TimeStamped header stamp has %1 nanoseconds, more than a second")
+                         .arg(qFromLittleEndian<quint32>(bytes.constData() + 8));
+        else if (error)
             *error = bytes.size() < 16 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
                                        : tr("TimeStamped frame_id claims %1 bytes, only %2 left")
                                              .arg(qFromLittleEndian<quint32>(bytes.constData() + 12))
@@ -121,7 +129,9 @@ std::optional<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArra
     r.pos = headerBytes;
     if (!r.time(d.timeNs)) {
         if (error)
-            *error = tr("TimeStamped message ends before its time field");
+            *error = r.badNsec ? tr("TimeStamped time has %1 nanoseconds, more than a second")
+                                     .arg(qFromLittleEndian<quint32>(bytes.constData() + r.pos - 4))
+                               : tr("TimeStamped message ends before its time field");
         return std::nullopt;
     }
     if (r.pos != bytes.size()) {

@@ -241,6 +241,22 @@ private slots:
 
     // A long report stops on Ctrl+C with exit 130 and leaves no file (180,000 samples take
     // seconds in this build; the signal comes after a third of a second).
+    // Whether the process catches `sig` (SigCgt in /proc), within 20 s.
+    static bool waitUntilCaught(QProcess& p, int sig)
+    {
+        QFile status(u"/proc/%1/status"_s.arg(p.processId()));
+        for (int i = 0; i < 400 && p.state() == QProcess::Running; ++i) {
+            if (status.open(QIODevice::ReadOnly)) {
+                for (const QByteArray& line : status.readAll().split('\n'))
+                    if (line.startsWith("SigCgt:") && (line.mid(7).trimmed().toULongLong(nullptr, 16) >> (sig - 1)) & 1)
+                        return true;
+                status.close();
+            }
+            QTest::qWait(50);
+        }
+        return false;
+    }
+
     void ctrlCCancelsALongReportAndWritesNothing()
     {
         QTemporaryDir dir;
@@ -251,7 +267,9 @@ private slots:
         p.start(QStringLiteral(BRIDGESCOPE_BINARY),
                 {u"report"_s, csv, u"--format"_s, u"html"_s, u"-o"_s, out});
         QVERIFY(p.waitForStarted());
-        QTest::qWait(300);
+        // Signal once the handler is in place (a fixed wait raced with slow starts under ASan).
+        QVERIFY(waitUntilCaught(p, SIGINT));
+        QTest::qWait(100);
         QCOMPARE(p.state(), QProcess::Running);
         ::kill(pid_t(p.processId()), SIGINT);
         QVERIFY(p.waitForFinished(30000));

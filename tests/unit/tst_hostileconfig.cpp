@@ -126,6 +126,10 @@ private slots:
                                                   << u"yaml-alias-cycle"_s << 4;
         QTest::newRow("a map that holds itself") << okBridge + "x: &x {a: {b: *x}}\n"
                                                  << u"yaml-alias-cycle"_s << 4;
+        // Found by fuzz_config: yaml-cpp reads the first of two equal keys, rosparam the last.
+        QTest::newRow("a key twice") << okBridge + "x: 1\n\"x\": 2\n" << u"yaml-duplicate-key"_s << 5;
+        QTest::newRow("a key twice, nested") << okBridge + "y:\n  - {a: 1, b: {a: 2}, a: 3}\n"
+                                             << u"yaml-duplicate-key"_s << 5;
     }
     // Regression: every one of these was read (and walked, or crashed the reader with a stack
     // overflow for the map that holds itself).
@@ -228,12 +232,19 @@ private slots:
             QVERIFY2(text.contains(u"broker: [1, 2]"_s), qPrintable(text));
             QVERIFY(dropped.isEmpty());
 
+            // A key twice is refused before anything is kept (it used to be written as one).
             const ConfigReadResult twice = read("broker:\n  tls: 5\n  tls:\n    enabled: true\n" + okBridge);
-            QVERIFY(twice.parsed);
-            text = ConfigWriter::write(twice.config, layout, &notes, &dropped);
-            QCOMPARE(read(text.toUtf8()).config.broker.values.text(u"tls.enabled"_s), u"true"_s);
-            QCOMPARE(dropped.size(), 1);
-            QVERIFY2(dropped.first().contains(u"'broker.tls'"_s), qPrintable(dropped.first()));
+            QVERIFY(!twice.parsed);
+            QCOMPARE(twice.problems.first().code, u"yaml-duplicate-key"_s);
+            QCOMPARE(twice.problems.first().pos.line, 2);
+
+            // Found by fuzz_config: an unknown key holding a block list was written "extra: - 1".
+            const ConfigReadResult listExtra = read(okBridge + "      extra:\n        - 1\n        - a: 2\n");
+            QVERIFY(listExtra.parsed);
+            text = ConfigWriter::write(listExtra.config, layout, &notes, &dropped);
+            const ConfigReadResult back = read(text.toUtf8());
+            QVERIFY2(back.parsed, qPrintable(text));
+            QVERIFY(back.config.sameContent(listExtra.config));
         }
         // Entries the model has no place for are named by the reader, with where they are.
         const ConfigReadResult r

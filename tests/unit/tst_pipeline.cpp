@@ -130,6 +130,20 @@ private slots:
         QCOMPARE(*back, *p);
     }
 
+    // Topics from discovery can hold anything: what is written is read back as the same names.
+    void oddTopicsAreWrittenSoThatTheyReadBack()
+    {
+        const Pipeline p({u"/a\"b"_s, u"c\\d"_s, u"e: #f"_s, u"ü/\u00a0/x"_s});
+        QString error;
+        const std::optional<Pipeline> back = Pipeline::fromYaml(p.toYaml(), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->topics(), p.topics());
+        const Pipeline control({u"/a\nb"_s, u"/c"_s});
+        QVERIFY(control.toYaml().contains("\\u000a"));
+        QVERIFY(!Pipeline::fromYaml(control.toYaml(), &error)); // refused, with a reason, not renamed
+        QVERIFY(error.contains(u"control character"_s));
+    }
+
     // The paper's pipeline: the vehicle's benchmark IO and bridge, the cloud's bridge and the
     // detection, and back. "pointcloud" is not "cloud": names are split into words.
     void guessesThePapersHosts()
@@ -171,6 +185,12 @@ private slots:
         QTest::newRow("host of a stranger")
             << QByteArray("topics_in_order: [/a, /b]\nhosts:\n  /c: x\n") << u"line 3: hosts names /c"_s;
         QTest::newRow("nested topic") << QByteArray("topics_in_order:\n  - [/a]\n") << u"line 2"_s;
+        // Found by fuzz_pipeline: a line break in a topic used to be accepted and written raw.
+        QTest::newRow("escaped newline") << QByteArray("topics_in_order: [\"/a\\nb\", /c]\n")
+                                         << u"line 1: the topic \"/a\\u000ab\" holds the control character U+000a at 3"_s;
+        QTest::newRow("NUL") << QByteArray("topics_in_order: [\"/a\\0\", /c]\n") << u"U+0000"_s;
+        QTest::newRow("host with a tab")
+            << QByteArray("topics_in_order: [/a, /b]\nhosts:\n  /a: \"x\\ty\"\n") << u"line 3: the host of /a"_s;
     }
 
     void badPipelinesSayWhereAndWhy()

@@ -55,6 +55,19 @@ private slots:
         lying[12] = char(0xff); // frame_id length far beyond the message
         QVERIFY(!StampCodec::decodeTimeStamped(lying, &error));
         QVERIFY(error.contains(u"frame_id"_s));
+
+        // nsec >= 1e9 is no ROS time: it would not survive encoding (found by fuzz_stamps).
+        QByteArray overflow = wire;
+        overflow.replace(24, 4, QByteArray::fromHex("ffffffff"));
+        error.clear();
+        QVERIFY(!StampCodec::decodeTimeStamped(overflow, &error));
+        QVERIFY2(error.contains(u"4294967295 nanoseconds"_s), qPrintable(error));
+        overflow = wire;
+        overflow.replace(8, 4, QByteArray::fromHex("00ca9a3b")); // exactly 1e9 in the header stamp
+        error.clear();
+        QVERIFY(!StampCodec::decodeTimeStamped(overflow, &error));
+        QVERIFY2(error.contains(u"header stamp"_s), qPrintable(error));
+        QVERIFY(!StampCodec::decodeHeader(overflow));
     }
 
     void jsonStamps_data()
