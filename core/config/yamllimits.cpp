@@ -329,6 +329,25 @@ std::optional<YamlLimits::Violation> YamlLimits::check(const QByteArray& text)
                           tr("Byte 0x%1 is not valid UTF-8; the file must be UTF-8 text.")
                               .arg(uint(uchar(text[bad])), 2, 16, QChar(u'0')),
                           tr("Save the file as UTF-8, or correct the text at this place.")};
+    // YAML allows no control characters but tab and line breaks, not even quoted (found by
+    // fuzz_config: yaml-cpp read a NUL inside indentation as content).
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const uchar c = uchar(text[i]);
+        const bool c1 = c == 0xc2 && i + 1 < text.size() && uchar(text[i + 1]) >= 0x80
+            && uchar(text[i + 1]) <= 0x9f && uchar(text[i + 1]) != 0x85;
+        if (c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))
+            return Violation {positionOf(text, i), u"yaml-lone-carriage-return"_s,
+                              tr("A carriage return without a line feed: yaml-cpp does not read it as a "
+                                 "line break, but as part of the value."),
+                              tr("Save the file with LF or CRLF line endings.")};
+        if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f || c1)
+            return Violation {positionOf(text, i), u"yaml-control-character"_s,
+                              tr("The control character U+%1 is not allowed in YAML; write it as an "
+                                 "escape (\\x%2) in a double-quoted string.")
+                                  .arg(uint(c1 ? uchar(text[i + 1]) : c), 4, 16, QChar(u'0'))
+                                  .arg(uint(c1 ? uchar(text[i + 1]) : c), 2, 16, QChar(u'0')),
+                              tr("Remove the character, or correct the text at this place.")};
+    }
     ByteArrayBuffer buffer(text);
     std::istream in(&buffer);
     try {

@@ -237,6 +237,11 @@ std::optional<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payl
     Decoded d;
     if (sample.isString()) {
         const QString id = sample.toString();
+        if (id.isEmpty()) {
+            if (error)
+                *error = tr("JSON stamp's \"sample\" is empty: it names no sample");
+            return std::nullopt;
+        }
         const std::optional<qint64> asTime = parseTime(id);
         d.sampleNs = asTime && inRange(*asTime) ? *asTime : hashId(id.toUtf8());
         d.frameId = id;

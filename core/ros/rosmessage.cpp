@@ -50,7 +50,8 @@ constexpr int kMaxTypeDepth = 64;
 
 qint64 saturatedAdd(qint64 a, qint64 b)
 {
-    return std::min(a + b, RosTypeRegistry::kHugeSize); // both are at most kHugeSize: no overflow
+    // Both are at most kHugeSize (2^62), but their sum may pass 2^63 (found by fuzz_rosmessage).
+    return a > RosTypeRegistry::kHugeSize - b ? RosTypeRegistry::kHugeSize : a + b;
 }
 
 qint64 saturatedMul(qint64 a, qint64 b)

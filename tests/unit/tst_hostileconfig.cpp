@@ -130,6 +130,12 @@ private slots:
         QTest::newRow("a key twice") << okBridge + "x: 1\n\"x\": 2\n" << u"yaml-duplicate-key"_s << 5;
         QTest::newRow("a key twice, nested") << okBridge + "y:\n  - {a: 1, b: {a: 2}, a: 3}\n"
                                              << u"yaml-duplicate-key"_s << 5;
+        // Found by fuzz_config: a NUL in the indentation was read as content.
+        QTest::newRow("NUL") << okBridge + "x: 1\n  " + QByteArray(1, '\0') + " y: 2\n" << u"yaml-control-character"_s << 5;
+        QTest::newRow("escape character") << okBridge + "x: \"\x1b[31m\"\n" << u"yaml-control-character"_s << 4;
+        QTest::newRow("CR at the end") << okBridge + "x: a\r\ny: b\r" << u"yaml-lone-carriage-return"_s << 5;
+        QTest::newRow("CR line ends") << okBridge + "x: a\ry: b\n" << u"yaml-lone-carriage-return"_s << 4;
+        QTest::newRow("C1 control") << okBridge + "x: a\xc2\x9b\n" << u"yaml-control-character"_s << 4;
     }
     // Regression: every one of these was read (and walked, or crashed the reader with a stack
     // overflow for the map that holds itself).

@@ -120,6 +120,8 @@ private slots:
         QTest::newRow("not json") << QByteArray("{sample") << u"not JSON"_s;
         QTest::newRow("array") << QByteArray("[1, 2]") << u"object"_s;
         QTest::newRow("no time") << QByteArray(R"({"sample": "1"})") << u"\"sample\" and \"time\""_s;
+        // Found by fuzz_stamps: every empty id was one sample.
+        QTest::newRow("empty sample") << QByteArray(R"({"sample": "", "time": 1.5})") << u"empty"_s;
         QTest::newRow("time text") << QByteArray(R"({"sample": "1", "time": "soon"})") << u"\"time\""_s;
         QTest::newRow("sample object") << QByteArray(R"({"sample": {}, "time": 1})") << u"\"sample\""_s;
     }
