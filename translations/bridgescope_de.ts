@@ -2328,10 +2328,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Proben: %1 vollständig · %2 verworfen · %3 unvollständig · %4 doppelte Zeitstempel · %5 von unbekannten Topics</translation>
     </message>
     <message>
-        <source> · %1 malformed (%2)</source>
-        <translation> · %1 fehlerhaft (%2)</translation>
-    </message>
-    <message>
         <source> · paused</source>
         <translation> · angehalten</translation>
     </message>
@@ -2382,6 +2378,21 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Export Chart</source>
         <translation>Diagramm exportieren</translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1 auf %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more topic(s)</source>
+        <translation>
+            <numerusform>%n weiteres Topic</numerusform>
+            <numerusform>%n weitere Topics</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> · %1 malformed: %2 (last: %3)</source>
+        <translation> · %1 fehlerhaft: %2 (zuletzt: %3)</translation>
     </message>
 </context>
 <context>
@@ -3059,6 +3070,14 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>%1: the topic %2 holds the control character U+%3 at %4</source>
+        <translation>%1: das Topic %2 enthält das Steuerzeichen U+%3 an Stelle %4</translation>
+    </message>
+    <message>
+        <source>%1: the host of %2 holds a control character</source>
+        <translation>%1: der Host von %2 enthält ein Steuerzeichen</translation>
     </message>
 </context>
 <context>
@@ -4410,6 +4429,21 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
     </message>
 </context>
 <context>
+    <name>RosStampSource</name>
+    <message>
+        <source>a %1, not a benchmarking_suite/TimeStamped</source>
+        <translation>ein %1, kein benchmarking_suite/TimeStamped</translation>
+    </message>
+    <message>
+        <source>a %1, not a std_msgs/Float64</source>
+        <translation>ein %1, kein std_msgs/Float64</translation>
+    </message>
+    <message>
+        <source>a latency that is no finite number of seconds</source>
+        <translation>eine Latenz, die keine endliche Zahl von Sekunden ist</translation>
+    </message>
+</context>
+<context>
     <name>RosTopicModel</name>
     <message>
         <source>/s</source>
@@ -4802,6 +4836,18 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source>JSON stamp&apos;s &quot;time&quot; %1 is %2</source>
         <translation>&quot;time&quot; %1 des JSON-Zeitstempels ist %2</translation>
     </message>
+    <message>
+        <source>TimeStamped header stamp has %1 nanoseconds, more than a second</source>
+        <translation>Der Header-Stempel der TimeStamped-Nachricht hat %1 Nanosekunden, mehr als eine Sekunde</translation>
+    </message>
+    <message>
+        <source>TimeStamped time has %1 nanoseconds, more than a second</source>
+        <translation>Die Zeit der TimeStamped-Nachricht hat %1 Nanosekunden, mehr als eine Sekunde</translation>
+    </message>
+    <message>
+        <source>JSON stamp&apos;s &quot;sample&quot; is empty: it names no sample</source>
+        <translation>&quot;sample&quot; des JSON-Stempels ist leer: er benennt kein Sample</translation>
+    </message>
 </context>
 <context>
     <name>StampTopicModel</name>
@@ -4816,6 +4862,14 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>%1: not in the pipeline; drag it there or press Enter</source>
         <translation>%1: nicht in der Pipeline; dorthin ziehen oder Eingabe drücken</translation>
+    </message>
+    <message>
+        <source>%1  (%2, %3 malformed)</source>
+        <translation>%1  (%2, %3 fehlerhaft)</translation>
+    </message>
+    <message>
+        <source>%1: %2 messages, none a stamp this tool reads (see the counts below the chart)</source>
+        <translation>%1: %2 Nachrichten, keine davon ein lesbarer Stempel (siehe die Zähler unter dem Diagramm)</translation>
     </message>
 </context>
 <context>
@@ -4926,6 +4980,34 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>Save the file as UTF-8, or correct the text at this place.</source>
         <translation>Speichern Sie die Datei als UTF-8 oder korrigieren Sie den Text an dieser Stelle.</translation>
+    </message>
+    <message>
+        <source>The key &quot;%1&quot; appears twice in this mapping (first on line %2); YAML forbids it, and readers disagree on which value counts.</source>
+        <translation>Der Schlüssel &quot;%1&quot; kommt in dieser Abbildung zweimal vor (zuerst in Zeile %2); YAML verbietet das, und Leser sind uneins, welcher Wert gilt.</translation>
+    </message>
+    <message>
+        <source>~ (null, also written null, NULL or nothing)</source>
+        <translation>~ (null, auch null, NULL oder leer geschrieben)</translation>
+    </message>
+    <message>
+        <source>Remove one of the two, or rename it.</source>
+        <translation>Entfernen Sie einen der beiden oder benennen Sie ihn um.</translation>
+    </message>
+    <message>
+        <source>A carriage return without a line feed: yaml-cpp does not read it as a line break, but as part of the value.</source>
+        <translation>Ein Wagenrücklauf ohne Zeilenvorschub: yaml-cpp liest ihn nicht als Zeilenumbruch, sondern als Teil des Werts.</translation>
+    </message>
+    <message>
+        <source>Save the file with LF or CRLF line endings.</source>
+        <translation>Speichern Sie die Datei mit LF- oder CRLF-Zeilenenden.</translation>
+    </message>
+    <message>
+        <source>The control character U+%1 is not allowed in YAML; write it as an escape (\x%2) in a double-quoted string.</source>
+        <translation>Das Steuerzeichen U+%1 ist in YAML nicht erlaubt; schreiben Sie es als Escape (\x%2) in einer Zeichenkette in doppelten Anführungszeichen.</translation>
+    </message>
+    <message>
+        <source>Remove the character, or correct the text at this place.</source>
+        <translation>Entfernen Sie das Zeichen oder korrigieren Sie den Text an dieser Stelle.</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,7 @@
 #include "latency/stamptopicmodel.h"
 #include "runbar.h"
 
+#include <algorithm>
 #include <QAction>
 #include <QCheckBox>
 #include <QFileDialog>
@@ -310,7 +311,7 @@ void MeasurePage::onUpdated()
     if (m_chart->isVisible())
         m_chart->refresh();
     m_pipeline->refreshCounts();
-    m_seen->update(m_measure->discovery(), m_measure->pipeline());
+    m_seen->update(m_measure->discovery(), m_measure->pipeline(), m_measure->malformedStampsByTopic());
     updateCounts();
 }
 
@@ -347,8 +348,23 @@ void MeasurePage::updateCounts()
                        .arg(e.pending())
                        .arg(c.duplicates)
                        .arg(c.unknownTopic);
-    if (const quint64 bad = m_measure->malformedStamps())
-        text += tr(" · %1 malformed (%2)").arg(bad).arg(m_measure->lastStampError());
+    if (const quint64 bad = m_measure->malformedStamps()) {
+        // The worst topics by name: a lab needs to know which device sends garbage.
+        const QHash<QString, quint64> byTopic = m_measure->malformedStampsByTopic();
+        std::vector<std::pair<quint64, QString>> worst;
+        worst.reserve(std::size_t(byTopic.size()));
+        for (auto it = byTopic.cbegin(); it != byTopic.cend(); ++it)
+            worst.emplace_back(it.value(), it.key());
+        const std::size_t shown = std::min<std::size_t>(worst.size(), 3);
+        std::partial_sort(worst.begin(), worst.begin() + qsizetype(shown), worst.end(),
+                          [](const auto& a, const auto& b) { return a.first > b.first; });
+        QStringList names;
+        for (std::size_t i = 0; i < shown; ++i)
+            names << tr("%1 on %2").arg(worst[i].first).arg(worst[i].second);
+        if (worst.size() > shown)
+            names << tr("%n more topic(s)", nullptr, int(worst.size() - shown));
+        text += tr(" · %1 malformed: %2 (last: %3)").arg(bad).arg(names.join(u", "), m_measure->lastStampError());
+    }
     if (m_measure->isPaused())
         text += tr(" · paused");
     m_counts->setText(text);

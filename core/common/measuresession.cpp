@@ -165,7 +165,24 @@ void MeasureSession::reset()
 
 quint64 MeasureSession::malformedStamps() const
 {
-    return m_mqttDecoder.malformed() + m_ros->malformed();
+    return m_mqttDecoder.malformed() + m_ros->malformed() + m_ros->wrongType();
+}
+
+QHash<QString, quint64> MeasureSession::malformedStampsByTopic() const
+{
+    QHash<QString, quint64> all = m_ros->malformedByTopic();
+    for (auto it = m_mqttDecoder.malformedByTopic().cbegin(); it != m_mqttDecoder.malformedByTopic().cend(); ++it)
+        all[it.key()] += it.value();
+    return all;
+}
+
+QString MeasureSession::lastStampError() const
+{
+    QStringList both;
+    for (const QString& e : {m_ros->lastError(), m_mqttDecoder.lastError()})
+        if (!e.isEmpty())
+            both << e;
+    return both.join(u"; ");
 }
 
 bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* error)

@@ -49,8 +49,12 @@ public:
     /// Forgets every value and count; keeps the pipeline.
     void reset();
 
+    /// Stamps that did not decode or came with another type, from ROS and MQTT.
     quint64 malformedStamps() const;
-    QString lastStampError() const { return m_mqttDecoder.lastError(); }
+    /// The same per topic (ROS names start with '/').
+    QHash<QString, quint64> malformedStampsByTopic() const;
+    /// The last reason of each side, "TOPIC: why".
+    QString lastStampError() const;
 
     /// Called with every complete sample.
     void setSampleListener(LatencyEngine::SampleListener listener)

@@ -60,7 +60,9 @@ public:
     void OnDocumentEnd() override { }
     void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override
     {
-        nextChild();
+        // "~", "null", "NULL" and an empty key are the same null key (found by fuzz_config).
+        if (nextChild())
+            checkKey(mark, std::string("\0null", 5));
         leaf(mark, anchor, 0);
     }
     void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
@@ -158,7 +160,8 @@ private:
             stop(mark, u"yaml-duplicate-key"_s,
                  tr("The key \"%1\" appears twice in this mapping (first on line %2); YAML forbids "
                     "it, and readers disagree on which value counts.")
-                     .arg(QString::fromStdString(key))
+                     .arg(key == std::string("\0null", 5) ? tr("~ (null, also written null, NULL or nothing)")
+                                                         : QString::fromStdString(key))
                      .arg(it->second + 1),
                  tr("Remove one of the two, or rename it."));
     }

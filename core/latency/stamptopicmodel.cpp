@@ -5,13 +5,33 @@
 #include "pipeline.h"
 #include "pipelinediscovery.h"
 
+#include <algorithm>
+#include <QSet>
+
+namespace {
+constexpr std::size_t kMaxOnlyBad = 100;
+}
+
 StampTopicModel::StampTopicModel(QObject* parent)
     : QAbstractListModel(parent)
 { }
 
-void StampTopicModel::update(const PipelineDiscovery& discovery, const Pipeline& pipeline)
+void StampTopicModel::update(const PipelineDiscovery& discovery, const Pipeline& pipeline,
+                             const QHash<QString, quint64>& malformed)
 {
-    const QStringList topics = discovery.topics();
+    QStringList topics = discovery.topics();
+    // Topics whose every stamp was bad come last, so that they are seen at all: the worst
+    // kMaxOnlyBad of them (a broker can hold any number of such topics).
+    const QSet<QString> known(topics.cbegin(), topics.cend());
+    std::vector<std::pair<quint64, QString>> onlyBad;
+    for (auto it = malformed.cbegin(); it != malformed.cend(); ++it)
+        if (!known.contains(it.key()))
+            onlyBad.emplace_back(it.value(), it.key());
+    const std::size_t shown = std::min(onlyBad.size(), kMaxOnlyBad);
+    std::partial_sort(onlyBad.begin(), onlyBad.begin() + qsizetype(shown), onlyBad.end(),
+                      [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+    for (std::size_t i = 0; i < shown; ++i)
+        topics << onlyBad[i].second;
     if (topics.size() > qsizetype(m_rows.size())) {
         beginInsertRows({}, int(m_rows.size()), int(topics.size()) - 1);
         for (qsizetype i = qsizetype(m_rows.size()); i < topics.size(); ++i)
@@ -27,6 +47,7 @@ void StampTopicModel::update(const PipelineDiscovery& discovery, const Pipeline&
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         m_rows[i].topic = topics[qsizetype(i)]; // a ROS spelling may have replaced the MQTT one
         m_rows[i].stamps = discovery.stampCount(m_rows[i].topic);
+        m_rows[i].malformed = malformed.value(m_rows[i].topic);
         m_rows[i].inPipeline = pipeline.indexOf(m_rows[i].topic) >= 0;
     }
     if (!m_rows.empty())
@@ -45,14 +66,21 @@ QVariant StampTopicModel::data(const QModelIndex& index, int role) const
     const Row& r = m_rows[std::size_t(index.row())];
     switch (role) {
     case Qt::DisplayRole:
-        return tr("%1  (%2)").arg(r.topic).arg(r.stamps);
+        return r.malformed ? tr("%1  (%2, %3 malformed)").arg(r.topic).arg(r.stamps).arg(r.malformed)
+                           : tr("%1  (%2)").arg(r.topic).arg(r.stamps);
     case Qt::ToolTipRole:
+        if (r.malformed && !r.stamps)
+            return tr("%1: %2 messages, none a stamp this tool reads (see the counts below the chart)")
+                .arg(r.topic)
+                .arg(r.malformed);
         return r.inPipeline ? tr("%1: in the pipeline").arg(r.topic)
                             : tr("%1: not in the pipeline; drag it there or press Enter").arg(r.topic);
     case TopicRole:
         return r.topic;
     case InPipelineRole:
         return r.inPipeline;
+    case MalformedRole:
+        return r.malformed;
     default:
         return {};
     }

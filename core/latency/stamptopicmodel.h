@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QAbstractListModel>
+#include <QHash>
 #include <QStringList>
 #include <vector>
 
@@ -14,10 +15,12 @@ class StampTopicModel : public QAbstractListModel
 {
     Q_OBJECT
 public:
-    enum Role { TopicRole = Qt::UserRole + 1, InPipelineRole };
+    enum Role { TopicRole = Qt::UserRole + 1, InPipelineRole, MalformedRole };
 
     explicit StampTopicModel(QObject* parent = nullptr);
-    void update(const PipelineDiscovery& discovery, const Pipeline& pipeline);
+    /// `malformed`: stamps per topic that did not decode; a topic with only those is listed too.
+    void update(const PipelineDiscovery& discovery, const Pipeline& pipeline,
+                const QHash<QString, quint64>& malformed = {});
 
     int rowCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
@@ -30,6 +33,7 @@ private:
     {
         QString topic;
         quint64 stamps = 0;
+        quint64 malformed = 0;
         bool inPipeline = false;
     };
     std::vector<Row> m_rows;

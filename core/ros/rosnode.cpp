@@ -4,6 +4,7 @@
 #include "rosreregistration.h"
 
 #include <map>
+#include <vector>
 #include <mutex>
 #include <QObject>
 #include <QThread>
@@ -27,15 +28,19 @@ struct RosNode::Private
     std::unique_ptr<ros::AsyncSpinner> spinner;
     QString masterUri; ///< touched on the worker only
     QTimer* masterWatch = nullptr; ///< on the worker: registers again with a restarted master
+    std::vector<Job> pending; ///< on the worker: jobs waiting for a master to start the node with
+    QTimer* pendingRetry = nullptr; ///< on the worker: tries to start the node once a second
     std::mutex hookMutex;
     std::map<int, std::function<void()>> hooks;
     int nextHook = 1;
 
-    // On the worker thread.
-    void ensureNode()
+    // On the worker thread. Starts the node when the master answers; false while it does not.
+    // Starting a node registers its services, which roscpp retries for 2 s each against a dead
+    // master: asking first (without waiting) keeps the worker free, so teardown never waits.
+    bool ensureNode()
     {
         if (node)
-            return;
+            return true;
         ros::M_string remappings;
         remappings["__master"] = masterUri.toStdString();
         if (!ros::isInitialized())
@@ -46,6 +51,8 @@ struct RosNode::Private
             ros::master::init(remappings); // an earlier node of this process may have used another master
         // A dead master must not hold a subscription forever.
         ros::master::setRetryTimeout(ros::WallDuration(2.0));
+        if (!ros::master::check())
+            return false;
         node = std::make_unique<ros::NodeHandle>();
         node->setCallbackQueue(&queue);
         spinner = std::make_unique<ros::AsyncSpinner>(1, &queue);
@@ -60,6 +67,32 @@ struct RosNode::Private
             });
             masterWatch->start();
         }
+        return true;
+    }
+
+    // On the worker thread: runs `job` now, or once the node could start.
+    void run(Job job)
+    {
+        if (ensureNode()) {
+            job(*node);
+            return;
+        }
+        // Jobs come from the user's actions (a subscription each), not from the network.
+        pending.push_back(std::move(job));
+        if (!pendingRetry) {
+            pendingRetry = new QTimer(worker);
+            pendingRetry->setInterval(1000);
+            QObject::connect(pendingRetry, &QTimer::timeout, worker, [this] {
+                if (!ensureNode())
+                    return;
+                pendingRetry->stop();
+                std::vector<Job> jobs;
+                jobs.swap(pending);
+                for (Job& j : jobs)
+                    j(*node);
+            });
+        }
+        pendingRetry->start();
     }
 
     void runHooks()
@@ -102,6 +135,7 @@ RosNode::~RosNode()
 {
     Private* p = d.get();
     postAndWait([p] {
+        p->pending.clear();
         if (p->spinner)
             p->spinner->stop();
         p->spinner.reset();
@@ -130,10 +164,7 @@ void RosNode::setMasterUri(const QString& uri)
 void RosNode::post(Job job)
 {
     Private* p = d.get();
-    QMetaObject::invokeMethod(p->worker, [p, job = std::move(job)] {
-        p->ensureNode();
-        job(*p->node);
-    });
+    QMetaObject::invokeMethod(p->worker, [p, job = std::move(job)]() mutable { p->run(std::move(job)); });
 }
 
 void RosNode::postAndWait(const std::function<void()>& job)

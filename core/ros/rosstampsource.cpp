@@ -9,8 +9,10 @@
 
 #include <atomic>
 #include <mutex>
+#include <QCoreApplication>
 #include <QHash>
 #include <QPointer>
+#include <QTimer>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
 
@@ -26,7 +28,19 @@ struct RosStampSource::Private
     mutable std::mutex mutex;
     QSet<QString> wantedStamps; ///< guarded by mutex
     QSet<QString> wantedLatencies;
+    QHash<QString, quint64> malformedByTopic; ///< guarded by mutex
+    QString lastError; ///< guarded by mutex
     QHash<QString, ros::Subscriber> subscribers; ///< the node's worker thread only
+    bool retryPending = false; ///< the node's worker thread only: a sync waits for the master
+    std::atomic<bool> closing {false}; ///< the owner is going: subscribe nothing more
+
+    // roscpp spinner thread; rare (bad messages only), so a lock is fine.
+    void fail(const QString& topic, const QString& why)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        ++malformedByTopic[topic];
+        lastError = topic + QStringLiteral(": ") + why;
+    }
 
     // roscpp spinner thread.
     void onStamp(const QString& topic, const topic_tools::ShapeShifter& msg)
@@ -35,11 +49,15 @@ struct RosStampSource::Private
         received.fetch_add(1, std::memory_order_relaxed);
         if (msg.getMD5Sum() != StampCodec::md5()) {
             wrongType.fetch_add(1, std::memory_order_relaxed);
+            fail(topic, QCoreApplication::translate("RosStampSource", "a %1, not a benchmarking_suite/TimeStamped")
+                            .arg(QString::fromStdString(msg.getDataType())));
             return;
         }
-        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(RosBytes::of(msg));
+        QString why;
+        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(RosBytes::of(msg), &why);
         if (!d) {
             malformed.fetch_add(1, std::memory_order_relaxed);
+            fail(topic, why);
             return;
         }
         stamps.push(StampEvent {topic, d->sampleNs, d->timeNs, now});
@@ -51,11 +69,14 @@ struct RosStampSource::Private
         received.fetch_add(1, std::memory_order_relaxed);
         if (msg.getMD5Sum() != float64Md5()) {
             wrongType.fetch_add(1, std::memory_order_relaxed);
+            fail(topic, QCoreApplication::translate("RosStampSource", "a %1, not a std_msgs/Float64")
+                            .arg(QString::fromStdString(msg.getDataType())));
             return;
         }
         const std::optional<qint64> ns = StampCodec::decodeFloat64Seconds(RosBytes::of(msg));
         if (!ns) {
             malformed.fetch_add(1, std::memory_order_relaxed);
+            fail(topic, QCoreApplication::translate("RosStampSource", "a latency that is no finite number of seconds"));
             return;
         }
         latencies.push(LatencyValue {topic, *ns, now});
@@ -78,8 +99,31 @@ struct RosStampSource::Private
             else
                 ++it;
         }
+        if (closing.load())
+            return;
+        // roscpp blocks in subscribe() until the master answers (up to the 2 s retry timeout, per
+        // topic), and registers nothing when it does not: ask once without waiting, and come
+        // back in a second while it is away. Stopping a run then never waits for a dead master.
+        bool missing = false;
+        for (const QString& t : std::as_const(stampTopics))
+            missing = missing || !subscribers.contains(t);
+        for (const QString& t : std::as_const(latencyTopics))
+            missing = missing || !subscribers.contains(t);
+        if (missing && !ros::master::check()) {
+            if (!retryPending) {
+                retryPending = true;
+                std::weak_ptr<Private> weak = self;
+                QTimer::singleShot(1000, [weak, owner] {
+                    if (auto p = weak.lock()) {
+                        p->retryPending = false;
+                        p->post(p, owner, false);
+                    }
+                });
+            }
+            return;
+        }
         const auto subscribe = [&](const QString& topic, bool stamp) {
-            if (subscribers.contains(topic))
+            if (subscribers.contains(topic) || closing.load())
                 return;
             boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> cb
                 = [self, topic, stamp](const topic_tools::ShapeShifter::ConstPtr& msg) {
@@ -136,6 +180,7 @@ RosStampSource::RosStampSource(QObject* parent)
 RosStampSource::~RosStampSource()
 {
     d->rosNode->removeHook(d->hook);
+    d->closing = true;
     Private* p = d.get();
     d->rosNode->postAndWait([p] { p->subscribers.clear(); });
 }
@@ -197,6 +242,18 @@ quint64 RosStampSource::malformed() const
 quint64 RosStampSource::wrongType() const
 {
     return d->wrongType.load(std::memory_order_relaxed);
+}
+
+QHash<QString, quint64> RosStampSource::malformedByTopic() const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->malformedByTopic;
+}
+
+QString RosStampSource::lastError() const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->lastError;
 }
 
 quint64 RosStampSource::dropped() const

@@ -4,6 +4,7 @@
 #include "latency/stampevent.h"
 
 #include <memory>
+#include <QHash>
 #include <QObject>
 #include <QSet>
 #include <QString>
@@ -37,6 +38,9 @@ public:
     quint64 received() const;
     quint64 malformed() const; ///< messages of the right type that did not decode
     quint64 wrongType() const; ///< messages of another type on a subscribed topic
+    /// Malformed and wrong-type messages per topic, and the last one's reason ("TOPIC: why").
+    QHash<QString, quint64> malformedByTopic() const;
+    QString lastError() const;
     quint64 dropped() const; ///< lost to a full buffer
 
 signals:

@@ -5,6 +5,7 @@
 #include "common/measuresession.h"
 #include "latency/latencystatsmodel.h"
 #include "latency/stampcodec.h"
+#include "latency/stamptopicmodel.h"
 #include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttstampdecoder.h"
@@ -181,6 +182,42 @@ private slots:
         QCOMPARE(measure.pipeline().crossings(), (QList<int> {0, 1}));
         QCOMPARE(measure.discovery().stampCount(u"/auto/cloud/y"_s), quint64(kSamples));
         QVERIFY(measure.engine().clockOffsetSeries() >= 0);
+    }
+
+    // Issue 11: a bad stamp is counted and shown for its topic, not only in a total, also when
+    // a topic sends nothing else.
+    void malformedStampsAreCountedPerTopic()
+    {
+        LiveSession live;
+        live.setRosMasterUri(m_servers.rosMasterUri());
+        MeasureSession measure(&live);
+        measure.setTimeoutNs(60'000'000'000LL);
+        Publisher ros(m_servers, {u"--stamp"_s, u"/bad/ok:0"_s, u"--stamp"_s, u"/bad/ok2:1000"_s,
+                                  u"--malformed"_s, u"/bad/short"_s});
+        QTRY_COMPARE_WITH_TIMEOUT(measure.malformedStampsByTopic().value(u"/bad/short"_s), quint64(kSamples), 40000);
+        QCOMPARE(measure.malformedStampsByTopic().size(), 1);
+        QCOMPARE(measure.malformedStamps(), quint64(kSamples));
+        QVERIFY2(measure.lastStampError().startsWith(u"/bad/short: TimeStamped message too short (10 bytes)"_s),
+                 qPrintable(measure.lastStampError()));
+        QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), qint64(kSamples), 20000);
+
+        StampTopicModel model;
+        QAbstractItemModelTester tester(&model);
+        model.update(measure.discovery(), measure.pipeline(), measure.malformedStampsByTopic());
+        QCOMPARE(model.rowCount(), 3);
+        const QModelIndex bad = model.index(2);
+        QCOMPARE(bad.data(StampTopicModel::TopicRole).toString(), u"/bad/short"_s);
+        QCOMPARE(bad.data(StampTopicModel::MalformedRole).toULongLong(), quint64(kSamples));
+        QCOMPARE(bad.data().toString(), u"/bad/short  (0, %1 malformed)"_s.arg(kSamples));
+        QCOMPARE(model.index(0).data(StampTopicModel::MalformedRole).toULongLong(), 0u);
+
+        // Many topics with nothing but bad stamps: the worst hundred are listed.
+        QHash<QString, quint64> flood;
+        for (int i = 0; i < 5000; ++i)
+            flood.insert(u"junk/%1"_s.arg(i), quint64(i));
+        model.update(measure.discovery(), measure.pipeline(), flood);
+        QCOMPARE(model.rowCount(), 2 + 100);
+        QCOMPARE(model.index(2).data(StampTopicModel::TopicRole).toString(), u"junk/4999"_s);
     }
 };
 

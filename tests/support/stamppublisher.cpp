@@ -5,6 +5,7 @@
 //
 //   stamp_publisher --samples N --rate HZ --stamp TOPIC:OFFSET_US [--stamp ...]
 //                   [--latency TOPIC:SECONDS] [--first-sample SEC] [--jitter-us J --seed N]
+//                   [--malformed TOPIC]   (TimeStamped's type, 10 bytes of it: no message)
 //
 // Sample s has header.stamp = first + s / rate; topic i stamps it at
 // stamp + OFFSET_US_i + i * (s % 7) * 100 µs, or, with --jitter-us, at stamp + OFFSET_US_i plus
@@ -27,6 +28,7 @@ struct Stream
     std::string topic;
     qint64 offsetNs = 0;
     ros::Publisher pub;
+    bool malformed = false; ///< the right type, cut to 10 bytes
 };
 
 } // namespace
@@ -59,6 +61,8 @@ int main(int argc, char** argv)
         else if (opt == QStringLiteral("--stamp"))
             streams.push_back(
                 {val.section(u':', 0, 0).toStdString(), val.section(u':', 1).toLongLong() * 1000, {}});
+        else if (opt == QStringLiteral("--malformed"))
+            streams.push_back({val.toStdString(), 0, {}, true});
         else if (opt == QStringLiteral("--latency"))
             latencies.emplace_back(val.section(u':', 0, 0).toStdString(), val.section(u':', 1).toDouble());
     }
@@ -111,7 +115,9 @@ int main(int argc, char** argv)
             else if (jitterUs <= 0)
                 extraNs = qint64(i) * (s % 7) * 100'000;
             d.timeNs = d.sampleNs + streams[i].offsetNs + extraNs;
-            streams[i].pub.publish(RosBytes::shaped(md5, type, definition, StampCodec::encodeTimeStamped(d)));
+            const QByteArray bytes = StampCodec::encodeTimeStamped(d);
+            streams[i].pub.publish(
+                RosBytes::shaped(md5, type, definition, streams[i].malformed ? bytes.left(10) : bytes));
         }
         for (std::size_t i = 0; i < latencyPubs.size(); ++i) {
             QByteArray bytes(8, Qt::Uninitialized);
