@@ -38,6 +38,10 @@ bool needsStructuralQuotes(const QString& t)
         return true;
     if (t.contains(u": "_s) || t.contains(u" #"_s) || t.endsWith(u':'))
         return true;
+    // A key at the start of a line reading "--- ..." or "... ..." would start or end a document
+    // (found by fuzz_config).
+    if (t.startsWith(u"---"_s) || t.startsWith(u"..."_s))
+        return true;
     return false;
 }
 

@@ -223,6 +223,21 @@ private slots:
         }
     }
 
+    // Found by fuzz_config: an unknown key "--- x" was written plain at the start of a line,
+    // where it starts a new document.
+    void keysThatLookLikeDocumentMarkersAreQuoted()
+    {
+        const ConfigReadResult r = readText(u"\"--- - a\": 1\n\"... b\": 2\nbridge: {ros2mqtt: [{ros_topic: /a, mqtt_topic: a}]}\n"_s);
+        QVERIFY(r.parsed);
+        QCOMPARE(r.config.rootExtras.size(), 2);
+        for (ConfigLayout layout : {ConfigLayout::Ros1, ConfigLayout::Ros2}) {
+            const QString text = ConfigWriter::write(r.config, layout);
+            const ConfigReadResult back = readText(text);
+            QVERIFY2(back.parsed && back.problems.isEmpty(), qPrintable(text));
+            QVERIFY2(back.config.sameContent(r.config), qPrintable(text));
+        }
+    }
+
     void ros2LayoutNormalisesTypedValues()
     {
         const ConfigReadResult r = readText(u"client: {keep_alive_interval: 60, clean_session: yes}\n"
