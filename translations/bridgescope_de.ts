@@ -4744,6 +4744,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source> (and %1 more values out of range)</source>
         <translation> (und %1 weitere Werte außerhalb des Bereichs)</translation>
     </message>
+    <message>
+        <source>%1: %2 rows begin with the same stamp as an earlier row; each counts as a sample of its own, but cannot be joined with another file</source>
+        <translation>%1: %2 Zeilen beginnen mit demselben Stempel wie eine frühere Zeile; jede zählt als eigenes Sample, lässt sich aber nicht mit einer anderen Datei verbinden</translation>
+    </message>
 </context>
 <context>
     <name>RunRecorder</name>

@@ -11,6 +11,7 @@
 #include <fcntl.h>
 #include <QDir>
 #include <QFile>
+#include <QSet>
 #include <QFileInfo>
 #include <QHash>
 #include <QSqlDatabase>
@@ -502,8 +503,12 @@ bool RunData::replay(LatencyEngine& engine, const std::function<bool()>& keepGoi
     return true;
 }
 
-RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples)
+RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples,
+                             qint64* sharedFirstStamps)
 {
+    QSet<qint64> used;
+    used.reserve(qsizetype(samples.size()));
+    qint64 shared = 0;
     RunData run;
     run.info.pipeline = pipeline;
     run.info.window = 0;
@@ -512,7 +517,15 @@ RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::ve
     for (const std::vector<qint64>& s : samples) {
         // The file does not say which sample a row is: its first stamp stands for it (unique in
         // practice, also across files that are joined).
-        const qint64 key = s.front();
+        qint64 key = s.front();
+        if (used.contains(key)) {
+            // Another row began at the same time (a coarse clock, a copied row): it is a sample
+            // of its own, not duplicate stamps of the first. The next free value keeps it apart.
+            ++shared;
+            while (used.contains(key))
+                ++key;
+        }
+        used.insert(key);
         const qint64 last = *std::max_element(s.begin(), s.end());
         for (std::size_t t = 0; t < s.size(); ++t)
             run.stamps.push_back({int(t), key, s[t], last, last});
@@ -521,5 +534,7 @@ RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::ve
         run.info.startedNs = samples.front().front();
         run.info.stoppedNs = samples.back().back();
     }
+    if (sharedFirstStamps)
+        *sharedFirstStamps = shared;
     return run;
 }

@@ -65,7 +65,10 @@ struct RunData
     /// `keepGoing` is polled now and then; false from it stops (and replay() returns false).
     bool replay(LatencyEngine& engine, const std::function<bool()>& keepGoing = {}) const;
     /// A file with complete samples only (suite CSV): one stamp per cell, joined at once.
-    static RunData fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples);
+    /// `sharedFirstStamps`: rows whose first stamp an earlier row has too; each still counts as
+    /// a sample (keyed by the next free value), but cannot be joined with another file's row.
+    static RunData fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples,
+                               qint64* sharedFirstStamps = nullptr);
 };
 
 /// Progress of long work: called with 0..100; return false to cancel.

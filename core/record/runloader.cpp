@@ -114,7 +114,13 @@ std::optional<RunData> RunLoader::load(const QString& path, const Options& optio
                          .arg(csv->topics.size());
         return std::nullopt;
     }
-    RunData run = RunData::fromSamples(Pipeline(csv->topics, 0), csv->samples);
+    qint64 shared = 0;
+    RunData run = RunData::fromSamples(Pipeline(csv->topics, 0), csv->samples, &shared);
+    if (shared && warnings)
+        *warnings << tr("%1: %2 rows begin with the same stamp as an earlier row; each counts as a sample of "
+                        "its own, but cannot be joined with another file")
+                         .arg(path)
+                         .arg(shared);
     run.droppedBeforeImport = csv->incomplete;
     run.info.name = QFileInfo(path).completeBaseName();
     run.info.source = QFileInfo(path).absoluteFilePath();

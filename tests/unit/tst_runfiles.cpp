@@ -266,6 +266,33 @@ private slots:
         QCOMPARE(report->runs().front()->samples, synthetic.samples);
         QCOMPARE(sha(csv.fileName()), before);
     }
+    // Rows of a suite CSV that begin at the same time are samples of their own: they used to be
+    // joined as one sample, the second row's stamps counted as duplicates.
+    void csvRowsWithTheSameFirstStampAreSeparateSamples()
+    {
+        QTemporaryDir dir;
+        SyntheticRun synthetic = SyntheticRun::paper(10, 0, 6);
+        synthetic.samples[4] = synthetic.samples[3];
+        for (qint64& t : synthetic.samples[4])
+            t += 1000; // the same first stamp... but one microsecond later for the rest
+        synthetic.samples[4].front() = synthetic.samples[3].front();
+        QFile csv(dir.filePath(u"coarse.csv"_s));
+        QVERIFY(csv.open(QIODevice::WriteOnly));
+        csv.write(SuiteCsv::write(synthetic.topics, synthetic.samples));
+        csv.close();
+        QString error;
+        QStringList warnings;
+        std::optional<RunData> run = RunLoader::load(csv.fileName(), {}, &error, &warnings);
+        QVERIFY2(run, qPrintable(error));
+        QCOMPARE(warnings.size(), 1);
+        QVERIFY2(warnings.first().contains(u"1 rows begin with the same stamp"_s), qPrintable(warnings.first()));
+        QVERIFY(RunFile::write(dir.filePath(u"coarse.bsrun"_s), *run, &error));
+        const std::optional<Report> report = Report::build({dir.filePath(u"coarse.bsrun"_s)}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QCOMPARE(report->runs().front()->engine->samples(), 10);
+        QCOMPARE(report->runs().front()->engine->counters().duplicates, 0u);
+    }
+
     // Regression (issue 11, crash 3): rosbag's library crashed (SIGSEGV) on 12 of 300 randomly
     // damaged bags, and grew to 4.2 GB on one, inside the process that asked. Bags are now read by
     // a child process: every damaged bag gives a run or an error, and this process lives on.
