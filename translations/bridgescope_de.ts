@@ -5013,6 +5013,14 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source>Remove the character, or correct the text at this place.</source>
         <translation>Entfernen Sie das Zeichen oder korrigieren Sie den Text an dieser Stelle.</translation>
     </message>
+    <message>
+        <source>A list or a map is used as a key here; keys must be plain text.</source>
+        <translation>Hier ist eine Liste oder eine Abbildung als Schlüssel verwendet; Schlüssel müssen einfacher Text sein.</translation>
+    </message>
+    <message>
+        <source>Write the key as text, or remove the entry.</source>
+        <translation>Schreiben Sie den Schlüssel als Text, oder entfernen Sie den Eintrag.</translation>
+    </message>
 </context>
 <context>
     <name>YamlPreview</name>

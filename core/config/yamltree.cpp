@@ -233,7 +233,13 @@ void YamlTree::write(QString& out, int indent) const
     switch (m_type) {
     case Type::Map:
         for (const auto& [k, v] : m_children) {
-            out += spaces(indent) + YamlText::key(k) + u':';
+            const QString key = YamlText::key(k);
+            // YAML limits implicit keys to 1024 characters; a longer one needs "? " (found by
+            // fuzz_config: a key of 1.4 kB was written so that it did not read back).
+            if (key.size() > 1000)
+                out += spaces(indent) + u"? "_s + key + u'\n' + spaces(indent) + u':';
+            else
+                out += spaces(indent) + key + u':';
             v->writeValueAfterKey(out, indent);
         }
         break;

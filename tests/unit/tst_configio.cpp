@@ -238,6 +238,21 @@ private slots:
         }
     }
 
+    // Found by fuzz_config: YAML's implicit keys end at 1024 characters; a longer key is written
+    // explicitly ("? key").
+    void longKeysAreWrittenExplicitly()
+    {
+        const QString key = QString(1500, u'k');
+        const ConfigReadResult r = readText(u"? "_s + key + u"\n: {a: 1, b: [2]}\nbridge: {ros2mqtt: [{ros_topic: /a, mqtt_topic: a}]}\n"_s);
+        QVERIFY(r.parsed);
+        for (ConfigLayout layout : {ConfigLayout::Ros1, ConfigLayout::Ros2}) {
+            const QString text = ConfigWriter::write(r.config, layout);
+            const ConfigReadResult back = readText(text);
+            QVERIFY2(back.parsed && back.problems.isEmpty(), qPrintable(text.left(300)));
+            QVERIFY(back.config.sameContent(r.config));
+        }
+    }
+
     void ros2LayoutNormalisesTypedValues()
     {
         const ConfigReadResult r = readText(u"client: {keep_alive_interval: 60, clean_session: yes}\n"

@@ -130,6 +130,10 @@ private slots:
         QTest::newRow("a key twice") << okBridge + "x: 1\n\"x\": 2\n" << u"yaml-duplicate-key"_s << 5;
         QTest::newRow("a key twice, nested") << okBridge + "y:\n  - {a: 1, b: {a: 2}, a: 3}\n"
                                              << u"yaml-duplicate-key"_s << 5;
+        QTest::newRow("a map as a key") << okBridge + "x:\n  ? {a: 1}\n  : 2\n" << u"yaml-complex-key"_s << 5;
+        QTest::newRow("a list as a key") << okBridge + "[a, b]: 2\n" << u"yaml-complex-key"_s << 4;
+        QTest::newRow("an alias of a map as a key") << okBridge + "x: &m {a: 1}\ny: {*m : 2}\n"
+                                                    << u"yaml-complex-key"_s << 5;
         QTest::newRow("null key twice") << okBridge + "NULL: 1\n: 2\n" << u"yaml-duplicate-key"_s << 5;
         // Found by fuzz_config: a NUL in the indentation was read as content.
         QTest::newRow("NUL") << okBridge + "x: 1\n  " + QByteArray(1, '\0') + " y: 2\n" << u"yaml-control-character"_s << 5;
