@@ -110,7 +110,8 @@ MqttProfile MqttProfileDialog::profile() const
 {
     // user:password@ typed into the URL fill the fields (when empty) and leave the URL.
     MqttProfile p = MqttProfile::fromUrl(m_url->text().trimmed());
-    p.name = m_name->text().trimmed().isEmpty() ? p.url : m_name->text().trimmed();
+    // A name copied from a URL with credentials would show (and be logged) with them.
+    p.name = m_name->text().trimmed().isEmpty() ? p.url : MqttProfile::withoutCredentials(m_name->text().trimmed());
     p.mqttVersion = m_version->currentData().toInt();
     p.clientId = m_clientId->text().trimmed();
     p.keepAliveSeconds = m_keepAlive->value();

@@ -7,12 +7,15 @@
 #include "fixtures.h"
 #include "mainwindow.h"
 #include "mqtt/mqtttopicfilter.h"
+#include "mqttprofiledialog.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rostopicmodel.h"
 #include "testservers.h"
 #include "viewhelpers.h"
 
 #include <QAbstractItemModelTester>
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -209,6 +212,31 @@ private slots:
         // Hex, because the bytes are no text; the stored payload is whole.
         QVERIFY(page->detail()->payloadView()->toPlainText().startsWith(u"00000000  00 83 06 89"_s));
         QCOMPARE(w.session()->mqttTopics()->history(u"lidar/raw"_s)->back().payload.size(), 2 * 1024 * 1024);
+    }
+
+    // Issue 11: credentials typed into the URL (and a name copied from it) leave the URL and
+    // the name for the user and password fields; the URL shown and stored has none.
+    void credentialsTypedIntoTheUrlLeaveIt()
+    {
+        MqttProfileDialog d(MqttProfile::fromUrl(u"tcp://127.0.0.1:1883"_s));
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        int changed = 0;
+        for (QLineEdit* e : d.findChildren<QLineEdit*>()) {
+            if (e->text() == u"tcp://127.0.0.1:1883"_s) { // the URL, and the name that defaults to it
+                e->selectAll();
+                QTest::keyClicks(e, u"tcp://alice:s3cr3t@lab-broker:1883"_s);
+                ++changed;
+            }
+        }
+        QCOMPARE(changed, 2);
+        d.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+        QCOMPARE(d.result(), int(QDialog::Accepted));
+        const MqttProfile p = d.profile();
+        QCOMPARE(p.url, u"tcp://lab-broker:1883"_s);
+        QCOMPARE(p.name, u"tcp://lab-broker:1883"_s);
+        QCOMPARE(p.username, u"alice"_s);
+        QCOMPARE(p.password, u"s3cr3t"_s);
     }
 };
 
