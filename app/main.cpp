@@ -9,6 +9,7 @@
 #include "cli/reportcommand.h"
 #include "guimain.h"
 
+#include <ctime>
 #include <QCoreApplication>
 #include <QGuiApplication>
 
@@ -35,6 +36,9 @@ bool wantsPdf(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+    // Time zone read once, before any thread: log lines from roscpp and Paho threads format local
+    // times, and glibc's first tzset() on two threads at once races (seen by TSan).
+    ::tzset();
     setIdentity();
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;

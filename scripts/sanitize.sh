@@ -67,8 +67,9 @@ if [ "$what" = asan ] || [ "$what" = all ]; then
     unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
 fi
 if [ "$what" = tsan ] || [ "$what" = all ]; then
-    # exitcode: a race fails the test even when the test's own checks pass.
-    export TSAN_OPTIONS="suppressions=$supp/tsan.supp:second_deadlock_stack=1:halt_on_error=0:exitcode=66"
+    # exitcode: a race fails the test even when the test's own checks pass. die_after_fork=0:
+    # QProcess forks the threaded test process to start mosquitto and rosmaster; the child only execs.
+    export TSAN_OPTIONS="suppressions=$supp/tsan.supp:second_deadlock_stack=1:halt_on_error=0:exitcode=66:die_after_fork=0"
     regex="^($(IFS='|'; echo "${TSAN_TESTS[*]}"))\$"
     run "TSan (threaded parts)" "$root/build-tsan" thread -R "$regex" -- "${TSAN_TESTS[@]}"
     unset TSAN_OPTIONS

@@ -3079,6 +3079,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>%1: the host of %2 holds a control character</source>
         <translation>%1: der Host von %2 enthält ein Steuerzeichen</translation>
     </message>
+    <message>
+        <source>%1: a topic starts with a byte-order mark (U+FEFF)</source>
+        <translation>%1: ein Topic beginnt mit einer Bytereihenfolge-Markierung (U+FEFF)</translation>
+    </message>
 </context>
 <context>
     <name>PipelineModel</name>

@@ -245,8 +245,7 @@ private:
                  tr("Flatten the structure."));
         if (anchor != YAML::NullAnchor)
             anchorSlot(anchor); // incomplete until its end: an alias inside it is a cycle
-        Open o {anchor, nodesBefore, bytesBefore};
-        o.isMap = isMap;
+        Open o {anchor, nodesBefore, bytesBefore, 1, isMap, true, {}};
         m_open.push_back(std::move(o));
     }
 

@@ -20,6 +20,14 @@ bool resolvesToNonString(const QString& t)
     return special.match(t).hasMatch() || number.match(t).hasMatch();
 }
 
+// Characters a plain or double-quoted scalar cannot hold as they are: C0 and C1 controls, DEL, the
+// byte-order mark (readers drop it) and U+2028/9 (line breaks to YAML 1.1 readers).
+bool mustEscape(QChar c)
+{
+    const char16_t u = c.unicode();
+    return u < 0x20 || u == 0x7f || (u >= 0x80 && u < 0xa0) || u == 0xfeff || u == 0x2028 || u == 0x2029;
+}
+
 // Text that cannot be written plain at all, whatever its type.
 bool needsStructuralQuotes(const QString& t)
 {
@@ -28,7 +36,7 @@ bool needsStructuralQuotes(const QString& t)
     if (t.front().isSpace() || t.back().isSpace())
         return true;
     for (QChar c : t) {
-        if (c.unicode() < 0x20 || c.unicode() == 0x7f)
+        if (mustEscape(c))
             return true;
     }
     static const QString indicators = u"[]{}#&*!|>'\"%@`,"_s;
@@ -80,8 +88,10 @@ QString quoted(const QString& text)
             out += u"\\0"_s;
             break;
         default:
-            if (c.unicode() < 0x20 || c.unicode() == 0x7f)
+            if (c.unicode() < 0x100 && mustEscape(c))
                 out += u"\\x"_s + QString::number(c.unicode(), 16).rightJustified(2, u'0');
+            else if (mustEscape(c))
+                out += u"\\u"_s + QString::number(c.unicode(), 16).rightJustified(4, u'0');
             else
                 out += c;
         }
