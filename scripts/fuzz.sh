@@ -6,6 +6,7 @@
 #   scripts/fuzz.sh [OPTIONS] [SECONDS_PER_TARGET] [TARGET...]      (default: 60 s, every target)
 #     -j N            fuzz N targets at once (default 1)
 #     --runs N        stop each target after N executions (libFuzzer; the time limit still holds)
+#     --seed N        libFuzzer's (and the driver's) random seed: with --runs, a run is repeatable
 #     --keep-going    libFuzzer's fork mode: go on after a crash, hang or out-of-memory
 #     --timeout S     one input longer than S seconds is a hang (default 10)
 #     --rss-limit-mb M  a target growing past M MB is a finding (default 2048)
@@ -29,6 +30,7 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHA
 seconds=60
 parallel=1
 runs=""
+seed=""
 keep_going=0
 timeout=10
 rss=2048
@@ -41,13 +43,14 @@ while [ $# -gt 0 ]; do
     case "$1" in
         -j) parallel="$2"; shift 2 ;;
         --runs) runs="$2"; shift 2 ;;
+        --seed) seed="$2"; shift 2 ;;
         --keep-going) keep_going=1; shift ;;
         --timeout) timeout="$2"; shift 2 ;;
         --rss-limit-mb) rss="$2"; shift 2 ;;
         --minimize) shift; minimize=("$@"); break ;;
         --list) all_targets; exit 0 ;;
         --report) report_only=1; shift ;;
-        -h|--help) sed -n '3,23p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '3,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         [0-9]*) seconds="$1"; shift ;;
         *) targets+=("$1"); shift ;;
     esac
@@ -112,11 +115,12 @@ run_target() {
         local args=(-max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb="$rss" -print_final_stats=1
             -artifact_prefix="$art/" -dict="$dict")
         [ -n "$runs" ] && args+=(-runs="$runs")
+        [ -n "$seed" ] && args+=(-seed="$seed")
         [ "$keep_going" = 1 ] && args+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
         (cd "$art" && "$exe" "${args[@]}" "$corpus" "$seeds") >"$log" 2>&1 || rc=$?
     else
         (cd "$art" && "$exe" --seconds "$seconds" --timeout "$timeout" --rss-limit-mb "$rss" --dict "$dict" \
-            "$seeds" "$corpus") >"$log" 2>&1 || rc=$?
+            ${seed:+--seed "$seed"} "$seeds" "$corpus") >"$log" 2>&1 || rc=$?
         [ -f "$art/fuzz_$t-crash.bin" ] && mv "$art/fuzz_$t-crash.bin" "$art/crash-$(date +%s)"
     fi
     echo "$rc $(( $(date +%s) - begin ))" >"$log.rc"
