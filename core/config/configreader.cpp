@@ -10,9 +10,16 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
+// UTF-8 as it is: QString::fromUtf8 drops byte-order marks at the start, and a value that begins
+// with one ("\ufeffa", written escaped) would change on every read.
 QString qs(const std::string& s)
 {
-    return QString::fromStdString(s);
+    std::size_t boms = 0;
+    while (s.compare(boms * 3, 3, "\xef\xbb\xbf") == 0)
+        ++boms;
+    if (boms == 0)
+        return QString::fromStdString(s);
+    return QString(qsizetype(boms), QChar(0xfeff)) + QString::fromUtf8(s.data() + boms * 3, qsizetype(s.size() - boms * 3));
 }
 
 TextPos posOf(const YAML::Node& n)
