@@ -76,16 +76,8 @@ private slots:
             {u"bridge"_s, config, u"--broker"_s, m_servers.brokerUrl(), u"--name"_s, u"soak_bridge"_s});
         QVERIFY(bridge.waitForStarted());
 
-        // Discovery and the recording, in this process.
-        LiveSession live;
-        live.setRosMasterUri(m_servers.rosMasterUri());
-        live.connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        MeasureSession measure(&live);
-        measure.setPipeline(Pipeline({u"soak/ts/in"_s, u"soak/ts/out"_s}, 0));
-        const QString runPath = m_servers.tempPath() + u"/soak.bsrun"_s;
-        QString error;
-        QVERIFY2(measure.startRecording(runPath, RunInfo(), &error), qPrintable(error));
-        // When the recorder's connection was up: [connected, lost) in wall-clock ns.
+        // When the recorder's connection was up (declared before the session, whose destructor
+        // still reports the connection closing: found by ASan): [connected, lost) in wall-clock ns.
         std::vector<std::pair<qint64, qint64>> connected;
         const auto onState = [&connected](MqttConnection::State s) {
             const qint64 now = wallClockNs();
@@ -95,6 +87,15 @@ private slots:
                      && connected.back().second == 0)
                 connected.back().second = now;
         };
+        // Discovery and the recording, in this process.
+        LiveSession live;
+        live.setRosMasterUri(m_servers.rosMasterUri());
+        live.connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        MeasureSession measure(&live);
+        measure.setPipeline(Pipeline({u"soak/ts/in"_s, u"soak/ts/out"_s}, 0));
+        const QString runPath = m_servers.tempPath() + u"/soak.bsrun"_s;
+        QString error;
+        QVERIFY2(measure.startRecording(runPath, RunInfo(), &error), qPrintable(error));
         QObject::connect(live.mqtt(), &MqttConnection::stateChanged, live.mqtt(),
                          [&](MqttConnection::State s, const QString&) { onState(s); });
         QTRY_VERIFY_WITH_TIMEOUT(live.mqtt()->state() == MqttConnection::State::Connected, 10000);
