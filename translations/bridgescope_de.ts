@@ -4528,14 +4528,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
 <context>
     <name>RosbagImport</name>
     <message>
-        <source>cannot read it</source>
-        <translation>nicht lesbar</translation>
-    </message>
-    <message>
-        <source>not a ROS 1 bag (no #ROSBAG V2.0 header)</source>
-        <translation>kein ROS-1-Bag (kein Header #ROSBAG V2.0)</translation>
-    </message>
-    <message>
         <source>no %1 topics in the bag (it has: %2)</source>
         <translation>keine Topics vom Typ %1 im Bag (vorhanden: %2)</translation>
     </message>

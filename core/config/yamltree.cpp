@@ -20,14 +20,6 @@ bool resolvesToNonString(const QString& t)
     return special.match(t).hasMatch() || number.match(t).hasMatch();
 }
 
-// Characters a plain or double-quoted scalar cannot hold as they are: C0 and C1 controls, DEL, the
-// byte-order mark (readers drop it) and U+2028/9 (line breaks to YAML 1.1 readers).
-bool mustEscape(QChar c)
-{
-    const char16_t u = c.unicode();
-    return u < 0x20 || u == 0x7f || (u >= 0x80 && u < 0xa0) || u == 0xfeff || u == 0x2028 || u == 0x2029;
-}
-
 // Text that cannot be written plain at all, whatever its type.
 bool needsStructuralQuotes(const QString& t)
 {
@@ -54,6 +46,12 @@ bool needsStructuralQuotes(const QString& t)
 }
 
 } // namespace
+
+bool mustEscape(QChar c)
+{
+    const char16_t u = c.unicode();
+    return u < 0x20 || u == 0x7f || (u >= 0x80 && u < 0xa0) || u == 0xfeff || u == 0x2028 || u == 0x2029;
+}
 
 bool needsQuotes(const QString& text)
 {

@@ -52,6 +52,9 @@ private:
 };
 
 namespace YamlText {
+/// Characters no scalar may hold as they are: C0 and C1 controls, DEL, the byte-order mark
+/// (readers drop it) and U+2028/9 (line breaks to YAML 1.1 readers). Written as escapes.
+bool mustEscape(QChar c);
 /// True when text written plain would be read back as something other than this string.
 bool needsQuotes(const QString& text);
 /// The scalar as YAML: plain when safe, otherwise double-quoted with escapes.

@@ -3,6 +3,7 @@
 
 #include "common/atomicfile.h"
 #include "config/yamllimits.h"
+#include "config/yamltree.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -41,10 +42,7 @@ QString quoted(const QString& s)
         if (c == u'\\' || c == u'"') {
             out += u'\\';
             out += c;
-        } else if (c.unicode() < 0x20 || c.unicode() == 0x7f || (c.unicode() >= 0x80 && c.unicode() < 0xa0)
-                   || c.unicode() == 0xfeff || c.unicode() == 0x2028 || c.unicode() == 0x2029) {
-            // A byte-order mark is dropped by readers, and U+2028/9 are line breaks in YAML 1.1
-            // (found by fuzz_pipeline): escaped, they read back as themselves.
+        } else if (YamlText::mustEscape(c)) {
             out += u"\\u%1"_s.arg(uint(c.unicode()), 4, 16, QChar(u'0'));
         } else {
             out += c;

@@ -39,6 +39,15 @@ QString BagReaderProcess::program()
     return {};
 }
 
+QString BagReaderProcess::refusal(const QString& path)
+{
+    if (!QFileInfo(path).isReadable())
+        return tr("cannot read it");
+    if (!looksLikeBag(path))
+        return tr("not a ROS 1 bag (no #ROSBAG V2.0 header)");
+    return {};
+}
+
 std::optional<RunData> BagReaderProcess::read(const QString& path, QString* error, const Progress& progress)
 {
     const auto fail = [&](const QString& why) -> std::optional<RunData> {
@@ -46,10 +55,8 @@ std::optional<RunData> BagReaderProcess::read(const QString& path, QString* erro
             *error = path + u": "_s + why;
         return std::nullopt;
     };
-    if (!QFileInfo(path).isReadable())
-        return fail(tr("cannot read it"));
-    if (!looksLikeBag(path))
-        return fail(tr("not a ROS 1 bag (no #ROSBAG V2.0 header)"));
+    if (const QString why = refusal(path); !why.isEmpty())
+        return fail(why);
     const QString helper = program();
     if (helper.isEmpty())
         return fail(tr("cannot read bags: the helper program bridgescope-bagreader is not installed"));

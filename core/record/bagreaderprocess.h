@@ -17,6 +17,8 @@ class BagReaderProcess
 public:
     /// Whether the file starts like a ROS 1 bag.
     static bool looksLikeBag(const QString& path);
+    /// Why `path` is not read as a bag at all (unreadable, no bag header), or empty.
+    static QString refusal(const QString& path);
     static std::optional<RunData> read(const QString& path, QString* error = nullptr,
                                        const Progress& progress = {});
     /// The helper program: $BRIDGESCOPE_BAGREADER, beside this program, in ../libexec/bridgescope,

@@ -21,10 +21,8 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
             *error = path + u": "_s + why;
         return std::nullopt;
     };
-    if (!QFileInfo(path).isReadable())
-        return fail(tr("cannot read it"));
-    if (!BagReaderProcess::looksLikeBag(path))
-        return fail(tr("not a ROS 1 bag (no #ROSBAG V2.0 header)"));
+    if (const QString why = BagReaderProcess::refusal(path); !why.isEmpty())
+        return fail(why);
     RunData run;
     try {
         rosbag::Bag bag;

@@ -28,15 +28,13 @@ struct RosNode::Private
     std::unique_ptr<ros::AsyncSpinner> spinner;
     QString masterUri; ///< touched on the worker only
     QTimer* masterWatch = nullptr; ///< on the worker: registers again with a restarted master
-    std::vector<Job> pending; ///< on the worker: jobs waiting for a master to start the node with
-    QTimer* pendingRetry = nullptr; ///< on the worker: tries to start the node once a second
+    std::vector<Job> pending; ///< on the worker: jobs waiting for the master to answer
+    QTimer* pendingRetry = nullptr; ///< on the worker: asks the master again once a second
     std::mutex hookMutex;
     std::map<int, std::function<void()>> hooks;
     int nextHook = 1;
 
     // On the worker thread. Starts the node when the master answers; false while it does not.
-    // Starting a node registers its services, which roscpp retries for 2 s each against a dead
-    // master: asking first (without waiting) keeps the worker free, so teardown never waits.
     bool ensureNode()
     {
         if (node)
@@ -51,7 +49,7 @@ struct RosNode::Private
             ros::master::init(remappings); // an earlier node of this process may have used another master
         // A dead master must not hold a subscription forever.
         ros::master::setRetryTimeout(ros::WallDuration(2.0));
-        if (!ros::master::check())
+        if (!RosReregistration::masterAnswers())
             return false;
         node = std::make_unique<ros::NodeHandle>();
         node->setCallbackQueue(&queue);
@@ -70,29 +68,34 @@ struct RosNode::Private
         return true;
     }
 
-    // On the worker thread: runs `job` now, or once the node could start.
+    // On the worker thread: runs `job` once the master answers, after the jobs before it. roscpp
+    // waits for a dead master 2 s in every call that registers (starting the node, subscribing,
+    // advertising), on this thread, which teardown waits for: asking first, without waiting,
+    // keeps it free. Jobs come from the user's actions (a subscription each), not the network.
     void run(Job job)
     {
-        if (ensureNode()) {
-            job(*node);
+        pending.push_back(std::move(job));
+        flush();
+    }
+
+    void flush()
+    {
+        const bool ready = node ? RosReregistration::masterAnswers() : ensureNode();
+        if (!ready) {
+            if (!pendingRetry) {
+                pendingRetry = new QTimer(worker);
+                pendingRetry->setInterval(1000);
+                QObject::connect(pendingRetry, &QTimer::timeout, worker, [this] { flush(); });
+            }
+            pendingRetry->start();
             return;
         }
-        // Jobs come from the user's actions (a subscription each), not from the network.
-        pending.push_back(std::move(job));
-        if (!pendingRetry) {
-            pendingRetry = new QTimer(worker);
-            pendingRetry->setInterval(1000);
-            QObject::connect(pendingRetry, &QTimer::timeout, worker, [this] {
-                if (!ensureNode())
-                    return;
-                pendingRetry->stop();
-                std::vector<Job> jobs;
-                jobs.swap(pending);
-                for (Job& j : jobs)
-                    j(*node);
-            });
-        }
-        pendingRetry->start();
+        if (pendingRetry)
+            pendingRetry->stop();
+        std::vector<Job> jobs;
+        jobs.swap(pending);
+        for (Job& j : jobs)
+            j(*node);
     }
 
     void runHooks()

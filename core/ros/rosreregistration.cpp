@@ -105,26 +105,25 @@ RosReregistration::Result RosReregistration::check(QString* detail)
         return Result::Registered;
 
     QStringList refused;
-    for (const auto& [topic, type] : publications) {
+    // registerPublisher and registerSubscriber take the same arguments.
+    const auto registration = [&](const std::string& topic, const std::string& type) {
         XmlRpc::XmlRpcValue args;
         args[0] = me;
         args[1] = topic;
         args[2] = type;
         args[3] = api;
-        const Answer a = askMaster("registerPublisher", args, nullptr);
+        return args;
+    };
+    for (const auto& [topic, type] : publications) {
+        const Answer a = askMaster("registerPublisher", registration(topic, type), nullptr);
         if (a == Answer::Unreachable)
             return Result::MasterUnreachable;
         if (a == Answer::No)
             refused << QString::fromStdString(topic);
     }
     for (const auto& [topic, type] : subscriptions) {
-        XmlRpc::XmlRpcValue args;
-        args[0] = me;
-        args[1] = topic;
-        args[2] = type;
-        args[3] = api;
         XmlRpc::XmlRpcValue publishers;
-        const Answer a = askMaster("registerSubscriber", args, &publishers);
+        const Answer a = askMaster("registerSubscriber", registration(topic, type), &publishers);
         if (a == Answer::Unreachable)
             return Result::MasterUnreachable;
         if (a == Answer::No) {
@@ -151,4 +150,11 @@ RosReregistration::Result RosReregistration::check(QString* detail)
         *detail
             = tr("%n topic(s) registered again", nullptr, int(publications.size() + subscriptions.size()));
     return Result::Reregistered;
+}
+
+bool RosReregistration::masterAnswers()
+{
+    XmlRpc::XmlRpcValue args;
+    args[0] = ros::this_node::getName();
+    return askMaster("getPid", args, nullptr) != Answer::Unreachable;
 }

@@ -25,4 +25,7 @@ public:
     };
     /// Needs a started roscpp node.
     static Result check(QString* detail = nullptr);
+    /// Whether the master roscpp is pointed at answers now, asked on a connection of its own and
+    /// without roscpp's retries. Needs ros::init.
+    static bool masterAnswers();
 };

@@ -12,7 +12,6 @@
 #include <QCoreApplication>
 #include <QHash>
 #include <QPointer>
-#include <QTimer>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
 
@@ -31,7 +30,6 @@ struct RosStampSource::Private
     QHash<QString, quint64> malformedByTopic; ///< guarded by mutex
     QString lastError; ///< guarded by mutex
     QHash<QString, ros::Subscriber> subscribers; ///< the node's worker thread only
-    bool retryPending = false; ///< the node's worker thread only: a sync waits for the master
     std::atomic<bool> closing {false}; ///< the owner is going: subscribe nothing more
 
     // roscpp spinner thread; rare (bad messages only), so a lock is fine.
@@ -101,27 +99,6 @@ struct RosStampSource::Private
         }
         if (closing.load())
             return;
-        // roscpp blocks in subscribe() until the master answers (up to the 2 s retry timeout, per
-        // topic), and registers nothing when it does not: ask once without waiting, and come
-        // back in a second while it is away. Stopping a run then never waits for a dead master.
-        bool missing = false;
-        for (const QString& t : std::as_const(stampTopics))
-            missing = missing || !subscribers.contains(t);
-        for (const QString& t : std::as_const(latencyTopics))
-            missing = missing || !subscribers.contains(t);
-        if (missing && !ros::master::check()) {
-            if (!retryPending) {
-                retryPending = true;
-                std::weak_ptr<Private> weak = self;
-                QTimer::singleShot(1000, [weak, owner] {
-                    if (auto p = weak.lock()) {
-                        p->retryPending = false;
-                        p->post(p, owner, false);
-                    }
-                });
-            }
-            return;
-        }
         const auto subscribe = [&](const QString& topic, bool stamp) {
             if (subscribers.contains(topic) || closing.load())
                 return;

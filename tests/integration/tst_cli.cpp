@@ -508,18 +508,24 @@ private slots:
         }
     }
 
+    // A suite CSV of 20,000 stamp columns and `rows` samples, in `dir`.
+    static QString wideCsv(const QTemporaryDir& dir, std::size_t rows)
+    {
+        QStringList topics;
+        for (int i = 0; i < 20000; ++i)
+            topics << u"/suite/timestamps/c%1/data/out"_s.arg(i);
+        std::vector<std::vector<qint64>> samples(rows);
+        for (std::size_t r = 0; r < samples.size(); ++r)
+            for (int c = 0; c < 20000; ++c)
+                samples[r].push_back(1'700'000'000'000'000'000LL + qint64(r) * 1'000'000'000LL + c * 1000LL);
+        return writeFile(dir, u"wide.csv"_s, SuiteCsv::write(topics, samples));
+    }
+
     // Regression (issue 11, item 6): stage labelling was cubic in the columns; 20,000 never ended.
     void reportOnTwentyThousandColumnsFinishes()
     {
         QTemporaryDir dir;
-        QStringList topics;
-        for (int i = 0; i < 20000; ++i)
-            topics << u"/suite/timestamps/c%1/data/out"_s.arg(i);
-        std::vector<std::vector<qint64>> samples(3);
-        for (std::size_t r = 0; r < samples.size(); ++r)
-            for (int c = 0; c < 20000; ++c)
-                samples[r].push_back(1'700'000'000'000'000'000LL + qint64(r) * 1'000'000'000LL + c * 1000LL);
-        const QString csv = writeFile(dir, u"wide.csv"_s, SuiteCsv::write(topics, samples));
+        const QString csv = wideCsv(dir, 3);
         const Run r = bridgescope({u"report"_s, csv, u"--format"_s, u"md"_s}, 600000); // "finishes at all"
         QCOMPARE(r.exit, 0);
         QVERIFY2(r.out.contains(u"c0 → c1"_s), qPrintable(r.out.left(500)));
@@ -531,14 +537,7 @@ private slots:
     void ctrlCCancelsAWideReport()
     {
         QTemporaryDir dir;
-        QStringList topics;
-        for (int i = 0; i < 20000; ++i)
-            topics << u"/suite/timestamps/c%1/data/out"_s.arg(i);
-        std::vector<std::vector<qint64>> samples(60);
-        for (std::size_t r = 0; r < samples.size(); ++r)
-            for (int c = 0; c < 20000; ++c)
-                samples[r].push_back(1'700'000'000'000'000'000LL + qint64(r) * 1'000'000'000LL + c * 1000LL);
-        const QString csv = writeFile(dir, u"wide.csv"_s, SuiteCsv::write(topics, samples));
+        const QString csv = wideCsv(dir, 60);
         const QString out = dir.filePath(u"report.md"_s);
         QProcess p;
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, csv, u"--format"_s, u"md"_s, u"-o"_s, out});
