@@ -6,6 +6,7 @@
 #include "benchutil.h"
 #include "config/configdocument.h"
 #include "config/configreader.h"
+#include "config/yamllimits.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
 #include "configeditor.h"
@@ -111,6 +112,20 @@ int main(int argc, char** argv)
             qFatal("load failed");
     });
     Bench::row(u"open (read, parse, validate)"_s, open, u"%1x yaml-cpp"_s.arg(open / yamlCpp, 0, 'f', 2));
+
+    // The hostile-input pre-pass every open starts with (issue 11): UTF-8, control characters,
+    // sizes, aliases, duplicate keys; one pass over the parser's events.
+    QByteArray text;
+    {
+        QFile f(path);
+        f.open(QIODevice::ReadOnly);
+        text = f.readAll();
+    }
+    const double limits = Bench::medianMs(runs, [&] {
+        if (YamlLimits::check(text))
+            qFatal("limits refused the config");
+    });
+    Bench::row(u"of which: YAML limits pre-pass"_s, limits, u"%1 of open"_s.arg(limits / open, 0, 'f', 2));
 
     ConfigDocument doc;
     doc.load(path);

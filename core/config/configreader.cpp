@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "configreader.h"
 
+#include "common/exactutf8.h"
+
 #include "yamllimits.h"
 #include "yamltree.h"
 
@@ -10,16 +12,10 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-// UTF-8 as it is: QString::fromUtf8 drops byte-order marks at the start, and a value that begins
-// with one ("\ufeffa", written escaped) would change on every read.
+// A value that begins with a byte-order mark ("\ufeffa", written escaped) must not change on a read.
 QString qs(const std::string& s)
 {
-    std::size_t boms = 0;
-    while (s.compare(boms * 3, 3, "\xef\xbb\xbf") == 0)
-        ++boms;
-    if (boms == 0)
-        return QString::fromStdString(s);
-    return QString(qsizetype(boms), QChar(0xfeff)) + QString::fromUtf8(s.data() + boms * 3, qsizetype(s.size() - boms * 3));
+    return exactUtf8(s);
 }
 
 TextPos posOf(const YAML::Node& n)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mqttclientwire.h"
 
+#include "common/exactutf8.h"
+
 #include <QtEndian>
 
 QString MqttClientWire::dataTopicOf(const QString& typeTopic)
@@ -35,7 +37,7 @@ std::optional<RosMsgTypeInfo> MqttClientWire::decodeType(const QByteArray& bytes
                              .arg(bytes.size() - pos);
             return false;
         }
-        *out = QString::fromUtf8(bytes.constData() + pos, qsizetype(n));
+        *out = exactUtf8(bytes.constData() + pos, qsizetype(n));
         pos += qsizetype(n);
         return true;
     };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttconnection.h"
 
+#include "common/exactutf8.h"
 #include "common/wallclock.h"
 #include "pahooptions.h"
 
@@ -231,7 +232,7 @@ void MqttConnection::startClient()
                 if (!shared->alive)
                     return;
                 MqttMessage m;
-                m.topic = QString::fromStdString(msg->get_topic());
+                m.topic = exactUtf8(msg->get_topic());
                 const mqtt::binary_ref& data = msg->get_payload_ref();
                 m.payload = QByteArray(data.data(), qsizetype(data.size()));
                 m.receivedNs = wallClockNs();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttlink.h"
 
+#include "common/exactutf8.h"
 #include "common/wallclock.h"
 #include "pahooptions.h"
 
@@ -119,7 +120,7 @@ bool MqttLink::connect(int timeoutMs, QString* error)
             if (!handler)
                 return;
             const mqtt::binary_ref& data = msg->get_payload_ref();
-            handler(QString::fromStdString(msg->get_topic()), QByteArray(data.data(), qsizetype(data.size())),
+            handler(exactUtf8(msg->get_topic()), QByteArray(data.data(), qsizetype(data.size())),
                     now);
         });
         d->client->set_connected_handler([weak](const std::string&) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rosmessage.h"
 
+#include "common/exactutf8.h"
+
 #include <algorithm>
 #include <cstring>
 #include <QRegularExpression>
@@ -290,7 +292,7 @@ public:
             const uchar* p = need(qsizetype(n), field);
             const qsizetype shown = std::min<qsizetype>(n, m_limits.maxStringChars);
             *truncated = shown < qsizetype(n);
-            return QString::fromUtf8(reinterpret_cast<const char*>(p), shown);
+            return exactUtf8(reinterpret_cast<const char*>(p), shown);
         }
         const int size = RosTypeRegistry::builtinSize(type);
         const uchar* p = need(size, field);

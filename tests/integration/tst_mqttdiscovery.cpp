@@ -89,6 +89,11 @@ private slots:
         QCOMPARE(d.connection.received(), 253u);
         QCOMPARE(d.connection.dropped(), 0u);
         QCOMPARE(d.tree.history(u"site/live"_s)->back().payload, QByteArray("sample 249"));
+
+        // A topic that begins with a byte-order mark is another topic than the one without it.
+        run(u"mosquitto_pub"_s, pubArgs(servers) + QStringList {u"-t"_s, u"\ufeffsite/live"_s, u"-m"_s, u"bom"_s});
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"\ufeffsite/live"_s), 1u, 10000);
+        QCOMPARE(d.messages(u"site/live"_s), 250u);
     }
 
     void mqttClientTypeAnnouncementsAreDecoded()

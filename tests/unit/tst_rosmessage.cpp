@@ -118,6 +118,9 @@ private slots:
         std_msgs::String s;
         s.data = "grüße";
         QCOMPARE(at(decode(s), u"data"_s), u"grüße"_s);
+        // A leading byte-order mark is part of the value (QString::fromUtf8 alone drops it).
+        s.data = "\xef\xbb\xbf\xef\xbb\xbfx";
+        QCOMPARE(at(decode(s), u"data"_s), u"\ufeff\ufeffx"_s);
 
         std_msgs::Float64MultiArray a;
         a.layout.dim.resize(1);
