@@ -1,19 +1,21 @@
 // SPDX-License-Identifier: MIT
-#include "cli/bridgecommand.h"
-#include "cli/clioutput.h"
-#include "cli/configcommand.h"
-#include "cli/democommand.h"
-#include "cli/discovercommand.h"
-#include "cli/probecommand.h"
-#include "cli/recordcommand.h"
-#include "cli/reportcommand.h"
-#include "guimain.h"
+#include "app/cli/bridgecommand.h"
+#include "app/cli/clioutput.h"
+#include "app/cli/configcommand.h"
+#include "app/cli/democommand.h"
+#include "app/cli/discovercommand.h"
+#include "app/cli/probecommand.h"
+#include "app/cli/recordcommand.h"
+#include "app/cli/reportcommand.h"
+#include "app/gui/guimain.h"
+#include "base/logging.h"
 
 #include <ctime>
 #include <QCoreApplication>
 #include <QGuiApplication>
 
 using namespace Qt::StringLiterals;
+using CliOutput::ExitOk;
 
 namespace {
 void setIdentity()
@@ -40,6 +42,9 @@ int main(int argc, char** argv)
     // times, and glibc's first tzset() on two threads at once races (seen by TSan).
     ::tzset();
     setIdentity();
+    // --verbose anywhere (before a lone --) turns on the debug messages of every layer.
+    if (Logging::takeVerboseFlag(&argc, argv))
+        Logging::enableVerbose();
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
@@ -60,11 +65,11 @@ int main(int argc, char** argv)
         const QStringList args = app.arguments().mid(1);
         if (help) {
             CliOutput::out(bridgescopeUsage());
-            return 0;
+            return ExitOk;
         }
         if (version) {
             CliOutput::out(u"bridgescope "_s + QCoreApplication::applicationVersion());
-            return 0;
+            return ExitOk;
         }
         if (first == u"discover"_s)
             return CliOutput::finish(runDiscoverCommand(args));

@@ -9,9 +9,9 @@
 // so that both see the same machine load.
 //
 //   build-release/bench/bench_bridge
+#include "app/cli/clioutput.h"
+#include "base/wallclock.h"
 #include "benchutil.h"
-#include "cli/clioutput.h"
-#include "common/wallclock.h"
 #include "mqtt/mqttlink.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"

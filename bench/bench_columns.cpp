@@ -8,8 +8,8 @@
 //   scripts/bench.sh bench_columns          (BENCH_ROWS overrides the 20 rows of each CSV)
 #include "benchutil.h"
 #include "latency/latencyengine.h"
-#include "record/report.h"
 #include "record/suitecsv.h"
+#include "report/report.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -3,15 +3,15 @@
 // by yaml-cpp alone and by PyYAML (what users' scripts use), in the same run.
 //
 //   scripts/bench.sh bench_config
+#include "app/gui/mainwindow.h"
+#include "base/yamllimits.h"
 #include "benchutil.h"
 #include "config/configdocument.h"
 #include "config/configreader.h"
-#include "config/yamllimits.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
-#include "configeditor.h"
-#include "configfilecontroller.h"
-#include "mainwindow.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/configfilecontroller.h"
 
 #include <fstream>
 #include <QApplication>

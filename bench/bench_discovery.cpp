@@ -5,12 +5,12 @@
 // the time from a filter keystroke to an updated view with 10,000 topics.
 //
 //   scripts/bench.sh bench_discovery        (BENCH_SECONDS, BENCH_RATE, BENCH_TOPICS override)
+#include "app/gui/mainwindow.h"
 #include "benchutil.h"
-#include "common/livesession.h"
-#include "discoverpage.h"
-#include "mainwindow.h"
 #include "mqtt/mqtttopictree.h"
+#include "session/livesession.h"
 #include "testservers.h"
+#include "widgets/discover/discoverpage.h"
 
 #include <algorithm>
 #include <QApplication>

@@ -4,18 +4,18 @@
 // second arrive from a real rosmaster (against the same window idle).
 //
 //   scripts/bench.sh bench_measure     (BENCH_SECONDS, BENCH_EVENT_RATE override the load)
+#include "app/gui/mainwindow.h"
 #include "benchutil.h"
-#include "common/livesession.h"
-#include "common/measuresession.h"
-#include "discoverpage.h"
-#include "ecdfchart.h"
 #include "latency/ecdf.h"
 #include "latency/latencyengine.h"
-#include "mainwindow.h"
-#include "measurepage.h"
 #include "ros/rosstampsource.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/measure/measurepage.h"
 
 #include <QApplication>
 #include <QChart>
@@ -71,7 +71,7 @@ void chartUpdate()
 
     EcdfChart chart;
     chart.resize(1200, 700);
-    chart.setEngine(&engine);
+    chart.setSource(&engine);
     chart.setSeries({u"total"_s});
     chart.show();
     QTest::qWait(100);

@@ -65,6 +65,17 @@
     </message>
 </context>
 <context>
+    <name>BagHeader</name>
+    <message>
+        <source>cannot read it</source>
+        <translation>nicht lesbar</translation>
+    </message>
+    <message>
+        <source>not a ROS 1 bag (no #ROSBAG V2.0 header)</source>
+        <translation>kein ROS-1-Bag (kein Header #ROSBAG V2.0)</translation>
+    </message>
+</context>
+<context>
     <name>BagReader</name>
     <message>
         <source>usage: bridgescope-bagreader BAG OUT.bsrun</source>
@@ -81,14 +92,6 @@
 </context>
 <context>
     <name>BagReaderProcess</name>
-    <message>
-        <source>cannot read it</source>
-        <translation>nicht lesbar</translation>
-    </message>
-    <message>
-        <source>not a ROS 1 bag (no #ROSBAG V2.0 header)</source>
-        <translation>kein ROS-1-Bag (kein Header #ROSBAG V2.0)</translation>
-    </message>
     <message>
         <source>cannot read bags: the helper program bridgescope-bagreader is not installed</source>
         <translation>Bags sind nicht lesbar: das Hilfsprogramm bridgescope-bagreader ist nicht installiert</translation>
@@ -911,62 +914,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <source>Add a mapping.</source>
         <translation>Eine Zuordnung hinzufügen.</translation>
     </message>
-    <message>
-        <source>it is empty</source>
-        <translation>er ist leer</translation>
-    </message>
-    <message>
-        <source>it must start with a letter, &apos;/&apos; or &apos;~&apos;</source>
-        <translation>er muss mit einem Buchstaben, &apos;/&apos; oder &apos;~&apos; beginnen</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is not allowed (only letters, digits, &apos;_&apos; and &apos;/&apos;)</source>
-        <translation>&apos;%1&apos; ist nicht erlaubt (nur Buchstaben, Ziffern, &apos;_&apos; und &apos;/&apos;)</translation>
-    </message>
-    <message>
-        <source>it contains &apos;//&apos;</source>
-        <translation>er enthält &apos;//&apos;</translation>
-    </message>
-    <message>
-        <source>it ends with &apos;/&apos;</source>
-        <translation>er endet auf &apos;/&apos;</translation>
-    </message>
-    <message>
-        <source>&apos;~&apos; must be followed by &apos;/&apos;</source>
-        <translation>auf &apos;~&apos; muss &apos;/&apos; folgen</translation>
-    </message>
-    <message>
-        <source>in ROS 2 a name level must not start with a digit</source>
-        <translation>in ROS 2 darf eine Namensebene nicht mit einer Ziffer beginnen</translation>
-    </message>
-    <message>
-        <source>it contains a NUL character</source>
-        <translation>er enthält ein NUL-Zeichen</translation>
-    </message>
-    <message>
-        <source>it is longer than 65535 bytes</source>
-        <translation>er ist länger als 65535 Bytes</translation>
-    </message>
-    <message>
-        <source>wildcards are not allowed in a published topic</source>
-        <translation>Platzhalter sind in einem veröffentlichten Topic nicht erlaubt</translation>
-    </message>
-    <message>
-        <source>&apos;#&apos; must be a whole level and the last one</source>
-        <translation>&apos;#&apos; muss eine ganze Ebene und die letzte sein</translation>
-    </message>
-    <message>
-        <source>&apos;+&apos; must be a whole level</source>
-        <translation>&apos;+&apos; muss eine ganze Ebene sein</translation>
-    </message>
-    <message>
-        <source>it contains U+FFFD, the mark of bytes that were not valid UTF-8</source>
-        <translation>er enthält U+FFFD, das Zeichen für Bytes, die kein gültiges UTF-8 waren</translation>
-    </message>
-    <message>
-        <source>it is not valid Unicode (half of a UTF-16 surrogate pair)</source>
-        <translation>er ist kein gültiges Unicode (die Hälfte eines UTF-16-Surrogatpaars)</translation>
-    </message>
 </context>
 <context>
     <name>ConfigWriter</name>
@@ -1655,6 +1602,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>The demo lab stopped: %1</source>
         <translation>Das Demo-Labor hat sich beendet: %1</translation>
+    </message>
+    <message>
+        <source>debug messages of every layer on stderr, also after a command</source>
+        <translation>Debug-Meldungen jeder Schicht auf stderr, auch hinter einem Befehl</translation>
     </message>
 </context>
 <context>
@@ -4925,6 +4876,65 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>column %1 (%2): %3 is %4</source>
         <translation>Spalte %1 (%2): %3 ist %4</translation>
+    </message>
+</context>
+<context>
+    <name>TopicNames</name>
+    <message>
+        <source>it contains U+FFFD, the mark of bytes that were not valid UTF-8</source>
+        <translation>er enthält U+FFFD, das Zeichen für Bytes, die kein gültiges UTF-8 waren</translation>
+    </message>
+    <message>
+        <source>it is not valid Unicode (half of a UTF-16 surrogate pair)</source>
+        <translation>er ist kein gültiges Unicode (die Hälfte eines UTF-16-Surrogatpaars)</translation>
+    </message>
+    <message>
+        <source>it is empty</source>
+        <translation>er ist leer</translation>
+    </message>
+    <message>
+        <source>it must start with a letter, &apos;/&apos; or &apos;~&apos;</source>
+        <translation>er muss mit einem Buchstaben, &apos;/&apos; oder &apos;~&apos; beginnen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed (only letters, digits, &apos;_&apos; and &apos;/&apos;)</source>
+        <translation>&apos;%1&apos; ist nicht erlaubt (nur Buchstaben, Ziffern, &apos;_&apos; und &apos;/&apos;)</translation>
+    </message>
+    <message>
+        <source>it contains &apos;//&apos;</source>
+        <translation>er enthält &apos;//&apos;</translation>
+    </message>
+    <message>
+        <source>it ends with &apos;/&apos;</source>
+        <translation>er endet auf &apos;/&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;~&apos; must be followed by &apos;/&apos;</source>
+        <translation>auf &apos;~&apos; muss &apos;/&apos; folgen</translation>
+    </message>
+    <message>
+        <source>in ROS 2 a name level must not start with a digit</source>
+        <translation>in ROS 2 darf eine Namensebene nicht mit einer Ziffer beginnen</translation>
+    </message>
+    <message>
+        <source>it contains a NUL character</source>
+        <translation>er enthält ein NUL-Zeichen</translation>
+    </message>
+    <message>
+        <source>it is longer than 65535 bytes</source>
+        <translation>er ist länger als 65535 Bytes</translation>
+    </message>
+    <message>
+        <source>wildcards are not allowed in a published topic</source>
+        <translation>Platzhalter sind in einem veröffentlichten Topic nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>&apos;#&apos; must be a whole level and the last one</source>
+        <translation>&apos;#&apos; muss eine ganze Ebene und die letzte sein</translation>
+    </message>
+    <message>
+        <source>&apos;+&apos; must be a whole level</source>
+        <translation>&apos;+&apos; muss eine ganze Ebene sein</translation>
     </message>
 </context>
 <context>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "bridgecommand.h"
 
+#include "app/cli/clioutput.h"
+#include "base/yamllimits.h"
 #include "bridge/referencebridge.h"
-#include "clioutput.h"
-#include "config/yamllimits.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -13,6 +13,9 @@
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
 
 namespace {
 class Bridge
@@ -63,13 +66,13 @@ int runBridgeCommand(const QStringList& arguments)
         return parsed;
     if (parser.positionalArguments().size() != 1) {
         err(Bridge::tr("bridge takes one config file; see bridgescope bridge --help"));
-        return 2;
+        return ExitUsage;
     }
     const QString path = parser.positionalArguments().first();
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         err(Bridge::tr("%1: %2").arg(path, f.errorString()));
-        return 2;
+        return ExitUsage;
     }
     ReferenceBridge::Options options;
     options.brokerUrl = parser.value(broker);
@@ -80,13 +83,13 @@ int runBridgeCommand(const QStringList& arguments)
     options.clockOffsetNs = qint64(parser.value(offset).toDouble(&ok) * 1e6);
     if (!ok) {
         err(Bridge::tr("--clock-offset-ms takes a number of milliseconds"));
-        return 2;
+        return ExitUsage;
     }
     for (const QString& a : parser.values(arg)) {
         const qsizetype eq = a.indexOf(u'=');
         if (eq <= 0) {
             err(Bridge::tr("--arg takes NAME=VALUE, not '%1'").arg(a));
-            return 2;
+            return ExitUsage;
         }
         options.args.insert(a.left(eq), a.mid(eq + 1));
     }
@@ -96,20 +99,16 @@ int runBridgeCommand(const QStringList& arguments)
     // At most one byte more than a config may have: /dev/zero is refused, not read forever.
     if (!bridge.load(f.read(YamlLimits::maxBytes + 1), options, &why)) {
         err(u"%1: %2"_s.arg(path, why));
-        return 2;
+        return ExitUsage;
     }
     CliOutput::catchStopSignals();
     if (!bridge.start([] { return !CliOutput::stopRequested(); }, &why)) {
         err(Bridge::tr("bridge failed: %1").arg(why));
-        return CliOutput::stopRequested() ? 0 : 1;
+        return CliOutput::stopRequested() ? ExitOk : ExitFailed;
     }
     logLine(Bridge::tr("bridging %n mapping(s); Ctrl+C stops", nullptr, bridge.mappingCount()));
-    QTimer check;
-    QObject::connect(&check, &QTimer::timeout, [] {
-        if (CliOutput::stopRequested())
-            QCoreApplication::exit(0);
-    });
-    check.start(100);
+    QObject guard;
+    CliOutput::whenStopRequested(&guard, [] { QCoreApplication::exit(ExitOk); });
     QCoreApplication::exec();
     const ReferenceBridge::Counters& c = bridge.counters();
     bridge.stop();
@@ -117,5 +116,5 @@ int runBridgeCommand(const QStringList& arguments)
                 .arg(c.toMqtt.load())
                 .arg(c.toRos.load())
                 .arg(c.failed.load()));
-    return 0;
+    return ExitOk;
 }

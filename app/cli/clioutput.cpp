@@ -8,6 +8,7 @@
 #include <malloc.h>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QTimer>
 
 namespace CliOutput {
 
@@ -57,7 +58,7 @@ int finish(int exitCode)
                 .arg(QString::fromLocal8Bit(std::strerror(g_stdoutErrno))));
         reported = true;
     }
-    return 2;
+    return ExitUsage;
 }
 
 namespace {
@@ -80,6 +81,19 @@ bool stopRequested()
     return g_stopRequested != 0;
 }
 
+void whenStopRequested(QObject* context, std::function<void()> onStop)
+{
+    catchStopSignals();
+    auto* check = new QTimer(context);
+    QObject::connect(check, &QTimer::timeout, context, [check, onStop = std::move(onStop)] {
+        if (!stopRequested())
+            return;
+        check->stop();
+        onStop();
+    });
+    check->start(100);
+}
+
 void keepFreedMemory()
 {
     mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024); // glibc's maximum on 64-bit
@@ -95,7 +109,7 @@ int parseCommand(QCommandLineParser& parser, const QStringList& args, const QStr
     if (!parser.parse(args)) {
         err(parser.errorText());
         err(QCoreApplication::translate("Cli", "Run '%1 --help' for usage.").arg(args.first()));
-        return 2;
+        return ExitUsage;
     }
     if (parser.isSet(help)) {
         // Qt names the program in the usage line; the command ("bridgescope report") is what to type.
@@ -107,7 +121,7 @@ int parseCommand(QCommandLineParser& parser, const QStringList& args, const QStr
                 text.replace(usage.size(), end - usage.size(), args.first());
         }
         out(text);
-        return 0;
+        return ExitOk;
     }
     return -1;
 }

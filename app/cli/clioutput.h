@@ -1,28 +1,43 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <functional>
 #include <QString>
 #include <QStringList>
 
 class QCommandLineParser;
+class QObject;
 
-/// Plain text to the terminal, without going through the Qt message handler.
+/// Plain text to the terminal, without going through the Qt message handler, and what every
+/// command shares: exit codes, option parsing, Ctrl+C.
 namespace CliOutput {
+/// The exit status of every command (the user guide's contract).
+enum Exit : int {
+    ExitOk = 0, ///< done
+    ExitFailed = 1, ///< ran, but failed: an invalid config, nothing came back, a write that failed
+    ExitUsage = 2, ///< bad arguments or an input that cannot be read or written: nothing done
+    ExitCancelled = 130, ///< stopped by Ctrl+C or SIGTERM before the result was complete
+};
+
 void out(const QString& text); ///< a line to stdout
 void err(const QString& text); ///< a line to stderr
 /// Writes bytes to stdout as they are (a file printed with `-o -`); false when the stream failed.
 bool writeStdout(const QByteArray& bytes);
 /// Flushes stdout and says whether everything written to it arrived (a full disk, a closed pipe
-/// or /dev/full fail). On failure prints why to stderr and returns 2, otherwise `exitCode`:
+/// or /dev/full fail). On failure prints why to stderr and returns ExitUsage, otherwise `exitCode`:
 /// `return CliOutput::finish(code);` at the end of a command that prints its result.
 int finish(int exitCode);
 /// Adds -h/--help and the description, parses `args` (args[0] names the command). Returns -1 to
-/// go on, 0 after printing the help, 2 after printing the error.
+/// go on, ExitOk after printing the help, ExitUsage after printing the error.
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description);
 /// From now on SIGINT and SIGTERM only set stopRequested(), so that a long command can finish or
 /// remove its file instead of dying halfway.
 void catchStopSignals();
 bool stopRequested();
+/// catchStopSignals(), then calls `onStop` once, on `context`'s thread, soon after a stop was
+/// requested (checked every 100 ms by a timer that `context` owns). The one way a command that runs
+/// an event loop learns about Ctrl+C.
+void whenStopRequested(QObject* context, std::function<void()> onStop);
 /// For processes that forward big messages at a high rate (bridge, demo nodes): keep freed memory
 /// in the process. glibc otherwise maps each buffer over 128 KB afresh and returns it on free, and
 /// the page faults of touching it again cost more than copying the message (measured with perf).

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "configcommand.h"
 
-#include "clioutput.h"
-#include "common/atomicfile.h"
+#include "app/cli/clioutput.h"
+#include "base/atomicfile.h"
+#include "base/yamllimits.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
 #include "config/peerconfig.h"
-#include "config/yamllimits.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -15,6 +15,9 @@
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
 using CliOutput::out;
 
 namespace {
@@ -23,8 +26,6 @@ class ConfigCommand
 {
     Q_DECLARE_TR_FUNCTIONS(ConfigCommand)
 public:
-    enum Exit { Valid = 0, Invalid = 1, Unreadable = 2 };
-
     static QString usage()
     {
         return tr(
@@ -50,7 +51,7 @@ public:
     struct Loaded
     {
         ConfigReadResult read;
-        int exit = Valid;
+        int exit = ExitOk;
     };
 
     static Loaded load(const QString& path)
@@ -59,7 +60,7 @@ public:
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly)) {
             err(tr("%1: error: cannot read the file: %2").arg(path, file.errorString()));
-            l.exit = Unreadable;
+            l.exit = ExitUsage;
             return l;
         }
         // One byte past the limit is enough for the reader to say the file is too large; a device
@@ -67,14 +68,14 @@ public:
         const QByteArray bytes = file.read(YamlLimits::maxBytes + 1);
         if (file.error() != QFileDevice::NoError) {
             err(tr("%1: error: cannot read the file: %2").arg(path, file.errorString()));
-            l.exit = Unreadable;
+            l.exit = ExitUsage;
             return l;
         }
         l.read = ConfigReader::read(bytes);
         if (!l.read.parsed) {
             for (const Problem& p : std::as_const(l.read.problems))
                 err(p.format(path));
-            l.exit = Invalid;
+            l.exit = ExitFailed;
         }
         return l;
     }
@@ -82,13 +83,13 @@ public:
     static int writeOutput(const QString& outPath, const QString& text)
     {
         if (outPath.isEmpty() || outPath == u"-"_s)
-            return CliOutput::finish(CliOutput::writeStdout(text.toUtf8()) ? Valid : Unreadable);
+            return CliOutput::finish(CliOutput::writeStdout(text.toUtf8()) ? ExitOk : ExitUsage);
         QString error;
         if (!AtomicFile::write(outPath, text.toUtf8(), &error)) {
             err(tr("%1: error: %2").arg(outPath, error));
-            return Unreadable;
+            return ExitUsage;
         }
-        return Valid;
+        return ExitOk;
     }
 
     static QCommandLineOption forceOption()
@@ -147,12 +148,12 @@ public:
         const QStringList files = parser.positionalArguments();
         if (files.isEmpty()) {
             err(tr("bridgescope config validate: no FILE given"));
-            return Unreadable;
+            return ExitUsage;
         }
-        int worst = Valid;
+        int worst = ExitOk;
         for (const QString& path : files) {
             Loaded l = load(path);
-            if (l.exit != Valid) {
+            if (l.exit != ExitOk) {
                 worst = std::max(worst, l.exit);
                 continue;
             }
@@ -165,7 +166,7 @@ public:
                     out(p.format(path));
             }
             if (hasErrors(problems))
-                worst = std::max(worst, int(Invalid));
+                worst = std::max(worst, int(ExitFailed));
         }
         return worst;
     }
@@ -193,14 +194,14 @@ public:
         if (parser.positionalArguments().size() != 1 || !parser.isSet(to)
             || !layoutFromName(parser.value(to), &layout)) {
             err(tr("Usage: bridgescope config convert FILE --to ros1|ros2|mqtt_bridge [-o OUT] [--force]"));
-            return Unreadable;
+            return ExitUsage;
         }
         const QString path = parser.positionalArguments().first();
         Loaded l = load(path);
-        if (l.exit != Valid)
+        if (l.exit != ExitOk)
             return l.exit;
         if (!acceptable(path, l.read, parser.isSet(force)))
-            return Invalid;
+            return ExitFailed;
         BridgeConfig cfg = l.read.config;
         if (parser.isSet(node))
             cfg.ros2NodeName = parser.value(node);
@@ -231,18 +232,18 @@ public:
             return r;
         if (parser.positionalArguments().size() != 1) {
             err(tr("Usage: bridgescope config peer FILE [-o OUT] [--client-id ID] [--force]"));
-            return Unreadable;
+            return ExitUsage;
         }
         const QString path = parser.positionalArguments().first();
         Loaded l = load(path);
-        if (l.exit != Valid)
+        if (l.exit != ExitOk)
             return l.exit;
         if (!acceptable(path, l.read, parser.isSet(force)))
-            return Invalid;
+            return ExitFailed;
         ConfigLayout layout = l.read.config.layout;
         if (parser.isSet(to) && !layoutFromName(parser.value(to), &layout)) {
             err(tr("--to takes ros1, ros2 or mqtt_bridge"));
-            return Unreadable;
+            return ExitUsage;
         }
         const PeerConfig::Result peerResult = PeerConfig::make(l.read.config, parser.value(clientId));
         QStringList notes = peerResult.notes, dropped;
@@ -259,7 +260,7 @@ int runConfigCommand(const QStringList& arguments)
     // arguments: "config", <command>, ...
     if (arguments.size() < 2 || arguments[1] == u"--help"_s || arguments[1] == u"-h"_s) {
         out(ConfigCommand::usage());
-        return arguments.size() < 2 ? ConfigCommand::Unreadable : ConfigCommand::Valid;
+        return arguments.size() < 2 ? ExitUsage : ExitOk;
     }
     const QString& command = arguments[1];
     QStringList rest = arguments.mid(2);
@@ -273,5 +274,5 @@ int runConfigCommand(const QStringList& arguments)
         return CliOutput::finish(ConfigCommand::peer(rest));
     err(ConfigCommand::tr("bridgescope config: unknown command '%1'").arg(command));
     err(ConfigCommand::usage());
-    return ConfigCommand::Unreadable;
+    return ExitUsage;
 }

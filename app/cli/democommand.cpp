@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "democommand.h"
 
-#include "clioutput.h"
-#include "common/demolab.h"
-#include "common/livesession.h"
-#include "common/measuresession.h"
-#include "record/report.h"
-#include "record/reportformats.h"
+#include "app/cli/clioutput.h"
+#include "demo/demolab.h"
 #include "record/runrecorder.h"
+#include "report/report.h"
+#include "report/reportformats.h"
 #include "ros/demonodes.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -19,6 +19,9 @@
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
 using CliOutput::out;
 
 namespace {
@@ -60,19 +63,19 @@ int runDemoCommand(const QStringList& arguments)
     const double wantSeconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
     if (!ok || wantSeconds < 0) {
         err(Demo::tr("--seconds takes a number of seconds"));
-        return 2;
+        return ExitUsage;
     }
     ReportFormats::Format summary;
     if (!ReportFormats::parse(parser.value(format), &summary)
         || (summary != ReportFormats::Format::Markdown && summary != ReportFormats::Format::Json)) {
         err(Demo::tr("--format takes md or json"));
-        return 2;
+        return ExitUsage;
     }
     DemoLab::Options labOptions;
     labOptions.payloadBytes = parser.value(size).toInt(&ok);
     if (!ok || labOptions.payloadBytes < 16) {
         err(Demo::tr("--size takes a number of bytes (at least 16)"));
-        return 2;
+        return ExitUsage;
     }
     labOptions.brokerUrl = parser.value(broker);
     labOptions.rosMasterUri = parser.value(master);
@@ -80,7 +83,7 @@ int runDemoCommand(const QStringList& arguments)
     const QString runPath = parser.isSet(output) ? parser.value(output) : scratch.filePath(u"demo.bsrun"_s);
     if (QFileInfo::exists(runPath)) {
         err(Demo::tr("%1 exists already; a run is never overwritten").arg(runPath));
-        return 2;
+        return ExitUsage;
     }
 
     CliOutput::catchStopSignals();
@@ -89,14 +92,14 @@ int runDemoCommand(const QStringList& arguments)
     err(Demo::tr("starting the demo lab…"));
     if (!lab.start(labOptions, &why)) {
         err(Demo::tr("the demo lab did not start: %1").arg(why));
-        return 1;
+        return ExitFailed;
     }
     err(Demo::tr("broker %1, ROS master %2, configs in %3")
             .arg(lab.brokerUrl(), lab.rosMasterUri(), lab.directory()));
     const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &why);
     if (!pipeline) {
         err(why);
-        return 1;
+        return ExitFailed;
     }
     LiveSession live;
     live.setRosMasterUri(lab.rosMasterUri());
@@ -109,23 +112,23 @@ int runDemoCommand(const QStringList& arguments)
         = Demo::tr("bridgescope demo: %1 bytes at %2 Hz").arg(labOptions.payloadBytes).arg(labOptions.rateHz);
     if (!measure.startRecording(runPath, info, &why)) {
         err(why);
-        return 1;
+        return ExitFailed;
     }
-    int exitCode = 0;
+    int exitCode = ExitOk;
     QElapsedTimer clock;
     clock.start();
     QTimer check;
+    CliOutput::whenStopRequested(&check, [] { QCoreApplication::exit(ExitOk); });
     qint64 lastReport = 0;
     QObject::connect(&check, &QTimer::timeout, [&] {
-        if (CliOutput::stopRequested()
-            || (wantSeconds > 0 && clock.elapsed() >= qint64(wantSeconds * 1000))) {
-            QCoreApplication::exit(0);
+        if (wantSeconds > 0 && clock.elapsed() >= qint64(wantSeconds * 1000)) {
+            QCoreApplication::exit(ExitOk);
             return;
         }
         if (!lab.isRunning()) {
             err(Demo::tr("the demo lab failed: %1").arg(lab.failure()));
-            exitCode = 1;
-            QCoreApplication::exit(1);
+            exitCode = ExitFailed;
+            QCoreApplication::exit(ExitFailed);
             return;
         }
         if (clock.elapsed() - lastReport >= 1000) {
@@ -143,7 +146,7 @@ int runDemoCommand(const QStringList& arguments)
     live.drainNow();
     if (!measure.stopRecording(&why)) {
         err(Demo::tr("recording failed: %1").arg(why));
-        exitCode = 1;
+        exitCode = ExitFailed;
     }
     lab.stop();
     if (exitCode != 0)
@@ -151,14 +154,14 @@ int runDemoCommand(const QStringList& arguments)
     const std::optional<Report> report = Report::build({runPath}, std::nullopt, {}, &why);
     if (!report) {
         err(why);
-        return 1;
+        return ExitFailed;
     }
     const QByteArray text = summary == ReportFormats::Format::Json ? ReportFormats::json(*report)
                                                                    : ReportFormats::markdown(*report);
     out(QString::fromUtf8(text).trimmed());
     if (parser.isSet(output))
         err(Demo::tr("the run is in %1").arg(runPath));
-    return report->runs().front()->engine->samples() > 0 ? 0 : 1;
+    return report->runs().front()->engine->samples() > 0 ? ExitOk : ExitFailed;
 }
 
 int runDemoNodeCommand(const QStringList& arguments)
@@ -184,7 +187,7 @@ int runDemoNodeCommand(const QStringList& arguments)
     const QString role = parser.positionalArguments().value(0);
     if (role != u"vehicle"_s && role != u"cloud"_s) {
         err(Demo::tr("demo-node takes vehicle or cloud"));
-        return 2;
+        return ExitUsage;
     }
     DemoNodes::Options o;
     o.masterUri = parser.value(master);
@@ -200,7 +203,7 @@ int runDemoNodeCommand(const QStringList& arguments)
         = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop, &why) : DemoNodes::runCloud(o, stop, &why);
     if (!ok && !CliOutput::stopRequested()) {
         err(Demo::tr("demo-node %1: %2").arg(role, why));
-        return 1;
+        return ExitFailed;
     }
-    return 0;
+    return ExitOk;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "discovercommand.h"
 
-#include "clioutput.h"
+#include "app/cli/clioutput.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
@@ -16,6 +16,9 @@
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
 using CliOutput::out;
 
 namespace {
@@ -120,7 +123,7 @@ int runDiscoverCommand(const QStringList& arguments)
     const double secs = parser.value(seconds).toDouble(&ok);
     if (!ok || secs <= 0) {
         err(Discover::tr("--seconds takes a positive number"));
-        return 2;
+        return ExitUsage;
     }
     MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
     if (parser.isSet(filter))
@@ -128,7 +131,7 @@ int runDiscoverCommand(const QStringList& arguments)
     QString why;
     if (!profile.validate(&why)) {
         err(why);
-        return 2;
+        return ExitUsage;
     }
 
     RosGraphPoller poller;
@@ -144,7 +147,8 @@ int runDiscoverCommand(const QStringList& arguments)
     QTimer drain;
     QObject::connect(&drain, &QTimer::timeout, [&] { tree.apply(connection.takeMessages()); });
     drain.start(33);
-    QTimer::singleShot(int(secs * 1000), QCoreApplication::instance(), [] { QCoreApplication::exit(0); });
+    QTimer::singleShot(int(secs * 1000), QCoreApplication::instance(),
+                       [] { QCoreApplication::exit(ExitOk); });
     QCoreApplication::exec();
     tree.apply(connection.takeMessages());
 
@@ -159,7 +163,7 @@ int runDiscoverCommand(const QStringList& arguments)
     if (!poller.isReachable() && !connected) {
         err(Discover::tr("Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.")
                 .arg(poller.masterUri(), profile.url));
-        return 1;
+        return ExitFailed;
     }
-    return 0;
+    return ExitOk;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "probecommand.h"
 
-#include "clioutput.h"
+#include "app/cli/clioutput.h"
 #include "latency/latencyreport.h"
 #include "mqtt/linkprobe.h"
 
@@ -14,6 +14,9 @@
 #include <QTimer>
 
 using namespace Qt::StringLiterals;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
 using CliOutput::err;
 using CliOutput::out;
 
@@ -212,7 +215,7 @@ int runProbeCommand(const QStringList& arguments)
         return parsed;
     if (!parser.positionalArguments().isEmpty()) {
         err(Probe::tr("probe takes no arguments, only options; see bridgescope probe --help"));
-        return 2;
+        return ExitUsage;
     }
 
     LinkProbeOptions options;
@@ -221,24 +224,24 @@ int runProbeCommand(const QStringList& arguments)
     options.payloadBytes = parser.value(size).toInt(&ok);
     if (!ok) {
         err(Probe::tr("--size takes a number of bytes"));
-        return 2;
+        return ExitUsage;
     }
     options.qos = parser.value(qos).toInt(&ok);
     if (!ok) {
         err(Probe::tr("--qos must be 0, 1 or 2"));
-        return 2;
+        return ExitUsage;
     }
     options.count = parser.value(count).toLongLong(&ok);
     if (!ok) {
         err(Probe::tr("--count takes a number of messages"));
-        return 2;
+        return ExitUsage;
     }
     double waitSeconds = 0;
     if (!toNumber(parser.value(rate), &options.rateHz) || !toNumber(parser.value(maxRate), &options.maxRateHz)
         || !toNumber(parser.value(maxSeconds), &options.sweepSeconds)
         || !toNumber(parser.value(wait), &waitSeconds) || waitSeconds < 0 || waitSeconds > 3600) {
         err(Probe::tr("--rate, --max-rate, --max-seconds and --wait take numbers"));
-        return 2;
+        return ExitUsage;
     }
     options.drainMs = int(waitSeconds * 1000);
     options.viaEcho = parser.isSet(viaEcho);
@@ -246,14 +249,14 @@ int runProbeCommand(const QStringList& arguments)
     const bool isEcho = parser.isSet(echo);
     if (isEcho && (isSweep || options.viaEcho)) {
         err(Probe::tr("--echo answers other probes; it cannot be combined with --sweep or --via-echo"));
-        return 2;
+        return ExitUsage;
     }
     if (!isSweep && !parser.isSet(maxRate))
         options.maxRateHz = std::max(options.maxRateHz, options.rateHz);
     QString why;
     if (!options.validate(&why)) {
         err(why);
-        return 2;
+        return ExitUsage;
     }
 
     LinkProbe probe;
@@ -279,16 +282,10 @@ int runProbeCommand(const QStringList& arguments)
     });
     QObject::connect(&probe, &LinkProbe::finished, [&report](const LinkProbeReport& r) {
         report = r;
-        QCoreApplication::exit(0);
+        QCoreApplication::exit(ExitOk);
     });
-    CliOutput::catchStopSignals();
+    CliOutput::whenStopRequested(&probe, [&probe] { probe.stop(); });
     CliOutput::keepFreedMemory(); // 0.18 MB messages at hundreds per second
-    QTimer check;
-    QObject::connect(&check, &QTimer::timeout, [&probe] {
-        if (CliOutput::stopRequested())
-            probe.stop();
-    });
-    check.start(50);
     if (isEcho)
         probe.startEcho(options);
     else if (isSweep)
@@ -299,11 +296,11 @@ int runProbeCommand(const QStringList& arguments)
 
     if (report.steps.empty() && !report.error.isEmpty()) {
         err(report.error);
-        return 1;
+        return ExitFailed;
     }
     if (isEcho) {
         err(Probe::tr("%1 messages echoed").arg(probe.echoed()));
-        return 0;
+        return ExitOk;
     }
     if (parser.isSet(json))
         out(QString::fromUtf8(QJsonDocument(Probe::json(report, options)).toJson(QJsonDocument::Indented))
@@ -312,14 +309,14 @@ int runProbeCommand(const QStringList& arguments)
         Probe::printText(report, options);
     if (!report.error.isEmpty()) {
         err(report.error);
-        return 1;
+        return ExitFailed;
     }
     if (report.received() == 0) {
         err(options.viaEcho
                 ? Probe::tr("Nothing came back through %1; is 'bridgescope probe --echo' running on a host connected to it?")
                       .arg(options.profile.url)
                 : Probe::tr("Nothing came back from %1.").arg(options.profile.url));
-        return 1;
+        return ExitFailed;
     }
-    return 0;
+    return ExitOk;
 }

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "recordcommand.h"
 
-#include "clioutput.h"
-#include "common/livesession.h"
-#include "common/measuresession.h"
+#include "app/cli/clioutput.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -16,6 +16,9 @@
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
 using CliOutput::out;
 
 namespace {
@@ -56,29 +59,29 @@ int runRecordCommand(const QStringList& arguments)
         return parsed;
     if (!parser.isSet(pipeline) || !parser.isSet(output)) {
         err(Record::tr("record needs --pipeline and -o; see bridgescope record --help"));
-        return 2;
+        return ExitUsage;
     }
     bool ok = true;
     const qint64 wantSamples = parser.isSet(samples) ? parser.value(samples).toLongLong(&ok) : 0;
     if (!ok || wantSamples < 0) {
         err(Record::tr("--samples takes a number of samples"));
-        return 2;
+        return ExitUsage;
     }
     const double wantSeconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
     if (!ok || wantSeconds < 0) {
         err(Record::tr("--seconds takes a number of seconds"));
-        return 2;
+        return ExitUsage;
     }
     QString why;
     const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);
     if (!pipe) {
         err(why);
-        return 2;
+        return ExitUsage;
     }
     MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
     if (!profile.validate(&why)) {
         err(why);
-        return 2;
+        return ExitUsage;
     }
     RunInfo info;
     info.name = parser.isSet(name) ? parser.value(name) : QFileInfo(parser.value(output)).completeBaseName();
@@ -87,7 +90,7 @@ int runRecordCommand(const QStringList& arguments)
         QFile f(parser.value(config));
         if (!f.open(QIODevice::ReadOnly)) {
             err(Record::tr("%1: %2").arg(parser.value(config), f.errorString()));
-            return 2;
+            return ExitUsage;
         }
         info.bridgeConfigPath = QFileInfo(f).absoluteFilePath();
         info.bridgeConfig = f.readAll();
@@ -95,7 +98,7 @@ int runRecordCommand(const QStringList& arguments)
 
     if (QFileInfo::exists(parser.value(output))) { // before any connection is made
         err(Record::tr("%1 exists already; a run is never overwritten").arg(parser.value(output)));
-        return 2;
+        return ExitUsage;
     }
 
     LiveSession live;
@@ -105,25 +108,25 @@ int runRecordCommand(const QStringList& arguments)
     measure.setPipeline(*pipe);
     if (!measure.startRecording(parser.value(output), info, &why)) {
         err(why);
-        return 2;
+        return ExitUsage;
     }
-    CliOutput::catchStopSignals();
-    int exitCode = 0;
+    int exitCode = ExitOk;
     QElapsedTimer clock;
     clock.start();
     QObject::connect(&measure, &MeasureSession::recordingFailed, [&exitCode](const QString& failure) {
         err(Record::tr("recording failed: %1").arg(failure));
-        exitCode = 1;
-        QCoreApplication::exit(1);
+        exitCode = ExitFailed;
+        QCoreApplication::exit(ExitFailed);
     });
     QTimer check;
+    CliOutput::whenStopRequested(&check, [] { QCoreApplication::exit(ExitOk); });
     qint64 lastReport = 0;
     QObject::connect(&check, &QTimer::timeout, [&] {
         const LatencyEngine& e = measure.engine();
         const bool enough = wantSamples > 0 && e.samples() >= wantSamples;
         const bool late = wantSeconds > 0 && clock.elapsed() >= qint64(wantSeconds * 1000);
-        if (CliOutput::stopRequested() || enough || late) {
-            QCoreApplication::exit(0);
+        if (enough || late) {
+            QCoreApplication::exit(ExitOk);
             return;
         }
         if (clock.elapsed() - lastReport >= 1000) {
@@ -145,11 +148,11 @@ int runRecordCommand(const QStringList& arguments)
     const qint64 complete = measure.engine().samples();
     if (!measure.stopRecording(&why)) {
         err(Record::tr("recording failed: %1").arg(why));
-        return 1;
+        return ExitFailed;
     }
     out(Record::tr("%1: %2 complete samples, %3 stamps")
             .arg(parser.value(output))
             .arg(complete)
             .arg(measure.recorder()->committedStamps()));
-    return 0;
+    return ExitOk;
 }

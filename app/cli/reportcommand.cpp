@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "reportcommand.h"
 
-#include "clioutput.h"
-#include "common/atomicfile.h"
-#include "record/report.h"
-#include "record/reportformats.h"
-#include "reportpdf.h"
+#include "app/cli/clioutput.h"
+#include "base/atomicfile.h"
+#include "report/report.h"
+#include "report/reportformats.h"
 
 #include <cstdio>
 #include <QCommandLineParser>
@@ -15,6 +14,8 @@
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
+using CliOutput::ExitCancelled;
+using CliOutput::ExitUsage;
 using CliOutput::out;
 
 namespace {
@@ -66,14 +67,14 @@ int runReportCommand(const QStringList& arguments)
     if (!ReportFormats::parse(parser.value(format), &fmt)) {
         err(ReportText::tr("unknown format %1 (known: json, csv, md, tex, html, pdf)")
                 .arg(parser.value(format)));
-        return 2;
+        return ExitUsage;
     }
     bool ok = false;
     Report::Options options;
     options.window = parser.value(window).toLongLong(&ok);
     if (!ok || options.window < 0) {
         err(ReportText::tr("--window takes a number of samples (0: all)"));
-        return 2;
+        return ExitUsage;
     }
     options.join = parser.isSet(join);
     options.skipBadRows = parser.isSet(skip);
@@ -81,7 +82,7 @@ int runReportCommand(const QStringList& arguments)
     const QStringList inputs = parser.positionalArguments();
     if (inputs.isEmpty()) {
         err(ReportText::tr("no input files; see bridgescope report --help"));
-        return 2;
+        return ExitUsage;
     }
     std::optional<Pipeline> pipe;
     QString why;
@@ -89,7 +90,7 @@ int runReportCommand(const QStringList& arguments)
         pipe = Pipeline::load(parser.value(pipeline), &why);
         if (!pipe) {
             err(why);
-            return 2;
+            return ExitUsage;
         }
     }
 
@@ -113,48 +114,28 @@ int runReportCommand(const QStringList& arguments)
         std::fprintf(stderr, "\r\033[K");
     if (CliOutput::stopRequested()) {
         err(ReportText::tr("cancelled; nothing written"));
-        return 130;
+        return ExitCancelled;
     }
     if (!report) {
         err(why);
-        return 2;
+        return ExitUsage;
     }
     for (const QString& w : std::as_const(warnings))
         err(ReportText::tr("%1 (row skipped)").arg(w));
 
-    QByteArray text;
-    switch (fmt) {
-    case ReportFormats::Format::Json:
-        text = ReportFormats::json(*report);
-        break;
-    case ReportFormats::Format::Csv:
-        text = ReportFormats::csv(*report, parser.isSet(perSample), &why);
-        if (text.isEmpty() && !why.isEmpty()) {
-            err(why);
-            return 2;
-        }
-        break;
-    case ReportFormats::Format::Markdown:
-        text = ReportFormats::markdown(*report);
-        break;
-    case ReportFormats::Format::Latex:
-        text = ReportFormats::latex(*report);
-        break;
-    case ReportFormats::Format::Html:
-        text = ReportFormats::html(*report);
-        break;
-    case ReportFormats::Format::Pdf:
-        text = ReportPdf::render(*report);
-        break;
+    const QByteArray text = ReportFormats::render(*report, fmt, parser.isSet(perSample), &why);
+    if (text.isEmpty() && !why.isEmpty()) {
+        err(why);
+        return ExitUsage;
     }
     if (CliOutput::stopRequested()) { // formatting thousands of stages takes a while too
         err(ReportText::tr("cancelled; nothing written"));
-        return 130;
+        return ExitCancelled;
     }
     if (parser.isSet(output)) {
         if (!AtomicFile::write(parser.value(output), text, &why, false)) {
             err(why);
-            return 2;
+            return ExitUsage;
         }
     } else if (fmt == ReportFormats::Format::Pdf) {
         std::fwrite(text.constData(), 1, std::size_t(text.size()), stdout);

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "referencebridge.h"
 
-#include "common/wallclock.h"
+#include "base/wallclock.h"
 #include "config/configreader.h"
-#include "latency/stampcodec.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttlink.h"
 #include "ros/rosendpoint.h"
+#include "wire/mqttclientwire.h"
+#include "wire/stampcodec.h"
 
 #include <cmath>
 #include <cstring>

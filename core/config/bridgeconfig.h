@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "optionschema.h"
+#include "base/textpos.h"
+#include "config/optionschema.h"
 
 #include <QHash>
 #include <QList>
@@ -27,15 +28,6 @@ inline OptionScope scopeOf(Direction d)
 {
     return d == Direction::Ros2Mqtt ? OptionScope::Ros2Mqtt : OptionScope::Mqtt2Ros;
 }
-
-/// A place in a text file; zero-based internally, printed one-based.
-struct TextPos
-{
-    int line = -1;
-    int column = -1;
-    bool isValid() const { return line >= 0; }
-    bool operator==(const TextPos& o) const { return line == o.line && column == o.column; }
-};
 
 /// The option values of one block (broker, client or a mapping), as written in the file.
 ///

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "configdocument.h"
 
-#include "common/atomicfile.h"
-#include "configpatcher.h"
-#include "configreader.h"
-#include "configwriter.h"
+#include "base/atomicfile.h"
+#include "base/logging.h"
+#include "config/configpatcher.h"
+#include "config/configreader.h"
+#include "config/configwriter.h"
 
 #include <algorithm>
 #include <QFile>
@@ -51,6 +52,9 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     emit layoutChanged(m_layout);
     emit modifiedChanged(false);
     emit problemsChanged();
+    qCDebug(lcConfig).noquote() << "opened" << m_path << layoutName(m_layout) << m_current.mappings.size()
+                                << "mappings," << read.problems.size() << "read problems"
+                                << (m_lossy ? "(lossy)" : "");
     result.ok = true;
     return result;
 }
@@ -158,6 +162,8 @@ ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayou
     adoptSaved(bytes, written);
     if (pathChanged)
         emit filePathChanged(m_path);
+    qCDebug(lcConfig).noquote() << "saved" << m_path << layoutName(layout) << bytes.size() << "bytes,"
+                                << (result.rewritten ? "rewritten" : "patched in place");
     result.status = SaveResult::Saved;
     return result;
 }

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridgeconfig.h"
-#include "configreader.h"
-#include "configvalidator.h"
-#include "problem.h"
+#include "config/bridgeconfig.h"
+#include "config/configreader.h"
+#include "config/configvalidator.h"
+#include "config/problem.h"
 
 #include <QObject>
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "configpatcher.h"
 
-#include "configreader.h"
-#include "configwriter.h"
-#include "yamllimits.h"
-#include "yamltree.h"
+#include "base/yamllimits.h"
+#include "base/yamltree.h"
+#include "config/configreader.h"
+#include "config/configwriter.h"
 
 #include <algorithm>
 #include <yaml-cpp/yaml.h>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridgeconfig.h"
-#include "configreader.h"
+#include "config/bridgeconfig.h"
+#include "config/configreader.h"
 
 #include <optional>
 #include <QByteArray>

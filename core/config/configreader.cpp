@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "configreader.h"
 
-#include "common/exactutf8.h"
-
-#include "yamllimits.h"
-#include "yamltree.h"
+#include "base/exactutf8.h"
+#include "base/yamllimits.h"
+#include "base/yamltree.h"
 
 #include <yaml-cpp/yaml.h>
 

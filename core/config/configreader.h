@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridgeconfig.h"
-#include "problem.h"
+#include "config/bridgeconfig.h"
+#include "config/problem.h"
 
 #include <QByteArray>
 #include <QCoreApplication>

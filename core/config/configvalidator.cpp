@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "configvalidator.h"
 
-#include "yamltree.h"
+#include "base/topicnames.h"
+#include "base/yamltree.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -201,7 +202,7 @@ public:
             add(Severity::Error, u"empty-topic"_s, &m, m.scope(), u"ros_topic"_s,
                 tr("%1 has no ROS topic; mqtt_client ignores the mapping.").arg(describe(m)),
                 tr("Set ros_topic, e.g. /vehicle/points."));
-        } else if (!ConfigValidator::isValidRosName(name, m_cfg.layout == ConfigLayout::Ros2, &why)) {
+        } else if (!TopicNames::isValidRosName(name, m_cfg.layout == ConfigLayout::Ros2, &why)) {
             add(Severity::Error, u"invalid-ros-name"_s, &m, m.scope(), u"ros_topic"_s,
                 tr("%1: '%2' is not a valid ROS topic name: %3.").arg(describe(m), name, why),
                 tr("Use letters, digits, '_' and '/', starting with a letter, '/' or '~'."));
@@ -221,7 +222,7 @@ public:
                 tr("Set mqtt_topic, e.g. vehicle/points."));
             return;
         }
-        if (publish && ConfigValidator::hasWildcard(topic)) {
+        if (publish && TopicNames::hasWildcard(topic)) {
             add(Severity::Error, u"wildcard-in-published-topic"_s, &m, m.scope(), u"mqtt_topic"_s,
                 tr("%1: '%2' contains '+' or '#', but ros2mqtt publishes on it and MQTT forbids wildcards "
                    "in published topics.")
@@ -229,13 +230,13 @@ public:
                 tr("Replace the wildcard by a concrete topic level."));
             return;
         }
-        if (!ConfigValidator::isValidMqttTopic(topic, publish, &why)) {
+        if (!TopicNames::isValidMqttTopic(topic, publish, &why)) {
             add(Severity::Error, u"invalid-mqtt-topic"_s, &m, m.scope(), u"mqtt_topic"_s,
                 tr("%1: '%2' is not a valid MQTT topic: %3.").arg(describe(m), topic, why),
                 tr("Fix the topic name."));
             return;
         }
-        if (!publish && ConfigValidator::hasWildcard(topic)) {
+        if (!publish && TopicNames::hasWildcard(topic)) {
             add(Severity::Warning, u"wildcard-subscription"_s, &m, m.scope(), u"mqtt_topic"_s,
                 tr("%1: '%2' is a wildcard filter; mqtt_client looks incoming messages up by their exact "
                    "topic, so messages matching it are dropped.")
@@ -321,7 +322,7 @@ public:
                 } else {
                     inByMqtt.insert(m.mqttTopic(), &m);
                 }
-                if (ConfigValidator::hasWildcard(m.mqttTopic()))
+                if (TopicNames::hasWildcard(m.mqttTopic()))
                     wildcardIns << &m;
             }
         }
@@ -332,7 +333,7 @@ public:
             QList<const Mapping*> sources = outByMqtt.value(m.mqttTopic());
             if (wildcardIns.contains(&m)) {
                 for (auto it = outByMqtt.cbegin(); it != outByMqtt.cend(); ++it) {
-                    if (ConfigValidator::topicMatches(m.mqttTopic(), it.key()))
+                    if (TopicNames::topicMatches(m.mqttTopic(), it.key()))
                         sources += it.value();
                 }
             }
@@ -386,7 +387,7 @@ public:
         const QString will = c.text(u"last_will.topic"_s);
         if (!will.isEmpty() && !YamlText::isSubstitution(will)) {
             QString why;
-            if (!ConfigValidator::isValidMqttTopic(will, true, &why)) {
+            if (!TopicNames::isValidMqttTopic(will, true, &why)) {
                 add(Severity::Error, u"invalid-mqtt-topic"_s, nullptr, OptionScope::Client,
                     u"last_will.topic"_s,
                     tr("client.last_will.topic '%1' is not a topic the broker can publish on: %2.")
@@ -432,110 +433,6 @@ QList<Problem> ConfigValidator::validate(const BridgeConfig& config, const Optio
     Checker c(config, options);
     c.run();
     return c.problems;
-}
-
-// Names that passed through a decoder which replaced bytes it could not read (U+FFFD), or strings
-// with halves of UTF-16 pairs: no broker or master would see the name the user meant.
-static QString encodingProblem(const QString& text)
-{
-    for (qsizetype i = 0; i < text.size(); ++i) {
-        const QChar c = text[i];
-        if (c.unicode() == 0xfffd)
-            return ConfigValidator::tr("it contains U+FFFD, the mark of bytes that were not valid UTF-8");
-        if (c.isHighSurrogate() && i + 1 < text.size() && text[i + 1].isLowSurrogate()) {
-            ++i;
-            continue;
-        }
-        if (c.isSurrogate())
-            return ConfigValidator::tr("it is not valid Unicode (half of a UTF-16 surrogate pair)");
-    }
-    return QString();
-}
-
-bool ConfigValidator::isValidRosName(const QString& name, bool strict, QString* why)
-{
-    auto fail = [why](const QString& reason) {
-        if (why)
-            *why = reason;
-        return false;
-    };
-    if (name.isEmpty())
-        return fail(tr("it is empty"));
-    if (const QString bad = encodingProblem(name); !bad.isEmpty())
-        return fail(bad);
-    const QChar first = name.front();
-    if (!(first.isLetter() && first.unicode() < 128) && first != u'/' && first != u'~')
-        return fail(tr("it must start with a letter, '/' or '~'"));
-    for (int i = 1; i < name.size(); ++i) {
-        const QChar c = name[i];
-        const bool ok = (c.unicode() < 128 && c.isLetterOrNumber()) || c == u'_' || c == u'/';
-        if (!ok)
-            return fail(tr("'%1' is not allowed (only letters, digits, '_' and '/')").arg(c));
-    }
-    if (name.contains(u"//"_s))
-        return fail(tr("it contains '//'"));
-    if (name.size() > 1 && name.endsWith(u'/'))
-        return fail(tr("it ends with '/'"));
-    if (name.startsWith(u'~') && name.size() > 1 && name[1] != u'/')
-        return fail(tr("'~' must be followed by '/'"));
-    if (strict) {
-        for (const QString& token : name.split(u'/', Qt::SkipEmptyParts)) {
-            if (token != u"~"_s && token.front().isDigit())
-                return fail(tr("in ROS 2 a name level must not start with a digit"));
-        }
-    }
-    return true;
-}
-
-bool ConfigValidator::hasWildcard(const QString& topic)
-{
-    return topic.contains(u'+') || topic.contains(u'#');
-}
-
-bool ConfigValidator::isValidMqttTopic(const QString& topic, bool publish, QString* why)
-{
-    auto fail = [why](const QString& reason) {
-        if (why)
-            *why = reason;
-        return false;
-    };
-    if (topic.isEmpty())
-        return fail(tr("it is empty"));
-    if (topic.contains(QChar(0)))
-        return fail(tr("it contains a NUL character"));
-    if (const QString bad = encodingProblem(topic); !bad.isEmpty())
-        return fail(bad);
-    if (topic.toUtf8().size() > 65535)
-        return fail(tr("it is longer than 65535 bytes"));
-    if (publish && hasWildcard(topic))
-        return fail(tr("wildcards are not allowed in a published topic"));
-    const QStringList levels = topic.split(u'/');
-    for (int i = 0; i < levels.size(); ++i) {
-        const QString& level = levels[i];
-        if (level.contains(u'#') && (level != u"#"_s || i != levels.size() - 1))
-            return fail(tr("'#' must be a whole level and the last one"));
-        if (level.contains(u'+') && level != u"+"_s)
-            return fail(tr("'+' must be a whole level"));
-    }
-    return true;
-}
-
-bool ConfigValidator::topicMatches(const QString& filter, const QString& topic)
-{
-    const QStringList f = filter.split(u'/');
-    const QStringList t = topic.split(u'/');
-    if (!filter.startsWith(u'$') && topic.startsWith(u'$'))
-        return false;
-    int i = 0;
-    for (; i < f.size(); ++i) {
-        if (f[i] == u"#"_s)
-            return true;
-        if (i >= t.size())
-            return false;
-        if (f[i] != u"+"_s && f[i] != t[i])
-            return false;
-    }
-    return i == t.size();
 }
 
 QString ConfigValidator::resolvePath(const QString& path, const QString& rosHome)

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridgeconfig.h"
-#include "problem.h"
+#include "config/bridgeconfig.h"
+#include "config/problem.h"
 
 #include <functional>
 #include <QCoreApplication>
@@ -25,13 +25,6 @@ public:
 
     static QList<Problem> validate(const BridgeConfig& config, const Options& options = {});
 
-    /// ROS graph resource name rules (ROS 1; `strict` adds the ROS 2 ones).
-    static bool isValidRosName(const QString& name, bool strict, QString* why = nullptr);
-    /// MQTT topic rules; `publish` forbids wildcards.
-    static bool isValidMqttTopic(const QString& topic, bool publish, QString* why = nullptr);
-    static bool hasWildcard(const QString& topic);
-    /// Whether an MQTT subscription filter matches a topic name.
-    static bool topicMatches(const QString& filter, const QString& topic);
     /// How mqtt_client resolves a relative file path.
     static QString resolvePath(const QString& path, const QString& rosHome);
 };

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "configwriter.h"
 
-#include "configreader.h"
-#include "yamltree.h"
+#include "base/yamltree.h"
+#include "config/configreader.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridgeconfig.h"
+#include "config/bridgeconfig.h"
 
 #include <QCoreApplication>
 #include <QStringList>

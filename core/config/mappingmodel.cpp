@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "mappingmodel.h"
 
-#include "common/topicmime.h"
-#include "configdocument.h"
-#include "yamltree.h"
+#include "base/topicmime.h"
+#include "base/yamltree.h"
+#include "config/configdocument.h"
 
 #include <QMimeData>
 

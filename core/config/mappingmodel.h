@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridgeconfig.h"
-#include "common/mappinghealth.h"
+#include "config/bridgeconfig.h"
+#include "config/mappinghealth.h"
 
 #include <functional>
 #include <QAbstractTableModel>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "peerconfig.h"
 
-#include "configvalidator.h"
+#include "base/topicnames.h"
 
 using namespace Qt::StringLiterals;
 
@@ -48,12 +48,12 @@ PeerConfig::Result PeerConfig::make(const BridgeConfig& config, const QString& c
                                         u"advanced.mqtt.qos"_s};
     for (const Mapping& m : config.mappings) {
         const bool out = m.direction == Direction::Ros2Mqtt;
-        if (out && ConfigValidator::hasWildcard(m.mqttTopic())) {
+        if (out && TopicNames::hasWildcard(m.mqttTopic())) {
             r.notes << tr("ros2mqtt '%1' publishes on '%2', which has a wildcard; it has no peer mapping.")
                            .arg(m.rosTopic(), m.mqttTopic());
             continue;
         }
-        if (!out && ConfigValidator::hasWildcard(m.mqttTopic())) {
+        if (!out && TopicNames::hasWildcard(m.mqttTopic())) {
             r.notes
                 << tr("mqtt2ros '%1' is a wildcard subscription; the peer cannot publish on it, so it has no "
                       "peer mapping.")

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "problemmodel.h"
 
-#include "configdocument.h"
+#include "config/configdocument.h"
 
 #include <algorithm>
 

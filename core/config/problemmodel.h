@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "problem.h"
+#include "config/problem.h"
 
 #include <QAbstractTableModel>
 

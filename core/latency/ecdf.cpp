@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ecdf.h"
 
-#include "latencyseries.h"
+#include "latency/latencyseries.h"
 
 #include <cmath>
 #include <limits>

@@ -55,7 +55,7 @@ void LatencyEngine::rebuildSeries()
     const Pipeline& p = m_pipeline;
     for (int s = 0; s < p.stageCount(); ++s) {
         SeriesInfo info;
-        info.id = u"stage:"_s + QString::number(s);
+        info.id = SeriesId::ofStage(s).toString();
         info.label = p.stageLabel(s);
         info.detail = p.topics()[s] + u" →\n"_s + p.topics()[s + 1];
         info.kind = Kind::Stage;
@@ -71,7 +71,7 @@ void LatencyEngine::rebuildSeries()
     }
     if (p.stageCount() > 0) {
         SeriesInfo total;
-        total.id = u"total"_s;
+        total.id = SeriesId::ofKind(Kind::Total).toString();
         total.label = tr("total");
         total.kind = Kind::Total;
         total.hostFrom = p.host(0);
@@ -80,19 +80,19 @@ void LatencyEngine::rebuildSeries()
     }
     if (!m_crossings.empty()) {
         SeriesInfo rt;
-        rt.id = u"round_trip"_s;
+        rt.id = SeriesId::ofKind(Kind::RoundTrip).toString();
         rt.label = tr("communication, round trip");
         rt.kind = Kind::RoundTrip;
         m_roundTrip = addSeries(std::move(rt), 1e-6);
         SeriesInfo ow;
-        ow.id = u"one_way"_s;
+        ow.id = SeriesId::ofKind(Kind::OneWay).toString();
         ow.label = tr("communication, one way (half the round trip)");
         ow.kind = Kind::OneWay;
         m_oneWay = addSeries(std::move(ow), 0.5e-6);
         if (const auto pair = p.outAndReturnCrossings()) {
             m_offsetStages = *pair;
             SeriesInfo off;
-            off.id = u"clock_offset"_s;
+            off.id = SeriesId::ofKind(Kind::ClockOffset).toString();
             off.hostFrom = p.host(pair->first);
             off.hostTo = p.host(pair->first + 1);
             off.label = tr("clock offset (%1 ahead of %2)").arg(off.hostTo, off.hostFrom);
@@ -141,7 +141,7 @@ void LatencyEngine::ingest(int topicIndex, qint64 sampleNs, qint64 timeNs, qint6
 
 void LatencyEngine::ingest(const LatencyValue& value)
 {
-    const QString id = u"ext:"_s + value.series;
+    const QString id = SeriesId::external(value.series).toString();
     int index = m_byId.value(id, -1);
     if (index < 0) {
         SeriesInfo info;

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latencyseries.h"
-#include "pipeline.h"
-#include "samplejoiner.h"
-#include "stampevent.h"
+#include "latency/ecdfsource.h"
+#include "latency/latencyseries.h"
+#include "latency/pipeline.h"
+#include "latency/samplejoiner.h"
+#include "latency/seriesid.h"
+#include "wire/stampevent.h"
 
 #include <functional>
 #include <memory>
@@ -18,21 +20,14 @@
 ///
 /// Pure logic (no ROS, no MQTT, no widgets): sources hand it plain events on the GUI thread, the
 /// report command hands it samples from files. Per sample it does O(stages · log window) work.
-class LatencyEngine
+class LatencyEngine final : public EcdfSource
 {
     Q_DECLARE_TR_FUNCTIONS(LatencyEngine)
 public:
-    enum class Kind {
-        Stage, ///< stamp i to stamp i+1
-        Total, ///< first stamp to last
-        RoundTrip, ///< total minus every same-host stage: the sum of the crossings
-        OneWay, ///< half the round trip (the paper's "average of both ways")
-        ClockOffset, ///< ((c_in - v_out) - (v_in - c_out)) / 2: the far host's clock ahead of ours
-        External, ///< a latency measured by somebody else (mqtt_client's ~/latencies, stamped MQTT)
-    };
+    using Kind = SeriesKind;
     struct SeriesInfo
     {
-        QString id; ///< stable: "stage:3", "total", "round_trip", "one_way", "clock_offset", "ext:<name>"
+        QString id; ///< SeriesId::toString(), stable
         QString label;
         QString detail; ///< stages: both topics in full
         Kind kind = Kind::Stage;
@@ -88,6 +83,11 @@ public:
     /// Changes whenever a value arrives or the series change (redraw only when it moved).
     quint64 revision() const { return m_revision; }
     quint64 layoutRevision() const { return m_layoutRevision; }
+
+    int ecdfIndex(const QString& id) const override { return indexOf(id); }
+    const LatencySeries& ecdfSeries(int index) const override { return series(index); }
+    QString ecdfLabel(int index) const override { return info(index).label; }
+    quint64 ecdfLayoutRevision() const override { return m_layoutRevision; }
 
 private:
     void rebuildSeries();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "latencyreport.h"
 
-#include "latencyengine.h"
+#include "latency/latencyengine.h"
 
 #include <cmath>
 #include <QJsonArray>

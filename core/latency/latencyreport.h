@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latencystats.h"
+#include "latency/latencystats.h"
 
 #include <QJsonObject>
 #include <QJsonValue>

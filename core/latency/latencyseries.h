@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latencystats.h"
-#include "sortedblocks.h"
+#include "latency/latencystats.h"
+#include "latency/sortedblocks.h"
 
 #include <utility>
 #include <vector>

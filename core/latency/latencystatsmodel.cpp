@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "latencystatsmodel.h"
 
+#include "latency/seriesid.h"
+
 #include <cmath>
 
 using namespace Qt::StringLiterals;
@@ -8,7 +10,7 @@ using namespace Qt::StringLiterals;
 LatencyStatsModel::LatencyStatsModel(QObject* parent)
     : QAbstractTableModel(parent)
 {
-    m_checked.insert(u"total"_s);
+    m_checked.insert(SeriesId::ofKind(SeriesKind::Total).toString());
 }
 
 QString LatencyStatsModel::msText(double ms)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latencyengine.h"
+#include "latency/latencyengine.h"
 
 #include <QAbstractTableModel>
 #include <QSet>

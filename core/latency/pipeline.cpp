@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline.h"
 
-#include "common/atomicfile.h"
-#include "config/yamllimits.h"
-#include "config/yamltree.h"
+#include "base/atomicfile.h"
+#include "base/yamllimits.h"
+#include "base/yamltree.h"
 
 #include <QFile>
 #include <QRegularExpression>

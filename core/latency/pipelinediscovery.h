@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "pipeline.h"
-#include "stampevent.h"
+#include "latency/pipeline.h"
+#include "wire/stampevent.h"
 
 #include <deque>
 #include <QHash>

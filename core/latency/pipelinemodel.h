@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "pipeline.h"
+#include "latency/pipeline.h"
 
 #include <functional>
 #include <QAbstractTableModel>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "stamptopicmodel.h"
 
-#include "common/topicmime.h"
-#include "pipeline.h"
-#include "pipelinediscovery.h"
+#include "base/topicmime.h"
+#include "latency/pipeline.h"
+#include "latency/pipelinediscovery.h"
 
 #include <algorithm>
 #include <QSet>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "linkprobe.h"
 
-#include "common/wallclock.h"
+#include "base/wallclock.h"
 #include "latency/latencyseries.h"
-#include "mqttlink.h"
+#include "mqtt/mqttlink.h"
 
 #include <algorithm>
 #include <chrono>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "latency/latencystats.h"
-#include "mqttprofile.h"
+#include "mqtt/mqttprofile.h"
 
 #include <atomic>
 #include <memory>

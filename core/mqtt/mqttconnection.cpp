@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "mqttconnection.h"
 
-#include "common/exactutf8.h"
-#include "common/wallclock.h"
-#include "pahooptions.h"
+#include "base/exactutf8.h"
+#include "base/logging.h"
+#include "base/secrets.h"
+#include "base/wallclock.h"
+#include "mqtt/pahooptions.h"
 
 #include <atomic>
 #include <chrono>
@@ -161,6 +163,7 @@ void MqttConnection::setState(State state, const QString& detail)
         return;
     m_state = state;
     m_detail = detail;
+    qCDebug(lcMqtt).noquote() << Secrets::urlWithoutCredentials(m_profile.url) << stateText(state) << detail;
     emit stateChanged(state, detail);
 }
 
@@ -268,6 +271,9 @@ void MqttConnection::startClient()
             });
         }
         auto builder = PahoOptions::connectOptions(p);
+        qCDebug(lcMqtt).noquote() << "connecting to" << Secrets::urlWithoutCredentials(p.url) << "as"
+                                  << QString::fromStdString(clientId) << "subscribing"
+                                  << p.filters.join(u' ');
         // TLS failures are diagnosed with QSslSocket (diagnoseTls): Paho's ssl error handler is unsafe.
         setState(d->shared->connects > 0 ? State::Reconnecting : State::Connecting, p.url);
         d->listener = std::make_unique<ConnectListener>(shared, p.url);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "common/eventbuffer.h"
-#include "mqttprofile.h"
+#include "base/eventbuffer.h"
+#include "mqtt/mqttprofile.h"
 
 #include <memory>
 #include <QByteArray>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "mqttlink.h"
 
-#include "common/exactutf8.h"
-#include "common/wallclock.h"
-#include "pahooptions.h"
+#include "base/exactutf8.h"
+#include "base/wallclock.h"
+#include "mqtt/pahooptions.h"
 
 #include <chrono>
 #include <mqtt/async_client.h>

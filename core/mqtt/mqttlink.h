@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "mqttprofile.h"
+#include "mqtt/mqttprofile.h"
 
 #include <functional>
 #include <memory>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mqttprofile.h"
 
-#include "common/secrets.h"
-#include "config/configvalidator.h"
+#include "base/secrets.h"
+#include "base/topicnames.h"
 
 #include <QSettings>
 #include <QUrl>
@@ -48,7 +48,7 @@ bool MqttProfile::validate(QString* error) const
         return fail(ProfileText::tr("Subscribe at least one topic filter, e.g. #."));
     for (const QString& f : filters) {
         QString why;
-        if (!ConfigValidator::isValidMqttTopic(f, false, &why))
+        if (!TopicNames::isValidMqttTopic(f, false, &why))
             return fail(ProfileText::tr("Filter '%1': %2.").arg(f, why));
     }
     if (!certFile.isEmpty() && keyFile.isEmpty())

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mqttstampdecoder.h"
 
-#include "latency/stampcodec.h"
-#include "mqttclientwire.h"
+#include "wire/mqttclientwire.h"
+#include "wire/stampcodec.h"
 
 #include <algorithm>
 #include <string_view>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latency/stampevent.h"
-#include "mqttconnection.h"
+#include "mqtt/mqttconnection.h"
+#include "wire/stampevent.h"
 
 #include <QCoreApplication>
 #include <QHash>

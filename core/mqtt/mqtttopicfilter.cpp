@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqtttopicfilter.h"
 
-#include "mqtttopictree.h"
+#include "mqtt/mqtttopictree.h"
 
 MqttTopicFilter::MqttTopicFilter(QObject* parent)
     : QSortFilterProxyModel(parent)

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mqtttopictree.h"
 
-#include "common/topicmime.h"
-#include "ros/rosmessage.h"
+#include "base/topicmime.h"
+#include "wire/rosmessage.h"
 
 #include <algorithm>
 #include <QDateTime>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "mqttclientwire.h"
-#include "mqttconnection.h"
+#include "mqtt/mqttconnection.h"
+#include "wire/mqttclientwire.h"
 
 #include <deque>
 #include <functional>

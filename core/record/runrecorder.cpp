@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "runrecorder.h"
 
+#include "base/logging.h"
+
 #include <atomic>
 #include <mutex>
 #include <QDateTime>
@@ -78,6 +80,7 @@ bool RunRecorder::start(const QString& path, const RunInfo& info, QString* error
     connect(&d->thread, &QThread::finished, d->worker, &QObject::deleteLater);
     d->thread.start();
     d->recording = true;
+    qCDebug(lcRecord).noquote() << "recording to" << path;
     std::shared_ptr<Private> p = d;
     QPointer<RunRecorder> self(this);
     QString openError;
@@ -148,6 +151,7 @@ bool RunRecorder::stop(QString* error)
         },
         Qt::BlockingQueuedConnection);
     d->recording = false;
+    qCDebug(lcRecord).noquote() << "stopped recording to" << d->path << (ok ? "" : "failed:") << why;
     d->thread.quit();
     d->thread.wait();
     if (!ok && error)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "runfile.h"
+#include "record/runfile.h"
 
 #include <memory>
 #include <QObject>

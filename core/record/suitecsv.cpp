@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "suitecsv.h"
 
-#include "latency/stampcodec.h"
+#include "wire/stampcodec.h"
 
 #include <QFile>
 #include <QSet>

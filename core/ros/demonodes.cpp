@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "demonodes.h"
 
-#include "common/wallclock.h"
-#include "latency/stampcodec.h"
-#include "rosbytes.h"
-#include "rosendpoint.h"
+#include "base/wallclock.h"
+#include "ros/rosbytes.h"
+#include "ros/rosendpoint.h"
+#include "wire/stampcodec.h"
 
 #include <geometry_msgs/PoseArray.h>
 #include <random>

@@ -2,9 +2,9 @@
 #include "rosbagimport.h"
 
 #include "latency/pipelinediscovery.h"
-#include "latency/stampcodec.h"
-#include "record/bagreaderprocess.h"
-#include "rosstampsource.h"
+#include "ros/rosstampsource.h"
+#include "wire/bagheader.h"
+#include "wire/stampcodec.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -21,7 +21,7 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
             *error = path + u": "_s + why;
         return std::nullopt;
     };
-    if (const QString why = BagReaderProcess::refusal(path); !why.isEmpty())
+    if (const QString why = BagHeader::refusal(path); !why.isEmpty())
         return fail(why);
     RunData run;
     try {

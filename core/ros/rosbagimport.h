@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "record/runfile.h"
+#include "latency/rundata.h"
 
 #include <optional>
 #include <QCoreApplication>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rosendpoint.h"
 
-#include "common/wallclock.h"
-#include "rosbytes.h"
-#include "rosreregistration.h"
+#include "base/wallclock.h"
+#include "ros/rosbytes.h"
+#include "ros/rosreregistration.h"
 
 #include <condition_variable>
 #include <map>

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rosgraphpoller.h"
 
+#include "base/logging.h"
+#include "base/secrets.h"
+
 #include <QTimer>
 
 class RosGraphPoller::Worker : public QObject
@@ -90,6 +93,8 @@ void RosGraphPoller::onResult(bool ok, const RosGraph& graph, qint64 pid, const 
         if (m_reachable || !m_known) {
             m_reachable = false;
             m_known = true;
+            qCDebug(lcRos).noquote() << "master" << Secrets::urlWithoutCredentials(m_uri)
+                                     << "unreachable:" << error;
             emit reachabilityChanged(false, error);
         }
         emit polled();
@@ -102,10 +107,14 @@ void RosGraphPoller::onResult(bool ok, const RosGraph& graph, qint64 pid, const 
     if (!m_reachable || !m_known) {
         m_reachable = true;
         m_known = true;
+        qCDebug(lcRos).noquote() << "master" << Secrets::urlWithoutCredentials(m_uri) << "answers, pid"
+                                 << pid;
         emit reachabilityChanged(true, QString());
     }
-    if (restarted || cameBack)
+    if (restarted || cameBack) {
+        qCDebug(lcRos) << "master restarted (pid" << pid << ")";
         emit masterRestarted();
+    }
     if (graph != m_graph) {
         m_graph = graph;
         emit graphChanged(m_graph);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "rosmasterapi.h"
+#include "ros/rosmasterapi.h"
 
 #include <QObject>
 #include <QThread>

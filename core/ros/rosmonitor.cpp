@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
-#include "common/wallclock.h"
-#include "rosbytes.h"
-#include "rosnode.h"
+#include "base/wallclock.h"
+#include "ros/rosbytes.h"
+#include "ros/rosnode.h"
 
 #include <deque>
 #include <mutex>

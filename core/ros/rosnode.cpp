@@ -1,16 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "rosnode.h"
 
-#include "rosreregistration.h"
+#include "base/logging.h"
+#include "base/secrets.h"
+#include "ros/rosreregistration.h"
 
 #include <map>
-#include <vector>
 #include <mutex>
 #include <QObject>
 #include <QThread>
 #include <QTimer>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <vector>
 
 using namespace Qt::StringLiterals;
 
@@ -49,9 +51,13 @@ struct RosNode::Private
             ros::master::init(remappings); // an earlier node of this process may have used another master
         // A dead master must not hold a subscription forever.
         ros::master::setRetryTimeout(ros::WallDuration(2.0));
-        if (!RosReregistration::masterAnswers())
+        if (!RosReregistration::masterAnswers()) {
+            qCDebug(lcRos).noquote() << "no master answers at" << Secrets::urlWithoutCredentials(masterUri);
             return false;
+        }
         node = std::make_unique<ros::NodeHandle>();
+        qCDebug(lcRos).noquote() << "node" << QString::fromStdString(ros::this_node::getName()) << "started with master"
+                                 << Secrets::urlWithoutCredentials(masterUri);
         node->setCallbackQueue(&queue);
         spinner = std::make_unique<ros::AsyncSpinner>(1, &queue);
         spinner->start();
@@ -94,6 +100,7 @@ struct RosNode::Private
             pendingRetry->stop();
         std::vector<Job> jobs;
         jobs.swap(pending);
+        qCDebug(lcRos) << "running" << jobs.size() << "waiting jobs";
         for (Job& j : jobs)
             j(*node);
     }

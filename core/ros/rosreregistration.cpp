@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rosreregistration.h"
 
+#include "base/logging.h"
+
 #include <ros/master.h>
 #include <ros/network.h>
 #include <ros/this_node.h>
@@ -103,6 +105,8 @@ RosReregistration::Result RosReregistration::check(QString* detail)
     const auto subscriptions = topicsOf(subList);
     if (publications.empty() && subscriptions.empty())
         return Result::Registered;
+    qCDebug(lcRos) << "the master does not know this node (restarted?); registering" << publications.size()
+                   << "publications and" << subscriptions.size() << "subscriptions again";
 
     QStringList refused;
     // registerPublisher and registerSubscriber take the same arguments.

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "rosstampsource.h"
 
-#include "common/eventbuffer.h"
-#include "common/wallclock.h"
-#include "latency/stampcodec.h"
-#include "rosbytes.h"
-#include "rosnode.h"
+#include "base/eventbuffer.h"
+#include "base/wallclock.h"
+#include "ros/rosbytes.h"
+#include "ros/rosnode.h"
+#include "wire/stampcodec.h"
 
 #include <atomic>
 #include <mutex>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "latency/stampevent.h"
+#include "wire/stampevent.h"
 
 #include <memory>
 #include <QHash>

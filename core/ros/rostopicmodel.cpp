@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rostopicmodel.h"
 
-#include "common/topicmime.h"
+#include "base/topicmime.h"
 
 #include <algorithm>
 #include <QLocale>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "rosmasterapi.h"
-#include "rosmonitor.h"
+#include "ros/rosmasterapi.h"
+#include "ros/rosmonitor.h"
 
 #include <functional>
 #include <QAbstractTableModel>

@@ -7,9 +7,9 @@
 // Properties: a decoded announcement encodes to bytes that decode to the same announcement; a
 // stamped payload split and joined again gives the same bytes; errors come with a message.
 #include "fuzzcheck.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttstampdecoder.h"
-#include "ros/rosmessage.h"
+#include "wire/mqttclientwire.h"
+#include "wire/rosmessage.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {

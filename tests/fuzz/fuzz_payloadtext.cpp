@@ -5,7 +5,7 @@
 // Properties: every view of a non-empty payload says how large it is; a text or hex view is
 // bounded by the limit, whatever the payload's size.
 #include "fuzzcheck.h"
-#include "mqtt/payloadtext.h"
+#include "wire/payloadtext.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {

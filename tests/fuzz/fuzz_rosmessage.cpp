@@ -7,7 +7,7 @@
 // not parse is an error with a message; one that parses decodes the bytes within the limits or
 // says why not, and a decoded value prints and finds its fields without crashing.
 #include "fuzzcheck.h"
-#include "ros/rosmessage.h"
+#include "wire/rosmessage.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {

@@ -5,7 +5,7 @@
 // The whole input goes to every decoder. Properties: what decodes encodes to something that
 // decodes to the same stamp; a time text read back is the same time; errors come with a message.
 #include "fuzzcheck.h"
-#include "latency/stampcodec.h"
+#include "wire/stampcodec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {

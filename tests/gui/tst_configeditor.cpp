@@ -1,21 +1,21 @@
 // SPDX-License-Identifier: MIT
 // The config editor driven like a user would: open a real file, edit in the inspector and the
 // table, undo, redo, save, and check the file on disk (comments included).
+#include "app/gui/mainwindow.h"
 #include "config/configdocument.h"
 #include "config/configreader.h"
 #include "config/mappingmodel.h"
 #include "config/problemmodel.h"
-#include "configeditor.h"
-#include "configfilecontroller.h"
 #include "fixtures.h"
-#include "mainwindow.h"
-#include "mappingfilterproxy.h"
-#include "mappinginspector.h"
-#include "optionform.h"
-#include "problemspanel.h"
-#include "settingsinspector.h"
 #include "viewhelpers.h"
-#include "yamlpreview.h"
+#include "widgets/common/problemspanel.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/mappingfilterproxy.h"
+#include "widgets/map/mappinginspector.h"
+#include "widgets/map/optionform.h"
+#include "widgets/map/settingsinspector.h"
+#include "widgets/map/yamlpreview.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>

@@ -1,25 +1,25 @@
 // SPDX-License-Identifier: MIT
 // The Discover page with real traffic: a real rosmaster with rostopic nodes, a real mosquitto
 // with what mqtt_client sends, JSON and a 2 MB binary payload.
-#include "common/livesession.h"
-#include "detailpane.h"
-#include "discoverpage.h"
+#include "app/gui/mainwindow.h"
 #include "fixtures.h"
-#include "mainwindow.h"
 #include "mqtt/mqtttopicfilter.h"
-#include "mqttprofiledialog.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rostopicmodel.h"
+#include "session/livesession.h"
 #include "testservers.h"
 #include "viewhelpers.h"
+#include "widgets/discover/detailpane.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/tools/mqttprofiledialog.h"
 
 #include <QAbstractItemModelTester>
 #include <QDialogButtonBox>
-#include <QPushButton>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QProcess>
+#include <QPushButton>
 #include <QSortFilterProxyModel>
 #include <QStandardPaths>
 #include <QTableView>

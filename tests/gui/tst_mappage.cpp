@@ -2,21 +2,21 @@
 // The Map page driven through its real views and models: drops of dragged topics create and
 // retarget mappings, undo takes them back, the saved file validates and holds what was made, and
 // health tells a publisher without a bridge from traffic on both sides (real rosmaster, mosquitto).
-#include "common/livesession.h"
-#include "common/mappinghealth.h"
+#include "app/gui/mainwindow.h"
 #include "config/configdocument.h"
 #include "config/configreader.h"
+#include "config/mappinghealth.h"
 #include "config/mappingmodel.h"
-#include "configeditor.h"
-#include "configfilecontroller.h"
-#include "discoverpage.h"
 #include "fixtures.h"
-#include "mainwindow.h"
-#include "mappage.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rostopicmodel.h"
+#include "session/livesession.h"
 #include "testservers.h"
 #include "viewhelpers.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/mappage.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>

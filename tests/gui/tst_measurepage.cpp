@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The Measure page on live stamps from a real rosmaster: the paper's pipeline with two hosts,
 // Table I with derived rows, ECDFs, pause and reset, and editing the pipeline by keyboard and drag.
-#include "common/measuresession.h"
-#include "discoverpage.h"
-#include "ecdfchart.h"
+#include "app/gui/mainwindow.h"
 #include "fixtures.h"
 #include "latency/latencystatsmodel.h"
 #include "latency/pipelinemodel.h"
 #include "latency/stamptopicmodel.h"
-#include "mainwindow.h"
-#include "measurepage.h"
+#include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
 #include "viewhelpers.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/measure/measurepage.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>

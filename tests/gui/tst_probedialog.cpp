@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The Link Probe dialog against a real mosquitto: a run counted, summarised and plotted as it goes,
 // stopping a long run, an unreachable broker reported in the dialog, and the way in from the menu.
-#include "discoverpage.h"
-#include "ecdfchart.h"
-#include "mainwindow.h"
-#include "probedialog.h"
+#include "app/gui/mainwindow.h"
 #include "testservers.h"
 #include "viewhelpers.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/tools/probedialog.h"
 
 #include <cmath>
 #include <QApplication>

@@ -2,16 +2,16 @@
 // Runs and reports in the GUI: record from the Measure page against a real rosmaster, open the run
 // and go back to live, compare three suite CSV files on the Reports page (three columns), export
 // every kind of file, and save and copy the chart.
-#include "common/measuresession.h"
-#include "discoverpage.h"
-#include "ecdfchart.h"
-#include "mainwindow.h"
-#include "measurepage.h"
+#include "app/gui/mainwindow.h"
 #include "record/suitecsv.h"
-#include "reportspage.h"
-#include "runbar.h"
+#include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/measure/measurepage.h"
+#include "widgets/measure/runbar.h"
+#include "widgets/reports/reportspage.h"
 
 #include <QCheckBox>
 #include <QClipboard>

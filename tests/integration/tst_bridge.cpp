@@ -3,18 +3,18 @@
 // v2.2.1's wire format byte for byte (the captured fixtures), announced types and latency topics
 // on the receiving side, two bridges carrying std_msgs and sensor_msgs both ways, and the
 // suite's timestamp_topic_prefix stamps joining into complete samples.
+#include "base/wallclock.h"
 #include "bridge/referencebridge.h"
-#include "common/wallclock.h"
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "latency/latencyengine.h"
-#include "latency/stampcodec.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttlink.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "ros/rosmasterapi.h"
 #include "testservers.h"
+#include "wire/mqttclientwire.h"
+#include "wire/stampcodec.h"
 
 #include <mutex>
 #include <QProcess>

@@ -172,6 +172,52 @@ private slots:
                  false);
     }
 
+    // --verbose turns on every layer's debug messages, QT_LOGGING_RULES picks some; neither ever
+    // shows a credential of the broker URL.
+    void verboseLogsPerLayerWithoutCredentials()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        QVERIFY(servers.startRosMaster());
+        const QString secretUrl = u"tcp://alice:s3cr3t-pw@127.0.0.1:%1"_s.arg(servers.mosquittoPort());
+        const QStringList discover {u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(),
+                                    u"--broker"_s, secretUrl,         u"--seconds"_s,
+                                    u"1"_s};
+        const auto run = [](const QStringList& args, const QString& rules) {
+            QProcess p;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.remove(u"QT_LOGGING_RULES"_s);
+            if (!rules.isEmpty())
+                env.insert(u"QT_LOGGING_RULES"_s, rules);
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
+            p.waitForFinished(30000);
+            return std::make_pair(p.exitCode(), QString::fromUtf8(p.readAllStandardError()));
+        };
+
+        const auto [quietExit, quiet] = run(discover, {});
+        QCOMPARE(quietExit, 0);
+        QVERIFY2(!quiet.contains(u"bridgescope.mqtt"_s), qPrintable(quiet));
+
+        const auto [verboseExit, verbose] = run(QStringList {u"--verbose"_s} + discover, {});
+        QCOMPARE(verboseExit, 0);
+        QVERIFY2(verbose.contains(u"bridgescope.mqtt debug: connecting to tcp://127.0.0.1:"_s),
+                 qPrintable(verbose));
+        QVERIFY2(verbose.contains(u"bridgescope.ros debug: master "_s), qPrintable(verbose));
+        QVERIFY2(!verbose.contains(u"s3cr3t"_s) && !verbose.contains(u"alice"_s), qPrintable(verbose));
+
+        // The flag may follow the command, too; the rules pick one layer.
+        const auto [oneExit, one]
+            = run(discover + QStringList {u"--verbose"_s}, u"bridgescope.ros.debug=false"_s);
+        QCOMPARE(oneExit, 0);
+        QVERIFY2(one.contains(u"bridgescope.mqtt"_s) && !one.contains(u"bridgescope.ros"_s), qPrintable(one));
+        const auto [ruleExit, rule] = run(discover, u"bridgescope.ros.debug=true"_s);
+        QCOMPARE(ruleExit, 0);
+        QVERIFY2(rule.contains(u"bridgescope.ros"_s) && !rule.contains(u"bridgescope.mqtt"_s),
+                 qPrintable(rule));
+        QVERIFY(!rule.contains(u"s3cr3t"_s));
+    }
+
     // The report of a two-host run equals what numpy computes from the same CSV, to the last digit
     // that float64 arithmetic on ms values can hold.
     void reportMatchesNumpyOnASuiteCsv()
@@ -248,7 +294,8 @@ private slots:
         for (int i = 0; i < 400 && p.state() == QProcess::Running; ++i) {
             if (status.open(QIODevice::ReadOnly)) {
                 for (const QByteArray& line : status.readAll().split('\n'))
-                    if (line.startsWith("SigCgt:") && (line.mid(7).trimmed().toULongLong(nullptr, 16) >> (sig - 1)) & 1)
+                    if (line.startsWith("SigCgt:")
+                        && (line.mid(7).trimmed().toULongLong(nullptr, 16) >> (sig - 1)) & 1)
                         return true;
                 status.close();
             }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The demo lab headless: 20 s of the paper-shaped pipeline recorded with sensible figures, and no
 // process left behind after it ends, or after it is killed with SIGKILL.
-#include "record/report.h"
+#include "report/report.h"
 #include "testservers.h"
 
 #include <csignal>

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Stamps from a real rosmaster (a roscpp node publishing TimeStamped and Float64) and a real
 // mosquitto (mqtt_client's wire format, stamped, and JSON stamps) end up as exact statistics.
-#include "common/livesession.h"
-#include "common/measuresession.h"
 #include "latency/latencystatsmodel.h"
-#include "latency/stampcodec.h"
 #include "latency/stamptopicmodel.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttstampdecoder.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
 #include "testservers.h"
+#include "wire/mqttclientwire.h"
+#include "wire/stampcodec.h"
 
 #include <algorithm>
 #include <chrono>
@@ -192,13 +192,16 @@ private slots:
         live.setRosMasterUri(m_servers.rosMasterUri());
         MeasureSession measure(&live);
         measure.setTimeoutNs(60'000'000'000LL);
-        Publisher ros(m_servers, {u"--stamp"_s, u"/bad/ok:0"_s, u"--stamp"_s, u"/bad/ok2:1000"_s,
-                                  u"--malformed"_s, u"/bad/short"_s});
-        QTRY_COMPARE_WITH_TIMEOUT(measure.malformedStampsByTopic().value(u"/bad/short"_s), quint64(kSamples), 40000);
+        Publisher ros(m_servers,
+                      {u"--stamp"_s, u"/bad/ok:0"_s, u"--stamp"_s, u"/bad/ok2:1000"_s, u"--malformed"_s,
+                       u"/bad/short"_s});
+        QTRY_COMPARE_WITH_TIMEOUT(measure.malformedStampsByTopic().value(u"/bad/short"_s), quint64(kSamples),
+                                  40000);
         QCOMPARE(measure.malformedStampsByTopic().size(), 1);
         QCOMPARE(measure.malformedStamps(), quint64(kSamples));
-        QVERIFY2(measure.lastStampError().startsWith(u"/bad/short: TimeStamped message too short (10 bytes)"_s),
-                 qPrintable(measure.lastStampError()));
+        QVERIFY2(
+            measure.lastStampError().startsWith(u"/bad/short: TimeStamped message too short (10 bytes)"_s),
+            qPrintable(measure.lastStampError()));
         QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), qint64(kSamples), 20000);
 
         StampTopicModel model;

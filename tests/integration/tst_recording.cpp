@@ -2,11 +2,11 @@
 // Recording runs against a real rosmaster: a run reopens with the figures that were shown live,
 // the headless recorder stops by itself, and a recorder killed with SIGKILL leaves a file that
 // opens and lacks at most the last second.
-#include "common/livesession.h"
-#include "common/measuresession.h"
-#include "record/report.h"
 #include "record/runfile.h"
 #include "record/runrecorder.h"
+#include "report/report.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
 
@@ -47,7 +47,8 @@ private:
     TestServers m_servers;
     QTemporaryDir m_dir;
 
-    std::unique_ptr<QProcess> publish(int samples, int rate, int firstSample, const TestServers* servers = nullptr)
+    std::unique_ptr<QProcess> publish(int samples, int rate, int firstSample,
+                                      const TestServers* servers = nullptr)
     {
         auto p = std::make_unique<QProcess>();
         p->setProcessEnvironment((servers ? servers : &m_servers)->rosEnvironment());

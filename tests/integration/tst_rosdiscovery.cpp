@@ -2,10 +2,10 @@
 // ROS discovery against a real rosmaster: topics, types, publishers and subscribers of real nodes
 // (rostopic), monitoring through roscpp, and a master that dies and comes back.
 #include "ros/rosgraphpoller.h"
-#include "ros/rosmessage.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
 #include "testservers.h"
+#include "wire/rosmessage.h"
 
 #include <chrono>
 #include <memory>

@@ -7,13 +7,13 @@
 //
 // SOAK_BROKER_RESTARTS and SOAK_MASTER_RESTARTS set the rounds: the `soak` label runs 10 and 3,
 // the default run a short version (2 and 1).
-#include "common/livesession.h"
-#include "common/measuresession.h"
-#include "common/wallclock.h"
+#include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttlink.h"
 #include "record/runfile.h"
 #include "ros/rosgraphpoller.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
 #include "testservers.h"
 
 #include <mutex>

@@ -11,8 +11,8 @@
 // stamp + OFFSET_US_i + i * (s % 7) * 100 µs, or, with --jitter-us, at stamp + OFFSET_US_i plus
 // the sum of i exponential delays of mean J µs (stages stay in order, values look measured). It waits (up to
 // 30 s) until every topic has a subscriber, then publishes, and prints "done" when finished.
-#include "latency/stampcodec.h"
 #include "ros/rosbytes.h"
+#include "wire/stampcodec.h"
 
 #include <cstdio>
 #include <cstring>

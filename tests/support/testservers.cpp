@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "testservers.h"
 
-#include "common/loopbackports.h"
+#include "base/loopbackports.h"
 
 #include <csignal>
 #include <QDir>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Reading, writing and converting bridge configs, checked against the real files of mqtt_client,
 // the benchmarking suite and mqtt_bridge.
-#include "common/atomicfile.h"
+#include "base/atomicfile.h"
+#include "base/yamltree.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
-#include "config/yamltree.h"
 #include "configcompare.h"
 #include "fixtures.h"
 
@@ -202,9 +202,9 @@ private slots:
     void quotesStringsThatWouldChangeType_data()
     {
         QTest::addColumn<QString>("id");
-        for (const char* s : {"123", "yes", "off", "1.5e3", "0x1F", "null", "~", "2024-01-31", "", " padded",
-                              "a: b", "#hash", "*star", "[x]", "quote\"d", "multi\nline", "tab\there",
-                              "line\xe2\x80\xa8sep", "c1\xc2\x85"})
+        for (const char* s :
+             {"123", "yes", "off", "1.5e3", "0x1F", "null", "~", "2024-01-31", "", " padded", "a: b", "#hash",
+              "*star", "[x]", "quote\"d", "multi\nline", "tab\there", "line\xe2\x80\xa8sep", "c1\xc2\x85"})
             QTest::newRow(s) << QString::fromUtf8(s);
         // QString::fromUtf8 would drop these byte-order marks; they must survive a save.
         QTest::newRow("BOM") << QString(QChar(0xfeff));
@@ -231,7 +231,8 @@ private slots:
     // where it starts a new document.
     void keysThatLookLikeDocumentMarkersAreQuoted()
     {
-        const ConfigReadResult r = readText(u"\"--- - a\": 1\n\"... b\": 2\nbridge: {ros2mqtt: [{ros_topic: /a, mqtt_topic: a}]}\n"_s);
+        const ConfigReadResult r = readText(
+            u"\"--- - a\": 1\n\"... b\": 2\nbridge: {ros2mqtt: [{ros_topic: /a, mqtt_topic: a}]}\n"_s);
         QVERIFY(r.parsed);
         QCOMPARE(r.config.rootExtras.size(), 2);
         for (ConfigLayout layout : {ConfigLayout::Ros1, ConfigLayout::Ros2}) {
@@ -247,7 +248,8 @@ private slots:
     void longKeysAreWrittenExplicitly()
     {
         const QString key = QString(1500, u'k');
-        const ConfigReadResult r = readText(u"? "_s + key + u"\n: {a: 1, b: [2]}\nbridge: {ros2mqtt: [{ros_topic: /a, mqtt_topic: a}]}\n"_s);
+        const ConfigReadResult r = readText(
+            u"? "_s + key + u"\n: {a: 1, b: [2]}\nbridge: {ros2mqtt: [{ros_topic: /a, mqtt_topic: a}]}\n"_s);
         QVERIFY(r.parsed);
         for (ConfigLayout layout : {ConfigLayout::Ros1, ConfigLayout::Ros2}) {
             const QString text = ConfigWriter::write(r.config, layout);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Every validation rule, one row each: the YAML, the problems it must give, and where.
+#include "base/topicnames.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 
@@ -240,7 +241,7 @@ private slots:
         QFETCH(QString, filter);
         QFETCH(QString, topic);
         QFETCH(bool, matches);
-        QCOMPARE(ConfigValidator::topicMatches(filter, topic), matches);
+        QCOMPARE(TopicNames::topicMatches(filter, topic), matches);
     }
 
     // Regression (issue 11): a topic whose bytes were not UTF-8 arrives as U+FFFD (from a broker's
@@ -257,9 +258,9 @@ private slots:
     {
         QFETCH(QString, name);
         QString why;
-        QVERIFY(!ConfigValidator::isValidMqttTopic(name, false, &why));
+        QVERIFY(!TopicNames::isValidMqttTopic(name, false, &why));
         QVERIFY2(why.contains(u"UTF"_s), qPrintable(why));
-        QVERIFY(!ConfigValidator::isValidRosName(u'/' + name, false, &why));
+        QVERIFY(!TopicNames::isValidRosName(u'/' + name, false, &why));
         QVERIFY2(why.contains(u"UTF"_s), qPrintable(why));
 
         BridgeConfig cfg;
@@ -268,7 +269,7 @@ private slots:
         QVERIFY(hasErrors(problems));
         QCOMPARE(problems.first().field, u"mqtt_topic"_s);
         // Characters outside the BMP, as proper surrogate pairs, stay valid.
-        QVERIFY(ConfigValidator::isValidMqttTopic(u"plant/\U0001F600"_s, true));
+        QVERIFY(TopicNames::isValidMqttTopic(u"plant/\U0001F600"_s, true));
     }
 };
 

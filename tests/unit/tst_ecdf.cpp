@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 // ECDFs: exact steps, and the reduction for drawing that moves no step by more than a column.
 #include "latency/ecdf.h"
+#include "latency/latencyengine.h"
 #include "latency/latencyseries.h"
+#include "latency/latencyseriesset.h"
+#include "latency/seriesid.h"
 
 #include <cmath>
 #include <QTest>
 #include <random>
+
+using namespace Qt::StringLiterals;
 
 class TestEcdf : public QObject
 {
@@ -108,6 +113,53 @@ private slots:
         const QList<QPointF> r = Ecdf::reduced(s, 0, 100, 1000);
         QVERIFY(r.size() <= 2002);
         QCOMPARE(r.last().y(), 1.0);
+    }
+
+    // Series ids are written and read in one place; every id the engine makes reads back as itself.
+    void seriesIdsRoundTrip()
+    {
+        // Out to the cloud and back: stages, total, round trip, one way and the clock offset.
+        Pipeline p({u"/v/out"_s, u"/c/in"_s, u"/c/out"_s, u"/v/in"_s});
+        p.setHost(u"/v/out"_s, u"vehicle"_s);
+        p.setHost(u"/c/in"_s, u"cloud"_s);
+        p.setHost(u"/c/out"_s, u"cloud"_s);
+        p.setHost(u"/v/in"_s, u"vehicle"_s);
+        LatencyEngine engine(p);
+        engine.ingest(LatencyValue {u"mqtt/ext"_s, 1000, 0});
+        QStringList ids;
+        for (int i = 0; i < engine.seriesCount(); ++i) {
+            const QString id = engine.info(i).id;
+            const std::optional<SeriesId> parsed = SeriesId::parse(id);
+            QVERIFY2(parsed, qPrintable(id));
+            QCOMPARE(parsed->toString(), id);
+            QCOMPARE(parsed->kind, engine.info(i).kind);
+            ids << id;
+        }
+        for (const QString& id : {u"stage:2"_s, u"total"_s, u"round_trip"_s, u"one_way"_s, u"clock_offset"_s})
+            QVERIFY2(ids.contains(id), qPrintable(ids.join(u' ')));
+        QVERIFY(ids.contains(u"ext:mqtt/ext"_s));
+        QCOMPARE(SeriesId::parse(u"stage:1"_s)->stage, 1);
+        QVERIFY(!SeriesId::parse(u"stage:x"_s));
+        QVERIFY(!SeriesId::parse(u"stage:-1"_s));
+        QVERIFY(!SeriesId::parse(u"totals"_s));
+    }
+
+    // A probe's series set is an ECDF source like the engine: ids, labels, whole-run series.
+    void seriesSetIsAnEcdfSource()
+    {
+        LatencySeriesSet set;
+        const EcdfSource& source = set;
+        QCOMPARE(source.ecdfIndex(LatencySeriesSet::idOf(u"step 1"_s)), -1);
+        for (int i = 1; i <= 1000; ++i)
+            set.add(u"step 1"_s, i * 1'000'000);
+        set.add(u"step 2"_s, 5'000'000);
+        const int index = source.ecdfIndex(u"ext:step 1"_s);
+        QVERIFY(index >= 0);
+        QCOMPARE(source.ecdfLabel(index), u"step 1"_s);
+        QCOMPARE(source.ecdfSeries(index).count(), 1000); // the whole run, not a window
+        QCOMPARE(source.ecdfSeries(index).quantileMs(0.5), set.find(u"step 1"_s)->quantileMs(0.5));
+        QCOMPARE(source.ecdfLayoutRevision(), quint64(2));
+        QCOMPARE(set.revision(), quint64(1001));
     }
 };
 

@@ -2,11 +2,11 @@
 // Hostile YAML (issue 11): alias bombs, cycles, deep nesting, huge files and bytes that are not
 // UTF-8 are refused with a located error before anything walks the tree; the anchors real files
 // use still load, edit and save.
+#include "base/yamllimits.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
-#include "config/yamllimits.h"
 #include "fixtures.h"
 #include "latency/pipeline.h"
 
@@ -136,8 +136,10 @@ private slots:
                                                     << u"yaml-complex-key"_s << 5;
         QTest::newRow("null key twice") << okBridge + "NULL: 1\n: 2\n" << u"yaml-duplicate-key"_s << 5;
         // Found by fuzz_config: a NUL in the indentation was read as content.
-        QTest::newRow("NUL") << okBridge + "x: 1\n  " + QByteArray(1, '\0') + " y: 2\n" << u"yaml-control-character"_s << 5;
-        QTest::newRow("escape character") << okBridge + "x: \"\x1b[31m\"\n" << u"yaml-control-character"_s << 4;
+        QTest::newRow("NUL") << okBridge + "x: 1\n  " + QByteArray(1, '\0') + " y: 2\n"
+                             << u"yaml-control-character"_s << 5;
+        QTest::newRow("escape character") << okBridge + "x: \"\x1b[31m\"\n"
+                                          << u"yaml-control-character"_s << 4;
         QTest::newRow("CR at the end") << okBridge + "x: a\r\ny: b\r" << u"yaml-lone-carriage-return"_s << 5;
         QTest::newRow("CR line ends") << okBridge + "x: a\ry: b\n" << u"yaml-lone-carriage-return"_s << 4;
         QTest::newRow("C1 control") << okBridge + "x: a\xc2\x9b\n" << u"yaml-control-character"_s << 4;

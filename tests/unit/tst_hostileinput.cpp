@@ -4,10 +4,10 @@
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"
 #include "latency/samplejoiner.h"
-#include "latency/stampcodec.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqttstampdecoder.h"
-#include "mqtt/payloadtext.h"
+#include "wire/mqttclientwire.h"
+#include "wire/payloadtext.h"
+#include "wire/stampcodec.h"
 
 #include <cmath>
 #include <limits>

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Names and options proposed for new mappings, and health from synthetic discovery data.
-#include "common/mappinghealth.h"
-#include "config/configvalidator.h"
+#include "base/topicnames.h"
 #include "config/mappingfactory.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
+#include "session/mappinghealthevaluator.h"
+#include "wire/mqttclientwire.h"
 
 #include <QTest>
 
@@ -53,7 +53,7 @@ private slots:
         QFETCH(QString, ros);
         const QString name = MappingFactory::rosTopicFor(mqtt, ns);
         QCOMPARE(name, ros);
-        QVERIFY(ConfigValidator::isValidRosName(name, true));
+        QVERIFY(TopicNames::isValidRosName(name, true));
     }
 
     void optionsFollowWhatDiscoveryKnows()

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Connection profiles: what a valid broker URL is, what gets saved (never a password), and the
 // ROS master's XML-RPC encoding.
-#include "common/passwordstore.h"
 #include "mqtt/mqttprofile.h"
-#include "mqtt/payloadtext.h"
+#include "mqtt/passwordstore.h"
 #include "ros/rosmasterapi.h"
+#include "wire/payloadtext.h"
 
 #include <QFile>
 #include <QSettings>

@@ -2,8 +2,8 @@
 // The MQTT topic tree: exact counts, subtree sums, bounded history, mqtt_client awareness, and
 // batched, consistent model signals.
 #include "fixtures.h"
-#include "mqtt/mqttclientwire.h"
 #include "mqtt/mqtttopictree.h"
+#include "wire/mqttclientwire.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>

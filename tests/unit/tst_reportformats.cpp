@@ -3,11 +3,11 @@
 // LaTeX tables (three runs, three columns), HTML that parses and holds the SVG figure, a PDF whose
 // pages and text poppler reads.
 #include "fixtures.h"
-#include "record/ecdfsvg.h"
-#include "record/report.h"
-#include "record/reportformats.h"
 #include "record/suitecsv.h"
-#include "reportpdf.h"
+#include "report/ecdfsvg.h"
+#include "report/report.h"
+#include "report/reportformats.h"
+#include "report/reportpdf.h"
 #include "syntheticrun.h"
 
 #include <QProcess>

@@ -2,8 +2,8 @@
 // The generic ROS 1 decoder against bytes that roscpp itself serialized and against what the real
 // mqtt_client v2.2.1 put on the broker.
 #include "fixtures.h"
-#include "mqtt/mqttclientwire.h"
-#include "ros/rosmessage.h"
+#include "wire/mqttclientwire.h"
+#include "wire/rosmessage.h"
 
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>

@@ -2,14 +2,15 @@
 // Run files and imports: a run reads back as it was written, replays to the same figures, and
 // broken files are refused with a reason; bags written with rosbag's own API import unchanged.
 #include "latency/latencyengine.h"
-#include "latency/stampcodec.h"
-#include "record/bagreaderprocess.h"
-#include "record/report.h"
 #include "record/runfile.h"
-#include "record/runloader.h"
 #include "record/suitecsv.h"
+#include "report/bagreaderprocess.h"
+#include "report/report.h"
+#include "report/runloader.h"
 #include "ros/rosstampsource.h"
 #include "syntheticrun.h"
+#include "wire/bagheader.h"
+#include "wire/stampcodec.h"
 
 #include <cstring>
 #include <QCryptographicHash>
@@ -206,7 +207,7 @@ private slots:
         const SyntheticRun synthetic = SyntheticRun::paper(50, 0, 4);
         writeStampBag(path, synthetic);
         const QByteArray before = sha(path);
-        QVERIFY(BagReaderProcess::looksLikeBag(path));
+        QVERIFY(BagHeader::looksLikeBag(path));
         QCOMPARE(RunLoader::kindOf(path), RunLoader::Kind::Bag);
         QString error;
         const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
@@ -285,9 +286,11 @@ private slots:
         std::optional<RunData> run = RunLoader::load(csv.fileName(), {}, &error, &warnings);
         QVERIFY2(run, qPrintable(error));
         QCOMPARE(warnings.size(), 1);
-        QVERIFY2(warnings.first().contains(u"1 rows begin with the same stamp"_s), qPrintable(warnings.first()));
+        QVERIFY2(warnings.first().contains(u"1 rows begin with the same stamp"_s),
+                 qPrintable(warnings.first()));
         QVERIFY(RunFile::write(dir.filePath(u"coarse.bsrun"_s), *run, &error));
-        const std::optional<Report> report = Report::build({dir.filePath(u"coarse.bsrun"_s)}, std::nullopt, {}, &error);
+        const std::optional<Report> report
+            = Report::build({dir.filePath(u"coarse.bsrun"_s)}, std::nullopt, {}, &error);
         QVERIFY2(report, qPrintable(error));
         QCOMPARE(report->runs().front()->engine->samples(), 10);
         QCOMPARE(report->runs().front()->engine->counters().duplicates, 0u);

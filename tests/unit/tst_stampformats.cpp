@@ -2,10 +2,10 @@
 // The formats stamps come in: TimeStamped (checked against genmsg), JSON stamps, Float64
 // latencies, and the suite's timestamp CSV (checked against Python's csv writer).
 #include "fixtures.h"
-#include "latency/stampcodec.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
 #include "syntheticrun.h"
+#include "wire/stampcodec.h"
 
 #include <cstring>
 #include <QJsonArray>

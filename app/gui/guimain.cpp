@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: MIT
+#include "guimain.h"
+
+#include "app/cli/clioutput.h"
+#include "app/gui/mainwindow.h"
+#include "demo/demolab.h"
+#include "latency/latencystatsmodel.h"
+#include "latency/seriesid.h"
+#include "session/measuresession.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/measure/measurepage.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QIcon>
+#include <QLibraryInfo>
+#include <QStatusBar>
+#include <QTimer>
+#include <QTranslator>
+
+using namespace Qt::StringLiterals;
+using CliOutput::ExitFailed;
+using CliOutput::ExitUsage;
+
+namespace {
+class Gui
+{
+    Q_DECLARE_TR_FUNCTIONS(Gui)
+};
+} // namespace
+
+void installTranslations(QCoreApplication& app)
+{
+    auto* ours = new QTranslator(&app);
+    if (ours->load(QLocale(), u"bridgescope"_s, u"_"_s, u":/i18n"_s))
+        app.installTranslator(ours);
+    auto* qt = new QTranslator(&app);
+    if (qt->load(QLocale(), u"qtbase"_s, u"_"_s, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        app.installTranslator(qt);
+}
+
+QString bridgescopeUsage()
+{
+    // One line per entry: a new option or command adds one string to translate, not a page.
+    const QList<std::pair<QString, QString>> options = {
+        {u"--broker URL"_s, Gui::tr("MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)")},
+        {u"--ros-master URI"_s, Gui::tr("ROS master (default $ROS_MASTER_URI)")},
+        {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
+        {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
+        {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
+        {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
+        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure or reports")},
+        {u"--verbose"_s, Gui::tr("debug messages of every layer on stderr, also after a command")},
+        {u"-h, --help"_s, Gui::tr("show this help")},
+        {u"-v, --version"_s, Gui::tr("show the version")},
+    };
+    const QList<std::pair<QString, QString>> commands = {
+        {u"config validate|convert|peer"_s, Gui::tr("check, convert and pair bridge configs")},
+        {u"discover [--json]"_s, Gui::tr("list ROS and MQTT topics")},
+        {u"bridge CONFIG.yaml"_s, Gui::tr("run a config as a reference bridge")},
+        {u"probe [--sweep] [--echo]"_s, Gui::tr("round trips and throughput through the broker")},
+        {u"demo [--seconds N]"_s, Gui::tr("the demo lab without a window")},
+        {u"record --pipeline P -o RUN"_s, Gui::tr("record a measurement run")},
+        {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},
+    };
+    QString text = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]")
+        + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s
+        + Gui::tr("Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.")
+        + u"\n\n"_s + Gui::tr("Options:") + u'\n';
+    for (const auto& [name, what] : options)
+        text += u"  "_s + name.leftJustified(20) + u' ' + what + u'\n';
+    text += u'\n' + Gui::tr("Commands:") + u'\n';
+    for (const auto& [name, what] : commands)
+        text += u"  "_s + name.leftJustified(32) + u' ' + what + u'\n';
+    return text + u'\n' + Gui::tr("Run 'bridgescope <command> --help' for the options of a command.");
+}
+
+int runGui(int& argc, char** argv)
+{
+    QApplication app(argc, argv);
+    QApplication::setWindowIcon(QIcon(u":/icons/bridgescope.svg"_s));
+    installTranslations(app);
+    QCommandLineParser parser;
+    const QCommandLineOption screenshot(u"screenshot"_s, Gui::tr("Render the main window to PNG and exit."),
+                                        u"PNG"_s);
+    const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
+                                   u"SECONDS"_s, u"1"_s);
+    const QCommandLineOption broker(
+        u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."), u"URL"_s);
+    const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."),
+                                    u"URI"_s);
+    const QCommandLineOption pipeline(
+        u"pipeline"_s, Gui::tr("Measure with this pipeline (the suite's metrics-logger YAML)."),
+        u"PIPE.yaml"_s);
+    const QCommandLineOption page(u"page"_s, Gui::tr("Open on this page: discover, map, measure or reports."),
+                                  u"PAGE"_s);
+    const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
+    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
+    parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
+    if (!parser.parse(app.arguments())) {
+        CliOutput::err(parser.errorText());
+        CliOutput::err(bridgescopeUsage());
+        return ExitUsage;
+    }
+    // The demo lab outlives the window: its servers go last.
+    std::unique_ptr<DemoLab> lab;
+    if (parser.isSet(demo)) {
+        lab = std::make_unique<DemoLab>();
+        CliOutput::err(Gui::tr("starting the demo lab…"));
+        DemoLab::Options options;
+        options.brokerUrl = parser.value(broker); // given servers are used instead of private ones
+        options.rosMasterUri = parser.value(master);
+        QString error;
+        if (!lab->start(options, &error)) {
+            CliOutput::err(Gui::tr("the demo lab did not start: %1").arg(error));
+            return ExitFailed;
+        }
+    }
+    MainWindow window;
+    if (lab) {
+        window.discoverPage()->setRosMasterUri(lab->rosMasterUri());
+        window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab->brokerUrl()));
+        window.files()->openFile(lab->vehicleConfigPath());
+        QString error;
+        if (!window.measurePage()->loadPipeline(lab->pipelinePath(), &error))
+            CliOutput::err(error);
+        window.pages()->setCurrentWidget(window.measurePage());
+        // The paper's Fig. 5 view: detection, one-way communication and the total.
+        window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);
+        window.measure()->statsModel()->setChecked(SeriesId::ofKind(SeriesKind::OneWay).toString(), true);
+        window.setWindowTitle(Gui::tr("Bridgescope — demo lab"));
+        auto* watch = new QTimer(&window);
+        QObject::connect(watch, &QTimer::timeout, &window, [&window, &lab, watch] {
+            if (lab->isRunning())
+                return;
+            watch->stop();
+            window.statusBar()->showMessage(Gui::tr("The demo lab stopped: %1").arg(lab->failure()));
+        });
+        watch->start(2000);
+        // Ctrl+C or SIGTERM close the window properly, so that the lab stops and cleans up.
+        CliOutput::whenStopRequested(&window, [] { QCoreApplication::quit(); });
+    }
+    if (parser.isSet(master))
+        window.discoverPage()->setRosMasterUri(parser.value(master));
+    if (parser.isSet(broker)) {
+        MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
+        QString error;
+        if (!profile.validate(&error)) {
+            CliOutput::err(error);
+            return ExitUsage;
+        }
+        window.discoverPage()->connectBroker(profile);
+    }
+    const QStringList files = parser.positionalArguments();
+    if (!files.isEmpty())
+        window.files()->openFile(files.first());
+    if (parser.isSet(pipeline)) {
+        QString error;
+        if (!window.measurePage()->loadPipeline(parser.value(pipeline), &error)) {
+            CliOutput::err(error);
+            return ExitUsage;
+        }
+        window.pages()->setCurrentWidget(window.measurePage());
+    }
+    if (parser.isSet(page)) {
+        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s};
+        const int index = int(names.indexOf(parser.value(page).toLower()));
+        if (index < 0) {
+            CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
+            return ExitUsage;
+        }
+        window.pages()->setCurrentIndex(index);
+    }
+    window.show();
+    if (parser.isSet(screenshot)) {
+        const QString png = parser.value(screenshot);
+        bool ok = false;
+        const double seconds = parser.value(after).toDouble(&ok);
+        if (!ok || seconds < 0) {
+            CliOutput::err(Gui::tr("--after takes a number of seconds"));
+            return ExitUsage;
+        }
+        QTimer::singleShot(int(seconds * 1000), &window, [&window, png] {
+            const bool saved = window.grab().save(png);
+            if (!saved)
+                CliOutput::err(Gui::tr("Cannot write the screenshot %1").arg(png));
+            QCoreApplication::exit(saved ? 0 : 1);
+        });
+    }
+    return app.exec();
+}

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+#include "mainwindow.h"
+
+#include "config/configdocument.h"
+#include "config/problemmodel.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
+#include "widgets/common/problemspanel.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/mappage.h"
+#include "widgets/measure/measurepage.h"
+#include "widgets/measure/runbar.h"
+#include "widgets/reports/reportspage.h"
+#include "widgets/tools/probedialog.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QFile>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QUndoStack>
+
+using namespace Qt::StringLiterals;
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent)
+    , m_session(new LiveSession(this))
+    , m_measure(new MeasureSession(m_session, this))
+    , m_document(new ConfigDocument(this))
+    , m_undo(new QUndoStack(this))
+    , m_files(new ConfigFileController(m_document, m_undo, this))
+    , m_pages(new QTabWidget(this))
+    , m_discover(new DiscoverPage(m_session, m_pages))
+    , m_map(new MapPage(m_session, m_document, m_undo, m_pages))
+    , m_measurePage(new MeasurePage(m_measure, m_pages))
+    , m_reports(new ReportsPage(m_pages))
+    , m_configEditor(m_map->editor())
+    , m_problemStatus(new QLabel(this))
+{
+    setObjectName(u"mainWindow"_s);
+    m_pages->setDocumentMode(true);
+    m_pages->addTab(m_discover, tr("Discover"));
+    m_pages->addTab(m_map, tr("Map"));
+    m_pages->addTab(m_measurePage, tr("Measure"));
+    m_pages->addTab(m_reports, tr("Reports"));
+    // A finished recording is ready to report on; every run keeps the bridge config it ran with.
+    connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
+            [this](const QString& path) { m_reports->addInputs({path}); });
+    m_measurePage->runBar()->setBridgeConfigProvider([this]() -> std::pair<QString, QByteArray> {
+        const QString path = m_document->filePath();
+        QFile f(path);
+        if (path.isEmpty() || !f.open(QIODevice::ReadOnly))
+            return {};
+        return {path, f.readAll()};
+    });
+    setCentralWidget(m_pages);
+    statusBar()->addPermanentWidget(m_problemStatus);
+    createMenus();
+
+    connect(m_document, &ConfigDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ConfigDocument::filePathChanged, this, &MainWindow::updateTitle);
+    // Opening a config shows it.
+    connect(m_document, &ConfigDocument::resetDone, this, [this] { m_pages->setCurrentWidget(m_map); });
+    connect(m_files, &ConfigFileController::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    connect(m_files, &ConfigFileController::recentFilesChanged, this, &MainWindow::updateRecentMenu);
+    connect(m_configEditor->problems()->model(), &ProblemModel::countsChanged, this,
+            [this](int errors, int warnings) {
+                m_problemStatus->setText(ProblemModel::countText(errors, warnings));
+            });
+    m_problemStatus->setText(ProblemModel::countText(0, 0));
+    updateTitle();
+    resize(1280, 800);
+}
+
+MainWindow::~MainWindow()
+{
+    // Pages first, while the window is still whole: an open cell editor commits on destruction
+    // and the edit reaches this window's slots.
+    delete m_pages;
+}
+
+void MainWindow::createMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, m_files, &ConfigFileController::newFile);
+    file->addAction(tr("&Open…"), QKeySequence::Open, m_files, &ConfigFileController::open);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    updateRecentMenu(m_files->recentFiles());
+    file->addSeparator();
+    file->addAction(tr("&Save"), QKeySequence::Save, m_files, &ConfigFileController::save);
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, m_files, &ConfigFileController::saveAs);
+    QMenu* exportMenu = file->addMenu(tr("&Export As"));
+    exportMenu->addAction(tr("mqtt_client, ROS &1…"), this,
+                          [this] { m_files->exportAs(ConfigLayout::Ros1); });
+    exportMenu->addAction(tr("mqtt_client, ROS &2…"), this,
+                          [this] { m_files->exportAs(ConfigLayout::Ros2); });
+    exportMenu->addAction(tr("mqtt_&bridge…"), this, [this] { m_files->exportAs(ConfigLayout::MqttBridge); });
+    file->addAction(tr("Generate &Peer Config…"), m_files, &ConfigFileController::generatePeer);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_undo->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_undo->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(m_configEditor->addRos2MqttAction());
+    edit->addAction(m_configEditor->addMqtt2RosAction());
+    edit->addAction(m_configEditor->duplicateAction());
+    edit->addAction(m_configEditor->deleteAction());
+    edit->addSeparator();
+    edit->addAction(m_map->bridgeToMqttAction());
+    edit->addAction(m_map->bridgeToRosAction());
+    edit->addSeparator();
+    edit->addAction(tr("&Find Mapping"), QKeySequence::Find, this, [this] {
+        m_configEditor->filterEdit()->setFocus(Qt::ShortcutFocusReason);
+        m_configEditor->filterEdit()->selectAll();
+    });
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    for (int i = 0; i < m_pages->count(); ++i) {
+        QAction* a = view->addAction(m_pages->tabText(i), this, [this, i] { m_pages->setCurrentIndex(i); });
+        a->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + i)));
+    }
+
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    QAction* probe = tools->addAction(tr("Link &Probe…"), this, [this] {
+        auto* dialog = findChild<ProbeDialog*>();
+        if (!dialog) {
+            dialog = new ProbeDialog(this);
+            if (m_session->mqtt()->state() != MqttConnection::State::Disconnected)
+                dialog->setProfile(m_session->mqtt()->profile()); // the Discover page's broker
+        }
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
+    probe->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About Bridgescope"), this, [this] {
+        QMessageBox::about(this, tr("About Bridgescope"),
+                           tr("<h3>Bridgescope %1</h3><p>Discover ROS and MQTT topics, bridge them with "
+                              "mqtt_client, and measure the link.</p>")
+                               .arg(QStringLiteral(BRIDGESCOPE_VERSION)));
+    });
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::updateRecentMenu(const QStringList& files)
+{
+    m_recentMenu->clear();
+    for (const QString& path : files) {
+        m_recentMenu->addAction(QFileInfo(path).fileName() + u"  —  "_s + QFileInfo(path).absolutePath(),
+                                this, [this, path] {
+                                    if (m_files->maybeSave())
+                                        m_files->openFile(path);
+                                });
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateTitle()
+{
+    const QString path = m_document->filePath();
+    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+    setWindowTitle(name + u"[*] — Bridgescope"_s);
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (m_files->maybeSave())
+        event->accept();
+    else
+        event->ignore();
+}

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+#include "rundata.h"
+
+#include "latency/latencyengine.h"
+
+#include <algorithm>
+#include <QSet>
+
+bool RunData::replay(LatencyEngine& engine, const std::function<bool()>& keepGoing) const
+{
+    std::vector<int> topicIndex;
+    for (const QString& t : topics)
+        topicIndex.push_back(engine.pipeline().indexOf(t));
+    std::size_t l = 0;
+    for (std::size_t i = 0; i < stamps.size();) {
+        const qint64 drained = stamps[i].drainedNs;
+        for (; i < stamps.size() && stamps[i].drainedNs == drained; ++i) {
+            const RecordedStamp& s = stamps[i];
+            engine.ingest(topicIndex[std::size_t(s.topic)], s.sampleNs, s.timeNs, s.receivedNs);
+            if (keepGoing && i % 65536 == 65535 && !keepGoing())
+                return false;
+        }
+        for (; l < latencies.size() && latencies[l].drainedNs <= drained; ++l)
+            engine.ingest(
+                LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+        engine.expire(drained);
+    }
+    for (; l < latencies.size(); ++l)
+        engine.ingest(
+            LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+    return true;
+}
+
+RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples,
+                             qint64* sharedFirstStamps)
+{
+    QSet<qint64> used;
+    used.reserve(qsizetype(samples.size()));
+    qint64 shared = 0;
+    RunData run;
+    run.info.pipeline = pipeline;
+    run.info.window = 0;
+    run.topics = pipeline.topics();
+    run.stamps.reserve(samples.size() * std::size_t(pipeline.topicCount()));
+    for (const std::vector<qint64>& s : samples) {
+        // The file does not say which sample a row is: its first stamp stands for it (unique in
+        // practice, also across files that are joined).
+        qint64 key = s.front();
+        if (used.contains(key)) {
+            // Another row began at the same time (a coarse clock, a copied row): it is a sample
+            // of its own, not duplicate stamps of the first. The next free value keeps it apart.
+            ++shared;
+            while (used.contains(key))
+                ++key;
+        }
+        used.insert(key);
+        const qint64 last = *std::max_element(s.begin(), s.end());
+        for (std::size_t t = 0; t < s.size(); ++t)
+            run.stamps.push_back({int(t), key, s[t], last, last});
+    }
+    if (!samples.empty()) {
+        run.info.startedNs = samples.front().front();
+        run.info.stoppedNs = samples.back().back();
+    }
+    if (sharedFirstStamps)
+        *sharedFirstStamps = shared;
+    return run;
+}

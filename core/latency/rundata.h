@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "latency/pipeline.h"
+
+#include <functional>
+#include <QStringList>
+#include <vector>
+
+class LatencyEngine;
+
+/// What a run says about itself.
+struct RunInfo
+{
+    QString name;
+    QString notes;
+    qint64 startedNs = 0;
+    qint64 stoppedNs = 0; ///< 0: never stopped (recording, or the recorder died)
+    QString host; ///< machine name and OS
+    QString version; ///< Bridgescope and Qt versions
+    QString rosMaster;
+    QString broker;
+    QString source; ///< for imports: the file it came from
+    Pipeline pipeline;
+    qint64 window = Pipeline::kDefaultWindow; ///< the live page's window while recording
+    qint64 timeoutNs = 5'000'000'000LL;
+    QString bridgeConfigPath;
+    QByteArray bridgeConfig;
+};
+
+/// One stamp as recorded: which topic, which sample, when it was stamped, when Bridgescope got it,
+/// and the drain tick that handed it to the engine (so a replay joins exactly as live did).
+struct RecordedStamp
+{
+    int topic = 0; ///< index into RunData::topics
+    qint64 sampleNs = 0;
+    qint64 timeNs = 0;
+    qint64 receivedNs = 0;
+    qint64 drainedNs = 0;
+};
+
+struct RecordedLatency
+{
+    int series = 0; ///< index into RunData::series
+    qint64 valueNs = 0;
+    qint64 receivedNs = 0;
+    qint64 drainedNs = 0;
+};
+
+/// A run in memory: its info and every raw event, in the order they arrived.
+struct RunData
+{
+    RunInfo info;
+    QStringList topics;
+    std::vector<RecordedStamp> stamps;
+    QStringList series;
+    std::vector<RecordedLatency> latencies;
+    qint64 droppedBeforeImport = 0; ///< e.g. incomplete rows of a suite CSV
+
+    /// Feeds every event to `engine` (set to the run's pipeline before) tick by tick, as live.
+    /// `keepGoing` is polled now and then; false from it stops (and replay() returns false).
+    bool replay(LatencyEngine& engine, const std::function<bool()>& keepGoing = {}) const;
+    /// A file with complete samples only (suite CSV): one stamp per cell, joined at once.
+    /// `sharedFirstStamps`: rows whose first stamp an earlier row has too; each still counts as
+    /// a sample (keyed by the next free value), but cannot be joined with another file's row.
+    static RunData fromSamples(const Pipeline& pipeline, const std::vector<std::vector<qint64>>& samples,
+                               qint64* sharedFirstStamps = nullptr);
+};
+
+/// Progress of long work: called with 0..100; return false to cancel.
+using Progress = std::function<bool(int percent)>;

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include "bagreaderprocess.h"
+
+#include "base/logging.h"
+#include "wire/bagheader.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QProcess>
+#include <QTemporaryDir>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// The child is killed when it reports no progress for this long (a loop in the library).
+constexpr int kStallMs = 120'000;
+} // namespace
+
+QString BagReaderProcess::program()
+{
+    const QString name = u"bridgescope-bagreader"_s;
+    QStringList candidates;
+    if (qEnvironmentVariableIsSet("BRIDGESCOPE_BAGREADER"))
+        candidates << qEnvironmentVariable("BRIDGESCOPE_BAGREADER");
+    if (QCoreApplication::instance()) {
+        const QString dir = QCoreApplication::applicationDirPath();
+        candidates << dir + u'/' + name << dir + u"/../libexec/bridgescope/"_s + name;
+    }
+#ifdef BRIDGESCOPE_BAGREADER_BUILD_PATH
+    candidates << QStringLiteral(BRIDGESCOPE_BAGREADER_BUILD_PATH);
+#endif
+    for (const QString& c : std::as_const(candidates))
+        if (QFileInfo(c).isExecutable() && QFileInfo(c).isFile())
+            return c;
+    return {};
+}
+
+std::optional<RunData> BagReaderProcess::read(const QString& path, QString* error, const Progress& progress)
+{
+    const auto fail = [&](const QString& why) -> std::optional<RunData> {
+        if (error)
+            *error = path + u": "_s + why;
+        return std::nullopt;
+    };
+    if (const QString why = BagHeader::refusal(path); !why.isEmpty())
+        return fail(why);
+    const QString helper = program();
+    if (helper.isEmpty())
+        return fail(tr("cannot read bags: the helper program bridgescope-bagreader is not installed"));
+    QTemporaryDir dir;
+    if (!dir.isValid())
+        return fail(tr("no temporary folder: %1").arg(dir.errorString()));
+    const QString out = dir.filePath(u"bag.bsrun"_s);
+
+    QProcess child;
+    child.setProcessChannelMode(QProcess::SeparateChannels);
+#if defined(__SANITIZE_ADDRESS__)
+    // Under ASan (scripts/sanitize.sh) the helper has no address-space limit, and ASan would turn
+    // rosbag's crashes into reports with exit code 1: let them crash as in a normal build, and
+    // let a runaway allocation fail as it does there.
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(u"ASAN_OPTIONS"_s, env.value(u"ASAN_OPTIONS"_s) + u":handle_segv=0:handle_sigbus=0:allocator_may_return_null=1"_s);
+    child.setProcessEnvironment(env);
+#endif
+    qCDebug(lcReport).noquote() << "starting" << helper << "for" << path;
+    child.start(helper, {QFileInfo(path).absoluteFilePath(), out});
+    if (!child.waitForStarted(10000))
+        return fail(tr("cannot start %1: %2").arg(helper, child.errorString()));
+    QByteArray pending;
+    QElapsedTimer sinceProgress;
+    sinceProgress.start();
+    bool cancelled = false;
+    bool stalled = false;
+    int percent = 0;
+    while (child.state() != QProcess::NotRunning) {
+        child.waitForReadyRead(100);
+        pending += child.readAllStandardOutput();
+        qsizetype nl;
+        while ((nl = pending.indexOf('\n')) >= 0) {
+            const QByteArray line = pending.left(nl);
+            pending.remove(0, nl + 1);
+            bool ok = false;
+            const int said = line.startsWith("progress ") ? line.mid(9).toInt(&ok) : -1;
+            if (!ok)
+                continue;
+            sinceProgress.restart();
+            percent = qBound(0, said, 99);
+        }
+        // Asked every tick, not only on progress: a cancel must not wait for the next 10,000 messages.
+        if (progress && !progress(percent))
+            cancelled = true;
+        if (sinceProgress.elapsed() > kStallMs)
+            stalled = true;
+        if (cancelled || stalled) {
+            child.kill();
+            child.waitForFinished(5000);
+            break;
+        }
+        if (pending.size() > 4096)
+            pending.clear(); // not ours to keep: the child only prints short lines
+    }
+    if (cancelled)
+        return fail(tr("cancelled"));
+    if (stalled)
+        return fail(
+            tr("the bag reader made no progress for %1 s; the bag may be damaged").arg(kStallMs / 1000));
+    const QString said = QString::fromUtf8(child.readAllStandardError().left(4096)).trimmed();
+    qCDebug(lcReport) << "the bag reader ended:" << (child.exitStatus() == QProcess::CrashExit ? "crashed" : "exit")
+                      << child.exitCode();
+    if (child.exitStatus() == QProcess::CrashExit)
+        return fail(tr("the bag is damaged: rosbag's library crashed reading it%1")
+                        .arg(said.isEmpty() ? QString() : u" ("_s + said + u')'));
+    if (child.exitCode() != 0) {
+        if (said.startsWith(path) || said.startsWith(QFileInfo(path).absoluteFilePath())) {
+            if (error)
+                *error = said; // rosbagimport names the file itself
+            return std::nullopt;
+        }
+        return fail(said.isEmpty() ? tr("the bag reader failed (exit %1)").arg(child.exitCode()) : said);
+    }
+    QString why;
+    std::optional<RunData> run = RunFile::read(out, &why);
+    if (!run)
+        return fail(tr("the bag reader's result does not read: %1").arg(why));
+    if (progress)
+        progress(100);
+    return run;
+}

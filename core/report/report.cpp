@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+#include "report.h"
+
+#include "latency/seriesid.h"
+#include "report/runloader.h"
+
+#include <QFileInfo>
+#include <QSet>
+
+using namespace Qt::StringLiterals;
+
+std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<Pipeline>& pipeline,
+                                           const Options& options, const Progress& progress, int percent)
+{
+    auto run = std::make_unique<ReportRun>();
+    run->info = data.info;
+    run->droppedBeforeImport = data.droppedBeforeImport;
+    run->name = data.info.name;
+    Pipeline p = pipeline ? *pipeline : data.info.pipeline;
+    p.setWindow(int(options.window));
+    run->info.pipeline = p;
+    run->engine = std::make_unique<LatencyEngine>(p);
+    run->engine->setTimeoutNs(data.info.timeoutNs > 0 ? data.info.timeoutNs
+                                                      : SampleJoiner::kDefaultTimeoutNs);
+    std::vector<std::vector<qint64>>& samples = run->samples;
+    run->engine->setSampleListener(
+        [&samples](qint64, const std::vector<qint64>& times) { samples.push_back(times); });
+    // Ctrl+C is polled while replaying too: a run of millions of stamps takes a while.
+    const bool finished = data.replay(*run->engine, [&] { return !progress || progress(percent); });
+    run->engine->setSampleListener({});
+    if (!finished)
+        return nullptr;
+    const LatencyEngine& e = *run->engine;
+    for (int s = e.pipeline().stageCount() - 1; s >= 0; --s) // backwards: the first of a label wins
+        run->stageByLabel.insert(e.info(e.stageSeries(s)).label, e.stageSeries(s));
+    return run;
+}
+
+std::optional<Report> Report::build(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
+                                    const Options& options, QString* error, QStringList* warnings,
+                                    const Progress& progress)
+{
+    if (inputs.isEmpty()) {
+        if (error)
+            *error = tr("no input files");
+        return std::nullopt;
+    }
+    std::vector<RunData> data;
+    QStringList kinds;
+    for (qsizetype i = 0; i < inputs.size(); ++i) {
+        const QString& path = inputs[i];
+        const Progress part = [&](int percent) {
+            return !progress || progress(int((100 * i + percent) * 9 / (10 * inputs.size())));
+        };
+        RunLoader::Options loadOptions;
+        loadOptions.skipBadRows = options.skipBadRows;
+        std::optional<RunData> run = RunLoader::load(path, loadOptions, error, warnings, part);
+        if (!run)
+            return std::nullopt;
+        if (pipeline) {
+            // Every topic the pipeline names must be in the input, or nothing would ever complete.
+            const Pipeline inInput(run->topics); // matches either spelling, by hash
+            for (const QString& topic : pipeline->topics()) {
+                const bool found = inInput.indexOf(topic) >= 0;
+                if (!found && !run->stamps.empty()) {
+                    if (error)
+                        *error = tr("%1: no stamps of topic %2 (it has: %3)")
+                                     .arg(path, topic, run->topics.join(u", "_s));
+                    return std::nullopt;
+                }
+            }
+        }
+        if (run->info.name.isEmpty())
+            run->info.name = QFileInfo(path).completeBaseName();
+        kinds << RunLoader::kindName(RunLoader::kindOf(path));
+        data.push_back(std::move(*run));
+    }
+    Report report;
+    report.m_options = options;
+    const auto cancelled = [&] {
+        if (error)
+            *error = tr("cancelled");
+        return std::nullopt;
+    };
+    if (options.join && data.size() > 1) {
+        RunData joined = RunLoader::join(std::move(data));
+        report.m_runs.push_back(compute(std::move(joined), pipeline, options, progress, 90));
+        if (!report.m_runs.back())
+            return cancelled();
+        report.m_runs.back()->path = inputs.join(u", "_s);
+        report.m_runs.back()->kind = kinds.first();
+    } else {
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            const int percent = 90 + int(10 * i / data.size());
+            report.m_runs.push_back(compute(std::move(data[i]), pipeline, options, progress, percent));
+            if (!report.m_runs.back())
+                return cancelled();
+            report.m_runs.back()->path = inputs[qsizetype(i)];
+            report.m_runs.back()->kind = kinds[qsizetype(i)];
+            if (progress && !progress(90 + int(10 * (i + 1) / data.size())))
+                return cancelled();
+        }
+    }
+    return report;
+}
+
+Report Report::fromRuns(std::vector<RunData> runs, const std::optional<Pipeline>& pipeline,
+                        const Options& options)
+{
+    Report report;
+    report.m_options = options;
+    for (RunData& r : runs) {
+        const QString name = r.info.name;
+        report.m_runs.push_back(compute(std::move(r), pipeline, options));
+        report.m_runs.back()->kind = tr("run");
+        report.m_runs.back()->name = name;
+    }
+    return report;
+}
+
+QString Report::title() const
+{
+    if (!m_options.title.isEmpty())
+        return m_options.title;
+    if (m_runs.size() == 1)
+        return tr("Latency report: %1").arg(m_runs.front()->name);
+    QStringList names;
+    for (const auto& r : m_runs)
+        names << r->name;
+    return tr("Latency comparison: %1").arg(names.join(u", "_s));
+}
+
+QList<Report::Row> Report::rows() const
+{
+    QList<Row> out;
+    QSet<QString> seen;
+    for (const auto& run : m_runs) {
+        const LatencyEngine& e = *run->engine;
+        for (int s = 0; s < e.pipeline().stageCount(); ++s) {
+            const LatencyEngine::SeriesInfo& info = e.info(e.stageSeries(s));
+            if (seen.contains(info.label))
+                continue;
+            seen.insert(info.label);
+            out.append({info.label, info.id, info.crossing, false, false});
+        }
+    }
+    out.append({tr("total"), SeriesId::ofKind(SeriesKind::Total).toString(), false, true, false});
+    bool roundTrip = false;
+    bool offset = false;
+    for (const auto& run : m_runs) {
+        roundTrip = roundTrip || run->engine->roundTripSeries() >= 0;
+        offset = offset || run->engine->clockOffsetSeries() >= 0;
+    }
+    if (roundTrip) {
+        out.append({tr("communication, one way (half the round trip)"),
+                    SeriesId::ofKind(SeriesKind::OneWay).toString(), false, false, true});
+        out.append({tr("communication, round trip"), SeriesId::ofKind(SeriesKind::RoundTrip).toString(),
+                    false, false, true});
+    }
+    if (offset)
+        out.append(
+            {tr("clock offset"), SeriesId::ofKind(SeriesKind::ClockOffset).toString(), false, false, true});
+    return out;
+}
+
+std::optional<LatencyStats> Report::stats(const ReportRun& run, const Row& row) const
+{
+    const LatencyEngine& e = *run.engine;
+    if (const std::optional<SeriesId> id = SeriesId::parse(row.seriesId);
+        id && id->kind == SeriesKind::Stage) {
+        const int series = run.stageByLabel.value(row.label, -1); // a scan per row was quadratic
+        return series < 0 ? std::nullopt : std::make_optional(e.series(series).stats());
+    }
+    const int index = e.indexOf(row.seriesId);
+    if (index < 0)
+        return std::nullopt;
+    return e.series(index).stats();
+}

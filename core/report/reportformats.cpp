@@ -1,0 +1,480 @@
+// SPDX-License-Identifier: MIT
+#include "reportformats.h"
+
+#include "latency/latencyreport.h"
+#include "latency/palette.h"
+#include "record/suitecsv.h"
+#include "report/ecdfsvg.h"
+#include "report/report.h"
+#include "report/reportpdf.h"
+
+#include <cmath>
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QLocale>
+#include <QSet>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QString ms(double v)
+{
+    return std::isfinite(v) ? QString::number(v, 'f', 2) : u"–"_s;
+}
+
+QString when(qint64 ns)
+{
+    if (ns <= 0)
+        return QCoreApplication::translate("ReportFormats", "unknown");
+    return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(u"yyyy-MM-dd HH:mm:ss"_s);
+}
+
+QString latexEscape(QString s)
+{
+    QString out;
+    for (const QChar c : s) {
+        switch (c.unicode()) {
+        case u'\\':
+            out += u"\\textbackslash{}"_s;
+            break;
+        case u'&':
+        case u'%':
+        case u'$':
+        case u'#':
+        case u'_':
+        case u'{':
+        case u'}':
+            out += u'\\';
+            out += c;
+            break;
+        case u'~':
+            out += u"\\textasciitilde{}"_s;
+            break;
+        case u'^':
+            out += u"\\textasciicircum{}"_s;
+            break;
+        case 0x2192:
+            out += u"$\\rightarrow$"_s;
+            break; // →
+        case 0x2013:
+            out += u"--"_s;
+            break; // –
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
+QString mdEscape(QString s)
+{
+    return s.replace(u'|', u"\\|"_s);
+}
+
+struct Cells
+{
+    QString label;
+    QStringList values;
+    bool crossing = false;
+    bool emphasized = false;
+    bool derived = false;
+};
+
+/// The stage table as cells: one run with all figures, several runs with their means.
+struct Table
+{
+    QStringList header;
+    QList<Cells> rows;
+};
+
+Table stageTable(const Report& report)
+{
+    Table t;
+    const QList<Report::Row> rows = report.rows();
+    if (!report.isComparison()) {
+        t.header = QStringList {QCoreApplication::translate("ReportFormats", "Stage"),
+                                QCoreApplication::translate("ReportFormats", "Mean [ms]"),
+                                QCoreApplication::translate("ReportFormats", "Median"),
+                                QCoreApplication::translate("ReportFormats", "Std"),
+                                QCoreApplication::translate("ReportFormats", "Min"),
+                                QCoreApplication::translate("ReportFormats", "Max"),
+                                QCoreApplication::translate("ReportFormats", "p99"),
+                                QCoreApplication::translate("ReportFormats", "Count")};
+        const ReportRun& run = *report.runs().front();
+        for (const Report::Row& r : rows) {
+            const std::optional<LatencyStats> s = report.stats(run, r);
+            if (!s)
+                continue;
+            t.rows.append({r.label,
+                           {ms(s->mean), ms(s->median), ms(s->std), ms(s->min), ms(s->max), ms(s->p99),
+                            QString::number(s->count)},
+                           r.crossing,
+                           r.emphasized,
+                           r.derived});
+        }
+        return t;
+    }
+    t.header << QCoreApplication::translate("ReportFormats", "Mean latency [ms]");
+    for (const auto& run : report.runs())
+        t.header << run->name;
+    for (const Report::Row& r : rows) {
+        Cells c {r.label, {}, r.crossing, r.emphasized, r.derived};
+        for (const auto& run : report.runs()) {
+            const std::optional<LatencyStats> s = report.stats(*run, r);
+            c.values << (s ? ms(s->mean) : QString());
+        }
+        t.rows.append(c);
+    }
+    return t;
+}
+
+/// Every run's total: the paper's summary under its Table I.
+Table totalsTable(const Report& report)
+{
+    Table t;
+    t.header = QStringList {QCoreApplication::translate("ReportFormats", "Run"),
+                            QCoreApplication::translate("ReportFormats", "Samples"),
+                            QCoreApplication::translate("ReportFormats", "Dropped"),
+                            QCoreApplication::translate("ReportFormats", "Mean [ms]"),
+                            QCoreApplication::translate("ReportFormats", "Median"),
+                            QCoreApplication::translate("ReportFormats", "Std"),
+                            QCoreApplication::translate("ReportFormats", "Min"),
+                            QCoreApplication::translate("ReportFormats", "Max"),
+                            QCoreApplication::translate("ReportFormats", "p99")};
+    for (const auto& run : report.runs()) {
+        const LatencyEngine& e = *run->engine;
+        const LatencyStats s = e.totalSeries() >= 0 ? e.series(e.totalSeries()).stats() : LatencyStats();
+        t.rows.append({run->name,
+                       {QString::number(e.samples()), QString::number(run->dropped()), ms(s.mean),
+                        ms(s.median), ms(s.std), ms(s.min), ms(s.max), ms(s.p99)},
+                       false,
+                       false,
+                       false});
+    }
+    return t;
+}
+
+/// Title-block lines: what was measured, where, when, how much.
+QList<std::pair<QString, QString>> facts(const ReportRun& run)
+{
+    const LatencyEngine& e = *run.engine;
+    const Pipeline& p = e.pipeline();
+    QList<std::pair<QString, QString>> out;
+    const auto add = [&out](const char* key, const QString& value) {
+        if (!value.isEmpty())
+            out.append({QCoreApplication::translate("ReportFormats", key), value});
+    };
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Run"), run.name);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Source"),
+        run.path.isEmpty() ? QString() : run.path + u" ("_s + run.kind + u')');
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Recorded"),
+        run.info.startedNs > 0 ? when(run.info.startedNs) + u" – "_s
+                + (run.info.stoppedNs > 0 ? when(run.info.stoppedNs)
+                                          : QCoreApplication::translate("ReportFormats", "not stopped"))
+                               : QString());
+    QString pipeline = QCoreApplication::translate("ReportFormats", "%1 stamps, %2 stages")
+                           .arg(p.topicCount())
+                           .arg(p.stageCount());
+    if (p.hasHosts()) {
+        QStringList hosts;
+        QSet<QString> seen; // a list's contains() was quadratic in the hosts of a hostile pipeline
+        for (int i = 0; i < p.topicCount(); ++i) {
+            const QString h = p.host(i);
+            if (!h.isEmpty() && !seen.contains(h)) {
+                seen.insert(h);
+                hosts << h;
+            }
+        }
+        pipeline += QCoreApplication::translate("ReportFormats", "; hosts %1; %2 crossings")
+                        .arg(hosts.join(u", "_s))
+                        .arg(p.crossings().size());
+    }
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Pipeline"), pipeline);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Broker"), run.info.broker);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "ROS master"), run.info.rosMaster);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Samples"),
+        QCoreApplication::translate("ReportFormats", "%1 complete, %2 dropped, %3 duplicate stamps")
+            .arg(e.samples())
+            .arg(run.dropped())
+            .arg(e.counters().duplicates));
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Window"),
+        e.window() > 0 ? QCoreApplication::translate("ReportFormats", "the last %1 samples").arg(e.window())
+                       : QCoreApplication::translate("ReportFormats", "the whole run"));
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Host"), run.info.host);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Notes"), run.info.notes);
+    return out;
+}
+
+QString note()
+{
+    return QCoreApplication::translate(
+        "ReportFormats",
+        "Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows "
+        "in italics cross between hosts: their raw values include the clock offset. "
+        "Communication: total minus every stage on one host, one way being half of it.");
+}
+} // namespace
+
+bool ReportFormats::parse(const QString& name, Format* format)
+{
+    static const QList<std::pair<QString, Format>> names {
+        {u"json"_s, Format::Json}, {u"csv"_s, Format::Csv},   {u"md"_s, Format::Markdown},
+        {u"tex"_s, Format::Latex}, {u"html"_s, Format::Html}, {u"pdf"_s, Format::Pdf}};
+    for (const auto& [n, f] : names)
+        if (n == name.toLower()) {
+            *format = f;
+            return true;
+        }
+    return false;
+}
+
+QString ReportFormats::name(Format format)
+{
+    switch (format) {
+    case Format::Json:
+        return u"json"_s;
+    case Format::Csv:
+        return u"csv"_s;
+    case Format::Markdown:
+        return u"md"_s;
+    case Format::Latex:
+        return u"tex"_s;
+    case Format::Html:
+        return u"html"_s;
+    case Format::Pdf:
+        return u"pdf"_s;
+    }
+    return {};
+}
+
+QString ReportFormats::suffix(Format format)
+{
+    return name(format);
+}
+
+QByteArray ReportFormats::json(const Report& report)
+{
+    const auto one
+        = [](const ReportRun& run) { return LatencyReport::json(*run.engine, run.droppedBeforeImport); };
+    if (!report.isComparison())
+        return QJsonDocument(one(*report.runs().front())).toJson(QJsonDocument::Indented);
+    QJsonArray runs;
+    for (const auto& run : report.runs()) {
+        QJsonObject o = one(*run);
+        o.insert(u"name"_s, run->name);
+        o.insert(u"source"_s, run->path);
+        runs.append(o);
+    }
+    return QJsonDocument(QJsonObject {{u"runs"_s, runs}}).toJson(QJsonDocument::Indented);
+}
+
+QByteArray ReportFormats::csv(const Report& report, bool perSampleMs, QString* error)
+{
+    if (report.isComparison()) {
+        if (error)
+            *error = tr("a CSV file holds a single run: give one input, or join several with --join");
+        return {};
+    }
+    const ReportRun& run = *report.runs().front();
+    const Pipeline& p = run.engine->pipeline();
+    if (!perSampleMs)
+        return SuiteCsv::write(p.topics(), run.samples);
+    QStringList header;
+    for (int s = 0; s < p.stageCount(); ++s)
+        header << p.stageLabel(s) + u" [ms]"_s;
+    header << tr("total [ms]");
+    QByteArray out = SuiteCsv::header(header);
+    const auto number
+        = [](qint64 ns) { return QByteArray::number(double(ns) / 1e6, 'g', QLocale::FloatingPointShortest); };
+    for (const std::vector<qint64>& t : run.samples) {
+        QByteArray line;
+        for (std::size_t s = 0; s + 1 < t.size(); ++s)
+            line += number(t[s + 1] - t[s]) + ',';
+        line += number(t.back() - t.front());
+        out += line + "\r\n";
+    }
+    return out;
+}
+
+QByteArray ReportFormats::markdown(const Report& report)
+{
+    QString out = u"# "_s + report.title() + u"\n\n"_s;
+    for (const auto& run : report.runs()) {
+        if (report.isComparison())
+            out += u"## "_s + run->name + u"\n\n"_s;
+        for (const auto& [key, value] : facts(*run))
+            out += u"- **"_s + key + u":** "_s + mdEscape(value) + u'\n';
+        out += u'\n';
+    }
+    const auto table = [&out](const Table& t) {
+        out += u"| "_s + t.header.join(u" | "_s) + u" |\n|"_s;
+        for (qsizetype i = 0; i < t.header.size(); ++i)
+            out += i == 0 ? u" --- |"_s : u" ---: |"_s;
+        out += u'\n';
+        for (const Cells& c : t.rows) {
+            QString label = mdEscape(c.label);
+            if (c.emphasized)
+                label = u"**"_s + label + u"**"_s;
+            else if (c.crossing || c.derived)
+                label = u"*"_s + label + u"*"_s;
+            QStringList values = c.values;
+            if (c.emphasized)
+                for (QString& v : values)
+                    if (!v.isEmpty())
+                        v = u"**"_s + v + u"**"_s;
+            out += u"| "_s + label + u" | "_s + values.join(u" | "_s) + u" |\n"_s;
+        }
+        out += u'\n';
+    };
+    out += u"## "_s + tr("Latency per stage") + u"\n\n"_s;
+    table(stageTable(report));
+    if (report.isComparison()) {
+        out += u"## "_s + tr("Total latency per run") + u"\n\n"_s;
+        table(totalsTable(report));
+    }
+    out += note() + u'\n';
+    return out.toUtf8();
+}
+
+QByteArray ReportFormats::latex(const Report& report)
+{
+    QString out = u"% "_s + report.title() + u"\n% "_s
+        + tr("Written by Bridgescope; needs \\usepackage{booktabs}.") + u'\n';
+    const auto table = [&out](const Table& t, const QString& caption) {
+        out += u"% "_s + caption + u'\n';
+        out += u"\\begin{tabular}{l"_s + QString(t.header.size() - 1, u'r') + u"}\n\\toprule\n"_s;
+        QStringList head;
+        for (const QString& h : t.header)
+            head << latexEscape(h);
+        out += head.join(u" & "_s) + u" \\\\\n\\midrule\n"_s;
+        bool derivedStarted = false;
+        for (const Cells& c : t.rows) {
+            if ((c.emphasized || c.derived) && !derivedStarted) {
+                out += u"\\midrule\n"_s;
+                derivedStarted = true;
+            }
+            QString label = latexEscape(c.label);
+            if (c.emphasized)
+                label = u"\\textbf{"_s + label + u'}';
+            else if (c.crossing || c.derived)
+                label = u"\\textit{"_s + label + u'}';
+            QStringList cells {label};
+            for (const QString& v : c.values)
+                cells << (c.emphasized && !v.isEmpty() ? u"\\textbf{"_s + latexEscape(v) + u'}'
+                                                       : latexEscape(v));
+            out += cells.join(u" & "_s) + u" \\\\\n"_s;
+        }
+        out += u"\\bottomrule\n\\end{tabular}\n\n"_s;
+    };
+    table(stageTable(report), tr("Latency per stage"));
+    if (report.isComparison())
+        table(totalsTable(report), tr("Total latency per run"));
+    out += u"% "_s + note() + u'\n';
+    return out.toUtf8();
+}
+
+QString ReportFormats::htmlBody(const Report& report, bool forQtRichText)
+{
+    QString out = u"<h1>"_s + report.title().toHtmlEscaped() + u"</h1>\n"_s;
+    for (const auto& run : report.runs()) {
+        if (report.isComparison())
+            out += u"<h3>"_s + run->name.toHtmlEscaped() + u"</h3>\n"_s;
+        out += u"<table class=\"facts\">\n"_s;
+        for (const auto& [key, value] : facts(*run))
+            out += u"<tr><th>"_s + key.toHtmlEscaped() + u"</th><td>"_s + value.toHtmlEscaped()
+                + u"</td></tr>\n"_s;
+        out += u"</table>\n"_s;
+    }
+    const QString border = forQtRichText ? u" border=\"1\" cellspacing=\"0\" cellpadding=\"3\""_s : QString();
+    const auto table = [&](const Table& t, const QString& caption) {
+        out += u"<h2>"_s + caption.toHtmlEscaped() + u"</h2>\n<table class=\"stats\""_s + border
+            + u">\n<tr>"_s;
+        for (qsizetype i = 0; i < t.header.size(); ++i)
+            out += (i == 0 ? u"<th class=\"label\" align=\"left\">"_s : u"<th align=\"right\">"_s)
+                + t.header[i].toHtmlEscaped() + u"</th>"_s;
+        out += u"</tr>\n"_s;
+        for (const Cells& c : t.rows) {
+            QString label = c.label.toHtmlEscaped();
+            if (c.emphasized)
+                label = u"<b>"_s + label + u"</b>"_s;
+            else if (c.crossing || c.derived)
+                label = u"<i>"_s + label + u"</i>"_s;
+            out += u"<tr><td class=\"label\">"_s + label + u"</td>"_s;
+            for (const QString& v : c.values)
+                out += u"<td align=\"right\">"_s
+                    + (c.emphasized ? u"<b>"_s + v.toHtmlEscaped() + u"</b>"_s : v.toHtmlEscaped())
+                    + u"</td>"_s;
+            out += u"</tr>\n"_s;
+        }
+        out += u"</table>\n"_s;
+    };
+    table(stageTable(report), tr("Latency per stage"));
+    if (report.isComparison())
+        table(totalsTable(report), tr("Total latency per run"));
+    out += u"<p class=\"note\">"_s + note().toHtmlEscaped() + u"</p>\n"_s;
+    return out;
+}
+
+QByteArray ReportFormats::ecdfSvg(const Report& report, int width, int height)
+{
+    QList<EcdfSvg::Curve> curves;
+    int color = 0;
+    for (const auto& run : report.runs()) {
+        const LatencyEngine& e = *run->engine;
+        if (e.totalSeries() < 0)
+            continue;
+        const QString total = report.isComparison() ? run->name : tr("total");
+        curves.append({total, seriesColor(color++), &e.series(e.totalSeries())});
+        if (!report.isComparison() && e.oneWaySeries() >= 0)
+            curves.append({tr("communication, one way"), seriesColor(color++), &e.series(e.oneWaySeries())});
+    }
+    return EcdfSvg::render(curves, width, height,
+                           report.isComparison() ? tr("Total latency per run") : tr("Latency distribution"));
+}
+
+QByteArray ReportFormats::html(const Report& report)
+{
+    QString out = u"<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
+                  "<meta charset=\"utf-8\"/>\n<title>"_s
+        + report.title().toHtmlEscaped()
+        + u"</title>\n<style>\n"
+          "body { font-family: 'DejaVu Sans', Helvetica, Arial, sans-serif; max-width: 60em; margin: 2em "
+          "auto; "
+          "color: #222; }\n"
+          "table { border-collapse: collapse; margin: 0.5em 0 1.5em; }\n"
+          "table.stats th, table.stats td { border-bottom: 1px solid #ccc; padding: 0.25em 0.7em; }\n"
+          "table.stats th { border-bottom: 2px solid #444; text-align: right; }\n"
+          "table.stats .label { text-align: left; }\n"
+          "table.facts th { text-align: left; padding-right: 1em; font-weight: normal; color: #555; }\n"
+          ".note { color: #555; font-size: 0.9em; }\n"
+          "</style>\n</head>\n<body>\n"_s;
+    out += htmlBody(report, false);
+    out += u"<h2>"_s + tr("ECDF").toHtmlEscaped() + u"</h2>\n<figure>\n"_s
+        + QString::fromUtf8(ecdfSvg(report)) + u"</figure>\n"_s;
+    out += u"<p class=\"note\">"_s
+        + tr("Made with Bridgescope %1 on %2.")
+              .arg(QStringLiteral(BRIDGESCOPE_VERSION), QDateTime::currentDateTime().toString(Qt::ISODate))
+              .toHtmlEscaped()
+        + u"</p>\n</body>\n</html>\n"_s;
+    return out.toUtf8();
+}
+
+QByteArray ReportFormats::render(const Report& report, Format format, bool perSampleMs, QString* error)
+{
+    switch (format) {
+    case Format::Json:
+        return json(report);
+    case Format::Csv:
+        return csv(report, perSampleMs, error);
+    case Format::Markdown:
+        return markdown(report);
+    case Format::Latex:
+        return latex(report);
+    case Format::Html:
+        return html(report);
+    case Format::Pdf:
+        return ReportPdf::render(report);
+    }
+    return {};
+}

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#include "reportpdf.h"
+
+#include "report/report.h"
+#include "report/reportformats.h"
+
+#include <QAbstractTextDocumentLayout>
+#include <QBuffer>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QSvgRenderer>
+#include <QTextDocument>
+
+using namespace Qt::StringLiterals;
+
+QByteArray ReportPdf::render(const Report& report)
+{
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QPdfWriter pdf(&buffer);
+        pdf.setPageSize(QPageSize(QPageSize::A4));
+        pdf.setPageMargins(QMarginsF(18, 16, 18, 16), QPageLayout::Millimeter);
+        pdf.setResolution(300);
+        pdf.setTitle(report.title());
+        pdf.setCreator(u"Bridgescope "_s + QStringLiteral(BRIDGESCOPE_VERSION));
+        QPainter painter(&pdf);
+        const QRectF page(QPointF(0, 0), QSizeF(pdf.pageLayout().paintRectPixels(pdf.resolution()).size()));
+
+        QTextDocument doc;
+        doc.documentLayout()->setPaintDevice(&pdf);
+        QFont font(u"DejaVu Sans"_s);
+        font.setPointSizeF(8.5);
+        doc.setDefaultFont(font);
+        doc.setDefaultStyleSheet(u"h1 { font-size: 15pt; } h2 { font-size: 11pt; margin-top: 10px; } "
+                                 "h3 { font-size: 10pt; } th { color: #444; } "
+                                 ".note { color: #555; font-size: 7.5pt; }"_s);
+        doc.setHtml(ReportFormats::htmlBody(report, true));
+        doc.setPageSize(page.size());
+        const int pages = doc.pageCount();
+        for (int i = 0; i < pages; ++i) {
+            if (i > 0)
+                pdf.newPage();
+            painter.save();
+            painter.translate(0, -page.height() * i);
+            doc.drawContents(&painter, QRectF(0, page.height() * i, page.width(), page.height()));
+            painter.restore();
+        }
+
+        // The figure below the tables, or on a page of its own when it does not fit.
+        const QByteArray svg = ReportFormats::ecdfSvg(report);
+        QSvgRenderer renderer(svg);
+        const QSizeF natural = renderer.defaultSize();
+        const double height = page.width() * natural.height() / natural.width();
+        double y = doc.size().height() - page.height() * (pages - 1) + page.height() * 0.02;
+        if (y + height > page.height()) {
+            pdf.newPage();
+            y = 0;
+        }
+        renderer.render(&painter, QRectF(0, y, page.width(), height));
+    }
+    return buffer.data();
+}

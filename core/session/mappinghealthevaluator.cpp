@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#include "mappinghealthevaluator.h"
+
+#include "mqtt/mqtttopictree.h"
+#include "ros/rosmasterapi.h"
+#include "ros/rosmonitor.h"
+
+using namespace Qt::StringLiterals;
+
+bool MappingHealthEvaluator::sameType(const QString& a, const QString& b)
+{
+    auto norm = [](QString t) { return t.replace(u"/msg/"_s, u"/"_s); };
+    return norm(a) == norm(b);
+}
+
+namespace {
+QString rate(double hz)
+{
+    return MappingHealthEvaluator::tr("%1 Hz").arg(hz, 0, 'f', hz < 10 ? 1 : 0);
+}
+} // namespace
+
+QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfig& config, const Inputs& in)
+{
+    QHash<quint64, MappingHealth> out;
+    for (const Mapping& m : config.mappings) {
+        MappingHealth h;
+        const QString ros = m.rosTopic();
+        const QString mqtt = m.mqttTopic();
+        const RosTopicInfo* rosInfo = in.graph ? in.graph->topic(ros) : nullptr;
+        const auto mqttInfo = in.mqtt ? in.mqtt->info(mqtt) : std::nullopt;
+        const bool mqttActive = mqttInfo && in.nowNs - mqttInfo->lastNs <= in.activeWindowNs;
+        const RosMonitorStats* mon = nullptr;
+        if (in.monitored) {
+            const auto it = in.monitored->constFind(ros);
+            if (it != in.monitored->cend())
+                mon = &*it;
+        }
+        const bool rosPublished = rosInfo && !rosInfo->publishers.isEmpty();
+        const QString rosRate = mon && mon->messages
+            ? rate(mon->rateHz)
+            : (rosPublished ? tr("publishers: %1").arg(rosInfo->publishers.size()) : tr("no publisher"));
+        const QString mqttRate
+            = mqttActive ? rate(mqttInfo->rate) : (mqttInfo ? tr("silent") : tr("never seen"));
+        if (mqttInfo && mqttInfo->latencySamples)
+            h.latencyMs = mqttInfo->lastLatencyMs;
+
+        if (!in.rosReachable || !in.mqttConnected) {
+            h.state = MappingHealth::Unknown;
+            h.summary = !in.rosReachable ? tr("ROS master not reachable") : tr("broker not connected");
+            h.detail = tr("Connect to the ROS master and the broker on the Discover page to see this "
+                          "mapping's traffic.");
+            out.insert(m.id, h);
+            continue;
+        }
+        if (m.direction == Direction::Ros2Mqtt) {
+            if (!rosInfo) {
+                h.state = MappingHealth::Missing;
+                h.summary = tr("ROS topic not on the master");
+                h.detail = tr("Nobody publishes or subscribes '%1' on this master.").arg(ros);
+            } else if (!rosPublished) {
+                h.state = MappingHealth::Idle;
+                h.summary = tr("no publisher on ROS");
+                h.detail = tr("'%1' exists but nobody publishes it, so there is nothing to bridge.").arg(ros);
+            } else if (!mqttActive) {
+                h.state = MappingHealth::NoBridge;
+                h.summary = tr("no bridge running?");
+                h.detail = tr("'%1' is published (%2) but nothing arrived on '%3' in the last %4 s.")
+                               .arg(ros, rosRate, mqtt)
+                               .arg(in.activeWindowNs / 1000000000);
+            } else {
+                h.state = MappingHealth::Healthy;
+                h.summary = rosRate + u" → "_s + mqttRate;
+                h.detail = tr("'%1' (%2) arrives on '%3' (%4).").arg(ros, rosRate, mqtt, mqttRate);
+            }
+        } else {
+            if (!mqttInfo) {
+                h.state = MappingHealth::Missing;
+                h.summary = tr("MQTT topic never seen");
+                h.detail = tr("Nothing has been published on '%1' since Bridgescope connected.").arg(mqtt);
+            } else if (!mqttActive) {
+                h.state = MappingHealth::Idle;
+                h.summary = tr("MQTT topic silent");
+                h.detail = tr("'%1' has been silent for %2 s.")
+                               .arg(mqtt)
+                               .arg((in.nowNs - mqttInfo->lastNs) / 1000000000);
+            } else if (!rosPublished) {
+                h.state = MappingHealth::NoBridge;
+                h.summary = tr("no bridge running?");
+                h.detail = tr("'%1' carries %2 but nobody publishes '%3' on ROS.").arg(mqtt, mqttRate, ros);
+            } else {
+                h.state = MappingHealth::Healthy;
+                h.summary = mqttRate + u" → "_s + rosRate;
+                h.detail = tr("'%1' (%2) is published on '%3' (%4).").arg(mqtt, mqttRate, ros, rosRate);
+            }
+        }
+        // A type announcement that contradicts the ROS graph outranks everything but a missing side.
+        if (rosInfo && mqttInfo && mqttInfo->rosType && !rosInfo->type.isEmpty()
+            && !sameType(mqttInfo->rosType->name, rosInfo->type)) {
+            h.state = MappingHealth::TypeMismatch;
+            h.summary = tr("type mismatch");
+            h.detail = tr("The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.")
+                           .arg(mqttInfo->rosType->name, mqtt, ros, rosInfo->type);
+        }
+        if (h.latencyMs >= 0 && h.state == MappingHealth::Healthy)
+            h.summary += tr(", %1 ms").arg(h.latencyMs, 0, 'f', 1);
+        out.insert(m.id, h);
+    }
+    return out;
+}

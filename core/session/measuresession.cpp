@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: MIT
+#include "measuresession.h"
+
+#include "latency/latencystatsmodel.h"
+#include "record/runrecorder.h"
+#include "ros/rosgraphpoller.h"
+#include "ros/rosstampsource.h"
+#include "session/livesession.h"
+#include "wire/stampcodec.h"
+
+#include <QDateTime>
+#include <QSysInfo>
+#include <QThread>
+
+using namespace Qt::StringLiterals;
+
+MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
+    : QObject(parent)
+    , m_live(live)
+    , m_ros(new RosStampSource(this))
+    , m_stats(new LatencyStatsModel(this))
+    , m_recorder(new RunRecorder(this))
+{
+    connect(m_recorder, &RunRecorder::failed, this, [this](const QString& why) {
+        QString ignored;
+        m_recorder->stop(&ignored);
+        emit recordingChanged(false);
+        emit recordingFailed(why);
+    });
+    // The MQTT batch comes before drained() in the same tick: collect it, ingest on drained().
+    live->addMqttListener([this](const std::vector<MqttMessage>& batch) {
+        m_mqttDecoder.decode(batch, m_pendingStamps, m_pendingLatencies);
+    });
+    connect(live, &LiveSession::drained, this, &MeasureSession::onDrained);
+    connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &MeasureSession::onGraph);
+    connect(live->rosGraph(), &RosGraphPoller::masterRestarted, m_ros, &RosStampSource::resubscribeAll);
+    m_ros->setMasterUri(live->rosMasterUri());
+    m_stats->refresh(m_engine);
+}
+
+MeasureSession::~MeasureSession() = default;
+
+void MeasureSession::onGraph(const RosGraph& graph)
+{
+    QSet<QString> stamps;
+    QSet<QString> latencies;
+    for (const RosTopicInfo& t : graph.topics) {
+        if (t.type == QLatin1StringView(StampCodec::typeName()))
+            stamps.insert(t.name);
+        else if (t.type == u"std_msgs/Float64"_s && t.name.contains(u"/latencies/"_s))
+            latencies.insert(t.name);
+    }
+    m_graphStampTopics = stamps;
+    m_graphLatencyTopics = latencies;
+    updateSubscriptions();
+}
+
+void MeasureSession::updateSubscriptions()
+{
+    QSet<QString> stamps = m_graphStampTopics;
+    // The pipeline's topics too, before the master lists them (ROS names start with '/').
+    for (const QString& t : m_engine.pipeline().topics())
+        stamps.insert(t.startsWith(u'/') ? t : u'/' + t);
+    m_ros->setTopics(stamps, m_graphLatencyTopics);
+}
+
+void MeasureSession::onDrained(qint64 nowNs)
+{
+    Q_ASSERT(QThread::currentThread() == thread());
+    std::vector<StampEvent> stamps = m_ros->takeStamps();
+    stamps.insert(stamps.end(), std::make_move_iterator(m_pendingStamps.begin()),
+                  std::make_move_iterator(m_pendingStamps.end()));
+    m_pendingStamps.clear();
+    std::vector<LatencyValue> latencies = m_ros->takeLatencies();
+    latencies.insert(latencies.end(), m_pendingLatencies.begin(), m_pendingLatencies.end());
+    m_pendingLatencies.clear();
+    if (m_showingRun)
+        return; // a recorded run is on screen: live stamps are not measured meanwhile
+    m_recorder->add(stamps, latencies, nowNs);
+
+    const int topicsBefore = int(m_discovery.topics().size());
+    for (const StampEvent& e : stamps)
+        m_discovery.add(e);
+    if (m_automatic && !m_recorder->isRecording())
+        proposeIfNew();
+    m_engine.ingest(stamps);
+    for (const LatencyValue& v : latencies)
+        m_engine.ingest(v);
+    m_engine.expire(nowNs);
+    if (int(m_discovery.topics().size()) != topicsBefore)
+        emit stampTopicsChanged();
+    if (!m_paused)
+        publish();
+}
+
+void MeasureSession::proposeIfNew()
+{
+    // Again only when the set of topics grew, or the first complete samples give a real order:
+    // re-proposing on every small change of order would reset the figures again and again.
+    const int topics = int(m_discovery.topics().size());
+    const bool complete = m_discovery.completeSamples() > 0;
+    if (topics < 2 || (topics == m_proposedTopics && (complete == m_proposedWithCompleteSamples)))
+        return;
+    m_proposedTopics = topics;
+    m_proposedWithCompleteSamples = complete;
+    const Pipeline proposal = m_discovery.propose(int(m_engine.window()));
+    if (proposal == m_engine.pipeline())
+        return;
+    m_engine.setPipeline(proposal);
+    updateSubscriptions();
+    emit pipelineChanged();
+}
+
+void MeasureSession::publish()
+{
+    if (m_engine.revision() == m_publishedRevision)
+        return;
+    m_publishedRevision = m_engine.revision();
+    m_stats->refresh(m_engine);
+    emit updated();
+}
+
+void MeasureSession::setPipeline(const Pipeline& pipeline)
+{
+    if (m_recorder->isRecording() || m_showingRun) {
+        emit pipelineChanged(); // the views go back to the pipeline in force
+        return;
+    }
+    m_automatic = false;
+    m_engine.setPipeline(pipeline);
+    updateSubscriptions();
+    emit pipelineChanged();
+    publish();
+}
+
+void MeasureSession::setAutomatic()
+{
+    if (m_recorder->isRecording() || m_showingRun)
+        return;
+    m_automatic = true;
+    m_proposedTopics = 0;
+    m_proposedWithCompleteSamples = false;
+    proposeIfNew();
+    publish();
+}
+
+void MeasureSession::setWindow(qint64 samples)
+{
+    m_engine.setWindow(samples);
+    publish();
+}
+
+void MeasureSession::setPaused(bool paused)
+{
+    m_paused = paused;
+    if (!paused)
+        publish();
+}
+
+void MeasureSession::reset()
+{
+    m_engine.reset();
+    publish();
+}
+
+quint64 MeasureSession::malformedStamps() const
+{
+    return m_mqttDecoder.malformed() + m_ros->malformed() + m_ros->wrongType();
+}
+
+QHash<QString, quint64> MeasureSession::malformedStampsByTopic() const
+{
+    QHash<QString, quint64> all = m_ros->malformedByTopic();
+    for (auto it = m_mqttDecoder.malformedByTopic().cbegin(); it != m_mqttDecoder.malformedByTopic().cend(); ++it)
+        all[it.key()] += it.value();
+    return all;
+}
+
+QString MeasureSession::lastStampError() const
+{
+    QStringList both;
+    for (const QString& e : {m_ros->lastError(), m_mqttDecoder.lastError()})
+        if (!e.isEmpty())
+            both << e;
+    return both.join(u"; ");
+}
+
+bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* error)
+{
+    if (m_showingRun) {
+        if (error)
+            *error = tr("a recorded run is on screen: go back to live first");
+        return false;
+    }
+    if (m_engine.pipeline().isEmpty()) {
+        if (error)
+            *error = tr("no pipeline yet: load one, or wait until stamps arrive");
+        return false;
+    }
+    info.pipeline = m_engine.pipeline();
+    info.window = m_engine.window();
+    info.timeoutNs = m_engine.timeoutNs();
+    info.rosMaster = m_live->rosMasterUri();
+    info.broker = m_live->mqtt()->profile().url;
+    info.startedNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
+    if (info.host.isEmpty())
+        info.host = QSysInfo::machineHostName() + u" ("_s + QSysInfo::prettyProductName() + u')';
+    if (info.version.isEmpty())
+        info.version = u"Bridgescope "_s + QStringLiteral(BRIDGESCOPE_VERSION) + u", Qt "_s
+            + QString::fromLatin1(qVersion());
+    if (!m_recorder->start(path, info, error))
+        return false;
+    // A run starts from zero, so that opening it later shows exactly what was shown live.
+    m_engine.reset();
+    publish();
+    emit recordingChanged(true);
+    return true;
+}
+
+bool MeasureSession::stopRecording(QString* error)
+{
+    if (!m_recorder->isRecording())
+        return false;
+    const bool ok = m_recorder->stop(error);
+    emit recordingChanged(false);
+    return ok;
+}
+
+bool MeasureSession::isRecording() const
+{
+    return m_recorder->isRecording();
+}
+
+bool MeasureSession::showRun(const RunData& run, QString* error)
+{
+    if (m_recorder->isRecording()) {
+        if (error)
+            *error = tr("recording: stop it before opening a run");
+        return false;
+    }
+    if (!m_showingRun) {
+        m_livePipeline = m_engine.pipeline();
+        m_liveAutomatic = m_automatic;
+        m_liveTimeoutNs = m_engine.timeoutNs();
+    }
+    m_showingRun = true;
+    m_shownRun = run.info;
+    Pipeline p = run.info.pipeline;
+    p.setWindow(int(run.info.window));
+    m_engine.setPipeline(p);
+    m_engine.setTimeoutNs(run.info.timeoutNs > 0 ? run.info.timeoutNs : SampleJoiner::kDefaultTimeoutNs);
+    run.replay(m_engine);
+    emit pipelineChanged();
+    emit showingRunChanged(true);
+    publish();
+    return true;
+}
+
+void MeasureSession::showLive()
+{
+    if (!m_showingRun)
+        return;
+    m_showingRun = false;
+    m_shownRun = RunInfo();
+    m_engine.setTimeoutNs(m_liveTimeoutNs);
+    m_engine.setPipeline(m_livePipeline);
+    m_automatic = m_liveAutomatic;
+    m_proposedTopics = 0;
+    m_proposedWithCompleteSamples = false;
+    emit pipelineChanged();
+    emit showingRunChanged(false);
+    publish();
+}

@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: MIT
+#include "ecdfchart.h"
+
+#include "base/atomicfile.h"
+#include "latency/ecdf.h"
+#include "latency/ecdfsource.h"
+#include "latency/latencyseries.h"
+#include "latency/palette.h"
+
+#include <cmath>
+#include <QApplication>
+#include <QBuffer>
+#include <QChart>
+#include <QChartView>
+#include <QClipboard>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QPainter>
+#include <QSvgGenerator>
+#include <QValueAxis>
+
+using namespace Qt::StringLiterals;
+
+struct EcdfChart::Curve
+{
+    QString id;
+    QLineSeries* ecdf = nullptr;
+    QLineSeries* mean = nullptr;
+    QLineSeries* median = nullptr;
+};
+
+struct EcdfChart::Panel
+{
+    QChartView* view = nullptr;
+    QChart* chart = nullptr;
+    QAbstractAxis* x = nullptr;
+    QValueAxis* y = nullptr;
+    std::vector<Curve> curves;
+    double lo = 0; ///< the x range shown; kept while the data fit it well (no jumping axis)
+    double hi = 0;
+};
+
+EcdfChart::EcdfChart(QWidget* parent)
+    : QWidget(parent)
+    , m_grid(new QGridLayout(this))
+{
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    m_grid->setSpacing(2);
+    rebuild();
+}
+
+EcdfChart::~EcdfChart() = default;
+
+QColor EcdfChart::colorFor(int seriesIndex)
+{
+    return QColor(seriesColor(seriesIndex));
+}
+
+void EcdfChart::setSource(const EcdfSource* source)
+{
+    m_source = source;
+    rebuild();
+}
+
+void EcdfChart::setSeries(const QStringList& ids)
+{
+    if (ids == m_ids)
+        return;
+    m_ids = ids;
+    rebuild();
+}
+
+void EcdfChart::setLogScale(bool on)
+{
+    if (on == m_log)
+        return;
+    m_log = on;
+    rebuild();
+}
+
+void EcdfChart::setSmallMultiples(bool on)
+{
+    if (on == m_multiples)
+        return;
+    m_multiples = on;
+    rebuild();
+}
+
+QList<QChartView*> EcdfChart::views() const
+{
+    QList<QChartView*> out;
+    for (const auto& p : m_panels)
+        out << p->view;
+    return out;
+}
+
+EcdfChart::Panel* EcdfChart::panelOf(const QString& id) const
+{
+    for (const auto& p : m_panels)
+        for (const Curve& c : p->curves)
+            if (c.id == id)
+                return p.get();
+    return nullptr;
+}
+
+qsizetype EcdfChart::pointCount(const QString& id) const
+{
+    if (Panel* p = panelOf(id))
+        for (const Curve& c : p->curves)
+            if (c.id == id)
+                return c.ecdf->count();
+    return 0;
+}
+
+std::pair<double, double> EcdfChart::range(const QString& id) const
+{
+    if (Panel* p = panelOf(id))
+        return {p->lo, p->hi};
+    return {0, 0};
+}
+
+void EcdfChart::rebuild()
+{
+    for (auto& p : m_panels) {
+        m_grid->removeWidget(p->view);
+        delete p->view;
+    }
+    m_panels.clear();
+    m_layoutRevision = m_source ? m_source->ecdfLayoutRevision() : 0;
+    QStringList ids;
+    for (const QString& id : std::as_const(m_ids))
+        if (m_source && m_source->ecdfIndex(id) >= 0)
+            ids << id;
+    const int panels = m_multiples ? std::max<int>(1, int(ids.size())) : 1;
+    const int columns = int(std::ceil(std::sqrt(double(panels))));
+    for (int i = 0; i < panels; ++i) {
+        auto panel = std::make_unique<Panel>();
+        panel->chart = new QChart;
+        panel->chart->setMargins(QMargins(4, 4, 4, 4));
+        panel->chart->legend()->setAlignment(Qt::AlignBottom);
+        panel->chart->legend()->setVisible(!m_multiples);
+        panel->view = new QChartView(panel->chart);
+        panel->view->setRenderHint(QPainter::Antialiasing);
+        panel->view->setObjectName(u"ecdfView%1"_s.arg(i));
+        if (m_log) {
+            auto* axis = new QLogValueAxis;
+            axis->setBase(10);
+            axis->setMinorTickCount(8);
+            axis->setLabelFormat(u"%g"_s);
+            panel->x = axis;
+        } else {
+            auto* axis = new QValueAxis;
+            axis->setLabelFormat(u"%g"_s);
+            panel->x = axis;
+        }
+        panel->x->setTitleText(tr("latency [ms]"));
+        panel->y = new QValueAxis;
+        panel->y->setRange(0, 1);
+        panel->y->setTickCount(6);
+        panel->y->setTitleText(tr("ECDF"));
+        panel->y->setLabelFormat(u"%.1f"_s);
+        panel->chart->addAxis(panel->x, Qt::AlignBottom);
+        panel->chart->addAxis(panel->y, Qt::AlignLeft);
+        m_grid->addWidget(panel->view, i / columns, i % columns);
+        panel->view->show(); // at once: a layout would show it only on the next event loop pass
+        m_panels.push_back(std::move(panel));
+    }
+    if (m_panels.size() == 1 && ids.isEmpty())
+        m_panels.front()->chart->setTitle(tr("Check a series in the table to plot its ECDF"));
+    for (qsizetype i = 0; i < ids.size(); ++i) {
+        Panel& p = *m_panels[m_multiples ? std::size_t(i) : 0];
+        const int index = m_source->ecdfIndex(ids[i]);
+        const QColor color = colorFor(index);
+        Curve c;
+        c.id = ids[i];
+        c.ecdf = new QLineSeries;
+        c.ecdf->setName(m_source->ecdfLabel(index));
+        c.ecdf->setPen(QPen(color, 2));
+        c.mean = new QLineSeries;
+        c.mean->setPen(QPen(color, 1.5, Qt::DashLine));
+        c.median = new QLineSeries;
+        c.median->setPen(QPen(color, 1.5, Qt::DotLine));
+        for (QLineSeries* s : {c.ecdf, c.mean, c.median}) {
+            p.chart->addSeries(s);
+            s->attachAxis(p.x);
+            s->attachAxis(p.y);
+        }
+        for (QLineSeries* s : {c.mean, c.median})
+            for (QLegendMarker* m : p.chart->legend()->markers(s))
+                m->setVisible(false);
+        if (m_multiples)
+            p.chart->setTitle(m_source->ecdfLabel(index));
+        p.curves.push_back(c);
+    }
+    refresh();
+}
+
+void EcdfChart::refresh()
+{
+    if (!m_source)
+        return;
+    if (m_source->ecdfLayoutRevision() != m_layoutRevision) {
+        rebuild(); // the pipeline changed under the chart: series may be gone or renamed
+        return;
+    }
+    for (auto& panel : m_panels) {
+        Panel& p = *panel;
+        // The data's range over every curve of the panel.
+        double lo = std::numeric_limits<double>::infinity();
+        double hi = -lo;
+        for (const Curve& c : p.curves) {
+            const LatencySeries& s = m_source->ecdfSeries(m_source->ecdfIndex(c.id));
+            if (s.count() == 0)
+                continue;
+            lo = std::min(lo, s.toMs(s.sorted().min()));
+            hi = std::max(hi, s.toMs(s.sorted().max()));
+        }
+        if (!(hi >= lo)) {
+            lo = m_log ? 0.1 : 0;
+            hi = m_log ? 100 : 1;
+        }
+        if (m_log)
+            lo = std::max(lo, 1e-3);
+        // Keep the axis while the data fill at least half of it; else refit with a margin.
+        const double span = std::max(hi - lo, m_log ? lo * 0.1 : 1e-3);
+        const bool fits = p.hi > p.lo && lo >= p.lo && hi <= p.hi && (hi - lo) >= 0.5 * (p.hi - p.lo);
+        if (!fits) {
+            p.lo = m_log ? lo / 1.2 : lo - 0.05 * span;
+            p.hi = m_log ? hi * 1.2 : hi + 0.05 * span;
+            // Latencies that are all positive keep the axis at 0 or above: a margin must not
+            // suggest negative values (crossings with a clock offset can be negative, and show so).
+            if (!m_log && lo >= 0)
+                p.lo = std::max(p.lo, 0.0);
+            p.x->setRange(p.lo, p.hi);
+            if (auto* linear = qobject_cast<QValueAxis*>(p.x)) {
+                linear->applyNiceNumbers(); // round tick labels; the range grows a little
+                if (lo >= 0 && linear->min() < 0)
+                    linear->setMin(0);
+                p.lo = linear->min();
+                p.hi = linear->max();
+            }
+        }
+        const int columns = std::max(
+            50, int(p.chart->plotArea().width() > 0 ? p.chart->plotArea().width() : p.view->width()));
+        for (Curve& c : p.curves) {
+            const LatencySeries& s = m_source->ecdfSeries(m_source->ecdfIndex(c.id));
+            c.ecdf->replace(Ecdf::reduced(s, p.lo, p.hi, columns, m_log));
+            const double mean = s.meanMs();
+            const double median = s.quantileMs(0.5);
+            const auto vertical = [this](double x) {
+                return std::isfinite(x) && (!m_log || x > 0) ? QList<QPointF> {{x, 0.0}, {x, 1.0}}
+                                                             : QList<QPointF>();
+            };
+            c.mean->replace(vertical(mean));
+            c.median->replace(vertical(median));
+        }
+    }
+}
+
+QPixmap EcdfChart::toPixmap() const
+{
+    return const_cast<EcdfChart*>(this)->grab(); // grab() only paints
+}
+
+bool EcdfChart::save(const QString& path, QString* error) const
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != u"svg"_s && suffix != u"png"_s) {
+        if (error)
+            *error
+                = tr("%1: a chart is saved as SVG or PNG; give the file the suffix .svg or .png").arg(path);
+        return false;
+    }
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    if (suffix == u"svg"_s) {
+        QSvgGenerator svg;
+        svg.setOutputDevice(&buffer);
+        svg.setSize(size());
+        svg.setViewBox(rect());
+        svg.setTitle(tr("Latency ECDF"));
+        svg.setDescription(tr("Made with Bridgescope"));
+        QPainter painter(&svg);
+        // Vectors, not a screenshot: every chart view paints itself into the generator.
+        for (const auto& p : m_panels)
+            p->view->QWidget::render(&painter, p->view->mapTo(this, QPoint(0, 0)));
+    } else if (!toPixmap().save(&buffer, "PNG")) {
+        if (error)
+            *error = tr("cannot encode the chart as PNG");
+        return false;
+    }
+    return AtomicFile::write(path, buffer.data(), error, false);
+}
+
+void EcdfChart::copyToClipboard() const
+{
+    QApplication::clipboard()->setPixmap(toPixmap());
+}

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QColor>
+#include <QStringList>
+#include <QWidget>
+#include <vector>
+
+class EcdfSource;
+class QAbstractAxis;
+class QChart;
+class QChartView;
+class QGridLayout;
+class QLineSeries;
+class QPixmap;
+
+/// ECDFs of latency series as in the paper's Fig. 5: one curve per series, its mean as a dashed
+/// and its median as a dotted vertical line; overlaid in one chart or as small multiples.
+///
+/// refresh() redraws from the source: each curve is reduced to about two points per pixel
+/// column and handed over with one replace() (the live page calls it at most once per drain).
+class EcdfChart : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit EcdfChart(QWidget* parent = nullptr);
+    ~EcdfChart() override;
+
+    /// What to draw from: the Measure page's engine, a probe's series, a loaded run.
+    void setSource(const EcdfSource* source);
+    void setSeries(const QStringList& ids);
+    QStringList series() const { return m_ids; }
+    void setLogScale(bool on);
+    bool logScale() const { return m_log; }
+    void setSmallMultiples(bool on);
+    bool smallMultiples() const { return m_multiples; }
+    void refresh();
+
+    /// The chart views (one when overlaid).
+    QList<QChartView*> views() const;
+    /// Points drawn for a series' ECDF (tests, benchmarks).
+    qsizetype pointCount(const QString& id) const;
+    /// The x range of the chart showing `id`, in ms.
+    std::pair<double, double> range(const QString& id) const;
+    static QColor colorFor(int seriesIndex);
+
+    /// The chart as the user sees it, for PNG files and the clipboard.
+    QPixmap toPixmap() const;
+    /// Writes PNG or SVG (by the suffix), atomically.
+    bool save(const QString& path, QString* error = nullptr) const;
+    void copyToClipboard() const;
+
+private:
+    struct Panel;
+    struct Curve;
+    void rebuild();
+    Panel* panelOf(const QString& id) const;
+
+    const EcdfSource* m_source = nullptr;
+    QStringList m_ids;
+    bool m_log = false;
+    bool m_multiples = false;
+    QGridLayout* m_grid;
+    std::vector<std::unique_ptr<Panel>> m_panels;
+    quint64 m_layoutRevision = ~quint64(0);
+};

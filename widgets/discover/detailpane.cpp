@@ -1,0 +1,391 @@
+// SPDX-License-Identifier: MIT
+#include "detailpane.h"
+
+#include "mqtt/mqtttopictree.h"
+#include "ros/rosmonitor.h"
+#include "ros/rostopicmodel.h"
+#include "session/livesession.h"
+#include "widgets/common/ratechart.h"
+#include "wire/rosmessage.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QFontDatabase>
+#include <QHeaderView>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLocale>
+#include <QPlainTextEdit>
+#include <QStandardItemModel>
+#include <QTableWidget>
+#include <QTabWidget>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QString sizeText(qint64 bytes)
+{
+    return QLocale::system().formattedDataSize(bytes, 1, QLocale::DataSizeTraditionalFormat);
+}
+
+QList<QStandardItem*> row(const QString& name, const QString& value, const QString& type)
+{
+    auto* n = new QStandardItem(name);
+    auto* v = new QStandardItem(value);
+    auto* t = new QStandardItem(type);
+    for (QStandardItem* i : {n, v, t})
+        i->setEditable(false);
+    return {n, v, t};
+}
+
+void addValue(QStandardItem* parent, const RosValue& value)
+{
+    QString text;
+    if (value.kind == RosValue::Scalar)
+        text = value.value.toString() + (value.truncated ? u"…"_s : QString());
+    else if (value.kind == RosValue::Array)
+        text = value.value.isValid()
+            ? DetailPane::tr("%1 bytes: %2%3")
+                  .arg(value.arrayLength)
+                  .arg(value.value.toString(), value.truncated ? u" …"_s : QString())
+            : DetailPane::tr("%1 elements%2")
+                  .arg(value.arrayLength)
+                  .arg(value.truncated ? DetailPane::tr(", first %1 shown").arg(value.children.size())
+                                       : QString());
+    QList<QStandardItem*> items = row(value.name, text, value.type);
+    for (const RosValue& c : value.children)
+        addValue(items.first(), c);
+    parent->appendRow(items);
+}
+
+void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v)
+{
+    QList<QStandardItem*> items;
+    if (v.isObject()) {
+        items = row(name, QString(), u"object"_s);
+        const QJsonObject o = v.toObject();
+        for (auto it = o.begin(); it != o.end(); ++it)
+            addJson(items.first(), it.key(), it.value());
+    } else if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        items = row(name, DetailPane::tr("%1 elements").arg(a.size()), u"array"_s);
+        for (int i = 0; i < a.size() && i < 256; ++i)
+            addJson(items.first(), u"[%1]"_s.arg(i), a[i]);
+    } else {
+        const QString type = v.isString() ? u"string"_s
+            : v.isBool()                  ? u"bool"_s
+            : v.isNull()                  ? u"null"_s
+                                          : u"number"_s;
+        items = row(name,
+                    v.isString()
+                        ? v.toString()
+                        : QString::fromUtf8(QJsonDocument(QJsonArray {v}).toJson(QJsonDocument::Compact))
+                              .mid(1)
+                              .chopped(1),
+                    type);
+    }
+    parent->appendRow(items);
+}
+} // namespace
+
+DetailPane::DetailPane(LiveSession* session, QWidget* parent)
+    : QWidget(parent)
+    , m_session(session)
+    , m_title(new QLabel(this))
+    , m_tabs(new QTabWidget(this))
+    , m_fields(new QTreeView(this))
+    , m_fieldModel(new QStandardItemModel(this))
+    , m_mode(new QComboBox(this))
+    , m_payloadNote(new QLabel(this))
+    , m_payload(new QPlainTextEdit(this))
+    , m_history(new QTableWidget(this))
+    , m_rate(new RateChart(this))
+    , m_broker(new QTableWidget(this))
+{
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    m_title->setWordWrap(true);
+    m_title->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_title->setText(tr("Select a ROS or MQTT topic to see what it carries."));
+    v->addWidget(m_title);
+    v->addWidget(m_tabs, 1);
+
+    m_fields->setObjectName(u"fields"_s);
+    m_fields->setModel(m_fieldModel);
+    m_fields->setUniformRowHeights(true);
+    m_fieldModel->setHorizontalHeaderLabels({tr("Field"), tr("Value"), tr("Type")});
+    m_tabs->addTab(m_fields, tr("&Fields"));
+
+    auto* payloadPage = new QWidget(this);
+    auto* pv = new QVBoxLayout(payloadPage);
+    pv->setContentsMargins(0, 0, 0, 0);
+    m_mode->addItem(tr("Automatic"), int(PayloadText::Mode::Auto));
+    m_mode->addItem(tr("Text"), int(PayloadText::Mode::Text));
+    m_mode->addItem(tr("JSON"), int(PayloadText::Mode::Json));
+    m_mode->addItem(tr("Hex"), int(PayloadText::Mode::Hex));
+    auto* modeRow = new QHBoxLayout;
+    auto* modeLabel = new QLabel(tr("&Show as:"), payloadPage);
+    modeLabel->setBuddy(m_mode);
+    modeRow->addWidget(modeLabel);
+    modeRow->addWidget(m_mode);
+    modeRow->addWidget(m_payloadNote, 1);
+    pv->addLayout(modeRow);
+    m_payload->setObjectName(u"payload"_s);
+    m_payload->setReadOnly(true);
+    m_payload->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_payload->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    pv->addWidget(m_payload, 1);
+    m_tabs->addTab(payloadPage, tr("&Payload"));
+    connect(m_mode, &QComboBox::currentIndexChanged, this, [this] { showPayload(m_lastPayload); });
+
+    m_history->setColumnCount(3);
+    m_history->setHorizontalHeaderLabels({tr("Received"), tr("Size"), tr("Retained")});
+    m_history->horizontalHeader()->setStretchLastSection(true);
+    m_history->verticalHeader()->hide();
+    m_history->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_tabs->addTab(m_history, tr("&History"));
+    m_tabs->addTab(m_rate, tr("&Rate"));
+
+    m_broker->setColumnCount(2);
+    m_broker->setHorizontalHeaderLabels({tr("$SYS topic"), tr("Value")});
+    m_broker->horizontalHeader()->setStretchLastSection(true);
+    m_broker->verticalHeader()->hide();
+    m_broker->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_tabs->addTab(m_broker, tr("&Broker"));
+    connect(session->mqttTopics(), &MqttTopicTree::brokerStatisticsChanged, this, [this] {
+        if (m_tabs->currentWidget() == m_broker)
+            refreshBroker();
+    });
+    connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
+        if (m_tabs->currentWidget() == m_broker)
+            refreshBroker();
+    });
+}
+
+void DetailPane::showRosTopic(const QString& topic)
+{
+    m_kind = Kind::Ros;
+    m_topic = topic;
+    m_shownMessages = ~0ull;
+    m_rosRates.clear();
+    refreshRos(true);
+}
+
+void DetailPane::showMqttTopic(const QString& topic)
+{
+    m_kind = Kind::Mqtt;
+    m_topic = topic;
+    m_shownMessages = ~0ull;
+    refreshMqtt(true);
+}
+
+void DetailPane::refresh()
+{
+    if (m_kind == Kind::Mqtt)
+        refreshMqtt(false);
+    else if (m_kind == Kind::Ros)
+        refreshRos(false);
+}
+
+void DetailPane::showNoFields(const QString& why)
+{
+    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    m_fieldModel->invisibleRootItem()->appendRow(row(why, QString(), QString()));
+}
+
+void DetailPane::showFields(const RosValue& value)
+{
+    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    for (const RosValue& c : value.children)
+        addValue(m_fieldModel->invisibleRootItem(), c);
+    m_fields->expandToDepth(1);
+    m_fields->resizeColumnToContents(0);
+    m_fields->resizeColumnToContents(1);
+}
+
+void DetailPane::showJsonFields(const QByteArray& json)
+{
+    const QJsonDocument doc = QJsonDocument::fromJson(json);
+    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    if (doc.isObject()) {
+        const QJsonObject o = doc.object();
+        for (auto it = o.begin(); it != o.end(); ++it)
+            addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value());
+    } else {
+        addJson(m_fieldModel->invisibleRootItem(), u"(root)"_s,
+                doc.isArray() ? QJsonValue(doc.array()) : QJsonValue());
+    }
+    m_fields->expandToDepth(1);
+    m_fields->resizeColumnToContents(0);
+}
+
+void DetailPane::showPayload(const QByteArray& payload)
+{
+    const auto mode = PayloadText::Mode(m_mode->currentData().toInt());
+    const PayloadText::Rendered r = PayloadText::render(payload, mode);
+    m_payload->setPlainText(r.text);
+    m_payloadNote->setText(r.note);
+}
+
+void DetailPane::refreshMqtt(bool force)
+{
+    MqttTopicTree* tree = m_session->mqttTopics();
+    const auto info = tree->info(m_topic);
+    if (!info) {
+        m_title->setText(tr("<b>%1</b>: a level of the topic tree; select a topic below it.")
+                             .arg(m_topic.toHtmlEscaped()));
+        showNoFields(tr("(no messages on this level itself)"));
+        return;
+    }
+    if (!force && info->messages == m_shownMessages)
+        return;
+    m_shownMessages = info->messages;
+    QString title = u"<b>%1</b><br>"_s.arg(m_topic.toHtmlEscaped())
+        + tr("%1 messages, %2, last %3, QoS %4%5")
+              .arg(info->messages)
+              .arg(sizeText(qint64(info->bytes)))
+              .arg(sizeText(info->lastSize))
+              .arg(info->qos)
+              .arg(info->retained ? tr(", retained") : QString());
+    if (info->rosType) {
+        title += u"<br>"_s
+            + tr("ROS type %1 (announced by mqtt_client)%2")
+                  .arg(info->rosType->name.toHtmlEscaped(),
+                       info->rosType->stamped ? tr(", stamped") : QString());
+        if (info->latencySamples)
+            title += u"<br>"_s
+                + tr("one-way latency %1 ms (mean of the last %2: %3 ms); valid only as far as the "
+                     "sender's clock agrees with this one")
+                      .arg(info->lastLatencyMs, 0, 'f', 1)
+                      .arg(std::min<quint64>(info->latencySamples, 100))
+                      .arg(info->meanLatencyMs, 0, 'f', 1);
+    }
+    if (info->malformedPayloads)
+        title += u"<br><font color=\"#b00020\">"_s
+            + tr("%1 payloads did not decode as the announced type").arg(info->malformedPayloads)
+            + u"</font>"_s;
+    if (!info->typeError.isEmpty())
+        title += u"<br><font color=\"#b00020\">"_s
+            + tr("malformed type announcement: %1").arg(info->typeError.toHtmlEscaped()) + u"</font>"_s;
+    m_title->setText(title);
+
+    const auto* history = tree->history(m_topic);
+    m_lastPayload = history && !history->empty() ? history->back().payload : QByteArray();
+    showPayload(m_lastPayload);
+
+    // Fields: the decoded ROS message when mqtt_client announced the type, else JSON if it is.
+    if (const auto registry = tree->registryFor(m_topic); registry && info->rosType) {
+        QByteArray message = m_lastPayload;
+        if (info->rosType->stamped) {
+            if (const auto s = MqttClientWire::splitStamped(message))
+                message = s->message;
+        }
+        QString error;
+        RosDecodeLimits limits;
+        limits.maxArrayElements = 32;
+        if (const auto value
+            = RosMessageDecoder::decode(*registry, info->rosType->name, message, &error, limits))
+            showFields(*value);
+        else
+            showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
+    } else if (!QJsonDocument::fromJson(m_lastPayload).isNull()) {
+        showJsonFields(m_lastPayload);
+    } else {
+        showNoFields(tr("(no structure known: see Payload)"));
+    }
+
+    if (history) {
+        const int n = int(history->size());
+        m_history->setRowCount(n);
+        for (int i = 0; i < n; ++i) {
+            const MqttTopicTree::HistoryEntry& e = (*history)[size_t(n - 1 - i)];
+            m_history->setItem(
+                i, 0,
+                new QTableWidgetItem(
+                    QDateTime::fromMSecsSinceEpoch(e.receivedNs / 1000000).toString(u"HH:mm:ss.zzz"_s)));
+            m_history->setItem(i, 1, new QTableWidgetItem(sizeText(e.payload.size())));
+            m_history->setItem(i, 2, new QTableWidgetItem(e.retained ? tr("retained") : QString()));
+        }
+    }
+    m_rate->setSamples(info->rateHistory, tr("msg/s"));
+}
+
+void DetailPane::refreshRos(bool force)
+{
+    RosTopicModel* model = m_session->rosTopics();
+    const RosTopicInfo* t = model->graph().topic(m_topic);
+    const RosMonitorStats* s = model->stats(m_topic);
+    const qint64 now = QDateTime::currentMSecsSinceEpoch() * 1000000LL;
+    if (s && now - m_lastRosSample >= 1000000000LL) {
+        m_lastRosSample = now;
+        m_rosRates.append(s->rateHz);
+        while (m_rosRates.size() > 120)
+            m_rosRates.removeFirst();
+        m_rate->setSamples(m_rosRates, tr("Hz"));
+    }
+    const quint64 messages = s ? s->messages : 0;
+    if (!force && messages == m_shownMessages)
+        return;
+    m_shownMessages = messages;
+    QString title = u"<b>%1</b>"_s.arg(m_topic.toHtmlEscaped());
+    if (t) {
+        title += u"<br>"_s
+            + tr("%1; publishers: %2; subscribers: %3")
+                  .arg(t->type.toHtmlEscaped(), t->publishers.join(u", "_s).toHtmlEscaped(),
+                       t->subscribers.join(u", "_s).toHtmlEscaped());
+    }
+    if (!s) {
+        title += u"<br>"_s + tr("Check Monitor to subscribe and see its messages.");
+        m_title->setText(title);
+        showNoFields(tr("(not monitored)"));
+        m_lastPayload.clear();
+        showPayload(m_lastPayload);
+        return;
+    }
+    title += u"<br>"_s
+        + tr("%1 messages, %2 Hz, %3/s, last %4")
+              .arg(s->messages)
+              .arg(s->rateHz, 0, 'f', 2)
+              .arg(sizeText(qint64(s->bytesPerSecond)), sizeText(s->lastSize));
+    m_title->setText(title);
+    m_lastPayload = s->lastMessage;
+    showPayload(m_lastPayload);
+    if (s->messages == 0) {
+        showNoFields(tr("(waiting for the first message)"));
+        return;
+    }
+    RosTypeRegistry registry;
+    QString error;
+    RosDecodeLimits limits;
+    limits.maxArrayElements = 32;
+    if (!registry.addDefinition(s->type, s->definition, &error)) {
+        showNoFields(error);
+    } else if (const auto value
+               = RosMessageDecoder::decode(registry, s->type, s->lastMessage, &error, limits)) {
+        showFields(*value);
+    } else {
+        showNoFields(error);
+    }
+}
+
+void DetailPane::refreshBroker()
+{
+    const QHash<QString, QString>& stats = m_session->mqttTopics()->brokerStatistics();
+    QStringList keys = stats.keys();
+    keys.sort();
+    m_broker->setRowCount(int(keys.size()));
+    for (int i = 0; i < keys.size(); ++i) {
+        m_broker->setItem(i, 0, new QTableWidgetItem(keys[i]));
+        m_broker->setItem(i, 1, new QTableWidgetItem(stats.value(keys[i])));
+    }
+    if (keys.isEmpty()) {
+        m_broker->setRowCount(1);
+        m_broker->setItem(
+            0, 0,
+            new QTableWidgetItem(tr("Turn on $SYS in the connection profile to see the broker's figures.")));
+    }
+}

@@ -1,0 +1,324 @@
+// SPDX-License-Identifier: MIT
+#include "discoverpage.h"
+
+#include "mqtt/mqtttopicfilter.h"
+#include "mqtt/mqtttopictree.h"
+#include "mqtt/passwordstore.h"
+#include "ros/rosgraphpoller.h"
+#include "ros/rostopicmodel.h"
+#include "session/livesession.h"
+#include "widgets/common/rostopicview.h"
+#include "widgets/common/viewsetup.h"
+#include "widgets/discover/detailpane.h"
+#include "widgets/tools/mqttprofiledialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QSortFilterProxyModel>
+#include <QSplitter>
+#include <QTableView>
+#include <QTimer>
+#include <QToolButton>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+const auto kLastProfile = "lastMqttProfile";
+
+QString bullet(const QString& colour, const QString& text)
+{
+    return u"<span style=\"color:%1\">●</span> %2"_s.arg(colour, text.toHtmlEscaped());
+}
+} // namespace
+
+DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
+    : QWidget(parent)
+    , m_session(session)
+    , m_passwords(new PasswordStore(this))
+{
+    // Connection bar: where the ROS master and the broker are, and how they are doing.
+    auto* bar = new QGridLayout;
+    m_masterUri = new QLineEdit(session->rosMasterUri(), this);
+    m_masterUri->setObjectName(u"masterUri"_s);
+    m_masterUri->setToolTip(tr("ROS master URI; Enter applies it"));
+    m_rosState = new QLabel(this);
+    m_rosState->setObjectName(u"rosState"_s);
+    auto* masterLabel = new QLabel(tr("ROS &master:"), this);
+    masterLabel->setBuddy(m_masterUri);
+    bar->addWidget(masterLabel, 0, 0);
+    bar->addWidget(m_masterUri, 0, 1);
+    bar->addWidget(m_rosState, 0, 2, 1, 3);
+    m_profileBox = new QComboBox(this);
+    m_profileBox->setObjectName(u"profiles"_s);
+    m_profileBox->setMinimumContentsLength(24);
+    auto* brokerLabel = new QLabel(tr("MQTT &broker:"), this);
+    brokerLabel->setBuddy(m_profileBox);
+    auto* edit = new QToolButton(this);
+    edit->setText(tr("Edit…"));
+    edit->setToolTip(tr("Edit the connection profile (URL, TLS, credentials, subscriptions)"));
+    auto* add = new QToolButton(this);
+    add->setText(tr("New…"));
+    m_connect = new QPushButton(tr("&Connect"), this);
+    m_connect->setObjectName(u"connectButton"_s);
+    m_mqttState = new QLabel(this);
+    m_mqttState->setObjectName(u"mqttState"_s);
+    m_mqttState->setWordWrap(true);
+    bar->addWidget(brokerLabel, 1, 0);
+    bar->addWidget(m_profileBox, 1, 1);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(edit);
+    buttons->addWidget(add);
+    buttons->addWidget(m_connect);
+    bar->addLayout(buttons, 1, 2);
+    bar->addWidget(m_mqttState, 1, 3);
+    m_counters = new QLabel(this);
+    m_counters->setObjectName(u"counters"_s);
+    bar->addWidget(m_counters, 1, 4);
+    bar->setColumnStretch(3, 1);
+
+    // ROS topics.
+    auto* rosBox = new RosTopicView(session->rosTopics(), tr("Filter ROS topics or types…"), this);
+    m_rosFilter = rosBox->filterEdit();
+    m_rosFilter->setObjectName(u"rosFilter"_s);
+    m_rosProxy = rosBox->proxy();
+    m_rosView = rosBox->table();
+    m_rosView->setObjectName(u"rosTopics"_s);
+    m_rosView->setSelectionMode(QAbstractItemView::SingleSelection);
+    QHeaderView* rosHeader = m_rosView->horizontalHeader();
+    rosHeader->setSectionResizeMode(QHeaderView::ResizeToContents);
+    rosHeader->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Interactive);
+    rosHeader->setSectionResizeMode(RosTopicModel::TypeColumn, QHeaderView::Interactive);
+    m_rosView->setColumnWidth(RosTopicModel::TopicColumn, 150);
+
+    // MQTT topics.
+    auto* mqttBox = new QWidget(this);
+    auto* mv = new QVBoxLayout(mqttBox);
+    mv->setContentsMargins(0, 0, 0, 0);
+    auto* filterRow = new QHBoxLayout;
+    m_mqttFilter = new QLineEdit(mqttBox);
+    m_mqttFilter->setObjectName(u"mqttFilter"_s);
+    m_mqttFilter->setPlaceholderText(tr("Filter MQTT topics…"));
+    m_mqttFilter->setClearButtonEnabled(true);
+    m_searchPayloads = new QCheckBox(tr("in &payloads too"), mqttBox);
+    filterRow->addWidget(m_mqttFilter, 1);
+    filterRow->addWidget(m_searchPayloads);
+    mv->addLayout(filterRow);
+    m_mqttProxy = new MqttTopicFilter(this);
+    m_mqttProxy->setSourceModel(session->mqttTopics());
+    m_mqttView = new QTreeView(mqttBox);
+    m_mqttView->setObjectName(u"mqttTopics"_s);
+    m_mqttView->setModel(m_mqttProxy);
+    ViewSetup::topicTree(m_mqttView, MqttTopicTree::TopicColumn);
+    m_mqttView->header()->setSectionResizeMode(MqttTopicTree::TopicColumn, QHeaderView::Interactive);
+    m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 260);
+    for (int c : {MqttTopicTree::BytesColumn, MqttTopicTree::SizeColumn, MqttTopicTree::QosColumn,
+                  MqttTopicTree::LastColumn})
+        m_mqttView->setColumnHidden(c, true);
+    mv->addWidget(m_mqttView, 1);
+    // New top-level levels open, so that the first look shows more than a handful of roots.
+    connect(m_mqttProxy, &QAbstractItemModel::rowsInserted, this,
+            [this](const QModelIndex& parent, int first, int last) {
+                if (parent.isValid())
+                    return;
+                for (int r = first; r <= last; ++r)
+                    m_mqttView->expand(m_mqttProxy->index(r, 0));
+            });
+
+    m_detail = new DetailPane(session, this);
+
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(rosBox);
+    split->addWidget(mqttBox);
+    split->addWidget(m_detail);
+    split->setSizes({470, 430, 380});
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(4, 4, 4, 0);
+    v->addLayout(bar);
+    v->addWidget(split, 1);
+
+    // Wiring.
+    connect(m_masterUri, &QLineEdit::returnPressed, this,
+            [this] { setRosMasterUri(m_masterUri->text().trimmed()); });
+    connect(session->rosGraph(), &RosGraphPoller::reachabilityChanged, this, &DiscoverPage::updateRosStatus);
+    connect(session->rosGraph(), &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
+    connect(session->mqtt(), &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
+    connect(m_mqttFilter, &QLineEdit::textChanged, m_mqttProxy, &MqttTopicFilter::setText);
+    connect(m_searchPayloads, &QCheckBox::toggled, m_mqttProxy, &MqttTopicFilter::setSearchPayloads);
+    connect(edit, &QToolButton::clicked, this, [this] { editProfile(false); });
+    connect(add, &QToolButton::clicked, this, [this] { editProfile(true); });
+    connect(m_connect, &QPushButton::clicked, this, &DiscoverPage::toggleConnection);
+    connect(m_rosView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& i) {
+                if (i.isValid())
+                    m_detail->showRosTopic(i.data(RosTopicModel::TopicRole).toString());
+            });
+    connect(m_mqttView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& i) {
+                if (i.isValid())
+                    m_detail->showMqttTopic(i.data(MqttTopicTree::FullTopicRole).toString());
+            });
+    // The detail pane follows its topic a few times a second, not at the drain rate.
+    auto* refresh = new QTimer(this);
+    connect(refresh, &QTimer::timeout, m_detail, &DetailPane::refresh);
+    connect(refresh, &QTimer::timeout, this, &DiscoverPage::updateMqttStatus);
+    refresh->start(250);
+    connect(m_passwords, &PasswordStore::stored, this, [this](const QString&, bool ok, const QString& error) {
+        if (!ok)
+            m_mqttState->setToolTip(tr("The password was not kept: %1").arg(error));
+    });
+
+    reloadProfiles(QSettings().value(QLatin1String(kLastProfile)).toString());
+    updateRosStatus();
+    updateMqttStatus();
+}
+
+void DiscoverPage::reloadProfiles(const QString& select)
+{
+    m_profiles = ProfileStore::load();
+    if (m_profiles.isEmpty())
+        m_profiles << MqttProfile();
+    m_profileBox->clear();
+    for (const MqttProfile& p : std::as_const(m_profiles))
+        m_profileBox->addItem(p.name == p.url ? p.url : u"%1 (%2)"_s.arg(p.name, p.url));
+    int index = 0;
+    for (int i = 0; i < m_profiles.size(); ++i) {
+        if (m_profiles[i].name == select)
+            index = i;
+    }
+    m_profileBox->setCurrentIndex(index);
+}
+
+void DiscoverPage::editProfile(bool asNew)
+{
+    const int current = m_profileBox->currentIndex();
+    MqttProfile start = asNew || current < 0 ? MqttProfile() : m_profiles.value(current);
+    if (asNew)
+        start.name = tr("broker %1").arg(m_profiles.size() + 1);
+    MqttProfileDialog dialog(start, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const MqttProfile p = dialog.profile();
+    QList<MqttProfile> saved = ProfileStore::load();
+    bool replaced = false;
+    for (MqttProfile& s : saved) {
+        if (s.name == (asNew ? p.name : start.name)) {
+            s = p;
+            replaced = true;
+        }
+    }
+    if (!replaced)
+        saved << p;
+    ProfileStore::save(saved);
+    if (dialog.rememberPassword() && !p.password.isEmpty())
+        m_passwords->store(u"mqtt/"_s + p.name, p.password);
+    reloadProfiles(p.name);
+    connectBroker(p);
+}
+
+void DiscoverPage::toggleConnection()
+{
+    const MqttConnection::State s = m_session->mqtt()->state();
+    if (s == MqttConnection::State::Disconnected || s == MqttConnection::State::Failed) {
+        MqttProfile p = m_profiles.value(m_profileBox->currentIndex());
+        if (!p.username.isEmpty() && p.password.isEmpty()) {
+            // The password comes from the keyring, if it is there.
+            auto conn = std::make_shared<QMetaObject::Connection>();
+            *conn = connect(
+                m_passwords, &PasswordStore::fetched, this,
+                [this, p, conn](const QString&, const QString& password, bool ok, const QString&) mutable {
+                    disconnect(*conn);
+                    if (ok)
+                        p.password = password;
+                    connectBroker(p);
+                });
+            m_passwords->fetch(u"mqtt/"_s + p.name);
+            return;
+        }
+        connectBroker(p);
+    } else {
+        m_session->disconnectBroker();
+    }
+}
+
+void DiscoverPage::connectBroker(const MqttProfile& profile)
+{
+    QSettings().setValue(QLatin1String(kLastProfile), profile.name);
+    // A broker given on the command line is shown like a saved profile.
+    int index = -1;
+    for (int i = 0; i < m_profiles.size(); ++i) {
+        if (m_profiles[i].name == profile.name)
+            index = i;
+    }
+    if (index < 0) {
+        m_profiles << profile;
+        m_profileBox->addItem(profile.name == profile.url ? profile.url
+                                                          : u"%1 (%2)"_s.arg(profile.name, profile.url));
+        index = int(m_profiles.size()) - 1;
+    } else {
+        m_profiles[index] = profile;
+    }
+    m_profileBox->setCurrentIndex(index);
+    m_session->mqttTopics()->clear();
+    m_session->connectBroker(profile);
+    updateMqttStatus();
+}
+
+void DiscoverPage::setRosMasterUri(const QString& uri)
+{
+    m_masterUri->setText(uri);
+    m_session->setRosMasterUri(uri);
+    m_rosState->setText(bullet(u"#888"_s, tr("asking %1…").arg(uri)));
+}
+
+void DiscoverPage::updateRosStatus()
+{
+    const RosGraphPoller* p = m_session->rosGraph();
+    if (p->polls() == 0)
+        m_rosState->setText(bullet(u"#888"_s, tr("asking the master…")));
+    else if (p->isReachable())
+        m_rosState->setText(bullet(
+            u"#2e7d32"_s,
+            tr("reachable: %1 topics, %2 nodes").arg(p->graph().topics.size()).arg(p->graph().nodes.size())));
+    else
+        m_rosState->setText(
+            bullet(u"#b00020"_s, tr("unreachable: %1 (retrying every second)").arg(p->lastError())));
+}
+
+void DiscoverPage::updateMqttStatus()
+{
+    const MqttConnection* c = m_session->mqtt();
+    const MqttConnection::State s = c->state();
+    QString colour = u"#888"_s;
+    if (s == MqttConnection::State::Connected)
+        colour = u"#2e7d32"_s;
+    else if (s == MqttConnection::State::Reconnecting || s == MqttConnection::State::Connecting)
+        colour = u"#e08e00"_s;
+    else if (s == MqttConnection::State::Failed)
+        colour = u"#b00020"_s;
+    const QString detail = c->stateDetail();
+    QString text = MqttConnection::stateText(s);
+    if (s == MqttConnection::State::Connected)
+        text += u' ' + c->profile().url;
+    else if (!detail.isEmpty())
+        text += u": "_s + detail;
+    m_mqttState->setText(bullet(colour, text));
+    const bool idle = s == MqttConnection::State::Disconnected || s == MqttConnection::State::Failed;
+    m_connect->setText(idle ? tr("&Connect") : tr("Dis&connect"));
+    const MqttTopicTree* t = m_session->mqttTopics();
+    QStringList parts {tr("%1 topics").arg(t->topicCount()), tr("%1 messages").arg(c->received())};
+    if (c->dropped())
+        parts << tr("%1 dropped").arg(c->dropped());
+    if (t->malformedTypeAnnouncements() || t->malformedPayloads())
+        parts << tr("%1 malformed").arg(t->malformedTypeAnnouncements() + t->malformedPayloads());
+    m_counters->setText(parts.join(u" · "_s));
+}

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+#include "configeditor.h"
+
+#include "config/configdocument.h"
+#include "config/mappingmodel.h"
+#include "widgets/common/problemspanel.h"
+#include "widgets/common/severityiconproxy.h"
+#include "widgets/common/viewsetup.h"
+#include "widgets/map/mappingfilterproxy.h"
+#include "widgets/map/mappinginspector.h"
+#include "widgets/map/settingsinspector.h"
+#include "widgets/map/undocommands.h"
+#include "widgets/map/yamlpreview.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSet>
+#include <QSplitter>
+#include <QTableView>
+#include <QTabWidget>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
+    : QWidget(parent)
+    , m_doc(document)
+    , m_undo(undoStack)
+    , m_model(new MappingModel(document, this))
+    , m_icons(new SeverityIconProxy(MappingModel::SeverityRole, this))
+    , m_filter(new MappingFilterProxy(this))
+{
+    // Edits in the table go through the undo stack like every other edit.
+    m_model->setEditHandler([this](const Mapping& before, const Mapping& after) {
+        m_undo->push(new ConfigCommands::EditMappings(m_doc, {before}, {after}, tr("Edit topic")));
+    });
+    m_icons->setSourceModel(m_model);
+    m_icons->setHealthColumn(MappingModel::HealthColumn, MappingModel::HealthStateRole);
+    m_filter->setSourceModel(m_icons);
+
+    m_addOut = new QAction(tr("Add ROS → MQTT Mapping"), this);
+    m_addOut->setShortcut(QKeySequence(Qt::Key_Insert));
+    m_addOut->setToolTip(tr("Bridge a ROS topic to MQTT (Insert)"));
+    m_addOut->setIconText(tr("+ ROS → MQTT"));
+    m_addIn = new QAction(tr("Add MQTT → ROS Mapping"), this);
+    m_addIn->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_Insert));
+    m_addIn->setToolTip(tr("Bridge an MQTT topic to ROS (Shift+Insert)"));
+    m_addIn->setIconText(tr("+ MQTT → ROS"));
+    m_delete = new QAction(tr("Delete Mappings"), this);
+    m_delete->setShortcut(QKeySequence::Delete);
+    m_delete->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_delete->setIconText(tr("Delete"));
+    m_duplicate = new QAction(tr("Duplicate Mappings"), this);
+    m_duplicate->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    connect(m_addOut, &QAction::triggered, this, [this] { addMapping(Direction::Ros2Mqtt); });
+    connect(m_addIn, &QAction::triggered, this, [this] { addMapping(Direction::Mqtt2Ros); });
+    connect(m_delete, &QAction::triggered, this, &ConfigEditor::deleteSelected);
+    connect(m_duplicate, &QAction::triggered, this, &ConfigEditor::duplicateSelected);
+
+    // Left: filter bar and table.
+    auto* left = new QWidget(this);
+    auto* lv = new QVBoxLayout(left);
+    lv->setContentsMargins(0, 0, 0, 0);
+    auto* bar = new QHBoxLayout;
+    m_filterEdit = new QLineEdit(left);
+    m_filterEdit->setObjectName(u"mappingFilter"_s);
+    m_filterEdit->setPlaceholderText(tr("Filter mappings (topic or option)…"));
+    m_filterEdit->setClearButtonEnabled(true);
+    m_filterEdit->setMinimumWidth(150);
+    m_directionFilter = new QComboBox(left);
+    m_directionFilter->addItem(tr("Both directions"), int(MappingFilterProxy::AllDirections));
+    m_directionFilter->addItem(MappingModel::directionText(Direction::Ros2Mqtt), int(Direction::Ros2Mqtt));
+    m_directionFilter->addItem(MappingModel::directionText(Direction::Mqtt2Ros), int(Direction::Mqtt2Ros));
+    m_onlyProblems = new QCheckBox(tr("With problems"), left);
+    bar->addWidget(m_filterEdit, 1);
+    bar->addWidget(m_directionFilter);
+    bar->addWidget(m_onlyProblems);
+    for (QAction* a : {m_addOut, m_addIn, m_delete}) {
+        auto* b = new QToolButton(left);
+        b->setDefaultAction(a);
+        b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        bar->addWidget(b);
+    }
+    lv->addLayout(bar);
+    m_table = new QTableView(left);
+    m_table->setObjectName(u"mappingTable"_s);
+    m_table->setModel(m_filter);
+    // Long topic names differ at their ends: elide the middle, one line per mapping.
+    ViewSetup::records(m_table);
+    m_table->setSortingEnabled(true);
+    m_table->sortByColumn(-1, Qt::AscendingOrder); // file order until the user sorts
+    m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
+    QHeaderView* header = m_table->horizontalHeader();
+    header->setStretchLastSection(false);
+    header->setSectionResizeMode(MappingModel::DirectionColumn, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(MappingModel::RosTopicColumn, QHeaderView::Stretch);
+    header->setSectionResizeMode(MappingModel::MqttTopicColumn, QHeaderView::Stretch);
+    header->setSectionResizeMode(MappingModel::OptionsColumn, QHeaderView::Interactive);
+    header->setSectionResizeMode(MappingModel::HealthColumn, QHeaderView::Interactive);
+    m_table->setColumnWidth(MappingModel::OptionsColumn, 150);
+    m_table->setColumnWidth(MappingModel::HealthColumn, 170);
+    m_table->addAction(m_delete);
+    m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_table->addAction(m_duplicate);
+    lv->addWidget(m_table, 1);
+
+    // Right: inspectors and preview.
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(u"inspectorTabs"_s);
+    m_inspector = new MappingInspector(document, undoStack, m_tabs);
+    m_settings = new SettingsInspector(document, undoStack, m_tabs);
+    m_preview = new YamlPreview(document, m_tabs);
+    m_tabs->addTab(m_inspector, tr("&Mapping"));
+    m_tabs->addTab(m_settings, tr("&Broker && client"));
+    m_tabs->addTab(m_preview, tr("&YAML"));
+
+    auto* top = new QSplitter(Qt::Horizontal, this);
+    m_split = top;
+    top->addWidget(left);
+    top->addWidget(m_tabs);
+    top->setStretchFactor(0, 3);
+    top->setStretchFactor(1, 2);
+    top->setSizes({780, 480});
+    m_problems = new ProblemsPanel(document, this);
+    auto* outer = new QSplitter(Qt::Vertical, this);
+    outer->addWidget(top);
+    outer->addWidget(m_problems);
+    outer->setStretchFactor(0, 4);
+    outer->setStretchFactor(1, 1);
+    outer->setSizes({600, 140});
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(outer);
+
+    connect(m_filterEdit, &QLineEdit::textChanged, m_filter, &MappingFilterProxy::setText);
+    connect(m_directionFilter, &QComboBox::currentIndexChanged, this,
+            [this] { m_filter->setDirection(m_directionFilter->currentData().toInt()); });
+    connect(m_onlyProblems, &QCheckBox::toggled, m_filter, &MappingFilterProxy::setOnlyProblems);
+    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+        m_inspector->setMappings(selectedIds());
+        updateActions();
+    });
+    // A freshly opened file shows its first mapping, so the inspector is never empty for nothing.
+    connect(m_doc, &ConfigDocument::resetDone, this, [this] {
+        if (m_doc->mappingCount() > 0)
+            selectMappings({m_doc->mapping(0).id});
+    });
+    connect(m_problems, &ProblemsPanel::mappingProblemActivated, this, &ConfigEditor::showMappingProblem);
+    connect(m_problems, &ProblemsPanel::settingsProblemActivated, this, &ConfigEditor::showSettingsProblem);
+    updateActions();
+}
+
+void ConfigEditor::setInspectorWidth(int width)
+{
+    const int total = std::max(m_split->width(), width * 3);
+    m_split->setSizes({total - width, width});
+}
+
+QList<quint64> ConfigEditor::selectedIds() const
+{
+    QList<quint64> ids;
+    const QModelIndexList rows = m_table->selectionModel()->selectedRows();
+    for (const QModelIndex& index : rows)
+        ids << index.data(MappingModel::MappingIdRole).value<quint64>();
+    return ids;
+}
+
+void ConfigEditor::selectMappings(const QList<quint64>& ids)
+{
+    QItemSelection selection;
+    for (quint64 id : ids) {
+        QModelIndex index = viewIndex(id);
+        if (!index.isValid()) { // hidden by the filter: show everything again
+            m_filterEdit->clear();
+            m_directionFilter->setCurrentIndex(0);
+            m_onlyProblems->setChecked(false);
+            index = viewIndex(id);
+        }
+        if (index.isValid())
+            selection.select(index, index);
+    }
+    m_table->selectionModel()->select(selection,
+                                      QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    if (!selection.isEmpty()) {
+        m_table->selectionModel()->setCurrentIndex(selection.indexes().first(),
+                                                   QItemSelectionModel::NoUpdate);
+        m_table->scrollTo(selection.indexes().first());
+    }
+}
+
+QModelIndex ConfigEditor::viewIndex(quint64 id) const
+{
+    return m_filter->mapFromSource(m_icons->mapFromSource(m_model->indexOfMapping(id)));
+}
+
+void ConfigEditor::addMapping(Direction direction)
+{
+    // Propose free names, so that a new mapping never collides with an existing one.
+    QSet<QString> used;
+    for (const Mapping& m : m_doc->config().mappings)
+        used << m.rosTopic() << m.mqttTopic();
+    int n = 1;
+    while (used.contains(u"/new_topic_%1"_s.arg(n)) || used.contains(u"new_topic_%1"_s.arg(n)))
+        ++n;
+    const Mapping m = Mapping::create(direction, u"/new_topic_%1"_s.arg(n), u"new_topic_%1"_s.arg(n));
+    m_undo->push(new ConfigCommands::InsertMappings(
+        m_doc, m_doc->mappingCount(), {m},
+        direction == Direction::Ros2Mqtt ? tr("Add ROS → MQTT mapping") : tr("Add MQTT → ROS mapping")));
+    selectMappings({m.id});
+    m_tabs->setCurrentWidget(m_inspector);
+    m_inspector->focusField(direction == Direction::Ros2Mqtt ? u"ros_topic"_s : u"mqtt_topic"_s);
+}
+
+void ConfigEditor::deleteSelected()
+{
+    const QList<quint64> ids = selectedIds();
+    if (ids.isEmpty())
+        return;
+    m_undo->push(new ConfigCommands::RemoveMappings(
+        m_doc, ids, ids.size() == 1 ? tr("Delete mapping") : tr("Delete %1 mappings").arg(ids.size())));
+}
+
+void ConfigEditor::duplicateSelected()
+{
+    QList<Mapping> copies;
+    int row = 0;
+    for (quint64 id : selectedIds()) {
+        Mapping copy = m_doc->mapping(m_doc->rowOf(id));
+        row = std::max(row, m_doc->rowOf(id) + 1);
+        copy.id = 0;
+        copy.block.source = SourceMap();
+        copies << copy;
+    }
+    if (copies.isEmpty())
+        return;
+    auto* cmd = new ConfigCommands::InsertMappings(
+        m_doc, row, copies,
+        copies.size() == 1 ? tr("Duplicate mapping") : tr("Duplicate %1 mappings").arg(copies.size()));
+    m_undo->push(cmd);
+    selectMappings(cmd->ids());
+}
+
+void ConfigEditor::showMappingProblem(quint64 id, const QString& field)
+{
+    selectMappings({id});
+    m_tabs->setCurrentWidget(m_inspector);
+    m_inspector->focusField(field);
+}
+
+void ConfigEditor::showSettingsProblem(OptionScope scope, const QString& field)
+{
+    m_tabs->setCurrentWidget(m_settings);
+    m_settings->focusField(scope, field);
+}
+
+void ConfigEditor::updateActions()
+{
+    const bool any = m_table->selectionModel()->hasSelection();
+    m_delete->setEnabled(any);
+    m_duplicate->setEnabled(any);
+}

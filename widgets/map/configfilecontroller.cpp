@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: MIT
+#include "configfilecontroller.h"
+
+#include "base/atomicfile.h"
+#include "config/configdocument.h"
+#include "config/configwriter.h"
+#include "config/peerconfig.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QUndoStack>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+const auto kRecentKey = "recentConfigFiles";
+constexpr int kMaxRecent = 10;
+} // namespace
+
+ConfigFileController::ConfigFileController(ConfigDocument* document, QUndoStack* undoStack,
+                                           QWidget* dialogParent)
+    : QObject(dialogParent)
+    , m_doc(document)
+    , m_undo(undoStack)
+    , m_parent(dialogParent)
+{
+    m_ask = [this](const QString& title, const QString& question) {
+        return QMessageBox::question(m_parent, title, question, QMessageBox::Yes | QMessageBox::No,
+                                     QMessageBox::No)
+            == QMessageBox::Yes;
+    };
+}
+
+void ConfigFileController::showError(const QString& title, const QString& message)
+{
+    emit statusMessage(message);
+    if (m_parent && m_parent->isVisible())
+        QMessageBox::warning(m_parent, title, message);
+}
+
+QString ConfigFileController::layoutFilter(ConfigLayout layout)
+{
+    switch (layout) {
+    case ConfigLayout::Ros1:
+        return tr("mqtt_client config, ROS 1 (*.yaml *.yml)");
+    case ConfigLayout::Ros2:
+        return tr("mqtt_client config, ROS 2 (*.yaml *.yml)");
+    case ConfigLayout::MqttBridge:
+        return tr("mqtt_bridge config (*.yaml *.yml)");
+    }
+    return QString();
+}
+
+bool ConfigFileController::openFile(const QString& path)
+{
+    const ConfigDocument::LoadResult r = m_doc->load(path);
+    if (!r.ok) {
+        QStringList lines {r.error};
+        for (int i = 1; i < r.problems.size() && i < 5; ++i)
+            lines << r.problems[i].format(QFileInfo(path).fileName());
+        showError(tr("Cannot open the config"), lines.join(u'\n'));
+        return false;
+    }
+    m_undo->clear();
+    addRecent(m_doc->filePath());
+    emit statusMessage(tr("Opened %1 (mappings: %2)").arg(m_doc->filePath()).arg(m_doc->mappingCount()));
+    return true;
+}
+
+bool ConfigFileController::saveTo(const QString& path, ConfigLayout layout)
+{
+    ConfigDocument::SaveResult r = m_doc->save(path, layout, false);
+    if (r.status == ConfigDocument::SaveResult::NeedsRewrite) {
+        const QString question = tr("The file cannot keep its comments and formatting: %1.\n\nSaving writes "
+                                    "it anew (the previous file "
+                                    "stays as %2.bak). Save anyway?")
+                                     .arg(r.rewriteReason, QFileInfo(path).fileName());
+        if (!m_ask(tr("Rewrite the file?"), question))
+            return false;
+        r = m_doc->save(path, layout, true);
+    }
+    if (r.status == ConfigDocument::SaveResult::Failed) {
+        showError(tr("Cannot save the config"), tr("Nothing was changed on disk: %1").arg(r.error));
+        return false;
+    }
+    m_undo->setClean();
+    addRecent(m_doc->filePath());
+    QString message = tr("Saved %1").arg(m_doc->filePath());
+    if (!r.notes.isEmpty())
+        message += u" ("_s + r.notes.join(u"; "_s) + u')';
+    emit statusMessage(message);
+    return true;
+}
+
+bool ConfigFileController::exportTo(const QString& path, ConfigLayout layout)
+{
+    QStringList notes;
+    const QString text = ConfigWriter::write(m_doc->config(), layout, &notes);
+    QString error;
+    if (!AtomicFile::write(path, text.toUtf8(), &error)) {
+        showError(tr("Cannot export the config"), error);
+        return false;
+    }
+    emit statusMessage(tr("Exported %1 as %2%3")
+                           .arg(path, layoutName(layout),
+                                notes.isEmpty() ? QString() : u" ("_s + notes.join(u"; "_s) + u')'));
+    return true;
+}
+
+bool ConfigFileController::writePeer(const QString& path, const QString& clientId)
+{
+    const PeerConfig::Result peer = PeerConfig::make(m_doc->config(), clientId);
+    QStringList notes = peer.notes;
+    const QString text = ConfigWriter::write(peer.config, m_doc->layout(), &notes);
+    QString error;
+    if (!AtomicFile::write(path, text.toUtf8(), &error)) {
+        showError(tr("Cannot write the peer config"), error);
+        return false;
+    }
+    emit statusMessage(tr("Wrote the peer config %1%2")
+                           .arg(path, notes.isEmpty() ? QString() : u" ("_s + notes.join(u"; "_s) + u')'));
+    return true;
+}
+
+QStringList ConfigFileController::recentFiles() const
+{
+    return QSettings().value(QLatin1String(kRecentKey)).toStringList();
+}
+
+void ConfigFileController::addRecent(const QString& path)
+{
+    QStringList files = recentFiles();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecent)
+        files.removeLast();
+    QSettings().setValue(QLatin1String(kRecentKey), files);
+    emit recentFilesChanged(files);
+}
+
+bool ConfigFileController::maybeSave()
+{
+    if (!m_doc->isModified())
+        return true;
+    const auto answer = QMessageBox::warning(
+        m_parent, tr("Unsaved changes"), tr("The bridge config has unsaved changes. Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    return answer == QMessageBox::Discard || save();
+}
+
+bool ConfigFileController::newFile()
+{
+    if (!maybeSave())
+        return false;
+    m_doc->clear();
+    m_undo->clear();
+    return true;
+}
+
+bool ConfigFileController::open()
+{
+    if (!maybeSave())
+        return false;
+    const QString dir = m_doc->filePath().isEmpty() ? QString() : QFileInfo(m_doc->filePath()).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(m_parent, tr("Open Bridge Config"), dir,
+                                                      tr("YAML files (*.yaml *.yml);;All files (*)"));
+    return !path.isEmpty() && openFile(path);
+}
+
+bool ConfigFileController::save()
+{
+    if (m_doc->filePath().isEmpty())
+        return saveAs();
+    return saveTo(m_doc->filePath(), m_doc->layout());
+}
+
+bool ConfigFileController::saveAs()
+{
+    const QList<ConfigLayout> layouts = {ConfigLayout::Ros1, ConfigLayout::Ros2};
+    QStringList filters;
+    for (ConfigLayout l : layouts)
+        filters << layoutFilter(l);
+    QString selected
+        = layoutFilter(m_doc->layout() == ConfigLayout::MqttBridge ? ConfigLayout::Ros1 : m_doc->layout());
+    QString start = m_doc->filePath().isEmpty() ? m_doc->suggestedPath() : m_doc->filePath();
+    if (start.isEmpty())
+        start = u"mqtt_client.yaml"_s;
+    const QString path = QFileDialog::getSaveFileName(m_parent, tr("Save Bridge Config"), start,
+                                                      filters.join(u";;"_s), &selected);
+    if (path.isEmpty())
+        return false;
+    const ConfigLayout layout = layouts.value(int(filters.indexOf(selected)), ConfigLayout::Ros1);
+    return saveTo(path, layout);
+}
+
+bool ConfigFileController::exportAs(ConfigLayout layout)
+{
+    const QFileInfo current(m_doc->filePath());
+    const QString start = current.fileName().isEmpty()
+        ? u"bridge_%1.yaml"_s.arg(layoutName(layout))
+        : current.absoluteDir().filePath(current.completeBaseName() + u'_' + layoutName(layout) + u".yaml"_s);
+    const QString path
+        = QFileDialog::getSaveFileName(m_parent, tr("Export Bridge Config"), start, layoutFilter(layout));
+    return !path.isEmpty() && exportTo(path, layout);
+}
+
+bool ConfigFileController::generatePeer()
+{
+    const QFileInfo current(m_doc->filePath());
+    const QString start = current.fileName().isEmpty()
+        ? u"peer.yaml"_s
+        : current.absoluteDir().filePath(current.completeBaseName() + u"_peer.yaml"_s);
+    const QString path = QFileDialog::getSaveFileName(m_parent, tr("Save Peer Config"), start,
+                                                      layoutFilter(m_doc->layout()));
+    if (path.isEmpty() || !writePeer(path, QString()))
+        return false;
+    if (m_ask(tr("Peer config written"), tr("Open the peer config %1 now?").arg(QFileInfo(path).fileName()))
+        && maybeSave())
+        openFile(path);
+    return true;
+}

@@ -1,0 +1,364 @@
+// SPDX-License-Identifier: MIT
+#include "mappage.h"
+
+#include "base/wallclock.h"
+#include "config/configdocument.h"
+#include "config/mappingfactory.h"
+#include "config/mappingmodel.h"
+#include "mqtt/mqtttopicfilter.h"
+#include "mqtt/mqtttopictree.h"
+#include "ros/rosgraphpoller.h"
+#include "ros/rosmonitor.h"
+#include "ros/rostopicmodel.h"
+#include "session/livesession.h"
+#include "session/mappinghealthevaluator.h"
+#include "widgets/common/rostopicview.h"
+#include "widgets/common/viewsetup.h"
+#include "widgets/map/bridgedtopicsproxy.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/undocommands.h"
+
+#include <chrono>
+#include <QAction>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QSortFilterProxyModel>
+#include <QSplitter>
+#include <QTableView>
+#include <QTimer>
+#include <QToolButton>
+#include <QTreeView>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
+    : QWidget(parent)
+    , m_session(session)
+    , m_doc(document)
+    , m_undo(undoStack)
+    , m_editor(new ConfigEditor(document, undoStack, this))
+    , m_healthTimer(new QTimer(this))
+{
+    // Bar: keyboard bridging and the prefix new MQTT topics get.
+    m_toMqtt = new QAction(tr("Bridge Selected ROS Topics to MQTT"), this);
+    m_toMqtt->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    m_toMqtt->setIconText(tr("ROS → MQTT"));
+    m_toMqtt->setToolTip(
+        tr("Bridge the selected ROS topics; under the selected MQTT level, if any (Ctrl+Shift+M)"));
+    m_toRos = new QAction(tr("Bridge Selected MQTT Topics to ROS"), this);
+    m_toRos->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    m_toRos->setIconText(tr("MQTT → ROS"));
+    m_toRos->setToolTip(
+        tr("Bridge the selected MQTT topics; beside the selected ROS topic, if any (Ctrl+Shift+R)"));
+    addAction(m_toMqtt);
+    addAction(m_toRos);
+    connect(m_toMqtt, &QAction::triggered, this, &MapPage::bridgeSelectedRos);
+    connect(m_toRos, &QAction::triggered, this, &MapPage::bridgeSelectedMqtt);
+
+    auto* bar = new QHBoxLayout;
+    auto* bridgeLabel = new QLabel(tr("Bridge selected:"), this);
+    bar->addWidget(bridgeLabel);
+    for (QAction* a : {m_toMqtt, m_toRos}) {
+        auto* b = new QToolButton(this);
+        b->setDefaultAction(a);
+        b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        bar->addWidget(b);
+    }
+    m_prefix = new QLineEdit(this);
+    m_prefix->setObjectName(u"mqttPrefix"_s);
+    m_prefix->setPlaceholderText(tr("none"));
+    m_prefix->setToolTip(
+        tr("New MQTT topics go below this prefix (for example the client id), unless dropped on a level"));
+    m_prefix->setMaximumWidth(220);
+    auto* prefixLabel = new QLabel(tr("MQTT &prefix:"), this);
+    prefixLabel->setBuddy(m_prefix);
+    bar->addSpacing(12);
+    bar->addWidget(prefixLabel);
+    bar->addWidget(m_prefix);
+    m_hint = new QLabel(
+        tr("Drag ROS topics onto the MQTT tree and MQTT topics onto the ROS topics; drop a topic on a "
+           "mapping to retarget it."),
+        this);
+    m_hint->setStyleSheet(u"color: palette(mid)"_s);
+    bar->addSpacing(12);
+    bar->addWidget(m_hint, 1);
+
+    // Discovered topics: ROS above, MQTT below.
+    m_rosBridged = new BridgedTopicsProxy(RosTopicModel::TopicRole, this);
+    m_rosBridged->setSourceModel(session->rosTopics());
+    auto* rosBox = new RosTopicView(m_rosBridged, tr("Filter ROS topics…"), this);
+    rosBox->showOnly(
+        {RosTopicModel::TopicColumn, RosTopicModel::TypeColumn, RosTopicModel::PublishersColumn});
+    m_rosFilter = rosBox->proxy();
+    m_rosView = rosBox->table();
+    m_rosView->setObjectName(u"mapRosTopics"_s);
+    ViewSetup::dragsCopies(m_rosView);
+    m_rosView->horizontalHeader()->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Stretch);
+
+    m_mqttBridged = new BridgedTopicsProxy(MqttTopicTree::FullTopicRole, this);
+    m_mqttBridged->setSourceModel(session->mqttTopics());
+    m_mqttFilter = new MqttTopicFilter(this);
+    m_mqttFilter->setSourceModel(m_mqttBridged);
+    auto* mqttBox = new QWidget(this);
+    auto* mv = new QVBoxLayout(mqttBox);
+    mv->setContentsMargins(0, 0, 0, 0);
+    auto* mqttFilterEdit = new QLineEdit(mqttBox);
+    mqttFilterEdit->setPlaceholderText(tr("Filter MQTT topics…"));
+    mqttFilterEdit->setClearButtonEnabled(true);
+    mv->addWidget(mqttFilterEdit);
+    m_mqttView = new QTreeView(mqttBox);
+    m_mqttView->setObjectName(u"mapMqttTopics"_s);
+    m_mqttView->setModel(m_mqttFilter);
+    for (int c = 0; c < MqttTopicTree::ColumnCount; ++c)
+        m_mqttView->setColumnHidden(c,
+                                    c != MqttTopicTree::TopicColumn && c != MqttTopicTree::RateColumn
+                                        && c != MqttTopicTree::RosTypeColumn);
+    ViewSetup::topicTree(m_mqttView, MqttTopicTree::TopicColumn);
+    ViewSetup::dragsCopies(m_mqttView);
+    m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 200);
+    mv->addWidget(m_mqttView, 1);
+    connect(mqttFilterEdit, &QLineEdit::textChanged, m_mqttFilter, &MqttTopicFilter::setText);
+
+    auto* topics = new QSplitter(Qt::Vertical, this);
+    topics->addWidget(rosBox);
+    topics->addWidget(mqttBox);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(topics);
+    split->addWidget(m_editor);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 3);
+    split->setSizes({330, 950});
+    m_editor->setInspectorWidth(360);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(4, 4, 4, 0);
+    v->addLayout(bar);
+    v->addWidget(split, 1);
+
+    // The mapping table takes drops too.
+    QTableView* table = m_editor->table();
+    table->setAcceptDrops(true);
+    table->setDragDropMode(QAbstractItemView::DropOnly);
+    table->setDropIndicatorShown(true);
+    table->setDragDropOverwriteMode(true);
+    m_editor->model()->setDropHandler(
+        [this](const QMimeData* data, int row) { return dropOnMappings(data, row); });
+    session->rosTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+        return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
+    });
+    session->mqttTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+        return !bridgeRosTopics(TopicMime::decode(data, TopicMime::rosType()), target).isEmpty();
+    });
+
+    connect(document, &ConfigDocument::resetDone, this, [this] {
+        m_prefix->setText(m_doc->config().client.values.text(u"id"_s));
+        updateBridgedTopics();
+        updateHealth();
+    });
+    connect(document, &ConfigDocument::problemsChanged, this, &MapPage::updateBridgedTopics);
+    connect(m_healthTimer, &QTimer::timeout, this, &MapPage::updateHealth);
+    m_healthTimer->start(1000);
+}
+
+namespace {
+MappingFactory::MqttFacts factsOf(const MqttTopicTree* tree, const QString& topic)
+{
+    MappingFactory::MqttFacts f;
+    const auto info = tree->info(topic);
+    if (!info)
+        return f;
+    f.seen = true;
+    if (info->rosType)
+        f.announcedType = info->rosType->name;
+    if (const auto* h = tree->history(topic); h && !h->empty())
+        f.lastPayload = h->back().payload;
+    return f;
+}
+} // namespace
+
+// mqtt_client keys ros2mqtt by ROS topic and mqtt2ros by MQTT topic: a second mapping of the same
+// source would be dropped by it, so bridging an already bridged source moves its mapping instead
+// (taking over the options proposed for the new destination, never removing any).
+void MapPage::plan(Plan& p, const BridgeConfig& config, const Mapping& proposed)
+{
+    for (const Mapping& m : config.mappings) {
+        if (m.direction != proposed.direction || m.sourceTopic() != proposed.sourceTopic())
+            continue;
+        Mapping moved = m;
+        for (const QString& path : proposed.block.values.paths()) {
+            if (!moved.isSet(path) || path == u"ros_topic"_s || path == u"mqtt_topic"_s)
+                moved.block.values.copyFrom(proposed.block.values, path);
+        }
+        if (!moved.sameContent(m)) {
+            p.before << m;
+            p.after << moved;
+        }
+        return;
+    }
+    p.created << proposed;
+}
+
+QList<quint64> MapPage::apply(const Plan& p, const QString& description)
+{
+    QList<quint64> ids;
+    if (p.created.isEmpty() && p.after.isEmpty())
+        return ids;
+    m_undo->beginMacro(description);
+    if (!p.after.isEmpty()) {
+        m_undo->push(new ConfigCommands::EditMappings(m_doc, p.before, p.after, description));
+        for (const Mapping& m : p.after)
+            ids << m.id;
+    }
+    if (!p.created.isEmpty()) {
+        auto* cmd = new ConfigCommands::InsertMappings(m_doc, m_doc->mappingCount(), p.created, description);
+        m_undo->push(cmd);
+        ids += cmd->ids();
+    }
+    m_undo->endMacro();
+    m_editor->selectMappings(ids);
+    updateHealth();
+    return ids;
+}
+
+QList<quint64> MapPage::bridgeRosTopics(const QList<TopicMime::Topic>& topics, const QString& mqttTarget)
+{
+    const MqttTopicTree* tree = m_session->mqttTopics();
+    // One ROS topic on an MQTT topic without levels below it: exactly that topic. Otherwise the
+    // target is a level the new topics go under; no target: the prefix.
+    const bool exact = topics.size() == 1 && !mqttTarget.isEmpty() && tree->info(mqttTarget)
+        && !tree->hasChildren(mqttTarget);
+    const QString prefix = mqttTarget.isEmpty() ? m_prefix->text().trimmed() : mqttTarget;
+    Plan p;
+    for (const TopicMime::Topic& t : topics) {
+        const QString mqtt = exact ? mqttTarget : MappingFactory::mqttTopicFor(t.name, prefix);
+        plan(p, m_doc->config(),
+             MappingFactory::ros2mqtt(t.name, t.rosType, mqtt, factsOf(tree, mqtt), m_doc->layout()));
+    }
+    const int n = int(p.created.size() + p.after.size());
+    return apply(p,
+                 n == 1 ? tr("Bridge %1 to MQTT").arg(topics.first().name)
+                        : tr("Bridge %1 ROS topics to MQTT").arg(n));
+}
+
+QList<quint64> MapPage::bridgeMqttTopics(const QList<TopicMime::Topic>& topics, const QString& rosTarget)
+{
+    const MqttTopicTree* tree = m_session->mqttTopics();
+    const bool exact = topics.size() == 1 && !rosTarget.isEmpty();
+    // Beside a ROS topic: in its namespace.
+    const QString ns = rosTarget.isEmpty()
+        ? QString()
+        : rosTarget.left(std::max<qsizetype>(1, rosTarget.lastIndexOf(u'/')));
+    Plan p;
+    for (const TopicMime::Topic& t : topics) {
+        const QString ros = exact ? rosTarget : MappingFactory::rosTopicFor(t.name, ns);
+        plan(p, m_doc->config(),
+             MappingFactory::mqtt2ros(t.name, factsOf(tree, t.name), ros, m_doc->layout()));
+    }
+    const int n = int(p.created.size() + p.after.size());
+    return apply(p,
+                 n == 1 ? tr("Bridge %1 to ROS").arg(topics.first().name)
+                        : tr("Bridge %1 MQTT topics to ROS").arg(n));
+}
+
+bool MapPage::retarget(quint64 mappingId, const QMimeData* data)
+{
+    const int row = m_doc->rowOf(mappingId);
+    if (row < 0)
+        return false;
+    const Mapping before = m_doc->mapping(row);
+    Mapping after = before;
+    const QList<TopicMime::Topic> ros = TopicMime::decode(data, TopicMime::rosType());
+    const QList<TopicMime::Topic> mqtt = TopicMime::decode(data, TopicMime::mqttType());
+    if (!ros.isEmpty())
+        after.set(u"ros_topic"_s, ros.first().name);
+    else if (!mqtt.isEmpty())
+        after.set(u"mqtt_topic"_s, mqtt.first().name);
+    else
+        return false;
+    if (after.sameContent(before))
+        return false;
+    m_undo->push(new ConfigCommands::EditMappings(m_doc, {before}, {after},
+                                                  !ros.isEmpty()
+                                                      ? tr("Retarget to %1").arg(ros.first().name)
+                                                      : tr("Retarget to %1").arg(mqtt.first().name)));
+    m_editor->selectMappings({mappingId});
+    updateHealth();
+    return true;
+}
+
+bool MapPage::dropOnMappings(const QMimeData* data, int row)
+{
+    if (row >= 0 && row < m_doc->mappingCount())
+        return retarget(m_doc->mapping(row).id, data);
+    const QList<TopicMime::Topic> ros = TopicMime::decode(data, TopicMime::rosType());
+    if (!ros.isEmpty())
+        return !bridgeRosTopics(ros, QString()).isEmpty();
+    return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), QString()).isEmpty();
+}
+
+void MapPage::bridgeSelectedRos()
+{
+    QList<TopicMime::Topic> topics;
+    for (const QModelIndex& i : m_rosView->selectionModel()->selectedRows())
+        topics.append(
+            {i.data(RosTopicModel::TopicRole).toString(), i.data(RosTopicModel::TypeRole).toString()});
+    const QModelIndex target = m_mqttView->currentIndex();
+    bridgeRosTopics(topics,
+                    target.isValid() && m_mqttView->selectionModel()->isSelected(target)
+                        ? target.data(MqttTopicTree::FullTopicRole).toString()
+                        : QString());
+}
+
+void MapPage::bridgeSelectedMqtt()
+{
+    QList<TopicMime::Topic> topics;
+    QSet<QString> seen;
+    for (const QModelIndex& i : m_mqttView->selectionModel()->selectedRows()) {
+        const QString path = i.data(MqttTopicTree::FullTopicRole).toString();
+        const QStringList below = i.data(MqttTopicTree::IsTopicRole).toBool()
+            ? QStringList {path}
+            : m_session->mqttTopics()->topicsBelow(path);
+        for (const QString& t : below) {
+            if (!seen.contains(t)) {
+                seen.insert(t);
+                topics.append({t, QString()});
+            }
+        }
+    }
+    const QModelIndex target = m_rosView->currentIndex();
+    bridgeMqttTopics(topics,
+                     target.isValid() && m_rosView->selectionModel()->isSelected(target)
+                         ? target.data(RosTopicModel::TopicRole).toString()
+                         : QString());
+}
+
+void MapPage::updateBridgedTopics()
+{
+    QHash<QString, QString> ros, mqtt;
+    for (const Mapping& m : m_doc->config().mappings) {
+        const QString what = MappingModel::directionText(m.direction) + u": "_s + m.sourceTopic() + u" → "_s
+            + m.destinationTopic();
+        ros.insert(m.rosTopic(), what);
+        mqtt.insert(m.mqttTopic(), what);
+    }
+    m_rosBridged->setBridged(ros);
+    m_mqttBridged->setBridged(mqtt);
+}
+
+void MapPage::updateHealth()
+{
+    const qint64 now = wallClockNs();
+    const QHash<QString, RosMonitorStats> monitored = m_session->rosMonitor()->snapshot(now);
+    MappingHealthEvaluator::Inputs in;
+    in.graph = &m_session->rosGraph()->graph();
+    in.rosReachable = m_session->rosGraph()->isReachable();
+    in.monitored = &monitored;
+    in.mqtt = m_session->mqttTopics();
+    in.mqttConnected = m_session->mqtt()->state() == MqttConnection::State::Connected;
+    in.nowNs = now;
+    m_editor->model()->setHealth(MappingHealthEvaluator::evaluate(m_doc->config(), in));
+}

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "base/topicmime.h"
+#include "config/bridgeconfig.h"
+
+#include <QWidget>
+
+class BridgedTopicsProxy;
+class ConfigDocument;
+class ConfigEditor;
+class LiveSession;
+class MqttTopicFilter;
+class QAction;
+class QLabel;
+class QLineEdit;
+class QMimeData;
+class QSortFilterProxyModel;
+class QTableView;
+class QTimer;
+class QTreeView;
+class QUndoStack;
+
+/// The Map page: discovered ROS topics and MQTT topics beside the config's mappings. Drag ROS
+/// topics onto the MQTT tree (or the mapping table) to bridge them to MQTT, MQTT topics onto the
+/// ROS topics to bridge them to ROS, a topic onto a mapping to retarget it; every mapping shows
+/// whether it carries data.
+class MapPage : public QWidget
+{
+    Q_OBJECT
+public:
+    MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent = nullptr);
+
+    ConfigEditor* editor() const { return m_editor; }
+    QTableView* rosView() const { return m_rosView; }
+    QTreeView* mqttView() const { return m_mqttView; }
+    QLineEdit* prefixEdit() const { return m_prefix; }
+    QAction* bridgeToMqttAction() const { return m_toMqtt; }
+    QAction* bridgeToRosAction() const { return m_toRos; }
+
+    /// Bridges ROS topics to MQTT: onto a single MQTT topic, under a level, or under the prefix.
+    QList<quint64> bridgeRosTopics(const QList<TopicMime::Topic>& topics, const QString& mqttTarget);
+    /// Bridges MQTT topics to ROS: onto a single ROS topic, beside one, or at the root.
+    QList<quint64> bridgeMqttTopics(const QList<TopicMime::Topic>& topics, const QString& rosTarget);
+    /// Points a mapping at a dropped topic instead.
+    bool retarget(quint64 mappingId, const QMimeData* data);
+    /// Re-evaluates every mapping's health now (a timer does it every second otherwise).
+    void updateHealth();
+
+private:
+    /// What one bridging gesture does: new mappings, and existing ones pointed elsewhere.
+    struct Plan
+    {
+        QList<Mapping> created;
+        QList<Mapping> before;
+        QList<Mapping> after;
+    };
+    QList<quint64> apply(const Plan& plan, const QString& description);
+    static void plan(Plan& p, const BridgeConfig& config, const Mapping& proposed);
+    bool dropOnMappings(const QMimeData* data, int row);
+    void updateBridgedTopics();
+    void bridgeSelectedRos();
+    void bridgeSelectedMqtt();
+
+    LiveSession* m_session;
+    ConfigDocument* m_doc;
+    QUndoStack* m_undo;
+    ConfigEditor* m_editor;
+    QLineEdit* m_prefix;
+    QLabel* m_hint;
+    QAction* m_toMqtt;
+    QAction* m_toRos;
+    BridgedTopicsProxy* m_rosBridged;
+    QSortFilterProxyModel* m_rosFilter;
+    QTableView* m_rosView;
+    BridgedTopicsProxy* m_mqttBridged;
+    MqttTopicFilter* m_mqttFilter;
+    QTreeView* m_mqttView;
+    QTimer* m_healthTimer;
+};

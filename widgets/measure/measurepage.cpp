@@ -1,0 +1,447 @@
+// SPDX-License-Identifier: MIT
+#include "measurepage.h"
+
+#include "latency/latencystatsmodel.h"
+#include "latency/pipelinemodel.h"
+#include "latency/stamptopicmodel.h"
+#include "session/measuresession.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/common/viewsetup.h"
+#include "widgets/measure/runbar.h"
+
+#include <algorithm>
+#include <QAction>
+#include <QCheckBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QIdentityProxyModel>
+#include <QLabel>
+#include <QListView>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableView>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Table I's emphasis: the total in bold, crossings and derived figures in italics.
+class StatsStyleProxy : public QIdentityProxyModel
+{
+public:
+    using QIdentityProxyModel::QIdentityProxyModel;
+    QVariant data(const QModelIndex& index, int role) const override
+    {
+        if (index.column() != LatencyStatsModel::SeriesColumn)
+            return QIdentityProxyModel::data(index, role);
+        if (role == Qt::DecorationRole) // a plotted series shows its colour
+            return index.data(Qt::CheckStateRole).value<Qt::CheckState>() == Qt::Checked
+                ? QVariant(EcdfChart::colorFor(index.row()))
+                : QVariant();
+        if (role != Qt::FontRole)
+            return QIdentityProxyModel::data(index, role);
+        const auto kind = LatencyEngine::Kind(index.data(LatencyStatsModel::KindRole).toInt());
+        QFont f;
+        if (kind == LatencyEngine::Kind::Total)
+            f.setBold(true);
+        else if (kind != LatencyEngine::Kind::Stage || index.data(LatencyStatsModel::CrossingRole).toBool())
+            f.setItalic(true);
+        return f;
+    }
+};
+} // namespace
+
+MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
+    : QWidget(parent)
+    , m_measure(measure)
+    , m_pipeline(new PipelineModel(this))
+    , m_seen(new StampTopicModel(this))
+    , m_chart(new EcdfChart(this))
+    , m_statsView(new QTableView(this))
+    , m_pipelineView(new QTableView(this))
+    , m_seenView(new QListView(this))
+    , m_window(new QSpinBox(this))
+    , m_log(new QCheckBox(tr("&Log scale"), this))
+    , m_multiples(new QCheckBox(tr("Small &multiples"), this))
+    , m_pause(new QAction(tr("&Pause"), this))
+    , m_reset(new QAction(tr("&Reset"), this))
+    , m_mode(new QLabel(this))
+    , m_counts(new QLabel(this))
+    , m_runBar(new RunBar(measure, this))
+{
+    setObjectName(u"measurePage"_s);
+
+    // Controls.
+    auto* load = new QPushButton(tr("L&oad Pipeline…"), this);
+    auto* save = new QPushButton(tr("&Save Pipeline…"), this);
+    auto* automatic = new QPushButton(tr("&Automatic"), this);
+    automatic->setToolTip(tr("Find the pipeline in the stamps that arrive: every stamp topic, ordered by its "
+                             "mean time within the samples, hosts guessed from the names"));
+    m_window->setRange(0, 100'000'000);
+    m_window->setSpecialValueText(tr("whole run"));
+    m_window->setSuffix(tr(" samples"));
+    m_window->setValue(int(measure->engine().window()));
+    m_window->setToolTip(
+        tr("Statistics and ECDFs over the last N complete samples (the paper: 600), or 0 for the "
+           "whole run"));
+    auto* windowLabel = new QLabel(tr("&Window:"), this);
+    windowLabel->setBuddy(m_window);
+    m_pause->setCheckable(true);
+    m_pause->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_pause->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_pause->setToolTip(tr("Freeze the chart and the table; measuring goes on (Ctrl+P)"));
+    m_reset->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_reset->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_reset->setToolTip(tr("Forget every sample and count; keep the pipeline (Ctrl+R)"));
+    addAction(m_pause);
+    addAction(m_reset);
+    auto* pauseButton = new QToolButton(this);
+    pauseButton->setDefaultAction(m_pause);
+    auto* resetButton = new QToolButton(this);
+    resetButton->setDefaultAction(m_reset);
+
+    auto* controls = new QHBoxLayout;
+    controls->addWidget(load);
+    controls->addWidget(save);
+    controls->addWidget(automatic);
+    controls->addSpacing(16);
+    controls->addWidget(windowLabel);
+    controls->addWidget(m_window);
+    controls->addWidget(pauseButton);
+    controls->addWidget(resetButton);
+    controls->addSpacing(16);
+    controls->addWidget(m_log);
+    controls->addWidget(m_multiples);
+    auto* saveChart = new QPushButton(tr("E&xport Chart…"), this);
+    saveChart->setToolTip(tr("Save the chart as PNG or SVG"));
+    auto* copyChart = new QPushButton(tr("Cop&y Chart"), this);
+    copyChart->setToolTip(tr("Copy the chart to the clipboard as an image"));
+    controls->addWidget(saveChart);
+    controls->addWidget(copyChart);
+    controls->addStretch();
+    connect(saveChart, &QPushButton::clicked, this, &MeasurePage::chooseChartFile);
+    connect(copyChart, &QPushButton::clicked, m_chart, &EcdfChart::copyToClipboard);
+    m_pipelineControls = {load, save, automatic};
+
+    // Pipeline and the stamp topics seen.
+    m_pipelineView->setObjectName(u"pipelineView"_s);
+    m_pipelineView->setModel(m_pipeline);
+    m_pipelineView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_pipelineView->setDragDropMode(QAbstractItemView::DragDrop);
+    m_pipelineView->setDefaultDropAction(Qt::MoveAction);
+    m_pipelineView->setDragDropOverwriteMode(false);
+    m_pipelineView->setDropIndicatorShown(true);
+    m_pipelineView->setAcceptDrops(true);
+    m_pipelineView->verticalHeader()->hide();
+    m_pipelineView->setWordWrap(false);
+    m_pipelineView->setTextElideMode(Qt::ElideLeft); // the end of a stamp topic says the most
+    m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::TopicColumn,
+                                                             QHeaderView::Stretch);
+    m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::IndexColumn,
+                                                             QHeaderView::ResizeToContents);
+    m_pipelineView->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                                    | QAbstractItemView::AnyKeyPressed);
+    m_pipeline->setStampCounter([this](const QString& t) { return m_measure->discovery().stampCount(t); });
+    auto* remove = new QAction(tr("Remove from Pipeline"), m_pipelineView);
+    remove->setShortcut(QKeySequence::Delete);
+    remove->setShortcutContext(Qt::WidgetShortcut);
+    auto* up = new QAction(tr("Move Up"), m_pipelineView);
+    up->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Up));
+    up->setShortcutContext(Qt::WidgetShortcut);
+    auto* down = new QAction(tr("Move Down"), m_pipelineView);
+    down->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Down));
+    down->setShortcutContext(Qt::WidgetShortcut);
+    m_pipelineView->addActions({up, down, remove});
+    m_pipelineView->setContextMenuPolicy(Qt::ActionsContextMenu);
+
+    m_seenView->setObjectName(u"stampTopicsView"_s);
+    m_seenView->setModel(m_seen);
+    m_seenView->setDragEnabled(true);
+    m_seenView->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_seenView->setToolTip(tr("Drag a stamp topic into the pipeline, or press Enter to append it"));
+
+    auto* left = new QWidget(this);
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    auto* pipelineLabel
+        = new QLabel(tr("<b>Pipeline</b>: stamp topics in the order a sample passes them"), left);
+    leftLayout->addWidget(pipelineLabel);
+    leftLayout->addWidget(m_mode);
+    m_mode->setWordWrap(true);
+    leftLayout->addWidget(m_pipelineView, 3);
+    auto* seenLabel = new QLabel(tr("Stamp &topics seen:"), left);
+    seenLabel->setBuddy(m_seenView);
+    leftLayout->addWidget(seenLabel);
+    leftLayout->addWidget(m_seenView, 1);
+
+    // Chart and table.
+    auto* style = new StatsStyleProxy(this);
+    style->setSourceModel(measure->statsModel());
+    m_statsView->setObjectName(u"statsView"_s);
+    m_statsView->setModel(style);
+    ViewSetup::records(m_statsView);
+    m_statsView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_statsView->horizontalHeader()->setSectionResizeMode(LatencyStatsModel::SeriesColumn,
+                                                          QHeaderView::Stretch);
+    m_statsView->verticalHeader()->setDefaultSectionSize(m_statsView->fontMetrics().height() + 8);
+    m_pipelineView->verticalHeader()->setDefaultSectionSize(m_pipelineView->fontMetrics().height() + 8);
+    for (int c : {LatencyStatsModel::P90Column, LatencyStatsModel::P95Column, LatencyStatsModel::P999Column})
+        m_statsView->setColumnHidden(c, true);
+    m_statsView->horizontalHeader()->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_statsView->horizontalHeader(), &QWidget::customContextMenuRequested, this,
+            [this](const QPoint& at) {
+                QMenu menu;
+                for (int c = 1; c < LatencyStatsModel::ColumnCount; ++c) {
+                    QAction* a
+                        = menu.addAction(m_statsView->model()->headerData(c, Qt::Horizontal).toString());
+                    a->setCheckable(true);
+                    a->setChecked(!m_statsView->isColumnHidden(c));
+                    connect(a, &QAction::toggled, this,
+                            [this, c](bool on) { m_statsView->setColumnHidden(c, !on); });
+                }
+                menu.exec(m_statsView->horizontalHeader()->mapToGlobal(at));
+            });
+    m_chart->setSource(&measure->engine());
+    m_chart->setSeries(measure->statsModel()->checkedSeries());
+    m_chart->setMinimumHeight(240);
+
+    auto* right = new QSplitter(Qt::Vertical, this);
+    right->addWidget(m_chart);
+    right->addWidget(m_statsView);
+    right->setStretchFactor(0, 3);
+    right->setStretchFactor(1, 2);
+    right->setSizes({470, 430});
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 5);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(controls);
+    layout->addWidget(m_runBar);
+    layout->addWidget(split, 1);
+    layout->addWidget(m_counts);
+    m_counts->setObjectName(u"measureCounts"_s);
+    m_counts->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    // Wiring.
+    connect(load, &QPushButton::clicked, this, &MeasurePage::choosePipelineFile);
+    connect(save, &QPushButton::clicked, this, &MeasurePage::chooseSaveFile);
+    connect(automatic, &QPushButton::clicked, this, [this] {
+        m_pipelineFile.clear();
+        m_measure->setAutomatic();
+        onPipelineChanged();
+    });
+    connect(m_window, &QSpinBox::valueChanged, this, [this](int v) { m_measure->setWindow(v); });
+    connect(m_pause, &QAction::toggled, this, [this](bool on) {
+        m_measure->setPaused(on);
+        updateCounts();
+    });
+    connect(m_reset, &QAction::triggered, this, [this] { m_measure->reset(); });
+    connect(m_log, &QCheckBox::toggled, m_chart, &EcdfChart::setLogScale);
+    connect(m_multiples, &QCheckBox::toggled, m_chart, &EcdfChart::setSmallMultiples);
+    connect(remove, &QAction::triggered, this, &MeasurePage::removeSelectedStamps);
+    connect(up, &QAction::triggered, this, [this] { moveSelectedStamp(-1); });
+    connect(down, &QAction::triggered, this, [this] { moveSelectedStamp(+1); });
+    connect(m_seenView, &QListView::activated, this, &MeasurePage::addSeenTopic);
+    connect(m_pipeline, &PipelineModel::edited, this, &MeasurePage::applyEdit);
+    const auto updateChartSeries = [this] { m_chart->setSeries(m_measure->statsModel()->checkedSeries()); };
+    connect(measure->statsModel(), &LatencyStatsModel::checkedChanged, this, updateChartSeries);
+    connect(measure->statsModel(), &QAbstractItemModel::modelReset, this, updateChartSeries);
+    connect(measure->statsModel(), &QAbstractItemModel::rowsInserted, this, updateChartSeries);
+    connect(measure, &MeasureSession::updated, this, &MeasurePage::onUpdated);
+    connect(measure, &MeasureSession::pipelineChanged, this, &MeasurePage::onPipelineChanged);
+    connect(measure, &MeasureSession::stampTopicsChanged, this,
+            [this] { m_seen->update(m_measure->discovery(), m_measure->pipeline()); });
+    connect(measure, &MeasureSession::recordingChanged, this, &MeasurePage::updateEditable);
+    connect(measure, &MeasureSession::showingRunChanged, this, &MeasurePage::updateEditable);
+    onPipelineChanged();
+    updateCounts();
+    updateEditable();
+}
+
+void MeasurePage::updateEditable()
+{
+    // A run's pipeline is fixed: while recording, and while a recorded run is on screen.
+    const bool editable = !m_measure->isRecording() && !m_measure->isShowingRun();
+    for (QWidget* w : std::as_const(m_pipelineControls))
+        w->setEnabled(editable);
+    m_pipelineView->setEditTriggers(editable
+                                        ? QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                                            | QAbstractItemView::AnyKeyPressed
+                                        : QAbstractItemView::NoEditTriggers);
+    m_pipelineView->setAcceptDrops(editable);
+    m_reset->setEnabled(editable);
+    m_window->setEnabled(!m_measure->isRecording());
+}
+
+bool MeasurePage::saveChart(const QString& path, QString* error)
+{
+    return m_chart->save(path, error);
+}
+
+void MeasurePage::chooseChartFile()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Chart"), u"latency-ecdf.svg"_s,
+                                                      tr("SVG (*.svg);;PNG (*.png)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!saveChart(path, &error))
+        QMessageBox::warning(this, tr("Export Chart"), error);
+}
+
+void MeasurePage::applyEdit(const Pipeline& pipeline)
+{
+    Pipeline edited = pipeline;
+    edited.setWindow(int(m_measure->engine().window())); // the window is the page's, not the edit's
+    m_measure->setPipeline(edited);
+}
+
+void MeasurePage::onUpdated()
+{
+    if (m_chart->isVisible())
+        m_chart->refresh();
+    m_pipeline->refreshCounts();
+    m_seen->update(m_measure->discovery(), m_measure->pipeline(), m_measure->malformedStampsByTopic());
+    updateCounts();
+}
+
+void MeasurePage::onPipelineChanged()
+{
+    m_pipeline->setPipeline(m_measure->pipeline());
+    m_seen->update(m_measure->discovery(), m_measure->pipeline());
+    const QSignalBlocker block(m_window);
+    m_window->setValue(int(m_measure->engine().window()));
+    if (m_measure->isAutomatic())
+        m_mode->setText(
+            m_measure->pipeline().isEmpty()
+                ? tr("Automatic: waiting for stamps (benchmarking_suite/TimeStamped on ROS or MQTT, or JSON "
+                     "stamps on MQTT).")
+                : tr("Automatic: ordered by the stamps' times, hosts guessed from the names. Drag rows to "
+                     "reorder, double-click a host to change it."));
+    else if (m_measure->isShowingRun())
+        m_mode->setText(tr("The recorded run's pipeline."));
+    else if (!m_pipelineFile.isEmpty())
+        m_mode->setText(tr("From %1.").arg(QFileInfo(m_pipelineFile).fileName()));
+    else
+        m_mode->setText(tr("Edited by hand."));
+    m_chart->refresh();
+}
+
+void MeasurePage::updateCounts()
+{
+    const LatencyEngine& e = m_measure->engine();
+    const SampleJoiner::Counters& c = e.counters();
+    QString text = tr("Samples: %1 complete · %2 dropped · %3 incomplete · %4 duplicate stamps · %5 from "
+                      "unknown topics")
+                       .arg(c.complete)
+                       .arg(c.dropped())
+                       .arg(e.pending())
+                       .arg(c.duplicates)
+                       .arg(c.unknownTopic);
+    if (const quint64 bad = m_measure->malformedStamps()) {
+        // The worst topics by name: a lab needs to know which device sends garbage.
+        const QHash<QString, quint64> byTopic = m_measure->malformedStampsByTopic();
+        std::vector<std::pair<quint64, QString>> worst;
+        worst.reserve(std::size_t(byTopic.size()));
+        for (auto it = byTopic.cbegin(); it != byTopic.cend(); ++it)
+            worst.emplace_back(it.value(), it.key());
+        const std::size_t shown = std::min<std::size_t>(worst.size(), 3);
+        std::partial_sort(worst.begin(), worst.begin() + qsizetype(shown), worst.end(),
+                          [](const auto& a, const auto& b) { return a.first > b.first; });
+        QStringList names;
+        for (std::size_t i = 0; i < shown; ++i)
+            names << tr("%1 on %2").arg(worst[i].first).arg(worst[i].second);
+        if (worst.size() > shown)
+            names << tr("%n more topic(s)", nullptr, int(worst.size() - shown));
+        text += tr(" · %1 malformed: %2 (last: %3)").arg(bad).arg(names.join(u", "), m_measure->lastStampError());
+    }
+    if (m_measure->isPaused())
+        text += tr(" · paused");
+    m_counts->setText(text);
+}
+
+bool MeasurePage::loadPipeline(const QString& path, QString* error)
+{
+    const std::optional<Pipeline> p = Pipeline::load(path, error);
+    if (!p)
+        return false;
+    m_pipelineFile = path;
+    m_measure->setPipeline(*p);
+    onPipelineChanged();
+    return true;
+}
+
+bool MeasurePage::savePipeline(const QString& path, QString* error)
+{
+    if (!m_measure->pipeline().save(path, error))
+        return false;
+    m_pipelineFile = path;
+    onPipelineChanged();
+    return true;
+}
+
+void MeasurePage::choosePipelineFile()
+{
+    const QString path
+        = QFileDialog::getOpenFileName(this, tr("Load Pipeline"), QFileInfo(m_pipelineFile).path(),
+                                       tr("Pipelines (*.yaml *.yml);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!loadPipeline(path, &error))
+        QMessageBox::warning(this, tr("Load Pipeline"), error);
+}
+
+void MeasurePage::chooseSaveFile()
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Pipeline"), m_pipelineFile.isEmpty() ? u"pipeline.yaml"_s : m_pipelineFile,
+        tr("Pipelines (*.yaml *.yml)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!savePipeline(path, &error))
+        QMessageBox::warning(this, tr("Save Pipeline"), error);
+}
+
+void MeasurePage::removeSelectedStamps()
+{
+    QList<int> rows;
+    for (const QModelIndex& i : m_pipelineView->selectionModel()->selectedRows())
+        rows << i.row();
+    if (rows.isEmpty() && m_pipelineView->currentIndex().isValid())
+        rows << m_pipelineView->currentIndex().row();
+    if (!rows.isEmpty())
+        applyEdit(m_pipeline->withoutRows(rows));
+}
+
+void MeasurePage::moveSelectedStamp(int delta)
+{
+    const QModelIndex current = m_pipelineView->currentIndex();
+    if (!current.isValid())
+        return;
+    const int to = current.row() + delta;
+    if (to < 0 || to >= m_pipeline->rowCount())
+        return;
+    applyEdit(m_pipeline->withRowMoved(current.row(), to));
+    m_pipelineView->setCurrentIndex(m_pipeline->index(to, current.column()));
+}
+
+void MeasurePage::addSeenTopic(const QModelIndex& index)
+{
+    QStringList topics;
+    for (const QModelIndex& i : m_seenView->selectionModel()->selectedIndexes())
+        topics << i.data(StampTopicModel::TopicRole).toString();
+    if (topics.isEmpty())
+        topics << index.data(StampTopicModel::TopicRole).toString();
+    applyEdit(m_pipeline->withTopics(topics, -1));
+}

@@ -1,0 +1,446 @@
+// SPDX-License-Identifier: MIT
+#include "reportspage.h"
+
+#include "base/atomicfile.h"
+#include "record/runfile.h"
+#include "report/report.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPainter>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QSvgRenderer>
+#include <QTextBrowser>
+#include <QTimer>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+ReportsPage::ReportsPage(QWidget* parent)
+    : QWidget(parent)
+    , m_inputs(new QListWidget(this))
+    , m_format(new QComboBox(this))
+    , m_pipeline(new QLineEdit(this))
+    , m_window(new QSpinBox(this))
+    , m_join(new QCheckBox(tr("&Join the inputs into one run"), this))
+    , m_perSample(new QCheckBox(tr("CSV: stage latencies in ms, one row per sample"), this))
+    , m_title(new QLineEdit(this))
+    , m_previewStack(new QStackedWidget(this))
+    , m_text(new QPlainTextEdit(this))
+    , m_rich(new QTextBrowser(this))
+    , m_progress(new QProgressBar(this))
+    , m_status(new QLabel(this))
+    , m_debounce(new QTimer(this))
+{
+    setObjectName(u"reportsPage"_s);
+    m_inputs->setObjectName(u"reportInputs"_s);
+    m_inputs->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_inputs->setToolTip(
+        tr("Runs, suite timestamp CSV files and ROS bags; several are compared side by side"));
+    setAcceptDrops(true); // files dropped anywhere on the page are added
+    const QList<std::pair<QString, ReportFormats::Format>> formats {
+        {tr("PDF"), ReportFormats::Format::Pdf},
+        {tr("HTML (tables and SVG figure)"), ReportFormats::Format::Html},
+        {tr("Markdown"), ReportFormats::Format::Markdown},
+        {tr("LaTeX (booktabs tabular)"), ReportFormats::Format::Latex},
+        {tr("CSV"), ReportFormats::Format::Csv},
+        {tr("JSON"), ReportFormats::Format::Json}};
+    for (const auto& [label, f] : formats)
+        m_format->addItem(label, int(f));
+    m_pipeline->setPlaceholderText(tr("optional; otherwise each input's own pipeline"));
+    m_pipeline->setClearButtonEnabled(true);
+    m_window->setRange(0, 100'000'000);
+    m_window->setSpecialValueText(tr("whole run"));
+    m_window->setSuffix(tr(" samples"));
+    m_title->setPlaceholderText(tr("from the run names"));
+    m_text->setReadOnly(true);
+    m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_text->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_text->setObjectName(u"reportText"_s);
+    m_rich->setObjectName(u"reportRich"_s);
+    m_previewStack->addWidget(m_text);
+    m_previewStack->addWidget(m_rich);
+    m_progress->setRange(0, 100);
+    m_progress->setVisible(false);
+    m_progress->setMaximumWidth(200);
+
+    auto* add = new QPushButton(tr("&Add…"), this);
+    auto* remove = new QPushButton(tr("&Remove"), this);
+    auto* up = new QPushButton(tr("&Up"), this);
+    auto* down = new QPushButton(tr("Do&wn"), this);
+    auto* browsePipeline = new QPushButton(tr("&Browse…"), this);
+    auto* exportButton = new QPushButton(tr("&Export…"), this);
+    exportButton->setDefault(true);
+    exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    exportButton->setToolTip(tr("Write the report to a file (Ctrl+E)"));
+
+    auto* inputButtons = new QHBoxLayout;
+    for (QPushButton* b : {add, remove, up, down})
+        inputButtons->addWidget(b);
+    inputButtons->addStretch();
+    auto* pipelineRow = new QHBoxLayout;
+    pipelineRow->addWidget(m_pipeline, 1);
+    pipelineRow->addWidget(browsePipeline);
+    auto* form = new QFormLayout;
+    form->addRow(tr("&Format:"), m_format);
+    auto* pipelineLabel = new QLabel(tr("&Pipeline:"), this); // its buddy is the field, not the row
+    pipelineLabel->setBuddy(m_pipeline);
+    form->addRow(pipelineLabel, pipelineRow);
+    form->addRow(tr("W&indow:"), m_window);
+    form->addRow(tr("&Title:"), m_title);
+    form->addRow(QString(), m_join);
+    form->addRow(QString(), m_perSample);
+
+    auto* left = new QWidget(this);
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    auto* inputsLabel = new QLabel(tr("&Inputs:"), left);
+    inputsLabel->setBuddy(m_inputs);
+    leftLayout->addWidget(inputsLabel);
+    leftLayout->addWidget(m_inputs, 1);
+    leftLayout->addLayout(inputButtons);
+    leftLayout->addLayout(form);
+    leftLayout->addWidget(exportButton);
+
+    auto* right = new QWidget(this);
+    auto* rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(0, 0, 0, 0);
+    auto* statusRow = new QHBoxLayout;
+    statusRow->addWidget(m_status, 1);
+    statusRow->addWidget(m_progress);
+    rightLayout->addLayout(statusRow);
+    rightLayout->addWidget(m_previewStack, 1);
+
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 5);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(split);
+
+    m_debounce->setSingleShot(true);
+    m_debounce->setInterval(300);
+    connect(m_debounce, &QTimer::timeout, this, &ReportsPage::startPreview);
+    connect(add, &QPushButton::clicked, this, &ReportsPage::chooseInputs);
+    connect(remove, &QPushButton::clicked, this, &ReportsPage::removeSelected);
+    connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
+    connect(down, &QPushButton::clicked, this, [this] { moveSelected(+1); });
+    connect(browsePipeline, &QPushButton::clicked, this, &ReportsPage::choosePipeline);
+    connect(exportButton, &QPushButton::clicked, this, &ReportsPage::chooseExport);
+    connect(m_format, &QComboBox::currentIndexChanged, this, &ReportsPage::schedulePreview);
+    connect(m_pipeline, &QLineEdit::textChanged, this, &ReportsPage::schedulePreview);
+    connect(m_window, &QSpinBox::valueChanged, this, &ReportsPage::schedulePreview);
+    connect(m_join, &QCheckBox::toggled, this, &ReportsPage::schedulePreview);
+    connect(m_perSample, &QCheckBox::toggled, this, &ReportsPage::schedulePreview);
+    connect(m_title, &QLineEdit::textChanged, this, &ReportsPage::schedulePreview);
+    auto* del = new QAction(this);
+    del->setShortcut(QKeySequence::Delete);
+    del->setShortcutContext(Qt::WidgetShortcut);
+    m_inputs->addAction(del);
+    connect(del, &QAction::triggered, this, &ReportsPage::removeSelected);
+    m_status->setText(tr("Add runs, suite CSV files or bags to report on."));
+}
+
+ReportsPage::~ReportsPage() = default; // a running job cancels and waits for its worker
+
+void ReportsPage::addInputs(const QStringList& paths)
+{
+    for (const QString& p : paths) {
+        if (p.isEmpty() || inputs().contains(p))
+            continue;
+        auto* item = new QListWidgetItem(QFileInfo(p).fileName(), m_inputs);
+        item->setData(Qt::UserRole, p);
+        item->setToolTip(p);
+    }
+    schedulePreview();
+}
+
+QStringList ReportsPage::inputs() const
+{
+    QStringList out;
+    for (int i = 0; i < m_inputs->count(); ++i)
+        out << m_inputs->item(i)->data(Qt::UserRole).toString();
+    return out;
+}
+
+void ReportsPage::setFormat(ReportFormats::Format format)
+{
+    m_format->setCurrentIndex(m_format->findData(int(format)));
+}
+
+ReportFormats::Format ReportsPage::format() const
+{
+    return ReportFormats::Format(m_format->currentData().toInt());
+}
+
+void ReportsPage::setPipelineFile(const QString& path)
+{
+    m_pipeline->setText(path);
+}
+
+bool ReportsPage::isBusy() const
+{
+    return m_job != nullptr || m_debounce->isActive();
+}
+
+QString ReportsPage::previewText() const
+{
+    return m_preview;
+}
+
+std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
+{
+    ReportJob::Request r;
+    r.inputs = inputs();
+    if (!m_pipeline->text().trimmed().isEmpty()) {
+        r.pipeline = Pipeline::load(m_pipeline->text().trimmed(), error);
+        if (!r.pipeline)
+            return std::nullopt;
+    }
+    r.options.window = m_window->value();
+    r.options.join = m_join->isChecked();
+    r.options.skipBadRows = true; // the preview says what was skipped rather than refusing
+    r.options.title = m_title->text().trimmed();
+    return r;
+}
+
+QByteArray ReportsPage::render(const Report& report, ReportFormats::Format format, QString* error) const
+{
+    return ReportFormats::render(report, format, m_perSample->isChecked(), error);
+}
+
+void ReportsPage::schedulePreview()
+{
+    m_perSample->setEnabled(format() == ReportFormats::Format::Csv);
+    m_debounce->start();
+}
+
+void ReportsPage::startPreview()
+{
+    if (m_job) {
+        // One computation at a time: cancel the running one and start again when it ends.
+        m_job->cancel();
+        m_again = true;
+        return;
+    }
+    if (inputs().isEmpty()) {
+        m_preview.clear();
+        m_text->clear();
+        m_rich->clear();
+        m_status->setText(tr("Add runs, suite CSV files or bags to report on."));
+        emit previewUpdated();
+        return;
+    }
+    QString error;
+    std::optional<ReportJob::Request> r = request(&error);
+    if (!r) {
+        showPreview(nullptr, error);
+        return;
+    }
+    m_job = new ReportJob(std::move(*r), this);
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    m_status->setText(tr("Computing…"));
+    connect(m_job, &ReportJob::progress, m_progress, &QProgressBar::setValue);
+    connect(m_job, &ReportJob::finished, this,
+            [this](const std::shared_ptr<Report>& report, const QString& why, const QStringList&) {
+                m_job->deleteLater();
+                m_job = nullptr;
+                m_progress->setVisible(false);
+                if (m_again) {
+                    m_again = false;
+                    startPreview();
+                    return;
+                }
+                showPreview(report, why);
+            });
+    m_job->start();
+}
+
+void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QString& error)
+{
+    if (!report) {
+        m_preview.clear();
+        m_text->setPlainText(error);
+        m_previewStack->setCurrentWidget(m_text);
+        m_status->setText(tr("The report cannot be made: %1").arg(error));
+        emit previewUpdated();
+        return;
+    }
+    const ReportFormats::Format f = format();
+    QString why;
+    if (f == ReportFormats::Format::Html || f == ReportFormats::Format::Pdf) {
+        // Rich text cannot show inline SVG: the figure comes as an image rendered from it.
+        QSvgRenderer svg(ReportFormats::ecdfSvg(*report));
+        QImage figure(QSize(720, 400) * 2, QImage::Format_ARGB32_Premultiplied);
+        figure.fill(Qt::white);
+        QPainter painter(&figure);
+        svg.render(&painter);
+        painter.end();
+        m_rich->document()->addResource(QTextDocument::ImageResource, QUrl(u"bridgescope:ecdf.png"_s),
+                                        figure);
+        m_preview = ReportFormats::htmlBody(*report, true)
+            + u"<p><img src=\"bridgescope:ecdf.png\" width=\"720\"/></p>"_s;
+        m_rich->setHtml(m_preview);
+        m_previewStack->setCurrentWidget(m_rich);
+    } else {
+        const QByteArray text = render(*report, f, &why);
+        m_preview = text.isEmpty() && !why.isEmpty() ? why : QString::fromUtf8(text);
+        m_text->setPlainText(m_preview);
+        m_previewStack->setCurrentWidget(m_text);
+    }
+    qint64 samples = 0;
+    for (const auto& run : report->runs())
+        samples += run->engine->samples();
+    m_status->setText(
+        tr("%1: %2 runs, %3 complete samples").arg(report->title()).arg(report->runs().size()).arg(samples));
+    emit previewUpdated();
+}
+
+namespace {
+QStringList localFiles(const QMimeData* mime)
+{
+    QStringList files;
+    if (mime)
+        for (const QUrl& url : mime->urls())
+            if (url.isLocalFile())
+                files << url.toLocalFile();
+    return files;
+}
+} // namespace
+
+void ReportsPage::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (!localFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void ReportsPage::dropEvent(QDropEvent* event)
+{
+    const QStringList files = localFiles(event->mimeData());
+    if (files.isEmpty())
+        return;
+    addInputs(files);
+    event->acceptProposedAction();
+}
+
+bool ReportsPage::exportTo(const QString& path, QString* error)
+{
+    QString why;
+    std::optional<ReportJob::Request> r = request(&why);
+    if (!r) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    // A window-modal progress dialog over a local event loop: the page stays painted, the rest of
+    // the window keeps running, and Cancel reaches the job.
+    ReportJob job(std::move(*r));
+    QProgressDialog progress(tr("Computing the report…"), tr("Cancel"), 0, 100, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(500);
+    QEventLoop loop;
+    std::shared_ptr<Report> report;
+    // The Cancel button emits canceled(); QProgressDialog::cancel() (Escape, or a caller) only sets
+    // wasCanceled(), which each progress step looks at.
+    connect(&progress, &QProgressDialog::canceled, &job, &ReportJob::cancel);
+    connect(&job, &ReportJob::progress, &progress, [&progress, &job](int percent) {
+        if (progress.wasCanceled())
+            job.cancel();
+        else
+            progress.setValue(percent);
+    });
+    connect(&job, &ReportJob::finished, &loop,
+            [&](const std::shared_ptr<Report>& result, const QString& failure, const QStringList&) {
+                report = result;
+                why = failure;
+                loop.quit();
+            });
+    job.start();
+    loop.exec();
+    progress.reset();
+    if (!report) {
+        if (error)
+            *error = job.isCancelled() ? tr("cancelled; nothing written") : why;
+        return false;
+    }
+    const QByteArray bytes = render(*report, format(), &why);
+    if (bytes.isEmpty()) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    return AtomicFile::write(path, bytes, error, false);
+}
+
+void ReportsPage::chooseInputs()
+{
+    const QStringList paths = QFileDialog::getOpenFileNames(
+        this, tr("Add Inputs"), QString(),
+        tr("Runs, suite CSV and bags (*.%1 *.csv *.bag);;All files (*)").arg(RunFile::suffix()));
+    addInputs(paths);
+}
+
+void ReportsPage::choosePipeline()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Pipeline"), m_pipeline->text(),
+                                                      tr("Pipelines (*.yaml *.yml);;All files (*)"));
+    if (!path.isEmpty())
+        m_pipeline->setText(path);
+}
+
+void ReportsPage::chooseExport()
+{
+    const ReportFormats::Format f = format();
+    const QString suffix = ReportFormats::suffix(f);
+    const QString suggestion
+        = (inputs().size() == 1 ? QFileInfo(inputs().first()).completeBaseName() : u"comparison"_s)
+        + u"-report."_s + suffix;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Report"), suggestion,
+                                                      tr("%1 files (*.%2)").arg(suffix.toUpper(), suffix));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!exportTo(path, &error))
+        QMessageBox::warning(this, tr("Export Report"), error);
+    else
+        m_status->setText(tr("Written: %1").arg(path));
+}
+
+void ReportsPage::removeSelected()
+{
+    qDeleteAll(m_inputs->selectedItems());
+    schedulePreview();
+}
+
+void ReportsPage::moveSelected(int delta)
+{
+    const int row = m_inputs->currentRow();
+    const int to = row + delta;
+    if (row < 0 || to < 0 || to >= m_inputs->count())
+        return;
+    QListWidgetItem* item = m_inputs->takeItem(row);
+    m_inputs->insertItem(to, item);
+    m_inputs->setCurrentRow(to);
+    schedulePreview();
+}
