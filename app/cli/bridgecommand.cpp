@@ -9,7 +9,6 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
-#include <QTimer>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
@@ -27,9 +26,18 @@ void logLine(const QString& line)
 {
     err(QDateTime::currentDateTime().toString(u"HH:mm:ss.zzz"_s) + u' ' + line);
 }
-} // namespace
 
-int runBridgeCommand(const QStringList& arguments)
+/// What the command line asks for.
+struct BridgeRequest
+{
+    QString path;
+    QByteArray yaml;
+    ReferenceBridge::Options options;
+};
+
+/// Parses and checks the command line and reads the config. -1 to go on with `request`,
+/// otherwise the exit status.
+int parseBridge(const QStringList& arguments, BridgeRequest* request)
 {
     QCommandLineParser parser;
     const QCommandLineOption broker(
@@ -74,7 +82,10 @@ int runBridgeCommand(const QStringList& arguments)
         err(Bridge::tr("%1: %2").arg(path, f.errorString()));
         return ExitUsage;
     }
-    ReferenceBridge::Options options;
+    request->path = path;
+    // At most one byte more than a config may have: /dev/zero is refused, not read forever.
+    request->yaml = f.read(YamlLimits::maxBytes + 1);
+    ReferenceBridge::Options& options = request->options;
     options.brokerUrl = parser.value(broker);
     options.rosMaster = parser.value(master);
     options.nodeName = parser.value(name);
@@ -93,12 +104,17 @@ int runBridgeCommand(const QStringList& arguments)
         }
         options.args.insert(a.left(eq), a.mid(eq + 1));
     }
+    return -1;
+}
+
+/// Bridges until Ctrl+C or SIGTERM; a line when it starts and the counts when it stops.
+int runBridge(const BridgeRequest& request)
+{
     CliOutput::keepFreedMemory();
     ReferenceBridge bridge(logLine);
     QString why;
-    // At most one byte more than a config may have: /dev/zero is refused, not read forever.
-    if (!bridge.load(f.read(YamlLimits::maxBytes + 1), options, &why)) {
-        err(u"%1: %2"_s.arg(path, why));
+    if (!bridge.load(request.yaml, request.options, &why)) {
+        err(u"%1: %2"_s.arg(request.path, why));
         return ExitUsage;
     }
     CliOutput::catchStopSignals();
@@ -107,9 +123,7 @@ int runBridgeCommand(const QStringList& arguments)
         return CliOutput::stopRequested() ? ExitOk : ExitFailed;
     }
     logLine(Bridge::tr("bridging %n mapping(s); Ctrl+C stops", nullptr, bridge.mappingCount()));
-    QObject guard;
-    CliOutput::whenStopRequested(&guard, [] { QCoreApplication::exit(ExitOk); });
-    QCoreApplication::exec();
+    CliOutput::runUntil([](qint64) { return std::nullopt; });
     const ReferenceBridge::Counters& c = bridge.counters();
     bridge.stop();
     logLine(Bridge::tr("stopped: %1 messages to MQTT, %2 to ROS, %3 failed")
@@ -117,4 +131,13 @@ int runBridgeCommand(const QStringList& arguments)
                 .arg(c.toRos.load())
                 .arg(c.failed.load()));
     return ExitOk;
+}
+} // namespace
+
+int runBridgeCommand(const QStringList& arguments)
+{
+    BridgeRequest request;
+    if (const int status = parseBridge(arguments, &request); status >= 0)
+        return status;
+    return runBridge(request);
 }

@@ -8,6 +8,7 @@
 #include <malloc.h>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QTimer>
 
 namespace CliOutput {
@@ -92,6 +93,29 @@ void whenStopRequested(QObject* context, std::function<void()> onStop)
         onStop();
     });
     check->start(100);
+}
+
+int runUntil(const std::function<std::optional<int>(qint64 elapsedMs)>& check,
+             const std::function<void(qint64 elapsedMs)>& everySecond)
+{
+    QTimer timer;
+    whenStopRequested(&timer, [] { QCoreApplication::exit(ExitOk); });
+    QElapsedTimer clock;
+    clock.start();
+    qint64 lastSecond = 0;
+    QObject::connect(&timer, &QTimer::timeout, [&] {
+        const qint64 elapsed = clock.elapsed();
+        if (const std::optional<int> status = check(elapsed)) {
+            QCoreApplication::exit(*status);
+            return;
+        }
+        if (everySecond && elapsed - lastSecond >= 1000) {
+            lastSecond = elapsed;
+            everySecond(elapsed);
+        }
+    });
+    timer.start(50);
+    return QCoreApplication::exec();
 }
 
 void keepFreedMemory()

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <QString>
 #include <QStringList>
 
@@ -38,6 +39,12 @@ bool stopRequested();
 /// requested (checked every 100 ms by a timer that `context` owns). The one way a command that runs
 /// an event loop learns about Ctrl+C.
 void whenStopRequested(QObject* context, std::function<void()> onStop);
+/// Runs the event loop of a command that runs until it is done or stopped: every 50 ms `check`
+/// is asked with the milliseconds since the start and ends the loop with the status it returns;
+/// `everySecond` (optional) prints progress once a second; Ctrl+C ends it with ExitOk. Returns the
+/// status the loop ended with (also from a QCoreApplication::exit() elsewhere).
+int runUntil(const std::function<std::optional<int>(qint64 elapsedMs)>& check,
+             const std::function<void(qint64 elapsedMs)>& everySecond = {});
 /// For processes that forward big messages at a high rate (bridge, demo nodes): keep freed memory
 /// in the process. glibc otherwise maps each buffer over 128 KB afresh and returns it on free, and
 /// the page faults of touching it again cost more than copying the message (measured with perf).

@@ -12,10 +12,8 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QTemporaryDir>
-#include <QTimer>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
@@ -29,9 +27,18 @@ class Demo
 {
     Q_DECLARE_TR_FUNCTIONS(DemoCommand)
 };
-} // namespace
 
-int runDemoCommand(const QStringList& arguments)
+/// What the command line asks for.
+struct DemoRequest
+{
+    DemoLab::Options lab;
+    double seconds = 0; ///< 0: until Ctrl+C
+    ReportFormats::Format summary = ReportFormats::Format::Markdown;
+    QString runPath; ///< empty: a scratch file
+};
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseDemo(const QStringList& arguments, DemoRequest* request)
 {
     QCommandLineParser parser;
     const QCommandLineOption seconds(u"seconds"_s, Demo::tr("Run for N seconds (default: until Ctrl+C)."),
@@ -60,37 +67,40 @@ int runDemoCommand(const QStringList& arguments)
     if (parsed >= 0)
         return parsed;
     bool ok = true;
-    const double wantSeconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
-    if (!ok || wantSeconds < 0) {
+    request->seconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
+    if (!ok || request->seconds < 0) {
         err(Demo::tr("--seconds takes a number of seconds"));
         return ExitUsage;
     }
-    ReportFormats::Format summary;
-    if (!ReportFormats::parse(parser.value(format), &summary)
-        || (summary != ReportFormats::Format::Markdown && summary != ReportFormats::Format::Json)) {
+    if (!ReportFormats::parse(parser.value(format), &request->summary)
+        || (request->summary != ReportFormats::Format::Markdown
+            && request->summary != ReportFormats::Format::Json)) {
         err(Demo::tr("--format takes md or json"));
         return ExitUsage;
     }
-    DemoLab::Options labOptions;
-    labOptions.payloadBytes = parser.value(size).toInt(&ok);
-    if (!ok || labOptions.payloadBytes < 16) {
+    request->lab.payloadBytes = parser.value(size).toInt(&ok);
+    if (!ok || request->lab.payloadBytes < 16) {
         err(Demo::tr("--size takes a number of bytes (at least 16)"));
         return ExitUsage;
     }
-    labOptions.brokerUrl = parser.value(broker);
-    labOptions.rosMasterUri = parser.value(master);
-    QTemporaryDir scratch;
-    const QString runPath = parser.isSet(output) ? parser.value(output) : scratch.filePath(u"demo.bsrun"_s);
-    if (QFileInfo::exists(runPath)) {
-        err(Demo::tr("%1 exists already; a run is never overwritten").arg(runPath));
+    request->lab.brokerUrl = parser.value(broker);
+    request->lab.rosMasterUri = parser.value(master);
+    request->runPath = parser.value(output);
+    if (!request->runPath.isEmpty() && QFileInfo::exists(request->runPath)) {
+        err(Demo::tr("%1 exists already; a run is never overwritten").arg(request->runPath));
         return ExitUsage;
     }
+    return -1;
+}
 
+/// Starts the lab, records its stamps to `runPath` until the end, stops the lab. The exit status.
+int runDemo(const DemoRequest& request, const QString& runPath)
+{
     CliOutput::catchStopSignals();
     DemoLab lab;
     QString why;
     err(Demo::tr("starting the demo lab…"));
-    if (!lab.start(labOptions, &why)) {
+    if (!lab.start(request.lab, &why)) {
         err(Demo::tr("the demo lab did not start: %1").arg(why));
         return ExitFailed;
     }
@@ -108,60 +118,68 @@ int runDemoCommand(const QStringList& arguments)
     measure.setPipeline(*pipeline);
     RunInfo info;
     info.name = Demo::tr("demo lab");
-    info.notes
-        = Demo::tr("bridgescope demo: %1 bytes at %2 Hz").arg(labOptions.payloadBytes).arg(labOptions.rateHz);
+    info.notes = Demo::tr("bridgescope demo: %1 bytes at %2 Hz")
+                     .arg(request.lab.payloadBytes)
+                     .arg(request.lab.rateHz);
     if (!measure.startRecording(runPath, info, &why)) {
         err(why);
         return ExitFailed;
     }
-    int exitCode = ExitOk;
-    QElapsedTimer clock;
-    clock.start();
-    QTimer check;
-    CliOutput::whenStopRequested(&check, [] { QCoreApplication::exit(ExitOk); });
-    qint64 lastReport = 0;
-    QObject::connect(&check, &QTimer::timeout, [&] {
-        if (wantSeconds > 0 && clock.elapsed() >= qint64(wantSeconds * 1000)) {
-            QCoreApplication::exit(ExitOk);
-            return;
-        }
-        if (!lab.isRunning()) {
+    // Until the time is up, Ctrl+C or the lab fails; a line of progress a second.
+    int exitCode = CliOutput::runUntil(
+        [&](qint64 elapsedMs) -> std::optional<int> {
+            if (request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000))
+                return ExitOk;
+            if (lab.isRunning())
+                return std::nullopt;
             err(Demo::tr("the demo lab failed: %1").arg(lab.failure()));
-            exitCode = ExitFailed;
-            QCoreApplication::exit(ExitFailed);
-            return;
-        }
-        if (clock.elapsed() - lastReport >= 1000) {
-            lastReport = clock.elapsed();
+            return ExitFailed;
+        },
+        [&](qint64 elapsedMs) {
             const LatencyEngine& e = measure.engine();
             const LatencyStats total = e.series(e.totalSeries()).stats();
             err(Demo::tr("%1 s: %2 complete samples, total latency mean %3 ms")
-                    .arg(clock.elapsed() / 1000)
+                    .arg(elapsedMs / 1000)
                     .arg(e.samples())
                     .arg(total.count > 0 ? QString::number(total.mean, 'f', 1) : u"–"_s));
-        }
-    });
-    check.start(50);
-    QCoreApplication::exec();
+        });
     live.drainNow();
     if (!measure.stopRecording(&why)) {
         err(Demo::tr("recording failed: %1").arg(why));
         exitCode = ExitFailed;
     }
     lab.stop();
-    if (exitCode != 0)
-        return exitCode;
+    return exitCode;
+}
+
+/// Prints the latency report of the recorded run; fails when it holds no complete sample.
+int printDemo(const DemoRequest& request, const QString& runPath)
+{
+    QString why;
     const std::optional<Report> report = Report::build({runPath}, std::nullopt, {}, &why);
     if (!report) {
         err(why);
         return ExitFailed;
     }
-    const QByteArray text = summary == ReportFormats::Format::Json ? ReportFormats::json(*report)
-                                                                   : ReportFormats::markdown(*report);
+    const QByteArray text = request.summary == ReportFormats::Format::Json ? ReportFormats::json(*report)
+                                                                           : ReportFormats::markdown(*report);
     out(QString::fromUtf8(text).trimmed());
-    if (parser.isSet(output))
+    if (!request.runPath.isEmpty())
         err(Demo::tr("the run is in %1").arg(runPath));
     return report->runs().front()->engine->samples() > 0 ? ExitOk : ExitFailed;
+}
+} // namespace
+
+int runDemoCommand(const QStringList& arguments)
+{
+    DemoRequest request;
+    if (const int status = parseDemo(arguments, &request); status >= 0)
+        return status;
+    QTemporaryDir scratch;
+    const QString runPath = request.runPath.isEmpty() ? scratch.filePath(u"demo.bsrun"_s) : request.runPath;
+    if (const int status = runDemo(request, runPath); status != ExitOk)
+        return status;
+    return printDemo(request, runPath);
 }
 
 int runDemoNodeCommand(const QStringList& arguments)

@@ -95,9 +95,18 @@ public:
         }
     }
 };
-} // namespace
 
-int runDiscoverCommand(const QStringList& arguments)
+/// What the command line asks for.
+struct DiscoverRequest
+{
+    MqttProfile profile;
+    QString masterUri;
+    double seconds = 2;
+    bool json = false;
+};
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
 {
     QCommandLineParser parser;
     const QCommandLineOption broker(u"broker"_s, Discover::tr("Broker URL (default tcp://localhost:1883)."),
@@ -120,12 +129,13 @@ int runDiscoverCommand(const QStringList& arguments)
     if (parsed >= 0)
         return parsed;
     bool ok = false;
-    const double secs = parser.value(seconds).toDouble(&ok);
-    if (!ok || secs <= 0) {
+    request->seconds = parser.value(seconds).toDouble(&ok);
+    if (!ok || request->seconds <= 0) {
         err(Discover::tr("--seconds takes a positive number"));
         return ExitUsage;
     }
-    MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
+    MqttProfile& profile = request->profile;
+    profile = MqttProfile::fromUrl(parser.value(broker));
     if (parser.isSet(filter))
         profile.filters = parser.values(filter);
     QString why;
@@ -133,26 +143,47 @@ int runDiscoverCommand(const QStringList& arguments)
         err(why);
         return ExitUsage;
     }
+    request->masterUri = parser.value(master);
+    request->json = parser.isSet(json);
+    return -1;
+}
 
+/// What was heard: the ROS graph, the MQTT connection and its topics.
+struct Heard
+{
     RosGraphPoller poller;
-    poller.setMasterUri(parser.value(master));
-    poller.start(500);
     MqttConnection connection;
     MqttTopicTree tree;
     bool connected = false;
-    QObject::connect(&connection, &MqttConnection::stateChanged, [&connected](MqttConnection::State s) {
-        connected = connected || s == MqttConnection::State::Connected;
+};
+
+/// Listens to the master and the broker for the time asked for.
+void listen(const DiscoverRequest& request, Heard* heard)
+{
+    heard->poller.setMasterUri(request.masterUri);
+    heard->poller.start(500);
+    QObject::connect(&heard->connection, &MqttConnection::stateChanged, [heard](MqttConnection::State s) {
+        heard->connected = heard->connected || s == MqttConnection::State::Connected;
     });
-    connection.open(profile);
+    heard->connection.open(request.profile);
     QTimer drain;
-    QObject::connect(&drain, &QTimer::timeout, [&] { tree.apply(connection.takeMessages()); });
+    QObject::connect(&drain, &QTimer::timeout,
+                     [heard] { heard->tree.apply(heard->connection.takeMessages()); });
     drain.start(33);
-    QTimer::singleShot(int(secs * 1000), QCoreApplication::instance(),
+    QTimer::singleShot(int(request.seconds * 1000), QCoreApplication::instance(),
                        [] { QCoreApplication::exit(ExitOk); });
     QCoreApplication::exec();
-    tree.apply(connection.takeMessages());
+    heard->tree.apply(heard->connection.takeMessages());
+}
 
-    if (parser.isSet(json)) {
+/// Prints what was heard as text or JSON; fails when neither side answered.
+int printDiscover(const DiscoverRequest& request, const Heard& heard)
+{
+    const RosGraphPoller& poller = heard.poller;
+    const MqttConnection& connection = heard.connection;
+    const MqttTopicTree& tree = heard.tree;
+    const bool connected = heard.connected;
+    if (request.json) {
         QJsonObject doc;
         doc.insert(u"ros"_s, Discover::rosJson(poller));
         doc.insert(u"mqtt"_s, Discover::mqttJson(connection, tree, connected));
@@ -162,8 +193,19 @@ int runDiscoverCommand(const QStringList& arguments)
     }
     if (!poller.isReachable() && !connected) {
         err(Discover::tr("Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.")
-                .arg(poller.masterUri(), profile.url));
+                .arg(poller.masterUri(), request.profile.url));
         return ExitFailed;
     }
     return ExitOk;
+}
+} // namespace
+
+int runDiscoverCommand(const QStringList& arguments)
+{
+    DiscoverRequest request;
+    if (const int status = parseDiscover(arguments, &request); status >= 0)
+        return status;
+    Heard heard;
+    listen(request, &heard);
+    return printDiscover(request, heard);
 }

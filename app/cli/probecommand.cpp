@@ -164,44 +164,94 @@ bool toNumber(const QString& text, double* value)
     *value = text.toDouble(&ok);
     return ok && std::isfinite(*value);
 }
-} // namespace
 
-int runProbeCommand(const QStringList& arguments)
+/// The command line of `bridgescope probe`.
+struct ProbeArguments
 {
-    QCommandLineParser parser;
-    const QCommandLineOption broker(u"broker"_s, Probe::tr("Broker URL (default tcp://localhost:1883)."),
-                                    u"URL"_s, u"tcp://localhost:1883"_s);
-    const QCommandLineOption size(u"size"_s, Probe::tr("Payload size in bytes, at least 24 (default 1024)."),
-                                  u"BYTES"_s, u"1024"_s);
-    const QCommandLineOption rate(u"rate"_s,
-                                  Probe::tr("Messages per second (default 10); the first rate of a sweep."),
-                                  u"HZ"_s, u"10"_s);
-    const QCommandLineOption qos(u"qos"_s, Probe::tr("QoS of the probe messages: 0, 1 or 2 (default 0)."),
-                                 u"QOS"_s, u"0"_s);
-    const QCommandLineOption count(u"count"_s, Probe::tr("Messages to send (default 100)."), u"N"_s,
-                                   u"100"_s);
-    const QCommandLineOption wait(
+    const QCommandLineOption broker {u"broker"_s, Probe::tr("Broker URL (default tcp://localhost:1883)."),
+                                     u"URL"_s, u"tcp://localhost:1883"_s};
+    const QCommandLineOption size {u"size"_s, Probe::tr("Payload size in bytes, at least 24 (default 1024)."),
+                                   u"BYTES"_s, u"1024"_s};
+    const QCommandLineOption rate {u"rate"_s,
+                                   Probe::tr("Messages per second (default 10); the first rate of a sweep."),
+                                   u"HZ"_s, u"10"_s};
+    const QCommandLineOption qos {u"qos"_s, Probe::tr("QoS of the probe messages: 0, 1 or 2 (default 0)."),
+                                  u"QOS"_s, u"0"_s};
+    const QCommandLineOption count {u"count"_s, Probe::tr("Messages to send (default 100)."), u"N"_s,
+                                    u"100"_s};
+    const QCommandLineOption wait {
         u"wait"_s, Probe::tr("Seconds to wait for stragglers after the last send (default 2)."), u"S"_s,
-        u"2"_s);
-    const QCommandLineOption sweep(
+        u"2"_s};
+    const QCommandLineOption sweep {
         u"sweep"_s,
         Probe::tr("Raise the rate by 1.5x per step (about a second each) until more than 1 % is lost, the "
                   "median round trip exceeds 10x the first step's (at least 10 ms) or 1 s, or the sender "
-                  "falls behind; report the highest sustainable rate and its throughput."));
-    const QCommandLineOption maxRate(
-        u"max-rate"_s, Probe::tr("Sweep: the highest rate to try (default 5000)."), u"HZ"_s, u"5000"_s);
-    const QCommandLineOption maxSeconds(
-        u"max-seconds"_s, Probe::tr("Sweep: stop after S seconds (default 30)."), u"S"_s, u"30"_s);
-    const QCommandLineOption json(u"json"_s, Probe::tr("Print one JSON document."));
-    const QCommandLineOption echo(
+                  "falls behind; report the highest sustainable rate and its throughput.")};
+    const QCommandLineOption maxRate {
+        u"max-rate"_s, Probe::tr("Sweep: the highest rate to try (default 5000)."), u"HZ"_s, u"5000"_s};
+    const QCommandLineOption maxSeconds {
+        u"max-seconds"_s, Probe::tr("Sweep: stop after S seconds (default 30)."), u"S"_s, u"30"_s};
+    const QCommandLineOption json {u"json"_s, Probe::tr("Print one JSON document.")};
+    const QCommandLineOption echo {
         u"echo"_s,
         Probe::tr("Echo client: send every payload from bridgescope/probe/+/ping back "
-                  "unchanged on .../pong, until Ctrl+C."));
-    const QCommandLineOption viaEcho(
+                  "unchanged on .../pong, until Ctrl+C.")};
+    const QCommandLineOption viaEcho {
         u"via-echo"_s,
-        Probe::tr("Listen for the echo client's copies (.../pong) instead of the broker's own."));
-    parser.addOptions(
-        {broker, size, rate, qos, count, wait, sweep, maxRate, maxSeconds, json, echo, viaEcho});
+        Probe::tr("Listen for the echo client's copies (.../pong) instead of the broker's own.")};
+
+    QList<QCommandLineOption> all() const
+    {
+        return {broker, size, rate, qos, count, wait, sweep, maxRate, maxSeconds, json, echo, viaEcho};
+    }
+};
+
+/// What the command line asks for.
+struct ProbeRequest
+{
+    LinkProbeOptions options;
+    bool sweep = false;
+    bool echo = false;
+    bool json = false;
+};
+
+/// Reads the numeric options into `options`; false after saying which one is wrong.
+bool readNumbers(const QCommandLineParser& parser, const ProbeArguments& a, LinkProbeOptions* options)
+{
+    bool ok = false;
+    options->payloadBytes = parser.value(a.size).toInt(&ok);
+    if (!ok) {
+        err(Probe::tr("--size takes a number of bytes"));
+        return false;
+    }
+    options->qos = parser.value(a.qos).toInt(&ok);
+    if (!ok) {
+        err(Probe::tr("--qos must be 0, 1 or 2"));
+        return false;
+    }
+    options->count = parser.value(a.count).toLongLong(&ok);
+    if (!ok) {
+        err(Probe::tr("--count takes a number of messages"));
+        return false;
+    }
+    double waitSeconds = 0;
+    if (!toNumber(parser.value(a.rate), &options->rateHz)
+        || !toNumber(parser.value(a.maxRate), &options->maxRateHz)
+        || !toNumber(parser.value(a.maxSeconds), &options->sweepSeconds)
+        || !toNumber(parser.value(a.wait), &waitSeconds) || waitSeconds < 0 || waitSeconds > 3600) {
+        err(Probe::tr("--rate, --max-rate, --max-seconds and --wait take numbers"));
+        return false;
+    }
+    options->drainMs = int(waitSeconds * 1000);
+    return true;
+}
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseProbe(const QStringList& arguments, ProbeRequest* request)
+{
+    QCommandLineParser parser;
+    const ProbeArguments a;
+    parser.addOptions(a.all());
     QStringList args = arguments;
     args.replace(0, u"bridgescope probe"_s);
     const int parsed = CliOutput::parseCommand(
@@ -217,55 +267,39 @@ int runProbeCommand(const QStringList& arguments)
         err(Probe::tr("probe takes no arguments, only options; see bridgescope probe --help"));
         return ExitUsage;
     }
-
-    LinkProbeOptions options;
-    options.profile = MqttProfile::fromUrl(parser.value(broker));
-    bool ok = false;
-    options.payloadBytes = parser.value(size).toInt(&ok);
-    if (!ok) {
-        err(Probe::tr("--size takes a number of bytes"));
+    LinkProbeOptions& options = request->options;
+    options.profile = MqttProfile::fromUrl(parser.value(a.broker));
+    if (!readNumbers(parser, a, &options))
         return ExitUsage;
-    }
-    options.qos = parser.value(qos).toInt(&ok);
-    if (!ok) {
-        err(Probe::tr("--qos must be 0, 1 or 2"));
-        return ExitUsage;
-    }
-    options.count = parser.value(count).toLongLong(&ok);
-    if (!ok) {
-        err(Probe::tr("--count takes a number of messages"));
-        return ExitUsage;
-    }
-    double waitSeconds = 0;
-    if (!toNumber(parser.value(rate), &options.rateHz) || !toNumber(parser.value(maxRate), &options.maxRateHz)
-        || !toNumber(parser.value(maxSeconds), &options.sweepSeconds)
-        || !toNumber(parser.value(wait), &waitSeconds) || waitSeconds < 0 || waitSeconds > 3600) {
-        err(Probe::tr("--rate, --max-rate, --max-seconds and --wait take numbers"));
-        return ExitUsage;
-    }
-    options.drainMs = int(waitSeconds * 1000);
-    options.viaEcho = parser.isSet(viaEcho);
-    const bool isSweep = parser.isSet(sweep);
-    const bool isEcho = parser.isSet(echo);
-    if (isEcho && (isSweep || options.viaEcho)) {
+    options.viaEcho = parser.isSet(a.viaEcho);
+    request->sweep = parser.isSet(a.sweep);
+    request->echo = parser.isSet(a.echo);
+    request->json = parser.isSet(a.json);
+    if (request->echo && (request->sweep || options.viaEcho)) {
         err(Probe::tr("--echo answers other probes; it cannot be combined with --sweep or --via-echo"));
         return ExitUsage;
     }
-    if (!isSweep && !parser.isSet(maxRate))
+    if (!request->sweep && !parser.isSet(a.maxRate))
         options.maxRateHz = std::max(options.maxRateHz, options.rateHz);
     QString why;
     if (!options.validate(&why)) {
         err(why);
         return ExitUsage;
     }
+    return -1;
+}
 
+/// Runs the probe, the sweep or the echo client until it ends or Ctrl+C; progress on stderr.
+LinkProbeReport runProbe(const ProbeRequest& request, qint64* echoed)
+{
+    const LinkProbeOptions& options = request.options;
     LinkProbe probe;
     LinkProbeReport report;
     QObject::connect(&probe, &LinkProbe::connected, [&](const QString& clientId) {
-        if (isEcho)
+        if (request.echo)
             err(Probe::tr("Echoing %1 back on .../pong at %2 as %3; Ctrl+C to stop.")
                     .arg(LinkProbe::echoFilter(), options.profile.url, clientId));
-        else if (isSweep)
+        else if (request.sweep)
             err(Probe::tr("Sweeping %1 B messages from %2 Hz up to %3 Hz at %4 (at most %5 s)")
                     .arg(options.payloadBytes)
                     .arg(options.rateHz)
@@ -286,23 +320,30 @@ int runProbeCommand(const QStringList& arguments)
     });
     CliOutput::whenStopRequested(&probe, [&probe] { probe.stop(); });
     CliOutput::keepFreedMemory(); // 0.18 MB messages at hundreds per second
-    if (isEcho)
+    if (request.echo)
         probe.startEcho(options);
-    else if (isSweep)
+    else if (request.sweep)
         probe.startSweep(options);
     else
         probe.start(options);
     QCoreApplication::exec();
+    *echoed = probe.echoed();
+    return report;
+}
 
+/// Prints the report as text or JSON and says how it went.
+int printProbe(const ProbeRequest& request, const LinkProbeReport& report, qint64 echoed)
+{
+    const LinkProbeOptions& options = request.options;
     if (report.steps.empty() && !report.error.isEmpty()) {
         err(report.error);
         return ExitFailed;
     }
-    if (isEcho) {
-        err(Probe::tr("%1 messages echoed").arg(probe.echoed()));
+    if (request.echo) {
+        err(Probe::tr("%1 messages echoed").arg(echoed));
         return ExitOk;
     }
-    if (parser.isSet(json))
+    if (request.json)
         out(QString::fromUtf8(QJsonDocument(Probe::json(report, options)).toJson(QJsonDocument::Indented))
                 .trimmed());
     else
@@ -319,4 +360,15 @@ int runProbeCommand(const QStringList& arguments)
         return ExitFailed;
     }
     return ExitOk;
+}
+} // namespace
+
+int runProbeCommand(const QStringList& arguments)
+{
+    ProbeRequest request;
+    if (const int status = parseProbe(arguments, &request); status >= 0)
+        return status;
+    qint64 echoed = 0;
+    const LinkProbeReport report = runProbe(request, &echoed);
+    return printProbe(request, report, echoed);
 }

@@ -9,10 +9,8 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
-#include <QTimer>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
@@ -26,9 +24,40 @@ class Record
 {
     Q_DECLARE_TR_FUNCTIONS(RecordCommand)
 };
-} // namespace
 
-int runRecordCommand(const QStringList& arguments)
+/// What the command line asks for.
+struct RecordRequest
+{
+    Pipeline pipeline;
+    MqttProfile profile;
+    QString masterUri;
+    QString runPath;
+    RunInfo info;
+    qint64 samples = 0; ///< 0: no limit
+    double seconds = 0; ///< 0: no limit
+};
+
+/// The run's name, notes and the bridge config kept with it; false after saying why.
+bool readRunInfo(const QCommandLineParser& parser, const QCommandLineOption& name,
+                 const QCommandLineOption& notes, const QCommandLineOption& config, RecordRequest* request)
+{
+    RunInfo& info = request->info;
+    info.name = parser.isSet(name) ? parser.value(name) : QFileInfo(request->runPath).completeBaseName();
+    info.notes = parser.value(notes);
+    if (!parser.isSet(config))
+        return true;
+    QFile f(parser.value(config));
+    if (!f.open(QIODevice::ReadOnly)) {
+        err(Record::tr("%1: %2").arg(parser.value(config), f.errorString()));
+        return false;
+    }
+    info.bridgeConfigPath = QFileInfo(f).absoluteFilePath();
+    info.bridgeConfig = f.readAll();
+    return true;
+}
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseRecord(const QStringList& arguments, RecordRequest* request)
 {
     QCommandLineParser parser;
     const QCommandLineOption pipeline(
@@ -62,97 +91,88 @@ int runRecordCommand(const QStringList& arguments)
         return ExitUsage;
     }
     bool ok = true;
-    const qint64 wantSamples = parser.isSet(samples) ? parser.value(samples).toLongLong(&ok) : 0;
-    if (!ok || wantSamples < 0) {
+    request->samples = parser.isSet(samples) ? parser.value(samples).toLongLong(&ok) : 0;
+    if (!ok || request->samples < 0) {
         err(Record::tr("--samples takes a number of samples"));
         return ExitUsage;
     }
-    const double wantSeconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
-    if (!ok || wantSeconds < 0) {
+    request->seconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
+    if (!ok || request->seconds < 0) {
         err(Record::tr("--seconds takes a number of seconds"));
         return ExitUsage;
     }
     QString why;
     const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);
-    if (!pipe) {
+    request->profile = MqttProfile::fromUrl(parser.value(broker));
+    if (!pipe || !request->profile.validate(&why)) {
         err(why);
         return ExitUsage;
     }
-    MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
-    if (!profile.validate(&why)) {
-        err(why);
+    request->pipeline = *pipe;
+    request->masterUri = parser.value(master);
+    request->runPath = parser.value(output);
+    if (!readRunInfo(parser, name, notes, config, request))
+        return ExitUsage;
+    if (QFileInfo::exists(request->runPath)) { // before any connection is made
+        err(Record::tr("%1 exists already; a run is never overwritten").arg(request->runPath));
         return ExitUsage;
     }
-    RunInfo info;
-    info.name = parser.isSet(name) ? parser.value(name) : QFileInfo(parser.value(output)).completeBaseName();
-    info.notes = parser.value(notes);
-    if (parser.isSet(config)) {
-        QFile f(parser.value(config));
-        if (!f.open(QIODevice::ReadOnly)) {
-            err(Record::tr("%1: %2").arg(parser.value(config), f.errorString()));
-            return ExitUsage;
-        }
-        info.bridgeConfigPath = QFileInfo(f).absoluteFilePath();
-        info.bridgeConfig = f.readAll();
-    }
+    return -1;
+}
 
-    if (QFileInfo::exists(parser.value(output))) { // before any connection is made
-        err(Record::tr("%1 exists already; a run is never overwritten").arg(parser.value(output)));
-        return ExitUsage;
-    }
-
+/// Records until enough samples, the time is up, Ctrl+C or a failed write; progress on stderr.
+int runRecord(const RecordRequest& request)
+{
     LiveSession live;
-    live.setRosMasterUri(parser.value(master));
-    live.connectBroker(profile);
+    live.setRosMasterUri(request.masterUri);
+    live.connectBroker(request.profile);
     MeasureSession measure(&live);
-    measure.setPipeline(*pipe);
-    if (!measure.startRecording(parser.value(output), info, &why)) {
+    measure.setPipeline(request.pipeline);
+    QString why;
+    if (!measure.startRecording(request.runPath, request.info, &why)) {
         err(why);
         return ExitUsage;
     }
-    int exitCode = ExitOk;
-    QElapsedTimer clock;
-    clock.start();
-    QObject::connect(&measure, &MeasureSession::recordingFailed, [&exitCode](const QString& failure) {
+    QObject::connect(&measure, &MeasureSession::recordingFailed, [](const QString& failure) {
         err(Record::tr("recording failed: %1").arg(failure));
-        exitCode = ExitFailed;
         QCoreApplication::exit(ExitFailed);
     });
-    QTimer check;
-    CliOutput::whenStopRequested(&check, [] { QCoreApplication::exit(ExitOk); });
-    qint64 lastReport = 0;
-    QObject::connect(&check, &QTimer::timeout, [&] {
-        const LatencyEngine& e = measure.engine();
-        const bool enough = wantSamples > 0 && e.samples() >= wantSamples;
-        const bool late = wantSeconds > 0 && clock.elapsed() >= qint64(wantSeconds * 1000);
-        if (enough || late) {
-            QCoreApplication::exit(ExitOk);
-            return;
-        }
-        if (clock.elapsed() - lastReport >= 1000) {
-            lastReport = clock.elapsed();
+    const LatencyEngine& e = measure.engine();
+    const int status = CliOutput::runUntil(
+        [&](qint64 elapsedMs) -> std::optional<int> {
+            const bool enough = request.samples > 0 && e.samples() >= request.samples;
+            const bool late = request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000);
+            return enough || late ? std::optional<int>(ExitOk) : std::nullopt;
+        },
+        [&](qint64 elapsedMs) {
             // Committed first: after a crash the file holds at least what this line says.
             err(Record::tr("%1 s: %2 stamps committed, %3 complete samples, %4 dropped, %5 waiting")
-                    .arg(clock.elapsed() / 1000)
+                    .arg(elapsedMs / 1000)
                     .arg(measure.recorder()->committedStamps())
                     .arg(e.samples())
                     .arg(e.counters().dropped())
                     .arg(e.pending()));
-        }
-    });
-    check.start(50);
-    QCoreApplication::exec();
-    if (exitCode != 0)
-        return exitCode;
+        });
+    if (status != ExitOk)
+        return status;
     live.drainNow(); // what arrived in the last moment
-    const qint64 complete = measure.engine().samples();
+    const qint64 complete = e.samples();
     if (!measure.stopRecording(&why)) {
         err(Record::tr("recording failed: %1").arg(why));
         return ExitFailed;
     }
     out(Record::tr("%1: %2 complete samples, %3 stamps")
-            .arg(parser.value(output))
+            .arg(request.runPath)
             .arg(complete)
             .arg(measure.recorder()->committedStamps()));
     return ExitOk;
+}
+} // namespace
+
+int runRecordCommand(const QStringList& arguments)
+{
+    RecordRequest request;
+    if (const int status = parseRecord(arguments, &request); status >= 0)
+        return status;
+    return runRecord(request);
 }

@@ -11,21 +11,62 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <unistd.h>
+#include <variant>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
 using CliOutput::ExitCancelled;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
 using CliOutput::ExitUsage;
-using CliOutput::out;
 
 namespace {
 class ReportText
 {
     Q_DECLARE_TR_FUNCTIONS(ReportCommand)
 };
-} // namespace
 
-int runReportCommand(const QStringList& arguments)
+/// What the command line asks for.
+struct ReportRequest
+{
+    QStringList inputs;
+    std::optional<Pipeline> pipeline;
+    Report::Options options;
+    ReportFormats::Format format = ReportFormats::Format::Json;
+    bool perSample = false;
+    QString output; ///< empty: stdout
+};
+
+/// The command line of `bridgescope report`.
+struct ReportArguments
+{
+    const QCommandLineOption pipeline {
+        u"pipeline"_s, ReportText::tr("Pipeline YAML (the suite's metrics-logger file; hosts: optional)."),
+        u"PIPE.yaml"_s};
+    const QCommandLineOption format {
+        u"format"_s, ReportText::tr("json (default), csv, md, tex, html or pdf."), u"FORMAT"_s, u"json"_s};
+    const QCommandLineOption window {
+        u"window"_s, ReportText::tr("Statistics over the last N samples (default 0: all)."), u"N"_s, u"0"_s};
+    const QCommandLineOption output {
+        {u"o"_s, u"output"_s}, ReportText::tr("Write to FILE instead of stdout."), u"FILE"_s};
+    const QCommandLineOption join {
+        u"join"_s, ReportText::tr("Join several inputs into one run instead of comparing them.")};
+    const QCommandLineOption perSample {
+        u"per-sample-ms"_s,
+        ReportText::tr("csv: one row per sample of stage latencies in ms, not the stamps.")};
+    const QCommandLineOption skip {
+        u"skip-bad-rows"_s,
+        ReportText::tr("Skip CSV rows that cannot be read (each is reported) instead of failing.")};
+    const QCommandLineOption title {u"title"_s, ReportText::tr("Title of the report."), u"TEXT"_s};
+
+    QList<QCommandLineOption> all() const
+    {
+        return {pipeline, format, window, output, join, perSample, skip, title};
+    }
+};
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseReport(const QStringList& arguments, ReportRequest* request)
 {
     QCommandLineParser parser;
     const QString description = ReportText::tr(
@@ -37,25 +78,8 @@ int runReportCommand(const QStringList& arguments)
         "are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join.\n"
         "Exit status: 0 report written, 1 a run has no complete sample, 2 bad options or input, 130 "
         "cancelled.");
-    const QCommandLineOption pipeline(
-        u"pipeline"_s, ReportText::tr("Pipeline YAML (the suite's metrics-logger file; hosts: optional)."),
-        u"PIPE.yaml"_s);
-    const QCommandLineOption format(u"format"_s, ReportText::tr("json (default), csv, md, tex, html or pdf."),
-                                    u"FORMAT"_s, u"json"_s);
-    const QCommandLineOption window(
-        u"window"_s, ReportText::tr("Statistics over the last N samples (default 0: all)."), u"N"_s, u"0"_s);
-    const QCommandLineOption output({u"o"_s, u"output"_s}, ReportText::tr("Write to FILE instead of stdout."),
-                                    u"FILE"_s);
-    const QCommandLineOption join(
-        u"join"_s, ReportText::tr("Join several inputs into one run instead of comparing them."));
-    const QCommandLineOption perSample(
-        u"per-sample-ms"_s,
-        ReportText::tr("csv: one row per sample of stage latencies in ms, not the stamps."));
-    const QCommandLineOption skip(
-        u"skip-bad-rows"_s,
-        ReportText::tr("Skip CSV rows that cannot be read (each is reported) instead of failing."));
-    const QCommandLineOption title(u"title"_s, ReportText::tr("Title of the report."), u"TEXT"_s);
-    parser.addOptions({pipeline, format, window, output, join, perSample, skip, title});
+    const ReportArguments a;
+    parser.addOptions(a.all());
     parser.addPositionalArgument(u"INPUT"_s, ReportText::tr("Runs, suite timestamp CSV files or bags."),
                                  u"INPUT..."_s);
     QStringList args = arguments;
@@ -63,38 +87,42 @@ int runReportCommand(const QStringList& arguments)
     const int parsed = CliOutput::parseCommand(parser, args, description);
     if (parsed >= 0)
         return parsed;
-    ReportFormats::Format fmt;
-    if (!ReportFormats::parse(parser.value(format), &fmt)) {
+    if (!ReportFormats::parse(parser.value(a.format), &request->format)) {
         err(ReportText::tr("unknown format %1 (known: json, csv, md, tex, html, pdf)")
-                .arg(parser.value(format)));
+                .arg(parser.value(a.format)));
         return ExitUsage;
     }
     bool ok = false;
-    Report::Options options;
-    options.window = parser.value(window).toLongLong(&ok);
+    Report::Options& options = request->options;
+    options.window = parser.value(a.window).toLongLong(&ok);
     if (!ok || options.window < 0) {
         err(ReportText::tr("--window takes a number of samples (0: all)"));
         return ExitUsage;
     }
-    options.join = parser.isSet(join);
-    options.skipBadRows = parser.isSet(skip);
-    options.title = parser.value(title);
-    const QStringList inputs = parser.positionalArguments();
-    if (inputs.isEmpty()) {
+    options.join = parser.isSet(a.join);
+    options.skipBadRows = parser.isSet(a.skip);
+    options.title = parser.value(a.title);
+    request->perSample = parser.isSet(a.perSample);
+    request->output = parser.value(a.output);
+    request->inputs = parser.positionalArguments();
+    if (request->inputs.isEmpty()) {
         err(ReportText::tr("no input files; see bridgescope report --help"));
         return ExitUsage;
     }
-    std::optional<Pipeline> pipe;
-    QString why;
-    if (parser.isSet(pipeline)) {
-        pipe = Pipeline::load(parser.value(pipeline), &why);
-        if (!pipe) {
+    if (parser.isSet(a.pipeline)) {
+        QString why;
+        request->pipeline = Pipeline::load(parser.value(a.pipeline), &why);
+        if (!request->pipeline) {
             err(why);
             return ExitUsage;
         }
     }
+    return -1;
+}
 
-    // Progress on a terminal; Ctrl+C cancels, and nothing is written then.
+/// Reads the inputs, with progress on a terminal; Ctrl+C cancels. The report, or the exit status.
+std::variant<Report, int> buildReport(const ReportRequest& request)
+{
     CliOutput::catchStopSignals();
     const bool tty = ::isatty(STDERR_FILENO);
     QElapsedTimer clock;
@@ -108,8 +136,10 @@ int runReportCommand(const QStringList& arguments)
         }
         return !CliOutput::stopRequested();
     };
+    QString why;
     QStringList warnings;
-    std::optional<Report> report = Report::build(inputs, pipe, options, &why, &warnings, progress);
+    std::optional<Report> report
+        = Report::build(request.inputs, request.pipeline, request.options, &why, &warnings, progress);
     if (tty && shown >= 0)
         std::fprintf(stderr, "\r\033[K");
     if (CliOutput::stopRequested()) {
@@ -122,8 +152,14 @@ int runReportCommand(const QStringList& arguments)
     }
     for (const QString& w : std::as_const(warnings))
         err(ReportText::tr("%1 (row skipped)").arg(w));
+    return std::move(*report);
+}
 
-    const QByteArray text = ReportFormats::render(*report, fmt, parser.isSet(perSample), &why);
+/// Renders the report and writes it to the file or stdout; nothing is written when cancelled.
+int writeReport(const ReportRequest& request, const Report& report)
+{
+    QString why;
+    const QByteArray text = ReportFormats::render(report, request.format, request.perSample, &why);
     if (text.isEmpty() && !why.isEmpty()) {
         err(why);
         return ExitUsage;
@@ -132,23 +168,30 @@ int runReportCommand(const QStringList& arguments)
         err(ReportText::tr("cancelled; nothing written"));
         return ExitCancelled;
     }
-    if (parser.isSet(output)) {
-        if (!AtomicFile::write(parser.value(output), text, &why, false)) {
-            err(why);
-            return ExitUsage;
-        }
-    } else if (fmt == ReportFormats::Format::Pdf) {
-        std::fwrite(text.constData(), 1, std::size_t(text.size()), stdout);
-    } else {
-        std::fwrite(text.constData(), 1, std::size_t(text.size()), stdout);
-        std::fflush(stdout);
+    if (request.output.isEmpty()) {
+        CliOutput::writeStdout(text); // a failed write is reported by finish() below
+    } else if (!AtomicFile::write(request.output, text, &why, false)) {
+        err(why);
+        return ExitUsage;
     }
-    int status = 0;
-    for (const auto& run : report->runs()) {
+    int status = ExitOk;
+    for (const auto& run : report.runs()) {
         if (run->engine->samples() == 0) {
             err(ReportText::tr("%1: no complete sample").arg(run->path));
-            status = 1;
+            status = ExitFailed;
         }
     }
-    return status;
+    return CliOutput::finish(status);
+}
+} // namespace
+
+int runReportCommand(const QStringList& arguments)
+{
+    ReportRequest request;
+    if (const int status = parseReport(arguments, &request); status >= 0)
+        return status;
+    std::variant<Report, int> built = buildReport(request);
+    if (const int* status = std::get_if<int>(&built))
+        return *status;
+    return writeReport(request, std::get<Report>(built));
 }

@@ -6,11 +6,13 @@
 #include "demo/demolab.h"
 #include "latency/latencystatsmodel.h"
 #include "latency/seriesid.h"
+#include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
 
+#include <optional>
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>
@@ -76,11 +78,24 @@ QString bridgescopeUsage()
     return text + u'\n' + Gui::tr("Run 'bridgescope <command> --help' for the options of a command.");
 }
 
-int runGui(int& argc, char** argv)
+namespace {
+/// What the window's command line asks for.
+struct GuiRequest
 {
-    QApplication app(argc, argv);
-    QApplication::setWindowIcon(QIcon(u":/icons/bridgescope.svg"_s));
-    installTranslations(app);
+    QString screenshot; ///< empty: none
+    double screenshotAfter = 1;
+    QString brokerUrl; ///< as given, credentials included
+    std::optional<MqttProfile> broker;
+    QString masterUri; ///< empty: $ROS_MASTER_URI
+    QString pipeline;
+    int page = -1;
+    bool demo = false;
+    QStringList files;
+};
+
+/// Parses and checks the command line before anything starts. -1 to go on, otherwise the exit status.
+int parseGui(const QStringList& arguments, GuiRequest* request)
+{
     QCommandLineParser parser;
     const QCommandLineOption screenshot(u"screenshot"_s, Gui::tr("Render the main window to PNG and exit."),
                                         u"PNG"_s);
@@ -98,19 +113,119 @@ int runGui(int& argc, char** argv)
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
-    if (!parser.parse(app.arguments())) {
+    if (!parser.parse(arguments)) {
         CliOutput::err(parser.errorText());
         CliOutput::err(bridgescopeUsage());
         return ExitUsage;
     }
+    request->screenshot = parser.value(screenshot);
+    bool ok = false;
+    request->screenshotAfter = parser.value(after).toDouble(&ok);
+    if (!ok || request->screenshotAfter < 0) {
+        CliOutput::err(Gui::tr("--after takes a number of seconds"));
+        return ExitUsage;
+    }
+    if (parser.isSet(broker)) {
+        request->brokerUrl = parser.value(broker);
+        request->broker = MqttProfile::fromUrl(request->brokerUrl);
+        QString error;
+        if (!request->broker->validate(&error)) {
+            CliOutput::err(error);
+            return ExitUsage;
+        }
+    }
+    if (parser.isSet(page)) {
+        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s};
+        request->page = int(names.indexOf(parser.value(page).toLower()));
+        if (request->page < 0) {
+            CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
+            return ExitUsage;
+        }
+    }
+    request->masterUri = parser.value(master);
+    request->pipeline = parser.value(pipeline);
+    request->demo = parser.isSet(demo);
+    request->files = parser.positionalArguments();
+    return -1;
+}
+
+/// Shows the running demo lab: its servers, its vehicle config, the Measure page with the paper's
+/// Fig. 5 series; says so when the lab stops, and quits on Ctrl+C so that the lab cleans up.
+void showDemo(MainWindow& window, const DemoLab& lab)
+{
+    window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
+    window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
+    window.files()->openFile(lab.vehicleConfigPath());
+    QString error;
+    if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
+        CliOutput::err(error);
+    window.pages()->setCurrentWidget(window.measurePage());
+    // The paper's Fig. 5 view: detection, one-way communication and the total.
+    window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);
+    window.measure()->statsModel()->setChecked(SeriesId::ofKind(SeriesKind::OneWay).toString(), true);
+    window.setWindowTitle(Gui::tr("Bridgescope — demo lab"));
+    auto* watch = new QTimer(&window);
+    QObject::connect(watch, &QTimer::timeout, &window, [&window, &lab, watch] {
+        if (lab.isRunning())
+            return;
+        watch->stop();
+        window.statusBar()->showMessage(Gui::tr("The demo lab stopped: %1").arg(lab.failure()));
+    });
+    watch->start(2000);
+    // Ctrl+C or SIGTERM close the window properly, so that the lab stops and cleans up.
+    CliOutput::whenStopRequested(&window, [] { QCoreApplication::quit(); });
+}
+
+/// Applies the servers, file, pipeline and page asked for; false after saying why not.
+bool applyRequest(MainWindow& window, const GuiRequest& request)
+{
+    if (!request.masterUri.isEmpty())
+        window.discoverPage()->setRosMasterUri(request.masterUri);
+    if (request.broker)
+        window.discoverPage()->connectBroker(*request.broker);
+    if (!request.files.isEmpty())
+        window.files()->openFile(request.files.first());
+    if (!request.pipeline.isEmpty()) {
+        QString error;
+        if (!window.measurePage()->loadPipeline(request.pipeline, &error)) {
+            CliOutput::err(error);
+            return false;
+        }
+        window.pages()->setCurrentWidget(window.measurePage());
+    }
+    if (request.page >= 0)
+        window.pages()->setCurrentIndex(request.page);
+    return true;
+}
+
+/// Saves the window as PNG after `seconds` and ends the program (1 when the file was not written).
+void scheduleScreenshot(MainWindow& window, const QString& png, double seconds)
+{
+    QTimer::singleShot(int(seconds * 1000), &window, [&window, png] {
+        const bool saved = window.grab().save(png);
+        if (!saved)
+            CliOutput::err(Gui::tr("Cannot write the screenshot %1").arg(png));
+        QCoreApplication::exit(saved ? 0 : 1);
+    });
+}
+} // namespace
+
+int runGui(int& argc, char** argv)
+{
+    QApplication app(argc, argv);
+    QApplication::setWindowIcon(QIcon(u":/icons/bridgescope.svg"_s));
+    installTranslations(app);
+    GuiRequest request;
+    if (const int status = parseGui(app.arguments(), &request); status >= 0)
+        return status;
     // The demo lab outlives the window: its servers go last.
     std::unique_ptr<DemoLab> lab;
-    if (parser.isSet(demo)) {
+    if (request.demo) {
         lab = std::make_unique<DemoLab>();
         CliOutput::err(Gui::tr("starting the demo lab…"));
         DemoLab::Options options;
-        options.brokerUrl = parser.value(broker); // given servers are used instead of private ones
-        options.rosMasterUri = parser.value(master);
+        options.brokerUrl = request.brokerUrl; // given servers are used instead of private ones
+        options.rosMasterUri = request.masterUri;
         QString error;
         if (!lab->start(options, &error)) {
             CliOutput::err(Gui::tr("the demo lab did not start: %1").arg(error));
@@ -118,75 +233,12 @@ int runGui(int& argc, char** argv)
         }
     }
     MainWindow window;
-    if (lab) {
-        window.discoverPage()->setRosMasterUri(lab->rosMasterUri());
-        window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab->brokerUrl()));
-        window.files()->openFile(lab->vehicleConfigPath());
-        QString error;
-        if (!window.measurePage()->loadPipeline(lab->pipelinePath(), &error))
-            CliOutput::err(error);
-        window.pages()->setCurrentWidget(window.measurePage());
-        // The paper's Fig. 5 view: detection, one-way communication and the total.
-        window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);
-        window.measure()->statsModel()->setChecked(SeriesId::ofKind(SeriesKind::OneWay).toString(), true);
-        window.setWindowTitle(Gui::tr("Bridgescope — demo lab"));
-        auto* watch = new QTimer(&window);
-        QObject::connect(watch, &QTimer::timeout, &window, [&window, &lab, watch] {
-            if (lab->isRunning())
-                return;
-            watch->stop();
-            window.statusBar()->showMessage(Gui::tr("The demo lab stopped: %1").arg(lab->failure()));
-        });
-        watch->start(2000);
-        // Ctrl+C or SIGTERM close the window properly, so that the lab stops and cleans up.
-        CliOutput::whenStopRequested(&window, [] { QCoreApplication::quit(); });
-    }
-    if (parser.isSet(master))
-        window.discoverPage()->setRosMasterUri(parser.value(master));
-    if (parser.isSet(broker)) {
-        MqttProfile profile = MqttProfile::fromUrl(parser.value(broker));
-        QString error;
-        if (!profile.validate(&error)) {
-            CliOutput::err(error);
-            return ExitUsage;
-        }
-        window.discoverPage()->connectBroker(profile);
-    }
-    const QStringList files = parser.positionalArguments();
-    if (!files.isEmpty())
-        window.files()->openFile(files.first());
-    if (parser.isSet(pipeline)) {
-        QString error;
-        if (!window.measurePage()->loadPipeline(parser.value(pipeline), &error)) {
-            CliOutput::err(error);
-            return ExitUsage;
-        }
-        window.pages()->setCurrentWidget(window.measurePage());
-    }
-    if (parser.isSet(page)) {
-        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s};
-        const int index = int(names.indexOf(parser.value(page).toLower()));
-        if (index < 0) {
-            CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
-            return ExitUsage;
-        }
-        window.pages()->setCurrentIndex(index);
-    }
+    if (lab)
+        showDemo(window, *lab);
+    if (!applyRequest(window, request))
+        return ExitUsage;
     window.show();
-    if (parser.isSet(screenshot)) {
-        const QString png = parser.value(screenshot);
-        bool ok = false;
-        const double seconds = parser.value(after).toDouble(&ok);
-        if (!ok || seconds < 0) {
-            CliOutput::err(Gui::tr("--after takes a number of seconds"));
-            return ExitUsage;
-        }
-        QTimer::singleShot(int(seconds * 1000), &window, [&window, png] {
-            const bool saved = window.grab().save(png);
-            if (!saved)
-                CliOutput::err(Gui::tr("Cannot write the screenshot %1").arg(png));
-            QCoreApplication::exit(saved ? 0 : 1);
-        });
-    }
+    if (!request.screenshot.isEmpty())
+        scheduleScreenshot(window, request.screenshot, request.screenshotAfter);
     return app.exec();
 }

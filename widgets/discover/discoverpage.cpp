@@ -46,9 +46,33 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     , m_session(session)
     , m_passwords(new PasswordStore(this))
 {
-    // Connection bar: where the ROS master and the broker are, and how they are doing.
+    QLayout* bar = createConnectionBar();
+    QWidget* rosBox = createRosPane();
+    QWidget* mqttBox = createMqttPane();
+    m_detail = new DetailPane(session, this);
+
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(rosBox);
+    split->addWidget(mqttBox);
+    split->addWidget(m_detail);
+    split->setSizes({470, 430, 380});
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(4, 4, 4, 0);
+    v->addLayout(bar);
+    v->addWidget(split, 1);
+
+    connectSelection();
+    connectSession();
+    reloadProfiles(QSettings().value(QLatin1String(kLastProfile)).toString());
+    updateRosStatus();
+    updateMqttStatus();
+}
+
+/// Where the ROS master and the broker are, and how they are doing.
+QLayout* DiscoverPage::createConnectionBar()
+{
     auto* bar = new QGridLayout;
-    m_masterUri = new QLineEdit(session->rosMasterUri(), this);
+    m_masterUri = new QLineEdit(m_session->rosMasterUri(), this);
     m_masterUri->setObjectName(u"masterUri"_s);
     m_masterUri->setToolTip(tr("ROS master URI; Enter applies it"));
     m_rosState = new QLabel(this);
@@ -58,6 +82,9 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     bar->addWidget(masterLabel, 0, 0);
     bar->addWidget(m_masterUri, 0, 1);
     bar->addWidget(m_rosState, 0, 2, 1, 3);
+    connect(m_masterUri, &QLineEdit::returnPressed, this,
+            [this] { setRosMasterUri(m_masterUri->text().trimmed()); });
+
     m_profileBox = new QComboBox(this);
     m_profileBox->setObjectName(u"profiles"_s);
     m_profileBox->setMinimumContentsLength(24);
@@ -70,6 +97,9 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     add->setText(tr("New…"));
     m_connect = new QPushButton(tr("&Connect"), this);
     m_connect->setObjectName(u"connectButton"_s);
+    connect(edit, &QToolButton::clicked, this, [this] { editProfile(false); });
+    connect(add, &QToolButton::clicked, this, [this] { editProfile(true); });
+    connect(m_connect, &QPushButton::clicked, this, &DiscoverPage::toggleConnection);
     m_mqttState = new QLabel(this);
     m_mqttState->setObjectName(u"mqttState"_s);
     m_mqttState->setWordWrap(true);
@@ -85,9 +115,12 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     m_counters->setObjectName(u"counters"_s);
     bar->addWidget(m_counters, 1, 4);
     bar->setColumnStretch(3, 1);
+    return bar;
+}
 
-    // ROS topics.
-    auto* rosBox = new RosTopicView(session->rosTopics(), tr("Filter ROS topics or types…"), this);
+QWidget* DiscoverPage::createRosPane()
+{
+    auto* rosBox = new RosTopicView(m_session->rosTopics(), tr("Filter ROS topics or types…"), this);
     m_rosFilter = rosBox->filterEdit();
     m_rosFilter->setObjectName(u"rosFilter"_s);
     m_rosProxy = rosBox->proxy();
@@ -99,8 +132,11 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     rosHeader->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Interactive);
     rosHeader->setSectionResizeMode(RosTopicModel::TypeColumn, QHeaderView::Interactive);
     m_rosView->setColumnWidth(RosTopicModel::TopicColumn, 150);
+    return rosBox;
+}
 
-    // MQTT topics.
+QWidget* DiscoverPage::createMqttPane()
+{
     auto* mqttBox = new QWidget(this);
     auto* mv = new QVBoxLayout(mqttBox);
     mv->setContentsMargins(0, 0, 0, 0);
@@ -114,7 +150,9 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     filterRow->addWidget(m_searchPayloads);
     mv->addLayout(filterRow);
     m_mqttProxy = new MqttTopicFilter(this);
-    m_mqttProxy->setSourceModel(session->mqttTopics());
+    m_mqttProxy->setSourceModel(m_session->mqttTopics());
+    connect(m_mqttFilter, &QLineEdit::textChanged, m_mqttProxy, &MqttTopicFilter::setText);
+    connect(m_searchPayloads, &QCheckBox::toggled, m_mqttProxy, &MqttTopicFilter::setSearchPayloads);
     m_mqttView = new QTreeView(mqttBox);
     m_mqttView->setObjectName(u"mqttTopics"_s);
     m_mqttView->setModel(m_mqttProxy);
@@ -133,30 +171,12 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
                 for (int r = first; r <= last; ++r)
                     m_mqttView->expand(m_mqttProxy->index(r, 0));
             });
+    return mqttBox;
+}
 
-    m_detail = new DetailPane(session, this);
-
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(rosBox);
-    split->addWidget(mqttBox);
-    split->addWidget(m_detail);
-    split->setSizes({470, 430, 380});
-    auto* v = new QVBoxLayout(this);
-    v->setContentsMargins(4, 4, 4, 0);
-    v->addLayout(bar);
-    v->addWidget(split, 1);
-
-    // Wiring.
-    connect(m_masterUri, &QLineEdit::returnPressed, this,
-            [this] { setRosMasterUri(m_masterUri->text().trimmed()); });
-    connect(session->rosGraph(), &RosGraphPoller::reachabilityChanged, this, &DiscoverPage::updateRosStatus);
-    connect(session->rosGraph(), &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
-    connect(session->mqtt(), &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
-    connect(m_mqttFilter, &QLineEdit::textChanged, m_mqttProxy, &MqttTopicFilter::setText);
-    connect(m_searchPayloads, &QCheckBox::toggled, m_mqttProxy, &MqttTopicFilter::setSearchPayloads);
-    connect(edit, &QToolButton::clicked, this, [this] { editProfile(false); });
-    connect(add, &QToolButton::clicked, this, [this] { editProfile(true); });
-    connect(m_connect, &QPushButton::clicked, this, &DiscoverPage::toggleConnection);
+/// The detail pane shows the topic selected on either side.
+void DiscoverPage::connectSelection()
+{
     connect(m_rosView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
                 if (i.isValid())
@@ -167,6 +187,14 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
                 if (i.isValid())
                     m_detail->showMqttTopic(i.data(MqttTopicTree::FullTopicRole).toString());
             });
+}
+
+void DiscoverPage::connectSession()
+{
+    connect(m_session->rosGraph(), &RosGraphPoller::reachabilityChanged, this,
+            &DiscoverPage::updateRosStatus);
+    connect(m_session->rosGraph(), &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
+    connect(m_session->mqtt(), &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
     // The detail pane follows its topic a few times a second, not at the drain rate.
     auto* refresh = new QTimer(this);
     connect(refresh, &QTimer::timeout, m_detail, &DetailPane::refresh);
@@ -176,10 +204,6 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
         if (!ok)
             m_mqttState->setToolTip(tr("The password was not kept: %1").arg(error));
     });
-
-    reloadProfiles(QSettings().value(QLatin1String(kLastProfile)).toString());
-    updateRosStatus();
-    updateMqttStatus();
 }
 
 void DiscoverPage::reloadProfiles(const QString& select)

@@ -12,6 +12,7 @@ class PasswordStore;
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QLayout;
 class QLineEdit;
 class QPushButton;
 class QSortFilterProxyModel;
@@ -41,6 +42,11 @@ public:
     QLabel* rosStatus() const { return m_rosState; }
 
 private:
+    QLayout* createConnectionBar();
+    QWidget* createRosPane();
+    QWidget* createMqttPane();
+    void connectSelection();
+    void connectSession();
     void updateRosStatus();
     void updateMqttStatus();
     void reloadProfiles(const QString& select);

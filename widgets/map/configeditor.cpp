@@ -45,7 +45,42 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     m_icons->setSourceModel(m_model);
     m_icons->setHealthColumn(MappingModel::HealthColumn, MappingModel::HealthStateRole);
     m_filter->setSourceModel(m_icons);
+    createActions();
 
+    auto* top = new QSplitter(Qt::Horizontal, this);
+    m_split = top;
+    top->addWidget(createMappingPane());
+    top->addWidget(createInspectorTabs());
+    top->setStretchFactor(0, 3);
+    top->setStretchFactor(1, 2);
+    top->setSizes({780, 480});
+    m_problems = new ProblemsPanel(document, this);
+    auto* outer = new QSplitter(Qt::Vertical, this);
+    outer->addWidget(top);
+    outer->addWidget(m_problems);
+    outer->setStretchFactor(0, 4);
+    outer->setStretchFactor(1, 1);
+    outer->setSizes({600, 140});
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(outer);
+
+    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+        m_inspector->setMappings(selectedIds());
+        updateActions();
+    });
+    // A freshly opened file shows its first mapping, so the inspector is never empty for nothing.
+    connect(m_doc, &ConfigDocument::resetDone, this, [this] {
+        if (m_doc->mappingCount() > 0)
+            selectMappings({m_doc->mapping(0).id});
+    });
+    connect(m_problems, &ProblemsPanel::mappingProblemActivated, this, &ConfigEditor::showMappingProblem);
+    connect(m_problems, &ProblemsPanel::settingsProblemActivated, this, &ConfigEditor::showSettingsProblem);
+    updateActions();
+}
+
+void ConfigEditor::createActions()
+{
     m_addOut = new QAction(tr("Add ROS → MQTT Mapping"), this);
     m_addOut->setShortcut(QKeySequence(Qt::Key_Insert));
     m_addOut->setToolTip(tr("Bridge a ROS topic to MQTT (Insert)"));
@@ -64,33 +99,47 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     connect(m_addIn, &QAction::triggered, this, [this] { addMapping(Direction::Mqtt2Ros); });
     connect(m_delete, &QAction::triggered, this, &ConfigEditor::deleteSelected);
     connect(m_duplicate, &QAction::triggered, this, &ConfigEditor::duplicateSelected);
+}
 
-    // Left: filter bar and table.
-    auto* left = new QWidget(this);
-    auto* lv = new QVBoxLayout(left);
+/// The filter bar with the add and delete buttons, above the mapping table.
+QWidget* ConfigEditor::createMappingPane()
+{
+    auto* pane = new QWidget(this);
+    auto* lv = new QVBoxLayout(pane);
     lv->setContentsMargins(0, 0, 0, 0);
     auto* bar = new QHBoxLayout;
-    m_filterEdit = new QLineEdit(left);
+    m_filterEdit = new QLineEdit(pane);
     m_filterEdit->setObjectName(u"mappingFilter"_s);
     m_filterEdit->setPlaceholderText(tr("Filter mappings (topic or option)…"));
     m_filterEdit->setClearButtonEnabled(true);
     m_filterEdit->setMinimumWidth(150);
-    m_directionFilter = new QComboBox(left);
+    m_directionFilter = new QComboBox(pane);
     m_directionFilter->addItem(tr("Both directions"), int(MappingFilterProxy::AllDirections));
     m_directionFilter->addItem(MappingModel::directionText(Direction::Ros2Mqtt), int(Direction::Ros2Mqtt));
     m_directionFilter->addItem(MappingModel::directionText(Direction::Mqtt2Ros), int(Direction::Mqtt2Ros));
-    m_onlyProblems = new QCheckBox(tr("With problems"), left);
+    m_onlyProblems = new QCheckBox(tr("With problems"), pane);
+    connect(m_filterEdit, &QLineEdit::textChanged, m_filter, &MappingFilterProxy::setText);
+    connect(m_directionFilter, &QComboBox::currentIndexChanged, this,
+            [this] { m_filter->setDirection(m_directionFilter->currentData().toInt()); });
+    connect(m_onlyProblems, &QCheckBox::toggled, m_filter, &MappingFilterProxy::setOnlyProblems);
     bar->addWidget(m_filterEdit, 1);
     bar->addWidget(m_directionFilter);
     bar->addWidget(m_onlyProblems);
     for (QAction* a : {m_addOut, m_addIn, m_delete}) {
-        auto* b = new QToolButton(left);
+        auto* b = new QToolButton(pane);
         b->setDefaultAction(a);
         b->setToolButtonStyle(Qt::ToolButtonTextOnly);
         bar->addWidget(b);
     }
     lv->addLayout(bar);
-    m_table = new QTableView(left);
+    m_table = new QTableView(pane);
+    setUpTable();
+    lv->addWidget(m_table, 1);
+    return pane;
+}
+
+void ConfigEditor::setUpTable()
+{
     m_table->setObjectName(u"mappingTable"_s);
     m_table->setModel(m_filter);
     // Long topic names differ at their ends: elide the middle, one line per mapping.
@@ -112,52 +161,20 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     m_table->addAction(m_delete);
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
     m_table->addAction(m_duplicate);
-    lv->addWidget(m_table, 1);
+}
 
-    // Right: inspectors and preview.
+/// The mapping and settings inspectors and the YAML preview.
+QWidget* ConfigEditor::createInspectorTabs()
+{
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(u"inspectorTabs"_s);
-    m_inspector = new MappingInspector(document, undoStack, m_tabs);
-    m_settings = new SettingsInspector(document, undoStack, m_tabs);
-    m_preview = new YamlPreview(document, m_tabs);
+    m_inspector = new MappingInspector(m_doc, m_undo, m_tabs);
+    m_settings = new SettingsInspector(m_doc, m_undo, m_tabs);
+    m_preview = new YamlPreview(m_doc, m_tabs);
     m_tabs->addTab(m_inspector, tr("&Mapping"));
     m_tabs->addTab(m_settings, tr("&Broker && client"));
     m_tabs->addTab(m_preview, tr("&YAML"));
-
-    auto* top = new QSplitter(Qt::Horizontal, this);
-    m_split = top;
-    top->addWidget(left);
-    top->addWidget(m_tabs);
-    top->setStretchFactor(0, 3);
-    top->setStretchFactor(1, 2);
-    top->setSizes({780, 480});
-    m_problems = new ProblemsPanel(document, this);
-    auto* outer = new QSplitter(Qt::Vertical, this);
-    outer->addWidget(top);
-    outer->addWidget(m_problems);
-    outer->setStretchFactor(0, 4);
-    outer->setStretchFactor(1, 1);
-    outer->setSizes({600, 140});
-    auto* v = new QVBoxLayout(this);
-    v->setContentsMargins(0, 0, 0, 0);
-    v->addWidget(outer);
-
-    connect(m_filterEdit, &QLineEdit::textChanged, m_filter, &MappingFilterProxy::setText);
-    connect(m_directionFilter, &QComboBox::currentIndexChanged, this,
-            [this] { m_filter->setDirection(m_directionFilter->currentData().toInt()); });
-    connect(m_onlyProblems, &QCheckBox::toggled, m_filter, &MappingFilterProxy::setOnlyProblems);
-    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
-        m_inspector->setMappings(selectedIds());
-        updateActions();
-    });
-    // A freshly opened file shows its first mapping, so the inspector is never empty for nothing.
-    connect(m_doc, &ConfigDocument::resetDone, this, [this] {
-        if (m_doc->mappingCount() > 0)
-            selectMappings({m_doc->mapping(0).id});
-    });
-    connect(m_problems, &ProblemsPanel::mappingProblemActivated, this, &ConfigEditor::showMappingProblem);
-    connect(m_problems, &ProblemsPanel::settingsProblemActivated, this, &ConfigEditor::showSettingsProblem);
-    updateActions();
+    return m_tabs;
 }
 
 void ConfigEditor::setInspectorWidth(int width)

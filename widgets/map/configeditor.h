@@ -53,6 +53,10 @@ public:
     void duplicateSelected();
 
 private:
+    void createActions();
+    QWidget* createMappingPane();
+    void setUpTable();
+    QWidget* createInspectorTabs();
     void showSettingsProblem(OptionScope scope, const QString& field);
     void showMappingProblem(quint64 id, const QString& field);
     void updateActions();

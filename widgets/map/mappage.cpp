@@ -44,7 +44,36 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     , m_editor(new ConfigEditor(document, undoStack, this))
     , m_healthTimer(new QTimer(this))
 {
-    // Bar: keyboard bridging and the prefix new MQTT topics get.
+    QLayout* bar = createBar();
+    auto* topics = new QSplitter(Qt::Vertical, this);
+    topics->addWidget(createRosPane());
+    topics->addWidget(createMqttPane());
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(topics);
+    split->addWidget(m_editor);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 3);
+    split->setSizes({330, 950});
+    m_editor->setInspectorWidth(360);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(4, 4, 4, 0);
+    v->addLayout(bar);
+    v->addWidget(split, 1);
+
+    setUpDrops();
+    connect(document, &ConfigDocument::resetDone, this, [this] {
+        m_prefix->setText(m_doc->config().client.values.text(u"id"_s));
+        updateBridgedTopics();
+        updateHealth();
+    });
+    connect(document, &ConfigDocument::problemsChanged, this, &MapPage::updateBridgedTopics);
+    connect(m_healthTimer, &QTimer::timeout, this, &MapPage::updateHealth);
+    m_healthTimer->start(1000);
+}
+
+/// Keyboard bridging and the prefix new MQTT topics get.
+QLayout* MapPage::createBar()
+{
     m_toMqtt = new QAction(tr("Bridge Selected ROS Topics to MQTT"), this);
     m_toMqtt->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     m_toMqtt->setIconText(tr("ROS → MQTT"));
@@ -87,10 +116,14 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     m_hint->setStyleSheet(u"color: palette(mid)"_s);
     bar->addSpacing(12);
     bar->addWidget(m_hint, 1);
+    return bar;
+}
 
-    // Discovered topics: ROS above, MQTT below.
+/// Discovered ROS topics, the bridged ones marked.
+QWidget* MapPage::createRosPane()
+{
     m_rosBridged = new BridgedTopicsProxy(RosTopicModel::TopicRole, this);
-    m_rosBridged->setSourceModel(session->rosTopics());
+    m_rosBridged->setSourceModel(m_session->rosTopics());
     auto* rosBox = new RosTopicView(m_rosBridged, tr("Filter ROS topics…"), this);
     rosBox->showOnly(
         {RosTopicModel::TopicColumn, RosTopicModel::TypeColumn, RosTopicModel::PublishersColumn});
@@ -99,9 +132,14 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     m_rosView->setObjectName(u"mapRosTopics"_s);
     ViewSetup::dragsCopies(m_rosView);
     m_rosView->horizontalHeader()->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Stretch);
+    return rosBox;
+}
 
+/// Discovered MQTT topics, the bridged ones marked.
+QWidget* MapPage::createMqttPane()
+{
     m_mqttBridged = new BridgedTopicsProxy(MqttTopicTree::FullTopicRole, this);
-    m_mqttBridged->setSourceModel(session->mqttTopics());
+    m_mqttBridged->setSourceModel(m_session->mqttTopics());
     m_mqttFilter = new MqttTopicFilter(this);
     m_mqttFilter->setSourceModel(m_mqttBridged);
     auto* mqttBox = new QWidget(this);
@@ -123,23 +161,12 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 200);
     mv->addWidget(m_mqttView, 1);
     connect(mqttFilterEdit, &QLineEdit::textChanged, m_mqttFilter, &MqttTopicFilter::setText);
+    return mqttBox;
+}
 
-    auto* topics = new QSplitter(Qt::Vertical, this);
-    topics->addWidget(rosBox);
-    topics->addWidget(mqttBox);
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(topics);
-    split->addWidget(m_editor);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 3);
-    split->setSizes({330, 950});
-    m_editor->setInspectorWidth(360);
-    auto* v = new QVBoxLayout(this);
-    v->setContentsMargins(4, 4, 4, 0);
-    v->addLayout(bar);
-    v->addWidget(split, 1);
-
-    // The mapping table takes drops too.
+/// Topics dropped on the mapping table, on the ROS table or on the MQTT tree become mappings.
+void MapPage::setUpDrops()
+{
     QTableView* table = m_editor->table();
     table->setAcceptDrops(true);
     table->setDragDropMode(QAbstractItemView::DropOnly);
@@ -147,21 +174,12 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     table->setDragDropOverwriteMode(true);
     m_editor->model()->setDropHandler(
         [this](const QMimeData* data, int row) { return dropOnMappings(data, row); });
-    session->rosTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+    m_session->rosTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
     });
-    session->mqttTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+    m_session->mqttTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeRosTopics(TopicMime::decode(data, TopicMime::rosType()), target).isEmpty();
     });
-
-    connect(document, &ConfigDocument::resetDone, this, [this] {
-        m_prefix->setText(m_doc->config().client.values.text(u"id"_s));
-        updateBridgedTopics();
-        updateHealth();
-    });
-    connect(document, &ConfigDocument::problemsChanged, this, &MapPage::updateBridgedTopics);
-    connect(m_healthTimer, &QTimer::timeout, this, &MapPage::updateHealth);
-    m_healthTimer->start(1000);
 }
 
 namespace {

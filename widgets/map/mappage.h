@@ -13,6 +13,7 @@ class LiveSession;
 class MqttTopicFilter;
 class QAction;
 class QLabel;
+class QLayout;
 class QLineEdit;
 class QMimeData;
 class QSortFilterProxyModel;
@@ -55,6 +56,10 @@ private:
         QList<Mapping> before;
         QList<Mapping> after;
     };
+    QLayout* createBar();
+    QWidget* createRosPane();
+    QWidget* createMqttPane();
+    void setUpDrops();
     QList<quint64> apply(const Plan& plan, const QString& description);
     static void plan(Plan& p, const BridgeConfig& config, const Mapping& proposed);
     bool dropOnMappings(const QMimeData* data, int row);

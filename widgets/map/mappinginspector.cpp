@@ -31,11 +31,31 @@ MappingInspector::MappingInspector(ConfigDocument* document, QUndoStack* undoSta
     empty->setAlignment(Qt::AlignCenter);
     empty->setWordWrap(true);
     m_pages->addWidget(empty);
-
     auto* scroll = new QScrollArea(m_pages);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    auto* page = new QWidget(scroll);
+    scroll->setWidget(createEditPage(scroll));
+    m_pages->addWidget(scroll);
+
+    connect(m_direction, &QComboBox::activated, this, &MappingInspector::setDirection);
+    connect(m_rosTopic, &QLineEdit::editingFinished, this,
+            [this] { commitTopic(u"ros_topic"_s, m_rosTopic); });
+    connect(m_mqttTopic, &QLineEdit::editingFinished, this,
+            [this] { commitTopic(u"mqtt_topic"_s, m_mqttTopic); });
+    for (OptionForm* form : {m_outForm, m_inForm}) {
+        connect(form, &OptionForm::optionEdited, this,
+                [this, form](const QString& path, const QString& text, bool unset) {
+                    applyOption(form->scope(), path, text, unset);
+                });
+    }
+    followDocument();
+    refresh();
+}
+
+/// The summary, direction and topics, the problems and the options of one direction.
+QWidget* MappingInspector::createEditPage(QWidget* parent)
+{
+    auto* page = new QWidget(parent);
     auto* v = new QVBoxLayout(page);
     m_summary = new QLabel(page);
     m_summary->setWordWrap(true);
@@ -65,31 +85,29 @@ MappingInspector::MappingInspector(ConfigDocument* document, QUndoStack* undoSta
     m_forms->addWidget(m_outForm);
     m_forms->addWidget(m_inForm);
     v->addWidget(m_forms, 1);
-    scroll->setWidget(page);
-    m_pages->addWidget(scroll);
+    return page;
+}
 
-    connect(m_direction, &QComboBox::activated, this, &MappingInspector::setDirection);
-    connect(m_rosTopic, &QLineEdit::editingFinished, this,
-            [this] { commitTopic(u"ros_topic"_s, m_rosTopic); });
-    connect(m_mqttTopic, &QLineEdit::editingFinished, this,
-            [this] { commitTopic(u"mqtt_topic"_s, m_mqttTopic); });
-    for (OptionForm* form : {m_outForm, m_inForm}) {
-        connect(form, &OptionForm::optionEdited, this,
-                [this, form](const QString& path, const QString& text, bool unset) {
-                    const OptionSpec* spec = OptionSchema::find(form->scope(), path);
-                    applyToSelection(tr("Set %1").arg(path), [&](Mapping& m) {
-                        if (unset)
-                            m.unset(path);
-                        else if (spec && spec->kind == OptionKind::StringList) {
-                            QStringList items;
-                            for (const QString& item : text.split(u',', Qt::SkipEmptyParts))
-                                items << item.trimmed();
-                            m.block.values.setList(path, items);
-                        } else
-                            m.set(path, text);
-                    });
-                });
-    }
+/// An option edited in a form, applied to every selected mapping as one undoable step.
+void MappingInspector::applyOption(OptionScope scope, const QString& path, const QString& text, bool unset)
+{
+    const OptionSpec* spec = OptionSchema::find(scope, path);
+    applyToSelection(tr("Set %1").arg(path), [&](Mapping& m) {
+        if (unset)
+            m.unset(path);
+        else if (spec && spec->kind == OptionKind::StringList) {
+            QStringList items;
+            for (const QString& item : text.split(u',', Qt::SkipEmptyParts))
+                items << item.trimmed();
+            m.block.values.setList(path, items);
+        } else
+            m.set(path, text);
+    });
+}
+
+/// The inspector shows what the document holds now: edits, removals and a new file.
+void MappingInspector::followDocument()
+{
     connect(m_doc, &ConfigDocument::mappingChanged, this, [this](int row) {
         if (m_ids.contains(m_doc->mapping(row).id))
             refresh();
@@ -105,7 +123,6 @@ MappingInspector::MappingInspector(ConfigDocument* document, QUndoStack* undoSta
             setMappings(still);
     });
     connect(m_doc, &ConfigDocument::resetDone, this, [this] { setMappings({}); });
-    refresh();
 }
 
 void MappingInspector::setMappings(const QList<quint64>& ids)

@@ -31,6 +31,9 @@ public:
     OptionForm* form(Direction d) const { return d == Direction::Ros2Mqtt ? m_outForm : m_inForm; }
 
 private:
+    QWidget* createEditPage(QWidget* parent);
+    void applyOption(OptionScope scope, const QString& path, const QString& text, bool unset);
+    void followDocument();
     void refresh();
     QList<Mapping> selected() const;
     void applyToSelection(const QString& description, const std::function<void(Mapping&)>& change);

@@ -76,22 +76,70 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_runBar(new RunBar(measure, this))
 {
     setObjectName(u"measurePage"_s);
+    QLayout* controls = createControls();
+    QWidget* pipelinePane = createPipelinePane();
+    QWidget* chartPane = createChartPane();
+    layOut(controls, pipelinePane, chartPane);
+    connectSession();
+    onPipelineChanged();
+    updateCounts();
+    updateEditable();
+}
 
-    // Controls.
+QLayout* MeasurePage::createControls()
+{
     auto* load = new QPushButton(tr("L&oad Pipeline…"), this);
     auto* save = new QPushButton(tr("&Save Pipeline…"), this);
     auto* automatic = new QPushButton(tr("&Automatic"), this);
     automatic->setToolTip(tr("Find the pipeline in the stamps that arrive: every stamp topic, ordered by its "
                              "mean time within the samples, hosts guessed from the names"));
+    m_pipelineControls = {load, save, automatic};
+    connect(load, &QPushButton::clicked, this, &MeasurePage::choosePipelineFile);
+    connect(save, &QPushButton::clicked, this, &MeasurePage::chooseSaveFile);
+    connect(automatic, &QPushButton::clicked, this, [this] {
+        m_pipelineFile.clear();
+        m_measure->setAutomatic();
+        onPipelineChanged();
+    });
+
+    auto* windowLabel = new QLabel(tr("&Window:"), this);
+    windowLabel->setBuddy(m_window);
+    setUpWindowAndActions();
+    auto* pauseButton = new QToolButton(this);
+    pauseButton->setDefaultAction(m_pause);
+    auto* resetButton = new QToolButton(this);
+    resetButton->setDefaultAction(m_reset);
+    auto* saveChart = new QPushButton(tr("E&xport Chart…"), this);
+    saveChart->setToolTip(tr("Save the chart as PNG or SVG"));
+    auto* copyChart = new QPushButton(tr("Cop&y Chart"), this);
+    copyChart->setToolTip(tr("Copy the chart to the clipboard as an image"));
+    connect(saveChart, &QPushButton::clicked, this, &MeasurePage::chooseChartFile);
+    connect(copyChart, &QPushButton::clicked, m_chart, &EcdfChart::copyToClipboard);
+    connect(m_log, &QCheckBox::toggled, m_chart, &EcdfChart::setLogScale);
+    connect(m_multiples, &QCheckBox::toggled, m_chart, &EcdfChart::setSmallMultiples);
+
+    auto* controls = new QHBoxLayout;
+    for (QWidget* w : {load, save, automatic})
+        controls->addWidget(w);
+    controls->addSpacing(16);
+    for (QWidget* w : std::initializer_list<QWidget*> {windowLabel, m_window, pauseButton, resetButton})
+        controls->addWidget(w);
+    controls->addSpacing(16);
+    for (QWidget* w : std::initializer_list<QWidget*> {m_log, m_multiples, saveChart, copyChart})
+        controls->addWidget(w);
+    controls->addStretch();
+    return controls;
+}
+
+void MeasurePage::setUpWindowAndActions()
+{
     m_window->setRange(0, 100'000'000);
     m_window->setSpecialValueText(tr("whole run"));
     m_window->setSuffix(tr(" samples"));
-    m_window->setValue(int(measure->engine().window()));
+    m_window->setValue(int(m_measure->engine().window()));
     m_window->setToolTip(
         tr("Statistics and ECDFs over the last N complete samples (the paper: 600), or 0 for the "
            "whole run"));
-    auto* windowLabel = new QLabel(tr("&Window:"), this);
-    windowLabel->setBuddy(m_window);
     m_pause->setCheckable(true);
     m_pause->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_pause->setShortcutContext(Qt::WidgetWithChildrenShortcut);
@@ -101,35 +149,41 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     m_reset->setToolTip(tr("Forget every sample and count; keep the pipeline (Ctrl+R)"));
     addAction(m_pause);
     addAction(m_reset);
-    auto* pauseButton = new QToolButton(this);
-    pauseButton->setDefaultAction(m_pause);
-    auto* resetButton = new QToolButton(this);
-    resetButton->setDefaultAction(m_reset);
+    connect(m_window, &QSpinBox::valueChanged, this, [this](int v) { m_measure->setWindow(v); });
+    connect(m_pause, &QAction::toggled, this, [this](bool on) {
+        m_measure->setPaused(on);
+        updateCounts();
+    });
+    connect(m_reset, &QAction::triggered, this, [this] { m_measure->reset(); });
+}
 
-    auto* controls = new QHBoxLayout;
-    controls->addWidget(load);
-    controls->addWidget(save);
-    controls->addWidget(automatic);
-    controls->addSpacing(16);
-    controls->addWidget(windowLabel);
-    controls->addWidget(m_window);
-    controls->addWidget(pauseButton);
-    controls->addWidget(resetButton);
-    controls->addSpacing(16);
-    controls->addWidget(m_log);
-    controls->addWidget(m_multiples);
-    auto* saveChart = new QPushButton(tr("E&xport Chart…"), this);
-    saveChart->setToolTip(tr("Save the chart as PNG or SVG"));
-    auto* copyChart = new QPushButton(tr("Cop&y Chart"), this);
-    copyChart->setToolTip(tr("Copy the chart to the clipboard as an image"));
-    controls->addWidget(saveChart);
-    controls->addWidget(copyChart);
-    controls->addStretch();
-    connect(saveChart, &QPushButton::clicked, this, &MeasurePage::chooseChartFile);
-    connect(copyChart, &QPushButton::clicked, m_chart, &EcdfChart::copyToClipboard);
-    m_pipelineControls = {load, save, automatic};
+QWidget* MeasurePage::createPipelinePane()
+{
+    setUpPipelineView();
+    m_seenView->setObjectName(u"stampTopicsView"_s);
+    m_seenView->setModel(m_seen);
+    m_seenView->setDragEnabled(true);
+    m_seenView->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_seenView->setToolTip(tr("Drag a stamp topic into the pipeline, or press Enter to append it"));
+    connect(m_seenView, &QListView::activated, this, &MeasurePage::addSeenTopic);
 
-    // Pipeline and the stamp topics seen.
+    auto* pane = new QWidget(this);
+    auto* layout = new QVBoxLayout(pane);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(
+        new QLabel(tr("<b>Pipeline</b>: stamp topics in the order a sample passes them"), pane));
+    layout->addWidget(m_mode);
+    m_mode->setWordWrap(true);
+    layout->addWidget(m_pipelineView, 3);
+    auto* seenLabel = new QLabel(tr("Stamp &topics seen:"), pane);
+    seenLabel->setBuddy(m_seenView);
+    layout->addWidget(seenLabel);
+    layout->addWidget(m_seenView, 1);
+    return pane;
+}
+
+void MeasurePage::setUpPipelineView()
+{
     m_pipelineView->setObjectName(u"pipelineView"_s);
     m_pipelineView->setModel(m_pipeline);
     m_pipelineView->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -139,6 +193,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     m_pipelineView->setDropIndicatorShown(true);
     m_pipelineView->setAcceptDrops(true);
     m_pipelineView->verticalHeader()->hide();
+    m_pipelineView->verticalHeader()->setDefaultSectionSize(m_pipelineView->fontMetrics().height() + 8);
     m_pipelineView->setWordWrap(false);
     m_pipelineView->setTextElideMode(Qt::ElideLeft); // the end of a stamp topic says the most
     m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::TopicColumn,
@@ -148,41 +203,28 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     m_pipelineView->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
                                     | QAbstractItemView::AnyKeyPressed);
     m_pipeline->setStampCounter([this](const QString& t) { return m_measure->discovery().stampCount(t); });
-    auto* remove = new QAction(tr("Remove from Pipeline"), m_pipelineView);
-    remove->setShortcut(QKeySequence::Delete);
-    remove->setShortcutContext(Qt::WidgetShortcut);
-    auto* up = new QAction(tr("Move Up"), m_pipelineView);
-    up->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Up));
-    up->setShortcutContext(Qt::WidgetShortcut);
-    auto* down = new QAction(tr("Move Down"), m_pipelineView);
-    down->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Down));
-    down->setShortcutContext(Qt::WidgetShortcut);
-    m_pipelineView->addActions({up, down, remove});
+    connect(m_pipeline, &PipelineModel::edited, this, &MeasurePage::applyEdit);
+
+    const auto addAction = [this](const QString& text, const QKeySequence& key) {
+        auto* action = new QAction(text, m_pipelineView);
+        action->setShortcut(key);
+        action->setShortcutContext(Qt::WidgetShortcut);
+        m_pipelineView->addAction(action);
+        return action;
+    };
+    QAction* up = addAction(tr("Move Up"), QKeySequence(Qt::CTRL | Qt::Key_Up));
+    QAction* down = addAction(tr("Move Down"), QKeySequence(Qt::CTRL | Qt::Key_Down));
+    QAction* remove = addAction(tr("Remove from Pipeline"), QKeySequence::Delete);
     m_pipelineView->setContextMenuPolicy(Qt::ActionsContextMenu);
+    connect(remove, &QAction::triggered, this, &MeasurePage::removeSelectedStamps);
+    connect(up, &QAction::triggered, this, [this] { moveSelectedStamp(-1); });
+    connect(down, &QAction::triggered, this, [this] { moveSelectedStamp(+1); });
+}
 
-    m_seenView->setObjectName(u"stampTopicsView"_s);
-    m_seenView->setModel(m_seen);
-    m_seenView->setDragEnabled(true);
-    m_seenView->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    m_seenView->setToolTip(tr("Drag a stamp topic into the pipeline, or press Enter to append it"));
-
-    auto* left = new QWidget(this);
-    auto* leftLayout = new QVBoxLayout(left);
-    leftLayout->setContentsMargins(0, 0, 0, 0);
-    auto* pipelineLabel
-        = new QLabel(tr("<b>Pipeline</b>: stamp topics in the order a sample passes them"), left);
-    leftLayout->addWidget(pipelineLabel);
-    leftLayout->addWidget(m_mode);
-    m_mode->setWordWrap(true);
-    leftLayout->addWidget(m_pipelineView, 3);
-    auto* seenLabel = new QLabel(tr("Stamp &topics seen:"), left);
-    seenLabel->setBuddy(m_seenView);
-    leftLayout->addWidget(seenLabel);
-    leftLayout->addWidget(m_seenView, 1);
-
-    // Chart and table.
+QWidget* MeasurePage::createChartPane()
+{
     auto* style = new StatsStyleProxy(this);
-    style->setSourceModel(measure->statsModel());
+    style->setSourceModel(m_measure->statsModel());
     m_statsView->setObjectName(u"statsView"_s);
     m_statsView->setModel(style);
     ViewSetup::records(m_statsView);
@@ -190,36 +232,41 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     m_statsView->horizontalHeader()->setSectionResizeMode(LatencyStatsModel::SeriesColumn,
                                                           QHeaderView::Stretch);
     m_statsView->verticalHeader()->setDefaultSectionSize(m_statsView->fontMetrics().height() + 8);
-    m_pipelineView->verticalHeader()->setDefaultSectionSize(m_pipelineView->fontMetrics().height() + 8);
     for (int c : {LatencyStatsModel::P90Column, LatencyStatsModel::P95Column, LatencyStatsModel::P999Column})
         m_statsView->setColumnHidden(c, true);
     m_statsView->horizontalHeader()->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_statsView->horizontalHeader(), &QWidget::customContextMenuRequested, this,
-            [this](const QPoint& at) {
-                QMenu menu;
-                for (int c = 1; c < LatencyStatsModel::ColumnCount; ++c) {
-                    QAction* a
-                        = menu.addAction(m_statsView->model()->headerData(c, Qt::Horizontal).toString());
-                    a->setCheckable(true);
-                    a->setChecked(!m_statsView->isColumnHidden(c));
-                    connect(a, &QAction::toggled, this,
-                            [this, c](bool on) { m_statsView->setColumnHidden(c, !on); });
-                }
-                menu.exec(m_statsView->horizontalHeader()->mapToGlobal(at));
-            });
-    m_chart->setSource(&measure->engine());
-    m_chart->setSeries(measure->statsModel()->checkedSeries());
+            &MeasurePage::showColumnMenu);
+    m_chart->setSource(&m_measure->engine());
+    m_chart->setSeries(m_measure->statsModel()->checkedSeries());
     m_chart->setMinimumHeight(240);
 
-    auto* right = new QSplitter(Qt::Vertical, this);
-    right->addWidget(m_chart);
-    right->addWidget(m_statsView);
-    right->setStretchFactor(0, 3);
-    right->setStretchFactor(1, 2);
-    right->setSizes({470, 430});
+    auto* pane = new QSplitter(Qt::Vertical, this);
+    pane->addWidget(m_chart);
+    pane->addWidget(m_statsView);
+    pane->setStretchFactor(0, 3);
+    pane->setStretchFactor(1, 2);
+    pane->setSizes({470, 430});
+    return pane;
+}
+
+void MeasurePage::showColumnMenu(const QPoint& at)
+{
+    QMenu menu;
+    for (int c = 1; c < LatencyStatsModel::ColumnCount; ++c) {
+        QAction* a = menu.addAction(m_statsView->model()->headerData(c, Qt::Horizontal).toString());
+        a->setCheckable(true);
+        a->setChecked(!m_statsView->isColumnHidden(c));
+        connect(a, &QAction::toggled, this, [this, c](bool on) { m_statsView->setColumnHidden(c, !on); });
+    }
+    menu.exec(m_statsView->horizontalHeader()->mapToGlobal(at));
+}
+
+void MeasurePage::layOut(QLayout* controls, QWidget* pipelinePane, QWidget* chartPane)
+{
     auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(left);
-    split->addWidget(right);
+    split->addWidget(pipelinePane);
+    split->addWidget(chartPane);
     split->setStretchFactor(0, 2);
     split->setStretchFactor(1, 5);
 
@@ -230,41 +277,21 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     layout->addWidget(m_counts);
     m_counts->setObjectName(u"measureCounts"_s);
     m_counts->setTextInteractionFlags(Qt::TextSelectableByMouse);
+}
 
-    // Wiring.
-    connect(load, &QPushButton::clicked, this, &MeasurePage::choosePipelineFile);
-    connect(save, &QPushButton::clicked, this, &MeasurePage::chooseSaveFile);
-    connect(automatic, &QPushButton::clicked, this, [this] {
-        m_pipelineFile.clear();
-        m_measure->setAutomatic();
-        onPipelineChanged();
-    });
-    connect(m_window, &QSpinBox::valueChanged, this, [this](int v) { m_measure->setWindow(v); });
-    connect(m_pause, &QAction::toggled, this, [this](bool on) {
-        m_measure->setPaused(on);
-        updateCounts();
-    });
-    connect(m_reset, &QAction::triggered, this, [this] { m_measure->reset(); });
-    connect(m_log, &QCheckBox::toggled, m_chart, &EcdfChart::setLogScale);
-    connect(m_multiples, &QCheckBox::toggled, m_chart, &EcdfChart::setSmallMultiples);
-    connect(remove, &QAction::triggered, this, &MeasurePage::removeSelectedStamps);
-    connect(up, &QAction::triggered, this, [this] { moveSelectedStamp(-1); });
-    connect(down, &QAction::triggered, this, [this] { moveSelectedStamp(+1); });
-    connect(m_seenView, &QListView::activated, this, &MeasurePage::addSeenTopic);
-    connect(m_pipeline, &PipelineModel::edited, this, &MeasurePage::applyEdit);
+void MeasurePage::connectSession()
+{
     const auto updateChartSeries = [this] { m_chart->setSeries(m_measure->statsModel()->checkedSeries()); };
-    connect(measure->statsModel(), &LatencyStatsModel::checkedChanged, this, updateChartSeries);
-    connect(measure->statsModel(), &QAbstractItemModel::modelReset, this, updateChartSeries);
-    connect(measure->statsModel(), &QAbstractItemModel::rowsInserted, this, updateChartSeries);
-    connect(measure, &MeasureSession::updated, this, &MeasurePage::onUpdated);
-    connect(measure, &MeasureSession::pipelineChanged, this, &MeasurePage::onPipelineChanged);
-    connect(measure, &MeasureSession::stampTopicsChanged, this,
+    LatencyStatsModel* stats = m_measure->statsModel();
+    connect(stats, &LatencyStatsModel::checkedChanged, this, updateChartSeries);
+    connect(stats, &QAbstractItemModel::modelReset, this, updateChartSeries);
+    connect(stats, &QAbstractItemModel::rowsInserted, this, updateChartSeries);
+    connect(m_measure, &MeasureSession::updated, this, &MeasurePage::onUpdated);
+    connect(m_measure, &MeasureSession::pipelineChanged, this, &MeasurePage::onPipelineChanged);
+    connect(m_measure, &MeasureSession::stampTopicsChanged, this,
             [this] { m_seen->update(m_measure->discovery(), m_measure->pipeline()); });
-    connect(measure, &MeasureSession::recordingChanged, this, &MeasurePage::updateEditable);
-    connect(measure, &MeasureSession::showingRunChanged, this, &MeasurePage::updateEditable);
-    onPipelineChanged();
-    updateCounts();
-    updateEditable();
+    connect(m_measure, &MeasureSession::recordingChanged, this, &MeasurePage::updateEditable);
+    connect(m_measure, &MeasureSession::showingRunChanged, this, &MeasurePage::updateEditable);
 }
 
 void MeasurePage::updateEditable()

@@ -11,6 +11,7 @@ class RunBar;
 class QAction;
 class QCheckBox;
 class QLabel;
+class QLayout;
 class QListView;
 class QSpinBox;
 class QTableView;
@@ -44,6 +45,14 @@ public:
     bool saveChart(const QString& path, QString* error = nullptr);
 
 private:
+    QLayout* createControls();
+    void setUpWindowAndActions();
+    QWidget* createPipelinePane();
+    void setUpPipelineView();
+    QWidget* createChartPane();
+    void showColumnMenu(const QPoint& at);
+    void layOut(QLayout* controls, QWidget* pipelinePane, QWidget* chartPane);
+    void connectSession();
     void applyEdit(const Pipeline& pipeline);
     void onUpdated();
     void onPipelineChanged();

@@ -52,11 +52,79 @@ ReportsPage::ReportsPage(QWidget* parent)
     , m_debounce(new QTimer(this))
 {
     setObjectName(u"reportsPage"_s);
+    setAcceptDrops(true); // files dropped anywhere on the page are added
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(createSettingsPane());
+    split->addWidget(createPreviewPane());
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 5);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(split);
+
+    // Any change of a field computes the preview again, once the typing pauses.
+    m_debounce->setSingleShot(true);
+    m_debounce->setInterval(300);
+    connect(m_debounce, &QTimer::timeout, this, &ReportsPage::startPreview);
+    connect(m_format, &QComboBox::currentIndexChanged, this, &ReportsPage::schedulePreview);
+    connect(m_pipeline, &QLineEdit::textChanged, this, &ReportsPage::schedulePreview);
+    connect(m_window, &QSpinBox::valueChanged, this, &ReportsPage::schedulePreview);
+    connect(m_join, &QCheckBox::toggled, this, &ReportsPage::schedulePreview);
+    connect(m_perSample, &QCheckBox::toggled, this, &ReportsPage::schedulePreview);
+    connect(m_title, &QLineEdit::textChanged, this, &ReportsPage::schedulePreview);
+    m_status->setText(tr("Add runs, suite CSV files or bags to report on."));
+}
+
+/// The inputs with their buttons, the report's fields and the export button.
+QWidget* ReportsPage::createSettingsPane()
+{
+    auto* pane = new QWidget(this);
+    auto* layout = new QVBoxLayout(pane);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* inputsLabel = new QLabel(tr("&Inputs:"), pane);
+    inputsLabel->setBuddy(m_inputs);
+    layout->addWidget(inputsLabel);
+    layout->addWidget(m_inputs, 1);
+    layout->addLayout(createInputButtons());
+    layout->addLayout(createForm());
+
+    auto* exportButton = new QPushButton(tr("&Export…"), this);
+    exportButton->setDefault(true);
+    exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    exportButton->setToolTip(tr("Write the report to a file (Ctrl+E)"));
+    connect(exportButton, &QPushButton::clicked, this, &ReportsPage::chooseExport);
+    layout->addWidget(exportButton);
+    return pane;
+}
+
+QLayout* ReportsPage::createInputButtons()
+{
     m_inputs->setObjectName(u"reportInputs"_s);
     m_inputs->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_inputs->setToolTip(
         tr("Runs, suite timestamp CSV files and ROS bags; several are compared side by side"));
-    setAcceptDrops(true); // files dropped anywhere on the page are added
+    auto* del = new QAction(this);
+    del->setShortcut(QKeySequence::Delete);
+    del->setShortcutContext(Qt::WidgetShortcut);
+    m_inputs->addAction(del);
+    connect(del, &QAction::triggered, this, &ReportsPage::removeSelected);
+
+    auto* add = new QPushButton(tr("&Add…"), this);
+    auto* remove = new QPushButton(tr("&Remove"), this);
+    auto* up = new QPushButton(tr("&Up"), this);
+    auto* down = new QPushButton(tr("Do&wn"), this);
+    connect(add, &QPushButton::clicked, this, &ReportsPage::chooseInputs);
+    connect(remove, &QPushButton::clicked, this, &ReportsPage::removeSelected);
+    connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
+    connect(down, &QPushButton::clicked, this, [this] { moveSelected(+1); });
+    auto* buttons = new QHBoxLayout;
+    for (QPushButton* b : {add, remove, up, down})
+        buttons->addWidget(b);
+    buttons->addStretch();
+    return buttons;
+}
+
+QLayout* ReportsPage::createForm()
+{
     const QList<std::pair<QString, ReportFormats::Format>> formats {
         {tr("PDF"), ReportFormats::Format::Pdf},
         {tr("HTML (tables and SVG figure)"), ReportFormats::Format::Html},
@@ -72,31 +140,9 @@ ReportsPage::ReportsPage(QWidget* parent)
     m_window->setSpecialValueText(tr("whole run"));
     m_window->setSuffix(tr(" samples"));
     m_title->setPlaceholderText(tr("from the run names"));
-    m_text->setReadOnly(true);
-    m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    m_text->setLineWrapMode(QPlainTextEdit::NoWrap);
-    m_text->setObjectName(u"reportText"_s);
-    m_rich->setObjectName(u"reportRich"_s);
-    m_previewStack->addWidget(m_text);
-    m_previewStack->addWidget(m_rich);
-    m_progress->setRange(0, 100);
-    m_progress->setVisible(false);
-    m_progress->setMaximumWidth(200);
 
-    auto* add = new QPushButton(tr("&Add…"), this);
-    auto* remove = new QPushButton(tr("&Remove"), this);
-    auto* up = new QPushButton(tr("&Up"), this);
-    auto* down = new QPushButton(tr("Do&wn"), this);
     auto* browsePipeline = new QPushButton(tr("&Browse…"), this);
-    auto* exportButton = new QPushButton(tr("&Export…"), this);
-    exportButton->setDefault(true);
-    exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-    exportButton->setToolTip(tr("Write the report to a file (Ctrl+E)"));
-
-    auto* inputButtons = new QHBoxLayout;
-    for (QPushButton* b : {add, remove, up, down})
-        inputButtons->addWidget(b);
-    inputButtons->addStretch();
+    connect(browsePipeline, &QPushButton::clicked, this, &ReportsPage::choosePipeline);
     auto* pipelineRow = new QHBoxLayout;
     pipelineRow->addWidget(m_pipeline, 1);
     pipelineRow->addWidget(browsePipeline);
@@ -109,56 +155,32 @@ ReportsPage::ReportsPage(QWidget* parent)
     form->addRow(tr("&Title:"), m_title);
     form->addRow(QString(), m_join);
     form->addRow(QString(), m_perSample);
+    return form;
+}
 
-    auto* left = new QWidget(this);
-    auto* leftLayout = new QVBoxLayout(left);
-    leftLayout->setContentsMargins(0, 0, 0, 0);
-    auto* inputsLabel = new QLabel(tr("&Inputs:"), left);
-    inputsLabel->setBuddy(m_inputs);
-    leftLayout->addWidget(inputsLabel);
-    leftLayout->addWidget(m_inputs, 1);
-    leftLayout->addLayout(inputButtons);
-    leftLayout->addLayout(form);
-    leftLayout->addWidget(exportButton);
+/// The status with the progress of a running report, above the preview (text or rich).
+QWidget* ReportsPage::createPreviewPane()
+{
+    m_text->setReadOnly(true);
+    m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_text->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_text->setObjectName(u"reportText"_s);
+    m_rich->setObjectName(u"reportRich"_s);
+    m_previewStack->addWidget(m_text);
+    m_previewStack->addWidget(m_rich);
+    m_progress->setRange(0, 100);
+    m_progress->setVisible(false);
+    m_progress->setMaximumWidth(200);
 
-    auto* right = new QWidget(this);
-    auto* rightLayout = new QVBoxLayout(right);
-    rightLayout->setContentsMargins(0, 0, 0, 0);
+    auto* pane = new QWidget(this);
+    auto* layout = new QVBoxLayout(pane);
+    layout->setContentsMargins(0, 0, 0, 0);
     auto* statusRow = new QHBoxLayout;
     statusRow->addWidget(m_status, 1);
     statusRow->addWidget(m_progress);
-    rightLayout->addLayout(statusRow);
-    rightLayout->addWidget(m_previewStack, 1);
-
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(left);
-    split->addWidget(right);
-    split->setStretchFactor(0, 2);
-    split->setStretchFactor(1, 5);
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(split);
-
-    m_debounce->setSingleShot(true);
-    m_debounce->setInterval(300);
-    connect(m_debounce, &QTimer::timeout, this, &ReportsPage::startPreview);
-    connect(add, &QPushButton::clicked, this, &ReportsPage::chooseInputs);
-    connect(remove, &QPushButton::clicked, this, &ReportsPage::removeSelected);
-    connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
-    connect(down, &QPushButton::clicked, this, [this] { moveSelected(+1); });
-    connect(browsePipeline, &QPushButton::clicked, this, &ReportsPage::choosePipeline);
-    connect(exportButton, &QPushButton::clicked, this, &ReportsPage::chooseExport);
-    connect(m_format, &QComboBox::currentIndexChanged, this, &ReportsPage::schedulePreview);
-    connect(m_pipeline, &QLineEdit::textChanged, this, &ReportsPage::schedulePreview);
-    connect(m_window, &QSpinBox::valueChanged, this, &ReportsPage::schedulePreview);
-    connect(m_join, &QCheckBox::toggled, this, &ReportsPage::schedulePreview);
-    connect(m_perSample, &QCheckBox::toggled, this, &ReportsPage::schedulePreview);
-    connect(m_title, &QLineEdit::textChanged, this, &ReportsPage::schedulePreview);
-    auto* del = new QAction(this);
-    del->setShortcut(QKeySequence::Delete);
-    del->setShortcutContext(Qt::WidgetShortcut);
-    m_inputs->addAction(del);
-    connect(del, &QAction::triggered, this, &ReportsPage::removeSelected);
-    m_status->setText(tr("Add runs, suite CSV files or bags to report on."));
+    layout->addLayout(statusRow);
+    layout->addWidget(m_previewStack, 1);
+    return pane;
 }
 
 ReportsPage::~ReportsPage() = default; // a running job cancels and waits for its worker

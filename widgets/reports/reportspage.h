@@ -10,6 +10,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QLayout;
 class QLineEdit;
 class QListWidget;
 class QPlainTextEdit;
@@ -60,6 +61,10 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    QWidget* createSettingsPane();
+    QLayout* createInputButtons();
+    QLayout* createForm();
+    QWidget* createPreviewPane();
     void chooseInputs();
     void choosePipeline();
     void chooseExport();

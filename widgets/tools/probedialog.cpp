@@ -79,6 +79,62 @@ ProbeDialog::ProbeDialog(QWidget* parent)
     setWindowTitle(tr("Link Probe"));
     setObjectName(u"probeDialog"_s);
 
+    auto* top = new QHBoxLayout;
+    top->addLayout(createSettingsColumn(), 0);
+    top->addSpacing(12);
+    top->addLayout(createResultsColumn(), 1);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top, 1);
+    layout->addWidget(buttons);
+    connect(buttons, &QDialogButtonBox::rejected, this, &ProbeDialog::reject);
+    connectProbe();
+
+    setProfile(MqttProfile::fromUrl(defaultBroker()));
+    showChart({});
+    resize(1000, 640);
+}
+
+QLayout* ProbeDialog::createSettingsColumn()
+{
+    auto* column = new QVBoxLayout;
+    column->addLayout(createSettingsForm());
+
+    m_start->setDefault(true);
+    m_stop->setEnabled(false);
+    auto* runRow = new QHBoxLayout;
+    runRow->addWidget(m_start);
+    runRow->addWidget(m_stop);
+    runRow->addStretch(1);
+    column->addLayout(runRow);
+
+    m_status->setWordWrap(true);
+    m_status->setText(tr("Round trips from this computer through the broker and back."));
+    m_error->setObjectName(u"probeError"_s);
+    m_error->setWordWrap(true);
+    m_error->setStyleSheet(u"color: #b00020"_s);
+    m_error->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_error->hide();
+    column->addWidget(m_status);
+    column->addWidget(m_error);
+
+    m_steps->setHorizontalHeaderLabels({tr("Rate Hz"), tr("Sent Hz"), tr("Median ms"), tr("Lost %")});
+    ViewSetup::records(m_steps);
+    m_steps->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_steps->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_steps->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_sweepResult->setWordWrap(true);
+    auto* sweepLayout = new QVBoxLayout(m_sweepGroup);
+    sweepLayout->addWidget(m_steps, 1);
+    sweepLayout->addWidget(m_sweepResult);
+    m_sweepGroup->setVisible(false);
+    column->addWidget(m_sweepGroup, 1);
+    column->addStretch(0);
+    return column;
+}
+
+QLayout* ProbeDialog::createSettingsForm()
+{
     m_broker->setObjectName(u"broker"_s);
     m_broker->setPlaceholderText(defaultBroker());
     m_broker->setToolTip(tr("tcp://, ssl://, mqtt://, mqtts://, ws:// or wss://, with the port"));
@@ -112,41 +168,11 @@ ProbeDialog::ProbeDialog(QWidget* parent)
     form->addRow(tr("Cou&nt:"), m_count);
     form->addRow(QString(), m_sweep);
     form->addRow(QString(), m_viaEcho);
+    return form;
+}
 
-    m_start->setDefault(true);
-    m_stop->setEnabled(false);
-    auto* runRow = new QHBoxLayout;
-    runRow->addWidget(m_start);
-    runRow->addWidget(m_stop);
-    runRow->addStretch(1);
-
-    m_status->setWordWrap(true);
-    m_status->setText(tr("Round trips from this computer through the broker and back."));
-    m_error->setObjectName(u"probeError"_s);
-    m_error->setWordWrap(true);
-    m_error->setStyleSheet(u"color: #b00020"_s);
-    m_error->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_error->hide();
-
-    m_steps->setHorizontalHeaderLabels({tr("Rate Hz"), tr("Sent Hz"), tr("Median ms"), tr("Lost %")});
-    ViewSetup::records(m_steps);
-    m_steps->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_steps->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_steps->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_sweepResult->setWordWrap(true);
-    auto* sweepLayout = new QVBoxLayout(m_sweepGroup);
-    sweepLayout->addWidget(m_steps, 1);
-    sweepLayout->addWidget(m_sweepResult);
-    m_sweepGroup->setVisible(false);
-
-    auto* left = new QVBoxLayout;
-    left->addLayout(form);
-    left->addLayout(runRow);
-    left->addWidget(m_status);
-    left->addWidget(m_error);
-    left->addWidget(m_sweepGroup, 1);
-    left->addStretch(0);
-
+QLayout* ProbeDialog::createResultsColumn()
+{
     auto* counts = new QGridLayout;
     m_figures[Sent] = addFigure(counts, 0, tr("Sent"), this);
     m_figures[Received] = addFigure(counts, 1, tr("Received"), this);
@@ -169,26 +195,20 @@ ProbeDialog::ProbeDialog(QWidget* parent)
     showTitles(QString());
 
     m_chart->setMinimumSize(420, 300);
-    auto* right = new QVBoxLayout;
-    right->addWidget(m_countsTitle);
-    right->addLayout(counts);
-    right->addSpacing(6);
-    right->addWidget(m_statsTitle);
-    right->addLayout(stats);
-    right->addWidget(m_chart, 1);
+    auto* column = new QVBoxLayout;
+    column->addWidget(m_countsTitle);
+    column->addLayout(counts);
+    column->addSpacing(6);
+    column->addWidget(m_statsTitle);
+    column->addLayout(stats);
+    column->addWidget(m_chart, 1);
+    return column;
+}
 
-    auto* top = new QHBoxLayout;
-    top->addLayout(left, 0);
-    top->addSpacing(12);
-    top->addLayout(right, 1);
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(top, 1);
-    layout->addWidget(buttons);
-
+void ProbeDialog::connectProbe()
+{
     connect(m_start, &QPushButton::clicked, this, &ProbeDialog::start);
     connect(m_stop, &QPushButton::clicked, this, &ProbeDialog::stop);
-    connect(buttons, &QDialogButtonBox::rejected, this, &ProbeDialog::reject);
     connect(m_sweep, &QCheckBox::toggled, this, [this](bool on) {
         m_count->setEnabled(!on && !m_running);
         m_sweepGroup->setVisible(on || m_steps->rowCount() > 0);
@@ -201,10 +221,6 @@ ProbeDialog::ProbeDialog(QWidget* parent)
     connect(m_probe, &LinkProbe::finished, this, &ProbeDialog::onFinished);
     m_poll.setInterval(kPollMs);
     connect(&m_poll, &QTimer::timeout, this, &ProbeDialog::poll);
-
-    setProfile(MqttProfile::fromUrl(defaultBroker()));
-    showChart({});
-    resize(1000, 640);
 }
 
 ProbeDialog::~ProbeDialog() = default;

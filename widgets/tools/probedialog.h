@@ -16,6 +16,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
+class QLayout;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
@@ -67,6 +68,10 @@ signals:
     void probeFinished(const LinkProbeReport& report);
 
 private:
+    QLayout* createSettingsColumn();
+    QLayout* createSettingsForm();
+    QLayout* createResultsColumn();
+    void connectProbe();
     LinkProbeOptions options() const;
     void setRunning(bool running);
     void poll();
