@@ -2,6 +2,7 @@
 #include "yamllimits.h"
 
 #include <istream>
+#include <QFile>
 #include <streambuf>
 #include <unordered_map>
 #include <vector>
@@ -383,4 +384,17 @@ YAML::Node YamlLimits::load(const QByteArray& text)
     ByteArrayBuffer buffer(text);
     std::istream in(&buffer);
     return YAML::Load(in);
+}
+
+std::optional<QByteArray> YamlLimits::readFile(const QString& path, QString* error)
+{
+    QFile f(path);
+    if (f.open(QIODevice::ReadOnly)) {
+        QByteArray bytes = f.read(maxBytes + 1);
+        if (f.error() == QFileDevice::NoError)
+            return bytes;
+    }
+    if (error)
+        *error = tr("%1: %2").arg(path, f.errorString());
+    return std::nullopt;
 }

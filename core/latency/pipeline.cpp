@@ -209,16 +209,11 @@ std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* erro
 
 std::optional<Pipeline> Pipeline::load(const QString& path, QString* error)
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("%1: %2").arg(path, f.errorString());
-        return std::nullopt;
-    }
     QString why;
-    std::optional<Pipeline> p = fromYaml(f.readAll(), &why);
+    const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
+    std::optional<Pipeline> p = bytes ? fromYaml(*bytes, &why) : std::nullopt;
     if (!p && error)
-        *error = path + u": "_s + why;
+        *error = bytes ? path + u": "_s + why : why;
     return p;
 }
 
