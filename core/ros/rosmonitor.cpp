@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
+#include "base/eventbuffer.h"
 #include "base/wallclock.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
@@ -32,6 +33,7 @@ struct RosMonitor::Private
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
+    std::unique_ptr<EventBuffer<RosArrival>> arrivals; ///< set by keepArrivals(), under `mutex`
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
     {
@@ -51,6 +53,8 @@ struct RosMonitor::Private
             t.stats.md5 = QString::fromStdString(msg->getMD5Sum());
             t.stats.definition = QString::fromStdString(msg->getMessageDefinition());
         }
+        if (arrivals)
+            arrivals->push(RosArrival {topic, now, t.stats.lastSize, bytes.left(RosArrival::kHeadBytes)});
         t.stats.lastMessage = std::move(bytes);
         t.arrivals.emplace_back(now, t.stats.lastSize);
         while (t.arrivals.size() > 20000
@@ -165,6 +169,27 @@ bool RosMonitor::isMonitored(const QString& topic) const
 void RosMonitor::resubscribeAll()
 {
     d->subscribeAll(d, this);
+}
+
+void RosMonitor::keepArrivals(std::size_t maxArrivals)
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    if (maxArrivals == 0)
+        d->arrivals.reset();
+    else
+        d->arrivals = std::make_unique<EventBuffer<RosArrival>>(maxArrivals);
+}
+
+std::vector<RosArrival> RosMonitor::takeArrivals()
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->arrivals ? d->arrivals->take() : std::vector<RosArrival>();
+}
+
+quint64 RosMonitor::droppedArrivals() const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->arrivals ? d->arrivals->dropped() : 0;
 }
 
 QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const

@@ -6,6 +6,7 @@
 #include <QHash>
 #include <QObject>
 #include <QString>
+#include <vector>
 
 /// Figures of one monitored ROS topic, like rqt_topic shows them.
 struct RosMonitorStats
@@ -20,6 +21,17 @@ struct RosMonitorStats
     QString md5;
     QString definition;
     QByteArray lastMessage; ///< serialized
+};
+
+/// One message as the monitor saw it, for consumers that need every message (Watch): its
+/// first bytes are enough for a Header's seq and stamp or a std_msgs/Float64.
+struct RosArrival
+{
+    static constexpr int kHeadBytes = 16;
+    QString topic;
+    qint64 receivedNs = 0; ///< wall clock
+    int size = 0; ///< serialized bytes
+    QByteArray head; ///< the first kHeadBytes bytes (fewer when the message is shorter)
 };
 
 /// Generic subscriptions to ROS topics for monitoring (the only code that uses roscpp).
@@ -43,6 +55,12 @@ public:
     void resubscribeAll();
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, RosMonitorStats> snapshot(qint64 nowNs) const;
+    /// From now on every message of a monitored topic is also kept, up to `maxArrivals` between
+    /// two takeArrivals() (more are dropped and counted); 0 stops keeping them.
+    void keepArrivals(std::size_t maxArrivals);
+    /// The messages since the last call, oldest first.
+    std::vector<RosArrival> takeArrivals();
+    quint64 droppedArrivals() const;
 
 signals:
     void monitorFailed(const QString& topic, const QString& why);
