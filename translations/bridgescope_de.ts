@@ -1454,6 +1454,41 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     </message>
 </context>
 <context>
+    <name>EventLogModel</name>
+    <message>
+        <source>%1 ended</source>
+        <translation>%1 beendet</translation>
+    </message>
+    <message>
+        <source>bridge %1</source>
+        <translation>Bridge %1</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Stufe</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>What</source>
+        <translation>Was</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+</context>
+<context>
     <name>Gui</name>
     <message>
         <source>Render the main window to PNG and exit.</source>
@@ -1552,20 +1587,12 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>--page erwartet eins von: %1</translation>
     </message>
     <message>
-        <source>open on a page: discover, map, measure or reports</source>
-        <translation>auf einer Seite öffnen: discover, map, measure oder reports</translation>
-    </message>
-    <message>
         <source>record a measurement run</source>
         <translation>einen Messlauf aufzeichnen</translation>
     </message>
     <message>
         <source>latency reports of runs, CSV files and bags</source>
         <translation>Latenzberichte zu Läufen, CSV-Dateien und Bags</translation>
-    </message>
-    <message>
-        <source>Open on this page: discover, map, measure or reports.</source>
-        <translation>Auf dieser Seite öffnen: discover, map, measure oder reports.</translation>
     </message>
     <message>
         <source>start the embedded demo lab and show it</source>
@@ -1606,6 +1633,18 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>debug messages of every layer on stderr, also after a command</source>
         <translation>Debug-Meldungen jeder Schicht auf stderr, auch hinter einem Befehl</translation>
+    </message>
+    <message>
+        <source>open on a page: discover, map, measure, reports or links</source>
+        <translation>auf einer Seite öffnen: discover, map, measure, reports oder links</translation>
+    </message>
+    <message>
+        <source>watch every bridged link for hours: events, metrics</source>
+        <translation>jede gebridgte Verbindung stundenlang überwachen: Ereignisse, Metriken</translation>
+    </message>
+    <message>
+        <source>Open on this page: discover, map, measure, reports or links.</source>
+        <translation>Auf dieser Seite öffnen: discover, map, measure, reports oder links.</translation>
     </message>
 </context>
 <context>
@@ -1695,6 +1734,132 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     </message>
 </context>
 <context>
+    <name>LinkModel</name>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>alert</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>%1 ended after %2 s</source>
+        <translation>%1 endete nach %2 s</translation>
+    </message>
+    <message>
+        <source>%1 since %2</source>
+        <translation>%1 seit %2</translation>
+    </message>
+    <message>
+        <source>A negative latency: the clocks of the bridge and of this computer differ.</source>
+        <translation>Eine negative Latenz: die Uhren der Bridge und dieses Rechners gehen verschieden.</translation>
+    </message>
+    <message>
+        <source>ROS → MQTT</source>
+        <translation>ROS → MQTT</translation>
+    </message>
+    <message>
+        <source>MQTT → ROS</source>
+        <translation>MQTT → ROS</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Bridge</source>
+        <translation>Bridge</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Destination</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Source Hz</source>
+        <translation>Quelle Hz</translation>
+    </message>
+    <message>
+        <source>Dest. Hz</source>
+        <translation>Ziel Hz</translation>
+    </message>
+    <message>
+        <source>Lost</source>
+        <translation>Verloren</translation>
+    </message>
+    <message>
+        <source>p50 ms</source>
+        <translation>p50 ms</translation>
+    </message>
+    <message>
+        <source>p99 ms</source>
+        <translation>p99 ms</translation>
+    </message>
+    <message>
+        <source>Rate, 5 min</source>
+        <translation>Rate, 5 min</translation>
+    </message>
+    <message>
+        <source>Last event</source>
+        <translation>Letztes Ereignis</translation>
+    </message>
+</context>
+<context>
+    <name>LinkMonitor</name>
+    <message>
+        <source>the source %1 has been silent for %2 s</source>
+        <translation>die Quelle %1 schweigt seit %2 s</translation>
+    </message>
+    <message>
+        <source>nothing arrived on %1 for %2 s while %3 publishes</source>
+        <translation>auf %1 kam %2 s lang nichts an, während %3 sendet</translation>
+    </message>
+    <message>
+        <source>%1 % of the messages lost</source>
+        <translation>%1 % der Nachrichten verloren</translation>
+    </message>
+    <message>
+        <source>%1 Hz at the destination</source>
+        <translation>%1 Hz am Ziel</translation>
+    </message>
+    <message>
+        <source>%1 Hz at the destination for %2 Hz at the source</source>
+        <translation>%1 Hz am Ziel bei %2 Hz an der Quelle</translation>
+    </message>
+    <message>
+        <source>latency p99 %1 ms</source>
+        <translation>Latenz p99 %1 ms</translation>
+    </message>
+    <message>
+        <source>the bridge %1 left its last will</source>
+        <translation>die Bridge %1 hat ihren letzten Willen hinterlassen</translation>
+    </message>
+    <message>
+        <source>the bridge %1 carries nothing while its sources publish</source>
+        <translation>die Bridge %1 überträgt nichts, während ihre Quellen senden</translation>
+    </message>
+</context>
+<context>
     <name>LinkProbe</name>
     <message>
         <source>the connection to the broker was lost</source>
@@ -1755,6 +1920,88 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>--rate must be above 0 and at most 1000000 Hz</source>
         <translation>--rate muss über 0 und höchstens 1000000 Hz sein</translation>
+    </message>
+</context>
+<context>
+    <name>LinksPage</name>
+    <message>
+        <source>&amp;Add Configs…</source>
+        <translation>Konfigurationen &amp;hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Watch the mappings of more bridge configs (one per vehicle or robot)</source>
+        <translation>Die Mappings weiterer Bridge-Konfigurationen überwachen (eine je Fahrzeug oder Roboter)</translation>
+    </message>
+    <message>
+        <source>R&amp;ules…</source>
+        <translation>Re&amp;geln…</translation>
+    </message>
+    <message>
+        <source>Load the thresholds (a rules YAML) every link is held to</source>
+        <translation>Die Schwellen (eine Regel-YAML) laden, an denen jede Verbindung gemessen wird</translation>
+    </message>
+    <message>
+        <source>Filter links…</source>
+        <translation>Verbindungen filtern…</translation>
+    </message>
+    <message>
+        <source>Select a link to see its history.</source>
+        <translation>Eine Verbindung wählen, um ihren Verlauf zu sehen.</translation>
+    </message>
+    <message>
+        <source>Destination rate:</source>
+        <translation>Rate am Ziel:</translation>
+    </message>
+    <message>
+        <source>Latency p99:</source>
+        <translation>Latenz p99:</translation>
+    </message>
+    <message>
+        <source>%1 is not a bridge config that can be read</source>
+        <translation>%1 ist keine lesbare Bridge-Konfiguration</translation>
+    </message>
+    <message>
+        <source>Watch Bridge Configs</source>
+        <translation>Bridge-Konfigurationen überwachen</translation>
+    </message>
+    <message>
+        <source>Bridge configs (*.yaml *.yml);;All files (*)</source>
+        <translation>Bridge-Konfigurationen (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Load Watch Rules</source>
+        <translation>Überwachungsregeln laden</translation>
+    </message>
+    <message>
+        <source>Rules (*.yaml *.yml);;All files (*)</source>
+        <translation>Regeln (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>No links: open a bridge config on the Map page, or add configs here.</source>
+        <translation>Keine Verbindungen: eine Bridge-Konfiguration auf der Seite Map öffnen oder hier hinzufügen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n link(s): %1 ok, %2 warning, %3 alert</source>
+        <translation>
+            <numerusform>%n Verbindung: %1 ok, %2 Warnung, %3 Alarm</numerusform>
+            <numerusform>%n Verbindungen: %1 ok, %2 Warnung, %3 Alarm</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; → &lt;b&gt;%2&lt;/b&gt; (%3)&lt;br&gt;%4 messages at the source, %5 at the destination, %6 lost, %7 Header.seq gaps, %8 duplicates, %9 reordered, %10 stalls</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; → &lt;b&gt;%2&lt;/b&gt; (%3)&lt;br&gt;%4 Nachrichten an der Quelle, %5 am Ziel, %6 verloren, %7 Lücken in Header.seq, %8 doppelt, %9 vertauscht, %10 Stillstände</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Bridgescope: %1</source>
+        <translation>Bridgescope: %1</translation>
     </message>
 </context>
 <context>
@@ -1874,6 +2121,14 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Link &amp;Probe…</source>
         <translation>&amp;Streckentest …</translation>
+    </message>
+    <message>
+        <source>Links</source>
+        <translation>Verbindungen</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
     </message>
 </context>
 <context>
@@ -4938,6 +5193,124 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     </message>
 </context>
 <context>
+    <name>WatchCommand</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: not a bridge config: %2</source>
+        <translation>%1: keine Bridge-Konfiguration: %2</translation>
+    </message>
+    <message>
+        <source>Broker URL (default: the first config&apos;s broker).</source>
+        <translation>Broker-URL (Vorgabe: der Broker der ersten Konfiguration).</translation>
+    </message>
+    <message>
+        <source>ROS master URI (default $ROS_MASTER_URI).</source>
+        <translation>ROS-Master-URI (Vorgabe $ROS_MASTER_URI).</translation>
+    </message>
+    <message>
+        <source>Rules YAML: thresholds for all links and per link.</source>
+        <translation>Regel-YAML: Schwellen für alle Verbindungen und je Verbindung.</translation>
+    </message>
+    <message>
+        <source>Serve Prometheus metrics at http://HOST:PORT/metrics (e.g. 127.0.0.1:9464).</source>
+        <translation>Prometheus-Metriken unter http://HOST:PORT/metrics bereitstellen (z. B. 127.0.0.1:9464).</translation>
+    </message>
+    <message>
+        <source>Append every event to FILE as a JSON line.</source>
+        <translation>Jedes Ereignis als JSON-Zeile an DATEI anhängen.</translation>
+    </message>
+    <message>
+        <source>Stop after S seconds (default: at Ctrl+C).</source>
+        <translation>Nach S Sekunden aufhören (Vorgabe: bei Strg+C).</translation>
+    </message>
+    <message>
+        <source>mqtt_client configs whose mappings are watched.</source>
+        <translation>mqtt_client-Konfigurationen, deren Mappings überwacht werden.</translation>
+    </message>
+    <message>
+        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state. Every change of a link&apos;s state is an event, printed as a JSON line.
+Exit status: 0 stopped, 1 the metrics port could not be served, 2 bad options.</source>
+        <translation>Überwacht jedes Mapping der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, das Verstummen der Quelle, die Latenz gestempelter Nachrichten und den Zustand der Bridges. Jede Änderung des Zustands einer Verbindung ist ein Ereignis, ausgegeben als JSON-Zeile.
+Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient werden, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>watch needs at least one bridge config; see bridgescope watch --help</source>
+        <translation>watch braucht mindestens eine Bridge-Konfiguration; siehe bridgescope watch --help</translation>
+    </message>
+    <message>
+        <source>--seconds takes a number of seconds</source>
+        <translation>--seconds erwartet eine Zahl von Sekunden</translation>
+    </message>
+    <message>
+        <source>metrics at http://%1/metrics (port %2)</source>
+        <translation>Metriken unter http://%1/metrics (Port %2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>watching %n link(s) of %1; Ctrl+C stops</source>
+        <translation>
+            <numerusform>überwache %n Verbindung von %1; Strg+C beendet</numerusform>
+            <numerusform>überwache %n Verbindungen von %1; Strg+C beendet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 s: %2 ok, %3 warning, %4 alert</source>
+        <translation>%1 s: %2 ok, %3 Warnung, %4 Alarm</translation>
+    </message>
+</context>
+<context>
+    <name>WatchMetrics</name>
+    <message>
+        <source>cannot serve metrics on %1: %2</source>
+        <translation>Metriken auf %1 nicht bereitstellbar: %2</translation>
+    </message>
+</context>
+<context>
+    <name>WatchRules</name>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 takes warning and alert levels, each a number ≥ 0</source>
+        <translation>%1: %2 erwartet Warn- und Alarmstufe, jeweils eine Zahl ≥ 0</translation>
+    </message>
+    <message>
+        <source>%1: %2 takes a number ≥ 0 or {warning: N, alert: N}</source>
+        <translation>%1: %2 erwartet eine Zahl ≥ 0 oder {warning: N, alert: N}</translation>
+    </message>
+    <message>
+        <source>%1: unknown setting &apos;%2&apos; (known: %3)</source>
+        <translation>%1: unbekannte Einstellung &apos;%2&apos; (bekannt: %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>rules are a mapping with defaults and links</source>
+        <translation>Regeln sind eine Zuordnung mit defaults und links</translation>
+    </message>
+    <message>
+        <source>%1: unknown key &apos;%2&apos; (known: defaults, links)</source>
+        <translation>%1: unbekannter Schlüssel &apos;%2&apos; (bekannt: defaults, links)</translation>
+    </message>
+    <message>
+        <source>%1: defaults is a mapping of settings</source>
+        <translation>%1: defaults ist eine Zuordnung von Einstellungen</translation>
+    </message>
+    <message>
+        <source>%1: links is a list of {match: PATTERN, settings...}</source>
+        <translation>%1: links ist eine Liste von {match: MUSTER, Einstellungen...}</translation>
+    </message>
+    <message>
+        <source>%1: every entry of links needs a match pattern</source>
+        <translation>%1: jeder Eintrag von links braucht ein match-Muster</translation>
+    </message>
+</context>
+<context>
     <name>YamlLimits</name>
     <message>
         <source>The alias *%1 refers to a node that contains it; the document would be infinite.</source>
@@ -5026,6 +5399,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>Write the key as text, or remove the entry.</source>
         <translation>Schreiben Sie den Schlüssel als Text, oder entfernen Sie den Eintrag.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>

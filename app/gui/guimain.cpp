@@ -9,6 +9,7 @@
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
 
@@ -52,7 +53,7 @@ QString bridgescopeUsage()
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
         {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
-        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure or reports")},
+        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports or links")},
         {u"--verbose"_s, Gui::tr("debug messages of every layer on stderr, also after a command")},
         {u"-h, --help"_s, Gui::tr("show this help")},
         {u"-v, --version"_s, Gui::tr("show the version")},
@@ -65,6 +66,8 @@ QString bridgescopeUsage()
         {u"demo [--seconds N]"_s, Gui::tr("the demo lab without a window")},
         {u"record --pipeline P -o RUN"_s, Gui::tr("record a measurement run")},
         {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},
+        {u"watch CONFIG.yaml... [--metrics H:P]"_s,
+         Gui::tr("watch every bridged link for hours: events, metrics")},
     };
     QString text = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]")
         + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s
@@ -108,8 +111,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     const QCommandLineOption pipeline(
         u"pipeline"_s, Gui::tr("Measure with this pipeline (the suite's metrics-logger YAML)."),
         u"PIPE.yaml"_s);
-    const QCommandLineOption page(u"page"_s, Gui::tr("Open on this page: discover, map, measure or reports."),
-                                  u"PAGE"_s);
+    const QCommandLineOption page(
+        u"page"_s, Gui::tr("Open on this page: discover, map, measure, reports or links."), u"PAGE"_s);
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
     parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
@@ -135,7 +138,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         }
     }
     if (parser.isSet(page)) {
-        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s};
+        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s, u"links"_s};
         request->page = int(names.indexOf(parser.value(page).toLower()));
         if (request->page < 0) {
             CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
@@ -157,6 +160,8 @@ void showDemo(MainWindow& window, const DemoLab& lab)
     window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
     window.files()->openFile(lab.vehicleConfigPath());
     QString error;
+    if (!window.linksPage()->addConfigFiles({lab.cloudConfigPath()}, &error)) // both bridges' links
+        CliOutput::err(error);
     if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
         CliOutput::err(error);
     window.pages()->setCurrentWidget(window.measurePage());

@@ -5,8 +5,10 @@
 #include "config/problemmodel.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "watch/watchsession.h"
 #include "widgets/common/problemspanel.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/map/mappage.h"
@@ -25,6 +27,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTimer>
 #include <QUndoStack>
 
 using namespace Qt::StringLiterals;
@@ -41,6 +44,8 @@ MainWindow::MainWindow(QWidget* parent)
     , m_map(new MapPage(m_session, m_document, m_undo, m_pages))
     , m_measurePage(new MeasurePage(m_measure, m_pages))
     , m_reports(new ReportsPage(m_pages))
+    , m_watch(new WatchSession(m_session, this))
+    , m_links(new LinksPage(m_watch, m_pages))
     , m_configEditor(m_map->editor())
     , m_problemStatus(new QLabel(this))
 {
@@ -50,6 +55,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_map, tr("Map"));
     m_pages->addTab(m_measurePage, tr("Measure"));
     m_pages->addTab(m_reports, tr("Reports"));
+    m_pages->addTab(m_links, tr("Links"));
+    watchTheMapConfig();
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
     connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
             [this](const QString& path) { m_reports->addInputs({path}); });
@@ -85,6 +92,22 @@ MainWindow::~MainWindow()
     // Pages first, while the window is still whole: an open cell editor commits on destruction
     // and the edit reaches this window's slots.
     delete m_pages;
+}
+
+/// The Links page watches the config open on the Map page, as it is edited (a second after the
+/// last edit, not at every keystroke).
+void MainWindow::watchTheMapConfig()
+{
+    auto* debounce = new QTimer(this);
+    debounce->setSingleShot(true);
+    debounce->setInterval(1000);
+    connect(debounce, &QTimer::timeout, this, [this] {
+        const QString path = m_document->filePath();
+        m_links->setMapConfig(path.isEmpty() ? tr("untitled") : QFileInfo(path).completeBaseName(),
+                              m_document->config());
+    });
+    connect(m_document, &ConfigDocument::resetDone, debounce, qOverload<>(&QTimer::start));
+    connect(m_document, &ConfigDocument::problemsChanged, debounce, qOverload<>(&QTimer::start));
 }
 
 void MainWindow::createMenus()

@@ -5,6 +5,8 @@
 
 class ConfigDocument;
 class DiscoverPage;
+class LinksPage;
+class WatchSession;
 class MapPage;
 class MeasurePage;
 class MeasureSession;
@@ -35,6 +37,8 @@ public:
     MeasurePage* measurePage() const { return m_measurePage; }
     MeasureSession* measure() const { return m_measure; }
     ReportsPage* reportsPage() const { return m_reports; }
+    LinksPage* linksPage() const { return m_links; }
+    WatchSession* watch() const { return m_watch; }
     QTabWidget* pages() const { return m_pages; }
 
 protected:
@@ -42,6 +46,7 @@ protected:
 
 private:
     void createMenus();
+    void watchTheMapConfig();
     void updateTitle();
     void updateRecentMenu(const QStringList& files);
 
@@ -55,6 +60,8 @@ private:
     MapPage* m_map;
     MeasurePage* m_measurePage;
     ReportsPage* m_reports;
+    WatchSession* m_watch;
+    LinksPage* m_links;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;

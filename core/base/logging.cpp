@@ -11,6 +11,7 @@ Q_LOGGING_CATEGORY(lcReport, "bridgescope.report", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcBridge, "bridgescope.bridge", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcSession, "bridgescope.session", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcDemo, "bridgescope.demo", QtInfoMsg)
+Q_LOGGING_CATEGORY(lcWatch, "bridgescope.watch", QtInfoMsg)
 
 namespace Logging {
 

@@ -16,6 +16,7 @@ Q_DECLARE_LOGGING_CATEGORY(lcReport) ///< bridgescope.report: inputs loaded, the
 Q_DECLARE_LOGGING_CATEGORY(lcBridge) ///< bridgescope.bridge: the reference bridge's mappings
 Q_DECLARE_LOGGING_CATEGORY(lcSession) ///< bridgescope.session: live and measure sessions
 Q_DECLARE_LOGGING_CATEGORY(lcDemo) ///< bridgescope.demo: the demo lab's processes
+Q_DECLARE_LOGGING_CATEGORY(lcWatch) ///< bridgescope.watch: links watched, their events
 
 namespace Logging {
 /// The category names, for --help and the tests.

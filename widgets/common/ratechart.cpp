@@ -33,13 +33,15 @@ void RateChart::setSamples(const QList<double>& samples, const QString& unit)
     QList<QPointF> points;
     points.reserve(samples.size());
     double top = 0;
+    double bottom = 0; // rates never go below 0; a latency between hosts whose clocks differ may
     const int n = int(samples.size());
     for (int i = 0; i < n; ++i) {
         points.append(QPointF(i - n + 1, samples[i]));
         top = std::max(top, samples[i]);
+        bottom = std::min(bottom, samples[i]);
     }
     m_series->replace(points);
     m_x->setRange(std::min(-10, 1 - n), 0);
-    m_y->setRange(0, top > 0 ? top * 1.15 : 1);
+    m_y->setRange(bottom < 0 ? bottom * 1.15 : 0, top > 0 ? top * 1.15 : (bottom < 0 ? 0 : 1));
     m_y->setTitleText(unit);
 }

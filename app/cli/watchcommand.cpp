@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: MIT
+#include "watchcommand.h"
+
+#include "app/cli/clioutput.h"
+#include "base/wallclock.h"
+#include "base/yamllimits.h"
+#include "config/configreader.h"
+#include "ros/rosmasterapi.h"
+#include "session/livesession.h"
+#include "watch/watchmetrics.h"
+#include "watch/watchsession.h"
+
+#include <QCommandLineParser>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QTimer>
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
+using CliOutput::out;
+
+namespace {
+class Watch
+{
+    Q_DECLARE_TR_FUNCTIONS(WatchCommand)
+};
+
+/// What the command line asks for.
+struct WatchRequest
+{
+    QList<std::pair<QString, BridgeConfig>> configs; ///< (name, config)
+    MqttProfile broker;
+    QString masterUri;
+    WatchRules rules;
+    QString metrics; ///< HOST:PORT, empty: none
+    QString eventsFile; ///< empty: none
+    double seconds = 0; ///< 0: until Ctrl+C
+};
+
+/// Reads the configs; their names are the files' base names (made unique).
+bool readConfigs(const QStringList& paths, WatchRequest* request)
+{
+    QSet<QString> names;
+    for (const QString& path : paths) {
+        QString why;
+        const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
+        if (!bytes) {
+            err(why);
+            return false;
+        }
+        const ConfigReadResult read = ConfigReader::read(*bytes);
+        if (!read.parsed) {
+            err(Watch::tr("%1: not a bridge config: %2")
+                    .arg(path, read.problems.isEmpty() ? QString() : read.problems.first().message));
+            return false;
+        }
+        QString name = QFileInfo(path).completeBaseName();
+        for (int n = 2; names.contains(name); ++n)
+            name = QFileInfo(path).completeBaseName() + u'#' + QString::number(n);
+        names.insert(name);
+        request->configs.append({name, read.config});
+    }
+    return true;
+}
+
+/// The broker of the first config (its host, port, TLS and credentials), for a watch without --broker.
+MqttProfile brokerOf(const BridgeConfig& c)
+{
+    const bool tls = c.effective(OptionScope::Broker, u"tls.enabled"_s) == u"true"_s;
+    MqttProfile p = MqttProfile::fromUrl(u"%1://%2:%3"_s.arg(tls ? u"ssl"_s : u"tcp"_s,
+                                                             c.effective(OptionScope::Broker, u"host"_s),
+                                                             c.effective(OptionScope::Broker, u"port"_s)));
+    if (tls)
+        p.caFile = c.effective(OptionScope::Broker, u"tls.ca_certificate"_s);
+    p.username = c.effective(OptionScope::Broker, u"user"_s);
+    p.password = c.effective(OptionScope::Broker, u"pass"_s);
+    return p;
+}
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseWatch(const QStringList& arguments, WatchRequest* request)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption broker(u"broker"_s,
+                                    Watch::tr("Broker URL (default: the first config's broker)."), u"URL"_s);
+    const QCommandLineOption master(u"ros-master"_s, Watch::tr("ROS master URI (default $ROS_MASTER_URI)."),
+                                    u"URI"_s, RosMasterApi::defaultMasterUri());
+    const QCommandLineOption rules(
+        u"rules"_s, Watch::tr("Rules YAML: thresholds for all links and per link."), u"RULES.yaml"_s);
+    const QCommandLineOption metrics(
+        u"metrics"_s,
+        Watch::tr("Serve Prometheus metrics at http://HOST:PORT/metrics (e.g. 127.0.0.1:9464)."),
+        u"HOST:PORT"_s);
+    const QCommandLineOption events(u"events-jsonl"_s,
+                                    Watch::tr("Append every event to FILE as a JSON line."), u"FILE"_s);
+    const QCommandLineOption seconds(u"seconds"_s, Watch::tr("Stop after S seconds (default: at Ctrl+C)."),
+                                     u"S"_s);
+    parser.addOptions({broker, master, rules, metrics, events, seconds});
+    parser.addPositionalArgument(u"CONFIG"_s, Watch::tr("mqtt_client configs whose mappings are watched."),
+                                 u"CONFIG.yaml..."_s);
+    QStringList args = arguments;
+    args.replace(0, u"bridgescope watch"_s);
+    const int parsed = CliOutput::parseCommand(
+        parser, args,
+        Watch::tr("Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages "
+                  "lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the "
+                  "bridges' state. Every change of a link's state is an event, printed as a JSON line.\n"
+                  "Exit status: 0 stopped, 1 the metrics port could not be served, 2 bad options."));
+    if (parsed >= 0)
+        return parsed;
+    if (parser.positionalArguments().isEmpty()) {
+        err(Watch::tr("watch needs at least one bridge config; see bridgescope watch --help"));
+        return ExitUsage;
+    }
+    if (!readConfigs(parser.positionalArguments(), request))
+        return ExitUsage;
+    bool ok = true;
+    request->seconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
+    if (!ok || request->seconds < 0) {
+        err(Watch::tr("--seconds takes a number of seconds"));
+        return ExitUsage;
+    }
+    QString why;
+    request->broker = parser.isSet(broker) ? MqttProfile::fromUrl(parser.value(broker))
+                                           : brokerOf(request->configs.first().second);
+    if (!request->broker.validate(&why)) {
+        err(why);
+        return ExitUsage;
+    }
+    if (parser.isSet(rules)) {
+        const std::optional<WatchRules> r = WatchRules::load(parser.value(rules), &why);
+        if (!r) {
+            err(why);
+            return ExitUsage;
+        }
+        request->rules = *r;
+    }
+    request->masterUri = parser.value(master);
+    request->metrics = parser.value(metrics);
+    request->eventsFile = parser.value(events);
+    return -1;
+}
+
+/// Watches until the time is up or Ctrl+C; events on stdout (and the file), a summary on stderr.
+int runWatch(const WatchRequest& request)
+{
+    std::unique_ptr<WatchMetrics> metrics;
+    QString why;
+    if (!request.metrics.isEmpty()) {
+        metrics = WatchMetrics::serve(request.metrics, &why);
+        if (!metrics) {
+            err(why);
+            return ExitFailed;
+        }
+        err(Watch::tr("metrics at http://%1/metrics (port %2)").arg(request.metrics).arg(metrics->port()));
+    }
+    QFile events(request.eventsFile);
+    if (!request.eventsFile.isEmpty() && !events.open(QIODevice::WriteOnly | QIODevice::Append)) {
+        err(Watch::tr("%1: %2").arg(request.eventsFile, events.errorString()));
+        return ExitUsage;
+    }
+    LiveSession live;
+    live.setRosMasterUri(request.masterUri);
+    live.connectBroker(request.broker);
+    WatchSession watch(&live);
+    watch.setRules(request.rules);
+    watch.setConfigs(request.configs);
+    LinkMonitor* monitor = watch.monitor();
+    const auto print = [&events](const WatchEvent& e) {
+        const QByteArray line = QJsonDocument(e.toJson()).toJson(QJsonDocument::Compact);
+        out(QString::fromUtf8(line));
+        if (events.isOpen()) {
+            events.write(line + '\n');
+            events.flush();
+        }
+    };
+    QObject::connect(monitor, &LinkMonitor::eventStarted, print);
+    QObject::connect(monitor, &LinkMonitor::eventEnded, print);
+    // The metrics follow the counts four times a second (rates and percentiles change once a second).
+    QTimer metricsTimer;
+    if (metrics) {
+        QObject::connect(&metricsTimer, &QTimer::timeout, [&] { metrics->update(*monitor); });
+        metricsTimer.start(250);
+    }
+    err(Watch::tr("watching %n link(s) of %1; Ctrl+C stops", nullptr, monitor->linkCount())
+            .arg(request.broker.url));
+    const int status = CliOutput::runUntil(
+        [&](qint64 elapsedMs) -> std::optional<int> {
+            if (request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000))
+                return ExitOk;
+            return std::nullopt;
+        },
+        [&](qint64 elapsedMs) {
+            if (elapsedMs / 1000 % 10 != 0)
+                return;
+            int counts[3] = {0, 0, 0};
+            for (int i = 0; i < monitor->linkCount(); ++i)
+                ++counts[int(monitor->level(i))];
+            err(Watch::tr("%1 s: %2 ok, %3 warning, %4 alert")
+                    .arg(elapsedMs / 1000)
+                    .arg(counts[0])
+                    .arg(counts[1])
+                    .arg(counts[2]));
+        });
+    monitor->closeAll(wallClockNs());
+    return status;
+}
+} // namespace
+
+int runWatchCommand(const QStringList& arguments)
+{
+    WatchRequest request;
+    if (const int status = parseWatch(arguments, &request); status >= 0)
+        return status;
+    return runWatch(request);
+}

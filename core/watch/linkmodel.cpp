@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+#include "linkmodel.h"
+
+#include <QDateTime>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr int kHistorySeconds = 300;
+constexpr qsizetype kMaxEvents = 10000;
+
+QString hz(double v)
+{
+    return QString::number(v, 'f', v < 10 ? 1 : 0);
+}
+
+QString ms(double v)
+{
+    return std::isfinite(v) ? QString::number(v, 'f', v < 10 ? 2 : 1) : u"–"_s;
+}
+
+QString levelText(LinkLevel l)
+{
+    switch (l) {
+    case LinkLevel::Ok:
+        return LinkModel::tr("ok");
+    case LinkLevel::Warning:
+        return LinkModel::tr("warning");
+    case LinkLevel::Alert:
+        return LinkModel::tr("alert");
+    }
+    return QString();
+}
+
+QString timeText(qint64 ns)
+{
+    return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(u"HH:mm:ss"_s);
+}
+} // namespace
+
+LinkModel::LinkModel(LinkMonitor* monitor, QObject* parent)
+    : QAbstractTableModel(parent)
+    , m_monitor(monitor)
+{
+    connect(monitor, &LinkMonitor::refreshed, this, &LinkModel::refresh);
+    connect(monitor, &LinkMonitor::eventStarted, this, &LinkModel::onEvent);
+    connect(monitor, &LinkMonitor::eventEnded, this, &LinkModel::onEvent);
+    refresh();
+}
+
+void LinkModel::onEvent(const WatchEvent& e)
+{
+    const QString text = e.endNs > 0
+        ? tr("%1 ended after %2 s").arg(e.reasons.join(u", "_s)).arg(e.durationSeconds(), 0, 'f', 1)
+        : tr("%1 since %2").arg(e.reasons.join(u", "_s), timeText(e.startNs));
+    if (e.subject.startsWith(u"bridge:"_s)) {
+        for (int i = 0; i < m_monitor->linkCount(); ++i)
+            if (u"bridge:"_s + m_monitor->link(i).bridge() == e.subject)
+                m_lastEvents.insert(m_monitor->link(i).id(), text);
+    } else {
+        m_lastEvents.insert(e.subject, text);
+    }
+}
+
+void LinkModel::refresh()
+{
+    const int n = m_monitor->linkCount();
+    bool same = n == m_rows.size();
+    for (int i = 0; same && i < n; ++i)
+        same = m_rows[i].id == m_monitor->link(i).id();
+    if (!same) {
+        beginResetModel();
+        m_rows.clear();
+        m_rows.resize(n);
+        for (int i = 0; i < n; ++i)
+            m_rows[i].id = m_monitor->link(i).id();
+    }
+    for (int i = 0; i < n; ++i) {
+        Row& r = m_rows[i];
+        r.figures = m_monitor->figures(i);
+        r.level = m_monitor->level(i);
+        r.reasons = m_monitor->reasons(i);
+        r.lastEvent = m_lastEvents.value(r.id);
+        const std::vector<LinkMonitor::HistoryPoint> h = m_monitor->history(i);
+        r.history.clear();
+        const std::size_t first = h.size() > kHistorySeconds ? h.size() - kHistorySeconds : 0;
+        for (std::size_t k = first; k < h.size(); ++k)
+            r.history << h[k].rateHz;
+    }
+    if (!same)
+        endResetModel();
+    else if (n > 0)
+        emit dataChanged(index(0, 0), index(n - 1, ColumnCount - 1));
+}
+
+int LinkModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int LinkModel::columnCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant LinkModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const Row& r = m_rows[index.row()];
+    const LinkDef& d = m_monitor->link(index.row());
+    const LinkFigures& f = r.figures;
+    if (role == LevelRole)
+        return int(r.level);
+    if (role == LinkIdRole)
+        return r.id;
+    if (role == HistoryRole)
+        return QVariant::fromValue(r.history);
+    if (role == Qt::ToolTipRole) {
+        QString tip = u"%1 → %2\n%3"_s.arg(d.sourceTopic(), d.destinationTopic(),
+                                           BridgeColumn == index.column() ? d.config : d.bridge());
+        if (!r.lastEvent.isEmpty())
+            tip += u"\n"_s + r.lastEvent;
+        if ((index.column() == P50Column || index.column() == P99Column) && f.latencyP50Ms < 0)
+            tip += u"\n"_s + tr("A negative latency: the clocks of the bridge and of this computer differ.");
+        return tip;
+    }
+    if (role == Qt::TextAlignmentRole && index.column() >= SourceRateColumn && index.column() <= P99Column)
+        return int(Qt::AlignRight | Qt::AlignVCenter);
+    if (role == ValueRole || role == Qt::DisplayRole) {
+        const bool value = role == ValueRole;
+        switch (index.column()) {
+        case StateColumn:
+            return value ? QVariant(int(r.level))
+                         : QVariant(r.reasons.isEmpty() ? levelText(r.level) : r.reasons.join(u", "_s));
+        case BridgeColumn:
+            return d.bridge();
+        case DirectionColumn:
+            return d.direction == Direction::Ros2Mqtt ? tr("ROS → MQTT") : tr("MQTT → ROS");
+        case SourceColumn:
+            return d.sourceTopic();
+        case DestinationColumn:
+            return d.destinationTopic();
+        case SourceRateColumn:
+            return value ? QVariant(f.source.rateHz) : QVariant(hz(f.source.rateHz));
+        case DestinationRateColumn:
+            return value ? QVariant(f.destination.rateHz) : QVariant(hz(f.destination.rateHz));
+        case LossColumn:
+            return value ? QVariant(f.lossPercent)
+                         : QVariant(f.lost > 0 ? tr("%1 % (%2)").arg(f.lossPercent, 0, 'f', 1).arg(f.lost)
+                                               : tr("%1 %").arg(f.lossPercent, 0, 'f', 1));
+        case P50Column:
+            return value ? QVariant(f.latencyP50Ms) : QVariant(ms(f.latencyP50Ms));
+        case P99Column:
+            return value ? QVariant(f.latencyP99Ms) : QVariant(ms(f.latencyP99Ms));
+        case HistoryColumn:
+            return value ? QVariant(f.destination.rateHz) : QVariant();
+        case LastEventColumn:
+            return r.lastEvent;
+        }
+    }
+    return {};
+}
+
+QVariant LinkModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case StateColumn:
+        return tr("State");
+    case BridgeColumn:
+        return tr("Bridge");
+    case DirectionColumn:
+        return tr("Direction");
+    case SourceColumn:
+        return tr("Source");
+    case DestinationColumn:
+        return tr("Destination");
+    case SourceRateColumn:
+        return tr("Source Hz");
+    case DestinationRateColumn:
+        return tr("Dest. Hz");
+    case LossColumn:
+        return tr("Lost");
+    case P50Column:
+        return tr("p50 ms");
+    case P99Column:
+        return tr("p99 ms");
+    case HistoryColumn:
+        return tr("Rate, 5 min");
+    case LastEventColumn:
+        return tr("Last event");
+    }
+    return {};
+}
+
+EventLogModel::EventLogModel(LinkMonitor* monitor, QObject* parent)
+    : QAbstractTableModel(parent)
+{
+    connect(monitor, &LinkMonitor::eventStarted, this, &EventLogModel::add);
+    connect(monitor, &LinkMonitor::eventEnded, this, &EventLogModel::add);
+}
+
+void EventLogModel::add(const WatchEvent& e)
+{
+    beginInsertRows({}, 0, 0);
+    m_events.prepend(e);
+    endInsertRows();
+    if (m_events.size() > kMaxEvents) {
+        beginRemoveRows({}, int(kMaxEvents), int(m_events.size()) - 1);
+        m_events.resize(kMaxEvents);
+        endRemoveRows();
+    }
+}
+
+int EventLogModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : int(m_events.size());
+}
+
+int EventLogModel::columnCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant EventLogModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_events.size())
+        return {};
+    const WatchEvent& e = m_events[index.row()];
+    if (role == LinkModel::LevelRole)
+        return int(e.endNs > 0 ? LinkLevel::Ok : e.level);
+    if (role != Qt::DisplayRole)
+        return {};
+    switch (index.column()) {
+    case TimeColumn:
+        return timeText(e.endNs > 0 ? e.endNs : e.startNs);
+    case LevelColumn:
+        return e.endNs > 0 ? tr("%1 ended").arg(levelText(e.level)) : levelText(e.level);
+    case SubjectColumn:
+        return e.subject.startsWith(u"bridge:"_s)
+            ? tr("bridge %1").arg(e.subject.mid(7))
+            : u"%1 → %2"_s.arg(e.direction == u"ros2mqtt"_s ? e.rosTopic : e.mqttTopic,
+                               e.direction == u"ros2mqtt"_s ? e.mqttTopic : e.rosTopic);
+    case WhatColumn:
+        return e.detail.isEmpty() ? e.reasons.join(u", "_s) : e.detail;
+    case DurationColumn:
+        return e.endNs > 0 ? tr("%1 s").arg(e.durationSeconds(), 0, 'f', 1) : QString();
+    }
+    return {};
+}
+
+QVariant EventLogModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case TimeColumn:
+        return tr("Time");
+    case LevelColumn:
+        return tr("Level");
+    case SubjectColumn:
+        return tr("Link");
+    case WhatColumn:
+        return tr("What");
+    case DurationColumn:
+        return tr("Duration");
+    }
+    return {};
+}

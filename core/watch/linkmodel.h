@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "watch/linkmonitor.h"
+
+#include <QAbstractTableModel>
+#include <QList>
+
+/// The Links page's table: one row per link of a LinkMonitor, sorted by bridge then topic by a
+/// proxy. Rows change only when the links do; the figures of every row change with one
+/// dataChanged per refresh (once a second), so thousands of links cost one repaint a second.
+class LinkModel : public QAbstractTableModel
+{
+    Q_OBJECT
+public:
+    enum Column {
+        StateColumn,
+        BridgeColumn,
+        DirectionColumn,
+        SourceColumn,
+        DestinationColumn,
+        SourceRateColumn,
+        DestinationRateColumn,
+        LossColumn,
+        P50Column,
+        P99Column,
+        HistoryColumn, ///< the destination rate of the last minutes, drawn as a sparkline
+        LastEventColumn,
+        ColumnCount
+    };
+    enum Role {
+        LevelRole = Qt::UserRole + 1, ///< int(LinkLevel)
+        LinkIdRole,
+        HistoryRole, ///< QList<double>: rate per second, oldest first
+        ValueRole, ///< the number behind a figure (sorting)
+    };
+
+    explicit LinkModel(LinkMonitor* monitor, QObject* parent = nullptr);
+
+    /// Takes the monitor's links and figures (connected to LinkMonitor::refreshed).
+    void refresh();
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+private:
+    void onEvent(const WatchEvent& e);
+
+    LinkMonitor* m_monitor;
+    struct Row
+    {
+        QString id;
+        LinkFigures figures;
+        LinkLevel level = LinkLevel::Ok;
+        QStringList reasons;
+        QList<double> history;
+        QString lastEvent;
+    };
+    QList<Row> m_rows;
+    QHash<QString, QString> m_lastEvents; ///< by link id
+};
+
+/// The event log: every event that started or ended, newest first (at most 10,000); LevelRole
+/// gives the level an event put its link in (an end: ok).
+class EventLogModel : public QAbstractTableModel
+{
+    Q_OBJECT
+public:
+    enum Column { TimeColumn, LevelColumn, SubjectColumn, WhatColumn, DurationColumn, ColumnCount };
+
+    explicit EventLogModel(LinkMonitor* monitor, QObject* parent = nullptr);
+    const WatchEvent& eventAt(int row) const { return m_events.at(row); }
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+private:
+    void add(const WatchEvent& e);
+    QList<WatchEvent> m_events;
+};

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <QCoreApplication>
+#include <QString>
+
+class LinkMonitor;
+
+/// The links' figures for Prometheus, served at http://HOST:PORT/metrics by prometheus-cpp's
+/// pull exposer (the only code that uses prometheus-cpp).
+///
+/// Per link (labels config, client, direction, topic = the ROS topic, mqtt_topic): counters of
+/// messages and bytes at each side, messages lost, stalls and Header.seq gaps; gauges of the rate
+/// at each side and the link's state (0 ok, 1 warning, 2 alert); a histogram of the latency in
+/// seconds. Per bridge (label bridge: its client id, else its config name): bridge_up (1 up, 0
+/// down, absent while unknown). The
+/// exposer answers on its own threads from metrics that update() sets on the owner's thread.
+class WatchMetrics
+{
+    Q_DECLARE_TR_FUNCTIONS(WatchMetrics)
+public:
+    /// Listens on `hostPort` ("127.0.0.1:9464", "[::1]:0" for any free port); nullptr with `error`.
+    static std::unique_ptr<WatchMetrics> serve(const QString& hostPort, QString* error);
+    ~WatchMetrics();
+    /// The port it listens on.
+    int port() const;
+    /// Brings every metric up to date with `monitor` (once a second is plenty).
+    void update(LinkMonitor& monitor);
+
+private:
+    WatchMetrics();
+    struct Private;
+    std::unique_ptr<Private> d;
+};

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// The Links page on the demo lab's real traffic (mosquitto, rosmaster, two reference bridges and
+// the demo nodes as child processes): the vehicle config open on the Map page and the cloud config
+// added on the page become four links that carry 10 Hz; the filter, the sorting and the detail
+// pane work; killing the vehicle bridge turns its links red with stall and bridge-down events in
+// the log, and a notification is raised while the window is not active.
+#include "app/gui/mainwindow.h"
+#include "demo/demolab.h"
+#include "watch/linkmodel.h"
+#include "watch/watchsession.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
+#include "widgets/map/configfilecontroller.h"
+
+#include <csignal>
+#include <QApplication>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSortFilterProxyModel>
+#include <QTableView>
+#include <QTabWidget>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+class TestLinksPage : public QObject
+{
+    Q_OBJECT
+private slots:
+    void showsTheLabsLinksAndTheirOutages()
+    {
+        DemoLab lab;
+        DemoLab::Options options;
+        options.program = QStringLiteral(BRIDGESCOPE_BINARY);
+        options.payloadBytes = 20000; // a lighter point cloud: the page, not the lab, is tested
+        QString error;
+        QVERIFY2(lab.start(options, &error), qPrintable(error));
+
+        MainWindow window;
+        window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
+        window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
+        window.files()->openFile(lab.vehicleConfigPath());
+        LinksPage* page = window.linksPage();
+        QVERIFY2(page->addConfigFiles({lab.cloudConfigPath()}, &error), qPrintable(error));
+        QVERIFY(!page->addConfigFiles({lab.directory() + u"/mosquitto.conf"_s}, &error));
+        QVERIFY(error.contains(u"mosquitto.conf"_s));
+        window.pages()->setCurrentWidget(page);
+        window.resize(1280, 800);
+        window.show();
+
+        // The Map page's config arrives a second after it opened: four links, all carrying data.
+        LinkModel* model = page->linkModel();
+        QTRY_COMPARE_WITH_TIMEOUT(model->rowCount(), 4, 10000);
+        const auto healthy = [&] {
+            for (int r = 0; r < model->rowCount(); ++r) {
+                const double hz
+                    = model->index(r, LinkModel::DestinationRateColumn).data(LinkModel::ValueRole).toDouble();
+                if (hz < 8 || model->index(r, 0).data(LinkModel::LevelRole).toInt() != int(LinkLevel::Ok))
+                    return false;
+            }
+            return true;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(healthy(), 30000);
+        QVERIFY(page->summaryLabel()->text().contains(u"4 ok"_s));
+        // The stamped vehicle → cloud link has its latency.
+        bool latency = false;
+        for (int r = 0; r < model->rowCount(); ++r)
+            latency
+                = latency || model->index(r, LinkModel::P50Column).data(LinkModel::ValueRole).toDouble() > 0;
+        QVERIFY(latency);
+
+        // Filtering and the detail pane.
+        QTableView* table = page->linkView();
+        page->findChild<QLineEdit*>(u"linkFilter"_s)->setText(u"object_list"_s);
+        QCOMPARE(table->model()->rowCount(), 2);
+        page->findChild<QLineEdit*>(u"linkFilter"_s)->clear();
+        QCOMPARE(table->model()->rowCount(), 4);
+        table->setCurrentIndex(table->model()->index(0, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(page->detailLabel()->text().contains(u"messages at the source"_s), 3000);
+        // Sorted by destination rate, numerically.
+        table->sortByColumn(LinkModel::DestinationRateColumn, Qt::DescendingOrder);
+        const double first = table->model()
+                                 ->index(0, LinkModel::DestinationRateColumn)
+                                 .data(LinkModel::ValueRole)
+                                 .toDouble();
+        const double last = table->model()
+                                ->index(3, LinkModel::DestinationRateColumn)
+                                .data(LinkModel::ValueRole)
+                                .toDouble();
+        QVERIFY(first >= last);
+        window.grab().save(QDir::temp().filePath(u"bridgescope-links.png"_s));
+
+        // The vehicle bridge dies: its links stall and it is down, in the table and the log.
+        qint64 vehicleBridge = 0;
+        for (qint64 pid : lab.processIds()) {
+            QFile cmdline(u"/proc/%1/cmdline"_s.arg(pid));
+            if (cmdline.open(QIODevice::ReadOnly)) {
+                const QByteArray args = cmdline.readAll();
+                if (args.contains("bridge") && args.contains("vehicle.yaml"))
+                    vehicleBridge = pid;
+            }
+        }
+        QVERIFY(vehicleBridge > 0);
+        // Another window is in front: an alert becomes a notification.
+        QWidget other;
+        other.show();
+        QApplication::setActiveWindow(&other);
+        QTRY_VERIFY(!window.isActiveWindow());
+        const int notifiedBefore = page->notificationsShown();
+        ::kill(pid_t(vehicleBridge), SIGKILL);
+        const auto alerts = [&] {
+            int n = 0;
+            for (int r = 0; r < model->rowCount(); ++r)
+                n += model->index(r, 0).data(LinkModel::LevelRole).toInt() == int(LinkLevel::Alert);
+            return n;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(alerts() >= 1, 10000);
+        EventLogModel* log = page->eventModel();
+        QTRY_VERIFY_WITH_TIMEOUT(log->rowCount() >= 2, 5000);
+        bool bridgeDown = false;
+        bool stall = false;
+        for (int r = 0; r < log->rowCount(); ++r) {
+            bridgeDown = bridgeDown || log->eventAt(r).reasons.contains(u"bridge_down"_s);
+            stall = stall || log->eventAt(r).reasons.contains(u"stall"_s);
+        }
+        QVERIFY(bridgeDown);
+        QVERIFY(stall);
+        QVERIFY(page->notificationsShown() > notifiedBefore);
+        QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
+        lab.stop();
+    }
+};
+
+QTEST_MAIN(TestLinksPage)
+#include "tst_linkspage.moc"

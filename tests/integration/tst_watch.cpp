@@ -1,0 +1,505 @@
+// SPDX-License-Identifier: MIT
+// `bridgescope watch` against a real mosquitto, rosmaster and reference bridge (a child process):
+// four links (ROS → MQTT stamped with a Header and plain, MQTT → ROS stamped and plain) carry
+// what this test publishes at 10 Hz. The watch's figures (read from its /metrics) must match what
+// was sent; killing the bridge must raise stall and bridge-down events within two thresholds and
+// restarting it must end them; a paused source is "source stopped", not a stall; a real Prometheus
+// server scrapes the metrics; broker and master restarts are survived, every link resuming.
+//
+// WATCH_BROKER_RESTARTS and WATCH_MASTER_RESTARTS set the restart rounds: the `soak` label runs
+// 10 and 3, the default run 2 and 1.
+#include "base/wallclock.h"
+#include "mqtt/mqttlink.h"
+#include "ros/rosbytes.h"
+#include "ros/rosendpoint.h"
+#include "testservers.h"
+#include "wire/mqttclientwire.h"
+
+#include <geometry_msgs/PointStamped.h>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTcpSocket>
+#include <QTest>
+#include <QTimer>
+#include <QUrl>
+#include <QUrlQuery>
+#include <std_msgs/String.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+int envInt(const char* name, int fallback)
+{
+    bool ok = false;
+    const int v = qEnvironmentVariableIntValue(name, &ok);
+    return ok ? v : fallback;
+}
+
+template<typename M> RosRawMessage rosMessage(const M& message)
+{
+    return {RosBytes::of(message), QString::fromLatin1(ros::message_traits::DataType<M>::value()),
+            QString::fromLatin1(ros::message_traits::MD5Sum<M>::value()),
+            QString::fromLatin1(ros::message_traits::Definition<M>::value())};
+}
+
+/// GET http://127.0.0.1:port/path; the body, or empty.
+QByteArray httpGet(quint16 port, const QString& path)
+{
+    QTcpSocket s;
+    s.connectToHost(u"127.0.0.1"_s, port);
+    if (!s.waitForConnected(3000))
+        return {};
+    s.write("GET " + path.toUtf8() + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n");
+    QByteArray all;
+    while (s.state() == QAbstractSocket::ConnectedState && s.waitForReadyRead(5000))
+        all += s.readAll();
+    all += s.readAll();
+    const qsizetype body = all.indexOf("\r\n\r\n");
+    return body < 0 ? QByteArray() : all.mid(body + 4);
+}
+
+/// One sample of the Prometheus text format, by metric name and the labels it must have.
+double sample(const QByteArray& metrics, const QString& name, const QStringList& labels)
+{
+    for (const QByteArray& raw : metrics.split('\n')) {
+        const QString line = QString::fromUtf8(raw);
+        if (!line.startsWith(name + u'{'))
+            continue;
+        bool all = true;
+        for (const QString& l : labels)
+            all = all && line.contains(l);
+        if (all)
+            return line.section(u' ', -1).toDouble();
+    }
+    return qQNaN();
+}
+
+const QString kConfigTemplate
+    = u"broker:\n  host: 127.0.0.1\n  port: %1\n"
+      u"client:\n  id: watch_bridge\n  last_will:\n    topic: w/status\n    message: offline\n"
+      u"bridge:\n  ros2mqtt:\n"
+      u"    - {ros_topic: /w/stamped, mqtt_topic: w/stamped, inject_timestamp: true}\n"
+      u"    - {ros_topic: /w/plain, mqtt_topic: w/plain}\n"
+      u"  mqtt2ros:\n"
+      u"    - {mqtt_topic: w/in_stamped, ros_topic: /w/in_stamped}\n"
+      u"    - {mqtt_topic: w/in_plain, ros_topic: /w/in_plain}\n"_s;
+} // namespace
+
+class TestWatch : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    RosEndpoint m_ros;
+    std::unique_ptr<MqttLink> m_mqtt;
+    std::unique_ptr<QProcess> m_bridge;
+    QProcess m_watch;
+    quint16 m_metricsPort = 0;
+    QString m_config;
+    QString m_eventsFile;
+    QList<QJsonObject> m_events; ///< every line the watch printed, in order
+    QByteArray m_pending;
+    int m_stampedPub = -1;
+    int m_plainPub = -1;
+    quint32 m_seq = 0;
+    quint32 m_inSeq = 0;
+    bool m_skipSeq = false; ///< the next stamped message skips one seq value
+    QSet<QString> m_paused; ///< sources not published now
+    QTimer m_tick;
+    QHash<QString, qint64> m_sent; ///< messages published per source
+    RosRawMessage m_pointType;
+    RosRawMessage m_stringType;
+
+    void startBridge()
+    {
+        m_bridge = std::make_unique<QProcess>();
+        m_bridge->setProcessEnvironment(m_servers.rosEnvironment());
+        m_bridge->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        m_bridge->start(QStringLiteral(BRIDGESCOPE_BINARY),
+                        {u"bridge"_s, m_config, u"--name"_s, u"watch_bridge"_s});
+        QVERIFY(m_bridge->waitForStarted(5000));
+    }
+
+    void publishAll()
+    {
+        const qint64 now = wallClockNs();
+        if (!m_paused.contains(u"/w/stamped"_s)) {
+            geometry_msgs::PointStamped p;
+            if (m_skipSeq) {
+                ++m_seq;
+                m_skipSeq = false;
+            }
+            p.header.seq = m_seq++;
+            p.point.x = 1;
+            if (m_ros.publish(m_stampedPub, RosBytes::of(p)))
+                ++m_sent[u"/w/stamped"_s];
+        }
+        if (!m_paused.contains(u"/w/plain"_s)) {
+            std_msgs::String s;
+            s.data = "plain";
+            if (m_ros.publish(m_plainPub, RosBytes::of(s)))
+                ++m_sent[u"/w/plain"_s];
+        }
+        if (!m_paused.contains(u"w/in_stamped"_s)) {
+            geometry_msgs::PointStamped p;
+            p.header.seq = m_inSeq++;
+            // Sent "20 ms ago": the bridge's latency topic must say at least that.
+            if (m_mqtt->publish(u"w/in_stamped"_s, MqttClientWire::stamped(now - 20'000'000, RosBytes::of(p)),
+                                0, false))
+                ++m_sent[u"w/in_stamped"_s];
+        }
+        if (!m_paused.contains(u"w/in_plain"_s)) {
+            std_msgs::String s;
+            s.data = "in";
+            if (m_mqtt->publish(u"w/in_plain"_s, RosBytes::of(s), 0, false))
+                ++m_sent[u"w/in_plain"_s];
+        }
+    }
+
+    void announce()
+    {
+        // As a sending mqtt_client would: the types, retained.
+        RosMsgTypeInfo point {m_pointType.md5, m_pointType.type, m_pointType.definition, true};
+        RosMsgTypeInfo text {m_stringType.md5, m_stringType.type, m_stringType.definition, false};
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/w/in_stamped"_s, MqttClientWire::encodeType(point), 0,
+                        true);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/w/in_plain"_s, MqttClientWire::encodeType(text), 0, true);
+    }
+
+    void readEvents()
+    {
+        m_pending += m_watch.readAllStandardOutput();
+        qsizetype nl;
+        while ((nl = m_pending.indexOf('\n')) >= 0) {
+            const QByteArray line = m_pending.left(nl);
+            m_pending.remove(0, nl + 1);
+            const QJsonDocument doc = QJsonDocument::fromJson(line);
+            if (doc.isObject())
+                m_events << doc.object();
+        }
+    }
+
+    /// Events since `from` that match.
+    QList<QJsonObject> events(int from, const QString& kind, const QString& subjectPart,
+                              const QString& reason = {})
+    {
+        readEvents();
+        QList<QJsonObject> out;
+        for (int i = from; i < m_events.size(); ++i) {
+            const QJsonObject& e = m_events[i];
+            if (e.value(u"event"_s).toString() == kind
+                && e.value(u"subject"_s).toString().contains(subjectPart)
+                && (reason.isEmpty() || e.value(u"reasons"_s).toArray().contains(reason)))
+                out << e;
+        }
+        return out;
+    }
+
+    QByteArray metrics() { return httpGet(m_metricsPort, u"/metrics"_s); }
+
+    double linkValue(const QByteArray& text, const QString& name, const QString& rosTopic,
+                     const QString& side = {})
+    {
+        QStringList labels {u"topic=\"%1\""_s.arg(rosTopic)};
+        if (!side.isEmpty())
+            labels << u"side=\"%1\""_s.arg(side);
+        return sample(text, name, labels);
+    }
+
+    /// Every link's destination count grows within `ms`; the links that did not go to `stuck`.
+    bool allLinksFlow(int ms, QStringList* stuck = nullptr)
+    {
+        const QByteArray before = metrics();
+        QTest::qWait(ms);
+        const QByteArray after = metrics();
+        QStringList still;
+        for (const QString& t : {u"/w/stamped"_s, u"/w/plain"_s, u"/w/in_stamped"_s, u"/w/in_plain"_s}) {
+            const double a = linkValue(before, u"bridgescope_link_messages_total"_s, t, u"destination"_s);
+            const double b = linkValue(after, u"bridgescope_link_messages_total"_s, t, u"destination"_s);
+            if (!(b > a))
+                still << t;
+        }
+        if (stuck)
+            *stuck = still;
+        return still.isEmpty();
+    }
+
+    /// Waits up to `ms` for every link to flow; says which did not.
+    void waitForAllLinks(int ms)
+    {
+        QElapsedTimer clock;
+        clock.start();
+        QStringList stuck;
+        while (!allLinksFlow(1000, &stuck) && clock.elapsed() < ms) { }
+        QVERIFY2(stuck.isEmpty(), qPrintable(u"no data on "_s + stuck.join(u", "_s)));
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
+        QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
+        QString error;
+        QVERIFY2(m_ros.start(u"watch_test"_s, m_servers.rosMasterUri(), {}, &error), qPrintable(error));
+        m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+        m_pointType = rosMessage(geometry_msgs::PointStamped());
+        m_stringType = rosMessage(std_msgs::String());
+        m_stampedPub = m_ros.advertise(u"/w/stamped"_s, m_pointType.type, m_pointType.md5,
+                                       m_pointType.definition, 10, false, &error);
+        QVERIFY2(m_stampedPub >= 0, qPrintable(error));
+        m_plainPub = m_ros.advertise(u"/w/plain"_s, m_stringType.type, m_stringType.md5,
+                                     m_stringType.definition, 10, false, &error);
+        QVERIFY2(m_plainPub >= 0, qPrintable(error));
+        announce();
+
+        m_config = m_servers.tempPath() + u"/lab.yaml"_s;
+        QFile f(m_config);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(kConfigTemplate.arg(m_servers.mosquittoPort()).toUtf8());
+        f.close();
+        startBridge();
+
+        m_metricsPort = TestServers::freePort();
+        m_eventsFile = m_servers.tempPath() + u"/events.jsonl"_s;
+        m_watch.setProcessEnvironment(m_servers.rosEnvironment());
+        m_watch.setReadChannel(QProcess::StandardOutput);
+        m_watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        m_watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                      {u"watch"_s, m_config, u"--ros-master"_s, m_servers.rosMasterUri(), u"--metrics"_s,
+                       u"127.0.0.1:%1"_s.arg(m_metricsPort), u"--events-jsonl"_s, m_eventsFile});
+        QVERIFY(m_watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(m_metricsPort, 10000));
+
+        connect(&m_tick, &QTimer::timeout, this, &TestWatch::publishAll);
+        m_tick.start(100);
+        // Every link carries data through the bridge, as the watch sees it.
+        waitForAllLinks(30000);
+    }
+
+    void cleanupTestCase()
+    {
+        m_tick.stop();
+        if (m_watch.state() != QProcess::NotRunning) {
+            m_watch.terminate();
+            QVERIFY(m_watch.waitForFinished(10000));
+            QCOMPARE(m_watch.exitStatus(), QProcess::NormalExit);
+            QCOMPARE(m_watch.exitCode(), 0);
+        }
+        if (m_bridge) {
+            m_bridge->terminate();
+            m_bridge->waitForFinished(10000);
+        }
+        m_mqtt.reset();
+        m_ros.shutdown();
+    }
+
+    void figuresMatchWhatWasSent()
+    {
+        QTest::qWait(2500); // the windows fill
+        const QByteArray before = metrics();
+        const QHash<QString, qint64> sentBefore = m_sent;
+        m_skipSeq = true;
+        QTest::qWait(6000);
+        const QByteArray after = metrics();
+        const QHash<QString, qint64> sent = m_sent;
+        const QList<std::pair<QString, QString>> links {{u"/w/stamped"_s, u"/w/stamped"_s},
+                                                        {u"/w/plain"_s, u"/w/plain"_s},
+                                                        {u"/w/in_stamped"_s, u"w/in_stamped"_s},
+                                                        {u"/w/in_plain"_s, u"w/in_plain"_s}};
+        for (const auto& [topic, source] : links) {
+            const auto delta = [&](const QString& name, const QString& side = {}) {
+                return linkValue(after, name, topic, side) - linkValue(before, name, topic, side);
+            };
+            const double published = double(sent.value(source) - sentBefore.value(source));
+            const double src = delta(u"bridgescope_link_messages_total"_s, u"source"_s);
+            const double dst = delta(u"bridgescope_link_messages_total"_s, u"destination"_s);
+            const QString what
+                = u"%1: published %2, watch saw %3 at the source and %4 at the destination"_s.arg(topic)
+                      .arg(published)
+                      .arg(src)
+                      .arg(dst);
+            // The metrics follow the links four times a second: the scrapes and the publisher are a
+            // few messages out of step; the two ends of a link are not.
+            QVERIFY2(qAbs(src - published) <= 5 && qAbs(dst - src) <= 2, qPrintable(what));
+            QCOMPARE(delta(u"bridgescope_link_lost_total"_s), 0.0);
+            const double rate = linkValue(after, u"bridgescope_link_rate_hz"_s, topic, u"destination"_s);
+            QVERIFY2(rate > 9 && rate < 11, qPrintable(topic + u": "_s + QString::number(rate)));
+            QCOMPARE(linkValue(after, u"bridgescope_link_state"_s, topic), 0.0);
+        }
+        // The skipped Header.seq is one gap on the stamped ROS → MQTT link, and nowhere else.
+        QCOMPARE(linkValue(after, u"bridgescope_link_seq_gaps_total"_s, u"/w/stamped"_s)
+                     - linkValue(before, u"bridgescope_link_seq_gaps_total"_s, u"/w/stamped"_s),
+                 1.0);
+        QCOMPARE(linkValue(after, u"bridgescope_link_seq_gaps_total"_s, u"/w/in_stamped"_s), 0.0);
+        // Latency: ROS → MQTT from the injected stamps (the bridge to us, a few ms); MQTT → ROS from
+        // the bridge's ~/latencies topic, which must say the 20 ms the payloads were backdated.
+        const auto meanMs = [&](const QString& topic) {
+            const double n = linkValue(after, u"bridgescope_link_latency_seconds_count"_s, topic)
+                - linkValue(before, u"bridgescope_link_latency_seconds_count"_s, topic);
+            const double sum = linkValue(after, u"bridgescope_link_latency_seconds_sum"_s, topic)
+                - linkValue(before, u"bridgescope_link_latency_seconds_sum"_s, topic);
+            return n > 30 ? 1000 * sum / n : qQNaN();
+        };
+        const double out = meanMs(u"/w/stamped"_s);
+        const double in = meanMs(u"/w/in_stamped"_s);
+        QVERIFY2(out >= 0 && out < 20, qPrintable(QString::number(out)));
+        QVERIFY2(in >= 20 && in < 45, qPrintable(QString::number(in)));
+        QVERIFY(qIsNaN(meanMs(u"/w/plain"_s)));
+    }
+
+    void aKilledBridgeStallsAndARestartEndsIt()
+    {
+        const int from = int(m_events.size());
+        QElapsedTimer clock;
+        clock.start();
+        m_bridge->kill();
+        QVERIFY(m_bridge->waitForFinished(5000));
+        // Stall: 5 periods of 100 ms, at least 1 s. Two thresholds, and the 250 ms of a check.
+        QTRY_VERIFY_WITH_TIMEOUT(
+            events(from, u"start"_s, u"bridge:watch_bridge"_s, u"bridge_down"_s).size() == 1, 2500);
+        QTRY_VERIFY_WITH_TIMEOUT(events(from, u"start"_s, u"|/w/"_s, u"stall"_s).size() == 4, 2500);
+        const qint64 detected = clock.elapsed();
+        QVERIFY2(detected <= 2500, qPrintable(QString::number(detected)));
+        // What the watch wrote to its events file is what it printed.
+        QFile file(m_eventsFile);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.readAll().contains("\"bridge_down\""));
+
+        const int restarted = int(m_events.size());
+        startBridge();
+        announce();
+        QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"|/w/"_s).size() == 4, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"bridge:watch_bridge"_s).size() == 1, 5000);
+        for (const QJsonObject& e : events(restarted, u"end"_s, u"|/w/"_s)) {
+            QVERIFY(e.value(u"duration_s"_s).toDouble() > 0.5);
+            QVERIFY(!e.value(u"end"_s).toString().isEmpty());
+        }
+        QVERIFY(allLinksFlow(1500));
+    }
+
+    void aPausedSourceIsNotAStall()
+    {
+        QTest::qWait(1000);
+        const int from = int(m_events.size());
+        m_paused.insert(u"/w/plain"_s);
+        QTest::qWait(5000); // past the 3 s of the default source_stopped rule
+        m_paused.clear();
+        QTRY_VERIFY_WITH_TIMEOUT(events(from, u"end"_s, u"|/w/plain|"_s, u"source_stopped"_s).size() == 1,
+                                 5000);
+        const QList<QJsonObject> started = events(from, u"start"_s, u"|/w/plain|"_s);
+        QCOMPARE(started.size(), 1);
+        QCOMPARE(started.first().value(u"level"_s).toString(), u"warning"_s);
+        QCOMPARE(started.first().value(u"reasons"_s).toArray(), QJsonArray {u"source_stopped"_s});
+        QVERIFY(events(from, u"start"_s, u"|/w/"_s, u"stall"_s).isEmpty());
+        QVERIFY(events(from, u"start"_s, u"bridge:"_s).isEmpty());
+    }
+
+    void prometheusScrapesTheLinks()
+    {
+        const QString prometheus = u"/usr/bin/prometheus"_s;
+        QVERIFY2(QFile::exists(prometheus), "Debian's prometheus package (scripts/setup.sh installs it)");
+        const quint16 port = TestServers::freePort();
+        const QString dir = m_servers.tempPath() + u"/prometheus"_s;
+        QFile config(m_servers.tempPath() + u"/prometheus.yml"_s);
+        QVERIFY(config.open(QIODevice::WriteOnly));
+        config.write(u"global:\n  scrape_interval: 1s\n  evaluation_interval: 1s\n"
+                     u"scrape_configs:\n  - job_name: bridgescope\n    static_configs:\n"
+                     u"      - targets: ['127.0.0.1:%1']\n"_s.arg(m_metricsPort)
+                         .toUtf8());
+        config.close();
+        QProcess server;
+        server.setProcessChannelMode(QProcess::MergedChannels);
+        server.start(prometheus,
+                     {u"--config.file="_s + config.fileName(), u"--storage.tsdb.path="_s + dir,
+                      u"--web.listen-address=127.0.0.1:%1"_s.arg(port)});
+        QVERIFY(server.waitForStarted(5000));
+        const auto query = [&](const QString& promql) {
+            QUrlQuery q;
+            q.addQueryItem(u"query"_s, promql);
+            const QByteArray body = httpGet(port, u"/api/v1/query?"_s + q.toString(QUrl::FullyEncoded));
+            const QJsonArray result = QJsonDocument::fromJson(body)
+                                          .object()
+                                          .value(u"data"_s)
+                                          .toObject()
+                                          .value(u"result"_s)
+                                          .toArray();
+            return result.isEmpty()
+                ? qQNaN()
+                : result.first().toObject().value(u"value"_s).toArray().at(1).toString().toDouble();
+        };
+        const QString counter = u"bridgescope_link_messages_total{topic=\"/w/plain\",side=\"destination\"}"_s;
+        const QString median
+            = u"histogram_quantile(0.5, rate(bridgescope_link_latency_seconds_bucket{topic=\"/w/in_stamped\"}[5s]))"_s;
+        QTRY_VERIFY_WITH_TIMEOUT(!qIsNaN(query(counter)) && !qIsNaN(query(median)), 30000);
+        // The counter Prometheus holds is the one the watch serves, a scrape (1 s, 10 messages) behind.
+        const double stored = query(counter);
+        const double live
+            = linkValue(metrics(), u"bridgescope_link_messages_total"_s, u"/w/plain"_s, u"destination"_s);
+        QVERIFY2(stored > 0 && live - stored >= 0 && live - stored <= 25,
+                 qPrintable(u"prometheus %1, watch %2"_s.arg(stored).arg(live)));
+        // The 20 ms the MQTT → ROS payloads were backdated, from the histogram's buckets (20-50 ms).
+        const double m = query(median);
+        QVERIFY2(m >= 0.015 && m <= 0.05, qPrintable(QString::number(m)));
+        server.terminate();
+        QVERIFY(server.waitForFinished(10000));
+    }
+
+    void shippedPrometheusFilesAreValid()
+    {
+        const QString dir = QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/prometheus/"_s;
+        for (const QStringList& args :
+             {QStringList {u"check"_s, u"rules"_s, dir + u"bridgescope-alerts.yml"_s},
+              QStringList {u"check"_s, u"config"_s, dir + u"prometheus.yml"_s}}) {
+            QProcess promtool;
+            promtool.setProcessChannelMode(QProcess::MergedChannels);
+            promtool.start(u"/usr/bin/promtool"_s, args);
+            QVERIFY(promtool.waitForFinished(30000));
+            QVERIFY2(promtool.exitCode() == 0, promtool.readAll().constData());
+        }
+    }
+
+    void survivesBrokerAndMasterRestarts()
+    {
+        const int brokerRestarts = envInt("WATCH_BROKER_RESTARTS", 2);
+        const int masterRestarts = envInt("WATCH_MASTER_RESTARTS", 1);
+        const quint16 brokerPort = m_servers.mosquittoPort();
+        const quint16 masterPort = m_servers.rosMasterPort();
+        const int from = int(m_events.size());
+        const double plainStalls = linkValue(metrics(), u"bridgescope_link_stalls_total"_s, u"/w/plain"_s);
+        for (int round = 0; round < qMax(brokerRestarts, masterRestarts); ++round) {
+            if (round < brokerRestarts) {
+                m_servers.stopMosquitto();
+                QTest::qWait(2000);
+                QVERIFY2(m_servers.startMosquittoOnPort(brokerPort), qPrintable(m_servers.errorString()));
+                QTRY_VERIFY_WITH_TIMEOUT(m_mqtt->isConnected(), 10000);
+                announce(); // retained messages do not survive a broker without persistence
+                waitForAllLinks(20000);
+                QCOMPARE(m_watch.state(), QProcess::Running);
+            }
+            if (round < masterRestarts) {
+                m_servers.stopRosMaster();
+                QTest::qWait(1000);
+                QVERIFY2(m_servers.startRosMasterOnPort(masterPort), qPrintable(m_servers.errorString()));
+                waitForAllLinks(30000);
+                QCOMPARE(m_watch.state(), QProcess::Running);
+            }
+        }
+        // Every broker outage was a stall of the ROS → MQTT links (the ROS side went on publishing),
+        // told as an event (or, when the link was in alert already, added to its open event).
+        const double stalls
+            = linkValue(metrics(), u"bridgescope_link_stalls_total"_s, u"/w/plain"_s) - plainStalls;
+        QVERIFY2(stalls >= brokerRestarts, qPrintable(QString::number(stalls)));
+        QVERIFY(!events(from, u"start"_s, u"|ros2mqtt|"_s, u"stall"_s).isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            events(from, u"start"_s, u""_s).size() == events(from, u"end"_s, u""_s).size(), 20000);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestWatch)
+#include "tst_watch.moc"

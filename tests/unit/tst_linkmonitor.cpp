@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: MIT
+// LinkMonitor and WatchRules on synthetic traffic with a clock the test drives: rates, loss,
+// Header.seq gaps, latency percentiles, stalls against a stopped source, a bridge's last will,
+// and the rules YAML (thresholds, overrides, located errors).
+#include "config/configreader.h"
+#include "fixtures.h"
+#include "mqtt/mqttconnection.h"
+#include "ros/rosmonitor.h"
+#include "watch/linkmonitor.h"
+#include "wire/mqttclientwire.h"
+
+#include <cstring>
+#include <QSignalSpy>
+#include <QtEndian>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kMs = 1'000'000;
+constexpr qint64 kStart = 1'700'000'000'000'000'000LL;
+
+const QString kStampedDefinition
+    = u"Header header\nfloat64 value\n"
+      u"================================================================================\n"
+      u"MSG: std_msgs/Header\nuint32 seq\ntime stamp\nstring frame_id\n"_s;
+
+/// A serialized message that starts with a Header: seq, stamp, empty frame_id, then a float64.
+QByteArray headerMessage(quint32 seq)
+{
+    QByteArray b(4 + 8 + 4 + 8, '\0');
+    qToLittleEndian(seq, b.data());
+    return b;
+}
+
+LinkDef link(Direction d, const QString& ros, const QString& mqtt, bool stamped = false)
+{
+    LinkDef l;
+    l.config = u"vehicle"_s;
+    l.client = u"vehicle_bridge"_s;
+    l.direction = d;
+    l.rosTopic = ros;
+    l.mqttTopic = mqtt;
+    l.stamped = stamped;
+    return l;
+}
+
+MqttMessage mqtt(const QString& topic, const QByteArray& payload, qint64 ns)
+{
+    MqttMessage m;
+    m.topic = topic;
+    m.payload = payload;
+    m.receivedNs = ns;
+    return m;
+}
+
+RosArrival ros(const QString& topic, const QByteArray& bytes, qint64 ns)
+{
+    return RosArrival {topic, ns, int(bytes.size()), bytes.left(RosArrival::kHeadBytes)};
+}
+
+/// Drives a monitor with a clock: `step` advances by 100 ms (10 Hz) and ticks it.
+struct Clock
+{
+    LinkMonitor& monitor;
+    qint64 now = kStart;
+    void advance(qint64 ns)
+    {
+        const qint64 end = now + ns;
+        while (now < end) {
+            now = std::min(end, now + 50 * kMs);
+            monitor.tick(now);
+        }
+    }
+};
+} // namespace
+
+class TestLinkMonitor : public QObject
+{
+    Q_OBJECT
+private slots:
+    void linksComeFromConfigs()
+    {
+        const ConfigReadResult read
+            = ConfigReader::read(Fixtures::read(u"benchmarking_suite/mqtt_client_vehicle_pointcloud.yaml"_s));
+        QVERIFY(read.parsed);
+        const QList<LinkDef> links = LinkDef::fromConfig(read.config, u"vehicle"_s);
+        QCOMPARE(links.size(), read.config.mappings.size());
+        QVERIFY(!links.isEmpty());
+        QSet<QString> ids;
+        for (const LinkDef& l : links) {
+            QVERIFY(!l.rosTopic.isEmpty() && !l.mqttTopic.isEmpty());
+            QCOMPARE(l.config, u"vehicle"_s);
+            ids.insert(l.id());
+        }
+        QCOMPARE(ids.size(), links.size());
+    }
+
+    void countsRatesLossSeqAndLatency()
+    {
+        LinkMonitor m;
+        // ROS → MQTT, stamped and with a Header; MQTT → ROS plain, every 10th message lost.
+        const LinkDef out = link(Direction::Ros2Mqtt, u"/vehicle/pose"_s, u"vehicle/pose"_s, true);
+        const LinkDef in = link(Direction::Mqtt2Ros, u"/vehicle/cmd"_s, u"vehicle/cmd"_s);
+        m.setLinks({out, in}, kStart);
+        m.setRosDefinition(u"/vehicle/cmd"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
+        // mqtt_client's latency of the MQTT → ROS link: ~/latencies/<ros topic>, Float64 seconds.
+        const QString latencyTopic = u"/vehicle_bridge/latencies/vehicle/cmd"_s;
+        QVERIFY(m.rosTopicsToMonitor({latencyTopic, u"/elsewhere/latencies/other"_s}).contains(latencyTopic));
+        QVERIFY(!m.rosTopicsToMonitor({u"/elsewhere/latencies/other"_s})
+                     .contains(u"/elsewhere/latencies/other"_s));
+        m.setRosDefinition(latencyTopic, u"std_msgs/Float64"_s, u"float64 data\n"_s);
+        QByteArray seconds(8, '\0');
+        const double twentyMs = 0.020;
+        std::memcpy(seconds.data(), &twentyMs, 8);
+        RosMsgTypeInfo type {u"0123456789abcdef0123456789abcdef"_s, u"test_msgs/Stamped"_s,
+                             kStampedDefinition, true};
+        m.addMqtt(
+            {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)});
+        Clock clock {m};
+        quint32 seq = 0;
+        for (int i = 0; i < 200; ++i) { // 20 s at 10 Hz
+            const qint64 sent = clock.now;
+            m.addRos({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
+            // The bridge skips seq 50 and 51 (two messages never sent on), latency 5 ms.
+            if (seq != 50 && seq != 51)
+                m.addMqtt({mqtt(u"vehicle/pose"_s, MqttClientWire::stamped(sent, headerMessage(seq)),
+                                sent + 5 * kMs)});
+            m.addMqtt({mqtt(u"vehicle/cmd"_s, headerMessage(seq), sent)});
+            if (i % 10 != 9) {
+                m.addRos({ros(u"/vehicle/cmd"_s, headerMessage(seq), sent + 2 * kMs)});
+                m.addRos({ros(latencyTopic, seconds, sent + 2 * kMs)});
+            }
+            ++seq;
+            clock.advance(100 * kMs);
+        }
+        const LinkFigures o = m.figures(m.indexOf(out.id()));
+        QCOMPARE(o.source.messages, quint64(200));
+        QCOMPARE(o.destination.messages, quint64(198));
+        QVERIFY2(qAbs(o.source.rateHz - 10) < 0.2, qPrintable(QString::number(o.source.rateHz)));
+        QVERIFY2(qAbs(o.destination.rateHz - 10) < 0.2, qPrintable(QString::number(o.destination.rateHz)));
+        QCOMPARE(o.seqGaps, quint64(2));
+        QCOMPARE(o.lost, quint64(2));
+        QCOMPARE(o.latencySamples, quint64(198));
+        QVERIFY2(qAbs(o.latencyP50Ms - 5) < 0.01 && qAbs(o.latencyP99Ms - 5) < 0.01,
+                 qPrintable(QString::number(o.latencyP50Ms)));
+        QCOMPARE(m.level(m.indexOf(out.id())), LinkLevel::Ok);
+
+        const LinkFigures i = m.figures(m.indexOf(in.id()));
+        QCOMPARE(i.source.messages, quint64(200));
+        QCOMPARE(i.destination.messages, quint64(180));
+        QCOMPARE(i.seqGaps, quint64(19)); // the last one lost (199) has no successor to show it
+        QVERIFY2(qAbs(i.lossPercent - 10) < 2.5, qPrintable(QString::number(i.lossPercent)));
+        QVERIFY2(qAbs(i.latencyP50Ms - 20) < 0.01, qPrintable(QString::number(i.latencyP50Ms)));
+        // 10 % lost is above the default alert level of 5 %.
+        QCOMPARE(m.level(m.indexOf(in.id())), LinkLevel::Alert);
+        QVERIFY(m.reasons(m.indexOf(in.id())).contains(u"loss"_s));
+    }
+
+    void stallAndSourceStoppedAreTold()
+    {
+        LinkMonitor m;
+        const LinkDef l = link(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        m.setLinks({l}, kStart);
+        QSignalSpy started(&m, &LinkMonitor::eventStarted);
+        QSignalSpy ended(&m, &LinkMonitor::eventEnded);
+        Clock clock {m};
+        const auto run = [&](int messages, bool delivered) {
+            for (int i = 0; i < messages; ++i) {
+                m.addRos({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
+                if (delivered)
+                    m.addMqtt({mqtt(u"a"_s, QByteArray(10, 'x'), clock.now + kMs)});
+                clock.advance(100 * kMs);
+            }
+        };
+        const auto of = [&](const QSignalSpy& spy, const QString& subject) {
+            QList<WatchEvent> events;
+            for (const QList<QVariant>& args : spy) {
+                const WatchEvent e = args.first().value<WatchEvent>();
+                if (e.subject == subject)
+                    events << e;
+            }
+            return events;
+        };
+        const QString bridge = u"bridge:vehicle_bridge"_s;
+        run(30, true);
+        QCOMPARE(started.size(), 0);
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        // The bridge dies: the source goes on, nothing arrives.
+        const qint64 died = clock.now;
+        run(30, false);
+        QCOMPARE(of(started, l.id()).size(), 1);
+        const WatchEvent stall = of(started, l.id()).last();
+        QCOMPARE(stall.reasons, QStringList {u"stall"_s});
+        QCOMPARE(stall.level, LinkLevel::Alert);
+        // Within two thresholds (5 periods of 100 ms, at least 1 s).
+        QVERIFY2(stall.startNs - died <= 2 * 1000 * kMs, qPrintable(QString::number(stall.startNs - died)));
+        QCOMPARE(m.figures(0).stalls, quint64(1));
+        // The bridge is down too, since the moment its link stalled.
+        QCOMPARE(of(started, bridge).size(), 1);
+        QCOMPARE(of(started, bridge).last().reasons, QStringList {u"bridge_down"_s});
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
+        // It comes back: the stall ends, with its duration, and the bridge is up.
+        run(20, true);
+        QCOMPARE(of(ended, l.id()).size(), 1);
+        const WatchEvent over = of(ended, l.id()).last();
+        QVERIFY(over.durationSeconds() > 1.5 && over.durationSeconds() < 3.5);
+        QCOMPARE(over.toJson().value(u"event"_s).toString(), u"end"_s);
+        QCOMPARE(of(ended, bridge).size(), 1);
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        // The source pauses: "source stopped", never a stall, and the bridge is not blamed.
+        const int before = of(started, l.id()).size();
+        clock.advance(5000 * kMs);
+        QCOMPARE(of(started, l.id()).size(), before + 1);
+        const WatchEvent stopped = of(started, l.id()).last();
+        QCOMPARE(stopped.reasons, QStringList {u"source_stopped"_s});
+        QCOMPARE(stopped.level, LinkLevel::Warning);
+        QCOMPARE(m.figures(0).stalls, quint64(1));
+        QCOMPARE(of(started, bridge).size(), 1);
+        run(10, true);
+        QCOMPARE(m.level(0), LinkLevel::Ok);
+        QVERIFY(m.openEvents().isEmpty());
+    }
+
+    void lastWillTakesTheBridgeDown()
+    {
+        LinkMonitor m;
+        LinkDef l = link(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        l.willTopic = u"vehicle/status"_s;
+        l.willMessage = "offline";
+        m.setLinks({l}, kStart);
+        QSignalSpy started(&m, &LinkMonitor::eventStarted);
+        Clock clock {m};
+        for (int i = 0; i < 10; ++i) {
+            m.addRos({ros(u"/a"_s, "x", clock.now)});
+            m.addMqtt({mqtt(u"a"_s, "x", clock.now)});
+            clock.advance(100 * kMs);
+        }
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        m.addMqtt({mqtt(u"vehicle/status"_s, "offline", clock.now)});
+        clock.advance(100 * kMs);
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
+        QCOMPARE(started.last().first().value<WatchEvent>().subject, u"bridge:vehicle_bridge"_s);
+        QCOMPARE(started.last().first().value<WatchEvent>().reasons, QStringList {u"bridge_down"_s});
+        m.addMqtt({mqtt(u"a"_s, "x", clock.now + kMs)});
+        clock.advance(100 * kMs);
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+    }
+
+    void seqDuplicatesAndReordering()
+    {
+        LinkMonitor m;
+        const LinkDef l = link(Direction::Mqtt2Ros, u"/b"_s, u"b"_s);
+        m.setLinks({l}, kStart);
+        m.setRosDefinition(u"/b"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
+        qint64 t = kStart;
+        for (quint32 s : {1u, 2u, 3u, 5u, 4u, 6u, 6u, 7u, 10u, 11u})
+            m.addRos({ros(u"/b"_s, headerMessage(s), t += 100 * kMs)});
+        const LinkFigures f = m.figures(0);
+        QCOMPARE(f.reordered, quint64(1)); // 4 after 5
+        QCOMPARE(f.duplicates, quint64(1)); // 6 twice
+        QCOMPARE(f.seqGaps, quint64(2)); // 8 and 9
+        // A publisher that restarts at 0 is not a gap of four billion.
+        m.addRos({ros(u"/b"_s, headerMessage(0), t += 100 * kMs)});
+        m.addRos({ros(u"/b"_s, headerMessage(1), t += 100 * kMs)});
+        QCOMPARE(m.figures(0).seqGaps, quint64(2));
+    }
+
+    void hostileMessagesAreBounded()
+    {
+        LinkMonitor m;
+        const LinkDef l = link(Direction::Ros2Mqtt, u"/c"_s, u"c"_s, true);
+        m.setLinks({l}, kStart);
+        m.setRosDefinition(u"/c"_s, u"bad"_s, u"this is not a definition {"_s);
+        // Short, empty and absurdly stamped payloads, and a broken announcement.
+        m.addMqtt({mqtt(u"mqtt_client/ros_msg_type/c"_s, "\x01\x02", kStart),
+                   mqtt(u"c"_s, QByteArray(), kStart), mqtt(u"c"_s, "123", kStart),
+                   mqtt(u"c"_s, QByteArray(8, '\xff'), kStart)});
+        m.addRos({RosArrival {u"/c"_s, kStart, 0, QByteArray()}});
+        m.tick(kStart + 2000 * kMs);
+        const LinkFigures f = m.figures(0);
+        QCOMPARE(f.destination.messages, quint64(3));
+        QVERIFY(f.latencySamples <= 1);
+    }
+
+    void rulesYaml()
+    {
+        QString error;
+        const auto rules = WatchRules::fromYaml("defaults:\n"
+                                                "  latency_p99_ms: {warning: 50, alert: 200}\n"
+                                                "  max_loss_percent: 2\n"
+                                                "links:\n"
+                                                "  - match: \"/vehicle/*\"\n"
+                                                "    latency_p99_ms: 20\n"
+                                                "  - match: \"client:cloud*\"\n"
+                                                "    stall_seconds: 10\n",
+                                                &error);
+        QVERIFY2(rules, qPrintable(error));
+        const LinkRules all = rules->forLink({u"/robot/odom"_s, u"robot/odom"_s, u"robot"_s, u"robot"_s});
+        QCOMPARE(all[LinkRules::LatencyP99Ms].warning, 50.0);
+        QCOMPARE(all[LinkRules::LatencyP99Ms].alert, 200.0);
+        QCOMPARE(all[LinkRules::MaxLossPercent].alert, 2.0);
+        QVERIFY(qIsNaN(all[LinkRules::MaxLossPercent].warning));
+        QCOMPARE(all[LinkRules::StallPeriods].alert, 5.0); // the default stays
+        const LinkRules vehicle = rules->forLink({u"/vehicle/a/b"_s, u"v/a"_s, u"vehicle"_s, u"v"_s});
+        QCOMPARE(vehicle[LinkRules::LatencyP99Ms].alert, 20.0);
+        QVERIFY(qIsNaN(vehicle[LinkRules::LatencyP99Ms].warning));
+        const LinkRules cloud = rules->forLink({u"/x"_s, u"x"_s, u"cloud_1"_s, u"c"_s});
+        QCOMPARE(cloud[LinkRules::StallSeconds].alert, 10.0);
+        // What it writes, it reads back the same.
+        const auto again = WatchRules::fromYaml(rules->toYaml(), &error);
+        QVERIFY2(again, qPrintable(error));
+        QCOMPARE(again->toYaml(), rules->toYaml());
+
+        for (const auto& [yaml, where] : std::initializer_list<std::pair<QByteArray, QString>> {
+                 {"defaults:\n  latency_p99: 5\n", u"line 2: unknown setting 'latency_p99'"_s},
+                 {"defaults:\n  stall_seconds: -1\n", u"line 2"_s},
+                 {"defaults:\n  max_loss_percent: {warning: x}\n", u"line 2"_s},
+                 {"links:\n  - stall_seconds: 1\n", u"line 2: every entry of links needs a match"_s},
+                 {"watch: 1\n", u"line 1: unknown key 'watch'"_s},
+                 {"defaults: [1, 2\n", u"line"_s},
+                 {"a: &a [*a, *a]\n", u"line"_s}}) {
+            QVERIFY2(!WatchRules::fromYaml(yaml, &error), yaml.constData());
+            QVERIFY2(error.contains(where), qPrintable(error));
+        }
+        QVERIFY(WatchRules::fromYaml(QByteArray(), &error)); // empty: the defaults
+    }
+
+    void shippedRulesLoad()
+    {
+        QString error;
+        const auto rules = WatchRules::load(
+            QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/examples/watch-rules.yaml"_s, &error);
+        QVERIFY2(rules, qPrintable(error));
+        QCOMPARE(rules->overrides.size(), 2);
+        QCOMPARE(
+            rules->forLink({u"/vehicle/pointcloud"_s, u"x"_s, u"c"_s, u"v"_s})[LinkRules::LatencyP99Ms].alert,
+            100.0);
+        QCOMPARE(
+            rules
+                ->forLink({u"/cloud/x"_s, u"x"_s, u"mqtt_interface_cloud"_s, u"c"_s})[LinkRules::StallSeconds]
+                .alert,
+            2.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLinkMonitor)
+#include "tst_linkmonitor.moc"

@@ -1,0 +1,368 @@
+// SPDX-License-Identifier: MIT
+#include "linkspage.h"
+
+#include "base/yamllimits.h"
+#include "config/configreader.h"
+#include "watch/linkmodel.h"
+#include "watch/watchsession.h"
+#include "widgets/common/ratechart.h"
+#include "widgets/common/viewsetup.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPainter>
+#include <QPushButton>
+#include <QSortFilterProxyModel>
+#include <QSplitter>
+#include <QStyledItemDelegate>
+#include <QSystemTrayIcon>
+#include <QTableView>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QColor levelColor(int level)
+{
+    switch (LinkLevel(level)) {
+    case LinkLevel::Ok:
+        return QColor(0x2e, 0x7d, 0x32);
+    case LinkLevel::Warning:
+        return QColor(0xef, 0x8f, 0x00);
+    case LinkLevel::Alert:
+        return QColor(0xc6, 0x28, 0x28);
+    }
+    return {};
+}
+
+/// The state as a coloured dot before its words; the history as a sparkline.
+class LinkDelegate : public QStyledItemDelegate
+{
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+    void paint(QPainter* painter, const QStyleOptionViewItem& option, const QModelIndex& index) const override
+    {
+        if (index.column() != LinkModel::HistoryColumn) {
+            QStyledItemDelegate::paint(painter, option, index);
+            return;
+        }
+        // Background and selection only: the cell has no text.
+        QStyleOptionViewItem background = option;
+        background.text.clear();
+        background.features &= ~QStyleOptionViewItem::HasDisplay;
+        const QWidget* widget = option.widget;
+        (widget ? widget->style() : QApplication::style())
+            ->drawControl(QStyle::CE_ItemViewItem, &background, painter, widget);
+        const QList<double> values = index.data(LinkModel::HistoryRole).value<QList<double>>();
+        if (values.size() < 2)
+            return;
+        const double top = std::max(1.0, *std::max_element(values.cbegin(), values.cend()));
+        const QRectF r = QRectF(option.rect).adjusted(3, 3, -3, -3);
+        QPolygonF line;
+        for (qsizetype i = 0; i < values.size(); ++i)
+            line << QPointF(r.left() + r.width() * double(i) / double(values.size() - 1),
+                            r.bottom() - r.height() * values[i] / top);
+        painter->save();
+        painter->setRenderHint(QPainter::Antialiasing);
+        painter->setPen(QPen(option.state & QStyle::State_Selected ? option.palette.highlightedText().color()
+                                                                   : option.palette.text().color(),
+                             1.2));
+        painter->drawPolyline(line);
+        painter->restore();
+    }
+
+    void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override
+    {
+        QStyledItemDelegate::initStyleOption(option, index);
+        const QVariant level = index.data(LinkModel::LevelRole);
+        if (index.column() == 0 && level.isValid()) {
+            QPixmap dot(10, 10);
+            dot.fill(Qt::transparent);
+            QPainter p(&dot);
+            p.setRenderHint(QPainter::Antialiasing);
+            p.setBrush(levelColor(level.toInt()));
+            p.setPen(Qt::NoPen);
+            p.drawEllipse(0, 0, 10, 10);
+            option->icon = QIcon(dot);
+            option->features |= QStyleOptionViewItem::HasDecoration;
+            option->decorationSize = QSize(10, 10);
+        }
+    }
+};
+
+/// Sorts figures by their numbers, everything else by its text.
+class LinkSortProxy : public QSortFilterProxyModel
+{
+public:
+    using QSortFilterProxyModel::QSortFilterProxyModel;
+
+protected:
+    bool lessThan(const QModelIndex& a, const QModelIndex& b) const override
+    {
+        const QVariant va = a.data(LinkModel::ValueRole);
+        const QVariant vb = b.data(LinkModel::ValueRole);
+        if (va.typeId() == QMetaType::Double || va.typeId() == QMetaType::Int) {
+            const double x = va.toDouble();
+            const double y = vb.toDouble();
+            return (std::isnan(x) ? -1 : x) < (std::isnan(y) ? -1 : y);
+        }
+        return QSortFilterProxyModel::lessThan(a, b);
+    }
+};
+} // namespace
+
+LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
+    : QWidget(parent)
+    , m_watch(watch)
+    , m_model(new LinkModel(watch->monitor(), this))
+    , m_eventModel(new EventLogModel(watch->monitor(), this))
+    , m_proxy(new LinkSortProxy(this))
+{
+    setObjectName(u"linksPage"_s);
+    QLayout* bar = createBar();
+    auto* top = new QSplitter(Qt::Horizontal, this);
+    top->addWidget(createLinkTable());
+    top->addWidget(createDetailPane());
+    top->setStretchFactor(0, 4);
+    top->setStretchFactor(1, 1);
+    top->setSizes({1000, 260});
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(top);
+    split->addWidget(createEventLog());
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 0);
+    layout->addLayout(bar);
+    layout->addWidget(split, 1);
+
+    LinkMonitor* monitor = watch->monitor();
+    connect(monitor, &LinkMonitor::refreshed, this, &LinksPage::updateSummary);
+    connect(monitor, &LinkMonitor::refreshed, this, [this] {
+        if (!m_links->currentIndex().isValid() && m_proxy->rowCount() > 0)
+            m_links->setCurrentIndex(m_proxy->index(0, 0)); // the detail pane is never empty for nothing
+        showDetail();
+    });
+    connect(monitor, &LinkMonitor::eventStarted, this, &LinksPage::notify);
+    updateSummary();
+}
+
+LinksPage::~LinksPage() = default;
+
+QLayout* LinksPage::createBar()
+{
+    auto* add = new QPushButton(tr("&Add Configs…"), this);
+    add->setToolTip(tr("Watch the mappings of more bridge configs (one per vehicle or robot)"));
+    auto* rules = new QPushButton(tr("R&ules…"), this);
+    rules->setToolTip(tr("Load the thresholds (a rules YAML) every link is held to"));
+    m_filter = new QLineEdit(this);
+    m_filter->setObjectName(u"linkFilter"_s);
+    m_filter->setPlaceholderText(tr("Filter links…"));
+    m_filter->setClearButtonEnabled(true);
+    m_summary = new QLabel(this);
+    m_summary->setObjectName(u"linkSummary"_s);
+    connect(add, &QPushButton::clicked, this, &LinksPage::chooseConfigs);
+    connect(rules, &QPushButton::clicked, this, &LinksPage::chooseRules);
+    connect(m_filter, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(add);
+    bar->addWidget(rules);
+    bar->addWidget(m_filter, 1);
+    bar->addWidget(m_summary, 2);
+    return bar;
+}
+
+QWidget* LinksPage::createLinkTable()
+{
+    m_proxy->setSourceModel(m_model);
+    m_proxy->setFilterKeyColumn(-1);
+    m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    m_links = new QTableView(this);
+    m_links->setObjectName(u"linkTable"_s);
+    m_links->setModel(m_proxy);
+    m_links->setItemDelegate(new LinkDelegate(m_links));
+    ViewSetup::records(m_links);
+    m_links->setSortingEnabled(true);
+    m_links->sortByColumn(LinkModel::BridgeColumn, Qt::AscendingOrder);
+    // The topics get the room: names are what people look for.
+    QHeaderView* header = m_links->horizontalHeader();
+    header->setSectionResizeMode(QHeaderView::Interactive);
+    header->setSectionResizeMode(LinkModel::SourceColumn, QHeaderView::Stretch);
+    header->setSectionResizeMode(LinkModel::DestinationColumn, QHeaderView::Stretch);
+    const QList<std::pair<int, int>> widths {{LinkModel::StateColumn, 80},
+                                             {LinkModel::BridgeColumn, 130},
+                                             {LinkModel::DirectionColumn, 90},
+                                             {LinkModel::SourceRateColumn, 60},
+                                             {LinkModel::DestinationRateColumn, 60},
+                                             {LinkModel::LossColumn, 70},
+                                             {LinkModel::P50Column, 60},
+                                             {LinkModel::P99Column, 60},
+                                             {LinkModel::HistoryColumn, 90}};
+    for (const auto& [column, width] : widths)
+        m_links->setColumnWidth(column, width);
+    m_links->setColumnHidden(LinkModel::LastEventColumn, true); // the event log says it; the tooltip too
+    m_links->setTextElideMode(Qt::ElideMiddle);
+    connect(m_links->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &LinksPage::showDetail);
+    return m_links;
+}
+
+QWidget* LinksPage::createDetailPane()
+{
+    auto* pane = new QWidget(this);
+    auto* v = new QVBoxLayout(pane);
+    v->setContentsMargins(0, 0, 0, 0);
+    m_detail = new QLabel(tr("Select a link to see its history."), pane);
+    m_detail->setObjectName(u"linkDetail"_s);
+    m_detail->setWordWrap(true);
+    m_detail->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_rateChart = new RateChart(pane);
+    m_latencyChart = new RateChart(pane);
+    v->addWidget(m_detail);
+    v->addWidget(new QLabel(tr("Destination rate:"), pane));
+    v->addWidget(m_rateChart, 1);
+    v->addWidget(new QLabel(tr("Latency p99:"), pane));
+    v->addWidget(m_latencyChart, 1);
+    pane->setMinimumWidth(200);
+    return pane;
+}
+
+QWidget* LinksPage::createEventLog()
+{
+    m_events = new QTableView(this);
+    m_events->setObjectName(u"eventLog"_s);
+    m_events->setModel(m_eventModel);
+    m_events->setItemDelegate(new LinkDelegate(m_events));
+    ViewSetup::records(m_events);
+    m_events->horizontalHeader()->setSectionResizeMode(EventLogModel::WhatColumn, QHeaderView::Stretch);
+    m_events->setColumnWidth(EventLogModel::SubjectColumn, 320);
+    return m_events;
+}
+
+void LinksPage::setMapConfig(const QString& name, const BridgeConfig& config)
+{
+    m_mapConfig = {name, config};
+    applyConfigs();
+}
+
+bool LinksPage::addConfigFiles(const QStringList& paths, QString* error)
+{
+    for (const QString& path : paths) {
+        const std::optional<QByteArray> bytes = YamlLimits::readFile(path, nullptr);
+        const ConfigReadResult read = bytes ? ConfigReader::read(*bytes) : ConfigReadResult();
+        if (!read.parsed) {
+            if (error)
+                *error = tr("%1 is not a bridge config that can be read").arg(path);
+            return false;
+        }
+        m_added.append({QFileInfo(path).completeBaseName(), read.config});
+    }
+    applyConfigs();
+    return true;
+}
+
+bool LinksPage::loadRules(const QString& path, QString* error)
+{
+    const std::optional<WatchRules> rules = WatchRules::load(path, error);
+    if (rules)
+        m_watch->setRules(*rules);
+    return bool(rules);
+}
+
+void LinksPage::applyConfigs()
+{
+    QList<std::pair<QString, BridgeConfig>> configs;
+    if (!m_mapConfig.first.isEmpty())
+        configs << m_mapConfig;
+    configs << m_added;
+    m_watch->setConfigs(configs);
+    m_model->refresh();
+    updateSummary();
+}
+
+void LinksPage::chooseConfigs()
+{
+    const QStringList paths = QFileDialog::getOpenFileNames(
+        this, tr("Watch Bridge Configs"), QString(), tr("Bridge configs (*.yaml *.yml);;All files (*)"));
+    QString error;
+    if (!paths.isEmpty() && !addConfigFiles(paths, &error))
+        m_summary->setText(error);
+}
+
+void LinksPage::chooseRules()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load Watch Rules"), QString(),
+                                                      tr("Rules (*.yaml *.yml);;All files (*)"));
+    QString error;
+    if (!path.isEmpty() && !loadRules(path, &error))
+        m_summary->setText(error);
+}
+
+void LinksPage::updateSummary()
+{
+    const LinkMonitor* monitor = m_watch->monitor();
+    int counts[3] = {0, 0, 0};
+    for (int i = 0; i < monitor->linkCount(); ++i)
+        ++counts[int(monitor->level(i))];
+    if (monitor->linkCount() == 0) {
+        m_summary->setText(tr("No links: open a bridge config on the Map page, or add configs here."));
+        return;
+    }
+    m_summary->setText(tr("%n link(s): %1 ok, %2 warning, %3 alert", nullptr, monitor->linkCount())
+                           .arg(counts[0])
+                           .arg(counts[1])
+                           .arg(counts[2]));
+}
+
+void LinksPage::showDetail()
+{
+    const QModelIndex current = m_proxy->mapToSource(m_links->currentIndex());
+    const LinkMonitor* monitor = m_watch->monitor();
+    const int i = current.isValid() ? monitor->indexOf(current.data(LinkModel::LinkIdRole).toString()) : -1;
+    if (i < 0)
+        return;
+    const LinkDef& d = monitor->link(i);
+    const LinkFigures f = monitor->figures(i);
+    m_detail->setText(tr("<b>%1</b> → <b>%2</b> (%3)<br>%4 messages at the source, %5 at the destination, "
+                         "%6 lost, %7 Header.seq gaps, %8 duplicates, %9 reordered, %10 stalls")
+                          .arg(d.sourceTopic().toHtmlEscaped(), d.destinationTopic().toHtmlEscaped(),
+                               d.bridge().toHtmlEscaped())
+                          .arg(f.source.messages)
+                          .arg(f.destination.messages)
+                          .arg(f.lost)
+                          .arg(f.seqGaps)
+                          .arg(f.duplicates)
+                          .arg(f.reordered)
+                          .arg(f.stalls));
+    QList<double> rates;
+    QList<double> p99;
+    for (const LinkMonitor::HistoryPoint& h : monitor->history(i)) {
+        rates << h.rateHz;
+        if (std::isfinite(h.p99Ms)) // seconds without stamps are left out
+            p99 << h.p99Ms;
+    }
+    m_rateChart->setSamples(rates, tr("Hz"));
+    m_latencyChart->setSamples(p99, tr("ms"));
+}
+
+void LinksPage::notify(const WatchEvent& event)
+{
+    if (event.level != LinkLevel::Alert || (window() && window()->isActiveWindow()))
+        return;
+    ++m_notified;
+    const QString title = tr("Bridgescope: %1").arg(event.reasons.join(u", "_s));
+    if (QSystemTrayIcon::isSystemTrayAvailable()) {
+        if (!m_tray) {
+            m_tray = new QSystemTrayIcon(QApplication::windowIcon(), this);
+            m_tray->show();
+        }
+        m_tray->showMessage(title, event.detail, QSystemTrayIcon::Warning, 10000);
+    }
+    QApplication::alert(window()); // the task bar entry asks for attention where there is no tray
+}
