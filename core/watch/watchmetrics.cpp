@@ -90,7 +90,10 @@ struct WatchMetrics::Private
         Gauge* sourceRate = nullptr;
         Gauge* destinationRate = nullptr;
         Gauge* state = nullptr;
+        // Made on the first stamp and the first Header.seq gap: links without stamps or headers
+        // (most of a fleet) keep their scrape short.
         Histogram* latency = nullptr;
+        prometheus::Labels labels;
     };
     QHash<QString, Link> links; ///< by link id
     QHash<QString, Gauge*> bridges;
@@ -115,11 +118,10 @@ struct WatchMetrics::Private
         l.destinationBytes.counter = &bytes.Add(with("destination"));
         l.lost.counter = &lost.Add(labels);
         l.stalls.counter = &stalls.Add(labels);
-        l.gaps.counter = &gaps.Add(labels);
         l.sourceRate = &rate.Add(with("source"));
         l.destinationRate = &rate.Add(with("destination"));
         l.state = &state.Add(labels);
-        l.latency = &latency.Add(labels, latencyBuckets());
+        l.labels = labels;
         return l;
     }
 
@@ -131,11 +133,13 @@ struct WatchMetrics::Private
             bytes.Remove(t->counter);
         lost.Remove(l.lost.counter);
         stalls.Remove(l.stalls.counter);
-        gaps.Remove(l.gaps.counter);
+        if (l.gaps.counter)
+            gaps.Remove(l.gaps.counter);
         rate.Remove(l.sourceRate);
         rate.Remove(l.destinationRate);
         state.Remove(l.state);
-        latency.Remove(l.latency);
+        if (l.latency)
+            latency.Remove(l.latency);
     }
 };
 
@@ -184,11 +188,17 @@ void WatchMetrics::update(LinkMonitor& monitor)
         l.destinationBytes.set(double(f.destination.bytes));
         l.lost.set(double(f.lost));
         l.stalls.set(double(f.stalls));
-        l.gaps.set(double(f.seqGaps));
+        if (f.seqGaps > 0 && !l.gaps.counter)
+            l.gaps.counter = &d->gaps.Add(l.labels);
+        if (l.gaps.counter)
+            l.gaps.set(double(f.seqGaps));
         l.sourceRate->Set(f.source.rateHz);
         l.destinationRate->Set(f.destination.rateHz);
         l.state->Set(double(int(monitor.level(i))));
-        for (double ms : monitor.takeNewLatencies(i))
+        const std::vector<double> latencies = monitor.takeNewLatencies(i);
+        if (!latencies.empty() && !l.latency)
+            l.latency = &d->latency.Add(l.labels, latencyBuckets());
+        for (double ms : latencies)
             l.latency->Observe(ms / 1000.0);
     }
     for (auto it = d->links.begin(); it != d->links.end();) {

@@ -11,11 +11,11 @@ class LinkMonitor;
 /// pull exposer (the only code that uses prometheus-cpp).
 ///
 /// Per link (labels config, client, direction, topic = the ROS topic, mqtt_topic): counters of
-/// messages and bytes at each side, messages lost, stalls and Header.seq gaps; gauges of the rate
-/// at each side and the link's state (0 ok, 1 warning, 2 alert); a histogram of the latency in
-/// seconds. Per bridge (label bridge: its client id, else its config name): bridge_up (1 up, 0
-/// down, absent while unknown). The
-/// exposer answers on its own threads from metrics that update() sets on the owner's thread.
+/// messages and bytes at each side, messages lost and stalls; gauges of the rate at each side and
+/// the link's state (0 ok, 1 warning, 2 alert); from the first stamp a histogram of the latency
+/// in seconds, from the first gap a counter of Header.seq gaps. Per bridge (label bridge: its client id, else
+/// its config name): bridge_up (1 up, 0 down, absent while unknown). The exposer answers on its own threads
+/// from metrics that update() sets on the owner's thread.
 class WatchMetrics
 {
     Q_DECLARE_TR_FUNCTIONS(WatchMetrics)

@@ -208,7 +208,8 @@ private:
         QStringList labels {u"topic=\"%1\""_s.arg(rosTopic)};
         if (!side.isEmpty())
             labels << u"side=\"%1\""_s.arg(side);
-        return sample(text, name, labels);
+        const double v = sample(text, name, labels);
+        return qIsNaN(v) ? 0 : v; // a counter made on its first count (seq gaps, latency) is 0 before
     }
 
     /// Every link's destination count grows within `ms`; the links that did not go to `stuck`.

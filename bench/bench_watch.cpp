@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+// Watching 1,000 links at 10 Hz each, against mosquitto_sub in the same run: a load generator
+// publishes 1,000 MQTT topics at 10 Hz (10,000 msg/s), a reference bridge carries them to 1,000
+// ROS topics (primitive mqtt2ros mappings: 10,000 msg/s on ROS), and
+//   - `bridgescope watch` (a child process) watches the 1,000 links: its CPU time per message it
+//     handled (both ends) against mosquitto_sub's per message it received, and the time of a
+//     /metrics scrape;
+//   - this process shows the Links page with the same 1,000 links: the GUI event loop's lag and
+//     resident memory.
+//
+//   scripts/bench.sh bench_watch        (BENCH_LINKS, BENCH_SECONDS override)
+#include "app/gui/mainwindow.h"
+#include "benchutil.h"
+#include "session/livesession.h"
+#include "testservers.h"
+#include "watch/linkmodel.h"
+#include "watch/watchsession.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QTabWidget>
+#include <QTcpSocket>
+#include <QTest>
+#include <QTimer>
+#include <unistd.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+qint64 statusKb(const char* field)
+{
+    QFile f(u"/proc/self/status"_s);
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (line.startsWith(field))
+            return line.mid(int(qstrlen(field))).trimmed().split(' ').first().toLongLong();
+    return -1;
+}
+
+/// User + system CPU seconds of a process so far.
+double cpuSeconds(qint64 pid)
+{
+    QFile f(u"/proc/%1/stat"_s.arg(pid));
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    const QByteArray s = f.readAll();
+    const QList<QByteArray> fields = s.mid(s.lastIndexOf(')') + 2).split(' ');
+    // After the command: state is field 3; utime and stime are fields 14 and 15.
+    return double(fields.value(11).toLongLong() + fields.value(12).toLongLong())
+        / double(::sysconf(_SC_CLK_TCK));
+}
+
+QString topic(int i)
+{
+    return u"fleet/vehicle_%1/sensor_%2"_s.arg(i / 100, 3, 10, QChar(u'0')).arg(i % 100, 2, 10, QChar(u'0'));
+}
+
+/// GET /metrics: the whole answer.
+QByteArray scrape(quint16 port)
+{
+    QTcpSocket s;
+    s.connectToHost(u"127.0.0.1"_s, port);
+    if (!s.waitForConnected(3000))
+        return {};
+    s.write("GET /metrics HTTP/1.0\r\n\r\n");
+    QByteArray all;
+    while (s.state() == QAbstractSocket::ConnectedState && s.waitForReadyRead(5000))
+        all += s.readAll();
+    return all + s.readAll();
+}
+
+double sample(const QByteArray& metrics, const QByteArray& prefix)
+{
+    double sum = 0;
+    for (const QByteArray& line : metrics.split('\n'))
+        if (line.startsWith(prefix))
+            sum += line.mid(line.lastIndexOf(' ') + 1).toDouble();
+    return sum;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    const int links = Bench::envInt("BENCH_LINKS", 1000);
+    const int seconds = Bench::envInt("BENCH_SECONDS", 30);
+    const int rate = links * 10;
+    const QString program = QCoreApplication::applicationDirPath() + u"/../app/bridgescope"_s;
+
+    TestServers servers;
+    if (!servers.startMosquitto(
+            TestMosquittoOptions {true, {}, {}, {}, {}, false, u"max_queued_messages 0\n"_s})
+        || !servers.startRosMaster()) {
+        std::fprintf(stderr, "cannot start the servers: %s\n", qPrintable(servers.errorString()));
+        return 1;
+    }
+    const QString url = servers.brokerUrl();
+    std::printf("bench_watch: %d links at 10 Hz (%d msg/s on each side), %d s, broker %s\n\n", links, rate,
+                seconds, qPrintable(url));
+    QString config
+        = u"broker:\n  host: 127.0.0.1\n  port: %1\nclient:\n  id: fleet_bridge\nbridge:\n  mqtt2ros:\n"_s
+              .arg(servers.mosquittoPort());
+    for (int i = 0; i < links; ++i)
+        config += u"    - {mqtt_topic: %1, ros_topic: /%1, primitive: true}\n"_s.arg(topic(i));
+    const QString configPath = servers.tempPath() + u"/fleet.yaml"_s;
+    QFile f(configPath);
+    if (!f.open(QIODevice::WriteOnly) || f.write(config.toUtf8()) < 0)
+        return 1;
+    f.close();
+
+    QProcess bridge;
+    bridge.setProcessEnvironment(servers.rosEnvironment());
+    bridge.start(program, {u"bridge"_s, configPath});
+    QProcess watch;
+    const quint16 metricsPort = TestServers::freePort();
+    watch.setProcessEnvironment(servers.rosEnvironment());
+    watch.start(program,
+                {u"watch"_s, configPath, u"--ros-master"_s, servers.rosMasterUri(), u"--metrics"_s,
+                 u"127.0.0.1:%1"_s.arg(metricsPort)});
+    QProcess sub;
+    quint64 subLines = 0;
+    QObject::connect(&sub, &QProcess::readyReadStandardOutput,
+                     [&] { subLines += quint64(sub.readAllStandardOutput().count('\n')); });
+    sub.start(u"mosquitto_sub"_s,
+              {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()), u"-t"_s,
+               u"fleet/#"_s, u"-F"_s, u"%t"_s});
+
+    qputenv("ROS_MASTER_URI", servers.rosMasterUri().toUtf8());
+    MainWindow window;
+    window.resize(1400, 900);
+    window.discoverPage()->setRosMasterUri(servers.rosMasterUri());
+    window.discoverPage()->connectBroker(MqttProfile::fromUrl(url));
+    window.linksPage()->addConfigFiles({configPath});
+    window.pages()->setCurrentWidget(window.linksPage());
+    window.show();
+    QTest::qWait(3000); // subscriptions settle
+    const qint64 rssBefore = statusKb("VmRSS:");
+
+    std::vector<double> lags;
+    QElapsedTimer lagClock;
+    qint64 expected = 0;
+    QTimer probe;
+    probe.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const qint64 now = lagClock.nsecsElapsed();
+        lags.push_back(std::max<qint64>(0, now - expected) / 1e6);
+        expected = now + 10'000'000;
+    });
+    QProcess loadgen;
+    loadgen.start(
+        QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
+        {url, QString::number(links), QString::number(rate), QString::number(seconds + 15), u"32"_s});
+    QTest::qWait(5000); // the first 5 s: every link starts
+    const double watchCpu0 = cpuSeconds(watch.processId());
+    const double subCpu0 = cpuSeconds(sub.processId());
+    const quint64 subLines0 = subLines;
+    const QByteArray m0 = scrape(metricsPort);
+    lagClock.start();
+    expected = 10'000'000;
+    probe.start(10);
+    QTest::qWait(seconds * 1000);
+    probe.stop();
+    const double watchCpu = cpuSeconds(watch.processId()) - watchCpu0;
+    const double subCpu = cpuSeconds(sub.processId()) - subCpu0;
+    QTest::qWait(200);
+    const quint64 subMessages = subLines - subLines0;
+    const QByteArray m1 = scrape(metricsPort);
+    const double watched
+        = sample(m1, "bridgescope_link_messages_total{") - sample(m0, "bridgescope_link_messages_total{");
+    const qint64 rssAfter = statusKb("VmRSS:");
+    // The table as the load goes on: every link's destination rate on the Links page.
+    LinkModel* model = window.linksPage()->linkModel();
+    double rateSum = 0;
+    for (int r = 0; r < model->rowCount(); ++r)
+        rateSum += model->index(r, LinkModel::DestinationRateColumn).data(LinkModel::ValueRole).toDouble();
+    const auto scrapes = [&] {
+        std::vector<double> times;
+        for (int i = 0; i < 10; ++i) {
+            QElapsedTimer t;
+            t.start();
+            scrape(metricsPort);
+            times.push_back(t.nsecsElapsed() / 1e6);
+        }
+        return times;
+    };
+    const std::vector<double> loaded = scrapes(); // the load goes on for 15 s more
+    loadgen.waitForFinished(30000);
+    QTest::qWait(1000);
+    const std::vector<double> idle = scrapes();
+
+    Bench::header("value");
+    Bench::row(u"links on the Links page"_s, model->rowCount());
+    Bench::row(u"  their mean destination rate on the page (Hz)"_s,
+               model->rowCount() ? rateSum / model->rowCount() : 0);
+    Bench::row(u"GUI event loop lag p50 (ms), Links page open"_s, Bench::percentile(lags, 0.5));
+    Bench::row(u"GUI event loop lag p99 (ms)"_s, Bench::percentile(lags, 0.99), u"goal < 50 ms"_s);
+    Bench::row(u"GUI resident memory before load (MiB)"_s, double(rssBefore) / 1024);
+    Bench::row(u"GUI resident memory after load (MiB)"_s, double(rssAfter) / 1024);
+    Bench::row(u"peer: messages mosquitto_sub received"_s, double(subMessages));
+    Bench::row(u"messages watch counted (both ends)"_s, watched);
+    const double subPer = subMessages ? subCpu / double(subMessages) * 1e6 : 0;
+    const double watchPer = watched > 0 ? watchCpu / watched * 1e6 : 0;
+    Bench::row(u"peer: mosquitto_sub CPU per message (us)"_s, subPer);
+    Bench::row(u"watch CPU per message (us)"_s, watchPer,
+               u"%1x mosquitto_sub (goal <= 3x)"_s.arg(subPer > 0 ? watchPer / subPer : 0, 0, 'f', 2));
+    Bench::row(u"watch CPU (% of one core)"_s, 100 * watchCpu / seconds);
+    Bench::row(u"/metrics scrape under the load, median (ms)"_s, Bench::percentile(loaded, 0.5),
+               u"%1 kB, goal < 50 ms"_s.arg(m1.size() / 1024));
+    Bench::row(u"/metrics scrape under the load, max (ms)"_s,
+               *std::max_element(loaded.begin(), loaded.end()));
+    Bench::row(u"/metrics scrape after the load, median (ms)"_s, Bench::percentile(idle, 0.5));
+
+    for (QProcess* p : {&watch, &bridge, &sub}) {
+        p->terminate();
+        p->waitForFinished(10000);
+    }
+    return 0;
+}
