@@ -25,21 +25,6 @@
 
 using namespace Qt::StringLiterals;
 
-namespace {
-qint64 statusKb(const char* field)
-{
-    QFile f(u"/proc/self/status"_s);
-    if (!f.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray& line : f.readAll().split('\n')) {
-        if (line.startsWith(field))
-            return line.mid(int(qstrlen(field))).trimmed().split(' ').first().toLongLong();
-    }
-    return -1;
-}
-
-} // namespace
-
 int main(int argc, char** argv)
 {
     qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -76,32 +61,16 @@ int main(int argc, char** argv)
     while (window.session()->mqtt()->state() != MqttConnection::State::Connected && wait.elapsed() < 10000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     QTest::qWait(500);
-    const qint64 rssBefore = statusKb("VmRSS:");
-
-    // The GUI event loop's lag: how late a 10 ms timer fires while the load runs.
-    std::vector<double> lags;
-    QElapsedTimer lagClock;
-    qint64 expected = 0;
-    QTimer probe;
-    probe.setTimerType(Qt::PreciseTimer);
-    QObject::connect(&probe, &QTimer::timeout, [&] {
-        const qint64 now = lagClock.nsecsElapsed();
-        lags.push_back(std::max<qint64>(0, now - expected) / 1e6);
-        expected = now + 10'000'000;
-    });
+    const qint64 rssBefore = Bench::statusKb("VmRSS:");
 
     QProcess loadgen;
     loadgen.setProcessChannelMode(QProcess::SeparateChannels);
     loadgen.start(QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
                   {url, QString::number(topics), QString::number(rate), QString::number(seconds), u"32"_s});
-    lagClock.start();
-    expected = 10'000'000;
-    probe.start(10);
     bool done = false;
     QObject::connect(&loadgen, &QProcess::finished, [&] { done = true; });
-    while (!done)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-    probe.stop();
+    // The GUI event loop's lag: how late a 10 ms timer fires while the load runs.
+    const std::vector<double> lags = Bench::measureLag([&] { return !done; });
     QTest::qWait(2000); // what is in flight arrives
     const quint64 published = loadgen.readAllStandardOutput().trimmed().toULongLong();
     sub.terminate();
@@ -110,8 +79,8 @@ int main(int argc, char** argv)
     window.session()->drainNow();
     const quint64 ours = window.session()->mqtt()->received();
     const quint64 processed = window.session()->mqttTopics()->totalMessages();
-    const qint64 rssAfter = statusKb("VmRSS:");
-    const qint64 rssPeak = statusKb("VmHWM:");
+    const qint64 rssAfter = Bench::statusKb("VmRSS:");
+    const qint64 rssPeak = Bench::statusKb("VmHWM:");
 
     Bench::header("value");
     Bench::row(u"published by the load generator"_s, double(published), u"messages"_s);

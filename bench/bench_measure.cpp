@@ -33,26 +33,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-/// How late a 10 ms timer fires in the GUI thread while `running` says so.
-std::vector<double> measureLag(const std::function<bool()>& running)
-{
-    std::vector<double> lags;
-    QElapsedTimer clock;
-    qint64 expected = 10'000'000;
-    QTimer probe;
-    probe.setTimerType(Qt::PreciseTimer);
-    QObject::connect(&probe, &QTimer::timeout, [&] {
-        const qint64 now = clock.nsecsElapsed();
-        lags.push_back(double(std::max<qint64>(0, now - expected)) / 1e6);
-        expected = now + 10'000'000;
-    });
-    clock.start();
-    probe.start(10);
-    while (running())
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-    return lags;
-}
-
 void chartUpdate()
 {
     const int samples = 1'000'000;
@@ -173,7 +153,7 @@ int guiLag()
     // Peer: the same window with nothing arriving.
     QElapsedTimer idle;
     idle.start();
-    const std::vector<double> idleLags = measureLag([&] { return idle.elapsed() < 5000; });
+    const std::vector<double> idleLags = Bench::measureLag([&] { return idle.elapsed() < 5000; });
 
     QStringList args {u"--samples"_s,   QString::number(samples),
                       u"--rate"_s,      QString::number(sampleRate),
@@ -197,7 +177,8 @@ int guiLag()
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
     QElapsedTimer loaded;
     loaded.start();
-    const std::vector<double> lags = measureLag([&] { return publisher.state() != QProcess::NotRunning; });
+    const std::vector<double> lags
+        = Bench::measureLag([&] { return publisher.state() != QProcess::NotRunning; });
     const double loadSeconds = double(loaded.elapsed()) / 1000.0;
     QTest::qWait(1000);
     const LatencyEngine& e = window.measure()->engine();

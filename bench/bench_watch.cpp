@@ -31,16 +31,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-qint64 statusKb(const char* field)
-{
-    QFile f(u"/proc/self/status"_s);
-    if (!f.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray& line : f.readAll().split('\n'))
-        if (line.startsWith(field))
-            return line.mid(int(qstrlen(field))).trimmed().split(' ').first().toLongLong();
-    return -1;
-}
 
 /// User + system CPU seconds of a process so far.
 double cpuSeconds(qint64 pid)
@@ -140,18 +130,8 @@ int main(int argc, char** argv)
     window.pages()->setCurrentWidget(window.linksPage());
     window.show();
     QTest::qWait(3000); // subscriptions settle
-    const qint64 rssBefore = statusKb("VmRSS:");
+    const qint64 rssBefore = Bench::statusKb("VmRSS:");
 
-    std::vector<double> lags;
-    QElapsedTimer lagClock;
-    qint64 expected = 0;
-    QTimer probe;
-    probe.setTimerType(Qt::PreciseTimer);
-    QObject::connect(&probe, &QTimer::timeout, [&] {
-        const qint64 now = lagClock.nsecsElapsed();
-        lags.push_back(std::max<qint64>(0, now - expected) / 1e6);
-        expected = now + 10'000'000;
-    });
     QProcess loadgen;
     loadgen.start(
         QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
@@ -161,11 +141,9 @@ int main(int argc, char** argv)
     const double subCpu0 = cpuSeconds(sub.processId());
     const quint64 subLines0 = subLines;
     const QByteArray m0 = scrape(metricsPort);
-    lagClock.start();
-    expected = 10'000'000;
-    probe.start(10);
-    QTest::qWait(seconds * 1000);
-    probe.stop();
+    QElapsedTimer span;
+    span.start();
+    const std::vector<double> lags = Bench::measureLag([&] { return span.elapsed() < seconds * 1000; });
     const double watchCpu = cpuSeconds(watch.processId()) - watchCpu0;
     const double subCpu = cpuSeconds(sub.processId()) - subCpu0;
     QTest::qWait(200);
@@ -173,7 +151,7 @@ int main(int argc, char** argv)
     const QByteArray m1 = scrape(metricsPort);
     const double watched
         = sample(m1, "bridgescope_link_messages_total{") - sample(m0, "bridgescope_link_messages_total{");
-    const qint64 rssAfter = statusKb("VmRSS:");
+    const qint64 rssAfter = Bench::statusKb("VmRSS:");
     // The table as the load goes on: every link's destination rate on the Links page.
     LinkModel* model = window.linksPage()->linkModel();
     double rateSum = 0;

@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QList>
 #include <QString>
 #include <QtGlobal>
+#include <QTimer>
 #include <vector>
 
 /// Small helpers shared by the benchmarks: repeat, take the median, print a table row.
@@ -57,5 +60,36 @@ inline void row(const QString& what, double value, const QString& note = QString
 {
     std::printf("| %-58s | %12.1f | %s\n", qPrintable(what), value, qPrintable(note));
     std::fflush(stdout);
+}
+/// How late a 10 ms timer fires in this (GUI) thread while `running` says so, in ms.
+inline std::vector<double> measureLag(const std::function<bool()>& running)
+{
+    std::vector<double> lags;
+    QElapsedTimer clock;
+    qint64 expected = 10'000'000;
+    QTimer probe;
+    probe.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const qint64 now = clock.nsecsElapsed();
+        lags.push_back(double(std::max<qint64>(0, now - expected)) / 1e6);
+        expected = now + 10'000'000;
+    });
+    clock.start();
+    probe.start(10);
+    while (running())
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    return lags;
+}
+
+/// A field of /proc/self/status in kB ("VmRSS:", "VmHWM:"), or -1.
+inline qint64 statusKb(const char* field)
+{
+    QFile f(QStringLiteral("/proc/self/status"));
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (line.startsWith(field))
+            return line.mid(int(qstrlen(field))).trimmed().split(' ').first().toLongLong();
+    return -1;
 }
 } // namespace Bench
