@@ -1937,10 +1937,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Re&amp;geln…</translation>
     </message>
     <message>
-        <source>Load the thresholds (a rules YAML) every link is held to</source>
-        <translation>Die Schwellen (eine Regel-YAML) laden, an denen jede Verbindung gemessen wird</translation>
-    </message>
-    <message>
         <source>Filter links…</source>
         <translation>Verbindungen filtern…</translation>
     </message>
@@ -1969,14 +1965,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Bridge-Konfigurationen (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>Load Watch Rules</source>
-        <translation>Überwachungsregeln laden</translation>
-    </message>
-    <message>
-        <source>Rules (*.yaml *.yml);;All files (*)</source>
-        <translation>Regeln (*.yaml *.yml);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>No links: open a bridge config on the Map page, or add configs here.</source>
         <translation>Keine Verbindungen: eine Bridge-Konfiguration auf der Seite Map öffnen oder hier hinzufügen.</translation>
     </message>
@@ -2002,6 +1990,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Bridgescope: %1</source>
         <translation>Bridgescope: %1</translation>
+    </message>
+    <message>
+        <source>Edit the thresholds (a rules YAML) every link is held to</source>
+        <translation>Die Schwellen (eine Regel-YAML) bearbeiten, an denen jede Verbindung gemessen wird</translation>
     </message>
 </context>
 <context>
@@ -4752,6 +4744,48 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
     <message>
         <source>cannot read the bag: %1</source>
         <translation>das Bag ist nicht lesbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>RulesEditor</name>
+    <message>
+        <source>Watch Rules</source>
+        <translation>Überwachungsregeln</translation>
+    </message>
+    <message>
+        <source>Settings: latency_p99_ms, min_rate_hz, min_rate_percent, max_loss_percent, stall_seconds, stall_periods, source_stopped_seconds. A number is the alert level; {warning: N, alert: N} sets both. Entries under links match a glob on the ROS or MQTT topic, client:ID or config:NAME.</source>
+        <translation>Einstellungen: latency_p99_ms, min_rate_hz, min_rate_percent, max_loss_percent, stall_seconds, stall_periods, source_stopped_seconds. Eine Zahl ist die Alarmstufe; {warning: N, alert: N} setzt beide. Einträge unter links passen per Platzhalter auf das ROS- oder MQTT-Topic, client:ID oder config:NAME.</translation>
+    </message>
+    <message>
+        <source>&amp;Apply</source>
+        <translation>&amp;Anwenden</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Save As…</source>
+        <translation>&amp;Speichern unter…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Valid: %n override(s) after the defaults.</source>
+        <translation>
+            <numerusform>Gültig: %n Ausnahme nach den Vorgaben.</numerusform>
+            <numerusform>Gültig: %n Ausnahmen nach den Vorgaben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open Watch Rules</source>
+        <translation>Überwachungsregeln öffnen</translation>
+    </message>
+    <message>
+        <source>Rules (*.yaml *.yml);;All files (*)</source>
+        <translation>Regeln (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save Watch Rules</source>
+        <translation>Überwachungsregeln speichern</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include "watch/watchsession.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/viewsetup.h"
+#include "widgets/links/ruleseditor.h"
 
 #include <QApplication>
 #include <QFile>
@@ -161,7 +162,7 @@ QLayout* LinksPage::createBar()
     auto* add = new QPushButton(tr("&Add Configs…"), this);
     add->setToolTip(tr("Watch the mappings of more bridge configs (one per vehicle or robot)"));
     auto* rules = new QPushButton(tr("R&ules…"), this);
-    rules->setToolTip(tr("Load the thresholds (a rules YAML) every link is held to"));
+    rules->setToolTip(tr("Edit the thresholds (a rules YAML) every link is held to"));
     m_filter = new QLineEdit(this);
     m_filter->setObjectName(u"linkFilter"_s);
     m_filter->setPlaceholderText(tr("Filter links…"));
@@ -169,7 +170,7 @@ QLayout* LinksPage::createBar()
     m_summary = new QLabel(this);
     m_summary->setObjectName(u"linkSummary"_s);
     connect(add, &QPushButton::clicked, this, &LinksPage::chooseConfigs);
-    connect(rules, &QPushButton::clicked, this, &LinksPage::chooseRules);
+    connect(rules, &QPushButton::clicked, this, &LinksPage::editRules);
     connect(m_filter, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
     auto* bar = new QHBoxLayout;
     bar->addWidget(add);
@@ -267,14 +268,6 @@ bool LinksPage::addConfigFiles(const QStringList& paths, QString* error)
     return true;
 }
 
-bool LinksPage::loadRules(const QString& path, QString* error)
-{
-    const std::optional<WatchRules> rules = WatchRules::load(path, error);
-    if (rules)
-        m_watch->setRules(*rules);
-    return bool(rules);
-}
-
 void LinksPage::applyConfigs()
 {
     QList<std::pair<QString, BridgeConfig>> configs;
@@ -295,13 +288,11 @@ void LinksPage::chooseConfigs()
         m_summary->setText(error);
 }
 
-void LinksPage::chooseRules()
+void LinksPage::editRules()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load Watch Rules"), QString(),
-                                                      tr("Rules (*.yaml *.yml);;All files (*)"));
-    QString error;
-    if (!path.isEmpty() && !loadRules(path, &error))
-        m_summary->setText(error);
+    RulesEditor editor(m_watch->monitor()->rules(), this);
+    if (editor.exec() == QDialog::Accepted && editor.rules())
+        m_watch->setRules(*editor.rules());
 }
 
 void LinksPage::updateSummary()

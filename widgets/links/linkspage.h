@@ -35,7 +35,6 @@ public:
     void setMapConfig(const QString& name, const BridgeConfig& config);
     /// Adds the config files; false with `error` for one that cannot be read.
     bool addConfigFiles(const QStringList& paths, QString* error = nullptr);
-    bool loadRules(const QString& path, QString* error = nullptr);
 
     QTableView* linkView() const { return m_links; }
     QTableView* eventView() const { return m_events; }
@@ -52,7 +51,7 @@ private:
     QWidget* createEventLog();
     void applyConfigs();
     void chooseConfigs();
-    void chooseRules();
+    void editRules();
     void showDetail();
     void updateSummary();
     void notify(const WatchEvent& event);
