@@ -76,7 +76,8 @@ int parseReport(const QStringList& arguments, ReportRequest* request)
         "record), the benchmarking suite's timestamp CSV or a ROS bag with TimeStamped topics; several "
         "inputs "
         "are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join.\n"
-        "Exit status: 0 report written, 1 a run has no complete sample, 2 bad options or input, 130 "
+        "Exit status: 0 report written, 1 a run with a pipeline has no complete sample, 2 bad options or "
+        "input, 130 "
         "cancelled.");
     const ReportArguments a;
     parser.addOptions(a.all());
@@ -176,7 +177,7 @@ int writeReport(const ReportRequest& request, const Report& report)
     }
     int status = ExitOk;
     for (const auto& run : report.runs()) {
-        if (run->engine->samples() == 0) {
+        if (run->engine->samples() == 0 && !run->engine->pipeline().isEmpty()) { // a watch has no pipeline
             err(ReportText::tr("%1: no complete sample").arg(run->path));
             status = ExitFailed;
         }

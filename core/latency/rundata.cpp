@@ -5,6 +5,18 @@
 
 #include <algorithm>
 #include <QSet>
+#include <QSysInfo>
+
+using namespace Qt::StringLiterals;
+
+void RunInfo::describeThisMachine()
+{
+    if (host.isEmpty())
+        host = QSysInfo::machineHostName() + u" ("_s + QSysInfo::prettyProductName() + u')';
+    if (version.isEmpty())
+        version = u"Bridgescope "_s + QStringLiteral(BRIDGESCOPE_VERSION) + u", Qt "_s
+            + QString::fromLatin1(qVersion());
+}
 
 bool RunData::replay(LatencyEngine& engine, const std::function<bool()>& keepGoing) const
 {

@@ -26,6 +26,9 @@ struct RunInfo
     qint64 timeoutNs = 5'000'000'000LL;
     QString bridgeConfigPath;
     QByteArray bridgeConfig;
+
+    /// Fills `host` and `version` with this machine and this Bridgescope, where they are empty.
+    void describeThisMachine();
 };
 
 /// One stamp as recorded: which topic, which sample, when it was stamped, when Bridgescope got it,
@@ -47,6 +50,20 @@ struct RecordedLatency
     qint64 drainedNs = 0;
 };
 
+/// A watch event as recorded: a link's or a bridge's state change (WatchEvent in core/watch).
+struct RecordedEvent
+{
+    QString subject; ///< a link id ("config|ros2mqtt|/ros/topic|mqtt/topic") or "bridge:NAME"
+    QString level; ///< "warning" or "alert"
+    QStringList reasons; ///< "stall", "source_stopped", "loss", "rate", "latency", "bridge_down", ...
+    QString detail; ///< a sentence for people
+    qint64 startNs = 0;
+    qint64 endNs = 0; ///< 0: still open when the recording stopped
+    QByteArray json; ///< the whole event as a JSON object, with its figures at start and end
+
+    double durationSeconds() const { return endNs > startNs ? double(endNs - startNs) / 1e9 : 0; }
+};
+
 /// A run in memory: its info and every raw event, in the order they arrived.
 struct RunData
 {
@@ -55,6 +72,7 @@ struct RunData
     std::vector<RecordedStamp> stamps;
     QStringList series;
     std::vector<RecordedLatency> latencies;
+    std::vector<RecordedEvent> events; ///< by start time
     qint64 droppedBeforeImport = 0; ///< e.g. incomplete rows of a suite CSV
 
     /// Feeds every event to `engine` (set to the run's pipeline before) tick by tick, as live.

@@ -68,9 +68,52 @@ bool exec(QSqlQuery& q, const QString& sql, QString* error)
     return false;
 }
 
+/// Watch events (a run written before watch existed has no such table, and so no events). One row per event,
+/// its end filled in when it ends.
+const QString kEventsTable = u"CREATE TABLE events(subject TEXT NOT NULL, start_ns INTEGER NOT NULL, "
+                             "end_ns INTEGER NOT NULL, level TEXT NOT NULL, reasons TEXT NOT NULL, "
+                             "detail TEXT NOT NULL, json TEXT NOT NULL, PRIMARY KEY(subject, start_ns))"_s;
+
+/// What a run's event may hold: its JSON is dropped beyond this, texts are cut (a run file is input).
+constexpr qsizetype kMaxEventJson = 64 * 1024;
+constexpr qsizetype kMaxEventText = 4096;
+
 QString metaText(const QHash<QString, QVariant>& meta, const QString& key)
 {
     return meta.value(key).toString();
+}
+/// The run's watch events, by start; none from a run made before they were recorded.
+bool readEvents(QSqlQuery& q, std::vector<RecordedEvent>* events, QString* error)
+{
+    if (!exec(q, u"SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'events'"_s, error))
+        return false;
+    if (!q.next() || q.value(0).toInt() == 0)
+        return true;
+    if (!exec(q,
+              u"SELECT subject, start_ns, end_ns, level, reasons, detail, json FROM events "
+              "ORDER BY start_ns, rowid"_s,
+              error))
+        return false;
+    const auto text = [&q](int column) { return q.value(column).toString().left(kMaxEventText); };
+    while (q.next()) {
+        RecordedEvent e;
+        e.subject = text(0);
+        e.startNs = q.value(1).toLongLong();
+        e.endNs = q.value(2).toLongLong();
+        e.level = text(3);
+        e.reasons = text(4).split(u',', Qt::SkipEmptyParts);
+        e.detail = text(5);
+        const QString json = q.value(6).toString();
+        if (json.size() <= kMaxEventJson)
+            e.json = json.toUtf8();
+        events->push_back(std::move(e));
+    }
+    if (q.lastError().isValid()) {
+        if (error)
+            *error = q.lastError().text();
+        return false;
+    }
+    return true;
 }
 } // namespace
 
@@ -175,6 +218,7 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         u"CREATE TABLE latencies(series INTEGER NOT NULL, value_ns INTEGER NOT NULL, received_ns INTEGER NOT "
         u"NULL, "
         "drained_ns INTEGER NOT NULL)"_s,
+        kEventsTable,
     };
     for (const QString& sql : schema)
         if (!exec(q, sql, error))
@@ -191,7 +235,7 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         {u"ros_master"_s, Secrets::urlWithoutCredentials(info.rosMaster)},
         {u"broker"_s, Secrets::urlWithoutCredentials(info.broker)},
         {u"source"_s, info.source},
-        {u"pipeline"_s, QString::fromUtf8(info.pipeline.toYaml())},
+        {u"pipeline"_s, info.pipeline.isEmpty() ? QString() : QString::fromUtf8(info.pipeline.toYaml())},
         {u"window"_s, info.window},
         {u"timeout_ns"_s, info.timeoutNs},
         {u"bridge_config_path"_s, info.bridgeConfigPath},
@@ -295,6 +339,46 @@ bool RunWriter::append(const std::vector<StampEvent>& stamps, const std::vector<
     return true;
 }
 
+bool RunWriter::putEvents(const std::vector<RecordedEvent>& events, QString* error)
+{
+    if (events.empty())
+        return true;
+    QSqlDatabase db = d->connection->db();
+    if (!db.transaction()) {
+        if (error)
+            *error = db.lastError().text();
+        return false;
+    }
+    QSqlQuery q(db);
+    q.prepare(u"INSERT INTO events(subject, start_ns, end_ns, level, reasons, detail, json) "
+              "VALUES (?, ?, ?, ?, ?, ?, ?) ON CONFLICT(subject, start_ns) DO UPDATE SET "
+              "end_ns = excluded.end_ns, level = excluded.level, reasons = excluded.reasons, "
+              "detail = excluded.detail, json = excluded.json"_s);
+    // A null QString binds as NULL: the columns are NOT NULL, so an empty text is bound instead.
+    const auto text = [](const QString& s) { return s.isNull() ? QString(u""_s) : s; };
+    for (const RecordedEvent& e : events) {
+        q.bindValue(0, text(e.subject));
+        q.bindValue(1, e.startNs);
+        q.bindValue(2, e.endNs);
+        q.bindValue(3, text(e.level));
+        q.bindValue(4, text(e.reasons.join(u','))); // reasons are identifiers, never with a comma
+        q.bindValue(5, text(e.detail));
+        q.bindValue(6, text(QString::fromUtf8(e.json)));
+        if (!q.exec()) {
+            if (error)
+                *error = q.lastError().text();
+            db.rollback();
+            return false;
+        }
+    }
+    if (!db.commit()) {
+        if (error)
+            *error = db.lastError().text();
+        return false;
+    }
+    return true;
+}
+
 bool RunWriter::finish(qint64 stoppedNs, QString* error)
 {
     if (!setMeta(u"stopped_ns"_s, stoppedNs, error))
@@ -359,7 +443,10 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
     info.bridgeConfigPath = metaText(meta, u"bridge_config_path"_s);
     info.bridgeConfig = Secrets::redactYaml(metaText(meta, u"bridge_config"_s).toUtf8());
     QString why;
-    const std::optional<Pipeline> pipeline = Pipeline::fromYaml(metaText(meta, u"pipeline"_s).toUtf8(), &why);
+    // No pipeline: a run of `watch`, with events only.
+    const QByteArray pipelineYaml = metaText(meta, u"pipeline"_s).toUtf8();
+    const std::optional<Pipeline> pipeline
+        = pipelineYaml.isEmpty() ? std::make_optional(Pipeline()) : Pipeline::fromYaml(pipelineYaml, &why);
     if (!pipeline)
         return fail(tr("its pipeline cannot be read: %1").arg(why));
     info.pipeline = *pipeline;
@@ -405,6 +492,8 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
         run.latencies.push_back(
             {*series, q.value(1).toLongLong(), q.value(2).toLongLong(), q.value(3).toLongLong()});
     }
+    if (!readEvents(q, &run.events, &why))
+        return fail(why);
     if (progress)
         progress(100);
     return run;
@@ -461,7 +550,7 @@ bool RunFile::write(const QString& path, const RunData& run, QString* error, con
             latencies.push_back(
                 {run.series[run.latencies[l].series], run.latencies[l].valueNs, run.latencies[l].receivedNs});
         if (!writer.append({}, latencies, run.latencies.empty() ? 0 : run.latencies.back().drainedNs, error)
-            || !writer.finish(run.info.stoppedNs, error)) {
+            || !writer.putEvents(run.events, error) || !writer.finish(run.info.stoppedNs, error)) {
             cleanUp();
             return false;
         }

@@ -49,6 +49,10 @@ public:
     /// Appends events in one transaction (committed before it returns).
     bool append(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
                 qint64 drainedNs, QString* error = nullptr);
+    /// Writes watch events in one transaction: a new one is added, one seen before (same subject
+    /// and start) gets its end. So an event is in the file from its start, and a killed recorder
+    /// leaves it open rather than lost.
+    bool putEvents(const std::vector<RecordedEvent>& events, QString* error = nullptr);
     bool setMeta(const QString& key, const QVariant& value, QString* error = nullptr);
     /// Records the stop time and makes the file self-contained.
     bool finish(qint64 stoppedNs, QString* error = nullptr);

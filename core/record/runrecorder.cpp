@@ -20,6 +20,7 @@ struct RunRecorder::Private
     };
     std::mutex mutex;
     std::vector<Tick> queued; ///< guarded by mutex
+    std::vector<RecordedEvent> queuedEvents; ///< guarded by mutex
     std::atomic<qint64> queuedStamps {0};
     std::atomic<qint64> committed {0};
     std::atomic<bool> recording {false};
@@ -33,15 +34,19 @@ struct RunRecorder::Private
     bool flush(QString* error)
     {
         std::vector<Tick> ticks;
+        std::vector<RecordedEvent> events;
         {
             std::lock_guard<std::mutex> lock(mutex);
             ticks.swap(queued);
+            events.swap(queuedEvents);
         }
         for (const Tick& t : ticks) {
             if (!writer->append(t.stamps, t.latencies, t.drainedNs, error))
                 return false;
             queuedStamps.fetch_sub(qint64(t.stamps.size()));
         }
+        if (!writer->putEvents(events, error))
+            return false;
         committed.store(writer->stampCount());
         return true;
     }
@@ -131,6 +136,14 @@ void RunRecorder::add(const std::vector<StampEvent>& stamps, const std::vector<L
     std::lock_guard<std::mutex> lock(d->mutex);
     d->queued.push_back({stamps, latencies, drainedNs});
     d->queuedStamps.fetch_add(qint64(stamps.size()));
+}
+
+void RunRecorder::addEvent(const RecordedEvent& event)
+{
+    if (!d->recording)
+        return;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    d->queuedEvents.push_back(event);
 }
 
 bool RunRecorder::stop(QString* error)

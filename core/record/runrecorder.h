@@ -25,6 +25,8 @@ public:
     /// Queues one drain tick's events (GUI thread; cheap).
     void add(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
              qint64 drainedNs);
+    /// Queues a watch event's start or end (GUI thread; cheap). Written with the next commit.
+    void addEvent(const RecordedEvent& event);
     /// Commits what is queued, records the stop time and closes the file (waits for the worker).
     bool stop(QString* error = nullptr);
 

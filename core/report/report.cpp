@@ -4,6 +4,7 @@
 #include "latency/seriesid.h"
 #include "report/runloader.h"
 
+#include <algorithm>
 #include <QFileInfo>
 #include <QSet>
 
@@ -15,6 +16,7 @@ std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<P
     auto run = std::make_unique<ReportRun>();
     run->info = data.info;
     run->droppedBeforeImport = data.droppedBeforeImport;
+    run->events = std::move(data.events);
     run->name = data.info.name;
     Pipeline p = pipeline ? *pipeline : data.info.pipeline;
     p.setWindow(int(options.window));
@@ -123,11 +125,22 @@ QString Report::title() const
     if (!m_options.title.isEmpty())
         return m_options.title;
     if (m_runs.size() == 1)
-        return tr("Latency report: %1").arg(m_runs.front()->name);
+        return (hasLatency() ? tr("Latency report: %1") : tr("Watch report: %1")).arg(m_runs.front()->name);
     QStringList names;
     for (const auto& r : m_runs)
         names << r->name;
     return tr("Latency comparison: %1").arg(names.join(u", "_s));
+}
+
+bool Report::hasLatency() const
+{
+    return std::any_of(m_runs.cbegin(), m_runs.cend(),
+                       [](const auto& r) { return r->engine->pipeline().topicCount() > 0; });
+}
+
+bool Report::hasEvents() const
+{
+    return std::any_of(m_runs.cbegin(), m_runs.cend(), [](const auto& r) { return !r->events.empty(); });
 }
 
 QList<Report::Row> Report::rows() const

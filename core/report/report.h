@@ -22,6 +22,7 @@ struct ReportRun
     qint64 droppedBeforeImport = 0;
     std::vector<std::vector<qint64>> samples; ///< complete samples in pipeline order (for CSV)
     QHash<QString, int> stageByLabel; ///< the engine's stage series by label (first of each)
+    std::vector<RecordedEvent> events; ///< the watch events recorded with the run, by start
 
     qint64 dropped() const { return qint64(engine->counters().dropped()) + droppedBeforeImport; }
 };
@@ -51,6 +52,10 @@ public:
     bool isComparison() const { return m_runs.size() > 1; }
     QString title() const;
     const Options& options() const { return m_options; }
+    /// Whether any run has a pipeline to measure (a run of `watch` may hold events only).
+    bool hasLatency() const;
+    /// Whether any run recorded watch events.
+    bool hasEvents() const;
 
     /// The rows of the stage table: stage labels in order over all runs, then total and derived.
     struct Row

@@ -8,6 +8,7 @@
 #include "report/report.h"
 #include "report/reportpdf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <QDateTime>
 #include <QJsonArray>
@@ -190,19 +191,117 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
                         .arg(hosts.join(u", "_s))
                         .arg(p.crossings().size());
     }
-    add(QT_TRANSLATE_NOOP("ReportFormats", "Pipeline"), pipeline);
+    const bool measured = p.topicCount() > 0; // a run of `watch` may hold events only
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Pipeline"), measured ? pipeline : QString());
     add(QT_TRANSLATE_NOOP("ReportFormats", "Broker"), run.info.broker);
     add(QT_TRANSLATE_NOOP("ReportFormats", "ROS master"), run.info.rosMaster);
-    add(QT_TRANSLATE_NOOP("ReportFormats", "Samples"),
-        QCoreApplication::translate("ReportFormats", "%1 complete, %2 dropped, %3 duplicate stamps")
-            .arg(e.samples())
-            .arg(run.dropped())
-            .arg(e.counters().duplicates));
-    add(QT_TRANSLATE_NOOP("ReportFormats", "Window"),
-        e.window() > 0 ? QCoreApplication::translate("ReportFormats", "the last %1 samples").arg(e.window())
-                       : QCoreApplication::translate("ReportFormats", "the whole run"));
+    if (measured) {
+        add(QT_TRANSLATE_NOOP("ReportFormats", "Samples"),
+            QCoreApplication::translate("ReportFormats", "%1 complete, %2 dropped, %3 duplicate stamps")
+                .arg(e.samples())
+                .arg(run.dropped())
+                .arg(e.counters().duplicates));
+        add(QT_TRANSLATE_NOOP("ReportFormats", "Window"),
+            e.window() > 0
+                ? QCoreApplication::translate("ReportFormats", "the last %1 samples").arg(e.window())
+                : QCoreApplication::translate("ReportFormats", "the whole run"));
+    }
+    if (!run.events.empty()) {
+        const auto alerts = std::count_if(run.events.cbegin(), run.events.cend(),
+                                          [](const RecordedEvent& e) { return e.level == u"alert"_s; });
+        add(QT_TRANSLATE_NOOP("ReportFormats", "Events"),
+            QCoreApplication::translate("ReportFormats", "%1 (%2 alerts)")
+                .arg(run.events.size())
+                .arg(alerts));
+    }
     add(QT_TRANSLATE_NOOP("ReportFormats", "Host"), run.info.host);
     add(QT_TRANSLATE_NOOP("ReportFormats", "Notes"), run.info.notes);
+    return out;
+}
+
+/// Events listed in a report's table; the JSON report has them all.
+constexpr int kMaxEventRows = 1000;
+
+/// A link id ("config|ros2mqtt|/ros/topic|mqtt/topic") or "bridge:NAME" as people read it.
+QString eventSubject(const QString& subject)
+{
+    if (subject.startsWith(u"bridge:"_s))
+        return QCoreApplication::translate("ReportFormats", "bridge %1").arg(subject.mid(7));
+    const QStringList parts = subject.split(u'|');
+    if (parts.size() != 4)
+        return subject;
+    const bool toMqtt = parts[1] == u"ros2mqtt"_s;
+    return u"%1: %2 → %3"_s.arg(parts[0], toMqtt ? parts[2] : parts[3], toMqtt ? parts[3] : parts[2]);
+}
+
+QString duration(const RecordedEvent& e)
+{
+    if (e.endNs <= 0)
+        return QCoreApplication::translate("ReportFormats", "open");
+    const double s = e.durationSeconds();
+    return s < 120 ? QString::number(s, 'f', 1) + u" s"_s : QString::number(s / 60, 'f', 1) + u" min"_s;
+}
+
+/// The watch events of every run, by start (at most kMaxEventRows; `more` gets how many were left out).
+Table eventsTable(const Report& report, qsizetype* more)
+{
+    Table t;
+    if (report.isComparison())
+        t.header << QCoreApplication::translate("ReportFormats", "Run");
+    t.header << QCoreApplication::translate("ReportFormats", "Start")
+             << QCoreApplication::translate("ReportFormats", "Duration")
+             << QCoreApplication::translate("ReportFormats", "Link")
+             << QCoreApplication::translate("ReportFormats", "Level")
+             << QCoreApplication::translate("ReportFormats", "Why");
+    *more = 0;
+    for (const auto& run : report.runs())
+        for (const RecordedEvent& e : run->events) {
+            if (t.rows.size() >= kMaxEventRows) {
+                ++*more;
+                continue;
+            }
+            Cells c;
+            QStringList cells {when(e.startNs), duration(e), eventSubject(e.subject), e.level,
+                               e.detail.isEmpty() ? e.reasons.join(u", "_s) : e.detail};
+            if (report.isComparison())
+                c.label = run->name;
+            else
+                c.label = cells.takeFirst();
+            c.values = cells;
+            c.emphasized = false;
+            c.crossing = e.level == u"alert"_s; // shown like a marked row
+            t.rows.append(c);
+        }
+    return t;
+}
+
+QJsonArray eventsJson(const ReportRun& run)
+{
+    QJsonArray out;
+    for (const RecordedEvent& e : run.events) {
+        QJsonObject o = QJsonDocument::fromJson(e.json).object(); // the figures, when the file has them
+        o.remove(u"event"_s);
+        o.insert(u"subject"_s, e.subject);
+        o.insert(u"level"_s, e.level);
+        o.insert(u"reasons"_s, QJsonArray::fromStringList(e.reasons));
+        o.insert(u"detail"_s, e.detail);
+        o.insert(u"start_ns"_s, QString::number(e.startNs));
+        o.insert(u"end_ns"_s, e.endNs > 0 ? QJsonValue(QString::number(e.endNs)) : QJsonValue());
+        o.insert(u"duration_s"_s, e.endNs > 0 ? QJsonValue(e.durationSeconds()) : QJsonValue());
+        out.append(o);
+    }
+    return out;
+}
+
+QString eventsNote(qsizetype more)
+{
+    QString out = QCoreApplication::translate("ReportFormats",
+                                              "Events: every change of a watched link's or bridge's state "
+                                              "while the run was recorded; alerts are marked.");
+    if (more > 0)
+        out += u' '
+            + QCoreApplication::translate("ReportFormats", "%1 more events are in the JSON report.")
+                  .arg(more);
     return out;
 }
 
@@ -255,8 +354,12 @@ QString ReportFormats::suffix(Format format)
 
 QByteArray ReportFormats::json(const Report& report)
 {
-    const auto one
-        = [](const ReportRun& run) { return LatencyReport::json(*run.engine, run.droppedBeforeImport); };
+    const auto one = [](const ReportRun& run) {
+        QJsonObject o = LatencyReport::json(*run.engine, run.droppedBeforeImport);
+        if (!run.events.empty())
+            o.insert(u"events"_s, eventsJson(run));
+        return o;
+    };
     if (!report.isComparison())
         return QJsonDocument(one(*report.runs().front())).toJson(QJsonDocument::Indented);
     QJsonArray runs;
@@ -327,13 +430,22 @@ QByteArray ReportFormats::markdown(const Report& report)
         }
         out += u'\n';
     };
-    out += u"## "_s + tr("Latency per stage") + u"\n\n"_s;
-    table(stageTable(report));
-    if (report.isComparison()) {
-        out += u"## "_s + tr("Total latency per run") + u"\n\n"_s;
-        table(totalsTable(report));
+    if (report.hasLatency()) {
+        out += u"## "_s + tr("Latency per stage") + u"\n\n"_s;
+        table(stageTable(report));
+        if (report.isComparison()) {
+            out += u"## "_s + tr("Total latency per run") + u"\n\n"_s;
+            table(totalsTable(report));
+        }
+        out += note() + u"\n"_s;
     }
-    out += note() + u'\n';
+    if (report.hasEvents()) {
+        qsizetype more = 0;
+        const Table events = eventsTable(report, &more);
+        out += (report.hasLatency() ? u"\n## "_s : u"## "_s) + tr("Events") + u"\n\n"_s;
+        table(events);
+        out += eventsNote(more) + u'\n';
+    }
     return out.toUtf8();
 }
 
@@ -367,10 +479,17 @@ QByteArray ReportFormats::latex(const Report& report)
         }
         out += u"\\bottomrule\n\\end{tabular}\n\n"_s;
     };
-    table(stageTable(report), tr("Latency per stage"));
-    if (report.isComparison())
-        table(totalsTable(report), tr("Total latency per run"));
-    out += u"% "_s + note() + u'\n';
+    if (report.hasLatency()) {
+        table(stageTable(report), tr("Latency per stage"));
+        if (report.isComparison())
+            table(totalsTable(report), tr("Total latency per run"));
+        out += u"% "_s + note() + u'\n';
+    }
+    if (report.hasEvents()) {
+        qsizetype more = 0;
+        table(eventsTable(report, &more), tr("Events"));
+        out += u"% "_s + eventsNote(more) + u'\n';
+    }
     return out.toUtf8();
 }
 
@@ -409,10 +528,17 @@ QString ReportFormats::htmlBody(const Report& report, bool forQtRichText)
         }
         out += u"</table>\n"_s;
     };
-    table(stageTable(report), tr("Latency per stage"));
-    if (report.isComparison())
-        table(totalsTable(report), tr("Total latency per run"));
-    out += u"<p class=\"note\">"_s + note().toHtmlEscaped() + u"</p>\n"_s;
+    if (report.hasLatency()) {
+        table(stageTable(report), tr("Latency per stage"));
+        if (report.isComparison())
+            table(totalsTable(report), tr("Total latency per run"));
+        out += u"<p class=\"note\">"_s + note().toHtmlEscaped() + u"</p>\n"_s;
+    }
+    if (report.hasEvents()) {
+        qsizetype more = 0;
+        table(eventsTable(report, &more), tr("Events"));
+        out += u"<p class=\"note\">"_s + eventsNote(more).toHtmlEscaped() + u"</p>\n"_s;
+    }
     return out;
 }
 
@@ -450,8 +576,9 @@ QByteArray ReportFormats::html(const Report& report)
           ".note { color: #555; font-size: 0.9em; }\n"
           "</style>\n</head>\n<body>\n"_s;
     out += htmlBody(report, false);
-    out += u"<h2>"_s + tr("ECDF").toHtmlEscaped() + u"</h2>\n<figure>\n"_s
-        + QString::fromUtf8(ecdfSvg(report)) + u"</figure>\n"_s;
+    if (report.hasLatency())
+        out += u"<h2>"_s + tr("ECDF").toHtmlEscaped() + u"</h2>\n<figure>\n"_s
+            + QString::fromUtf8(ecdfSvg(report)) + u"</figure>\n"_s;
     out += u"<p class=\"note\">"_s
         + tr("Made with Bridgescope %1 on %2.")
               .arg(QStringLiteral(BRIDGESCOPE_VERSION), QDateTime::currentDateTime().toString(Qt::ISODate))

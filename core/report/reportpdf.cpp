@@ -48,16 +48,18 @@ QByteArray ReportPdf::render(const Report& report)
         }
 
         // The figure below the tables, or on a page of its own when it does not fit.
-        const QByteArray svg = ReportFormats::ecdfSvg(report);
-        QSvgRenderer renderer(svg);
-        const QSizeF natural = renderer.defaultSize();
-        const double height = page.width() * natural.height() / natural.width();
-        double y = doc.size().height() - page.height() * (pages - 1) + page.height() * 0.02;
-        if (y + height > page.height()) {
-            pdf.newPage();
-            y = 0;
+        if (report.hasLatency()) {
+            const QByteArray svg = ReportFormats::ecdfSvg(report);
+            QSvgRenderer renderer(svg);
+            const QSizeF natural = renderer.defaultSize();
+            const double height = page.width() * natural.height() / natural.width();
+            double y = doc.size().height() - page.height() * (pages - 1) + page.height() * 0.02;
+            if (y + height > page.height()) {
+                pdf.newPage();
+                y = 0;
+            }
+            renderer.render(&painter, QRectF(0, y, page.width(), height));
         }
-        renderer.render(&painter, QRectF(0, y, page.width(), height));
     }
     return buffer.data();
 }

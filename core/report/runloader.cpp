@@ -7,6 +7,7 @@
 #include "wire/bagheader.h"
 #include "wire/stampcodec.h"
 
+#include <algorithm>
 #include <QFileInfo>
 
 using namespace Qt::StringLiterals;
@@ -167,9 +168,12 @@ RunData RunLoader::join(std::vector<RunData> runs)
             l.series = seriesMap[std::size_t(l.series)];
             out.latencies.push_back(l);
         }
+        out.events.insert(out.events.end(), next.events.begin(), next.events.end());
         out.droppedBeforeImport += next.droppedBeforeImport;
         out.info.stoppedNs = std::max(out.info.stoppedNs, next.info.stoppedNs);
         out.info.name += u" + "_s + next.info.name;
     }
+    std::stable_sort(out.events.begin(), out.events.end(),
+                     [](const RecordedEvent& a, const RecordedEvent& b) { return a.startNs < b.startNs; });
     return out;
 }

@@ -9,7 +9,6 @@
 #include "wire/stampcodec.h"
 
 #include <QDateTime>
-#include <QSysInfo>
 #include <QThread>
 
 using namespace Qt::StringLiterals;
@@ -203,11 +202,7 @@ bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* 
     info.rosMaster = m_live->rosMasterUri();
     info.broker = m_live->mqtt()->profile().url;
     info.startedNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
-    if (info.host.isEmpty())
-        info.host = QSysInfo::machineHostName() + u" ("_s + QSysInfo::prettyProductName() + u')';
-    if (info.version.isEmpty())
-        info.version = u"Bridgescope "_s + QStringLiteral(BRIDGESCOPE_VERSION) + u", Qt "_s
-            + QString::fromLatin1(qVersion());
+    info.describeThisMachine();
     if (!m_recorder->start(path, info, error))
         return false;
     // A run starts from zero, so that opening it later shows exactly what was shown live.

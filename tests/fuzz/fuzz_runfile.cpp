@@ -46,6 +46,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         FUZZ_CHECK(l.series >= 0 && l.series < run->series.size(),
                    "a latency of a series that is not in the run");
 
+    for (const RecordedEvent& e : run->events)
+        FUZZ_CHECK(e.subject.size() <= 4096 && e.detail.size() <= 4096 && e.json.size() <= 3 * 64 * 1024,
+                   "an event of the run file larger than its limits");
+
     LatencyEngine engine(run->info.pipeline);
     engine.setWindow(run->info.window);
     engine.setTimeoutNs(run->info.timeoutNs);

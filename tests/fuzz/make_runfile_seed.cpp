@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Writes the seed of fuzz_runfile: a small but real run file (three stamp topics, a few samples,
-// one external latency series) through RunFile::write, as `record` and imports write it.
+// one external latency series, one watch event) through RunFile::write, as `record` and imports write it.
 //   make_runfile_seed OUT.bsrun
 #include "record/runfile.h"
 
@@ -34,6 +34,13 @@ int main(int argc, char** argv)
         }
         run.latencies.push_back({0, 3'000'000LL + s, sample + 20'000'000LL, sample + 50'000'000LL});
     }
+    run.events.push_back({QStringLiteral("seed|ros2mqtt|/a/in|a/out"),
+                          QStringLiteral("alert"),
+                          {QStringLiteral("stall")},
+                          QStringLiteral("no message for 1.2 s"),
+                          run.info.startedNs + 200'000'000LL,
+                          run.info.startedNs + 700'000'000LL,
+                          "{\"figures\":{\"lost\":2}}"});
     QString error;
     if (!RunFile::write(QString::fromLocal8Bit(argv[1]), run, &error)) {
         std::fprintf(stderr, "%s\n", qPrintable(error));

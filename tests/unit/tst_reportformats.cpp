@@ -10,6 +10,9 @@
 #include "report/reportpdf.h"
 #include "syntheticrun.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -162,6 +165,65 @@ private slots:
         QCOMPARE(polylines, 3); // the three totals in one figure, as the paper's Fig. 5
         QVERIFY(tables >= 5); // three runs' facts, the stage table, the totals
         QVERIFY(html.contains("stroke-dasharray=\"6,4\"")); // means
+    }
+
+    // Issue 13: the events recorded with a run are listed in every format; a run of `watch`
+    // (events, no pipeline) has no latency tables or figure.
+    void eventsAreListed()
+    {
+        RunData measured = RunData::fromSamples(paperWithHosts(), SyntheticRun::paper(50, 0, 7).samples);
+        measured.info.name = u"measured"_s;
+        const qint64 t0 = 1'700'000'000'000'000'000LL;
+        measured.events.push_back({u"lab|ros2mqtt|/w/plain|w/plain"_s,
+                                   u"alert"_s,
+                                   {u"stall"_s},
+                                   u"no message at the destination for 1.2 s"_s,
+                                   t0,
+                                   t0 + 3'000'000'000LL,
+                                   R"({"figures":{"lost":7}})"});
+        measured.events.push_back({u"bridge:cloud_bridge"_s,
+                                   u"warning"_s,
+                                   {u"bridge_down"_s},
+                                   u"<down & out>"_s,
+                                   t0 + 1'000'000'000LL,
+                                   0,
+                                   "not json"});
+        RunData watched;
+        watched.info.name = u"watched"_s;
+        watched.events.push_back(measured.events.front());
+
+        const Report one = Report::fromRuns({measured}, std::nullopt, {});
+        const QString md = QString::fromUtf8(ReportFormats::markdown(one));
+        QVERIFY2(md.contains(u"## Events"_s), qPrintable(md));
+        QVERIFY2(md.contains(u" | 3.0 s | lab: /w/plain → w/plain | alert | no message at the destination"_s),
+                 qPrintable(md));
+        QVERIFY(md.contains(u"| open | bridge cloud_bridge | warning | <down & out> |"_s));
+        QVERIFY(md.contains(u"**Events:** 2 (1 alerts)"_s));
+        QVERIFY(md.indexOf(u"Latency per stage"_s) < md.indexOf(u"## Events"_s));
+
+        const QJsonArray events
+            = QJsonDocument::fromJson(ReportFormats::json(one)).object().value(u"events"_s).toArray();
+        QCOMPARE(events.size(), 2);
+        QCOMPARE(events[0].toObject().value(u"figures"_s).toObject().value(u"lost"_s).toInt(), 7);
+        QCOMPARE(events[0].toObject().value(u"end_ns"_s).toString(), QString::number(t0 + 3'000'000'000LL));
+        QVERIFY(events[1].toObject().value(u"end_ns"_s).isNull());
+
+        const Report both = Report::fromRuns({measured, watched}, std::nullopt, {});
+        QXmlStreamReader xml(ReportFormats::html(both));
+        while (!xml.atEnd())
+            xml.readNext();
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+        QVERIFY(ReportFormats::htmlBody(both, true).contains(u"&lt;down &amp; out&gt;"_s));
+        const QString tex = QString::fromUtf8(ReportFormats::latex(both));
+        QCOMPARE(tex.count(u"\\begin{tabular}"_s), 3); // stages, totals, events
+        QVERIFY(tex.contains(u"watched & "_s));
+
+        const Report onlyEvents = Report::fromRuns({watched}, std::nullopt, {});
+        const QString mdEvents = QString::fromUtf8(ReportFormats::markdown(onlyEvents));
+        QVERIFY(!mdEvents.contains(u"Latency per stage"_s));
+        QVERIFY(!mdEvents.contains(u"Pipeline"_s));
+        QVERIFY(mdEvents.contains(u"## Events"_s));
+        QVERIFY(!ReportFormats::html(onlyEvents).contains("<svg"));
     }
 
     void pdfHasPagesAndText()

@@ -378,6 +378,90 @@ private slots:
         QCOMPARE(e.series(e.stageSeries(0)).stats().min, -spanMs);
         QCOMPARE(e.series(e.stageSeries(1)).stats().max, spanMs);
     }
+
+    // Issue 13: a watch's events are in the run from their start (a killed recorder leaves them
+    // open, not lost), get their end when they end, survive a rewrite, and an older run without
+    // the table reads with none. A run of `watch` has no pipeline.
+    void watchEventsAreKeptFromStartToEnd()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"watch.bsrun"_s);
+        RunInfo info;
+        info.name = u"overnight"_s;
+        info.startedNs = 1'700'000'000'000'000'000LL;
+        QString error;
+        {
+            RunWriter writer;
+            QVERIFY2(writer.create(path, info, &error), qPrintable(error));
+            RecordedEvent stall {u"lab|ros2mqtt|/w/plain|w/plain"_s,
+                                 u"alert"_s,
+                                 {u"stall"_s, u"loss"_s},
+                                 u"no message at the destination for 1.2 s"_s,
+                                 info.startedNs + 5'000'000'000LL,
+                                 0,
+                                 R"({"subject":"x","figures":{"lost":3}})"};
+            RecordedEvent down {u"bridge:watch_bridge"_s,
+                                u"alert"_s,
+                                {u"bridge_down"_s},
+                                QString(),
+                                info.startedNs + 6'000'000'000LL,
+                                0,
+                                "{}"};
+            QVERIFY2(writer.putEvents({stall, down}, &error), qPrintable(error));
+            stall.endNs = stall.startNs + 2'500'000'000LL;
+            stall.json = R"({"subject":"x","figures":{"lost":7}})";
+            QVERIFY2(writer.putEvents({stall}, &error), qPrintable(error));
+            QVERIFY2(writer.finish(info.startedNs + 10'000'000'000LL, &error), qPrintable(error));
+        }
+        std::optional<RunData> back = RunFile::read(path, &error);
+        QVERIFY2(back, qPrintable(error));
+        QVERIFY(back->info.pipeline.isEmpty());
+        QCOMPARE(back->events.size(), std::size_t(2)); // the end updated the event, no second row
+        const RecordedEvent& e = back->events[0];
+        QCOMPARE(e.subject, u"lab|ros2mqtt|/w/plain|w/plain"_s);
+        QCOMPARE(e.reasons, (QStringList {u"stall"_s, u"loss"_s}));
+        QCOMPARE(e.durationSeconds(), 2.5);
+        QVERIFY(e.json.contains("\"lost\":7"));
+        QCOMPARE(back->events[1].endNs, 0); // still open when the recording stopped
+
+        // Rewritten (an import, a join): the same events.
+        const QString copy = dir.filePath(u"copy.bsrun"_s);
+        QVERIFY2(RunFile::write(copy, *back, &error), qPrintable(error));
+        const std::optional<RunData> again = RunFile::read(copy, &error);
+        QVERIFY2(again, qPrintable(error));
+        QCOMPARE(again->events.size(), std::size_t(2));
+        QCOMPARE(again->events[0].endNs, e.endNs);
+
+        // The report of a run with events only: the events, no latency tables.
+        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QVERIFY(report->hasEvents() && !report->hasLatency());
+
+        // A run from before events were recorded, and one whose texts are far too long.
+        {
+            QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"edit"_s);
+            db.setDatabaseName(copy);
+            QVERIFY(db.open());
+            QSqlQuery q(db);
+            QVERIFY(q.exec(u"UPDATE events SET detail = '%1' WHERE subject LIKE 'bridge:%%'"_s.arg(
+                QString(100'000, u'x'))));
+            db.close();
+            db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"edit2"_s);
+            db.setDatabaseName(path);
+            QVERIFY(db.open());
+            QSqlQuery drop(db);
+            QVERIFY(drop.exec(u"DROP TABLE events"_s));
+            db.close();
+        }
+        QSqlDatabase::removeDatabase(u"edit"_s);
+        QSqlDatabase::removeDatabase(u"edit2"_s);
+        back = RunFile::read(path, &error);
+        QVERIFY2(back, qPrintable(error));
+        QVERIFY(back->events.empty());
+        back = RunFile::read(copy, &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->events[1].detail.size(), 4096);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRunFiles)
