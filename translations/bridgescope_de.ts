@@ -1823,6 +1823,30 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Last event</source>
         <translation>Letztes Ereignis</translation>
     </message>
+    <message>
+        <source>No latency: the payloads carry no stamps, no mqtt_client latency topic and no pipeline timestamps cover this link.</source>
+        <translation>Keine Latenz: Die Nutzdaten tragen keine Zeitstempel, und weder ein Latenz-Topic von mqtt_client noch Zeitstempel einer Pipeline decken diese Verbindung ab.</translation>
+    </message>
+    <message>
+        <source>Latency from the stamps mqtt_client puts in front of the payloads.</source>
+        <translation>Latenz aus den Zeitstempeln, die mqtt_client den Nutzdaten voranstellt.</translation>
+    </message>
+    <message>
+        <source>Latency from mqtt_client&apos;s ~/latencies topic.</source>
+        <translation>Latenz aus dem Topic ~/latencies von mqtt_client.</translation>
+    </message>
+    <message>
+        <source>Latency from the pipeline&apos;s timestamp topics (PREFIX/in to PREFIX/out).</source>
+        <translation>Latenz aus den Zeitstempel-Topics der Pipeline (PREFIX/in bis PREFIX/out).</translation>
+    </message>
+    <message>
+        <source>Discovered: an mqtt_client announces this topic&apos;s type, no open config maps it. Only its MQTT end is watched (rate, bytes, stamps, Header.seq); open the bridge&apos;s config to watch both ends.</source>
+        <translation>Entdeckt: Ein mqtt_client kündigt den Typ dieses Topics an, keine geöffnete Konfiguration bildet es ab. Nur das MQTT-Ende wird beobachtet (Rate, Bytes, Zeitstempel, Header.seq); öffnen Sie die Konfiguration der Bridge, um beide Enden zu beobachten.</translation>
+    </message>
+    <message>
+        <source>(announced by a bridge)</source>
+        <translation>(von einer Bridge angekündigt)</translation>
+    </message>
 </context>
 <context>
     <name>LinkMonitor</name>
@@ -1994,6 +2018,14 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Edit the thresholds (a rules YAML) every link is held to</source>
         <translation>Die Schwellen (eine Regel-YAML) bearbeiten, an denen jede Verbindung gemessen wird</translation>
+    </message>
+    <message>
+        <source>&amp;Discovered</source>
+        <translation>&amp;Entdeckte</translation>
+    </message>
+    <message>
+        <source>Also watch the links mqtt_client announces on the broker that no open config maps (their MQTT end)</source>
+        <translation>Auch die Verbindungen beobachten, die mqtt_client am Broker ankündigt und keine geöffnete Konfiguration abbildet (ihr MQTT-Ende)</translation>
     </message>
 </context>
 <context>
@@ -4095,15 +4127,13 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
         <source>clock offset</source>
         <translation>Uhrenversatz</translation>
     </message>
+    <message>
+        <source>Watch report: %1</source>
+        <translation>Überwachungsbericht: %1</translation>
+    </message>
 </context>
 <context>
     <name>ReportCommand</name>
-    <message>
-        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite&apos;s timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper&apos;s Table I and Fig. 5), or joined into one run with --join.
-Exit status: 0 report written, 1 a run has no complete sample, 2 bad options or input, 130 cancelled.</source>
-        <translation>Berichtet die Latenzstatistik gemessener Läufe: jede Stufe, die Gesamtlatenz und, wenn die Pipeline Rechner angibt, die Umlaufzeit der Kommunikation, deren Hälfte für eine Richtung und den Uhrenversatz. INPUT ist ein Lauf (bridgescope record), die Zeitstempel-CSV der Benchmarking-Suite oder ein ROS-Bag mit TimeStamped-Topics; mehrere Eingaben werden nebeneinander verglichen (Tabelle I und Abb. 5 des Papers) oder mit --join zu einem Lauf zusammengeführt.
-Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 falsche Optionen oder Eingabe, 130 abgebrochen.</translation>
-    </message>
     <message>
         <source>Pipeline YAML (the suite&apos;s metrics-logger file; hosts: optional).</source>
         <translation>Pipeline-YAML (die Metrics-Logger-Datei der Suite; hosts: optional).</translation>
@@ -4167,6 +4197,12 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
     <message>
         <source>%1: no complete sample</source>
         <translation>%1: keine vollständige Probe</translation>
+    </message>
+    <message>
+        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite&apos;s timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper&apos;s Table I and Fig. 5), or joined into one run with --join.
+Exit status: 0 report written, 1 a run with a pipeline has no complete sample, 2 bad options or input, 130 cancelled.</source>
+        <translation>Berichtet die Latenzstatistik gemessener Läufe: jede Stufe, die Gesamtlatenz und, wenn die Pipeline Rechner angibt, die Umlaufzeit der Kommunikation, deren Hälfte für eine Richtung und den Uhrenversatz. INPUT ist ein Lauf (bridgescope record), die Zeitstempel-CSV der Benchmarking-Suite oder ein ROS-Bag mit TimeStamped-Topics; mehrere Eingaben werden nebeneinander verglichen (Tabelle I und Abb. 5 des Papers) oder mit --join zu einem Lauf zusammengeführt.
+Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständige Probe, 2 falsche Optionen oder Eingabe, 130 abgebrochen.</translation>
     </message>
 </context>
 <context>
@@ -4322,6 +4358,50 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf hat keine vollständige Probe, 2 
     <message>
         <source>a CSV file holds a single run: give one input, or join several with --join</source>
         <translation>eine CSV-Datei enthält nur einen Lauf: eine Eingabe angeben oder mehrere mit --join zusammenführen</translation>
+    </message>
+    <message>
+        <source>Events</source>
+        <translation>Ereignisse</translation>
+    </message>
+    <message>
+        <source>%1 (%2 alerts)</source>
+        <translation>%1 (%2 Alarme)</translation>
+    </message>
+    <message>
+        <source>bridge %1</source>
+        <translation>Bridge %1</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>offen</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Beginn</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Stufe</translation>
+    </message>
+    <message>
+        <source>Why</source>
+        <translation>Grund</translation>
+    </message>
+    <message>
+        <source>Events: every change of a watched link&apos;s or bridge&apos;s state while the run was recorded; alerts are marked.</source>
+        <translation>Ereignisse: jede Zustandsänderung einer überwachten Verbindung oder Bridge während der Aufnahme des Laufs; Alarme sind hervorgehoben.</translation>
+    </message>
+    <message>
+        <source>%1 more events are in the JSON report.</source>
+        <translation>%1 weitere Ereignisse stehen im JSON-Bericht.</translation>
     </message>
 </context>
 <context>
@@ -5265,16 +5345,6 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>mqtt_client-Konfigurationen, deren Mappings überwacht werden.</translation>
     </message>
     <message>
-        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state. Every change of a link&apos;s state is an event, printed as a JSON line.
-Exit status: 0 stopped, 1 the metrics port could not be served, 2 bad options.</source>
-        <translation>Überwacht jedes Mapping der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, das Verstummen der Quelle, die Latenz gestempelter Nachrichten und den Zustand der Bridges. Jede Änderung des Zustands einer Verbindung ist ein Ereignis, ausgegeben als JSON-Zeile.
-Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient werden, 2 falsche Optionen.</translation>
-    </message>
-    <message>
-        <source>watch needs at least one bridge config; see bridgescope watch --help</source>
-        <translation>watch braucht mindestens eine Bridge-Konfiguration; siehe bridgescope watch --help</translation>
-    </message>
-    <message>
         <source>--seconds takes a number of seconds</source>
         <translation>--seconds erwartet eine Zahl von Sekunden</translation>
     </message>
@@ -5292,6 +5362,52 @@ Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient werden, 2 falsche
     <message>
         <source>%1 s: %2 ok, %3 warning, %4 alert</source>
         <translation>%1 s: %2 ok, %3 Warnung, %4 Alarm</translation>
+    </message>
+    <message>
+        <source>Watched configs: %1</source>
+        <translation>Überwachte Konfigurationen: %1</translation>
+    </message>
+    <message>
+        <source>Record the events in this run file (never overwritten); bridgescope report lists them.</source>
+        <translation>Die Ereignisse in dieser Laufdatei aufzeichnen (nie überschrieben); bridgescope report listet sie auf.</translation>
+    </message>
+    <message>
+        <source>The run&apos;s name (default: the file&apos;s base name).</source>
+        <translation>Name des Laufs (Standard: der Basisname der Datei).</translation>
+    </message>
+    <message>
+        <source>Notes kept with the run.</source>
+        <translation>Notizen, die mit dem Lauf gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>--name and --notes describe a run: give -o RUN.bsrun too</source>
+        <translation>--name und --notes beschreiben einen Lauf: bitte auch -o RUN.bsrun angeben</translation>
+    </message>
+    <message>
+        <source>recording stopped: %1</source>
+        <translation>Aufnahme beendet: %1</translation>
+    </message>
+    <message>
+        <source>events recorded in %1</source>
+        <translation>Ereignisse aufgezeichnet in %1</translation>
+    </message>
+    <message>
+        <source>Watch only the configs&apos; mappings, not the links mqtt_client announces on the broker.</source>
+        <translation>Nur die Abbildungen der Konfigurationen beobachten, nicht die Verbindungen, die mqtt_client am Broker ankündigt.</translation>
+    </message>
+    <message>
+        <source>The timestamp topics&apos; pipeline: a mapping with a timestamp_topic_prefix takes its latency from PREFIX/in to PREFIX/out, and -o records the samples as well.</source>
+        <translation>Die Pipeline der Zeitstempel-Topics: Eine Abbildung mit timestamp_topic_prefix erhält ihre Latenz von PREFIX/in bis PREFIX/out, und -o zeichnet auch die Messpunkte auf.</translation>
+    </message>
+    <message>
+        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state; and, from their MQTT end, the links mqtt_client announces on the broker that no config maps. Every change of a link&apos;s state is an event, printed as a JSON line.
+Exit status: 0 stopped, 1 the metrics port could not be served or the run file not written, 2 bad options.</source>
+        <translation>Beobachtet jede Abbildung der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, eine verstummte Quelle, Latenz gestempelter Nachrichten und den Zustand der Bridges; dazu, von ihrem MQTT-Ende aus, die Verbindungen, die mqtt_client am Broker ankündigt und keine Konfiguration abbildet. Jede Zustandsänderung einer Verbindung ist ein Ereignis und wird als JSON-Zeile ausgegeben.
+Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient oder die Messlauf-Datei nicht geschrieben werden, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>watch needs a bridge config, or --broker to watch the links announced there; see bridgescope watch --help</source>
+        <translation>watch braucht eine Bridge-Konfiguration oder --broker, um die dort angekündigten Verbindungen zu beobachten; siehe bridgescope watch --help</translation>
     </message>
 </context>
 <context>

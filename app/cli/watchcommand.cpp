@@ -5,8 +5,11 @@
 #include "base/wallclock.h"
 #include "base/yamllimits.h"
 #include "config/configreader.h"
+#include "latency/pipeline.h"
+#include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
+#include "session/measuresession.h"
 #include "watch/watchmetrics.h"
 #include "watch/watchsession.h"
 
@@ -38,7 +41,11 @@ struct WatchRequest
     WatchRules rules;
     QString metrics; ///< HOST:PORT, empty: none
     QString eventsFile; ///< empty: none
+    QString runPath; ///< -o: the events are recorded in this run file; empty: none
+    RunInfo info; ///< of that run
     double seconds = 0; ///< 0: until Ctrl+C
+    bool discover = true; ///< also the links mqtt_client announces that no config has
+    std::optional<Pipeline> pipeline; ///< --pipeline: latency of the mappings with stamp topics, and recorded
 };
 
 /// Reads the configs; their names are the files' base names (made unique).
@@ -63,7 +70,13 @@ bool readConfigs(const QStringList& paths, WatchRequest* request)
             name = QFileInfo(path).completeBaseName() + u'#' + QString::number(n);
         names.insert(name);
         request->configs.append({name, read.config});
+        if (request->info.bridgeConfigPath.isEmpty()) { // a run keeps one config: the first
+            request->info.bridgeConfigPath = QFileInfo(path).absoluteFilePath();
+            request->info.bridgeConfig = *bytes;
+        }
     }
+    if (paths.size() > 1)
+        request->info.notes = Watch::tr("Watched configs: %1").arg(paths.join(u", "_s));
     return true;
 }
 
@@ -99,21 +112,43 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
                                     Watch::tr("Append every event to FILE as a JSON line."), u"FILE"_s);
     const QCommandLineOption seconds(u"seconds"_s, Watch::tr("Stop after S seconds (default: at Ctrl+C)."),
                                      u"S"_s);
-    parser.addOptions({broker, master, rules, metrics, events, seconds});
+    const QCommandLineOption output({u"o"_s, u"output"_s},
+                                    Watch::tr("Record the events in this run file (never overwritten); "
+                                              "bridgescope report lists them."),
+                                    u"RUN.bsrun"_s);
+    const QCommandLineOption name(u"name"_s, Watch::tr("The run's name (default: the file's base name)."),
+                                  u"NAME"_s);
+    const QCommandLineOption notes(u"notes"_s, Watch::tr("Notes kept with the run."), u"TEXT"_s);
+    const QCommandLineOption noDiscover(
+        u"no-discover"_s,
+        Watch::tr("Watch only the configs' mappings, not the links mqtt_client announces on the broker."));
+    const QCommandLineOption pipeline(
+        u"pipeline"_s,
+        Watch::tr(
+            "The timestamp topics' pipeline: a mapping with a timestamp_topic_prefix takes its latency from "
+            "PREFIX/in to PREFIX/out, and -o records the samples as well."),
+        u"PIPELINE.yaml"_s);
+    parser.addOptions(
+        {broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover, pipeline});
     parser.addPositionalArgument(u"CONFIG"_s, Watch::tr("mqtt_client configs whose mappings are watched."),
-                                 u"CONFIG.yaml..."_s);
+                                 u"[CONFIG.yaml...]"_s);
     QStringList args = arguments;
     args.replace(0, u"bridgescope watch"_s);
     const int parsed = CliOutput::parseCommand(
         parser, args,
-        Watch::tr("Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages "
-                  "lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the "
-                  "bridges' state. Every change of a link's state is an event, printed as a JSON line.\n"
-                  "Exit status: 0 stopped, 1 the metrics port could not be served, 2 bad options."));
+        Watch::tr(
+            "Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages "
+            "lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the "
+            "bridges' state; and, from their MQTT end, the links mqtt_client announces on the broker "
+            "that no config maps. Every change of a link's state is an event, printed as a JSON line.\n"
+            "Exit status: 0 stopped, 1 the metrics port could not be served or the run file not written, "
+            "2 bad options."));
     if (parsed >= 0)
         return parsed;
-    if (parser.positionalArguments().isEmpty()) {
-        err(Watch::tr("watch needs at least one bridge config; see bridgescope watch --help"));
+    request->discover = !parser.isSet(noDiscover);
+    if (parser.positionalArguments().isEmpty() && (!parser.isSet(broker) || !request->discover)) {
+        err(Watch::tr("watch needs a bridge config, or --broker to watch the links announced there; see "
+                      "bridgescope watch --help"));
         return ExitUsage;
     }
     if (!readConfigs(parser.positionalArguments(), request))
@@ -139,9 +174,26 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
         }
         request->rules = *r;
     }
+    if (parser.isSet(pipeline)) {
+        request->pipeline = Pipeline::load(parser.value(pipeline), &why);
+        if (!request->pipeline) {
+            err(why);
+            return ExitUsage;
+        }
+    }
     request->masterUri = parser.value(master);
     request->metrics = parser.value(metrics);
     request->eventsFile = parser.value(events);
+    request->runPath = parser.value(output);
+    if ((parser.isSet(name) || parser.isSet(notes)) && !parser.isSet(output)) {
+        err(Watch::tr("--name and --notes describe a run: give -o RUN.bsrun too"));
+        return ExitUsage;
+    }
+    request->info.name
+        = parser.isSet(name) ? parser.value(name) : QFileInfo(request->runPath).completeBaseName();
+    if (parser.isSet(notes))
+        request->info.notes = parser.value(notes)
+            + (request->info.notes.isEmpty() ? QString() : u"\n"_s + request->info.notes);
     return -1;
 }
 
@@ -165,18 +217,48 @@ int runWatch(const WatchRequest& request)
     }
     LiveSession live;
     live.setRosMasterUri(request.masterUri);
-    live.connectBroker(request.broker);
     WatchSession watch(&live);
     watch.setRules(request.rules);
+    watch.setDiscovering(request.discover);
     watch.setConfigs(request.configs);
     LinkMonitor* monitor = watch.monitor();
-    const auto print = [&events](const WatchEvent& e) {
+    // With a pipeline the measurement records the run (its stamps and the events); without one the
+    // run holds the events alone.
+    std::unique_ptr<MeasureSession> measure;
+    RunRecorder ownRecorder;
+    RunRecorder* recorder = &ownRecorder;
+    if (request.pipeline) {
+        measure = std::make_unique<MeasureSession>(&live);
+        measure->setPipeline(*request.pipeline);
+        watch.useMeasurement(measure.get());
+        recorder = measure->recorder();
+    }
+    if (!request.runPath.isEmpty()) {
+        RunInfo info = request.info;
+        info.startedNs = wallClockNs();
+        info.broker = request.broker.url;
+        info.rosMaster = request.masterUri;
+        info.describeThisMachine();
+        if (measure ? !measure->startRecording(request.runPath, info, &why)
+                    : !ownRecorder.start(request.runPath, info, &why)) {
+            err(why);
+            return ExitUsage;
+        }
+    }
+    bool recordFailed = false;
+    QObject::connect(recorder, &RunRecorder::failed, [&recordFailed](const QString& failure) {
+        err(Watch::tr("recording stopped: %1").arg(failure));
+        recordFailed = true;
+    });
+    live.connectBroker(request.broker);
+    const auto print = [&events, &ownRecorder](const WatchEvent& e) {
         const QByteArray line = QJsonDocument(e.toJson()).toJson(QJsonDocument::Compact);
         out(QString::fromUtf8(line));
         if (events.isOpen()) {
             events.write(line + '\n');
             events.flush();
         }
+        ownRecorder.addEvent(e.toRecorded()); // with a pipeline, the measurement records them
     };
     QObject::connect(monitor, &LinkMonitor::eventStarted, print);
     QObject::connect(monitor, &LinkMonitor::eventEnded, print);
@@ -207,7 +289,15 @@ int runWatch(const WatchRequest& request)
                     .arg(counts[2]));
         });
     monitor->closeAll(wallClockNs());
-    return status;
+    if (recorder->isRecording()) {
+        live.drainNow(); // the last stamps
+        if (measure ? !measure->stopRecording(&why) : !ownRecorder.stop(&why)) {
+            err(Watch::tr("%1: %2").arg(request.runPath, why));
+            return ExitFailed;
+        }
+        err(Watch::tr("events recorded in %1").arg(request.runPath));
+    }
+    return recordFailed ? ExitFailed : status;
 }
 } // namespace
 

@@ -57,6 +57,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_reports, tr("Reports"));
     m_pages->addTab(m_links, tr("Links"));
     watchTheMapConfig();
+    m_watch->useMeasurement(m_measure); // pipeline latency for the links; a recorded run lists their events
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
     connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
             [this](const QString& path) { m_reports->addInputs({path}); });

@@ -103,6 +103,22 @@ int LinkModel::columnCount(const QModelIndex& parent) const
     return parent.isValid() ? 0 : ColumnCount;
 }
 
+QString LinkModel::latencySourceText(LatencySource source)
+{
+    switch (source) {
+    case LatencySource::None:
+        return tr("No latency: the payloads carry no stamps, no mqtt_client latency topic and no pipeline "
+                  "timestamps cover this link.");
+    case LatencySource::Stamps:
+        return tr("Latency from the stamps mqtt_client puts in front of the payloads.");
+    case LatencySource::LatencyTopic:
+        return tr("Latency from mqtt_client's ~/latencies topic.");
+    case LatencySource::Pipeline:
+        return tr("Latency from the pipeline's timestamp topics (PREFIX/in to PREFIX/out).");
+    }
+    return {};
+}
+
 QVariant LinkModel::data(const QModelIndex& index, int role) const
 {
     if (!index.isValid() || index.row() >= m_rows.size())
@@ -116,13 +132,24 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
         return r.id;
     if (role == HistoryRole)
         return QVariant::fromValue(r.history);
+    if (role == LatencySourceRole)
+        return int(f.latencySource);
     if (role == Qt::ToolTipRole) {
         QString tip = u"%1 → %2\n%3"_s.arg(d.sourceTopic(), d.destinationTopic(),
                                            BridgeColumn == index.column() ? d.config : d.bridge());
+        if (d.discovered)
+            tip += u"\n"_s
+                + tr("Discovered: an mqtt_client announces this topic's type, no open config maps it. Only "
+                     "its MQTT end is watched (rate, bytes, stamps, Header.seq); open the bridge's config "
+                     "to watch both ends.");
         if (!r.lastEvent.isEmpty())
             tip += u"\n"_s + r.lastEvent;
-        if ((index.column() == P50Column || index.column() == P99Column) && f.latencyP50Ms < 0)
-            tip += u"\n"_s + tr("A negative latency: the clocks of the bridge and of this computer differ.");
+        if (index.column() == P50Column || index.column() == P99Column) {
+            tip += u"\n"_s + latencySourceText(f.latencySource);
+            if (f.latencyP50Ms < 0)
+                tip += u"\n"_s
+                    + tr("A negative latency: the clocks of the bridge and of this computer differ.");
+        }
         return tip;
     }
     if (role == Qt::TextAlignmentRole && index.column() >= SourceRateColumn && index.column() <= P99Column)
@@ -138,7 +165,8 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
         case DirectionColumn:
             return d.direction == Direction::Ros2Mqtt ? tr("ROS → MQTT") : tr("MQTT → ROS");
         case SourceColumn:
-            return d.sourceTopic();
+            return d.discovered && d.sourceTopic().isEmpty() ? tr("(announced by a bridge)")
+                                                             : d.sourceTopic();
         case DestinationColumn:
             return d.destinationTopic();
         case SourceRateColumn:

@@ -33,9 +33,12 @@ public:
         LinkIdRole,
         HistoryRole, ///< QList<double>: rate per second, oldest first
         ValueRole, ///< the number behind a figure (sorting)
+        LatencySourceRole, ///< int(LatencySource)
     };
 
     explicit LinkModel(LinkMonitor* monitor, QObject* parent = nullptr);
+
+    static QString latencySourceText(LatencySource source);
 
     /// Takes the monitor's links and figures (connected to LinkMonitor::refreshed).
     void refresh();

@@ -11,6 +11,7 @@
 #include <map>
 #include <QDateTime>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QtEndian>
 
 using namespace Qt::StringLiterals;
@@ -203,9 +204,21 @@ QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& na
         l.stamped = m.direction == Direction::Ros2Mqtt && m.effective(u"inject_timestamp"_s) == u"true"_s;
         l.willTopic = will;
         l.willMessage = will.isEmpty() ? QByteArray() : willMessage;
+        l.stampPrefix = m.effective(u"timestamp_topic_prefix"_s);
         out << l;
     }
     return out;
+}
+
+LinkDef LinkDef::discoveredAt(const QString& mqttTopic, bool stamped)
+{
+    LinkDef l;
+    l.config = discoveredConfig();
+    l.direction = Direction::Ros2Mqtt;
+    l.mqttTopic = mqttTopic;
+    l.stamped = stamped;
+    l.discovered = true;
+    return l;
 }
 
 QJsonObject LinkFigures::toJson() const
@@ -225,7 +238,23 @@ QJsonObject LinkFigures::toJson() const
                         {u"reordered"_s, double(reordered)},
                         {u"latency_p50_ms"_s, number(latencyP50Ms)},
                         {u"latency_p99_ms"_s, number(latencyP99Ms)},
+                        {u"latency_source"_s, latencySourceName(latencySource)},
                         {u"stalls"_s, double(stalls)}};
+}
+
+QString LinkFigures::latencySourceName(LatencySource source)
+{
+    switch (source) {
+    case LatencySource::None:
+        return u"none"_s;
+    case LatencySource::Stamps:
+        return u"stamps"_s;
+    case LatencySource::LatencyTopic:
+        return u"latency_topic"_s;
+    case LatencySource::Pipeline:
+        return u"pipeline"_s;
+    }
+    return {};
 }
 
 QString WatchEvent::levelName(LinkLevel level)
@@ -264,6 +293,21 @@ QJsonObject WatchEvent::toJson() const
     return o;
 }
 
+RecordedEvent WatchEvent::toRecorded() const
+{
+    QJsonObject o = toJson();
+    o.insert(u"figures_at_start"_s, atStart.toJson());
+    RecordedEvent r;
+    r.subject = subject;
+    r.level = levelName(level);
+    r.reasons = reasons;
+    r.detail = detail;
+    r.startNs = startNs;
+    r.endNs = endNs;
+    r.json = QJsonDocument(o).toJson(QJsonDocument::Compact);
+    return r;
+}
+
 struct LinkMonitor::Track
 {
     LinkDef def;
@@ -276,7 +320,6 @@ struct LinkMonitor::Track
     bool dstHeader = false; ///< the destination's messages start with a Header
     bool srcHeader = false;
     std::optional<bool> announcedStamped;
-    QByteArray lastAnnouncement;
     std::deque<std::pair<qint64, double>> latencies;
     quint64 latencySamples = 0;
     std::vector<double> newLatencies;
@@ -291,10 +334,15 @@ struct LinkMonitor::Track
 
     bool stamped() const { return announcedStamped.value_or(def.stamped); }
 
-    void addLatency(qint64 ns, double ms)
+    int pipelineIn = -1; ///< index of PREFIX/in in the pipeline
+    int pipelineOut = -1;
+    bool pipelineLatency = false; ///< a pipeline sample arrived: other latency sources are ignored
+
+    void addLatency(qint64 ns, double ms, LatencySource source)
     {
         if (!std::isfinite(ms) || std::abs(ms) > 86'400'000.0)
             return; // not a latency: a stamp from another day
+        figures.latencySource = source;
         latencies.emplace_back(ns, ms);
         if (latencies.size() > kMaxLatencies)
             latencies.pop_front();
@@ -339,6 +387,8 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         }
         t->def = def;
         t->rules = m_rules.forLink(def.key());
+        if (const auto a = m_announced.constFind(def.mqttTopic); a != m_announced.cend())
+            applyAnnouncement(*t, *a); // announced (and retained) before the link was watched
         m_tracks.push_back(std::move(t));
     }
     index();
@@ -362,8 +412,11 @@ void LinkMonitor::index()
     for (int i = 0; i < int(m_tracks.size()); ++i) {
         const LinkDef& d = m_tracks[std::size_t(i)]->def;
         m_byMqtt[d.mqttTopic] << i;
-        m_byRos[d.rosTopic] << i;
+        if (!d.rosTopic.isEmpty())
+            m_byRos[d.rosTopic] << i;
         m_byId.insert(d.id(), i);
+        if (d.discovered)
+            continue; // whose bridge it is, the broker does not say
         std::shared_ptr<Bridge>& b = bridges[d.bridge()];
         if (!b) {
             b = std::make_shared<Bridge>();
@@ -377,6 +430,7 @@ void LinkMonitor::index()
             m_willTopics[d.willTopic] << d.bridge();
     }
     m_bridges = bridges;
+    indexPipeline();
 }
 
 int LinkMonitor::linkCount() const
@@ -515,7 +569,9 @@ void LinkMonitor::addMqtt(const std::vector<MqttMessage>& batch)
                 qsizetype offset = 0;
                 if (t.stamped()) {
                     if (const auto s = MqttClientWire::splitStamped(m.payload)) {
-                        t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6);
+                        if (!t.pipelineLatency)
+                            t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6,
+                                         LatencySource::Stamps);
                         offset = 8;
                     }
                 }
@@ -526,20 +582,7 @@ void LinkMonitor::addMqtt(const std::vector<MqttMessage>& batch)
             continue;
         }
         if (m.topic.startsWith(typePrefix)) {
-            const auto it = m_byMqtt.constFind(MqttClientWire::dataTopicOf(m.topic));
-            if (it == m_byMqtt.cend())
-                continue;
-            for (int i : *it) {
-                Track& t = *m_tracks[std::size_t(i)];
-                if (t.lastAnnouncement == m.payload)
-                    continue; // mqtt_client may announce with every message: decode each change once
-                t.lastAnnouncement = m.payload;
-                if (const auto type = MqttClientWire::decodeType(m.payload)) {
-                    t.announcedStamped = type->stamped;
-                    (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader)
-                        = headerFirst(type->name, type->definition);
-                }
-            }
+            announce(MqttClientWire::dataTopicOf(m.topic), m.payload);
             continue;
         }
         if (const auto it = m_willTopics.constFind(m.topic); it != m_willTopics.cend()) {
@@ -551,6 +594,36 @@ void LinkMonitor::addMqtt(const std::vector<MqttMessage>& batch)
             }
         }
     }
+}
+
+void LinkMonitor::announce(const QString& dataTopic, const QByteArray& payload)
+{
+    // mqtt_client may announce with every message: each change is decoded once.
+    const std::size_t hash = qHash(payload);
+    auto known = m_announcementHash.find(dataTopic);
+    if (known != m_announcementHash.end() && *known == hash)
+        return;
+    if (known == m_announcementHash.end()) {
+        if (m_announcementHash.size() >= kMaxAnnounced) {
+            ++m_droppedAnnouncements; // a broker's worth of made-up topics: bounded
+            return;
+        }
+        known = m_announcementHash.insert(dataTopic, hash);
+    }
+    *known = hash;
+    const auto type = MqttClientWire::decodeType(payload);
+    if (!type)
+        return;
+    const AnnouncedType announced {type->name, type->stamped, headerFirst(type->name, type->definition)};
+    m_announced.insert(dataTopic, announced);
+    for (int i : m_byMqtt.value(dataTopic))
+        applyAnnouncement(*m_tracks[std::size_t(i)], announced);
+}
+
+void LinkMonitor::applyAnnouncement(Track& t, const AnnouncedType& type)
+{
+    t.announcedStamped = type.stamped;
+    (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
 }
 
 void LinkMonitor::addRos(const std::vector<RosArrival>& batch)
@@ -573,9 +646,56 @@ void LinkMonitor::addRos(const std::vector<RosArrival>& batch)
             }
         } else if (const auto lt = m_byLatencyTopic.constFind(a.topic); lt != m_byLatencyTopic.cend()) {
             // std_msgs/Float64 in seconds, as mqtt_client publishes it.
-            if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)))
-                m_tracks[std::size_t(*lt)]->addLatency(a.receivedNs, double(*ns) / 1e6);
+            Track& t = *m_tracks[std::size_t(*lt)];
+            if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)); ns && !t.pipelineLatency)
+                t.addLatency(a.receivedNs, double(*ns) / 1e6, LatencySource::LatencyTopic);
         }
+    }
+}
+
+void LinkMonitor::setPipeline(const QStringList& stampTopics)
+{
+    m_pipeline = stampTopics;
+    indexPipeline();
+}
+
+void LinkMonitor::indexPipeline()
+{
+    QHash<QString, int> at;
+    for (qsizetype i = 0; i < m_pipeline.size(); ++i) {
+        // The suite's configs name their prefix with or without the leading slash.
+        QString name = m_pipeline[i];
+        if (name.startsWith(u'/'))
+            name.remove(0, 1);
+        at.insert(name, int(i));
+    }
+    m_pipelineLinks.clear();
+    for (int i = 0; i < int(m_tracks.size()); ++i) {
+        Track& t = *m_tracks[std::size_t(i)];
+        QString prefix = t.def.stampPrefix;
+        while (prefix.startsWith(u'/'))
+            prefix.remove(0, 1);
+        while (prefix.endsWith(u'/'))
+            prefix.chop(1);
+        t.pipelineIn = prefix.isEmpty() ? -1 : at.value(prefix + u"/in"_s, -1);
+        t.pipelineOut = prefix.isEmpty() ? -1 : at.value(prefix + u"/out"_s, -1);
+        if (t.pipelineIn >= 0 && t.pipelineOut >= 0)
+            m_pipelineLinks.push_back(i);
+        else
+            t.pipelineLatency = false;
+    }
+}
+
+void LinkMonitor::addPipelineSample(const std::vector<qint64>& times, qint64 nowNs)
+{
+    for (int i : m_pipelineLinks) {
+        Track& t = *m_tracks[std::size_t(i)];
+        if (std::size_t(std::max(t.pipelineIn, t.pipelineOut)) >= times.size())
+            continue; // a sample of another pipeline than the one set
+        t.pipelineLatency = true;
+        t.addLatency(nowNs,
+                     double(times[std::size_t(t.pipelineOut)] - times[std::size_t(t.pipelineIn)]) / 1e6,
+                     LatencySource::Pipeline);
     }
 }
 

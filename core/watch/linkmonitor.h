@@ -2,6 +2,7 @@
 #pragma once
 
 #include "config/bridgeconfig.h"
+#include "latency/rundata.h"
 #include "watch/watchrules.h"
 
 #include <deque>
@@ -26,6 +27,12 @@ struct LinkDef
     bool stamped = false; ///< ROS → MQTT with inject_timestamp: payloads carry the send time
     QString willTopic; ///< the bridge's last will, when its config sets one
     QByteArray willMessage;
+    /// Found on the broker (an mqtt_client type announcement), not in a config: only its MQTT end is
+    /// known (`rosTopic` is empty), and it belongs to no bridge.
+    bool discovered = false;
+    /// The mapping's `timestamp_topic_prefix` (the benchmarking suite's mqtt_client stamps every
+    /// message at PREFIX/in and PREFIX/out): with a pipeline holding both, the link's latency.
+    QString stampPrefix;
 
     /// "config|ros2mqtt|/ros/topic|mqtt/topic": stable across runs, unique within a watch.
     QString id() const;
@@ -35,6 +42,18 @@ struct LinkDef
     QString destinationTopic() const { return direction == Direction::Ros2Mqtt ? mqttTopic : rosTopic; }
     /// One link per mapping of `config` (mappings without both topics are skipped).
     static QList<LinkDef> fromConfig(const BridgeConfig& config, const QString& name);
+    /// The link an mqtt_client announces by publishing `mqtt_client/ros_msg_type/<mqttTopic>`: some
+    /// bridge sends a ROS topic there. Named "discovered|ros2mqtt||<mqttTopic>".
+    static LinkDef discoveredAt(const QString& mqttTopic, bool stamped);
+    static QString discoveredConfig() { return QStringLiteral("discovered"); }
+};
+
+/// What an mqtt_client type announcement said, as far as watching needs it.
+struct AnnouncedType
+{
+    QString type; ///< e.g. "geometry_msgs/PointStamped"
+    bool stamped = false; ///< the payloads carry the send time
+    bool header = false; ///< the message starts with a std_msgs/Header
 };
 
 enum class LinkLevel { Ok, Warning, Alert };
@@ -50,6 +69,9 @@ struct SideFigures
 };
 
 /// A link's figures at one moment.
+/// Where a link's latency comes from; the first that delivers wins over the ones before it.
+enum class LatencySource { None, Stamps, LatencyTopic, Pipeline };
+
 struct LinkFigures
 {
     SideFigures source;
@@ -62,8 +84,10 @@ struct LinkFigures
     quint64 latencySamples = 0;
     double latencyP50Ms = qQNaN(); ///< over the last 60 s (NaN: no stamps)
     double latencyP99Ms = qQNaN();
+    LatencySource latencySource = LatencySource::None;
     quint64 stalls = 0; ///< stall events so far
     QJsonObject toJson() const;
+    static QString latencySourceName(LatencySource source); ///< as in the JSON: "stamps", ...
 };
 
 /// A state change of a link or a bridge: open while `endNs` is 0.
@@ -86,6 +110,8 @@ struct WatchEvent
     double durationSeconds() const { return endNs > 0 ? double(endNs - startNs) / 1e9 : 0; }
     /// One JSON line's object: {"event": "start"|"end", ...}.
     QJsonObject toJson() const;
+    /// As a run file keeps it: the JSON line with the figures at start and (when ended) at end.
+    RecordedEvent toRecorded() const;
     static QString levelName(LinkLevel level);
 };
 
@@ -133,11 +159,23 @@ public:
     QList<WatchEvent> openEvents() const;
     QList<WatchEvent> endedEvents() const;
 
+    /// Every MQTT topic an mqtt_client announced a type for (retained or not), at most
+    /// kMaxAnnounced; `droppedAnnouncements()` counts the topics beyond.
+    static constexpr int kMaxAnnounced = 10'000;
+    const QHash<QString, AnnouncedType>& announced() const { return m_announced; }
+    quint64 droppedAnnouncements() const { return m_droppedAnnouncements; }
+
     /// ROS topics to subscribe: the links' own and the bridges' latency topics found in `rosTopics`
     /// (mqtt_client publishes `~/latencies/<ros topic>` for stamped MQTT → ROS links).
     QStringList rosTopicsToMonitor(const QStringList& rosTopics) const;
     /// The definition of a ROS topic's type (for Header.seq), from the ROS monitor.
     void setRosDefinition(const QString& topic, const QString& type, const QString& definition);
+
+    /// The measurement's pipeline (its stamp topics in order): links whose PREFIX/in and PREFIX/out
+    /// are in it take their latency from its samples, and from nothing else once one arrived.
+    void setPipeline(const QStringList& stampTopics);
+    /// One complete sample of that pipeline (stamp times in its order), received at `nowNs`.
+    void addPipelineSample(const std::vector<qint64>& times, qint64 nowNs);
 
     void addMqtt(const std::vector<MqttMessage>& batch);
     void addRos(const std::vector<RosArrival>& batch);
@@ -162,6 +200,9 @@ private:
     void change(const QString& subject, const LinkDef* link, LinkLevel level, const QStringList& reasons,
                 const QString& detail, const LinkFigures& figures, qint64 nowNs);
     void refreshStatistics(qint64 nowNs);
+    void announce(const QString& dataTopic, const QByteArray& payload);
+    void indexPipeline();
+    static void applyAnnouncement(Track& track, const AnnouncedType& type);
 
     WatchRules m_rules;
     std::vector<std::unique_ptr<Track>> m_tracks;
@@ -171,6 +212,11 @@ private:
     QHash<QString, int> m_byId;
     QHash<QString, std::shared_ptr<Bridge>> m_bridges;
     QHash<QString, QList<QString>> m_willTopics; ///< will topic -> bridges
+    QStringList m_pipeline; ///< stamp topics
+    std::vector<int> m_pipelineLinks; ///< tracks that have both stamps in it
+    QHash<QString, AnnouncedType> m_announced; ///< by data topic
+    QHash<QString, std::size_t> m_announcementHash; ///< by data topic: the last payload's, decoded once
+    quint64 m_droppedAnnouncements = 0;
     QHash<QString, WatchEvent> m_open; ///< by subject
     std::deque<WatchEvent> m_ended;
     qint64 m_lastRefreshNs = 0;

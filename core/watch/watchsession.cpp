@@ -3,9 +3,11 @@
 
 #include "base/logging.h"
 #include "base/wallclock.h"
+#include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "session/livesession.h"
+#include "session/measuresession.h"
 
 namespace {
 constexpr qint64 kTickNs = 250'000'000LL;
@@ -39,12 +41,53 @@ WatchSession::~WatchSession()
 
 void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
 {
-    QList<LinkDef> links;
+    m_configLinks.clear();
+    m_configMqttTopics.clear();
     for (const auto& [name, config] : configs)
-        links << LinkDef::fromConfig(config, name);
+        m_configLinks << LinkDef::fromConfig(config, name);
+    for (const LinkDef& l : std::as_const(m_configLinks))
+        m_configMqttTopics.insert(l.mqttTopic);
+    m_discovered.clear();
+    discoverLinks();
+    applyLinks();
+    qCDebug(lcWatch) << "watching" << m_monitor->linkCount() << "links of" << configs.size() << "configs,"
+                     << m_discovered.size() << "discovered";
+}
+
+void WatchSession::setDiscovering(bool discovering)
+{
+    if (discovering == m_discovering)
+        return;
+    m_discovering = discovering;
+    m_discovered.clear();
+    discoverLinks();
+    applyLinks();
+}
+
+void WatchSession::applyLinks()
+{
+    QList<LinkDef> links = m_configLinks;
+    for (const QString& topic : std::as_const(m_discovered))
+        links << LinkDef::discoveredAt(topic, m_monitor->announced().value(topic).stamped);
     m_monitor->setLinks(links, wallClockNs());
-    qCDebug(lcWatch) << "watching" << m_monitor->linkCount() << "links of" << configs.size() << "configs";
     syncRosTopics();
+}
+
+bool WatchSession::discoverLinks()
+{
+    if (!m_discovering)
+        return false;
+    QStringList found;
+    const QHash<QString, AnnouncedType>& announced = m_monitor->announced();
+    for (auto it = announced.cbegin(); it != announced.cend(); ++it)
+        if (!m_configMqttTopics.contains(it.key()))
+            found << it.key();
+    found.sort();
+    if (found == m_discovered)
+        return false;
+    qCDebug(lcWatch) << found.size() - m_discovered.size() << "links discovered on the broker";
+    m_discovered = found;
+    return true;
 }
 
 void WatchSession::update(qint64 nowNs)
@@ -52,6 +95,8 @@ void WatchSession::update(qint64 nowNs)
     m_monitor->addRos(m_live->rosMonitor()->takeArrivals());
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
+        if (discoverLinks())
+            applyLinks();
         // Types come with the first message: Header.seq can be read from then on.
         const QHash<QString, RosMonitorStats> stats = m_live->rosMonitor()->snapshot(nowNs);
         for (auto it = stats.cbegin(); it != stats.cend(); ++it)
@@ -79,4 +124,30 @@ void WatchSession::syncRosTopics()
         if (!m_monitored.contains(t))
             ros->monitor(t);
     m_monitored = want;
+}
+
+void WatchSession::useMeasurement(MeasureSession* measure)
+{
+    RunRecorder* recorder = measure->recorder();
+    connect(measure, &MeasureSession::recordingChanged, this, [this, recorder](bool recording) {
+        if (!recording)
+            return;
+        for (const WatchEvent& e : m_monitor->openEvents())
+            recorder->addEvent(e.toRecorded());
+    });
+    const auto add = [recorder](const WatchEvent& e) { recorder->addEvent(e.toRecorded()); };
+    connect(m_monitor, &LinkMonitor::eventStarted, recorder, add);
+    connect(m_monitor, &LinkMonitor::eventEnded, recorder, add);
+
+    const auto setPipeline = [this, measure] { m_monitor->setPipeline(measure->pipeline().topics()); };
+    connect(measure, &MeasureSession::pipelineChanged, this, setPipeline);
+    setPipeline();
+    // Samples complete on this thread, in the measurement's drain; a recorded run shown (replayed)
+    // is not live.
+    measure->setSampleListener(
+        [monitor = QPointer<LinkMonitor>(m_monitor),
+         source = QPointer<MeasureSession>(measure)](qint64, const std::vector<qint64>& times) {
+            if (monitor && source && !source->isShowingRun())
+                monitor->addPipelineSample(times, wallClockNs());
+        });
 }

@@ -7,6 +7,7 @@
 #include <QPointer>
 
 class LiveSession;
+class MeasureSession;
 class RosMonitor;
 
 /// Watching links live: feeds a LinkMonitor from a LiveSession (the MQTT batches of every drain,
@@ -24,12 +25,24 @@ public:
     LiveSession* live() const { return m_live; }
     /// Watches the links of these configs (name, config), replacing what was watched.
     void setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs);
+    /// Whether the links mqtt_client announces on the broker (its type topics) that no config has
+    /// are watched too, from their MQTT end (on by default).
+    void setDiscovering(bool discovering);
+    bool isDiscovering() const { return m_discovering; }
     void setRules(const WatchRules& rules) { m_monitor->setRules(rules); }
+    /// Works with the measurement of `measure`: every event goes into its run file while it
+    /// records (the events open when the recording starts, then each start and end; an event still
+    /// open at its stop stays open there), and links whose stamps are in its pipeline take their
+    /// latency from its samples. Takes its sample listener.
+    void useMeasurement(MeasureSession* measure);
     /// Runs the ROS and tick work now (tests; the live session's drain does it otherwise).
     void update(qint64 nowNs);
 
 private:
     void syncRosTopics();
+    void applyLinks();
+    /// Adds the links announced since the last call that no config has; true when there were any.
+    bool discoverLinks();
 
     LiveSession* m_live;
     LinkMonitor* m_monitor;
@@ -37,4 +50,8 @@ private:
     qint64 m_lastTickNs = 0;
     qint64 m_lastSyncNs = 0;
     QSet<QString> m_monitored;
+    QList<LinkDef> m_configLinks;
+    QSet<QString> m_configMqttTopics;
+    QStringList m_discovered; ///< MQTT topics of the discovered links, sorted
+    bool m_discovering = true;
 };

@@ -3,9 +3,12 @@
 // the demo nodes as child processes): the vehicle config open on the Map page and the cloud config
 // added on the page become four links that carry 10 Hz; the filter, the sorting and the detail
 // pane work; killing the vehicle bridge turns its links red with stall and bridge-down events in
-// the log, and a notification is raised while the window is not active.
+// the log, a notification is raised while the window is not active, and the events are written into
+// the run the Measure page records.
 #include "app/gui/mainwindow.h"
 #include "demo/demolab.h"
+#include "record/runfile.h"
+#include "session/measuresession.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/discover/discoverpage.h"
@@ -23,6 +26,7 @@
 #include <QSortFilterProxyModel>
 #include <QTableView>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -68,6 +72,11 @@ private slots:
         QVERIFY2(page->addConfigFiles({lab.cloudConfigPath()}, &error), qPrintable(error));
         QVERIFY(!page->addConfigFiles({lab.directory() + u"/mosquitto.conf"_s}, &error));
         QVERIFY(error.contains(u"mosquitto.conf"_s));
+        // The Measure page's pipeline: every mapping with a timestamp_topic_prefix gets the
+        // latency across its bridge from the stamps at PREFIX/in and PREFIX/out.
+        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        QVERIFY2(pipeline, qPrintable(error));
+        window.measure()->setPipeline(*pipeline);
         window.pages()->setCurrentWidget(page);
         window.resize(1280, 800);
         window.show();
@@ -86,12 +95,17 @@ private slots:
         };
         QTRY_VERIFY_WITH_TIMEOUT(healthy(), 30000);
         QVERIFY(page->summaryLabel()->text().contains(u"4 ok"_s));
-        // The stamped vehicle → cloud link has its latency.
-        bool latency = false;
-        for (int r = 0; r < model->rowCount(); ++r)
-            latency
-                = latency || model->index(r, LinkModel::P50Column).data(LinkModel::ValueRole).toDouble() > 0;
-        QVERIFY(latency);
+        // Every link has its latency, from the pipeline's stamps: in both directions, stamped or not.
+        const auto allHaveLatency = [&] {
+            for (int r = 0; r < model->rowCount(); ++r) {
+                const QModelIndex p50 = model->index(r, LinkModel::P50Column);
+                if (!(p50.data(LinkModel::ValueRole).toDouble() > 0)
+                    || p50.data(LinkModel::LatencySourceRole).toInt() != int(LatencySource::Pipeline))
+                    return false;
+            }
+            return true;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(allHaveLatency(), 10000);
 
         // Filtering and the detail pane.
         QTableView* table = page->linkView();
@@ -124,6 +138,12 @@ private slots:
             }
         }
         QVERIFY(vehicleBridge > 0);
+        // The Measure page records: the events of the outage go into its run file.
+        QTemporaryDir runs;
+        RunInfo info;
+        info.name = u"outage"_s;
+        const QString runPath = runs.filePath(u"outage.bsrun"_s);
+        QVERIFY2(window.measure()->startRecording(runPath, info, &error), qPrintable(error));
         // Another window is in front: an alert becomes a notification.
         QWidget other;
         other.show();
@@ -150,6 +170,14 @@ private slots:
         QVERIFY(stall);
         QVERIFY(page->notificationsShown() > notifiedBefore);
         QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
+        QVERIFY2(window.measure()->stopRecording(&error), qPrintable(error));
+        const std::optional<RunData> run = RunFile::read(runPath, &error);
+        QVERIFY2(run, qPrintable(error));
+        QVERIFY(std::any_of(run->events.cbegin(), run->events.cend(), [](const RecordedEvent& e) {
+            return e.reasons.contains(u"bridge_down"_s) && e.subject == u"bridge:mqtt_interface_vehicle"_s;
+        }));
+        QVERIFY(std::any_of(run->events.cbegin(), run->events.cend(),
+                            [](const RecordedEvent& e) { return e.reasons.contains(u"stall"_s); }));
         lab.stop();
     }
 };

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The demo lab headless: 20 s of the paper-shaped pipeline recorded with sensible figures, and no
-// process left behind after it ends, or after it is killed with SIGKILL.
+// process left behind after it ends, or after it is killed with SIGKILL; and `watch --pipeline` on
+// the lab's bridges: every link's latency from the pipeline's stamps, and a run with samples and events.
+#include "demo/demolab.h"
+#include "record/runfile.h"
 #include "report/report.h"
 #include "testservers.h"
 
@@ -132,6 +135,66 @@ private slots:
         QVERIFY2(QTest::qWaitFor([&] { return processesWith(lab.dir).isEmpty(); }, 15000),
                  qPrintable(processesWith(lab.dir).join(u'\n')));
         QVERIFY(QTest::qWaitFor([&] { return processesWith(u"-p "_s + lab.masterPort).isEmpty(); }, 15000));
+    }
+
+    // The lab's two bridges watched headless with its pipeline: all four mappings have a
+    // timestamp_topic_prefix, so each gets a latency (PREFIX/in to PREFIX/out, in both directions),
+    // served as a histogram; the run holds the pipeline's samples and, once the vehicle bridge is
+    // killed, its events.
+    void watchMeasuresEveryLinkWithThePipeline()
+    {
+        DemoLab lab;
+        DemoLab::Options options;
+        options.program = QStringLiteral(BRIDGESCOPE_BINARY);
+        options.payloadBytes = 20000;
+        QString error;
+        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        const quint16 port = TestServers::freePort();
+        const QString run = m_dir.filePath(u"watched.bsrun"_s);
+        QProcess watch;
+        watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"watch"_s, lab.vehicleConfigPath(), lab.cloudConfigPath(), u"--broker"_s,
+                     lab.brokerUrl(), u"--ros-master"_s, lab.rosMasterUri(), u"--pipeline"_s,
+                     lab.pipelinePath(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(port), u"-o"_s, run,
+                     u"--seconds"_s, u"60"_s});
+        QVERIFY(watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(port, 10000));
+        // Four links, each with latency samples.
+        const auto latencies = [&] {
+            const QByteArray text = TestServers::httpGet(port, u"/metrics"_s);
+            int links = 0;
+            for (const QByteArray& line : text.split('\n'))
+                if (line.startsWith("bridgescope_link_latency_seconds_count{") && !line.endsWith(" 0"))
+                    ++links;
+            return links;
+        };
+        QTRY_COMPARE_WITH_TIMEOUT(latencies(), 4, 30000);
+        QTest::qWait(5000); // 50 samples more
+        qint64 vehicleBridge = 0;
+        for (qint64 pid : lab.processIds()) {
+            QFile cmdline(u"/proc/%1/cmdline"_s.arg(pid));
+            if (cmdline.open(QIODevice::ReadOnly) && cmdline.readAll().contains("vehicle.yaml"))
+                vehicleBridge = pid;
+        }
+        QVERIFY(vehicleBridge > 0);
+        ::kill(pid_t(vehicleBridge), SIGKILL);
+        QTest::qWait(8000);
+        watch.terminate();
+        QVERIFY(watch.waitForFinished(15000));
+        QCOMPARE(watch.exitCode(), 0);
+        lab.stop();
+
+        const std::optional<RunData> data = RunFile::read(run, &error);
+        QVERIFY2(data, qPrintable(error));
+        QCOMPARE(data->info.pipeline.topicCount(), 12);
+        QVERIFY(std::any_of(data->events.cbegin(), data->events.cend(), [](const RecordedEvent& e) {
+            return e.reasons.contains(u"bridge_down"_s) && e.subject == u"bridge:mqtt_interface_vehicle"_s;
+        }));
+        const std::optional<Report> report = Report::build({run}, std::nullopt, {}, &error);
+        QVERIFY2(report, qPrintable(error));
+        QVERIFY2(report->runs().front()->engine->samples() >= 20,
+                 qPrintable(QString::number(report->runs().front()->engine->samples())));
     }
 };
 

@@ -4,12 +4,14 @@
 // what this test publishes at 10 Hz. The watch's figures (read from its /metrics) must match what
 // was sent; killing the bridge must raise stall and bridge-down events within two thresholds and
 // restarting it must end them; a paused source is "source stopped", not a stall; a real Prometheus
-// server scrapes the metrics; broker and master restarts are survived, every link resuming.
+// server scrapes the metrics; broker and master restarts are survived, every link resuming; the run
+// file the watch records holds every event it printed, and its report lists them.
 //
 // WATCH_BROKER_RESTARTS and WATCH_MASTER_RESTARTS set the restart rounds: the `soak` label runs
 // 10 and 3, the default run 2 and 1.
 #include "base/wallclock.h"
 #include "mqtt/mqttlink.h"
+#include "record/runfile.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"
@@ -18,6 +20,7 @@
 #include <geometry_msgs/PointStamped.h>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -47,38 +50,6 @@ template<typename M> RosRawMessage rosMessage(const M& message)
             QString::fromLatin1(ros::message_traits::Definition<M>::value())};
 }
 
-/// GET http://127.0.0.1:port/path; the body, or empty.
-QByteArray httpGet(quint16 port, const QString& path)
-{
-    QTcpSocket s;
-    s.connectToHost(u"127.0.0.1"_s, port);
-    if (!s.waitForConnected(3000))
-        return {};
-    s.write("GET " + path.toUtf8() + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n");
-    QByteArray all;
-    while (s.state() == QAbstractSocket::ConnectedState && s.waitForReadyRead(5000))
-        all += s.readAll();
-    all += s.readAll();
-    const qsizetype body = all.indexOf("\r\n\r\n");
-    return body < 0 ? QByteArray() : all.mid(body + 4);
-}
-
-/// One sample of the Prometheus text format, by metric name and the labels it must have.
-double sample(const QByteArray& metrics, const QString& name, const QStringList& labels)
-{
-    for (const QByteArray& raw : metrics.split('\n')) {
-        const QString line = QString::fromUtf8(raw);
-        if (!line.startsWith(name + u'{'))
-            continue;
-        bool all = true;
-        for (const QString& l : labels)
-            all = all && line.contains(l);
-        if (all)
-            return line.section(u' ', -1).toDouble();
-    }
-    return qQNaN();
-}
-
 const QString kConfigTemplate
     = u"broker:\n  host: 127.0.0.1\n  port: %1\n"
       u"client:\n  id: watch_bridge\n  last_will:\n    topic: w/status\n    message: offline\n"
@@ -102,6 +73,7 @@ private:
     quint16 m_metricsPort = 0;
     QString m_config;
     QString m_eventsFile;
+    QString m_runFile;
     QList<QJsonObject> m_events; ///< every line the watch printed, in order
     QByteArray m_pending;
     int m_stampedPub = -1;
@@ -200,7 +172,7 @@ private:
         return out;
     }
 
-    QByteArray metrics() { return httpGet(m_metricsPort, u"/metrics"_s); }
+    QByteArray metrics() { return TestServers::httpGet(m_metricsPort, u"/metrics"_s); }
 
     double linkValue(const QByteArray& text, const QString& name, const QString& rosTopic,
                      const QString& side = {})
@@ -208,7 +180,7 @@ private:
         QStringList labels {u"topic=\"%1\""_s.arg(rosTopic)};
         if (!side.isEmpty())
             labels << u"side=\"%1\""_s.arg(side);
-        const double v = sample(text, name, labels);
+        const double v = TestServers::metricSample(text, name, labels);
         return qIsNaN(v) ? 0 : v; // a counter made on its first count (seq gaps, latency) is 0 before
     }
 
@@ -268,12 +240,14 @@ private slots:
 
         m_metricsPort = TestServers::freePort();
         m_eventsFile = m_servers.tempPath() + u"/events.jsonl"_s;
+        m_runFile = m_servers.tempPath() + u"/overnight.bsrun"_s;
         m_watch.setProcessEnvironment(m_servers.rosEnvironment());
         m_watch.setReadChannel(QProcess::StandardOutput);
         m_watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
         m_watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
                       {u"watch"_s, m_config, u"--ros-master"_s, m_servers.rosMasterUri(), u"--metrics"_s,
-                       u"127.0.0.1:%1"_s.arg(m_metricsPort), u"--events-jsonl"_s, m_eventsFile});
+                       u"127.0.0.1:%1"_s.arg(m_metricsPort), u"--events-jsonl"_s, m_eventsFile, u"-o"_s,
+                       m_runFile, u"--notes"_s, u"the lab, overnight"_s});
         QVERIFY(m_watch.waitForStarted(5000));
         QVERIFY(TestServers::waitForPort(m_metricsPort, 10000));
 
@@ -423,7 +397,8 @@ private slots:
         const auto query = [&](const QString& promql) {
             QUrlQuery q;
             q.addQueryItem(u"query"_s, promql);
-            const QByteArray body = httpGet(port, u"/api/v1/query?"_s + q.toString(QUrl::FullyEncoded));
+            const QByteArray body
+                = TestServers::httpGet(port, u"/api/v1/query?"_s + q.toString(QUrl::FullyEncoded));
             const QJsonArray result = QJsonDocument::fromJson(body)
                                           .object()
                                           .value(u"data"_s)
@@ -465,6 +440,44 @@ private slots:
         }
     }
 
+    /// A watch without a config finds the links on the broker (the bridge's and this test's type
+    /// announcements) and watches their MQTT end: counts and the stamped link's latency.
+    void linksAnnouncedOnTheBrokerAreDiscovered()
+    {
+        const quint16 port = TestServers::freePort();
+        QProcess discover;
+        discover.setProcessEnvironment(m_servers.rosEnvironment());
+        discover.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        discover.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                       {u"watch"_s, u"--broker"_s, m_servers.brokerUrl(), u"--ros-master"_s,
+                        m_servers.rosMasterUri(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(port), u"--seconds"_s,
+                        u"60"_s});
+        QVERIFY(discover.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(port, 10000));
+        const auto count = [&](const QString& mqttTopic) {
+            return TestServers::metricSample(
+                TestServers::httpGet(port, u"/metrics"_s), u"bridgescope_link_messages_total"_s,
+                {u"config=\"discovered\""_s, u"mqtt_topic=\"%1\""_s.arg(mqttTopic),
+                 u"side=\"destination\""_s});
+        };
+        // The bridge's ROS → MQTT topics and the "remote" bridge's, announced by this test.
+        for (const QString& t : {u"w/stamped"_s, u"w/plain"_s, u"w/in_stamped"_s, u"w/in_plain"_s})
+            QTRY_VERIFY2_WITH_TIMEOUT(count(t) > 5, qPrintable(t), 15000);
+        const double before = count(u"w/in_plain"_s);
+        QTest::qWait(2000);
+        const double after = count(u"w/in_plain"_s);
+        QVERIFY2(after - before >= 12 && after - before <= 28, qPrintable(QString::number(after - before)));
+        // The 20 ms the test backdates its stamps, from the discovered link's histogram.
+        const QByteArray text = TestServers::httpGet(port, u"/metrics"_s);
+        const QStringList labels {u"config=\"discovered\""_s, u"mqtt_topic=\"w/in_stamped\""_s};
+        const double sum = TestServers::metricSample(text, u"bridgescope_link_latency_seconds_sum"_s, labels);
+        const double n = TestServers::metricSample(text, u"bridgescope_link_latency_seconds_count"_s, labels);
+        QVERIFY2(n > 5 && sum / n >= 0.02 && sum / n < 0.1, qPrintable(u"%1 / %2"_s.arg(sum).arg(n)));
+        discover.terminate();
+        QVERIFY(discover.waitForFinished(10000));
+        QCOMPARE(discover.exitCode(), 0);
+    }
+
     void survivesBrokerAndMasterRestarts()
     {
         const int brokerRestarts = envInt("WATCH_BROKER_RESTARTS", 2);
@@ -499,6 +512,48 @@ private slots:
         QVERIFY(!events(from, u"start"_s, u"|ros2mqtt|"_s, u"stall"_s).isEmpty());
         QTRY_VERIFY_WITH_TIMEOUT(
             events(from, u"start"_s, u""_s).size() == events(from, u"end"_s, u""_s).size(), 20000);
+    }
+
+    /// Last: stops the watch. Every event it printed is in its run file, with the same start and
+    /// end, and the report of the run lists them.
+    void theRunFileHoldsTheEvents()
+    {
+        m_watch.terminate();
+        QVERIFY(m_watch.waitForFinished(15000));
+        QCOMPARE(m_watch.exitCode(), 0);
+        readEvents();
+        QString error;
+        const std::optional<RunData> run = RunFile::read(m_runFile, &error);
+        QVERIFY2(run, qPrintable(error));
+        QCOMPARE(run->info.notes, u"the lab, overnight"_s);
+        QCOMPARE(run->info.bridgeConfigPath, QFileInfo(m_config).absoluteFilePath());
+        const QList<QJsonObject> started = events(0, u"start"_s, QString());
+        const QList<QJsonObject> ended = events(0, u"end"_s, QString());
+        QCOMPARE(started.size(), ended.size()); // the stop ended what was open
+        QCOMPARE(run->events.size(), std::size_t(started.size()));
+        QHash<QString, QString> endBySubjectAndStart;
+        for (const QJsonObject& e : ended)
+            endBySubjectAndStart.insert(e.value(u"subject"_s).toString() + e.value(u"start"_s).toString(),
+                                        e.value(u"end"_s).toString());
+        int bridgeDown = 0;
+        for (const RecordedEvent& e : run->events) {
+            QVERIFY(e.endNs > e.startNs);
+            const QJsonObject json = QJsonDocument::fromJson(e.json).object();
+            QCOMPARE(json.value(u"subject"_s).toString(), e.subject);
+            QCOMPARE(endBySubjectAndStart.value(e.subject + json.value(u"start"_s).toString()),
+                     json.value(u"end"_s).toString());
+            bridgeDown += e.reasons.contains(u"bridge_down"_s);
+        }
+        QVERIFY(bridgeDown >= 1);
+
+        QProcess report;
+        report.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, m_runFile, u"--format"_s, u"md"_s});
+        QVERIFY(report.waitForFinished(30000));
+        QCOMPARE(report.exitCode(), 0);
+        const QString md = QString::fromUtf8(report.readAllStandardOutput());
+        QVERIFY2(md.contains(u"## Events"_s) && md.contains(u"| bridge watch_bridge | alert |"_s)
+                     && md.contains(u"lab: /w/plain → w/plain"_s),
+                 qPrintable(md));
     }
 };
 

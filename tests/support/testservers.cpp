@@ -6,6 +6,7 @@
 #include <csignal>
 #include <QDir>
 #include <QFile>
+#include <QTcpSocket>
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -30,6 +31,36 @@ quint16 TestServers::freePort()
 bool TestServers::waitForPort(quint16 port, int timeoutMs)
 {
     return LoopbackPorts::waitForListener(port, timeoutMs);
+}
+
+QByteArray TestServers::httpGet(quint16 port, const QString& path)
+{
+    QTcpSocket s;
+    s.connectToHost(u"127.0.0.1"_s, port);
+    if (!s.waitForConnected(3000))
+        return {};
+    s.write("GET " + path.toUtf8() + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n");
+    QByteArray all;
+    while (s.state() == QAbstractSocket::ConnectedState && s.waitForReadyRead(5000))
+        all += s.readAll();
+    all += s.readAll();
+    const qsizetype body = all.indexOf("\r\n\r\n");
+    return body < 0 ? QByteArray() : all.mid(body + 4);
+}
+
+double TestServers::metricSample(const QByteArray& metrics, const QString& name, const QStringList& labels)
+{
+    for (const QByteArray& raw : metrics.split('\n')) {
+        const QString line = QString::fromUtf8(raw);
+        if (!line.startsWith(name + u'{'))
+            continue;
+        bool all = true;
+        for (const QString& l : labels)
+            all = all && line.contains(l);
+        if (all)
+            return line.section(u' ', -1).toDouble();
+    }
+    return qQNaN();
 }
 
 std::unique_ptr<QProcess> TestServers::startProcess(const QString& program, const QStringList& args,

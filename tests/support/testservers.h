@@ -63,6 +63,10 @@ public:
     static quint16 freePort();
     /// Waits until something accepts connections on 127.0.0.1:port.
     static bool waitForPort(quint16 port, int timeoutMs);
+    /// GET http://127.0.0.1:port/path (HTTP/1.0); the body, or empty.
+    static QByteArray httpGet(quint16 port, const QString& path);
+    /// One sample of the Prometheus text format, by metric name and labels it must have; NaN if none.
+    static double metricSample(const QByteArray& metrics, const QString& name, const QStringList& labels);
 
 private:
     std::unique_ptr<QProcess> startProcess(const QString& program, const QStringList& args,

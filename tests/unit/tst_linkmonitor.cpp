@@ -152,6 +152,8 @@ private slots:
         QCOMPARE(i.seqGaps, quint64(19)); // the last one lost (199) has no successor to show it
         QVERIFY2(qAbs(i.lossPercent - 10) < 2.5, qPrintable(QString::number(i.lossPercent)));
         QVERIFY2(qAbs(i.latencyP50Ms - 20) < 0.01, qPrintable(QString::number(i.latencyP50Ms)));
+        QCOMPARE(i.latencySource, LatencySource::LatencyTopic);
+        QCOMPARE(o.latencySource, LatencySource::Stamps);
         // 10 % lost is above the default alert level of 5 %.
         QCOMPARE(m.level(m.indexOf(in.id())), LinkLevel::Alert);
         QVERIFY(m.reasons(m.indexOf(in.id())).contains(u"loss"_s));
@@ -281,6 +283,99 @@ private slots:
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.destination.messages, quint64(3));
         QVERIFY(f.latencySamples <= 1);
+    }
+
+    // Links from discovery: what mqtt_client announces is kept per topic (decoded once per change,
+    // a hostile flood of topics bounded), and a link watched after its retained announcement still
+    // knows its type: a discovered link counts its MQTT end, its stamps and its Header.seq gaps,
+    // belongs to no bridge and, without a source, is never a stall.
+    void announcedLinksAreWatchedFromTheirMqttEnd()
+    {
+        LinkMonitor m;
+        m.setLinks({}, kStart);
+        const RosMsgTypeInfo point {QString(32, u'a'), u"geometry_msgs/PointStamped"_s, kStampedDefinition,
+                                    true};
+        m.addMqtt({mqtt(u"mqtt_client/ros_msg_type/far/pose"_s, MqttClientWire::encodeType(point), kStart),
+                   mqtt(u"mqtt_client/ros_msg_type/far/bad"_s, "\x01", kStart)});
+        QCOMPARE(m.announced().size(), 1);
+        QVERIFY(m.announced().value(u"far/pose"_s).stamped);
+        QVERIFY(m.announced().value(u"far/pose"_s).header);
+
+        const LinkDef d = LinkDef::discoveredAt(u"far/pose"_s, true);
+        QCOMPARE(d.id(), u"discovered|ros2mqtt||far/pose"_s);
+        m.setLinks({d}, kStart);
+        QVERIFY(m.bridges().isEmpty());
+        QVERIFY(m.rosTopicsToMonitor({u"/far/pose"_s}).isEmpty());
+        Clock clock {m};
+        for (quint32 seq = 0; seq < 30; ++seq) {
+            if (seq == 10)
+                continue; // a gap
+            clock.advance(100 * kMs);
+            m.addMqtt({mqtt(u"far/pose"_s, MqttClientWire::stamped(clock.now - 15 * kMs, headerMessage(seq)),
+                            clock.now)});
+        }
+        clock.advance(1000 * kMs);
+        const LinkFigures f = m.figures(0);
+        QCOMPARE(f.destination.messages, quint64(29));
+        QCOMPARE(f.seqGaps, quint64(1));
+        QCOMPARE(f.latencyP50Ms, 15.0);
+        QCOMPARE(f.latencySource, LatencySource::Stamps);
+        // Silent for long: no stall without a source to compare with.
+        QSignalSpy started(&m, &LinkMonitor::eventStarted);
+        clock.advance(5000 * kMs);
+        QCOMPARE(started.count(), 0);
+
+        // A flood of made-up topics stops at the bound, and is counted.
+        std::vector<MqttMessage> flood;
+        for (int i = 0; i < LinkMonitor::kMaxAnnounced + 50; ++i)
+            flood.push_back(mqtt(u"mqtt_client/ros_msg_type/x/%1"_s.arg(i), MqttClientWire::encodeType(point),
+                                 clock.now));
+        m.addMqtt(flood);
+        QVERIFY(m.announced().size() <= LinkMonitor::kMaxAnnounced);
+        QVERIFY(m.droppedAnnouncements() >= 50);
+    }
+
+    // Latency from a pipeline: a link whose timestamp_topic_prefix stamps (PREFIX/in, PREFIX/out)
+    // are in the measured pipeline takes out - in of every sample, and then ignores its injected
+    // stamps (two measures in one percentile would mean neither).
+    void pipelineStampsGiveTheLatency()
+    {
+        const ConfigReadResult read
+            = ConfigReader::read(Fixtures::read(u"benchmarking_suite/mqtt_client_vehicle_pointcloud.yaml"_s));
+        QVERIFY(read.parsed);
+        const QList<LinkDef> links = LinkDef::fromConfig(read.config, u"vehicle"_s);
+        QVERIFY(!links.isEmpty());
+        LinkDef l = links.first();
+        QVERIFY2(!l.stampPrefix.isEmpty(), "the suite's config stamps its mappings");
+        QCOMPARE(l.direction, Direction::Ros2Mqtt);
+        l.stamped = true; // and injects stamps too
+        LinkMonitor m;
+        m.setLinks({l}, kStart);
+        QString prefix = l.stampPrefix;
+        if (!prefix.startsWith(u'/'))
+            prefix.prepend(u'/');
+        m.setPipeline({u"/sensor"_s, prefix + u"/in"_s, prefix + u"/out"_s, u"/far"_s});
+        Clock clock {m};
+        for (int i = 0; i < 20; ++i) {
+            clock.advance(100 * kMs);
+            const qint64 t = clock.now - 50 * kMs;
+            m.addPipelineSample({t, t + 1 * kMs, t + 1 * kMs + (i % 2 ? 3 : 5) * kMs, t + 30 * kMs},
+                                clock.now);
+            // An injected stamp saying 40 ms: not taken.
+            m.addMqtt({mqtt(l.mqttTopic, MqttClientWire::stamped(clock.now - 40 * kMs, "x"), clock.now)});
+        }
+        clock.advance(1000 * kMs);
+        const LinkFigures f = m.figures(0);
+        QCOMPARE(f.latencySamples, quint64(20));
+        QVERIFY2(f.latencyP50Ms >= 3 && f.latencyP50Ms <= 5, qPrintable(QString::number(f.latencyP50Ms)));
+        QCOMPARE(f.latencyP99Ms, 5.0);
+        QCOMPARE(f.latencySource, LatencySource::Pipeline);
+        QCOMPARE(f.toJson().value(u"latency_source"_s).toString(), u"pipeline"_s);
+        // A pipeline without the link's stamps: its samples say nothing about it.
+        m.setPipeline({u"/sensor"_s, u"/far"_s});
+        m.addPipelineSample({clock.now, clock.now + 7 * kMs}, clock.now);
+        clock.advance(1000 * kMs);
+        QCOMPARE(m.figures(0).latencySamples, quint64(20));
     }
 
     void rulesYaml()

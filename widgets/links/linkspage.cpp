@@ -10,6 +10,7 @@
 #include "widgets/links/ruleseditor.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -163,6 +164,12 @@ QLayout* LinksPage::createBar()
     add->setToolTip(tr("Watch the mappings of more bridge configs (one per vehicle or robot)"));
     auto* rules = new QPushButton(tr("R&ules…"), this);
     rules->setToolTip(tr("Edit the thresholds (a rules YAML) every link is held to"));
+    auto* discovered = new QCheckBox(tr("&Discovered"), this);
+    discovered->setObjectName(u"discoveredLinks"_s);
+    discovered->setToolTip(tr("Also watch the links mqtt_client announces on the broker that no open "
+                              "config maps (their MQTT end)"));
+    discovered->setChecked(m_watch->isDiscovering());
+    connect(discovered, &QCheckBox::toggled, m_watch, &WatchSession::setDiscovering);
     m_filter = new QLineEdit(this);
     m_filter->setObjectName(u"linkFilter"_s);
     m_filter->setPlaceholderText(tr("Filter links…"));
@@ -175,6 +182,7 @@ QLayout* LinksPage::createBar()
     auto* bar = new QHBoxLayout;
     bar->addWidget(add);
     bar->addWidget(rules);
+    bar->addWidget(discovered);
     bar->addWidget(m_filter, 1);
     bar->addWidget(m_summary, 2);
     return bar;
@@ -330,7 +338,8 @@ void LinksPage::showDetail()
                           .arg(f.seqGaps)
                           .arg(f.duplicates)
                           .arg(f.reordered)
-                          .arg(f.stalls));
+                          .arg(f.stalls)
+                      + u"<br>"_s + LinkModel::latencySourceText(f.latencySource).toHtmlEscaped());
     QList<double> rates;
     QList<double> p99;
     for (const LinkMonitor::HistoryPoint& h : monitor->history(i)) {
