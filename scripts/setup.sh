@@ -16,8 +16,9 @@ PACKAGES=(
     libpaho-mqttpp-dev libpaho-mqtt-dev libssl-dev openssl
     # YAML
     libyaml-cpp-dev
-    # Prometheus: the metrics exposer of `watch`, and the server and promtool its tests run
-    prometheus-cpp-dev prometheus
+    # Prometheus: the server and promtool the tests of `watch --metrics` run, and prometheus-cpp,
+    # the peer bench_metrics compares the exposition with
+    prometheus prometheus-cpp-dev
     # ROS 1 (roscpp, generic subscribers, bags, message headers used by tests)
     libroscpp-dev libtopic-tools-dev librosbag-dev pluginlib-dev ros-core-dev
     libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev

@@ -2641,6 +2641,17 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     </message>
 </context>
 <context>
+    <name>MetricsServer</name>
+    <message>
+        <source>&apos;%1&apos; is not HOST:PORT (for example 127.0.0.1:9464, [::1]:9464, or :9464 for every interface)</source>
+        <translation>&apos;%1&apos; ist nicht HOST:PORT (zum Beispiel 127.0.0.1:9464, [::1]:9464 oder :9464 für alle Schnittstellen)</translation>
+    </message>
+    <message>
+        <source>cannot serve metrics on %1: %2</source>
+        <translation>Metriken können nicht auf %1 bereitgestellt werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>MqttClientWire</name>
     <message>
         <source>type announcement ends before the length of &apos;%1&apos; (byte %2)</source>
@@ -5408,13 +5419,6 @@ Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient oder die Messlauf
     <message>
         <source>watch needs a bridge config, or --broker to watch the links announced there; see bridgescope watch --help</source>
         <translation>watch braucht eine Bridge-Konfiguration oder --broker, um die dort angekündigten Verbindungen zu beobachten; siehe bridgescope watch --help</translation>
-    </message>
-</context>
-<context>
-    <name>WatchMetrics</name>
-    <message>
-        <source>cannot serve metrics on %1: %2</source>
-        <translation>Metriken auf %1 nicht bereitstellbar: %2</translation>
     </message>
 </context>
 <context>

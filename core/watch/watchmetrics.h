@@ -7,15 +7,15 @@
 
 class LinkMonitor;
 
-/// The links' figures for Prometheus, served at http://HOST:PORT/metrics by prometheus-cpp's
-/// pull exposer (the only code that uses prometheus-cpp).
+/// The links' figures for Prometheus, served at http://HOST:PORT/metrics by MetricsServer, in
+/// OpenMetrics or the text format as the scraper asks.
 ///
 /// Per link (labels config, client, direction, topic = the ROS topic, mqtt_topic): counters of
 /// messages and bytes at each side, messages lost and stalls; gauges of the rate at each side and
-/// the link's state (0 ok, 1 warning, 2 alert); from the first stamp a histogram of the latency
-/// in seconds, from the first gap a counter of Header.seq gaps. Per bridge (label bridge: its client id, else
-/// its config name): bridge_up (1 up, 0 down, absent while unknown). The exposer answers on its own threads
-/// from metrics that update() sets on the owner's thread.
+/// the link's state (0 ok, 1 warning, 2 alert); from the first latency sample a histogram of the
+/// latency in seconds, from the first gap a counter of Header.seq gaps. Per bridge (label bridge:
+/// its client id, else its config name): bridge_up (1 up, 0 down, absent while unknown). update()
+/// publishes a snapshot on the owner's thread; the server formats it on its own thread.
 class WatchMetrics
 {
     Q_DECLARE_TR_FUNCTIONS(WatchMetrics)

@@ -422,6 +422,10 @@ private slots:
         // The 20 ms the MQTT → ROS payloads were backdated, from the histogram's buckets (20-50 ms).
         const double m = query(median);
         QVERIFY2(m >= 0.015 && m <= 0.05, qPrintable(QString::number(m)));
+        // Prometheus 2.42 asks for OpenMetrics first (tst_metricsserver checks that header) and
+        // reads what it gets without a scrape error.
+        QCOMPARE(query(u"up{job=\"bridgescope\"}"_s), 1.0);
+        QCOMPARE(query(u"scrape_samples_scraped{job=\"bridgescope\"} > 0"_s) > 0, true);
         server.terminate();
         QVERIFY(server.waitForFinished(10000));
     }

@@ -33,17 +33,22 @@ bool TestServers::waitForPort(quint16 port, int timeoutMs)
     return LoopbackPorts::waitForListener(port, timeoutMs);
 }
 
-QByteArray TestServers::httpGet(quint16 port, const QString& path)
+QByteArray TestServers::httpRequest(quint16 port, const QByteArray& request)
 {
     QTcpSocket s;
     s.connectToHost(u"127.0.0.1"_s, port);
     if (!s.waitForConnected(3000))
         return {};
-    s.write("GET " + path.toUtf8() + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n");
+    s.write(request);
     QByteArray all;
     while (s.state() == QAbstractSocket::ConnectedState && s.waitForReadyRead(5000))
         all += s.readAll();
-    all += s.readAll();
+    return all + s.readAll();
+}
+
+QByteArray TestServers::httpGet(quint16 port, const QString& path)
+{
+    const QByteArray all = httpRequest(port, "GET " + path.toUtf8() + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n");
     const qsizetype body = all.indexOf("\r\n\r\n");
     return body < 0 ? QByteArray() : all.mid(body + 4);
 }

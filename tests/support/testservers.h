@@ -63,6 +63,8 @@ public:
     static quint16 freePort();
     /// Waits until something accepts connections on 127.0.0.1:port.
     static bool waitForPort(quint16 port, int timeoutMs);
+    /// Sends `request` to 127.0.0.1:port and reads until the server closes; the whole answer.
+    static QByteArray httpRequest(quint16 port, const QByteArray& request);
     /// GET http://127.0.0.1:port/path (HTTP/1.0); the body, or empty.
     static QByteArray httpGet(quint16 port, const QString& path);
     /// One sample of the Prometheus text format, by metric name and labels it must have; NaN if none.

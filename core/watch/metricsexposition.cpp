@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: MIT
+#include "metricsexposition.h"
+
+#include <charconv>
+#include <cmath>
+#include <QList>
+
+namespace {
+using Link = MetricsSnapshot::Link;
+
+/// Bucket bounds as OpenMetrics' canonical numbers ("1.0", not "1").
+constexpr std::array<const char*, MetricsSnapshot::kLatencyBounds.size()> kBoundTexts {
+    "0.0005", "0.001", "0.002", "0.005", "0.01", "0.02", "0.05",
+    "0.1",    "0.2",   "0.5",   "1.0",   "2.0",  "5.0",  "10.0"};
+
+void appendNumber(QByteArray& out, double v)
+{
+    if (std::isnan(v)) {
+        out += "NaN";
+        return;
+    }
+    if (std::isinf(v)) {
+        out += v > 0 ? "+Inf" : "-Inf";
+        return;
+    }
+    char buffer[32];
+    std::to_chars_result r {};
+    if (v == std::trunc(v) && std::abs(v) < 9.007199254740992e15) // counts: as integers
+        r = std::to_chars(buffer, buffer + sizeof buffer, qint64(v));
+    else
+        r = std::to_chars(buffer, buffer + sizeof buffer, v); // the shortest text that reads back as v
+    out.append(buffer, qsizetype(r.ptr - buffer));
+}
+
+void appendCount(QByteArray& out, quint64 v)
+{
+    char buffer[24];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+    out.append(buffer, qsizetype(r.ptr - buffer));
+}
+
+struct Family
+{
+    const char* name; ///< without _total
+    const char* type;
+    const char* help;
+};
+
+/// Writes a family's HELP and TYPE lines: counters are named with _total in the text format and
+/// without it in OpenMetrics, whose samples add the suffix.
+void head(QByteArray& out, const Family& f, MetricsFormat format)
+{
+    const bool counter = qstrcmp(f.type, "counter") == 0;
+    const QByteArray name = QByteArray(f.name)
+        + (counter && format == MetricsFormat::Text ? QByteArray("_total") : QByteArray());
+    out += "# HELP " + name + ' ' + f.help + '\n';
+    out += "# TYPE " + name + ' ' + f.type + '\n';
+}
+
+void sample(QByteArray& out, const char* name, const char* suffix, const QByteArray& labels,
+            const char* extraLabel, double value)
+{
+    out += name;
+    out += suffix;
+    out += '{';
+    out += labels;
+    if (extraLabel)
+        out += extraLabel;
+    out += "} ";
+    appendNumber(out, value);
+    out += '\n';
+}
+
+/// One counter or gauge family over every link; `value` reads the link's figure.
+template<typename Value, typename Has>
+void linkFamily(QByteArray& out, const std::vector<Link>& links, const Family& f, const char* extraLabel,
+                Value value, Has has)
+{
+    const char* suffix = qstrcmp(f.type, "counter") == 0 ? "_total" : "";
+    for (const Link& l : links)
+        if (has(l))
+            sample(out, f.name, suffix, l.labels, extraLabel, value(l));
+}
+
+const auto always = [](const Link&) { return true; };
+} // namespace
+
+QByteArray MetricsExposition::label(const char* name, const QByteArray& utf8Value)
+{
+    QByteArray out(name);
+    out.reserve(out.size() + utf8Value.size() + 3);
+    out += "=\"";
+    for (char c : utf8Value) {
+        if (c == '\\')
+            out += "\\\\";
+        else if (c == '"')
+            out += "\\\"";
+        else if (c == '\n')
+            out += "\\n";
+        else
+            out += c;
+    }
+    out += '"';
+    return out;
+}
+
+MetricsFormat MetricsExposition::negotiate(const QByteArray& accept)
+{
+    // Accept: application/openmetrics-text;version=1.0.0;q=0.5,text/plain;version=0.0.4;q=0.3,*/*;q=0.2
+    double openMetrics = -1;
+    double text = -1;
+    for (const QByteArray& range : accept.split(',')) {
+        const QList<QByteArray> parts = range.split(';');
+        const QByteArray type = parts.front().trimmed().toLower();
+        double q = 1;
+        bool versionOk = true;
+        for (qsizetype i = 1; i < parts.size(); ++i) {
+            const QByteArray p = parts[i].trimmed().toLower();
+            if (p.startsWith("q="))
+                q = p.mid(2).toDouble();
+            else if (p.startsWith("version="))
+                versionOk = p.mid(8) == "1.0.0" || p.mid(8) == "0.0.4"; // ours; 0.0.1 is not written
+        }
+        if (!versionOk || !(q > 0))
+            continue;
+        if (type == "application/openmetrics-text")
+            openMetrics = std::max(openMetrics, q);
+        else if (type == "text/plain" || type == "*/*" || type == "text/*")
+            text = std::max(text, q);
+    }
+    return openMetrics >= 0 && openMetrics >= text ? MetricsFormat::OpenMetrics : MetricsFormat::Text;
+}
+
+QByteArray MetricsExposition::contentType(MetricsFormat format)
+{
+    return format == MetricsFormat::OpenMetrics ? "application/openmetrics-text; version=1.0.0; charset=utf-8"
+                                                : "text/plain; version=0.0.4; charset=utf-8";
+}
+
+QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat format)
+{
+    static constexpr Family messages {"bridgescope_link_messages", "counter",
+                                      "Messages seen at one side of a bridged link"};
+    static constexpr Family bytes {"bridgescope_link_bytes", "counter",
+                                   "Payload bytes seen at one side of a bridged link"};
+    static constexpr Family lost {"bridgescope_link_lost", "counter",
+                                  "Messages the source sent that never reached the destination"};
+    static constexpr Family stalls {"bridgescope_link_stalls", "counter",
+                                    "Times the destination fell silent while the source published"};
+    static constexpr Family gaps {"bridgescope_link_seq_gaps", "counter",
+                                  "Header.seq values skipped at the destination"};
+    static constexpr Family rate {"bridgescope_link_rate_hz", "gauge",
+                                  "Messages per second at one side of a link, over the last 5 s"};
+    static constexpr Family state {"bridgescope_link_state", "gauge", "0 ok, 1 warning, 2 alert"};
+    static constexpr Family latency {"bridgescope_link_latency_seconds", "histogram",
+                                     "Latency of the messages over the link"};
+    static constexpr Family bridgeUp {"bridgescope_bridge_up", "gauge",
+                                      "1 while the bridge carries data, 0 when it is down"};
+    static constexpr const char* source = ",side=\"source\"";
+    static constexpr const char* destination = ",side=\"destination\"";
+
+    QByteArray out;
+    qsizetype labelBytes = 0;
+    for (const Link& l : s.links)
+        labelBytes += l.labels.size();
+    out.reserve(labelBytes * 12 + qsizetype(s.links.size()) * 700 + 4096);
+
+    head(out, messages, format);
+    linkFamily(
+        out, s.links, messages, source, [](const Link& l) { return l.sourceMessages; }, always);
+    linkFamily(
+        out, s.links, messages, destination, [](const Link& l) { return l.destinationMessages; }, always);
+    head(out, bytes, format);
+    linkFamily(
+        out, s.links, bytes, source, [](const Link& l) { return l.sourceBytes; }, always);
+    linkFamily(
+        out, s.links, bytes, destination, [](const Link& l) { return l.destinationBytes; }, always);
+    head(out, lost, format);
+    linkFamily(
+        out, s.links, lost, nullptr, [](const Link& l) { return l.lost; }, always);
+    head(out, stalls, format);
+    linkFamily(
+        out, s.links, stalls, nullptr, [](const Link& l) { return l.stalls; }, always);
+    head(out, gaps, format);
+    linkFamily(
+        out, s.links, gaps, nullptr, [](const Link& l) { return l.seqGaps; },
+        [](const Link& l) { return l.hasSeqGaps; });
+    head(out, rate, format);
+    linkFamily(
+        out, s.links, rate, source, [](const Link& l) { return l.sourceRate; }, always);
+    linkFamily(
+        out, s.links, rate, destination, [](const Link& l) { return l.destinationRate; }, always);
+    head(out, state, format);
+    linkFamily(
+        out, s.links, state, nullptr, [](const Link& l) { return double(l.state); }, always);
+
+    head(out, latency, format);
+    for (const Link& l : s.links) {
+        if (!l.hasLatency)
+            continue;
+        quint64 cumulative = 0;
+        for (std::size_t b = 0; b < l.buckets.size(); ++b) {
+            cumulative += l.buckets[b];
+            out += "bridgescope_link_latency_seconds_bucket{" + l.labels + ",le=\"" + kBoundTexts[b] + "\"} ";
+            appendCount(out, cumulative);
+            out += '\n';
+        }
+        out += "bridgescope_link_latency_seconds_bucket{" + l.labels + ",le=\"+Inf\"} ";
+        appendCount(out, l.latencyCount);
+        out += '\n';
+        sample(out, "bridgescope_link_latency_seconds", "_count", l.labels, nullptr, double(l.latencyCount));
+        sample(out, "bridgescope_link_latency_seconds", "_sum", l.labels, nullptr, l.latencySum);
+    }
+
+    head(out, bridgeUp, format);
+    for (const MetricsSnapshot::Bridge& b : s.bridges)
+        sample(out, bridgeUp.name, "", b.labels, nullptr, b.up ? 1 : 0);
+    if (format == MetricsFormat::OpenMetrics)
+        out += "# EOF\n";
+    return out;
+}

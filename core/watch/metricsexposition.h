@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <QByteArray>
+#include <QtGlobal>
+#include <vector>
+
+/// The links' figures at one moment, as Prometheus reads them: what WatchMetrics publishes four
+/// times a second and the metrics server formats when it is scraped (on its own thread).
+struct MetricsSnapshot
+{
+    /// Upper bounds of the latency histogram's buckets in seconds (+Inf is implied).
+    static constexpr std::array<double, 14> kLatencyBounds {0.0005, 0.001, 0.002, 0.005, 0.01, 0.02, 0.05,
+                                                            0.1,    0.2,   0.5,   1,     2,    5,    10};
+    struct Link
+    {
+        QByteArray labels; ///< `config="…",client="…",…` escaped, without braces
+        double sourceMessages = 0, destinationMessages = 0;
+        double sourceBytes = 0, destinationBytes = 0;
+        double lost = 0, stalls = 0;
+        double seqGaps = 0;
+        bool hasSeqGaps = false; ///< the counter exists from the first gap on
+        double sourceRate = 0, destinationRate = 0;
+        int state = 0; ///< 0 ok, 1 warning, 2 alert
+        bool hasLatency = false; ///< the histogram exists from the first stamp on
+        std::array<quint64, kLatencyBounds.size()> buckets {}; ///< per bucket, not cumulative
+        quint64 latencyCount = 0; ///< all observations (the +Inf bucket)
+        double latencySum = 0; ///< seconds
+    };
+    struct Bridge
+    {
+        QByteArray labels; ///< `bridge="…"`
+        bool up = false;
+    };
+    std::vector<Link> links;
+    std::vector<Bridge> bridges;
+};
+
+/// The two exposition formats Prometheus reads.
+enum class MetricsFormat {
+    Text, ///< text/plain; version=0.0.4
+    OpenMetrics, ///< application/openmetrics-text; version=1.0.0
+};
+
+namespace MetricsExposition {
+/// `name="value"` with the value escaped as both formats want (backslash, quote, newline).
+QByteArray label(const char* name, const QByteArray& utf8Value);
+/// The format a request's Accept header asks for: OpenMetrics when it is preferred (by q) over the
+/// text format, as Prometheus asks by default; the text format otherwise, and for no header.
+MetricsFormat negotiate(const QByteArray& accept);
+QByteArray contentType(MetricsFormat format);
+/// The whole exposition of `snapshot`.
+QByteArray write(const MetricsSnapshot& snapshot, MetricsFormat format);
+} // namespace MetricsExposition

@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: MIT
+// What `watch --metrics` serves: both exposition formats, checked by Prometheus' own promtool and
+// by the rules of OpenMetrics; the format a scraper's Accept header asks for; and the HTTP server
+// against bad, oversized, idle and many clients on loopback.
+#include "testservers.h"
+#include "watch/metricsserver.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTcpSocket>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+MetricsSnapshot twoLinks()
+{
+    using MetricsExposition::label;
+    MetricsSnapshot s;
+    MetricsSnapshot::Link a;
+    a.labels = label("config", "lab") + ',' + label("client", "vehicle") + ','
+        + label("direction", "ros2mqtt") + ',' + label("topic", "/a") + ',' + label("mqtt_topic", "a");
+    a.sourceMessages = 120;
+    a.destinationMessages = 118;
+    a.sourceBytes = 12e9; // beyond 32 bits
+    a.destinationBytes = 11.8e9;
+    a.lost = 2;
+    a.seqGaps = 2;
+    a.hasSeqGaps = true;
+    a.sourceRate = 9.75;
+    a.destinationRate = 9.5;
+    a.state = 1;
+    a.hasLatency = true;
+    a.buckets[0] = 1; // <= 0.5 ms
+    a.buckets[4] = 2; // <= 10 ms
+    a.latencyCount = 4; // one above 10 s
+    a.latencySum = 11.02;
+    s.links.push_back(a);
+    MetricsSnapshot::Link b;
+    // A hostile topic name: quotes, a backslash, a newline and UTF-8 stay one label value.
+    b.labels = label("config", "lab") + ',' + label("client", "") + ',' + label("direction", "mqtt2ros") + ','
+        + label("topic", "/b\"\\\n/ü") + ',' + label("mqtt_topic", "b");
+    s.links.push_back(b);
+    s.bridges.push_back({label("bridge", "vehicle"), true});
+    return s;
+}
+
+QByteArray body(const QByteArray& answer)
+{
+    const qsizetype at = answer.indexOf("\r\n\r\n");
+    return at < 0 ? QByteArray() : answer.mid(at + 4);
+}
+} // namespace
+
+class TestMetricsServer : public QObject
+{
+    Q_OBJECT
+private slots:
+    void textFormatPassesPromtool()
+    {
+        const QByteArray text = MetricsExposition::write(twoLinks(), MetricsFormat::Text);
+        QProcess promtool;
+        promtool.start(u"promtool"_s, {u"check"_s, u"metrics"_s});
+        QVERIFY2(promtool.waitForStarted(5000), "promtool (Debian package prometheus) is needed");
+        promtool.write(text);
+        promtool.closeWriteChannel();
+        QVERIFY(promtool.waitForFinished(30000));
+        const QString said
+            = QString::fromUtf8(promtool.readAllStandardOutput() + promtool.readAllStandardError());
+        QVERIFY2(promtool.exitCode() == 0, qPrintable(said + u"\n"_s + QString::fromUtf8(text)));
+
+        QVERIFY(text.contains("# TYPE bridgescope_link_messages_total counter\n"));
+        QVERIFY(text.contains("bridgescope_link_messages_total{config=\"lab\",client=\"vehicle\","
+                              "direction=\"ros2mqtt\",topic=\"/a\",mqtt_topic=\"a\",side=\"source\"} 120\n"));
+        QVERIFY(text.contains(",side=\"source\"} 12000000000\n"));
+        QVERIFY(text.contains("bridgescope_link_rate_hz{") && text.contains("} 9.75\n"));
+        QVERIFY(text.contains("topic=\"/b\\\"\\\\\\n/ü\""));
+        // Cumulative buckets; +Inf is the count.
+        QVERIFY(text.contains(",le=\"0.0005\"} 1\n"));
+        QVERIFY(text.contains(",le=\"0.005\"} 1\n"));
+        QVERIFY(text.contains(",le=\"0.01\"} 3\n"));
+        QVERIFY(text.contains(",le=\"10.0\"} 3\n"));
+        QVERIFY(text.contains(",le=\"+Inf\"} 4\n"));
+        QVERIFY(text.contains("bridgescope_link_latency_seconds_sum{") && text.contains("} 11.02\n"));
+        // Only the link with gaps has the gap counter; the link without stamps has no histogram.
+        QCOMPARE(text.count("bridgescope_link_seq_gaps_total{"), 1);
+        QCOMPARE(text.count("bridgescope_link_latency_seconds_count{"), 1);
+        QVERIFY(text.contains("bridgescope_bridge_up{bridge=\"vehicle\"} 1\n"));
+        QVERIFY(!text.contains("# EOF"));
+    }
+
+    // OpenMetrics 1.0: a counter family is named without _total and its samples with it, samples of a
+    // family stand together, every line is a comment or a sample, and # EOF ends it.
+    void openMetricsFollowsItsRules()
+    {
+        const QByteArray om = MetricsExposition::write(twoLinks(), MetricsFormat::OpenMetrics);
+        QVERIFY(om.endsWith("\n# EOF\n"));
+        QVERIFY(om.contains("# TYPE bridgescope_link_messages counter\n"));
+        QVERIFY(om.contains("# TYPE bridgescope_link_latency_seconds histogram\n"));
+        QVERIFY(om.contains("bridgescope_link_messages_total{"));
+        const QList<QByteArray> lines = om.split('\n');
+        QHash<QByteArray, QByteArray> typeOf;
+        QSet<QByteArray> closed; // families whose samples have ended
+        QByteArray current;
+        static const QRegularExpression sampleLine(
+            u"^([a-z_]+)\\{([a-z_]+=\"([^\"\\\\]|\\\\.)*\",?)*\\} (-?[0-9.e+]+|NaN|\\+Inf)$"_s);
+        for (const QByteArray& line : lines) {
+            if (line.isEmpty() || line == "# EOF")
+                continue;
+            if (line.startsWith("# TYPE ")) {
+                const QList<QByteArray> parts = line.split(' ');
+                typeOf.insert(parts[2], parts[3]);
+                QVERIFY2(!parts[2].endsWith("_total"), line.constData());
+                continue;
+            }
+            if (line.startsWith("# HELP "))
+                continue;
+            QVERIFY2(sampleLine.match(QString::fromUtf8(line)).hasMatch(), line.constData());
+            const QByteArray name = line.left(line.indexOf('{'));
+            QByteArray family;
+            for (auto it = typeOf.cbegin(); it != typeOf.cend(); ++it)
+                if (name == it.key()
+                    || (name.startsWith(QByteArray(it.key() + '_')) && it.key().size() > family.size()))
+                    family = it.key();
+            QVERIFY2(!family.isEmpty(), line.constData());
+            if (typeOf.value(family) == "counter")
+                QVERIFY2(name == family + "_total", line.constData());
+            if (family != current) {
+                QVERIFY2(!closed.contains(family), family.constData());
+                if (!current.isEmpty())
+                    closed.insert(current);
+                current = family;
+            }
+        }
+        QCOMPARE(typeOf.size(), 9);
+    }
+
+    void theScraperChoosesTheFormat()
+    {
+        using MetricsExposition::negotiate;
+        // What Prometheus 2.x sends by default.
+        QCOMPARE(negotiate("application/openmetrics-text;version=1.0.0,application/openmetrics-text;"
+                           "version=0.0.1;q=0.75,text/plain;version=0.0.4;q=0.5,*/*;q=0.1"),
+                 MetricsFormat::OpenMetrics);
+        QCOMPARE(negotiate(""), MetricsFormat::Text);
+        QCOMPARE(negotiate("text/plain"), MetricsFormat::Text);
+        QCOMPARE(negotiate("*/*"), MetricsFormat::Text);
+        QCOMPARE(negotiate("text/plain;q=0.9, application/openmetrics-text;q=0.5"), MetricsFormat::Text);
+        QCOMPARE(negotiate("application/openmetrics-text;version=0.0.1"), MetricsFormat::Text);
+        QCOMPARE(negotiate("application/openmetrics-text;q=0"), MetricsFormat::Text);
+        QCOMPARE(negotiate(QByteArray(100000, ';')), MetricsFormat::Text);
+    }
+
+    void hostAndPort()
+    {
+        QHostAddress a;
+        quint16 p = 1;
+        QVERIFY(MetricsServer::parseHostPort(u"127.0.0.1:9464"_s, &a, &p, nullptr));
+        QCOMPARE(a, QHostAddress(QHostAddress::LocalHost));
+        QCOMPARE(p, quint16(9464));
+        QVERIFY(MetricsServer::parseHostPort(u"[::1]:0"_s, &a, &p, nullptr));
+        QCOMPARE(a, QHostAddress(QHostAddress::LocalHostIPv6));
+        QVERIFY(MetricsServer::parseHostPort(u":9464"_s, &a, &p, nullptr));
+        QCOMPARE(a, QHostAddress(QHostAddress::Any));
+        QString error;
+        for (const QString& bad :
+             {u"9464"_s, u"127.0.0.1:"_s, u"127.0.0.1:70000"_s, u"example.org:80"_s, u"127.0.0.1:-1"_s})
+            QVERIFY2(!MetricsServer::parseHostPort(bad, &a, &p, &error) && error.contains(bad),
+                     qPrintable(bad));
+        QVERIFY(!MetricsServer::listen(u"256.0.0.1:0"_s, &error));
+        // A port in use is said, not a crash.
+        const std::unique_ptr<MetricsServer> first = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        QVERIFY2(first, qPrintable(error));
+        QVERIFY(!MetricsServer::listen(u"127.0.0.1:%1"_s.arg(first->port()), &error));
+        QVERIFY2(error.contains(u"cannot serve metrics"_s), qPrintable(error));
+    }
+
+    void servesOverHttp()
+    {
+        QString error;
+        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        QVERIFY2(server, qPrintable(error));
+        const quint16 port = server->port();
+        QVERIFY(port > 0);
+        // Before anything is published: an empty exposition, not an error.
+        QByteArray answer = TestServers::httpRequest(port, "GET /metrics HTTP/1.1\r\nHost: x\r\n\r\n");
+        QVERIFY2(answer.startsWith("HTTP/1.1 200 OK\r\n"), answer.constData());
+        QVERIFY(body(answer).contains("# TYPE bridgescope_link_messages_total counter"));
+
+        server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
+        answer
+            = TestServers::httpRequest(port,
+                                       "GET /metrics?x=1 HTTP/1.1\r\nAccept: application/openmetrics-text; "
+                                       "version=1.0.0\r\n\r\n");
+        QVERIFY(
+            answer.contains("Content-Type: application/openmetrics-text; version=1.0.0; charset=utf-8\r\n"));
+        QCOMPARE(body(answer), MetricsExposition::write(twoLinks(), MetricsFormat::OpenMetrics));
+        const QByteArray text = TestServers::httpRequest(port, "GET /metrics HTTP/1.0\r\n\r\n");
+        QVERIFY(text.contains("Content-Type: text/plain; version=0.0.4; charset=utf-8\r\n"));
+        const QByteArray length = "Content-Length: "
+            + QByteArray::number(MetricsExposition::write(twoLinks(), MetricsFormat::Text).size()) + "\r\n";
+        QVERIFY(text.contains(length));
+        const QByteArray head = TestServers::httpRequest(port, "HEAD /metrics HTTP/1.1\r\n\r\n");
+        QVERIFY(head.startsWith("HTTP/1.1 200") && body(head).isEmpty());
+        QVERIFY(TestServers::httpRequest(port, "GET / HTTP/1.1\r\n\r\n").contains("/metrics"));
+
+        QVERIFY(TestServers::httpRequest(port, "GET /other HTTP/1.1\r\n\r\n").startsWith("HTTP/1.1 404"));
+        QVERIFY(TestServers::httpRequest(port, "POST /metrics HTTP/1.1\r\n\r\n").startsWith("HTTP/1.1 405"));
+        QVERIFY(TestServers::httpRequest(port, "nonsense\r\n\r\n").startsWith("HTTP/1.1 400"));
+        QVERIFY(TestServers::httpRequest(port, "GET /metrics SMTP\r\n\r\n").startsWith("HTTP/1.1 400"));
+        QVERIFY(TestServers::httpRequest(port,
+                                         "GET /metrics HTTP/1.1\r\nX: " + QByteArray(20000, 'a') + "\r\n\r\n")
+                    .startsWith("HTTP/1.1 431"));
+        QVERIFY(TestServers::httpRequest(port, QByteArray(100000, '\0')).startsWith("HTTP/1.1 431"));
+        QCOMPARE(server->served(), quint64(4)); // the scrapes of /metrics
+    }
+
+    // Clients that connect and never ask hold no slot for ever: more than kMaxClients of them push
+    // out the oldest, and a scrape still gets its answer at once.
+    void idleClientsDoNotLockOutTheScraper()
+    {
+        QString error;
+        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        QVERIFY2(server, qPrintable(error));
+        server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
+        std::vector<std::unique_ptr<QTcpSocket>> idle;
+        for (int i = 0; i < MetricsServer::kMaxClients + 8; ++i) {
+            idle.push_back(std::make_unique<QTcpSocket>());
+            idle.back()->connectToHost(u"127.0.0.1"_s, server->port());
+            QVERIFY(idle.back()->waitForConnected(3000));
+        }
+        QTRY_VERIFY(server->rejected() >= 8);
+        QElapsedTimer t;
+        t.start();
+        QVERIFY(TestServers::httpRequest(server->port(), "GET /metrics HTTP/1.1\r\n\r\n")
+                    .startsWith("HTTP/1.1 200"));
+        QVERIFY2(t.elapsed() < 3000, qPrintable(QString::number(t.elapsed())));
+        // The oldest were closed by the server.
+        QTRY_VERIFY(idle.front()->state() == QAbstractSocket::UnconnectedState
+                    || idle.front()->waitForDisconnected(100));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMetricsServer)
+#include "tst_metricsserver.moc"
