@@ -414,6 +414,8 @@ bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QStri
     MqttProfile p;
     if (!options.brokerUrl.isEmpty()) {
         p = MqttProfile::fromUrl(options.brokerUrl);
+        if (p.caFile.isEmpty() && setting(OptionScope::Broker, u"tls.enabled"_s) == u"true"_s)
+            p.caFile = setting(OptionScope::Broker, u"tls.ca_certificate"_s); // the config's CA still holds
     } else {
         const bool tls = setting(OptionScope::Broker, u"tls.enabled"_s) == u"true"_s;
         p = MqttProfile::fromUrl(u"%1://%2:%3"_s.arg(tls ? u"ssl"_s : u"tcp"_s,

@@ -13,9 +13,12 @@
 #include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QHash>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QUrl>
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -24,12 +27,18 @@ using namespace Qt::StringLiterals;
 namespace {
 const QString kStamps = u"/benchmarking_suite/timestamps/"_s;
 
-/// The suite's bridge configs, with the demo's own ROS topics for each host.
-QString bridgeConfig(const QString& side)
+/// The suite's bridge configs, with the demo's own ROS topics for each host, connecting to
+/// host:port (with TLS when caFile is given).
+QString bridgeConfig(const QString& side, const QString& host, quint16 port, const QString& caFile,
+                     const DemoLab::Options& o)
 {
     BridgeConfig c;
-    c.broker.values.setText(u"host"_s, u"localhost"_s);
-    c.broker.values.setText(u"port"_s, u"1883"_s);
+    c.broker.values.setText(u"host"_s, host);
+    c.broker.values.setText(u"port"_s, QString::number(port));
+    if (!caFile.isEmpty()) {
+        c.broker.values.setText(u"tls.enabled"_s, u"true"_s);
+        c.broker.values.setText(u"tls.ca_certificate"_s, caFile);
+    }
     c.client.values.setText(u"id"_s, u"mqtt_interface_"_s + side);
     const bool vehicle = side == u"vehicle"_s;
     for (const QString& data : {u"pointcloud"_s, u"object_list"_s}) {
@@ -40,10 +49,20 @@ QString bridgeConfig(const QString& side)
         if (outgoing)
             m.set(u"inject_timestamp"_s, u"true"_s);
         m.set(u"timestamp_topic_prefix"_s, u"%1mqtt_interface_%2/%3"_s.arg(kStamps, side, data));
-        m.set(u"advanced.mqtt.qos"_s, u"0"_s);
+        m.set(u"advanced.mqtt.qos"_s, QString::number(o.qos));
+        if (o.queueSize != 1)
+            m.set(u"advanced.ros.queue_size"_s, QString::number(o.queueSize));
         c.mappings.append(m);
     }
     return ConfigWriter::write(c, ConfigLayout::Ros1);
+}
+
+/// `text` as one word for sh.
+QString shellQuoted(const QString& text)
+{
+    QString q = text;
+    q.replace(u"'"_s, u"'\\''"_s);
+    return u"'"_s + q + u"'"_s;
 }
 } // namespace
 
@@ -54,6 +73,8 @@ struct DemoLab::Private
     QStringList names;
     QString brokerUrl;
     QString masterUri;
+    Options options;
+    QHash<QString, quint16> bridgePorts; ///< side -> relay port
 
     QProcessEnvironment rosEnvironment() const
     {
@@ -115,28 +136,27 @@ QStringList DemoLab::pipelineTopics()
 
 bool DemoLab::start(const Options& o, QString* error)
 {
+    return startServers(o, error) && startComponents(error);
+}
+
+bool DemoLab::startServers(const Options& o, QString* error)
+{
     const auto fail = [this, error](const QString& why) {
         if (error)
             *error = why;
         stop();
         return false;
     };
+    d->options = o;
+    d->bridgePorts.clear();
     if (!d->dir.isValid())
         return fail(tr("cannot make a folder for the demo: %1").arg(d->dir.errorString()));
     QDir().mkpath(d->dir.filePath(u"ros/log"_s));
-    const QString program = o.program.isEmpty() ? QCoreApplication::applicationFilePath() : o.program;
-
-    // Configs: both bridges and the paper's pipeline (Fig. 4) with the demo's hosts.
-    QString why;
-    for (const QString& side : {u"vehicle"_s, u"cloud"_s})
-        if (!AtomicFile::write(d->dir.filePath(side + u".yaml"_s), bridgeConfig(side).toUtf8(), &why, false))
-            return fail(why);
-    Pipeline pipeline(pipelineTopics(), 600);
-    for (const QString& t : pipelineTopics())
-        pipeline.setHost(
-            t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
-    if (!AtomicFile::write(pipelinePath(), pipeline.toYaml(), &why, false))
-        return fail(why);
+    const bool tls = !o.tlsDirectory.isEmpty();
+    if (tls)
+        for (const char* f : {"ca.crt", "server.crt", "server.key"})
+            if (!QFileInfo::exists(QDir(o.tlsDirectory).filePath(QLatin1String(f))))
+                return fail(tr("TLS needs %1 in %2").arg(QLatin1String(f), o.tlsDirectory));
 
     // The servers: the ones given, else private ones on free loopback ports.
     const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
@@ -147,18 +167,22 @@ bool DemoLab::start(const Options& o, QString* error)
         if (mosquitto.isEmpty())
             return fail(tr("the demo needs mosquitto (scripts/setup.sh installs it) or --broker"));
         const quint16 port = LoopbackPorts::freePort();
-        d->brokerUrl = u"tcp://127.0.0.1:%1"_s.arg(port);
+        d->brokerUrl = u"%1://127.0.0.1:%2"_s.arg(tls ? u"ssl"_s : u"tcp"_s).arg(port);
         QFile conf(d->dir.filePath(u"mosquitto.conf"_s));
         const char* user = ::getpwuid(::getuid()) ? ::getpwuid(::getuid())->pw_name : "root";
-        if (!conf.open(QIODevice::WriteOnly)
-            || conf.write(
-                   u"listener %1 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
-                   // Run as whoever we are: a broker started as root drops to the "mosquitto"
-                   // user, and a change of user clears the parent-death signal.
-                   "user %2\n"_s.arg(port)
-                       .arg(QString::fromLocal8Bit(user))
-                       .toUtf8())
-                < 0)
+        QString text
+            = u"listener %1 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
+              // Run as whoever we are: a broker started as root drops to the "mosquitto"
+              // user, and a change of user clears the parent-death signal.
+              "user %2\n"_s.arg(port)
+                  .arg(QString::fromLocal8Bit(user));
+        if (tls) {
+            const QDir t(o.tlsDirectory);
+            text += u"cafile %1\ncertfile %2\nkeyfile %3\nrequire_certificate false\n"_s.arg(
+                t.absoluteFilePath(u"ca.crt"_s), t.absoluteFilePath(u"server.crt"_s),
+                t.absoluteFilePath(u"server.key"_s));
+        }
+        if (!conf.open(QIODevice::WriteOnly) || conf.write(text.toUtf8()) < 0)
             return fail(tr("cannot write %1").arg(conf.fileName()));
         conf.close();
         d->launch(u"mosquitto"_s, mosquitto, {u"-c"_s, conf.fileName()});
@@ -178,18 +202,72 @@ bool DemoLab::start(const Options& o, QString* error)
         if (!LoopbackPorts::waitForListener(port, int(deadline.remainingTime()),
                                             [this] { return isRunning(); }))
             return fail(tr("%1 did not start: %2").arg(name, d->logOf(name)));
+    return true;
+}
+
+void DemoLab::setBridgePort(const QString& side, quint16 port)
+{
+    d->bridgePorts.insert(side, port);
+}
+
+bool DemoLab::startComponents(QString* error)
+{
+    const auto fail = [this, error](const QString& why) {
+        if (error)
+            *error = why;
+        stop();
+        return false;
+    };
+    const Options& o = d->options;
+    const QString program = o.program.isEmpty() ? QCoreApplication::applicationFilePath() : o.program;
+    const QUrl broker(d->brokerUrl);
+    const bool credentials = !broker.userName().isEmpty() || !broker.password().isEmpty();
+
+    // Configs: both bridges (to the broker, or to the relay in front of it) and the paper's
+    // pipeline (Fig. 4) with the demo's hosts.
+    QString why;
+    for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
+        const bool relayed = d->bridgePorts.contains(side);
+        const QString host = relayed ? u"127.0.0.1"_s : broker.host();
+        const quint16 port = relayed ? d->bridgePorts.value(side) : quint16(broker.port(1883));
+        if (!AtomicFile::write(d->dir.filePath(side + u".yaml"_s),
+                               bridgeConfig(side, host, port, caFile(), o).toUtf8(), &why, false))
+            return fail(why);
+    }
+    Pipeline pipeline(pipelineTopics(), 600);
+    for (const QString& t : pipelineTopics())
+        pipeline.setHost(
+            t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
+    if (!AtomicFile::write(pipelinePath(), pipeline.toYaml(), &why, false))
+        return fail(why);
 
     // The components.
     const QString offset = QString::number(o.cloudOffsetMs);
     const QStringList common {u"--ros-master"_s, rosMasterUri()};
-    d->launch(u"vehicle_bridge"_s, program,
-              QStringList {u"bridge"_s, vehicleConfigPath(), u"--broker"_s, brokerUrl(), u"--name"_s,
-                           u"mqtt_interface_vehicle"_s}
-                  + common);
-    d->launch(u"cloud_bridge"_s, program,
-              QStringList {u"bridge"_s, cloudConfigPath(), u"--broker"_s, brokerUrl(), u"--name"_s,
-                           u"mqtt_interface_cloud"_s, u"--clock-offset-ms"_s, offset}
-                  + common);
+    for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
+        const QString name = u"mqtt_interface_"_s + side;
+        const QString config = side == u"vehicle"_s ? vehicleConfigPath() : cloudConfigPath();
+        if (!o.bridgeCommand.isEmpty()) {
+            const bool relayed = d->bridgePorts.contains(side);
+            QString command = o.bridgeCommand;
+            command.replace(u"{config}"_s, shellQuoted(config))
+                .replace(u"{name}"_s, shellQuoted(name))
+                .replace(u"{broker_host}"_s, shellQuoted(relayed ? u"127.0.0.1"_s : broker.host()))
+                .replace(u"{broker_port}"_s,
+                         QString::number(relayed ? d->bridgePorts.value(side) : broker.port(1883)))
+                .replace(u"{ros_master}"_s, shellQuoted(rosMasterUri()));
+            d->launch(side + u"_bridge"_s, u"/bin/sh"_s, {u"-c"_s, command});
+            continue;
+        }
+        QStringList args {u"bridge"_s, config, u"--name"_s, name};
+        if (credentials && !d->bridgePorts.contains(side))
+            args << u"--broker"_s << d->brokerUrl; // the config holds host and port, not secrets
+        if (side == u"cloud"_s)
+            args << u"--clock-offset-ms"_s << offset;
+        if (o.announceEveryMessage)
+            args << u"--announce-every-message"_s;
+        d->launch(side + u"_bridge"_s, program, args + common);
+    }
     d->launch(u"object_detection"_s, program,
               QStringList {u"demo-node"_s, u"cloud"_s, u"--clock-offset-ms"_s, offset, u"--detection-ms"_s,
                            QString::number(o.detectionMs)}
@@ -241,6 +319,12 @@ QString DemoLab::failure() const
 QString DemoLab::brokerUrl() const
 {
     return d->brokerUrl;
+}
+
+QString DemoLab::caFile() const
+{
+    return d->options.tlsDirectory.isEmpty() ? QString()
+                                             : QDir(d->options.tlsDirectory).absoluteFilePath(u"ca.crt"_s);
 }
 
 QString DemoLab::rosMasterUri() const

@@ -11,8 +11,8 @@ class QProcess;
 /// The embedded demo lab: everything the paper's experiment needs, on this machine, started by
 /// Bridgescope and stopped with it.
 ///
-/// A private mosquitto and rosmaster on free loopback ports (or the ones given), a vehicle and a cloud reference
-/// bridge (`bridgescope bridge`) from generated paper-shaped configs, the vehicle node (a 0.18 MB
+/// A private mosquitto and rosmaster on free loopback ports (or the ones given), a vehicle and a cloud
+/// reference bridge (`bridgescope bridge`) from generated paper-shaped configs, the vehicle node (a 0.18 MB
 /// point cloud at 10 Hz) and the cloud's object detection (about 40 ms), the cloud's clock ahead
 /// by `cloudOffsetMs`; stamps at every component. Every child gets SIGTERM when this process dies
 /// (PR_SET_PDEATHSIG), so even a crash leaves no process behind.
@@ -29,6 +29,16 @@ public:
         double cloudOffsetMs = 35;
         QString brokerUrl; ///< a broker to use instead of a private mosquitto
         QString rosMasterUri; ///< a master to use instead of a private rosmaster
+        // What an experiment varies (the demo keeps the defaults).
+        int qos = 0; ///< of every mapping
+        int queueSize = 1; ///< advanced.ros.queue_size of every mapping
+        bool announceEveryMessage = false; ///< reference bridges announce the type before every message
+        /// A folder with ca.crt, server.crt and server.key: the private mosquitto listens with TLS
+        /// and the bridges verify it with ca.crt.
+        QString tlsDirectory;
+        /// Empty: the reference bridges. Otherwise a shell command per bridge, with {config}, {name},
+        /// {broker_host}, {broker_port} and {ros_master} replaced (shell-quoted).
+        QString bridgeCommand;
     };
 
     DemoLab();
@@ -38,12 +48,19 @@ public:
 
     /// Starts the servers (waiting until they listen, a second or two) and the components.
     bool start(const Options& options, QString* error);
+    /// The same in two steps, for an experiment that puts a relay between a bridge and the broker.
+    bool startServers(const Options& options, QString* error);
+    /// The port a side's bridge ("vehicle", "cloud") connects to instead of the broker's (a relay
+    /// on 127.0.0.1 in front of it); before startComponents().
+    void setBridgePort(const QString& side, quint16 port);
+    bool startComponents(QString* error);
     void stop();
     bool isRunning() const;
     /// What stopped running meanwhile (empty while everything runs).
     QString failure() const;
 
-    QString brokerUrl() const;
+    QString brokerUrl() const; ///< ssl:// with TLS
+    QString caFile() const; ///< the CA that signed the broker's certificate (TLS), else empty
     QString rosMasterUri() const;
     QString vehicleConfigPath() const; ///< the vehicle bridge's config (for the Map page)
     QString cloudConfigPath() const;

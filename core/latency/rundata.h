@@ -26,6 +26,10 @@ struct RunInfo
     qint64 timeoutNs = 5'000'000'000LL;
     QString bridgeConfigPath;
     QByteArray bridgeConfig;
+    /// A cell of an experiment: the plan's name, the cell's id and its levels (factor, level).
+    QString experiment;
+    QString cell;
+    QList<std::pair<QString, QString>> factors;
 
     /// Fills `host` and `version` with this machine and this Bridgescope, where they are empty.
     void describeThisMachine();

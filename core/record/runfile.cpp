@@ -13,6 +13,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QSet>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -81,6 +83,36 @@ constexpr qsizetype kMaxEventText = 4096;
 QString metaText(const QHash<QString, QVariant>& meta, const QString& key)
 {
     return meta.value(key).toString();
+}
+
+constexpr qsizetype kMaxFactorText = 256;
+constexpr qsizetype kMaxFactors = 64;
+
+/// An experiment cell's levels as JSON: [["qos", "1"], ["payload", "50%"]].
+QString factorsJson(const QList<std::pair<QString, QString>>& factors)
+{
+    if (factors.isEmpty())
+        return QString();
+    QJsonArray a;
+    for (const auto& [factor, level] : factors)
+        a.append(QJsonArray {factor, level});
+    return QString::fromUtf8(QJsonDocument(a).toJson(QJsonDocument::Compact));
+}
+
+/// The levels back; what is not a list of two strings is left out, and so is what passes the bounds.
+QList<std::pair<QString, QString>> factorsOf(const QString& json)
+{
+    QList<std::pair<QString, QString>> factors;
+    if (json.isEmpty() || json.size() > kMaxFactors * 2 * (kMaxFactorText + 8))
+        return factors;
+    const QJsonArray a = QJsonDocument::fromJson(json.toUtf8()).array();
+    for (const QJsonValue& v : a) {
+        const QJsonArray pair = v.toArray();
+        if (pair.size() == 2 && pair[0].isString() && pair[1].isString() && factors.size() < kMaxFactors)
+            factors.append(
+                {pair[0].toString().left(kMaxFactorText), pair[1].toString().left(kMaxFactorText)});
+    }
+    return factors;
 }
 /// The run's watch events, by start; none from a run made before they were recorded.
 bool readEvents(QSqlQuery& q, std::vector<RecordedEvent>* events, QString* error)
@@ -240,6 +272,9 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         {u"timeout_ns"_s, info.timeoutNs},
         {u"bridge_config_path"_s, info.bridgeConfigPath},
         {u"bridge_config"_s, QString::fromUtf8(bridgeConfig)},
+        {u"experiment"_s, info.experiment},
+        {u"experiment_cell"_s, info.cell},
+        {u"factors"_s, factorsJson(info.factors)},
     };
     for (const auto& [key, value] : meta)
         if (!setMeta(key, value, error))
@@ -442,6 +477,9 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
     info.timeoutNs = meta.value(u"timeout_ns"_s, 5'000'000'000LL).toLongLong();
     info.bridgeConfigPath = metaText(meta, u"bridge_config_path"_s);
     info.bridgeConfig = Secrets::redactYaml(metaText(meta, u"bridge_config"_s).toUtf8());
+    info.experiment = metaText(meta, u"experiment"_s).left(kMaxFactorText);
+    info.cell = metaText(meta, u"experiment_cell"_s).left(kMaxFactorText);
+    info.factors = factorsOf(metaText(meta, u"factors"_s));
     QString why;
     // No pipeline: a run of `watch`, with events only.
     const QByteArray pipelineYaml = metaText(meta, u"pipeline"_s).toUtf8();
