@@ -4,6 +4,7 @@
 #include "app/cli/configcommand.h"
 #include "app/cli/democommand.h"
 #include "app/cli/discovercommand.h"
+#include "app/cli/experimentcommand.h"
 #include "app/cli/probecommand.h"
 #include "app/cli/recordcommand.h"
 #include "app/cli/reportcommand.h"
@@ -49,8 +50,9 @@ int main(int argc, char** argv)
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
-    static const QStringList commands = {u"bridge"_s, u"config"_s, u"demo"_s,   u"demo-node"_s, u"discover"_s,
-                                         u"probe"_s,  u"record"_s, u"report"_s, u"watch"_s};
+    static const QStringList commands
+        = {u"bridge"_s,     u"config"_s, u"demo"_s,   u"demo-node"_s, u"discover"_s,
+           u"experiment"_s, u"probe"_s,  u"record"_s, u"report"_s,    u"watch"_s};
     if (first == u"report"_s && wantsPdf(argc, argv)) {
         // PDF reports lay text out with Qt GUI; no window ever opens, so no display is needed.
         if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
@@ -88,6 +90,8 @@ int main(int argc, char** argv)
             return CliOutput::finish(runReportCommand(args));
         if (first == u"watch"_s)
             return CliOutput::finish(runWatchCommand(args));
+        if (first == u"experiment"_s)
+            return CliOutput::finish(runExperimentCommand(args));
         return runConfigCommand(args);
     }
     return runGui(argc, argv);

@@ -1089,6 +1089,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master</source>
         <translation>die Demo braucht rosmaster (scripts/setup.sh installiert ihn) oder --ros-master</translation>
     </message>
+    <message>
+        <source>TLS needs %1 in %2</source>
+        <translation>TLS braucht %1 in %2</translation>
+    </message>
 </context>
 <context>
     <name>DetailPane</name>
@@ -1489,6 +1493,411 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     </message>
 </context>
 <context>
+    <name>ExperimentCommand</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>The experiment&apos;s folder: its plan, state and a run per cell.</source>
+        <translation>Der Ordner des Experiments: sein Plan, sein Zustand und ein Messlauf je Zelle.</translation>
+    </message>
+    <message>
+        <source>Go on with DIR: skip the complete cells, redo the one that was cut off and those that failed.</source>
+        <translation>Mit DIR fortfahren: vollständige Zellen überspringen, die abgebrochene und die fehlgeschlagenen wiederholen.</translation>
+    </message>
+    <message>
+        <source>List the cells and the time they will take; run nothing.</source>
+        <translation>Die Zellen und ihre voraussichtliche Dauer auflisten; nichts ausführen.</translation>
+    </message>
+    <message>
+        <source>The experiment plan (docs/formats.md).</source>
+        <translation>Der Experimentplan (docs/formats.md).</translation>
+    </message>
+    <message>
+        <source>Runs an experiment plan unattended: every cell of its matrix (payload, rate, QoS, TLS, announcement, queue size, bridge implementation, link profile) on its own lab, recorded as a run in DIR. Progress on standard error, one JSON line per cell started and finished on standard output; Ctrl+C stops after cleaning up, and --resume goes on. bridgescope report DIR makes the tables.
+Exit status: 0 every cell complete, 1 a cell failed, 2 bad options or plan, 130 stopped.</source>
+        <translation>Führt einen Experimentplan unbeaufsichtigt aus: jede Zelle seiner Matrix (Nutzlast, Rate, QoS, TLS, Typankündigung, Warteschlangenlänge, Bridge-Implementierung, Verbindungsprofil) in einem eigenen Labor, aufgezeichnet als Messlauf in DIR. Fortschritt auf der Standardfehlerausgabe, eine JSON-Zeile je gestarteter und beendeter Zelle auf der Standardausgabe; Strg+C hält nach dem Aufräumen an, --resume macht weiter. bridgescope report DIR erstellt die Tabellen.
+Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche Optionen oder Plan, 130 angehalten.</translation>
+    </message>
+    <message>
+        <source>experiment takes one plan; see bridgescope experiment --help</source>
+        <translation>experiment nimmt einen Plan; siehe bridgescope experiment --help</translation>
+    </message>
+    <message>
+        <source>experiment needs -o DIR, the folder its runs go to</source>
+        <translation>experiment braucht -o DIR, den Ordner für seine Messläufe</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n cell(s), %2 samples each after %3 of warm-up</source>
+        <translation>
+            <numerusform>%1: %n Zelle, je %2 Proben nach %3 zum Einschwingen</numerusform>
+            <numerusform>%1: %n Zellen, je %2 Proben nach %3 zum Einschwingen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>about %1 in all</source>
+        <translation>insgesamt etwa %1</translation>
+    </message>
+    <message>
+        <source>cell %1/%2: %3</source>
+        <translation>Zelle %1/%2: %3</translation>
+    </message>
+    <message>
+        <source>cell %1/%2 failed: %3</source>
+        <translation>Zelle %1/%2 fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>cell %1/%2: %3/%4 samples, about %5 left</source>
+        <translation>Zelle %1/%2: %3/%4 Proben, noch etwa %5</translation>
+    </message>
+    <message>
+        <source>stopped; bridgescope experiment --resume goes on</source>
+        <translation>angehalten; bridgescope experiment --resume macht weiter</translation>
+    </message>
+    <message>
+        <source>%1 of %2 cells complete in %3</source>
+        <translation>%1 von %2 Zellen vollständig in %3</translation>
+    </message>
+</context>
+<context>
+    <name>ExperimentPlan</name>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</source>
+        <translation>%1: ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</translation>
+    </message>
+    <message>
+        <source>%1: unknown link setting &apos;%2&apos; (known: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</source>
+        <translation>%1: unbekannte Verbindungseinstellung &apos;%2&apos; (bekannt: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</translation>
+    </message>
+    <message>
+        <source>%1: %2 takes a number from 0 to %3</source>
+        <translation>%1: %2 nimmt eine Zahl von 0 bis %3</translation>
+    </message>
+    <message>
+        <source>%1: a bridge is reference or {command: &quot;… {config} … {name} …&quot;}</source>
+        <translation>%1: eine Bridge ist reference oder {command: &quot;… {config} … {name} …&quot;}</translation>
+    </message>
+    <message>
+        <source>%1: the bridge command must use {config}, the generated config&apos;s path</source>
+        <translation>%1: der Bridge-Befehl muss {config} verwenden, den Pfad der erzeugten Konfiguration</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>no link profile &apos;%1&apos; under links:</source>
+        <translation>kein Verbindungsprofil &apos;%1&apos; unter links:</translation>
+    </message>
+    <message>
+        <source>no bridge &apos;%1&apos; under bridges: (or reference)</source>
+        <translation>keine Bridge &apos;%1&apos; unter bridges: (oder reference)</translation>
+    </message>
+    <message>
+        <source>a level of %1 is a single value</source>
+        <translation>eine Stufe von %1 ist ein einzelner Wert</translation>
+    </message>
+    <message>
+        <source>payload is bytes (20000), a percentage of the 0.18 MB scan (25%), scan or pointcloud2; not &apos;%1&apos;</source>
+        <translation>payload ist eine Bytezahl (20000), ein Prozentsatz des 0,18-MB-Scans (25%), scan oder pointcloud2; nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>rate_hz takes a rate above 0 and up to 1000 Hz</source>
+        <translation>rate_hz nimmt eine Rate über 0 bis 1000 Hz</translation>
+    </message>
+    <message>
+        <source>detection_ms takes 0 to 10000 ms</source>
+        <translation>detection_ms nimmt 0 bis 10000 ms</translation>
+    </message>
+    <message>
+        <source>qos is 0, 1 or 2</source>
+        <translation>qos ist 0, 1 oder 2</translation>
+    </message>
+    <message>
+        <source>tls is true or false</source>
+        <translation>tls ist true oder false</translation>
+    </message>
+    <message>
+        <source>announce is once or every_message</source>
+        <translation>announce ist once oder every_message</translation>
+    </message>
+    <message>
+        <source>queue_size takes 1 to 100000</source>
+        <translation>queue_size nimmt 1 bis 100000</translation>
+    </message>
+    <message>
+        <source>unknown factor &apos;%1&apos; (known: %2)</source>
+        <translation>unbekannter Faktor &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>repetition %1</source>
+        <translation>Wiederholung %1</translation>
+    </message>
+    <message>
+        <source>baseline</source>
+        <translation>Grundeinstellung</translation>
+    </message>
+    <message>
+        <source>a plan is a mapping: name, samples, factors or cells, …</source>
+        <translation>ein Plan ist eine Zuordnung: name, samples, factors oder cells, …</translation>
+    </message>
+    <message>
+        <source>%1: unknown key &apos;%2&apos; (known: %3)</source>
+        <translation>%1: unbekannter Schlüssel &apos;%2&apos; (bekannt: %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 takes a whole number from %3 to %4</source>
+        <translation>%1: %2 nimmt eine ganze Zahl von %3 bis %4</translation>
+    </message>
+    <message>
+        <source>%1: timeout_s takes seconds above 0</source>
+        <translation>%1: timeout_s nimmt Sekunden über 0</translation>
+    </message>
+    <message>
+        <source>%1: servers given are {broker: URL, ros_master: URI}</source>
+        <translation>%1: angegebene Server sind {broker: URL, ros_master: URI}</translation>
+    </message>
+    <message>
+        <source>%1: servers is embedded or {broker: URL, ros_master: URI}</source>
+        <translation>%1: servers ist embedded oder {broker: URL, ros_master: URI}</translation>
+    </message>
+    <message>
+        <source>%1: pipeline is paper or a pipeline file</source>
+        <translation>%1: pipeline ist paper oder eine Pipeline-Datei</translation>
+    </message>
+    <message>
+        <source>%1: bridges names implementations: {NAME: {command: …}}</source>
+        <translation>%1: bridges benennt Implementierungen: {NAME: {command: …}}</translation>
+    </message>
+    <message>
+        <source>%1: links names profiles: {NAME: {delay_ms: …}}</source>
+        <translation>%1: links benennt Profile: {NAME: {delay_ms: …}}</translation>
+    </message>
+    <message>
+        <source>%1: throughput is {rates_hz: [10, 20, …], seconds: N}</source>
+        <translation>%1: throughput ist {rates_hz: [10, 20, …], seconds: N}</translation>
+    </message>
+    <message>
+        <source>%1: a rate above 0 and up to 10000 Hz</source>
+        <translation>%1: eine Rate über 0 bis 10000 Hz</translation>
+    </message>
+    <message>
+        <source>%1: seconds per rate from 1 to 3600</source>
+        <translation>%1: Sekunden je Rate von 1 bis 3600</translation>
+    </message>
+    <message>
+        <source>%1: defaults is a mapping of factor: level</source>
+        <translation>%1: defaults ist eine Zuordnung Faktor: Stufe</translation>
+    </message>
+    <message>
+        <source>%1: give factors (crossed) or cells (listed), not both</source>
+        <translation>%1: factors (gekreuzt) oder cells (aufgezählt) angeben, nicht beides</translation>
+    </message>
+    <message>
+        <source>%1: factors is a mapping of factor: [levels]</source>
+        <translation>%1: factors ist eine Zuordnung Faktor: [Stufen]</translation>
+    </message>
+    <message>
+        <source>%1: unknown factor &apos;%2&apos; (known: %3)</source>
+        <translation>%1: unbekannter Faktor &apos;%2&apos; (bekannt: %3)</translation>
+    </message>
+    <message>
+        <source>%1: factor &apos;%2&apos; twice</source>
+        <translation>%1: Faktor &apos;%2&apos; doppelt</translation>
+    </message>
+    <message>
+        <source>%1: %2 needs a list of levels</source>
+        <translation>%1: %2 braucht eine Liste von Stufen</translation>
+    </message>
+    <message>
+        <source>%1: more than %2 cells</source>
+        <translation>%1: mehr als %2 Zellen</translation>
+    </message>
+    <message>
+        <source>%1: cells is a list of {factor: level, …}</source>
+        <translation>%1: cells ist eine Liste von {Faktor: Stufe, …}</translation>
+    </message>
+    <message>
+        <source>%1: a cell is {factor: level, …}</source>
+        <translation>%1: eine Zelle ist {Faktor: Stufe, …}</translation>
+    </message>
+    <message>
+        <source>two cells are the same: %1</source>
+        <translation>zwei Zellen sind gleich: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ExperimentReport</name>
+    <message>
+        <source>its pipeline differs from the first cell&apos;s</source>
+        <translation>seine Pipeline weicht von der der ersten Zelle ab</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a statistic (mean, median, std, p99)</source>
+        <translation>&apos;%1&apos; ist keine Kennzahl (mean, median, std, p99)</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>std</source>
+        <translation>Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>p99</source>
+        <translation>p99</translation>
+    </message>
+    <message>
+        <source>Cell %1 (%2) failed: %3</source>
+        <translation>Zelle %1 (%2) fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>Cell %1 (%2) is not done (%3): --resume finishes it.</source>
+        <translation>Zelle %1 (%2) ist nicht fertig (%3): --resume vollendet sie.</translation>
+    </message>
+    <message>
+        <source>Cell %1 is left out: %2</source>
+        <translation>Zelle %1 bleibt unberücksichtigt: %2</translation>
+    </message>
+    <message>
+        <source>%1: the total mean is lowest at %2 (%3 ms) and highest at %4 (%5 ms), %6 ms more (%7 %)</source>
+        <translation>%1: der mittlere Gesamtwert ist bei %2 am niedrigsten (%3 ms) und bei %4 am höchsten (%5 ms), %6 ms mehr (%7 %)</translation>
+    </message>
+    <message>
+        <source>; most of it in %1 (%2 ms).</source>
+        <translation>; das meiste davon in %1 (%2 ms).</translation>
+    </message>
+    <message>
+        <source>QoS 1 and 2 wait for the broker&apos;s acknowledgements (PUBACK; PUBREC, PUBREL, PUBCOMP), and a client without TCP_NODELAY (Paho) can wait for a delayed ACK of up to 40 ms on each.</source>
+        <translation>QoS 1 und 2 warten auf die Bestätigungen des Brokers (PUBACK; PUBREC, PUBREL, PUBCOMP), und ein Client ohne TCP_NODELAY (Paho) kann auf jede bis zu 40 ms auf ein verzögertes ACK warten.</translation>
+    </message>
+    <message>
+        <source>Announcing the type before every message (mqtt_client 2.2.1) puts a small publish in front of each message; without TCP_NODELAY the message then waits for the delayed ACK of the first, up to 40 ms.</source>
+        <translation>Die Typankündigung vor jeder Nachricht (mqtt_client 2.2.1) stellt jeder Nachricht eine kleine Veröffentlichung voran; ohne TCP_NODELAY wartet die Nachricht dann bis zu 40 ms auf das verzögerte ACK der ersten.</translation>
+    </message>
+    <message>
+        <source>The smallest payload (%1) is slower through the interfaces than %2 (%3 against %4 ms): small messages wait for delayed ACKs where Nagle&apos;s algorithm holds them.</source>
+        <translation>Die kleinste Nutzlast (%1) ist in den Schnittstellen langsamer als %2 (%3 gegenüber %4 ms): kleine Nachrichten warten auf verzögerte ACKs, wo Nagles Algorithmus sie zurückhält.</translation>
+    </message>
+    <message>
+        <source>Experiment report: %1</source>
+        <translation>Experimentbericht: %1</translation>
+    </message>
+    <message>
+        <source>%1 cells: %2 complete, %3 failed; %4 samples a cell after %5 of warm-up. Latencies in ms; a group&apos;s value is the sum of its stages in each sample, a level pools the samples of its cells.</source>
+        <translation>%1 Zellen: %2 vollständig, %3 fehlgeschlagen; %4 Proben je Zelle nach %5 zum Einschwingen. Latenzen in ms; der Wert einer Gruppe ist die Summe ihrer Stufen in jeder Probe, eine Stufe fasst die Proben ihrer Zellen zusammen.</translation>
+    </message>
+    <message>
+        <source>stage group</source>
+        <translation>Stufengruppe</translation>
+    </message>
+    <message>
+        <source>no complete cell</source>
+        <translation>keine vollständige Zelle</translation>
+    </message>
+    <message>
+        <source>Cells: %1.</source>
+        <translation>Zellen: %1.</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Zellen</translation>
+    </message>
+    <message>
+        <source>cell</source>
+        <translation>Zelle</translation>
+    </message>
+    <message>
+        <source>levels</source>
+        <translation>Stufen</translation>
+    </message>
+    <message>
+        <source>state</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>Proben</translation>
+    </message>
+    <message>
+        <source>total mean</source>
+        <translation>Gesamt (Mittel)</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <source>Findings</source>
+        <translation>Befunde</translation>
+    </message>
+</context>
+<context>
+    <name>ExperimentRunner</name>
+    <message>
+        <source>openssl %1 failed: %2</source>
+        <translation>openssl %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 lässt sich nicht schreiben</translation>
+    </message>
+    <message>
+        <source>cannot make %1</source>
+        <translation>%1 lässt sich nicht anlegen</translation>
+    </message>
+    <message>
+        <source>%1 holds an experiment already: --resume goes on with it, or give another folder</source>
+        <translation>%1 enthält schon ein Experiment: --resume macht damit weiter, oder einen anderen Ordner angeben</translation>
+    </message>
+    <message>
+        <source>%1 was made by another plan (its %2 differs): resume it with that plan, or give another folder</source>
+        <translation>%1 stammt von einem anderen Plan (seine %2 weicht ab): mit jenem Plan fortsetzen oder einen anderen Ordner angeben</translation>
+    </message>
+    <message>
+        <source>cut off; done again</source>
+        <translation>abgebrochen; wird wiederholt</translation>
+    </message>
+    <message>
+        <source>%1 of %2 samples after %3 s</source>
+        <translation>%1 von %2 Proben nach %3 s</translation>
+    </message>
+    <message>
+        <source>Experiment %1, cell %2: %3</source>
+        <translation>Experiment %1, Zelle %2: %3</translation>
+    </message>
+    <message>
+        <source>stopped; --resume does it again</source>
+        <translation>angehalten; --resume wiederholt sie</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>not an experiment&apos;s state (%1)</source>
+        <translation>kein Zustand eines Experiments (%1)</translation>
+    </message>
+</context>
+<context>
     <name>Gui</name>
     <message>
         <source>Render the main window to PNG and exit.</source>
@@ -1645,6 +2054,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Open on this page: discover, map, measure, reports or links.</source>
         <translation>Auf dieser Seite öffnen: discover, map, measure, reports oder links.</translation>
+    </message>
+    <message>
+        <source>run an experiment matrix unattended, a run per cell</source>
+        <translation>eine Experimentmatrix unbeaufsichtigt ausführen, ein Messlauf je Zelle</translation>
     </message>
 </context>
 <context>
@@ -1944,6 +2357,13 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>--rate must be above 0 and at most 1000000 Hz</source>
         <translation>--rate muss über 0 und höchstens 1000000 Hz sein</translation>
+    </message>
+</context>
+<context>
+    <name>LinkRelay</name>
+    <message>
+        <source>the link relay cannot listen: %1</source>
+        <translation>das Verbindungsrelais kann nicht lauschen: %1</translation>
     </message>
 </context>
 <context>
@@ -4178,10 +4598,6 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
         <translation>Titel des Berichts.</translation>
     </message>
     <message>
-        <source>Runs, suite timestamp CSV files or bags.</source>
-        <translation>Läufe, Zeitstempel-CSV-Dateien der Suite oder Bags.</translation>
-    </message>
-    <message>
         <source>unknown format %1 (known: json, csv, md, tex, html, pdf)</source>
         <translation>unbekanntes Format %1 (bekannt: json, csv, md, tex, html, pdf)</translation>
     </message>
@@ -4210,10 +4626,22 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
         <translation>%1: keine vollständige Probe</translation>
     </message>
     <message>
-        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite&apos;s timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper&apos;s Table I and Fig. 5), or joined into one run with --join.
+        <source>An experiment&apos;s tables: mean (default), median, std, p99, or several (mean,p99).</source>
+        <translation>Die Tabellen eines Experiments: mean (Vorgabe), median, std, p99 oder mehrere (mean,p99).</translation>
+    </message>
+    <message>
+        <source>Reports the latency statistics of measured runs: every stage, the total and, with hosts in the pipeline, the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope record), the benchmarking suite&apos;s timestamp CSV or a ROS bag with TimeStamped topics; several inputs are compared side by side (the paper&apos;s Table I and Fig. 5), or joined into one run with --join. An experiment&apos;s folder (bridgescope experiment) gives a table per factor, its levels as columns and the stage groups as rows.
 Exit status: 0 report written, 1 a run with a pipeline has no complete sample, 2 bad options or input, 130 cancelled.</source>
-        <translation>Berichtet die Latenzstatistik gemessener Läufe: jede Stufe, die Gesamtlatenz und, wenn die Pipeline Rechner angibt, die Umlaufzeit der Kommunikation, deren Hälfte für eine Richtung und den Uhrenversatz. INPUT ist ein Lauf (bridgescope record), die Zeitstempel-CSV der Benchmarking-Suite oder ein ROS-Bag mit TimeStamped-Topics; mehrere Eingaben werden nebeneinander verglichen (Tabelle I und Abb. 5 des Papers) oder mit --join zu einem Lauf zusammengeführt.
+        <translation>Berichtet die Latenzstatistik gemessener Läufe: jede Stufe, die Gesamtlatenz und, wenn die Pipeline Rechner angibt, die Umlaufzeit der Kommunikation, deren Hälfte für eine Richtung und den Uhrenversatz. INPUT ist ein Lauf (bridgescope record), die Zeitstempel-CSV der Benchmarking-Suite oder ein ROS-Bag mit TimeStamped-Topics; mehrere Eingaben werden nebeneinander verglichen (Tabelle I und Abb. 5 des Papers) oder mit --join zu einem Lauf zusammengeführt. Der Ordner eines Experiments (bridgescope experiment) ergibt eine Tabelle je Faktor, seine Stufen als Spalten und die Stufengruppen als Zeilen.
 Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständige Probe, 2 falsche Optionen oder Eingabe, 130 abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Runs, suite timestamp CSV files or bags; or an experiment&apos;s folder.</source>
+        <translation>Läufe, Zeitstempel-CSV-Dateien der Suite oder Bags; oder der Ordner eines Experiments.</translation>
+    </message>
+    <message>
+        <source>an experiment&apos;s report is md, tex, html, csv or json (pdf is not written yet)</source>
+        <translation>der Bericht eines Experiments ist md, tex, html, csv oder json (pdf wird noch nicht geschrieben)</translation>
     </message>
 </context>
 <context>

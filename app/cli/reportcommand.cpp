@@ -3,6 +3,7 @@
 
 #include "app/cli/clioutput.h"
 #include "base/atomicfile.h"
+#include "experiment/experimentreport.h"
 #include "report/report.h"
 #include "report/reportformats.h"
 
@@ -35,6 +36,7 @@ struct ReportRequest
     ReportFormats::Format format = ReportFormats::Format::Json;
     bool perSample = false;
     QString output; ///< empty: stdout
+    QString statistics; ///< of an experiment's tables: "mean,median,std,p99"
 };
 
 /// The command line of `bridgescope report`.
@@ -58,10 +60,14 @@ struct ReportArguments
         u"skip-bad-rows"_s,
         ReportText::tr("Skip CSV rows that cannot be read (each is reported) instead of failing.")};
     const QCommandLineOption title {u"title"_s, ReportText::tr("Title of the report."), u"TEXT"_s};
+    const QCommandLineOption statistics {
+        u"stat"_s,
+        ReportText::tr("An experiment's tables: mean (default), median, std, p99, or several (mean,p99)."),
+        u"LIST"_s, u"mean"_s};
 
     QList<QCommandLineOption> all() const
     {
-        return {pipeline, format, window, output, join, perSample, skip, title};
+        return {pipeline, format, window, output, join, perSample, skip, title, statistics};
     }
 };
 
@@ -75,14 +81,17 @@ int parseReport(const QStringList& arguments, ReportRequest* request)
         "the communication round trip, its one-way half and the clock offset. INPUT is a run (bridgescope "
         "record), the benchmarking suite's timestamp CSV or a ROS bag with TimeStamped topics; several "
         "inputs "
-        "are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join.\n"
+        "are compared side by side (the paper's Table I and Fig. 5), or joined into one run with --join. "
+        "An experiment's folder (bridgescope experiment) gives a table per factor, its levels as columns "
+        "and the stage groups as rows.\n"
         "Exit status: 0 report written, 1 a run with a pipeline has no complete sample, 2 bad options or "
         "input, 130 "
         "cancelled.");
     const ReportArguments a;
     parser.addOptions(a.all());
-    parser.addPositionalArgument(u"INPUT"_s, ReportText::tr("Runs, suite timestamp CSV files or bags."),
-                                 u"INPUT..."_s);
+    parser.addPositionalArgument(
+        u"INPUT"_s, ReportText::tr("Runs, suite timestamp CSV files or bags; or an experiment's folder."),
+        u"INPUT..."_s);
     QStringList args = arguments;
     args.replace(0, u"bridgescope report"_s);
     const int parsed = CliOutput::parseCommand(parser, args, description);
@@ -105,6 +114,7 @@ int parseReport(const QStringList& arguments, ReportRequest* request)
     options.title = parser.value(a.title);
     request->perSample = parser.isSet(a.perSample);
     request->output = parser.value(a.output);
+    request->statistics = parser.value(a.statistics);
     request->inputs = parser.positionalArguments();
     if (request->inputs.isEmpty()) {
         err(ReportText::tr("no input files; see bridgescope report --help"));
@@ -156,6 +166,51 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
     return std::move(*report);
 }
 
+/// Writes `text` to the request's file or stdout.
+int writeText(const ReportRequest& request, const QByteArray& text)
+{
+    QString why;
+    if (request.output.isEmpty()) {
+        CliOutput::writeStdout(text); // a failed write is reported by finish() below
+    } else if (!AtomicFile::write(request.output, text, &why, false)) {
+        err(why);
+        return ExitUsage;
+    }
+    return CliOutput::finish(ExitOk);
+}
+
+/// The tables of an experiment's folder.
+int experimentReport(const ReportRequest& request)
+{
+    QString why;
+    const std::optional<QList<ExperimentReport::Statistic>> statistics
+        = ExperimentReport::parseStatistics(request.statistics, &why);
+    if (!statistics) {
+        err(why);
+        return ExitUsage;
+    }
+    const std::optional<ExperimentReport> report = ExperimentReport::load(request.inputs.first(), &why);
+    if (!report) {
+        err(why);
+        return ExitUsage;
+    }
+    switch (request.format) {
+    case ReportFormats::Format::Markdown:
+        return writeText(request, report->toMarkdown(*statistics).toUtf8());
+    case ReportFormats::Format::Latex:
+        return writeText(request, report->toTex(*statistics).toUtf8());
+    case ReportFormats::Format::Html:
+        return writeText(request, report->toHtml(*statistics).toUtf8());
+    case ReportFormats::Format::Csv:
+        return writeText(request, report->toCsv().toUtf8());
+    case ReportFormats::Format::Json:
+        return writeText(request, report->toJson());
+    default:
+        err(ReportText::tr("an experiment's report is md, tex, html, csv or json (pdf is not written yet)"));
+        return ExitUsage;
+    }
+}
+
 /// Renders the report and writes it to the file or stdout; nothing is written when cancelled.
 int writeReport(const ReportRequest& request, const Report& report)
 {
@@ -191,6 +246,8 @@ int runReportCommand(const QStringList& arguments)
     ReportRequest request;
     if (const int status = parseReport(arguments, &request); status >= 0)
         return status;
+    if (request.inputs.size() == 1 && ExperimentReport::isExperiment(request.inputs.first()))
+        return experimentReport(request);
     std::variant<Report, int> built = buildReport(request);
     if (const int* status = std::get_if<int>(&built))
         return *status;

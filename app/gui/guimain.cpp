@@ -68,6 +68,7 @@ QString bridgescopeUsage()
         {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},
         {u"watch CONFIG.yaml... [--metrics H:P]"_s,
          Gui::tr("watch every bridged link for hours: events, metrics")},
+        {u"experiment PLAN.yaml -o DIR"_s, Gui::tr("run an experiment matrix unattended, a run per cell")},
     };
     QString text = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]")
         + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+#include "experimentcommand.h"
+
+#include "app/cli/clioutput.h"
+#include "base/yamllimits.h"
+#include "experiment/experimentrunner.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+using CliOutput::ExitFailed;
+using CliOutput::ExitOk;
+using CliOutput::ExitUsage;
+using CliOutput::out;
+
+namespace {
+class Experiment
+{
+    Q_DECLARE_TR_FUNCTIONS(ExperimentCommand)
+};
+
+/// What the command line asks for.
+struct ExperimentRequest
+{
+    ExperimentPlan plan;
+    QByteArray planText;
+    QString directory;
+    bool resume = false;
+    bool dryRun = false;
+};
+
+QString duration(double seconds)
+{
+    const qint64 s = qint64(seconds + 0.5);
+    if (s < 120)
+        return Experiment::tr("%1 s").arg(s);
+    if (s < 7200)
+        return Experiment::tr("%1 min").arg((s + 30) / 60);
+    return Experiment::tr("%1 h %2 min").arg(s / 3600).arg(s % 3600 / 60);
+}
+
+int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption output(
+        {u"o"_s, u"output"_s}, Experiment::tr("The experiment's folder: its plan, state and a run per cell."),
+        u"DIR"_s);
+    const QCommandLineOption resume(
+        u"resume"_s,
+        Experiment::tr("Go on with DIR: skip the complete cells, redo the one that was "
+                       "cut off and those that failed."));
+    const QCommandLineOption dryRun(
+        u"dry-run"_s, Experiment::tr("List the cells and the time they will take; run nothing."));
+    parser.addOptions({output, resume, dryRun});
+    parser.addPositionalArgument(u"PLAN"_s, Experiment::tr("The experiment plan (docs/formats.md)."),
+                                 u"PLAN.yaml"_s);
+    QStringList args = arguments;
+    args.replace(0, u"bridgescope experiment"_s);
+    const int parsed = CliOutput::parseCommand(
+        parser, args,
+        Experiment::tr(
+            "Runs an experiment plan unattended: every cell of its matrix (payload, rate, QoS, TLS, "
+            "announcement, queue size, bridge implementation, link profile) on its own lab, "
+            "recorded as a run in DIR. Progress on standard error, one JSON line per cell "
+            "started and finished on standard output; Ctrl+C stops after cleaning up, and "
+            "--resume goes on. bridgescope report DIR makes the tables.\n"
+            "Exit status: 0 every cell complete, 1 a cell failed, 2 bad options or plan, 130 "
+            "stopped."));
+    if (parsed >= 0)
+        return parsed;
+    if (parser.positionalArguments().size() != 1) {
+        err(Experiment::tr("experiment takes one plan; see bridgescope experiment --help"));
+        return ExitUsage;
+    }
+    request->dryRun = parser.isSet(dryRun);
+    request->resume = parser.isSet(resume);
+    request->directory = parser.value(output);
+    if (request->directory.isEmpty() && !request->dryRun) {
+        err(Experiment::tr("experiment needs -o DIR, the folder its runs go to"));
+        return ExitUsage;
+    }
+    const QString path = parser.positionalArguments().first();
+    QString why;
+    const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
+    if (!bytes) {
+        err(why);
+        return ExitUsage;
+    }
+    std::optional<ExperimentPlan> plan
+        = ExperimentPlan::fromYaml(*bytes, QFileInfo(path).absolutePath(), &why);
+    if (!plan) {
+        err(path + u": "_s + why);
+        return ExitUsage;
+    }
+    if (plan->name.isEmpty())
+        plan->name = QFileInfo(path).completeBaseName();
+    request->plan = *plan;
+    request->planText = *bytes;
+    return -1;
+}
+
+int dryRun(const ExperimentPlan& plan)
+{
+    double total = 0;
+    out(Experiment::tr("%1: %n cell(s), %2 samples each after %3 of warm-up", nullptr, int(plan.cells.size()))
+            .arg(plan.name)
+            .arg(plan.samples)
+            .arg(plan.warmup));
+    for (const ExperimentCell& c : plan.cells) {
+        const double s = plan.expectedSeconds(c);
+        total += s;
+        out(u"  %1  %2  %3"_s.arg(c.id().leftJustified(40), duration(s).rightJustified(8), c.label()));
+    }
+    out(Experiment::tr("about %1 in all").arg(duration(total)));
+    return ExitOk;
+}
+
+void printCell(const ExperimentRunner& runner, int index, const QString& event)
+{
+    const ExperimentCell& cell = runner.plan().cells[index];
+    const CellStatus& s = runner.statuses()[index];
+    QJsonArray levels;
+    for (const auto& [factor, level] : cell.levels)
+        levels.append(QJsonArray {factor, level});
+    QJsonObject o {{u"event"_s, event},
+                   {u"index"_s, index},
+                   {u"cell"_s, cell.id()},
+                   {u"levels"_s, levels},
+                   {u"state"_s, CellStatus::stateName(s.state)}};
+    if (event == u"finished"_s) {
+        o.insert(u"samples"_s, double(s.samples));
+        o.insert(u"run"_s, s.run);
+        if (!s.reason.isEmpty())
+            o.insert(u"reason"_s, s.reason);
+    }
+    out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
+}
+
+int runExperiment(const ExperimentRequest& request)
+{
+    ExperimentRunner::Options options;
+    options.resume = request.resume;
+    ExperimentRunner runner(request.plan, request.planText, request.directory, options);
+    QString why;
+    if (!runner.prepare(&why)) {
+        err(why);
+        return ExitUsage;
+    }
+    const int cells = int(request.plan.cells.size());
+    QObject::connect(&runner, &ExperimentRunner::cellStarted, [&](int i) {
+        printCell(runner, i, u"started"_s);
+        err(Experiment::tr("cell %1/%2: %3").arg(i + 1).arg(cells).arg(request.plan.cells[i].label()));
+    });
+    QObject::connect(&runner, &ExperimentRunner::cellFinished, [&](int i) {
+        printCell(runner, i, u"finished"_s);
+        const CellStatus& s = runner.statuses()[i];
+        if (s.state == CellStatus::Failed)
+            err(Experiment::tr("cell %1/%2 failed: %3").arg(i + 1).arg(cells).arg(s.reason));
+    });
+    std::optional<int> done;
+    QObject::connect(&runner, &ExperimentRunner::finished,
+                     [&](bool all) { done = all ? ExitOk : ExitFailed; });
+    runner.start();
+    const int status = CliOutput::runUntil([&](qint64) { return done; },
+                                           [&](qint64) {
+                                               const int i = runner.runningCell();
+                                               if (i < 0)
+                                                   return;
+                                               err(Experiment::tr("cell %1/%2: %3/%4 samples, about %5 left")
+                                                       .arg(i + 1)
+                                                       .arg(cells)
+                                                       .arg(runner.runningSamples())
+                                                       .arg(request.plan.samples)
+                                                       .arg(duration(runner.remainingSeconds())));
+                                           });
+    if (!done) { // Ctrl+C or SIGTERM
+        runner.stop();
+        err(Experiment::tr("stopped; bridgescope experiment --resume goes on"));
+        return CliOutput::ExitCancelled;
+    }
+    int complete = 0;
+    for (const CellStatus& s : runner.statuses())
+        complete += s.state == CellStatus::Complete;
+    err(Experiment::tr("%1 of %2 cells complete in %3").arg(complete).arg(cells).arg(request.directory));
+    return status;
+}
+} // namespace
+
+int runExperimentCommand(const QStringList& arguments)
+{
+    ExperimentRequest request;
+    if (const int status = parseExperiment(arguments, &request); status >= 0)
+        return status;
+    if (request.dryRun)
+        return dryRun(request.plan);
+    return runExperiment(request);
+}

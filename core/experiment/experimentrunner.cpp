@@ -1,0 +1,447 @@
+// SPDX-License-Identifier: MIT
+#include "experimentrunner.h"
+
+#include "base/atomicfile.h"
+#include "base/logging.h"
+#include "demo/demolab.h"
+#include "experiment/linkrelay.h"
+#include "latency/latencyengine.h"
+#include "latency/pipeline.h"
+#include "mqtt/mqttprofile.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTimer>
+#include <QUrl>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr int kPollMs = 100;
+constexpr qsizetype kMaxStateBytes = 16 * 1024 * 1024;
+
+/// A CA and a server certificate for 127.0.0.1, made with openssl in `dir` (EC keys: quick).
+bool makeTlsFiles(const QString& dir, QString* error)
+{
+    QDir().mkpath(dir);
+    const auto run = [&](const QStringList& args) {
+        QProcess p;
+        p.setWorkingDirectory(dir);
+        p.setProcessChannelMode(QProcess::MergedChannels);
+        p.start(u"openssl"_s, args);
+        if (!p.waitForFinished(30000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
+            *error = ExperimentRunner::tr("openssl %1 failed: %2")
+                         .arg(args.first(),
+                              p.errorString() + u' ' + QString::fromLocal8Bit(p.readAll()).right(300));
+            return false;
+        }
+        return true;
+    };
+    QFile ext(QDir(dir).filePath(u"server.ext"_s));
+    if (!ext.open(QIODevice::WriteOnly) || ext.write("subjectAltName=IP:127.0.0.1,DNS:localhost\n") < 0) {
+        *error = ExperimentRunner::tr("cannot write %1").arg(ext.fileName());
+        return false;
+    }
+    ext.close();
+    const QStringList ec {u"-newkey"_s, u"ec"_s, u"-pkeyopt"_s, u"ec_paramgen_curve:prime256v1"_s,
+                          u"-nodes"_s};
+    return run(QStringList {u"req"_s, u"-x509"_s} + ec
+               + QStringList {u"-keyout"_s, u"ca.key"_s, u"-out"_s, u"ca.crt"_s, u"-days"_s, u"3650"_s,
+                              u"-subj"_s, u"/CN=Bridgescope experiment CA"_s})
+        && run(QStringList {u"req"_s} + ec
+               + QStringList {u"-keyout"_s, u"server.key"_s, u"-out"_s, u"server.csr"_s, u"-subj"_s,
+                              u"/CN=127.0.0.1"_s})
+        && run({u"x509"_s, u"-req"_s, u"-in"_s, u"server.csr"_s, u"-CA"_s, u"ca.crt"_s, u"-CAkey"_s,
+                u"ca.key"_s, u"-CAcreateserial"_s, u"-out"_s, u"server.crt"_s, u"-days"_s, u"3650"_s,
+                u"-extfile"_s, u"server.ext"_s});
+}
+
+void removeRunFile(const QString& path)
+{
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"})
+        QFile::remove(path + QLatin1String(suffix));
+}
+} // namespace
+
+QString CellStatus::stateName(State s)
+{
+    switch (s) {
+    case Pending:
+        return u"pending"_s;
+    case Running:
+        return u"running"_s;
+    case Complete:
+        return u"complete"_s;
+    case Failed:
+        return u"failed"_s;
+    }
+    return {};
+}
+
+/// What a running cell holds; destroyed in reverse: the measurement, the live session, the relays,
+/// then the lab (which stops its processes).
+struct ExperimentRunner::Cell
+{
+    DemoLab lab;
+    std::unique_ptr<LinkRelay> vehicleRelay;
+    std::unique_ptr<LinkRelay> cloudRelay;
+    std::unique_ptr<LiveSession> live;
+    std::unique_ptr<MeasureSession> measure;
+    QTimer timer;
+    QElapsedTimer clock;
+    bool recording = false;
+    QString runPath;
+};
+
+ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QString directory,
+                                   Options options, QObject* parent)
+    : QObject(parent)
+    , m_plan(std::move(plan))
+    , m_planText(std::move(planText))
+    , m_dir(std::move(directory))
+    , m_options(std::move(options))
+{
+    m_statuses.resize(m_plan.cells.size());
+    for (qsizetype i = 0; i < m_plan.cells.size(); ++i)
+        m_statuses[i].run = u"runs/%1.bsrun"_s.arg(m_plan.cells[i].id());
+}
+
+ExperimentRunner::~ExperimentRunner()
+{
+    if (m_cell)
+        stop();
+}
+
+bool ExperimentRunner::prepare(QString* error)
+{
+    const auto fail = [error](const QString& why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    const QDir dir(m_dir);
+    if (!QDir().mkpath(dir.filePath(u"runs"_s)))
+        return fail(tr("cannot make %1").arg(dir.filePath(u"runs"_s)));
+    const QString stateFile = dir.filePath(stateFileName());
+    if (QFile::exists(stateFile)) {
+        if (!m_options.resume)
+            return fail(tr("%1 holds an experiment already: --resume goes on with it, or give another folder")
+                            .arg(m_dir));
+        QFile copy(dir.filePath(planFileName()));
+        if (!copy.open(QIODevice::ReadOnly) || copy.read(kMaxStateBytes) != m_planText)
+            return fail(tr("%1 was made by another plan (its %2 differs): resume it with that plan, or give "
+                           "another folder")
+                            .arg(m_dir, planFileName()));
+        QString why;
+        const std::optional<QList<CellStatus>> state = readState(m_dir, m_plan, &why);
+        if (!state)
+            return fail(why);
+        m_statuses = *state;
+        for (CellStatus& s : m_statuses) {
+            // A cell that was running when the process died, or whose run is gone, is done again.
+            const bool complete = s.state == CellStatus::Complete && QFile::exists(dir.filePath(s.run));
+            if (!complete && s.state != CellStatus::Failed) {
+                if (s.state == CellStatus::Running)
+                    s.reason = tr("cut off; done again");
+                s.state = CellStatus::Pending;
+            }
+        }
+    } else {
+        QString why;
+        if (!AtomicFile::write(dir.filePath(planFileName()), m_planText, &why, false))
+            return fail(why);
+    }
+    const bool tls = std::any_of(m_plan.cells.cbegin(), m_plan.cells.cend(),
+                                 [](const ExperimentCell& c) { return c.settings.tls; });
+    if (tls && !QFile::exists(dir.filePath(u"tls/server.crt"_s))) {
+        QString why;
+        if (!makeTlsFiles(dir.filePath(u"tls"_s), &why))
+            return fail(why);
+    }
+    return writeState(error);
+}
+
+void ExperimentRunner::start()
+{
+    m_stopping = false;
+    m_current = -1;
+    QTimer::singleShot(0, this, &ExperimentRunner::nextCell);
+}
+
+void ExperimentRunner::nextCell()
+{
+    if (m_stopping)
+        return;
+    // Each cell once per start: complete ones are skipped, failed ones are tried again on resume.
+    for (int i = m_current + 1; i < int(m_plan.cells.size()); ++i) {
+        if (m_statuses[i].state != CellStatus::Complete) {
+            beginCell(i);
+            return;
+        }
+    }
+    m_current = -1;
+    const bool all = std::all_of(m_statuses.cbegin(), m_statuses.cend(),
+                                 [](const CellStatus& s) { return s.state == CellStatus::Complete; });
+    emit finished(all);
+}
+
+void ExperimentRunner::beginCell(int index)
+{
+    m_current = index;
+    const ExperimentCell& cell = m_plan.cells[index];
+    CellStatus& status = m_statuses[index];
+    status.state = CellStatus::Running;
+    status.reason.clear();
+    status.samples = 0;
+    status.started = QDateTime::currentDateTimeUtc();
+    status.finished = {};
+    writeState();
+    emit cellStarted(index);
+    qCDebug(lcDemo).noquote() << "cell" << cell.id() << "starts";
+
+    m_cell = std::make_unique<Cell>();
+    Cell& c = *m_cell;
+    c.runPath = QDir(m_dir).filePath(status.run);
+    removeRunFile(c.runPath); // what a cut-off attempt left
+    c.clock.start();
+    const CellSettings& s = cell.settings;
+    DemoLab::Options o;
+    o.program = m_options.program;
+    o.payloadBytes = s.payloadBytes;
+    o.rateHz = s.rateHz;
+    o.detectionMs = s.detectionMs;
+    o.cloudOffsetMs = 0; // one machine, one clock: the crossing stages are the one-way latencies
+    o.brokerUrl = m_plan.brokerUrl;
+    o.rosMasterUri = m_plan.rosMasterUri;
+    o.qos = s.qos;
+    o.queueSize = s.queueSize;
+    o.announceEveryMessage = s.announceEveryMessage;
+    o.tlsDirectory = s.tls ? QDir(m_dir).filePath(u"tls"_s) : QString();
+    o.bridgeCommand = s.bridge.command;
+    QString why;
+    if (!c.lab.startServers(o, &why)) {
+        endCell(CellStatus::Failed, why);
+        return;
+    }
+    if (!s.link.isNone()) {
+        const QUrl broker(c.lab.brokerUrl());
+        c.vehicleRelay = LinkRelay::start(s.link, broker.host(), quint16(broker.port(1883)), &why,
+                                          2u * quint32(index) + 1);
+        c.cloudRelay = c.vehicleRelay ? LinkRelay::start(s.link, broker.host(), quint16(broker.port(1883)),
+                                                         &why, 2u * quint32(index) + 2)
+                                      : nullptr;
+        if (!c.cloudRelay) {
+            endCell(CellStatus::Failed, why);
+            return;
+        }
+        c.lab.setBridgePort(u"vehicle"_s, c.vehicleRelay->port());
+        c.lab.setBridgePort(u"cloud"_s, c.cloudRelay->port());
+    }
+    if (!c.lab.startComponents(&why)) {
+        endCell(CellStatus::Failed, why);
+        return;
+    }
+    const std::optional<Pipeline> pipeline
+        = Pipeline::load(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath, &why);
+    if (!pipeline) {
+        endCell(CellStatus::Failed, why);
+        return;
+    }
+    c.live = std::make_unique<LiveSession>();
+    c.live->setRosMasterUri(c.lab.rosMasterUri());
+    MqttProfile profile = MqttProfile::fromUrl(c.lab.brokerUrl());
+    profile.caFile = c.lab.caFile();
+    c.live->connectBroker(profile);
+    c.measure = std::make_unique<MeasureSession>(c.live.get());
+    c.measure->setPipeline(*pipeline);
+    connect(&c.timer, &QTimer::timeout, this, &ExperimentRunner::poll);
+    c.timer.start(kPollMs);
+}
+
+void ExperimentRunner::poll()
+{
+    Cell& c = *m_cell;
+    const ExperimentCell& cell = m_plan.cells[m_current];
+    const LatencyEngine& engine = c.measure->engine();
+    if (!c.lab.isRunning()) {
+        endCell(CellStatus::Failed, c.lab.failure());
+        return;
+    }
+    if (c.clock.elapsed() > qint64(m_plan.timeoutSeconds(cell) * 1000)) {
+        endCell(CellStatus::Failed,
+                tr("%1 of %2 samples after %3 s")
+                    .arg(c.recording ? engine.samples() : 0)
+                    .arg(m_plan.samples)
+                    .arg(qRound(m_plan.timeoutSeconds(cell))));
+        return;
+    }
+    if (!c.recording) {
+        emit progress(m_current, engine.samples(), true);
+        if (engine.samples() < m_plan.warmup)
+            return;
+        RunInfo info;
+        info.name = cell.label();
+        info.notes = tr("Experiment %1, cell %2: %3").arg(m_plan.name, cell.id(), cell.label());
+        info.experiment = m_plan.name;
+        info.cell = cell.id();
+        info.factors = cell.levels;
+        info.bridgeConfigPath = c.lab.vehicleConfigPath();
+        QFile config(c.lab.vehicleConfigPath());
+        if (config.open(QIODevice::ReadOnly))
+            info.bridgeConfig = config.readAll();
+        QString why;
+        if (!c.measure->startRecording(c.runPath, info, &why)) {
+            endCell(CellStatus::Failed, why);
+            return;
+        }
+        c.recording = true;
+        return;
+    }
+    m_statuses[m_current].samples = engine.samples();
+    emit progress(m_current, engine.samples(), false);
+    if (engine.samples() >= m_plan.samples)
+        endCell(CellStatus::Complete, QString());
+}
+
+void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
+{
+    Cell& c = *m_cell;
+    c.timer.stop();
+    CellStatus& status = m_statuses[m_current];
+    QString why;
+    if (c.recording) {
+        c.live->drainNow();
+        status.samples = c.measure->engine().samples();
+        if (!c.measure->stopRecording(&why) && state == CellStatus::Complete) {
+            state = CellStatus::Failed;
+            status.reason = why;
+        }
+    }
+    status.state = state;
+    if (!reason.isEmpty())
+        status.reason = reason.trimmed().left(2000);
+    status.finished = QDateTime::currentDateTimeUtc();
+    m_cell.reset(); // stops the lab
+    writeState();
+    qCDebug(lcDemo).noquote() << "cell" << m_plan.cells[m_current].id() << CellStatus::stateName(state)
+                              << status.reason;
+    emit cellFinished(m_current);
+    if (m_stopping)
+        return;
+    QTimer::singleShot(0, this, &ExperimentRunner::nextCell);
+}
+
+void ExperimentRunner::stop()
+{
+    m_stopping = true;
+    if (!m_cell)
+        return;
+    Cell& c = *m_cell;
+    c.timer.stop();
+    if (c.recording)
+        c.measure->stopRecording();
+    CellStatus& status = m_statuses[m_current];
+    status.state = CellStatus::Pending;
+    status.reason = tr("stopped; --resume does it again");
+    m_cell.reset();
+    writeState();
+    emit finished(false);
+}
+
+qint64 ExperimentRunner::runningSamples() const
+{
+    return m_cell && m_cell->recording ? m_cell->measure->engine().samples() : 0;
+}
+
+double ExperimentRunner::remainingSeconds() const
+{
+    double seconds = 0;
+    for (int i = 0; i < int(m_plan.cells.size()); ++i) {
+        if (m_statuses[i].state == CellStatus::Complete || (i < m_current))
+            continue;
+        double s = m_plan.expectedSeconds(m_plan.cells[i]);
+        if (i == m_current && m_cell)
+            s = std::max(0.0, s - double(m_cell->clock.elapsed()) / 1000);
+        seconds += s;
+    }
+    return seconds;
+}
+
+bool ExperimentRunner::writeState(QString* error) const
+{
+    QJsonArray cells;
+    for (qsizetype i = 0; i < m_plan.cells.size(); ++i) {
+        const ExperimentCell& cell = m_plan.cells[i];
+        const CellStatus& s = m_statuses[i];
+        QJsonArray levels;
+        for (const auto& [factor, level] : cell.levels)
+            levels.append(QJsonArray {factor, level});
+        cells.append(QJsonObject {
+            {u"id"_s, cell.id()},
+            {u"label"_s, cell.label()},
+            {u"levels"_s, levels},
+            {u"state"_s, CellStatus::stateName(s.state)},
+            {u"reason"_s, s.reason},
+            {u"run"_s, s.run},
+            {u"samples"_s, double(s.samples)},
+            {u"started"_s, s.started.isValid() ? s.started.toString(Qt::ISODate) : QString()},
+            {u"finished"_s, s.finished.isValid() ? s.finished.toString(Qt::ISODate) : QString()}});
+    }
+    const QJsonObject root {{u"format"_s, u"bridgescope-experiment"_s},
+                            {u"version"_s, 1},
+                            {u"name"_s, m_plan.name},
+                            {u"cells"_s, cells}};
+    QString why;
+    if (AtomicFile::write(QDir(m_dir).filePath(stateFileName()), QJsonDocument(root).toJson(), &why, false))
+        return true;
+    qCWarning(lcDemo).noquote() << why;
+    if (error)
+        *error = why;
+    return false;
+}
+
+std::optional<QList<CellStatus>> ExperimentRunner::readState(const QString& directory,
+                                                             const ExperimentPlan& plan, QString* error)
+{
+    QFile f(QDir(directory).filePath(stateFileName()));
+    const auto fail = [&](const QString& why) -> std::optional<QList<CellStatus>> {
+        if (error)
+            *error = tr("%1: %2").arg(f.fileName(), why);
+        return std::nullopt;
+    };
+    if (!f.open(QIODevice::ReadOnly))
+        return fail(f.errorString());
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(f.read(kMaxStateBytes), &parseError);
+    const QJsonObject root = doc.object();
+    if (parseError.error != QJsonParseError::NoError
+        || root.value(u"format"_s).toString() != u"bridgescope-experiment"_s)
+        return fail(tr("not an experiment's state (%1)").arg(parseError.errorString()));
+    QHash<QString, QJsonObject> byId;
+    for (const QJsonValue& v : root.value(u"cells"_s).toArray())
+        byId.insert(v.toObject().value(u"id"_s).toString(), v.toObject());
+    QList<CellStatus> statuses;
+    for (const ExperimentCell& cell : plan.cells) {
+        CellStatus s;
+        s.run = u"runs/%1.bsrun"_s.arg(cell.id());
+        const QJsonObject o = byId.value(cell.id());
+        const QString state = o.value(u"state"_s).toString();
+        for (CellStatus::State st :
+             {CellStatus::Pending, CellStatus::Running, CellStatus::Complete, CellStatus::Failed})
+            if (CellStatus::stateName(st) == state)
+                s.state = st;
+        s.reason = o.value(u"reason"_s).toString().left(2000);
+        s.samples = qint64(o.value(u"samples"_s).toDouble());
+        s.started = QDateTime::fromString(o.value(u"started"_s).toString(), Qt::ISODate);
+        s.finished = QDateTime::fromString(o.value(u"finished"_s).toString(), Qt::ISODate);
+        statuses.append(s);
+    }
+    return statuses;
+}

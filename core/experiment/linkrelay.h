@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "experiment/experimentplan.h"
+
+#include <atomic>
+#include <memory>
+#include <QCoreApplication>
+#include <QString>
+
+class QThread;
+class QTcpServer;
+
+/// A TCP relay in user space that gives one connection a link profile: every chunk of bytes waits
+/// `delayMs` plus a normal jitter (one draw per burst of chunks, so a message keeps together),
+/// queues behind the bandwidth, and a "lost" burst waits a retransmission timeout (TCP delivers it
+/// later, it never vanishes), in each direction. Order is kept, as TCP keeps it. It listens on
+/// 127.0.0.1 and forwards to the target; TLS passes through untouched. `tc netem` would need a
+/// kernel module and privileges; this needs neither.
+class LinkRelay
+{
+    Q_DECLARE_TR_FUNCTIONS(LinkRelay)
+public:
+    static constexpr int kMaxConnections = 64;
+    static constexpr qint64 kMaxQueuedBytes = 64 * 1024 * 1024; ///< per direction; beyond, reading pauses
+    static constexpr double kRetransmissionMs = 200; ///< Linux's minimum RTO
+
+    /// Listens on 127.0.0.1 (a free port) and relays to targetHost:targetPort; nullptr with `error`.
+    static std::unique_ptr<LinkRelay> start(const LinkProfile& profile, const QString& targetHost,
+                                            quint16 targetPort, QString* error, quint32 seed = 1);
+    ~LinkRelay();
+
+    quint16 port() const { return m_port; }
+    quint64 bytesRelayed() const { return m_bytes.load(); }
+    quint64 burstsLost() const { return m_lost.load(); }
+
+private:
+    LinkRelay() = default;
+    class Pipe;
+    class Connection;
+
+    std::unique_ptr<QThread> m_thread;
+    QTcpServer* m_server = nullptr; ///< lives on m_thread, parent of the connections
+    quint16 m_port = 0;
+    std::atomic<quint64> m_bytes {0};
+    std::atomic<quint64> m_lost {0};
+};

@@ -1,0 +1,284 @@
+// SPDX-License-Identifier: MIT
+// `bridgescope experiment` end to end, each cell on its own embedded lab (mosquitto, rosmaster,
+// bridges and nodes as child processes): a 2x2 plan (QoS 0/1 x two sizes) killed with SIGKILL in
+// its third cell and resumed finishes the third and fourth only, with four complete runs that carry
+// their levels; a bridge command that exits at once fails its cell while a bridge started through
+// the command template works; and a link profile of 20 ms delay and 2 ms jitter on each bridge's
+// broker connection shows up in the crossing stages only.
+#include "latency/latencyengine.h"
+#include "record/runfile.h"
+#include "report/report.h"
+#include "testservers.h"
+
+#include <csignal>
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// The JSON lines a run of the command printed, in order.
+QList<QJsonObject> jsonLines(const QByteArray& out)
+{
+    QList<QJsonObject> lines;
+    for (const QByteArray& line : out.split('\n'))
+        if (line.startsWith('{'))
+            lines << QJsonDocument::fromJson(line).object();
+    return lines;
+}
+
+QList<int> indicesOf(const QList<QJsonObject>& lines, const QString& event)
+{
+    QList<int> found;
+    for (const QJsonObject& o : lines)
+        if (o.value(u"event"_s).toString() == event)
+            found << o.value(u"index"_s).toInt();
+    return found;
+}
+
+QString writePlan(const QTemporaryDir& dir, const QString& name, const QByteArray& yaml)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (f.open(QIODevice::WriteOnly))
+        f.write(yaml);
+    return path;
+}
+
+/// The engine of a run file (the report's own loading).
+std::optional<Report> reportOf(const QString& run, QString* error)
+{
+    return Report::build({run}, std::nullopt, {}, error);
+}
+} // namespace
+
+class TestExperiment : public QObject
+{
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+
+    QProcess* experiment(const QStringList& args)
+    {
+        auto* p = new QProcess(this);
+        p->setProcessChannelMode(QProcess::SeparateChannels);
+        p->start(QStringLiteral(BRIDGESCOPE_BINARY), QStringList {u"experiment"_s} + args);
+        return p;
+    }
+
+private slots:
+    void aKilledExperimentResumesWhereItWasCut()
+    {
+        const QString plan = writePlan(m_dir, u"qos-size.yaml"_s,
+                                       "name: qos and size\nsamples: 60\nwarmup: 5\n"
+                                       "factors:\n  qos: [0, 1]\n  payload: [20000, 60000]\n");
+        const QString out = m_dir.filePath(u"qos-size"_s);
+        QProcess dry;
+        dry.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"experiment"_s, plan, u"--dry-run"_s});
+        QVERIFY(dry.waitForFinished(10000));
+        QCOMPARE(dry.exitCode(), 0);
+        const QString listing = QString::fromUtf8(dry.readAllStandardOutput());
+        QVERIFY2(listing.contains(u"4 cell"_s) && listing.contains(u"004-qos-1-payload-60000"_s),
+                 qPrintable(listing));
+
+        QProcess* first = experiment({plan, u"-o"_s, out});
+        QByteArray printed;
+        // Killed (SIGKILL: no clean-up of its own) once the third cell records.
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                printed += first->readAllStandardOutput();
+                return indicesOf(jsonLines(printed), u"started"_s).contains(2)
+                    || first->state() == QProcess::NotRunning;
+            },
+            120000));
+        QCOMPARE(first->state(), QProcess::Running);
+        QTest::qWait(5000);
+        ::kill(pid_t(first->processId()), SIGKILL);
+        QVERIFY(first->waitForFinished(10000));
+        printed += first->readAllStandardOutput();
+        QCOMPARE(indicesOf(jsonLines(printed), u"finished"_s), (QList<int> {0, 1}));
+
+        // Without --resume the folder is not touched.
+        QProcess* again = experiment({plan, u"-o"_s, out});
+        QVERIFY(again->waitForFinished(10000));
+        QCOMPARE(again->exitCode(), 2);
+        QVERIFY(again->readAllStandardError().contains("--resume"));
+
+        QProcess* resumed = experiment({plan, u"-o"_s, out, u"--resume"_s});
+        QVERIFY(resumed->waitForFinished(180000));
+        const QByteArray resumedOut = resumed->readAllStandardOutput();
+        QVERIFY2(resumed->exitCode() == 0, resumed->readAllStandardError().constData());
+        QCOMPARE(indicesOf(jsonLines(resumedOut), u"started"_s), (QList<int> {2, 3}));
+        QCOMPARE(indicesOf(jsonLines(resumedOut), u"finished"_s), (QList<int> {2, 3}));
+
+        // Four complete runs, each with its levels and at least its samples.
+        const QStringList runs = QDir(out + u"/runs"_s).entryList({u"*.bsrun"_s}, QDir::Files, QDir::Name);
+        QCOMPARE(runs.size(), 4);
+        const QList<QList<std::pair<QString, QString>>> levels {
+            {{u"qos"_s, u"0"_s}, {u"payload"_s, u"20000"_s}},
+            {{u"qos"_s, u"0"_s}, {u"payload"_s, u"60000"_s}},
+            {{u"qos"_s, u"1"_s}, {u"payload"_s, u"20000"_s}},
+            {{u"qos"_s, u"1"_s}, {u"payload"_s, u"60000"_s}}};
+        for (int i = 0; i < 4; ++i) {
+            QString error;
+            const std::optional<RunData> run = RunFile::read(out + u"/runs/"_s + runs[i], &error);
+            QVERIFY2(run, qPrintable(error));
+            QCOMPARE(run->info.factors, levels[i]);
+            QCOMPARE(run->info.experiment, u"qos and size"_s);
+            const std::optional<Report> report = reportOf(out + u"/runs/"_s + runs[i], &error);
+            QVERIFY2(report, qPrintable(error));
+            QVERIFY2(report->runs().front()->engine->samples() >= 60,
+                     qPrintable(QString::number(report->runs().front()->engine->samples())));
+        }
+        QFile state(out + u"/experiment.json"_s);
+        QVERIFY(state.open(QIODevice::ReadOnly));
+        QVERIFY(!state.readAll().contains("\"running\""));
+
+        // The report of the folder: its figures are those of the run files.
+        QProcess json;
+        json.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, out, u"--format"_s, u"json"_s});
+        QVERIFY(json.waitForFinished(60000));
+        QVERIFY2(json.exitCode() == 0, json.readAllStandardError().constData());
+        const QJsonObject report = QJsonDocument::fromJson(json.readAllStandardOutput()).object();
+        const QJsonArray cells = report.value(u"cells"_s).toArray();
+        QCOMPARE(cells.size(), 4);
+        double weighted[2] = {0, 0};
+        double counts[2] = {0, 0};
+        for (int i = 0; i < 4; ++i) {
+            QString error;
+            const auto r = reportOf(out + u"/runs/"_s + runs[i], &error);
+            QVERIFY2(r, qPrintable(error));
+            const LatencyEngine& e = *r->runs().front()->engine;
+            const Pipeline& p = e.pipeline();
+            const QJsonObject groups = cells[i].toObject().value(u"groups"_s).toObject();
+            const QJsonObject total = groups.value(u"total"_s).toObject();
+            const LatencyStats t = e.series(e.totalSeries()).stats();
+            QCOMPARE(qint64(total.value(u"count"_s).toDouble()), t.count);
+            QVERIFY2(std::abs(total.value(u"mean"_s).toDouble() - t.mean) < 1e-9, qPrintable(runs[i]));
+            QVERIFY(std::abs(total.value(u"p99"_s).toDouble() - t.p99) < 1e-9);
+            // A group of one stage is that stage; the interfaces are the sum of theirs.
+            double interfaces = 0;
+            for (int s = 0; s < p.stageCount(); ++s) {
+                const LatencyStats st = e.series(e.stageSeries(s)).stats();
+                if (p.component(s) == u"object_detection"_s && p.component(s + 1) == u"object_detection"_s)
+                    QVERIFY(
+                        std::abs(groups.value(u"object_detection"_s).toObject().value(u"median"_s).toDouble()
+                                 - st.median)
+                        < 1e-9);
+                if (p.component(s).startsWith(u"mqtt_interface"_s) && p.component(s) == p.component(s + 1))
+                    interfaces += st.mean;
+            }
+            QVERIFY(
+                std::abs(groups.value(u"interfaces"_s).toObject().value(u"mean"_s).toDouble() - interfaces)
+                < 1e-6);
+            weighted[i / 2] += t.mean * double(t.count);
+            counts[i / 2] += double(t.count);
+        }
+        // The qos table's columns pool their two cells.
+        const QJsonArray tables = report.value(u"tables"_s).toArray();
+        QCOMPARE(tables.size(), 2);
+        const QJsonArray qos = tables[0].toObject().value(u"columns"_s).toArray();
+        QCOMPARE(tables[0].toObject().value(u"factor"_s).toString(), u"qos"_s);
+        for (int level = 0; level < 2; ++level) {
+            const QJsonObject column = qos[level].toObject();
+            QCOMPARE(column.value(u"level"_s).toString(), QString::number(level));
+            QCOMPARE(column.value(u"cells"_s).toArray().size(), 2);
+            const double mean = column.value(u"groups"_s)
+                                    .toObject()
+                                    .value(u"total"_s)
+                                    .toObject()
+                                    .value(u"mean"_s)
+                                    .toDouble();
+            QVERIFY2(std::abs(mean - weighted[level] / counts[level]) < 1e-6,
+                     qPrintable(QString::number(mean)));
+        }
+        QProcess md;
+        md.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                 {u"report"_s, out, u"--format"_s, u"md"_s, u"--stat"_s, u"mean,p99"_s});
+        QVERIFY(md.waitForFinished(60000));
+        const QString text = QString::fromUtf8(md.readAllStandardOutput());
+        QVERIFY2(text.contains(u"## qos (mean)"_s) && text.contains(u"## payload (p99)"_s)
+                     && text.contains(u"| **total** |"_s)
+                     && text.contains(u"runs/004-qos-1-payload-60000.bsrun"_s),
+                 qPrintable(text));
+    }
+
+    void aBrokenBridgeFailsItsCellAndTheTemplateWorks()
+    {
+        // The template starts the reference bridge, as it would start mqtt_client.
+        const QByteArray yaml = "samples: 20\nwarmup: 2\ntimeout_s: 60\n"
+                                "bridges:\n"
+                                "  broken: {command: \"echo no such bridge {config} >&2; exit 3\"}\n"
+                                "  templated: {command: \"exec '"
+            + QByteArray(BRIDGESCOPE_BINARY)
+            + "' bridge {config} --name {name} --ros-master {ros_master}\"}\n"
+              "cells:\n  - {bridge: broken}\n  - {bridge: templated}\n";
+        const QString plan = writePlan(m_dir, u"bridges.yaml"_s, yaml);
+        const QString out = m_dir.filePath(u"bridges"_s);
+        QProcess* p = experiment({plan, u"-o"_s, out});
+        QVERIFY(p->waitForFinished(180000));
+        const QList<QJsonObject> lines = jsonLines(p->readAllStandardOutput());
+        QCOMPARE(p->exitCode(), 1); // a cell failed
+        QList<QJsonObject> finished;
+        for (const QJsonObject& o : lines)
+            if (o.value(u"event"_s).toString() == u"finished"_s)
+                finished << o;
+        QCOMPARE(finished.size(), 2);
+        QCOMPARE(finished[0].value(u"state"_s).toString(), u"failed"_s);
+        QVERIFY2(finished[0].value(u"reason"_s).toString().contains(u"no such bridge"_s),
+                 qPrintable(finished[0].value(u"reason"_s).toString()));
+        QCOMPARE(finished[1].value(u"state"_s).toString(), u"complete"_s);
+        QVERIFY(finished[1].value(u"samples"_s).toDouble() >= 20);
+    }
+
+    void aLinkProfileShowsInTheCrossingStagesOnly()
+    {
+        const QString plan = writePlan(m_dir, u"link.yaml"_s,
+                                       "samples: 100\nwarmup: 5\n"
+                                       "links:\n  lab: {delay_ms: 20, jitter_ms: 2}\n"
+                                       "defaults: {payload: 20000}\n"
+                                       "factors:\n  link: [none, lab]\n");
+        const QString out = m_dir.filePath(u"link"_s);
+        QProcess* p = experiment({plan, u"-o"_s, out});
+        QVERIFY(p->waitForFinished(180000));
+        QVERIFY2(p->exitCode() == 0, p->readAllStandardError().constData());
+        QString error;
+        const auto none = reportOf(out + u"/runs/001-link-none.bsrun"_s, &error);
+        QVERIFY2(none, qPrintable(error));
+        const auto lab = reportOf(out + u"/runs/002-link-lab.bsrun"_s, &error);
+        QVERIFY2(lab, qPrintable(error));
+        const LatencyEngine& a = *none->runs().front()->engine;
+        const LatencyEngine& b = *lab->runs().front()->engine;
+        const Pipeline& pipeline = a.pipeline();
+        int crossings = 0;
+        for (int s = 0; s < pipeline.stageCount(); ++s) {
+            const LatencyStats x = a.series(a.stageSeries(s)).stats();
+            const LatencyStats y = b.series(b.stageSeries(s)).stats();
+            const QString what = u"%1: %2 -> %3 ms mean, %4 -> %5 ms std"_s.arg(pipeline.stageLabel(s))
+                                     .arg(x.mean)
+                                     .arg(y.mean)
+                                     .arg(x.std)
+                                     .arg(y.std);
+            qInfo().noquote() << what;
+            if (pipeline.isCrossing(s)) {
+                // A relay on each side: 2 x 20 ms, and the jitter of two draws of 2 ms.
+                ++crossings;
+                QVERIFY2(std::abs((y.mean - x.mean) - 40) <= 4, qPrintable(what));
+                const double expectedStd = std::sqrt(x.std * x.std + 2 * 2 * 2);
+                QVERIFY2(std::abs(y.std - expectedStd) <= 0.5 * std::sqrt(8.0), qPrintable(what));
+            } else {
+                QVERIFY2(std::abs(y.mean - x.mean) <= std::max(1.5, 0.3 * x.mean), qPrintable(what));
+            }
+        }
+        QCOMPARE(crossings, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestExperiment)
+#include "tst_experiment.moc"

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+// Experiment plans: the shipped examples read as the paper's tables, factors cross in order,
+// listed cells name what they change, repetitions come last, and every mistake names its line.
+#include "experiment/experimentplan.h"
+
+#include <QDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QString examples()
+{
+    return QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/examples"_s;
+}
+
+std::optional<ExperimentPlan> plan(const QByteArray& yaml, QString* error = nullptr)
+{
+    QString ignored;
+    return ExperimentPlan::fromYaml(yaml, u"/plans"_s, error ? error : &ignored);
+}
+} // namespace
+
+class TestExperimentPlan : public QObject
+{
+    Q_OBJECT
+private slots:
+    void shippedExamplesRead()
+    {
+        const QDir dir(examples());
+        const QStringList files = dir.entryList({u"experiment-*.yaml"_s});
+        QCOMPARE(files.size(), 5);
+        QHash<QString, int> cells;
+        for (const QString& f : files) {
+            QString error;
+            const std::optional<ExperimentPlan> p = ExperimentPlan::load(dir.filePath(f), &error);
+            QVERIFY2(p, qPrintable(error));
+            QCOMPARE(p->samples, 600);
+            cells.insert(f, int(p->cells.size()));
+        }
+        QCOMPARE(cells.value(u"experiment-table1-methods.yaml"_s), 3);
+        QCOMPARE(cells.value(u"experiment-table2-encryption.yaml"_s), 2);
+        QCOMPARE(cells.value(u"experiment-table3-qos.yaml"_s), 3);
+        QCOMPARE(cells.value(u"experiment-table4-size.yaml"_s), 6);
+        QCOMPARE(cells.value(u"experiment-table5-network.yaml"_s), 4);
+
+        const auto network = ExperimentPlan::load(dir.filePath(u"experiment-table5-network.yaml"_s), nullptr);
+        QVERIFY(network);
+        QCOMPARE(network->factors, (QStringList {u"link"_s, u"payload"_s}));
+        // The first factor varies slowest.
+        QCOMPARE(network->cells[1].label(), u"link none, payload 100%"_s);
+        QCOMPARE(network->cells[2].settings.link.delayMs, 13.6);
+        QCOMPARE(network->cells[2].settings.link.jitterMs, 1.6);
+        QCOMPARE(network->cells[2].settings.payloadBytes, 0);
+        QCOMPARE(network->cells[3].settings.payloadBytes, 180000);
+        QCOMPARE(network->cells[3].id(), u"004-link-5g-payload-100pct"_s);
+
+        const auto size = ExperimentPlan::load(dir.filePath(u"experiment-table4-size.yaml"_s), nullptr);
+        QVERIFY(size && size->throughput);
+        QCOMPARE(size->throughput->ratesHz.size(), 6);
+        QCOMPARE(size->cells[5].settings.payloadBytes, ExperimentPlan::kPointCloud2Bytes);
+        QCOMPARE(size->cells[1].settings.payloadBytes, 45000);
+
+        const auto methods = ExperimentPlan::load(dir.filePath(u"experiment-table1-methods.yaml"_s), nullptr);
+        QVERIFY(methods);
+        QVERIFY(methods->cells[0].settings.bridge.command.isEmpty());
+        QVERIFY(methods->cells[1].settings.announceEveryMessage);
+        QVERIFY(methods->cells[2].settings.bridge.command.contains(u"{config}"_s));
+        QCOMPARE(methods->cells[2].settings.bridge.name, u"mqtt_client"_s);
+    }
+
+    void defaultsRepetitionsAndListedCells()
+    {
+        QString error;
+        const auto p = plan("samples: 60\nwarmup: 5\nrepetitions: 2\n"
+                            "defaults: {rate_hz: 20, payload: 20000, tls: true}\n"
+                            "factors:\n  qos: [0, 1]\n  payload: [20000, 25%]\n",
+                            &error);
+        QVERIFY2(p, qPrintable(error));
+        QCOMPARE(p->cells.size(), 8);
+        QCOMPARE(p->cells[0].settings.rateHz, 20.0);
+        QVERIFY(p->cells[0].settings.tls);
+        QCOMPARE(p->cells[1].settings.payloadBytes, 45000);
+        // Repetitions outermost.
+        QCOMPARE(p->cells[3].repetition, 0);
+        QCOMPARE(p->cells[4].repetition, 1);
+        QCOMPARE(p->cells[4].id(), u"005-qos-0-payload-20000-r2"_s);
+        QCOMPARE(p->expectedSeconds(p->cells[0]), 5 + 65 / 20.0 + 2);
+
+        const auto listed = plan("cells:\n  - {payload: 50%}\n  - {qos: 1, payload: 0}\n"
+                                 "pipeline: mine.yaml\nservers: {broker: tcp://127.0.0.1:1883, ros_master: "
+                                 "http://127.0.0.1:11311/}\n",
+                                 &error);
+        QVERIFY2(listed, qPrintable(error));
+        QCOMPARE(listed->factors, (QStringList {u"payload"_s, u"qos"_s}));
+        // Levels in factor order, whatever order the cell wrote them in.
+        QCOMPARE(listed->cells[1].label(), u"payload 0, qos 1"_s);
+        QCOMPARE(listed->pipelinePath, u"/plans/mine.yaml"_s);
+        QCOMPARE(listed->brokerUrl, u"tcp://127.0.0.1:1883"_s);
+
+        const auto single = plan("samples: 10\n", &error);
+        QVERIFY2(single, qPrintable(error));
+        QCOMPARE(single->cells.size(), 1);
+        QCOMPARE(single->cells[0].label(), u"baseline"_s);
+    }
+
+    void mistakesNameTheirLine_data()
+    {
+        QTest::addColumn<QByteArray>("yaml");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("unknown key") << QByteArray("samples: 5\nfactor:\n  qos: [0]\n")
+                                     << u"line 2: unknown key 'factor'"_s;
+        QTest::newRow("unknown factor")
+            << QByteArray("factors:\n  colour: [red]\n") << u"line 2: unknown factor 'colour'"_s;
+        QTest::newRow("qos") << QByteArray("factors:\n  qos: [0, 3]\n") << u"line 2: qos is 0, 1 or 2"_s;
+        QTest::newRow("payload") << QByteArray("factors:\n  payload: [big]\n") << u"payload is bytes"_s;
+        QTest::newRow("no levels") << QByteArray("factors:\n  qos: []\n") << u"qos needs a list of levels"_s;
+        QTest::newRow("both") << QByteArray("factors: {qos: [0]}\ncells: [{qos: 1}]\n") << u"not both"_s;
+        QTest::newRow("samples") << QByteArray("samples: 0\n") << u"line 1: samples takes a whole number"_s;
+        QTest::newRow("link name") << QByteArray("factors:\n  link: [5g]\n") << u"no link profile '5g'"_s;
+        QTest::newRow("link setting")
+            << QByteArray("links:\n  x: {delay: 3}\n") << u"unknown link setting 'delay'"_s;
+        QTest::newRow("loss") << QByteArray("links:\n  x: {loss_percent: 90}\n")
+                              << u"loss_percent takes a number from 0 to 50"_s;
+        QTest::newRow("command without config")
+            << QByteArray("bridges:\n  b: {command: \"mqtt_client_node\"}\n") << u"must use {config}"_s;
+        QTest::newRow("same cell twice")
+            << QByteArray("cells: [{qos: 1}, {qos: 1}]\n") << u"two cells are the same"_s;
+        QTest::newRow("too many") << QByteArray(
+            "factors:\n  payload: [1,2,3,4,5,6,7,8,9,10]\n  rate_hz: [1,2,3,4,5,6,7,8,9,10]\n"
+            "  queue_size: [1,2,3,4,5,6,7,8,9,10]\n  detection_ms: [1,2,3,4,5,6,7,8,9,10,11]\n")
+                                  << u"more than 10000 cells"_s;
+        QTest::newRow("not yaml") << QByteArray("factors: [\n") << u"line"_s;
+        QTest::newRow("not a map") << QByteArray("- 1\n") << u"a plan is a mapping"_s;
+    }
+
+    void mistakesNameTheirLine()
+    {
+        QFETCH(QByteArray, yaml);
+        QFETCH(QString, message);
+        QString error;
+        QVERIFY(!plan(yaml, &error));
+        QVERIFY2(error.contains(message), qPrintable(error));
+    }
+
+    void payloadLevels()
+    {
+        QCOMPARE(ExperimentPlan::payloadBytes(u"scan"_s), std::optional<int>(180000));
+        QCOMPARE(ExperimentPlan::payloadBytes(u" 50 % "_s), std::optional<int>(90000));
+        QCOMPARE(ExperimentPlan::payloadBytes(u"0%"_s), std::optional<int>(0));
+        QCOMPARE(ExperimentPlan::payloadBytes(u"PointCloud2"_s), std::optional<int>(1080000));
+        QVERIFY(!ExperimentPlan::payloadBytes(u"-1"_s));
+        QVERIFY(!ExperimentPlan::payloadBytes(u"99999999999"_s));
+        QVERIFY(!ExperimentPlan::payloadBytes(u"5000%"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestExperimentPlan)
+#include "tst_experimentplan.moc"
