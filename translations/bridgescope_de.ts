@@ -1567,6 +1567,10 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
         <source>%1 of %2 cells complete in %3</source>
         <translation>%1 von %2 Zellen vollständig in %3</translation>
     </message>
+    <message>
+        <source>throughput: %1 bytes at %2 Hz</source>
+        <translation>Durchsatz: %1 Bytes mit %2 Hz</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentPlan</name>
@@ -1848,6 +1852,38 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
     <message>
         <source>Findings</source>
         <translation>Befunde</translation>
+    </message>
+    <message>
+        <source>Throughput with %1 (%2 bytes): up to %3 Hz sustained, %4 MB/s.</source>
+        <translation>Durchsatz mit %1 (%2 Bytes): bis %3 Hz gehalten, %4 MB/s.</translation>
+    </message>
+    <message>
+        <source>Throughput with %1 (%2 bytes): not even %3 Hz was sustained.</source>
+        <translation>Durchsatz mit %1 (%2 Bytes): nicht einmal %3 Hz wurden gehalten.</translation>
+    </message>
+    <message>
+        <source>Throughput</source>
+        <translation>Durchsatz</translation>
+    </message>
+    <message>
+        <source>The highest publishing rate sustained (every sample through in its window, none dropped, the total&apos;s median within twice the lowest rate&apos;s plus 5 ms), and the payload it carries.</source>
+        <translation>Die höchste gehaltene Veröffentlichungsrate (jede Probe in ihrem Fenster durch, keine verworfen, der Median der Gesamtlatenz höchstens doppelt so hoch wie bei der niedrigsten Rate plus 5 ms) und die Nutzlast, die sie trägt.</translation>
+    </message>
+    <message>
+        <source>payload</source>
+        <translation>Nutzlast</translation>
+    </message>
+    <message>
+        <source>bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>highest rate (Hz)</source>
+        <translation>höchste Rate (Hz)</translation>
+    </message>
+    <message>
+        <source>rates tried (samples/expected, median total ms)</source>
+        <translation>versuchte Raten (Proben/erwartet, Median gesamt ms)</translation>
     </message>
 </context>
 <context>

@@ -163,6 +163,19 @@ int runExperiment(const ExperimentRequest& request)
         if (s.state == CellStatus::Failed)
             err(Experiment::tr("cell %1/%2 failed: %3").arg(i + 1).arg(cells).arg(s.reason));
     });
+    QObject::connect(&runner, &ExperimentRunner::probeStarted, [](int bytes, double rate) {
+        err(Experiment::tr("throughput: %1 bytes at %2 Hz").arg(bytes).arg(rate));
+    });
+    QObject::connect(&runner, &ExperimentRunner::probeFinished, [](const ThroughputPoint& p) {
+        out(QString::fromUtf8(QJsonDocument(QJsonObject {{u"event"_s, u"throughput"_s},
+                                                         {u"rate_hz"_s, p.rateHz},
+                                                         {u"samples"_s, double(p.samples)},
+                                                         {u"expected"_s, double(p.expected)},
+                                                         {u"dropped"_s, double(p.dropped)},
+                                                         {u"p50_ms"_s, p.p50Ms},
+                                                         {u"sustainable"_s, p.sustainable}})
+                                  .toJson(QJsonDocument::Compact)));
+    });
     std::optional<int> done;
     QObject::connect(&runner, &ExperimentRunner::finished,
                      [&](bool all) { done = all ? ExitOk : ExitFailed; });

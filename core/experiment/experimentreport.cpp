@@ -87,6 +87,28 @@ QJsonObject statsJson(const LatencyStats& s)
             {u"p99"_s, n(s.p99)}};
 }
 
+QJsonArray throughputJson(const QList<ThroughputResult>& results)
+{
+    QJsonArray out;
+    for (const ThroughputResult& r : results) {
+        QJsonArray rates;
+        for (const ThroughputPoint& p : r.points)
+            rates.append(QJsonObject {{u"rate_hz"_s, p.rateHz},
+                                      {u"samples"_s, double(p.samples)},
+                                      {u"expected"_s, double(p.expected)},
+                                      {u"dropped"_s, double(p.dropped)},
+                                      {u"p50_ms"_s, p.p50Ms},
+                                      {u"sustainable"_s, p.sustainable}});
+        out.append(QJsonObject {{u"level"_s, r.level},
+                                {u"payload_bytes"_s, r.payloadBytes},
+                                {u"max_sustainable_hz"_s, r.maxSustainableHz()},
+                                {u"mb_per_s"_s, r.megabytesPerSecond()},
+                                {u"complete"_s, r.complete},
+                                {u"rates"_s, rates}});
+    }
+    return out;
+}
+
 QString texEscaped(QString s)
 {
     s.replace(u"\\"_s, u"\\textbackslash{}"_s);
@@ -197,6 +219,7 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
         }
         r.m_tables << table;
     }
+    r.m_throughput = ExperimentRunner::readThroughput(directory);
     return r;
 }
 
@@ -266,6 +289,18 @@ QStringList ExperimentReport::findings() const
         else if (!c.problem.isEmpty())
             out << tr("Cell %1 is left out: %2").arg(c.cell.id(), c.problem);
     }
+    for (const ThroughputResult& t : m_throughput)
+        if (t.complete && !t.points.isEmpty())
+            out << (t.maxSustainableHz() > 0
+                        ? tr("Throughput with %1 (%2 bytes): up to %3 Hz sustained, %4 MB/s.")
+                              .arg(t.level)
+                              .arg(t.payloadBytes)
+                              .arg(t.maxSustainableHz())
+                              .arg(number(t.megabytesPerSecond()))
+                        : tr("Throughput with %1 (%2 bytes): not even %3 Hz was sustained.")
+                              .arg(t.level)
+                              .arg(t.payloadBytes)
+                              .arg(t.points.first().rateHz));
     const int total = int(m_groups.size()) - 1;
     for (const FactorTable& t : m_tables) {
         QList<const Column*> measured;
@@ -371,6 +406,29 @@ QString ExperimentReport::toMarkdown(const QList<Statistic>& statistics) const
             sources << u"%1: %2"_s.arg(c.level, ids.isEmpty() ? tr("no complete cell") : ids.join(u", "_s));
         }
         md += tr("Cells: %1.").arg(sources.join(u"; "_s)) + u"\n\n"_s;
+    }
+    if (!m_throughput.isEmpty()) {
+        md += u"## "_s + tr("Throughput") + u"\n\n"_s
+            + tr("The highest publishing rate sustained (every sample through in its window, none dropped, "
+                 "the total's median within twice the lowest rate's plus 5 ms), and the payload it carries.")
+            + u"\n\n| "_s + tr("payload") + u" | "_s + tr("bytes") + u" | "_s + tr("highest rate (Hz)")
+            + u" | MB/s | "_s + tr("rates tried (samples/expected, median total ms)")
+            + u" |\n| --- | ---: | ---: | ---: | --- |\n"_s;
+        for (const ThroughputResult& t : m_throughput) {
+            QStringList tried;
+            for (const ThroughputPoint& p : t.points)
+                tried << u"%1 Hz: %2/%3, %4%5"_s.arg(p.rateHz)
+                             .arg(p.samples)
+                             .arg(p.expected)
+                             .arg(number(p.p50Ms))
+                             .arg(p.sustainable ? QString() : u" ✗"_s);
+            md += u"| %1 | %2 | %3 | %4 | %5 |\n"_s.arg(t.level)
+                      .arg(t.payloadBytes)
+                      .arg(t.maxSustainableHz() > 0 ? QString::number(t.maxSustainableHz()) : u"–"_s)
+                      .arg(number(t.megabytesPerSecond()))
+                      .arg(tried.join(u"; "_s) + (t.complete ? QString() : u" …"_s));
+        }
+        md += u"\n"_s;
     }
     md += u"## "_s + tr("Cells") + u"\n\n| "_s + tr("cell") + u" | "_s + tr("levels") + u" | "_s + tr("state")
         + u" | "_s + tr("samples") + u" | "_s + tr("total mean") + u" | "_s + tr("run") + u" |\n"_s
@@ -518,6 +576,7 @@ QByteArray ExperimentReport::toJson() const
                             {u"groups"_s, groups},
                             {u"tables"_s, tables},
                             {u"cells"_s, cells},
+                            {u"throughput"_s, throughputJson(m_throughput)},
                             {u"findings"_s, QJsonArray::fromStringList(findings())}};
     return QJsonDocument(root).toJson();
 }

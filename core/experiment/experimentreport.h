@@ -55,6 +55,7 @@ public:
     const QList<Group>& groups() const { return m_groups; }
     const QList<Cell>& cells() const { return m_cells; }
     const QList<FactorTable>& tables() const { return m_tables; }
+    const QList<ThroughputResult>& throughput() const { return m_throughput; }
     QStringList findings() const;
 
     static std::optional<QList<Statistic>> parseStatistics(const QString& list, QString* error);
@@ -73,4 +74,5 @@ private:
     QList<Group> m_groups;
     QList<Cell> m_cells;
     QList<FactorTable> m_tables;
+    QList<ThroughputResult> m_throughput;
 };

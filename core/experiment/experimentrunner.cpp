@@ -98,6 +98,10 @@ struct ExperimentRunner::Cell
     QElapsedTimer clock;
     bool recording = false;
     QString runPath;
+    // A probe of the throughput step: measuring since windowStartMs (-1: warming up).
+    bool probe = false;
+    double rateHz = 0;
+    qint64 windowStartMs = -1;
 };
 
 ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QString directory,
@@ -187,6 +191,10 @@ void ExperimentRunner::nextCell()
         }
     }
     m_current = -1;
+    if (m_plan.throughput && !m_throughputDone) {
+        nextProbe();
+        return;
+    }
     const bool all = std::all_of(m_statuses.cbegin(), m_statuses.cend(),
                                  [](const CellStatus& s) { return s.state == CellStatus::Complete; });
     emit finished(all);
@@ -207,11 +215,21 @@ void ExperimentRunner::beginCell(int index)
     qCDebug(lcDemo).noquote() << "cell" << cell.id() << "starts";
 
     m_cell = std::make_unique<Cell>();
+    m_cell->runPath = QDir(m_dir).filePath(status.run);
+    removeRunFile(m_cell->runPath); // what a cut-off attempt left
+    QString why;
+    if (!startLab(cell.settings, index, &why)) {
+        endCell(CellStatus::Failed, why);
+        return;
+    }
+    connect(&m_cell->timer, &QTimer::timeout, this, &ExperimentRunner::poll);
+    m_cell->timer.start(kPollMs);
+}
+
+bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
+{
     Cell& c = *m_cell;
-    c.runPath = QDir(m_dir).filePath(status.run);
-    removeRunFile(c.runPath); // what a cut-off attempt left
     c.clock.start();
-    const CellSettings& s = cell.settings;
     DemoLab::Options o;
     o.program = m_options.program;
     o.payloadBytes = s.payloadBytes;
@@ -225,35 +243,26 @@ void ExperimentRunner::beginCell(int index)
     o.announceEveryMessage = s.announceEveryMessage;
     o.tlsDirectory = s.tls ? QDir(m_dir).filePath(u"tls"_s) : QString();
     o.bridgeCommand = s.bridge.command;
-    QString why;
-    if (!c.lab.startServers(o, &why)) {
-        endCell(CellStatus::Failed, why);
-        return;
-    }
+    if (!c.lab.startServers(o, why))
+        return false;
     if (!s.link.isNone()) {
         const QUrl broker(c.lab.brokerUrl());
-        c.vehicleRelay = LinkRelay::start(s.link, broker.host(), quint16(broker.port(1883)), &why,
-                                          2u * quint32(index) + 1);
-        c.cloudRelay = c.vehicleRelay ? LinkRelay::start(s.link, broker.host(), quint16(broker.port(1883)),
-                                                         &why, 2u * quint32(index) + 2)
-                                      : nullptr;
-        if (!c.cloudRelay) {
-            endCell(CellStatus::Failed, why);
-            return;
-        }
+        const quint16 port = quint16(broker.port(1883));
+        c.vehicleRelay = LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 1);
+        c.cloudRelay = c.vehicleRelay
+            ? LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 2)
+            : nullptr;
+        if (!c.cloudRelay)
+            return false;
         c.lab.setBridgePort(u"vehicle"_s, c.vehicleRelay->port());
         c.lab.setBridgePort(u"cloud"_s, c.cloudRelay->port());
     }
-    if (!c.lab.startComponents(&why)) {
-        endCell(CellStatus::Failed, why);
-        return;
-    }
+    if (!c.lab.startComponents(why))
+        return false;
     const std::optional<Pipeline> pipeline
-        = Pipeline::load(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath, &why);
-    if (!pipeline) {
-        endCell(CellStatus::Failed, why);
-        return;
-    }
+        = Pipeline::load(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath, why);
+    if (!pipeline)
+        return false;
     c.live = std::make_unique<LiveSession>();
     c.live->setRosMasterUri(c.lab.rosMasterUri());
     MqttProfile profile = MqttProfile::fromUrl(c.lab.brokerUrl());
@@ -261,8 +270,7 @@ void ExperimentRunner::beginCell(int index)
     c.live->connectBroker(profile);
     c.measure = std::make_unique<MeasureSession>(c.live.get());
     c.measure->setPipeline(*pipeline);
-    connect(&c.timer, &QTimer::timeout, this, &ExperimentRunner::poll);
-    c.timer.start(kPollMs);
+    return true;
 }
 
 void ExperimentRunner::poll()
@@ -343,6 +351,12 @@ void ExperimentRunner::stop()
     m_stopping = true;
     if (!m_cell)
         return;
+    if (m_cell->probe) { // the rate is measured again on resume
+        m_cell.reset();
+        m_probeSize = -1;
+        emit finished(false);
+        return;
+    }
     Cell& c = *m_cell;
     c.timer.stop();
     if (c.recording)
@@ -444,4 +458,186 @@ std::optional<QList<CellStatus>> ExperimentRunner::readState(const QString& dire
         statuses.append(s);
     }
     return statuses;
+}
+
+double ThroughputResult::maxSustainableHz() const
+{
+    double best = 0;
+    for (const ThroughputPoint& p : points)
+        if (p.sustainable)
+            best = std::max(best, p.rateHz);
+    return best;
+}
+
+void ExperimentRunner::nextProbe()
+{
+    if (m_stopping)
+        return;
+    if (m_probeSettings.isEmpty()) {
+        // The sizes in the order the cells have them; results of an earlier start are kept.
+        const QList<ThroughputResult> earlier = readThroughput(m_dir);
+        m_throughput.clear();
+        for (const ExperimentCell& c : std::as_const(m_plan.cells)) {
+            if (std::any_of(m_probeSettings.cbegin(), m_probeSettings.cend(), [&c](const CellSettings& s) {
+                    return s.payloadBytes == c.settings.payloadBytes;
+                }))
+                continue;
+            m_probeSettings << c.settings;
+            ThroughputResult r;
+            r.payloadBytes = c.settings.payloadBytes;
+            r.level = QString::number(r.payloadBytes);
+            for (const auto& [factor, level] : c.levels)
+                if (factor == u"payload"_s)
+                    r.level = level;
+            for (const ThroughputResult& e : earlier)
+                if (e.payloadBytes == r.payloadBytes && e.complete)
+                    r = e;
+            m_throughput << r;
+        }
+    }
+    for (int i = 0; i < int(m_throughput.size()); ++i) {
+        ThroughputResult& r = m_throughput[i];
+        if (r.complete)
+            continue;
+        if (r.points.size() >= m_plan.throughput->ratesHz.size()) {
+            r.complete = true;
+            continue;
+        }
+        m_probeSize = i;
+        CellSettings s = m_probeSettings[i];
+        s.rateHz = m_plan.throughput->ratesHz[r.points.size()];
+        s.detectionMs = 0; // the bridges' limit, not the detection's (40 ms caps it at 25 Hz)
+        emit probeStarted(s.payloadBytes, s.rateHz);
+        qCDebug(lcDemo).noquote() << "throughput" << s.payloadBytes << "bytes at" << s.rateHz << "Hz";
+        m_cell = std::make_unique<Cell>();
+        m_cell->probe = true;
+        m_cell->rateHz = s.rateHz;
+        QString why;
+        if (!startLab(s, 100'000 + i * 100 + int(r.points.size()), &why)) {
+            qCWarning(lcDemo).noquote() << why;
+            ThroughputPoint failed;
+            failed.rateHz = s.rateHz;
+            endProbe(failed);
+            return;
+        }
+        m_cell->measure->setWindow(0);
+        connect(&m_cell->timer, &QTimer::timeout, this, &ExperimentRunner::pollProbe);
+        m_cell->timer.start(kPollMs);
+        return;
+    }
+    m_throughputDone = true;
+    writeThroughput();
+    nextCell();
+}
+
+void ExperimentRunner::pollProbe()
+{
+    Cell& c = *m_cell;
+    const LatencyEngine& engine = c.measure->engine();
+    const qint64 now = c.clock.elapsed();
+    ThroughputPoint p;
+    p.rateHz = c.rateHz;
+    if (c.windowStartMs < 0) {
+        // Warm: a second's worth of samples (at least three) before the window opens.
+        if (engine.samples() >= std::max<qint64>(3, qint64(c.rateHz))) {
+            c.measure->reset();
+            c.windowStartMs = now;
+        } else if (now > 60'000 || !c.lab.isRunning()) {
+            endProbe(p); // nothing came through: not sustained
+        }
+        return;
+    }
+    const double seconds = m_plan.throughput->secondsPerRate;
+    if (now - c.windowStartMs < qint64(seconds * 1000) && c.lab.isRunning())
+        return;
+    c.live->drainNow();
+    const LatencyStats total = engine.series(engine.totalSeries()).stats();
+    p.samples = engine.samples();
+    p.expected = qint64(c.rateHz * seconds);
+    p.dropped = engine.counters().dropped();
+    p.p50Ms = std::isfinite(total.median) ? total.median : 0;
+    p.p99Ms = std::isfinite(total.p99) ? total.p99 : 0;
+    // Sustained: (almost) every sample through, none dropped, and the latency not running away
+    // from the lowest rate's (a queue that grows shows there first).
+    const QList<ThroughputPoint>& before = m_throughput[m_probeSize].points;
+    const double base = before.isEmpty() ? p.p50Ms : before.first().p50Ms;
+    p.sustainable = c.lab.isRunning() && p.samples >= qint64(0.95 * double(p.expected)) && p.dropped == 0
+        && p.p50Ms <= 2 * base + 5;
+    endProbe(p);
+}
+
+void ExperimentRunner::endProbe(const ThroughputPoint& point)
+{
+    m_cell.reset();
+    ThroughputResult& r = m_throughput[m_probeSize];
+    r.points << point;
+    // Rates go up: after the first one not sustained, the higher ones are not tried.
+    if (!point.sustainable || r.points.size() >= m_plan.throughput->ratesHz.size())
+        r.complete = true;
+    m_probeSize = -1;
+    writeThroughput();
+    emit probeFinished(point);
+    if (!m_stopping)
+        QTimer::singleShot(0, this, &ExperimentRunner::nextProbe);
+}
+
+bool ExperimentRunner::writeThroughput() const
+{
+    QJsonArray sizes;
+    for (const ThroughputResult& r : m_throughput) {
+        QJsonArray points;
+        for (const ThroughputPoint& p : r.points)
+            points.append(QJsonObject {{u"rate_hz"_s, p.rateHz},
+                                       {u"samples"_s, double(p.samples)},
+                                       {u"expected"_s, double(p.expected)},
+                                       {u"dropped"_s, double(p.dropped)},
+                                       {u"p50_ms"_s, p.p50Ms},
+                                       {u"p99_ms"_s, p.p99Ms},
+                                       {u"sustainable"_s, p.sustainable}});
+        sizes.append(QJsonObject {{u"payload_bytes"_s, r.payloadBytes},
+                                  {u"level"_s, r.level},
+                                  {u"complete"_s, r.complete},
+                                  {u"max_sustainable_hz"_s, r.maxSustainableHz()},
+                                  {u"mb_per_s"_s, r.megabytesPerSecond()},
+                                  {u"rates"_s, points}});
+    }
+    QString why;
+    if (AtomicFile::write(QDir(m_dir).filePath(throughputFileName()),
+                          QJsonDocument(QJsonObject {{u"sizes"_s, sizes}}).toJson(), &why, false))
+        return true;
+    qCWarning(lcDemo).noquote() << why;
+    return false;
+}
+
+QList<ThroughputResult> ExperimentRunner::readThroughput(const QString& directory)
+{
+    QList<ThroughputResult> results;
+    QFile f(QDir(directory).filePath(throughputFileName()));
+    if (!f.open(QIODevice::ReadOnly))
+        return results;
+    const QJsonArray sizes
+        = QJsonDocument::fromJson(f.read(kMaxStateBytes)).object().value(u"sizes"_s).toArray();
+    for (const QJsonValue& v : sizes) {
+        const QJsonObject o = v.toObject();
+        ThroughputResult r;
+        r.payloadBytes = o.value(u"payload_bytes"_s).toInt();
+        r.level = o.value(u"level"_s).toString().left(256);
+        r.complete = o.value(u"complete"_s).toBool();
+        for (const QJsonValue& pv : o.value(u"rates"_s).toArray()) {
+            const QJsonObject po = pv.toObject();
+            ThroughputPoint p;
+            p.rateHz = po.value(u"rate_hz"_s).toDouble();
+            p.samples = qint64(po.value(u"samples"_s).toDouble());
+            p.expected = qint64(po.value(u"expected"_s).toDouble());
+            p.dropped = qint64(po.value(u"dropped"_s).toDouble());
+            p.p50Ms = po.value(u"p50_ms"_s).toDouble();
+            p.p99Ms = po.value(u"p99_ms"_s).toDouble();
+            p.sustainable = po.value(u"sustainable"_s).toBool();
+            if (r.points.size() < 1000)
+                r.points << p;
+        }
+        if (results.size() < ExperimentPlan::kMaxCells)
+            results << r;
+    }
+    return results;
 }

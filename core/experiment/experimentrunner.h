@@ -21,6 +21,30 @@ struct CellStatus
     static QString stateName(State s);
 };
 
+/// One rate of the throughput step: what arrived in its window.
+struct ThroughputPoint
+{
+    double rateHz = 0;
+    qint64 samples = 0; ///< complete samples in the window
+    qint64 expected = 0; ///< rate x window
+    qint64 dropped = 0;
+    double p50Ms = 0; ///< of the total
+    double p99Ms = 0;
+    bool sustainable = false;
+};
+
+/// The throughput step of one payload size: rates up to the first one not sustained.
+struct ThroughputResult
+{
+    int payloadBytes = 0;
+    QString level; ///< as the plan writes it, or the bytes
+    QList<ThroughputPoint> points;
+    bool complete = false;
+    /// The highest rate sustained (0: none) and the payload bytes per second it carries.
+    double maxSustainableHz() const;
+    double megabytesPerSecond() const { return maxSustainableHz() * payloadBytes / 1e6; }
+};
+
 /// Runs an experiment plan cell after cell into a folder: each cell its own lab (servers or the
 /// given ones, bridges, relays for its link profile, nodes), the warm-up, then the samples recorded
 /// as DIR/runs/<cell>.bsrun with the cell's levels in the run's metadata. DIR/experiment.json says
@@ -60,6 +84,10 @@ public:
     QString directory() const { return m_dir; }
 
     static QString stateFileName() { return QStringLiteral("experiment.json"); }
+    static QString throughputFileName() { return QStringLiteral("throughput.json"); }
+    /// What DIR/throughput.json holds (empty when the plan has no throughput step or it has not run).
+    static QList<ThroughputResult> readThroughput(const QString& directory);
+    const QList<ThroughputResult>& throughput() const { return m_throughput; }
     static QString planFileName() { return QStringLiteral("plan.yaml"); }
     /// The statuses DIR/experiment.json holds, in the plan's order of cells (ids matched).
     static std::optional<QList<CellStatus>> readState(const QString& directory, const ExperimentPlan& plan,
@@ -69,6 +97,8 @@ signals:
     void cellStarted(int index);
     void cellFinished(int index); ///< complete or failed; see statuses()
     void progress(int index, qint64 samples, bool warmingUp);
+    void probeStarted(int payloadBytes, double rateHz); ///< a rate of the throughput step
+    void probeFinished(const ThroughputPoint& point);
     void finished(bool allComplete);
 
 private:
@@ -78,6 +108,12 @@ private:
     void poll();
     void endCell(CellStatus::State state, const QString& reason);
     bool writeState(QString* error = nullptr) const;
+    bool startLab(const CellSettings& settings, int seed, QString* why);
+    // The throughput step, after the cells: per payload size, rates up to the first not sustained.
+    void nextProbe();
+    void pollProbe();
+    void endProbe(const ThroughputPoint& point);
+    bool writeThroughput() const;
 
     ExperimentPlan m_plan;
     QByteArray m_planText;
@@ -87,4 +123,8 @@ private:
     int m_current = -1;
     bool m_stopping = false;
     std::unique_ptr<Cell> m_cell;
+    QList<ThroughputResult> m_throughput;
+    QList<CellSettings> m_probeSettings; ///< per size: the first cell's settings with that payload
+    int m_probeSize = -1; ///< while a probe runs
+    bool m_throughputDone = false;
 };

@@ -79,7 +79,7 @@ public:
     void release()
     {
         const qint64 now = nowNs();
-        while (!m_queue.empty() && m_queue.front().first <= now + 200'000) { // within 0.2 ms: now
+        while (!m_queue.empty() && m_queue.front().first <= now + 50'000) { // within 50 µs: now
             const QByteArray& b = m_queue.front().second;
             if (m_to->state() != QAbstractSocket::UnconnectedState) // while connecting, Qt keeps it
                 m_to->write(b);
@@ -111,7 +111,9 @@ private:
             return;
         }
         const qint64 waitNs = std::max<qint64>(m_queue.front().first - nowNs(), 0);
-        m_timer.start(int((waitNs + 500'000) / 1'000'000)); // nearest ms: no bias either way
+        // Whole milliseconds rounded down, then zero-timers for the rest: a QTimer fires at the
+        // earliest on its millisecond, so rounding up (or to nearest) would add half a ms a hop.
+        m_timer.start(int(waitNs / 1'000'000));
     }
 
     QTcpSocket* m_from;
