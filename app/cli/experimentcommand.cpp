@@ -2,8 +2,8 @@
 #include "experimentcommand.h"
 
 #include "app/cli/clioutput.h"
-#include "base/yamllimits.h"
 #include "experiment/experimentrunner.h"
+#include "latency/rundata.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -87,21 +87,14 @@ int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
     }
     const QString path = parser.positionalArguments().first();
     QString why;
-    const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
-    if (!bytes) {
-        err(why);
-        return ExitUsage;
-    }
-    std::optional<ExperimentPlan> plan
-        = ExperimentPlan::fromYaml(*bytes, QFileInfo(path).absolutePath(), &why);
+    std::optional<ExperimentPlan> plan = ExperimentPlan::load(path, &why, &request->planText);
     if (!plan) {
-        err(path + u": "_s + why);
+        err(why);
         return ExitUsage;
     }
     if (plan->name.isEmpty())
         plan->name = QFileInfo(path).completeBaseName();
     request->plan = *plan;
-    request->planText = *bytes;
     return -1;
 }
 
@@ -125,13 +118,10 @@ void printCell(const ExperimentRunner& runner, int index, const QString& event)
 {
     const ExperimentCell& cell = runner.plan().cells[index];
     const CellStatus& s = runner.statuses()[index];
-    QJsonArray levels;
-    for (const auto& [factor, level] : cell.levels)
-        levels.append(QJsonArray {factor, level});
     QJsonObject o {{u"event"_s, event},
                    {u"index"_s, index},
                    {u"cell"_s, cell.id()},
-                   {u"levels"_s, levels},
+                   {u"levels"_s, RunInfo::levelsJson(cell.levels)},
                    {u"state"_s, CellStatus::stateName(s.state)}};
     if (event == u"finished"_s) {
         o.insert(u"samples"_s, double(s.samples));

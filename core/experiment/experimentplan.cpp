@@ -492,7 +492,7 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
     return plan;
 }
 
-std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString* error)
+std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString* error, QByteArray* text)
 {
     QString why;
     const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
@@ -500,7 +500,7 @@ std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString*
         = bytes ? fromYaml(*bytes, QFileInfo(path).absolutePath(), &why) : std::nullopt;
     if (!plan && error)
         *error = bytes ? path + u": "_s + why : why;
-    if (plan && plan->name.isEmpty())
-        plan->name = QFileInfo(path).completeBaseName();
+    if (plan && text)
+        *text = *bytes;
     return plan;
 }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "experimentreport.h"
 
-#include "base/yamllimits.h"
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"
 #include "record/runfile.h"
@@ -90,22 +89,8 @@ QJsonObject statsJson(const LatencyStats& s)
 QJsonArray throughputJson(const QList<ThroughputResult>& results)
 {
     QJsonArray out;
-    for (const ThroughputResult& r : results) {
-        QJsonArray rates;
-        for (const ThroughputPoint& p : r.points)
-            rates.append(QJsonObject {{u"rate_hz"_s, p.rateHz},
-                                      {u"samples"_s, double(p.samples)},
-                                      {u"expected"_s, double(p.expected)},
-                                      {u"dropped"_s, double(p.dropped)},
-                                      {u"p50_ms"_s, p.p50Ms},
-                                      {u"sustainable"_s, p.sustainable}});
-        out.append(QJsonObject {{u"level"_s, r.level},
-                                {u"payload_bytes"_s, r.payloadBytes},
-                                {u"max_sustainable_hz"_s, r.maxSustainableHz()},
-                                {u"mb_per_s"_s, r.megabytesPerSecond()},
-                                {u"complete"_s, r.complete},
-                                {u"rates"_s, rates}});
-    }
+    for (const ThroughputResult& r : results)
+        out.append(r.toJson());
     return out;
 }
 
@@ -133,13 +118,10 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
     };
     const QDir dir(directory);
     QString why;
-    const std::optional<QByteArray> text
-        = YamlLimits::readFile(dir.filePath(ExperimentRunner::planFileName()), &why);
-    if (!text)
-        return fail(why);
-    std::optional<ExperimentPlan> plan = ExperimentPlan::fromYaml(*text, directory, &why);
+    std::optional<ExperimentPlan> plan
+        = ExperimentPlan::load(dir.filePath(ExperimentRunner::planFileName()), &why);
     if (!plan)
-        return fail(dir.filePath(ExperimentRunner::planFileName()) + u": "_s + why);
+        return fail(why);
     const std::optional<QList<CellStatus>> statuses = ExperimentRunner::readState(directory, *plan, &why);
     if (!statuses)
         return fail(why);
@@ -544,11 +526,8 @@ QByteArray ExperimentReport::toJson() const
     };
     QJsonArray cells;
     for (const Cell& c : m_cells) {
-        QJsonArray levels;
-        for (const auto& [factor, level] : c.cell.levels)
-            levels.append(QJsonArray {factor, level});
         QJsonObject o {{u"id"_s, c.cell.id()},
-                       {u"levels"_s, levels},
+                       {u"levels"_s, RunInfo::levelsJson(c.cell.levels)},
                        {u"state"_s, CellStatus::stateName(c.status.state)},
                        {u"run"_s, c.status.run},
                        {u"groups"_s, groupStats(c.groups)}};

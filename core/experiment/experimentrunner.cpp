@@ -8,6 +8,7 @@
 #include "latency/latencyengine.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"
+#include "record/runfile.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -63,11 +64,6 @@ bool makeTlsFiles(const QString& dir, QString* error)
                 u"-extfile"_s, u"server.ext"_s});
 }
 
-void removeRunFile(const QString& path)
-{
-    for (const char* suffix : {"", "-wal", "-shm", "-journal"})
-        QFile::remove(path + QLatin1String(suffix));
-}
 } // namespace
 
 QString CellStatus::stateName(State s)
@@ -114,7 +110,7 @@ ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QSt
 {
     m_statuses.resize(m_plan.cells.size());
     for (qsizetype i = 0; i < m_plan.cells.size(); ++i)
-        m_statuses[i].run = u"runs/%1.bsrun"_s.arg(m_plan.cells[i].id());
+        m_statuses[i].run = runPathOf(m_plan.cells[i]);
 }
 
 ExperimentRunner::~ExperimentRunner()
@@ -216,7 +212,7 @@ void ExperimentRunner::beginCell(int index)
 
     m_cell = std::make_unique<Cell>();
     m_cell->runPath = QDir(m_dir).filePath(status.run);
-    removeRunFile(m_cell->runPath); // what a cut-off attempt left
+    RunFile::remove(m_cell->runPath); // what a cut-off attempt left
     QString why;
     if (!startLab(cell.settings, index, &why)) {
         endCell(CellStatus::Failed, why);
@@ -394,13 +390,10 @@ bool ExperimentRunner::writeState(QString* error) const
     for (qsizetype i = 0; i < m_plan.cells.size(); ++i) {
         const ExperimentCell& cell = m_plan.cells[i];
         const CellStatus& s = m_statuses[i];
-        QJsonArray levels;
-        for (const auto& [factor, level] : cell.levels)
-            levels.append(QJsonArray {factor, level});
         cells.append(QJsonObject {
             {u"id"_s, cell.id()},
             {u"label"_s, cell.label()},
-            {u"levels"_s, levels},
+            {u"levels"_s, RunInfo::levelsJson(cell.levels)},
             {u"state"_s, CellStatus::stateName(s.state)},
             {u"reason"_s, s.reason},
             {u"run"_s, s.run},
@@ -444,7 +437,7 @@ std::optional<QList<CellStatus>> ExperimentRunner::readState(const QString& dire
     QList<CellStatus> statuses;
     for (const ExperimentCell& cell : plan.cells) {
         CellStatus s;
-        s.run = u"runs/%1.bsrun"_s.arg(cell.id());
+        s.run = runPathOf(cell);
         const QJsonObject o = byId.value(cell.id());
         const QString state = o.value(u"state"_s).toString();
         for (CellStatus::State st :
@@ -581,26 +574,30 @@ void ExperimentRunner::endProbe(const ThroughputPoint& point)
         QTimer::singleShot(0, this, &ExperimentRunner::nextProbe);
 }
 
+QJsonObject ThroughputResult::toJson() const
+{
+    QJsonArray rates;
+    for (const ThroughputPoint& p : points)
+        rates.append(QJsonObject {{u"rate_hz"_s, p.rateHz},
+                                  {u"samples"_s, double(p.samples)},
+                                  {u"expected"_s, double(p.expected)},
+                                  {u"dropped"_s, double(p.dropped)},
+                                  {u"p50_ms"_s, p.p50Ms},
+                                  {u"p99_ms"_s, p.p99Ms},
+                                  {u"sustainable"_s, p.sustainable}});
+    return {{u"payload_bytes"_s, payloadBytes},
+            {u"level"_s, level},
+            {u"complete"_s, complete},
+            {u"max_sustainable_hz"_s, maxSustainableHz()},
+            {u"mb_per_s"_s, megabytesPerSecond()},
+            {u"rates"_s, rates}};
+}
+
 bool ExperimentRunner::writeThroughput() const
 {
     QJsonArray sizes;
-    for (const ThroughputResult& r : m_throughput) {
-        QJsonArray points;
-        for (const ThroughputPoint& p : r.points)
-            points.append(QJsonObject {{u"rate_hz"_s, p.rateHz},
-                                       {u"samples"_s, double(p.samples)},
-                                       {u"expected"_s, double(p.expected)},
-                                       {u"dropped"_s, double(p.dropped)},
-                                       {u"p50_ms"_s, p.p50Ms},
-                                       {u"p99_ms"_s, p.p99Ms},
-                                       {u"sustainable"_s, p.sustainable}});
-        sizes.append(QJsonObject {{u"payload_bytes"_s, r.payloadBytes},
-                                  {u"level"_s, r.level},
-                                  {u"complete"_s, r.complete},
-                                  {u"max_sustainable_hz"_s, r.maxSustainableHz()},
-                                  {u"mb_per_s"_s, r.megabytesPerSecond()},
-                                  {u"rates"_s, points}});
-    }
+    for (const ThroughputResult& r : m_throughput)
+        sizes.append(r.toJson());
     QString why;
     if (AtomicFile::write(QDir(m_dir).filePath(throughputFileName()),
                           QJsonDocument(QJsonObject {{u"sizes"_s, sizes}}).toJson(), &why, false))

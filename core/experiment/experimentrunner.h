@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <QDateTime>
+#include <QJsonObject>
 #include <QObject>
 #include <QString>
 
@@ -43,6 +44,7 @@ struct ThroughputResult
     /// The highest rate sustained (0: none) and the payload bytes per second it carries.
     double maxSustainableHz() const;
     double megabytesPerSecond() const { return maxSustainableHz() * payloadBytes / 1e6; }
+    QJsonObject toJson() const; ///< as DIR/throughput.json and the report's JSON have it
 };
 
 /// Runs an experiment plan cell after cell into a folder: each cell its own lab (servers or the
@@ -85,6 +87,11 @@ public:
 
     static QString stateFileName() { return QStringLiteral("experiment.json"); }
     static QString throughputFileName() { return QStringLiteral("throughput.json"); }
+    /// A cell's run file, relative to the experiment's folder.
+    static QString runPathOf(const ExperimentCell& cell)
+    {
+        return QStringLiteral("runs/%1.bsrun").arg(cell.id());
+    }
     /// What DIR/throughput.json holds (empty when the plan has no throughput step or it has not run).
     static QList<ThroughputResult> readThroughput(const QString& directory);
     const QList<ThroughputResult>& throughput() const { return m_throughput; }

@@ -78,3 +78,23 @@ RunData RunData::fromSamples(const Pipeline& pipeline, const std::vector<std::ve
         *sharedFirstStamps = shared;
     return run;
 }
+
+QJsonArray RunInfo::levelsJson(const QList<std::pair<QString, QString>>& levels)
+{
+    QJsonArray a;
+    for (const auto& [factor, level] : levels)
+        a.append(QJsonArray {factor, level});
+    return a;
+}
+
+QList<std::pair<QString, QString>> RunInfo::levelsFromJson(const QJsonArray& json, qsizetype maxLevels,
+                                                           qsizetype maxText)
+{
+    QList<std::pair<QString, QString>> levels;
+    for (const QJsonValue& v : json) {
+        const QJsonArray pair = v.toArray();
+        if (pair.size() == 2 && pair[0].isString() && pair[1].isString() && levels.size() < maxLevels)
+            levels.append({pair[0].toString().left(maxText), pair[1].toString().left(maxText)});
+    }
+    return levels;
+}

@@ -4,6 +4,7 @@
 #include "latency/pipeline.h"
 
 #include <functional>
+#include <QJsonArray>
 #include <QStringList>
 #include <vector>
 
@@ -30,6 +31,12 @@ struct RunInfo
     QString experiment;
     QString cell;
     QList<std::pair<QString, QString>> factors;
+    /// Levels as JSON, [["qos", "1"], ["payload", "50%"]], as run files and experiments write them.
+    static QJsonArray levelsJson(const QList<std::pair<QString, QString>>& levels);
+    /// Back from JSON: what is not a pair of strings is left out; at most `maxLevels`, each text cut
+    /// at `maxText` characters.
+    static QList<std::pair<QString, QString>> levelsFromJson(const QJsonArray& json, qsizetype maxLevels,
+                                                             qsizetype maxText);
 
     /// Fills `host` and `version` with this machine and this Bridgescope, where they are empty.
     void describeThisMachine();

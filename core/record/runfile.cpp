@@ -88,31 +88,20 @@ QString metaText(const QHash<QString, QVariant>& meta, const QString& key)
 constexpr qsizetype kMaxFactorText = 256;
 constexpr qsizetype kMaxFactors = 64;
 
-/// An experiment cell's levels as JSON: [["qos", "1"], ["payload", "50%"]].
+/// An experiment cell's levels, as JSON text; bounded when read back.
 QString factorsJson(const QList<std::pair<QString, QString>>& factors)
 {
-    if (factors.isEmpty())
-        return QString();
-    QJsonArray a;
-    for (const auto& [factor, level] : factors)
-        a.append(QJsonArray {factor, level});
-    return QString::fromUtf8(QJsonDocument(a).toJson(QJsonDocument::Compact));
+    return factors.isEmpty()
+        ? QString()
+        : QString::fromUtf8(QJsonDocument(RunInfo::levelsJson(factors)).toJson(QJsonDocument::Compact));
 }
 
-/// The levels back; what is not a list of two strings is left out, and so is what passes the bounds.
 QList<std::pair<QString, QString>> factorsOf(const QString& json)
 {
-    QList<std::pair<QString, QString>> factors;
     if (json.isEmpty() || json.size() > kMaxFactors * 2 * (kMaxFactorText + 8))
-        return factors;
-    const QJsonArray a = QJsonDocument::fromJson(json.toUtf8()).array();
-    for (const QJsonValue& v : a) {
-        const QJsonArray pair = v.toArray();
-        if (pair.size() == 2 && pair[0].isString() && pair[1].isString() && factors.size() < kMaxFactors)
-            factors.append(
-                {pair[0].toString().left(kMaxFactorText), pair[1].toString().left(kMaxFactorText)});
-    }
-    return factors;
+        return {};
+    return RunInfo::levelsFromJson(QJsonDocument::fromJson(json.toUtf8()).array(), kMaxFactors,
+                                   kMaxFactorText);
 }
 /// The run's watch events, by start; none from a run made before they were recorded.
 bool readEvents(QSqlQuery& q, std::vector<RecordedEvent>* events, QString* error)
@@ -537,6 +526,12 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
     return run;
 }
 
+void RunFile::remove(const QString& path)
+{
+    for (const QString& suffix : {QString(), u"-wal"_s, u"-shm"_s, u"-journal"_s})
+        QFile::remove(path + suffix);
+}
+
 bool RunFile::write(const QString& path, const RunData& run, QString* error, const Progress& progress)
 {
     // The rename at the end would replace a FIFO, a device or a read-only file like any other.
@@ -546,10 +541,7 @@ bool RunFile::write(const QString& path, const RunData& run, QString* error, con
         return false;
     }
     const QString temp = path + u".part-"_s + QUuid::createUuid().toString(QUuid::Id128).left(8);
-    const auto cleanUp = [&] {
-        for (const QString& suffix : {QString(), u"-wal"_s, u"-shm"_s, u"-journal"_s})
-            QFile::remove(temp + suffix);
-    };
+    const auto cleanUp = [&] { remove(temp); };
     {
         RunWriter writer;
         if (!writer.create(temp, run.info, error)) {

@@ -27,6 +27,8 @@ public:
 
     static std::optional<RunData> read(const QString& path, QString* error = nullptr,
                                        const Progress& progress = {});
+    /// Deletes a run file and its SQLite side files (-wal, -shm, -journal).
+    static void remove(const QString& path);
     /// Writes a whole run (an import) atomically: to a temporary file, renamed when complete.
     static bool write(const QString& path, const RunData& run, QString* error = nullptr,
                       const Progress& progress = {});

@@ -13,13 +13,9 @@ using namespace Qt::StringLiterals;
 struct WatchMetrics::Private
 {
     std::unique_ptr<MetricsServer> server;
-    /// What a link's series keep between updates: counters never go back, and the histogram
-    /// grows by the samples taken since the last update.
-    struct Link
-    {
-        MetricsSnapshot::Link series;
-    };
-    QHash<QString, Link> links; ///< by link id
+    /// Each link's series by link id, kept between updates: counters never go back, and the
+    /// histogram grows by the samples taken since the last update.
+    QHash<QString, MetricsSnapshot::Link> links;
 
     static QByteArray labelsOf(const LinkDef& def)
     {
@@ -65,9 +61,9 @@ void WatchMetrics::update(LinkMonitor& monitor)
         auto it = d->links.find(id);
         if (it == d->links.end()) {
             it = d->links.insert(id, {});
-            it->series.labels = Private::labelsOf(def);
+            it->labels = Private::labelsOf(def);
         }
-        MetricsSnapshot::Link& l = it->series;
+        MetricsSnapshot::Link& l = *it;
         const LinkFigures f = monitor.figures(i);
         counter(l.sourceMessages, f.source.messages);
         counter(l.destinationMessages, f.destination.messages);
