@@ -1742,6 +1742,10 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
         <source>two cells are the same: %1</source>
         <translation>zwei Zellen sind gleich: %1</translation>
     </message>
+    <message>
+        <source>%1: a plan holds no credentials (it is copied next to its runs): give the broker without user and password</source>
+        <translation>%1: ein Plan enthält keine Zugangsdaten (er wird neben seinen Messläufen abgelegt): den Broker ohne Benutzer und Passwort angeben</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentReport</name>

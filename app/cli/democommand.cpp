@@ -2,6 +2,7 @@
 #include "democommand.h"
 
 #include "app/cli/clioutput.h"
+#include "base/secrets.h"
 #include "demo/demolab.h"
 #include "record/runrecorder.h"
 #include "report/report.h"
@@ -105,7 +106,7 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         return ExitFailed;
     }
     err(Demo::tr("broker %1, ROS master %2, configs in %3")
-            .arg(lab.brokerUrl(), lab.rosMasterUri(), lab.directory()));
+            .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri(), lab.directory()));
     const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &why);
     if (!pipeline) {
         err(why);

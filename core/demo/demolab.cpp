@@ -4,6 +4,7 @@
 #include "base/atomicfile.h"
 #include "base/logging.h"
 #include "base/loopbackports.h"
+#include "base/secrets.h"
 #include "config/bridgeconfig.h"
 #include "config/configwriter.h"
 #include "latency/pipeline.h"
@@ -98,7 +99,10 @@ struct DemoLab::Private
             ::prctl(PR_SET_PDEATHSIG, SIGTERM);
         });
         p->start(program, args);
-        qCDebug(lcDemo).noquote() << "started" << name << program << args.join(u' ');
+        QStringList shown; // a --broker URL may carry credentials: never in a log
+        for (const QString& a : args)
+            shown << (a.contains(u"://"_s) ? Secrets::urlWithoutCredentials(a) : a);
+        qCDebug(lcDemo).noquote() << "started" << name << program << shown.join(u' ');
         QProcess* raw = p.get();
         processes.push_back(std::move(p));
         names << name;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentplan.h"
 
+#include "base/secrets.h"
 #include "base/yamllimits.h"
 #include "base/yamltree.h"
 
@@ -344,6 +345,10 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
             plan.rosMasterUri = text(s["ros_master"]);
             if (plan.brokerUrl.isEmpty() || plan.rosMasterUri.isEmpty())
                 return fail(tr("%1: servers given are {broker: URL, ros_master: URI}").arg(where(s.Mark())));
+            if (Secrets::urlWithoutCredentials(plan.brokerUrl) != plan.brokerUrl)
+                return fail(tr("%1: a plan holds no credentials (it is copied next to its runs): give the "
+                               "broker without user and password")
+                                .arg(where(s.Mark())));
         } else if (text(s) != u"embedded"_s) {
             return fail(tr("%1: servers is embedded or {broker: URL, ros_master: URI}").arg(where(s.Mark())));
         }

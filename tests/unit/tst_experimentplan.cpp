@@ -131,6 +131,9 @@ private slots:
             "  queue_size: [1,2,3,4,5,6,7,8,9,10]\n  detection_ms: [1,2,3,4,5,6,7,8,9,10,11]\n")
                                   << u"more than 10000 cells"_s;
         QTest::newRow("not yaml") << QByteArray("factors: [\n") << u"line"_s;
+        QTest::newRow("credentials") << QByteArray(
+            "servers: {broker: \"tcp://lab:secret@127.0.0.1:1883\", ros_master: http://127.0.0.1:11311/}\n")
+                                     << u"line 1: a plan holds no credentials"_s;
         QTest::newRow("not a map") << QByteArray("- 1\n") << u"a plan is a mapping"_s;
     }
 
