@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <unistd.h>
 #include <variant>
 
@@ -195,8 +197,26 @@ int experimentReport(const ReportRequest& request)
         return ExitUsage;
     }
     switch (request.format) {
-    case ReportFormats::Format::Markdown:
-        return writeText(request, report->toMarkdown(*statistics).toUtf8());
+    case ReportFormats::Format::Markdown: {
+        // Written to a file, the Markdown links each factor's ECDF, written beside it as SVG.
+        QString prefix;
+        if (!request.output.isEmpty()) {
+            const QFileInfo file(request.output);
+            prefix = file.dir().filePath(file.completeBaseName());
+            for (int t = 0; t < int(report->tables().size()); ++t) {
+                const QByteArray svg = report->ecdfSvg(t);
+                if (!svg.isEmpty()
+                    && !AtomicFile::write(ExperimentReport::figurePath(prefix, report->tables()[t].factor),
+                                          svg, &why, false)) {
+                    err(why);
+                    return ExitUsage;
+                }
+            }
+        }
+        return writeText(request, report->toMarkdown(*statistics, prefix).toUtf8());
+    }
+    case ReportFormats::Format::Pdf:
+        return writeText(request, report->toPdf(*statistics));
     case ReportFormats::Format::Latex:
         return writeText(request, report->toTex(*statistics).toUtf8());
     case ReportFormats::Format::Html:
@@ -205,10 +225,8 @@ int experimentReport(const ReportRequest& request)
         return writeText(request, report->toCsv().toUtf8());
     case ReportFormats::Format::Json:
         return writeText(request, report->toJson());
-    default:
-        err(ReportText::tr("an experiment's report is md, tex, html, csv or json (pdf is not written yet)"));
-        return ExitUsage;
     }
+    return ExitUsage;
 }
 
 /// Renders the report and writes it to the file or stdout; nothing is written when cancelled.

@@ -3,7 +3,10 @@
 
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"
+#include "latency/palette.h"
 #include "record/runfile.h"
+#include "report/ecdfsvg.h"
+#include "report/reportpdf.h"
 
 #include <QDir>
 #include <QFile>
@@ -102,7 +105,67 @@ QString texEscaped(QString s)
     s.replace(u"↔"_s, u"$\\leftrightarrow$"_s);
     return s;
 }
+/// The paper's Table I: every stage a row, every complete cell a column, means; the total last.
+struct MethodTable
+{
+    QStringList columns; ///< the cells' labels
+    QList<std::pair<QString, QStringList>> rows; ///< (stage, mean per column); the last is the total
+};
+
+MethodTable methodTable(const ExperimentReport& r)
+{
+    MethodTable t;
+    QList<const ExperimentReport::Cell*> cells;
+    for (const ExperimentReport::Cell& c : r.cells())
+        if (c.stages.size() == r.stageLabels().size() && !c.groups.isEmpty()) {
+            cells << &c;
+            t.columns << c.cell.label();
+        }
+    for (qsizetype s = 0; s < r.stageLabels().size(); ++s) {
+        QStringList values;
+        for (const ExperimentReport::Cell* c : cells)
+            values << number(c->stages[s].mean);
+        t.rows.append({r.stageLabels()[s], values});
+    }
+    QStringList totals;
+    for (const ExperimentReport::Cell* c : cells)
+        totals << number(c->groups.last().mean);
+    t.rows.append({ExperimentReport::tr("total"), totals});
+    return t;
+}
+
+QString fileSafe(const QString& s)
+{
+    QString out;
+    for (const QChar c : s)
+        out += c.isLetterOrNumber() || c == u'-' || c == u'_' ? c : u'_';
+    return out;
+}
 } // namespace
+
+bool ExperimentReport::hasMethodTable() const
+{
+    return m_plan.factors.contains(u"bridge"_s) && !m_stageLabels.isEmpty();
+}
+
+QString ExperimentReport::figurePath(const QString& figurePrefix, const QString& factor)
+{
+    return figurePrefix + u'-' + fileSafe(factor) + u"-ecdf.svg"_s;
+}
+
+QByteArray ExperimentReport::ecdfSvg(int table, int width, int height) const
+{
+    if (table < 0 || table >= m_tables.size())
+        return {};
+    QList<EcdfSvg::Curve> curves;
+    const FactorTable& t = m_tables[table];
+    for (const Column& c : t.columns)
+        if (c.total && c.total->count() > 0)
+            curves.append({t.factor + u' ' + c.level, seriesColor(int(curves.size())), c.total.get()});
+    if (curves.isEmpty())
+        return {};
+    return EcdfSvg::render(curves, width, height, tr("Total latency by %1").arg(t.factor));
+}
 
 bool ExperimentReport::isExperiment(const QString& path)
 {
@@ -135,7 +198,7 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
     // Per cell and group the samples' group values, in ns (exact statistics, as the engine's).
     std::vector<std::vector<LatencySeries>> values(std::size_t(plan->cells.size()));
     for (qsizetype i = 0; i < plan->cells.size(); ++i) {
-        Cell cell {plan->cells[i], (*statuses)[i], {}, {}};
+        Cell cell {plan->cells[i], (*statuses)[i], {}, {}, {}, {}};
         if (cell.status.state == CellStatus::Complete) {
             const std::optional<RunData> run = RunFile::read(dir.filePath(cell.status.run), &why);
             if (!run) {
@@ -146,14 +209,23 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
                 if (!pipeline) {
                     pipeline = run->info.pipeline;
                     r.m_groups = groupsOf(*pipeline);
+                    for (int s = 0; s < pipeline->stageCount(); ++s)
+                        r.m_stageLabels << pipeline->stageLabel(s);
                 }
                 std::vector<LatencySeries> series(std::size_t(r.m_groups.size()));
+                std::vector<LatencySeries> stages(std::size_t(pipeline->stageCount()));
+                for (LatencySeries& s : series)
+                    s.setWindow(0); // every sample of the run, not the last 600
+                for (LatencySeries& s : stages)
+                    s.setWindow(0);
                 LatencyEngine engine(run->info.pipeline);
                 engine.setWindow(0);
                 if (run->info.timeoutNs > 0)
                     engine.setTimeoutNs(run->info.timeoutNs);
                 const QList<Group>& groups = r.m_groups;
-                engine.setSampleListener([&series, &groups](qint64, const std::vector<qint64>& t) {
+                engine.setSampleListener([&series, &stages, &groups](qint64, const std::vector<qint64>& t) {
+                    for (std::size_t s = 0; s < stages.size() && s + 1 < t.size(); ++s)
+                        stages[s].append(t[s + 1] - t[s]);
                     for (qsizetype g = 0; g < groups.size(); ++g) {
                         qint64 sum = groups[g].total ? t.back() - t.front() : 0;
                         for (int s : groups[g].stages)
@@ -164,6 +236,9 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
                 run->replay(engine);
                 for (const LatencySeries& s : series)
                     cell.groups << s.stats();
+                for (const LatencySeries& s : stages)
+                    cell.stages << s.stats();
+                cell.total = std::make_shared<const LatencySeries>(series.back()); // the total is last
                 values[std::size_t(i)] = std::move(series);
             }
         }
@@ -183,7 +258,7 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
             auto column = std::find_if(table.columns.begin(), table.columns.end(),
                                        [&](const Column& c) { return c.level == level; });
             if (column == table.columns.end()) {
-                table.columns.append({level, {}, {}});
+                table.columns.append({level, {}, {}, {}});
                 column = table.columns.end() - 1;
             }
             if (!r.m_cells[i].groups.isEmpty())
@@ -197,6 +272,8 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
                     for (qint64 v : values[std::size_t(i)][std::size_t(g)].values())
                         pooled.append(v);
                 column.groups << pooled.stats();
+                if (r.m_groups[g].total && !column.cells.isEmpty())
+                    column.total = std::make_shared<const LatencySeries>(std::move(pooled));
             }
         }
         r.m_tables << table;
@@ -345,7 +422,7 @@ QStringList ExperimentReport::findings() const
     return out;
 }
 
-QString ExperimentReport::toMarkdown(const QList<Statistic>& statistics) const
+QString ExperimentReport::toMarkdown(const QList<Statistic>& statistics, const QString& figurePrefix) const
 {
     int complete = 0;
     int failed = 0;
@@ -388,6 +465,25 @@ QString ExperimentReport::toMarkdown(const QList<Statistic>& statistics) const
             sources << u"%1: %2"_s.arg(c.level, ids.isEmpty() ? tr("no complete cell") : ids.join(u", "_s));
         }
         md += tr("Cells: %1.").arg(sources.join(u"; "_s)) + u"\n\n"_s;
+        if (!figurePrefix.isEmpty() && !ecdfSvg(int(&t - m_tables.data())).isEmpty())
+            md += u"![%1](%2)\n\n"_s.arg(tr("Total latency by %1").arg(t.factor),
+                                         QFileInfo(figurePath(figurePrefix, t.factor)).fileName());
+    }
+    if (hasMethodTable()) {
+        const MethodTable m = methodTable(*this);
+        md += u"## "_s + tr("Per stage (Table I layout, mean, ms)") + u"\n\n| "_s + tr("stage") + u" | "_s
+            + m.columns.join(u" | "_s) + u" |\n| ---"_s + QString(u" | ---:"_s).repeated(m.columns.size())
+            + u" |\n"_s;
+        for (qsizetype i = 0; i < m.rows.size(); ++i) {
+            const bool total = i + 1 == m.rows.size();
+            QStringList values = m.rows[i].second;
+            if (total)
+                for (QString& v : values)
+                    v = u"**"_s + v + u"**"_s;
+            md += u"| "_s + (total ? u"**"_s + m.rows[i].first + u"**"_s : m.rows[i].first) + u" | "_s
+                + values.join(u" | "_s) + u" |\n"_s;
+        }
+        md += u"\n"_s;
     }
     if (!m_throughput.isEmpty()) {
         md += u"## "_s + tr("Throughput") + u"\n\n"_s
@@ -457,10 +553,29 @@ QString ExperimentReport::toTex(const QList<Statistic>& statistics) const
             tex += u"\\bottomrule\n\\end{tabular}\n\\end{table}\n\n"_s;
         }
     }
+    if (hasMethodTable()) {
+        const MethodTable m = methodTable(*this);
+        tex += u"\\begin{table}\n\\centering\n\\caption{%1}\n\\begin{tabular}{l%2}\n\\toprule\n"_s.arg(
+            texEscaped(tr("Mean latencies [ms] by method")), QString(u"r"_s).repeated(m.columns.size()));
+        tex += tr("stage");
+        for (const QString& c : m.columns)
+            tex += u" & "_s + texEscaped(c);
+        tex += u" \\\\\n\\midrule\n"_s;
+        for (qsizetype i = 0; i < m.rows.size(); ++i) {
+            const bool total = i + 1 == m.rows.size();
+            if (total)
+                tex += u"\\midrule\n"_s;
+            tex += total ? u"\\textbf{%1}"_s.arg(texEscaped(m.rows[i].first)) : texEscaped(m.rows[i].first);
+            for (const QString& v : m.rows[i].second)
+                tex += u" & "_s + (total ? u"\\textbf{%1}"_s.arg(v) : v);
+            tex += u" \\\\\n"_s;
+        }
+        tex += u"\\bottomrule\n\\end{tabular}\n\\end{table}\n\n"_s;
+    }
     return tex;
 }
 
-QString ExperimentReport::toHtml(const QList<Statistic>& statistics) const
+QString ExperimentReport::toHtml(const QList<Statistic>& statistics, bool figures) const
 {
     // The Markdown's tables as HTML: one page, no scripts, every text escaped.
     QString html
@@ -489,6 +604,37 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics) const
             }
             html += u"</table>\n"_s;
         }
+        if (figures)
+            html += u"<figure>%1</figure>\n"_s.arg(QString::fromUtf8(ecdfSvg(int(&t - m_tables.data()))));
+    }
+    if (hasMethodTable()) {
+        const MethodTable m = methodTable(*this);
+        html += u"<h2>%1</h2>\n<table><tr><th>%2</th>"_s.arg(
+            tr("Per stage (Table I layout, mean, ms)").toHtmlEscaped(), tr("stage").toHtmlEscaped());
+        for (const QString& c : m.columns)
+            html += u"<th>%1</th>"_s.arg(c.toHtmlEscaped());
+        html += u"</tr>\n"_s;
+        for (qsizetype i = 0; i < m.rows.size(); ++i) {
+            const bool total = i + 1 == m.rows.size();
+            const auto bold = [total](const QString& v) { return total ? u"<b>%1</b>"_s.arg(v) : v; };
+            html += u"<tr><td>%1</td>"_s.arg(bold(m.rows[i].first.toHtmlEscaped()));
+            for (const QString& v : m.rows[i].second)
+                html += u"<td class=\"n\">%1</td>"_s.arg(bold(v));
+            html += u"</tr>\n"_s;
+        }
+        html += u"</table>\n"_s;
+    }
+    if (!m_throughput.isEmpty()) {
+        html += u"<h2>%1</h2>\n<table><tr><th>%2</th><th>%3</th><th>%4</th><th>MB/s</th></tr>\n"_s.arg(
+            tr("Throughput"), tr("payload"), tr("bytes"), tr("highest rate (Hz)"));
+        for (const ThroughputResult& t : m_throughput)
+            html
+                += u"<tr><td>%1</td><td class=\"n\">%2</td><td class=\"n\">%3</td><td class=\"n\">%4</td></tr>\n"_s
+                       .arg(t.level.toHtmlEscaped())
+                       .arg(t.payloadBytes)
+                       .arg(t.maxSustainableHz() > 0 ? QString::number(t.maxSustainableHz()) : u"–"_s)
+                       .arg(number(t.megabytesPerSecond()));
+        html += u"</table>\n"_s;
     }
     html += u"<h2>%1</h2>\n<table><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th></tr>\n"_s.arg(
         tr("Cells"), tr("cell"), tr("levels"), tr("state"), tr("samples"), tr("run"));
@@ -507,6 +653,18 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics) const
         html += u"</ul>\n"_s;
     }
     return html + u"</body></html>\n"_s;
+}
+
+QByteArray ExperimentReport::toPdf(const QList<Statistic>& statistics) const
+{
+    QList<QByteArray> figures;
+    for (int t = 0; t < int(m_tables.size()); ++t)
+        if (const QByteArray svg = ecdfSvg(t); !svg.isEmpty())
+            figures << svg;
+    QString body = toHtml(statistics, false);
+    // The rich-text subset: the body's content only (QTextDocument ignores the style sheet).
+    body = body.mid(body.indexOf(u"<body>"_s));
+    return ReportPdf::render(tr("Experiment report: %1").arg(m_plan.name), body, figures);
 }
 
 QByteArray ExperimentReport::toJson() const

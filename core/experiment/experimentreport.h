@@ -2,8 +2,10 @@
 #pragma once
 
 #include "experiment/experimentrunner.h"
+#include "latency/latencyseries.h"
 #include "latency/latencystats.h"
 
+#include <memory>
 #include <optional>
 #include <QCoreApplication>
 #include <QStringList>
@@ -32,6 +34,8 @@ public:
         ExperimentCell cell;
         CellStatus status;
         QList<LatencyStats> groups; ///< per group (empty when the run could not be read)
+        QList<LatencyStats> stages; ///< per stage of the pipeline (the Table I layout)
+        std::shared_ptr<const LatencySeries> total; ///< every sample's total, ns (null: not read)
         QString problem; ///< why its run was left out
     };
     struct Column
@@ -39,6 +43,7 @@ public:
         QString level;
         QList<int> cells; ///< complete cells at this level
         QList<LatencyStats> groups;
+        std::shared_ptr<const LatencySeries> total; ///< the pooled totals, ns, for the ECDF
     };
     struct FactorTable
     {
@@ -56,15 +61,31 @@ public:
     const QList<Cell>& cells() const { return m_cells; }
     const QList<FactorTable>& tables() const { return m_tables; }
     const QList<ThroughputResult>& throughput() const { return m_throughput; }
+    /// The pipeline's stage labels (of the first complete cell's run).
+    const QStringList& stageLabels() const { return m_stageLabels; }
+    /// A method comparison (the plan varies the bridge): the report adds the paper's Table I
+    /// layout, every stage a row and every complete cell a column.
+    bool hasMethodTable() const;
     QStringList findings() const;
+
+    /// The totals' ECDFs of factor table `table`, one curve per level (SVG, as the run reports').
+    QByteArray ecdfSvg(int table, int width = 720, int height = 400) const;
+    /// Where toMarkdown() links the ECDF of `factor` when given `figurePrefix` ("out/report"):
+    /// "out/report-qos-ecdf.svg".
+    static QString figurePath(const QString& figurePrefix, const QString& factor);
 
     static std::optional<QList<Statistic>> parseStatistics(const QString& list, QString* error);
     static QString statisticName(Statistic s);
     static double value(const LatencyStats& s, Statistic statistic);
 
-    QString toMarkdown(const QList<Statistic>& statistics) const;
+    /// With `figurePrefix`, each factor's ECDF is linked as figurePath(figurePrefix, factor)
+    /// (relative to the Markdown file: by its file name); the caller writes the SVGs.
+    QString toMarkdown(const QList<Statistic>& statistics, const QString& figurePrefix = QString()) const;
     QString toTex(const QList<Statistic>& statistics) const;
-    QString toHtml(const QList<Statistic>& statistics) const;
+    /// One page; `figures`: each factor's ECDF inline as SVG (browsers), or none (Qt rich text).
+    QString toHtml(const QList<Statistic>& statistics, bool figures = true) const;
+    /// A4: the HTML's tables, then every factor's ECDF. Needs a QGuiApplication.
+    QByteArray toPdf(const QList<Statistic>& statistics) const;
     QByteArray toJson() const;
     QString toCsv() const; ///< one row per cell and group: every statistic
 
@@ -75,4 +96,5 @@ private:
     QList<Cell> m_cells;
     QList<FactorTable> m_tables;
     QList<ThroughputResult> m_throughput;
+    QStringList m_stageLabels;
 };

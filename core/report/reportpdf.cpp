@@ -15,6 +15,14 @@ using namespace Qt::StringLiterals;
 
 QByteArray ReportPdf::render(const Report& report)
 {
+    QList<QByteArray> figures;
+    if (report.hasLatency())
+        figures << ReportFormats::ecdfSvg(report);
+    return render(report.title(), ReportFormats::htmlBody(report, true), figures);
+}
+
+QByteArray ReportPdf::render(const QString& title, const QString& bodyHtml, const QList<QByteArray>& figures)
+{
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
     {
@@ -22,7 +30,7 @@ QByteArray ReportPdf::render(const Report& report)
         pdf.setPageSize(QPageSize(QPageSize::A4));
         pdf.setPageMargins(QMarginsF(18, 16, 18, 16), QPageLayout::Millimeter);
         pdf.setResolution(300);
-        pdf.setTitle(report.title());
+        pdf.setTitle(title);
         pdf.setCreator(u"Bridgescope "_s + QStringLiteral(BRIDGESCOPE_VERSION));
         QPainter painter(&pdf);
         const QRectF page(QPointF(0, 0), QSizeF(pdf.pageLayout().paintRectPixels(pdf.resolution()).size()));
@@ -35,7 +43,7 @@ QByteArray ReportPdf::render(const Report& report)
         doc.setDefaultStyleSheet(u"h1 { font-size: 15pt; } h2 { font-size: 11pt; margin-top: 10px; } "
                                  "h3 { font-size: 10pt; } th { color: #444; } "
                                  ".note { color: #555; font-size: 7.5pt; }"_s);
-        doc.setHtml(ReportFormats::htmlBody(report, true));
+        doc.setHtml(bodyHtml);
         doc.setPageSize(page.size());
         const int pages = doc.pageCount();
         for (int i = 0; i < pages; ++i) {
@@ -47,18 +55,20 @@ QByteArray ReportPdf::render(const Report& report)
             painter.restore();
         }
 
-        // The figure below the tables, or on a page of its own when it does not fit.
-        if (report.hasLatency()) {
-            const QByteArray svg = ReportFormats::ecdfSvg(report);
+        // The figures below the tables, each on a new page when it does not fit.
+        double y = doc.size().height() - page.height() * (pages - 1) + page.height() * 0.02;
+        for (const QByteArray& svg : figures) {
             QSvgRenderer renderer(svg);
             const QSizeF natural = renderer.defaultSize();
+            if (natural.isEmpty())
+                continue;
             const double height = page.width() * natural.height() / natural.width();
-            double y = doc.size().height() - page.height() * (pages - 1) + page.height() * 0.02;
             if (y + height > page.height()) {
                 pdf.newPage();
                 y = 0;
             }
             renderer.render(&painter, QRectF(0, y, page.width(), height));
+            y += height + page.height() * 0.02;
         }
     }
     return buffer.data();

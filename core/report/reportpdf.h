@@ -3,6 +3,8 @@
 
 #include <QByteArray>
 #include <QCoreApplication>
+#include <QList>
+#include <QString>
 
 class Report;
 
@@ -14,4 +16,7 @@ class ReportPdf
 public:
     /// The PDF's bytes (written by the caller, atomically). Needs a QGuiApplication.
     static QByteArray render(const Report& report);
+    /// Any report as such a PDF: `bodyHtml` (Qt rich text) paginated, then each SVG figure drawn
+    /// full width below it (on a new page when it does not fit).
+    static QByteArray render(const QString& title, const QString& bodyHtml, const QList<QByteArray>& figures);
 };

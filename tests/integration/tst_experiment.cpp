@@ -244,6 +244,42 @@ private slots:
                  qPrintable(finished[0].value(u"reason"_s).toString()));
         QCOMPARE(finished[1].value(u"state"_s).toString(), u"complete"_s);
         QVERIFY(finished[1].value(u"samples"_s).toDouble() >= 20);
+
+        // A method comparison: the Table I layout (every stage a row, the cells as columns, whose
+        // stages add up to the total), the ECDF figure beside the Markdown, and the PDF.
+        QProcess md;
+        md.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                 {u"report"_s, out, u"--format"_s, u"md"_s, u"-o"_s, out + u"/r.md"_s});
+        QVERIFY(md.waitForFinished(60000));
+        QCOMPARE(md.exitCode(), 0);
+        QFile mdFile(out + u"/r.md"_s);
+        QVERIFY(mdFile.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(mdFile.readAll());
+        QVERIFY2(text.contains(u"](r-bridge-ecdf.svg)"_s), qPrintable(text));
+        QVERIFY(QFile::exists(out + u"/r-bridge-ecdf.svg"_s));
+        const qsizetype table = text.indexOf(u"## Per stage (Table I layout"_s);
+        QVERIFY2(table >= 0, qPrintable(text));
+        QStringList rows;
+        for (const QString& line : text.mid(table).split(u'\n').mid(2)) {
+            if (!line.startsWith(u"| "_s))
+                break;
+            rows << line;
+        }
+        QVERIFY2(rows.size() >= 4 && rows[0].contains(u"templated"_s), qPrintable(rows.join(u'\n')));
+        double stages = 0;
+        for (qsizetype r = 2; r + 1 < rows.size(); ++r)
+            stages += rows[r].split(u'|').at(2).trimmed().toDouble();
+        const double total = rows.last().split(u'|').at(2).trimmed().remove(u'*').toDouble();
+        QVERIFY2(total > 0 && std::abs(stages - total) <= 0.06 * double(rows.size()),
+                 qPrintable(u"%1 vs %2"_s.arg(stages).arg(total)));
+        QProcess pdf;
+        pdf.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                  {u"report"_s, out, u"--format"_s, u"pdf"_s, u"-o"_s, out + u"/r.pdf"_s});
+        QVERIFY(pdf.waitForFinished(60000));
+        QVERIFY2(pdf.exitCode() == 0, pdf.readAllStandardError().constData());
+        QFile pdfFile(out + u"/r.pdf"_s);
+        QVERIFY(pdfFile.open(QIODevice::ReadOnly));
+        QCOMPARE(pdfFile.read(5), QByteArray("%PDF-"));
     }
 
     // The throughput step: rates go up until one is not sustained; the report has the highest.

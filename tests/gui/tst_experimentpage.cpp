@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// The Experiments page against real labs: a typed plan checked as it is edited, a 2-cell plan run
+// by the page's child process (embedded mosquitto and rosmaster per cell), its grid coloured by
+// state, the live totals equal to those in the run files, a finished cell opened on the Measure
+// page, the report exported, Resume of a finished folder, and Stop with clean-up.
+#include "app/gui/mainwindow.h"
+#include "experiment/experimentreport.h"
+#include "latency/latencyseriesset.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/experiment/experimentpage.h"
+#include "widgets/measure/measurepage.h"
+#include "widgets/measure/runbar.h"
+
+#include <QDir>
+#include <QFile>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBrowser>
+
+using namespace Qt::StringLiterals;
+
+class TestExperimentPage : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+    static QString stateOf(const ExperimentPage& page, int row)
+    {
+        return page.cellGrid()->item(row, page.stateColumn())->text();
+    }
+
+private slots:
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
+
+    void aPlanIsCheckedAsItIsTyped()
+    {
+        ExperimentPage page;
+        page.setPlanText(u"samples: 10\nfactors:\n  qos: [0, 7]\n"_s);
+        QVERIFY2(page.planStatus()->text().contains(u"Not a plan"_s), qPrintable(page.planStatus()->text()));
+        QVERIFY(!page.runButton()->isEnabled());
+        QString error;
+        QVERIFY(!page.run(false, &error));
+
+        page.setPlanText(u"name: grid\nsamples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 50%]\n"_s);
+        QVERIFY2(page.planStatus()->text().contains(u"4 cell"_s), qPrintable(page.planStatus()->text()));
+        QCOMPARE(page.cellGrid()->rowCount(), 4);
+        // The two factors, state, samples, median, p99, the cell.
+        QCOMPARE(page.cellGrid()->columnCount(), 7);
+        QCOMPARE(page.cellGrid()->horizontalHeaderItem(0)->text(), u"qos"_s);
+        QCOMPARE(page.cellGrid()->item(3, 1)->text(), u"50%"_s);
+        QCOMPARE(page.cellGrid()->item(3, 6)->text(), u"004-qos-1-payload-50pct"_s);
+        QCOMPARE(stateOf(page, 0), u"pending"_s);
+        QVERIFY(page.runButton()->isEnabled());
+        QVERIFY(!page.resumeButton()->isEnabled()); // no folder with an experiment
+        // Without a folder it says so instead of running somewhere.
+        QVERIFY(!page.run(false, &error));
+        QVERIFY2(error.contains(u"folder"_s), qPrintable(error));
+    }
+
+    void aPlanRunsWithItsCellsLiveAndReported()
+    {
+        MainWindow window;
+        window.show();
+        ExperimentPage& page = *window.experimentPage();
+        page.setProgram(QStringLiteral(BRIDGESCOPE_BINARY));
+        window.pages()->setCurrentWidget(&page);
+        page.setPlanText(u"name: page test\nsamples: 40\nwarmup: 3\ndefaults: {payload: 20000}\n"
+                         "factors:\n  qos: [0, 1]\n"_s);
+        const QString out = m_dir.filePath(u"page"_s);
+        page.setFolder(out);
+        QSignalSpy finished(&page, &ExperimentPage::experimentFinished);
+        QString error;
+        QVERIFY2(page.run(false, &error), qPrintable(error));
+        QVERIFY(page.isRunning());
+        QVERIFY(!page.runButton()->isEnabled());
+        QVERIFY(page.stopButton()->isEnabled());
+        QVERIFY(page.planEditor()->isReadOnly());
+        // The first cell shows as running while it records, with its totals coming in.
+        QVERIFY(QTest::qWaitFor([&] { return stateOf(page, 0) == u"running"_s; }, 60000));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                const LatencySeries* s = page.liveSeries()->find(u"qos 0"_s);
+                return (s && s->count() > 0) || !finished.isEmpty();
+            },
+            60000));
+        QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 240000));
+        QCOMPARE(finished.first().first().toInt(), 0);
+        QCOMPARE(stateOf(page, 0), u"complete"_s);
+        QCOMPARE(stateOf(page, 1), u"complete"_s);
+        QCOMPARE(page.progressBar()->value(), 2);
+        QVERIFY(page.cellGrid()->item(0, 0)->background().color().green() > 0); // coloured by state
+        QVERIFY(!page.log()->toPlainText().isEmpty());
+
+        // The report comes from the folder, and the live totals are those in the run files.
+        QVERIFY(QTest::qWaitFor([&] { return page.report().has_value(); }, 30000));
+        const ExperimentReport& report = *page.report();
+        QCOMPARE(report.cells().size(), 2);
+        for (int i = 0; i < 2; ++i) {
+            const ExperimentReport::Cell& c = report.cells()[i];
+            QVERIFY(c.total);
+            const LatencySeries* live = page.liveSeries()->find(page.cells()[i].label());
+            QVERIFY(live);
+            QCOMPARE(live->totalCount(), c.total->totalCount());
+            QVERIFY2(std::abs(live->stats().mean - c.total->stats().mean) < 1e-3,
+                     qPrintable(u"%1 vs %2"_s.arg(live->stats().mean).arg(c.total->stats().mean)));
+        }
+        QCOMPARE(page.chart()->series().size(), 2);
+        QVERIFY(page.cellGrid()->item(1, page.stateColumn() + 2)->text().toDouble() > 0); // median
+        QVERIFY2(page.reportView()->toPlainText().contains(u"qos"_s), qPrintable(page.reportView()->toPlainText()));
+
+        // A finished cell opens on the Measure page.
+        emit page.cellGrid()->cellActivated(1, 0);
+        QCOMPARE(window.pages()->currentWidget(), window.measurePage());
+        QVERIFY2(window.measurePage()->runBar()->statusLabel()->text().contains(u"002-qos-1"_s),
+                 qPrintable(window.measurePage()->runBar()->statusLabel()->text()));
+        window.measurePage()->runBar()->backToLive();
+        window.pages()->setCurrentWidget(&page);
+
+        // The report in every format; Markdown with its figure beside it.
+        for (const QString& name : {u"r.md"_s, u"r.pdf"_s, u"r.html"_s, u"r.tex"_s, u"r.csv"_s, u"r.json"_s})
+            QVERIFY2(page.exportReport(m_dir.filePath(name), &error), qPrintable(name + u": "_s + error));
+        QFile md(m_dir.filePath(u"r.md"_s));
+        QVERIFY(md.open(QIODevice::ReadOnly));
+        QVERIFY(md.readAll().contains("](r-qos-ecdf.svg)"));
+        QVERIFY(QFile::exists(m_dir.filePath(u"r-qos-ecdf.svg"_s)));
+        QFile pdf(m_dir.filePath(u"r.pdf"_s));
+        QVERIFY(pdf.open(QIODevice::ReadOnly));
+        QVERIFY(pdf.read(5) == "%PDF-");
+        QVERIFY(!page.exportReport(m_dir.filePath(u"r.doc"_s), &error));
+
+        // Run again into the same folder is refused; Resume finds nothing left to do.
+        QVERIFY(!page.run(false, &error));
+        QVERIFY2(error.contains(u"Resume"_s), qPrintable(error));
+        QVERIFY(page.resumeButton()->isEnabled());
+        finished.clear();
+        QVERIFY2(page.run(true, &error), qPrintable(error));
+        QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
+        QCOMPARE(finished.first().first().toInt(), 0);
+        QCOMPARE(stateOf(page, 0), u"complete"_s);
+
+        // Opening the folder afresh shows the same cells and states.
+        ExperimentPage other;
+        QVERIFY2(other.openFolder(out, &error), qPrintable(error));
+        QCOMPARE(other.cellGrid()->rowCount(), 2);
+        QCOMPARE(stateOf(other, 1), u"complete"_s);
+        QVERIFY(QTest::qWaitFor([&] { return other.liveSeries()->find(u"qos 1"_s) != nullptr; }, 30000));
+    }
+
+    void stopCleansUpAndLeavesTheCellToResume()
+    {
+        ExperimentPage page;
+        page.setProgram(QStringLiteral(BRIDGESCOPE_BINARY));
+        page.setPlanText(u"name: stopped\nsamples: 5000\nwarmup: 3\ndefaults: {payload: 1000}\n"
+                         "factors:\n  qos: [0]\n"_s);
+        const QString out = m_dir.filePath(u"stopped"_s);
+        page.setFolder(out);
+        QSignalSpy finished(&page, &ExperimentPage::experimentFinished);
+        QString error;
+        QVERIFY2(page.run(false, &error), qPrintable(error));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                const LatencySeries* s = page.liveSeries()->find(u"qos 0"_s);
+                return (s && s->count() >= 5) || !finished.isEmpty();
+            },
+            60000));
+        QVERIFY(finished.isEmpty());
+        page.stop();
+        QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
+        QCOMPARE(finished.first().first().toInt(), 130);
+        QCOMPARE(stateOf(page, 0), u"pending"_s);
+        QVERIFY(page.runButton()->isEnabled());
+        QVERIFY(page.resumeButton()->isEnabled());
+        QString why;
+        const auto plan = ExperimentPlan::load(QDir(out).filePath(u"plan.yaml"_s), &why);
+        QVERIFY2(plan, qPrintable(why));
+        const auto state = ExperimentRunner::readState(out, *plan, &why);
+        QVERIFY2(state, qPrintable(why));
+        QCOMPARE(state->first().state, CellStatus::Pending);
+    }
+};
+
+QTEST_MAIN(TestExperimentPage)
+#include "tst_experimentpage.moc"

@@ -1,0 +1,854 @@
+// SPDX-License-Identifier: MIT
+#include "experimentpage.h"
+
+#include "base/atomicfile.h"
+#include "latency/latencyseriesset.h"
+#include "widgets/common/ecdfchart.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPointer>
+#include <QProgressBar>
+#include <QScrollBar>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTabWidget>
+#include <QTextBrowser>
+#include <QThread>
+#include <QTimer>
+#include <QVBoxLayout>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr int kMaxLogLines = 2000;
+constexpr qsizetype kMaxLineBytes = 4 * 1024 * 1024; ///< a longer line from the child is cut off
+
+QColor stateColor(CellStatus::State s)
+{
+    switch (s) {
+    case CellStatus::Pending:
+        return {};
+    case CellStatus::Running:
+        return QColor(0x4e, 0x79, 0xa7, 70); // the palette's blue, light
+    case CellStatus::Complete:
+        return QColor(0x59, 0xa1, 0x4f, 70);
+    case CellStatus::Failed:
+        return QColor(0xe1, 0x57, 0x59, 90);
+    }
+    return {};
+}
+
+QString duration(qint64 seconds)
+{
+    if (seconds < 120)
+        return ExperimentPage::tr("%1 s").arg(seconds);
+    if (seconds < 7200)
+        return ExperimentPage::tr("%1 min").arg((seconds + 30) / 60);
+    return ExperimentPage::tr("%1 h %2 min").arg(seconds / 3600).arg(seconds % 3600 / 60);
+}
+} // namespace
+
+ExperimentPage::ExperimentPage(QWidget* parent)
+    : QWidget(parent)
+    , m_editor(new QPlainTextEdit(this))
+    , m_planStatus(new QLabel(this))
+    , m_folder(new QLineEdit(this))
+    , m_examples(new QComboBox(this))
+    , m_grid(new QTableWidget(this))
+    , m_views(new QTabWidget(this))
+    , m_chart(new EcdfChart(this))
+    , m_reportView(new QTextBrowser(this))
+    , m_statistic(new QComboBox(this))
+    , m_run(new QPushButton(tr("&Run"), this))
+    , m_resume(new QPushButton(tr("Res&ume"), this))
+    , m_stop(new QPushButton(tr("S&top"), this))
+    , m_export(new QPushButton(tr("&Export Report…"), this))
+    , m_progress(new QProgressBar(this))
+    , m_status(new QLabel(this))
+    , m_log(new QPlainTextEdit(this))
+    , m_check(new QTimer(this))
+    , m_redraw(new QTimer(this))
+    , m_series(std::make_unique<LatencySeriesSet>())
+{
+    setObjectName(u"experimentPage"_s);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(createPlanPane());
+    split->addWidget(createCellsPane());
+    split->addWidget(createViewsPane());
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    split->setStretchFactor(2, 4);
+    split->setSizes({300, 420, 560}); // the plan is narrow; the cells and the chart need room
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(createRunBar());
+    layout->addWidget(split, 1);
+
+    m_check->setSingleShot(true);
+    m_check->setInterval(300);
+    connect(m_check, &QTimer::timeout, this, &ExperimentPage::checkPlan);
+    connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
+        m_planEdited = true;
+        m_check->start();
+    });
+    m_chart->setSource(m_series.get());
+    m_redraw->setInterval(250);
+    connect(m_redraw, &QTimer::timeout, this, [this] {
+        if (m_series->revision() == m_drawn)
+            return;
+        m_drawn = m_series->revision();
+        QStringList ids;
+        for (int i = 0; i < int(m_cells.size()); ++i)
+            if (m_series->find(seriesName(i)))
+                ids << LatencySeriesSet::idOf(seriesName(i));
+        m_chart->setSeries(ids);
+        m_chart->refresh();
+    });
+    m_redraw->start();
+    m_status->setText(tr("Open a plan or an example, choose a folder, and run it."));
+    updateButtons();
+}
+
+ExperimentPage::~ExperimentPage()
+{
+    if (m_process && m_process->state() != QProcess::NotRunning) {
+        // The child stops its lab's servers and bridges; a window closing waits for that, briefly.
+        m_process->disconnect(this);
+        m_process->terminate();
+        if (!m_process->waitForFinished(15000))
+            m_process->kill();
+        m_process->waitForFinished(2000);
+    }
+    if (m_reportThread) {
+        m_reportThread->disconnect(this);
+        m_reportThread->wait();
+    }
+}
+
+/// The run controls: the folder, run, resume, stop, progress.
+QLayout* ExperimentPage::createRunBar()
+{
+    auto* bar = new QHBoxLayout;
+    auto* folderLabel = new QLabel(tr("&Folder:"), this);
+    folderLabel->setBuddy(m_folder);
+    m_folder->setPlaceholderText(tr("where the runs go (a new folder, or one to resume)"));
+    m_folder->setClearButtonEnabled(true);
+    connect(m_folder, &QLineEdit::editingFinished, this, &ExperimentPage::loadState);
+    auto* browse = new QPushButton(tr("&Browse…"), this);
+    connect(browse, &QPushButton::clicked, this, &ExperimentPage::chooseFolder);
+    m_run->setToolTip(tr("Run every cell of the plan into a new folder (Ctrl+R)"));
+    m_run->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_resume->setToolTip(tr("Go on with the folder: skip the complete cells, redo the others"));
+    m_stop->setToolTip(tr("Stop after cleaning up; Resume goes on"));
+    const auto start = [this](bool resume) {
+        QString error;
+        if (!run(resume, &error))
+            QMessageBox::warning(this, tr("Experiment"), error);
+    };
+    connect(m_run, &QPushButton::clicked, this, [start] { start(false); });
+    connect(m_resume, &QPushButton::clicked, this, [start] { start(true); });
+    connect(m_stop, &QPushButton::clicked, this, &ExperimentPage::stop);
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setMaximumWidth(220);
+    bar->addWidget(folderLabel);
+    bar->addWidget(m_folder, 1);
+    bar->addWidget(browse);
+    bar->addWidget(m_run);
+    bar->addWidget(m_resume);
+    bar->addWidget(m_stop);
+    bar->addWidget(m_progress);
+    return bar;
+}
+
+/// The plan: open, examples, the editor and what its text makes.
+QWidget* ExperimentPage::createPlanPane()
+{
+    auto* pane = new QWidget(this);
+    auto* layout = new QVBoxLayout(pane);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* buttons = new QHBoxLayout;
+    auto* open = new QPushButton(tr("&Open Plan…"), pane);
+    connect(open, &QPushButton::clicked, this, &ExperimentPage::choosePlan);
+    auto* save = new QPushButton(tr("Save Plan &As…"), pane);
+    connect(save, &QPushButton::clicked, this, &ExperimentPage::savePlanAs);
+    auto* openFolderButton = new QPushButton(tr("Open F&older…"), pane);
+    openFolderButton->setToolTip(tr("An experiment's folder: its plan, cells and report"));
+    connect(openFolderButton, &QPushButton::clicked, this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Open Experiment"), folder());
+        QString error;
+        if (!dir.isEmpty() && !openFolder(dir, &error))
+            QMessageBox::warning(this, tr("Open Experiment"), error);
+    });
+    m_examples->addItem(tr("Examples…"));
+    const QDir examples(u":/examples"_s);
+    for (const QString& name : examples.entryList({u"experiment-*.yaml"_s}, QDir::Files, QDir::Name))
+        m_examples->addItem(name, examples.filePath(name));
+    m_examples->setEnabled(m_examples->count() > 1);
+    m_examples->setToolTip(tr("The plans that reproduce the shapes of the paper's Tables I-V"));
+    connect(m_examples, &QComboBox::activated, this, &ExperimentPage::loadExample);
+    buttons->addWidget(open);
+    buttons->addWidget(save);
+    buttons->addWidget(openFolderButton);
+    buttons->addStretch(1);
+    m_editor->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_editor->setPlaceholderText(tr("name: QoS study\nsamples: 600\nfactors:\n  qos: [0, 1, 2]"));
+    m_editor->setAccessibleName(tr("Experiment plan"));
+    m_planStatus->setWordWrap(true);
+    m_planStatus->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addLayout(buttons);
+    layout->addWidget(m_examples);
+    layout->addWidget(m_editor, 1);
+    layout->addWidget(m_planStatus);
+    return pane;
+}
+
+/// The cells: one row each, coloured by state; a finished one opens on the Measure page.
+QWidget* ExperimentPage::createCellsPane()
+{
+    auto* split = new QSplitter(Qt::Vertical, this);
+    m_grid->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_grid->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_grid->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_grid->verticalHeader()->setVisible(false);
+    m_grid->horizontalHeader()->setStretchLastSection(true);
+    m_grid->setAccessibleName(tr("Cells"));
+    m_grid->setToolTip(tr("Double-click or Enter: open a finished cell's run on the Measure page"));
+    connect(m_grid, &QTableWidget::cellActivated, this, [this](int row, int) { openCell(row); });
+    m_log->setReadOnly(true);
+    m_log->setMaximumBlockCount(kMaxLogLines);
+    m_log->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_log->setAccessibleName(tr("Experiment log"));
+    m_status->setWordWrap(true);
+    auto* top = new QWidget(split);
+    auto* layout = new QVBoxLayout(top);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_grid, 1);
+    layout->addWidget(m_status);
+    split->addWidget(top);
+    split->addWidget(m_log);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    return split;
+}
+
+/// The live ECDF and the report.
+QWidget* ExperimentPage::createViewsPane()
+{
+    auto* report = new QWidget(this);
+    auto* layout = new QVBoxLayout(report);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* row = new QHBoxLayout;
+    auto* statisticLabel = new QLabel(tr("S&tatistic:"), report);
+    statisticLabel->setBuddy(m_statistic);
+    for (const auto s : {ExperimentReport::Statistic::Mean, ExperimentReport::Statistic::Median,
+                         ExperimentReport::Statistic::Std, ExperimentReport::Statistic::P99})
+        m_statistic->addItem(ExperimentReport::statisticName(s), int(s));
+    connect(m_statistic, &QComboBox::currentIndexChanged, this, &ExperimentPage::showReport);
+    auto* refresh = new QPushButton(tr("Re&fresh"), report);
+    connect(refresh, &QPushButton::clicked, this, &ExperimentPage::refreshReport);
+    connect(m_export, &QPushButton::clicked, this, &ExperimentPage::chooseExport);
+    row->addWidget(statisticLabel);
+    row->addWidget(m_statistic);
+    row->addStretch(1);
+    row->addWidget(refresh);
+    row->addWidget(m_export);
+    layout->addLayout(row);
+    layout->addWidget(m_reportView, 1);
+    m_views->addTab(m_chart, tr("Totals (ECDF)"));
+    m_views->addTab(report, tr("Report"));
+    return m_views;
+}
+
+bool ExperimentPage::openPlan(const QString& path, QString* error)
+{
+    QString why;
+    QByteArray text;
+    if (!ExperimentPlan::load(path, &why, &text) && text.isEmpty()) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    // A plan with an error opens too: the editor is where it gets fixed.
+    setPlanText(QString::fromUtf8(text));
+    setPlanPath(path);
+    if (folder().isEmpty())
+        setFolder(QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName()));
+    return true;
+}
+
+bool ExperimentPage::openFolder(const QString& directory, QString* error)
+{
+    if (!ExperimentReport::isExperiment(directory)) {
+        if (error)
+            *error = tr("%1 is not an experiment's folder (it has no %2)")
+                         .arg(directory, ExperimentRunner::stateFileName());
+        return false;
+    }
+    setFolder(directory);
+    if (!openPlan(QDir(directory).filePath(ExperimentRunner::planFileName()), error))
+        return false;
+    checkPlan();
+    loadState();
+    return true;
+}
+
+void ExperimentPage::setPlanText(const QString& text)
+{
+    m_editor->setPlainText(text);
+    m_planEdited = false;
+    checkPlan();
+}
+
+QString ExperimentPage::planText() const
+{
+    return m_editor->toPlainText();
+}
+
+void ExperimentPage::setPlanPath(const QString& path)
+{
+    m_planPath = path;
+    m_planEdited = false;
+    checkPlan();
+}
+
+void ExperimentPage::setFolder(const QString& directory)
+{
+    m_folder->setText(QDir::toNativeSeparators(directory));
+    loadState();
+}
+
+QString ExperimentPage::folder() const
+{
+    return QDir::fromNativeSeparators(m_folder->text().trimmed());
+}
+
+/// Parses the editor's text: the cells it makes, or the error with its line.
+void ExperimentPage::checkPlan()
+{
+    m_check->stop();
+    if (isRunning())
+        return; // the grid is the running experiment's
+    QString why;
+    const QString base = m_planPath.isEmpty() ? QDir::currentPath() : QFileInfo(m_planPath).path();
+    m_plan = ExperimentPlan::fromYaml(planText().toUtf8(), base, &why);
+    if (!m_plan) {
+        m_planStatus->setText(planText().trimmed().isEmpty() ? QString() : tr("Not a plan: %1").arg(why));
+        m_planStatus->setStyleSheet(u"color: #c0392b;"_s);
+        updateButtons();
+        return;
+    }
+    if (m_plan->name.isEmpty())
+        m_plan->name = m_planPath.isEmpty() ? tr("experiment") : QFileInfo(m_planPath).completeBaseName();
+    double seconds = 0;
+    for (const ExperimentCell& c : std::as_const(m_plan->cells))
+        seconds += m_plan->expectedSeconds(c);
+    m_planStatus->setStyleSheet(QString());
+    m_planStatus->setText(tr("%1: %n cell(s) of %2 samples, about %3", nullptr, int(m_plan->cells.size()))
+                              .arg(m_plan->name)
+                              .arg(m_plan->samples)
+                              .arg(duration(qint64(seconds))));
+    m_cells = m_plan->cells;
+    m_statuses = QList<CellStatus>(m_cells.size());
+    m_series = std::make_unique<LatencySeriesSet>();
+    m_chart->setSource(m_series.get());
+    m_chart->setSeries({});
+    m_drawn = ~quint64(0);
+    rebuildGrid();
+    loadState();
+}
+
+/// The state of the folder's cells, when the folder holds this plan's experiment.
+void ExperimentPage::loadState()
+{
+    if (isRunning() || !m_plan)
+        return;
+    const QString dir = folder();
+    if (!ExperimentReport::isExperiment(dir)) {
+        for (int i = 0; i < int(m_statuses.size()); ++i) {
+            m_statuses[i] = CellStatus();
+            updateRow(i);
+        }
+        m_report.reset();
+        m_reportView->setPlainText(tr("No report yet: the folder holds no experiment."));
+        updateButtons();
+        return;
+    }
+    QString why;
+    if (const auto state = ExperimentRunner::readState(dir, *m_plan, &why)) {
+        m_statuses = *state;
+        for (int i = 0; i < int(m_statuses.size()); ++i)
+            updateRow(i);
+        m_grid->resizeColumnsToContents();
+        showCounts();
+    } else {
+        m_status->setText(why);
+    }
+    updateButtons();
+    refreshReport();
+}
+
+void ExperimentPage::rebuildGrid()
+{
+    // The levels first (what tells the cells apart), then where each stands, its id last.
+    const QStringList factors = m_plan ? m_plan->factors : QStringList();
+    QStringList headers = factors;
+    headers << tr("State") << tr("Samples") << tr("Total median") << tr("Total p99") << tr("Cell");
+    m_grid->clear();
+    m_grid->setColumnCount(int(headers.size()));
+    m_grid->setHorizontalHeaderLabels(headers);
+    m_grid->setRowCount(int(m_cells.size()));
+    for (int i = 0; i < int(m_cells.size()); ++i) {
+        const ExperimentCell& c = m_cells[i];
+        for (int f = 0; f < int(factors.size()); ++f) {
+            QString level;
+            for (const auto& [factor, value] : c.levels)
+                if (factor == factors[f])
+                    level = value;
+            m_grid->setItem(i, f, new QTableWidgetItem(level));
+        }
+        for (int col = int(factors.size()); col < m_grid->columnCount() - 1; ++col)
+            m_grid->setItem(i, col, new QTableWidgetItem);
+        m_grid->setItem(i, m_grid->columnCount() - 1, new QTableWidgetItem(c.id()));
+        updateRow(i);
+    }
+    m_grid->resizeColumnsToContents();
+}
+
+void ExperimentPage::updateRow(int row)
+{
+    if (row < 0 || row >= m_grid->rowCount() || row >= m_statuses.size())
+        return;
+    const CellStatus& s = m_statuses[row];
+    const int first = stateColumn();
+    const LatencySeries* totals = m_series->find(seriesName(row));
+    const auto ms = [](double v) { return std::isfinite(v) ? QString::number(v, 'f', 1) : QString(); };
+    const LatencyStats stats = totals ? totals->stats() : LatencyStats();
+    const QStringList texts {CellStatus::stateName(s.state),
+                             s.samples > 0 ? QString::number(s.samples) : QString(),
+                             totals ? ms(stats.median) : QString(), totals ? ms(stats.p99) : QString()};
+    for (int col = 0; col < m_grid->columnCount(); ++col) {
+        QTableWidgetItem* item = m_grid->item(row, col);
+        if (!item)
+            continue;
+        if (col >= first && col < first + texts.size()) {
+            item->setText(texts[col - first]);
+            if (col > first)
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        }
+        item->setBackground(stateColor(s.state));
+        QString tip = m_cells[row].label() + u"\n"_s + CellStatus::stateName(s.state);
+        if (!s.reason.isEmpty())
+            tip += u": "_s + s.reason;
+        if (s.state == CellStatus::Complete)
+            tip += u"\n"_s + tr("Double-click to open %1 on the Measure page").arg(s.run);
+        item->setToolTip(tip);
+    }
+}
+
+/// How many cells are done (the progress bar) and, when none runs, what that means.
+void ExperimentPage::showCounts()
+{
+    int complete = 0;
+    int failed = 0;
+    for (const CellStatus& c : std::as_const(m_statuses)) {
+        complete += c.state == CellStatus::Complete;
+        failed += c.state == CellStatus::Failed;
+    }
+    m_progress->setRange(0, std::max(1, int(m_statuses.size())));
+    m_progress->setValue(complete + failed);
+    if (!isRunning())
+        m_status->setText(tr("%1 of %2 cells complete, %3 failed.").arg(complete).arg(m_statuses.size()).arg(failed));
+}
+
+int ExperimentPage::stateColumn() const
+{
+    return m_plan ? int(m_plan->factors.size()) : 0;
+}
+
+void ExperimentPage::updateButtons()
+{
+    const bool running = isRunning();
+    const bool plan = m_plan.has_value();
+    const bool existing = ExperimentReport::isExperiment(folder());
+    m_run->setEnabled(!running && plan);
+    m_resume->setEnabled(!running && plan && existing);
+    m_stop->setEnabled(running);
+    m_editor->setReadOnly(running);
+    m_folder->setReadOnly(running);
+    m_export->setEnabled(m_report.has_value());
+}
+
+bool ExperimentPage::isRunning() const
+{
+    return m_process && m_process->state() != QProcess::NotRunning;
+}
+
+bool ExperimentPage::run(bool resume, QString* error)
+{
+    const auto fail = [error](const QString& why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (isRunning())
+        return fail(tr("An experiment is running already."));
+    checkPlan();
+    if (!m_plan)
+        return fail(m_planStatus->text());
+    const QString dir = folder();
+    if (dir.isEmpty())
+        return fail(tr("Choose the folder the experiment's runs go to."));
+    if (!resume && ExperimentReport::isExperiment(dir))
+        return fail(tr("%1 holds an experiment already: Resume goes on with it, or choose another folder.")
+                        .arg(QDir::toNativeSeparators(dir)));
+    // The child runs the plan's file: an edited or untitled plan is saved first.
+    if (m_planPath.isEmpty() || m_planEdited) {
+        if (m_planPath.isEmpty() || m_planPath.startsWith(u':')) {
+            if (!QDir().mkpath(dir))
+                return fail(tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir)));
+            m_planPath = QDir(dir).absoluteFilePath(ExperimentRunner::planFileName()); // the copy it keeps
+
+        }
+        QString why;
+        if (!AtomicFile::write(m_planPath, planText().toUtf8(), &why))
+            return fail(why);
+        m_planEdited = false;
+    }
+    QStringList args {u"experiment"_s, m_planPath, u"-o"_s, dir};
+    if (resume)
+        args << u"--resume"_s;
+    delete m_process;
+    m_process = new QProcess(this);
+    m_process->setProgram(m_program.isEmpty() ? QCoreApplication::applicationFilePath() : m_program);
+    m_process->setArguments(args);
+    connect(m_process, &QProcess::readyReadStandardOutput, this, &ExperimentPage::readOutput);
+    connect(m_process, &QProcess::readyReadStandardError, this, &ExperimentPage::readErrors);
+    connect(m_process, &QProcess::finished, this, &ExperimentPage::processFinished);
+    connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
+        if (e == QProcess::FailedToStart) {
+            m_status->setText(tr("The experiment did not start: %1").arg(m_process->errorString()));
+            updateButtons();
+        }
+    });
+    m_stdoutRest.clear();
+    m_stderrRest.clear();
+    if (!resume) {
+        m_statuses = QList<CellStatus>(m_cells.size());
+        m_series = std::make_unique<LatencySeriesSet>();
+        m_chart->setSource(m_series.get());
+        m_chart->setSeries({});
+        m_drawn = ~quint64(0);
+        for (int i = 0; i < int(m_cells.size()); ++i)
+            updateRow(i);
+    }
+    m_log->appendPlainText(u"$ bridgescope "_s + args.join(u' '));
+    showCounts();
+    m_status->setText(tr("Starting…"));
+    m_process->start();
+    m_views->setCurrentWidget(m_chart);
+    updateButtons();
+    return true;
+}
+
+void ExperimentPage::stop()
+{
+    if (!isRunning())
+        return;
+    m_status->setText(tr("Stopping after cleaning up…"));
+    m_process->terminate(); // SIGTERM: the command stops as on Ctrl+C
+}
+
+void ExperimentPage::readOutput()
+{
+    m_stdoutRest += m_process->readAllStandardOutput();
+    qsizetype end;
+    while ((end = m_stdoutRest.indexOf('\n')) >= 0) {
+        handleLine(m_stdoutRest.left(end));
+        m_stdoutRest.remove(0, end + 1);
+    }
+    if (m_stdoutRest.size() > kMaxLineBytes) // no line ever gets this long: not ours
+        m_stdoutRest.clear();
+}
+
+void ExperimentPage::readErrors()
+{
+    m_stderrRest += m_process->readAllStandardError();
+    qsizetype end;
+    while ((end = m_stderrRest.indexOf('\n')) >= 0) {
+        const QString line = QString::fromUtf8(m_stderrRest.left(end)).trimmed();
+        m_stderrRest.remove(0, end + 1);
+        if (line.isEmpty())
+            continue;
+        m_log->appendPlainText(line);
+        m_status->setText(line.left(300));
+    }
+    if (m_stderrRest.size() > kMaxLineBytes)
+        m_stderrRest.clear();
+}
+
+/// A JSON line of `bridgescope experiment`: a cell started or finished, progress with totals.
+void ExperimentPage::handleLine(const QByteArray& line)
+{
+    const QJsonObject o = QJsonDocument::fromJson(line).object();
+    const QString event = o.value(u"event"_s).toString();
+    const int i = o.value(u"index"_s).toInt(-1);
+    if (event == u"throughput"_s) {
+        m_log->appendPlainText(tr("throughput: %1 Hz, %2 of %3 samples%4")
+                                   .arg(o.value(u"rate_hz"_s).toDouble())
+                                   .arg(o.value(u"samples"_s).toDouble())
+                                   .arg(o.value(u"expected"_s).toDouble())
+                                   .arg(o.value(u"sustainable"_s).toBool() ? QString() : tr(", not sustained")));
+        return;
+    }
+    if (i < 0 || i >= m_statuses.size() || o.value(u"cell"_s).toString(m_cells[i].id()) != m_cells[i].id())
+        return; // not a cell of this plan
+    CellStatus& s = m_statuses[i];
+    if (event == u"started"_s) {
+        s = CellStatus();
+        s.state = CellStatus::Running;
+        m_series->clear(seriesName(i)); // a cell done again starts afresh
+        m_grid->selectRow(i);
+    } else if (event == u"progress"_s) {
+        s.samples = qint64(o.value(u"samples"_s).toDouble());
+        for (const QJsonValue v : o.value(u"total_ms"_s).toArray())
+            if (v.isDouble() && std::isfinite(v.toDouble()))
+                m_series->add(seriesName(i), qint64(v.toDouble() * 1e6));
+        const qint64 remaining = o.value(u"remaining_s"_s).toInteger();
+        m_status->setText(o.value(u"warming_up"_s).toBool()
+                              ? tr("Cell %1 of %2: %3, warming up; about %4 left")
+                                    .arg(i + 1)
+                                    .arg(m_cells.size())
+                                    .arg(m_cells[i].label(), duration(remaining))
+                              : tr("Cell %1 of %2: %3, %4 of %5 samples; about %6 left")
+                                    .arg(i + 1)
+                                    .arg(m_cells.size())
+                                    .arg(m_cells[i].label())
+                                    .arg(s.samples)
+                                    .arg(o.value(u"of"_s).toInt())
+                                    .arg(duration(remaining)));
+    } else if (event == u"finished"_s) {
+        s.state = o.value(u"state"_s).toString() == CellStatus::stateName(CellStatus::Complete)
+            ? CellStatus::Complete
+            : CellStatus::Failed;
+        s.samples = qint64(o.value(u"samples"_s).toDouble());
+        s.run = o.value(u"run"_s).toString().left(1000);
+        s.reason = o.value(u"reason"_s).toString().left(2000);
+        showCounts();
+    } else {
+        return;
+    }
+    updateRow(i);
+    if (event != u"progress"_s)
+        m_grid->resizeColumnsToContents();
+}
+
+void ExperimentPage::processFinished(int exitCode, QProcess::ExitStatus status)
+{
+    readOutput();
+    readErrors();
+    for (int i = 0; i < int(m_statuses.size()); ++i)
+        if (m_statuses[i].state == CellStatus::Running) { // stopped: the folder's state says pending
+            m_statuses[i].state = CellStatus::Pending;
+            updateRow(i);
+        }
+    if (status == QProcess::CrashExit)
+        m_status->setText(tr("The experiment crashed; Resume goes on with it."));
+    else if (exitCode == 0)
+        m_status->setText(tr("Every cell complete."));
+    else if (exitCode == 130)
+        m_status->setText(tr("Stopped; Resume goes on."));
+    else if (exitCode == 1)
+        m_status->setText(tr("Done, but a cell failed: see its tooltip and the log."));
+    // Otherwise (2) the command's own message is the last line shown.
+    m_log->appendPlainText(tr("exit status %1").arg(status == QProcess::CrashExit ? -1 : exitCode));
+    updateButtons();
+    refreshReport();
+    emit experimentFinished(status == QProcess::CrashExit ? -1 : exitCode);
+}
+
+/// Loads the folder's report on a worker thread; the grid's figures and the ECDF of the cells
+/// that have no live totals come from it too.
+void ExperimentPage::refreshReport()
+{
+    const QString dir = folder();
+    if (!ExperimentReport::isExperiment(dir))
+        return;
+    if (m_reportThread) {
+        m_reportAgain = true;
+        return;
+    }
+    auto result = std::make_shared<std::optional<ExperimentReport>>();
+    auto why = std::make_shared<QString>();
+    m_reportThread = QThread::create([dir, result, why] { *result = ExperimentReport::load(dir, why.get()); });
+    connect(m_reportThread, &QThread::finished, this, [this, result, why] {
+        m_reportThread->deleteLater();
+        m_reportThread = nullptr;
+        m_report = *result;
+        m_reportError = *why;
+        if (m_report && m_plan && m_report->cells().size() == m_cells.size()) {
+            for (int i = 0; i < int(m_cells.size()); ++i) {
+                const ExperimentReport::Cell& c = m_report->cells()[i];
+                if (!isRunning())
+                    m_statuses[i] = c.status;
+                if (c.total && !m_series->find(seriesName(i)))
+                    for (qint64 v : c.total->values())
+                        m_series->add(seriesName(i), v);
+                updateRow(i);
+            }
+        }
+        showReport();
+        updateButtons();
+        emit reportUpdated();
+        if (std::exchange(m_reportAgain, false))
+            refreshReport();
+    });
+    m_reportThread->start();
+}
+
+void ExperimentPage::showReport()
+{
+    if (!m_report) {
+        m_reportView->setPlainText(m_reportError.isEmpty() ? tr("No report yet.") : m_reportError);
+        return;
+    }
+    const auto statistic = ExperimentReport::Statistic(m_statistic->currentData().toInt());
+    const int top = m_reportView->verticalScrollBar() ? m_reportView->verticalScrollBar()->value() : 0;
+    m_reportView->setHtml(m_report->toHtml({statistic}, false));
+    m_reportView->verticalScrollBar()->setValue(top);
+}
+
+bool ExperimentPage::exportReport(const QString& path, QString* error, const QString& format)
+{
+    if (!m_report) {
+        if (error)
+            *error = tr("There is no report yet.");
+        return false;
+    }
+    const QString kind = format.isEmpty() ? QFileInfo(path).suffix().toLower() : format;
+    const QList<ExperimentReport::Statistic> statistics {
+        ExperimentReport::Statistic(m_statistic->currentData().toInt())};
+    QByteArray bytes;
+    if (kind == u"md"_s) {
+        const QString prefix = QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName());
+        for (int t = 0; t < int(m_report->tables().size()); ++t)
+            if (const QByteArray svg = m_report->ecdfSvg(t); !svg.isEmpty()
+                && !AtomicFile::write(ExperimentReport::figurePath(prefix, m_report->tables()[t].factor), svg,
+                                      error, false))
+                return false;
+        bytes = m_report->toMarkdown(statistics, prefix).toUtf8();
+    } else if (kind == u"html"_s || kind == u"htm"_s) {
+        bytes = m_report->toHtml(statistics).toUtf8();
+    } else if (kind == u"tex"_s) {
+        bytes = m_report->toTex(statistics).toUtf8();
+    } else if (kind == u"csv"_s) {
+        bytes = m_report->toCsv().toUtf8();
+    } else if (kind == u"json"_s) {
+        bytes = m_report->toJson();
+    } else if (kind == u"pdf"_s) {
+        bytes = m_report->toPdf(statistics);
+    } else {
+        if (error)
+            *error = tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind);
+        return false;
+    }
+    return AtomicFile::write(path, bytes, error, false);
+}
+
+void ExperimentPage::chooseExport()
+{
+    const QString suggestion = QDir(folder()).filePath(u"report.pdf"_s);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Report"), suggestion,
+        tr("PDF (*.pdf);;Markdown (*.md);;HTML (*.html);;LaTeX (*.tex);;CSV (*.csv);;JSON (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!exportReport(path, &error))
+        QMessageBox::warning(this, tr("Export Report"), error);
+    else
+        m_status->setText(tr("Report written to %1").arg(QDir::toNativeSeparators(path)));
+}
+
+void ExperimentPage::openCell(int row)
+{
+    if (row < 0 || row >= m_statuses.size())
+        return;
+    const CellStatus& s = m_statuses[row];
+    if (s.state != CellStatus::Complete) {
+        m_status->setText(tr("Cell %1 is %2: only a complete cell has a run to open.")
+                              .arg(m_cells[row].id(), CellStatus::stateName(s.state)));
+        return;
+    }
+    emit openRunRequested(QDir(folder()).filePath(s.run));
+}
+
+void ExperimentPage::chooseFolder()
+{
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Experiment Folder"), folder());
+    if (!dir.isEmpty())
+        setFolder(dir);
+}
+
+void ExperimentPage::choosePlan()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Plan"), QFileInfo(m_planPath).path(),
+                                                      tr("Experiment plans (*.yaml *.yml);;All files (*)"));
+    QString error;
+    if (!path.isEmpty() && !openPlan(path, &error))
+        QMessageBox::warning(this, tr("Open Plan"), error);
+}
+
+void ExperimentPage::savePlanAs()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Plan"), m_planPath,
+                                                      tr("Experiment plans (*.yaml *.yml)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!AtomicFile::write(path, planText().toUtf8(), &error))
+        QMessageBox::warning(this, tr("Save Plan"), error);
+    else
+        setPlanPath(path);
+}
+
+void ExperimentPage::loadExample(int index)
+{
+    const QString path = m_examples->itemData(index).toString();
+    m_examples->setCurrentIndex(0);
+    if (path.isEmpty())
+        return;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return;
+    setPlanText(QString::fromUtf8(f.readAll()));
+    m_planPath.clear(); // an example is saved into the folder when it runs
+    m_planEdited = true;
+    const QString name = QFileInfo(path).completeBaseName();
+    setFolder(QDir::home().filePath(u"bridgescope-experiments/"_s + name));
+}
+
+QString ExperimentPage::seriesName(int cell) const
+{
+    if (cell < 0 || cell >= m_cells.size())
+        return {};
+    const ExperimentCell& c = m_cells[cell];
+    return c.repetition > 0 ? tr("%1 (#%2)").arg(c.label()).arg(c.repetition + 1) : c.label();
+}
