@@ -1495,18 +1495,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
 <context>
     <name>ExperimentCommand</name>
     <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1 min</source>
-        <translation>%1 min</translation>
-    </message>
-    <message>
-        <source>%1 h %2 min</source>
-        <translation>%1 h %2 min</translation>
-    </message>
-    <message>
         <source>The experiment&apos;s folder: its plan, state and a run per cell.</source>
         <translation>Der Ordner des Experiments: sein Plan, sein Zustand und ein Messlauf je Zelle.</translation>
     </message>
@@ -1521,12 +1509,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>The experiment plan (docs/formats.md).</source>
         <translation>Der Experimentplan (docs/formats.md).</translation>
-    </message>
-    <message>
-        <source>Runs an experiment plan unattended: every cell of its matrix (payload, rate, QoS, TLS, announcement, queue size, bridge implementation, link profile) on its own lab, recorded as a run in DIR. Progress on standard error, one JSON line per cell started and finished on standard output; Ctrl+C stops after cleaning up, and --resume goes on. bridgescope report DIR makes the tables.
-Exit status: 0 every cell complete, 1 a cell failed, 2 bad options or plan, 130 stopped.</source>
-        <translation>Führt einen Experimentplan unbeaufsichtigt aus: jede Zelle seiner Matrix (Nutzlast, Rate, QoS, TLS, Typankündigung, Warteschlangenlänge, Bridge-Implementierung, Verbindungsprofil) in einem eigenen Labor, aufgezeichnet als Messlauf in DIR. Fortschritt auf der Standardfehlerausgabe, eine JSON-Zeile je gestarteter und beendeter Zelle auf der Standardausgabe; Strg+C hält nach dem Aufräumen an, --resume macht weiter. bridgescope report DIR erstellt die Tabellen.
-Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche Optionen oder Plan, 130 angehalten.</translation>
     </message>
     <message>
         <source>experiment takes one plan; see bridgescope experiment --help</source>
@@ -1570,6 +1552,300 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
     <message>
         <source>throughput: %1 bytes at %2 Hz</source>
         <translation>Durchsatz: %1 Bytes mit %2 Hz</translation>
+    </message>
+    <message>
+        <source>Runs an experiment plan unattended: every cell of its matrix (payload, rate, QoS, TLS, announcement, queue size, bridge implementation, link profile) on its own lab, recorded as a run in DIR. Progress on standard error; on standard output one JSON line per cell started and finished, and a progress line a second with the totals (ms) of the samples since the last; Ctrl+C stops after cleaning up, and --resume goes on. bridgescope report DIR makes the tables.
+Exit status: 0 every cell complete, 1 a cell failed, 2 bad options or plan, 130 stopped.</source>
+        <translation>Führt einen Experimentplan unbeaufsichtigt aus: jede Zelle seiner Matrix (Nutzlast, Rate, QoS, TLS, Ankündigung, Warteschlangenlänge, Bridge-Implementierung, Streckenprofil) in einem eigenen Labor, aufgezeichnet als Messlauf in DIR. Fortschritt auf der Standardfehlerausgabe; auf der Standardausgabe eine JSON-Zeile je begonnener und beendeter Zelle und jede Sekunde eine Fortschrittszeile mit den Gesamtlatenzen (ms) der Proben seit der letzten; Strg+C hält nach dem Aufräumen an, --resume macht weiter. bridgescope report DIR erstellt die Tabellen.
+Rückgabewert: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche Optionen oder falscher Plan, 130 angehalten.</translation>
+    </message>
+</context>
+<context>
+    <name>ExperimentPage</name>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Ausführen</translation>
+    </message>
+    <message>
+        <source>Res&amp;ume</source>
+        <translation>&amp;Fortsetzen</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>An&amp;halten</translation>
+    </message>
+    <message>
+        <source>&amp;Export Report…</source>
+        <translation>Bericht &amp;exportieren …</translation>
+    </message>
+    <message>
+        <source>Open a plan or an example, choose a folder, and run it.</source>
+        <translation>Einen Plan oder ein Beispiel öffnen, einen Ordner wählen und ausführen.</translation>
+    </message>
+    <message>
+        <source>&amp;Folder:</source>
+        <translation>&amp;Ordner:</translation>
+    </message>
+    <message>
+        <source>where the runs go (a new folder, or one to resume)</source>
+        <translation>wohin die Messläufe gehen (ein neuer Ordner oder einer zum Fortsetzen)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen …</translation>
+    </message>
+    <message>
+        <source>Run every cell of the plan into a new folder (Ctrl+R)</source>
+        <translation>Jede Zelle des Plans in einen neuen Ordner ausführen (Strg+R)</translation>
+    </message>
+    <message>
+        <source>Go on with the folder: skip the complete cells, redo the others</source>
+        <translation>Mit dem Ordner fortfahren: vollständige Zellen überspringen, die anderen wiederholen</translation>
+    </message>
+    <message>
+        <source>Stop after cleaning up; Resume goes on</source>
+        <translation>Nach dem Aufräumen anhalten; Fortsetzen macht weiter</translation>
+    </message>
+    <message>
+        <source>Experiment</source>
+        <translation>Experiment</translation>
+    </message>
+    <message>
+        <source>&amp;Open Plan…</source>
+        <translation>Plan ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>Save Plan &amp;As…</source>
+        <translation>Plan speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Open F&amp;older…</source>
+        <translation>O&amp;rdner öffnen …</translation>
+    </message>
+    <message>
+        <source>An experiment&apos;s folder: its plan, cells and report</source>
+        <translation>Der Ordner eines Experiments: sein Plan, seine Zellen und sein Bericht</translation>
+    </message>
+    <message>
+        <source>Open Experiment</source>
+        <translation>Experiment öffnen</translation>
+    </message>
+    <message>
+        <source>Examples…</source>
+        <translation>Beispiele …</translation>
+    </message>
+    <message>
+        <source>The plans that reproduce the shapes of the paper&apos;s Tables I-V</source>
+        <translation>Die Pläne, die die Form der Tabellen I-V der Veröffentlichung nachbilden</translation>
+    </message>
+    <message>
+        <source>name: QoS study
+samples: 600
+factors:
+  qos: [0, 1, 2]</source>
+        <translation>name: QoS-Studie
+samples: 600
+factors:
+  qos: [0, 1, 2]</translation>
+    </message>
+    <message>
+        <source>Experiment plan</source>
+        <translation>Experimentplan</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Zellen</translation>
+    </message>
+    <message>
+        <source>Double-click or Enter: open a finished cell&apos;s run on the Measure page</source>
+        <translation>Doppelklick oder Eingabe: den Messlauf einer fertigen Zelle auf der Seite Messen öffnen</translation>
+    </message>
+    <message>
+        <source>Experiment log</source>
+        <translation>Experimentprotokoll</translation>
+    </message>
+    <message>
+        <source>S&amp;tatistic:</source>
+        <translation>&amp;Kennzahl:</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>Aktualisie&amp;ren</translation>
+    </message>
+    <message>
+        <source>Totals (ECDF)</source>
+        <translation>Gesamtlatenzen (ECDF)</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <source>%1 is not an experiment&apos;s folder (it has no %2)</source>
+        <translation>%1 ist kein Experimentordner (es fehlt %2)</translation>
+    </message>
+    <message>
+        <source>Not a plan: %1</source>
+        <translation>Kein Plan: %1</translation>
+    </message>
+    <message>
+        <source>experiment</source>
+        <translation>Experiment</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n cell(s) of %2 samples, about %3</source>
+        <translation>
+            <numerusform>%1: %n Zelle mit %2 Proben, etwa %3</numerusform>
+            <numerusform>%1: %n Zellen mit je %2 Proben, etwa %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No report yet: the folder holds no experiment.</source>
+        <translation>Noch kein Bericht: der Ordner enthält kein Experiment.</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Proben</translation>
+    </message>
+    <message>
+        <source>Total median</source>
+        <translation>Gesamt (Median)</translation>
+    </message>
+    <message>
+        <source>Total p99</source>
+        <translation>Gesamt (p99)</translation>
+    </message>
+    <message>
+        <source>Cell</source>
+        <translation>Zelle</translation>
+    </message>
+    <message>
+        <source>Double-click to open %1 on the Measure page</source>
+        <translation>Doppelklick öffnet %1 auf der Seite Messen</translation>
+    </message>
+    <message>
+        <source>%1 of %2 cells complete, %3 failed.</source>
+        <translation>%1 von %2 Zellen vollständig, %3 fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>An experiment is running already.</source>
+        <translation>Es läuft bereits ein Experiment.</translation>
+    </message>
+    <message>
+        <source>Choose the folder the experiment&apos;s runs go to.</source>
+        <translation>Den Ordner für die Messläufe des Experiments wählen.</translation>
+    </message>
+    <message>
+        <source>%1 holds an experiment already: Resume goes on with it, or choose another folder.</source>
+        <translation>%1 enthält bereits ein Experiment: Fortsetzen macht damit weiter, oder einen anderen Ordner wählen.</translation>
+    </message>
+    <message>
+        <source>Cannot make the folder %1.</source>
+        <translation>Der Ordner %1 lässt sich nicht anlegen.</translation>
+    </message>
+    <message>
+        <source>The experiment did not start: %1</source>
+        <translation>Das Experiment ist nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Starte …</translation>
+    </message>
+    <message>
+        <source>Stopping after cleaning up…</source>
+        <translation>Halte nach dem Aufräumen an …</translation>
+    </message>
+    <message>
+        <source>throughput: %1 Hz, %2 of %3 samples%4</source>
+        <translation>Durchsatz: %1 Hz, %2 von %3 Proben%4</translation>
+    </message>
+    <message>
+        <source>, not sustained</source>
+        <translation>, nicht gehalten</translation>
+    </message>
+    <message>
+        <source>Cell %1 of %2: %3, warming up; about %4 left</source>
+        <translation>Zelle %1 von %2: %3, Einschwingen; noch etwa %4</translation>
+    </message>
+    <message>
+        <source>Cell %1 of %2: %3, %4 of %5 samples; about %6 left</source>
+        <translation>Zelle %1 von %2: %3, %4 von %5 Proben; noch etwa %6</translation>
+    </message>
+    <message>
+        <source>The experiment crashed; Resume goes on with it.</source>
+        <translation>Das Experiment ist abgestürzt; Fortsetzen macht damit weiter.</translation>
+    </message>
+    <message>
+        <source>Every cell complete.</source>
+        <translation>Alle Zellen vollständig.</translation>
+    </message>
+    <message>
+        <source>Stopped; Resume goes on.</source>
+        <translation>Angehalten; Fortsetzen macht weiter.</translation>
+    </message>
+    <message>
+        <source>Done, but a cell failed: see its tooltip and the log.</source>
+        <translation>Fertig, aber eine Zelle ist fehlgeschlagen: siehe ihren Tooltip und das Protokoll.</translation>
+    </message>
+    <message>
+        <source>exit status %1</source>
+        <translation>Rückgabewert %1</translation>
+    </message>
+    <message>
+        <source>No report yet.</source>
+        <translation>Noch kein Bericht.</translation>
+    </message>
+    <message>
+        <source>There is no report yet.</source>
+        <translation>Es gibt noch keinen Bericht.</translation>
+    </message>
+    <message>
+        <source>Unknown report format &apos;%1&apos; (md, html, tex, csv, json, pdf).</source>
+        <translation>Unbekanntes Berichtsformat &apos;%1&apos; (md, html, tex, csv, json, pdf).</translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;Markdown (*.md);;HTML (*.html);;LaTeX (*.tex);;CSV (*.csv);;JSON (*.json)</source>
+        <translation>PDF (*.pdf);;Markdown (*.md);;HTML (*.html);;LaTeX (*.tex);;CSV (*.csv);;JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation>Bericht nach %1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Cell %1 is %2: only a complete cell has a run to open.</source>
+        <translation>Zelle %1 ist %2: nur eine vollständige Zelle hat einen Messlauf zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>Experiment Folder</source>
+        <translation>Experimentordner</translation>
+    </message>
+    <message>
+        <source>Open Plan</source>
+        <translation>Plan öffnen</translation>
+    </message>
+    <message>
+        <source>Experiment plans (*.yaml *.yml);;All files (*)</source>
+        <translation>Experimentpläne (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save Plan</source>
+        <translation>Plan speichern</translation>
+    </message>
+    <message>
+        <source>Experiment plans (*.yaml *.yml)</source>
+        <translation>Experimentpläne (*.yaml *.yml)</translation>
+    </message>
+    <message>
+        <source>%1 (#%2)</source>
+        <translation>%1 (#%2)</translation>
     </message>
 </context>
 <context>
@@ -1746,6 +2022,18 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
         <source>%1: a plan holds no credentials (it is copied next to its runs): give the broker without user and password</source>
         <translation>%1: ein Plan enthält keine Zugangsdaten (er wird neben seinen Messläufen abgelegt): den Broker ohne Benutzer und Passwort angeben</translation>
     </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentReport</name>
@@ -1889,6 +2177,26 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
         <source>rates tried (samples/expected, median total ms)</source>
         <translation>versuchte Raten (Proben/erwartet, Median gesamt ms)</translation>
     </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>Total latency by %1</source>
+        <translation>Gesamtlatenz nach %1</translation>
+    </message>
+    <message>
+        <source>Per stage (Table I layout, mean, ms)</source>
+        <translation>Je Stufe (Aufbau von Tabelle I, Mittel, ms)</translation>
+    </message>
+    <message>
+        <source>stage</source>
+        <translation>Stufe</translation>
+    </message>
+    <message>
+        <source>Mean latencies [ms] by method</source>
+        <translation>Mittlere Latenzen [ms] nach Verfahren</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentRunner</name>
@@ -1948,10 +2256,6 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
         <translation>Sekunden Wartezeit vor dem Bildschirmfoto.</translation>
     </message>
     <message>
-        <source>Bridge config to open.</source>
-        <translation>Zu öffnende Bridge-Konfiguration.</translation>
-    </message>
-    <message>
         <source>--after takes a number of seconds</source>
         <translation>--after erwartet eine Anzahl Sekunden</translation>
     </message>
@@ -1998,10 +2302,6 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
     <message>
         <source>list ROS and MQTT topics</source>
         <translation>ROS- und MQTT-Topics auflisten</translation>
-    </message>
-    <message>
-        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]</source>
-        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml]</translation>
     </message>
     <message>
         <source>       bridgescope &lt;command&gt; [options]</source>
@@ -2084,20 +2384,28 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
         <translation>Debug-Meldungen jeder Schicht auf stderr, auch hinter einem Befehl</translation>
     </message>
     <message>
-        <source>open on a page: discover, map, measure, reports or links</source>
-        <translation>auf einer Seite öffnen: discover, map, measure, reports oder links</translation>
-    </message>
-    <message>
         <source>watch every bridged link for hours: events, metrics</source>
         <translation>jede gebridgte Verbindung stundenlang überwachen: Ereignisse, Metriken</translation>
     </message>
     <message>
-        <source>Open on this page: discover, map, measure, reports or links.</source>
-        <translation>Auf dieser Seite öffnen: discover, map, measure, reports oder links.</translation>
-    </message>
-    <message>
         <source>run an experiment matrix unattended, a run per cell</source>
         <translation>eine Experimentmatrix unbeaufsichtigt ausführen, ein Messlauf je Zelle</translation>
+    </message>
+    <message>
+        <source>open on a page: discover, map, measure, reports, links or experiments</source>
+        <translation>auf einer Seite öffnen: discover, map, measure, reports, links oder experiments</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml | EXPERIMENT-DIR]</source>
+        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml | EXPERIMENT-ORDNER]</translation>
+    </message>
+    <message>
+        <source>Open on this page: discover, map, measure, reports, links or experiments.</source>
+        <translation>Auf dieser Seite öffnen: discover, map, measure, reports, links oder experiments.</translation>
+    </message>
+    <message>
+        <source>Bridge config to open, or an experiment&apos;s folder.</source>
+        <translation>Zu öffnende Bridge-Konfiguration oder ein Experimentordner.</translation>
     </message>
 </context>
 <context>
@@ -2613,6 +2921,22 @@ Exit-Status: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche 
     <message>
         <source>untitled</source>
         <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>Experiments</source>
+        <translation>Experimente</translation>
+    </message>
+    <message>
+        <source>Open Run</source>
+        <translation>Messlauf öffnen</translation>
+    </message>
+    <message>
+        <source>Experiment running</source>
+        <translation>Experiment läuft</translation>
+    </message>
+    <message>
+        <source>An experiment is running. Stop it and quit? Resume goes on with it later.</source>
+        <translation>Ein Experiment läuft. Anhalten und beenden? Fortsetzen macht später damit weiter.</translation>
     </message>
 </context>
 <context>
@@ -4678,10 +5002,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>Runs, suite timestamp CSV files or bags; or an experiment&apos;s folder.</source>
         <translation>Läufe, Zeitstempel-CSV-Dateien der Suite oder Bags; oder der Ordner eines Experiments.</translation>
-    </message>
-    <message>
-        <source>an experiment&apos;s report is md, tex, html, csv or json (pdf is not written yet)</source>
-        <translation>der Bericht eines Experiments ist md, tex, html, csv oder json (pdf wird noch nicht geschrieben)</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include "experiment/experimentrunner.h"
 #include "latency/rundata.h"
 
+#include <cmath>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -20,6 +21,8 @@ using CliOutput::ExitUsage;
 using CliOutput::out;
 
 namespace {
+constexpr qsizetype kMaxTotalsPerLine = 10'000;
+
 class Experiment
 {
     Q_DECLARE_TR_FUNCTIONS(ExperimentCommand)
@@ -37,12 +40,7 @@ struct ExperimentRequest
 
 QString duration(double seconds)
 {
-    const qint64 s = qint64(seconds + 0.5);
-    if (s < 120)
-        return Experiment::tr("%1 s").arg(s);
-    if (s < 7200)
-        return Experiment::tr("%1 min").arg((s + 30) / 60);
-    return Experiment::tr("%1 h %2 min").arg(s / 3600).arg(s % 3600 / 60);
+    return ExperimentPlan::durationText(seconds);
 }
 
 int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
@@ -67,8 +65,9 @@ int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
         Experiment::tr(
             "Runs an experiment plan unattended: every cell of its matrix (payload, rate, QoS, TLS, "
             "announcement, queue size, bridge implementation, link profile) on its own lab, "
-            "recorded as a run in DIR. Progress on standard error, one JSON line per cell "
-            "started and finished on standard output; Ctrl+C stops after cleaning up, and "
+            "recorded as a run in DIR. Progress on standard error; on standard output one JSON line "
+            "per cell started and finished, and a progress line a second with the totals (ms) of the "
+            "samples since the last; Ctrl+C stops after cleaning up, and "
             "--resume goes on. bridgescope report DIR makes the tables.\n"
             "Exit status: 0 every cell complete, 1 a cell failed, 2 bad options or plan, 130 "
             "stopped."));
@@ -143,11 +142,40 @@ int runExperiment(const ExperimentRequest& request)
         return ExitUsage;
     }
     const int cells = int(request.plan.cells.size());
+    // The running cell's totals since the last progress line: what the Experiments page plots live.
+    QList<double> totals;
+    bool warmingUp = false;
+    const auto printProgress = [&](int i) {
+        QJsonArray ms;
+        for (double v : std::as_const(totals))
+            ms.append(std::round(v * 1000) / 1000); // µs are plenty, and keep the line short
+        totals.clear();
+        out(QString::fromUtf8(
+            QJsonDocument(QJsonObject {{u"event"_s, u"progress"_s},
+                                       {u"index"_s, i},
+                                       {u"samples"_s, double(runner.runningSamples())},
+                                       {u"of"_s, request.plan.samples},
+                                       {u"warming_up"_s, warmingUp},
+                                       {u"remaining_s"_s, qRound(runner.remainingSeconds())},
+                                       {u"total_ms"_s, ms}})
+                .toJson(QJsonDocument::Compact)));
+    };
+    QObject::connect(&runner, &ExperimentRunner::progress,
+                     [&](int, qint64, bool warming) { warmingUp = warming; });
+    QObject::connect(&runner, &ExperimentRunner::totals, [&](int, const QList<double>& ms) {
+        totals += ms;
+        if (totals.size() > kMaxTotalsPerLine) // bounded lines at any rate; the run file has them all
+            totals.remove(0, totals.size() - kMaxTotalsPerLine);
+    });
     QObject::connect(&runner, &ExperimentRunner::cellStarted, [&](int i) {
+        totals.clear();
+        warmingUp = true;
         printCell(runner, i, u"started"_s);
         err(Experiment::tr("cell %1/%2: %3").arg(i + 1).arg(cells).arg(request.plan.cells[i].label()));
     });
     QObject::connect(&runner, &ExperimentRunner::cellFinished, [&](int i) {
+        if (!totals.isEmpty())
+            printProgress(i);
         printCell(runner, i, u"finished"_s);
         const CellStatus& s = runner.statuses()[i];
         if (s.state == CellStatus::Failed)
@@ -175,6 +203,7 @@ int runExperiment(const ExperimentRequest& request)
                                                const int i = runner.runningCell();
                                                if (i < 0)
                                                    return;
+                                               printProgress(i);
                                                err(Experiment::tr("cell %1/%2: %3/%4 samples, about %5 left")
                                                        .arg(i + 1)
                                                        .arg(cells)

@@ -4,11 +4,13 @@
 #include "app/cli/clioutput.h"
 #include "app/gui/mainwindow.h"
 #include "demo/demolab.h"
+#include "experiment/experimentreport.h"
 #include "latency/latencystatsmodel.h"
 #include "latency/seriesid.h"
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/experiment/experimentpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
@@ -53,7 +55,7 @@ QString bridgescopeUsage()
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
         {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
-        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports or links")},
+        {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports, links or experiments")},
         {u"--verbose"_s, Gui::tr("debug messages of every layer on stderr, also after a command")},
         {u"-h, --help"_s, Gui::tr("show this help")},
         {u"-v, --version"_s, Gui::tr("show the version")},
@@ -70,7 +72,9 @@ QString bridgescopeUsage()
          Gui::tr("watch every bridged link for hours: events, metrics")},
         {u"experiment PLAN.yaml -o DIR"_s, Gui::tr("run an experiment matrix unattended, a run per cell")},
     };
-    QString text = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml]")
+    QString text
+        = Gui::tr(
+              "Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml | EXPERIMENT-DIR]")
         + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s
         + Gui::tr("Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.")
         + u"\n\n"_s + Gui::tr("Options:") + u'\n';
@@ -113,10 +117,12 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         u"pipeline"_s, Gui::tr("Measure with this pipeline (the suite's metrics-logger YAML)."),
         u"PIPE.yaml"_s);
     const QCommandLineOption page(
-        u"page"_s, Gui::tr("Open on this page: discover, map, measure, reports or links."), u"PAGE"_s);
+        u"page"_s, Gui::tr("Open on this page: discover, map, measure, reports, links or experiments."),
+        u"PAGE"_s);
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
-    parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open."), u"[FILE.yaml]"_s);
+    parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open, or an experiment's folder."),
+                                 u"[FILE.yaml|DIR]"_s);
     if (!parser.parse(arguments)) {
         CliOutput::err(parser.errorText());
         CliOutput::err(bridgescopeUsage());
@@ -139,7 +145,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         }
     }
     if (parser.isSet(page)) {
-        const QStringList names {u"discover"_s, u"map"_s, u"measure"_s, u"reports"_s, u"links"_s};
+        const QStringList names {u"discover"_s, u"map"_s,   u"measure"_s,
+                                 u"reports"_s,  u"links"_s, u"experiments"_s};
         request->page = int(names.indexOf(parser.value(page).toLower()));
         if (request->page < 0) {
             CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
@@ -189,8 +196,16 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
         window.discoverPage()->setRosMasterUri(request.masterUri);
     if (request.broker)
         window.discoverPage()->connectBroker(*request.broker);
-    if (!request.files.isEmpty())
+    if (!request.files.isEmpty() && ExperimentReport::isExperiment(request.files.first())) {
+        QString error;
+        if (!window.experimentPage()->openFolder(request.files.first(), &error)) {
+            CliOutput::err(error);
+            return false;
+        }
+        window.pages()->setCurrentWidget(window.experimentPage());
+    } else if (!request.files.isEmpty()) {
         window.files()->openFile(request.files.first());
+    }
     if (!request.pipeline.isEmpty()) {
         QString error;
         if (!window.measurePage()->loadPipeline(request.pipeline, &error)) {

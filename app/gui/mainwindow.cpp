@@ -8,6 +8,7 @@
 #include "watch/watchsession.h"
 #include "widgets/common/problemspanel.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/experiment/experimentpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
@@ -46,6 +47,7 @@ MainWindow::MainWindow(QWidget* parent)
     , m_reports(new ReportsPage(m_pages))
     , m_watch(new WatchSession(m_session, this))
     , m_links(new LinksPage(m_watch, m_pages))
+    , m_experiments(new ExperimentPage(m_pages))
     , m_configEditor(m_map->editor())
     , m_problemStatus(new QLabel(this))
 {
@@ -56,11 +58,20 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_measurePage, tr("Measure"));
     m_pages->addTab(m_reports, tr("Reports"));
     m_pages->addTab(m_links, tr("Links"));
+    m_pages->addTab(m_experiments, tr("Experiments"));
     watchTheMapConfig();
     m_watch->useMeasurement(m_measure); // pipeline latency for the links; a recorded run lists their events
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
     connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
             [this](const QString& path) { m_reports->addInputs({path}); });
+    // A finished cell of an experiment opens on the Measure page, as any run.
+    connect(m_experiments, &ExperimentPage::openRunRequested, this, [this](const QString& path) {
+        QString error;
+        if (m_measurePage->runBar()->openRun(path, &error))
+            m_pages->setCurrentWidget(m_measurePage);
+        else if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Open Run"), error);
+    });
     m_measurePage->runBar()->setBridgeConfigProvider([this]() -> std::pair<QString, QByteArray> {
         const QString path = m_document->filePath();
         QFile f(path);
@@ -205,6 +216,14 @@ void MainWindow::updateTitle()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (m_experiments->isRunning()
+        && QMessageBox::question(
+               this, tr("Experiment running"),
+               tr("An experiment is running. Stop it and quit? Resume goes on with it later."))
+            != QMessageBox::Yes) {
+        event->ignore();
+        return;
+    }
     if (m_files->maybeSave())
         event->accept();
     else

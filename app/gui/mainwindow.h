@@ -5,6 +5,7 @@
 
 class ConfigDocument;
 class DiscoverPage;
+class ExperimentPage;
 class LinksPage;
 class WatchSession;
 class MapPage;
@@ -38,6 +39,7 @@ public:
     MeasureSession* measure() const { return m_measure; }
     ReportsPage* reportsPage() const { return m_reports; }
     LinksPage* linksPage() const { return m_links; }
+    ExperimentPage* experimentPage() const { return m_experiments; }
     WatchSession* watch() const { return m_watch; }
     QTabWidget* pages() const { return m_pages; }
 
@@ -62,6 +64,7 @@ private:
     ReportsPage* m_reports;
     WatchSession* m_watch;
     LinksPage* m_links;
+    ExperimentPage* m_experiments;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;

@@ -5,6 +5,7 @@
 #include "base/yamllimits.h"
 #include "base/yamltree.h"
 
+#include <algorithm>
 #include <cmath>
 #include <QDir>
 #include <QFileInfo>
@@ -508,4 +509,14 @@ std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString*
     if (plan && text)
         *text = *bytes;
     return plan;
+}
+
+QString ExperimentPlan::durationText(double seconds)
+{
+    const qint64 s = qint64(std::max(0.0, seconds) + 0.5);
+    if (s < 120)
+        return tr("%1 s").arg(s);
+    if (s < 7200)
+        return tr("%1 min").arg((s + 30) / 60);
+    return tr("%1 h %2 min").arg(s / 3600).arg(s % 3600 / 60);
 }

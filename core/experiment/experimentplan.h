@@ -97,4 +97,6 @@ public:
     double timeoutSeconds(const ExperimentCell& cell) const;
     /// A payload level: bytes ("20000"), percent of the scan ("25%"), "scan" or "pointcloud2".
     static std::optional<int> payloadBytes(const QString& level);
+    /// "45 s", "12 min", "3 h 20 min": how long cells take, in progress and estimates.
+    static QString durationText(double seconds);
 };

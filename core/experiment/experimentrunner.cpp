@@ -93,6 +93,7 @@ struct ExperimentRunner::Cell
     QTimer timer;
     QElapsedTimer clock;
     bool recording = false;
+    qint64 totalsSent = 0; ///< of the total series' values, those already in totals()
     QString runPath;
     // A probe of the throughput step: measuring since windowStartMs (-1: warming up).
     bool probe = false;
@@ -310,6 +311,7 @@ void ExperimentRunner::poll()
     }
     m_statuses[m_current].samples = engine.samples();
     emit progress(m_current, engine.samples(), false);
+    sendTotals();
     if (engine.samples() >= m_plan.samples)
         endCell(CellStatus::Complete, QString());
 }
@@ -322,6 +324,7 @@ void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
     QString why;
     if (c.recording) {
         c.live->drainNow();
+        sendTotals();
         status.samples = c.measure->engine().samples();
         if (!c.measure->stopRecording(&why) && state == CellStatus::Complete) {
             state = CellStatus::Failed;
@@ -340,6 +343,25 @@ void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
     if (m_stopping)
         return;
     QTimer::singleShot(0, this, &ExperimentRunner::nextCell);
+}
+
+void ExperimentRunner::sendTotals()
+{
+    Cell& c = *m_cell;
+    const LatencyEngine& engine = c.measure->engine();
+    if (!c.recording || engine.totalSeries() < 0)
+        return;
+    const LatencySeries& total = engine.series(engine.totalSeries());
+    const std::vector<qint64>& values = total.values();
+    const qint64 fresh = std::min<qint64>(total.totalCount() - c.totalsSent, qint64(values.size()));
+    c.totalsSent = total.totalCount();
+    if (fresh <= 0)
+        return;
+    QList<double> ms;
+    ms.reserve(fresh);
+    for (auto v = values.end() - fresh; v != values.end(); ++v)
+        ms << total.toMs(*v);
+    emit totals(m_current, ms);
 }
 
 void ExperimentRunner::stop()

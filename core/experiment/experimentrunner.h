@@ -104,6 +104,8 @@ signals:
     void cellStarted(int index);
     void cellFinished(int index); ///< complete or failed; see statuses()
     void progress(int index, qint64 samples, bool warmingUp);
+    /// The running cell's samples recorded since the last call: their totals, in ms.
+    void totals(int index, const QList<double>& totalMs);
     void probeStarted(int payloadBytes, double rateHz); ///< a rate of the throughput step
     void probeFinished(const ThroughputPoint& point);
     void finished(bool allComplete);
@@ -114,6 +116,7 @@ private:
     void beginCell(int index);
     void poll();
     void endCell(CellStatus::State state, const QString& reason);
+    void sendTotals();
     bool writeState(QString* error = nullptr) const;
     bool startLab(const CellSettings& settings, int seed, QString* why);
     // The throughput step, after the cells: per payload size, rates up to the first not sustained.

@@ -28,3 +28,11 @@ const LatencySeries* LatencySeriesSet::find(const QString& name) const
     const int index = ecdfIndex(idOf(name));
     return index < 0 ? nullptr : m_series[std::size_t(index)].get();
 }
+
+void LatencySeriesSet::clear(const QString& name)
+{
+    if (const int i = m_byId.value(idOf(name), -1); i >= 0) {
+        m_series[std::size_t(i)]->clear();
+        ++m_revision;
+    }
+}

@@ -15,6 +15,8 @@ class LatencySeriesSet final : public EcdfSource
 public:
     /// Adds `valueNs` to the series `name` (made on first use); its id is SeriesId::external(name).
     void add(const QString& name, qint64 valueNs);
+    /// Empties the series `name` (it keeps its place and colour).
+    void clear(const QString& name);
     /// The series `name`, or null.
     const LatencySeries* find(const QString& name) const;
     static QString idOf(const QString& name);

@@ -18,8 +18,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
-#include <QTabWidget>
 #include <QTableWidget>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBrowser>
@@ -114,7 +114,8 @@ private slots:
         }
         QCOMPARE(page.chart()->series().size(), 2);
         QVERIFY(page.cellGrid()->item(1, page.stateColumn() + 2)->text().toDouble() > 0); // median
-        QVERIFY2(page.reportView()->toPlainText().contains(u"qos"_s), qPrintable(page.reportView()->toPlainText()));
+        QVERIFY2(page.reportView()->toPlainText().contains(u"qos"_s),
+                 qPrintable(page.reportView()->toPlainText()));
 
         // A finished cell opens on the Measure page.
         emit page.cellGrid()->cellActivated(1, 0);

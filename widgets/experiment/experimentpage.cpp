@@ -23,8 +23,8 @@
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QProgressBar>
-#include <QScrollBar>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QShortcut>
 #include <QSplitter>
 #include <QTableWidget>
@@ -57,11 +57,7 @@ QColor stateColor(CellStatus::State s)
 
 QString duration(qint64 seconds)
 {
-    if (seconds < 120)
-        return ExperimentPage::tr("%1 s").arg(seconds);
-    if (seconds < 7200)
-        return ExperimentPage::tr("%1 min").arg((seconds + 30) / 60);
-    return ExperimentPage::tr("%1 h %2 min").arg(seconds / 3600).arg(seconds % 3600 / 60);
+    return ExperimentPlan::durationText(double(seconds));
 }
 } // namespace
 
@@ -475,7 +471,8 @@ void ExperimentPage::showCounts()
     m_progress->setRange(0, std::max(1, int(m_statuses.size())));
     m_progress->setValue(complete + failed);
     if (!isRunning())
-        m_status->setText(tr("%1 of %2 cells complete, %3 failed.").arg(complete).arg(m_statuses.size()).arg(failed));
+        m_status->setText(
+            tr("%1 of %2 cells complete, %3 failed.").arg(complete).arg(m_statuses.size()).arg(failed));
 }
 
 int ExperimentPage::stateColumn() const
@@ -525,7 +522,6 @@ bool ExperimentPage::run(bool resume, QString* error)
             if (!QDir().mkpath(dir))
                 return fail(tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir)));
             m_planPath = QDir(dir).absoluteFilePath(ExperimentRunner::planFileName()); // the copy it keeps
-
         }
         QString why;
         if (!AtomicFile::write(m_planPath, planText().toUtf8(), &why))
@@ -611,11 +607,12 @@ void ExperimentPage::handleLine(const QByteArray& line)
     const QString event = o.value(u"event"_s).toString();
     const int i = o.value(u"index"_s).toInt(-1);
     if (event == u"throughput"_s) {
-        m_log->appendPlainText(tr("throughput: %1 Hz, %2 of %3 samples%4")
-                                   .arg(o.value(u"rate_hz"_s).toDouble())
-                                   .arg(o.value(u"samples"_s).toDouble())
-                                   .arg(o.value(u"expected"_s).toDouble())
-                                   .arg(o.value(u"sustainable"_s).toBool() ? QString() : tr(", not sustained")));
+        m_log->appendPlainText(
+            tr("throughput: %1 Hz, %2 of %3 samples%4")
+                .arg(o.value(u"rate_hz"_s).toDouble())
+                .arg(o.value(u"samples"_s).toDouble())
+                .arg(o.value(u"expected"_s).toDouble())
+                .arg(o.value(u"sustainable"_s).toBool() ? QString() : tr(", not sustained")));
         return;
     }
     if (i < 0 || i >= m_statuses.size() || o.value(u"cell"_s).toString(m_cells[i].id()) != m_cells[i].id())
@@ -697,7 +694,8 @@ void ExperimentPage::refreshReport()
     }
     auto result = std::make_shared<std::optional<ExperimentReport>>();
     auto why = std::make_shared<QString>();
-    m_reportThread = QThread::create([dir, result, why] { *result = ExperimentReport::load(dir, why.get()); });
+    m_reportThread
+        = QThread::create([dir, result, why] { *result = ExperimentReport::load(dir, why.get()); });
     connect(m_reportThread, &QThread::finished, this, [this, result, why] {
         m_reportThread->deleteLater();
         m_reportThread = nullptr;
