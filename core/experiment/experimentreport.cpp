@@ -587,7 +587,7 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics, bool figure
     html += u"<h1>%1</h1>\n"_s.arg(tr("Experiment report: %1").arg(m_plan.name).toHtmlEscaped());
     for (const FactorTable& t : m_tables) {
         for (Statistic st : statistics) {
-            html += u"<h2>%1 (%2, ms)</h2>\n<table><tr><th>%3</th>"_s.arg(
+            html += u"<h2>%1 (%2, ms)</h2>\n<table cellpadding=\"3\" cellspacing=\"0\"><tr><th>%3</th>"_s.arg(
                 t.factor.toHtmlEscaped(), statisticName(st), tr("stage group"));
             for (const Column& c : t.columns)
                 html += u"<th>%1</th>"_s.arg(c.level.toHtmlEscaped());
@@ -598,7 +598,8 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics, bool figure
                                                        : m_groups[g].label.toHtmlEscaped());
                 for (const Column& c : t.columns) {
                     const QString v = c.cells.isEmpty() ? u"–"_s : number(value(c.groups[g], st));
-                    html += u"<td class=\"n\">%1</td>"_s.arg(total ? u"<b>%1</b>"_s.arg(v) : v);
+                    html += u"<td class=\"n\" align=\"right\">%1</td>"_s.arg(total ? u"<b>%1</b>"_s.arg(v)
+                                                                                   : v);
                 }
                 html += u"</tr>\n"_s;
             }
@@ -609,7 +610,7 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics, bool figure
     }
     if (hasMethodTable()) {
         const MethodTable m = methodTable(*this);
-        html += u"<h2>%1</h2>\n<table><tr><th>%2</th>"_s.arg(
+        html += u"<h2>%1</h2>\n<table cellpadding=\"3\" cellspacing=\"0\"><tr><th>%2</th>"_s.arg(
             tr("Per stage (Table I layout, mean, ms)").toHtmlEscaped(), tr("stage").toHtmlEscaped());
         for (const QString& c : m.columns)
             html += u"<th>%1</th>"_s.arg(c.toHtmlEscaped());
@@ -619,31 +620,34 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics, bool figure
             const auto bold = [total](const QString& v) { return total ? u"<b>%1</b>"_s.arg(v) : v; };
             html += u"<tr><td>%1</td>"_s.arg(bold(m.rows[i].first.toHtmlEscaped()));
             for (const QString& v : m.rows[i].second)
-                html += u"<td class=\"n\">%1</td>"_s.arg(bold(v));
+                html += u"<td class=\"n\" align=\"right\">%1</td>"_s.arg(bold(v));
             html += u"</tr>\n"_s;
         }
         html += u"</table>\n"_s;
     }
     if (!m_throughput.isEmpty()) {
-        html += u"<h2>%1</h2>\n<table><tr><th>%2</th><th>%3</th><th>%4</th><th>MB/s</th></tr>\n"_s.arg(
-            tr("Throughput"), tr("payload"), tr("bytes"), tr("highest rate (Hz)"));
+        html
+            += u"<h2>%1</h2>\n<table cellpadding=\"3\" cellspacing=\"0\"><tr><th>%2</th><th>%3</th><th>%4</th><th>MB/s</th></tr>\n"_s
+                   .arg(tr("Throughput"), tr("payload"), tr("bytes"), tr("highest rate (Hz)"));
         for (const ThroughputResult& t : m_throughput)
             html
-                += u"<tr><td>%1</td><td class=\"n\">%2</td><td class=\"n\">%3</td><td class=\"n\">%4</td></tr>\n"_s
+                += u"<tr><td>%1</td><td class=\"n\" align=\"right\">%2</td><td class=\"n\" align=\"right\">%3</td><td class=\"n\" align=\"right\">%4</td></tr>\n"_s
                        .arg(t.level.toHtmlEscaped())
                        .arg(t.payloadBytes)
                        .arg(t.maxSustainableHz() > 0 ? QString::number(t.maxSustainableHz()) : u"–"_s)
                        .arg(number(t.megabytesPerSecond()));
         html += u"</table>\n"_s;
     }
-    html += u"<h2>%1</h2>\n<table><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th></tr>\n"_s.arg(
-        tr("Cells"), tr("cell"), tr("levels"), tr("state"), tr("samples"), tr("run"));
+    html
+        += u"<h2>%1</h2>\n<table cellpadding=\"3\" cellspacing=\"0\"><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th></tr>\n"_s
+               .arg(tr("Cells"), tr("cell"), tr("levels"), tr("state"), tr("samples"), tr("run"));
     for (const Cell& c : m_cells)
-        html += u"<tr><td>%1</td><td>%2</td><td>%3</td><td class=\"n\">%4</td><td>%5</td></tr>\n"_s.arg(
-            c.cell.id().toHtmlEscaped(), levelsText(c.cell).toHtmlEscaped(),
-            CellStatus::stateName(c.status.state),
-            c.groups.isEmpty() ? u"–"_s : QString::number(c.groups.last().count),
-            c.status.run.toHtmlEscaped());
+        html
+            += u"<tr><td>%1</td><td>%2</td><td>%3</td><td class=\"n\" align=\"right\">%4</td><td>%5</td></tr>\n"_s
+                   .arg(c.cell.id().toHtmlEscaped(), levelsText(c.cell).toHtmlEscaped(),
+                        CellStatus::stateName(c.status.state),
+                        c.groups.isEmpty() ? u"–"_s : QString::number(c.groups.last().count),
+                        c.status.run.toHtmlEscaped());
     html += u"</table>\n"_s;
     const QStringList f = findings();
     if (!f.isEmpty()) {

@@ -26,6 +26,8 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr int kPollMs = 100;
+/// A probe's samples time out after this (not the 5 s default): the window waits for it.
+constexpr qint64 kProbeTimeoutMs = 2000;
 constexpr qsizetype kMaxStateBytes = 16 * 1024 * 1024;
 
 /// A CA and a server certificate for 127.0.0.1, made with openssl in `dir` (EC keys: quick).
@@ -99,6 +101,9 @@ struct ExperimentRunner::Cell
     bool probe = false;
     double rateHz = 0;
     qint64 windowStartMs = -1;
+    qint64 resetAtMs = -1; ///< when the warm-up's samples were forgotten
+    qint64 samplesBefore = 0; ///< complete samples when the window opened, and dropped ones
+    qint64 droppedBefore = 0;
 };
 
 ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QString directory,
@@ -536,6 +541,7 @@ void ExperimentRunner::nextProbe()
             return;
         }
         m_cell->measure->setWindow(0);
+        m_cell->measure->setTimeoutNs(kProbeTimeoutMs * 1'000'000);
         connect(&m_cell->timer, &QTimer::timeout, this, &ExperimentRunner::pollProbe);
         m_cell->timer.start(kPollMs);
         return;
@@ -553,9 +559,17 @@ void ExperimentRunner::pollProbe()
     ThroughputPoint p;
     p.rateHz = c.rateHz;
     if (c.windowStartMs < 0) {
-        // Warm: a second's worth of samples (at least three) before the window opens.
-        if (engine.samples() >= std::max<qint64>(3, qint64(c.rateHz))) {
+        // Warm: a second's worth of samples (at least three), then a reset that forgets the lab's
+        // start (samples from before every stamp subscription existed never complete). The reset
+        // cuts the sample in flight, whose later stamps then time out as a "dropped" sample: the
+        // window opens once that has happened, and counts from there.
+        if (c.resetAtMs < 0 && engine.samples() >= std::max<qint64>(3, qint64(c.rateHz))) {
             c.measure->reset();
+            c.resetAtMs = now;
+        } else if (c.resetAtMs >= 0 && now - c.resetAtMs >= kProbeTimeoutMs + 500) {
+            c.live->drainNow();
+            c.samplesBefore = engine.samples();
+            c.droppedBefore = qint64(engine.counters().dropped());
             c.windowStartMs = now;
         } else if (now > 60'000 || !c.lab.isRunning()) {
             endProbe(p); // nothing came through: not sustained
@@ -566,10 +580,18 @@ void ExperimentRunner::pollProbe()
     if (now - c.windowStartMs < qint64(seconds * 1000) && c.lab.isRunning())
         return;
     c.live->drainNow();
-    const LatencyStats total = engine.series(engine.totalSeries()).stats();
-    p.samples = engine.samples();
+    p.samples = engine.samples() - c.samplesBefore;
     p.expected = qint64(c.rateHz * seconds);
-    p.dropped = engine.counters().dropped();
+    p.dropped = qint64(engine.counters().dropped()) - c.droppedBefore;
+    // The window's totals: the last p.samples values of the total series.
+    const LatencySeries& series = engine.series(engine.totalSeries());
+    LatencySeries window(series.msPerUnit());
+    window.setWindow(0);
+    const std::vector<qint64>& values = series.values();
+    for (auto v = values.end() - std::min<qint64>(std::max<qint64>(p.samples, 0), qint64(values.size()));
+         v != values.end(); ++v)
+        window.append(*v);
+    const LatencyStats total = window.stats();
     p.p50Ms = std::isfinite(total.median) ? total.median : 0;
     p.p99Ms = std::isfinite(total.p99) ? total.p99 : 0;
     // Sustained: (almost) every sample through, none dropped, and the latency not running away

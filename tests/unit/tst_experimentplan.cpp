@@ -49,8 +49,9 @@ private slots:
         QCOMPARE(network->factors, (QStringList {u"link"_s, u"payload"_s}));
         // The first factor varies slowest.
         QCOMPARE(network->cells[1].label(), u"link none, payload 100%"_s);
-        QCOMPARE(network->cells[2].settings.link.delayMs, 13.6);
-        QCOMPARE(network->cells[2].settings.link.jitterMs, 1.6);
+        // Per relay; a crossing passes two: 13.6 ms and 1.6 ms one way, as the paper's 5G.
+        QCOMPARE(network->cells[2].settings.link.delayMs, 6.8);
+        QCOMPARE(network->cells[2].settings.link.jitterMs, 1.13);
         QCOMPARE(network->cells[2].settings.payloadBytes, 0);
         QCOMPARE(network->cells[3].settings.payloadBytes, 180000);
         QCOMPARE(network->cells[3].id(), u"004-link-5g-payload-100pct"_s);

@@ -847,6 +847,15 @@ QString ExperimentPage::seriesName(int cell) const
 {
     if (cell < 0 || cell >= m_cells.size())
         return {};
+    // Short, for the chart's legend: the levels, with the factor's name only where a level is a
+    // bare number ("qos 1, 25%", not "qos 1, payload 25%"); the grid's headers name the factors.
     const ExperimentCell& c = m_cells[cell];
-    return c.repetition > 0 ? tr("%1 (#%2)").arg(c.label()).arg(c.repetition + 1) : c.label();
+    QStringList parts;
+    for (const auto& [factor, level] : c.levels) {
+        bool number = false;
+        level.toDouble(&number);
+        parts << (number ? factor + u' ' + level : level);
+    }
+    const QString name = parts.isEmpty() ? c.id() : parts.join(u", "_s);
+    return c.repetition > 0 ? tr("%1 (#%2)").arg(name).arg(c.repetition + 1) : name;
 }
