@@ -12,9 +12,12 @@
 #include "app/gui/guimain.h"
 #include "base/logging.h"
 
+#include <algorithm>
 #include <ctime>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QGuiApplication>
+#include <vector>
 
 using namespace Qt::StringLiterals;
 using CliOutput::ExitOk;
@@ -35,6 +38,88 @@ bool wantsPdf(int argc, char** argv)
             return true;
     }
     return false;
+}
+
+class Main
+{
+    Q_DECLARE_TR_FUNCTIONS(Main)
+};
+
+/// Whether Qt is told which platform to use on the command line (-platform X, --platform=X).
+bool platformGiven(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        if (a == "-platform" || a == "--platform" || a.startsWith("-platform=")
+            || a.startsWith("--platform="))
+            return true;
+    }
+    return false;
+}
+
+/// Why the window cannot open here (no display for the platform Qt would pick), or empty. Qt
+/// aborts (SIGABRT) when its platform plugin finds no display; this says so first, and how.
+QString whyNoDisplay(int argc, char** argv)
+{
+    if (platformGiven(argc, argv))
+        return {};
+    const QByteArray platform = qgetenv("QT_QPA_PLATFORM");
+    const bool x11 = !qgetenv("DISPLAY").isEmpty();
+    const bool wayland = !qgetenv("WAYLAND_DISPLAY").isEmpty();
+    bool found = true; // offscreen, minimal, vnc, eglfs, linuxfb: no display to find
+    if (platform.startsWith("wayland"))
+        found = wayland;
+    else if (platform.isEmpty() || platform.startsWith("xcb"))
+        found = x11 || wayland;
+    if (found)
+        return {};
+    return Main::tr("bridgescope: the window needs a display, and there is none here (DISPLAY and "
+                    "WAYLAND_DISPLAY are not set).\n"
+                    "  On a desktop machine over SSH: ssh -X, or run it on a virtual display: "
+                    "xvfb-run -a bridgescope ...\n"
+                    "  Without a window: bridgescope --platform offscreen --screenshot out.png, or one "
+                    "of the commands (bridgescope --help).");
+}
+
+/// The edit distance of two short words, to suggest the command meant.
+int distance(const QString& a, const QString& b)
+{
+    std::vector<int> row(std::size_t(b.size()) + 1);
+    for (std::size_t j = 0; j < row.size(); ++j)
+        row[j] = int(j);
+    for (qsizetype i = 1; i <= a.size(); ++i) {
+        int diagonal = row[0];
+        row[0] = int(i);
+        for (qsizetype j = 1; j <= b.size(); ++j) {
+            const int up = row[std::size_t(j)];
+            row[std::size_t(j)]
+                = std::min({up + 1, row[std::size_t(j) - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row.back();
+}
+
+/// A first argument that is neither an option, a command nor a file or folder: what is wrong with it.
+QString unknownArgument(const QString& first, const QStringList& commands)
+{
+    if (first.isEmpty() || first.startsWith(u'-') || QFileInfo::exists(first))
+        return {};
+    // A path (it has a folder or a suffix) that is not there; otherwise a word: a command mistyped.
+    if (first.contains(u'/') || first.contains(u'.'))
+        return Main::tr("bridgescope: %1 does not exist").arg(first);
+    QString message = Main::tr("bridgescope: '%1' is not a command. The commands: %2.")
+                          .arg(first, commands.join(u", "_s));
+    QString closest;
+    int best = 3; // at most two edits away
+    for (const QString& c : commands)
+        if (const int d = distance(first.toLower(), c); d < best) {
+            best = d;
+            closest = c;
+        }
+    if (!closest.isEmpty())
+        message += u'\n' + Main::tr("Did you mean '%1'?").arg(closest);
+    return message + u'\n' + Main::tr("Run 'bridgescope --help' for the options and what each command does.");
 }
 } // namespace
 
@@ -93,6 +178,15 @@ int main(int argc, char** argv)
         if (first == u"experiment"_s)
             return CliOutput::finish(runExperimentCommand(args));
         return runConfigCommand(args);
+    }
+    // A typo is not a file for the window to open, and a window without a display is not an abort.
+    const QString refusal = unknownArgument(first, commands);
+    const QString noDisplay = refusal.isEmpty() ? whyNoDisplay(argc, argv) : QString();
+    if (!refusal.isEmpty() || !noDisplay.isEmpty()) {
+        QCoreApplication app(argc, argv);
+        installTranslations(app);
+        CliOutput::err(refusal.isEmpty() ? noDisplay : refusal);
+        return refusal.isEmpty() ? CliOutput::ExitFailed : CliOutput::ExitUsage;
     }
     return runGui(argc, argv);
 }

@@ -2797,6 +2797,33 @@ factors:
     </message>
 </context>
 <context>
+    <name>Main</name>
+    <message>
+        <source>bridgescope: the window needs a display, and there is none here (DISPLAY and WAYLAND_DISPLAY are not set).
+  On a desktop machine over SSH: ssh -X, or run it on a virtual display: xvfb-run -a bridgescope ...
+  Without a window: bridgescope --platform offscreen --screenshot out.png, or one of the commands (bridgescope --help).</source>
+        <translation>bridgescope: das Fenster braucht eine Anzeige, und hier gibt es keine (DISPLAY und WAYLAND_DISPLAY sind nicht gesetzt).
+  Auf einem Desktop-Rechner über SSH: ssh -X, oder auf einer virtuellen Anzeige ausführen: xvfb-run -a bridgescope ...
+  Ohne Fenster: bridgescope --platform offscreen --screenshot out.png, oder einer der Befehle (bridgescope --help).</translation>
+    </message>
+    <message>
+        <source>bridgescope: %1 does not exist</source>
+        <translation>bridgescope: %1 gibt es nicht</translation>
+    </message>
+    <message>
+        <source>bridgescope: &apos;%1&apos; is not a command. The commands: %2.</source>
+        <translation>bridgescope: &apos;%1&apos; ist kein Befehl. Die Befehle: %2.</translation>
+    </message>
+    <message>
+        <source>Did you mean &apos;%1&apos;?</source>
+        <translation>Meinten Sie &apos;%1&apos;?</translation>
+    </message>
+    <message>
+        <source>Run &apos;bridgescope --help&apos; for the options and what each command does.</source>
+        <translation>&apos;bridgescope --help&apos; zeigt die Optionen und was jeder Befehl tut.</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <source>Map</source>

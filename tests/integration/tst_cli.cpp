@@ -396,6 +396,56 @@ private slots:
         QTest::newRow("report") << QStringList {u"report"_s, u"--help"_s};
         QTest::newRow("record") << QStringList {u"record"_s, u"--help"_s};
         QTest::newRow("discover") << QStringList {u"discover"_s, u"--help"_s};
+        QTest::newRow("watch") << QStringList {u"watch"_s, u"--help"_s};
+        QTest::newRow("experiment") << QStringList {u"experiment"_s, u"--help"_s};
+        QTest::newRow("demo") << QStringList {u"demo"_s, u"--help"_s};
+        QTest::newRow("probe") << QStringList {u"probe"_s, u"--help"_s};
+        QTest::newRow("bridge") << QStringList {u"bridge"_s, u"--help"_s};
+    }
+
+    // Issue 15, item 9: a typo is not a file for the window, and no display is not an abort.
+    void anUnknownCommandIsNamedWithTheCommands()
+    {
+        Run r = bridgescope({u"nonsense"_s});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"'nonsense' is not a command"_s) && r.err.contains(u"experiment"_s),
+                 qPrintable(r.err));
+        r = bridgescope({u"wach"_s, u"--help"_s});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"Did you mean 'watch'?"_s), qPrintable(r.err));
+        r = bridgescope({u"/no/such/config.yaml"_s});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"/no/such/config.yaml does not exist"_s), qPrintable(r.err));
+    }
+
+    void theWindowWithoutADisplaySaysSoAndExits()
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            env.remove(QString::fromLatin1(name));
+        for (const QStringList& args : {QStringList {}, QStringList {u"--demo"_s},
+                                        QStringList {QStringLiteral(BRIDGESCOPE_FIXTURES_DIR)}}) {
+            QProcess p;
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
+            QVERIFY(p.waitForFinished(30000));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QCOMPARE(p.exitStatus(), QProcess::NormalExit); // not SIGABRT
+            QCOMPARE(p.exitCode(), 1);
+            QVERIFY2(err.contains(u"needs a display"_s) && err.contains(u"xvfb-run"_s)
+                         && err.contains(u"--platform offscreen"_s),
+                     qPrintable(err));
+        }
+        // A platform that needs no display still works without one.
+        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+        QProcess p;
+        p.setProcessEnvironment(env);
+        QTemporaryDir dir;
+        const QString png = dir.filePath(u"shot.png"_s);
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"--screenshot"_s, png, u"--after"_s, u"0.2"_s});
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitCode(), 0);
+        QVERIFY(QFile::exists(png));
     }
     void everyCommandHasHelp()
     {
