@@ -254,6 +254,8 @@ int runGui(int& argc, char** argv)
         }
     }
     MainWindow window;
+    if (request.screenshot.isEmpty())
+        window.rememberSession(); // a screenshot shows the window as it starts the first time
     if (lab)
         showDemo(window, *lab);
     if (!applyRequest(window, request))

@@ -7,6 +7,7 @@
 #include "session/measuresession.h"
 #include "watch/watchsession.h"
 #include "widgets/common/problemspanel.h"
+#include "widgets/common/windowmemory.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/experiment/experimentpage.h"
 #include "widgets/links/linkspage.h"
@@ -26,6 +27,8 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
@@ -96,7 +99,26 @@ MainWindow::MainWindow(QWidget* parent)
             });
     m_problemStatus->setText(ProblemModel::countText(0, 0));
     updateTitle();
-    resize(1280, 800);
+    // 1280x800, or a smaller screen's room.
+    const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1280, 800);
+    resize(std::min(1280, screen.width()), std::min(800, screen.height()));
+}
+
+void MainWindow::rememberSession()
+{
+    m_remember = true;
+    QSettings settings;
+    restoreGeometry(settings.value(u"window/geometry"_s).toByteArray());
+    restoreState(settings.value(u"window/state"_s).toByteArray());
+    WindowMemory::restore(this, settings, u"window/views"_s);
+}
+
+void MainWindow::saveSession() const
+{
+    QSettings settings;
+    settings.setValue(u"window/geometry"_s, saveGeometry());
+    settings.setValue(u"window/state"_s, saveState());
+    WindowMemory::save(this, settings, u"window/views"_s);
 }
 
 MainWindow::~MainWindow()
@@ -224,8 +246,11 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
-    if (m_files->maybeSave())
-        event->accept();
-    else
+    if (!m_files->maybeSave()) {
         event->ignore();
+        return;
+    }
+    if (m_remember)
+        saveSession();
+    event->accept();
 }

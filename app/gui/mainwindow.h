@@ -43,6 +43,12 @@ public:
     WatchSession* watch() const { return m_watch; }
     QTabWidget* pages() const { return m_pages; }
 
+    /// Brings back how the window was left (geometry, page, splitters, columns, filters) and keeps
+    /// it when it closes. Not by default: tests and screenshots start from the same window.
+    void rememberSession();
+    /// Writes the window's state now (also done on close once rememberSession() was called).
+    void saveSession() const;
+
 protected:
     void closeEvent(class QCloseEvent* event) override;
 
@@ -68,4 +74,5 @@ private:
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
     QLabel* m_problemStatus;
+    bool m_remember = false;
 };

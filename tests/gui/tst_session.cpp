@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// The window remembers how it was left: geometry, page, splitters, columns and their sort, filter
+// texts; and a first start fits the screen.
+#include "app/gui/mainwindow.h"
+#include "widgets/common/windowmemory.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
+
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QScreen>
+#include <QSettings>
+#include <QSplitter>
+#include <QTableView>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+class TestSession : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        QSettings::setDefaultFormat(QSettings::IniFormat);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+        QSettings().clear();
+    }
+
+    void aFirstStartFitsTheScreen()
+    {
+        MainWindow w;
+        w.rememberSession(); // nothing saved yet
+        const QRect screen = w.screen()->availableGeometry();
+        QVERIFY(w.width() <= screen.width() && w.height() <= screen.height());
+        QCOMPARE(w.size(), QSize(std::min(1280, screen.width()), std::min(800, screen.height())));
+    }
+
+    void theWindowComesBackAsItWasLeft()
+    {
+        QList<int> sizes;
+        QSize size;
+        {
+            MainWindow w;
+            w.rememberSession();
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            w.resize(1200, 640);
+            size = w.size(); // as the window's minimum allows
+            QVERIFY(size != QSize(1280, 800));
+            w.pages()->setCurrentWidget(w.linksPage());
+            w.findChild<QLineEdit*>(u"rosFilter"_s)->setText(u"bench"_s);
+            w.findChild<QLineEdit*>(u"linkFilter"_s)->setText(u"pointcloud"_s);
+            auto* splitter = w.discoverPage()->findChild<QSplitter*>();
+            QVERIFY(splitter && splitter->count() >= 2);
+            sizes = splitter->sizes();
+            sizes[0] += 90;
+            sizes[1] -= 90;
+            splitter->setSizes(sizes);
+            sizes = splitter->sizes();
+            QHeaderView* header = w.findChild<QTableView*>(u"linkTable"_s)->horizontalHeader();
+            QVERIFY(header->count() > 2);
+            header->resizeSection(0, 233);
+            header->setSortIndicator(2, Qt::DescendingOrder);
+            QVERIFY(w.close());
+        }
+        MainWindow w;
+        w.rememberSession();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.size(), size);
+        QCOMPARE(w.pages()->currentWidget(), w.linksPage());
+        QCOMPARE(w.findChild<QLineEdit*>(u"rosFilter"_s)->text(), u"bench"_s);
+        QCOMPARE(w.findChild<QLineEdit*>(u"linkFilter"_s)->text(), u"pointcloud"_s);
+        w.pages()->setCurrentWidget(w.discoverPage()); // a page's splitters come back when it shows
+        QCOMPARE(w.discoverPage()->findChild<QSplitter*>()->sizes(), sizes);
+        QHeaderView* header = w.findChild<QTableView*>(u"linkTable"_s)->horizontalHeader();
+        QCOMPARE(header->sectionSize(0), 233);
+        QCOMPARE(header->sortIndicatorSection(), 2);
+        QCOMPARE(header->sortIndicatorOrder(), Qt::DescendingOrder);
+    }
+
+    void aWindowThatIsNotToRememberLeavesNothing()
+    {
+        QSettings().clear();
+        {
+            MainWindow w;
+            w.show();
+            w.pages()->setCurrentIndex(2);
+            QVERIFY(w.close());
+        }
+        QVERIFY(QSettings().allKeys().filter(u"window/"_s).isEmpty());
+    }
+
+    void keysFollowTheWidgetTree()
+    {
+        QWidget root;
+        auto* named = new QLineEdit(&root);
+        named->setObjectName(u"rosFilter"_s);
+        auto* a = new QSplitter(&root);
+        auto* b = new QSplitter(&root);
+        QCOMPARE(WindowMemory::keyOf(named, &root), u"rosFilter"_s);
+        QCOMPARE(WindowMemory::keyOf(a, &root), u"QSplitter#0"_s);
+        QCOMPARE(WindowMemory::keyOf(b, &root), u"QSplitter#1"_s);
+    }
+};
+
+QTEST_MAIN(TestSession)
+#include "tst_session.moc"
