@@ -2906,10 +2906,6 @@ factors:
         <translation>Über Bridgescope</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;Bridgescope %1&lt;/h3&gt;&lt;p&gt;Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Bridgescope %1&lt;/h3&gt;&lt;p&gt;ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>About &amp;Qt</source>
         <translation>Über &amp;Qt</translation>
     </message>
@@ -2964,6 +2960,42 @@ factors:
     <message>
         <source>An experiment is running. Stop it and quit? Resume goes on with it later.</source>
         <translation>Ein Experiment läuft. Anhalten und beenden? Fortsetzen macht später damit weiter.</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Bridgescope %1&lt;/h3&gt;&lt;p&gt;Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running %3), Paho MQTT C++ %4, yaml-cpp %5 and roscpp %6.&lt;/p&gt;&lt;p&gt;MIT License.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Bridgescope %1&lt;/h3&gt;&lt;p&gt;ROS- und MQTT-Topics entdecken, mit mqtt_client verbinden und die Strecke vermessen.&lt;/p&gt;&lt;p&gt;Gebaut mit Qt %2 (läuft mit %3), Paho MQTT C++ %4, yaml-cpp %5 und roscpp %6.&lt;/p&gt;&lt;p&gt;MIT-Lizenz.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Bridgescope User Guide</source>
+        <translation>Bridgescope-Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>The user guide is missing from this build.</source>
+        <translation>Diesem Build fehlt das Benutzerhandbuch.</translation>
+    </message>
+    <message>
+        <source>Button: %1</source>
+        <translation>Schaltfläche: %1</translation>
+    </message>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Tastenkürzel</translation>
     </message>
 </context>
 <context>

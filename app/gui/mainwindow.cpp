@@ -3,6 +3,8 @@
 
 #include "config/configdocument.h"
 #include "config/problemmodel.h"
+#include "mqtt/mqttconnection.h"
+#include "ros/rosnode.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "watch/watchsession.h"
@@ -19,20 +21,28 @@
 #include "widgets/reports/reportspage.h"
 #include "widgets/tools/probedialog.h"
 
+#include <functional>
+#include <QAbstractButton>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDialog>
 #include <QFile>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
 #include <QSettings>
+#include <QShortcut>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTabWidget>
+#include <QTextBrowser>
 #include <QTimer>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 using namespace Qt::StringLiterals;
 
@@ -206,13 +216,102 @@ void MainWindow::createMenus()
     probe->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About Bridgescope"), this, [this] {
-        QMessageBox::about(this, tr("About Bridgescope"),
-                           tr("<h3>Bridgescope %1</h3><p>Discover ROS and MQTT topics, bridge them with "
-                              "mqtt_client, and measure the link.</p>")
-                               .arg(QStringLiteral(BRIDGESCOPE_VERSION)));
-    });
+    help->addAction(tr("&User Guide"), QKeySequence::HelpContents, this, &MainWindow::showUserGuide);
+    help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
+    help->addSeparator();
+    help->addAction(tr("&About Bridgescope"), this,
+                    [this] { QMessageBox::about(this, tr("About Bridgescope"), aboutText()); });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+QString MainWindow::aboutText()
+{
+    return tr("<h3>Bridgescope %1</h3><p>Discover ROS and MQTT topics, bridge them with mqtt_client, and "
+              "measure the link.</p><p>Built with Qt %2 (running %3), Paho MQTT C++ %4, yaml-cpp %5 and "
+              "roscpp %6.</p><p>MIT License.</p>")
+        .arg(QStringLiteral(BRIDGESCOPE_VERSION), QStringLiteral(QT_VERSION_STR),
+             QString::fromLatin1(qVersion()), MqttConnection::pahoVersion(),
+             QStringLiteral(BRIDGESCOPE_YAMLCPP_VERSION), RosNode::roscppVersion());
+}
+
+/// The user guide, bundled with the program, in a window of its own beside the main one.
+void MainWindow::showUserGuide()
+{
+    auto* dialog = findChild<QDialog*>(u"userGuide"_s);
+    if (!dialog) {
+        dialog = new QDialog(this);
+        dialog->setObjectName(u"userGuide"_s);
+        dialog->setWindowTitle(tr("Bridgescope User Guide"));
+        auto* text = new QTextBrowser(dialog);
+        text->setOpenExternalLinks(true);
+        QFile guide(u":/docs/user-guide.md"_s);
+        if (guide.open(QIODevice::ReadOnly))
+            text->setMarkdown(QString::fromUtf8(guide.readAll()));
+        else
+            text->setPlainText(tr("The user guide is missing from this build."));
+        auto* layout = new QVBoxLayout(dialog);
+        layout->addWidget(text);
+        dialog->resize(900, 700);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+
+/// Every shortcut of the window: its menus' actions, and the pages' buttons and shortcuts.
+QList<std::pair<QString, QString>> MainWindow::shortcuts() const
+{
+    QList<std::pair<QString, QString>> out;
+    const auto clean = [](QString text) { return text.remove(u'&').remove(u'…').trimmed(); };
+    std::function<void(const QMenu*, const QString&)> walk = [&](const QMenu* menu, const QString& path) {
+        for (const QAction* a : menu->actions()) {
+            if (a->menu())
+                walk(a->menu(), path + clean(a->text()) + u" › "_s);
+            else if (!a->shortcut().isEmpty())
+                out.append({path + clean(a->text()), a->shortcut().toString(QKeySequence::NativeText)});
+        }
+    };
+    for (const QAction* a : menuBar()->actions())
+        if (a->menu())
+            walk(a->menu(), clean(a->text()) + u" › "_s);
+    for (const QAbstractButton* b : findChildren<QAbstractButton*>())
+        if (!b->shortcut().isEmpty() && !b->text().isEmpty())
+            out.append(
+                {tr("Button: %1").arg(clean(b->text())), b->shortcut().toString(QKeySequence::NativeText)});
+    for (const QShortcut* s : findChildren<QShortcut*>())
+        if (!s->key().isEmpty())
+            out.append({s->whatsThis().isEmpty() ? s->objectName() : s->whatsThis(),
+                        s->key().toString(QKeySequence::NativeText)});
+    return out;
+}
+
+void MainWindow::showShortcuts()
+{
+    auto* dialog = findChild<QDialog*>(u"shortcuts"_s);
+    if (!dialog) {
+        dialog = new QDialog(this);
+        dialog->setObjectName(u"shortcuts"_s);
+        dialog->setWindowTitle(tr("Keyboard Shortcuts"));
+        auto* table = new QTableWidget(dialog);
+        table->setObjectName(u"shortcutTable"_s);
+        table->setColumnCount(2);
+        table->setHorizontalHeaderLabels({tr("Command"), tr("Shortcut")});
+        table->verticalHeader()->setVisible(false);
+        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        const auto list = shortcuts();
+        table->setRowCount(int(list.size()));
+        for (int i = 0; i < int(list.size()); ++i) {
+            table->setItem(i, 0, new QTableWidgetItem(list[i].first));
+            table->setItem(i, 1, new QTableWidgetItem(list[i].second));
+        }
+        table->resizeColumnsToContents();
+        table->horizontalHeader()->setStretchLastSection(true);
+        auto* layout = new QVBoxLayout(dialog);
+        layout->addWidget(table);
+        dialog->resize(560, 600);
+    }
+    dialog->show();
+    dialog->raise();
 }
 
 void MainWindow::updateRecentMenu(const QStringList& files)

@@ -46,6 +46,12 @@ public:
     /// Brings back how the window was left (geometry, page, splitters, columns, filters) and keeps
     /// it when it closes. Not by default: tests and screenshots start from the same window.
     void rememberSession();
+    /// Every shortcut of the window: (where, keys), as Help › Keyboard Shortcuts lists them.
+    QList<std::pair<QString, QString>> shortcuts() const;
+    void showUserGuide();
+    void showShortcuts();
+    /// About's text: the versions of Bridgescope, Qt, Paho, yaml-cpp and roscpp.
+    static QString aboutText();
     /// Writes the window's state now (also done on close once rememberSession() was called).
     void saveSession() const;
 

@@ -391,3 +391,9 @@ bool MqttConnection::publish(const QString& topic, const QByteArray& payload, in
         return false;
     }
 }
+
+QString MqttConnection::pahoVersion()
+{
+    const uint32_t v = mqtt::VERSION; // 0xMMmmpp00
+    return QStringLiteral("%1.%2.%3").arg(v >> 24).arg((v >> 16) & 0xff).arg((v >> 8) & 0xff);
+}

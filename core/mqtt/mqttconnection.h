@@ -33,6 +33,9 @@ public:
     enum class State { Disconnected, Connecting, Connected, Reconnecting, Failed };
     Q_ENUM(State)
 
+    /// The Paho MQTT C++ library's version ("1.2.0"), for About.
+    static QString pahoVersion();
+
     explicit MqttConnection(QObject* parent = nullptr);
     ~MqttConnection() override;
 

@@ -199,3 +199,8 @@ void RosNode::removeHook(int id)
     std::lock_guard<std::mutex> lock(d->hookMutex);
     d->hooks.erase(id);
 }
+
+QString RosNode::roscppVersion()
+{
+    return QStringLiteral("%1.%2.%3").arg(ROS_VERSION_MAJOR).arg(ROS_VERSION_MINOR).arg(ROS_VERSION_PATCH);
+}

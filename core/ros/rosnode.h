@@ -23,6 +23,8 @@ public:
 
     /// The shared node (created on first use).
     static std::shared_ptr<RosNode> acquire();
+    /// roscpp's version ("1.15.15"), for About.
+    static QString roscppVersion();
     ~RosNode();
     RosNode(const RosNode&) = delete;
     RosNode& operator=(const RosNode&) = delete;
