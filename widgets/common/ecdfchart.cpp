@@ -6,6 +6,7 @@
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
 #include "latency/palette.h"
+#include "widgets/common/chartstyle.h"
 
 #include <cmath>
 #include <QApplication>
@@ -13,6 +14,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QClipboard>
+#include <QEvent>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QLegendMarker>
@@ -164,6 +166,7 @@ void EcdfChart::rebuild()
         panel->y->setLabelFormat(u"%.1f"_s);
         panel->chart->addAxis(panel->x, Qt::AlignBottom);
         panel->chart->addAxis(panel->y, Qt::AlignLeft);
+        ChartStyle::apply(panel->chart, palette());
         m_grid->addWidget(panel->view, i / columns, i % columns);
         panel->view->show(); // at once: a layout would show it only on the next event loop pass
         m_panels.push_back(std::move(panel));
@@ -298,4 +301,12 @@ bool EcdfChart::save(const QString& path, QString* error) const
 void EcdfChart::copyToClipboard() const
 {
     QApplication::clipboard()->setPixmap(toPixmap());
+}
+
+void EcdfChart::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        for (const auto& panel : m_panels)
+            ChartStyle::apply(panel->chart, palette());
 }

@@ -50,6 +50,10 @@ public:
     bool save(const QString& path, QString* error = nullptr) const;
     void copyToClipboard() const;
 
+protected:
+    /// A new palette (a dark theme) recolours the charts.
+    void changeEvent(QEvent* event) override;
+
 private:
     struct Panel;
     struct Curve;

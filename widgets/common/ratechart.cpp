@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "ratechart.h"
 
+#include "widgets/common/chartstyle.h"
+
 #include <algorithm>
 #include <QChart>
+#include <QEvent>
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -24,6 +27,7 @@ RateChart::RateChart(QWidget* parent)
     m_y->setLabelFormat(QStringLiteral("%.3g"));
     chart->setMargins(QMargins(2, 2, 2, 2));
     setChart(chart);
+    ChartStyle::apply(chart, palette());
     setRenderHint(QPainter::Antialiasing);
     setMinimumHeight(160);
 }
@@ -44,4 +48,11 @@ void RateChart::setSamples(const QList<double>& samples, const QString& unit)
     m_x->setRange(std::min(-10, 1 - n), 0);
     m_y->setRange(bottom < 0 ? bottom * 1.15 : 0, top > 0 ? top * 1.15 : (bottom < 0 ? 0 : 1));
     m_y->setTitleText(unit);
+}
+
+void RateChart::changeEvent(QEvent* event)
+{
+    QChartView::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        ChartStyle::apply(chart(), palette());
 }

@@ -15,6 +15,9 @@ public:
     /// One value per second, oldest first; replaces the series in one call.
     void setSamples(const QList<double>& samples, const QString& unit);
 
+protected:
+    void changeEvent(QEvent* event) override; ///< a new palette recolours it
+
 private:
     QLineSeries* m_series;
     QValueAxis* m_x;

@@ -2,8 +2,10 @@
 #include "yamlpreview.h"
 
 #include "config/configdocument.h"
+#include "widgets/common/chartstyle.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -16,12 +18,20 @@
 
 using namespace Qt::StringLiterals;
 
-namespace {
 /// Keys, comments and substitutions in colour, so that the structure reads at a glance.
 class YamlHighlighter : public QSyntaxHighlighter
 {
 public:
     using QSyntaxHighlighter::QSyntaxHighlighter;
+    /// Colours that read on a dark background, or on a light one.
+    void setDark(bool dark)
+    {
+        if (dark == m_dark)
+            return;
+        m_dark = dark;
+        rehighlight();
+    }
+    bool isDark() const { return m_dark; }
 
 protected:
     void highlightBlock(const QString& text) override
@@ -30,13 +40,13 @@ protected:
         static const QRegularExpression comment(uR"((^|\s)#.*$)"_s);
         static const QRegularExpression substitution(uR"(\$\([^)]*\))"_s);
         QTextCharFormat keyFormat;
-        keyFormat.setForeground(QColor(0x1f, 0x5f, 0xa8));
+        keyFormat.setForeground(m_dark ? QColor(0x8a, 0xb4, 0xf8) : QColor(0x1f, 0x5f, 0xa8));
         keyFormat.setFontWeight(QFont::DemiBold);
         QTextCharFormat commentFormat;
-        commentFormat.setForeground(QColor(0x6a, 0x73, 0x7d));
+        commentFormat.setForeground(m_dark ? QColor(0x9a, 0xa0, 0xa6) : QColor(0x6a, 0x73, 0x7d));
         commentFormat.setFontItalic(true);
         QTextCharFormat subFormat;
-        subFormat.setForeground(QColor(0x8a, 0x3f, 0xa0));
+        subFormat.setForeground(m_dark ? QColor(0xd7, 0xae, 0xfb) : QColor(0x8a, 0x3f, 0xa0));
         if (const auto m = key.match(text); m.hasMatch())
             setFormat(int(m.capturedStart(2)), int(m.capturedLength(2)), keyFormat);
         for (auto it = substitution.globalMatch(text); it.hasNext();) {
@@ -46,8 +56,10 @@ protected:
         if (const auto m = comment.match(text); m.hasMatch())
             setFormat(int(m.capturedStart()), int(m.capturedLength()), commentFormat);
     }
+
+private:
+    bool m_dark = false;
 };
-} // namespace
 
 YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     : QWidget(parent)
@@ -76,7 +88,8 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     m_text->setReadOnly(true);
     m_text->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    new YamlHighlighter(m_text->document());
+    m_highlighter = new YamlHighlighter(m_text->document());
+    m_highlighter->setDark(ChartStyle::isDark(palette()));
     v->addWidget(m_text, 1);
 
     // Quick edits arrive one after another; the preview is computed once they pause.
@@ -141,4 +154,16 @@ void YamlPreview::refreshNow()
     const int scroll = m_text->verticalScrollBar() ? m_text->verticalScrollBar()->value() : 0;
     m_text->setPlainText(yaml);
     m_text->verticalScrollBar()->setValue(scroll);
+}
+
+void YamlPreview::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        m_highlighter->setDark(ChartStyle::isDark(palette()));
+}
+
+bool YamlPreview::isDarkHighlighting() const
+{
+    return m_highlighter->isDark();
 }

@@ -33,4 +33,12 @@ private:
 
 protected:
     void showEvent(class QShowEvent* event) override;
+    void changeEvent(QEvent* event) override; ///< a dark palette gets the dark highlighting
+
+public:
+    /// Whether the highlighting is the one for dark backgrounds (tests).
+    bool isDarkHighlighting() const;
+
+private:
+    class YamlHighlighter* m_highlighter = nullptr;
 };

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#include "chartstyle.h"
+
+#include <QAbstractAxis>
+#include <QChart>
+#include <QLegend>
+#include <QPalette>
+
+bool ChartStyle::isDark(const QPalette& palette)
+{
+    return palette.color(QPalette::Window).lightness() < palette.color(QPalette::WindowText).lightness();
+}
+
+void ChartStyle::apply(QChart* chart, const QPalette& palette)
+{
+    const QColor text = palette.color(QPalette::Text);
+    const QColor base = palette.color(QPalette::Base);
+    QColor grid = palette.color(QPalette::Mid);
+    grid.setAlpha(isDark(palette) ? 110 : 140);
+    chart->setBackgroundBrush(base);
+    chart->setBackgroundPen(Qt::NoPen);
+    chart->setPlotAreaBackgroundVisible(false);
+    chart->setTitleBrush(text);
+    chart->legend()->setLabelColor(text);
+    for (QAbstractAxis* axis : chart->axes()) {
+        axis->setLabelsColor(text);
+        axis->setTitleBrush(text);
+        axis->setLinePenColor(palette.color(QPalette::Mid));
+        axis->setGridLineColor(grid);
+        axis->setMinorGridLineColor(grid.lighter(isDark(palette) ? 80 : 115));
+    }
+}

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+class QChart;
+class QPalette;
+
+/// Charts in the colours of the widgets around them: background, text, axes and grid from the
+/// palette (a dark theme gets a dark chart), the series keeping their own colours. Qt Charts'
+/// themes would recolour the series too, so the brushes are set one by one.
+namespace ChartStyle {
+/// Applies `palette` to the chart and to the axes it has now.
+void apply(QChart* chart, const QPalette& palette);
+/// Whether the palette is a dark one (its window darker than its text).
+bool isDark(const QPalette& palette);
+} // namespace ChartStyle
