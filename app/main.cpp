@@ -10,6 +10,7 @@
 #include "app/cli/reportcommand.h"
 #include "app/cli/watchcommand.h"
 #include "app/gui/guimain.h"
+#include "base/editdistance.h"
 #include "base/logging.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QGuiApplication>
-#include <vector>
 
 using namespace Qt::StringLiterals;
 using CliOutput::ExitOk;
@@ -81,25 +81,6 @@ QString whyNoDisplay(int argc, char** argv)
                     "of the commands (bridgescope --help).");
 }
 
-/// The edit distance of two short words, to suggest the command meant.
-int distance(const QString& a, const QString& b)
-{
-    std::vector<int> row(std::size_t(b.size()) + 1);
-    for (std::size_t j = 0; j < row.size(); ++j)
-        row[j] = int(j);
-    for (qsizetype i = 1; i <= a.size(); ++i) {
-        int diagonal = row[0];
-        row[0] = int(i);
-        for (qsizetype j = 1; j <= b.size(); ++j) {
-            const int up = row[std::size_t(j)];
-            row[std::size_t(j)]
-                = std::min({up + 1, row[std::size_t(j) - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
-        }
-    }
-    return row.back();
-}
-
 /// A first argument that is neither an option, a command nor a file or folder: what is wrong with it.
 QString unknownArgument(const QString& first, const QStringList& commands)
 {
@@ -113,7 +94,7 @@ QString unknownArgument(const QString& first, const QStringList& commands)
     QString closest;
     int best = 3; // at most two edits away
     for (const QString& c : commands)
-        if (const int d = distance(first.toLower(), c); d < best) {
+        if (const int d = editDistance(first.toLower(), c); d < best) {
             best = d;
             closest = c;
         }

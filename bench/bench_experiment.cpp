@@ -10,6 +10,7 @@
 //
 //   scripts/bench.sh bench_experiment     (BENCH_SAMPLES, default 300, sets the samples a run)
 #include "benchutil.h"
+#include "latency/latencyseries.h"
 
 #include <cmath>
 #include <QDir>
@@ -25,23 +26,17 @@ namespace {
 constexpr int kWarmup = 20;
 constexpr double kRateHz = 10;
 
+/// A run's totals in ms, and their statistics as the reports compute them.
 struct Totals
 {
     std::vector<double> ms;
-    double mean() const
+    LatencyStats stats() const
     {
-        double s = 0;
+        LatencySeries series;
+        series.setWindow(0);
         for (double v : ms)
-            s += v;
-        return ms.empty() ? NAN : s / double(ms.size());
-    }
-    double std() const
-    {
-        const double m = mean();
-        double s = 0;
-        for (double v : ms)
-            s += (v - m) * (v - m);
-        return ms.size() < 2 ? NAN : std::sqrt(s / double(ms.size() - 1));
+            series.append(std::llround(v * 1e6)); // the CSV has ns resolution
+        return series.stats();
     }
 };
 
@@ -125,10 +120,12 @@ int main(int argc, char** argv)
     Bench::row(u"ratio: a cell's overhead / the demo's start and stop"_s, expOver / demoOver,
                QString::number(expOver / demoOver, 'f', 3));
     for (int r = 0; r < 2; ++r) {
-        Bench::row(u"total mean inside an experiment, round %1 [ms]"_s.arg(r + 1), inside[r].mean(),
-                   u"std %1 ms, n %2"_s.arg(inside[r].std(), 0, 'f', 2).arg(inside[r].ms.size()));
-        Bench::row(u"total mean standalone demo, round %1 [ms]"_s.arg(r + 1), standalone[r].mean(),
-                   u"std %1 ms, n %2"_s.arg(standalone[r].std(), 0, 'f', 2).arg(standalone[r].ms.size()));
+        const LatencyStats in = inside[r].stats();
+        const LatencyStats out = standalone[r].stats();
+        Bench::row(u"total mean inside an experiment, round %1 [ms]"_s.arg(r + 1), in.mean,
+                   u"std %1 ms, n %2"_s.arg(in.std, 0, 'f', 2).arg(in.count));
+        Bench::row(u"total mean standalone demo, round %1 [ms]"_s.arg(r + 1), out.mean,
+                   u"std %1 ms, n %2"_s.arg(out.std, 0, 'f', 2).arg(out.count));
     }
     Totals a;
     Totals b;
@@ -136,19 +133,21 @@ int main(int argc, char** argv)
         a.ms.insert(a.ms.end(), inside[r].ms.begin(), inside[r].ms.end());
         b.ms.insert(b.ms.end(), standalone[r].ms.begin(), standalone[r].ms.end());
     }
-    const double diff = a.mean() - b.mean();
-    const double se = std::sqrt(a.std() * a.std() / double(a.ms.size()) + b.std() * b.std() / double(b.ms.size()));
-    const double noise = std::max(std::abs(inside[0].mean() - inside[1].mean()),
-                                  std::abs(standalone[0].mean() - standalone[1].mean()));
-    Bench::row(u"ratio: total mean inside / standalone"_s, a.mean() / b.mean(),
-               QString::number(a.mean() / b.mean(), 'f', 3));
+    const LatencyStats sa = a.stats();
+    const LatencyStats sb = b.stats();
+    const double diff = sa.mean - sb.mean;
+    const double se = std::sqrt(sa.std * sa.std / double(sa.count) + sb.std * sb.std / double(sb.count));
+    const double noise = std::max(std::abs(inside[0].stats().mean - inside[1].stats().mean),
+                                  std::abs(standalone[0].stats().mean - standalone[1].stats().mean));
+    Bench::row(u"ratio: total mean inside / standalone"_s, sa.mean / sb.mean,
+               QString::number(sa.mean / sb.mean, 'f', 3));
     Bench::row(u"difference of the means [ms]"_s, diff,
                u"standard error %1 ms; between rounds of one kind up to %2 ms"_s.arg(se, 0, 'f', 2)
                    .arg(noise, 0, 'f', 2));
-    const double p99 = Bench::percentile(a.ms, 0.99) / Bench::percentile(b.ms, 0.99);
-    Bench::row(u"ratio: total p99 inside / standalone"_s, p99, QString::number(p99, 'f', 3));
-    Bench::row(u"ratio: total std inside / standalone"_s, a.std() / b.std(),
-               QString::number(a.std() / b.std(), 'f', 3));
+    Bench::row(u"ratio: total p99 inside / standalone"_s, sa.p99 / sb.p99,
+               QString::number(sa.p99 / sb.p99, 'f', 3));
+    Bench::row(u"ratio: total std inside / standalone"_s, sa.std / sb.std,
+               QString::number(sa.std / sb.std, 'f', 3));
     std::printf("\nagree within noise: %s\n", std::abs(diff) <= std::max(3 * se, noise) ? "yes" : "NO");
     return 0;
 }

@@ -38,11 +38,6 @@ struct ExperimentRequest
     bool dryRun = false;
 };
 
-QString duration(double seconds)
-{
-    return ExperimentPlan::durationText(seconds);
-}
-
 int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
 {
     QCommandLineParser parser;
@@ -107,9 +102,10 @@ int dryRun(const ExperimentPlan& plan)
     for (const ExperimentCell& c : plan.cells) {
         const double s = plan.expectedSeconds(c);
         total += s;
-        out(u"  %1  %2  %3"_s.arg(c.id().leftJustified(40), duration(s).rightJustified(8), c.label()));
+        out(u"  %1  %2  %3"_s.arg(c.id().leftJustified(40), ExperimentPlan::durationText(s).rightJustified(8),
+                                  c.label()));
     }
-    out(Experiment::tr("about %1 in all").arg(duration(total)));
+    out(Experiment::tr("about %1 in all").arg(ExperimentPlan::durationText(total)));
     return ExitOk;
 }
 
@@ -209,7 +205,8 @@ int runExperiment(const ExperimentRequest& request)
                                                        .arg(cells)
                                                        .arg(runner.runningSamples())
                                                        .arg(request.plan.samples)
-                                                       .arg(duration(runner.remainingSeconds())));
+                                                       .arg(ExperimentPlan::durationText(
+                                                           runner.remainingSeconds())));
                                            });
     if (!done) { // Ctrl+C or SIGTERM
         runner.stop();

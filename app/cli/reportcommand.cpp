@@ -10,9 +10,7 @@
 #include <cstdio>
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QDir>
 #include <QElapsedTimer>
-#include <QFileInfo>
 #include <unistd.h>
 #include <variant>
 
@@ -196,37 +194,16 @@ int experimentReport(const ReportRequest& request)
         err(why);
         return ExitUsage;
     }
-    switch (request.format) {
-    case ReportFormats::Format::Markdown: {
-        // Written to a file, the Markdown links each factor's ECDF, written beside it as SVG.
-        QString prefix;
-        if (!request.output.isEmpty()) {
-            const QFileInfo file(request.output);
-            prefix = file.dir().filePath(file.completeBaseName());
-            for (int t = 0; t < int(report->tables().size()); ++t) {
-                const QByteArray svg = report->ecdfSvg(t);
-                if (!svg.isEmpty()
-                    && !AtomicFile::write(ExperimentReport::figurePath(prefix, report->tables()[t].factor),
-                                          svg, &why, false)) {
-                    err(why);
-                    return ExitUsage;
-                }
-            }
+    // Written to a file, the Markdown links each factor's ECDF, written beside it as SVG.
+    QString prefix;
+    if (request.format == ReportFormats::Format::Markdown && !request.output.isEmpty()) {
+        prefix = ExperimentReport::figurePrefixOf(request.output);
+        if (!report->writeFigures(prefix, &why)) {
+            err(why);
+            return ExitUsage;
         }
-        return writeText(request, report->toMarkdown(*statistics, prefix).toUtf8());
     }
-    case ReportFormats::Format::Pdf:
-        return writeText(request, report->toPdf(*statistics));
-    case ReportFormats::Format::Latex:
-        return writeText(request, report->toTex(*statistics).toUtf8());
-    case ReportFormats::Format::Html:
-        return writeText(request, report->toHtml(*statistics).toUtf8());
-    case ReportFormats::Format::Csv:
-        return writeText(request, report->toCsv().toUtf8());
-    case ReportFormats::Format::Json:
-        return writeText(request, report->toJson());
-    }
-    return ExitUsage;
+    return writeText(request, report->render(request.format, *statistics, prefix));
 }
 
 /// Renders the report and writes it to the file or stdout; nothing is written when cancelled.

@@ -46,6 +46,27 @@
 
 using namespace Qt::StringLiterals;
 
+namespace {
+/// Shows the window's one dialog named `name` (Help's guide, its shortcuts), made the first time
+/// with `content` filling it; a second call brings it to the front.
+void showToolWindow(QWidget* window, const QString& name, const QString& title, QSize size,
+                    const std::function<QWidget*(QDialog*)>& content)
+{
+    auto* dialog = window->findChild<QDialog*>(name);
+    if (!dialog) {
+        dialog = new QDialog(window);
+        dialog->setObjectName(name);
+        dialog->setWindowTitle(title);
+        auto* layout = new QVBoxLayout(dialog);
+        layout->addWidget(content(dialog));
+        dialog->resize(size);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+} // namespace
+
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
     , m_session(new LiveSession(this))
@@ -237,11 +258,7 @@ QString MainWindow::aboutText()
 /// The user guide, bundled with the program, in a window of its own beside the main one.
 void MainWindow::showUserGuide()
 {
-    auto* dialog = findChild<QDialog*>(u"userGuide"_s);
-    if (!dialog) {
-        dialog = new QDialog(this);
-        dialog->setObjectName(u"userGuide"_s);
-        dialog->setWindowTitle(tr("Bridgescope User Guide"));
+    showToolWindow(this, u"userGuide"_s, tr("Bridgescope User Guide"), QSize(900, 700), [](QDialog* dialog) {
         auto* text = new QTextBrowser(dialog);
         text->setOpenExternalLinks(true);
         QFile guide(u":/docs/user-guide.md"_s);
@@ -249,13 +266,8 @@ void MainWindow::showUserGuide()
             text->setMarkdown(QString::fromUtf8(guide.readAll()));
         else
             text->setPlainText(tr("The user guide is missing from this build."));
-        auto* layout = new QVBoxLayout(dialog);
-        layout->addWidget(text);
-        dialog->resize(900, 700);
-    }
-    dialog->show();
-    dialog->raise();
-    dialog->activateWindow();
+        return text;
+    });
 }
 
 /// Every shortcut of the window: its menus' actions, and the pages' buttons and shortcuts.
@@ -287,11 +299,7 @@ QList<std::pair<QString, QString>> MainWindow::shortcuts() const
 
 void MainWindow::showShortcuts()
 {
-    auto* dialog = findChild<QDialog*>(u"shortcuts"_s);
-    if (!dialog) {
-        dialog = new QDialog(this);
-        dialog->setObjectName(u"shortcuts"_s);
-        dialog->setWindowTitle(tr("Keyboard Shortcuts"));
+    showToolWindow(this, u"shortcuts"_s, tr("Keyboard Shortcuts"), QSize(560, 600), [this](QDialog* dialog) {
         auto* table = new QTableWidget(dialog);
         table->setObjectName(u"shortcutTable"_s);
         table->setColumnCount(2);
@@ -306,12 +314,8 @@ void MainWindow::showShortcuts()
         }
         table->resizeColumnsToContents();
         table->horizontalHeader()->setStretchLastSection(true);
-        auto* layout = new QVBoxLayout(dialog);
-        layout->addWidget(table);
-        dialog->resize(560, 600);
-    }
-    dialog->show();
-    dialog->raise();
+        return table;
+    });
 }
 
 void MainWindow::updateRecentMenu(const QStringList& files)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentreport.h"
 
+#include "base/atomicfile.h"
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"
 #include "latency/palette.h"
@@ -669,6 +670,41 @@ QByteArray ExperimentReport::toPdf(const QList<Statistic>& statistics) const
     // The rich-text subset: the body's content only (QTextDocument ignores the style sheet).
     body = body.mid(body.indexOf(u"<body>"_s));
     return ReportPdf::render(tr("Experiment report: %1").arg(m_plan.name), body, figures);
+}
+
+QByteArray ExperimentReport::render(ReportFormats::Format format, const QList<Statistic>& statistics,
+                                    const QString& figurePrefix) const
+{
+    switch (format) {
+    case ReportFormats::Format::Markdown:
+        return toMarkdown(statistics, figurePrefix).toUtf8();
+    case ReportFormats::Format::Latex:
+        return toTex(statistics).toUtf8();
+    case ReportFormats::Format::Html:
+        return toHtml(statistics).toUtf8();
+    case ReportFormats::Format::Pdf:
+        return toPdf(statistics);
+    case ReportFormats::Format::Csv:
+        return toCsv().toUtf8();
+    case ReportFormats::Format::Json:
+        return toJson();
+    }
+    return {};
+}
+
+bool ExperimentReport::writeFigures(const QString& figurePrefix, QString* error) const
+{
+    for (int t = 0; t < int(m_tables.size()); ++t)
+        if (const QByteArray svg = ecdfSvg(t); !svg.isEmpty()
+            && !AtomicFile::write(figurePath(figurePrefix, m_tables[t].factor), svg, error, false))
+            return false;
+    return true;
+}
+
+QString ExperimentReport::figurePrefixOf(const QString& reportPath)
+{
+    const QFileInfo file(reportPath);
+    return file.dir().filePath(file.completeBaseName());
 }
 
 QByteArray ExperimentReport::toJson() const

@@ -4,6 +4,7 @@
 #include "experiment/experimentrunner.h"
 #include "latency/latencyseries.h"
 #include "latency/latencystats.h"
+#include "report/reportformats.h"
 
 #include <memory>
 #include <optional>
@@ -86,6 +87,15 @@ public:
     QString toHtml(const QList<Statistic>& statistics, bool figures = true) const;
     /// A4: the HTML's tables, then every factor's ECDF. Needs a QGuiApplication.
     QByteArray toPdf(const QList<Statistic>& statistics) const;
+
+    /// The report in `format` (md, tex, html, pdf, csv, json); Markdown links its figures under
+    /// `figurePrefix` when one is given (see writeFigures()).
+    QByteArray render(ReportFormats::Format format, const QList<Statistic>& statistics,
+                      const QString& figurePrefix = QString()) const;
+    /// Writes every factor's ECDF as figurePath(figurePrefix, factor), each atomically.
+    bool writeFigures(const QString& figurePrefix, QString* error) const;
+    /// The prefix of the figures beside a report file: "out/report.md" → "out/report".
+    static QString figurePrefixOf(const QString& reportPath);
     QByteArray toJson() const;
     QString toCsv() const; ///< one row per cell and group: every statistic
 

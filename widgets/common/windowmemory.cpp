@@ -17,11 +17,12 @@ bool isFilter(const QLineEdit* edit)
     return edit->objectName().endsWith(u"Filter"_s) || edit->objectName().endsWith(u"filter"_s);
 }
 
-/// Headers of item views only (a QTabBar or a chart has none we keep).
-bool isViewHeader(const QHeaderView* header)
+/// The column headers (a view's row header holds nothing the user sets).
+bool isColumnHeader(const QHeaderView* header)
 {
-    return header->orientation() == Qt::Horizontal && header->parentWidget();
+    return header->orientation() == Qt::Horizontal;
 }
+
 /// Restores a splitter when it is first shown: before, it has not its final size (a page not
 /// yet shown has none at all), and sizes restored then come out skewed.
 class RestoreOnShow : public QObject
@@ -77,7 +78,7 @@ void WindowMemory::save(const QWidget* root, QSettings& settings, const QString&
     for (const QSplitter* s : root->findChildren<QSplitter*>())
         settings.setValue(u"splitters/"_s + keyOf(s, root), s->saveState());
     for (const QHeaderView* h : root->findChildren<QHeaderView*>())
-        if (isViewHeader(h) && h->count() > 0) {
+        if (isColumnHeader(h) && h->count() > 0) {
             const QString key = u"headers/"_s + keyOf(h, root);
             settings.setValue(key + u"/state"_s, h->saveState());
             settings.setValue(key + u"/count"_s, h->count());
@@ -101,7 +102,7 @@ void WindowMemory::restore(QWidget* root, QSettings& settings, const QString& gr
                 new RestoreOnShow(s, v.toByteArray());
         }
     for (QHeaderView* h : root->findChildren<QHeaderView*>()) {
-        if (!isViewHeader(h))
+        if (!isColumnHeader(h))
             continue;
         const QString key = u"headers/"_s + keyOf(h, root);
         const QByteArray state = settings.value(key + u"/state"_s).toByteArray();

@@ -40,6 +40,21 @@ namespace {
 constexpr int kMaxLogLines = 2000;
 constexpr qsizetype kMaxLineBytes = 4 * 1024 * 1024; ///< a longer line from the child is cut off
 
+/// The complete lines of a child's output so far; the rest waits in `rest` for its end (a line
+/// longer than any the command writes is not ours and is dropped).
+QList<QByteArray> takeLines(QByteArray* rest, const QByteArray& more)
+{
+    *rest += more;
+    QList<QByteArray> lines;
+    qsizetype start = 0;
+    for (qsizetype end; (end = rest->indexOf('\n', start)) >= 0; start = end + 1)
+        lines << rest->sliced(start, end - start);
+    rest->remove(0, start);
+    if (rest->size() > kMaxLineBytes)
+        rest->clear();
+    return lines;
+}
+
 QColor stateColor(CellStatus::State s)
 {
     switch (s) {
@@ -55,10 +70,6 @@ QColor stateColor(CellStatus::State s)
     return {};
 }
 
-QString duration(qint64 seconds)
-{
-    return ExperimentPlan::durationText(double(seconds));
-}
 } // namespace
 
 ExperimentPage::ExperimentPage(QWidget* parent)
@@ -282,11 +293,13 @@ bool ExperimentPage::openPlan(const QString& path, QString* error)
             *error = why;
         return false;
     }
-    // A plan with an error opens too: the editor is where it gets fixed.
-    setPlanText(QString::fromUtf8(text));
-    setPlanPath(path);
+    // A plan with an error opens too: the editor is where it gets fixed. Path and folder first,
+    // so that the plan is checked, and its folder's state and report read, once.
+    m_planPath = path;
     if (folder().isEmpty())
-        setFolder(QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName()));
+        m_folder->setText(
+            QDir::toNativeSeparators(QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName())));
+    setPlanText(QString::fromUtf8(text));
     return true;
 }
 
@@ -298,12 +311,8 @@ bool ExperimentPage::openFolder(const QString& directory, QString* error)
                          .arg(directory, ExperimentRunner::stateFileName());
         return false;
     }
-    setFolder(directory);
-    if (!openPlan(QDir(directory).filePath(ExperimentRunner::planFileName()), error))
-        return false;
-    checkPlan();
-    loadState();
-    return true;
+    m_folder->setText(QDir::toNativeSeparators(directory));
+    return openPlan(QDir(directory).filePath(ExperimentRunner::planFileName()), error);
 }
 
 void ExperimentPage::setPlanText(const QString& text)
@@ -360,8 +369,18 @@ void ExperimentPage::checkPlan()
     m_planStatus->setText(tr("%1: %n cell(s) of %2 samples, about %3", nullptr, int(m_plan->cells.size()))
                               .arg(m_plan->name)
                               .arg(m_plan->samples)
-                              .arg(duration(qint64(seconds))));
+                              .arg(ExperimentPlan::durationText(seconds)));
+    // Typing that leaves the cells as they were (a comment, the samples) keeps the grid, its
+    // states and curves; the folder is read again only for other cells.
+    QStringList ids;
+    for (const ExperimentCell& c : std::as_const(m_plan->cells))
+        ids << c.id();
+    const bool same = ids == m_cellIds && m_plan->factors == m_gridFactors;
     m_cells = m_plan->cells;
+    if (same)
+        return;
+    m_cellIds = ids;
+    m_gridFactors = m_plan->factors;
     m_statuses = QList<CellStatus>(m_cells.size());
     m_series = std::make_unique<LatencySeriesSet>();
     m_chart->setSource(m_series.get());
@@ -383,6 +402,7 @@ void ExperimentPage::loadState()
             updateRow(i);
         }
         m_report.reset();
+        m_reportFolder.clear();
         m_reportView->setPlainText(tr("No report yet: the folder holds no experiment."));
         updateButtons();
         return;
@@ -398,7 +418,8 @@ void ExperimentPage::loadState()
         m_status->setText(why);
     }
     updateButtons();
-    refreshReport();
+    if (dir != m_reportFolder) // a run's end and Refresh read it again
+        refreshReport();
 }
 
 void ExperimentPage::rebuildGrid()
@@ -574,30 +595,19 @@ void ExperimentPage::stop()
 
 void ExperimentPage::readOutput()
 {
-    m_stdoutRest += m_process->readAllStandardOutput();
-    qsizetype end;
-    while ((end = m_stdoutRest.indexOf('\n')) >= 0) {
-        handleLine(m_stdoutRest.left(end));
-        m_stdoutRest.remove(0, end + 1);
-    }
-    if (m_stdoutRest.size() > kMaxLineBytes) // no line ever gets this long: not ours
-        m_stdoutRest.clear();
+    for (const QByteArray& line : takeLines(&m_stdoutRest, m_process->readAllStandardOutput()))
+        handleLine(line);
 }
 
 void ExperimentPage::readErrors()
 {
-    m_stderrRest += m_process->readAllStandardError();
-    qsizetype end;
-    while ((end = m_stderrRest.indexOf('\n')) >= 0) {
-        const QString line = QString::fromUtf8(m_stderrRest.left(end)).trimmed();
-        m_stderrRest.remove(0, end + 1);
+    for (const QByteArray& bytes : takeLines(&m_stderrRest, m_process->readAllStandardError())) {
+        const QString line = QString::fromUtf8(bytes).trimmed();
         if (line.isEmpty())
             continue;
         m_log->appendPlainText(line);
         m_status->setText(line.left(300));
     }
-    if (m_stderrRest.size() > kMaxLineBytes)
-        m_stderrRest.clear();
 }
 
 /// A JSON line of `bridgescope experiment`: a cell started or finished, progress with totals.
@@ -633,14 +643,14 @@ void ExperimentPage::handleLine(const QByteArray& line)
                               ? tr("Cell %1 of %2: %3, warming up; about %4 left")
                                     .arg(i + 1)
                                     .arg(m_cells.size())
-                                    .arg(m_cells[i].label(), duration(remaining))
+                                    .arg(m_cells[i].label(), ExperimentPlan::durationText(remaining))
                               : tr("Cell %1 of %2: %3, %4 of %5 samples; about %6 left")
                                     .arg(i + 1)
                                     .arg(m_cells.size())
                                     .arg(m_cells[i].label())
                                     .arg(s.samples)
                                     .arg(o.value(u"of"_s).toInt())
-                                    .arg(duration(remaining)));
+                                    .arg(ExperimentPlan::durationText(remaining)));
     } else if (event == u"finished"_s) {
         s.state = o.value(u"state"_s).toString() == CellStatus::stateName(CellStatus::Complete)
             ? CellStatus::Complete
@@ -692,6 +702,7 @@ void ExperimentPage::refreshReport()
         m_reportAgain = true;
         return;
     }
+    m_reportFolder = dir;
     auto result = std::make_shared<std::optional<ExperimentReport>>();
     auto why = std::make_shared<QString>();
     m_reportThread
@@ -743,30 +754,19 @@ bool ExperimentPage::exportReport(const QString& path, QString* error, const QSt
     const QString kind = format.isEmpty() ? QFileInfo(path).suffix().toLower() : format;
     const QList<ExperimentReport::Statistic> statistics {
         ExperimentReport::Statistic(m_statistic->currentData().toInt())};
-    QByteArray bytes;
-    if (kind == u"md"_s) {
-        const QString prefix = QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName());
-        for (int t = 0; t < int(m_report->tables().size()); ++t)
-            if (const QByteArray svg = m_report->ecdfSvg(t); !svg.isEmpty()
-                && !AtomicFile::write(ExperimentReport::figurePath(prefix, m_report->tables()[t].factor), svg,
-                                      error, false))
-                return false;
-        bytes = m_report->toMarkdown(statistics, prefix).toUtf8();
-    } else if (kind == u"html"_s || kind == u"htm"_s) {
-        bytes = m_report->toHtml(statistics).toUtf8();
-    } else if (kind == u"tex"_s) {
-        bytes = m_report->toTex(statistics).toUtf8();
-    } else if (kind == u"csv"_s) {
-        bytes = m_report->toCsv().toUtf8();
-    } else if (kind == u"json"_s) {
-        bytes = m_report->toJson();
-    } else if (kind == u"pdf"_s) {
-        bytes = m_report->toPdf(statistics);
-    } else {
+    ReportFormats::Format f;
+    if (!ReportFormats::parse(kind == u"htm"_s ? u"html"_s : kind, &f)) {
         if (error)
             *error = tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind);
         return false;
     }
+    QString prefix;
+    if (f == ReportFormats::Format::Markdown) {
+        prefix = ExperimentReport::figurePrefixOf(path);
+        if (!m_report->writeFigures(prefix, error))
+            return false;
+    }
+    const QByteArray bytes = m_report->render(f, statistics, prefix);
     return AtomicFile::write(path, bytes, error, false);
 }
 

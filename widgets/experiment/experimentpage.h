@@ -143,6 +143,9 @@ private:
     bool m_planEdited = false;
     std::optional<ExperimentPlan> m_plan; ///< the editor's text, when it is a plan
     QList<ExperimentCell> m_cells;
+    QStringList m_cellIds; ///< of the grid as built, and its factors: rebuilt when they change
+    QStringList m_gridFactors;
+    QString m_reportFolder; ///< the folder m_report was (or is being) read from
     QList<CellStatus> m_statuses;
     std::unique_ptr<LatencySeriesSet> m_series; ///< per cell, its totals in ns
     quint64 m_drawn = ~quint64(0);
