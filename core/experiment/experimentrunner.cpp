@@ -472,7 +472,7 @@ std::optional<QList<CellStatus>> ExperimentRunner::readState(const QString& dire
             if (CellStatus::stateName(st) == state)
                 s.state = st;
         s.reason = o.value(u"reason"_s).toString().left(2000);
-        s.samples = qint64(o.value(u"samples"_s).toDouble());
+        s.samples = o.value(u"samples"_s).toInteger();
         s.started = QDateTime::fromString(o.value(u"started"_s).toString(), Qt::ISODate);
         s.finished = QDateTime::fromString(o.value(u"finished"_s).toString(), Qt::ISODate);
         statuses.append(s);
@@ -668,9 +668,9 @@ QList<ThroughputResult> ExperimentRunner::readThroughput(const QString& director
             const QJsonObject po = pv.toObject();
             ThroughputPoint p;
             p.rateHz = po.value(u"rate_hz"_s).toDouble();
-            p.samples = qint64(po.value(u"samples"_s).toDouble());
-            p.expected = qint64(po.value(u"expected"_s).toDouble());
-            p.dropped = qint64(po.value(u"dropped"_s).toDouble());
+            p.samples = po.value(u"samples"_s).toInteger();
+            p.expected = po.value(u"expected"_s).toInteger();
+            p.dropped = po.value(u"dropped"_s).toInteger();
             p.p50Ms = po.value(u"p50_ms"_s).toDouble();
             p.p99Ms = po.value(u"p99_ms"_s).toDouble();
             p.sustainable = po.value(u"sustainable"_s).toBool();

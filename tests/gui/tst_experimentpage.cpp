@@ -155,6 +155,51 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return other.liveSeries()->find(u"qos 1"_s) != nullptr; }, 30000));
     }
 
+    // What the page reads from its child is bounded and checked: a child that prints garbage,
+    // lines for cells that do not exist, numbers that overflow, a 5 MiB line, a run path outside
+    // the folder, and then exits, leaves the page working with only the sound lines applied.
+    void aChildPrintingGarbageChangesOnlyWhatItMaySay()
+    {
+        const QString script = m_dir.filePath(u"hostile.sh"_s);
+        QFile f(script);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("#!/bin/sh\n"
+                "echo '{\"event\":\"started\",\"index\":0,\"cell\":\"001-qos-0\"}'\n"
+                "echo 'not json at all'\n"
+                "echo '{\"event\":\"started\",\"index\":99}'\n"
+                "echo '{\"event\":\"started\",\"index\":-5}'\n"
+                "echo '{\"event\":\"started\",\"index\":1,\"cell\":\"someone-else\"}'\n"
+                "echo '{\"event\":\"progress\",\"index\":0,\"total_ms\":\"oops\"}'\n"
+                "echo '{\"event\":\"progress\",\"index\":0,\"samples\":1e300,"
+                "\"total_ms\":[1.5,\"x\",null,1e308,-1e308,2.5,[3]],\"remaining_s\":1e300}'\n"
+                "head -c 5242880 /dev/zero | tr '\\0' 'x'; echo\n"
+                "echo '{\"event\":\"finished\",\"index\":0,\"cell\":\"001-qos-0\",\"state\":\"complete\","
+                "\"samples\":2,\"run\":\"../../../etc/passwd\"}'\n"
+                "echo '{\"event\":\"throughput\",\"rate_hz\":\"fast\"}'\n"
+                "exit 0\n");
+        f.close();
+        QVERIFY(f.setPermissions(f.permissions() | QFile::ExeOwner));
+        ExperimentPage page;
+        page.setProgram(script);
+        page.setPlanText(u"name: hostile\nsamples: 10\nfactors:\n  qos: [0, 1]\n"_s);
+        page.setFolder(m_dir.filePath(u"hostile"_s));
+        QSignalSpy finished(&page, &ExperimentPage::experimentFinished);
+        QString error;
+        QVERIFY2(page.run(false, &error), qPrintable(error));
+        QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
+        QCOMPARE(finished.first().first().toInt(), 0);
+        QCOMPARE(stateOf(page, 0), u"complete"_s);
+        QCOMPARE(stateOf(page, 1), u"pending"_s);
+        QCOMPARE(page.statuses()[0].samples, 2);
+        QCOMPARE(page.statuses()[0].run, u"runs/001-qos-0.bsrun"_s); // not the line's path
+        const LatencySeries* live = page.liveSeries()->find(u"qos 0"_s);
+        QVERIFY(live);
+        QCOMPARE(live->totalCount(), 2); // 1.5 and 2.5 ms; the rest is no measurement
+        QCOMPARE(live->stats().mean, 2.0);
+        QVERIFY(!page.liveSeries()->find(u"qos 1"_s));
+        QVERIFY(page.runButton()->isEnabled());
+    }
+
     void stopCleansUpAndLeavesTheCellToResume()
     {
         ExperimentPage page;

@@ -2,8 +2,11 @@
 // Experiment plans: the shipped examples read as the paper's tables, factors cross in order,
 // listed cells name what they change, repetitions come last, and every mistake names its line.
 #include "experiment/experimentplan.h"
+#include "experiment/experimentrunner.h"
 
 #include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -156,6 +159,47 @@ private slots:
         QVERIFY(!ExperimentPlan::payloadBytes(u"-1"_s));
         QVERIFY(!ExperimentPlan::payloadBytes(u"99999999999"_s));
         QVERIFY(!ExperimentPlan::payloadBytes(u"5000%"_s));
+    }
+
+    // A folder's state and throughput files are input like any other: numbers that do not fit
+    // are no numbers, and a run is where the runner puts it, whatever the file says.
+    void hostileStateFilesReadSafely()
+    {
+        QTemporaryDir dir;
+        QString why;
+        const auto plan
+            = ExperimentPlan::fromYaml("samples: 10\nfactors:\n  qos: [0, 1]\n", dir.path(), &why);
+        QVERIFY2(plan, qPrintable(why));
+        QFile state(dir.filePath(ExperimentRunner::stateFileName()));
+        QVERIFY(state.open(QIODevice::WriteOnly));
+        state.write("{\"format\": \"bridgescope-experiment\", \"cells\": ["
+                    "{\"id\": \"001-qos-0\", \"state\": \"complete\", \"samples\": 1e300,"
+                    " \"run\": \"../../etc/passwd\"},"
+                    "{\"id\": \"002-qos-1\", \"state\": \"exploded\", \"samples\": -1e19},"
+                    "{\"id\": \"003-nobody\", \"state\": \"complete\"}, 7, null]}");
+        state.close();
+        const auto statuses = ExperimentRunner::readState(dir.path(), *plan, &why);
+        QVERIFY2(statuses, qPrintable(why));
+        QCOMPARE(statuses->size(), 2);
+        QCOMPARE((*statuses)[0].state, CellStatus::Complete);
+        QCOMPARE((*statuses)[0].samples, 0);
+        QCOMPARE((*statuses)[0].run, u"runs/001-qos-0.bsrun"_s);
+        QCOMPARE((*statuses)[1].state, CellStatus::Pending);
+        QCOMPARE((*statuses)[1].samples, 0);
+
+        QFile throughput(dir.filePath(ExperimentRunner::throughputFileName()));
+        QVERIFY(throughput.open(QIODevice::WriteOnly));
+        throughput.write("{\"sizes\": [{\"payload_bytes\": 1000, \"level\": \"1000\", \"complete\": true,"
+                         " \"rates\": [{\"rate_hz\": 10, \"samples\": 1e300, \"expected\": -1e300,"
+                         " \"dropped\": \"many\", \"sustainable\": true}]}, 3]}");
+        throughput.close();
+        const QList<ThroughputResult> results = ExperimentRunner::readThroughput(dir.path());
+        QVERIFY(!results.isEmpty());
+        QVERIFY(!results.first().points.isEmpty());
+        const ThroughputPoint& p = results.first().points.first();
+        QCOMPARE(p.samples, 0);
+        QCOMPARE(p.expected, 0);
+        QCOMPARE(p.dropped, 0);
     }
 };
 

@@ -39,6 +39,7 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr int kMaxLogLines = 2000;
 constexpr qsizetype kMaxLineBytes = 4 * 1024 * 1024; ///< a longer line from the child is cut off
+constexpr double kMaxTotalMs = 1e9; ///< a total beyond ±11 days is no measurement (and would overflow ns)
 
 /// The complete lines of a child's output so far; the rest waits in `rest` for its end (a line
 /// longer than any the command writes is not ours and is dropped).
@@ -634,9 +635,9 @@ void ExperimentPage::handleLine(const QByteArray& line)
         m_series->clear(seriesName(i)); // a cell done again starts afresh
         m_grid->selectRow(i);
     } else if (event == u"progress"_s) {
-        s.samples = qint64(o.value(u"samples"_s).toDouble());
+        s.samples = std::max<qint64>(0, o.value(u"samples"_s).toInteger());
         for (const QJsonValue v : o.value(u"total_ms"_s).toArray())
-            if (v.isDouble() && std::isfinite(v.toDouble()))
+            if (v.isDouble() && std::abs(v.toDouble()) < kMaxTotalMs) // NaN fails too
                 m_series->add(seriesName(i), qint64(v.toDouble() * 1e6));
         const qint64 remaining = o.value(u"remaining_s"_s).toInteger();
         m_status->setText(o.value(u"warming_up"_s).toBool()
@@ -655,8 +656,8 @@ void ExperimentPage::handleLine(const QByteArray& line)
         s.state = o.value(u"state"_s).toString() == CellStatus::stateName(CellStatus::Complete)
             ? CellStatus::Complete
             : CellStatus::Failed;
-        s.samples = qint64(o.value(u"samples"_s).toDouble());
-        s.run = o.value(u"run"_s).toString().left(1000);
+        s.samples = std::max<qint64>(0, o.value(u"samples"_s).toInteger());
+        s.run = ExperimentRunner::runPathOf(m_cells[i]); // where the runner puts it, whatever the line says
         s.reason = o.value(u"reason"_s).toString().left(2000);
         showCounts();
     } else {
