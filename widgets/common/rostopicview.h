@@ -2,16 +2,22 @@
 #pragma once
 
 #include <QList>
+#include <QTimer>
 #include <QWidget>
 
 class QAbstractItemModel;
 class QLineEdit;
 class QSortFilterProxyModel;
 class QTableView;
+class NameDelegate;
 
 /// The ROS graph's topics as a filterable, sortable table: a filter line over a table of `source`
 /// (a RosTopicModel, or a proxy of one), matched in every column, case-insensitive. The ROS side
 /// of the Discover and Map pages.
+///
+/// Names are what people look for: the topic and type columns draw through NameDelegate (rows stay
+/// told apart when narrow, full names in tooltips), and take the room their content needs, up to a
+/// share of the table, until the user sizes a column (or the window's memory does).
 class RosTopicView : public QWidget
 {
     Q_OBJECT
@@ -23,9 +29,19 @@ public:
     QTableView* table() const { return m_table; }
     /// Hides every column but these (RosTopicModel's column numbers).
     void showOnly(const QList<int>& columns);
+    NameDelegate* topicDelegate() const { return m_topicDelegate; }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    void fitColumns();
+
     QLineEdit* m_filter;
     QSortFilterProxyModel* m_proxy;
     QTableView* m_table;
+    NameDelegate* m_topicDelegate;
+    QTimer m_fit;
+    bool m_fitting = false;
+    bool m_userSized = false;
 };

@@ -127,11 +127,6 @@ QWidget* DiscoverPage::createRosPane()
     m_rosView = rosBox->table();
     m_rosView->setObjectName(u"rosTopics"_s);
     m_rosView->setSelectionMode(QAbstractItemView::SingleSelection);
-    QHeaderView* rosHeader = m_rosView->horizontalHeader();
-    rosHeader->setSectionResizeMode(QHeaderView::ResizeToContents);
-    rosHeader->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Interactive);
-    rosHeader->setSectionResizeMode(RosTopicModel::TypeColumn, QHeaderView::Interactive);
-    m_rosView->setColumnWidth(RosTopicModel::TopicColumn, 150);
     return rosBox;
 }
 

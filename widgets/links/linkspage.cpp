@@ -5,6 +5,7 @@
 #include "config/configreader.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
+#include "widgets/common/namedelegate.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/links/ruleseditor.h"
@@ -217,7 +218,8 @@ QWidget* LinksPage::createLinkTable()
     for (const auto& [column, width] : widths)
         m_links->setColumnWidth(column, width);
     m_links->setColumnHidden(LinkModel::LastEventColumn, true); // the event log says it; the tooltip too
-    m_links->setTextElideMode(Qt::ElideMiddle);
+    NameDelegate::install(m_links, LinkModel::SourceColumn);
+    NameDelegate::install(m_links, LinkModel::DestinationColumn);
     connect(m_links->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &LinksPage::showDetail);
     return m_links;
 }

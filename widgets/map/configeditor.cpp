@@ -3,6 +3,7 @@
 
 #include "config/configdocument.h"
 #include "config/mappingmodel.h"
+#include "widgets/common/namedelegate.h"
 #include "widgets/common/problemspanel.h"
 #include "widgets/common/severityiconproxy.h"
 #include "widgets/common/viewsetup.h"
@@ -142,8 +143,10 @@ void ConfigEditor::setUpTable()
 {
     m_table->setObjectName(u"mappingTable"_s);
     m_table->setModel(m_filter);
-    // Long topic names differ at their ends: elide the middle, one line per mapping.
+    // One line per mapping; long names give up their namespaces first (NameDelegate).
     ViewSetup::records(m_table);
+    NameDelegate::install(m_table, MappingModel::RosTopicColumn);
+    NameDelegate::install(m_table, MappingModel::MqttTopicColumn);
     m_table->setSortingEnabled(true);
     m_table->sortByColumn(-1, Qt::AscendingOrder); // file order until the user sorts
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);

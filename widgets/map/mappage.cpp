@@ -53,7 +53,7 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     split->addWidget(m_editor);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 3);
-    split->setSizes({330, 950});
+    split->setSizes({420, 860}); // the ROS topics get room for their names
     m_editor->setInspectorWidth(360);
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);

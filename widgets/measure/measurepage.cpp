@@ -6,6 +6,7 @@
 #include "latency/stamptopicmodel.h"
 #include "session/measuresession.h"
 #include "widgets/common/ecdfchart.h"
+#include "widgets/common/namedelegate.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/measure/runbar.h"
 
@@ -162,6 +163,7 @@ QWidget* MeasurePage::createPipelinePane()
     setUpPipelineView();
     m_seenView->setObjectName(u"stampTopicsView"_s);
     m_seenView->setModel(m_seen);
+    NameDelegate::install(m_seenView, 0);
     m_seenView->setDragEnabled(true);
     m_seenView->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_seenView->setToolTip(tr("Drag a stamp topic into the pipeline, or press Enter to append it"));
@@ -195,7 +197,7 @@ void MeasurePage::setUpPipelineView()
     m_pipelineView->verticalHeader()->hide();
     m_pipelineView->verticalHeader()->setDefaultSectionSize(m_pipelineView->fontMetrics().height() + 8);
     m_pipelineView->setWordWrap(false);
-    m_pipelineView->setTextElideMode(Qt::ElideLeft); // the end of a stamp topic says the most
+    NameDelegate::install(m_pipelineView, PipelineModel::TopicColumn); // stamp topics differ inside
     m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::TopicColumn,
                                                              QHeaderView::Stretch);
     m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::IndexColumn,

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// Names stay told apart: every view of topic names in the window, on the demo lab's graph (a dozen
+// stamp topics that differ only inside their names), shows a different text for every different
+// name, within its column, at 1280x800 and at 1920x1080; Qt's own middle elision does not.
+#include "app/gui/mainwindow.h"
+#include "config/mappingmodel.h"
+#include "demo/demolab.h"
+#include "latency/pipeline.h"
+#include "latency/pipelinemodel.h"
+#include "mqtt/mqttprofile.h"
+#include "ros/rostopicmodel.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
+#include "watch/linkmodel.h"
+#include "widgets/common/namedelegate.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/mappage.h"
+#include "widgets/measure/measurepage.h"
+
+#include <QHash>
+#include <QListView>
+#include <QTableView>
+#include <QTabWidget>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+class TestTopicNames : public QObject
+{
+    Q_OBJECT
+private:
+    DemoLab m_lab;
+    std::unique_ptr<MainWindow> m_window;
+
+    /// Every row's name in `column` of `view` is shown as a text of its own, and fits.
+    static void checkNames(QAbstractItemView* view, int column, int minimumRows)
+    {
+        auto* delegate = qobject_cast<NameDelegate*>(view->itemDelegateForColumn(column));
+        QVERIFY2(delegate, qPrintable(view->objectName()));
+        const QAbstractItemModel* model = view->model();
+        QVERIFY2(model->rowCount() >= minimumRows,
+                 qPrintable(u"%1: %2 rows"_s.arg(view->objectName()).arg(model->rowCount())));
+        auto* table = qobject_cast<QTableView*>(view);
+        const int width = table ? table->columnWidth(column) : view->viewport()->width();
+        QHash<QString, QString> nameOf;
+        for (int r = 0; r < model->rowCount(); ++r) {
+            const QModelIndex index = model->index(r, column);
+            const QString name = index.data().toString();
+            const QString shown = delegate->displayedText(index);
+            QVERIFY2(view->fontMetrics().horizontalAdvance(shown) <= width,
+                     qPrintable(u"%1 wider than %2 px"_s.arg(shown).arg(width)));
+            const QString other = nameOf.value(shown, name);
+            QVERIFY2(
+                other == name,
+                qPrintable(u"%1: %2 and %3 both show as %4"_s.arg(view->objectName(), name, other, shown)));
+            nameOf.insert(shown, name);
+        }
+    }
+
+    void checkEveryView()
+    {
+        MainWindow* w = m_window.get();
+        w->pages()->setCurrentWidget(w->discoverPage());
+        QTest::qWait(300); // the columns fit themselves 100 ms after a change
+        checkNames(w->discoverPage()->rosView(), RosTopicModel::TopicColumn, 19);
+        checkNames(w->discoverPage()->rosView(), RosTopicModel::TypeColumn, 19);
+        w->pages()->setCurrentWidget(w->mapPage());
+        QTest::qWait(300);
+        checkNames(w->mapPage()->rosView(), RosTopicModel::TopicColumn, 19);
+        checkNames(w->mapPage()->editor()->table(), MappingModel::RosTopicColumn, 2);
+        checkNames(w->mapPage()->editor()->table(), MappingModel::MqttTopicColumn, 2);
+        w->pages()->setCurrentWidget(w->measurePage());
+        QTest::qWait(300);
+        checkNames(w->measurePage()->pipelineView(), PipelineModel::TopicColumn, 8);
+        w->pages()->setCurrentWidget(w->linksPage());
+        QTest::qWait(300);
+        checkNames(w->linksPage()->linkView(), LinkModel::SourceColumn, 4);
+        checkNames(w->linksPage()->linkView(), LinkModel::DestinationColumn, 4);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        DemoLab::Options options;
+        options.program = QStringLiteral(BRIDGESCOPE_BINARY);
+        options.payloadBytes = 20000; // the views are tested, not the lab
+        QString error;
+        QVERIFY2(m_lab.start(options, &error), qPrintable(error));
+        m_window = std::make_unique<MainWindow>();
+        MainWindow* w = m_window.get();
+        w->discoverPage()->setRosMasterUri(m_lab.rosMasterUri());
+        w->discoverPage()->connectBroker(MqttProfile::fromUrl(m_lab.brokerUrl()));
+        w->files()->openFile(m_lab.vehicleConfigPath());
+        QVERIFY2(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, &error), qPrintable(error));
+        const std::optional<Pipeline> pipeline = Pipeline::load(m_lab.pipelinePath(), &error);
+        QVERIFY2(pipeline, qPrintable(error));
+        w->measure()->setPipeline(*pipeline);
+        w->resize(1280, 800);
+        w->show();
+        QVERIFY(QTest::qWaitForWindowExposed(w));
+        QTRY_VERIFY_WITH_TIMEOUT(w->discoverPage()->rosView()->model()->rowCount() >= 19, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(w->linksPage()->linkView()->model()->rowCount() >= 4, 15000);
+    }
+
+    void distinctAt1280x800()
+    {
+        QCOMPARE(m_window->size(), QSize(1280, 800));
+        checkEveryView();
+        // What the views drew before: Qt's middle elision at the same width joins stamp topics.
+        QTableView* map = m_window->mapPage()->rosView();
+        const QAbstractItemModel* model = map->model();
+        QHash<QString, QString> nameOf;
+        int joined = 0;
+        for (int r = 0; r < model->rowCount(); ++r) {
+            const QString name = model->index(r, RosTopicModel::TopicColumn).data().toString();
+            const QString elided = map->fontMetrics().elidedText(
+                name, Qt::ElideMiddle, map->columnWidth(RosTopicModel::TopicColumn) - 8);
+            joined += nameOf.value(elided, name) != name;
+            nameOf.insert(elided, name);
+        }
+        QVERIFY2(joined > 0, "the test's names no longer need shortening at this size");
+    }
+
+    void distinctAt1920x1080()
+    {
+        m_window->resize(1920, 1080);
+        QTRY_COMPARE(m_window->size(), QSize(1920, 1080));
+        checkEveryView();
+    }
+
+    void fullNameInTheTooltip()
+    {
+        QTableView* view = m_window->discoverPage()->rosView();
+        const QModelIndex index = view->model()->index(0, RosTopicModel::TopicColumn);
+        QCOMPARE(index.data(Qt::ToolTipRole).toString(), index.data().toString());
+    }
+
+    void cleanupTestCase() { m_window.reset(); }
+};
+
+QTEST_MAIN(TestTopicNames)
+#include "tst_topicnames.moc"

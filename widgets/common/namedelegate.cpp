@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+#include "namedelegate.h"
+
+#include <QAbstractItemView>
+#include <QApplication>
+#include <QHelpEvent>
+#include <QTableView>
+#include <QToolTip>
+
+NameDelegate::NameDelegate(QAbstractItemView* view, int column)
+    : QStyledItemDelegate(view)
+    , m_view(view)
+    , m_column(column)
+{
+    // The names a view shows change with its rows and with a filter; re-read them when painted next.
+    const auto stale = [this] { m_stale = true; };
+    const auto watch = [this, stale](QAbstractItemModel* model) {
+        if (!model)
+            return;
+        connect(model, &QAbstractItemModel::modelReset, this, stale);
+        connect(model, &QAbstractItemModel::layoutChanged, this, stale);
+        connect(model, &QAbstractItemModel::rowsInserted, this, stale);
+        connect(model, &QAbstractItemModel::rowsRemoved, this, stale);
+        connect(model, &QAbstractItemModel::dataChanged, this,
+                [this](const QModelIndex& from, const QModelIndex& to, const QList<int>& roles) {
+                    if (from.column() <= m_column && to.column() >= m_column
+                        && (roles.isEmpty() || roles.contains(Qt::DisplayRole)))
+                        m_stale = true;
+                });
+    };
+    watch(view->model());
+}
+
+NameDelegate* NameDelegate::install(QAbstractItemView* view, int column)
+{
+    auto* delegate = new NameDelegate(view, column);
+    view->setItemDelegateForColumn(column, delegate);
+    return delegate;
+}
+
+void NameDelegate::refreshNames() const
+{
+    if (!m_stale)
+        return;
+    m_stale = false;
+    QStringList names;
+    const QAbstractItemModel* model = m_view->model();
+    // Flat models only (tables): a tree's rows show one segment each and need no shortening.
+    if (model) {
+        const int rows = model->rowCount();
+        names.reserve(rows);
+        for (int r = 0; r < rows; ++r)
+            names << model->index(r, m_column).data(Qt::DisplayRole).toString();
+    }
+    if (names != m_elider.names())
+        m_elider.setNames(names);
+}
+
+QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
+{
+    const QString& text = option.text;
+    if (text.isEmpty())
+        return text;
+    const QStyle* style = option.widget ? option.widget->style() : QApplication::style();
+    // The room QCommonStyle gives the text: the text rectangle less the focus frame's margins.
+    const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, option.widget) + 1;
+    const int room
+        = style->subElementRect(QStyle::SE_ItemViewItemText, &option, option.widget).width() - 2 * margin;
+    const QFontMetrics& fm = option.fontMetrics;
+    if (fm.horizontalAdvance(text) <= room)
+        return text;
+    refreshNames();
+    const QStringList forms = m_elider.forms(text);
+    for (const QString& form : forms)
+        if (fm.horizontalAdvance(form) <= room)
+            return form;
+    return fm.elidedText(forms.last(), Qt::ElideMiddle, room);
+}
+
+QString NameDelegate::displayedText(const QModelIndex& index) const
+{
+    QStyleOptionViewItem option;
+    option.initFrom(m_view->viewport());
+    option.widget = m_view;
+    option.font = m_view->font();
+    option.fontMetrics = m_view->fontMetrics();
+    if (auto* table = qobject_cast<QTableView*>(m_view)) // rows scrolled out of sight too
+        option.rect = QRect(0, 0, table->columnWidth(index.column()), table->rowHeight(index.row()));
+    else
+        option.rect = m_view->visualRect(index);
+    initStyleOption(&option, index);
+    return shortened(option);
+}
+
+void NameDelegate::paint(QPainter* painter, const QStyleOptionViewItem& option,
+                         const QModelIndex& index) const
+{
+    QStyleOptionViewItem shown = option;
+    initStyleOption(&shown, index);
+    shown.text = shortened(shown);
+    const QStyle* style = option.widget ? option.widget->style() : QApplication::style();
+    style->drawControl(QStyle::CE_ItemViewItem, &shown, painter, option.widget);
+}
+
+bool NameDelegate::helpEvent(QHelpEvent* event, QAbstractItemView* view, const QStyleOptionViewItem& option,
+                             const QModelIndex& index)
+{
+    // The model's own tooltip first; otherwise the whole name when the cell shows less of it.
+    if (event->type() == QEvent::ToolTip && !index.data(Qt::ToolTipRole).isValid()) {
+        QStyleOptionViewItem shown = option;
+        initStyleOption(&shown, index);
+        if (shortened(shown) != shown.text) {
+            QToolTip::showText(event->globalPos(), shown.text, view);
+            return true;
+        }
+    }
+    return QStyledItemDelegate::helpEvent(event, view, option, index);
+}

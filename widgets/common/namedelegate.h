@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "base/nameelider.h"
+
+#include <QStyledItemDelegate>
+
+class QAbstractItemView;
+
+/// Draws a column of names (topics, types) so that rows stay told apart when the column is narrow:
+/// NameElider's shortenings over the names the view shows, the first that fits, and the full name
+/// as a tooltip. Set it on a column with `NameDelegate::install(view, column)`.
+class NameDelegate : public QStyledItemDelegate
+{
+    Q_OBJECT
+public:
+    NameDelegate(QAbstractItemView* view, int column);
+    static NameDelegate* install(QAbstractItemView* view, int column);
+
+    /// The text the cell shows at the view's current column width.
+    QString displayedText(const QModelIndex& index) const;
+
+    void paint(QPainter* painter, const QStyleOptionViewItem& option,
+               const QModelIndex& index) const override;
+    bool helpEvent(QHelpEvent* event, QAbstractItemView* view, const QStyleOptionViewItem& option,
+                   const QModelIndex& index) override;
+
+private:
+    QString shortened(const QStyleOptionViewItem& option) const;
+    void refreshNames() const;
+
+    QAbstractItemView* m_view;
+    int m_column;
+    mutable NameElider m_elider;
+    mutable bool m_stale = true;
+};
