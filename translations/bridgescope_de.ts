@@ -2396,16 +2396,20 @@ factors:
         <translation>auf einer Seite öffnen: discover, map, measure, reports, links oder experiments</translation>
     </message>
     <message>
-        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml | EXPERIMENT-DIR]</source>
-        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI.yaml | EXPERIMENT-ORDNER]</translation>
-    </message>
-    <message>
         <source>Open on this page: discover, map, measure, reports, links or experiments.</source>
         <translation>Auf dieser Seite öffnen: discover, map, measure, reports, links oder experiments.</translation>
     </message>
     <message>
-        <source>Bridge config to open, or an experiment&apos;s folder.</source>
-        <translation>Zu öffnende Bridge-Konfiguration oder ein Experimentordner.</translation>
+        <source>Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE | EXPERIMENT-DIR]...</source>
+        <translation>Aufruf: bridgescope [--broker URL] [--ros-master URI] [Optionen] [DATEI | EXPERIMENT-ORDNER]...</translation>
+    </message>
+    <message>
+        <source>Files open where they belong: a bridge config on the Map page (more configs on Links), a pipeline or one run, suite CSV or bag on Measure, several of those on Reports, an experiment&apos;s folder on Experiments.</source>
+        <translation>Dateien öffnen dort, wo sie hingehören: eine Bridge-Konfiguration auf der Seite Zuordnen (weitere Konfigurationen unter Verbindungen), eine Pipeline oder ein Lauf, eine Suite-CSV oder ein Bag unter Messen, mehrere davon unter Berichte, der Ordner eines Experiments unter Experimente.</translation>
+    </message>
+    <message>
+        <source>Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open.</source>
+        <translation>Zu öffnende Bridge-Konfigurationen, Pipelines, Läufe, Suite-CSVs, Bags oder Experiment-Ordner.</translation>
     </message>
 </context>
 <context>
@@ -2996,6 +3000,29 @@ factors:
     <message>
         <source>Shortcut</source>
         <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>%1: no such file or folder</source>
+        <translation>%1: keine solche Datei und kein solcher Ordner</translation>
+    </message>
+    <message>
+        <source>%1: a folder, but not an experiment&apos;s (it has no experiment plan)</source>
+        <translation>%1: ein Ordner, aber nicht der eines Experiments (er hat keinen Experimentplan)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Could not open %n file(s).</source>
+        <translation>
+            <numerusform>Eine Datei konnte nicht geöffnet werden.</numerusform>
+            <numerusform>%n Dateien konnten nicht geöffnet werden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bridgescope files (*.yaml *.yml *.bsrun *.csv *.bag);;Bridge configs and pipelines (*.yaml *.yml);;Runs, suite CSV and bags (*.bsrun *.csv *.bag);;All files (*)</source>
+        <translation>Bridgescope-Dateien (*.yaml *.yml *.bsrun *.csv *.bag);;Bridge-Konfigurationen und Pipelines (*.yaml *.yml);;Läufe, Suite-CSV und Bags (*.bsrun *.csv *.bag);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>

@@ -10,7 +10,6 @@
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
-#include "widgets/experiment/experimentpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
@@ -73,10 +72,13 @@ QString bridgescopeUsage()
         {u"experiment PLAN.yaml -o DIR"_s, Gui::tr("run an experiment matrix unattended, a run per cell")},
     };
     QString text
-        = Gui::tr(
-              "Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE.yaml | EXPERIMENT-DIR]")
+        = Gui::tr("Usage: bridgescope [--broker URL] [--ros-master URI] [options] [FILE | EXPERIMENT-DIR]...")
         + u'\n' + Gui::tr("       bridgescope <command> [options]") + u"\n\n"_s
         + Gui::tr("Discover ROS and MQTT topics, bridge them with mqtt_client, and measure the link.")
+        + u"\n\n"_s
+        + Gui::tr("Files open where they belong: a bridge config on the Map page (more configs on Links), a "
+                  "pipeline or one run, suite CSV or bag on Measure, several of those on Reports, an "
+                  "experiment's folder on Experiments.")
         + u"\n\n"_s + Gui::tr("Options:") + u'\n';
     for (const auto& [name, what] : options)
         text += u"  "_s + name.leftJustified(20) + u' ' + what + u'\n';
@@ -121,8 +123,10 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         u"PAGE"_s);
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
-    parser.addPositionalArgument(u"FILE"_s, Gui::tr("Bridge config to open, or an experiment's folder."),
-                                 u"[FILE.yaml|DIR]"_s);
+    parser.addPositionalArgument(
+        u"FILE"_s,
+        Gui::tr("Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open."),
+        u"[FILE|DIR]..."_s);
     if (!parser.parse(arguments)) {
         CliOutput::err(parser.errorText());
         CliOutput::err(bridgescopeUsage());
@@ -196,16 +200,9 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
         window.discoverPage()->setRosMasterUri(request.masterUri);
     if (request.broker)
         window.discoverPage()->connectBroker(*request.broker);
-    if (!request.files.isEmpty() && ExperimentReport::isExperiment(request.files.first())) {
-        QString error;
-        if (!window.experimentPage()->openFolder(request.files.first(), &error)) {
-            CliOutput::err(error);
-            return false;
-        }
-        window.pages()->setCurrentWidget(window.experimentPage());
-    } else if (!request.files.isEmpty()) {
-        window.files()->openFile(request.files.first());
-    }
+    // What does not open is said, and the window opens with the rest (as a desktop's %F asks).
+    for (const QString& error : window.openPaths(request.files))
+        CliOutput::err(error);
     if (!request.pipeline.isEmpty()) {
         QString error;
         if (!window.measurePage()->loadPipeline(request.pipeline, &error)) {

@@ -86,6 +86,7 @@ MainWindow::MainWindow(QWidget* parent)
     , m_problemStatus(new QLabel(this))
 {
     setObjectName(u"mainWindow"_s);
+    setAcceptDrops(true); // files dropped anywhere open where they belong (mainwindowfiles.cpp)
     m_pages->setDocumentMode(true);
     m_pages->addTab(m_discover, tr("Discover"));
     m_pages->addTab(m_map, tr("Map"));
@@ -179,7 +180,7 @@ void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&New"), QKeySequence::New, m_files, &ConfigFileController::newFile);
-    file->addAction(tr("&Open…"), QKeySequence::Open, m_files, &ConfigFileController::open);
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::chooseFiles);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     updateRecentMenu(m_files->recentFiles());
     file->addSeparator();
@@ -324,8 +325,9 @@ void MainWindow::updateRecentMenu(const QStringList& files)
     for (const QString& path : files) {
         m_recentMenu->addAction(QFileInfo(path).fileName() + u"  —  "_s + QFileInfo(path).absolutePath(),
                                 this, [this, path] {
-                                    if (m_files->maybeSave())
-                                        m_files->openFile(path);
+                                    // Later: opening renews this menu, and so deletes this action.
+                                    QMetaObject::invokeMethod(
+                                        this, [this, path] { openAndReport({path}); }, Qt::QueuedConnection);
                                 });
     }
     m_recentMenu->setEnabled(!files.isEmpty());

@@ -55,14 +55,25 @@ public:
     /// Writes the window's state now (also done on close once rememberSession() was called).
     void saveSession() const;
 
+    /// Opens each file where it belongs and shows the page of the first that opened: a bridge
+    /// config on Map (more configs are watched on Links), a pipeline and a single run, suite CSV
+    /// or bag on Measure, several of those on Reports, an experiment's folder on Experiments.
+    /// Each goes among the recent files. Returns what could not be opened, a line each.
+    QStringList openPaths(const QStringList& paths);
+    /// openPaths(), saying what did not open in a (non-blocking) message box.
+    void openAndReport(const QStringList& paths);
+
 protected:
     void closeEvent(class QCloseEvent* event) override;
+    void dragEnterEvent(class QDragEnterEvent* event) override;
+    void dropEvent(class QDropEvent* event) override;
 
 private:
     void createMenus();
     void watchTheMapConfig();
     void updateTitle();
     void updateRecentMenu(const QStringList& files);
+    void chooseFiles();
 
     LiveSession* m_session;
     MeasureSession* m_measure;

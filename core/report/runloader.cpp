@@ -68,6 +68,12 @@ RunLoader::Kind RunLoader::kindOf(const QString& path)
     return Kind::SuiteCsv;
 }
 
+bool RunLoader::isMeasurement(const QString& path)
+{
+    return RunFile::looksLikeRun(path) || BagHeader::looksLikeBag(path)
+        || QFileInfo(path).suffix().compare(u"csv"_s, Qt::CaseInsensitive) == 0;
+}
+
 QString RunLoader::kindName(Kind kind)
 {
     switch (kind) {

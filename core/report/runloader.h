@@ -15,6 +15,9 @@ class RunLoader
 public:
     enum class Kind { Run, Bag, SuiteCsv };
     static Kind kindOf(const QString& path);
+    /// Whether a file is a measurement input at all: a run or a bag (by their first bytes) or a
+    /// `.csv` file (the suite's, to be checked when read).
+    static bool isMeasurement(const QString& path);
     static QString kindName(Kind kind);
 
     struct Options

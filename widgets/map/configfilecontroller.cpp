@@ -53,14 +53,17 @@ QString ConfigFileController::layoutFilter(ConfigLayout layout)
     return QString();
 }
 
-bool ConfigFileController::openFile(const QString& path)
+bool ConfigFileController::openFile(const QString& path, QString* error)
 {
     const ConfigDocument::LoadResult r = m_doc->load(path);
     if (!r.ok) {
         QStringList lines {r.error};
         for (int i = 1; i < r.problems.size() && i < 5; ++i)
             lines << r.problems[i].format(QFileInfo(path).fileName());
-        showError(tr("Cannot open the config"), lines.join(u'\n'));
+        if (error)
+            *error = lines.join(u'\n');
+        else
+            showError(tr("Cannot open the config"), lines.join(u'\n'));
         return false;
     }
     m_undo->clear();

@@ -23,7 +23,10 @@ public:
     using Ask = std::function<bool(const QString& title, const QString& question)>;
     void setAsk(Ask ask) { m_ask = std::move(ask); }
 
-    bool openFile(const QString& path);
+    /// Opens a bridge config; what went wrong goes to `error` if given, else to a message box.
+    bool openFile(const QString& path, QString* error = nullptr);
+    /// Remembers a file of any kind among the recent ones (File › Open Recent).
+    void addRecent(const QString& path);
     bool saveTo(const QString& path, ConfigLayout layout);
     bool exportTo(const QString& path, ConfigLayout layout);
     bool writePeer(const QString& path, const QString& clientId);
@@ -43,7 +46,6 @@ signals:
     void statusMessage(const QString& message);
 
 private:
-    void addRecent(const QString& path);
     void showError(const QString& title, const QString& message);
     static QString layoutFilter(ConfigLayout layout);
 

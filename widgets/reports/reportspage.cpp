@@ -4,7 +4,10 @@
 #include "base/atomicfile.h"
 #include "record/runfile.h"
 #include "report/report.h"
+#include "report/runloader.h"
+#include "widgets/common/droppedfiles.h"
 
+#include <algorithm>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDragEnterEvent>
@@ -339,27 +342,20 @@ void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QStri
     emit previewUpdated();
 }
 
-namespace {
-QStringList localFiles(const QMimeData* mime)
-{
-    QStringList files;
-    if (mime)
-        for (const QUrl& url : mime->urls())
-            if (url.isLocalFile())
-                files << url.toLocalFile();
-    return files;
-}
-} // namespace
-
 void ReportsPage::dragEnterEvent(QDragEnterEvent* event)
 {
-    if (!localFiles(event->mimeData()).isEmpty())
+    // Measurements only: anything else goes on to the window, which opens it where it belongs.
+    const QStringList files = droppedFiles(event->mimeData());
+    if (!files.isEmpty() && std::all_of(files.cbegin(), files.cend(), RunLoader::isMeasurement))
         event->acceptProposedAction();
+    else
+        event->ignore();
 }
 
 void ReportsPage::dropEvent(QDropEvent* event)
 {
-    const QStringList files = localFiles(event->mimeData());
+    QStringList files = droppedFiles(event->mimeData());
+    files.removeIf([](const QString& f) { return !RunLoader::isMeasurement(f); });
     if (files.isEmpty())
         return;
     addInputs(files);

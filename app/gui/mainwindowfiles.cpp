@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// Opening anything: File › Open, Open Recent, a drop on the window and the command line all send
+// files through MainWindow::openPaths, which opens each where it belongs.
+#include "app/gui/mainwindow.h"
+#include "experiment/experimentreport.h"
+#include "report/runloader.h"
+#include "widgets/common/droppedfiles.h"
+#include "widgets/experiment/experimentpage.h"
+#include "widgets/links/linkspage.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/mappage.h"
+#include "widgets/measure/measurepage.h"
+#include "widgets/measure/runbar.h"
+#include "widgets/reports/reportspage.h"
+
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QRegularExpression>
+#include <QStatusBar>
+#include <QTabWidget>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+enum class Kind { Config, Pipeline, Measurement, Experiment, Folder };
+
+/// What a file is, from its first bytes: a run or a bag, a suite CSV (by name), a pipeline (YAML
+/// with `topics_in_order`), else a bridge config (whose reader says what is wrong if it is none).
+Kind kindOf(const QString& path)
+{
+    const QFileInfo info(path);
+    if (info.isDir())
+        return ExperimentReport::isExperiment(path) ? Kind::Experiment : Kind::Folder;
+    if (RunLoader::isMeasurement(path))
+        return Kind::Measurement;
+    QFile file(path);
+    if (file.open(QIODevice::ReadOnly)) {
+        static const QRegularExpression pipelineKey(u"(^|\\n)topics_in_order\\s*:"_s);
+        if (pipelineKey.match(QString::fromUtf8(file.read(256 * 1024))).hasMatch())
+            return Kind::Pipeline;
+    }
+    return Kind::Config;
+}
+
+} // namespace
+
+QStringList MainWindow::openPaths(const QStringList& paths)
+{
+    QStringList errors;
+    QStringList configs, pipelines, measurements, experiments;
+    for (const QString& path : paths) {
+        if (!QFileInfo::exists(path)) {
+            errors << tr("%1: no such file or folder").arg(path);
+            continue;
+        }
+        switch (kindOf(path)) {
+        case Kind::Config:
+            configs << path;
+            break;
+        case Kind::Pipeline:
+            pipelines << path;
+            break;
+        case Kind::Measurement:
+            measurements << path;
+            break;
+        case Kind::Experiment:
+            experiments << path;
+            break;
+        case Kind::Folder:
+            errors << tr("%1: a folder, but not an experiment's (it has no experiment plan)").arg(path);
+            break;
+        }
+    }
+    // The page to show: that of the first path that opened.
+    qsizetype firstOpened = paths.size();
+    QWidget* page = nullptr;
+    const auto opened = [&](const QString& path, QWidget* where) {
+        const qsizetype at = paths.indexOf(path);
+        if (at < firstOpened) {
+            firstOpened = at;
+            page = where;
+        }
+    };
+    const auto fail = [&](const QString& path, const QString& error) {
+        if (!error.isEmpty()) // empty: the user cancelled
+            errors << QFileInfo(path).fileName() + u": "_s + error;
+    };
+    QString error;
+    // The first bridge config is the Map page's; more are watched on the Links page.
+    if (!configs.isEmpty() && m_files->maybeSave()) {
+        if (m_files->openFile(configs.first(), &error))
+            opened(configs.first(), m_map);
+        else
+            fail(configs.first(), error);
+    }
+    for (const QString& path : configs.mid(1)) {
+        if (m_links->addConfigFiles({path}, &error)) {
+            m_files->addRecent(path);
+            opened(path, m_links);
+        } else {
+            fail(path, error);
+        }
+    }
+    for (const QString& path : pipelines) { // the last one stays
+        if (m_measurePage->loadPipeline(path, &error)) {
+            m_files->addRecent(path);
+            opened(path, m_measurePage);
+        } else {
+            fail(path, error);
+        }
+    }
+    // One measurement is shown on the Measure page; several are compared on the Reports page.
+    if (measurements.size() == 1) {
+        if (m_measurePage->runBar()->openRun(measurements.first(), &error)) {
+            m_files->addRecent(measurements.first());
+            opened(measurements.first(), m_measurePage);
+        } else {
+            fail(measurements.first(), error);
+        }
+    } else if (measurements.size() > 1) {
+        m_reports->addInputs(measurements); // it checks each and lists what does not read
+        for (const QString& path : measurements) {
+            m_files->addRecent(path);
+            opened(path, m_reports);
+        }
+    }
+    for (const QString& path : experiments) {
+        if (m_experiments->openFolder(path, &error)) {
+            m_files->addRecent(path);
+            opened(path, m_experiments);
+        } else {
+            fail(path, error);
+        }
+    }
+    if (page)
+        m_pages->setCurrentWidget(page);
+    return errors;
+}
+
+void MainWindow::openAndReport(const QStringList& paths)
+{
+    const QStringList errors = openPaths(paths);
+    if (errors.isEmpty())
+        return;
+    statusBar()->showMessage(errors.first(), 10000);
+    // Not modal to the program: a drop's source is not kept waiting, and nothing else is blocked.
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Open"),
+                                tr("Could not open %n file(s).", nullptr, int(errors.size())),
+                                QMessageBox::Ok, this);
+    box->setObjectName(u"openErrors"_s);
+    box->setInformativeText(errors.join(u'\n'));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::chooseFiles()
+{
+    const QStringList paths
+        = QFileDialog::getOpenFileNames(this, tr("Open"), QString(),
+                                        tr("Bridgescope files (*.yaml *.yml *.bsrun *.csv *.bag);;Bridge "
+                                           "configs and pipelines (*.yaml *.yml);;"
+                                           "Runs, suite CSV and bags (*.bsrun *.csv *.bag);;All files (*)"));
+    if (!paths.isEmpty())
+        openAndReport(paths);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (!droppedFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    const QStringList files = droppedFiles(event->mimeData());
+    if (files.isEmpty())
+        return;
+    event->acceptProposedAction();
+    // After the drop has ended: opening may ask (unsaved changes) or show progress.
+    QMetaObject::invokeMethod(
+        this, [this, files] { openAndReport(files); }, Qt::QueuedConnection);
+}

@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: MIT
+// Open anything: files dropped on the window, given on the command line (as a desktop's %F gives
+// them) or picked from Open Recent go where they belong: bridge configs to Map (more to Links), a
+// pipeline and one measurement to Measure, several measurements to Reports, an experiment's folder
+// to Experiments; what does not open is said and changes nothing.
+#include "app/gui/mainwindow.h"
+#include "config/configdocument.h"
+#include "experiment/experimentrunner.h"
+#include "fixtures.h"
+#include "latency/pipeline.h"
+#include "record/suitecsv.h"
+#include "session/measuresession.h"
+#include "syntheticrun.h"
+#include "watch/linkmodel.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/experiment/experimentpage.h"
+#include "widgets/links/linkspage.h"
+#include "widgets/map/mappage.h"
+#include "widgets/measure/measurepage.h"
+#include "widgets/measure/runbar.h"
+#include "widgets/reports/reportspage.h"
+
+#include <QAction>
+#include <QDragEnterEvent>
+#include <QListWidget>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProcess>
+#include <QSettings>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Drops `paths` as a file manager would: drag enter, then drop, at the middle of `target`.
+bool drop(QWidget* target, const QStringList& paths)
+{
+    QMimeData mime;
+    QList<QUrl> urls;
+    for (const QString& p : paths)
+        urls << QUrl::fromLocalFile(p);
+    mime.setUrls(urls);
+    const QPoint at = target->rect().center();
+    QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(target, &enter);
+    if (!enter.isAccepted())
+        return false;
+    QDropEvent dropped(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(target, &dropped);
+    QCoreApplication::processEvents(); // the window opens them once the drop has ended
+    return dropped.isAccepted();
+}
+
+QStringList linkBridges(LinksPage* page)
+{
+    QStringList bridges;
+    const QAbstractItemModel* m = page->linkModel();
+    for (int r = 0; r < m->rowCount(); ++r)
+        bridges << m->index(r, LinkModel::BridgeColumn).data().toString();
+    return bridges;
+}
+} // namespace
+
+class TestOpenFiles : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_experiment;
+
+    QString write(const QString& name, const QByteArray& bytes)
+    {
+        const QString path = m_dir.filePath(name);
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
+            qFatal("cannot write %s", qPrintable(path));
+        return path;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        QSettings::setDefaultFormat(QSettings::IniFormat); // recent files go to the temporary folder
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+        QSettings().clear();
+        m_config = write(u"vehicle.yaml"_s,
+                         Fixtures::read(u"benchmarking_suite/mqtt_client_vehicle_pointcloud.yaml"_s));
+        m_otherConfig
+            = write(u"cloud.yaml"_s, Fixtures::read(u"benchmarking_suite/mqtt_client_cloud.yaml"_s));
+        m_pipeline = write(u"logger.yaml"_s,
+                           Fixtures::read(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
+        const SyntheticRun a = SyntheticRun::paper(50, 0, 1);
+        m_csvA = write(u"a.csv"_s, SuiteCsv::write(a.topics, a.samples));
+        const SyntheticRun b = SyntheticRun::paper(60, 0, 2);
+        m_csvB = write(u"b.csv"_s, SuiteCsv::write(b.topics, b.samples));
+        // An experiment's folder: its plan and its (empty) state.
+        QVERIFY(QDir(m_dir.path()).mkdir(u"exp"_s));
+        m_experiment = m_dir.filePath(u"exp"_s);
+        QFile plan(QStringLiteral(BRIDGESCOPE_SOURCE_DIR)
+                   + u"/resources/examples/experiment-table3-qos.yaml"_s);
+        QVERIFY(plan.open(QIODevice::ReadOnly));
+        write(u"exp/"_s + ExperimentRunner::planFileName(), plan.readAll());
+        write(u"exp/"_s + ExperimentRunner::stateFileName(), "{}");
+    }
+
+    void eachKindByDrop()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+
+        QVERIFY(drop(&w, {m_config}));
+        QCOMPARE(w.pages()->currentWidget(), w.mapPage());
+        QCOMPARE(w.document()->filePath(), m_config);
+
+        w.pages()->setCurrentWidget(w.discoverPage());
+        QVERIFY(drop(&w, {m_pipeline}));
+        QCOMPARE(w.pages()->currentWidget(), w.measurePage());
+        QCOMPARE(w.measure()->pipeline().topics(), Pipeline::load(m_pipeline)->topics());
+        QCOMPARE(w.document()->filePath(), m_config); // the config stays
+
+        // One measurement: shown on the Measure page.
+        w.pages()->setCurrentWidget(w.discoverPage());
+        QVERIFY(drop(&w, {m_csvA}));
+        QCOMPARE(w.pages()->currentWidget(), w.measurePage());
+        QVERIFY(w.measure()->isShowingRun());
+        // Saved as a run file, the run opens by drop too.
+        const QString run = m_dir.filePath(u"a.bsrun"_s);
+        QString error;
+        QVERIFY2(w.measurePage()->runBar()->saveRunAs(run, &error), qPrintable(error));
+        w.measurePage()->runBar()->backToLive();
+        QVERIFY(!w.measure()->isShowingRun());
+        w.pages()->setCurrentWidget(w.mapPage());
+        QVERIFY(drop(&w, {run}));
+        QCOMPARE(w.pages()->currentWidget(), w.measurePage());
+        QVERIFY(w.measure()->isShowingRun());
+
+        // Several: compared on the Reports page.
+        QVERIFY(drop(&w, {m_csvA, m_csvB}));
+        QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
+        QCOMPARE(w.reportsPage()->inputs(), QStringList({m_csvA, m_csvB}));
+
+        // An experiment's folder.
+        QVERIFY(drop(&w, {m_experiment}));
+        QCOMPARE(w.pages()->currentWidget(), w.experimentPage());
+        QVERIFY(w.experimentPage()->planText().contains(u"qos"_s));
+
+        // Two configs: the first to Map, the second watched on Links.
+        QVERIFY(drop(&w, {m_otherConfig, m_config}));
+        QCOMPARE(w.pages()->currentWidget(), w.mapPage());
+        QCOMPARE(w.document()->filePath(), m_otherConfig);
+        QTRY_VERIFY(linkBridges(w.linksPage()).contains(u"vehicle"_s));
+
+        // Open Recent has runs and pipelines as well as configs, and opens each where it belongs.
+        QMenu* recent = nullptr;
+        for (QAction* a : w.menuBar()->actions())
+            if (a->menu())
+                for (QAction* b : a->menu()->actions())
+                    if (b->menu() && b->text().contains(u"Recent"_s))
+                        recent = b->menu();
+        QVERIFY(recent);
+        QStringList entries;
+        for (QAction* a : recent->actions())
+            entries << a->text();
+        for (const QString& name :
+             {u"a.bsrun"_s, u"logger.yaml"_s, u"a.csv"_s, u"b.csv"_s, u"exp"_s, u"cloud.yaml"_s})
+            QVERIFY2(entries.join(u'\n').contains(name), qPrintable(entries.join(u'\n')));
+        w.pages()->setCurrentWidget(w.mapPage());
+        for (QAction* a : recent->actions())
+            if (a->text().startsWith(u"a.bsrun"_s)) {
+                a->trigger(); // the menu is made anew: its actions go
+                break;
+            }
+        QTRY_COMPARE(w.pages()->currentWidget(), w.measurePage());
+    }
+
+    void whatDoesNotOpenIsSaid()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(drop(&w, {m_config}));
+        const QString notAConfig = write(u"broken.yaml"_s, "bridge: [unclosed\n");
+        const QString plainFolder = m_dir.filePath(u"plain"_s);
+        QVERIFY(QDir().mkpath(plainFolder));
+        QVERIFY(drop(&w, {notAConfig, plainFolder, m_dir.filePath(u"gone.bsrun"_s)}));
+        auto* box = w.findChild<QMessageBox*>(u"openErrors"_s);
+        QVERIFY(box);
+        QVERIFY2(box->informativeText().contains(u"broken.yaml"_s), qPrintable(box->informativeText()));
+        QVERIFY(box->informativeText().contains(u"plain"_s));
+        QVERIFY(box->informativeText().contains(u"gone.bsrun"_s));
+        QCOMPARE(w.document()->filePath(), m_config); // nothing lost
+        box->accept();
+    }
+
+    void reportsPageKeepsMeasurementsAndPassesTheRest()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.pages()->setCurrentWidget(w.reportsPage());
+        // Its own drop adds measurements as inputs, even one; a config is not its to take.
+        QVERIFY(drop(w.reportsPage(), {m_csvA}));
+        QCOMPARE(w.reportsPage()->inputs(), QStringList {m_csvA});
+        // A config dragged over it is not its to take: the page leaves it to the window (Qt passes
+        // an ignored drag on to the parent), which opens it on the Map page.
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(m_config)});
+        QDragEnterEvent enter(QPoint(5, 5), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        static_cast<QObject*>(w.reportsPage())->event(&enter); // the page alone, not its parents
+        QVERIFY(!enter.isAccepted());
+        QVERIFY(drop(&w, {m_config}));
+        QCOMPARE(w.pages()->currentWidget(), w.mapPage());
+        QCOMPARE(w.reportsPage()->inputs(), QStringList {m_csvA});
+    }
+
+    void commandLineOpensEveryFile()
+    {
+        // As a desktop's `Exec=bridgescope %F` starts it: several files of different kinds.
+        const QString png = m_dir.filePath(u"shot.png"_s);
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+        env.insert(u"XDG_CONFIG_HOME"_s, m_dir.filePath(u"config"_s));
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                {u"--screenshot"_s, png, u"--after"_s, u"0.5"_s, m_config, m_pipeline, m_csvA, m_csvB,
+                 m_dir.filePath(u"gone.csv"_s)});
+        QVERIFY(p.waitForFinished(60000));
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(p.exitCode() == 0, qPrintable(err));
+        QVERIFY2(err.contains(u"gone.csv: no such file"_s), qPrintable(err));
+        QVERIFY(!err.contains(u"vehicle.yaml"_s));
+        QVERIFY(QFile::exists(png));
+    }
+};
+
+QTEST_MAIN(TestOpenFiles)
+#include "tst_openfiles.moc"
