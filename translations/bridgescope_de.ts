@@ -2411,6 +2411,30 @@ factors:
         <source>Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open.</source>
         <translation>Zu öffnende Bridge-Konfigurationen, Pipelines, Läufe, Suite-CSVs, Bags oder Experiment-Ordner.</translation>
     </message>
+    <message>
+        <source>Starting the demo lab: mosquitto and rosmaster…</source>
+        <translation>Das Demo-Labor startet: mosquitto und rosmaster …</translation>
+    </message>
+    <message>
+        <source>Bridgescope — demo lab (starting)</source>
+        <translation>Bridgescope — Demo-Labor (startet)</translation>
+    </message>
+    <message>
+        <source>The demo lab did not start: %1</source>
+        <translation>Das Demo-Labor ist nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <source>the servers did not listen within 20 s</source>
+        <translation>die Server haben innerhalb von 20 s nicht angenommen</translation>
+    </message>
+    <message>
+        <source>Starting the demo lab: bridges and nodes…</source>
+        <translation>Das Demo-Labor startet: Bridges und Knoten …</translation>
+    </message>
+    <message>
+        <source>Demo lab</source>
+        <translation>Demo-Labor</translation>
+    </message>
 </context>
 <context>
     <name>LatencyEngine</name>
@@ -3493,6 +3517,17 @@ factors:
     <message>
         <source> · %1 malformed: %2 (last: %3)</source>
         <translation> · %1 fehlerhaft: %2 (zuletzt: %3)</translation>
+    </message>
+    <message numerus="yes">
+        <source> · %n begun before every stamp topic was heard</source>
+        <translation>
+            <numerusform> · %n begonnen, bevor jedes Zeitstempel-Topic zu hören war</numerusform>
+            <numerusform> · %n begonnen, bevor jedes Zeitstempel-Topic zu hören war</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> · waiting for the first stamp of %1</source>
+        <translation> · wartet auf den ersten Zeitstempel von %1</translation>
     </message>
 </context>
 <context>

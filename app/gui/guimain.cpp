@@ -2,15 +2,11 @@
 #include "guimain.h"
 
 #include "app/cli/clioutput.h"
+#include "app/gui/demostart.h"
 #include "app/gui/mainwindow.h"
 #include "demo/demolab.h"
-#include "experiment/experimentreport.h"
-#include "latency/latencystatsmodel.h"
-#include "latency/seriesid.h"
 #include "mqtt/mqttprofile.h"
-#include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
-#include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
 
@@ -19,7 +15,7 @@
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QLibraryInfo>
-#include <QStatusBar>
+#include <QMessageBox>
 #include <QTimer>
 #include <QTranslator>
 
@@ -164,35 +160,6 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     return -1;
 }
 
-/// Shows the running demo lab: its servers, its vehicle config, the Measure page with the paper's
-/// Fig. 5 series; says so when the lab stops, and quits on Ctrl+C so that the lab cleans up.
-void showDemo(MainWindow& window, const DemoLab& lab)
-{
-    window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
-    window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
-    window.files()->openFile(lab.vehicleConfigPath());
-    QString error;
-    if (!window.linksPage()->addConfigFiles({lab.cloudConfigPath()}, &error)) // both bridges' links
-        CliOutput::err(error);
-    if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
-        CliOutput::err(error);
-    window.pages()->setCurrentWidget(window.measurePage());
-    // The paper's Fig. 5 view: detection, one-way communication and the total.
-    window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);
-    window.measure()->statsModel()->setChecked(SeriesId::ofKind(SeriesKind::OneWay).toString(), true);
-    window.setWindowTitle(Gui::tr("Bridgescope — demo lab"));
-    auto* watch = new QTimer(&window);
-    QObject::connect(watch, &QTimer::timeout, &window, [&window, &lab, watch] {
-        if (lab.isRunning())
-            return;
-        watch->stop();
-        window.statusBar()->showMessage(Gui::tr("The demo lab stopped: %1").arg(lab.failure()));
-    });
-    watch->start(2000);
-    // Ctrl+C or SIGTERM close the window properly, so that the lab stops and cleans up.
-    CliOutput::whenStopRequested(&window, [] { QCoreApplication::quit(); });
-}
-
 /// Applies the servers, file, pipeline and page asked for; false after saying why not.
 bool applyRequest(MainWindow& window, const GuiRequest& request)
 {
@@ -238,26 +205,35 @@ int runGui(int& argc, char** argv)
         return status;
     // The demo lab outlives the window: its servers go last.
     std::unique_ptr<DemoLab> lab;
+    MainWindow window;
+    if (request.screenshot.isEmpty())
+        window.rememberSession(); // a screenshot shows the window as it starts the first time
+    if (!request.demo && !applyRequest(window, request))
+        return ExitUsage;
+    window.show();
     if (request.demo) {
+        // The window first, at once; the lab comes up behind it (a second or two).
         lab = std::make_unique<DemoLab>();
         CliOutput::err(Gui::tr("starting the demo lab…"));
         DemoLab::Options options;
         options.brokerUrl = request.brokerUrl; // given servers are used instead of private ones
         options.rosMasterUri = request.masterUri;
-        QString error;
-        if (!lab->start(options, &error)) {
-            CliOutput::err(Gui::tr("the demo lab did not start: %1").arg(error));
-            return ExitFailed;
-        }
+        const bool automated = !request.screenshot.isEmpty();
+        DemoStart::start(window, *lab, options, [&window, &lab, &request, automated](const QString& error) {
+            if (!error.isEmpty()) {
+                CliOutput::err(Gui::tr("the demo lab did not start: %1").arg(error));
+                if (automated)
+                    QCoreApplication::exit(ExitFailed);
+                else
+                    QMessageBox::warning(&window, Gui::tr("Demo lab"),
+                                         Gui::tr("The demo lab did not start: %1").arg(error));
+                return;
+            }
+            DemoStart::show(window, *lab);
+            if (!applyRequest(window, request))
+                QCoreApplication::exit(ExitUsage);
+        });
     }
-    MainWindow window;
-    if (request.screenshot.isEmpty())
-        window.rememberSession(); // a screenshot shows the window as it starts the first time
-    if (lab)
-        showDemo(window, *lab);
-    if (!applyRequest(window, request))
-        return ExitUsage;
-    window.show();
     if (!request.screenshot.isEmpty())
         scheduleScreenshot(window, request.screenshot, request.screenshotAfter);
     return app.exec();

@@ -76,6 +76,7 @@ struct DemoLab::Private
     QString masterUri;
     Options options;
     QHash<QString, quint16> bridgePorts; ///< side -> relay port
+    QList<std::pair<QString, quint16>> starting; ///< servers launched, not yet listening
 
     QProcessEnvironment rosEnvironment() const
     {
@@ -145,6 +146,39 @@ bool DemoLab::start(const Options& o, QString* error)
 
 bool DemoLab::startServers(const Options& o, QString* error)
 {
+    if (!launchServers(o, error))
+        return false;
+    const QDeadlineTimer deadline(20000);
+    for (const auto& [name, port] : std::as_const(d->starting))
+        if (!LoopbackPorts::waitForListener(port, int(deadline.remainingTime()),
+                                            [this] { return isRunning(); })) {
+            if (error)
+                *error = tr("%1 did not start: %2").arg(name, d->logOf(name));
+            stop();
+            return false;
+        }
+    d->starting.clear();
+    return true;
+}
+
+DemoLab::Poll DemoLab::pollServers(QString* error)
+{
+    for (auto it = d->starting.begin(); it != d->starting.end();) {
+        if (!isRunning()) {
+            if (error)
+                *error = tr("%1 did not start: %2").arg(it->first, d->logOf(it->first));
+            stop();
+            return Poll::Failed;
+        }
+        if (!LoopbackPorts::waitForListener(it->second, 0, nullptr))
+            return Poll::Waiting;
+        it = d->starting.erase(it);
+    }
+    return Poll::Ready;
+}
+
+bool DemoLab::launchServers(const Options& o, QString* error)
+{
     const auto fail = [this, error](const QString& why) {
         if (error)
             *error = why;
@@ -165,7 +199,8 @@ bool DemoLab::startServers(const Options& o, QString* error)
     // The servers: the ones given, else private ones on free loopback ports.
     const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
     const QString rosmaster = QStandardPaths::findExecutable(u"rosmaster"_s);
-    QList<std::pair<QString, quint16>> started;
+    QList<std::pair<QString, quint16>>& started = d->starting;
+    started.clear();
     d->brokerUrl = o.brokerUrl;
     if (d->brokerUrl.isEmpty()) {
         if (mosquitto.isEmpty())
@@ -201,11 +236,6 @@ bool DemoLab::startServers(const Options& o, QString* error)
         d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(port)});
         started.append({u"rosmaster"_s, port});
     }
-    const QDeadlineTimer deadline(20000);
-    for (const auto& [name, port] : std::as_const(started))
-        if (!LoopbackPorts::waitForListener(port, int(deadline.remainingTime()),
-                                            [this] { return isRunning(); }))
-            return fail(tr("%1 did not start: %2").arg(name, d->logOf(name)));
     return true;
 }
 

@@ -54,6 +54,12 @@ public:
     /// on 127.0.0.1 in front of it); before startComponents().
     void setBridgePort(const QString& side, quint16 port);
     bool startComponents(QString* error);
+    /// startServers() without waiting, for a window that shows progress meanwhile: launches the
+    /// servers; then pollServers() until they listen (each poll a loopback connect per server).
+    bool launchServers(const Options& options, QString* error);
+    enum class Poll { Waiting, Ready, Failed };
+    /// Whether the launched servers listen now; Failed (with `error`) when one stopped.
+    Poll pollServers(QString* error);
     void stop();
     bool isRunning() const;
     /// What stopped running meanwhile (empty while everything runs).

@@ -78,6 +78,7 @@ public:
 
     const SampleJoiner::Counters& counters() const { return m_joiner.counters(); }
     int pending() const { return m_joiner.pending(); }
+    const SampleJoiner& joiner() const { return m_joiner; }
     /// Samples that left the statistics since the last reset (counted by addSample too).
     qint64 samples() const { return m_samples; }
     /// Changes whenever a value arrives or the series change (redraw only when it moved).

@@ -18,6 +18,8 @@ SampleJoiner::SampleJoiner(int topics)
 void SampleJoiner::reset(int topics)
 {
     m_topics = std::max(0, topics);
+    m_seen.assign(std::size_t(m_topics), 0);
+    m_seenCount = 0;
     m_open.clear();
     m_slots.clear();
     m_times.clear();
@@ -44,6 +46,7 @@ int SampleJoiner::openSlot(qint64 sample, qint64 receivedNs)
     s.firstReceivedNs = receivedNs;
     s.serial = ++m_serial;
     s.have = 0;
+    s.early = m_seenCount < m_topics;
     std::fill_n(timesOf(slot), m_topics, kMissing);
     m_open.emplace(sample, slot);
     m_order.push_back({sample, s.serial});
@@ -71,7 +74,9 @@ void SampleJoiner::rememberFinished(qint64 sample, Finished how)
 
 void SampleJoiner::drop(int slot, bool timedOut)
 {
-    if (timedOut)
+    if (m_slots[std::size_t(slot)].early)
+        ++m_counters.beforeAllTopics;
+    else if (timedOut)
         ++m_counters.timedOut;
     else
         ++m_counters.evicted;
@@ -106,6 +111,10 @@ bool SampleJoiner::add(int topic, qint64 sampleNs, qint64 timeNs, qint64 receive
     if (topic < 0 || topic >= m_topics) {
         ++m_counters.unknownTopic;
         return false;
+    }
+    if (!m_seen[std::size_t(topic)]) {
+        m_seen[std::size_t(topic)] = 1;
+        ++m_seenCount;
     }
     int slot;
     const auto it = m_open.find(sampleNs);

@@ -15,6 +15,12 @@
 /// memory stays bounded whatever arrives. A second stamp of a topic for the same sample, and any
 /// stamp for a sample that already completed, count as duplicates; stamps for a recently dropped
 /// sample count as late and do not reopen it.
+///
+/// A sample that began before every topic had delivered a stamp (since the last reset) is not
+/// counted as dropped when it misses stamps: they were sent before the subscriptions to the later
+/// topics existed (a measurement starting, or reset mid-sample), so nothing was lost. It counts as
+/// `beforeAllTopics` instead; while a topic never delivers, every sample goes there, which the
+/// views show as waiting for that topic rather than as loss.
 class SampleJoiner
 {
 public:
@@ -27,6 +33,7 @@ public:
         quint64 duplicates = 0;
         quint64 late = 0;
         quint64 unknownTopic = 0;
+        quint64 beforeAllTopics = 0; ///< incomplete, begun before every topic had a stamp
         quint64 dropped() const { return timedOut + evicted; }
     };
 
@@ -47,6 +54,10 @@ public:
     void expire(qint64 nowNs);
 
     int topicCount() const { return m_topics; }
+    /// Whether every topic delivered a stamp since the last reset.
+    bool allTopicsSeen() const { return m_seenCount >= m_topics; }
+    /// Whether a topic delivered a stamp since the last reset.
+    bool topicSeen(int topic) const { return topic >= 0 && topic < m_topics && m_seen[std::size_t(topic)]; }
     int pending() const { return int(m_open.size()); }
     /// Entries of every internal structure together (tests check that it stays bounded).
     std::size_t bookkeeping() const
@@ -62,6 +73,7 @@ private:
         qint64 firstReceivedNs = 0;
         quint64 serial = 0; ///< tells a reused slot from the one an order entry meant
         int have = 0;
+        bool early = false; ///< opened before every topic had a stamp
     };
     struct OrderEntry
     {
@@ -79,6 +91,8 @@ private:
     qint64* timesOf(int slot) { return m_times.data() + std::size_t(slot) * std::size_t(m_topics); }
 
     int m_topics = 0;
+    std::vector<char> m_seen; ///< per topic: a stamp came since the reset
+    int m_seenCount = 0;
     qint64 m_timeoutNs = kDefaultTimeoutNs;
     int m_maxPending = kDefaultMaxPending;
     std::unordered_map<qint64, int> m_open; ///< sample -> slot

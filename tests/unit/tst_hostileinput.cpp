@@ -135,6 +135,8 @@ private slots:
     {
         SampleJoiner joiner(2);
         std::vector<qint64> times;
+        joiner.add(0, 0, 1, 0, times);
+        QVERIFY(joiner.add(1, 0, 1, 0, times)); // both topics heard: a missing stamp is a drop
         QVERIFY(!joiner.add(0, 1, 1, std::numeric_limits<qint64>::min() + 1, times));
         joiner.expire(std::numeric_limits<qint64>::max());
         QCOMPARE(joiner.counters().timedOut, 1u);

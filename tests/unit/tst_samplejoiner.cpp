@@ -59,6 +59,8 @@ private slots:
         SampleJoiner j(3);
         j.setTimeoutNs(5 * kSec);
         std::vector<qint64> times;
+        for (int topic = 0; topic < 3; ++topic) // every topic delivers: the measurement is under way
+            j.add(topic, 0, 10, 0, times);
         j.add(0, 1, 10, 0, times);
         j.add(1, 1, 20, 0, times); // topic 2 never stamps sample 1
         j.add(0, 2, 10, 1 * kSec, times);
@@ -107,6 +109,8 @@ private slots:
         SampleJoiner j(4);
         j.setMaxPending(1000);
         std::vector<qint64> times;
+        for (int topic = 0; topic < 4; ++topic)
+            j.add(topic, -1'000'000'000, 0, 0, times);
         std::size_t worst = 0;
         for (qint64 s = 0; s < 300'000; ++s) {
             j.add(int(s % 3), s, s, s, times); // never topic 3: nothing completes
@@ -126,6 +130,49 @@ private slots:
         }
         QCOMPARE(k.counters().complete, 200'000u);
         QVERIFY2(k.bookkeeping() < 20'000, qPrintable(QString::number(k.bookkeeping())));
+    }
+
+    // A measurement starting: the subscriptions to later topics exist only after earlier samples
+    // began. Those samples miss stamps without any loss, and are not counted as dropped.
+    void samplesBegunBeforeEveryTopicDeliveredAreNoDrops()
+    {
+        SampleJoiner j(3);
+        j.setTimeoutNs(kSec);
+        std::vector<qint64> times;
+        j.add(0, 1, 10, 0, times); // only topic 0 is heard yet
+        j.add(0, 2, 10, 100, times);
+        j.add(1, 2, 20, 110, times); // topic 1 now too
+        QVERIFY(!j.allTopicsSeen());
+        QVERIFY(j.topicSeen(1) && !j.topicSeen(2));
+        QVERIFY(j.add(0, 3, 10, 200, times) == false);
+        QVERIFY(j.add(1, 3, 20, 210, times) == false);
+        QVERIFY(j.add(2, 3, 30, 220, times)); // sample 3 began before topic 2 was heard, yet completes
+        QVERIFY(j.allTopicsSeen());
+        j.add(0, 4, 10, 300, times); // begun after: a loss from here on is a drop
+        j.add(1, 4, 20, 310, times);
+        j.expire(10 * kSec);
+        QCOMPARE(j.counters().complete, 1u);
+        QCOMPARE(j.counters().beforeAllTopics, 2u); // samples 1 and 2
+        QCOMPARE(j.counters().timedOut, 1u); // sample 4
+        QCOMPARE(j.counters().dropped(), 1u);
+        // A reset starts listening anew: samples in flight then miss their first stamps.
+        j.reset(3);
+        j.add(2, 5, 30, 11 * kSec, times);
+        j.add(0, 6, 10, 11 * kSec, times);
+        j.add(1, 6, 20, 11 * kSec, times);
+        j.add(2, 6, 30, 11 * kSec, times);
+        j.expire(20 * kSec);
+        QCOMPARE(j.counters().complete, 1u);
+        QCOMPARE(j.counters().beforeAllTopics, 1u);
+        QCOMPARE(j.counters().dropped(), 0u);
+        // A topic that never delivers: every sample waits for it, none is a drop; still counted.
+        SampleJoiner k(2);
+        k.setTimeoutNs(kSec);
+        for (qint64 s = 0; s < 10; ++s)
+            k.add(0, s, 0, s, times);
+        k.expire(10 * kSec);
+        QCOMPARE(k.counters().beforeAllTopics, 10u);
+        QCOMPARE(k.counters().dropped(), 0u);
     }
 
     void engineDropsFollowTheJoiner()

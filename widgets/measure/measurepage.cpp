@@ -11,6 +11,7 @@
 #include "widgets/measure/runbar.h"
 
 #include <algorithm>
+#include <climits>
 #include <QAction>
 #include <QCheckBox>
 #include <QFileDialog>
@@ -278,6 +279,7 @@ void MeasurePage::layOut(QLayout* controls, QWidget* pipelinePane, QWidget* char
     layout->addWidget(split, 1);
     layout->addWidget(m_counts);
     m_counts->setObjectName(u"measureCounts"_s);
+    m_counts->setWordWrap(true); // a long line must not widen the window beyond the screen
     m_counts->setTextInteractionFlags(Qt::TextSelectableByMouse);
 }
 
@@ -376,6 +378,17 @@ void MeasurePage::updateCounts()
                        .arg(e.pending())
                        .arg(c.duplicates)
                        .arg(c.unknownTopic);
+    // Samples begun while a stamp topic was not heard yet lost nothing: they are no drops.
+    if (c.beforeAllTopics)
+        text += tr(" · %n begun before every stamp topic was heard", nullptr,
+                   int(std::min<quint64>(c.beforeAllTopics, INT_MAX)));
+    if (!e.joiner().allTopicsSeen() && e.joiner().topicCount() > 0) {
+        QStringList silent;
+        for (int t = 0; t < e.joiner().topicCount() && silent.size() < 3; ++t)
+            if (!e.joiner().topicSeen(t))
+                silent << e.pipeline().topics().value(t);
+        text += tr(" · waiting for the first stamp of %1").arg(silent.join(u", "));
+    }
     if (const quint64 bad = m_measure->malformedStamps()) {
         // The worst topics by name: a lab needs to know which device sends garbage.
         const QHash<QString, quint64> byTopic = m_measure->malformedStampsByTopic();

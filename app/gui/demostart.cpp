@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#include "demostart.h"
+
+#include "app/cli/clioutput.h"
+#include "app/gui/mainwindow.h"
+#include "latency/latencystatsmodel.h"
+#include "latency/seriesid.h"
+#include "mqtt/mqttprofile.h"
+#include "session/measuresession.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/measure/measurepage.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+
+namespace {
+class Gui
+{
+    Q_DECLARE_TR_FUNCTIONS(Gui)
+};
+} // namespace
+
+namespace DemoStart {
+
+void start(MainWindow& window, DemoLab& lab, const DemoLab::Options& options,
+           const std::function<void(const QString& error)>& done)
+{
+    auto* progress = new QWidget(&window);
+    auto* layout = new QHBoxLayout(progress);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* what = new QLabel(Gui::tr("Starting the demo lab: mosquitto and rosmaster…"), progress);
+    auto* bar = new QProgressBar(progress);
+    bar->setRange(0, 0); // busy: how long the servers take is unknown
+    bar->setMaximumWidth(120);
+    layout->addWidget(what);
+    layout->addWidget(bar);
+    window.statusBar()->addPermanentWidget(progress);
+    window.setWindowTitle(Gui::tr("Bridgescope — demo lab (starting)"));
+    window.pages()->setCurrentWidget(window.measurePage());
+    const auto finish = [&window, progress, done](const QString& error) {
+        progress->deleteLater();
+        if (!error.isEmpty())
+            window.statusBar()->showMessage(Gui::tr("The demo lab did not start: %1").arg(error));
+        done(error);
+    };
+    QString error;
+    if (!lab.launchServers(options, &error)) {
+        QTimer::singleShot(0, &window, [finish, error] { finish(error); });
+        return;
+    }
+    auto* poll = new QTimer(&window);
+    auto* since = new QElapsedTimer;
+    since->start();
+    QObject::connect(poll, &QTimer::timeout, &window, [&lab, poll, since, what, finish] {
+        QString why;
+        DemoLab::Poll state = lab.pollServers(&why);
+        if (state == DemoLab::Poll::Waiting && since->elapsed() > 20000) {
+            lab.stop();
+            why = Gui::tr("the servers did not listen within 20 s");
+            state = DemoLab::Poll::Failed;
+        }
+        if (state == DemoLab::Poll::Waiting)
+            return;
+        poll->deleteLater();
+        delete since;
+        if (state == DemoLab::Poll::Ready) {
+            what->setText(Gui::tr("Starting the demo lab: bridges and nodes…"));
+            if (!lab.startComponents(&why)) {
+                finish(why);
+                return;
+            }
+        }
+        finish(why);
+    });
+    poll->start(50);
+}
+
+void show(MainWindow& window, const DemoLab& lab)
+{
+    window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
+    window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
+    window.files()->openFile(lab.vehicleConfigPath());
+    QString error;
+    if (!window.linksPage()->addConfigFiles({lab.cloudConfigPath()}, &error)) // both bridges' links
+        CliOutput::err(error);
+    if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
+        CliOutput::err(error);
+    window.pages()->setCurrentWidget(window.measurePage());
+    // The paper's Fig. 5 view: detection, one-way communication and the total.
+    window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);
+    window.measure()->statsModel()->setChecked(SeriesId::ofKind(SeriesKind::OneWay).toString(), true);
+    window.setWindowTitle(Gui::tr("Bridgescope — demo lab"));
+    auto* watch = new QTimer(&window);
+    QObject::connect(watch, &QTimer::timeout, &window, [&window, &lab, watch] {
+        if (lab.isRunning())
+            return;
+        watch->stop();
+        window.statusBar()->showMessage(Gui::tr("The demo lab stopped: %1").arg(lab.failure()));
+    });
+    watch->start(2000);
+    // Ctrl+C or SIGTERM close the window properly, so that the lab stops and cleans up.
+    CliOutput::whenStopRequested(&window, [] { QCoreApplication::quit(); });
+}
+
+} // namespace DemoStart
