@@ -14,6 +14,7 @@
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
+#include "widgets/measure/runbar.h"
 
 #include <optional>
 #include <QApplication>
@@ -203,6 +204,15 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
             return false;
         }
         window.pages()->setCurrentWidget(window.experimentPage());
+    } else if (!request.files.isEmpty() && request.files.first().endsWith(u".bsrun"_s, Qt::CaseInsensitive)) {
+        // A run file (the desktop file's application/x-bridgescope-run) opens on the Measure page.
+        QString error;
+        if (!window.measurePage()->runBar()->openRun(request.files.first(), &error)) {
+            if (!error.isEmpty()) // empty: cancelled
+                CliOutput::err(error);
+            return false;
+        }
+        window.pages()->setCurrentWidget(window.measurePage());
     } else if (!request.files.isEmpty()) {
         window.files()->openFile(request.files.first());
     }
