@@ -245,6 +245,8 @@ int runGui(int& argc, char** argv)
 {
     QApplication app(argc, argv);
     QApplication::setWindowIcon(QIcon(u":/icons/bridgescope.svg"_s));
+    // The installed desktop file's name (cmake/Packaging.cmake): Wayland shells find the icon by it.
+    QGuiApplication::setDesktopFileName(u"io.github.bridgescope.Bridgescope"_s);
     installTranslations(app);
     GuiRequest request;
     if (const int status = parseGui(app.arguments(), &request); status >= 0)
