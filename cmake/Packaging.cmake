@@ -110,3 +110,35 @@ install(FILES ${packaging_out}/bridgescope.1.gz DESTINATION ${CMAKE_INSTALL_MAND
 # A native package (no Debian revision): its changelog is changelog.gz.
 install(FILES ${packaging_out}/copyright ${packaging_out}/changelog.gz DESTINATION ${BRIDGESCOPE_DOCDIR})
 
+# The Debian package: bridgescope_VERSION_ARCH.deb.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME bridgescope)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_VENDOR "Bridgescope developers")
+set(CPACK_PACKAGE_CONTACT "Bridgescope developers <bridgescope@example.org>")
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${CPACK_PACKAGE_CONTACT}")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "discover, bridge and measure ROS-MQTT links")
+set(CPACK_PACKAGE_DESCRIPTION
+    "Bridgescope is a Qt desktop tool for people who connect ROS robots and vehicles
+over MQTT with the mqtt_client bridge. It discovers the ROS 1 graph and the
+MQTT broker's topic tree side by side; edits, validates and converts
+mqtt_client configs, built by dragging ROS topics onto MQTT and back; and
+measures the link: per-stage latency distributions from timestamp topics,
+recorded runs, reports (Markdown, LaTeX, HTML, PDF), links watched for hours
+with Prometheus metrics, and unattended experiment matrices.
+
+Its demo lab (bridgescope --demo) needs mosquitto and rosmaster, which this
+package recommends.")
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+# Libraries from dpkg-shlibdeps; Qt's SQLite driver is a plugin (run files), not linked.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6sql6-sqlite")
+# The demo lab starts mosquitto and rosmaster (python3-rosmaster; ros-core has it and more).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "mosquitto, python3-rosmaster")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "ros-core, mosquitto-clients, qt6-translations-l10n")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
+set(CPACK_STRIP_FILES ON)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+include(CPack)
