@@ -134,7 +134,9 @@ help="$(run "$usr/bin/bridgescope" --help)"
 page="$(zcat "$man" | sed 's/\\-/-/g')"
 mapfile -t options < <(sed -n 's/^  \(-[a-z], \)\{0,1\}\(--[a-z-]*\).*/\2/p' <<<"$help")
 mapfile -t commands < <(sed -n '/^Commands:/,/^$/s/^  \([a-z]\+\).*/\1/p' <<<"$help")
-[ ${#options[@]} -ge 8 ] && [ ${#commands[@]} -ge 8 ] || fail "cannot read --help: ${options[*]} / ${commands[*]}"
+if [ ${#options[@]} -lt 8 ] || [ ${#commands[@]} -lt 8 ]; then
+    fail "cannot read --help: ${options[*]} / ${commands[*]}"
+fi
 for word in "${options[@]}" "${commands[@]}"; do
     grep -qF -- "$word" <<<"$page" || fail "the manual page does not mention $word (bridgescope --help does)"
 done
@@ -145,8 +147,9 @@ run "$usr/bin/bridgescope" config validate "$valid" || fail "config validate $va
 printf 'bridge:\n  ros2mqtt:\n    - ros_topic: /a\n      mqtt_topic: a/#\n' >"$tmp/invalid.yaml"
 status=0
 out="$(run "$usr/bin/bridgescope" config validate "$tmp/invalid.yaml")" || status=$?
-[ $status = 1 ] && [[ "$out" == "$tmp/invalid.yaml:4:19: error: "* ]] \
-    || fail "config validate of an invalid config: exit $status, '$out'"
+if [ $status != 1 ] || [[ "$out" != "$tmp/invalid.yaml:4:19: error: "* ]]; then
+    fail "config validate of an invalid config: exit $status, '$out'"
+fi
 pass "config validate on a fixture and an invalid config"
 
 # The bag reader is found beside the installed program (../libexec/bridgescope), not in the
