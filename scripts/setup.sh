@@ -27,6 +27,10 @@ PACKAGES=(
     mosquitto mosquitto-clients
     # headless GUI runs, report checks, reference computations
     xvfb xauth poppler-utils python3-numpy python3-yaml python3-genmsg
+    # the Debian package (scripts/package.sh) and its test (tests/package): dpkg-shlibdeps for its
+    # dependencies, PNG icons from the SVG, and the checkers (lintian, desktop file, AppStream,
+    # MIME type, man --warnings, a ROS bag for the bag reader)
+    dpkg-dev librsvg2-bin lintian desktop-file-utils appstream shared-mime-info man-db file python3-rosbag
 )
 
 missing=()

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs what is missing, builds, and runs every test (unit, integration, gui, fuzz), then the
-# unit and integration tests again under ASan+UBSan (scripts/sanitize.sh asan, a build of its own;
-# BRIDGESCOPE_TEST_ASAN=0 skips it). Exits non-zero when any test fails.
+# Installs what is missing, builds, and runs every test (unit, integration, gui, fuzz, and the
+# Debian package of that build: tests/package), then the unit and integration tests again under
+# ASan+UBSan (scripts/sanitize.sh asan, a build of its own; BRIDGESCOPE_TEST_ASAN=0 skips it).
+# Exits non-zero when any test fails.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build_dir="${BRIDGESCOPE_TEST_BUILD_DIR:-$root/build}"
@@ -16,7 +17,7 @@ if command -v clang++-14 >/dev/null || command -v clang++ >/dev/null; then clang
     -DBRIDGESCOPE_FUZZ_SECONDS="$([ $clang = 1 ] && echo 0 || echo "$fuzz_seconds")"
 export QT_QPA_PLATFORM=offscreen
 status=0
-(cd "$build_dir" && ctest --output-on-failure --timeout 600 -L 'unit|integration|gui|fuzz' "$@") || status=1
+(cd "$build_dir" && ctest --output-on-failure --timeout 600 -L 'unit|integration|gui|fuzz|package' "$@") || status=1
 if [ $clang = 1 ] && [ "$fuzz_seconds" -gt 0 ]; then
     # A fixed seed and number of runs: the same inputs on every machine, so that CI is repeatable
     # (a finding fails it every time, until fixed). Long runs: scripts/fuzz.sh --runs 10000000 1800.

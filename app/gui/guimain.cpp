@@ -167,9 +167,15 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
         window.discoverPage()->setRosMasterUri(request.masterUri);
     if (request.broker)
         window.discoverPage()->connectBroker(*request.broker);
-    // What does not open is said, and the window opens with the rest (as a desktop's %F asks).
-    for (const QString& error : window.openPaths(request.files))
+    // What does not open is said, and the window opens with the rest (as a desktop's %F asks) and
+    // a message box; a run for a screenshot ends instead (status 2), as a script wants.
+    const bool automated = !request.screenshot.isEmpty();
+    const QStringList errors
+        = automated ? window.openPaths(request.files) : window.openAndReport(request.files);
+    for (const QString& error : errors)
         CliOutput::err(error);
+    if (automated && !errors.isEmpty())
+        return false;
     if (!request.pipeline.isEmpty()) {
         QString error;
         if (!window.measurePage()->loadPipeline(request.pipeline, &error)) {
@@ -199,6 +205,8 @@ int runGui(int& argc, char** argv)
 {
     QApplication app(argc, argv);
     QApplication::setWindowIcon(QIcon(u":/icons/bridgescope.svg"_s));
+    // The installed desktop file's name (cmake/Packaging.cmake): Wayland shells find the icon by it.
+    QGuiApplication::setDesktopFileName(u"io.github.bridgescope.Bridgescope"_s);
     installTranslations(app);
     GuiRequest request;
     if (const int status = parseGui(app.arguments(), &request); status >= 0)

@@ -60,8 +60,8 @@ public:
     /// or bag on Measure, several of those on Reports, an experiment's folder on Experiments.
     /// Each goes among the recent files. Returns what could not be opened, a line each.
     QStringList openPaths(const QStringList& paths);
-    /// openPaths(), saying what did not open in a (non-blocking) message box.
-    void openAndReport(const QStringList& paths);
+    /// openPaths(), saying what did not open in a (non-blocking) message box; returns it too.
+    QStringList openAndReport(const QStringList& paths);
 
 protected:
     void closeEvent(class QCloseEvent* event) override;

@@ -142,11 +142,11 @@ QStringList MainWindow::openPaths(const QStringList& paths)
     return errors;
 }
 
-void MainWindow::openAndReport(const QStringList& paths)
+QStringList MainWindow::openAndReport(const QStringList& paths)
 {
     const QStringList errors = openPaths(paths);
     if (errors.isEmpty())
-        return;
+        return errors;
     statusBar()->showMessage(errors.first(), 10000);
     // Not modal to the program: a drop's source is not kept waiting, and nothing else is blocked.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Open"),
@@ -156,6 +156,7 @@ void MainWindow::openAndReport(const QStringList& paths)
     box->setInformativeText(errors.join(u'\n'));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
+    return errors;
 }
 
 void MainWindow::chooseFiles()

@@ -70,8 +70,9 @@ RunLoader::Kind RunLoader::kindOf(const QString& path)
 
 bool RunLoader::isMeasurement(const QString& path)
 {
-    return RunFile::looksLikeRun(path) || BagHeader::looksLikeBag(path)
-        || QFileInfo(path).suffix().compare(u"csv"_s, Qt::CaseInsensitive) == 0;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == u"csv"_s || suffix == RunFile::suffix() || suffix == u"bag"_s
+        || RunFile::looksLikeRun(path) || BagHeader::looksLikeBag(path);
 }
 
 QString RunLoader::kindName(Kind kind)

@@ -15,8 +15,9 @@ class RunLoader
 public:
     enum class Kind { Run, Bag, SuiteCsv };
     static Kind kindOf(const QString& path);
-    /// Whether a file is a measurement input at all: a run or a bag (by their first bytes) or a
-    /// `.csv` file (the suite's, to be checked when read).
+    /// Whether a file is a measurement input at all: a run or a bag (by their first bytes, or by
+    /// their suffix: a damaged one is still one, for load() to say what is wrong) or a `.csv` file
+    /// (the suite's, to be checked when read).
     static bool isMeasurement(const QString& path);
     static QString kindName(Kind kind);
 

@@ -189,12 +189,15 @@ private slots:
         const QString notAConfig = write(u"broken.yaml"_s, "bridge: [unclosed\n");
         const QString plainFolder = m_dir.filePath(u"plain"_s);
         QVERIFY(QDir().mkpath(plainFolder));
-        QVERIFY(drop(&w, {notAConfig, plainFolder, m_dir.filePath(u"gone.bsrun"_s)}));
+        const QString damagedRun = write(u"damaged.bsrun"_s, "not a run file");
+        QVERIFY(drop(&w, {notAConfig, plainFolder, m_dir.filePath(u"gone.bsrun"_s), damagedRun}));
         auto* box = w.findChild<QMessageBox*>(u"openErrors"_s);
         QVERIFY(box);
         QVERIFY2(box->informativeText().contains(u"broken.yaml"_s), qPrintable(box->informativeText()));
         QVERIFY(box->informativeText().contains(u"plain"_s));
         QVERIFY(box->informativeText().contains(u"gone.bsrun"_s));
+        QVERIFY(box->informativeText().contains(u"damaged.bsrun"_s));
+        QVERIFY(!w.measure()->isShowingRun());
         QCOMPARE(w.document()->filePath(), m_config); // nothing lost
         box->accept();
     }
@@ -224,20 +227,25 @@ private slots:
     {
         // As a desktop's `Exec=bridgescope %F` starts it: several files of different kinds.
         const QString png = m_dir.filePath(u"shot.png"_s);
-        QProcess p;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
-        env.insert(u"XDG_CONFIG_HOME"_s, m_dir.filePath(u"config"_s));
-        p.setProcessEnvironment(env);
-        p.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                {u"--screenshot"_s, png, u"--after"_s, u"0.5"_s, m_config, m_pipeline, m_csvA, m_csvB,
-                 m_dir.filePath(u"gone.csv"_s)});
-        QVERIFY(p.waitForFinished(60000));
-        const QString err = QString::fromUtf8(p.readAllStandardError());
-        QVERIFY2(p.exitCode() == 0, qPrintable(err));
-        QVERIFY2(err.contains(u"gone.csv: no such file"_s), qPrintable(err));
-        QVERIFY(!err.contains(u"vehicle.yaml"_s));
-        QVERIFY(QFile::exists(png));
+        const auto run = [&](const QStringList& files) {
+            QProcess p;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+            env.insert(u"XDG_CONFIG_HOME"_s, m_dir.filePath(u"config"_s));
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    QStringList {u"--screenshot"_s, png, u"--after"_s, u"0.5"_s} + files);
+            p.waitForFinished(60000);
+            return std::pair {p.exitCode(), QString::fromUtf8(p.readAllStandardError())};
+        };
+        const auto [exit, err] = run({m_config, m_pipeline, m_csvA, m_csvB, m_experiment});
+        QVERIFY2(exit == 0 && QFile::exists(png), qPrintable(err));
+        QVERIFY2(!err.contains(u"vehicle.yaml"_s) && !err.contains(u"a.csv"_s), qPrintable(err));
+        // One that does not open among them: said on stderr; a scripted run (a screenshot) ends with 2.
+        const auto [badExit, badErr] = run({m_config, m_dir.filePath(u"gone.csv"_s), m_csvA});
+        QCOMPARE(badExit, 2);
+        QVERIFY2(badErr.contains(u"gone.csv: no such file"_s), qPrintable(badErr));
+        QVERIFY(!badErr.contains(u"vehicle.yaml"_s));
     }
 };
 

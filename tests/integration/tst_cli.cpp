@@ -447,6 +447,30 @@ private slots:
         QCOMPARE(p.exitCode(), 0);
         QVERIFY(QFile::exists(png));
     }
+    // Issue 15, item 4: the desktop file opens run files (application/x-bridgescope-run) with the
+    // program; a run opens on the Measure page, one it cannot read is an error, not a config.
+    void aRunFileOpensInTheWindow()
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+        QTemporaryDir dir;
+        const QString png = dir.filePath(u"shot.png"_s);
+        const auto open = [&](const QString& file) {
+            QProcess p;
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"--screenshot"_s, png, u"--after"_s, u"0.2"_s, file});
+            p.waitForFinished(30000);
+            return std::pair {p.exitCode(), QString::fromUtf8(p.readAllStandardError())};
+        };
+        const auto [exit, err]
+            = open(QStringLiteral(BRIDGESCOPE_SOURCE_DIR "/tests/fuzz/corpus/runfile/seed.bsrun"));
+        QVERIFY2(exit == 0 && QFile::exists(png), qPrintable(err));
+        const QString damaged = writeFile(dir, u"damaged.bsrun"_s, "not a run file");
+        const auto [damagedExit, damagedErr] = open(damaged);
+        QCOMPARE(damagedExit, 2);
+        QVERIFY2(damagedErr.contains(damaged), qPrintable(damagedErr));
+    }
     void everyCommandHasHelp()
     {
         QFETCH(QStringList, args);
