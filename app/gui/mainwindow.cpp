@@ -143,6 +143,13 @@ void MainWindow::rememberSession()
     restoreGeometry(settings.value(u"window/geometry"_s).toByteArray());
     restoreState(settings.value(u"window/state"_s).toByteArray());
     WindowMemory::restore(this, settings, u"window/views"_s);
+    // The master last entered by hand, unless the environment names one (--ros-master wins over
+    // both, applied after this).
+    const QString master = settings.value(u"session/rosMaster"_s).toString();
+    if (!master.isEmpty() && qEnvironmentVariableIsEmpty("ROS_MASTER_URI"))
+        m_discover->setRosMasterUri(master);
+    connect(m_discover, &DiscoverPage::rosMasterChosen, this,
+            [](const QString& uri) { QSettings().setValue(u"session/rosMaster"_s, uri); });
 }
 
 void MainWindow::saveSession() const

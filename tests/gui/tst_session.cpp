@@ -2,6 +2,7 @@
 // The window remembers how it was left: geometry, page, splitters, columns and their sort, filter
 // texts; and a first start fits the screen.
 #include "app/gui/mainwindow.h"
+#include "session/livesession.h"
 #include "widgets/common/windowmemory.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
@@ -84,6 +85,35 @@ private slots:
         QCOMPARE(header->sectionSize(0), 233);
         QCOMPARE(header->sortIndicatorSection(), 2);
         QCOMPARE(header->sortIndicatorOrder(), Qt::DescendingOrder);
+    }
+
+    void theMasterEnteredLastComesBack()
+    {
+        QSettings().clear();
+        qunsetenv("ROS_MASTER_URI");
+        {
+            MainWindow w;
+            w.rememberSession();
+            w.show();
+            auto* field = w.findChild<QLineEdit*>(u"masterUri"_s);
+            QVERIFY(field);
+            field->setText(u"http://127.0.0.1:1/"_s); // nothing listens there: asking fails quietly
+            QTest::keyClick(field, Qt::Key_Return);
+            w.discoverPage()->setRosMasterUri(u"http://127.0.0.1:2/"_s); // a program's (the demo's)
+            QVERIFY(w.close());
+        }
+        {
+            MainWindow w;
+            w.rememberSession();
+            QCOMPARE(w.session()->rosMasterUri(), u"http://127.0.0.1:1/"_s);
+        }
+        qputenv("ROS_MASTER_URI", "http://127.0.0.1:3/"); // the environment's comes first
+        {
+            MainWindow w;
+            w.rememberSession();
+            QCOMPARE(w.session()->rosMasterUri(), u"http://127.0.0.1:3/"_s);
+        }
+        qunsetenv("ROS_MASTER_URI");
     }
 
     void aWindowThatIsNotToRememberLeavesNothing()

@@ -82,8 +82,10 @@ QLayout* DiscoverPage::createConnectionBar()
     bar->addWidget(masterLabel, 0, 0);
     bar->addWidget(m_masterUri, 0, 1);
     bar->addWidget(m_rosState, 0, 2, 1, 3);
-    connect(m_masterUri, &QLineEdit::returnPressed, this,
-            [this] { setRosMasterUri(m_masterUri->text().trimmed()); });
+    connect(m_masterUri, &QLineEdit::returnPressed, this, [this] {
+        setRosMasterUri(m_masterUri->text().trimmed());
+        emit rosMasterChosen(m_session->rosMasterUri());
+    });
 
     m_profileBox = new QComboBox(this);
     m_profileBox->setObjectName(u"profiles"_s);

@@ -41,6 +41,10 @@ public:
     QLabel* mqttStatus() const { return m_mqttState; }
     QLabel* rosStatus() const { return m_rosState; }
 
+signals:
+    /// The user entered a master URI (not a program setting one, as the demo does).
+    void rosMasterChosen(const QString& uri);
+
 private:
     QLayout* createConnectionBar();
     QWidget* createRosPane();
