@@ -2435,6 +2435,18 @@ factors:
         <source>Demo lab</source>
         <translation>Demo-Labor</translation>
     </message>
+    <message>
+        <source>colours: system (default), light or dark</source>
+        <translation>Farben: system (Standard), light oder dark</translation>
+    </message>
+    <message>
+        <source>Colours: system (default), light or dark.</source>
+        <translation>Farben: system (Standard), light oder dark.</translation>
+    </message>
+    <message>
+        <source>--theme takes one of: %1</source>
+        <translation>--theme nimmt eines von: %1</translation>
+    </message>
 </context>
 <context>
     <name>LatencyEngine</name>
@@ -3047,6 +3059,22 @@ factors:
     <message>
         <source>Bridgescope files (*.yaml *.yml *.bsrun *.csv *.bag);;Bridge configs and pipelines (*.yaml *.yml);;Runs, suite CSV and bags (*.bsrun *.csv *.bag);;All files (*)</source>
         <translation>Bridgescope-Dateien (*.yaml *.yml *.bsrun *.csv *.bag);;Bridge-Konfigurationen und Pipelines (*.yaml *.yml);;Läufe, Suite-CSV und Bags (*.bsrun *.csv *.bag);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Farbschema</translation>
+    </message>
+    <message>
+        <source>&amp;System</source>
+        <translation>&amp;System</translation>
+    </message>
+    <message>
+        <source>&amp;Light</source>
+        <translation>&amp;Hell</translation>
+    </message>
+    <message>
+        <source>&amp;Dark</source>
+        <translation>&amp;Dunkel</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 #include "app/gui/mainwindow.h"
 #include "demo/demolab.h"
 #include "mqtt/mqttprofile.h"
+#include "widgets/common/theme.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
@@ -51,6 +52,7 @@ QString bridgescopeUsage()
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
         {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
         {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports, links or experiments")},
+        {u"--theme THEME"_s, Gui::tr("colours: system (default), light or dark")},
         {u"--verbose"_s, Gui::tr("debug messages of every layer on stderr, also after a command")},
         {u"-h, --help"_s, Gui::tr("show this help")},
         {u"-v, --version"_s, Gui::tr("show the version")},
@@ -96,6 +98,7 @@ struct GuiRequest
     QString pipeline;
     int page = -1;
     bool demo = false;
+    QString theme; ///< empty: the one last chosen (or the desktop's)
     QStringList files;
 };
 
@@ -118,7 +121,9 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         u"page"_s, Gui::tr("Open on this page: discover, map, measure, reports, links or experiments."),
         u"PAGE"_s);
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
-    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo});
+    const QCommandLineOption theme(u"theme"_s, Gui::tr("Colours: system (default), light or dark."),
+                                   u"THEME"_s);
+    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo, theme});
     parser.addPositionalArgument(
         u"FILE"_s,
         Gui::tr("Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open."),
@@ -152,6 +157,11 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
             CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
             return ExitUsage;
         }
+    }
+    request->theme = parser.value(theme);
+    if (!request->theme.isEmpty() && !Theme::names().contains(request->theme)) {
+        CliOutput::err(Gui::tr("--theme takes one of: %1").arg(Theme::names().join(u", "_s)));
+        return ExitUsage;
     }
     request->masterUri = parser.value(master);
     request->pipeline = parser.value(pipeline);
@@ -216,6 +226,8 @@ int runGui(int& argc, char** argv)
     MainWindow window;
     if (request.screenshot.isEmpty())
         window.rememberSession(); // a screenshot shows the window as it starts the first time
+    if (!request.theme.isEmpty())
+        Theme::apply(request.theme);
     if (!request.demo && !applyRequest(window, request))
         return ExitUsage;
     window.show();

@@ -9,6 +9,7 @@
 #include "session/measuresession.h"
 #include "watch/watchsession.h"
 #include "widgets/common/problemspanel.h"
+#include "widgets/common/theme.h"
 #include "widgets/common/windowmemory.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/experiment/experimentpage.h"
@@ -23,6 +24,7 @@
 
 #include <functional>
 #include <QAbstractButton>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDialog>
@@ -143,6 +145,7 @@ void MainWindow::rememberSession()
     restoreGeometry(settings.value(u"window/geometry"_s).toByteArray());
     restoreState(settings.value(u"window/state"_s).toByteArray());
     WindowMemory::restore(this, settings, u"window/views"_s);
+    Theme::apply(settings.value(u"ui/theme"_s, u"system"_s).toString());
     // The master last entered by hand, unless the environment names one (--ros-master wins over
     // both, applied after this).
     const QString master = settings.value(u"session/rosMaster"_s).toString();
@@ -229,6 +232,25 @@ void MainWindow::createMenus()
         QAction* a = view->addAction(m_pages->tabText(i), this, [this, i] { m_pages->setCurrentIndex(i); });
         a->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + i)));
     }
+    view->addSeparator();
+    m_themeMenu = view->addMenu(tr("&Theme"));
+    auto* themes = new QActionGroup(m_themeMenu);
+    const QStringList labels {tr("&System"), tr("&Light"), tr("&Dark")};
+    for (int i = 0; i < Theme::names().size(); ++i) {
+        const QString name = Theme::names().at(i);
+        QAction* a = m_themeMenu->addAction(labels.value(i), this, [this, name] {
+            Theme::apply(name);
+            if (m_remember)
+                QSettings().setValue(u"ui/theme"_s, name);
+        });
+        a->setCheckable(true);
+        a->setData(name);
+        themes->addAction(a);
+    }
+    connect(m_themeMenu, &QMenu::aboutToShow, this, [this] {
+        for (QAction* a : m_themeMenu->actions())
+            a->setChecked(a->data().toString() == Theme::current());
+    });
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     QAction* probe = tools->addAction(tr("Link &Probe…"), this, [this] {

@@ -90,6 +90,7 @@ private:
     ExperimentPage* m_experiments;
     ConfigEditor* m_configEditor;
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_themeMenu = nullptr;
     QLabel* m_problemStatus;
     bool m_remember = false;
 };

@@ -6,6 +6,7 @@
 #include "widgets/common/chartstyle.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/ratechart.h"
+#include "widgets/common/theme.h"
 #include "widgets/map/mappage.h"
 #include "widgets/map/yamlpreview.h"
 
@@ -13,6 +14,8 @@
 #include <QApplication>
 #include <QChart>
 #include <QChartView>
+#include <QMenu>
+#include <QStyle>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -73,6 +76,37 @@ private slots:
         QCoreApplication::processEvents();
         QCOMPARE(ecdf.views().first()->chart()->backgroundBrush().color(), light.color(QPalette::Base));
         QCOMPARE(rate.chart()->backgroundBrush().color(), light.color(QPalette::Base));
+    }
+
+    // View > Theme (and --theme): a dark theme without the desktop's help, and back.
+    void theDarkThemeDarkensWindowAndCharts()
+    {
+        const QPalette before = QApplication::palette();
+        MainWindow w;
+        QMenu* theme = nullptr;
+        for (QMenu* m : w.findChildren<QMenu*>())
+            if (m->title() == MainWindow::tr("&Theme"))
+                theme = m;
+        QVERIFY(theme);
+        QCOMPARE(theme->actions().size(), 3);
+        theme->actions().at(2)->trigger(); // Dark
+        QCOMPARE(Theme::current(), u"dark"_s);
+        QVERIFY(ChartStyle::isDark(QApplication::palette()));
+        QCOMPARE(QApplication::style()->name().toLower(), u"fusion"_s);
+        {
+            LatencySeriesSet set;
+            set.add(u"total"_s, 40'000'000);
+            EcdfChart ecdf;
+            ecdf.setSource(&set);
+            ecdf.setSeries({LatencySeriesSet::idOf(u"total"_s)});
+            ecdf.refresh();
+            verifyDark(ecdf.views().first()->chart(), QApplication::palette());
+        }
+        theme->actions().at(1)->trigger(); // Light
+        QVERIFY(!ChartStyle::isDark(QApplication::palette()));
+        theme->actions().at(0)->trigger(); // System: what the desktop gave
+        QCOMPARE(QApplication::palette().color(QPalette::Window), before.color(QPalette::Window));
+        QVERIFY(!Theme::apply(u"purple"_s));
     }
 
     void theYamlPreviewFollowsThePalette()
