@@ -1264,6 +1264,46 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Turn on $SYS in the connection profile to see the broker&apos;s figures.</source>
         <translation>$SYS im Verbindungsprofil einschalten, um die Kennzahlen des Brokers zu sehen.</translation>
     </message>
+    <message>
+        <source>&amp;Plot Field</source>
+        <translation>Feld &amp;plotten</translation>
+    </message>
+    <message>
+        <source>P&amp;lot</source>
+        <translation>P&amp;lot</translation>
+    </message>
+    <message>
+        <source>Plot the selected numeric field over time (Ctrl+L)</source>
+        <translation>Das gewählte Zahlenfeld über der Zeit plotten (Strg+L)</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Stop plotting the selected field (Del in the list)</source>
+        <translation>Das gewählte Feld nicht mehr plotten (Entf in der Liste)</translation>
+    </message>
+    <message>
+        <source>Clear &amp;All</source>
+        <translation>&amp;Alle entfernen</translation>
+    </message>
+    <message>
+        <source>At most %1 fields are plotted at once.</source>
+        <translation>Höchstens %1 Felder werden gleichzeitig geplottet.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 messages without a value: %3)</source>
+        <translation>%1 (%2 Nachrichten ohne Wert: %3)</translation>
+    </message>
+    <message>
+        <source>Select a number in Fields and press Ctrl+L (or Plot Field in its context menu).</source>
+        <translation>Eine Zahl unter Felder wählen und Strg+L drücken (oder Feld plotten im Kontextmenü).</translation>
+    </message>
+    <message>
+        <source>%1 messages not decoded to keep up (at most %2 per topic and tick are).</source>
+        <translation>%1 Nachrichten nicht dekodiert, um Schritt zu halten (höchstens %2 je Topic und Takt werden es).</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -1450,10 +1490,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         </translation>
     </message>
     <message numerus="yes">
-        <source>%1 of %n retained messages were not cleared: the broker is not connected.</source>
+        <source>%1 of %n retained messages were not cleared: %2</source>
         <translation>
-            <numerusform>%1 von %n Retained-Nachricht wurde nicht gelöscht: keine Verbindung zum Broker.</numerusform>
-            <numerusform>%1 von %n Retained-Nachrichten wurden nicht gelöscht: keine Verbindung zum Broker.</numerusform>
+            <numerusform>%1 von %n Retained-Nachricht wurde nicht gelöscht: %2</numerusform>
+            <numerusform>%1 von %n Retained-Nachrichten wurden nicht gelöscht: %2</numerusform>
         </translation>
     </message>
 </context>
@@ -2285,6 +2325,43 @@ factors:
     <message>
         <source>not an experiment&apos;s state (%1)</source>
         <translation>kein Zustand eines Experiments (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>FieldPath</name>
+    <message>
+        <source>no field %1</source>
+        <translation>kein Feld %1</translation>
+    </message>
+    <message>
+        <source>%1 is no number</source>
+        <translation>%1 ist keine Zahl</translation>
+    </message>
+</context>
+<context>
+    <name>FieldPlotChart</name>
+    <message>
+        <source>seconds</source>
+        <translation>Sekunden</translation>
+    </message>
+</context>
+<context>
+    <name>FieldPlotter</name>
+    <message>
+        <source>the announced type %1 does not read</source>
+        <translation>der angekündigte Typ %1 ist nicht lesbar</translation>
+    </message>
+    <message>
+        <source>the type is not known yet</source>
+        <translation>der Typ ist noch nicht bekannt</translation>
+    </message>
+    <message>
+        <source>a payload of %1 bytes, more than %2 are not plotted</source>
+        <translation>Nutzdaten von %1 Bytes; mehr als %2 werden nicht geplottet</translation>
+    </message>
+    <message>
+        <source>not JSON: %1</source>
+        <translation>kein JSON: %1</translation>
     </message>
 </context>
 <context>
@@ -3633,6 +3710,10 @@ factors:
         <source>TLS failed: %1</source>
         <translation>TLS fehlgeschlagen: %1</translation>
     </message>
+    <message>
+        <source>not connected to the broker</source>
+        <translation>keine Verbindung zum Broker</translation>
+    </message>
 </context>
 <context>
     <name>MqttLink</name>
@@ -4836,10 +4917,6 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
     <message>
         <source>Not sent: the retained message stays.</source>
         <translation>Nicht gesendet: die Retained-Nachricht bleibt.</translation>
-    </message>
-    <message>
-        <source>Not sent: not connected to the broker.</source>
-        <translation>Nicht gesendet: keine Verbindung zum Broker.</translation>
     </message>
     <message numerus="yes">
         <source>%1: published %n bytes to %2.</source>

@@ -239,13 +239,15 @@ int DiscoverPage::clearRetained()
     if (ask.exec() != QMessageBox::Yes)
         return 0;
     int cleared = 0;
+    QString why;
     for (const QString& t : topics)
-        cleared += m_session->mqtt()->publish(t, QByteArray(), 0, true) ? 1 : 0;
+        cleared += m_session->mqtt()->publish(t, QByteArray(), 0, true, &why) ? 1 : 0;
     if (cleared < topics.size())
-        QMessageBox::warning(this, tr("Clear Retained"),
-                             tr("%1 of %n retained messages were not cleared: the broker is not connected.",
-                                nullptr, int(topics.size()))
-                                 .arg(topics.size() - cleared));
+        QMessageBox::warning(
+            this, tr("Clear Retained"),
+            tr("%1 of %n retained messages were not cleared: %2", nullptr, int(topics.size()))
+                .arg(topics.size() - cleared)
+                .arg(why));
     return cleared;
 }
 

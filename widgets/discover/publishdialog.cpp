@@ -175,8 +175,8 @@ bool PublishDialog::publish()
             return false;
         }
     }
-    if (!m_connection->publish(topic, *payload, m_qos->currentIndex(), retained)) {
-        setStatus(tr("Not sent: not connected to the broker."), true);
+    if (!m_connection->publish(topic, *payload, m_qos->currentIndex(), retained, &why)) {
+        setStatus(tr("Not sent: %1").arg(why), true);
         return false;
     }
     setStatus(tr("%1: published %n bytes to %2.", nullptr, int(payload->size()))
