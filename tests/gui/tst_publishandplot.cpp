@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Publishing from the Discover page and clearing retained messages, against a real mosquitto:
-// a separate subscriber (mosquitto_sub) sees exactly what the dialog sent.
+// a separate subscriber (mosquitto_sub) sees exactly what the dialog sent. Field plots in the
+// detail pane follow real publishers (MQTT JSON, and a ROS node on a real rosmaster).
 #include "fixtures.h"
 #include "mqtt/mqtttopictree.h"
+#include "ros/rosmonitor.h"
+#include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "viewhelpers.h"
+#include "widgets/discover/detailpane.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/discover/fieldplotchart.h"
 #include "widgets/discover/publishdialog.h"
 #include "wire/mqttclientwire.h"
 #include "wire/rosmessage.h"
@@ -19,12 +24,15 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLineSeries>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTest>
 #include <QTimer>
 #include <QToolButton>
@@ -41,6 +49,43 @@ struct Received
     bool retained = false;
     QByteArray payload;
 };
+
+/// The y values of a plotted field, oldest first.
+QList<double> values(const PlotSeries& s)
+{
+    QList<double> out;
+    for (const QPointF& p : s.points)
+        out << p.y();
+    return out;
+}
+
+/// The fields view's index of the field at `path`, or an invalid one.
+QModelIndex fieldAt(DetailPane* detail, const QStringList& path, const QModelIndex& parent = {})
+{
+    QAbstractItemModel* m = detail->fieldsView()->model();
+    for (int r = 0; r < m->rowCount(parent); ++r) {
+        const QModelIndex i = m->index(r, 0, parent);
+        if (i.data(DetailPane::FieldPathRole).toStringList() == path)
+            return i;
+        if (const QModelIndex deeper = fieldAt(detail, path, i); deeper.isValid())
+            return deeper;
+    }
+    return {};
+}
+
+/// Picks the field with the Plot action, as a user does from the fields view.
+bool plotFromView(DetailPane* detail, const QStringList& path)
+{
+    const QModelIndex i = fieldAt(detail, path);
+    if (!i.isValid())
+        return false;
+    detail->fieldsView()->setCurrentIndex(i);
+    if (!detail->plotAction()->isEnabled())
+        return false;
+    const qsizetype before = detail->plotter()->series().size();
+    detail->plotAction()->trigger();
+    return detail->plotter()->series().size() == before + 1;
+}
 
 /// Answers the next message box with `button`, keeping its text (polls: the box may come late).
 void answerNextBox(QMessageBox::StandardButton button, QString* text)
@@ -318,6 +363,125 @@ private slots:
         QCOMPARE(page.clearRetained(), 2);
         QVERIFY2(question.contains(u"2 topics at or under keep/b"_s), qPrintable(question));
         QVERIFY(!receiveOne(u"keep/b/#"_s, 2).got);
+    }
+
+    void plotsJsonFieldsOfALivePublisher()
+    {
+        mosquittoPub(
+            {u"-t"_s, u"plot/json"_s, u"-r"_s, u"-m"_s, u"{\"a\": -1, \"v\": [0, -1], \"name\": \"x\"}"_s});
+        Page p(m_servers.brokerUrl());
+        DetailPane* detail = p.page.detail();
+        select(p.page, u"plot/json"_s);
+        QTRY_VERIFY(fieldAt(detail, {u"v"_s, u"[1]"_s}).isValid());
+        QVERIFY(!plotFromView(detail, {u"name"_s})); // text is no number
+        QVERIFY(plotFromView(detail, {u"a"_s}));
+        QVERIFY(plotFromView(detail, {u"v"_s, u"[1]"_s}));
+
+        MqttConnection publisher;
+        publisher.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QTRY_VERIFY(publisher.state() == MqttConnection::State::Connected);
+        QList<double> as;
+        QList<double> vs;
+        for (int i = 0; i < 30; ++i) {
+            QVERIFY(publisher.publish(u"plot/json"_s,
+                                      u"{\"a\": %1, \"v\": [%2, %3], \"name\": \"n\"}"_s.arg(i)
+                                          .arg(i * 0.5)
+                                          .arg(i * 1.25)
+                                          .toUtf8()));
+            as << i;
+            vs << i * 1.25;
+            QTest::qWait(10);
+        }
+        const FieldPlotter* plotter = detail->plotter();
+        QTRY_COMPARE_WITH_TIMEOUT(plotter->series()[1].points.size(), 30, 10000);
+        QCOMPARE(values(plotter->series()[0]), as);
+        QCOMPARE(values(plotter->series()[1]), vs);
+        QCOMPARE(plotter->series()[0].errors, 0u);
+
+        // The chart shows the same points, a line per field in colours of its own.
+        detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
+        const QList<QLineSeries*>& lines = detail->plotChart()->lines();
+        QCOMPARE(lines.size(), 2);
+        QCOMPARE(lines[0]->name(), u"plot/json: a"_s);
+        QCOMPARE(lines[1]->name(), u"plot/json: v[1]"_s);
+        QCOMPARE(lines[1]->points(), plotter->series()[1].points);
+        QVERIFY(lines[0]->color() != lines[1]->color());
+
+        // Removed from the list: one line stays.
+        detail->plotList()->setCurrentRow(0);
+        detail->plotList()->setFocus();
+        for (QPushButton* b : detail->findChildren<QPushButton*>()) {
+            if (b->text() == u"&Remove"_s)
+                b->click();
+        }
+        QCOMPARE(plotter->series().size(), 1);
+        QCOMPARE(detail->plotChart()->lines().size(), 1);
+        QCOMPARE(detail->plotChart()->lines()[0]->name(), u"plot/json: v[1]"_s);
+    }
+
+    void plotsRosFieldsOfALivePublisher()
+    {
+        Page p(m_servers.brokerUrl());
+        p.page.setRosMasterUri(m_servers.rosMasterUri());
+        DetailPane* detail = p.page.detail();
+        p.session.rosMonitor()->monitor(u"/plot/stamps"_s);
+        QProcess node;
+        node.setProcessEnvironment(m_servers.rosEnvironment());
+        node.start(QStringLiteral(STAMP_PUBLISHER),
+                   {u"--samples"_s, u"60"_s, u"--rate"_s, u"20"_s, u"--stamp"_s, u"/plot/stamps:0"_s,
+                    u"--first-sample"_s, u"1700000000"_s});
+        detail->showRosTopic(u"/plot/stamps"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(fieldAt(detail, {u"time"_s}).isValid(), 30000);
+        QVERIFY(plotFromView(detail, {u"header"_s, u"seq"_s}));
+        QVERIFY(plotFromView(detail, {u"time"_s}));
+        // Waiting with the event loop running: a blocked GUI thread would get all messages in
+        // one tick, and the plot would decimate them.
+        QTRY_COMPARE_WITH_TIMEOUT(node.state(), QProcess::NotRunning, 30000);
+        QCOMPARE(node.exitCode(), 0);
+        const FieldPlotter* plotter = detail->plotter();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !plotter->series()[0].points.isEmpty() && plotter->series()[0].points.last().y() == 59, 10000);
+        // Every message from the one plotting began, in order: seq, and the time it carries.
+        const QList<double> seqs = values(plotter->series()[0]);
+        const QList<double> times = values(plotter->series()[1]);
+        QStringList shown;
+        for (double v : seqs)
+            shown << QString::number(v);
+        QVERIFY2(seqs.size() >= 20, qPrintable(shown.join(u' ')));
+        QCOMPARE(times.size(), seqs.size());
+        for (int i = 0; i < seqs.size(); ++i) {
+            const int seq = 60 - int(seqs.size()) + i;
+            QCOMPARE(seqs[i], double(seq));
+            QCOMPARE(times[i], rosTimeText(1700000000LL + seq / 20, (seq % 20) * 50000000LL).toDouble());
+        }
+    }
+
+    // Hostile: a payload too large to plot and a burst of malformed ones are counted, each
+    // tick decodes a bounded number, and the plot goes on with the next good value.
+    void hostilePayloadsOnAPlottedTopicStayBounded()
+    {
+        mosquittoPub({u"-t"_s, u"plot/hostile"_s, u"-r"_s, u"-m"_s, u"{\"a\": 1}"_s});
+        Page p(m_servers.brokerUrl());
+        DetailPane* detail = p.page.detail();
+        select(p.page, u"plot/hostile"_s);
+        QTRY_VERIFY(fieldAt(detail, {u"a"_s}).isValid());
+        QVERIFY(plotFromView(detail, {u"a"_s}));
+        MqttConnection publisher;
+        publisher.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QTRY_VERIFY(publisher.state() == MqttConnection::State::Connected);
+        QByteArray huge(6 * 1024 * 1024, '[');
+        QVERIFY(publisher.publish(u"plot/hostile"_s, huge));
+        for (int i = 0; i < 2000; ++i)
+            QVERIFY(publisher.publish(u"plot/hostile"_s, "{\"a\": [[[" + QByteArray::number(i)));
+        QVERIFY(publisher.publish(u"plot/hostile"_s, "{\"a\": 7}"));
+        const FieldPlotter* plotter = detail->plotter();
+        QTRY_VERIFY_WITH_TIMEOUT(!plotter->series()[0].points.isEmpty(), 20000);
+        QCOMPARE(values(plotter->series()[0]), QList<double> {7});
+        // Each of the 2001 bad payloads was counted as an error or skipped, never decoded at length.
+        QCOMPARE(plotter->series()[0].errors + plotter->skippedMessages(), 2001u);
+        QVERIFY(plotter->mostDecodedInATick() <= FieldPlotter::kMessagesPerTick);
+        QVERIFY2(detail->plotList()->item(0)->text().contains(u"messages without a value"_s),
+                 qPrintable(detail->plotList()->item(0)->text()));
     }
 };
 
