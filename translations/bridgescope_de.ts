@@ -1277,16 +1277,12 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Das gewählte Zahlenfeld über der Zeit plotten (Strg+L)</translation>
     </message>
     <message>
-        <source>&amp;Remove</source>
-        <translation>&amp;Entfernen</translation>
-    </message>
-    <message>
         <source>Stop plotting the selected field (Del in the list)</source>
         <translation>Das gewählte Feld nicht mehr plotten (Entf in der Liste)</translation>
     </message>
     <message>
         <source>Clear &amp;All</source>
-        <translation>&amp;Alle entfernen</translation>
+        <translation>Alle en&amp;tfernen</translation>
     </message>
     <message>
         <source>At most %1 fields are plotted at once.</source>
@@ -1303,6 +1299,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>%1 messages not decoded to keep up (at most %2 per topic and tick are).</source>
         <translation>%1 Nachrichten nicht dekodiert, um Schritt zu halten (höchstens %2 je Topic und Takt werden es).</translation>
+    </message>
+    <message>
+        <source>Remo&amp;ve</source>
+        <translation>&amp;Entfernen</translation>
     </message>
 </context>
 <context>

@@ -225,6 +225,8 @@ void FieldPlotter::onDrained(qint64 nowNs)
               int decodedCount = 0;
               for (std::size_t index : chosen) {
                   const Received& m = messages[index];
+                  if (d->originNs == 0)
+                      d->originNs = m.receivedNs; // time 0 is the first value's
                   Decoded dec;
                   if (m.payload.size() > kMaxPayloadBytes) {
                       dec.error = tr("a payload of %1 bytes, more than %2 are not plotted")
@@ -276,14 +278,14 @@ void FieldPlotter::onDrained(qint64 nowNs)
               m_mostDecoded = std::max(m_mostDecoded, decodedCount);
           };
 
-    if (d->originNs == 0)
-        d->originNs = nowNs;
     for (auto it = pending.begin(); it != pending.end(); ++it)
         plotTopic(PlotField::Source::Mqtt, it.key(), it.value());
     for (auto it = rosPending.begin(); it != rosPending.end(); ++it)
         plotTopic(PlotField::Source::Ros, it.key(), it.value());
 
     // The window: the last kWindowSeconds, at most kMaxPoints per field.
+    if (d->originNs == 0)
+        return;
     const double cutoff = double(nowNs - d->originNs) / 1e9 - kWindowSeconds;
     for (PlotSeries& s : m_series) {
         qsizetype old = 0;

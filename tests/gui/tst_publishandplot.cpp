@@ -380,6 +380,16 @@ private slots:
         MqttConnection publisher;
         publisher.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
         QTRY_VERIFY(publisher.state() == MqttConnection::State::Connected);
+        // A new message rebuilds the fields; the one the user is on stays current, ready to plot.
+        QVERIFY(publisher.publish(u"plot/json"_s, "{\"a\": -2, \"v\": [0, -2], \"name\": \"x\"}"));
+        QTRY_COMPARE(fieldAt(detail, {u"a"_s}).siblingAtColumn(1).data().toString(), u"-2"_s);
+        QCOMPARE(detail->fieldsView()->currentIndex().data(DetailPane::FieldPathRole).toStringList(),
+                 (QStringList {u"v"_s, u"[1]"_s}));
+        QVERIFY(detail->plotAction()->isEnabled());
+        QTRY_COMPARE(detail->plotter()->series()[0].points.size(), 1); // the -2
+        detail->plotter()->clear();
+        QVERIFY(plotFromView(detail, {u"a"_s}));
+        QVERIFY(plotFromView(detail, {u"v"_s, u"[1]"_s}));
         QList<double> as;
         QList<double> vs;
         for (int i = 0; i < 30; ++i) {
@@ -397,6 +407,12 @@ private slots:
         QCOMPARE(values(plotter->series()[0]), as);
         QCOMPARE(values(plotter->series()[1]), vs);
         QCOMPARE(plotter->series()[0].errors, 0u);
+        if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
+            detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
+            p.page.resize(1280, 700);
+            QTest::qWait(300);
+            p.page.grab().save(dir + u"/field-plot.png"_s);
+        }
 
         // The chart shows the same points, a line per field in colours of its own.
         detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
@@ -406,12 +422,16 @@ private slots:
         QCOMPARE(lines[1]->name(), u"plot/json: v[1]"_s);
         QCOMPARE(lines[1]->points(), plotter->series()[1].points);
         QVERIFY(lines[0]->color() != lines[1]->color());
+        // It follows the next message by itself (once per tick).
+        QVERIFY(publisher.publish(u"plot/json"_s, "{\"a\": 30, \"v\": [0, 37.5]}"));
+        QTRY_COMPARE(lines[0]->points().size(), 31);
+        QCOMPARE(lines[1]->points().last().y(), 37.5);
 
         // Removed from the list: one line stays.
         detail->plotList()->setCurrentRow(0);
         detail->plotList()->setFocus();
         for (QPushButton* b : detail->findChildren<QPushButton*>()) {
-            if (b->text() == u"&Remove"_s)
+            if (b->text() == u"Remo&ve"_s)
                 b->click();
         }
         QCOMPARE(plotter->series().size(), 1);

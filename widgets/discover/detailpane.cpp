@@ -210,7 +210,7 @@ QWidget* DetailPane::createPlotTab()
     m_plotList->setMaximumHeight(90);
     v->addWidget(m_plotList);
     auto* buttons = new QHBoxLayout;
-    auto* remove = new QPushButton(tr("&Remove"), page);
+    auto* remove = new QPushButton(tr("Remo&ve"), page);
     remove->setToolTip(tr("Stop plotting the selected field (Del in the list)"));
     auto* removeKey = new QAction(this);
     removeKey->setShortcut(QKeySequence::Delete);
@@ -302,18 +302,39 @@ void DetailPane::refresh()
         refreshRos(false);
 }
 
+QStringList DetailPane::clearFields()
+{
+    const QStringList current
+        = m_fields->currentIndex().siblingAtColumn(0).data(FieldPathRole).toStringList();
+    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    return current;
+}
+
+/// The field that was current before a refresh is current again (to plot it, or read on).
+void DetailPane::restoreCurrentField(const QStringList& path)
+{
+    if (path.isEmpty())
+        return;
+    const QModelIndexList found = m_fieldModel->match(m_fieldModel->index(0, 0), FieldPathRole, path, 1,
+                                                      Qt::MatchExactly | Qt::MatchRecursive);
+    if (!found.isEmpty())
+        m_fields->selectionModel()->setCurrentIndex(
+            found.first(), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+}
+
 void DetailPane::showNoFields(const QString& why)
 {
-    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    clearFields();
     m_fieldModel->invisibleRootItem()->appendRow(row(why, QString(), QString()));
 }
 
 void DetailPane::showFields(const RosValue& value)
 {
-    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    const QStringList current = clearFields();
     for (const RosValue& c : value.children)
         addValue(m_fieldModel->invisibleRootItem(), c, {});
     m_fields->expandToDepth(1);
+    restoreCurrentField(current);
     m_fields->resizeColumnToContents(0);
     m_fields->resizeColumnToContents(1);
 }
@@ -321,7 +342,7 @@ void DetailPane::showFields(const RosValue& value)
 void DetailPane::showJsonFields(const QByteArray& json)
 {
     const QJsonDocument doc = QJsonDocument::fromJson(json);
-    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    const QStringList current = clearFields();
     if (doc.isObject()) {
         const QJsonObject o = doc.object();
         for (auto it = o.begin(); it != o.end(); ++it)
@@ -331,6 +352,7 @@ void DetailPane::showJsonFields(const QByteArray& json)
                 doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(), {});
     }
     m_fields->expandToDepth(1);
+    restoreCurrentField(current);
     m_fields->resizeColumnToContents(0);
 }
 

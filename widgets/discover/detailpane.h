@@ -61,6 +61,8 @@ private:
     void showJsonFields(const QByteArray& json);
     void showPayload(const QByteArray& payload);
     void showNoFields(const QString& why);
+    QStringList clearFields();
+    void restoreCurrentField(const QStringList& path);
 
     LiveSession* m_session;
     enum class Kind { None, Ros, Mqtt } m_kind = Kind::None;

@@ -28,7 +28,7 @@ FieldPlotChart::FieldPlotChart(QWidget* parent)
     chart->addAxis(m_y, Qt::AlignLeft);
     chart->legend()->setAlignment(Qt::AlignBottom);
     m_x->setTitleText(tr("seconds"));
-    m_x->setLabelFormat(QStringLiteral("%.0f"));
+    m_x->setLabelFormat(QStringLiteral("%.4g"));
     m_y->setLabelFormat(QStringLiteral("%.4g"));
     m_x->setRange(0, 10);
     m_y->setRange(0, 1);
@@ -72,8 +72,10 @@ void FieldPlotChart::setSeries(const QList<PlotSeries>& series)
     if (left > right)
         return; // no points yet: the axes stay
     m_x->setRange(std::max(left, right - FieldPlotter::kWindowSeconds), std::max(right, left + 10));
-    const double pad = top > bottom ? (top - bottom) * 0.08 : std::max(1.0, std::abs(top) * 0.1);
+    m_x->applyNiceNumbers();
+    const double pad = top > bottom ? (top - bottom) * 0.05 : std::max(1.0, std::abs(top) * 0.1);
     m_y->setRange(bottom - pad, top + pad);
+    m_y->applyNiceNumbers();
 }
 
 void FieldPlotChart::changeEvent(QEvent* event)
