@@ -278,6 +278,8 @@ private slots:
         QVERIFY2(yaml.contains(u"    x: 1.5\n"_s) && yaml.contains(u"frame_id: \"map\""_s), qPrintable(yaml));
         yaml.replace(u"    x: 1.5\n"_s, u"    x: 7.75\n"_s);
         dialog->payloadEdit()->setPlainText(yaml);
+        if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty())
+            dialog->grab().save(dir + u"/publish-dialog.png"_s);
 
         // Retained is set and the broker keeps one: asked first; cancelled, nothing is sent.
         dialog->retainedBox()->setChecked(true);

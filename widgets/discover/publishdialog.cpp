@@ -58,7 +58,9 @@ PublishDialog::PublishDialog(MqttConnection* connection, MqttTopicTree* topics, 
     options->addWidget(m_qos);
     options->addWidget(m_retained);
     options->addStretch(1);
-    form->addRow(tr("&QoS:"), options);
+    auto* qosLabel = new QLabel(tr("&QoS:"), this); // a row of a layout gets no buddy by itself
+    qosLabel->setBuddy(m_qos);
+    form->addRow(qosLabel, options);
     form->addRow(tr("&Format:"), m_format);
     auto* payloadLabel = new QLabel(tr("P&ayload:"), this);
     payloadLabel->setBuddy(m_payload);
