@@ -1264,6 +1264,46 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Turn on $SYS in the connection profile to see the broker&apos;s figures.</source>
         <translation>$SYS im Verbindungsprofil einschalten, um die Kennzahlen des Brokers zu sehen.</translation>
     </message>
+    <message>
+        <source>&amp;Plot Field</source>
+        <translation>Feld &amp;plotten</translation>
+    </message>
+    <message>
+        <source>P&amp;lot</source>
+        <translation>P&amp;lot</translation>
+    </message>
+    <message>
+        <source>Plot the selected numeric field over time (Ctrl+L)</source>
+        <translation>Das gewählte Zahlenfeld über der Zeit plotten (Strg+L)</translation>
+    </message>
+    <message>
+        <source>Stop plotting the selected field (Del in the list)</source>
+        <translation>Das gewählte Feld nicht mehr plotten (Entf in der Liste)</translation>
+    </message>
+    <message>
+        <source>Clear &amp;All</source>
+        <translation>Alle en&amp;tfernen</translation>
+    </message>
+    <message>
+        <source>At most %1 fields are plotted at once.</source>
+        <translation>Höchstens %1 Felder werden gleichzeitig geplottet.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 messages without a value: %3)</source>
+        <translation>%1 (%2 Nachrichten ohne Wert: %3)</translation>
+    </message>
+    <message>
+        <source>Select a number in Fields and press Ctrl+L (or Plot Field in its context menu).</source>
+        <translation>Eine Zahl unter Felder wählen und Strg+L drücken (oder Feld plotten im Kontextmenü).</translation>
+    </message>
+    <message>
+        <source>%1 messages not decoded to keep up (at most %2 per topic and tick are).</source>
+        <translation>%1 Nachrichten nicht dekodiert, um Schritt zu halten (höchstens %2 je Topic und Takt werden es).</translation>
+    </message>
+    <message>
+        <source>Remo&amp;ve</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -1413,6 +1453,48 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>%1 malformed</source>
         <translation>%1 fehlerhaft</translation>
+    </message>
+    <message>
+        <source>&amp;Publish…</source>
+        <translation>&amp;Veröffentlichen…</translation>
+    </message>
+    <message>
+        <source>Publish a message to the selected topic (Ctrl+P)</source>
+        <translation>Eine Nachricht an das gewählte Topic veröffentlichen (Strg+P)</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Retained…</source>
+        <translation>Retained-Nachricht &amp;löschen…</translation>
+    </message>
+    <message>
+        <source>Delete the retained message of the selected topic, or of every topic under a level (Del)</source>
+        <translation>Die Retained-Nachricht des gewählten Topics löschen, oder die aller Topics unter einer Ebene (Entf)</translation>
+    </message>
+    <message>
+        <source>Clear Retained</source>
+        <translation>Retained-Nachricht löschen</translation>
+    </message>
+    <message>
+        <source>No retained message is known at or under %1.</source>
+        <translation>Unter %1 ist keine Retained-Nachricht bekannt.</translation>
+    </message>
+    <message>
+        <source>Clear the retained message of %1? The broker deletes it; new subscribers get nothing until the next retained message.</source>
+        <translation>Die Retained-Nachricht von %1 löschen? Der Broker entfernt sie; neue Abonnenten erhalten nichts bis zur nächsten Retained-Nachricht.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Clear the retained messages of %n topics at or under %1? The broker deletes them all.</source>
+        <translation>
+            <numerusform>Die Retained-Nachricht von %n Topic unter %1 löschen? Der Broker entfernt sie.</numerusform>
+            <numerusform>Die Retained-Nachrichten von %n Topics unter %1 löschen? Der Broker entfernt sie alle.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n retained messages were not cleared: %2</source>
+        <translation>
+            <numerusform>%1 von %n Retained-Nachricht wurde nicht gelöscht: %2</numerusform>
+            <numerusform>%1 von %n Retained-Nachrichten wurden nicht gelöscht: %2</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2243,6 +2325,43 @@ factors:
     <message>
         <source>not an experiment&apos;s state (%1)</source>
         <translation>kein Zustand eines Experiments (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>FieldPath</name>
+    <message>
+        <source>no field %1</source>
+        <translation>kein Feld %1</translation>
+    </message>
+    <message>
+        <source>%1 is no number</source>
+        <translation>%1 ist keine Zahl</translation>
+    </message>
+</context>
+<context>
+    <name>FieldPlotChart</name>
+    <message>
+        <source>seconds</source>
+        <translation>Sekunden</translation>
+    </message>
+</context>
+<context>
+    <name>FieldPlotter</name>
+    <message>
+        <source>the announced type %1 does not read</source>
+        <translation>der angekündigte Typ %1 ist nicht lesbar</translation>
+    </message>
+    <message>
+        <source>the type is not known yet</source>
+        <translation>der Typ ist noch nicht bekannt</translation>
+    </message>
+    <message>
+        <source>a payload of %1 bytes, more than %2 are not plotted</source>
+        <translation>Nutzdaten von %1 Bytes; mehr als %2 werden nicht geplottet</translation>
+    </message>
+    <message>
+        <source>not JSON: %1</source>
+        <translation>kein JSON: %1</translation>
     </message>
 </context>
 <context>
@@ -3681,6 +3800,10 @@ factors:
         <source>TLS failed: %1</source>
         <translation>TLS fehlgeschlagen: %1</translation>
     </message>
+    <message>
+        <source>not connected to the broker</source>
+        <translation>keine Verbindung zum Broker</translation>
+    </message>
 </context>
 <context>
     <name>MqttLink</name>
@@ -4812,6 +4935,123 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
     </message>
 </context>
 <context>
+    <name>PublishDialog</name>
+    <message>
+        <source>&amp;Retained</source>
+        <translation>&amp;Retained</translation>
+    </message>
+    <message>
+        <source>Publish to MQTT</source>
+        <translation>An MQTT veröffentlichen</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>JSON</source>
+        <translation>JSON</translation>
+    </message>
+    <message>
+        <source>ROS message</source>
+        <translation>ROS-Nachricht</translation>
+    </message>
+    <message>
+        <source>&amp;Topic:</source>
+        <translation>&amp;Topic:</translation>
+    </message>
+    <message>
+        <source>&amp;QoS:</source>
+        <translation>&amp;QoS:</translation>
+    </message>
+    <message>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <source>P&amp;ayload:</source>
+        <translation>N&amp;utzdaten:</translation>
+    </message>
+    <message>
+        <source>&amp;Publish</source>
+        <translation>&amp;Veröffentlichen</translation>
+    </message>
+    <message>
+        <source>Publish (Ctrl+Enter)</source>
+        <translation>Veröffentlichen (Strg+Eingabe)</translation>
+    </message>
+    <message>
+        <source>ROS message (%1)</source>
+        <translation>ROS-Nachricht (%1)</translation>
+    </message>
+    <message>
+        <source>%1 as YAML or JSON, sent in ROS serialization as mqtt_client does%2. %3</source>
+        <translation>%1 als YAML oder JSON, gesendet in ROS-Serialisierung wie von mqtt_client%2. %3</translation>
+    </message>
+    <message>
+        <source>, after the send stamp</source>
+        <translation>, nach dem Sendezeitstempel</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Replace the retained message</source>
+        <translation>Retained-Nachricht ersetzen</translation>
+    </message>
+    <message>
+        <source>The broker keeps a retained message for %1. Replace it?</source>
+        <translation>Der Broker hält eine Retained-Nachricht für %1. Ersetzen?</translation>
+    </message>
+    <message>
+        <source>Not sent: the retained message stays.</source>
+        <translation>Nicht gesendet: die Retained-Nachricht bleibt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: published %n bytes to %2.</source>
+        <translation>
+            <numerusform>%1: %n Byte an %2 veröffentlicht.</numerusform>
+            <numerusform>%1: %n Bytes an %2 veröffentlicht.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>PublishPayload</name>
+    <message>
+        <source>not JSON: %1 at character %2</source>
+        <translation>kein JSON: %1 bei Zeichen %2</translation>
+    </message>
+    <message>
+        <source>no ROS type is announced for this topic</source>
+        <translation>für dieses Topic ist kein ROS-Typ angekündigt</translation>
+    </message>
+    <message>
+        <source>not YAML or JSON: %1</source>
+        <translation>kein YAML oder JSON: %1</translation>
+    </message>
+    <message>
+        <source>not a %1: %2</source>
+        <translation>kein %1: %2</translation>
+    </message>
+    <message>
+        <source>Values of the last message.</source>
+        <translation>Werte der letzten Nachricht.</translation>
+    </message>
+    <message>
+        <source>the last message is too large to edit here</source>
+        <translation>die letzte Nachricht ist zu groß, um sie hier zu bearbeiten</translation>
+    </message>
+    <message>
+        <source>no message yet</source>
+        <translation>noch keine Nachricht</translation>
+    </message>
+    <message>
+        <source>Zero values (%1).</source>
+        <translation>Nullwerte (%1).</translation>
+    </message>
+</context>
+<context>
     <name>RateChart</name>
     <message>
         <source>seconds ago</source>
@@ -5638,6 +5878,149 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>the message has %1 bytes, more than the %2 bytes one message may have</source>
         <translation>die Nachricht hat %1 Bytes, mehr als die %2 Bytes, die eine Nachricht haben darf</translation>
+    </message>
+</context>
+<context>
+    <name>RosMessageEncoder</name>
+    <message>
+        <source>a map</source>
+        <translation>eine Map</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>eine Liste</translation>
+    </message>
+    <message>
+        <source>a bool</source>
+        <translation>ein Bool</translation>
+    </message>
+    <message>
+        <source>the text &apos;%1&apos;</source>
+        <translation>der Text &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>more than %1 values: too much for one message</source>
+        <translation>mehr als %1 Werte: zu viel für eine Nachricht</translation>
+    </message>
+    <message>
+        <source>nested deeper than %1 levels</source>
+        <translation>tiefer als %1 Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <source>no definition for &apos;%1&apos;</source>
+        <translation>keine Definition für &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1 is a message and needs a map of its fields, not %2</source>
+        <translation>%1 ist eine Nachricht und braucht eine Map ihrer Felder, nicht %2</translation>
+    </message>
+    <message>
+        <source>%1 has no field &apos;%2&apos;</source>
+        <translation>%1 hat kein Feld &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>an array needs a list, not %1</source>
+        <translation>ein Array braucht eine Liste, nicht %1</translation>
+    </message>
+    <message>
+        <source>has %1 elements, the type fixes %2</source>
+        <translation>hat %1 Elemente, der Typ legt %2 fest</translation>
+    </message>
+    <message>
+        <source>%1 elements: too many for one message</source>
+        <translation>%1 Elemente: zu viele für eine Nachricht</translation>
+    </message>
+    <message>
+        <source>the message would pass %1 bytes</source>
+        <translation>die Nachricht würde %1 Bytes überschreiten</translation>
+    </message>
+    <message>
+        <source>%1 is not a whole number</source>
+        <translation>%1 ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1 is out of range</source>
+        <translation>%1 liegt außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a whole number</source>
+        <translation>&apos;%1&apos; ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>needs a whole number, not %1</source>
+        <translation>braucht eine ganze Zahl, nicht %1</translation>
+    </message>
+    <message>
+        <source>%1%2 does not fit %3 (%4 to %5)</source>
+        <translation>%1%2 passt nicht in %3 (%4 bis %5)</translation>
+    </message>
+    <message>
+        <source>%1%2 does not fit %3 (0 to %4)</source>
+        <translation>%1%2 passt nicht in %3 (0 bis %4)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>needs a number, not %1</source>
+        <translation>braucht eine Zahl, nicht %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not true or false</source>
+        <translation>&apos;%1&apos; ist weder true noch false</translation>
+    </message>
+    <message>
+        <source>%1 is not a bool (0 or 1)</source>
+        <translation>%1 ist kein Bool (0 oder 1)</translation>
+    </message>
+    <message>
+        <source>needs true or false, not %1</source>
+        <translation>braucht true oder false, nicht %1</translation>
+    </message>
+    <message>
+        <source>a time has secs and nsecs, not &apos;%1&apos;</source>
+        <translation>eine Zeit hat secs und nsecs, nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a time in seconds (sec.nsec, at most nine decimals)</source>
+        <translation>&apos;%1&apos; ist keine Zeit in Sekunden (sec.nsec, höchstens neun Nachkommastellen)</translation>
+    </message>
+    <message>
+        <source>%1 seconds is out of range</source>
+        <translation>%1 Sekunden liegen außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>needs a time (sec.nsec), not %1</source>
+        <translation>braucht eine Zeit (sec.nsec), nicht %1</translation>
+    </message>
+    <message>
+        <source>needs text, not %1</source>
+        <translation>braucht Text, nicht %1</translation>
+    </message>
+    <message>
+        <source>%1 does not fit float32</source>
+        <translation>%1 passt nicht in float32</translation>
+    </message>
+    <message>
+        <source>a time must lie between 0 and 4294967295 seconds</source>
+        <translation>eine Zeit muss zwischen 0 und 4294967295 Sekunden liegen</translation>
+    </message>
+    <message>
+        <source>a duration must lie within ±2147483647 seconds</source>
+        <translation>eine Dauer muss innerhalb von ±2147483647 Sekunden liegen</translation>
+    </message>
+    <message>
+        <source>unknown type &apos;%1&apos;</source>
+        <translation>unbekannter Typ &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
@@ -6521,6 +6904,13 @@ Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient oder die Messlauf
     <message>
         <source>Saving in this layout writes the file anew: its comments are not kept.</source>
         <translation>In diesem Layout wird die Datei neu geschrieben: Ihre Kommentare gehen verloren.</translation>
+    </message>
+</context>
+<context>
+    <name>YamlVariant</name>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
     </message>
 </context>
 </TS>

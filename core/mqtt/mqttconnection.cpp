@@ -220,6 +220,9 @@ void MqttConnection::startClient()
     try {
         if (!d->client) {
             mqtt::create_options createOpts(p.mqttVersion == 5 ? MQTTVERSION_5 : MQTTVERSION_3_1_1);
+            // Publications wait in Paho's queue until its thread sends them; its default of 100
+            // refuses a burst (clearing the retained messages of a subtree).
+            createOpts.set_max_buffered_messages(kMaxQueuedPublications);
             d->client = std::make_unique<mqtt::async_client>(p.pahoUri().toStdString(), clientId, createOpts,
                                                              nullptr);
             const std::vector<std::string> filters = [&] {
@@ -379,15 +382,21 @@ int MqttConnection::connects() const
     return d->shared->connects.load();
 }
 
-bool MqttConnection::publish(const QString& topic, const QByteArray& payload, int qos, bool retained)
+bool MqttConnection::publish(const QString& topic, const QByteArray& payload, int qos, bool retained,
+                             QString* error)
 {
-    if (!d->client || !d->client->is_connected())
+    if (!d->client || !d->client->is_connected()) {
+        if (error)
+            *error = tr("not connected to the broker");
         return false;
+    }
     try {
         d->client->publish(topic.toStdString(), payload.constData(), std::size_t(payload.size()), qos,
                            retained);
         return true;
-    } catch (const mqtt::exception&) {
+    } catch (const mqtt::exception& e) {
+        if (error)
+            *error = QString::fromStdString(e.what());
         return false;
     }
 }

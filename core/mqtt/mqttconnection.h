@@ -53,8 +53,12 @@ public:
     quint64 dropped() const; ///< lost because the buffer was full
     int connects() const; ///< successful connects, reconnects included
 
-    /// Publishes without waiting; false if not connected.
-    bool publish(const QString& topic, const QByteArray& payload, int qos = 0, bool retained = false);
+    /// Publications Paho queues before it refuses more.
+    static constexpr int kMaxQueuedPublications = 65535;
+    /// Publishes without waiting (Paho's thread sends it); false, and why, when not connected or
+    /// when Paho's queue is full.
+    bool publish(const QString& topic, const QByteArray& payload, int qos = 0, bool retained = false,
+                 QString* error = nullptr);
 
 signals:
     void stateChanged(MqttConnection::State state, const QString& detail);

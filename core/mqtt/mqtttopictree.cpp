@@ -562,6 +562,22 @@ QStringList MqttTopicTree::topicsBelow(const QString& path, int limit) const
     return out;
 }
 
+bool MqttTopicTree::mayHoldRetained(const QString& topic) const
+{
+    const Node* n = m_byTopic.value(topic);
+    return n && n->retainedMessages > 0 && n->lastSize > 0;
+}
+
+QStringList MqttTopicTree::retainedBelow(const QString& path, int limit) const
+{
+    QStringList out;
+    for (const QString& t : topicsBelow(path, limit)) {
+        if (mayHoldRetained(t))
+            out << t;
+    }
+    return out;
+}
+
 Qt::ItemFlags MqttTopicTree::flags(const QModelIndex& index) const
 {
     Qt::ItemFlags f = QAbstractItemModel::flags(index) | Qt::ItemIsDropEnabled;

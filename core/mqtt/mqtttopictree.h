@@ -84,6 +84,11 @@ public:
     void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
     /// Every topic at or below a level (a topic itself, or all topics of a subtree).
     QStringList topicsBelow(const QString& path, int limit = 1000) const;
+    /// Whether the broker may keep a retained message for the topic: one arrived retained, and
+    /// the last payload is not the empty one that deletes it.
+    bool mayHoldRetained(const QString& topic) const;
+    /// The topics at or below a level that may hold a retained message (see mayHoldRetained()).
+    QStringList retainedBelow(const QString& path, int limit = 100000) const;
     /// Whether a level has levels below it.
     bool hasChildren(const QString& path) const;
     ~MqttTopicTree() override;

@@ -18,6 +18,26 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr qint64 kRateWindowNs = 5'000'000'000LL;
 
+struct Watched
+{
+    std::deque<RosMessageSample> messages;
+    std::size_t maxMessages = 0;
+    qint64 maxBytes = 0;
+    qint64 bytes = 0;
+    quint64 dropped = 0;
+
+    void push(qint64 now, const QByteArray& message)
+    {
+        messages.push_back({now, message});
+        bytes += message.size();
+        while (!messages.empty() && (messages.size() > maxMessages || bytes > maxBytes)) {
+            bytes -= messages.front().bytes.size();
+            messages.pop_front();
+            ++dropped;
+        }
+    }
+};
+
 struct TopicState
 {
     RosMonitorStats stats;
@@ -34,6 +54,7 @@ struct RosMonitor::Private
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
     std::unique_ptr<EventBuffer<RosArrival>> arrivals; ///< set by keepArrivals(), under `mutex`
+    QHash<QString, Watched> watched; ///< under `mutex`
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
     {
@@ -55,6 +76,8 @@ struct RosMonitor::Private
         }
         if (arrivals)
             arrivals->push(RosArrival {topic, now, t.stats.lastSize, bytes.left(RosArrival::kHeadBytes)});
+        if (const auto w = watched.find(topic); w != watched.end())
+            w->push(now, bytes); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
         t.arrivals.emplace_back(now, t.stats.lastSize);
         while (t.arrivals.size() > 20000
@@ -190,6 +213,40 @@ quint64 RosMonitor::droppedArrivals() const
 {
     std::lock_guard<std::mutex> lock(d->mutex);
     return d->arrivals ? d->arrivals->dropped() : 0;
+}
+
+void RosMonitor::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    Watched& w = d->watched[topic];
+    w.maxMessages = maxMessages;
+    w.maxBytes = maxBytes;
+}
+
+void RosMonitor::unwatchMessages(const QString& topic)
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    d->watched.remove(topic);
+}
+
+std::vector<RosMessageSample> RosMonitor::takeMessages(const QString& topic)
+{
+    std::deque<RosMessageSample> taken;
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        const auto w = d->watched.find(topic);
+        if (w == d->watched.end())
+            return {};
+        taken.swap(w->messages);
+        w->bytes = 0;
+    }
+    return {std::make_move_iterator(taken.begin()), std::make_move_iterator(taken.end())};
+}
+
+quint64 RosMonitor::droppedMessages(const QString& topic) const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->watched.value(topic).dropped;
 }
 
 QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const

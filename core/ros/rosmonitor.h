@@ -34,6 +34,13 @@ struct RosArrival
     QByteArray head; ///< the first kHeadBytes bytes (fewer when the message is shorter)
 };
 
+/// One whole message of a watched topic (for plots of its fields).
+struct RosMessageSample
+{
+    qint64 receivedNs = 0; ///< wall clock
+    QByteArray bytes; ///< serialized
+};
+
 /// Generic subscriptions to ROS topics for monitoring (the only code that uses roscpp).
 ///
 /// The process gets one roscpp node, started on first use, registered with the master given
@@ -61,6 +68,14 @@ public:
     /// The messages since the last call, oldest first.
     std::vector<RosArrival> takeArrivals();
     quint64 droppedArrivals() const;
+    /// Keeps the newest whole messages of a monitored topic, at most `maxMessages` and
+    /// `maxBytes` between two takeMessages() (older ones are dropped and counted).
+    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);
+    void unwatchMessages(const QString& topic);
+    /// The watched topic's messages since the last call, oldest first.
+    std::vector<RosMessageSample> takeMessages(const QString& topic);
+    /// Messages of a watched topic dropped because too many came between two takes.
+    quint64 droppedMessages(const QString& topic) const;
 
 signals:
     void monitorFailed(const QString& topic, const QString& why);

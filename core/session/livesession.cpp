@@ -9,6 +9,7 @@
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
 
+#include <algorithm>
 #include <chrono>
 
 LiveSession::LiveSession(QObject* parent)
@@ -61,9 +62,17 @@ void LiveSession::disconnectBroker()
     m_mqtt->close();
 }
 
-void LiveSession::addMqttListener(MqttListener listener)
+int LiveSession::addMqttListener(MqttListener listener)
 {
-    m_listeners.push_back(std::move(listener));
+    m_listeners.emplace_back(m_nextListener, std::move(listener));
+    return m_nextListener++;
+}
+
+void LiveSession::removeMqttListener(int id)
+{
+    m_listeners.erase(
+        std::remove_if(m_listeners.begin(), m_listeners.end(), [id](const auto& l) { return l.first == id; }),
+        m_listeners.end());
 }
 
 void LiveSession::drainNow()
@@ -71,8 +80,8 @@ void LiveSession::drainNow()
     const qint64 now = wallClockNs();
     std::vector<MqttMessage> batch = m_mqtt->takeMessages();
     if (!batch.empty()) {
-        for (const MqttListener& l : m_listeners)
-            l(batch);
+        for (const auto& [id, listener] : m_listeners)
+            listener(batch);
         m_tree->apply(std::move(batch));
     }
     m_tree->tick(now);

@@ -40,7 +40,9 @@ public:
     MqttConnection* mqtt() const { return m_mqtt; }
     MqttTopicTree* mqttTopics() const { return m_tree; }
 
-    void addMqttListener(MqttListener listener);
+    /// Adds a listener for every tick's MQTT batch; the id removes it again.
+    int addMqttListener(MqttListener listener);
+    void removeMqttListener(int id);
     /// Runs one drain now (tests; the timer does it otherwise).
     void drainNow();
     int drainIntervalMs() const { return m_timer.interval(); }
@@ -55,6 +57,7 @@ private:
     RosTopicModel* m_rosTopics;
     MqttConnection* m_mqtt;
     MqttTopicTree* m_tree;
-    std::vector<MqttListener> m_listeners;
+    std::vector<std::pair<int, MqttListener>> m_listeners;
+    int m_nextListener = 1;
     QTimer m_timer;
 };

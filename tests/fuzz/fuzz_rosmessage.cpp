@@ -5,9 +5,12 @@
 // Input: the type name on the first line, the full definition (with "MSG: pkg/Type" dependencies
 // after "===" lines) up to the first NUL byte, then the serialized message. A definition that does
 // not parse is an error with a message; one that parses decodes the bytes within the limits or
-// says why not, and a decoded value prints and finds its fields without crashing.
+// says why not, and a decoded value prints and finds its fields without crashing, and encodes
+// back (RosMessageEncoder) to bytes with the same values.
+#include "base/yamlvariant.h"
 #include "fuzzcheck.h"
 #include "wire/rosmessage.h"
+#include "wire/rosmessageencoder.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -36,6 +39,20 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     for (const RosValue& child : value->children) // find() takes dotted paths: "a.b" is two levels
         if (!child.name.contains(u'.'))
             FUZZ_CHECK(value->find(child.name) != nullptr, "a decoded field that find() does not find");
+
+    // What decodes whole comes back through the YAML a user edits: the encoder takes it, or
+    // says why not (a time past 2106 after normalizing), and its bytes decode to the same values.
+    if (const std::optional<QString> yaml = RosMessageEncoder::toYaml(*value)) {
+        const std::optional<QVariant> tree = YamlVariant::parse(yaml->toUtf8(), &error);
+        FUZZ_CHECK(tree.has_value(), "the encoder's YAML does not parse");
+        error.clear();
+        if (const auto bytes = RosMessageEncoder::encode(registry, type, *tree, &error)) {
+            const auto again = RosMessageDecoder::decode(registry, type, *bytes, &error);
+            FUZZ_CHECK(again && again->toLines() == lines, "encoded values decode differently");
+        } else {
+            FUZZ_CHECK(!error.isEmpty(), "a value refused without a message");
+        }
+    }
 
     // Tight limits take the other branches (cut strings and arrays, shallow nesting).
     RosDecodeLimits tight;

@@ -2,6 +2,7 @@
 // The generic ROS 1 decoder against bytes that roscpp itself serialized and against what the real
 // mqtt_client v2.2.1 put on the broker.
 #include "fixtures.h"
+#include "rosserialize.h"
 #include "wire/mqttclientwire.h"
 #include "wire/rosmessage.h"
 
@@ -9,7 +10,6 @@
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <QtEndian>
 #include <QTest>
-#include <ros/serialization.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -20,15 +20,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-template<typename M> QByteArray serialize(const M& msg)
-{
-    const uint32_t n = ros::serialization::serializationLength(msg);
-    QByteArray out(qsizetype(n), Qt::Uninitialized);
-    ros::serialization::OStream stream(reinterpret_cast<uint8_t*>(out.data()), n);
-    ros::serialization::serialize(stream, msg);
-    return out;
-}
-
 template<typename M> RosValue decode(const M& msg, const RosDecodeLimits& limits = {})
 {
     RosTypeRegistry reg;
@@ -36,7 +27,7 @@ template<typename M> RosValue decode(const M& msg, const RosDecodeLimits& limits
     QString error;
     if (!reg.addDefinition(type, QString::fromLatin1(ros::message_traits::definition<M>()), &error))
         qFatal("definition: %s", qPrintable(error));
-    const auto v = RosMessageDecoder::decode(reg, type, serialize(msg), &error, limits);
+    const auto v = RosMessageDecoder::decode(reg, type, rosSerialize(msg), &error, limits);
     if (!v)
         qFatal("decode: %s", qPrintable(error));
     return *v;

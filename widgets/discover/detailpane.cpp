@@ -4,10 +4,14 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
+#include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "widgets/common/ratechart.h"
+#include "widgets/discover/fieldplotchart.h"
+#include "wire/fieldpath.h"
 #include "wire/rosmessage.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDateTime>
 #include <QFontDatabase>
@@ -16,8 +20,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QListWidget>
 #include <QLocale>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QStandardItemModel>
 #include <QTableWidget>
 #include <QTabWidget>
@@ -32,17 +38,20 @@ QString sizeText(qint64 bytes)
     return QLocale::system().formattedDataSize(bytes, 1, QLocale::DataSizeTraditionalFormat);
 }
 
-QList<QStandardItem*> row(const QString& name, const QString& value, const QString& type)
+QList<QStandardItem*> row(const QString& name, const QString& value, const QString& type,
+                          const QStringList& path = {}, bool numeric = false)
 {
     auto* n = new QStandardItem(name);
     auto* v = new QStandardItem(value);
     auto* t = new QStandardItem(type);
     for (QStandardItem* i : {n, v, t})
         i->setEditable(false);
+    n->setData(path, DetailPane::FieldPathRole);
+    n->setData(numeric, DetailPane::NumericRole);
     return {n, v, t};
 }
 
-void addValue(QStandardItem* parent, const RosValue& value)
+void addValue(QStandardItem* parent, const RosValue& value, const QStringList& parentPath)
 {
     QString text;
     if (value.kind == RosValue::Scalar)
@@ -56,25 +65,28 @@ void addValue(QStandardItem* parent, const RosValue& value)
                   .arg(value.arrayLength)
                   .arg(value.truncated ? DetailPane::tr(", first %1 shown").arg(value.children.size())
                                        : QString());
-    QList<QStandardItem*> items = row(value.name, text, value.type);
+    const QStringList path = parentPath + QStringList {value.name};
+    QList<QStandardItem*> items = row(value.name, text, value.type, path,
+                                      value.kind == RosValue::Scalar && FieldPath::isNumericType(value.type));
     for (const RosValue& c : value.children)
-        addValue(items.first(), c);
+        addValue(items.first(), c, path);
     parent->appendRow(items);
 }
 
-void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v)
+// `path` is the value's own path: empty for a document's root array, shown as "(root)".
+void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, const QStringList& path)
 {
     QList<QStandardItem*> items;
     if (v.isObject()) {
-        items = row(name, QString(), u"object"_s);
+        items = row(name, QString(), u"object"_s, path);
         const QJsonObject o = v.toObject();
         for (auto it = o.begin(); it != o.end(); ++it)
-            addJson(items.first(), it.key(), it.value());
+            addJson(items.first(), it.key(), it.value(), path + QStringList {it.key()});
     } else if (v.isArray()) {
         const QJsonArray a = v.toArray();
-        items = row(name, DetailPane::tr("%1 elements").arg(a.size()), u"array"_s);
+        items = row(name, DetailPane::tr("%1 elements").arg(a.size()), u"array"_s, path);
         for (int i = 0; i < a.size() && i < 256; ++i)
-            addJson(items.first(), u"[%1]"_s.arg(i), a[i]);
+            addJson(items.first(), u"[%1]"_s.arg(i), a[i], path + QStringList {u"[%1]"_s.arg(i)});
     } else {
         const QString type = v.isString() ? u"string"_s
             : v.isBool()                  ? u"bool"_s
@@ -86,7 +98,7 @@ void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v)
                         : QString::fromUtf8(QJsonDocument(QJsonArray {v}).toJson(QJsonDocument::Compact))
                               .mid(1)
                               .chopped(1),
-                    type);
+                    type, path, !path.isEmpty() && (v.isBool() || v.isDouble()));
     }
     parent->appendRow(items);
 }
@@ -105,6 +117,11 @@ DetailPane::DetailPane(LiveSession* session, QWidget* parent)
     , m_history(new QTableWidget(this))
     , m_rate(new RateChart(this))
     , m_broker(new QTableWidget(this))
+    , m_plotter(new FieldPlotter(session, this))
+    , m_plotChart(new FieldPlotChart(this))
+    , m_plotList(new QListWidget(this))
+    , m_plotNote(new QLabel(this))
+    , m_plotAction(new QAction(tr("&Plot Field"), this))
 {
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
@@ -149,6 +166,7 @@ DetailPane::DetailPane(LiveSession* session, QWidget* parent)
     m_history->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_tabs->addTab(m_history, tr("&History"));
     m_tabs->addTab(m_rate, tr("&Rate"));
+    m_tabs->addTab(createPlotTab(), tr("P&lot"));
 
     m_broker->setColumnCount(2);
     m_broker->setHorizontalHeaderLabels({tr("$SYS topic"), tr("Value")});
@@ -163,7 +181,100 @@ DetailPane::DetailPane(LiveSession* session, QWidget* parent)
     connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
         if (m_tabs->currentWidget() == m_broker)
             refreshBroker();
+        if (m_tabs->currentWidget() == m_plotChart->parentWidget())
+            m_plotChart->setSeries(m_plotter->series());
     });
+}
+
+/// Fields picked in the Fields tab (context menu or Ctrl+L), over time; removable one by one.
+QWidget* DetailPane::createPlotTab()
+{
+    m_plotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    m_plotAction->setShortcutContext(Qt::WidgetShortcut);
+    m_plotAction->setToolTip(tr("Plot the selected numeric field over time (Ctrl+L)"));
+    m_plotAction->setEnabled(false);
+    m_fields->addAction(m_plotAction);
+    m_fields->setContextMenuPolicy(Qt::ActionsContextMenu);
+    connect(m_plotAction, &QAction::triggered, this, [this] { plotField(m_fields->currentIndex()); });
+    connect(m_fields->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex& i) {
+                m_plotAction->setEnabled(i.siblingAtColumn(0).data(NumericRole).toBool());
+            });
+
+    auto* page = new QWidget(this);
+    auto* v = new QVBoxLayout(page);
+    v->setContentsMargins(0, 0, 0, 0);
+    m_plotChart->setObjectName(u"plotChart"_s);
+    v->addWidget(m_plotChart, 1);
+    m_plotList->setObjectName(u"plotList"_s);
+    m_plotList->setMaximumHeight(90);
+    v->addWidget(m_plotList);
+    auto* buttons = new QHBoxLayout;
+    auto* remove = new QPushButton(tr("Remo&ve"), page);
+    remove->setToolTip(tr("Stop plotting the selected field (Del in the list)"));
+    auto* removeKey = new QAction(this);
+    removeKey->setShortcut(QKeySequence::Delete);
+    removeKey->setShortcutContext(Qt::WidgetShortcut);
+    m_plotList->addAction(removeKey);
+    auto* clear = new QPushButton(tr("Clear &All"), page);
+    m_plotNote->setWordWrap(true);
+    buttons->addWidget(m_plotNote, 1);
+    buttons->addWidget(remove);
+    buttons->addWidget(clear);
+    v->addLayout(buttons);
+    const auto removeCurrent = [this] { m_plotter->remove(m_plotList->currentRow()); };
+    connect(remove, &QPushButton::clicked, this, removeCurrent);
+    connect(removeKey, &QAction::triggered, this, removeCurrent);
+    connect(clear, &QPushButton::clicked, m_plotter, &FieldPlotter::clear);
+    connect(m_plotter, &FieldPlotter::updated, this, &DetailPane::showPlots);
+    connect(m_plotter, &FieldPlotter::fieldsChanged, this, &DetailPane::showPlots);
+    showPlots();
+    return page;
+}
+
+bool DetailPane::plotField(const QModelIndex& index)
+{
+    const QModelIndex name = index.siblingAtColumn(0);
+    if (!name.data(NumericRole).toBool() || m_kind == Kind::None)
+        return false;
+    PlotField field;
+    field.source = m_kind == Kind::Ros ? PlotField::Source::Ros : PlotField::Source::Mqtt;
+    field.topic = m_topic;
+    field.path = name.data(FieldPathRole).toStringList();
+    if (!m_plotter->add(field) && m_plotter->indexOf(field) < 0) {
+        m_plotNote->setText(tr("At most %1 fields are plotted at once.").arg(FieldPlotter::kMaxFields));
+        return false;
+    }
+    return true;
+}
+
+/// Once per tick with new points: the chart, and each field's count of errors.
+void DetailPane::showPlots()
+{
+    const QList<PlotSeries>& series = m_plotter->series();
+    if (m_tabs->currentWidget() == m_plotChart->parentWidget() || series.isEmpty())
+        m_plotChart->setSeries(series);
+    if (m_plotList->count() != series.size()) {
+        m_plotList->clear();
+        for (int i = 0; i < series.size(); ++i)
+            m_plotList->addItem(QString());
+    }
+    for (int i = 0; i < series.size(); ++i) {
+        const PlotSeries& s = series[i];
+        QListWidgetItem* item = m_plotList->item(i);
+        item->setText(
+            s.errors ? tr("%1 (%2 messages without a value: %3)").arg(s.label).arg(s.errors).arg(s.lastError)
+                     : s.label);
+    }
+    if (series.isEmpty())
+        m_plotNote->setText(
+            tr("Select a number in Fields and press Ctrl+L (or Plot Field in its context menu)."));
+    else if (m_plotter->skippedMessages())
+        m_plotNote->setText(tr("%1 messages not decoded to keep up (at most %2 per topic and tick are).")
+                                .arg(m_plotter->skippedMessages())
+                                .arg(FieldPlotter::kMessagesPerTick));
+    else
+        m_plotNote->clear();
 }
 
 void DetailPane::showRosTopic(const QString& topic)
@@ -191,18 +302,39 @@ void DetailPane::refresh()
         refreshRos(false);
 }
 
+QStringList DetailPane::clearFields()
+{
+    const QStringList current
+        = m_fields->currentIndex().siblingAtColumn(0).data(FieldPathRole).toStringList();
+    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    return current;
+}
+
+/// The field that was current before a refresh is current again (to plot it, or read on).
+void DetailPane::restoreCurrentField(const QStringList& path)
+{
+    if (path.isEmpty())
+        return;
+    const QModelIndexList found = m_fieldModel->match(m_fieldModel->index(0, 0), FieldPathRole, path, 1,
+                                                      Qt::MatchExactly | Qt::MatchRecursive);
+    if (!found.isEmpty())
+        m_fields->selectionModel()->setCurrentIndex(
+            found.first(), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+}
+
 void DetailPane::showNoFields(const QString& why)
 {
-    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    clearFields();
     m_fieldModel->invisibleRootItem()->appendRow(row(why, QString(), QString()));
 }
 
 void DetailPane::showFields(const RosValue& value)
 {
-    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    const QStringList current = clearFields();
     for (const RosValue& c : value.children)
-        addValue(m_fieldModel->invisibleRootItem(), c);
+        addValue(m_fieldModel->invisibleRootItem(), c, {});
     m_fields->expandToDepth(1);
+    restoreCurrentField(current);
     m_fields->resizeColumnToContents(0);
     m_fields->resizeColumnToContents(1);
 }
@@ -210,16 +342,17 @@ void DetailPane::showFields(const RosValue& value)
 void DetailPane::showJsonFields(const QByteArray& json)
 {
     const QJsonDocument doc = QJsonDocument::fromJson(json);
-    m_fieldModel->removeRows(0, m_fieldModel->rowCount());
+    const QStringList current = clearFields();
     if (doc.isObject()) {
         const QJsonObject o = doc.object();
         for (auto it = o.begin(); it != o.end(); ++it)
-            addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value());
+            addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value(), {it.key()});
     } else {
         addJson(m_fieldModel->invisibleRootItem(), u"(root)"_s,
-                doc.isArray() ? QJsonValue(doc.array()) : QJsonValue());
+                doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(), {});
     }
     m_fields->expandToDepth(1);
+    restoreCurrentField(current);
     m_fields->resizeColumnToContents(0);
 }
 

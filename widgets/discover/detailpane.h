@@ -5,7 +5,11 @@
 
 #include <QWidget>
 
+class FieldPlotChart;
+class FieldPlotter;
 class LiveSession;
+class QAction;
+class QListWidget;
 class QComboBox;
 class QLabel;
 class QPlainTextEdit;
@@ -22,6 +26,11 @@ class DetailPane : public QWidget
 {
     Q_OBJECT
 public:
+    enum FieldRole {
+        FieldPathRole = Qt::UserRole + 1, ///< QStringList: the field's path (FieldPath)
+        NumericRole, ///< bool: the field can be plotted
+    };
+
     explicit DetailPane(LiveSession* session, QWidget* parent = nullptr);
 
     void showRosTopic(const QString& topic);
@@ -34,8 +43,17 @@ public:
     QPlainTextEdit* payloadView() const { return m_payload; }
     QLabel* payloadNote() const { return m_payloadNote; }
     QLabel* title() const { return m_title; }
+    FieldPlotter* plotter() const { return m_plotter; }
+    FieldPlotChart* plotChart() const { return m_plotChart; }
+    QListWidget* plotList() const { return m_plotList; }
+    QAction* plotAction() const { return m_plotAction; }
+    QLabel* plotNote() const { return m_plotNote; }
+    /// Plots the numeric field at `index` of the fields view over time; false if it is none.
+    bool plotField(const QModelIndex& index);
 
 private:
+    QWidget* createPlotTab();
+    void showPlots();
     void refreshMqtt(bool force);
     void refreshRos(bool force);
     void refreshBroker();
@@ -43,6 +61,8 @@ private:
     void showJsonFields(const QByteArray& json);
     void showPayload(const QByteArray& payload);
     void showNoFields(const QString& why);
+    QStringList clearFields();
+    void restoreCurrentField(const QStringList& path);
 
     LiveSession* m_session;
     enum class Kind { None, Ros, Mqtt } m_kind = Kind::None;
@@ -61,4 +81,9 @@ private:
     QTableWidget* m_history;
     RateChart* m_rate;
     QTableWidget* m_broker;
+    FieldPlotter* m_plotter;
+    FieldPlotChart* m_plotChart;
+    QListWidget* m_plotList;
+    QLabel* m_plotNote;
+    QAction* m_plotAction;
 };

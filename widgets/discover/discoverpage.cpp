@@ -10,8 +10,10 @@
 #include "widgets/common/rostopicview.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/discover/detailpane.h"
+#include "widgets/discover/publishdialog.h"
 #include "widgets/tools/mqttprofiledialog.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
@@ -61,6 +63,7 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     v->addLayout(bar);
     v->addWidget(split, 1);
 
+    createMqttActions();
     connectSelection();
     connectSession();
     reloadProfiles(QSettings().value(QLatin1String(kLastProfile)).toString());
@@ -145,6 +148,9 @@ QWidget* DiscoverPage::createMqttPane()
     m_searchPayloads = new QCheckBox(tr("in &payloads too"), mqttBox);
     filterRow->addWidget(m_mqttFilter, 1);
     filterRow->addWidget(m_searchPayloads);
+    auto* publish = new QToolButton(mqttBox);
+    publish->setObjectName(u"publishTool"_s);
+    filterRow->addWidget(publish);
     mv->addLayout(filterRow);
     m_mqttProxy = new MqttTopicFilter(this);
     m_mqttProxy->setSourceModel(m_session->mqttTopics());
@@ -169,6 +175,77 @@ QWidget* DiscoverPage::createMqttPane()
                     m_mqttView->expand(m_mqttProxy->index(r, 0));
             });
     return mqttBox;
+}
+
+/// Publish and clear retained messages: a button, the tree's context menu and keys.
+void DiscoverPage::createMqttActions()
+{
+    m_publishAction = new QAction(tr("&Publish…"), this);
+    m_publishAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_publishAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_publishAction->setToolTip(tr("Publish a message to the selected topic (Ctrl+P)"));
+    connect(m_publishAction, &QAction::triggered, this, &DiscoverPage::openPublishDialog);
+    addAction(m_publishAction);
+    m_clearRetainedAction = new QAction(tr("&Clear Retained…"), this);
+    m_clearRetainedAction->setShortcut(QKeySequence::Delete);
+    m_clearRetainedAction->setShortcutContext(Qt::WidgetShortcut);
+    m_clearRetainedAction->setToolTip(
+        tr("Delete the retained message of the selected topic, or of every topic under a level (Del)"));
+    connect(m_clearRetainedAction, &QAction::triggered, this, &DiscoverPage::clearRetained);
+    m_mqttView->addAction(m_publishAction);
+    m_mqttView->addAction(m_clearRetainedAction);
+    m_mqttView->setContextMenuPolicy(Qt::ActionsContextMenu);
+    findChild<QToolButton*>(u"publishTool"_s)->setDefaultAction(m_publishAction);
+}
+
+PublishDialog* DiscoverPage::openPublishDialog()
+{
+    const QString topic = m_mqttView->currentIndex().data(MqttTopicTree::FullTopicRole).toString();
+    auto* dialog = new PublishDialog(m_session->mqtt(), m_session->mqttTopics(), topic, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    return dialog;
+}
+
+int DiscoverPage::clearRetained()
+{
+    const QModelIndex current = m_mqttView->currentIndex();
+    if (!current.isValid())
+        return 0;
+    const QString path = current.data(MqttTopicTree::FullTopicRole).toString();
+    const QStringList topics = m_session->mqttTopics()->retainedBelow(path);
+    if (topics.isEmpty()) {
+        QMessageBox::information(this, tr("Clear Retained"),
+                                 tr("No retained message is known at or under %1.").arg(path));
+        return 0;
+    }
+    const bool one = topics.size() == 1 && topics.first() == path;
+    QMessageBox ask(QMessageBox::Question, tr("Clear Retained"),
+                    one ? tr("Clear the retained message of %1? The broker deletes it; new subscribers "
+                             "get nothing until the next retained message.")
+                              .arg(path)
+                        : tr("Clear the retained messages of %n topics at or under %1? The broker "
+                             "deletes them all.",
+                             nullptr, int(topics.size()))
+                              .arg(path),
+                    QMessageBox::Yes | QMessageBox::Cancel, this);
+    ask.setObjectName(u"clearRetainedQuestion"_s);
+    ask.setDefaultButton(QMessageBox::Cancel);
+    if (!one)
+        ask.setDetailedText(topics.mid(0, 200).join(u'\n') + (topics.size() > 200 ? u"\n…"_s : QString()));
+    if (ask.exec() != QMessageBox::Yes)
+        return 0;
+    int cleared = 0;
+    QString why;
+    for (const QString& t : topics)
+        cleared += m_session->mqtt()->publish(t, QByteArray(), 0, true, &why) ? 1 : 0;
+    if (cleared < topics.size())
+        QMessageBox::warning(
+            this, tr("Clear Retained"),
+            tr("%1 of %n retained messages were not cleared: %2", nullptr, int(topics.size()))
+                .arg(topics.size() - cleared)
+                .arg(why));
+    return cleared;
 }
 
 /// The detail pane shows the topic selected on either side.

@@ -6,6 +6,8 @@
 #include <QWidget>
 
 class DetailPane;
+class PublishDialog;
+class QAction;
 class LiveSession;
 class MqttTopicFilter;
 class PasswordStore;
@@ -40,6 +42,14 @@ public:
     QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
     QLabel* mqttStatus() const { return m_mqttState; }
     QLabel* rosStatus() const { return m_rosState; }
+    QAction* publishAction() const { return m_publishAction; }
+    QAction* clearRetainedAction() const { return m_clearRetainedAction; }
+
+    /// Opens a publish dialog for the selected MQTT topic (or level), beside the page.
+    PublishDialog* openPublishDialog();
+    /// Clears the retained messages at or below the selected MQTT topic or level after asking;
+    /// how many were cleared.
+    int clearRetained();
 
 signals:
     /// The user entered a master URI (not a program setting one, as the demo does).
@@ -49,6 +59,7 @@ private:
     QLayout* createConnectionBar();
     QWidget* createRosPane();
     QWidget* createMqttPane();
+    void createMqttActions();
     void connectSelection();
     void connectSession();
     void updateRosStatus();
@@ -73,5 +84,7 @@ private:
     QCheckBox* m_searchPayloads;
     MqttTopicFilter* m_mqttProxy;
     QTreeView* m_mqttView;
+    QAction* m_publishAction = nullptr;
+    QAction* m_clearRetainedAction = nullptr;
     DetailPane* m_detail;
 };

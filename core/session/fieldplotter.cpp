@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: MIT
+#include "fieldplotter.h"
+
+#include "mqtt/mqtttopictree.h"
+#include "ros/rosmonitor.h"
+#include "ros/rostopicmodel.h"
+#include "session/livesession.h"
+#include "wire/fieldpath.h"
+#include "wire/rosmessage.h"
+
+#include <algorithm>
+#include <optional>
+#include <QHash>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSet>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+struct Received
+{
+    qint64 receivedNs = 0;
+    QByteArray payload;
+};
+
+/// Up to `keep` of `n` items, evenly spread and always with the newest.
+std::vector<std::size_t> spread(std::size_t n, std::size_t keep)
+{
+    std::vector<std::size_t> out;
+    if (n <= keep) {
+        for (std::size_t i = 0; i < n; ++i)
+            out.push_back(i);
+        return out;
+    }
+    for (std::size_t i = 1; i <= keep; ++i)
+        out.push_back(i * n / keep - 1);
+    return out;
+}
+
+/// A message of one topic, decoded once for all of its plotted fields.
+struct Decoded
+{
+    std::optional<RosValue> ros;
+    QJsonValue json;
+    QString error;
+};
+} // namespace
+
+struct FieldPlotter::Private
+{
+    qint64 originNs = 0;
+    QSet<QString> mqttTopics;
+    QSet<QString> rosTopics;
+    QHash<QString, std::vector<Received>> pendingMqtt;
+    struct RosType
+    {
+        QString md5;
+        std::shared_ptr<RosTypeRegistry> registry;
+        QString type;
+        QString error;
+    };
+    QHash<QString, RosType> rosTypes;
+};
+
+FieldPlotter::FieldPlotter(LiveSession* session, QObject* parent)
+    : QObject(parent)
+    , m_session(session)
+    , d(std::make_unique<Private>())
+{
+    m_listener = session->addMqttListener([this](const std::vector<MqttMessage>& batch) {
+        if (d->mqttTopics.isEmpty())
+            return;
+        for (const MqttMessage& m : batch) {
+            if (d->mqttTopics.contains(m.topic))
+                d->pendingMqtt[m.topic].push_back({m.receivedNs, m.payload}); // shared, not copied
+        }
+    });
+    connect(session, &LiveSession::drained, this, &FieldPlotter::onDrained);
+}
+
+FieldPlotter::~FieldPlotter()
+{
+    if (!m_session)
+        return; // the session went first, and its listeners with it
+    m_session->removeMqttListener(m_listener);
+    for (const QString& topic : std::as_const(d->rosTopics))
+        m_session->rosMonitor()->unwatchMessages(topic);
+}
+
+int FieldPlotter::indexOf(const PlotField& field) const
+{
+    for (int i = 0; i < m_series.size(); ++i) {
+        if (m_series[i].field == field)
+            return i;
+    }
+    return -1;
+}
+
+bool FieldPlotter::add(const PlotField& field)
+{
+    if (indexOf(field) >= 0 || m_series.size() >= kMaxFields || field.path.isEmpty())
+        return false;
+    if (m_series.isEmpty())
+        d->originNs = 0; // set by the first value
+    PlotSeries s;
+    s.field = field;
+    s.label = field.topic + u": "_s + FieldPath::text(field.path);
+    m_series.append(s);
+    if (field.source == PlotField::Source::Mqtt)
+        d->mqttTopics.insert(field.topic);
+    else
+        watchRos(field.topic, true);
+    emit fieldsChanged();
+    return true;
+}
+
+void FieldPlotter::remove(int index)
+{
+    if (index < 0 || index >= m_series.size())
+        return;
+    const PlotField gone = m_series.takeAt(index).field;
+    const bool stillUsed = std::any_of(m_series.cbegin(), m_series.cend(), [&](const PlotSeries& s) {
+        return s.field.source == gone.source && s.field.topic == gone.topic;
+    });
+    if (!stillUsed && gone.source == PlotField::Source::Mqtt) {
+        d->mqttTopics.remove(gone.topic);
+        d->pendingMqtt.remove(gone.topic);
+    } else if (!stillUsed) {
+        watchRos(gone.topic, false);
+    }
+    emit fieldsChanged();
+}
+
+void FieldPlotter::clear()
+{
+    while (!m_series.isEmpty())
+        remove(int(m_series.size()) - 1);
+}
+
+void FieldPlotter::watchRos(const QString& topic, bool on)
+{
+    if (!m_session)
+        return;
+    RosMonitor* monitor = m_session->rosMonitor();
+    if (on && !d->rosTopics.contains(topic)) {
+        // Enough for a few ticks at any rate; the tick decodes at most kMessagesPerTick of them.
+        monitor->watchMessages(topic, 1000, 4 * kBytesPerTick);
+        d->rosTopics.insert(topic);
+    } else if (!on) {
+        monitor->unwatchMessages(topic);
+        d->rosTopics.remove(topic);
+        d->rosTypes.remove(topic);
+    }
+}
+
+void FieldPlotter::onDrained(qint64 nowNs)
+{
+    if (m_series.isEmpty() || !m_session)
+        return;
+    bool changed = false;
+    QHash<QString, std::vector<Received>> pending;
+    pending.swap(d->pendingMqtt);
+    QHash<QString, std::vector<Received>> rosPending;
+    for (const QString& topic : std::as_const(d->rosTopics)) {
+        std::vector<RosMessageSample> taken = m_session->rosMonitor()->takeMessages(topic);
+        std::vector<Received>& into = rosPending[topic];
+        for (RosMessageSample& m : taken)
+            into.push_back({m.receivedNs, std::move(m.bytes)});
+    }
+
+    const auto plotTopic
+        = [&](PlotField::Source source, const QString& topic, std::vector<Received>& messages) {
+              QList<int> fields;
+              int deepest = -1;
+              for (int i = 0; i < m_series.size(); ++i) {
+                  if (m_series[i].field.source == source && m_series[i].field.topic == topic) {
+                      fields << i;
+                      deepest = std::max(deepest, FieldPath::maxIndex(m_series[i].field.path));
+                  }
+              }
+              if (fields.isEmpty() || messages.empty())
+                  return;
+              // How this topic's payloads decode: the ROS type announced (MQTT) or monitored (ROS), else
+              // JSON.
+              std::shared_ptr<const RosTypeRegistry> registry;
+              QString type;
+              bool stamped = false;
+              QString typeError;
+              if (source == PlotField::Source::Mqtt) {
+                  const auto info = m_session->mqttTopics()->info(topic);
+                  if (info && info->rosType) {
+                      registry = m_session->mqttTopics()->registryFor(topic);
+                      type = info->rosType->name;
+                      stamped = info->rosType->stamped;
+                      if (!registry)
+                          typeError = tr("the announced type %1 does not read").arg(type);
+                  }
+              } else {
+                  const RosMonitorStats* stats = m_session->rosTopics()->stats(topic);
+                  Private::RosType& t = d->rosTypes[topic];
+                  if (stats && !stats->type.isEmpty() && t.md5 != stats->md5) {
+                      t.md5 = stats->md5;
+                      t.type = stats->type;
+                      t.registry = std::make_shared<RosTypeRegistry>();
+                      if (!t.registry->addDefinition(stats->type, stats->definition, &t.error))
+                          t.registry.reset();
+                  }
+                  registry = t.registry;
+                  type = t.type;
+                  typeError = registry ? QString()
+                                       : (t.error.isEmpty() ? tr("the type is not known yet") : t.error);
+              }
+              RosDecodeLimits limits;
+              limits.maxArrayElements = std::min(deepest + 1, 4096);
+              limits.maxStringChars = 64;
+              limits.maxBytes = kMaxPayloadBytes;
+              limits.maxSteps = 200'000;
+              limits.maxValues = 20'000;
+
+              const std::vector<std::size_t> chosen = spread(messages.size(), kMessagesPerTick);
+              m_skipped += messages.size() - chosen.size();
+              qint64 bytes = 0;
+              int decodedCount = 0;
+              for (std::size_t index : chosen) {
+                  const Received& m = messages[index];
+                  if (d->originNs == 0)
+                      d->originNs = m.receivedNs; // time 0 is the first value's
+                  Decoded dec;
+                  if (m.payload.size() > kMaxPayloadBytes) {
+                      dec.error = tr("a payload of %1 bytes, more than %2 are not plotted")
+                                      .arg(m.payload.size())
+                                      .arg(kMaxPayloadBytes);
+                  } else if (bytes + m.payload.size() > kBytesPerTick) {
+                      ++m_skipped;
+                      continue;
+                  } else if (!typeError.isEmpty()) {
+                      dec.error = typeError;
+                  } else {
+                      bytes += m.payload.size();
+                      ++decodedCount;
+                      if (registry) {
+                          QByteArray message = m.payload;
+                          if (stamped) {
+                              const auto split = MqttClientWire::splitStamped(message);
+                              message = split ? split->message : QByteArray();
+                          }
+                          dec.ros = RosMessageDecoder::decode(*registry, type, message, &dec.error, limits);
+                      } else {
+                          QJsonParseError parse {};
+                          const QJsonDocument doc = QJsonDocument::fromJson(m.payload, &parse);
+                          if (doc.isObject())
+                              dec.json = doc.object();
+                          else if (doc.isArray())
+                              dec.json = doc.array();
+                          else
+                              dec.error = tr("not JSON: %1").arg(parse.errorString());
+                      }
+                  }
+                  const double x = double(m.receivedNs - d->originNs) / 1e9;
+                  for (int i : std::as_const(fields)) {
+                      PlotSeries& s = m_series[i];
+                      QString why = dec.error;
+                      std::optional<double> y;
+                      if (why.isEmpty())
+                          y = dec.ros ? FieldPath::number(*dec.ros, s.field.path, &why)
+                                      : FieldPath::number(dec.json, s.field.path, &why);
+                      if (y) {
+                          s.points.append(QPointF(x, *y));
+                      } else {
+                          ++s.errors;
+                          s.lastError = why;
+                      }
+                      changed = true;
+                  }
+              }
+              m_mostDecoded = std::max(m_mostDecoded, decodedCount);
+          };
+
+    for (auto it = pending.begin(); it != pending.end(); ++it)
+        plotTopic(PlotField::Source::Mqtt, it.key(), it.value());
+    for (auto it = rosPending.begin(); it != rosPending.end(); ++it)
+        plotTopic(PlotField::Source::Ros, it.key(), it.value());
+
+    // The window: the last kWindowSeconds, at most kMaxPoints per field.
+    if (d->originNs == 0)
+        return;
+    const double cutoff = double(nowNs - d->originNs) / 1e9 - kWindowSeconds;
+    for (PlotSeries& s : m_series) {
+        qsizetype old = 0;
+        while (old < s.points.size() && s.points[old].x() < cutoff)
+            ++old;
+        old = std::max(old, s.points.size() - kMaxPoints);
+        if (old > 0) {
+            s.points.remove(0, old);
+            changed = true;
+        }
+    }
+    if (changed)
+        emit updated();
+}

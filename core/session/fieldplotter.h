@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <QList>
+#include <QObject>
+#include <QPointer>
+#include <QPointF>
+#include <QStringList>
+
+class LiveSession;
+
+/// A numeric field of an MQTT or ROS topic to plot over time.
+struct PlotField
+{
+    enum class Source { Mqtt, Ros };
+    Source source = Source::Mqtt;
+    QString topic;
+    QStringList path; ///< names and "[i]" indices (FieldPath)
+    bool operator==(const PlotField& o) const
+    {
+        return source == o.source && topic == o.topic && path == o.path;
+    }
+};
+
+/// What one plotted field collected.
+struct PlotSeries
+{
+    PlotField field;
+    QString label; ///< "topic: path"
+    QList<QPointF> points; ///< (seconds since the plotter's origin, value), oldest first
+    quint64 errors = 0; ///< messages in which the field was no number, or that did not decode
+    QString lastError;
+};
+
+/// Values of chosen fields over time, from the live session's ticks.
+///
+/// Nothing runs per network message: the MQTT batch of a tick and the ROS monitor's queue of a
+/// watched topic are taken once per drain. Work per tick is bounded: at most kMessagesPerTick
+/// messages per topic are decoded (evenly spread over what came, the rest counted as skipped) and
+/// at most kBytesPerTick bytes; larger payloads are errors. Points are kept for kWindowSeconds,
+/// at most kMaxPoints per field.
+class FieldPlotter : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kMessagesPerTick = 50;
+    static constexpr qint64 kBytesPerTick = 8 * 1024 * 1024;
+    static constexpr qint64 kMaxPayloadBytes = 4 * 1024 * 1024;
+    static constexpr int kMaxPoints = 10000;
+    static constexpr int kWindowSeconds = 60;
+    static constexpr int kMaxFields = 8;
+
+    explicit FieldPlotter(LiveSession* session, QObject* parent = nullptr);
+    ~FieldPlotter() override;
+
+    /// Starts plotting a field; false when it is plotted already or kMaxFields are.
+    bool add(const PlotField& field);
+    void remove(int index);
+    void clear();
+    const QList<PlotSeries>& series() const { return m_series; }
+    int indexOf(const PlotField& field) const;
+    /// Messages of plotted topics that were not decoded to keep a tick's work bounded.
+    quint64 skippedMessages() const { return m_skipped; }
+    /// The most messages decoded for one topic in one tick (never above kMessagesPerTick).
+    int mostDecodedInATick() const { return m_mostDecoded; }
+
+signals:
+    /// Once per tick in which points came or went.
+    void updated();
+    void fieldsChanged();
+
+private:
+    struct Private;
+    void onDrained(qint64 nowNs);
+    void watchRos(const QString& topic, bool on);
+
+    QPointer<LiveSession> m_session;
+    std::unique_ptr<Private> d;
+    QList<PlotSeries> m_series;
+    int m_listener = 0;
+    quint64 m_skipped = 0;
+    int m_mostDecoded = 0;
+};
