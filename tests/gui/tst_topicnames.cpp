@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Names stay told apart: every view of topic names in the window, on the demo lab's graph (a dozen
 // stamp topics that differ only inside their names), shows a different text for every different
-// name, within its column, at 1280x800 and at 1920x1080; Qt's own middle elision does not.
+// name, within its column, at 1280x800 and at 1920x1080; Qt's own middle elision does not. And in
+// the same window on the same lab, a field of a live ROS topic plotted over time (the README's shot).
 #include "app/gui/mainwindow.h"
 #include "config/mappingmodel.h"
 #include "demo/demolab.h"
@@ -12,7 +13,10 @@
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "watch/linkmodel.h"
+#include "session/fieldplotter.h"
 #include "widgets/common/namedelegate.h"
+#include "widgets/discover/detailpane.h"
+#include "widgets/discover/fieldplotchart.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configeditor.h"
@@ -21,6 +25,8 @@
 #include "widgets/measure/measurepage.h"
 
 #include <QHash>
+#include <QSet>
+#include <QTreeView>
 #include <QListView>
 #include <QTableView>
 #include <QTabWidget>
@@ -136,6 +142,57 @@ private slots:
         QTableView* view = m_window->discoverPage()->rosView();
         const QModelIndex index = view->model()->index(0, RosTopicModel::TopicColumn);
         QCOMPARE(index.data(Qt::ToolTipRole).toString(), index.data().toString());
+    }
+
+    // The vehicle bridge's latency topic (std_msgs/Float64, one per stamped message): monitored,
+    // its `data` field picked in the detail pane, plotted as it arrives.
+    void aFieldOfALiveTopicPlotsOverTime()
+    {
+        MainWindow* w = m_window.get();
+        w->resize(1280, 800);
+        w->pages()->setCurrentWidget(w->discoverPage());
+        const QString topic = u"/mqtt_interface_vehicle/latencies/vehicle/object_list"_s;
+        QTableView* view = w->discoverPage()->rosView();
+        const QAbstractItemModel* model = view->model();
+        QModelIndex row;
+        for (int r = 0; r < model->rowCount(); ++r)
+            if (model->index(r, RosTopicModel::TopicColumn).data().toString() == topic)
+                row = model->index(r, RosTopicModel::MonitorColumn);
+        QVERIFY2(row.isValid(), "the demo has no latency topic");
+        QVERIFY(view->model()->setData(row, Qt::Checked, Qt::CheckStateRole));
+        view->setCurrentIndex(row.siblingAtColumn(RosTopicModel::TopicColumn));
+        DetailPane* detail = w->discoverPage()->detail();
+        QTRY_COMPARE(detail->topic(), topic);
+        const auto dataField = [detail]() -> QModelIndex {
+            const QAbstractItemModel* m = detail->fieldsView()->model();
+            for (int r = 0; r < m->rowCount(); ++r)
+                if (m->index(r, 0).data(DetailPane::FieldPathRole).toStringList() == QStringList {u"data"_s})
+                    return m->index(r, 0);
+            return {};
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(dataField().isValid(), 15000);
+        detail->fieldsView()->setCurrentIndex(dataField());
+        detail->plotAction()->trigger(); // as Ctrl+L does
+        const FieldPlotter* plotter = detail->plotter();
+        QCOMPARE(plotter->series().size(), 1);
+        QTRY_VERIFY_WITH_TIMEOUT(plotter->series()[0].points.size() >= 30, 20000);
+        // One point per message at 10 Hz, in time order, each a latency in seconds (mqtt_client's
+        // unit; negative here: the cloud's clock, which stamped the message, is 35 ms ahead).
+        const QList<QPointF>& points = plotter->series()[0].points;
+        QSet<double> distinct;
+        for (int i = 0; i < points.size(); ++i) {
+            QVERIFY2(std::abs(points[i].y()) < 5, qPrintable(QString::number(points[i].y())));
+            if (i > 0)
+                QVERIFY(points[i].x() >= points[i - 1].x());
+            distinct.insert(points[i].y());
+        }
+        QVERIFY(distinct.size() > 5); // measured, not a constant
+        QCOMPARE(plotter->series()[0].errors, 0u);
+        if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
+            detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
+            QTest::qWait(500);
+            w->grab().save(dir + u"/field-plot.png"_s);
+        }
     }
 
     void cleanupTestCase() { m_window.reset(); }

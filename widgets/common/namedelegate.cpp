@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "namedelegate.h"
 
+#include <algorithm>
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QHelpEvent>
@@ -100,6 +101,14 @@ void NameDelegate::paint(QPainter* painter, const QStyleOptionViewItem& option,
     shown.text = shortened(shown);
     const QStyle* style = option.widget ? option.widget->style() : QApplication::style();
     style->drawControl(QStyle::CE_ItemViewItem, &shown, painter, option.widget);
+}
+
+QSize NameDelegate::sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const
+{
+    QSize size = QStyledItemDelegate::sizeHint(option, index);
+    if (!qobject_cast<QTableView*>(m_view))
+        size.setWidth(std::min(size.width(), m_view->viewport()->width()));
+    return size;
 }
 
 bool NameDelegate::helpEvent(QHelpEvent* event, QAbstractItemView* view, const QStyleOptionViewItem& option,

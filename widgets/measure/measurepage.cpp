@@ -165,6 +165,8 @@ QWidget* MeasurePage::createPipelinePane()
     m_seenView->setObjectName(u"stampTopicsView"_s);
     m_seenView->setModel(m_seen);
     NameDelegate::install(m_seenView, 0);
+    m_seenView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // names shorten instead
+    m_seenView->setUniformItemSizes(false);
     m_seenView->setDragEnabled(true);
     m_seenView->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_seenView->setToolTip(tr("Drag a stamp topic into the pipeline, or press Enter to append it"));
