@@ -22,6 +22,8 @@ PACKAGES=(
     # ROS 1 (roscpp, generic subscribers, bags, message headers used by tests)
     libroscpp-dev libtopic-tools-dev librosbag-dev pluginlib-dev ros-core-dev
     libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
+    # ROS 2 on the wire: Fast CDR, the serializer of ROS 2's default RMW, makes the test bytes
+    libfastcdr-dev
     python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-rospy python3-rostopic
     # servers the tests and the demo start
     mosquitto mosquitto-clients

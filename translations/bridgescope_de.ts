@@ -5879,6 +5879,22 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>the message has %1 bytes, more than the %2 bytes one message may have</source>
         <translation>die Nachricht hat %1 Bytes, mehr als die %2 Bytes, die eine Nachricht haben darf</translation>
     </message>
+    <message>
+        <source>padding</source>
+        <translation>Auffüllbytes</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a wstring, which is not decoded</source>
+        <translation>&apos;%1&apos; ist ein wstring, der nicht dekodiert wird</translation>
+    </message>
+    <message>
+        <source>the CDR encapsulation header</source>
+        <translation>den CDR-Kapselungskopf</translation>
+    </message>
+    <message>
+        <source>not plain CDR (encapsulation %1 %2)</source>
+        <translation>kein einfaches CDR (Kapselung %1 %2)</translation>
+    </message>
 </context>
 <context>
     <name>RosMessageEncoder</name>
@@ -6132,6 +6148,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>line %1: field without a name</source>
         <translation>Zeile %1: Feld ohne Namen</translation>
+    </message>
+    <message>
+        <source>line %1: a field name of %2 characters (at most %3)</source>
+        <translation>Zeile %1: ein Feldname mit %2 Zeichen (höchstens %3)</translation>
     </message>
 </context>
 <context>

@@ -28,9 +28,17 @@ QString packageOf(const QString& type)
 }
 
 // Resolves a field's type name as ROS does: builtins stay, "Header" is std_msgs/Header, a bare
-// name belongs to the package of the message that uses it.
-QString resolveType(const QString& name, const QString& package)
+// name belongs to the package of the message that uses it. ROS 2: every message type is
+// pkg/msg/Type, and Header is no shorthand.
+QString resolveType(const QString& name, const QString& package, RosTypeRegistry::Dialect dialect)
 {
+    if (dialect == RosTypeRegistry::Dialect::Ros2) {
+        if (RosTypeRegistry::isBuiltin(name) || name == u"wstring"_s)
+            return name;
+        if (name.contains(u'/'))
+            return RosTypeRegistry::ros2TypeName(name);
+        return package.isEmpty() ? name : package + u"/msg/"_s + name;
+    }
     if (RosTypeRegistry::isBuiltin(name))
         return name;
     if (name == u"Header"_s)
@@ -49,6 +57,7 @@ bool isSeparator(const QString& line)
 /// fixed, no minimum) and left to the decoder's own depth limit, so a hostile chain of 100,000
 /// dependencies cannot exhaust the stack.
 constexpr int kMaxTypeDepth = 64;
+constexpr int kMaxFieldName = 256;
 
 qint64 saturatedAdd(qint64 a, qint64 b)
 {
@@ -66,6 +75,14 @@ qint64 saturatedMul(qint64 a, qint64 b)
 thread_local qint64 t_lastSteps = 0;
 
 } // namespace
+
+QString RosTypeRegistry::ros2TypeName(const QString& name)
+{
+    const QStringList parts = name.split(u'/');
+    if (parts.size() == 2 && !parts[0].isEmpty() && !parts[1].isEmpty())
+        return parts[0] + u"/msg/"_s + parts[1];
+    return name;
+}
 
 bool RosTypeRegistry::isBuiltin(const QString& type)
 {
@@ -89,9 +106,10 @@ int RosTypeRegistry::builtinSize(const QString& type)
 
 bool RosTypeRegistry::addDefinition(const QString& type, const QString& definition, QString* error)
 {
-    QString current = type;
+    const bool ros2 = m_dialect == Dialect::Ros2;
+    QString current = ros2 ? ros2TypeName(type) : type;
     RosMessageType msg;
-    msg.name = type;
+    msg.name = current;
     QHash<QString, RosMessageType> parsed;
     const QStringList lines = definition.split(u'\n');
     for (int i = 0; i < lines.size(); ++i) {
@@ -108,6 +126,8 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
             }
             ++i;
             current = lines[i].trimmed().mid(4).trimmed();
+            if (ros2)
+                current = ros2TypeName(current);
             msg = RosMessageType();
             msg.name = current;
             continue;
@@ -134,23 +154,40 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
         const int bracket = typeToken.indexOf(u'[');
         if (bracket >= 0) {
             field.isArray = true;
-            const QString len = typeToken.mid(bracket + 1, typeToken.size() - bracket - 2);
+            QString len = typeToken.mid(bracket + 1, typeToken.size() - bracket - 2);
+            // ROS 2's bounded sequence (T[<=5]) is a sequence on the wire: its bound is not kept.
+            const bool bounded = ros2 && len.startsWith(u"<="_s);
+            if (bounded)
+                len = len.mid(2);
             // Digits only (no sign, no space), at most a uint32 as on the wire.
             bool ok = std::all_of(len.cbegin(), len.cend(), [](QChar c) { return c >= u'0' && c <= u'9'; });
             const qulonglong fixed = len.isEmpty() || !ok ? 0 : len.toULongLong(&ok);
             ok = ok && fixed <= 0xffffffffULL;
-            field.fixedLength = len.isEmpty() ? -1 : qint64(fixed);
-            if (!ok || !typeToken.endsWith(u']')) {
+            field.fixedLength = len.isEmpty() || bounded ? -1 : qint64(fixed);
+            if (!ok || !typeToken.endsWith(u']') || (bounded && len.isEmpty())) {
                 if (error)
                     *error = tr("line %1: bad array type '%2'").arg(i + 1).arg(typeToken);
                 return false;
             }
             typeToken = typeToken.left(bracket);
         }
-        field.type = resolveType(typeToken, packageOf(current));
+        // ROS 2's bounded string (string<=10): a string on the wire.
+        if (ros2 && (typeToken.startsWith(u"string<="_s) || typeToken.startsWith(u"wstring<="_s)))
+            typeToken = typeToken.left(typeToken.indexOf(u'<'));
+        field.type = resolveType(typeToken, packageOf(current), m_dialect);
         if (field.name.isEmpty()) {
             if (error)
                 *error = tr("line %1: field without a name").arg(i + 1);
+            return false;
+        }
+        // ROS names are identifiers; a hostile one of thousands of characters would also pass
+        // YAML's 1024-character limit for a key when the message is edited (found by fuzzing).
+        if (field.name.size() > kMaxFieldName) {
+            if (error)
+                *error = tr("line %1: a field name of %2 characters (at most %3)")
+                             .arg(i + 1)
+                             .arg(field.name.size())
+                             .arg(kMaxFieldName);
             return false;
         }
         msg.fields.append(field);
@@ -259,6 +296,30 @@ public:
         , m_limits(limits)
     { }
 
+    /// CDR from here on: values aligned to their size from `origin` (where the data after the
+    /// encapsulation header begins), in the given byte order.
+    void useCdr(qsizetype origin, bool bigEndian)
+    {
+        m_cdr = true;
+        m_origin = origin;
+        m_bigEndian = bigEndian;
+    }
+
+    // CDR puts a value of n bytes (n = 2, 4, 8) at a multiple of n from the origin.
+    void align(int n)
+    {
+        if (!m_cdr || n <= 1)
+            return;
+        const qsizetype offset = (m_pos - m_origin) % n;
+        if (offset)
+            need(n - offset, tr("padding"));
+    }
+
+    template<typename T> T number(const uchar* p) const
+    {
+        return m_bigEndian ? qFromBigEndian<T>(p) : qFromLittleEndian<T>(p);
+    }
+
     qsizetype pos() const { return m_pos; }
     qsizetype size() const { return m_size; }
 
@@ -281,8 +342,8 @@ public:
 
     quint32 length(const QString& field)
     {
-        const quint32 n = qFromLittleEndian<quint32>(need(4, field));
-        return n;
+        align(4);
+        return number<quint32>(need(4, field));
     }
 
     QVariant builtin(const QString& type, const QString& field, bool* truncated)
@@ -290,11 +351,16 @@ public:
         if (type == u"string"_s) {
             const quint32 n = length(field);
             const uchar* p = need(qsizetype(n), field);
-            const qsizetype shown = std::min<qsizetype>(n, m_limits.maxStringChars);
-            *truncated = shown < qsizetype(n);
+            // CDR counts the terminating NUL; it is no part of the text.
+            const qsizetype text = m_cdr && n > 0 && p[n - 1] == 0 ? qsizetype(n) - 1 : qsizetype(n);
+            const qsizetype shown = std::min<qsizetype>(text, m_limits.maxStringChars);
+            *truncated = shown < text;
             return exactUtf8(reinterpret_cast<const char*>(p), shown);
         }
         const int size = RosTypeRegistry::builtinSize(type);
+        if (size < 0)
+            fail(tr("unknown type '%1'").arg(type));
+        align(type == u"time"_s || type == u"duration"_s ? 4 : size);
         const uchar* p = need(size, field);
         if (type == u"bool"_s)
             return p[0] != 0;
@@ -303,25 +369,25 @@ public:
         if (type == u"int8"_s || type == u"byte"_s)
             return int(qint8(p[0]));
         if (type == u"uint16"_s)
-            return uint(qFromLittleEndian<quint16>(p));
+            return uint(number<quint16>(p));
         if (type == u"int16"_s)
-            return int(qFromLittleEndian<qint16>(p));
+            return int(number<qint16>(p));
         if (type == u"uint32"_s)
-            return uint(qFromLittleEndian<quint32>(p));
+            return uint(number<quint32>(p));
         if (type == u"int32"_s)
-            return int(qFromLittleEndian<qint32>(p));
+            return int(number<qint32>(p));
         if (type == u"uint64"_s)
-            return qulonglong(qFromLittleEndian<quint64>(p));
+            return qulonglong(number<quint64>(p));
         if (type == u"int64"_s)
-            return qlonglong(qFromLittleEndian<qint64>(p));
+            return qlonglong(number<qint64>(p));
         if (type == u"float32"_s)
-            return double(qFromLittleEndian<float>(p));
+            return double(number<float>(p));
         if (type == u"float64"_s)
-            return qFromLittleEndian<double>(p);
+            return number<double>(p);
         if (type == u"time"_s)
-            return rosTimeText(qFromLittleEndian<quint32>(p), qFromLittleEndian<quint32>(p + 4));
+            return rosTimeText(number<quint32>(p), number<quint32>(p + 4));
         if (type == u"duration"_s)
-            return rosTimeText(qFromLittleEndian<qint32>(p), qFromLittleEndian<qint32>(p + 4));
+            return rosTimeText(number<qint32>(p), number<qint32>(p + 4));
         fail(tr("unknown type '%1'").arg(type));
     }
 
@@ -354,8 +420,11 @@ public:
     {
         if (n == 0)
             return;
-        const qint64 element = m_reg.fixedSize(type);
+        // In CDR only a builtin's size is fixed: a message's padding depends on where it starts.
+        const qint64 element = m_cdr && !RosTypeRegistry::isBuiltin(type) ? -1 : m_reg.fixedSize(type);
         if (element >= 0) {
+            if (m_cdr)
+                align(type == u"time"_s || type == u"duration"_s ? 4 : int(element));
             need(saturatedMul(qint64(n), element), field); // also elements of no bytes: no loop
             return;
         }
@@ -370,11 +439,15 @@ public:
         step();
         if (depth > m_limits.maxDepth)
             fail(tr("nested deeper than %1 levels").arg(m_limits.maxDepth));
-        const qint64 fixed = m_reg.fixedSize(type);
+        const qint64 fixed = m_cdr && !RosTypeRegistry::isBuiltin(type) ? -1 : m_reg.fixedSize(type);
         if (fixed >= 0) {
+            if (m_cdr)
+                align(type == u"time"_s || type == u"duration"_s ? 4 : int(fixed));
             need(fixed, field);
             return;
         }
+        if (type == u"wstring"_s)
+            fail(tr("'%1' is a wstring, which is not decoded").arg(field));
         if (type == u"string"_s) {
             need(qsizetype(length(field)), field);
             return;
@@ -414,6 +487,8 @@ public:
             v.value = builtin(type, name, &v.truncated);
             return v;
         }
+        if (type == u"wstring"_s)
+            fail(tr("'%1' is a wstring, which is not decoded").arg(name));
         const RosMessageType* msg = m_reg.find(type);
         if (!msg)
             fail(tr("no definition for '%1'").arg(type));
@@ -463,31 +538,71 @@ private:
     qsizetype m_size;
     qsizetype m_pos = 0;
     RosDecodeLimits m_limits;
+    bool m_cdr = false;
+    bool m_bigEndian = false;
+    qsizetype m_origin = 0;
     qint64 m_steps = 0;
     qint64 m_values = 0;
 };
 
 } // namespace
 
+namespace {
+std::optional<RosValue> decodeWith(const RosTypeRegistry& registry, const QString& type,
+                                   const QByteArray& data, QString* error, const RosDecodeLimits& limits,
+                                   bool cdr);
+} // namespace
+
 std::optional<RosValue> RosMessageDecoder::decode(const RosTypeRegistry& registry, const QString& type,
                                                   const QByteArray& data, QString* error,
                                                   const RosDecodeLimits& limits)
 {
+    return decodeWith(registry, type, data, error, limits, false);
+}
+
+std::optional<RosValue> RosMessageDecoder::decodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                                     const QByteArray& data, QString* error,
+                                                     const RosDecodeLimits& limits)
+{
+    const QString name
+        = registry.dialect() == RosTypeRegistry::Dialect::Ros2 ? RosTypeRegistry::ros2TypeName(type) : type;
+    return decodeWith(registry, name, data, error, limits, true);
+}
+
+namespace {
+std::optional<RosValue> decodeWith(const RosTypeRegistry& registry, const QString& type,
+                                   const QByteArray& data, QString* error, const RosDecodeLimits& limits,
+                                   bool cdr)
+{
     t_lastSteps = 0;
     if (data.size() > limits.maxBytes) {
         if (error)
-            *error = tr("the message has %1 bytes, more than the %2 bytes one message may have")
+            *error = RosMessageDecoder::tr(
+                         "the message has %1 bytes, more than the %2 bytes one message may have")
                          .arg(data.size())
                          .arg(limits.maxBytes);
         return std::nullopt;
     }
     Reader reader(registry, data, limits);
     try {
+        if (cdr) {
+            // The encapsulation header: 0x00 0x01 little-endian CDR, 0x00 0x00 big-endian; two
+            // bytes of options. XCDR2 and parameter lists are not what ROS 2 sends.
+            const uchar* header = reader.need(4, RosMessageDecoder::tr("the CDR encapsulation header"));
+            if (header[0] != 0 || header[1] > 1)
+                reader.fail(RosMessageDecoder::tr("not plain CDR (encapsulation %1 %2)")
+                                .arg(header[0], 2, 16, QLatin1Char('0'))
+                                .arg(header[1], 2, 16, QLatin1Char('0')));
+            reader.useCdr(4, header[1] == 0);
+        }
         RosValue root = reader.value(QString(), type, 0);
         t_lastSteps = reader.steps();
-        if (reader.pos() != reader.size()) {
+        // CDR writers pad the message to a multiple of 4 bytes.
+        const qsizetype slack = cdr ? std::min<qsizetype>(3, reader.size() - reader.pos()) : 0;
+        if (reader.pos() + slack != reader.size()) {
             if (error)
-                *error = tr("%1 bytes left over after the message").arg(reader.size() - reader.pos());
+                *error = RosMessageDecoder::tr("%1 bytes left over after the message")
+                             .arg(reader.size() - reader.pos());
             return std::nullopt;
         }
         return root;
@@ -498,6 +613,7 @@ std::optional<RosValue> RosMessageDecoder::decode(const RosTypeRegistry& registr
         return std::nullopt;
     }
 }
+} // namespace
 
 qint64 RosMessageDecoder::lastSteps()
 {

@@ -30,10 +30,24 @@ struct RosMessageType
 /// (the main type's fields, then each dependency after a "MSG: pkg/Type" line).
 ///
 /// Needs no roscpp: a definition text is all it needs.
+///
+/// A ROS 2 registry reads ROS 2 `.msg` files instead (one type a definition, as they come from the
+/// interface packages): types are named `pkg/msg/Type` (`pkg/Type` and a bare `Type` of the same
+/// package are normalised to it), `Header` is no shorthand, bounds (`string<=10`, `T[<=5]`) are
+/// kept out of the wire type, default values after the name are ignored, and time is
+/// `builtin_interfaces/msg/Time`, a message like any other.
 class RosTypeRegistry
 {
     Q_DECLARE_TR_FUNCTIONS(RosTypeRegistry)
 public:
+    enum class Dialect { Ros1, Ros2 };
+    explicit RosTypeRegistry(Dialect dialect = Dialect::Ros1)
+        : m_dialect(dialect)
+    { }
+    Dialect dialect() const { return m_dialect; }
+    /// A ROS 2 type name in its registry form: `pkg/Type` and `pkg/msg/Type` give `pkg/msg/Type`.
+    static QString ros2TypeName(const QString& name);
+
     bool addDefinition(const QString& type, const QString& definition, QString* error = nullptr);
     const RosMessageType* find(const QString& type) const;
     bool contains(const QString& type) const { return m_types.contains(type); }
@@ -53,6 +67,7 @@ private:
     qint64 fixedSize(const QString& type, int depth) const;
     qint64 minSize(const QString& type, int depth) const;
 
+    Dialect m_dialect = Dialect::Ros1;
     QHash<QString, RosMessageType> m_types;
     mutable QHash<QString, qint64> m_fixedSizes;
     mutable QHash<QString, qint64> m_minSizes;
@@ -97,6 +112,12 @@ public:
     static std::optional<RosValue> decode(const RosTypeRegistry& registry, const QString& type,
                                           const QByteArray& data, QString* error = nullptr,
                                           const RosDecodeLimits& limits = {});
+    /// Decodes a ROS 2 message as DDS carries it: CDR (XCDR1) after a 4-byte encapsulation header
+    /// (little- or big-endian, as the header says), aligned as CDR aligns, with a ROS 2 registry.
+    /// Same limits and the same error rules as decode().
+    static std::optional<RosValue> decodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                             const QByteArray& data, QString* error = nullptr,
+                                             const RosDecodeLimits& limits = {});
     /// Steps the last decode() on this thread took (for tests of the work bound).
     static qint64 lastSteps();
 };

@@ -483,7 +483,11 @@ struct YamlWriter
     void field(const RosValue& v, const QString& pad, int indent)
     {
         cut = cut || v.truncated;
-        const QString key = pad + keyText(v.name) + u':';
+        // YAML reads a key of at most 1024 characters as written (a quoted control character is
+        // six): a longer one is no map's (found by fuzzing), so the YAML is declined as a whole.
+        const QString name = keyText(v.name);
+        cut = cut || name.toUtf8().size() > 1000; // yaml-cpp counts bytes
+        const QString key = pad + name + u':';
         if (v.kind == RosValue::Scalar) {
             out += key + u' ' + scalarText(v) + u'\n';
         } else if (v.kind == RosValue::Message) {

@@ -6,7 +6,8 @@
 // after "===" lines) up to the first NUL byte, then the serialized message. A definition that does
 // not parse is an error with a message; one that parses decodes the bytes within the limits or
 // says why not, and a decoded value prints and finds its fields without crashing, and encodes
-// back (RosMessageEncoder) to bytes with the same values.
+// back (RosMessageEncoder) to bytes with the same values. The same definition and bytes go
+// through the ROS 2 dialect and the CDR decoder too (a ROS 2 publisher is as hostile).
 #include "base/yamlvariant.h"
 #include "fuzzcheck.h"
 #include "wire/rosmessage.h"
@@ -20,8 +21,20 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QString type = newline < 0 ? definitionText : definitionText.left(newline);
     const QString definition = newline < 0 ? QString() : definitionText.mid(newline + 1);
 
-    RosTypeRegistry registry;
     QString error;
+    RosTypeRegistry ros2(RosTypeRegistry::Dialect::Ros2);
+    if (ros2.addDefinition(type, definition, &error)) {
+        error.clear();
+        if (const auto cdr = RosMessageDecoder::decodeCdr(ros2, type, payload, &error))
+            (void)cdr->toLines();
+        else
+            FUZZ_CHECK(!error.isEmpty(), "a CDR message rejected without a message");
+    } else {
+        FUZZ_CHECK(!error.isEmpty(), "a ROS 2 definition rejected without a message");
+    }
+    error.clear();
+
+    RosTypeRegistry registry;
     if (!registry.addDefinition(type, definition, &error)) {
         FUZZ_CHECK(!error.isEmpty(), "a definition rejected without a message");
         return 0;
