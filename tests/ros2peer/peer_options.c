@@ -1,0 +1,408 @@
+// SPDX-License-Identifier: MIT
+// Parsing and checking of bs_ros2peer's command line. ROS names follow rmw's validation rules
+// (rmw_validate_full_topic_name, rmw_validate_namespace, rmw_validate_node_name).
+#define _POSIX_C_SOURCE 200809L
+#include "peer_options.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const type_names[PEER_NTYPES] = {
+    "std_msgs/msg/String",
+    "geometry_msgs/msg/PoseStamped",
+    "sensor_msgs/msg/PointCloud2",
+    "bridgescope_test/msg/Opaque",
+};
+
+const char *peer_type_ros_name(enum peer_type type)
+{
+    return (unsigned)type < PEER_NTYPES ? type_names[type] : "?";
+}
+
+void peer_print_usage(FILE *out, const char *prog)
+{
+    fprintf(out,
+        "Usage: %s --domain N [options]\n"
+        "A ROS 2 Humble node as rmw_cyclonedds_cpp puts it on the wire (Cyclone DDS, loopback only),\n"
+        "for Bridgescope's interoperability tests.\n"
+        "\n"
+        "  --domain N                 DDS domain id, 0..%u (required)\n"
+        "  --node /NS/NAME | NAME     node namespace and name (default /bs_peer)\n"
+        "  --pub TOPIC:TYPE[:RATE_HZ[:QOS]]   publish (repeatable, up to %u); RATE_HZ default 10\n"
+        "  --sub TOPIC:TYPE[:QOS]     subscribe and print each sample (repeatable, up to %u)\n"
+        "  --count N                  stop each publisher after N samples (default unlimited)\n"
+        "  --duration SEC             exit after SEC seconds (default 30, at most 600)\n"
+        "  --size BYTES               PointCloud2 data and Opaque blob size (default 1024, at most %u)\n"
+        "  --lease-ms MS              participant lease duration (default 2000, 100..3600000)\n"
+        "  --exit-hard                end with _exit(0), deleting nothing (no goodbye on the wire)\n"
+        "  --cdr                      also print the first serialized bytes of each received sample\n"
+        "  --show-discovery           print remote endpoints and the nodes of ros_discovery_info\n"
+        "  --trace FILE               write Cyclone DDS's trace (verbosity finest) to FILE\n"
+        "  --help                     this text\n"
+        "\n"
+        "TYPE: std_msgs/msg/String, geometry_msgs/msg/PoseStamped, sensor_msgs/msg/PointCloud2,\n"
+        "      bridgescope_test/msg/Opaque (uint32 n, uint8[] blob)\n"
+        "QOS:  comma list of reliable|best_effort, volatile|transient_local, depth=N\n"
+        "      (default reliable,volatile,depth=10, as rclcpp's default)\n"
+        "\n"
+        "Output, one line per event: ready | sent TOPIC N | recv TOPIC N SUMMARY | matched TOPIC COUNT\n"
+        "(with --cdr: cdr TOPIC N SIZE HEX...; with --show-discovery: endpoint pub|sub DDS_TOPIC\n"
+        "DDS_TYPE and node NAMESPACE NAME READERS WRITERS).\n"
+        "Exit status: 0 done, 1 DDS error, 2 bad arguments.\n",
+        prog, PEER_MAX_DOMAIN, PEER_MAX_ENDPOINTS, PEER_MAX_ENDPOINTS, PEER_MAX_SIZE);
+}
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+// An unsigned integer in [min, max], digits only.
+static bool parse_u64(const char *s, uint64_t min, uint64_t max, uint64_t *out)
+{
+    if (s == NULL || *s < '0' || *s > '9')
+        return false;
+    errno = 0;
+    char *end = NULL;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno != 0 || *end != '\0' || v < min || v > max)
+        return false;
+    *out = v;
+    return true;
+}
+
+// A finite decimal number in (min, max] (min excluded when open, else included).
+static bool parse_double(const char *s, double min, bool open, double max, double *out)
+{
+    if (s == NULL || *s == '\0')
+        return false;
+    errno = 0;
+    char *end = NULL;
+    double v = strtod(s, &end);
+    if (errno != 0 || *end != '\0' || !isfinite(v) || v > max || v < min || (open && v == min))
+        return false;
+    *out = v;
+    return true;
+}
+
+static bool is_alpha_(char c)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+
+static bool is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+// A node name: [A-Za-z_][A-Za-z0-9_]*.
+static bool valid_node_name(const char *s)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n > PEER_MAX_NAME || !is_alpha_(s[0]))
+        return false;
+    for (size_t i = 1; i < n; i++)
+        if (!is_alpha_(s[i]) && !is_digit(s[i]))
+            return false;
+    return true;
+}
+
+// An absolute ROS name: "/" then tokens of [A-Za-z0-9_] that do not start with a digit, joined by
+// single slashes, no slash at the end. The namespace "/" alone is allowed when root_ok.
+static bool valid_absolute_name(const char *s, bool root_ok)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n > PEER_MAX_NAME || s[0] != '/')
+        return false;
+    if (n == 1)
+        return root_ok;
+    if (s[n - 1] == '/')
+        return false;
+    for (size_t i = 1; i < n; i++) {
+        char c = s[i];
+        if (c == '/') {
+            if (s[i - 1] == '/')
+                return false;
+        } else if (is_digit(c)) {
+            if (s[i - 1] == '/')
+                return false;
+        } else if (!is_alpha_(c)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static bool parse_type(const char *s, enum peer_type *out)
+{
+    for (unsigned i = 0; i < PEER_NTYPES; i++) {
+        if (strcmp(s, type_names[i]) == 0) {
+            *out = (enum peer_type)i;
+            return true;
+        }
+    }
+    return false;
+}
+
+// "reliable,transient_local,depth=5" (any order, each item optional).
+static bool parse_qos(const char *s, struct peer_endpoint *ep, char *err, size_t errlen)
+{
+    char buf[128];
+    if (strlen(s) >= sizeof buf) {
+        set_err(err, errlen, "QoS too long: %s", s);
+        return false;
+    }
+    strcpy(buf, s);
+    char *save = NULL;
+    for (char *item = strtok_r(buf, ",", &save); item != NULL; item = strtok_r(NULL, ",", &save)) {
+        uint64_t depth = 0;
+        if (strcmp(item, "reliable") == 0)
+            ep->reliable = true;
+        else if (strcmp(item, "best_effort") == 0)
+            ep->reliable = false;
+        else if (strcmp(item, "volatile") == 0)
+            ep->transient_local = false;
+        else if (strcmp(item, "transient_local") == 0)
+            ep->transient_local = true;
+        else if (strncmp(item, "depth=", 6) == 0 && parse_u64(item + 6, 1, PEER_MAX_DEPTH, &depth))
+            ep->depth = (int32_t)depth;
+        else {
+            set_err(err, errlen, "bad QoS item '%s' (reliable|best_effort, volatile|transient_local, "
+                    "depth=1..%d)", item, PEER_MAX_DEPTH);
+            return false;
+        }
+    }
+    return true;
+}
+
+// TOPIC:TYPE[:RATE_HZ[:QOS]] for a publisher, TOPIC:TYPE[:QOS] for a subscriber. The topic is
+// kept as given; peer_parse_options makes relative names absolute once the node is known.
+static bool parse_endpoint(const char *arg, bool publisher, struct peer_endpoint *ep, char *err,
+                           size_t errlen)
+{
+    char buf[PEER_MAX_NAME + 256];
+    if (strlen(arg) >= sizeof buf) {
+        set_err(err, errlen, "endpoint too long: %.40s...", arg);
+        return false;
+    }
+    strcpy(buf, arg);
+    char *parts[4] = { NULL, NULL, NULL, NULL };
+    unsigned nparts = 0;
+    char *p = buf;
+    while (p != NULL) {
+        if (nparts == (publisher ? 4u : 3u)) {
+            set_err(err, errlen, "too many ':' in '%s'", arg);
+            return false;
+        }
+        parts[nparts++] = p;
+        char *colon = strchr(p, ':');
+        if (colon != NULL)
+            *colon++ = '\0';
+        p = colon;
+    }
+    if (nparts < 2 || parts[0][0] == '\0') {
+        set_err(err, errlen, "want TOPIC:TYPE%s, got '%s'", publisher ? "[:RATE_HZ[:QOS]]" : "[:QOS]",
+                arg);
+        return false;
+    }
+    memset(ep, 0, sizeof *ep);
+    ep->rate_hz = 10.0;
+    ep->reliable = true;
+    ep->transient_local = false;
+    ep->depth = 10;
+    if (strlen(parts[0]) > PEER_MAX_NAME) {
+        set_err(err, errlen, "topic name longer than %u bytes", PEER_MAX_NAME);
+        return false;
+    }
+    strcpy(ep->topic, parts[0]);
+    if (!parse_type(parts[1], &ep->type)) {
+        set_err(err, errlen, "unknown type '%s' (std_msgs/msg/String, geometry_msgs/msg/PoseStamped, "
+                "sensor_msgs/msg/PointCloud2, bridgescope_test/msg/Opaque)", parts[1]);
+        return false;
+    }
+    const char *qos = NULL;
+    if (publisher) {
+        if (nparts >= 3 && parts[2][0] != '\0' && !parse_double(parts[2], 0.0, true, 1000.0, &ep->rate_hz)) {
+            set_err(err, errlen, "bad rate '%s' (Hz, more than 0, at most 1000)", parts[2]);
+            return false;
+        }
+        qos = nparts >= 4 ? parts[3] : NULL;
+    } else {
+        qos = nparts >= 3 ? parts[2] : NULL;
+    }
+    return qos == NULL || parse_qos(qos, ep, err, errlen);
+}
+
+// "/ns/name" -> namespace "/ns", name "name"; "/name" -> "/", "name"; "name" -> "/", "name".
+static bool parse_node(const char *arg, struct peer_options *o, char *err, size_t errlen)
+{
+    if (strlen(arg) > PEER_MAX_NAME) {
+        set_err(err, errlen, "node name longer than %u bytes", PEER_MAX_NAME);
+        return false;
+    }
+    const char *slash = strrchr(arg, '/');
+    if (slash == NULL) {
+        strcpy(o->node_namespace, "/");
+        strcpy(o->node_name, arg);
+    } else if (arg[0] != '/') {
+        set_err(err, errlen, "node '%s': want /NAMESPACE/NAME or NAME", arg);
+        return false;
+    } else {
+        size_t nslen = (size_t)(slash - arg);
+        if (nslen == 0) {
+            strcpy(o->node_namespace, "/");
+        } else {
+            memcpy(o->node_namespace, arg, nslen);
+            o->node_namespace[nslen] = '\0';
+        }
+        strcpy(o->node_name, slash + 1);
+    }
+    if (!valid_absolute_name(o->node_namespace, true)) {
+        set_err(err, errlen, "bad node namespace '%s'", o->node_namespace);
+        return false;
+    }
+    if (!valid_node_name(o->node_name)) {
+        set_err(err, errlen, "bad node name '%s' ([A-Za-z_][A-Za-z0-9_]*)", o->node_name);
+        return false;
+    }
+    return true;
+}
+
+// Makes a relative topic absolute in the node's namespace and checks it.
+static bool resolve_topic(struct peer_endpoint *ep, const struct peer_options *o, char *err,
+                          size_t errlen)
+{
+    if (ep->topic[0] != '/') {
+        if (ep->topic[0] == '~') {
+            set_err(err, errlen, "private topic names (~) are not supported: %s", ep->topic);
+            return false;
+        }
+        char full[2 * PEER_MAX_NAME + 2];
+        snprintf(full, sizeof full, "%s/%s", strcmp(o->node_namespace, "/") == 0 ? "" : o->node_namespace,
+                 ep->topic);
+        if (strlen(full) > PEER_MAX_NAME) {
+            set_err(err, errlen, "topic name longer than %u bytes: %s", PEER_MAX_NAME, full);
+            return false;
+        }
+        strcpy(ep->topic, full);
+    }
+    if (!valid_absolute_name(ep->topic, false)) {
+        set_err(err, errlen, "bad ROS topic name '%s'", ep->topic);
+        return false;
+    }
+    return true;
+}
+
+enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_options *o, char *err,
+                                          size_t errlen)
+{
+    memset(o, 0, sizeof *o);
+    strcpy(o->node_namespace, "/");
+    strcpy(o->node_name, "bs_peer");
+    o->duration_s = 30.0;
+    o->size = 1024;
+    o->lease_ms = 2000;
+    bool have_domain = false;
+
+    for (int i = 1; i < argc; i++) {
+        const char *opt = argv[i];
+        if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
+            return PEER_PARSE_HELP;
+        if (strcmp(opt, "--exit-hard") == 0) {
+            o->exit_hard = true;
+            continue;
+        }
+        if (strcmp(opt, "--cdr") == 0) {
+            o->cdr = true;
+            continue;
+        }
+        if (strcmp(opt, "--show-discovery") == 0) {
+            o->show_discovery = true;
+            continue;
+        }
+        // Every other option takes a value.
+        static const char *const with_value[] = { "--domain", "--node", "--pub", "--sub", "--count",
+                                                  "--duration", "--size", "--lease-ms", "--trace" };
+        bool known = false;
+        for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+            known = known || strcmp(opt, with_value[k]) == 0;
+        if (!known) {
+            set_err(err, errlen, "unknown option '%s' (see --help)", opt);
+            return PEER_PARSE_ERROR;
+        }
+        if (i + 1 >= argc) {
+            set_err(err, errlen, "%s needs a value", opt);
+            return PEER_PARSE_ERROR;
+        }
+        const char *val = argv[++i];
+        uint64_t u = 0;
+        if (strcmp(opt, "--domain") == 0) {
+            if (!parse_u64(val, 0, PEER_MAX_DOMAIN, &u)) {
+                set_err(err, errlen, "bad --domain '%s' (0..%u)", val, PEER_MAX_DOMAIN);
+                return PEER_PARSE_ERROR;
+            }
+            o->domain = (uint32_t)u;
+            have_domain = true;
+        } else if (strcmp(opt, "--node") == 0) {
+            if (!parse_node(val, o, err, errlen))
+                return PEER_PARSE_ERROR;
+        } else if (strcmp(opt, "--pub") == 0 || strcmp(opt, "--sub") == 0) {
+            bool pub = strcmp(opt, "--pub") == 0;
+            unsigned *n = pub ? &o->npubs : &o->nsubs;
+            if (*n >= PEER_MAX_ENDPOINTS) {
+                set_err(err, errlen, "more than %u %s", PEER_MAX_ENDPOINTS, opt);
+                return PEER_PARSE_ERROR;
+            }
+            if (!parse_endpoint(val, pub, pub ? &o->pubs[*n] : &o->subs[*n], err, errlen))
+                return PEER_PARSE_ERROR;
+            (*n)++;
+        } else if (strcmp(opt, "--count") == 0) {
+            if (!parse_u64(val, 1, UINT32_MAX, &u)) {
+                set_err(err, errlen, "bad --count '%s' (1..%u)", val, UINT32_MAX);
+                return PEER_PARSE_ERROR;
+            }
+            o->count = u;
+        } else if (strcmp(opt, "--duration") == 0) {
+            if (!parse_double(val, 0.0, true, 600.0, &o->duration_s)) {
+                set_err(err, errlen, "bad --duration '%s' (seconds, more than 0, at most 600)", val);
+                return PEER_PARSE_ERROR;
+            }
+        } else if (strcmp(opt, "--size") == 0) {
+            if (!parse_u64(val, 0, PEER_MAX_SIZE, &u)) {
+                set_err(err, errlen, "bad --size '%s' (0..%u bytes)", val, PEER_MAX_SIZE);
+                return PEER_PARSE_ERROR;
+            }
+            o->size = (uint32_t)u;
+        } else if (strcmp(opt, "--lease-ms") == 0) {
+            if (!parse_u64(val, 100, 3600000, &u)) {
+                set_err(err, errlen, "bad --lease-ms '%s' (100..3600000)", val);
+                return PEER_PARSE_ERROR;
+            }
+            o->lease_ms = (uint32_t)u;
+        } else { // --trace
+            // The name goes into Cyclone's XML configuration: no markup characters.
+            if (val[0] == '\0' || strlen(val) > PEER_MAX_PATH || strpbrk(val, "<>&\"'$") != NULL) {
+                set_err(err, errlen, "bad --trace file name");
+                return PEER_PARSE_ERROR;
+            }
+            strcpy(o->trace_file, val);
+        }
+    }
+    if (!have_domain) {
+        set_err(err, errlen, "--domain is required (see --help)");
+        return PEER_PARSE_ERROR;
+    }
+    for (unsigned i = 0; i < o->npubs; i++)
+        if (!resolve_topic(&o->pubs[i], o, err, errlen))
+            return PEER_PARSE_ERROR;
+    for (unsigned i = 0; i < o->nsubs; i++)
+        if (!resolve_topic(&o->subs[i], o, err, errlen))
+            return PEER_PARSE_ERROR;
+    return PEER_PARSE_OK;
+}

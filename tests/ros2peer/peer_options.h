@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// bs_ros2peer's command line: what it may ask for, checked and bounded before any DDS call.
+#ifndef BS_ROS2PEER_OPTIONS_H
+#define BS_ROS2PEER_OPTIONS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#define PEER_MAX_ENDPOINTS 32u                // per kind (--pub, --sub)
+#define PEER_MAX_NAME 200u                    // bytes of a ROS namespace, node or topic name
+#define PEER_MAX_SIZE (4u * 1024u * 1024u)    // --size: PointCloud2 data and Opaque blob bytes
+#define PEER_MAX_DEPTH 10000                  // depth=N of a QoS
+#define PEER_MAX_DOMAIN 232u                  // highest domain id whose ports fit in 16 bits
+#define PEER_MAX_PATH 512u                    // --trace FILE
+
+enum peer_type {
+    PEER_STRING,         // std_msgs/msg/String
+    PEER_POSE_STAMPED,   // geometry_msgs/msg/PoseStamped
+    PEER_POINT_CLOUD2,   // sensor_msgs/msg/PointCloud2
+    PEER_OPAQUE,         // bridgescope_test/msg/Opaque
+    PEER_NTYPES
+};
+
+// One --pub or --sub.
+struct peer_endpoint {
+    char topic[PEER_MAX_NAME + 1];   // fully qualified ROS name ("/chatter")
+    enum peer_type type;
+    double rate_hz;                  // publishers only
+    bool reliable;                   // else best effort
+    bool transient_local;            // else volatile
+    int32_t depth;                   // history keep-last depth
+};
+
+struct peer_options {
+    uint32_t domain;
+    char node_namespace[PEER_MAX_NAME + 1];   // "/" or "/a/b"
+    char node_name[PEER_MAX_NAME + 1];
+    struct peer_endpoint pubs[PEER_MAX_ENDPOINTS];
+    unsigned npubs;
+    struct peer_endpoint subs[PEER_MAX_ENDPOINTS];
+    unsigned nsubs;
+    uint64_t count;          // samples per publisher, 0: unlimited
+    double duration_s;
+    uint32_t size;
+    uint32_t lease_ms;
+    bool exit_hard;
+    bool cdr;                // print each received sample's first serialized bytes
+    bool show_discovery;     // print remote endpoints and ros_discovery_info nodes
+    char trace_file[PEER_MAX_PATH + 1];   // Cyclone DDS trace, "" for none
+};
+
+// "std_msgs/msg/String" and so on.
+const char *peer_type_ros_name(enum peer_type type);
+
+enum peer_parse_result { PEER_PARSE_OK, PEER_PARSE_HELP, PEER_PARSE_ERROR };
+
+// Fills *options from argv. On PEER_PARSE_ERROR, err holds a one-line reason.
+enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_options *options,
+                                          char *err, size_t errlen);
+
+void peer_print_usage(FILE *out, const char *prog);
+
+#endif
