@@ -24,6 +24,9 @@ PACKAGES=(
     libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
     # ROS 2 on the wire: Fast CDR, the serializer of ROS 2's default RMW, makes the test bytes
     libfastcdr-dev
+    # ROS 2 on the wire: Fast DDS, the DDS library core/ros2 is built on, and Cyclone DDS, the
+    # other DDS implementation the test peers (tests/ros2peer) are built on to prove interop
+    libfastrtps-dev cyclonedds-dev cyclonedds-tools
     python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-rospy python3-rostopic
     # servers the tests and the demo start
     mosquitto mosquitto-clients

@@ -5,6 +5,7 @@
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
+#include "ros2/ros2participant.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -47,6 +48,80 @@ public:
         return ros;
     }
 
+    static QJsonArray endpointsJson(const QList<Ros2Endpoint>& endpoints)
+    {
+        QJsonArray list;
+        for (const Ros2Endpoint& e : endpoints) {
+            QJsonObject o;
+            o.insert(u"node"_s, e.node);
+            o.insert(u"gid"_s, QString::fromLatin1(e.gid.toHex()));
+            o.insert(u"reliability"_s,
+                     e.qos.reliability == Ros2Qos::Reliable ? u"reliable"_s : u"best_effort"_s);
+            o.insert(u"durability"_s,
+                     e.qos.durability == Ros2Qos::Volatile             ? u"volatile"_s
+                         : e.qos.durability == Ros2Qos::TransientLocal ? u"transient_local"_s
+                         : e.qos.durability == Ros2Qos::Transient      ? u"transient"_s
+                                                                       : u"persistent"_s);
+            list.append(o);
+        }
+        return list;
+    }
+
+    static QJsonObject ros2Json(const Ros2Participant& participant, const QString& error)
+    {
+        QJsonObject ros2;
+        const Ros2Options options = participant.options();
+        ros2.insert(u"domain"_s, options.domain);
+        ros2.insert(u"localhost_only"_s, options.localhostOnly);
+        if (!error.isEmpty())
+            ros2.insert(u"error"_s, error);
+        const Ros2Graph& g = participant.graph();
+        ros2.insert(u"participants"_s, g.participants);
+        ros2.insert(u"services"_s, g.services);
+        QJsonArray topics;
+        for (const Ros2Topic& t : g.topics) {
+            QJsonObject o;
+            o.insert(u"name"_s, t.name);
+            o.insert(u"type"_s, t.type());
+            if (t.types.size() > 1)
+                o.insert(u"types"_s, QJsonArray::fromStringList(t.types));
+            o.insert(u"publishers"_s, endpointsJson(t.publishers));
+            o.insert(u"subscribers"_s, endpointsJson(t.subscribers));
+            topics.append(o);
+        }
+        ros2.insert(u"topics"_s, topics);
+        QJsonArray nodes;
+        for (const Ros2Node& n : g.nodes) {
+            QJsonObject o;
+            o.insert(u"name"_s, n.name);
+            o.insert(u"publishes"_s, QJsonArray::fromStringList(n.publishes));
+            o.insert(u"subscribes"_s, QJsonArray::fromStringList(n.subscribes));
+            nodes.append(o);
+        }
+        ros2.insert(u"nodes"_s, nodes);
+        if (const quint64 bad = participant.badDiscoveryInfo())
+            ros2.insert(u"unreadable_discovery_info"_s, qint64(bad));
+        return ros2;
+    }
+
+    static void printRos2Text(const Ros2Participant& participant, const QString& error)
+    {
+        const Ros2Graph& g = participant.graph();
+        if (!error.isEmpty()) {
+            out(tr("ROS 2 domain %1: %2").arg(participant.options().domain).arg(error));
+            return;
+        }
+        out(tr("ROS 2 domain %1: participants %2, topics %3, nodes %4")
+                .arg(participant.options().domain)
+                .arg(g.participants)
+                .arg(g.topics.size())
+                .arg(g.nodes.size()));
+        for (const Ros2Topic& t : g.topics)
+            out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type())
+                    .arg(t.publishers.size())
+                    .arg(t.subscribers.size()));
+    }
+
     static QJsonObject mqttJson(const MqttConnection& connection, const MqttTopicTree& tree,
                                 bool everConnected)
     {
@@ -72,17 +147,19 @@ public:
         return mqtt;
     }
 
-    static void printText(const RosGraphPoller& poller, const MqttConnection& connection,
+    static void printText(const RosGraphPoller* poller, const MqttConnection& connection,
                           const MqttTopicTree& tree, bool connected)
     {
-        out(tr("ROS master %1: %2")
-                .arg(poller.masterUri(),
-                     poller.isReachable() ? tr("reachable")
-                                          : tr("unreachable (%1)").arg(poller.lastError())));
-        for (const RosTopicInfo& t : poller.graph().topics)
-            out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type)
-                    .arg(t.publishers.size())
-                    .arg(t.subscribers.size()));
+        if (poller) {
+            out(tr("ROS master %1: %2")
+                    .arg(poller->masterUri(),
+                         poller->isReachable() ? tr("reachable")
+                                               : tr("unreachable (%1)").arg(poller->lastError())));
+            for (const RosTopicInfo& t : poller->graph().topics)
+                out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type)
+                        .arg(t.publishers.size())
+                        .arg(t.subscribers.size()));
+        }
         out(tr("MQTT broker %1: %2")
                 .arg(connection.profile().url,
                      connected ? tr("connected") : tr("not connected (%1)").arg(connection.stateDetail())));
@@ -103,6 +180,9 @@ struct DiscoverRequest
     QString masterUri;
     double seconds = 2;
     bool json = false;
+    bool ros1 = true;
+    bool ros2 = false;
+    Ros2Options ros2Options;
 };
 
 /// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
@@ -119,7 +199,18 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     const QCommandLineOption json(u"json"_s, Discover::tr("Print one JSON document."));
     const QCommandLineOption filter(
         u"filter"_s, Discover::tr("MQTT topic filter to subscribe (default #; repeatable)."), u"FILTER"_s);
-    parser.addOptions({broker, master, seconds, json, filter});
+    const QCommandLineOption ros(
+        u"ros"_s,
+        Discover::tr("Which ROS graph to list: 1 (through the master, the default), 2 (through "
+                     "DDS) or both."),
+        u"1|2|both"_s, u"1"_s);
+    const QCommandLineOption domain(
+        u"ros-domain"_s, Discover::tr("ROS 2 domain id, 0 to 232 (default $ROS_DOMAIN_ID, else 0)."),
+        u"ID"_s);
+    const QCommandLineOption localhost(u"ros-localhost-only"_s,
+                                       Discover::tr("ROS 2 discovery on this host only, over 127.0.0.1 (as "
+                                                    "ROS_LOCALHOST_ONLY=1)."));
+    parser.addOptions({broker, master, seconds, json, filter, ros, domain, localhost});
     QStringList args = arguments;
     args.replace(0, u"bridgescope discover"_s);
     const int parsed = CliOutput::parseCommand(
@@ -145,6 +236,27 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     }
     request->masterUri = parser.value(master);
     request->json = parser.isSet(json);
+    const QString which = parser.value(ros);
+    if (which != u"1"_s && which != u"2"_s && which != u"both"_s) {
+        err(Discover::tr("--ros takes 1, 2 or both, not \"%1\"").arg(which.left(40)));
+        return ExitUsage;
+    }
+    request->ros1 = which != u"2"_s;
+    request->ros2 = which != u"1"_s;
+    QString envError;
+    request->ros2Options = Ros2Options::fromEnvironment(&envError);
+    if (request->ros2 && !envError.isEmpty())
+        err(envError);
+    if (parser.isSet(domain)) {
+        const int id = parser.value(domain).toInt(&ok);
+        if (!ok || id < 0 || id > Ros2Options::kMaxDomain) {
+            err(Discover::tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain));
+            return ExitUsage;
+        }
+        request->ros2Options.domain = id;
+    }
+    if (parser.isSet(localhost))
+        request->ros2Options.localhostOnly = true;
     return -1;
 }
 
@@ -155,13 +267,19 @@ struct Heard
     MqttConnection connection;
     MqttTopicTree tree;
     bool connected = false;
+    Ros2Participant ros2;
+    QString ros2Error;
 };
 
 /// Listens to the master and the broker for the time asked for.
 void listen(const DiscoverRequest& request, Heard* heard)
 {
-    heard->poller.setMasterUri(request.masterUri);
-    heard->poller.start(500);
+    if (request.ros1) {
+        heard->poller.setMasterUri(request.masterUri);
+        heard->poller.start(500);
+    }
+    if (request.ros2 && !heard->ros2.start(request.ros2Options, &heard->ros2Error))
+        heard->ros2Error = heard->ros2Error.isEmpty() ? Discover::tr("no participant") : heard->ros2Error;
     QObject::connect(&heard->connection, &MqttConnection::stateChanged, [heard](MqttConnection::State s) {
         heard->connected = heard->connected || s == MqttConnection::State::Connected;
     });
@@ -185,13 +303,29 @@ int printDiscover(const DiscoverRequest& request, const Heard& heard)
     const bool connected = heard.connected;
     if (request.json) {
         QJsonObject doc;
-        doc.insert(u"ros"_s, Discover::rosJson(poller));
+        if (request.ros1)
+            doc.insert(u"ros"_s, Discover::rosJson(poller));
+        if (request.ros2)
+            doc.insert(u"ros2"_s, Discover::ros2Json(heard.ros2, heard.ros2Error));
         doc.insert(u"mqtt"_s, Discover::mqttJson(connection, tree, connected));
         out(QString::fromUtf8(QJsonDocument(doc).toJson(QJsonDocument::Indented)).trimmed());
     } else {
-        Discover::printText(poller, connection, tree, connected);
+        Discover::printText(request.ros1 ? &poller : nullptr, connection, tree, connected);
+        if (request.ros2)
+            Discover::printRos2Text(heard.ros2, heard.ros2Error);
     }
-    if (!poller.isReachable() && !connected) {
+    const bool ros1Answered = request.ros1 && poller.isReachable();
+    const bool ros2Answered
+        = request.ros2 && heard.ros2Error.isEmpty() && heard.ros2.graph().participants > 0;
+    if (!ros1Answered && !ros2Answered && !connected) {
+        if (request.ros2 && !request.ros1) {
+            err(Discover::tr(
+                    "No ROS 2 participant answered on domain %1 and the MQTT broker (%2) could not be "
+                    "reached.")
+                    .arg(request.ros2Options.domain)
+                    .arg(request.profile.url));
+            return ExitFailed;
+        }
         err(Discover::tr("Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.")
                 .arg(poller.masterUri(), request.profile.url));
         return ExitFailed;

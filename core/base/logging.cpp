@@ -6,6 +6,7 @@
 Q_LOGGING_CATEGORY(lcConfig, "bridgescope.config", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcMqtt, "bridgescope.mqtt", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcRos, "bridgescope.ros", QtInfoMsg)
+Q_LOGGING_CATEGORY(lcRos2, "bridgescope.ros2", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcRecord, "bridgescope.record", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcReport, "bridgescope.report", QtInfoMsg)
 Q_LOGGING_CATEGORY(lcBridge, "bridgescope.bridge", QtInfoMsg)
@@ -19,7 +20,7 @@ QStringList categoryNames()
 {
     QStringList names;
     for (const QLoggingCategory& (*c)() :
-         {lcConfig, lcMqtt, lcRos, lcRecord, lcReport, lcBridge, lcSession, lcDemo})
+         {lcConfig, lcMqtt, lcRos, lcRos2, lcRecord, lcReport, lcBridge, lcSession, lcDemo})
         names << QString::fromLatin1(c().categoryName());
     return names;
 }

@@ -11,6 +11,7 @@
 Q_DECLARE_LOGGING_CATEGORY(lcConfig) ///< bridgescope.config: files read and written
 Q_DECLARE_LOGGING_CATEGORY(lcMqtt) ///< bridgescope.mqtt: connections, reconnects, subscriptions
 Q_DECLARE_LOGGING_CATEGORY(lcRos) ///< bridgescope.ros: the node, the master, subscriptions
+Q_DECLARE_LOGGING_CATEGORY(lcRos2) ///< bridgescope.ros2: the DDS participant, discovery, raw subscriptions
 Q_DECLARE_LOGGING_CATEGORY(lcRecord) ///< bridgescope.record: run files and the recorder
 Q_DECLARE_LOGGING_CATEGORY(lcReport) ///< bridgescope.report: inputs loaded, the bag helper
 Q_DECLARE_LOGGING_CATEGORY(lcBridge) ///< bridgescope.bridge: the reference bridge's mappings

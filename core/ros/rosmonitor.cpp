@@ -2,6 +2,7 @@
 #include "rosmonitor.h"
 
 #include "base/eventbuffer.h"
+#include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
@@ -12,11 +13,11 @@
 #include <QSet>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
+#include <tuple>
 
 using namespace Qt::StringLiterals;
 
 namespace {
-constexpr qint64 kRateWindowNs = 5'000'000'000LL;
 
 struct Watched
 {
@@ -41,7 +42,7 @@ struct Watched
 struct TopicState
 {
     RosMonitorStats stats;
-    std::deque<std::pair<qint64, int>> arrivals; ///< (time, size) within the rate window
+    RateWindow rates;
 };
 } // namespace
 
@@ -79,10 +80,7 @@ struct RosMonitor::Private
         if (const auto w = watched.find(topic); w != watched.end())
             w->push(now, bytes); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
-        t.arrivals.emplace_back(now, t.stats.lastSize);
-        while (t.arrivals.size() > 20000
-               || (!t.arrivals.empty() && now - t.arrivals.front().first > kRateWindowNs))
-            t.arrivals.pop_front();
+        t.rates.add(now, t.stats.lastSize);
     }
 
     // On the node's worker thread.
@@ -255,22 +253,7 @@ QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const
     std::lock_guard<std::mutex> lock(d->mutex);
     for (auto it = d->topics.cbegin(); it != d->topics.cend(); ++it) {
         RosMonitorStats s = it->stats;
-        // Rate as rostopic hz computes it: intervals between the arrivals still in the window.
-        qsizetype n = 0;
-        qint64 first = 0;
-        qint64 bytes = 0;
-        for (const auto& [t, size] : it->arrivals) {
-            if (nowNs - t > kRateWindowNs)
-                continue;
-            if (n == 0)
-                first = t;
-            ++n;
-            bytes += size;
-        }
-        const qint64 span = nowNs - first;
-        s.rateHz = n >= 2 && s.lastNs > first ? double(n - 1) / (double(s.lastNs - first) / 1e9) : 0;
-        s.bytesPerSecond
-            = n >= 1 && span > 0 ? double(bytes) / (double(std::max<qint64>(span, 1000000000LL)) / 1e9) : 0;
+        std::tie(s.rateHz, s.bytesPerSecond) = it->rates.rates(nowNs);
         out.insert(it.key(), s);
     }
     return out;

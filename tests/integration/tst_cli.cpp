@@ -5,6 +5,7 @@
 #include "fixtures.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
+#include "ros2peer.h"
 #include "syntheticrun.h"
 #include "testservers.h"
 
@@ -153,6 +154,61 @@ private slots:
         QCOMPARE(topics[0][u"name"_s].toString(), u"plant/state"_s);
         QCOMPARE(topics[0][u"messages"_s].toInt(), 1);
         QCOMPARE(topics[0][u"retained"_s].toBool(), true);
+    }
+
+    // discover --ros 2: the graph of a ROS 2 domain, read from DDS (a Cyclone DDS node, tests/ros2peer)
+    void discoverListsRos2Graph()
+    {
+        const int domain = Ros2Peer::freeDomain(61, 120);
+        Ros2Peer talker(domain,
+                        {u"--node"_s, u"/lab/talker"_s, u"--pub"_s,
+                         u"/chatter:std_msgs/msg/String:10:best_effort,transient_local"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        const QStringList args {u"discover"_s,
+                                u"--ros"_s,
+                                u"2"_s,
+                                u"--ros-domain"_s,
+                                QString::number(domain),
+                                u"--ros-localhost-only"_s,
+                                u"--broker"_s,
+                                u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()),
+                                u"--seconds"_s,
+                                u"3"_s};
+        const Run r = bridgescope(args + QStringList {u"--json"_s});
+        QCOMPARE(r.exit, 0);
+        const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(!doc.contains(u"ros"_s)); // ROS 1 not asked for
+        const QJsonObject ros2 = doc.value(u"ros2"_s).toObject();
+        QCOMPARE(ros2.value(u"domain"_s).toInt(), domain);
+        QCOMPARE(ros2.value(u"localhost_only"_s).toBool(), true);
+        QVERIFY(ros2.value(u"participants"_s).toInt() >= 1);
+        const QJsonArray topics = ros2.value(u"topics"_s).toArray();
+        QCOMPARE(topics.size(), 1);
+        QCOMPARE(topics[0][u"name"_s].toString(), u"/chatter"_s);
+        QCOMPARE(topics[0][u"type"_s].toString(), u"std_msgs/msg/String"_s);
+        const QJsonArray pubs = topics[0][u"publishers"_s].toArray();
+        QCOMPARE(pubs.size(), 1);
+        QCOMPARE(pubs[0][u"node"_s].toString(), u"/lab/talker"_s);
+        QCOMPARE(pubs[0][u"reliability"_s].toString(), u"best_effort"_s);
+        QCOMPARE(pubs[0][u"durability"_s].toString(), u"transient_local"_s);
+        QCOMPARE(pubs[0][u"gid"_s].toString().size(), 32);
+        QCOMPARE(ros2.value(u"nodes"_s).toArray().at(0)[u"name"_s].toString(), u"/lab/talker"_s);
+
+        const Run text = bridgescope(args);
+        QCOMPARE(text.exit, 0);
+        QVERIFY2(text.out.contains(u"/chatter  std_msgs/msg/String  pubs 1  subs 0"_s), qPrintable(text.out));
+
+        // nobody on the domain and no broker: exit 1, saying so
+        talker.terminate();
+        const Run empty = bridgescope(
+            {u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s,
+             QString::number(Ros2Peer::freeDomain(121, 140)), u"--ros-localhost-only"_s, u"--broker"_s,
+             u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()), u"--seconds"_s, u"1"_s});
+        QCOMPARE(empty.exit, 1);
+        QVERIFY2(empty.err.contains(u"No ROS 2 participant"_s), qPrintable(empty.err));
+        // bad values are usage errors
+        QCOMPARE(bridgescope({u"discover"_s, u"--ros"_s, u"3"_s}).exit, 2);
+        QCOMPARE(bridgescope({u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, u"300"_s}).exit, 2);
     }
 
     void discoverFailsWhenNothingAnswers()

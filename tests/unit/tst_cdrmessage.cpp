@@ -2,13 +2,12 @@
 // ROS 2 messages as DDS carries them: CDR after a 4-byte encapsulation header, aligned as CDR
 // aligns. The bytes come from eProsima Fast CDR, the serializer of ROS 2's default RMW
 // (rmw_fastrtps serializes each member in order with it, as below), in both byte orders, and are
-// decoded with the bundled ROS 2 definitions (resources/ros2).
+// decoded with the bundled ROS 2 definitions (resources/ros2, compiled in as :/ros2).
+#include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
 #include <fastcdr/Cdr.h>
 #include <fastcdr/FastBuffer.h>
-#include <QDirIterator>
-#include <QFile>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -16,24 +15,13 @@ using eprosima::fastcdr::Cdr;
 
 namespace {
 
-/// Every bundled ROS 2 definition, as the application will load them.
+/// Every bundled ROS 2 definition, as the application loads them (from its resources).
 RosTypeRegistry ros2Registry()
 {
-    RosTypeRegistry registry(RosTypeRegistry::Dialect::Ros2);
-    QDirIterator it(QStringLiteral(BRIDGESCOPE_SOURCE_DIR "/resources/ros2"), {u"*.msg"_s}, QDir::Files,
-                    QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString path = it.next();
-        QFile f(path);
-        if (!f.open(QIODevice::ReadOnly))
-            qFatal("cannot read %s", qPrintable(path));
-        // .../<package>/msg/<Type>.msg -> package/msg/Type
-        const QStringList parts = path.split(u'/');
-        const QString type = parts.at(parts.size() - 3) + u"/msg/"_s + parts.last().chopped(4);
-        QString error;
-        if (!registry.addDefinition(type, QString::fromUtf8(f.readAll()), &error))
-            qFatal("%s: %s", qPrintable(path), qPrintable(error));
-    }
+    QStringList errors;
+    RosTypeRegistry registry = Ros2Definitions::registry({}, &errors);
+    if (!errors.isEmpty())
+        qFatal("%s", qPrintable(errors.join(u'\n')));
     return registry;
 }
 

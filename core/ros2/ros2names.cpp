@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+#include "ros2/ros2names.h"
+
+#include <QStringList>
+
+namespace Ros2Names {
+
+TopicKind classifyDdsTopic(const QString& ddsTopic, QString* rosName)
+{
+    auto strip = [&](const QString& suffix) {
+        QString rest = ddsTopic.mid(2);
+        if (!suffix.isEmpty() && rest.endsWith(suffix))
+            rest.chop(suffix.size());
+        return rest;
+    };
+    TopicKind kind = TopicKind::Other;
+    QString name = ddsTopic;
+    if (ddsTopic.startsWith(QLatin1String("rt/")) && ddsTopic.size() > 3) {
+        kind = TopicKind::Topic;
+        name = strip({});
+    } else if (ddsTopic.startsWith(QLatin1String("rq/")) && ddsTopic.size() > 3) {
+        kind = TopicKind::ServiceRequest;
+        name = strip(QStringLiteral("Request"));
+    } else if (ddsTopic.startsWith(QLatin1String("rr/")) && ddsTopic.size() > 3) {
+        kind = TopicKind::ServiceReply;
+        name = strip(QStringLiteral("Reply"));
+    }
+    if (kind != TopicKind::Other && !name.startsWith(QLatin1Char('/')))
+        name.prepend(QLatin1Char('/'));
+    if (rosName)
+        *rosName = name;
+    return kind;
+}
+
+QString ddsTopic(const QString& rosTopic)
+{
+    QString name = rosTopic;
+    while (name.startsWith(QLatin1Char('/')))
+        name.remove(0, 1);
+    return QStringLiteral("rt/") + name;
+}
+
+QString rosType(const QString& ddsType)
+{
+    const QStringList parts = ddsType.split(QStringLiteral("::"));
+    if (parts.size() != 4 || parts[2] != QLatin1String("dds_") || !parts[3].endsWith(QLatin1Char('_'))
+        || parts[0].isEmpty() || parts[1].isEmpty() || parts[3].size() < 2)
+        return ddsType;
+    return parts[0] + QLatin1Char('/') + parts[1] + QLatin1Char('/') + parts[3].chopped(1);
+}
+
+QString ddsType(const QString& rosType)
+{
+    const QStringList parts = rosType.split(QLatin1Char('/'));
+    for (const QString& p : parts)
+        if (p.isEmpty() || p.contains(QLatin1Char(':')))
+            return {};
+    if (parts.size() == 2)
+        return parts[0] + QStringLiteral("::msg::dds_::") + parts[1] + QLatin1Char('_');
+    if (parts.size() == 3)
+        return parts[0] + QStringLiteral("::") + parts[1] + QStringLiteral("::dds_::") + parts[2]
+            + QLatin1Char('_');
+    return {};
+}
+
+} // namespace Ros2Names

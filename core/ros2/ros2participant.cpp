@@ -1,0 +1,553 @@
+// SPDX-License-Identifier: MIT
+#include "ros2/ros2participant.h"
+
+#include "base/logging.h"
+#include "base/ratewindow.h"
+#include "base/wallclock.h"
+#include "ros2/ros2names.h"
+
+#include <atomic>
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/DomainParticipantListener.hpp>
+#include <fastdds/dds/log/Log.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TopicDataType.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
+#include <map>
+#include <mutex>
+#include <QtGlobal>
+#include <set>
+
+using namespace eprosima::fastdds::dds;
+namespace rtps = eprosima::fastrtps::rtps;
+
+Ros2Options Ros2Options::fromEnvironment(QString* error)
+{
+    Ros2Options o;
+    const QString domain = qEnvironmentVariable("ROS_DOMAIN_ID").trimmed();
+    if (!domain.isEmpty()) {
+        bool ok = false;
+        const int d = domain.toInt(&ok);
+        if (ok && d >= 0 && d <= kMaxDomain)
+            o.domain = d;
+        else if (error)
+            *error = QCoreApplication::translate("Ros2Options",
+                                                 "ROS_DOMAIN_ID is \"%1\", not a domain from 0 to %2")
+                         .arg(domain.left(40))
+                         .arg(kMaxDomain);
+    }
+    o.localhostOnly = qEnvironmentVariable("ROS_LOCALHOST_ONLY").trimmed() == QLatin1String("1");
+    return o;
+}
+
+namespace {
+
+constexpr std::size_t kMaxEndpoints = 200'000;
+constexpr int kMaxSampleBytes = 64 * 1024 * 1024;
+
+QByteArray gidBytes(const rtps::GUID_t& guid)
+{
+    QByteArray g(16, '\0');
+    std::copy(guid.guidPrefix.value, guid.guidPrefix.value + 12, g.data());
+    std::copy(guid.entityId.value, guid.entityId.value + 4, g.data() + 12);
+    return g;
+}
+
+QByteArray prefixBytes(const rtps::GuidPrefix_t& prefix)
+{
+    return QByteArray(reinterpret_cast<const char*>(prefix.value), 12);
+}
+
+/// A sample as its CDR bytes, encapsulation header included.
+struct RawSample
+{
+    std::vector<unsigned char> bytes;
+};
+
+/// A type that takes any sample as bytes, whatever its name says (roscpp's ShapeShifter for DDS).
+class RawType : public TopicDataType
+{
+public:
+    explicit RawType(const std::string& name)
+    {
+        setName(name.c_str());
+        m_typeSize = 64; // samples grow as needed: readers use dynamic payloads
+        m_isGetKeyDefined = false;
+        auto_fill_type_object(false);
+        auto_fill_type_information(false);
+    }
+    bool serialize(void* data, rtps::SerializedPayload_t* payload) override
+    {
+        const auto& bytes = static_cast<RawSample*>(data)->bytes;
+        if (bytes.size() < 4 || bytes.size() > payload->max_size)
+            return false;
+        std::copy(bytes.begin(), bytes.end(), payload->data);
+        payload->length = uint32_t(bytes.size());
+        payload->encapsulation = (bytes[1] & 1) ? CDR_LE : CDR_BE;
+        return true;
+    }
+    bool deserialize(rtps::SerializedPayload_t* payload, void* data) override
+    {
+        if (payload->length > uint32_t(kMaxSampleBytes))
+            return false;
+        static_cast<RawSample*>(data)->bytes.assign(payload->data, payload->data + payload->length);
+        return true;
+    }
+    std::function<uint32_t()> getSerializedSizeProvider(void* data) override
+    {
+        return [data] { return uint32_t(static_cast<RawSample*>(data)->bytes.size()); };
+    }
+    void* createData() override { return new RawSample; }
+    void deleteData(void* data) override { delete static_cast<RawSample*>(data); }
+    bool getKey(void*, rtps::InstanceHandle_t*, bool) override { return false; }
+};
+
+Ros2Qos qosOf(const ReliabilityQosPolicy& r, const DurabilityQosPolicy& d)
+{
+    Ros2Qos q;
+    q.reliability = r.kind == RELIABLE_RELIABILITY_QOS ? Ros2Qos::Reliable : Ros2Qos::BestEffort;
+    switch (d.kind) {
+    case VOLATILE_DURABILITY_QOS:
+        q.durability = Ros2Qos::Volatile;
+        break;
+    case TRANSIENT_LOCAL_DURABILITY_QOS:
+        q.durability = Ros2Qos::TransientLocal;
+        break;
+    case TRANSIENT_DURABILITY_QOS:
+        q.durability = Ros2Qos::Transient;
+        break;
+    case PERSISTENT_DURABILITY_QOS:
+        q.durability = Ros2Qos::Persistent;
+        break;
+    }
+    return q;
+}
+
+/// A topic we read, with its own reader and figures (callbacks on Fast DDS's threads).
+struct Reader : public DataReaderListener
+{
+    std::function<void(const RawSample&, const SampleInfo&)> onSample;
+    Topic* topic = nullptr;
+    DataReader* reader = nullptr;
+
+    void on_data_available(DataReader* r) override
+    {
+        RawSample sample;
+        SampleInfo info;
+        // bounded: what is there now, not what keeps coming while we take
+        for (int i = 0; i < 1000 && r->take_next_sample(&sample, &info) == ReturnCode_t::RETCODE_OK; ++i)
+            if (info.valid_data && onSample)
+                onSample(sample, info);
+    }
+    void on_subscription_matched(DataReader*, const SubscriptionMatchedStatus& status) override
+    {
+        matched = status.current_count;
+    }
+    std::atomic<int> matched {0};
+};
+
+} // namespace
+
+struct Ros2Participant::Private : public DomainParticipantListener
+{
+    mutable std::mutex mutex;
+    std::map<QByteArray, Ros2Endpoint> endpoints; ///< ROS topics' writers and readers, by gid
+    std::map<QByteArray, QString> services; ///< service endpoints: gid to service name
+    std::map<QByteArray, Ros2ParticipantInfo> infos; ///< by the announcing participant's prefix
+    std::set<QByteArray> participants; ///< remote participants' prefixes
+    std::set<QByteArray> badInfoFrom;
+    quint64 badInfo = 0;
+    quint64 ignoredEndpoints = 0;
+    QByteArray ownPrefix;
+    std::atomic<bool> dirty {true};
+
+    struct Monitored
+    {
+        std::unique_ptr<Reader> reader;
+        Ros2MonitorStats stats;
+        RateWindow rates;
+    };
+    std::map<QString, Monitored> monitored; ///< under `mutex`
+
+    DomainParticipant* participant = nullptr;
+    Subscriber* subscriber = nullptr;
+    std::unique_ptr<Reader> infoReader;
+
+    void forgetParticipant(const QByteArray& prefix)
+    {
+        participants.erase(prefix);
+        infos.erase(prefix);
+        for (auto* table : {&endpoints})
+            for (auto it = table->begin(); it != table->end();)
+                it = it->first.startsWith(prefix) ? table->erase(it) : std::next(it);
+        for (auto it = services.begin(); it != services.end();)
+            it = it->first.startsWith(prefix) ? services.erase(it) : std::next(it);
+    }
+
+    bool own(const rtps::GUID_t& guid) const { return prefixBytes(guid.guidPrefix) == ownPrefix; }
+
+    void on_participant_discovery(DomainParticipant*, rtps::ParticipantDiscoveryInfo&& info) override
+    {
+        const QByteArray prefix = prefixBytes(info.info.m_guid.guidPrefix);
+        std::lock_guard<std::mutex> lock(mutex);
+        if (prefix == ownPrefix)
+            return;
+        switch (info.status) {
+        case rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT:
+        case rtps::ParticipantDiscoveryInfo::CHANGED_QOS_PARTICIPANT:
+            participants.insert(prefix);
+            break;
+        case rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT:
+        case rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT:
+        default:
+            forgetParticipant(prefix);
+            break;
+        }
+        dirty = true;
+    }
+
+    void endpoint(const rtps::GUID_t& guid, const std::string& ddsTopic, const std::string& ddsType,
+                  const Ros2Qos& qos, bool publisher, bool removed)
+    {
+        if (own(guid))
+            return;
+        const QByteArray gid = gidBytes(guid);
+        std::lock_guard<std::mutex> lock(mutex);
+        dirty = true;
+        if (removed) {
+            endpoints.erase(gid);
+            services.erase(gid);
+            return;
+        }
+        QString name;
+        const auto kind = Ros2Names::classifyDdsTopic(QString::fromStdString(ddsTopic), &name);
+        if (kind == Ros2Names::TopicKind::Other)
+            return;
+        if (endpoints.size() + services.size() >= kMaxEndpoints && !endpoints.count(gid)
+            && !services.count(gid)) {
+            ++ignoredEndpoints;
+            return;
+        }
+        if (kind != Ros2Names::TopicKind::Topic) {
+            services[gid] = name;
+            return;
+        }
+        Ros2Endpoint& e = endpoints[gid];
+        e.gid = gid;
+        e.topic = name;
+        e.type = Ros2Names::rosType(QString::fromStdString(ddsType));
+        e.publisher = publisher;
+        e.qos = qos;
+    }
+
+    void on_publisher_discovery(DomainParticipant*, rtps::WriterDiscoveryInfo&& info) override
+    {
+        const auto& w = info.info;
+        endpoint(w.guid(), w.topicName().to_string(), w.typeName().to_string(),
+                 qosOf(w.m_qos.m_reliability, w.m_qos.m_durability), true,
+                 info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER);
+    }
+
+    void on_subscriber_discovery(DomainParticipant*, rtps::ReaderDiscoveryInfo&& info) override
+    {
+        const auto& r = info.info;
+        endpoint(r.guid(), r.topicName().to_string(), r.typeName().to_string(),
+                 qosOf(r.m_qos.m_reliability, r.m_qos.m_durability), false,
+                 info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
+    }
+
+    void onDiscoveryInfo(const RawSample& sample, const SampleInfo& info)
+    {
+        const QByteArray prefix = prefixBytes(info.sample_identity.writer_guid().guidPrefix);
+        const QByteArray bytes(reinterpret_cast<const char*>(sample.bytes.data()),
+                               qsizetype(sample.bytes.size()));
+        QString error;
+        auto parsed = Ros2DiscoveryInfo::parse(bytes, &error);
+        std::lock_guard<std::mutex> lock(mutex);
+        if (prefix == ownPrefix)
+            return;
+        if (!parsed) {
+            ++badInfo;
+            if (badInfoFrom.insert(prefix).second && badInfoFrom.size() <= 16)
+                qCWarning(lcRos2).noquote()
+                    << "ros_discovery_info from participant" << prefix.toHex() << "not read:" << error;
+            return;
+        }
+        // a participant speaks for itself only: its announcement is kept under its own prefix
+        infos[prefix] = std::move(*parsed);
+        dirty = true;
+    }
+
+    void onSample(const QString& topic, const RawSample& sample)
+    {
+        const qint64 now = wallClockNs();
+        std::lock_guard<std::mutex> lock(mutex);
+        const auto it = monitored.find(topic);
+        if (it == monitored.end())
+            return;
+        Ros2MonitorStats& s = it->second.stats;
+        ++s.messages;
+        s.bytes += sample.bytes.size();
+        s.lastSize = int(sample.bytes.size());
+        s.lastNs = now;
+        s.lastMessage
+            = QByteArray(reinterpret_cast<const char*>(sample.bytes.data()), qsizetype(sample.bytes.size()));
+        it->second.rates.add(now, s.lastSize);
+    }
+
+    Topic* topicFor(const std::string& ddsTopic, const std::string& ddsType)
+    {
+        if (!participant->find_type(ddsType).empty()
+            || TypeSupport(new RawType(ddsType)).register_type(participant) == ReturnCode_t::RETCODE_OK) {
+            if (auto* desc = participant->lookup_topicdescription(ddsTopic)) {
+                auto* t = dynamic_cast<Topic*>(desc);
+                return t && t->get_type_name() == ddsType ? t : nullptr;
+            }
+            return participant->create_topic(ddsTopic, ddsType, TOPIC_QOS_DEFAULT);
+        }
+        return nullptr;
+    }
+
+    void deleteReader(Reader& r)
+    {
+        if (r.reader)
+            subscriber->delete_datareader(r.reader);
+        if (r.topic)
+            participant->delete_topic(r.topic);
+        r.reader = nullptr;
+        r.topic = nullptr;
+    }
+};
+
+Ros2Participant::Ros2Participant(QObject* parent)
+    : QObject(parent)
+{
+    m_timer.setInterval(250);
+    connect(&m_timer, &QTimer::timeout, this, &Ros2Participant::refresh);
+}
+
+Ros2Participant::~Ros2Participant()
+{
+    stop();
+}
+
+bool Ros2Participant::isRunning() const
+{
+    return d && d->participant;
+}
+
+bool Ros2Participant::start(const Ros2Options& options, QString* error)
+{
+    stop();
+    if (options.domain < 0 || options.domain > Ros2Options::kMaxDomain) {
+        if (error)
+            *error = tr("domain %1 is out of range: ROS 2 domains are 0 to %2")
+                         .arg(options.domain)
+                         .arg(Ros2Options::kMaxDomain);
+        return false;
+    }
+    static std::once_flag quiet;
+    std::call_once(quiet, [] { Log::SetVerbosity(Log::Error); });
+
+    m_options = options;
+    d = std::make_shared<Private>();
+    DomainParticipantQos qos = PARTICIPANT_QOS_DEFAULT;
+    qos.name("bridgescope");
+    // as rmw does, so that ROS 2 tools show what we are
+    const std::string enclave = "enclave=/;";
+    qos.user_data().data_vec(std::vector<rtps::octet>(enclave.begin(), enclave.end()));
+    if (options.localhostOnly) {
+        auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
+        udp->interfaceWhiteList.emplace_back("127.0.0.1");
+        udp->maxInitialPeersRange = 32; // participants on this host, found by unicast
+        qos.transport().use_builtin_transports = false;
+        qos.transport().user_transports.push_back(udp);
+        rtps::Locator_t peer;
+        peer.kind = LOCATOR_KIND_UDPv4;
+        eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, 127, 0, 0, 1);
+        qos.wire_protocol().builtin.initialPeersList.push_back(peer);
+    }
+    d->participant = DomainParticipantFactory::get_instance()->create_participant(
+        options.domain, qos, d.get(), StatusMask::none());
+    if (!d->participant) {
+        d.reset();
+        if (error)
+            *error = tr("Fast DDS could not create a participant on domain %1 (no usable network interface "
+                        "or ports?)")
+                         .arg(options.domain);
+        return false;
+    }
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        d->ownPrefix = prefixBytes(d->participant->guid().guidPrefix);
+    }
+    d->subscriber = d->participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+
+    // node names: every participant's ros_discovery_info, kept (transient local) by its writer
+    d->infoReader = std::make_unique<Reader>();
+    Private* p = d.get();
+    d->infoReader->onSample = [p](const RawSample& s, const SampleInfo& i) { p->onDiscoveryInfo(s, i); };
+    d->infoReader->topic
+        = d->topicFor("ros_discovery_info", "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
+    if (d->infoReader->topic && d->subscriber) {
+        DataReaderQos rq = DATAREADER_QOS_DEFAULT;
+        rq.reliability().kind = RELIABLE_RELIABILITY_QOS;
+        rq.durability().kind = TRANSIENT_LOCAL_DURABILITY_QOS;
+        rq.history().kind = KEEP_ALL_HISTORY_QOS;
+        rq.resource_limits().max_samples = 1000;
+        rq.endpoint().history_memory_policy = rtps::DYNAMIC_REUSABLE_MEMORY_MODE;
+        d->infoReader->reader
+            = d->subscriber->create_datareader(d->infoReader->topic, rq, d->infoReader.get());
+    }
+    if (!d->infoReader->reader)
+        qCWarning(lcRos2) << "no reader for ros_discovery_info: topics show without node names";
+    m_timer.start();
+    return true;
+}
+
+void Ros2Participant::stop()
+{
+    m_timer.stop();
+    if (!d)
+        return;
+    if (d->participant) {
+        // readers first, while their listeners still live; then everything else
+        {
+            std::lock_guard<std::mutex> lock(d->mutex);
+            for (auto& [topic, m] : d->monitored)
+                m.reader->onSample = nullptr;
+        }
+        d->participant->delete_contained_entities();
+        DomainParticipantFactory::get_instance()->delete_participant(d->participant);
+        d->participant = nullptr;
+    }
+    d.reset();
+    m_graph = Ros2Graph();
+}
+
+quint64 Ros2Participant::badDiscoveryInfo() const
+{
+    if (!d)
+        return 0;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->badInfo;
+}
+
+void Ros2Participant::refresh()
+{
+    if (!d || !d->dirty.exchange(false))
+        return;
+    QList<Ros2Endpoint> endpoints;
+    QList<Ros2ParticipantInfo> infos;
+    QStringList services;
+    int participants = 0;
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        endpoints.reserve(qsizetype(d->endpoints.size()));
+        for (const auto& [gid, e] : d->endpoints)
+            endpoints.append(e);
+        for (const auto& [prefix, info] : d->infos)
+            if (d->participants.count(prefix))
+                infos.append(info);
+        for (const auto& [gid, name] : d->services)
+            services.append(name);
+        participants = int(d->participants.size());
+    }
+    Ros2Graph graph = Ros2Graph::build(endpoints, infos, participants, services);
+    if (graph == m_graph)
+        return;
+    m_graph = std::move(graph);
+    emit graphChanged(m_graph);
+}
+
+void Ros2Participant::monitor(const QString& topic)
+{
+    if (!d || !d->participant || isMonitored(topic))
+        return;
+    const Ros2Topic* t = m_graph.topic(topic);
+    if (!t || t->types.isEmpty()) {
+        emit monitorFailed(topic,
+                           tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic));
+        return;
+    }
+    const QString type = t->type();
+    QString ddsType = Ros2Names::ddsType(type);
+    if (ddsType.isEmpty())
+        ddsType = type;
+    auto reader = std::make_unique<Reader>();
+    Private* p = d.get();
+    reader->onSample = [p, topic](const RawSample& s, const SampleInfo&) { p->onSample(topic, s); };
+    reader->topic = d->topicFor(Ros2Names::ddsTopic(topic).toStdString(), ddsType.toStdString());
+    if (reader->topic && d->subscriber) {
+        DataReaderQos rq = DATAREADER_QOS_DEFAULT;
+        // best effort and volatile match every publisher
+        rq.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
+        rq.durability().kind = VOLATILE_DURABILITY_QOS;
+        rq.history().kind = KEEP_LAST_HISTORY_QOS;
+        rq.history().depth = 10;
+        rq.endpoint().history_memory_policy = rtps::DYNAMIC_REUSABLE_MEMORY_MODE;
+        {
+            std::lock_guard<std::mutex> lock(d->mutex);
+            auto& m = d->monitored[topic];
+            m.stats.type = type;
+        }
+        reader->reader = d->subscriber->create_datareader(reader->topic, rq, reader.get());
+    }
+    if (!reader->reader) {
+        d->deleteReader(*reader);
+        std::lock_guard<std::mutex> lock(d->mutex);
+        d->monitored.erase(topic);
+        emit monitorFailed(topic, tr("Fast DDS could not subscribe to %1 as %2").arg(topic, type));
+        return;
+    }
+    std::lock_guard<std::mutex> lock(d->mutex);
+    d->monitored[topic].reader = std::move(reader);
+}
+
+void Ros2Participant::unmonitor(const QString& topic)
+{
+    if (!d || !d->participant)
+        return;
+    std::unique_ptr<Reader> reader;
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        const auto it = d->monitored.find(topic);
+        if (it == d->monitored.end())
+            return;
+        reader = std::move(it->second.reader);
+        d->monitored.erase(it);
+    }
+    if (reader)
+        d->deleteReader(*reader); // waits for a callback in flight; onSample then finds no entry
+}
+
+bool Ros2Participant::isMonitored(const QString& topic) const
+{
+    if (!d)
+        return false;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->monitored.count(topic) > 0;
+}
+
+QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
+{
+    QHash<QString, Ros2MonitorStats> out;
+    if (!d)
+        return out;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    for (const auto& [topic, m] : d->monitored) {
+        Ros2MonitorStats s = m.stats;
+        std::tie(s.rateHz, s.bytesPerSecond) = m.rates.rates(nowNs);
+        s.matchedPublishers = m.reader ? m.reader->matched.load() : 0;
+        out.insert(topic, s);
+    }
+    return out;
+}

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "ros2/ros2graph.h"
+
+#include <memory>
+#include <QByteArray>
+#include <QHash>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+/// Figures of one monitored ROS 2 topic, as RosMonitorStats are for ROS 1.
+struct Ros2MonitorStats
+{
+    quint64 messages = 0;
+    quint64 bytes = 0;
+    int lastSize = 0;
+    qint64 lastNs = 0; ///< wall clock of the last sample
+    double rateHz = 0; ///< over the last five seconds
+    double bytesPerSecond = 0;
+    QString type; ///< ROS 2 name
+    int matchedPublishers = 0;
+    QByteArray lastMessage; ///< CDR with its encapsulation header
+};
+
+/// How the participant reaches the graph.
+struct Ros2Options
+{
+    int domain = 0; ///< 0..232, as ROS_DOMAIN_ID
+    /// UDP on 127.0.0.1 only, with unicast discovery of the participants on this host (as
+    /// ROS_LOCALHOST_ONLY=1 does); otherwise every interface, multicast discovery and shared memory.
+    bool localhostOnly = false;
+
+    /// ROS_DOMAIN_ID and ROS_LOCALHOST_ONLY from the environment; `error` says why a set value was
+    /// not taken (then the default stays).
+    static Ros2Options fromEnvironment(QString* error = nullptr);
+    static constexpr int kMaxDomain = 232;
+};
+
+/// A DDS participant that sees a ROS 2 graph on the wire (the only code that uses Fast DDS).
+///
+/// Discovery comes from Fast DDS's listener threads into a table under a lock; the graph is
+/// rebuilt at most every `graphIntervalMs` on the thread that owns this object, and graphChanged()
+/// fires only when it changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes.
+/// Nothing here blocks on the network.
+class Ros2Participant : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Ros2Participant(QObject* parent = nullptr);
+    ~Ros2Participant() override;
+
+    /// Joins the domain; false with `error` when the participant cannot be made (a domain out of
+    /// range, no usable transport).
+    bool start(const Ros2Options& options, QString* error = nullptr);
+    void stop();
+    bool isRunning() const;
+    Ros2Options options() const { return m_options; }
+    void setGraphInterval(int ms) { m_timer.setInterval(ms); }
+
+    const Ros2Graph& graph() const { return m_graph; }
+    /// Samples of ros_discovery_info that could not be read (each also logged once per participant).
+    quint64 badDiscoveryInfo() const;
+
+    /// Subscribes to a topic of the graph as raw samples (best effort, volatile: it matches every
+    /// publisher). Fails with monitorFailed() when the topic has no type yet.
+    void monitor(const QString& topic);
+    void unmonitor(const QString& topic);
+    bool isMonitored(const QString& topic) const;
+    QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
+
+signals:
+    void graphChanged(const Ros2Graph& graph);
+    void monitorFailed(const QString& topic, const QString& why);
+
+private:
+    void refresh();
+
+    struct Private;
+    std::shared_ptr<Private> d;
+    Ros2Options m_options;
+    Ros2Graph m_graph;
+    QTimer m_timer;
+};

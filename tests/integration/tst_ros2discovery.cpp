@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+// ROS 2 on the wire, with no ROS 2 installed: Bridgescope's Fast DDS participant against nodes
+// built on Cyclone DDS (tests/ros2peer) that speak as rmw_cyclonedds_cpp does (REP 2008 names and
+// types, XCDR1, ros_discovery_info). Topics, types, node names, QoS and counts appear and
+// disappear; samples of std_msgs/String, geometry_msgs/PoseStamped and sensor_msgs/PointCloud2
+// decode to what was sent; an unknown type stays raw bytes of the right size.
+#include "base/wallclock.h"
+#include "ros2/ros2participant.h"
+#include "ros2peer.h"
+#include "wire/ros2definitions.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+QString field(const RosValue& v, const QString& path)
+{
+    const RosValue* f = v.find(path);
+    return f ? f->value.toString() : u"<missing %1>"_s.arg(path);
+}
+
+int publishers(const Ros2Participant& p, const QString& topic)
+{
+    const Ros2Topic* t = p.graph().topic(topic);
+    return t ? int(t->publishers.size()) : 0;
+}
+
+int subscribers(const Ros2Participant& p, const QString& topic)
+{
+    const Ros2Topic* t = p.graph().topic(topic);
+    return t ? int(t->subscribers.size()) : 0;
+}
+
+bool hasNode(const Ros2Participant& p, const QString& name)
+{
+    for (const Ros2Node& n : p.graph().nodes)
+        if (n.name == name)
+            return true;
+    return false;
+}
+} // namespace
+
+class TestRos2Discovery : public QObject
+{
+    Q_OBJECT
+    int m_domain = 0;
+    static constexpr int kCloudBytes = 64 * 1024;
+
+private slots:
+    void initTestCase() { m_domain = Ros2Peer::freeDomain(1, 60); }
+
+    void refusesBadDomain()
+    {
+        Ros2Participant p;
+        QString error;
+        QVERIFY(!p.start({233, true}, &error));
+        QVERIFY2(error.contains(u"232"_s), qPrintable(error));
+        QVERIFY(!p.isRunning());
+    }
+
+    void graphAppearsAndDisappears()
+    {
+        Ros2Participant p;
+        QSignalSpy changed(&p, &Ros2Participant::graphChanged);
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:20"_s,
+                         u"--pub"_s, u"/pose:geometry_msgs/msg/PoseStamped:20:best_effort,transient_local"_s,
+                         u"--lease-ms"_s, u"2000"_s});
+        Ros2Peer listener(m_domain,
+                          {u"--node"_s, u"/robot1/listener"_s, u"--sub"_s, u"/chatter:std_msgs/msg/String"_s,
+                           u"--lease-ms"_s, u"2000"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QVERIFY2(listener.waitFor(u"ready"_s), qPrintable(listener.errors()));
+
+        QTRY_VERIFY_WITH_TIMEOUT(publishers(p, u"/chatter"_s) == 1 && subscribers(p, u"/chatter"_s) == 1
+                                     && publishers(p, u"/pose"_s) == 1 && hasNode(p, u"/talker"_s)
+                                     && hasNode(p, u"/robot1/listener"_s),
+                                 15000);
+        QVERIFY(!changed.isEmpty());
+        const Ros2Topic* chatter = p.graph().topic(u"/chatter"_s);
+        QCOMPARE(chatter->type(), u"std_msgs/msg/String"_s);
+        QCOMPARE(chatter->publishers[0].node, u"/talker"_s);
+        QCOMPARE(chatter->subscribers[0].node, u"/robot1/listener"_s);
+        QCOMPARE(chatter->publishers[0].qos.reliability, Ros2Qos::Reliable);
+        QCOMPARE(chatter->publishers[0].qos.durability, Ros2Qos::Volatile);
+        const Ros2Topic* pose = p.graph().topic(u"/pose"_s);
+        QCOMPARE(pose->type(), u"geometry_msgs/msg/PoseStamped"_s);
+        QCOMPARE(pose->publishers[0].qos.reliability, Ros2Qos::BestEffort);
+        QCOMPARE(pose->publishers[0].qos.durability, Ros2Qos::TransientLocal);
+        QVERIFY(p.graph().participants >= 2);
+        // ros_discovery_info itself is DDS plumbing, not a ROS topic
+        for (const Ros2Topic& t : p.graph().topics)
+            QVERIFY2(t.name.startsWith(u'/'), qPrintable(t.name));
+        QCOMPARE(p.badDiscoveryInfo(), quint64(0));
+
+        // a node that leaves politely is gone at once
+        listener.terminate();
+        QTRY_VERIFY_WITH_TIMEOUT(subscribers(p, u"/chatter"_s) == 0 && !hasNode(p, u"/robot1/listener"_s),
+                                 8000);
+        QCOMPARE(publishers(p, u"/chatter"_s), 1);
+
+        // one that vanishes without goodbye is gone when its lease (2 s) runs out
+        QElapsedTimer killed;
+        talker.kill();
+        killed.start();
+        QTRY_VERIFY_WITH_TIMEOUT(!p.graph().topic(u"/chatter"_s) && !p.graph().topic(u"/pose"_s)
+                                     && !hasNode(p, u"/talker"_s),
+                                 15000);
+        qInfo("a vanished participant was dropped after %lld ms", killed.elapsed());
+        QVERIFY(killed.elapsed() >= 1000); // by the lease, not by a goodbye
+    }
+
+    void samplesDecode()
+    {
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        QSignalSpy failed(&p, &Ros2Participant::monitorFailed);
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/sensors"_s, u"--size"_s, QString::number(kCloudBytes), u"--pub"_s,
+                         u"/chatter:std_msgs/msg/String:20"_s, u"--pub"_s,
+                         u"/pose:geometry_msgs/msg/PoseStamped:20"_s, u"--pub"_s,
+                         u"/cloud:sensor_msgs/msg/PointCloud2:10"_s, u"--pub"_s,
+                         u"/blob:bridgescope_test/msg/Opaque:10"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        const QStringList topics {u"/chatter"_s, u"/pose"_s, u"/cloud"_s, u"/blob"_s};
+        QTRY_VERIFY_WITH_TIMEOUT(std::all_of(topics.begin(), topics.end(),
+                                             [&](const QString& t) { return publishers(p, t) == 1; }),
+                                 15000);
+        for (const QString& t : topics)
+            p.monitor(t);
+        QVERIFY(failed.isEmpty());
+        auto messages = [&](const QString& t) { return p.snapshot(wallClockNs()).value(t).messages; };
+        QTRY_VERIFY_WITH_TIMEOUT(
+            std::all_of(topics.begin(), topics.end(), [&](const QString& t) { return messages(t) >= 10; }),
+            15000);
+        QTest::qWait(1500); // a steady rate over the window
+        const auto stats = p.snapshot(wallClockNs());
+
+        const RosTypeRegistry registry = Ros2Definitions::registry();
+        // std_msgs/String: "hello <n>"
+        {
+            const Ros2MonitorStats& s = stats[u"/chatter"_s];
+            QCOMPARE(s.type, u"std_msgs/msg/String"_s);
+            QCOMPARE(s.matchedPublishers, 1);
+            QVERIFY2(s.rateHz > 14 && s.rateHz < 26, qPrintable(QString::number(s.rateHz)));
+            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            QVERIFY2(v, qPrintable(error));
+            QVERIFY2(field(*v, u"data"_s).startsWith(u"hello "_s), qPrintable(field(*v, u"data"_s)));
+        }
+        // geometry_msgs/PoseStamped: position (n, 2n, 0.5), frame "map", a stamp of now
+        {
+            const Ros2MonitorStats& s = stats[u"/pose"_s];
+            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            QVERIFY2(v, qPrintable(error));
+            const double x = v->find(u"pose.position.x"_s)->value.toDouble();
+            QVERIFY(x >= 1);
+            QCOMPARE(v->find(u"pose.position.y"_s)->value.toDouble(), 2 * x);
+            QCOMPARE(v->find(u"pose.position.z"_s)->value.toDouble(), 0.5);
+            QCOMPARE(v->find(u"pose.orientation.w"_s)->value.toDouble(), 1.0);
+            QCOMPARE(field(*v, u"header.frame_id"_s), u"map"_s);
+            const qint64 sec = v->find(u"header.stamp.sec"_s)->value.toLongLong();
+            QVERIFY(qAbs(sec - wallClockNs() / 1'000'000'000) < 30);
+        }
+        // sensor_msgs/PointCloud2 of 64 KiB: width, fields and the data's size
+        {
+            const Ros2MonitorStats& s = stats[u"/cloud"_s];
+            QVERIFY2(s.rateHz > 6 && s.rateHz < 14, qPrintable(QString::number(s.rateHz)));
+            QVERIFY(s.lastSize > kCloudBytes);
+            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            QVERIFY2(v, qPrintable(error));
+            QCOMPARE(v->find(u"width"_s)->value.toInt(), kCloudBytes / 16);
+            QCOMPARE(v->find(u"point_step"_s)->value.toInt(), 16);
+            QCOMPARE(int(v->find(u"data"_s)->arrayLength), kCloudBytes);
+            QCOMPARE(v->find(u"fields"_s)->arrayLength, 4u);
+            QCOMPARE(field(*v, u"fields.[0].name"_s), u"x"_s);
+            QCOMPARE(v->find(u"fields.[3].offset"_s)->value.toInt(), 12);
+        }
+        // a type we have no definition for: raw bytes of the size sent (header, n, length, blob)
+        {
+            const Ros2MonitorStats& s = stats[u"/blob"_s];
+            QCOMPARE(s.type, u"bridgescope_test/msg/Opaque"_s);
+            QVERIFY(!registry.contains(s.type));
+            QCOMPARE(s.lastSize, 4 + 4 + 4 + kCloudBytes);
+            QVERIFY(!RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error));
+        }
+
+        // unsubscribing while samples flow, and stopping with subscriptions open, are clean
+        p.unmonitor(u"/chatter"_s);
+        QVERIFY(!p.isMonitored(u"/chatter"_s));
+        QVERIFY(!p.snapshot(wallClockNs()).contains(u"/chatter"_s));
+        p.stop();
+        QVERIFY(!p.isRunning());
+    }
+
+    void monitorUnknownTopicFails()
+    {
+        Ros2Participant p;
+        QVERIFY(p.start({m_domain, true}));
+        QSignalSpy failed(&p, &Ros2Participant::monitorFailed);
+        p.monitor(u"/nobody"_s);
+        QCOMPARE(failed.size(), 1);
+        QVERIFY(!p.isMonitored(u"/nobody"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2Discovery)
+#include "tst_ros2discovery.moc"
