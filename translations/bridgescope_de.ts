@@ -1304,6 +1304,25 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Remo&amp;ve</source>
         <translation>&amp;Entfernen</translation>
     </message>
+    <message>
+        <source>Fields of ROS 2 topics cannot be plotted yet.</source>
+        <translation>Felder von ROS-2-Topics lassen sich noch nicht plotten.</translation>
+    </message>
+    <message>
+        <source>no node</source>
+        <translation>kein Knoten</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message numerus="yes">
+        <source>No ROS 2 definition of %1 is known: the payload shows its %n byte(s) raw.</source>
+        <translation>
+            <numerusform>Für %1 ist keine ROS-2-Definition bekannt: die Nutzdaten zeigen sein %n Byte roh.</numerusform>
+            <numerusform>Für %1 ist keine ROS-2-Definition bekannt: die Nutzdaten zeigen seine %n Bytes roh.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -1366,6 +1385,42 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.</source>
         <translation>Weder der ROS-Master (%1) noch der MQTT-Broker (%2) war erreichbar.</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain %1: %2</source>
+        <translation>ROS-2-Domäne %1: %2</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain %1: participants %2, topics %3, nodes %4</source>
+        <translation>ROS-2-Domäne %1: Teilnehmer %2, Topics %3, Knoten %4</translation>
+    </message>
+    <message>
+        <source>Which ROS graph to list: 1 (through the master, the default), 2 (through DDS) or both.</source>
+        <translation>Welcher ROS-Graph gelistet wird: 1 (über den Master, Standard), 2 (über DDS) oder both (beide).</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain id, 0 to 232 (default $ROS_DOMAIN_ID, else 0).</source>
+        <translation>ROS-2-Domänen-ID, 0 bis 232 (Standard $ROS_DOMAIN_ID, sonst 0).</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery on this host only, over 127.0.0.1 (as ROS_LOCALHOST_ONLY=1).</source>
+        <translation>ROS-2-Erkennung nur auf diesem Rechner, über 127.0.0.1 (wie ROS_LOCALHOST_ONLY=1).</translation>
+    </message>
+    <message>
+        <source>--ros takes 1, 2 or both, not &quot;%1&quot;</source>
+        <translation>--ros erwartet 1, 2 oder both, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--ros-domain takes a domain id from 0 to %1</source>
+        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
+    </message>
+    <message>
+        <source>no participant</source>
+        <translation>kein Teilnehmer</translation>
+    </message>
+    <message>
+        <source>No ROS 2 participant answered on domain %1 and the MQTT broker (%2) could not be reached.</source>
+        <translation>Auf Domäne %1 hat kein ROS-2-Teilnehmer geantwortet, und der MQTT-Broker (%2) war nicht erreichbar.</translation>
     </message>
 </context>
 <context>
@@ -1495,6 +1550,70 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
             <numerusform>%1 von %n Retained-Nachricht wurde nicht gelöscht: %2</numerusform>
             <numerusform>%1 von %n Retained-Nachrichten wurden nicht gelöscht: %2</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>ROS 1</source>
+        <translation>ROS 1</translation>
+    </message>
+    <message>
+        <source>ROS 2</source>
+        <translation>ROS 2</translation>
+    </message>
+    <message>
+        <source>ROS 1 and ROS 2</source>
+        <translation>ROS 1 und ROS 2</translation>
+    </message>
+    <message>
+        <source>The ROS graphs to show: ROS 1 through its master, ROS 2 through DDS discovery (no ROS 2 install needed), or both as two tabs</source>
+        <translation>Die anzuzeigenden ROS-Graphen: ROS 1 über seinen Master, ROS 2 über die DDS-Erkennung (ohne ROS-2-Installation) oder beide in zwei Reitern</translation>
+    </message>
+    <message>
+        <source>ROS &amp;graph:</source>
+        <translation>ROS-&amp;Graph:</translation>
+    </message>
+    <message>
+        <source>domain </source>
+        <translation>Domäne </translation>
+    </message>
+    <message>
+        <source>ROS 2 domain id (ROS_DOMAIN_ID); Enter joins it</source>
+        <translation>ROS-2-Domänen-ID (ROS_DOMAIN_ID); Enter tritt ihr bei</translation>
+    </message>
+    <message>
+        <source>this &amp;host only</source>
+        <translation>nur dieser &amp;Rechner</translation>
+    </message>
+    <message>
+        <source>Discover ROS 2 participants on 127.0.0.1 only, as ROS_LOCALHOST_ONLY=1 does</source>
+        <translation>ROS-2-Teilnehmer nur auf 127.0.0.1 suchen, wie ROS_LOCALHOST_ONLY=1</translation>
+    </message>
+    <message>
+        <source>Filter ROS 2 topics or types…</source>
+        <translation>ROS-2-Topics oder -Typen filtern…</translation>
+    </message>
+    <message>
+        <source>ROS &amp;1</source>
+        <translation>ROS &amp;1</translation>
+    </message>
+    <message>
+        <source>ROS &amp;2</source>
+        <translation>ROS &amp;2</translation>
+    </message>
+    <message>
+        <source>listening on domain %1: no participant yet</source>
+        <translation>lausche auf Domäne %1: noch kein Teilnehmer</translation>
+    </message>
+    <message>
+        <source>domain %1: participants %2, topics %3, nodes %4</source>
+        <translation>Domäne %1: Teilnehmer %2, Topics %3, Knoten %4</translation>
+    </message>
+    <message>
+        <source>unreadable node announcements %1</source>
+        <translation>unlesbare Knotenmeldungen %1</translation>
+    </message>
+    <message>
+        <source>not shown (ROS 2 only)</source>
+        <translation>nicht angezeigt (nur ROS 2)</translation>
     </message>
 </context>
 <context>
@@ -2419,10 +2538,6 @@ factors:
         <translation>Bridge-Konfigurationen prüfen, umwandeln und paaren</translation>
     </message>
     <message>
-        <source>list ROS and MQTT topics</source>
-        <translation>ROS- und MQTT-Topics auflisten</translation>
-    </message>
-    <message>
         <source>       bridgescope &lt;command&gt; [options]</source>
         <translation>        bridgescope &lt;Befehl&gt; [Optionen]</translation>
     </message>
@@ -2565,6 +2680,42 @@ factors:
     <message>
         <source>--theme takes one of: %1</source>
         <translation>--theme nimmt eines von: %1</translation>
+    </message>
+    <message>
+        <source>ROS graphs to show: ROS 1 (master), ROS 2 (DDS) or both</source>
+        <translation>anzuzeigende ROS-Graphen: ROS 1 (Master), ROS 2 (DDS) oder beide</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain (default $ROS_DOMAIN_ID, else 0)</source>
+        <translation>ROS-2-Domäne (Standard $ROS_DOMAIN_ID, sonst 0)</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery on this host only</source>
+        <translation>ROS-2-Erkennung nur auf diesem Rechner</translation>
+    </message>
+    <message>
+        <source>list ROS, ROS 2 and MQTT topics</source>
+        <translation>ROS-, ROS-2- und MQTT-Topics auflisten</translation>
+    </message>
+    <message>
+        <source>ROS graphs to show: 1, 2 or both.</source>
+        <translation>Anzuzeigende ROS-Graphen: 1, 2 oder both.</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain id, 0 to 232.</source>
+        <translation>ROS-2-Domänen-ID, 0 bis 232.</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery on this host only.</source>
+        <translation>ROS-2-Erkennung nur auf diesem Rechner.</translation>
+    </message>
+    <message>
+        <source>--ros takes 1, 2 or both</source>
+        <translation>--ros erwartet 1, 2 oder both</translation>
+    </message>
+    <message>
+        <source>--ros-domain takes a domain id from 0 to %1</source>
+        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
     </message>
 </context>
 <context>
@@ -5749,6 +5900,68 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>optional; otherwise each input&apos;s own pipeline</source>
         <translation>optional; sonst die eigene Pipeline jeder Eingabe</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Definitions</name>
+    <message>
+        <source>%1: more than %2 definitions; the rest were not read</source>
+        <translation>%1: mehr als %2 Definitionen; der Rest wurde nicht gelesen</translation>
+    </message>
+    <message>
+        <source>%1: not readable or over %2 KiB</source>
+        <translation>%1: nicht lesbar oder über %2 KiB</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2DiscoveryInfo</name>
+    <message>
+        <source>not a CDR sample (its encapsulation header is missing or not plain CDR)</source>
+        <translation>kein CDR-Sample (sein Kapselungskopf fehlt oder ist kein einfaches CDR)</translation>
+    </message>
+    <message numerus="yes">
+        <source>not a ParticipantEntitiesInfo of %n byte(s): a length runs past the end, a name is over 256 characters, or bytes are left over</source>
+        <translation>
+            <numerusform>keine ParticipantEntitiesInfo aus %n Byte: eine Länge reicht über das Ende, ein Name hat über 256 Zeichen, oder Bytes bleiben übrig</numerusform>
+            <numerusform>keine ParticipantEntitiesInfo aus %n Bytes: eine Länge reicht über das Ende, ein Name hat über 256 Zeichen, oder Bytes bleiben übrig</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Options</name>
+    <message>
+        <source>ROS_DOMAIN_ID is &quot;%1&quot;, not a domain from 0 to %2</source>
+        <translation>ROS_DOMAIN_ID ist „%1“, keine Domäne von 0 bis %2</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Participant</name>
+    <message>
+        <source>domain %1 is out of range: ROS 2 domains are 0 to %2</source>
+        <translation>Domäne %1 liegt außerhalb: ROS-2-Domänen sind 0 bis %2</translation>
+    </message>
+    <message>
+        <source>Fast DDS could not create a participant on domain %1 (no usable network interface or ports?)</source>
+        <translation>Fast DDS konnte auf Domäne %1 keinen Teilnehmer anlegen (keine nutzbare Netzwerkschnittstelle oder Ports?)</translation>
+    </message>
+    <message>
+        <source>%1 has no publisher or subscriber yet, so its type is not known</source>
+        <translation>%1 hat noch keinen Publisher oder Subscriber, sein Typ ist also unbekannt</translation>
+    </message>
+    <message>
+        <source>Fast DDS could not subscribe to %1 as %2</source>
+        <translation>Fast DDS konnte %1 nicht als %2 abonnieren</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Qos</name>
+    <message>
+        <source>the subscriber asks for reliable delivery, the publisher offers best effort</source>
+        <translation>der Subscriber verlangt zuverlässige Zustellung, der Publisher bietet Best Effort</translation>
+    </message>
+    <message>
+        <source>the subscriber asks for %1 durability, the publisher offers %2</source>
+        <translation>der Subscriber verlangt Dauerhaftigkeit %1, der Publisher bietet %2</translation>
     </message>
 </context>
 <context>

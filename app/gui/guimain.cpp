@@ -47,6 +47,9 @@ QString bridgescopeUsage()
     const QList<std::pair<QString, QString>> options = {
         {u"--broker URL"_s, Gui::tr("MQTT broker (tcp://host:1883, ssl://host:8883, mqtt://, mqtts://)")},
         {u"--ros-master URI"_s, Gui::tr("ROS master (default $ROS_MASTER_URI)")},
+        {u"--ros 1|2|both"_s, Gui::tr("ROS graphs to show: ROS 1 (master), ROS 2 (DDS) or both")},
+        {u"--ros-domain ID"_s, Gui::tr("ROS 2 domain (default $ROS_DOMAIN_ID, else 0)")},
+        {u"--ros-localhost-only"_s, Gui::tr("ROS 2 discovery on this host only")},
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
@@ -59,7 +62,7 @@ QString bridgescopeUsage()
     };
     const QList<std::pair<QString, QString>> commands = {
         {u"config validate|convert|peer"_s, Gui::tr("check, convert and pair bridge configs")},
-        {u"discover [--json]"_s, Gui::tr("list ROS and MQTT topics")},
+        {u"discover [--json] [--ros 2]"_s, Gui::tr("list ROS, ROS 2 and MQTT topics")},
         {u"bridge CONFIG.yaml"_s, Gui::tr("run a config as a reference bridge")},
         {u"probe [--sweep] [--echo]"_s, Gui::tr("round trips and throughput through the broker")},
         {u"demo [--seconds N]"_s, Gui::tr("the demo lab without a window")},
@@ -95,6 +98,8 @@ struct GuiRequest
     QString brokerUrl; ///< as given, credentials included
     std::optional<MqttProfile> broker;
     QString masterUri; ///< empty: $ROS_MASTER_URI
+    int rosGraphs = -1; ///< DiscoverPage::RosGraphs, -1: as last chosen
+    std::optional<Ros2Options> ros2;
     QString pipeline;
     int page = -1;
     bool demo = false;
@@ -123,7 +128,12 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     const QCommandLineOption theme(u"theme"_s, Gui::tr("Colours: system (default), light or dark."),
                                    u"THEME"_s);
-    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo, theme});
+    const QCommandLineOption ros(u"ros"_s, Gui::tr("ROS graphs to show: 1, 2 or both."), u"1|2|both"_s);
+    const QCommandLineOption domain(u"ros-domain"_s, Gui::tr("ROS 2 domain id, 0 to 232."), u"ID"_s);
+    const QCommandLineOption localhost(u"ros-localhost-only"_s,
+                                       Gui::tr("ROS 2 discovery on this host only."));
+    parser.addOptions(
+        {screenshot, after, broker, master, pipeline, page, demo, theme, ros, domain, localhost});
     parser.addPositionalArgument(
         u"FILE"_s,
         Gui::tr("Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open."),
@@ -163,6 +173,26 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         CliOutput::err(Gui::tr("--theme takes one of: %1").arg(Theme::names().join(u", "_s)));
         return ExitUsage;
     }
+    if (parser.isSet(ros)) {
+        request->rosGraphs = int(QStringList {u"1"_s, u"2"_s, u"both"_s}.indexOf(parser.value(ros)));
+        if (request->rosGraphs < 0) {
+            CliOutput::err(Gui::tr("--ros takes 1, 2 or both"));
+            return ExitUsage;
+        }
+    }
+    if (parser.isSet(domain) || parser.isSet(localhost)) {
+        Ros2Options o = Ros2Options::fromEnvironment();
+        if (parser.isSet(domain)) {
+            o.domain = parser.value(domain).toInt(&ok);
+            if (!ok || o.domain < 0 || o.domain > Ros2Options::kMaxDomain) {
+                CliOutput::err(
+                    Gui::tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain));
+                return ExitUsage;
+            }
+        }
+        o.localhostOnly = o.localhostOnly || parser.isSet(localhost);
+        request->ros2 = o;
+    }
     request->masterUri = parser.value(master);
     request->pipeline = parser.value(pipeline);
     request->demo = parser.isSet(demo);
@@ -175,6 +205,10 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
 {
     if (!request.masterUri.isEmpty())
         window.discoverPage()->setRosMasterUri(request.masterUri);
+    if (request.ros2)
+        window.discoverPage()->setRos2Options(*request.ros2);
+    if (request.rosGraphs >= 0)
+        window.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs(request.rosGraphs));
     if (request.broker)
         window.discoverPage()->connectBroker(*request.broker);
     // What does not open is said, and the window opens with the rest (as a desktop's %F asks) and

@@ -153,6 +153,23 @@ void MainWindow::rememberSession()
         m_discover->setRosMasterUri(master);
     connect(m_discover, &DiscoverPage::rosMasterChosen, this,
             [](const QString& uri) { QSettings().setValue(u"session/rosMaster"_s, uri); });
+    // The ROS graphs shown and the ROS 2 domain, as last chosen (ROS_DOMAIN_ID wins for the domain).
+    const int graphs = settings.value(u"session/rosGraphs"_s, 0).toInt();
+    if (graphs > 0 && graphs <= int(DiscoverPage::RosGraphs::Both)) {
+        Ros2Options o = Ros2Options::fromEnvironment();
+        if (qEnvironmentVariableIsEmpty("ROS_DOMAIN_ID"))
+            o.domain = qBound(0, settings.value(u"session/ros2Domain"_s, 0).toInt(), Ros2Options::kMaxDomain);
+        o.localhostOnly = o.localhostOnly || settings.value(u"session/ros2LocalhostOnly"_s, false).toBool();
+        m_discover->setRos2Options(o);
+        m_discover->setRosGraphs(DiscoverPage::RosGraphs(graphs));
+    }
+    connect(m_discover, &DiscoverPage::rosGraphsChosen, this,
+            [](DiscoverPage::RosGraphs graphs, const Ros2Options& o) {
+                QSettings settings;
+                settings.setValue(u"session/rosGraphs"_s, int(graphs));
+                settings.setValue(u"session/ros2Domain"_s, o.domain);
+                settings.setValue(u"session/ros2LocalhostOnly"_s, o.localhostOnly);
+            });
 }
 
 void MainWindow::saveSession() const

@@ -8,6 +8,7 @@
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
+#include "wire/ros2definitions.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +20,22 @@ LiveSession::LiveSession(QObject* parent)
     , m_rosTopics(new RosTopicModel(this))
     , m_mqtt(new MqttConnection(this))
     , m_tree(new MqttTopicTree(this))
+    , m_ros2(new Ros2Participant(this))
+    , m_ros2Topics(new RosTopicModel(this))
+    , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
+    connect(m_ros2, &Ros2Participant::graphChanged, m_ros2Topics,
+            [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(toRosGraph(graph)); });
+    connect(m_ros2Topics, &RosTopicModel::monitorRequested, this, [this](const QString& topic, bool on) {
+        if (on)
+            m_ros2->monitor(topic);
+        else
+            m_ros2->unmonitor(topic);
+    });
+    connect(m_ros2, &Ros2Participant::monitorFailed, this, [this](const QString& topic, const QString& why) {
+        qCWarning(lcSession).noquote() << "ROS 2 topic" << topic << "not monitored:" << why;
+        m_ros2Topics->setMonitored(topic, false);
+    });
     connect(m_poller, &RosGraphPoller::graphChanged, m_rosTopics, &RosTopicModel::setGraph);
     connect(m_poller, &RosGraphPoller::masterRestarted, m_monitor, &RosMonitor::resubscribeAll);
     connect(m_rosTopics, &RosTopicModel::monitorRequested, this, [this](const QString& topic, bool on) {
@@ -47,6 +63,41 @@ void LiveSession::setRosMasterUri(const QString& uri)
 QString LiveSession::rosMasterUri() const
 {
     return m_poller->masterUri();
+}
+
+bool LiveSession::startRos2(const Ros2Options& options, QString* error)
+{
+    qCDebug(lcSession) << "ROS 2 domain" << options.domain << (options.localhostOnly ? "on this host" : "");
+    stopRos2();
+    return m_ros2->start(options, error);
+}
+
+void LiveSession::stopRos2()
+{
+    m_ros2->stop();
+    m_ros2Topics->setGraph({});
+}
+
+void LiveSession::setRos2DefinitionFolders(const QStringList& folders, QStringList* errors)
+{
+    m_ros2Types = std::make_shared<RosTypeRegistry>(Ros2Definitions::registry(folders, errors));
+}
+
+RosGraph LiveSession::toRosGraph(const Ros2Graph& graph)
+{
+    RosGraph g;
+    auto names = [](const QList<Ros2Endpoint>& endpoints) {
+        QStringList list;
+        for (const Ros2Endpoint& e : endpoints)
+            list << (e.node.isEmpty() ? QStringLiteral("(%1)").arg(QString::fromLatin1(e.gid.toHex()))
+                                      : e.node);
+        return list;
+    };
+    for (const Ros2Topic& t : graph.topics)
+        g.topics.append({t.name, t.type(), names(t.publishers), names(t.subscribers)});
+    for (const Ros2Node& n : graph.nodes)
+        g.nodes << n.name;
+    return g;
 }
 
 void LiveSession::connectBroker(const MqttProfile& profile)
@@ -86,5 +137,21 @@ void LiveSession::drainNow()
     }
     m_tree->tick(now);
     m_rosTopics->setMonitorStats(m_monitor->snapshot(now), now);
+    if (m_ros2->isRunning()) {
+        QHash<QString, RosMonitorStats> stats;
+        const auto ros2 = m_ros2->snapshot(now);
+        for (auto it = ros2.cbegin(); it != ros2.cend(); ++it) {
+            RosMonitorStats& s = stats[it.key()];
+            s.messages = it->messages;
+            s.bytes = it->bytes;
+            s.lastSize = it->lastSize;
+            s.lastNs = it->lastNs;
+            s.rateHz = it->rateHz;
+            s.bytesPerSecond = it->bytesPerSecond;
+            s.type = it->type;
+            s.lastMessage = it->lastMessage;
+        }
+        m_ros2Topics->setMonitorStats(stats, now);
+    }
     emit drained(now);
 }

@@ -2,8 +2,11 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
+#include "ros/rosmasterapi.h"
+#include "ros2/ros2participant.h"
 
 #include <functional>
+#include <memory>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
@@ -13,9 +16,11 @@ class MqttTopicTree;
 class RosGraphPoller;
 class RosMonitor;
 class RosTopicModel;
+class RosTypeRegistry;
 
-/// The live side of the application: the ROS master poller, the roscpp monitor, the MQTT
-/// connection, and the models they feed, drained on one GUI-thread timer (about 30 Hz).
+/// The live side of the application: the ROS master poller, the roscpp monitor, the ROS 2
+/// participant (when a ROS 2 graph is asked for), the MQTT connection, and the models they feed,
+/// drained on one GUI-thread timer (about 30 Hz).
 ///
 /// Network threads never touch a model: every tick takes what the buffers collected, hands the
 /// MQTT batch to listeners (the latency engine, mapping health) and then to the topic tree, and
@@ -33,6 +38,20 @@ public:
     QString rosMasterUri() const;
     void connectBroker(const MqttProfile& profile);
     void disconnectBroker();
+
+    /// Joins a ROS 2 domain (leaving the one before); the ROS 2 topics fill ros2Topics().
+    bool startRos2(const Ros2Options& options, QString* error = nullptr);
+    void stopRos2();
+    bool isRos2Running() const { return m_ros2->isRunning(); }
+    Ros2Participant* ros2() const { return m_ros2; }
+    RosTopicModel* ros2Topics() const { return m_ros2Topics; }
+    /// The ROS 2 definitions ROS 2 samples decode with (bundled, and those under the folders of
+    /// setRos2DefinitionFolders()).
+    const RosTypeRegistry& ros2Types() const { return *m_ros2Types; }
+    void setRos2DefinitionFolders(const QStringList& folders, QStringList* errors = nullptr);
+    /// A ROS 2 graph as the ROS topic table shows one: nodes as publishers and subscribers
+    /// (an endpoint no node claims as its GUID), every node.
+    static RosGraph toRosGraph(const Ros2Graph& graph);
 
     RosGraphPoller* rosGraph() const { return m_poller; }
     RosMonitor* rosMonitor() const { return m_monitor; }
@@ -57,6 +76,9 @@ private:
     RosTopicModel* m_rosTopics;
     MqttConnection* m_mqtt;
     MqttTopicTree* m_tree;
+    Ros2Participant* m_ros2;
+    RosTopicModel* m_ros2Topics;
+    std::shared_ptr<const RosTypeRegistry> m_ros2Types;
     std::vector<std::pair<int, MqttListener>> m_listeners;
     int m_nextListener = 1;
     QTimer m_timer;

@@ -237,6 +237,10 @@ bool DetailPane::plotField(const QModelIndex& index)
     const QModelIndex name = index.siblingAtColumn(0);
     if (!name.data(NumericRole).toBool() || m_kind == Kind::None)
         return false;
+    if (m_kind == Kind::Ros2) {
+        m_plotNote->setText(tr("Fields of ROS 2 topics cannot be plotted yet."));
+        return false;
+    }
     PlotField field;
     field.source = m_kind == Kind::Ros ? PlotField::Source::Ros : PlotField::Source::Mqtt;
     field.topic = m_topic;
@@ -286,6 +290,15 @@ void DetailPane::showRosTopic(const QString& topic)
     refreshRos(true);
 }
 
+void DetailPane::showRos2Topic(const QString& topic)
+{
+    m_kind = Kind::Ros2;
+    m_topic = topic;
+    m_shownMessages = ~0ull;
+    m_rosRates.clear();
+    refreshRos(true);
+}
+
 void DetailPane::showMqttTopic(const QString& topic)
 {
     m_kind = Kind::Mqtt;
@@ -298,7 +311,7 @@ void DetailPane::refresh()
 {
     if (m_kind == Kind::Mqtt)
         refreshMqtt(false);
-    else if (m_kind == Kind::Ros)
+    else if (m_kind == Kind::Ros || m_kind == Kind::Ros2)
         refreshRos(false);
 }
 
@@ -449,7 +462,8 @@ void DetailPane::refreshMqtt(bool force)
 
 void DetailPane::refreshRos(bool force)
 {
-    RosTopicModel* model = m_session->rosTopics();
+    const bool ros2 = m_kind == Kind::Ros2;
+    RosTopicModel* model = ros2 ? m_session->ros2Topics() : m_session->rosTopics();
     const RosTopicInfo* t = model->graph().topic(m_topic);
     const RosMonitorStats* s = model->stats(m_topic);
     const qint64 now = QDateTime::currentMSecsSinceEpoch() * 1000000LL;
@@ -465,7 +479,20 @@ void DetailPane::refreshRos(bool force)
         return;
     m_shownMessages = messages;
     QString title = u"<b>%1</b>"_s.arg(m_topic.toHtmlEscaped());
-    if (t) {
+    const Ros2Topic* t2 = ros2 ? m_session->ros2()->graph().topic(m_topic) : nullptr;
+    if (t2) {
+        // ROS 2: each endpoint's node and QoS
+        auto endpoints = [](const QList<Ros2Endpoint>& list) {
+            QStringList parts;
+            for (const Ros2Endpoint& e : list)
+                parts << u"%1 (%2)"_s.arg(e.node.isEmpty() ? tr("no node") : e.node, e.qos.text());
+            return parts.isEmpty() ? tr("none") : parts.join(u", "_s);
+        };
+        title += u"<br>"_s
+            + tr("%1; publishers: %2; subscribers: %3")
+                  .arg(t2->types.join(u" / "_s).toHtmlEscaped(), endpoints(t2->publishers).toHtmlEscaped(),
+                       endpoints(t2->subscribers).toHtmlEscaped());
+    } else if (t) {
         title += u"<br>"_s
             + tr("%1; publishers: %2; subscribers: %3")
                   .arg(t->type.toHtmlEscaped(), t->publishers.join(u", "_s).toHtmlEscaped(),
@@ -491,10 +518,23 @@ void DetailPane::refreshRos(bool force)
         showNoFields(tr("(waiting for the first message)"));
         return;
     }
-    RosTypeRegistry registry;
     QString error;
     RosDecodeLimits limits;
     limits.maxArrayElements = 32;
+    if (ros2) {
+        const RosTypeRegistry& types = m_session->ros2Types();
+        if (!types.contains(s->type))
+            showNoFields(tr("No ROS 2 definition of %1 is known: the payload shows its %n byte(s) raw.",
+                            nullptr, s->lastSize)
+                             .arg(s->type));
+        else if (const auto value
+                 = RosMessageDecoder::decodeCdr(types, s->type, s->lastMessage, &error, limits))
+            showFields(*value);
+        else
+            showNoFields(error);
+        return;
+    }
+    RosTypeRegistry registry;
     if (!registry.addDefinition(s->type, s->definition, &error)) {
         showNoFields(error);
     } else if (const auto value

@@ -34,6 +34,8 @@ public:
     explicit DetailPane(LiveSession* session, QWidget* parent = nullptr);
 
     void showRosTopic(const QString& topic);
+    /// A ROS 2 topic: its samples decode as CDR with the session's ROS 2 definitions.
+    void showRos2Topic(const QString& topic);
     void showMqttTopic(const QString& topic);
     /// Updates from the latest data, if the topic got anything new.
     void refresh();
@@ -65,7 +67,7 @@ private:
     void restoreCurrentField(const QStringList& path);
 
     LiveSession* m_session;
-    enum class Kind { None, Ros, Mqtt } m_kind = Kind::None;
+    enum class Kind { None, Ros, Ros2, Mqtt } m_kind = Kind::None;
     QString m_topic;
     quint64 m_shownMessages = ~0ull;
     QByteArray m_lastPayload;

@@ -24,9 +24,13 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSortFilterProxyModel>
+#include <QSpinBox>
 #include <QSplitter>
+#include <QTabBar>
 #include <QTableView>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolButton>
 #include <QTreeView>
@@ -119,6 +123,55 @@ QLayout* DiscoverPage::createConnectionBar()
     m_counters = new QLabel(this);
     m_counters->setObjectName(u"counters"_s);
     bar->addWidget(m_counters, 1, 4);
+
+    // ROS 2: which graphs, the domain, this host only
+    m_graphsBox = new QComboBox(this);
+    m_graphsBox->setObjectName(u"rosGraphs"_s);
+    m_graphsBox->addItems({tr("ROS 1"), tr("ROS 2"), tr("ROS 1 and ROS 2")});
+    m_graphsBox->setToolTip(
+        tr("The ROS graphs to show: ROS 1 through its master, ROS 2 through DDS discovery "
+           "(no ROS 2 install needed), or both as two tabs"));
+    auto* graphsLabel = new QLabel(tr("ROS &graph:"), this);
+    graphsLabel->setBuddy(m_graphsBox);
+    m_domain = new QSpinBox(this);
+    m_domain->setObjectName(u"ros2Domain"_s);
+    m_domain->setRange(0, Ros2Options::kMaxDomain);
+    m_domain->setPrefix(tr("domain "));
+    m_domain->setToolTip(tr("ROS 2 domain id (ROS_DOMAIN_ID); Enter joins it"));
+    m_localhostOnly = new QCheckBox(tr("this &host only"), this);
+    m_localhostOnly->setObjectName(u"ros2LocalhostOnly"_s);
+    m_localhostOnly->setToolTip(
+        tr("Discover ROS 2 participants on 127.0.0.1 only, as ROS_LOCALHOST_ONLY=1 does"));
+    QString envError;
+    const Ros2Options env = Ros2Options::fromEnvironment(&envError);
+    m_domain->setValue(env.domain);
+    m_localhostOnly->setChecked(env.localhostOnly);
+    m_ros2State = new QLabel(this);
+    m_ros2State->setObjectName(u"ros2State"_s);
+    m_ros2State->setWordWrap(true);
+    auto* ros2Row = new QHBoxLayout;
+    ros2Row->addWidget(m_domain);
+    ros2Row->addWidget(m_localhostOnly);
+    bar->addWidget(graphsLabel, 2, 0);
+    bar->addWidget(m_graphsBox, 2, 1);
+    bar->addLayout(ros2Row, 2, 2);
+    bar->addWidget(m_ros2State, 2, 3, 1, 2);
+    connect(m_graphsBox, &QComboBox::activated, this, [this](int index) {
+        setRosGraphs(RosGraphs(index));
+        emit rosGraphsChosen(m_graphs, ros2Options());
+    });
+    auto rejoin = [this] {
+        applyRos2();
+        emit rosGraphsChosen(m_graphs, ros2Options());
+    };
+    connect(m_domain, &QSpinBox::editingFinished, this, [this, rejoin] {
+        if (m_session->isRos2Running() && m_session->ros2()->options().domain != m_domain->value())
+            rejoin();
+    });
+    connect(m_localhostOnly, &QCheckBox::toggled, this, rejoin);
+    if (!envError.isEmpty())
+        m_ros2State->setToolTip(envError);
+
     bar->setColumnStretch(3, 1);
     return bar;
 }
@@ -132,7 +185,98 @@ QWidget* DiscoverPage::createRosPane()
     m_rosView = rosBox->table();
     m_rosView->setObjectName(u"rosTopics"_s);
     m_rosView->setSelectionMode(QAbstractItemView::SingleSelection);
-    return rosBox;
+
+    auto* ros2Box = new RosTopicView(m_session->ros2Topics(), tr("Filter ROS 2 topics or types…"), this);
+    ros2Box->filterEdit()->setObjectName(u"ros2Filter"_s);
+    m_ros2View = ros2Box->table();
+    m_ros2View->setObjectName(u"ros2Topics"_s);
+    m_ros2View->setSelectionMode(QAbstractItemView::SingleSelection);
+
+    m_rosTabs = new QTabWidget(this);
+    m_rosTabs->setObjectName(u"rosTabs"_s);
+    m_rosTabs->setDocumentMode(true);
+    m_rosTabs->addTab(rosBox, tr("ROS &1"));
+    m_rosTabs->addTab(ros2Box, tr("ROS &2"));
+    m_rosTabs->setTabVisible(1, false);
+    m_rosTabs->tabBar()->hide();
+    return m_rosTabs;
+}
+
+void DiscoverPage::setRosGraphs(RosGraphs graphs)
+{
+    m_graphs = graphs;
+    {
+        const QSignalBlocker block(m_graphsBox);
+        m_graphsBox->setCurrentIndex(int(graphs));
+    }
+    m_rosTabs->setTabVisible(0, graphs != RosGraphs::Ros2);
+    m_rosTabs->setTabVisible(1, graphs != RosGraphs::Ros1);
+    m_rosTabs->tabBar()->setVisible(graphs == RosGraphs::Both);
+    m_rosTabs->setCurrentIndex(graphs == RosGraphs::Ros2 ? 1 : 0);
+    applyRos2();
+}
+
+void DiscoverPage::setRos2Options(const Ros2Options& options)
+{
+    {
+        const QSignalBlocker block(m_localhostOnly);
+        m_domain->setValue(options.domain);
+        m_localhostOnly->setChecked(options.localhostOnly);
+    }
+    applyRos2();
+}
+
+Ros2Options DiscoverPage::ros2Options() const
+{
+    Ros2Options o;
+    o.domain = m_domain->value();
+    o.localhostOnly = m_localhostOnly->isChecked();
+    return o;
+}
+
+/// Joins the chosen domain when a ROS 2 graph is shown, leaves it when none is.
+void DiscoverPage::applyRos2()
+{
+    m_ros2Error.clear();
+    if (m_graphs == RosGraphs::Ros1) {
+        m_session->stopRos2();
+    } else {
+        const Ros2Options o = ros2Options();
+        const Ros2Options now = m_session->ros2()->options();
+        if (!m_session->isRos2Running() || now.domain != o.domain || now.localhostOnly != o.localhostOnly)
+            m_session->startRos2(o, &m_ros2Error);
+    }
+    const bool ros2 = m_graphs != RosGraphs::Ros1;
+    m_domain->setEnabled(ros2);
+    m_localhostOnly->setEnabled(ros2);
+    updateRos2Status();
+    updateRosStatus();
+}
+
+void DiscoverPage::updateRos2Status()
+{
+    if (m_graphs == RosGraphs::Ros1) {
+        m_ros2State->clear();
+        return;
+    }
+    if (!m_ros2Error.isEmpty()) {
+        m_ros2State->setText(bullet(u"#b00020"_s, m_ros2Error));
+        return;
+    }
+    const Ros2Graph& g = m_session->ros2()->graph();
+    if (g.participants == 0) {
+        m_ros2State->setText(
+            bullet(u"#888"_s, tr("listening on domain %1: no participant yet").arg(m_domain->value())));
+        return;
+    }
+    QString text = tr("domain %1: participants %2, topics %3, nodes %4")
+                       .arg(m_domain->value())
+                       .arg(g.participants)
+                       .arg(g.topics.size())
+                       .arg(g.nodes.size());
+    if (const quint64 bad = m_session->ros2()->badDiscoveryInfo())
+        text += u", "_s + tr("unreadable node announcements %1").arg(bad);
+    m_ros2State->setText(bullet(u"#2e7d32"_s, text));
 }
 
 QWidget* DiscoverPage::createMqttPane()
@@ -256,6 +400,11 @@ void DiscoverPage::connectSelection()
                 if (i.isValid())
                     m_detail->showRosTopic(i.data(RosTopicModel::TopicRole).toString());
             });
+    connect(m_ros2View->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& i) {
+                if (i.isValid())
+                    m_detail->showRos2Topic(i.data(RosTopicModel::TopicRole).toString());
+            });
     connect(m_mqttView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
                 if (i.isValid())
@@ -268,6 +417,7 @@ void DiscoverPage::connectSession()
     connect(m_session->rosGraph(), &RosGraphPoller::reachabilityChanged, this,
             &DiscoverPage::updateRosStatus);
     connect(m_session->rosGraph(), &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
+    connect(m_session->ros2(), &Ros2Participant::graphChanged, this, &DiscoverPage::updateRos2Status);
     connect(m_session->mqtt(), &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
     // The detail pane follows its topic a few times a second, not at the drain rate.
     auto* refresh = new QTimer(this);
@@ -381,7 +531,10 @@ void DiscoverPage::setRosMasterUri(const QString& uri)
 void DiscoverPage::updateRosStatus()
 {
     const RosGraphPoller* p = m_session->rosGraph();
-    if (p->polls() == 0)
+    m_masterUri->setEnabled(m_graphs != RosGraphs::Ros2);
+    if (m_graphs == RosGraphs::Ros2)
+        m_rosState->setText(bullet(u"#888"_s, tr("not shown (ROS 2 only)")));
+    else if (p->polls() == 0)
         m_rosState->setText(bullet(u"#888"_s, tr("asking the master…")));
     else if (p->isReachable())
         m_rosState->setText(bullet(

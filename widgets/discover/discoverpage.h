@@ -2,6 +2,7 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
+#include "ros2/ros2participant.h"
 
 #include <QWidget>
 
@@ -17,17 +18,34 @@ class QLabel;
 class QLayout;
 class QLineEdit;
 class QPushButton;
+class QSpinBox;
+class QTabWidget;
 class QSortFilterProxyModel;
 class QTableView;
 class QTreeView;
 
-/// The Discover page: the ROS graph on the left, the broker's topic tree in the middle, and what
-/// the selected topic carries on the right, all live.
+/// The Discover page: the ROS graph on the left (ROS 1 through the master, ROS 2 through DDS, or
+/// both as two tabs), the broker's topic tree in the middle, and what the selected topic carries on
+/// the right, all live.
 class DiscoverPage : public QWidget
 {
     Q_OBJECT
 public:
+    /// Which ROS graphs the page shows.
+    enum class RosGraphs { Ros1, Ros2, Both };
+
     explicit DiscoverPage(LiveSession* session, QWidget* parent = nullptr);
+
+    /// Shows ROS 1, ROS 2 or both; joins or leaves the ROS 2 domain as needed.
+    void setRosGraphs(RosGraphs graphs);
+    RosGraphs rosGraphs() const { return m_graphs; }
+    /// The ROS 2 domain (and whether discovery stays on this host); joins it again when ROS 2 is shown.
+    void setRos2Options(const Ros2Options& options);
+    Ros2Options ros2Options() const;
+    QTableView* ros2View() const { return m_ros2View; }
+    QLabel* ros2Status() const { return m_ros2State; }
+    QComboBox* rosGraphsBox() const { return m_graphsBox; }
+    QTabWidget* rosTabs() const { return m_rosTabs; }
 
     /// Connects to `profile` (and remembers it as the last one used).
     void connectBroker(const MqttProfile& profile);
@@ -54,6 +72,8 @@ public:
 signals:
     /// The user entered a master URI (not a program setting one, as the demo does).
     void rosMasterChosen(const QString& uri);
+    /// The user picked the graphs to show or the ROS 2 domain (for the window's memory).
+    void rosGraphsChosen(RosGraphs graphs, const Ros2Options& options);
 
 private:
     QLayout* createConnectionBar();
@@ -63,6 +83,8 @@ private:
     void connectSelection();
     void connectSession();
     void updateRosStatus();
+    void updateRos2Status();
+    void applyRos2();
     void updateMqttStatus();
     void reloadProfiles(const QString& select);
     void editProfile(bool asNew);
@@ -80,6 +102,14 @@ private:
     QLineEdit* m_rosFilter;
     QSortFilterProxyModel* m_rosProxy;
     QTableView* m_rosView;
+    QTableView* m_ros2View;
+    QTabWidget* m_rosTabs;
+    QComboBox* m_graphsBox;
+    QSpinBox* m_domain;
+    QCheckBox* m_localhostOnly;
+    QLabel* m_ros2State;
+    QString m_ros2Error;
+    RosGraphs m_graphs = RosGraphs::Ros1;
     QLineEdit* m_mqttFilter;
     QCheckBox* m_searchPayloads;
     MqttTopicFilter* m_mqttProxy;

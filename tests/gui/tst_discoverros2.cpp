@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// The Discover page's ROS 2 graph: a Cyclone DDS node (tests/ros2peer) seen through Bridgescope's
+// Fast DDS participant, shown in the ROS 2 tab with its node, monitored, its samples decoded in the
+// detail pane with the bundled definitions, an unknown type shown raw; the ROS 1 / ROS 2 / both
+// switch joining and leaving the domain.
+#include "ros/rostopicmodel.h"
+#include "ros2peer.h"
+#include "session/livesession.h"
+#include "widgets/discover/detailpane.h"
+#include "widgets/discover/discoverpage.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QSortFilterProxyModel>
+#include <QStandardPaths>
+#include <QTabBar>
+#include <QTableView>
+#include <QTabWidget>
+#include <QTest>
+#include <QTreeView>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// The displayed text of a column of the table, row by row.
+QStringList column(const QTableView* view, int column)
+{
+    QStringList out;
+    const QAbstractItemModel* m = view->model();
+    for (int r = 0; r < m->rowCount(); ++r)
+        out << m->index(r, column).data().toString();
+    return out;
+}
+
+int rowOf(const QTableView* view, const QString& topic)
+{
+    return int(column(view, RosTopicModel::TopicColumn).indexOf(topic));
+}
+
+/// "name = value" of every top-level field the detail pane shows.
+QStringList fields(const DetailPane* detail)
+{
+    QStringList out;
+    const QAbstractItemModel* m = detail->fieldsView()->model();
+    for (int r = 0; r < m->rowCount(); ++r)
+        out << m->index(r, 0).data().toString() + u" = "_s + m->index(r, 1).data().toString();
+    return out;
+}
+} // namespace
+
+class TestDiscoverRos2 : public QObject
+{
+    Q_OBJECT
+    int m_domain = 0;
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        m_domain = Ros2Peer::freeDomain(141, 180);
+    }
+
+    void ros2Graph()
+    {
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/lab/talker"_s, u"--size"_s, u"256"_s, u"--pub"_s,
+                         u"/chatter:std_msgs/msg/String:20"_s, u"--pub"_s,
+                         u"/blob:bridgescope_test/msg/Opaque:10:best_effort"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+
+        LiveSession session;
+        DiscoverPage page(&session);
+        page.resize(1280, 760);
+        page.show();
+        QCOMPARE(page.rosGraphs(), DiscoverPage::RosGraphs::Ros1);
+        QVERIFY(!session.isRos2Running()); // no DDS traffic unless asked for
+        page.setRos2Options({m_domain, true});
+        page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
+        QVERIFY(session.isRos2Running());
+        QCOMPARE(page.rosGraphsBox()->currentIndex(), 1);
+        QCOMPARE(page.rosTabs()->currentIndex(), 1);
+        QVERIFY(!page.rosTabs()->tabBar()->isVisible());
+
+        QTableView* view = page.ros2View();
+        QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/chatter"_s) >= 0 && rowOf(view, u"/blob"_s) >= 0, 15000);
+        const int chatter = rowOf(view, u"/chatter"_s);
+        QCOMPARE(column(view, RosTopicModel::TypeColumn).at(chatter), u"std_msgs/msg/String"_s);
+        QCOMPARE(column(view, RosTopicModel::PublishersColumn).at(chatter), u"1"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(page.ros2Status()->text().contains(u"topics 2, nodes 1"_s), 5000);
+        QVERIFY(page.rosStatus()->text().contains(u"ROS 2 only"_s));
+
+        // Monitor, select: decoded fields, QoS and node in the title
+        RosTopicModel* model = session.ros2Topics();
+        QVERIFY(model->setData(model->index(model->rowOf(u"/chatter"_s), RosTopicModel::MonitorColumn),
+                               Qt::Checked, Qt::CheckStateRole));
+        view->setCurrentIndex(view->model()->index(chatter, RosTopicModel::TopicColumn));
+        DetailPane* detail = page.detail();
+        QCOMPARE(detail->topic(), u"/chatter"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
+        QVERIFY2(detail->title()->text().contains(u"/lab/talker (reliable, volatile)"_s),
+                 qPrintable(detail->title()->text()));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            column(view, RosTopicModel::RateColumn).at(rowOf(view, u"/chatter"_s)).toDouble() > 10, 10000);
+
+        // a type without a definition: said so, the bytes shown raw
+        QVERIFY(model->setData(model->index(model->rowOf(u"/blob"_s), RosTopicModel::MonitorColumn),
+                               Qt::Checked, Qt::CheckStateRole));
+        view->setCurrentIndex(view->model()->index(rowOf(view, u"/blob"_s), RosTopicModel::TopicColumn));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            fields(detail).join(u'|').contains(u"No ROS 2 definition of bridgescope_test/msg/Opaque"_s),
+            10000);
+        QVERIFY2(fields(detail).join(u'|').contains(u"268 byte"_s), qPrintable(fields(detail).join(u'|')));
+        QVERIFY(!detail->payloadView()->toPlainText().isEmpty());
+        QVERIFY2(detail->title()->text().contains(u"best effort"_s), qPrintable(detail->title()->text()));
+
+        // both graphs: two tabs; ROS 1 only: the domain is left and the ROS 2 table empties
+        page.setRosGraphs(DiscoverPage::RosGraphs::Both);
+        QVERIFY(page.rosTabs()->tabBar()->isVisible());
+        QVERIFY(page.rosTabs()->isTabVisible(0) && page.rosTabs()->isTabVisible(1));
+        QVERIFY(session.isRos2Running());
+        page.setRosGraphs(DiscoverPage::RosGraphs::Ros1);
+        QVERIFY(!session.isRos2Running());
+        QCOMPARE(model->rowCount(), 0);
+        QVERIFY(!page.rosTabs()->isTabVisible(1));
+    }
+};
+
+QTEST_MAIN(TestDiscoverRos2)
+#include "tst_discoverros2.moc"
