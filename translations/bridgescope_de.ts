@@ -3520,6 +3520,42 @@ factors:
         <source>publishers: %1</source>
         <translation>Publisher: %1</translation>
     </message>
+    <message>
+        <source>%1 publishes %2: %3</source>
+        <translation>%1 veröffentlicht mit %2: %3</translation>
+    </message>
+    <message>
+        <source>a node</source>
+        <translation>ein Knoten</translation>
+    </message>
+    <message>
+        <source>%1 subscribes with %2: %3</source>
+        <translation>%1 abonniert mit %2: %3</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain not joined</source>
+        <translation>ROS-2-Domäne nicht beigetreten</translation>
+    </message>
+    <message>
+        <source>ROS 2 topic not in the graph</source>
+        <translation>ROS-2-Topic nicht im Graphen</translation>
+    </message>
+    <message>
+        <source>Nobody publishes or subscribes &apos;%1&apos; on this ROS 2 domain.</source>
+        <translation>Niemand veröffentlicht oder abonniert „%1“ in dieser ROS-2-Domäne.</translation>
+    </message>
+    <message>
+        <source>QoS incompatible</source>
+        <translation>QoS unverträglich</translation>
+    </message>
+    <message>
+        <source>mqtt_client&apos;s subscription to &apos;%1&apos; cannot match a publisher: %2. Set advanced.ros.qos to auto or to what the publishers offer.</source>
+        <translation>Das Abonnement von mqtt_client auf „%1“ passt zu keinem Publisher: %2. Setzen Sie advanced.ros.qos auf auto oder auf das, was die Publisher bieten.</translation>
+    </message>
+    <message>
+        <source>Subscribers of &apos;%1&apos; cannot get mqtt_client&apos;s messages: %2. Offer at least what they ask for in advanced.ros.qos.</source>
+        <translation>Subscriber von „%1“ erhalten die Nachrichten von mqtt_client nicht: %2. Bieten Sie in advanced.ros.qos mindestens, was sie verlangen.</translation>
+    </message>
 </context>
 <context>
     <name>MappingInspector</name>

@@ -13,6 +13,7 @@ struct MappingHealth
         Missing, ///< the source topic does not exist on its side
         NoBridge, ///< the source publishes, the destination stays silent
         TypeMismatch, ///< the broker announces another type than the ROS graph has
+        QosMismatch, ///< ROS 2: the bridge's QoS and the topic's endpoints cannot match
     };
     State state = Unknown;
     QString summary; ///< a few words for the table

@@ -200,7 +200,7 @@ Ros2Graph Ros2Graph::build(const QList<Ros2Endpoint>& endpoints, const QList<Ros
     std::map<QString, Ros2Topic> topics;
     std::map<QString, Ros2Node> nodes;
     for (Ros2Endpoint e : endpoints) {
-        e.node = nodeOf.value(e.gid);
+        e.node = nodeOf.value(e.gid, e.node);
         Ros2Topic& t = topics[e.topic];
         t.name = e.topic;
         if (!t.types.contains(e.type)) {

@@ -100,6 +100,23 @@ RosGraph LiveSession::toRosGraph(const Ros2Graph& graph)
     return g;
 }
 
+QHash<QString, RosMonitorStats> LiveSession::toRosStats(const QHash<QString, Ros2MonitorStats>& ros2)
+{
+    QHash<QString, RosMonitorStats> stats;
+    for (auto it = ros2.cbegin(); it != ros2.cend(); ++it) {
+        RosMonitorStats& s = stats[it.key()];
+        s.messages = it->messages;
+        s.bytes = it->bytes;
+        s.lastSize = it->lastSize;
+        s.lastNs = it->lastNs;
+        s.rateHz = it->rateHz;
+        s.bytesPerSecond = it->bytesPerSecond;
+        s.type = it->type;
+        s.lastMessage = it->lastMessage;
+    }
+    return stats;
+}
+
 void LiveSession::connectBroker(const MqttProfile& profile)
 {
     qCDebug(lcSession).noquote() << "broker" << Secrets::urlWithoutCredentials(profile.url) << "history"
@@ -137,21 +154,7 @@ void LiveSession::drainNow()
     }
     m_tree->tick(now);
     m_rosTopics->setMonitorStats(m_monitor->snapshot(now), now);
-    if (m_ros2->isRunning()) {
-        QHash<QString, RosMonitorStats> stats;
-        const auto ros2 = m_ros2->snapshot(now);
-        for (auto it = ros2.cbegin(); it != ros2.cend(); ++it) {
-            RosMonitorStats& s = stats[it.key()];
-            s.messages = it->messages;
-            s.bytes = it->bytes;
-            s.lastSize = it->lastSize;
-            s.lastNs = it->lastNs;
-            s.rateHz = it->rateHz;
-            s.bytesPerSecond = it->bytesPerSecond;
-            s.type = it->type;
-            s.lastMessage = it->lastMessage;
-        }
-        m_ros2Topics->setMonitorStats(stats, now);
-    }
+    if (m_ros2->isRunning())
+        m_ros2Topics->setMonitorStats(toRosStats(m_ros2->snapshot(now)), now);
     emit drained(now);
 }

@@ -3,6 +3,7 @@
 
 #include "mqtt/mqttconnection.h"
 #include "ros/rosmasterapi.h"
+#include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
 
 #include <functional>
@@ -52,6 +53,8 @@ public:
     /// A ROS 2 graph as the ROS topic table shows one: nodes as publishers and subscribers
     /// (an endpoint no node claims as its GUID), every node.
     static RosGraph toRosGraph(const Ros2Graph& graph);
+    /// ROS 2 monitor figures as the ROS topic table and the mapping health take them.
+    static QHash<QString, RosMonitorStats> toRosStats(const QHash<QString, Ros2MonitorStats>& stats);
 
     RosGraphPoller* rosGraph() const { return m_poller; }
     RosMonitor* rosMonitor() const { return m_monitor; }

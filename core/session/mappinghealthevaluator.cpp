@@ -4,6 +4,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
+#include "ros2/ros2graph.h"
 
 using namespace Qt::StringLiterals;
 
@@ -13,7 +14,72 @@ bool MappingHealthEvaluator::sameType(const QString& a, const QString& b)
     return norm(a) == norm(b);
 }
 
+bool MappingHealthEvaluator::bridgeQos(const Mapping& m, const Ros2Qos& matched, Ros2Qos* qos)
+{
+    const bool subscription = m.direction == Direction::Ros2Mqtt;
+    const QString reliability = m.value(u"advanced.ros.qos.reliability"_s).trimmed();
+    const QString durability = m.value(u"advanced.ros.qos.durability"_s).trimmed();
+    Ros2Qos q;
+    if (reliability == u"reliable"_s || reliability == u"system_default"_s
+        || (reliability.isEmpty() && !subscription))
+        q.reliability = Ros2Qos::Reliable;
+    else if (reliability == u"best_effort"_s)
+        q.reliability = Ros2Qos::BestEffort;
+    else if (subscription && (reliability.isEmpty() || reliability == u"auto"_s))
+        q.reliability = matched.reliability;
+    else
+        return false;
+    if (durability == u"volatile"_s || durability == u"system_default"_s
+        || (durability.isEmpty() && !subscription))
+        q.durability = Ros2Qos::Volatile;
+    else if (durability == u"transient_local"_s)
+        q.durability = Ros2Qos::TransientLocal;
+    else if (subscription && (durability.isEmpty() || durability == u"auto"_s))
+        q.durability = matched.durability;
+    else
+        return false;
+    *qos = q;
+    return true;
+}
+
 namespace {
+/// ROS 2: why no endpoint on the other side of the bridge's ROS endpoint can match it, or empty.
+QString qosProblem(const Mapping& m, const Ros2Topic& topic)
+{
+    const QString fixedType = m.value(u"ros_type"_s).trimmed();
+    QStringList why;
+    if (m.direction == Direction::Ros2Mqtt) {
+        // mqtt_client subscribes when one publisher of the (fixed) type is compatible
+        bool candidate = false;
+        for (const Ros2Endpoint& pub : topic.publishers) {
+            if (!fixedType.isEmpty() && !MappingHealthEvaluator::sameType(fixedType, pub.type))
+                continue;
+            candidate = true;
+            Ros2Qos sub;
+            QString reason;
+            if (!MappingHealthEvaluator::bridgeQos(m, pub.qos, &sub)
+                || ros2QosCompatible(pub.qos, sub, &reason))
+                return {};
+            why << MappingHealthEvaluator::tr("%1 publishes %2: %3")
+                       .arg(pub.node.isEmpty() ? MappingHealthEvaluator::tr("a node") : pub.node,
+                            pub.qos.text(), reason);
+        }
+        return candidate ? why.join(u"; "_s) : QString();
+    }
+    // mqtt2ros: every subscriber that cannot get the bridge's messages
+    Ros2Qos pub;
+    if (!MappingHealthEvaluator::bridgeQos(m, {}, &pub))
+        return {};
+    for (const Ros2Endpoint& sub : topic.subscribers) {
+        QString reason;
+        if (!ros2QosCompatible(pub, sub.qos, &reason))
+            why << MappingHealthEvaluator::tr("%1 subscribes with %2: %3")
+                       .arg(sub.node.isEmpty() ? MappingHealthEvaluator::tr("a node") : sub.node,
+                            sub.qos.text(), reason);
+    }
+    return why.join(u"; "_s);
+}
+
 QString rate(double hz)
 {
     return MappingHealthEvaluator::tr("%1 Hz").arg(hz, 0, 'f', hz < 10 ? 1 : 0);
@@ -47,7 +113,9 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
 
         if (!in.rosReachable || !in.mqttConnected) {
             h.state = MappingHealth::Unknown;
-            h.summary = !in.rosReachable ? tr("ROS master not reachable") : tr("broker not connected");
+            h.summary = !in.rosReachable
+                ? (in.ros2 ? tr("ROS 2 domain not joined") : tr("ROS master not reachable"))
+                : tr("broker not connected");
             h.detail = tr("Connect to the ROS master and the broker on the Discover page to see this "
                           "mapping's traffic.");
             out.insert(m.id, h);
@@ -56,8 +124,9 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
         if (m.direction == Direction::Ros2Mqtt) {
             if (!rosInfo) {
                 h.state = MappingHealth::Missing;
-                h.summary = tr("ROS topic not on the master");
-                h.detail = tr("Nobody publishes or subscribes '%1' on this master.").arg(ros);
+                h.summary = in.ros2 ? tr("ROS 2 topic not in the graph") : tr("ROS topic not on the master");
+                h.detail = in.ros2 ? tr("Nobody publishes or subscribes '%1' on this ROS 2 domain.").arg(ros)
+                                   : tr("Nobody publishes or subscribes '%1' on this master.").arg(ros);
             } else if (!rosPublished) {
                 h.state = MappingHealth::Idle;
                 h.summary = tr("no publisher on ROS");
@@ -101,6 +170,23 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
             h.summary = tr("type mismatch");
             h.detail = tr("The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.")
                            .arg(mqttInfo->rosType->name, mqtt, ros, rosInfo->type);
+        }
+        // A QoS that keeps the bridge's ROS 2 endpoint from matching explains any silence.
+        if (in.ros2 && h.state != MappingHealth::Missing) {
+            if (const Ros2Topic* t = in.ros2->topic(ros)) {
+                if (const QString why = qosProblem(m, *t); !why.isEmpty()) {
+                    h.state = MappingHealth::QosMismatch;
+                    h.summary = tr("QoS incompatible");
+                    h.detail = m.direction == Direction::Ros2Mqtt
+                        ? tr("mqtt_client's subscription to '%1' cannot match a publisher: %2. Set "
+                             "advanced.ros.qos to auto or to what the publishers offer.")
+                              .arg(ros, why)
+                        : tr("Subscribers of '%1' cannot get mqtt_client's messages: %2. Offer at least what "
+                             "they "
+                             "ask for in advanced.ros.qos.")
+                              .arg(ros, why);
+                }
+            }
         }
         if (h.latencyMs >= 0 && h.state == MappingHealth::Healthy)
             h.summary += tr(", %1 ms").arg(h.latencyMs, 0, 'f', 1);

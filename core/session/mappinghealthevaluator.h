@@ -8,11 +8,14 @@
 #include <QHash>
 
 struct RosGraph;
+struct Ros2Graph;
+struct Ros2Qos;
 struct RosMonitorStats;
 class MqttTopicTree;
 
 /// Evaluates every mapping of a config against the ROS graph, the monitored ROS topics and the
-/// broker's topic tree.
+/// broker's topic tree. For a ROS 2 graph (`ros2` set; `graph` is then its RosGraph form) it also
+/// checks the QoS mqtt_client would use against the topic's endpoints.
 class MappingHealthEvaluator
 {
     Q_DECLARE_TR_FUNCTIONS(MappingHealth)
@@ -26,8 +29,14 @@ public:
         bool mqttConnected = false;
         qint64 nowNs = 0;
         qint64 activeWindowNs = 5'000'000'000LL; ///< a topic counts as active for this long after a message
+        const Ros2Graph* ros2 = nullptr; ///< the ROS side is this ROS 2 graph
     };
     static QHash<quint64, MappingHealth> evaluate(const BridgeConfig& config, const Inputs& in);
     /// "pkg/msg/Type" and "pkg/Type" name the same type.
     static bool sameType(const QString& a, const QString& b);
+    /// The QoS mqtt_client (v2.5) gives a mapping's ROS 2 endpoint: `advanced.ros.qos.*` where set,
+    /// `system_default` as reliable and volatile (what Fast DDS and Cyclone DDS default to); for a
+    /// ros2mqtt subscription `auto` (the default) takes the publisher's `matched` QoS. False when a
+    /// value is not known (a substitution, a typo).
+    static bool bridgeQos(const Mapping& m, const Ros2Qos& matched, Ros2Qos* qos);
 };

@@ -2,14 +2,23 @@
 // The Discover page's ROS 2 graph: a Cyclone DDS node (tests/ros2peer) seen through Bridgescope's
 // Fast DDS participant, shown in the ROS 2 tab with its node, monitored, its samples decoded in the
 // detail pane with the bundled definitions, an unknown type shown raw; the ROS 1 / ROS 2 / both
-// switch joining and leaving the domain.
+// switch joining and leaving the domain; a ROS 2 config on the Map page judged against the ROS 2
+// graph (QoS that cannot match, a publisher without a bridge).
+#include "app/gui/mainwindow.h"
+#include "config/configdocument.h"
+#include "config/mappinghealth.h"
+#include "config/mappingmodel.h"
 #include "ros/rostopicmodel.h"
 #include "ros2peer.h"
 #include "session/livesession.h"
+#include "testservers.h"
 #include "widgets/discover/detailpane.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/map/configeditor.h"
+#include "widgets/map/mappage.h"
 
 #include <QComboBox>
+#include <QFile>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QSortFilterProxyModel>
@@ -17,6 +26,7 @@
 #include <QTabBar>
 #include <QTableView>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTreeView>
 
@@ -46,6 +56,20 @@ QStringList fields(const DetailPane* detail)
     for (int r = 0; r < m->rowCount(); ++r)
         out << m->index(r, 0).data().toString() + u" = "_s + m->index(r, 1).data().toString();
     return out;
+}
+
+int healthOf(MapPage* page, const QString& ros, QString* detail = nullptr)
+{
+    page->updateHealth();
+    MappingModel* model = page->editor()->model();
+    for (int r = 0; r < model->rowCount(); ++r) {
+        if (model->index(r, MappingModel::RosTopicColumn).data().toString() != ros)
+            continue;
+        if (detail)
+            *detail = model->index(r, MappingModel::HealthColumn).data(Qt::ToolTipRole).toString();
+        return model->index(r, 0).data(MappingModel::HealthStateRole).toInt();
+    }
+    return -2;
 }
 } // namespace
 
@@ -123,6 +147,66 @@ private slots:
         QVERIFY(!session.isRos2Running());
         QCOMPARE(model->rowCount(), 0);
         QVERIFY(!page.rosTabs()->isTabVisible(1));
+    }
+
+    void mapRos2Config()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/lidar_driver"_s, u"--pub"_s,
+                         u"/scan_text:std_msgs/msg/String:10:best_effort"_s, u"--pub"_s,
+                         u"/odom_text:std_msgs/msg/String:10"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        // mqtt_client v2.5's ROS 2 layout: one mapping asks for reliable delivery from a best-effort
+        // publisher (it would never subscribe), one takes the publisher's QoS (auto).
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bridge.ros2.yaml"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("/**/*:\n"
+                "  ros__parameters:\n"
+                "    broker: {host: localhost, port: 1883}\n"
+                "    bridge:\n"
+                "      ros2mqtt:\n"
+                "        ros_topics: [/scan_text, /odom_text]\n"
+                "        /scan_text:\n"
+                "          mqtt_topic: lab/scan_text\n"
+                "          advanced: {ros: {qos: {reliability: reliable}}}\n"
+                "        /odom_text:\n"
+                "          mqtt_topic: lab/odom_text\n");
+        f.close();
+
+        MainWindow w;
+        QVERIFY(w.document()->load(path).ok);
+        QCOMPARE(w.document()->config().layout, ConfigLayout::Ros2);
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
+        w.discoverPage()->setRos2Options({m_domain, true});
+        w.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs::Ros2);
+        MapPage* page = w.mapPage();
+        w.show();
+        QTRY_VERIFY_WITH_TIMEOUT(w.session()->mqtt()->state() == MqttConnection::State::Connected, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.session()->ros2Topics()->rowOf(u"/odom_text"_s) >= 0
+                                     && w.session()->ros2Topics()->rowOf(u"/scan_text"_s) >= 0,
+                                 15000);
+        QString detail;
+        // (the node's name follows its endpoints, with its ros_discovery_info)
+        QTRY_VERIFY2_WITH_TIMEOUT(healthOf(page, u"/scan_text"_s, &detail) == int(MappingHealth::QosMismatch)
+                                      && detail.contains(u"/lidar_driver publishes best effort"_s),
+                                  qPrintable(detail), 5000);
+        // auto QoS matches; the publisher is there, no bridge carries it to the broker
+        QCOMPARE(healthOf(page, u"/odom_text"_s), int(MappingHealth::NoBridge));
+        // the Map's ROS list is the ROS 2 graph now
+        QAbstractItemModel* rosList = page->findChild<QTableView*>(u"mapRosTopics"_s)->model();
+        QStringList names;
+        for (int r = 0; r < rosList->rowCount(); ++r)
+            names << rosList->index(r, RosTopicModel::TopicColumn).data(RosTopicModel::TopicRole).toString();
+        QVERIFY2(names.contains(u"/scan_text"_s), qPrintable(names.join(u' ')));
+        // the node leaves: its topics are missing from the graph
+        talker.terminate();
+        QTRY_COMPARE_WITH_TIMEOUT(healthOf(page, u"/odom_text"_s, &detail), int(MappingHealth::Missing),
+                                  10000);
+        QVERIFY2(detail.contains(u"ROS 2 domain"_s), qPrintable(detail));
     }
 };
 

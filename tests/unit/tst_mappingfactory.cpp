@@ -5,6 +5,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
+#include "ros2/ros2graph.h"
 #include "session/mappinghealthevaluator.h"
 #include "wire/mqttclientwire.h"
 
@@ -145,6 +146,85 @@ private slots:
         in.mqttConnected = false;
         QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[flowing.id].state, MappingHealth::Unknown);
         QVERIFY(MappingHealthEvaluator::sameType(u"std_msgs/msg/Bool"_s, u"std_msgs/Bool"_s));
+    }
+
+    // ROS 2: the QoS mqtt_client v2.5 would use against the endpoints DDS discovery announced.
+    void healthChecksRos2Qos()
+    {
+        BridgeConfig cfg;
+        cfg.layout = ConfigLayout::Ros2;
+        Mapping autoQos
+            = Mapping::create(Direction::Ros2Mqtt, u"/a"_s, u"a"_s); // auto: takes the publisher's
+        Mapping reliable = Mapping::create(Direction::Ros2Mqtt, u"/b"_s, u"b"_s);
+        reliable.set(u"advanced.ros.qos.reliability"_s, u"reliable"_s);
+        Mapping latched = Mapping::create(Direction::Ros2Mqtt, u"/c"_s, u"c"_s);
+        latched.set(u"advanced.ros.qos.durability"_s, u"transient_local"_s);
+        const Mapping toRos = Mapping::create(Direction::Mqtt2Ros, u"/d"_s, u"d"_s); // system default
+        Mapping toRosLatched = Mapping::create(Direction::Mqtt2Ros, u"/e"_s, u"e"_s);
+        toRosLatched.set(u"advanced.ros.qos.durability"_s, u"transient_local"_s);
+        Mapping substituted = Mapping::create(Direction::Ros2Mqtt, u"/b"_s, u"b2"_s);
+        substituted.set(u"advanced.ros.qos.reliability"_s, u"$(arg reliability)"_s);
+        cfg.mappings = {autoQos, reliable, latched, toRos, toRosLatched, substituted};
+
+        auto endpoint = [](int n, const QString& topic, bool pub, Ros2Qos::Reliability r,
+                           Ros2Qos::Durability d, const QString& node) {
+            Ros2Endpoint e;
+            e.gid = QByteArray(15, '\1') + char(n);
+            e.topic = topic;
+            e.type = u"std_msgs/msg/String"_s;
+            e.publisher = pub;
+            e.qos.reliability = r;
+            e.qos.durability = d;
+            e.node = node;
+            return e;
+        };
+        const QList<Ros2Endpoint> endpoints {
+            endpoint(1, u"/a"_s, true, Ros2Qos::BestEffort, Ros2Qos::Volatile, u"/lidar"_s),
+            endpoint(2, u"/b"_s, true, Ros2Qos::BestEffort, Ros2Qos::Volatile, u"/lidar"_s),
+            endpoint(3, u"/c"_s, true, Ros2Qos::Reliable, Ros2Qos::Volatile, u"/odom"_s),
+            endpoint(4, u"/d"_s, true, Ros2Qos::Reliable, Ros2Qos::Volatile, u"/mqtt_client"_s),
+            endpoint(5, u"/d"_s, false, Ros2Qos::Reliable, Ros2Qos::TransientLocal, u"/planner"_s),
+            endpoint(6, u"/e"_s, true, Ros2Qos::Reliable, Ros2Qos::TransientLocal, u"/mqtt_client"_s),
+            endpoint(7, u"/e"_s, false, Ros2Qos::Reliable, Ros2Qos::TransientLocal, u"/planner"_s)};
+        const Ros2Graph ros2 = Ros2Graph::build(endpoints, {}, 3);
+        RosGraph graph;
+        for (const Ros2Topic& t : ros2.topics)
+            graph.topics.append({t.name, t.type(), {u"/x"_s}, {}});
+
+        MqttTopicTree tree;
+        const qint64 now = 100'000'000'000LL;
+        std::vector<MqttMessage> batch;
+        for (const QString& t : {u"a"_s, u"b"_s, u"c"_s, u"d"_s, u"e"_s, u"b2"_s})
+            batch.push_back({t, "x", now - 1'000'000'000LL, 0, false});
+        tree.apply(std::move(batch));
+        MappingHealthEvaluator::Inputs in;
+        in.graph = &graph;
+        in.ros2 = &ros2;
+        in.rosReachable = true;
+        in.mqtt = &tree;
+        in.mqttConnected = true;
+        in.nowNs = now;
+        const auto h = MappingHealthEvaluator::evaluate(cfg, in);
+        QCOMPARE(h[autoQos.id].state, MappingHealth::Healthy);
+        QCOMPARE(h[reliable.id].state, MappingHealth::QosMismatch);
+        QVERIFY2(h[reliable.id].detail.contains(u"/lidar publishes best effort, volatile"_s),
+                 qPrintable(h[reliable.id].detail));
+        QCOMPARE(h[latched.id].state, MappingHealth::QosMismatch);
+        QVERIFY2(h[latched.id].detail.contains(u"transient local"_s), qPrintable(h[latched.id].detail));
+        QCOMPARE(h[toRos.id].state, MappingHealth::QosMismatch);
+        QVERIFY2(h[toRos.id].detail.contains(u"/planner subscribes with reliable, transient local"_s),
+                 qPrintable(h[toRos.id].detail));
+        QCOMPARE(h[toRosLatched.id].state, MappingHealth::Healthy);
+        QCOMPARE(h[substituted.id].state, MappingHealth::Healthy); // not known: not judged
+
+        Ros2Qos q;
+        QVERIFY(MappingHealthEvaluator::bridgeQos(toRos, {}, &q));
+        QCOMPARE(q.reliability, Ros2Qos::Reliable);
+        QCOMPARE(q.durability, Ros2Qos::Volatile);
+        QVERIFY(!MappingHealthEvaluator::bridgeQos(substituted, {}, &q));
+        // Without the ROS 2 domain, nothing is claimed, and the message says which side.
+        in.rosReachable = false;
+        QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[autoQos.id].summary, u"ROS 2 domain not joined"_s);
     }
 };
 

@@ -36,6 +36,7 @@ QIcon SeverityIconProxy::healthIcon(int state)
         colour = QColor(0xe0, 0x8e, 0x00);
         break;
     case MappingHealth::TypeMismatch:
+    case MappingHealth::QosMismatch:
         colour = QColor(0xb0, 0x00, 0x20);
         break;
     case MappingHealth::Idle:

@@ -177,6 +177,9 @@ void MapPage::setUpDrops()
     m_session->rosTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
     });
+    m_session->ros2Topics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+        return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
+    });
     m_session->mqttTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeRosTopics(TopicMime::decode(data, TopicMime::rosType()), target).isEmpty();
     });
@@ -367,13 +370,29 @@ void MapPage::updateBridgedTopics()
     m_mqttBridged->setBridged(mqtt);
 }
 
+bool MapPage::usesRos2() const
+{
+    return m_doc->config().layout == ConfigLayout::Ros2 && m_session->isRos2Running();
+}
+
 void MapPage::updateHealth()
 {
     const qint64 now = wallClockNs();
-    const QHash<QString, RosMonitorStats> monitored = m_session->rosMonitor()->snapshot(now);
+    // A config in the ROS 2 layout maps against the ROS 2 graph when the Discover page shows one.
+    const bool ros2 = usesRos2();
+    RosTopicModel* topics = ros2 ? m_session->ros2Topics() : m_session->rosTopics();
+    if (m_rosBridged->sourceModel() != topics) {
+        m_rosBridged->setSourceModel(topics);
+        updateBridgedTopics();
+    }
+    const QHash<QString, RosMonitorStats> monitored = ros2
+        ? LiveSession::toRosStats(m_session->ros2()->snapshot(now))
+        : m_session->rosMonitor()->snapshot(now);
+    const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_session->ros2()->graph()) : RosGraph();
     MappingHealthEvaluator::Inputs in;
-    in.graph = &m_session->rosGraph()->graph();
-    in.rosReachable = m_session->rosGraph()->isReachable();
+    in.graph = ros2 ? &ros2Graph : &m_session->rosGraph()->graph();
+    in.rosReachable = ros2 || m_session->rosGraph()->isReachable(); // ROS 2 has no master to miss
+    in.ros2 = ros2 ? &m_session->ros2()->graph() : nullptr;
     in.monitored = &monitored;
     in.mqtt = m_session->mqttTopics();
     in.mqttConnected = m_session->mqtt()->state() == MqttConnection::State::Connected;

@@ -47,6 +47,8 @@ public:
     bool retarget(quint64 mappingId, const QMimeData* data);
     /// Re-evaluates every mapping's health now (a timer does it every second otherwise).
     void updateHealth();
+    /// The config is in the ROS 2 layout and a ROS 2 graph is there to map it against.
+    bool usesRos2() const;
 
 private:
     /// What one bridging gesture does: new mappings, and existing ones pointed elsewhere.
