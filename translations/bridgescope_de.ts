@@ -1395,26 +1395,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>ROS-2-Domäne %1: Teilnehmer %2, Topics %3, Knoten %4</translation>
     </message>
     <message>
-        <source>Which ROS graph to list: 1 (through the master, the default), 2 (through DDS) or both.</source>
-        <translation>Welcher ROS-Graph gelistet wird: 1 (über den Master, Standard), 2 (über DDS) oder both (beide).</translation>
-    </message>
-    <message>
-        <source>ROS 2 domain id, 0 to 232 (default $ROS_DOMAIN_ID, else 0).</source>
-        <translation>ROS-2-Domänen-ID, 0 bis 232 (Standard $ROS_DOMAIN_ID, sonst 0).</translation>
-    </message>
-    <message>
-        <source>ROS 2 discovery on this host only, over 127.0.0.1 (as ROS_LOCALHOST_ONLY=1).</source>
-        <translation>ROS-2-Erkennung nur auf diesem Rechner, über 127.0.0.1 (wie ROS_LOCALHOST_ONLY=1).</translation>
-    </message>
-    <message>
-        <source>--ros takes 1, 2 or both, not &quot;%1&quot;</source>
-        <translation>--ros erwartet 1, 2 oder both, nicht „%1“</translation>
-    </message>
-    <message>
-        <source>--ros-domain takes a domain id from 0 to %1</source>
-        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
-    </message>
-    <message>
         <source>no participant</source>
         <translation>kein Teilnehmer</translation>
     </message>
@@ -2696,26 +2676,6 @@ factors:
     <message>
         <source>list ROS, ROS 2 and MQTT topics</source>
         <translation>ROS-, ROS-2- und MQTT-Topics auflisten</translation>
-    </message>
-    <message>
-        <source>ROS graphs to show: 1, 2 or both.</source>
-        <translation>Anzuzeigende ROS-Graphen: 1, 2 oder both.</translation>
-    </message>
-    <message>
-        <source>ROS 2 domain id, 0 to 232.</source>
-        <translation>ROS-2-Domänen-ID, 0 bis 232.</translation>
-    </message>
-    <message>
-        <source>ROS 2 discovery on this host only.</source>
-        <translation>ROS-2-Erkennung nur auf diesem Rechner.</translation>
-    </message>
-    <message>
-        <source>--ros takes 1, 2 or both</source>
-        <translation>--ros erwartet 1, 2 oder both</translation>
-    </message>
-    <message>
-        <source>--ros-domain takes a domain id from 0 to %1</source>
-        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
     </message>
 </context>
 <context>
@@ -6286,6 +6246,29 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>unknown type &apos;%1&apos;</source>
         <translation>unbekannter Typ &apos;%1&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>RosOptions</name>
+    <message>
+        <source>Which ROS graphs: 1 (through the master), 2 (through DDS) or both (default %1).</source>
+        <translation>Welche ROS-Graphen: 1 (über den Master), 2 (über DDS) oder both (beide; Standard %1).</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain id, 0 to 232 (default $ROS_DOMAIN_ID, else 0).</source>
+        <translation>ROS-2-Domänen-ID, 0 bis 232 (Standard $ROS_DOMAIN_ID, sonst 0).</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery on this host only, over 127.0.0.1 (as ROS_LOCALHOST_ONLY=1).</source>
+        <translation>ROS-2-Erkennung nur auf diesem Rechner, über 127.0.0.1 (wie ROS_LOCALHOST_ONLY=1).</translation>
+    </message>
+    <message>
+        <source>--ros takes 1, 2 or both, not &quot;%1&quot;</source>
+        <translation>--ros erwartet 1, 2 oder both, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--ros-domain takes a domain id from 0 to %1</source>
+        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
     </message>
 </context>
 <context>

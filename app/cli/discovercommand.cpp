@@ -2,6 +2,7 @@
 #include "discovercommand.h"
 
 #include "app/cli/clioutput.h"
+#include "app/cli/rosoptions.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
@@ -199,18 +200,9 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     const QCommandLineOption json(u"json"_s, Discover::tr("Print one JSON document."));
     const QCommandLineOption filter(
         u"filter"_s, Discover::tr("MQTT topic filter to subscribe (default #; repeatable)."), u"FILTER"_s);
-    const QCommandLineOption ros(
-        u"ros"_s,
-        Discover::tr("Which ROS graph to list: 1 (through the master, the default), 2 (through "
-                     "DDS) or both."),
-        u"1|2|both"_s, u"1"_s);
-    const QCommandLineOption domain(
-        u"ros-domain"_s, Discover::tr("ROS 2 domain id, 0 to 232 (default $ROS_DOMAIN_ID, else 0)."),
-        u"ID"_s);
-    const QCommandLineOption localhost(u"ros-localhost-only"_s,
-                                       Discover::tr("ROS 2 discovery on this host only, over 127.0.0.1 (as "
-                                                    "ROS_LOCALHOST_ONLY=1)."));
-    parser.addOptions({broker, master, seconds, json, filter, ros, domain, localhost});
+    parser.addOptions({broker, master, seconds, json, filter});
+    RosOptions ros;
+    ros.addTo(parser);
     QStringList args = arguments;
     args.replace(0, u"bridgescope discover"_s);
     const int parsed = CliOutput::parseCommand(
@@ -236,27 +228,16 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     }
     request->masterUri = parser.value(master);
     request->json = parser.isSet(json);
-    const QString which = parser.value(ros);
-    if (which != u"1"_s && which != u"2"_s && which != u"both"_s) {
-        err(Discover::tr("--ros takes 1, 2 or both, not \"%1\"").arg(which.left(40)));
+    QString error;
+    if (!ros.read(parser, &error)) {
+        err(error);
         return ExitUsage;
     }
-    request->ros1 = which != u"2"_s;
-    request->ros2 = which != u"1"_s;
-    QString envError;
-    request->ros2Options = Ros2Options::fromEnvironment(&envError);
-    if (request->ros2 && !envError.isEmpty())
-        err(envError);
-    if (parser.isSet(domain)) {
-        const int id = parser.value(domain).toInt(&ok);
-        if (!ok || id < 0 || id > Ros2Options::kMaxDomain) {
-            err(Discover::tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain));
-            return ExitUsage;
-        }
-        request->ros2Options.domain = id;
-    }
-    if (parser.isSet(localhost))
-        request->ros2Options.localhostOnly = true;
+    request->ros1 = ros.ros1;
+    request->ros2 = ros.ros2;
+    request->ros2Options = ros.ros2Options;
+    if (request->ros2 && !ros.environmentError.isEmpty())
+        err(ros.environmentError);
     return -1;
 }
 

@@ -2,6 +2,7 @@
 #include "watchcommand.h"
 
 #include "app/cli/clioutput.h"
+#include "app/cli/rosoptions.h"
 #include "base/wallclock.h"
 #include "base/yamllimits.h"
 #include "config/configreader.h"
@@ -46,6 +47,7 @@ struct WatchRequest
     double seconds = 0; ///< 0: until Ctrl+C
     bool discover = true; ///< also the links mqtt_client announces that no config has
     std::optional<Pipeline> pipeline; ///< --pipeline: latency of the mappings with stamp topics, and recorded
+    std::optional<Ros2Options> ros2; ///< --ros 2 or both: the ROS 2 domain joined as well
 };
 
 /// Reads the configs; their names are the files' base names (made unique).
@@ -130,6 +132,8 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
         u"PIPELINE.yaml"_s);
     parser.addOptions(
         {broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover, pipeline});
+    RosOptions ros;
+    ros.addTo(parser);
     parser.addPositionalArgument(u"CONFIG"_s, Watch::tr("mqtt_client configs whose mappings are watched."),
                                  u"[CONFIG.yaml...]"_s);
     QStringList args = arguments;
@@ -181,6 +185,13 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
             return ExitUsage;
         }
     }
+    if (!ros.read(parser, &why)) {
+        err(why);
+        return ExitUsage;
+    }
+    if (ros.ros2 && !ros.environmentError.isEmpty())
+        err(ros.environmentError);
+    request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     request->masterUri = parser.value(master);
     request->metrics = parser.value(metrics);
     request->eventsFile = parser.value(events);
@@ -217,6 +228,10 @@ int runWatch(const WatchRequest& request)
     }
     LiveSession live;
     live.setRosMasterUri(request.masterUri);
+    if (request.ros2 && !live.startRos2(*request.ros2, &why)) {
+        err(why);
+        return ExitFailed;
+    }
     WatchSession watch(&live);
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);

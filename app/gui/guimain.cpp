@@ -2,6 +2,7 @@
 #include "guimain.h"
 
 #include "app/cli/clioutput.h"
+#include "app/cli/rosoptions.h"
 #include "app/gui/demostart.h"
 #include "app/gui/mainwindow.h"
 #include "demo/demolab.h"
@@ -128,12 +129,9 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     const QCommandLineOption theme(u"theme"_s, Gui::tr("Colours: system (default), light or dark."),
                                    u"THEME"_s);
-    const QCommandLineOption ros(u"ros"_s, Gui::tr("ROS graphs to show: 1, 2 or both."), u"1|2|both"_s);
-    const QCommandLineOption domain(u"ros-domain"_s, Gui::tr("ROS 2 domain id, 0 to 232."), u"ID"_s);
-    const QCommandLineOption localhost(u"ros-localhost-only"_s,
-                                       Gui::tr("ROS 2 discovery on this host only."));
-    parser.addOptions(
-        {screenshot, after, broker, master, pipeline, page, demo, theme, ros, domain, localhost});
+    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo, theme});
+    RosOptions ros;
+    ros.addTo(parser);
     parser.addPositionalArgument(
         u"FILE"_s,
         Gui::tr("Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open."),
@@ -173,26 +171,15 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         CliOutput::err(Gui::tr("--theme takes one of: %1").arg(Theme::names().join(u", "_s)));
         return ExitUsage;
     }
-    if (parser.isSet(ros)) {
-        request->rosGraphs = int(QStringList {u"1"_s, u"2"_s, u"both"_s}.indexOf(parser.value(ros)));
-        if (request->rosGraphs < 0) {
-            CliOutput::err(Gui::tr("--ros takes 1, 2 or both"));
-            return ExitUsage;
-        }
+    QString rosError;
+    if (!ros.read(parser, &rosError)) {
+        CliOutput::err(rosError);
+        return ExitUsage;
     }
-    if (parser.isSet(domain) || parser.isSet(localhost)) {
-        Ros2Options o = Ros2Options::fromEnvironment();
-        if (parser.isSet(domain)) {
-            o.domain = parser.value(domain).toInt(&ok);
-            if (!ok || o.domain < 0 || o.domain > Ros2Options::kMaxDomain) {
-                CliOutput::err(
-                    Gui::tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain));
-                return ExitUsage;
-            }
-        }
-        o.localhostOnly = o.localhostOnly || parser.isSet(localhost);
-        request->ros2 = o;
-    }
+    if (ros.graphsSet)
+        request->rosGraphs = ros.ros1 && ros.ros2 ? 2 : (ros.ros2 ? 1 : 0);
+    if (ros.ros2OptionsSet)
+        request->ros2 = ros.ros2Options;
     request->masterUri = parser.value(master);
     request->pipeline = parser.value(pipeline);
     request->demo = parser.isSet(demo);

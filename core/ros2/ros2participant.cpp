@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ros2/ros2participant.h"
 
+#include "base/eventbuffer.h"
 #include "base/logging.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
@@ -176,6 +177,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
         RateWindow rates;
     };
     std::map<QString, Monitored> monitored; ///< under `mutex`
+    std::unique_ptr<EventBuffer<Ros2Arrival>> arrivals; ///< set by keepArrivals(), under `mutex`
 
     DomainParticipant* participant = nullptr;
     Subscriber* subscriber = nullptr;
@@ -301,6 +303,9 @@ struct Ros2Participant::Private : public DomainParticipantListener
         s.lastMessage
             = QByteArray(reinterpret_cast<const char*>(sample.bytes.data()), qsizetype(sample.bytes.size()));
         it->second.rates.add(now, s.lastSize);
+        if (arrivals)
+            arrivals->push(
+                Ros2Arrival {topic, now, s.lastSize, s.lastMessage.mid(4, Ros2Arrival::kHeadBytes)});
     }
 
     Topic* topicFor(const std::string& ddsTopic, const std::string& ddsType)
@@ -388,6 +393,8 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     {
         std::lock_guard<std::mutex> lock(d->mutex);
         d->ownPrefix = prefixBytes(d->participant->guid().guidPrefix);
+        if (m_keepArrivals)
+            d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(m_keepArrivals);
     }
     d->subscriber = d->participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
 
@@ -550,4 +557,32 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
         out.insert(topic, s);
     }
     return out;
+}
+
+void Ros2Participant::keepArrivals(std::size_t maxArrivals)
+{
+    m_keepArrivals = maxArrivals;
+    if (!d)
+        return;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    if (maxArrivals == 0)
+        d->arrivals.reset();
+    else
+        d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(maxArrivals);
+}
+
+std::vector<Ros2Arrival> Ros2Participant::takeArrivals()
+{
+    if (!d)
+        return {};
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->arrivals ? d->arrivals->take() : std::vector<Ros2Arrival>();
+}
+
+quint64 Ros2Participant::droppedArrivals() const
+{
+    if (!d)
+        return 0;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    return d->arrivals ? d->arrivals->dropped() : 0;
 }

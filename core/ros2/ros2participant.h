@@ -9,6 +9,7 @@
 #include <QObject>
 #include <QString>
 #include <QTimer>
+#include <vector>
 
 /// Figures of one monitored ROS 2 topic, as RosMonitorStats are for ROS 1.
 struct Ros2MonitorStats
@@ -22,6 +23,17 @@ struct Ros2MonitorStats
     QString type; ///< ROS 2 name
     int matchedPublishers = 0;
     QByteArray lastMessage; ///< CDR with its encapsulation header
+};
+
+/// One sample as the monitor saw it, for consumers that need every sample (Watch): the first bytes
+/// of the message after its 4-byte encapsulation header (a Header's stamp, a std_msgs/Float64).
+struct Ros2Arrival
+{
+    static constexpr int kHeadBytes = 16;
+    QString topic;
+    qint64 receivedNs = 0; ///< wall clock
+    int size = 0; ///< CDR bytes, header included
+    QByteArray head; ///< the message's first kHeadBytes bytes after the encapsulation header
 };
 
 /// How the participant reaches the graph.
@@ -69,6 +81,11 @@ public:
     void unmonitor(const QString& topic);
     bool isMonitored(const QString& topic) const;
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
+    /// From now on (also across stop() and start()) every sample of a monitored topic is also kept,
+    /// up to `maxArrivals` between two takeArrivals() (more are dropped and counted); 0 stops it.
+    void keepArrivals(std::size_t maxArrivals);
+    std::vector<Ros2Arrival> takeArrivals();
+    quint64 droppedArrivals() const;
 
 signals:
     void graphChanged(const Ros2Graph& graph);
@@ -80,6 +97,7 @@ private:
     struct Private;
     std::shared_ptr<Private> d;
     Ros2Options m_options;
+    std::size_t m_keepArrivals = 0;
     Ros2Graph m_graph;
     QTimer m_timer;
 };

@@ -6,6 +6,7 @@
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
+#include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -20,8 +21,10 @@ WatchSession::WatchSession(LiveSession* live, QObject* parent)
     , m_live(live)
     , m_monitor(new LinkMonitor(this))
     , m_rosMonitor(live->rosMonitor())
+    , m_ros2(live->ros2())
 {
     live->rosMonitor()->keepArrivals(kMaxRosArrivals);
+    live->ros2()->keepArrivals(kMaxRosArrivals);
     // The live session may outlive this watch: its listener then does nothing.
     live->addMqttListener(
         [monitor = QPointer<LinkMonitor>(m_monitor)](const std::vector<MqttMessage>& batch) {
@@ -30,6 +33,7 @@ WatchSession::WatchSession(LiveSession* live, QObject* parent)
         });
     connect(live, &LiveSession::drained, this, &WatchSession::update);
     connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &WatchSession::syncRosTopics);
+    connect(live->ros2(), &Ros2Participant::graphChanged, this, &WatchSession::syncRosTopics);
 }
 
 WatchSession::~WatchSession()
@@ -37,6 +41,8 @@ WatchSession::~WatchSession()
     // The live session may go first (siblings in a window die in the order they were made).
     if (m_rosMonitor)
         m_rosMonitor->keepArrivals(0);
+    if (m_ros2)
+        m_ros2->keepArrivals(0);
 }
 
 void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
@@ -93,6 +99,16 @@ bool WatchSession::discoverLinks()
 void WatchSession::update(qint64 nowNs)
 {
     m_monitor->addRos(m_live->rosMonitor()->takeArrivals());
+    if (m_live->isRos2Running()) {
+        // ROS 2 samples as ROS ones: their head is the message after the CDR header (a std_msgs/Float64
+        // latency reads the same); no Header.seq in ROS 2, so no sequence gaps from them
+        std::vector<Ros2Arrival> ros2 = m_live->ros2()->takeArrivals();
+        std::vector<RosArrival> batch;
+        batch.reserve(ros2.size());
+        for (Ros2Arrival& a : ros2)
+            batch.push_back(RosArrival {std::move(a.topic), a.receivedNs, a.size, std::move(a.head)});
+        m_monitor->addRos(batch);
+    }
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
@@ -111,19 +127,38 @@ void WatchSession::update(qint64 nowNs)
 
 void WatchSession::syncRosTopics()
 {
+    // Each wanted topic is watched where it is: on the ROS 2 domain when that has it (a ROS 2
+    // subscription needs the type its publishers announce), else through the ROS 1 master.
+    QSet<QString> onRos2;
+    if (m_live->isRos2Running())
+        for (const Ros2Topic& t : m_live->ros2()->graph().topics)
+            if (!t.publishers.isEmpty())
+                onRos2.insert(t.name);
     QStringList graphTopics;
     for (const RosTopicInfo& t : m_live->rosGraph()->graph().topics)
         graphTopics << t.name;
+    graphTopics << QStringList(onRos2.cbegin(), onRos2.cend());
     const QStringList wanted = m_monitor->rosTopicsToMonitor(graphTopics);
-    const QSet<QString> want(wanted.cbegin(), wanted.cend());
+    QSet<QString> want1, want2;
+    for (const QString& t : wanted)
+        (onRos2.contains(t) ? want2 : want1).insert(t);
+
     RosMonitor* ros = m_live->rosMonitor();
     for (const QString& t : std::as_const(m_monitored))
-        if (!want.contains(t))
+        if (!want1.contains(t))
             ros->unmonitor(t);
-    for (const QString& t : want)
+    for (const QString& t : std::as_const(want1))
         if (!m_monitored.contains(t))
             ros->monitor(t);
-    m_monitored = want;
+    m_monitored = want1;
+    Ros2Participant* ros2 = m_live->ros2();
+    for (const QString& t : std::as_const(m_monitored2))
+        if (!want2.contains(t))
+            ros2->unmonitor(t);
+    for (const QString& t : std::as_const(want2))
+        if (!m_monitored2.contains(t))
+            ros2->monitor(t);
+    m_monitored2 = want2;
 }
 
 void WatchSession::useMeasurement(MeasureSession* measure)

@@ -9,11 +9,13 @@
 class LiveSession;
 class MeasureSession;
 class RosMonitor;
+class Ros2Participant;
 
 /// Watching links live: feeds a LinkMonitor from a LiveSession (the MQTT batches of every drain,
-/// the ROS monitor's arrivals), keeps the ROS subscriptions in step with the links and the ROS
-/// graph, and ticks the monitor four times a second. Broker and master restarts are the live
-/// session's business (it reconnects and registers again); the links simply resume.
+/// the ROS monitor's arrivals, and the ROS 2 participant's while it is in a domain), keeps the ROS
+/// and ROS 2 subscriptions in step with the links and the graphs (a link's ROS topic is watched on
+/// whichever graph has it), and ticks the monitor four times a second. Broker and master restarts are the
+/// live session's business (it reconnects and registers again); the links simply resume.
 class WatchSession : public QObject
 {
     Q_OBJECT
@@ -47,9 +49,11 @@ private:
     LiveSession* m_live;
     LinkMonitor* m_monitor;
     QPointer<RosMonitor> m_rosMonitor;
+    QPointer<Ros2Participant> m_ros2;
     qint64 m_lastTickNs = 0;
     qint64 m_lastSyncNs = 0;
     QSet<QString> m_monitored;
+    QSet<QString> m_monitored2; ///< ROS 2 topics subscribed
     QList<LinkDef> m_configLinks;
     QSet<QString> m_configMqttTopics;
     QStringList m_discovered; ///< MQTT topics of the discovered links, sorted

@@ -3,14 +3,22 @@
 // built on Cyclone DDS (tests/ros2peer) that speak as rmw_cyclonedds_cpp does (REP 2008 names and
 // types, XCDR1, ros_discovery_info). Topics, types, node names, QoS and counts appear and
 // disappear; samples of std_msgs/String, geometry_msgs/PoseStamped and sensor_msgs/PointCloud2
-// decode to what was sent; an unknown type stays raw bytes of the right size.
+// decode to what was sent; an unknown type stays raw bytes of the right size. `bridgescope watch`
+// watches a ROS 2 config's links from DDS and the broker.
 #include "base/wallclock.h"
+#include "mqtt/mqttconnection.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
+#include "testservers.h"
 #include "wire/ros2definitions.h"
 
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 
 using namespace Qt::StringLiterals;
 
@@ -206,6 +214,79 @@ private slots:
         p.monitor(u"/nobody"_s);
         QCOMPARE(failed.size(), 1);
         QVERIFY(!p.isMonitored(u"/nobody"_s));
+    }
+
+    // watch --ros 2: a ROS 2 config's links, the ROS end read from DDS. A stand-in for the bridge
+    // feeds one MQTT topic; the other stays silent while its ROS 2 source publishes: a stall.
+    void watchRos2Config()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:20"_s,
+                         u"--pub"_s, u"/idle:std_msgs/msg/String:20"_s, u"--duration"_s, u"60"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        const QString config = servers.tempPath() + u"/bridge.ros2.yaml"_s;
+        QFile f(config);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("/**/*:\n  ros__parameters:\n    broker: {host: 127.0.0.1, port: 1883}\n    bridge:\n"
+                "      ros2mqtt:\n        ros_topics: [/chatter, /idle]\n"
+                "        /chatter: {mqtt_topic: lab/chatter}\n        /idle: {mqtt_topic: lab/idle}\n");
+        f.close();
+
+        MqttConnection bridge; // stands in for mqtt_client: /chatter arrives on the broker
+        bridge.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == MqttConnection::State::Connected, 10000);
+        QTimer feed;
+        int fed = 0;
+        connect(&feed, &QTimer::timeout, this, [&] {
+            if (bridge.publish(u"lab/chatter"_s, "hello", 0, false))
+                ++fed;
+        });
+        feed.start(50);
+
+        const quint16 port = TestServers::freePort();
+        QProcess watch;
+        watch.setProcessChannelMode(QProcess::SeparateChannels);
+        watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"watch"_s, config, u"--broker"_s, servers.brokerUrl(), u"--ros"_s, u"2"_s,
+                     u"--ros-domain"_s, QString::number(m_domain), u"--ros-localhost-only"_s,
+                     u"--no-discover"_s, u"--metrics"_s, u"127.0.0.1:%1"_s.arg(port), u"--seconds"_s,
+                     u"30"_s});
+        QVERIFY(watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(port, 10000));
+        const auto value = [&](const QString& topic, const QString& side) {
+            const double v = TestServers::metricSample(
+                TestServers::httpGet(port, u"/metrics"_s), u"bridgescope_link_messages_total"_s,
+                {u"topic=\"%1\""_s.arg(topic), u"side=\"%1\""_s.arg(side)});
+            return qIsNaN(v) ? 0.0 : v;
+        };
+        // both ROS 2 sources counted from DDS, /chatter's destination from the broker
+        QTRY_VERIFY_WITH_TIMEOUT(value(u"/chatter"_s, u"source"_s) > 40 && value(u"/idle"_s, u"source"_s) > 40
+                                     && value(u"/chatter"_s, u"destination"_s) > 40,
+                                 20000);
+        const double before = value(u"/chatter"_s, u"source"_s);
+        QTest::qWait(2000);
+        const double rate = (value(u"/chatter"_s, u"source"_s) - before) / 2.0;
+        QVERIFY2(rate > 14 && rate < 26, qPrintable(QString::number(rate)));
+        QCOMPARE(value(u"/idle"_s, u"destination"_s), 0.0);
+        // the silent destination of a publishing source is a stall event on stdout
+        QString out;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (out += QString::fromUtf8(watch.readAllStandardOutput())).contains(u"/idle"_s), 15000);
+        bool stall = false;
+        for (const QString& line : out.split(u'\n', Qt::SkipEmptyParts)) {
+            const QJsonObject e = QJsonDocument::fromJson(line.toUtf8()).object();
+            if (e.value(u"ros_topic"_s).toString() == u"/idle"_s
+                && e.value(u"event"_s).toString() == u"start"_s)
+                stall = stall || e.value(u"reasons"_s).toVariant().toStringList().contains(u"stall"_s);
+            QVERIFY2(e.value(u"ros_topic"_s).toString() != u"/chatter"_s, qPrintable(line));
+        }
+        QVERIFY2(stall, qPrintable(out));
+        watch.terminate();
+        QVERIFY(watch.waitForFinished(10000));
+        QCOMPARE(watch.exitCode(), 0);
+        QVERIFY(fed > 0);
     }
 };
 
