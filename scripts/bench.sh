@@ -7,7 +7,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 export QT_QPA_PLATFORM=offscreen
 for b in "$root"/build-release/bench/bench_*; do
     [[ "$(basename "$b")" == bench_loadgen ]] && continue
-    [ -x "$b" ] || continue
+    [ -f "$b" ] && [ -x "$b" ] || continue # not the *_autogen folders
     if [ $# -gt 0 ] && [[ ! " $* " == *" $(basename "$b") "* ]]; then continue; fi
     echo "== $(basename "$b")"
     "$b"
