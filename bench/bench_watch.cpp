@@ -26,24 +26,10 @@
 #include <QTcpSocket>
 #include <QTest>
 #include <QTimer>
-#include <unistd.h>
 
 using namespace Qt::StringLiterals;
 
 namespace {
-
-/// User + system CPU seconds of a process so far.
-double cpuSeconds(qint64 pid)
-{
-    QFile f(u"/proc/%1/stat"_s.arg(pid));
-    if (!f.open(QIODevice::ReadOnly))
-        return -1;
-    const QByteArray s = f.readAll();
-    const QList<QByteArray> fields = s.mid(s.lastIndexOf(')') + 2).split(' ');
-    // After the command: state is field 3; utime and stime are fields 14 and 15.
-    return double(fields.value(11).toLongLong() + fields.value(12).toLongLong())
-        / double(::sysconf(_SC_CLK_TCK));
-}
 
 QString topic(int i)
 {
@@ -137,15 +123,15 @@ int main(int argc, char** argv)
         QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
         {url, QString::number(links), QString::number(rate), QString::number(seconds + 15), u"32"_s});
     QTest::qWait(5000); // the first 5 s: every link starts
-    const double watchCpu0 = cpuSeconds(watch.processId());
-    const double subCpu0 = cpuSeconds(sub.processId());
+    const double watchCpu0 = Bench::processCpuSeconds(watch.processId());
+    const double subCpu0 = Bench::processCpuSeconds(sub.processId());
     const quint64 subLines0 = subLines;
     const QByteArray m0 = scrape(metricsPort);
     QElapsedTimer span;
     span.start();
     const std::vector<double> lags = Bench::measureLag([&] { return span.elapsed() < seconds * 1000; });
-    const double watchCpu = cpuSeconds(watch.processId()) - watchCpu0;
-    const double subCpu = cpuSeconds(sub.processId()) - subCpu0;
+    const double watchCpu = Bench::processCpuSeconds(watch.processId()) - watchCpu0;
+    const double subCpu = Bench::processCpuSeconds(sub.processId()) - subCpu0;
     QTest::qWait(200);
     const quint64 subMessages = subLines - subLines0;
     const QByteArray m1 = scrape(metricsPort);

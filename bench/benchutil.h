@@ -11,6 +11,7 @@
 #include <QString>
 #include <QtGlobal>
 #include <QTimer>
+#include <unistd.h>
 #include <vector>
 
 /// Small helpers shared by the benchmarks: repeat, take the median, print a table row.
@@ -91,5 +92,18 @@ inline qint64 statusKb(const char* field)
         if (line.startsWith(field))
             return line.mid(int(qstrlen(field))).trimmed().split(' ').first().toLongLong();
     return -1;
+}
+
+/// User + system CPU seconds of a running process so far (/proc/PID/stat), or -1.
+inline double processCpuSeconds(qint64 pid)
+{
+    QFile f(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    const QByteArray s = f.readAll();
+    const QList<QByteArray> fields = s.mid(s.lastIndexOf(')') + 2).split(' ');
+    // After the command: state is field 3; utime and stime are fields 14 and 15.
+    return double(fields.value(11).toLongLong() + fields.value(12).toLongLong())
+        / double(::sysconf(_SC_CLK_TCK));
 }
 } // namespace Bench

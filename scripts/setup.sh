@@ -27,6 +27,8 @@ PACKAGES=(
     # ROS 2 on the wire: Fast DDS, the DDS library core/ros2 is built on, and Cyclone DDS, the
     # other DDS implementation the test peers (tests/ros2peer) are built on to prove interop
     libfastrtps-dev cyclonedds-dev cyclonedds-tools
+    # bench_ros2: Fast DDS's own code generator makes the peer's message types from the IDL
+    fastddsgen
     python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-rospy python3-rostopic
     # servers the tests and the demo start
     mosquitto mosquitto-clients

@@ -48,7 +48,9 @@ struct peer {
     dds_entity_t graph_writer, graph_reader;               // ros_discovery_info
     dds_entity_t builtin_pub_reader, builtin_sub_reader;   // --show-discovery
     dds_guid_t guid;                                       // of the participant
-    struct pub_state pubs[PEER_MAX_ENDPOINTS];
+    struct pub_state *pubs;                                // --pub, then --many
+    unsigned npubs;
+    struct peer_endpoint *many;                            // the endpoints of --many
     struct sub_state subs[PEER_MAX_ENDPOINTS];
 };
 
@@ -150,7 +152,12 @@ static bool publish_graph(bool with_node)
 {
     rmw_dds_common_msg_dds__ParticipantEntitiesInfo_ info;
     rmw_dds_common_msg_dds__NodeEntitiesInfo_ node;
-    rmw_dds_common_msg_dds__Gid_ readers[PEER_MAX_ENDPOINTS], writers[PEER_MAX_ENDPOINTS];
+    rmw_dds_common_msg_dds__Gid_ readers[PEER_MAX_ENDPOINTS];
+    rmw_dds_common_msg_dds__Gid_ *writers = calloc(peer.npubs > 0 ? peer.npubs : 1, sizeof *writers);
+    if (writers == NULL) {
+        fprintf(stderr, "bs_ros2peer: out of memory\n");
+        return false;
+    }
     memset(&info, 0, sizeof info);
     memset(&node, 0, sizeof node);
     memcpy(info.gid.data, peer.guid.v, sizeof peer.guid.v);
@@ -162,7 +169,7 @@ static bool publish_graph(bool with_node)
         for (unsigned i = 0; i < peer.opt.nsubs; i++)
             if (peer.subs[i].reader > 0 && entity_gid(peer.subs[i].reader, &readers[nr]))
                 nr++;
-        for (unsigned i = 0; i < peer.opt.npubs; i++)
+        for (unsigned i = 0; i < peer.npubs; i++)
             if (peer.pubs[i].writer > 0 && entity_gid(peer.pubs[i].writer, &writers[nw]))
                 nw++;
         node.reader_gid_seq._buffer = readers;
@@ -172,7 +179,9 @@ static bool publish_graph(bool with_node)
         info.node_entities_info_seq._buffer = &node;
         info.node_entities_info_seq._length = info.node_entities_info_seq._maximum = 1;
     }
-    return dds_ok(dds_write(peer.graph_writer, &info), "dds_write ros_discovery_info");
+    bool ok = dds_ok(dds_write(peer.graph_writer, &info), "dds_write ros_discovery_info");
+    free(writers);
+    return ok;
 }
 
 static bool create_entities(void)
@@ -233,11 +242,31 @@ static bool create_entities(void)
         dds_waitset_attach(peer.waitset, peer.builtin_sub_reader, ATTACH(ATTACH_BUILTIN_SUB, 0));
     }
 
+    // --pub, then --many's N publishers on PREFIX<FIRST>, PREFIX<FIRST + 1>, ...
+    unsigned npubs = o->npubs + o->many.count;
+    peer.pubs = calloc(npubs > 0 ? npubs : 1, sizeof *peer.pubs);
+    peer.many = calloc(o->many.count > 0 ? o->many.count : 1, sizeof *peer.many);
+    if (peer.pubs == NULL || peer.many == NULL) {
+        fprintf(stderr, "bs_ros2peer: out of memory\n");
+        return false;
+    }
+    peer.npubs = npubs;
+    size_t prefix_len = strlen(o->many.ep.topic);   // parsing left room for the four digits
+    for (unsigned i = 0; i < o->many.count; i++) {
+        peer.many[i] = o->many.ep;
+        unsigned index = o->many.first + i;          // below 10000: parsing checked FIRST + N
+        char *digits = peer.many[i].topic + prefix_len;
+        for (int k = (int)PEER_MANY_DIGITS - 1; k >= 0; k--, index /= 10)
+            digits[k] = (char)('0' + index % 10);
+        digits[PEER_MANY_DIGITS] = '\0';
+    }
+
     // ROS topic /foo is DDS topic rt/foo; the type is pkg::msg::dds_::Type_ (the descriptor's name).
     char dds_topic[PEER_MAX_NAME + 8];
-    for (unsigned i = 0; i < o->npubs; i++) {
+    for (unsigned i = 0; i < peer.npubs; i++) {
         struct pub_state *p = &peer.pubs[i];
-        p->ep = &o->pubs[i];
+        p->ep = i < o->npubs ? &o->pubs[i] : &peer.many[i - o->npubs];
+        p->done = p->ep->rate_hz <= 0.0; // --many with RATE_HZ 0: never publishes
         snprintf(dds_topic, sizeof dds_topic, "rt%s", p->ep->topic);
         dds_entity_t topic = peer_create_topic(peer.participant, peer_type_descriptor(p->ep->type), dds_topic);
         if (!dds_ok(topic, "dds_create_topic"))
@@ -390,7 +419,7 @@ static void on_builtin_data(dds_entity_t reader, const char *kind)
 
 static void publish_due(double t)
 {
-    for (unsigned i = 0; i < peer.opt.npubs; i++) {
+    for (unsigned i = 0; i < peer.npubs; i++) {
         struct pub_state *p = &peer.pubs[i];
         if (p->done || t < p->next)
             continue;
@@ -412,7 +441,7 @@ static void publish_due(double t)
 static void run(void)
 {
     double start = now_mono(), end = start + peer.opt.duration_s;
-    for (unsigned i = 0; i < peer.opt.npubs; i++)
+    for (unsigned i = 0; i < peer.npubs; i++)
         peer.pubs[i].next = start;
     dds_attach_t xs[2 * PEER_MAX_ENDPOINTS + 3];
     while (!stop_requested) {
@@ -422,7 +451,7 @@ static void run(void)
         publish_due(t);
         // Sleep until the next sample is due, at most 100 ms so that a signal is seen quickly.
         double wake = end;
-        for (unsigned i = 0; i < peer.opt.npubs; i++)
+        for (unsigned i = 0; i < peer.npubs; i++)
             if (!peer.pubs[i].done && peer.pubs[i].next < wake)
                 wake = peer.pubs[i].next;
         double wait = wake - now_mono();
@@ -435,7 +464,7 @@ static void run(void)
             unsigned kind = (unsigned)(xs[k] >> 32), index = (unsigned)(xs[k] & 0xffffffffu);
             switch (kind) {
             case ATTACH_PUB:
-                if (index < peer.opt.npubs)
+                if (index < peer.npubs)
                     on_writer_status(&peer.pubs[index]);
                 break;
             case ATTACH_SUB:
@@ -464,7 +493,7 @@ static void run(void)
 static void shut_down(void)
 {
     if (peer.participant > 0 && peer.graph_writer > 0) {
-        for (unsigned i = 0; i < peer.opt.npubs; i++) {
+        for (unsigned i = 0; i < peer.npubs; i++) {
             if (peer.pubs[i].writer > 0)
                 dds_delete(peer.pubs[i].writer);
             peer.pubs[i].writer = 0;
@@ -479,8 +508,13 @@ static void shut_down(void)
     }
     if (peer.domain > 0)
         dds_delete(peer.domain);
-    for (unsigned i = 0; i < peer.opt.npubs; i++)
+    for (unsigned i = 0; i < peer.npubs && peer.pubs != NULL; i++)
         peer_sample_fini(&peer.pubs[i].sample);
+    free(peer.pubs);
+    free(peer.many);
+    peer.pubs = NULL;
+    peer.many = NULL;
+    peer.npubs = 0;
 }
 
 int main(int argc, char **argv)

@@ -33,6 +33,8 @@ void peer_print_usage(FILE *out, const char *prog)
         "  --node /NS/NAME | NAME     node namespace and name (default /bs_peer)\n"
         "  --pub TOPIC:TYPE[:RATE_HZ[:QOS]]   publish (repeatable, up to %u); RATE_HZ default 10\n"
         "  --sub TOPIC:TYPE[:QOS]     subscribe and print each sample (repeatable, up to %u)\n"
+        "  --many N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]]   N more publishers (at most %u, once), on\n"
+        "                             PREFIX0000.. or PREFIX<FIRST>..; RATE_HZ 0: they never publish\n"
         "  --count N                  stop each publisher after N samples (default unlimited)\n"
         "  --duration SEC             exit after SEC seconds (default 30, at most 600)\n"
         "  --size BYTES               PointCloud2 data and Opaque blob size (default 1024, at most %u)\n"
@@ -52,7 +54,7 @@ void peer_print_usage(FILE *out, const char *prog)
         "(with --cdr: cdr TOPIC N SIZE HEX...; with --show-discovery: endpoint pub|sub DDS_TOPIC\n"
         "DDS_TYPE and node NAMESPACE NAME READERS WRITERS).\n"
         "Exit status: 0 done, 1 DDS error, 2 bad arguments.\n",
-        prog, PEER_MAX_DOMAIN, PEER_MAX_ENDPOINTS, PEER_MAX_ENDPOINTS, PEER_MAX_SIZE);
+        prog, PEER_MAX_DOMAIN, PEER_MAX_ENDPOINTS, PEER_MAX_ENDPOINTS, PEER_MAX_MANY, PEER_MAX_SIZE);
 }
 
 static void set_err(char *err, size_t errlen, const char *fmt, ...)
@@ -183,8 +185,8 @@ static bool parse_qos(const char *s, struct peer_endpoint *ep, char *err, size_t
 
 // TOPIC:TYPE[:RATE_HZ[:QOS]] for a publisher, TOPIC:TYPE[:QOS] for a subscriber. The topic is
 // kept as given; peer_parse_options makes relative names absolute once the node is known.
-static bool parse_endpoint(const char *arg, bool publisher, struct peer_endpoint *ep, char *err,
-                           size_t errlen)
+static bool parse_endpoint(const char *arg, bool publisher, bool rate_zero_ok, struct peer_endpoint *ep,
+                           char *err, size_t errlen)
 {
     char buf[PEER_MAX_NAME + 256];
     if (strlen(arg) >= sizeof buf) {
@@ -228,8 +230,10 @@ static bool parse_endpoint(const char *arg, bool publisher, struct peer_endpoint
     }
     const char *qos = NULL;
     if (publisher) {
-        if (nparts >= 3 && parts[2][0] != '\0' && !parse_double(parts[2], 0.0, true, 1000.0, &ep->rate_hz)) {
-            set_err(err, errlen, "bad rate '%s' (Hz, more than 0, at most 1000)", parts[2]);
+        if (nparts >= 3 && parts[2][0] != '\0'
+            && !parse_double(parts[2], 0.0, !rate_zero_ok, 1000.0, &ep->rate_hz)) {
+            set_err(err, errlen, "bad rate '%s' (Hz, %s 0, at most 1000)", parts[2],
+                    rate_zero_ok ? "at least" : "more than");
             return false;
         }
         qos = nparts >= 4 ? parts[3] : NULL;
@@ -299,6 +303,52 @@ static bool resolve_topic(struct peer_endpoint *ep, const struct peer_options *o
     return true;
 }
 
+// N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]]. The prefix is kept as given; peer_parse_options makes it
+// absolute once the node is known and checks that PREFIX plus four digits is a topic name.
+static bool parse_many(const char *arg, struct peer_many *m, char *err, size_t errlen)
+{
+    char head[32];
+    const char *colon = strchr(arg, ':');
+    size_t len = colon != NULL ? (size_t)(colon - arg) : 0;
+    if (colon == NULL || len == 0 || len >= sizeof head) {
+        set_err(err, errlen, "want N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]], got '%.60s'", arg);
+        return false;
+    }
+    memcpy(head, arg, len);
+    head[len] = '\0';
+    char shown[sizeof head];
+    strcpy(shown, head);
+    char *at = strchr(head, '@');
+    if (at != NULL)
+        *at++ = '\0';
+    uint64_t n = 0, first = 0;
+    if (!parse_u64(head, 1, PEER_MAX_MANY, &n) || (at != NULL && !parse_u64(at, 0, PEER_MANY_END - 1, &first))
+        || n + first > PEER_MANY_END) {
+        set_err(err, errlen, "bad --many count '%s' (N from 1 to %u, FIRST + N at most %u)", shown, PEER_MAX_MANY,
+                PEER_MANY_END);
+        return false;
+    }
+    if (!parse_endpoint(colon + 1, true, true, &m->ep, err, errlen))
+        return false;
+    m->count = (uint32_t)n;
+    m->first = (uint32_t)first;
+    return true;
+}
+
+// The prefix of --many made absolute; PREFIX0000 must be a valid topic name.
+static bool resolve_many(struct peer_many *m, const struct peer_options *o, char *err, size_t errlen)
+{
+    if (strlen(m->ep.topic) + PEER_MANY_DIGITS > PEER_MAX_NAME) {
+        set_err(err, errlen, "--many prefix longer than %u bytes", PEER_MAX_NAME - PEER_MANY_DIGITS);
+        return false;
+    }
+    strcat(m->ep.topic, "0000");
+    if (!resolve_topic(&m->ep, o, err, errlen))
+        return false;
+    m->ep.topic[strlen(m->ep.topic) - PEER_MANY_DIGITS] = '\0';
+    return true;
+}
+
 enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_options *o, char *err,
                                           size_t errlen)
 {
@@ -327,7 +377,7 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
             continue;
         }
         // Every other option takes a value.
-        static const char *const with_value[] = { "--domain", "--node", "--pub", "--sub", "--count",
+        static const char *const with_value[] = { "--domain", "--node", "--pub", "--sub", "--many", "--count",
                                                   "--duration", "--size", "--lease-ms", "--trace" };
         bool known = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
@@ -359,9 +409,16 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
                 set_err(err, errlen, "more than %u %s", PEER_MAX_ENDPOINTS, opt);
                 return PEER_PARSE_ERROR;
             }
-            if (!parse_endpoint(val, pub, pub ? &o->pubs[*n] : &o->subs[*n], err, errlen))
+            if (!parse_endpoint(val, pub, false, pub ? &o->pubs[*n] : &o->subs[*n], err, errlen))
                 return PEER_PARSE_ERROR;
             (*n)++;
+        } else if (strcmp(opt, "--many") == 0) {
+            if (o->many.count > 0) {
+                set_err(err, errlen, "--many given twice");
+                return PEER_PARSE_ERROR;
+            }
+            if (!parse_many(val, &o->many, err, errlen))
+                return PEER_PARSE_ERROR;
         } else if (strcmp(opt, "--count") == 0) {
             if (!parse_u64(val, 1, UINT32_MAX, &u)) {
                 set_err(err, errlen, "bad --count '%s' (1..%u)", val, UINT32_MAX);
@@ -404,5 +461,16 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
     for (unsigned i = 0; i < o->nsubs; i++)
         if (!resolve_topic(&o->subs[i], o, err, errlen))
             return PEER_PARSE_ERROR;
+    if (o->many.count > 0) {
+        if (!resolve_many(&o->many, o, err, errlen))
+            return PEER_PARSE_ERROR;
+        // every publisher of --many has a sample of its own, with --size bytes for these types
+        if ((o->many.ep.type == PEER_POINT_CLOUD2 || o->many.ep.type == PEER_OPAQUE)
+            && (uint64_t)o->many.count * o->size > PEER_MAX_MANY_BYTES) {
+            set_err(err, errlen, "--many %u x --size %u bytes is more than %u bytes of samples", o->many.count,
+                    o->size, PEER_MAX_MANY_BYTES);
+            return PEER_PARSE_ERROR;
+        }
+    }
     return PEER_PARSE_OK;
 }

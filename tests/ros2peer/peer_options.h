@@ -14,6 +14,10 @@
 #define PEER_MAX_DEPTH 10000                  // depth=N of a QoS
 #define PEER_MAX_DOMAIN 232u                  // highest domain id whose ports fit in 16 bits
 #define PEER_MAX_PATH 512u                    // --trace FILE
+#define PEER_MAX_MANY 5000u                   // --many: publishers
+#define PEER_MANY_END 10000u                  // --many: FIRST + N, so that indices have 4 digits
+#define PEER_MANY_DIGITS 4u
+#define PEER_MAX_MANY_BYTES (64u * 1024u * 1024u)   // --many: N x --size for PointCloud2, Opaque
 
 enum peer_type {
     PEER_STRING,         // std_msgs/msg/String
@@ -33,6 +37,13 @@ struct peer_endpoint {
     int32_t depth;                   // history keep-last depth
 };
 
+// --many N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]]: publishers on PREFIX0000, PREFIX0001, ...
+struct peer_many {
+    uint32_t count;                  // 0: no --many
+    uint32_t first;                  // index of the first topic
+    struct peer_endpoint ep;         // topic: the prefix; type, rate (0: never publish) and QoS
+};
+
 struct peer_options {
     uint32_t domain;
     char node_namespace[PEER_MAX_NAME + 1];   // "/" or "/a/b"
@@ -41,6 +52,7 @@ struct peer_options {
     unsigned npubs;
     struct peer_endpoint subs[PEER_MAX_ENDPOINTS];
     unsigned nsubs;
+    struct peer_many many;
     uint64_t count;          // samples per publisher, 0: unlimited
     double duration_s;
     uint32_t size;

@@ -8,7 +8,9 @@
 #     types, and ros_discovery_info shows the publisher's node with its 4 writers;
 #   - SIGTERM ends the publisher cleanly (exit 0) and the subscriber sees its match go;
 #   - a peer with --exit-hard --lease-ms 1000 vanishes without goodbye and its match goes within
-#     the lease (plus slack).
+#     the lease (plus slack);
+#   - --many 40@7 with a relative prefix: 40 writers rt/selftest/t0007..t0046 in discovery, its node
+#     with 40 writers on ros_discovery_info, and at rate 0 nothing sent.
 #   selftest.sh PATH/TO/bs_ros2peer
 set -u
 peer="${1:?usage: selftest.sh PATH/TO/bs_ros2peer}"
@@ -73,6 +75,13 @@ bad_args=(
     "--domain 1 --node /ns/"
     "--domain 1 --bogus"
     "--domain"
+    "--domain 1 --many 0:/m:std_msgs/msg/String"
+    "--domain 1 --many 5001:/m:std_msgs/msg/String"
+    "--domain 1 --many 10@9995:/m:std_msgs/msg/String"
+    "--domain 1 --many 5:/m/:std_msgs/msg/String"
+    "--domain 1 --many 5:/m:std_msgs/msg/String:-1"
+    "--domain 1 --many 100:/m:sensor_msgs/msg/PointCloud2:1 --size 4194304"
+    "--domain 1 --many 2:/m:std_msgs/msg/String --many 2:/n:std_msgs/msg/String"
 )
 for args in "${bad_args[@]}"; do
     # shellcheck disable=SC2086 # word splitting wanted
@@ -106,6 +115,10 @@ pids+=("$pub")
     --pub /hard:std_msgs/msg/String:20 > "$work/hard.out" 2> "$work/hard.err" &
 hard=$!
 pids+=("$hard")
+"$peer" --domain "$domain" --node /selftest/many --duration 60 \
+    --many 40@7:t:std_msgs/msg/String:0 > "$work/many.out" 2> "$work/many.err" &
+many=$!
+pids+=("$many")
 
 # Everything within 15 s of starting the peers.
 exchange_start=$(now_ms)
@@ -128,6 +141,10 @@ expect=(
     "sub.out|^endpoint pub ros_discovery_info rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_$"
     "sub.out|^node /selftest talker 0 4$"
     "sub.out|^node / vanisher 0 1$"
+    "many.out|^ready$"
+    "sub.out|^endpoint pub rt/selftest/t0007 std_msgs::msg::dds_::String_$"
+    "sub.out|^endpoint pub rt/selftest/t0046 std_msgs::msg::dds_::String_$"
+    "sub.out|^node /selftest many 0 40$"
 )
 for e in "${expect[@]}"; do
     file="${e%%|*}" regex="${e#*|}"
@@ -145,6 +162,13 @@ bad_line=$(grep -E '^recv ' "$work/sub.out" | awk '
 bad_cdr=$(grep -E '^cdr ' "$work/sub.out" | awk '!($5 == "00" && $6 == "01" && $7 == "00" && $8 == "00") { print; exit }')
 [ -z "$bad_cdr" ] || fail "encapsulation header is not 00 01 00 00: $bad_cdr"
 echo "selftest: $(grep -c '^cdr ' "$work/sub.out") samples, each with header 00 01 00 00: ok"
+
+# --many: exactly the 40 topics t0007..t0046, none sent at rate 0.
+many_topics=$(grep -E '^endpoint pub rt/selftest/t[0-9]{4} ' "$work/sub.out" | sort -u | wc -l)
+[ "$many_topics" = 40 ] || fail "--many 40@7: $many_topics distinct writers in discovery, want 40"
+grep -Eq '^endpoint pub rt/selftest/t00(0[0-6]|4[7-9]) ' "$work/sub.out" && fail "--many 40@7: a writer outside t0007..t0046"
+grep -q '^sent ' "$work/many.out" && fail "--many at rate 0 sent a sample"
+echo "selftest: --many 40@7: 40 writers t0007..t0046 and their node, nothing sent: ok"
 
 # The vanished peer (no goodbye, lease 1 s) is noticed: its process exits 0 at 3 s, its match
 # goes at most a few seconds later.
@@ -166,5 +190,8 @@ echo "selftest: SIGTERM: publisher exited 0, matches gone $(( $(now_ms) - term )
 kill -INT "$sub"
 wait_exit "$sub" 5
 [ "$rc" = 0 ] || fail "subscriber exited $rc after SIGINT, want 0"
-[ ! -s "$work/sub.err" ] && [ ! -s "$work/pub.err" ] || fail "messages on stderr"
+kill -TERM "$many"
+wait_exit "$many" 5
+[ "$rc" = 0 ] || fail "--many peer exited $rc after SIGTERM, want 0"
+[ ! -s "$work/sub.err" ] && [ ! -s "$work/pub.err" ] && [ ! -s "$work/many.err" ] || fail "messages on stderr"
 echo "selftest: passed in $(elapsed)"
