@@ -1323,6 +1323,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
             <numerusform>Für %1 ist keine ROS-2-Definition bekannt: die Nutzdaten zeigen seine %n Bytes roh.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 lost</source>
+        <translation>%1 verloren</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>

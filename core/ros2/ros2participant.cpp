@@ -152,7 +152,12 @@ struct Reader : public DataReaderListener
     {
         matched = status.current_count;
     }
+    void on_sample_lost(DataReader*, const SampleLostStatus& status) override
+    {
+        lost = quint64(status.total_count);
+    }
     std::atomic<int> matched {0};
+    std::atomic<quint64> lost {0};
 };
 
 } // namespace
@@ -369,10 +374,16 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     // as rmw does, so that ROS 2 tools show what we are
     const std::string enclave = "enclave=/;";
     qos.user_data().data_vec(std::vector<rtps::octet>(enclave.begin(), enclave.end()));
+    // Large samples come as bursts of fragments: the system's default receive buffer (208 KiB on a
+    // stock kernel) drops half of a 0.18 MB topic at 100 Hz (docs/BENCHMARKS.md). The kernel caps
+    // this at net.core.rmem_max.
+    constexpr uint32_t kReceiveBuffer = 4 * 1024 * 1024;
+    qos.transport().listen_socket_buffer_size = kReceiveBuffer;
     if (options.localhostOnly) {
         auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
         udp->interfaceWhiteList.emplace_back("127.0.0.1");
         udp->maxInitialPeersRange = 32; // participants on this host, found by unicast
+        udp->receiveBufferSize = kReceiveBuffer;
         qos.transport().use_builtin_transports = false;
         qos.transport().user_transports.push_back(udp);
         rtps::Locator_t peer;
@@ -554,6 +565,7 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
         Ros2MonitorStats s = m.stats;
         std::tie(s.rateHz, s.bytesPerSecond) = m.rates.rates(nowNs);
         s.matchedPublishers = m.reader ? m.reader->matched.load() : 0;
+        s.lost = m.reader ? m.reader->lost.load() : 0;
         out.insert(topic, s);
     }
     return out;

@@ -22,6 +22,7 @@ struct Ros2MonitorStats
     double bytesPerSecond = 0;
     QString type; ///< ROS 2 name
     int matchedPublishers = 0;
+    quint64 lost = 0; ///< samples DDS knows were sent and never came (sequence gaps of best-effort readers)
     QByteArray lastMessage; ///< CDR with its encapsulation header
 };
 
