@@ -146,23 +146,23 @@ MqttTopicTree::Node* MqttTopicTree::nodeFor(const QString& topic, std::vector<No
     return node;
 }
 
-void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload,
+bool MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload,
                                            Node* typeNode)
 {
     if (payload.isEmpty())
-        return; // a retained announcement being deleted
+        return false; // a retained announcement being deleted
     QString error;
     const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
     if (!info) {
         ++m_malformedTypes;
         ++typeNode->malformed;
         typeNode->typeError = error;
-        return;
+        return false;
     }
     typeNode->typeError.clear();
     std::shared_ptr<TypeState>& state = m_types[dataTopic];
     if (state && state->info == *info)
-        return;
+        return false;
     state = std::make_shared<TypeState>();
     state->info = *info;
     auto registry = std::make_shared<RosTypeRegistry>();
@@ -173,8 +173,7 @@ void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByte
         ++typeNode->malformed;
         typeNode->typeError = tr("the definition of %1 does not read: %2").arg(info->name, state->error);
     }
-    if (Node* data = m_byTopic.value(dataTopic))
-        data->dirty = true;
+    return true;
 }
 
 void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
@@ -214,8 +213,17 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
                 dirty.push_back(p);
             }
         }
-        if (msg.topic.startsWith(typePrefix))
-            absorbTypeAnnouncement(msg.topic.mid(typePrefix.size()), msg.payload, n);
+        if (msg.topic.startsWith(typePrefix)) {
+            const QString dataTopic = msg.topic.mid(typePrefix.size());
+            // The data topic's row shows the new type (its figures did not change).
+            if (absorbTypeAnnouncement(dataTopic, msg.payload, n)) {
+                Node* data = m_byTopic.value(dataTopic);
+                if (data && !data->dirty) {
+                    data->dirty = true;
+                    dirty.push_back(data);
+                }
+            }
+        }
         if (const auto type = m_types.value(msg.topic)) {
             if (type->info.stamped) {
                 if (const auto stamped = MqttClientWire::splitStamped(msg.payload)) {

@@ -139,7 +139,8 @@ private:
     struct TypeState;
     Node* nodeFor(const QString& topic, std::vector<Node*>& visibleParentsWithPending);
     QModelIndex indexOf(const Node* node, int column) const;
-    void absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
+    /// Whether the data topic's type changed.
+    bool absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
 
     std::unique_ptr<Node> m_root;
     QHash<QString, Node*> m_byTopic;
