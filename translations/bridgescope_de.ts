@@ -1323,6 +1323,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
             <numerusform>Für %1 ist keine ROS-2-Definition bekannt: die Nutzdaten zeigen seine %n Bytes roh.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>ROS 2 type %1 (announced by mqtt_client)%2</source>
+        <translation>ROS-2-Typ %1 (von mqtt_client angekündigt)%2</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -1614,6 +1618,13 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>not shown (ROS 2 only)</source>
         <translation>nicht angezeigt (nur ROS 2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topic(s) of an unknown ROS 2 type</source>
+        <translation>
+            <numerusform>%n Topic eines unbekannten ROS-2-Typs</numerusform>
+            <numerusform>%n Topics unbekannter ROS-2-Typen</numerusform>
+        </translation>
     </message>
 </context>
 <context>
