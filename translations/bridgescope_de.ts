@@ -1327,6 +1327,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>%1 lost</source>
         <translation>%1 verloren</translation>
     </message>
+    <message>
+        <source>ROS 2 type %1 (announced by mqtt_client)%2</source>
+        <translation>ROS-2-Typ %1 (von mqtt_client angekündigt)%2</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -1598,6 +1602,13 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>not shown (ROS 2 only)</source>
         <translation>nicht angezeigt (nur ROS 2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topic(s) of an unknown ROS 2 type</source>
+        <translation>
+            <numerusform>%n Topic eines unbekannten ROS-2-Typs</numerusform>
+            <numerusform>%n Topics unbekannter ROS-2-Typen</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3880,6 +3891,34 @@ factors:
         <source>type announcement of %1 bytes, more than the %2 one may have</source>
         <translation>Typankündigung mit %1 Bytes, mehr als die erlaubten %2</translation>
     </message>
+    <message>
+        <source>ROS 2 type announcement of %1 bytes ends inside its CDR encapsulation header</source>
+        <translation>ROS-2-Typankündigung mit %1 Bytes endet innerhalb ihres CDR-Kapselungskopfs</translation>
+    </message>
+    <message>
+        <source>ROS 2 type announcement is not plain CDR (encapsulation %1 %2)</source>
+        <translation>ROS-2-Typankündigung ist kein einfaches CDR (Kapselung %1 %2)</translation>
+    </message>
+    <message>
+        <source>type announcement ends before &apos;stamped&apos; (byte %1)</source>
+        <translation>Typankündigung endet vor &apos;stamped&apos; (Byte %1)</translation>
+    </message>
+    <message>
+        <source>type announcement has %1 bytes after &apos;stamped&apos;, more than CDR&apos;s padding of at most 3</source>
+        <translation>Typankündigung hat %1 Bytes nach &apos;stamped&apos;, mehr als die höchstens 3 Füllbytes von CDR</translation>
+    </message>
+    <message>
+        <source>stamped payload of %1 bytes, shorter than its %2-byte stamp</source>
+        <translation>Nutzlast mit Zeitstempel hat %1 Bytes, weniger als ihr %2-Byte-Zeitstempel</translation>
+    </message>
+    <message>
+        <source>the stamp does not start with a CDR encapsulation header (%1 %2)</source>
+        <translation>der Zeitstempel beginnt nicht mit einem CDR-Kapselungskopf (%1 %2)</translation>
+    </message>
+    <message>
+        <source>the stamp has %1 nanoseconds, not fewer than 1000000000</source>
+        <translation>der Zeitstempel hat %1 Nanosekunden, nicht weniger als 1000000000</translation>
+    </message>
 </context>
 <context>
     <name>MqttConnection</name>
@@ -4132,10 +4171,6 @@ factors:
 <context>
     <name>MqttStampDecoder</name>
     <message>
-        <source>stamped payload shorter than its 8-byte stamp</source>
-        <translation>Nutzlast mit Zeitstempel ist kürzer als ihr 8-Byte-Zeitstempel</translation>
-    </message>
-    <message>
         <source>type announcement: %1</source>
         <translation>Typankündigung: %1</translation>
     </message>
@@ -4211,14 +4246,14 @@ factors:
         <translation>die Definition von %1 ist nicht lesbar: %2</translation>
     </message>
     <message>
-        <source>stamped payload shorter than its 8-byte stamp</source>
-        <translation>Nutzlast mit Zeitstempel ist kürzer als ihr 8-Byte-Zeitstempel</translation>
-    </message>
-    <message>
         <source>%1
 %2 payloads did not decode; the last: %3</source>
         <translation>%1
 %2 Nutzlasten ließen sich nicht dekodieren; die letzte: %3</translation>
+    </message>
+    <message>
+        <source>No ROS 2 definition of %1 is known: its payloads show raw.</source>
+        <translation>Für %1 ist keine ROS-2-Definition bekannt: seine Nutzdaten werden roh gezeigt.</translation>
     </message>
 </context>
 <context>
@@ -5201,6 +5236,10 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <source>Zero values (%1).</source>
         <translation>Nullwerte (%1).</translation>
     </message>
+    <message>
+        <source>%1 is a ROS 2 type: ROS messages are only sent in ROS 1 serialization for now</source>
+        <translation>%1 ist ein ROS-2-Typ: ROS-Nachrichten werden vorerst nur in ROS-1-Serialisierung gesendet</translation>
+    </message>
 </context>
 <context>
     <name>RateChart</name>
@@ -5418,6 +5457,10 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
     <message>
         <source> (further changes are not logged)</source>
         <translation> (weitere Wechsel werden nicht protokolliert)</translation>
+    </message>
+    <message>
+        <source>ignored the ROS 2 type announcement for %1 (%2): this bridge speaks ROS 1</source>
+        <translation>ROS-2-Typankündigung für %1 (%2) ignoriert: diese Bridge spricht ROS 1</translation>
     </message>
 </context>
 <context>

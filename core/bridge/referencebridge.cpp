@@ -138,6 +138,8 @@ struct Route
     int stampIn = -1;
     int stampOut = -1;
     std::atomic<bool> typeSent {false}; ///< ros2mqtt: announced on this connection
+    std::atomic<bool> ros2Said {
+        false}; ///< mqtt2ros: a ROS 2 announcement was logged (it comes with every message)
     QString headerMd5; ///< the type whose Header check is cached (its thread only)
     bool headerFirst = false;
 
@@ -344,6 +346,12 @@ struct ReferenceBridge::Private
         const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
         if (!info) {
             log(tr("ignored a malformed type announcement for %1: %2").arg(r.mqttTopic, error));
+            return;
+        }
+        if (info->dialect != RosTypeRegistry::Dialect::Ros1) {
+            if (!r.ros2Said.exchange(true))
+                log(tr("ignored the ROS 2 type announcement for %1 (%2): this bridge speaks ROS 1")
+                        .arg(r.mqttTopic, info->name));
             return;
         }
         std::lock_guard<std::mutex> lock(r.mutex);

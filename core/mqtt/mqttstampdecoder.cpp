@@ -44,7 +44,8 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
             }
             QString why;
             if (const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(m.payload, &why))
-                m_types.insert(data, {info->md5 == QLatin1StringView(StampCodec::md5()), info->stamped});
+                m_types.insert(
+                    data, {info->md5 == QLatin1StringView(StampCodec::md5()), info->stamped, info->dialect});
             else if (m_types.contains(data) || m.payload.contains(StampCodec::typeName()))
                 fail(data, tr("type announcement: %1").arg(why)); // one meant for stamps, or replacing one
             continue; // the topic tree reports every undecodable announcement
@@ -53,9 +54,11 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
         if (type != m_types.cend()) {
             QByteArray message = m.payload;
             if (type->stamped) {
-                std::optional<MqttClientWire::Stamped> split = MqttClientWire::splitStamped(m.payload);
+                QString why;
+                std::optional<MqttClientWire::Stamped> split
+                    = MqttClientWire::splitStamped(m.payload, type->dialect, &why);
                 if (!split) {
-                    fail(m.topic, tr("stamped payload shorter than its 8-byte stamp"));
+                    fail(m.topic, why);
                     continue;
                 }
                 latencies.push_back({latencySeries(m.topic), m.receivedNs - split->stampNs, m.receivedNs});

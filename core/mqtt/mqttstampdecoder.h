@@ -2,6 +2,7 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
+#include "wire/rosmessage.h"
 #include "wire/stampevent.h"
 
 #include <QCoreApplication>
@@ -13,8 +14,9 @@
 /// - `benchmarking_suite/TimeStamped` carried by mqtt_client (its type announcement on
 ///   `mqtt_client/ros_msg_type/<topic>`, then ROS-serialized payloads, stamped or not);
 /// - JSON stamps `{"sample": "<id>", "time": <seconds | "sec.nsec">}` on any topic;
-/// - every stamped mqtt_client payload (any type) as a single-stage latency series: receive
-///   time minus the injected send stamp, as mqtt_client computes for `~/latencies/<topic>`.
+/// - every stamped mqtt_client payload (any type, ROS 1 or ROS 2) as a single-stage latency
+///   series: receive time minus the injected send stamp, as mqtt_client computes for
+///   `~/latencies/<topic>`.
 ///
 /// Stamp topics keep their MQTT names ("a/b"); pipelines match them to ROS names ("/a/b").
 class MqttStampDecoder
@@ -36,8 +38,9 @@ public:
 private:
     struct TopicType
     {
-        bool timeStamped = false;
+        bool timeStamped = false; ///< matched by md5: ROS 1 only (ROS 2 announcements have none)
         bool stamped = false;
+        RosTypeRegistry::Dialect dialect = RosTypeRegistry::Dialect::Ros1;
     };
     void fail(const QString& topic, const QString& why);
 

@@ -2,6 +2,7 @@
 #include "mqtttopictree.h"
 
 #include "base/topicmime.h"
+#include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
 #include <algorithm>
@@ -26,6 +27,14 @@ bool looksLikeText(const QByteArray& payload)
             return false;
     }
     return true;
+}
+
+/// The bundled ROS 2 definitions, parsed once for every tree that is given no others.
+std::shared_ptr<const RosTypeRegistry> bundledRos2Registry()
+{
+    static const std::shared_ptr<const RosTypeRegistry> registry
+        = std::make_shared<const RosTypeRegistry>(Ros2Definitions::registry());
+    return registry;
 }
 } // namespace
 
@@ -78,7 +87,7 @@ struct MqttTopicTree::Node
 struct MqttTopicTree::TypeState
 {
     RosMsgTypeInfo info;
-    std::shared_ptr<RosTypeRegistry> registry;
+    std::shared_ptr<const RosTypeRegistry> registry; ///< ROS 1: from the announced definition
     QString error;
 };
 
@@ -146,25 +155,27 @@ MqttTopicTree::Node* MqttTopicTree::nodeFor(const QString& topic, std::vector<No
     return node;
 }
 
-void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload,
+bool MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload,
                                            Node* typeNode)
 {
     if (payload.isEmpty())
-        return; // a retained announcement being deleted
+        return false; // a retained announcement being deleted
     QString error;
     const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
     if (!info) {
         ++m_malformedTypes;
         ++typeNode->malformed;
         typeNode->typeError = error;
-        return;
+        return false;
     }
     typeNode->typeError.clear();
     std::shared_ptr<TypeState>& state = m_types[dataTopic];
     if (state && state->info == *info)
-        return;
+        return false;
     state = std::make_shared<TypeState>();
     state->info = *info;
+    if (info->dialect == RosTypeRegistry::Dialect::Ros2)
+        return true; // no definition on the wire: the ROS 2 registry's, looked up when needed
     auto registry = std::make_shared<RosTypeRegistry>();
     if (registry->addDefinition(info->name, info->definition, &state->error)) {
         state->registry = registry;
@@ -173,8 +184,43 @@ void MqttTopicTree::absorbTypeAnnouncement(const QString& dataTopic, const QByte
         ++typeNode->malformed;
         typeNode->typeError = tr("the definition of %1 does not read: %2").arg(info->name, state->error);
     }
-    if (Node* data = m_byTopic.value(dataTopic))
-        data->dirty = true;
+    return true;
+}
+
+std::shared_ptr<const RosTypeRegistry> MqttTopicTree::registryOf(const TypeState& type) const
+{
+    if (type.info.dialect != RosTypeRegistry::Dialect::Ros2)
+        return type.registry;
+    if (!m_ros2Registry)
+        m_ros2Registry = bundledRos2Registry();
+    return m_ros2Registry->contains(RosTypeRegistry::ros2TypeName(type.info.name)) ? m_ros2Registry : nullptr;
+}
+
+QString MqttTopicTree::typeNoteOf(const TypeState& type) const
+{
+    if (type.info.dialect != RosTypeRegistry::Dialect::Ros2 || registryOf(type))
+        return {};
+    return tr("No ROS 2 definition of %1 is known: its payloads show raw.").arg(type.info.name);
+}
+
+void MqttTopicTree::setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry)
+{
+    m_ros2Registry = std::move(registry);
+    // Announced ROS 2 types may decode now, or no longer: their rows show it.
+    for (auto it = m_types.cbegin(); it != m_types.cend(); ++it) {
+        if (it.value()->info.dialect != RosTypeRegistry::Dialect::Ros2)
+            continue;
+        if (const Node* n = m_byTopic.value(it.key()); n && n->visible)
+            emit dataChanged(indexOf(n, 0), indexOf(n, ColumnCount - 1));
+    }
+}
+
+int MqttTopicTree::unknownTypeTopics() const
+{
+    int n = 0;
+    for (const auto& type : m_types)
+        n += type->info.dialect == RosTypeRegistry::Dialect::Ros2 && !registryOf(*type) ? 1 : 0;
+    return n;
 }
 
 void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
@@ -214,11 +260,22 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
                 dirty.push_back(p);
             }
         }
-        if (msg.topic.startsWith(typePrefix))
-            absorbTypeAnnouncement(msg.topic.mid(typePrefix.size()), msg.payload, n);
+        if (msg.topic.startsWith(typePrefix)) {
+            const QString dataTopic = msg.topic.mid(typePrefix.size());
+            // The data topic's row shows the new type (its figures did not change).
+            if (absorbTypeAnnouncement(dataTopic, msg.payload, n)) {
+                Node* data = m_byTopic.value(dataTopic);
+                if (data && !data->dirty) {
+                    data->dirty = true;
+                    dirty.push_back(data);
+                }
+            }
+        }
         if (const auto type = m_types.value(msg.topic)) {
             if (type->info.stamped) {
-                if (const auto stamped = MqttClientWire::splitStamped(msg.payload)) {
+                QString why;
+                if (const auto stamped
+                    = MqttClientWire::splitStamped(msg.payload, type->info.dialect, &why)) {
                     const double ms = double(msg.receivedNs - stamped->stampNs) / 1e6;
                     n->lastLatencyMs = ms;
                     n->latencies.push_back(ms);
@@ -231,7 +288,7 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
                 } else {
                     ++n->malformed;
                     ++m_malformedPayloads;
-                    n->payloadError = tr("stamped payload shorter than its 8-byte stamp");
+                    n->payloadError = why;
                 }
             }
             if (!n->typedTouched) {
@@ -266,20 +323,17 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
     for (Node* n : typed) {
         n->typedTouched = false;
         const auto type = m_types.value(n->path);
-        if (!type || !type->registry || n->history.empty())
+        const auto registry = type ? registryOf(*type) : nullptr;
+        if (!registry || n->history.empty())
             continue;
-        QByteArray payload = n->history.back().payload;
-        if (type->info.stamped) {
-            const auto s = MqttClientWire::splitStamped(payload);
-            if (!s)
-                continue; // counted above
-            payload = s->message;
-        }
+        const QByteArray& payload = n->history.back().payload;
+        if (type->info.stamped && !MqttClientWire::splitStamped(payload, type->info.dialect))
+            continue; // counted above
         RosDecodeLimits limits;
         limits.maxArrayElements = 1;
         limits.maxStringChars = 64;
         QString error;
-        if (!RosMessageDecoder::decode(*type->registry, type->info.name, payload, &error, limits)) {
+        if (!MqttClientWire::decodePayload(*registry, type->info, payload, &error, limits)) {
             ++n->malformed;
             ++m_malformedPayloads;
             n->payloadError = error;
@@ -367,8 +421,10 @@ std::optional<MqttTopicTree::TopicInfo> MqttTopicTree::info(const QString& topic
     i.qos = n->qos;
     i.lastNs = n->lastNs;
     i.rate = n->rate;
-    if (const auto type = m_types.value(topic))
+    if (const auto type = m_types.value(topic)) {
         i.rosType = type->info;
+        i.typeNote = typeNoteOf(*type);
+    }
     i.typeError = n->typeError;
     i.malformedPayloads = n->malformed;
     i.payloadError = n->payloadError;
@@ -400,7 +456,7 @@ const std::deque<MqttTopicTree::HistoryEntry>* MqttTopicTree::history(const QStr
 std::shared_ptr<const RosTypeRegistry> MqttTopicTree::registryFor(const QString& topic) const
 {
     const auto type = m_types.value(topic);
-    return type ? type->registry : nullptr;
+    return type ? registryOf(*type) : nullptr;
 }
 
 QModelIndex MqttTopicTree::index(int row, int column, const QModelIndex& parent) const
@@ -503,6 +559,10 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
                 "the two clocks agree.");
         if (!n->typeError.isEmpty())
             return n->typeError;
+        if (type) {
+            if (const QString note = typeNoteOf(*type); !note.isEmpty())
+                return QString(n->path + u'\n' + note);
+        }
         if (n->malformed && !n->payloadError.isEmpty())
             return tr("%1\n%2 payloads did not decode; the last: %3")
                 .arg(n->path)

@@ -18,7 +18,9 @@ class RosTypeRegistry;
 ///
 /// Every topic keeps its message and byte counts, rate, last size, retained flag and QoS, the time
 /// of its last message, and a bounded history of payloads; every level sums its subtree. Topics
-/// that mqtt_client announces get their ROS type; stamped ones their one-way latency. $SYS topics
+/// that mqtt_client (ROS 1 or ROS 2) announces get their ROS type; stamped ones their one-way
+/// latency. A ROS 1 announcement carries its definition; a ROS 2 one names its type only, which
+/// decodes with the ROS 2 definitions the tree is given (setRos2Registry()). $SYS topics
 /// are kept apart as broker statistics. Batches come from the GUI drain timer (apply()); one batch
 /// gives one row-insert per parent and one dataChanged per parent, never a signal per message.
 class MqttTopicTree : public QAbstractItemModel
@@ -69,6 +71,7 @@ public:
         double rate = 0;
         std::optional<RosMsgTypeInfo> rosType;
         QString typeError; ///< a type announcement that could not be decoded
+        QString typeNote; ///< why payloads of the announced type show raw (a ROS 2 type not known)
         quint64 malformedPayloads = 0; ///< did not decode (also over a decode budget), per topic
         QString payloadError; ///< why the last malformed payload did not decode
         double lastLatencyMs = 0;
@@ -104,12 +107,18 @@ public:
     quint64 totalMessages() const { return m_totalMessages; }
     quint64 malformedTypeAnnouncements() const { return m_malformedTypes; }
     quint64 malformedPayloads() const { return m_malformedPayloads; }
+    /// Topics whose announced ROS 2 type has no definition in the ROS 2 registry (shown raw).
+    int unknownTypeTopics() const;
     QModelIndex indexOf(const QString& topic, int column = 0) const;
     std::optional<TopicInfo> info(const QString& topic) const;
     QList<TopicInfo> topics() const; ///< every topic, by name
     const std::deque<HistoryEntry>* history(const QString& topic) const;
-    /// A registry able to decode the topic's payloads, when mqtt_client announced its type.
+    /// A registry able to decode the topic's payloads, when mqtt_client announced its type (for
+    /// ROS 2, the ROS 2 registry when it knows the type; else none, and TopicInfo::typeNote says so).
     std::shared_ptr<const RosTypeRegistry> registryFor(const QString& topic) const;
+    /// The ROS 2 definitions announced ROS 2 types decode with; until set, the bundled ones
+    /// (Ros2Definitions::registry(), built once and shared by every tree).
+    void setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry);
     const QHash<QString, QString>& brokerStatistics() const { return m_sys; }
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
@@ -139,12 +148,16 @@ private:
     struct TypeState;
     Node* nodeFor(const QString& topic, std::vector<Node*>& visibleParentsWithPending);
     QModelIndex indexOf(const Node* node, int column) const;
-    void absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
+    /// Whether the data topic's type changed.
+    bool absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
+    std::shared_ptr<const RosTypeRegistry> registryOf(const TypeState& type) const;
+    QString typeNoteOf(const TypeState& type) const;
 
     std::unique_ptr<Node> m_root;
     QHash<QString, Node*> m_byTopic;
     QHash<QString, std::shared_ptr<TypeState>> m_types; ///< by data topic
     QHash<QString, QString> m_sys;
+    mutable std::shared_ptr<const RosTypeRegistry> m_ros2Registry; ///< set on first use when not given
     int m_historyDepth = 20;
     qint64 m_historyBytesPerTopic = 16 * 1024 * 1024;
     quint64 m_totalMessages = 0;

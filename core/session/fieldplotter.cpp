@@ -186,16 +186,18 @@ void FieldPlotter::onDrained(qint64 nowNs)
               // JSON.
               std::shared_ptr<const RosTypeRegistry> registry;
               QString type;
-              bool stamped = false;
+              std::optional<RosMsgTypeInfo> announced; // MQTT: how mqtt_client serialized it
               QString typeError;
               if (source == PlotField::Source::Mqtt) {
                   const auto info = m_session->mqttTopics()->info(topic);
                   if (info && info->rosType) {
                       registry = m_session->mqttTopics()->registryFor(topic);
                       type = info->rosType->name;
-                      stamped = info->rosType->stamped;
+                      announced = info->rosType;
                       if (!registry)
-                          typeError = tr("the announced type %1 does not read").arg(type);
+                          typeError = info->typeNote.isEmpty()
+                              ? tr("the announced type %1 does not read").arg(type)
+                              : info->typeNote;
                   }
               } else {
                   const RosMonitorStats* stats = m_session->rosTopics()->stats(topic);
@@ -240,13 +242,11 @@ void FieldPlotter::onDrained(qint64 nowNs)
                   } else {
                       bytes += m.payload.size();
                       ++decodedCount;
-                      if (registry) {
-                          QByteArray message = m.payload;
-                          if (stamped) {
-                              const auto split = MqttClientWire::splitStamped(message);
-                              message = split ? split->message : QByteArray();
-                          }
-                          dec.ros = RosMessageDecoder::decode(*registry, type, message, &dec.error, limits);
+                      if (registry && announced) {
+                          dec.ros = MqttClientWire::decodePayload(*registry, *announced, m.payload,
+                                                                  &dec.error, limits);
+                      } else if (registry) {
+                          dec.ros = RosMessageDecoder::decode(*registry, type, m.payload, &dec.error, limits);
                       } else {
                           QJsonParseError parse {};
                           const QJsonDocument doc = QJsonDocument::fromJson(m.payload, &parse);

@@ -24,6 +24,7 @@ LiveSession::LiveSession(QObject* parent)
     , m_ros2Topics(new RosTopicModel(this))
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
+    m_tree->setRos2Registry(m_ros2Types); // mqtt_client's ROS 2 payloads decode as ROS 2 samples do
     connect(m_ros2, &Ros2Participant::graphChanged, m_ros2Topics,
             [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(toRosGraph(graph)); });
     connect(m_ros2Topics, &RosTopicModel::monitorRequested, this, [this](const QString& topic, bool on) {
@@ -81,6 +82,7 @@ void LiveSession::stopRos2()
 void LiveSession::setRos2DefinitionFolders(const QStringList& folders, QStringList* errors)
 {
     m_ros2Types = std::make_shared<RosTypeRegistry>(Ros2Definitions::registry(folders, errors));
+    m_tree->setRos2Registry(m_ros2Types);
 }
 
 RosGraph LiveSession::toRosGraph(const Ros2Graph& graph)

@@ -320,6 +320,7 @@ struct LinkMonitor::Track
     bool dstHeader = false; ///< the destination's messages start with a Header
     bool srcHeader = false;
     std::optional<bool> announcedStamped;
+    bool ros2 = false; ///< announced by mqtt_client for ROS 2: CDR, a 12-byte stamp
     std::deque<std::pair<qint64, double>> latencies;
     quint64 latencySamples = 0;
     std::vector<double> newLatencies;
@@ -568,11 +569,13 @@ void LinkMonitor::addMqtt(const std::vector<MqttMessage>& batch)
                 t.dst.add(m.receivedNs, int(m.payload.size()));
                 qsizetype offset = 0;
                 if (t.stamped()) {
-                    if (const auto s = MqttClientWire::splitStamped(m.payload)) {
+                    const auto dialect
+                        = t.ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
+                    if (const auto s = MqttClientWire::splitStamped(m.payload, dialect)) {
                         if (!t.pipelineLatency)
                             t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6,
                                          LatencySource::Stamps);
-                        offset = 8;
+                        offset = MqttClientWire::stampBytes(dialect);
                     }
                 }
                 if (t.dstHeader)
@@ -614,7 +617,8 @@ void LinkMonitor::announce(const QString& dataTopic, const QByteArray& payload)
     const auto type = MqttClientWire::decodeType(payload);
     if (!type)
         return;
-    const AnnouncedType announced {type->name, type->stamped, headerFirst(type->name, type->definition)};
+    const AnnouncedType announced {type->name, type->stamped, headerFirst(type->name, type->definition),
+                                   type->dialect == MqttClientWire::Dialect::Ros2};
     m_announced.insert(dataTopic, announced);
     for (int i : m_byMqtt.value(dataTopic))
         applyAnnouncement(*m_tracks[std::size_t(i)], announced);
@@ -623,6 +627,7 @@ void LinkMonitor::announce(const QString& dataTopic, const QByteArray& payload)
 void LinkMonitor::applyAnnouncement(Track& t, const AnnouncedType& type)
 {
     t.announcedStamped = type.stamped;
+    t.ros2 = type.ros2;
     (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
 }
 

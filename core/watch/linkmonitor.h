@@ -53,7 +53,8 @@ struct AnnouncedType
 {
     QString type; ///< e.g. "geometry_msgs/PointStamped"
     bool stamped = false; ///< the payloads carry the send time
-    bool header = false; ///< the message starts with a std_msgs/Header
+    bool header = false; ///< the message starts with a std_msgs/Header (ROS 1: its seq comes first)
+    bool ros2 = false; ///< sent by mqtt_client for ROS 2 (CDR, a 12-byte stamp)
 };
 
 enum class LinkLevel { Ok, Warning, Alert };

@@ -30,6 +30,12 @@ std::optional<QByteArray> PublishPayload::build(Format format, const QString& te
             *error = tr("no ROS type is announced for this topic");
         return std::nullopt;
     }
+    if (type->dialect == RosTypeRegistry::Dialect::Ros2) {
+        if (error)
+            *error = tr("%1 is a ROS 2 type: ROS messages are only sent in ROS 1 serialization for now")
+                         .arg(type->name);
+        return std::nullopt;
+    }
     QString why;
     const std::optional<QVariant> value = YamlVariant::parse(utf8, &why);
     if (!value) {
@@ -52,16 +58,11 @@ PublishPayload::Prefill PublishPayload::rosMessage(const RosTypeRegistry& regist
     Prefill out;
     QString why;
     if (!lastPayload.isEmpty()) {
-        QByteArray message = lastPayload;
-        if (type.stamped) {
-            const auto split = MqttClientWire::splitStamped(lastPayload);
-            message = split ? split->message : QByteArray();
-        }
         RosDecodeLimits limits;
         limits.maxArrayElements = 4096;
         limits.maxStringChars = 64 * 1024;
         limits.maxBytes = 4 * 1024 * 1024;
-        if (const auto value = RosMessageDecoder::decode(registry, type.name, message, &why, limits)) {
+        if (const auto value = MqttClientWire::decodePayload(registry, type, lastPayload, &why, limits)) {
             if (const auto yaml = RosMessageEncoder::toYaml(*value)) {
                 out.text = *yaml;
                 out.note = tr("Values of the last message.");

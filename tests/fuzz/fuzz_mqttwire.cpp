@@ -1,15 +1,62 @@
 // SPDX-License-Identifier: MIT
 // Fuzz target for what mqtt_client puts on the broker: the retained type announcement
-// (`mqtt_client/ros_msg_type/<topic>`), the stamped payload on `<topic>`, the message decoded
-// with the announced definition, and the stamp decoder that reads a batch of both.
+// (`mqtt_client/ros_msg_type/<topic>`; ROS 1 serialization, or CDR from mqtt_client for ROS 2), the
+// stamped payload on `<topic>` (an 8-byte ROS 1 stamp or a 12-byte CDR one), the message decoded
+// with the announced type, and the stamp decoder that reads a batch of both.
 //
 // Input: a 16-bit little-endian length, that many bytes of type announcement, then the payload.
 // Properties: a decoded announcement encodes to bytes that decode to the same announcement; a
-// stamped payload split and joined again gives the same bytes; errors come with a message.
+// stamped payload split and joined again gives the same stamp and message (and the same bytes,
+// where the stamp was written as Bridgescope writes it); errors come with a message.
 #include "fuzzcheck.h"
 #include "mqtt/mqttstampdecoder.h"
 #include "wire/mqttclientwire.h"
 #include "wire/rosmessage.h"
+
+namespace {
+using Dialect = RosTypeRegistry::Dialect;
+
+/// A few ROS 2 definitions (the fuzz build has no resources): enough for the names a seed or the
+/// dictionary announces; an announcement may bring its own definition as well.
+const RosTypeRegistry& ros2Types()
+{
+    static const RosTypeRegistry registry = [] {
+        RosTypeRegistry r(Dialect::Ros2);
+        r.addDefinition(QStringLiteral("builtin_interfaces/msg/Time"),
+                        QStringLiteral("int32 sec\nuint32 nanosec\n"));
+        r.addDefinition(QStringLiteral("std_msgs/msg/Header"),
+                        QStringLiteral("builtin_interfaces/Time stamp\nstring frame_id\n"));
+        r.addDefinition(QStringLiteral("std_msgs/msg/String"), QStringLiteral("string data\n"));
+        r.addDefinition(QStringLiteral("geometry_msgs/msg/Point"),
+                        QStringLiteral("float64 x\nfloat64 y\nfloat64 z\n"));
+        r.addDefinition(QStringLiteral("geometry_msgs/msg/Quaternion"),
+                        QStringLiteral("float64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n"));
+        r.addDefinition(QStringLiteral("geometry_msgs/msg/Pose"),
+                        QStringLiteral("Point position\nQuaternion orientation\n"));
+        r.addDefinition(QStringLiteral("geometry_msgs/msg/PoseStamped"),
+                        QStringLiteral("std_msgs/Header header\nPose pose\n"));
+        return r;
+    }();
+    return registry;
+}
+
+void splitAndJoin(const QByteArray& payload, Dialect dialect)
+{
+    QString why;
+    const std::optional<MqttClientWire::Stamped> split = MqttClientWire::splitStamped(payload, dialect, &why);
+    if (!split) {
+        FUZZ_CHECK(!why.isEmpty(), "a stamped payload rejected without a message");
+        return;
+    }
+    const QByteArray joined = MqttClientWire::stamped(split->stampNs, split->message, dialect);
+    const std::optional<MqttClientWire::Stamped> again = MqttClientWire::splitStamped(joined, dialect);
+    FUZZ_CHECK(again && again->stampNs == split->stampNs && again->message == split->message,
+               "a stamped payload changes when split and joined");
+    // ROS 2 stamps are read in either byte order and with any options, written little-endian.
+    if (dialect == Dialect::Ros1 || payload.startsWith(QByteArrayView("\x00\x01\x00\x00", 4)))
+        FUZZ_CHECK(joined == payload, "a stamped payload's bytes change when split and joined");
+}
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -23,22 +70,33 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(announcement, &error);
     if (!info)
         FUZZ_CHECK(!error.isEmpty(), "an announcement rejected without a message");
+    else
+        FUZZ_CHECK(info->dialect == MqttClientWire::dialectOf(announcement),
+                   "an announcement of the other dialect");
 
-    const std::optional<MqttClientWire::Stamped> split = MqttClientWire::splitStamped(payload);
-    if (split)
-        FUZZ_CHECK(MqttClientWire::stamped(split->stampNs, split->message) == payload,
-                   "a stamped payload changes when split and joined");
+    splitAndJoin(payload, Dialect::Ros1);
+    splitAndJoin(payload, Dialect::Ros2);
 
     if (info) {
-        const std::optional<RosMsgTypeInfo> again
-            = MqttClientWire::decodeType(MqttClientWire::encodeType(*info));
+        const QByteArray encoded = MqttClientWire::encodeType(*info);
+        const std::optional<RosMsgTypeInfo> again = MqttClientWire::decodeType(encoded);
         FUZZ_CHECK(again && *again == *info, "an announcement does not survive encode and decode");
 
-        RosTypeRegistry registry;
-        if (registry.addDefinition(info->name, info->definition, &error)) {
-            const QByteArray message = info->stamped && split ? split->message : payload;
+        // The payload as the announced type: ROS 1 with the announced definition, ROS 2 with the
+        // known definitions (and the announced one, when there is one).
+        RosTypeRegistry registry(info->dialect);
+        bool known = false;
+        if (info->dialect == Dialect::Ros2) {
+            registry = ros2Types();
+            if (!info->definition.isEmpty())
+                registry.addDefinition(info->name, info->definition);
+            known = registry.contains(RosTypeRegistry::ros2TypeName(info->name));
+        } else {
+            known = registry.addDefinition(info->name, info->definition, &error);
+        }
+        if (known) {
             error.clear();
-            if (!RosMessageDecoder::decode(registry, info->name, message, &error))
+            if (!MqttClientWire::decodePayload(registry, *info, payload, &error))
                 FUZZ_CHECK(!error.isEmpty(), "a message rejected without a message");
         }
     }

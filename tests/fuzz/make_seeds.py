@@ -69,6 +69,45 @@ put("mqttwire", "timestamped_stamped", struct.pack("<H", len(ts_announcement)) +
     struct.pack("<II", 1700000000, 50000000) + timestamped)
 put("mqttwire", "json_stamp", struct.pack("<H", 0) + b'{"sample": "1700000000.000000005", "time": 1700000000.25}')
 
+
+class Cdr:
+    """Plain CDR (XCDR1) as ROS 2's RMWs write it: a 4-byte encapsulation header (00 01 little-
+    endian, 00 00 big-endian), each value aligned to its size from the header's end, strings as a
+    uint32 length that counts the NUL, the bytes and the NUL."""
+
+    def __init__(self, order="<"):
+        self.order = order
+        self.data = bytearray(b"\x00\x01\x00\x00" if order == "<" else b"\x00\x00\x00\x00")
+
+    def put(self, fmt, value):
+        size = struct.calcsize("<" + fmt)
+        self.data += bytes(-(len(self.data) - 4) % size)
+        self.data += struct.pack(self.order + fmt, value)
+        return self
+
+    def string(self, s):
+        b = s.encode() + b"\0"
+        self.put("I", len(b))
+        self.data += b
+        return self
+
+
+def ros2_announcement(name, stamped, order="<"):
+    """mqtt_client_interfaces/msg/RosMsgType as mqtt_client for ROS 2 sends it (name and stamped set)."""
+    return bytes(Cdr(order).string("").string(name).string("").put("?", stamped).data)
+
+
+# mqtt_client for ROS 2: the hand-written fixtures of tests/unit/tst_mqttclientros2.cpp (checked
+# there against Fast CDR): a stamped std_msgs/msg/String, and a big-endian PoseStamped.
+a = ros2_announcement("std_msgs/msg/String", True)
+put("mqttwire", "ros2_string_stamped", struct.pack("<H", len(a)) + a +
+    bytes(Cdr().put("i", 1700000000).put("I", 250000000).data) + bytes(Cdr().string("hello").data))
+a = ros2_announcement("geometry_msgs/msg/PoseStamped", False, ">")
+pose = Cdr(">").put("i", 12).put("I", 34).string("map")
+for v in (4.25, 2.5, -1.0, 0.0, 0.0, 0.0, 1.0):
+    pose.put("d", v)
+put("mqttwire", "ros2_pose_be", struct.pack("<H", len(a)) + a + bytes(pose.data))
+
 # fuzz_stamps: the same bytes go to every decoder
 put("stamps", "timestamped", timestamped)
 put("stamps", "header", (wire / "header.payload.bin").read_bytes())

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The Discover page with real traffic: a real rosmaster with rostopic nodes, a real mosquitto
-// with what mqtt_client sends, JSON and a 2 MB binary payload.
+// with what mqtt_client sends (for ROS 1 and ROS 2), JSON and a 2 MB binary payload.
 #include "app/gui/mainwindow.h"
 #include "fixtures.h"
 #include "mqtt/mqtttopicfilter.h"
 #include "mqtt/mqtttopictree.h"
+#include "mqttclientros2.h"
 #include "ros/rostopicmodel.h"
 #include "session/livesession.h"
 #include "testservers.h"
@@ -15,6 +16,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QDialogButtonBox>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -48,6 +50,14 @@ void run(const QString& program, const QStringList& args)
     QProcess p;
     p.start(program, args);
     p.waitForFinished(20000);
+}
+
+QString writeFile(const QString& path, const QByteArray& bytes)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
 }
 } // namespace
 
@@ -88,6 +98,23 @@ private slots:
             pubArgs()
                 + QStringList {u"-t"_s, u"fleet/car1/status"_s, u"-r"_s, u"-m"_s,
                                u"{\"speed\": 12.5, \"gear\": \"D\"}"_s});
+        // mqtt_client for ROS 2: a stamped std_msgs/msg/String, and a type without a bundled
+        // definition.
+        const QString dir = m_servers.tempPath();
+        const QList<std::pair<QString, QByteArray>> ros2 {
+            {u"mqtt_client/ros_msg_type/ros2/chatter"_s,
+             MqttClientRos2::announcement("std_msgs/msg/String", true)},
+            {u"ros2/chatter"_s, MqttClientRos2::stamped(1700000000, 0, MqttClientRos2::string("hello ros2"))},
+            {u"mqtt_client/ros_msg_type/ros2/state"_s,
+             MqttClientRos2::announcement("my_pkg/msg/State", false)},
+            {u"ros2/state"_s, MqttClientRos2::serialize([](auto& cdr) { cdr << uint8_t(3); })},
+        };
+        int n = 0;
+        for (const auto& [topic, bytes] : ros2)
+            run(u"mosquitto_pub"_s,
+                pubArgs()
+                    + QStringList {u"-t"_s, topic, u"-r"_s, u"-f"_s,
+                                   writeFile(dir + u"/ros2-%1.bin"_s.arg(n++), bytes)});
     }
 
     void cleanupTestCase()
@@ -128,6 +155,21 @@ private slots:
         QTRY_VERIFY(page->detail()->title()->text().contains(u"geometry_msgs/PoseStamped"_s));
         const QStringList fields = fieldNames(page->detail()->fieldsView()->model());
         QVERIFY2(fields.contains(u"pose.position.x"_s), qPrintable(fields.join(u' ')));
+
+        // So does one that mqtt_client for ROS 2 announced; a type without a definition says so.
+        page->mqttView()->setCurrentIndex(
+            ViewHelpers::find(page->mqttView()->model(), u"ros2/chatter"_s, MqttTopicTree::FullTopicRole));
+        QTRY_VERIFY_WITH_TIMEOUT(page->detail()->title()->text().contains(
+                                     u"ROS 2 type std_msgs/msg/String (announced by mqtt_client), stamped"_s),
+                                 10000);
+        QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model()).contains(u"data"_s));
+        QCOMPARE(page->detail()->fieldsView()->model()->index(0, 1).data().toString(), u"hello ros2"_s);
+        page->mqttView()->setCurrentIndex(
+            ViewHelpers::find(page->mqttView()->model(), u"ros2/state"_s, MqttTopicTree::FullTopicRole));
+        QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model())
+                        .join(u' ')
+                        .contains(u"No ROS 2 definition of my_pkg/msg/State"_s));
+        QVERIFY(page->mqttCounters()->text().contains(u"1 topic(s) of an unknown ROS 2 type"_s));
 
         // JSON shows as fields too.
         page->mqttView()->setCurrentIndex(ViewHelpers::find(page->mqttView()->model(), u"fleet/car1/status"_s,

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
-// MQTT discovery against a real mosquitto: exact counts, mqtt_client type announcements, TLS with
-// client certificates, passwords, a broker that dies and comes back, large and binary payloads.
+// MQTT discovery against a real mosquitto: exact counts, mqtt_client type announcements (ROS 1 and
+// ROS 2), TLS with client certificates, passwords, a broker that dies and comes back, large and
+// binary payloads.
+#include "base/wallclock.h"
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttlink.h"
 #include "mqtt/mqtttopictree.h"
+#include "mqttclientros2.h"
 #include "testservers.h"
 #include "tlsfiles.h"
+#include "wire/mqttclientwire.h"
 
 #include <QProcess>
 #include <QRandomGenerator>
@@ -126,6 +130,69 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"cap/pose"_s), 2u, 10000);
         QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.malformedTypeAnnouncements()), 1u, 10000);
         QCOMPARE(d.tree.malformedPayloads(), 1u);
+    }
+
+    // What mqtt_client for ROS 2 publishes for a stamped std_msgs/msg/String mapping, sent by a
+    // Paho client as ros2mqtt() sends it: the retained announcement, then the stamped payload, for
+    // every message.
+    void mqttClientRos2TopicsDecodeWithLatency()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        Discovery d;
+        d.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 10000);
+        MqttLink bridge(MqttProfile::fromUrl(servers.brokerUrl()));
+        QString error;
+        QVERIFY2(bridge.connect(5000, &error), qPrintable(error));
+        const QString typeTopic = MqttClientWire::typeTopicPrefix() + u"car/chatter"_s;
+        const QByteArray announcement = MqttClientRos2::announcement("std_msgs/msg/String", true);
+        constexpr qint64 kBehindNs = 2'000'000'000; // the sender's clock, 2 s behind this one
+        for (int i = 0; i < 5; ++i) {
+            QVERIFY(bridge.publish(typeTopic, announcement, 0, true));
+            const qint64 stampNs = wallClockNs() - kBehindNs;
+            const QByteArray payload
+                = MqttClientRos2::stamped(int32_t(stampNs / 1'000'000'000), uint32_t(stampNs % 1'000'000'000),
+                                          MqttClientRos2::string("hello " + std::to_string(i)));
+            QVERIFY(bridge.publish(u"car/chatter"_s, payload, 0, false));
+        }
+        // A type Bridgescope has no definition of: the payload stays raw, and the tree says why.
+        QVERIFY(bridge.publish(MqttClientWire::typeTopicPrefix() + u"car/state"_s,
+                               MqttClientRos2::announcement("my_pkg/msg/State", false), 0, true));
+        QVERIFY(bridge.publish(u"car/state"_s,
+                               MqttClientRos2::serialize([](auto& cdr) { cdr << uint8_t(1); }), 0, false));
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"car/chatter"_s), 5u, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"car/state"_s), 1u, 10000);
+
+        const auto info = d.tree.info(u"car/chatter"_s);
+        QVERIFY(info->rosType);
+        QCOMPARE(info->rosType->name, u"std_msgs/msg/String"_s);
+        QCOMPARE(info->rosType->dialect, RosTypeRegistry::Dialect::Ros2);
+        QVERIFY(info->rosType->stamped);
+        QCOMPARE(info->malformedPayloads, 0u);
+        QCOMPARE(info->latencySamples, 5u);
+        QVERIFY2(info->lastLatencyMs >= 2000 && info->lastLatencyMs < 12000,
+                 qPrintable(QString::number(info->lastLatencyMs)));
+        QVERIFY(info->meanLatencyMs >= 2000);
+        const auto registry = d.tree.registryFor(u"car/chatter"_s);
+        QVERIFY(registry);
+        const auto value = MqttClientWire::decodePayload(
+            *registry, *info->rosType, d.tree.history(u"car/chatter"_s)->back().payload, &error);
+        QVERIFY2(value, qPrintable(error));
+        QCOMPARE(value->toLines(), QStringList {u"data: \"hello 4\""_s});
+
+        const auto state = d.tree.info(u"car/state"_s);
+        QCOMPARE(state->rosType->name, u"my_pkg/msg/State"_s);
+        QVERIFY(!d.tree.registryFor(u"car/state"_s));
+        QVERIFY(state->typeNote.contains(u"my_pkg/msg/State"_s));
+        QCOMPARE(d.tree.unknownTypeTopics(), 1);
+
+        // A payload cut inside its stamp is counted, with the reason.
+        QVERIFY(bridge.publish(u"car/chatter"_s, QByteArray::fromHex("0001000001"), 0, false));
+        QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"car/chatter"_s), 6u, 10000);
+        QCOMPARE(d.tree.info(u"car/chatter"_s)->malformedPayloads, 1u);
+        QVERIFY(d.tree.info(u"car/chatter"_s)->payloadError.contains(u"12-byte stamp"_s));
+        QCOMPARE(d.tree.malformedTypeAnnouncements(), 0u);
     }
 
     void tlsWithClientCertificates()

@@ -147,6 +147,42 @@ private slots:
         QCOMPARE(s->latencySamples, 1u);
     }
 
+    // Regression: an announcement for a topic that already had messages marked the topic's row
+    // changed without reporting it, and a row so marked was never reported again: its later
+    // messages changed the figures without a dataChanged, so views showed stale ones.
+    void aLateAnnouncementKeepsTheTopicRowLive()
+    {
+        MqttTopicTree tree;
+        QAbstractItemModelTester tester(&tree, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        const QByteArray payload = Fixtures::read(u"mqtt_client/wire/pose.payload.bin"_s);
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"cap/pose"_s, payload));
+        tree.apply(std::move(batch));
+        QSignalSpy changed(&tree, &QAbstractItemModel::dataChanged);
+        const auto rowReported = [&] {
+            const QModelIndex row = tree.indexOf(u"cap/pose"_s);
+            for (const QList<QVariant>& args : std::as_const(changed)) {
+                const QModelIndex from = args[0].toModelIndex();
+                const QModelIndex to = args[1].toModelIndex();
+                if (from.parent() == row.parent() && from.row() <= row.row() && to.row() >= row.row())
+                    return true;
+            }
+            return false;
+        };
+        batch.clear();
+        batch.push_back(
+            msg(u"mqtt_client/ros_msg_type/cap/pose"_s, Fixtures::read(u"mqtt_client/wire/pose.type.bin"_s)));
+        tree.apply(std::move(batch));
+        QVERIFY(rowReported()); // the type column changed
+        for (int i = 0; i < 2; ++i) {
+            changed.clear();
+            batch.clear();
+            batch.push_back(msg(u"cap/pose"_s, payload));
+            tree.apply(std::move(batch));
+            QVERIFY2(rowReported(), qPrintable(u"message %1 after the announcement"_s.arg(i + 1)));
+        }
+    }
+
     void malformedAnnouncementsAndPayloadsAreCounted()
     {
         MqttTopicTree tree;

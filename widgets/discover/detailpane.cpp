@@ -398,8 +398,10 @@ void DetailPane::refreshMqtt(bool force)
               .arg(info->qos)
               .arg(info->retained ? tr(", retained") : QString());
     if (info->rosType) {
+        const bool ros2 = info->rosType->dialect == RosTypeRegistry::Dialect::Ros2;
         title += u"<br>"_s
-            + tr("ROS type %1 (announced by mqtt_client)%2")
+            + (ros2 ? tr("ROS 2 type %1 (announced by mqtt_client)%2")
+                    : tr("ROS type %1 (announced by mqtt_client)%2"))
                   .arg(info->rosType->name.toHtmlEscaped(),
                        info->rosType->stamped ? tr(", stamped") : QString());
         if (info->latencySamples)
@@ -425,19 +427,16 @@ void DetailPane::refreshMqtt(bool force)
 
     // Fields: the decoded ROS message when mqtt_client announced the type, else JSON if it is.
     if (const auto registry = tree->registryFor(m_topic); registry && info->rosType) {
-        QByteArray message = m_lastPayload;
-        if (info->rosType->stamped) {
-            if (const auto s = MqttClientWire::splitStamped(message))
-                message = s->message;
-        }
         QString error;
         RosDecodeLimits limits;
         limits.maxArrayElements = 32;
         if (const auto value
-            = RosMessageDecoder::decode(*registry, info->rosType->name, message, &error, limits))
+            = MqttClientWire::decodePayload(*registry, *info->rosType, m_lastPayload, &error, limits))
             showFields(*value);
         else
             showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
+    } else if (!info->typeNote.isEmpty()) {
+        showNoFields(info->typeNote);
     } else if (!QJsonDocument::fromJson(m_lastPayload).isNull()) {
         showJsonFields(m_lastPayload);
     } else {

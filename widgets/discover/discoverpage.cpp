@@ -571,5 +571,7 @@ void DiscoverPage::updateMqttStatus()
         parts << tr("%1 dropped").arg(c->dropped());
     if (t->malformedTypeAnnouncements() || t->malformedPayloads())
         parts << tr("%1 malformed").arg(t->malformedTypeAnnouncements() + t->malformedPayloads());
+    if (const int unknown = t->unknownTypeTopics())
+        parts << tr("%n topic(s) of an unknown ROS 2 type", nullptr, unknown);
     m_counters->setText(parts.join(u" · "_s));
 }

@@ -59,6 +59,7 @@ public:
     MqttTopicFilter* mqttFilterModel() const { return m_mqttProxy; }
     QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
     QLabel* mqttStatus() const { return m_mqttState; }
+    QLabel* mqttCounters() const { return m_counters; }
     QLabel* rosStatus() const { return m_rosState; }
     QAction* publishAction() const { return m_publishAction; }
     QAction* clearRetainedAction() const { return m_clearRetainedAction; }
