@@ -56,13 +56,8 @@ public:
             QJsonObject o;
             o.insert(u"node"_s, e.node);
             o.insert(u"gid"_s, QString::fromLatin1(e.gid.toHex()));
-            o.insert(u"reliability"_s,
-                     e.qos.reliability == Ros2Qos::Reliable ? u"reliable"_s : u"best_effort"_s);
-            o.insert(u"durability"_s,
-                     e.qos.durability == Ros2Qos::Volatile             ? u"volatile"_s
-                         : e.qos.durability == Ros2Qos::TransientLocal ? u"transient_local"_s
-                         : e.qos.durability == Ros2Qos::Transient      ? u"transient"_s
-                                                                       : u"persistent"_s);
+            o.insert(u"reliability"_s, e.qos.reliabilityName());
+            o.insert(u"durability"_s, e.qos.durabilityName());
             list.append(o);
         }
         return list;

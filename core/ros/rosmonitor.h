@@ -21,6 +21,7 @@ struct RosMonitorStats
     QString md5;
     QString definition;
     QByteArray lastMessage; ///< serialized
+    quint64 lost = 0; ///< ROS 2: samples DDS reports lost (roscpp tells none)
 };
 
 /// One message as the monitor saw it, for consumers that need every message (Watch): its

@@ -27,6 +27,16 @@ QString Ros2Qos::durabilityText() const
     return {};
 }
 
+QString Ros2Qos::reliabilityName() const
+{
+    return reliability == Reliable ? QStringLiteral("reliable") : QStringLiteral("best_effort");
+}
+
+QString Ros2Qos::durabilityName() const
+{
+    return durabilityText().replace(QLatin1Char(' '), QLatin1Char('_'));
+}
+
 QString Ros2Qos::text() const
 {
     QString t = reliabilityText() + QStringLiteral(", ") + durabilityText();

@@ -20,6 +20,10 @@ struct Ros2Qos
 
     QString reliabilityText() const;
     QString durabilityText() const;
+    /// As ROS 2 configs and `discover --json` spell them: "reliable", "best_effort"; "volatile",
+    /// "transient_local", "transient", "persistent".
+    QString reliabilityName() const;
+    QString durabilityName() const;
     /// "reliable, volatile" (and ", depth 10" when known).
     QString text() const;
     bool operator==(const Ros2Qos& o) const

@@ -115,6 +115,7 @@ QHash<QString, RosMonitorStats> LiveSession::toRosStats(const QHash<QString, Ros
         s.bytesPerSecond = it->bytesPerSecond;
         s.type = it->type;
         s.lastMessage = it->lastMessage;
+        s.lost = it->lost;
     }
     return stats;
 }

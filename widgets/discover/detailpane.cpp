@@ -510,11 +510,9 @@ void DetailPane::refreshRos(bool force)
               .arg(s->messages)
               .arg(s->rateHz, 0, 'f', 2)
               .arg(sizeText(qint64(s->bytesPerSecond)), sizeText(s->lastSize));
-    if (ros2) {
-        // samples DDS knows were sent and never came (a full receive buffer, a lossy link)
-        if (const quint64 lost = m_session->ros2()->snapshot(now).value(m_topic).lost)
-            title += u", "_s + tr("%1 lost").arg(lost);
-    }
+    // ROS 2: samples DDS knows were sent and never came (a full receive buffer, a lossy link)
+    if (s->lost)
+        title += u", "_s + tr("%1 lost").arg(s->lost);
     m_title->setText(title);
     m_lastPayload = s->lastMessage;
     showPayload(m_lastPayload);
