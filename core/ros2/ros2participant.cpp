@@ -283,7 +283,8 @@ struct Ros2Participant::Private : public DomainParticipantListener
             return;
         if (!parsed) {
             ++badInfo;
-            if (badInfoFrom.insert(prefix).second && badInfoFrom.size() <= 16)
+            // the first 16 participants are named in the log, once each; the set stays that small
+            if (badInfoFrom.size() < 16 && badInfoFrom.insert(prefix).second)
                 qCWarning(lcRos2).noquote()
                     << "ros_discovery_info from participant" << prefix.toHex() << "not read:" << error;
             return;

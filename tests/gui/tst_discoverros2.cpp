@@ -149,6 +149,42 @@ private slots:
         QVERIFY(!page.rosTabs()->isTabVisible(1));
     }
 
+    // A hostile node: a String claiming 4 GiB, and an unreadable ros_discovery_info. The pane says
+    // why the sample does not decode, the status line counts the announcement, the rest goes on.
+    void hostilePeer()
+    {
+        const QString gid = u"01"_s.repeated(16) + u"00"_s.repeated(8);
+        Ros2Peer evil(m_domain,
+                      {u"--node"_s, u"/evil"_s, u"--pub"_s, u"/huge:std_msgs/msg/String:20"_s, u"--raw"_s,
+                       u"/huge:00010000f0ffffff61626300"_s, u"--pub"_s, u"/fine:std_msgs/msg/String:20"_s,
+                       u"--graph-raw"_s, u"00010000"_s + gid + u"ffffffff"_s});
+        QVERIFY2(evil.waitFor(u"ready"_s), qPrintable(evil.errors()));
+        LiveSession session;
+        DiscoverPage page(&session);
+        page.resize(1280, 760);
+        page.show();
+        page.setRos2Options({m_domain, true});
+        page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
+        QTableView* view = page.ros2View();
+        QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/huge"_s) >= 0 && rowOf(view, u"/fine"_s) >= 0, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(page.ros2Status()->text().contains(u"unreadable node announcements 1"_s),
+                                 5000);
+
+        RosTopicModel* model = session.ros2Topics();
+        for (const QString& topic : {u"/huge"_s, u"/fine"_s})
+            QVERIFY(model->setData(model->index(model->rowOf(topic), RosTopicModel::MonitorColumn),
+                                   Qt::Checked, Qt::CheckStateRole));
+        view->setCurrentIndex(view->model()->index(rowOf(view, u"/huge"_s), RosTopicModel::TopicColumn));
+        DetailPane* detail = page.detail();
+        QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"needs 4294967280 more bytes"_s), 10000);
+        QVERIFY(!detail->payloadView()->toPlainText().isEmpty()); // the bytes, shown raw
+        // the well-formed topic of the same node decodes, and both keep their rates
+        view->setCurrentIndex(view->model()->index(rowOf(view, u"/fine"_s), RosTopicModel::TopicColumn));
+        QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            column(view, RosTopicModel::RateColumn).at(rowOf(view, u"/huge"_s)).toDouble() > 10, 10000);
+    }
+
     void mapRos2Config()
     {
         TestServers servers;

@@ -4,7 +4,8 @@
 // types, XCDR1, ros_discovery_info). Topics, types, node names, QoS and counts appear and
 // disappear; samples of std_msgs/String, geometry_msgs/PoseStamped and sensor_msgs/PointCloud2
 // decode to what was sent; an unknown type stays raw bytes of the right size. `bridgescope watch`
-// watches a ROS 2 config's links from DDS and the broker.
+// watches a ROS 2 config's links from DDS and the broker. Hostile nodes (malformed CDR, huge lengths,
+// unreadable ros_discovery_info) and garbage on the RTPS ports are counted or refused, never fatal.
 #include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
 #include "ros2/ros2participant.h"
@@ -12,13 +13,17 @@
 #include "testservers.h"
 #include "wire/ros2definitions.h"
 
+#include <memory>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
+#include <QUdpSocket>
 
 using namespace Qt::StringLiterals;
 
@@ -204,6 +209,180 @@ private slots:
         QVERIFY(!p.snapshot(wallClockNs()).contains(u"/chatter"_s));
         p.stop();
         QVERIFY(!p.isRunning());
+    }
+
+    // A hostile node: samples no rmw would write (a String of 4 GiB, a PointCloud2 claiming 2^31
+    // fields, a truncated PoseStamped, an unknown representation, half a header). They arrive,
+    // are counted with their exact sizes, and do not decode, with a reason, in bounded work; a
+    // big-endian sample, legal CDR that rmw does not write, decodes.
+    void hostileSamples()
+    {
+        struct Case
+        {
+            QString topic, type, hex, error; // error: a word of the decoder's reason, empty: decodes
+        };
+        const QList<Case> cases {
+            {u"/h/huge_string"_s, u"std_msgs/msg/String"_s,
+             u"00010000"
+             "f0ffffff"
+             "61626300"_s,
+             u"needs 4294967280"_s},
+            {u"/h/huge_fields"_s, u"sensor_msgs/msg/PointCloud2"_s,
+             u"00010000"
+             "01000000"
+             "00000000"
+             "04000000"
+             "6d617000"
+             "01000000"
+             "10000000"
+             "ffffff7f"_s,
+             u"claims 2147483647 elements"_s},
+            {u"/h/truncated"_s, u"geometry_msgs/msg/PoseStamped"_s,
+             u"00010000"
+             "01000000"_s,
+             u"reading 'nanosec'"_s},
+            {u"/h/bad_header"_s, u"std_msgs/msg/String"_s,
+             u"12340000"
+             "04000000"
+             "61626300"_s,
+             u"encapsulation 12 34"_s},
+            {u"/h/half_header"_s, u"std_msgs/msg/String"_s, u"0001"_s, u"reading 'data'"_s},
+            {u"/h/big_endian"_s, u"std_msgs/msg/String"_s,
+             u"00000000"
+             "00000004"
+             "61626300"_s,
+             QString()},
+        };
+        QStringList args {u"--node"_s, u"/evil"_s};
+        for (const Case& c : cases)
+            args << u"--pub"_s << u"%1:%2:20:best_effort"_s.arg(c.topic, c.type) << u"--raw"_s
+                 << u"%1:%2"_s.arg(c.topic, c.hex);
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        Ros2Peer evil(m_domain, args);
+        QVERIFY2(evil.waitFor(u"ready"_s), qPrintable(evil.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(std::all_of(cases.begin(), cases.end(),
+                                             [&](const Case& c) { return publishers(p, c.topic) == 1; }),
+                                 15000);
+        for (const Case& c : cases)
+            p.monitor(c.topic);
+        const auto arrived = [&](const Case& c) {
+            const auto stats = p.snapshot(wallClockNs());
+            return stats.value(c.topic).messages >= 5;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(std::all_of(cases.begin(), cases.end(), arrived), 15000);
+
+        const RosTypeRegistry registry = Ros2Definitions::registry();
+        const auto stats = p.snapshot(wallClockNs());
+        for (const Case& c : cases) {
+            const Ros2MonitorStats& s = stats[c.topic];
+            const QByteArray sent = QByteArray::fromHex(c.hex.toLatin1());
+            QCOMPARE(s.type, c.type);
+            // RTPS pads a serialized payload to a multiple of 4 bytes
+            QCOMPARE(s.lastSize, int((sent.size() + 3) & ~3));
+            QCOMPARE(s.lastMessage.left(sent.size()), sent);
+            QElapsedTimer took;
+            took.start();
+            error.clear();
+            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            QVERIFY2(took.elapsed() < 100, qPrintable(c.topic));
+            QVERIFY2(RosMessageDecoder::lastSteps() < 100, qPrintable(c.topic));
+            if (c.error.isEmpty()) {
+                QVERIFY2(v, qPrintable(c.topic + u": "_s + error));
+                QCOMPARE(field(*v, u"data"_s), u"abc"_s);
+            } else {
+                QVERIFY2(!v, qPrintable(c.topic));
+                QVERIFY2(error.contains(c.error, Qt::CaseInsensitive), qPrintable(c.topic + u": "_s + error));
+            }
+        }
+        QCOMPARE(p.badDiscoveryInfo(), quint64(0)); // the hostile node's graph is fine
+        QVERIFY(hasNode(p, u"/evil"_s));
+    }
+
+    // Hostile announcements on ros_discovery_info (a node list of 2^32 - 1 entries, a truncated
+    // one, a node name of 2 GiB): counted and shown by `discover`, never taken; the hostile
+    // participants' topics stay in the graph, and a good node beside them keeps its name.
+    void hostileDiscoveryInfo()
+    {
+        const QString gid = u"01"_s.repeated(16) + u"00"_s.repeated(8);
+        const QStringList infos {
+            u"00010000"_s + gid + u"ffffffff"_s,
+            u"00010000"_s + gid.left(20),
+            u"00010000"_s + gid
+                + u"01000000"
+                  "ffffff7f"
+                  "2f00"_s,
+        };
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        std::vector<std::unique_ptr<Ros2Peer>> evil;
+        for (int i = 0; i < int(infos.size()); ++i) {
+            evil.push_back(std::make_unique<Ros2Peer>(
+                m_domain,
+                QStringList {u"--node"_s, u"/evil%1"_s.arg(i), u"--pub"_s,
+                             u"/evil%1/out:std_msgs/msg/String:5"_s.arg(i), u"--graph-raw"_s, infos[i]}));
+        }
+        Ros2Peer good(m_domain, {u"--node"_s, u"/good"_s, u"--pub"_s, u"/good/out:std_msgs/msg/String:5"_s});
+        for (const auto& e : evil)
+            QVERIFY2(e->waitFor(u"ready"_s), qPrintable(e->errors()));
+        QVERIFY2(good.waitFor(u"ready"_s), qPrintable(good.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(publishers(p, u"/evil0/out"_s) == 1 && publishers(p, u"/evil1/out"_s) == 1
+                                     && publishers(p, u"/evil2/out"_s) == 1 && hasNode(p, u"/good"_s)
+                                     && p.badDiscoveryInfo() >= quint64(infos.size()),
+                                 15000);
+        for (int i = 0; i < int(infos.size()); ++i) {
+            QVERIFY(!hasNode(p, u"/evil%1"_s.arg(i)));
+            QVERIFY(p.graph().topic(u"/evil%1/out"_s.arg(i))->publishers[0].node.isEmpty());
+        }
+        QCOMPARE(p.graph().topic(u"/good/out"_s)->publishers[0].node, u"/good"_s);
+
+        // the command line says so too
+        QProcess discover;
+        discover.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                       {u"discover"_s, u"--json"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s,
+                        QString::number(m_domain), u"--ros-localhost-only"_s, u"--seconds"_s, u"4"_s});
+        QVERIFY(discover.waitForFinished(30000));
+        const QJsonObject ros2
+            = QJsonDocument::fromJson(discover.readAllStandardOutput()).object().value(u"ros2"_s).toObject();
+        QVERIFY2(ros2.value(u"unreadable_discovery_info"_s).toInt() >= int(infos.size()),
+                 qPrintable(QString::fromUtf8(QJsonDocument(ros2).toJson())));
+    }
+
+    // Garbage on the RTPS ports: random datagrams, and RTPS headers followed by random
+    // submessages, 4,000 of them (seeded, so a failure repeats), at the discovery and user ports of
+    // the first participant indices. The participant lives on, and still sees a node that comes
+    // after the flood and its samples.
+    void rtpsGarbage()
+    {
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        QRandomGenerator random(20261126);
+        QUdpSocket socket;
+        int sent = 0;
+        for (int i = 0; i < 4000; ++i) {
+            QByteArray d(int(random.bounded(8, 600)), Qt::Uninitialized);
+            for (char& c : d)
+                c = char(random.bounded(256));
+            if (i % 2 == 1) { // "RTPS", version 2.1, vendor, a guid prefix, then submessages of any kind
+                const QByteArray head = QByteArray("RTPS\x02\x01\x01\x10", 8) + d.left(12);
+                d = head + d.mid(12);
+            }
+            const int index = int(random.bounded(4));
+            const quint16 port = quint16(7400 + 250 * m_domain + 10 + 2 * index + int(random.bounded(2)));
+            if (socket.writeDatagram(d, QHostAddress::LocalHost, port) == d.size())
+                ++sent;
+            if (i % 200 == 0)
+                QCoreApplication::processEvents(); // let the graph timer run meanwhile
+        }
+        QVERIFY(sent > 3000);
+        Ros2Peer talker(m_domain, {u"--node"_s, u"/after"_s, u"--pub"_s, u"/after:std_msgs/msg/String:20"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(publishers(p, u"/after"_s) == 1 && hasNode(p, u"/after"_s), 15000);
+        p.monitor(u"/after"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/after"_s).messages >= 5, 10000);
     }
 
     void monitorUnknownTopicFails()

@@ -214,7 +214,7 @@ static bool create_entities(void)
     // reader keeps all and ignores its own participant's samples.
     dds_entity_t graph_topic = peer_create_topic(peer.participant,
                                                  &rmw_dds_common_msg_dds__ParticipantEntitiesInfo__desc,
-                                                 "ros_discovery_info");
+                                                 "ros_discovery_info", &o->graph_raw);
     if (!dds_ok(graph_topic, "dds_create_topic ros_discovery_info"))
         return false;
     qos = make_qos(true, true, false, 1, false);
@@ -268,7 +268,8 @@ static bool create_entities(void)
         p->ep = i < o->npubs ? &o->pubs[i] : &peer.many[i - o->npubs];
         p->done = p->ep->rate_hz <= 0.0; // --many with RATE_HZ 0: never publishes
         snprintf(dds_topic, sizeof dds_topic, "rt%s", p->ep->topic);
-        dds_entity_t topic = peer_create_topic(peer.participant, peer_type_descriptor(p->ep->type), dds_topic);
+        dds_entity_t topic = peer_create_topic(peer.participant, peer_type_descriptor(p->ep->type), dds_topic,
+                                               &p->ep->raw);
         if (!dds_ok(topic, "dds_create_topic"))
             return false;
         qos = make_qos(p->ep->reliable, p->ep->transient_local, false, p->ep->depth, false);
@@ -288,7 +289,7 @@ static bool create_entities(void)
         s->ep = &o->subs[i];
         s->desc = peer_type_descriptor(s->ep->type);
         snprintf(dds_topic, sizeof dds_topic, "rt%s", s->ep->topic);
-        dds_entity_t topic = peer_create_topic(peer.participant, s->desc, dds_topic);
+        dds_entity_t topic = peer_create_topic(peer.participant, s->desc, dds_topic, NULL);
         if (!dds_ok(topic, "dds_create_topic"))
             return false;
         // rclcpp's default: local publications are not ignored.
@@ -512,6 +513,7 @@ static void shut_down(void)
         peer_sample_fini(&peer.pubs[i].sample);
     free(peer.pubs);
     free(peer.many);
+    peer_free_options(&peer.opt);
     peer.pubs = NULL;
     peer.many = NULL;
     peer.npubs = 0;

@@ -43,6 +43,9 @@ void peer_print_usage(FILE *out, const char *prog)
         "  --cdr                      also print the first serialized bytes of each received sample\n"
         "  --show-discovery           print remote endpoints and the nodes of ros_discovery_info\n"
         "  --trace FILE               write Cyclone DDS's trace (verbosity finest) to FILE\n"
+        "  --raw TOPIC:HEX            every sample of --pub TOPIC is these bytes (header included,\n"
+        "                             1 to %u of them): hostile CDR (repeatable)\n"
+        "  --graph-raw HEX            the ros_discovery_info samples are these bytes\n"
         "  --help                     this text\n"
         "\n"
         "TYPE: std_msgs/msg/String, geometry_msgs/msg/PoseStamped, sensor_msgs/msg/PointCloud2,\n"
@@ -54,7 +57,8 @@ void peer_print_usage(FILE *out, const char *prog)
         "(with --cdr: cdr TOPIC N SIZE HEX...; with --show-discovery: endpoint pub|sub DDS_TOPIC\n"
         "DDS_TYPE and node NAMESPACE NAME READERS WRITERS).\n"
         "Exit status: 0 done, 1 DDS error, 2 bad arguments.\n",
-        prog, PEER_MAX_DOMAIN, PEER_MAX_ENDPOINTS, PEER_MAX_ENDPOINTS, PEER_MAX_MANY, PEER_MAX_SIZE);
+        prog, PEER_MAX_DOMAIN, PEER_MAX_ENDPOINTS, PEER_MAX_ENDPOINTS, PEER_MAX_MANY, PEER_MAX_SIZE,
+        PEER_MAX_RAW);
 }
 
 static void set_err(char *err, size_t errlen, const char *fmt, ...)
@@ -349,6 +353,90 @@ static bool resolve_many(struct peer_many *m, const struct peer_options *o, char
     return true;
 }
 
+static int hex_digit(char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F')
+        return c - 'A' + 10;
+    return -1;
+}
+
+// An even number of hex digits, 1 to PEER_MAX_RAW bytes. (No empty payloads: Cyclone sends a
+// sample of no bytes as a DATA without payload, which is RTPS plumbing, not CDR.)
+static bool parse_hex(const char *s, struct peer_raw *raw, char *err, size_t errlen)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n % 2 != 0 || n / 2 > PEER_MAX_RAW) {
+        set_err(err, errlen, "raw bytes: want an even number of hex digits, 1 to %u bytes", PEER_MAX_RAW);
+        return false;
+    }
+    free(raw->bytes);
+    raw->bytes = NULL;
+    if (n > 0 && (raw->bytes = malloc(n / 2)) == NULL) {
+        set_err(err, errlen, "out of memory");
+        return false;
+    }
+    for (size_t i = 0; i < n; i += 2) {
+        int hi = hex_digit(s[i]), lo = hex_digit(s[i + 1]);
+        if (hi < 0 || lo < 0) {
+            set_err(err, errlen, "raw bytes: '%c%c' is not a hex byte", s[i], s[i + 1]);
+            return false;
+        }
+        raw->bytes[i / 2] = (unsigned char)(hi * 16 + lo);
+    }
+    raw->len = (uint32_t)(n / 2);
+    raw->set = true;
+    return true;
+}
+
+// --raw TOPIC:HEX, after the topics are resolved: TOPIC must be a --pub of this peer (and no --sub
+// of it: a topic has one type in a participant, and a raw one is not the plain one).
+static bool attach_raw(const char *arg, struct peer_options *o, char *err, size_t errlen)
+{
+    const char *colon = strchr(arg, ':');
+    struct peer_endpoint ep;
+    memset(&ep, 0, sizeof ep);
+    size_t len = colon != NULL ? (size_t)(colon - arg) : 0;
+    if (colon == NULL || len == 0 || len > PEER_MAX_NAME) {
+        set_err(err, errlen, "want --raw TOPIC:HEX, got '%.60s'", arg);
+        return false;
+    }
+    memcpy(ep.topic, arg, len);
+    ep.topic[len] = '\0';
+    if (!resolve_topic(&ep, o, err, errlen))
+        return false;
+    for (unsigned i = 0; i < o->nsubs; i++) {
+        if (strcmp(o->subs[i].topic, ep.topic) == 0) {
+            set_err(err, errlen, "--raw %s: this peer also subscribes to it", ep.topic);
+            return false;
+        }
+    }
+    for (unsigned i = 0; i < o->npubs; i++) {
+        if (strcmp(o->pubs[i].topic, ep.topic) == 0) {
+            if (o->pubs[i].raw.set) {
+                set_err(err, errlen, "--raw %s given twice", ep.topic);
+                return false;
+            }
+            return parse_hex(colon + 1, &o->pubs[i].raw, err, errlen);
+        }
+    }
+    set_err(err, errlen, "--raw %s: no --pub of that topic", ep.topic);
+    return false;
+}
+
+void peer_free_options(struct peer_options *o)
+{
+    for (unsigned i = 0; i < o->npubs; i++) {
+        free(o->pubs[i].raw.bytes);
+        o->pubs[i].raw.bytes = NULL;
+    }
+    free(o->graph_raw.bytes);
+    o->graph_raw.bytes = NULL;
+}
+
 enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_options *o, char *err,
                                           size_t errlen)
 {
@@ -359,6 +447,8 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
     o->size = 1024;
     o->lease_ms = 2000;
     bool have_domain = false;
+    const char *raws[PEER_MAX_ENDPOINTS];
+    unsigned nraw = 0;
 
     for (int i = 1; i < argc; i++) {
         const char *opt = argv[i];
@@ -378,7 +468,8 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
         }
         // Every other option takes a value.
         static const char *const with_value[] = { "--domain", "--node", "--pub", "--sub", "--many", "--count",
-                                                  "--duration", "--size", "--lease-ms", "--trace" };
+                                                  "--duration", "--size", "--lease-ms", "--trace",
+                                                  "--raw", "--graph-raw" };
         bool known = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
             known = known || strcmp(opt, with_value[k]) == 0;
@@ -442,6 +533,19 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
                 return PEER_PARSE_ERROR;
             }
             o->lease_ms = (uint32_t)u;
+        } else if (strcmp(opt, "--raw") == 0) {
+            if (nraw >= PEER_MAX_ENDPOINTS) {
+                set_err(err, errlen, "more than %u --raw", PEER_MAX_ENDPOINTS);
+                return PEER_PARSE_ERROR;
+            }
+            raws[nraw++] = val; // attached to their --pub once all topics are resolved
+        } else if (strcmp(opt, "--graph-raw") == 0) {
+            if (o->graph_raw.set) {
+                set_err(err, errlen, "--graph-raw given twice");
+                return PEER_PARSE_ERROR;
+            }
+            if (!parse_hex(val, &o->graph_raw, err, errlen))
+                return PEER_PARSE_ERROR;
         } else { // --trace
             // The name goes into Cyclone's XML configuration: no markup characters.
             if (val[0] == '\0' || strlen(val) > PEER_MAX_PATH || strpbrk(val, "<>&\"'$") != NULL) {
@@ -460,6 +564,9 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
             return PEER_PARSE_ERROR;
     for (unsigned i = 0; i < o->nsubs; i++)
         if (!resolve_topic(&o->subs[i], o, err, errlen))
+            return PEER_PARSE_ERROR;
+    for (unsigned i = 0; i < nraw; i++)
+        if (!attach_raw(raws[i], o, err, errlen))
             return PEER_PARSE_ERROR;
     if (o->many.count > 0) {
         if (!resolve_many(&o->many, o, err, errlen))

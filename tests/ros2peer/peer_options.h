@@ -18,6 +18,7 @@
 #define PEER_MANY_END 10000u                  // --many: FIRST + N, so that indices have 4 digits
 #define PEER_MANY_DIGITS 4u
 #define PEER_MAX_MANY_BYTES (64u * 1024u * 1024u)   // --many: N x --size for PointCloud2, Opaque
+#define PEER_MAX_RAW 65536u                   // --raw, --graph-raw: bytes of a hand-made sample
 
 enum peer_type {
     PEER_STRING,         // std_msgs/msg/String
@@ -25,6 +26,14 @@ enum peer_type {
     PEER_POINT_CLOUD2,   // sensor_msgs/msg/PointCloud2
     PEER_OPAQUE,         // bridgescope_test/msg/Opaque
     PEER_NTYPES
+};
+
+// Bytes sent as they are instead of a serialized sample (--raw, --graph-raw): malformed CDR, huge
+// sequence lengths, whatever a hostile node could put on the wire.
+struct peer_raw {
+    bool set;
+    uint32_t len;                    // 1..PEER_MAX_RAW
+    unsigned char *bytes;            // malloc'd
 };
 
 // One --pub or --sub.
@@ -35,6 +44,7 @@ struct peer_endpoint {
     bool reliable;                   // else best effort
     bool transient_local;            // else volatile
     int32_t depth;                   // history keep-last depth
+    struct peer_raw raw;             // publishers: --raw TOPIC:HEX for this topic
 };
 
 // --many N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]]: publishers on PREFIX0000, PREFIX0001, ...
@@ -61,6 +71,7 @@ struct peer_options {
     bool cdr;                // print each received sample's first serialized bytes
     bool show_discovery;     // print remote endpoints and ros_discovery_info nodes
     char trace_file[PEER_MAX_PATH + 1];   // Cyclone DDS trace, "" for none
+    struct peer_raw graph_raw;       // --graph-raw HEX: ros_discovery_info sample bytes
 };
 
 // "std_msgs/msg/String" and so on.
@@ -71,6 +82,9 @@ enum peer_parse_result { PEER_PARSE_OK, PEER_PARSE_HELP, PEER_PARSE_ERROR };
 // Fills *options from argv. On PEER_PARSE_ERROR, err holds a one-line reason.
 enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_options *options,
                                           char *err, size_t errlen);
+
+// Frees what parsing allocated (the --raw bytes).
+void peer_free_options(struct peer_options *options);
 
 void peer_print_usage(FILE *out, const char *prog);
 

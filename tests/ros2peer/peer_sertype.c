@@ -4,6 +4,8 @@
 // GNU C11: Cyclone's ddsi headers use the asm keyword.
 #include "peer_sertype.h"
 
+#include "peer_options.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +20,7 @@
 struct peer_sertype {
     struct ddsi_sertype c;
     const dds_topic_descriptor_t *desc;
+    const struct peer_raw *raw;   // NULL: samples are serialized
 };
 
 struct peer_serdata {
@@ -34,8 +37,8 @@ static const struct peer_sertype *sertype_of(const struct ddsi_serdata *d)
 }
 
 // A serdata with room for size bytes, padded to a multiple of 4 with zeros (as rmw does).
-static struct peer_serdata *serdata_new(const struct ddsi_sertype *type, enum ddsi_serdata_kind kind,
-                                        size_t size)
+static struct peer_serdata *serdata_new_sized(const struct ddsi_sertype *type, enum ddsi_serdata_kind kind,
+                                              size_t size, bool pad)
 {
     if (size > UINT32_MAX - 3)
         return NULL;
@@ -43,7 +46,7 @@ static struct peer_serdata *serdata_new(const struct ddsi_sertype *type, enum dd
     if (d == NULL)
         return NULL;
     ddsi_serdata_init(&d->c, type, kind);
-    uint32_t padded = ((uint32_t)size + 3u) & ~3u;
+    uint32_t padded = pad ? (((uint32_t)size + 3u) & ~3u) : (uint32_t)size;
     if (padded > 0) {
         d->data = calloc(1, padded);
         if (d->data == NULL) {
@@ -53,6 +56,12 @@ static struct peer_serdata *serdata_new(const struct ddsi_sertype *type, enum dd
     }
     d->size = padded;
     return d;
+}
+
+static struct peer_serdata *serdata_new(const struct ddsi_sertype *type, enum ddsi_serdata_kind kind,
+                                        size_t size)
+{
+    return serdata_new_sized(type, kind, size, true);
 }
 
 static bool serdata_eqkey(const struct ddsi_serdata *a, const struct ddsi_serdata *b)
@@ -124,6 +133,12 @@ static struct ddsi_serdata *serdata_from_sample(const struct ddsi_sertype *type,
         return d != NULL ? &d->c : NULL;
     }
     const struct peer_sertype *tp = (const struct peer_sertype *)type;
+    if (tp->raw != NULL) {   // exactly the bytes given, not padded
+        struct peer_serdata *d = serdata_new_sized(type, kind, tp->raw->len, false);
+        if (d != NULL && tp->raw->len > 0)
+            memcpy(d->data, tp->raw->bytes, tp->raw->len);
+        return d != NULL ? &d->c : NULL;
+    }
     dds_ostreamLE_t os;
     dds_ostreamLE_init(&os, 0, CDR_ENC_VERSION_1);
     dds_stream_writeLE(&os, sample, tp->desc->m_ops);
@@ -295,7 +310,8 @@ static void sertype_free_samples(const struct ddsi_sertype *tpcmn, void **ptrs, 
 
 static bool sertype_equal(const struct ddsi_sertype *a, const struct ddsi_sertype *b)
 {
-    return ((const struct peer_sertype *)a)->desc == ((const struct peer_sertype *)b)->desc;
+    const struct peer_sertype *x = (const struct peer_sertype *)a, *y = (const struct peer_sertype *)b;
+    return x->desc == y->desc && x->raw == y->raw;
 }
 
 static uint32_t sertype_hash(const struct ddsi_sertype *tpcmn)
@@ -316,7 +332,8 @@ static const struct ddsi_sertype_ops sertype_ops = {
     // derived data representations, no serialization into loaned (shared memory) buffers.
 };
 
-dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc, const char *name)
+dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc, const char *name,
+                               const struct peer_raw *raw)
 {
     struct peer_sertype *st = calloc(1, sizeof *st);
     if (st == NULL)
@@ -325,6 +342,7 @@ dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descrip
                             DDSI_SERTYPE_FLAG_TOPICKIND_NO_KEY);
     st->c.allowed_data_representation = DDS_DATA_REPRESENTATION_FLAG_XCDR1;
     st->desc = desc;
+    st->raw = raw != NULL && raw->set ? raw : NULL;
     struct ddsi_sertype *stp = &st->c;
     dds_entity_t topic = dds_create_topic_sertype(participant, name, &stp, NULL, NULL, NULL);
     if (topic < 0)

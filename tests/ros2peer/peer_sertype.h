@@ -14,10 +14,13 @@
 #include <dds/dds.h>
 
 struct ddsi_serdata;
+struct peer_raw;
 
-// Creates topic `name` of desc's type (desc->m_typename on the wire).
+// Creates topic `name` of desc's type (desc->m_typename on the wire). With `raw` (kept, not
+// copied: it must outlive the topic), every sample written is raw's bytes as they are, whatever
+// the sample given to dds_write: how the tests put hostile CDR on the wire.
 dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc,
-                               const char *name);
+                               const char *name, const struct peer_raw *raw);
 
 // A sample taken with dds_takecdr from a reader of such a topic:
 // its serialized size (the 4-byte encapsulation header included) ...

@@ -82,6 +82,13 @@ bad_args=(
     "--domain 1 --many 5:/m:std_msgs/msg/String:-1"
     "--domain 1 --many 100:/m:sensor_msgs/msg/PointCloud2:1 --size 4194304"
     "--domain 1 --many 2:/m:std_msgs/msg/String --many 2:/n:std_msgs/msg/String"
+    "--domain 1 --raw /a:00010000"
+    "--domain 1 --pub /a:std_msgs/msg/String --raw /a:0001000"
+    "--domain 1 --pub /a:std_msgs/msg/String --raw /a:zz"
+    "--domain 1 --pub /a:std_msgs/msg/String --raw /a:"
+    "--domain 1 --pub /a:std_msgs/msg/String --raw /a:00 --raw /a:00"
+    "--domain 1 --pub /a:std_msgs/msg/String --sub /a:std_msgs/msg/String --raw /a:00"
+    "--domain 1 --graph-raw 0"
 )
 for args in "${bad_args[@]}"; do
     # shellcheck disable=SC2086 # word splitting wanted
