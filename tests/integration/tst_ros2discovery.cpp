@@ -271,7 +271,15 @@ private slots:
             const auto stats = p.snapshot(wallClockNs());
             return stats.value(c.topic).messages >= 5;
         };
-        QTRY_VERIFY_WITH_TIMEOUT(std::all_of(cases.begin(), cases.end(), arrived), 15000);
+        const auto counts = [&] {
+            QStringList out;
+            const auto stats = p.snapshot(wallClockNs());
+            for (const Case& c : cases)
+                out << u"%1 %2"_s.arg(c.topic).arg(stats.value(c.topic).messages);
+            return out.join(u", "_s);
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(std::all_of(cases.begin(), cases.end(), arrived), qPrintable(counts()),
+                                  15000);
 
         const RosTypeRegistry registry = Ros2Definitions::registry();
         const auto stats = p.snapshot(wallClockNs());
@@ -328,10 +336,17 @@ private slots:
         for (const auto& e : evil)
             QVERIFY2(e->waitFor(u"ready"_s), qPrintable(e->errors()));
         QVERIFY2(good.waitFor(u"ready"_s), qPrintable(good.errors()));
-        QTRY_VERIFY_WITH_TIMEOUT(publishers(p, u"/evil0/out"_s) == 1 && publishers(p, u"/evil1/out"_s) == 1
-                                     && publishers(p, u"/evil2/out"_s) == 1 && hasNode(p, u"/good"_s)
-                                     && p.badDiscoveryInfo() >= quint64(infos.size()),
-                                 15000);
+        const auto state = [&] {
+            return u"publishers %1 %2 %3, /good named %4, unreadable %5"_s.arg(publishers(p, u"/evil0/out"_s))
+                .arg(publishers(p, u"/evil1/out"_s))
+                .arg(publishers(p, u"/evil2/out"_s))
+                .arg(hasNode(p, u"/good"_s))
+                .arg(p.badDiscoveryInfo());
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(publishers(p, u"/evil0/out"_s) == 1 && publishers(p, u"/evil1/out"_s) == 1
+                                      && publishers(p, u"/evil2/out"_s) == 1 && hasNode(p, u"/good"_s)
+                                      && p.badDiscoveryInfo() >= quint64(infos.size()),
+                                  qPrintable(state()), 15000);
         for (int i = 0; i < int(infos.size()); ++i) {
             QVERIFY(!hasNode(p, u"/evil%1"_s.arg(i)));
             QVERIFY(p.graph().topic(u"/evil%1/out"_s.arg(i))->publishers[0].node.isEmpty());

@@ -36,7 +36,9 @@ static const struct peer_sertype *sertype_of(const struct ddsi_serdata *d)
     return (const struct peer_sertype *)d->type;
 }
 
-// A serdata with room for size bytes, padded to a multiple of 4 with zeros (as rmw does).
+// A serdata with room for size bytes, padded to a multiple of 4 with zeros (as rmw does). With
+// pad false its size stays as given, but the buffer still holds the zeros: Cyclone pads every
+// payload to a multiple of 4 on the wire and reads those bytes from the buffer too.
 static struct peer_serdata *serdata_new_sized(const struct ddsi_sertype *type, enum ddsi_serdata_kind kind,
                                               size_t size, bool pad)
 {
@@ -46,7 +48,7 @@ static struct peer_serdata *serdata_new_sized(const struct ddsi_sertype *type, e
     if (d == NULL)
         return NULL;
     ddsi_serdata_init(&d->c, type, kind);
-    uint32_t padded = pad ? (((uint32_t)size + 3u) & ~3u) : (uint32_t)size;
+    uint32_t padded = ((uint32_t)size + 3u) & ~3u;
     if (padded > 0) {
         d->data = calloc(1, padded);
         if (d->data == NULL) {
@@ -54,7 +56,7 @@ static struct peer_serdata *serdata_new_sized(const struct ddsi_sertype *type, e
             return NULL;
         }
     }
-    d->size = padded;
+    d->size = pad ? padded : (uint32_t)size;
     return d;
 }
 
@@ -158,7 +160,8 @@ static struct ddsi_serdata *serdata_from_sample(const struct ddsi_sertype *type,
 static void serdata_to_ser(const struct ddsi_serdata *dcmn, size_t off, size_t sz, void *buf)
 {
     const struct peer_serdata *d = (const struct peer_serdata *)dcmn;
-    if (off <= d->size && sz <= d->size - off && sz > 0)
+    const uint32_t held = (d->size + 3u) & ~3u;   // the buffer, padding included
+    if (off <= held && sz <= held - off && sz > 0)
         memcpy(buf, d->data + off, sz);
 }
 
