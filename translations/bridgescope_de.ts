@@ -5236,10 +5236,6 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <source>Zero values (%1).</source>
         <translation>Nullwerte (%1).</translation>
     </message>
-    <message>
-        <source>%1 is a ROS 2 type: ROS messages are only sent in ROS 1 serialization for now</source>
-        <translation>%1 ist ein ROS-2-Typ: ROS-Nachrichten werden vorerst nur in ROS-1-Serialisierung gesendet</translation>
-    </message>
 </context>
 <context>
     <name>RateChart</name>
@@ -6293,6 +6289,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>unknown type &apos;%1&apos;</source>
         <translation>unbekannter Typ &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>text with a NUL character cannot be sent as a CDR string</source>
+        <translation>Text mit einem NUL-Zeichen kann nicht als CDR-String gesendet werden</translation>
     </message>
 </context>
 <context>

@@ -30,12 +30,6 @@ std::optional<QByteArray> PublishPayload::build(Format format, const QString& te
             *error = tr("no ROS type is announced for this topic");
         return std::nullopt;
     }
-    if (type->dialect == RosTypeRegistry::Dialect::Ros2) {
-        if (error)
-            *error = tr("%1 is a ROS 2 type: ROS messages are only sent in ROS 1 serialization for now")
-                         .arg(type->name);
-        return std::nullopt;
-    }
     QString why;
     const std::optional<QVariant> value = YamlVariant::parse(utf8, &why);
     if (!value) {
@@ -43,13 +37,17 @@ std::optional<QByteArray> PublishPayload::build(Format format, const QString& te
             *error = tr("not YAML or JSON: %1").arg(why);
         return std::nullopt;
     }
-    const std::optional<QByteArray> bytes = RosMessageEncoder::encode(*registry, type->name, *value, &why);
+    // mqtt_client for ROS 2 sends CDR as its RMW serializes, for ROS 1 roscpp's serialization
+    const bool ros2 = type->dialect == RosTypeRegistry::Dialect::Ros2;
+    const std::optional<QByteArray> bytes = ros2
+        ? RosMessageEncoder::encodeCdr(*registry, type->name, *value, &why)
+        : RosMessageEncoder::encode(*registry, type->name, *value, &why);
     if (!bytes) {
         if (error)
             *error = tr("not a %1: %2").arg(type->name, why);
         return std::nullopt;
     }
-    return type->stamped ? MqttClientWire::stamped(nowNs, *bytes) : *bytes;
+    return type->stamped ? MqttClientWire::stamped(nowNs, *bytes, type->dialect) : *bytes;
 }
 
 PublishPayload::Prefill PublishPayload::rosMessage(const RosTypeRegistry& registry,

@@ -455,6 +455,8 @@ public:
         const RosMessageType* msg = m_reg.find(type);
         if (!msg)
             fail(tr("no definition for '%1'").arg(type));
+        if (m_cdr && msg->fields.isEmpty())
+            need(1, field);
         for (const RosField& f : msg->fields) {
             if (!f.isArray) {
                 skip(f.type, f.name, depth + 1);
@@ -493,6 +495,9 @@ public:
         if (!msg)
             fail(tr("no definition for '%1'").arg(type));
         v.kind = RosValue::Message;
+        if (m_cdr && msg->fields.isEmpty())
+            need(1,
+                 name); // rosidl gives a message of no fields one uint8 (structure_needs_at_least_one_field)
         for (const RosField& f : msg->fields) {
             if (f.isArray)
                 v.children.append(array(f, depth + 1));

@@ -83,6 +83,17 @@ public:
 
     QByteArray take() { return std::move(m_out); }
 
+    /// CDR from here on, as rmw serializes for ROS 2: the encapsulation header 00 01 00 00
+    /// (little-endian CDR), then each value aligned to its size from the end of the header,
+    /// strings with their NUL, a message of no fields as one zero byte (rosidl's
+    /// structure_needs_at_least_one_field).
+    void useCdr()
+    {
+        m_out.append("\x00\x01\x00\x00", 4);
+        m_cdr = true;
+        m_origin = m_out.size();
+    }
+
     [[noreturn]] static void fail(const QString& path, const QString& what)
     {
         throw EncodeError {path.isEmpty() ? what : tr("%1: %2").arg(path, what)};
@@ -104,6 +115,10 @@ public:
         if (v.isValid() && !isMap(v))
             fail(path, tr("%1 is a message and needs a map of its fields, not %2").arg(type, kindOf(v)));
         const QVariantMap fields = v.toMap();
+        if (m_cdr && msg->fields.isEmpty() && fields.isEmpty()) {
+            put<quint8>(0, path);
+            return;
+        }
         for (auto it = fields.cbegin(); it != fields.cend(); ++it) {
             const bool known = std::any_of(msg->fields.cbegin(), msg->fields.cend(),
                                            [&](const RosField& f) { return f.name == it.key(); });
@@ -148,6 +163,12 @@ private:
 
     template<typename T> void put(T v, const QString& path)
     {
+        if (m_cdr && sizeof(T) > 1) {
+            static const char zeros[8] = {};
+            const qsizetype offset = (m_out.size() - m_origin) % qsizetype(sizeof(T));
+            if (offset)
+                write(zeros, qsizetype(sizeof(T)) - offset, path);
+        }
         char bytes[sizeof(T)];
         qToLittleEndian<T>(v, bytes);
         write(bytes, sizeof(T), path);
@@ -332,6 +353,14 @@ private:
             if (v.isValid() && v.typeId() != QMetaType::QString)
                 fail(path, tr("needs text, not %1").arg(kindOf(v)));
             const QByteArray utf8 = v.toString().toUtf8();
+            if (m_cdr) {
+                // CDR counts the terminating NUL, and a NUL inside would end the string early
+                if (utf8.contains('\0'))
+                    fail(path, tr("text with a NUL character cannot be sent as a CDR string"));
+                put<quint32>(quint32(std::min<qsizetype>(utf8.size() + 1, 0xffffffff)), path);
+                write(utf8.constData(), utf8.size() + 1, path);
+                return;
+            }
             put<quint32>(quint32(std::min<qsizetype>(utf8.size(), 0xffffffff)), path);
             write(utf8.constData(), utf8.size(), path);
         } else if (type == u"bool"_s) {
@@ -392,15 +421,20 @@ private:
     RosEncodeLimits m_limits;
     QByteArray m_out;
     qint64 m_steps = 0;
+    bool m_cdr = false;
+    qsizetype m_origin = 0;
 };
 
 } // namespace
 
-std::optional<QByteArray> RosMessageEncoder::encode(const RosTypeRegistry& registry, const QString& type,
-                                                    const QVariant& value, QString* error,
-                                                    const RosEncodeLimits& limits)
+namespace {
+std::optional<QByteArray> encodeWith(const RosTypeRegistry& registry, const QString& type,
+                                     const QVariant& value, QString* error, const RosEncodeLimits& limits,
+                                     bool cdr)
 {
     Writer writer(registry, limits);
+    if (cdr)
+        writer.useCdr();
     try {
         writer.value(type, value, QString(), 0);
         return writer.take();
@@ -409,6 +443,23 @@ std::optional<QByteArray> RosMessageEncoder::encode(const RosTypeRegistry& regis
             *error = e.message;
         return std::nullopt;
     }
+}
+} // namespace
+
+std::optional<QByteArray> RosMessageEncoder::encode(const RosTypeRegistry& registry, const QString& type,
+                                                    const QVariant& value, QString* error,
+                                                    const RosEncodeLimits& limits)
+{
+    return encodeWith(registry, type, value, error, limits, false);
+}
+
+std::optional<QByteArray> RosMessageEncoder::encodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                                       const QVariant& value, QString* error,
+                                                       const RosEncodeLimits& limits)
+{
+    const QString name
+        = registry.dialect() == RosTypeRegistry::Dialect::Ros2 ? RosTypeRegistry::ros2TypeName(type) : type;
+    return encodeWith(registry, name, value, error, limits, true);
 }
 
 namespace {

@@ -18,8 +18,8 @@ struct RosEncodeLimits
     int maxDepth = 32;
 };
 
-/// Serializes a value tree as ROS 1 does (roscpp, and so mqtt_client): the counterpart of
-/// RosMessageDecoder, driven by the same registry.
+/// Serializes a value tree as ROS 1 does (roscpp, and so mqtt_client), or as CDR for ROS 2: the
+/// counterpart of RosMessageDecoder, driven by the same registry.
 ///
 /// A message is a map by field name (missing fields take their zero value, unknown names are an
 /// error), an array a list (a fixed-length one of exactly its length), a number a number or a
@@ -33,6 +33,12 @@ public:
     static std::optional<QByteArray> encode(const RosTypeRegistry& registry, const QString& type,
                                             const QVariant& value, QString* error = nullptr,
                                             const RosEncodeLimits& limits = {});
+    /// Serializes as rmw does for ROS 2 (and mqtt_client for ROS 2 with it): CDR (XCDR1,
+    /// little-endian) after the encapsulation header 00 01 00 00, the counterpart of
+    /// RosMessageDecoder::decodeCdr(). The same value rules; a string may not contain NUL.
+    static std::optional<QByteArray> encodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                               const QVariant& value, QString* error = nullptr,
+                                               const RosEncodeLimits& limits = {});
     /// A decoded message as YAML in field order that encode() takes back (after YamlVariant);
     /// nullopt when the decode cut anything (a long array or string) or a definition repeats a
     /// field name, as it would not round-trip.

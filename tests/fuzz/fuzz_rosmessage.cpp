@@ -7,7 +7,8 @@
 // not parse is an error with a message; one that parses decodes the bytes within the limits or
 // says why not, and a decoded value prints and finds its fields without crashing, and encodes
 // back (RosMessageEncoder) to bytes with the same values. The same definition and bytes go
-// through the ROS 2 dialect and the CDR decoder too (a ROS 2 publisher is as hostile).
+// through the ROS 2 dialect and the CDR decoder too (a ROS 2 publisher is as hostile), and what
+// decodes comes back through the CDR encoder to the same values.
 #include "base/yamlvariant.h"
 #include "fuzzcheck.h"
 #include "wire/rosmessage.h"
@@ -25,10 +26,23 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     RosTypeRegistry ros2(RosTypeRegistry::Dialect::Ros2);
     if (ros2.addDefinition(type, definition, &error)) {
         error.clear();
-        if (const auto cdr = RosMessageDecoder::decodeCdr(ros2, type, payload, &error))
-            (void)cdr->toLines();
-        else
+        if (const auto cdr = RosMessageDecoder::decodeCdr(ros2, type, payload, &error)) {
+            // and back through the YAML a user edits to CDR (little-endian, as rmw writes it)
+            const QStringList lines = cdr->toLines();
+            if (const std::optional<QString> yaml = RosMessageEncoder::toYaml(*cdr)) {
+                const std::optional<QVariant> tree = YamlVariant::parse(yaml->toUtf8(), &error);
+                FUZZ_CHECK(tree.has_value(), "the encoder's YAML of a CDR message does not parse");
+                error.clear();
+                if (const auto bytes = RosMessageEncoder::encodeCdr(ros2, type, *tree, &error)) {
+                    const auto again = RosMessageDecoder::decodeCdr(ros2, type, *bytes, &error);
+                    FUZZ_CHECK(again && again->toLines() == lines, "CDR-encoded values decode differently");
+                } else {
+                    FUZZ_CHECK(!error.isEmpty(), "a CDR value refused without a message");
+                }
+            }
+        } else {
             FUZZ_CHECK(!error.isEmpty(), "a CDR message rejected without a message");
+        }
     } else {
         FUZZ_CHECK(!error.isEmpty(), "a ROS 2 definition rejected without a message");
     }

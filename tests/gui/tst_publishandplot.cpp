@@ -14,7 +14,9 @@
 #include "widgets/discover/fieldplotchart.h"
 #include "widgets/discover/publishdialog.h"
 #include "wire/mqttclientwire.h"
+#include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
+#include "wire/rosmessageencoder.h"
 
 #include <functional>
 #include <QAction>
@@ -326,6 +328,70 @@ private slots:
                  QByteArray("\x04\x00\x00\x00"
                             "ahoy",
                             8));
+    }
+
+    // mqtt_client for ROS 2: a stamped geometry_msgs/msg/PoseStamped announced in CDR. The dialog
+    // offers the type, prefills the last message's values, and sends CDR after a 12-byte CDR stamp,
+    // which decodes to what was typed.
+    void publishesRos2MessagesAsMqttClientDoes()
+    {
+        RosMsgTypeInfo type;
+        type.name = u"geometry_msgs/msg/PoseStamped"_s;
+        type.stamped = true;
+        type.dialect = RosTypeRegistry::Dialect::Ros2;
+        const RosTypeRegistry registry = Ros2Definitions::registry();
+        QString error;
+        const auto first = RosMessageEncoder::encodeCdr(
+            registry, type.name,
+            QVariantMap {
+                {u"header"_s, QVariantMap {{u"frame_id"_s, u"odom"_s}}},
+                {u"pose"_s, QVariantMap {{u"position"_s, QVariantMap {{u"x"_s, 2.5}, {u"y"_s, 4}}}}}},
+            &error);
+        QVERIFY2(first, qPrintable(error));
+        {
+            MqttConnection robot;
+            robot.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+            QTRY_VERIFY(robot.state() == MqttConnection::State::Connected);
+            QVERIFY(robot.publish(u"mqtt_client/ros_msg_type/robot2/pose"_s, MqttClientWire::encodeType(type),
+                                  1, true));
+            QVERIFY(robot.publish(u"robot2/pose"_s,
+                                  MqttClientWire::stamped(1'700'000'000'000'000'000, *first, type.dialect), 1,
+                                  true));
+            QTest::qWait(300);
+        }
+        Page p(m_servers.brokerUrl());
+        select(p.page, u"robot2/pose"_s);
+        QTRY_VERIFY(p.session.mqttTopics()->registryFor(u"robot2/pose"_s));
+        p.page.publishAction()->trigger();
+        auto* dialog = p.page.findChild<PublishDialog*>();
+        QVERIFY(dialog);
+        QTRY_COMPARE(dialog->formatBox()->currentIndex(), int(PublishDialog::RosMessage));
+        QVERIFY(dialog->formatBox()->currentText().contains(type.name));
+        QString yaml = dialog->payloadEdit()->toPlainText();
+        QVERIFY2(yaml.contains(u"    x: 2.5\n"_s) && yaml.contains(u"frame_id: \"odom\""_s),
+                 qPrintable(yaml));
+        yaml.replace(u"    x: 2.5\n"_s, u"    x: -6.125\n"_s);
+        dialog->payloadEdit()->setPlainText(yaml);
+
+        const qint64 before = QDateTime::currentMSecsSinceEpoch();
+        const Received r = receiveOne(
+            u"robot2/pose"_s, 10, [&] { dialog->publishButton()->click(); }, true);
+        QVERIFY2(r.got, qPrintable(dialog->status()->text()));
+        const auto split = MqttClientWire::splitStamped(r.payload, type.dialect);
+        QVERIFY(split);
+        QVERIFY(r.payload.startsWith(QByteArray("\x00\x01\x00\x00", 4))); // the stamp's own header
+        QVERIFY(split->stampNs / 1000000 >= before - 1000 && split->stampNs / 1000000 <= before + 60000);
+        const auto value = RosMessageDecoder::decodeCdr(registry, type.name, split->message, &error);
+        QVERIFY2(value, qPrintable(error));
+        QCOMPARE(value->find(u"pose.position.x"_s)->value.toDouble(), -6.125);
+        QCOMPARE(value->find(u"pose.position.y"_s)->value.toDouble(), 4.0);
+        QCOMPARE(value->find(u"header.frame_id"_s)->value.toString(), u"odom"_s);
+
+        // CDR strings end at a NUL: a NUL typed into one is refused by name
+        dialog->payloadEdit()->setPlainText(yaml.replace(u"\"odom\""_s, u"\"od\\0om\""_s));
+        QVERIFY(!dialog->publish());
+        QVERIFY2(dialog->status()->text().contains(u"header.frame_id"_s),
+                 qPrintable(dialog->status()->text()));
     }
 
     void clearsRetainedMessagesAfterAsking()

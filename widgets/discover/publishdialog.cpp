@@ -93,9 +93,7 @@ void PublishDialog::topicChanged()
 {
     const QString topic = m_topic->text();
     const auto info = m_topics->info(topic);
-    // ROS 2 types are not encoded yet (RosMessageEncoder writes ROS 1 serialization).
-    const bool typed = info && info->rosType && info->rosType->dialect == RosTypeRegistry::Dialect::Ros1
-        && m_topics->registryFor(topic);
+    const bool typed = info && info->rosType && m_topics->registryFor(topic);
     auto* model = qobject_cast<QStandardItemModel*>(m_format->model());
     if (QStandardItem* item = model ? model->item(RosMessage) : nullptr)
         item->setEnabled(typed);
