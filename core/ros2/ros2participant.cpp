@@ -6,6 +6,7 @@
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "ros2/ros2names.h"
+#include "ros2/ros2rawreader.h"
 
 #include <atomic>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
@@ -13,12 +14,9 @@
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/dds/log/Log.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
-#include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
@@ -52,7 +50,6 @@ Ros2Options Ros2Options::fromEnvironment(QString* error)
 namespace {
 
 constexpr std::size_t kMaxEndpoints = 200'000;
-constexpr int kMaxSampleBytes = 64 * 1024 * 1024;
 
 QByteArray gidBytes(const rtps::GUID_t& guid)
 {
@@ -66,50 +63,6 @@ QByteArray prefixBytes(const rtps::GuidPrefix_t& prefix)
 {
     return QByteArray(reinterpret_cast<const char*>(prefix.value), 12);
 }
-
-/// A sample as its CDR bytes, encapsulation header included.
-struct RawSample
-{
-    std::vector<unsigned char> bytes;
-};
-
-/// A type that takes any sample as bytes, whatever its name says (roscpp's ShapeShifter for DDS).
-class RawType : public TopicDataType
-{
-public:
-    explicit RawType(const std::string& name)
-    {
-        setName(name.c_str());
-        m_typeSize = 64; // samples grow as needed: readers use dynamic payloads
-        m_isGetKeyDefined = false;
-        auto_fill_type_object(false);
-        auto_fill_type_information(false);
-    }
-    bool serialize(void* data, rtps::SerializedPayload_t* payload) override
-    {
-        const auto& bytes = static_cast<RawSample*>(data)->bytes;
-        if (bytes.size() < 4 || bytes.size() > payload->max_size)
-            return false;
-        std::copy(bytes.begin(), bytes.end(), payload->data);
-        payload->length = uint32_t(bytes.size());
-        payload->encapsulation = (bytes[1] & 1) ? CDR_LE : CDR_BE;
-        return true;
-    }
-    bool deserialize(rtps::SerializedPayload_t* payload, void* data) override
-    {
-        if (payload->length > uint32_t(kMaxSampleBytes))
-            return false;
-        static_cast<RawSample*>(data)->bytes.assign(payload->data, payload->data + payload->length);
-        return true;
-    }
-    std::function<uint32_t()> getSerializedSizeProvider(void* data) override
-    {
-        return [data] { return uint32_t(static_cast<RawSample*>(data)->bytes.size()); };
-    }
-    void* createData() override { return new RawSample; }
-    void deleteData(void* data) override { delete static_cast<RawSample*>(data); }
-    bool getKey(void*, rtps::InstanceHandle_t*, bool) override { return false; }
-};
 
 Ros2Qos qosOf(const ReliabilityQosPolicy& r, const DurabilityQosPolicy& d)
 {
@@ -132,34 +85,6 @@ Ros2Qos qosOf(const ReliabilityQosPolicy& r, const DurabilityQosPolicy& d)
     return q;
 }
 
-/// A topic we read, with its own reader and figures (callbacks on Fast DDS's threads).
-struct Reader : public DataReaderListener
-{
-    std::function<void(const RawSample&, const SampleInfo&)> onSample;
-    Topic* topic = nullptr;
-    DataReader* reader = nullptr;
-
-    void on_data_available(DataReader* r) override
-    {
-        RawSample sample;
-        SampleInfo info;
-        // bounded: what is there now, not what keeps coming while we take
-        for (int i = 0; i < 1000 && r->take_next_sample(&sample, &info) == ReturnCode_t::RETCODE_OK; ++i)
-            if (info.valid_data && onSample)
-                onSample(sample, info);
-    }
-    void on_subscription_matched(DataReader*, const SubscriptionMatchedStatus& status) override
-    {
-        matched = status.current_count;
-    }
-    void on_sample_lost(DataReader*, const SampleLostStatus& status) override
-    {
-        lost = quint64(status.total_count);
-    }
-    std::atomic<int> matched {0};
-    std::atomic<quint64> lost {0};
-};
-
 } // namespace
 
 struct Ros2Participant::Private : public DomainParticipantListener
@@ -177,7 +102,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
 
     struct Monitored
     {
-        std::unique_ptr<Reader> reader;
+        std::unique_ptr<Ros2RawReader> reader;
         Ros2MonitorStats stats;
         RateWindow rates;
     };
@@ -186,7 +111,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
 
     DomainParticipant* participant = nullptr;
     Subscriber* subscriber = nullptr;
-    std::unique_ptr<Reader> infoReader;
+    std::unique_ptr<Ros2RawReader> infoReader;
 
     void forgetParticipant(const QByteArray& prefix)
     {
@@ -271,7 +196,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
                  info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
     }
 
-    void onDiscoveryInfo(const RawSample& sample, const SampleInfo& info)
+    void onDiscoveryInfo(const Ros2RawSample& sample, const SampleInfo& info)
     {
         const QByteArray prefix = prefixBytes(info.sample_identity.writer_guid().guidPrefix);
         const QByteArray bytes(reinterpret_cast<const char*>(sample.bytes.data()),
@@ -293,7 +218,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
         dirty = true;
     }
 
-    void onSample(const QString& topic, const RawSample& sample)
+    void onSample(const QString& topic, const Ros2RawSample& sample)
     {
         const qint64 now = wallClockNs();
         std::lock_guard<std::mutex> lock(mutex);
@@ -316,7 +241,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
     Topic* topicFor(const std::string& ddsTopic, const std::string& ddsType)
     {
         if (!participant->find_type(ddsType).empty()
-            || TypeSupport(new RawType(ddsType)).register_type(participant) == ReturnCode_t::RETCODE_OK) {
+            || TypeSupport(new Ros2RawType(ddsType)).register_type(participant) == ReturnCode_t::RETCODE_OK) {
             if (auto* desc = participant->lookup_topicdescription(ddsTopic)) {
                 auto* t = dynamic_cast<Topic*>(desc);
                 return t && t->get_type_name() == ddsType ? t : nullptr;
@@ -326,7 +251,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
         return nullptr;
     }
 
-    void deleteReader(Reader& r)
+    void deleteReader(Ros2RawReader& r)
     {
         if (r.reader)
             subscriber->delete_datareader(r.reader);
@@ -410,9 +335,9 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     d->subscriber = d->participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
 
     // node names: every participant's ros_discovery_info, kept (transient local) by its writer
-    d->infoReader = std::make_unique<Reader>();
+    d->infoReader = std::make_unique<Ros2RawReader>();
     Private* p = d.get();
-    d->infoReader->onSample = [p](const RawSample& s, const SampleInfo& i) { p->onDiscoveryInfo(s, i); };
+    d->infoReader->onSample = [p](const Ros2RawSample& s, const SampleInfo& i) { p->onDiscoveryInfo(s, i); };
     d->infoReader->topic
         = d->topicFor("ros_discovery_info", "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
     if (d->infoReader->topic && d->subscriber) {
@@ -500,9 +425,9 @@ void Ros2Participant::monitor(const QString& topic)
     QString ddsType = Ros2Names::ddsType(type);
     if (ddsType.isEmpty())
         ddsType = type;
-    auto reader = std::make_unique<Reader>();
+    auto reader = std::make_unique<Ros2RawReader>();
     Private* p = d.get();
-    reader->onSample = [p, topic](const RawSample& s, const SampleInfo&) { p->onSample(topic, s); };
+    reader->onSample = [p, topic](const Ros2RawSample& s, const SampleInfo&) { p->onSample(topic, s); };
     reader->topic = d->topicFor(Ros2Names::ddsTopic(topic).toStdString(), ddsType.toStdString());
     if (reader->topic && d->subscriber) {
         DataReaderQos rq = DATAREADER_QOS_DEFAULT;
@@ -534,7 +459,7 @@ void Ros2Participant::unmonitor(const QString& topic)
 {
     if (!d || !d->participant)
         return;
-    std::unique_ptr<Reader> reader;
+    std::unique_ptr<Ros2RawReader> reader;
     {
         std::lock_guard<std::mutex> lock(d->mutex);
         const auto it = d->monitored.find(topic);
