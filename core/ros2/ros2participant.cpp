@@ -3,6 +3,7 @@
 
 #include "base/eventbuffer.h"
 #include "base/logging.h"
+#include "base/newestqueue.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "ros2/ros2names.h"
@@ -100,11 +101,14 @@ struct Ros2Participant::Private : public DomainParticipantListener
     QByteArray ownPrefix;
     std::atomic<bool> dirty {true};
 
+    /// A subscribed topic: monitored, watched, or both.
     struct Monitored
     {
         std::unique_ptr<Ros2RawReader> reader;
         Ros2MonitorStats stats;
         RateWindow rates;
+        bool monitored = false; ///< asked for by monitor()
+        std::unique_ptr<NewestQueue<Ros2Sample>> watched; ///< set while watchMessages() asks
     };
     std::map<QString, Monitored> monitored; ///< under `mutex`
     std::unique_ptr<EventBuffer<Ros2Arrival>> arrivals; ///< set by keepArrivals(), under `mutex`
@@ -233,7 +237,9 @@ struct Ros2Participant::Private : public DomainParticipantListener
         s.lastMessage
             = QByteArray(reinterpret_cast<const char*>(sample.bytes.data()), qsizetype(sample.bytes.size()));
         it->second.rates.add(now, s.lastSize);
-        if (arrivals)
+        if (it->second.watched)
+            it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
+        if (arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
             arrivals->push(
                 Ros2Arrival {topic, now, s.lastSize, s.lastMessage.mid(4, Ros2Arrival::kHeadBytes)});
     }
@@ -249,6 +255,29 @@ struct Ros2Participant::Private : public DomainParticipantListener
             return participant->create_topic(ddsTopic, ddsType, TOPIC_QOS_DEFAULT);
         }
         return nullptr;
+    }
+
+    /// Ends a use of a topic's subscription (monitor() or watchMessages()), and the subscription
+    /// with the last one.
+    void release(const QString& topic, bool monitorUse)
+    {
+        std::unique_ptr<Ros2RawReader> reader;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            const auto it = monitored.find(topic);
+            if (it == monitored.end())
+                return;
+            if (monitorUse)
+                it->second.monitored = false;
+            else
+                it->second.watched.reset();
+            if (it->second.monitored || it->second.watched)
+                return;
+            reader = std::move(it->second.reader);
+            monitored.erase(it);
+        }
+        if (reader)
+            deleteReader(*reader); // waits for a callback in flight; onSample then finds no entry
     }
 
     void deleteReader(Ros2RawReader& r)
@@ -408,18 +437,36 @@ void Ros2Participant::refresh()
     if (graph == m_graph)
         return;
     m_graph = std::move(graph);
+    // watched topics whose type the graph did not know before (or since start())
+    for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
+        if (!isSubscribed(it.key()) && m_graph.topic(it.key()))
+            subscribe(it.key(), false, nullptr);
     emit graphChanged(m_graph);
 }
 
 void Ros2Participant::monitor(const QString& topic)
 {
-    if (!d || !d->participant || isMonitored(topic))
+    if (!d || !d->participant)
         return;
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
+            it->second.monitored = true; // subscribed already (watched)
+            return;
+        }
+    }
+    QString why;
+    if (!subscribe(topic, true, &why))
+        emit monitorFailed(topic, why);
+}
+
+bool Ros2Participant::subscribe(const QString& topic, bool monitored, QString* why)
+{
     const Ros2Topic* t = m_graph.topic(topic);
     if (!t || t->types.isEmpty()) {
-        emit monitorFailed(topic,
-                           tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic));
-        return;
+        if (why)
+            *why = tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic);
+        return false;
     }
     const QString type = t->type();
     QString ddsType = Ros2Names::ddsType(type);
@@ -441,6 +488,9 @@ void Ros2Participant::monitor(const QString& topic)
             std::lock_guard<std::mutex> lock(d->mutex);
             auto& m = d->monitored[topic];
             m.stats.type = type;
+            m.monitored = monitored;
+            if (const auto w = m_watched.constFind(topic); w != m_watched.cend())
+                m.watched = std::make_unique<NewestQueue<Ros2Sample>>(w->maxMessages, w->maxBytes);
         }
         reader->reader = d->subscriber->create_datareader(reader->topic, rq, reader.get());
     }
@@ -448,28 +498,19 @@ void Ros2Participant::monitor(const QString& topic)
         d->deleteReader(*reader);
         std::lock_guard<std::mutex> lock(d->mutex);
         d->monitored.erase(topic);
-        emit monitorFailed(topic, tr("Fast DDS could not subscribe to %1 as %2").arg(topic, type));
-        return;
+        if (why)
+            *why = tr("Fast DDS could not subscribe to %1 as %2").arg(topic, type);
+        return false;
     }
     std::lock_guard<std::mutex> lock(d->mutex);
     d->monitored[topic].reader = std::move(reader);
+    return true;
 }
 
 void Ros2Participant::unmonitor(const QString& topic)
 {
-    if (!d || !d->participant)
-        return;
-    std::unique_ptr<Ros2RawReader> reader;
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        const auto it = d->monitored.find(topic);
-        if (it == d->monitored.end())
-            return;
-        reader = std::move(it->second.reader);
-        d->monitored.erase(it);
-    }
-    if (reader)
-        d->deleteReader(*reader); // waits for a callback in flight; onSample then finds no entry
+    if (d && d->participant)
+        d->release(topic, true);
 }
 
 bool Ros2Participant::isMonitored(const QString& topic) const
@@ -477,7 +518,60 @@ bool Ros2Participant::isMonitored(const QString& topic) const
     if (!d)
         return false;
     std::lock_guard<std::mutex> lock(d->mutex);
+    const auto it = d->monitored.find(topic);
+    return it != d->monitored.end() && it->second.monitored;
+}
+
+bool Ros2Participant::isSubscribed(const QString& topic) const
+{
+    if (!d)
+        return false;
+    std::lock_guard<std::mutex> lock(d->mutex);
     return d->monitored.count(topic) > 0;
+}
+
+void Ros2Participant::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+{
+    m_watched.insert(topic, {maxMessages, maxBytes});
+    if (!d || !d->participant)
+        return; // start() and the graph bring the subscription
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
+            if (it->second.watched)
+                it->second.watched->setLimits(maxMessages, maxBytes);
+            else
+                it->second.watched = std::make_unique<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
+            return;
+        }
+    }
+    subscribe(topic, false, nullptr); // else when the graph knows its type (refresh())
+}
+
+void Ros2Participant::unwatchMessages(const QString& topic)
+{
+    m_watched.remove(topic);
+    if (d && d->participant)
+        d->release(topic, false);
+}
+
+std::vector<Ros2Sample> Ros2Participant::takeMessages(const QString& topic)
+{
+    if (!d)
+        return {};
+    std::lock_guard<std::mutex> lock(d->mutex);
+    const auto it = d->monitored.find(topic);
+    return it != d->monitored.end() && it->second.watched ? it->second.watched->take()
+                                                          : std::vector<Ros2Sample>();
+}
+
+quint64 Ros2Participant::droppedMessages(const QString& topic) const
+{
+    if (!d)
+        return 0;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    const auto it = d->monitored.find(topic);
+    return it != d->monitored.end() && it->second.watched ? it->second.watched->dropped() : 0;
 }
 
 QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
@@ -487,6 +581,8 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
         return out;
     std::lock_guard<std::mutex> lock(d->mutex);
     for (const auto& [topic, m] : d->monitored) {
+        if (!m.monitored)
+            continue; // only watched
         Ros2MonitorStats s = m.stats;
         std::tie(s.rateHz, s.bytesPerSecond) = m.rates.rates(nowNs);
         s.matchedPublishers = m.reader ? m.reader->matched.load() : 0;
