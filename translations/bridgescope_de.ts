@@ -1305,10 +1305,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>&amp;Entfernen</translation>
     </message>
     <message>
-        <source>Fields of ROS 2 topics cannot be plotted yet.</source>
-        <translation>Felder von ROS-2-Topics lassen sich noch nicht plotten.</translation>
-    </message>
-    <message>
         <source>no node</source>
         <translation>kein Knoten</translation>
     </message>
@@ -2476,6 +2472,10 @@ factors:
     <message>
         <source>not JSON: %1</source>
         <translation>kein JSON: %1</translation>
+    </message>
+    <message>
+        <source>no ROS 2 definition of %1 is known</source>
+        <translation>für %1 ist keine ROS-2-Definition bekannt</translation>
     </message>
 </context>
 <context>

@@ -2,12 +2,12 @@
 #include "rosmonitor.h"
 
 #include "base/eventbuffer.h"
+#include "base/newestqueue.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
 
-#include <deque>
 #include <mutex>
 #include <QPointer>
 #include <QSet>
@@ -18,26 +18,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-
-struct Watched
-{
-    std::deque<RosMessageSample> messages;
-    std::size_t maxMessages = 0;
-    qint64 maxBytes = 0;
-    qint64 bytes = 0;
-    quint64 dropped = 0;
-
-    void push(qint64 now, const QByteArray& message)
-    {
-        messages.push_back({now, message});
-        bytes += message.size();
-        while (!messages.empty() && (messages.size() > maxMessages || bytes > maxBytes)) {
-            bytes -= messages.front().bytes.size();
-            messages.pop_front();
-            ++dropped;
-        }
-    }
-};
 
 struct TopicState
 {
@@ -55,7 +35,7 @@ struct RosMonitor::Private
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
     std::unique_ptr<EventBuffer<RosArrival>> arrivals; ///< set by keepArrivals(), under `mutex`
-    QHash<QString, Watched> watched; ///< under `mutex`
+    QHash<QString, NewestQueue<RosMessageSample>> watched; ///< under `mutex`
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
     {
@@ -78,7 +58,7 @@ struct RosMonitor::Private
         if (arrivals)
             arrivals->push(RosArrival {topic, now, t.stats.lastSize, bytes.left(RosArrival::kHeadBytes)});
         if (const auto w = watched.find(topic); w != watched.end())
-            w->push(now, bytes); // shares the bytes, no copy
+            w->push({now, bytes}, bytes.size()); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
         t.rates.add(now, t.stats.lastSize);
     }
@@ -216,9 +196,7 @@ quint64 RosMonitor::droppedArrivals() const
 void RosMonitor::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
 {
     std::lock_guard<std::mutex> lock(d->mutex);
-    Watched& w = d->watched[topic];
-    w.maxMessages = maxMessages;
-    w.maxBytes = maxBytes;
+    d->watched[topic].setLimits(maxMessages, maxBytes);
 }
 
 void RosMonitor::unwatchMessages(const QString& topic)
@@ -229,22 +207,16 @@ void RosMonitor::unwatchMessages(const QString& topic)
 
 std::vector<RosMessageSample> RosMonitor::takeMessages(const QString& topic)
 {
-    std::deque<RosMessageSample> taken;
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        const auto w = d->watched.find(topic);
-        if (w == d->watched.end())
-            return {};
-        taken.swap(w->messages);
-        w->bytes = 0;
-    }
-    return {std::make_move_iterator(taken.begin()), std::make_move_iterator(taken.end())};
+    std::lock_guard<std::mutex> lock(d->mutex);
+    const auto w = d->watched.find(topic);
+    return w == d->watched.end() ? std::vector<RosMessageSample>() : w->take();
 }
 
 quint64 RosMonitor::droppedMessages(const QString& topic) const
 {
     std::lock_guard<std::mutex> lock(d->mutex);
-    return d->watched.value(topic).dropped;
+    const auto w = d->watched.constFind(topic);
+    return w == d->watched.cend() ? 0 : w->dropped();
 }
 
 QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const

@@ -3,9 +3,11 @@
 
 #include "base/eventbuffer.h"
 #include "base/logging.h"
+#include "base/newestqueue.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "ros2/ros2names.h"
+#include "ros2/ros2rawreader.h"
 
 #include <atomic>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
@@ -13,12 +15,9 @@
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/dds/log/Log.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
-#include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
@@ -52,7 +51,6 @@ Ros2Options Ros2Options::fromEnvironment(QString* error)
 namespace {
 
 constexpr std::size_t kMaxEndpoints = 200'000;
-constexpr int kMaxSampleBytes = 64 * 1024 * 1024;
 
 QByteArray gidBytes(const rtps::GUID_t& guid)
 {
@@ -66,50 +64,6 @@ QByteArray prefixBytes(const rtps::GuidPrefix_t& prefix)
 {
     return QByteArray(reinterpret_cast<const char*>(prefix.value), 12);
 }
-
-/// A sample as its CDR bytes, encapsulation header included.
-struct RawSample
-{
-    std::vector<unsigned char> bytes;
-};
-
-/// A type that takes any sample as bytes, whatever its name says (roscpp's ShapeShifter for DDS).
-class RawType : public TopicDataType
-{
-public:
-    explicit RawType(const std::string& name)
-    {
-        setName(name.c_str());
-        m_typeSize = 64; // samples grow as needed: readers use dynamic payloads
-        m_isGetKeyDefined = false;
-        auto_fill_type_object(false);
-        auto_fill_type_information(false);
-    }
-    bool serialize(void* data, rtps::SerializedPayload_t* payload) override
-    {
-        const auto& bytes = static_cast<RawSample*>(data)->bytes;
-        if (bytes.size() < 4 || bytes.size() > payload->max_size)
-            return false;
-        std::copy(bytes.begin(), bytes.end(), payload->data);
-        payload->length = uint32_t(bytes.size());
-        payload->encapsulation = (bytes[1] & 1) ? CDR_LE : CDR_BE;
-        return true;
-    }
-    bool deserialize(rtps::SerializedPayload_t* payload, void* data) override
-    {
-        if (payload->length > uint32_t(kMaxSampleBytes))
-            return false;
-        static_cast<RawSample*>(data)->bytes.assign(payload->data, payload->data + payload->length);
-        return true;
-    }
-    std::function<uint32_t()> getSerializedSizeProvider(void* data) override
-    {
-        return [data] { return uint32_t(static_cast<RawSample*>(data)->bytes.size()); };
-    }
-    void* createData() override { return new RawSample; }
-    void deleteData(void* data) override { delete static_cast<RawSample*>(data); }
-    bool getKey(void*, rtps::InstanceHandle_t*, bool) override { return false; }
-};
 
 Ros2Qos qosOf(const ReliabilityQosPolicy& r, const DurabilityQosPolicy& d)
 {
@@ -132,34 +86,6 @@ Ros2Qos qosOf(const ReliabilityQosPolicy& r, const DurabilityQosPolicy& d)
     return q;
 }
 
-/// A topic we read, with its own reader and figures (callbacks on Fast DDS's threads).
-struct Reader : public DataReaderListener
-{
-    std::function<void(const RawSample&, const SampleInfo&)> onSample;
-    Topic* topic = nullptr;
-    DataReader* reader = nullptr;
-
-    void on_data_available(DataReader* r) override
-    {
-        RawSample sample;
-        SampleInfo info;
-        // bounded: what is there now, not what keeps coming while we take
-        for (int i = 0; i < 1000 && r->take_next_sample(&sample, &info) == ReturnCode_t::RETCODE_OK; ++i)
-            if (info.valid_data && onSample)
-                onSample(sample, info);
-    }
-    void on_subscription_matched(DataReader*, const SubscriptionMatchedStatus& status) override
-    {
-        matched = status.current_count;
-    }
-    void on_sample_lost(DataReader*, const SampleLostStatus& status) override
-    {
-        lost = quint64(status.total_count);
-    }
-    std::atomic<int> matched {0};
-    std::atomic<quint64> lost {0};
-};
-
 } // namespace
 
 struct Ros2Participant::Private : public DomainParticipantListener
@@ -175,18 +101,21 @@ struct Ros2Participant::Private : public DomainParticipantListener
     QByteArray ownPrefix;
     std::atomic<bool> dirty {true};
 
+    /// A subscribed topic: monitored, watched, or both.
     struct Monitored
     {
-        std::unique_ptr<Reader> reader;
+        std::unique_ptr<Ros2RawReader> reader;
         Ros2MonitorStats stats;
         RateWindow rates;
+        bool monitored = false; ///< asked for by monitor()
+        std::unique_ptr<NewestQueue<Ros2Sample>> watched; ///< set while watchMessages() asks
     };
     std::map<QString, Monitored> monitored; ///< under `mutex`
     std::unique_ptr<EventBuffer<Ros2Arrival>> arrivals; ///< set by keepArrivals(), under `mutex`
 
     DomainParticipant* participant = nullptr;
     Subscriber* subscriber = nullptr;
-    std::unique_ptr<Reader> infoReader;
+    std::unique_ptr<Ros2RawReader> infoReader;
 
     void forgetParticipant(const QByteArray& prefix)
     {
@@ -271,7 +200,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
                  info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
     }
 
-    void onDiscoveryInfo(const RawSample& sample, const SampleInfo& info)
+    void onDiscoveryInfo(const Ros2RawSample& sample, const SampleInfo& info)
     {
         const QByteArray prefix = prefixBytes(info.sample_identity.writer_guid().guidPrefix);
         const QByteArray bytes(reinterpret_cast<const char*>(sample.bytes.data()),
@@ -294,7 +223,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
         dirty = true;
     }
 
-    void onSample(const QString& topic, const RawSample& sample)
+    void onSample(const QString& topic, const Ros2RawSample& sample)
     {
         const qint64 now = wallClockNs();
         std::lock_guard<std::mutex> lock(mutex);
@@ -309,7 +238,9 @@ struct Ros2Participant::Private : public DomainParticipantListener
         s.lastMessage
             = QByteArray(reinterpret_cast<const char*>(sample.bytes.data()), qsizetype(sample.bytes.size()));
         it->second.rates.add(now, s.lastSize);
-        if (arrivals)
+        if (it->second.watched)
+            it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
+        if (arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
             arrivals->push(
                 Ros2Arrival {topic, now, s.lastSize, s.lastMessage.mid(4, Ros2Arrival::kHeadBytes)});
     }
@@ -317,7 +248,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
     Topic* topicFor(const std::string& ddsTopic, const std::string& ddsType)
     {
         if (!participant->find_type(ddsType).empty()
-            || TypeSupport(new RawType(ddsType)).register_type(participant) == ReturnCode_t::RETCODE_OK) {
+            || TypeSupport(new Ros2RawType(ddsType)).register_type(participant) == ReturnCode_t::RETCODE_OK) {
             if (auto* desc = participant->lookup_topicdescription(ddsTopic)) {
                 auto* t = dynamic_cast<Topic*>(desc);
                 return t && t->get_type_name() == ddsType ? t : nullptr;
@@ -327,7 +258,30 @@ struct Ros2Participant::Private : public DomainParticipantListener
         return nullptr;
     }
 
-    void deleteReader(Reader& r)
+    /// Ends a use of a topic's subscription (monitor() or watchMessages()), and the subscription
+    /// with the last one.
+    void release(const QString& topic, bool monitorUse)
+    {
+        std::unique_ptr<Ros2RawReader> reader;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            const auto it = monitored.find(topic);
+            if (it == monitored.end())
+                return;
+            if (monitorUse)
+                it->second.monitored = false;
+            else
+                it->second.watched.reset();
+            if (it->second.monitored || it->second.watched)
+                return;
+            reader = std::move(it->second.reader);
+            monitored.erase(it);
+        }
+        if (reader)
+            deleteReader(*reader); // waits for a callback in flight; onSample then finds no entry
+    }
+
+    void deleteReader(Ros2RawReader& r)
     {
         if (r.reader)
             subscriber->delete_datareader(r.reader);
@@ -411,9 +365,9 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     d->subscriber = d->participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
 
     // node names: every participant's ros_discovery_info, kept (transient local) by its writer
-    d->infoReader = std::make_unique<Reader>();
+    d->infoReader = std::make_unique<Ros2RawReader>();
     Private* p = d.get();
-    d->infoReader->onSample = [p](const RawSample& s, const SampleInfo& i) { p->onDiscoveryInfo(s, i); };
+    d->infoReader->onSample = [p](const Ros2RawSample& s, const SampleInfo& i) { p->onDiscoveryInfo(s, i); };
     d->infoReader->topic
         = d->topicFor("ros_discovery_info", "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
     if (d->infoReader->topic && d->subscriber) {
@@ -484,26 +438,44 @@ void Ros2Participant::refresh()
     if (graph == m_graph)
         return;
     m_graph = std::move(graph);
+    // watched topics whose type the graph did not know before (or since start())
+    for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
+        if (!isSubscribed(it.key()) && m_graph.topic(it.key()))
+            subscribe(it.key(), false, nullptr);
     emit graphChanged(m_graph);
 }
 
 void Ros2Participant::monitor(const QString& topic)
 {
-    if (!d || !d->participant || isMonitored(topic))
+    if (!d || !d->participant)
         return;
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
+            it->second.monitored = true; // subscribed already (watched)
+            return;
+        }
+    }
+    QString why;
+    if (!subscribe(topic, true, &why))
+        emit monitorFailed(topic, why);
+}
+
+bool Ros2Participant::subscribe(const QString& topic, bool monitored, QString* why)
+{
     const Ros2Topic* t = m_graph.topic(topic);
     if (!t || t->types.isEmpty()) {
-        emit monitorFailed(topic,
-                           tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic));
-        return;
+        if (why)
+            *why = tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic);
+        return false;
     }
     const QString type = t->type();
     QString ddsType = Ros2Names::ddsType(type);
     if (ddsType.isEmpty())
         ddsType = type;
-    auto reader = std::make_unique<Reader>();
+    auto reader = std::make_unique<Ros2RawReader>();
     Private* p = d.get();
-    reader->onSample = [p, topic](const RawSample& s, const SampleInfo&) { p->onSample(topic, s); };
+    reader->onSample = [p, topic](const Ros2RawSample& s, const SampleInfo&) { p->onSample(topic, s); };
     reader->topic = d->topicFor(Ros2Names::ddsTopic(topic).toStdString(), ddsType.toStdString());
     if (reader->topic && d->subscriber) {
         DataReaderQos rq = DATAREADER_QOS_DEFAULT;
@@ -517,6 +489,9 @@ void Ros2Participant::monitor(const QString& topic)
             std::lock_guard<std::mutex> lock(d->mutex);
             auto& m = d->monitored[topic];
             m.stats.type = type;
+            m.monitored = monitored;
+            if (const auto w = m_watched.constFind(topic); w != m_watched.cend())
+                m.watched = std::make_unique<NewestQueue<Ros2Sample>>(w->maxMessages, w->maxBytes);
         }
         reader->reader = d->subscriber->create_datareader(reader->topic, rq, reader.get());
     }
@@ -524,28 +499,19 @@ void Ros2Participant::monitor(const QString& topic)
         d->deleteReader(*reader);
         std::lock_guard<std::mutex> lock(d->mutex);
         d->monitored.erase(topic);
-        emit monitorFailed(topic, tr("Fast DDS could not subscribe to %1 as %2").arg(topic, type));
-        return;
+        if (why)
+            *why = tr("Fast DDS could not subscribe to %1 as %2").arg(topic, type);
+        return false;
     }
     std::lock_guard<std::mutex> lock(d->mutex);
     d->monitored[topic].reader = std::move(reader);
+    return true;
 }
 
 void Ros2Participant::unmonitor(const QString& topic)
 {
-    if (!d || !d->participant)
-        return;
-    std::unique_ptr<Reader> reader;
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        const auto it = d->monitored.find(topic);
-        if (it == d->monitored.end())
-            return;
-        reader = std::move(it->second.reader);
-        d->monitored.erase(it);
-    }
-    if (reader)
-        d->deleteReader(*reader); // waits for a callback in flight; onSample then finds no entry
+    if (d && d->participant)
+        d->release(topic, true);
 }
 
 bool Ros2Participant::isMonitored(const QString& topic) const
@@ -553,7 +519,60 @@ bool Ros2Participant::isMonitored(const QString& topic) const
     if (!d)
         return false;
     std::lock_guard<std::mutex> lock(d->mutex);
+    const auto it = d->monitored.find(topic);
+    return it != d->monitored.end() && it->second.monitored;
+}
+
+bool Ros2Participant::isSubscribed(const QString& topic) const
+{
+    if (!d)
+        return false;
+    std::lock_guard<std::mutex> lock(d->mutex);
     return d->monitored.count(topic) > 0;
+}
+
+void Ros2Participant::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+{
+    m_watched.insert(topic, {maxMessages, maxBytes});
+    if (!d || !d->participant)
+        return; // start() and the graph bring the subscription
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
+            if (it->second.watched)
+                it->second.watched->setLimits(maxMessages, maxBytes);
+            else
+                it->second.watched = std::make_unique<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
+            return;
+        }
+    }
+    subscribe(topic, false, nullptr); // else when the graph knows its type (refresh())
+}
+
+void Ros2Participant::unwatchMessages(const QString& topic)
+{
+    m_watched.remove(topic);
+    if (d && d->participant)
+        d->release(topic, false);
+}
+
+std::vector<Ros2Sample> Ros2Participant::takeMessages(const QString& topic)
+{
+    if (!d)
+        return {};
+    std::lock_guard<std::mutex> lock(d->mutex);
+    const auto it = d->monitored.find(topic);
+    return it != d->monitored.end() && it->second.watched ? it->second.watched->take()
+                                                          : std::vector<Ros2Sample>();
+}
+
+quint64 Ros2Participant::droppedMessages(const QString& topic) const
+{
+    if (!d)
+        return 0;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    const auto it = d->monitored.find(topic);
+    return it != d->monitored.end() && it->second.watched ? it->second.watched->dropped() : 0;
 }
 
 QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
@@ -563,6 +582,8 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64 nowNs) const
         return out;
     std::lock_guard<std::mutex> lock(d->mutex);
     for (const auto& [topic, m] : d->monitored) {
+        if (!m.monitored)
+            continue; // only watched
         Ros2MonitorStats s = m.stats;
         std::tie(s.rateHz, s.bytesPerSecond) = m.rates.rates(nowNs);
         s.matchedPublishers = m.reader ? m.reader->matched.load() : 0;

@@ -37,6 +37,13 @@ struct Ros2Arrival
     QByteArray head; ///< the message's first kHeadBytes bytes after the encapsulation header
 };
 
+/// One whole sample of a watched topic (for plots of its fields).
+struct Ros2Sample
+{
+    qint64 receivedNs = 0; ///< wall clock
+    QByteArray bytes; ///< CDR with its encapsulation header
+};
+
 /// How the participant reaches the graph.
 struct Ros2Options
 {
@@ -79,9 +86,23 @@ public:
     /// Subscribes to a topic of the graph as raw samples (best effort, volatile: it matches every
     /// publisher). Fails with monitorFailed() when the topic has no type yet.
     void monitor(const QString& topic);
+    /// Ends monitor(); the subscription stays while the topic is watched (watchMessages()).
     void unmonitor(const QString& topic);
     bool isMonitored(const QString& topic) const;
+    /// Figures of the monitored topics (not of those only watched).
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
+    /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
+    /// takeMessages() (older ones are dropped and counted). The topic is subscribed for it whether
+    /// or not it is monitored, as soon as the graph knows its type, and again after stop() and
+    /// start(); monitor() and unmonitor() leave the queue alone.
+    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);
+    void unwatchMessages(const QString& topic);
+    bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
+    /// The watched topic's samples since the last call, oldest first.
+    std::vector<Ros2Sample> takeMessages(const QString& topic);
+    /// Samples of a watched topic dropped because too many came between two takes (counted from
+    /// watchMessages(), and anew after start()).
+    quint64 droppedMessages(const QString& topic) const;
     /// From now on (also across stop() and start()) every sample of a monitored topic is also kept,
     /// up to `maxArrivals` between two takeArrivals() (more are dropped and counted); 0 stops it.
     void keepArrivals(std::size_t maxArrivals);
@@ -93,12 +114,22 @@ signals:
     void monitorFailed(const QString& topic, const QString& why);
 
 private:
+    struct WatchLimits
+    {
+        std::size_t maxMessages = 0;
+        qint64 maxBytes = 0;
+    };
     void refresh();
+    /// Makes the topic's reader; false with `why` when the graph has no type for it or Fast DDS
+    /// refuses.
+    bool subscribe(const QString& topic, bool monitored, QString* why);
+    bool isSubscribed(const QString& topic) const;
 
     struct Private;
     std::shared_ptr<Private> d;
     Ros2Options m_options;
     std::size_t m_keepArrivals = 0;
+    QHash<QString, WatchLimits> m_watched; ///< what watchMessages() asked for, across stop() and start()
     Ros2Graph m_graph;
     QTimer m_timer;
 };

@@ -4,6 +4,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
+#include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "wire/fieldpath.h"
 #include "wire/rosmessage.h"
@@ -24,6 +25,16 @@ struct Received
     qint64 receivedNs = 0;
     QByteArray payload;
 };
+
+/// A monitor's whole messages (ROS 1 or ROS 2) as the plot takes them.
+template<typename Sample> std::vector<Received> received(std::vector<Sample> taken)
+{
+    std::vector<Received> out;
+    out.reserve(taken.size());
+    for (Sample& m : taken)
+        out.push_back({m.receivedNs, std::move(m.bytes)});
+    return out;
+}
 
 /// Up to `keep` of `n` items, evenly spread and always with the newest.
 std::vector<std::size_t> spread(std::size_t n, std::size_t keep)
@@ -53,6 +64,8 @@ struct FieldPlotter::Private
     qint64 originNs = 0;
     QSet<QString> mqttTopics;
     QSet<QString> rosTopics;
+    QSet<QString> ros2Topics;
+    QHash<QString, QString> ros2Types; ///< the last type the ROS 2 graph named, for samples that outlive it
     QHash<QString, std::vector<Received>> pendingMqtt;
     struct RosType
     {
@@ -87,6 +100,8 @@ FieldPlotter::~FieldPlotter()
     m_session->removeMqttListener(m_listener);
     for (const QString& topic : std::as_const(d->rosTopics))
         m_session->rosMonitor()->unwatchMessages(topic);
+    for (const QString& topic : std::as_const(d->ros2Topics))
+        m_session->ros2()->unwatchMessages(topic);
 }
 
 int FieldPlotter::indexOf(const PlotField& field) const
@@ -111,7 +126,7 @@ bool FieldPlotter::add(const PlotField& field)
     if (field.source == PlotField::Source::Mqtt)
         d->mqttTopics.insert(field.topic);
     else
-        watchRos(field.topic, true);
+        watchRos(field.source, field.topic, true);
     emit fieldsChanged();
     return true;
 }
@@ -128,7 +143,7 @@ void FieldPlotter::remove(int index)
         d->mqttTopics.remove(gone.topic);
         d->pendingMqtt.remove(gone.topic);
     } else if (!stillUsed) {
-        watchRos(gone.topic, false);
+        watchRos(gone.source, gone.topic, false);
     }
     emit fieldsChanged();
 }
@@ -139,14 +154,28 @@ void FieldPlotter::clear()
         remove(int(m_series.size()) - 1);
 }
 
-void FieldPlotter::watchRos(const QString& topic, bool on)
+void FieldPlotter::watchRos(PlotField::Source source, const QString& topic, bool on)
 {
     if (!m_session)
         return;
+    // Enough for a few ticks at any rate; the tick decodes at most kMessagesPerTick of them.
+    constexpr std::size_t kQueued = 1000;
+    constexpr qint64 kQueuedBytes = 4 * kBytesPerTick;
+    if (source == PlotField::Source::Ros2) {
+        Ros2Participant* ros2 = m_session->ros2();
+        if (on && !d->ros2Topics.contains(topic)) {
+            ros2->watchMessages(topic, kQueued, kQueuedBytes); // subscribes it, monitored or not
+            d->ros2Topics.insert(topic);
+        } else if (!on) {
+            ros2->unwatchMessages(topic);
+            d->ros2Topics.remove(topic);
+            d->ros2Types.remove(topic);
+        }
+        return;
+    }
     RosMonitor* monitor = m_session->rosMonitor();
     if (on && !d->rosTopics.contains(topic)) {
-        // Enough for a few ticks at any rate; the tick decodes at most kMessagesPerTick of them.
-        monitor->watchMessages(topic, 1000, 4 * kBytesPerTick);
+        monitor->watchMessages(topic, kQueued, kQueuedBytes);
         d->rosTopics.insert(topic);
     } else if (!on) {
         monitor->unwatchMessages(topic);
@@ -163,12 +192,11 @@ void FieldPlotter::onDrained(qint64 nowNs)
     QHash<QString, std::vector<Received>> pending;
     pending.swap(d->pendingMqtt);
     QHash<QString, std::vector<Received>> rosPending;
-    for (const QString& topic : std::as_const(d->rosTopics)) {
-        std::vector<RosMessageSample> taken = m_session->rosMonitor()->takeMessages(topic);
-        std::vector<Received>& into = rosPending[topic];
-        for (RosMessageSample& m : taken)
-            into.push_back({m.receivedNs, std::move(m.bytes)});
-    }
+    for (const QString& topic : std::as_const(d->rosTopics))
+        rosPending[topic] = received(m_session->rosMonitor()->takeMessages(topic));
+    QHash<QString, std::vector<Received>> ros2Pending;
+    for (const QString& topic : std::as_const(d->ros2Topics))
+        ros2Pending[topic] = received(m_session->ros2()->takeMessages(topic));
 
     const auto plotTopic
         = [&](PlotField::Source source, const QString& topic, std::vector<Received>& messages) {
@@ -182,16 +210,19 @@ void FieldPlotter::onDrained(qint64 nowNs)
               }
               if (fields.isEmpty() || messages.empty())
                   return;
-              // How this topic's payloads decode: the ROS type announced (MQTT) or monitored (ROS), else
-              // JSON.
-              std::shared_ptr<const RosTypeRegistry> registry;
+              // How this topic's payloads decode: the ROS type announced (MQTT) or monitored (ROS), the
+              // ROS 2 graph's type as CDR with the session's ROS 2 definitions (ROS 2), else JSON.
+              std::shared_ptr<const RosTypeRegistry> held;
+              const RosTypeRegistry* registry = nullptr;
+              bool cdr = false;
               QString type;
               std::optional<RosMsgTypeInfo> announced; // MQTT: how mqtt_client serialized it
               QString typeError;
               if (source == PlotField::Source::Mqtt) {
                   const auto info = m_session->mqttTopics()->info(topic);
                   if (info && info->rosType) {
-                      registry = m_session->mqttTopics()->registryFor(topic);
+                      held = m_session->mqttTopics()->registryFor(topic);
+                      registry = held.get();
                       type = info->rosType->name;
                       announced = info->rosType;
                       if (!registry)
@@ -199,6 +230,19 @@ void FieldPlotter::onDrained(qint64 nowNs)
                               ? tr("the announced type %1 does not read").arg(type)
                               : info->typeNote;
                   }
+              } else if (source == PlotField::Source::Ros2) {
+                  const Ros2Topic* t = m_session->ros2()->graph().topic(topic);
+                  if (t && !t->types.isEmpty())
+                      d->ros2Types.insert(topic, t->type());
+                  type = d->ros2Types.value(topic);
+                  cdr = true;
+                  const RosTypeRegistry& types = m_session->ros2Types();
+                  if (type.isEmpty())
+                      typeError = tr("the type is not known yet");
+                  else if (!types.contains(type))
+                      typeError = tr("no ROS 2 definition of %1 is known").arg(type);
+                  else
+                      registry = &types;
               } else {
                   const RosMonitorStats* stats = m_session->rosTopics()->stats(topic);
                   Private::RosType& t = d->rosTypes[topic];
@@ -209,7 +253,7 @@ void FieldPlotter::onDrained(qint64 nowNs)
                       if (!t.registry->addDefinition(stats->type, stats->definition, &t.error))
                           t.registry.reset();
                   }
-                  registry = t.registry;
+                  registry = t.registry.get();
                   type = t.type;
                   typeError = registry ? QString()
                                        : (t.error.isEmpty() ? tr("the type is not known yet") : t.error);
@@ -242,7 +286,10 @@ void FieldPlotter::onDrained(qint64 nowNs)
                   } else {
                       bytes += m.payload.size();
                       ++decodedCount;
-                      if (registry && announced) {
+                      if (registry && cdr) {
+                          dec.ros
+                              = RosMessageDecoder::decodeCdr(*registry, type, m.payload, &dec.error, limits);
+                      } else if (registry && announced) {
                           dec.ros = MqttClientWire::decodePayload(*registry, *announced, m.payload,
                                                                   &dec.error, limits);
                       } else if (registry) {
@@ -282,6 +329,8 @@ void FieldPlotter::onDrained(qint64 nowNs)
         plotTopic(PlotField::Source::Mqtt, it.key(), it.value());
     for (auto it = rosPending.begin(); it != rosPending.end(); ++it)
         plotTopic(PlotField::Source::Ros, it.key(), it.value());
+    for (auto it = ros2Pending.begin(); it != ros2Pending.end(); ++it)
+        plotTopic(PlotField::Source::Ros2, it.key(), it.value());
 
     // The window: the last kWindowSeconds, at most kMaxPoints per field.
     if (d->originNs == 0)

@@ -10,10 +10,10 @@
 
 class LiveSession;
 
-/// A numeric field of an MQTT or ROS topic to plot over time.
+/// A numeric field of an MQTT, ROS 1 or ROS 2 topic to plot over time.
 struct PlotField
 {
-    enum class Source { Mqtt, Ros };
+    enum class Source { Mqtt, Ros, Ros2 };
     Source source = Source::Mqtt;
     QString topic;
     QStringList path; ///< names and "[i]" indices (FieldPath)
@@ -35,11 +35,11 @@ struct PlotSeries
 
 /// Values of chosen fields over time, from the live session's ticks.
 ///
-/// Nothing runs per network message: the MQTT batch of a tick and the ROS monitor's queue of a
-/// watched topic are taken once per drain. Work per tick is bounded: at most kMessagesPerTick
-/// messages per topic are decoded (evenly spread over what came, the rest counted as skipped) and
-/// at most kBytesPerTick bytes; larger payloads are errors. Points are kept for kWindowSeconds,
-/// at most kMaxPoints per field.
+/// Nothing runs per network message: the MQTT batch of a tick and the ROS monitor's or the ROS 2
+/// participant's queue of a watched topic are taken once per drain. Work per tick is bounded: at
+/// most kMessagesPerTick messages per topic are decoded (evenly spread over what came, the rest
+/// counted as skipped) and at most kBytesPerTick bytes; larger payloads are errors. Points are kept
+/// for kWindowSeconds, at most kMaxPoints per field.
 class FieldPlotter : public QObject
 {
     Q_OBJECT
@@ -73,7 +73,7 @@ signals:
 private:
     struct Private;
     void onDrained(qint64 nowNs);
-    void watchRos(const QString& topic, bool on);
+    void watchRos(PlotField::Source source, const QString& topic, bool on);
 
     QPointer<LiveSession> m_session;
     std::unique_ptr<Private> d;

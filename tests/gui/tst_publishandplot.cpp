@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Publishing from the Discover page and clearing retained messages, against a real mosquitto:
 // a separate subscriber (mosquitto_sub) sees exactly what the dialog sent. Field plots in the
-// detail pane follow real publishers (MQTT JSON, and a ROS node on a real rosmaster).
+// detail pane follow real publishers (MQTT JSON, a ROS node on a real rosmaster, and a ROS 2 node
+// on Cyclone DDS, tests/ros2peer).
 #include "fixtures.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
+#include "ros/rostopicmodel.h"
+#include "ros2peer.h"
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "testservers.h"
@@ -59,6 +62,15 @@ QList<double> values(const PlotSeries& s)
     for (const QPointF& p : s.points)
         out << p.y();
     return out;
+}
+
+/// The values as text, for a failure's message.
+QString shown(const QList<double>& values)
+{
+    QStringList out;
+    for (double v : values)
+        out << QString::number(v);
+    return out.join(u' ');
 }
 
 /// The fields view's index of the field at `path`, or an invalid one.
@@ -532,16 +544,83 @@ private slots:
         // Every message from the one plotting began, in order: seq, and the time it carries.
         const QList<double> seqs = values(plotter->series()[0]);
         const QList<double> times = values(plotter->series()[1]);
-        QStringList shown;
-        for (double v : seqs)
-            shown << QString::number(v);
-        QVERIFY2(seqs.size() >= 20, qPrintable(shown.join(u' ')));
+        QVERIFY2(seqs.size() >= 20, qPrintable(shown(seqs)));
         QCOMPARE(times.size(), seqs.size());
         for (int i = 0; i < seqs.size(); ++i) {
             const int seq = 60 - int(seqs.size()) + i;
             QCOMPARE(seqs[i], double(seq));
             QCOMPARE(times[i], rosTimeText(1700000000LL + seq / 20, (seq % 20) * 50000000LL).toDouble());
         }
+    }
+
+    // ROS 2: a Cyclone DDS node's PoseStamped (sample N carries position (N, 2N, 0.5)) plotted from
+    // the detail pane: every sample from the first plotted one to the last sent, as sent, also
+    // after Mon is unticked (the plot keeps its own subscription). A type without a definition
+    // counts each sample as a message without a value and says why.
+    void plotsRos2FieldsOfALivePeer()
+    {
+        const int domain = Ros2Peer::freeDomain(181, 199);
+        LiveSession session;
+        DiscoverPage page(&session);
+        page.show();
+        page.setRos2Options({domain, true});
+        page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
+        QVERIFY(session.isRos2Running());
+        constexpr int kSamples = 200; // 10 s at 20 Hz: time to discover, monitor and pick fields
+        Ros2Peer peer(domain,
+                      {u"--node"_s, u"/plot_peer"_s, u"--count"_s, QString::number(kSamples), u"--pub"_s,
+                       u"/plot/pose:geometry_msgs/msg/PoseStamped:20"_s, u"--pub"_s,
+                       u"/plot/blob:bridgescope_test/msg/Opaque:20"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+
+        RosTopicModel* model = session.ros2Topics();
+        QTRY_VERIFY_WITH_TIMEOUT(model->rowOf(u"/plot/pose"_s) >= 0, 15000);
+        const QModelIndex monitor = model->index(model->rowOf(u"/plot/pose"_s), RosTopicModel::MonitorColumn);
+        QVERIFY(model->setData(monitor, Qt::Checked, Qt::CheckStateRole));
+        DetailPane* detail = page.detail();
+        detail->showRos2Topic(u"/plot/pose"_s);
+        const QStringList x {u"pose"_s, u"position"_s, u"x"_s};
+        const QStringList y {u"pose"_s, u"position"_s, u"y"_s};
+        QTRY_VERIFY_WITH_TIMEOUT(fieldAt(detail, y).isValid(), 15000);
+        QVERIFY(plotFromView(detail, x));
+        QVERIFY(plotFromView(detail, y));
+        QVERIFY(detail->plotNote()->text().isEmpty());
+        // no Ctrl+L on an unknown type's fields (it has none), so straight to the plotter
+        QVERIFY(detail->plotter()->add({PlotField::Source::Ros2, u"/plot/blob"_s, {u"n"_s}}));
+
+        const FieldPlotter* plotter = detail->plotter();
+        QTRY_VERIFY_WITH_TIMEOUT(plotter->series()[1].points.size() >= 3, 10000);
+        QVERIFY(model->setData(monitor, Qt::Unchecked, Qt::CheckStateRole));
+        QVERIFY(!session.ros2()->isMonitored(u"/plot/pose"_s));
+        QVERIFY(peer.waitFor(u"sent /plot/pose %1"_s.arg(kSamples), 30000));
+        QTRY_VERIFY_WITH_TIMEOUT(!plotter->series()[0].points.isEmpty()
+                                     && plotter->series()[0].points.last().y() == kSamples,
+                                 10000);
+
+        const QList<double> xs = values(plotter->series()[0]);
+        const QList<double> ys = values(plotter->series()[1]);
+        QVERIFY2(xs.size() >= 20, qPrintable(shown(xs)));
+        QCOMPARE(ys.size(), xs.size());
+        for (int i = 0; i < xs.size(); ++i) {
+            QCOMPARE(xs[i], double(kSamples - xs.size() + 1 + i)); // none lost, none twice
+            QCOMPARE(ys[i], 2 * xs[i]);
+            QCOMPARE(plotter->series()[1].points[i].x(), plotter->series()[0].points[i].x());
+        }
+        QCOMPARE(plotter->series()[0].errors, 0u);
+        QCOMPARE(plotter->series()[1].errors, 0u);
+        QVERIFY(plotter->mostDecodedInATick() <= FieldPlotter::kMessagesPerTick);
+
+        const PlotSeries& blob = plotter->series()[2];
+        QVERIFY(blob.points.isEmpty());
+        QVERIFY2(blob.errors >= 20, qPrintable(QString::number(blob.errors)));
+        QCOMPARE(blob.lastError, u"no ROS 2 definition of bridgescope_test/msg/Opaque is known"_s);
+        QVERIFY2(detail->plotList()->item(2)->text().contains(u"no ROS 2 definition"_s),
+                 qPrintable(detail->plotList()->item(2)->text()));
+
+        // the last field of a topic gone: its subscription ends with it
+        detail->plotter()->clear();
+        QVERIFY(!session.ros2()->isWatched(u"/plot/pose"_s));
+        QVERIFY(!session.ros2()->isWatched(u"/plot/blob"_s));
     }
 
     // Hostile: a payload too large to plot and a burst of malformed ones are counted, each

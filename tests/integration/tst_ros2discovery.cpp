@@ -3,9 +3,10 @@
 // built on Cyclone DDS (tests/ros2peer) that speak as rmw_cyclonedds_cpp does (REP 2008 names and
 // types, XCDR1, ros_discovery_info). Topics, types, node names, QoS and counts appear and
 // disappear; samples of std_msgs/String, geometry_msgs/PoseStamped and sensor_msgs/PointCloud2
-// decode to what was sent; an unknown type stays raw bytes of the right size. `bridgescope watch`
-// watches a ROS 2 config's links from DDS and the broker. Hostile nodes (malformed CDR, huge lengths,
-// unreadable ros_discovery_info) and garbage on the RTPS ports are counted or refused, never fatal.
+// decode to what was sent; an unknown type stays raw bytes of the right size; a watched topic's
+// whole samples queue within their bounds. `bridgescope watch` watches a ROS 2 config's links from
+// DDS and the broker. Hostile nodes (malformed CDR, huge lengths, unreadable ros_discovery_info) and
+// garbage on the RTPS ports are counted or refused, never fatal.
 #include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
 #include "ros2/ros2participant.h"
@@ -398,6 +399,80 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(publishers(p, u"/after"_s) == 1 && hasNode(p, u"/after"_s), 15000);
         p.monitor(u"/after"_s);
         QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/after"_s).messages >= 5, 10000);
+    }
+
+    // The plotter's queue: whole samples of a watched topic, the newest within the bounds (the
+    // rest dropped and counted), subscribed without being monitored, kept across monitor() and
+    // unmonitor() and across stop() and start().
+    void watchedSamplesQueueBounded()
+    {
+        Ros2Participant p;
+        QVERIFY(p.start({m_domain, true}));
+        // asked for before the topic exists: subscribed once the graph knows its type
+        p.watchMessages(u"/pose"_s, 5, 1024 * 1024);
+        QVERIFY(p.isWatched(u"/pose"_s));
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/poser"_s, u"--pub"_s, u"/pose:geometry_msgs/msg/PoseStamped:50"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        // (QTRY evaluates its condition more than once: what was taken is kept)
+        std::size_t got = 0;
+        const auto arrive = [&] { return (got += p.takeMessages(u"/pose"_s).size()) > 0; };
+        QTRY_VERIFY_WITH_TIMEOUT(arrive(), 15000);
+        QVERIFY(!p.isMonitored(u"/pose"_s));
+        QVERIFY(!p.snapshot(wallClockNs()).contains(u"/pose"_s));
+
+        // about 30 samples come while nobody takes: the newest 5 are kept, in order, as sent
+        const quint64 droppedBefore = p.droppedMessages(u"/pose"_s);
+        QTest::qWait(600);
+        const std::vector<Ros2Sample> taken = p.takeMessages(u"/pose"_s);
+        QCOMPARE(taken.size(), 5u);
+        QVERIFY2(p.droppedMessages(u"/pose"_s) >= droppedBefore + 15,
+                 qPrintable(QString::number(p.droppedMessages(u"/pose"_s) - droppedBefore)));
+        const RosTypeRegistry registry = Ros2Definitions::registry();
+        QString error;
+        double previous = 0;
+        for (const Ros2Sample& s : taken) {
+            const auto v
+                = RosMessageDecoder::decodeCdr(registry, u"geometry_msgs/msg/PoseStamped"_s, s.bytes, &error);
+            QVERIFY2(v, qPrintable(error));
+            const double x = v->find(u"pose.position.x"_s)->value.toDouble();
+            QCOMPARE(v->find(u"pose.position.y"_s)->value.toDouble(), 2 * x);
+            QVERIFY2(previous == 0 || x == previous + 1, qPrintable(u"%1 after %2"_s.arg(x).arg(previous)));
+            previous = x;
+        }
+        QVERIFY(taken.front().receivedNs <= taken.back().receivedNs);
+
+        // the bytes bound: two samples' worth keeps two
+        p.watchMessages(u"/pose"_s, 1000, 2 * taken.back().bytes.size());
+        p.takeMessages(u"/pose"_s);
+        QTest::qWait(300);
+        QCOMPARE(p.takeMessages(u"/pose"_s).size(), 2u);
+
+        // monitor() and unmonitor() of the same topic leave the watch alone
+        p.watchMessages(u"/pose"_s, 1000, 1024 * 1024);
+        p.monitor(u"/pose"_s);
+        QVERIFY(p.isMonitored(u"/pose"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/pose"_s).messages > 0, 5000);
+        p.unmonitor(u"/pose"_s);
+        QVERIFY(!p.isMonitored(u"/pose"_s));
+        QVERIFY(!p.snapshot(wallClockNs()).contains(u"/pose"_s));
+        p.takeMessages(u"/pose"_s);
+        QTest::qWait(300);
+        QVERIFY(p.takeMessages(u"/pose"_s).size() >= 5);
+
+        // a new participant (another domain join) subscribes the watched topic again
+        p.stop();
+        QVERIFY(p.takeMessages(u"/pose"_s).empty());
+        QVERIFY(p.start({m_domain, true}));
+        got = 0;
+        QTRY_VERIFY_WITH_TIMEOUT(arrive(), 15000);
+
+        // unwatched: the subscription ends, nothing is kept
+        p.unwatchMessages(u"/pose"_s);
+        QVERIFY(!p.isWatched(u"/pose"_s));
+        QTest::qWait(300);
+        QVERIFY(p.takeMessages(u"/pose"_s).empty());
+        QCOMPARE(p.droppedMessages(u"/pose"_s), 0u);
     }
 
     void monitorUnknownTopicFails()

@@ -237,12 +237,10 @@ bool DetailPane::plotField(const QModelIndex& index)
     const QModelIndex name = index.siblingAtColumn(0);
     if (!name.data(NumericRole).toBool() || m_kind == Kind::None)
         return false;
-    if (m_kind == Kind::Ros2) {
-        m_plotNote->setText(tr("Fields of ROS 2 topics cannot be plotted yet."));
-        return false;
-    }
     PlotField field;
-    field.source = m_kind == Kind::Ros ? PlotField::Source::Ros : PlotField::Source::Mqtt;
+    field.source = m_kind == Kind::Ros2 ? PlotField::Source::Ros2
+        : m_kind == Kind::Ros           ? PlotField::Source::Ros
+                                        : PlotField::Source::Mqtt;
     field.topic = m_topic;
     field.path = name.data(FieldPathRole).toStringList();
     if (!m_plotter->add(field) && m_plotter->indexOf(field) < 0) {
