@@ -99,7 +99,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
     quint64 badInfo = 0;
     quint64 ignoredEndpoints = 0;
     QByteArray ownPrefix;
-    std::atomic<bool> dirty {true};
+    std::atomic<quint64> changes {1}; ///< bumped by the listener threads at every change of the tables
 
     /// A subscribed topic: monitored, watched, or both.
     struct Monitored
@@ -147,7 +147,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
             forgetParticipant(prefix);
             break;
         }
-        dirty = true;
+        ++changes;
     }
 
     void endpoint(const rtps::GUID_t& guid, const std::string& ddsTopic, const std::string& ddsType,
@@ -157,7 +157,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
             return;
         const QByteArray gid = gidBytes(guid);
         std::lock_guard<std::mutex> lock(mutex);
-        dirty = true;
+        ++changes;
         if (removed) {
             endpoints.erase(gid);
             services.erase(gid);
@@ -220,7 +220,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
         }
         // a participant speaks for itself only: its announcement is kept under its own prefix
         infos[prefix] = std::move(*parsed);
-        dirty = true;
+        ++changes;
     }
 
     void onSample(const QString& topic, const Ros2RawSample& sample)
@@ -295,7 +295,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
 Ros2Participant::Ros2Participant(QObject* parent)
     : QObject(parent)
 {
-    m_timer.setInterval(250);
+    m_timer.setInterval(kPollMs);
     connect(&m_timer, &QTimer::timeout, this, &Ros2Participant::refresh);
 }
 
@@ -382,6 +382,9 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     }
     if (!d->infoReader->reader)
         qCWarning(lcRos2) << "no reader for ros_discovery_info: topics show without node names";
+    m_pending.invalidate(); // a new Private counts its changes from 1
+    m_builtChanges = 0;
+    m_polledChanges = 0;
     m_timer.start();
     return true;
 }
@@ -416,8 +419,21 @@ quint64 Ros2Participant::badDiscoveryInfo() const
 
 void Ros2Participant::refresh()
 {
-    if (!d || !d->dirty.exchange(false))
+    // Rebuilt once the changes pause for a poll (a node that starts, the whole burst of a large
+    // graph's discovery), and at least once a graph interval while they go on.
+    if (!d)
         return;
+    const quint64 changes = d->changes.load();
+    if (changes == m_builtChanges)
+        return;
+    const bool quiet = changes == m_polledChanges;
+    m_polledChanges = changes;
+    if (!m_pending.isValid())
+        m_pending.start();
+    if (!quiet && m_pending.elapsed() < m_graphInterval)
+        return;
+    m_pending.invalidate();
+    m_builtChanges = changes;
     QList<Ros2Endpoint> endpoints;
     QList<Ros2ParticipantInfo> infos;
     QStringList services;

@@ -3,8 +3,10 @@
 
 #include "ros2/ros2graph.h"
 
+#include <algorithm>
 #include <memory>
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
 #include <QString>
@@ -61,7 +63,8 @@ struct Ros2Options
 /// A DDS participant that sees a ROS 2 graph on the wire (the only code that uses Fast DDS).
 ///
 /// Discovery comes from Fast DDS's listener threads into a table under a lock; the graph is
-/// rebuilt at most every `graphIntervalMs` on the thread that owns this object, and graphChanged()
+/// rebuilt on the thread that owns this object when the changes pause for a poll (kPollMs), or
+/// once a graph interval (250 ms unless setGraphInterval()) while they go on, and graphChanged()
 /// fires only when it changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes.
 /// Nothing here blocks on the network.
 class Ros2Participant : public QObject
@@ -77,7 +80,12 @@ public:
     void stop();
     bool isRunning() const;
     Ros2Options options() const { return m_options; }
-    void setGraphInterval(int ms) { m_timer.setInterval(ms); }
+    static constexpr int kPollMs = 25;
+    void setGraphInterval(int ms)
+    {
+        m_graphInterval = ms;
+        m_timer.setInterval(std::min(ms, kPollMs));
+    }
 
     const Ros2Graph& graph() const { return m_graph; }
     /// Samples of ros_discovery_info that could not be read (each also logged once per participant).
@@ -131,5 +139,9 @@ private:
     std::size_t m_keepArrivals = 0;
     QHash<QString, WatchLimits> m_watched; ///< what watchMessages() asked for, across stop() and start()
     Ros2Graph m_graph;
+    int m_graphInterval = 250;
+    quint64 m_builtChanges = 0; ///< the listener's change count the graph was built from
+    quint64 m_polledChanges = 0; ///< the change count the previous poll saw
+    QElapsedTimer m_pending; ///< since the first change not in the graph
     QTimer m_timer;
 };
