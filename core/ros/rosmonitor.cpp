@@ -30,7 +30,7 @@ struct RosMonitor::Private
 {
     mutable std::mutex mutex;
     QHash<QString, TopicState> topics;
-    QSet<QString> wanted;
+    QHash<QString, int> wanted; ///< monitor() calls not yet balanced by unmonitor(), per topic
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
@@ -97,7 +97,7 @@ struct RosMonitor::Private
             QList<QString> topics;
             {
                 std::lock_guard<std::mutex> lock(p->mutex);
-                topics = p->wanted.values();
+                topics = p->wanted.keys();
             }
             for (const QString& t : std::as_const(topics))
                 p->subscribe(node, t, weak, owner);
@@ -134,9 +134,8 @@ void RosMonitor::monitor(const QString& topic)
 {
     {
         std::lock_guard<std::mutex> lock(d->mutex);
-        if (d->wanted.contains(topic))
-            return;
-        d->wanted.insert(topic);
+        if (d->wanted[topic]++ > 0)
+            return; // subscribed for another user (the Links page, the Discover page's Mon)
         d->topics.insert(topic, TopicState());
     }
     std::weak_ptr<Private> weak = d;
@@ -151,7 +150,10 @@ void RosMonitor::unmonitor(const QString& topic)
 {
     {
         std::lock_guard<std::mutex> lock(d->mutex);
-        d->wanted.remove(topic);
+        const auto it = d->wanted.find(topic);
+        if (it == d->wanted.end() || --it.value() > 0)
+            return; // not monitored, or still wanted by another user
+        d->wanted.erase(it);
         d->topics.remove(topic);
     }
     std::weak_ptr<Private> weak = d;

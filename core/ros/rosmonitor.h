@@ -56,6 +56,9 @@ public:
 
     /// The master to register with; switches the process's roscpp node when it changes.
     void setMasterUri(const QString& uri);
+    /// Subscribes to a topic. Calls are counted: the subscription ends with the unmonitor() that
+    /// balances the last monitor(), so that two users (the Discover page's Mon, the Links page)
+    /// do not end each other's.
     void monitor(const QString& topic);
     void unmonitor(const QString& topic);
     bool isMonitored(const QString& topic) const;

@@ -212,6 +212,7 @@ struct Ros2Participant::Private : public DomainParticipantListener
             return;
         if (!parsed) {
             ++badInfo;
+            ++changes; // the graph is the same, but what is shown with it (the count) is not
             // the first 16 participants are named in the log, once each; the set stays that small
             if (badInfoFrom.size() < 16 && badInfoFrom.insert(prefix).second)
                 qCWarning(lcRos2).noquote()
@@ -385,6 +386,7 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     m_pending.invalidate(); // a new Private counts its changes from 1
     m_builtChanges = 0;
     m_polledChanges = 0;
+    m_shownBadInfo = 0;
     m_timer.start();
     return true;
 }
@@ -438,8 +440,10 @@ void Ros2Participant::refresh()
     QList<Ros2ParticipantInfo> infos;
     QStringList services;
     int participants = 0;
+    quint64 bad = 0;
     {
         std::lock_guard<std::mutex> lock(d->mutex);
+        bad = d->badInfo;
         endpoints.reserve(qsizetype(d->endpoints.size()));
         for (const auto& [gid, e] : d->endpoints)
             endpoints.append(e);
@@ -451,29 +455,42 @@ void Ros2Participant::refresh()
         participants = int(d->participants.size());
     }
     Ros2Graph graph = Ros2Graph::build(endpoints, infos, participants, services);
-    if (graph == m_graph)
+    if (graph == m_graph && bad == m_shownBadInfo)
         return;
     m_graph = std::move(graph);
-    // watched topics whose type the graph did not know before (or since start())
+    m_shownBadInfo = bad;
+    // watched or monitored topics whose type the graph did not know before (or since start())
     for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
         if (!isSubscribed(it.key()) && m_graph.topic(it.key()))
-            subscribe(it.key(), false, nullptr);
+            subscribe(it.key(), m_monitorUses.contains(it.key()), nullptr);
+    for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
+        if (!isSubscribed(it.key()) && m_graph.topic(it.key()))
+            subscribe(it.key(), true, nullptr);
     emit graphChanged(m_graph);
 }
 
 void Ros2Participant::monitor(const QString& topic)
 {
-    if (!d || !d->participant)
+    if (!d || !d->participant) {
+        ++m_monitorUses[topic]; // subscribed after start(), once the graph has the topic
         return;
+    }
+    if (const auto uses = m_monitorUses.find(topic); uses != m_monitorUses.end()) {
+        ++uses.value(); // subscribed already for another user (the Links page, Discover's Mon)
+        return;
+    }
     {
         std::lock_guard<std::mutex> lock(d->mutex);
         if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
             it->second.monitored = true; // subscribed already (watched)
+            m_monitorUses.insert(topic, 1);
             return;
         }
     }
     QString why;
-    if (!subscribe(topic, true, &why))
+    if (subscribe(topic, true, &why))
+        m_monitorUses.insert(topic, 1);
+    else
         emit monitorFailed(topic, why);
 }
 
@@ -526,6 +543,10 @@ bool Ros2Participant::subscribe(const QString& topic, bool monitored, QString* w
 
 void Ros2Participant::unmonitor(const QString& topic)
 {
+    const auto uses = m_monitorUses.find(topic);
+    if (uses == m_monitorUses.end() || --uses.value() > 0)
+        return; // not monitored, or still wanted by another user
+    m_monitorUses.erase(uses);
     if (d && d->participant)
         d->release(topic, true);
 }

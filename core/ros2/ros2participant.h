@@ -92,7 +92,10 @@ public:
     quint64 badDiscoveryInfo() const;
 
     /// Subscribes to a topic of the graph as raw samples (best effort, volatile: it matches every
-    /// publisher). Fails with monitorFailed() when the topic has no type yet.
+    /// publisher). Fails with monitorFailed() when the topic has no type yet. Calls are counted:
+    /// the subscription ends with the unmonitor() that balances the last monitor(), so that two
+    /// users (Discover's Mon, the Links page) do not end each other's; it is made again after
+    /// stop() and start() once the graph has the topic.
     void monitor(const QString& topic);
     /// Ends monitor(); the subscription stays while the topic is watched (watchMessages()).
     void unmonitor(const QString& topic);
@@ -118,6 +121,7 @@ public:
     quint64 droppedArrivals() const;
 
 signals:
+    /// The graph changed, or badDiscoveryInfo() did (which is shown with it).
     void graphChanged(const Ros2Graph& graph);
     void monitorFailed(const QString& topic, const QString& why);
 
@@ -137,9 +141,11 @@ private:
     std::shared_ptr<Private> d;
     Ros2Options m_options;
     std::size_t m_keepArrivals = 0;
+    QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
     QHash<QString, WatchLimits> m_watched; ///< what watchMessages() asked for, across stop() and start()
     Ros2Graph m_graph;
     int m_graphInterval = 250;
+    quint64 m_shownBadInfo = 0; ///< badDiscoveryInfo() when graphChanged() last fired
     quint64 m_builtChanges = 0; ///< the listener's change count the graph was built from
     quint64 m_polledChanges = 0; ///< the change count the previous poll saw
     QElapsedTimer m_pending; ///< since the first change not in the graph

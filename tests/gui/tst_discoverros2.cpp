@@ -167,8 +167,8 @@ private slots:
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
         QTableView* view = page.ros2View();
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/huge"_s) >= 0 && rowOf(view, u"/fine"_s) >= 0, 15000);
-        QTRY_VERIFY_WITH_TIMEOUT(page.ros2Status()->text().contains(u"unreadable node announcements 1"_s),
-                                 5000);
+        QTRY_VERIFY2_WITH_TIMEOUT(page.ros2Status()->text().contains(u"unreadable node announcements 1"_s),
+                                  qPrintable(page.ros2Status()->text()), 10000);
 
         RosTopicModel* model = session.ros2Topics();
         for (const QString& topic : {u"/huge"_s, u"/fine"_s})

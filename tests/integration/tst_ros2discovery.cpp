@@ -475,6 +475,37 @@ private slots:
         QCOMPARE(p.droppedMessages(u"/pose"_s), 0u);
     }
 
+    // Two users of one subscription (Discover's Mon and the Links page) do not end each other's,
+    // and a monitored topic is subscribed again after stop() and start() (another domain and back).
+    void monitorUsesAreCounted()
+    {
+        Ros2Participant p;
+        QVERIFY(p.start({m_domain, true}));
+        Ros2Peer talker(m_domain,
+                        {u"--node"_s, u"/twice"_s, u"--pub"_s, u"/twice:std_msgs/msg/String:20"_s,
+                         u"--duration"_s, u"60"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(publishers(p, u"/twice"_s) == 1, 15000);
+        const auto messages = [&] { return p.snapshot(wallClockNs()).value(u"/twice"_s).messages; };
+        p.monitor(u"/twice"_s);
+        p.monitor(u"/twice"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(messages() >= 3, 10000);
+        p.unmonitor(u"/twice"_s);
+        QVERIFY(p.isMonitored(u"/twice"_s));
+        const quint64 before = messages();
+        QTRY_VERIFY_WITH_TIMEOUT(messages() >= before + 3, 10000);
+
+        p.stop();
+        QVERIFY(p.start({m_domain, true}));
+        QTRY_VERIFY_WITH_TIMEOUT(p.isMonitored(u"/twice"_s) && messages() >= 3, 15000);
+
+        p.unmonitor(u"/twice"_s);
+        QVERIFY(!p.isMonitored(u"/twice"_s));
+        QVERIFY(!p.snapshot(wallClockNs()).contains(u"/twice"_s));
+        p.unmonitor(u"/twice"_s); // one too many: nothing to end
+        QVERIFY(!p.isMonitored(u"/twice"_s));
+    }
+
     void monitorUnknownTopicFails()
     {
         Ros2Participant p;

@@ -132,8 +132,21 @@ private slots:
         QCOMPARE(v->find(u"pose.position.x"_s)->value.toDouble(), 1.5);
         QCOMPARE(v->find(u"pose.position.y"_s)->value.toDouble(), -2.0);
 
+        // a second user (the Links page beside Discover's Mon): one unmonitor() leaves it on
+        monitor.monitor(u"/pose"_s);
         monitor.unmonitor(u"/pose"_s);
+        QVERIFY(monitor.isMonitored(u"/pose"_s));
+        const quint64 before = monitor.snapshot(nowNs()).value(u"/pose"_s).messages;
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/pose"_s).messages >= before + 3, 10000);
+
+        monitor.unmonitor(u"/pose"_s);
+        QVERIFY(!monitor.isMonitored(u"/pose"_s));
         QVERIFY(!monitor.snapshot(nowNs()).contains(u"/pose"_s));
+        monitor.unmonitor(u"/pose"_s); // one too many: nothing to end
+        monitor.monitor(u"/pose"_s); // and counting starts afresh
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/pose"_s).messages >= 1, 10000);
+        monitor.unmonitor(u"/pose"_s);
+        QVERIFY(!monitor.isMonitored(u"/pose"_s));
     }
 
     void deadMasterIsReportedNotWaitedFor()
