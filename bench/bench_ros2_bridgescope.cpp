@@ -25,20 +25,12 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-double cpuSeconds()
-{
-    rusage u {};
-    getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec)
-        + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
-}
-
 int discover(int domain, int topics, const QString& prefix, int intervalMs, int timeoutS)
 {
     Ros2Participant participant;
     participant.setGraphInterval(intervalMs);
     const qint64 rss0 = Bench::statusKb("VmRSS:");
-    const double cpu0 = cpuSeconds();
+    const double cpu0 = Bench::cpuSeconds();
     QElapsedTimer clock;
     double topicsMs = -1, topicsCpu = 0;
     QObject::connect(&participant, &Ros2Participant::graphChanged, [&](const Ros2Graph& graph) {
@@ -52,7 +44,7 @@ int discover(int domain, int topics, const QString& prefix, int intervalMs, int 
         }
         if (topicsMs < 0 && found >= topics) {
             topicsMs = double(clock.nsecsElapsed()) / 1e6;
-            topicsCpu = cpuSeconds() - cpu0;
+            topicsCpu = Bench::cpuSeconds() - cpu0;
         }
         if (found >= topics && named >= topics)
             QCoreApplication::exit(0);
@@ -66,7 +58,7 @@ int discover(int domain, int topics, const QString& prefix, int intervalMs, int 
     QTimer::singleShot(timeoutS * 1000, [] { QCoreApplication::exit(1); });
     const int rc = QCoreApplication::exec();
     const double ms = double(clock.nsecsElapsed()) / 1e6;
-    const double cpu = cpuSeconds() - cpu0;
+    const double cpu = Bench::cpuSeconds() - cpu0;
     if (rc != 0) {
         std::printf("incomplete topics_ms=%.1f\n", topicsMs);
         return 1;
@@ -112,7 +104,7 @@ int subscribe(int domain, const QString& topic, int size, int timeoutS)
             return;
         if (!matched && it->matchedPublishers > 0) {
             matched = true;
-            matchCpu = cpuSeconds();
+            matchCpu = Bench::cpuSeconds();
             std::printf("matched\n");
             std::fflush(stdout);
         }
@@ -129,7 +121,7 @@ int subscribe(int domain, const QString& topic, int size, int timeoutS)
     QTimer::singleShot(timeoutS * 1000, [] { QCoreApplication::exit(0); });
     if (QCoreApplication::exec() != 0)
         return 1;
-    const double cpu = cpuSeconds();
+    const double cpu = Bench::cpuSeconds();
     const qint64 hwm = Bench::statusKb("VmHWM:");
     drain.stop();
     const Ros2MonitorStats last = participant.snapshot(wallClockNs()).value(topic);

@@ -14,6 +14,7 @@
 //       `matched`, and at a line on stdin (or the timeout) one line `received ...`.
 //
 // Both print the process's CPU time (getrusage) and memory (VmRSS, VmHWM) with their result.
+#include "procstats.h"
 #include "rmw_dds_commonPubSubTypes.h"
 #include "sensor_msgsPubSubTypes.h"
 
@@ -48,29 +49,6 @@ namespace rtps = eprosima::fastrtps::rtps;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double cpuSeconds()
-{
-    rusage u {};
-    getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec)
-        + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
-}
-
-/// A field of /proc/self/status in kB ("VmRSS:", "VmHWM:"), or -1.
-long statusKb(const char* field)
-{
-    FILE* f = std::fopen("/proc/self/status", "r");
-    if (!f)
-        return -1;
-    char line[256];
-    long kb = -1;
-    while (std::fgets(line, sizeof line, f))
-        if (std::strncmp(line, field, std::strlen(field)) == 0)
-            kb = std::atol(line + std::strlen(field));
-    std::fclose(f);
-    return kb;
-}
 
 double msSince(Clock::time_point t0)
 {
@@ -167,7 +145,7 @@ private:
     {
         if (writersMs < 0 && m_writers.size() >= m_topics) {
             writersMs = msSince(t0);
-            writersCpu = cpuSeconds();
+            writersCpu = Bench::cpuSeconds();
         }
         if (writersMs < 0 || namedMs >= 0)
             return;
@@ -175,9 +153,9 @@ private:
             if (!m_named.count(g))
                 return;
         namedMs = msSince(t0);
-        namedCpu = cpuSeconds();
-        hwmKb = statusKb("VmHWM:");
-        rssKb = statusKb("VmRSS:");
+        namedCpu = Bench::cpuSeconds();
+        hwmKb = Bench::statusKb("VmHWM:");
+        rssKb = Bench::statusKb("VmRSS:");
         m_done.notify_all();
     }
 
@@ -192,8 +170,8 @@ private:
 int discover(int domain, std::size_t topics, const std::string& prefix, int timeoutS)
 {
     DiscoveryCounter counter(topics, prefix);
-    const long rss0 = statusKb("VmRSS:");
-    const double cpu0 = cpuSeconds();
+    const long rss0 = Bench::statusKb("VmRSS:");
+    const double cpu0 = Bench::cpuSeconds();
     counter.t0 = Clock::now();
     auto* factory = DomainParticipantFactory::get_instance();
     DomainParticipant* participant
@@ -238,7 +216,7 @@ public:
     void on_subscription_matched(DataReader*, const SubscriptionMatchedStatus& info) override
     {
         if (info.current_count_change == 1 && !matched.exchange(true)) {
-            matchCpu = cpuSeconds();
+            matchCpu = Bench::cpuSeconds();
             std::printf("matched\n");
             std::fflush(stdout);
         }
@@ -306,8 +284,8 @@ int subscribe(int domain, const std::string& topicName, std::size_t size, int ti
     // as the example: run until told (a line on stdin), bounded here by the timeout
     pollfd in {STDIN_FILENO, POLLIN, 0};
     poll(&in, 1, timeoutS * 1000);
-    const double cpu = cpuSeconds();
-    const long hwm = statusKb("VmHWM:");
+    const double cpu = Bench::cpuSeconds();
+    const long hwm = Bench::statusKb("VmHWM:");
     // no callback runs after this
     participant->delete_contained_entities();
     factory->delete_participant(participant);

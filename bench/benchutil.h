@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "procstats.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -80,18 +82,6 @@ inline std::vector<double> measureLag(const std::function<bool()>& running)
     while (running())
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
     return lags;
-}
-
-/// A field of /proc/self/status in kB ("VmRSS:", "VmHWM:"), or -1.
-inline qint64 statusKb(const char* field)
-{
-    QFile f(QStringLiteral("/proc/self/status"));
-    if (!f.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray& line : f.readAll().split('\n'))
-        if (line.startsWith(field))
-            return line.mid(int(qstrlen(field))).trimmed().split(' ').first().toLongLong();
-    return -1;
 }
 
 /// User + system CPU seconds of a running process so far (/proc/PID/stat), or -1.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/topicfigures.h"
+
 #include <memory>
 #include <QByteArray>
 #include <QHash>
@@ -9,19 +11,10 @@
 #include <vector>
 
 /// Figures of one monitored ROS topic, like rqt_topic shows them.
-struct RosMonitorStats
+struct RosMonitorStats : TopicFigures
 {
-    quint64 messages = 0;
-    quint64 bytes = 0;
-    int lastSize = 0;
-    qint64 lastNs = 0; ///< wall clock of the last message
-    double rateHz = 0; ///< over the last few seconds, like rostopic hz
-    double bytesPerSecond = 0;
-    QString type;
     QString md5;
     QString definition;
-    QByteArray lastMessage; ///< serialized
-    quint64 lost = 0; ///< ROS 2: samples DDS reports lost (roscpp tells none)
 };
 
 /// One message as the monitor saw it, for consumers that need every message (Watch): its

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/topicfigures.h"
 #include "ros2/ros2graph.h"
 
 #include <algorithm>
@@ -14,18 +15,9 @@
 #include <vector>
 
 /// Figures of one monitored ROS 2 topic, as RosMonitorStats are for ROS 1.
-struct Ros2MonitorStats
+struct Ros2MonitorStats : TopicFigures
 {
-    quint64 messages = 0;
-    quint64 bytes = 0;
-    int lastSize = 0;
-    qint64 lastNs = 0; ///< wall clock of the last sample
-    double rateHz = 0; ///< over the last five seconds
-    double bytesPerSecond = 0;
-    QString type; ///< ROS 2 name
     int matchedPublishers = 0;
-    quint64 lost = 0; ///< samples DDS knows were sent and never came (sequence gaps of best-effort readers)
-    QByteArray lastMessage; ///< CDR with its encapsulation header
 };
 
 /// One sample as the monitor saw it, for consumers that need every sample (Watch): the first bytes

@@ -105,18 +105,8 @@ RosGraph LiveSession::toRosGraph(const Ros2Graph& graph)
 QHash<QString, RosMonitorStats> LiveSession::toRosStats(const QHash<QString, Ros2MonitorStats>& ros2)
 {
     QHash<QString, RosMonitorStats> stats;
-    for (auto it = ros2.cbegin(); it != ros2.cend(); ++it) {
-        RosMonitorStats& s = stats[it.key()];
-        s.messages = it->messages;
-        s.bytes = it->bytes;
-        s.lastSize = it->lastSize;
-        s.lastNs = it->lastNs;
-        s.rateHz = it->rateHz;
-        s.bytesPerSecond = it->bytesPerSecond;
-        s.type = it->type;
-        s.lastMessage = it->lastMessage;
-        s.lost = it->lost;
-    }
+    for (auto it = ros2.cbegin(); it != ros2.cend(); ++it)
+        static_cast<TopicFigures&>(stats[it.key()]) = *it; // no md5 or definition in ROS 2
     return stats;
 }
 

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+#include <QtGlobal>
+
+/// What a monitor knows of one subscribed topic, ROS 1 (RosMonitorStats) and ROS 2
+/// (Ros2MonitorStats) alike, so that the views show both from one model.
+struct TopicFigures
+{
+    quint64 messages = 0;
+    quint64 bytes = 0;
+    int lastSize = 0;
+    qint64 lastNs = 0; ///< wall clock of the last message
+    double rateHz = 0; ///< over the last few seconds, like rostopic hz
+    double bytesPerSecond = 0;
+    QString type;
+    QByteArray lastMessage; ///< as it came: ROS 1 serialization, or CDR with its encapsulation header
+    quint64 lost = 0; ///< ROS 2: samples DDS reports lost (roscpp tells none)
+};
