@@ -10,27 +10,30 @@
 #include "latency/pipelinemodel.h"
 #include "mqtt/mqttprofile.h"
 #include "ros/rostopicmodel.h"
+#include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "watch/linkmodel.h"
-#include "session/fieldplotter.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/discover/detailpane.h"
-#include "widgets/discover/fieldplotchart.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/discover/fieldplotchart.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/map/mappage.h"
+#include "widgets/map/mappinginspector.h"
 #include "widgets/measure/measurepage.h"
 
 #include <QHash>
-#include <QSet>
-#include <QTreeView>
+#include <QLineEdit>
 #include <QListView>
+#include <QScrollBar>
+#include <QSet>
 #include <QTableView>
 #include <QTabWidget>
 #include <QTest>
+#include <QTreeView>
 
 using namespace Qt::StringLiterals;
 
@@ -58,12 +61,22 @@ private:
             const QString shown = delegate->displayedText(index);
             QVERIFY2(view->fontMetrics().horizontalAdvance(shown) <= width,
                      qPrintable(u"%1 wider than %2 px"_s.arg(shown).arg(width)));
+            // The last segment, which tells names apart most often, is never cut.
+            const QString last = name.section(u'/', -1);
+            QVERIFY2(shown.endsWith(last),
+                     qPrintable(u"%1: %2 shows as %3"_s.arg(view->objectName(), name, shown)));
             const QString other = nameOf.value(shown, name);
             QVERIFY2(
                 other == name,
                 qPrintable(u"%1: %2 and %3 both show as %4"_s.arg(view->objectName(), name, other, shown)));
             nameOf.insert(shown, name);
         }
+    }
+
+    /// The names' columns fit the view: no scrolling sideways to read a row.
+    static void checkNoSideways(QTableView* view)
+    {
+        QTRY_VERIFY2(!view->horizontalScrollBar()->isVisible(), qPrintable(view->objectName()));
     }
 
     void checkEveryView()
@@ -76,8 +89,20 @@ private:
         w->pages()->setCurrentWidget(w->mapPage());
         QTest::qWait(300);
         checkNames(w->mapPage()->rosView(), RosTopicModel::TopicColumn, 19);
+        checkNames(w->mapPage()->rosView(), RosTopicModel::TypeColumn, 19);
         checkNames(w->mapPage()->editor()->table(), MappingModel::RosTopicColumn, 2);
         checkNames(w->mapPage()->editor()->table(), MappingModel::MqttTopicColumn, 2);
+        checkNoSideways(w->mapPage()->rosView());
+        checkNoSideways(w->mapPage()->editor()->table());
+        // The inspector beside the table shows the selected mapping's topics whole.
+        QTableView* mappings = w->mapPage()->editor()->table();
+        mappings->selectRow(0);
+        MappingInspector* inspector = w->mapPage()->editor()->inspector();
+        for (QLineEdit* edit : {inspector->rosTopicEdit(), inspector->mqttTopicEdit()}) {
+            QTRY_VERIFY(!edit->text().isEmpty());
+            QVERIFY2(edit->fontMetrics().horizontalAdvance(edit->text()) + 12 <= edit->width(),
+                     qPrintable(u"%1 in %2 px"_s.arg(edit->text()).arg(edit->width())));
+        }
         w->pages()->setCurrentWidget(w->measurePage());
         QTest::qWait(300);
         checkNames(w->measurePage()->pipelineView(), PipelineModel::TopicColumn, 8);

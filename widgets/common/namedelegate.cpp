@@ -93,6 +93,26 @@ QString NameDelegate::displayedText(const QModelIndex& index) const
     return shortened(option);
 }
 
+int NameDelegate::tailWidth() const
+{
+    const QAbstractItemModel* model = m_view->model();
+    if (!model)
+        return 0;
+    const QFontMetrics fm = m_view->fontMetrics();
+    int widest = 0;
+    for (int r = 0, rows = model->rowCount(); r < rows; ++r) {
+        const QString name = model->index(r, m_column).data(Qt::DisplayRole).toString();
+        const qsizetype slash = name.lastIndexOf(u'/');
+        const QString tail = slash < 0 ? name : QStringLiteral("…") + name.mid(slash);
+        widest = std::max(widest, fm.horizontalAdvance(tail));
+    }
+    if (widest == 0)
+        return 0;
+    // The style's text margin around the text rectangle, and shortened()'s own inside it.
+    const int margin = m_view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_view) + 1;
+    return widest + 4 * margin + 2;
+}
+
 void NameDelegate::paint(QPainter* painter, const QStyleOptionViewItem& option,
                          const QModelIndex& index) const
 {

@@ -19,6 +19,9 @@ public:
 
     /// The text the cell shows at the view's current column width.
     QString displayedText(const QModelIndex& index) const;
+    /// The column width below which a name would lose part of its last segment (`…/last`), the
+    /// part that tells names apart most often: a column that fits itself stays at least this wide.
+    int tailWidth() const;
 
     void paint(QPainter* painter, const QStyleOptionViewItem& option,
                const QModelIndex& index) const override;

@@ -2,13 +2,13 @@
 #pragma once
 
 #include <QList>
-#include <QTimer>
 #include <QWidget>
 
 class QAbstractItemModel;
 class QLineEdit;
 class QSortFilterProxyModel;
 class QTableView;
+class ColumnFitter;
 class NameDelegate;
 
 /// The ROS graph's topics as a filterable, sortable table: a filter line over a table of `source`
@@ -31,17 +31,10 @@ public:
     void showOnly(const QList<int>& columns);
     NameDelegate* topicDelegate() const { return m_topicDelegate; }
 
-protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
-
 private:
-    void fitColumns();
-
     QLineEdit* m_filter;
     QSortFilterProxyModel* m_proxy;
     QTableView* m_table;
     NameDelegate* m_topicDelegate;
-    QTimer m_fit;
-    bool m_fitting = false;
-    bool m_userSized = false;
+    ColumnFitter* m_fitter;
 };

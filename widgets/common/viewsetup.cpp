@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "viewsetup.h"
 
+#include <QEvent>
 #include <QHeaderView>
+#include <QSplitter>
 #include <QTableView>
 #include <QTreeView>
 
@@ -33,6 +35,51 @@ void dragsCopies(QAbstractItemView* view)
     view->setDragDropMode(QAbstractItemView::DragDrop);
     view->setDefaultDropAction(Qt::CopyAction);
     view->setDropIndicatorShown(true);
+}
+
+namespace {
+class SizesOnShow : public QObject
+{
+public:
+    SizesOnShow(QSplitter* splitter, const QList<int>& sizes)
+        : QObject(splitter)
+        , m_sizes(sizes)
+    {
+        splitter->installEventFilter(this);
+    }
+
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() != QEvent::Show)
+            return false;
+        auto* splitter = static_cast<QSplitter*>(watched);
+        if (!splitter->property(RestoredProperty).toBool()) {
+            const int room
+                = splitter->orientation() == Qt::Horizontal ? splitter->width() : splitter->height();
+            qint64 sum = 0;
+            for (int s : m_sizes)
+                sum += s;
+            if (room > 0 && sum > 0) {
+                QList<int> scaled;
+                for (int s : m_sizes)
+                    scaled << int(qint64(s) * room / sum);
+                splitter->setSizes(scaled);
+            }
+        }
+        watched->removeEventFilter(this);
+        deleteLater();
+        return false;
+    }
+
+private:
+    QList<int> m_sizes;
+};
+} // namespace
+
+void initialSizes(QSplitter* splitter, const QList<int>& sizes)
+{
+    splitter->setSizes(sizes); // until it is shown
+    new SizesOnShow(splitter, sizes);
 }
 
 } // namespace ViewSetup

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QList>
+
 class QAbstractItemView;
+class QSplitter;
 class QTableView;
 class QTreeView;
 
@@ -14,4 +17,11 @@ void records(QTableView* view, int sortColumn = -1);
 void topicTree(QTreeView* view, int sortColumn);
 /// Items dragged out as copies, several at once; drops onto the view are shown.
 void dragsCopies(QAbstractItemView* view);
+/// The splitter's panes get these sizes, scaled to the room it has, when it is first shown: sizes
+/// set before that are skewed by the first layout (a page not yet shown has no width). A splitter
+/// whose sizes WindowMemory restores keeps those.
+void initialSizes(QSplitter* splitter, const QList<int>& sizes);
+/// Set on a splitter or header whose sizes come from the last session: initialSizes and
+/// ColumnFitter leave it alone.
+inline constexpr char RestoredProperty[] = "bridgescopeRestored";
 } // namespace ViewSetup

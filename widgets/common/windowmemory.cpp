@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "windowmemory.h"
 
+#include "widgets/common/viewsetup.h"
+
 #include <memory>
 #include <QEvent>
 #include <QHeaderView>
@@ -96,6 +98,7 @@ void WindowMemory::restore(QWidget* root, QSettings& settings, const QString& gr
     settings.beginGroup(group);
     for (QSplitter* s : root->findChildren<QSplitter*>())
         if (const QVariant v = settings.value(u"splitters/"_s + keyOf(s, root)); v.isValid()) {
+            s->setProperty(ViewSetup::RestoredProperty, true);
             if (s->isVisible())
                 s->restoreState(v.toByteArray());
             else
@@ -109,6 +112,7 @@ void WindowMemory::restore(QWidget* root, QSettings& settings, const QString& gr
         const int count = settings.value(key + u"/count"_s, -1).toInt();
         if (state.isEmpty() || count <= 0)
             continue;
+        h->setProperty(ViewSetup::RestoredProperty, true); // ColumnFitter leaves it alone
         if (h->count() == count) {
             h->restoreState(state);
             continue;

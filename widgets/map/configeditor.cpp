@@ -3,6 +3,7 @@
 
 #include "config/configdocument.h"
 #include "config/mappingmodel.h"
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/problemspanel.h"
 #include "widgets/common/severityiconproxy.h"
@@ -54,14 +55,14 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     top->addWidget(createInspectorTabs());
     top->setStretchFactor(0, 3);
     top->setStretchFactor(1, 2);
-    top->setSizes({780, 480});
+    ViewSetup::initialSizes(top, {520, 360}); // the inspector's fields get room for their values
     m_problems = new ProblemsPanel(document, this);
     auto* outer = new QSplitter(Qt::Vertical, this);
     outer->addWidget(top);
     outer->addWidget(m_problems);
     outer->setStretchFactor(0, 4);
     outer->setStretchFactor(1, 1);
-    outer->setSizes({600, 140});
+    ViewSetup::initialSizes(outer, {600, 140});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(outer);
@@ -102,7 +103,7 @@ void ConfigEditor::createActions()
     connect(m_duplicate, &QAction::triggered, this, &ConfigEditor::duplicateSelected);
 }
 
-/// The filter bar with the add and delete buttons, above the mapping table.
+/// The filter bar above the mapping table, the add and delete buttons below it.
 QWidget* ConfigEditor::createMappingPane()
 {
     auto* pane = new QWidget(this);
@@ -126,16 +127,20 @@ QWidget* ConfigEditor::createMappingPane()
     bar->addWidget(m_filterEdit, 1);
     bar->addWidget(m_directionFilter);
     bar->addWidget(m_onlyProblems);
-    for (QAction* a : {m_addOut, m_addIn, m_delete}) {
-        auto* b = new QToolButton(pane);
-        b->setDefaultAction(a);
-        b->setToolButtonStyle(Qt::ToolButtonTextOnly);
-        bar->addWidget(b);
-    }
     lv->addLayout(bar);
     m_table = new QTableView(pane);
     setUpTable();
     lv->addWidget(m_table, 1);
+    // Adding and deleting below the table, so that the bars above leave the inspector its room.
+    auto* actions = new QHBoxLayout;
+    for (QAction* a : {m_addOut, m_addIn, m_delete}) {
+        auto* b = new QToolButton(pane);
+        b->setDefaultAction(a);
+        b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        actions->addWidget(b);
+    }
+    actions->addStretch(1);
+    lv->addLayout(actions);
     return pane;
 }
 
@@ -154,13 +159,15 @@ void ConfigEditor::setUpTable()
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
     QHeaderView* header = m_table->horizontalHeader();
     header->setStretchLastSection(false);
+    header->setSectionResizeMode(QHeaderView::Interactive);
     header->setSectionResizeMode(MappingModel::DirectionColumn, QHeaderView::ResizeToContents);
-    header->setSectionResizeMode(MappingModel::RosTopicColumn, QHeaderView::Stretch);
-    header->setSectionResizeMode(MappingModel::MqttTopicColumn, QHeaderView::Stretch);
-    header->setSectionResizeMode(MappingModel::OptionsColumn, QHeaderView::Interactive);
-    header->setSectionResizeMode(MappingModel::HealthColumn, QHeaderView::Interactive);
     m_table->setColumnWidth(MappingModel::OptionsColumn, 150);
     m_table->setColumnWidth(MappingModel::HealthColumn, 170);
+    // The topics share what options and health leave, never less than their last segments.
+    auto* fitter = new ColumnFitter(m_table);
+    fitter->fit(MappingModel::OptionsColumn, 0.2);
+    fitter->fit(MappingModel::HealthColumn, 0.28);
+    fitter->fill({MappingModel::RosTopicColumn, MappingModel::MqttTopicColumn});
     m_table->addAction(m_delete);
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
     m_table->addAction(m_duplicate);

@@ -53,8 +53,7 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     split->addWidget(m_editor);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 3);
-    split->setSizes({420, 860}); // the ROS topics get room for their names
-    m_editor->setInspectorWidth(360);
+    ViewSetup::initialSizes(split, {400, 880}); // the ROS topics get room for their names
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);
     v->addLayout(bar);
@@ -104,6 +103,7 @@ QLayout* MapPage::createBar()
     m_prefix->setToolTip(
         tr("New MQTT topics go below this prefix (for example the client id), unless dropped on a level"));
     m_prefix->setMaximumWidth(220);
+    m_prefix->setMinimumWidth(180); // a bridge's id (`mqtt_interface_vehicle`) whole
     auto* prefixLabel = new QLabel(tr("MQTT &prefix:"), this);
     prefixLabel->setBuddy(m_prefix);
     bar->addSpacing(12);
@@ -114,6 +114,9 @@ QLayout* MapPage::createBar()
            "mapping to retarget it."),
         this);
     m_hint->setStyleSheet(u"color: palette(mid)"_s);
+    // A hint gives way: cut at the window's edge rather than widening the window (all in its tooltip).
+    m_hint->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_hint->setToolTip(m_hint->text());
     bar->addSpacing(12);
     bar->addWidget(m_hint, 1);
     return bar;

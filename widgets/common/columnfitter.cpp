@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+#include "columnfitter.h"
+
+#include "widgets/common/namedelegate.h"
+#include "widgets/common/viewsetup.h"
+
+#include <algorithm>
+#include <QEvent>
+#include <QGuiApplication>
+#include <QHeaderView>
+#include <QScopedValueRollback>
+#include <QTableView>
+
+ColumnFitter::ColumnFitter(QTableView* view)
+    : QObject(view)
+    , m_view(view)
+{
+    m_timer.setSingleShot(true);
+    m_timer.setInterval(100);
+    connect(&m_timer, &QTimer::timeout, this, &ColumnFitter::apply);
+    const auto refit = [this] { m_timer.start(); };
+    QAbstractItemModel* model = view->model();
+    connect(model, &QAbstractItemModel::rowsInserted, this, refit);
+    connect(model, &QAbstractItemModel::rowsRemoved, this, refit);
+    connect(model, &QAbstractItemModel::modelReset, this, refit);
+    connect(model, &QAbstractItemModel::layoutChanged, this, refit);
+    // Changed cells matter in the fill columns (topics edited); not in the others, whose figures
+    // change every second (the columns would twitch).
+    connect(model, &QAbstractItemModel::dataChanged, this,
+            [this](const QModelIndex& from, const QModelIndex& to) {
+                for (int c : std::as_const(m_fills))
+                    if (c >= from.column() && c <= to.column())
+                        m_timer.start();
+            });
+    // Sized by hand: a handle dragged or double-clicked. (A model's reset resizes sections too,
+    // and is no reason to stop fitting.)
+    QHeaderView* header = view->horizontalHeader();
+    connect(header, &QHeaderView::sectionResized, this, [this](int column) {
+        if (!m_fitting && manages(column) && QGuiApplication::mouseButtons() != Qt::NoButton)
+            m_userSized = true;
+    });
+    connect(header, &QHeaderView::sectionHandleDoubleClicked, this, [this] { m_userSized = true; });
+    view->viewport()->installEventFilter(this);
+}
+
+void ColumnFitter::fit(int column, double share)
+{
+    m_fits.append({column, share});
+    m_timer.start();
+}
+
+void ColumnFitter::fill(const QList<int>& columns)
+{
+    m_fills = columns;
+    m_timer.start();
+}
+
+bool ColumnFitter::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_view->viewport() && event->type() == QEvent::Resize)
+        m_timer.start();
+    return QObject::eventFilter(watched, event);
+}
+
+bool ColumnFitter::manages(int column) const
+{
+    return m_fills.contains(column)
+        || std::any_of(m_fits.begin(), m_fits.end(), [column](const auto& f) { return f.first == column; });
+}
+
+int ColumnFitter::floorOf(int column) const
+{
+    auto* delegate = qobject_cast<NameDelegate*>(m_view->itemDelegateForColumn(column));
+    return std::max(60, delegate ? delegate->tailWidth() : 0);
+}
+
+void ColumnFitter::apply()
+{
+    const QHeaderView* header = m_view->horizontalHeader();
+    if (m_userSized || header->property(ViewSetup::RestoredProperty).toBool()) // the last session's
+        return;
+    const QScopedValueRollback fitting(m_fitting, true);
+    const int room = m_view->viewport()->width();
+    const auto usable = [&](int column) {
+        return !m_view->isColumnHidden(column)
+            && header->sectionResizeMode(column) == QHeaderView::Interactive;
+    };
+    QList<int> fills;
+    int reserved = 0; // the fill columns' floors: names before figures
+    for (int c : std::as_const(m_fills))
+        if (usable(c)) {
+            fills << c;
+            reserved += floorOf(c);
+        }
+    int left = room - reserved;
+    for (int c = 0; c < header->count(); ++c)
+        if (!m_view->isColumnHidden(c) && !manages(c))
+            left -= m_view->columnWidth(c);
+    // Fitted columns first, each within its share (and, beside fill columns, what they leave).
+    for (const auto& [column, share] : std::as_const(m_fits)) {
+        if (!usable(column))
+            continue;
+        const int least = floorOf(column);
+        const int most
+            = std::max(least, fills.isEmpty() ? int(room * share) : std::min(int(room * share), left));
+        const int width
+            = std::clamp(static_cast<QAbstractItemView*>(m_view)->sizeHintForColumn(column), least, most);
+        m_view->setColumnWidth(column, width);
+        left -= width;
+    }
+    if (fills.isEmpty())
+        return;
+    const int each = (left + reserved) / int(fills.size());
+    for (int c : fills)
+        m_view->setColumnWidth(c, std::max(floorOf(c), each));
+}
