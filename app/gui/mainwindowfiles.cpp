@@ -2,6 +2,7 @@
 // Opening anything: File › Open, Open Recent, a drop on the window and the command line all send
 // files through MainWindow::openPaths, which opens each where it belongs.
 #include "app/gui/mainwindow.h"
+#include "base/logging.h"
 #include "experiment/experimentreport.h"
 #include "report/runloader.h"
 #include "widgets/common/droppedfiles.h"
@@ -80,6 +81,8 @@ QStringList MainWindow::openPaths(const QStringList& paths)
     qsizetype firstOpened = paths.size();
     QWidget* page = nullptr;
     const auto opened = [&](const QString& path, QWidget* where) {
+        qCDebug(lcConfig).noquote() << "opened" << path << "on the"
+                                    << m_pages->tabText(m_pages->indexOf(where)).remove(u'&') << "page";
         const qsizetype at = paths.indexOf(path);
         if (at < firstOpened) {
             firstOpened = at;

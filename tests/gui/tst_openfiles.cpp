@@ -10,6 +10,7 @@
 #include "latency/pipeline.h"
 #include "record/suitecsv.h"
 #include "session/measuresession.h"
+#include "stampbag.h"
 #include "syntheticrun.h"
 #include "watch/linkmodel.h"
 #include "widgets/discover/discoverpage.h"
@@ -70,7 +71,7 @@ class TestOpenFiles : public QObject
     Q_OBJECT
 
     QTemporaryDir m_dir;
-    QString m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_experiment;
+    QString m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_bag, m_experiment;
 
     QString write(const QString& name, const QByteArray& bytes)
     {
@@ -98,6 +99,9 @@ private slots:
         m_csvA = write(u"a.csv"_s, SuiteCsv::write(a.topics, a.samples));
         const SyntheticRun b = SyntheticRun::paper(60, 0, 2);
         m_csvB = write(u"b.csv"_s, SuiteCsv::write(b.topics, b.samples));
+        // A bag recorded with rosbag's own API: the suite's stamps and more.
+        m_bag = m_dir.filePath(u"stamps.bag"_s);
+        StampBag::write(m_bag, SyntheticRun::paper(20, 0, 4));
         // An experiment's folder: its plan and its (empty) state.
         QVERIFY(QDir(m_dir.path()).mkdir(u"exp"_s));
         m_experiment = m_dir.filePath(u"exp"_s);
@@ -141,10 +145,17 @@ private slots:
         QCOMPARE(w.pages()->currentWidget(), w.measurePage());
         QVERIFY(w.measure()->isShowingRun());
 
-        // Several: compared on the Reports page.
-        QVERIFY(drop(&w, {m_csvA, m_csvB}));
+        // A bag alone: shown on the Measure page too (read by the bag helper process).
+        w.measurePage()->runBar()->backToLive();
+        w.pages()->setCurrentWidget(w.discoverPage());
+        QVERIFY(drop(&w, {m_bag}));
+        QTRY_COMPARE(w.pages()->currentWidget(), w.measurePage());
+        QVERIFY(w.measure()->isShowingRun());
+
+        // Several: compared on the Reports page, bags among them.
+        QVERIFY(drop(&w, {m_csvA, m_csvB, m_bag}));
         QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
-        QCOMPARE(w.reportsPage()->inputs(), QStringList({m_csvA, m_csvB}));
+        QCOMPARE(w.reportsPage()->inputs(), QStringList({m_csvA, m_csvB, m_bag}));
 
         // An experiment's folder.
         QVERIFY(drop(&w, {m_experiment}));
@@ -168,8 +179,8 @@ private slots:
         QStringList entries;
         for (QAction* a : recent->actions())
             entries << a->text();
-        for (const QString& name :
-             {u"a.bsrun"_s, u"logger.yaml"_s, u"a.csv"_s, u"b.csv"_s, u"exp"_s, u"cloud.yaml"_s})
+        for (const QString& name : {u"a.bsrun"_s, u"logger.yaml"_s, u"a.csv"_s, u"b.csv"_s, u"stamps.bag"_s,
+                                    u"exp"_s, u"cloud.yaml"_s})
             QVERIFY2(entries.join(u'\n').contains(name), qPrintable(entries.join(u'\n')));
         w.pages()->setCurrentWidget(w.mapPage());
         for (QAction* a : recent->actions())
@@ -233,19 +244,38 @@ private slots:
             env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
             env.insert(u"XDG_CONFIG_HOME"_s, m_dir.filePath(u"config"_s));
             p.setProcessEnvironment(env);
+            // --verbose: the window says where each file opened.
             p.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                    QStringList {u"--screenshot"_s, png, u"--after"_s, u"0.5"_s} + files);
+                    QStringList {u"--verbose"_s, u"--screenshot"_s, png, u"--after"_s, u"0.5"_s} + files);
             p.waitForFinished(60000);
             return std::pair {p.exitCode(), QString::fromUtf8(p.readAllStandardError())};
         };
-        const auto [exit, err] = run({m_config, m_pipeline, m_csvA, m_csvB, m_experiment});
+        const auto openedOn = [](const QString& err, const QString& path, const QString& page) {
+            return err.contains(u"opened %1 on the %2 page"_s.arg(path, page));
+        };
+        const auto [exit, err]
+            = run({m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_bag, m_experiment});
         QVERIFY2(exit == 0 && QFile::exists(png), qPrintable(err));
-        QVERIFY2(!err.contains(u"vehicle.yaml"_s) && !err.contains(u"a.csv"_s), qPrintable(err));
+        QVERIFY2(openedOn(err, m_config, u"Map"_s), qPrintable(err));
+        QVERIFY2(openedOn(err, m_otherConfig, u"Links"_s), qPrintable(err));
+        QVERIFY2(openedOn(err, m_pipeline, u"Measure"_s), qPrintable(err));
+        for (const QString& measurement : {m_csvA, m_csvB, m_bag})
+            QVERIFY2(openedOn(err, measurement, u"Reports"_s), qPrintable(err));
+        QVERIFY2(openedOn(err, m_experiment, u"Experiments"_s), qPrintable(err));
+        // One measurement of each kind alone: the Measure page.
+        for (const QString& measurement : {m_csvA, m_bag}) {
+            const auto [oneExit, oneErr] = run({measurement});
+            QCOMPARE(oneExit, 0);
+            QVERIFY2(openedOn(oneErr, measurement, u"Measure"_s), qPrintable(oneErr));
+        }
         // One that does not open among them: said on stderr; a scripted run (a screenshot) ends with 2.
         const auto [badExit, badErr] = run({m_config, m_dir.filePath(u"gone.csv"_s), m_csvA});
         QCOMPARE(badExit, 2);
         QVERIFY2(badErr.contains(u"gone.csv: no such file"_s), qPrintable(badErr));
-        QVERIFY(!badErr.contains(u"vehicle.yaml"_s));
+        // The others open all the same, and only the missing one is said.
+        QVERIFY2(openedOn(badErr, m_config, u"Map"_s), qPrintable(badErr));
+        QVERIFY2(openedOn(badErr, m_csvA, u"Measure"_s), qPrintable(badErr));
+        QVERIFY(!badErr.contains(u"vehicle.yaml:"_s) && !badErr.contains(u"a.csv:"_s));
     }
 };
 

@@ -8,6 +8,7 @@
 #include "report/report.h"
 #include "report/runloader.h"
 #include "ros/rosstampsource.h"
+#include "stampbag.h"
 #include "syntheticrun.h"
 #include "wire/bagheader.h"
 #include "wire/stampcodec.h"
@@ -21,7 +22,6 @@
 #include <QTest>
 #include <random>
 #include <rosbag/bag.h>
-#include <topic_tools/shape_shifter.h>
 
 using namespace Qt::StringLiterals;
 
@@ -65,45 +65,6 @@ QByteArray sha(const QString& path)
     return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
 }
 
-topic_tools::ShapeShifter shaped(const char* md5, const char* type, const std::string& definition,
-                                 const QByteArray& bytes)
-{
-    topic_tools::ShapeShifter s;
-    s.morph(md5, type, definition, "");
-    std::vector<uint8_t> buffer(bytes.begin(), bytes.end());
-    ros::serialization::IStream in(buffer.data(), uint32_t(buffer.size()));
-    s.read(in);
-    return s;
-}
-
-/// A bag with the suite's stamps of `synthetic`, a latency topic and an unrelated topic.
-void writeStampBag(const QString& path, const SyntheticRun& synthetic)
-{
-    rosbag::Bag bag(path.toStdString(), rosbag::bagmode::Write);
-    const std::string def = StampCodec::definition().toStdString();
-    for (const auto& t : synthetic.samples) {
-        for (int i = 0; i < synthetic.topics.size(); ++i) {
-            StampCodec::Decoded d;
-            d.sampleNs = t.front();
-            d.timeNs = t[std::size_t(i)];
-            const qint64 at = t[std::size_t(i)] + 500'000;
-            bag.write(
-                synthetic.topics[i].toStdString(),
-                ros::Time(uint32_t(at / 1'000'000'000), uint32_t(at % 1'000'000'000)),
-                shaped(StampCodec::md5(), StampCodec::typeName(), def, StampCodec::encodeTimeStamped(d)));
-        }
-        double seconds = 0.0195;
-        QByteArray f64(8, Qt::Uninitialized);
-        std::memcpy(f64.data(), &seconds, 8);
-        const qint64 at = t.front();
-        bag.write("/mqtt_client/latencies/points",
-                  ros::Time(uint32_t(at / 1'000'000'000), uint32_t(at % 1'000'000'000)),
-                  shaped(RosStampSource::float64Md5(), "std_msgs/Float64", "float64 data\n", f64));
-        bag.write("/chatter", ros::Time(uint32_t(at / 1'000'000'000), 0),
-                  shaped("992ce8a1687cec8c8bd883ec73ca41d1", "std_msgs/String", "string data\n",
-                         QByteArray("\x02\0\0\0hi", 6)));
-    }
-}
 } // namespace
 
 class TestRunFiles : public QObject
@@ -205,7 +166,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(u"stamps.bag"_s);
         const SyntheticRun synthetic = SyntheticRun::paper(50, 0, 4);
-        writeStampBag(path, synthetic);
+        StampBag::write(path, synthetic);
         const QByteArray before = sha(path);
         QVERIFY(BagHeader::looksLikeBag(path));
         QCOMPARE(RunLoader::kindOf(path), RunLoader::Kind::Bag);
@@ -228,8 +189,8 @@ private slots:
         {
             rosbag::Bag bag(other.toStdString(), rosbag::bagmode::Write);
             bag.write("/chatter", ros::Time(1, 0),
-                      shaped("992ce8a1687cec8c8bd883ec73ca41d1", "std_msgs/String", "string data\n",
-                             QByteArray("\x02\0\0\0hi", 6)));
+                      StampBag::shaped("992ce8a1687cec8c8bd883ec73ca41d1", "std_msgs/String", "string data\n",
+                                       QByteArray("\x02\0\0\0hi", 6)));
         }
         QVERIFY(!RunLoader::load(other, {}, &error));
         QVERIFY2(error.contains(u"no benchmarking_suite/TimeStamped topics"_s)
@@ -303,7 +264,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(u"good.bag"_s);
-        writeStampBag(path, SyntheticRun::paper(20, 0, 4));
+        StampBag::write(path, SyntheticRun::paper(20, 0, 4));
         QFile good(path);
         QVERIFY(good.open(QIODevice::ReadOnly));
         const QByteArray original = good.readAll();
