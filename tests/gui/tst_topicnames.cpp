@@ -9,6 +9,7 @@
 #include "latency/pipeline.h"
 #include "latency/pipelinemodel.h"
 #include "mqtt/mqttprofile.h"
+#include "namecheck.h"
 #include "ros/rostopicmodel.h"
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
@@ -44,33 +45,10 @@ private:
     DemoLab m_lab;
     std::unique_ptr<MainWindow> m_window;
 
-    /// Every row's name in `column` of `view` is shown as a text of its own, and fits.
     static void checkNames(QAbstractItemView* view, int column, int minimumRows)
     {
-        auto* delegate = qobject_cast<NameDelegate*>(view->itemDelegateForColumn(column));
-        QVERIFY2(delegate, qPrintable(view->objectName()));
-        const QAbstractItemModel* model = view->model();
-        QVERIFY2(model->rowCount() >= minimumRows,
-                 qPrintable(u"%1: %2 rows"_s.arg(view->objectName()).arg(model->rowCount())));
-        auto* table = qobject_cast<QTableView*>(view);
-        const int width = table ? table->columnWidth(column) : view->viewport()->width();
-        QHash<QString, QString> nameOf;
-        for (int r = 0; r < model->rowCount(); ++r) {
-            const QModelIndex index = model->index(r, column);
-            const QString name = index.data().toString();
-            const QString shown = delegate->displayedText(index);
-            QVERIFY2(view->fontMetrics().horizontalAdvance(shown) <= width,
-                     qPrintable(u"%1 wider than %2 px"_s.arg(shown).arg(width)));
-            // The last segment, which tells names apart most often, is never cut.
-            const QString last = name.section(u'/', -1);
-            QVERIFY2(shown.endsWith(last),
-                     qPrintable(u"%1: %2 shows as %3"_s.arg(view->objectName(), name, shown)));
-            const QString other = nameOf.value(shown, name);
-            QVERIFY2(
-                other == name,
-                qPrintable(u"%1: %2 and %3 both show as %4"_s.arg(view->objectName(), name, other, shown)));
-            nameOf.insert(shown, name);
-        }
+        const QString problem = namesShownProblem(view, column, minimumRows);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
     /// The names' columns fit the view: no scrolling sideways to read a row.

@@ -2,6 +2,7 @@
 #include "namedelegate.h"
 
 #include <algorithm>
+#include <optional>
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QHelpEvent>
@@ -98,13 +99,27 @@ int NameDelegate::tailWidth() const
     const QAbstractItemModel* model = m_view->model();
     if (!model)
         return 0;
-    const QFontMetrics fm = m_view->fontMetrics();
+    // In the row's own font: bridged topics are bold, and wider.
+    const QFontMetrics plain = m_view->fontMetrics();
+    std::optional<QFont> lastFont;
+    std::optional<QFontMetrics> lastMetrics;
     int widest = 0;
     for (int r = 0, rows = model->rowCount(); r < rows; ++r) {
-        const QString name = model->index(r, m_column).data(Qt::DisplayRole).toString();
+        const QModelIndex index = model->index(r, m_column);
+        const QString name = index.data(Qt::DisplayRole).toString();
         const qsizetype slash = name.lastIndexOf(u'/');
         const QString tail = slash < 0 ? name : QStringLiteral("…") + name.mid(slash);
-        widest = std::max(widest, fm.horizontalAdvance(tail));
+        const QVariant font = index.data(Qt::FontRole);
+        const QFontMetrics* fm = &plain;
+        if (font.isValid()) {
+            const QFont f = qvariant_cast<QFont>(font).resolve(m_view->font());
+            if (lastFont != f) {
+                lastFont = f;
+                lastMetrics.emplace(f);
+            }
+            fm = &*lastMetrics;
+        }
+        widest = std::max(widest, fm->horizontalAdvance(tail));
     }
     if (widest == 0)
         return 0;
