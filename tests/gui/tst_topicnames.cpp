@@ -26,8 +26,11 @@
 #include "widgets/map/mappinginspector.h"
 #include "widgets/measure/measurepage.h"
 
+#include <QChart>
 #include <QHash>
+#include <QLegend>
 #include <QLineEdit>
+#include <QLineSeries>
 #include <QListView>
 #include <QScrollBar>
 #include <QSet>
@@ -191,6 +194,22 @@ private slots:
         }
         QVERIFY(distinct.size() > 5); // measured, not a constant
         QCOMPARE(plotter->series()[0].errors, 0u);
+        // With the other bridge's latency beside it, the legend tells the two apart and names the
+        // field, within the chart's width.
+        const QString other = u"/mqtt_interface_cloud/latencies/cloud/pointcloud"_s;
+        QVERIFY(detail->plotter()->add({PlotField::Source::Ros, other, {u"data"_s}}));
+        FieldPlotChart* chart = detail->plotChart();
+        detail->findChild<QTabWidget*>()->setCurrentWidget(chart->parentWidget());
+        QTRY_COMPARE(chart->lines().size(), 2);
+        QTRY_VERIFY(chart->lines()[1]->count() > 0);
+        const QString first = chart->lines()[0]->name();
+        const QString second = chart->lines()[1]->name();
+        QVERIFY2(first != second && first.endsWith(u"/object_list: data"_s)
+                     && second.endsWith(u"/pointcloud: data"_s),
+                 qPrintable(first + u" | "_s + second));
+        const QFontMetrics legend(chart->chart()->legend()->font());
+        QVERIFY2(legend.horizontalAdvance(first) + legend.horizontalAdvance(second) + 80 <= chart->width(),
+                 qPrintable(u"%1 and %2 in %3 px"_s.arg(first, second).arg(chart->width())));
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
             detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
             QTest::qWait(500);

@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: MIT
 #include "fieldplotchart.h"
 
+#include "base/nameelider.h"
 #include "widgets/common/chartstyle.h"
+#include "wire/fieldpath.h"
 
 #include <algorithm>
 #include <limits>
 #include <QChart>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QLegend>
 #include <QLineSeries>
 #include <QValueAxis>
+
+using namespace Qt::StringLiterals;
 
 namespace {
 // Apart on light and dark backgrounds alike (the categorical palette of matplotlib).
@@ -57,9 +62,12 @@ void FieldPlotChart::setSeries(const QList<PlotSeries>& series)
     double right = std::numeric_limits<double>::lowest();
     double bottom = std::numeric_limits<double>::max();
     double top = std::numeric_limits<double>::lowest();
+    m_fields.clear();
+    for (const PlotSeries& s : series)
+        m_fields << s.field;
+    relabel();
     for (int i = 0; i < series.size(); ++i) {
         QLineSeries* line = m_lines[i];
-        line->setName(series[i].label);
         line->setColor(kColours[i % std::size(kColours)]);
         line->replace(series[i].points);
         for (const QPointF& p : series[i].points) {
@@ -83,4 +91,44 @@ void FieldPlotChart::changeEvent(QEvent* event)
     QChartView::changeEvent(event);
     if (event->type() == QEvent::PaletteChange)
         ChartStyle::apply(chart(), palette());
+}
+
+void FieldPlotChart::resizeEvent(QResizeEvent* event)
+{
+    QChartView::resizeEvent(event);
+    relabel(); // the entries' share of the width changed
+}
+
+void FieldPlotChart::relabel()
+{
+    const QStringList names = legendNames(m_fields);
+    for (int i = 0; i < m_lines.size() && i < names.size(); ++i)
+        if (m_lines[i]->name() != names[i])
+            m_lines[i]->setName(names[i]);
+}
+
+QStringList FieldPlotChart::legendNames(const QList<PlotField>& fields) const
+{
+    // The legend shares the chart's width between its entries and cuts each at its end, which is
+    // where the field is: topics give up their namespaces first (NameElider), the field stays.
+    QStringList topics;
+    for (const PlotField& f : fields)
+        topics << f.topic;
+    NameElider elider;
+    elider.setNames(topics);
+    const QFontMetrics fm(chart()->legend()->font());
+    const int markers = 40; // the colour marker and the spacing of an entry
+    const int room = std::max(60, width() / std::max<int>(1, int(fields.size())) - markers);
+    QStringList names;
+    for (const PlotField& f : fields) {
+        const QString field = u": "_s + FieldPath::text(f.path);
+        QString name;
+        for (const QString& form : elider.forms(f.topic)) {
+            name = form + field;
+            if (fm.horizontalAdvance(name) <= room)
+                break;
+        }
+        names << name;
+    }
+    return names;
 }

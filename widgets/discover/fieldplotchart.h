@@ -21,8 +21,14 @@ public:
 
 protected:
     void changeEvent(QEvent* event) override; ///< a new palette recolours it
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
+    /// Each field's legend entry: its topic shortened to fit the entry's share, its field whole.
+    QStringList legendNames(const QList<PlotField>& fields) const;
+    void relabel();
+
+    QList<PlotField> m_fields;
     QList<QLineSeries*> m_lines;
     QValueAxis* m_x;
     QValueAxis* m_y;
