@@ -8,6 +8,7 @@
 #include "wire/stampcodec.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <QDateTime>
 #include <QJsonArray>
@@ -43,9 +44,12 @@ struct Side
     std::deque<std::pair<qint64, quint64>> cumulative; ///< (time, messages) once a second, for loss
     double rateAtLastHz = 0; ///< the rate while it last published: its expected period
     qint64 resumedNs = 0; ///< the first message after a silence (or ever)
+    qint64 firstNs = 0; ///< the first message ever (0: none yet)
 
     void add(qint64 ns, int size)
     {
+        if (firstNs == 0)
+            firstNs = ns;
         if (f.lastNs == 0 || ns - f.lastNs > std::max<qint64>(3 * expectedPeriodNs(), 1'000'000'000LL))
             resumedNs = ns;
         ++f.messages;
@@ -317,6 +321,9 @@ struct LinkMonitor::Track
     Side dst;
     SeqTracker seq; ///< at the destination
     SeqTracker srcSeq; ///< at the source: gaps the publisher made are not the bridge's losses
+    /// What the source sent before the destination's first message, which no loss can be told
+    /// of (the destination's subscription may not have been up yet); counted once it arrives.
+    std::optional<quint64> beforeDestination;
     bool dstHeader = false; ///< the destination's messages start with a Header
     bool srcHeader = false;
     std::optional<bool> announcedStamped;
@@ -716,20 +723,31 @@ void LinkMonitor::refreshStatistics(qint64 nowNs)
         // Loss: what the source sent in a 10 s window that ended a second ago (messages on their
         // way are not lost) against what arrived in as long a window. The edges of two windows can cut one
         // message differently: one missing message is not counted, so a loss shown is a loss.
+        // Before the destination's first message nothing is judged: at a start the monitor's
+        // subscription at the source is up before that at the destination (a ROS subscriber's
+        // connection takes a while), and the first messages would look lost.
+        if (!t.beforeDestination && t.dst.firstNs > 0) {
+            const quint64 since = t.src.countIn(t.dst.firstNs - 1, std::numeric_limits<qint64>::max());
+            const quint64 before = t.src.f.messages - std::min(since, t.src.f.messages);
+            t.beforeDestination = before > 0 ? before - 1 : 0; // the one that arrived was sent before
+        }
+        const quint64 unjudged = t.beforeDestination.value_or(0);
         const quint64 srcThen = t.src.messagesAt(nowNs - kLossLagNs);
-        const quint64 sent = t.src.countIn(nowNs - kLossLagNs - kLossWindowNs, nowNs - kLossLagNs);
         // The destination's window is the source's, shifted by the typical latency where stamps tell it.
         const double p50 = t.figures.latencyP50Ms;
         const qint64 shift = std::isfinite(p50) ? std::clamp<qint64>(qint64(p50 * 1e6), 0, kLossLagNs) : 0;
-        const quint64 got
-            = t.dst.countIn(nowNs - kLossLagNs - kLossWindowNs + shift, nowNs - kLossLagNs + shift);
+        qint64 from = nowNs - kLossLagNs - kLossWindowNs;
+        if (t.dst.firstNs > 0)
+            from = std::max(from, t.dst.firstNs - 1 - shift);
+        const quint64 sent = t.src.countIn(from, nowNs - kLossLagNs);
+        const quint64 got = t.dst.countIn(from + shift, nowNs - kLossLagNs + shift);
         f.lossPercent
             = sent >= kMinLossSample && sent > got + 1 ? 100.0 * double(sent - got - 1) / double(sent) : 0;
         // Lost for sure: what the source sent a second ago and never arrived, or, once the source
         // pauses, everything it sent that never arrived; Header.seq gaps are losses as well.
         const bool paused = t.src.f.lastNs > 0
             && nowNs - t.src.f.lastNs > std::max<qint64>(3 * t.src.expectedPeriodNs(), kSecond);
-        const quint64 sentBy = paused ? t.src.f.messages : srcThen;
+        const quint64 sentBy = (paused ? t.src.f.messages : srcThen) - std::min(unjudged, srcThen);
         if (sentBy > t.dst.f.messages)
             t.lostMax = std::max(t.lostMax, sentBy - t.dst.f.messages);
         if (t.seq.gaps > t.srcSeq.gaps) // gaps the bridge made: lost for sure

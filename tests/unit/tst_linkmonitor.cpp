@@ -159,6 +159,41 @@ private slots:
         QVERIFY(m.reasons(m.indexOf(in.id())).contains(u"loss"_s));
     }
 
+    // At a start the source's subscription is up before the destination's: what the source sent
+    // before the destination's first message is no loss; a loss after it is.
+    void aDestinationSubscribedLateLosesNothing()
+    {
+        LinkMonitor m;
+        const LinkDef in = link(Direction::Mqtt2Ros, u"/cloud/pointcloud"_s, u"bench/pointcloud"_s);
+        m.setLinks({in}, kStart);
+        Clock clock {m};
+        for (int i = 0; i < 40; ++i) { // 4 s at 10 Hz; the destination hears from the 6th on
+            m.addMqtt({mqtt(u"bench/pointcloud"_s, "x", clock.now)});
+            if (i >= 5)
+                m.addRos({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
+            clock.advance(100 * kMs);
+        }
+        LinkFigures f = m.figures(m.indexOf(in.id()));
+        QCOMPARE(f.source.messages, quint64(40));
+        QCOMPARE(f.destination.messages, quint64(35));
+        QCOMPARE(f.lossPercent, 0.0);
+        QCOMPARE(m.level(m.indexOf(in.id())), LinkLevel::Ok);
+        // The source pauses: everything it sent is judged, and the first five are not lost.
+        clock.advance(3000 * kMs);
+        QCOMPARE(m.figures(m.indexOf(in.id())).lost, quint64(0));
+        // It resumes, and three messages in a row go missing: lost, for sure.
+        for (int i = 0; i < 40; ++i) {
+            m.addMqtt({mqtt(u"bench/pointcloud"_s, "x", clock.now)});
+            if (i < 10 || i > 12)
+                m.addRos({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
+            clock.advance(100 * kMs);
+        }
+        f = m.figures(m.indexOf(in.id()));
+        QVERIFY2(f.lossPercent > 1 && f.lossPercent < 4, qPrintable(QString::number(f.lossPercent)));
+        clock.advance(3000 * kMs);
+        QCOMPARE(m.figures(m.indexOf(in.id())).lost, quint64(3));
+    }
+
     void stallAndSourceStoppedAreTold()
     {
         LinkMonitor m;
