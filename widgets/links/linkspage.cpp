@@ -10,11 +10,13 @@
 #include "widgets/common/viewsetup.h"
 #include "widgets/links/ruleseditor.h"
 
+#include <algorithm>
 #include <QApplication>
 #include <QCheckBox>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -215,8 +217,12 @@ QWidget* LinksPage::createLinkTable()
                                              {LinkModel::P50Column, 60},
                                              {LinkModel::P99Column, 60},
                                              {LinkModel::HistoryColumn, 90}};
-    for (const auto& [column, width] : widths)
-        m_links->setColumnWidth(column, width);
+    // At least as wide as the header's text ("Source Hz" is wider than its figures).
+    const QFontMetrics headerFont = m_links->horizontalHeader()->fontMetrics();
+    for (const auto& [column, width] : widths) {
+        const QString title = m_links->model()->headerData(column, Qt::Horizontal).toString();
+        m_links->setColumnWidth(column, std::max(width, headerFont.horizontalAdvance(title) + 16));
+    }
     m_links->setColumnHidden(LinkModel::LastEventColumn, true); // the event log says it; the tooltip too
     NameDelegate::install(m_links, LinkModel::SourceColumn);
     NameDelegate::install(m_links, LinkModel::DestinationColumn);
