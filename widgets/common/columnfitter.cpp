@@ -40,7 +40,9 @@ ColumnFitter::ColumnFitter(QTableView* view)
             m_userSized = true;
     });
     connect(header, &QHeaderView::sectionHandleDoubleClicked, this, [this] { m_userSized = true; });
-    view->viewport()->installEventFilter(this);
+    QWidget* viewport = view->viewport();
+    m_viewport = viewport;
+    viewport->installEventFilter(this);
 }
 
 void ColumnFitter::fit(int column, double share)
@@ -57,7 +59,9 @@ void ColumnFitter::fill(const QList<int>& columns)
 
 bool ColumnFitter::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched == m_view->viewport() && event->type() == QEvent::Resize)
+    // Compared with the viewport kept at construction: while the view is destroyed its viewport
+    // still gets events, and the view is no longer one to ask (UBSan: a member call on a QWidget).
+    if (watched == m_viewport && event->type() == QEvent::Resize)
         m_timer.start();
     return QObject::eventFilter(watched, event);
 }

@@ -33,6 +33,7 @@ private:
     bool manages(int column) const;
 
     QTableView* m_view;
+    const QObject* m_viewport = nullptr;
     QList<std::pair<int, double>> m_fits;
     QList<int> m_fills;
     QTimer m_timer;
