@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <QEvent>
 #include <QGuiApplication>
+#include <QHash>
 #include <QHeaderView>
 #include <QScopedValueRollback>
 #include <QTableView>
@@ -89,12 +90,18 @@ void ColumnFitter::apply()
         return !m_view->isColumnHidden(column)
             && header->sectionResizeMode(column) == QHeaderView::Interactive;
     };
+    // Each floor once: a name column's walks every row.
+    QHash<int, int> floors;
+    const auto floor = [&](int column) {
+        auto it = floors.constFind(column);
+        return it != floors.constEnd() ? *it : *floors.insert(column, floorOf(column));
+    };
     QList<int> fills;
     int reserved = 0; // the fill columns' floors: names before figures
     for (int c : std::as_const(m_fills))
         if (usable(c)) {
             fills << c;
-            reserved += floorOf(c);
+            reserved += floor(c);
         }
     int left = room - reserved;
     for (int c = 0; c < header->count(); ++c)
@@ -104,7 +111,7 @@ void ColumnFitter::apply()
     for (const auto& [column, share] : std::as_const(m_fits)) {
         if (!usable(column))
             continue;
-        const int least = floorOf(column);
+        const int least = floor(column);
         const int most
             = std::max(least, fills.isEmpty() ? int(room * share) : std::min(int(room * share), left));
         const int width
@@ -116,5 +123,5 @@ void ColumnFitter::apply()
         return;
     const int each = (left + reserved) / int(fills.size());
     for (int c : fills)
-        m_view->setColumnWidth(c, std::max(floorOf(c), each));
+        m_view->setColumnWidth(c, std::max(floor(c), each));
 }

@@ -62,10 +62,13 @@ void FieldPlotChart::setSeries(const QList<PlotSeries>& series)
     double right = std::numeric_limits<double>::lowest();
     double bottom = std::numeric_limits<double>::max();
     double top = std::numeric_limits<double>::lowest();
-    m_fields.clear();
+    QList<PlotField> fields;
     for (const PlotSeries& s : series)
-        m_fields << s.field;
-    relabel();
+        fields << s.field;
+    if (fields != m_fields) { // the legend is made again for new fields, not for new points
+        m_fields = fields;
+        relabel();
+    }
     for (int i = 0; i < series.size(); ++i) {
         QLineSeries* line = m_lines[i];
         line->setColor(kColours[i % std::size(kColours)]);
