@@ -27,6 +27,7 @@
 #include "widgets/measure/measurepage.h"
 
 #include <QChart>
+#include <QElapsedTimer>
 #include <QHash>
 #include <QLegend>
 #include <QLineEdit>
@@ -34,6 +35,7 @@
 #include <QListView>
 #include <QScrollBar>
 #include <QSet>
+#include <QStandardItemModel>
 #include <QTableView>
 #include <QTabWidget>
 #include <QTest>
@@ -215,6 +217,25 @@ private slots:
             QTest::qWait(500);
             w->grab().save(dir + u"/field-plot.png"_s);
         }
+    }
+
+    // Names from a master or a broker are hostile: 2,000 topics whose last segment is 60 KB are
+    // measured with bounded work, and the column floor stays a screen wide, not kilometres.
+    void hostileNamesAreMeasuredBoundedly()
+    {
+        QStandardItemModel model(2000, 1);
+        const QString huge = u"/ns/"_s + QString(60000, u'x');
+        for (int r = 0; r < model.rowCount(); ++r)
+            model.setItem(r, 0, new QStandardItem(huge + QString::number(r)));
+        QTableView view;
+        view.setModel(&model);
+        NameDelegate* delegate = NameDelegate::install(&view, 0);
+        QElapsedTimer timer;
+        timer.start();
+        const int floor = delegate->tailWidth();
+        QVERIFY2(timer.elapsed() < 2000, qPrintable(QString::number(timer.elapsed())));
+        QVERIFY2(floor > 0 && floor < view.fontMetrics().horizontalAdvance(QString(500, u'x')),
+                 qPrintable(QString::number(floor)));
     }
 
     void cleanupTestCase() { m_window.reset(); }

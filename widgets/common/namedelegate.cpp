@@ -9,6 +9,17 @@
 #include <QTableView>
 #include <QToolTip>
 
+namespace {
+/// Characters of a last segment measured at most (wider than any screen at any font).
+constexpr qsizetype kTailCharacters = 400;
+
+/// QCommonStyle's margin between an item's text rectangle and its text, on each side.
+int textMargin(const QStyle* style, const QWidget* widget)
+{
+    return style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, widget) + 1;
+}
+} // namespace
+
 NameDelegate::NameDelegate(QAbstractItemView* view, int column)
     : QStyledItemDelegate(view)
     , m_view(view)
@@ -65,7 +76,7 @@ QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
         return text;
     const QStyle* style = option.widget ? option.widget->style() : QApplication::style();
     // The room QCommonStyle gives the text: the text rectangle less the focus frame's margins.
-    const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, option.widget) + 1;
+    const int margin = textMargin(style, option.widget);
     const int room
         = style->subElementRect(QStyle::SE_ItemViewItemText, &option, option.widget).width() - 2 * margin;
     const QFontMetrics& fm = option.fontMetrics;
@@ -108,7 +119,8 @@ int NameDelegate::tailWidth() const
         const QModelIndex index = model->index(r, m_column);
         const QString name = index.data(Qt::DisplayRole).toString();
         const qsizetype slash = name.lastIndexOf(u'/');
-        const QString tail = slash < 0 ? name : QStringLiteral("…") + name.mid(slash);
+        // Bounded work per row: a hostile name's tail is measured no further than a screen.
+        const QString tail = (slash < 0 ? name : QStringLiteral("…") + name.mid(slash)).left(kTailCharacters);
         const QVariant font = index.data(Qt::FontRole);
         const QFontMetrics* fm = &plain;
         if (font.isValid()) {
@@ -124,8 +136,7 @@ int NameDelegate::tailWidth() const
     if (widest == 0)
         return 0;
     // The style's text margin around the text rectangle, and shortened()'s own inside it.
-    const int margin = m_view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_view) + 1;
-    return widest + 4 * margin + 2;
+    return widest + 4 * textMargin(m_view->style(), m_view) + 2;
 }
 
 void NameDelegate::paint(QPainter* painter, const QStyleOptionViewItem& option,
