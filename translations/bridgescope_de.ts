@@ -1406,6 +1406,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>No ROS 2 participant answered on domain %1 and the MQTT broker (%2) could not be reached.</source>
         <translation>Auf Domäne %1 hat kein ROS-2-Teilnehmer geantwortet, und der MQTT-Broker (%2) war nicht erreichbar.</translation>
     </message>
+    <message>
+        <source>ROS 2 discovery restarted: the DDS process %1</source>
+        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverPage</name>
@@ -5967,14 +5971,7 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
-    <name>Ros2Options</name>
-    <message>
-        <source>ROS_DOMAIN_ID is &quot;%1&quot;, not a domain from 0 to %2</source>
-        <translation>ROS_DOMAIN_ID ist „%1“, keine Domäne von 0 bis %2</translation>
-    </message>
-</context>
-<context>
-    <name>Ros2Participant</name>
+    <name>Ros2Engine</name>
     <message>
         <source>domain %1 is out of range: ROS 2 domains are 0 to %2</source>
         <translation>Domäne %1 liegt außerhalb: ROS-2-Domänen sind 0 bis %2</translation>
@@ -5990,6 +5987,74 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>Fast DDS could not subscribe to %1 as %2</source>
         <translation>Fast DDS konnte %1 nicht als %2 abonnieren</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Options</name>
+    <message>
+        <source>ROS_DOMAIN_ID is &quot;%1&quot;, not a domain from 0 to %2</source>
+        <translation>ROS_DOMAIN_ID ist „%1“, keine Domäne von 0 bis %2</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Participant</name>
+    <message>
+        <source>domain %1 is out of range: ROS 2 domains are 0 to %2</source>
+        <translation>Domäne %1 liegt außerhalb: ROS-2-Domänen sind 0 bis %2</translation>
+    </message>
+    <message>
+        <source>%1 has no publisher or subscriber yet, so its type is not known</source>
+        <translation>%1 hat noch keinen Publisher oder Subscriber, sein Typ ist also unbekannt</translation>
+    </message>
+    <message numerus="yes">
+        <source>ROS 2 discovery restarted %n time(s) (last: %1)</source>
+        <translation>
+            <numerusform>ROS-2-Erkennung %n-mal neu gestartet (zuletzt: %1)</numerusform>
+            <numerusform>ROS-2-Erkennung %n-mal neu gestartet (zuletzt: %1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>cannot see ROS 2: the helper program bridgescope-dds is not installed</source>
+        <translation>ROS 2 nicht sichtbar: das Hilfsprogramm bridgescope-dds ist nicht installiert</translation>
+    </message>
+    <message>
+        <source>cannot start %1: %2</source>
+        <translation>%1 lässt sich nicht starten: %2</translation>
+    </message>
+    <message>
+        <source>sent a frame of kind %1 that does not read</source>
+        <translation>schickte einen unlesbaren Rahmen der Art %1</translation>
+    </message>
+    <message>
+        <source>sent %1</source>
+        <translation>schickte %1</translation>
+    </message>
+    <message>
+        <source>sent nothing for %1 s</source>
+        <translation>schickte %1 s lang nichts</translation>
+    </message>
+    <message>
+        <source>did not start: %1</source>
+        <translation>startete nicht: %1</translation>
+    </message>
+    <message>
+        <source>crashed (signal %1)</source>
+        <translation>stürzte ab (Signal %1)</translation>
+    </message>
+    <message>
+        <source>ended with exit code %1</source>
+        <translation>endete mit Exit-Code %1</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2Protocol</name>
+    <message>
+        <source>a frame of %1 bytes (at most %2)</source>
+        <translation>einen Rahmen von %1 Bytes (höchstens %2)</translation>
+    </message>
+    <message>
+        <source>a frame of unknown kind %1</source>
+        <translation>einen Rahmen unbekannter Art %1</translation>
     </message>
 </context>
 <context>
@@ -7038,6 +7103,10 @@ Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient oder die Messlauf
     <message>
         <source>watch needs a bridge config, or --broker to watch the links announced there; see bridgescope watch --help</source>
         <translation>watch braucht eine Bridge-Konfiguration oder --broker, um die dort angekündigten Verbindungen zu beobachten; siehe bridgescope watch --help</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery restarted: the DDS process %1</source>
+        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
     </message>
 </context>
 <context>

@@ -97,6 +97,10 @@ public:
         ros2.insert(u"nodes"_s, nodes);
         if (const quint64 bad = participant.badDiscoveryInfo())
             ros2.insert(u"unreadable_discovery_info"_s, qint64(bad));
+        if (const quint64 restarts = participant.restarts()) {
+            ros2.insert(u"discovery_restarts"_s, qint64(restarts));
+            ros2.insert(u"last_restart_reason"_s, participant.lastRestartReason());
+        }
         return ros2;
     }
 
@@ -116,6 +120,8 @@ public:
             out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type())
                     .arg(t.publishers.size())
                     .arg(t.subscribers.size()));
+        if (participant.restarts() > 0)
+            out(u"  "_s + participant.restartText());
     }
 
     static QJsonObject mqttJson(const MqttConnection& connection, const MqttTopicTree& tree,
@@ -256,6 +262,10 @@ void listen(const DiscoverRequest& request, Heard* heard)
     }
     if (request.ros2 && !heard->ros2.start(request.ros2Options, &heard->ros2Error))
         heard->ros2Error = heard->ros2Error.isEmpty() ? Discover::tr("no participant") : heard->ros2Error;
+    // said as it happens, not only at the end: a restart of the DDS process is news
+    QObject::connect(&heard->ros2, &Ros2Participant::restarted, [](const QString& why) {
+        err(Discover::tr("ROS 2 discovery restarted: the DDS process %1").arg(why));
+    });
     QObject::connect(&heard->connection, &MqttConnection::stateChanged, [heard](MqttConnection::State s) {
         heard->connected = heard->connected || s == MqttConnection::State::Connected;
     });
@@ -268,6 +278,8 @@ void listen(const DiscoverRequest& request, Heard* heard)
                        [] { QCoreApplication::exit(ExitOk); });
     QCoreApplication::exec();
     heard->tree.apply(heard->connection.takeMessages());
+    if (heard->ros2Error.isEmpty())
+        heard->ros2Error = heard->ros2.lastError(); // Fast DDS could not make the participant
 }
 
 /// Prints what was heard as text or JSON; fails when neither side answered.

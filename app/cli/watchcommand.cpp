@@ -232,6 +232,10 @@ int runWatch(const WatchRequest& request)
         err(why);
         return ExitFailed;
     }
+    // the DDS process ended (a hostile datagram, a runaway): said as it happens, and started again
+    QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
+        err(Watch::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
+    });
     WatchSession watch(&live);
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "bagreaderprocess.h"
 
+#include "base/helperprogram.h"
 #include "base/logging.h"
 #include "wire/bagheader.h"
 
@@ -18,21 +19,11 @@ constexpr int kStallMs = 120'000;
 
 QString BagReaderProcess::program()
 {
-    const QString name = u"bridgescope-bagreader"_s;
-    QStringList candidates;
-    if (qEnvironmentVariableIsSet("BRIDGESCOPE_BAGREADER"))
-        candidates << qEnvironmentVariable("BRIDGESCOPE_BAGREADER");
-    if (QCoreApplication::instance()) {
-        const QString dir = QCoreApplication::applicationDirPath();
-        candidates << dir + u'/' + name << dir + u"/../libexec/bridgescope/"_s + name;
-    }
 #ifdef BRIDGESCOPE_BAGREADER_BUILD_PATH
-    candidates << QStringLiteral(BRIDGESCOPE_BAGREADER_BUILD_PATH);
+    return findHelperProgram(u"bridgescope-bagreader"_s, "BRIDGESCOPE_BAGREADER", QStringLiteral(BRIDGESCOPE_BAGREADER_BUILD_PATH));
+#else
+    return findHelperProgram(u"bridgescope-bagreader"_s, "BRIDGESCOPE_BAGREADER");
 #endif
-    for (const QString& c : std::as_const(candidates))
-        if (QFileInfo(c).isExecutable() && QFileInfo(c).isFile())
-            return c;
-    return {};
 }
 
 std::optional<RunData> BagReaderProcess::read(const QString& path, QString* error, const Progress& progress)

@@ -1,64 +1,37 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/topicfigures.h"
+#include "base/newestqueue.h"
 #include "ros2/ros2graph.h"
+#include "ros2/ros2protocol.h"
+#include "ros2/ros2types.h"
 
-#include <algorithm>
 #include <memory>
-#include <QByteArray>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <QTimer>
 #include <vector>
 
-/// Figures of one monitored ROS 2 topic, as RosMonitorStats are for ROS 1.
-struct Ros2MonitorStats : TopicFigures
-{
-    int matchedPublishers = 0;
-};
+class QProcess;
+template<typename T> class EventBuffer;
 
-/// One sample as the monitor saw it, for consumers that need every sample (Watch): the first bytes
-/// of the message after its 4-byte encapsulation header (a Header's stamp, a std_msgs/Float64).
-struct Ros2Arrival
-{
-    static constexpr int kHeadBytes = 16;
-    QString topic;
-    qint64 receivedNs = 0; ///< wall clock
-    int size = 0; ///< CDR bytes, header included
-    QByteArray head; ///< the message's first kHeadBytes bytes after the encapsulation header
-};
-
-/// One whole sample of a watched topic (for plots of its fields).
-struct Ros2Sample
-{
-    qint64 receivedNs = 0; ///< wall clock
-    QByteArray bytes; ///< CDR with its encapsulation header
-};
-
-/// How the participant reaches the graph.
-struct Ros2Options
-{
-    int domain = 0; ///< 0..232, as ROS_DOMAIN_ID
-    /// UDP on 127.0.0.1 only, with unicast discovery of the participants on this host (as
-    /// ROS_LOCALHOST_ONLY=1 does); otherwise every interface, multicast discovery and shared memory.
-    bool localhostOnly = false;
-
-    /// ROS_DOMAIN_ID and ROS_LOCALHOST_ONLY from the environment; `error` says why a set value was
-    /// not taken (then the default stays).
-    static Ros2Options fromEnvironment(QString* error = nullptr);
-    static constexpr int kMaxDomain = 232;
-};
-
-/// A DDS participant that sees a ROS 2 graph on the wire (the only code that uses Fast DDS).
+/// A ROS 2 graph on the wire, seen through a DDS participant that runs in a child process.
 ///
-/// Discovery comes from Fast DDS's listener threads into a table under a lock; the graph is
-/// rebuilt on the thread that owns this object when the changes pause for a poll (kPollMs), or
-/// once a graph interval (250 ms unless setGraphInterval()) while they go on, and graphChanged()
-/// fires only when it changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes.
-/// Nothing here blocks on the network.
+/// Fast DDS parses every datagram any host of the domain sends, and Debian's 2.9 lacks upstream
+/// security fixes: one datagram aborts it, others make it allocate gigabytes. So the participant
+/// (Ros2Engine, core/dds) runs in `bridgescope-dds`, under an address-space limit, and this object
+/// talks to it through a pipe of bounded frames (Ros2Protocol). When the child crashes, runs out of
+/// its memory, stops answering or sends a frame that does not read, it is ended and started again
+/// after a backoff (restarts() counts it, restarted() says why), and everything asked of it
+/// (monitored, watched topics, arrivals) is asked again. Nothing here blocks on the network or on
+/// the child.
+///
+/// The graph is rebuilt in the child when discovery pauses, or once a graph interval (250 ms
+/// unless setGraphInterval()) while it goes on; graphChanged() fires when it changed. Monitored
+/// topics' figures come every kStatsMs; watched samples and arrivals every poll of the child.
 class Ros2Participant : public QObject
 {
     Q_OBJECT
@@ -66,33 +39,38 @@ public:
     explicit Ros2Participant(QObject* parent = nullptr);
     ~Ros2Participant() override;
 
-    /// Joins the domain; false with `error` when the participant cannot be made (a domain out of
-    /// range, no usable transport).
+    /// Starts the child that joins the domain; false with `error` when the domain is out of range
+    /// or the child cannot be started. A participant that Fast DDS cannot make (no usable
+    /// transport) is said later, by lastError() and graphChanged().
     bool start(const Ros2Options& options, QString* error = nullptr);
     void stop();
     bool isRunning() const;
     Ros2Options options() const { return m_options; }
     static constexpr int kPollMs = 25;
-    void setGraphInterval(int ms)
-    {
-        m_graphInterval = ms;
-        m_timer.setInterval(std::min(ms, kPollMs));
-    }
+    static constexpr int kStatsMs = Ros2Protocol::kStatsMs;
+    void setGraphInterval(int ms);
 
     const Ros2Graph& graph() const { return m_graph; }
     /// Samples of ros_discovery_info that could not be read (each also logged once per participant).
-    quint64 badDiscoveryInfo() const;
+    quint64 badDiscoveryInfo() const { return m_badInfo; }
+    /// How often the child was started again since start(), and why the last time.
+    quint64 restarts() const { return m_restarts; }
+    QString lastRestartReason() const { return m_restartReason; }
+    /// Why the participant is not on the domain, when it is not (empty while it is, or stopped).
+    QString lastError() const { return m_error; }
+    /// "restarted 2 times (last: crashed: signal 6)", or empty: for status lines.
+    QString restartText() const;
 
     /// Subscribes to a topic of the graph as raw samples (best effort, volatile: it matches every
     /// publisher). Fails with monitorFailed() when the topic has no type yet. Calls are counted:
     /// the subscription ends with the unmonitor() that balances the last monitor(), so that two
     /// users (Discover's Mon, the Links page) do not end each other's; it is made again after
-    /// stop() and start() once the graph has the topic.
+    /// stop() and start() (and after a restart of the child) once the graph has the topic.
     void monitor(const QString& topic);
     /// Ends monitor(); the subscription stays while the topic is watched (watchMessages()).
     void unmonitor(const QString& topic);
     bool isMonitored(const QString& topic) const;
-    /// Figures of the monitored topics (not of those only watched).
+    /// Figures of the monitored topics (not of those only watched), as the child last sent them.
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
     /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
     /// takeMessages() (older ones are dropped and counted). The topic is subscribed for it whether
@@ -112,34 +90,62 @@ public:
     std::vector<Ros2Arrival> takeArrivals();
     quint64 droppedArrivals() const;
 
+    /// The child program: $BRIDGESCOPE_DDS, beside this program, in ../libexec/bridgescope, or in
+    /// the build tree.
+    static QString program();
+    /// The backoff before the n-th restart in a row (1, 2, ...): 250 ms doubling up to 30 s.
+    static int backoffMs(int restartsInARow);
+    /// The child is ended when it sends nothing for this long (it sends a heartbeat every second).
+    static constexpr int kSilenceMs = 10'000;
+
 signals:
-    /// The graph changed, or badDiscoveryInfo() did (which is shown with it).
+    /// The graph changed, or what is shown with it did (badDiscoveryInfo(), restarts(),
+    /// lastError()).
     void graphChanged(const Ros2Graph& graph);
     void monitorFailed(const QString& topic, const QString& why);
+    /// The child ended without being asked to and will be started again.
+    void restarted(const QString& why);
 
 private:
-    struct WatchLimits
+    struct Watched
     {
         std::size_t maxMessages = 0;
         qint64 maxBytes = 0;
+        std::shared_ptr<NewestQueue<Ros2Sample>> queue; ///< from the first samples until stop()
+        quint64 childDropped = 0;
     };
-    void refresh();
-    /// Makes the topic's reader; false with `why` when the graph has no type for it or Fast DDS
-    /// refuses.
-    bool subscribe(const QString& topic, bool monitored, QString* why);
-    bool isSubscribed(const QString& topic) const;
+    void launch();
+    void send(Ros2Protocol::Kind kind, const QByteArray& body = {});
+    void onOutput();
+    bool handle(const Ros2Protocol::Frame& frame);
+    void onFinished();
+    void childFailed(const QString& why);
+    void checkSilence();
+    /// Closes the child's input; it ends by itself (waited for up to a second with `wait`), or is
+    /// killed after 3 s.
+    void endChild(bool wait = false);
 
-    struct Private;
-    std::shared_ptr<Private> d;
     Ros2Options m_options;
+    bool m_wanted = false; ///< between start() and stop()
+    QProcess* m_child = nullptr;
+    Ros2Protocol::FrameReader m_reader;
+    QElapsedTimer m_lastFrame;
+    QElapsedTimer m_up; ///< since the child started
+    QTimer m_watchdog;
+    QTimer m_restartTimer;
+    int m_restartsInARow = 0;
+    quint64 m_restarts = 0;
+    QString m_restartReason;
+    QString m_failure; ///< why the child is being ended (a frame that did not read, silence)
+    QString m_error;
+
+    int m_graphInterval = 250;
     std::size_t m_keepArrivals = 0;
     QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
-    QHash<QString, WatchLimits> m_watched; ///< what watchMessages() asked for, across stop() and start()
+    QHash<QString, Watched> m_watched; ///< what watchMessages() asked for, across stop() and start()
+    QHash<QString, Ros2MonitorStats> m_stats;
+    std::unique_ptr<EventBuffer<Ros2Arrival>> m_arrivals;
+    quint64 m_childDroppedArrivals = 0;
     Ros2Graph m_graph;
-    int m_graphInterval = 250;
-    quint64 m_shownBadInfo = 0; ///< badDiscoveryInfo() when graphChanged() last fired
-    quint64 m_builtChanges = 0; ///< the listener's change count the graph was built from
-    quint64 m_polledChanges = 0; ///< the change count the previous poll saw
-    QElapsedTimer m_pending; ///< since the first change not in the graph
-    QTimer m_timer;
+    quint64 m_badInfo = 0;
 };

@@ -43,6 +43,7 @@ listing="$(dpkg-deb -c "$deb" | awk '{print $6}')"
 files=(
     ./usr/bin/bridgescope
     ./usr/libexec/bridgescope/bridgescope-bagreader
+    ./usr/libexec/bridgescope/bridgescope-dds
     ./usr/share/applications/io.github.bridgescope.Bridgescope.desktop
     ./usr/share/metainfo/io.github.bridgescope.Bridgescope.metainfo.xml
     ./usr/share/mime/packages/bridgescope.xml
@@ -68,7 +69,8 @@ pass "dpkg-deb -c lists the ${#files[@]} expected files"
 unpacked="$tmp/root"
 dpkg-deb -x "$deb" "$unpacked"
 usr="$unpacked/usr"
-for exe in "$usr/bin/bridgescope" "$usr/libexec/bridgescope/bridgescope-bagreader"; do
+for exe in "$usr/bin/bridgescope" "$usr/libexec/bridgescope/bridgescope-bagreader" \
+    "$usr/libexec/bridgescope/bridgescope-dds"; do
     if readelf -d "$exe" | grep -E 'RPATH|RUNPATH'; then
         fail "$exe has a search path (Debian forbids it): $(readelf -d "$exe" | grep -E 'RPATH|RUNPATH')"
     fi
@@ -125,7 +127,7 @@ grep -q 'Permission is hereby granted' "$usr/share/doc/bridgescope/copyright" ||
 pass "changelog and copyright"
 
 # --- the unpacked program ------------------------------------------------------------------------
-run() { env -u LD_LIBRARY_PATH -u BRIDGESCOPE_BAGREADER QT_QPA_PLATFORM=offscreen LC_ALL=C.UTF-8 "$@"; }
+run() { env -u LD_LIBRARY_PATH -u BRIDGESCOPE_BAGREADER -u BRIDGESCOPE_DDS QT_QPA_PLATFORM=offscreen LC_ALL=C.UTF-8 "$@"; }
 out="$(run "$usr/bin/bridgescope" --version)" || fail "bridgescope --version exits $?"
 [ "$out" = "bridgescope $version" ] || fail "bridgescope --version says '$out'"
 
@@ -168,6 +170,16 @@ grep -qF "starting $usr/bin/../libexec/bridgescope/bridgescope-bagreader for $tm
 grep -qF 'it has: /chatter (std_msgs/String)' <<<"$out" || fail "the bag reader did not read the bag: $out"
 [ $status = 2 ] || fail "report of a bag without stamps exits $status, not 2"
 pass "the installed bag reader reads a bag"
+
+# The ROS 2 participant runs in the installed DDS helper, found the same way.
+status=0
+domain=$((200 + $$ % 30))
+out="$(run "$usr/bin/bridgescope" --verbose discover --ros 2 --ros-domain "$domain" --ros-localhost-only \
+    --broker tcp://127.0.0.1:1 --seconds 1 2>&1)" || status=$?
+grep -qF "starting $usr/bin/../libexec/bridgescope/bridgescope-dds for domain $domain" <<<"$out" \
+    || fail "the installed program did not start the installed DDS helper: $out"
+grep -qF "restarted" <<<"$out" && fail "the installed DDS helper did not run: $out"
+pass "the installed DDS helper runs the ROS 2 participant"
 
 # --- lintian -------------------------------------------------------------------------------------
 # Errors fail; warnings and notes are printed (docs/PACKAGING.md lists those expected).

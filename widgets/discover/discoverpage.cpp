@@ -263,10 +263,21 @@ void DiscoverPage::updateRos2Status()
         m_ros2State->setText(bullet(u"#b00020"_s, m_ros2Error));
         return;
     }
-    const Ros2Graph& g = m_session->ros2()->graph();
+    const Ros2Participant* ros2 = m_session->ros2();
+    if (!ros2->lastError().isEmpty()) {
+        m_ros2State->setText(bullet(u"#b00020"_s, ros2->lastError()));
+        return;
+    }
+    // a restart of the DDS process (a hostile datagram, a runaway) is said, never hidden
+    const QString restarts = ros2->restartText();
+    const QString restartColour = u"#e65100"_s;
+    const Ros2Graph& g = ros2->graph();
     if (g.participants == 0) {
-        m_ros2State->setText(
-            bullet(u"#888"_s, tr("listening on domain %1: no participant yet").arg(m_domain->value())));
+        QString text = tr("listening on domain %1: no participant yet").arg(m_domain->value());
+        if (!restarts.isEmpty())
+            text += u" · "_s + restarts;
+        m_ros2State->setText(bullet(restarts.isEmpty() ? u"#888"_s : restartColour, text));
+        m_ros2State->setToolTip(ros2->lastRestartReason());
         return;
     }
     QString text = tr("domain %1: participants %2, topics %3, nodes %4")
@@ -274,9 +285,12 @@ void DiscoverPage::updateRos2Status()
                        .arg(g.participants)
                        .arg(g.topics.size())
                        .arg(g.nodes.size());
-    if (const quint64 bad = m_session->ros2()->badDiscoveryInfo())
+    if (const quint64 bad = ros2->badDiscoveryInfo())
         text += u", "_s + tr("unreadable node announcements %1").arg(bad);
-    m_ros2State->setText(bullet(u"#2e7d32"_s, text));
+    if (!restarts.isEmpty())
+        text += u" · "_s + restarts;
+    m_ros2State->setText(bullet(restarts.isEmpty() ? u"#2e7d32"_s : restartColour, text));
+    m_ros2State->setToolTip(ros2->lastRestartReason());
 }
 
 QWidget* DiscoverPage::createMqttPane()

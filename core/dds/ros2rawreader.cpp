@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "ros2/ros2rawreader.h"
+#include "dds/ros2rawreader.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// Fast DDS's side of a type-agnostic subscription; included by ros2participant.cpp only, so that
+// Fast DDS's side of a type-agnostic subscription; included by ros2engine.cpp only, so that
 // Fast DDS stays out of every header other layers see.
 
 #include <atomic>

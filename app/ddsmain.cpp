@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: MIT
+// bridgescope-dds: the DDS participant of Ros2Participant (core/ros2), in a process of its own.
+// Fast DDS parses whatever any host of the domain sends, and Debian's 2.9 lacks upstream security
+// fixes: a datagram can abort it or make it allocate without end. Here that ends this process,
+// under an address-space limit, and the parent starts it again. Reads Ros2Protocol frames on
+// stdin, writes them on stdout; ends when stdin closes or the parent dies.
+#include "base/logging.h"
+#include "base/wallclock.h"
+#include "dds/ros2engine.h"
+#include "ros2/ros2protocol.h"
+
+#include <cerrno>
+#include <csignal>
+#include <map>
+#include <QCoreApplication>
+#include <QSocketNotifier>
+#include <QTimer>
+#include <set>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+using namespace Qt::StringLiterals;
+using Ros2Protocol::Kind;
+
+namespace {
+
+/// The most address space the participant may take. Fast DDS with a 4 MiB socket buffer, its
+/// threads' stacks and pools reserves about 300 MiB on a quiet domain (docs/ROBUSTNESS.md); the
+/// corpus datagrams that make it allocate without end stop here.
+constexpr rlim_t kMaxAddressSpace = rlim_t(1536) << 20;
+
+void limitMemory()
+{
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+    if (qEnvironmentVariableIsSet("BRIDGESCOPE_DDS_NO_LIMIT"))
+        return;
+    rlimit limit {kMaxAddressSpace, kMaxAddressSpace};
+    setrlimit(RLIMIT_AS, &limit);
+#endif
+}
+
+/// The pipe to the parent: stdout as it was given, before stdout became stderr (so that nothing a
+/// library prints can end up in the frames).
+int g_frames = STDOUT_FILENO;
+
+/// Writes all of `bytes` to the parent; false when it is gone.
+bool writeAll(const QByteArray& bytes)
+{
+    const char* p = bytes.constData();
+    qsizetype left = bytes.size();
+    while (left > 0) {
+        const ssize_t n = ::write(g_frames, p, size_t(left));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        p += n;
+        left -= n;
+    }
+    return true;
+}
+
+class Worker : public QObject
+{
+public:
+    Worker()
+        : m_input(STDIN_FILENO, QSocketNotifier::Read)
+    {
+        connect(&m_input, &QSocketNotifier::activated, this, &Worker::readInput);
+        connect(&m_engine, &Ros2Engine::graphChanged, this, [this](const Ros2Graph& graph) {
+            send(Kind::Graph, Ros2Protocol::encodeGraph({graph, m_engine.badDiscoveryInfo()}));
+        });
+        connect(&m_engine, &Ros2Engine::monitorFailed, this, [this](const QString& topic, const QString& why) {
+            send(Kind::MonitorFailed, Ros2Protocol::encodeStrings({topic, why}));
+        });
+        m_drain.setInterval(Ros2Engine::kPollMs);
+        connect(&m_drain, &QTimer::timeout, this, &Worker::drain);
+        m_drain.start();
+        m_heartbeat.setInterval(1000);
+        connect(&m_heartbeat, &QTimer::timeout, this, [this] { send(Kind::Heartbeat); });
+        m_heartbeat.start();
+    }
+
+private:
+    void send(Kind kind, const QByteArray& body = {})
+    {
+        if (!writeAll(Ros2Protocol::frame(kind, body)))
+            QCoreApplication::exit(0); // the parent is gone
+    }
+
+    void readInput()
+    {
+        char buffer[64 * 1024];
+        const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+            return;
+        if (n <= 0) { // the parent closed its end, or is gone
+            m_input.setEnabled(false);
+            QCoreApplication::exit(0);
+            return;
+        }
+        m_reader.append(QByteArray(buffer, qsizetype(n)));
+        while (auto f = m_reader.next())
+            if (!handle(*f)) {
+                qCCritical(lcRos2) << "bridgescope-dds: a request of kind" << int(f->kind) << "does not read";
+                QCoreApplication::exit(2);
+                return;
+            }
+        if (m_reader.failed()) {
+            qCCritical(lcRos2).noquote() << "bridgescope-dds:" << m_reader.error();
+            QCoreApplication::exit(2);
+        }
+    }
+
+    bool handle(const Ros2Protocol::Frame& f)
+    {
+        switch (f.kind) {
+        case Kind::Start: {
+            const auto r = Ros2Protocol::decodeStart(f.body);
+            if (!r)
+                return false;
+            m_engine.setGraphInterval(r->graphIntervalMs);
+            QString error;
+            if (m_engine.start(r->options, &error))
+                send(Kind::Started);
+            else
+                send(Kind::StartFailed, Ros2Protocol::encodeStrings({error}));
+            return true;
+        }
+        case Kind::GraphInterval: {
+            const auto ms = Ros2Protocol::decodeNumber(f.body);
+            if (!ms || *ms < 1 || *ms > 3'600'000)
+                return false;
+            m_engine.setGraphInterval(int(*ms));
+            return true;
+        }
+        case Kind::Monitor:
+        case Kind::Unmonitor:
+        case Kind::Unwatch: {
+            const auto topic = Ros2Protocol::decodeStrings(f.body, 1);
+            if (!topic)
+                return false;
+            const QString& t = topic->first();
+            if (f.kind == Kind::Monitor) {
+                m_engine.monitor(t, true);
+            } else if (f.kind == Kind::Unmonitor) {
+                m_engine.unmonitor(t);
+                m_sentMessages.erase(t);
+            } else {
+                m_engine.unwatchMessages(t);
+                m_watched.erase(t);
+            }
+            return true;
+        }
+        case Kind::Watch: {
+            const auto w = Ros2Protocol::decodeWatch(f.body);
+            if (!w)
+                return false;
+            m_engine.watchMessages(w->topic, std::size_t(w->maxMessages), w->maxBytes);
+            m_watched.insert(w->topic);
+            return true;
+        }
+        case Kind::KeepArrivals: {
+            const auto n = Ros2Protocol::decodeNumber(f.body);
+            if (!n || *n > 100'000'000)
+                return false;
+            m_engine.keepArrivals(std::size_t(*n));
+            return true;
+        }
+        default:
+            return false;
+        }
+    }
+
+    void drain()
+    {
+        for (const QString& topic : m_watched)
+            sendSamples(topic, m_engine.takeMessages(topic));
+        std::vector<Ros2Arrival> arrivals = m_engine.takeArrivals();
+        if (!arrivals.empty())
+            send(Kind::Arrivals, Ros2Protocol::encodeArrivals({m_engine.droppedArrivals(), std::move(arrivals)}));
+        if (++m_ticks * Ros2Engine::kPollMs >= Ros2Protocol::kStatsMs) {
+            m_ticks = 0;
+            sendStats();
+        }
+    }
+
+    /// Samples in frames of about kBatchBytes (one sample is at most Ros2RawType's 64 MiB).
+    void sendSamples(const QString& topic, std::vector<Ros2Sample> samples)
+    {
+        Ros2Protocol::SampleBatch batch {topic, m_engine.droppedMessages(topic), {}};
+        qsizetype bytes = 0;
+        for (Ros2Sample& s : samples) {
+            bytes += s.bytes.size();
+            batch.samples.push_back(std::move(s));
+            if (bytes >= Ros2Protocol::kBatchBytes) {
+                send(Kind::Samples, Ros2Protocol::encodeSamples(batch));
+                batch.samples.clear();
+                bytes = 0;
+            }
+        }
+        if (!batch.samples.empty())
+            send(Kind::Samples, Ros2Protocol::encodeSamples(batch));
+    }
+
+    /// The monitored topics' figures; a topic's last message only when it changed.
+    void sendStats()
+    {
+        const QHash<QString, Ros2MonitorStats> stats = m_engine.snapshot(wallClockNs());
+        if (stats.isEmpty())
+            return;
+        QList<Ros2Protocol::TopicStats> out;
+        qsizetype bytes = 0;
+        for (auto it = stats.cbegin(); it != stats.cend(); ++it) {
+            quint64& sent = m_sentMessages[it.key()];
+            const bool with = sent != it->messages && bytes < Ros2Protocol::kBatchBytes;
+            if (with) {
+                sent = it->messages;
+                bytes += it->lastMessage.size();
+            }
+            out.append({it.key(), *it, with});
+        }
+        send(Kind::Stats, Ros2Protocol::encodeStats(out));
+    }
+
+    Ros2Engine m_engine;
+    QSocketNotifier m_input;
+    Ros2Protocol::FrameReader m_reader;
+    QTimer m_drain;
+    QTimer m_heartbeat;
+    std::set<QString> m_watched;
+    std::map<QString, quint64> m_sentMessages;
+    int m_ticks = 0;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    limitMemory();
+    prctl(PR_SET_PDEATHSIG, SIGKILL); // never outlive the parent
+    if (getppid() == 1)
+        return 0; // the parent died before the line above
+    std::signal(SIGPIPE, SIG_IGN); // a write to a parent that is gone fails instead
+    std::signal(SIGINT, SIG_IGN); // Ctrl+C in a terminal is the parent's to handle; it ends us
+    // Frames go to a copy of stdout; what Fast DDS (or anything else) prints goes to stderr.
+    g_frames = ::dup(STDOUT_FILENO);
+    if (g_frames < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
+        return 1;
+    QCoreApplication app(argc, argv);
+    if (argc > 1) {
+        std::fprintf(stderr, "bridgescope-dds takes no arguments: Bridgescope starts it and talks to it on a pipe\n");
+        return 2;
+    }
+    Worker worker;
+    return app.exec();
+}

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "ros2/ros2graph.h"
+#include "ros2/ros2types.h"
+
+#include <algorithm>
+#include <memory>
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <vector>
+
+/// A DDS participant that sees a ROS 2 graph on the wire (the only code that uses Fast DDS).
+///
+/// It runs only in `bridgescope-dds`, the child process that Ros2Participant starts: Fast DDS
+/// parses every datagram any host of the domain sends, and Debian's 2.9 lacks upstream security
+/// fixes (one datagram aborts it, others make it allocate gigabytes).
+///
+/// Discovery comes from Fast DDS's listener threads into a table under a lock; the graph is
+/// rebuilt on the thread that owns this object when the changes pause for a poll (kPollMs), or
+/// once a graph interval (250 ms unless setGraphInterval()) while they go on, and graphChanged()
+/// fires only when it changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes.
+/// Nothing here blocks on the network.
+class Ros2Engine : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Ros2Engine(QObject* parent = nullptr);
+    ~Ros2Engine() override;
+
+    /// Joins the domain; false with `error` when the participant cannot be made (a domain out of
+    /// range, no usable transport).
+    bool start(const Ros2Options& options, QString* error = nullptr);
+    void stop();
+    bool isRunning() const;
+    Ros2Options options() const { return m_options; }
+    static constexpr int kPollMs = 25;
+    void setGraphInterval(int ms)
+    {
+        m_graphInterval = ms;
+        m_timer.setInterval(std::min(ms, kPollMs));
+    }
+
+    const Ros2Graph& graph() const { return m_graph; }
+    /// Samples of ros_discovery_info that could not be read (each also logged once per participant).
+    quint64 badDiscoveryInfo() const;
+
+    // The calls below are Ros2Participant's (see there), which forwards them here through the
+    // pipe; they behave as documented there.
+
+    /// monitor() as Ros2Participant's; with `waitForType`, a topic the graph does not know yet is
+    /// subscribed once it does, instead of failing (as before start()).
+    void monitor(const QString& topic, bool waitForType = false);
+    void unmonitor(const QString& topic);
+    bool isMonitored(const QString& topic) const;
+    /// Figures of the monitored topics (rates at `nowNs`).
+    QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
+    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);
+    void unwatchMessages(const QString& topic);
+    bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
+    std::vector<Ros2Sample> takeMessages(const QString& topic);
+    quint64 droppedMessages(const QString& topic) const;
+    void keepArrivals(std::size_t maxArrivals);
+    std::vector<Ros2Arrival> takeArrivals();
+    quint64 droppedArrivals() const;
+
+signals:
+    /// The graph changed, or badDiscoveryInfo() did (which is shown with it).
+    void graphChanged(const Ros2Graph& graph);
+    void monitorFailed(const QString& topic, const QString& why);
+
+private:
+    struct WatchLimits
+    {
+        std::size_t maxMessages = 0;
+        qint64 maxBytes = 0;
+    };
+    void refresh();
+    /// Makes the topic's reader; false with `why` when the graph has no type for it or Fast DDS
+    /// refuses.
+    bool subscribe(const QString& topic, bool monitored, QString* why);
+    bool isSubscribed(const QString& topic) const;
+
+    struct Private;
+    std::shared_ptr<Private> d;
+    Ros2Options m_options;
+    std::size_t m_keepArrivals = 0;
+    QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
+    QHash<QString, WatchLimits> m_watched; ///< what watchMessages() asked for, across stop() and start()
+    Ros2Graph m_graph;
+    int m_graphInterval = 250;
+    quint64 m_shownBadInfo = 0; ///< badDiscoveryInfo() when graphChanged() last fired
+    quint64 m_builtChanges = 0; ///< the listener's change count the graph was built from
+    quint64 m_polledChanges = 0; ///< the change count the previous poll saw
+    QElapsedTimer m_pending; ///< since the first change not in the graph
+    QTimer m_timer;
+};

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "ros2/ros2graph.h"
+#include "ros2/ros2types.h"
+
+#include <optional>
+#include <QByteArray>
+#include <QList>
+#include <QString>
+#include <vector>
+
+/// The pipe between Ros2Participant and `bridgescope-dds`, the child process that runs Fast DDS.
+///
+/// Both directions are frames: a 4-byte little-endian length, a kind byte, and a body of at most
+/// kMaxFrameBytes. Bodies are written with Writer and read with Reader, which checks every length
+/// and count against the bytes left before it allocates anything. The child parses what a DDS
+/// domain sends with a library that can be made to misbehave, so the parent reads its frames as
+/// hostile input: a frame that does not read ends the child (and it is started again).
+namespace Ros2Protocol {
+
+/// A 64 MiB sample (Ros2RawType's bound) with room for its header.
+constexpr quint32 kMaxFrameBytes = 65 * 1024 * 1024;
+/// The child packs samples into frames of about this size.
+constexpr qsizetype kBatchBytes = 4 * 1024 * 1024;
+/// The child sends the monitored topics' figures this often.
+constexpr int kStatsMs = 100;
+
+enum class Kind : quint8 {
+    // parent to child
+    Start = 1, ///< Ros2Options and the graph interval; the child joins the domain
+    Monitor, ///< a topic
+    Unmonitor, ///< a topic
+    Watch, ///< a topic, its message and byte bounds
+    Unwatch, ///< a topic
+    KeepArrivals, ///< the bound (0: none)
+    GraphInterval, ///< milliseconds
+    // child to parent
+    Started = 64, ///< the participant is on the domain
+    StartFailed, ///< why
+    Graph, ///< a Ros2Graph and the bad ros_discovery_info count
+    Stats, ///< the monitored topics' figures
+    Samples, ///< a watched topic's whole samples and its drop count
+    Arrivals, ///< monitored topics' arrivals and the drop count
+    MonitorFailed, ///< a topic and why
+    Heartbeat, ///< nothing: the child's event loop runs
+};
+bool isKnown(quint8 kind);
+
+struct Frame
+{
+    Kind kind = Kind::Heartbeat;
+    QByteArray body;
+};
+
+/// A frame as bytes.
+QByteArray frame(Kind kind, const QByteArray& body = {});
+
+/// Cuts a byte stream into frames. It holds at most one frame and what came after it; a length
+/// over kMaxFrameBytes or an unknown kind ends the stream (error() says why).
+class FrameReader
+{
+public:
+    void append(const QByteArray& bytes);
+    /// The next whole frame, if there is one.
+    std::optional<Frame> next();
+    bool failed() const { return !m_error.isEmpty(); }
+    QString error() const { return m_error; }
+    /// Bytes held that are not a whole frame yet.
+    qsizetype pending() const { return m_buffer.size() - m_offset; }
+
+private:
+    QByteArray m_buffer;
+    qsizetype m_offset = 0;
+    QString m_error;
+};
+
+/// Appends little-endian numbers and length-prefixed bytes.
+class Writer
+{
+public:
+    void u8(quint8 v) { m_bytes.append(char(v)); }
+    void u32(quint32 v);
+    void u64(quint64 v);
+    void i64(qint64 v) { u64(quint64(v)); }
+    void f64(double v);
+    void bytes(const QByteArray& b);
+    void string(const QString& s) { bytes(s.toUtf8()); }
+    void strings(const QStringList& list);
+    const QByteArray& data() const { return m_bytes; }
+
+private:
+    QByteArray m_bytes;
+};
+
+/// Reads what Writer wrote. Every read checks the bytes left; the first failure sticks (ok() is
+/// false and every later read gives zero or empty), so a decoder reads on and checks once.
+class Reader
+{
+public:
+    explicit Reader(const QByteArray& bytes)
+        : m_bytes(bytes)
+    { }
+    quint8 u8();
+    quint32 u32();
+    quint64 u64();
+    qint64 i64() { return qint64(u64()); }
+    double f64();
+    QByteArray bytes();
+    QString string() { return QString::fromUtf8(bytes()); }
+    QStringList strings();
+    /// A count of elements of at least `minBytes` each: 0 and a failure when the bytes left cannot
+    /// hold that many, so that no count from the stream sizes an allocation on its own.
+    quint32 count(int minBytes);
+    bool ok() const { return m_ok; }
+    bool atEnd() const { return m_pos == m_bytes.size(); }
+    /// ok() and every byte read.
+    bool done() const { return m_ok && atEnd(); }
+    void fail() { m_ok = false; }
+
+private:
+    bool take(qsizetype n);
+    QByteArray m_bytes;
+    qsizetype m_pos = 0;
+    bool m_ok = true;
+};
+
+// The bodies, one encoder and decoder per kind; a decoder returns nothing for a body that does not
+// read as a whole.
+
+struct StartRequest
+{
+    Ros2Options options;
+    int graphIntervalMs = 250;
+};
+QByteArray encodeStart(const StartRequest& r);
+std::optional<StartRequest> decodeStart(const QByteArray& body);
+
+struct WatchRequest
+{
+    QString topic;
+    quint64 maxMessages = 0;
+    qint64 maxBytes = 0;
+};
+QByteArray encodeWatch(const WatchRequest& r);
+std::optional<WatchRequest> decodeWatch(const QByteArray& body);
+
+/// One string (a topic, an error), or two (a topic and why).
+QByteArray encodeStrings(const QStringList& strings);
+std::optional<QStringList> decodeStrings(const QByteArray& body, int count);
+QByteArray encodeNumber(quint64 n);
+std::optional<quint64> decodeNumber(const QByteArray& body);
+
+struct GraphUpdate
+{
+    Ros2Graph graph;
+    quint64 badDiscoveryInfo = 0;
+};
+QByteArray encodeGraph(const GraphUpdate& g);
+std::optional<GraphUpdate> decodeGraph(const QByteArray& body);
+
+struct TopicStats
+{
+    QString topic;
+    Ros2MonitorStats stats;
+    bool withMessage = false; ///< stats.lastMessage came with it (else: unchanged since the last)
+};
+QByteArray encodeStats(const QList<TopicStats>& stats);
+std::optional<QList<TopicStats>> decodeStats(const QByteArray& body);
+
+struct SampleBatch
+{
+    QString topic;
+    quint64 dropped = 0; ///< the child's drops of this topic since it was watched
+    std::vector<Ros2Sample> samples;
+};
+QByteArray encodeSamples(const SampleBatch& b);
+std::optional<SampleBatch> decodeSamples(const QByteArray& body);
+
+struct ArrivalBatch
+{
+    quint64 dropped = 0; ///< the child's drops since arrivals were kept
+    std::vector<Ros2Arrival> arrivals;
+};
+QByteArray encodeArrivals(const ArrivalBatch& b);
+std::optional<ArrivalBatch> decodeArrivals(const QByteArray& body);
+
+} // namespace Ros2Protocol

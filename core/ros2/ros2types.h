@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "base/topicfigures.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QtGlobal>
+
+/// Figures of one monitored ROS 2 topic, as RosMonitorStats are for ROS 1.
+struct Ros2MonitorStats : TopicFigures
+{
+    int matchedPublishers = 0;
+};
+
+/// One sample as the monitor saw it, for consumers that need every sample (Watch): the first bytes
+/// of the message after its 4-byte encapsulation header (a Header's stamp, a std_msgs/Float64).
+struct Ros2Arrival
+{
+    static constexpr int kHeadBytes = 16;
+    QString topic;
+    qint64 receivedNs = 0; ///< wall clock
+    int size = 0; ///< CDR bytes, header included
+    QByteArray head; ///< the message's first kHeadBytes bytes after the encapsulation header
+};
+
+/// One whole sample of a watched topic (for plots of its fields).
+struct Ros2Sample
+{
+    qint64 receivedNs = 0; ///< wall clock
+    QByteArray bytes; ///< CDR with its encapsulation header
+};
+
+/// How the participant reaches the graph.
+struct Ros2Options
+{
+    int domain = 0; ///< 0..232, as ROS_DOMAIN_ID
+    /// UDP on 127.0.0.1 only, with unicast discovery of the participants on this host (as
+    /// ROS_LOCALHOST_ONLY=1 does); otherwise every interface, multicast discovery and shared memory.
+    bool localhostOnly = false;
+
+    /// ROS_DOMAIN_ID and ROS_LOCALHOST_ONLY from the environment; `error` says why a set value was
+    /// not taken (then the default stays).
+    static Ros2Options fromEnvironment(QString* error = nullptr);
+    static constexpr int kMaxDomain = 232;
+};

@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+// The pipe to bridgescope-dds (Ros2Protocol): every body reads back as written; frames and bodies
+// that are cut, too long, of an unknown kind or that claim more elements than their bytes hold are
+// refused without allocating what they claim. The child runs a library that hostile datagrams can
+// take over, so its frames are input like any other.
+#include "ros2/ros2protocol.h"
+
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+using namespace Ros2Protocol;
+
+namespace {
+Ros2Endpoint endpoint(char id, const QString& topic, bool publisher)
+{
+    Ros2Endpoint e;
+    e.gid = QByteArray(16, id);
+    e.topic = topic;
+    e.type = u"std_msgs/msg/String"_s;
+    e.publisher = publisher;
+    e.qos.reliability = Ros2Qos::BestEffort;
+    e.qos.durability = Ros2Qos::TransientLocal;
+    e.node = u"/lab/talker"_s;
+    return e;
+}
+
+Ros2Graph sampleGraph()
+{
+    Ros2Graph g;
+    g.participants = 3;
+    g.services = 7;
+    Ros2Topic a;
+    a.name = u"/a"_s;
+    a.types = {u"std_msgs/msg/String"_s};
+    a.publishers = {endpoint('\x01', a.name, true)};
+    a.subscribers = {endpoint('\x02', a.name, false), endpoint('\x03', a.name, false)};
+    Ros2Topic b;
+    b.name = u"/b/ü"_s;
+    b.types = {u"x/msg/A"_s, u"x/msg/B"_s};
+    g.topics = {a, b};
+    g.nodes = {Ros2Node {u"/lab/talker"_s, {u"/a"_s}, {}}, Ros2Node {u"/lab/listener"_s, {}, {u"/a"_s, u"/b/ü"_s}}};
+    return g;
+}
+} // namespace
+
+class TestRos2Protocol : public QObject
+{
+    Q_OBJECT
+private slots:
+    void framesSplitAnyWay()
+    {
+        const QByteArray stream = frame(Kind::Heartbeat) + frame(Kind::Graph, "abc") + frame(Kind::Started);
+        for (int cut = 1; cut <= 4; ++cut) { // fed in slices of 1 to 4 bytes
+            FrameReader r;
+            QList<Frame> got;
+            for (qsizetype i = 0; i < stream.size(); i += cut) {
+                r.append(stream.mid(i, cut));
+                while (auto f = r.next())
+                    got.append(*f);
+            }
+            QCOMPARE(got.size(), 3);
+            QCOMPARE(got[1].kind, Kind::Graph);
+            QCOMPARE(got[1].body, QByteArray("abc"));
+            QCOMPARE(r.pending(), 0);
+            QVERIFY(!r.failed());
+        }
+    }
+
+    void frameTooLongOrUnknownEndsTheStream()
+    {
+        FrameReader tooLong;
+        QByteArray head(5, '\0');
+        head[0] = '\xff';
+        head[1] = '\xff';
+        head[2] = '\xff';
+        head[3] = '\x7f';
+        head[4] = char(Kind::Graph);
+        tooLong.append(head);
+        QVERIFY(!tooLong.next());
+        QVERIFY(tooLong.failed());
+        QVERIFY2(tooLong.error().contains(u"bytes"_s), qPrintable(tooLong.error()));
+        QCOMPARE(tooLong.pending(), 0); // nothing of it is kept
+        tooLong.append(frame(Kind::Heartbeat));
+        QVERIFY(!tooLong.next()); // a stream that failed stays failed
+
+        FrameReader unknown;
+        unknown.append(QByteArray("\0\0\0\0\x09", 5));
+        QVERIFY(!unknown.next());
+        QVERIFY(unknown.failed());
+        FrameReader request; // a kind the parent sends is known, and refused by the parent's handler
+        request.append(frame(Kind::Monitor, encodeStrings({u"/a"_s})));
+        QVERIFY(request.next());
+    }
+
+    void bodiesRoundTrip()
+    {
+        const auto start = decodeStart(encodeStart({{42, true}, 20}));
+        QVERIFY(start);
+        QCOMPARE(start->options.domain, 42);
+        QVERIFY(start->options.localhostOnly);
+        QCOMPARE(start->graphIntervalMs, 20);
+
+        const auto watch = decodeWatch(encodeWatch({u"/pose"_s, 5, 1 << 20}));
+        QVERIFY(watch);
+        QCOMPARE(watch->topic, u"/pose"_s);
+        QCOMPARE(watch->maxMessages, 5u);
+        QCOMPARE(watch->maxBytes, 1 << 20);
+
+        const auto strings = decodeStrings(encodeStrings({u"/a"_s, u"why ✓"_s}), 2);
+        QVERIFY(strings);
+        QCOMPARE(*strings, QStringList({u"/a"_s, u"why ✓"_s}));
+        QVERIFY(!decodeStrings(encodeStrings({u"/a"_s, u"b"_s}), 1)); // bytes left over
+        QCOMPARE(decodeNumber(encodeNumber(123456789012ull)).value_or(0), 123456789012ull);
+
+        const Ros2Graph g = sampleGraph();
+        const auto graph = decodeGraph(encodeGraph({g, 9}));
+        QVERIFY(graph);
+        QVERIFY(graph->graph == g);
+        QCOMPARE(graph->badDiscoveryInfo, 9u);
+
+        Ros2MonitorStats s;
+        s.messages = 10;
+        s.bytes = 1000;
+        s.lastSize = 100;
+        s.lastNs = 1'700'000'000'000'000'000;
+        s.rateHz = 9.5;
+        s.bytesPerSecond = 950;
+        s.type = u"std_msgs/msg/String"_s;
+        s.lastMessage = QByteArray("\0\1\0\0abc", 7);
+        s.lost = 2;
+        s.matchedPublishers = 1;
+        const auto stats = decodeStats(encodeStats({{u"/a"_s, s, true}, {u"/b"_s, s, false}}));
+        QVERIFY(stats);
+        QCOMPARE(stats->size(), 2);
+        QCOMPARE(stats->at(0).stats.lastMessage, s.lastMessage);
+        QCOMPARE(stats->at(0).stats.rateHz, 9.5);
+        QCOMPARE(stats->at(0).stats.lastNs, s.lastNs);
+        QVERIFY(!stats->at(1).withMessage);
+        QVERIFY(stats->at(1).stats.lastMessage.isEmpty());
+
+        const auto samples = decodeSamples(encodeSamples({u"/p"_s, 4, {{1, "one"}, {2, QByteArray(100000, 'x')}}}));
+        QVERIFY(samples);
+        QCOMPARE(samples->dropped, 4u);
+        QCOMPARE(samples->samples.size(), 2u);
+        QCOMPARE(samples->samples[1].bytes.size(), 100000);
+
+        const auto arrivals = decodeArrivals(encodeArrivals({3, {{u"/t"_s, 5, 100, "0123456789abcdef"}}}));
+        QVERIFY(arrivals);
+        QCOMPARE(arrivals->dropped, 3u);
+        QCOMPARE(arrivals->arrivals.front().head, QByteArray("0123456789abcdef"));
+    }
+
+    // Every prefix of a body is refused (no partial value is taken), and so is a body with a byte
+    // more.
+    void cutBodiesAreRefused()
+    {
+        const QByteArray graph = encodeGraph({sampleGraph(), 1});
+        for (qsizetype n = 0; n < graph.size(); ++n)
+            QVERIFY2(!decodeGraph(graph.left(n)), qPrintable(QString::number(n)));
+        QVERIFY(!decodeGraph(graph + '\0'));
+        const QByteArray samples = encodeSamples({u"/p"_s, 0, {{1, "abc"}}});
+        for (qsizetype n = 0; n < samples.size(); ++n)
+            QVERIFY(!decodeSamples(samples.left(n)));
+    }
+
+    // A count that claims more elements than the bytes left could hold is refused before anything
+    // is reserved (2^32 - 1 endpoints would be hundreds of GB).
+    void hugeCountsAreRefusedWithoutAllocating()
+    {
+        Writer w;
+        w.u64(0);
+        w.u32(1);
+        w.u32(0);
+        w.u32(0xffffffffu); // topics
+        QVERIFY(!decodeGraph(w.data()));
+
+        Writer s;
+        s.string(u"/p"_s);
+        s.u64(0);
+        s.u32(0xfffffff0u); // samples
+        s.i64(1);
+        s.u32(0xfffffff0u); // a sample's length
+        QVERIFY(!decodeSamples(s.data()));
+
+        Writer a;
+        a.u64(0);
+        a.u32(1);
+        a.string(u"/t"_s);
+        a.i64(1);
+        a.u32(10);
+        a.bytes(QByteArray(17, 'h')); // a head longer than an arrival keeps
+        QVERIFY(!decodeArrivals(a.data()));
+    }
+
+    void valuesOutOfRangeAreRefused()
+    {
+        QVERIFY(!decodeStart(encodeStart({{Ros2Options::kMaxDomain + 1, false}, 250})));
+        QVERIFY(!decodeStart(encodeStart({{0, false}, 0})));
+        Ros2Graph g = sampleGraph();
+        g.topics[0].publishers[0].gid = "short";
+        QVERIFY(!decodeGraph(encodeGraph({g, 0})));
+        g = sampleGraph();
+        std::swap(g.topics[0], g.topics[1]); // not sorted: not what Ros2Graph::build makes
+        QVERIFY(!decodeGraph(encodeGraph({g, 0})));
+        Ros2MonitorStats s;
+        s.rateHz = std::numeric_limits<double>::quiet_NaN();
+        QVERIFY(!decodeStats(encodeStats({{u"/a"_s, s, false}})));
+        QVERIFY(!decodeWatch(encodeWatch({u"/a"_s, 1, -1})));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2Protocol)
+#include "tst_ros2protocol.moc"
