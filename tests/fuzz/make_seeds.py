@@ -142,3 +142,34 @@ for i, (name, flt) in enumerate([("/benchmarking_suite/timestamps/in", "a/+/c"),
     put("names", f"name{i}", name.encode() + b"\0" + flt.encode())
 
 # fuzz_suitecsv keeps its hand-made seeds (suite.csv is what the suite's logger writes).
+
+# fuzz_ros2frames: what bridgescope-dds writes (core/ros2/ros2protocol.h), a slice-size byte first
+def frame(kind, body=b""):
+    return struct.pack("<IB", len(body), kind) + body
+
+def pstr(s):
+    b = s.encode()
+    return struct.pack("<I", len(b)) + b
+
+def pstrs(items):
+    return struct.pack("<I", len(items)) + b"".join(pstr(s) for s in items)
+
+def endpoint(gid, topic, typ, publisher, node):
+    return (struct.pack("<I", 16) + gid + pstr(topic) + pstr(typ) + bytes([publisher, 0, 1])
+            + struct.pack("<i", -1) + pstr(node))
+
+STARTED, GRAPH, STATS, SAMPLES, ARRIVALS, MONITOR_FAILED, HEARTBEAT = 64, 66, 67, 68, 69, 70, 71
+graph = (struct.pack("<QII", 0, 2, 1) + struct.pack("<I", 1) + pstr("/chatter") + pstrs(["std_msgs/msg/String"])
+         + struct.pack("<I", 1) + endpoint(bytes(range(16)), "/chatter", "std_msgs/msg/String", 1, "/lab/talker")
+         + struct.pack("<I", 0) + struct.pack("<I", 1) + pstr("/lab/talker") + pstrs(["/chatter"]) + pstrs([]))
+string_cdr = b"\x00\x01\x00\x00" + struct.pack("<I", 6) + b"hello\x00"
+samples = pstr("/chatter") + struct.pack("<QI", 0, 2) + b"".join(
+    struct.pack("<q", 1_700_000_000_000_000_000 + i) + struct.pack("<I", len(string_cdr)) + string_cdr for i in range(2))
+stats = (struct.pack("<I", 1) + pstr("/chatter") + struct.pack("<QQIq", 2, 24, 12, 1_700_000_000_000_000_000)
+         + struct.pack("<dd", 10.0, 120.0) + pstr("std_msgs/msg/String") + struct.pack("<QI", 0, 1) + b"\x01"
+         + struct.pack("<I", len(string_cdr)) + string_cdr)
+arrivals = struct.pack("<QI", 0, 1) + pstr("/chatter") + struct.pack("<qI", 1, 12) + struct.pack("<I", 8) + string_cdr[4:12]
+put("ros2frames", "session", b"\x07" + frame(STARTED) + frame(GRAPH, graph) + frame(STATS, stats)
+    + frame(SAMPLES, samples) + frame(ARRIVALS, arrivals) + frame(HEARTBEAT))
+put("ros2frames", "monitor-failed", b"\x01" + frame(MONITOR_FAILED, pstr("/nobody") + pstr("no type yet")))
+put("ros2frames", "graph-only", b"\x40" + frame(GRAPH, graph))

@@ -11,6 +11,7 @@
 #include "namecheck.h"
 #include "ros/rostopicmodel.h"
 #include "ros2peer.h"
+#include "rtpscorpus.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "widgets/discover/detailpane.h"
@@ -184,6 +185,29 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(
             column(view, RosTopicModel::RateColumn).at(rowOf(view, u"/huge"_s)).toDouble() > 10, 10000);
+    }
+
+    // Hostile datagrams on the domain (issue 31): Fast DDS 2.9.1 aborts on one of them. The window
+    // lives on, says that ROS 2 discovery restarted, and lists the well-behaved node again.
+    void windowSurvivesHostileDatagrams()
+    {
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        Ros2Peer talker(domain, {u"--node"_s, u"/steady"_s, u"--pub"_s, u"/steady:std_msgs/msg/String:20"_s,
+                                 u"--duration"_s, u"120"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        LiveSession session;
+        DiscoverPage page(&session);
+        page.resize(1280, 760);
+        page.show();
+        page.setRos2Options({domain, true});
+        page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
+        QTableView* view = page.ros2View();
+        QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/steady"_s) >= 0, 15000);
+        RtpsCorpus::send(domain, RtpsCorpus::load(u"fastdds"_s), 500);
+        QTRY_VERIFY2_WITH_TIMEOUT(page.ros2Status()->text().contains(u"restarted"_s),
+                                  qPrintable(page.ros2Status()->text()), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/steady"_s) >= 0 && session.ros2()->graph().participants > 0, 60000);
+        QVERIFY(page.ros2Status()->text().contains(u"restarted"_s)); // and it stays said
     }
 
     void mapRos2Config()

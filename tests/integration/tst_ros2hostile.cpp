@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// Hostile datagrams on a ROS 2 domain (issue 31): Fast DDS's own regression datagrams and Cyclone
+// DDS's RTPS fuzzing seeds (tests/data/rtps/README.md), then a seeded random RTPS flood,
+// sent to the domain's RTPS ports on 127.0.0.1. Debian's Fast DDS 2.9.1 aborts on 20140.bin
+// (CVE-2023-50716) and allocates without end on 2383x.bin: an in-process participant took the
+// window, `discover` and `watch` down with it. Now the participant runs in bridgescope-dds: it may
+// die, and comes back (counted, said), while this process, the window and the commands go on and
+// list a well-behaved node again. A child that sends garbage frames or stops talking is ended and
+// started again too.
+#include "base/wallclock.h"
+#include "clirun.h"
+#include "ros2/ros2participant.h"
+#include "ros2peer.h"
+#include "rtpscorpus.h"
+#include "testservers.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QFile>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+bool hasNode(const Ros2Graph& g, const QString& name)
+{
+    for (const Ros2Node& n : g.nodes)
+        if (n.name == name)
+            return true;
+    return false;
+}
+
+qint64 peakRssKb()
+{
+    QFile status(u"/proc/self/status"_s);
+    if (!status.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray& line : status.readAll().split('\n'))
+        if (line.startsWith("VmHWM:"))
+            return line.mid(6).trimmed().split(' ').value(0).toLongLong();
+    return -1;
+}
+
+} // namespace
+
+class TestRos2Hostile : public QObject
+{
+    Q_OBJECT
+    QList<QByteArray> m_corpus;
+
+private slots:
+    void initTestCase()
+    {
+        m_corpus = RtpsCorpus::load(u"fastdds"_s) + RtpsCorpus::load(u"cyclonedds"_s);
+        QVERIFY2(m_corpus.size() >= 500, qPrintable(QStringLiteral(BRIDGESCOPE_RTPS_CORPUS)));
+    }
+
+    // The participant: it survives the corpus by restarting its child, says so, and lists the
+    // well-behaved node again; this process's memory never sees the runaway allocations.
+    void participantSurvivesTheCorpus()
+    {
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        Ros2Participant p;
+        QSignalSpy restarted(&p, &Ros2Participant::restarted);
+        QString error;
+        QVERIFY2(p.start({domain, true}, &error), qPrintable(error));
+        Ros2Peer talker(domain, {u"--node"_s, u"/steady"_s, u"--pub"_s, u"/steady:std_msgs/msg/String:20"_s,
+                                 u"--duration"_s, u"120"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 15000);
+        p.monitor(u"/steady"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= 3, 10000);
+
+        const qint64 rssBefore = peakRssKb();
+        QVERIFY(RtpsCorpus::send(domain, m_corpus, 2000) > 2000);
+        // Fast DDS 2.9.1 aborts on 20140.bin and runs out of memory on 2383x.bin: the child died
+        // at least once, and that was said with its reason.
+        QTRY_VERIFY_WITH_TIMEOUT(p.restarts() >= 1, 20000);
+        QCOMPARE(quint64(restarted.size()), p.restarts());
+        QVERIFY(!p.lastRestartReason().isEmpty());
+        QVERIFY2(p.restartText().contains(u"restarted"_s), qPrintable(p.restartText()));
+        qInfo().noquote() << "restarts:" << p.restarts() << "last:" << p.lastRestartReason();
+
+        // and the graph comes back, with the node, its samples and the topic still monitored
+        QVERIFY(p.isRunning());
+        QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 60000);
+        const quint64 before = p.snapshot(wallClockNs()).value(u"/steady"_s).messages;
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= before + 3, 15000);
+        QVERIFY2(talker.waitFor(u"ready"_s, 10), "the Cyclone DDS node died of the corpus");
+        // what the child allocated stayed there
+        const qint64 rssAfter = peakRssKb();
+        QVERIFY2(rssAfter - rssBefore < 200 * 1024, qPrintable(u"%1 kB -> %2 kB"_s.arg(rssBefore).arg(rssAfter)));
+    }
+
+    // `discover --ros 2` while the corpus is sent: it runs its time, lists the node, says the
+    // restarts, and exits as it would without them.
+    void discoverSurvivesTheCorpus()
+    {
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        Ros2Peer talker(domain, {u"--node"_s, u"/steady"_s, u"--pub"_s, u"/steady:std_msgs/msg/String:20"_s,
+                                 u"--duration"_s, u"120"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QProcess discover;
+        discover.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                       {u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain),
+                        u"--ros-localhost-only"_s, u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()),
+                        u"--seconds"_s, u"25"_s, u"--json"_s});
+        QVERIFY(discover.waitForStarted());
+        QTest::qWait(3000); // it joined
+        RtpsCorpus::send(domain, m_corpus, 1000);
+        QVERIFY(discover.waitForFinished(60000));
+        const QByteArray out = discover.readAllStandardOutput();
+        const QString err = QString::fromUtf8(discover.readAllStandardError());
+        QCOMPARE(discover.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(discover.exitCode() == 0, qPrintable(err));
+        QVERIFY2(err.contains(u"ROS 2 discovery restarted"_s), qPrintable(err));
+        const QJsonObject ros2 = QJsonDocument::fromJson(out).object().value(u"ros2"_s).toObject();
+        QVERIFY2(ros2.value(u"discovery_restarts"_s).toInt() >= 1, out.constData());
+        bool listed = false;
+        for (const QJsonValue& n : ros2.value(u"nodes"_s).toArray())
+            listed = listed || n.toObject().value(u"name"_s).toString() == u"/steady"_s;
+        QVERIFY2(listed, out.constData());
+    }
+
+    // `watch --ros 2` the same: it keeps running for its seconds and ends normally.
+    void watchSurvivesTheCorpus()
+    {
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto(), qPrintable(servers.errorString()));
+        QProcess watch;
+        watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"watch"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain),
+                     u"--ros-localhost-only"_s, u"--broker"_s, servers.brokerUrl(), u"--seconds"_s, u"20"_s});
+        QVERIFY(watch.waitForStarted());
+        QTest::qWait(3000);
+        RtpsCorpus::send(domain, m_corpus, 1000);
+        QVERIFY(watch.waitForFinished(60000));
+        const QString err = QString::fromUtf8(watch.readAllStandardError());
+        QCOMPARE(watch.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(err.contains(u"ROS 2 discovery restarted"_s), qPrintable(err));
+        QVERIFY2(watch.exitCode() != -1, qPrintable(err));
+    }
+
+    // A child that writes garbage (as one taken over by a datagram might), or that says nothing, is
+    // ended and started again; the parent neither crashes nor keeps what it sent.
+    void garbageFromTheChildIsRefused()
+    {
+        QTemporaryDir dir;
+        const QString fake = dir.filePath(u"fake-dds"_s);
+        QFile script(fake);
+        QVERIFY(script.open(QIODevice::WriteOnly));
+        // a frame header claiming 2 GB, then random bytes
+        script.write("#!/bin/sh\nprintf '\\377\\377\\377\\177\\102'\nhead -c 100000 /dev/urandom\nsleep 30\n");
+        script.close();
+        script.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        qputenv("BRIDGESCOPE_DDS", fake.toLocal8Bit());
+        {
+            Ros2Participant p;
+            QVERIFY(p.start({0, true}));
+            QTRY_VERIFY_WITH_TIMEOUT(p.restarts() >= 2, 10000);
+            QVERIFY2(p.lastRestartReason().contains(u"frame"_s), qPrintable(p.lastRestartReason()));
+            QVERIFY(p.graph().topics.isEmpty());
+        }
+        // random bytes from the start: an unknown kind or a length too long, whichever comes first
+        QVERIFY(script.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        script.write("#!/bin/sh\nhead -c 1000000 /dev/urandom\nsleep 30\n");
+        script.close();
+        {
+            Ros2Participant p;
+            QVERIFY(p.start({0, true}));
+            QTRY_VERIFY_WITH_TIMEOUT(p.restarts() >= 2, 10000);
+        }
+        qunsetenv("BRIDGESCOPE_DDS");
+        QCOMPARE(Ros2Participant::backoffMs(1), 250);
+        QCOMPARE(Ros2Participant::backoffMs(3), 1000);
+        QCOMPARE(Ros2Participant::backoffMs(30), 30000);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2Hostile)
+#include "tst_ros2hostile.moc"
