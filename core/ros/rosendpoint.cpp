@@ -5,7 +5,9 @@
 #include "ros/rosbytes.h"
 #include "ros/rosreregistration.h"
 
+#include <atomic>
 #include <condition_variable>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <ros/ros.h>
@@ -14,6 +16,63 @@
 #include <vector>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+/// Bytes to publish as they are, with their type by name (as ShapeShifter carries them, but copied
+/// once, not twice); the serialized buffer tells `held` when roscpp lets go of it.
+struct CountedBytes
+{
+    const std::string& md5;
+    const std::string& type;
+    const std::string& definition;
+    const QByteArray& bytes;
+    std::shared_ptr<std::atomic<qint64>> held;
+};
+} // namespace
+
+namespace ros {
+namespace message_traits {
+template<> struct IsMessage<CountedBytes> : TrueType
+{
+};
+template<> struct MD5Sum<CountedBytes>
+{
+    static const char* value() { return "*"; }
+    static const char* value(const CountedBytes& m) { return m.md5.c_str(); }
+};
+template<> struct DataType<CountedBytes>
+{
+    static const char* value() { return "*"; }
+    static const char* value(const CountedBytes& m) { return m.type.c_str(); }
+};
+template<> struct Definition<CountedBytes>
+{
+    static const char* value() { return ""; }
+    static const char* value(const CountedBytes& m) { return m.definition.c_str(); }
+};
+} // namespace message_traits
+
+namespace serialization {
+/// Called by roscpp only when someone subscribes (or the topic is latched).
+template<> inline SerializedMessage serializeMessage<CountedBytes>(const CountedBytes& m)
+{
+    const uint32_t length = uint32_t(m.bytes.size());
+    const std::size_t total = std::size_t(length) + 4;
+    std::shared_ptr<std::atomic<qint64>> held = m.held;
+    *held += qint64(total);
+    boost::shared_array<uint8_t> buf(new uint8_t[total], [held, total](uint8_t* p) {
+        delete[] p;
+        *held -= qint64(total);
+    });
+    OStream out(buf.get(), uint32_t(total));
+    serialize(out, length);
+    SerializedMessage serialized(buf, total);
+    serialized.message_start = out.getData();
+    std::memcpy(out.getData(), m.bytes.constData(), length);
+    return serialized;
+}
+} // namespace serialization
+} // namespace ros
 
 struct RosEndpoint::Private
 {
@@ -28,6 +87,9 @@ struct RosEndpoint::Private
     };
     std::vector<Publisher> publishers; ///< retired ones have an empty `pub`
     std::vector<int> freeIds; ///< retired slots, reused so that type changes do not grow the table
+    /// What roscpp holds of our messages: shared with their buffers, which may outlive us.
+    std::shared_ptr<std::atomic<qint64>> held = std::make_shared<std::atomic<qint64>>(0);
+    std::atomic<qint64> maxHeld {0};
 
     // Watches the master: a restarted one is told about our topics again.
     std::thread watch;
@@ -233,18 +295,37 @@ void RosEndpoint::retire(int publisher)
 
 bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
 {
+    return send(publisher, bytes) == Sent::Ok;
+}
+
+RosEndpoint::Sent RosEndpoint::send(int publisher, const QByteArray& bytes)
+{
+    const qint64 max = d->maxHeld.load();
+    const qint64 held = d->held->load();
+    if (max > 0 && held > 0 && held + bytes.size() + 4 > max)
+        return Sent::Full;
     std::lock_guard<std::mutex> lock(d->mutex);
     if (publisher < 0 || std::size_t(publisher) >= d->publishers.size())
-        return false;
+        return Sent::Failed;
     const Private::Publisher& p = d->publishers[std::size_t(publisher)];
     if (!p.pub)
-        return false;
+        return Sent::Failed;
     try {
-        p.pub.publish(RosBytes::shaped(p.md5, p.type, p.definition, bytes));
+        p.pub.publish(CountedBytes {p.md5, p.type, p.definition, bytes, d->held});
     } catch (const ros::Exception&) {
-        return false;
+        return Sent::Failed;
     }
-    return true;
+    return Sent::Ok;
+}
+
+void RosEndpoint::setMaxHeldBytes(qint64 bytes)
+{
+    d->maxHeld = bytes;
+}
+
+qint64 RosEndpoint::heldBytes() const
+{
+    return d->held->load();
 }
 
 int RosEndpoint::subscriberCount(int publisher) const
