@@ -13,6 +13,7 @@
 #include <ros/ros.h>
 #include <thread>
 #include <topic_tools/shape_shifter.h>
+#include <utility>
 #include <vector>
 
 using namespace Qt::StringLiterals;
@@ -84,12 +85,15 @@ struct RosEndpoint::Private
     {
         ros::Publisher pub;
         std::string type, md5, definition;
+        bool latched = false;
+        qint64 lastBytes = 0; ///< latched: the message roscpp keeps for late subscribers
     };
     std::vector<Publisher> publishers; ///< retired ones have an empty `pub`
     std::vector<int> freeIds; ///< retired slots, reused so that type changes do not grow the table
     /// What roscpp holds of our messages: shared with their buffers, which may outlive us.
     std::shared_ptr<std::atomic<qint64>> held = std::make_shared<std::atomic<qint64>>(0);
     std::atomic<qint64> maxHeld {0};
+    qint64 latchedBytes = 0; ///< of `held`, the latched topics' last messages (not a queue: never refused)
 
     // Watches the master: a restarted one is told about our topics again.
     std::thread watch;
@@ -182,6 +186,7 @@ void RosEndpoint::shutdown()
         std::lock_guard<std::mutex> lock(d->mutex);
         d->publishers.clear();
         d->freeIds.clear();
+        d->latchedBytes = 0;
     }
     d->node.reset();
     ros::shutdown();
@@ -249,7 +254,7 @@ int RosEndpoint::advertise(const QString& topic, const QString& type, const QStr
 {
     if (!d->node)
         return -1;
-    Private::Publisher p {{}, type.toStdString(), md5.toStdString(), definition.toStdString()};
+    Private::Publisher p {{}, type.toStdString(), md5.toStdString(), definition.toStdString(), latched, 0};
     try {
         ros::AdvertiseOptions options(topic.toStdString(), uint32_t(std::max(1, queueSize)), p.md5, p.type,
                                       p.definition);
@@ -288,6 +293,7 @@ void RosEndpoint::retire(int publisher)
             return;
         old = std::move(d->publishers[std::size_t(publisher)].pub);
         d->publishers[std::size_t(publisher)].pub = ros::Publisher();
+        d->latchedBytes -= std::exchange(d->publishers[std::size_t(publisher)].lastBytes, 0);
         d->freeIds.push_back(publisher);
     }
     old.shutdown(); // unregisters from the master: outside our lock
@@ -300,21 +306,24 @@ bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
 
 RosEndpoint::Sent RosEndpoint::send(int publisher, const QByteArray& bytes)
 {
-    const qint64 max = d->maxHeld.load();
-    const qint64 held = d->held->load();
-    if (max > 0 && held > 0 && held + bytes.size() + 4 > max)
-        return Sent::Full;
     std::lock_guard<std::mutex> lock(d->mutex);
     if (publisher < 0 || std::size_t(publisher) >= d->publishers.size())
         return Sent::Failed;
-    const Private::Publisher& p = d->publishers[std::size_t(publisher)];
+    Private::Publisher& p = d->publishers[std::size_t(publisher)];
     if (!p.pub)
         return Sent::Failed;
+    // What roscpp queues: a latched topic's last message would otherwise stop all that follow.
+    const qint64 queued = d->held->load() - d->latchedBytes;
+    const qint64 max = d->maxHeld.load();
+    if (max > 0 && queued > 0 && queued + bytes.size() + 4 > max)
+        return Sent::Full;
     try {
         p.pub.publish(CountedBytes {p.md5, p.type, p.definition, bytes, d->held});
     } catch (const ros::Exception&) {
         return Sent::Failed;
     }
+    if (p.latched)
+        d->latchedBytes += bytes.size() + 4 - std::exchange(p.lastBytes, bytes.size() + 4);
     return Sent::Ok;
 }
 

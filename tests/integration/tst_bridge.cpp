@@ -91,7 +91,8 @@ private:
     std::atomic<int> m_floodArrived {0}; ///< messages on flood/... (counted, not kept)
 
     /// Starts `bridgescope bridge` on `config`; its log goes to our stderr unless `captureLog`.
-    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QString& name, bool captureLog = false)
+    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QString& name, bool captureLog = false,
+                                     const QStringList& options = {})
     {
         const QString path = m_dir.filePath(name + u".yaml"_s);
         QFile f(path);
@@ -103,7 +104,8 @@ private:
         if (!captureLog)
             p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
         p->start(QStringLiteral(BRIDGESCOPE_BINARY),
-                 {u"bridge"_s, path, u"--broker"_s, m_servers.brokerUrl(), u"--name"_s, name});
+                 QStringList {u"bridge"_s, path, u"--broker"_s, m_servers.brokerUrl(), u"--name"_s, name}
+                     + options);
         return p;
     }
 
@@ -536,6 +538,26 @@ private slots:
         hz.kill();
         hz.waitForFinished();
         expectBoundHeld(*p, grown, false);
+    }
+
+    // The bound counts what roscpp queues, not the last message a latched topic keeps: one larger
+    // than the bound's half would otherwise refuse every message after it.
+    void aLatchedBigMessageDoesNotStopTheOnesAfterIt()
+    {
+        auto p = bridge("bridge:\n  mqtt2ros:\n    - mqtt_topic: latch/in\n      ros_topic: /latch/in\n"
+                        "      primitive: true\n      advanced: {ros: {latched: true}}\n",
+                        u"latch_in"_s, true, {u"--max-queued-mib"_s, u"8"_s});
+        listenRos(u"/latch/in"_s);
+        const QByteArray big(6 * 1024 * 1024, 'x');
+        const auto arrived = [&](qsizetype size) {
+            const QList<QByteArray> got = m_fromRos.on(u"/latch/in"_s);
+            return !got.isEmpty() && got.last().size() == size + 4; // a std_msgs/String
+        };
+        QVERIFY(publishUntil([&] { m_mqtt->publish(u"latch/in"_s, big, 0, false); },
+                             [&] { return arrived(big.size()); }));
+        QVERIFY(publishUntil([&] { m_mqtt->publish(u"latch/in"_s, "small", 0, false); },
+                             [&] { return arrived(5); }));
+        stopBridge(*p);
     }
 
     // Regression (issue 11, crashes 1 and 2): any client on the broker could kill a bridge by
