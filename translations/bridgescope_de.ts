@@ -192,6 +192,18 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <source>stopped: %1 messages to MQTT, %2 to ROS, %3 failed</source>
         <translation>beendet: %1 Nachrichten nach MQTT, %2 nach ROS, %3 fehlgeschlagen</translation>
     </message>
+    <message>
+        <source>Memory bound of the messages on their way, in MiB: half towards the broker (the oldest waiting are dropped beyond it), half towards ROS (roscpp&apos;s queues; a message beyond is dropped). Drops are counted and logged.</source>
+        <translation>Speichergrenze der Nachrichten unterwegs, in MiB: die Hälfte zum Broker (darüber werden die ältesten wartenden verworfen), die Hälfte zu ROS (die Warteschlangen von roscpp; eine Nachricht darüber wird verworfen). Verworfene werden gezählt und protokolliert.</translation>
+    </message>
+    <message>
+        <source>--max-queued-mib takes a number of MiB from 1 to 1048576</source>
+        <translation>--max-queued-mib erwartet eine Anzahl MiB von 1 bis 1048576</translation>
+    </message>
+    <message>
+        <source>memory bound (%1 MiB, --max-queued-mib): %2 messages to MQTT and %3 to ROS dropped so far, %4 MiB held now</source>
+        <translation>Speichergrenze (%1 MiB, --max-queued-mib): bisher %2 Nachrichten zu MQTT und %3 zu ROS verworfen, jetzt %4 MiB gehalten</translation>
+    </message>
 </context>
 <context>
     <name>BridgedTopicsProxy</name>

@@ -58,7 +58,13 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
             "Publish the type announcement with every message, exactly as mqtt_client v2.2.1 does (small "
             "messages then wait up to 40 ms for TCP's delayed ACK); by default once per type and "
             "connection."));
-    parser.addOptions({broker, master, name, arg, offset, everyMessage});
+    const QCommandLineOption queued(
+        u"max-queued-mib"_s,
+        Bridge::tr("Memory bound of the messages on their way, in MiB: half towards the broker (the oldest "
+                   "waiting are dropped beyond it), half towards ROS (roscpp's queues; a message beyond "
+                   "is dropped). Drops are counted and logged."),
+        u"MIB"_s, QString::number(ReferenceBridge::kDefaultMaxQueuedBytes >> 20));
+    parser.addOptions({broker, master, name, arg, offset, everyMessage, queued});
     parser.addPositionalArgument(u"CONFIG"_s, Bridge::tr("mqtt_client config (ROS 1 or ROS 2 layout)."),
                                  u"CONFIG.yaml"_s);
     QStringList args = arguments;
@@ -96,6 +102,12 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
         err(Bridge::tr("--clock-offset-ms takes a number of milliseconds"));
         return ExitUsage;
     }
+    const double mib = parser.value(queued).toDouble(&ok);
+    if (!ok || !(mib >= 1 && mib <= 1024 * 1024)) {
+        err(Bridge::tr("--max-queued-mib takes a number of MiB from 1 to 1048576"));
+        return ExitUsage;
+    }
+    options.maxQueuedBytes = qint64(mib * 1024 * 1024);
     for (const QString& a : parser.values(arg)) {
         const qsizetype eq = a.indexOf(u'=');
         if (eq <= 0) {
@@ -105,6 +117,16 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
         options.args.insert(a.left(eq), a.mid(eq + 1));
     }
     return -1;
+}
+
+QString droppedLine(const ReferenceBridge::Counters& c, qint64 maxQueuedBytes)
+{
+    return Bridge::tr("memory bound (%1 MiB, --max-queued-mib): %2 messages to MQTT and %3 to ROS dropped so "
+                      "far, %4 MiB held now")
+        .arg(maxQueuedBytes >> 20)
+        .arg(c.droppedToMqtt.load())
+        .arg(c.droppedToRos.load())
+        .arg(double(c.heldBytes.load()) / (1 << 20), 0, 'f', 1);
 }
 
 /// Bridges until Ctrl+C or SIGTERM; a line when it starts and the counts when it stops.
@@ -123,13 +145,29 @@ int runBridge(const BridgeRequest& request)
         return CliOutput::stopRequested() ? ExitOk : ExitFailed;
     }
     logLine(Bridge::tr("bridging %n mapping(s); Ctrl+C stops", nullptr, bridge.mappingCount()));
-    CliOutput::runUntil([](qint64) { return std::nullopt; });
-    const ReferenceBridge::Counters& c = bridge.counters();
+    // Drops at the memory bound: a line at most every 10 s while they grow.
+    quint64 droppedBefore = 0;
+    qint64 lastLineMs = -10000;
+    CliOutput::runUntil([](qint64) { return std::nullopt; },
+                        [&](qint64 elapsedMs) {
+                            if (elapsedMs - lastLineMs < 10000)
+                                return;
+                            const ReferenceBridge::Counters& c = bridge.counters();
+                            const quint64 dropped = c.droppedToMqtt.load() + c.droppedToRos.load();
+                            if (dropped == droppedBefore)
+                                return;
+                            droppedBefore = dropped;
+                            lastLineMs = elapsedMs;
+                            logLine(droppedLine(c, request.options.maxQueuedBytes));
+                        });
     bridge.stop();
+    const ReferenceBridge::Counters& c = bridge.counters();
     logLine(Bridge::tr("stopped: %1 messages to MQTT, %2 to ROS, %3 failed")
                 .arg(c.toMqtt.load())
                 .arg(c.toRos.load())
-                .arg(c.failed.load()));
+                .arg(c.failed.load() + c.failedWaiting.load()));
+    if (c.droppedToMqtt.load() + c.droppedToRos.load() > 0)
+        logLine(droppedLine(c, request.options.maxQueuedBytes));
     return ExitOk;
 }
 } // namespace

@@ -123,6 +123,11 @@ void printCell(const ExperimentRunner& runner, int index, const QString& event)
         o.insert(u"run"_s, s.run);
         if (!s.reason.isEmpty())
             o.insert(u"reason"_s, s.reason);
+        if (s.link.bytes > 0)
+            o.insert(u"link"_s,
+                     QJsonObject {{u"bytes"_s, double(s.link.bytes)},
+                                  {u"lost_bursts"_s, double(s.link.lostBursts)},
+                                  {u"read_pauses"_s, double(s.link.readPauses)}});
     }
     out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
 }

@@ -226,7 +226,7 @@ struct ReferenceBridge::Private
         qint64 outNs = now(); // the moment the message leaves: stamped before, so no receiver is earlier
         if (r.primitive) {
             const std::optional<QByteArray> text = PrimitiveText::toText(msg.type, msg.bytes);
-            ok = text && mqtt->publish(r.mqttTopic, *text, r.qos, r.retained);
+            ok = text && mqtt->send(r.mqttTopic, *text, r.qos, r.retained);
         } else {
             // As mqtt_client does: the type announcement (retained) with every message, then the
             // message, preceded by the send time when stamped.
@@ -236,14 +236,14 @@ struct ReferenceBridge::Private
             if (options.announceEveryMessage || !r.typeSent.exchange(true) || r.sentMd5 != msg.md5) {
                 const QByteArray type
                     = MqttClientWire::encodeType({msg.md5, msg.type, msg.definition, r.stamped});
-                ok = mqtt->publish(MqttClientWire::typeTopicPrefix() + r.mqttTopic, type, r.qos, true);
+                ok = mqtt->send(MqttClientWire::typeTopicPrefix() + r.mqttTopic, type, r.qos, true);
                 r.sentMd5 = msg.md5;
                 if (!ok)
                     r.typeSent = false;
             }
             const QByteArray payload = r.stamped ? MqttClientWire::stamped(now(), msg.bytes) : msg.bytes;
             outNs = now();
-            ok = ok && mqtt->publish(r.mqttTopic, payload, r.qos, r.retained);
+            ok = ok && mqtt->send(r.mqttTopic, payload, r.qos, r.retained);
         }
         (ok ? counters.toMqtt : counters.failed).fetch_add(1, std::memory_order_relaxed);
         if (ok && !r.stampPrefix.isEmpty())
@@ -297,8 +297,12 @@ struct ReferenceBridge::Private
             publisher = r.publisher;
         }
         const qint64 outNs = now(); // before it leaves, so no receiver stamps earlier
-        const bool ok = ros->publish(publisher, msg.bytes);
-        (ok ? counters.toRos : counters.failed).fetch_add(1, std::memory_order_relaxed);
+        const RosEndpoint::Sent sent = ros->send(publisher, msg.bytes);
+        const bool ok = sent == RosEndpoint::Sent::Ok;
+        (ok                                    ? counters.toRos
+             : sent == RosEndpoint::Sent::Full ? counters.droppedToRos
+                                               : counters.failed)
+            .fetch_add(1, std::memory_order_relaxed);
         if (ok && !r.stampPrefix.isEmpty())
             publishStamp(r.stampOut, sample, outNs);
         if (sentNs && r.latencyPublisher >= 0) {
@@ -384,6 +388,12 @@ ReferenceBridge::~ReferenceBridge()
 
 const ReferenceBridge::Counters& ReferenceBridge::counters() const
 {
+    if (d->mqtt) {
+        const MqttLink::QueueCounts q = d->mqtt->queueCounts();
+        d->counters.droppedToMqtt = q.dropped;
+        d->counters.failedWaiting = q.failed;
+        d->counters.heldBytes = q.heldBytes + (d->ros ? d->ros->heldBytes() : 0);
+    }
     return d->counters;
 }
 
@@ -499,13 +509,17 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
 {
     d->ros = std::make_unique<RosEndpoint>();
     d->ros->setNoticeHandler(d->log);
+    d->ros->setMaxHeldBytes(d->options.maxQueuedBytes / 2);
     const QString name = d->options.nodeName.isEmpty() ? u"mqtt_client"_s : d->options.nodeName;
     d->log(tr("waiting for the ROS master…"));
     if (!d->ros->start(name, d->options.rosMaster, keepWaiting, error))
         return false;
     d->log(tr("ROS node %1 started").arg(d->ros->nodeName()));
 
-    d->mqtt = std::make_unique<MqttLink>(d->profile, d->will);
+    MqttLink::Options linkOptions;
+    linkOptions.will = d->will;
+    linkOptions.maxQueuedBytes = d->options.maxQueuedBytes / 2;
+    d->mqtt = std::make_unique<MqttLink>(d->profile, linkOptions);
     Private* p = d.get();
     QHash<QString, Route*> byMqtt;
     QHash<QString, Route*> byTypeTopic;
@@ -571,6 +585,7 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
 
 void ReferenceBridge::stop()
 {
+    counters(); // the last figures of the queues, kept
     if (d->mqtt)
         d->mqtt->disconnect();
     if (d->ros)

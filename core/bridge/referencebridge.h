@@ -32,12 +32,17 @@ RosRawMessage fromText(const QByteArray& text);
 /// `timestamp_topic_prefix`: TimeStamped on `<prefix>/in` when a message enters the bridge and
 /// `<prefix>/out` when it has left.
 ///
-/// Messages are forwarded on the receiving library's thread, without queueing in between.
+/// Messages are forwarded on the receiving library's thread, without queueing in between, while
+/// the libraries take them. Memory is bounded (Options::maxQueuedBytes): towards the broker, what
+/// Paho holds and what waits for it take half the bound, the oldest waiting dropped beyond it;
+/// towards ROS, what roscpp holds (its queues towards slow subscribers) takes the other half, and
+/// a message that would go beyond is dropped. Both are counted.
 class ReferenceBridge
 {
     Q_DECLARE_TR_FUNCTIONS(ReferenceBridge)
 public:
     using Log = std::function<void(const QString& line)>;
+    static constexpr qint64 kDefaultMaxQueuedBytes = 64 * 1024 * 1024;
 
     struct Options
     {
@@ -51,6 +56,8 @@ public:
         /// Announce the type with every message, as mqtt_client v2.2.1 does (and pay for it: see
         /// docs/formats.md); by default once per type and connection (it is retained).
         bool announceEveryMessage = false;
+        /// The bridge's memory bound for messages on their way (see the class), in bytes.
+        qint64 maxQueuedBytes = kDefaultMaxQueuedBytes;
     };
 
     struct Counters
@@ -58,6 +65,11 @@ public:
         std::atomic<quint64> toMqtt {0};
         std::atomic<quint64> toRos {0};
         std::atomic<quint64> failed {0}; ///< could not be sent (broker away, bad payload)
+        // At the memory bound (updated by counters()):
+        std::atomic<quint64> droppedToMqtt {0}; ///< the oldest waiting for the broker
+        std::atomic<quint64> droppedToRos {0}; ///< not handed to roscpp, which held its half
+        std::atomic<quint64> failedWaiting {0}; ///< waited for the broker, then could not be sent
+        std::atomic<qint64> heldBytes {0}; ///< now: waiting for the broker, held by Paho and roscpp
     };
 
     explicit ReferenceBridge(Log log);

@@ -340,6 +340,14 @@ void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
     if (!reason.isEmpty())
         status.reason = reason.trimmed().left(2000);
     status.finished = QDateTime::currentDateTimeUtc();
+    status.link = {};
+    for (const LinkRelay* relay : {c.vehicleRelay.get(), c.cloudRelay.get()}) {
+        if (!relay)
+            continue;
+        status.link.bytes += relay->bytesRelayed();
+        status.link.lostBursts += relay->burstsLost();
+        status.link.readPauses += relay->readPauses();
+    }
     m_cell.reset(); // stops the lab
     writeState();
     qCDebug(lcDemo).noquote() << "cell" << m_plan.cells[m_current].id() << CellStatus::stateName(state)

@@ -19,6 +19,14 @@ struct CellStatus
     qint64 samples = 0; ///< recorded
     QDateTime started;
     QDateTime finished;
+    /// The link profile's relays, summed (all zero without one): bytes relayed, bursts "lost"
+    /// (delivered late), and how often reading paused because the relays held their memory bound.
+    struct Link
+    {
+        quint64 bytes = 0;
+        quint64 lostBursts = 0;
+        quint64 readPauses = 0;
+    } link;
     static QString stateName(State s);
 };
 

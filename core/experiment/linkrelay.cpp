@@ -16,6 +16,10 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr qint64 kBurstGapNs = 1'000'000; ///< chunks closer than this belong to one burst (one message)
+constexpr int kResumePollMs = 5; ///< a paused direction looks again this often (another may have drained)
+
+/// What all pipes of the process hold: read, and not yet written to the kernel.
+std::atomic<qint64> g_heldBytes {0};
 
 qint64 nowNs()
 {
@@ -41,20 +45,37 @@ public:
         m_timer.setSingleShot(true);
         m_timer.setTimerType(Qt::PreciseTimer);
         connect(&m_timer, &QTimer::timeout, this, &Pipe::release);
+        connect(&m_resume, &QTimer::timeout, this, &Pipe::take);
         connect(from, &QTcpSocket::readyRead, this, &Pipe::take);
+        connect(to, &QTcpSocket::bytesWritten, this, [this] {
+            account();
+            if (m_paused)
+                take();
+        });
     }
+
+    ~Pipe() override { g_heldBytes -= m_held; }
 
     void take()
     {
-        if (m_queued >= kMaxQueuedBytes)
-            return; // TCP's window closes behind us; release() reads on
+        // Qt reads at most kReadBufferBytes into `from` while we do not: the rest waits in the
+        // kernel, and TCP's window closes towards the sender.
+        const qint64 room = kMaxHeldBytes - g_heldBytes.load();
+        if (room <= 0) {
+            pause();
+            return;
+        }
+        if (m_paused) {
+            m_paused = false;
+            m_resume.stop();
+        }
         // Ask for what is there, never for the room left: QIODevice::read(maxSize) first resizes
         // its result to maxSize (64 MiB here, a 128 MiB block once QByteArray rounds it up), reads
         // into it, and only then shrinks the size, not the block. Each chunk, even an empty read,
         // cost an mmap and a munmap (0.4 ms a hop in a normal build) and, under ASan, the poisoning
         // of 16 MiB of shadow at allocation and at free (50-200 ms each): ~0.15 s a hop, ~1 s late
         // across a bridge's hops. A queued chunk also kept its 128 MiB block alive.
-        const qint64 available = std::min(m_from->bytesAvailable(), kMaxQueuedBytes - m_queued);
+        const qint64 available = std::min(m_from->bytesAvailable(), room);
         if (available <= 0)
             return;
         const QByteArray bytes = m_from->read(available);
@@ -82,6 +103,7 @@ public:
         m_lastReleaseNs = at;
         m_queue.push_back({at, bytes});
         m_queued += bytes.size();
+        account();
         schedule();
     }
 
@@ -96,7 +118,8 @@ public:
             m_queued -= b.size();
             m_queue.pop_front();
         }
-        if (m_from->bytesAvailable() > 0)
+        account(); // written bytes stay held until the kernel has them (bytesWritten)
+        if (m_from->bytesAvailable() > 0 || m_paused)
             take();
         schedule();
         if (m_queue.empty() && m_closing)
@@ -113,6 +136,24 @@ public:
     }
 
 private:
+    /// Brings the process's count up to date with what this direction holds now.
+    void account()
+    {
+        const qint64 held = m_queued + m_to->bytesToWrite();
+        g_heldBytes += held - m_held;
+        m_held = held;
+    }
+
+    void pause()
+    {
+        if (!m_paused) {
+            m_paused = true;
+            ++m_relay->m_pauses;
+        }
+        if (!m_resume.isActive())
+            m_resume.start(kResumePollMs); // another pipe (or relay) may be the one that drains
+    }
+
     void schedule()
     {
         if (m_queue.empty()) {
@@ -133,8 +174,11 @@ private:
     std::uniform_real_distribution<double> m_uniform {0, 1};
     LinkRelay* m_relay;
     QTimer m_timer;
+    QTimer m_resume; ///< while paused
     std::deque<std::pair<qint64, QByteArray>> m_queue; ///< (release time, bytes)
     qint64 m_queued = 0;
+    qint64 m_held = 0; ///< m_queued plus what `to` has not yet written, as g_heldBytes counts it
+    bool m_paused = false;
     qint64 m_lastArrivalNs = 0;
     qint64 m_burstDelayNs = 0;
     qint64 m_wireFreeNs = 0;
@@ -153,6 +197,8 @@ public:
         , m_upstream(new QTcpSocket(this))
     {
         client->setParent(this);
+        client->setReadBufferSize(kReadBufferBytes);
+        m_upstream->setReadBufferSize(kReadBufferBytes);
         client->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         m_upstream->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         m_up = new Pipe(client, m_upstream, profile, seed, relay, this);
@@ -171,6 +217,12 @@ public:
             finishIfDone();
         });
         m_upstream->connectToHost(host, port);
+    }
+
+    ~Connection() override
+    {
+        delete m_up; // before the sockets (children made earlier): a pipe never sees a deleted one
+        delete m_down;
     }
 
 private:
@@ -227,6 +279,11 @@ std::unique_ptr<LinkRelay> LinkRelay::start(const LinkProfile& profile, const QS
         return nullptr;
     }
     return r;
+}
+
+qint64 LinkRelay::heldBytes()
+{
+    return g_heldBytes.load();
 }
 
 LinkRelay::~LinkRelay()

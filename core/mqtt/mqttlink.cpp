@@ -5,16 +5,90 @@
 #include "base/wallclock.h"
 #include "mqtt/pahooptions.h"
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <deque>
 #include <mqtt/async_client.h>
 #include <mutex>
+#include <thread>
+#include <unordered_map>
 #include <vector>
+
+namespace {
+/// A message send() keeps until Paho has room for it.
+struct Outgoing
+{
+    QString topic;
+    QByteArray payload;
+    int qos = 0;
+    bool retained = false;
+};
+
+/// The bytes of the messages handed to Paho and not yet done with (written, acknowledged, failed),
+/// by the id each travels with as its user context. A reconnect forgets them: Paho frees what it
+/// had not sent without telling, and a late answer then finds nothing to subtract.
+class Handed : public mqtt::iaction_listener
+{
+public:
+    /// Registers a message of `bytes` about to be handed; its id.
+    std::uintptr_t add(qint64 bytes)
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        const std::uintptr_t id = ++m_lastId;
+        m_bytesById.emplace(id, bytes);
+        m_bytes += bytes;
+        return id;
+    }
+    void remove(std::uintptr_t id)
+    {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            const auto it = m_bytesById.find(id);
+            if (it == m_bytesById.end())
+                return;
+            m_bytes -= it->second;
+            m_bytesById.erase(it);
+        }
+        if (m_wake)
+            m_wake->notify_all();
+    }
+    void forget()
+    {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_bytesById.clear();
+            m_bytes = 0;
+        }
+        if (m_wake)
+            m_wake->notify_all();
+    }
+    qint64 bytes() const
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        return m_bytes;
+    }
+    /// Notified (without its mutex: a waiter also looks again every few ms) when bytes are done.
+    void setWake(std::condition_variable* wake) { m_wake = wake; }
+
+    void on_success(const mqtt::token& t) override { remove(std::uintptr_t(t.get_user_context())); }
+    void on_failure(const mqtt::token& t) override { remove(std::uintptr_t(t.get_user_context())); }
+
+private:
+    mutable std::mutex m_mutex; ///< never held while calling Paho
+    std::condition_variable* m_wake = nullptr;
+    std::unordered_map<std::uintptr_t, qint64> m_bytesById;
+    std::uintptr_t m_lastId = 0;
+    qint64 m_bytes = 0;
+};
+} // namespace
 
 struct MqttLink::Private
 {
     MqttProfile profile;
     Options options;
     QString clientId;
+    Handed handed; ///< before `client`: it outlives Paho's callbacks
     std::unique_ptr<mqtt::async_client> client;
     std::mutex mutex; ///< guards the handlers and subscriptions
     MessageHandler onMessage;
@@ -23,6 +97,25 @@ struct MqttLink::Private
     std::vector<std::pair<std::string, int>> subscriptions;
     int connects = 0;
     bool closing = false; ///< disconnect() has begun: no reconnect from a late callback
+
+    // send(): the messages waiting for room in Paho, and the thread that hands them on.
+    std::mutex sendMutex; ///< guards the queue and orders hand-overs; taken before Paho's locks
+    std::condition_variable sendWake;
+    std::deque<Outgoing> waiting;
+    qint64 waitingBytes = 0;
+    std::atomic<quint64> dropped {0};
+    std::atomic<quint64> failedLater {0};
+    std::thread sender;
+    std::atomic<bool> stopSender {false};
+
+    qint64 shareBytes() const { return options.maxQueuedBytes / 2; }
+    /// Whether Paho may take `bytes` more (counted twice: its two copies); one message always.
+    bool pahoHasRoom(qint64 handedBytes, qint64 bytes) const
+    {
+        return handedBytes <= 0 || handedBytes + 2 * bytes <= shareBytes();
+    }
+    Sent hand(const Outgoing& o);
+    void sendLoop();
 
     void subscribeAll()
     {
@@ -46,6 +139,54 @@ struct MqttLink::Private
     }
 };
 
+namespace {
+bool isFull(const mqtt::exception& e)
+{
+    // The in-flight window (QoS 1/2) or the queue of messages not yet written is full.
+    return e.get_return_code() == MQTTASYNC_MAX_MESSAGES_INFLIGHT
+        || e.get_return_code() == MQTTASYNC_MAX_BUFFERED_MESSAGES;
+}
+} // namespace
+
+MqttLink::Sent MqttLink::Private::hand(const Outgoing& o)
+{
+    if (!client)
+        return Sent::Failed;
+    const std::uintptr_t id = handed.add(2 * qint64(o.payload.size()));
+    try {
+        client->publish(o.topic.toStdString(), o.payload.constData(), std::size_t(o.payload.size()), o.qos,
+                        o.retained, reinterpret_cast<void*>(id), handed);
+    } catch (const mqtt::exception& e) {
+        handed.remove(id);
+        return isFull(e) ? Sent::Full : Sent::Failed;
+    }
+    return Sent::Ok;
+}
+
+void MqttLink::Private::sendLoop()
+{
+    std::unique_lock<std::mutex> lock(sendMutex);
+    const auto ready
+        = [this] { return !waiting.empty() && pahoHasRoom(handed.bytes(), waiting.front().payload.size()); };
+    while (!stopSender) {
+        // Paho's answers notify without our lock: a missed one costs at most these 10 ms.
+        sendWake.wait_for(lock, std::chrono::milliseconds(10), [&] { return stopSender || ready(); });
+        if (stopSender || !ready())
+            continue;
+        Outgoing o = std::move(waiting.front());
+        waiting.pop_front();
+        const Sent sent = hand(o);
+        if (sent == Sent::Full) { // Paho's own count of messages not yet written: soon again
+            waiting.push_front(std::move(o));
+            sendWake.wait_for(lock, std::chrono::milliseconds(2));
+            continue;
+        }
+        waitingBytes -= o.payload.size();
+        if (sent == Sent::Failed)
+            ++failedLater;
+    }
+}
+
 MqttLink::MqttLink(const MqttProfile& profile, const MqttWill& will)
     : MqttLink(profile, Options {will, true, 0})
 { }
@@ -56,6 +197,7 @@ MqttLink::MqttLink(const MqttProfile& profile, const Options& options)
     d->profile = profile;
     d->options = options;
     d->clientId = QString::fromStdString(PahoOptions::clientId(profile));
+    d->handed.setWake(&d->sendWake);
 }
 
 const QString& MqttLink::clientId() const
@@ -135,6 +277,8 @@ bool MqttLink::connect(int timeoutMs, QString* error)
                 handler = self->onConnected;
                 reconnect = self->connects++ > 0;
             }
+            if (reconnect)
+                self->handed.forget();
             if (handler)
                 handler(reconnect);
         });
@@ -164,6 +308,10 @@ bool MqttLink::connect(int timeoutMs, QString* error)
         if (!will.topic.isEmpty())
             builder.will(mqtt::message(will.topic.toStdString(), will.message.constData(),
                                        std::size_t(will.message.size()), will.qos, will.retained));
+        if (d->options.maxQueuedBytes > 0 && !d->sender.joinable()) {
+            d->stopSender = false;
+            d->sender = std::thread([p = d.get()] { p->sendLoop(); });
+        }
         mqtt::token_ptr token = d->client->connect(builder.finalize());
         if (!token->wait_for(std::chrono::milliseconds(timeoutMs))) {
             if (error)
@@ -218,9 +366,7 @@ MqttLink::Sent MqttLink::tryPublish(const QString& topic, const char* data, qsiz
     try {
         d->client->publish(topic.toStdString(), data, std::size_t(size), qos, retained);
     } catch (const mqtt::exception& e) {
-        // The in-flight window (QoS 1/2) or the queue of messages not yet written is full.
-        if (e.get_return_code() == MQTTASYNC_MAX_MESSAGES_INFLIGHT
-            || e.get_return_code() == MQTTASYNC_MAX_BUFFERED_MESSAGES)
+        if (isFull(e))
             return Sent::Full;
         if (error)
             *error = tr("cannot publish on %1: %2").arg(topic, QString::fromStdString(e.what()));
@@ -229,8 +375,48 @@ MqttLink::Sent MqttLink::tryPublish(const QString& topic, const char* data, qsiz
     return Sent::Ok;
 }
 
+bool MqttLink::send(const QString& topic, const QByteArray& payload, int qos, bool retained)
+{
+    if (d->options.maxQueuedBytes <= 0)
+        return publish(topic, payload, qos, retained);
+    std::lock_guard<std::mutex> lock(d->sendMutex);
+    Outgoing o {topic, payload, qos, retained};
+    if (d->waiting.empty() && d->pahoHasRoom(d->handed.bytes(), payload.size())) {
+        const Sent sent = d->hand(o);
+        if (sent != Sent::Full)
+            return sent == Sent::Ok;
+    }
+    d->waitingBytes += payload.size();
+    d->waiting.push_back(std::move(o));
+    while (d->waitingBytes > d->shareBytes() && d->waiting.size() > 1) {
+        d->waitingBytes -= d->waiting.front().payload.size();
+        d->waiting.pop_front();
+        ++d->dropped;
+    }
+    d->sendWake.notify_one();
+    return true;
+}
+
+MqttLink::QueueCounts MqttLink::queueCounts() const
+{
+    QueueCounts c;
+    c.dropped = d->dropped.load();
+    c.failed = d->failedLater.load();
+    std::lock_guard<std::mutex> lock(d->sendMutex);
+    c.heldBytes = d->waitingBytes + d->handed.bytes();
+    return c;
+}
+
 void MqttLink::disconnect()
 {
+    if (d->sender.joinable()) {
+        {
+            std::lock_guard<std::mutex> lock(d->sendMutex);
+            d->stopSender = true;
+        }
+        d->sendWake.notify_all();
+        d->sender.join();
+    }
     if (!d->client)
         return;
     {
@@ -244,6 +430,7 @@ void MqttLink::disconnect()
         if (d->client->is_connected())
             d->client->disconnect(std::chrono::milliseconds(500))->wait_for(std::chrono::seconds(2));
     } catch (const mqtt::exception&) { }
+    std::lock_guard<std::mutex> lock(d->sendMutex); // send() hands on under it
     d->client.reset();
 }
 

@@ -36,6 +36,18 @@ public:
         MqttWill will;
         bool autoReconnect = true; ///< false: a lost connection stays lost (the probe reports it)
         int maxInflight = 0; ///< unacknowledged QoS 1/2 messages; 0: Paho's default
+        /// The memory bound of send(), in bytes (0: send() is publish()). Paho keeps two copies of a
+        /// message until it is written (QoS 0) or acknowledged: those count twice and may take a
+        /// half; the messages waiting behind them the other half, the oldest dropped beyond it.
+        qint64 maxQueuedBytes = 0;
+    };
+
+    /// What send() did with the messages it could not hand to Paho at once.
+    struct QueueCounts
+    {
+        quint64 dropped = 0; ///< the oldest, at the memory bound
+        quint64 failed = 0; ///< waited, then Paho refused them (disconnected)
+        qint64 heldBytes = 0; ///< now: waiting, and handed to Paho (twice) and not yet done
     };
 
     MqttLink(const MqttProfile& profile, const MqttWill& will = {});
@@ -61,6 +73,12 @@ public:
     /// again soon) from a failure.
     Sent tryPublish(const QString& topic, const char* data, qsizetype size, int qos, bool retained,
                     QString* error = nullptr);
+    /// publish() within Options::maxQueuedBytes: hands the message to Paho now when Paho holds
+    /// less than its share and nothing waits, else queues it behind the others (a thread of the
+    /// link's own hands them on, in order), dropping the oldest waiting beyond the bound. False
+    /// when it failed at once (not connected).
+    bool send(const QString& topic, const QByteArray& payload, int qos, bool retained);
+    QueueCounts queueCounts() const;
     /// Disconnects cleanly (the broker does not send the last will).
     void disconnect();
     bool isConnected() const;

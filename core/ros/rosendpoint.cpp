@@ -5,15 +5,75 @@
 #include "ros/rosbytes.h"
 #include "ros/rosreregistration.h"
 
+#include <atomic>
 #include <condition_variable>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <ros/ros.h>
 #include <thread>
 #include <topic_tools/shape_shifter.h>
+#include <utility>
 #include <vector>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+/// Bytes to publish as they are, with their type by name (as ShapeShifter carries them, but copied
+/// once, not twice); the serialized buffer tells `held` when roscpp lets go of it.
+struct CountedBytes
+{
+    const std::string& md5;
+    const std::string& type;
+    const std::string& definition;
+    const QByteArray& bytes;
+    std::shared_ptr<std::atomic<qint64>> held;
+};
+} // namespace
+
+namespace ros {
+namespace message_traits {
+template<> struct IsMessage<CountedBytes> : TrueType
+{
+};
+template<> struct MD5Sum<CountedBytes>
+{
+    static const char* value() { return "*"; }
+    static const char* value(const CountedBytes& m) { return m.md5.c_str(); }
+};
+template<> struct DataType<CountedBytes>
+{
+    static const char* value() { return "*"; }
+    static const char* value(const CountedBytes& m) { return m.type.c_str(); }
+};
+template<> struct Definition<CountedBytes>
+{
+    static const char* value() { return ""; }
+    static const char* value(const CountedBytes& m) { return m.definition.c_str(); }
+};
+} // namespace message_traits
+
+namespace serialization {
+/// Called by roscpp only when someone subscribes (or the topic is latched).
+template<> inline SerializedMessage serializeMessage<CountedBytes>(const CountedBytes& m)
+{
+    const uint32_t length = uint32_t(m.bytes.size());
+    const std::size_t total = std::size_t(length) + 4;
+    std::shared_ptr<std::atomic<qint64>> held = m.held;
+    *held += qint64(total);
+    boost::shared_array<uint8_t> buf(new uint8_t[total], [held, total](uint8_t* p) {
+        delete[] p;
+        *held -= qint64(total);
+    });
+    OStream out(buf.get(), uint32_t(total));
+    serialize(out, length);
+    SerializedMessage serialized(buf, total);
+    serialized.message_start = out.getData();
+    std::memcpy(out.getData(), m.bytes.constData(), length);
+    return serialized;
+}
+} // namespace serialization
+} // namespace ros
 
 struct RosEndpoint::Private
 {
@@ -25,9 +85,15 @@ struct RosEndpoint::Private
     {
         ros::Publisher pub;
         std::string type, md5, definition;
+        bool latched = false;
+        qint64 lastBytes = 0; ///< latched: the message roscpp keeps for late subscribers
     };
     std::vector<Publisher> publishers; ///< retired ones have an empty `pub`
     std::vector<int> freeIds; ///< retired slots, reused so that type changes do not grow the table
+    /// What roscpp holds of our messages: shared with their buffers, which may outlive us.
+    std::shared_ptr<std::atomic<qint64>> held = std::make_shared<std::atomic<qint64>>(0);
+    std::atomic<qint64> maxHeld {0};
+    qint64 latchedBytes = 0; ///< of `held`, the latched topics' last messages (not a queue: never refused)
 
     // Watches the master: a restarted one is told about our topics again.
     std::thread watch;
@@ -120,6 +186,7 @@ void RosEndpoint::shutdown()
         std::lock_guard<std::mutex> lock(d->mutex);
         d->publishers.clear();
         d->freeIds.clear();
+        d->latchedBytes = 0;
     }
     d->node.reset();
     ros::shutdown();
@@ -187,7 +254,7 @@ int RosEndpoint::advertise(const QString& topic, const QString& type, const QStr
 {
     if (!d->node)
         return -1;
-    Private::Publisher p {{}, type.toStdString(), md5.toStdString(), definition.toStdString()};
+    Private::Publisher p {{}, type.toStdString(), md5.toStdString(), definition.toStdString(), latched, 0};
     try {
         ros::AdvertiseOptions options(topic.toStdString(), uint32_t(std::max(1, queueSize)), p.md5, p.type,
                                       p.definition);
@@ -226,6 +293,7 @@ void RosEndpoint::retire(int publisher)
             return;
         old = std::move(d->publishers[std::size_t(publisher)].pub);
         d->publishers[std::size_t(publisher)].pub = ros::Publisher();
+        d->latchedBytes -= std::exchange(d->publishers[std::size_t(publisher)].lastBytes, 0);
         d->freeIds.push_back(publisher);
     }
     old.shutdown(); // unregisters from the master: outside our lock
@@ -233,18 +301,40 @@ void RosEndpoint::retire(int publisher)
 
 bool RosEndpoint::publish(int publisher, const QByteArray& bytes)
 {
+    return send(publisher, bytes) == Sent::Ok;
+}
+
+RosEndpoint::Sent RosEndpoint::send(int publisher, const QByteArray& bytes)
+{
     std::lock_guard<std::mutex> lock(d->mutex);
     if (publisher < 0 || std::size_t(publisher) >= d->publishers.size())
-        return false;
-    const Private::Publisher& p = d->publishers[std::size_t(publisher)];
+        return Sent::Failed;
+    Private::Publisher& p = d->publishers[std::size_t(publisher)];
     if (!p.pub)
-        return false;
+        return Sent::Failed;
+    // What roscpp queues: a latched topic's last message would otherwise stop all that follow.
+    const qint64 queued = d->held->load() - d->latchedBytes;
+    const qint64 max = d->maxHeld.load();
+    if (max > 0 && queued > 0 && queued + bytes.size() + 4 > max)
+        return Sent::Full;
     try {
-        p.pub.publish(RosBytes::shaped(p.md5, p.type, p.definition, bytes));
+        p.pub.publish(CountedBytes {p.md5, p.type, p.definition, bytes, d->held});
     } catch (const ros::Exception&) {
-        return false;
+        return Sent::Failed;
     }
-    return true;
+    if (p.latched)
+        d->latchedBytes += bytes.size() + 4 - std::exchange(p.lastBytes, bytes.size() + 4);
+    return Sent::Ok;
+}
+
+void RosEndpoint::setMaxHeldBytes(qint64 bytes)
+{
+    d->maxHeld = bytes;
+}
+
+qint64 RosEndpoint::heldBytes() const
+{
+    return d->held->load();
 }
 
 int RosEndpoint::subscriberCount(int publisher) const

@@ -55,6 +55,16 @@ public:
     /// is invalid afterwards and may be handed out again.
     void retire(int publisher);
     bool publish(int publisher, const QByteArray& bytes);
+    enum class Sent { Ok, Full, Failed };
+    /// publish() within the bound of setMaxHeldBytes(): Full, and not published, when roscpp would
+    /// then hold more.
+    Sent send(int publisher, const QByteArray& bytes);
+    /// Bounds the bytes roscpp holds of the messages published here (queued towards subscribers
+    /// that read slower, at most queue_size each, and a latched topic's last message); one message
+    /// always passes. 0 (the default): no bound.
+    void setMaxHeldBytes(qint64 bytes);
+    /// The bytes roscpp holds now of the messages published here.
+    qint64 heldBytes() const;
     int subscriberCount(int publisher) const;
 
 private:

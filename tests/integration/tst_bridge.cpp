@@ -9,6 +9,7 @@
 #include "fixtures.h"
 #include "latency/latencyengine.h"
 #include "mqtt/mqttlink.h"
+#include "peakrss.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "ros/rosmasterapi.h"
@@ -16,8 +17,12 @@
 #include "wire/mqttclientwire.h"
 #include "wire/stampcodec.h"
 
+#include <atomic>
+#include <csignal>
 #include <mutex>
+#include <QElapsedTimer>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <sensor_msgs/PointCloud2.h>
@@ -68,6 +73,11 @@ RosRawMessage fixtureMessage(const QString& name)
 }
 } // namespace
 
+/// The flood tests' messages, and what a bridge may hold beyond its bound (a message on its way
+/// in each library, allocation slack).
+constexpr int kFloodBytes = 2 * 1024 * 1024;
+constexpr qint64 kSlackBytes = 32LL * 1024 * 1024;
+
 class TestBridge : public QObject
 {
     Q_OBJECT
@@ -78,9 +88,11 @@ private:
     std::unique_ptr<MqttLink> m_mqtt; ///< the test's MQTT client, subscribed to everything
     Inbox m_fromMqtt;
     Inbox m_fromRos;
+    std::atomic<int> m_floodArrived {0}; ///< messages on flood/... (counted, not kept)
 
     /// Starts `bridgescope bridge` on `config`; its log goes to our stderr unless `captureLog`.
-    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QString& name, bool captureLog = false)
+    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QString& name, bool captureLog = false,
+                                     const QStringList& options = {})
     {
         const QString path = m_dir.filePath(name + u".yaml"_s);
         QFile f(path);
@@ -92,7 +104,8 @@ private:
         if (!captureLog)
             p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
         p->start(QStringLiteral(BRIDGESCOPE_BINARY),
-                 {u"bridge"_s, path, u"--broker"_s, m_servers.brokerUrl(), u"--name"_s, name});
+                 QStringList {u"bridge"_s, path, u"--broker"_s, m_servers.brokerUrl(), u"--name"_s, name}
+                     + options);
         return p;
     }
 
@@ -131,6 +144,57 @@ private:
         return false;
     }
 
+    /// Stops `p` and returns the figures of its memory-bound line: dropped to MQTT, to ROS.
+    static std::pair<qint64, qint64> droppedOf(QProcess& p)
+    {
+        p.terminate();
+        if (!p.waitForFinished(10000))
+            return {-1, -1};
+        const QString log = QString::fromUtf8(p.readAllStandardError());
+        static const QRegularExpression line(
+            u"memory bound .*: (\\d+) messages to MQTT and (\\d+) to ROS dropped"_s);
+        QRegularExpressionMatch m;
+        for (const QString& l : log.split(u'\n'))
+            if (const QRegularExpressionMatch found = line.match(l); found.hasMatch())
+                m = found; // the last
+        if (!m.hasMatch()) {
+            qWarning("%s", qPrintable(log.right(3000)));
+            return {0, 0};
+        }
+        qInfo("%s", qPrintable(m.captured(0)));
+        return {m.captured(1).toLongLong(), m.captured(2).toLongLong()};
+    }
+
+    /// Calls `send` for kFloodSeconds (a ms apart), with the broker or a ROS subscriber stopped
+    /// (SIGSTOP) meanwhile; the growth of the bridge's peak RSS.
+    static qint64 floodWhileStopped(QProcess& bridge, qint64 stoppedPid, const std::function<void()>& send)
+    {
+        constexpr int kFloodSeconds = 3;
+        const qint64 baseline = PeakRss::of(bridge.processId());
+        ::kill(pid_t(stoppedPid), SIGSTOP);
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < kFloodSeconds * 1000) {
+            send();
+            QTest::qWait(1);
+        }
+        const qint64 peak = PeakRss::of(bridge.processId());
+        ::kill(pid_t(stoppedPid), SIGCONT);
+        qInfo("bridge peak RSS %.1f MiB over its baseline of %.1f MiB", double(peak - baseline) / (1 << 20),
+              double(baseline) / (1 << 20));
+        return peak - baseline;
+    }
+
+    /// Stops `p`, which grew by `grown`: within its bound, and it dropped messages one way only.
+    static void expectBoundHeld(QProcess& p, qint64 grown, bool towardsMqtt)
+    {
+        const auto [toMqtt, toRos] = droppedOf(p);
+        QVERIFY2(grown < ReferenceBridge::kDefaultMaxQueuedBytes + kSlackBytes,
+                 qPrintable(u"the bridge grew by %1 MiB"_s.arg(grown >> 20)));
+        QVERIFY((towardsMqtt ? toMqtt : toRos) > 0);
+        QCOMPARE(towardsMqtt ? toRos : toMqtt, qint64(0));
+    }
+
     static void stopBridge(QProcess& p)
     {
         p.terminate(); // SIGTERM: a clean stop
@@ -148,8 +212,13 @@ private slots:
         QVERIFY2(m_ros.start(u"bridge_test"_s, m_servers.rosMasterUri(), {}, &error), qPrintable(error));
         m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
         Inbox* inbox = &m_fromMqtt;
-        m_mqtt->setMessageHandler(
-            [inbox](const QString& t, const QByteArray& p, qint64) { inbox->add(t, p); });
+        std::atomic<int>* flood = &m_floodArrived;
+        m_mqtt->setMessageHandler([inbox, flood](const QString& t, const QByteArray& p, qint64) {
+            if (t.startsWith(u"flood/"_s))
+                ++*flood;
+            else
+                inbox->add(t, p);
+        });
         m_mqtt->addSubscription(u"#"_s, 0);
         QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
     }
@@ -420,6 +489,75 @@ private slots:
         const std::optional<RosGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
         const RosTopicInfo* t = g ? g->topic(topic) : nullptr;
         return t ? *t : RosTopicInfo();
+    }
+
+    // Issue 31: a ROS flood towards a broker that does not read grew the bridge by 80 MB/s to
+    // 4.8 GB: Paho queues 100 messages of any size, and keeps two copies of each. Now what Paho
+    // holds and what waits for it stay within half the bound, the oldest waiting dropped, counted
+    // and logged.
+    void aFloodTowardsAStalledBrokerHoldsTheMemoryBound()
+    {
+        auto p = bridge("bridge:\n  ros2mqtt:\n    - {ros_topic: /flood/out, mqtt_topic: flood/out}\n",
+                        u"flood_out"_s, true);
+        const RosRawMessage big = PrimitiveText::fromText(QByteArray(kFloodBytes, 'x'));
+        const int pub = advertise(u"/flood/out"_s, big);
+        m_floodArrived = 0;
+        QVERIFY(publishUntil([&] { m_ros.publish(pub, big.bytes); }, [&] { return m_floodArrived > 0; }));
+        const qint64 grown
+            = floodWhileStopped(*p, m_servers.mosquittoPid(), [&] { m_ros.publish(pub, big.bytes); });
+        m_ros.retire(pub);
+        expectBoundHeld(*p, grown, true);
+    }
+
+    // Issue 31: an MQTT flood towards a ROS subscriber that does not read grew the bridge by
+    // queue_size messages of any size (roscpp's queue towards that subscriber). Now what roscpp
+    // holds stays within half the bound; the messages beyond are dropped, counted and logged.
+    void aFloodTowardsAStalledRosSubscriberHoldsTheMemoryBound()
+    {
+        auto p = bridge("bridge:\n  mqtt2ros:\n    - mqtt_topic: flood/in\n      ros_topic: /flood/in\n"
+                        "      primitive: true\n      advanced: {ros: {queue_size: 1000}}\n",
+                        u"flood_in"_s, true);
+        QProcess hz; // a real subscriber, stopped while the flood lasts
+        QProcessEnvironment env = m_servers.rosEnvironment();
+        env.insert(u"PYTHONUNBUFFERED"_s, u"1"_s); // its rates as they come
+        hz.setProcessEnvironment(env);
+        hz.start(u"/usr/bin/python3"_s, {u"/usr/bin/rostopic"_s, u"hz"_s, u"/flood/in"_s});
+        QVERIFY(hz.waitForStarted());
+        QByteArray rates;
+        QVERIFY(publishUntil([&] { m_mqtt->publish(u"flood/in"_s, "x", 0, false); },
+                             [&] { return (rates += hz.readAllStandardOutput()).contains("average rate"); }));
+        // The test's own client holds little: a bound of its own, the oldest dropped.
+        MqttLink::Options options;
+        options.maxQueuedBytes = 16 * 1024 * 1024;
+        MqttLink flooder(MqttProfile::fromUrl(m_servers.brokerUrl()), options);
+        QString error;
+        QVERIFY2(flooder.connect(5000, &error), qPrintable(error));
+        const QByteArray big(kFloodBytes, 'x');
+        const qint64 grown
+            = floodWhileStopped(*p, hz.processId(), [&] { flooder.send(u"flood/in"_s, big, 0, false); });
+        hz.kill();
+        hz.waitForFinished();
+        expectBoundHeld(*p, grown, false);
+    }
+
+    // The bound counts what roscpp queues, not the last message a latched topic keeps: one larger
+    // than the bound's half would otherwise refuse every message after it.
+    void aLatchedBigMessageDoesNotStopTheOnesAfterIt()
+    {
+        auto p = bridge("bridge:\n  mqtt2ros:\n    - mqtt_topic: latch/in\n      ros_topic: /latch/in\n"
+                        "      primitive: true\n      advanced: {ros: {latched: true}}\n",
+                        u"latch_in"_s, true, {u"--max-queued-mib"_s, u"8"_s});
+        listenRos(u"/latch/in"_s);
+        const QByteArray big(6 * 1024 * 1024, 'x');
+        const auto arrived = [&](qsizetype size) {
+            const QList<QByteArray> got = m_fromRos.on(u"/latch/in"_s);
+            return !got.isEmpty() && got.last().size() == size + 4; // a std_msgs/String
+        };
+        QVERIFY(publishUntil([&] { m_mqtt->publish(u"latch/in"_s, big, 0, false); },
+                             [&] { return arrived(big.size()); }));
+        QVERIFY(publishUntil([&] { m_mqtt->publish(u"latch/in"_s, "small", 0, false); },
+                             [&] { return arrived(5); }));
+        stopBridge(*p);
     }
 
     // Regression (issue 11, crashes 1 and 2): any client on the broker could kill a bridge by
