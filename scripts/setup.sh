@@ -11,7 +11,7 @@ PACKAGES=(
     clang-14 libclang-rt-14-dev llvm-14
     # Qt 6 (Widgets, Charts, Svg, Sql/SQLite, translations)
     qt6-base-dev libqt6opengl6-dev libxkbcommon-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
-    libqt6sql6-sqlite qtkeychain-qt6-dev
+    libqt6sql6-sqlite libsqlite3-dev qtkeychain-qt6-dev
     # MQTT: the C++ package does not pull in the C library it needs
     libpaho-mqttpp-dev libpaho-mqtt-dev libssl-dev openssl
     # YAML

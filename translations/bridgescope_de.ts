@@ -2405,6 +2405,10 @@ factors:
         <source>Mean latencies [ms] by method</source>
         <translation>Mittlere Latenzen [ms] nach Verfahren</translation>
     </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentRunner</name>
@@ -2451,6 +2455,38 @@ factors:
     <message>
         <source>not an experiment&apos;s state (%1)</source>
         <translation>kein Zustand eines Experiments (%1)</translation>
+    </message>
+    <message>
+        <source>a symbolic link</source>
+        <translation>ein symbolischer Link</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>fehlt</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine reguläre Datei</translation>
+    </message>
+    <message>
+        <source>the run of another cell, %1</source>
+        <translation>der Lauf einer anderen Zelle, %1</translation>
+    </message>
+    <message>
+        <source>%1 complete samples, the cell needs %2</source>
+        <translation>%1 vollständige Samples, die Zelle braucht %2</translation>
+    </message>
+    <message>
+        <source>its run %1 was not kept (%2); done again</source>
+        <translation>ihr Lauf %1 wurde nicht behalten (%2); wird neu gemacht</translation>
+    </message>
+    <message>
+        <source>cell %1: %2</source>
+        <translation>Zelle %1: %2</translation>
+    </message>
+    <message>
+        <source>not an experiment&apos;s state (larger than %1 MiB)</source>
+        <translation>kein Zustand eines Experiments (größer als %1 MiB)</translation>
     </message>
 </context>
 <context>
@@ -6719,6 +6755,42 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>its pipeline cannot be read: %1</source>
         <translation>seine Pipeline ist nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <source>refused: reading it takes more than %1 SQLite steps (a run file of its size needs far fewer)</source>
+        <translation>abgelehnt: das Lesen braucht mehr als %1 SQLite-Schritte (eine Lauf-Datei dieser Größe braucht weit weniger)</translation>
+    </message>
+    <message>
+        <source>refused: reading it takes more than %1 s</source>
+        <translation>abgelehnt: das Lesen dauert länger als %1 s</translation>
+    </message>
+    <message>
+        <source>refused: it has more than %1 rows (the most a run file may have)</source>
+        <translation>abgelehnt: sie hat mehr als %1 Zeilen (das Höchste, was eine Lauf-Datei haben darf)</translation>
+    </message>
+    <message>
+        <source>refused: it has more than %1 MiB of text (the most a run file may have)</source>
+        <translation>abgelehnt: sie hat mehr als %1 MiB Text (das Höchste, was eine Lauf-Datei haben darf)</translation>
+    </message>
+    <message>
+        <source>it holds more than %1 objects</source>
+        <translation>sie enthält mehr als %1 Objekte</translation>
+    </message>
+    <message>
+        <source>%1 &quot;%2&quot; is not one of its tables</source>
+        <translation>%1 &quot;%2&quot; ist keine ihrer Tabellen</translation>
+    </message>
+    <message>
+        <source>not a Bridgescope run, refused: %1</source>
+        <translation>kein Bridgescope-Lauf, abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>not a Bridgescope run, refused: table &quot;%1&quot; has the columns %2, not %3</source>
+        <translation>kein Bridgescope-Lauf, abgelehnt: Tabelle &quot;%1&quot; hat die Spalten %2, nicht %3</translation>
+    </message>
+    <message>
+        <source>cannot read it: the SQLite driver gives no handle to set its limits</source>
+        <translation>kann sie nicht lesen: der SQLite-Treiber gibt kein Handle, um seine Grenzen zu setzen</translation>
     </message>
 </context>
 <context>

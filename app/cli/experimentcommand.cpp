@@ -142,6 +142,8 @@ int runExperiment(const ExperimentRequest& request)
         err(why);
         return ExitUsage;
     }
+    for (const QString& note : runner.resumeNotes())
+        err(note);
     const int cells = int(request.plan.cells.size());
     // The running cell's totals since the last progress line: what the Experiments page plots live.
     QList<double> totals;

@@ -189,7 +189,14 @@ int experimentReport(const ReportRequest& request)
         err(why);
         return ExitUsage;
     }
-    const std::optional<ExperimentReport> report = ExperimentReport::load(request.inputs.first(), &why);
+    // Its runs are read like any other: Ctrl+C and SIGTERM end a long read.
+    CliOutput::catchStopSignals();
+    const std::optional<ExperimentReport> report = ExperimentReport::load(
+        request.inputs.first(), &why, [](int) { return !CliOutput::stopRequested(); });
+    if (CliOutput::stopRequested()) {
+        err(ReportText::tr("cancelled; nothing written"));
+        return ExitCancelled;
+    }
     if (!report) {
         err(why);
         return ExitUsage;

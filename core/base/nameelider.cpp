@@ -32,6 +32,18 @@ QString render(const QStringList& shown)
 
 } // namespace
 
+QString NameElider::elideTail(const QString& name, qsizetype max)
+{
+    if (name.size() <= max)
+        return name;
+    if (max < 2)
+        return name.left(max);
+    qsizetype from = name.size() - (max - 1);
+    if (name.at(from).isLowSurrogate())
+        ++from;
+    return ellipsis + name.mid(from);
+}
+
 void NameElider::setNames(const QStringList& names)
 {
     m_names = names;

@@ -22,6 +22,13 @@ public:
     /// Names with more segments than this are elided by the caller alone (bounded work).
     static constexpr int MaxSegments = 32;
 
+    /// The most characters of a name laid out where its length is not bounded otherwise (reports,
+    /// tables): laying out a 5-million-character name took minutes (docs/user-guide.md, "Reports").
+    static constexpr qsizetype MaxShown = 200;
+    /// `name` cut to `max` characters keeping its tail (what tells names apart), after a `…`; a
+    /// shorter name as it is. Never splits a surrogate pair.
+    static QString elideTail(const QString& name, qsizetype max = MaxShown);
+
     void setNames(const QStringList& names);
     const QStringList& names() const { return m_names; }
 

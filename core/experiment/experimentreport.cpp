@@ -173,7 +173,8 @@ bool ExperimentReport::isExperiment(const QString& path)
     return QFileInfo(path).isDir() && QFile::exists(QDir(path).filePath(ExperimentRunner::stateFileName()));
 }
 
-std::optional<ExperimentReport> ExperimentReport::load(const QString& directory, QString* error)
+std::optional<ExperimentReport> ExperimentReport::load(const QString& directory, QString* error,
+                                                       const Progress& progress)
 {
     const auto fail = [&](const QString& why) -> std::optional<ExperimentReport> {
         if (error)
@@ -201,7 +202,12 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
     for (qsizetype i = 0; i < plan->cells.size(); ++i) {
         Cell cell {plan->cells[i], (*statuses)[i], {}, {}, {}, {}};
         if (cell.status.state == CellStatus::Complete) {
-            const std::optional<RunData> run = RunFile::read(dir.filePath(cell.status.run), &why);
+            const Progress part = [&](int percent) {
+                return !progress || progress(int((100 * i + percent) / plan->cells.size()));
+            };
+            const std::optional<RunData> run = RunFile::read(dir.filePath(cell.status.run), &why, part);
+            if (!run && progress && !progress(int(100 * i / plan->cells.size())))
+                return fail(tr("cancelled"));
             if (!run) {
                 cell.problem = why;
             } else if (pipeline && run->info.pipeline.topics() != pipeline->topics()) {

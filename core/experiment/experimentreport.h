@@ -3,6 +3,7 @@
 
 #include "experiment/experimentrunner.h"
 #include "latency/latencyseries.h"
+#include "latency/rundata.h"
 #include "latency/latencystats.h"
 #include "report/reportformats.h"
 
@@ -52,8 +53,10 @@ public:
         QList<Column> columns;
     };
 
-    /// Reads DIR (its plan copy, state and runs); nullopt with `error` when it is no experiment.
-    static std::optional<ExperimentReport> load(const QString& directory, QString* error);
+    /// Reads DIR (its plan copy, state and runs); nullopt with `error` when it is no experiment, or
+    /// when `progress` cancels (it is asked while each run is read).
+    static std::optional<ExperimentReport> load(const QString& directory, QString* error,
+                                                const Progress& progress = {});
     /// Whether `path` is an experiment's folder.
     static bool isExperiment(const QString& path);
 

@@ -15,6 +15,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -28,7 +29,7 @@ namespace {
 constexpr int kPollMs = 100;
 /// A probe's samples time out after this (not the 5 s default): the window waits for it.
 constexpr qint64 kProbeTimeoutMs = 2000;
-constexpr qsizetype kMaxStateBytes = 16 * 1024 * 1024;
+constexpr qsizetype kMaxStateBytes = ExperimentState::kMaxBytes;
 
 /// A CA and a server certificate for 127.0.0.1, made with openssl in `dir` (EC keys: quick).
 bool makeTlsFiles(const QString& dir, QString* error)
@@ -66,22 +67,33 @@ bool makeTlsFiles(const QString& dir, QString* error)
                 u"-extfile"_s, u"server.ext"_s});
 }
 
-} // namespace
-
-QString CellStatus::stateName(State s)
+/// Why a complete cell's run cannot be kept on --resume (empty: it can): it must be a regular file,
+/// not a symbolic link, that reads as a run of `cell` with at least `samples` complete samples.
+QString keptRunProblem(const QString& path, const ExperimentCell& cell, qint64 samples)
 {
-    switch (s) {
-    case Pending:
-        return u"pending"_s;
-    case Running:
-        return u"running"_s;
-    case Complete:
-        return u"complete"_s;
-    case Failed:
-        return u"failed"_s;
-    }
+    const QFileInfo info(path);
+    if (info.isSymLink())
+        return ExperimentRunner::tr("a symbolic link");
+    if (!info.exists())
+        return ExperimentRunner::tr("missing");
+    if (!info.isFile())
+        return ExperimentRunner::tr("not a regular file");
+    QString why;
+    const std::optional<RunData> run = RunFile::read(path, &why);
+    if (!run)
+        return why;
+    if (run->info.cell != cell.id())
+        return ExperimentRunner::tr("the run of another cell, %1").arg(run->info.cell);
+    LatencyEngine engine(run->info.pipeline);
+    engine.setWindow(0);
+    if (run->info.timeoutNs > 0)
+        engine.setTimeoutNs(run->info.timeoutNs);
+    run->replay(engine);
+    if (engine.samples() < samples)
+        return ExperimentRunner::tr("%1 complete samples, the cell needs %2").arg(engine.samples()).arg(samples);
     return {};
 }
+} // namespace
 
 /// What a running cell holds; destroyed in reverse: the measurement, the live session, the relays,
 /// then the lab (which stops its processes).
@@ -150,10 +162,19 @@ bool ExperimentRunner::prepare(QString* error)
         if (!state)
             return fail(why);
         m_statuses = *state;
-        for (CellStatus& s : m_statuses) {
-            // A cell that was running when the process died, or whose run is gone, is done again.
-            const bool complete = s.state == CellStatus::Complete && QFile::exists(dir.filePath(s.run));
-            if (!complete && s.state != CellStatus::Failed) {
+        m_resumeNotes.clear();
+        for (qsizetype i = 0; i < m_statuses.size(); ++i) {
+            CellStatus& s = m_statuses[i];
+            // A cell that was running when the process died, or whose run cannot be kept, is done again.
+            if (s.state == CellStatus::Complete) {
+                const QString problem = keptRunProblem(dir.filePath(s.run), m_plan.cells[i], m_plan.samples);
+                if (problem.isEmpty())
+                    continue;
+                s.reason = tr("its run %1 was not kept (%2); done again").arg(s.run, problem);
+                m_resumeNotes << tr("cell %1: %2").arg(m_plan.cells[i].id(), s.reason);
+                qCWarning(lcDemo).noquote() << m_resumeNotes.last();
+            }
+            if (s.state != CellStatus::Failed) {
                 if (s.state == CellStatus::Running)
                     s.reason = tr("cut off; done again");
                 s.state = CellStatus::Pending;
@@ -453,38 +474,15 @@ std::optional<QList<CellStatus>> ExperimentRunner::readState(const QString& dire
                                                              const ExperimentPlan& plan, QString* error)
 {
     QFile f(QDir(directory).filePath(stateFileName()));
-    const auto fail = [&](const QString& why) -> std::optional<QList<CellStatus>> {
+    if (!f.open(QIODevice::ReadOnly)) {
         if (error)
-            *error = tr("%1: %2").arg(f.fileName(), why);
+            *error = tr("%1: %2").arg(f.fileName(), f.errorString());
         return std::nullopt;
-    };
-    if (!f.open(QIODevice::ReadOnly))
-        return fail(f.errorString());
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(f.read(kMaxStateBytes), &parseError);
-    const QJsonObject root = doc.object();
-    if (parseError.error != QJsonParseError::NoError
-        || root.value(u"format"_s).toString() != u"bridgescope-experiment"_s)
-        return fail(tr("not an experiment's state (%1)").arg(parseError.errorString()));
-    QHash<QString, QJsonObject> byId;
-    for (const QJsonValue& v : root.value(u"cells"_s).toArray())
-        byId.insert(v.toObject().value(u"id"_s).toString(), v.toObject());
-    QList<CellStatus> statuses;
-    for (const ExperimentCell& cell : plan.cells) {
-        CellStatus s;
-        s.run = runPathOf(cell);
-        const QJsonObject o = byId.value(cell.id());
-        const QString state = o.value(u"state"_s).toString();
-        for (CellStatus::State st :
-             {CellStatus::Pending, CellStatus::Running, CellStatus::Complete, CellStatus::Failed})
-            if (CellStatus::stateName(st) == state)
-                s.state = st;
-        s.reason = o.value(u"reason"_s).toString().left(2000);
-        s.samples = o.value(u"samples"_s).toInteger();
-        s.started = QDateTime::fromString(o.value(u"started"_s).toString(), Qt::ISODate);
-        s.finished = QDateTime::fromString(o.value(u"finished"_s).toString(), Qt::ISODate);
-        statuses.append(s);
     }
+    QString why;
+    std::optional<QList<CellStatus>> statuses = ExperimentState::parse(f.read(kMaxStateBytes), plan, &why);
+    if (!statuses && error)
+        *error = tr("%1: %2").arg(f.fileName(), why);
     return statuses;
 }
 

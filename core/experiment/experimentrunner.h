@@ -2,33 +2,13 @@
 #pragma once
 
 #include "experiment/experimentplan.h"
+#include "experiment/experimentstate.h"
 
 #include <memory>
 #include <QDateTime>
 #include <QJsonObject>
 #include <QObject>
 #include <QString>
-
-/// Where a cell stands, as DIR/experiment.json keeps it.
-struct CellStatus
-{
-    enum State { Pending, Running, Complete, Failed };
-    State state = Pending;
-    QString reason; ///< why it failed (or was cut)
-    QString run; ///< the run file, relative to the experiment's folder
-    qint64 samples = 0; ///< recorded
-    QDateTime started;
-    QDateTime finished;
-    /// The link profile's relays, summed (all zero without one): bytes relayed, bursts "lost"
-    /// (delivered late), and how often reading paused because the relays held their memory bound.
-    struct Link
-    {
-        quint64 bytes = 0;
-        quint64 lostBursts = 0;
-        quint64 readPauses = 0;
-    } link;
-    static QString stateName(State s);
-};
 
 /// One rate of the throughput step: what arrived in its window.
 struct ThroughputPoint
@@ -78,7 +58,11 @@ public:
 
     /// Makes (or, resuming, checks) the folder: the plan's copy, the state, TLS files when a cell
     /// needs them. False with `error` when the folder holds another plan or cannot be written.
+    /// Resuming, a complete cell's run is checked (see resumeNotes()).
     bool prepare(QString* error);
+    /// What prepare() found resuming: each complete cell whose run could not be kept (a symlink,
+    /// not a regular file, not a run of the cell, fewer samples than the plan's), done again.
+    const QStringList& resumeNotes() const { return m_resumeNotes; }
     /// Runs the cells that are not complete; finished() at the end or after stop().
     void start();
     /// Stops after cleaning up: the running cell goes back to pending (resume redoes it).
@@ -96,10 +80,7 @@ public:
     static QString stateFileName() { return QStringLiteral("experiment.json"); }
     static QString throughputFileName() { return QStringLiteral("throughput.json"); }
     /// A cell's run file, relative to the experiment's folder.
-    static QString runPathOf(const ExperimentCell& cell)
-    {
-        return QStringLiteral("runs/%1.bsrun").arg(cell.id());
-    }
+    static QString runPathOf(const ExperimentCell& cell) { return ExperimentState::runPathOf(cell); }
     /// What DIR/throughput.json holds (empty when the plan has no throughput step or it has not run).
     static QList<ThroughputResult> readThroughput(const QString& directory);
     const QList<ThroughputResult>& throughput() const { return m_throughput; }
@@ -138,6 +119,7 @@ private:
     QString m_dir;
     Options m_options;
     QList<CellStatus> m_statuses;
+    QStringList m_resumeNotes;
     int m_current = -1;
     bool m_stopping = false;
     std::unique_ptr<Cell> m_cell;

@@ -72,7 +72,11 @@ struct RecordedEvent
     qint64 endNs = 0; ///< 0: still open when the recording stopped
     QByteArray json; ///< the whole event as a JSON object, with its figures at start and end
 
-    double durationSeconds() const { return endNs > startNs ? double(endNs - startNs) / 1e9 : 0; }
+    /// In long double: INT64_MIN to INT64_MAX overflowed a difference of qint64 (and showed -0.0 s).
+    double durationSeconds() const
+    {
+        return endNs > startNs ? double((static_cast<long double>(endNs) - startNs) / 1e9L) : 0;
+    }
 };
 
 /// A run in memory: its info and every raw event, in the order they arrived.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "report.h"
 
+#include "base/nameelider.h"
 #include "latency/seriesid.h"
 #include "report/runloader.h"
 
@@ -124,11 +125,13 @@ QString Report::title() const
 {
     if (!m_options.title.isEmpty())
         return m_options.title;
+    // Names cut where they are laid out: a 5-million-character name took minutes in a PDF.
     if (m_runs.size() == 1)
-        return (hasLatency() ? tr("Latency report: %1") : tr("Watch report: %1")).arg(m_runs.front()->name);
+        return (hasLatency() ? tr("Latency report: %1") : tr("Watch report: %1"))
+            .arg(NameElider::elideTail(m_runs.front()->name));
     QStringList names;
     for (const auto& r : m_runs)
-        names << r->name;
+        names << NameElider::elideTail(r->name);
     return tr("Latency comparison: %1").arg(names.join(u", "_s));
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reportformats.h"
 
+#include "base/nameelider.h"
 #include "latency/latencyreport.h"
 #include "latency/palette.h"
 #include "record/suitecsv.h"
@@ -68,9 +69,58 @@ QString latexEscape(QString s)
     return out;
 }
 
-QString mdEscape(QString s)
+/// Free text (notes, an event's detail) laid out at most this long; names at NameElider::MaxShown.
+constexpr qsizetype kMaxShownText = 1000;
+
+/// A text from a run as a report lays it out: on one line, without control characters (a NUL, an
+/// escape; each shown as U+FFFD), at most `max` characters keeping its tail. Every format's tables
+/// and facts take their texts through this, so a name cannot break a table or take minutes to lay out.
+QString shown(const QString& text, qsizetype max = NameElider::MaxShown)
 {
-    return s.replace(u'|', u"\\|"_s);
+    QString out = NameElider::elideTail(text, max);
+    for (QChar& c : out) {
+        const char16_t u = c.unicode();
+        if (u == u'\n' || u == u'\r' || u == u'\t' || u == 0x2028 || u == 0x2029)
+            c = u' ';
+        else if (u < 0x20 || (u >= 0x7f && u < 0xa0))
+            c = QChar::ReplacementCharacter;
+    }
+    return out;
+}
+
+/// The Markdown characters a run's text could use to end a table cell (`|`), open a code span, or
+/// make an inline link (`](`) or a raw HTML tag, taken literally (emphasis characters are left:
+/// they only style; `[ms]` stays as it is).
+QString mdEscape(const QString& s)
+{
+    QString out;
+    out.reserve(s.size());
+    for (qsizetype i = 0; i < s.size(); ++i) {
+        const QChar c = s.at(i);
+        switch (c.unicode()) {
+        case u'\\':
+        case u'|':
+        case u'`':
+        case u'<':
+        case u'>':
+            out += u'\\';
+            break;
+        case u']':
+            if (i + 1 < s.size() && s.at(i + 1) == u'(')
+                out += u'\\';
+            break;
+        default:
+            break;
+        }
+        out += c;
+    }
+    return out;
+}
+
+/// The report's title as laid out (its names are cut already, Report::title()).
+QString titleOf(const Report& report)
+{
+    return shown(report.title(), kMaxShownText);
 }
 
 struct Cells
@@ -88,6 +138,21 @@ struct Table
     QStringList header;
     QList<Cells> rows;
 };
+
+/// `t` with every text as shown(): names cut at NameElider::MaxShown, the last column (an event's
+/// why) at kMaxShownText when `freeTextLast`.
+Table shownTable(Table t, bool freeTextLast = false)
+{
+    for (QString& h : t.header)
+        h = shown(h);
+    for (Cells& c : t.rows) {
+        c.label = shown(c.label);
+        for (qsizetype i = 0; i < c.values.size(); ++i)
+            c.values[i] = shown(c.values[i], freeTextLast && i + 1 == c.values.size() ? kMaxShownText
+                                                                                       : NameElider::MaxShown);
+    }
+    return t;
+}
 
 Table stageTable(const Report& report)
 {
@@ -114,7 +179,7 @@ Table stageTable(const Report& report)
                            r.emphasized,
                            r.derived});
         }
-        return t;
+        return shownTable(std::move(t));
     }
     t.header << QCoreApplication::translate("ReportFormats", "Mean latency [ms]");
     for (const auto& run : report.runs())
@@ -127,7 +192,7 @@ Table stageTable(const Report& report)
         }
         t.rows.append(c);
     }
-    return t;
+    return shownTable(std::move(t));
 }
 
 /// Every run's total: the paper's summary under its Table I.
@@ -153,7 +218,7 @@ Table totalsTable(const Report& report)
                        false,
                        false});
     }
-    return t;
+    return shownTable(std::move(t));
 }
 
 /// Title-block lines: what was measured, where, when, how much.
@@ -164,9 +229,9 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
     QList<std::pair<QString, QString>> out;
     const auto add = [&out](const char* key, const QString& value) {
         if (!value.isEmpty())
-            out.append({QCoreApplication::translate("ReportFormats", key), value});
+            out.append({QCoreApplication::translate("ReportFormats", key), shown(value, kMaxShownText)});
     };
-    add(QT_TRANSLATE_NOOP("ReportFormats", "Run"), run.name);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Run"), NameElider::elideTail(run.name));
     add(QT_TRANSLATE_NOOP("ReportFormats", "Source"),
         run.path.isEmpty() ? QString() : run.path + u" ("_s + run.kind + u')');
     add(QT_TRANSLATE_NOOP("ReportFormats", "Recorded"),
@@ -238,8 +303,16 @@ QString duration(const RecordedEvent& e)
 {
     if (e.endNs <= 0)
         return QCoreApplication::translate("ReportFormats", "open");
-    const double s = e.durationSeconds();
-    return s < 120 ? QString::number(s, 'f', 1) + u" s"_s : QString::number(s / 60, 'f', 1) + u" min"_s;
+    if (e.endNs < e.startNs)
+        return u"–"_s; // ends before it starts: no duration to show
+    const double s = e.durationSeconds(); // computed without overflow, whatever the times
+    if (s < 120)
+        return QString::number(s, 'f', 1) + u" s"_s;
+    if (s < 2 * 3600)
+        return QString::number(s / 60, 'f', 1) + u" min"_s;
+    if (s < 2 * 86400)
+        return QString::number(s / 3600, 'f', 1) + u" h"_s;
+    return QString::number(s / 86400, 'f', 0) + u" d"_s;
 }
 
 /// The watch events of every run, by start (at most kMaxEventRows; `more` gets how many were left out).
@@ -272,7 +345,7 @@ Table eventsTable(const Report& report, qsizetype* more)
             c.crossing = e.level == u"alert"_s; // shown like a marked row
             t.rows.append(c);
         }
-    return t;
+    return shownTable(std::move(t), true);
 }
 
 QJsonArray eventsJson(const ReportRun& run)
@@ -402,16 +475,19 @@ QByteArray ReportFormats::csv(const Report& report, bool perSampleMs, QString* e
 
 QByteArray ReportFormats::markdown(const Report& report)
 {
-    QString out = u"# "_s + report.title() + u"\n\n"_s;
+    QString out = u"# "_s + mdEscape(titleOf(report)) + u"\n\n"_s;
     for (const auto& run : report.runs()) {
         if (report.isComparison())
-            out += u"## "_s + run->name + u"\n\n"_s;
+            out += u"## "_s + mdEscape(shown(run->name)) + u"\n\n"_s;
         for (const auto& [key, value] : facts(*run))
             out += u"- **"_s + key + u":** "_s + mdEscape(value) + u'\n';
         out += u'\n';
     }
     const auto table = [&out](const Table& t) {
-        out += u"| "_s + t.header.join(u" | "_s) + u" |\n|"_s;
+        QStringList header;
+        for (const QString& h : t.header)
+            header << mdEscape(h);
+        out += u"| "_s + header.join(u" | "_s) + u" |\n|"_s;
         for (qsizetype i = 0; i < t.header.size(); ++i)
             out += i == 0 ? u" --- |"_s : u" ---: |"_s;
         out += u'\n';
@@ -421,11 +497,9 @@ QByteArray ReportFormats::markdown(const Report& report)
                 label = u"**"_s + label + u"**"_s;
             else if (c.crossing || c.derived)
                 label = u"*"_s + label + u"*"_s;
-            QStringList values = c.values;
-            if (c.emphasized)
-                for (QString& v : values)
-                    if (!v.isEmpty())
-                        v = u"**"_s + v + u"**"_s;
+            QStringList values;
+            for (const QString& v : c.values)
+                values << (c.emphasized && !v.isEmpty() ? u"**"_s + mdEscape(v) + u"**"_s : mdEscape(v));
             out += u"| "_s + label + u" | "_s + values.join(u" | "_s) + u" |\n"_s;
         }
         out += u'\n';
@@ -451,7 +525,7 @@ QByteArray ReportFormats::markdown(const Report& report)
 
 QByteArray ReportFormats::latex(const Report& report)
 {
-    QString out = u"% "_s + report.title() + u"\n% "_s
+    QString out = u"% "_s + titleOf(report) + u"\n% "_s
         + tr("Written by Bridgescope; needs \\usepackage{booktabs}.") + u'\n';
     const auto table = [&out](const Table& t, const QString& caption) {
         out += u"% "_s + caption + u'\n';
@@ -495,10 +569,10 @@ QByteArray ReportFormats::latex(const Report& report)
 
 QString ReportFormats::htmlBody(const Report& report, bool forQtRichText)
 {
-    QString out = u"<h1>"_s + report.title().toHtmlEscaped() + u"</h1>\n"_s;
+    QString out = u"<h1>"_s + titleOf(report).toHtmlEscaped() + u"</h1>\n"_s;
     for (const auto& run : report.runs()) {
         if (report.isComparison())
-            out += u"<h3>"_s + run->name.toHtmlEscaped() + u"</h3>\n"_s;
+            out += u"<h3>"_s + shown(run->name).toHtmlEscaped() + u"</h3>\n"_s;
         out += u"<table class=\"facts\">\n"_s;
         for (const auto& [key, value] : facts(*run))
             out += u"<tr><th>"_s + key.toHtmlEscaped() + u"</th><td>"_s + value.toHtmlEscaped()
@@ -550,7 +624,7 @@ QByteArray ReportFormats::ecdfSvg(const Report& report, int width, int height)
         const LatencyEngine& e = *run->engine;
         if (e.totalSeries() < 0)
             continue;
-        const QString total = report.isComparison() ? run->name : tr("total");
+        const QString total = report.isComparison() ? shown(run->name) : tr("total");
         curves.append({total, seriesColor(color++), &e.series(e.totalSeries())});
         if (!report.isComparison() && e.oneWaySeries() >= 0)
             curves.append({tr("communication, one way"), seriesColor(color++), &e.series(e.oneWaySeries())});
@@ -563,7 +637,7 @@ QByteArray ReportFormats::html(const Report& report)
 {
     QString out = u"<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
                   "<meta charset=\"utf-8\"/>\n<title>"_s
-        + report.title().toHtmlEscaped()
+        + titleOf(report).toHtmlEscaped()
         + u"</title>\n<style>\n"
           "body { font-family: 'DejaVu Sans', Helvetica, Arial, sans-serif; max-width: 60em; margin: 2em "
           "auto; "

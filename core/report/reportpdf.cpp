@@ -18,7 +18,8 @@ QByteArray ReportPdf::render(const Report& report)
     QList<QByteArray> figures;
     if (report.hasLatency())
         figures << ReportFormats::ecdfSvg(report);
-    return render(report.title(), ReportFormats::htmlBody(report, true), figures);
+    // The body's texts are cut where they are laid out (ReportFormats); the title is the document's.
+    return render(report.title().left(1000), ReportFormats::htmlBody(report, true), figures);
 }
 
 QByteArray ReportPdf::render(const QString& title, const QString& bodyHtml, const QList<QByteArray>& figures)

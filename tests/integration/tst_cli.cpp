@@ -2,8 +2,10 @@
 // The command line contract of `bridgescope config ...`, run as the real program.
 #include "clirun.h"
 #include "config/configreader.h"
+#include "experiment/experimentplan.h"
 #include "fixtures.h"
 #include "pythonref.h"
+#include "record/runfile.h"
 #include "record/suitecsv.h"
 #include "ros2peer.h"
 #include "syntheticrun.h"
@@ -11,10 +13,14 @@
 
 #include <csignal>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
 #include <sys/stat.h>
@@ -36,6 +42,32 @@ QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArra
     QFile f(path);
     f.open(QIODevice::WriteOnly);
     f.write(text);
+    return path;
+}
+/// A run of the paper's pipeline with `samples` samples, then `sql` run on it: a hostile run file.
+QString hostileRun(const QTemporaryDir& dir, const QString& name, const QStringList& sql, int samples = 20)
+{
+    const QString path = dir.filePath(name);
+    const SyntheticRun synthetic = SyntheticRun::paper(samples, 0, 5);
+    RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
+    run.info.pipeline = Pipeline(synthetic.topics, 0);
+    run.series = QStringList {u"/latencies/x"_s};
+    run.latencies.push_back({0, 1000, synthetic.samples.front().front(), synthetic.samples.front().front()});
+    QString error;
+    if (!RunFile::write(path, run, &error))
+        return error;
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"hostile"_s);
+        db.setDatabaseName(path);
+        if (!db.open())
+            return db.lastError().text();
+        QSqlQuery q(db);
+        for (const QString& statement : sql)
+            if (!q.exec(statement))
+                return statement + u": "_s + q.lastError().text();
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(u"hostile"_s);
     return path;
 }
 } // namespace
@@ -696,6 +728,79 @@ private slots:
             for (int c = 0; c < 20000; ++c)
                 samples[r].push_back(1'700'000'000'000'000'000LL + qint64(r) * 1'000'000'000LL + c * 1000LL);
         return writeFile(dir, u"wide.csv"_s, SuiteCsv::write(topics, samples));
+    }
+
+    // Issue 31: `report` of a run whose meta is an endless recursive view ran for minutes at
+    // gigabytes, deaf to SIGINT and SIGTERM; `report DIR` of an experiment holding it the same.
+    // Refused at once now, with the object named.
+    void reportRefusesARunThatIsAProgramAtOnce()
+    {
+        QTemporaryDir dir;
+        const QString path = hostileRun(
+            dir, u"endless.bsrun"_s,
+            {u"DROP TABLE meta"_s,
+             u"CREATE VIEW meta AS WITH RECURSIVE r(key, value) AS (SELECT 'format', 'bridgescope-run' "
+             "UNION ALL SELECT key, value || 'x' FROM r) SELECT key, value FROM r ORDER BY value DESC"_s});
+        QVERIFY2(path.endsWith(u".bsrun"_s), qPrintable(path));
+        Run r = bridgescope({u"report"_s, path});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.ms < 5000, qPrintable(QString::number(r.ms)));
+        QVERIFY2(r.err.contains(u"refused: view \"meta\" is not one of its tables"_s), qPrintable(r.err));
+
+        // An experiment's folder whose one complete cell is that file.
+        const QString experiment = dir.filePath(u"experiment"_s);
+        QVERIFY(QDir().mkpath(experiment + u"/runs"_s));
+        const QByteArray plan = "samples: 10\nfactors:\n  qos: [0]\n";
+        writeFile(dir, u"experiment/plan.yaml"_s, plan);
+        QString why;
+        const std::optional<ExperimentPlan> parsed = ExperimentPlan::fromYaml(plan, experiment, &why);
+        QVERIFY2(parsed, qPrintable(why));
+        const QString id = parsed->cells.first().id();
+        writeFile(dir, u"experiment/experiment.json"_s,
+                  QJsonDocument(QJsonObject {{u"format"_s, u"bridgescope-experiment"_s},
+                                             {u"cells"_s, QJsonArray {QJsonObject {{u"id"_s, id},
+                                                                                   {u"state"_s, u"complete"_s},
+                                                                                   {u"samples"_s, 20}}}}})
+                      .toJson());
+        QVERIFY(QFile::copy(path, experiment + u"/runs/"_s + id + u".bsrun"_s));
+        r = bridgescope({u"report"_s, experiment, u"--format"_s, u"md"_s});
+        QVERIFY2(r.exit == 0 || r.exit == 2, qPrintable(r.err));
+        QVERIFY2(r.ms < 5000, qPrintable(QString::number(r.ms)));
+        const QString said = r.out + r.err;
+        QVERIFY2(said.contains(u"view \"meta\""_s), qPrintable(said));
+    }
+
+    // Issue 31: SIGTERM ends a long read wherever it is. The latencies were read to the end (and
+    // a view's statement before its first row never): now every statement is interruptible.
+    void sigtermEndsALongRead()
+    {
+        QTemporaryDir dir;
+        const QString path = hostileRun(
+            dir, u"long.bsrun"_s,
+            {u"INSERT INTO latencies(series, value_ns, received_ns, drained_ns) "
+             "WITH RECURSIVE n(x) AS (SELECT 0 UNION ALL SELECT x + 1 FROM n WHERE x < 2999999) "
+             "SELECT (SELECT min(id) FROM series), x, 1700000000000000000, 1700000000000000000 FROM n"_s});
+        QVERIFY2(path.endsWith(u".bsrun"_s), qPrintable(path));
+        QElapsedTimer whole;
+        whole.start();
+        Run r = bridgescope({u"report"_s, path}, 120000);
+        const qint64 wholeMs = whole.elapsed();
+        QCOMPARE(r.exit, 0);
+        QProcess p;
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, path});
+        QVERIFY(p.waitForStarted());
+        QVERIFY(waitUntilCaught(p, SIGTERM));
+        QTest::qWait(int(wholeMs / 5));
+        QCOMPARE(p.state(), QProcess::Running);
+        QElapsedTimer clock;
+        clock.start();
+        ::kill(pid_t(p.processId()), SIGTERM);
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 130);
+        qInfo("ended %lld ms after SIGTERM; the whole report takes %lld ms", clock.elapsed(), wholeMs);
+        QVERIFY2(clock.elapsed() < std::max<qint64>(500, wholeMs / 5),
+                 qPrintable(u"%1 ms after SIGTERM; the whole report takes %2 ms"_s.arg(clock.elapsed()).arg(wholeMs)));
     }
 
     // Regression (issue 11, item 6): stage labelling was cubic in the columns; 20,000 never ended.

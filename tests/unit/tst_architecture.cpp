@@ -94,6 +94,7 @@ const QList<std::pair<QRegularExpression, QString>>& families()
         {QRegularExpression(u"^(mqtt/|MQTTAsync|MQTTClient)"_s), u"PahoMqttCpp::paho-mqttpp3"_s},
         {QRegularExpression(u"^qt6keychain/"_s), u"qt6keychain"_s},
         {QRegularExpression(u"^yaml-cpp/"_s), u"yaml-cpp"_s},
+        {QRegularExpression(u"^sqlite3\\.h$"_s), u"SQLite::SQLite3"_s},
         {QRegularExpression(u"^(QtWidgets|QtCharts)/|^Q(Widget|Application|MainWindow|Dialog|Chart)\\b"_s),
          u"Qt6::Widgets"_s},
     };

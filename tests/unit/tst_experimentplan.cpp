@@ -3,9 +3,14 @@
 // listed cells name what they change, repetitions come last, and every mistake names its line.
 #include "experiment/experimentplan.h"
 #include "experiment/experimentrunner.h"
+#include "record/runfile.h"
+#include "syntheticrun.h"
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -200,6 +205,74 @@ private slots:
         QCOMPARE(p.samples, 0);
         QCOMPARE(p.expected, 0);
         QCOMPARE(p.dropped, 0);
+    }
+
+    // Issue 31: --resume counted a garbage run file, or a symlink to /etc/passwd, as a complete
+    // cell. A complete cell's run is read back (a regular file, a run of that cell with the plan's
+    // samples); otherwise the cell is done again and the runner says why.
+    void resumeRedoesCompleteCellsWhoseRunCannotBeKept()
+    {
+        QTemporaryDir dir;
+        QString why;
+        const QByteArray yaml = "samples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 2000]\n";
+        const auto plan = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
+        QVERIFY2(plan && plan->cells.size() == 4, qPrintable(why));
+        QVERIFY(QDir(dir.path()).mkpath(u"runs"_s));
+        QFile copy(dir.filePath(ExperimentRunner::planFileName()));
+        QVERIFY(copy.open(QIODevice::WriteOnly) && copy.write(yaml) == yaml.size());
+        copy.close();
+        QJsonArray cells;
+        for (const ExperimentCell& cell : plan->cells)
+            cells.append(QJsonObject {{u"id"_s, cell.id()}, {u"state"_s, u"complete"_s}, {u"samples"_s, 10}});
+        QFile state(dir.filePath(ExperimentRunner::stateFileName()));
+        QVERIFY(state.open(QIODevice::WriteOnly));
+        state.write(QJsonDocument(QJsonObject {{u"format"_s, u"bridgescope-experiment"_s}, {u"cells"_s, cells}})
+                        .toJson());
+        state.close();
+        const auto runOf = [&](int i) { return dir.filePath(ExperimentRunner::runPathOf(plan->cells[i])); };
+        // 0: garbage that starts like a database; 1: a symbolic link to /etc/passwd; 2: a run of the
+        // cell with 12 samples; 3: that same run, which is another cell's.
+        QFile garbage(runOf(0));
+        QVERIFY(garbage.open(QIODevice::WriteOnly));
+        garbage.write(QByteArray("SQLite format 3", 16) + QByteArray(4000, '\x7f'));
+        garbage.close();
+        QVERIFY(QFile::link(u"/etc/passwd"_s, runOf(1)));
+        const SyntheticRun synthetic = SyntheticRun::paper(12, 0, 1);
+        RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
+        run.info.pipeline = Pipeline(synthetic.topics, 0);
+        run.info.cell = plan->cells[2].id();
+        QVERIFY2(RunFile::write(runOf(2), run, &why), qPrintable(why));
+        QVERIFY(QFile::copy(runOf(2), runOf(3)));
+
+        ExperimentRunner::Options options;
+        options.resume = true;
+        ExperimentRunner runner(*plan, yaml, dir.path(), options);
+        QVERIFY2(runner.prepare(&why), qPrintable(why));
+        const QList<CellStatus>& statuses = runner.statuses();
+        QCOMPARE(statuses[0].state, CellStatus::Pending);
+        QCOMPARE(statuses[1].state, CellStatus::Pending);
+        QCOMPARE(statuses[2].state, CellStatus::Complete);
+        QCOMPARE(statuses[3].state, CellStatus::Pending);
+        const QStringList notes = runner.resumeNotes();
+        QCOMPARE(notes.size(), 3);
+        QVERIFY2(notes[0].contains(plan->cells[0].id()) && notes[0].contains(u"not a Bridgescope run"_s),
+                 qPrintable(notes[0]));
+        QVERIFY2(notes[1].contains(u"symbolic link"_s), qPrintable(notes[1]));
+        QVERIFY2(notes[2].contains(u"another cell"_s), qPrintable(notes[2]));
+        QVERIFY(statuses[1].reason.contains(u"done again"_s));
+        // The state on disk says so too, and a plan that wants more samples than the run has redoes it.
+        const auto written = ExperimentRunner::readState(dir.path(), *plan, &why);
+        QVERIFY2(written && (*written)[1].state == CellStatus::Pending, qPrintable(why));
+        QVERIFY(QFile::exists(u"/etc/passwd"_s));
+        const QByteArray more = "samples: 13\nfactors:\n  qos: [0, 1]\n  payload: [1000, 2000]\n";
+        const auto morePlan = ExperimentPlan::fromYaml(more, dir.path(), &why);
+        QVERIFY(copy.open(QIODevice::WriteOnly | QIODevice::Truncate) && copy.write(more) == more.size());
+        copy.close();
+        ExperimentRunner again(*morePlan, more, dir.path(), options);
+        QVERIFY2(again.prepare(&why), qPrintable(why));
+        QCOMPARE(again.statuses()[2].state, CellStatus::Pending);
+        QVERIFY2(again.resumeNotes().join(u'\n').contains(u"12 complete samples, the cell needs 13"_s),
+                 qPrintable(again.resumeNotes().join(u'\n')));
     }
 };
 

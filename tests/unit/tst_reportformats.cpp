@@ -10,6 +10,7 @@
 #include "report/reportpdf.h"
 #include "syntheticrun.h"
 
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -19,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QXmlStreamReader>
+#include <limits>
 
 using namespace Qt::StringLiterals;
 
@@ -197,7 +199,7 @@ private slots:
         QVERIFY2(md.contains(u"## Events"_s), qPrintable(md));
         QVERIFY2(md.contains(u" | 3.0 s | lab: /w/plain → w/plain | alert | no message at the destination"_s),
                  qPrintable(md));
-        QVERIFY(md.contains(u"| open | bridge cloud_bridge | warning | <down & out> |"_s));
+        QVERIFY(md.contains(u"| open | bridge cloud_bridge | warning | \\<down & out\\> |"_s));
         QVERIFY(md.contains(u"**Events:** 2 (1 alerts)"_s));
         QVERIFY(md.indexOf(u"Latency per stage"_s) < md.indexOf(u"## Events"_s));
 
@@ -224,6 +226,74 @@ private slots:
         QVERIFY(!mdEvents.contains(u"Pipeline"_s));
         QVERIFY(mdEvents.contains(u"## Events"_s));
         QVERIFY(!ReportFormats::html(onlyEvents).contains("<svg"));
+    }
+
+    // Issue 31: an event's texts are input. `|` and newlines broke the Markdown table, NUL bytes
+    // reached Markdown and HTML, and INT64_MIN to INT64_MAX lasted "-0.0 s" (an overflow).
+    void hostileEventTextsStayInTheirCells()
+    {
+        RunData watched;
+        watched.info.name = u"hostile|name\nwith `ticks`"_s;
+        const QString nul = QString(QChar(u'\0'));
+        watched.events.push_back({u"bridge:a|b"_s,
+                                  u"alert"_s,
+                                  {u"bridge_down"_s},
+                                  u"first|second\nthird\r\nfourth `code` [link](x) <b>"_s + nul + u"\x1b[31m"_s,
+                                  std::numeric_limits<qint64>::min(),
+                                  std::numeric_limits<qint64>::max(),
+                                  {}});
+        watched.events.push_back({u"bridge:b"_s, u"warning"_s, {u"x"_s}, u"ok"_s, 1'000'000'000'000'000'000LL,
+                                  1'000'000'000'000'000'000LL + 2'500'000'000LL, {}});
+        const Report report = Report::fromRuns({watched}, std::nullopt, {});
+        const QString md = QString::fromUtf8(ReportFormats::markdown(report));
+        QVERIFY(!md.contains(QChar(u'\0')) && !md.contains(QChar(0x1b)));
+        // Every row of the events table has as many cell borders as its header (`\|` is no border).
+        static const QRegularExpression border(u"(?<!\\\\)\\|"_s);
+        const QString table = md.section(u"## Events\n\n"_s, 1).section(u"\n\n"_s, 0, 0);
+        const QStringList rows = table.split(u'\n');
+        QCOMPARE(rows.size(), 4); // header, rule, two events
+        for (const QString& row : rows)
+            QVERIFY2(row.count(border) == 6, qPrintable(row));
+        QVERIFY2(rows[2].contains(u"first\\|second third  fourth \\`code\\` [link\\](x) \\<b\\>"_s),
+                 qPrintable(rows[2]));
+        // A duration without overflow: 2^64 ns are 213,504 days; the other one is 2.5 s.
+        QVERIFY2(rows[2].contains(u"| 213504 d |"_s), qPrintable(rows[2]));
+        QVERIFY2(rows[3].contains(u"| 2.5 s |"_s), qPrintable(rows[3]));
+        QVERIFY(!md.contains(u"-0.0"_s));
+        QCOMPARE(ReportFormats::json(report).count("\"duration_s\": -"), 0);
+        // The title is one line.
+        QVERIFY2(md.startsWith(u"# Watch report: hostile\\|name with \\`ticks\\`\n"_s), qPrintable(md.left(200)));
+
+        const QString html = ReportFormats::htmlBody(report, false);
+        QVERIFY(!html.contains(QChar(u'\0')) && !html.contains(QChar(0x1b)));
+        QVERIFY(html.contains(u"first|second third  fourth `code` [link](x) &lt;b&gt;"_s));
+        const QString tex = QString::fromUtf8(ReportFormats::latex(report));
+        QVERIFY(!tex.contains(QChar(u'\0')) && !tex.contains(QChar(0x1b)));
+        // The title's comment line cannot end early and put the rest of the name into TeX.
+        QVERIFY2(tex.startsWith(u"% Watch report: hostile|name with `ticks`\n"_s), qPrintable(tex.left(200)));
+    }
+
+    // Issue 31: a PDF of a run with a 5-million-character name never finished (laying it out grew
+    // with the square). Names are cut where they are laid out, keeping their tail.
+    void aHugeNameIsCutWhereItIsLaidOut()
+    {
+        RunData watched;
+        watched.info.name = QString(5'000'000, u'n') + u"-tail"_s;
+        watched.info.notes = QString(5'000'000, u'o');
+        watched.events.push_back({QString(5'000'000, u's'), u"alert"_s, {u"x"_s}, QString(4096, u'd'), 1, 2, {}});
+        const Report report = Report::fromRuns({watched}, std::nullopt, {});
+        QElapsedTimer clock;
+        clock.start();
+        const QByteArray pdf = ReportPdf::render(report);
+        QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY(pdf.startsWith("%PDF"));
+        const QString md = QString::fromUtf8(ReportFormats::markdown(report));
+        QVERIFY2(md.size() < 20000, qPrintable(QString::number(md.size())));
+        QVERIFY(md.contains(u"…"_s + QString(194, u'n') + u"-tail"_s));
+        QVERIFY(!md.contains(QString(201, u'n')));
+        const QString html = ReportFormats::htmlBody(report, true);
+        QVERIFY2(html.size() < 20000, qPrintable(QString::number(html.size())));
+        QVERIFY(QString::fromUtf8(ReportFormats::latex(report)).size() < 20000);
     }
 
     void pdfHasPagesAndText()

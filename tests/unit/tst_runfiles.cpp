@@ -15,8 +15,10 @@
 
 #include <cstring>
 #include <QCryptographicHash>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QSqlDatabase>
+#include <QSqlError>
 #include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
@@ -57,6 +59,24 @@ RunData liveLikeRun(int samples)
         [](const RecordedStamp& a, const RecordedStamp& b) { return a.drainedNs < b.drainedNs; });
     return run;
 }
+
+/// Runs `sql` on the database at `path`: the hostile edits of a test.
+void editRun(const QString& path, const QStringList& sql)
+{
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"hostile"_s);
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        QSqlQuery q(db);
+        for (const QString& statement : sql)
+            QVERIFY2(q.exec(statement), qPrintable(statement + u": "_s + q.lastError().text()));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(u"hostile"_s);
+}
+
+/// 1000 numbers, in SQL: a view over three of them crossed has 10^9 rows.
+const QString kThousand = u"WITH RECURSIVE n(x) AS (SELECT 0 UNION ALL SELECT x + 1 FROM n WHERE x < 999) "_s;
 
 QByteArray sha(const QString& path)
 {
@@ -157,6 +177,93 @@ private slots:
         RunWriter writer;
         QVERIFY(!writer.create(path, RunInfo(), &error));
         QVERIFY(error.contains(u"exists already"_s));
+    }
+
+    // Issue 31: a run file is data, not a program. A view over a 1000^3 cross join (bad_alloc from a
+    // reserve of its count), an endless recursive view for meta (minutes at gigabytes, deaf to
+    // signals), a trigger, a virtual table, a generated column: each refused at once, named.
+    void runFilesThatAreProgramsAreRefusedAtOnce_data()
+    {
+        QTest::addColumn<QStringList>("sql");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("view over a cross join")
+            << QStringList {u"DROP TABLE stamps"_s,
+                            u"CREATE VIEW stamps AS "_s + kThousand
+                                + u"SELECT a.x AS topic, b.x AS sample_ns, c.x AS time_ns, 1 AS received_ns, "
+                                  "1 AS drained_ns FROM n a, n b, n c"_s}
+            << u"view \"stamps\""_s;
+        QTest::newRow("recursive view for meta")
+            << QStringList {u"DROP TABLE meta"_s,
+                            u"CREATE VIEW meta AS WITH RECURSIVE r(key, value) AS (SELECT 'format', "
+                            "'bridgescope-run' UNION ALL SELECT key, value || 'x' FROM r) SELECT key, value FROM r"_s}
+            << u"view \"meta\""_s;
+        QTest::newRow("trigger") << QStringList {u"CREATE TRIGGER grow AFTER INSERT ON topics BEGIN "
+                                                 "INSERT INTO topics(name) VALUES (new.name || 'x'); END"_s}
+                                 << u"trigger \"grow\""_s;
+        QTest::newRow("virtual table")
+            << QStringList {u"DROP TABLE series"_s, u"CREATE VIRTUAL TABLE series USING rtree(id, a, b)"_s}
+            << u"virtual table \"series\""_s;
+        QTest::newRow("generated column")
+            << QStringList {u"DROP TABLE latencies"_s,
+                            u"CREATE TABLE latencies(series INTEGER, value_ns INTEGER, received_ns INTEGER, "
+                            "drained_ns INTEGER GENERATED ALWAYS AS (length(zeroblob(100000000))) VIRTUAL)"_s,
+                            u"INSERT INTO latencies(series, value_ns, received_ns) "_s + kThousand
+                                + u"SELECT 1, x, 1 FROM n"_s}
+            << u"table \"latencies\" has the columns"_s;
+        QTest::newRow("a table of another format") << QStringList {u"CREATE TABLE more(x)"_s}
+                                                   << u"table \"more\" is not one of its tables"_s;
+    }
+
+    void runFilesThatAreProgramsAreRefusedAtOnce()
+    {
+        QFETCH(QStringList, sql);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"hostile.bsrun"_s);
+        QString error;
+        QVERIFY2(RunFile::write(path, liveLikeRun(20), &error), qPrintable(error));
+        editRun(path, sql);
+        if (QTest::currentTestFailed())
+            return;
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(!RunFile::read(path, &error));
+        QVERIFY2(clock.elapsed() < 3000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY2(error.startsWith(path + u": not a Bridgescope run, refused: "_s) && error.contains(message),
+                 qPrintable(error));
+        // The report says the same, and the loader of the window too.
+        QVERIFY(!Report::build({path}, std::nullopt, {}, &error));
+        QVERIFY2(error.contains(message), qPrintable(error));
+    }
+
+    // A cancel is heard inside every table, not only between stamps: the latencies were read to
+    // the end, deaf to Ctrl+C and the window's Cancel.
+    void aLongReadIsCancelledWhereverItIs()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"long.bsrun"_s);
+        QString error;
+        QVERIFY2(RunFile::write(path, liveLikeRun(20), &error), qPrintable(error));
+        editRun(path, {u"INSERT INTO latencies(series, value_ns, received_ns, drained_ns) "
+                       "WITH RECURSIVE n(x) AS (SELECT 0 UNION ALL SELECT x + 1 FROM n WHERE x < 1999999) "
+                       "SELECT (SELECT min(id) FROM series), x, 1, 1 FROM n"_s});
+        if (QTest::currentTestFailed())
+            return;
+        QElapsedTimer whole;
+        whole.start();
+        QVERIFY2(RunFile::read(path, &error), qPrintable(error));
+        const qint64 wholeMs = whole.elapsed();
+        QElapsedTimer clock;
+        clock.start();
+        int asked = 0;
+        const std::optional<RunData> run = RunFile::read(path, &error, [&](int) {
+            ++asked;
+            return clock.elapsed() < wholeMs / 10;
+        });
+        QVERIFY2(!run, qPrintable(u"read to the end (%1 ms), asked %2 times"_s.arg(clock.elapsed()).arg(asked)));
+        QVERIFY2(error.endsWith(u": cancelled"_s), qPrintable(error));
+        QVERIFY2(clock.elapsed() < wholeMs / 10 + 300,
+                 qPrintable(u"%1 ms of %2"_s.arg(clock.elapsed()).arg(wholeMs)));
     }
 
     // A bag written here with rosbag's own API: TimeStamped through a morphed ShapeShifter (the
