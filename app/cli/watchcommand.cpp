@@ -47,6 +47,7 @@ struct WatchRequest
     RunInfo info; ///< of that run
     double seconds = 0; ///< 0: until Ctrl+C
     bool allowEmpty = false; ///< neither broker nor master reached is a success
+    bool ros1 = true; ///< the ROS 1 master is watched (not with --ros 2)
     bool discover = true; ///< also the links mqtt_client announces that no config has
     std::optional<Pipeline> pipeline; ///< --pipeline: latency of the mappings with stamp topics, and recorded
     std::optional<Ros2Options> ros2; ///< --ros 2 or both: the ROS 2 domain joined as well
@@ -196,6 +197,7 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     if (ros.ros2 && !ros.environmentError.isEmpty())
         err(ros.environmentError);
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
+    request->ros1 = ros.ros1;
     request->masterUri = parser.value(master);
     request->metrics = parser.value(metrics);
     request->eventsFile = parser.value(events);
@@ -290,7 +292,7 @@ int runWatch(const WatchRequest& request)
     err(Watch::tr("watching %n link(s) of %1; Ctrl+C stops", nullptr, monitor->linkCount())
             .arg(request.broker.url));
     SourceCheck sources(
-        live, !request.configs.isEmpty(), [&live] { return qint64(live.mqtt()->received()); },
+        live, request.ros1 && !request.configs.isEmpty(), [&live] { return qint64(live.mqtt()->received()); },
         Watch::tr("MQTT message"));
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
@@ -321,7 +323,8 @@ int runWatch(const WatchRequest& request)
         err(Watch::tr("events recorded in %1").arg(request.runPath));
     }
     sources.check(0); // how the sources are now, said or not
-    if (status == ExitOk && !request.allowEmpty && !sources.brokerEverReached()
+    // A watch of ROS 2 alone has its graph from DDS, which is never "unreachable".
+    if (status == ExitOk && !request.allowEmpty && !sources.brokerEverReached() && request.ros1
         && !sources.masterEverReached()) {
         err(Watch::tr("nothing was watched: neither the broker nor the master was reached; --allow-empty "
                       "accepts that"));
