@@ -3036,8 +3036,8 @@ factors:
         <translation>der Sweep braucht positive Dauern und einen Faktor über 1</translation>
     </message>
     <message>
-        <source>--rate must be above 0 and at most 1000000 Hz</source>
-        <translation>--rate muss über 0 und höchstens 1000000 Hz sein</translation>
+        <source>--rate must be from %1 to 1000000 Hz</source>
+        <translation>--rate muss zwischen %1 und 1000000 Hz liegen</translation>
     </message>
 </context>
 <context>
