@@ -132,6 +132,7 @@ int main(int argc, char** argv)
         QCoreApplication app(argc, argv);
         installTranslations(app);
         const QStringList args = app.arguments().mid(1);
+        CliOutput::hideCredentials(argc, argv); // a --broker URL's password: not for ps
         if (help) {
             CliOutput::out(bridgescopeUsage());
             return ExitOk;

@@ -170,10 +170,6 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <translation>%1: %2</translation>
     </message>
     <message>
-        <source>--clock-offset-ms takes a number of milliseconds</source>
-        <translation>--clock-offset-ms erwartet eine Anzahl Millisekunden</translation>
-    </message>
-    <message>
         <source>--arg takes NAME=VALUE, not &apos;%1&apos;</source>
         <translation>--arg erwartet NAME=VALUE, nicht &apos;%1&apos;</translation>
     </message>
@@ -204,6 +200,30 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <source>memory bound (%1 MiB, --max-queued-mib): %2 messages to MQTT and %3 to ROS dropped so far, %4 MiB held now</source>
         <translation>Speichergrenze (%1 MiB, --max-queued-mib): bisher %2 Nachrichten zu MQTT und %3 zu ROS verworfen, jetzt %4 MiB gehalten</translation>
     </message>
+    <message>
+        <source>--broker-fd takes an open file descriptor above 2, not &apos;%1&apos;</source>
+        <translation>--broker-fd erwartet einen offenen Dateideskriptor über 2, nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--broker-fd %1: %2</source>
+        <translation>--broker-fd %1: %2</translation>
+    </message>
+    <message>
+        <source>--broker-fd %1: more than %2 bytes; a broker URL is shorter</source>
+        <translation>--broker-fd %1: mehr als %2 Bytes; eine Broker-URL ist kürzer</translation>
+    </message>
+    <message>
+        <source>Read the broker URL, credentials included, from the open file descriptor FD (a pipe the starting process filled), not from the command line that every user sees.</source>
+        <translation>Die Broker-URL samt Zugangsdaten aus dem offenen Dateideskriptor FD lesen (eine Pipe, die der startende Prozess gefüllt hat), nicht aus der Befehlszeile, die jeder Benutzer sieht.</translation>
+    </message>
+    <message>
+        <source>give --broker or --broker-fd, not both</source>
+        <translation>--broker oder --broker-fd angeben, nicht beides</translation>
+    </message>
+    <message>
+        <source>--clock-offset-ms takes -%1 to %1 milliseconds (a day)</source>
+        <translation>--clock-offset-ms erwartet -%1 bis %1 Millisekunden (einen Tag)</translation>
+    </message>
 </context>
 <context>
     <name>BridgedTopicsProxy</name>
@@ -225,6 +245,10 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
     <message>
         <source>error: cannot write to standard output: %1</source>
         <translation>Fehler: die Standardausgabe kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>--seconds takes 0 to %1 seconds (a year)</source>
+        <translation>--seconds erwartet 0 bis %1 Sekunden (ein Jahr)</translation>
     </message>
 </context>
 <context>
@@ -971,10 +995,6 @@ Exit status: 0 samples measured, 1 the lab failed or measured nothing, 2 bad opt
 Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 falsche Optionen.</translation>
     </message>
     <message>
-        <source>--seconds takes a number of seconds</source>
-        <translation>--seconds erwartet eine Anzahl Sekunden</translation>
-    </message>
-    <message>
         <source>--format takes md or json</source>
         <translation>--format erwartet md oder json</translation>
     </message>
@@ -1104,6 +1124,18 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>TLS needs %1 in %2</source>
         <translation>TLS braucht %1 in %2</translation>
+    </message>
+    <message>
+        <source>the broker URL is too long</source>
+        <translation>die Broker-URL ist zu lang</translation>
+    </message>
+    <message>
+        <source>cannot make a pipe: %1</source>
+        <translation>kann keine Pipe anlegen: %1</translation>
+    </message>
+    <message>
+        <source>cannot write to a pipe: %1</source>
+        <translation>kann nicht in eine Pipe schreiben: %1</translation>
     </message>
 </context>
 <context>
@@ -1395,10 +1427,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Zu abonnierender MQTT-Topic-Filter (Vorgabe #; mehrfach möglich).</translation>
     </message>
     <message>
-        <source>--seconds takes a positive number</source>
-        <translation>--seconds erwartet eine positive Zahl</translation>
-    </message>
-    <message>
         <source>Neither the ROS master (%1) nor the MQTT broker (%2) could be reached.</source>
         <translation>Weder der ROS-Master (%1) noch der MQTT-Broker (%2) war erreichbar.</translation>
     </message>
@@ -1421,6 +1449,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>ROS 2 discovery restarted: the DDS process %1</source>
         <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
+    </message>
+    <message>
+        <source>--seconds takes a positive number up to a year</source>
+        <translation>--seconds erwartet eine positive Zahl bis zu einem Jahr</translation>
     </message>
 </context>
 <context>
@@ -2059,10 +2091,6 @@ factors:
 <context>
     <name>ExperimentPlan</name>
     <message>
-        <source>line %1</source>
-        <translation>Zeile %1</translation>
-    </message>
-    <message>
         <source>%1: a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</source>
         <translation>%1: ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</translation>
     </message>
@@ -2101,10 +2129,6 @@ factors:
     <message>
         <source>payload is bytes (20000), a percentage of the 0.18 MB scan (25%), scan or pointcloud2; not &apos;%1&apos;</source>
         <translation>payload ist eine Bytezahl (20000), ein Prozentsatz des 0,18-MB-Scans (25%), scan oder pointcloud2; nicht &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>rate_hz takes a rate above 0 and up to 1000 Hz</source>
-        <translation>rate_hz nimmt eine Rate über 0 bis 1000 Hz</translation>
     </message>
     <message>
         <source>detection_ms takes 0 to 10000 ms</source>
@@ -2151,10 +2175,6 @@ factors:
         <translation>%1: %2 nimmt eine ganze Zahl von %3 bis %4</translation>
     </message>
     <message>
-        <source>%1: timeout_s takes seconds above 0</source>
-        <translation>%1: timeout_s nimmt Sekunden über 0</translation>
-    </message>
-    <message>
         <source>%1: servers given are {broker: URL, ros_master: URI}</source>
         <translation>%1: angegebene Server sind {broker: URL, ros_master: URI}</translation>
     </message>
@@ -2177,10 +2197,6 @@ factors:
     <message>
         <source>%1: throughput is {rates_hz: [10, 20, …], seconds: N}</source>
         <translation>%1: throughput ist {rates_hz: [10, 20, …], seconds: N}</translation>
-    </message>
-    <message>
-        <source>%1: a rate above 0 and up to 10000 Hz</source>
-        <translation>%1: eine Rate über 0 bis 10000 Hz</translation>
     </message>
     <message>
         <source>%1: seconds per rate from 1 to 3600</source>
@@ -2241,6 +2257,22 @@ factors:
     <message>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
+    </message>
+    <message>
+        <source>rate_hz takes %1 to 1000 Hz</source>
+        <translation>rate_hz erwartet %1 bis 1000 Hz</translation>
+    </message>
+    <message>
+        <source>%1: timeout_s takes 1 to %2 seconds</source>
+        <translation>%1: timeout_s erwartet 1 bis %2 Sekunden</translation>
+    </message>
+    <message>
+        <source>%1: a rate from %2 to 10000 Hz</source>
+        <translation>%1: eine Rate von %2 bis 10000 Hz</translation>
     </message>
 </context>
 <context>
@@ -2487,6 +2519,22 @@ factors:
     <message>
         <source>not an experiment&apos;s state (larger than %1 MiB)</source>
         <translation>kein Zustand eines Experiments (größer als %1 MiB)</translation>
+    </message>
+    <message>
+        <source>the broker %1 cannot be reached (%2)</source>
+        <translation>der Broker %1 ist nicht erreichbar (%2)</translation>
+    </message>
+    <message>
+        <source>the ROS master %1 cannot be reached (%2)</source>
+        <translation>der ROS-Master %1 ist nicht erreichbar (%2)</translation>
+    </message>
+    <message>
+        <source>no stamp has arrived</source>
+        <translation>kein Zeitstempel ist angekommen</translation>
+    </message>
+    <message>
+        <source>after %1 s: %2; still trying</source>
+        <translation>nach %1 s: %2; versucht es weiter</translation>
     </message>
 </context>
 <context>
@@ -3040,8 +3088,8 @@ factors:
         <translation>der Sweep braucht positive Dauern und einen Faktor über 1</translation>
     </message>
     <message>
-        <source>--rate must be above 0 and at most 1000000 Hz</source>
-        <translation>--rate muss über 0 und höchstens 1000000 Hz sein</translation>
+        <source>--rate must be from %1 to 1000000 Hz</source>
+        <translation>--rate muss zwischen %1 und 1000000 Hz liegen</translation>
     </message>
 </context>
 <context>
@@ -5335,22 +5383,12 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>Die verwendete Bridge-Konfiguration; wird mit dem Lauf gespeichert.</translation>
     </message>
     <message>
-        <source>Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C.
-Exit status: 0 recorded, 1 the run file could not be written, 2 bad options.</source>
-        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird.
-Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
-    </message>
-    <message>
         <source>record needs --pipeline and -o; see bridgescope record --help</source>
         <translation>record braucht --pipeline und -o; siehe bridgescope record --help</translation>
     </message>
     <message>
         <source>--samples takes a number of samples</source>
         <translation>--samples erwartet eine Anzahl Proben</translation>
-    </message>
-    <message>
-        <source>--seconds takes a number of seconds</source>
-        <translation>--seconds erwartet eine Anzahl Sekunden</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -5371,6 +5409,36 @@ Exit-Status: 0 aufgezeichnet, 1 Laufdatei nicht schreibbar, 2 falsche Optionen.<
     <message>
         <source>%1: %2 complete samples, %3 stamps</source>
         <translation>%1: %2 vollständige Proben, %3 Zeitstempel</translation>
+    </message>
+    <message>
+        <source>%1 is not YAML: the run keeps no copy of it (its credentials could not be found)</source>
+        <translation>%1 ist kein YAML: der Lauf behält keine Kopie davon (seine Zugangsdaten ließen sich nicht finden)</translation>
+    </message>
+    <message>
+        <source>Exit 0 even when no stamp was recorded (an empty run on purpose).</source>
+        <translation>Status 0 auch dann, wenn kein Zeitstempel aufgezeichnet wurde (ein absichtlich leerer Lauf).</translation>
+    </message>
+    <message>
+        <source>Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.
+Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not be written, 2 bad options.</source>
+        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird. Ein nicht erreichbarer Broker oder Master, oder gar kein Zeitstempel, wird innerhalb von 5 s gemeldet; es wird weiter versucht.
+Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>stamp of the pipeline&apos;s topics</source>
+        <translation>Zeitstempel der Pipeline-Topics</translation>
+    </message>
+    <message>
+        <source>nothing was recorded (%1); --allow-empty accepts an empty run</source>
+        <translation>nichts wurde aufgezeichnet (%1); --allow-empty lässt einen leeren Lauf zu</translation>
+    </message>
+    <message>
+        <source>neither the broker nor the master was reached</source>
+        <translation>weder Broker noch Master waren erreichbar</translation>
+    </message>
+    <message>
+        <source>no stamp of the pipeline&apos;s topics arrived</source>
+        <translation>kein Zeitstempel der Pipeline-Topics kam an</translation>
     </message>
 </context>
 <context>
@@ -6882,6 +6950,29 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     </message>
 </context>
 <context>
+    <name>SourceCheck</name>
+    <message>
+        <source>the broker %1 is reached</source>
+        <translation>der Broker %1 ist erreichbar</translation>
+    </message>
+    <message>
+        <source>the broker %1 cannot be reached (%2); still trying</source>
+        <translation>der Broker %1 ist nicht erreichbar (%2); versucht es weiter</translation>
+    </message>
+    <message>
+        <source>the ROS master %1 is reached</source>
+        <translation>der ROS-Master %1 ist erreichbar</translation>
+    </message>
+    <message>
+        <source>the ROS master %1 cannot be reached (%2); still trying</source>
+        <translation>der ROS-Master %1 ist nicht erreichbar (%2); versucht es weiter</translation>
+    </message>
+    <message>
+        <source>nothing has arrived after %1 s: no %2 yet; still waiting</source>
+        <translation>nach %1 s ist nichts angekommen: noch kein(e) %2; wartet weiter</translation>
+    </message>
+</context>
+<context>
     <name>StampCodec</name>
     <message>
         <source>TimeStamped message too short (%1 bytes)</source>
@@ -7124,10 +7215,6 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>mqtt_client-Konfigurationen, deren Mappings überwacht werden.</translation>
     </message>
     <message>
-        <source>--seconds takes a number of seconds</source>
-        <translation>--seconds erwartet eine Zahl von Sekunden</translation>
-    </message>
-    <message>
         <source>metrics at http://%1/metrics (port %2)</source>
         <translation>Metriken unter http://%1/metrics (Port %2)</translation>
     </message>
@@ -7179,18 +7266,32 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>Die Pipeline der Zeitstempel-Topics: Eine Abbildung mit timestamp_topic_prefix erhält ihre Latenz von PREFIX/in bis PREFIX/out, und -o zeichnet auch die Messpunkte auf.</translation>
     </message>
     <message>
-        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state; and, from their MQTT end, the links mqtt_client announces on the broker that no config maps. Every change of a link&apos;s state is an event, printed as a JSON line.
-Exit status: 0 stopped, 1 the metrics port could not be served or the run file not written, 2 bad options.</source>
-        <translation>Beobachtet jede Abbildung der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, eine verstummte Quelle, Latenz gestempelter Nachrichten und den Zustand der Bridges; dazu, von ihrem MQTT-Ende aus, die Verbindungen, die mqtt_client am Broker ankündigt und keine Konfiguration abbildet. Jede Zustandsänderung einer Verbindung ist ein Ereignis und wird als JSON-Zeile ausgegeben.
-Exit-Status: 0 beendet, 1 der Metrik-Port konnte nicht bedient oder die Messlauf-Datei nicht geschrieben werden, 2 falsche Optionen.</translation>
-    </message>
-    <message>
         <source>watch needs a bridge config, or --broker to watch the links announced there; see bridgescope watch --help</source>
         <translation>watch braucht eine Bridge-Konfiguration oder --broker, um die dort angekündigten Verbindungen zu beobachten; siehe bridgescope watch --help</translation>
     </message>
     <message>
         <source>ROS 2 discovery restarted: the DDS process %1</source>
         <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
+    </message>
+    <message>
+        <source>Exit 0 even when neither the broker nor the master was ever reached.</source>
+        <translation>Status 0 auch dann, wenn weder Broker noch Master je erreichbar waren.</translation>
+    </message>
+    <message>
+        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state; and, from their MQTT end, the links mqtt_client announces on the broker that no config maps. Every change of a link&apos;s state is an event, printed as a JSON line.
+A broker or master that cannot be reached is said within 5 s; it keeps trying.
+Exit status: 0 stopped, 1 neither broker nor master was reached (without --allow-empty), the metrics port could not be served or the run file not written, 2 bad options.</source>
+        <translation>Beobachtet jede Abbildung der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, eine verstummte Quelle, Latenz gestempelter Nachrichten und den Zustand der Bridges; dazu, von ihrem MQTT-Ende aus, die Verbindungen, die mqtt_client am Broker ankündigt und keine Konfiguration abbildet. Jede Zustandsänderung einer Verbindung ist ein Ereignis und wird als JSON-Zeile ausgegeben.
+Ein nicht erreichbarer Broker oder Master wird innerhalb von 5 s gemeldet; es wird weiter versucht.
+Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allow-empty), der Metrik-Port konnte nicht bedient oder die Messlauf-Datei nicht geschrieben werden, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>MQTT message</source>
+        <translation>MQTT-Nachricht</translation>
+    </message>
+    <message>
+        <source>nothing was watched: neither the broker nor the master was reached; --allow-empty accepts that</source>
+        <translation>nichts wurde beobachtet: weder Broker noch Master waren erreichbar; --allow-empty lässt das zu</translation>
     </message>
 </context>
 <context>

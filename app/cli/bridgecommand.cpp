@@ -5,10 +5,14 @@
 #include "base/yamllimits.h"
 #include "bridge/referencebridge.h"
 
+#include <cerrno>
+#include <cmath>
+#include <optional>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
+#include <unistd.h>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
@@ -27,6 +31,41 @@ void logLine(const QString& line)
     err(QDateTime::currentDateTime().toString(u"HH:mm:ss.zzz"_s) + u' ' + line);
 }
 
+/// The broker URL waiting in file descriptor `fdText` (a pipe the parent filled and closed),
+/// read to its end and closed; nullopt after saying why.
+std::optional<QString> readBrokerFd(const QString& fdText)
+{
+    constexpr qsizetype kMaxUrlBytes = 4096;
+    bool ok = false;
+    const int fd = fdText.toInt(&ok);
+    if (!ok || fd < 3) {
+        err(Bridge::tr("--broker-fd takes an open file descriptor above 2, not '%1'").arg(fdText));
+        return std::nullopt;
+    }
+    QByteArray url;
+    char buffer[1024];
+    while (url.size() <= kMaxUrlBytes) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            err(Bridge::tr("--broker-fd %1: %2").arg(fd).arg(qt_error_string(errno)));
+            return std::nullopt;
+        }
+        if (n == 0)
+            break;
+        url.append(buffer, n);
+    }
+    ::close(fd);
+    if (url.size() > kMaxUrlBytes) {
+        err(Bridge::tr("--broker-fd %1: more than %2 bytes; a broker URL is shorter")
+                .arg(fd)
+                .arg(kMaxUrlBytes));
+        return std::nullopt;
+    }
+    return QString::fromUtf8(url.trimmed());
+}
+
 /// What the command line asks for.
 struct BridgeRequest
 {
@@ -42,6 +81,11 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     QCommandLineParser parser;
     const QCommandLineOption broker(
         u"broker"_s, Bridge::tr("Broker URL; overrides the config's broker host and port."), u"URL"_s);
+    const QCommandLineOption brokerFd(
+        u"broker-fd"_s,
+        Bridge::tr("Read the broker URL, credentials included, from the open file descriptor FD (a pipe "
+                   "the starting process filled), not from the command line that every user sees."),
+        u"FD"_s);
     const QCommandLineOption master(u"ros-master"_s, Bridge::tr("ROS master URI (default $ROS_MASTER_URI)."),
                                     u"URI"_s);
     const QCommandLineOption name(u"name"_s, Bridge::tr("ROS node name (default mqtt_client)."), u"NODE"_s);
@@ -64,7 +108,7 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
                    "waiting are dropped beyond it), half towards ROS (roscpp's queues; a message beyond "
                    "is dropped). Drops are counted and logged."),
         u"MIB"_s, QString::number(ReferenceBridge::kDefaultMaxQueuedBytes >> 20));
-    parser.addOptions({broker, master, name, arg, offset, everyMessage, queued});
+    parser.addOptions({broker, brokerFd, master, name, arg, offset, everyMessage, queued});
     parser.addPositionalArgument(u"CONFIG"_s, Bridge::tr("mqtt_client config (ROS 1 or ROS 2 layout)."),
                                  u"CONFIG.yaml"_s);
     QStringList args = arguments;
@@ -93,15 +137,28 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     request->yaml = f.read(YamlLimits::maxBytes + 1);
     ReferenceBridge::Options& options = request->options;
     options.brokerUrl = parser.value(broker);
+    if (parser.isSet(brokerFd)) {
+        if (parser.isSet(broker)) {
+            err(Bridge::tr("give --broker or --broker-fd, not both"));
+            return ExitUsage;
+        }
+        const std::optional<QString> url = readBrokerFd(parser.value(brokerFd));
+        if (!url)
+            return ExitUsage;
+        options.brokerUrl = *url;
+    }
     options.rosMaster = parser.value(master);
     options.nodeName = parser.value(name);
     options.announceEveryMessage = parser.isSet(everyMessage);
     bool ok = false;
-    options.clockOffsetNs = qint64(parser.value(offset).toDouble(&ok) * 1e6);
-    if (!ok) {
-        err(Bridge::tr("--clock-offset-ms takes a number of milliseconds"));
+    // Checked before it becomes nanoseconds: 1e300 ms has none that fit.
+    constexpr double kMaxOffsetMs = 24.0 * 3600 * 1000;
+    const double offsetMs = parser.value(offset).toDouble(&ok);
+    if (!ok || !(std::abs(offsetMs) <= kMaxOffsetMs)) {
+        err(Bridge::tr("--clock-offset-ms takes -%1 to %1 milliseconds (a day)").arg(qint64(kMaxOffsetMs)));
         return ExitUsage;
     }
+    options.clockOffsetNs = qint64(offsetMs * 1e6);
     const double mib = parser.value(queued).toDouble(&ok);
     if (!ok || !(mib >= 1 && mib <= 1024 * 1024)) {
         err(Bridge::tr("--max-queued-mib takes a number of MiB from 1 to 1048576"));

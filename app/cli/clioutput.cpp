@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "clioutput.h"
 
+#include "base/secrets.h"
+
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -116,6 +118,39 @@ int runUntil(const std::function<std::optional<int>(qint64 elapsedMs)>& check,
     });
     timer.start(50);
     return QCoreApplication::exec();
+}
+
+void hideCredentials(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const QString arg = QString::fromLocal8Bit(argv[i]);
+        const QString clean = Secrets::urlWithoutCredentials(arg);
+        if (clean == arg)
+            continue;
+        // The user info and its '@' are the bytes the clean form lacks, right after "://".
+        const std::size_t length = std::strlen(argv[i]);
+        const qsizetype start = QByteArray(argv[i]).indexOf("://") + 3;
+        const std::size_t hidden = length - std::size_t(clean.toLocal8Bit().size());
+        if (start < 3 || hidden < 1 || std::size_t(start) + hidden > length)
+            continue;
+        std::memset(argv[i] + start, '*', hidden - 1);
+    }
+}
+
+bool readSeconds(const QString& text, double* seconds)
+{
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    if (!ok || !(v >= 0 && v <= kMaxSeconds)) // NaN fails too
+        return false;
+    *seconds = v;
+    return true;
+}
+
+QString secondsError()
+{
+    return QCoreApplication::translate("Cli", "--seconds takes 0 to %1 seconds (a year)")
+        .arg(qint64(kMaxSeconds));
 }
 
 void keepFreedMemory()

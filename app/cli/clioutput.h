@@ -45,6 +45,18 @@ void whenStopRequested(QObject* context, std::function<void()> onStop);
 /// status the loop ended with (also from a QCoreApplication::exit() elsewhere).
 int runUntil(const std::function<std::optional<int>(qint64 elapsedMs)>& check,
              const std::function<void(qint64 elapsedMs)>& everySecond = {});
+/// Overwrites, in this process's own argv (what /proc/PID/cmdline and ps show every user), the user
+/// info of every argument that is a URL with credentials (`tcp://alice:pw@host` shows as
+/// `tcp://********@host`). Call after the arguments were copied: a typed password is then visible
+/// only for the moment between the start and this call.
+void hideCredentials(int argc, char** argv);
+/// The longest duration an option takes: a year. Longer ones are mistakes, and far longer ones
+/// (1e300) have no milliseconds that fit a qint64.
+inline constexpr double kMaxSeconds = 365.0 * 24 * 3600;
+/// A duration option's value: a number of seconds from 0 to kMaxSeconds; false when `text` is not one.
+bool readSeconds(const QString& text, double* seconds);
+/// What to say when readSeconds() refused a --seconds value.
+QString secondsError();
 /// For processes that forward big messages at a high rate (bridge, demo nodes): keep freed memory
 /// in the process. glibc otherwise maps each buffer over 128 KB afresh and returns it on free, and
 /// the page faults of touching it again cost more than copying the message (measured with perf).

@@ -68,9 +68,8 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
     if (parsed >= 0)
         return parsed;
     bool ok = true;
-    request->seconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
-    if (!ok || request->seconds < 0) {
-        err(Demo::tr("--seconds takes a number of seconds"));
+    if (parser.isSet(seconds) && !CliOutput::readSeconds(parser.value(seconds), &request->seconds)) {
+        err(CliOutput::secondsError());
         return ExitUsage;
     }
     if (!ReportFormats::parse(parser.value(format), &request->summary)

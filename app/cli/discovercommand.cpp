@@ -212,10 +212,8 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
                      "status: 0 when at least one of them answered, 1 when neither did, 2 on bad options."));
     if (parsed >= 0)
         return parsed;
-    bool ok = false;
-    request->seconds = parser.value(seconds).toDouble(&ok);
-    if (!ok || request->seconds <= 0) {
-        err(Discover::tr("--seconds takes a positive number"));
+    if (!CliOutput::readSeconds(parser.value(seconds), &request->seconds) || request->seconds <= 0) {
+        err(Discover::tr("--seconds takes a positive number up to a year"));
         return ExitUsage;
     }
     MqttProfile& profile = request->profile;

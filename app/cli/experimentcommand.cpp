@@ -184,6 +184,9 @@ int runExperiment(const ExperimentRequest& request)
         if (s.state == CellStatus::Failed)
             err(Experiment::tr("cell %1/%2 failed: %3").arg(i + 1).arg(cells).arg(s.reason));
     });
+    QObject::connect(&runner, &ExperimentRunner::warning, [&](int i, const QString& text) {
+        err(Experiment::tr("cell %1/%2: %3").arg(i + 1).arg(cells).arg(text));
+    });
     QObject::connect(&runner, &ExperimentRunner::probeStarted, [](int bytes, double rate) {
         err(Experiment::tr("throughput: %1 bytes at %2 Hz").arg(bytes).arg(rate));
     });

@@ -2,11 +2,15 @@
 #include "recordcommand.h"
 
 #include "app/cli/clioutput.h"
+#include "app/cli/sourcecheck.h"
+#include "base/secrets.h"
+#include "base/yamllimits.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
+#include <algorithm>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFile>
@@ -35,6 +39,7 @@ struct RecordRequest
     RunInfo info;
     qint64 samples = 0; ///< 0: no limit
     double seconds = 0; ///< 0: no limit
+    bool allowEmpty = false; ///< a run without any stamp is a success
 };
 
 /// The run's name, notes and the bridge config kept with it; false after saying why.
@@ -52,7 +57,12 @@ bool readRunInfo(const QCommandLineParser& parser, const QCommandLineOption& nam
         return false;
     }
     info.bridgeConfigPath = QFileInfo(f).absoluteFilePath();
-    info.bridgeConfig = f.readAll();
+    info.bridgeConfig = f.read(YamlLimits::maxBytes + 1);
+    bool parsed = true;
+    Secrets::redactYaml(info.bridgeConfig, nullptr, &parsed);
+    if (!parsed)
+        err(Record::tr("%1 is not YAML: the run keeps no copy of it (its credentials could not be found)")
+                .arg(parser.value(config)));
     return true;
 }
 
@@ -75,15 +85,19 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
     const QCommandLineOption notes(u"notes"_s, Record::tr("Notes to keep with the run."), u"TEXT"_s);
     const QCommandLineOption config(u"config"_s, Record::tr("The bridge config in use, kept with the run."),
                                     u"BRIDGE.yaml"_s);
-    parser.addOptions({pipeline, broker, master, samples, seconds, output, name, notes, config});
+    const QCommandLineOption allowEmpty(
+        u"allow-empty"_s, Record::tr("Exit 0 even when no stamp was recorded (an empty run on purpose)."));
+    parser.addOptions({pipeline, broker, master, samples, seconds, output, name, notes, config, allowEmpty});
     QStringList args = arguments;
     args.replace(0, u"bridgescope record"_s);
     const int parsed = CliOutput::parseCommand(
         parser, args,
         Record::tr(
             "Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run "
-            "file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C.\n"
-            "Exit status: 0 recorded, 1 the run file could not be written, 2 bad options."));
+            "file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker "
+            "or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.\n"
+            "Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not "
+            "be written, 2 bad options."));
     if (parsed >= 0)
         return parsed;
     if (!parser.isSet(pipeline) || !parser.isSet(output)) {
@@ -96,11 +110,11 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         err(Record::tr("--samples takes a number of samples"));
         return ExitUsage;
     }
-    request->seconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
-    if (!ok || request->seconds < 0) {
-        err(Record::tr("--seconds takes a number of seconds"));
+    if (parser.isSet(seconds) && !CliOutput::readSeconds(parser.value(seconds), &request->seconds)) {
+        err(CliOutput::secondsError());
         return ExitUsage;
     }
+    request->allowEmpty = parser.isSet(allowEmpty);
     QString why;
     const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);
     request->profile = MqttProfile::fromUrl(parser.value(broker));
@@ -138,6 +152,12 @@ int runRecord(const RecordRequest& request)
         QCoreApplication::exit(ExitFailed);
     });
     const LatencyEngine& e = measure.engine();
+    // The master matters when the pipeline has a ROS topic (MQTT topics have no leading '/').
+    const bool needsMaster = std::any_of(request.pipeline.topics().cbegin(), request.pipeline.topics().cend(),
+                                         [](const QString& t) { return t.startsWith(u'/'); });
+    SourceCheck sources(
+        live, needsMaster, [&measure] { return measure.recorder()->committedStamps(); },
+        Record::tr("stamp of the pipeline's topics"));
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
             const bool enough = request.samples > 0 && e.samples() >= request.samples;
@@ -145,6 +165,7 @@ int runRecord(const RecordRequest& request)
             return enough || late ? std::optional<int>(ExitOk) : std::nullopt;
         },
         [&](qint64 elapsedMs) {
+            sources.check(elapsedMs);
             // Committed first: after a crash the file holds at least what this line says.
             err(Record::tr("%1 s: %2 stamps committed, %3 complete samples, %4 dropped, %5 waiting")
                     .arg(elapsedMs / 1000)
@@ -161,10 +182,15 @@ int runRecord(const RecordRequest& request)
         err(Record::tr("recording failed: %1").arg(why));
         return ExitFailed;
     }
-    out(Record::tr("%1: %2 complete samples, %3 stamps")
-            .arg(request.runPath)
-            .arg(complete)
-            .arg(measure.recorder()->committedStamps()));
+    const qint64 stamps = measure.recorder()->committedStamps();
+    out(Record::tr("%1: %2 complete samples, %3 stamps").arg(request.runPath).arg(complete).arg(stamps));
+    if (stamps == 0 && !request.allowEmpty) {
+        err(Record::tr("nothing was recorded (%1); --allow-empty accepts an empty run")
+                .arg(!sources.brokerEverReached() && !sources.masterEverReached()
+                         ? Record::tr("neither the broker nor the master was reached")
+                         : Record::tr("no stamp of the pipeline's topics arrived")));
+        return ExitFailed;
+    }
     return ExitOk;
 }
 } // namespace

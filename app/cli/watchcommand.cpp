@@ -3,6 +3,7 @@
 
 #include "app/cli/clioutput.h"
 #include "app/cli/rosoptions.h"
+#include "app/cli/sourcecheck.h"
 #include "base/wallclock.h"
 #include "base/yamllimits.h"
 #include "config/configreader.h"
@@ -45,6 +46,8 @@ struct WatchRequest
     QString runPath; ///< -o: the events are recorded in this run file; empty: none
     RunInfo info; ///< of that run
     double seconds = 0; ///< 0: until Ctrl+C
+    bool allowEmpty = false; ///< neither broker nor master reached is a success
+    bool ros1 = true; ///< the ROS 1 master is watched (not with --ros 2)
     bool discover = true; ///< also the links mqtt_client announces that no config has
     std::optional<Pipeline> pipeline; ///< --pipeline: latency of the mappings with stamp topics, and recorded
     std::optional<Ros2Options> ros2; ///< --ros 2 or both: the ROS 2 domain joined as well
@@ -130,8 +133,10 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
             "The timestamp topics' pipeline: a mapping with a timestamp_topic_prefix takes its latency from "
             "PREFIX/in to PREFIX/out, and -o records the samples as well."),
         u"PIPELINE.yaml"_s);
-    parser.addOptions(
-        {broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover, pipeline});
+    const QCommandLineOption allowEmpty(
+        u"allow-empty"_s, Watch::tr("Exit 0 even when neither the broker nor the master was ever reached."));
+    parser.addOptions({broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover,
+                       pipeline, allowEmpty});
     RosOptions ros;
     ros.addTo(parser);
     parser.addPositionalArgument(u"CONFIG"_s, Watch::tr("mqtt_client configs whose mappings are watched."),
@@ -145,8 +150,9 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
             "lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the "
             "bridges' state; and, from their MQTT end, the links mqtt_client announces on the broker "
             "that no config maps. Every change of a link's state is an event, printed as a JSON line.\n"
-            "Exit status: 0 stopped, 1 the metrics port could not be served or the run file not written, "
-            "2 bad options."));
+            "A broker or master that cannot be reached is said within 5 s; it keeps trying.\n"
+            "Exit status: 0 stopped, 1 neither broker nor master was reached (without --allow-empty), the "
+            "metrics port could not be served or the run file not written, 2 bad options."));
     if (parsed >= 0)
         return parsed;
     request->discover = !parser.isSet(noDiscover);
@@ -157,12 +163,11 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     }
     if (!readConfigs(parser.positionalArguments(), request))
         return ExitUsage;
-    bool ok = true;
-    request->seconds = parser.isSet(seconds) ? parser.value(seconds).toDouble(&ok) : 0;
-    if (!ok || request->seconds < 0) {
-        err(Watch::tr("--seconds takes a number of seconds"));
+    if (parser.isSet(seconds) && !CliOutput::readSeconds(parser.value(seconds), &request->seconds)) {
+        err(CliOutput::secondsError());
         return ExitUsage;
     }
+    request->allowEmpty = parser.isSet(allowEmpty);
     QString why;
     request->broker = parser.isSet(broker) ? MqttProfile::fromUrl(parser.value(broker))
                                            : brokerOf(request->configs.first().second);
@@ -192,6 +197,7 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     if (ros.ros2 && !ros.environmentError.isEmpty())
         err(ros.environmentError);
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
+    request->ros1 = ros.ros1;
     request->masterUri = parser.value(master);
     request->metrics = parser.value(metrics);
     request->eventsFile = parser.value(events);
@@ -289,6 +295,9 @@ int runWatch(const WatchRequest& request)
     }
     err(Watch::tr("watching %n link(s) of %1; Ctrl+C stops", nullptr, monitor->linkCount())
             .arg(request.broker.url));
+    SourceCheck sources(
+        live, request.ros1 && !request.configs.isEmpty(), [&live] { return qint64(live.mqtt()->received()); },
+        Watch::tr("MQTT message"));
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
             if (request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000))
@@ -296,6 +305,7 @@ int runWatch(const WatchRequest& request)
             return std::nullopt;
         },
         [&](qint64 elapsedMs) {
+            sources.check(elapsedMs);
             if (elapsedMs / 1000 % 10 != 0)
                 return;
             int counts[3] = {0, 0, 0};
@@ -315,6 +325,14 @@ int runWatch(const WatchRequest& request)
             return ExitFailed;
         }
         err(Watch::tr("events recorded in %1").arg(request.runPath));
+    }
+    sources.check(0); // how the sources are now, said or not
+    // A watch of ROS 2 alone has its graph from DDS, which is never "unreachable".
+    if (status == ExitOk && !request.allowEmpty && !sources.brokerEverReached() && request.ros1
+        && !sources.masterEverReached()) {
+        err(Watch::tr("nothing was watched: neither the broker nor the master was reached; --allow-empty "
+                      "accepts that"));
+        return ExitFailed;
     }
     return recordFailed ? ExitFailed : status;
 }

@@ -1,156 +1,175 @@
 // SPDX-License-Identifier: MIT
 #include "secrets.h"
 
-#include <QList>
+#include "base/yamllimits.h"
+
 #include <QRegularExpression>
-#include <QUrl>
+#include <QStringList>
+#include <sstream>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
+#include <yaml-cpp/yaml.h>
 
 using namespace Qt::StringLiterals;
 
 namespace Secrets {
 namespace {
-qsizetype indentOf(const QString& line)
+
+/// Replaces every scalar below `node` that is a value (not null, not a launch argument).
+void redactAll(YAML::Node node, int depth, bool* changed)
 {
-    qsizetype n = 0;
-    while (n < line.size() && line[n].isSpace())
-        ++n;
-    return n;
+    if (depth > YamlLimits::maxDepth)
+        return;
+    if (node.IsScalar()) {
+        const std::string& v = node.Scalar();
+        if (v.empty() || v.rfind("$(arg", 0) == 0 || v == kRedacted)
+            return;
+        node = std::string(kRedacted);
+        *changed = true;
+    } else if (node.IsSequence()) {
+        for (YAML::Node item : node)
+            redactAll(item, depth + 1, changed);
+    } else if (node.IsMap()) {
+        for (auto kv : node)
+            redactAll(kv.second, depth + 1, changed);
+    }
+}
+
+/// Walks the parsed tree: the value of every key that names a secret is redacted. An alias is the
+/// node its anchor names (yaml-cpp shares it), so a secret reached through one is redacted where
+/// it is defined too.
+void redactTree(YAML::Node node, int depth, bool* changed)
+{
+    if (depth > YamlLimits::maxDepth)
+        return;
+    if (node.IsSequence()) {
+        for (YAML::Node item : node)
+            redactTree(item, depth + 1, changed);
+    } else if (node.IsMap()) {
+        for (auto kv : node) {
+            YAML::Node key = kv.first;
+            YAML::Node value = kv.second;
+            if (key.IsScalar() && isSecretKey(QString::fromStdString(key.Scalar())))
+                redactAll(value, depth + 1, changed);
+            else
+                redactTree(value, depth + 1, changed);
+            redactTree(key, depth + 1, changed); // a complex key: a map may be a key
+        }
+    }
+}
+
+/// Events only: linear in the text, aliases not expanded.
+class NoHandler : public YAML::EventHandler
+{
+public:
+    void OnDocumentStart(const YAML::Mark&) override { }
+    void OnDocumentEnd() override { }
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override { }
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override { }
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override { }
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override
+    { }
+    void OnSequenceEnd() override { }
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override
+    { }
+    void OnMapEnd() override { }
+};
+
+/// Whether `yaml` holds one document at most (YAML::Load reads only the first).
+bool isSingleDocument(const QByteArray& yaml)
+{
+    std::istringstream in(yaml.toStdString());
+    YAML::Parser parser(in);
+    NoHandler none;
+    try {
+        return !parser.HandleNextDocument(none) || !parser.HandleNextDocument(none);
+    } catch (const YAML::Exception&) {
+        return false;
+    }
+}
+
+qsizetype userInfoEnd(const QString& url, qsizetype start)
+{
+    // MQTT over TCP and TLS has no path, query or fragment: there every '/', '?', '#' and '@'
+    // before the last '@' belongs to the user info (a password typed unencoded). Other schemes
+    // (ws, http) keep the rule of URLs: the authority ends at the first '/', '?' or '#'.
+    const QString scheme = url.left(start - 3).toLower();
+    static const QStringList pathless {u"tcp"_s, u"ssl"_s, u"mqtt"_s, u"mqtts"_s};
+    qsizetype end = url.size();
+    if (!pathless.contains(scheme)) {
+        for (const QChar c : {u'/', u'?', u'#'}) {
+            const qsizetype i = url.indexOf(c, start);
+            if (i >= 0 && i < end)
+                end = i;
+        }
+    }
+    return end > start ? url.lastIndexOf(u'@', end - 1) : -1;
 }
 } // namespace
+
+bool isSecretKey(const QString& key)
+{
+    static const QRegularExpression secret(
+        u"(?<![A-Za-z0-9])(?:[A-Za-z0-9]+_)*(?:pass|passwd|password|passphrase|secret|token|api_key)$"_s,
+        QRegularExpression::CaseInsensitiveOption);
+    return secret.match(key).hasMatch();
+}
 
 QString urlWithoutCredentials(const QString& url)
 {
     const qsizetype scheme = url.indexOf(u"://"_s);
     if (scheme < 0)
         return url;
-    // The authority ends at the first '/', '?' or '#' after the scheme; its last '@' ends the user
-    // info. Done by hand: QUrl rejects some URLs that a user still types and expects to work.
+    // Done by hand: QUrl rejects some URLs that a user still types and expects to work.
     const qsizetype start = scheme + 3;
-    qsizetype end = url.size();
-    for (const QChar c : {u'/', u'?', u'#'}) {
-        const qsizetype i = url.indexOf(c, start);
-        if (i >= 0 && i < end)
-            end = i;
-    }
-    const qsizetype at = url.lastIndexOf(u'@', end - 1);
+    const qsizetype at = userInfoEnd(url, start);
     if (at < start)
         return url;
     return url.left(start) + url.mid(at + 1);
 }
 
-QByteArray redactYaml(const QByteArray& yaml, bool* changed)
+QString redactedUrl(const QString& url)
 {
-    // A key that names a secret, as a whole word: "pass", "password", "key_password",
-    // "passphrase", "secret", "client_secret", "token", "api_key" (not "passive", "bypass_x").
-    static const QRegularExpression key(
-        u"(?<![A-Za-z0-9])((?:[A-Za-z0-9]+_)*(?:pass|passwd|password|passphrase|secret|token|api_key))"
-        u"([\"']?)(\\s*:[ \\t]*)"_s,
-        QRegularExpression::CaseInsensitiveOption);
+    const qsizetype scheme = url.indexOf(u"://"_s);
+    const qsizetype at = url.lastIndexOf(u'@');
+    if (scheme < 0 || at < scheme + 3)
+        return url;
+    return url.left(scheme + 3) + QLatin1StringView(kRedacted) + url.mid(at);
+}
+
+QByteArray redactYaml(const QByteArray& yaml, bool* changed, bool* parsed)
+{
     bool any = false;
-    QList<QByteArray> lines = yaml.split('\n');
-    for (qsizetype i = 0; i < lines.size(); ++i) {
-        QString line = QString::fromUtf8(lines[i]);
-        const QString trimmed = line.trimmed();
-        if (trimmed.startsWith(u'#'))
-            continue;
-        bool lineChanged = false;
-        qsizetype from = 0;
-        QRegularExpressionMatch m;
-        while ((m = key.match(line, from)).hasMatch()) {
-            const qsizetype valueStart = m.capturedEnd();
-            // The value runs to a ',' or '}' in flow style (inside braces), else to a comment or the end.
-            const bool flow
-                = line.left(m.capturedStart()).count(u'{') > line.left(m.capturedStart()).count(u'}');
-            qsizetype valueEnd = line.size();
-            const QChar quote = valueStart < line.size() ? line[valueStart] : QChar();
-            if (quote == u'"' || quote == u'\'') {
-                qsizetype close = valueStart + 1;
-                while (close < line.size()) {
-                    if (line[close] == quote && !(quote == u'"' && line[close - 1] == u'\\'))
-                        break;
-                    ++close;
-                }
-                valueEnd = qMin(close + 1, line.size());
-            } else {
-                for (qsizetype j = valueStart; j < line.size(); ++j) {
-                    if ((flow && (line[j] == u',' || line[j] == u'}'))
-                        || (line[j] == u'#' && j > 0 && line[j - 1].isSpace())) {
-                        valueEnd = j;
-                        break;
-                    }
-                }
-                while (valueEnd > valueStart && line[valueEnd - 1].isSpace())
-                    --valueEnd;
-            }
-            const QString value = line.mid(valueStart, valueEnd - valueStart);
-            const QString plain = value.trimmed();
-            if (plain.isEmpty() || plain == u"\"\""_s || plain == u"''"_s || plain == u"~"_s
-                || plain == u"null"_s || plain.startsWith(u'{') || plain.startsWith(u'[')) {
-                from = valueEnd > m.capturedEnd() ? valueEnd : m.capturedEnd();
-                if (plain.isEmpty() && !flow) {
-                    // A nested map or a value on the following, more indented lines.
-                    const qsizetype indent = indentOf(line);
-                    qsizetype j = i + 1;
-                    while (j < lines.size()) {
-                        const QString next = QString::fromUtf8(lines[j]);
-                        const qsizetype nextIndent = indentOf(next);
-                        if (next.trimmed().isEmpty() || nextIndent <= indent)
-                            break;
-                        // Only a scalar continuation is a secret; a nested map is walked line by line.
-                        if (next.trimmed().contains(u": "_s) || next.trimmed().endsWith(u':'))
-                            break;
-                        lines[j] = QByteArray(nextIndent, ' ') + Secrets::kRedacted;
-                        any = true;
-                        ++j;
-                    }
-                }
-                continue;
-            }
-            if (plain.startsWith(u'|') || plain.startsWith(u'>')) {
-                // A block scalar: its lines are the more indented ones that follow.
-                const qsizetype indent = indentOf(line);
-                qsizetype j = i + 1;
-                while (j < lines.size()) {
-                    const QString next = QString::fromUtf8(lines[j]);
-                    const qsizetype nextIndent = indentOf(next);
-                    if (!next.trimmed().isEmpty() && nextIndent <= indent)
-                        break;
-                    if (!next.trimmed().isEmpty())
-                        lines[j] = QByteArray(nextIndent, ' ') + Secrets::kRedacted;
-                    ++j;
-                }
-                any = true;
-                from = valueEnd;
-                continue;
-            }
-            if (plain.startsWith(u'*') || plain.startsWith(u"$(arg"_s)) {
-                // An alias (its anchor is redacted where it is defined) or a launch argument.
-                from = valueEnd;
-                continue;
-            }
-            qsizetype replaceFrom = valueStart;
-            if (plain.startsWith(u'&')) {
-                // Keep the anchor: aliases elsewhere in the file still resolve.
-                const qsizetype space = line.indexOf(u' ', valueStart);
-                if (space < 0 || space >= valueEnd) {
-                    from = valueEnd;
-                    continue;
-                }
-                replaceFrom = space + 1;
-            }
-            const QString replacement = u"\"%1\""_s.arg(QLatin1StringView(Secrets::kRedacted));
-            line.replace(replaceFrom, valueEnd - replaceFrom, replacement);
-            from = replaceFrom + replacement.size();
-            lineChanged = true;
+    bool ok = true;
+    YAML::Node root;
+    try {
+        root = YamlLimits::load(yaml);
+    } catch (const YAML::Exception&) {
+        ok = false;
+    }
+    QByteArray out = yaml;
+    if (ok) {
+        redactTree(root, 0, &any);
+        if (any || !isSingleDocument(yaml)) {
+            // Written anew from the tree: only what the parser saw, the first document alone.
+            YAML::Emitter e;
+            e << root;
+            ok = e.good();
+            out = ok ? QByteArray(e.c_str(), qsizetype(e.size())) + '\n' : QByteArray();
+            any = true; // a later document may have held a secret as well
         }
-        if (lineChanged) {
-            lines[i] = line.toUtf8();
-            any = true;
-        }
+    }
+    if (!ok) {
+        // Nothing of a text whose secrets cannot be found is kept, only why.
+        out = QByteArray("# ") + kNotYaml + '\n';
+        any = true;
     }
     if (changed)
         *changed = any;
-    return any ? lines.join('\n') : yaml;
+    if (parsed)
+        *parsed = ok;
+    return out;
 }
 
 } // namespace Secrets

@@ -9,7 +9,9 @@
 #include "config/configwriter.h"
 #include "latency/pipeline.h"
 
+#include <cerrno>
 #include <csignal>
+#include <fcntl.h>
 #include <pwd.h>
 #include <QDeadlineTimer>
 #include <QDir>
@@ -27,6 +29,7 @@ using namespace Qt::StringLiterals;
 
 namespace {
 const QString kStamps = u"/benchmarking_suite/timestamps/"_s;
+constexpr qsizetype kMaxSecretBytes = 4096;
 
 /// The suite's bridge configs, with the demo's own ROS topics for each host, connecting to
 /// host:port (with TLS when caFile is given).
@@ -89,17 +92,33 @@ struct DemoLab::Private
         return env;
     }
 
-    QProcess* launch(const QString& name, const QString& program, const QStringList& args)
+    /// Starts `program`. A `secret` (a broker URL with credentials) never goes on its command
+    /// line, which every user sees in ps, nor in its environment: it waits in a pipe whose read
+    /// end only this child inherits, and the child is told the descriptor's number
+    /// (`--broker-fd N`). Empty when the pipe could not be made (`error` says why).
+    QProcess* launch(const QString& name, const QString& program, QStringList args,
+                     const QByteArray& secret = {}, QString* error = nullptr)
     {
+        int readEnd = -1;
+        if (!secret.isEmpty()) {
+            readEnd = secretPipe(secret, error);
+            if (readEnd < 0)
+                return nullptr;
+            args << u"--broker-fd"_s << QString::number(readEnd);
+        }
         auto p = std::make_unique<QProcess>();
         p->setProcessEnvironment(rosEnvironment());
         p->setStandardOutputFile(dir.filePath(name + u".log"_s));
         p->setStandardErrorFile(dir.filePath(name + u".log"_s), QIODevice::Append);
-        p->setChildProcessModifier([] {
+        p->setChildProcessModifier([readEnd] {
             // No orphans: the child gets SIGTERM when Bridgescope dies, however it dies.
             ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+            if (readEnd >= 0) // close-on-exec everywhere else: only this child keeps it
+                ::fcntl(readEnd, F_SETFD, 0);
         });
-        p->start(program, args);
+        p->start(program, args); // forks before it returns: the parent's read end can go
+        if (readEnd >= 0)
+            ::close(readEnd);
         QStringList shown; // a --broker URL may carry credentials: never in a log
         for (const QString& a : args)
             shown << (a.contains(u"://"_s) ? Secrets::urlWithoutCredentials(a) : a);
@@ -108,6 +127,38 @@ struct DemoLab::Private
         processes.push_back(std::move(p));
         names << name;
         return raw;
+    }
+
+    /// A pipe holding `secret` and closed for writing (the child reads to its end); its read
+    /// end, close-on-exec, or -1.
+    static int secretPipe(const QByteArray& secret, QString* error)
+    {
+        int fds[2] = {-1, -1};
+        // A URL fits a pipe's buffer many times over; a longer one would block the write.
+        if (secret.size() > kMaxSecretBytes || ::pipe2(fds, O_CLOEXEC) != 0) {
+            if (error)
+                *error = secret.size() > kMaxSecretBytes
+                    ? DemoLab::tr("the broker URL is too long")
+                    : DemoLab::tr("cannot make a pipe: %1").arg(qt_error_string(errno));
+            return -1;
+        }
+        qsizetype written = 0;
+        while (written < secret.size()) {
+            const ssize_t n = ::write(fds[1], secret.constData() + written, size_t(secret.size() - written));
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                break;
+            written += n;
+        }
+        ::close(fds[1]);
+        if (written != secret.size()) {
+            ::close(fds[0]);
+            if (error)
+                *error = DemoLab::tr("cannot write to a pipe: %1").arg(qt_error_string(errno));
+            return -1;
+        }
+        return fds[0];
     }
 
     QString logOf(const QString& name) const
@@ -254,8 +305,10 @@ bool DemoLab::startComponents(QString* error)
     };
     const Options& o = d->options;
     const QString program = o.program.isEmpty() ? QCoreApplication::applicationFilePath() : o.program;
-    const QUrl broker(d->brokerUrl);
-    const bool credentials = !broker.userName().isEmpty() || !broker.password().isEmpty();
+    // Host and port from the URL without its user info: a password may hold what QUrl refuses.
+    const QString withoutCredentials = Secrets::urlWithoutCredentials(d->brokerUrl);
+    const QUrl broker(withoutCredentials);
+    const bool credentials = withoutCredentials != d->brokerUrl;
 
     // Configs: both bridges (to the broker, or to the relay in front of it) and the paper's
     // pipeline (Fig. 4) with the demo's hosts.
@@ -294,13 +347,15 @@ bool DemoLab::startComponents(QString* error)
             continue;
         }
         QStringList args {u"bridge"_s, config, u"--name"_s, name};
-        if (credentials && !d->bridgePorts.contains(side))
-            args << u"--broker"_s << d->brokerUrl; // the config holds host and port, not secrets
         if (side == u"cloud"_s)
             args << u"--clock-offset-ms"_s << offset;
         if (o.announceEveryMessage)
             args << u"--announce-every-message"_s;
-        d->launch(side + u"_bridge"_s, program, args + common);
+        // The config holds host and port, not secrets: the credentials go through a pipe, with
+        // the host and port the bridge connects to (the relay's, when one is in between).
+        const QByteArray secret = credentials ? bridgeBrokerUrl(side).toUtf8() : QByteArray();
+        if (!d->launch(side + u"_bridge"_s, program, args + common, secret, &why))
+            return fail(why);
     }
     d->launch(u"object_detection"_s, program,
               QStringList {u"demo-node"_s, u"cloud"_s, u"--clock-offset-ms"_s, offset, u"--detection-ms"_s,
@@ -348,6 +403,17 @@ QString DemoLab::failure() const
         if (d->processes[i]->state() == QProcess::NotRunning)
             return tr("%1 stopped: %2").arg(d->names[qsizetype(i)], d->logOf(d->names[qsizetype(i)]));
     return QString();
+}
+
+QString DemoLab::bridgeBrokerUrl(const QString& side) const
+{
+    if (!d->bridgePorts.contains(side))
+        return d->brokerUrl;
+    // The user info as it is, before the host: "scheme://user:pw@" + the relay.
+    const QString clean = Secrets::urlWithoutCredentials(d->brokerUrl);
+    const qsizetype start = d->brokerUrl.indexOf(u"://"_s) + 3;
+    const QString userInfo = d->brokerUrl.mid(start, d->brokerUrl.size() - clean.size());
+    return d->brokerUrl.left(start) + userInfo + u"127.0.0.1:%1"_s.arg(d->bridgePorts.value(side));
 }
 
 QString DemoLab::brokerUrl() const

@@ -66,6 +66,9 @@ public:
     QString failure() const;
 
     QString brokerUrl() const; ///< ssl:// with TLS
+    /// The broker URL a side's bridge is given (through a pipe, never its command line): the
+    /// broker's, with the relay's host and port when a relay is in between.
+    QString bridgeBrokerUrl(const QString& side) const;
     QString caFile() const; ///< the CA that signed the broker's certificate (TLS), else empty
     QString rosMasterUri() const;
     QString vehicleConfigPath() const; ///< the vehicle bridge's config (for the Map page)

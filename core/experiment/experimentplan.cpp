@@ -18,10 +18,14 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr double kStartSeconds = 5; ///< servers, bridges and the first samples, as measured on the lab
 constexpr double kStopSeconds = 2;
+// Every number of a plan is checked against its range before any arithmetic: a duration or a
+// rate far out (1e300, 1e-300) would otherwise overflow the milliseconds it becomes.
+constexpr double kMinRateHz = 0.01; ///< one sample every 100 s
+constexpr double kMaxTimeoutSeconds = 7 * 24 * 3600; ///< a week per cell
 
 QString where(const YAML::Mark& mark)
 {
-    return ExperimentPlan::tr("line %1").arg(mark.line + 1);
+    return ExperimentPlan::tr("line %1, column %2").arg(mark.line + 1).arg(mark.column + 1);
 }
 
 QString text(const YAML::Node& n)
@@ -175,8 +179,8 @@ bool applyLevel(CellSettings& s, const QString& factor, const YAML::Node& level,
     if (factor == u"rate_hz"_s || factor == u"detection_ms"_s) {
         const std::optional<double> v = number(level);
         const bool rate = factor == u"rate_hz"_s;
-        if (!v || (rate ? (*v <= 0 || *v > 1000) : (*v < 0 || *v > 10'000)))
-            return fail(rate ? ExperimentPlan::tr("rate_hz takes a rate above 0 and up to 1000 Hz")
+        if (!v || (rate ? (*v < kMinRateHz || *v > 1000) : (*v < 0 || *v > 10'000)))
+            return fail(rate ? ExperimentPlan::tr("rate_hz takes %1 to 1000 Hz").arg(kMinRateHz)
                              : ExperimentPlan::tr("detection_ms takes 0 to 10000 ms"));
         (rate ? s.rateHz : s.detectionMs) = *v;
         return true;
@@ -336,8 +340,9 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
         return fail(why);
     if (const YAML::Node t = root["timeout_s"]) {
         const std::optional<double> v = number(t);
-        if (!v || *v <= 0)
-            return fail(tr("%1: timeout_s takes seconds above 0").arg(where(t.Mark())));
+        if (!v || *v < 1 || *v > kMaxTimeoutSeconds)
+            return fail(
+                tr("%1: timeout_s takes 1 to %2 seconds").arg(where(t.Mark())).arg(kMaxTimeoutSeconds));
         plan.cellTimeoutS = *v;
     }
     if (const YAML::Node s = root["servers"]) {
@@ -391,8 +396,8 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
             return fail(tr("%1: throughput is {rates_hz: [10, 20, …], seconds: N}").arg(where(t.Mark())));
         for (const YAML::Node& r : rates) {
             const std::optional<double> v = number(r);
-            if (!v || *v <= 0 || *v > 10'000)
-                return fail(tr("%1: a rate above 0 and up to 10000 Hz").arg(where(r.Mark())));
+            if (!v || *v < kMinRateHz || *v > 10'000)
+                return fail(tr("%1: a rate from %2 to 10000 Hz").arg(where(r.Mark())).arg(kMinRateHz));
             step.ratesHz << *v;
         }
         if (const YAML::Node sec = t["seconds"]) {
@@ -513,7 +518,8 @@ std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString*
 
 QString ExperimentPlan::durationText(double seconds)
 {
-    const qint64 s = qint64(std::max(0.0, seconds) + 0.5);
+    // Bounded before the conversion: a double beyond qint64 has no defined conversion.
+    const qint64 s = qint64((seconds > 0 ? std::min(seconds, 1e12) : 0.0) + 0.5); // NaN: 0
     if (s < 120)
         return tr("%1 s").arg(s);
     if (s < 7200)

@@ -9,6 +9,7 @@
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"
 #include "record/runfile.h"
+#include "ros/rosgraphpoller.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -30,6 +31,8 @@ constexpr int kPollMs = 100;
 /// A probe's samples time out after this (not the 5 s default): the window waits for it.
 constexpr qint64 kProbeTimeoutMs = 2000;
 constexpr qsizetype kMaxStateBytes = ExperimentState::kMaxBytes;
+/// A cell whose broker or master cannot be reached, or whose stamps do not come, says so after this.
+constexpr qint64 kSilenceMs = 5000;
 
 /// A CA and a server certificate for 127.0.0.1, made with openssl in `dir` (EC keys: quick).
 bool makeTlsFiles(const QString& dir, QString* error)
@@ -116,6 +119,7 @@ struct ExperimentRunner::Cell
     qint64 resetAtMs = -1; ///< when the warm-up's samples were forgotten
     qint64 samplesBefore = 0; ///< complete samples when the window opened, and dropped ones
     qint64 droppedBefore = 0;
+    bool silenceSaid = false; ///< warning() was emitted for this cell
 };
 
 ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QString directory,
@@ -305,6 +309,8 @@ void ExperimentRunner::poll()
         endCell(CellStatus::Failed, c.lab.failure());
         return;
     }
+    if (!c.silenceSaid && c.clock.elapsed() >= kSilenceMs)
+        saySilence(c);
     if (c.clock.elapsed() > qint64(m_plan.timeoutSeconds(cell) * 1000)) {
         endCell(CellStatus::Failed,
                 tr("%1 of %2 samples after %3 s")
@@ -340,6 +346,26 @@ void ExperimentRunner::poll()
     sendTotals();
     if (engine.samples() >= m_plan.samples)
         endCell(CellStatus::Complete, QString());
+}
+
+void ExperimentRunner::saySilence(Cell& c)
+{
+    QStringList why;
+    const MqttConnection* mqtt = c.live->mqtt();
+    if (mqtt->state() != MqttConnection::State::Connected)
+        why << tr("the broker %1 cannot be reached (%2)")
+                   .arg(MqttProfile::withoutCredentials(mqtt->profile().url), mqtt->stateDetail());
+    if (!c.live->rosGraph()->isReachable())
+        why << tr("the ROS master %1 cannot be reached (%2)")
+                   .arg(MqttProfile::withoutCredentials(c.live->rosMasterUri()),
+                        c.live->rosGraph()->lastError());
+    const LatencyEngine& engine = c.measure->engine();
+    if (why.isEmpty() && engine.samples() == 0 && engine.pending() == 0)
+        why << tr("no stamp has arrived");
+    c.silenceSaid = true;
+    if (!why.isEmpty())
+        emit warning(m_current,
+                     tr("after %1 s: %2; still trying").arg(kSilenceMs / 1000).arg(why.join(u"; "_s)));
 }
 
 void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)

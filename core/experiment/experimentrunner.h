@@ -93,6 +93,9 @@ signals:
     void cellStarted(int index);
     void cellFinished(int index); ///< complete or failed; see statuses()
     void progress(int index, qint64 samples, bool warmingUp);
+    /// Once per cell, a few seconds in, when its broker or master cannot be reached or no stamp
+    /// has come; the cell goes on trying until its timeout.
+    void warning(int index, const QString& text);
     /// The running cell's samples recorded since the last call: their totals, in ms.
     void totals(int index, const QList<double>& totalMs);
     void probeStarted(int payloadBytes, double rateHz); ///< a rate of the throughput step
@@ -104,6 +107,7 @@ private:
     void nextCell();
     void beginCell(int index);
     void poll();
+    void saySilence(Cell& c);
     void endCell(CellStatus::State state, const QString& reason);
     void sendTotals();
     bool writeState(QString* error = nullptr) const;

@@ -372,6 +372,7 @@ struct LinkProbe::Run
 
 bool LinkProbeOptions::validate(QString* error) const
 {
+    constexpr double kMinRateHz = 0.01;
     auto fail = [error](const QString& why) {
         if (error)
             *error = why;
@@ -380,8 +381,10 @@ bool LinkProbeOptions::validate(QString* error) const
     if (payloadBytes < kHeaderBytes || payloadBytes > kMaxPayloadBytes)
         return fail(
             LinkProbe::tr("--size must be between %1 and %2 bytes").arg(kHeaderBytes).arg(kMaxPayloadBytes));
-    if (!(rateHz > 0) || !std::isfinite(rateHz) || rateHz > 1e6)
-        return fail(LinkProbe::tr("--rate must be above 0 and at most 1000000 Hz"));
+    // A rate near 0 makes the interval between messages infinite (1e9 / 1e-300 ns), and the send
+    // times computed from it undefined: bounded like every number given.
+    if (!(rateHz >= kMinRateHz) || !std::isfinite(rateHz) || rateHz > 1e6)
+        return fail(LinkProbe::tr("--rate must be from %1 to 1000000 Hz").arg(kMinRateHz));
     if (qos < 0 || qos > 2)
         return fail(LinkProbe::tr("--qos must be 0, 1 or 2"));
     if (count < 1 || count > 100'000'000)

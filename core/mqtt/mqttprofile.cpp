@@ -30,18 +30,20 @@ bool MqttProfile::validate(QString* error) const
         return false;
     };
     const QUrl u(url, QUrl::StrictMode);
+    // Never echo the URL as given: what did not parse may be a password.
+    const QString shown = Secrets::redactedUrl(url);
     static const QStringList schemes = {u"tcp"_s, u"ssl"_s, u"mqtt"_s, u"mqtts"_s, u"ws"_s, u"wss"_s};
     if (!u.isValid() || u.scheme().isEmpty())
         return fail(
             ProfileText::tr("'%1' is not a broker URL; write it as tcp://host:1883 or ssl://host:8883.")
-                .arg(url));
+                .arg(shown));
     if (!schemes.contains(u.scheme()))
         return fail(ProfileText::tr("'%1' is not a broker scheme; use tcp, ssl, mqtt, mqtts, ws or wss.")
                         .arg(u.scheme()));
     if (u.host().isEmpty())
-        return fail(ProfileText::tr("'%1' names no host.").arg(url));
+        return fail(ProfileText::tr("'%1' names no host.").arg(shown));
     if (u.port() == 0)
-        return fail(ProfileText::tr("'%1': port 0 is not a port.").arg(url));
+        return fail(ProfileText::tr("'%1': port 0 is not a port.").arg(shown));
     if (mqttVersion != 4 && mqttVersion != 5)
         return fail(ProfileText::tr("MQTT version must be 3.1.1 (4) or 5."));
     if (filters.isEmpty())

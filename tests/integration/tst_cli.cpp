@@ -260,6 +260,35 @@ private slots:
                  false);
     }
 
+    // Issue 31: a watch whose broker and master never answer says so within seconds and exits 1
+    // at the end (nothing was watched), unless --allow-empty.
+    void watchSaysWhenNothingCanBeReached()
+    {
+        QTemporaryDir dir;
+        const QString broker = u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort());
+        const QString config = writeFile(dir, u"bridge.yaml"_s,
+                                         u"broker: {host: 127.0.0.1, port: %1}\nbridge:\n  mqtt2ros:\n    - "
+                                         u"{mqtt_topic: lab/x, ros_topic: "
+                                         u"/lab/x, primitive: true}\n"_s.arg(TestServers::freePort())
+                                             .toUtf8());
+        const QStringList args {u"watch"_s,        config,
+                                u"--broker"_s,     broker,
+                                u"--ros-master"_s, u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort()),
+                                u"--seconds"_s,    u"7"_s};
+        const Run r = bridgescope(args);
+        QCOMPARE(r.exit, 1);
+        QVERIFY2(r.err.contains(u"the broker %1 cannot be reached"_s.arg(broker)), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u"the ROS master http://127.0.0.1"_s), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u"nothing was watched"_s), qPrintable(r.err));
+        const Run allowed
+            = bridgescope(QStringList(args.mid(0, 6)) << u"--seconds"_s << u"1"_s << u"--allow-empty"_s);
+        QVERIFY2(allowed.exit == 0, qPrintable(allowed.err));
+        // Durations whose milliseconds do not fit are refused before anything runs.
+        const Run far = bridgescope(QStringList(args.mid(0, 6)) << u"--seconds"_s << u"1e300"_s);
+        QCOMPARE(far.exit, 2);
+        QVERIFY2(far.err.contains(u"--seconds takes 0 to"_s), qPrintable(far.err));
+    }
+
     // --verbose turns on every layer's debug messages, QT_LOGGING_RULES picks some; neither ever
     // shows a credential of the broker URL.
     void verboseLogsPerLayerWithoutCredentials()

@@ -12,6 +12,7 @@
 
 #include <csignal>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -216,6 +217,45 @@ private slots:
                      && text.contains(u"| **total** |"_s)
                      && text.contains(u"runs/004-qos-1-payload-60000.bsrun"_s),
                  qPrintable(text));
+    }
+
+    // Issue 31: servers that cannot be reached are said within seconds (the cell keeps trying to
+    // its timeout, then fails, and the command exits 1); a timeout or rate whose arithmetic would
+    // overflow is refused with its place before anything runs.
+    void unreachableServersAreSaidAndNumbersAreBounded()
+    {
+        const QString plan
+            = writePlan(m_dir, u"away.yaml"_s,
+                        u"samples: 5\nwarmup: 0\ntimeout_s: 9\nservers: {broker: \"tcp://127.0.0.1:%1\", "
+                        u"ros_master: \"http://127.0.0.1:%2/\"}\n"_s.arg(TestServers::freePort())
+                            .arg(TestServers::freePort())
+                            .toUtf8());
+        QProcess* p = experiment({plan, u"-o"_s, m_dir.filePath(u"away"_s)});
+        QVERIFY(p->waitForStarted());
+        QElapsedTimer clock;
+        clock.start();
+        QString err;
+        while (clock.elapsed() < 20000 && !err.contains(u"still trying"_s)) {
+            p->waitForReadyRead(200);
+            err += QString::fromUtf8(p->readAllStandardError());
+        }
+        QVERIFY2(clock.elapsed() < 9000, qPrintable(u"after %1 ms: %2"_s.arg(clock.elapsed()).arg(err)));
+        QVERIFY2(err.contains(u"the broker tcp://127.0.0.1"_s) && err.contains(u"cannot be reached"_s),
+                 qPrintable(err));
+        QVERIFY(p->waitForFinished(60000));
+        QCOMPARE(p->exitCode(), 1);
+
+        for (const QByteArray& yaml : {QByteArray("samples: 5\ntimeout_s: 1e300\n"),
+                                       QByteArray("samples: 5\ndefaults: {rate_hz: 1e-300}\n")}) {
+            const QString far = writePlan(m_dir, u"far.yaml"_s, yaml);
+            QProcess* dry = experiment({far, u"--dry-run"_s});
+            QVERIFY(dry->waitForFinished(20000));
+            const QString text
+                = QString::fromUtf8(dry->readAllStandardError() + dry->readAllStandardOutput());
+            QCOMPARE(dry->exitCode(), 2);
+            QVERIFY2(text.contains(u", column "_s) && !text.contains(u"-9223372036854775808"_s),
+                     qPrintable(text));
+        }
     }
 
     void aBrokenBridgeFailsItsCellAndTheTemplateWorks()

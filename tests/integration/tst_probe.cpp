@@ -149,6 +149,9 @@ private slots:
         QTest::newRow("size too small") << QStringList {u"--size"_s, u"10"_s} << u"--size"_s;
         QTest::newRow("rate not a number") << QStringList {u"--rate"_s, u"fast"_s} << u"--rate"_s;
         QTest::newRow("rate 0") << QStringList {u"--rate"_s, u"0"_s} << u"--rate"_s;
+        // Issue 31: a rate whose interval is infinite is refused before any arithmetic.
+        QTest::newRow("rate 1e-300") << QStringList {u"--rate"_s, u"1e-300"_s}
+                                     << u"--rate must be from 0.01"_s;
         QTest::newRow("count 0") << QStringList {u"--count"_s, u"0"_s} << u"--count"_s;
         QTest::newRow("bad broker") << QStringList {u"--broker"_s, u"http://x:1"_s} << u"http"_s;
         QTest::newRow("echo and sweep") << QStringList {u"--echo"_s, u"--sweep"_s} << u"--echo"_s;

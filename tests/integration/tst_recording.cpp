@@ -174,7 +174,8 @@ private slots:
         const QString uri = u"http://127.0.0.1:%1/"_s.arg(port);
         QElapsedTimer clock;
         clock.start();
-        auto rec = recorder({u"--seconds"_s, u"1"_s, u"-o"_s, m_dir.filePath(u"away.bsrun"_s)}, uri);
+        auto rec = recorder(
+            {u"--seconds"_s, u"1"_s, u"--allow-empty"_s, u"-o"_s, m_dir.filePath(u"away.bsrun"_s)}, uri);
         QVERIFY(rec->waitForFinished(30000));
         QCOMPARE(rec->exitCode(), 0);
         QVERIFY2(clock.elapsed() < 5000, qPrintable(u"a 1 s run took %1 ms"_s.arg(clock.elapsed())));
@@ -194,6 +195,59 @@ private slots:
         const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY(report->runs().front()->engine->samples() >= 50);
+    }
+
+    // Issue 31: with the broker and the master both away, record recorded for its whole duration,
+    // said nothing and exited 0 with an empty run. Now it says so within seconds, keeps trying,
+    // and an empty run is a failure unless --allow-empty.
+    void unreachableSourcesAreSaidAndAnEmptyRunFails()
+    {
+        const QString master = u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort());
+        const QString broker = u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort());
+        QFile pipe(m_dir.filePath(u"pipe.yaml"_s));
+        if (!pipe.exists() && pipe.open(QIODevice::WriteOnly))
+            pipe.write(pipelineYaml());
+        QProcess rec;
+        rec.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                  {u"record"_s, u"--pipeline"_s, pipe.fileName(), u"--ros-master"_s, master, u"--broker"_s,
+                   broker, u"--seconds"_s, u"60"_s, u"-o"_s, m_dir.filePath(u"nothing.bsrun"_s)});
+        QVERIFY(rec.waitForStarted());
+        QElapsedTimer clock;
+        clock.start();
+        QString err;
+        while (clock.elapsed() < 15000
+               && !(err.contains(u"cannot be reached"_s) && err.contains(u"nothing has arrived"_s))) {
+            rec.waitForReadyRead(200);
+            err += QString::fromUtf8(rec.readAllStandardError());
+        }
+        QVERIFY2(clock.elapsed() < 9000, qPrintable(u"after %1 ms: %2"_s.arg(clock.elapsed()).arg(err)));
+        QVERIFY2(err.contains(u"the broker tcp://127.0.0.1"_s)
+                     && err.contains(u"the ROS master http://127.0.0.1"_s),
+                 qPrintable(err));
+        QVERIFY(rec.state() == QProcess::Running); // it keeps trying
+        rec.terminate();
+        QVERIFY(rec.waitForFinished(20000));
+        err += QString::fromUtf8(rec.readAllStandardError());
+        QCOMPARE(rec.exitCode(), 1);
+        QVERIFY2(err.contains(u"nothing was recorded"_s), qPrintable(err));
+
+        // An empty run on purpose.
+        QProcess allowed;
+        allowed.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                      {u"record"_s, u"--pipeline"_s, pipe.fileName(), u"--ros-master"_s, master,
+                       u"--broker"_s, broker, u"--seconds"_s, u"1"_s, u"--allow-empty"_s, u"-o"_s,
+                       m_dir.filePath(u"empty.bsrun"_s)});
+        QVERIFY(allowed.waitForFinished(20000));
+        QCOMPARE(allowed.exitCode(), 0);
+
+        // A duration whose milliseconds do not fit is refused, not a run that ends at once.
+        QProcess far;
+        far.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                  {u"record"_s, u"--pipeline"_s, pipe.fileName(), u"--seconds"_s, u"1e300"_s, u"-o"_s,
+                   m_dir.filePath(u"far.bsrun"_s)});
+        QVERIFY(far.waitForFinished(20000));
+        QCOMPARE(far.exitCode(), 2);
+        QVERIFY(QString::fromUtf8(far.readAllStandardError()).contains(u"--seconds takes 0 to"_s));
     }
 
     // Crash safety: SIGKILL while recording at 100 samples/s; the file opens and holds every

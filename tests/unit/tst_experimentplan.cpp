@@ -118,14 +118,16 @@ private slots:
         QTest::addColumn<QByteArray>("yaml");
         QTest::addColumn<QString>("message");
         QTest::newRow("unknown key") << QByteArray("samples: 5\nfactor:\n  qos: [0]\n")
-                                     << u"line 2: unknown key 'factor'"_s;
+                                     << u"line 2, column 1: unknown key 'factor'"_s;
         QTest::newRow("unknown factor")
-            << QByteArray("factors:\n  colour: [red]\n") << u"line 2: unknown factor 'colour'"_s;
-        QTest::newRow("qos") << QByteArray("factors:\n  qos: [0, 3]\n") << u"line 2: qos is 0, 1 or 2"_s;
+            << QByteArray("factors:\n  colour: [red]\n") << u"line 2, column 3: unknown factor 'colour'"_s;
+        QTest::newRow("qos") << QByteArray("factors:\n  qos: [0, 3]\n")
+                             << u"line 2, column 12: qos is 0, 1 or 2"_s;
         QTest::newRow("payload") << QByteArray("factors:\n  payload: [big]\n") << u"payload is bytes"_s;
         QTest::newRow("no levels") << QByteArray("factors:\n  qos: []\n") << u"qos needs a list of levels"_s;
         QTest::newRow("both") << QByteArray("factors: {qos: [0]}\ncells: [{qos: 1}]\n") << u"not both"_s;
-        QTest::newRow("samples") << QByteArray("samples: 0\n") << u"line 1: samples takes a whole number"_s;
+        QTest::newRow("samples") << QByteArray("samples: 0\n")
+                                 << u"line 1, column 10: samples takes a whole number"_s;
         QTest::newRow("link name") << QByteArray("factors:\n  link: [5g]\n") << u"no link profile '5g'"_s;
         QTest::newRow("link setting")
             << QByteArray("links:\n  x: {delay: 3}\n") << u"unknown link setting 'delay'"_s;
@@ -142,8 +144,20 @@ private slots:
         QTest::newRow("not yaml") << QByteArray("factors: [\n") << u"line"_s;
         QTest::newRow("credentials") << QByteArray(
             "servers: {broker: \"tcp://lab:secret@127.0.0.1:1883\", ros_master: http://127.0.0.1:11311/}\n")
-                                     << u"line 1: a plan holds no credentials"_s;
+                                     << u"line 1, column 10: a plan holds no credentials"_s;
         QTest::newRow("not a map") << QByteArray("- 1\n") << u"a plan is a mapping"_s;
+        // Numbers far out of range are refused where they stand, naming the range, before any
+        // arithmetic turns them into a negative number of seconds.
+        QTest::newRow("timeout far") << QByteArray("samples: 5\ntimeout_s: 1e300\n")
+                                     << u"line 2, column 12: timeout_s takes 1 to 604800"_s;
+        QTest::newRow("timeout tiny")
+            << QByteArray("timeout_s: 1e-300\n") << u"line 1, column 12: timeout_s takes 1 to 604800"_s;
+        QTest::newRow("rate tiny") << QByteArray("samples: 5\nfactors:\n  rate_hz: [10, 1e-300]\n")
+                                   << u"line 3, column 17: rate_hz takes 0.01 to 1000 Hz"_s;
+        QTest::newRow("default rate tiny") << QByteArray("defaults: {rate_hz: 1e-300}\n")
+                                           << u"line 1, column 21: rate_hz takes 0.01 to 1000"_s;
+        QTest::newRow("throughput rate tiny") << QByteArray("throughput: {rates_hz: [1e-300]}\n")
+                                              << u"line 1, column 25: a rate from 0.01 to 10000 Hz"_s;
     }
 
     void mistakesNameTheirLine()
@@ -153,6 +167,14 @@ private slots:
         QString error;
         QVERIFY(!plan(yaml, &error));
         QVERIFY2(error.contains(message), qPrintable(error));
+    }
+
+    void durationsNeverOverflow()
+    {
+        QCOMPARE(ExperimentPlan::durationText(1e300), ExperimentPlan::durationText(1e12));
+        QVERIFY(!ExperimentPlan::durationText(1e300).contains(u'-'));
+        QCOMPARE(ExperimentPlan::durationText(-1e300), u"0 s"_s);
+        QCOMPARE(ExperimentPlan::durationText(qQNaN()), u"0 s"_s);
     }
 
     void payloadLevels()

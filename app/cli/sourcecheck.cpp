@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "sourcecheck.h"
+
+#include "app/cli/clioutput.h"
+#include "base/secrets.h"
+#include "ros/rosgraphpoller.h"
+#include "session/livesession.h"
+
+using namespace Qt::StringLiterals;
+using CliOutput::err;
+
+SourceCheck::SourceCheck(const LiveSession& live, bool needsMaster, std::function<qint64()> arrived,
+                         QString what)
+    : m_live(live)
+    , m_needsMaster(needsMaster)
+    , m_arrived(std::move(arrived))
+    , m_what(std::move(what))
+{ }
+
+void SourceCheck::check(qint64 elapsedMs)
+{
+    const MqttConnection* mqtt = m_live.mqtt();
+    const bool brokerUp = mqtt->state() == MqttConnection::State::Connected;
+    const bool masterUp = m_live.rosGraph()->isReachable();
+    m_brokerEver = m_brokerEver || brokerUp;
+    m_masterEver = m_masterEver || masterUp;
+    const bool late = elapsedMs >= kGraceMs;
+    const QString broker = Secrets::urlWithoutCredentials(mqtt->profile().url);
+    if (brokerUp && m_brokerSaid) {
+        err(tr("the broker %1 is reached").arg(broker));
+        m_brokerSaid = false;
+    } else if (!brokerUp && late && !m_brokerSaid) {
+        const QString detail = mqtt->stateDetail();
+        err(tr("the broker %1 cannot be reached (%2); still trying")
+                .arg(broker, detail.isEmpty() ? MqttConnection::stateText(mqtt->state()) : detail));
+        m_brokerSaid = true;
+    }
+    const QString master = Secrets::urlWithoutCredentials(m_live.rosMasterUri());
+    if (masterUp && m_masterSaid) {
+        err(tr("the ROS master %1 is reached").arg(master));
+        m_masterSaid = false;
+    } else if (m_needsMaster && !masterUp && late && !m_masterSaid) {
+        err(tr("the ROS master %1 cannot be reached (%2); still trying")
+                .arg(master, m_live.rosGraph()->lastError()));
+        m_masterSaid = true;
+    }
+    if (late && !m_silenceSaid && m_arrived() == 0) {
+        err(tr("nothing has arrived after %1 s: no %2 yet; still waiting").arg(elapsedMs / 1000).arg(m_what));
+        m_silenceSaid = true;
+    }
+}

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <functional>
+#include <QCoreApplication>
+#include <QString>
+
+class LiveSession;
+
+/// What `record`, `watch` and `demo`-like commands say when their sources stay silent: within
+/// kGraceMs of the start, on stderr, that the broker or the ROS master cannot be reached (and why)
+/// or that nothing has arrived yet, and later that a source answers again. The session keeps
+/// trying meanwhile (the connection and the poller retry by themselves); the command decides at
+/// the end what an empty result means.
+class SourceCheck
+{
+    Q_DECLARE_TR_FUNCTIONS(SourceCheck)
+public:
+    static constexpr qint64 kGraceMs = 5000;
+
+    /// `arrived` counts what the command keeps (stamps, events); `what` names it for the message.
+    /// `needsMaster` false: the master's state is not the command's business (an MQTT-only pipeline).
+    SourceCheck(const LiveSession& live, bool needsMaster, std::function<qint64()> arrived, QString what);
+
+    /// Once a second or so, with the milliseconds since the start; prints what changed.
+    void check(qint64 elapsedMs);
+
+    bool brokerEverReached() const { return m_brokerEver; }
+    bool masterEverReached() const { return m_masterEver; }
+
+private:
+    const LiveSession& m_live;
+    bool m_needsMaster;
+    std::function<qint64()> m_arrived;
+    QString m_what;
+    bool m_brokerSaid = false; ///< the broker was said to be unreachable (and is still)
+    bool m_masterSaid = false;
+    bool m_silenceSaid = false;
+    bool m_brokerEver = false;
+    bool m_masterEver = false;
+};
