@@ -281,7 +281,8 @@ int runWatch(const WatchRequest& request)
     // The metrics follow the counts four times a second (rates and percentiles change once a second).
     QTimer metricsTimer;
     if (metrics) {
-        QObject::connect(&metricsTimer, &QTimer::timeout, [&] { metrics->update(*monitor, live.mqttTopics()); });
+        QObject::connect(&metricsTimer, &QTimer::timeout,
+                         [&] { metrics->update(*monitor, live.mqttTopics()); });
         metricsTimer.start(250);
     }
     err(Watch::tr("watching %n link(s) of %1; Ctrl+C stops", nullptr, monitor->linkCount())

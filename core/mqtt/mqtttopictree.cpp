@@ -340,7 +340,8 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
         n->historyBytes += size + kHistoryEntryOverhead;
         m_historyBytes += size + kHistoryEntryOverhead;
         ++m_historyEntries;
-        n->history.push_back({msg.receivedNs, std::move(msg.payload), msg.retained, msg.qos, ++m_historyOrder});
+        n->history.push_back(
+            {msg.receivedNs, std::move(msg.payload), msg.retained, msg.qos, ++m_historyOrder});
         m_historyQueue.emplace_back(n, m_historyOrder);
         trimHistory(n);
     }

@@ -61,7 +61,8 @@ public:
     };
     /// The default of historyBudget(): the bytes the payload history of all topics may hold.
     static constexpr qint64 kDefaultHistoryBudget = 64 * 1024 * 1024;
-    /// What one kept payload costs beside its bytes (its entry and the array's header), counted in the budget.
+    /// What one kept payload costs beside its bytes (its entry and the array's header), counted in the
+    /// budget.
     static constexpr qint64 kHistoryEntryOverhead = 64;
 
     /// What is known about one topic (for the detail pane and the discover command).

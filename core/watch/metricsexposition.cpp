@@ -86,7 +86,8 @@ void linkFamily(QByteArray& out, const std::vector<Link>& links, const Family& f
 /// (39), the extra label (19), braces, comma, space, the longest number (24) and the newline.
 constexpr qsizetype kSampleOverhead = 100;
 constexpr int kLinkSamples = 10; ///< without the histogram
-constexpr int kLatencySamples = int(MetricsSnapshot::kLatencyBounds.size()) + 3; ///< buckets, +Inf, count, sum
+constexpr int kLatencySamples
+    = int(MetricsSnapshot::kLatencyBounds.size()) + 3; ///< buckets, +Inf, count, sum
 
 /// How many of the links (from the first) fit in `budget` bytes, by an upper bound of their samples.
 std::size_t linksWithin(const std::vector<Link>& links, qsizetype budget)
@@ -171,8 +172,8 @@ QByteArray MetricsExposition::contentType(MetricsFormat format)
 
 namespace {
 /// The families of the links and bridges.
-void writeLinks(QByteArray& out, const std::vector<Link>& links, const std::vector<MetricsSnapshot::Bridge>& bridges,
-                MetricsFormat format)
+void writeLinks(QByteArray& out, const std::vector<Link>& links,
+                const std::vector<MetricsSnapshot::Bridge>& bridges, MetricsFormat format)
 {
     static constexpr Family messages {"bridgescope_link_messages", "counter",
                                       "Messages seen at one side of a bridged link"};
@@ -266,15 +267,17 @@ void plain(QByteArray& out, const Family& f, MetricsFormat format, double value)
 
 QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat format, quint64 droppedClients)
 {
-    static constexpr Family truncated {"bridgescope_metrics_truncated", "gauge",
-                                       "1 when links or bridges were left out to keep the answer within 16 MiB"};
+    static constexpr Family truncated {
+        "bridgescope_metrics_truncated", "gauge",
+        "1 when links or bridges were left out to keep the answer within 16 MiB"};
     static constexpr Family omitted {"bridgescope_metrics_omitted", "gauge",
                                      "Links and bridges left out of this answer to keep it within 16 MiB"};
     static constexpr Family dropped {
         "bridgescope_metrics_dropped_clients", "counter",
         "Clients of /metrics closed to make room or to keep unsent answers within their memory budget"};
-    static constexpr Family evicted {"bridgescope_mqtt_history_evicted", "counter",
-                                     "MQTT payloads evicted from the topic history to keep it within its budget"};
+    static constexpr Family evicted {
+        "bridgescope_mqtt_history_evicted", "counter",
+        "MQTT payloads evicted from the topic history to keep it within its budget"};
     static constexpr Family held {"bridgescope_mqtt_history_bytes", "gauge",
                                   "Bytes the MQTT topic history holds (payloads and their bookkeeping)"};
     constexpr qsizetype kOwnBytes = 8192; ///< the heads, our own figures and the trailer

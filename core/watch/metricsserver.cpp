@@ -274,8 +274,9 @@ void MetricsServer::answer(QTcpSocket* socket, int status, const QByteArray& typ
     if (status != 200)
         ++m_rejected;
     socket->setProperty("answered", true);
-    const QByteArray top = "HTTP/1.1 " + QByteArray::number(status) + ' ' + reason(status) + "\r\nContent-Type: "
-        + type + "\r\nContent-Length: " + QByteArray::number(body.size()) + "\r\nConnection: close\r\n\r\n";
+    const QByteArray top = "HTTP/1.1 " + QByteArray::number(status) + ' ' + reason(status)
+        + "\r\nContent-Type: " + type + "\r\nContent-Length: " + QByteArray::number(body.size())
+        + "\r\nConnection: close\r\n\r\n";
     keepWithinBudget(top.size() + (head ? 0 : body.size()));
     socket->write(top);
     if (!head)

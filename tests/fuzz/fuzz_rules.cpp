@@ -30,7 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     FUZZ_CHECK(rules->overrides.size() <= WatchRules::kMaxLinkRules, "more entries than the limit");
     bool allPrintable = true;
     for (const WatchRules::Override& o : rules->overrides) {
-        FUZZ_CHECK(!o.match.isEmpty() && o.match.size() <= WatchRules::kMaxPatternChars, "a pattern past the limit");
+        FUZZ_CHECK(!o.match.isEmpty() && o.match.size() <= WatchRules::kMaxPatternChars,
+                   "a pattern past the limit");
         allPrintable = allPrintable && printable(o.match);
     }
     const QString name = QString::fromUtf8(nameBytes);

@@ -190,9 +190,10 @@ private slots:
         // A hostile one shows a bounded number of fields, and says that the rest is not shown.
         QElapsedTimer shown;
         shown.start();
-        page->mqttView()->setCurrentIndex(ViewHelpers::find(page->mqttView()->model(), u"fleet/hostile/json"_s,
-                                                            MqttTopicTree::FullTopicRole));
-        QTRY_VERIFY_WITH_TIMEOUT(fieldNames(page->detail()->fieldsView()->model()).contains(u"k0.[0]"_s), 20000);
+        page->mqttView()->setCurrentIndex(ViewHelpers::find(
+            page->mqttView()->model(), u"fleet/hostile/json"_s, MqttTopicTree::FullTopicRole));
+        QTRY_VERIFY_WITH_TIMEOUT(fieldNames(page->detail()->fieldsView()->model()).contains(u"k0.[0]"_s),
+                                 20000);
         const QStringList wideFields = fieldNames(page->detail()->fieldsView()->model());
         QVERIFY2(wideFields.size() <= 5000 + 100, qPrintable(QString::number(wideFields.size())));
         QVERIFY(wideFields.contains(u"…"_s));

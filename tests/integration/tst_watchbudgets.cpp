@@ -57,8 +57,9 @@ private:
         watch.setProcessEnvironment(m_servers.rosEnvironment());
         watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
         watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                    {u"watch"_s, u"--broker"_s, m_servers.brokerUrl(), u"--ros-master"_s, m_servers.rosMasterUri(),
-                     u"--metrics"_s, u"127.0.0.1:%1"_s.arg(metricsPort), u"--seconds"_s, u"120"_s});
+                    {u"watch"_s, u"--broker"_s, m_servers.brokerUrl(), u"--ros-master"_s,
+                     m_servers.rosMasterUri(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(metricsPort),
+                     u"--seconds"_s, u"120"_s});
         QVERIFY(watch.waitForStarted(5000));
         QVERIFY(TestServers::waitForPort(metricsPort, 15000));
         QTest::qWait(1000); // connected and subscribed
@@ -70,7 +71,8 @@ private:
         QElapsedTimer t;
         t.start();
         while (t.elapsed() < 10000) {
-            const MqttLink::Sent sent = m_mqtt->tryPublish(topic, payload.constData(), payload.size(), 0, false);
+            const MqttLink::Sent sent
+                = m_mqtt->tryPublish(topic, payload.constData(), payload.size(), 0, false);
             if (sent != MqttLink::Sent::Full)
                 return sent == MqttLink::Sent::Ok;
             QThread::msleep(2);
@@ -112,16 +114,19 @@ private slots:
                 QVERIFY(publish(u"flood/t%1"_s.arg(topic), payload));
         const qint64 publishMs = t.elapsed();
         QByteArray metrics;
-        QTRY_VERIFY_WITH_TIMEOUT(
-            plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s), "bridgescope_mqtt_history_evicted_total")
-                >= 500 - 64 * kMiB / (400 * 1000),
-            60000);
-        qInfo("500 payloads of 400 kB published in %lld ms, taken by the watch in %lld ms", publishMs, t.elapsed());
+        QTRY_VERIFY_WITH_TIMEOUT(plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s),
+                                             "bridgescope_mqtt_history_evicted_total")
+                                     >= 500 - 64 * kMiB / (400 * 1000),
+                                 60000);
+        qInfo("500 payloads of 400 kB published in %lld ms, taken by the watch in %lld ms", publishMs,
+              t.elapsed());
         const double held = plainSample(metrics, "bridgescope_mqtt_history_bytes");
         QVERIFY2(held > 32 * kMiB && held <= 64 * kMiB, qPrintable(QString::number(held)));
         const qint64 peak = peakRss(watch.processId());
-        qInfo("watch: VmHWM %lld MiB before the flood, %lld MiB after 200 MB of payloads", base / kMiB, peak / kMiB);
-        QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB, qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
+        qInfo("watch: VmHWM %lld MiB before the flood, %lld MiB after 200 MB of payloads", base / kMiB,
+              peak / kMiB);
+        QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB,
+                 qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
         stopWatch(watch);
     }
 
@@ -147,7 +152,8 @@ private slots:
             return metrics.count("bridgescope_link_state{");
         };
         // Cut to 256 bytes a link's labels still take 4 kB: as many as fit in 16 MiB are answered.
-        QTRY_VERIFY_WITH_TIMEOUT(links() > 3000 && plainSample(metrics, "bridgescope_metrics_truncated") == 1, 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(links() > 3000 && plainSample(metrics, "bridgescope_metrics_truncated") == 1,
+                                 60000);
         QVERIFY2(metrics.size() <= 16 * kMiB, qPrintable(QString::number(metrics.size())));
         QVERIFY(!metrics.contains(tail.left(300).toUtf8())); // cut
         QVERIFY(metrics.contains("\xe2\x80\xa6")); // and marked
@@ -175,7 +181,8 @@ private slots:
         const qint64 peak = peakRss(watch.processId());
         qInfo("watch: VmHWM %lld MiB with 10,000 hostile links, %lld MiB after 64 clients that do not read",
               base / kMiB, peak / kMiB);
-        QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB, qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
+        QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB,
+                 qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
         greedy.clear();
         stopWatch(watch);
     }

@@ -465,8 +465,8 @@ private slots:
     {
         QByteArray yaml = "links:\n";
         for (int i = 0; i < 1000; ++i)
-            yaml += "  - match: \"/fleet/v" + QByteArray::number(i) + "/*\"\n    stall_seconds: "
-                + QByteArray::number(i % 7 + 1) + "\n";
+            yaml += "  - match: \"/fleet/v" + QByteArray::number(i)
+                + "/*\"\n    stall_seconds: " + QByteArray::number(i % 7 + 1) + "\n";
         yaml += "  - match: \"client:ops_*\"\n    max_loss_percent: 9\n";
         QString error;
         const auto rules = WatchRules::fromYaml(yaml, &error);

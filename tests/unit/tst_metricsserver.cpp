@@ -234,11 +234,13 @@ private slots:
         server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
         const QByteArray want = MetricsExposition::write(twoLinks(), MetricsFormat::Text);
         const QByteArray port = QByteArray::number(server->port());
-        const QList<QByteArray> requests {
-            "GET /metrics HTTP/1.1\nHost: x\n\n", "GET /metrics HTTP/1.0\n\n", "GET /metrics HTTP/1.1\r\nHost: x\n\r\n",
-            "\r\nGET /metrics HTTP/1.1\r\n\r\n",
-            "GET http://127.0.0.1:" + port + "/metrics HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n",
-            "GET HTTP://[::1]:" + port + "/metrics?x=1 HTTP/1.1\r\n\r\n"};
+        const QList<QByteArray> requests {"GET /metrics HTTP/1.1\nHost: x\n\n",
+                                          "GET /metrics HTTP/1.0\n\n",
+                                          "GET /metrics HTTP/1.1\r\nHost: x\n\r\n",
+                                          "\r\nGET /metrics HTTP/1.1\r\n\r\n",
+                                          "GET http://127.0.0.1:" + port
+                                              + "/metrics HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n",
+                                          "GET HTTP://[::1]:" + port + "/metrics?x=1 HTTP/1.1\r\n\r\n"};
         for (const QByteArray& request : requests) {
             QElapsedTimer t;
             t.start();
@@ -247,7 +249,8 @@ private slots:
             QCOMPARE(body(answer), want);
             QVERIFY2(t.elapsed() < 2000, request.constData());
         }
-        QVERIFY(TestServers::httpRequest(server->port(), "GET http://h:1/other HTTP/1.1\n\n").startsWith("HTTP/1.1 404"));
+        QVERIFY(TestServers::httpRequest(server->port(), "GET http://h:1/other HTTP/1.1\n\n")
+                    .startsWith("HTTP/1.1 404"));
         QVERIFY(TestServers::httpRequest(server->port(), "GET http://h:1 HTTP/1.1\n\n").contains("/metrics"));
         QCOMPARE(server->served(), quint64(6));
     }
@@ -316,7 +319,8 @@ private slots:
             greedy.back()->write("GET /metrics HTTP/1.1\r\n\r\n");
             QVERIFY(greedy.back()->waitForBytesWritten(3000));
         }
-        QTRY_VERIFY2_WITH_TIMEOUT(server->served() == 24, qPrintable(QString::number(server->served())), 20000);
+        QTRY_VERIFY2_WITH_TIMEOUT(server->served() == 24, qPrintable(QString::number(server->served())),
+                                  20000);
         QTRY_VERIFY_WITH_TIMEOUT(server->dropped() > 0, 10000);
         QElapsedTimer t;
         t.start();
@@ -386,8 +390,9 @@ private slots:
         burster.join();
         QVERIFY2(opened > 3000, qPrintable(QString::number(opened)));
         QVERIFY(server->rejected() > 1000);
-        QVERIFY2(scrapes >= 10 && answered == scrapes,
-                 qPrintable(u"%1 of %2 answered: %3"_s.arg(answered).arg(scrapes).arg(failures.join(u" | "_s))));
+        QVERIFY2(
+            scrapes >= 10 && answered == scrapes,
+            qPrintable(u"%1 of %2 answered: %3"_s.arg(answered).arg(scrapes).arg(failures.join(u" | "_s))));
     }
 
     // Clients that connect and never ask hold no slot for ever: more than kMaxClients of them push

@@ -129,7 +129,8 @@ private slots:
             for (int t = 0; t < 500; ++t)
                 batch.push_back(msg(u"fleet/v%1/cloud"_s.arg(t), payload, false, ns++));
             tree.apply(std::move(batch));
-            QVERIFY2(tree.historyBytes() <= tree.historyBudget(), qPrintable(QString::number(tree.historyBytes())));
+            QVERIFY2(tree.historyBytes() <= tree.historyBudget(),
+                     qPrintable(QString::number(tree.historyBytes())));
         }
         qint64 kept = 0;
         for (int t = 0; t < 500; ++t)

@@ -81,7 +81,8 @@ constexpr qsizetype kMaxJsonFieldsBytes = 4 * 1024 * 1024;
 
 // `path` is the value's own path: empty for a document's root array, shown as "(root)". `rows` is
 // what is left of kMaxJsonRows.
-void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, const QStringList& path, int& rows)
+void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, const QStringList& path,
+             int& rows)
 {
     if (rows <= 0)
         return;
@@ -89,8 +90,8 @@ void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, co
     QList<QStandardItem*> items;
     const auto more = [&](qsizetype left) {
         if (left > 0)
-            items.first()->appendRow(row(u"…"_s, DetailPane::tr("%n more not shown", nullptr, int(left)),
-                                         QString(), path));
+            items.first()->appendRow(
+                row(u"…"_s, DetailPane::tr("%n more not shown", nullptr, int(left)), QString(), path));
     };
     if (v.isObject()) {
         items = row(name, QString(), u"object"_s, path);
@@ -380,7 +381,8 @@ void DetailPane::showJsonFields(const QByteArray& json)
         for (auto it = o.begin(); it != o.end() && rows > 0; ++it)
             addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value(), {it.key()}, rows);
         if (rows <= 0)
-            m_fieldModel->appendRow(row(u"…"_s, tr("at most %1 fields are shown").arg(kMaxJsonRows), QString(), {}));
+            m_fieldModel->appendRow(
+                row(u"…"_s, tr("at most %1 fields are shown").arg(kMaxJsonRows), QString(), {}));
     } else {
         addJson(m_fieldModel->invisibleRootItem(), u"(root)"_s,
                 doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(), {}, rows);
@@ -458,7 +460,8 @@ void DetailPane::refreshMqtt(bool force)
             showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
     } else if (!info->typeNote.isEmpty()) {
         showNoFields(info->typeNote);
-    } else if (m_lastPayload.size() <= kMaxJsonFieldsBytes && !QJsonDocument::fromJson(m_lastPayload).isNull()) {
+    } else if (m_lastPayload.size() <= kMaxJsonFieldsBytes
+               && !QJsonDocument::fromJson(m_lastPayload).isNull()) {
         showJsonFields(m_lastPayload);
     } else {
         showNoFields(tr("(no structure known: see Payload)"));
