@@ -33,7 +33,7 @@ class MetricsServer
 {
     Q_DECLARE_TR_FUNCTIONS(MetricsServer)
 public:
-    static constexpr int kMaxClients = 32;
+    static constexpr int kMaxClients = 128; ///< a socket and at most one head (8 KiB) each: about 1.5 MiB in all
     static constexpr qsizetype kMaxRequestBytes = 8 * 1024;
     static constexpr int kRequestTimeoutMs = 5'000;
     /// The memory budget of unsent answers, over all clients (an answer is at most
