@@ -8,6 +8,7 @@
 #include "base/yamllimits.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
+#include "mqtt/mqtttopictree.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
@@ -290,7 +291,8 @@ int runWatch(const WatchRequest& request)
     // The metrics follow the counts four times a second (rates and percentiles change once a second).
     QTimer metricsTimer;
     if (metrics) {
-        QObject::connect(&metricsTimer, &QTimer::timeout, [&] { metrics->update(*monitor); });
+        QObject::connect(&metricsTimer, &QTimer::timeout,
+                         [&] { metrics->update(*monitor, live.mqttTopics()); });
         metricsTimer.start(250);
     }
     err(Watch::tr("watching %n link(s) of %1; Ctrl+C stops", nullptr, monitor->linkCount())
@@ -311,11 +313,18 @@ int runWatch(const WatchRequest& request)
             int counts[3] = {0, 0, 0};
             for (int i = 0; i < monitor->linkCount(); ++i)
                 ++counts[int(monitor->level(i))];
-            err(Watch::tr("%1 s: %2 ok, %3 warning, %4 alert")
-                    .arg(elapsedMs / 1000)
-                    .arg(counts[0])
-                    .arg(counts[1])
-                    .arg(counts[2]));
+            QString line = Watch::tr("%1 s: %2 ok, %3 warning, %4 alert")
+                               .arg(elapsedMs / 1000)
+                               .arg(counts[0])
+                               .arg(counts[1])
+                               .arg(counts[2]);
+            if (const quint64 evicted = live.mqttTopics()->evictedPayloads())
+                line += Watch::tr("; %1 payloads evicted from the topic history (budget %2 MiB)")
+                            .arg(evicted)
+                            .arg(live.mqttTopics()->historyBudget() / (1024 * 1024));
+            if (metrics && metrics->droppedClients())
+                line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
+            err(line);
         });
     monitor->closeAll(wallClockNs());
     if (recorder->isRecording()) {

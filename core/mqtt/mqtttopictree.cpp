@@ -105,6 +105,43 @@ void MqttTopicTree::setHistoryDepth(int messages)
     m_historyDepth = std::max(1, messages);
 }
 
+void MqttTopicTree::setHistoryBudget(qint64 bytes)
+{
+    m_historyBudget = std::max<qint64>(0, bytes);
+}
+
+void MqttTopicTree::popOldest(Node* n)
+{
+    const qint64 cost = n->history.front().payload.size() + kHistoryEntryOverhead;
+    n->historyBytes -= cost;
+    m_historyBytes -= cost;
+    --m_historyEntries;
+    n->history.pop_front();
+}
+
+void MqttTopicTree::trimHistory(Node* n)
+{
+    while (n->history.size() > 1
+           && (int(n->history.size()) > m_historyDepth || n->historyBytes > m_historyBytesPerTopic))
+        popOldest(n);
+    while (m_historyBytes > m_historyBudget && !m_historyQueue.empty()) {
+        const auto [oldest, order] = m_historyQueue.front();
+        m_historyQueue.pop_front();
+        if (!oldest->history.empty() && oldest->history.front().order == order) {
+            popOldest(oldest);
+            ++m_evictedPayloads;
+        }
+    }
+    if (qint64(m_historyQueue.size()) > 2 * m_historyEntries + 1024) {
+        const auto kept = [](const std::pair<Node*, quint64>& e) {
+            return !e.first->history.empty() && e.second >= e.first->history.front().order;
+        };
+        std::deque<std::pair<Node*, quint64>> live;
+        std::copy_if(m_historyQueue.cbegin(), m_historyQueue.cend(), std::back_inserter(live), kept);
+        m_historyQueue.swap(live);
+    }
+}
+
 void MqttTopicTree::clear()
 {
     beginResetModel();
@@ -116,6 +153,10 @@ void MqttTopicTree::clear()
     m_totalMessages = 0;
     m_malformedTypes = 0;
     m_malformedPayloads = 0;
+    m_historyQueue.clear();
+    m_historyBytes = 0;
+    m_historyEntries = 0;
+    m_evictedPayloads = 0;
     endResetModel();
     emit brokerStatisticsChanged();
 }
@@ -296,13 +337,13 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
                 typed.push_back(n);
             }
         }
-        n->historyBytes += size;
-        n->history.push_back({msg.receivedNs, std::move(msg.payload), msg.retained, msg.qos});
-        while (n->history.size() > 1
-               && (int(n->history.size()) > m_historyDepth || n->historyBytes > m_historyBytesPerTopic)) {
-            n->historyBytes -= n->history.front().payload.size();
-            n->history.pop_front();
-        }
+        n->historyBytes += size + kHistoryEntryOverhead;
+        m_historyBytes += size + kHistoryEntryOverhead;
+        ++m_historyEntries;
+        n->history.push_back(
+            {msg.receivedNs, std::move(msg.payload), msg.retained, msg.qos, ++m_historyOrder});
+        m_historyQueue.emplace_back(n, m_historyOrder);
+        trimHistory(n);
     }
 
     // New topics: one insert per parent.

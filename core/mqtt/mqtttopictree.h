@@ -17,7 +17,9 @@ class RosTypeRegistry;
 /// The broker's topics as a tree of levels, with live figures, updated in batches.
 ///
 /// Every topic keeps its message and byte counts, rate, last size, retained flag and QoS, the time
-/// of its last message, and a bounded history of payloads; every level sums its subtree. Topics
+/// of its last message, and a bounded history of payloads (historyDepth() per topic, 16 MiB per
+/// topic, and historyBudget() over all topics: past it the oldest payloads of any topic go first,
+/// counted by evictedPayloads()); every level sums its subtree. Topics
 /// that mqtt_client (ROS 1 or ROS 2) announces get their ROS type; stamped ones their one-way
 /// latency. A ROS 1 announcement carries its definition; a ROS 2 one names its type only, which
 /// decodes with the ROS 2 definitions the tree is given (setRos2Registry()). $SYS topics
@@ -55,7 +57,13 @@ public:
         QByteArray payload;
         bool retained = false;
         quint8 qos = 0;
+        quint64 order = 0; ///< arrival order in the tree (1, 2, ...)
     };
+    /// The default of historyBudget(): the bytes the payload history of all topics may hold.
+    static constexpr qint64 kDefaultHistoryBudget = 64 * 1024 * 1024;
+    /// What one kept payload costs beside its bytes (its entry and the array's header), counted in the
+    /// budget.
+    static constexpr qint64 kHistoryEntryOverhead = 64;
 
     /// What is known about one topic (for the detail pane and the discover command).
     struct TopicInfo
@@ -98,6 +106,12 @@ public:
 
     void setHistoryDepth(int messages);
     int historyDepth() const { return m_historyDepth; }
+    /// The bytes the history of all topics may hold (payloads and kHistoryEntryOverhead each).
+    void setHistoryBudget(qint64 bytes);
+    qint64 historyBudget() const { return m_historyBudget; }
+    qint64 historyBytes() const { return m_historyBytes; }
+    /// Payloads evicted from the history to keep it within historyBudget().
+    quint64 evictedPayloads() const { return m_evictedPayloads; }
     void apply(std::vector<MqttMessage>&& batch);
     /// Updates rates once a second; `nowNs` is wall-clock time.
     void tick(qint64 nowNs);
@@ -166,4 +180,16 @@ private:
     qint64 m_lastTickNs = 0;
     DropHandler m_dropHandler;
     const Node* nodeAt(const QString& path) const;
+    /// Keeps a topic's history within its depth and bytes, and all topics' within the budget.
+    void trimHistory(Node* n);
+    void popOldest(Node* n);
+
+    qint64 m_historyBudget = kDefaultHistoryBudget;
+    qint64 m_historyBytes = 0;
+    qint64 m_historyEntries = 0;
+    quint64 m_historyOrder = 0;
+    quint64 m_evictedPayloads = 0;
+    /// Every kept payload's topic and order, oldest first; entries of payloads a topic's own bounds
+    /// removed are skipped when met, and swept when they are more than half.
+    std::deque<std::pair<Node*, quint64>> m_historyQueue;
 };

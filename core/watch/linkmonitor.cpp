@@ -387,14 +387,19 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         seen.insert(id);
         auto it = old.find(id);
         std::unique_ptr<Track> t;
+        bool sameKey = false;
         if (it != old.end() && it->second) {
             t = std::move(it->second);
+            const LinkKey was = t->def.key(), is = def.key();
+            sameKey = was.rosTopic == is.rosTopic && was.mqttTopic == is.mqttTopic && was.client == is.client
+                && was.config == is.config;
         } else {
             t = std::make_unique<Track>();
             t->startNs = nowNs;
         }
         t->def = def;
-        t->rules = m_rules.forLink(def.key());
+        if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
+            t->rules = m_rules.forLink(def.key());
         if (const auto a = m_announced.constFind(def.mqttTopic); a != m_announced.cend())
             applyAnnouncement(*t, *a); // announced (and retained) before the link was watched
         m_tracks.push_back(std::move(t));

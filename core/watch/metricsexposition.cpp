@@ -82,15 +82,48 @@ void linkFamily(QByteArray& out, const std::vector<Link>& links, const Family& f
             sample(out, f.name, suffix, l.labels, extraLabel, value(l));
 }
 
+/// Most bytes one sample of a link takes beside its labels: the longest name with its suffix
+/// (39), the extra label (19), braces, comma, space, the longest number (24) and the newline.
+constexpr qsizetype kSampleOverhead = 100;
+constexpr int kLinkSamples = 10; ///< without the histogram
+constexpr int kLatencySamples
+    = int(MetricsSnapshot::kLatencyBounds.size()) + 3; ///< buckets, +Inf, count, sum
+
+/// How many of the links (from the first) fit in `budget` bytes, by an upper bound of their samples.
+std::size_t linksWithin(const std::vector<Link>& links, qsizetype budget)
+{
+    std::size_t n = 0;
+    for (const Link& l : links) {
+        const qsizetype cost
+            = (l.labels.size() + kSampleOverhead) * (kLinkSamples + (l.hasLatency ? kLatencySamples : 0));
+        if (cost > budget)
+            break;
+        budget -= cost;
+        ++n;
+    }
+    return n;
+}
+
 const auto always = [](const Link&) { return true; };
 } // namespace
 
 QByteArray MetricsExposition::label(const char* name, const QByteArray& utf8Value)
 {
+    QByteArray value = utf8Value;
+    if (value.size() > kMaxLabelValueBytes) {
+        quint32 hash = 2166136261u; // FNV-1a: the same mark for the same value in every process
+        for (char c : utf8Value)
+            hash = (hash ^ uchar(c)) * 16777619u;
+        qsizetype cut = kMaxLabelValueBytes - 16;
+        while (cut > 0 && (uchar(value[cut]) & 0xc0) == 0x80)
+            --cut; // not inside a character
+        value.truncate(cut);
+        value += "\xe2\x80\xa6" + QByteArray::number(hash, 16).rightJustified(8, '0');
+    }
     QByteArray out(name);
-    out.reserve(out.size() + utf8Value.size() + 3);
+    out.reserve(out.size() + value.size() + 3);
     out += "=\"";
-    for (char c : utf8Value) {
+    for (char c : std::as_const(value)) {
         if (c == '\\')
             out += "\\\\";
         else if (c == '"')
@@ -137,7 +170,10 @@ QByteArray MetricsExposition::contentType(MetricsFormat format)
                                                 : "text/plain; version=0.0.4; charset=utf-8";
 }
 
-QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat format)
+namespace {
+/// The families of the links and bridges.
+void writeLinks(QByteArray& out, const std::vector<Link>& links,
+                const std::vector<MetricsSnapshot::Bridge>& bridges, MetricsFormat format)
 {
     static constexpr Family messages {"bridgescope_link_messages", "counter",
                                       "Messages seen at one side of a bridged link"};
@@ -159,43 +195,42 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
     static constexpr const char* source = ",side=\"source\"";
     static constexpr const char* destination = ",side=\"destination\"";
 
-    QByteArray out;
     qsizetype labelBytes = 0;
-    for (const Link& l : s.links)
+    for (const Link& l : links)
         labelBytes += l.labels.size();
-    out.reserve(labelBytes * 12 + qsizetype(s.links.size()) * 700 + 4096);
+    out.reserve(labelBytes * 12 + qsizetype(links.size()) * 700 + 4096);
 
     head(out, messages, format);
     linkFamily(
-        out, s.links, messages, source, [](const Link& l) { return l.sourceMessages; }, always);
+        out, links, messages, source, [](const Link& l) { return l.sourceMessages; }, always);
     linkFamily(
-        out, s.links, messages, destination, [](const Link& l) { return l.destinationMessages; }, always);
+        out, links, messages, destination, [](const Link& l) { return l.destinationMessages; }, always);
     head(out, bytes, format);
     linkFamily(
-        out, s.links, bytes, source, [](const Link& l) { return l.sourceBytes; }, always);
+        out, links, bytes, source, [](const Link& l) { return l.sourceBytes; }, always);
     linkFamily(
-        out, s.links, bytes, destination, [](const Link& l) { return l.destinationBytes; }, always);
+        out, links, bytes, destination, [](const Link& l) { return l.destinationBytes; }, always);
     head(out, lost, format);
     linkFamily(
-        out, s.links, lost, nullptr, [](const Link& l) { return l.lost; }, always);
+        out, links, lost, nullptr, [](const Link& l) { return l.lost; }, always);
     head(out, stalls, format);
     linkFamily(
-        out, s.links, stalls, nullptr, [](const Link& l) { return l.stalls; }, always);
+        out, links, stalls, nullptr, [](const Link& l) { return l.stalls; }, always);
     head(out, gaps, format);
     linkFamily(
-        out, s.links, gaps, nullptr, [](const Link& l) { return l.seqGaps; },
+        out, links, gaps, nullptr, [](const Link& l) { return l.seqGaps; },
         [](const Link& l) { return l.hasSeqGaps; });
     head(out, rate, format);
     linkFamily(
-        out, s.links, rate, source, [](const Link& l) { return l.sourceRate; }, always);
+        out, links, rate, source, [](const Link& l) { return l.sourceRate; }, always);
     linkFamily(
-        out, s.links, rate, destination, [](const Link& l) { return l.destinationRate; }, always);
+        out, links, rate, destination, [](const Link& l) { return l.destinationRate; }, always);
     head(out, state, format);
     linkFamily(
-        out, s.links, state, nullptr, [](const Link& l) { return double(l.state); }, always);
+        out, links, state, nullptr, [](const Link& l) { return double(l.state); }, always);
 
     head(out, latency, format);
-    for (const Link& l : s.links) {
+    for (const Link& l : links) {
         if (!l.hasLatency)
             continue;
         quint64 cumulative = 0;
@@ -213,8 +248,64 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
     }
 
     head(out, bridgeUp, format);
-    for (const MetricsSnapshot::Bridge& b : s.bridges)
+    for (const MetricsSnapshot::Bridge& b : bridges)
         sample(out, bridgeUp.name, "", b.labels, nullptr, b.up ? 1 : 0);
+}
+
+/// A sample without labels.
+void plain(QByteArray& out, const Family& f, MetricsFormat format, double value)
+{
+    head(out, f, format);
+    out += f.name;
+    if (qstrcmp(f.type, "counter") == 0)
+        out += "_total";
+    out += ' ';
+    appendNumber(out, value);
+    out += '\n';
+}
+} // namespace
+
+QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat format, quint64 droppedClients)
+{
+    static constexpr Family truncated {
+        "bridgescope_metrics_truncated", "gauge",
+        "1 when links or bridges were left out to keep the answer within 16 MiB"};
+    static constexpr Family omitted {"bridgescope_metrics_omitted", "gauge",
+                                     "Links and bridges left out of this answer to keep it within 16 MiB"};
+    static constexpr Family dropped {
+        "bridgescope_metrics_dropped_clients", "counter",
+        "Clients of /metrics closed to make room or to keep unsent answers within their memory budget"};
+    static constexpr Family evicted {
+        "bridgescope_mqtt_history_evicted", "counter",
+        "MQTT payloads evicted from the topic history to keep it within its budget"};
+    static constexpr Family held {"bridgescope_mqtt_history_bytes", "gauge",
+                                  "Bytes the MQTT topic history holds (payloads and their bookkeeping)"};
+    constexpr qsizetype kOwnBytes = 8192; ///< the heads, our own figures and the trailer
+    qsizetype budget = kMaxAnswerBytes - kOwnBytes;
+    // The bridges first (one sample each), then as many links as fit.
+    std::size_t bridgeCount = 0;
+    for (const MetricsSnapshot::Bridge& b : s.bridges) {
+        if (b.labels.size() + kSampleOverhead > budget)
+            break;
+        budget -= b.labels.size() + kSampleOverhead;
+        ++bridgeCount;
+    }
+    const std::size_t linkCount = linksWithin(s.links, budget);
+    const std::size_t left = s.links.size() - linkCount + s.bridges.size() - bridgeCount;
+    QByteArray out;
+    if (left == 0) {
+        writeLinks(out, s.links, s.bridges, format);
+    } else {
+        const std::vector<Link> links(s.links.cbegin(), s.links.cbegin() + std::ptrdiff_t(linkCount));
+        const std::vector<MetricsSnapshot::Bridge> bridges(s.bridges.cbegin(),
+                                                           s.bridges.cbegin() + std::ptrdiff_t(bridgeCount));
+        writeLinks(out, links, bridges, format);
+    }
+    plain(out, truncated, format, left > 0 ? 1 : 0);
+    plain(out, omitted, format, double(left));
+    plain(out, dropped, format, double(droppedClients));
+    plain(out, evicted, format, double(s.historyEvicted));
+    plain(out, held, format, double(s.historyBytes));
     if (format == MetricsFormat::OpenMetrics)
         out += "# EOF\n";
     return out;

@@ -35,6 +35,9 @@ struct MetricsSnapshot
     };
     std::vector<Link> links;
     std::vector<Bridge> bridges;
+    /// The MQTT topic history's budget (MqttTopicTree): payloads evicted to keep within it, bytes held.
+    quint64 historyEvicted = 0;
+    qint64 historyBytes = 0;
 };
 
 /// The two exposition formats Prometheus reads.
@@ -44,12 +47,21 @@ enum class MetricsFormat {
 };
 
 namespace MetricsExposition {
-/// `name="value"` with the value escaped as both formats want (backslash, quote, newline).
+/// A label value longer than this (bytes of UTF-8) is cut at a character's end and marked with
+/// "…" and 8 hex digits of the whole value's hash, so that cut values stay distinct.
+constexpr qsizetype kMaxLabelValueBytes = 256;
+/// An answer stays within this: the links that would not fit are left out (in their order, the
+/// configured before the discovered), and `bridgescope_metrics_truncated` says so.
+constexpr qsizetype kMaxAnswerBytes = 16 * 1024 * 1024;
+
+/// `name="value"` with the value escaped as both formats want (backslash, quote, newline), cut
+/// to kMaxLabelValueBytes.
 QByteArray label(const char* name, const QByteArray& utf8Value);
 /// The format a request's Accept header asks for: OpenMetrics when it is preferred (by q) over the
 /// text format, as Prometheus asks by default; the text format otherwise, and for no header.
 MetricsFormat negotiate(const QByteArray& accept);
 QByteArray contentType(MetricsFormat format);
-/// The whole exposition of `snapshot`.
-QByteArray write(const MetricsSnapshot& snapshot, MetricsFormat format);
+/// The whole exposition of `snapshot`, at most about kMaxAnswerBytes; `droppedClients`: the
+/// server's count of clients it dropped (see MetricsServer::dropped()).
+QByteArray write(const MetricsSnapshot& snapshot, MetricsFormat format, quint64 droppedClients = 0);
 } // namespace MetricsExposition

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "metricsserver.h"
 
+#include "watch/httphead.h"
+
 #include <QPointer>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QThread>
 #include <QTimer>
+#include <sys/socket.h>
 
 using namespace Qt::StringLiterals;
 
@@ -28,6 +31,21 @@ const char* reason(int status)
     default:
         return "Error";
     }
+}
+
+bool isOpen(const QPointer<QTcpSocket>& socket)
+{
+    return socket && socket->state() != QAbstractSocket::UnconnectedState;
+}
+
+/// Whether the client has sent a byte: read by Qt, or still in the kernel's buffer.
+bool hasSentSomething(QTcpSocket* socket)
+{
+    if (socket->bytesAvailable() > 0)
+        return true;
+    char c = 0;
+    const qintptr fd = socket->socketDescriptor();
+    return fd >= 0 && ::recv(int(fd), &c, 1, MSG_PEEK | MSG_DONTWAIT) > 0;
 }
 } // namespace
 
@@ -74,6 +92,7 @@ std::unique_ptr<MetricsServer> MetricsServer::listen(const QString& hostPort, QS
     s->m_thread->setObjectName(u"metrics http"_s);
     s->m_server = new QTcpServer;
     s->m_server->setMaxPendingConnections(kMaxClients);
+    s->m_server->setListenBacklogSize(1024); // a burst waits in the kernel, not refused there
     s->m_server->moveToThread(s->m_thread.get());
     s->m_thread->start();
     QString why;
@@ -120,24 +139,13 @@ void MetricsServer::publish(std::shared_ptr<const MetricsSnapshot> snapshot)
 void MetricsServer::accept()
 {
     while (QTcpSocket* socket = m_server->nextPendingConnection()) {
-        if (m_clients >= kMaxClients) {
-            // Full: the client that has waited longest without sending a request makes room, so
-            // idle connections cannot lock Prometheus out; if all are being answered, the new one goes.
+        m_clients.removeIf([](const QPointer<QTcpSocket>& c) { return !isOpen(c); });
+        if (m_clients.size() >= kMaxClients && !makeRoom()) {
             ++m_rejected;
-            QTcpSocket* idle = nullptr;
-            while (!m_waiting.isEmpty() && !idle) {
-                QPointer<QTcpSocket> oldest = m_waiting.takeFirst();
-                if (oldest && !oldest->property("answered").toBool())
-                    idle = oldest;
-            }
-            QTcpSocket* drop = idle ? idle : socket;
-            drop->abort();
-            drop->deleteLater();
-            if (!idle)
-                continue;
+            socket->abort();
+            socket->deleteLater();
+            continue;
         }
-        ++m_clients;
-        QObject::connect(socket, &QObject::destroyed, m_server, [this] { --m_clients; });
         QObject::connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
         QObject::connect(socket, &QTcpSocket::errorOccurred, socket, &QObject::deleteLater);
         // Peeked, never copied: the socket buffers no more than one request head may be long.
@@ -150,65 +158,114 @@ void MetricsServer::accept()
                 socket->deleteLater();
             }
         });
-        m_waiting.removeIf(
-            [](const QPointer<QTcpSocket>& w) { return !w || w->property("answered").toBool(); });
-        m_waiting.append(socket);
+        m_clients.append(socket);
         read(socket); // what came with the connection
     }
+}
+
+bool MetricsServer::makeRoom()
+{
+    // Oldest first: one that has sent nothing (0), else one whose head is incomplete (1), else one
+    // that has its answer (2). A scrape is answered as soon as its head is read, and a head that
+    // came is read before the client goes (the kernel is asked, not only what Qt has read).
+    QTcpSocket* victim = nullptr;
+    int rank = 3;
+    for (const QPointer<QTcpSocket>& c : std::as_const(m_clients)) {
+        if (!isOpen(c))
+            continue;
+        const int r = c->property("answered").toBool() ? 2 : hasSentSomething(c) ? 1 : 0;
+        if (r < rank) {
+            rank = r;
+            victim = c;
+            if (r == 0)
+                break;
+        }
+    }
+    if (!victim)
+        return false;
+    if (rank < 2)
+        ++m_rejected;
+    drop(victim);
+    return true;
+}
+
+void MetricsServer::drop(QTcpSocket* socket)
+{
+    ++m_dropped;
+    socket->abort();
+    socket->deleteLater();
 }
 
 void MetricsServer::read(QTcpSocket* socket)
 {
     if (socket->property("answered").toBool())
         return; // one request per connection; the rest is ignored
-    const QByteArray head = socket->peek(kMaxRequestBytes + 1);
-    const qsizetype end = head.indexOf("\r\n\r\n");
-    if (end < 0) {
-        if (head.size() > kMaxRequestBytes)
-            answer(socket, 431, "text/plain; charset=utf-8", "request head too large\n", false);
+    HttpHead::Request request;
+    switch (HttpHead::parse(socket->peek(kMaxRequestBytes + 1), kMaxRequestBytes, &request)) {
+    case HttpHead::Status::Incomplete:
         return; // more to come
-    }
-    const QList<QByteArray> lines = head.left(end).split('\n');
-    const QList<QByteArray> request = lines.front().trimmed().split(' ');
-    if (request.size() != 3 || !request[2].startsWith("HTTP/1.")) {
+    case HttpHead::Status::TooLarge:
+        answer(socket, 431, "text/plain; charset=utf-8", "request head too large\n", false);
+        return;
+    case HttpHead::Status::Malformed:
         answer(socket, 400, "text/plain; charset=utf-8", "not an HTTP/1 request\n", false);
         return;
+    case HttpHead::Status::Complete:
+        break;
     }
-    const QByteArray& method = request[0];
-    const bool isHead = method == "HEAD";
-    if (method != "GET" && !isHead) {
+    const bool isHead = request.method == "HEAD";
+    if (request.method != "GET" && !isHead) {
         answer(socket, 405, "text/plain; charset=utf-8", "only GET and HEAD\n", false);
         return;
     }
-    QByteArray path = request[1];
-    if (const qsizetype q = path.indexOf('?'); q >= 0)
-        path.truncate(q);
-    if (path == "/") {
+    if (request.path == "/") {
         answer(socket, 200, "text/html; charset=utf-8",
                "<html><head><title>Bridgescope</title></head><body><p>Bridgescope watch: the links' figures "
                "are at <a href=\"/metrics\">/metrics</a>.</p></body></html>\n",
                isHead);
         return;
     }
-    if (path != "/metrics") {
+    if (request.path != "/metrics") {
         answer(socket, 404, "text/plain; charset=utf-8", "not found: the metrics are at /metrics\n", isHead);
         return;
     }
-    QByteArray accept;
-    for (qsizetype i = 1; i < lines.size(); ++i) {
-        const QByteArray line = lines[i].trimmed();
-        if (line.size() > 7 && qstrnicmp(line.constData(), "accept:", 7) == 0)
-            accept = line.mid(7).trimmed();
-    }
+    const MetricsFormat format = MetricsExposition::negotiate(request.accept);
+    answer(socket, 200, MetricsExposition::contentType(format), exposition(format), isHead);
+    ++m_served;
+}
+
+QByteArray MetricsServer::exposition(MetricsFormat format)
+{
     std::shared_ptr<const MetricsSnapshot> snapshot;
     {
         std::lock_guard<std::mutex> lock(m_mutex);
         snapshot = m_snapshot;
     }
-    const MetricsFormat format = MetricsExposition::negotiate(accept);
-    answer(socket, 200, MetricsExposition::contentType(format),
-           MetricsExposition::write(snapshot ? *snapshot : MetricsSnapshot {}, format), isHead);
-    ++m_served;
+    if (snapshot != m_answered || !m_answered) {
+        m_answered = snapshot;
+        for (QByteArray& a : m_answers)
+            a.clear();
+    }
+    QByteArray& a = m_answers[format == MetricsFormat::OpenMetrics ? 1 : 0];
+    if (a.isEmpty())
+        a = MetricsExposition::write(snapshot ? *snapshot : MetricsSnapshot {}, format, m_dropped.load());
+    return a;
+}
+
+void MetricsServer::keepWithinBudget(qsizetype more)
+{
+    qsizetype queued = 0;
+    for (const QPointer<QTcpSocket>& c : std::as_const(m_clients))
+        if (isOpen(c))
+            queued += c->bytesToWrite();
+    for (const QPointer<QTcpSocket>& c : std::as_const(m_clients)) {
+        if (queued + more <= kMaxQueuedBytes)
+            return;
+        if (isOpen(c) && c->bytesToWrite() > 0) {
+            queued -= c->bytesToWrite();
+            drop(c);
+        }
+    }
 }
 
 void MetricsServer::answer(QTcpSocket* socket, int status, const QByteArray& type, const QByteArray& body,
@@ -217,11 +274,13 @@ void MetricsServer::answer(QTcpSocket* socket, int status, const QByteArray& typ
     if (status != 200)
         ++m_rejected;
     socket->setProperty("answered", true);
-    QByteArray out = "HTTP/1.1 " + QByteArray::number(status) + ' ' + reason(status) + "\r\nContent-Type: "
-        + type + "\r\nContent-Length: " + QByteArray::number(body.size()) + "\r\nConnection: close\r\n\r\n";
+    const QByteArray top = "HTTP/1.1 " + QByteArray::number(status) + ' ' + reason(status)
+        + "\r\nContent-Type: " + type + "\r\nContent-Length: " + QByteArray::number(body.size())
+        + "\r\nConnection: close\r\n\r\n";
+    keepWithinBudget(top.size() + (head ? 0 : body.size()));
+    socket->write(top);
     if (!head)
-        out += body;
-    socket->write(out);
+        socket->write(body); // shared with the other answers of this snapshot, not copied
     socket->disconnectFromHost(); // once written
     QTimer::singleShot(kAnswerLifetimeMs, socket, [socket] { socket->abort(); });
 }

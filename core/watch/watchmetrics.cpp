@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "watchmetrics.h"
 
+#include "mqtt/mqtttopictree.h"
 #include "watch/linkmonitor.h"
 #include "watch/metricsserver.h"
 
@@ -47,9 +48,18 @@ int WatchMetrics::port() const
     return d->server->port();
 }
 
-void WatchMetrics::update(LinkMonitor& monitor)
+quint64 WatchMetrics::droppedClients() const
+{
+    return d->server->dropped();
+}
+
+void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics)
 {
     auto snapshot = std::make_shared<MetricsSnapshot>();
+    if (topics) {
+        snapshot->historyEvicted = topics->evictedPayloads();
+        snapshot->historyBytes = topics->historyBytes();
+    }
     snapshot->links.reserve(std::size_t(monitor.linkCount()));
     QSet<QString> alive;
     alive.reserve(monitor.linkCount());

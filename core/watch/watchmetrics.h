@@ -6,6 +6,7 @@
 #include <QString>
 
 class LinkMonitor;
+class MqttTopicTree;
 
 /// The links' figures for Prometheus, served at http://HOST:PORT/metrics by MetricsServer, in
 /// OpenMetrics or the text format as the scraper asks.
@@ -25,8 +26,11 @@ public:
     ~WatchMetrics();
     /// The port it listens on.
     int port() const;
-    /// Brings every metric up to date with `monitor` (once a second is plenty).
-    void update(LinkMonitor& monitor);
+    /// Clients the server closed to make room or to keep its answers' memory budget.
+    quint64 droppedClients() const;
+    /// Brings every metric up to date with `monitor` (once a second is plenty), and the topic history's
+    /// budget figures with `topics` when given.
+    void update(LinkMonitor& monitor, const MqttTopicTree* topics = nullptr);
 
 private:
     WatchMetrics();

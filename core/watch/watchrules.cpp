@@ -3,7 +3,6 @@
 
 #include "base/yamllimits.h"
 
-#include <QRegularExpression>
 #include <yaml-cpp/yaml.h>
 
 using namespace Qt::StringLiterals;
@@ -156,12 +155,22 @@ std::optional<WatchRules> WatchRules::fromYaml(const QByteArray& yaml, QString* 
     if (const YAML::Node links = root["links"]) {
         if (!links.IsSequence())
             return fail(tr("%1: links is a list of {match: PATTERN, settings...}").arg(where(links.Mark())));
+        if (links.size() > std::size_t(kMaxLinkRules))
+            return fail(tr("%1: %2 entries in links; at most %3 are read (merge patterns with * and ?)")
+                            .arg(where(links.Mark()))
+                            .arg(links.size())
+                            .arg(kMaxLinkRules));
         for (const YAML::Node& entry : links) {
             const YAML::Node match = entry.IsMap() ? entry["match"] : YAML::Node();
             if (!match || !match.IsScalar() || match.Scalar().empty())
                 return fail(tr("%1: every entry of links needs a match pattern").arg(where(entry.Mark())));
             Override o;
             o.match = QString::fromStdString(match.Scalar());
+            if (o.match.size() > kMaxPatternChars)
+                return fail(tr("%1: a match pattern of %2 characters; at most %3")
+                                .arg(where(match.Mark()))
+                                .arg(o.match.size())
+                                .arg(kMaxPatternChars));
             if (!readSettings(entry, &o.settings, &why))
                 return fail(why);
             rules.overrides << o;
@@ -200,22 +209,63 @@ QByteArray WatchRules::toYaml() const
     return out.toUtf8();
 }
 
+namespace {
+/// Whether `text` is `pattern` where '?' is any one character (both the same length).
+bool sameWithAnyChar(QStringView pattern, QStringView text)
+{
+    for (qsizetype i = 0; i < pattern.size(); ++i)
+        if (pattern[i] != u'?' && pattern[i] != text[i])
+            return false;
+    return true;
+}
+
+/// '*' matches any run of characters, '/' included; '?' one character; an empty text nothing.
+/// The parts before the first and after the last '*' are compared in place first (most patterns
+/// are "/prefix/*" or "*suffix": settled without looking at the rest of a long name); between them,
+/// greedy, going back only to the last '*'. No allocation; at most |pattern| × |text| steps.
+bool glob(QStringView pattern, QStringView text)
+{
+    if (text.isEmpty())
+        return false;
+    const qsizetype first = pattern.indexOf(u'*');
+    if (first < 0)
+        return pattern.size() == text.size() && sameWithAnyChar(pattern, text);
+    const qsizetype last = pattern.lastIndexOf(u'*');
+    const qsizetype tail = pattern.size() - last - 1;
+    if (first + tail > text.size() || !sameWithAnyChar(pattern.left(first), text.left(first))
+        || !sameWithAnyChar(pattern.right(tail), text.right(tail)))
+        return false;
+    pattern = pattern.mid(first, last + 1 - first); // starts and ends with '*'
+    text = text.mid(first, text.size() - first - tail);
+    qsizetype p = 0, t = 0, star = -1, resume = 0;
+    while (t < text.size()) {
+        if (p < pattern.size() && pattern[p] == u'*') {
+            star = p++;
+            resume = t;
+        } else if (p < pattern.size() && (pattern[p] == u'?' || pattern[p] == text[t])) {
+            ++p;
+            ++t;
+        } else if (star >= 0) {
+            p = star + 1;
+            t = ++resume;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == u'*')
+        ++p;
+    return p == pattern.size();
+}
+} // namespace
+
 bool WatchRules::matches(const QString& pattern, const LinkKey& key)
 {
-    // '*' matches any run of characters, '/' included; '?' one character.
-    const auto glob = [](const QString& p, const QString& text) {
-        if (text.isEmpty())
-            return false;
-        QString rx;
-        for (const QChar c : p)
-            rx += c == u'*' ? u".*"_s : c == u'?' ? u"."_s : QRegularExpression::escape(QString(c));
-        return QRegularExpression(QRegularExpression::anchoredPattern(rx)).match(text).hasMatch();
-    };
-    if (pattern.startsWith(u"client:"_s))
-        return glob(pattern.mid(7), key.client);
-    if (pattern.startsWith(u"config:"_s))
-        return glob(pattern.mid(7), key.config);
-    return glob(pattern, key.rosTopic) || glob(pattern, key.mqttTopic);
+    const QStringView p(pattern);
+    if (p.startsWith(u"client:"))
+        return glob(p.mid(7), key.client);
+    if (p.startsWith(u"config:"))
+        return glob(p.mid(7), key.config);
+    return glob(p, key.rosTopic) || glob(p, key.mqttTopic);
 }
 
 LinkRules WatchRules::forLink(const LinkKey& key) const

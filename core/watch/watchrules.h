@@ -60,10 +60,17 @@ struct LinkKey
 ///     links:                         # later entries win
 ///       - match: "/vehicle/*"        # glob on the ROS or MQTT topic; "client:ID", "config:NAME"
 ///         stall_seconds: 2
+///
+/// A file is bounded (besides YamlLimits): at most kMaxLinkRules entries in links, each pattern at most
+/// kMaxPatternChars. A glob is matched without a regular expression: nothing to compile, and the work
+/// of one match is bounded by the pattern's and the name's length.
 class WatchRules
 {
     Q_DECLARE_TR_FUNCTIONS(WatchRules)
 public:
+    static constexpr int kMaxLinkRules = 2000;
+    static constexpr qsizetype kMaxPatternChars = 512;
+
     struct Override
     {
         QString match;

@@ -16,6 +16,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QDialogButtonBox>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -98,6 +99,16 @@ private slots:
             pubArgs()
                 + QStringList {u"-t"_s, u"fleet/car1/status"_s, u"-r"_s, u"-m"_s,
                                u"{\"speed\": 12.5, \"gear\": \"D\"}"_s});
+        // A hostile JSON payload: 5,000 keys, each an array of 200 numbers (a million values).
+        QByteArray wide = "{";
+        const QByteArray numbers = '[' + QByteArray("1,").repeated(199) + "1]";
+        for (int i = 0; i < 5000; ++i)
+            wide += (i ? ",\"k" : "\"k") + QByteArray::number(i) + "\":" + numbers;
+        wide += '}';
+        run(u"mosquitto_pub"_s,
+            pubArgs()
+                + QStringList {u"-t"_s, u"fleet/hostile/json"_s, u"-r"_s, u"-f"_s,
+                               writeFile(m_servers.tempPath() + u"/wide.json"_s, wide)});
         // mqtt_client for ROS 2: a stamped std_msgs/msg/String, and a type without a bundled
         // definition.
         const QString dir = m_servers.tempPath();
@@ -176,6 +187,17 @@ private slots:
                                                             MqttTopicTree::FullTopicRole));
         QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model()).contains(u"speed"_s));
         QVERIFY(page->detail()->payloadView()->toPlainText().contains(u"\"gear\": \"D\""_s));
+        // A hostile one shows a bounded number of fields, and says that the rest is not shown.
+        QElapsedTimer shown;
+        shown.start();
+        page->mqttView()->setCurrentIndex(ViewHelpers::find(
+            page->mqttView()->model(), u"fleet/hostile/json"_s, MqttTopicTree::FullTopicRole));
+        QTRY_VERIFY_WITH_TIMEOUT(fieldNames(page->detail()->fieldsView()->model()).contains(u"k0.[0]"_s),
+                                 20000);
+        const QStringList wideFields = fieldNames(page->detail()->fieldsView()->model());
+        QVERIFY2(wideFields.size() <= 5000 + 100, qPrintable(QString::number(wideFields.size())));
+        QVERIFY(wideFields.contains(u"…"_s));
+        QVERIFY2(shown.elapsed() < 15000, qPrintable(QString::number(shown.elapsed())));
 
         // Filtering by name keeps the path to a match.
         QTest::keyClicks(page->mqttFilter(), u"car1"_s);

@@ -10,6 +10,7 @@
 #include "wire/mqttclientwire.h"
 
 #include <cstring>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QtEndian>
 #include <QTest>
@@ -454,6 +455,80 @@ private slots:
             QVERIFY2(error.contains(where), qPrintable(error));
         }
         QVERIFY(WatchRules::fromYaml(QByteArray(), &error)); // empty: the defaults
+    }
+
+    /// Many rules and many links: each link's rules are found once (not on every change of the link
+    /// set), and a glob is matched without compiling anything. 1,000 rules × 2,000 links, the set
+    /// growing ten times as discovery finds them, took minutes when every change matched every link
+    /// against every rule with a regular expression made anew each time.
+    void manyRulesTimesManyLinksStartAtOnce()
+    {
+        QByteArray yaml = "links:\n";
+        for (int i = 0; i < 1000; ++i)
+            yaml += "  - match: \"/fleet/v" + QByteArray::number(i)
+                + "/*\"\n    stall_seconds: " + QByteArray::number(i % 7 + 1) + "\n";
+        yaml += "  - match: \"client:ops_*\"\n    max_loss_percent: 9\n";
+        QString error;
+        const auto rules = WatchRules::fromYaml(yaml, &error);
+        QVERIFY2(rules, qPrintable(error));
+        LinkMonitor monitor;
+        monitor.setRules(*rules);
+        QList<LinkDef> links;
+        QElapsedTimer timer;
+        timer.start();
+        for (int round = 0; round < 10; ++round) {
+            for (int i = 0; i < 200; ++i)
+                links << LinkDef::discoveredAt(u"fleet/v%1/topic%2"_s.arg(round * 100 + i).arg(i), false);
+            monitor.setLinks(links, kStart + round * 1000 * kMs);
+        }
+        QCOMPARE(monitor.linkCount(), 2000);
+        QVERIFY2(timer.elapsed() < 5000, qPrintable(QString::number(timer.elapsed())));
+        // A late rule matched and an early one did not match where it should not.
+        const LinkRules v7 = rules->forLink({u"/fleet/v7/x"_s, u"fleet/v7/x"_s, u"c"_s, u"d"_s});
+        QCOMPARE(v7[LinkRules::StallSeconds].alert, 1.0);
+        const LinkRules v71 = rules->forLink({u"/fleet/v71/x"_s, u"fleet/v71/x"_s, u"ops_1"_s, u"d"_s});
+        QCOMPARE(v71[LinkRules::StallSeconds].alert, 2.0); // "/fleet/v71/*" (71 % 7 + 1), not v7's
+        QCOMPARE(v71[LinkRules::MaxLossPercent].alert, 9.0);
+    }
+
+    void globsMatchWithoutRegularExpressions()
+    {
+        const LinkKey key {u"/a/b.c"_s, u"a/b.c"_s, u"ops_1"_s, u"lab"_s};
+        QVERIFY(WatchRules::matches(u"/a/*"_s, key));
+        QVERIFY(WatchRules::matches(u"*"_s, key));
+        QVERIFY(WatchRules::matches(u"a/?.c"_s, key));
+        QVERIFY(!WatchRules::matches(u"a/b?c?"_s, key));
+        QVERIFY(!WatchRules::matches(u"a/b"_s, key)); // anchored
+        QVERIFY(!WatchRules::matches(u"a/[b].c"_s, key)); // no regular expression: '[' is itself
+        QVERIFY(WatchRules::matches(u"a/*.*"_s, key));
+        QVERIFY(WatchRules::matches(u"client:ops_*"_s, key));
+        QVERIFY(!WatchRules::matches(u"client:ops"_s, key));
+        QVERIFY(WatchRules::matches(u"config:l?b"_s, key));
+        QVERIFY(!WatchRules::matches(u"config:*"_s, {u"/x"_s, u"x"_s, u"c"_s, QString()})); // empty: no match
+        // The worst a pattern can do to a long name stays quick: stars that almost match, many times.
+        const QString pattern = QString(u"*a"_s).repeated(int(WatchRules::kMaxPatternChars / 2) - 1) + u"b"_s;
+        const LinkKey hostile {QString(20000, u'a'), QString(), QString(), QString()};
+        QElapsedTimer timer;
+        timer.start();
+        QVERIFY(!WatchRules::matches(pattern, hostile));
+        QVERIFY2(timer.elapsed() < 2000, qPrintable(QString::number(timer.elapsed())));
+    }
+
+    void rulesFilesAreBounded()
+    {
+        QString error;
+        QByteArray many = "links:\n";
+        for (int i = 0; i <= WatchRules::kMaxLinkRules; ++i)
+            many += "  - {match: \"/t" + QByteArray::number(i) + "\", stall_seconds: 1}\n";
+        QVERIFY(!WatchRules::fromYaml(many, &error));
+        QVERIFY2(error.contains(u"line 2"_s) && error.contains(u"at most 2000"_s), qPrintable(error));
+        const QByteArray longPattern = "links:\n  - match: \""
+            + QByteArray(WatchRules::kMaxPatternChars + 1, 'x') + "\"\n    stall_seconds: 1\n";
+        QVERIFY(!WatchRules::fromYaml(longPattern, &error));
+        QVERIFY2(error.contains(u"line 2"_s) && error.contains(u"at most 512"_s), qPrintable(error));
+        const QByteArray atTheLimit = "links:\n  - match: \"" + QByteArray(WatchRules::kMaxPatternChars, 'x')
+            + "\"\n    stall_seconds: 1\n";
+        QVERIFY2(WatchRules::fromYaml(atTheLimit, &error), qPrintable(error));
     }
 
     void shippedRulesLoad()

@@ -5,12 +5,19 @@
 #include "testservers.h"
 #include "watch/metricsserver.h"
 
+#include <arpa/inet.h>
+#include <atomic>
+#include <deque>
+#include <netinet/in.h>
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
 #include <QTcpSocket>
 #include <QTest>
+#include <sys/socket.h>
+#include <thread>
+#include <unistd.h>
 
 using namespace Qt::StringLiterals;
 
@@ -105,7 +112,7 @@ private slots:
         QSet<QByteArray> closed; // families whose samples have ended
         QByteArray current;
         static const QRegularExpression sampleLine(
-            u"^([a-z_]+)\\{([a-z_]+=\"([^\"\\\\]|\\\\.)*\",?)*\\} (-?[0-9.e+]+|NaN|\\+Inf)$"_s);
+            u"^([a-z_]+)(\\{([a-z_]+=\"([^\"\\\\]|\\\\.)*\",?)*\\})? (-?[0-9.e+]+|NaN|\\+Inf)$"_s);
         for (const QByteArray& line : lines) {
             if (line.isEmpty() || line == "# EOF")
                 continue;
@@ -118,7 +125,7 @@ private slots:
             if (line.startsWith("# HELP "))
                 continue;
             QVERIFY2(sampleLine.match(QString::fromUtf8(line)).hasMatch(), line.constData());
-            const QByteArray name = line.left(line.indexOf('{'));
+            const QByteArray name = line.left(line.indexOf(line.contains('{') ? '{' : ' '));
             QByteArray family;
             for (auto it = typeOf.cbegin(); it != typeOf.cend(); ++it)
                 if (name == it.key()
@@ -134,7 +141,7 @@ private slots:
                 current = family;
             }
         }
-        QCOMPARE(typeOf.size(), 9);
+        QCOMPARE(typeOf.size(), 14); // 9 of the links and bridges, 5 of the answer and the history budgets
     }
 
     void theScraperChoosesTheFormat()
@@ -215,6 +222,177 @@ private slots:
                     .startsWith("HTTP/1.1 431"));
         QVERIFY(TestServers::httpRequest(port, QByteArray(100000, '\0')).startsWith("HTTP/1.1 431"));
         QCOMPARE(server->served(), quint64(4)); // the scrapes of /metrics
+    }
+
+    /// Lines may end in a bare LF (RFC 9112 allows it), a blank line may come first, and the target may
+    /// be an absolute URI (a proxy's, some scrapers'): all are answered, not left waiting or 404.
+    void leniantHeadsAreAnswered()
+    {
+        QString error;
+        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        QVERIFY2(server, qPrintable(error));
+        server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
+        const QByteArray want = MetricsExposition::write(twoLinks(), MetricsFormat::Text);
+        const QByteArray port = QByteArray::number(server->port());
+        const QList<QByteArray> requests {"GET /metrics HTTP/1.1\nHost: x\n\n",
+                                          "GET /metrics HTTP/1.0\n\n",
+                                          "GET /metrics HTTP/1.1\r\nHost: x\n\r\n",
+                                          "\r\nGET /metrics HTTP/1.1\r\n\r\n",
+                                          "GET http://127.0.0.1:" + port
+                                              + "/metrics HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n",
+                                          "GET HTTP://[::1]:" + port + "/metrics?x=1 HTTP/1.1\r\n\r\n"};
+        for (const QByteArray& request : requests) {
+            QElapsedTimer t;
+            t.start();
+            const QByteArray answer = TestServers::httpRequest(server->port(), request);
+            QVERIFY2(answer.startsWith("HTTP/1.1 200 OK\r\n"), request.constData());
+            QCOMPARE(body(answer), want);
+            QVERIFY2(t.elapsed() < 2000, request.constData());
+        }
+        QVERIFY(TestServers::httpRequest(server->port(), "GET http://h:1/other HTTP/1.1\n\n")
+                    .startsWith("HTTP/1.1 404"));
+        QVERIFY(TestServers::httpRequest(server->port(), "GET http://h:1 HTTP/1.1\n\n").contains("/metrics"));
+        QCOMPARE(server->served(), quint64(6));
+    }
+
+    /// Label values are cut, and an answer stays within its bytes however many links there are: 10,000
+    /// links named with 2,000 characters made answers of 190 MB. What is left out is said.
+    void answersStayWithinTheirBudget()
+    {
+        using MetricsExposition::label;
+        MetricsSnapshot s;
+        for (int i = 0; i < 10000; ++i) {
+            MetricsSnapshot::Link l;
+            const QByteArray name = QByteArray::number(i) + '/' + QByteArray(2000, 'n');
+            l.labels = label("config", "discovered") + ',' + label("client", "") + ','
+                + label("direction", "ros2mqtt") + ',' + label("topic", '/' + name) + ','
+                + label("mqtt_topic", name);
+            l.hasLatency = i % 2 == 0;
+            s.links.push_back(l);
+        }
+        const QByteArray cut = label("topic", QByteArray(2000, 'n'));
+        QVERIFY(cut.size() <= MetricsExposition::kMaxLabelValueBytes + 8);
+        QVERIFY(cut.contains("\xe2\x80\xa6")); // the mark
+        QVERIFY(cut != label("topic", QByteArray(2000, 'n') + 'x')); // still distinct
+        const QByteArray umlauts = label("topic", 'x' + QByteArray("\xc3\xbc").repeated(200));
+        QCOMPARE(umlauts.size(), cut.size() - 1); // not cut inside a character
+        QVERIFY(!QString::fromUtf8(umlauts).contains(QChar::ReplacementCharacter));
+        QElapsedTimer t;
+        t.start();
+        const QByteArray text = MetricsExposition::write(s, MetricsFormat::Text, 3);
+        QVERIFY2(t.elapsed() < 3000, qPrintable(QString::number(t.elapsed())));
+        QVERIFY2(text.size() <= MetricsExposition::kMaxAnswerBytes, qPrintable(QString::number(text.size())));
+        QVERIFY(text.size() > MetricsExposition::kMaxAnswerBytes / 2); // as many as fit, not few
+        QVERIFY(text.contains("\nbridgescope_metrics_truncated 1\n"));
+        const QByteArray key = "\nbridgescope_metrics_omitted ";
+        const qsizetype at = text.indexOf(key) + key.size();
+        const double omitted = text.mid(at, text.indexOf('\n', at) - at).toDouble();
+        QVERIFY2(omitted > 0 && omitted < 10000, qPrintable(QString::number(omitted)));
+        QVERIFY(text.contains("\nbridgescope_metrics_dropped_clients_total 3\n"));
+        QVERIFY(MetricsExposition::write(twoLinks(), MetricsFormat::OpenMetrics)
+                    .contains("\nbridgescope_metrics_truncated 0\n"));
+    }
+
+    /// Clients that ask and never read hold their answers in the server's memory: past the budget,
+    /// the oldest of them are closed, and a scrape is still answered at once.
+    void nonReadersAreDroppedPastTheBudget()
+    {
+        QString error;
+        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        QVERIFY2(server, qPrintable(error));
+        MetricsSnapshot s;
+        for (int i = 0; i < 9000; ++i) {
+            MetricsSnapshot::Link l;
+            l.labels = MetricsExposition::label("topic", QByteArray::number(i) + QByteArray(250, 'n'));
+            l.hasLatency = true;
+            s.links.push_back(l);
+        }
+        server->publish(std::make_shared<MetricsSnapshot>(s));
+        const qsizetype answerBytes = MetricsExposition::write(s, MetricsFormat::Text).size();
+        QVERIFY2(answerBytes > 8 * 1024 * 1024, qPrintable(QString::number(answerBytes)));
+        std::vector<std::unique_ptr<QTcpSocket>> greedy;
+        for (int i = 0; i < 24; ++i) {
+            greedy.push_back(std::make_unique<QTcpSocket>());
+            greedy.back()->setReadBufferSize(1); // reads (almost) nothing
+            greedy.back()->connectToHost(u"127.0.0.1"_s, server->port());
+            QVERIFY(greedy.back()->waitForConnected(3000));
+            greedy.back()->write("GET /metrics HTTP/1.1\r\n\r\n");
+            QVERIFY(greedy.back()->waitForBytesWritten(3000));
+        }
+        QTRY_VERIFY2_WITH_TIMEOUT(server->served() == 24, qPrintable(QString::number(server->served())),
+                                  20000);
+        QTRY_VERIFY_WITH_TIMEOUT(server->dropped() > 0, 10000);
+        QElapsedTimer t;
+        t.start();
+        const QByteArray answer = TestServers::httpRequest(server->port(), "GET /metrics HTTP/1.1\r\n\r\n");
+        QCOMPARE(body(answer).size(), answerBytes);
+        QVERIFY2(t.elapsed() < 5000, qPrintable(QString::number(t.elapsed())));
+    }
+
+    /// Bursts of connections that send nothing, every 10 ms, while a scraper scrapes: every scrape is
+    /// answered (the idle ones make room among themselves, the scraper's asked first).
+    void idleBurstsDoNotStarveScrapes()
+    {
+        QString error;
+        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        QVERIFY2(server, qPrintable(error));
+        server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
+        const quint16 port = server->port();
+        std::atomic<bool> stop {false};
+        std::atomic<int> opened {0};
+        std::thread burster([&] {
+            sockaddr_in to {};
+            to.sin_family = AF_INET;
+            to.sin_port = htons(port);
+            to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+            std::deque<std::vector<int>> bursts;
+            const auto closeAll = [](const std::vector<int>& fds) {
+                for (int fd : fds) {
+                    const linger reset {1, 0}; // RST: no TIME_WAIT left behind
+                    ::setsockopt(fd, SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
+                    ::close(fd);
+                }
+            };
+            while (!stop) {
+                std::vector<int> burst;
+                for (int i = 0; i < 100; ++i) {
+                    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK, 0);
+                    if (fd < 0)
+                        break;
+                    ::connect(fd, reinterpret_cast<const sockaddr*>(&to), sizeof to);
+                    burst.push_back(fd);
+                }
+                opened += int(burst.size());
+                bursts.push_back(std::move(burst));
+                if (bursts.size() > 3) {
+                    closeAll(bursts.front());
+                    bursts.pop_front();
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            }
+            for (const auto& b : bursts)
+                closeAll(b);
+        });
+        int scrapes = 0, answered = 0;
+        QElapsedTimer t;
+        t.start();
+        QStringList failures;
+        while (t.elapsed() < 3000) {
+            const QByteArray answer = TestServers::httpRequest(port, "GET /metrics HTTP/1.1\r\n\r\n");
+            ++scrapes;
+            if (answer.startsWith("HTTP/1.1 200") && body(answer).endsWith("\n"))
+                ++answered;
+            else
+                failures << QString::fromUtf8(answer.left(40));
+            QTest::qWait(20);
+        }
+        stop = true;
+        burster.join();
+        QVERIFY2(opened > 3000, qPrintable(QString::number(opened)));
+        QVERIFY(server->rejected() > 1000);
+        QVERIFY2(
+            scrapes >= 10 && answered == scrapes,
+            qPrintable(u"%1 of %2 answered: %3"_s.arg(answered).arg(scrapes).arg(failures.join(u" | "_s))));
     }
 
     // Clients that connect and never ask hold no slot for ever: more than kMaxClients of them push

@@ -116,6 +116,47 @@ private slots:
         QCOMPARE(tree.indexOf(u"t"_s).data(MqttTopicTree::SearchTextRole).toString(), u"11"_s);
     }
 
+    /// 500 topics × 20 payloads of 200 kB passed 2 GB when each topic was bounded alone: the history of
+    /// all topics stays within one budget, the oldest payloads of any topic go first, and each is counted.
+    void historyOfAllTopicsStaysWithinItsBudget()
+    {
+        MqttTopicTree tree;
+        QCOMPARE(tree.historyBudget(), qint64(64) * 1024 * 1024);
+        const QByteArray payload(200 * 1000, 'p'); // shared: the test itself stays small
+        qint64 ns = 1;
+        for (int round = 0; round < 20; ++round) {
+            std::vector<MqttMessage> batch;
+            for (int t = 0; t < 500; ++t)
+                batch.push_back(msg(u"fleet/v%1/cloud"_s.arg(t), payload, false, ns++));
+            tree.apply(std::move(batch));
+            QVERIFY2(tree.historyBytes() <= tree.historyBudget(),
+                     qPrintable(QString::number(tree.historyBytes())));
+        }
+        qint64 kept = 0;
+        for (int t = 0; t < 500; ++t)
+            kept += qint64(tree.history(u"fleet/v%1/cloud"_s.arg(t))->size());
+        const qint64 cost = payload.size() + MqttTopicTree::kHistoryEntryOverhead;
+        QCOMPARE(kept, tree.historyBudget() / cost);
+        QCOMPARE(tree.evictedPayloads(), quint64(500 * 20 - kept));
+        QCOMPARE(tree.historyBytes(), kept * cost);
+        // The newest are kept, oldest first gone: the last topics of the last round have theirs.
+        QCOMPARE(tree.history(u"fleet/v499/cloud"_s)->back().receivedNs, ns - 1);
+        QVERIFY(tree.history(u"fleet/v0/cloud"_s)->size() <= 1);
+        QCOMPARE(tree.info(u"fleet/v0/cloud"_s)->messages, quint64(20)); // the counts are whole
+
+        // A smaller budget takes effect with the next message; tiny payloads pay their bookkeeping.
+        tree.setHistoryBudget(1024 * 1024);
+        std::vector<MqttMessage> many;
+        for (int i = 0; i < 100000; ++i)
+            many.push_back(msg(u"tiny/%1"_s.arg(i % 5000), "x", false, ns++));
+        tree.apply(std::move(many));
+        QVERIFY(tree.historyBytes() <= 1024 * 1024);
+        QVERIFY(tree.evictedPayloads() > quint64(500 * 20 - kept));
+        tree.clear();
+        QCOMPARE(tree.historyBytes(), qint64(0));
+        QCOMPARE(tree.evictedPayloads(), quint64(0));
+    }
+
     void learnsTypesFromMqttClientAnnouncements()
     {
         MqttTopicTree tree;

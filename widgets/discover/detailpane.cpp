@@ -73,20 +73,41 @@ void addValue(QStandardItem* parent, const RosValue& value, const QStringList& p
     parent->appendRow(items);
 }
 
-// `path` is the value's own path: empty for a document's root array, shown as "(root)".
-void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, const QStringList& path)
+/// The rows a JSON payload's fields may take in all (a row costs a few hundred bytes and its share of
+/// every repaint); past them the rest is not shown, and a last row says how much.
+constexpr int kMaxJsonRows = 5000;
+/// A JSON payload larger than this is not parsed for fields (its text is still shown, cut).
+constexpr qsizetype kMaxJsonFieldsBytes = 4 * 1024 * 1024;
+
+// `path` is the value's own path: empty for a document's root array, shown as "(root)". `rows` is
+// what is left of kMaxJsonRows.
+void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, const QStringList& path,
+             int& rows)
 {
+    if (rows <= 0)
+        return;
+    --rows;
     QList<QStandardItem*> items;
+    const auto more = [&](qsizetype left) {
+        if (left > 0)
+            items.first()->appendRow(
+                row(u"…"_s, DetailPane::tr("%n more not shown", nullptr, int(left)), QString(), path));
+    };
     if (v.isObject()) {
         items = row(name, QString(), u"object"_s, path);
         const QJsonObject o = v.toObject();
-        for (auto it = o.begin(); it != o.end(); ++it)
-            addJson(items.first(), it.key(), it.value(), path + QStringList {it.key()});
+        qsizetype shown = 0;
+        for (auto it = o.begin(); it != o.end() && rows > 0; ++it, ++shown)
+            addJson(items.first(), it.key(), it.value(), path + QStringList {it.key()}, rows);
+        more(o.size() - shown);
     } else if (v.isArray()) {
         const QJsonArray a = v.toArray();
         items = row(name, DetailPane::tr("%1 elements").arg(a.size()), u"array"_s, path);
-        for (int i = 0; i < a.size() && i < 256; ++i)
-            addJson(items.first(), u"[%1]"_s.arg(i), a[i], path + QStringList {u"[%1]"_s.arg(i)});
+        qsizetype shown = 0;
+        for (; shown < a.size() && shown < 256 && rows > 0; ++shown)
+            addJson(items.first(), u"[%1]"_s.arg(shown), a[shown], path + QStringList {u"[%1]"_s.arg(shown)},
+                    rows);
+        more(a.size() - shown);
     } else {
         const QString type = v.isString() ? u"string"_s
             : v.isBool()                  ? u"bool"_s
@@ -354,13 +375,17 @@ void DetailPane::showJsonFields(const QByteArray& json)
 {
     const QJsonDocument doc = QJsonDocument::fromJson(json);
     const QStringList current = clearFields();
+    int rows = kMaxJsonRows;
     if (doc.isObject()) {
         const QJsonObject o = doc.object();
-        for (auto it = o.begin(); it != o.end(); ++it)
-            addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value(), {it.key()});
+        for (auto it = o.begin(); it != o.end() && rows > 0; ++it)
+            addJson(m_fieldModel->invisibleRootItem(), it.key(), it.value(), {it.key()}, rows);
+        if (rows <= 0)
+            m_fieldModel->appendRow(
+                row(u"…"_s, tr("at most %1 fields are shown").arg(kMaxJsonRows), QString(), {}));
     } else {
         addJson(m_fieldModel->invisibleRootItem(), u"(root)"_s,
-                doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(), {});
+                doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(), {}, rows);
     }
     m_fields->expandToDepth(1);
     restoreCurrentField(current);
@@ -435,7 +460,8 @@ void DetailPane::refreshMqtt(bool force)
             showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
     } else if (!info->typeNote.isEmpty()) {
         showNoFields(info->typeNote);
-    } else if (!QJsonDocument::fromJson(m_lastPayload).isNull()) {
+    } else if (m_lastPayload.size() <= kMaxJsonFieldsBytes
+               && !QJsonDocument::fromJson(m_lastPayload).isNull()) {
         showJsonFields(m_lastPayload);
     } else {
         showNoFields(tr("(no structure known: see Payload)"));

@@ -587,5 +587,9 @@ void DiscoverPage::updateMqttStatus()
         parts << tr("%1 malformed").arg(t->malformedTypeAnnouncements() + t->malformedPayloads());
     if (const int unknown = t->unknownTypeTopics())
         parts << tr("%n topic(s) of an unknown ROS 2 type", nullptr, unknown);
+    if (const quint64 evicted = t->evictedPayloads())
+        parts << tr("%1 payloads evicted from the history (budget %2 MiB)")
+                     .arg(evicted)
+                     .arg(t->historyBudget() / (1024 * 1024));
     m_counters->setText(parts.join(u" · "_s));
 }

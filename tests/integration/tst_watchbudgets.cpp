@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: MIT
+// The memory budgets of `bridgescope watch` (a child process) against floods through a real
+// mosquitto: the MQTT topic history of all topics (MqttTopicTree::kDefaultHistoryBudget) and the
+// answers of /metrics (labels cut, an answer within MetricsExposition::kMaxAnswerBytes, unsent
+// answers within MetricsServer::kMaxQueuedBytes). Each flood is bounded in count; the watch's peak
+// RSS (VmHWM) must stay under its documented bound, and what was evicted or dropped is counted in
+// its /metrics.
+#include "mqtt/mqttlink.h"
+#include "testservers.h"
+#include "wire/mqttclientwire.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QTcpSocket>
+#include <QTest>
+#include <QThread>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kMiB = 1024 * 1024;
+/// What the watch takes with nothing to hold (Qt, roscpp, Fast DDS, Paho; Debug or sanitizer builds
+/// more), measured before each flood; a budget is checked against the growth over it.
+qint64 peakRss(qint64 pid)
+{
+    QFile f(u"/proc/%1/status"_s.arg(pid));
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (line.startsWith("VmHWM:"))
+            return line.mid(6).trimmed().split(' ').front().toLongLong() * 1024;
+    return -1;
+}
+
+/// A sample without labels from an exposition; NaN when absent.
+double plainSample(const QByteArray& metrics, const QByteArray& name)
+{
+    const QByteArray key = '\n' + name + ' ';
+    const qsizetype at = metrics.indexOf(key);
+    if (at < 0)
+        return qQNaN();
+    const qsizetype from = at + key.size();
+    return metrics.mid(from, metrics.indexOf('\n', from) - from).toDouble();
+}
+} // namespace
+
+class TestWatchBudgets : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    std::unique_ptr<MqttLink> m_mqtt;
+
+    void startWatch(QProcess& watch, quint16 metricsPort)
+    {
+        watch.setProcessEnvironment(m_servers.rosEnvironment());
+        watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"watch"_s, u"--broker"_s, m_servers.brokerUrl(), u"--ros-master"_s,
+                     m_servers.rosMasterUri(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(metricsPort),
+                     u"--seconds"_s, u"120"_s});
+        QVERIFY(watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(metricsPort, 15000));
+        QTest::qWait(1000); // connected and subscribed
+    }
+
+    /// Publishes at QoS 0, waiting while Paho's window is full (the flood is paced by the broker).
+    bool publish(const QString& topic, const QByteArray& payload)
+    {
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 10000) {
+            const MqttLink::Sent sent
+                = m_mqtt->tryPublish(topic, payload.constData(), payload.size(), 0, false);
+            if (sent != MqttLink::Sent::Full)
+                return sent == MqttLink::Sent::Ok;
+            QThread::msleep(2);
+        }
+        return false;
+    }
+
+    static void stopWatch(QProcess& watch)
+    {
+        watch.terminate();
+        QVERIFY(watch.waitForFinished(15000));
+        QCOMPARE(watch.exitCode(), 0);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
+        QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
+        QString error;
+        m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+    }
+
+    /// 50 topics × 10 payloads of 400 kB (200 MB) held whole took the watch past 200 MB: now the
+    /// history of all topics stays within 64 MiB, the oldest payloads going first, counted.
+    void topicHistoryStaysWithinItsBudget()
+    {
+        QProcess watch;
+        const quint16 port = TestServers::freePort();
+        startWatch(watch, port);
+        const qint64 base = peakRss(watch.processId());
+        QVERIFY(base > 0);
+        const QByteArray payload(400 * 1000, 'h');
+        QElapsedTimer t;
+        t.start();
+        for (int round = 0; round < 10; ++round)
+            for (int topic = 0; topic < 50; ++topic)
+                QVERIFY(publish(u"flood/t%1"_s.arg(topic), payload));
+        const qint64 publishMs = t.elapsed();
+        QByteArray metrics;
+        QTRY_VERIFY_WITH_TIMEOUT(plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s),
+                                             "bridgescope_mqtt_history_evicted_total")
+                                     >= 500 - 64 * kMiB / (400 * 1000),
+                                 60000);
+        qInfo("500 payloads of 400 kB published in %lld ms, taken by the watch in %lld ms", publishMs,
+              t.elapsed());
+        const double held = plainSample(metrics, "bridgescope_mqtt_history_bytes");
+        QVERIFY2(held > 32 * kMiB && held <= 64 * kMiB, qPrintable(QString::number(held)));
+        const qint64 peak = peakRss(watch.processId());
+        qInfo("watch: VmHWM %lld MiB before the flood, %lld MiB after 200 MB of payloads", base / kMiB,
+              peak / kMiB);
+        QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB,
+                 qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
+        stopWatch(watch);
+    }
+
+    /// 10,000 links announced with names of 2,000 characters made answers of 190 MB, and 64 clients
+    /// that asked and never read took the watch to 4.3 GB: labels are cut, an answer is bounded, the
+    /// clients that do not read are dropped past the budget, and a scrape is still answered at once.
+    void metricsAnswersStayWithinTheirBudget()
+    {
+        QProcess watch;
+        const quint16 port = TestServers::freePort();
+        startWatch(watch, port);
+        const QByteArray type = MqttClientWire::encodeType(
+            {u"992ce8a1687cec8c8bd883ec73ca41d1"_s, u"std_msgs/String"_s, u"string data\n"_s, false});
+        const QString tail = QString(2000, u'n');
+        for (int i = 0; i < 10000; ++i) {
+            QVERIFY(publish(MqttClientWire::typeTopicPrefix() + u"hostile/%1/"_s.arg(i) + tail, type));
+            if (i % 1000 == 999)
+                QTest::qWait(50);
+        }
+        QByteArray metrics;
+        const auto links = [&] {
+            metrics = TestServers::httpGet(port, u"/metrics"_s);
+            return metrics.count("bridgescope_link_state{");
+        };
+        // Cut to 256 bytes a link's labels still take 4 kB: as many as fit in 16 MiB are answered.
+        QTRY_VERIFY_WITH_TIMEOUT(links() > 3000 && plainSample(metrics, "bridgescope_metrics_truncated") == 1,
+                                 60000);
+        QVERIFY2(metrics.size() <= 16 * kMiB, qPrintable(QString::number(metrics.size())));
+        QVERIFY(!metrics.contains(tail.left(300).toUtf8())); // cut
+        QVERIFY(metrics.contains("\xe2\x80\xa6")); // and marked
+        QVERIFY(plainSample(metrics, "bridgescope_metrics_omitted") > 0);
+        const qint64 base = peakRss(watch.processId());
+
+        std::vector<std::unique_ptr<QTcpSocket>> greedy;
+        for (int i = 0; i < 64; ++i) {
+            greedy.push_back(std::make_unique<QTcpSocket>());
+            greedy.back()->setReadBufferSize(1); // reads (almost) nothing
+            greedy.back()->connectToHost(u"127.0.0.1"_s, port);
+            QVERIFY(greedy.back()->waitForConnected(3000));
+            greedy.back()->write("GET /metrics HTTP/1.1\r\n\r\n");
+        }
+        QTest::qWait(3000);
+        QElapsedTimer t;
+        t.start();
+        metrics = TestServers::httpGet(port, u"/metrics"_s);
+        QVERIFY2(t.elapsed() < 5000, qPrintable(QString::number(t.elapsed())));
+        QVERIFY(metrics.endsWith("\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s),
+                                             "bridgescope_metrics_dropped_clients_total")
+                                     > 0,
+                                 10000);
+        const qint64 peak = peakRss(watch.processId());
+        qInfo("watch: VmHWM %lld MiB with 10,000 hostile links, %lld MiB after 64 clients that do not read",
+              base / kMiB, peak / kMiB);
+        QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB,
+                 qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
+        greedy.clear();
+        stopWatch(watch);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestWatchBudgets)
+#include "tst_watchbudgets.moc"
