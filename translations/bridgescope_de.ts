@@ -1371,6 +1371,17 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>ROS 2 type %1 (announced by mqtt_client)%2</source>
         <translation>ROS-2-Typ %1 (von mqtt_client angekündigt)%2</translation>
     </message>
+    <message numerus="yes">
+        <source>%n more not shown</source>
+        <translation>
+            <numerusform>%n weiteres nicht angezeigt</numerusform>
+            <numerusform>%n weitere nicht angezeigt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>at most %1 fields are shown</source>
+        <translation>höchstens %1 Felder werden angezeigt</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -1653,6 +1664,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
             <numerusform>%n Topic eines unbekannten ROS-2-Typs</numerusform>
             <numerusform>%n Topics unbekannter ROS-2-Typen</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 payloads evicted from the history (budget %2 MiB)</source>
+        <translation>%1 Nutzdaten aus dem Verlauf verdrängt (Budget %2 MiB)</translation>
     </message>
 </context>
 <context>
@@ -7293,6 +7308,14 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
         <source>nothing was watched: neither the broker nor the master was reached; --allow-empty accepts that</source>
         <translation>nichts wurde beobachtet: weder Broker noch Master waren erreichbar; --allow-empty lässt das zu</translation>
     </message>
+    <message>
+        <source>; %1 payloads evicted from the topic history (budget %2 MiB)</source>
+        <translation>; %1 Nutzdaten aus dem Topic-Verlauf verdrängt (Budget %2 MiB)</translation>
+    </message>
+    <message>
+        <source>; %1 metrics clients dropped</source>
+        <translation>; %1 Metrik-Clients getrennt</translation>
+    </message>
 </context>
 <context>
     <name>WatchRules</name>
@@ -7335,6 +7358,14 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     <message>
         <source>%1: every entry of links needs a match pattern</source>
         <translation>%1: jeder Eintrag von links braucht ein match-Muster</translation>
+    </message>
+    <message>
+        <source>%1: %2 entries in links; at most %3 are read (merge patterns with * and ?)</source>
+        <translation>%1: %2 Einträge in links; höchstens %3 werden gelesen (Muster mit * und ? zusammenfassen)</translation>
+    </message>
+    <message>
+        <source>%1: a match pattern of %2 characters; at most %3</source>
+        <translation>%1: ein Suchmuster mit %2 Zeichen; höchstens %3</translation>
     </message>
 </context>
 <context>
