@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Experiment plans: the shipped examples read as the paper's tables, factors cross in order,
 // listed cells name what they change, repetitions come last, and every mistake names its line.
+#include "experiment/experimentevent.h"
 #include "experiment/experimentplan.h"
 #include "experiment/experimentrunner.h"
 #include "record/runfile.h"
@@ -295,6 +296,48 @@ private slots:
         QCOMPARE(again.statuses()[2].state, CellStatus::Pending);
         QVERIFY2(again.resumeNotes().join(u'\n').contains(u"12 complete samples, the cell needs 13"_s),
                  qPrintable(again.resumeNotes().join(u'\n')));
+    }
+
+    // The child's JSON lines, as the Experiments page reads them: what the command writes reads as
+    // written; hostile values are dropped or clamped, never taken (issue 31).
+    void experimentEventsAreBounded()
+    {
+        const auto progress = ExperimentEvent::parse(
+            "{\"event\":\"progress\",\"index\":1,\"samples\":45,\"of\":60,\"warming_up\":true,\"remaining_s\":120,"
+            "\"total_ms\":[12.5,13.25,-1e300,1e300,\"x\",null]}");
+        QVERIFY(progress);
+        QCOMPARE(progress->kind, ExperimentEvent::Kind::Progress);
+        QCOMPARE(progress->index, 1);
+        QCOMPARE(progress->samples, 45);
+        QCOMPARE(progress->of, 60);
+        QCOMPARE(progress->remainingS, 120);
+        QVERIFY(progress->warmingUp);
+        QCOMPARE(progress->totalMs, QList<double>({12.5, 13.25})); // the rest is no measurement
+        const auto finished = ExperimentEvent::parse(
+            QByteArray("{\"event\":\"finished\",\"index\":2,\"cell\":\"c\",\"state\":\"complete\",\"samples\":-7,\"reason\":\"")
+            + QByteArray(5000, 'r') + "\"}");
+        QVERIFY(finished);
+        QVERIFY(finished->complete);
+        QCOMPARE(finished->samples, 0);
+        QCOMPARE(finished->reason.size(), ExperimentEvent::kMaxReasonChars);
+        QVERIFY(!ExperimentEvent::parse("{\"event\":\"started\",\"index\":-1}"));
+        QVERIFY(!ExperimentEvent::parse("{\"event\":\"started\",\"index\":1.5}"));
+        QVERIFY(!ExperimentEvent::parse("{\"event\":\"started\",\"index\":1e300}"));
+        QVERIFY(!ExperimentEvent::parse("{\"event\":\"started\"}"));
+        QVERIFY(!ExperimentEvent::parse("{\"event\":\"exploded\",\"index\":0}"));
+        QVERIFY(!ExperimentEvent::parse("not json"));
+        QVERIFY(!ExperimentEvent::parse(QByteArray(ExperimentEvent::kMaxLineBytes + 1, ' ')));
+        QByteArray many = "{\"event\":\"progress\",\"index\":0,\"total_ms\":[";
+        for (int i = 0; i < 200'000; ++i)
+            many += "1,";
+        many += "1]}";
+        const auto capped = ExperimentEvent::parse(many);
+        QVERIFY(capped);
+        QCOMPARE(capped->totalMs.size(), ExperimentEvent::kMaxTotals);
+        const auto throughput = ExperimentEvent::parse("{\"event\":\"throughput\",\"rate_hz\":\"fast\",\"sustainable\":false}");
+        QVERIFY(throughput);
+        QCOMPARE(throughput->rateHz, 0.0); // not a number: nothing said
+        QVERIFY(!throughput->sustainable);
     }
 };
 

@@ -2,6 +2,7 @@
 #include "experimentpage.h"
 
 #include "base/atomicfile.h"
+#include "experiment/experimentevent.h"
 #include "latency/latencyseriesset.h"
 #include "widgets/common/ecdfchart.h"
 
@@ -14,9 +15,6 @@
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -38,8 +36,7 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr int kMaxLogLines = 2000;
-constexpr qsizetype kMaxLineBytes = 4 * 1024 * 1024; ///< a longer line from the child is cut off
-constexpr double kMaxTotalMs = 1e9; ///< a total beyond ±11 days is no measurement (and would overflow ns)
+constexpr qsizetype kMaxLineBytes = ExperimentEvent::kMaxLineBytes; ///< a longer line from the child is cut off
 
 /// The complete lines of a child's output so far; the rest waits in `rest` for its end (a line
 /// longer than any the command writes is not ours and is dropped).
@@ -611,60 +608,60 @@ void ExperimentPage::readErrors()
     }
 }
 
-/// A JSON line of `bridgescope experiment`: a cell started or finished, progress with totals.
+/// A JSON line of `bridgescope experiment`: a cell started or finished, progress with totals
+/// (read and bounded by ExperimentEvent).
 void ExperimentPage::handleLine(const QByteArray& line)
 {
-    const QJsonObject o = QJsonDocument::fromJson(line).object();
-    const QString event = o.value(u"event"_s).toString();
-    const int i = o.value(u"index"_s).toInt(-1);
-    if (event == u"throughput"_s) {
-        m_log->appendPlainText(
-            tr("throughput: %1 Hz, %2 of %3 samples%4")
-                .arg(o.value(u"rate_hz"_s).toDouble())
-                .arg(o.value(u"samples"_s).toDouble())
-                .arg(o.value(u"expected"_s).toDouble())
-                .arg(o.value(u"sustainable"_s).toBool() ? QString() : tr(", not sustained")));
+    const std::optional<ExperimentEvent> e = ExperimentEvent::parse(line);
+    if (!e)
+        return;
+    if (e->kind == ExperimentEvent::Kind::Throughput) {
+        m_log->appendPlainText(tr("throughput: %1 Hz, %2 of %3 samples%4")
+                                   .arg(e->rateHz)
+                                   .arg(e->throughputSamples)
+                                   .arg(e->expected)
+                                   .arg(e->sustainable ? QString() : tr(", not sustained")));
         return;
     }
-    if (i < 0 || i >= m_statuses.size() || o.value(u"cell"_s).toString(m_cells[i].id()) != m_cells[i].id())
+    const int i = e->index;
+    if (i >= m_statuses.size() || (!e->cell.isEmpty() && e->cell != m_cells[i].id()))
         return; // not a cell of this plan
     CellStatus& s = m_statuses[i];
-    if (event == u"started"_s) {
+    switch (e->kind) {
+    case ExperimentEvent::Kind::Started:
         s = CellStatus();
         s.state = CellStatus::Running;
         m_series->clear(seriesName(i)); // a cell done again starts afresh
         m_grid->selectRow(i);
-    } else if (event == u"progress"_s) {
-        s.samples = std::max<qint64>(0, o.value(u"samples"_s).toInteger());
-        for (const QJsonValue v : o.value(u"total_ms"_s).toArray())
-            if (v.isDouble() && std::abs(v.toDouble()) < kMaxTotalMs) // NaN fails too
-                m_series->add(seriesName(i), qint64(v.toDouble() * 1e6));
-        const qint64 remaining = o.value(u"remaining_s"_s).toInteger();
-        m_status->setText(o.value(u"warming_up"_s).toBool()
-                              ? tr("Cell %1 of %2: %3, warming up; about %4 left")
-                                    .arg(i + 1)
-                                    .arg(m_cells.size())
-                                    .arg(m_cells[i].label(), ExperimentPlan::durationText(remaining))
-                              : tr("Cell %1 of %2: %3, %4 of %5 samples; about %6 left")
-                                    .arg(i + 1)
-                                    .arg(m_cells.size())
-                                    .arg(m_cells[i].label())
-                                    .arg(s.samples)
-                                    .arg(o.value(u"of"_s).toInt())
-                                    .arg(ExperimentPlan::durationText(remaining)));
-    } else if (event == u"finished"_s) {
-        s.state = o.value(u"state"_s).toString() == CellStatus::stateName(CellStatus::Complete)
-            ? CellStatus::Complete
-            : CellStatus::Failed;
-        s.samples = std::max<qint64>(0, o.value(u"samples"_s).toInteger());
+        break;
+    case ExperimentEvent::Kind::Progress:
+        s.samples = e->samples;
+        for (double ms : e->totalMs)
+            m_series->add(seriesName(i), qint64(ms * 1e6));
+        m_status->setText(e->warmingUp ? tr("Cell %1 of %2: %3, warming up; about %4 left")
+                                             .arg(i + 1)
+                                             .arg(m_cells.size())
+                                             .arg(m_cells[i].label(), ExperimentPlan::durationText(e->remainingS))
+                                       : tr("Cell %1 of %2: %3, %4 of %5 samples; about %6 left")
+                                             .arg(i + 1)
+                                             .arg(m_cells.size())
+                                             .arg(m_cells[i].label())
+                                             .arg(s.samples)
+                                             .arg(e->of)
+                                             .arg(ExperimentPlan::durationText(e->remainingS)));
+        break;
+    case ExperimentEvent::Kind::Finished:
+        s.state = e->complete ? CellStatus::Complete : CellStatus::Failed;
+        s.samples = e->samples;
         s.run = ExperimentRunner::runPathOf(m_cells[i]); // where the runner puts it, whatever the line says
-        s.reason = o.value(u"reason"_s).toString().left(2000);
+        s.reason = e->reason;
         showCounts();
-    } else {
+        break;
+    case ExperimentEvent::Kind::Throughput:
         return;
     }
     updateRow(i);
-    if (event != u"progress"_s)
+    if (e->kind != ExperimentEvent::Kind::Progress)
         m_grid->resizeColumnsToContents();
 }
 
