@@ -210,7 +210,8 @@ private slots:
         t.start();
         int published = 0;
         for (; published < 30000 && t.elapsed() < 15000; ++published) {
-            QVERIFY(publish(MqttClientWire::typeTopicPrefix() + u"hostile/%1/"_s.arg(published) + tail, type));
+            QVERIFY(
+                publish(MqttClientWire::typeTopicPrefix() + u"hostile/%1/"_s.arg(published) + tail, type));
             if (published % 1000 == 999)
                 QTest::qWait(20);
         }
@@ -227,11 +228,13 @@ private slots:
         QVERIFY2(peak - base < kAnnouncedBudget,
                  qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
         QTRY_VERIFY_WITH_TIMEOUT(
-            plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s), "bridgescope_links_unwatched") > 0
+            plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s), "bridgescope_links_unwatched")
+                    > 0
                 && plainSample(metrics, "bridgescope_mqtt_topics_untracked_total") >= published - 20000,
             30000);
         // 5,000 links watched (as many as fit in the answer are in it, the others counted as omitted).
-        QCOMPARE(metrics.count("bridgescope_link_state{") + plainSample(metrics, "bridgescope_metrics_omitted"),
+        QCOMPARE(metrics.count("bridgescope_link_state{")
+                     + plainSample(metrics, "bridgescope_metrics_omitted"),
                  5000.0);
         // The status line (every 10 s) says it too.
         QByteArray err;

@@ -196,7 +196,8 @@ private slots:
                 batch.push_back(msg(u"%1/"_s.arg(round * 50 + t) + QString(60000, u'n'), "x", false, ns++));
             tree.apply(std::move(batch));
         }
-        QVERIFY2(tree.topicCount() > 100 && tree.topicCount() < 300, qPrintable(QString::number(tree.topicCount())));
+        QVERIFY2(tree.topicCount() > 100 && tree.topicCount() < 300,
+                 qPrintable(QString::number(tree.topicCount())));
         QCOMPARE(tree.untrackedMessages(), quint64(600 - tree.topicCount()));
         QVERIFY(tree.structureBytes() <= tree.structureBudget());
     }
