@@ -1669,6 +1669,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>%1 payloads evicted from the history (budget %2 MiB)</source>
         <translation>%1 Nutzdaten aus dem Verlauf verdrängt (Budget %2 MiB)</translation>
     </message>
+    <message>
+        <source>%1 messages on topics not tracked (budget %2 topics, %3 MiB of names)</source>
+        <translation>%1 Nachrichten auf nicht erfassten Topics (Budget %2 Topics, %3 MiB Namen)</translation>
+    </message>
 </context>
 <context>
     <name>EcdfChart</name>
@@ -7315,6 +7319,14 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     <message>
         <source>; %1 metrics clients dropped</source>
         <translation>; %1 Metrik-Clients getrennt</translation>
+    </message>
+    <message>
+        <source>; %1 messages on topics not tracked (budget %2 topics, %3 MiB of names)</source>
+        <translation>; %1 Nachrichten auf nicht erfassten Topics (Budget %2 Topics, %3 MiB Namen)</translation>
+    </message>
+    <message>
+        <source>; %1 announced links not watched (cap %2)</source>
+        <translation>; %1 angekündigte Links nicht beobachtet (Obergrenze %2)</translation>
     </message>
 </context>
 <context>

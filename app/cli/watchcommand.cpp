@@ -292,7 +292,7 @@ int runWatch(const WatchRequest& request)
     QTimer metricsTimer;
     if (metrics) {
         QObject::connect(&metricsTimer, &QTimer::timeout,
-                         [&] { metrics->update(*monitor, live.mqttTopics()); });
+                         [&] { metrics->update(*monitor, live.mqttTopics(), watch.unwatchedLinks()); });
         metricsTimer.start(250);
     }
     err(Watch::tr("watching %n link(s) of %1; Ctrl+C stops", nullptr, monitor->linkCount())
@@ -322,6 +322,16 @@ int runWatch(const WatchRequest& request)
                 line += Watch::tr("; %1 payloads evicted from the topic history (budget %2 MiB)")
                             .arg(evicted)
                             .arg(live.mqttTopics()->historyBudget() / (1024 * 1024));
+            const MqttTopicTree* topics = live.mqttTopics();
+            if (const quint64 untracked = topics->untrackedMessages())
+                line += Watch::tr("; %1 messages on topics not tracked (budget %2 topics, %3 MiB of names)")
+                            .arg(untracked)
+                            .arg(topics->topicBudget())
+                            .arg(topics->structureBudget() / (1024 * 1024));
+            if (const int unwatched = watch.unwatchedLinks())
+                line += Watch::tr("; %1 announced links not watched (cap %2)")
+                            .arg(unwatched)
+                            .arg(WatchSession::kMaxDiscoveredLinks);
             if (metrics && metrics->droppedClients())
                 line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
             err(line);

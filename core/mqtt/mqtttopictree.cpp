@@ -110,6 +110,49 @@ void MqttTopicTree::setHistoryBudget(qint64 bytes)
     m_historyBudget = std::max<qint64>(0, bytes);
 }
 
+void MqttTopicTree::setTopicBudget(int topics)
+{
+    m_topicBudget = std::max(1, topics);
+}
+
+void MqttTopicTree::setStructureBudget(qint64 bytes)
+{
+    m_structureBudget = std::max<qint64>(0, bytes);
+}
+
+qint64 MqttTopicTree::newTopicCost(const QString& topic) const
+{
+    // Every new level keeps its name and its path (a prefix of the topic): a deep topic costs the
+    // sum of its prefixes, which is what is counted, before anything is made.
+    qint64 cost = 2 * qint64(topic.size()) + 64;
+    // A type announcement keeps its data topic's name and type (with a ROS 1 definition parsed).
+    if (const QString prefix = MqttClientWire::typeTopicPrefix(); topic.startsWith(prefix))
+        cost += 2 * qint64(topic.size() - prefix.size()) + kNodeOverhead;
+    const Node* node = m_root.get();
+    qsizetype start = 0;
+    while (true) {
+        const qsizetype slash = topic.indexOf(u'/', start);
+        const qsizetype end = slash < 0 ? topic.size() : slash;
+        if (node)
+            node = node->byName.value(topic.mid(start, end - start));
+        if (!node)
+            cost += kNodeOverhead + 2 * qint64(end - start) + 2 * qint64(end);
+        if (slash < 0)
+            return cost;
+        start = slash + 1;
+    }
+}
+
+bool MqttTopicTree::admit(qint64 cost)
+{
+    if (m_byTopic.size() + m_sys.size() >= m_topicBudget || m_structureBytes + cost > m_structureBudget) {
+        ++m_untrackedMessages;
+        return false;
+    }
+    m_structureBytes += cost;
+    return true;
+}
+
 void MqttTopicTree::popOldest(Node* n)
 {
     const qint64 cost = n->history.front().payload.size() + kHistoryEntryOverhead;
@@ -157,6 +200,8 @@ void MqttTopicTree::clear()
     m_historyBytes = 0;
     m_historyEntries = 0;
     m_evictedPayloads = 0;
+    m_structureBytes = 0;
+    m_untrackedMessages = 0;
     endResetModel();
     emit brokerStatisticsChanged();
 }
@@ -276,10 +321,18 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
     for (MqttMessage& msg : batch) {
         ++m_totalMessages;
         if (msg.topic.startsWith(u"$SYS/"_s)) {
-            m_sys.insert(msg.topic, QString::fromUtf8(msg.payload));
+            auto sys = m_sys.find(msg.topic);
+            if (sys == m_sys.end()) {
+                if (!admit(2 * qint64(msg.topic.size() + kMaxSysValueBytes) + kNodeOverhead))
+                    continue;
+                sys = m_sys.insert(msg.topic, QString());
+            }
+            *sys = QString::fromUtf8(msg.payload.left(kMaxSysValueBytes));
             sysChanged = true;
             continue;
         }
+        if (!m_byTopic.contains(msg.topic) && !admit(newTopicCost(msg.topic)))
+            continue; // past a budget: counted, not kept
         Node* n = nodeFor(msg.topic, withPending);
         if (!n->isTopic) {
             n->isTopic = true;

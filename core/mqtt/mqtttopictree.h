@@ -19,7 +19,10 @@ class RosTypeRegistry;
 /// Every topic keeps its message and byte counts, rate, last size, retained flag and QoS, the time
 /// of its last message, and a bounded history of payloads (historyDepth() per topic, 16 MiB per
 /// topic, and historyBudget() over all topics: past it the oldest payloads of any topic go first,
-/// counted by evictedPayloads()); every level sums its subtree. Topics
+/// counted by evictedPayloads()); every level sums its subtree. What a broker's clients announce
+/// is bounded too: at most topicBudget() topics, and structureBudget() bytes of levels (their names,
+/// paths and nodes; a name may be as long as MQTT allows). A topic past either is not added, and
+/// its messages are counted by untrackedMessages(); the topics kept go on updating. Topics
 /// that mqtt_client (ROS 1 or ROS 2) announces get their ROS type; stamped ones their one-way
 /// latency. A ROS 1 announcement carries its definition; a ROS 2 one names its type only, which
 /// decodes with the ROS 2 definitions the tree is given (setRos2Registry()). $SYS topics
@@ -64,6 +67,15 @@ public:
     /// What one kept payload costs beside its bytes (its entry and the array's header), counted in the
     /// budget.
     static constexpr qint64 kHistoryEntryOverhead = 64;
+    /// The default of topicBudget(): the topics (and $SYS statistics) the tree keeps.
+    static constexpr int kDefaultTopicBudget = 20'000;
+    /// The default of structureBudget(): the bytes the levels of all topics may take.
+    static constexpr qint64 kDefaultStructureBudget = 64 * 1024 * 1024;
+    /// What one level costs beside its name and path: the node (about 600 bytes), the blocks its
+    /// three deques allocate when made (about 600 bytes each) and its hash entries.
+    static constexpr qint64 kNodeOverhead = 3072;
+    /// A $SYS statistic's value is kept up to this many bytes.
+    static constexpr qsizetype kMaxSysValueBytes = 1024;
 
     /// What is known about one topic (for the detail pane and the discover command).
     struct TopicInfo
@@ -112,6 +124,16 @@ public:
     qint64 historyBytes() const { return m_historyBytes; }
     /// Payloads evicted from the history to keep it within historyBudget().
     quint64 evictedPayloads() const { return m_evictedPayloads; }
+    /// The topics the tree keeps at most (at least 1); a new topic past it is not added.
+    void setTopicBudget(int topics);
+    int topicBudget() const { return m_topicBudget; }
+    /// The bytes the levels may take (names and paths as UTF-16, kNodeOverhead each); a new topic
+    /// whose levels do not fit is not added.
+    void setStructureBudget(qint64 bytes);
+    qint64 structureBudget() const { return m_structureBudget; }
+    qint64 structureBytes() const { return m_structureBytes; }
+    /// Messages on topics not added to keep within topicBudget() and structureBudget().
+    quint64 untrackedMessages() const { return m_untrackedMessages; }
     void apply(std::vector<MqttMessage>&& batch);
     /// Updates rates once a second; `nowNs` is wall-clock time.
     void tick(qint64 nowNs);
@@ -161,6 +183,11 @@ private:
     struct Node;
     struct TypeState;
     Node* nodeFor(const QString& topic, std::vector<Node*>& visibleParentsWithPending);
+    /// What adding the topic would cost the structure budget (its new levels and its entry, and for a
+    /// type announcement its data topic's type).
+    qint64 newTopicCost(const QString& topic) const;
+    /// Whether a new topic (or $SYS statistic) of that cost fits both budgets; counted when not.
+    bool admit(qint64 cost);
     QModelIndex indexOf(const Node* node, int column) const;
     /// Whether the data topic's type changed.
     bool absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
@@ -189,6 +216,10 @@ private:
     qint64 m_historyEntries = 0;
     quint64 m_historyOrder = 0;
     quint64 m_evictedPayloads = 0;
+    int m_topicBudget = kDefaultTopicBudget;
+    qint64 m_structureBudget = kDefaultStructureBudget;
+    qint64 m_structureBytes = 0;
+    quint64 m_untrackedMessages = 0;
     /// Every kept payload's topic and order, oldest first; entries of payloads a topic's own bounds
     /// removed are skipped when met, and swept when they are more than half.
     std::deque<std::pair<Node*, quint64>> m_historyQueue;

@@ -108,7 +108,12 @@ struct WatchEvent
     LinkFigures atStart;
     LinkFigures atEnd;
 
-    double durationSeconds() const { return endNs > 0 ? double(endNs - startNs) / 1e9 : 0; }
+    /// Seconds from start to end (0 while open, or when the end is not after the start), computed
+    /// without overflow whatever the two times are (a run file's or a peer's).
+    double durationSeconds() const
+    {
+        return endNs > 0 && endNs > startNs ? double((static_cast<long double>(endNs) - startNs) / 1e9L) : 0;
+    }
     /// One JSON line's object: {"event": "start"|"end", ...}.
     QJsonObject toJson() const;
     /// As a run file keeps it: the JSON line with the figures at start and (when ended) at end.

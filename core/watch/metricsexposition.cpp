@@ -280,6 +280,14 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
         "MQTT payloads evicted from the topic history to keep it within its budget"};
     static constexpr Family held {"bridgescope_mqtt_history_bytes", "gauge",
                                   "Bytes the MQTT topic history holds (payloads and their bookkeeping)"};
+    static constexpr Family untracked {
+        "bridgescope_mqtt_topics_untracked", "counter",
+        "MQTT messages on topics not added to the topic tree to keep it within its topic and byte budgets"};
+    static constexpr Family unwatched {"bridgescope_links_unwatched", "gauge",
+                                       "Links announced on the broker and not watched, past the cap of 5000"};
+    static constexpr Family announcements {
+        "bridgescope_announcements_dropped", "counter",
+        "Type announcements of new topics past the 10000 a watch keeps, not read"};
     constexpr qsizetype kOwnBytes = 8192; ///< the heads, our own figures and the trailer
     qsizetype budget = kMaxAnswerBytes - kOwnBytes;
     // The bridges first (one sample each), then as many links as fit.
@@ -306,6 +314,9 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
     plain(out, dropped, format, double(droppedClients));
     plain(out, evicted, format, double(s.historyEvicted));
     plain(out, held, format, double(s.historyBytes));
+    plain(out, untracked, format, double(s.untrackedTopicMessages));
+    plain(out, unwatched, format, double(s.unwatchedLinks));
+    plain(out, announcements, format, double(s.droppedAnnouncements));
     if (format == MetricsFormat::OpenMetrics)
         out += "# EOF\n";
     return out;

@@ -38,6 +38,12 @@ struct MetricsSnapshot
     /// The MQTT topic history's budget (MqttTopicTree): payloads evicted to keep within it, bytes held.
     quint64 historyEvicted = 0;
     qint64 historyBytes = 0;
+    /// What peers announced past the budgets: messages on topics the tree did not add
+    /// (MqttTopicTree::untrackedMessages()), announced links not watched
+    /// (WatchSession::kMaxDiscoveredLinks) and announcements past LinkMonitor::kMaxAnnounced.
+    quint64 untrackedTopicMessages = 0;
+    qint64 unwatchedLinks = 0;
+    quint64 droppedAnnouncements = 0;
 };
 
 /// The two exposition formats Prometheus reads.

@@ -53,13 +53,16 @@ quint64 WatchMetrics::droppedClients() const
     return d->server->dropped();
 }
 
-void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics)
+void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int unwatchedLinks)
 {
     auto snapshot = std::make_shared<MetricsSnapshot>();
     if (topics) {
         snapshot->historyEvicted = topics->evictedPayloads();
         snapshot->historyBytes = topics->historyBytes();
+        snapshot->untrackedTopicMessages = topics->untrackedMessages();
     }
+    snapshot->unwatchedLinks = unwatchedLinks;
+    snapshot->droppedAnnouncements = monitor.droppedAnnouncements();
     snapshot->links.reserve(std::size_t(monitor.linkCount()));
     QSet<QString> alive;
     alive.reserve(monitor.linkCount());

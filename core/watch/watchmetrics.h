@@ -28,9 +28,10 @@ public:
     int port() const;
     /// Clients the server closed to make room or to keep its answers' memory budget.
     quint64 droppedClients() const;
-    /// Brings every metric up to date with `monitor` (once a second is plenty), and the topic history's
-    /// budget figures with `topics` when given.
-    void update(LinkMonitor& monitor, const MqttTopicTree* topics = nullptr);
+    /// Brings every metric up to date with `monitor` (once a second is plenty), the topic tree's
+    /// budget figures with `topics` when given, and the announced links not watched (see
+    /// WatchSession::unwatchedLinks()).
+    void update(LinkMonitor& monitor, const MqttTopicTree* topics = nullptr, int unwatchedLinks = 0);
 
 private:
     WatchMetrics();

@@ -81,13 +81,26 @@ void WatchSession::applyLinks()
 
 bool WatchSession::discoverLinks()
 {
-    if (!m_discovering)
+    if (!m_discovering) {
+        m_unwatched = 0;
         return false;
-    QStringList found;
+    }
+    // The links watched stay (while announced), then the newly announced ones in name order, up to
+    // the cap: what a hostile client announces past it is counted, not watched.
     const QHash<QString, AnnouncedType>& announced = m_monitor->announced();
+    QStringList found;
+    for (const QString& topic : std::as_const(m_discovered))
+        if (announced.contains(topic) && !m_configMqttTopics.contains(topic))
+            found << topic;
+    const QSet<QString> watched(found.cbegin(), found.cend());
+    QStringList fresh;
     for (auto it = announced.cbegin(); it != announced.cend(); ++it)
-        if (!m_configMqttTopics.contains(it.key()))
-            found << it.key();
+        if (!m_configMqttTopics.contains(it.key()) && !watched.contains(it.key()))
+            fresh << it.key();
+    fresh.sort();
+    const qsizetype room = std::max<qsizetype>(0, kMaxDiscoveredLinks - found.size());
+    m_unwatched = int(std::max<qsizetype>(0, fresh.size() - room));
+    found += fresh.mid(0, room);
     found.sort();
     if (found == m_discovered)
         return false;

@@ -31,6 +31,12 @@ public:
     /// are watched too, from their MQTT end (on by default).
     void setDiscovering(bool discovering);
     bool isDiscovering() const { return m_discovering; }
+    /// The discovered links watched at most: a broker's clients may announce any number. Those
+    /// watched stay watched while announced; newer ones past it are not watched, counted by
+    /// unwatchedLinks().
+    static constexpr int kMaxDiscoveredLinks = 5'000;
+    /// Announced links not watched to keep within kMaxDiscoveredLinks (as of the last discovery).
+    int unwatchedLinks() const { return m_unwatched; }
     void setRules(const WatchRules& rules) { m_monitor->setRules(rules); }
     /// Works with the measurement of `measure`: every event goes into its run file while it
     /// records (the events open when the recording starts, then each start and end; an event still
@@ -57,5 +63,6 @@ private:
     QList<LinkDef> m_configLinks;
     QSet<QString> m_configMqttTopics;
     QStringList m_discovered; ///< MQTT topics of the discovered links, sorted
+    int m_unwatched = 0;
     bool m_discovering = true;
 };

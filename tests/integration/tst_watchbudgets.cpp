@@ -4,7 +4,9 @@
 // answers of /metrics (labels cut, an answer within MetricsExposition::kMaxAnswerBytes, unsent
 // answers within MetricsServer::kMaxQueuedBytes). Each flood is bounded in count; the watch's peak
 // RSS (VmHWM) must stay under its documented bound, and what was evicted or dropped is counted in
-// its /metrics.
+// its /metrics. What peers announce is bounded too: the topics of the topic tree
+// (MqttTopicTree::kDefaultTopicBudget, kDefaultStructureBudget) and the discovered links
+// (WatchSession::kMaxDiscoveredLinks).
 #include "mqtt/mqttlink.h"
 #include "peakrss.h"
 #include "testservers.h"
@@ -21,6 +23,9 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr qint64 kMiB = 1024 * 1024;
+/// What announced topics may take: the topic tree's levels (64 MiB) and payload history (64 MiB), and
+/// the 5,000 discovered links watched with their windows and metrics series.
+constexpr qint64 kAnnouncedBudget = 64 * kMiB + 64 * kMiB + 64 * kMiB;
 /// What the watch takes with nothing to hold (Qt, roscpp, Fast DDS, Paho; Debug or sanitizer builds
 /// more), measured before each flood; a budget is checked against the growth over it.
 qint64 peakRss(qint64 pid)
@@ -53,10 +58,11 @@ private:
     TestServers m_servers;
     std::unique_ptr<MqttLink> m_mqtt;
 
-    void startWatch(QProcess& watch, quint16 metricsPort)
+    void startWatch(QProcess& watch, quint16 metricsPort,
+                    QProcess::ProcessChannelMode channels = QProcess::ForwardedErrorChannel)
     {
         watch.setProcessEnvironment(m_servers.rosEnvironment());
-        watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        watch.setProcessChannelMode(channels);
         watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
                     {u"watch"_s, u"--broker"_s, m_servers.brokerUrl(), u"--ros-master"_s,
                      m_servers.rosMasterUri(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(metricsPort),
@@ -185,6 +191,57 @@ private slots:
         QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB + PeakRss::kSanitizerSlack,
                  qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
         greedy.clear();
+        stopWatch(watch);
+    }
+
+    /// A client announcing 10,000 made-up links with names of 2,000 characters took the watch from
+    /// 42 to 502 MiB: the topic tree keeps 20,000 topics and 64 MiB of levels, 5,000 announced links
+    /// are watched; the rest is counted, in /metrics and on the status line.
+    void announcedTopicsStayWithinTheirBudgets()
+    {
+        QProcess watch;
+        const quint16 port = TestServers::freePort();
+        startWatch(watch, port, QProcess::SeparateChannels);
+        const qint64 base = peakRss(watch.processId());
+        QVERIFY(base > 0);
+        const QByteArray type = MqttClientWire::encodeType(
+            {u"992ce8a1687cec8c8bd883ec73ca41d1"_s, u"std_msgs/String"_s, u"string data\n"_s, false});
+        const QString tail = QString(1000, u'n');
+        QElapsedTimer t;
+        t.start();
+        int published = 0;
+        for (; published < 30000 && t.elapsed() < 15000; ++published) {
+            QVERIFY(
+                publish(MqttClientWire::typeTopicPrefix() + u"hostile/%1/"_s.arg(published) + tail, type));
+            if (published % 1000 == 999)
+                QTest::qWait(20);
+        }
+        qInfo("%d announcements of 1,000-character topics published in %lld ms", published, t.elapsed());
+        QVERIFY2(published > 20000, qPrintable(QString::number(published)));
+        QTest::qWait(4000); // taken, and the links discovered (once a second)
+        const qint64 peak = peakRss(watch.processId());
+        QByteArray metrics = TestServers::httpGet(port, u"/metrics"_s);
+        const double untracked = plainSample(metrics, "bridgescope_mqtt_topics_untracked_total");
+        const double unwatched = plainSample(metrics, "bridgescope_links_unwatched");
+        qInfo("watch: VmHWM %lld MiB before, %lld MiB after %d announced topics; %.0f messages not tracked, "
+              "%.0f links not watched",
+              base / kMiB, peak / kMiB, published, untracked, unwatched);
+        QVERIFY2(peak - base < kAnnouncedBudget,
+                 qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s), "bridgescope_links_unwatched")
+                    > 0
+                && plainSample(metrics, "bridgescope_mqtt_topics_untracked_total") >= published - 20000,
+            30000);
+        // 5,000 links watched (as many as fit in the answer are in it, the others counted as omitted).
+        QCOMPARE(metrics.count("bridgescope_link_state{")
+                     + plainSample(metrics, "bridgescope_metrics_omitted"),
+                 5000.0);
+        // The status line (every 10 s) says it too.
+        QByteArray err;
+        QTRY_VERIFY_WITH_TIMEOUT((err += watch.readAllStandardError()).contains("topics not tracked")
+                                     && err.contains("announced links not watched"),
+                                 15000);
         stopWatch(watch);
     }
 };

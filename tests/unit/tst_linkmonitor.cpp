@@ -10,6 +10,7 @@
 #include "wire/mqttclientwire.h"
 
 #include <cstring>
+#include <limits>
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QtEndian>
@@ -258,6 +259,25 @@ private slots:
         run(10, true);
         QCOMPARE(m.level(0), LinkLevel::Ok);
         QVERIFY(m.openEvents().isEmpty());
+    }
+
+    /// An event's times may come from a run file or a peer: from INT64_MIN to INT64_MAX the
+    /// duration overflowed to a negative one; now it is computed in long double.
+    void eventDurationDoesNotOverflow()
+    {
+        WatchEvent e;
+        e.startNs = std::numeric_limits<qint64>::min();
+        e.endNs = std::numeric_limits<qint64>::max();
+        QVERIFY2(qFuzzyCompare(e.durationSeconds(), 18446744073.709551615),
+                 qPrintable(QString::number(e.durationSeconds(), 'g', 17)));
+        QCOMPARE(e.toJson().value(u"duration_s"_s).toDouble(), e.durationSeconds());
+        e.startNs = 1'000'000'000;
+        e.endNs = 3'500'000'000;
+        QCOMPARE(e.durationSeconds(), 2.5);
+        e.endNs = 1; // ends before it starts
+        QCOMPARE(e.durationSeconds(), 0.0);
+        e.endNs = 0; // open
+        QCOMPARE(e.durationSeconds(), 0.0);
     }
 
     void lastWillTakesTheBridgeDown()

@@ -141,7 +141,8 @@ private slots:
                 current = family;
             }
         }
-        QCOMPARE(typeOf.size(), 14); // 9 of the links and bridges, 5 of the answer and the history budgets
+        // 9 of the links and bridges, 5 of the answer and the history budgets, 3 of the announced ones
+        QCOMPARE(typeOf.size(), 17);
     }
 
     void theScraperChoosesTheFormat()

@@ -157,6 +157,74 @@ private slots:
         QCOMPARE(tree.evictedPayloads(), quint64(0));
     }
 
+    /// A client publishing to 10,000 made-up topics cost a watch 180 MiB, with long names 460 MiB:
+    /// the tree keeps at most 20,000 topics and 64 MiB of levels; past them a new topic is not
+    /// added, its messages are counted, and the topics kept go on updating.
+    void topicsStayWithinTheirBudgets()
+    {
+        MqttTopicTree tree;
+        QCOMPARE(tree.topicBudget(), 20000);
+        QCOMPARE(tree.structureBudget(), qint64(64) * 1024 * 1024);
+        qint64 ns = 1;
+        for (int round = 0; round < 5; ++round) {
+            std::vector<MqttMessage> batch;
+            for (int t = 0; t < 5000; ++t)
+                batch.push_back(msg(u"made/up/%1"_s.arg(round * 5000 + t), "x", false, ns++));
+            tree.apply(std::move(batch));
+        }
+        QCOMPARE(tree.topicCount(), 20000);
+        QCOMPARE(tree.untrackedMessages(), quint64(5000));
+        QVERIFY(tree.structureBytes() <= tree.structureBudget());
+        std::vector<MqttMessage> more;
+        more.push_back(msg(u"made/up/0"_s, "y", false, ns++)); // kept: updates
+        more.push_back(msg(u"made/up/new"_s, "z", false, ns++)); // not kept
+        more.push_back(msg(u"$SYS/broker/uptime"_s, "1 s", false, ns++)); // a topic too
+        tree.apply(std::move(more));
+        QCOMPARE(tree.info(u"made/up/0"_s)->messages, quint64(2));
+        QVERIFY(!tree.info(u"made/up/new"_s));
+        QVERIFY(tree.brokerStatistics().isEmpty());
+        QCOMPARE(tree.untrackedMessages(), quint64(5002));
+        QCOMPARE(tree.totalMessages(), quint64(25003));
+        tree.clear();
+        QCOMPARE(tree.untrackedMessages(), quint64(0));
+        QCOMPARE(tree.structureBytes(), qint64(0));
+
+        // Names as long as MQTT allows are kept, and paid for: 600 of 60,000 characters do not fit.
+        for (int round = 0; round < 12; ++round) {
+            std::vector<MqttMessage> batch;
+            for (int t = 0; t < 50; ++t)
+                batch.push_back(msg(u"%1/"_s.arg(round * 50 + t) + QString(60000, u'n'), "x", false, ns++));
+            tree.apply(std::move(batch));
+        }
+        QVERIFY2(tree.topicCount() > 100 && tree.topicCount() < 300,
+                 qPrintable(QString::number(tree.topicCount())));
+        QCOMPARE(tree.untrackedMessages(), quint64(600 - tree.topicCount()));
+        QVERIFY(tree.structureBytes() <= tree.structureBudget());
+    }
+
+    /// A deep topic keeps every prefix as a level's path: it pays for all of them, counted before
+    /// anything is made; a model viewing the tree sees only the topics that fit.
+    void deepTopicsPayForEveryLevel()
+    {
+        MqttTopicTree tree;
+        QAbstractItemModelTester tester(&tree, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        tree.setStructureBudget(1024 * 1024);
+        tree.setTopicBudget(10);
+        QString deep;
+        for (int i = 0; i < 2000; ++i)
+            deep += u"l/"_s;
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(deep + u"end"_s, "x"));
+        for (int t = 0; t < 20; ++t)
+            batch.push_back(msg(u"a/%1"_s.arg(t), "x"));
+        tree.apply(std::move(batch));
+        QCOMPARE(tree.topicCount(), 10);
+        QCOMPARE(tree.untrackedMessages(), quint64(11));
+        QCOMPARE(tree.rowCount(), 1); // "a" only
+        QCOMPARE(tree.rowCount(tree.index(0, 0)), 10);
+        QVERIFY(tree.structureBytes() <= 1024 * 1024);
+    }
+
     void learnsTypesFromMqttClientAnnouncements()
     {
         MqttTopicTree tree;

@@ -591,5 +591,10 @@ void DiscoverPage::updateMqttStatus()
         parts << tr("%1 payloads evicted from the history (budget %2 MiB)")
                      .arg(evicted)
                      .arg(t->historyBudget() / (1024 * 1024));
+    if (const quint64 untracked = t->untrackedMessages())
+        parts << tr("%1 messages on topics not tracked (budget %2 topics, %3 MiB of names)")
+                     .arg(untracked)
+                     .arg(t->topicBudget())
+                     .arg(t->structureBudget() / (1024 * 1024));
     m_counters->setText(parts.join(u" · "_s));
 }
