@@ -226,7 +226,7 @@ private slots:
         qInfo("watch: VmHWM %lld MiB before, %lld MiB after %d announced topics; %.0f messages not tracked, "
               "%.0f links not watched",
               base / kMiB, peak / kMiB, published, untracked, unwatched);
-        QVERIFY2(peak - base < kAnnouncedBudget + PeakRss::kSanitizerSlack,
+        QVERIFY2(peak - base < kAnnouncedBudget * PeakRss::kSanitizerFactor,
                  qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
         QTRY_VERIFY_WITH_TIMEOUT(
             plainSample(metrics = TestServers::httpGet(port, u"/metrics"_s), "bridgescope_links_unwatched")
