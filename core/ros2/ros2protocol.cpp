@@ -185,12 +185,14 @@ std::optional<StartRequest> decodeStart(const QByteArray& body)
 {
     Reader r(body);
     StartRequest s;
-    s.options.domain = int(r.u32());
+    // compared as read, before they become ints (0xffffffff would be the domain -1)
+    const quint32 domain = r.u32();
     const quint8 local = r.u8();
-    s.graphIntervalMs = int(r.u32());
-    if (!r.done() || local > 1 || s.options.domain > Ros2Options::kMaxDomain || s.graphIntervalMs < 1
-        || s.graphIntervalMs > 3'600'000)
+    const quint32 interval = r.u32();
+    if (!r.done() || local > 1 || domain > quint32(Ros2Options::kMaxDomain) || interval < 1 || interval > 3'600'000)
         return std::nullopt;
+    s.options.domain = int(domain);
+    s.graphIntervalMs = int(interval);
     s.options.localhostOnly = local == 1;
     return s;
 }

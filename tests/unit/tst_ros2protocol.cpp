@@ -196,6 +196,9 @@ private slots:
     {
         QVERIFY(!decodeStart(encodeStart({{Ros2Options::kMaxDomain + 1, false}, 250})));
         QVERIFY(!decodeStart(encodeStart({{0, false}, 0})));
+        // found by fuzz_ros2frames: a domain of 0xffffffff read as the int -1 passed the check
+        QVERIFY(!decodeStart(encodeStart({{-1, false}, 250})));
+        QVERIFY(!decodeStart(encodeStart({{0, false}, -5})));
         Ros2Graph g = sampleGraph();
         g.topics[0].publishers[0].gid = "short";
         QVERIFY(!decodeGraph(encodeGraph({g, 0})));
