@@ -13,7 +13,6 @@
 #include "wire/mqttclientwire.h"
 
 #include <QElapsedTimer>
-#include <QFile>
 #include <QProcess>
 #include <QTcpSocket>
 #include <QTest>
@@ -26,19 +25,6 @@ constexpr qint64 kMiB = 1024 * 1024;
 /// What announced topics may take: the topic tree's levels (64 MiB) and payload history (64 MiB), and
 /// the 5,000 discovered links watched with their windows and metrics series.
 constexpr qint64 kAnnouncedBudget = 64 * kMiB + 64 * kMiB + 64 * kMiB;
-/// What the watch takes with nothing to hold (Qt, roscpp, Fast DDS, Paho; Debug or sanitizer builds
-/// more), measured before each flood; a budget is checked against the growth over it.
-qint64 peakRss(qint64 pid)
-{
-    QFile f(u"/proc/%1/status"_s.arg(pid));
-    if (!f.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray& line : f.readAll().split('\n'))
-        if (line.startsWith("VmHWM:"))
-            return line.mid(6).trimmed().split(' ').front().toLongLong() * 1024;
-    return -1;
-}
-
 /// A sample without labels from an exposition; NaN when absent.
 double plainSample(const QByteArray& metrics, const QByteArray& name)
 {
@@ -111,7 +97,7 @@ private slots:
         QProcess watch;
         const quint16 port = TestServers::freePort();
         startWatch(watch, port);
-        const qint64 base = peakRss(watch.processId());
+        const qint64 base = PeakRss::of(watch.processId());
         QVERIFY(base > 0);
         const QByteArray payload(400 * 1000, 'h');
         QElapsedTimer t;
@@ -129,7 +115,7 @@ private slots:
               t.elapsed());
         const double held = plainSample(metrics, "bridgescope_mqtt_history_bytes");
         QVERIFY2(held > 32 * kMiB && held <= 64 * kMiB, qPrintable(QString::number(held)));
-        const qint64 peak = peakRss(watch.processId());
+        const qint64 peak = PeakRss::of(watch.processId());
         qInfo("watch: VmHWM %lld MiB before the flood, %lld MiB after 200 MB of payloads", base / kMiB,
               peak / kMiB);
         QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB + PeakRss::kSanitizerSlack,
@@ -165,7 +151,7 @@ private slots:
         QVERIFY(!metrics.contains(tail.left(300).toUtf8())); // cut
         QVERIFY(metrics.contains("\xe2\x80\xa6")); // and marked
         QVERIFY(plainSample(metrics, "bridgescope_metrics_omitted") > 0);
-        const qint64 base = peakRss(watch.processId());
+        const qint64 base = PeakRss::of(watch.processId());
 
         std::vector<std::unique_ptr<QTcpSocket>> greedy;
         for (int i = 0; i < 64; ++i) {
@@ -185,7 +171,7 @@ private slots:
                                              "bridgescope_metrics_dropped_clients_total")
                                      > 0,
                                  10000);
-        const qint64 peak = peakRss(watch.processId());
+        const qint64 peak = PeakRss::of(watch.processId());
         qInfo("watch: VmHWM %lld MiB with 10,000 hostile links, %lld MiB after 64 clients that do not read",
               base / kMiB, peak / kMiB);
         QVERIFY2(peak - base < 64 * kMiB + 64 * kMiB + PeakRss::kSanitizerSlack,
@@ -202,7 +188,7 @@ private slots:
         QProcess watch;
         const quint16 port = TestServers::freePort();
         startWatch(watch, port, QProcess::SeparateChannels);
-        const qint64 base = peakRss(watch.processId());
+        const qint64 base = PeakRss::of(watch.processId());
         QVERIFY(base > 0);
         const QByteArray type = MqttClientWire::encodeType(
             {u"992ce8a1687cec8c8bd883ec73ca41d1"_s, u"std_msgs/String"_s, u"string data\n"_s, false});
@@ -219,7 +205,7 @@ private slots:
         qInfo("%d announcements of 1,000-character topics published in %lld ms", published, t.elapsed());
         QVERIFY2(published > 20000, qPrintable(QString::number(published)));
         QTest::qWait(4000); // taken, and the links discovered (once a second)
-        const qint64 peak = peakRss(watch.processId());
+        const qint64 peak = PeakRss::of(watch.processId());
         QByteArray metrics = TestServers::httpGet(port, u"/metrics"_s);
         const double untracked = plainSample(metrics, "bridgescope_mqtt_topics_untracked_total");
         const double unwatched = plainSample(metrics, "bridgescope_links_unwatched");
