@@ -251,6 +251,9 @@ struct Heard
     QString ros2Error;
 };
 
+/// How long discover waits for the DDS process to join the domain before it starts counting anyway.
+constexpr int kJoinWaitMs = 10'000;
+
 /// Listens to the master and the broker for the time asked for.
 void listen(const DiscoverRequest& request, Heard* heard)
 {
@@ -272,8 +275,25 @@ void listen(const DiscoverRequest& request, Heard* heard)
     QObject::connect(&drain, &QTimer::timeout,
                      [heard] { heard->tree.apply(heard->connection.takeMessages()); });
     drain.start(33);
-    QTimer::singleShot(int(request.seconds * 1000), QCoreApplication::instance(),
-                       [] { QCoreApplication::exit(ExitOk); });
+    // The time asked for is time listened: with ROS 2 it counts from when the DDS process is on the
+    // domain (or said it cannot be), which a loaded machine can delay by seconds; at most
+    // kJoinWaitMs is waited for that.
+    QTimer listened;
+    listened.setSingleShot(true);
+    listened.setInterval(int(request.seconds * 1000));
+    QObject::connect(&listened, &QTimer::timeout, [] { QCoreApplication::exit(ExitOk); });
+    if (request.ros2 && heard->ros2Error.isEmpty()) {
+        QObject::connect(&heard->ros2, &Ros2Participant::joined, &listened, [&listened] {
+            if (!listened.isActive())
+                listened.start();
+        });
+        QTimer::singleShot(kJoinWaitMs, &listened, [&listened] {
+            if (!listened.isActive())
+                listened.start();
+        });
+    } else {
+        listened.start();
+    }
     QCoreApplication::exec();
     heard->tree.apply(heard->connection.takeMessages());
     if (heard->ros2Error.isEmpty())

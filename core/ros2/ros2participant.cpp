@@ -245,7 +245,10 @@ bool Ros2Participant::handle(const Ros2Protocol::Frame& f)
     case Kind::Heartbeat:
         return f.body.isEmpty();
     case Kind::Started:
-        return f.body.isEmpty();
+        if (!f.body.isEmpty())
+            return false;
+        emit joined(true);
+        return true;
     case Kind::StartFailed: {
         const auto why = Ros2Protocol::decodeStrings(f.body, 1);
         if (!why)
@@ -253,6 +256,7 @@ bool Ros2Participant::handle(const Ros2Protocol::Frame& f)
         m_error = why->first().left(1000);
         qCWarning(lcRos2).noquote() << "ROS 2 participant not made:" << m_error;
         emit graphChanged(m_graph);
+        emit joined(false);
         return true;
     }
     case Kind::Graph: {

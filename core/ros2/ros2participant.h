@@ -105,6 +105,9 @@ signals:
     void monitorFailed(const QString& topic, const QString& why);
     /// The child ended without being asked to and will be started again.
     void restarted(const QString& why);
+    /// The participant is on the domain (after start() and after each restart), or could not be
+    /// made there (`ok` false, lastError() says why).
+    void joined(bool ok);
 
 private:
     struct Watched

@@ -14,6 +14,7 @@
 #include <csignal>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -207,7 +208,7 @@ private slots:
                                 u"--seconds"_s,
                                 u"3"_s};
         const Run r = bridgescope(args + QStringList {u"--json"_s});
-        QCOMPARE(r.exit, 0);
+        QVERIFY2(r.exit == 0, qPrintable(r.err));
         const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QVERIFY(!doc.contains(u"ros"_s)); // ROS 1 not asked for
         const QJsonObject ros2 = doc.value(u"ros2"_s).toObject();
@@ -241,6 +242,29 @@ private slots:
         // bad values are usage errors
         QCOMPARE(bridgescope({u"discover"_s, u"--ros"_s, u"3"_s}).exit, 2);
         QCOMPARE(bridgescope({u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, u"300"_s}).exit, 2);
+    }
+
+    // --seconds is time listened: a DDS process that takes 3 s to start (a loaded machine, a cold
+    // disk) still gets the whole second to hear the talker
+    void discoverListensOnceTheDdsProcessJoined()
+    {
+        const int domain = Ros2Peer::freeDomain(61, 120);
+        Ros2Peer talker(domain, {u"--node"_s, u"/lab/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:10"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTemporaryDir dir;
+        const QString dds = QFileInfo(QStringLiteral(BRIDGESCOPE_BINARY)).dir().filePath(u"bridgescope-dds"_s);
+        const QString slow = writeFile(dir, u"slow-dds"_s, "#!/bin/sh\nsleep 3\nexec '" + dds.toUtf8() + "' \"$@\"\n");
+        QFile::setPermissions(slow, QFileDevice::ReadOwner | QFileDevice::ExeOwner);
+        qputenv("BRIDGESCOPE_DDS", slow.toUtf8());
+        const Run r = bridgescope({u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain),
+                                   u"--ros-localhost-only"_s, u"--broker"_s,
+                                   u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()), u"--seconds"_s, u"1"_s,
+                                   u"--json"_s});
+        qunsetenv("BRIDGESCOPE_DDS");
+        QVERIFY2(r.exit == 0, qPrintable(r.err));
+        QVERIFY2(r.ms >= 3800, qPrintable(QString::number(r.ms)));
+        const QJsonObject ros2 = QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"ros2"_s).toObject();
+        QCOMPARE(ros2.value(u"topics"_s).toArray().size(), 1);
     }
 
     void discoverFailsWhenNothingAnswers()
