@@ -1818,6 +1818,18 @@ Exit status: 0 every cell complete, 1 a cell failed, 2 bad options or plan, 130 
         <translation>Führt einen Experimentplan unbeaufsichtigt aus: jede Zelle seiner Matrix (Nutzlast, Rate, QoS, TLS, Ankündigung, Warteschlangenlänge, Bridge-Implementierung, Streckenprofil) in einem eigenen Labor, aufgezeichnet als Messlauf in DIR. Fortschritt auf der Standardfehlerausgabe; auf der Standardausgabe eine JSON-Zeile je begonnener und beendeter Zelle und jede Sekunde eine Fortschrittszeile mit den Gesamtlatenzen (ms) der Proben seit der letzten; Strg+C hält nach dem Aufräumen an, --resume macht weiter. bridgescope report DIR erstellt die Tabellen.
 Rückgabewert: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsche Optionen oder falscher Plan, 130 angehalten.</translation>
     </message>
+    <message>
+        <source>--broker and --ros-master go together, unless the plan&apos;s servers give the other</source>
+        <translation>--broker und --ros-master gehören zusammen, außer die Server des Plans geben das andere an</translation>
+    </message>
+    <message>
+        <source>Run every cell on this broker instead of the plan&apos;s servers; it may carry a user and password, which no file, log or command line of a child gets.</source>
+        <translation>Jede Zelle auf diesem Broker statt auf den Servern des Plans ausführen; er darf Benutzer und Passwort enthalten, die keine Datei, kein Log und keine Befehlszeile eines Kindprozesses erhält.</translation>
+    </message>
+    <message>
+        <source>The ROS master that goes with --broker (default: the plan&apos;s).</source>
+        <translation>Der ROS-Master zu --broker (Vorgabe: der des Plans).</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentPage</name>

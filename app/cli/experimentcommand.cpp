@@ -4,6 +4,7 @@
 #include "app/cli/clioutput.h"
 #include "experiment/experimentrunner.h"
 #include "latency/rundata.h"
+#include "mqtt/mqttprofile.h"
 
 #include <cmath>
 #include <QCommandLineParser>
@@ -38,6 +39,28 @@ struct ExperimentRequest
     bool dryRun = false;
 };
 
+/// --broker and --ros-master instead of the plan's servers (a plan holds no credentials: it is
+/// copied next to its runs; the command line may, and main() hides them from ps).
+bool overrideServers(const QString& broker, const QString& master, ExperimentPlan* plan)
+{
+    if (broker.isEmpty() && master.isEmpty())
+        return true;
+    const QString brokerUrl = broker.isEmpty() ? plan->brokerUrl : broker;
+    const QString masterUri = master.isEmpty() ? plan->rosMasterUri : master;
+    if (brokerUrl.isEmpty() || masterUri.isEmpty()) {
+        err(Experiment::tr("--broker and --ros-master go together, unless the plan's servers give the other"));
+        return false;
+    }
+    QString why;
+    if (!MqttProfile::fromUrl(brokerUrl).validate(&why)) {
+        err(why);
+        return false;
+    }
+    plan->brokerUrl = brokerUrl;
+    plan->rosMasterUri = masterUri;
+    return true;
+}
+
 int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
 {
     QCommandLineParser parser;
@@ -50,7 +73,15 @@ int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
                        "cut off and those that failed."));
     const QCommandLineOption dryRun(
         u"dry-run"_s, Experiment::tr("List the cells and the time they will take; run nothing."));
-    parser.addOptions({output, resume, dryRun});
+    const QCommandLineOption broker(
+        u"broker"_s,
+        Experiment::tr("Run every cell on this broker instead of the plan's servers; it may carry a user "
+                       "and password, which no file, log or command line of a child gets."),
+        u"URL"_s);
+    const QCommandLineOption master(
+        u"ros-master"_s, Experiment::tr("The ROS master that goes with --broker (default: the plan's)."),
+        u"URI"_s);
+    parser.addOptions({output, resume, dryRun, broker, master});
     parser.addPositionalArgument(u"PLAN"_s, Experiment::tr("The experiment plan (docs/formats.md)."),
                                  u"PLAN.yaml"_s);
     QStringList args = arguments;
@@ -88,6 +119,8 @@ int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
     }
     if (plan->name.isEmpty())
         plan->name = QFileInfo(path).completeBaseName();
+    if (!overrideServers(parser.value(broker), parser.value(master), &*plan))
+        return ExitUsage;
     request->plan = *plan;
     return -1;
 }

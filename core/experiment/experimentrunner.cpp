@@ -3,6 +3,7 @@
 
 #include "base/atomicfile.h"
 #include "base/logging.h"
+#include "base/secrets.h"
 #include "demo/demolab.h"
 #include "experiment/linkrelay.h"
 #include "latency/latencyengine.h"
@@ -273,7 +274,8 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
     if (!c.lab.startServers(o, why))
         return false;
     if (!s.link.isNone()) {
-        const QUrl broker(c.lab.brokerUrl());
+        // host and port without the user info: a password may hold what QUrl refuses
+        const QUrl broker(Secrets::urlWithoutCredentials(c.lab.brokerUrl()));
         const quint16 port = quint16(broker.port(1883));
         c.vehicleRelay = LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 1);
         c.cloudRelay = c.vehicleRelay

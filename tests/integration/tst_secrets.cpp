@@ -11,6 +11,7 @@
 #include <QDirIterator>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTest>
 #include <sys/stat.h>
@@ -94,6 +95,65 @@ private:
         if (perms)
             f.setPermissions(perms);
         return path;
+    }
+
+    /// What ps showed while a command ran: every process whose command line held the password.
+    struct PsScan
+    {
+        QStringList seen;
+        int children = 0; ///< processes seen that were handed a broker through a pipe (--broker-fd)
+        bool ownHidden = false; ///< the command's own line read, with its URL's user info hidden
+        int exit = -1;
+        QString err;
+    };
+
+    /// Starts bridgescope with `args` and reads every process's command line every 250 ms for
+    /// `scanMs` (as ps -eo args does), then waits for it to end. The command's own line is read
+    /// only once it is `ownAfterMs` old (it hides its password first thing in main(), but the
+    /// kernel shows argv from exec on) or has children.
+    PsScan runAndScan(const QStringList& args, int scanMs, int ownAfterMs = 1500)
+    {
+        QProcess p;
+        QProcessEnvironment env = m_servers.rosEnvironment();
+        env.insert(u"HOME"_s, m_home);
+        env.insert(u"TMPDIR"_s, m_home + u"/tmp"_s);
+        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
+        PsScan scan;
+        if (!p.waitForStarted())
+            return scan;
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < scanMs && p.state() == QProcess::Running) {
+            QTest::qWait(250);
+            const bool ownToo = scan.children > 0 || clock.elapsed() >= ownAfterMs;
+            QDirIterator proc(u"/proc"_s, QDir::Dirs | QDir::NoDotAndDotDot);
+            while (proc.hasNext()) {
+                const QString dir = proc.next();
+                bool isPid = false;
+                const qint64 pid = QFileInfo(dir).fileName().toLongLong(&isPid);
+                if (!isPid || (pid == p.processId() && !ownToo))
+                    continue;
+                QFile cmdline(dir + u"/cmdline"_s);
+                if (!cmdline.open(QIODevice::ReadOnly))
+                    continue;
+                const QByteArray line = cmdline.readAll();
+                if (pid == p.processId())
+                    scan.ownHidden = scan.ownHidden || line.contains("tcp://***");
+                if (line.contains("--broker-fd"))
+                    ++scan.children;
+                if (line.contains(kPassword.toUtf8()))
+                    scan.seen << QString::fromUtf8(QByteArray(line).replace('\0', ' '));
+            }
+        }
+        if (!p.waitForFinished(120000))
+            p.kill();
+        p.waitForFinished();
+        scan.exit = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+        scan.err = QString::fromUtf8(p.readAllStandardError());
+        m_printed << scan.err << QString::fromUtf8(p.readAllStandardOutput());
+        return scan;
     }
 
 private slots:
@@ -292,54 +352,48 @@ private slots:
     }
 
     // Issue 31: demo started its bridges with --broker URL, password and all, on their command
-    // lines, which every user reads in ps. Now the URL goes through a pipe, and the demo hides the
-    // user info of the URL typed on its own command line once it has read it (before it starts
-    // anything): no process has the password in its command line.
+    // lines, which every user reads in ps. Now the URL goes through a pipe, and the commands hide
+    // the user info of the URL typed on their own command line once they have read it (before
+    // they start anything): no process has the password in its command line.
     void demoChildrenNeverSeeThePassword()
     {
-        QProcess demo;
-        QProcessEnvironment env = m_servers.rosEnvironment();
-        env.insert(u"HOME"_s, m_home);
-        env.insert(u"TMPDIR"_s, m_home + u"/tmp"_s);
-        demo.setProcessEnvironment(env);
-        demo.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                   {u"demo"_s, u"--broker"_s, urlWithPassword(), u"--ros-master"_s, m_servers.rosMasterUri(),
-                    u"--seconds"_s, u"8"_s});
-        QVERIFY(demo.waitForStarted());
-        QStringList seen;
-        int children = 0;
-        bool demoSeen = false; ///< its own command line read, with its user info hidden
-        QElapsedTimer clock;
-        clock.start();
-        while (clock.elapsed() < 6000 && demo.state() == QProcess::Running) {
-            QTest::qWait(250);
-            QDirIterator proc(u"/proc"_s, QDir::Dirs | QDir::NoDotAndDotDot);
-            while (proc.hasNext()) {
-                const QString dir = proc.next();
-                bool isPid = false;
-                const qint64 pid = QFileInfo(dir).fileName().toLongLong(&isPid);
-                // The demo's own, once its children run (it hides the password before it starts them).
-                if (!isPid || (pid == demo.processId() && children == 0))
-                    continue;
-                QFile cmdline(dir + u"/cmdline"_s);
-                if (!cmdline.open(QIODevice::ReadOnly))
-                    continue;
-                const QByteArray args = cmdline.readAll();
-                if (pid == demo.processId())
-                    demoSeen = demoSeen || args.contains("tcp://***");
-                if (args.contains("--broker-fd"))
-                    ++children;
-                if (args.contains(kPassword.toUtf8()))
-                    seen << QString::fromUtf8(QByteArray(args).replace('\0', ' '));
-            }
-        }
-        QVERIFY2(demo.waitForFinished(30000), "the demo did not stop");
-        const QString err = QString::fromUtf8(demo.readAllStandardError());
-        m_printed << err << QString::fromUtf8(demo.readAllStandardOutput());
-        QVERIFY2(seen.isEmpty(), qPrintable(seen.join(u'\n')));
-        QVERIFY2(children > 0, qPrintable(err)); // the bridges were seen, given the pipe
-        QVERIFY(demoSeen);
-        QVERIFY2(demo.exitCode() == 0, qPrintable(err)); // they connected with the credentials: samples
+        const PsScan s = runAndScan({u"demo"_s, u"--broker"_s, urlWithPassword(), u"--ros-master"_s,
+                                     m_servers.rosMasterUri(), u"--seconds"_s, u"8"_s},
+                                    6000);
+        QVERIFY2(s.seen.isEmpty(), qPrintable(s.seen.join(u'\n')));
+        QVERIFY2(s.children > 0, qPrintable(s.err)); // the bridges were seen, given the pipe
+        QVERIFY(s.ownHidden);
+        QVERIFY2(s.exit == 0, qPrintable(s.err)); // they connected with the credentials: samples
+    }
+
+    // watch: its own command line, for the hours it runs
+    void watchNeverShowsThePassword()
+    {
+        QVERIFY(publish(m_servers, u"lab/watched"_s, u"1"_s));
+        const PsScan s = runAndScan({u"watch"_s, u"--broker"_s, urlWithPassword(), u"--ros-master"_s,
+                                     m_servers.rosMasterUri(), u"--seconds"_s, u"4"_s},
+                                    3500, 1000);
+        QVERIFY2(s.seen.isEmpty(), qPrintable(s.seen.join(u'\n')));
+        QVERIFY(s.ownHidden);
+        QVERIFY2(s.exit == 0 && !s.err.contains(u"cannot be reached"_s), qPrintable(s.err)); // it connected
+    }
+
+    // experiment --broker: the plan holds no credentials (it is copied beside the runs); the
+    // command line may, and neither the experiment nor its bridges show them
+    void experimentNeverShowsThePassword()
+    {
+        const QString plan = writeFile(u"plan.yaml"_s, "samples: 5\nwarmup: 0\ntimeout_s: 60\n");
+        const QString dir = m_home + u"/out/experiment"_s;
+        const PsScan s = runAndScan({u"experiment"_s, plan, u"-o"_s, dir, u"--broker"_s, urlWithPassword(),
+                                     u"--ros-master"_s, m_servers.rosMasterUri()},
+                                    12000);
+        QVERIFY2(s.seen.isEmpty(), qPrintable(s.seen.join(u'\n')));
+        QVERIFY2(s.children > 0, qPrintable(s.err));
+        QVERIFY(s.ownHidden);
+        QVERIFY2(s.exit == 0, qPrintable(s.err)); // the cell completed: the bridges had the credentials
+        // and none of its files holds them (noCredentialInAnyFileOrLog searches the whole home later)
+        QVERIFY(QFileInfo::exists(dir + u"/plan.yaml"_s));
+        QCOMPARE(bridgescope({u"experiment"_s, plan, u"-o"_s, dir, u"--broker"_s, u"tcp://x:y@"_s}).exit, 2);
     }
 
     // The commands with a password in --broker and in a config; none of it may be written down.
