@@ -210,54 +210,59 @@ int main(int argc, char** argv)
                    u"ratio bridges / probe %1"_s.arg(probeMed > 0 ? bMed / probeMed : 0, 0, 'f', 2));
         Bench::row(u"%1 MB ratio bridges / broker only (median)"_s.arg(mb), pMed > 0 ? bMed / pMed : 0,
                    u"bridges add %1 ms"_s.arg(bMed - pMed, 0, 'f', 2));
+        if (size == 180'000)
+            Bench::gate("bridge_018mb_vs_broker_only", pMed > 0 ? bMed / pMed : 0);
     }
-    // Throughput at 0.18 MB: raise the rate by 1.5x per one-second step, on each path alone, until
-    // more than 1 % is lost or the median exceeds 10x the first step's (at least 10 ms).
-    std::printf("\nHighest sustainable rate at 0.18 MB (1 s steps, x1.5 from 50 Hz, <= 1 %% lost, median <= "
-                "10x)\n\n");
-    Bench::header("MB/s");
-    const int size = 180'000;
-    const auto sweep = [&](bool bridges) {
-        Collector& c = bridges ? viaBridges : viaBroker;
-        double best = 0;
-        double first = 0;
-        for (double hz = 50; hz <= 5000; hz *= 1.5) {
-            {
-                std::lock_guard<std::mutex> lock(c.mutex);
-                c.ms.clear();
+    // BENCH_SWEEP=0: the gate's short run, the latencies only
+    if (Bench::envInt("BENCH_SWEEP", 1) != 0) {
+        // Throughput at 0.18 MB: raise the rate by 1.5x per one-second step, on each path alone, until
+        // more than 1 % is lost or the median exceeds 10x the first step's (at least 10 ms).
+        std::printf("\nHighest sustainable rate at 0.18 MB (1 s steps, x1.5 from 50 Hz, <= 1 %% lost, median <= "
+                    "10x)\n\n");
+        Bench::header("MB/s");
+        const int size = 180'000;
+        const auto sweep = [&](bool bridges) {
+            Collector& c = bridges ? viaBridges : viaBroker;
+            double best = 0;
+            double first = 0;
+            for (double hz = 50; hz <= 5000; hz *= 1.5) {
+                {
+                    std::lock_guard<std::mutex> lock(c.mutex);
+                    c.ms.clear();
+                }
+                const int n = int(hz);
+                const qint64 period = qint64(1e9 / hz);
+                qint64 next = wallClockNs();
+                for (int i = 0; i < n; ++i) {
+                    send(bridges, size);
+                    next += period;
+                    sleepUntil(next);
+                }
+                QThread::msleep(500);
+                std::vector<double> got;
+                {
+                    std::lock_guard<std::mutex> lock(c.mutex);
+                    got = c.ms;
+                }
+                const double median = Bench::percentile(got, 0.5);
+                if (first == 0)
+                    first = std::max(median, 1.0);
+                const bool ok = double(got.size()) >= 0.99 * n && median <= std::max(10 * first, 10.0);
+                if (!ok)
+                    break;
+                best = hz;
             }
-            const int n = int(hz);
-            const qint64 period = qint64(1e9 / hz);
-            qint64 next = wallClockNs();
-            for (int i = 0; i < n; ++i) {
-                send(bridges, size);
-                next += period;
-                sleepUntil(next);
-            }
-            QThread::msleep(500);
-            std::vector<double> got;
-            {
-                std::lock_guard<std::mutex> lock(c.mutex);
-                got = c.ms;
-            }
-            const double median = Bench::percentile(got, 0.5);
-            if (first == 0)
-                first = std::max(median, 1.0);
-            const bool ok = double(got.size()) >= 0.99 * n && median <= std::max(10 * first, 10.0);
-            if (!ok)
-                break;
-            best = hz;
-        }
-        return best;
-    };
-    const double bridgeHz = sweep(true);
-    QThread::msleep(1000);
-    const double brokerHz = sweep(false);
-    Bench::row(u"0.18 MB through two bridges (ROS->MQTT->ROS)"_s, bridgeHz * size / 1e6,
-               u"%1 Hz"_s.arg(bridgeHz, 0, 'f', 0));
-    Bench::row(u"0.18 MB broker only (publish, receive back)"_s, brokerHz * size / 1e6,
-               u"%1 Hz"_s.arg(brokerHz, 0, 'f', 0));
-    Bench::row(u"ratio bridges / broker only"_s, brokerHz > 0 ? bridgeHz / brokerHz : 0);
+            return best;
+        };
+        const double bridgeHz = sweep(true);
+        QThread::msleep(1000);
+        const double brokerHz = sweep(false);
+        Bench::row(u"0.18 MB through two bridges (ROS->MQTT->ROS)"_s, bridgeHz * size / 1e6,
+                   u"%1 Hz"_s.arg(bridgeHz, 0, 'f', 0));
+        Bench::row(u"0.18 MB broker only (publish, receive back)"_s, brokerHz * size / 1e6,
+                   u"%1 Hz"_s.arg(brokerHz, 0, 'f', 0));
+        Bench::row(u"ratio bridges / broker only"_s, brokerHz > 0 ? bridgeHz / brokerHz : 0);
+    }
 
     mqtt.disconnect();
     ros.shutdown();

@@ -95,6 +95,8 @@ int main(int argc, char** argv)
     Bench::row(u"GUI event loop lag p99 (ms)"_s, Bench::percentile(lags, 0.99), u"goal < 50 ms"_s);
     Bench::row(u"GUI event loop lag max (ms)"_s,
                lags.empty() ? 0 : *std::max_element(lags.begin(), lags.end()));
+    Bench::gate("discovery_received_vs_mosquitto_sub", double(ours) / double(std::max<quint64>(1, subLines)));
+    Bench::gate("discovery_lag_p99_ms", Bench::percentile(lags, 0.99));
     Bench::row(u"resident memory before load (MiB)"_s, double(rssBefore) / 1024);
     Bench::row(u"resident memory after load (MiB)"_s, double(rssAfter) / 1024);
     Bench::row(u"peak resident memory (MiB)"_s, double(rssPeak) / 1024);

@@ -125,6 +125,7 @@ int main(int argc, char** argv)
         u"%1x the suite's loop (goal >= 100x)"_s.arg(perSampleRate / peerRate, 0, 'f', 0));
     row(u"engine, statistics 30 times a second (the live page)"_s, liveRate,
         u"%1x the suite's loop"_s.arg(liveRate / peerRate, 0, 'f', 0));
+    Bench::gate("latency_engine_vs_numpy", perSampleRate / peerRate);
     std::printf("\ncheck, total over the last %d samples: engine mean %.6f ms, median %.6f ms, std %.6f ms;\n"
                 "                                       numpy  mean %.6f ms, median %.6f ms, std %.6f ms\n",
                 window, last.mean, last.median, last.std, peer.value(u"total_mean_ms"_s).toDouble(),

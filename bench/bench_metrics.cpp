@@ -133,6 +133,7 @@ int main(int argc, char** argv)
     Bench::row(u"write, OpenMetrics (ms)"_s, openMetrics, u"%1 MB"_s.arg(double(om) / 1e6, 0, 'f', 2));
     Bench::row(u"peer: prometheus-cpp Collect + Serialize (ms)"_s, peer);
     Bench::row(u"prometheus-cpp / ours, text format (x)"_s, peer / text);
+    Bench::gate("metrics_prometheus_cpp_vs_ours", peer / text);
     Bench::row(u"whole scrape over HTTP on loopback, OpenMetrics (ms)"_s, http, u"%1 bytes"_s.arg(scraped));
     return 0;
 }

@@ -174,6 +174,8 @@ int main(int argc, char** argv)
     Bench::row(u"watch CPU per message (us)"_s, watchPer,
                u"%1x mosquitto_sub (goal <= 3x)"_s.arg(subPer > 0 ? watchPer / subPer : 0, 0, 'f', 2));
     Bench::row(u"watch CPU (% of one core)"_s, 100 * watchCpu / seconds);
+    Bench::gate("watch_cpu_per_message_vs_mosquitto_sub", subPer > 0 ? watchPer / subPer : 0);
+    Bench::gate("watch_links_page_lag_p99_ms", Bench::percentile(lags, 0.99));
     Bench::row(u"/metrics scrape under the load, median (ms)"_s, Bench::percentile(loaded, 0.5),
                u"%1 kB, goal < 50 ms"_s.arg(m1.size() / 1024));
     Bench::row(u"/metrics scrape under the load, max (ms)"_s,

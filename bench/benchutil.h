@@ -64,6 +64,13 @@ inline void row(const QString& what, double value, const QString& note = QString
     std::printf("| %-58s | %12.1f | %s\n", qPrintable(what), value, qPrintable(note));
     std::fflush(stdout);
 }
+/// A figure that scripts/bench.sh --gate checks against bench/gate.txt: one line "GATE name value".
+inline void gate(const char* name, double value)
+{
+    std::printf("GATE %s %.6g\n", name, value);
+    std::fflush(stdout);
+}
+
 /// How late a 10 ms timer fires in this (GUI) thread while `running` says so, in ms.
 inline std::vector<double> measureLag(const std::function<bool()>& running)
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "measuresession.h"
 
+#include "base/logging.h"
 #include "latency/latencystatsmodel.h"
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
@@ -20,6 +21,11 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
     , m_stats(new LatencyStatsModel(this))
     , m_recorder(new RunRecorder(this))
 {
+    m_publishTimer.setSingleShot(true);
+    connect(&m_publishTimer, &QTimer::timeout, this, [this] {
+        if (!m_paused && m_shown)
+            publish();
+    });
     connect(m_recorder, &RunRecorder::failed, this, [this](const QString& why) {
         QString ignored;
         m_recorder->stop(&ignored);
@@ -88,7 +94,30 @@ void MeasureSession::onDrained(qint64 nowNs)
     m_engine.expire(nowNs);
     if (int(m_discovery.topics().size()) != topicsBefore)
         emit stampTopicsChanged();
+    if (!m_firstSampleSaid && m_engine.counters().complete > 0) {
+        m_firstSampleSaid = true; // when a measurement starts to show (bench_startup reads it)
+        qCDebug(lcSession) << "first complete sample";
+    }
     if (!m_paused)
+        publishSoon();
+}
+
+void MeasureSession::publishSoon()
+{
+    if (!m_shown || m_engine.revision() == m_publishedRevision)
+        return;
+    const qint64 since = m_sincePublished.isValid() ? m_sincePublished.elapsed() : m_publishIntervalMs;
+    if (since >= m_publishIntervalMs) {
+        publish();
+    } else if (!m_publishTimer.isActive()) {
+        m_publishTimer.start(int(m_publishIntervalMs - since));
+    }
+}
+
+void MeasureSession::setShown(bool shown)
+{
+    m_shown = shown;
+    if (shown && !m_paused)
         publish();
 }
 
@@ -115,6 +144,8 @@ void MeasureSession::publish()
     if (m_engine.revision() == m_publishedRevision)
         return;
     m_publishedRevision = m_engine.revision();
+    m_publishTimer.stop();
+    m_sincePublished.start();
     m_stats->refresh(m_engine);
     emit updated();
 }

@@ -6,8 +6,10 @@
 #include "mqtt/mqttstampdecoder.h"
 #include "record/runfile.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QSet>
+#include <QTimer>
 #include <vector>
 
 class LatencyStatsModel;
@@ -22,7 +24,8 @@ struct RosGraph;
 /// Every `benchmarking_suite/TimeStamped` topic on the master is subscribed, and every MQTT
 /// message is looked at for stamps; without a pipeline of the user's, one is proposed from the
 /// stamps seen (and proposed again when new stamp topics appear). Figures are pushed to the stats
-/// model at most once per drain, and not while paused.
+/// model at most once per drain (or per setPublishInterval()), not while paused and not while
+/// nothing shows them (setShown()).
 class MeasureSession : public QObject
 {
     Q_OBJECT
@@ -46,6 +49,14 @@ public:
     void setTimeoutNs(qint64 ns) { m_engine.setTimeoutNs(ns); }
     void setPaused(bool paused);
     bool isPaused() const { return m_paused; }
+    /// Figures that come with the drain are pushed to the stats model (and updated() said) at most
+    /// once per `ms` (0, the default: every drain), the last of them `ms` later at the latest: a
+    /// page that shows them need not repaint 30 times a second. What the user does (a pipeline, a
+    /// window, a reset) is pushed at once.
+    void setPublishInterval(int ms) { m_publishIntervalMs = ms; }
+    /// While nothing shows the figures, they are not pushed at all (the engine goes on measuring);
+    /// shown again, they are pushed at once.
+    void setShown(bool shown);
     /// Forgets every value and count; keeps the pipeline.
     void reset();
 
@@ -79,7 +90,7 @@ public:
     const RunInfo& shownRun() const { return m_shownRun; }
 
 signals:
-    /// The figures moved (at most once per drain tick).
+    /// The figures moved (at most once per drain tick, or per publish interval).
     void updated();
     void recordingChanged(bool recording);
     /// Recording stopped because the run file could not be written.
@@ -95,6 +106,7 @@ private:
     void updateSubscriptions();
     void proposeIfNew();
     void publish();
+    void publishSoon();
 
     LiveSession* m_live;
     RosStampSource* m_ros;
@@ -114,7 +126,12 @@ private:
     qint64 m_liveTimeoutNs = SampleJoiner::kDefaultTimeoutNs;
     bool m_automatic = true;
     bool m_paused = false;
+    bool m_firstSampleSaid = false;
     int m_proposedTopics = 0;
     bool m_proposedWithCompleteSamples = false;
     quint64 m_publishedRevision = ~quint64(0);
+    int m_publishIntervalMs = 0;
+    bool m_shown = true;
+    QElapsedTimer m_sincePublished;
+    QTimer m_publishTimer;
 };
