@@ -3213,6 +3213,13 @@ factors:
     </message>
 </context>
 <context>
+    <name>LiveText</name>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+</context>
+<context>
     <name>Main</name>
     <message>
         <source>bridgescope: the window needs a display, and there is none here (DISPLAY and WAYLAND_DISPLAY are not set).

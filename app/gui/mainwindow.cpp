@@ -89,6 +89,9 @@ MainWindow::MainWindow(QWidget* parent)
 {
     setObjectName(u"mainWindow"_s);
     setAcceptDrops(true); // files dropped anywhere open where they belong (mainwindowfiles.cpp)
+    // The topics' figures are read by eye: four times a second, not at every drain (a view repaints
+    // and re-measures its rows at every change of them).
+    m_session->setFiguresInterval(kFiguresMs);
     m_pages->setDocumentMode(true);
     m_pages->addTab(m_discover, tr("Discover"));
     m_pages->addTab(m_map, tr("Map"));

@@ -25,6 +25,8 @@ class MainWindow : public QMainWindow
 {
     Q_OBJECT
 public:
+    /// How often the figures of topics are said to their views (LiveSession::setFiguresInterval).
+    static constexpr int kFiguresMs = 250;
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 

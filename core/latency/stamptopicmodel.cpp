@@ -44,14 +44,26 @@ void StampTopicModel::update(const PipelineDiscovery& discovery, const Pipeline&
             m_rows.push_back({t, 0, false});
         endResetModel();
     }
+    // Only the rows that changed are said: a view repaints (and a NameDelegate re-reads every
+    // name) for each row it is told of.
+    int first = -1;
+    int last = -1;
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
-        m_rows[i].topic = topics[qsizetype(i)]; // a ROS spelling may have replaced the MQTT one
-        m_rows[i].stamps = discovery.stampCount(m_rows[i].topic);
-        m_rows[i].malformed = malformed.value(m_rows[i].topic);
-        m_rows[i].inPipeline = pipeline.indexOf(m_rows[i].topic) >= 0;
+        Row r = m_rows[i];
+        r.topic = topics[qsizetype(i)]; // a ROS spelling may have replaced the MQTT one
+        r.stamps = discovery.stampCount(r.topic);
+        r.malformed = malformed.value(r.topic);
+        r.inPipeline = pipeline.indexOf(r.topic) >= 0;
+        const Row& old = m_rows[i];
+        if (r.topic == old.topic && r.stamps == old.stamps && r.malformed == old.malformed
+            && r.inPipeline == old.inPipeline)
+            continue;
+        m_rows[i] = std::move(r);
+        first = first < 0 ? int(i) : first;
+        last = int(i);
     }
-    if (!m_rows.empty())
-        emit dataChanged(index(0), index(int(m_rows.size()) - 1));
+    if (first >= 0)
+        emit dataChanged(index(first), index(last));
 }
 
 int StampTopicModel::rowCount(const QModelIndex& parent) const

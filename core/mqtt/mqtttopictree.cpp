@@ -6,6 +6,7 @@
 #include "wire/rosmessage.h"
 
 #include <algorithm>
+#include <utility>
 #include <QDateTime>
 #include <QLocale>
 #include <QMimeData>
@@ -188,6 +189,7 @@ void MqttTopicTree::trimHistory(Node* n)
 void MqttTopicTree::clear()
 {
     beginResetModel();
+    m_dirty.clear(); // of the nodes that go now
     m_root = std::make_unique<Node>();
     m_root->visible = true;
     m_byTopic.clear();
@@ -314,7 +316,7 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
     if (batch.empty())
         return;
     std::vector<Node*> withPending;
-    std::vector<Node*> dirty;
+    std::vector<Node*>& dirty = m_dirty;
     std::vector<Node*> typed;
     bool sysChanged = false;
     const QString typePrefix = MqttClientWire::typeTopicPrefix();
@@ -434,9 +436,17 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
         }
     }
 
+    if (m_figuresIntervalNs == 0)
+        sayFigures();
+    if (sysChanged)
+        emit brokerStatisticsChanged();
+}
+
+void MqttTopicTree::sayFigures()
+{
     // Changed figures: one dataChanged per parent, spanning the changed rows.
     QHash<Node*, std::pair<int, int>> spans;
-    for (Node* n : dirty) {
+    for (Node* n : std::exchange(m_dirty, {})) {
         n->dirty = false;
         if (n == m_root.get() || !n->visible)
             continue;
@@ -451,12 +461,14 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
         emit dataChanged(index(it->first, MessagesColumn, parent),
                          index(it->second, ColumnCount - 1, parent));
     }
-    if (sysChanged)
-        emit brokerStatisticsChanged();
 }
 
 void MqttTopicTree::tick(qint64 nowNs)
 {
+    if (!m_dirty.empty() && nowNs - m_figuresSaidNs >= m_figuresIntervalNs) {
+        m_figuresSaidNs = nowNs;
+        sayFigures();
+    }
     if (m_lastTickNs == 0) {
         m_lastTickNs = nowNs;
         return;

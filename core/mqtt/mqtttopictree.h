@@ -135,8 +135,14 @@ public:
     /// Messages on topics not added to keep within topicBudget() and structureBudget().
     quint64 untrackedMessages() const { return m_untrackedMessages; }
     void apply(std::vector<MqttMessage>&& batch);
-    /// Updates rates once a second; `nowNs` is wall-clock time.
+    /// Updates rates once a second, and says the figures that changed since the last time once a
+    /// figures interval; `nowNs` is wall-clock time.
     void tick(qint64 nowNs);
+    /// The changed figures of rows (messages, bytes, sizes, latencies) are said (dataChanged) at
+    /// most once per `ms`, at a tick(); new rows at once. 0, the default: at every apply(). A
+    /// window sets it: a view repaints and re-measures its rows for every dataChanged, and a busy
+    /// broker changes some row at every drain.
+    void setFiguresInterval(int ms) { m_figuresIntervalNs = qint64(ms) * 1'000'000; }
     void clear();
 
     int topicCount() const { return int(m_byTopic.size()); }
@@ -194,7 +200,11 @@ private:
     std::shared_ptr<const RosTypeRegistry> registryOf(const TypeState& type) const;
     QString typeNoteOf(const TypeState& type) const;
 
+    void sayFigures();
     std::unique_ptr<Node> m_root;
+    std::vector<Node*> m_dirty; ///< rows whose figures changed since sayFigures()
+    qint64 m_figuresIntervalNs = 0;
+    qint64 m_figuresSaidNs = 0;
     QHash<QString, Node*> m_byTopic;
     QHash<QString, std::shared_ptr<TypeState>> m_types; ///< by data topic
     QHash<QString, QString> m_sys;

@@ -146,8 +146,17 @@ void LiveSession::drainNow()
         m_tree->apply(std::move(batch));
     }
     m_tree->tick(now);
-    m_rosTopics->setMonitorStats(m_monitor->snapshot(now), now);
-    if (m_ros2->isRunning())
-        m_ros2Topics->setMonitorStats(toRosStats(m_ros2->snapshot(now)), now);
+    if (now - m_figuresSetNs >= m_figuresIntervalNs) {
+        m_figuresSetNs = now;
+        m_rosTopics->setMonitorStats(m_monitor->snapshot(now), now);
+        if (m_ros2->isRunning())
+            m_ros2Topics->setMonitorStats(toRosStats(m_ros2->snapshot(now)), now);
+    }
     emit drained(now);
+}
+
+void LiveSession::setFiguresInterval(int ms)
+{
+    m_figuresIntervalNs = qint64(ms) * 1'000'000;
+    m_tree->setFiguresInterval(ms);
 }

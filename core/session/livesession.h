@@ -68,6 +68,9 @@ public:
     /// Runs one drain now (tests; the timer does it otherwise).
     void drainNow();
     int drainIntervalMs() const { return m_timer.interval(); }
+    /// Figures read by eye (the topic tree's, the ROS topics' rates) go to their models at most
+    /// once per `ms` (0, the default: at every drain); what is measured is not touched by it.
+    void setFiguresInterval(int ms);
 
 signals:
     /// After every drain, with the wall-clock time it used.
@@ -85,4 +88,6 @@ private:
     std::vector<std::pair<int, MqttListener>> m_listeners;
     int m_nextListener = 1;
     QTimer m_timer;
+    qint64 m_figuresIntervalNs = 0;
+    qint64 m_figuresSetNs = 0;
 };

@@ -11,6 +11,7 @@
 #include "testservers.h"
 #include "viewhelpers.h"
 #include "widgets/discover/detailpane.h"
+#include "widgets/common/livetext.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/tools/mqttprofiledialog.h"
 

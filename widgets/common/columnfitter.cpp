@@ -25,13 +25,26 @@ ColumnFitter::ColumnFitter(QTableView* view)
     connect(model, &QAbstractItemModel::rowsRemoved, this, refit);
     connect(model, &QAbstractItemModel::modelReset, this, refit);
     connect(model, &QAbstractItemModel::layoutChanged, this, refit);
-    // Changed cells matter in the fill columns (topics edited); not in the others, whose figures
-    // change every second (the columns would twitch).
+    // Changed cells matter in the fill columns (topics edited); in the figure columns once a
+    // kGrowMs at most; not in the others, whose figures change every second (they would twitch).
+    m_growTimer.setSingleShot(true);
+    m_growTimer.setInterval(kGrowMs);
+    connect(&m_growTimer, &QTimer::timeout, this, [this] {
+        // Hidden: measured when shown (the viewport's Show event refits); sized by hand: the user's.
+        const QHeaderView* header = m_view->horizontalHeader();
+        if (!m_view->isVisible() || m_userSized || header->property(ViewSetup::RestoredProperty).toBool())
+            return;
+        if (fitFigures(true))
+            apply(); // the fill and fitted columns share what is left
+    });
     connect(model, &QAbstractItemModel::dataChanged, this,
             [this](const QModelIndex& from, const QModelIndex& to) {
                 for (int c : std::as_const(m_fills))
                     if (c >= from.column() && c <= to.column())
                         m_timer.start();
+                for (int c : std::as_const(m_figures))
+                    if (c >= from.column() && c <= to.column() && !m_growTimer.isActive())
+                        m_growTimer.start();
             });
     // Sized by hand: a handle dragged or double-clicked. (A model's reset resizes sections too,
     // and is no reason to stop fitting.)
@@ -58,18 +71,43 @@ void ColumnFitter::fill(const QList<int>& columns)
     m_timer.start();
 }
 
+void ColumnFitter::figures(const QList<int>& columns)
+{
+    m_figures = columns;
+    for (int c : columns)
+        m_view->horizontalHeader()->setSectionResizeMode(c, QHeaderView::Interactive);
+    m_timer.start();
+}
+
+bool ColumnFitter::fitFigures(bool growOnly)
+{
+    const QScopedValueRollback fitting(m_fitting, true);
+    bool changed = false;
+    for (int c : std::as_const(m_figures)) {
+        // Hidden ones too (a few cells each): shown again from a menu, they have their width.
+        // The header's own text counts, as with ResizeToContents.
+        const int width = std::max(static_cast<QAbstractItemView*>(m_view)->sizeHintForColumn(c),
+                                   m_view->horizontalHeader()->sectionSizeHint(c));
+        if (width != m_view->columnWidth(c) && (!growOnly || width > m_view->columnWidth(c))) {
+            m_view->setColumnWidth(c, width);
+            changed = true;
+        }
+    }
+    return changed;
+}
+
 bool ColumnFitter::eventFilter(QObject* watched, QEvent* event)
 {
     // Compared with the viewport kept at construction: while the view is destroyed its viewport
     // still gets events, and the view is no longer one to ask (UBSan: a member call on a QWidget).
-    if (watched == m_viewport && event->type() == QEvent::Resize)
+    if (watched == m_viewport && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
         m_timer.start();
     return QObject::eventFilter(watched, event);
 }
 
 bool ColumnFitter::manages(int column) const
 {
-    return m_fills.contains(column)
+    return m_fills.contains(column) || m_figures.contains(column)
         || std::any_of(m_fits.begin(), m_fits.end(), [column](const auto& f) { return f.first == column; });
 }
 
@@ -81,9 +119,13 @@ int ColumnFitter::floorOf(int column) const
 
 void ColumnFitter::apply()
 {
-    const QHeaderView* header = m_view->horizontalHeader();
+    QHeaderView* header = m_view->horizontalHeader();
+    for (int c : std::as_const(m_figures)) // a header state saved by an older version may bring them back
+        if (c < header->count() && header->sectionResizeMode(c) != QHeaderView::Interactive)
+            header->setSectionResizeMode(c, QHeaderView::Interactive);
     if (m_userSized || header->property(ViewSetup::RestoredProperty).toBool()) // the last session's
         return;
+    fitFigures(false);
     const QScopedValueRollback fitting(m_fitting, true);
     const int room = m_view->viewport()->width();
     const auto usable = [&](int column) {
@@ -105,7 +147,7 @@ void ColumnFitter::apply()
         }
     int left = room - reserved;
     for (int c = 0; c < header->count(); ++c)
-        if (!m_view->isColumnHidden(c) && !manages(c))
+        if (!m_view->isColumnHidden(c) && (!manages(c) || m_figures.contains(c)))
             left -= m_view->columnWidth(c);
     // Fitted columns first, each within its share (and, beside fill columns, what they leave).
     for (const auto& [column, share] : std::as_const(m_fits)) {

@@ -22,6 +22,13 @@ public:
     void fit(int column, double share);
     /// These columns (Interactive) share equally the room the others leave.
     void fill(const QList<int>& columns);
+    /// These columns (made Interactive here) take the width their figures need, as
+    /// QHeaderView::ResizeToContents would, without its cost: that measures every row's text at
+    /// every change of any cell (30 times a second on a live page). Here they are measured when
+    /// the rows or the view change, and at most once a kGrowMs while figures change, and then
+    /// only grow (figures that shrink by a digit do not make the columns twitch).
+    void figures(const QList<int>& columns);
+    static constexpr int kGrowMs = 1000;
     /// Fits now (the timer does it after changes).
     void apply();
 
@@ -31,12 +38,17 @@ protected:
 private:
     int floorOf(int column) const;
     bool manages(int column) const;
+    /// Sizes the figure columns to their content; with `growOnly`, only those that need more room.
+    /// True when a width changed.
+    bool fitFigures(bool growOnly);
 
     QTableView* m_view;
     const QObject* m_viewport = nullptr;
     QList<std::pair<int, double>> m_fits;
     QList<int> m_fills;
+    QList<int> m_figures;
     QTimer m_timer;
+    QTimer m_growTimer;
     bool m_fitting = false;
     bool m_userSized = false;
 };

@@ -65,8 +65,10 @@ void NameDelegate::refreshNames() const
         for (int r = 0; r < rows; ++r)
             names << model->index(r, m_column).data(Qt::DisplayRole).toString();
     }
-    if (names != m_elider.names())
+    if (names != m_elider.names()) {
         m_elider.setNames(names);
+        m_shortened.clear();
+    }
 }
 
 QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
@@ -74,6 +76,23 @@ QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
     const QString& text = option.text;
     if (text.isEmpty())
         return text;
+    refreshNames(); // the forms depend on the other names: a change of them empties the cache
+    // Painting a cell again (30 times a second on a live page) lays out its text again, and the
+    // style's text rectangle lays it out once more: the result is kept per cell width and font.
+    const QString key = text + QChar(0) + QString::number(option.rect.width()) + QChar(0)
+        + QString::number(int(option.features)) + QChar(0) + option.font.key();
+    if (key.size() > kMaxShortenedKey) // a name longer than any screen: not kept (memory stays bounded)
+        return shorten(option);
+    if (const auto it = m_shortened.constFind(key); it != m_shortened.constEnd())
+        return *it;
+    if (m_shortened.size() >= kMaxShortened)
+        m_shortened.clear();
+    return *m_shortened.insert(key, shorten(option));
+}
+
+QString NameDelegate::shorten(const QStyleOptionViewItem& option) const
+{
+    const QString& text = option.text;
     const QStyle* style = option.widget ? option.widget->style() : QApplication::style();
     // The room QCommonStyle gives the text: the text rectangle less the focus frame's margins.
     const int margin = textMargin(style, option.widget);
@@ -82,7 +101,6 @@ QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
     const QFontMetrics& fm = option.fontMetrics;
     if (fm.horizontalAdvance(text) <= room)
         return text;
-    refreshNames();
     const QStringList forms = m_elider.forms(text);
     for (const QString& form : forms)
         if (fm.horizontalAdvance(form) <= room)

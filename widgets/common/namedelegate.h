@@ -3,6 +3,7 @@
 
 #include "base/nameelider.h"
 
+#include <QHash>
 #include <QStyledItemDelegate>
 
 class QAbstractItemView;
@@ -31,11 +32,16 @@ public:
                    const QModelIndex& index) override;
 
 private:
+    /// shorten(), kept per text, cell width and font (at most kMaxShortened of them).
     QString shortened(const QStyleOptionViewItem& option) const;
+    QString shorten(const QStyleOptionViewItem& option) const;
+    static constexpr qsizetype kMaxShortened = 4096;
+    static constexpr qsizetype kMaxShortenedKey = 2048; ///< characters: at most 4096 × 2 × 2048 × 2 B kept
     void refreshNames() const;
 
     QAbstractItemView* m_view;
     int m_column;
     mutable NameElider m_elider;
     mutable bool m_stale = true;
+    mutable QHash<QString, QString> m_shortened;
 };

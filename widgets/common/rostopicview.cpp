@@ -28,11 +28,12 @@ RosTopicView::RosTopicView(QAbstractItemModel* source, const QString& placeholde
     ViewSetup::records(m_table, RosTopicModel::TopicColumn);
     m_topicDelegate = NameDelegate::install(m_table, RosTopicModel::TopicColumn);
     NameDelegate::install(m_table, RosTopicModel::TypeColumn);
-    QHeaderView* header = m_table->horizontalHeader();
-    header->setSectionResizeMode(QHeaderView::ResizeToContents);
-    header->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Interactive);
-    header->setSectionResizeMode(RosTopicModel::TypeColumn, QHeaderView::Interactive);
     m_fitter = new ColumnFitter(m_table);
+    QList<int> figures;
+    for (int c = 0; c < RosTopicModel::ColumnCount; ++c)
+        if (c != RosTopicModel::TopicColumn && c != RosTopicModel::TypeColumn)
+            figures << c;
+    m_fitter->figures(figures); // rates change every second: measured then, not at every cell
     m_fitter->fit(RosTopicModel::TypeColumn, 0.25);
     m_fitter->fit(RosTopicModel::TopicColumn, 0.55);
     auto* layout = new QVBoxLayout(this);

@@ -82,4 +82,9 @@ void initialSizes(QSplitter* splitter, const QList<int>& sizes)
     new SizesOnShow(splitter, sizes);
 }
 
+
+bool hiddenInShownWindow(const QWidget* page)
+{
+    return !page->isVisible() && page->window()->isVisible();
+}
 } // namespace ViewSetup

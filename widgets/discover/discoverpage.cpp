@@ -8,6 +8,7 @@
 #include "ros/rostopicmodel.h"
 #include "session/livesession.h"
 #include "widgets/common/rostopicview.h"
+#include "widgets/common/livetext.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/discover/detailpane.h"
 #include "widgets/discover/publishdialog.h"
@@ -120,7 +121,7 @@ QLayout* DiscoverPage::createConnectionBar()
     buttons->addWidget(m_connect);
     bar->addLayout(buttons, 1, 2);
     bar->addWidget(m_mqttState, 1, 3);
-    m_counters = new QLabel(this);
+    m_counters = new LiveText(this); // four times a second: a QLabel would lay out the window again
     m_counters->setObjectName(u"counters"_s);
     bar->addWidget(m_counters, 1, 4);
 
@@ -173,6 +174,7 @@ QLayout* DiscoverPage::createConnectionBar()
         m_ros2State->setToolTip(envError);
 
     bar->setColumnStretch(3, 1);
+    bar->setColumnStretch(4, 1); // the counters: their room does not follow their digits
     return bar;
 }
 

@@ -14,6 +14,7 @@ class MqttTopicFilter;
 class PasswordStore;
 class QCheckBox;
 class QComboBox;
+class LiveText;
 class QLabel;
 class QLayout;
 class QLineEdit;
@@ -59,7 +60,7 @@ public:
     MqttTopicFilter* mqttFilterModel() const { return m_mqttProxy; }
     QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
     QLabel* mqttStatus() const { return m_mqttState; }
-    QLabel* mqttCounters() const { return m_counters; }
+    LiveText* mqttCounters() const { return m_counters; }
     QLabel* rosStatus() const { return m_rosState; }
     QAction* publishAction() const { return m_publishAction; }
     QAction* clearRetainedAction() const { return m_clearRetainedAction; }
@@ -99,7 +100,7 @@ private:
     QComboBox* m_profileBox;
     QPushButton* m_connect;
     QLabel* m_mqttState;
-    QLabel* m_counters;
+    LiveText* m_counters;
     QLineEdit* m_rosFilter;
     QSortFilterProxyModel* m_rosProxy;
     QTableView* m_rosView;

@@ -149,8 +149,10 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     layout->addWidget(split, 1);
 
     LinkMonitor* monitor = watch->monitor();
-    connect(monitor, &LinkMonitor::refreshed, this, &LinksPage::updateSummary);
     connect(monitor, &LinkMonitor::refreshed, this, [this] {
+        if (ViewSetup::hiddenInShownWindow(this))
+            return; // drawn when shown (showEvent)
+        updateSummary();
         if (!m_links->currentIndex().isValid() && m_proxy->rowCount() > 0)
             m_links->setCurrentIndex(m_proxy->index(0, 0)); // the detail pane is never empty for nothing
         showDetail();
@@ -160,6 +162,13 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
 }
 
 LinksPage::~LinksPage() = default;
+
+void LinksPage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    updateSummary();
+    showDetail();
+}
 
 QLayout* LinksPage::createBar()
 {

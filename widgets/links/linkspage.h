@@ -44,6 +44,9 @@ public:
     QLabel* detailLabel() const { return m_detail; }
     int notificationsShown() const { return m_notified; }
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     QLayout* createBar();
     QWidget* createLinkTable();

@@ -5,7 +5,9 @@
 #include "latency/pipelinemodel.h"
 #include "latency/stamptopicmodel.h"
 #include "session/measuresession.h"
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/ecdfchart.h"
+#include "widgets/common/livetext.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/measure/runbar.h"
@@ -74,7 +76,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_pause(new QAction(tr("&Pause"), this))
     , m_reset(new QAction(tr("&Reset"), this))
     , m_mode(new QLabel(this))
-    , m_counts(new QLabel(this))
+    , m_counts(new LiveText(this))
     , m_runBar(new RunBar(measure, this))
 {
     setObjectName(u"measurePage"_s);
@@ -82,6 +84,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     QWidget* pipelinePane = createPipelinePane();
     QWidget* chartPane = createChartPane();
     layOut(controls, pipelinePane, chartPane);
+    m_measure->setPublishInterval(kRefreshMs);
     connectSession();
     onPipelineChanged();
     updateCounts();
@@ -203,8 +206,7 @@ void MeasurePage::setUpPipelineView()
     NameDelegate::install(m_pipelineView, PipelineModel::TopicColumn); // stamp topics differ inside
     m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::TopicColumn,
                                                              QHeaderView::Stretch);
-    m_pipelineView->horizontalHeader()->setSectionResizeMode(PipelineModel::IndexColumn,
-                                                             QHeaderView::ResizeToContents);
+    (new ColumnFitter(m_pipelineView))->figures({PipelineModel::IndexColumn});
     m_pipelineView->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
                                     | QAbstractItemView::AnyKeyPressed);
     m_pipeline->setStampCounter([this](const QString& t) { return m_measure->discovery().stampCount(t); });
@@ -233,9 +235,13 @@ QWidget* MeasurePage::createChartPane()
     m_statsView->setObjectName(u"statsView"_s);
     m_statsView->setModel(style);
     ViewSetup::records(m_statsView);
-    m_statsView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_statsView->horizontalHeader()->setSectionResizeMode(LatencyStatsModel::SeriesColumn,
                                                           QHeaderView::Stretch);
+    QList<int> figures;
+    for (int c = 0; c < LatencyStatsModel::ColumnCount; ++c)
+        if (c != LatencyStatsModel::SeriesColumn)
+            figures << c;
+    (new ColumnFitter(m_statsView))->figures(figures); // measured once a second, not every tick
     m_statsView->verticalHeader()->setDefaultSectionSize(m_statsView->fontMetrics().height() + 8);
     for (int c : {LatencyStatsModel::P90Column, LatencyStatsModel::P95Column, LatencyStatsModel::P999Column})
         m_statsView->setColumnHidden(c, true);
@@ -282,7 +288,6 @@ void MeasurePage::layOut(QLayout* controls, QWidget* pipelinePane, QWidget* char
     layout->addWidget(m_counts);
     m_counts->setObjectName(u"measureCounts"_s);
     m_counts->setWordWrap(true); // a long line must not widen the window beyond the screen
-    m_counts->setTextInteractionFlags(Qt::TextSelectableByMouse);
 }
 
 void MeasurePage::connectSession()
@@ -338,8 +343,25 @@ void MeasurePage::applyEdit(const Pipeline& pipeline)
     m_measure->setPipeline(edited);
 }
 
+void MeasurePage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    m_measure->setShown(true); // the figures of the time it was hidden, at once
+}
+
+void MeasurePage::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    m_measure->setShown(false); // the engine measures on; nothing is pushed to the views
+}
+
 void MeasurePage::onUpdated()
 {
+    if (ViewSetup::hiddenInShownWindow(this)) {
+        // Another page is shown and this one never was (it had no hide event): stop pushing too.
+        m_measure->setShown(false);
+        return;
+    }
     if (m_chart->isVisible())
         m_chart->refresh();
     m_pipeline->refreshCounts();

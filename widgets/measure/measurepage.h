@@ -10,6 +10,7 @@ class PipelineModel;
 class RunBar;
 class QAction;
 class QCheckBox;
+class LiveText;
 class QLabel;
 class QLayout;
 class QListView;
@@ -36,13 +37,20 @@ public:
     QSpinBox* windowBox() const { return m_window; }
     QAction* pauseAction() const { return m_pause; }
     QAction* resetAction() const { return m_reset; }
-    QLabel* countsLabel() const { return m_counts; }
+    LiveText* countsLabel() const { return m_counts; }
     QCheckBox* logScaleBox() const { return m_log; }
     QCheckBox* smallMultiplesBox() const { return m_multiples; }
     QLabel* modeLabel() const { return m_mode; }
     RunBar* runBar() const { return m_runBar; }
     /// Saves the chart as PNG or SVG (by the suffix).
     bool saveChart(const QString& path, QString* error = nullptr);
+
+    /// How often the page shows new figures while they come (MeasureSession::setPublishInterval).
+    static constexpr int kRefreshMs = 500;
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
 
 private:
     QLayout* createControls();
@@ -78,7 +86,7 @@ private:
     QAction* m_pause;
     QAction* m_reset;
     QLabel* m_mode;
-    QLabel* m_counts;
+    LiveText* m_counts;
     RunBar* m_runBar;
     QList<QWidget*> m_pipelineControls; ///< disabled while recording or showing a run
     QString m_pipelineFile;
