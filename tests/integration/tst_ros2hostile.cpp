@@ -73,6 +73,7 @@ private slots:
         const qint64 rssBefore = PeakRss::of();
         const qint64 child = DdsChild::of();
         QVERIFY(child > 0);
+        const qint64 childBefore = PeakRss::of(child);
         QVERIFY(RtpsCorpus::send(domain, m_corpus, 2000) > 2000);
         // the same child still runs, lists the node and counts its samples
         const quint64 sent = p.snapshot(wallClockNs()).value(u"/steady"_s).messages;
@@ -81,7 +82,7 @@ private slots:
         QCOMPARE(DdsChild::of(), child);
         QVERIFY(hasNode(p.graph(), u"/steady"_s));
         qInfo().noquote() << "after the corpus: restarts" << p.restarts() << "child peak RSS"
-                          << (PeakRss::of(child) >> 10) << "kB";
+                          << (childBefore >> 10) << "kB before," << (PeakRss::of(child) >> 10) << "kB after";
 
         // a crash of the child: restarted, said with its reason
         QCOMPARE(DdsChild::kill(SIGSEGV), child);
