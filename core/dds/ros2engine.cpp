@@ -9,7 +9,7 @@
 #include "ros2/ros2names.h"
 #include "dds/ros2rawreader.h"
 
-#include <atomic>
+#include <algorithm>
 #include <map>
 #include <mutex>
 #include <QNetworkInterface>
@@ -64,40 +64,49 @@ Ros2Qos qosOf(const dds_qos_t* qos, bool publisher)
     return q;
 }
 
-/// The domain's configuration (as rmw_cyclonedds_cpp and tests/ros2peer do it): on this host
-/// only, unicast on 127.0.0.1 to the discovery ports of participant indices 0..30; else every
-/// IPv4 interface that is up and can multicast. Large samples come as bursts of fragments: the
-/// system's default receive buffer (208 KiB on a stock kernel) drops half of a 0.18 MB topic at
-/// 100 Hz (docs/BENCHMARKS.md), so 4 MiB are asked for (the kernel caps it at net.core.rmem_max).
+/// Every IPv4 interface that is up and can multicast, and the loopback without multicast (for
+/// this host's nodes that talk on 127.0.0.1 only), as Cyclone's <Interfaces>; empty when there is
+/// none (Cyclone then picks one itself).
+QString allInterfaces()
+{
+    QString out;
+    for (const QNetworkInterface& i : QNetworkInterface::allInterfaces()) {
+        const auto flags = i.flags();
+        const auto entries = i.addressEntries();
+        const bool ipv4 = std::any_of(entries.begin(), entries.end(), [](const QNetworkAddressEntry& a) {
+            return a.ip().protocol() == QAbstractSocket::IPv4Protocol;
+        });
+        if (!ipv4 || !(flags & QNetworkInterface::IsUp) || !(flags & QNetworkInterface::IsRunning))
+            continue;
+        if (flags & QNetworkInterface::IsLoopBack)
+            out += u"<NetworkInterface name=\"%1\" multicast=\"false\"/>"_s.arg(i.name().toHtmlEscaped());
+        else if (flags & QNetworkInterface::CanMulticast)
+            out += u"<NetworkInterface name=\"%1\"/>"_s.arg(i.name().toHtmlEscaped());
+    }
+    return out.isEmpty() ? out : u"<Interfaces>"_s + out + u"</Interfaces>"_s;
+}
+
+/// The domain's configuration. On this host only (as rmw_cyclonedds_cpp and tests/ros2peer do
+/// it): unicast on 127.0.0.1 to the discovery ports of participant indices 0..30. Else every IPv4
+/// interface, multicast discovery, and a participant index too (0..119, the domain's port range),
+/// so that this host's localhost-only nodes, which send to those ports on 127.0.0.1, find us. Large
+/// samples come as bursts of fragments: the system's default receive buffer (208 KiB on a stock
+/// kernel) drops half of a 0.18 MB topic at 100 Hz (docs/BENCHMARKS.md), so 4 MiB are asked for
+/// (the kernel caps it at net.core.rmem_max).
 std::string domainConfig(bool localhostOnly)
 {
-    QString interfaces;
-    if (localhostOnly) {
-        interfaces = u"<Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
-                     u"<AllowMulticast>false</AllowMulticast>"_s;
-    } else {
-        for (const QNetworkInterface& i : QNetworkInterface::allInterfaces()) {
-            const auto flags = i.flags();
-            if (!(flags & QNetworkInterface::IsUp) || !(flags & QNetworkInterface::IsRunning)
-                || !(flags & QNetworkInterface::CanMulticast) || (flags & QNetworkInterface::IsLoopBack))
-                continue;
-            for (const QNetworkAddressEntry& a : i.addressEntries())
-                if (a.ip().protocol() == QAbstractSocket::IPv4Protocol) {
-                    interfaces += u"<NetworkInterface name=\"%1\"/>"_s.arg(i.name().toHtmlEscaped());
-                    break;
-                }
-        }
-        if (!interfaces.isEmpty()) // none: Cyclone picks one itself (the loopback, with no network)
-            interfaces = u"<Interfaces>"_s + interfaces + u"</Interfaces>"_s;
-    }
-    const QString discovery = localhostOnly ? u"<Discovery><ParticipantIndex>auto</ParticipantIndex>"
+    const QString general = localhostOnly ? u"<Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
+                                            u"<AllowMulticast>false</AllowMulticast>"_s
+                                          : allInterfaces();
+    const QString discovery = localhostOnly ? u"<ParticipantIndex>auto</ParticipantIndex>"
                                               u"<MaxAutoParticipantIndex>30</MaxAutoParticipantIndex>"
-                                              u"<Peers><Peer Address=\"127.0.0.1\"/></Peers></Discovery>"_s
-                                            : QString();
-    return QString(u"<CycloneDDS><Domain Id=\"any\"><General>"_s + interfaces + u"</General>"_s + discovery
-            + u"<Internal><SocketReceiveBufferSize min=\"default\" max=\"4MB\"/></Internal>"
-              u"<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>"_s)
-        .toStdString();
+                                              u"<Peers><Peer Address=\"127.0.0.1\"/></Peers>"_s
+                                            : u"<ParticipantIndex>auto</ParticipantIndex>"
+                                              u"<MaxAutoParticipantIndex>119</MaxAutoParticipantIndex>"_s;
+    const QString xml = u"<CycloneDDS><Domain Id=\"any\"><General>"_s + general + u"</General><Discovery>"_s
+        + discovery + u"</Discovery><Internal><SocketReceiveBufferSize min=\"default\" max=\"4MB\"/></Internal>"
+                      u"<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>"_s;
+    return xml.toStdString();
 }
 
 } // namespace
@@ -427,15 +436,9 @@ void Ros2Engine::openDiscoveryInfo()
 void Ros2Engine::stop()
 {
     m_timer.stop();
-    if (!d)
-        return;
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        for (auto& [topic, m] : d->monitored)
-            if (m.reader)
-                m.reader->onSample = nullptr;
-    }
-    d.reset(); // the participant with everything in it, then the domain (Private's destructor)
+    // The participant with everything in it, then the domain (Private's destructor): deleting a
+    // reader waits for its listener in flight, which still finds the tables it writes to.
+    d.reset();
     m_graph = Ros2Graph();
 }
 
