@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The Discover page's ROS 2 graph: a Cyclone DDS node (tests/ros2peer) seen through Bridgescope's
-// Fast DDS participant, shown in the ROS 2 tab with its node, monitored, its samples decoded in the
+// participant (Cyclone DDS, in bridgescope-dds), shown in the ROS 2 tab with its node, monitored, its samples decoded in the
 // detail pane with the bundled definitions, an unknown type shown raw; the ROS 1 / ROS 2 / both
 // switch joining and leaving the domain; a ROS 2 config on the Map page judged against the ROS 2
 // graph (QoS that cannot match, a publisher without a bridge).
