@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // bridgescope-dds: the DDS participant of Ros2Participant (core/ros2), in a process of its own.
-// Fast DDS parses whatever any host of the domain sends, and Debian's 2.9 lacks upstream security
-// fixes: a datagram can abort it or make it allocate without end. Here that ends this process,
-// under an address-space limit, and the parent starts it again. Reads Ros2Protocol frames on
+// The DDS library (Cyclone DDS, core/dds) parses whatever any host of the domain sends: should a
+// datagram crash it or make it allocate without end, that ends this process, under an
+// address-space limit, and the parent starts it again. Reads Ros2Protocol frames on
 // stdin, writes them on stdout; ends when stdin closes or the parent dies.
 #include "base/logging.h"
 #include "base/wallclock.h"
@@ -25,9 +25,9 @@ using Ros2Protocol::Kind;
 
 namespace {
 
-/// The most address space the participant may take. Fast DDS with a 4 MiB socket buffer, its
-/// threads' stacks and pools reserves about 300 MiB on a quiet domain (docs/ROBUSTNESS.md); the
-/// corpus datagrams that make it allocate without end stop here.
+/// The most address space the participant may take: Cyclone DDS with a 4 MiB socket buffer, its
+/// threads' stacks and pools reserves about 300 MiB on a quiet domain (VmPeak 304 MiB, Debug
+/// build), as Fast DDS did; a datagram that made it allocate without end would stop here.
 constexpr rlim_t kMaxAddressSpace = rlim_t(1536) << 20;
 
 void limitMemory()
@@ -244,7 +244,7 @@ int main(int argc, char** argv)
         return 0; // the parent died before the line above
     std::signal(SIGPIPE, SIG_IGN); // a write to a parent that is gone fails instead
     std::signal(SIGINT, SIG_IGN); // Ctrl+C in a terminal is the parent's to handle; it ends us
-    // Frames go to a copy of stdout; what Fast DDS (or anything else) prints goes to stderr.
+    // Frames go to a copy of stdout; what Cyclone DDS (or anything else) prints goes to stderr.
     g_frames = ::dup(STDOUT_FILENO);
     if (g_frames < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
         return 1;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Bridgescope's side of bench_ros2, in a process of its own so that its CPU time and memory are
 // its own: a QCoreApplication with a Ros2Participant (localhostOnly), as the GUI's session uses it.
+// The participant runs in this process's bridgescope-dds child (issue 31): CPU time is this
+// process's and the child's together, peak memory the sum of both peaks.
 //
 //   bench_ros2_bridgescope discover DOMAIN TOPICS PREFIX GRAPH_INTERVAL_MS TIMEOUT_S
 //       until the graph holds TOPICS topics named PREFIX... (/bench/t) with a publisher each and
@@ -11,9 +13,12 @@
 //       does; prints `subscribed`, `matched`, and at a line on stdin (or the timeout) `received ...`.
 #include "base/wallclock.h"
 #include "benchutil.h"
+#include "ddschild.h"
 #include "ros2/ros2participant.h"
 
 #include <cstdio>
+#include <cstring>
+#include <QFile>
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QSocketNotifier>
@@ -25,12 +30,41 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
+/// This process's CPU seconds with its bridgescope-dds child's (found once, then kept).
+double cpuSeconds()
+{
+    static qint64 child = 0;
+    if (child <= 0)
+        child = DdsChild::of();
+    double childCpu = 0;
+    QFile stat(u"/proc/%1/stat"_s.arg(child));
+    if (child > 0 && stat.open(QIODevice::ReadOnly)) {
+        const QByteArray line = stat.readAll();
+        const QList<QByteArray> f = line.mid(line.lastIndexOf(')') + 2).split(' ');
+        if (f.size() > 12) // utime and stime: fields 14 and 15 of stat, 12 and 13 after the name
+            childCpu = double(f.at(11).toLongLong() + f.at(12).toLongLong()) / double(sysconf(_SC_CLK_TCK));
+    }
+    return Bench::cpuSeconds() + childCpu;
+}
+
+/// This process's VmRSS or VmHWM with its bridgescope-dds child's, in kB.
+qint64 statusKb(const char* field)
+{
+    qint64 kb = Bench::statusKb(field);
+    QFile status(u"/proc/%1/status"_s.arg(DdsChild::of()));
+    if (status.open(QIODevice::ReadOnly))
+        for (const QByteArray& line : status.readAll().split('\n'))
+            if (line.startsWith(field))
+                kb += line.mid(qsizetype(std::strlen(field))).trimmed().split(' ').first().toLongLong();
+    return kb;
+}
+
 int discover(int domain, int topics, const QString& prefix, int intervalMs, int timeoutS)
 {
     Ros2Participant participant;
     participant.setGraphInterval(intervalMs);
-    const qint64 rss0 = Bench::statusKb("VmRSS:");
-    const double cpu0 = Bench::cpuSeconds();
+    const qint64 rss0 = statusKb("VmRSS:");
+    const double cpu0 = cpuSeconds();
     QElapsedTimer clock;
     double topicsMs = -1, topicsCpu = 0;
     QObject::connect(&participant, &Ros2Participant::graphChanged, [&](const Ros2Graph& graph) {
@@ -44,7 +78,7 @@ int discover(int domain, int topics, const QString& prefix, int intervalMs, int 
         }
         if (topicsMs < 0 && found >= topics) {
             topicsMs = double(clock.nsecsElapsed()) / 1e6;
-            topicsCpu = Bench::cpuSeconds() - cpu0;
+            topicsCpu = cpuSeconds() - cpu0;
         }
         if (found >= topics && named >= topics)
             QCoreApplication::exit(0);
@@ -58,14 +92,14 @@ int discover(int domain, int topics, const QString& prefix, int intervalMs, int 
     QTimer::singleShot(timeoutS * 1000, [] { QCoreApplication::exit(1); });
     const int rc = QCoreApplication::exec();
     const double ms = double(clock.nsecsElapsed()) / 1e6;
-    const double cpu = Bench::cpuSeconds() - cpu0;
+    const double cpu = cpuSeconds() - cpu0;
     if (rc != 0) {
         std::printf("incomplete topics_ms=%.1f\n", topicsMs);
         return 1;
     }
     std::printf("discovered topics_ms=%.1f named_ms=%.1f topics_cpu_s=%.3f named_cpu_s=%.3f rss0_kb=%lld "
                 "rss_kb=%lld hwm_kb=%lld\n",
-                topicsMs, ms, topicsCpu, cpu, rss0, Bench::statusKb("VmRSS:"), Bench::statusKb("VmHWM:"));
+                topicsMs, ms, topicsCpu, cpu, rss0, statusKb("VmRSS:"), statusKb("VmHWM:"));
     std::fflush(stdout);
     return 0;
 }
@@ -104,7 +138,7 @@ int subscribe(int domain, const QString& topic, int size, int timeoutS)
             return;
         if (!matched && it->matchedPublishers > 0) {
             matched = true;
-            matchCpu = Bench::cpuSeconds();
+            matchCpu = cpuSeconds();
             std::printf("matched\n");
             std::fflush(stdout);
         }
@@ -121,8 +155,8 @@ int subscribe(int domain, const QString& topic, int size, int timeoutS)
     QTimer::singleShot(timeoutS * 1000, [] { QCoreApplication::exit(0); });
     if (QCoreApplication::exec() != 0)
         return 1;
-    const double cpu = Bench::cpuSeconds();
-    const qint64 hwm = Bench::statusKb("VmHWM:");
+    const double cpu = cpuSeconds();
+    const qint64 hwm = statusKb("VmHWM:");
     drain.stop();
     const Ros2MonitorStats last = participant.snapshot(wallClockNs()).value(topic);
     participant.stop();

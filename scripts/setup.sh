@@ -24,11 +24,12 @@ PACKAGES=(
     libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
     # ROS 2 on the wire: Fast CDR, the serializer of ROS 2's default RMW, makes the test bytes
     libfastcdr-dev
-    # ROS 2 on the wire: Fast DDS, the DDS library core/ros2 is built on, and Cyclone DDS, the
-    # other DDS implementation the test peers (tests/ros2peer) are built on to prove interop
-    libfastrtps-dev cyclonedds-dev cyclonedds-tools
-    # bench_ros2: Fast DDS's own code generator makes the peer's message types from the IDL
-    fastddsgen
+    # ROS 2 on the wire: Cyclone DDS, the DDS library of bridgescope-dds (core/dds) and of the
+    # test peers (tests/ros2peer)
+    cyclonedds-dev cyclonedds-tools
+    # bench_ros2 only (optional, the build leaves it out without them): its Fast DDS peer, and
+    # Fast DDS's own code generator that makes that peer's message types from the IDL
+    libfastrtps-dev fastddsgen
     python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-rospy python3-rostopic
     # servers the tests and the demo start
     mosquitto mosquitto-clients

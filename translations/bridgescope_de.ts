@@ -6131,16 +6131,16 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>Domäne %1 liegt außerhalb: ROS-2-Domänen sind 0 bis %2</translation>
     </message>
     <message>
-        <source>Fast DDS could not create a participant on domain %1 (no usable network interface or ports?)</source>
-        <translation>Fast DDS konnte auf Domäne %1 keinen Teilnehmer anlegen (keine nutzbare Netzwerkschnittstelle oder Ports?)</translation>
+        <source>Cyclone DDS could not create a participant on domain %1 (%2: no usable network interface or ports?)</source>
+        <translation>Cyclone DDS konnte auf Domäne %1 keinen Teilnehmer anlegen (%2: keine nutzbare Netzwerkschnittstelle oder Ports?)</translation>
     </message>
     <message>
         <source>%1 has no publisher or subscriber yet, so its type is not known</source>
         <translation>%1 hat noch keinen Publisher oder Subscriber, sein Typ ist also unbekannt</translation>
     </message>
     <message>
-        <source>Fast DDS could not subscribe to %1 as %2</source>
-        <translation>Fast DDS konnte %1 nicht als %2 abonnieren</translation>
+        <source>Cyclone DDS could not subscribe to %1 as %2</source>
+        <translation>Cyclone DDS konnte %1 nicht als %2 abonnieren</translation>
     </message>
 </context>
 <context>

@@ -297,7 +297,7 @@ void listen(const DiscoverRequest& request, Heard* heard)
     QCoreApplication::exec();
     heard->tree.apply(heard->connection.takeMessages());
     if (heard->ros2Error.isEmpty())
-        heard->ros2Error = heard->ros2.lastError(); // Fast DDS could not make the participant
+        heard->ros2Error = heard->ros2.lastError(); // Cyclone DDS could not make the participant
 }
 
 /// Prints what was heard as text or JSON; fails when neither side answered.

@@ -9,79 +9,123 @@
 #include "ros2/ros2names.h"
 #include "dds/ros2rawreader.h"
 
-#include <atomic>
-#include <fastdds/dds/domain/DomainParticipant.hpp>
-#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
-#include <fastdds/dds/domain/DomainParticipantListener.hpp>
-#include <fastdds/dds/log/Log.hpp>
-#include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
-#include <fastdds/dds/subscriber/Subscriber.hpp>
-#include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/dds/topic/TypeSupport.hpp>
-#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
-#include <fastrtps/utils/IPLocator.h>
+#include <algorithm>
 #include <map>
 #include <mutex>
+#include <QNetworkInterface>
 #include <QtGlobal>
 #include <set>
 
-using namespace eprosima::fastdds::dds;
-namespace rtps = eprosima::fastrtps::rtps;
+using namespace Qt::StringLiterals;
 
 namespace {
 
 constexpr std::size_t kMaxEndpoints = 200'000;
+/// Discovery samples taken from each built-in topic a poll: the rest wait for the next one.
+constexpr int kMaxDiscoveryPerPoll = 4096;
 
-QByteArray gidBytes(const rtps::GUID_t& guid)
+QByteArray gidBytes(const dds_guid_t& guid)
 {
-    QByteArray g(16, '\0');
-    std::copy(guid.guidPrefix.value, guid.guidPrefix.value + 12, g.data());
-    std::copy(guid.entityId.value, guid.entityId.value + 4, g.data() + 12);
-    return g;
+    return QByteArray(reinterpret_cast<const char*>(guid.v), 16);
 }
 
-QByteArray prefixBytes(const rtps::GuidPrefix_t& prefix)
+QByteArray prefixBytes(const dds_guid_t& guid)
 {
-    return QByteArray(reinterpret_cast<const char*>(prefix.value), 12);
+    return QByteArray(reinterpret_cast<const char*>(guid.v), 12);
 }
 
-Ros2Qos qosOf(const ReliabilityQosPolicy& r, const DurabilityQosPolicy& d)
+/// What an endpoint announced; where it said nothing, the DDS defaults (writers reliable,
+/// readers best effort, both volatile).
+Ros2Qos qosOf(const dds_qos_t* qos, bool publisher)
 {
     Ros2Qos q;
-    q.reliability = r.kind == RELIABLE_RELIABILITY_QOS ? Ros2Qos::Reliable : Ros2Qos::BestEffort;
-    switch (d.kind) {
-    case VOLATILE_DURABILITY_QOS:
+    dds_reliability_kind_t r = publisher ? DDS_RELIABILITY_RELIABLE : DDS_RELIABILITY_BEST_EFFORT;
+    dds_duration_t blocking = 0;
+    dds_durability_kind_t d = DDS_DURABILITY_VOLATILE;
+    if (qos) {
+        dds_qget_reliability(qos, &r, &blocking);
+        dds_qget_durability(qos, &d);
+    }
+    q.reliability = r == DDS_RELIABILITY_RELIABLE ? Ros2Qos::Reliable : Ros2Qos::BestEffort;
+    switch (d) {
+    case DDS_DURABILITY_VOLATILE:
         q.durability = Ros2Qos::Volatile;
         break;
-    case TRANSIENT_LOCAL_DURABILITY_QOS:
+    case DDS_DURABILITY_TRANSIENT_LOCAL:
         q.durability = Ros2Qos::TransientLocal;
         break;
-    case TRANSIENT_DURABILITY_QOS:
+    case DDS_DURABILITY_TRANSIENT:
         q.durability = Ros2Qos::Transient;
         break;
-    case PERSISTENT_DURABILITY_QOS:
+    case DDS_DURABILITY_PERSISTENT:
         q.durability = Ros2Qos::Persistent;
         break;
     }
     return q;
 }
 
+/// Every IPv4 interface that is up and can multicast, and the loopback without multicast (for
+/// this host's nodes that talk on 127.0.0.1 only), as Cyclone's <Interfaces>; empty when there is
+/// none (Cyclone then picks one itself).
+QString allInterfaces()
+{
+    QString out;
+    for (const QNetworkInterface& i : QNetworkInterface::allInterfaces()) {
+        const auto flags = i.flags();
+        const auto entries = i.addressEntries();
+        const bool ipv4 = std::any_of(entries.begin(), entries.end(), [](const QNetworkAddressEntry& a) {
+            return a.ip().protocol() == QAbstractSocket::IPv4Protocol;
+        });
+        if (!ipv4 || !(flags & QNetworkInterface::IsUp) || !(flags & QNetworkInterface::IsRunning))
+            continue;
+        if (flags & QNetworkInterface::IsLoopBack)
+            out += u"<NetworkInterface name=\"%1\" multicast=\"false\"/>"_s.arg(i.name().toHtmlEscaped());
+        else if (flags & QNetworkInterface::CanMulticast)
+            out += u"<NetworkInterface name=\"%1\"/>"_s.arg(i.name().toHtmlEscaped());
+    }
+    return out.isEmpty() ? out : u"<Interfaces>"_s + out + u"</Interfaces>"_s;
+}
+
+/// The domain's configuration. On this host only (as rmw_cyclonedds_cpp and tests/ros2peer do
+/// it): unicast on 127.0.0.1 to the discovery ports of participant indices 0..30. Else every IPv4
+/// interface, multicast discovery, and a participant index too (0..119, the domain's port range),
+/// so that this host's localhost-only nodes, which send to those ports on 127.0.0.1, find us. Large
+/// samples come as bursts of fragments: the system's default receive buffer (208 KiB on a stock
+/// kernel) drops half of a 0.18 MB topic at 100 Hz (docs/BENCHMARKS.md), so 4 MiB are asked for
+/// (the kernel caps it at net.core.rmem_max).
+std::string domainConfig(bool localhostOnly)
+{
+    const QString general = localhostOnly ? u"<Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
+                                            u"<AllowMulticast>false</AllowMulticast>"_s
+                                          : allInterfaces();
+    const QString discovery = localhostOnly ? u"<ParticipantIndex>auto</ParticipantIndex>"
+                                              u"<MaxAutoParticipantIndex>30</MaxAutoParticipantIndex>"
+                                              u"<Peers><Peer Address=\"127.0.0.1\"/></Peers>"_s
+                                            : u"<ParticipantIndex>auto</ParticipantIndex>"
+                                              u"<MaxAutoParticipantIndex>119</MaxAutoParticipantIndex>"_s;
+    const QString xml = u"<CycloneDDS><Domain Id=\"any\"><General>"_s + general + u"</General><Discovery>"_s
+        + discovery + u"</Discovery><Internal><SocketReceiveBufferSize min=\"default\" max=\"4MB\"/></Internal>"
+                      u"<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>"_s;
+    return xml.toStdString();
+}
+
 } // namespace
 
-struct Ros2Engine::Private : public DomainParticipantListener
+struct Ros2Engine::Private
 {
-    mutable std::mutex mutex;
+    // Discovery: the owner thread's only (taken from Cyclone's built-in topics by poll()).
     std::map<QByteArray, Ros2Endpoint> endpoints; ///< ROS topics' writers and readers, by gid
     std::map<QByteArray, QString> services; ///< service endpoints: gid to service name
     std::map<QByteArray, Ros2ParticipantInfo> infos; ///< by the announcing participant's prefix
     std::set<QByteArray> participants; ///< remote participants' prefixes
+    std::map<dds_instance_handle_t, QByteArray> handles; ///< built-in topics' instances: their gid or prefix
     std::set<QByteArray> badInfoFrom;
     quint64 badInfo = 0;
     quint64 ignoredEndpoints = 0;
     QByteArray ownPrefix;
-    std::atomic<quint64> changes {1}; ///< bumped by the listener threads at every change of the tables
+    quint64 changes = 1; ///< bumped at every change of the tables
 
+    mutable std::mutex mutex; ///< for what Cyclone's listener thread touches: the subscriptions
     /// A subscribed topic: monitored, watched, or both.
     struct Monitored
     {
@@ -94,65 +138,116 @@ struct Ros2Engine::Private : public DomainParticipantListener
     std::map<QString, Monitored> monitored; ///< under `mutex`
     std::unique_ptr<EventBuffer<Ros2Arrival>> arrivals; ///< set by keepArrivals(), under `mutex`
 
-    DomainParticipant* participant = nullptr;
-    Subscriber* subscriber = nullptr;
+    dds_entity_t domain = 0;
+    dds_entity_t participant = 0;
+    dds_entity_t participantReader = 0; ///< DCPSParticipant
+    dds_entity_t publicationReader = 0; ///< DCPSPublication
+    dds_entity_t subscriptionReader = 0; ///< DCPSSubscription
     std::unique_ptr<Ros2RawReader> infoReader;
+
+    ~Private()
+    {
+        if (participant > 0)
+            dds_delete(participant); // its readers, topics and their listeners with it
+        if (domain > 0)
+            dds_delete(domain);
+    }
 
     void forgetParticipant(const QByteArray& prefix)
     {
         participants.erase(prefix);
         infos.erase(prefix);
-        for (auto* table : {&endpoints})
-            for (auto it = table->begin(); it != table->end();)
-                it = it->first.startsWith(prefix) ? table->erase(it) : std::next(it);
+        for (auto it = endpoints.begin(); it != endpoints.end();)
+            it = it->first.startsWith(prefix) ? endpoints.erase(it) : std::next(it);
         for (auto it = services.begin(); it != services.end();)
             it = it->first.startsWith(prefix) ? services.erase(it) : std::next(it);
     }
 
-    bool own(const rtps::GUID_t& guid) const { return prefixBytes(guid.guidPrefix) == ownPrefix; }
-
-    void on_participant_discovery(DomainParticipant*, rtps::ParticipantDiscoveryInfo&& info) override
+    /// What the built-in topics and ros_discovery_info brought since the last poll.
+    void poll()
     {
-        const QByteArray prefix = prefixBytes(info.info.m_guid.guidPrefix);
-        std::lock_guard<std::mutex> lock(mutex);
-        if (prefix == ownPrefix)
+        pollBuiltin(participantReader, [this](const void* s, bool alive, dds_instance_handle_t h) {
+            onParticipant(static_cast<const dds_builtintopic_participant_t*>(s), alive, h);
+        });
+        pollBuiltin(publicationReader, [this](const void* s, bool alive, dds_instance_handle_t h) {
+            onEndpoint(static_cast<const dds_builtintopic_endpoint_t*>(s), true, alive, h);
+        });
+        pollBuiltin(subscriptionReader, [this](const void* s, bool alive, dds_instance_handle_t h) {
+            onEndpoint(static_cast<const dds_builtintopic_endpoint_t*>(s), false, alive, h);
+        });
+        if (infoReader && infoReader->reader > 0)
+            infoReader->take(kMaxDiscoveryPerPoll);
+    }
+
+    /// Takes (loaned) samples of a built-in topic: `sample` null when the instance is gone.
+    template<typename F>
+    void pollBuiltin(dds_entity_t reader, F&& on)
+    {
+        constexpr int kBatch = 64;
+        for (int taken = 0; reader > 0 && taken < kMaxDiscoveryPerPoll;) {
+            void* samples[kBatch] = {};
+            dds_sample_info_t infos[kBatch];
+            const dds_return_t n = dds_take(reader, samples, infos, kBatch, kBatch);
+            if (n <= 0)
+                return;
+            for (dds_return_t i = 0; i < n; ++i) {
+                const bool alive = infos[i].instance_state == DDS_IST_ALIVE;
+                on(alive && infos[i].valid_data ? samples[i] : nullptr, alive, infos[i].instance_handle);
+            }
+            dds_return_loan(reader, samples, n);
+            taken += n;
+        }
+    }
+
+    void onParticipant(const dds_builtintopic_participant_t* p, bool alive, dds_instance_handle_t handle)
+    {
+        if (alive && !p)
+            return; // nothing new said
+        const auto known = handles.find(handle);
+        const QByteArray prefix = p ? prefixBytes(p->key) : known != handles.end() ? known->second : QByteArray();
+        if (p && prefix != ownPrefix && alive)
+            handles[handle] = prefix;
+        if (prefix.isEmpty() || prefix == ownPrefix)
             return;
-        switch (info.status) {
-        case rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT:
-        case rtps::ParticipantDiscoveryInfo::CHANGED_QOS_PARTICIPANT:
+        if (alive) {
             participants.insert(prefix);
-            break;
-        case rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT:
-        case rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT:
-        default:
+        } else {
             forgetParticipant(prefix);
-            break;
+            handles.erase(handle);
         }
         ++changes;
     }
 
-    void endpoint(const rtps::GUID_t& guid, const std::string& ddsTopic, const std::string& ddsType,
-                  const Ros2Qos& qos, bool publisher, bool removed)
+    void onEndpoint(const dds_builtintopic_endpoint_t* e, bool publisher, bool alive, dds_instance_handle_t handle)
     {
-        if (own(guid))
-            return;
-        const QByteArray gid = gidBytes(guid);
-        std::lock_guard<std::mutex> lock(mutex);
-        ++changes;
-        if (removed) {
-            endpoints.erase(gid);
-            services.erase(gid);
+        if (!alive) {
+            const auto h = handles.find(handle);
+            if (h == handles.end())
+                return;
+            endpoints.erase(h->second);
+            services.erase(h->second);
+            handles.erase(h);
+            ++changes;
             return;
         }
+        if (!e || prefixBytes(e->participant_key) == ownPrefix || prefixBytes(e->key) == ownPrefix)
+            return;
+        endpoint(gidBytes(e->key), handle, e->topic_name, e->type_name, qosOf(e->qos, publisher), publisher);
+    }
+
+    void endpoint(const QByteArray& gid, dds_instance_handle_t handle, const char* ddsTopic, const char* ddsType,
+                  const Ros2Qos& qos, bool publisher)
+    {
         QString name;
-        const auto kind = Ros2Names::classifyDdsTopic(QString::fromStdString(ddsTopic), &name);
+        const auto kind = Ros2Names::classifyDdsTopic(QString::fromUtf8(ddsTopic ? ddsTopic : ""), &name);
         if (kind == Ros2Names::TopicKind::Other)
             return;
-        if (endpoints.size() + services.size() >= kMaxEndpoints && !endpoints.count(gid)
-            && !services.count(gid)) {
+        if (endpoints.size() + services.size() >= kMaxEndpoints && !endpoints.count(gid) && !services.count(gid)) {
             ++ignoredEndpoints;
             return;
         }
+        ++changes;
+        handles[handle] = gid;
         if (kind != Ros2Names::TopicKind::Topic) {
             services[gid] = name;
             return;
@@ -160,40 +255,23 @@ struct Ros2Engine::Private : public DomainParticipantListener
         Ros2Endpoint& e = endpoints[gid];
         e.gid = gid;
         e.topic = name;
-        e.type = Ros2Names::rosType(QString::fromStdString(ddsType));
+        e.type = Ros2Names::rosType(QString::fromUtf8(ddsType ? ddsType : ""));
         e.publisher = publisher;
         e.qos = qos;
     }
 
-    void on_publisher_discovery(DomainParticipant*, rtps::WriterDiscoveryInfo&& info) override
+    /// On the owner thread (taken by poll()).
+    void onDiscoveryInfo(const Ros2RawSample& sample, const dds_sample_info_t& info)
     {
-        const auto& w = info.info;
-        endpoint(w.guid(), w.topicName().to_string(), w.typeName().to_string(),
-                 qosOf(w.m_qos.m_reliability, w.m_qos.m_durability), true,
-                 info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER);
-    }
-
-    void on_subscriber_discovery(DomainParticipant*, rtps::ReaderDiscoveryInfo&& info) override
-    {
-        const auto& r = info.info;
-        endpoint(r.guid(), r.topicName().to_string(), r.typeName().to_string(),
-                 qosOf(r.m_qos.m_reliability, r.m_qos.m_durability), false,
-                 info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
-    }
-
-    void onDiscoveryInfo(const Ros2RawSample& sample, const SampleInfo& info)
-    {
-        const QByteArray prefix = prefixBytes(info.sample_identity.writer_guid().guidPrefix);
-        const QByteArray bytes(reinterpret_cast<const char*>(sample.bytes.data()),
-                               qsizetype(sample.bytes.size()));
+        const QByteArray prefix = writerPrefix(info.publication_handle);
+        if (prefix.isEmpty() || prefix == ownPrefix)
+            return;
+        const QByteArray bytes(reinterpret_cast<const char*>(sample.data), qsizetype(sample.size));
         QString error;
         auto parsed = Ros2DiscoveryInfo::parse(bytes, &error);
-        std::lock_guard<std::mutex> lock(mutex);
-        if (prefix == ownPrefix)
-            return;
+        ++changes; // when not read: the graph is the same, but what is shown with it (the count) is not
         if (!parsed) {
             ++badInfo;
-            ++changes; // the graph is the same, but what is shown with it (the count) is not
             // the first 16 participants are named in the log, once each; the set stays that small
             if (badInfoFrom.size() < 16 && badInfoFrom.insert(prefix).second)
                 qCWarning(lcRos2).noquote()
@@ -202,9 +280,20 @@ struct Ros2Engine::Private : public DomainParticipantListener
         }
         // a participant speaks for itself only: its announcement is kept under its own prefix
         infos[prefix] = std::move(*parsed);
-        ++changes;
     }
 
+    /// The participant of the writer of a ros_discovery_info sample, by what discovery said of it.
+    QByteArray writerPrefix(dds_instance_handle_t writer) const
+    {
+        dds_builtintopic_endpoint_t* w = dds_get_matched_publication_data(infoReader->reader, writer);
+        if (!w)
+            return {};
+        const QByteArray prefix = prefixBytes(w->participant_key);
+        dds_builtintopic_free_endpoint(w);
+        return prefix;
+    }
+
+    /// On Cyclone's listener thread.
     void onSample(const QString& topic, const Ros2RawSample& sample)
     {
         const qint64 now = wallClockNs();
@@ -214,30 +303,16 @@ struct Ros2Engine::Private : public DomainParticipantListener
             return;
         Ros2MonitorStats& s = it->second.stats;
         ++s.messages;
-        s.bytes += sample.bytes.size();
-        s.lastSize = int(sample.bytes.size());
+        s.bytes += sample.size;
+        s.lastSize = int(sample.size);
         s.lastNs = now;
-        s.lastMessage
-            = QByteArray(reinterpret_cast<const char*>(sample.bytes.data()), qsizetype(sample.bytes.size()));
+        s.lastMessage = QByteArray(reinterpret_cast<const char*>(sample.data), qsizetype(sample.size));
         it->second.rates.add(now, s.lastSize);
         if (it->second.watched)
             it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
         if (arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
             arrivals->push(
                 Ros2Arrival {topic, now, s.lastSize, s.lastMessage.mid(4, Ros2Arrival::kHeadBytes)});
-    }
-
-    Topic* topicFor(const std::string& ddsTopic, const std::string& ddsType)
-    {
-        if (!participant->find_type(ddsType).empty()
-            || TypeSupport(new Ros2RawType(ddsType)).register_type(participant) == ReturnCode_t::RETCODE_OK) {
-            if (auto* desc = participant->lookup_topicdescription(ddsTopic)) {
-                auto* t = dynamic_cast<Topic*>(desc);
-                return t && t->get_type_name() == ddsType ? t : nullptr;
-            }
-            return participant->create_topic(ddsTopic, ddsType, TOPIC_QOS_DEFAULT);
-        }
-        return nullptr;
     }
 
     /// Ends a use of a topic's subscription (monitor() or watchMessages()), and the subscription
@@ -260,17 +335,7 @@ struct Ros2Engine::Private : public DomainParticipantListener
             monitored.erase(it);
         }
         if (reader)
-            deleteReader(*reader); // waits for a callback in flight; onSample then finds no entry
-    }
-
-    void deleteReader(Ros2RawReader& r)
-    {
-        if (r.reader)
-            subscriber->delete_datareader(r.reader);
-        if (r.topic)
-            participant->delete_topic(r.topic);
-        r.reader = nullptr;
-        r.topic = nullptr;
+            reader->close(); // waits for a callback in flight; onSample then finds no entry
     }
 };
 
@@ -288,7 +353,20 @@ Ros2Engine::~Ros2Engine()
 
 bool Ros2Engine::isRunning() const
 {
-    return d && d->participant;
+    return d && d->participant > 0;
+}
+
+/// Our participant, as rmw makes one: named, with the enclave in its user data so that ROS 2 tools
+/// show what we are.
+static dds_entity_t createParticipant(dds_domainid_t domain)
+{
+    dds_qos_t* qos = dds_create_qos();
+    dds_qset_entity_name(qos, "bridgescope");
+    const char enclave[] = "enclave=/;";
+    dds_qset_userdata(qos, enclave, sizeof enclave - 1);
+    const dds_entity_t participant = dds_create_participant(domain, qos, nullptr);
+    dds_delete_qos(qos);
+    return participant;
 }
 
 bool Ros2Engine::start(const Ros2Options& options, QString* error)
@@ -301,69 +379,33 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
                          .arg(Ros2Options::kMaxDomain);
         return false;
     }
-    static std::once_flag quiet;
-    std::call_once(quiet, [] { Log::SetVerbosity(Log::Error); });
-
+    // Errors only: every malformed datagram would be a warning line on stderr, and the parent
+    // forwards what we print (a flood of hostile datagrams would flood its terminal).
+    dds_set_log_mask(DDS_LC_FATAL | DDS_LC_ERROR);
     m_options = options;
     d = std::make_shared<Private>();
-    DomainParticipantQos qos = PARTICIPANT_QOS_DEFAULT;
-    qos.name("bridgescope");
-    // as rmw does, so that ROS 2 tools show what we are
-    const std::string enclave = "enclave=/;";
-    qos.user_data().data_vec(std::vector<rtps::octet>(enclave.begin(), enclave.end()));
-    // Large samples come as bursts of fragments: the system's default receive buffer (208 KiB on a
-    // stock kernel) drops half of a 0.18 MB topic at 100 Hz (docs/BENCHMARKS.md). The kernel caps
-    // this at net.core.rmem_max.
-    constexpr uint32_t kReceiveBuffer = 4 * 1024 * 1024;
-    qos.transport().listen_socket_buffer_size = kReceiveBuffer;
-    if (options.localhostOnly) {
-        auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
-        udp->interfaceWhiteList.emplace_back("127.0.0.1");
-        udp->maxInitialPeersRange = 32; // participants on this host, found by unicast
-        udp->receiveBufferSize = kReceiveBuffer;
-        qos.transport().use_builtin_transports = false;
-        qos.transport().user_transports.push_back(udp);
-        rtps::Locator_t peer;
-        peer.kind = LOCATOR_KIND_UDPv4;
-        eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, 127, 0, 0, 1);
-        qos.wire_protocol().builtin.initialPeersList.push_back(peer);
-    }
-    d->participant = DomainParticipantFactory::get_instance()->create_participant(
-        options.domain, qos, d.get(), StatusMask::none());
-    if (!d->participant) {
+    d->domain = dds_create_domain(dds_domainid_t(options.domain), domainConfig(options.localhostOnly).c_str());
+    if (d->domain > 0)
+        d->participant = createParticipant(dds_domainid_t(options.domain));
+    if (d->participant <= 0) {
+        const QString why = QString::fromUtf8(dds_strretcode(d->domain > 0 ? d->participant : d->domain));
         d.reset();
         if (error)
-            *error = tr("Fast DDS could not create a participant on domain %1 (no usable network interface "
-                        "or ports?)")
-                         .arg(options.domain);
+            *error = tr("Cyclone DDS could not create a participant on domain %1 (%2: no usable network "
+                        "interface or ports?)")
+                         .arg(options.domain)
+                         .arg(why);
         return false;
     }
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        d->ownPrefix = prefixBytes(d->participant->guid().guidPrefix);
-        if (m_keepArrivals)
-            d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(m_keepArrivals);
-    }
-    d->subscriber = d->participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
-
-    // node names: every participant's ros_discovery_info, kept (transient local) by its writer
-    d->infoReader = std::make_unique<Ros2RawReader>();
-    Private* p = d.get();
-    d->infoReader->onSample = [p](const Ros2RawSample& s, const SampleInfo& i) { p->onDiscoveryInfo(s, i); };
-    d->infoReader->topic
-        = d->topicFor("ros_discovery_info", "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
-    if (d->infoReader->topic && d->subscriber) {
-        DataReaderQos rq = DATAREADER_QOS_DEFAULT;
-        rq.reliability().kind = RELIABLE_RELIABILITY_QOS;
-        rq.durability().kind = TRANSIENT_LOCAL_DURABILITY_QOS;
-        rq.history().kind = KEEP_ALL_HISTORY_QOS;
-        rq.resource_limits().max_samples = 1000;
-        rq.endpoint().history_memory_policy = rtps::DYNAMIC_REUSABLE_MEMORY_MODE;
-        d->infoReader->reader
-            = d->subscriber->create_datareader(d->infoReader->topic, rq, d->infoReader.get());
-    }
-    if (!d->infoReader->reader)
-        qCWarning(lcRos2) << "no reader for ros_discovery_info: topics show without node names";
+    dds_guid_t own;
+    if (dds_get_guid(d->participant, &own) == DDS_RETCODE_OK)
+        d->ownPrefix = prefixBytes(own);
+    d->participantReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr);
+    d->publicationReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
+    d->subscriptionReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
+    if (m_keepArrivals)
+        d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(m_keepArrivals);
+    openDiscoveryInfo();
     m_pending.invalidate(); // a new Private counts its changes from 1
     m_builtChanges = 0;
     m_polledChanges = 0;
@@ -372,22 +414,30 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     return true;
 }
 
+/// Node names: every participant's ros_discovery_info, kept (transient local) by its writer and
+/// taken by the poll, on this thread.
+void Ros2Engine::openDiscoveryInfo()
+{
+    d->infoReader = std::make_unique<Ros2RawReader>();
+    Private* p = d.get();
+    d->infoReader->onSample = [p](const Ros2RawSample& s, const dds_sample_info_t& i) { p->onDiscoveryInfo(s, i); };
+    d->infoReader->topic = Ros2RawType::createTopic(d->participant, "ros_discovery_info",
+                                                    "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
+    dds_qos_t* qos = dds_create_qos();
+    dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
+    dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
+    dds_qset_history(qos, DDS_HISTORY_KEEP_ALL, 0);
+    dds_qset_resource_limits(qos, 1000, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
+    if (d->infoReader->topic <= 0 || !d->infoReader->open(d->participant, qos, false))
+        qCWarning(lcRos2) << "no reader for ros_discovery_info: topics show without node names";
+    dds_delete_qos(qos);
+}
+
 void Ros2Engine::stop()
 {
     m_timer.stop();
-    if (!d)
-        return;
-    if (d->participant) {
-        // readers first, while their listeners still live; then everything else
-        {
-            std::lock_guard<std::mutex> lock(d->mutex);
-            for (auto& [topic, m] : d->monitored)
-                m.reader->onSample = nullptr;
-        }
-        d->participant->delete_contained_entities();
-        DomainParticipantFactory::get_instance()->delete_participant(d->participant);
-        d->participant = nullptr;
-    }
+    // The participant with everything in it, then the domain (Private's destructor): deleting a
+    // reader waits for its listener in flight, which still finds the tables it writes to.
     d.reset();
     m_graph = Ros2Graph();
 }
@@ -396,7 +446,6 @@ quint64 Ros2Engine::badDiscoveryInfo() const
 {
     if (!d)
         return 0;
-    std::lock_guard<std::mutex> lock(d->mutex);
     return d->badInfo;
 }
 
@@ -406,7 +455,8 @@ void Ros2Engine::refresh()
     // graph's discovery), and at least once a graph interval while they go on.
     if (!d)
         return;
-    const quint64 changes = d->changes.load();
+    d->poll();
+    const quint64 changes = d->changes;
     if (changes == m_builtChanges)
         return;
     const bool quiet = changes == m_polledChanges;
@@ -423,7 +473,6 @@ void Ros2Engine::refresh()
     int participants = 0;
     quint64 bad = 0;
     {
-        std::lock_guard<std::mutex> lock(d->mutex);
         bad = d->badInfo;
         endpoints.reserve(qsizetype(d->endpoints.size()));
         for (const auto& [gid, e] : d->endpoints)
@@ -452,7 +501,7 @@ void Ros2Engine::refresh()
 
 void Ros2Engine::monitor(const QString& topic, bool waitForType)
 {
-    if (!d || !d->participant || (waitForType && !m_graph.topic(topic) && !m_monitorUses.contains(topic))) {
+    if (!d || d->participant <= 0 || (waitForType && !m_graph.topic(topic) && !m_monitorUses.contains(topic))) {
         ++m_monitorUses[topic]; // subscribed after start(), once the graph has the topic
         return;
     }
@@ -489,16 +538,11 @@ bool Ros2Engine::subscribe(const QString& topic, bool monitored, QString* why)
         ddsType = type;
     auto reader = std::make_unique<Ros2RawReader>();
     Private* p = d.get();
-    reader->onSample = [p, topic](const Ros2RawSample& s, const SampleInfo&) { p->onSample(topic, s); };
-    reader->topic = d->topicFor(Ros2Names::ddsTopic(topic).toStdString(), ddsType.toStdString());
-    if (reader->topic && d->subscriber) {
-        DataReaderQos rq = DATAREADER_QOS_DEFAULT;
-        // best effort and volatile match every publisher
-        rq.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
-        rq.durability().kind = VOLATILE_DURABILITY_QOS;
-        rq.history().kind = KEEP_LAST_HISTORY_QOS;
-        rq.history().depth = 10;
-        rq.endpoint().history_memory_policy = rtps::DYNAMIC_REUSABLE_MEMORY_MODE;
+    reader->onSample = [p, topic](const Ros2RawSample& s, const dds_sample_info_t&) { p->onSample(topic, s); };
+    reader->topic = Ros2RawType::createTopic(d->participant, Ros2Names::ddsTopic(topic).toStdString(),
+                                             ddsType.toStdString());
+    bool opened = false;
+    if (reader->topic > 0) {
         {
             std::lock_guard<std::mutex> lock(d->mutex);
             auto& m = d->monitored[topic];
@@ -507,14 +551,22 @@ bool Ros2Engine::subscribe(const QString& topic, bool monitored, QString* why)
             if (const auto w = m_watched.constFind(topic); w != m_watched.cend())
                 m.watched = std::make_unique<NewestQueue<Ros2Sample>>(w->maxMessages, w->maxBytes);
         }
-        reader->reader = d->subscriber->create_datareader(reader->topic, rq, reader.get());
+        // best effort and volatile match every publisher
+        dds_qos_t* qos = dds_create_qos();
+        dds_qset_reliability(qos, DDS_RELIABILITY_BEST_EFFORT, 0);
+        dds_qset_durability(qos, DDS_DURABILITY_VOLATILE);
+        dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 10);
+        const dds_data_representation_id_t any[] = {DDS_DATA_REPRESENTATION_XCDR1, DDS_DATA_REPRESENTATION_XCDR2};
+        dds_qset_data_representation(qos, 2, any);
+        opened = reader->open(d->participant, qos, true);
+        dds_delete_qos(qos);
     }
-    if (!reader->reader) {
-        d->deleteReader(*reader);
+    if (!opened) {
+        reader->close();
         std::lock_guard<std::mutex> lock(d->mutex);
         d->monitored.erase(topic);
         if (why)
-            *why = tr("Fast DDS could not subscribe to %1 as %2").arg(topic, type);
+            *why = tr("Cyclone DDS could not subscribe to %1 as %2").arg(topic, type);
         return false;
     }
     std::lock_guard<std::mutex> lock(d->mutex);
@@ -528,7 +580,7 @@ void Ros2Engine::unmonitor(const QString& topic)
     if (uses == m_monitorUses.end() || --uses.value() > 0)
         return; // not monitored, or still wanted by another user
     m_monitorUses.erase(uses);
-    if (d && d->participant)
+    if (d && d->participant > 0)
         d->release(topic, true);
 }
 
@@ -552,7 +604,7 @@ bool Ros2Engine::isSubscribed(const QString& topic) const
 void Ros2Engine::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
 {
     m_watched.insert(topic, {maxMessages, maxBytes});
-    if (!d || !d->participant)
+    if (!d || d->participant <= 0)
         return; // start() and the graph bring the subscription
     {
         std::lock_guard<std::mutex> lock(d->mutex);
@@ -570,7 +622,7 @@ void Ros2Engine::watchMessages(const QString& topic, std::size_t maxMessages, qi
 void Ros2Engine::unwatchMessages(const QString& topic)
 {
     m_watched.remove(topic);
-    if (d && d->participant)
+    if (d && d->participant > 0)
         d->release(topic, false);
 }
 

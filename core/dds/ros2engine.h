@@ -14,17 +14,18 @@
 #include <QTimer>
 #include <vector>
 
-/// A DDS participant that sees a ROS 2 graph on the wire (the only code that uses Fast DDS).
+/// A DDS participant that sees a ROS 2 graph on the wire (the only code that uses Cyclone DDS).
 ///
-/// It runs only in `bridgescope-dds`, the child process that Ros2Participant starts: Fast DDS
-/// parses every datagram any host of the domain sends, and Debian's 2.9 lacks upstream security
-/// fixes (one datagram aborts it, others make it allocate gigabytes).
+/// It runs only in `bridgescope-dds`, the child process that Ros2Participant starts: the DDS
+/// library parses every datagram any host of the domain sends, and a crash or a runaway
+/// allocation there must not take the window or a command with it (docs/ROBUSTNESS.md).
 ///
-/// Discovery comes from Fast DDS's listener threads into a table under a lock; the graph is
-/// rebuilt on the thread that owns this object when the changes pause for a poll (kPollMs), or
-/// once a graph interval (250 ms unless setGraphInterval()) while they go on, and graphChanged()
-/// fires only when it changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes.
-/// Nothing here blocks on the network.
+/// Discovery is taken from Cyclone's built-in topics (DCPSParticipant, DCPSPublication,
+/// DCPSSubscription) and ros_discovery_info by a poll (kPollMs) on the thread that owns this
+/// object; the graph is rebuilt there when the changes pause for a poll, or once a graph interval
+/// (250 ms unless setGraphInterval()) while they go on, and graphChanged() fires only when it
+/// changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes, on Cyclone's
+/// listener thread, into figures under a lock. Nothing here blocks on the network.
 class Ros2Engine : public QObject
 {
     Q_OBJECT
@@ -80,10 +81,11 @@ private:
         qint64 maxBytes = 0;
     };
     void refresh();
-    /// Makes the topic's reader; false with `why` when the graph has no type for it or Fast DDS
+    /// Makes the topic's reader; false with `why` when the graph has no type for it or Cyclone
     /// refuses.
     bool subscribe(const QString& topic, bool monitored, QString* why);
     bool isSubscribed(const QString& topic) const;
+    void openDiscoveryInfo();
 
     struct Private;
     std::shared_ptr<Private> d;
@@ -94,7 +96,7 @@ private:
     Ros2Graph m_graph;
     int m_graphInterval = 250;
     quint64 m_shownBadInfo = 0; ///< badDiscoveryInfo() when graphChanged() last fired
-    quint64 m_builtChanges = 0; ///< the listener's change count the graph was built from
+    quint64 m_builtChanges = 0; ///< the poll's change count the graph was built from
     quint64 m_polledChanges = 0; ///< the change count the previous poll saw
     QElapsedTimer m_pending; ///< since the first change not in the graph
     QTimer m_timer;

@@ -1,59 +1,49 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// Fast DDS's side of a type-agnostic subscription; included by ros2engine.cpp only, so that
-// Fast DDS stays out of every header other layers see.
+// Cyclone DDS's side of a type-agnostic subscription; included by ros2engine.cpp only, so that
+// Cyclone stays out of every header other layers see.
 
 #include <atomic>
-#include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/DataReaderListener.hpp>
-#include <fastdds/dds/subscriber/SampleInfo.hpp>
-#include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/dds/topic/TopicDataType.hpp>
+#include <cstddef>
+#include <dds/dds.h>
 #include <functional>
 #include <QtGlobal>
 #include <string>
-#include <vector>
 
-/// A sample as its CDR bytes, encapsulation header included.
+/// A sample as its CDR bytes, encapsulation header included (a view: valid during the callback).
 struct Ros2RawSample
 {
-    std::vector<unsigned char> bytes;
+    const unsigned char* data = nullptr;
+    std::size_t size = 0;
 };
 
-/// A type that takes any sample as bytes, whatever its name says (roscpp's ShapeShifter for DDS).
-class Ros2RawType : public eprosima::fastdds::dds::TopicDataType
-{
-public:
-    static constexpr int kMaxSampleBytes = 64 * 1024 * 1024;
+/// A type that takes any sample as bytes, whatever its name says (roscpp's ShapeShifter for DDS):
+/// a Cyclone sertype whose serdata is the serialized sample as it came, as rmw_cyclonedds_cpp's
+/// and tests/ros2peer/peer_sertype.c's are.
+namespace Ros2RawType {
+/// Samples larger than this are dropped as they arrive (Cyclone counts them as not deserialized).
+constexpr std::size_t kMaxSampleBytes = 64 * 1024 * 1024;
 
-    explicit Ros2RawType(const std::string& name);
-    bool serialize(void* data, eprosima::fastrtps::rtps::SerializedPayload_t* payload) override;
-    bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override;
-    std::function<uint32_t()> getSerializedSizeProvider(void* data) override;
-    void* createData() override;
-    void deleteData(void* data) override;
-    bool getKey(void*, eprosima::fastrtps::rtps::InstanceHandle_t*, bool) override { return false; }
-};
+/// Topic `name` of DDS type `type` in `participant`, any sample taken as bytes; a negative
+/// Cyclone return code when it cannot be made.
+dds_entity_t createTopic(dds_entity_t participant, const std::string& name, const std::string& type);
+} // namespace Ros2RawType
 
-/// A topic we read, with its own reader and figures (callbacks on Fast DDS's threads).
-struct Ros2RawReader : public eprosima::fastdds::dds::DataReaderListener
+/// A topic we read, with its own reader and figures (callbacks on Cyclone's listener thread).
+struct Ros2RawReader
 {
-    std::function<void(const Ros2RawSample&, const eprosima::fastdds::dds::SampleInfo&)> onSample;
-    eprosima::fastdds::dds::Topic* topic = nullptr;
-    eprosima::fastdds::dds::DataReader* reader = nullptr;
+    std::function<void(const Ros2RawSample&, const dds_sample_info_t&)> onSample;
+    dds_entity_t topic = 0;
+    dds_entity_t reader = 0;
     std::atomic<int> matched {0};
     std::atomic<quint64> lost {0};
 
-    void on_data_available(eprosima::fastdds::dds::DataReader* r) override;
-    void on_subscription_matched(eprosima::fastdds::dds::DataReader*,
-                                 const eprosima::fastdds::dds::SubscriptionMatchedStatus& status) override
-    {
-        matched = status.current_count;
-    }
-    void on_sample_lost(eprosima::fastdds::dds::DataReader*,
-                        const eprosima::fastdds::dds::SampleLostStatus& status) override
-    {
-        lost = quint64(status.total_count);
-    }
+    /// Makes the reader of `topic` with `qos`, samples to onSample from a listener (with
+    /// `listen`) or from take() only; false when Cyclone refuses.
+    bool open(dds_entity_t participant, const dds_qos_t* qos, bool listen);
+    /// Takes at most `max` samples there are now, each to onSample; the number taken.
+    int take(int max);
+    /// Deletes the reader and the topic (waits for a listener callback in flight).
+    void close();
 };

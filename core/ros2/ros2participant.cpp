@@ -132,12 +132,10 @@ void Ros2Participant::launch()
     // what the child logs goes where ours goes, without passing through this process's memory
     child->setProcessChannelMode(QProcess::ForwardedErrorChannel);
 #if defined(__SANITIZE_ADDRESS__)
-    // The child runs Fast DDS, whose headers pair new and delete differently (as the tests that run
-    // a participant in-process needed). Its address space is not limited under ASan (the shadow
-    // needs terabytes): ASan's own RSS limit ends a runaway instead.
+    // The child's address space is not limited under ASan (the shadow needs terabytes): ASan's own
+    // RSS limit ends a runaway instead.
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(u"ASAN_OPTIONS"_s,
-               env.value(u"ASAN_OPTIONS"_s) + u":new_delete_type_mismatch=0:hard_rss_limit_mb=1536"_s);
+    env.insert(u"ASAN_OPTIONS"_s, env.value(u"ASAN_OPTIONS"_s) + u":hard_rss_limit_mb=1536"_s);
     child->setProcessEnvironment(env);
 #endif
     connect(child, &QProcess::readyReadStandardOutput, this, &Ros2Participant::onOutput);

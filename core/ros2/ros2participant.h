@@ -20,9 +20,10 @@ template<typename T> class EventBuffer;
 
 /// A ROS 2 graph on the wire, seen through a DDS participant that runs in a child process.
 ///
-/// Fast DDS parses every datagram any host of the domain sends, and Debian's 2.9 lacks upstream
-/// security fixes: one datagram aborts it, others make it allocate gigabytes. So the participant
-/// (Ros2Engine, core/dds) runs in `bridgescope-dds`, under an address-space limit, and this object
+/// The DDS library parses every datagram any host of the domain sends (Debian's Fast DDS 2.9, used
+/// before, could be aborted by one datagram; Cyclone DDS 0.10, used now, goes through the same
+/// corpus, but is one bug away from it: docs/ROBUSTNESS.md). So the participant (Ros2Engine,
+/// core/dds, on Cyclone DDS) runs in `bridgescope-dds`, under an address-space limit, and this object
 /// talks to it through a pipe of bounded frames (Ros2Protocol). When the child crashes, runs out of
 /// its memory, stops answering or sends a frame that does not read, it is ended and started again
 /// after a backoff (restarts() counts it, restarted() says why), and everything asked of it
@@ -40,7 +41,7 @@ public:
     ~Ros2Participant() override;
 
     /// Starts the child that joins the domain; false with `error` when the domain is out of range
-    /// or the child cannot be started. A participant that Fast DDS cannot make (no usable
+    /// or the child cannot be started. A participant that the DDS library cannot make (no usable
     /// transport) is said later, by lastError() and graphChanged().
     bool start(const Ros2Options& options, QString* error = nullptr);
     void stop();

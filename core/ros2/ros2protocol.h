@@ -10,7 +10,7 @@
 #include <QString>
 #include <vector>
 
-/// The pipe between Ros2Participant and `bridgescope-dds`, the child process that runs Fast DDS.
+/// The pipe between Ros2Participant and `bridgescope-dds`, the child process that runs Cyclone DDS.
 ///
 /// Both directions are frames: a 4-byte little-endian length, a kind byte, and a body of at most
 /// kMaxFrameBytes. Bodies are written with Writer and read with Reader, which checks every length

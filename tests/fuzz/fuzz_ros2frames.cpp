@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Fuzz target for what bridgescope-dds sends Bridgescope: Ros2Protocol frames on a pipe. The child
-// runs Fast DDS, which a datagram from any host of the domain can take over, so its frames are
-// hostile input: cut into frames by FrameReader, each body read by the decoder of its kind, and the
-// samples of watched topics on to the CDR decoder, as the field plots decode them.
+// runs a DDS library (Cyclone DDS) that a datagram from any host of the domain could take over, so
+// its frames are hostile input: cut into frames by FrameReader, each body read by the decoder of
+// its kind, and the samples of watched topics on to the CDR decoder, as the field plots decode them.
 //
 // Input: the byte stream; its first byte sets the slice size it is fed in. Properties: a stream
 // that fails says why and keeps nothing; a body that reads writes back to bytes that read the same;

@@ -31,9 +31,11 @@ field() { dpkg-deb -f "$deb" "$1"; }
 [ "$(field Version)" = "$version" ] || fail "Version: $(field Version), the project is $version"
 [ "$(field Section)" = science ] || fail "Section: $(field Section)"
 [[ "$(field Maintainer)" == *"<"*"@"*">" ]] || fail "Maintainer: $(field Maintainer)"
-for dep in libqt6core6 libqt6widgets6 libroscpp libyaml-cpp libpaho-mqttpp3 libqt6sql6-sqlite; do
+for dep in libqt6core6 libqt6widgets6 libroscpp libyaml-cpp libpaho-mqttpp3 libqt6sql6-sqlite libddsc0debian; do
     [[ "$(field Depends)" == *"$dep"* ]] || fail "Depends lacks $dep (dpkg-shlibdeps): $(field Depends)"
 done
+# bridgescope-dds runs on Cyclone DDS: Fast DDS is no dependency any more (issue 31)
+[[ "$(field Depends)" != *libfastrtps* ]] || fail "Depends still names Fast DDS: $(field Depends)"
 for rec in mosquitto python3-rosmaster; do
     [[ "$(field Recommends)" == *"$rec"* ]] || fail "Recommends lacks $rec: $(field Recommends)"
 done

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// A ROS 2 node on the wire, built on Cyclone DDS (tests/ros2peer): the other DDS implementation than
-// the Fast DDS Bridgescope uses, so that what the tests see proves interoperability.
+// A ROS 2 node on the wire, built on Cyclone DDS (tests/ros2peer) and speaking as
+// rmw_cyclonedds_cpp does: a process and a DDS stack of its own, not Bridgescope's raw-type
+// participant, so that what the tests see is what such a node puts on the wire. (Bridgescope runs
+// on Cyclone DDS too since issue 31: interoperability with Fast DDS nodes is not what these show.)
 
 #include <memory>
 #include <QElapsedTimer>
