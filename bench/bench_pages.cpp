@@ -137,10 +137,11 @@ int main(int argc, char** argv)
     std::printf("# bench_pages: the window on the demo lab, %d s a page after %d s of warm-up\n", seconds, warmup);
     std::printf("| page | window CPU %% of a core | mosquitto_sub %% | ratio | budget %% |\n| --- | ---: | ---: | ---: | ---: |\n");
     const auto report = [](const QString& name, const Span& s, double budget) {
-        // the gate's figure: name "pages_<page>_vs_mosquitto_sub"
-        QByteArray gate = "pages_" + name.toLower().toUtf8() + "_vs_mosquitto_sub";
+        // The gate's figure is the window's own CPU, "pages_<page>_cpu_percent": the peer's is a few
+        // clock ticks (10 ms each) in a short run, too coarse to divide by.
+        QByteArray gate = "pages_" + name.toLower().toUtf8() + "_cpu_percent";
         gate.replace(' ', '_').replace(',', "");
-        Bench::gate(gate.constData(), s.peerPercent > 0 ? s.ownPercent / s.peerPercent : 0);
+        Bench::gate(gate.constData(), s.ownPercent);
         std::printf("| %s | %.2f | %.2f | %.2f | %.0f |\n", qPrintable(name), s.ownPercent, s.peerPercent,
                     s.peerPercent > 0 ? s.ownPercent / s.peerPercent : 0.0, budget);
         std::fflush(stdout);

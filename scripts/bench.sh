@@ -24,7 +24,7 @@ gate() {
         "bench_discovery       BENCH_TOPICS=2000 BENCH_RATE=5000 BENCH_SECONDS=8"
         "bench_watch           BENCH_LINKS=300 BENCH_SECONDS=12"
         "bench_bridge          BENCH_COUNT=40 BENCH_SWEEP=0"
-        "bench_pages           BENCH_WARMUP_S=10 BENCH_SECONDS=6"
+        "bench_pages           BENCH_WARMUP_S=10 BENCH_SECONDS=8"
         "bench_startup         BENCH_RUNS=3"
     )
     local targets=()
@@ -49,6 +49,8 @@ gate() {
         fi
         grep '^GATE ' "$log" | sed "s/^GATE /$name /" >>"$figures" || true
     done
+    echo "measured:" >&2
+    sed 's/^/  /' "$figures" >&2
     # bench/gate.txt: "figure  <=|>=  threshold  why"; every figure it names must have been measured
     printf '%-48s %10s %3s %9s  %s\n' figure value op threshold verdict
     while read -r figure op threshold _; do
