@@ -119,7 +119,9 @@ private slots:
                         u"--ros-localhost-only"_s, u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()),
                         u"--seconds"_s, u"25"_s, u"--json"_s});
         QVERIFY(discover.waitForStarted());
-        QTest::qWait(3000); // it joined
+        // its DDS process runs (a loaded machine, an ASan build: seconds), then it joins
+        QTRY_VERIFY_WITH_TIMEOUT(DdsChild::of(discover.processId()) > 0, 20000);
+        QTest::qWait(2000);
         RtpsCorpus::send(domain, m_corpus, 1000);
         QTest::qWait(1000);
         QVERIFY(DdsChild::kill(SIGABRT, discover.processId()) > 0);
@@ -148,7 +150,8 @@ private slots:
                     {u"watch"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain),
                      u"--ros-localhost-only"_s, u"--broker"_s, servers.brokerUrl(), u"--seconds"_s, u"20"_s});
         QVERIFY(watch.waitForStarted());
-        QTest::qWait(3000);
+        QTRY_VERIFY_WITH_TIMEOUT(DdsChild::of(watch.processId()) > 0, 20000);
+        QTest::qWait(2000);
         RtpsCorpus::send(domain, m_corpus, 1000);
         QTest::qWait(1000);
         QVERIFY(DdsChild::kill(SIGABRT, watch.processId()) > 0);
