@@ -3,6 +3,8 @@
 # Installs what is missing, builds, and runs every test (unit, integration, gui, fuzz, and the
 # Debian package of that build: tests/package), then the unit and integration tests again under
 # ASan+UBSan (scripts/sanitize.sh asan, a build of its own; BRIDGESCOPE_TEST_ASAN=0 skips it).
+# Between the two, the benchmark gate (scripts/bench.sh --gate; BRIDGESCOPE_TEST_GATE=0 skips it,
+# and so do ctest arguments, which ask for a selection of tests).
 # Exits non-zero when any test fails.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -22,6 +24,11 @@ if [ $clang = 1 ] && [ "$fuzz_seconds" -gt 0 ]; then
     # A fixed seed and number of runs: the same inputs on every machine, so that CI is repeatable
     # (a finding fails it every time, until fixed). Long runs: scripts/fuzz.sh --runs 10000000 1800.
     "$root/scripts/fuzz.sh" -j "$(nproc)" --seed 1 --runs "${BRIDGESCOPE_FUZZ_RUNS:-8000}" "$((fuzz_seconds * 5))" || status=1
+fi
+if [ "${BRIDGESCOPE_TEST_GATE:-1}" != 0 ] && [ $# -eq 0 ]; then
+    # The benchmark gate (bench/gate.txt): short runs against their peers, on this build, before
+    # the sanitizers take the machine; a performance regression fails CI like a failing test.
+    BRIDGESCOPE_TEST_BUILD_DIR="$build_dir" "$root/scripts/bench.sh" --gate || status=1
 fi
 if [ "${BRIDGESCOPE_TEST_ASAN:-1}" != 0 ]; then
     # Measured on a fresh machine with a cold cache (2 cores): about 7 minutes of build and 8 of
