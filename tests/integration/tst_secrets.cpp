@@ -39,9 +39,9 @@ private:
         QString err;
     };
 
-    Run bridgescope(const QStringList& args, int timeoutMs = 30000, int stopAfterMs = 0)
+    /// Everything a command writes goes below m_home: HOME, the XDG folders, TMPDIR, ROS's logs.
+    QProcessEnvironment environment() const
     {
-        QProcess p;
         QProcessEnvironment env = m_servers.rosEnvironment();
         env.insert(u"HOME"_s, m_home);
         env.insert(u"XDG_CONFIG_HOME"_s, m_home + u"/.config"_s);
@@ -52,7 +52,13 @@ private:
         env.insert(u"ROS_HOME"_s, m_home + u"/.ros"_s);
         env.insert(u"ROS_LOG_DIR"_s, m_home + u"/.ros/log"_s);
         env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
-        p.setProcessEnvironment(env);
+        return env;
+    }
+
+    Run bridgescope(const QStringList& args, int timeoutMs = 30000, int stopAfterMs = 0)
+    {
+        QProcess p;
+        p.setProcessEnvironment(environment());
         p.setWorkingDirectory(m_home);
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
         Run r;
@@ -114,11 +120,8 @@ private:
     PsScan runAndScan(const QStringList& args, int scanMs, int ownAfterMs = 1500)
     {
         QProcess p;
-        QProcessEnvironment env = m_servers.rosEnvironment();
-        env.insert(u"HOME"_s, m_home);
-        env.insert(u"TMPDIR"_s, m_home + u"/tmp"_s);
-        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
-        p.setProcessEnvironment(env);
+        p.setProcessEnvironment(environment());
+        p.setWorkingDirectory(m_home);
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
         PsScan scan;
         if (!p.waitForStarted())

@@ -35,7 +35,7 @@ ColumnFitter::ColumnFitter(QTableView* view)
         if (!m_view->isVisible() || m_userSized || header->property(ViewSetup::RestoredProperty).toBool())
             return;
         if (fitFigures(true))
-            apply(); // the fill and fitted columns share what is left
+            fitTheRest(); // the fill and fitted columns share what is left
     });
     connect(model, &QAbstractItemModel::dataChanged, this,
             [this](const QModelIndex& from, const QModelIndex& to) {
@@ -126,6 +126,12 @@ void ColumnFitter::apply()
     if (m_userSized || header->property(ViewSetup::RestoredProperty).toBool()) // the last session's
         return;
     fitFigures(false);
+    fitTheRest();
+}
+
+void ColumnFitter::fitTheRest()
+{
+    const QHeaderView* header = m_view->horizontalHeader();
     const QScopedValueRollback fitting(m_fitting, true);
     const int room = m_view->viewport()->width();
     const auto usable = [&](int column) {

@@ -41,6 +41,8 @@ private:
     /// Sizes the figure columns to their content; with `growOnly`, only those that need more room.
     /// True when a width changed.
     bool fitFigures(bool growOnly);
+    /// Sizes the fitted and fill columns in the room the others leave.
+    void fitTheRest();
 
     QTableView* m_view;
     const QObject* m_viewport = nullptr;
