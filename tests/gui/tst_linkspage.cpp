@@ -14,9 +14,13 @@
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/links/ruleseditor.h"
+#include "widgets/common/ratechart.h"
 #include "widgets/map/configfilecontroller.h"
 
+#include <cmath>
 #include <csignal>
+#include <QChart>
+#include <QValueAxis>
 #include <QApplication>
 #include <QFile>
 #include <QLabel>
@@ -53,6 +57,47 @@ private slots:
         QCOMPARE(editor.rules()->defaults[LinkRules::StallSeconds].alert, 2.0);
         QCOMPARE(editor.rules()->forLink({u"/a/b"_s, u"a/b"_s, {}, {}})[LinkRules::LatencyP99Ms].warning,
                  5.0);
+    }
+
+    // Ticks on round numbers (not 11.8 / 8.88 / 5.92), and an axis that keeps its range while a
+    // rate wobbles: laying out an axis's labels every second was the Links page's largest cost.
+    void rateChartTicksAreRoundAndSteady()
+    {
+        for (const double top : {0.3, 1.0, 7.7, 10.3, 118.0, 999.0, 12345.0}) {
+            const RateChart::Scale s = RateChart::scaleFor(0, top);
+            QVERIFY2(s.max >= top && s.max <= top * 2.5, qPrintable(QString::number(top)));
+            const double mantissa = s.step / std::pow(10.0, std::floor(std::log10(s.step)));
+            QVERIFY2(qFuzzyCompare(mantissa, 1.0) || qFuzzyCompare(mantissa, 2.0) || qFuzzyCompare(mantissa, 2.5)
+                         || qFuzzyCompare(mantissa, 5.0),
+                     qPrintable(u"step %1 for %2"_s.arg(s.step).arg(top)));
+            const double ticks = s.max / s.step;
+            QVERIFY2(qFuzzyCompare(ticks, std::round(ticks)) && ticks >= 3 && ticks <= 6,
+                     qPrintable(u"%1 ticks for %2"_s.arg(ticks).arg(top)));
+        }
+        const RateChart::Scale negative = RateChart::scaleFor(-3.3, 8.0);
+        QVERIFY(negative.min <= -3.3 && negative.max >= 8.0);
+        QVERIFY(qFuzzyCompare(negative.min / negative.step, std::round(negative.min / negative.step)));
+
+        RateChart chart;
+        chart.resize(400, 200);
+        auto* y = qobject_cast<QValueAxis*>(chart.chart()->axes(Qt::Vertical).value(0));
+        auto* x = qobject_cast<QValueAxis*>(chart.chart()->axes(Qt::Horizontal).value(0));
+        QVERIFY(y && x);
+        QList<double> samples;
+        for (int i = 0; i < 60; ++i)
+            samples << 10.0;
+        chart.setSamples(samples, u"Hz"_s);
+        QCOMPARE(y->max(), 12.5);
+        QCOMPARE(x->min(), -60.0);
+        int changes = 0;
+        connect(y, &QValueAxis::rangeChanged, this, [&] { ++changes; });
+        connect(x, &QValueAxis::rangeChanged, this, [&] { ++changes; });
+        for (int i = 0; i < 50; ++i) {
+            samples.removeFirst();
+            samples << 9.9 + 0.2 * (i % 2);
+            chart.setSamples(samples, u"Hz"_s);
+        }
+        QCOMPARE(changes, 0);
     }
 
     void showsTheLabsLinksAndTheirOutages()
