@@ -3,8 +3,9 @@
 // publishes 1,000 MQTT topics at 10 Hz (10,000 msg/s), a reference bridge carries them to 1,000
 // ROS topics (primitive mqtt2ros mappings: 10,000 msg/s on ROS), and
 //   - `bridgescope watch` (a child process) watches the 1,000 links: its CPU time per message it
-//     handled (both ends) against mosquitto_sub's per message it received, and the time of a
-//     /metrics scrape;
+//     handled (both ends) against mosquitto_sub's per message it received (the MQTT half), and
+//     against the two peers together: mosquitto_sub and bench_rossub, a bare roscpp subscriber to
+//     the same 1,000 ROS topics (the ROS half); and the time of a /metrics scrape;
 //   - this process shows the Links page with the same 1,000 links: the GUI event loop's lag and
 //     resident memory.
 //
@@ -122,18 +123,32 @@ int main(int argc, char** argv)
     loadgen.start(
         QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
         {url, QString::number(links), QString::number(rate), QString::number(seconds + 15), u"32"_s});
+    // The ROS half's peer finds the bridge's topics as they are advertised (in the first 4 s).
+    QProcess rosSub;
+    quint64 rosReceived = 0;
+    QObject::connect(&rosSub, &QProcess::readyReadStandardOutput, [&] {
+        const QList<QByteArray> lines = rosSub.readAllStandardOutput().trimmed().split('\n');
+        rosReceived = lines.constLast().toULongLong();
+    });
+    rosSub.setProcessEnvironment(servers.rosEnvironment());
+    rosSub.start(QCoreApplication::applicationDirPath() + u"/bench_rossub"_s,
+                 {servers.rosMasterUri(), u"/fleet/"_s, u"4"_s});
     QTest::qWait(5000); // the first 5 s: every link starts
     const double watchCpu0 = Bench::processCpuSeconds(watch.processId());
     const double subCpu0 = Bench::processCpuSeconds(sub.processId());
+    const double rosSubCpu0 = Bench::processCpuSeconds(rosSub.processId());
     const quint64 subLines0 = subLines;
+    const quint64 rosReceived0 = rosReceived;
     const QByteArray m0 = scrape(metricsPort);
     QElapsedTimer span;
     span.start();
     const std::vector<double> lags = Bench::measureLag([&] { return span.elapsed() < seconds * 1000; });
     const double watchCpu = Bench::processCpuSeconds(watch.processId()) - watchCpu0;
     const double subCpu = Bench::processCpuSeconds(sub.processId()) - subCpu0;
-    QTest::qWait(200);
+    const double rosSubCpu = Bench::processCpuSeconds(rosSub.processId()) - rosSubCpu0;
+    QTest::qWait(1100); // its count of the span's end
     const quint64 subMessages = subLines - subLines0;
+    const quint64 rosSubMessages = rosReceived - rosReceived0;
     const QByteArray m1 = scrape(metricsPort);
     const double watched
         = sample(m1, "bridgescope_link_messages_total{") - sample(m0, "bridgescope_link_messages_total{");
@@ -174,7 +189,17 @@ int main(int argc, char** argv)
     Bench::row(u"watch CPU per message (us)"_s, watchPer,
                u"%1x mosquitto_sub (goal <= 3x)"_s.arg(subPer > 0 ? watchPer / subPer : 0, 0, 'f', 2));
     Bench::row(u"watch CPU (% of one core)"_s, 100 * watchCpu / seconds);
+    // Both halves' peers together: what receiving both ends costs a process that does nothing else.
+    Bench::row(u"peer: messages bench_rossub received (ROS half)"_s, double(rosSubMessages));
+    const double rosSubPer = rosSubMessages ? rosSubCpu / double(rosSubMessages) * 1e6 : 0;
+    Bench::row(u"peer: bench_rossub CPU per message (us)"_s, rosSubPer);
+    const double bothPer = subMessages + rosSubMessages
+        ? (subCpu + rosSubCpu) / double(subMessages + rosSubMessages) * 1e6
+        : 0;
+    Bench::row(u"peers together: CPU per message (us)"_s, bothPer,
+               u"watch %1x both peers (goal <= 2x)"_s.arg(bothPer > 0 ? watchPer / bothPer : 0, 0, 'f', 2));
     Bench::gate("watch_cpu_per_message_vs_mosquitto_sub", subPer > 0 ? watchPer / subPer : 0);
+    Bench::gate("watch_cpu_per_message_vs_both_peers", bothPer > 0 ? watchPer / bothPer : 0);
     Bench::gate("watch_links_page_lag_p99_ms", Bench::percentile(lags, 0.99));
     Bench::row(u"/metrics scrape under the load, median (ms)"_s, Bench::percentile(loaded, 0.5),
                u"%1 kB, goal < 50 ms"_s.arg(m1.size() / 1024));
@@ -182,7 +207,7 @@ int main(int argc, char** argv)
                *std::max_element(loaded.begin(), loaded.end()));
     Bench::row(u"/metrics scrape after the load, median (ms)"_s, Bench::percentile(idle, 0.5));
 
-    for (QProcess* p : {&watch, &bridge, &sub}) {
+    for (QProcess* p : {&watch, &bridge, &sub, &rosSub}) {
         p->terminate();
         p->waitForFinished(10000);
     }

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// The ROS half of bench_watch's peer: a bare roscpp subscriber, what any roscpp tool pays to
+// receive a topic and drop it (topic_tools' ShapeShifter, one AsyncSpinner thread, as `rostopic hz`
+// would do in C++). It subscribes to every topic the master lists under PREFIX during its first
+// SECONDS_TO_FIND_TOPICS and prints the count of messages received so far once a second, until
+// SIGTERM. roscpp outside core/ros on purpose: this is
+// the peer, not Bridgescope.
+//
+//   bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <ros/master.h>
+#include <ros/ros.h>
+#include <string>
+#include <topic_tools/shape_shifter.h>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+std::atomic<unsigned long long> g_received {0};
+std::atomic<bool> g_stop {false};
+void onTerm(int) { g_stop = true; }
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS\n");
+        return 2;
+    }
+    std::signal(SIGTERM, onTerm);
+    ros::M_string remappings {{"__master", argv[1]}};
+    ros::init(remappings, "bench_rossub", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+    ros::NodeHandle node;
+    const std::string prefix = argv[2];
+    const int wantSeconds = std::atoi(argv[3]);
+    std::vector<ros::Subscriber> subs;
+    std::vector<std::string> have;
+    ros::AsyncSpinner spinner(1);
+    spinner.start();
+    // Topics appear as the bridge advertises them: look again for a while.
+    for (int i = 0; i < wantSeconds * 2 && !g_stop; ++i) {
+        ros::master::V_TopicInfo topics;
+        ros::master::getTopics(topics);
+        for (const auto& t : topics) {
+            if (t.name.compare(0, prefix.size(), prefix) != 0
+                || std::find(have.begin(), have.end(), t.name) != have.end())
+                continue;
+            have.push_back(t.name);
+            const boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> count
+                = [](const topic_tools::ShapeShifter::ConstPtr&) { ++g_received; };
+            subs.push_back(node.subscribe<topic_tools::ShapeShifter>(t.name, 10, count));
+        }
+        usleep(500000);
+    }
+    std::fprintf(stderr, "bench_rossub: %zu topics\n", subs.size());
+    for (int tenths = 0; !g_stop; ++tenths) {
+        usleep(100000);
+        if (tenths % 10 == 0) {
+            std::printf("%llu\n", static_cast<unsigned long long>(g_received));
+            std::fflush(stdout);
+        }
+    }
+    spinner.stop();
+    std::_Exit(0); // roscpp's static teardown is not the subject
+}
