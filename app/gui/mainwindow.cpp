@@ -99,6 +99,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_reports, tr("Reports"));
     m_pages->addTab(m_links, tr("Links"));
     m_pages->addTab(m_experiments, tr("Experiments"));
+    m_map->setFileController(m_files); // a tab per open config
     watchTheMapConfig();
     m_watch->useMeasurement(m_measure); // pipeline latency for the links; a recorded run lists their events
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
@@ -190,20 +191,27 @@ MainWindow::~MainWindow()
     delete m_pages;
 }
 
-/// The Links page watches the config open on the Map page, as it is edited (a second after the
-/// last edit, not at every keystroke).
+/// The Links page watches every config open on the Map page, as they are edited (a second after
+/// the last edit, not at every keystroke).
 void MainWindow::watchTheMapConfig()
 {
     auto* debounce = new QTimer(this);
     debounce->setSingleShot(true);
     debounce->setInterval(1000);
     connect(debounce, &QTimer::timeout, this, [this] {
-        const QString path = m_document->filePath();
-        m_links->setMapConfig(path.isEmpty() ? tr("untitled") : QFileInfo(path).completeBaseName(),
-                              m_document->config());
+        QList<std::pair<QString, BridgeConfig>> configs;
+        for (int i = 0; i < m_files->openCount(); ++i) {
+            const QString path = m_files->pathOf(i);
+            const BridgeConfig config = m_files->configOf(i);
+            if (path.isEmpty() && config.mappings.isEmpty())
+                continue; // a blank new config has no links
+            configs.append({path.isEmpty() ? tr("untitled") : QFileInfo(path).completeBaseName(), config});
+        }
+        m_links->setMapConfigs(configs);
     });
     connect(m_document, &ConfigDocument::resetDone, debounce, qOverload<>(&QTimer::start));
     connect(m_document, &ConfigDocument::problemsChanged, debounce, qOverload<>(&QTimer::start));
+    connect(m_files, &ConfigFileController::openConfigsChanged, debounce, qOverload<>(&QTimer::start));
 }
 
 void MainWindow::createMenus()
@@ -216,6 +224,8 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(tr("&Save"), QKeySequence::Save, m_files, &ConfigFileController::save);
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, m_files, &ConfigFileController::saveAs);
+    file->addAction(tr("&Close Config"), QKeySequence::Close, this,
+                    [this] { m_files->closeConfig(m_files->currentIndex()); });
     QMenu* exportMenu = file->addMenu(tr("&Export As"));
     exportMenu->addAction(tr("mqtt_client, ROS &1…"), this,
                           [this] { m_files->exportAs(ConfigLayout::Ros1); });
@@ -400,7 +410,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
-    if (!m_files->maybeSave()) {
+    if (!m_files->maybeSaveAll()) {
         event->ignore();
         return;
     }

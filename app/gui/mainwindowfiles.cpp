@@ -28,10 +28,11 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-enum class Kind { Config, Pipeline, Measurement, Experiment, Folder };
+enum class Kind { Config, Pipeline, Plan, Measurement, Experiment, Folder };
 
 /// What a file is, from its first bytes: a run or a bag, a suite CSV (by name), a pipeline (YAML
-/// with `topics_in_order`), else a bridge config (whose reader says what is wrong if it is none).
+/// with `topics_in_order`), an experiment plan (YAML with `factors` or `cells`), else a bridge config (whose
+/// reader says what is wrong if it is none).
 Kind kindOf(const QString& path)
 {
     const QFileInfo info(path);
@@ -42,8 +43,12 @@ Kind kindOf(const QString& path)
     QFile file(path);
     if (file.open(QIODevice::ReadOnly)) {
         static const QRegularExpression pipelineKey(u"(^|\\n)topics_in_order\\s*:"_s);
-        if (pipelineKey.match(QString::fromUtf8(file.read(256 * 1024))).hasMatch())
+        static const QRegularExpression planKey(u"(^|\\n)(factors|cells)\\s*:"_s);
+        const QString head = QString::fromUtf8(file.read(256 * 1024));
+        if (pipelineKey.match(head).hasMatch())
             return Kind::Pipeline;
+        if (planKey.match(head).hasMatch())
+            return Kind::Plan;
     }
     return Kind::Config;
 }
@@ -53,7 +58,7 @@ Kind kindOf(const QString& path)
 QStringList MainWindow::openPaths(const QStringList& paths)
 {
     QStringList errors;
-    QStringList configs, pipelines, measurements, experiments;
+    QStringList configs, pipelines, plans, measurements, experiments;
     for (const QString& path : paths) {
         if (!QFileInfo::exists(path)) {
             errors << tr("%1: no such file or folder").arg(path);
@@ -65,6 +70,9 @@ QStringList MainWindow::openPaths(const QStringList& paths)
             break;
         case Kind::Pipeline:
             pipelines << path;
+            break;
+        case Kind::Plan:
+            plans << path;
             break;
         case Kind::Measurement:
             measurements << path;
@@ -94,21 +102,21 @@ QStringList MainWindow::openPaths(const QStringList& paths)
             errors << QFileInfo(path).fileName() + u": "_s + error;
     };
     QString error;
-    // The first bridge config is the Map page's; more are watched on the Links page.
-    if (!configs.isEmpty() && m_files->maybeSave()) {
-        if (m_files->openFile(configs.first(), &error))
-            opened(configs.first(), m_map);
-        else
-            fail(configs.first(), error);
-    }
-    for (const QString& path : configs.mid(1)) {
-        if (m_links->addConfigFiles({path}, &error)) {
-            m_files->addRecent(path);
-            opened(path, m_links);
+    // Every bridge config opens on the Map page, a tab each (a lab has two ends); the Links page
+    // watches them all.
+    QString firstConfig;
+    for (const QString& path : configs) {
+        if (m_files->openFile(path, &error)) {
+            opened(path, m_map);
+            if (firstConfig.isEmpty())
+                firstConfig = QFileInfo(path).absoluteFilePath();
         } else {
             fail(path, error);
         }
     }
+    for (int i = 0; i < m_files->openCount(); ++i) // the first given is the one shown
+        if (!firstConfig.isEmpty() && m_files->pathOf(i) == firstConfig)
+            m_files->activate(i);
     for (const QString& path : pipelines) { // the last one stays
         if (m_measurePage->loadPipeline(path, &error)) {
             m_files->addRecent(path);
@@ -130,6 +138,14 @@ QStringList MainWindow::openPaths(const QStringList& paths)
         for (const QString& path : measurements) {
             m_files->addRecent(path);
             opened(path, m_reports);
+        }
+    }
+    for (const QString& path : plans) { // the last one stays
+        if (m_experiments->openPlan(path, &error)) {
+            m_files->addRecent(path);
+            opened(path, m_experiments);
+        } else {
+            fail(path, error);
         }
     }
     for (const QString& path : experiments) {

@@ -46,17 +46,32 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     m_lossy = read.lossy;
     m_modified = false;
     m_readProblems = read.problems;
-    revalidate();
-    emit resetDone();
-    emit filePathChanged(m_path);
-    emit layoutChanged(m_layout);
-    emit modifiedChanged(false);
-    emit problemsChanged();
+    finishReset();
     qCDebug(lcConfig).noquote() << "opened" << m_path << layoutName(m_layout) << m_current.mappings.size()
                                 << "mappings," << read.problems.size() << "read problems"
                                 << (m_lossy ? "(lossy)" : "");
     result.ok = true;
     return result;
+}
+
+ConfigDocument::Snapshot ConfigDocument::snapshot() const
+{
+    return {m_path, m_suggestedPath, m_text, m_baseline, m_current, m_layout, m_lossy, m_modified, m_readProblems};
+}
+
+void ConfigDocument::restore(const Snapshot& s)
+{
+    emit aboutToReset();
+    m_path = s.path;
+    m_suggestedPath = s.suggestedPath;
+    m_text = s.text;
+    m_baseline = s.baseline;
+    m_current = s.current;
+    m_layout = s.layout;
+    m_lossy = s.lossy;
+    m_modified = s.modified;
+    m_readProblems = s.readProblems;
+    finishReset();
 }
 
 void ConfigDocument::reset(const BridgeConfig& config, const QString& suggestedPath)
@@ -73,12 +88,7 @@ void ConfigDocument::reset(const BridgeConfig& config, const QString& suggestedP
     m_lossy = false;
     m_modified = true;
     m_readProblems.clear();
-    revalidate();
-    emit resetDone();
-    emit filePathChanged(m_path);
-    emit layoutChanged(m_layout);
-    emit modifiedChanged(m_modified);
-    emit problemsChanged();
+    finishReset();
 }
 
 void ConfigDocument::clear()
@@ -298,6 +308,16 @@ void ConfigDocument::changed()
         m_modified = modified;
         emit modifiedChanged(modified);
     }
+}
+
+void ConfigDocument::finishReset()
+{
+    revalidate();
+    emit resetDone();
+    emit filePathChanged(m_path);
+    emit layoutChanged(m_layout);
+    emit modifiedChanged(m_modified);
+    emit problemsChanged();
 }
 
 void ConfigDocument::revalidate()

@@ -37,6 +37,24 @@ public:
         QStringList notes; ///< what the layout could not express
     };
 
+    /// Everything an open config is, so that several can take turns in one document (the Map
+    /// page's tabs): the file, its text, its edits, and whether they are saved.
+    struct Snapshot
+    {
+        QString path;
+        QString suggestedPath;
+        QByteArray text;
+        BridgeConfig baseline;
+        BridgeConfig current;
+        ConfigLayout layout = ConfigLayout::Ros1;
+        bool lossy = false;
+        bool modified = false;
+        QList<Problem> readProblems;
+    };
+    Snapshot snapshot() const;
+    /// Becomes `s` again, as a load would (resetDone and the rest are emitted).
+    void restore(const Snapshot& s);
+
     LoadResult load(const QString& path);
     /// Replaces the document by `config` (no file), e.g. a generated peer config.
     void reset(const BridgeConfig& config, const QString& suggestedPath = QString());
@@ -85,6 +103,8 @@ signals:
 private:
     void changed();
     void revalidate();
+    /// After the state was replaced whole: checks it and says everything changed.
+    void finishReset();
     void adoptSaved(const QByteArray& text, const ConfigReadResult& read);
 
     QString m_path;

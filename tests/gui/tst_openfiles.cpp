@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Open anything: files dropped on the window, given on the command line (as a desktop's %F gives
-// them) or picked from Open Recent go where they belong: bridge configs to Map (more to Links), a
+// them) or picked from Open Recent go where they belong: bridge configs to Map (a tab each), a
 // pipeline and one measurement to Measure, several measurements to Reports, an experiment's folder
 // to Experiments; what does not open is said and changes nothing.
 #include "app/gui/mainwindow.h"
@@ -16,6 +16,8 @@
 #include "widgets/discover/discoverpage.h"
 #include "widgets/experiment/experimentpage.h"
 #include "widgets/links/linkspage.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/configtabs.h"
 #include "widgets/map/mappage.h"
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
@@ -56,6 +58,14 @@ bool drop(QWidget* target, const QStringList& paths)
     return dropped.isAccepted();
 }
 
+QStringList tabTexts(MapPage* page)
+{
+    QStringList texts;
+    for (int i = 0; i < page->configTabs()->count(); ++i)
+        texts << page->configTabs()->tabText(i);
+    return texts;
+}
+
 QStringList linkBridges(LinksPage* page)
 {
     QStringList bridges;
@@ -71,7 +81,7 @@ class TestOpenFiles : public QObject
     Q_OBJECT
 
     QTemporaryDir m_dir;
-    QString m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_bag, m_experiment;
+    QString m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_bag, m_experiment, m_plan;
 
     QString write(const QString& name, const QByteArray& bytes)
     {
@@ -110,6 +120,72 @@ private slots:
         QVERIFY(plan.open(QIODevice::ReadOnly));
         write(u"exp/"_s + ExperimentRunner::planFileName(), plan.readAll());
         write(u"exp/"_s + ExperimentRunner::stateFileName(), "{}");
+        // A plan alone, as a file manager or the command line gives it.
+        QFile size(QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/examples/experiment-table1-methods.yaml"_s);
+        QVERIFY(size.open(QIODevice::ReadOnly));
+        m_plan = write(u"size-study.yaml"_s, size.readAll());
+    }
+
+    // A lab has two ends: both configs are on Map, each with its name, its health and its edits,
+    // saved each to its own file; the window's title names the one shown.
+    void everyConfigOnMapSavedPerFile()
+    {
+        QTemporaryDir dir;
+        const auto copy = [&](const QString& from, const QString& name) {
+            const QString to = dir.filePath(name);
+            QFile::copy(from, to);
+            return to;
+        };
+        const QString vehicle = copy(m_config, u"vehicle.yaml"_s);
+        const QString cloud = copy(m_otherConfig, u"cloud.yaml"_s);
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openPaths({vehicle, cloud}).isEmpty());
+        ConfigTabs* tabs = w.mapPage()->configTabs();
+        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
+        QCOMPARE(tabs->currentIndex(), 0);
+        QVERIFY(tabs->isVisible() && tabs->geometry().intersects(w.mapPage()->rect()));
+        QVERIFY2(w.windowTitle().startsWith(u"vehicle.yaml"_s), qPrintable(w.windowTitle()));
+        w.mapPage()->updateHealth();
+        QVERIFY2(tabs->tabToolTip(1).contains(cloud) && tabs->tabToolTip(1).contains(u"mapping"_s),
+                 qPrintable(tabs->tabToolTip(1)));
+
+        // An edit of each, then a save of the second only.
+        const int vehicleMappings = w.document()->mappingCount();
+        w.document()->removeMappings({w.document()->mapping(0).id});
+        QCOMPARE(tabs->tabText(0), u"vehicle.yaml •"_s);
+        tabs->setCurrentIndex(1);
+        QCOMPARE(w.document()->filePath(), cloud);
+        QVERIFY2(w.windowTitle().startsWith(u"cloud.yaml"_s), qPrintable(w.windowTitle()));
+        const int cloudMappings = w.document()->mappingCount();
+        w.document()->removeMappings({w.document()->mapping(0).id});
+        QVERIFY(w.files()->save());
+        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml •"_s, u"cloud.yaml"_s}));
+        ConfigDocument reread;
+        QVERIFY(reread.load(cloud).ok);
+        QCOMPARE(reread.mappingCount(), cloudMappings - 1);
+        QVERIFY(reread.load(vehicle).ok);
+        QCOMPARE(reread.mappingCount(), vehicleMappings); // not saved yet
+
+        // Back to the first: its edit waited; saved to its own file.
+        tabs->setCurrentIndex(0);
+        QCOMPARE(w.document()->filePath(), vehicle);
+        QCOMPARE(w.document()->mappingCount(), vehicleMappings - 1);
+        QVERIFY(w.document()->isModified());
+        QVERIFY(w.files()->save());
+        QVERIFY(reread.load(vehicle).ok);
+        QCOMPARE(reread.mappingCount(), vehicleMappings - 1);
+        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
+
+        // Opening one again shows it; closing one leaves the other.
+        QVERIFY(w.openPaths({cloud}).isEmpty());
+        QCOMPARE(tabs->count(), 2);
+        QCOMPARE(w.document()->filePath(), cloud);
+        QVERIFY(w.files()->closeConfig(1));
+        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s}));
+        QCOMPARE(w.document()->filePath(), vehicle);
     }
 
     void eachKindByDrop()
@@ -162,11 +238,19 @@ private slots:
         QCOMPARE(w.pages()->currentWidget(), w.experimentPage());
         QVERIFY(w.experimentPage()->planText().contains(u"qos"_s));
 
-        // Two configs: the first to Map, the second watched on Links.
+        // A plan: to the Experiments page, not refused as a config (issue 33).
+        w.pages()->setCurrentWidget(w.discoverPage());
+        QVERIFY(drop(&w, {m_plan}));
+        QCOMPARE(w.pages()->currentWidget(), w.experimentPage());
+        QVERIFY(w.experimentPage()->planText().contains(u"Methods (Table I)"_s));
+
+        // Two configs: both on Map, a tab each, the first shown; Links watches both.
         QVERIFY(drop(&w, {m_otherConfig, m_config}));
         QCOMPARE(w.pages()->currentWidget(), w.mapPage());
         QCOMPARE(w.document()->filePath(), m_otherConfig);
+        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
         QTRY_VERIFY(linkBridges(w.linksPage()).contains(u"vehicle"_s));
+        QTRY_VERIFY(linkBridges(w.linksPage()).contains(u"cloud"_s));
 
         // Open Recent has runs and pipelines as well as configs, and opens each where it belongs.
         QMenu* recent = nullptr;
@@ -257,11 +341,14 @@ private slots:
             = run({m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_bag, m_experiment});
         QVERIFY2(exit == 0 && QFile::exists(png), qPrintable(err));
         QVERIFY2(openedOn(err, m_config, u"Map"_s), qPrintable(err));
-        QVERIFY2(openedOn(err, m_otherConfig, u"Links"_s), qPrintable(err));
+        QVERIFY2(openedOn(err, m_otherConfig, u"Map"_s), qPrintable(err));
         QVERIFY2(openedOn(err, m_pipeline, u"Measure"_s), qPrintable(err));
         for (const QString& measurement : {m_csvA, m_csvB, m_bag})
             QVERIFY2(openedOn(err, measurement, u"Reports"_s), qPrintable(err));
         QVERIFY2(openedOn(err, m_experiment, u"Experiments"_s), qPrintable(err));
+        const auto [planExit, planErr] = run({m_plan});
+        QCOMPARE(planExit, 0);
+        QVERIFY2(openedOn(planErr, m_plan, u"Experiments"_s), qPrintable(planErr));
         // One measurement of each kind alone: the Measure page.
         for (const QString& measurement : {m_csvA, m_bag}) {
             const auto [oneExit, oneErr] = run({measurement});

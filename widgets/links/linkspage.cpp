@@ -273,7 +273,12 @@ QWidget* LinksPage::createEventLog()
 
 void LinksPage::setMapConfig(const QString& name, const BridgeConfig& config)
 {
-    m_mapConfig = {name, config};
+    setMapConfigs({{name, config}});
+}
+
+void LinksPage::setMapConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
+{
+    m_mapConfigs = configs;
     applyConfigs();
 }
 
@@ -296,8 +301,9 @@ bool LinksPage::addConfigFiles(const QStringList& paths, QString* error)
 void LinksPage::applyConfigs()
 {
     QList<std::pair<QString, BridgeConfig>> configs;
-    if (!m_mapConfig.first.isEmpty())
-        configs << m_mapConfig;
+    for (const auto& c : std::as_const(m_mapConfigs))
+        if (!c.first.isEmpty())
+            configs << c;
     configs << m_added;
     m_watch->setConfigs(configs);
     m_model->refresh();

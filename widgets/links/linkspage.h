@@ -33,6 +33,8 @@ public:
 
     /// The config open on the Map page (replaces the previous one; empty name: none).
     void setMapConfig(const QString& name, const BridgeConfig& config);
+    /// Every config open on the Map page, by name; they replace those given before.
+    void setMapConfigs(const QList<std::pair<QString, BridgeConfig>>& configs);
     /// Adds the config files; false with `error` for one that cannot be read.
     bool addConfigFiles(const QStringList& paths, QString* error = nullptr);
 
@@ -71,7 +73,7 @@ private:
     RateChart* m_rateChart = nullptr;
     RateChart* m_latencyChart = nullptr;
     QSystemTrayIcon* m_tray = nullptr;
-    std::pair<QString, BridgeConfig> m_mapConfig;
+    QList<std::pair<QString, BridgeConfig>> m_mapConfigs; ///< those open on the Map page
     QList<std::pair<QString, BridgeConfig>> m_added;
     int m_notified = 0;
 };

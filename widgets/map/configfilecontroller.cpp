@@ -6,6 +6,7 @@
 #include "config/configwriter.h"
 #include "config/peerconfig.h"
 
+#include <algorithm>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -25,6 +26,7 @@ ConfigFileController::ConfigFileController(ConfigDocument* document, QUndoStack*
     , m_doc(document)
     , m_undo(undoStack)
     , m_parent(dialogParent)
+    , m_open {m_doc->snapshot()}
 {
     m_ask = [this](const QString& title, const QString& question) {
         return QMessageBox::question(m_parent, title, question, QMessageBox::Yes | QMessageBox::No,
@@ -55,7 +57,16 @@ QString ConfigFileController::layoutFilter(ConfigLayout layout)
 
 bool ConfigFileController::openFile(const QString& path, QString* error)
 {
-    const ConfigDocument::LoadResult r = m_doc->load(path);
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    for (int i = 0; i < openCount(); ++i) {
+        if (pathOf(i) == absolute) {
+            activate(i); // open already: shown, with its edits
+            return true;
+        }
+    }
+    const bool replace = currentIsBlank();
+    const ConfigDocument::Snapshot before = m_doc->snapshot();
+    const ConfigDocument::LoadResult r = m_doc->load(path); // leaves the document as it was on failure
     if (!r.ok) {
         QStringList lines {r.error};
         for (int i = 1; i < r.problems.size() && i < 5; ++i)
@@ -66,9 +77,92 @@ bool ConfigFileController::openFile(const QString& path, QString* error)
             showError(tr("Cannot open the config"), lines.join(u'\n'));
         return false;
     }
+    if (!replace) {
+        m_open[m_current] = before;
+        m_open.append(ConfigDocument::Snapshot {});
+        m_current = openCount() - 1;
+    }
     m_undo->clear();
     addRecent(m_doc->filePath());
     emit statusMessage(tr("Opened %1 (mappings: %2)").arg(m_doc->filePath()).arg(m_doc->mappingCount()));
+    emit openConfigsChanged();
+    return true;
+}
+
+bool ConfigFileController::currentIsBlank() const
+{
+    return m_doc->filePath().isEmpty() && !m_doc->isModified() && m_doc->mappingCount() == 0;
+}
+
+void ConfigFileController::stashCurrentForAnother()
+{
+    m_open[m_current] = m_doc->snapshot();
+    m_open.append(ConfigDocument::Snapshot {});
+    m_current = openCount() - 1;
+}
+
+QString ConfigFileController::pathOf(int i) const
+{
+    return i == m_current ? m_doc->filePath() : m_open.value(i).path;
+}
+
+QString ConfigFileController::nameOf(int i) const
+{
+    const QString path = pathOf(i);
+    return path.isEmpty() ? tr("untitled") : QFileInfo(path).fileName();
+}
+
+bool ConfigFileController::isModified(int i) const
+{
+    return i == m_current ? m_doc->isModified() : m_open.value(i).modified;
+}
+
+BridgeConfig ConfigFileController::configOf(int i) const
+{
+    return i == m_current ? m_doc->config() : m_open.value(i).current;
+}
+
+void ConfigFileController::activate(int i)
+{
+    if (i == m_current || i < 0 || i >= openCount())
+        return;
+    m_open[m_current] = m_doc->snapshot();
+    m_current = i;
+    m_doc->restore(m_open[i]);
+    m_undo->clear();
+    emit openConfigsChanged();
+}
+
+bool ConfigFileController::closeConfig(int i)
+{
+    if (i < 0 || i >= openCount())
+        return false;
+    activate(i);
+    if (!maybeSave())
+        return false;
+    m_open.removeAt(i);
+    if (m_open.isEmpty()) {
+        m_doc->clear();
+        m_open.append(m_doc->snapshot());
+        m_current = 0;
+    } else {
+        m_current = std::min(i, openCount() - 1);
+        m_doc->restore(m_open[m_current]);
+    }
+    m_undo->clear();
+    emit openConfigsChanged();
+    return true;
+}
+
+bool ConfigFileController::maybeSaveAll()
+{
+    for (int i = 0; i < openCount(); ++i) {
+        if (!isModified(i))
+            continue;
+        activate(i);
+        if (!maybeSave())
+            return false;
+    }
     return true;
 }
 
@@ -148,7 +242,7 @@ bool ConfigFileController::maybeSave()
     if (!m_doc->isModified())
         return true;
     const auto answer = QMessageBox::warning(
-        m_parent, tr("Unsaved changes"), tr("The bridge config has unsaved changes. Save them?"),
+        m_parent, tr("Unsaved changes"), tr("%1 has unsaved changes. Save them?").arg(nameOf(m_current)),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Cancel)
         return false;
@@ -157,17 +251,17 @@ bool ConfigFileController::maybeSave()
 
 bool ConfigFileController::newFile()
 {
-    if (!maybeSave())
-        return false;
+    if (currentIsBlank())
+        return true;
+    stashCurrentForAnother(); // the config shown so far stays open, with its edits
     m_doc->clear();
     m_undo->clear();
+    emit openConfigsChanged();
     return true;
 }
 
 bool ConfigFileController::open()
 {
-    if (!maybeSave())
-        return false;
     const QString dir = m_doc->filePath().isEmpty() ? QString() : QFileInfo(m_doc->filePath()).absolutePath();
     const QString path = QFileDialog::getOpenFileName(m_parent, tr("Open Bridge Config"), dir,
                                                       tr("YAML files (*.yaml *.yml);;All files (*)"));
@@ -221,8 +315,7 @@ bool ConfigFileController::generatePeer()
                                                       layoutFilter(m_doc->layout()));
     if (path.isEmpty() || !writePeer(path, QString()))
         return false;
-    if (m_ask(tr("Peer config written"), tr("Open the peer config %1 now?").arg(QFileInfo(path).fileName()))
-        && maybeSave())
-        openFile(path);
+    if (m_ask(tr("Peer config written"), tr("Open the peer config %1 now?").arg(QFileInfo(path).fileName())))
+        openFile(path); // beside this one
     return true;
 }

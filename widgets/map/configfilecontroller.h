@@ -2,17 +2,22 @@
 #pragma once
 
 #include "config/bridgeconfig.h"
+#include "config/configdocument.h"
 
 #include <functional>
 #include <QObject>
 
-class ConfigDocument;
 class QUndoStack;
 class QWidget;
 
 /// File handling of the config editor: new, open, save, save as, export in another layout,
 /// generate the peer config, recent files, and asking before unsaved edits are lost.
 /// The writing itself is ConfigDocument's (core); this class only asks and reports.
+///
+/// Several configs are open at once (a lab has two ends: the vehicle's and the cloud's). They take
+/// turns in the one ConfigDocument the Map page edits: the others wait as snapshots, with their
+/// edits, until activate() brings one back. The undo history is the shown config's: it starts
+/// anew when another is shown (its commands name the rows of the config they were made in).
 class ConfigFileController : public QObject
 {
     Q_OBJECT
@@ -38,14 +43,35 @@ public:
     bool saveAs();
     bool exportAs(ConfigLayout layout);
     bool generatePeer();
-    /// Asks to save unsaved edits; false if the user cancels.
+    /// Asks to save unsaved edits of the shown config; false if the user cancels.
     bool maybeSave();
+    /// Asks for every open config with unsaved edits; false if the user cancels one.
+    bool maybeSaveAll();
+
+    /// The open configs, in the order they were opened; one of them is in the document.
+    int openCount() const { return int(m_open.size()); }
+    int currentIndex() const { return m_current; }
+    QString pathOf(int i) const;
+    /// The file's name, or "untitled".
+    QString nameOf(int i) const;
+    bool isModified(int i) const;
+    BridgeConfig configOf(int i) const;
+    /// Shows open config `i` in the document.
+    void activate(int i);
+    /// Closes open config `i` after asking to save it; false if the user cancels.
+    bool closeConfig(int i);
 
 signals:
     void recentFilesChanged(const QStringList& files);
     void statusMessage(const QString& message);
+    /// A config was opened, closed or shown.
+    void openConfigsChanged();
 
 private:
+    /// The shown config is an untitled one without a mapping or an edit: opening replaces it.
+    bool currentIsBlank() const;
+    /// Keeps the shown config as a snapshot and makes room for another, shown from now on.
+    void stashCurrentForAnother();
     void showError(const QString& title, const QString& message);
     static QString layoutFilter(ConfigLayout layout);
 
@@ -53,4 +79,6 @@ private:
     QUndoStack* m_undo;
     QWidget* m_parent;
     Ask m_ask;
+    QList<ConfigDocument::Snapshot> m_open; ///< m_open[m_current] is the document's, kept there
+    int m_current = 0;
 };

@@ -16,6 +16,8 @@
 #include "widgets/common/viewsetup.h"
 #include "widgets/map/bridgedtopicsproxy.h"
 #include "widgets/map/configeditor.h"
+#include "widgets/map/configfilecontroller.h"
+#include "widgets/map/configtabs.h"
 #include "widgets/map/undocommands.h"
 
 #include <chrono>
@@ -400,5 +402,21 @@ void MapPage::updateHealth()
     in.mqtt = m_session->mqttTopics();
     in.mqttConnected = m_session->mqtt()->state() == MqttConnection::State::Connected;
     in.nowNs = now;
-    m_editor->model()->setHealth(MappingHealthEvaluator::evaluate(m_doc->config(), in));
+    const QHash<quint64, MappingHealth> shown = MappingHealthEvaluator::evaluate(m_doc->config(), in);
+    m_editor->model()->setHealth(shown);
+    if (!m_tabs)
+        return;
+    for (int i = 0; i < m_files->openCount(); ++i)
+        m_tabs->setHealth(i, i == m_files->currentIndex() ? shown
+                                                          : MappingHealthEvaluator::evaluate(m_files->configOf(i), in));
+}
+
+void MapPage::setFileController(ConfigFileController* files)
+{
+    m_files = files;
+    m_tabs = new ConfigTabs(files, this);
+    static_cast<QVBoxLayout*>(layout())->insertWidget(0, m_tabs);
+    connect(m_doc, &ConfigDocument::modifiedChanged, m_tabs, &ConfigTabs::refresh);
+    connect(m_doc, &ConfigDocument::filePathChanged, m_tabs, &ConfigTabs::refresh);
+    connect(files, &ConfigFileController::openConfigsChanged, this, &MapPage::updateHealth);
 }

@@ -8,6 +8,8 @@
 
 class BridgedTopicsProxy;
 class ConfigDocument;
+class ConfigFileController;
+class ConfigTabs;
 class ConfigEditor;
 class LiveSession;
 class MqttTopicFilter;
@@ -45,8 +47,12 @@ public:
     QList<quint64> bridgeMqttTopics(const QList<TopicMime::Topic>& topics, const QString& rosTarget);
     /// Points a mapping at a dropped topic instead.
     bool retarget(quint64 mappingId, const QMimeData* data);
-    /// Re-evaluates every mapping's health now (a timer does it every second otherwise).
+    /// Re-evaluates every mapping's health now (a timer does it every second otherwise), that of
+    /// the shown config and of every other open one (for its tab).
     void updateHealth();
+    /// Shows a tab per config `files` has open above the page, each with its health.
+    void setFileController(ConfigFileController* files);
+    ConfigTabs* configTabs() const { return m_tabs; }
     /// The config is in the ROS 2 layout and a ROS 2 graph is there to map it against.
     bool usesRos2() const;
 
@@ -84,4 +90,6 @@ private:
     MqttTopicFilter* m_mqttFilter;
     QTreeView* m_mqttView;
     QTimer* m_healthTimer;
+    ConfigFileController* m_files = nullptr;
+    ConfigTabs* m_tabs = nullptr;
 };
