@@ -226,7 +226,9 @@ int runWatch(const WatchRequest& request)
             err(why);
             return ExitFailed;
         }
-        err(Watch::tr("metrics at http://%1/metrics (port %2)").arg(request.metrics).arg(metrics->port()));
+        // The port that was bound: with port 0 the system chose it.
+        const QString host = request.metrics.left(request.metrics.lastIndexOf(u':'));
+        err(Watch::tr("metrics at http://%1:%2/metrics").arg(host).arg(metrics->port()));
     }
     QFile events(request.eventsFile);
     if (!request.eventsFile.isEmpty() && !events.open(QIODevice::WriteOnly | QIODevice::Append)) {

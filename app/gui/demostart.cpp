@@ -3,12 +3,12 @@
 
 #include "app/cli/clioutput.h"
 #include "app/gui/mainwindow.h"
+#include "base/secrets.h"
 #include "latency/latencystatsmodel.h"
 #include "latency/seriesid.h"
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
-#include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
 
@@ -20,6 +20,8 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
+
+using namespace Qt::StringLiterals;
 
 namespace {
 class Gui
@@ -87,10 +89,22 @@ void show(MainWindow& window, const DemoLab& lab)
 {
     window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
     window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
+    // Both ends on Map, a tab each (the Links page watches both), the vehicle's shown.
     window.files()->openFile(lab.vehicleConfigPath());
+    window.files()->openFile(lab.cloudConfigPath());
+    window.files()->activate(0);
+    // Where the lab's servers are (random ports), so that discover, watch or mosquitto_sub can be
+    // pointed at it: on stderr, as `bridgescope demo` says it, and in the status bar.
+    const QString where = Gui::tr("demo lab: broker %1, ROS master %2")
+                              .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri());
+    CliOutput::err(where);
+    auto* servers = new QLabel(where, &window);
+    servers->setObjectName(u"demoServers"_s);
+    servers->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    servers->setToolTip(Gui::tr("Point bridgescope discover, watch or mosquitto_sub at these; configs in %1")
+                            .arg(lab.directory()));
+    window.statusBar()->addPermanentWidget(servers); // not hidden by passing messages
     QString error;
-    if (!window.linksPage()->addConfigFiles({lab.cloudConfigPath()}, &error)) // both bridges' links
-        CliOutput::err(error);
     if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
         CliOutput::err(error);
     window.pages()->setCurrentWidget(window.measurePage());

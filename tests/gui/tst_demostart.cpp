@@ -6,8 +6,10 @@
 #include "app/gui/mainwindow.h"
 #include "latency/latencyengine.h"
 #include "session/measuresession.h"
+#include "widgets/map/configfilecontroller.h"
 
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QProgressBar>
 #include <QStatusBar>
 #include <QTest>
@@ -62,6 +64,16 @@ private slots:
         // Launching processes takes milliseconds; the servers' start (a second or two) is not waited for.
         QVERIFY2(worst < 400, qPrintable(u"the GUI thread paused %1 ms"_s.arg(worst)));
         QTRY_VERIFY(!w.statusBar()->findChild<QProgressBar*>());
+
+        // Where the lab's servers are, to point other tools at (issue 33), and both ends on Map.
+        const auto* servers = w.statusBar()->findChild<QLabel*>(u"demoServers"_s);
+        QVERIFY(servers && servers->isVisible());
+        QVERIFY2(servers->text().contains(lab.brokerUrl()) && servers->text().contains(lab.rosMasterUri()),
+                 qPrintable(servers->text()));
+        QCOMPARE(w.files()->openCount(), 2);
+        QCOMPARE(w.files()->pathOf(0), lab.vehicleConfigPath());
+        QCOMPARE(w.files()->pathOf(1), lab.cloudConfigPath());
+        QCOMPARE(w.files()->currentIndex(), 0);
 
         // Stamps arrive as each subscription comes: nothing is lost, nothing counts as dropped.
         const LatencyEngine& engine = w.measure()->engine();

@@ -19,6 +19,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -304,9 +305,14 @@ private slots:
         QVERIFY2(r.err.contains(u"the broker %1 cannot be reached"_s.arg(broker)), qPrintable(r.err));
         QVERIFY2(r.err.contains(u"the ROS master http://127.0.0.1"_s), qPrintable(r.err));
         QVERIFY2(r.err.contains(u"nothing was watched"_s), qPrintable(r.err));
-        const Run allowed
-            = bridgescope(QStringList(args.mid(0, 6)) << u"--seconds"_s << u"1"_s << u"--allow-empty"_s);
+        // Port 0 for the metrics: the port the system chose is the one said (issue 33).
+        const Run allowed = bridgescope(QStringList(args.mid(0, 6)) << u"--seconds"_s << u"1"_s
+                                                                    << u"--allow-empty"_s << u"--metrics"_s
+                                                                    << u"127.0.0.1:0"_s);
         QVERIFY2(allowed.exit == 0, qPrintable(allowed.err));
+        const QRegularExpressionMatch bound
+            = QRegularExpression(u"metrics at http://127\\.0\\.0\\.1:(\\d+)/metrics"_s).match(allowed.err);
+        QVERIFY2(bound.hasMatch() && bound.captured(1).toInt() > 0, qPrintable(allowed.err));
         // Durations whose milliseconds do not fit are refused before anything runs.
         const Run far = bridgescope(QStringList(args.mid(0, 6)) << u"--seconds"_s << u"1e300"_s);
         QCOMPARE(far.exit, 2);
@@ -557,6 +563,31 @@ private slots:
         r = bridgescope({u"/no/such/config.yaml"_s});
         QCOMPARE(r.exit, 2);
         QVERIFY2(r.err.contains(u"/no/such/config.yaml does not exist"_s), qPrintable(r.err));
+    }
+
+    // The window's demo says where its servers are (random ports), so that discover, watch or
+    // mosquitto_sub can be pointed at the lab (issue 33); then SIGTERM ends it cleanly.
+    void theWindowsDemoSaysWhereItsServersAre()
+    {
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"--demo"_s});
+        QVERIFY(p.waitForStarted());
+        QString err;
+        const QRegularExpression where(u"demo lab: broker tcp://127\\.0\\.0\\.1:(\\d+), ROS master "
+                                       u"http://127\\.0\\.0\\.1:(\\d+)/"_s);
+        QElapsedTimer clock;
+        clock.start();
+        while (!where.match(err).hasMatch() && clock.elapsed() < 40000 && p.state() == QProcess::Running) {
+            p.waitForReadyRead(500);
+            err += QString::fromUtf8(p.readAllStandardError());
+        }
+        p.terminate();
+        QVERIFY(p.waitForFinished(30000));
+        const QRegularExpressionMatch m = where.match(err);
+        QVERIFY2(m.hasMatch() && m.captured(1).toInt() > 0 && m.captured(2).toInt() > 0, qPrintable(err));
     }
 
     void theWindowWithoutADisplaySaysSoAndExits()
