@@ -451,7 +451,9 @@ void ExperimentRunner::stop()
 
 qint64 ExperimentRunner::runningSamples() const
 {
-    return m_cell && m_cell->recording ? m_cell->measure->engine().samples() : 0;
+    if (!m_cell) // it has ended: what it recorded (its last progress line says so, not 0)
+        return m_current >= 0 && m_current < int(m_statuses.size()) ? m_statuses[m_current].samples : 0;
+    return m_cell->recording ? m_cell->measure->engine().samples() : 0;
 }
 
 double ExperimentRunner::remainingSeconds() const

@@ -71,7 +71,8 @@ public:
     const ExperimentPlan& plan() const { return m_plan; }
     const QList<CellStatus>& statuses() const { return m_statuses; }
     int runningCell() const { return m_current; }
-    /// Of the running cell: samples recorded so far (0 in its warm-up).
+    /// Of the running cell: samples recorded so far (0 in its warm-up); of one that has just
+    /// ended, what it recorded.
     qint64 runningSamples() const;
     /// Seconds the cells not yet complete are expected to take (the running one's rest included).
     double remainingSeconds() const;

@@ -58,6 +58,11 @@ private slots:
         QCOMPARE(page.cellGrid()->item(3, 1)->text(), u"50%"_s);
         QCOMPARE(page.cellGrid()->item(3, 6)->text(), u"004-qos-1-payload-50pct"_s);
         QCOMPARE(stateOf(page, 0), u"pending"_s);
+        // A cell not run yet has the view's own background, not a black one (issue 33).
+        for (int row = 0; row < page.cellGrid()->rowCount(); ++row)
+            for (int col = 0; col < page.cellGrid()->columnCount(); ++col)
+                QVERIFY2(page.cellGrid()->item(row, col)->data(Qt::BackgroundRole).isNull(),
+                         qPrintable(u"row %1 column %2"_s.arg(row).arg(col)));
         QVERIFY(page.runButton()->isEnabled());
         QVERIFY(!page.resumeButton()->isEnabled()); // no folder with an experiment
         // Without a folder it says so instead of running somewhere.
@@ -222,6 +227,11 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
         QCOMPARE(finished.first().first().toInt(), 130);
         QCOMPARE(stateOf(page, 0), u"pending"_s);
+        // A cell not run yet has the view's own background, not a black one (issue 33).
+        for (int row = 0; row < page.cellGrid()->rowCount(); ++row)
+            for (int col = 0; col < page.cellGrid()->columnCount(); ++col)
+                QVERIFY2(page.cellGrid()->item(row, col)->data(Qt::BackgroundRole).isNull(),
+                         qPrintable(u"row %1 column %2"_s.arg(row).arg(col)));
         QVERIFY(page.runButton()->isEnabled());
         QVERIFY(page.resumeButton()->isEnabled());
         QString why;

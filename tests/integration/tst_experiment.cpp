@@ -13,6 +13,7 @@
 #include <csignal>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QHash>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -126,6 +127,16 @@ private slots:
         QVERIFY2(resumed->exitCode() == 0, resumed->readAllStandardError().constData());
         QCOMPARE(indicesOf(jsonLines(resumedOut), u"started"_s), (QList<int> {2, 3}));
         QCOMPARE(indicesOf(jsonLines(resumedOut), u"finished"_s), (QList<int> {2, 3}));
+        // A cell's last progress line says what it recorded, not 0 after 57 of 60 (issue 33).
+        QHash<int, qint64> lastProgress;
+        for (const QJsonObject& o : jsonLines(resumedOut)) {
+            const int i = o.value(u"index"_s).toInt();
+            if (o.value(u"event"_s).toString() == u"progress"_s)
+                lastProgress[i] = o.value(u"samples"_s).toInteger();
+            else if (o.value(u"event"_s).toString() == u"finished"_s)
+                QVERIFY2(lastProgress.value(i, 60) >= 60,
+                         qPrintable(u"cell %1: last progress %2 of 60"_s.arg(i).arg(lastProgress.value(i))));
+        }
 
         // Four complete runs, each with its levels and at least its samples.
         const QStringList runs = QDir(out + u"/runs"_s).entryList({u"*.bsrun"_s}, QDir::Files, QDir::Name);

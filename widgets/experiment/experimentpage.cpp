@@ -468,7 +468,11 @@ void ExperimentPage::updateRow(int row)
             if (col > first)
                 item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         }
-        item->setBackground(stateColor(s.state));
+        // A cell not run yet keeps the view's own background (an invalid colour would paint black).
+        if (const QColor colour = stateColor(s.state); colour.isValid())
+            item->setBackground(colour);
+        else
+            item->setData(Qt::BackgroundRole, QVariant());
         QString tip = m_cells[row].label() + u"\n"_s + CellStatus::stateName(s.state);
         if (!s.reason.isEmpty())
             tip += u": "_s + s.reason;
