@@ -85,6 +85,11 @@ desktop-file-validate "$desktop" || fail "desktop-file-validate $desktop"
 grep -qx 'Exec=bridgescope %F' "$desktop" || fail "the desktop file's Exec is not 'bridgescope %F'"
 grep -qx 'MimeType=.*application/x-bridgescope-run;.*' "$desktop" \
     || fail "the desktop file's MimeType lacks application/x-bridgescope-run"
+# Listing YAML would make Bridgescope every YAML file's default program where none is set (GLib
+# takes the first program that names the type itself over editors that take any text/plain).
+if grep -q '^MimeType=.*yaml' "$desktop"; then
+    fail "the desktop file claims YAML files: Bridgescope would become their default program"
+fi
 pass "desktop-file-validate"
 
 metainfo="$usr/share/metainfo/io.github.bridgescope.Bridgescope.metainfo.xml"
