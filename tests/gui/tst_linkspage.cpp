@@ -14,6 +14,7 @@
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/links/ruleseditor.h"
+#include "widgets/common/livetext.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/map/configfilecontroller.h"
 

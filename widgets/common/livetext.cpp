@@ -19,6 +19,8 @@ LiveText::LiveText(QWidget* parent)
 {
     setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     setFocusPolicy(Qt::ClickFocus); // for Ctrl+C
+    // Opaque: a new text repaints this widget alone, not the parents beneath it up to the window.
+    setAutoFillBackground(true);
 }
 
 void LiveText::setText(const QString& text)

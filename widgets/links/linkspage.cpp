@@ -5,6 +5,7 @@
 #include "config/configreader.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
+#include "widgets/common/livetext.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/viewsetup.h"
@@ -244,12 +245,18 @@ QWidget* LinksPage::createDetailPane()
     auto* pane = new QWidget(this);
     auto* v = new QVBoxLayout(pane);
     v->setContentsMargins(0, 0, 0, 0);
-    m_detail = new QLabel(tr("Select a link to see its history."), pane);
+    // The link's name changes with the selection, its figures every second: a LiveText repaints
+    // itself alone, where a word-wrapped QLabel's new text relaid out and repainted the pane.
+    m_detailTitle = new QLabel(tr("Select a link to see its history."), pane);
+    m_detailTitle->setObjectName(u"linkDetailTitle"_s);
+    m_detailTitle->setWordWrap(true);
+    m_detailTitle->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_detail = new LiveText(pane);
     m_detail->setObjectName(u"linkDetail"_s);
     m_detail->setWordWrap(true);
-    m_detail->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_rateChart = new RateChart(pane);
     m_latencyChart = new RateChart(pane);
+    v->addWidget(m_detailTitle);
     v->addWidget(m_detail);
     v->addWidget(new QLabel(tr("Destination rate:"), pane));
     v->addWidget(m_rateChart, 1);
@@ -351,10 +358,13 @@ void LinksPage::showDetail()
         return;
     const LinkDef& d = monitor->link(i);
     const LinkFigures f = monitor->figures(i);
-    m_detail->setText(tr("<b>%1</b> → <b>%2</b> (%3)<br>%4 messages at the source, %5 at the destination, "
-                         "%6 lost, %7 Header.seq gaps, %8 duplicates, %9 reordered, %10 stalls")
-                          .arg(d.sourceTopic().toHtmlEscaped(), d.destinationTopic().toHtmlEscaped(),
-                               d.bridge().toHtmlEscaped())
+    const QString title = tr("<b>%1</b> → <b>%2</b> (%3)")
+                              .arg(d.sourceTopic().toHtmlEscaped(), d.destinationTopic().toHtmlEscaped(),
+                                   d.bridge().toHtmlEscaped());
+    if (m_detailTitle->text() != title)
+        m_detailTitle->setText(title);
+    m_detail->setText(tr("%1 messages at the source, %2 at the destination, %3 lost, %4 Header.seq gaps, "
+                         "%5 duplicates, %6 reordered, %7 stalls")
                           .arg(f.source.messages)
                           .arg(f.destination.messages)
                           .arg(f.lost)
@@ -362,7 +372,7 @@ void LinksPage::showDetail()
                           .arg(f.duplicates)
                           .arg(f.reordered)
                           .arg(f.stalls)
-                      + u"<br>"_s + LinkModel::latencySourceText(f.latencySource).toHtmlEscaped());
+                      + u'\n' + LinkModel::latencySourceText(f.latencySource));
     QList<double> rates;
     QList<double> p99;
     for (const LinkMonitor::HistoryPoint& h : monitor->history(i)) {

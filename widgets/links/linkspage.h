@@ -7,6 +7,7 @@
 
 class EventLogModel;
 class LinkModel;
+class LiveText;
 class QLabel;
 class QLayout;
 class QLineEdit;
@@ -43,7 +44,8 @@ public:
     LinkModel* linkModel() const { return m_model; }
     EventLogModel* eventModel() const { return m_eventModel; }
     QLabel* summaryLabel() const { return m_summary; }
-    QLabel* detailLabel() const { return m_detail; }
+    /// The selected link's figures (its name is above them, in a label of its own).
+    LiveText* detailLabel() const { return m_detail; }
     int notificationsShown() const { return m_notified; }
 
 protected:
@@ -69,7 +71,8 @@ private:
     QTableView* m_events = nullptr;
     QLineEdit* m_filter = nullptr;
     QLabel* m_summary = nullptr;
-    QLabel* m_detail = nullptr;
+    QLabel* m_detailTitle = nullptr;
+    LiveText* m_detail = nullptr;
     RateChart* m_rateChart = nullptr;
     RateChart* m_latencyChart = nullptr;
     QSystemTrayIcon* m_tray = nullptr;
