@@ -32,6 +32,7 @@ void ConfigTabs::refresh()
     m_rebuilding = true;
     while (count() > m_files->openCount())
         removeTab(count() - 1);
+    m_iconState.fill(-2); // the tabs may stand for other configs now
     while (count() < m_files->openCount())
         addTab(QString());
     m_health.resize(m_files->openCount());
@@ -65,7 +66,13 @@ void ConfigTabs::describe(int i)
         tip += u'\n' + summary(health);
     if (tabToolTip(i) != tip)
         setTabToolTip(i, tip);
-    setTabIcon(i, health.isEmpty() ? QIcon() : SeverityIconProxy::healthIcon(worst(health)));
+    // Set only when it changes: a new icon relays the bar out and repaints it with the page.
+    const int state = health.isEmpty() ? -1 : int(worst(health));
+    m_iconState.resize(count(), -2);
+    if (m_iconState[i] != state) {
+        m_iconState[i] = state;
+        setTabIcon(i, state < 0 ? QIcon() : SeverityIconProxy::healthIcon(state));
+    }
 }
 
 QString ConfigTabs::summary(const QHash<quint64, MappingHealth>& health)

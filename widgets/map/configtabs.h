@@ -31,5 +31,6 @@ private:
 
     ConfigFileController* m_files;
     QList<QHash<quint64, MappingHealth>> m_health;
+    QList<int> m_iconState; ///< the state each tab's icon shows (-1: none, -2: not set yet)
     bool m_rebuilding = false;
 };
