@@ -6,7 +6,9 @@
 // SIGTERM. roscpp outside core/ros on purpose: this is
 // the peer, not Bridgescope.
 //
-//   bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS
+// It says on stderr "topics N" after each look, and stops looking once it has EXPECTED topics.
+//
+//   bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -27,8 +29,8 @@ void onTerm(int) { g_stop = true; }
 
 int main(int argc, char** argv)
 {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS\n");
+    if (argc != 5) {
+        std::fprintf(stderr, "usage: bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED\n");
         return 2;
     }
     std::signal(SIGTERM, onTerm);
@@ -37,12 +39,13 @@ int main(int argc, char** argv)
     ros::NodeHandle node;
     const std::string prefix = argv[2];
     const int wantSeconds = std::atoi(argv[3]);
+    const std::size_t expected = std::size_t(std::max(0, std::atoi(argv[4])));
     std::vector<ros::Subscriber> subs;
     std::vector<std::string> have;
     ros::AsyncSpinner spinner(1);
     spinner.start();
     // Topics appear as the bridge advertises them: look again for a while.
-    for (int i = 0; i < wantSeconds * 2 && !g_stop; ++i) {
+    for (int i = 0; i < wantSeconds * 2 && !g_stop && subs.size() < expected; ++i) {
         ros::master::V_TopicInfo topics;
         ros::master::getTopics(topics);
         for (const auto& t : topics) {
@@ -54,9 +57,10 @@ int main(int argc, char** argv)
                 = [](const topic_tools::ShapeShifter::ConstPtr&) { ++g_received; };
             subs.push_back(node.subscribe<topic_tools::ShapeShifter>(t.name, 10, count));
         }
-        usleep(500000);
+        std::fprintf(stderr, "topics %zu\n", subs.size());
+        if (subs.size() < expected)
+            usleep(500000);
     }
-    std::fprintf(stderr, "bench_rossub: %zu topics\n", subs.size());
     for (int tenths = 0; !g_stop; ++tenths) {
         usleep(100000);
         if (tenths % 10 == 0) {
