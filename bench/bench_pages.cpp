@@ -4,7 +4,9 @@
 // This process is the window: MainWindow and the demo lab started as `bridgescope --demo` starts
 // them (DemoStart), the lab's servers, bridges and nodes in their own processes. After a warm-up
 // it shows each page in turn and measures its own CPU time (every thread: Paho's, roscpp's, the
-// GUI's) over a few seconds, then the Measure page again with Pause on. The peer is mosquitto_sub
+// GUI's) over a few seconds, then the Measure page again with Pause on. Before the lab, the window
+// connected to a broker and a master of its own where nothing is published: what it costs when
+// nothing changes at all (budget 1 %, as paused). The peer is mosquitto_sub
 // subscribed to every topic of the same broker, measured over the same spans: what receiving the
 // lab's traffic costs a process that does nothing else with it. The ratio is the gate's figure;
 // the budgets are absolute (5 % of a core with Measure shown, 3 % on any other page, 1 % paused).
@@ -14,6 +16,9 @@
 #include "app/gui/mainwindow.h"
 #include "benchutil.h"
 #include "demo/demolab.h"
+#include "mqtt/mqttprofile.h"
+#include "testservers.h"
+#include "widgets/discover/discoverpage.h"
 #include "widgets/measure/measurepage.h"
 
 #include <memory>
@@ -104,6 +109,24 @@ int main(int argc, char** argv)
     MainWindow window;
     window.resize(1280, 800);
     window.show();
+    window.pages()->setCurrentWidget(window.measurePage());
+    // Nothing arriving: the window on a broker and a master of its own, quiet.
+    double quietPercent = -1;
+    {
+        TestServers quiet;
+        if (!quiet.startMosquitto() || !quiet.startRosMaster()) {
+            std::fprintf(stderr, "cannot start the quiet servers: %s\n", qPrintable(quiet.errorString()));
+            return 1;
+        }
+        window.discoverPage()->setRosMasterUri(quiet.rosMasterUri());
+        window.discoverPage()->connectBroker(MqttProfile::fromUrl(quiet.brokerUrl()));
+        idle(5000);
+        const double own0 = Bench::cpuSeconds();
+        QElapsedTimer span;
+        span.start();
+        idle(std::max(5, seconds / 2) * 1000);
+        quietPercent = 100 * (Bench::cpuSeconds() - own0) / (double(span.nsecsElapsed()) / 1e9);
+    }
     DemoLab lab;
     QString failed;
     bool started = false;
@@ -168,6 +191,8 @@ int main(int argc, char** argv)
         paints->counts.clear();
     report(u"Measure, paused"_s, ::measure(peer.processId(), seconds), 1);
     printPaints(paints.get(), seconds);
+    Bench::gate("pages_nothing_arriving_cpu_percent", quietPercent);
+    std::printf("| Measure, nothing arriving (a quiet broker and master) | %.2f | – | – | 1 |\n", quietPercent);
     std::printf("window resident memory: %lld MiB\n", Bench::statusKb("VmRSS:") / 1024);
     peer.terminate();
     peer.waitForFinished(3000);
