@@ -23,8 +23,6 @@ RateChart::RateChart(QWidget* parent)
     m_series->attachAxis(m_x);
     m_series->attachAxis(m_y);
     m_x->setTitleText(tr("seconds ago"));
-    m_x->setLabelFormat(QStringLiteral("%d"));
-    m_y->setLabelFormat(QStringLiteral("%.3g"));
     chart->setMargins(QMargins(2, 2, 2, 2));
     setChart(chart);
     ChartStyle::apply(chart, palette());
@@ -45,8 +43,9 @@ void RateChart::setSamples(const QList<double>& samples, const QString& unit)
         bottom = std::min(bottom, samples[i]);
     }
     m_series->replace(points);
-    m_x->setRange(std::min(-10, 1 - n), 0);
-    m_y->setRange(bottom < 0 ? bottom * 1.15 : 0, top > 0 ? top * 1.15 : (bottom < 0 ? 0 : 1));
+    // Round ticks (0, 2.5, 5 … not 5.92, 8.88, 11.8), the axis ends on one above the data.
+    ChartStyle::setNiceRange(m_x, std::min(-10, 1 - n), 0, 5);
+    ChartStyle::setNiceRange(m_y, bottom < 0 ? bottom * 1.05 : 0, top > 0 ? top * 1.05 : (bottom < 0 ? 0 : 1), 5);
     m_y->setTitleText(unit);
 }
 
