@@ -181,6 +181,8 @@ private slots:
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass
         QVERIFY2(drawnTexts(chart.views().first()).contains(chart.beyondText(u"x"_s)),
                  qPrintable(drawnTexts(chart.views().first()).join(u" | ")));
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            chart.grab().save(shots + u"/ecdf-outlier.png"_s);
         // Ticks on round numbers.
         auto* x = qobject_cast<QValueAxis*>(c->axes(Qt::Horizontal).first());
         const double step = (x->max() - x->min()) / (x->tickCount() - 1);
