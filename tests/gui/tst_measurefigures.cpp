@@ -7,6 +7,7 @@
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
 #include "latency/latencystatsmodel.h"
+#include "latency/latencytimeline.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
@@ -17,8 +18,10 @@
 #include "widgets/measure/measurepage.h"
 
 #include <cmath>
+#include <limits>
 #include <QChart>
 #include <QChartView>
+#include <QDateTimeAxis>
 #include <QGraphicsTextItem>
 #include <QLegendMarker>
 #include <QRandomGenerator>
@@ -192,6 +195,21 @@ private slots:
         chart.setLogScale(true);
         QVERIFY(chart.range(u"x"_s).second >= 328);
         QVERIFY(chart.beyondText(u"x"_s).isEmpty());
+    }
+
+    // Stamps from a clock that is not set beside ones from now: days apart, a few ticks still.
+    void theTimeAxisStaysBoundedForClocksFarApart()
+    {
+        LatencyTimeline timeline;
+        timeline.add(0, 20'000'000);
+        timeline.add(1'700'000'000'000'000'000, 25'000'000);
+        timeline.add(std::numeric_limits<qint64>::max(), 30'000'000);
+        TimelineChart chart;
+        chart.setTimeline(&timeline);
+        QCOMPARE(chart.pointCount(), 3);
+        QVERIFY2(chart.timeAxis()->tickCount() >= 2 && chart.timeAxis()->tickCount() <= 7,
+                 qPrintable(QString::number(chart.timeAxis()->tickCount())));
+        QVERIFY(chart.latencyAxis()->max() >= 30 && chart.latencyAxis()->max() <= 40);
     }
 
     void rateChartTicksAreRound()

@@ -304,6 +304,7 @@ QWidget* MeasurePage::createChartPane()
 void MeasurePage::setUpSummaryView(QAbstractItemModel* styled)
 {
     auto* pinned = new PinnedRowsProxy(this);
+    pinned->setDynamicSortFilter(false); // a row's kind changes only with a reset: no refilter per tick
     pinned->setSourceModel(styled);
     m_summaryView->setObjectName(u"summaryView"_s);
     m_summaryView->setModel(pinned);
