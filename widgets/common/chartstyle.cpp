@@ -42,3 +42,13 @@ void ChartStyle::setNiceRange(QValueAxis* axis, double lo, double hi, int wanted
     axis->setTickCount(a.tickCount());
     axis->setLabelFormat(QStringLiteral("%.") + QString::number(a.decimals) + QStringLiteral("f"));
 }
+
+void ChartStyle::setRoundTicks(QValueAxis* axis, double lo, double hi, int wantedTicks)
+{
+    const double step = NiceTicks::step(lo, hi, wantedTicks);
+    axis->setRange(lo, hi);
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0);
+    axis->setTickInterval(step);
+    axis->setLabelFormat(QStringLiteral("%.") + QString::number(NiceTicks::decimals(step)) + QStringLiteral("f"));
+}

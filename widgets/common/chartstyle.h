@@ -14,6 +14,9 @@ void apply(QChart* chart, const QPalette& palette);
 /// Shows [lo, hi] on `axis` with ticks on round numbers (NiceTicks), ends on a tick, and labels
 /// with the decimals the step needs, the same for every label (10 and 7.5 as "10.0" and "7.5").
 void setNiceRange(QValueAxis* axis, double lo, double hi, int wantedTicks = 6);
+/// Shows exactly [lo, hi] on `axis` (a time window that must not grow) with ticks on the round
+/// numbers inside it, at most about `wantedTicks`.
+void setRoundTicks(QValueAxis* axis, double lo, double hi, int wantedTicks = 4);
 /// Whether the palette is a dark one (its window darker than its text).
 bool isDark(const QPalette& palette);
 } // namespace ChartStyle

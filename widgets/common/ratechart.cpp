@@ -44,7 +44,7 @@ void RateChart::setSamples(const QList<double>& samples, const QString& unit)
     }
     m_series->replace(points);
     // Round ticks (0, 2.5, 5 … not 5.92, 8.88, 11.8), the axis ends on one above the data.
-    ChartStyle::setNiceRange(m_x, std::min(-10, 1 - n), 0, 5);
+    ChartStyle::setRoundTicks(m_x, std::min(-10, 1 - n), 0); // the window as it is, ticks on whole 5s, 20s…
     ChartStyle::setNiceRange(m_y, bottom < 0 ? bottom * 1.05 : 0, top > 0 ? top * 1.05 : (bottom < 0 ? 0 : 1), 5);
     m_y->setTitleText(unit);
 }
