@@ -41,7 +41,7 @@ std::pair<double, double> Ecdf::shownRange(const LatencySeries& series)
     if (n < kMinValuesToCut)
         return {lo, hi};
     const double q = series.toMs(sorted.at(qint64(std::floor(kShownQuantile * double(n - 1)))));
-    const double edge = q + std::max({0.25 * (q - lo), 0.05 * std::abs(q), 1e-3});
+    const double edge = q + std::max({0.4 * (q - lo), 0.05 * std::abs(q), 1e-3});
     return {lo, std::min(hi, edge)};
 }
 

@@ -22,8 +22,9 @@ public:
                                   bool logScale = false);
 
     /// The values a linear axis shows, in ms: from the smallest to a high quantile (kShownQuantile,
-    /// the nearest rank below) plus a quarter of that span as margin, or to the largest value when
-    /// it lies within. One outlier does not stretch the axis; the figure marks what lies beyond.
+    /// the nearest rank below) plus two fifths of that span as margin (a normal tail fits), or to
+    /// the largest value when it lies within. One outlier does not stretch the axis; the figure
+    /// marks what lies beyond.
     /// A series of fewer than kMinValuesToCut values is shown whole. {+inf, -inf} when empty.
     static std::pair<double, double> shownRange(const LatencySeries& series);
     /// Values of the series' window above `ms`.
