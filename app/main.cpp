@@ -116,9 +116,11 @@ int main(int argc, char** argv)
     const QString first = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool help = first == u"-h"_s || first == u"--help"_s;
     const bool version = first == u"-v"_s || first == u"--version"_s;
-    static const QStringList commands
-        = {u"bridge"_s,     u"config"_s, u"demo"_s,   u"demo-node"_s, u"discover"_s,
-           u"experiment"_s, u"probe"_s,  u"record"_s, u"report"_s,    u"watch"_s};
+    // The commands people type; `demo-node` (the demo lab's own child processes) is not one of
+    // them: it runs, but no list, help or suggestion names it.
+    static const QStringList commands = {u"bridge"_s, u"config"_s, u"demo"_s,   u"discover"_s, u"experiment"_s,
+                                         u"probe"_s,  u"record"_s, u"report"_s, u"watch"_s};
+    const bool internal = first == u"demo-node"_s;
     if (first == u"report"_s && wantsPdf(argc, argv)) {
         // PDF reports lay text out with Qt GUI; no window ever opens, so no display is needed.
         if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
@@ -127,7 +129,7 @@ int main(int argc, char** argv)
         installTranslations(app);
         return runReportCommand(app.arguments().mid(1));
     }
-    if (commands.contains(first) || help || version) {
+    if (commands.contains(first) || internal || help || version) {
         // Commands need no display.
         QCoreApplication app(argc, argv);
         installTranslations(app);

@@ -1704,6 +1704,13 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>%1: a chart is saved as SVG or PNG; give the file the suffix .svg or .png</source>
         <translation>%1: ein Diagramm wird als SVG oder PNG gespeichert; die Datei braucht die Endung .svg oder .png</translation>
     </message>
+    <message numerus="yes">
+        <source>%n beyond %1 ms</source>
+        <translation>
+            <numerusform>%n jenseits von %1 ms</numerusform>
+            <numerusform>%n jenseits von %1 ms</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>EcdfSvg</name>
@@ -1714,6 +1721,13 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>dashed: mean · dotted: median</source>
         <translation>gestrichelt: Mittel · gepunktet: Median</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n beyond %2 ms</source>
+        <translation>
+            <numerusform>%1: %n jenseits von %2 ms</numerusform>
+            <numerusform>%1: %n jenseits von %2 ms</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3458,6 +3472,10 @@ factors:
     <message>
         <source>&amp;Dark</source>
         <translation>&amp;Dunkel</translation>
+    </message>
+    <message>
+        <source>broker %1 unreachable</source>
+        <translation>Broker %1 nicht erreichbar</translation>
     </message>
 </context>
 <context>
@@ -7153,6 +7171,25 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>column %1 (%2): %3 is %4</source>
         <translation>Spalte %1 (%2): %3 ist %4</translation>
+    </message>
+</context>
+<context>
+    <name>TimelineChart</name>
+    <message>
+        <source>total, mean per second</source>
+        <translation>gesamt, Mittel je Sekunde</translation>
+    </message>
+    <message>
+        <source>highest per second</source>
+        <translation>Höchstwert je Sekunde</translation>
+    </message>
+    <message>
+        <source>time of the sample</source>
+        <translation>Zeit der Probe</translation>
+    </message>
+    <message>
+        <source>latency [ms]</source>
+        <translation>Latenz [ms]</translation>
     </message>
 </context>
 <context>

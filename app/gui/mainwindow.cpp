@@ -132,14 +132,32 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
     connect(m_files, &ConfigFileController::recentFilesChanged, this, &MainWindow::updateRecentMenu);
     connect(m_configEditor->problems()->model(), &ProblemModel::countsChanged, this,
-            [this](int errors, int warnings) {
-                m_problemStatus->setText(ProblemModel::countText(errors, warnings));
-            });
-    m_problemStatus->setText(ProblemModel::countText(0, 0));
+            &MainWindow::updateProblemStatus);
+    connect(m_session->mqtt(), &MqttConnection::stateChanged, this, &MainWindow::updateProblemStatus);
+    m_problemStatus->setObjectName(u"problemStatus"_s);
+    updateProblemStatus();
     updateTitle();
     // 1280x800, or a smaller screen's room.
     const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1280, 800);
     resize(std::min(1280, screen.width()), std::min(800, screen.height()));
+}
+
+/// The status bar's word on problems: the config's errors and warnings, and a broker that is
+/// down (it never says "no problems" while the broker cannot be reached).
+void MainWindow::updateProblemStatus()
+{
+    const ProblemModel* problems = m_configEditor->problems()->model();
+    QString text = ProblemModel::countText(problems->errorCount(), problems->warningCount());
+    const MqttConnection* mqtt = m_session->mqtt();
+    const bool down
+        = mqtt->state() == MqttConnection::State::Reconnecting || mqtt->state() == MqttConnection::State::Failed;
+    if (down) {
+        const QString broker = MqttProfile::withoutCredentials(mqtt->profile().url);
+        const QString config = problems->errorCount() + problems->warningCount() > 0 ? u" · "_s + text : QString();
+        text = tr("broker %1 unreachable").arg(broker) + config;
+    }
+    m_problemStatus->setText(text);
+    m_problemStatus->setToolTip(down ? mqtt->stateDetail() : QString());
 }
 
 void MainWindow::rememberSession()
@@ -189,6 +207,8 @@ MainWindow::~MainWindow()
     // Pages first, while the window is still whole: an open cell editor commits on destruction
     // and the edit reaches this window's slots.
     delete m_pages;
+    // The connection closes when the session goes, after this window's part of it is gone.
+    disconnect(m_session->mqtt(), nullptr, this, nullptr);
 }
 
 /// The Links page watches every config open on the Map page, as they are edited (a second after

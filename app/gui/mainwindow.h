@@ -74,6 +74,7 @@ private:
     void createMenus();
     void watchTheMapConfig();
     void updateTitle();
+    void updateProblemStatus();
     void updateRecentMenu(const QStringList& files);
     void chooseFiles();
 

@@ -3,6 +3,7 @@
 
 #include "latency/latencyseries.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -28,6 +29,26 @@ qint64 unitsFloor(double ms, double msPerUnit)
     return clampedUnits(std::floor(ms / msPerUnit));
 }
 } // namespace
+
+std::pair<double, double> Ecdf::shownRange(const LatencySeries& series)
+{
+    const SortedBlocks& sorted = series.sorted();
+    const qint64 n = sorted.size();
+    if (n == 0)
+        return {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    const double lo = series.toMs(sorted.min());
+    const double hi = series.toMs(sorted.max());
+    if (n < kMinValuesToCut)
+        return {lo, hi};
+    const double q = series.toMs(sorted.at(qint64(std::floor(kShownQuantile * double(n - 1)))));
+    const double edge = q + std::max({0.4 * (q - lo), 0.05 * std::abs(q), 1e-3});
+    return {lo, std::min(hi, edge)};
+}
+
+qint64 Ecdf::countAbove(const LatencySeries& series, double ms)
+{
+    return series.sorted().size() - series.sorted().countAtMost(unitsFloor(ms, series.msPerUnit()));
+}
 
 QList<QPointF> Ecdf::steps(const LatencySeries& series)
 {

@@ -20,6 +20,7 @@ void LatencyEngine::setPipeline(const Pipeline& pipeline)
     m_window = pipeline.window();
     m_joiner.reset(pipeline.topicCount());
     m_samples = 0;
+    m_timeline.clear();
     rebuildSeries();
 }
 
@@ -186,6 +187,7 @@ void LatencyEngine::takeSample(const std::vector<qint64>& t)
     for (int s = 0; s < stages; ++s)
         m_series[std::size_t(s)]->append(saturated(span(t, std::size_t(s), std::size_t(s) + 1)));
     m_series[std::size_t(m_total)]->append(saturated(span(t, 0, t.size() - 1)));
+    m_timeline.add(t.front(), saturated(span(t, 0, t.size() - 1)));
     if (m_roundTrip >= 0) {
         // As in the paper: total minus every stage that stays on one host.
         LatencyInt128 rt = span(t, 0, t.size() - 1);
@@ -217,6 +219,7 @@ void LatencyEngine::reset()
     m_joiner.reset(m_pipeline.topicCount());
     for (auto& s : m_series)
         s->clear();
+    m_timeline.clear();
     m_samples = 0;
     ++m_revision;
 }

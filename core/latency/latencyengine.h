@@ -3,6 +3,7 @@
 
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
+#include "latency/latencytimeline.h"
 #include "latency/pipeline.h"
 #include "latency/samplejoiner.h"
 #include "latency/seriesid.h"
@@ -75,6 +76,8 @@ public:
     int roundTripSeries() const { return m_roundTrip; }
     int oneWaySeries() const { return m_oneWay; }
     int clockOffsetSeries() const { return m_clockOffset; }
+    /// The total latency per second of the samples' first stamps (the Measure page's time plot).
+    const LatencyTimeline& timeline() const { return m_timeline; }
 
     const SampleJoiner::Counters& counters() const { return m_joiner.counters(); }
     int pending() const { return m_joiner.pending(); }
@@ -110,6 +113,7 @@ private:
     std::pair<int, int> m_offsetStages {-1, -1};
     std::vector<qint64> m_times; ///< scratch for the joiner
     SampleListener m_listener;
+    LatencyTimeline m_timeline;
     qint64 m_samples = 0;
     quint64 m_revision = 0;
     quint64 m_layoutRevision = 0;

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "ecdfsvg.h"
 
+#include "base/niceticks.h"
 #include "latency/ecdf.h"
 #include "latency/latencyseries.h"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <limits>
 
@@ -21,48 +24,56 @@ QString num(double v)
 }
 } // namespace
 
+QString EcdfSvg::beyondMarks(const QList<Curve>& curves, double hi, double right, double top, double plotH)
+{
+    // Values beyond the axis' end: a dot at the end where the curve leaves, and a count.
+    QString s;
+    QStringList counts;
+    for (const Curve& c : curves) {
+        if (!c.series || c.series->count() == 0)
+            continue;
+        const qint64 beyond = Ecdf::countAbove(*c.series, hi);
+        if (beyond == 0)
+            continue;
+        const double level = 1.0 - double(beyond) / double(c.series->count());
+        s += u"<circle cx=\"%1\" cy=\"%2\" r=\"4.5\" fill=\"%3\"/>\n"_s.arg(
+            num(right), num(top + (1.0 - level) * plotH), c.color);
+        counts << tr("%1: %n beyond %2 ms", nullptr, int(std::min<qint64>(beyond, INT_MAX)))
+                      .arg(c.label, QString::number(hi, 'g', 6));
+    }
+    for (qsizetype i = 0; i < counts.size(); ++i)
+        s += u"<text x=\"%1\" y=\"%2\" text-anchor=\"end\" font-size=\"11\" fill=\"#444444\">%3</text>\n"_s
+                 .arg(num(right - 8), num(top + plotH - 10 - 15.0 * double(counts.size() - 1 - i)),
+                      esc(counts[i]));
+    return s;
+}
+
 QList<double> EcdfSvg::ticks(double lo, double hi, int wanted)
 {
-    QList<double> out;
-    if (!(hi > lo) || wanted < 2)
-        return out;
-    const double raw = (hi - lo) / double(wanted - 1);
-    const double power = std::pow(10.0, std::floor(std::log10(raw)));
-    double step = power;
-    for (double f : {1.0, 2.0, 2.5, 5.0, 10.0}) {
-        step = f * power;
-        if (step >= raw)
-            break;
-    }
-    for (double t = std::ceil(lo / step) * step; t <= hi + step * 1e-9; t += step)
-        out << (std::abs(t) < step * 1e-9 ? 0.0 : t);
-    return out;
+    return NiceTicks::ticks(lo, hi, wanted);
 }
 
 QByteArray EcdfSvg::render(const QList<Curve>& curves, int width, int height, const QString& title)
 {
-    // Data range over all curves, with round ends.
+    // The range over all curves up to a high quantile (Ecdf::shownRange: one outlier does not
+    // stretch the axis), with ends on round ticks.
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (const Curve& c : curves) {
         if (!c.series || c.series->count() == 0)
             continue;
-        lo = std::min(lo, c.series->toMs(c.series->sorted().min()));
-        hi = std::max(hi, c.series->toMs(c.series->sorted().max()));
+        const auto [a, b] = Ecdf::shownRange(*c.series);
+        lo = std::min(lo, a);
+        hi = std::max(hi, b);
     }
     if (!(hi >= lo)) {
         lo = 0;
         hi = 1;
     }
-    if (hi - lo < 1e-6) {
-        lo -= 0.5;
-        hi += 0.5;
-    }
-    QList<double> xTicks = ticks(lo, hi);
-    const double step = xTicks.size() > 1 ? xTicks[1] - xTicks[0] : (hi - lo);
-    lo = std::floor(lo / step) * step;
-    hi = std::ceil(hi / step) * step;
-    xTicks = ticks(lo, hi);
+    const NiceTicks::Axis axis = NiceTicks::axis(lo, hi);
+    lo = axis.lo;
+    hi = axis.hi;
+    const QList<double> xTicks = NiceTicks::ticks(lo, hi);
 
     const int legendRows = int(curves.size() + 1) / 2;
     const double left = 56;
@@ -95,7 +106,7 @@ QByteArray EcdfSvg::render(const QList<Curve>& curves, int width, int height, co
         num(left), num(top), num(plotW), num(plotH));
     for (double t : std::as_const(xTicks))
         s += u"<text x=\"%1\" y=\"%2\" text-anchor=\"middle\">%3</text>\n"_s.arg(
-            num(x(t)), num(top + plotH + 16), QString::number(t, 'g', 6));
+            num(x(t)), num(top + plotH + 16), QString::number(t, 'f', axis.decimals));
     for (int i = 0; i <= 5; ++i)
         s += u"<text x=\"%1\" y=\"%2\" text-anchor=\"end\">%3</text>\n"_s.arg(
             num(left - 6), num(y(i / 5.0) + 4), QString::number(i / 5.0, 'f', 1));
@@ -126,6 +137,7 @@ QByteArray EcdfSvg::render(const QList<Curve>& curves, int width, int height, co
              "y2=\"%4\"/>\n"_s.arg(c.color, num(x(median)), num(y(0)), num(y(1)));
     }
     s += u"</g>\n"_s;
+    s += beyondMarks(curves, hi, left + plotW, top, plotH);
 
     // Legend: two columns under the axis title.
     for (qsizetype i = 0; i < curves.size(); ++i) {

@@ -284,6 +284,33 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
     return out;
 }
 
+/// The facts of compared runs as one table, a column per run (`th` opens a label cell): a fact
+/// that differs between runs is read across, and the page keeps room for the figure.
+QString comparedFacts(const Report& report, const QString& th)
+{
+    QStringList keys;
+    std::vector<QHash<QString, QString>> values;
+    for (const auto& run : report.runs()) {
+        values.emplace_back();
+        for (const auto& [key, value] : facts(*run)) {
+            if (!keys.contains(key))
+                keys << key;
+            values.back().insert(key, value);
+        }
+    }
+    QString out = u"<table class=\"facts\" cellspacing=\"0\" cellpadding=\"3\">\n<tr><td></td>"_s;
+    for (const auto& run : report.runs())
+        out += u"<th align=\"left\">"_s + shown(run->name).toHtmlEscaped() + u"</th>"_s;
+    out += u"</tr>\n"_s;
+    for (const QString& key : std::as_const(keys)) {
+        out += u"<tr>"_s + th + key.toHtmlEscaped() + u"</th>"_s;
+        for (const auto& v : values)
+            out += u"<td>"_s + v.value(key).toHtmlEscaped() + u"</td>"_s;
+        out += u"</tr>\n"_s;
+    }
+    return out + u"</table>\n"_s;
+}
+
 /// Events listed in a report's table; the JSON report has them all.
 constexpr int kMaxEventRows = 1000;
 
@@ -570,15 +597,23 @@ QByteArray ReportFormats::latex(const Report& report)
 QString ReportFormats::htmlBody(const Report& report, bool forQtRichText)
 {
     QString out = u"<h1>"_s + titleOf(report).toHtmlEscaped() + u"</h1>\n"_s;
-    for (const auto& run : report.runs()) {
-        if (report.isComparison())
-            out += u"<h3>"_s + shown(run->name).toHtmlEscaped() + u"</h3>\n"_s;
-        out += u"<table class=\"facts\">\n"_s;
-        for (const auto& [key, value] : facts(*run))
-            out += u"<tr><th>"_s + key.toHtmlEscaped() + u"</th><td>"_s + value.toHtmlEscaped()
-                + u"</td></tr>\n"_s;
-        out += u"</table>\n"_s;
-    }
+    // Qt's rich text (the PDF) knows no style sheet's padding for a class: the labels get a
+    // column of their own width, or the longest ("ROS master") runs into its value.
+    const QString th = forQtRichText ? u"<th align=\"left\" width=\"17%\" style=\"font-weight: normal\">"_s
+                                     : u"<th>"_s;
+    if (forQtRichText && report.isComparison() && report.runs().size() <= 4) // more: too narrow
+        out += comparedFacts(report, th); // on paper, one table: the figure fits below the tables
+    else
+        for (const auto& run : report.runs()) {
+            if (report.isComparison())
+                out += u"<h3>"_s + shown(run->name).toHtmlEscaped() + u"</h3>\n"_s;
+            out += forQtRichText ? u"<table class=\"facts\" cellspacing=\"0\" cellpadding=\"3\">\n"_s
+                                 : u"<table class=\"facts\">\n"_s;
+            for (const auto& [key, value] : facts(*run))
+                out += u"<tr>"_s + th + key.toHtmlEscaped() + u"</th><td>"_s + value.toHtmlEscaped()
+                    + u"</td></tr>\n"_s;
+            out += u"</table>\n"_s;
+        }
     const QString border = forQtRichText ? u" border=\"1\" cellspacing=\"0\" cellpadding=\"3\""_s : QString();
     const auto table = [&](const Table& t, const QString& caption) {
         out += u"<h2>"_s + caption.toHtmlEscaped() + u"</h2>\n<table class=\"stats\""_s + border

@@ -4,6 +4,7 @@
 #include "report/report.h"
 #include "report/reportformats.h"
 
+#include <algorithm>
 #include <QAbstractTextDocumentLayout>
 #include <QBuffer>
 #include <QPainter>
@@ -63,14 +64,28 @@ QByteArray ReportPdf::render(const QString& title, const QString& bodyHtml, cons
             const QSizeF natural = renderer.defaultSize();
             if (natural.isEmpty())
                 continue;
-            const double height = page.width() * natural.height() / natural.width();
-            if (y + height > page.height()) {
+            bool newPage = false;
+            const QRectF at = placeFigure(y, page.size(), natural, &newPage);
+            if (newPage)
                 pdf.newPage();
-                y = 0;
-            }
-            renderer.render(&painter, QRectF(0, y, page.width(), height));
-            y += height + page.height() * 0.02;
+            renderer.render(&painter, at);
+            y = at.bottom() + page.height() * 0.02;
         }
     }
     return buffer.data();
+}
+
+QRectF ReportPdf::placeFigure(double y, const QSizeF& page, const QSizeF& natural, bool* newPage)
+{
+    const double height = page.width() * natural.height() / natural.width();
+    const double room = page.height() - y;
+    *newPage = false;
+    if (height <= room)
+        return QRectF(0, y, page.width(), height);
+    if (room >= kMinShrink * height) {
+        const double width = page.width() * room / height;
+        return QRectF((page.width() - width) / 2, y, width, room);
+    }
+    *newPage = true;
+    return QRectF(0, 0, page.width(), std::min(height, page.height()));
 }

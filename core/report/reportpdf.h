@@ -4,6 +4,7 @@
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QList>
+#include <QRectF>
 #include <QString>
 
 class Report;
@@ -19,4 +20,11 @@ public:
     /// Any report as such a PDF: `bodyHtml` (Qt rich text) paginated, then each SVG figure drawn
     /// full width below it (on a new page when it does not fit).
     static QByteArray render(const QString& title, const QString& bodyHtml, const QList<QByteArray>& figures);
+
+    /// Where a figure of `natural` size goes below content that ends at `y` on a page of `page`
+    /// size: full width when it fits; shrunk into the room left (centred) when that is at least
+    /// kMinShrink of its full-width height, since a page left two-thirds blank for want of a few
+    /// lines reads worse; else at the top of a new page (`newPage` set).
+    static QRectF placeFigure(double y, const QSizeF& page, const QSizeF& natural, bool* newPage);
+    static constexpr double kMinShrink = 0.6;
 };

@@ -6,33 +6,34 @@
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
 #include "app/gui/mainwindow.h"
+#include "base/niceticks.h"
 #include "demo/demolab.h"
 #include "record/runfile.h"
 #include "session/measuresession.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
+#include "widgets/common/livetext.h"
+#include "widgets/common/ratechart.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/links/ruleseditor.h"
-#include "widgets/common/livetext.h"
-#include "widgets/common/ratechart.h"
 #include "widgets/map/configfilecontroller.h"
 
 #include <cmath>
 #include <csignal>
-#include <QChart>
-#include <QValueAxis>
 #include <QApplication>
+#include <QChart>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSortFilterProxyModel>
-#include <QTableView>
 #include <QTabWidget>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QValueAxis>
 
 using namespace Qt::StringLiterals;
 
@@ -60,25 +61,10 @@ private slots:
                  5.0);
     }
 
-    // Ticks on round numbers (not 11.8 / 8.88 / 5.92), and an axis that keeps its range while a
-    // rate wobbles: laying out an axis's labels every second was the Links page's largest cost.
-    void rateChartTicksAreRoundAndSteady()
+    // An axis that keeps its range while a rate wobbles: laying out an axis's labels every second
+    // was the Links page's largest cost (its ticks' roundness: tst_measurefigures).
+    void rateChartAxesAreSteady()
     {
-        for (const double top : {0.3, 1.0, 7.7, 10.3, 118.0, 999.0, 12345.0}) {
-            const RateChart::Scale s = RateChart::scaleFor(0, top);
-            QVERIFY2(s.max >= top && s.max <= top * 2.5, qPrintable(QString::number(top)));
-            const double mantissa = s.step / std::pow(10.0, std::floor(std::log10(s.step)));
-            QVERIFY2(qFuzzyCompare(mantissa, 1.0) || qFuzzyCompare(mantissa, 2.0) || qFuzzyCompare(mantissa, 2.5)
-                         || qFuzzyCompare(mantissa, 5.0),
-                     qPrintable(u"step %1 for %2"_s.arg(s.step).arg(top)));
-            const double ticks = s.max / s.step;
-            QVERIFY2(qFuzzyCompare(ticks, std::round(ticks)) && ticks >= 3 && ticks <= 6,
-                     qPrintable(u"%1 ticks for %2"_s.arg(ticks).arg(top)));
-        }
-        const RateChart::Scale negative = RateChart::scaleFor(-3.3, 8.0);
-        QVERIFY(negative.min <= -3.3 && negative.max >= 8.0);
-        QVERIFY(qFuzzyCompare(negative.min / negative.step, std::round(negative.min / negative.step)));
-
         RateChart chart;
         chart.resize(400, 200);
         auto* y = qobject_cast<QValueAxis*>(chart.chart()->axes(Qt::Vertical).value(0));
@@ -88,7 +74,7 @@ private slots:
         for (int i = 0; i < 60; ++i)
             samples << 10.0;
         chart.setSamples(samples, u"Hz"_s);
-        QCOMPARE(y->max(), 12.5);
+        QCOMPARE(y->max(), NiceTicks::axis(0, 10 * 1.05, 5).hi);
         QCOMPARE(x->min(), -60.0);
         int changes = 0;
         connect(y, &QValueAxis::rangeChanged, this, [&] { ++changes; });

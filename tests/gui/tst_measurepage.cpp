@@ -158,7 +158,9 @@ private slots:
         QVERIFY(points > 10);
         QVERIFY(points <= 2 * chart->views().first()->width() + 2);
         const auto [lo, hi] = chart->range(u"total"_s);
-        QVERIFY(lo <= e.series(e.oneWaySeries()).stats().min && hi >= e.series(e.totalSeries()).stats().max);
+        QVERIFY(lo <= e.series(e.oneWaySeries()).stats().min);
+        // Up to the largest, or a high quantile with what lies beyond marked (issue 33).
+        QVERIFY(hi >= e.series(e.totalSeries()).stats().max || !chart->beyondText(u"total"_s).isEmpty());
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass
         if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
             w.grab().save(shots + u"/measure.png"_s);

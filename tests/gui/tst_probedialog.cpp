@@ -96,7 +96,9 @@ private slots:
         const QString series = w.chart()->series().first();
         QVERIFY(w.chart()->pointCount(series) > 0);
         const auto [lo, hi] = w.chart()->range(series);
-        QVERIFY(lo <= report.steps.front().rtt.min && hi >= report.steps.front().rtt.max);
+        QVERIFY(lo <= report.steps.front().rtt.min);
+        // Up to the largest, or a high quantile with what lies beyond marked (issue 33).
+        QVERIFY(hi >= report.steps.front().rtt.max || !w.chart()->beyondText(series).isEmpty());
         QVERIFY(!w.stepsView()->isVisible()); // no sweep, no table
 
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass

@@ -2,12 +2,16 @@
 // The window remembers how it was left: geometry, page, splitters, columns and their sort, filter
 // texts; and a first start fits the screen.
 #include "app/gui/mainwindow.h"
+#include "mqtt/mqttconnection.h"
+#include "mqtt/mqttprofile.h"
 #include "session/livesession.h"
+#include "testservers.h"
 #include "widgets/common/windowmemory.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
 
 #include <QHeaderView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QScreen>
 #include <QSettings>
@@ -41,6 +45,26 @@ private slots:
         const QRect screen = w.screen()->availableGeometry();
         QVERIFY(w.width() <= screen.width() && w.height() <= screen.height());
         QCOMPARE(w.size(), QSize(std::min(1280, screen.width()), std::min(800, screen.height())));
+    }
+
+    // Issue 33, point 6: "no problems" while the broker is down is no status at all.
+    void theStatusBarSaysWhenTheBrokerIsDown()
+    {
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto(), qPrintable(servers.errorString()));
+        MainWindow w;
+        auto* status = w.findChild<QLabel*>(u"problemStatus"_s);
+        QVERIFY(status);
+        w.session()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_COMPARE_WITH_TIMEOUT(w.session()->mqtt()->state(), MqttConnection::State::Connected, 10000);
+        const QString up = status->text(); // the config's problems: an empty config has some
+        QVERIFY2(!up.contains(u"unreachable"_s), qPrintable(up));
+        servers.stopMosquitto();
+        QTRY_VERIFY2_WITH_TIMEOUT(status->text().contains(u"unreachable"_s), qPrintable(status->text()), 15000);
+        QVERIFY2(status->text().contains(u"127.0.0.1:%1"_s.arg(servers.mosquittoPort())), qPrintable(status->text()));
+        QVERIFY2(status->text().endsWith(up) || up == u"no problems"_s, qPrintable(status->text()));
+        QVERIFY(!status->text().contains(u"no problems"_s));
+        QVERIFY(!status->toolTip().isEmpty()); // why
     }
 
     void theWindowComesBackAsItWasLeft()

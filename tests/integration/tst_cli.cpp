@@ -557,6 +557,9 @@ private slots:
         QCOMPARE(r.exit, 2);
         QVERIFY2(r.err.contains(u"'nonsense' is not a command"_s) && r.err.contains(u"experiment"_s),
                  qPrintable(r.err));
+        // Issue 33, point 6: the demo lab's internal command is no command to offer.
+        QVERIFY2(!r.err.contains(u"demo-node"_s), qPrintable(r.err));
+        QVERIFY(!bridgescope({u"--help"_s}).out.contains(u"demo-node"_s));
         r = bridgescope({u"wach"_s, u"--help"_s});
         QCOMPARE(r.exit, 2);
         QVERIFY2(r.err.contains(u"Did you mean 'watch'?"_s), qPrintable(r.err));

@@ -26,6 +26,31 @@ private:
     }
 
 private slots:
+    // Issue 33, point 2: the range a figure shows ends at a high quantile, not at a lone outlier;
+    // a spread without outliers and a handful of values are shown whole.
+    void theShownRangeLeavesOutliersOnly()
+    {
+        LatencySeries few;
+        for (qint64 v : {10, 12, 11, 300})
+            few.append(v * 1'000'000);
+        QCOMPARE(Ecdf::shownRange(few), std::make_pair(10.0, 300.0));
+        QCOMPARE(Ecdf::countAbove(few, 100), 1);
+
+        std::mt19937 random(33);
+        std::normal_distribution<double> normal(20.0, 3.0);
+        LatencySeries spread;
+        spread.setWindow(0);
+        for (int i = 0; i < 600; ++i)
+            spread.append(qint64(normal(random) * 1e6));
+        const double max = spread.toMs(spread.sorted().max());
+        QCOMPARE(Ecdf::shownRange(spread).second, max); // the normal tail is no outlier
+        spread.append(328'000'000);
+        const auto [lo, hi] = Ecdf::shownRange(spread);
+        QVERIFY(lo < 15 && hi >= max - 1 && hi < 40);
+        QCOMPARE(Ecdf::countAbove(spread, hi), 1); // the outlier alone
+        QCOMPARE(Ecdf::countAbove(spread, 400), 0);
+    }
+
     void stepsAreExact()
     {
         LatencySeries s;

@@ -64,6 +64,37 @@ class TestLatencyStats : public QObject
 {
     Q_OBJECT
 private slots:
+    // Issue 33, point 2: the latency over time keeps a bucket per second of the samples' first
+    // stamps (lowest, mean, highest), a quarter of an hour at most, whatever the rate.
+    void theTimelineIsPerSecondAndBounded()
+    {
+        LatencyEngine engine(Pipeline({u"/a"_s, u"/b"_s}, 0));
+        const qint64 t0 = 1'700'000'000'000'000'000;
+        for (int i = 0; i < 50; ++i) // 50 samples in the first second, one of 328 ms
+            engine.addSample({t0 + i * 10'000'000, t0 + i * 10'000'000 + (i == 7 ? 328'000'000 : 20'000'000)});
+        engine.addSample({t0 + 2'500'000'000, t0 + 2'530'000'000}); // the third second
+        engine.addSample({t0 + 1'500'000'000, t0 + 1'510'000'000}); // the second, late
+        const auto& buckets = engine.timeline().buckets();
+        QCOMPARE(buckets.size(), std::size_t(3));
+        QCOMPARE(buckets[0].second, t0 / 1'000'000'000);
+        QCOMPARE(buckets[0].count, 50);
+        QCOMPARE(buckets[0].min, 20'000'000);
+        QCOMPARE(buckets[0].max, 328'000'000);
+        QCOMPARE(buckets[0].meanNs(), (49 * 20e6 + 328e6) / 50);
+        QCOMPARE(buckets[1].max, 10'000'000);
+        QCOMPARE(buckets[2].second, t0 / 1'000'000'000 + 2);
+        // An hour of samples at 100 Hz: the last quarter of an hour stays.
+        for (qint64 i = 0; i < 3600 * 100; ++i)
+            engine.addSample({t0 + i * 10'000'000, t0 + i * 10'000'000 + 5'000'000});
+        QCOMPARE(buckets.size(), LatencyTimeline::kSeconds);
+        QCOMPARE(buckets.back().second, t0 / 1'000'000'000 + 3599);
+        QCOMPARE(buckets.front().count, 100);
+        engine.addSample({t0, t0 + 1}); // older than what is kept: left out
+        QCOMPARE(buckets.front().second, t0 / 1'000'000'000 + 3600 - qint64(LatencyTimeline::kSeconds));
+        engine.reset();
+        QVERIFY(engine.timeline().buckets().empty());
+    }
+
     void statisticsMatchNumpy_data()
     {
         QTest::addColumn<int>("samples");

@@ -3,6 +3,7 @@
 // LaTeX tables (three runs, three columns), HTML that parses and holds the SVG figure, a PDF whose
 // pages and text poppler reads.
 #include "fixtures.h"
+#include "latency/latencyseries.h"
 #include "record/suitecsv.h"
 #include "report/ecdfsvg.h"
 #include "report/report.h"
@@ -10,7 +11,9 @@
 #include "report/reportpdf.h"
 #include "syntheticrun.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -58,6 +61,16 @@ class TestReportFormats : public QObject
 private:
     QTemporaryDir m_dir;
     QStringList m_inputs; ///< three runs: mqtt_client-like, slower, faster
+
+    /// The report as a PDF file in the test's folder; its path.
+    QString writePdf(const Report& report, const QString& name)
+    {
+        const QString path = m_dir.filePath(name);
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly))
+            f.write(ReportPdf::render(report));
+        return path;
+    }
 
 private slots:
     void initTestCase()
@@ -305,11 +318,7 @@ private slots:
         options.title = u"Bridgescope PDF test"_s;
         const std::optional<Report> three = Report::build(m_inputs, paperWithHosts(), options, &error);
         QVERIFY2(three, qPrintable(error));
-        const QString path = m_dir.filePath(u"three.pdf"_s);
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(ReportPdf::render(*three));
-        f.close();
+        const QString path = writePdf(*three, u"three.pdf"_s);
         const QString info = run(u"pdfinfo"_s, {path});
         const QRegularExpressionMatch pages = QRegularExpression(u"Pages:\\s+(\\d+)"_s).match(info);
         QVERIFY2(pages.hasMatch(), qPrintable(info));
@@ -320,6 +329,119 @@ private slots:
         QVERIFY(text.contains(u"Bridgescope PDF test"_s));
         QVERIFY(text.contains(u"overlay"_s));
         QVERIFY(text.contains(u"Total latency per run"_s));
+    }
+
+    // Issue 33, point 6: in the PDF's facts, "ROS master" ran into its value.
+    void pdfFactLabelsKeepApartFromTheirValues()
+    {
+        if (QStandardPaths::findExecutable(u"pdftotext"_s).isEmpty())
+            QSKIP("poppler-utils (pdftotext) is not installed; scripts/setup.sh installs it");
+        RunData watched;
+        watched.info.name = u"lab"_s;
+        watched.info.broker = u"tcp://127.0.0.1:1883"_s;
+        watched.info.rosMaster = u"http://127.0.0.1:11311/"_s;
+        watched.events.push_back({u"bridge:x"_s, u"alert"_s, {u"x"_s}, u"down"_s, 1, 2, {}});
+        const QString path = writePdf(Report::fromRuns({watched}, std::nullopt, {}), u"facts.pdf"_s);
+        // Words with their boxes: the label's last word ends well before its value begins.
+        const QString xhtml = run(u"pdftotext"_s, {u"-bbox"_s, path, u"-"_s});
+        const QRegularExpression word(u"<word xMin=\"([\\d.]+)\" yMin=\"([\\d.]+)\" xMax=\"([\\d.]+)\" "
+                                      "yMax=\"[\\d.]+\">([^<]*)</word>"_s);
+        struct Word
+        {
+            double xMin, yMin, xMax;
+            QString text;
+        };
+        QList<Word> words;
+        for (const QRegularExpressionMatch& m : word.globalMatch(xhtml))
+            words.append({m.captured(1).toDouble(), m.captured(2).toDouble(), m.captured(3).toDouble(), m.captured(4)});
+        int checked = 0;
+        for (qsizetype i = 0; i + 1 < words.size(); ++i) {
+            const bool label = (words[i].text == u"master"_s && i > 0 && words[i - 1].text == u"ROS"_s)
+                || words[i].text == u"Broker"_s;
+            if (!label)
+                continue;
+            const Word& value = words[i + 1];
+            QVERIFY2(std::abs(value.yMin - words[i].yMin) < 3, qPrintable(value.text));
+            QVERIFY2(value.xMin - words[i].xMax >= 6,
+                     qPrintable(u"%1 ends at %2, %3 begins at %4"_s.arg(words[i].text).arg(words[i].xMax)
+                                    .arg(value.text).arg(value.xMin)));
+            ++checked;
+        }
+        QCOMPARE(checked, 2);
+    }
+
+    // Issue 33, point 6: a comparison PDF's last page was two-thirds blank, its figure alone on it.
+    void aFigureFillsThePageItEndsOn()
+    {
+        const QSizeF page(2000, 3000);
+        const QSizeF natural(720, 400); // 2000 x 1111 at full width
+        bool newPage = false;
+        QCOMPARE(ReportPdf::placeFigure(1000, page, natural, &newPage), QRectF(0, 1000, 2000, 2000.0 * 400 / 720));
+        QVERIFY(!newPage);
+        // A few lines short: shrunk into the room left, centred, on the same page.
+        const QRectF shrunk = ReportPdf::placeFigure(2100, page, natural, &newPage);
+        QVERIFY(!newPage);
+        QCOMPARE(shrunk.top(), 2100.0);
+        QCOMPARE(shrunk.bottom(), 3000.0);
+        QVERIFY(std::abs(shrunk.width() / shrunk.height() - 720.0 / 400.0) < 1e-9);
+        QVERIFY(std::abs(shrunk.center().x() - 1000) < 1e-9);
+        // Far too little room: a new page, full width.
+        QCOMPARE(ReportPdf::placeFigure(2500, page, natural, &newPage), QRectF(0, 0, 2000, 2000.0 * 400 / 720));
+        QVERIFY(newPage);
+    }
+
+    void aComparisonPdfHasNoBlankPage()
+    {
+        if (QStandardPaths::findExecutable(u"pdftoppm"_s).isEmpty())
+            QSKIP("poppler-utils (pdftoppm) is not installed; scripts/setup.sh installs it");
+        QString error;
+        const std::optional<Report> three = Report::build(m_inputs, paperWithHosts(), {}, &error);
+        QVERIFY2(three, qPrintable(error));
+        const QString path = writePdf(*three, u"compared.pdf"_s);
+        // Per page, where its lowest ink is (the figure is drawn as paths, no text to find): every
+        // page is filled at least half.
+        const QString prefix = m_dir.filePath(u"compared-page"_s);
+        run(u"pdftoppm"_s, {u"-r"_s, u"30"_s, u"-gray"_s, u"-png"_s, path, prefix});
+        const QStringList pages = QDir(m_dir.path()).entryList({u"compared-page*.png"_s}, QDir::Files, QDir::Name);
+        QVERIFY(!pages.isEmpty());
+        for (qsizetype i = 0; i < pages.size(); ++i) {
+            const QImage page(m_dir.filePath(pages[i]));
+            QVERIFY(!page.isNull());
+            int lowest = 0;
+            for (int y = 0; y < page.height(); ++y)
+                for (int x = 0; x < page.width(); ++x)
+                    if (qGray(page.pixel(x, y)) < 200) {
+                        lowest = y;
+                        break;
+                    }
+            QVERIFY2(lowest > page.height() / 2,
+                     qPrintable(u"page %1 of %2 ends at %3 of %4"_s.arg(i + 1).arg(pages.size()).arg(lowest).arg(page.height())));
+        }
+    }
+
+    // Issue 33, point 2: one outlier among 10-30 ms does not stretch the report's ECDF axis; it
+    // is marked at the axis' end and counted.
+    void svgAxisEndsAtAHighQuantile()
+    {
+        LatencySeries series;
+        series.setWindow(0);
+        for (int i = 0; i < 200; ++i)
+            series.append(10'000'000 + qint64(i) * 100'000); // 10 to 29.9 ms
+        series.append(328'000'000);
+        const QString svg = QString::fromUtf8(EcdfSvg::render({{u"total"_s, u"#1f77b4"_s, &series}}));
+        double highest = 0;
+        const QRegularExpression tick(u"<text x=\"[\\d.]+\" y=\"[\\d.]+\" text-anchor=\"middle\">([\\d.]+)</text>"_s);
+        for (const QRegularExpressionMatch& m : tick.globalMatch(svg))
+            highest = std::max(highest, m.captured(1).toDouble());
+        QVERIFY2(highest >= 30 && highest <= 40, qPrintable(QString::number(highest)));
+        QVERIFY2(svg.contains(u"total: 1 beyond %1 ms"_s.arg(highest)), qPrintable(svg.right(800)));
+        QVERIFY(svg.contains(u"<circle"_s));
+        // Without an outlier nothing is marked.
+        LatencySeries plain;
+        for (int i = 0; i < 200; ++i)
+            plain.append(10'000'000 + qint64(i) * 100'000);
+        const QString clean = QString::fromUtf8(EcdfSvg::render({{u"total"_s, u"#1f77b4"_s, &plain}}));
+        QVERIFY(!clean.contains(u"beyond"_s) && !clean.contains(u"<circle"_s));
     }
 
     void svgTicksAreRound_data()

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "chartstyle.h"
 
+#include "base/niceticks.h"
+
 #include <QAbstractAxis>
 #include <QChart>
 #include <QLegend>
 #include <QPalette>
+#include <QValueAxis>
 
 bool ChartStyle::isDark(const QPalette& palette)
 {
@@ -29,4 +32,23 @@ void ChartStyle::apply(QChart* chart, const QPalette& palette)
         axis->setGridLineColor(grid);
         axis->setMinorGridLineColor(grid.lighter(isDark(palette) ? 80 : 115));
     }
+}
+
+void ChartStyle::setNiceRange(QValueAxis* axis, double lo, double hi, int wantedTicks)
+{
+    const NiceTicks::Axis a = NiceTicks::axis(lo, hi, wantedTicks);
+    axis->setRange(a.lo, a.hi);
+    axis->setTickType(QValueAxis::TicksFixed);
+    axis->setTickCount(a.tickCount());
+    axis->setLabelFormat(QStringLiteral("%.") + QString::number(a.decimals) + QStringLiteral("f"));
+}
+
+void ChartStyle::setRoundTicks(QValueAxis* axis, double lo, double hi, int wantedTicks)
+{
+    const double step = NiceTicks::step(lo, hi, wantedTicks);
+    axis->setRange(lo, hi);
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0);
+    axis->setTickInterval(step);
+    axis->setLabelFormat(QStringLiteral("%.") + QString::number(NiceTicks::decimals(step)) + QStringLiteral("f"));
 }

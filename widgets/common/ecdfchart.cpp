@@ -8,6 +8,7 @@
 #include "latency/palette.h"
 #include "widgets/common/chartstyle.h"
 
+#include <climits>
 #include <cmath>
 #include <QApplication>
 #include <QBuffer>
@@ -21,6 +22,7 @@
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QPainter>
+#include <QScatterSeries>
 #include <QSvgGenerator>
 #include <QValueAxis>
 
@@ -32,6 +34,8 @@ struct EcdfChart::Curve
     QLineSeries* ecdf = nullptr;
     QLineSeries* mean = nullptr;
     QLineSeries* median = nullptr;
+    QScatterSeries* beyond = nullptr; ///< a marker at the axis' end for values beyond it
+    QString beyondText; ///< "3 beyond 95 ms", or empty
 };
 
 struct EcdfChart::Panel
@@ -186,12 +190,16 @@ void EcdfChart::rebuild()
         c.mean->setPen(QPen(color, 1.5, Qt::DashLine));
         c.median = new QLineSeries;
         c.median->setPen(QPen(color, 1.5, Qt::DotLine));
-        for (QLineSeries* s : {c.ecdf, c.mean, c.median}) {
+        c.beyond = new QScatterSeries;
+        c.beyond->setColor(color);
+        c.beyond->setBorderColor(color);
+        c.beyond->setMarkerSize(11);
+        for (QXYSeries* s : std::initializer_list<QXYSeries*> {c.ecdf, c.mean, c.median, c.beyond}) {
             p.chart->addSeries(s);
             s->attachAxis(p.x);
             s->attachAxis(p.y);
         }
-        for (QLineSeries* s : {c.mean, c.median})
+        for (QXYSeries* s : std::initializer_list<QXYSeries*> {c.mean, c.median, c.beyond})
             for (QLegendMarker* m : p.chart->legend()->markers(s))
                 m->setVisible(false);
         if (m_multiples)
@@ -218,8 +226,11 @@ void EcdfChart::refresh()
             const LatencySeries& s = m_source->ecdfSeries(m_source->ecdfIndex(c.id));
             if (s.count() == 0)
                 continue;
-            lo = std::min(lo, s.toMs(s.sorted().min()));
-            hi = std::max(hi, s.toMs(s.sorted().max()));
+            // A log axis shows every value; a linear one up to a high quantile (Ecdf::shownRange).
+            const auto [a, b] = m_log ? std::pair(s.toMs(s.sorted().min()), s.toMs(s.sorted().max()))
+                                      : Ecdf::shownRange(s);
+            lo = std::min(lo, a);
+            hi = std::max(hi, b);
         }
         if (!(hi >= lo)) {
             lo = m_log ? 0.1 : 0;
@@ -239,9 +250,7 @@ void EcdfChart::refresh()
                 p.lo = std::max(p.lo, 0.0);
             p.x->setRange(p.lo, p.hi);
             if (auto* linear = qobject_cast<QValueAxis*>(p.x)) {
-                linear->applyNiceNumbers(); // round tick labels; the range grows a little
-                if (lo >= 0 && linear->min() < 0)
-                    linear->setMin(0);
+                ChartStyle::setNiceRange(linear, p.lo, p.hi); // round ticks; the range grows a little
                 p.lo = linear->min();
                 p.hi = linear->max();
             }
@@ -259,8 +268,40 @@ void EcdfChart::refresh()
             };
             c.mean->replace(vertical(mean));
             c.median->replace(vertical(median));
+            markBeyond(p, c, s);
         }
     }
+}
+
+/// Values beyond the axis' end: a marker at the end, where the curve leaves the plot, and a
+/// count in the legend (in the title of a small multiple).
+void EcdfChart::markBeyond(Panel& p, Curve& c, const LatencySeries& s)
+{
+    const qint64 beyond = m_log ? 0 : Ecdf::countAbove(s, p.hi);
+    const QString text = beyond > 0 ? tr("%n beyond %1 ms", nullptr, int(std::min<qint64>(beyond, INT_MAX)))
+                                          .arg(QString::number(p.hi, 'g', 6))
+                                    : QString();
+    const double level = s.count() > 0 ? 1.0 - double(beyond) / double(s.count()) : 0.0;
+    c.beyond->replace(beyond > 0 ? QList<QPointF> {{p.hi, level}} : QList<QPointF>());
+    if (text == c.beyondText)
+        return;
+    c.beyondText = text;
+    c.beyond->setName(text);
+    for (QLegendMarker* m : p.chart->legend()->markers(c.beyond))
+        m->setVisible(beyond > 0);
+    if (m_multiples) {
+        const QString label = m_source->ecdfLabel(m_source->ecdfIndex(c.id));
+        p.chart->setTitle(text.isEmpty() ? label : label + u" · "_s + text);
+    }
+}
+
+QString EcdfChart::beyondText(const QString& id) const
+{
+    if (Panel* p = panelOf(id))
+        for (const Curve& c : p->curves)
+            if (c.id == id)
+                return c.beyondText;
+    return {};
 }
 
 QPixmap EcdfChart::toPixmap() const

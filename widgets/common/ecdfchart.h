@@ -7,6 +7,7 @@
 #include <vector>
 
 class EcdfSource;
+class LatencySeries;
 class QAbstractAxis;
 class QChart;
 class QChartView;
@@ -16,6 +17,9 @@ class QPixmap;
 
 /// ECDFs of latency series as in the paper's Fig. 5: one curve per series, its mean as a dashed
 /// and its median as a dotted vertical line; overlaid in one chart or as small multiples.
+///
+/// A linear x axis ends at a high quantile (Ecdf::shownRange), not at a lone outlier: values
+/// beyond it are a marker at the end and a count in the legend. A log axis shows every value.
 ///
 /// refresh() redraws from the source: each curve is reduced to about two points per pixel
 /// column and handed over with one replace() (the live page calls it at most once per drain).
@@ -43,6 +47,8 @@ public:
     /// The x range of the chart showing `id`, in ms.
     std::pair<double, double> range(const QString& id) const;
     static QColor colorFor(int seriesIndex);
+    /// What the chart says of `id`'s values beyond the x axis' end ("3 beyond 95 ms"), or empty.
+    QString beyondText(const QString& id) const;
 
     /// The chart as the user sees it, for PNG files and the clipboard.
     QPixmap toPixmap() const;
@@ -59,6 +65,7 @@ private:
     struct Curve;
     void rebuild();
     Panel* panelOf(const QString& id) const;
+    void markBeyond(Panel& p, Curve& c, const LatencySeries& s);
 
     const EcdfSource* m_source = nullptr;
     QStringList m_ids;

@@ -9,6 +9,7 @@
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/namedelegate.h"
+#include "widgets/common/timelinechart.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/measure/runbar.h"
 
@@ -26,6 +27,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableView>
@@ -59,6 +61,26 @@ public:
         return f;
     }
 };
+
+/// Rows pinned above the charts: the total and what is derived from it, not the stages.
+bool isPinned(const QModelIndex& index)
+{
+    const auto kind = LatencyEngine::Kind(index.data(LatencyStatsModel::KindRole).toInt());
+    return kind != LatencyEngine::Kind::Stage && kind != LatencyEngine::Kind::External;
+}
+
+/// The pinned rows of Table I.
+class PinnedRowsProxy : public QSortFilterProxyModel
+{
+public:
+    using QSortFilterProxyModel::QSortFilterProxyModel;
+
+protected:
+    bool filterAcceptsRow(int row, const QModelIndex& parent) const override
+    {
+        return isPinned(sourceModel()->index(row, 0, parent));
+    }
+};
 } // namespace
 
 MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
@@ -68,6 +90,8 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_seen(new StampTopicModel(this))
     , m_chart(new EcdfChart(this))
     , m_statsView(new QTableView(this))
+    , m_summaryView(new QTableView(this))
+    , m_timeline(new TimelineChart(this))
     , m_pipelineView(new QTableView(this))
     , m_seenView(new QListView(this))
     , m_window(new QSpinBox(this))
@@ -251,14 +275,76 @@ QWidget* MeasurePage::createChartPane()
     m_chart->setSource(&m_measure->engine());
     m_chart->setSeries(m_measure->statsModel()->checkedSeries());
     m_chart->setMinimumHeight(240);
+    m_timeline->setTimeline(&m_measure->engine().timeline());
+    m_timeline->setMinimumWidth(220);
+    setUpSummaryView(style);
 
-    auto* pane = new QSplitter(Qt::Vertical, this);
-    pane->addWidget(m_chart);
-    pane->addWidget(m_statsView);
-    pane->setStretchFactor(0, 3);
-    pane->setStretchFactor(1, 2);
-    pane->setSizes({470, 430});
+    auto* charts = new QSplitter(Qt::Horizontal, this);
+    charts->addWidget(m_chart);
+    charts->addWidget(m_timeline);
+    charts->setStretchFactor(0, 3);
+    charts->setStretchFactor(1, 2);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(charts);
+    split->addWidget(m_statsView);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    split->setSizes({470, 330});
+    // The total and the derived rows above the charts: seen whatever the splitters and the
+    // stage table's scroll position.
+    auto* pane = new QWidget(this);
+    auto* layout = new QVBoxLayout(pane);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(m_summaryView);
+    layout->addWidget(split, 1);
     return pane;
+}
+
+void MeasurePage::setUpSummaryView(QAbstractItemModel* styled)
+{
+    auto* pinned = new PinnedRowsProxy(this);
+    pinned->setDynamicSortFilter(false); // a row's kind changes only with a reset: no refilter per tick
+    pinned->setSourceModel(styled);
+    m_summaryView->setObjectName(u"summaryView"_s);
+    m_summaryView->setModel(pinned);
+    ViewSetup::records(m_summaryView);
+    m_summaryView->verticalHeader()->setDefaultSectionSize(m_statsView->verticalHeader()->defaultSectionSize());
+    m_summaryView->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_summaryView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_summaryView->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    m_summaryView->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    // The columns of the stage table below, as wide and as shown.
+    for (int c = 0; c < LatencyStatsModel::ColumnCount; ++c)
+        m_summaryView->setColumnHidden(c, m_statsView->isColumnHidden(c));
+    connect(m_statsView->horizontalHeader(), &QHeaderView::sectionResized, m_summaryView,
+            [this](int column, int, int width) { m_summaryView->horizontalHeader()->resizeSection(column, width); });
+    connect(m_summaryView->horizontalHeader(), &QHeaderView::sectionResized, m_statsView,
+            [this](int column, int, int width) {
+                if (m_statsView->horizontalHeader()->sectionSize(column) != width)
+                    m_statsView->horizontalHeader()->resizeSection(column, width);
+            });
+    QAbstractItemModel* stats = m_statsView->model();
+    connect(stats, &QAbstractItemModel::modelReset, this, &MeasurePage::updatePinnedRows);
+    connect(stats, &QAbstractItemModel::layoutChanged, this, &MeasurePage::updatePinnedRows);
+    connect(stats, &QAbstractItemModel::rowsInserted, this, &MeasurePage::updatePinnedRows);
+    connect(stats, &QAbstractItemModel::rowsRemoved, this, &MeasurePage::updatePinnedRows);
+    updatePinnedRows();
+}
+
+/// The pinned rows leave the stage table; the summary is as high as its rows.
+void MeasurePage::updatePinnedRows()
+{
+    QAbstractItemModel* stats = m_statsView->model();
+    for (int r = 0; r < stats->rowCount(); ++r)
+        m_statsView->setRowHidden(r, isPinned(stats->index(r, 0)));
+    const int rows = m_summaryView->model()->rowCount();
+    m_summaryView->setVisible(rows > 0);
+    const int frame = 2 * m_summaryView->frameWidth();
+    m_summaryView->setFixedHeight(m_summaryView->horizontalHeader()->sizeHint().height()
+                                  + rows * m_summaryView->verticalHeader()->defaultSectionSize() + frame);
+    for (int c = 0; c < LatencyStatsModel::ColumnCount; ++c)
+        m_summaryView->horizontalHeader()->resizeSection(c, m_statsView->horizontalHeader()->sectionSize(c));
 }
 
 void MeasurePage::showColumnMenu(const QPoint& at)
@@ -268,7 +354,10 @@ void MeasurePage::showColumnMenu(const QPoint& at)
         QAction* a = menu.addAction(m_statsView->model()->headerData(c, Qt::Horizontal).toString());
         a->setCheckable(true);
         a->setChecked(!m_statsView->isColumnHidden(c));
-        connect(a, &QAction::toggled, this, [this, c](bool on) { m_statsView->setColumnHidden(c, !on); });
+        connect(a, &QAction::toggled, this, [this, c](bool on) {
+            m_statsView->setColumnHidden(c, !on);
+            m_summaryView->setColumnHidden(c, !on);
+        });
     }
     menu.exec(m_statsView->horizontalHeader()->mapToGlobal(at));
 }
@@ -364,6 +453,8 @@ void MeasurePage::onUpdated()
     }
     if (m_chart->isVisible())
         m_chart->refresh();
+    if (m_timeline->isVisible())
+        m_timeline->refresh();
     m_pipeline->refreshCounts();
     m_seen->update(m_measure->discovery(), m_measure->pipeline(), m_measure->malformedStampsByTopic());
     updateCounts();
@@ -389,6 +480,7 @@ void MeasurePage::onPipelineChanged()
     else
         m_mode->setText(tr("Edited by hand."));
     m_chart->refresh();
+    m_timeline->refresh();
 }
 
 void MeasurePage::updateCounts()

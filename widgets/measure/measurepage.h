@@ -8,6 +8,7 @@ class MeasureSession;
 class Pipeline;
 class PipelineModel;
 class RunBar;
+class QAbstractItemModel;
 class QAction;
 class QCheckBox;
 class LiveText;
@@ -17,9 +18,12 @@ class QListView;
 class QSpinBox;
 class QTableView;
 class StampTopicModel;
+class TimelineChart;
 
 /// The Measure page: the pipeline (loaded, found in the stamps, or dragged together, with a host
-/// per stamp), live ECDFs of the selected series and the paper's Table I with sample counts.
+/// per stamp), live ECDFs of the selected series beside the total latency over time, and the
+/// paper's Table I with sample counts: its total and derived rows pinned above the charts, the
+/// stages below them.
 class MeasurePage : public QWidget
 {
     Q_OBJECT
@@ -31,6 +35,9 @@ public:
 
     EcdfChart* chart() const { return m_chart; }
     QTableView* statsView() const { return m_statsView; }
+    /// The total and the derived rows (round trip, one way, clock offset), pinned above the charts.
+    QTableView* summaryView() const { return m_summaryView; }
+    TimelineChart* timelineChart() const { return m_timeline; }
     QTableView* pipelineView() const { return m_pipelineView; }
     QListView* stampTopicsView() const { return m_seenView; }
     PipelineModel* pipelineModel() const { return m_pipeline; }
@@ -58,6 +65,8 @@ private:
     QWidget* createPipelinePane();
     void setUpPipelineView();
     QWidget* createChartPane();
+    void setUpSummaryView(QAbstractItemModel* styled);
+    void updatePinnedRows();
     void showColumnMenu(const QPoint& at);
     void layOut(QLayout* controls, QWidget* pipelinePane, QWidget* chartPane);
     void connectSession();
@@ -78,6 +87,8 @@ private:
     StampTopicModel* m_seen;
     EcdfChart* m_chart;
     QTableView* m_statsView;
+    QTableView* m_summaryView;
+    TimelineChart* m_timeline;
     QTableView* m_pipelineView;
     QListView* m_seenView;
     QSpinBox* m_window;

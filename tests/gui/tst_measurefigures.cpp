@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// Issue 33, points 2 and 6: what the Measure page shows first at 1280x800 on the demo (the total
+// and the derived rows pinned, the latency over time beside the ECDF), an ECDF axis that one
+// outlier does not stretch, and chart ticks on round numbers.
+#include "app/gui/mainwindow.h"
+#include "demo/demolab.h"
+#include "latency/ecdfsource.h"
+#include "latency/latencyseries.h"
+#include "latency/latencystatsmodel.h"
+#include "latency/latencytimeline.h"
+#include "latency/pipeline.h"
+#include "mqtt/mqttprofile.h"
+#include "session/measuresession.h"
+#include "widgets/common/ecdfchart.h"
+#include "widgets/common/ratechart.h"
+#include "widgets/common/timelinechart.h"
+#include "widgets/discover/discoverpage.h"
+#include "widgets/measure/measurepage.h"
+
+#include <cmath>
+#include <limits>
+#include <QChart>
+#include <QChartView>
+#include <QDateTimeAxis>
+#include <QGraphicsTextItem>
+#include <QLegendMarker>
+#include <QRandomGenerator>
+#include <QScatterSeries>
+#include <QTableView>
+#include <QTabWidget>
+#include <QTest>
+#include <QValueAxis>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// One series of values in ms, as the chart reads an engine's.
+class OneSeries : public EcdfSource
+{
+public:
+    LatencySeries series {1e-6};
+    int ecdfIndex(const QString& id) const override { return id == u"x"_s ? 0 : -1; }
+    const LatencySeries& ecdfSeries(int) const override { return series; }
+    QString ecdfLabel(int) const override { return u"total"_s; }
+    quint64 ecdfLayoutRevision() const override { return 1; }
+};
+
+/// The texts a chart view draws (axis labels, titles, legend), as the scene holds them.
+QStringList drawnTexts(QChartView* view)
+{
+    QStringList out;
+    for (QGraphicsItem* item : view->scene()->items())
+        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && text->isVisible())
+            out << text->toPlainText();
+        else if (auto* simple = dynamic_cast<QGraphicsSimpleTextItem*>(item); simple && simple->isVisible())
+            out << simple->text();
+    return out;
+}
+
+/// Whether `label` is a number that is a multiple of 1, 2, 2.5 or 5 times a power of ten.
+bool isRoundTick(const QString& label, double step)
+{
+    bool ok = false;
+    const double v = label.toDouble(&ok);
+    return ok && std::abs(v / step - std::round(v / step)) < 1e-6;
+}
+
+/// The tick labels of a value axis as drawn: numbers among the view's texts.
+QList<QString> numericTexts(QChartView* view)
+{
+    QList<QString> out;
+    for (const QString& t : drawnTexts(view)) {
+        bool ok = false;
+        t.toDouble(&ok);
+        if (ok)
+            out << t;
+    }
+    return out;
+}
+} // namespace
+
+class TestMeasureFigures : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void theTotalAndTheDerivedRowsAreAlwaysSeen()
+    {
+        DemoLab lab;
+        DemoLab::Options options;
+        options.program = QStringLiteral(BRIDGESCOPE_BINARY);
+        QString error;
+        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(lab.rosMasterUri());
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
+        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        QVERIFY2(pipeline, qPrintable(error));
+        w.measure()->setPipeline(*pipeline);
+        w.resize(1280, 800);
+        w.show();
+        w.pages()->setCurrentWidget(w.measurePage());
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.size(), QSize(1280, 800));
+        MeasurePage* page = w.measurePage();
+        QTRY_VERIFY_WITH_TIMEOUT(w.measure()->engine().samples() >= 20, 15000);
+        QTest::qWait(2 * MeasurePage::kRefreshMs);
+
+        // Pinned: the total, round trip, one way and clock offset, each row whole in the window.
+        QTableView* summary = page->summaryView();
+        QVERIFY(summary->isVisible());
+        QStringList pinned;
+        const QRect window = w.rect();
+        for (int r = 0; r < summary->model()->rowCount(); ++r) {
+            const QModelIndex index = summary->model()->index(r, LatencyStatsModel::SeriesColumn);
+            pinned << index.data(LatencyStatsModel::SeriesIdRole).toString();
+            const QRect rect = summary->visualRect(index);
+            QVERIFY2(summary->viewport()->rect().contains(rect), qPrintable(pinned.last()));
+            const QRect inWindow(summary->viewport()->mapTo(&w, rect.topLeft()), rect.size());
+            QVERIFY2(window.contains(inWindow), qPrintable(pinned.last()));
+            QVERIFY(!index.data().toString().isEmpty());
+        }
+        // Every row that is not a stage (the demo has two hosts: round trip, one way, clock offset).
+        QVERIFY2(pinned.size() >= 4 && pinned.first() == u"total"_s && pinned.contains(u"round_trip"_s),
+                 qPrintable(pinned.join(u", ")));
+        // The mean beside the total is shown, not cut.
+        const QModelIndex mean = summary->model()->index(0, LatencyStatsModel::MeanColumn);
+        QVERIFY(!summary->isColumnHidden(LatencyStatsModel::MeanColumn));
+        QVERIFY(summary->viewport()->rect().contains(summary->visualRect(mean)));
+        QVERIFY(!mean.data().toString().isEmpty());
+        // The stage table below holds the stages only, so nothing is shown twice.
+        QTableView* stats = page->statsView();
+        for (int r = 0; r < stats->model()->rowCount(); ++r) {
+            const QString id = stats->model()->index(r, 0).data(LatencyStatsModel::SeriesIdRole).toString();
+            QCOMPARE(stats->isRowHidden(r), pinned.contains(id));
+        }
+
+        // The latency over time beside the ECDF, with points once samples came.
+        TimelineChart* timeline = page->timelineChart();
+        QVERIFY(timeline->isVisible());
+        QTRY_VERIFY(timeline->pointCount() > 0);
+        const QRect chartRect(page->chart()->mapTo(&w, QPoint()), page->chart()->size());
+        const QRect timelineRect(timeline->mapTo(&w, QPoint()), timeline->size());
+        QVERIFY(timelineRect.left() >= chartRect.right()); // beside it
+        QVERIFY(window.contains(timelineRect));
+        QVERIFY(timelineRect.width() >= 220 && timelineRect.height() >= 200);
+        for (const QString& label : numericTexts(timeline))
+            QVERIFY2(isRoundTick(label, timeline->latencyAxis()->max()
+                                            / double(timeline->latencyAxis()->tickCount() - 1)),
+                     qPrintable(label));
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            w.grab().save(shots + u"/measure-demo.png"_s);
+    }
+
+    void oneOutlierDoesNotStretchTheAxis()
+    {
+        OneSeries source;
+        source.series.setWindow(0);
+        QRandomGenerator random(33);
+        for (int i = 0; i < 200; ++i)
+            source.series.append(10'000'000 + qint64(random.bounded(20'000'000))); // 10-30 ms
+        source.series.append(328'000'000);
+        EcdfChart chart;
+        chart.resize(640, 400);
+        chart.setSource(&source);
+        chart.setSeries({u"x"_s});
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        chart.refresh();
+        const auto [lo, hi] = chart.range(u"x"_s);
+        QVERIFY2(hi >= 30 && hi <= 40, qPrintable(QString::number(hi)));
+        QVERIFY(lo >= 0 && lo <= 10);
+        QCOMPARE(chart.beyondText(u"x"_s), u"1 beyond %1 ms"_s.arg(hi));
+        // Marked at the edge: a dot where the curve leaves the plot, its count in the legend.
+        QChart* c = chart.views().first()->chart();
+        QScatterSeries* mark = nullptr;
+        for (QAbstractSeries* s : c->series())
+            if (auto* scatter = qobject_cast<QScatterSeries*>(s))
+                mark = scatter;
+        QVERIFY(mark);
+        QCOMPARE(mark->count(), 1);
+        QCOMPARE(mark->at(0).x(), hi);
+        QVERIFY(std::abs(mark->at(0).y() - 200.0 / 201.0) < 1e-9);
+        QTest::qWait(50); // the legend lays its markers out on the next event loop pass
+        QVERIFY2(drawnTexts(chart.views().first()).contains(chart.beyondText(u"x"_s)),
+                 qPrintable(drawnTexts(chart.views().first()).join(u" | ")));
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            chart.grab().save(shots + u"/ecdf-outlier.png"_s);
+        // Ticks on round numbers.
+        auto* x = qobject_cast<QValueAxis*>(c->axes(Qt::Horizontal).first());
+        const double step = (x->max() - x->min()) / (x->tickCount() - 1);
+        for (const QString& label : numericTexts(chart.views().first()))
+            QVERIFY2(isRoundTick(label, step) || isRoundTick(label, 0.2), qPrintable(label));
+        // A log axis shows every value, the outlier too.
+        chart.setLogScale(true);
+        QVERIFY(chart.range(u"x"_s).second >= 328);
+        QVERIFY(chart.beyondText(u"x"_s).isEmpty());
+    }
+
+    // Stamps from a clock that is not set beside ones from now: days apart, a few ticks still.
+    void theTimeAxisStaysBoundedForClocksFarApart()
+    {
+        LatencyTimeline timeline;
+        timeline.add(0, 20'000'000);
+        timeline.add(1'700'000'000'000'000'000, 25'000'000);
+        timeline.add(std::numeric_limits<qint64>::max(), 30'000'000);
+        TimelineChart chart;
+        chart.setTimeline(&timeline);
+        QCOMPARE(chart.pointCount(), 3);
+        QVERIFY2(chart.timeAxis()->tickCount() >= 2 && chart.timeAxis()->tickCount() <= 7,
+                 qPrintable(QString::number(chart.timeAxis()->tickCount())));
+        QVERIFY(chart.latencyAxis()->max() >= 30 && chart.latencyAxis()->max() <= 40);
+    }
+
+    void rateChartTicksAreRound()
+    {
+        RateChart chart;
+        chart.resize(400, 220);
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        QList<double> samples;
+        for (int i = 0; i < 60; ++i)
+            samples << 9.0 + 1.26 * std::sin(i / 5.0) * std::sin(i / 5.0); // peaks at 10.26: once 11.8
+        chart.setSamples(samples, u"Hz"_s);
+        QTest::qWait(50);
+        const QStringList labels = numericTexts(&chart);
+        QVERIFY2(labels.size() >= 6, qPrintable(labels.join(u" | ")));
+        for (const QString& label : labels)
+            QVERIFY2(isRoundTick(label, 2.5) || isRoundTick(label, 20), qPrintable(labels.join(u" | ")));
+        // The same decimals in every label of an axis: "10.0" beside "7.5", never "10" beside "7.5".
+        QVERIFY2(labels.contains(u"10.0"_s) || labels.contains(u"10"_s), qPrintable(labels.join(u" | ")));
+        QVERIFY2(!(labels.contains(u"10"_s) && labels.contains(u"7.5"_s)), qPrintable(labels.join(u" | ")));
+    }
+};
+
+QTEST_MAIN(TestMeasureFigures)
+#include "tst_measurefigures.moc"

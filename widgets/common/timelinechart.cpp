@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+#include "timelinechart.h"
+
+#include "latency/latencytimeline.h"
+#include "latency/palette.h"
+#include "widgets/common/chartstyle.h"
+
+#include <algorithm>
+#include <QChart>
+#include <QDateTime>
+#include <QDateTimeAxis>
+#include <QEvent>
+#include <QLineSeries>
+#include <QValueAxis>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// Seconds between time ticks: a round step that gives at most `wanted` ticks.
+qint64 timeStep(qint64 spanSeconds, int wanted)
+{
+    for (qint64 step : {1, 2, 5, 10, 15, 30, 60, 120, 300, 600, 900, 1800, 3600, 7200, 21600, 86400})
+        if (spanSeconds / step + 1 <= wanted)
+            return step;
+    // Stamps days apart (a clock that is not set): whole days, never thousands of ticks.
+    return (spanSeconds / (wanted - 1) / 86400 + 1) * 86400;
+}
+} // namespace
+
+TimelineChart::TimelineChart(QWidget* parent)
+    : QChartView(parent)
+    , m_mean(new QLineSeries)
+    , m_max(new QLineSeries)
+    , m_x(new QDateTimeAxis)
+    , m_y(new QValueAxis)
+{
+    setObjectName(u"latencyTimeline"_s);
+    auto* chart = new QChart;
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    const QColor color(seriesColor(0));
+    m_mean->setName(tr("total, mean per second"));
+    m_mean->setPen(QPen(color, 2));
+    QColor light = color;
+    light.setAlpha(140);
+    m_max->setName(tr("highest per second"));
+    m_max->setPen(QPen(light, 1.2));
+    chart->addAxis(m_x, Qt::AlignBottom);
+    chart->addAxis(m_y, Qt::AlignLeft);
+    for (QLineSeries* s : {m_max, m_mean}) {
+        chart->addSeries(s);
+        s->attachAxis(m_x);
+        s->attachAxis(m_y);
+    }
+    m_x->setTitleText(tr("time of the sample"));
+    m_y->setTitleText(tr("latency [ms]"));
+    setChart(chart);
+    ChartStyle::apply(chart, palette());
+    setRenderHint(QPainter::Antialiasing);
+    refresh();
+}
+
+void TimelineChart::setTimeline(const LatencyTimeline* timeline)
+{
+    m_timeline = timeline;
+    m_revision = ~quint64(0);
+    refresh();
+}
+
+qsizetype TimelineChart::pointCount() const
+{
+    return m_mean->count();
+}
+
+void TimelineChart::refresh()
+{
+    const quint64 revision = m_timeline ? m_timeline->revision() : 0;
+    if (revision == m_revision)
+        return;
+    m_revision = revision;
+    QList<QPointF> mean;
+    QList<QPointF> max;
+    double top = 0;
+    double bottom = 0; // a total between hosts whose clocks differ may be negative
+    qint64 first = QDateTime::currentSecsSinceEpoch() - 60;
+    qint64 last = first + 60;
+    if (m_timeline && !m_timeline->buckets().empty()) {
+        const auto& buckets = m_timeline->buckets();
+        mean.reserve(qsizetype(buckets.size()));
+        max.reserve(qsizetype(buckets.size()));
+        for (const LatencyTimeline::Bucket& b : buckets) {
+            const double at = double(b.second) * 1000 + 500; // the middle of its second
+            mean.append(QPointF(at, b.meanNs() * 1e-6));
+            max.append(QPointF(at, double(b.max) * 1e-6));
+            top = std::max(top, double(b.max) * 1e-6);
+            bottom = std::min(bottom, double(b.min) * 1e-6);
+        }
+        first = buckets.front().second;
+        last = std::max(buckets.back().second + 1, first + 10);
+    }
+    m_mean->replace(mean);
+    m_max->replace(max);
+    // Time ticks on round seconds or minutes: the ends on a step.
+    const qint64 step = timeStep(last - first, 6);
+    const qint64 from = first - ((first % step) + step) % step;
+    const qint64 to = from + (last - from + step - 1) / step * step;
+    m_x->setRange(QDateTime::fromSecsSinceEpoch(from), QDateTime::fromSecsSinceEpoch(to));
+    m_x->setTickCount(int((to - from) / step) + 1);
+    m_x->setFormat(step < 60 ? u"HH:mm:ss"_s : step < 86400 ? u"HH:mm"_s : u"yyyy-MM-dd"_s);
+    ChartStyle::setNiceRange(m_y, bottom, top > bottom ? top : bottom + 1, 5);
+}
+
+void TimelineChart::changeEvent(QEvent* event)
+{
+    QChartView::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        ChartStyle::apply(chart(), palette());
+}
