@@ -100,8 +100,11 @@ void TimelineChart::refresh()
     }
     m_mean->replace(mean);
     m_max->replace(max);
-    // Time ticks on round seconds or minutes: the ends on a step.
-    const qint64 step = timeStep(last - first, 6);
+    // Time ticks on round seconds or minutes: the ends on a step; as many as have room for their
+    // labels ("12:03:05" elided to "12:0…" tells nothing).
+    const int labelWidth = fontMetrics().horizontalAdvance(u"00:00:00"_s) * 3 / 2;
+    const int wanted = std::clamp(int(width() * 0.85) / std::max(1, labelWidth), 3, 7);
+    const qint64 step = timeStep(last - first, wanted);
     const qint64 from = first - ((first % step) + step) % step;
     const qint64 to = from + (last - from + step - 1) / step * step;
     m_x->setRange(QDateTime::fromSecsSinceEpoch(from), QDateTime::fromSecsSinceEpoch(to));
