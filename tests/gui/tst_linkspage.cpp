@@ -173,6 +173,13 @@ private slots:
         QVERIFY(page->notificationsShown() > notifiedBefore);
         // Issue 33: during the outage the state's reasons and the loss read whole (they were
         // `sou…ped` and `99….15)`): those columns take the width their text needs.
+        const auto sourceStopped = [&] {
+            for (int r = 0; r < model->rowCount(); ++r)
+                if (model->index(r, LinkModel::StateColumn).data().toString().contains(u"source_stopped"_s))
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(sourceStopped(), 15000); // the links fed by the dead bridge
         QTest::qWait(2 * ColumnFitter::kGrowMs);
         const QStyleOptionViewItem option = cellOption(table);
         for (int r = 0; r < table->model()->rowCount(); ++r)

@@ -133,6 +133,21 @@ private:
         QTest::qWait(300);
         checkNames(w->measurePage()->pipelineView(), PipelineModel::TopicColumn, 8);
         checkPrefixSaid(w->measurePage()->pipelineView(), PipelineModel::TopicColumn);
+        // The stamp topics seen: a list, whose caption says the prefix its rows leave out.
+        QListView* seen = w->measurePage()->stampTopicsView();
+        checkNames(seen, 0, 8);
+        auto* seenNames = qobject_cast<NameDelegate*>(seen->itemDelegateForColumn(0));
+        QVERIFY(seenNames);
+        if (const QString prefix = seenNames->strippedPrefix(); !prefix.isEmpty()) {
+            QLabel* caption = nullptr;
+            for (QLabel* label : w->measurePage()->findChildren<QLabel*>())
+                if (label->buddy() == seen)
+                    caption = label;
+            QVERIFY(caption);
+            QTRY_VERIFY2(caption->text().contains(prefix), qPrintable(caption->text()));
+            for (int r = 0; r < seen->model()->rowCount(); ++r)
+                QVERIFY(!seenNames->displayedText(seen->model()->index(r, 0)).startsWith(prefix));
+        }
         w->pages()->setCurrentWidget(w->linksPage());
         QTest::qWait(300);
         checkNames(w->linksPage()->linkView(), LinkModel::SourceColumn, 4);

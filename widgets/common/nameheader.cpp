@@ -56,7 +56,10 @@ void NameHeader::initStyleOptionForIndex(QStyleOptionHeader* option, int logical
         int room = sectionSize(logicalIndex) - 2 * margin;
         if (option->sortIndicator != QStyleOptionHeader::None)
             room -= style()->pixelMetric(QStyle::PM_HeaderMarkSize, option, this) + margin;
-        option->text = option->fontMetrics.elidedText(option->text, Qt::ElideLeft, std::max(0, room));
+        // Measured bold: a section over selected rows is drawn bold (highlightSections).
+        QFont bold = font();
+        bold.setBold(true);
+        option->text = QFontMetrics(bold).elidedText(option->text, Qt::ElideLeft, std::max(0, room));
     }
 }
 
