@@ -57,7 +57,7 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     top->setStretchFactor(1, 2);
     // The inspector's fields get room for their values, the table more: its topics whole beside
     // their options and health.
-    ViewSetup::initialSizes(top, {600, 300});
+    ViewSetup::initialSizes(top, {580, 320});
     m_problems = new ProblemsPanel(document, this);
     auto* outer = new QSplitter(Qt::Vertical, this);
     outer->addWidget(top);

@@ -53,9 +53,7 @@ MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* und
     split->addWidget(m_editor);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 3);
-    // The ROS topics get room for their names; the mapping table beside them more (its topics,
-    // options and health side by side).
-    ViewSetup::initialSizes(split, {340, 940});
+    ViewSetup::initialSizes(split, {400, 880}); // the ROS topics get room for their names
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);
     v->addLayout(bar);
