@@ -105,8 +105,13 @@ void LinkModel::refresh()
     m_msDecimals = columnDecimals(largest[1], 2);
     if (!same)
         endResetModel();
-    else if (n > 0)
-        emit dataChanged(index(0, 0), index(n - 1, ColumnCount - 1));
+    else if (n > 0) {
+        // The same links: their topics stay (they make the id), the state, the bridge (a client
+        // id edited on the Map page) and the figures change; a view that sizes its name columns to
+        // their text need not measure them again every second.
+        emit dataChanged(index(0, StateColumn), index(n - 1, BridgeColumn));
+        emit dataChanged(index(0, SourceRateColumn), index(n - 1, ColumnCount - 1));
+    }
 }
 
 int LinkModel::rowCount(const QModelIndex& parent) const
