@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/namedelegate.h"
 
 #include <QAbstractItemView>
@@ -62,7 +63,7 @@ inline int neededWidth(QTableView* view, int column)
 {
     const QAbstractItemModel* model = view->model();
     const QStyleOptionViewItem option = cellOption(view);
-    int width = view->horizontalHeader()->sectionSizeHint(column);
+    int width = ColumnFitter::titleWidth(view->horizontalHeader(), column);
     for (int r = 0; r < model->rowCount(); ++r) {
         const QModelIndex index = model->index(r, column);
         width = std::max(width,

@@ -10,6 +10,8 @@
 #include <QHash>
 #include <QHeaderView>
 #include <QScopedValueRollback>
+#include <QStyle>
+#include <QStyleOptionHeader>
 #include <QTableView>
 
 ColumnFitter::ColumnFitter(QTableView* view)
@@ -127,11 +129,26 @@ void ColumnFitter::apply()
     fitTheRest();
 }
 
+int ColumnFitter::titleWidth(const QHeaderView* header, int column)
+{
+    int width = header->sectionSizeHint(column);
+    // Qt makes room for a sort indicator in every title; only the sorted column shows one (a
+    // column sorted later is fitted again: sorting changes the layout).
+    if (header->isSortIndicatorShown() && header->sortIndicatorSection() != column) {
+        QStyleOptionHeader option;
+        option.initFrom(header);
+        width
+            -= header->style()->sizeFromContents(QStyle::CT_HeaderSection, &option, QSize(), header).height()
+            + header->style()->pixelMetric(QStyle::PM_HeaderMargin, &option, header);
+    }
+    return width;
+}
+
 int ColumnFitter::needOf(int column) const
 {
     // The header's text counts too: a column whose title is cut is a cut column.
     return std::max(static_cast<QAbstractItemView*>(m_view)->sizeHintForColumn(column),
-                    m_view->horizontalHeader()->sectionSizeHint(column));
+                    titleWidth(m_view->horizontalHeader(), column));
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <QObject>
 #include <QTimer>
 
+class QHeaderView;
 class QTableView;
 
 /// Sizes a table's columns to what they hold, within the view. When the view has room for every
@@ -33,6 +34,8 @@ public:
     static constexpr int kGrowMs = 1000;
     /// Fits now (the timer does it after changes).
     void apply();
+    /// The width a column's title needs: its text, and a sort indicator where one is shown.
+    static int titleWidth(const QHeaderView* header, int column);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
