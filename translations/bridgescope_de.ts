@@ -3644,10 +3644,6 @@ factors:
         <translation>Der Broker kündigt &apos;%1&apos; für &apos;%2&apos; an, aber &apos;%3&apos; hat auf ROS den Typ &apos;%4&apos;.</translation>
     </message>
     <message>
-        <source>, %1 ms</source>
-        <translation>, %1 ms</translation>
-    </message>
-    <message>
         <source>publishers: %1</source>
         <translation>Publisher: %1</translation>
     </message>
@@ -3686,6 +3682,14 @@ factors:
     <message>
         <source>Subscribers of &apos;%1&apos; cannot get mqtt_client&apos;s messages: %2. Offer at least what they ask for in advanced.ros.qos.</source>
         <translation>Subscriber von „%1“ erhalten die Nachrichten von mqtt_client nicht: %2. Bieten Sie in advanced.ros.qos mindestens, was sie verlangen.</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Last one-way latency on the broker: %1 ms.</source>
+        <translation>Letzte Einweg-Latenz am Broker: %1 ms.</translation>
     </message>
 </context>
 <context>
@@ -4410,6 +4414,32 @@ factors:
     <message>
         <source>No ROS 2 definition of %1 is known: its payloads show raw.</source>
         <translation>Für %1 ist keine ROS-2-Definition bekannt: seine Nutzdaten werden roh gezeigt.</translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation>(leer)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+</context>
+<context>
+    <name>NameDelegate</name>
+    <message>
+        <source>%1 in %2</source>
+        <translation>%1 in %2</translation>
+    </message>
+    <message>
+        <source>Every name below starts with %1</source>
+        <translation>Jeder Name darunter beginnt mit %1</translation>
+    </message>
+</context>
+<context>
+    <name>NameHeader</name>
+    <message>
+        <source>%1 in %2</source>
+        <translation>%1 in %2</translation>
     </message>
 </context>
 <context>

@@ -6,11 +6,11 @@
 #include "wire/rosmessage.h"
 
 #include <algorithm>
-#include <utility>
 #include <QDateTime>
 #include <QLocale>
 #include <QMimeData>
 #include <QSet>
+#include <utility>
 
 using namespace Qt::StringLiterals;
 
@@ -28,6 +28,28 @@ bool looksLikeText(const QByteArray& payload)
             return false;
     }
     return true;
+}
+
+/// A payload's first bytes as one line of at most `chars` characters: text with its line breaks
+/// and runs of blanks as single spaces, anything else as hex; `…` when more of it is not shown
+/// (`size` is the whole payload's).
+QString previewText(const QByteArray& preview, int size, qsizetype chars)
+{
+    if (size == 0)
+        return MqttTopicTree::tr("(empty)");
+    QString text;
+    if (looksLikeText(preview)) {
+        text = QString::fromUtf8(preview);
+        if (preview.size() < size && text.endsWith(QChar::ReplacementCharacter)) // a character cut
+            text.chop(1);
+        text = text.simplified();
+    } else {
+        text = QString::fromLatin1(preview.left((chars + 1) / 3).toHex(' '));
+    }
+    const bool more = text.size() > chars || preview.size() < size;
+    if (text.size() > chars)
+        text.truncate(chars);
+    return more ? QString(text + u'…') : text;
 }
 
 /// The bundled ROS 2 definitions, parsed once for every tree that is given no others.
@@ -60,6 +82,7 @@ struct MqttTopicTree::Node
     qint64 lastNs = 0;
     std::deque<HistoryEntry> history;
     qint64 historyBytes = 0;
+    QByteArray preview; ///< the last payload's first kPreviewBytes
 
     quint64 subMessages = 0;
     quint64 subBytes = 0;
@@ -348,6 +371,7 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
         n->retainedMessages += msg.retained ? 1 : 0;
         n->qos = msg.qos;
         n->lastNs = msg.receivedNs;
+        n->preview = msg.payload.left(kPreviewBytes);
         for (Node* p = n; p; p = p->parent) {
             ++p->subMessages;
             p->subBytes += quint64(size);
@@ -632,6 +656,8 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
             return type ? type->info.name + (type->info.stamped ? tr(" (stamped)") : QString()) : QString();
         case LatencyColumn:
             return n->latencySamples ? tr("%1 ms").arg(n->lastLatencyMs, 0, 'f', 1) : QString();
+        case ValueColumn:
+            return n->isTopic ? previewText(n->preview, n->lastSize, kPreviewChars) : QString();
         }
         break;
     case SortRole:
@@ -656,9 +682,13 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
             return type ? type->info.name : QString();
         case LatencyColumn:
             return n->lastLatencyMs;
+        case ValueColumn:
+            return n->isTopic ? previewText(n->preview, n->lastSize, kPreviewChars) : QString();
         }
         break;
     case Qt::ToolTipRole:
+        if (index.column() == ValueColumn && n->isTopic && !n->preview.isEmpty())
+            return previewText(n->preview, n->lastSize, kPreviewBytes);
         if (index.column() == LatencyColumn && n->latencySamples)
             return tr(
                 "Receive time minus the stamp mqtt_client injected on the sending host: valid only as far as "
@@ -817,6 +847,8 @@ QVariant MqttTopicTree::headerData(int section, Qt::Orientation orientation, int
         return tr("ROS type");
     case LatencyColumn:
         return tr("Latency");
+    case ValueColumn:
+        return tr("Value");
     }
     return {};
 }

@@ -19,7 +19,8 @@ class RosTypeRegistry;
 /// Every topic keeps its message and byte counts, rate, last size, retained flag and QoS, the time
 /// of its last message, and a bounded history of payloads (historyDepth() per topic, 16 MiB per
 /// topic, and historyBudget() over all topics: past it the oldest payloads of any topic go first,
-/// counted by evictedPayloads()); every level sums its subtree. What a broker's clients announce
+/// counted by evictedPayloads()); every level sums its subtree. The last payload's first
+/// kPreviewBytes are kept apart for a one-line preview (ValueColumn). What a broker's clients announce
 /// is bounded too: at most topicBudget() topics, and structureBudget() bytes of levels (their names,
 /// paths and nodes; a name may be as long as MQTT allows). A topic past either is not added, and
 /// its messages are counted by untrackedMessages(); the topics kept go on updating. Topics
@@ -43,6 +44,7 @@ public:
         LastColumn,
         RosTypeColumn,
         LatencyColumn,
+        ValueColumn, ///< the last payload, shortened to one line (MQTT Explorer's habit)
         ColumnCount
     };
     enum Role {
@@ -74,6 +76,11 @@ public:
     /// What one level costs beside its name and path: the node (about 600 bytes), the blocks its
     /// three deques allocate when made (about 600 bytes each) and its hash entries.
     static constexpr qint64 kNodeOverhead = 3072;
+    /// A topic's last payload is kept up to this many bytes for ValueColumn's preview (beside the
+    /// history, which a busy broker may evict): at most topicBudget() × this (5 MiB by default).
+    static constexpr qsizetype kPreviewBytes = 256;
+    /// The characters ValueColumn shows of it, on one line.
+    static constexpr qsizetype kPreviewChars = 80;
     /// A $SYS statistic's value is kept up to this many bytes.
     static constexpr qsizetype kMaxSysValueBytes = 1024;
 

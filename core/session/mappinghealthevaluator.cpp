@@ -80,9 +80,28 @@ QString qosProblem(const Mapping& m, const Ros2Topic& topic)
     return why.join(u"; "_s);
 }
 
+/// A rate's figure: one decimal below 1000 Hz, so that two rates side by side have one precision.
+QString rateFigure(double hz)
+{
+    return QString::number(hz, 'f', hz < 1000 ? 1 : 0);
+}
+
 QString rate(double hz)
 {
-    return MappingHealthEvaluator::tr("%1 Hz").arg(hz, 0, 'f', hz < 10 ? 1 : 0);
+    return MappingHealthEvaluator::tr("%1 Hz").arg(rateFigure(hz));
+}
+
+/// The table's few words for a healthy mapping: `10.0 → 9.9 Hz` when both ends have a rate (one
+/// unit for both, so that the destination's rate is not the part a narrow column cuts).
+QString flowSummary(const RosMonitorStats* mon, const QString& rosRate, double mqttHz, bool rosFirst)
+{
+    if (!mon || !mon->messages) {
+        const QString mqttRate = rate(mqttHz);
+        return rosFirst ? rosRate + u" → "_s + mqttRate : mqttRate + u" → "_s + rosRate;
+    }
+    const QString ros = rateFigure(mon->rateHz);
+    const QString mqtt = rateFigure(mqttHz);
+    return MappingHealthEvaluator::tr("%1 Hz").arg(rosFirst ? ros + u" → "_s + mqtt : mqtt + u" → "_s + ros);
 }
 } // namespace
 
@@ -139,7 +158,7 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                                .arg(in.activeWindowNs / 1000000000);
             } else {
                 h.state = MappingHealth::Healthy;
-                h.summary = rosRate + u" → "_s + mqttRate;
+                h.summary = flowSummary(mon, rosRate, mqttInfo->rate, true);
                 h.detail = tr("'%1' (%2) arrives on '%3' (%4).").arg(ros, rosRate, mqtt, mqttRate);
             }
         } else {
@@ -159,7 +178,7 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                 h.detail = tr("'%1' carries %2 but nobody publishes '%3' on ROS.").arg(mqtt, mqttRate, ros);
             } else {
                 h.state = MappingHealth::Healthy;
-                h.summary = mqttRate + u" → "_s + rosRate;
+                h.summary = flowSummary(mon, rosRate, mqttInfo->rate, false);
                 h.detail = tr("'%1' (%2) is published on '%3' (%4).").arg(mqtt, mqttRate, ros, rosRate);
             }
         }
@@ -188,8 +207,11 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                 }
             }
         }
-        if (h.latencyMs >= 0 && h.state == MappingHealth::Healthy)
-            h.summary += tr(", %1 ms").arg(h.latencyMs, 0, 'f', 1);
+        if (h.latencyMs >= 0 && h.state == MappingHealth::Healthy) {
+            h.summary += u" · "_s + tr("%1 ms").arg(h.latencyMs, 0, 'f', 1);
+            h.detail
+                += u"\n"_s + tr("Last one-way latency on the broker: %1 ms.").arg(h.latencyMs, 0, 'f', 1);
+        }
         out.insert(m.id, h);
     }
     return out;

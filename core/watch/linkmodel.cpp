@@ -9,14 +9,19 @@ namespace {
 constexpr int kHistorySeconds = 300;
 constexpr qsizetype kMaxEvents = 10000;
 
-QString hz(double v)
+QString figure(double v, int decimals)
 {
-    return QString::number(v, 'f', v < 10 ? 1 : 0);
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : u"–"_s;
 }
 
-QString ms(double v)
+/// The decimals every figure of a column is shown with: one precision per column (`10` beside
+/// `10.0` reads as two kinds of figure), as many as the column's largest figure leaves room for.
+int columnDecimals(double largest, int mostDecimals)
 {
-    return std::isfinite(v) ? QString::number(v, 'f', v < 10 ? 2 : 1) : u"–"_s;
+    int decimals = mostDecimals;
+    for (double limit = 10; decimals > 0 && largest >= limit; limit *= 100)
+        --decimals;
+    return decimals;
 }
 
 QString levelText(LinkLevel l)
@@ -87,10 +92,26 @@ void LinkModel::refresh()
         for (std::size_t k = first; k < h.size(); ++k)
             r.history << h[k].rateHz;
     }
+    // One precision per kind of figure, from the largest: rates 1 decimal (none from 1000 Hz on),
+    // latencies 2 (1 from 10 ms, none from 1 s).
+    double largest[2] = {0, 0};
+    for (const Row& r : std::as_const(m_rows)) {
+        for (double v : {r.figures.source.rateHz, r.figures.destination.rateHz})
+            largest[0] = std::max(largest[0], std::isfinite(v) ? std::abs(v) : 0.0);
+        for (double v : {r.figures.latencyP50Ms, r.figures.latencyP99Ms})
+            largest[1] = std::max(largest[1], std::isfinite(v) ? std::abs(v) : 0.0);
+    }
+    m_rateDecimals = largest[0] < 1000 ? 1 : 0;
+    m_msDecimals = columnDecimals(largest[1], 2);
     if (!same)
         endResetModel();
-    else if (n > 0)
-        emit dataChanged(index(0, 0), index(n - 1, ColumnCount - 1));
+    else if (n > 0) {
+        // The same links: their topics stay (they make the id), the state, the bridge (a client
+        // id edited on the Map page) and the figures change; a view that sizes its name columns to
+        // their text need not measure them again every second.
+        emit dataChanged(index(0, StateColumn), index(n - 1, BridgeColumn));
+        emit dataChanged(index(0, SourceRateColumn), index(n - 1, ColumnCount - 1));
+    }
 }
 
 int LinkModel::rowCount(const QModelIndex& parent) const
@@ -170,17 +191,18 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
         case DestinationColumn:
             return d.destinationTopic();
         case SourceRateColumn:
-            return value ? QVariant(f.source.rateHz) : QVariant(hz(f.source.rateHz));
+            return value ? QVariant(f.source.rateHz) : QVariant(figure(f.source.rateHz, m_rateDecimals));
         case DestinationRateColumn:
-            return value ? QVariant(f.destination.rateHz) : QVariant(hz(f.destination.rateHz));
+            return value ? QVariant(f.destination.rateHz)
+                         : QVariant(figure(f.destination.rateHz, m_rateDecimals));
         case LossColumn:
             return value ? QVariant(f.lossPercent)
                          : QVariant(f.lost > 0 ? tr("%1 % (%2)").arg(f.lossPercent, 0, 'f', 1).arg(f.lost)
                                                : tr("%1 %").arg(f.lossPercent, 0, 'f', 1));
         case P50Column:
-            return value ? QVariant(f.latencyP50Ms) : QVariant(ms(f.latencyP50Ms));
+            return value ? QVariant(f.latencyP50Ms) : QVariant(figure(f.latencyP50Ms, m_msDecimals));
         case P99Column:
-            return value ? QVariant(f.latencyP99Ms) : QVariant(ms(f.latencyP99Ms));
+            return value ? QVariant(f.latencyP99Ms) : QVariant(figure(f.latencyP99Ms, m_msDecimals));
         case HistoryColumn:
             return value ? QVariant(f.destination.rateHz) : QVariant();
         case LastEventColumn:

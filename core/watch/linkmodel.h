@@ -63,6 +63,8 @@ private:
     };
     QList<Row> m_rows;
     QHash<QString, QString> m_lastEvents; ///< by link id
+    int m_rateDecimals = 1; ///< of every rate shown (one precision for the rate columns)
+    int m_msDecimals = 2; ///< of every latency shown
 };
 
 /// The event log: every event that started or ended, newest first (at most 10,000); LevelRole

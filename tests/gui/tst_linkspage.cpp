@@ -8,10 +8,12 @@
 #include "app/gui/mainwindow.h"
 #include "base/niceticks.h"
 #include "demo/demolab.h"
+#include "namecheck.h"
 #include "record/runfile.h"
 #include "session/measuresession.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/discover/discoverpage.h"
@@ -201,6 +203,27 @@ private slots:
         QVERIFY(bridgeDown);
         QVERIFY(stall);
         QVERIFY(page->notificationsShown() > notifiedBefore);
+        // Issue 33: during the outage the state's reasons and the loss read whole (they were
+        // `sou…ped` and `99….15)`): those columns take the width their text needs.
+        const auto sourceStopped = [&] {
+            for (int r = 0; r < model->rowCount(); ++r)
+                if (model->index(r, LinkModel::StateColumn).data().toString().contains(u"source_stopped"_s))
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(sourceStopped(), 15000); // the links fed by the dead bridge
+        QTest::qWait(2 * ColumnFitter::kGrowMs);
+        const QStyleOptionViewItem option = cellOption(table);
+        for (int r = 0; r < table->model()->rowCount(); ++r)
+            for (int c :
+                 {int(LinkModel::StateColumn), int(LinkModel::LossColumn), int(LinkModel::P99Column)}) {
+                const QModelIndex index = table->model()->index(r, c);
+                const int needs = table->itemDelegateForIndex(index)->sizeHint(option, index).width();
+                QVERIFY2(needs <= table->columnWidth(c),
+                         qPrintable(u"'%1' needs %2 px, has %3"_s.arg(index.data().toString())
+                                        .arg(needs)
+                                        .arg(table->columnWidth(c))));
+            }
         QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
         QVERIFY2(window.measure()->stopRecording(&error), qPrintable(error));
         const std::optional<RunData> run = RunFile::read(runPath, &error);

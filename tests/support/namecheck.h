@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/namedelegate.h"
 
 #include <QAbstractItemView>
 #include <QFontMetrics>
 #include <QHash>
+#include <QHeaderView>
+#include <QStyleOptionViewItem>
 #include <QTableView>
 
 /// Whether every row's name in `column` of `view` is shown as a text of its own that keeps the
@@ -39,6 +42,73 @@ inline QString namesShownProblem(QAbstractItemView* view, int column, int minimu
         if (other != name)
             return u"%1: %2 and %3 both show as %4"_s.arg(view->objectName(), name, other, shown);
         nameOf.insert(shown, name);
+    }
+    return {};
+}
+
+/// The style option a view's delegate gets for its cells (as NameDelegate::displayedText builds it).
+inline QStyleOptionViewItem cellOption(QAbstractItemView* view)
+{
+    QStyleOptionViewItem option;
+    option.initFrom(view->viewport());
+    option.widget = view;
+    option.font = view->font();
+    option.fontMetrics = view->fontMetrics();
+    return option;
+}
+
+/// The width a table's column needs for every row's text and its title, as ColumnFitter and
+/// QHeaderView::ResizeToContents measure it.
+inline int neededWidth(QTableView* view, int column)
+{
+    const QAbstractItemModel* model = view->model();
+    const QStyleOptionViewItem option = cellOption(view);
+    int width = ColumnFitter::titleWidth(view->horizontalHeader(), column);
+    for (int r = 0; r < model->rowCount(); ++r) {
+        const QModelIndex index = model->index(r, column);
+        width = std::max(width,
+                         view->itemDelegateForIndex(index)->sizeHint(option, index).width()
+                             + (view->showGrid() ? 1 : 0));
+    }
+    return width;
+}
+
+/// "No column's text is cut when the window has room for it": when the widths every shown column
+/// of `view` needs add up to no more than its viewport, no cell shows less than its text (a name
+/// column shows its whole names, every other cell is as wide as its text). Empty when so, or when
+/// the view has no such room; otherwise what is cut. `roomy`, when given, says whether it had room.
+inline QString cutWithRoomProblem(QTableView* view, bool* roomy = nullptr)
+{
+    using namespace Qt::StringLiterals;
+    const QAbstractItemModel* model = view->model();
+    int needed = 0;
+    QList<int> columns;
+    for (int c = 0; c < model->columnCount(); ++c) {
+        if (view->isColumnHidden(c))
+            continue;
+        columns << c;
+        needed += neededWidth(view, c);
+    }
+    if (roomy)
+        *roomy = needed <= view->viewport()->width();
+    if (needed > view->viewport()->width())
+        return {};
+    const QStyleOptionViewItem option = cellOption(view);
+    for (int c : std::as_const(columns)) {
+        const QString title = model->headerData(c, Qt::Horizontal).toString();
+        for (int r = 0; r < model->rowCount(); ++r) {
+            const QModelIndex index = model->index(r, c);
+            const QString text = index.data().toString();
+            const int width = view->itemDelegateForIndex(index)->sizeHint(option, index).width();
+            auto* names = qobject_cast<NameDelegate*>(view->itemDelegateForColumn(c));
+            if ((names && names->displayedText(index) != text) || width > view->columnWidth(c))
+                return u"%1: '%2' cut in column '%3' (%4 px, needs %5; all columns need %6 of %7 px)"_s
+                    .arg(view->objectName(), names ? names->displayedText(index) : text, title)
+                    .arg(view->columnWidth(c))
+                    .arg(width)
+                    .arg(needed)
+                    .arg(view->viewport()->width());
+        }
     }
     return {};
 }

@@ -6,6 +6,7 @@
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
 #include "ros/rosmonitor.h"
+#include "watch/linkmodel.h"
 #include "watch/linkmonitor.h"
 #include "wire/mqttclientwire.h"
 
@@ -259,6 +260,51 @@ private slots:
         run(10, true);
         QCOMPARE(m.level(0), LinkLevel::Ok);
         QVERIFY(m.openEvents().isEmpty());
+    }
+
+    // Regression (issue 33): the Links table showed `10` beside `10.0` and `5.00` beside `25.0`; a
+    // column's figures have one precision, whatever their size.
+    void aColumnsFiguresHaveOnePrecision()
+    {
+        LinkMonitor m;
+        const LinkDef fast = link(Direction::Ros2Mqtt, u"/fast"_s, u"fast"_s, true);
+        const LinkDef slow = link(Direction::Ros2Mqtt, u"/slow"_s, u"slow"_s, true);
+        m.setLinks({fast, slow}, kStart);
+        RosMsgTypeInfo type {u"0123456789abcdef0123456789abcdef"_s, u"test_msgs/Stamped"_s,
+                             kStampedDefinition, true};
+        for (const QString& topic : {u"fast"_s, u"slow"_s})
+            m.addMqtt(
+                {mqtt(u"mqtt_client/ros_msg_type/"_s + topic, MqttClientWire::encodeType(type), kStart)});
+        Clock clock {m};
+        for (int i = 0; i < 200; ++i) { // 10 s: /fast at 20 Hz (5 ms), /slow at 5 Hz (25 ms)
+            const qint64 sent = clock.now;
+            m.addRos({ros(u"/fast"_s, headerMessage(quint32(i)), sent)});
+            m.addMqtt(
+                {mqtt(u"fast"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))), sent + 5 * kMs)});
+            if (i % 4 == 0) {
+                m.addRos({ros(u"/slow"_s, headerMessage(quint32(i)), sent)});
+                m.addMqtt({mqtt(u"slow"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))),
+                                sent + 25 * kMs)});
+            }
+            clock.advance(50 * kMs);
+        }
+        LinkModel model(&m);
+        const auto decimals = [](const QString& figure) {
+            const qsizetype dot = figure.indexOf(u'.');
+            return dot < 0 ? 0 : figure.size() - dot - 1;
+        };
+        for (int column : {int(LinkModel::SourceRateColumn), int(LinkModel::DestinationRateColumn),
+                           int(LinkModel::P50Column), int(LinkModel::P99Column)}) {
+            const QString first = model.index(0, column).data().toString();
+            const QString second = model.index(1, column).data().toString();
+            QVERIFY2(model.index(0, column).data(LinkModel::ValueRole).toDouble()
+                         != model.index(1, column).data(LinkModel::ValueRole).toDouble(),
+                     qPrintable(first));
+            QVERIFY2(decimals(first) == decimals(second), qPrintable(first + u" beside "_s + second));
+        }
+        // Rates with one decimal; latencies of tens of milliseconds with one.
+        QCOMPARE(decimals(model.index(0, LinkModel::SourceRateColumn).data().toString()), 1);
+        QCOMPARE(decimals(model.index(0, LinkModel::P50Column).data().toString()), 1);
     }
 
     /// An event's times may come from a run file or a peer: from INT64_MIN to INT64_MAX the

@@ -94,6 +94,45 @@ private slots:
         QCOMPARE(tree.info(u"fleet/car7/speed"_s)->messages, 15u);
     }
 
+    // MQTT Explorer's habit (issue 33): each topic's last value on its row, one short line; a
+    // topic keeps at most kPreviewBytes of it, whatever the payload's size and however long the
+    // history is kept.
+    void theLastValueShowsAsOneShortLine()
+    {
+        MqttTopicTree tree;
+        tree.setHistoryDepth(1);
+        QByteArray json = "{\n  \"speed\": 3.5,\n  \"name\":   \"rover\"\n}";
+        QByteArray big = "{\"points\": [" + QByteArray(100000, '1') + "]}";
+        std::vector<MqttMessage> batch;
+        batch.push_back(msg(u"rover/state"_s, json));
+        batch.push_back(msg(u"rover/cloud"_s, big));
+        batch.push_back(msg(u"rover/raw"_s, QByteArray("\x00\x01\xfe\xff", 4)));
+        batch.push_back(msg(u"rover/cleared"_s, QByteArray()));
+        tree.apply(std::move(batch));
+        const auto value = [&](const QString& topic) {
+            return tree.indexOf(topic, MqttTopicTree::ValueColumn).data().toString();
+        };
+        QCOMPARE(value(u"rover/state"_s), u"{ \"speed\": 3.5, \"name\": \"rover\" }"_s);
+        const QString cloud = value(u"rover/cloud"_s);
+        QVERIFY2(cloud.size() == MqttTopicTree::kPreviewChars + 1 && cloud.startsWith(u"{\"points\": [111"_s)
+                     && cloud.endsWith(u'…'),
+                 qPrintable(cloud));
+        QCOMPARE(value(u"rover/raw"_s), u"00 01 fe ff"_s);
+        QCOMPARE(value(u"rover/cleared"_s), u"(empty)"_s);
+        QCOMPARE(tree.indexOf(u"rover"_s, MqttTopicTree::ValueColumn).data().toString(), QString());
+        QCOMPARE(tree.headerData(MqttTopicTree::ValueColumn, Qt::Horizontal).toString(), u"Value"_s);
+        // The tooltip shows more of it, still bounded.
+        const QString tip
+            = tree.indexOf(u"rover/cloud"_s, MqttTopicTree::ValueColumn).data(Qt::ToolTipRole).toString();
+        QVERIFY2(tip.size() <= MqttTopicTree::kPreviewBytes + 1 && tip.size() > cloud.size(),
+                 qPrintable(tip));
+        // A new value replaces the last.
+        std::vector<MqttMessage> next;
+        next.push_back(msg(u"rover/state"_s, "parked"));
+        tree.apply(std::move(next));
+        QCOMPARE(value(u"rover/state"_s), u"parked"_s);
+    }
+
     void historyIsBoundedAndKeepsPayloadsIntact()
     {
         MqttTopicTree tree;

@@ -10,6 +10,8 @@
 #include <QHash>
 #include <QHeaderView>
 #include <QScopedValueRollback>
+#include <QStyle>
+#include <QStyleOptionHeader>
 #include <QTableView>
 
 ColumnFitter::ColumnFitter(QTableView* view)
@@ -85,9 +87,7 @@ bool ColumnFitter::fitFigures(bool growOnly)
     bool changed = false;
     for (int c : std::as_const(m_figures)) {
         // Hidden ones too (a few cells each): shown again from a menu, they have their width.
-        // The header's own text counts, as with ResizeToContents.
-        const int width = std::max(static_cast<QAbstractItemView*>(m_view)->sizeHintForColumn(c),
-                                   m_view->horizontalHeader()->sectionSizeHint(c));
+        const int width = needOf(c);
         if (width != m_view->columnWidth(c) && (!growOnly || width > m_view->columnWidth(c))) {
             m_view->setColumnWidth(c, width);
             changed = true;
@@ -129,6 +129,52 @@ void ColumnFitter::apply()
     fitTheRest();
 }
 
+int ColumnFitter::titleWidth(const QHeaderView* header, int column)
+{
+    int width = header->sectionSizeHint(column);
+    // Qt makes room for a sort indicator in every title; only the sorted column shows one (a
+    // column sorted later is fitted again: sorting changes the layout).
+    if (header->isSortIndicatorShown() && header->sortIndicatorSection() != column) {
+        QStyleOptionHeader option;
+        option.initFrom(header);
+        width
+            -= header->style()->sizeFromContents(QStyle::CT_HeaderSection, &option, QSize(), header).height()
+            + header->style()->pixelMetric(QStyle::PM_HeaderMargin, &option, header);
+    }
+    return width;
+}
+
+int ColumnFitter::needOf(int column) const
+{
+    // The header's text counts too: a column whose title is cut is a cut column.
+    return std::max(static_cast<QAbstractItemView*>(m_view)->sizeHintForColumn(column),
+                    titleWidth(m_view->horizontalHeader(), column));
+}
+
+namespace {
+/// Grows the columns towards their targets with what is left, evenly (water filling): the
+/// narrowest deficits are met first, the rest shared by those that still want more.
+void grow(QHash<int, int>& widths, const QList<int>& columns, const QHash<int, int>& targets, int& left)
+{
+    QList<int> wanting;
+    for (int c : columns)
+        if (targets.value(c) > widths.value(c))
+            wanting << c;
+    while (left > 0 && !wanting.isEmpty()) {
+        const int each = std::max(1, left / int(wanting.size()));
+        QList<int> still;
+        for (int c : std::as_const(wanting)) {
+            const int more = std::min({each, targets.value(c) - widths.value(c), left});
+            widths[c] += more;
+            left -= more;
+            if (targets.value(c) > widths.value(c))
+                still << c;
+        }
+        wanting = still;
+    }
+}
+} // namespace
+
 void ColumnFitter::fitTheRest()
 {
     const QHeaderView* header = m_view->horizontalHeader();
@@ -138,38 +184,72 @@ void ColumnFitter::fitTheRest()
         return !m_view->isColumnHidden(column)
             && header->sectionResizeMode(column) == QHeaderView::Interactive;
     };
-    // Each floor once: a name column's walks every row.
-    QHash<int, int> floors;
-    const auto floor = [&](int column) {
-        auto it = floors.constFind(column);
-        return it != floors.constEnd() ? *it : *floors.insert(column, floorOf(column));
-    };
-    QList<int> fills;
-    int reserved = 0; // the fill columns' floors: names before figures
+    QList<int> names; // the fill columns
     for (int c : std::as_const(m_fills))
-        if (usable(c)) {
-            fills << c;
-            reserved += floor(c);
+        if (usable(c))
+            names << c;
+    QList<int> fitted;
+    QHash<int, int> shares;
+    for (const auto& [column, share] : std::as_const(m_fits))
+        if (usable(column)) {
+            fitted << column;
+            shares.insert(column, int(room * share));
         }
-    int left = room - reserved;
-    for (int c = 0; c < header->count(); ++c)
-        if (!m_view->isColumnHidden(c) && (!manages(c) || m_figures.contains(c)))
-            left -= m_view->columnWidth(c);
-    // Fitted columns first, each within its share (and, beside fill columns, what they leave).
-    for (const auto& [column, share] : std::as_const(m_fits)) {
-        if (!usable(column))
+    // What the other columns take; a Stretch column takes what the fitted ones leave.
+    int left = room;
+    QList<int> stretched;
+    for (int c = 0; c < header->count(); ++c) {
+        if (m_view->isColumnHidden(c))
             continue;
-        const int least = floor(column);
-        const int most
-            = std::max(least, fills.isEmpty() ? int(room * share) : std::min(int(room * share), left));
-        const int width
-            = std::clamp(static_cast<QAbstractItemView*>(m_view)->sizeHintForColumn(column), least, most);
-        m_view->setColumnWidth(column, width);
-        left -= width;
+        if (header->sectionResizeMode(c) == QHeaderView::Stretch)
+            stretched << c;
+        else if (!names.contains(c) && !fitted.contains(c))
+            left -= m_view->columnWidth(c);
     }
-    if (fills.isEmpty())
+    QHash<int, int> needs;
+    QHash<int, int> widths; // each floor once: a name column's walks every row
+    int needed = 0;
+    for (int c : names + fitted + stretched) {
+        widths.insert(c, floorOf(c));
+        needed += *needs.insert(c, std::max(widths.value(c), needOf(c)));
+    }
+    if (needed <= left) {
+        // Room for every column's content: each gets it (shares are for when room is short, so
+        // that no column is cut that the window has room for), the names share what is over.
+        const int extra = names.isEmpty() || !stretched.isEmpty() ? 0 : (left - needed) / int(names.size());
+        for (int c : names + fitted)
+            m_view->setColumnWidth(c, needs.value(c) + (names.contains(c) ? extra : 0));
         return;
-    const int each = (left + reserved) / int(fills.size());
-    for (int c : fills)
-        m_view->setColumnWidth(c, std::max(floor(c), each));
+    }
+    if (names.isEmpty() && stretched.isEmpty()) {
+        // Only fitted columns: each within its share of the view (a scroll bar rather than a
+        // name cut to nothing), what the shares leave to those still cut.
+        left = room;
+        for (int c = 0; c < header->count(); ++c)
+            if (!m_view->isColumnHidden(c) && !fitted.contains(c))
+                left -= m_view->columnWidth(c);
+        for (int c : std::as_const(fitted)) {
+            widths[c]
+                = std::clamp(needs.value(c), widths.value(c), std::max(widths.value(c), shares.value(c)));
+            left -= widths.value(c);
+        }
+        grow(widths, fitted, needs, left);
+        for (int c : std::as_const(fitted))
+            m_view->setColumnWidth(c, widths.value(c));
+        return;
+    }
+    // Short of room: every column its floor; then names before the rest: the names grow towards
+    // their content, the fitted columns towards theirs within their shares, then beyond them (a
+    // Stretch column takes whatever is left).
+    for (int c : names + fitted + stretched)
+        left -= widths.value(c);
+    grow(widths, names + stretched, needs, left); // a Stretch column holds names too (the Map's topics)
+    QHash<int, int> withinShare;
+    for (int c : std::as_const(fitted))
+        withinShare.insert(c, std::min(needs.value(c), std::max(widths.value(c), shares.value(c))));
+    grow(widths, fitted, withinShare, left);
+    if (stretched.isEmpty())
+        grow(widths, fitted, needs, left);
+    for (int c : names + fitted)
+        m_view->setColumnWidth(c, widths.value(c));
 }

@@ -5,10 +5,13 @@
 #include <QObject>
 #include <QTimer>
 
+class QHeaderView;
 class QTableView;
 
-/// Sizes a table's columns to what they hold, within the view: `fit` columns take the width their
-/// content needs up to a share of the view, `fill` columns share what the others leave. A column
+/// Sizes a table's columns to what they hold, within the view. When the view has room for every
+/// column's content, each gets it (no text is cut that the window has room for) and `fill` columns
+/// share what is over. Short of room, names come first: `fill` columns (and a Stretch column) grow
+/// towards their content, then `fit` columns towards theirs within a share of the view. A column
 /// drawn by NameDelegate is never made narrower than its names' last segments (a scroll bar rather
 /// than a lost name). Refits 100 ms after the rows or the view's width change, until the user sizes
 /// one of its columns by hand (or WindowMemory restores the header): then the widths are the user's.
@@ -31,12 +34,16 @@ public:
     static constexpr int kGrowMs = 1000;
     /// Fits now (the timer does it after changes).
     void apply();
+    /// The width a column's title needs: its text, and a sort indicator where one is shown.
+    static int titleWidth(const QHeaderView* header, int column);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     int floorOf(int column) const;
+    /// The width a column's cells and title need.
+    int needOf(int column) const;
     bool manages(int column) const;
     /// Sizes the figure columns to their content; with `growOnly`, only those that need more room.
     /// True when a width changed.

@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "namedelegate.h"
 
+#include "widgets/common/nameheader.h"
+
 #include <algorithm>
 #include <optional>
 #include <QAbstractItemView>
 #include <QApplication>
+#include <QHeaderView>
 #include <QHelpEvent>
+#include <QLabel>
 #include <QTableView>
 #include <QToolTip>
 
@@ -48,6 +52,8 @@ NameDelegate* NameDelegate::install(QAbstractItemView* view, int column)
 {
     auto* delegate = new NameDelegate(view, column);
     view->setItemDelegateForColumn(column, delegate);
+    if (auto* table = qobject_cast<QTableView*>(view))
+        NameHeader::install(table); // the title shows the prefix the rows leave out
     return delegate;
 }
 
@@ -65,10 +71,86 @@ void NameDelegate::refreshNames() const
         for (int r = 0; r < rows; ++r)
             names << model->index(r, m_column).data(Qt::DisplayRole).toString();
     }
-    if (names != m_elider.names()) {
-        m_elider.setNames(names);
-        m_shortened.clear();
+    if (names == m_fullNames)
+        return;
+    m_fullNames = names;
+    m_widest = widest(false);
+    const QString prefix = sharedPrefix(names);
+    if (prefix != m_prefix) {
+        m_prefix = prefix;
+        if (auto* table = qobject_cast<QTableView*>(m_view)) // its title shows the prefix
+            table->horizontalHeader()->viewport()->update();
     }
+    // The shortenings are those of the names without the prefix: it is shown once, in the header.
+    if (!m_prefix.isEmpty())
+        for (QString& name : names)
+            name.remove(0, m_prefix.size());
+    m_elider.setNames(names);
+    m_shortened.clear();
+}
+
+QString NameDelegate::sharedPrefix(const QStringList& names)
+{
+    if (names.size() < 2)
+        return {};
+    // Bounded work: a prefix longer than this is not looked for (hostile names are kilobytes).
+    constexpr qsizetype kMaxPrefix = 1000;
+    QStringView shared = QStringView(names.first()).left(kMaxPrefix);
+    for (const QString& name : names) {
+        qsizetype n = 0;
+        const qsizetype most = std::min(shared.size(), name.size());
+        while (n < most && shared[n] == name[n])
+            ++n;
+        shared = shared.left(n);
+    }
+    // Whole namespaces only, and never a whole name (the rest of every name is not empty).
+    shared = shared.left(shared.lastIndexOf(u'/') + 1);
+    for (const QString& name : names)
+        if (name.size() == shared.size())
+            return {};
+    // A lone `/` tells nothing: every ROS name starts with it.
+    return shared.size() > 1 ? shared.toString() : QString();
+}
+
+bool NameDelegate::strips(int cellWidth) const
+{
+    return !m_prefix.isEmpty() && m_widest > cellWidth;
+}
+
+void NameDelegate::setCaption(QLabel* label)
+{
+    m_caption = label;
+    m_captionText = label->text();
+    // A longer caption gives way (cut at the pane's edge, whole in its tooltip), never widens the pane.
+    label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
+    m_captionPrefix.clear();
+}
+
+void NameDelegate::updateCaption() const
+{
+    if (!m_caption)
+        return;
+    const QString prefix = strippedPrefix();
+    if (prefix == m_captionPrefix)
+        return;
+    m_captionPrefix = prefix;
+    // `Stamp &topics seen:` becomes `Stamp &topics seen in /a/b/:`.
+    QString text = m_captionText;
+    if (!prefix.isEmpty()) {
+        const bool colon = text.endsWith(u':');
+        if (colon)
+            text.chop(1);
+        text = tr("%1 in %2").arg(text, prefix) + (colon ? QStringLiteral(":") : QString());
+    }
+    m_caption->setText(text);
+    m_caption->setToolTip(prefix.isEmpty() ? QString() : tr("Every name below starts with %1").arg(prefix));
+}
+
+QString NameDelegate::strippedPrefix() const
+{
+    refreshNames();
+    auto* table = qobject_cast<QTableView*>(m_view);
+    return strips(table ? table->columnWidth(m_column) : m_view->viewport()->width()) ? m_prefix : QString();
 }
 
 QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
@@ -77,6 +159,7 @@ QString NameDelegate::shortened(const QStyleOptionViewItem& option) const
     if (text.isEmpty())
         return text;
     refreshNames(); // the forms depend on the other names: a change of them empties the cache
+    updateCaption();
     // Painting a cell again (30 times a second on a live page) lays out its text again, and the
     // style's text rectangle lays it out once more: the result is kept per cell width and font.
     const QString key = text + QChar(0) + QString::number(option.rect.width()) + QChar(0)
@@ -99,9 +182,13 @@ QString NameDelegate::shorten(const QStyleOptionViewItem& option) const
     const int room
         = style->subElementRect(QStyle::SE_ItemViewItemText, &option, option.widget).width() - 2 * margin;
     const QFontMetrics& fm = option.fontMetrics;
-    if (fm.horizontalAdvance(text) <= room)
+    if (!strips(option.rect.width()) && fm.horizontalAdvance(text) <= room)
         return text;
-    const QStringList forms = m_elider.forms(text);
+    const QString rest
+        = strips(option.rect.width()) && text.startsWith(m_prefix) ? text.mid(m_prefix.size()) : text;
+    if (fm.horizontalAdvance(rest) <= room)
+        return rest;
+    const QStringList forms = m_elider.forms(rest);
     for (const QString& form : forms)
         if (fm.horizontalAdvance(form) <= room)
             return form;
@@ -125,6 +212,11 @@ QString NameDelegate::displayedText(const QModelIndex& index) const
 
 int NameDelegate::tailWidth() const
 {
+    return widest(true);
+}
+
+int NameDelegate::widest(bool tails) const
+{
     const QAbstractItemModel* model = m_view->model();
     if (!model)
         return 0;
@@ -136,9 +228,11 @@ int NameDelegate::tailWidth() const
     for (int r = 0, rows = model->rowCount(); r < rows; ++r) {
         const QModelIndex index = model->index(r, m_column);
         const QString name = index.data(Qt::DisplayRole).toString();
-        const qsizetype slash = name.lastIndexOf(u'/');
-        // Bounded work per row: a hostile name's tail is measured no further than a screen.
-        const QString tail = (slash < 0 ? name : QStringLiteral("…") + name.mid(slash)).left(kTailCharacters);
+        const qsizetype slash = tails ? name.lastIndexOf(u'/') : -1;
+        // Bounded work per row: a hostile name is measured no further than a screen.
+        const QString shown = tails
+            ? (slash < 0 ? name : QStringLiteral("…") + name.mid(slash)).left(kTailCharacters)
+            : NameElider::elideTail(name, kTailCharacters);
         const QVariant font = index.data(Qt::FontRole);
         const QFontMetrics* fm = &plain;
         if (font.isValid()) {
@@ -149,7 +243,7 @@ int NameDelegate::tailWidth() const
             }
             fm = &*lastMetrics;
         }
-        widest = std::max(widest, fm->horizontalAdvance(tail));
+        widest = std::max(widest, fm->horizontalAdvance(shown));
     }
     if (widest == 0)
         return 0;
@@ -170,8 +264,17 @@ void NameDelegate::paint(QPainter* painter, const QStyleOptionViewItem& option,
 QSize NameDelegate::sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const
 {
     QSize size = QStyledItemDelegate::sizeHint(option, index);
-    if (!qobject_cast<QTableView*>(m_view))
+    if (!qobject_cast<QTableView*>(m_view)) {
         size.setWidth(std::min(size.width(), m_view->viewport()->width()));
+        return size;
+    }
+    // In a table, the width at which the whole name shows: shortened() keeps a margin of its own
+    // inside the style's (as tailWidth() and the prefix's test count it).
+    QStyleOptionViewItem shown = option;
+    initStyleOption(&shown, index);
+    const int whole = shown.fontMetrics.horizontalAdvance(NameElider::elideTail(shown.text, kTailCharacters))
+        + 4 * textMargin(m_view->style(), m_view) + 2;
+    size.setWidth(std::max(size.width(), whole));
     return size;
 }
 

@@ -7,8 +7,8 @@
 #include "ros/rosgraphpoller.h"
 #include "ros/rostopicmodel.h"
 #include "session/livesession.h"
-#include "widgets/common/rostopicview.h"
 #include "widgets/common/livetext.h"
+#include "widgets/common/rostopicview.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/discover/detailpane.h"
 #include "widgets/discover/publishdialog.h"
@@ -29,6 +29,7 @@
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStyle>
 #include <QTabBar>
 #include <QTableView>
 #include <QTabWidget>
@@ -62,7 +63,8 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     split->addWidget(rosBox);
     split->addWidget(mqttBox);
     split->addWidget(m_detail);
-    split->setSizes({470, 430, 380});
+    // The MQTT tree's figures are seen without scrolling sideways; the detail pane gives way.
+    ViewSetup::initialSizes(split, {420, 510, 350});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);
     v->addLayout(bar);
@@ -320,11 +322,7 @@ QWidget* DiscoverPage::createMqttPane()
     m_mqttView->setObjectName(u"mqttTopics"_s);
     m_mqttView->setModel(m_mqttProxy);
     ViewSetup::topicTree(m_mqttView, MqttTopicTree::TopicColumn);
-    m_mqttView->header()->setSectionResizeMode(MqttTopicTree::TopicColumn, QHeaderView::Interactive);
-    m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 260);
-    for (int c : {MqttTopicTree::BytesColumn, MqttTopicTree::SizeColumn, MqttTopicTree::QosColumn,
-                  MqttTopicTree::LastColumn})
-        m_mqttView->setColumnHidden(c, true);
+    setUpMqttColumns();
     mv->addWidget(m_mqttView, 1);
     // New top-level levels open, so that the first look shows more than a handful of roots.
     connect(m_mqttProxy, &QAbstractItemModel::rowsInserted, this,
@@ -335,6 +333,42 @@ QWidget* DiscoverPage::createMqttPane()
                     m_mqttView->expand(m_mqttProxy->index(r, 0));
             });
     return mqttBox;
+}
+
+/// The figures a lab reads first (messages, rate, bytes, QoS, retained) beside the topics, each as
+/// wide as its title and a typical figure, so that they are seen without scrolling sideways; then
+/// the last value (MQTT Explorer's habit), the announced ROS type and the latency.
+void DiscoverPage::setUpMqttColumns()
+{
+    QHeaderView* header = m_mqttView->header();
+    header->setSectionResizeMode(MqttTopicTree::TopicColumn, QHeaderView::Interactive);
+    m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 170);
+    for (int c : {MqttTopicTree::SizeColumn, MqttTopicTree::LastColumn})
+        m_mqttView->setColumnHidden(c, true);
+    const QList<int> order {
+        MqttTopicTree::TopicColumn, MqttTopicTree::MessagesColumn, MqttTopicTree::RateColumn,
+        MqttTopicTree::BytesColumn, MqttTopicTree::QosColumn,      MqttTopicTree::RetainedColumn,
+        MqttTopicTree::ValueColumn, MqttTopicTree::RosTypeColumn,  MqttTopicTree::LatencyColumn};
+    for (int i = 0; i < order.size(); ++i)
+        header->moveSection(header->visualIndex(order[i]), i);
+    const QFontMetrics fm = m_mqttView->fontMetrics();
+    // The title whole (a sort indicator may cover its end), or a typical figure.
+    const QFontMetrics titles = header->fontMetrics();
+    const int margin = 2 * header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 4;
+    const QList<std::pair<int, QString>> samples {
+        {MqttTopicTree::MessagesColumn, u"000000"_s},
+        {MqttTopicTree::RateColumn, u"100.0"_s},
+        {MqttTopicTree::BytesColumn, u"999.9 KB"_s},
+        {MqttTopicTree::QosColumn, u"0"_s},
+        {MqttTopicTree::RetainedColumn, MqttTopicTree::tr("retained")}};
+    for (const auto& [column, sample] : samples)
+        m_mqttView->setColumnWidth(
+            column,
+            std::max(
+                titles.horizontalAdvance(m_mqttView->model()->headerData(column, Qt::Horizontal).toString())
+                    + margin,
+                fm.horizontalAdvance(sample) + 16));
+    m_mqttView->setColumnWidth(MqttTopicTree::ValueColumn, 180);
 }
 
 /// Publish and clear retained messages: a button, the tree's context menu and keys.

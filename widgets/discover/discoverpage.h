@@ -81,6 +81,7 @@ private:
     QLayout* createConnectionBar();
     QWidget* createRosPane();
     QWidget* createMqttPane();
+    void setUpMqttColumns();
     void createMqttActions();
     void connectSelection();
     void connectSession();

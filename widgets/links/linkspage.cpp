@@ -5,6 +5,7 @@
 #include "config/configreader.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/ratechart.h"
@@ -17,7 +18,6 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -138,7 +138,7 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     top->addWidget(createDetailPane());
     top->setStretchFactor(0, 4);
     top->setStretchFactor(1, 1);
-    top->setSizes({1000, 260});
+    ViewSetup::initialSizes(top, {1060, 220}); // the detail pane gives way to the links' names
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(top);
     split->addWidget(createEventLog());
@@ -213,29 +213,19 @@ QWidget* LinksPage::createLinkTable()
     ViewSetup::records(m_links);
     m_links->setSortingEnabled(true);
     m_links->sortByColumn(LinkModel::BridgeColumn, Qt::AscendingOrder);
-    // The topics get the room: names are what people look for.
+    // The topics get the room: names are what people look for. The figures and the state (during
+    // an outage its reasons, `source stopped`) take the width they need, measured when they change.
     QHeaderView* header = m_links->horizontalHeader();
     header->setSectionResizeMode(QHeaderView::Interactive);
-    header->setSectionResizeMode(LinkModel::SourceColumn, QHeaderView::Stretch);
-    header->setSectionResizeMode(LinkModel::DestinationColumn, QHeaderView::Stretch);
-    const QList<std::pair<int, int>> widths {{LinkModel::StateColumn, 80},
-                                             {LinkModel::BridgeColumn, 130},
-                                             {LinkModel::DirectionColumn, 90},
-                                             {LinkModel::SourceRateColumn, 60},
-                                             {LinkModel::DestinationRateColumn, 60},
-                                             {LinkModel::LossColumn, 70},
-                                             {LinkModel::P50Column, 60},
-                                             {LinkModel::P99Column, 60},
-                                             {LinkModel::HistoryColumn, 90}};
-    // At least as wide as the header's text ("Source Hz" is wider than its figures).
-    const QFontMetrics headerFont = m_links->horizontalHeader()->fontMetrics();
-    for (const auto& [column, width] : widths) {
-        const QString title = m_links->model()->headerData(column, Qt::Horizontal).toString();
-        m_links->setColumnWidth(column, std::max(width, headerFont.horizontalAdvance(title) + 16));
-    }
+    m_links->setColumnWidth(LinkModel::HistoryColumn, 90);
     m_links->setColumnHidden(LinkModel::LastEventColumn, true); // the event log says it; the tooltip too
     NameDelegate::install(m_links, LinkModel::SourceColumn);
     NameDelegate::install(m_links, LinkModel::DestinationColumn);
+    auto* fitter = new ColumnFitter(m_links);
+    fitter->figures({LinkModel::StateColumn, LinkModel::BridgeColumn, LinkModel::DirectionColumn,
+                     LinkModel::SourceRateColumn, LinkModel::DestinationRateColumn, LinkModel::LossColumn,
+                     LinkModel::P50Column, LinkModel::P99Column});
+    fitter->fill({LinkModel::SourceColumn, LinkModel::DestinationColumn});
     connect(m_links->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &LinksPage::showDetail);
     return m_links;
 }

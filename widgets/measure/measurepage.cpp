@@ -191,7 +191,7 @@ QWidget* MeasurePage::createPipelinePane()
     setUpPipelineView();
     m_seenView->setObjectName(u"stampTopicsView"_s);
     m_seenView->setModel(m_seen);
-    NameDelegate::install(m_seenView, 0);
+    m_seenNames = NameDelegate::install(m_seenView, 0);
     m_seenView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // names shorten instead
     m_seenView->setUniformItemSizes(false);
     m_seenView->setDragEnabled(true);
@@ -209,6 +209,7 @@ QWidget* MeasurePage::createPipelinePane()
     layout->addWidget(m_pipelineView, 3);
     auto* seenLabel = new QLabel(tr("Stamp &topics seen:"), pane);
     seenLabel->setBuddy(m_seenView);
+    m_seenNames->setCaption(seenLabel); // it says the prefix the names leave out
     layout->addWidget(seenLabel);
     layout->addWidget(m_seenView, 1);
     return pane;
@@ -520,7 +521,9 @@ void MeasurePage::updateCounts()
             names << tr("%1 on %2").arg(worst[i].first).arg(worst[i].second);
         if (worst.size() > shown)
             names << tr("%n more topic(s)", nullptr, int(worst.size() - shown));
-        text += tr(" · %1 malformed: %2 (last: %3)").arg(bad).arg(names.join(u", "), m_measure->lastStampError());
+        text += tr(" · %1 malformed: %2 (last: %3)")
+                    .arg(bad)
+                    .arg(names.join(u", "), m_measure->lastStampError());
     }
     if (m_measure->isPaused())
         text += tr(" · paused");

@@ -3,6 +3,7 @@
 
 #include <QWidget>
 
+class NameDelegate;
 class EcdfChart;
 class MeasureSession;
 class Pipeline;
@@ -91,6 +92,7 @@ private:
     TimelineChart* m_timeline;
     QTableView* m_pipelineView;
     QListView* m_seenView;
+    NameDelegate* m_seenNames = nullptr;
     QSpinBox* m_window;
     QCheckBox* m_log;
     QCheckBox* m_multiples;
