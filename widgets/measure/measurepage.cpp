@@ -370,6 +370,9 @@ void MeasurePage::layOut(QLayout* controls, QWidget* pipelinePane, QWidget* char
     split->addWidget(chartPane);
     split->setStretchFactor(0, 2);
     split->setStretchFactor(1, 5);
+    // The stamp topics get room for their whole names where the window has it (a wide screen),
+    // the charts and the tables the rest; scaled to the window when first shown.
+    ViewSetup::initialSizes(split, {470, 810});
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
