@@ -242,8 +242,11 @@ private slots:
             QVERIFY2(!row.contains(u"offset"_s), qPrintable(row));
         const int back = model.rowOf(u"back"_s);
         QCOMPARE(model.index(back, LatencyStatsModel::MedianColumn).data().toString(), u"45.00"_s);
-        // The YAML keeps it.
+        // The YAML keeps it; anything but a boolean is an error with its line.
         QVERIFY(Pipeline::fromYaml(engine.pipeline().toYaml())->oneClock());
+        QString why;
+        QVERIFY(!Pipeline::fromYaml("topics_in_order: [/a, /b]\none_clock: [yes]\n", &why));
+        QCOMPARE(why, u"line 2: one_clock is true or false"_s);
     }
 
     // Two clocks: the offset comes with where it can lie (each leg takes no negative time) and
