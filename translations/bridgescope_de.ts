@@ -363,6 +363,10 @@ Befehle:
         <source>%1: warning: %2</source>
         <translation>%1: Warnung: %2</translation>
     </message>
+    <message>
+        <source>&lt;stdout&gt;</source>
+        <translation>&lt;Standardausgabe&gt;</translation>
+    </message>
 </context>
 <context>
     <name>ConfigDocument</name>
@@ -949,6 +953,14 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Add a mapping.</source>
         <translation>Eine Zuordnung hinzufügen.</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is the roslaunch substitution %3, which ROS 2 parameter files do not substitute: the ROS 2 mqtt_client reads it as it stands.</source>
+        <translation>%1: &apos;%2&apos; ist die roslaunch-Substitution %3, die ROS-2-Parameterdateien nicht ersetzen: der ROS-2-mqtt_client liest sie unverändert.</translation>
+    </message>
+    <message>
+        <source>Write the value itself, or keep the config in the ROS 1 layout for roslaunch.</source>
+        <translation>Den Wert selbst schreiben oder die Konfiguration für roslaunch im ROS-1-Layout lassen.</translation>
     </message>
 </context>
 <context>
@@ -1844,6 +1856,10 @@ Rückgabewert: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsch
         <source>The ROS master that goes with --broker (default: the plan&apos;s).</source>
         <translation>Der ROS-Master zu --broker (Vorgabe: der des Plans).</translation>
     </message>
+    <message>
+        <source>    fails: %1</source>
+        <translation>    scheitert: %1</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentPage</name>
@@ -2148,10 +2164,6 @@ factors:
         <translation>%1: %2 nimmt eine Zahl von 0 bis %3</translation>
     </message>
     <message>
-        <source>%1: a bridge is reference or {command: &quot;… {config} … {name} …&quot;}</source>
-        <translation>%1: eine Bridge ist reference oder {command: &quot;… {config} … {name} …&quot;}</translation>
-    </message>
-    <message>
         <source>%1: the bridge command must use {config}, the generated config&apos;s path</source>
         <translation>%1: der Bridge-Befehl muss {config} verwenden, den Pfad der erzeugten Konfiguration</translation>
     </message>
@@ -2318,6 +2330,22 @@ factors:
     <message>
         <source>%1: a rate from %2 to 10000 Hz</source>
         <translation>%1: eine Rate von %2 bis 10000 Hz</translation>
+    </message>
+    <message>
+        <source>%1: a bridge is reference or {command: &quot;… {config} … {name} …&quot;, announce: once | every_message}</source>
+        <translation>%1: eine Bridge ist reference oder {command: &quot;… {config} … {name} …&quot;, announce: once | every_message}</translation>
+    </message>
+    <message>
+        <source>%1: a bridge&apos;s announce is once or every_message (what its command does)</source>
+        <translation>%1: announce einer Bridge ist once oder every_message (was ihr Befehl tut)</translation>
+    </message>
+    <message>
+        <source>announce %1 cannot be honoured: the bridge %2 announces %3 (its entry under bridges: says so)</source>
+        <translation>announce %1 ist nicht einzuhalten: die Bridge %2 kündigt %3 an (so sagt es ihr Eintrag unter bridges:)</translation>
+    </message>
+    <message>
+        <source>announce once cannot be honoured: what the bridge %1&apos;s command announces is not known (the real mqtt_client announces every message); say announce: every_message (or once) in its entry under bridges:</source>
+        <translation>announce once ist nicht einzuhalten: was der Befehl der Bridge %1 ankündigt, ist nicht bekannt (der echte mqtt_client kündigt jede Nachricht an); announce: every_message (oder once) in ihrem Eintrag unter bridges: angeben</translation>
     </message>
 </context>
 <context>
@@ -2580,6 +2608,22 @@ factors:
     <message>
         <source>after %1 s: %2; still trying</source>
         <translation>nach %1 s: %2; versucht es weiter</translation>
+    </message>
+    <message>
+        <source>%1 more</source>
+        <translation>%1 weitere</translation>
+    </message>
+    <message>
+        <source>no stamp ever arrived on %1 of %2 topics: %3</source>
+        <translation>auf %1 von %2 Topics kam nie ein Zeitstempel an: %3</translation>
+    </message>
+    <message>
+        <source>no stamp ever arrived on %1 of %2 topics under %3: %4</source>
+        <translation>auf %1 von %2 Topics unter %3 kam nie ein Zeitstempel an: %4</translation>
+    </message>
+    <message>
+        <source>; these are interface stamps, which the real mqtt_client does not publish (only the benchmarking suite&apos;s fork and the reference bridge do): give the plan a pipeline without the mqtt_interface_* topics</source>
+        <translation>; das sind Schnittstellen-Zeitstempel, die der echte mqtt_client nicht veröffentlicht (nur der Fork der Benchmarking-Suite und die Referenz-Bridge tun es): dem Plan eine Pipeline ohne die mqtt_interface_*-Topics geben</translation>
     </message>
 </context>
 <context>
@@ -2856,6 +2900,14 @@ factors:
         <source>clock offset (%1 ahead of %2)</source>
         <translation>Uhrenversatz (%1 vor %2)</translation>
     </message>
+    <message>
+        <source>communication, there (%1 → %2)</source>
+        <translation>Kommunikation, hin (%1 → %2)</translation>
+    </message>
+    <message>
+        <source>communication, back (%1 → %2)</source>
+        <translation>Kommunikation, zurück (%1 → %2)</translation>
+    </message>
 </context>
 <context>
     <name>LatencyStatsModel</name>
@@ -2922,6 +2974,26 @@ factors:
     <message>
         <source>Count</source>
         <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>± %1 ms</source>
+        <translation>± %1 ms</translation>
+    </message>
+    <message>
+        <source>The offset lies between %1 and %2 ms (neither leg takes negative time). </source>
+        <translation>Der Versatz liegt zwischen %1 und %2 ms (keine Strecke dauert negativ). </translation>
+    </message>
+    <message>
+        <source>Within that range, a difference between the two legs and a clock offset cannot be told apart: the estimate assumes both ways take as long. When both ends share one clock, say so (one_clock: true in the pipeline, or --one-clock) for each direction&apos;s own latency.</source>
+        <translation>Innerhalb dieses Bereichs sind ein Unterschied der beiden Strecken und ein Uhrenversatz nicht zu unterscheiden: die Schätzung nimmt an, dass beide Wege gleich lange dauern. Teilen beide Enden eine Uhr, das angeben (one_clock: true in der Pipeline oder --one-clock), um die Latenz jeder Richtung zu erhalten.</translation>
+    </message>
+    <message>
+        <source>Crosses from %1 to %2; both stamp with one clock: the value is its one-way latency.</source>
+        <translation>Geht von %1 nach %2; beide stempeln mit einer Uhr: der Wert ist seine Einweg-Latenz.</translation>
+    </message>
+    <message>
+        <source>One clock: this direction&apos;s own one-way latency, stamp to stamp.</source>
+        <translation>Eine Uhr: die Einweg-Latenz dieser Richtung, Stempel zu Stempel.</translation>
     </message>
 </context>
 <context>
@@ -4752,6 +4824,10 @@ factors:
         <source>%1: a topic starts with a byte-order mark (U+FEFF)</source>
         <translation>%1: ein Topic beginnt mit einer Bytereihenfolge-Markierung (U+FEFF)</translation>
     </message>
+    <message>
+        <source>%1: one_clock is true or false</source>
+        <translation>%1: one_clock ist true oder false</translation>
+    </message>
 </context>
 <context>
     <name>PipelineModel</name>
@@ -5511,10 +5587,6 @@ Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run f
 Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
     </message>
     <message>
-        <source>stamp of the pipeline&apos;s topics</source>
-        <translation>Zeitstempel der Pipeline-Topics</translation>
-    </message>
-    <message>
         <source>nothing was recorded (%1); --allow-empty accepts an empty run</source>
         <translation>nichts wurde aufgezeichnet (%1); --allow-empty lässt einen leeren Lauf zu</translation>
     </message>
@@ -5525,6 +5597,14 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
     <message>
         <source>no stamp of the pipeline&apos;s topics arrived</source>
         <translation>kein Zeitstempel der Pipeline-Topics kam an</translation>
+    </message>
+    <message>
+        <source>Every stamp comes from one clock (one machine): each direction&apos;s own one-way latency, no clock offset (kept with the run).</source>
+        <translation>Jeder Zeitstempel kommt von einer Uhr (ein Rechner): die Einweg-Latenz jeder Richtung, kein Uhrenversatz (wird mit dem Lauf gespeichert).</translation>
+    </message>
+    <message>
+        <source>stamp</source>
+        <translation>Zeitstempel</translation>
     </message>
 </context>
 <context>
@@ -5711,6 +5791,14 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
         <source>Watch report: %1</source>
         <translation>Überwachungsbericht: %1</translation>
     </message>
+    <message>
+        <source>communication, there</source>
+        <translation>Kommunikation, hin</translation>
+    </message>
+    <message>
+        <source>communication, back</source>
+        <translation>Kommunikation, zurück</translation>
+    </message>
 </context>
 <context>
     <name>ReportCommand</name>
@@ -5787,6 +5875,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>Runs, suite timestamp CSV files or bags; or an experiment&apos;s folder.</source>
         <translation>Läufe, Zeitstempel-CSV-Dateien der Suite oder Bags; oder der Ordner eines Experiments.</translation>
+    </message>
+    <message>
+        <source>Every stamp comes from one clock (one machine): each direction&apos;s own one-way latency, no clock offset.</source>
+        <translation>Jeder Zeitstempel kommt von einer Uhr (ein Rechner): die Einweg-Latenz jeder Richtung, kein Uhrenversatz.</translation>
     </message>
 </context>
 <context>
@@ -5986,6 +6078,18 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>%1 more events are in the JSON report.</source>
         <translation>%1 weitere Ereignisse stehen im JSON-Bericht.</translation>
+    </message>
+    <message>
+        <source>one clock: each direction&apos;s own one-way latency, no offset</source>
+        <translation>eine Uhr: die Einweg-Latenz jeder Richtung, kein Versatz</translation>
+    </message>
+    <message>
+        <source>two clocks: offset %1 ms %2. %3</source>
+        <translation>zwei Uhren: Versatz %1 ms %2. %3</translation>
+    </message>
+    <message>
+        <source>Clocks</source>
+        <translation>Uhren</translation>
     </message>
 </context>
 <context>
@@ -6871,6 +6975,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>%1 Zeilen waren nicht lesbar und wurden übersprungen:
 %2</translation>
     </message>
+    <message>
+        <source>stamp</source>
+        <translation>Zeitstempel</translation>
+    </message>
 </context>
 <context>
     <name>RunFile</name>
@@ -7054,8 +7162,8 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>der ROS-Master %1 ist nicht erreichbar (%2); versucht es weiter</translation>
     </message>
     <message>
-        <source>nothing has arrived after %1 s: no %2 yet; still waiting</source>
-        <translation>nach %1 s ist nichts angekommen: noch kein(e) %2; wartet weiter</translation>
+        <source>%1; still waiting</source>
+        <translation>%1; wartet weiter</translation>
     </message>
 </context>
 <context>
@@ -7279,6 +7387,41 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>&apos;+&apos; must be a whole level</source>
         <translation>&apos;+&apos; muss eine ganze Ebene sein</translation>
+    </message>
+</context>
+<context>
+    <name>WaitingText</name>
+    <message>
+        <source>and %1 more</source>
+        <translation>und %1 weitere</translation>
+    </message>
+    <message>
+        <source>%1 topics under %2 (%3)</source>
+        <translation>%1 Topics unter %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 topics (%2)</source>
+        <translation>%1 Topics (%2)</translation>
+    </message>
+    <message>
+        <source> from the broker %1 and the ROS master %2</source>
+        <translation> vom Broker %1 und vom ROS-Master %2</translation>
+    </message>
+    <message>
+        <source> from the broker %1</source>
+        <translation> vom Broker %1</translation>
+    </message>
+    <message>
+        <source> from the ROS master %1</source>
+        <translation> vom ROS-Master %1</translation>
+    </message>
+    <message>
+        <source> on %1</source>
+        <translation> auf %1</translation>
+    </message>
+    <message>
+        <source>nothing has arrived since %1 (%2 s): no %3 yet%4%5</source>
+        <translation>seit %1 (%2 s) ist nichts angekommen: noch kein(e) %3%4%5</translation>
     </message>
 </context>
 <context>

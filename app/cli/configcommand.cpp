@@ -208,7 +208,22 @@ public:
         QStringList notes, dropped;
         const QString text = ConfigWriter::write(cfg, layout, &notes, &dropped);
         printNotes(path, notes, dropped);
-        return writeOutput(parser.value(output), text);
+        const QString target = parser.value(output);
+        printLayoutWarnings(target.isEmpty() ? tr("<stdout>") : target, text);
+        return writeOutput(target, text);
+    }
+
+    /// What the written layout does not understand, as `config validate` would say it of the written
+    /// file: a ROS 2-only key in a ROS 1 file, a roslaunch substitution in a ROS 2 file. One line per
+    /// key on stderr, with its line in the written text and its path.
+    static void printLayoutWarnings(const QString& target, const QString& text)
+    {
+        const ConfigReadResult written = ConfigReader::read(text.toUtf8());
+        if (!written.parsed)
+            return;
+        for (const Problem& p : ConfigValidator::validate(written.config))
+            if (p.code == u"ros2-only-option"_s || p.code == u"substitution-in-ros2"_s)
+                err(p.format(target));
     }
 
     static int peer(const QStringList& args)

@@ -137,6 +137,8 @@ int dryRun(const ExperimentPlan& plan)
         total += s;
         out(u"  %1  %2  %3"_s.arg(c.id().leftJustified(40), ExperimentPlan::durationText(s).rightJustified(8),
                                   c.label()));
+        if (!c.settings.problem.isEmpty())
+            out(Experiment::tr("    fails: %1").arg(c.settings.problem));
     }
     out(Experiment::tr("about %1 in all").arg(ExperimentPlan::durationText(total)));
     return ExitOk;

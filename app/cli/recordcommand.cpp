@@ -87,7 +87,11 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
                                     u"BRIDGE.yaml"_s);
     const QCommandLineOption allowEmpty(
         u"allow-empty"_s, Record::tr("Exit 0 even when no stamp was recorded (an empty run on purpose)."));
-    parser.addOptions({pipeline, broker, master, samples, seconds, output, name, notes, config, allowEmpty});
+    const QCommandLineOption oneClock(
+        u"one-clock"_s, Record::tr("Every stamp comes from one clock (one machine): each direction's own "
+                                   "one-way latency, no clock offset (kept with the run)."));
+    parser.addOptions(
+        {pipeline, broker, master, samples, seconds, output, name, notes, config, allowEmpty, oneClock});
     QStringList args = arguments;
     args.replace(0, u"bridgescope record"_s);
     const int parsed = CliOutput::parseCommand(
@@ -123,6 +127,8 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         return ExitUsage;
     }
     request->pipeline = *pipe;
+    if (parser.isSet(oneClock))
+        request->pipeline.setOneClock(true);
     request->masterUri = parser.value(master);
     request->runPath = parser.value(output);
     if (!readRunInfo(parser, name, notes, config, request))
@@ -157,7 +163,8 @@ int runRecord(const RecordRequest& request)
                                          [](const QString& t) { return t.startsWith(u'/'); });
     SourceCheck sources(
         live, needsMaster, [&measure] { return measure.recorder()->committedStamps(); },
-        Record::tr("stamp of the pipeline's topics"));
+        Record::tr("stamp"));
+    sources.setTopics(request.pipeline.topics());
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
             const bool enough = request.samples > 0 && e.samples() >= request.samples;

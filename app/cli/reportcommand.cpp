@@ -64,10 +64,14 @@ struct ReportArguments
         u"stat"_s,
         ReportText::tr("An experiment's tables: mean (default), median, std, p99, or several (mean,p99)."),
         u"LIST"_s, u"mean"_s};
+    const QCommandLineOption oneClock {
+        u"one-clock"_s,
+        ReportText::tr("Every stamp comes from one clock (one machine): each direction's own one-way "
+                       "latency, no clock offset.")};
 
     QList<QCommandLineOption> all() const
     {
-        return {pipeline, format, window, output, join, perSample, skip, title, statistics};
+        return {pipeline, format, window, output, join, perSample, skip, title, statistics, oneClock};
     }
 };
 
@@ -111,6 +115,7 @@ int parseReport(const QStringList& arguments, ReportRequest* request)
     }
     options.join = parser.isSet(a.join);
     options.skipBadRows = parser.isSet(a.skip);
+    options.oneClock = parser.isSet(a.oneClock);
     options.title = parser.value(a.title);
     request->perSample = parser.isSet(a.perSample);
     request->output = parser.value(a.output);

@@ -5,6 +5,7 @@
 #include "base/secrets.h"
 #include "ros/rosgraphpoller.h"
 #include "session/livesession.h"
+#include "session/waitingtext.h"
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
@@ -45,7 +46,13 @@ void SourceCheck::check(qint64 elapsedMs)
         m_masterSaid = true;
     }
     if (late && !m_silenceSaid && m_arrived() == 0) {
-        err(tr("nothing has arrived after %1 s: no %2 yet; still waiting").arg(elapsedMs / 1000).arg(m_what));
+        WaitingText waiting;
+        waiting.what = m_what;
+        waiting.topics = m_topics;
+        waiting.broker = broker;
+        waiting.master = m_needsMaster ? master : QString();
+        waiting.since = m_since;
+        err(tr("%1; still waiting").arg(waiting.text(m_since.addMSecs(elapsedMs))));
         m_silenceSaid = true;
     }
 }

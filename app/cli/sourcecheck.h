@@ -3,7 +3,9 @@
 
 #include <functional>
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QString>
+#include <QStringList>
 
 class LiveSession;
 
@@ -22,6 +24,8 @@ public:
     /// `needsMaster` false: the master's state is not the command's business (an MQTT-only pipeline).
     SourceCheck(const LiveSession& live, bool needsMaster, std::function<qint64()> arrived, QString what);
 
+    /// The topics the command waits on, named when nothing arrives (the pipeline's, the links').
+    void setTopics(QStringList topics) { m_topics = std::move(topics); }
     /// Once a second or so, with the milliseconds since the start; prints what changed.
     void check(qint64 elapsedMs);
 
@@ -33,6 +37,8 @@ private:
     bool m_needsMaster;
     std::function<qint64()> m_arrived;
     QString m_what;
+    QStringList m_topics;
+    QDateTime m_since = QDateTime::currentDateTime();
     bool m_brokerSaid = false; ///< the broker was said to be unreachable (and is still)
     bool m_masterSaid = false;
     bool m_silenceSaid = false;

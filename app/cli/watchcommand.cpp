@@ -20,6 +20,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QSet>
 #include <QTimer>
 
 using namespace Qt::StringLiterals;
@@ -306,6 +307,15 @@ int runWatch(const WatchRequest& request)
     SourceCheck sources(
         live, request.ros1 && !request.configs.isEmpty(), [&live] { return qint64(live.mqtt()->received()); },
         Watch::tr("MQTT message"));
+    QStringList watchedTopics;
+    QSet<QString> seenTopics; // a list's contains() is quadratic in a config of 1,000 links
+    for (const auto& [name, config] : request.configs)
+        for (const Mapping& m : config.mappings)
+            if (!seenTopics.contains(m.mqttTopic())) {
+                seenTopics.insert(m.mqttTopic());
+                watchedTopics << m.mqttTopic();
+            }
+    sources.setTopics(watchedTopics);
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
             if (request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000))

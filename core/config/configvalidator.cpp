@@ -93,8 +93,15 @@ public:
             if (!spec)
                 continue;
             const QString text = block.values.text(path);
-            if (YamlText::isSubstitution(text))
+            if (YamlText::isSubstitution(text)) {
+                if (ros2)
+                    add(Severity::Warning, u"substitution-in-ros2"_s, m, scope, path,
+                        tr("%1: '%2' is the roslaunch substitution %3, which ROS 2 parameter files do not "
+                           "substitute: the ROS 2 mqtt_client reads it as it stands.")
+                            .arg(where, path, text),
+                        tr("Write the value itself, or keep the config in the ROS 1 layout for roslaunch."));
                 continue;
+            }
             if (spec->ros2Only && m_cfg.layout == ConfigLayout::Ros1) {
                 add(Severity::Warning, u"ros2-only-option"_s, m, scope, path,
                     tr("%1: '%2' is only understood by the ROS 2 mqtt_client (2.3 and later); the ROS 1 "

@@ -130,8 +130,8 @@ QList<OptionSpec> mappingOptions(OptionScope scope)
                 QT_TRANSLATE_NOOP("OptionSchema", "send std_msgs primitives as plain text"))
          << ros2(opt(u"json"_s, OptionKind::Bool, u"false"_s,
                      QT_TRANSLATE_NOOP("OptionSchema", "send messages as JSON (needs ros_type)")))
-         << opt(u"ros_type"_s, OptionKind::String, QString(),
-                QT_TRANSLATE_NOOP("OptionSchema", "fixed ROS message type, e.g. std_msgs/msg/Bool"));
+         << ros2(opt(u"ros_type"_s, OptionKind::String, QString(),
+                     QT_TRANSLATE_NOOP("OptionSchema", "fixed ROS message type, e.g. std_msgs/msg/Bool")));
     if (out)
         list << opt(u"inject_timestamp"_s, OptionKind::Bool, u"false"_s,
                     QT_TRANSLATE_NOOP("OptionSchema", "prepend a send time stamp for latency measurement"));

@@ -325,6 +325,8 @@ bool DemoLab::startComponents(QString* error)
     for (const QString& t : pipelineTopics())
         pipeline.setHost(
             t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
+    // Without the cloud's offset every component stamps with this machine's clock.
+    pipeline.setOneClock(o.cloudOffsetMs == 0);
     if (!AtomicFile::write(pipelinePath(), pipeline.toYaml(), &why, false))
         return fail(why);
 

@@ -102,10 +102,21 @@ std::optional<BridgeImplementation> bridgeImplementation(const QString& name, co
     if (n.IsScalar() && text(n) == u"reference"_s)
         return b;
     const YAML::Node command = n.IsMap() ? n["command"] : YAML::Node();
-    if (!command || !command.IsScalar() || command.Scalar().empty() || n.size() != 1) {
-        *error = ExperimentPlan::tr("%1: a bridge is reference or {command: \"… {config} … {name} …\"}")
+    const YAML::Node announce = n.IsMap() ? n["announce"] : YAML::Node();
+    if (!command || !command.IsScalar() || command.Scalar().empty() || n.size() != (announce ? 2u : 1u)) {
+        *error = ExperimentPlan::tr(
+                     "%1: a bridge is reference or {command: \"… {config} … {name} …\", announce: "
+                     "once | every_message}")
                      .arg(where(n.Mark()));
         return std::nullopt;
+    }
+    if (announce) {
+        b.announce = text(announce);
+        if (b.announce != u"once"_s && b.announce != u"every_message"_s) {
+            *error = ExperimentPlan::tr("%1: a bridge's announce is once or every_message (what its command does)")
+                         .arg(where(announce.Mark()));
+            return std::nullopt;
+        }
     }
     b.command = text(command);
     if (!b.command.contains(u"{config}"_s)) {
@@ -213,6 +224,33 @@ bool applyLevel(CellSettings& s, const QString& factor, const YAML::Node& level,
     }
     return fail(ExperimentPlan::tr("unknown factor '%1' (known: %2)")
                     .arg(factor, ExperimentPlan::knownFactors().join(u", "_s)));
+}
+
+/// Fits the announcement to a command's bridge: what its `bridges:` entry says it does, unless the
+/// cell asks for another level (`given`), which it cannot honour: then the cell's problem says so.
+void fitAnnouncement(CellSettings& s, bool given)
+{
+    const BridgeImplementation& b = s.bridge;
+    if (b.command.isEmpty())
+        return;
+    const QString asked = s.announceEveryMessage ? u"every_message"_s : u"once"_s;
+    if (!b.announce.isEmpty()) {
+        if (given && asked != b.announce)
+            s.problem = ExperimentPlan::tr("announce %1 cannot be honoured: the bridge %2 announces %3 (its "
+                                           "entry under bridges: says so)")
+                            .arg(asked, b.name, b.announce);
+        else
+            s.announceEveryMessage = b.announce == u"every_message"_s;
+        return;
+    }
+    if (given && !s.announceEveryMessage)
+        s.problem = ExperimentPlan::tr(
+                        "announce once cannot be honoured: what the bridge %1's command announces is not known "
+                        "(the real mqtt_client announces every message); say announce: every_message (or "
+                        "once) in its entry under bridges:")
+                        .arg(b.name);
+    else
+        s.announceEveryMessage = true; // a command's bridge is taken for mqtt_client
 }
 
 QString slug(const QString& s)
@@ -481,12 +519,18 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
             cell.index = int(plan.cells.size());
             cell.repetition = r;
             cell.settings = defaults;
+            bool announceGiven = false;
             for (const auto& [factor, level] : c) {
                 QString label;
                 if (!applyLevel(cell.settings, factor, level, named, &label, &why))
                     return fail(why);
                 cell.levels.append({factor, label});
+                announceGiven = announceGiven || factor == u"announce"_s;
             }
+            fitAnnouncement(cell.settings, announceGiven);
+            // A plan that varies announce pools a command's cell under what its bridge does.
+            if (!announceGiven && !cell.settings.bridge.announce.isEmpty() && plan.factors.contains(u"announce"_s))
+                cell.levels.append({u"announce"_s, cell.settings.bridge.announce});
             // Listed cells name only what they change: the table columns are per factor.
             std::sort(cell.levels.begin(), cell.levels.end(), [&plan](const auto& a, const auto& b) {
                 return plan.factors.indexOf(a.first) < plan.factors.indexOf(b.first);

@@ -24,6 +24,9 @@ struct BridgeImplementation
     /// Empty: the reference bridge. Otherwise a shell command with {config}, {name}, {broker_host},
     /// {broker_port} and {ros_master} replaced (each shell-quoted), run once per bridge.
     QString command;
+    /// What the command's bridge announces, as its `bridges:` entry says: "once", "every_message",
+    /// or empty when the plan does not say (a cell then cannot ask it for `announce: once`).
+    QString announce;
 };
 
 /// Everything a cell sets: the levels of every factor, defaults filled in.
@@ -39,6 +42,9 @@ struct CellSettings
     QString linkName = QStringLiteral("none");
     LinkProfile link;
     double detectionMs = 40;
+    /// Why the cell cannot run as its levels ask (a level its bridge cannot honour); empty: it can.
+    /// Such a cell fails with this reason and is pooled nowhere.
+    QString problem;
 };
 
 /// One cell of the matrix: a combination of levels, and which repetition of it.

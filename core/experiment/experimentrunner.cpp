@@ -97,6 +97,45 @@ QString keptRunProblem(const QString& path, const ExperimentCell& cell, qint64 s
         return ExperimentRunner::tr("%1 complete samples, the cell needs %2").arg(engine.samples()).arg(samples);
     return {};
 }
+
+/// Which stamp topics of the cell's pipeline never arrived, and why when it is known: the real
+/// mqtt_client (a bridge command) publishes no interface stamps. Empty when every topic sent some.
+QString silentStampsText(const MeasureSession& measure, const CellSettings& settings)
+{
+    const Pipeline& p = measure.engine().pipeline();
+    QStringList silent;
+    bool interfacesOnly = true;
+    for (int i = 0; i < p.topicCount(); ++i) {
+        if (measure.discovery().stampCount(p.topics()[i]) > 0)
+            continue;
+        silent << p.shortTopic(i);
+        interfacesOnly = interfacesOnly && p.component(i).startsWith(u"mqtt_interface"_s);
+    }
+    if (silent.isEmpty())
+        return {};
+    constexpr int kNamed = 8;
+    const qsizetype count = silent.size();
+    const QString prefix = p.topics()[0].left(p.topics()[0].size() - p.shortTopic(0).size());
+    if (count > kNamed) {
+        silent = silent.mid(0, kNamed);
+        silent << ExperimentRunner::tr("%1 more").arg(count - kNamed);
+    }
+    QString text = prefix.isEmpty()
+        ? ExperimentRunner::tr("no stamp ever arrived on %1 of %2 topics: %3")
+              .arg(count)
+              .arg(p.topicCount())
+              .arg(silent.join(u", "_s))
+        : ExperimentRunner::tr("no stamp ever arrived on %1 of %2 topics under %3: %4")
+              .arg(count)
+              .arg(p.topicCount())
+              .arg(prefix, silent.join(u", "_s));
+    if (interfacesOnly && !settings.bridge.command.isEmpty())
+        text += ExperimentRunner::tr("; these are interface stamps, which the real mqtt_client does not publish "
+                                     "(only the benchmarking suite's fork and the reference bridge do): give "
+                                     "the plan a pipeline without the mqtt_interface_* topics");
+    return text;
+}
+
 } // namespace
 
 /// What a running cell holds; destroyed in reverse: the measurement, the live session, the relays,
@@ -234,6 +273,7 @@ void ExperimentRunner::beginCell(int index)
     const ExperimentCell& cell = m_plan.cells[index];
     CellStatus& status = m_statuses[index];
     status.state = CellStatus::Running;
+    status.run = runPathOf(cell);
     status.reason.clear();
     status.samples = 0;
     status.started = QDateTime::currentDateTimeUtc();
@@ -245,6 +285,10 @@ void ExperimentRunner::beginCell(int index)
     m_cell = std::make_unique<Cell>();
     m_cell->runPath = QDir(m_dir).filePath(status.run);
     RunFile::remove(m_cell->runPath); // what a cut-off attempt left
+    if (!cell.settings.problem.isEmpty()) { // a level its bridge cannot honour: nothing to start
+        endCell(CellStatus::Failed, cell.settings.problem);
+        return;
+    }
     QString why;
     if (!startLab(cell.settings, index, &why)) {
         endCell(CellStatus::Failed, why);
@@ -288,10 +332,11 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
     }
     if (!c.lab.startComponents(why))
         return false;
-    const std::optional<Pipeline> pipeline
+    std::optional<Pipeline> pipeline
         = Pipeline::load(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath, why);
     if (!pipeline)
         return false;
+    pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
     c.live = std::make_unique<LiveSession>();
     c.live->setRosMasterUri(c.lab.rosMasterUri());
     MqttProfile profile = MqttProfile::fromUrl(c.lab.brokerUrl());
@@ -314,11 +359,13 @@ void ExperimentRunner::poll()
     if (!c.silenceSaid && c.clock.elapsed() >= kSilenceMs)
         saySilence(c);
     if (c.clock.elapsed() > qint64(m_plan.timeoutSeconds(cell) * 1000)) {
-        endCell(CellStatus::Failed,
-                tr("%1 of %2 samples after %3 s")
-                    .arg(c.recording ? engine.samples() : 0)
-                    .arg(m_plan.samples)
-                    .arg(qRound(m_plan.timeoutSeconds(cell))));
+        QString reason = tr("%1 of %2 samples after %3 s")
+                             .arg(c.recording ? engine.samples() : 0)
+                             .arg(m_plan.samples)
+                             .arg(qRound(m_plan.timeoutSeconds(cell)));
+        if (const QString silent = silentStampsText(*c.measure, cell.settings); !silent.isEmpty())
+            reason += u": "_s + silent;
+        endCell(CellStatus::Failed, reason);
         return;
     }
     if (!c.recording) {
@@ -386,6 +433,8 @@ void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
         }
     }
     status.state = state;
+    if (state == CellStatus::Failed && !c.recording)
+        status.run.clear(); // its run file was never written: point to none
     if (!reason.isEmpty())
         status.reason = reason.trimmed().left(2000);
     status.finished = QDateTime::currentDateTimeUtc();

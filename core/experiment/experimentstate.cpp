@@ -53,6 +53,8 @@ std::optional<QList<CellStatus>> ExperimentState::parse(const QByteArray& json, 
              {CellStatus::Pending, CellStatus::Running, CellStatus::Complete, CellStatus::Failed})
             if (CellStatus::stateName(st) == state)
                 s.state = st;
+        if (s.state == CellStatus::Failed && o.value(u"run"_s).toString().isEmpty())
+            s.run.clear(); // a failed cell whose run was never written
         s.reason = o.value(u"reason"_s).toString().left(kMaxReason);
         s.samples = std::max<qint64>(0, o.value(u"samples"_s).toInteger());
         s.started = QDateTime::fromString(o.value(u"started"_s).toString().left(64), Qt::ISODate);

@@ -48,7 +48,7 @@ void LatencyEngine::rebuildSeries()
     m_info.clear();
     m_series.clear();
     m_byId.clear();
-    m_total = m_roundTrip = m_oneWay = m_clockOffset = -1;
+    m_total = m_roundTrip = m_oneWay = m_clockOffset = m_there = m_back = -1;
     m_crossings.clear();
     m_sameHost.clear();
     m_offsetStages = {-1, -1};
@@ -90,16 +90,8 @@ void LatencyEngine::rebuildSeries()
         ow.label = tr("communication, one way (half the round trip)");
         ow.kind = Kind::OneWay;
         m_oneWay = addSeries(std::move(ow), 0.5e-6);
-        if (const auto pair = p.outAndReturnCrossings()) {
-            m_offsetStages = *pair;
-            SeriesInfo off;
-            off.id = SeriesId::ofKind(Kind::ClockOffset).toString();
-            off.hostFrom = p.host(pair->first);
-            off.hostTo = p.host(pair->first + 1);
-            off.label = tr("clock offset (%1 ahead of %2)").arg(off.hostTo, off.hostFrom);
-            off.kind = Kind::ClockOffset;
-            m_clockOffset = addSeries(std::move(off), 0.5e-6);
-        }
+        if (const auto pair = p.outAndReturnCrossings())
+            addLegSeries(*pair);
     }
     for (std::size_t i = 0; i < externalInfo.size(); ++i) {
         const int index = int(m_series.size());
@@ -110,6 +102,47 @@ void LatencyEngine::rebuildSeries()
     }
     ++m_revision;
     ++m_layoutRevision;
+}
+
+void LatencyEngine::addLegSeries(std::pair<int, int> legs)
+{
+    const Pipeline& p = m_pipeline;
+    m_offsetStages = legs;
+    const QString home = p.host(legs.first);
+    const QString away = p.host(legs.first + 1);
+    if (p.oneClock()) {
+        // One clock: each leg is its own one-way latency, however unequal the two are.
+        const auto leg = [this](Kind kind, const QString& label, const QString& from, const QString& to) {
+            SeriesInfo info;
+            info.id = SeriesId::ofKind(kind).toString();
+            info.label = label;
+            info.kind = kind;
+            info.hostFrom = from;
+            info.hostTo = to;
+            return addSeries(std::move(info), 1e-6);
+        };
+        m_there = leg(Kind::There, tr("communication, there (%1 → %2)").arg(home, away), home, away);
+        m_back = leg(Kind::Back, tr("communication, back (%1 → %2)").arg(away, home), away, home);
+        return;
+    }
+    SeriesInfo off;
+    off.id = SeriesId::ofKind(Kind::ClockOffset).toString();
+    off.hostFrom = home;
+    off.hostTo = away;
+    off.label = tr("clock offset (%1 ahead of %2)").arg(away, home);
+    off.kind = Kind::ClockOffset;
+    m_clockOffset = addSeries(std::move(off), 0.5e-6);
+}
+
+std::optional<std::pair<double, double>> LatencyEngine::clockOffsetBoundsMs() const
+{
+    if (m_clockOffset < 0)
+        return std::nullopt;
+    const LatencyStats out = m_series[std::size_t(m_offsetStages.first)]->stats();
+    const LatencyStats back = m_series[std::size_t(m_offsetStages.second)]->stats();
+    if (out.count == 0 || back.count == 0)
+        return std::nullopt;
+    return std::make_pair(-back.min, out.min);
 }
 
 void LatencyEngine::setWindow(qint64 samples)
@@ -201,6 +234,11 @@ void LatencyEngine::takeSample(const std::vector<qint64>& t)
         const LatencyInt128 outbound = span(t, std::size_t(out), std::size_t(out) + 1);
         const LatencyInt128 inbound = span(t, std::size_t(back), std::size_t(back) + 1);
         m_series[std::size_t(m_clockOffset)]->append(saturated(outbound - inbound)); // read at half scale
+    }
+    if (m_there >= 0) {
+        const auto [out, back] = m_offsetStages;
+        m_series[std::size_t(m_there)]->append(saturated(span(t, std::size_t(out), std::size_t(out) + 1)));
+        m_series[std::size_t(m_back)]->append(saturated(span(t, std::size_t(back), std::size_t(back) + 1)));
     }
     ++m_samples;
     ++m_revision;

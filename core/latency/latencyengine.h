@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <QCoreApplication>
 #include <QHash>
 #include <QString>
@@ -78,6 +79,15 @@ public:
     int clockOffsetSeries() const { return m_clockOffset; }
     /// The total latency per second of the samples' first stamps (the Measure page's time plot).
     const LatencyTimeline& timeline() const { return m_timeline; }
+    /// With one clock (Pipeline::oneClock()) and an outbound and a return crossing: each crossing
+    /// as its own one-way latency; -1 otherwise (then there may be a clock offset instead).
+    int thereSeries() const { return m_there; }
+    int backSeries() const { return m_back; }
+    /// Where the clock offset can lie, in ms, over the window: each sample bounds it by
+    /// [-(return leg), outbound leg] (the legs take no negative time), so the interval is
+    /// [-min return, min outbound]. An offset and a difference of the legs cannot be told apart
+    /// inside it. nullopt without a clock offset series or samples.
+    std::optional<std::pair<double, double>> clockOffsetBoundsMs() const;
 
     const SampleJoiner::Counters& counters() const { return m_joiner.counters(); }
     int pending() const { return m_joiner.pending(); }
@@ -96,6 +106,8 @@ public:
 private:
     void rebuildSeries();
     int addSeries(SeriesInfo info, double msPerUnit);
+    /// The figures of an outbound and a return crossing: there and back (one clock) or the offset.
+    void addLegSeries(std::pair<int, int> legs);
     void takeSample(const std::vector<qint64>& times);
 
     Pipeline m_pipeline;
@@ -108,6 +120,8 @@ private:
     int m_roundTrip = -1;
     int m_oneWay = -1;
     int m_clockOffset = -1;
+    int m_there = -1;
+    int m_back = -1;
     std::vector<int> m_crossings;
     std::vector<int> m_sameHost;
     std::pair<int, int> m_offsetStages {-1, -1};

@@ -52,6 +52,10 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
         QJsonObject comm;
         comm.insert(u"round_trip"_s, statsJson(engine.series(engine.roundTripSeries()).stats()));
         comm.insert(u"one_way"_s, statsJson(engine.series(engine.oneWaySeries()).stats()));
+        if (engine.thereSeries() >= 0) {
+            comm.insert(u"there"_s, statsJson(engine.series(engine.thereSeries()).stats()));
+            comm.insert(u"back"_s, statsJson(engine.series(engine.backSeries()).stats()));
+        }
         doc.insert(u"communication"_s, comm);
     } else {
         doc.insert(u"communication"_s, QJsonValue::Null);
@@ -60,5 +64,10 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
                engine.clockOffsetSeries() >= 0
                    ? QJsonValue(statsJson(engine.series(engine.clockOffsetSeries()).stats()))
                    : QJsonValue(QJsonValue::Null));
+    doc.insert(u"one_clock"_s, p.oneClock());
+    const auto bounds = engine.clockOffsetBoundsMs();
+    doc.insert(u"clock_offset_bounds_ms"_s,
+               bounds ? QJsonValue(QJsonArray {number(bounds->first), number(bounds->second)})
+                      : QJsonValue(QJsonValue::Null));
     return doc;
 }

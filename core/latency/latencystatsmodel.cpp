@@ -18,8 +18,29 @@ QString LatencyStatsModel::msText(double ms)
     return std::isnan(ms) ? u"–"_s : QString::number(ms, 'f', 2);
 }
 
+QString LatencyStatsModel::offsetUncertaintyText(const std::optional<std::pair<double, double>>& boundsMs)
+{
+    if (!boundsMs)
+        return {};
+    return tr("± %1 ms").arg(msText((boundsMs->second - boundsMs->first) / 2));
+}
+
+QString LatencyStatsModel::offsetExplanation(const std::optional<std::pair<double, double>>& boundsMs)
+{
+    QString text;
+    if (boundsMs)
+        text = tr("The offset lies between %1 and %2 ms (neither leg takes negative time). ")
+                   .arg(msText(boundsMs->first), msText(boundsMs->second));
+    return text
+        + tr("Within that range, a difference between the two legs and a clock offset cannot be told "
+             "apart: the estimate assumes both ways take as long. When both ends share one clock, say so "
+             "(one_clock: true in the pipeline, or --one-clock) for each direction's own latency.");
+}
+
 void LatencyStatsModel::refresh(const LatencyEngine& engine)
 {
+    m_oneClock = engine.pipeline().oneClock();
+    m_offsetBounds = engine.clockOffsetBoundsMs();
     const int n = engine.seriesCount();
     if (engine.layoutRevision() != m_layout) {
         m_layout = engine.layoutRevision();
@@ -122,8 +143,11 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
     };
     switch (role) {
     case Qt::DisplayRole:
-        if (index.column() == SeriesColumn)
+        if (index.column() == SeriesColumn) {
+            if (r.info.kind == LatencyEngine::Kind::ClockOffset && m_offsetBounds)
+                return QString(r.info.label + u' ' + offsetUncertaintyText(m_offsetBounds));
             return r.info.crossing ? QString(u"⇄ "_s + r.info.label) : r.info.label;
+        }
         if (index.column() == CountColumn)
             return QString::number(s.count);
         return msText(value());
@@ -142,6 +166,11 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
         return {};
     case Qt::ToolTipRole:
         if (index.column() == SeriesColumn) {
+            if (r.info.crossing && m_oneClock)
+                return QString(r.info.detail + u'\n'
+                               + tr("Crosses from %1 to %2; both stamp with one clock: the value is its "
+                                    "one-way latency.")
+                                     .arg(r.info.hostFrom, r.info.hostTo));
             if (r.info.crossing)
                 return QString(
                     r.info.detail + u'\n'
@@ -153,8 +182,11 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
             if (r.info.kind == LatencyEngine::Kind::OneWay)
                 return tr("Half the round trip: the mean of both ways, as in the paper.");
             if (r.info.kind == LatencyEngine::Kind::ClockOffset)
-                return tr(
-                    "((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.");
+                return QString(
+                    tr("((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.")
+                    + u'\n' + offsetExplanation(m_offsetBounds));
+            if (r.info.kind == LatencyEngine::Kind::There || r.info.kind == LatencyEngine::Kind::Back)
+                return tr("One clock: this direction's own one-way latency, stamp to stamp.");
             if (r.info.kind == LatencyEngine::Kind::External)
                 return tr("Measured by the bridge itself (single-stage series).");
             return r.info.detail;

@@ -58,6 +58,12 @@ public:
 
     /// "12.34" (two decimals, as the paper's table shows sub-millisecond stages); "–" for NaN.
     static QString msText(double ms);
+    /// What the clock offset row says of its uncertainty: "± 12.57 ms" (half the interval the
+    /// offset must lie in), empty without bounds.
+    static QString offsetUncertaintyText(const std::optional<std::pair<double, double>>& boundsMs);
+    /// The sentence for a clock offset row: where it lies, and that asymmetry and offset cannot be
+    /// told apart inside that range.
+    static QString offsetExplanation(const std::optional<std::pair<double, double>>& boundsMs);
 
 signals:
     void checkedChanged();
@@ -71,4 +77,6 @@ private:
     std::vector<Row> m_rows;
     QSet<QString> m_checked;
     quint64 m_layout = ~quint64(0);
+    bool m_oneClock = false;
+    std::optional<std::pair<double, double>> m_offsetBounds;
 };

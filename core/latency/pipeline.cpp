@@ -188,6 +188,12 @@ std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* erro
                             .arg(lineText(w.Mark())));
         p.m_window = window;
     }
+    if (const YAML::Node one = root["one_clock"]) {
+        bool oneClock = false;
+        if (!one.IsScalar() || !YAML::convert<bool>::decode(one, oneClock))
+            return fail(tr("%1: one_clock is true or false").arg(lineText(one.Mark())));
+        p.m_oneClock = oneClock;
+    }
     if (const YAML::Node hosts = root["hosts"]) {
         if (!hosts.IsMap())
             return fail(tr("%1: hosts must map topics to host names").arg(lineText(hosts.Mark())));
@@ -219,7 +225,10 @@ std::optional<Pipeline> Pipeline::load(const QString& path, QString* error)
 
 QByteArray Pipeline::toYaml() const
 {
-    QString out = u"metrics_window: %1\ntopics_in_order:\n"_s.arg(m_window);
+    QString out = u"metrics_window: %1\n"_s.arg(m_window);
+    if (m_oneClock)
+        out += u"one_clock: true\n"_s;
+    out += u"topics_in_order:\n"_s;
     for (const QString& t : m_topics)
         out += u"  - "_s + quoted(t) + u'\n';
     if (hasHosts()) {

@@ -42,6 +42,10 @@ public:
 
     int window() const { return m_window; }
     void setWindow(int samples) { m_window = samples; }
+    /// Whether every stamp comes from one clock (`one_clock: true`: one machine, or clocks known to
+    /// agree). Then a crossing's raw value is its one-way latency and no clock offset is estimated.
+    bool oneClock() const { return m_oneClock; }
+    void setOneClock(bool one) { m_oneClock = one; }
 
     QString host(int topicIndex) const;
     void setHost(const QString& topic, const QString& host);
@@ -68,7 +72,8 @@ public:
 
     bool operator==(const Pipeline& o) const
     {
-        return m_topics == o.m_topics && m_window == o.m_window && m_hosts == o.m_hosts;
+        return m_topics == o.m_topics && m_window == o.m_window && m_hosts == o.m_hosts
+            && m_oneClock == o.m_oneClock;
     }
 
 private:
@@ -82,4 +87,5 @@ private:
     QHash<QString, int> m_index; ///< normalized topic and "/" + normalized topic -> index
     QHash<QString, QString> m_hosts;
     int m_window = kDefaultWindow;
+    bool m_oneClock = false;
 };

@@ -11,6 +11,8 @@ constexpr std::pair<SeriesKind, QStringView> fixedIds[] = {
     {SeriesKind::RoundTrip, u"round_trip"},
     {SeriesKind::OneWay, u"one_way"},
     {SeriesKind::ClockOffset, u"clock_offset"},
+    {SeriesKind::There, u"there"},
+    {SeriesKind::Back, u"back"},
 };
 } // namespace
 

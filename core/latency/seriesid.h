@@ -11,12 +11,14 @@ enum class SeriesKind {
     RoundTrip, ///< total minus every same-host stage: the sum of the crossings
     OneWay, ///< half the round trip (the paper's "average of both ways")
     ClockOffset, ///< ((c_in - v_out) - (v_in - c_out)) / 2: the far host's clock ahead of ours
+    There, ///< one clock: the outbound crossing, its own one-way latency
+    Back, ///< one clock: the return crossing
     External, ///< a latency measured by somebody else (mqtt_client's ~/latencies, stamped MQTT)
 };
 
 /// The stable id of a latency series, the key by which charts, tables, settings and reports name
-/// it. Its text ("stage:3", "total", "round_trip", "one_way", "clock_offset", "ext:<name>") is built
-/// and read only here.
+/// it. Its text ("stage:3", "total", "round_trip", "one_way", "clock_offset", "there", "back",
+/// "ext:<name>") is built and read only here.
 struct SeriesId
 {
     SeriesKind kind = SeriesKind::Total;

@@ -21,6 +21,8 @@ std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<P
     run->name = data.info.name;
     Pipeline p = pipeline ? *pipeline : data.info.pipeline;
     p.setWindow(int(options.window));
+    if (options.oneClock)
+        p.setOneClock(true);
     run->info.pipeline = p;
     run->engine = std::make_unique<LatencyEngine>(p);
     run->engine->setTimeoutNs(data.info.timeoutNs > 0 ? data.info.timeoutNs
@@ -163,15 +165,21 @@ QList<Report::Row> Report::rows() const
     out.append({tr("total"), SeriesId::ofKind(SeriesKind::Total).toString(), false, true, false});
     bool roundTrip = false;
     bool offset = false;
+    bool legs = false;
     for (const auto& run : m_runs) {
         roundTrip = roundTrip || run->engine->roundTripSeries() >= 0;
         offset = offset || run->engine->clockOffsetSeries() >= 0;
+        legs = legs || run->engine->thereSeries() >= 0;
     }
     if (roundTrip) {
         out.append({tr("communication, one way (half the round trip)"),
                     SeriesId::ofKind(SeriesKind::OneWay).toString(), false, false, true});
         out.append({tr("communication, round trip"), SeriesId::ofKind(SeriesKind::RoundTrip).toString(),
                     false, false, true});
+    }
+    if (legs) {
+        out.append({tr("communication, there"), SeriesId::ofKind(SeriesKind::There).toString(), false, false, true});
+        out.append({tr("communication, back"), SeriesId::ofKind(SeriesKind::Back).toString(), false, false, true});
     }
     if (offset)
         out.append(

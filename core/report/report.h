@@ -38,6 +38,7 @@ public:
         bool join = false; ///< several inputs as one run instead of side by side
         bool skipBadRows = false;
         QString title;
+        bool oneClock = false; ///< every run's stamps share one clock (see Pipeline::oneClock())
     };
 
     /// Reads and computes every input. `warnings` gets skipped rows; `progress` can cancel.

@@ -3,6 +3,7 @@
 
 #include "base/nameelider.h"
 #include "latency/latencyreport.h"
+#include "latency/latencystatsmodel.h"
 #include "latency/palette.h"
 #include "record/suitecsv.h"
 #include "report/ecdfsvg.h"
@@ -222,6 +223,21 @@ Table totalsTable(const Report& report)
 }
 
 /// Title-block lines: what was measured, where, when, how much.
+/// How the run's clocks were read: one clock (each way its own latency), or an offset estimated
+/// with how far it may be off; empty without an outbound and a return crossing.
+QString clocksText(const LatencyEngine& e)
+{
+    if (e.thereSeries() >= 0)
+        return QCoreApplication::translate("ReportFormats",
+                                           "one clock: each direction's own one-way latency, no offset");
+    if (e.clockOffsetSeries() < 0)
+        return {};
+    const auto bounds = e.clockOffsetBoundsMs();
+    return QCoreApplication::translate("ReportFormats", "two clocks: offset %1 ms %2. %3")
+        .arg(LatencyStatsModel::msText(e.series(e.clockOffsetSeries()).stats().median),
+             LatencyStatsModel::offsetUncertaintyText(bounds), LatencyStatsModel::offsetExplanation(bounds));
+}
+
 QList<std::pair<QString, QString>> facts(const ReportRun& run)
 {
     const LatencyEngine& e = *run.engine;
@@ -258,6 +274,7 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
     }
     const bool measured = p.topicCount() > 0; // a run of `watch` may hold events only
     add(QT_TRANSLATE_NOOP("ReportFormats", "Pipeline"), measured ? pipeline : QString());
+    add(QT_TRANSLATE_NOOP("ReportFormats", "Clocks"), clocksText(e));
     add(QT_TRANSLATE_NOOP("ReportFormats", "Broker"), run.info.broker);
     add(QT_TRANSLATE_NOOP("ReportFormats", "ROS master"), run.info.rosMaster);
     if (measured) {

@@ -37,6 +37,8 @@ public:
     LatencyStatsModel* statsModel() const { return m_stats; }
     const PipelineDiscovery& discovery() const { return m_discovery; }
     RosStampSource* rosSource() const { return m_ros; }
+    /// Where the stamps come from (its broker and ROS master).
+    const LiveSession* live() const { return m_live; }
 
     /// The user's pipeline: from now on nothing is proposed automatically.
     void setPipeline(const Pipeline& pipeline);

@@ -74,6 +74,24 @@ private:
     QTemporaryDir m_dir;
     QStringList m_csvs;
 
+    /// Shows `w` on the Measure page with the test's master and the pipeline `yaml` (written as
+    /// `name`) loaded.
+    bool showMeasuring(MainWindow& w, const QString& name, const QByteArray& yaml)
+    {
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        w.show();
+        w.pages()->setCurrentWidget(w.measurePage());
+        QFile f(m_dir.filePath(name));
+        if (!QTest::qWaitForWindowExposed(&w) || !f.open(QIODevice::WriteOnly) || f.write(yaml) != yaml.size())
+            return false;
+        f.close();
+        QString error;
+        const bool loaded = w.measurePage()->loadPipeline(f.fileName(), &error);
+        if (!loaded)
+            qWarning("%s", qPrintable(error));
+        return loaded;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -84,23 +102,43 @@ private slots:
                << writeCsv(m_dir, u"overlay.csv"_s, SyntheticRun::paper(300, 250'000'000, 3), 2);
     }
 
+    // A recording that gets nothing says, within seconds, what it waits for: which topics, from
+    // which ROS master, since when (issue 33; the record command says so since issue 17).
+    void aSilentRecordingSaysWhatItWaitsFor()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        QVERIFY(showMeasuring(w, u"silent.yaml"_s,
+                              "topics_in_order: [/quiet/lab/a, /quiet/lab/b, /quiet/lab/c, /quiet/lab/d, "
+                              "/quiet/lab/e]\n"));
+        RunBar* bar = w.measurePage()->runBar();
+        QString error;
+        const QTime started = QTime::currentTime();
+        QVERIFY2(bar->startRecording(m_dir.filePath(u"silent.bsrun"_s), u"silent"_s, QString(), &error),
+                 qPrintable(error));
+        QVERIFY(!bar->statusLabel()->text().contains(u"nothing has arrived"_s)); // not at once
+        QTRY_VERIFY_WITH_TIMEOUT(bar->statusLabel()->text().contains(u"nothing has arrived"_s), 9000);
+        const QString said = bar->statusLabel()->toolTip();
+        QVERIFY2(said.startsWith(u"nothing has arrived since %1 ("_s.arg(started.toString(u"HH:mm:ss"_s)))
+                     || said.startsWith(u"nothing has arrived since %1 ("_s.arg(started.addSecs(1).toString(u"HH:mm:ss"_s))),
+                 qPrintable(said));
+        QVERIFY2(said.contains(u"no stamp yet on 5 topics under /quiet/lab/ (a, b, c, d, and 1 more)"_s),
+                 qPrintable(said));
+        QVERIFY2(said.contains(u"the ROS master "_s + m_servers.rosMasterUri()), qPrintable(said));
+        // Shown where the recording is, within the window's width.
+        QVERIFY(bar->statusLabel()->isVisible());
+        QVERIFY2(w.width() <= 1280, qPrintable(QString::number(w.width())));
+        QVERIFY2(bar->stopRecording(&error) || !error.isEmpty(), qPrintable(error));
+        QCOMPARE(bar->statusLabel()->toolTip(), QString());
+    }
+
     void recordsOpensAndGoesBackToLive()
     {
         MainWindow w;
-        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        QVERIFY(showMeasuring(w, u"lab.yaml"_s, "topics_in_order: [/lab/a, /lab/b, /lab/c]\nhosts: {/lab/c: cloud}\n"));
         MeasurePage* page = w.measurePage();
         RunBar* bar = page->runBar();
-        w.show();
-        w.pages()->setCurrentWidget(page);
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-
-        const QString pipe = m_dir.filePath(u"lab.yaml"_s);
-        QFile f(pipe);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("topics_in_order: [/lab/a, /lab/b, /lab/c]\nhosts: {/lab/c: cloud}\n");
-        f.close();
         QString error;
-        QVERIFY2(page->loadPipeline(pipe, &error), qPrintable(error));
 
         const QString path = m_dir.filePath(u"runs/gui.bsrun"_s); // the folder is made on the way
         QSignalSpy recorded(bar, &RunBar::runRecorded);

@@ -144,6 +144,45 @@ private slots:
         QCOMPARE(r.exit, 2);
     }
 
+    // convert says what the written layout will not understand, as validate says it of the written
+    // file: json and ros_type in a ROS 1 file (ROS 2 mqtt_client only), and roslaunch's $(arg …),
+    // which ROS 2 parameter files keep as text; one line per key with its path (issue 33, point 10).
+    void convertWarnsOfWhatTheLayoutIgnores()
+    {
+        QTemporaryDir dir;
+        const QString ros1 = dir.filePath(u"ros1.yaml"_s);
+        Run r = bridgescope({u"config"_s, u"convert"_s, Fixtures::path(u"mqtt_client/v2.5-ros2-params.json.yaml"_s),
+                             u"--to"_s, u"ros1"_s, u"-o"_s, ros1});
+        QCOMPARE(r.exit, 0);
+        const QStringList lines = r.err.split(u'\n', Qt::SkipEmptyParts);
+        const auto count = [&lines, &ros1](const QString& mapping, const QString& key) {
+            return std::count_if(lines.cbegin(), lines.cend(), [&](const QString& l) {
+                return l.startsWith(ros1 + u':') && l.contains(u": warning: "_s + mapping)
+                    && l.contains(u"'%1' is only understood by the ROS 2 mqtt_client"_s.arg(key));
+            });
+        };
+        QCOMPARE(count(u"ros2mqtt '/ping/json'"_s, u"json"_s), 1);
+        QCOMPARE(count(u"ros2mqtt '/ping/json'"_s, u"ros_type"_s), 1);
+        QCOMPARE(count(u"mqtt2ros 'pingpong/json'"_s, u"json"_s), 1);
+        QCOMPARE(count(u"mqtt2ros 'pingpong/json'"_s, u"ros_type"_s), 1);
+        // What convert warns of is what validate says of the file written.
+        const Run validated = bridgescope({u"config"_s, u"validate"_s, ros1});
+        for (const QString& line : lines)
+            if (line.contains(u"only understood by the ROS 2"_s))
+                QVERIFY2(validated.out.contains(line), qPrintable(line + u"\n"_s + validated.out));
+
+        r = bridgescope({u"config"_s, u"convert"_s, Fixtures::path(u"benchmarking_suite/mqtt_client_cloud.yaml"_s),
+                         u"--to"_s, u"ros2"_s});
+        QCOMPARE(r.exit, 0);
+        const QStringList ros2 = r.err.split(u'\n', Qt::SkipEmptyParts);
+        const auto substitutions = std::count_if(ros2.cbegin(), ros2.cend(), [](const QString& l) {
+            return l.startsWith(u"<stdout>:"_s)
+                && l.contains(u"'advanced.mqtt.qos' is the roslaunch substitution $(arg qos), which ROS 2 "
+                              "parameter files do not substitute"_s);
+        });
+        QCOMPARE(substitutions, 3); // every mapping's qos: $(arg qos)
+    }
+
     void discoverPrintsBothSidesAsJson()
     {
         TestServers servers;
@@ -305,6 +344,11 @@ private slots:
         QVERIFY2(r.err.contains(u"the broker %1 cannot be reached"_s.arg(broker)), qPrintable(r.err));
         QVERIFY2(r.err.contains(u"the ROS master http://127.0.0.1"_s), qPrintable(r.err));
         QVERIFY2(r.err.contains(u"nothing was watched"_s), qPrintable(r.err));
+        // Issue 33: what it waits for, from where, since when.
+        QVERIFY2(r.err.contains(u"nothing has arrived since "_s), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u" s): no MQTT message yet on lab/x from the broker %1 and the ROS master "
+                                "http://127.0.0.1:"_s.arg(broker)),
+                 qPrintable(r.err));
         // Port 0 for the metrics: the port the system chose is the one said (issue 33).
         const Run allowed = bridgescope(QStringList(args.mid(0, 6)) << u"--seconds"_s << u"1"_s
                                                                     << u"--allow-empty"_s << u"--metrics"_s

@@ -333,6 +333,42 @@ private slots:
         QCOMPARE(pdfFile.read(5), QByteArray("%PDF-"));
     }
 
+    // The real mqtt_client publishes no interface stamps (only the suite's fork does): with the
+    // paper's pipeline its cell never completes a sample. The failure names the stamp topics that
+    // never arrived and why, and the cell's `run` is empty: no run file was written (issue 33, 9).
+    // The reference bridge stands in for mqtt_client, its config without timestamp_topic_prefix.
+    void aCellWhoseStampsNeverComeNamesThem()
+    {
+        const QByteArray yaml = "samples: 5\nwarmup: 2\ntimeout_s: 10\n"
+                                "bridges:\n"
+                                "  plain: {command: \"sed /timestamp_topic_prefix/d {config} > {config}.plain && "
+                                "exec '"
+            + QByteArray(BRIDGESCOPE_BINARY)
+            + "' bridge {config}.plain --name {name} --ros-master {ros_master}\"}\n"
+              "cells:\n  - {bridge: plain}\n";
+        const QString plan = writePlan(m_dir, u"plain.yaml"_s, yaml);
+        const QString out = m_dir.filePath(u"plain"_s);
+        QProcess* p = experiment({plan, u"-o"_s, out});
+        QVERIFY(p->waitForFinished(60000));
+        QCOMPARE(p->exitCode(), 1);
+        QJsonObject finished;
+        for (const QJsonObject& o : jsonLines(p->readAllStandardOutput()))
+            if (o.value(u"event"_s).toString() == u"finished"_s)
+                finished = o;
+        QCOMPARE(finished.value(u"state"_s).toString(), u"failed"_s);
+        const QString reason = finished.value(u"reason"_s).toString();
+        QVERIFY2(reason.startsWith(u"0 of 5 samples after 10 s: no stamp ever arrived on 8 of 12 topics under "
+                                   "/benchmarking_suite/timestamps/: mqtt_interface_vehicle/pointcloud/in, "_s),
+                 qPrintable(reason));
+        QVERIFY2(reason.contains(u"mqtt_interface_vehicle/object_list/out; these are interface stamps, which "
+                                 "the real mqtt_client does not publish"_s),
+                 qPrintable(reason));
+        QVERIFY2(!reason.contains(u"timestamps/pointcloud,"_s), qPrintable(reason)); // that one came
+        QVERIFY(finished.contains(u"run"_s));
+        QCOMPARE(finished.value(u"run"_s).toString(), QString());
+        QVERIFY(QDir(out + u"/runs"_s).isEmpty());
+    }
+
     // The throughput step: rates go up until one is not sustained; the report has the highest.
     void theThroughputStepFindsTheHighestRate()
     {

@@ -131,7 +131,14 @@ private slots:
             << QStringList();
         QTest::newRow("json in the ROS 1 layout")
             << u"bridge:\n  mqtt2ros:\n    - {mqtt_topic: a, ros_topic: /a, json: true, ros_type: std_msgs/Bool}\n"_s
-            << QStringList {u"warning:ros2-only-option@3"_s};
+            << QStringList {u"warning:ros2-only-option@3"_s, u"warning:ros2-only-option@3"_s}; // json, ros_type
+        QTest::newRow("roslaunch substitution in the ROS 2 layout")
+            << u"/**/*:\n  ros__parameters:\n    bridge:\n      ros2mqtt:\n        ros_topics: [/a]\n"
+               "        /a: {mqtt_topic: a, advanced: {mqtt: {qos: $(arg qos)}}}\n"_s
+            << QStringList {u"warning:substitution-in-ros2@6"_s};
+        QTest::newRow("roslaunch substitution in the ROS 1 layout is roslaunch's")
+            << u"bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: a, advanced: {mqtt: {qos: $(arg qos)}}}\n"_s
+            << QStringList();
         QTest::newRow("loop") << u"bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: x}\n  mqtt2ros:\n"
                                  "    - {mqtt_topic: x, ros_topic: /a}\n"_s
                               << QStringList {u"error:loop@5"_s};

@@ -12,6 +12,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -233,6 +234,75 @@ private slots:
     // Issue 31: --resume counted a garbage run file, or a symlink to /etc/passwd, as a complete
     // cell. A complete cell's run is read back (a regular file, a run of that cell with the plan's
     // samples); otherwise the cell is done again and the runner says why.
+    // mqtt_client announces the type before every message: a bridge command cannot honour
+    // `announce: once` unless its entry says so, and such a cell fails instead of being pooled as
+    // "once" (issue 33, point 8). A plan that says what the command does pools it there.
+    void announcementABridgeCannotHonour()
+    {
+        QString why;
+        const auto crossed = plan("bridges:\n  mc: {command: \"run {config}\"}\nfactors:\n"
+                                  "  bridge: [reference, mc]\n  announce: [once, every_message]\n",
+                                  &why);
+        QVERIFY2(crossed && crossed->cells.size() == 4, qPrintable(why));
+        QCOMPARE(crossed->cells[2].label(), u"bridge mc, announce once"_s);
+        const QString problem = crossed->cells[2].settings.problem;
+        QVERIFY2(problem.contains(u"announce once cannot be honoured"_s) && problem.contains(u"mc"_s)
+                     && problem.contains(u"announce: every_message"_s),
+                 qPrintable(problem));
+        for (int i : {0, 1, 3})
+            QVERIFY2(crossed->cells[i].settings.problem.isEmpty(), qPrintable(crossed->cells[i].settings.problem));
+        QVERIFY(crossed->cells[3].settings.announceEveryMessage);
+
+        // Said in bridges: the cell that names no announce level is pooled under every_message.
+        const auto said = plan("bridges:\n  mc: {command: \"run {config}\", announce: every_message}\n"
+                               "cells:\n  - {bridge: reference, announce: once}\n"
+                               "  - {bridge: reference, announce: every_message}\n  - {bridge: mc}\n",
+                               &why);
+        QVERIFY2(said, qPrintable(why));
+        QVERIFY(said->cells[2].settings.announceEveryMessage);
+        QVERIFY(said->cells[2].settings.problem.isEmpty());
+        QCOMPARE(said->cells[2].levels,
+                 (QList<std::pair<QString, QString>> {{u"bridge"_s, u"mc"_s}, {u"announce"_s, u"every_message"_s}}));
+        // ... and a level against what it says is that cell's error.
+        const auto against = plan("bridges:\n  mc: {command: \"run {config}\", announce: every_message}\n"
+                                  "cells:\n  - {bridge: mc, announce: once}\n",
+                                  &why);
+        QVERIFY2(against, qPrintable(why));
+        QVERIFY2(against->cells[0].settings.problem.contains(u"the bridge mc announces every_message"_s),
+                 qPrintable(against->cells[0].settings.problem));
+        QVERIFY(!plan("bridges:\n  mc: {command: \"run {config}\", announce: sometimes}\n", &why));
+        QVERIFY2(why.startsWith(u"line 2"_s) && why.contains(u"once or every_message"_s), qPrintable(why));
+    }
+
+    // A cell that cannot run as asked fails at once with the reason, starts nothing, and its
+    // `run` points to no file (issue 33, point 9: it was never written).
+    void aCellItsBridgeCannotHonourFailsWithoutARun()
+    {
+        QTemporaryDir dir;
+        QString why;
+        const QByteArray yaml = "samples: 5\nbridges:\n  mc: {command: \"false {config}\"}\n"
+                                "cells:\n  - {bridge: mc, announce: once}\n";
+        const auto p = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
+        QVERIFY2(p, qPrintable(why));
+        ExperimentRunner runner(*p, yaml, dir.path(), {});
+        QVERIFY2(runner.prepare(&why), qPrintable(why));
+        QSignalSpy finished(&runner, &ExperimentRunner::finished);
+        runner.start();
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(finished.first().first().toBool(), false);
+        const CellStatus& s = runner.statuses().first();
+        QCOMPARE(s.state, CellStatus::Failed);
+        QVERIFY2(s.reason.contains(u"announce once cannot be honoured"_s), qPrintable(s.reason));
+        QVERIFY2(s.run.isEmpty(), qPrintable(s.run));
+        QFile state(dir.filePath(ExperimentRunner::stateFileName()));
+        QVERIFY(state.open(QIODevice::ReadOnly));
+        const QJsonObject cell = QJsonDocument::fromJson(state.readAll())[u"cells"_s][0].toObject();
+        QCOMPARE(cell.value(u"run"_s).toString(), QString());
+        QCOMPARE(cell.value(u"state"_s).toString(), u"failed"_s);
+        const auto read = ExperimentRunner::readState(dir.path(), *p, &why);
+        QVERIFY2(read && read->first().run.isEmpty(), qPrintable(why));
+    }
+
     void resumeRedoesCompleteCellsWhoseRunCannotBeKept()
     {
         QTemporaryDir dir;

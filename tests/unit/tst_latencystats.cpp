@@ -3,11 +3,13 @@
 // same samples) and figures derived by hand below.
 #include "latency/latencyengine.h"
 #include "latency/latencyreport.h"
+#include "latency/latencystatsmodel.h"
 #include "latency/sortedblocks.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
 #include "syntheticrun.h"
 
+#include <array>
 #include <cmath>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -57,6 +59,44 @@ LatencyEngine engineFor(const SyntheticRun& run, bool withHosts, qint64 window)
     for (const auto& s : run.samples)
         engine.addSample(s);
     return engine;
+}
+
+/// The lab of derivedCommunicationTwoHosts from pipeline YAML: six stamps, vehicle and cloud,
+/// `oneClock` as the YAML says. Per sample (d_out, d_back, processing) in ms; the cloud's clock runs
+/// `offsetMs` ahead.
+LatencyEngine legsLab(bool oneClock, qint64 offsetMs, const QList<std::array<qint64, 3>>& runs)
+{
+    QByteArray yaml = "metrics_window: 0\ntopics_in_order: [/v/send, /v/bridge_out, /c/bridge_in, "
+                      "/c/bridge_out, /v/bridge_in, /v/done]\nhosts: {/v/send: vehicle, /v/bridge_out: "
+                      "vehicle, /c/bridge_in: cloud, /c/bridge_out: cloud, /v/bridge_in: vehicle, "
+                      "/v/done: vehicle}\n";
+    if (oneClock)
+        yaml += "one_clock: true\n";
+    QString why;
+    const std::optional<Pipeline> p = Pipeline::fromYaml(yaml, &why);
+    if (!p)
+        qFatal("%s", qPrintable(why));
+    LatencyEngine engine(*p);
+    const qint64 ms = 1'000'000;
+    qint64 base = 1'700'000'000LL * 1'000'000'000LL;
+    for (const auto& r : runs) {
+        const qint64 v1 = base + 2 * ms;
+        const qint64 cIn = v1 + r[0] * ms + offsetMs * ms;
+        const qint64 cOut = cIn + r[2] * ms;
+        const qint64 vIn = cOut - offsetMs * ms + r[1] * ms;
+        engine.addSample({base, v1, cIn, cOut, vIn, vIn + ms});
+        base += 100 * ms;
+    }
+    return engine;
+}
+
+/// The displayed text of every row's series column.
+QStringList seriesTexts(const LatencyStatsModel& model)
+{
+    QStringList out;
+    for (int r = 0; r < model.rowCount(); ++r)
+        out << model.index(r, LatencyStatsModel::SeriesColumn).data().toString();
+    return out;
 }
 } // namespace
 
@@ -202,6 +242,68 @@ private slots:
         QCOMPARE(engine.series(1).stats().mean, (10 + 20 + 35) / 3.0 + 250.0);
         QCOMPARE(engine.series(engine.totalSeries()).stats().mean, 2 + (5 + 7 + 9) / 3.0 + 40 + 1);
         QCOMPARE(engine.info(engine.clockOffsetSeries()).hostTo, u"cloud"_s);
+    }
+
+    // One clock (one machine): the real bridge's asymmetric legs (5 ms out, 45 ms back while its
+    // announcement waits on a delayed ACK) are each direction's own latency, not a clock offset of
+    // -20 ms (issue 33, point 7).
+    void oneClockReportsEachDirection()
+    {
+        const LatencyEngine engine = legsLab(true, 0, {{5, 45, 3}, {5, 45, 4}, {7, 43, 5}});
+        QVERIFY(engine.pipeline().oneClock());
+        QCOMPARE(engine.clockOffsetSeries(), -1);
+        QVERIFY(engine.thereSeries() >= 0 && engine.backSeries() >= 0);
+        QCOMPARE(engine.series(engine.thereSeries()).stats().mean, 17.0 / 3);
+        QCOMPARE(engine.series(engine.backSeries()).stats().mean, 133.0 / 3);
+        QCOMPARE(engine.series(engine.roundTripSeries()).stats().mean, 50.0);
+        const QJsonObject doc = LatencyReport::json(engine);
+        QVERIFY(doc.value(u"clock_offset"_s).isNull());
+        QVERIFY(doc.value(u"clock_offset_bounds_ms"_s).isNull());
+        QCOMPARE(doc.value(u"one_clock"_s).toBool(), true);
+        const QJsonObject comm = doc.value(u"communication"_s).toObject();
+        QCOMPARE(comm.value(u"there"_s)[u"median_ms"_s].toDouble(), 5.0);
+        QCOMPARE(comm.value(u"back"_s)[u"median_ms"_s].toDouble(), 45.0);
+        // The Measure page's derived rows: there and back, no offset.
+        LatencyStatsModel model;
+        model.refresh(engine);
+        const QStringList rows = seriesTexts(model);
+        QVERIFY2(rows.contains(u"communication, there (vehicle → cloud)"_s), qPrintable(rows.join(u'|')));
+        QVERIFY2(rows.contains(u"communication, back (cloud → vehicle)"_s), qPrintable(rows.join(u'|')));
+        for (const QString& row : rows)
+            QVERIFY2(!row.contains(u"offset"_s), qPrintable(row));
+        const int back = model.rowOf(u"back"_s);
+        QCOMPARE(model.index(back, LatencyStatsModel::MedianColumn).data().toString(), u"45.00"_s);
+        // The YAML keeps it; anything but a boolean is an error with its line.
+        QVERIFY(Pipeline::fromYaml(engine.pipeline().toYaml())->oneClock());
+        QString why;
+        QVERIFY(!Pipeline::fromYaml("topics_in_order: [/a, /b]\none_clock: [yes]\n", &why));
+        QCOMPARE(why, u"line 2: one_clock is true or false"_s);
+    }
+
+    // Two clocks: the offset comes with where it can lie (each leg takes no negative time) and
+    // the sentence that asymmetry and offset cannot be told apart.
+    void twoClocksOffsetHasUncertainty()
+    {
+        // Legs out 10, 20, 35 and back 20, 20, 15 ms; the cloud 250 ms ahead. Raw out = 260, 270, 285,
+        // raw back = -230, -230, -235: the offset lies in [235, 260], half width 12.5 ms.
+        const LatencyEngine engine = legsLab(false, 250, {{10, 20, 5}, {20, 20, 7}, {35, 15, 9}});
+        QCOMPARE(engine.thereSeries(), -1);
+        QVERIFY(engine.clockOffsetSeries() >= 0);
+        const auto bounds = engine.clockOffsetBoundsMs();
+        QVERIFY(bounds);
+        QCOMPARE(bounds->first, 235.0);
+        QCOMPARE(bounds->second, 260.0);
+        const QJsonObject doc = LatencyReport::json(engine);
+        QCOMPARE(doc.value(u"clock_offset_bounds_ms"_s).toArray(), (QJsonArray {235.0, 260.0}));
+        QCOMPARE(doc.value(u"one_clock"_s).toBool(), false);
+        LatencyStatsModel model;
+        model.refresh(engine);
+        const int offset = model.rowOf(u"clock_offset"_s);
+        QCOMPARE(model.index(offset, LatencyStatsModel::SeriesColumn).data().toString(),
+                 u"clock offset (cloud ahead of vehicle) ± 12.50 ms"_s);
+        const QString tip = model.index(offset, LatencyStatsModel::SeriesColumn).data(Qt::ToolTipRole).toString();
+        QVERIFY2(tip.contains(u"between 235.00 and 260.00 ms"_s), qPrintable(tip));
+        QVERIFY2(tip.contains(u"cannot be told apart"_s), qPrintable(tip));
     }
 
     // Hand derivation for 1..10 ms: mean 5.5; variance sum((k - 5.5)^2) / 9 = 82.5 / 9; the

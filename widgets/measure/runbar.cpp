@@ -3,7 +3,11 @@
 
 #include "record/runrecorder.h"
 #include "report/runloader.h"
+#include "base/secrets.h"
+#include "mqtt/mqttconnection.h"
+#include "session/livesession.h"
 #include "session/measuresession.h"
+#include "session/waitingtext.h"
 #include "widgets/measure/recorddialog.h"
 
 #include <QApplication>
@@ -15,6 +19,7 @@
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QTimer>
 
 using namespace Qt::StringLiterals;
 
@@ -26,12 +31,14 @@ RunBar::RunBar(MeasureSession* measure, QWidget* parent)
     , m_save(new QPushButton(tr("Save Ru&n As…"), this))
     , m_live(new QPushButton(tr("&Back to Live"), this))
     , m_status(new QLabel(this))
+    , m_waitTimer(new QTimer(this))
 {
     m_record->setToolTip(
         tr("Record every stamp from now on into a run file, to open, compare and report later"));
     m_open->setToolTip(tr("Show a recorded run as it was, or import the suite's timestamp CSV or a ROS bag"));
     m_save->setToolTip(tr("Save the run on screen (an imported CSV or bag) as a Bridgescope run"));
     m_status->setObjectName(u"runStatus"_s);
+    m_status->setWordWrap(true); // what a silent recording waits for is long: it wraps, not widens
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_record);
@@ -46,6 +53,8 @@ RunBar::RunBar(MeasureSession* measure, QWidget* parent)
     connect(measure, &MeasureSession::recordingChanged, this, &RunBar::updateState);
     connect(measure, &MeasureSession::showingRunChanged, this, &RunBar::updateState);
     connect(measure->recorder(), &RunRecorder::committed, this, &RunBar::updateState);
+    m_waitTimer->setInterval(1000);
+    connect(m_waitTimer, &QTimer::timeout, this, &RunBar::updateState);
     connect(measure, &MeasureSession::recordingFailed, this, [this](const QString& why) {
         QMessageBox::warning(
             this, tr("Recording Stopped"),
@@ -67,6 +76,7 @@ bool RunBar::startRecording(const QString& path, const QString& name, const QStr
     if (!m_measure->startRecording(path, info, error))
         return false;
     m_recordingName = info.name;
+    m_recordingSince = QDateTime::currentDateTime();
     updateState();
     return true;
 }
@@ -183,6 +193,22 @@ void RunBar::chooseSaveRun()
         QMessageBox::warning(this, tr("Save Run As"), error);
 }
 
+QString RunBar::waitingText() const
+{
+    const QDateTime now = QDateTime::currentDateTime();
+    if (m_measure->recorder()->committedStamps() > 0 || !m_recordingSince.isValid()
+        || m_recordingSince.msecsTo(now) < WaitingText::kGraceMs)
+        return {};
+    const LiveSession* live = m_measure->live();
+    WaitingText waiting;
+    waiting.what = tr("stamp");
+    waiting.topics = m_measure->pipeline().topics();
+    waiting.broker = Secrets::urlWithoutCredentials(live->mqtt()->profile().url);
+    waiting.master = Secrets::urlWithoutCredentials(live->rosMasterUri());
+    waiting.since = m_recordingSince;
+    return waiting.text(now);
+}
+
 void RunBar::updateState()
 {
     const bool recording = m_measure->isRecording();
@@ -192,11 +218,19 @@ void RunBar::updateState()
     m_open->setEnabled(!recording);
     m_save->setVisible(showing);
     m_live->setVisible(showing);
+    if (recording != m_waitTimer->isActive())
+        recording ? m_waitTimer->start() : m_waitTimer->stop();
+    m_status->setToolTip(QString());
     if (recording) {
-        m_status->setText(tr("<b>Recording</b> %1: %2 stamps committed to %3")
-                              .arg(m_recordingName.toHtmlEscaped())
-                              .arg(m_measure->recorder()->committedStamps())
-                              .arg(QFileInfo(m_measure->recorder()->path()).fileName().toHtmlEscaped()));
+        QString text = tr("<b>Recording</b> %1: %2 stamps committed to %3")
+                           .arg(m_recordingName.toHtmlEscaped())
+                           .arg(m_measure->recorder()->committedStamps())
+                           .arg(QFileInfo(m_measure->recorder()->path()).fileName().toHtmlEscaped());
+        const QString waiting = waitingText();
+        if (!waiting.isEmpty())
+            text += u"<br>"_s + waiting.toHtmlEscaped();
+        m_status->setText(text);
+        m_status->setToolTip(waiting);
     } else if (showing) {
         const RunInfo& info = m_measure->shownRun();
         const QString when = info.startedNs > 0

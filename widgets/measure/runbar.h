@@ -5,11 +5,13 @@
 
 #include <functional>
 #include <optional>
+#include <QDateTime>
 #include <QWidget>
 
 class MeasureSession;
 class QLabel;
 class QPushButton;
+class QTimer;
 
 /// The Measure page's run controls: record the live measurement into a run file, open a run (or
 /// import a suite CSV or a bag) to see it as it was, save an import as a run, and go back to live.
@@ -48,6 +50,8 @@ private:
     void chooseRun();
     void chooseSaveRun();
     void updateState();
+    /// While recording with nothing committed for WaitingText::kGraceMs: what it waits for.
+    QString waitingText() const;
 
     MeasureSession* m_measure;
     ConfigProvider m_config;
@@ -57,6 +61,8 @@ private:
     QPushButton* m_live;
     QLabel* m_status;
     QString m_recordingName;
+    QDateTime m_recordingSince; ///< when the recording started, for what it waits for
+    QTimer* m_waitTimer; ///< while recording: says when nothing has arrived
     QString m_shownPath;
     std::optional<RunData> m_shown;
 };
