@@ -549,10 +549,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <source>The bridge config has unsaved changes. Save them?</source>
-        <translation>Die Bridge-Konfiguration hat ungespeicherte Änderungen. Speichern?</translation>
-    </message>
-    <message>
         <source>Open Bridge Config</source>
         <translation>Bridge-Konfiguration öffnen</translation>
     </message>
@@ -579,6 +575,14 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Open the peer config %1 now?</source>
         <translation>Die Gegenstellen-Konfiguration %1 jetzt öffnen?</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
 </context>
 <context>
@@ -718,6 +722,52 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>The rest of the file from this place on</source>
         <translation>Der Rest der Datei ab dieser Stelle</translation>
+    </message>
+</context>
+<context>
+    <name>ConfigTabs</name>
+    <message>
+        <source>A config not saved yet</source>
+        <translation>Eine noch nicht gespeicherte Konfiguration</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 carry data</source>
+        <translation>%1 übertragen Daten</translation>
+    </message>
+    <message>
+        <source>%1 without a bridge</source>
+        <translation>%1 ohne Brücke</translation>
+    </message>
+    <message>
+        <source>%1 of another type</source>
+        <translation>%1 eines anderen Typs</translation>
+    </message>
+    <message>
+        <source>%1 whose QoS cannot match</source>
+        <translation>%1, deren QoS nicht passen kann</translation>
+    </message>
+    <message>
+        <source>%1 missing</source>
+        <translation>%1 fehlen</translation>
+    </message>
+    <message>
+        <source>%1 idle</source>
+        <translation>%1 ruhen</translation>
+    </message>
+    <message>
+        <source>%1 not seen yet</source>
+        <translation>%1 noch nicht gesehen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n mapping(s): %1</source>
+        <translation>
+            <numerusform>%n Zuordnung: %1</numerusform>
+            <numerusform>%n Zuordnungen: %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2881,6 +2931,14 @@ factors:
         <source>list ROS, ROS 2 and MQTT topics</source>
         <translation>ROS-, ROS-2- und MQTT-Topics auflisten</translation>
     </message>
+    <message>
+        <source>demo lab: broker %1, ROS master %2</source>
+        <translation>Demo-Labor: Broker %1, ROS-Master %2</translation>
+    </message>
+    <message>
+        <source>Point bridgescope discover, watch or mosquitto_sub at these; configs in %1</source>
+        <translation>Richten Sie bridgescope discover, watch oder mosquitto_sub darauf; Konfigurationen in %1</translation>
+    </message>
 </context>
 <context>
     <name>LatencyEngine</name>
@@ -3270,10 +3328,6 @@ factors:
         </translation>
     </message>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt; → &lt;b&gt;%2&lt;/b&gt; (%3)&lt;br&gt;%4 messages at the source, %5 at the destination, %6 lost, %7 Header.seq gaps, %8 duplicates, %9 reordered, %10 stalls</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt; → &lt;b&gt;%2&lt;/b&gt; (%3)&lt;br&gt;%4 Nachrichten an der Quelle, %5 am Ziel, %6 verloren, %7 Lücken in Header.seq, %8 doppelt, %9 vertauscht, %10 Stillstände</translation>
-    </message>
-    <message>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
@@ -3296,6 +3350,14 @@ factors:
     <message>
         <source>Also watch the links mqtt_client announces on the broker that no open config maps (their MQTT end)</source>
         <translation>Auch die Verbindungen beobachten, die mqtt_client am Broker ankündigt und keine geöffnete Konfiguration abbildet (ihr MQTT-Ende)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; → &lt;b&gt;%2&lt;/b&gt; (%3)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; → &lt;b&gt;%2&lt;/b&gt; (%3)</translation>
+    </message>
+    <message>
+        <source>%1 messages at the source, %2 at the destination, %3 lost, %4 Header.seq gaps, %5 duplicates, %6 reordered, %7 stalls</source>
+        <translation>%1 Nachrichten an der Quelle, %2 am Ziel, %3 verloren, %4 Header.seq-Lücken, %5 Duplikate, %6 umgeordnet, %7 Stillstände</translation>
     </message>
 </context>
 <context>
@@ -3548,6 +3610,10 @@ factors:
     <message>
         <source>broker %1 unreachable</source>
         <translation>Broker %1 nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>&amp;Close Config</source>
+        <translation>Konfiguration &amp;schließen</translation>
     </message>
 </context>
 <context>
@@ -7462,10 +7528,6 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source>mqtt_client configs whose mappings are watched.</source>
         <translation>mqtt_client-Konfigurationen, deren Mappings überwacht werden.</translation>
     </message>
-    <message>
-        <source>metrics at http://%1/metrics (port %2)</source>
-        <translation>Metriken unter http://%1/metrics (Port %2)</translation>
-    </message>
     <message numerus="yes">
         <source>watching %n link(s) of %1; Ctrl+C stops</source>
         <translation>
@@ -7556,6 +7618,10 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     <message>
         <source>; %1 announced links not watched (cap %2)</source>
         <translation>; %1 angekündigte Links nicht beobachtet (Obergrenze %2)</translation>
+    </message>
+    <message>
+        <source>metrics at http://%1:%2/metrics</source>
+        <translation>Metriken unter http://%1:%2/metrics</translation>
     </message>
 </context>
 <context>
