@@ -325,6 +325,13 @@ void MeasurePage::setUpSummaryView(QAbstractItemModel* styled)
                 if (m_statsView->horizontalHeader()->sectionSize(column) != width)
                     m_statsView->horizontalHeader()->resizeSection(column, width);
             });
+    // Its own figures are measured too: the total is the widest of them (a 111 ms max was cut to
+    // "1…1" when the widths came from the stage rows alone); the wider of the two wins both.
+    QList<int> figures;
+    for (int c = 0; c < LatencyStatsModel::ColumnCount; ++c)
+        if (c != LatencyStatsModel::SeriesColumn)
+            figures << c;
+    (new ColumnFitter(m_summaryView))->figures(figures);
     QAbstractItemModel* stats = m_statsView->model();
     connect(stats, &QAbstractItemModel::modelReset, this, &MeasurePage::updatePinnedRows);
     connect(stats, &QAbstractItemModel::layoutChanged, this, &MeasurePage::updatePinnedRows);
