@@ -6026,10 +6026,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>der ganze Lauf</translation>
     </message>
     <message>
-        <source>Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows in italics cross between hosts: their raw values include the clock offset. Communication: total minus every stage on one host, one way being half of it.</source>
-        <translation>Statistik in ms; Std.-Abw. ist die korrigierte Standardabweichung (ddof = 1). Kursive Zeilen gehen von einem Rechner zu einem anderen: Ihre Rohwerte enthalten den Uhrenversatz. Kommunikation: gesamt minus jede Stufe, die auf einem Rechner bleibt; eine Richtung ist die Hälfte davon.</translation>
-    </message>
-    <message>
         <source>total [ms]</source>
         <translation>gesamt [ms]</translation>
     </message>
@@ -6150,12 +6146,20 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>eine Uhr: die Einweg-Latenz jeder Richtung, kein Versatz</translation>
     </message>
     <message>
-        <source>two clocks: offset %1 ms %2. %3</source>
-        <translation>zwei Uhren: Versatz %1 ms %2. %3</translation>
-    </message>
-    <message>
         <source>Clocks</source>
         <translation>Uhren</translation>
+    </message>
+    <message>
+        <source>two clocks: offset %1 ms</source>
+        <translation>zwei Uhren: Versatz %1 ms</translation>
+    </message>
+    <message>
+        <source>two clocks: offset %1 ms %2, between %3 and %4 ms</source>
+        <translation>zwei Uhren: Versatz %1 ms %2, zwischen %3 und %4 ms</translation>
+    </message>
+    <message>
+        <source>Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows in italics cross between hosts: their raw values include the clock offset. Communication: total minus every stage on one host, one way being half of it. With two clocks, a clock offset and a difference between the two legs cannot be told apart within the offset&apos;s range (neither leg takes negative time); with one clock (one_clock: true in the pipeline, or --one-clock) each direction&apos;s own one-way latency is given instead.</source>
+        <translation>Statistik in ms; Std.-Abw. ist die korrigierte Standardabweichung (ddof = 1). Kursive Zeilen gehen von einem Rechner zu einem anderen: Ihre Rohwerte enthalten den Uhrenversatz. Kommunikation: gesamt minus jede Stufe, die auf einem Rechner bleibt; eine Richtung ist die Hälfte davon. Mit zwei Uhren lassen sich ein Uhrenversatz und ein Unterschied der beiden Wege innerhalb des Versatzbereichs nicht unterscheiden (kein Weg dauert negativ lange); mit einer Uhr (one_clock: true in der Pipeline oder --one-clock) wird stattdessen die Latenz jeder Richtung angegeben.</translation>
     </message>
 </context>
 <context>

@@ -232,10 +232,15 @@ QString clocksText(const LatencyEngine& e)
                                            "one clock: each direction's own one-way latency, no offset");
     if (e.clockOffsetSeries() < 0)
         return {};
+    // Short: a comparison lists it once per run, side by side; what it cannot tell apart is said
+    // once, in the note under the tables.
     const auto bounds = e.clockOffsetBoundsMs();
-    return QCoreApplication::translate("ReportFormats", "two clocks: offset %1 ms %2. %3")
-        .arg(LatencyStatsModel::msText(e.series(e.clockOffsetSeries()).stats().median),
-             LatencyStatsModel::offsetUncertaintyText(bounds), LatencyStatsModel::offsetExplanation(bounds));
+    const QString median = LatencyStatsModel::msText(e.series(e.clockOffsetSeries()).stats().median);
+    if (!bounds)
+        return QCoreApplication::translate("ReportFormats", "two clocks: offset %1 ms").arg(median);
+    return QCoreApplication::translate("ReportFormats", "two clocks: offset %1 ms %2, between %3 and %4 ms")
+        .arg(median, LatencyStatsModel::offsetUncertaintyText(bounds), LatencyStatsModel::msText(bounds->first),
+             LatencyStatsModel::msText(bounds->second));
 }
 
 QList<std::pair<QString, QString>> facts(const ReportRun& run)
@@ -428,7 +433,10 @@ QString note()
         "ReportFormats",
         "Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows "
         "in italics cross between hosts: their raw values include the clock offset. "
-        "Communication: total minus every stage on one host, one way being half of it.");
+        "Communication: total minus every stage on one host, one way being half of it. "
+        "With two clocks, a clock offset and a difference between the two legs cannot be told apart "
+        "within the offset's range (neither leg takes negative time); with one clock (one_clock: true "
+        "in the pipeline, or --one-clock) each direction's own one-way latency is given instead.");
 }
 } // namespace
 
