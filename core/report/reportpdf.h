@@ -26,5 +26,5 @@ public:
     /// kMinShrink of its full-width height, since a page left two-thirds blank for want of a few
     /// lines reads worse; else at the top of a new page (`newPage` set).
     static QRectF placeFigure(double y, const QSizeF& page, const QSizeF& natural, bool* newPage);
-    static constexpr double kMinShrink = 0.45; // an ECDF at 45 % of the text width still reads
+    static constexpr double kMinShrink = 0.35; // a vector ECDF at a third of the text width still reads
 };
