@@ -10,6 +10,8 @@
 //
 //   bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED
 #include <algorithm>
+#include "peercount.h"
+
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -21,19 +23,13 @@
 #include <unistd.h>
 #include <vector>
 
-namespace {
-std::atomic<unsigned long long> g_received {0};
-std::atomic<bool> g_stop {false};
-void onTerm(int) { g_stop = true; }
-} // namespace
-
 int main(int argc, char** argv)
 {
     if (argc != 5) {
         std::fprintf(stderr, "usage: bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED\n");
         return 2;
     }
-    std::signal(SIGTERM, onTerm);
+    PeerCount::stopOnTerm();
     ros::M_string remappings {{"__master", argv[1]}};
     ros::init(remappings, "bench_rossub", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
     ros::NodeHandle node;
@@ -45,7 +41,7 @@ int main(int argc, char** argv)
     ros::AsyncSpinner spinner(1);
     spinner.start();
     // Topics appear as the bridge advertises them: look again for a while.
-    for (int i = 0; i < wantSeconds * 2 && !g_stop && subs.size() < expected; ++i) {
+    for (int i = 0; i < wantSeconds * 2 && !PeerCount::stop && subs.size() < expected; ++i) {
         ros::master::V_TopicInfo topics;
         ros::master::getTopics(topics);
         for (const auto& t : topics) {
@@ -54,20 +50,14 @@ int main(int argc, char** argv)
                 continue;
             have.push_back(t.name);
             const boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> count
-                = [](const topic_tools::ShapeShifter::ConstPtr&) { ++g_received; };
+                = [](const topic_tools::ShapeShifter::ConstPtr&) { ++PeerCount::received; };
             subs.push_back(node.subscribe<topic_tools::ShapeShifter>(t.name, 10, count));
         }
         std::fprintf(stderr, "topics %zu\n", subs.size());
         if (subs.size() < expected)
             usleep(500000);
     }
-    for (int tenths = 0; !g_stop; ++tenths) {
-        usleep(100000);
-        if (tenths % 10 == 0) {
-            std::printf("%llu\n", static_cast<unsigned long long>(g_received));
-            std::fflush(stdout);
-        }
-    }
+    PeerCount::printUntilTerm();
     spinner.stop();
     std::_Exit(0); // roscpp's static teardown is not the subject
 }
