@@ -413,7 +413,7 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
             d->byRosTopic.insert(r->rosTopic, r.get());
         } else {
             d->byMqtt.insert(r->mqttTopic, r.get());
-            if (!r->rosType.isEmpty() && !r->primitive)
+            if (!r->rosType.isEmpty())
                 d->advertiseRoute(*r, r->rosType); // v2.5's setupPublishers(): before any message
             if (!r->primitive && !r->json)
                 d->byTypeTopic.insert(MqttClientWire::typeTopicPrefix() + r->mqttTopic, r.get());

@@ -15,7 +15,9 @@
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtEndian>
@@ -269,6 +271,56 @@ private slots:
         stop(b);
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/chatter"_s, {}, 1, true); // no retained leftovers
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s, {}, 1, true);
+    }
+
+    void primitivesFixedTypesAndJson()
+    {
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      ros2mqtt:\n"
+                                  "        ros_topics: [/words]\n"
+                                  "        /words: {mqtt_topic: out/words, primitive: true}\n"
+                                  "      mqtt2ros:\n"
+                                  "        mqtt_topics: [in/text, in/fixed, in/json]\n"
+                                  "        in/text: {ros_topic: /text_back, primitive: true}\n"
+                                  "        in/fixed: {ros_topic: /fixed_back, primitive: true,"
+                                  " ros_type: std_msgs/msg/String}\n"
+                                  "        in/json: {ros_topic: /json_back, json: true,"
+                                  " ros_type: geometry_msgs/msg/PoseStamped}\n";
+        auto b = bridge(config);
+        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--pub"_s, u"/words:std_msgs/msg/String:20"_s, u"--sub"_s,
+                                 u"/text_back:std_msgs/msg/String"_s, u"--sub"_s, u"/fixed_back:std_msgs/msg/String"_s,
+                                 u"--sub"_s, u"/json_back:geometry_msgs/msg/PoseStamped"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+        // fixed types have their writers from the start; a dynamic primitive's comes with its text
+        QVERIFY2(peer.waitFor(u"matched /fixed_back 1"_s), qPrintable(peer.lines().join(u'\n')));
+        QVERIFY2(peer.waitFor(u"matched /json_back 1"_s), qPrintable(peer.lines().join(u'\n')));
+        const QByteArray json = "{\"header\": {\"stamp\": {\"sec\": 5, \"nanosec\": 6}, \"frame_id\": \"map\"},"
+                                " \"pose\": {\"position\": {\"x\": 7.5, \"y\": 1}, \"orientation\": {\"w\": 1}}}";
+        QElapsedTimer t;
+        t.start();
+        const auto got = [&peer](const QString& prefix) { return !peer.lines().filter(prefix).isEmpty(); };
+        while (t.elapsed() < 10000
+               && !(got(u"recv /text_back"_s) && got(u"recv /fixed_back"_s) && got(u"recv /json_back"_s))) {
+            m_mqtt->publish(u"in/text"_s, "hello there", 0, false); // not a number: a String
+            m_mqtt->publish(u"in/fixed"_s, "42", 0, false); // a number, but the fixed type says String
+            m_mqtt->publish(u"in/json"_s, json, 0, false);
+            QTest::qWait(100);
+        }
+        const QStringList lines = peer.lines();
+        QVERIFY2(!lines.filter(QRegularExpression(u"^recv /text_back \\d+ hello there$"_s)).isEmpty(),
+                 qPrintable(lines.join(u'\n')));
+        QVERIFY2(!lines.filter(QRegularExpression(u"^recv /fixed_back \\d+ 42$"_s)).isEmpty(), qPrintable(lines.join(u'\n')));
+        QVERIFY2(!lines.filter(QRegularExpression(u"^recv /json_back \\d+ x=7.5$"_s)).isEmpty(),
+                 qPrintable(lines.join(u'\n')));
+        // the peer's Strings as text, with no type announcement
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/words"_s).size() >= 3, 10000);
+        for (const QByteArray& m : m_fromMqtt.on(u"out/words"_s))
+            QVERIFY2(QRegularExpression(u"^hello \\d+$"_s).match(QString::fromUtf8(m)).hasMatch(), m.constData());
+        QVERIFY(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/words"_s).isEmpty());
+        stop(b);
     }
 };
 
