@@ -439,11 +439,15 @@ void Ros2Bridge::Private::startMqtt()
     for (auto it = byTypeTopic.cbegin(); it != byTypeTopic.cend(); ++it)
         mqtt->addSubscription(it.key(), (*it)->qos);
     Private* p = this;
-    const qint64 bound = options.maxQueuedBytes / 2;
+    // Towards ROS, half of the bound: a quarter for messages waiting for the event loop, a quarter
+    // for those in the pipe to the DDS process.
+    const qint64 bound = options.maxQueuedBytes / 4;
+    ros->setPublishBound(bound);
     // Paho's thread: handed to the event loop within the bound, in order.
     mqtt->setMessageHandler([p, bound](const QString& topic, const QByteArray& payload, qint64 t) {
         const qint64 size = payload.size();
-        if (p->hopBytes.fetch_add(size) + size > bound) {
+        const qint64 held = p->hopBytes.fetch_add(size);
+        if (held > 0 && held + size > bound) { // one larger than the bound passes alone
             p->hopBytes.fetch_sub(size);
             p->counters.droppedToRos.fetch_add(1, std::memory_order_relaxed);
             return;

@@ -118,6 +118,28 @@ private slots:
         QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
     }
 
+    void refusesWhatIsNotOneRos()
+    {
+        const QString path = m_dir.filePath(u"one.yaml"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: a}\n");
+        f.close();
+        const QList<QPair<QStringList, QString>> cases {
+            {{u"--ros"_s, u"both"_s}, u"give --ros 1 or --ros 2"_s},
+            {{u"--ros"_s, u"2"_s, u"--ros-master"_s, u"http://127.0.0.1:1/"_s}, u"takes --ros-domain"_s},
+            {{u"--ros"_s, u"2"_s, u"--ros-domain"_s, u"233"_s}, u"from 0 to 232"_s}};
+        for (const auto& [args, why] : cases) {
+            QProcess p;
+            p.setEnvironment({u"LC_ALL=C"_s, u"LANG=C"_s});
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), QStringList {u"bridge"_s, path} + args);
+            QVERIFY(p.waitForFinished(10000));
+            QCOMPARE(p.exitCode(), 2);
+            const QString said = QString::fromUtf8(p.readAllStandardError());
+            QVERIFY2(said.contains(why), qPrintable(said));
+        }
+    }
+
     void rosToMqttAsV25Writes()
     {
         const QByteArray config = "/**:\n"
