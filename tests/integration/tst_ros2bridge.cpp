@@ -12,6 +12,7 @@
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "testservers.h"
+#include "wire/mqttclientwire.h"
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
@@ -293,6 +294,33 @@ private slots:
         stop(b);
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/chatter"_s, {}, 1, true); // no retained leftovers
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s, {}, 1, true);
+    }
+
+    void ros1LayoutRunsOnRos2AndRos1AnnouncementsAreIgnored()
+    {
+        // mqtt_client's ROS 1 layout, converted as the ROS 1 bridge converts it
+        const QByteArray config = "broker: {host: localhost, port: 1883}\n"
+                                  "bridge:\n"
+                                  "  ros2mqtt:\n"
+                                  "    - {ros_topic: /old, mqtt_topic: old/out}\n"
+                                  "  mqtt2ros:\n"
+                                  "    - {mqtt_topic: old/in, ros_topic: /old_back}\n";
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/old/in"_s,
+                        MqttClientWire::encodeType({u"992ce8a1687cec8c8bd883ec73ca41d1"_s, u"std_msgs/String"_s,
+                                                    u"string data\n"_s, false, RosTypeRegistry::Dialect::Ros1}),
+                        1, true);
+        auto b = bridge(config, {u"--name"_s, u"old_bridge"_s});
+        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--pub"_s, u"/old:std_msgs/msg/String:20"_s,
+                                 u"--show-discovery"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"old/out"_s).size() >= 2, 10000);
+        QCOMPARE(m_fromMqtt.on(u"mqtt_client/ros_msg_type/old/out"_s).value(0),
+                 MqttClientRos2::announcement("std_msgs/msg/String", false));
+        QVERIFY(peer.waitFor(u"node / old_bridge 1 0"_s)); // the ROS 1 announcement made no writer
+        QTest::qWait(300);
+        QVERIFY(peer.lines().filter(u"endpoint pub rt/old_back"_s).isEmpty());
+        stop(b);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/old/in"_s, {}, 1, true);
     }
 
     void primitivesFixedTypesAndJson()
