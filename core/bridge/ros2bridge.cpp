@@ -173,7 +173,8 @@ void Ros2Bridge::Private::rosToMqtt(Route& r, const Ros2Sample& s)
         const std::optional<QByteArray> text = Ros2BridgeWire::primitiveText(registry, r.subscribedType, s.bytes);
         ok = text && mqtt->send(r.mqttTopic, *text, r.qos, r.retained);
     } else if (r.json) {
-        ok = false; // not written: see docs/formats.md
+        const std::optional<QByteArray> json = Ros2BridgeWire::toJson(registry, r.subscribedType, s.bytes, nullptr);
+        ok = json && mqtt->send(r.mqttTopic, *json, r.qos, r.retained);
     } else {
         // v2.5 announces (retained) with every message; once per type and connection says the same
         // and spares the broker, unless asked for every message.

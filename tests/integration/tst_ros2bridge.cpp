@@ -17,6 +17,8 @@
 #include "wire/rosmessage.h"
 
 #include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -330,8 +332,10 @@ private slots:
                                   "    broker: {host: localhost, port: 1883}\n"
                                   "    bridge:\n"
                                   "      ros2mqtt:\n"
-                                  "        ros_topics: [/words]\n"
+                                  "        ros_topics: [/words, /posej]\n"
                                   "        /words: {mqtt_topic: out/words, primitive: true}\n"
+                                  "        /posej: {mqtt_topic: out/posej, json: true,"
+                                  " ros_type: geometry_msgs/msg/PoseStamped}\n"
                                   "      mqtt2ros:\n"
                                   "        mqtt_topics: [in/text, in/fixed, in/json]\n"
                                   "        in/text: {ros_topic: /text_back, primitive: true}\n"
@@ -340,7 +344,8 @@ private slots:
                                   "        in/json: {ros_topic: /json_back, json: true,"
                                   " ros_type: geometry_msgs/msg/PoseStamped}\n";
         auto b = bridge(config);
-        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--pub"_s, u"/words:std_msgs/msg/String:20"_s, u"--sub"_s,
+        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--pub"_s, u"/words:std_msgs/msg/String:20"_s, u"--pub"_s,
+                                 u"/posej:geometry_msgs/msg/PoseStamped:20"_s, u"--sub"_s,
                                  u"/text_back:std_msgs/msg/String"_s, u"--sub"_s, u"/fixed_back:std_msgs/msg/String"_s,
                                  u"--sub"_s, u"/json_back:geometry_msgs/msg/PoseStamped"_s});
         QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
@@ -370,6 +375,16 @@ private slots:
         for (const QByteArray& m : m_fromMqtt.on(u"out/words"_s))
             QVERIFY2(QRegularExpression(u"^hello \\d+$"_s).match(QString::fromUtf8(m)).hasMatch(), m.constData());
         QVERIFY(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/words"_s).isEmpty());
+        // json towards MQTT: the message field by field
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/posej"_s).size() >= 2, 10000);
+        for (const QByteArray& m : m_fromMqtt.on(u"out/posej"_s)) {
+            const QJsonObject o = QJsonDocument::fromJson(m).object();
+            QCOMPARE(o.value(u"header"_s).toObject().value(u"frame_id"_s).toString(), u"map"_s);
+            const QJsonObject position = o.value(u"pose"_s).toObject().value(u"position"_s).toObject();
+            QVERIFY2(position.value(u"x"_s).toDouble() >= 1, m.constData());
+            QCOMPARE(position.value(u"y"_s).toDouble(), 2 * position.value(u"x"_s).toDouble());
+        }
+        QVERIFY(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/posej"_s).isEmpty());
         stop(b);
     }
 };
