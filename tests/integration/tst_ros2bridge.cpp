@@ -211,6 +211,16 @@ private slots:
         }
         // the node, as mqtt_client's is named, with its reader of each topic and the stamp writers
         QVERIFY2(talker.waitFor(u"node / mqtt_client 3 2"_s), qPrintable(talker.lines().join(u'\n')));
+        // and as Bridgescope's Discover sees it from another participant
+        const auto bridgeNode = [&stamps]() -> const Ros2Node* {
+            for (const Ros2Node& n : stamps.graph().nodes)
+                if (n.name == u"/mqtt_client"_s)
+                    return &n;
+            return nullptr;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(bridgeNode(), 5000);
+        QCOMPARE(bridgeNode()->subscribes, (QStringList {u"/chatter"_s, u"/cloud"_s, u"/pose"_s}));
+        QCOMPARE(bridgeNode()->publishes, (QStringList {u"/bench/bridge/in"_s, u"/bench/bridge/out"_s}));
         // the suite's stamps: the pose's header.stamp as the sample, in before out
         QTRY_VERIFY_WITH_TIMEOUT(got.size() >= 4, 10000);
         QHash<qint64, qint64> in;
