@@ -74,6 +74,7 @@ public:
         connect(&m_engine, &Ros2Engine::monitorFailed, this, [this](const QString& topic, const QString& why) {
             send(Kind::MonitorFailed, Ros2Protocol::encodeStrings({topic, why}));
         });
+        connect(&m_engine, &Ros2Engine::samplesReceived, this, &Worker::sendReceived);
         m_drain.setInterval(Ros2Engine::kPollMs);
         connect(&m_drain, &QTimer::timeout, this, &Worker::drain);
         m_drain.start();
@@ -91,7 +92,7 @@ private:
 
     void readInput()
     {
-        char buffer[64 * 1024];
+        static char buffer[1024 * 1024]; // samples to publish come this way
         const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
         if (n < 0 && errno == EINTR)
             return;
@@ -169,14 +170,67 @@ private:
             return true;
         }
         default:
+            return handleEndpoint(f);
+        }
+    }
+
+    /// Requests of our own endpoints (Ros2Participant's advertise(), publish(), subscribe()).
+    bool handleEndpoint(const Ros2Protocol::Frame& f)
+    {
+        switch (f.kind) {
+        case Kind::SetNode: {
+            const auto node = Ros2Protocol::decodeStrings(f.body, 2);
+            if (!node)
+                return false;
+            m_engine.setNode(node->at(0), node->at(1));
+            return true;
+        }
+        case Kind::Advertise:
+        case Kind::Subscribe: {
+            const auto e = Ros2Protocol::decodeEndpoint(f.body);
+            if (!e)
+                return false;
+            QString why;
+            const bool made = f.kind == Kind::Advertise ? m_engine.advertise(e->topic, e->type, e->qos, &why)
+                                                        : m_engine.subscribeSamples(e->topic, e->type, e->qos, &why);
+            if (!made)
+                qCWarning(lcRos2).noquote() << "bridgescope-dds:" << why;
+            return true;
+        }
+        case Kind::Unadvertise:
+        case Kind::Unsubscribe: {
+            const auto topic = Ros2Protocol::decodeStrings(f.body, 1);
+            if (!topic)
+                return false;
+            if (f.kind == Kind::Unadvertise)
+                m_engine.unadvertise(topic->first());
+            else
+                m_engine.unsubscribeSamples(topic->first());
+            return true;
+        }
+        case Kind::Publish: {
+            const auto p = Ros2Protocol::decodePublish(f.body);
+            if (!p)
+                return false;
+            m_engine.publish(p->topic, p->cdr); // one Cyclone refuses is lost, as on a full network
+            return true;
+        }
+        default:
             return false;
         }
+    }
+
+    /// Subscribed topics' samples, as soon as Cyclone passed them on.
+    void sendReceived()
+    {
+        for (Ros2Engine::Received& r : m_engine.takeReceived())
+            sendSamples(Kind::Received, r.topic, r.dropped, std::move(r.samples));
     }
 
     void drain()
     {
         for (const QString& topic : m_watched)
-            sendSamples(topic, m_engine.takeMessages(topic));
+            sendSamples(Kind::Samples, topic, m_engine.droppedMessages(topic), m_engine.takeMessages(topic));
         std::vector<Ros2Arrival> arrivals = m_engine.takeArrivals();
         if (!arrivals.empty())
             send(Kind::Arrivals, Ros2Protocol::encodeArrivals({m_engine.droppedArrivals(), std::move(arrivals)}));
@@ -187,21 +241,21 @@ private:
     }
 
     /// Samples in frames of about kBatchBytes (one sample is at most Ros2RawType's 64 MiB).
-    void sendSamples(const QString& topic, std::vector<Ros2Sample> samples)
+    void sendSamples(Kind kind, const QString& topic, quint64 dropped, std::vector<Ros2Sample> samples)
     {
-        Ros2Protocol::SampleBatch batch {topic, m_engine.droppedMessages(topic), {}};
+        Ros2Protocol::SampleBatch batch {topic, dropped, {}};
         qsizetype bytes = 0;
         for (Ros2Sample& s : samples) {
             bytes += s.bytes.size();
             batch.samples.push_back(std::move(s));
             if (bytes >= Ros2Protocol::kBatchBytes) {
-                send(Kind::Samples, Ros2Protocol::encodeSamples(batch));
+                send(kind, Ros2Protocol::encodeSamples(batch));
                 batch.samples.clear();
                 bytes = 0;
             }
         }
         if (!batch.samples.empty())
-            send(Kind::Samples, Ros2Protocol::encodeSamples(batch));
+            send(kind, Ros2Protocol::encodeSamples(batch));
     }
 
     /// The monitored topics' figures; a topic's last message only when it changed.

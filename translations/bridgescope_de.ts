@@ -224,6 +224,14 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <source>--clock-offset-ms takes -%1 to %1 milliseconds (a day)</source>
         <translation>--clock-offset-ms erwartet -%1 bis %1 Millisekunden (einen Tag)</translation>
     </message>
+    <message>
+        <source>a bridge runs on one ROS: give --ros 1 or --ros 2</source>
+        <translation>eine Bridge läuft auf einem ROS: --ros 1 oder --ros 2 angeben</translation>
+    </message>
+    <message>
+        <source>--ros-master is for --ros 1; a ROS 2 bridge takes --ros-domain</source>
+        <translation>--ros-master gilt für --ros 1; eine ROS-2-Bridge nimmt --ros-domain</translation>
+    </message>
 </context>
 <context>
     <name>BridgedTopicsProxy</name>
@@ -6322,6 +6330,81 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
+    <name>Ros2Bridge</name>
+    <message>
+        <source>ROS %1 -&gt; MQTT %2 (%3, %4%5)</source>
+        <translation>ROS %1 -&gt; MQTT %2 (%3, %4%5)</translation>
+    </message>
+    <message>
+        <source>, primitive</source>
+        <translation>, primitiv</translation>
+    </message>
+    <message>
+        <source>, stamped</source>
+        <translation>, mit Zeitstempel</translation>
+    </message>
+    <message>
+        <source>ignored a malformed type announcement for %1: %2</source>
+        <translation>fehlerhafte Typankündigung für %1 ignoriert: %2</translation>
+    </message>
+    <message>
+        <source>ignored the ROS 1 type announcement for %1 (%2): this bridge speaks ROS 2</source>
+        <translation>ROS-2-Typankündigung für %2 (%2) ignoriert: diese Bridge spricht ROS 2 {1 ?} {1 ?} {2)?}</translation>
+    </message>
+    <message>
+        <source>%1 announces %2, but the config fixes %3: kept</source>
+        <translation>%1 kündigt %2 an, aber die Konfiguration legt %3 fest: beibehalten</translation>
+    </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2 (%3, %4)</source>
+        <translation>MQTT %1 -&gt; ROS %2 (%3, %4)</translation>
+    </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2: the type changed to %3%4</source>
+        <translation>MQTT %1 -&gt; ROS %2: der Typ ist jetzt %3%4</translation>
+    </message>
+    <message>
+        <source> (further changes are not logged)</source>
+        <translation> (weitere Wechsel werden nicht protokolliert)</translation>
+    </message>
+    <message>
+        <source>%1: json needs a ros_type, as mqtt_client says</source>
+        <translation>%1: json braucht einen ros_type, wie mqtt_client sagt</translation>
+    </message>
+    <message>
+        <source>ROS 2 node %1 on domain %2%3</source>
+        <translation>ROS-2-Knoten %1 in Domäne %2%3</translation>
+    </message>
+    <message>
+        <source> (this host only)</source>
+        <translation> (nur dieser Rechner)</translation>
+    </message>
+    <message>
+        <source>not on the ROS 2 domain: %1</source>
+        <translation>nicht in der ROS-2-Domäne: %1</translation>
+    </message>
+    <message>
+        <source>the DDS process %1; starting it again</source>
+        <translation>der DDS-Prozess %1; wird neu gestartet</translation>
+    </message>
+    <message>
+        <source>connecting to %1…</source>
+        <translation>verbinde mit %1 …</translation>
+    </message>
+    <message>
+        <source>connected to %1</source>
+        <translation>mit %1 verbunden</translation>
+    </message>
+    <message>
+        <source>reconnected to %1</source>
+        <translation>wieder mit %1 verbunden</translation>
+    </message>
+    <message>
+        <source>lost the broker (%1); reconnecting</source>
+        <translation>Broker verloren (%1); verbinde erneut</translation>
+    </message>
+</context>
+<context>
     <name>Ros2Definitions</name>
     <message>
         <source>%1: more than %2 definitions; the rest were not read</source>
@@ -6363,6 +6446,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>Cyclone DDS could not subscribe to %1 as %2</source>
         <translation>Cyclone DDS konnte %1 nicht als %2 abonnieren</translation>
+    </message>
+    <message>
+        <source>not on a domain</source>
+        <translation>in keiner Domäne</translation>
     </message>
 </context>
 <context>

@@ -3,7 +3,9 @@
 
 #include "app/cli/clioutput.h"
 #include "base/yamllimits.h"
+#include "app/cli/rosoptions.h"
 #include "bridge/referencebridge.h"
+#include "bridge/ros2bridge.h"
 
 #include <cerrno>
 #include <cmath>
@@ -72,6 +74,8 @@ struct BridgeRequest
     QString path;
     QByteArray yaml;
     ReferenceBridge::Options options;
+    bool ros2 = false; ///< --ros 2: the ROS 2 bridge on a DDS domain
+    Ros2Options ros2Options;
 };
 
 /// Parses and checks the command line and reads the config. -1 to go on with `request`,
@@ -109,6 +113,8 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
                    "is dropped). Drops are counted and logged."),
         u"MIB"_s, QString::number(ReferenceBridge::kDefaultMaxQueuedBytes >> 20));
     parser.addOptions({broker, brokerFd, master, name, arg, offset, everyMessage, queued});
+    RosOptions ros;
+    ros.addTo(parser);
     parser.addPositionalArgument(u"CONFIG"_s, Bridge::tr("mqtt_client config (ROS 1 or ROS 2 layout)."),
                                  u"CONFIG.yaml"_s);
     QStringList args = arguments;
@@ -126,6 +132,23 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
         err(Bridge::tr("bridge takes one config file; see bridgescope bridge --help"));
         return ExitUsage;
     }
+    QString rosError;
+    if (!ros.read(parser, &rosError)) {
+        err(rosError);
+        return ExitUsage;
+    }
+    if (ros.ros1 && ros.ros2) {
+        err(Bridge::tr("a bridge runs on one ROS: give --ros 1 or --ros 2"));
+        return ExitUsage;
+    }
+    if (ros.ros2 && parser.isSet(master)) {
+        err(Bridge::tr("--ros-master is for --ros 1; a ROS 2 bridge takes --ros-domain"));
+        return ExitUsage;
+    }
+    if (!ros.environmentError.isEmpty() && ros.ros2 && !ros.ros2OptionsSet)
+        err(ros.environmentError);
+    request->ros2 = ros.ros2;
+    request->ros2Options = ros.ros2Options;
     const QString path = parser.positionalArguments().first();
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
@@ -186,18 +209,29 @@ QString droppedLine(const ReferenceBridge::Counters& c, qint64 maxQueuedBytes)
         .arg(double(c.heldBytes.load()) / (1 << 20), 0, 'f', 1);
 }
 
+/// Starts the bridge of the ROS asked for.
+bool startBridge(ReferenceBridge& bridge, const BridgeRequest&, QString* why)
+{
+    return bridge.start([] { return !CliOutput::stopRequested(); }, why);
+}
+
+bool startBridge(Ros2Bridge& bridge, const BridgeRequest& request, QString* why)
+{
+    return bridge.start(request.ros2Options, why);
+}
+
 /// Bridges until Ctrl+C or SIGTERM; a line when it starts and the counts when it stops.
-int runBridge(const BridgeRequest& request)
+template<typename B> int runBridge(const BridgeRequest& request)
 {
     CliOutput::keepFreedMemory();
-    ReferenceBridge bridge(logLine);
+    B bridge(logLine);
     QString why;
     if (!bridge.load(request.yaml, request.options, &why)) {
         err(u"%1: %2"_s.arg(request.path, why));
         return ExitUsage;
     }
     CliOutput::catchStopSignals();
-    if (!bridge.start([] { return !CliOutput::stopRequested(); }, &why)) {
+    if (!startBridge(bridge, request, &why)) {
         err(Bridge::tr("bridge failed: %1").arg(why));
         return CliOutput::stopRequested() ? ExitOk : ExitFailed;
     }
@@ -234,5 +268,5 @@ int runBridgeCommand(const QStringList& arguments)
     BridgeRequest request;
     if (const int status = parseBridge(arguments, &request); status >= 0)
         return status;
-    return runBridge(request);
+    return request.ros2 ? runBridge<Ros2Bridge>(request) : runBridge<ReferenceBridge>(request);
 }

@@ -2,7 +2,7 @@
 #include "referencebridge.h"
 
 #include "base/wallclock.h"
-#include "config/configreader.h"
+#include "bridge/bridgespec.h"
 #include "mqtt/mqttlink.h"
 #include "ros/rosendpoint.h"
 #include "wire/mqttclientwire.h"
@@ -115,18 +115,9 @@ bool startsWithHeader(const QString& definition)
     return headerFirst.match(definition).hasMatch();
 }
 
-struct Route
+/// A mapping as the config says it, and its runtime state.
+struct Route : BridgeRoute
 {
-    Direction direction = Direction::Ros2Mqtt;
-    QString rosTopic;
-    QString mqttTopic;
-    bool primitive = false;
-    bool stamped = false; ///< ros2mqtt: inject_timestamp
-    int qos = 0;
-    bool retained = false;
-    bool latched = false;
-    int queueSize = 1;
-    QString stampPrefix; ///< timestamp_topic_prefix
     // Runtime state (mqtt2ros: the announced type and its publisher; stamp publishers).
     std::mutex mutex;
     RosMsgTypeInfo announced;
@@ -166,23 +157,6 @@ StampCodec::Decoded sampleOf(bool headerFirst, const QByteArray& bytes)
     return d;
 }
 
-QString substituteArgs(QString text, const QHash<QString, QString>& args, QStringList* missing)
-{
-    static const QRegularExpression arg(u"\\$\\(arg\\s+([A-Za-z0-9_]+)\\)"_s);
-    QRegularExpressionMatch m;
-    qsizetype from = 0;
-    while ((m = arg.match(text, from)).hasMatch()) {
-        const QString name = m.captured(1);
-        if (!args.contains(name)) {
-            missing->append(name);
-            from = m.capturedEnd();
-            continue;
-        }
-        text.replace(m.capturedStart(), m.capturedLength(), args.value(name));
-        from = m.capturedStart() + args.value(name).size();
-    }
-    return text;
-}
 } // namespace
 
 struct ReferenceBridge::Private
@@ -199,11 +173,6 @@ struct ReferenceBridge::Private
     QString stampDefinition = StampCodec::definition();
 
     qint64 now() const { return wallClockNs() + options.clockOffsetNs; }
-
-    QString value(const Mapping& m, const QString& path, QStringList* missing) const
-    {
-        return substituteArgs(m.effective(path), options.args, missing);
-    }
 
     void publishStamp(int publisher, const StampCodec::Decoded& sample, qint64 timeNs)
     {
@@ -409,99 +378,19 @@ int ReferenceBridge::mappingCount() const
 
 bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QString* error)
 {
-    const auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
+    std::optional<BridgeSpec> spec = BridgeSpec::load(yaml, options.brokerUrl, options.args, error);
+    if (!spec)
         return false;
-    };
-    ConfigReadResult read = ConfigReader::read(yaml);
-    if (!read.parsed) {
-        // Located, as `config validate` says it: "LINE:COL: error: ...".
-        const QString first = read.problems.isEmpty() ? QString() : read.problems.first().format(QString()).mid(1);
-        return fail(tr("not a bridge config: %1").arg(first));
-    }
     d->options = options;
-    d->config = read.config;
-    const BridgeConfig& c = d->config;
-    QStringList missing;
-    const auto setting = [&](OptionScope scope, const QString& path) {
-        return substituteArgs(c.effective(scope, path), options.args, &missing);
-    };
-
-    // The broker: --broker wins over the config's host and port.
-    MqttProfile p;
-    if (!options.brokerUrl.isEmpty()) {
-        p = MqttProfile::fromUrl(options.brokerUrl);
-        if (p.caFile.isEmpty() && setting(OptionScope::Broker, u"tls.enabled"_s) == u"true"_s)
-            p.caFile = setting(OptionScope::Broker, u"tls.ca_certificate"_s); // the config's CA still holds
-    } else {
-        const bool tls = setting(OptionScope::Broker, u"tls.enabled"_s) == u"true"_s;
-        p = MqttProfile::fromUrl(u"%1://%2:%3"_s.arg(tls ? u"ssl"_s : u"tcp"_s,
-                                                     setting(OptionScope::Broker, u"host"_s),
-                                                     setting(OptionScope::Broker, u"port"_s)));
-        if (tls)
-            p.caFile = setting(OptionScope::Broker, u"tls.ca_certificate"_s);
-    }
-    // Credentials in a --broker URL win over the config's, as its host and port do.
-    if (p.username.isEmpty() && p.password.isEmpty()) {
-        p.username = setting(OptionScope::Broker, u"user"_s);
-        p.password = setting(OptionScope::Broker, u"pass"_s);
-    }
-    p.clientId = setting(OptionScope::Client, u"id"_s);
-    p.cleanSession = setting(OptionScope::Client, u"clean_session"_s) != u"false"_s;
-    p.keepAliveSeconds = qMax(1, int(setting(OptionScope::Client, u"keep_alive_interval"_s).toDouble()));
-    if (c.client.values.has(u"tls.certificate"_s)) {
-        p.certFile = setting(OptionScope::Client, u"tls.certificate"_s);
-        p.keyFile = setting(OptionScope::Client, u"tls.key"_s);
-        p.keyPassword = setting(OptionScope::Client, u"tls.password"_s);
-    }
-    QString why;
-    if (!p.validate(&why))
-        return fail(why);
-    d->profile = p;
-    d->will.topic = setting(OptionScope::Client, u"last_will.topic"_s);
-    d->will.message = setting(OptionScope::Client, u"last_will.message"_s).toUtf8();
-    d->will.qos = setting(OptionScope::Client, u"last_will.qos"_s).toInt();
-    d->will.retained = setting(OptionScope::Client, u"last_will.retained"_s) == u"true"_s;
-
-    const auto unresolved = [&missing, &fail] {
-        missing.removeDuplicates();
-        QStringList uses;
-        QStringList gives;
-        for (const QString& name : std::as_const(missing)) {
-            uses << u"$(arg %1)"_s.arg(name);
-            gives << u"--arg %1=VALUE"_s.arg(name);
-        }
-        return fail(
-            tr("the config uses %1: give the values with %2").arg(uses.join(u", "_s), gives.join(u' ')));
-    };
+    d->config = spec->config;
+    d->profile = spec->profile;
+    d->will = spec->will;
     d->routes.clear();
-    for (const Mapping& m : c.mappings) {
+    for (const BridgeRoute& b : spec->routes) {
         auto r = std::make_unique<Route>();
-        r->direction = m.direction;
-        r->rosTopic = d->value(m, u"ros_topic"_s, &missing);
-        r->mqttTopic = d->value(m, u"mqtt_topic"_s, &missing);
-        r->primitive = d->value(m, u"primitive"_s, &missing) == u"true"_s;
-        r->stamped = d->value(m, u"inject_timestamp"_s, &missing) == u"true"_s;
-        bool ok = false;
-        r->qos = d->value(m, u"advanced.mqtt.qos"_s, &missing).toInt(&ok);
-        if (!missing.isEmpty())
-            return unresolved();
-        if (!ok || r->qos < 0 || r->qos > 2)
-            return fail(tr("%1: qos must be 0, 1 or 2 (give $(arg ...) values with --arg NAME=VALUE)")
-                            .arg(m.sourceTopic()));
-        r->retained = d->value(m, u"advanced.mqtt.retained"_s, &missing) == u"true"_s;
-        r->latched = d->value(m, u"advanced.ros.latched"_s, &missing) == u"true"_s;
-        r->queueSize = qMax(1, d->value(m, u"advanced.ros.queue_size"_s, &missing).toInt());
-        r->stampPrefix = d->value(m, u"timestamp_topic_prefix"_s, &missing);
-        if (r->rosTopic.isEmpty() || r->mqttTopic.isEmpty())
-            return fail(tr("a mapping without ros_topic or mqtt_topic"));
-        if (!missing.isEmpty())
-            return unresolved();
+        static_cast<BridgeRoute&>(*r) = b;
         d->routes.push_back(std::move(r));
     }
-    if (d->routes.empty())
-        return fail(tr("the config has no mapping to bridge"));
     return true;
 }
 

@@ -7,6 +7,7 @@
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "ros2/ros2names.h"
+#include "dds/ros2endpoints.h"
 #include "dds/ros2rawreader.h"
 
 #include <algorithm>
@@ -144,9 +145,11 @@ struct Ros2Engine::Private
     dds_entity_t publicationReader = 0; ///< DCPSPublication
     dds_entity_t subscriptionReader = 0; ///< DCPSSubscription
     std::unique_ptr<Ros2RawReader> infoReader;
+    std::unique_ptr<Ros2Endpoints> own; ///< our writers, readers and node
 
     ~Private()
     {
+        own.reset(); // its readers first: their callbacks write to it
         if (participant > 0)
             dds_delete(participant); // its readers, topics and their listeners with it
         if (domain > 0)
@@ -406,6 +409,9 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     if (m_keepArrivals)
         d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(m_keepArrivals);
     openDiscoveryInfo();
+    d->own = std::make_unique<Ros2Endpoints>(d->participant, [this] {
+        QMetaObject::invokeMethod(this, [this] { emit samplesReceived(); }, Qt::QueuedConnection);
+    });
     m_pending.invalidate(); // a new Private counts its changes from 1
     m_builtChanges = 0;
     m_polledChanges = 0;
@@ -456,7 +462,7 @@ void Ros2Engine::refresh()
     if (!d)
         return;
     d->poll();
-    const quint64 changes = d->changes;
+    const quint64 changes = d->changes + d->own->changes(); // both only grow
     if (changes == m_builtChanges)
         return;
     const bool quiet = changes == m_polledChanges;
@@ -483,6 +489,8 @@ void Ros2Engine::refresh()
         for (const auto& [gid, name] : d->services)
             services.append(name);
         participants = int(d->participants.size());
+        endpoints += d->own->ownEndpoints(); // discovery does not show us our own
+        infos += d->own->ownInfo();
     }
     Ros2Graph graph = Ros2Graph::build(endpoints, infos, participants, services);
     if (graph == m_graph && bad == m_shownBadInfo)
@@ -689,4 +697,52 @@ quint64 Ros2Engine::droppedArrivals() const
         return 0;
     std::lock_guard<std::mutex> lock(d->mutex);
     return d->arrivals ? d->arrivals->dropped() : 0;
+}
+
+void Ros2Engine::setNode(const QString& nameSpace, const QString& name)
+{
+    if (d)
+        d->own->setNode(nameSpace, name);
+}
+
+bool Ros2Engine::advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+{
+    if (!d) {
+        if (why)
+            *why = tr("not on a domain");
+        return false;
+    }
+    return d->own->advertise(topic, type, qos, why);
+}
+
+void Ros2Engine::unadvertise(const QString& topic)
+{
+    if (d)
+        d->own->unadvertise(topic);
+}
+
+bool Ros2Engine::publish(const QString& topic, const QByteArray& cdr)
+{
+    return d && d->own->publish(topic, cdr);
+}
+
+bool Ros2Engine::subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+{
+    if (!d) {
+        if (why)
+            *why = tr("not on a domain");
+        return false;
+    }
+    return d->own->subscribe(topic, type, qos, why);
+}
+
+void Ros2Engine::unsubscribeSamples(const QString& topic)
+{
+    if (d)
+        d->own->unsubscribe(topic);
+}
+
+std::vector<Ros2Engine::Received> Ros2Engine::takeReceived()
+{
+    return d ? d->own->takeReceived() : std::vector<Received>();
 }

@@ -69,10 +69,30 @@ public:
     std::vector<Ros2Arrival> takeArrivals();
     quint64 droppedArrivals() const;
 
+    // Endpoints of our own (Ros2Participant's setNode(), advertise(), publish(), subscribe()); each
+    // false with `why` when not running or Cyclone refuses.
+    void setNode(const QString& nameSpace, const QString& name);
+    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr);
+    void unadvertise(const QString& topic);
+    bool publish(const QString& topic, const QByteArray& cdr);
+    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr);
+    void unsubscribeSamples(const QString& topic);
+    /// A subscribed topic's samples since the last call (and the drops of its queue so far).
+    struct Received
+    {
+        QString topic;
+        quint64 dropped = 0;
+        std::vector<Ros2Sample> samples;
+    };
+    std::vector<Received> takeReceived();
+
 signals:
     /// The graph changed, or badDiscoveryInfo() did (which is shown with it).
     void graphChanged(const Ros2Graph& graph);
     void monitorFailed(const QString& topic, const QString& why);
+    /// A subscribed topic got samples since the last takeReceived() (queued to this object's
+    /// thread from Cyclone's, once until the next take).
+    void samplesReceived();
 
 private:
     struct WatchLimits

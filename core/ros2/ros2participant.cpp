@@ -165,6 +165,15 @@ void Ros2Participant::launch()
         send(Kind::Watch, Ros2Protocol::encodeWatch({it.key(), it->maxMessages, it->maxBytes}));
     for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
         send(Kind::Monitor, Ros2Protocol::encodeStrings({it.key()}));
+    for (const quint64 n : std::as_const(m_receivedDropped))
+        m_receivedDroppedBefore += n; // the new child counts from 0
+    m_receivedDropped.clear();
+    for (const Ros2Protocol::EndpointRequest& e : std::as_const(m_advertised))
+        send(Kind::Advertise, Ros2Protocol::encodeEndpoint(e));
+    for (const Ros2Protocol::EndpointRequest& e : std::as_const(m_subscribed))
+        send(Kind::Subscribe, Ros2Protocol::encodeEndpoint(e));
+    if (!m_node.name.isEmpty())
+        send(Kind::SetNode, Ros2Protocol::encodeStrings({m_node.nameSpace, m_node.name}));
 }
 
 void Ros2Participant::send(Kind kind, const QByteArray& body)
@@ -304,6 +313,17 @@ bool Ros2Participant::handle(const Ros2Protocol::Frame& f)
             for (Ros2Arrival& a : batch->arrivals)
                 if (m_monitorUses.contains(a.topic))
                     m_arrivals->push(std::move(a));
+        return true;
+    }
+    case Kind::Received: {
+        auto batch = Ros2Protocol::decodeSamples(f.body);
+        if (!batch)
+            return false;
+        if (!m_subscribed.contains(batch->topic))
+            return true; // unsubscribed since the child sent it
+        m_receivedDropped.insert(batch->topic, batch->dropped);
+        for (const Ros2Sample& s : batch->samples)
+            emit received(batch->topic, s);
         return true;
     }
     case Kind::MonitorFailed: {
@@ -462,4 +482,70 @@ std::vector<Ros2Arrival> Ros2Participant::takeArrivals()
 quint64 Ros2Participant::droppedArrivals() const
 {
     return m_arrivals ? m_arrivals->dropped() + m_childDroppedArrivals : 0;
+}
+
+void Ros2Participant::setNode(const QString& nameSpace, const QString& name)
+{
+    m_node = {nameSpace, name};
+    send(Kind::SetNode, Ros2Protocol::encodeStrings({nameSpace, name}));
+}
+
+namespace {
+Ros2Protocol::EndpointRequest endpointRequest(const QString& topic, const QString& type, Ros2Qos qos)
+{
+    if (qos.depth < 1)
+        qos.depth = 10; // rclcpp's default
+    qos.depth = std::min(qos.depth, Ros2Protocol::kMaxDepth);
+    if (qos.durability != Ros2Qos::Volatile)
+        qos.durability = Ros2Qos::TransientLocal; // what a ROS 2 node can ask for of the two others
+    return {topic, type, qos};
+}
+} // namespace
+
+void Ros2Participant::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
+{
+    const Ros2Protocol::EndpointRequest e = endpointRequest(topic, type, qos);
+    m_advertised.insert(topic, e);
+    send(Kind::Advertise, Ros2Protocol::encodeEndpoint(e));
+}
+
+void Ros2Participant::unadvertise(const QString& topic)
+{
+    if (m_advertised.remove(topic) > 0)
+        send(Kind::Unadvertise, Ros2Protocol::encodeStrings({topic}));
+}
+
+bool Ros2Participant::publish(const QString& topic, const QByteArray& cdr)
+{
+    const bool sendable = m_child && m_child->state() == QProcess::Running && m_advertised.contains(topic)
+        && cdr.size() >= 4 && cdr.size() <= qsizetype(Ros2Protocol::kMaxFrameBytes) - 1024
+        && m_child->bytesToWrite() + cdr.size() <= kMaxPendingPublishBytes;
+    if (!sendable) {
+        ++m_publishDropped;
+        return false;
+    }
+    send(Kind::Publish, Ros2Protocol::encodePublish({topic, cdr}));
+    return true;
+}
+
+void Ros2Participant::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
+{
+    const Ros2Protocol::EndpointRequest e = endpointRequest(topic, type, qos);
+    m_subscribed.insert(topic, e);
+    send(Kind::Subscribe, Ros2Protocol::encodeEndpoint(e));
+}
+
+void Ros2Participant::unsubscribe(const QString& topic)
+{
+    if (m_subscribed.remove(topic) > 0)
+        send(Kind::Unsubscribe, Ros2Protocol::encodeStrings({topic}));
+    m_receivedDropped.remove(topic);
+}
+
+quint64 Ros2Participant::droppedReceived() const
+{
+    quint64 n = m_receivedDroppedBefore;
+    for (const quint64 d : m_receivedDropped)
+        n += d;
+    return n;
 }

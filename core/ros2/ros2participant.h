@@ -91,6 +91,38 @@ public:
     std::vector<Ros2Arrival> takeArrivals();
     quint64 droppedArrivals() const;
 
+    // Endpoints of our own: a node that publishes and subscribes (the ROS 2 reference bridge, the
+    // demo lab's nodes). None of these block; each is asked of the child again after a restart.
+
+    /// The node announced in ros_discovery_info (rmw_dds_common's ParticipantEntitiesInfo) with the
+    /// gids of the writers and readers made by advertise() and subscribe(); this participant's
+    /// graph() shows it too. Default: none announced.
+    void setNode(const QString& nameSpace, const QString& name);
+    /// A DDS writer of ROS topic `topic` ("/chatter": DDS "rt/chatter") of ROS 2 type `type`
+    /// ("std_msgs/msg/String": "std_msgs::msg::dds_::String_"), with QoS as rmw_cyclonedds_cpp's
+    /// create_readwrite_qos (volatile or transient local, keep last `depth`; a depth below 1 is 10,
+    /// rclcpp's default).
+    void advertise(const QString& topic, const QString& type, const Ros2Qos& qos = {});
+    void unadvertise(const QString& topic);
+    bool isAdvertised(const QString& topic) const { return m_advertised.contains(topic); }
+    /// One sample: CDR bytes with their 4-byte encapsulation header (00 01 00 00). False, and
+    /// counted by publishDropped(), when it cannot be sent now: not advertised, the child not
+    /// running, the pipe holding kMaxPendingPublishBytes already, or a sample that is not CDR.
+    bool publish(const QString& topic, const QByteArray& cdr);
+    /// Bytes of samples the pipe to the child may hold before publish() drops.
+    static constexpr qint64 kMaxPendingPublishBytes = 128 * 1024 * 1024;
+    quint64 publishDropped() const { return m_publishDropped; }
+    /// A DDS reader of `topic` of `type` with `qos` (as advertise()'s), made at once whether or not
+    /// the graph knows the topic. Every sample comes by received() as soon as the child passes it
+    /// on. Samples are at most Ros2RawType's 64 MiB, queued in the child within a byte bound (the
+    /// drops counted by droppedReceived()).
+    void subscribe(const QString& topic, const QString& type, const Ros2Qos& qos = {});
+    void unsubscribe(const QString& topic);
+    bool isSubscribed(const QString& topic) const { return m_subscribed.contains(topic); }
+    /// Samples of subscribed topics the child dropped because too many waited for the pipe (since
+    /// this object was made).
+    quint64 droppedReceived() const;
+
     /// The child program: $BRIDGESCOPE_DDS, beside this program, in ../libexec/bridgescope, or in
     /// the build tree.
     static QString program();
@@ -109,6 +141,8 @@ signals:
     /// The participant is on the domain (after start() and after each restart), or could not be
     /// made there (`ok` false, lastError() says why).
     void joined(bool ok);
+    /// One sample of a subscribed topic (receivedNs: the wall clock in the child when it came).
+    void received(const QString& topic, const Ros2Sample& sample);
 
 private:
     struct Watched
@@ -152,4 +186,16 @@ private:
     quint64 m_childDroppedArrivals = 0;
     Ros2Graph m_graph;
     quint64 m_badInfo = 0;
+
+    struct Node
+    {
+        QString nameSpace;
+        QString name;
+    };
+    Node m_node;
+    QHash<QString, Ros2Protocol::EndpointRequest> m_advertised; ///< across stop() and start()
+    QHash<QString, Ros2Protocol::EndpointRequest> m_subscribed; ///< across stop() and start()
+    QHash<QString, quint64> m_receivedDropped; ///< the child's count, by topic, since its start
+    quint64 m_receivedDroppedBefore = 0; ///< counted by children before this one
+    quint64 m_publishDropped = 0;
 };

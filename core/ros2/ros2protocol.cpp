@@ -10,8 +10,8 @@ namespace Ros2Protocol {
 
 bool isKnown(quint8 kind)
 {
-    return (kind >= quint8(Kind::Start) && kind <= quint8(Kind::GraphInterval))
-        || (kind >= quint8(Kind::Started) && kind <= quint8(Kind::Heartbeat));
+    return (kind >= quint8(Kind::Start) && kind <= quint8(Kind::Unsubscribe))
+        || (kind >= quint8(Kind::Started) && kind <= quint8(Kind::Received));
 }
 
 QByteArray frame(Kind kind, const QByteArray& body)
@@ -491,6 +491,56 @@ std::optional<ArrivalBatch> decodeArrivals(const QByteArray& body)
     if (!r.done())
         return std::nullopt;
     return b;
+}
+
+QByteArray encodeEndpoint(const EndpointRequest& r)
+{
+    Writer w;
+    w.string(r.topic);
+    w.string(r.type);
+    w.u8(quint8(r.qos.reliability));
+    w.u8(quint8(r.qos.durability));
+    w.u32(quint32(r.qos.depth));
+    return w.data();
+}
+
+std::optional<EndpointRequest> decodeEndpoint(const QByteArray& body)
+{
+    Reader r(body);
+    EndpointRequest e;
+    e.topic = r.string();
+    e.type = r.string();
+    const quint8 reliability = r.u8();
+    const quint8 durability = r.u8();
+    const quint32 depth = r.u32();
+    // only what an endpoint of ours can be: volatile or transient local, keep last 1..kMaxDepth
+    if (!r.done() || e.topic.isEmpty() || e.type.isEmpty() || reliability > Ros2Qos::Reliable
+        || durability > Ros2Qos::TransientLocal || depth < 1 || depth > quint32(kMaxDepth))
+        return std::nullopt;
+    e.qos.reliability = Ros2Qos::Reliability(reliability);
+    e.qos.durability = Ros2Qos::Durability(durability);
+    e.qos.depth = int(depth);
+    return e;
+}
+
+QByteArray encodePublish(const PublishRequest& r)
+{
+    Writer w;
+    w.string(r.topic);
+    w.bytes(r.cdr);
+    return w.data();
+}
+
+std::optional<PublishRequest> decodePublish(const QByteArray& body)
+{
+    Reader r(body);
+    PublishRequest p;
+    p.topic = r.string();
+    p.cdr = r.bytes();
+    // a sample is at least its encapsulation header
+    if (!r.done() || p.topic.isEmpty() || p.cdr.size() < 4)
+        return std::nullopt;
+    return p;
 }
 
 } // namespace Ros2Protocol

@@ -35,6 +35,12 @@ enum class Kind : quint8 {
     Unwatch, ///< a topic
     KeepArrivals, ///< the bound (0: none)
     GraphInterval, ///< milliseconds
+    SetNode, ///< the node announced in ros_discovery_info: namespace and name (both empty: none)
+    Advertise, ///< an EndpointRequest: a writer
+    Unadvertise, ///< a topic
+    Publish, ///< a PublishRequest: one sample
+    Subscribe, ///< an EndpointRequest: a reader whose samples come back as Received
+    Unsubscribe, ///< a topic
     // child to parent
     Started = 64, ///< the participant is on the domain
     StartFailed, ///< why
@@ -44,6 +50,7 @@ enum class Kind : quint8 {
     Arrivals, ///< monitored topics' arrivals and the drop count
     MonitorFailed, ///< a topic and why
     Heartbeat, ///< nothing: the child's event loop runs
+    Received, ///< a SampleBatch of a subscribed topic (its drops: those of the child's queue)
 };
 bool isKnown(quint8 kind);
 
@@ -184,5 +191,24 @@ struct ArrivalBatch
 };
 QByteArray encodeArrivals(const ArrivalBatch& b);
 std::optional<ArrivalBatch> decodeArrivals(const QByteArray& body);
+
+/// A writer or reader this program makes (Ros2Participant::advertise(), subscribe()).
+struct EndpointRequest
+{
+    QString topic;
+    QString type; ///< ROS 2 name, `std_msgs/msg/String`
+    Ros2Qos qos; ///< reliability, volatile or transient local, depth 1..kMaxDepth
+};
+constexpr int kMaxDepth = 10000;
+QByteArray encodeEndpoint(const EndpointRequest& r);
+std::optional<EndpointRequest> decodeEndpoint(const QByteArray& body);
+
+struct PublishRequest
+{
+    QString topic;
+    QByteArray cdr; ///< with its encapsulation header
+};
+QByteArray encodePublish(const PublishRequest& r);
+std::optional<PublishRequest> decodePublish(const QByteArray& body);
 
 } // namespace Ros2Protocol

@@ -68,6 +68,7 @@ void body(const Frame& f)
         }
         break;
     case Kind::Samples:
+    case Kind::Received:
         if (const auto b = decodeSamples(f.body)) {
             const auto again = decodeSamples(encodeSamples(*b));
             FUZZ_CHECK(again && again->samples.size() == b->samples.size(), "samples that do not read back");
@@ -83,6 +84,20 @@ void body(const Frame& f)
     case Kind::Start:
         if (const auto s = decodeStart(f.body))
             FUZZ_CHECK(s->options.domain >= 0 && s->options.domain <= Ros2Options::kMaxDomain, "a domain out of range");
+        break;
+    case Kind::Advertise:
+    case Kind::Subscribe:
+        if (const auto e = decodeEndpoint(f.body)) {
+            const auto again = decodeEndpoint(encodeEndpoint(*e));
+            FUZZ_CHECK(again && again->topic == e->topic && again->qos == e->qos && e->qos.depth >= 1,
+                       "an endpoint request that does not read back");
+        }
+        break;
+    case Kind::Publish:
+        if (const auto p = decodePublish(f.body)) {
+            const auto again = decodePublish(encodePublish(*p));
+            FUZZ_CHECK(again && again->cdr == p->cdr && p->cdr.size() >= 4, "a sample to publish that does not read back");
+        }
         break;
     case Kind::Watch:
         if (const auto w = decodeWatch(f.body))

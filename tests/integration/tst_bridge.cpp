@@ -8,6 +8,7 @@
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "latency/latencyengine.h"
+#include "messageinbox.h"
 #include "mqtt/mqttlink.h"
 #include "peakrss.h"
 #include "ros/rosbytes.h"
@@ -30,23 +31,10 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-/// Everything that arrives on one side, by topic, newest last.
-struct Inbox
+/// Everything that arrives on one side, by topic, newest last, and the types ROS said.
+struct Inbox : MessageInbox
 {
-    std::mutex mutex;
-    QHash<QString, QList<QByteArray>> messages;
     QHash<QString, RosRawMessage> rosTypes;
-
-    void add(const QString& topic, const QByteArray& bytes)
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        messages[topic].append(bytes);
-    }
-    QList<QByteArray> on(const QString& topic)
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        return messages.value(topic);
-    }
 };
 
 template<typename M> RosRawMessage rosMessage(const M& message)

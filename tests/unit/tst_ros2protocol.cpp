@@ -84,7 +84,7 @@ private slots:
         QVERIFY(!tooLong.next()); // a stream that failed stays failed
 
         FrameReader unknown;
-        unknown.append(QByteArray("\0\0\0\0\x09", 5));
+        unknown.append(QByteArray("\0\0\0\0\x0e", 5)); // after the last request (Unsubscribe)
         QVERIFY(!unknown.next());
         QVERIFY(unknown.failed());
         FrameReader request; // a kind the parent sends is known, and refused by the parent's handler
@@ -209,6 +209,54 @@ private slots:
         s.rateHz = std::numeric_limits<double>::quiet_NaN();
         QVERIFY(!decodeStats(encodeStats({{u"/a"_s, s, false}})));
         QVERIFY(!decodeWatch(encodeWatch({u"/a"_s, 1, -1})));
+    }
+
+    void endpointRequestsReadBackAndRefuseWhatNoEndpointIs()
+    {
+        EndpointRequest e {u"/chatter"_s, u"std_msgs/msg/String"_s, {}};
+        e.qos.reliability = Ros2Qos::BestEffort;
+        e.qos.durability = Ros2Qos::TransientLocal;
+        e.qos.depth = 7;
+        const auto back = decodeEndpoint(encodeEndpoint(e));
+        QVERIFY(back);
+        QCOMPARE(back->topic, e.topic);
+        QCOMPARE(back->type, e.type);
+        QCOMPARE(back->qos, e.qos);
+        for (int depth : {0, -1, kMaxDepth + 1}) { // keep last 1..kMaxDepth only
+            EndpointRequest bad = e;
+            bad.qos.depth = depth;
+            QVERIFY2(!decodeEndpoint(encodeEndpoint(bad)), qPrintable(QString::number(depth)));
+        }
+        EndpointRequest transient = e;
+        transient.qos.durability = Ros2Qos::Transient; // not what a ROS 2 endpoint can be
+        QVERIFY(!decodeEndpoint(encodeEndpoint(transient)));
+        EndpointRequest noTopic = e;
+        noTopic.topic.clear();
+        QVERIFY(!decodeEndpoint(encodeEndpoint(noTopic)));
+        const QByteArray body = encodeEndpoint(e);
+        for (qsizetype cut = 0; cut < body.size(); ++cut)
+            QVERIFY(!decodeEndpoint(body.left(cut)));
+        QVERIFY(!decodeEndpoint(body + '\0'));
+
+        const PublishRequest p {u"/chatter"_s, QByteArray::fromHex("0001000006000000686f77647900")};
+        const auto got = decodePublish(encodePublish(p));
+        QVERIFY(got);
+        QCOMPARE(got->cdr, p.cdr);
+        QVERIFY(!decodePublish(encodePublish({u"/chatter"_s, QByteArray::fromHex("000100")}))); // no header
+        const QByteArray pb = encodePublish(p);
+        for (qsizetype cut = 0; cut < pb.size(); ++cut)
+            QVERIFY(!decodePublish(pb.left(cut)));
+        Writer huge; // a sample length far past the body
+        huge.string(u"/chatter"_s);
+        huge.u32(0xfffffff0u);
+        QVERIFY(!decodePublish(huge.data()));
+        // the new kinds are known; the one after the last of each direction is not
+        FrameReader r;
+        r.append(frame(Kind::Unsubscribe) + frame(Kind::Received));
+        QVERIFY(r.next());
+        QVERIFY(r.next());
+        QVERIFY(!isKnown(quint8(Kind::Unsubscribe) + 1));
+        QVERIFY(!isKnown(quint8(Kind::Received) + 1));
     }
 };
 

@@ -1,0 +1,276 @@
+// SPDX-License-Identifier: MIT
+// The ROS 2 reference bridge (`bridgescope bridge CONFIG --ros 2`) between nodes on Cyclone DDS
+// that speak as rmw_cyclonedds_cpp does (tests/ros2peer) and a real mosquitto: String,
+// PoseStamped (stamped) and a 0.18 MB PointCloud2 both ways. Its MQTT side byte for byte against
+// what mqtt_client v2.5 writes, the expected bytes made with Fast CDR as its RMW serializes
+// (tests/support/mqttclientros2.h); its DDS side as the peer receives it; its node in
+// ros_discovery_info; its timestamp_topic_prefix stamps and ~/latencies.
+#include "base/wallclock.h"
+#include "messageinbox.h"
+#include "mqtt/mqttlink.h"
+#include "mqttclientros2.h"
+#include "ros2/ros2participant.h"
+#include "ros2peer.h"
+#include "testservers.h"
+#include "wire/ros2definitions.h"
+#include "wire/rosmessage.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtEndian>
+
+using namespace Qt::StringLiterals;
+using MqttClientRos2::Cdr;
+
+namespace {
+/// What RTPS carries: the serialized sample and zeros up to a multiple of 4 (the peer's samples,
+/// as rmw_cyclonedds_cpp's; mqtt_client forwards the serialized message it takes, padding and all).
+QByteArray padded(QByteArray b)
+{
+    while (b.size() % 4)
+        b.append('\0');
+    return b;
+}
+
+/// geometry_msgs/msg/PoseStamped as the peer makes sample N: frame_id map, position (N, 2N, 0.5).
+QByteArray pose(int32_t sec, uint32_t nsec, double n)
+{
+    return MqttClientRos2::serialize([&](Cdr& cdr) {
+        cdr << sec << nsec << std::string("map") << n << 2 * n << 0.5 << 0.0 << 0.0 << 0.0 << 1.0;
+    });
+}
+
+/// sensor_msgs/msg/PointCloud2 of `points` points x, y, z, intensity (FLOAT32), little endian.
+QByteArray cloud(int32_t sec, uint32_t points, float n)
+{
+    return MqttClientRos2::serialize([&](Cdr& cdr) {
+        cdr << sec << uint32_t(0) << std::string("lidar") << uint32_t(1) << points << uint32_t(4);
+        const char* names[] = {"x", "y", "z", "intensity"};
+        for (uint32_t i = 0; i < 4; ++i)
+            cdr << std::string(names[i]) << uint32_t(4 * i) << uint8_t(7) << uint32_t(1);
+        std::vector<uint8_t> data(points * 16);
+        for (uint32_t i = 0; i < points; ++i) {
+            const float v[4] = {float(i), float(2 * i), n, 0.5f};
+            std::memcpy(data.data() + 16 * i, v, 16);
+        }
+        cdr << false << uint32_t(16) << uint32_t(points * 16) << data << true;
+    });
+}
+
+QString field(const RosValue& v, const QString& path)
+{
+    const RosValue* f = v.find(path);
+    return f ? f->value.toString() : u"<missing %1>"_s.arg(path);
+}
+
+constexpr uint32_t kCloudPoints = 11520; // 184,320 bytes of points: 0.18 MB
+} // namespace
+
+class TestRos2Bridge : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+    QTemporaryDir m_dir;
+    int m_domain = 0;
+    std::unique_ptr<MqttLink> m_mqtt; ///< the test's MQTT client, subscribed to everything
+    MessageInbox m_fromMqtt;
+    RosTypeRegistry m_types = Ros2Definitions::registry();
+
+    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QStringList& options = {})
+    {
+        const QString path = m_dir.filePath(u"bridge.yaml"_s);
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly))
+            f.write(config);
+        f.close();
+        auto p = std::make_unique<QProcess>();
+        p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        p->start(QStringLiteral(BRIDGESCOPE_BINARY),
+                 QStringList {u"bridge"_s, path, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(m_domain),
+                              u"--ros-localhost-only"_s, u"--broker"_s, m_servers.brokerUrl()}
+                     + options);
+        return p;
+    }
+
+    static void stop(std::unique_ptr<QProcess>& p)
+    {
+        p->terminate();
+        if (!p->waitForFinished(10000))
+            p->kill();
+        p->waitForFinished(2000);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
+        m_domain = Ros2Peer::freeDomain(200, 230);
+        MqttProfile profile = MqttProfile::fromUrl(m_servers.brokerUrl());
+        m_mqtt = std::make_unique<MqttLink>(profile);
+        MessageInbox* inbox = &m_fromMqtt;
+        m_mqtt->setMessageHandler([inbox](const QString& t, const QByteArray& p, qint64) { inbox->add(t, p); });
+        m_mqtt->addSubscription(u"#"_s, 1);
+        QString error;
+        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+    }
+
+    void rosToMqttAsV25Writes()
+    {
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      ros2mqtt:\n"
+                                  "        ros_topics: [/chatter, /pose, /cloud]\n"
+                                  "        /chatter: {mqtt_topic: out/chatter}\n"
+                                  "        /pose: {mqtt_topic: out/pose, inject_timestamp: true,"
+                                  " timestamp_topic_prefix: /bench/bridge}\n"
+                                  "        /cloud: {mqtt_topic: out/cloud, advanced: {mqtt: {qos: 1}}}\n";
+        auto b = bridge(config);
+        Ros2Participant stamps; // the suite's stamps, as a Measure page would read them
+        QList<QPair<QString, Ros2Sample>> got;
+        connect(&stamps, &Ros2Participant::received, this,
+                [&got](const QString& t, const Ros2Sample& s) { got.append({t, s}); });
+        stamps.subscribe(u"/bench/bridge/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
+        stamps.subscribe(u"/bench/bridge/out"_s, u"benchmarking_suite/msg/TimeStamped"_s);
+        QString error;
+        QVERIFY2(stamps.start({m_domain, true}, &error), qPrintable(error));
+        const qint64 before = wallClockNs();
+        Ros2Peer talker(m_domain, {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:20"_s,
+                                   u"--pub"_s, u"/pose:geometry_msgs/msg/PoseStamped:20"_s, u"--pub"_s,
+                                   u"/cloud:sensor_msgs/msg/PointCloud2:10"_s, u"--size"_s,
+                                   QString::number(kCloudPoints * 16), u"--show-discovery"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/chatter"_s).size() >= 3 && m_fromMqtt.on(u"out/pose"_s).size() >= 3
+                                     && m_fromMqtt.on(u"out/cloud"_s).size() >= 2,
+                                 15000);
+        const qint64 after = wallClockNs();
+        // the announcements, byte for byte (name and stamped only), retained
+        QCOMPARE(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/chatter"_s).value(0),
+                 MqttClientRos2::announcement("std_msgs/msg/String", false));
+        QCOMPARE(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/pose"_s).value(0),
+                 MqttClientRos2::announcement("geometry_msgs/msg/PoseStamped", true));
+        QCOMPARE(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/cloud"_s).value(0),
+                 MqttClientRos2::announcement("sensor_msgs/msg/PointCloud2", false));
+        // the messages as the peer serialized them
+        for (const QByteArray& m : m_fromMqtt.on(u"out/chatter"_s)) {
+            const qsizetype n = m.indexOf("hello ");
+            QVERIFY(n == 8);
+            const std::string text = m.mid(8, m.indexOf('\0', 8) - 8).toStdString();
+            QCOMPARE(m, padded(MqttClientRos2::string(text)));
+        }
+        // stamped: the 12-byte CDR send time, then the message
+        for (const QByteArray& m : m_fromMqtt.on(u"out/pose"_s)) {
+            QVERIFY(m.size() > 12);
+            const qint32 sec = qFromLittleEndian<qint32>(m.constData() + 4);
+            const quint32 nsec = qFromLittleEndian<quint32>(m.constData() + 8);
+            const qint64 sent = qint64(sec) * 1'000'000'000 + nsec;
+            QVERIFY(sent >= before && sent <= after);
+            QCOMPARE(m.left(12), MqttClientRos2::stamp(sec, nsec));
+            const auto v = RosMessageDecoder::decodeCdr(m_types, u"geometry_msgs/msg/PoseStamped"_s, m.mid(12));
+            QVERIFY(v);
+            QCOMPARE(field(*v, u"header.frame_id"_s), u"map"_s);
+            const double x = field(*v, u"pose.position.x"_s).toDouble();
+            QCOMPARE(m.mid(12), pose(field(*v, u"header.stamp.sec"_s).toInt(),
+                                     field(*v, u"header.stamp.nanosec"_s).toUInt(), x));
+        }
+        for (const QByteArray& m : m_fromMqtt.on(u"out/cloud"_s)) {
+            const auto v = RosMessageDecoder::decodeCdr(m_types, u"sensor_msgs/msg/PointCloud2"_s, m);
+            QVERIFY(v);
+            QCOMPARE(field(*v, u"width"_s).toUInt(), kCloudPoints);
+            QCOMPARE(v->find(u"data"_s)->arrayLength, kCloudPoints * 16);
+        }
+        // the node, as mqtt_client's is named, with its reader of each topic and the stamp writers
+        QVERIFY2(talker.waitFor(u"node / mqtt_client 3 2"_s), qPrintable(talker.lines().join(u'\n')));
+        // the suite's stamps: the pose's header.stamp as the sample, in before out
+        QTRY_VERIFY_WITH_TIMEOUT(got.size() >= 4, 10000);
+        QHash<qint64, qint64> in;
+        for (const auto& [topic, s] : std::as_const(got)) {
+            const auto v = RosMessageDecoder::decodeCdr(m_types, u"std_msgs/msg/Header"_s, s.bytes);
+            QVERIFY(s.bytes.size() >= 28);
+            const qint64 sample = qint64(qFromLittleEndian<qint32>(s.bytes.constData() + 4)) * 1'000'000'000
+                + qFromLittleEndian<quint32>(s.bytes.constData() + 8);
+            QVERIFY(sample >= before - 1'000'000'000 && sample <= after);
+            const qsizetype timeAt = s.bytes.size() - 8;
+            const qint64 time = qint64(qFromLittleEndian<qint32>(s.bytes.constData() + timeAt)) * 1'000'000'000
+                + qFromLittleEndian<quint32>(s.bytes.constData() + timeAt + 4);
+            if (topic.endsWith(u"/in"_s))
+                in.insert(sample, time);
+            else if (in.contains(sample))
+                QVERIFY(in.value(sample) <= time);
+        }
+        stop(b);
+    }
+
+    void mqttToRosAsV25Reads()
+    {
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      mqtt2ros:\n"
+                                  "        mqtt_topics: [in/chatter, in/pose, in/cloud]\n"
+                                  "        in/chatter: {ros_topic: /chatter_back}\n"
+                                  "        in/pose: {ros_topic: /pose_back}\n"
+                                  "        in/cloud: {ros_topic: /cloud_back, ros_type: sensor_msgs/msg/PointCloud2,"
+                                  " advanced: {ros: {queue_size: 5, qos: {reliability: best_effort}}}}\n";
+        // announced before the bridge runs (retained), as a v2.5 bridge on the other side leaves them
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/chatter"_s,
+                        MqttClientRos2::announcement("std_msgs/msg/String", false), 1, true);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s,
+                        MqttClientRos2::announcement("geometry_msgs/msg/PoseStamped", true), 1, true);
+        auto b = bridge(config, {u"--name"_s, u"/lab/bridge2"_s});
+        Ros2Participant latencies;
+        QList<double> latency;
+        connect(&latencies, &Ros2Participant::received, this, [&latency](const QString&, const Ros2Sample& s) {
+            if (s.bytes.size() == 12)
+                latency.append(qFromLittleEndian<double>(s.bytes.constData() + 4));
+        });
+        // mqtt_client's "~/latencies/" + "/pose_back", its "//" made one
+        latencies.subscribe(u"/lab/bridge2/latencies/pose_back"_s, u"std_msgs/msg/Float64"_s);
+        QString error;
+        QVERIFY2(latencies.start({m_domain, true}, &error), qPrintable(error));
+        Ros2Peer listener(m_domain, {u"--node"_s, u"/listener"_s, u"--sub"_s, u"/chatter_back:std_msgs/msg/String"_s,
+                                     u"--sub"_s, u"/pose_back:geometry_msgs/msg/PoseStamped"_s, u"--sub"_s,
+                                     u"/cloud_back:sensor_msgs/msg/PointCloud2:best_effort"_s, u"--cdr"_s,
+                                     u"--show-discovery"_s});
+        QVERIFY2(listener.waitFor(u"ready"_s), qPrintable(listener.errors()));
+        // the fixed type's writer exists at once; the others once their announcement came
+        for (const QString& t : {u"/chatter_back"_s, u"/pose_back"_s, u"/cloud_back"_s})
+            QVERIFY2(listener.waitFor(u"matched %1 1"_s.arg(t)), qPrintable(listener.lines().join(u'\n')));
+        const QByteArray cloudBytes = cloud(1700000000, kCloudPoints, 7.0f);
+        for (int i = 1; i <= 5; ++i) {
+            const qint64 now = wallClockNs();
+            m_mqtt->publish(u"in/chatter"_s, MqttClientRos2::string("back " + std::to_string(i)), 1, false);
+            m_mqtt->publish(u"in/pose"_s,
+                            MqttClientRos2::stamped(int32_t(now / 1'000'000'000), uint32_t(now % 1'000'000'000),
+                                                    pose(1700000000, 0, i)),
+                            1, false);
+            m_mqtt->publish(u"in/cloud"_s, cloudBytes, 1, false);
+            QTest::qWait(50);
+        }
+        QVERIFY2(listener.waitFor(u"recv /chatter_back 5 back 5"_s), qPrintable(listener.lines().join(u'\n')));
+        QVERIFY2(listener.waitFor(u"recv /pose_back 5 x=5"_s), qPrintable(listener.lines().join(u'\n')));
+        QVERIFY2(listener.waitFor(u"recv /cloud_back"_s), qPrintable(listener.lines().join(u'\n')));
+        const QStringList lines = listener.lines();
+        // on DDS, the message as it came, without the stamp: "back 1" is 4 + 4 + 7 bytes (16 on the wire)
+        QVERIFY2(lines.contains(u"cdr /chatter_back 1 16 00 01 00 00 07 00 00 00 62 61 63 6b 20 31 00 00"_s)
+                     || lines.filter(u"cdr /chatter_back 1 16 00 01 00 00 07 00 00 00 62 61 63 6b 20 31"_s).size() == 1,
+                 qPrintable(lines.join(u'\n')));
+        QVERIFY2(lines.contains(u"recv /cloud_back 1 width=%1 data=%2"_s.arg(kCloudPoints).arg(kCloudPoints * 16)),
+                 qPrintable(lines.join(u'\n')));
+        QVERIFY(lines.contains(u"node /lab bridge2 0 4"_s)); // three topics and the latencies
+        QVERIFY(lines.contains(u"endpoint pub rt/lab/bridge2/latencies/pose_back std_msgs::msg::dds_::Float64_"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(!latency.isEmpty(), 5000);
+        for (const double l : std::as_const(latency))
+            QVERIFY2(l >= 0 && l < 2, qPrintable(QString::number(l)));
+        stop(b);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/chatter"_s, {}, 1, true); // no retained leftovers
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s, {}, 1, true);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2Bridge)
+#include "tst_ros2bridge.moc"

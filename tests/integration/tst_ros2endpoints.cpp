@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// Bridgescope's own ROS 2 endpoints (Ros2Participant's setNode(), advertise(), publish(),
+// subscribe()) against nodes built on Cyclone DDS that speak as rmw_cyclonedds_cpp does
+// (tests/ros2peer): what we write is what such a node receives; what it writes comes to received()
+// as soon as it arrives; our node is in ros_discovery_info with its endpoints, and in our own graph;
+// reliability matches as DDS says (a reliable reader never matches a best-effort writer).
+#include "base/wallclock.h"
+#include "ros2/ros2participant.h"
+#include "ros2peer.h"
+
+#include <QSignalSpy>
+#include <QtEndian>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// A std_msgs/msg/String as rclcpp serializes it: header, length with the NUL, bytes, NUL.
+QByteArray stringCdr(const QString& text)
+{
+    const QByteArray utf8 = text.toUtf8();
+    QByteArray out = QByteArray::fromHex("00010000");
+    char len[4];
+    qToLittleEndian(quint32(utf8.size() + 1), len);
+    out.append(len, 4);
+    out += utf8;
+    out.append('\0');
+    return out;
+}
+
+/// The text of a std_msgs/msg/String sample, or "<bad>".
+QString stringOf(const QByteArray& cdr)
+{
+    if (cdr.size() < 8 || cdr.left(2) != QByteArray::fromHex("0001"))
+        return u"<bad>"_s;
+    const quint32 n = qFromLittleEndian<quint32>(cdr.constData() + 4);
+    if (n == 0 || qsizetype(n) > cdr.size() - 8)
+        return u"<bad>"_s;
+    return QString::fromUtf8(cdr.mid(8, n - 1));
+}
+
+Ros2Qos qos(Ros2Qos::Reliability r)
+{
+    Ros2Qos q;
+    q.reliability = r;
+    return q;
+}
+
+const Ros2Node* node(const Ros2Graph& g, const QString& name)
+{
+    for (const Ros2Node& n : g.nodes)
+        if (n.name == name)
+            return &n;
+    return nullptr;
+}
+} // namespace
+
+class TestRos2Endpoints : public QObject
+{
+    Q_OBJECT
+    int m_domain = 0;
+
+private slots:
+    void initTestCase() { m_domain = Ros2Peer::freeDomain(150, 180); }
+
+    void ourWriterReachesANode()
+    {
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        QVERIFY(!p.publish(u"/chatter"_s, stringCdr(u"early"_s))); // not advertised
+        QCOMPARE(p.publishDropped(), 1u);
+        p.advertise(u"/chatter"_s, u"std_msgs/msg/String"_s);
+        Ros2Peer listener(m_domain, {u"--node"_s, u"/listener"_s, u"--sub"_s, u"/chatter:std_msgs/msg/String"_s,
+                                     u"--cdr"_s});
+        QVERIFY2(listener.waitFor(u"ready"_s), qPrintable(listener.errors()));
+        QVERIFY2(listener.waitFor(u"matched /chatter 1"_s), qPrintable(listener.errors()));
+        for (int i = 1; i <= 5; ++i) {
+            QVERIFY(p.publish(u"/chatter"_s, stringCdr(u"from bridgescope %1"_s.arg(i))));
+            QTest::qWait(20);
+        }
+        QVERIFY2(listener.waitFor(u"recv /chatter 5 "_s), qPrintable(listener.lines().join(u'\n')));
+        const QStringList lines = listener.lines();
+        for (int i = 1; i <= 5; ++i)
+            QVERIFY2(lines.contains(u"recv /chatter %1 from bridgescope %1"_s.arg(i)), qPrintable(lines.join(u'\n')));
+        // the bytes as sent: the header, the length 18 + 1, the text (27 bytes; RTPS pads to 28)
+        QVERIFY2(lines.filter(u"cdr /chatter 1 "_s).value(0).startsWith(u"cdr /chatter 1 2"_s)
+                     && lines.filter(u"cdr /chatter 1 "_s).value(0).contains(u" 00 01 00 00 13 00 00 00 66 72"_s),
+                 qPrintable(lines.join(u'\n')));
+        QCOMPARE(p.publishDropped(), 1u);
+    }
+
+    void aNodesSamplesComeAsTheyArrive()
+    {
+        Ros2Participant p;
+        QSignalSpy received(&p, &Ros2Participant::received);
+        p.subscribe(u"/chatter"_s, u"std_msgs/msg/String"_s); // before start(): made once it runs
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        Ros2Peer talker(m_domain, {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:50"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() >= 10, 15000);
+        const qint64 now = wallClockNs();
+        int previous = 0;
+        for (const QList<QVariant>& r : std::as_const(received)) {
+            QCOMPARE(r.at(0).toString(), u"/chatter"_s);
+            const auto s = r.at(1).value<Ros2Sample>();
+            const QString text = stringOf(s.bytes);
+            QVERIFY2(text.startsWith(u"hello "_s), qPrintable(text));
+            const int n = text.mid(6).toInt();
+            QVERIFY2(n > previous, qPrintable(text)); // in order, none twice
+            previous = n;
+            QVERIFY(s.receivedNs > now - 20'000'000'000 && s.receivedNs <= now);
+        }
+        // received() as each sample comes, not a poll later: samples sent every 20 ms arrive
+        // spread out, not in bursts of a poll interval
+        const auto first = received.at(received.size() - 5).at(1).value<Ros2Sample>().receivedNs;
+        const auto last = received.last().at(1).value<Ros2Sample>().receivedNs;
+        QVERIFY2(last - first > 40'000'000, qPrintable(QString::number(last - first)));
+        QCOMPARE(p.droppedReceived(), 0u);
+        p.unsubscribe(u"/chatter"_s);
+        QTest::qWait(300);
+        const qsizetype after = received.size();
+        QTest::qWait(300);
+        QCOMPARE(received.size(), after);
+    }
+
+    void ourNodeIsInTheGraph()
+    {
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        p.setNode(u"/lab"_s, u"mqtt_client"_s);
+        p.advertise(u"/out"_s, u"std_msgs/msg/String"_s);
+        p.advertise(u"/pose"_s, u"geometry_msgs/msg/PoseStamped"_s);
+        p.subscribe(u"/in"_s, u"std_msgs/msg/String"_s);
+        Ros2Peer watcher(m_domain, {u"--node"_s, u"/watcher"_s, u"--show-discovery"_s});
+        QVERIFY2(watcher.waitFor(u"node /lab mqtt_client 1 2"_s), qPrintable(watcher.lines().join(u'\n')));
+        const QStringList lines = watcher.lines();
+        QVERIFY(lines.contains(u"endpoint pub rt/out std_msgs::msg::dds_::String_"_s));
+        QVERIFY(lines.contains(u"endpoint pub rt/pose geometry_msgs::msg::dds_::PoseStamped_"_s));
+        QVERIFY(lines.contains(u"endpoint sub rt/in std_msgs::msg::dds_::String_"_s));
+        // and our own graph shows it, as ROS 2 tools show a node its own endpoints
+        QTRY_VERIFY_WITH_TIMEOUT(node(p.graph(), u"/lab/mqtt_client"_s), 5000);
+        const Ros2Node* n = node(p.graph(), u"/lab/mqtt_client"_s);
+        QCOMPARE(n->publishes, (QStringList {u"/out"_s, u"/pose"_s}));
+        QCOMPARE(n->subscribes, QStringList {u"/in"_s});
+        // an endpoint that goes is announced without it
+        p.unadvertise(u"/pose"_s);
+        QVERIFY2(watcher.waitFor(u"node /lab mqtt_client 1 1"_s), qPrintable(watcher.lines().join(u'\n')));
+        QTRY_VERIFY_WITH_TIMEOUT(node(p.graph(), u"/lab/mqtt_client"_s)->publishes == QStringList {u"/out"_s}, 5000);
+    }
+
+    void reliabilityMatchesAsDdsSays()
+    {
+        Ros2Participant p;
+        QSignalSpy received(&p, &Ros2Participant::received);
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        // our writers: best effort to a reliable reader never matches, reliable does
+        p.advertise(u"/strict"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
+        p.advertise(u"/fine"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
+        // our readers: reliable of a best-effort writer never matches, best effort does
+        p.subscribe(u"/lossy"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
+        p.subscribe(u"/lossy2"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
+        Ros2Peer peer(m_domain, {u"--sub"_s, u"/strict:std_msgs/msg/String:reliable"_s, u"--sub"_s,
+                                 u"/fine:std_msgs/msg/String:reliable"_s, u"--pub"_s,
+                                 u"/lossy:std_msgs/msg/String:50:best_effort"_s, u"--pub"_s,
+                                 u"/lossy2:std_msgs/msg/String:50:best_effort"_s});
+        QVERIFY2(peer.waitFor(u"matched /fine 1"_s), qPrintable(peer.lines().join(u'\n')));
+        QVERIFY2(peer.waitFor(u"matched /lossy2 1"_s), qPrintable(peer.lines().join(u'\n')));
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() >= 5, 10000);
+        QTest::qWait(1000);
+        for (const QList<QVariant>& r : std::as_const(received))
+            QCOMPARE(r.at(0).toString(), u"/lossy2"_s);
+        QVERIFY(!peer.lines().contains(u"matched /strict 1"_s));
+        QVERIFY(!peer.lines().contains(u"matched /lossy 1"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2Endpoints)
+#include "tst_ros2endpoints.moc"

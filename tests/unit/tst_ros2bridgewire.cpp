@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// What the ROS 2 reference bridge writes besides whole messages, against Fast CDR as the RMW
+// serializes (tests/support/mqttclientros2.h): the suite's ROS 2 TimeStamped, the Float64 of
+// ~/latencies, std_msgs primitives from and to text as mqtt_client v2.5 converts them
+// (mqtt2primitive(), fixedMqtt2PrimitiveRos(), primitiveRosMessageToString()), JSON to CDR.
+#include "bridge/ros2bridgewire.h"
+#include "mqttclientros2.h"
+#include "wire/ros2definitions.h"
+
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+using MqttClientRos2::Cdr;
+using namespace Ros2BridgeWire;
+
+class TestRos2BridgeWire : public QObject
+{
+    Q_OBJECT
+    RosTypeRegistry m_types = Ros2Definitions::registry();
+
+private slots:
+    void timeStampedAndFloat64AsRclcppSerializes()
+    {
+        StampCodec::Decoded d;
+        d.sampleNs = 1'700'000'000'123'456'789;
+        d.timeNs = 1'700'000'001'000'000'005;
+        d.seq = 42; // a ROS 2 Header has none: not written
+        d.frameId = u"lidar"_s;
+        QCOMPARE(encodeTimeStamped(d), MqttClientRos2::serialize([](Cdr& cdr) {
+                     cdr << int32_t(1'700'000'000) << uint32_t(123'456'789) << std::string("lidar")
+                         << int32_t(1'700'000'001) << uint32_t(5);
+                 }));
+        d.frameId.clear();
+        QCOMPARE(encodeTimeStamped(d), MqttClientRos2::serialize([](Cdr& cdr) {
+                     cdr << int32_t(1'700'000'000) << uint32_t(123'456'789) << std::string()
+                         << int32_t(1'700'000'001) << uint32_t(5);
+                 }));
+        QCOMPARE(encodeFloat64(0.0125), MqttClientRos2::serialize([](Cdr& cdr) { cdr << 0.0125; }));
+        QCOMPARE(headerStampNs(encodeTimeStamped(d)), std::optional<qint64>(d.sampleNs));
+        QCOMPARE(headerStampNs(MqttClientRos2::serialize([](Cdr& cdr) { cdr << int32_t(3) << uint32_t(4); },
+                                                         Cdr::BIG_ENDIANNESS)),
+                 std::optional<qint64>(3'000'000'004));
+        QVERIFY(!headerStampNs(QByteArray::fromHex("0001000001000000"))); // cut
+        QVERIFY(startsWithHeader(m_types, u"geometry_msgs/msg/PoseStamped"_s));
+        QVERIFY(!startsWithHeader(m_types, u"std_msgs/msg/String"_s));
+        QVERIFY(!startsWithHeader(m_types, u"unknown_msgs/msg/X"_s));
+    }
+
+    void primitivesAsV25Converts()
+    {
+        // MQTT text to ROS: Bool, Int32, Float32, else String
+        const auto check = [](const QByteArray& text, const char* type, const QByteArray& cdr) {
+            const Typed t = primitiveFromText(text);
+            QCOMPARE(t.type, QString::fromLatin1(type));
+            QCOMPARE(t.cdr, cdr);
+        };
+        check("TRUE", "std_msgs/msg/Bool", MqttClientRos2::serialize([](Cdr& cdr) { cdr << true; }));
+        check("-42", "std_msgs/msg/Int32", MqttClientRos2::serialize([](Cdr& cdr) { cdr << int32_t(-42); }));
+        check("2.5", "std_msgs/msg/Float32", MqttClientRos2::serialize([](Cdr& cdr) { cdr << 2.5f; }));
+        check("99999999999", "std_msgs/msg/Float32",
+              MqttClientRos2::serialize([](Cdr& cdr) { cdr << 99999999999.0f; })); // stoi: out of range
+        check("hello", "std_msgs/msg/String", MqttClientRos2::string("hello"));
+        // fixed types
+        QCOMPARE(fixedPrimitive(m_types, u"std_msgs/msg/Bool"_s, "1"),
+                 std::optional<QByteArray>(MqttClientRos2::serialize([](Cdr& cdr) { cdr << true; })));
+        QCOMPARE(fixedPrimitive(m_types, u"std_msgs/msg/UInt16"_s, "513"),
+                 std::optional<QByteArray>(MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint16_t(513); })));
+        QCOMPARE(fixedPrimitive(m_types, u"std_msgs/msg/Float64"_s, "0.5"),
+                 std::optional<QByteArray>(MqttClientRos2::serialize([](Cdr& cdr) { cdr << 0.5; })));
+        QVERIFY(!fixedPrimitive(m_types, u"std_msgs/msg/UInt8"_s, "256"));
+        QVERIFY(!fixedPrimitive(m_types, u"std_msgs/msg/Bool"_s, "yes"));
+        QVERIFY(!fixedPrimitive(m_types, u"std_msgs/msg/Int32"_s, "12abc"));
+        // ROS to MQTT text
+        QCOMPARE(primitiveText(m_types, u"std_msgs/msg/String"_s, MqttClientRos2::string("hi there")),
+                 std::optional<QByteArray>("hi there"));
+        QCOMPARE(primitiveText(m_types, u"std_msgs/msg/Float32"_s,
+                               MqttClientRos2::serialize([](Cdr& cdr) { cdr << 2.5f; })),
+                 std::optional<QByteArray>("2.500000")); // std::to_string
+        QCOMPARE(primitiveText(m_types, u"std_msgs/msg/Int64"_s,
+                               MqttClientRos2::serialize([](Cdr& cdr) { cdr << int64_t(-7); })),
+                 std::optional<QByteArray>("-7"));
+        QCOMPARE(primitiveText(m_types, u"std_msgs/msg/Bool"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << false; })),
+                 std::optional<QByteArray>("false"));
+        QVERIFY(!primitiveText(m_types, u"geometry_msgs/msg/Point"_s, QByteArray(28, '\0')));
+        QVERIFY(!primitiveText(m_types, u"std_msgs/msg/Int32"_s, QByteArray::fromHex("000100")));
+    }
+
+    void jsonToCdr()
+    {
+        QString error;
+        QCOMPARE(fromJson(m_types, u"geometry_msgs/msg/Point"_s, "{\"x\": 1.5, \"y\": -2, \"z\": 0}", &error),
+                 std::optional<QByteArray>(MqttClientRos2::serialize([](Cdr& cdr) { cdr << 1.5 << -2.0 << 0.0; })));
+        QVERIFY(!fromJson(m_types, u"geometry_msgs/msg/Point"_s, "[1, 2]", &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!fromJson(m_types, u"geometry_msgs/msg/Point"_s, "{\"w\": 1}", &error)); // no such field
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2BridgeWire)
+#include "tst_ros2bridgewire.moc"
