@@ -307,6 +307,7 @@ private slots:
         QVERIFY(mdFile.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(mdFile.readAll());
         QVERIFY2(text.contains(u"](r-bridge-ecdf.svg)"_s), qPrintable(text));
+        QVERIFY2(text.contains(u"| ROS 1 | complete |"_s), qPrintable(text)); // which ROS the cell ran on
         QVERIFY(QFile::exists(out + u"/r-bridge-ecdf.svg"_s));
         const qsizetype table = text.indexOf(u"## Per stage (Table I layout"_s);
         QVERIFY2(table >= 0, qPrintable(text));
