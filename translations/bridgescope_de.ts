@@ -5655,12 +5655,6 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>Status 0 auch dann, wenn kein Zeitstempel aufgezeichnet wurde (ein absichtlich leerer Lauf).</translation>
     </message>
     <message>
-        <source>Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.
-Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not be written, 2 bad options.</source>
-        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird. Ein nicht erreichbarer Broker oder Master, oder gar kein Zeitstempel, wird innerhalb von 5 s gemeldet; es wird weiter versucht.
-Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
-    </message>
-    <message>
         <source>nothing was recorded (%1); --allow-empty accepts an empty run</source>
         <translation>nichts wurde aufgezeichnet (%1); --allow-empty lässt einen leeren Lauf zu</translation>
     </message>
@@ -5679,6 +5673,16 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
     <message>
         <source>stamp</source>
         <translation>Zeitstempel</translation>
+    </message>
+    <message>
+        <source>Records a measurement run: every stamp of the pipeline from ROS 1, ROS 2 (--ros 2 or both) and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.
+Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not be written, 2 bad options.</source>
+        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS 1, ROS 2 (--ros 2 oder both) und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird. Ein nicht erreichbarer Broker oder Master, oder gar kein Zeitstempel, wird innerhalb von 5 s gemeldet; es wird weiter versucht.
+Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery restarted: the DDS process %1</source>
+        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
     </message>
 </context>
 <context>
@@ -7388,6 +7392,14 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>JSON stamp&apos;s &quot;sample&quot; is empty: it names no sample</source>
         <translation>&quot;sample&quot; des JSON-Stempels ist leer: er benennt kein Sample</translation>
+    </message>
+    <message>
+        <source>not CDR: the encapsulation header is %1</source>
+        <translation>kein CDR: der Kapselungskopf ist %1</translation>
+    </message>
+    <message>
+        <source>TimeStamped holds a time before 1970</source>
+        <translation>TimeStamped enthält eine Zeit vor 1970</translation>
     </message>
 </context>
 <context>

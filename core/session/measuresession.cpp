@@ -6,6 +6,7 @@
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosstampsource.h"
+#include "ros2/ros2stampsource.h"
 #include "session/livesession.h"
 #include "wire/stampcodec.h"
 
@@ -18,6 +19,7 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
     : QObject(parent)
     , m_live(live)
     , m_ros(new RosStampSource(this))
+    , m_ros2(new Ros2StampSource(live->ros2(), this))
     , m_stats(new LatencyStatsModel(this))
     , m_recorder(new RunRecorder(this))
 {
@@ -39,6 +41,9 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
     connect(live, &LiveSession::drained, this, &MeasureSession::onDrained);
     connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &MeasureSession::onGraph);
     connect(live->rosGraph(), &RosGraphPoller::masterRestarted, m_ros, &RosStampSource::resubscribeAll);
+    connect(live->ros2(), &Ros2Participant::graphChanged, this, &MeasureSession::onRos2Graph);
+    if (live->isRos2Running())
+        onRos2Graph(live->ros2()->graph());
     m_ros->setMasterUri(live->rosMasterUri());
     m_stats->refresh(m_engine);
 }
@@ -60,13 +65,43 @@ void MeasureSession::onGraph(const RosGraph& graph)
     updateSubscriptions();
 }
 
+void MeasureSession::onRos2Graph(const Ros2Graph& graph)
+{
+    QSet<QString> stamps;
+    QSet<QString> latencies;
+    for (const Ros2Topic& t : graph.topics) {
+        if (t.types.contains(QLatin1StringView(StampCodec::ros2TypeName())))
+            stamps.insert(t.name);
+        else if (t.types.contains(u"std_msgs/msg/Float64"_s) && t.name.contains(u"/latencies/"_s))
+            latencies.insert(t.name);
+    }
+    if (stamps == m_ros2StampTopics && latencies == m_ros2LatencyTopics)
+        return;
+    m_ros2StampTopics = stamps;
+    m_ros2LatencyTopics = latencies;
+    updateSubscriptions();
+}
+
+QString MeasureSession::ros2StampName(const QString& topic, const QSet<QString>& ros1Stamps,
+                                      const Pipeline& pipeline)
+{
+    const QString prefixed = ros2Prefix() + topic;
+    return ros1Stamps.contains(topic) || pipeline.indexOf(prefixed) >= 0 ? prefixed : topic;
+}
+
 void MeasureSession::updateSubscriptions()
 {
     QSet<QString> stamps = m_graphStampTopics;
-    // The pipeline's topics too, before the master lists them (ROS names start with '/').
+    // The pipeline's topics too, before the master lists them (ROS names start with '/'); those
+    // named for the ROS 2 graph only ("ros2:/topic") are not asked of the master.
     for (const QString& t : m_engine.pipeline().topics())
-        stamps.insert(t.startsWith(u'/') ? t : u'/' + t);
+        if (!t.startsWith(ros2Prefix()))
+            stamps.insert(t.startsWith(u'/') ? t : u'/' + t);
     m_ros->setTopics(stamps, m_graphLatencyTopics);
+    QHash<QString, QString> ros2;
+    for (const QString& t : std::as_const(m_ros2StampTopics))
+        ros2.insert(t, ros2StampName(t, m_graphStampTopics, m_engine.pipeline()));
+    m_ros2->setTopics(ros2, m_ros2LatencyTopics);
 }
 
 void MeasureSession::onDrained(qint64 nowNs)
@@ -79,6 +114,7 @@ void MeasureSession::onDrained(qint64 nowNs)
     std::vector<LatencyValue> latencies = m_ros->takeLatencies();
     latencies.insert(latencies.end(), m_pendingLatencies.begin(), m_pendingLatencies.end());
     m_pendingLatencies.clear();
+    m_ros2->take(stamps, latencies);
     if (m_showingRun)
         return; // a recorded run is on screen: live stamps are not measured meanwhile
     m_recorder->add(stamps, latencies, nowNs);
@@ -195,21 +231,22 @@ void MeasureSession::reset()
 
 quint64 MeasureSession::malformedStamps() const
 {
-    return m_mqttDecoder.malformed() + m_ros->malformed() + m_ros->wrongType();
+    return m_mqttDecoder.malformed() + m_ros->malformed() + m_ros->wrongType() + m_ros2->malformed();
 }
 
 QHash<QString, quint64> MeasureSession::malformedStampsByTopic() const
 {
     QHash<QString, quint64> all = m_ros->malformedByTopic();
-    for (auto it = m_mqttDecoder.malformedByTopic().cbegin(); it != m_mqttDecoder.malformedByTopic().cend(); ++it)
-        all[it.key()] += it.value();
+    for (const QHash<QString, quint64>* more : {&m_mqttDecoder.malformedByTopic(), &m_ros2->malformedByTopic()})
+        for (auto it = more->cbegin(); it != more->cend(); ++it)
+            all[it.key()] += it.value();
     return all;
 }
 
 QString MeasureSession::lastStampError() const
 {
     QStringList both;
-    for (const QString& e : {m_ros->lastError(), m_mqttDecoder.lastError()})
+    for (const QString& e : {m_ros->lastError(), m_ros2->lastError(), m_mqttDecoder.lastError()})
         if (!e.isEmpty())
             both << e;
     return both.join(u"; ");

@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+// Issue 34: stamps from a ROS 2 graph. A Cyclone DDS node (tests/ros2peer) publishes a chain of
+// benchmarking_suite/msg/TimeStamped topics on a private domain: sample N has the same header.stamp
+// on every topic and `time` = header.stamp + a per-topic delay + a jitter. The Measure page's engine
+// (MeasureSession on a LiveSession's ROS 2 participant) and `bridgescope record --ros 2` give the
+// same figures as numpy (tests/scripts/latency_reference.py) computes from the stamps the node
+// printed. A node that sends malformed stamps (a frame_id of 4 GiB) is counted per topic.
+#include "latency/latencyengine.h"
+#include "pythonref.h"
+#include "ros2peer.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
+#include "wire/stampcodec.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr int kSamples = 100;
+const QStringList kTopics {u"/lab/vehicle/out"_s, u"/lab/cloud/in"_s, u"/lab/cloud/out"_s, u"/lab/vehicle/in"_s};
+
+/// The chain: 50 Hz, stamped 0, 20, 35 and 60 ms after the sample (plus up to 1 ms of jitter).
+QStringList chainArgs(int count)
+{
+    const QString type = u":benchmarking_suite/msg/TimeStamped:50"_s;
+    QStringList args {u"--node"_s, u"/lab/chain"_s, u"--count"_s, QString::number(count), u"--start-matched"_s,
+                      u"--duration"_s, u"60"_s};
+    const int delays[] = {0, 20, 35, 60};
+    for (int i = 0; i < kTopics.size(); ++i)
+        args << u"--pub"_s << kTopics[i] + type << u"--stamp-delay"_s
+             << kTopics[i] + u':' + QString::number(delays[i]);
+    return args;
+}
+
+/// The peer's `stamp TOPIC N SAMPLE_NS TIME_NS` lines as the suite's timestamp CSV (a row per
+/// sample that every topic stamped), for the numpy reference.
+QString suiteCsv(const QStringList& lines, int* rows)
+{
+    QHash<qint64, QHash<QString, qint64>> bySample;
+    for (const QString& l : lines) {
+        const QStringList f = l.split(u' ');
+        if (f.size() == 5 && f[0] == u"stamp"_s)
+            bySample[f[3].toLongLong()][f[1]] = f[4].toLongLong();
+    }
+    QList<qint64> samples = bySample.keys();
+    std::sort(samples.begin(), samples.end());
+    QString csv = kTopics.join(u',') + u'\n';
+    *rows = 0;
+    for (qint64 s : samples) {
+        if (bySample[s].size() != kTopics.size())
+            continue;
+        QStringList cells;
+        for (const QString& t : kTopics)
+            cells << StampCodec::timeText(bySample[s][t]);
+        csv += cells.join(u',') + u'\n';
+        ++*rows;
+    }
+    return csv;
+}
+
+/// numpy's figures of the CSV: {"stages": [...], "total": {...}} in ms.
+QJsonObject reference(const QTemporaryDir& dir, const QString& csv)
+{
+    QFile f(dir.filePath(u"stamps.csv"_s));
+    if (!f.open(QIODevice::WriteOnly))
+        return {};
+    f.write(csv.toUtf8());
+    f.close();
+    return PythonRef::run(u"latency_reference.py"_s, {f.fileName()}).object();
+}
+
+bool same(double ours, const QJsonValue& ref)
+{
+    const double y = ref.toDouble();
+    return std::abs(ours - y) <= 1e-9 + 1e-10 * std::abs(y);
+}
+
+/// Count, median, p99 (and the rest) of one series against numpy's.
+QString compare(const LatencyStats& s, const QJsonObject& ref)
+{
+    if (s.count != ref.value(u"count"_s).toInt())
+        return u"count %1, numpy %2"_s.arg(s.count).arg(ref.value(u"count"_s).toInt());
+    const std::pair<const char*, double> figures[] = {{"mean_ms", s.mean}, {"median_ms", s.median},
+                                                      {"min_ms", s.min},   {"max_ms", s.max},
+                                                      {"p90_ms", s.p90},   {"p99_ms", s.p99},
+                                                      {"std_ms", s.std}};
+    for (const auto& [name, ours] : figures)
+        if (!same(ours, ref.value(QLatin1StringView(name))))
+            return u"%1 %2, numpy %3"_s.arg(QLatin1StringView(name)).arg(ours, 0, 'g', 17).arg(
+                ref.value(QLatin1StringView(name)).toDouble(), 0, 'g', 17);
+    return {};
+}
+
+QByteArray pipelineYaml()
+{
+    QByteArray yaml = "topics_in_order:\n";
+    for (const QString& t : kTopics)
+        yaml += "  - " + t.toUtf8() + "\n";
+    return yaml + "metrics_window: 1000\n";
+}
+} // namespace
+
+class TestRos2Stamps : public QObject
+{
+    Q_OBJECT
+    int m_domain = 0;
+
+private slots:
+    void initTestCase() { m_domain = Ros2Peer::freeDomain(101, 120); }
+
+    void measureSessionMatchesNumpy()
+    {
+        LiveSession live;
+        live.setRosMasterUri(u"http://127.0.0.1:1"_s); // no ROS 1 here
+        QString error;
+        QVERIFY2(live.startRos2({m_domain, true}, &error), qPrintable(error));
+        MeasureSession measure(&live);
+        measure.setPipeline(Pipeline(kTopics, 1000));
+        Ros2Peer chain(m_domain, chainArgs(kSamples));
+        QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
+        const LatencyEngine& e = measure.engine();
+        QTRY_VERIFY2_WITH_TIMEOUT(e.samples() >= kSamples, qPrintable(QString::number(e.samples())), 20000);
+        QTest::qWait(200); // nothing more comes
+        QCOMPARE(e.samples(), qint64(kSamples));
+        QCOMPARE(measure.malformedStamps(), quint64(0));
+
+        QTemporaryDir dir;
+        int rows = 0;
+        const QJsonObject ref = reference(dir, suiteCsv(chain.lines(), &rows));
+        QCOMPARE(rows, kSamples);
+        QVERIFY(!ref.isEmpty());
+        const QJsonArray stages = ref.value(u"stages"_s).toArray();
+        QCOMPARE(stages.size(), kTopics.size() - 1);
+        for (int s = 0; s < stages.size(); ++s) {
+            const QString diff = compare(e.series(e.stageSeries(s)).stats(), stages[s].toObject());
+            QVERIFY2(diff.isEmpty(), qPrintable(u"stage %1: %2"_s.arg(s).arg(diff)));
+        }
+        const QString diff = compare(e.series(e.totalSeries()).stats(), ref.value(u"total"_s).toObject());
+        QVERIFY2(diff.isEmpty(), qPrintable(u"total: "_s + diff));
+        // The delays show through: 20, 15 and 25 ms stages (and up to 1 ms of jitter either way).
+        QVERIFY(std::abs(e.series(e.stageSeries(0)).stats().median - 20) < 1);
+        QVERIFY(std::abs(e.series(e.totalSeries()).stats().median - 60) < 1);
+    }
+
+    void recordMatchesNumpy()
+    {
+        QTemporaryDir dir;
+        QFile pipe(dir.filePath(u"pipe.yaml"_s));
+        QVERIFY(pipe.open(QIODevice::WriteOnly));
+        pipe.write(pipelineYaml());
+        pipe.close();
+        const QString run = dir.filePath(u"ros2.bsrun"_s);
+        QProcess rec;
+        rec.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                  {u"record"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(m_domain),
+                   u"--ros-localhost-only"_s, u"--pipeline"_s, pipe.fileName(), u"--broker"_s,
+                   u"tcp://127.0.0.1:1"_s, u"--ros-master"_s, u"http://127.0.0.1:1"_s, u"--samples"_s,
+                   QString::number(kSamples), u"--seconds"_s, u"30"_s, u"-o"_s, run});
+        QVERIFY(rec.waitForStarted());
+        Ros2Peer chain(m_domain, chainArgs(kSamples));
+        QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
+        QVERIFY(rec.waitForFinished(40000));
+        const QString said = QString::fromUtf8(rec.readAllStandardError());
+        QVERIFY2(rec.exitCode() == 0, qPrintable(said));
+        QVERIFY2(QString::fromUtf8(rec.readAllStandardOutput()).contains(u"%1 complete samples"_s.arg(kSamples)),
+                 qPrintable(said));
+
+        QProcess report;
+        report.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, run, u"--format"_s, u"json"_s});
+        QVERIFY(report.waitForFinished(30000));
+        QCOMPARE(report.exitCode(), 0);
+        const QJsonObject ours = QJsonDocument::fromJson(report.readAllStandardOutput()).object();
+        for (const QString& t : kTopics) // the peer's output is read while waiting
+            QVERIFY(chain.waitFor(u"stamp %1 %2 "_s.arg(t).arg(kSamples)));
+        int rows = 0;
+        const QJsonObject ref = reference(dir, suiteCsv(chain.lines(), &rows));
+        QCOMPARE(rows, kSamples);
+        QCOMPARE(ours.value(u"samples"_s).toInt(), kSamples);
+        const QJsonArray stages = ours.value(u"stages"_s).toArray();
+        QCOMPARE(stages.size(), kTopics.size() - 1);
+        const auto sameStats = [](const QJsonObject& a, const QJsonObject& b) {
+            for (auto it = b.begin(); it != b.end(); ++it)
+                if (!same(a.value(it.key()).toDouble(), it.value()))
+                    return false;
+            return a.keys() == b.keys();
+        };
+        for (int s = 0; s < stages.size(); ++s)
+            QVERIFY2(sameStats(stages[s].toObject().value(u"stats"_s).toObject(),
+                               ref.value(u"stages"_s)[s].toObject()),
+                     qPrintable(QString::number(s)));
+        QVERIFY(sameStats(ours.value(u"total"_s).toObject(), ref.value(u"total"_s).toObject()));
+    }
+
+    void malformedStampsAreCountedPerTopic()
+    {
+        LiveSession live;
+        live.setRosMasterUri(u"http://127.0.0.1:1"_s);
+        QString error;
+        QVERIFY2(live.startRos2({m_domain, true}, &error), qPrintable(error));
+        MeasureSession measure(&live);
+        // A stamp whose frame_id claims 4 GiB, in 28 bytes.
+        Ros2Peer hostile(m_domain, {u"--pub"_s, u"/lab/bad:benchmarking_suite/msg/TimeStamped:50"_s,
+                                    u"--raw"_s, u"/lab/bad:0001000000f1536515cd5b07f0ffffff6162000001f1536500e1f505"_s,
+                                    u"--pub"_s, u"/lab/good:benchmarking_suite/msg/TimeStamped:50"_s,
+                                    u"--duration"_s, u"30"_s});
+        QVERIFY2(hostile.waitFor(u"ready"_s), qPrintable(hostile.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(measure.malformedStampsByTopic().value(u"/lab/bad"_s) >= 5, 15000);
+        QVERIFY2(measure.lastStampError().contains(u"/lab/bad: TimeStamped frame_id claims 4294967280 bytes"_s),
+                 qPrintable(measure.lastStampError()));
+        // The good topic's stamps go on arriving meanwhile (found by type, no pipeline asked for it).
+        QTRY_VERIFY_WITH_TIMEOUT(measure.discovery().topics().contains(u"/lab/good"_s), 10000);
+        QCOMPARE(measure.malformedStampsByTopic().value(u"/lab/good"_s), quint64(0));
+        QVERIFY(live.ros2()->isRunning());
+        QCOMPARE(live.ros2()->restarts(), quint64(0));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRos2Stamps)
+#include "tst_ros2stamps.moc"
