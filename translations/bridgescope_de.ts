@@ -1160,6 +1160,34 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Use this ROS master instead of a private rosmaster.</source>
         <translation>Diesen ROS-Master statt eines eigenen rosmaster verwenden.</translation>
     </message>
+    <message>
+        <source>--ros takes 1 or 2</source>
+        <translation>--ros nimmt 1 oder 2</translation>
+    </message>
+    <message>
+        <source>--ros-domain takes a domain id from 0 to %1</source>
+        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
+    </message>
+    <message>
+        <source>1: ROS 1 nodes around a private rosmaster (default); 2: DDS nodes and ROS 2 bridges on a free private domain on 127.0.0.1.</source>
+        <translation>1: ROS-1-Knoten um einen eigenen rosmaster (Standard); 2: DDS-Knoten und ROS-2-Brücken in einer freien eigenen Domain auf 127.0.0.1.</translation>
+    </message>
+    <message>
+        <source>With --ros 2: this domain instead of a free one.</source>
+        <translation>Mit --ros 2: diese Domain statt einer freien.</translation>
+    </message>
+    <message>
+        <source>broker %1, ROS 2 domain %2 (this host only), configs in %3</source>
+        <translation>Broker %1, ROS-2-Domain %2 (nur dieser Rechner), Konfigurationen in %3</translation>
+    </message>
+    <message>
+        <source>1: a ROS 1 node (default); 2: a ROS 2 node over DDS.</source>
+        <translation>1: ein ROS-1-Knoten (Standard); 2: ein ROS-2-Knoten über DDS.</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain id (default 0).</source>
+        <translation>ROS-2-Domain-ID (Standard 0).</translation>
+    </message>
 </context>
 <context>
     <name>DemoLab</name>
@@ -1206,6 +1234,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>cannot write to a pipe: %1</source>
         <translation>kann nicht in eine Pipe schreiben: %1</translation>
+    </message>
+    <message>
+        <source>no free ROS 2 domain on this host</source>
+        <translation>keine freie ROS-2-Domain auf diesem Rechner</translation>
     </message>
 </context>
 <context>
@@ -2405,6 +2437,10 @@ factors:
         <source>announce once cannot be honoured: what the bridge %1&apos;s command announces is not known (the real mqtt_client announces every message); say announce: every_message (or once) in its entry under bridges:</source>
         <translation>announce once ist nicht einzuhalten: was der Befehl der Bridge %1 ankündigt, ist nicht bekannt (der echte mqtt_client kündigt jede Nachricht an); announce: every_message (oder once) in ihrem Eintrag unter bridges: angeben</translation>
     </message>
+    <message>
+        <source>%1: ros is 1 (a ROS master) or 2 (DDS, a private domain per cell)</source>
+        <translation>%1: ros ist 1 (ein ROS-Master) oder 2 (DDS, eine eigene Domain je Zelle)</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentReport</name>
@@ -2571,6 +2607,18 @@ factors:
     <message>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>ROS 2 (DDS, a private domain)</source>
+        <translation>ROS 2 (DDS, eine eigene Domain)</translation>
+    </message>
+    <message>
+        <source>ROS 1</source>
+        <translation>ROS 1</translation>
+    </message>
+    <message>
+        <source>ROS</source>
+        <translation>ROS</translation>
     </message>
 </context>
 <context>
@@ -2946,6 +2994,18 @@ factors:
     <message>
         <source>Point bridgescope discover, watch or mosquitto_sub at these; configs in %1</source>
         <translation>Richten Sie bridgescope discover, watch oder mosquitto_sub darauf; Konfigurationen in %1</translation>
+    </message>
+    <message>
+        <source>Starting the demo lab: mosquitto…</source>
+        <translation>Das Demo-Labor startet: mosquitto…</translation>
+    </message>
+    <message>
+        <source>demo lab (ROS 2, domain %1): broker %2</source>
+        <translation>Demo-Labor (ROS 2, Domain %1): Broker %2</translation>
+    </message>
+    <message>
+        <source>ROS 2 (%1), the demo lab&apos;s domain</source>
+        <translation>ROS 2 (%1), die Domain des Demo-Labors</translation>
     </message>
 </context>
 <context>
@@ -6420,6 +6480,17 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
+    <name>Ros2DemoNodes</name>
+    <message>
+        <source>the DDS process did not join the domain</source>
+        <translation>der DDS-Prozess ist der Domain nicht beigetreten</translation>
+    </message>
+    <message>
+        <source>cannot encode the point cloud</source>
+        <translation>die Punktwolke lässt sich nicht kodieren</translation>
+    </message>
+</context>
+<context>
     <name>Ros2DiscoveryInfo</name>
     <message>
         <source>not a CDR sample (its encapsulation header is missing or not plain CDR)</source>
@@ -6848,6 +6919,38 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>--ros-domain takes a domain id from 0 to %1</source>
         <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
+    </message>
+    <message>
+        <source>ROS_VERSION is &quot;%1&quot;, not 1 or 2: ignored</source>
+        <translation>ROS_VERSION ist „%1“, nicht 1 oder 2: nicht beachtet</translation>
+    </message>
+    <message>
+        <source>ROS_DISTRO is &quot;%1&quot;, not a ROS distribution known here: ignored</source>
+        <translation>ROS_DISTRO ist „%1“, keine hier bekannte ROS-Distribution: nicht beachtet</translation>
+    </message>
+    <message>
+        <source>ROS 1 and ROS 2</source>
+        <translation>ROS 1 und ROS 2</translation>
+    </message>
+    <message>
+        <source>ROS 2</source>
+        <translation>ROS 2</translation>
+    </message>
+    <message>
+        <source>ROS 1</source>
+        <translation>ROS 1</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>domain %1</source>
+        <translation>Domain %1</translation>
+    </message>
+    <message>
+        <source>this host only</source>
+        <translation>nur dieser Rechner</translation>
     </message>
 </context>
 <context>

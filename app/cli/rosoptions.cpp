@@ -104,6 +104,7 @@ bool RosOptions::read(const QCommandLineParser& parser, QString* error)
     }
     if (parser.isSet(m_localhost))
         ros2Options.localhostOnly = true;
-    ros2OptionsSet = parser.isSet(m_domain) || parser.isSet(m_localhost);
+    domainSet = parser.isSet(m_domain);
+    ros2OptionsSet = domainSet || parser.isSet(m_localhost);
     return true;
 }

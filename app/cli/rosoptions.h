@@ -33,6 +33,7 @@ public:
     QString reason; ///< why: "--ros 2", "ROS_VERSION=2", "ROS_DISTRO=noetic" or "default"
     QString environmentWarning; ///< a ROS_VERSION or ROS_DISTRO that was not understood (ignored)
     bool ros2OptionsSet = false; ///< --ros-domain or --ros-localhost-only was given
+    bool domainSet = false; ///< --ros-domain was given
     Ros2Options ros2Options; ///< from the environment, then the options
     QString environmentError; ///< a ROS_DOMAIN_ID that was not taken
 

@@ -104,6 +104,7 @@ struct GuiRequest
     QString masterUri; ///< empty: $ROS_MASTER_URI
     int rosGraphs = -1; ///< DiscoverPage::RosGraphs, -1: as last chosen
     int demoRos = 1; ///< the demo lab's ROS: 2 when only ROS 2 was chosen (--ros 2, the environment)
+    int demoDomain = -1; ///< a ROS 2 demo lab's domain (--ros-domain), -1: a free one
     std::optional<Ros2Options> ros2;
     QString rosChoice; ///< which ROS graphs --ros or the environment chose and why; empty: none did
     QString pipeline;
@@ -183,17 +184,22 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     }
     if (!ros.environmentWarning.isEmpty())
         CliOutput::err(ros.environmentWarning);
+    request->demo = parser.isSet(demo);
+    request->demoRos = ros.ros2 && !ros.ros1 ? 2 : 1;
     if (ros.graphsSet || ros.graphsFromEnvironment) {
-        request->rosChoice = ros.choice();
+        // A ROS 2 demo lab picks its own domain (the status bar says which).
+        request->rosChoice = request->demo && request->demoRos == 2 && !ros.domainSet
+            ? Gui::tr("ROS 2 (%1), the demo lab's domain").arg(ros.reason)
+            : ros.choice();
         CliOutput::err(request->rosChoice);
         request->rosGraphs = ros.ros1 && ros.ros2 ? 2 : (ros.ros2 ? 1 : 0);
     }
-    request->demoRos = ros.ros2 && !ros.ros1 ? 2 : 1;
     if (ros.ros2OptionsSet)
         request->ros2 = ros.ros2Options;
+    if (ros.domainSet)
+        request->demoDomain = ros.ros2Options.domain;
     request->masterUri = parser.value(master);
     request->pipeline = parser.value(pipeline);
-    request->demo = parser.isSet(demo);
     request->files = parser.positionalArguments();
     return -1;
 }
@@ -277,8 +283,7 @@ int runGui(int& argc, char** argv)
         options.brokerUrl = request.brokerUrl; // given servers are used instead of private ones
         options.rosMasterUri = request.masterUri;
         options.ros = request.demoRos;
-        if (request.ros2 && request.demoRos == 2)
-            options.rosDomain = request.ros2->domain; // --ros-domain: this one instead of a free one
+        options.rosDomain = request.demoDomain; // --ros-domain: this one instead of a free one
         const bool automated = !request.screenshot.isEmpty();
         DemoStart::start(window, *lab, options, [&window, &lab, &request, automated](const QString& error) {
             if (!error.isEmpty()) {

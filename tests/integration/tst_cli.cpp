@@ -354,6 +354,15 @@ private slots:
         QVERIFY2(r.err.contains(u"ROS_VERSION is \"3\", not 1 or 2: ignored"_s), qPrintable(r.err));
         QVERIFY2(r.err.contains(u"ROS_DISTRO is \"bogus\""_s), qPrintable(r.err));
         QVERIFY2(r.err.contains(u"ROS 1 (default)"_s), qPrintable(r.err));
+        // the window too (it says so in its status bar as well)
+        QTemporaryDir dir;
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        qputenv("ROS_VERSION", "2");
+        r = bridgescope({u"--screenshot"_s, dir.filePath(u"w.png"_s), u"--after"_s, u"0.5"_s, u"--ros-domain"_s,
+                         QString::number(domain), u"--ros-localhost-only"_s});
+        qunsetenv("ROS_VERSION");
+        QCOMPARE(r.exit, 0);
+        QVERIFY2(r.err.contains(u"ROS 2 (ROS_VERSION=2), "_s + where), qPrintable(r.err));
     }
 
     void discoverFailsWhenNothingAnswers()
