@@ -772,7 +772,7 @@ QByteArray ExperimentReport::toJson() const
 
 QString ExperimentReport::toCsv() const
 {
-    QString csv = u"cell,levels,state,group,count,mean_ms,median_ms,std_ms,min_ms,max_ms,p99_ms\n"_s;
+    QString csv = u"cell,levels,state,group,count,mean_ms,median_ms,std_ms,min_ms,max_ms,p99_ms,ros\n"_s;
     const auto field = [](QString s) {
         if (s.contains(u',') || s.contains(u'"') || s.contains(u'\n'))
             s = u"\""_s + s.replace(u"\""_s, u"\"\""_s) + u"\""_s;
@@ -792,7 +792,8 @@ QString ExperimentReport::toCsv() const
                                 n(s.std),
                                 n(s.min),
                                 n(s.max),
-                                n(s.p99)}
+                                n(s.p99),
+                                QString::number(m_plan.ros)}
                        .join(u',')
                 + u'\n';
         }

@@ -267,6 +267,13 @@ private slots:
         QVERIFY(md.waitForFinished(60000));
         const QString text = QString::fromUtf8(md.readAllStandardOutput());
         QVERIFY2(text.count(u"| ROS 2 (DDS, a private domain) | complete |"_s) == 2, qPrintable(text));
+        QProcess csv;
+        csv.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, out, u"--format"_s, u"csv"_s});
+        QVERIFY(csv.waitForFinished(60000));
+        const QStringList rows = QString::fromUtf8(csv.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
+        QVERIFY2(rows.size() > 2 && rows.front().endsWith(u",p99_ms,ros"_s), qPrintable(rows.join(u'\n')));
+        for (const QString& row : rows.mid(1))
+            QVERIFY2(row.endsWith(u",2"_s), qPrintable(row));
     }
 
     // A ROS 2 lab's own bridge from the command template: {config} is a ROS 2 params file and
