@@ -161,9 +161,15 @@ bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& st
     settle.start();
     runUntil([&] { return stop() || settle.elapsed() > 500; });
 
+    // As on ROS 1: each scan at its time on a fixed schedule (a late one goes at once), so that the
+    // mean rate is the one asked for whatever the timer's granularity.
+    const double periodNs = 1e9 / std::max(0.1, o.rateHz);
+    QElapsedTimer clock;
+    clock.start();
+    qint64 scans = 0;
     QTimer tick;
     tick.setTimerType(Qt::PreciseTimer);
-    tick.setInterval(std::max(1, int(1000.0 / std::max(0.1, o.rateHz))));
+    tick.setSingleShot(true);
     QObject::connect(&tick, &QTimer::timeout, &dds, [&] {
         // the scan's header.stamp, right after the encapsulation header: the bytes once encoded stay
         const qint64 now = wallClockNs() + o.clockOffsetNs;
@@ -172,8 +178,10 @@ bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& st
         qToLittleEndian<quint32>(quint32(now % 1'000'000'000LL), p + 8);
         sent.stamp(now, wallClockNs());
         dds.publish(u"/vehicle/pointcloud"_s, scan);
+        const qint64 waitNs = qint64(double(++scans) * periodNs) - clock.nsecsElapsed();
+        tick.start(int(std::max<qint64>(0, waitNs / 1'000'000)));
     });
-    tick.start();
+    tick.start(0);
     runUntil(stop);
     dds.stop();
     return true;
