@@ -173,7 +173,8 @@ void Ros2Bridge::Private::rosToMqtt(Route& r, const Ros2Sample& s)
         const std::optional<QByteArray> text = Ros2BridgeWire::primitiveText(registry, r.subscribedType, s.bytes);
         ok = text && mqtt->send(r.mqttTopic, *text, r.qos, r.retained);
     } else if (r.json) {
-        ok = false; // not written: see docs/formats.md
+        const std::optional<QByteArray> json = Ros2BridgeWire::toJson(registry, r.subscribedType, s.bytes, nullptr);
+        ok = json && mqtt->send(r.mqttTopic, *json, r.qos, r.retained);
     } else {
         // v2.5 announces (retained) with every message; once per type and connection says the same
         // and spares the broker, unless asked for every message.
@@ -413,7 +414,7 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
             d->byRosTopic.insert(r->rosTopic, r.get());
         } else {
             d->byMqtt.insert(r->mqttTopic, r.get());
-            if (!r->rosType.isEmpty() && !r->primitive)
+            if (!r->rosType.isEmpty())
                 d->advertiseRoute(*r, r->rosType); // v2.5's setupPublishers(): before any message
             if (!r->primitive && !r->json)
                 d->byTypeTopic.insert(MqttClientWire::typeTopicPrefix() + r->mqttTopic, r.get());
@@ -439,11 +440,15 @@ void Ros2Bridge::Private::startMqtt()
     for (auto it = byTypeTopic.cbegin(); it != byTypeTopic.cend(); ++it)
         mqtt->addSubscription(it.key(), (*it)->qos);
     Private* p = this;
-    const qint64 bound = options.maxQueuedBytes / 2;
+    // Towards ROS, half of the bound: a quarter for messages waiting for the event loop, a quarter
+    // for those in the pipe to the DDS process.
+    const qint64 bound = options.maxQueuedBytes / 4;
+    ros->setPublishBound(bound);
     // Paho's thread: handed to the event loop within the bound, in order.
     mqtt->setMessageHandler([p, bound](const QString& topic, const QByteArray& payload, qint64 t) {
         const qint64 size = payload.size();
-        if (p->hopBytes.fetch_add(size) + size > bound) {
+        const qint64 held = p->hopBytes.fetch_add(size);
+        if (held > 0 && held + size > bound) { // one larger than the bound passes alone
             p->hopBytes.fetch_sub(size);
             p->counters.droppedToRos.fetch_add(1, std::memory_order_relaxed);
             return;

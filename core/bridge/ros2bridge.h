@@ -22,9 +22,11 @@
 ///
 /// Its DDS side is a Ros2Participant (the child process `bridgescope-dds`): the node is announced
 /// in ros_discovery_info under mqtt_client's name. Messages from DDS are forwarded on this
-/// thread's event loop as they come; messages from the broker are handed to it from Paho's thread,
-/// within half of Options::maxQueuedBytes (a message beyond is dropped and counted), and the other
-/// half bounds what waits for the broker (MqttLink), as in the ROS 1 bridge.
+/// thread's event loop as they come; messages from the broker are handed to it from Paho's thread.
+/// Towards ROS they take half of Options::maxQueuedBytes, a quarter waiting for the event loop and
+/// a quarter in the pipe to the DDS process (a message beyond either is dropped and counted, one
+/// larger than a quarter passes alone); the other half bounds what waits for the broker
+/// (MqttLink), as in the ROS 1 bridge.
 class Ros2Bridge
 {
     Q_DECLARE_TR_FUNCTIONS(Ros2Bridge)

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QtEndian>
 #include <QVariantMap>
 
@@ -106,12 +108,8 @@ std::optional<QByteArray> primitiveText(const RosTypeRegistry& registry, const Q
         return data->value.toBool() ? QByteArray("true") : QByteArray("false");
     if (t == u"Float32"_s || t == u"Float64"_s)
         return QByteArray::number(data->value.toDouble(), 'f', 6); // std::to_string
-    if (t == u"UInt8MultiArray"_s) {
-        QByteArray bytes;
-        for (const RosValue& e : data->children)
-            bytes.append(char(e.value.toUInt()));
-        return bytes;
-    }
+    if (t == u"UInt8MultiArray"_s)
+        return QByteArray::fromHex(data->value.toByteArray()); // the decoder gives byte arrays as hex
     return data->value.toString().toUtf8();
 }
 
@@ -164,6 +162,44 @@ std::optional<QByteArray> fixedPrimitive(const RosTypeRegistry& registry, const 
         data = QString::fromUtf8(text.trimmed()); // a number: the encoder checks its range and kind
     }
     return RosMessageEncoder::encodeCdr(registry, type, QVariantMap {{u"data"_s, data}});
+}
+
+namespace {
+QJsonValue jsonOf(const RosValue& v)
+{
+    switch (v.kind) {
+    case RosValue::Message: {
+        QJsonObject o;
+        for (const RosValue& c : v.children)
+            o.insert(c.name, jsonOf(c));
+        return o;
+    }
+    case RosValue::Array: {
+        QJsonArray a;
+        if (v.children.isEmpty() && v.arrayLength > 0) // bytes, given as hex
+            for (const char b : QByteArray::fromHex(v.value.toByteArray()))
+                a.append(v.type.startsWith(u"int8"_s) ? int(qint8(b)) : int(quint8(b)));
+        for (const RosValue& c : v.children)
+            a.append(jsonOf(c));
+        return a;
+    }
+    case RosValue::Scalar:
+        break;
+    }
+    return QJsonValue::fromVariant(v.value);
+}
+} // namespace
+
+std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr,
+                                 QString* error)
+{
+    RosDecodeLimits limits;
+    limits.maxStringChars = std::numeric_limits<int>::max();
+    limits.maxArrayElements = std::numeric_limits<int>::max();
+    const std::optional<RosValue> v = RosMessageDecoder::decodeCdr(registry, type, cdr, error, limits);
+    if (!v)
+        return std::nullopt;
+    return QJsonDocument(jsonOf(*v).toObject()).toJson(QJsonDocument::Compact);
 }
 
 std::optional<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json,

@@ -44,6 +44,11 @@ Typed primitiveFromText(const QByteArray& text);
 /// Text for a fixed primitive type (fixedMqtt2PrimitiveRos()): nullopt when it does not read as
 /// one ("1"/"0" are Bool too; integers out of range are refused).
 std::optional<QByteArray> fixedPrimitive(const RosTypeRegistry& registry, const QString& type, const QByteArray& text);
+/// A message as a JSON object, field by field (json: true mappings towards MQTT; mqtt_client v2.5
+/// writes it with rosx_introspection, whose exact text, spacing and number format included, is
+/// not checked here); nullopt with `error`.
+std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr,
+                                 QString* error);
 /// JSON text as a message of `type` (json: true mappings); nullopt with `error`.
 std::optional<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json,
                                    QString* error);

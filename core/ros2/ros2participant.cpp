@@ -519,7 +519,7 @@ bool Ros2Participant::publish(const QString& topic, const QByteArray& cdr)
 {
     const bool sendable = m_child && m_child->state() == QProcess::Running && m_advertised.contains(topic)
         && cdr.size() >= 4 && cdr.size() <= qsizetype(Ros2Protocol::kMaxFrameBytes) - 1024
-        && m_child->bytesToWrite() + cdr.size() <= kMaxPendingPublishBytes;
+        && (m_child->bytesToWrite() == 0 || m_child->bytesToWrite() + cdr.size() <= m_publishBound);
     if (!sendable) {
         ++m_publishDropped;
         return false;

@@ -107,9 +107,12 @@ public:
     bool isAdvertised(const QString& topic) const { return m_advertised.contains(topic); }
     /// One sample: CDR bytes with their 4-byte encapsulation header (00 01 00 00). False, and
     /// counted by publishDropped(), when it cannot be sent now: not advertised, the child not
-    /// running, the pipe holding kMaxPendingPublishBytes already, or a sample that is not CDR.
+    /// running, the pipe holding the publish bound already, or a sample that is not CDR. A sample
+    /// larger than the bound passes when nothing waits in the pipe.
     bool publish(const QString& topic, const QByteArray& cdr);
-    /// Bytes of samples the pipe to the child may hold before publish() drops.
+    /// Bytes of samples the pipe to the child may hold before publish() drops (default
+    /// kMaxPendingPublishBytes).
+    void setPublishBound(qint64 bytes) { m_publishBound = bytes; }
     static constexpr qint64 kMaxPendingPublishBytes = 128 * 1024 * 1024;
     quint64 publishDropped() const { return m_publishDropped; }
     /// A DDS reader of `topic` of `type` with `qos` (as advertise()'s), made at once whether or not
@@ -198,4 +201,5 @@ private:
     QHash<QString, quint64> m_receivedDropped; ///< the child's count, by topic, since its start
     quint64 m_receivedDroppedBefore = 0; ///< counted by children before this one
     quint64 m_publishDropped = 0;
+    qint64 m_publishBound = kMaxPendingPublishBytes;
 };

@@ -12,10 +12,15 @@
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "testservers.h"
+#include "wire/mqttclientwire.h"
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
+#include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtEndian>
@@ -116,6 +121,28 @@ private slots:
         QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
     }
 
+    void refusesWhatIsNotOneRos()
+    {
+        const QString path = m_dir.filePath(u"one.yaml"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("bridge:\n  ros2mqtt:\n    - {ros_topic: /a, mqtt_topic: a}\n");
+        f.close();
+        const QList<QPair<QStringList, QString>> cases {
+            {{u"--ros"_s, u"both"_s}, u"give --ros 1 or --ros 2"_s},
+            {{u"--ros"_s, u"2"_s, u"--ros-master"_s, u"http://127.0.0.1:1/"_s}, u"takes --ros-domain"_s},
+            {{u"--ros"_s, u"2"_s, u"--ros-domain"_s, u"233"_s}, u"from 0 to 232"_s}};
+        for (const auto& [args, why] : cases) {
+            QProcess p;
+            p.setEnvironment({u"LC_ALL=C"_s, u"LANG=C"_s});
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), QStringList {u"bridge"_s, path} + args);
+            QVERIFY(p.waitForFinished(10000));
+            QCOMPARE(p.exitCode(), 2);
+            const QString said = QString::fromUtf8(p.readAllStandardError());
+            QVERIFY2(said.contains(why), qPrintable(said));
+        }
+    }
+
     void rosToMqttAsV25Writes()
     {
         const QByteArray config = "/**:\n"
@@ -184,6 +211,16 @@ private slots:
         }
         // the node, as mqtt_client's is named, with its reader of each topic and the stamp writers
         QVERIFY2(talker.waitFor(u"node / mqtt_client 3 2"_s), qPrintable(talker.lines().join(u'\n')));
+        // and as Bridgescope's Discover sees it from another participant
+        const auto bridgeNode = [&stamps]() -> const Ros2Node* {
+            for (const Ros2Node& n : stamps.graph().nodes)
+                if (n.name == u"/mqtt_client"_s)
+                    return &n;
+            return nullptr;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(bridgeNode(), 5000);
+        QCOMPARE(bridgeNode()->subscribes, (QStringList {u"/chatter"_s, u"/cloud"_s, u"/pose"_s}));
+        QCOMPARE(bridgeNode()->publishes, (QStringList {u"/bench/bridge/in"_s, u"/bench/bridge/out"_s}));
         // the suite's stamps: the pose's header.stamp as the sample, in before out
         QTRY_VERIFY_WITH_TIMEOUT(got.size() >= 4, 10000);
         QHash<qint64, qint64> in;
@@ -269,6 +306,96 @@ private slots:
         stop(b);
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/chatter"_s, {}, 1, true); // no retained leftovers
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s, {}, 1, true);
+    }
+
+    void ros1LayoutRunsOnRos2AndRos1AnnouncementsAreIgnored()
+    {
+        // mqtt_client's ROS 1 layout, converted as the ROS 1 bridge converts it
+        const QByteArray config = "broker: {host: localhost, port: 1883}\n"
+                                  "bridge:\n"
+                                  "  ros2mqtt:\n"
+                                  "    - {ros_topic: /old, mqtt_topic: old/out}\n"
+                                  "  mqtt2ros:\n"
+                                  "    - {mqtt_topic: old/in, ros_topic: /old_back}\n";
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/old/in"_s,
+                        MqttClientWire::encodeType({u"992ce8a1687cec8c8bd883ec73ca41d1"_s, u"std_msgs/String"_s,
+                                                    u"string data\n"_s, false, RosTypeRegistry::Dialect::Ros1}),
+                        1, true);
+        auto b = bridge(config, {u"--name"_s, u"old_bridge"_s});
+        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--pub"_s, u"/old:std_msgs/msg/String:20"_s,
+                                 u"--show-discovery"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"old/out"_s).size() >= 2, 10000);
+        QCOMPARE(m_fromMqtt.on(u"mqtt_client/ros_msg_type/old/out"_s).value(0),
+                 MqttClientRos2::announcement("std_msgs/msg/String", false));
+        QVERIFY(peer.waitFor(u"node / old_bridge 1 0"_s)); // the ROS 1 announcement made no writer
+        QTest::qWait(300);
+        QVERIFY(peer.lines().filter(u"endpoint pub rt/old_back"_s).isEmpty());
+        stop(b);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/old/in"_s, {}, 1, true);
+    }
+
+    void primitivesFixedTypesAndJson()
+    {
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      ros2mqtt:\n"
+                                  "        ros_topics: [/words, /posej]\n"
+                                  "        /words: {mqtt_topic: out/words, primitive: true}\n"
+                                  "        /posej: {mqtt_topic: out/posej, json: true,"
+                                  " ros_type: geometry_msgs/msg/PoseStamped}\n"
+                                  "      mqtt2ros:\n"
+                                  "        mqtt_topics: [in/text, in/fixed, in/json]\n"
+                                  "        in/text: {ros_topic: /text_back, primitive: true}\n"
+                                  "        in/fixed: {ros_topic: /fixed_back, primitive: true,"
+                                  " ros_type: std_msgs/msg/String}\n"
+                                  "        in/json: {ros_topic: /json_back, json: true,"
+                                  " ros_type: geometry_msgs/msg/PoseStamped}\n";
+        auto b = bridge(config);
+        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--pub"_s, u"/words:std_msgs/msg/String:20"_s, u"--pub"_s,
+                                 u"/posej:geometry_msgs/msg/PoseStamped:20"_s, u"--sub"_s,
+                                 u"/text_back:std_msgs/msg/String"_s, u"--sub"_s, u"/fixed_back:std_msgs/msg/String"_s,
+                                 u"--sub"_s, u"/json_back:geometry_msgs/msg/PoseStamped"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+        // fixed types have their writers from the start; a dynamic primitive's comes with its text
+        QVERIFY2(peer.waitFor(u"matched /fixed_back 1"_s), qPrintable(peer.lines().join(u'\n')));
+        QVERIFY2(peer.waitFor(u"matched /json_back 1"_s), qPrintable(peer.lines().join(u'\n')));
+        const QByteArray json = "{\"header\": {\"stamp\": {\"sec\": 5, \"nanosec\": 6}, \"frame_id\": \"map\"},"
+                                " \"pose\": {\"position\": {\"x\": 7.5, \"y\": 1}, \"orientation\": {\"w\": 1}}}";
+        QElapsedTimer t;
+        t.start();
+        const auto got = [&peer](const QString& prefix) { return !peer.lines().filter(prefix).isEmpty(); };
+        while (t.elapsed() < 10000
+               && !(got(u"recv /text_back"_s) && got(u"recv /fixed_back"_s) && got(u"recv /json_back"_s))) {
+            m_mqtt->publish(u"in/text"_s, "hello there", 0, false); // not a number: a String
+            m_mqtt->publish(u"in/fixed"_s, "42", 0, false); // a number, but the fixed type says String
+            m_mqtt->publish(u"in/json"_s, json, 0, false);
+            QTest::qWait(100);
+        }
+        const QStringList lines = peer.lines();
+        QVERIFY2(!lines.filter(QRegularExpression(u"^recv /text_back \\d+ hello there$"_s)).isEmpty(),
+                 qPrintable(lines.join(u'\n')));
+        QVERIFY2(!lines.filter(QRegularExpression(u"^recv /fixed_back \\d+ 42$"_s)).isEmpty(), qPrintable(lines.join(u'\n')));
+        QVERIFY2(!lines.filter(QRegularExpression(u"^recv /json_back \\d+ x=7.5$"_s)).isEmpty(),
+                 qPrintable(lines.join(u'\n')));
+        // the peer's Strings as text, with no type announcement
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/words"_s).size() >= 3, 10000);
+        for (const QByteArray& m : m_fromMqtt.on(u"out/words"_s))
+            QVERIFY2(QRegularExpression(u"^hello \\d+$"_s).match(QString::fromUtf8(m)).hasMatch(), m.constData());
+        QVERIFY(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/words"_s).isEmpty());
+        // json towards MQTT: the message field by field
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/posej"_s).size() >= 2, 10000);
+        for (const QByteArray& m : m_fromMqtt.on(u"out/posej"_s)) {
+            const QJsonObject o = QJsonDocument::fromJson(m).object();
+            QCOMPARE(o.value(u"header"_s).toObject().value(u"frame_id"_s).toString(), u"map"_s);
+            const QJsonObject position = o.value(u"pose"_s).toObject().value(u"position"_s).toObject();
+            QVERIFY2(position.value(u"x"_s).toDouble() >= 1, m.constData());
+            QCOMPARE(position.value(u"y"_s).toDouble(), 2 * position.value(u"x"_s).toDouble());
+        }
+        QVERIFY(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/posej"_s).isEmpty());
+        stop(b);
     }
 };
 

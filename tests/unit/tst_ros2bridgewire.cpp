@@ -7,6 +7,9 @@
 #include "mqttclientros2.h"
 #include "wire/ros2definitions.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -81,6 +84,11 @@ private slots:
                  std::optional<QByteArray>("-7"));
         QCOMPARE(primitiveText(m_types, u"std_msgs/msg/Bool"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << false; })),
                  std::optional<QByteArray>("false"));
+        // UInt8MultiArray: its bytes (layout: no dims, data_offset 0)
+        QCOMPARE(primitiveText(m_types, u"std_msgs/msg/UInt8MultiArray"_s, MqttClientRos2::serialize([](Cdr& cdr) {
+                                   cdr << uint32_t(0) << uint32_t(0) << std::vector<uint8_t> {'a', 0, 0xff};
+                               })),
+                 std::optional<QByteArray>(QByteArray("a\0\xff", 3)));
         QVERIFY(!primitiveText(m_types, u"geometry_msgs/msg/Point"_s, QByteArray(28, '\0')));
         QVERIFY(!primitiveText(m_types, u"std_msgs/msg/Int32"_s, QByteArray::fromHex("000100")));
     }
@@ -93,6 +101,20 @@ private slots:
         QVERIFY(!fromJson(m_types, u"geometry_msgs/msg/Point"_s, "[1, 2]", &error));
         QVERIFY(!error.isEmpty());
         QVERIFY(!fromJson(m_types, u"geometry_msgs/msg/Point"_s, "{\"w\": 1}", &error)); // no such field
+        // towards MQTT: field by field, byte arrays as numbers
+        const QByteArray image = MqttClientRos2::serialize([](Cdr& cdr) {
+            cdr << int32_t(5) << uint32_t(6) << std::string("cam") << uint32_t(1) << uint32_t(2)
+                << std::string("mono8") << uint8_t(0) << uint32_t(2) << std::vector<uint8_t> {7, 0xff};
+        });
+        const auto json = toJson(m_types, u"sensor_msgs/msg/Image"_s, image, &error);
+        QVERIFY2(json, qPrintable(error));
+        const QJsonObject o = QJsonDocument::fromJson(*json).object();
+        QCOMPARE(o.value(u"header"_s).toObject().value(u"stamp"_s).toObject().value(u"nanosec"_s).toInt(), 6);
+        QCOMPARE(o.value(u"header"_s).toObject().value(u"frame_id"_s).toString(), u"cam"_s);
+        QCOMPARE(o.value(u"encoding"_s).toString(), u"mono8"_s);
+        QCOMPARE(o.value(u"width"_s).toInt(), 2);
+        QCOMPARE(o.value(u"data"_s).toArray(), (QJsonArray {7, 255}));
+        QVERIFY(!toJson(m_types, u"sensor_msgs/msg/Image"_s, image.left(20), &error));
     }
 };
 
