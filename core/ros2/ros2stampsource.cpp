@@ -2,7 +2,7 @@
 #include "ros2stampsource.h"
 
 #include "ros2/ros2participant.h"
-#include "wire/stampcodec.h"
+#include "wire/sourcemessage.h"
 
 #include <QCoreApplication>
 
@@ -59,7 +59,7 @@ void Ros2StampSource::fail(const QString& topic, const QString& why)
     m_lastError = topic + u": "_s + why;
 }
 
-void Ros2StampSource::take(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies)
+void Ros2StampSource::takeStamps(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies)
 {
     if (!m_participant)
         return;
@@ -67,7 +67,7 @@ void Ros2StampSource::take(std::vector<StampEvent>& stamps, std::vector<LatencyV
         for (const Ros2Sample& s : m_participant->takeMessages(it.key())) {
             ++m_received;
             QString why;
-            const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStampedCdr(s.bytes, &why);
+            const std::optional<StampCodec::Decoded> d = SourceMessage::decodeStamp(SourceGraph::Ros2, s.bytes, &why);
             if (d)
                 stamps.push_back(StampEvent {it.value(), d->sampleNs, d->timeNs, s.receivedNs});
             else
@@ -77,7 +77,7 @@ void Ros2StampSource::take(std::vector<StampEvent>& stamps, std::vector<LatencyV
     for (const QString& topic : std::as_const(m_latencies)) {
         for (const Ros2Sample& s : m_participant->takeMessages(topic)) {
             ++m_received;
-            if (const std::optional<qint64> ns = StampCodec::decodeFloat64SecondsCdr(s.bytes))
+            if (const std::optional<qint64> ns = SourceMessage::decodeLatency(SourceGraph::Ros2, s.bytes))
                 latencies.push_back(LatencyValue {topic, *ns, s.receivedNs});
             else
                 fail(topic, QCoreApplication::translate("RosStampSource", "a latency that is no finite number of seconds"));
