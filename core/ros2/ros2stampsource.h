@@ -19,7 +19,8 @@ class Ros2Participant;
 /// (Ros2Participant::watchMessages()) and decoded by hand (StampCodec).
 ///
 /// A stamp needs the whole sample (its frame_id comes before `time`), so a topic is watched, not
-/// only monitored; the participant asks the DDS child again after a restart. Everything runs on the
+/// only monitored, in a queue of this source's own (a field plot of the same topic takes nothing
+/// from it); the participant asks the DDS child again after a restart. Everything runs on the
 /// thread of the participant (the GUI thread): take() decodes what the participant collected.
 class Ros2StampSource : public QObject, public StampSource
 {

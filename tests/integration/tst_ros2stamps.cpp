@@ -7,7 +7,9 @@
 // printed. A node that sends malformed stamps (a frame_id of 4 GiB) is counted per topic.
 #include "latency/latencyengine.h"
 #include "pythonref.h"
+#include "ros2/ros2participant.h"
 #include "ros2peer.h"
+#include "ros2stampchain.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "wire/stampcodec.h"
@@ -19,61 +21,19 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 using namespace Qt::StringLiterals;
 
 namespace {
 constexpr int kSamples = 100;
-const QStringList kTopics {u"/lab/vehicle/out"_s, u"/lab/cloud/in"_s, u"/lab/cloud/out"_s, u"/lab/vehicle/in"_s};
+const QStringList& kTopics = Ros2StampChain::topics();
+using Ros2StampChain::reference;
+using Ros2StampChain::suiteCsv;
 
-/// The chain: 50 Hz, stamped 0, 20, 35 and 60 ms after the sample (plus up to 1 ms of jitter).
 QStringList chainArgs(int count)
 {
-    const QString type = u":benchmarking_suite/msg/TimeStamped:50"_s;
-    QStringList args {u"--node"_s, u"/lab/chain"_s, u"--count"_s, QString::number(count), u"--start-matched"_s,
-                      u"--duration"_s, u"60"_s};
-    const int delays[] = {0, 20, 35, 60};
-    for (int i = 0; i < kTopics.size(); ++i)
-        args << u"--pub"_s << kTopics[i] + type << u"--stamp-delay"_s
-             << kTopics[i] + u':' + QString::number(delays[i]);
-    return args;
-}
-
-/// The peer's `stamp TOPIC N SAMPLE_NS TIME_NS` lines as the suite's timestamp CSV (a row per
-/// sample that every topic stamped), for the numpy reference.
-QString suiteCsv(const QStringList& lines, int* rows)
-{
-    QHash<qint64, QHash<QString, qint64>> bySample;
-    for (const QString& l : lines) {
-        const QStringList f = l.split(u' ');
-        if (f.size() == 5 && f[0] == u"stamp"_s)
-            bySample[f[3].toLongLong()][f[1]] = f[4].toLongLong();
-    }
-    QList<qint64> samples = bySample.keys();
-    std::sort(samples.begin(), samples.end());
-    QString csv = kTopics.join(u',') + u'\n';
-    *rows = 0;
-    for (qint64 s : samples) {
-        if (bySample[s].size() != kTopics.size())
-            continue;
-        QStringList cells;
-        for (const QString& t : kTopics)
-            cells << StampCodec::timeText(bySample[s][t]);
-        csv += cells.join(u',') + u'\n';
-        ++*rows;
-    }
-    return csv;
-}
-
-/// numpy's figures of the CSV: {"stages": [...], "total": {...}} in ms.
-QJsonObject reference(const QTemporaryDir& dir, const QString& csv)
-{
-    QFile f(dir.filePath(u"stamps.csv"_s));
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write(csv.toUtf8());
-    f.close();
-    return PythonRef::run(u"latency_reference.py"_s, {f.fileName()}).object();
+    return Ros2StampChain::args(count);
 }
 
 bool same(double ours, const QJsonValue& ref)
@@ -196,6 +156,37 @@ private slots:
                                ref.value(u"stages"_s)[s].toObject()),
                      qPrintable(QString::number(s)));
         QVERIFY(sameStats(ours.value(u"total"_s).toObject(), ref.value(u"total"_s).toObject()));
+    }
+
+    // A field plot of a stamp topic (the Discover page's, which watches it as the default owner)
+    // takes its samples from a queue of its own, and ending it ends nothing of the Measure page's.
+    void aFieldPlotOfAStampTopicTakesNothingFromMeasure()
+    {
+        LiveSession live;
+        live.setRosMasterUri(u"http://127.0.0.1:1"_s);
+        QString error;
+        QVERIFY2(live.startRos2({m_domain, true}, &error), qPrintable(error));
+        MeasureSession measure(&live);
+        measure.setPipeline(Pipeline(kTopics, 1000));
+        Ros2Participant* p = live.ros2();
+        p->watchMessages(kTopics[1], 1000, 1 << 20);
+        int plotted = 0;
+        QTimer plot;
+        connect(&plot, &QTimer::timeout, this, [&] {
+            plotted += int(p->takeMessages(kTopics[1]).size());
+            if (plotted >= kSamples / 3 && p->isWatched(kTopics[1])) {
+                p->unwatchMessages(kTopics[1]); // the plot closes halfway
+                plotted += 1000;
+            }
+        });
+        plot.start(5);
+        Ros2Peer chain(m_domain, chainArgs(kSamples));
+        QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
+        const LatencyEngine& e = measure.engine();
+        QTRY_VERIFY2_WITH_TIMEOUT(e.samples() >= kSamples, qPrintable(QString::number(e.samples())), 20000);
+        QVERIFY2(plotted > 1000, qPrintable(QString::number(plotted))); // the plot had its samples too
+        QCOMPARE(e.samples(), qint64(kSamples));
+        QCOMPARE(e.counters().dropped(), quint64(0));
     }
 
     void malformedStampsAreCountedPerTopic()

@@ -161,8 +161,11 @@ void peer_sample_fill(struct peer_sample *s, uint64_t n)
         s->msg.opaque.n = (uint32_t)n;
         break;
     case PEER_TIME_STAMPED: {
-        uint64_t mix = (n * 2654435761u + (uint64_t)s->salt * 40503u) % 1000u;
-        s->stamp_ns = stamp_base_ns() + (int64_t)n * 1000000;
+        // splitmix64's finalizer of (n, salt): a jitter spread evenly over 0..999 us
+        uint64_t mix = n * 0x9E3779B97F4A7C15ull + (uint64_t)s->salt * 0xBF58476D1CE4E5B9ull;
+        mix = (mix ^ (mix >> 31)) * 0x94D049BB133111EBull;
+        mix = (mix ^ (mix >> 29)) % 1000u;
+        s->stamp_ns = stamp_base_ns() + (int64_t)n * s->period_ns;
         s->time_ns = s->stamp_ns + s->stamp_delay_ns + (int64_t)mix * 1000;
         set_time(&s->msg.stamped.header.stamp, s->stamp_ns);
         set_time(&s->msg.stamped.time, s->time_ns);
