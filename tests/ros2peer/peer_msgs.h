@@ -28,6 +28,7 @@ struct peer_sample {
         sensor_msgs_msg_dds__PointCloud2_ cloud;
         bridgescope_test_msg_dds__Opaque_ opaque;
         benchmarking_suite_msg_dds__TimeStamped_ stamped;
+        std_msgs_msg_dds__Float64_ float64;
     } msg;
     char text[32];                               // String data
     char frame_id[8];                            // Header frame_id
@@ -52,7 +53,7 @@ void peer_sample_fill(struct peer_sample *s, uint64_t n);
 void peer_sample_fini(struct peer_sample *s);
 
 // "hello 3" (String data), "x=3" (PoseStamped position.x), "width=64 data=1024" (PointCloud2),
-// "n=3 blob=1024" (Opaque), "stamp=NS time=NS" (TimeStamped). Control characters of a String are shown as '?'.
+// "n=3 blob=1024" (Opaque), "stamp=NS time=NS" (TimeStamped), "data=0.013" (Float64). Control characters of a String are shown as '?'.
 void peer_summary(enum peer_type type, const void *msg, char *out, size_t outlen);
 
 #endif
