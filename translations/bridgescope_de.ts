@@ -7431,6 +7431,13 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     </message>
 </context>
 <context>
+    <name>SourceMessage</name>
+    <message>
+        <source>no ROS type was announced for it</source>
+        <translation>dafür wurde kein ROS-Typ angekündigt</translation>
+    </message>
+</context>
+<context>
     <name>StampCodec</name>
     <message>
         <source>TimeStamped message too short (%1 bytes)</source>

@@ -2,7 +2,7 @@
 #include "ros2stampsource.h"
 
 #include "ros2/ros2participant.h"
-#include "wire/stampcodec.h"
+#include "wire/sourcemessage.h"
 
 #include <QCoreApplication>
 
@@ -26,8 +26,8 @@ void Ros2StampSource::unwatch(const QString& topic)
 {
     if (!m_participant)
         return;
-    m_droppedBefore += m_participant->droppedMessages(topic);
-    m_participant->unwatchMessages(topic);
+    m_droppedBefore += m_participant->droppedMessages(topic, this);
+    m_participant->unwatchMessages(topic, this);
 }
 
 void Ros2StampSource::setTopics(const QHash<QString, QString>& stampTopics, const QSet<QString>& latencyTopics)
@@ -47,7 +47,7 @@ void Ros2StampSource::setTopics(const QHash<QString, QString>& stampTopics, cons
         after.insert(it.key());
     for (const QString& t : std::as_const(after))
         if (!had(t))
-            m_participant->watchMessages(t, kQueued, kQueuedBytes);
+            m_participant->watchMessages(t, kQueued, kQueuedBytes, this);
     m_stamps = stampTopics;
     m_latencies = latencyTopics;
 }
@@ -59,15 +59,15 @@ void Ros2StampSource::fail(const QString& topic, const QString& why)
     m_lastError = topic + u": "_s + why;
 }
 
-void Ros2StampSource::take(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies)
+void Ros2StampSource::takeStamps(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies)
 {
     if (!m_participant)
         return;
     for (auto it = m_stamps.cbegin(); it != m_stamps.cend(); ++it) {
-        for (const Ros2Sample& s : m_participant->takeMessages(it.key())) {
+        for (const Ros2Sample& s : m_participant->takeMessages(it.key(), this)) {
             ++m_received;
             QString why;
-            const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStampedCdr(s.bytes, &why);
+            const std::optional<StampCodec::Decoded> d = SourceMessage::decodeStamp(SourceGraph::Ros2, s.bytes, &why);
             if (d)
                 stamps.push_back(StampEvent {it.value(), d->sampleNs, d->timeNs, s.receivedNs});
             else
@@ -75,9 +75,9 @@ void Ros2StampSource::take(std::vector<StampEvent>& stamps, std::vector<LatencyV
         }
     }
     for (const QString& topic : std::as_const(m_latencies)) {
-        for (const Ros2Sample& s : m_participant->takeMessages(topic)) {
+        for (const Ros2Sample& s : m_participant->takeMessages(topic, this)) {
             ++m_received;
-            if (const std::optional<qint64> ns = StampCodec::decodeFloat64SecondsCdr(s.bytes))
+            if (const std::optional<qint64> ns = SourceMessage::decodeLatency(SourceGraph::Ros2, s.bytes))
                 latencies.push_back(LatencyValue {topic, *ns, s.receivedNs});
             else
                 fail(topic, QCoreApplication::translate("RosStampSource", "a latency that is no finite number of seconds"));
@@ -90,9 +90,9 @@ quint64 Ros2StampSource::dropped() const
     quint64 n = m_droppedBefore;
     if (m_participant) {
         for (auto it = m_stamps.cbegin(); it != m_stamps.cend(); ++it)
-            n += m_participant->droppedMessages(it.key());
+            n += m_participant->droppedMessages(it.key(), this);
         for (const QString& t : m_latencies)
-            n += m_participant->droppedMessages(t);
+            n += m_participant->droppedMessages(t, this);
     }
     return n;
 }

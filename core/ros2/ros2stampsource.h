@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "latency/stampsource.h"
 #include "wire/stampevent.h"
 
 #include <QHash>
@@ -18,9 +19,10 @@ class Ros2Participant;
 /// (Ros2Participant::watchMessages()) and decoded by hand (StampCodec).
 ///
 /// A stamp needs the whole sample (its frame_id comes before `time`), so a topic is watched, not
-/// only monitored; the participant asks the DDS child again after a restart. Everything runs on the
+/// only monitored, in a queue of this source's own (a field plot of the same topic takes nothing
+/// from it); the participant asks the DDS child again after a restart. Everything runs on the
 /// thread of the participant (the GUI thread): take() decodes what the participant collected.
-class Ros2StampSource : public QObject
+class Ros2StampSource : public QObject, public StampSource
 {
     Q_OBJECT
 public:
@@ -39,13 +41,17 @@ public:
     QSet<QString> latencyTopics() const { return m_latencies; }
 
     /// Decodes what arrived since the last call: stamps into `stamps`, latencies into `latencies`.
-    void take(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies);
+    void takeStamps(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies) override;
     quint64 received() const { return m_received; }
     quint64 malformed() const { return m_malformed; } ///< samples that did not decode
     /// Malformed samples per topic (its ROS 2 name), and the last one's reason ("TOPIC: why").
     const QHash<QString, quint64>& malformedByTopic() const { return m_malformedByTopic; }
     QString lastError() const { return m_lastError; }
     quint64 dropped() const; ///< lost because too many came between two takes
+
+    quint64 malformedStamps() const override { return m_malformed; }
+    QHash<QString, quint64> malformedStampsByTopic() const override { return m_malformedByTopic; }
+    QString lastStampError() const override { return m_lastError; }
 
 private:
     void fail(const QString& topic, const QString& why);

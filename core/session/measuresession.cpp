@@ -8,7 +8,7 @@
 #include "ros/rosstampsource.h"
 #include "ros2/ros2stampsource.h"
 #include "session/livesession.h"
-#include "wire/stampcodec.h"
+#include "wire/sourcemessage.h"
 
 #include <QDateTime>
 #include <QThread>
@@ -35,9 +35,8 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
         emit recordingFailed(why);
     });
     // The MQTT batch comes before drained() in the same tick: collect it, ingest on drained().
-    live->addMqttListener([this](const std::vector<MqttMessage>& batch) {
-        m_mqttDecoder.decode(batch, m_pendingStamps, m_pendingLatencies);
-    });
+    live->addMqttListener([this](const std::vector<MqttMessage>& batch) { m_mqttDecoder.collect(batch); });
+    m_sources = {m_ros, m_ros2, &m_mqttDecoder};
     connect(live, &LiveSession::drained, this, &MeasureSession::onDrained);
     connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &MeasureSession::onGraph);
     connect(live->rosGraph(), &RosGraphPoller::masterRestarted, m_ros, &RosStampSource::resubscribeAll);
@@ -55,7 +54,7 @@ void MeasureSession::onGraph(const RosGraph& graph)
     QSet<QString> stamps;
     QSet<QString> latencies;
     for (const RosTopicInfo& t : graph.topics) {
-        if (t.type == QLatin1StringView(StampCodec::typeName()))
+        if (t.type == SourceMessage::stampType(SourceGraph::Ros1))
             stamps.insert(t.name);
         else if (t.type == u"std_msgs/Float64"_s && t.name.contains(u"/latencies/"_s))
             latencies.insert(t.name);
@@ -70,7 +69,7 @@ void MeasureSession::onRos2Graph(const Ros2Graph& graph)
     QSet<QString> stamps;
     QSet<QString> latencies;
     for (const Ros2Topic& t : graph.topics) {
-        if (t.types.contains(QLatin1StringView(StampCodec::ros2TypeName())))
+        if (t.types.contains(SourceMessage::stampType(SourceGraph::Ros2)))
             stamps.insert(t.name);
         else if (t.types.contains(u"std_msgs/msg/Float64"_s) && t.name.contains(u"/latencies/"_s))
             latencies.insert(t.name);
@@ -107,14 +106,10 @@ void MeasureSession::updateSubscriptions()
 void MeasureSession::onDrained(qint64 nowNs)
 {
     Q_ASSERT(QThread::currentThread() == thread());
-    std::vector<StampEvent> stamps = m_ros->takeStamps();
-    stamps.insert(stamps.end(), std::make_move_iterator(m_pendingStamps.begin()),
-                  std::make_move_iterator(m_pendingStamps.end()));
-    m_pendingStamps.clear();
-    std::vector<LatencyValue> latencies = m_ros->takeLatencies();
-    latencies.insert(latencies.end(), m_pendingLatencies.begin(), m_pendingLatencies.end());
-    m_pendingLatencies.clear();
-    m_ros2->take(stamps, latencies);
+    std::vector<StampEvent> stamps;
+    std::vector<LatencyValue> latencies;
+    for (StampSource* source : m_sources)
+        source->takeStamps(stamps, latencies);
     if (m_showingRun)
         return; // a recorded run is on screen: live stamps are not measured meanwhile
     m_recorder->add(stamps, latencies, nowNs);
@@ -231,23 +226,28 @@ void MeasureSession::reset()
 
 quint64 MeasureSession::malformedStamps() const
 {
-    return m_mqttDecoder.malformed() + m_ros->malformed() + m_ros->wrongType() + m_ros2->malformed();
+    quint64 n = 0;
+    for (const StampSource* source : m_sources)
+        n += source->malformedStamps();
+    return n;
 }
 
 QHash<QString, quint64> MeasureSession::malformedStampsByTopic() const
 {
-    QHash<QString, quint64> all = m_ros->malformedByTopic();
-    for (const QHash<QString, quint64>* more : {&m_mqttDecoder.malformedByTopic(), &m_ros2->malformedByTopic()})
-        for (auto it = more->cbegin(); it != more->cend(); ++it)
+    QHash<QString, quint64> all;
+    for (const StampSource* source : m_sources) {
+        const QHash<QString, quint64> more = source->malformedStampsByTopic();
+        for (auto it = more.cbegin(); it != more.cend(); ++it)
             all[it.key()] += it.value();
+    }
     return all;
 }
 
 QString MeasureSession::lastStampError() const
 {
     QStringList both;
-    for (const QString& e : {m_ros->lastError(), m_ros2->lastError(), m_mqttDecoder.lastError()})
-        if (!e.isEmpty())
+    for (const StampSource* source : m_sources)
+        if (const QString e = source->lastStampError(); !e.isEmpty())
             both << e;
     return both.join(u"; ");
 }

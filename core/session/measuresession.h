@@ -130,8 +130,7 @@ private:
     LatencyStatsModel* m_stats;
     PipelineDiscovery m_discovery;
     MqttStampDecoder m_mqttDecoder;
-    std::vector<StampEvent> m_pendingStamps;
-    std::vector<LatencyValue> m_pendingLatencies;
+    std::vector<StampSource*> m_sources; ///< ROS 1, ROS 2, MQTT: the order a tick's stamps come in
     QSet<QString> m_graphStampTopics;
     QSet<QString> m_graphLatencyTopics;
     QSet<QString> m_ros2StampTopics; ///< in the ROS 2 graph, by type

@@ -7,11 +7,14 @@
 // printed. A node that sends malformed stamps (a frame_id of 4 GiB) is counted per topic.
 #include "latency/latencyengine.h"
 #include "pythonref.h"
+#include "ros2/ros2participant.h"
 #include "ros2peer.h"
+#include "ros2stampchain.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "wire/stampcodec.h"
 
+#include <memory>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -19,61 +22,19 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 using namespace Qt::StringLiterals;
 
 namespace {
 constexpr int kSamples = 100;
-const QStringList kTopics {u"/lab/vehicle/out"_s, u"/lab/cloud/in"_s, u"/lab/cloud/out"_s, u"/lab/vehicle/in"_s};
+const QStringList& kTopics = Ros2StampChain::topics();
+using Ros2StampChain::reference;
+using Ros2StampChain::suiteCsv;
 
-/// The chain: 50 Hz, stamped 0, 20, 35 and 60 ms after the sample (plus up to 1 ms of jitter).
 QStringList chainArgs(int count)
 {
-    const QString type = u":benchmarking_suite/msg/TimeStamped:50"_s;
-    QStringList args {u"--node"_s, u"/lab/chain"_s, u"--count"_s, QString::number(count), u"--start-matched"_s,
-                      u"--duration"_s, u"60"_s};
-    const int delays[] = {0, 20, 35, 60};
-    for (int i = 0; i < kTopics.size(); ++i)
-        args << u"--pub"_s << kTopics[i] + type << u"--stamp-delay"_s
-             << kTopics[i] + u':' + QString::number(delays[i]);
-    return args;
-}
-
-/// The peer's `stamp TOPIC N SAMPLE_NS TIME_NS` lines as the suite's timestamp CSV (a row per
-/// sample that every topic stamped), for the numpy reference.
-QString suiteCsv(const QStringList& lines, int* rows)
-{
-    QHash<qint64, QHash<QString, qint64>> bySample;
-    for (const QString& l : lines) {
-        const QStringList f = l.split(u' ');
-        if (f.size() == 5 && f[0] == u"stamp"_s)
-            bySample[f[3].toLongLong()][f[1]] = f[4].toLongLong();
-    }
-    QList<qint64> samples = bySample.keys();
-    std::sort(samples.begin(), samples.end());
-    QString csv = kTopics.join(u',') + u'\n';
-    *rows = 0;
-    for (qint64 s : samples) {
-        if (bySample[s].size() != kTopics.size())
-            continue;
-        QStringList cells;
-        for (const QString& t : kTopics)
-            cells << StampCodec::timeText(bySample[s][t]);
-        csv += cells.join(u',') + u'\n';
-        ++*rows;
-    }
-    return csv;
-}
-
-/// numpy's figures of the CSV: {"stages": [...], "total": {...}} in ms.
-QJsonObject reference(const QTemporaryDir& dir, const QString& csv)
-{
-    QFile f(dir.filePath(u"stamps.csv"_s));
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write(csv.toUtf8());
-    f.close();
-    return PythonRef::run(u"latency_reference.py"_s, {f.fileName()}).object();
+    return Ros2StampChain::args(count);
 }
 
 bool same(double ours, const QJsonValue& ref)
@@ -112,16 +73,26 @@ class TestRos2Stamps : public QObject
     Q_OBJECT
     int m_domain = 0;
 
+private:
+    /// A live session on the test's private domain (loopback only), without a ROS 1 master.
+    std::unique_ptr<LiveSession> ros2Live()
+    {
+        auto live = std::make_unique<LiveSession>();
+        live->setRosMasterUri(u"http://127.0.0.1:1"_s);
+        QString error;
+        if (!live->startRos2({m_domain, true}, &error))
+            qWarning("%s", qPrintable(error));
+        return live;
+    }
+
 private slots:
     void initTestCase() { m_domain = Ros2Peer::freeDomain(101, 120); }
 
     void measureSessionMatchesNumpy()
     {
-        LiveSession live;
-        live.setRosMasterUri(u"http://127.0.0.1:1"_s); // no ROS 1 here
-        QString error;
-        QVERIFY2(live.startRos2({m_domain, true}, &error), qPrintable(error));
-        MeasureSession measure(&live);
+        const auto live = ros2Live();
+        QVERIFY(live->isRos2Running());
+        MeasureSession measure(live.get());
         measure.setPipeline(Pipeline(kTopics, 1000));
         Ros2Peer chain(m_domain, chainArgs(kSamples));
         QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
@@ -198,13 +169,78 @@ private slots:
         QVERIFY(sameStats(ours.value(u"total"_s).toObject(), ref.value(u"total"_s).toObject()));
     }
 
+    // A field plot of a stamp topic (the Discover page's, which watches it as the default owner)
+    // takes its samples from a queue of its own, and ending it ends nothing of the Measure page's.
+    void aFieldPlotOfAStampTopicTakesNothingFromMeasure()
+    {
+        const auto live = ros2Live();
+        QVERIFY(live->isRos2Running());
+        MeasureSession measure(live.get());
+        measure.setPipeline(Pipeline(kTopics, 1000));
+        Ros2Participant* p = live->ros2();
+        p->watchMessages(kTopics[1], 1000, 1 << 20);
+        int plotted = 0;
+        QTimer plot;
+        connect(&plot, &QTimer::timeout, this, [&] {
+            plotted += int(p->takeMessages(kTopics[1]).size());
+            if (plotted >= kSamples / 3 && p->isWatched(kTopics[1])) {
+                p->unwatchMessages(kTopics[1]); // the plot closes halfway
+                plotted += 1000;
+            }
+        });
+        plot.start(5);
+        Ros2Peer chain(m_domain, chainArgs(kSamples));
+        QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
+        const LatencyEngine& e = measure.engine();
+        QTRY_VERIFY2_WITH_TIMEOUT(e.samples() >= kSamples, qPrintable(QString::number(e.samples())), 20000);
+        QVERIFY2(plotted > 1000, qPrintable(QString::number(plotted))); // the plot had its samples too
+        QCOMPARE(e.samples(), qint64(kSamples));
+        QCOMPARE(e.counters().dropped(), quint64(0));
+    }
+
+    // mqtt_client's ROS 2 ~/latencies/<topic> (std_msgs/msg/Float64, seconds) are rows of their own.
+    void ros2LatenciesAreRowsOfTheirOwn()
+    {
+        const auto live = ros2Live();
+        QVERIFY(live->isRos2Running());
+        MeasureSession measure(live.get());
+        constexpr int kValues = 30;
+        Ros2Peer bridge(m_domain, {u"--node"_s, u"/mqtt_client"_s, u"--pub"_s,
+                                   u"/mqtt_client/latencies/lab/out:std_msgs/msg/Float64:50"_s, u"--count"_s,
+                                   QString::number(kValues), u"--start-matched"_s, u"--duration"_s, u"30"_s});
+        QVERIFY2(bridge.waitFor(u"ready"_s), qPrintable(bridge.errors()));
+        const LatencyEngine& e = measure.engine();
+        const QString id = u"ext:/mqtt_client/latencies/lab/out"_s;
+        QTRY_VERIFY_WITH_TIMEOUT(e.indexOf(id) >= 0 && e.series(e.indexOf(id)).stats().count >= kValues, 15000);
+        const LatencyStats s = e.series(e.indexOf(id)).stats();
+        QCOMPARE(s.count, qint64(kValues));
+        // sample N carries (10 + N mod 10) ms: 1..30 give 11..19, 10 three times each
+        QCOMPARE(s.min, 10.0);
+        QCOMPARE(s.max, 19.0);
+        QCOMPARE(s.mean, 14.5);
+        QCOMPARE(s.median, 14.5);
+        QCOMPARE(measure.malformedStamps(), quint64(0));
+    }
+
+    // A ROS 2 stamp topic has its plain name, unless the master has a stamp topic of that name or
+    // the pipeline names it `ros2:/topic` (docs/formats.md); such a pipeline file reads.
+    void ros2NamesWhereRos1HasTheSameName()
+    {
+        const std::optional<Pipeline> pipe = Pipeline::fromYaml("topics_in_order:\n  - /a\n  - ros2:/b\n  - c\n");
+        QVERIFY(pipe);
+        QCOMPARE(pipe->topics(), (QStringList {u"/a"_s, u"ros2:/b"_s, u"c"_s}));
+        QCOMPARE(MeasureSession::ros2StampName(u"/a"_s, {}, *pipe), u"/a"_s);
+        QCOMPARE(MeasureSession::ros2StampName(u"/a"_s, {u"/a"_s}, *pipe), u"ros2:/a"_s);
+        QCOMPARE(MeasureSession::ros2StampName(u"/b"_s, {}, *pipe), u"ros2:/b"_s);
+        QCOMPARE(MeasureSession::ros2StampName(u"/c"_s, {}, *pipe), u"/c"_s);
+        QVERIFY(pipe->indexOf(u"ros2:/b"_s) == 1 && pipe->indexOf(u"/b"_s) < 0);
+    }
+
     void malformedStampsAreCountedPerTopic()
     {
-        LiveSession live;
-        live.setRosMasterUri(u"http://127.0.0.1:1"_s);
-        QString error;
-        QVERIFY2(live.startRos2({m_domain, true}, &error), qPrintable(error));
-        MeasureSession measure(&live);
+        const auto live = ros2Live();
+        QVERIFY(live->isRos2Running());
+        MeasureSession measure(live.get());
         // A stamp whose frame_id claims 4 GiB, in 28 bytes.
         Ros2Peer hostile(m_domain, {u"--pub"_s, u"/lab/bad:benchmarking_suite/msg/TimeStamped:50"_s,
                                     u"--raw"_s, u"/lab/bad:0001000000f1536515cd5b07f0ffffff6162000001f1536500e1f505"_s,
@@ -217,8 +253,8 @@ private slots:
         // The good topic's stamps go on arriving meanwhile (found by type, no pipeline asked for it).
         QTRY_VERIFY_WITH_TIMEOUT(measure.discovery().topics().contains(u"/lab/good"_s), 10000);
         QCOMPARE(measure.malformedStampsByTopic().value(u"/lab/good"_s), quint64(0));
-        QVERIFY(live.ros2()->isRunning());
-        QCOMPARE(live.ros2()->restarts(), quint64(0));
+        QVERIFY(live->ros2()->isRunning());
+        QCOMPARE(live->ros2()->restarts(), quint64(0));
     }
 };
 

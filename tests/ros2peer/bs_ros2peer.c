@@ -283,6 +283,7 @@ static bool create_entities(void)
         }
         p->sample.stamp_delay_ns = p->ep->stamp_delay_ns;
         p->sample.salt = i + 1;
+        p->sample.period_ns = p->ep->rate_hz > 0.0 ? (int64_t)(1e9 / p->ep->rate_hz + 0.5) : 1000000;
         dds_set_status_mask(p->writer, DDS_PUBLICATION_MATCHED_STATUS);
         dds_waitset_attach(peer.waitset, p->writer, ATTACH(ATTACH_PUB, i));
     }

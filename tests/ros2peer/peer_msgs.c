@@ -19,6 +19,7 @@ const dds_topic_descriptor_t *peer_type_descriptor(enum peer_type type)
     case PEER_POINT_CLOUD2: return &sensor_msgs_msg_dds__PointCloud2__desc;
     case PEER_OPAQUE: return &bridgescope_test_msg_dds__Opaque__desc;
     case PEER_TIME_STAMPED: return &benchmarking_suite_msg_dds__TimeStamped__desc;
+    case PEER_FLOAT64: return &std_msgs_msg_dds__Float64__desc;
     default: return NULL;
     }
 }
@@ -67,6 +68,8 @@ int peer_sample_init(struct peer_sample *s, enum peer_type type, uint32_t size)
     }
     case PEER_TIME_STAMPED:
         s->msg.stamped.header.frame_id = s->frame_id;
+        break;
+    case PEER_FLOAT64:
         break;
     case PEER_OPAQUE:
         s->bytes = size > 0 ? malloc(size) : NULL;
@@ -160,9 +163,15 @@ void peer_sample_fill(struct peer_sample *s, uint64_t n)
     case PEER_OPAQUE:
         s->msg.opaque.n = (uint32_t)n;
         break;
+    case PEER_FLOAT64: // a latency as mqtt_client's ~/latencies/<topic>: 10 to 19 ms, in seconds
+        s->msg.float64.data = (double)(10 + n % 10) / 1000.0;
+        break;
     case PEER_TIME_STAMPED: {
-        uint64_t mix = (n * 2654435761u + (uint64_t)s->salt * 40503u) % 1000u;
-        s->stamp_ns = stamp_base_ns() + (int64_t)n * 1000000;
+        // splitmix64's finalizer of (n, salt): a jitter spread evenly over 0..999 us
+        uint64_t mix = n * 0x9E3779B97F4A7C15ull + (uint64_t)s->salt * 0xBF58476D1CE4E5B9ull;
+        mix = (mix ^ (mix >> 31)) * 0x94D049BB133111EBull;
+        mix = (mix ^ (mix >> 29)) % 1000u;
+        s->stamp_ns = stamp_base_ns() + (int64_t)n * s->period_ns;
         s->time_ns = s->stamp_ns + s->stamp_delay_ns + (int64_t)mix * 1000;
         set_time(&s->msg.stamped.header.stamp, s->stamp_ns);
         set_time(&s->msg.stamped.time, s->time_ns);
@@ -201,6 +210,9 @@ void peer_summary(enum peer_type type, const void *msg, char *out, size_t outlen
         snprintf(out, outlen, "n=%u blob=%u", (unsigned)o->n, (unsigned)o->blob._length);
         break;
     }
+    case PEER_FLOAT64:
+        snprintf(out, outlen, "data=%.17g", ((const std_msgs_msg_dds__Float64_ *)msg)->data);
+        break;
     case PEER_TIME_STAMPED: {
         const benchmarking_suite_msg_dds__TimeStamped_ *t = msg;
         snprintf(out, outlen, "stamp=%lld time=%lld",

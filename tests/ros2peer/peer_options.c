@@ -16,6 +16,7 @@ static const char *const type_names[PEER_NTYPES] = {
     "sensor_msgs/msg/PointCloud2",
     "bridgescope_test/msg/Opaque",
     "benchmarking_suite/msg/TimeStamped",
+    "std_msgs/msg/Float64",
 };
 
 const char *peer_type_ros_name(enum peer_type type)
@@ -53,7 +54,8 @@ void peer_print_usage(FILE *out, const char *prog)
         "  --help                     this text\n"
         "\n"
         "TYPE: std_msgs/msg/String, geometry_msgs/msg/PoseStamped, sensor_msgs/msg/PointCloud2,\n"
-        "      bridgescope_test/msg/Opaque (uint32 n, uint8[] blob), benchmarking_suite/msg/TimeStamped\n"
+        "      bridgescope_test/msg/Opaque (uint32 n, uint8[] blob), benchmarking_suite/msg/TimeStamped,\n"
+        "      std_msgs/msg/Float64\n"
         "QOS:  comma list of reliable|best_effort, volatile|transient_local, depth=N\n"
         "      (default reliable,volatile,depth=10, as rclcpp's default)\n"
         "\n"
@@ -234,7 +236,8 @@ static bool parse_endpoint(const char *arg, bool publisher, bool rate_zero_ok, s
     strcpy(ep->topic, parts[0]);
     if (!parse_type(parts[1], &ep->type)) {
         set_err(err, errlen, "unknown type '%s' (std_msgs/msg/String, geometry_msgs/msg/PoseStamped, "
-                "sensor_msgs/msg/PointCloud2, bridgescope_test/msg/Opaque, benchmarking_suite/msg/TimeStamped)",
+                "sensor_msgs/msg/PointCloud2, bridgescope_test/msg/Opaque, benchmarking_suite/msg/TimeStamped, "
+                "std_msgs/msg/Float64)",
                 parts[1]);
         return false;
     }

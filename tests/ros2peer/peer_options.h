@@ -27,6 +27,7 @@ enum peer_type {
     PEER_POINT_CLOUD2,   // sensor_msgs/msg/PointCloud2
     PEER_OPAQUE,         // bridgescope_test/msg/Opaque
     PEER_TIME_STAMPED,   // benchmarking_suite/msg/TimeStamped
+    PEER_FLOAT64,        // std_msgs/msg/Float64
     PEER_NTYPES
 };
 
