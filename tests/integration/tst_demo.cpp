@@ -12,6 +12,8 @@
 
 #include <csignal>
 #include <QDir>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -106,6 +108,35 @@ private slots:
         for (int s = 0; s < p.stageCount(); ++s)
             if (!p.isCrossing(s))
                 QVERIFY2(e.series(e.stageSeries(s)).stats().min >= 0, qPrintable(p.stageLabel(s)));
+    }
+
+    // `demo --ros 2` headless: the lab on a private domain, measured, its report printed; nothing it
+    // started is left behind and its folder is gone (issue 34, point 4)
+    void demoCommandRunsOnRos2()
+    {
+        QProcess demo;
+        demo.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                   {u"demo"_s, u"--ros"_s, u"2"_s, u"--seconds"_s, u"6"_s, u"--size"_s, u"20000"_s, u"--format"_s,
+                    u"json"_s});
+        QVERIFY(demo.waitForFinished(60000));
+        const QString log = QString::fromUtf8(demo.readAllStandardError());
+        QVERIFY2(demo.exitCode() == 0, qPrintable(log));
+        static const QRegularExpression where(u"ROS 2 domain (\\d+) \\(this host only\\), configs in (\\S+)"_s);
+        const QRegularExpressionMatch m = where.match(log);
+        QVERIFY2(m.hasMatch(), qPrintable(log));
+        const QJsonObject report = QJsonDocument::fromJson(demo.readAllStandardOutput()).object();
+        QVERIFY2(report.value(u"samples"_s).toInt() >= 30, qPrintable(log));
+        QCOMPARE(report.value(u"dropped"_s).toInt(), 0);
+        QVERIFY2(processesWith(m.captured(2)).isEmpty(), qPrintable(processesWith(m.captured(2)).join(u'\n')));
+        QVERIFY(processesWith(u"--ros-domain "_s + m.captured(1) + u" "_s).isEmpty());
+        QVERIFY(!QDir(m.captured(2)).exists());
+        // bad values are usage errors
+        demo.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"demo"_s, u"--ros"_s, u"3"_s});
+        QVERIFY(demo.waitForFinished(10000));
+        QCOMPARE(demo.exitCode(), 2);
+        demo.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"demo"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, u"233"_s});
+        QVERIFY(demo.waitForFinished(10000));
+        QCOMPARE(demo.exitCode(), 2);
     }
 
     // The ROS 2 lab measured as the window and `demo --ros 2` do: a live session on the lab's domain,
