@@ -1160,6 +1160,34 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Use this ROS master instead of a private rosmaster.</source>
         <translation>Diesen ROS-Master statt eines eigenen rosmaster verwenden.</translation>
     </message>
+    <message>
+        <source>--ros takes 1 or 2</source>
+        <translation>--ros nimmt 1 oder 2</translation>
+    </message>
+    <message>
+        <source>--ros-domain takes a domain id from 0 to %1</source>
+        <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
+    </message>
+    <message>
+        <source>1: ROS 1 nodes around a private rosmaster (default); 2: DDS nodes and ROS 2 bridges on a free private domain on 127.0.0.1.</source>
+        <translation>1: ROS-1-Knoten um einen eigenen rosmaster (Standard); 2: DDS-Knoten und ROS-2-Brücken in einer freien eigenen Domain auf 127.0.0.1.</translation>
+    </message>
+    <message>
+        <source>With --ros 2: this domain instead of a free one.</source>
+        <translation>Mit --ros 2: diese Domain statt einer freien.</translation>
+    </message>
+    <message>
+        <source>broker %1, ROS 2 domain %2 (this host only), configs in %3</source>
+        <translation>Broker %1, ROS-2-Domain %2 (nur dieser Rechner), Konfigurationen in %3</translation>
+    </message>
+    <message>
+        <source>1: a ROS 1 node (default); 2: a ROS 2 node over DDS.</source>
+        <translation>1: ein ROS-1-Knoten (Standard); 2: ein ROS-2-Knoten über DDS.</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain id (default 0).</source>
+        <translation>ROS-2-Domain-ID (Standard 0).</translation>
+    </message>
 </context>
 <context>
     <name>DemoLab</name>
@@ -1206,6 +1234,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>cannot write to a pipe: %1</source>
         <translation>kann nicht in eine Pipe schreiben: %1</translation>
+    </message>
+    <message>
+        <source>no free ROS 2 domain on this host</source>
+        <translation>keine freie ROS-2-Domain auf diesem Rechner</translation>
     </message>
 </context>
 <context>
@@ -2405,6 +2437,10 @@ factors:
         <source>announce once cannot be honoured: what the bridge %1&apos;s command announces is not known (the real mqtt_client announces every message); say announce: every_message (or once) in its entry under bridges:</source>
         <translation>announce once ist nicht einzuhalten: was der Befehl der Bridge %1 ankündigt, ist nicht bekannt (der echte mqtt_client kündigt jede Nachricht an); announce: every_message (oder once) in ihrem Eintrag unter bridges: angeben</translation>
     </message>
+    <message>
+        <source>%1: ros is 1 (a ROS master) or 2 (DDS, a private domain per cell)</source>
+        <translation>%1: ros ist 1 (ein ROS-Master) oder 2 (DDS, eine eigene Domain je Zelle)</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentReport</name>
@@ -2571,6 +2607,18 @@ factors:
     <message>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>ROS 2 (DDS, a private domain)</source>
+        <translation>ROS 2 (DDS, eine eigene Domain)</translation>
+    </message>
+    <message>
+        <source>ROS 1</source>
+        <translation>ROS 1</translation>
+    </message>
+    <message>
+        <source>ROS</source>
+        <translation>ROS</translation>
     </message>
 </context>
 <context>
@@ -2946,6 +2994,18 @@ factors:
     <message>
         <source>Point bridgescope discover, watch or mosquitto_sub at these; configs in %1</source>
         <translation>Richten Sie bridgescope discover, watch oder mosquitto_sub darauf; Konfigurationen in %1</translation>
+    </message>
+    <message>
+        <source>Starting the demo lab: mosquitto…</source>
+        <translation>Das Demo-Labor startet: mosquitto…</translation>
+    </message>
+    <message>
+        <source>demo lab (ROS 2, domain %1): broker %2</source>
+        <translation>Demo-Labor (ROS 2, Domain %1): Broker %2</translation>
+    </message>
+    <message>
+        <source>ROS 2 (%1), the demo lab&apos;s domain</source>
+        <translation>ROS 2 (%1), die Domain des Demo-Labors</translation>
     </message>
 </context>
 <context>
@@ -5655,12 +5715,6 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>Status 0 auch dann, wenn kein Zeitstempel aufgezeichnet wurde (ein absichtlich leerer Lauf).</translation>
     </message>
     <message>
-        <source>Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.
-Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not be written, 2 bad options.</source>
-        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird. Ein nicht erreichbarer Broker oder Master, oder gar kein Zeitstempel, wird innerhalb von 5 s gemeldet; es wird weiter versucht.
-Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
-    </message>
-    <message>
         <source>nothing was recorded (%1); --allow-empty accepts an empty run</source>
         <translation>nichts wurde aufgezeichnet (%1); --allow-empty lässt einen leeren Lauf zu</translation>
     </message>
@@ -5679,6 +5733,16 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
     <message>
         <source>stamp</source>
         <translation>Zeitstempel</translation>
+    </message>
+    <message>
+        <source>Records a measurement run: every stamp of the pipeline from ROS 1, ROS 2 (--ros 2 or both) and MQTT, committed to the run file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.
+Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not be written, 2 bad options.</source>
+        <translation>Zeichnet einen Messlauf auf: jeden Zeitstempel der Pipeline von ROS 1, ROS 2 (--ros 2 oder both) und MQTT, mindestens alle 200 ms in die Laufdatei festgeschrieben, bis N Proben vollständig oder S Sekunden vergangen sind oder Strg+C gedrückt wird. Ein nicht erreichbarer Broker oder Master, oder gar kein Zeitstempel, wird innerhalb von 5 s gemeldet; es wird weiter versucht.
+Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>ROS 2 discovery restarted: the DDS process %1</source>
+        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
     </message>
 </context>
 <context>
@@ -6416,6 +6480,17 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
+    <name>Ros2DemoNodes</name>
+    <message>
+        <source>the DDS process did not join the domain</source>
+        <translation>der DDS-Prozess ist der Domain nicht beigetreten</translation>
+    </message>
+    <message>
+        <source>cannot encode the point cloud</source>
+        <translation>die Punktwolke lässt sich nicht kodieren</translation>
+    </message>
+</context>
+<context>
     <name>Ros2DiscoveryInfo</name>
     <message>
         <source>not a CDR sample (its encapsulation header is missing or not plain CDR)</source>
@@ -6844,6 +6919,38 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>--ros-domain takes a domain id from 0 to %1</source>
         <translation>--ros-domain erwartet eine Domänen-ID von 0 bis %1</translation>
+    </message>
+    <message>
+        <source>ROS_VERSION is &quot;%1&quot;, not 1 or 2: ignored</source>
+        <translation>ROS_VERSION ist „%1“, nicht 1 oder 2: nicht beachtet</translation>
+    </message>
+    <message>
+        <source>ROS_DISTRO is &quot;%1&quot;, not a ROS distribution known here: ignored</source>
+        <translation>ROS_DISTRO ist „%1“, keine hier bekannte ROS-Distribution: nicht beachtet</translation>
+    </message>
+    <message>
+        <source>ROS 1 and ROS 2</source>
+        <translation>ROS 1 und ROS 2</translation>
+    </message>
+    <message>
+        <source>ROS 2</source>
+        <translation>ROS 2</translation>
+    </message>
+    <message>
+        <source>ROS 1</source>
+        <translation>ROS 1</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>domain %1</source>
+        <translation>Domain %1</translation>
+    </message>
+    <message>
+        <source>this host only</source>
+        <translation>nur dieser Rechner</translation>
     </message>
 </context>
 <context>
@@ -7324,6 +7431,13 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     </message>
 </context>
 <context>
+    <name>SourceMessage</name>
+    <message>
+        <source>no ROS type was announced for it</source>
+        <translation>dafür wurde kein ROS-Typ angekündigt</translation>
+    </message>
+</context>
+<context>
     <name>StampCodec</name>
     <message>
         <source>TimeStamped message too short (%1 bytes)</source>
@@ -7388,6 +7502,14 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>JSON stamp&apos;s &quot;sample&quot; is empty: it names no sample</source>
         <translation>&quot;sample&quot; des JSON-Stempels ist leer: er benennt kein Sample</translation>
+    </message>
+    <message>
+        <source>not CDR: the encapsulation header is %1</source>
+        <translation>kein CDR: der Kapselungskopf ist %1</translation>
+    </message>
+    <message>
+        <source>TimeStamped holds a time before 1970</source>
+        <translation>TimeStamped enthält eine Zeit vor 1970</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,7 @@
 #include "report/report.h"
 #include "report/reportformats.h"
 #include "ros/demonodes.h"
+#include "bridge/ros2demonodes.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -38,6 +39,25 @@ struct DemoRequest
     QString runPath; ///< empty: a scratch file
 };
 
+/// --ros and --ros-domain into `lab`; false after saying what is wrong.
+bool readRos(const QString& ros, const QString& domain, DemoLab::Options* lab)
+{
+    if (ros != u"1"_s && ros != u"2"_s) {
+        err(Demo::tr("--ros takes 1 or 2"));
+        return false;
+    }
+    lab->ros = ros.toInt();
+    if (domain.isEmpty())
+        return true;
+    bool ok = false;
+    lab->rosDomain = domain.toInt(&ok);
+    if (!ok || lab->rosDomain < 0 || lab->rosDomain > Ros2Options::kMaxDomain) {
+        err(Demo::tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain));
+        return false;
+    }
+    return true;
+}
+
 /// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
 int parseDemo(const QStringList& arguments, DemoRequest* request)
 {
@@ -54,7 +74,13 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
                                     u"URL"_s);
     const QCommandLineOption master(
         u"ros-master"_s, Demo::tr("Use this ROS master instead of a private rosmaster."), u"URI"_s);
-    parser.addOptions({seconds, output, format, size, broker, master});
+    const QCommandLineOption ros(u"ros"_s,
+                                 Demo::tr("1: ROS 1 nodes around a private rosmaster (default); 2: DDS nodes "
+                                          "and ROS 2 bridges on a free private domain on 127.0.0.1."),
+                                 u"1|2"_s, u"1"_s);
+    const QCommandLineOption domain(u"ros-domain"_s, Demo::tr("With --ros 2: this domain instead of a free one."),
+                                    u"ID"_s);
+    parser.addOptions({seconds, output, format, size, broker, master, ros, domain});
     QStringList args = arguments;
     args.replace(0, u"bridgescope demo"_s);
     const int parsed = CliOutput::parseCommand(
@@ -85,6 +111,8 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
     }
     request->lab.brokerUrl = parser.value(broker);
     request->lab.rosMasterUri = parser.value(master);
+    if (!readRos(parser.value(ros), parser.isSet(domain) ? parser.value(domain) : QString(), &request->lab))
+        return ExitUsage;
     request->runPath = parser.value(output);
     if (!request->runPath.isEmpty() && QFileInfo::exists(request->runPath)) {
         err(Demo::tr("%1 exists already; a run is never overwritten").arg(request->runPath));
@@ -104,15 +132,28 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         err(Demo::tr("the demo lab did not start: %1").arg(why));
         return ExitFailed;
     }
-    err(Demo::tr("broker %1, ROS master %2, configs in %3")
-            .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri(), lab.directory()));
+    if (lab.ros() == 2)
+        err(Demo::tr("broker %1, ROS 2 domain %2 (this host only), configs in %3")
+                .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()))
+                .arg(lab.rosDomain())
+                .arg(lab.directory()));
+    else
+        err(Demo::tr("broker %1, ROS master %2, configs in %3")
+                .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri(), lab.directory()));
     const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &why);
     if (!pipeline) {
         err(why);
         return ExitFailed;
     }
     LiveSession live;
-    live.setRosMasterUri(lab.rosMasterUri());
+    if (lab.ros() == 2) {
+        if (!live.startRos2({lab.rosDomain(), true}, &why)) {
+            err(why);
+            return ExitFailed;
+        }
+    } else {
+        live.setRosMasterUri(lab.rosMasterUri());
+    }
     live.connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
     MeasureSession measure(&live);
     measure.setPipeline(*pipeline);
@@ -194,7 +235,10 @@ int runDemoNodeCommand(const QStringList& arguments)
                                        u"40"_s);
     const QCommandLineOption offset(u"clock-offset-ms"_s, Demo::tr("This host's clock error."), u"MS"_s,
                                     u"0"_s);
-    parser.addOptions({master, size, rate, detection, offset});
+    const QCommandLineOption ros(u"ros"_s, Demo::tr("1: a ROS 1 node (default); 2: a ROS 2 node over DDS."),
+                                 u"1|2"_s, u"1"_s);
+    const QCommandLineOption domain(u"ros-domain"_s, Demo::tr("ROS 2 domain id (default 0)."), u"ID"_s, u"0"_s);
+    parser.addOptions({master, size, rate, detection, offset, ros, domain});
     parser.addPositionalArgument(u"ROLE"_s, Demo::tr("vehicle or cloud."), u"vehicle|cloud"_s);
     QStringList args = arguments;
     args.replace(0, u"bridgescope demo-node"_s);
@@ -207,6 +251,9 @@ int runDemoNodeCommand(const QStringList& arguments)
         err(Demo::tr("demo-node takes vehicle or cloud"));
         return ExitUsage;
     }
+    DemoLab::Options lab;
+    if (!readRos(parser.value(ros), parser.value(domain), &lab))
+        return ExitUsage;
     DemoNodes::Options o;
     o.masterUri = parser.value(master);
     o.payloadBytes = parser.value(size).toInt();
@@ -217,8 +264,16 @@ int runDemoNodeCommand(const QStringList& arguments)
     CliOutput::keepFreedMemory();
     QString why;
     const auto stop = [] { return CliOutput::stopRequested(); };
-    const bool ok
-        = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop, &why) : DemoNodes::runCloud(o, stop, &why);
+    bool ok = false;
+    if (lab.ros == 2) {
+        // on 127.0.0.1 only, as the lab's whole domain
+        Ros2DemoNodes::Options o2;
+        static_cast<DemoNodes::Options&>(o2) = o;
+        o2.dds = {lab.rosDomain, true};
+        ok = role == u"vehicle"_s ? Ros2DemoNodes::runVehicle(o2, stop, &why) : Ros2DemoNodes::runCloud(o2, stop, &why);
+    } else {
+        ok = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop, &why) : DemoNodes::runCloud(o, stop, &why);
+    }
     if (!ok && !CliOutput::stopRequested()) {
         err(Demo::tr("demo-node %1: %2").arg(role, why));
         return ExitFailed;

@@ -237,6 +237,9 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     request->ros2Options = ros.ros2Options;
     if (request->ros2 && !ros.environmentError.isEmpty())
         err(ros.environmentError);
+    if (!ros.environmentWarning.isEmpty())
+        err(ros.environmentWarning);
+    err(ros.choice());
     return -1;
 }
 

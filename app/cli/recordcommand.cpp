@@ -2,6 +2,7 @@
 #include "recordcommand.h"
 
 #include "app/cli/clioutput.h"
+#include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "base/secrets.h"
 #include "base/yamllimits.h"
@@ -35,6 +36,8 @@ struct RecordRequest
     Pipeline pipeline;
     MqttProfile profile;
     QString masterUri;
+    bool ros1 = true;
+    std::optional<Ros2Options> ros2; ///< set: stamps from this ROS 2 domain too
     QString runPath;
     RunInfo info;
     qint64 samples = 0; ///< 0: no limit
@@ -92,12 +95,15 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
                                    "one-way latency, no clock offset (kept with the run)."));
     parser.addOptions(
         {pipeline, broker, master, samples, seconds, output, name, notes, config, allowEmpty, oneClock});
+    RosOptions ros;
+    ros.addTo(parser);
     QStringList args = arguments;
     args.replace(0, u"bridgescope record"_s);
     const int parsed = CliOutput::parseCommand(
         parser, args,
         Record::tr(
-            "Records a measurement run: every stamp of the pipeline from ROS and MQTT, committed to the run "
+            "Records a measurement run: every stamp of the pipeline from ROS 1, ROS 2 (--ros 2 or both) and "
+            "MQTT, committed to the run "
             "file at least every 200 ms, until N samples are complete, S seconds passed, or Ctrl+C. A broker "
             "or master that cannot be reached, or no stamp at all, is said within 5 s; it keeps trying.\n"
             "Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run file could not "
@@ -120,6 +126,14 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
     }
     request->allowEmpty = parser.isSet(allowEmpty);
     QString why;
+    if (!ros.read(parser, &why)) {
+        err(why);
+        return ExitUsage;
+    }
+    if (ros.ros2 && !ros.environmentError.isEmpty())
+        err(ros.environmentError);
+    request->ros1 = ros.ros1;
+    request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);
     request->profile = MqttProfile::fromUrl(parser.value(broker));
     if (!pipe || !request->profile.validate(&why)) {
@@ -146,9 +160,16 @@ int runRecord(const RecordRequest& request)
     LiveSession live;
     live.setRosMasterUri(request.masterUri);
     live.connectBroker(request.profile);
+    QString why;
+    if (request.ros2 && !live.startRos2(*request.ros2, &why)) {
+        err(why);
+        return ExitFailed;
+    }
+    QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
+        err(Record::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
+    });
     MeasureSession measure(&live);
     measure.setPipeline(request.pipeline);
-    QString why;
     if (!measure.startRecording(request.runPath, request.info, &why)) {
         err(why);
         return ExitUsage;
@@ -158,8 +179,9 @@ int runRecord(const RecordRequest& request)
         QCoreApplication::exit(ExitFailed);
     });
     const LatencyEngine& e = measure.engine();
-    // The master matters when the pipeline has a ROS topic (MQTT topics have no leading '/').
-    const bool needsMaster = std::any_of(request.pipeline.topics().cbegin(), request.pipeline.topics().cend(),
+    // The master matters when ROS 1 is asked for and the pipeline has a ROS topic (MQTT topics
+    // have no leading '/').
+    const bool needsMaster = request.ros1 && std::any_of(request.pipeline.topics().cbegin(), request.pipeline.topics().cend(),
                                          [](const QString& t) { return t.startsWith(u'/'); });
     SourceCheck sources(
         live, needsMaster, [&measure] { return measure.recorder()->committedStamps(); },

@@ -19,10 +19,21 @@ public:
     /// Reads them after parser.parse(); false with `error` on a bad value.
     bool read(const QCommandLineParser& parser, QString* error);
 
+    /// "ROS 2 (ROS_DISTRO=jazzy), domain 0": which graphs were chosen and why, as discover and watch
+    /// say it on stderr and the window in its status bar.
+    QString choice() const;
+    /// "1" or "2" as the environment says (ROS_VERSION, else a ROS_DISTRO it names), else empty;
+    /// `why` gets the variable ("ROS_DISTRO=jazzy"), `warning` a value that was not understood.
+    static QString environmentGraphs(QString* why, QString* warning);
+
     bool ros1 = true;
     bool ros2 = false;
     bool graphsSet = false; ///< --ros was given
+    bool graphsFromEnvironment = false; ///< --ros was not given and the environment chose
+    QString reason; ///< why: "--ros 2", "ROS_VERSION=2", "ROS_DISTRO=noetic" or "default"
+    QString environmentWarning; ///< a ROS_VERSION or ROS_DISTRO that was not understood (ignored)
     bool ros2OptionsSet = false; ///< --ros-domain or --ros-localhost-only was given
+    bool domainSet = false; ///< --ros-domain was given
     Ros2Options ros2Options; ///< from the environment, then the options
     QString environmentError; ///< a ROS_DOMAIN_ID that was not taken
 

@@ -198,6 +198,9 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     }
     if (ros.ros2 && !ros.environmentError.isEmpty())
         err(ros.environmentError);
+    if (!ros.environmentWarning.isEmpty())
+        err(ros.environmentWarning);
+    err(ros.choice());
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     request->ros1 = ros.ros1;
     request->masterUri = parser.value(master);

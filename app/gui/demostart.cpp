@@ -38,7 +38,9 @@ void start(MainWindow& window, DemoLab& lab, const DemoLab::Options& options,
     auto* progress = new QWidget(&window);
     auto* layout = new QHBoxLayout(progress);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* what = new QLabel(Gui::tr("Starting the demo lab: mosquitto and rosmaster…"), progress);
+    auto* what = new QLabel(options.ros == 2 ? Gui::tr("Starting the demo lab: mosquitto…")
+                                             : Gui::tr("Starting the demo lab: mosquitto and rosmaster…"),
+                            progress);
     auto* bar = new QProgressBar(progress);
     bar->setRange(0, 0); // busy: how long the servers take is unknown
     bar->setMaximumWidth(120);
@@ -87,7 +89,12 @@ void start(MainWindow& window, DemoLab& lab, const DemoLab::Options& options,
 
 void show(MainWindow& window, const DemoLab& lab)
 {
-    window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
+    if (lab.ros() == 2) { // the window's ROS 2 participant joins the lab's domain, on this host
+        window.discoverPage()->setRos2Options({lab.rosDomain(), true});
+        window.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs::Ros2);
+    } else {
+        window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
+    }
     window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
     // Both ends on Map, a tab each (the Links page watches both), the vehicle's shown.
     window.files()->openFile(lab.vehicleConfigPath());
@@ -95,8 +102,10 @@ void show(MainWindow& window, const DemoLab& lab)
     window.files()->activate(0);
     // Where the lab's servers are (random ports), so that discover, watch or mosquitto_sub can be
     // pointed at it: on stderr, as `bridgescope demo` says it, and in the status bar.
-    const QString where = Gui::tr("demo lab: broker %1, ROS master %2")
-                              .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri());
+    const QString broker = Secrets::urlWithoutCredentials(lab.brokerUrl());
+    const QString where = lab.ros() == 2
+        ? Gui::tr("demo lab (ROS 2, domain %1): broker %2").arg(lab.rosDomain()).arg(broker)
+        : Gui::tr("demo lab: broker %1, ROS master %2").arg(broker, lab.rosMasterUri());
     CliOutput::err(where);
     auto* servers = new QLabel(where, &window);
     servers->setObjectName(u"demoServers"_s);

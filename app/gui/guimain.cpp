@@ -15,10 +15,12 @@
 
 #include <optional>
 #include <QApplication>
+#include <QComboBox>
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QLibraryInfo>
 #include <QMessageBox>
+#include <QStatusBar>
 #include <QTimer>
 #include <QTranslator>
 
@@ -101,7 +103,10 @@ struct GuiRequest
     std::optional<MqttProfile> broker;
     QString masterUri; ///< empty: $ROS_MASTER_URI
     int rosGraphs = -1; ///< DiscoverPage::RosGraphs, -1: as last chosen
+    int demoRos = 1; ///< the demo lab's ROS: 2 when only ROS 2 was chosen (--ros 2, the environment)
+    int demoDomain = -1; ///< a ROS 2 demo lab's domain (--ros-domain), -1: a free one
     std::optional<Ros2Options> ros2;
+    QString rosChoice; ///< which ROS graphs --ros or the environment chose and why; empty: none did
     QString pipeline;
     int page = -1;
     bool demo = false;
@@ -177,13 +182,24 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         CliOutput::err(rosError);
         return ExitUsage;
     }
-    if (ros.graphsSet)
+    if (!ros.environmentWarning.isEmpty())
+        CliOutput::err(ros.environmentWarning);
+    request->demo = parser.isSet(demo);
+    request->demoRos = ros.ros2 && !ros.ros1 ? 2 : 1;
+    if (ros.graphsSet || ros.graphsFromEnvironment) {
+        // A ROS 2 demo lab picks its own domain (the status bar says which).
+        request->rosChoice = request->demo && request->demoRos == 2 && !ros.domainSet
+            ? Gui::tr("ROS 2 (%1), the demo lab's domain").arg(ros.reason)
+            : ros.choice();
+        CliOutput::err(request->rosChoice);
         request->rosGraphs = ros.ros1 && ros.ros2 ? 2 : (ros.ros2 ? 1 : 0);
+    }
     if (ros.ros2OptionsSet)
         request->ros2 = ros.ros2Options;
+    if (ros.domainSet)
+        request->demoDomain = ros.ros2Options.domain;
     request->masterUri = parser.value(master);
     request->pipeline = parser.value(pipeline);
-    request->demo = parser.isSet(demo);
     request->files = parser.positionalArguments();
     return -1;
 }
@@ -199,6 +215,10 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
         window.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs(request.rosGraphs));
     if (request.broker)
         window.discoverPage()->connectBroker(*request.broker);
+    if (!request.rosChoice.isEmpty()) {
+        window.discoverPage()->rosGraphsBox()->setToolTip(request.rosChoice);
+        window.statusBar()->showMessage(request.rosChoice, 15000);
+    }
     // What does not open is said, and the window opens with the rest (as a desktop's %F asks) and
     // a message box; a run for a screenshot ends instead (status 2), as a script wants.
     const bool automated = !request.screenshot.isEmpty();
@@ -262,6 +282,8 @@ int runGui(int& argc, char** argv)
         DemoLab::Options options;
         options.brokerUrl = request.brokerUrl; // given servers are used instead of private ones
         options.rosMasterUri = request.masterUri;
+        options.ros = request.demoRos;
+        options.rosDomain = request.demoDomain; // --ros-domain: this one instead of a free one
         const bool automated = !request.screenshot.isEmpty();
         DemoStart::start(window, *lab, options, [&window, &lab, &request, automated](const QString& error) {
             if (!error.isEmpty()) {
@@ -274,7 +296,10 @@ int runGui(int& argc, char** argv)
                 return;
             }
             DemoStart::show(window, *lab);
-            if (!applyRequest(window, request))
+            GuiRequest rest = request;
+            if (lab->ros() == 2)
+                rest.ros2.reset(); // the lab's domain, on this host only, as show() joined it
+            if (!applyRequest(window, rest))
                 QCoreApplication::exit(ExitUsage);
         });
     }

@@ -5,6 +5,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QThread>
+#include <QUdpSocket>
 
 namespace LoopbackPorts {
 
@@ -12,6 +13,12 @@ quint16 freePort()
 {
     QTcpServer server;
     return server.listen(QHostAddress::LocalHost, 0) ? server.serverPort() : 0;
+}
+
+bool isUdpFree(quint16 port)
+{
+    QUdpSocket socket;
+    return socket.bind(QHostAddress::LocalHost, port);
 }
 
 bool waitForListener(quint16 port, int timeoutMs, const std::function<bool()>& keepWaiting)

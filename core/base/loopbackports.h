@@ -8,6 +8,8 @@
 namespace LoopbackPorts {
 /// A port nothing listens on right now (0 when none could be found).
 quint16 freePort();
+/// Whether a UDP socket can be bound to `port` on 127.0.0.1 now (a DDS domain's discovery port).
+bool isUdpFree(quint16 port);
 /// Waits until something accepts connections on `port`, at most `timeoutMs` and while
 /// `keepWaiting` (if given) holds.
 bool waitForListener(quint16 port, int timeoutMs, const std::function<bool()>& keepWaiting = {});

@@ -9,6 +9,7 @@
 #include "config/configwriter.h"
 #include "latency/pipeline.h"
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <fcntl.h>
@@ -44,6 +45,7 @@ QString bridgeConfig(const QString& side, const QString& host, quint16 port, con
         c.broker.values.setText(u"tls.ca_certificate"_s, caFile);
     }
     c.client.values.setText(u"id"_s, u"mqtt_interface_"_s + side);
+    c.ros2NodeName = u"mqtt_interface_"_s + side; // as `-r __node:=mqtt_interface_…` names it
     const bool vehicle = side == u"vehicle"_s;
     for (const QString& data : {u"pointcloud"_s, u"object_list"_s}) {
         // The point cloud goes out from the vehicle, the object list back from the cloud.
@@ -58,7 +60,7 @@ QString bridgeConfig(const QString& side, const QString& host, quint16 port, con
             m.set(u"advanced.ros.queue_size"_s, QString::number(o.queueSize));
         c.mappings.append(m);
     }
-    return ConfigWriter::write(c, ConfigLayout::Ros1);
+    return ConfigWriter::write(c, o.ros == 2 ? ConfigLayout::Ros2 : ConfigLayout::Ros1);
 }
 
 /// `text` as one word for sh.
@@ -80,6 +82,7 @@ struct DemoLab::Private
     Options options;
     QHash<QString, quint16> bridgePorts; ///< side -> relay port
     QList<std::pair<QString, quint16>> starting; ///< servers launched, not yet listening
+    int domain = -1; ///< ROS 2: the lab's domain
 
     QProcessEnvironment rosEnvironment() const
     {
@@ -89,6 +92,13 @@ struct DemoLab::Private
         env.remove(u"ROS_HOSTNAME"_s);
         env.insert(u"ROS_HOME"_s, dir.filePath(u"ros"_s));
         env.insert(u"ROS_LOG_DIR"_s, dir.filePath(u"ros/log"_s));
+        // The lab's ROS, whatever the environment says (ROS_DISTRO=humble would make a bridge ROS 2);
+        // with ROS 2 a bridge of the lab's own (a command) joins the lab's domain too.
+        env.insert(u"ROS_VERSION"_s, options.ros == 2 ? u"2"_s : u"1"_s);
+        if (options.ros == 2) {
+            env.insert(u"ROS_DOMAIN_ID"_s, QString::number(domain));
+            env.insert(u"ROS_LOCALHOST_ONLY"_s, u"1"_s);
+        }
         return env;
     }
 
@@ -278,8 +288,11 @@ bool DemoLab::launchServers(const Options& o, QString* error)
         d->launch(u"mosquitto"_s, mosquitto, {u"-c"_s, conf.fileName()});
         started.append({u"mosquitto"_s, port});
     }
-    d->masterUri = o.rosMasterUri;
-    if (d->masterUri.isEmpty()) {
+    d->masterUri = o.ros == 2 ? QString() : o.rosMasterUri;
+    d->domain = o.ros != 2 ? -1 : (o.rosDomain >= 0 ? o.rosDomain : freeDomain());
+    if (o.ros == 2 && d->domain < 0)
+        return fail(tr("no free ROS 2 domain on this host"));
+    if (d->masterUri.isEmpty() && o.ros != 2) {
         if (rosmaster.isEmpty())
             return fail(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
         const quint16 port = LoopbackPorts::freePort();
@@ -332,7 +345,9 @@ bool DemoLab::startComponents(QString* error)
 
     // The components.
     const QString offset = QString::number(o.cloudOffsetMs);
-    const QStringList common {u"--ros-master"_s, rosMasterUri()};
+    const QStringList common = o.ros == 2
+        ? QStringList {u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(d->domain)}
+        : QStringList {u"--ros-master"_s, rosMasterUri()};
     for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
         const QString name = u"mqtt_interface_"_s + side;
         const QString config = side == u"vehicle"_s ? vehicleConfigPath() : cloudConfigPath();
@@ -344,7 +359,8 @@ bool DemoLab::startComponents(QString* error)
                 .replace(u"{broker_host}"_s, shellQuoted(relayed ? u"127.0.0.1"_s : broker.host()))
                 .replace(u"{broker_port}"_s,
                          QString::number(relayed ? d->bridgePorts.value(side) : broker.port(1883)))
-                .replace(u"{ros_master}"_s, shellQuoted(rosMasterUri()));
+                .replace(u"{ros_master}"_s, shellQuoted(rosMasterUri()))
+                .replace(u"{ros_domain}"_s, QString::number(d->domain));
             d->launch(side + u"_bridge"_s, u"/bin/sh"_s, {u"-c"_s, command});
             continue;
         }
@@ -432,6 +448,29 @@ QString DemoLab::caFile() const
 QString DemoLab::rosMasterUri() const
 {
     return d->masterUri;
+}
+
+int DemoLab::ros() const
+{
+    return d->options.ros == 2 ? 2 : 1;
+}
+
+int DemoLab::rosDomain() const
+{
+    return d->domain;
+}
+
+int DemoLab::freeDomain(int first, int last)
+{
+    static std::atomic<int> calls {0};
+    const int span = last - first + 1;
+    const int start = int((QCoreApplication::applicationPid() * 7 + calls++) % span);
+    for (int i = 0; i < span; ++i) {
+        const int domain = first + (start + i) % span;
+        if (LoopbackPorts::isUdpFree(quint16(7410 + 250 * domain)))
+            return domain;
+    }
+    return -1;
 }
 
 QString DemoLab::vehicleConfigPath() const

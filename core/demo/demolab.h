@@ -37,8 +37,14 @@ public:
         /// and the bridges verify it with ca.crt.
         QString tlsDirectory;
         /// Empty: the reference bridges. Otherwise a shell command per bridge, with {config}, {name},
-        /// {broker_host}, {broker_port} and {ros_master} replaced (shell-quoted).
+        /// {broker_host}, {broker_port}, {ros_master} and {ros_domain} replaced (shell-quoted); with
+        /// ROS 2 {config} is a ROS 2 params file whose node is {name}.
         QString bridgeCommand;
+        /// 1: a rosmaster, ROS 1 nodes and bridges. 2: DDS nodes and ROS 2 bridges on a private
+        /// domain on 127.0.0.1 (ROS_LOCALHOST_ONLY=1), no master.
+        int ros = 1;
+        /// With ROS 2: the domain; -1, a free one (see freeDomain()).
+        int rosDomain = -1;
     };
 
     DemoLab();
@@ -70,7 +76,9 @@ public:
     /// broker's, with the relay's host and port when a relay is in between.
     QString bridgeBrokerUrl(const QString& side) const;
     QString caFile() const; ///< the CA that signed the broker's certificate (TLS), else empty
-    QString rosMasterUri() const;
+    QString rosMasterUri() const; ///< empty with ROS 2
+    int ros() const; ///< 1 or 2, as started
+    int rosDomain() const; ///< with ROS 2 the lab's domain, else -1
     QString vehicleConfigPath() const; ///< the vehicle bridge's config (for the Map page)
     QString cloudConfigPath() const;
     QString pipelinePath() const; ///< the paper's pipeline with hosts (for the Measure page)
@@ -78,6 +86,10 @@ public:
     QList<qint64> processIds() const;
 
     static QStringList pipelineTopics();
+    /// A ROS 2 domain from `first` to `last` that no participant on this host uses now (the first
+    /// participant's discovery port, 7410 + 250 × domain, is free on 127.0.0.1), tried from a
+    /// different one each call so that labs one after the other get fresh domains; -1 when none.
+    static int freeDomain(int first = 161, int last = 232);
 
 private:
     struct Private;

@@ -348,7 +348,7 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
     static const QStringList known {u"name"_s,      u"samples"_s, u"warmup"_s,   u"repetitions"_s,
                                     u"timeout_s"_s, u"servers"_s, u"pipeline"_s, u"defaults"_s,
                                     u"factors"_s,   u"cells"_s,   u"bridges"_s,  u"links"_s,
-                                    u"throughput"_s};
+                                    u"throughput"_s, u"ros"_s};
     for (const auto& kv : root) {
         const QString key = text(kv.first);
         if (!known.contains(key))
@@ -383,11 +383,17 @@ std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, c
                 tr("%1: timeout_s takes 1 to %2 seconds").arg(where(t.Mark())).arg(kMaxTimeoutSeconds));
         plan.cellTimeoutS = *v;
     }
+    if (const YAML::Node r = root["ros"]) {
+        const QString ros = text(r);
+        if (ros != u"1"_s && ros != u"2"_s)
+            return fail(tr("%1: ros is 1 (a ROS master) or 2 (DDS, a private domain per cell)").arg(where(r.Mark())));
+        plan.ros = ros.toInt();
+    }
     if (const YAML::Node s = root["servers"]) {
         if (s.IsMap()) {
             plan.brokerUrl = text(s["broker"]);
             plan.rosMasterUri = text(s["ros_master"]);
-            if (plan.brokerUrl.isEmpty() || plan.rosMasterUri.isEmpty())
+            if (plan.brokerUrl.isEmpty() || (plan.rosMasterUri.isEmpty() && plan.ros == 1))
                 return fail(tr("%1: servers given are {broker: URL, ros_master: URI}").arg(where(s.Mark())));
             if (Secrets::urlWithoutCredentials(plan.brokerUrl) != plan.brokerUrl)
                 return fail(tr("%1: a plan holds no credentials (it is copied next to its runs): give the "

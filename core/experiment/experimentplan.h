@@ -22,7 +22,8 @@ struct BridgeImplementation
 {
     QString name = QStringLiteral("reference");
     /// Empty: the reference bridge. Otherwise a shell command with {config}, {name}, {broker_host},
-    /// {broker_port} and {ros_master} replaced (each shell-quoted), run once per bridge.
+    /// {broker_port}, {ros_master} and {ros_domain} replaced (each shell-quoted), run once per
+    /// bridge; with `ros: 2` {config} is a ROS 2 params file whose node is {name}.
     QString command;
     /// What the command's bridge announces, as its `bridges:` entry says: "once", "every_message",
     /// or empty when the plan does not say (a cell then cannot ask it for `announce: once`).
@@ -83,7 +84,10 @@ public:
     int repetitions = 1;
     double cellTimeoutS = 0; ///< 0: from the samples and rate (3x, plus a minute)
     QString brokerUrl; ///< empty: a private mosquitto per cell
-    QString rosMasterUri; ///< empty: a private rosmaster per cell
+    QString rosMasterUri; ///< empty: a private rosmaster per cell (ROS 1)
+    /// 1: ROS 1 nodes and bridges around a rosmaster; 2: DDS nodes and ROS 2 bridges, every cell
+    /// on a fresh private domain (`ros: 2`).
+    int ros = 1;
     QString pipelinePath; ///< empty: the paper's pipeline of the lab
     QStringList factors; ///< names of the factors that vary, in the plan's order
     QList<ExperimentCell> cells;

@@ -429,6 +429,11 @@ QStringList ExperimentReport::findings() const
     return out;
 }
 
+QString ExperimentReport::rosText() const
+{
+    return m_plan.ros == 2 ? tr("ROS 2 (DDS, a private domain)") : tr("ROS 1");
+}
+
 QString ExperimentReport::toMarkdown(const QList<Statistic>& statistics, const QString& figurePrefix) const
 {
     int complete = 0;
@@ -515,12 +520,12 @@ QString ExperimentReport::toMarkdown(const QList<Statistic>& statistics, const Q
         }
         md += u"\n"_s;
     }
-    md += u"## "_s + tr("Cells") + u"\n\n| "_s + tr("cell") + u" | "_s + tr("levels") + u" | "_s + tr("state")
-        + u" | "_s + tr("samples") + u" | "_s + tr("total mean") + u" | "_s + tr("run") + u" |\n"_s
-        + u"| --- | --- | --- | ---: | ---: | --- |\n"_s;
+    md += u"## "_s + tr("Cells") + u"\n\n| "_s + tr("cell") + u" | "_s + tr("levels") + u" | "_s + tr("ROS")
+        + u" | "_s + tr("state") + u" | "_s + tr("samples") + u" | "_s + tr("total mean") + u" | "_s + tr("run")
+        + u" |\n"_s + u"| --- | --- | --- | --- | ---: | ---: | --- |\n"_s;
     for (const Cell& c : m_cells)
-        md += u"| %1 | %2 | %3 | %4 | %5 | %6 |\n"_s.arg(
-            c.cell.id(), levelsText(c.cell), CellStatus::stateName(c.status.state),
+        md += u"| %1 | %2 | %3 | %4 | %5 | %6 | %7 |\n"_s.arg(
+            c.cell.id(), levelsText(c.cell), rosText(), CellStatus::stateName(c.status.state),
             c.groups.isEmpty() ? u"–"_s : QString::number(c.groups.last().count),
             c.groups.isEmpty() ? u"–"_s : number(c.groups.last().mean),
             c.status.state == CellStatus::Complete ? u"`"_s + c.status.run + u"`"_s : u"–"_s);
@@ -646,12 +651,12 @@ QString ExperimentReport::toHtml(const QList<Statistic>& statistics, bool figure
         html += u"</table>\n"_s;
     }
     html
-        += u"<h2>%1</h2>\n<table cellpadding=\"3\" cellspacing=\"0\"><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th></tr>\n"_s
-               .arg(tr("Cells"), tr("cell"), tr("levels"), tr("state"), tr("samples"), tr("run"));
+        += u"<h2>%1</h2>\n<table cellpadding=\"3\" cellspacing=\"0\"><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th><th>%7</th></tr>\n"_s
+               .arg(tr("Cells"), tr("cell"), tr("levels"), tr("ROS"), tr("state"), tr("samples"), tr("run"));
     for (const Cell& c : m_cells)
         html
-            += u"<tr><td>%1</td><td>%2</td><td>%3</td><td class=\"n\" align=\"right\">%4</td><td>%5</td></tr>\n"_s
-                   .arg(c.cell.id().toHtmlEscaped(), levelsText(c.cell).toHtmlEscaped(),
+            += u"<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td class=\"n\" align=\"right\">%5</td><td>%6</td></tr>\n"_s
+                   .arg(c.cell.id().toHtmlEscaped(), levelsText(c.cell).toHtmlEscaped(), rosText(),
                         CellStatus::stateName(c.status.state),
                         c.groups.isEmpty() ? u"–"_s : QString::number(c.groups.last().count),
                         c.status.run.toHtmlEscaped());
@@ -732,6 +737,7 @@ QByteArray ExperimentReport::toJson() const
     for (const Cell& c : m_cells) {
         QJsonObject o {{u"id"_s, c.cell.id()},
                        {u"levels"_s, RunInfo::levelsJson(c.cell.levels)},
+                       {u"ros"_s, m_plan.ros},
                        {u"state"_s, CellStatus::stateName(c.status.state)},
                        {u"run"_s, c.status.run},
                        {u"groups"_s, groupStats(c.groups)}};
@@ -766,7 +772,7 @@ QByteArray ExperimentReport::toJson() const
 
 QString ExperimentReport::toCsv() const
 {
-    QString csv = u"cell,levels,state,group,count,mean_ms,median_ms,std_ms,min_ms,max_ms,p99_ms\n"_s;
+    QString csv = u"cell,levels,state,group,count,mean_ms,median_ms,std_ms,min_ms,max_ms,p99_ms,ros\n"_s;
     const auto field = [](QString s) {
         if (s.contains(u',') || s.contains(u'"') || s.contains(u'\n'))
             s = u"\""_s + s.replace(u"\""_s, u"\"\""_s) + u"\""_s;
@@ -786,7 +792,8 @@ QString ExperimentReport::toCsv() const
                                 n(s.std),
                                 n(s.min),
                                 n(s.max),
-                                n(s.p99)}
+                                n(s.p99),
+                                QString::number(m_plan.ros)}
                        .join(u',')
                 + u'\n';
         }

@@ -103,6 +103,7 @@ public:
     QString toCsv() const; ///< one row per cell and group: every statistic
 
 private:
+    QString rosText() const; ///< which ROS the cells ran on: "ROS 1", "ROS 2 (DDS, a private domain)"
     ExperimentPlan m_plan;
     QString m_dir;
     QList<Group> m_groups;

@@ -315,6 +315,7 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
     o.announceEveryMessage = s.announceEveryMessage;
     o.tlsDirectory = s.tls ? QDir(m_dir).filePath(u"tls"_s) : QString();
     o.bridgeCommand = s.bridge.command;
+    o.ros = m_plan.ros; // ROS 2: the lab picks a fresh free domain for each cell
     if (!c.lab.startServers(o, why))
         return false;
     if (!s.link.isNone()) {
@@ -338,7 +339,15 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
         return false;
     pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
     c.live = std::make_unique<LiveSession>();
-    c.live->setRosMasterUri(c.lab.rosMasterUri());
+    if (c.lab.ros() == 2) {
+        Ros2Options dds;
+        dds.domain = c.lab.rosDomain();
+        dds.localhostOnly = true;
+        if (!c.live->startRos2(dds, why))
+            return false;
+    } else {
+        c.live->setRosMasterUri(c.lab.rosMasterUri());
+    }
     MqttProfile profile = MqttProfile::fromUrl(c.lab.brokerUrl());
     profile.caFile = c.lab.caFile();
     c.live->connectBroker(profile);
@@ -404,7 +413,7 @@ void ExperimentRunner::saySilence(Cell& c)
     if (mqtt->state() != MqttConnection::State::Connected)
         why << tr("the broker %1 cannot be reached (%2)")
                    .arg(MqttProfile::withoutCredentials(mqtt->profile().url), mqtt->stateDetail());
-    if (!c.live->rosGraph()->isReachable())
+    if (c.lab.ros() == 1 && !c.live->rosGraph()->isReachable())
         why << tr("the ROS master %1 cannot be reached (%2)")
                    .arg(MqttProfile::withoutCredentials(c.live->rosMasterUri()),
                         c.live->rosGraph()->lastError());

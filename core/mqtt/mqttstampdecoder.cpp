@@ -2,7 +2,7 @@
 #include "mqttstampdecoder.h"
 
 #include "wire/mqttclientwire.h"
-#include "wire/stampcodec.h"
+#include "wire/sourcemessage.h"
 
 #include <algorithm>
 #include <string_view>
@@ -31,6 +31,13 @@ void MqttStampDecoder::fail(const QString& topic, const QString& why)
     m_lastError = topic + QStringLiteral(": ") + why;
 }
 
+bool MqttStampDecoder::isTimeStamped(const RosMsgTypeInfo& info)
+{
+    return info.dialect == RosTypeRegistry::Dialect::Ros2
+        ? RosTypeRegistry::ros2TypeName(info.name) == QLatin1StringView(StampCodec::ros2TypeName())
+        : info.md5 == QLatin1StringView(StampCodec::md5());
+}
+
 void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector<StampEvent>& stamps,
                               std::vector<LatencyValue>& latencies)
 {
@@ -44,8 +51,7 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
             }
             QString why;
             if (const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(m.payload, &why))
-                m_types.insert(
-                    data, {info->md5 == QLatin1StringView(StampCodec::md5()), info->stamped, info->dialect});
+                m_types.insert(data, {isTimeStamped(*info), info->stamped, info->dialect});
             else if (m_types.contains(data) || m.payload.contains(StampCodec::typeName()))
                 fail(data, tr("type announcement: %1").arg(why)); // one meant for stamps, or replacing one
             continue; // the topic tree reports every undecodable announcement
@@ -66,7 +72,9 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
             }
             if (type->timeStamped) {
                 QString why;
-                if (const auto d = StampCodec::decodeTimeStamped(message, &why))
+                const SourceGraph graph
+                    = type->dialect == RosTypeRegistry::Dialect::Ros2 ? SourceGraph::Ros2 : SourceGraph::Ros1;
+                if (const auto d = SourceMessage::decodeStamp(graph, message, &why))
                     stamps.push_back({m.topic, d->sampleNs, d->timeNs, m.receivedNs});
                 else
                     fail(m.topic, why);
@@ -81,6 +89,14 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
                 fail(m.topic, why);
         }
     }
+}
+
+void MqttStampDecoder::takeStamps(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies)
+{
+    stamps.insert(stamps.end(), std::make_move_iterator(m_stamps.begin()), std::make_move_iterator(m_stamps.end()));
+    latencies.insert(latencies.end(), m_latencies.begin(), m_latencies.end());
+    m_stamps.clear();
+    m_latencies.clear();
 }
 
 void MqttStampDecoder::clear()

@@ -4,6 +4,7 @@
 #include "base/topicmime.h"
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
+#include "wire/sourcemessage.h"
 
 #include <algorithm>
 #include <QDateTime>
@@ -453,7 +454,8 @@ void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
         limits.maxArrayElements = 1;
         limits.maxStringChars = 64;
         QString error;
-        if (!MqttClientWire::decodePayload(*registry, type->info, payload, &error, limits)) {
+        if (!SourceMessage::decode(*registry, {SourceGraph::Mqtt, type->info.name, type->info}, payload, &error,
+                                   limits)) {
             ++n->malformed;
             ++m_malformedPayloads;
             n->payloadError = error;

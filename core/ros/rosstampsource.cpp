@@ -5,7 +5,7 @@
 #include "base/wallclock.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
-#include "wire/stampcodec.h"
+#include "wire/sourcemessage.h"
 
 #include <atomic>
 #include <mutex>
@@ -52,7 +52,7 @@ struct RosStampSource::Private
             return;
         }
         QString why;
-        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(RosBytes::of(msg), &why);
+        const std::optional<StampCodec::Decoded> d = SourceMessage::decodeStamp(SourceGraph::Ros1, RosBytes::of(msg), &why);
         if (!d) {
             malformed.fetch_add(1, std::memory_order_relaxed);
             fail(topic, why);
@@ -71,7 +71,7 @@ struct RosStampSource::Private
                             .arg(QString::fromStdString(msg.getDataType())));
             return;
         }
-        const std::optional<qint64> ns = StampCodec::decodeFloat64Seconds(RosBytes::of(msg));
+        const std::optional<qint64> ns = SourceMessage::decodeLatency(SourceGraph::Ros1, RosBytes::of(msg));
         if (!ns) {
             malformed.fetch_add(1, std::memory_order_relaxed);
             fail(topic, QCoreApplication::translate("RosStampSource", "a latency that is no finite number of seconds"));
@@ -196,14 +196,12 @@ void RosStampSource::resubscribeAll()
     d->post(d, this, true);
 }
 
-std::vector<StampEvent> RosStampSource::takeStamps()
+void RosStampSource::takeStamps(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies)
 {
-    return d->stamps.take();
-}
-
-std::vector<LatencyValue> RosStampSource::takeLatencies()
-{
-    return d->latencies.take();
+    std::vector<StampEvent> s = d->stamps.take();
+    stamps.insert(stamps.end(), std::make_move_iterator(s.begin()), std::make_move_iterator(s.end()));
+    const std::vector<LatencyValue> l = d->latencies.take();
+    latencies.insert(latencies.end(), l.begin(), l.end());
 }
 
 quint64 RosStampSource::received() const

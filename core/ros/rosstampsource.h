@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "latency/stampsource.h"
 #include "wire/stampevent.h"
 
 #include <memory>
@@ -16,7 +17,7 @@
 /// roscpp's spinner thread only decodes and appends to bounded buffers (overflow is counted);
 /// the GUI drain takes them. The suite's package need not be installed: the subscription is
 /// generic and the md5 is checked per message.
-class RosStampSource : public QObject
+class RosStampSource : public QObject, public StampSource
 {
     Q_OBJECT
 public:
@@ -33,8 +34,6 @@ public:
     /// Registers every topic again (after the master restarted).
     void resubscribeAll();
 
-    std::vector<StampEvent> takeStamps();
-    std::vector<LatencyValue> takeLatencies();
     quint64 received() const;
     quint64 malformed() const; ///< messages of the right type that did not decode
     quint64 wrongType() const; ///< messages of another type on a subscribed topic
@@ -42,6 +41,11 @@ public:
     QHash<QString, quint64> malformedByTopic() const;
     QString lastError() const;
     quint64 dropped() const; ///< lost to a full buffer
+
+    void takeStamps(std::vector<StampEvent>& stamps, std::vector<LatencyValue>& latencies) override;
+    quint64 malformedStamps() const override { return malformed() + wrongType(); }
+    QHash<QString, quint64> malformedStampsByTopic() const override { return malformedByTopic(); }
+    QString lastStampError() const override { return lastError(); }
 
 signals:
     void subscribeFailed(const QString& topic, const QString& why);

@@ -162,7 +162,7 @@ void Ros2Participant::launch()
     if (m_keepArrivals)
         send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(m_keepArrivals));
     for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
-        send(Kind::Watch, Ros2Protocol::encodeWatch({it.key(), it->maxMessages, it->maxBytes}));
+        send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(it.key())));
     for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
         send(Kind::Monitor, Ros2Protocol::encodeStrings({it.key()}));
     for (const quint64 n : std::as_const(m_receivedDropped))
@@ -214,7 +214,8 @@ void Ros2Participant::stop()
     m_stats.clear();
     m_error.clear();
     for (auto it = m_watched.begin(); it != m_watched.end(); ++it) {
-        it->queue.reset();
+        for (Reader& r : it->readers)
+            r.queue.reset();
         it->childDropped = 0;
     }
     if (m_arrivals)
@@ -295,12 +296,12 @@ bool Ros2Participant::handle(const Ros2Protocol::Frame& f)
         const auto it = m_watched.find(batch->topic);
         if (it == m_watched.end())
             return true; // unwatched since the child sent it
-        if (!it->queue)
-            it->queue = std::make_shared<NewestQueue<Ros2Sample>>(it->maxMessages, it->maxBytes);
         it->childDropped = batch->dropped;
-        for (Ros2Sample& s : batch->samples) {
-            const qint64 size = s.bytes.size();
-            it->queue->push(std::move(s), size);
+        for (Reader& r : it->readers) {
+            if (!r.queue)
+                r.queue = std::make_shared<NewestQueue<Ros2Sample>>(r.maxMessages, r.maxBytes);
+            for (const Ros2Sample& s : batch->samples)
+                r.queue->push(Ros2Sample(s), s.bytes.size()); // shared bytes (QByteArray), no copy
         }
         return true;
     }
@@ -433,34 +434,62 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64) const
     return m_stats;
 }
 
-void Ros2Participant::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+Ros2Protocol::WatchRequest Ros2Participant::Watched::limits(const QString& topic) const
+{
+    Ros2Protocol::WatchRequest w {topic, 0, 0};
+    for (const Reader& r : readers) {
+        w.maxMessages = std::max<quint64>(w.maxMessages, r.maxMessages);
+        w.maxBytes = std::max(w.maxBytes, r.maxBytes);
+    }
+    return w;
+}
+
+void Ros2Participant::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
+                                    const void* owner)
 {
     Watched& w = m_watched[topic];
-    w.maxMessages = maxMessages;
-    w.maxBytes = maxBytes;
-    if (w.queue)
-        w.queue->setLimits(maxMessages, maxBytes);
+    Reader& r = w.readers[owner];
+    r.maxMessages = maxMessages;
+    r.maxBytes = maxBytes;
+    if (r.queue)
+        r.queue->setLimits(maxMessages, maxBytes);
     else if (m_child)
-        w.queue = std::make_shared<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
-    send(Kind::Watch, Ros2Protocol::encodeWatch({topic, maxMessages, maxBytes}));
+        r.queue = std::make_shared<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
+    send(Kind::Watch, Ros2Protocol::encodeWatch(w.limits(topic)));
 }
 
-void Ros2Participant::unwatchMessages(const QString& topic)
-{
-    if (m_watched.remove(topic) > 0)
-        send(Kind::Unwatch, Ros2Protocol::encodeStrings({topic}));
-}
-
-std::vector<Ros2Sample> Ros2Participant::takeMessages(const QString& topic)
+void Ros2Participant::unwatchMessages(const QString& topic, const void* owner)
 {
     const auto it = m_watched.find(topic);
-    return it != m_watched.end() && it->queue ? it->queue->take() : std::vector<Ros2Sample>();
+    if (it == m_watched.end() || it->readers.remove(owner) == 0)
+        return;
+    if (it->readers.isEmpty()) {
+        m_watched.erase(it);
+        send(Kind::Unwatch, Ros2Protocol::encodeStrings({topic}));
+    } else {
+        send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(topic)));
+    }
 }
 
-quint64 Ros2Participant::droppedMessages(const QString& topic) const
+const Ros2Participant::Reader* Ros2Participant::reader(const QString& topic, const void* owner) const
 {
     const auto it = m_watched.constFind(topic);
-    return it != m_watched.cend() && it->queue ? it->queue->dropped() + it->childDropped : 0;
+    if (it == m_watched.cend())
+        return nullptr;
+    const auto r = it->readers.constFind(owner);
+    return r != it->readers.cend() && r->queue ? &*r : nullptr;
+}
+
+std::vector<Ros2Sample> Ros2Participant::takeMessages(const QString& topic, const void* owner)
+{
+    const Reader* r = reader(topic, owner);
+    return r ? r->queue->take() : std::vector<Ros2Sample>();
+}
+
+quint64 Ros2Participant::droppedMessages(const QString& topic, const void* owner) const
+{
+    const Reader* r = reader(topic, owner);
+    return r ? r->queue->dropped() + m_watched.value(topic).childDropped : 0;
 }
 
 void Ros2Participant::keepArrivals(std::size_t maxArrivals)

@@ -76,15 +76,18 @@ public:
     /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
     /// takeMessages() (older ones are dropped and counted). The topic is subscribed for it whether
     /// or not it is monitored, as soon as the graph knows its type, and again after stop() and
-    /// start(); monitor() and unmonitor() leave the queue alone.
-    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);
-    void unwatchMessages(const QString& topic);
+    /// start(); monitor() and unmonitor() leave the queue alone. Each `owner` (a field plot, the
+    /// stamps of the Measure page) gets every sample in a queue of its own: one does not take or end
+    /// another's; the subscription ends with the last owner's unwatchMessages().
+    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
+                       const void* owner = nullptr);
+    void unwatchMessages(const QString& topic, const void* owner = nullptr);
     bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
-    /// The watched topic's samples since the last call, oldest first.
-    std::vector<Ros2Sample> takeMessages(const QString& topic);
+    /// The watched topic's samples since the owner's last call, oldest first.
+    std::vector<Ros2Sample> takeMessages(const QString& topic, const void* owner = nullptr);
     /// Samples of a watched topic dropped because too many came between two takes (counted from
     /// watchMessages(), and anew after start()).
-    quint64 droppedMessages(const QString& topic) const;
+    quint64 droppedMessages(const QString& topic, const void* owner = nullptr) const;
     /// From now on (also across stop() and start()) every sample of a monitored topic is also kept,
     /// up to `maxArrivals` between two takeArrivals() (more are dropped and counted); 0 stops it.
     void keepArrivals(std::size_t maxArrivals);
@@ -148,12 +151,19 @@ signals:
     void received(const QString& topic, const Ros2Sample& sample);
 
 private:
-    struct Watched
+    /// One owner's queue of a watched topic.
+    struct Reader
     {
         std::size_t maxMessages = 0;
         qint64 maxBytes = 0;
         std::shared_ptr<NewestQueue<Ros2Sample>> queue; ///< from the first samples until stop()
+    };
+    struct Watched
+    {
+        QHash<const void*, Reader> readers;
         quint64 childDropped = 0;
+        /// What the child keeps between two polls: enough for the most demanding owner.
+        Ros2Protocol::WatchRequest limits(const QString& topic) const;
     };
     void launch();
     void send(Ros2Protocol::Kind kind, const QByteArray& body = {});
@@ -184,6 +194,7 @@ private:
     std::size_t m_keepArrivals = 0;
     QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
     QHash<QString, Watched> m_watched; ///< what watchMessages() asked for, across stop() and start()
+    const Reader* reader(const QString& topic, const void* owner) const;
     QHash<QString, Ros2MonitorStats> m_stats;
     std::unique_ptr<EventBuffer<Ros2Arrival>> m_arrivals;
     quint64 m_childDroppedArrivals = 0;

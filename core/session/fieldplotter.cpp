@@ -8,6 +8,7 @@
 #include "session/livesession.h"
 #include "wire/fieldpath.h"
 #include "wire/rosmessage.h"
+#include "wire/sourcemessage.h"
 
 #include <algorithm>
 #include <optional>
@@ -214,9 +215,8 @@ void FieldPlotter::onDrained(qint64 nowNs)
               // ROS 2 graph's type as CDR with the session's ROS 2 definitions (ROS 2), else JSON.
               std::shared_ptr<const RosTypeRegistry> held;
               const RosTypeRegistry* registry = nullptr;
-              bool cdr = false;
-              QString type;
-              std::optional<RosMsgTypeInfo> announced; // MQTT: how mqtt_client serialized it
+              SourceType how; // the graph, the type and (MQTT) how mqtt_client serialized it
+              QString& type = how.type;
               QString typeError;
               if (source == PlotField::Source::Mqtt) {
                   const auto info = m_session->mqttTopics()->info(topic);
@@ -224,7 +224,7 @@ void FieldPlotter::onDrained(qint64 nowNs)
                       held = m_session->mqttTopics()->registryFor(topic);
                       registry = held.get();
                       type = info->rosType->name;
-                      announced = info->rosType;
+                      how.announced = info->rosType;
                       if (!registry)
                           typeError = info->typeNote.isEmpty()
                               ? tr("the announced type %1 does not read").arg(type)
@@ -235,7 +235,7 @@ void FieldPlotter::onDrained(qint64 nowNs)
                   if (t && !t->types.isEmpty())
                       d->ros2Types.insert(topic, t->type());
                   type = d->ros2Types.value(topic);
-                  cdr = true;
+                  how.graph = SourceGraph::Ros2;
                   const RosTypeRegistry& types = m_session->ros2Types();
                   if (type.isEmpty())
                       typeError = tr("the type is not known yet");
@@ -255,6 +255,7 @@ void FieldPlotter::onDrained(qint64 nowNs)
                   }
                   registry = t.registry.get();
                   type = t.type;
+                  how.graph = SourceGraph::Ros1;
                   typeError = registry ? QString()
                                        : (t.error.isEmpty() ? tr("the type is not known yet") : t.error);
               }
@@ -286,14 +287,8 @@ void FieldPlotter::onDrained(qint64 nowNs)
                   } else {
                       bytes += m.payload.size();
                       ++decodedCount;
-                      if (registry && cdr) {
-                          dec.ros
-                              = RosMessageDecoder::decodeCdr(*registry, type, m.payload, &dec.error, limits);
-                      } else if (registry && announced) {
-                          dec.ros = MqttClientWire::decodePayload(*registry, *announced, m.payload,
-                                                                  &dec.error, limits);
-                      } else if (registry) {
-                          dec.ros = RosMessageDecoder::decode(*registry, type, m.payload, &dec.error, limits);
+                      if (registry && how.isRos()) {
+                          dec.ros = SourceMessage::decode(*registry, how, m.payload, &dec.error, limits);
                       } else {
                           QJsonParseError parse {};
                           const QJsonDocument doc = QJsonDocument::fromJson(m.payload, &parse);

@@ -6,8 +6,9 @@
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosstampsource.h"
+#include "ros2/ros2stampsource.h"
 #include "session/livesession.h"
-#include "wire/stampcodec.h"
+#include "wire/sourcemessage.h"
 
 #include <QDateTime>
 #include <QThread>
@@ -18,6 +19,7 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
     : QObject(parent)
     , m_live(live)
     , m_ros(new RosStampSource(this))
+    , m_ros2(new Ros2StampSource(live->ros2(), this))
     , m_stats(new LatencyStatsModel(this))
     , m_recorder(new RunRecorder(this))
 {
@@ -33,12 +35,14 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
         emit recordingFailed(why);
     });
     // The MQTT batch comes before drained() in the same tick: collect it, ingest on drained().
-    live->addMqttListener([this](const std::vector<MqttMessage>& batch) {
-        m_mqttDecoder.decode(batch, m_pendingStamps, m_pendingLatencies);
-    });
+    live->addMqttListener([this](const std::vector<MqttMessage>& batch) { m_mqttDecoder.collect(batch); });
+    m_sources = {m_ros, m_ros2, &m_mqttDecoder};
     connect(live, &LiveSession::drained, this, &MeasureSession::onDrained);
     connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &MeasureSession::onGraph);
     connect(live->rosGraph(), &RosGraphPoller::masterRestarted, m_ros, &RosStampSource::resubscribeAll);
+    connect(live->ros2(), &Ros2Participant::graphChanged, this, &MeasureSession::onRos2Graph);
+    if (live->isRos2Running())
+        onRos2Graph(live->ros2()->graph());
     m_ros->setMasterUri(live->rosMasterUri());
     m_stats->refresh(m_engine);
 }
@@ -50,7 +54,7 @@ void MeasureSession::onGraph(const RosGraph& graph)
     QSet<QString> stamps;
     QSet<QString> latencies;
     for (const RosTopicInfo& t : graph.topics) {
-        if (t.type == QLatin1StringView(StampCodec::typeName()))
+        if (t.type == SourceMessage::stampType(SourceGraph::Ros1))
             stamps.insert(t.name);
         else if (t.type == u"std_msgs/Float64"_s && t.name.contains(u"/latencies/"_s))
             latencies.insert(t.name);
@@ -60,25 +64,52 @@ void MeasureSession::onGraph(const RosGraph& graph)
     updateSubscriptions();
 }
 
+void MeasureSession::onRos2Graph(const Ros2Graph& graph)
+{
+    QSet<QString> stamps;
+    QSet<QString> latencies;
+    for (const Ros2Topic& t : graph.topics) {
+        if (t.types.contains(SourceMessage::stampType(SourceGraph::Ros2)))
+            stamps.insert(t.name);
+        else if (t.types.contains(u"std_msgs/msg/Float64"_s) && t.name.contains(u"/latencies/"_s))
+            latencies.insert(t.name);
+    }
+    if (stamps == m_ros2StampTopics && latencies == m_ros2LatencyTopics)
+        return;
+    m_ros2StampTopics = stamps;
+    m_ros2LatencyTopics = latencies;
+    updateSubscriptions();
+}
+
+QString MeasureSession::ros2StampName(const QString& topic, const QSet<QString>& ros1Stamps,
+                                      const Pipeline& pipeline)
+{
+    const QString prefixed = ros2Prefix() + topic;
+    return ros1Stamps.contains(topic) || pipeline.indexOf(prefixed) >= 0 ? prefixed : topic;
+}
+
 void MeasureSession::updateSubscriptions()
 {
     QSet<QString> stamps = m_graphStampTopics;
-    // The pipeline's topics too, before the master lists them (ROS names start with '/').
+    // The pipeline's topics too, before the master lists them (ROS names start with '/'); those
+    // named for the ROS 2 graph only ("ros2:/topic") are not asked of the master.
     for (const QString& t : m_engine.pipeline().topics())
-        stamps.insert(t.startsWith(u'/') ? t : u'/' + t);
+        if (!t.startsWith(ros2Prefix()))
+            stamps.insert(t.startsWith(u'/') ? t : u'/' + t);
     m_ros->setTopics(stamps, m_graphLatencyTopics);
+    QHash<QString, QString> ros2;
+    for (const QString& t : std::as_const(m_ros2StampTopics))
+        ros2.insert(t, ros2StampName(t, m_graphStampTopics, m_engine.pipeline()));
+    m_ros2->setTopics(ros2, m_ros2LatencyTopics);
 }
 
 void MeasureSession::onDrained(qint64 nowNs)
 {
     Q_ASSERT(QThread::currentThread() == thread());
-    std::vector<StampEvent> stamps = m_ros->takeStamps();
-    stamps.insert(stamps.end(), std::make_move_iterator(m_pendingStamps.begin()),
-                  std::make_move_iterator(m_pendingStamps.end()));
-    m_pendingStamps.clear();
-    std::vector<LatencyValue> latencies = m_ros->takeLatencies();
-    latencies.insert(latencies.end(), m_pendingLatencies.begin(), m_pendingLatencies.end());
-    m_pendingLatencies.clear();
+    std::vector<StampEvent> stamps;
+    std::vector<LatencyValue> latencies;
+    for (StampSource* source : m_sources)
+        source->takeStamps(stamps, latencies);
     if (m_showingRun)
         return; // a recorded run is on screen: live stamps are not measured meanwhile
     m_recorder->add(stamps, latencies, nowNs);
@@ -195,22 +226,28 @@ void MeasureSession::reset()
 
 quint64 MeasureSession::malformedStamps() const
 {
-    return m_mqttDecoder.malformed() + m_ros->malformed() + m_ros->wrongType();
+    quint64 n = 0;
+    for (const StampSource* source : m_sources)
+        n += source->malformedStamps();
+    return n;
 }
 
 QHash<QString, quint64> MeasureSession::malformedStampsByTopic() const
 {
-    QHash<QString, quint64> all = m_ros->malformedByTopic();
-    for (auto it = m_mqttDecoder.malformedByTopic().cbegin(); it != m_mqttDecoder.malformedByTopic().cend(); ++it)
-        all[it.key()] += it.value();
+    QHash<QString, quint64> all;
+    for (const StampSource* source : m_sources) {
+        const QHash<QString, quint64> more = source->malformedStampsByTopic();
+        for (auto it = more.cbegin(); it != more.cend(); ++it)
+            all[it.key()] += it.value();
+    }
     return all;
 }
 
 QString MeasureSession::lastStampError() const
 {
     QStringList both;
-    for (const QString& e : {m_ros->lastError(), m_mqttDecoder.lastError()})
-        if (!e.isEmpty())
+    for (const StampSource* source : m_sources)
+        if (const QString e = source->lastStampError(); !e.isEmpty())
             both << e;
     return both.join(u"; ");
 }

@@ -16,12 +16,16 @@ class LatencyStatsModel;
 class RunRecorder;
 class LiveSession;
 class RosStampSource;
+class Ros2StampSource;
 struct RosGraph;
+struct Ros2Graph;
 
-/// The live measurement: stamps from ROS and MQTT, joined by the latency engine, on the live
-/// session's drain tick.
+/// The live measurement: stamps from ROS 1, ROS 2 and MQTT, joined by the latency engine, on the
+/// live session's drain tick.
 ///
-/// Every `benchmarking_suite/TimeStamped` topic on the master is subscribed, and every MQTT
+/// Every `benchmarking_suite/TimeStamped` topic on the master is subscribed, every
+/// `benchmarking_suite/msg/TimeStamped` topic of the live session's ROS 2 graph (while it runs) is
+/// watched (named `ros2:/topic` where the master has a stamp topic of the same name), and every MQTT
 /// message is looked at for stamps; without a pipeline of the user's, one is proposed from the
 /// stamps seen (and proposed again when new stamp topics appear). Figures are pushed to the stats
 /// model at most once per drain (or per setPublishInterval()), not while paused and not while
@@ -37,6 +41,7 @@ public:
     LatencyStatsModel* statsModel() const { return m_stats; }
     const PipelineDiscovery& discovery() const { return m_discovery; }
     RosStampSource* rosSource() const { return m_ros; }
+    Ros2StampSource* ros2Source() const { return m_ros2; }
     /// Where the stamps come from (its broker and ROS master).
     const LiveSession* live() const { return m_live; }
 
@@ -61,6 +66,13 @@ public:
     void setShown(bool shown);
     /// Forgets every value and count; keeps the pipeline.
     void reset();
+
+    /// How a pipeline names a ROS 2 topic that a ROS 1 topic of the same name would hide:
+    /// `ros2:/topic`. Otherwise a ROS 2 stamp topic is named as a ROS 1 one is, `/topic`.
+    static QString ros2Prefix() { return QStringLiteral("ros2:"); }
+    /// The name the stamps of ROS 2 topic `topic` carry: `ros2:/topic` where the master has a stamp
+    /// topic of that name, or the pipeline names it so; `topic` otherwise.
+    static QString ros2StampName(const QString& topic, const QSet<QString>& ros1Stamps, const Pipeline& pipeline);
 
     /// Stamps that did not decode or came with another type, from ROS and MQTT.
     quint64 malformedStamps() const;
@@ -104,6 +116,7 @@ signals:
 
 private:
     void onGraph(const RosGraph& graph);
+    void onRos2Graph(const Ros2Graph& graph);
     void onDrained(qint64 nowNs);
     void updateSubscriptions();
     void proposeIfNew();
@@ -112,14 +125,16 @@ private:
 
     LiveSession* m_live;
     RosStampSource* m_ros;
+    Ros2StampSource* m_ros2;
     LatencyEngine m_engine;
     LatencyStatsModel* m_stats;
     PipelineDiscovery m_discovery;
     MqttStampDecoder m_mqttDecoder;
-    std::vector<StampEvent> m_pendingStamps;
-    std::vector<LatencyValue> m_pendingLatencies;
+    std::vector<StampSource*> m_sources; ///< ROS 1, ROS 2, MQTT: the order a tick's stamps come in
     QSet<QString> m_graphStampTopics;
     QSet<QString> m_graphLatencyTopics;
+    QSet<QString> m_ros2StampTopics; ///< in the ROS 2 graph, by type
+    QSet<QString> m_ros2LatencyTopics;
     RunRecorder* m_recorder;
     bool m_showingRun = false;
     RunInfo m_shownRun;

@@ -18,14 +18,18 @@ struct Reader
     const QByteArray& bytes;
     qsizetype pos = 0;
     bool badNsec = false; ///< a time field held nsec >= 1e9: no ROS time, and no round trip
+    bool bigEndian = false; ///< CDR only; ROS 1 is always little-endian
+    qsizetype origin = 0; ///< CDR aligns from the end of the encapsulation header
     bool u32(quint32& out)
     {
         if (bytes.size() - pos < 4)
             return false;
-        out = qFromLittleEndian<quint32>(bytes.constData() + pos);
+        out = bigEndian ? qFromBigEndian<quint32>(bytes.constData() + pos)
+                        : qFromLittleEndian<quint32>(bytes.constData() + pos);
         pos += 4;
         return true;
     }
+    void align4() { pos = origin + ((pos - origin + 3) & ~qsizetype(3)); }
     bool time(qint64& ns)
     {
         quint32 sec = 0;
@@ -59,6 +63,22 @@ qint64 secondsToNs(double seconds)
 {
     const double whole = std::floor(seconds);
     return qint64(whole) * kNsPerSec + qint64(std::llround((seconds - whole) * 1e9));
+}
+
+/// A ROS 2 encapsulation header: 00 01 little-endian CDR, 00 00 big-endian (two option bytes).
+std::optional<bool> cdrBigEndian(const QByteArray& bytes)
+{
+    if (bytes.size() < 4 || bytes[0] != 0 || (bytes[1] != 0 && bytes[1] != 1))
+        return std::nullopt;
+    return bytes[1] == 0;
+}
+
+/// A latency in seconds as ns, when it is a finite number no larger than a ROS time.
+std::optional<qint64> latencySeconds(double v)
+{
+    if (!std::isfinite(v) || std::abs(v) >= double(StampCodec::kMaxTimeNs / kNsPerSec))
+        return std::nullopt;
+    return secondsToNs(v);
 }
 
 } // namespace
@@ -151,6 +171,61 @@ QByteArray StampCodec::encodeTimeStamped(const Decoded& stamp)
     putTime(out, stamp.sampleNs);
     putU32(out, quint32(frame.size()));
     out.append(frame);
+    putTime(out, stamp.timeNs);
+    return out;
+}
+
+std::optional<StampCodec::Decoded> StampCodec::decodeTimeStampedCdr(const QByteArray& bytes, QString* error)
+{
+    const auto fail = [error](const QString& why) {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    const std::optional<bool> big = cdrBigEndian(bytes);
+    if (!big)
+        return fail(bytes.size() < 4 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
+                                     : tr("not CDR: the encapsulation header is %1")
+                                           .arg(QString::fromLatin1(bytes.left(4).toHex(' '))));
+    Reader r {bytes, 4, false, *big, 4};
+    Decoded d;
+    quint32 frameLength = 0;
+    if (!r.time(d.sampleNs))
+        return fail(r.badNsec ? tr("TimeStamped header stamp has %1 nanoseconds, more than a second")
+                                    .arg(*big ? qFromBigEndian<quint32>(bytes.constData() + 8)
+                                              : qFromLittleEndian<quint32>(bytes.constData() + 8))
+                              : tr("TimeStamped message too short (%1 bytes)").arg(bytes.size()));
+    if (!r.u32(frameLength))
+        return fail(tr("TimeStamped message too short (%1 bytes)").arg(bytes.size()));
+    if (frameLength > quint32(bytes.size() - r.pos))
+        return fail(tr("TimeStamped frame_id claims %1 bytes, only %2 left").arg(frameLength).arg(bytes.size() - r.pos));
+    // The length counts the terminating NUL (0 is not CDR, but harmless: an empty frame_id).
+    d.frameId = QString::fromUtf8(bytes.constData() + r.pos, frameLength > 0 ? qsizetype(frameLength) - 1 : 0);
+    r.pos += qsizetype(frameLength);
+    r.align4();
+    if (!r.time(d.timeNs))
+        return fail(r.badNsec ? tr("TimeStamped time has %1 nanoseconds, more than a second")
+                                    .arg(*big ? qFromBigEndian<quint32>(bytes.constData() + r.pos - 4)
+                                              : qFromLittleEndian<quint32>(bytes.constData() + r.pos - 4))
+                              : tr("TimeStamped message ends before its time field"));
+    if (bytes.size() - r.pos > 3) // RTPS pads a sample to a multiple of 4 bytes, no more
+        return fail(tr("TimeStamped message has %1 bytes too many").arg(bytes.size() - r.pos));
+    // builtin_interfaces/msg/Time has an int32 sec: what reads past 2^31 s was negative.
+    if (d.sampleNs >= (qint64(1) << 31) * kNsPerSec || d.timeNs >= (qint64(1) << 31) * kNsPerSec)
+        return fail(tr("TimeStamped holds a time before 1970"));
+    return d;
+}
+
+QByteArray StampCodec::encodeTimeStampedCdr(const Decoded& stamp)
+{
+    const QByteArray frame = stamp.frameId.toUtf8();
+    QByteArray out("\x00\x01\x00\x00", 4);
+    putTime(out, stamp.sampleNs);
+    putU32(out, quint32(frame.size() + 1));
+    out.append(frame);
+    out.append('\0');
+    while ((out.size() - 4) % 4 != 0)
+        out.append('\0');
     putTime(out, stamp.timeNs);
     return out;
 }
@@ -298,7 +373,17 @@ std::optional<qint64> StampCodec::decodeFloat64Seconds(const QByteArray& bytes)
         return std::nullopt;
     double v = 0;
     std::memcpy(&v, bytes.constData(), 8); // ROS is little-endian on every platform we build for
-    if (!std::isfinite(v) || std::abs(v) >= double(kMaxTimeNs / kNsPerSec))
+    return latencySeconds(v);
+}
+
+std::optional<qint64> StampCodec::decodeFloat64SecondsCdr(const QByteArray& bytes)
+{
+    const std::optional<bool> big = cdrBigEndian(bytes);
+    if (!big || bytes.size() < 12 || bytes.size() > 12 + 3)
         return std::nullopt;
-    return secondsToNs(v);
+    const quint64 bits = *big ? qFromBigEndian<quint64>(bytes.constData() + 4)
+                              : qFromLittleEndian<quint64>(bytes.constData() + 4);
+    double v = 0;
+    std::memcpy(&v, &bits, 8);
+    return latencySeconds(v);
 }

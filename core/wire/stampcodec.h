@@ -45,6 +45,17 @@ public:
     static qint64 hashId(const QByteArray& bytes);
     static QByteArray encodeTimeStamped(const Decoded& stamp);
 
+    /// The ROS 2 form, `benchmarking_suite/msg/TimeStamped {std_msgs/msg/Header header;
+    /// builtin_interfaces/msg/Time time}` (a ROS 2 Header has no seq: `seq` stays 0), as DDS
+    /// carries it: CDR (XCDR1) after a 4-byte encapsulation header, little- or big-endian as the
+    /// header says, aligned from the end of the header; the frame_id's length counts its NUL. Up
+    /// to three bytes of padding may follow. The work is bounded by the bytes (no length is
+    /// trusted before it is checked against what is left).
+    static constexpr const char* ros2TypeName() { return "benchmarking_suite/msg/TimeStamped"; }
+    static std::optional<Decoded> decodeTimeStampedCdr(const QByteArray& bytes, QString* error = nullptr);
+    /// Little-endian, as rmw writes it on every host we build for.
+    static QByteArray encodeTimeStampedCdr(const Decoded& stamp);
+
     /// JSON stamps are small; larger payloads are an error, not parsed (the work bound per message).
     static constexpr qsizetype kMaxJsonBytes = 4096;
     static std::optional<Decoded> decodeJson(const QByteArray& payload, QString* error = nullptr);
@@ -57,4 +68,6 @@ public:
     /// A std_msgs/Float64 payload (8 bytes, little-endian) in seconds, as ns; a latency, so
     /// negative values are kept, but none as large as kMaxTimeNs.
     static std::optional<qint64> decodeFloat64Seconds(const QByteArray& bytes);
+    /// The same for a ROS 2 std_msgs/msg/Float64 sample (CDR: encapsulation header, 8 bytes).
+    static std::optional<qint64> decodeFloat64SecondsCdr(const QByteArray& bytes);
 };

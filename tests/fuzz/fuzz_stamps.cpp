@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Fuzz target for the timestamp formats: benchmarking_suite/TimeStamped and std_msgs/Header
-// (ROS 1 serialized), JSON stamps from devices, "sec.nsec" texts and Float64 seconds.
+// (ROS 1 serialized), benchmarking_suite/msg/TimeStamped and std_msgs/msg/Float64 (ROS 2, CDR), JSON stamps from devices, "sec.nsec" texts and Float64 seconds.
 //
 // The whole input goes to every decoder. Properties: what decodes encodes to something that
 // decodes to the same stamp; a time text read back is the same time; errors come with a message.
@@ -20,6 +20,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     } else {
         FUZZ_CHECK(!error.isEmpty(), "a TimeStamped message rejected without a message");
     }
+
+    error.clear();
+    if (const auto stamp = StampCodec::decodeTimeStampedCdr(input, &error)) {
+        const QByteArray encoded = StampCodec::encodeTimeStampedCdr(*stamp);
+        const auto again = StampCodec::decodeTimeStampedCdr(encoded);
+        FUZZ_CHECK(again && again->sampleNs == stamp->sampleNs && again->timeNs == stamp->timeNs
+                       && again->frameId == stamp->frameId,
+                   "a ROS 2 TimeStamped sample changes in a round trip");
+    } else {
+        FUZZ_CHECK(!error.isEmpty(), "a ROS 2 TimeStamped sample rejected without a message");
+    }
+    (void)StampCodec::decodeFloat64SecondsCdr(input);
 
     qsizetype consumed = -1;
     if (StampCodec::decodeHeader(input, &consumed))

@@ -5,7 +5,9 @@
 #include "app/gui/demostart.h"
 #include "app/gui/mainwindow.h"
 #include "latency/latencyengine.h"
+#include "session/livesession.h"
 #include "session/measuresession.h"
+#include "widgets/discover/discoverpage.h"
 #include "widgets/map/configfilecontroller.h"
 
 #include <QElapsedTimer>
@@ -81,6 +83,42 @@ private slots:
         QCOMPARE(engine.counters().dropped(), 0u);
         QVERIFY(engine.joiner().allTopicsSeen());
         qInfo("%llu samples begun before every stamp topic was heard", engine.counters().beforeAllTopics);
+    }
+
+    // The ROS 2 lab in the window: the status bar says its domain and broker, the window's ROS 2
+    // participant joins that domain on this host only (Discover shows the ROS 2 graph with the
+    // lab's topics) and the Measure page joins its stamps (issue 34, point 4)
+    void aRos2LabIsLiveInTheWindow()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DemoLab lab;
+        DemoLab::Options options;
+        options.program = QStringLiteral(BRIDGESCOPE_BINARY);
+        options.payloadBytes = 20000;
+        options.ros = 2;
+        QString error = u"not yet"_s;
+        DemoStart::start(w, lab, options, [&](const QString& why) {
+            error = why;
+            if (why.isEmpty())
+                DemoStart::show(w, lab);
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(error != u"not yet"_s, 30000);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const auto* servers = w.statusBar()->findChild<QLabel*>(u"demoServers"_s);
+        QVERIFY(servers && servers->isVisible());
+        QCOMPARE(servers->text(), u"demo lab (ROS 2, domain %1): broker %2"_s.arg(lab.rosDomain()).arg(lab.brokerUrl()));
+        QVERIFY(servers->geometry().right() <= w.statusBar()->width());
+        DiscoverPage* discover = w.discoverPage();
+        QCOMPARE(discover->rosGraphs(), DiscoverPage::RosGraphs::Ros2);
+        QCOMPARE(discover->ros2Options().domain, lab.rosDomain());
+        QVERIFY(discover->ros2Options().localhostOnly);
+        QTRY_VERIFY_WITH_TIMEOUT(w.session()->ros2()->graph().topic(u"/vehicle/pointcloud"_s), 20000);
+        const LatencyEngine& engine = w.measure()->engine();
+        QTRY_VERIFY_WITH_TIMEOUT(engine.counters().complete >= 20, 30000);
+        QVERIFY(engine.joiner().allTopicsSeen());
     }
 
     void aLabThatCannotStartSaysWhy()

@@ -307,6 +307,64 @@ private slots:
         QCOMPARE(ros2.value(u"topics"_s).toArray().size(), 1);
     }
 
+    // Without --ros, discover takes the graphs from ROS_VERSION, else from a ROS_DISTRO it knows,
+    // and says on stderr which it chose and why (issue 34, point 6)
+    void discoverPicksRosFromEnvironment()
+    {
+        const int domain = Ros2Peer::freeDomain(141, 160);
+        const QStringList args {u"discover"_s, u"--ros-master"_s,
+                                u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort()),
+                                u"--ros-domain"_s, QString::number(domain), u"--ros-localhost-only"_s,
+                                u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()),
+                                u"--seconds"_s, u"0.5"_s, u"--json"_s};
+        const auto graphs = [](const Run& r) {
+            const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8()).object();
+            return QStringList {doc.contains(u"ros"_s) ? u"1"_s : QString(),
+                                doc.contains(u"ros2"_s) ? u"2"_s : QString()}
+                .join(QString());
+        };
+        const auto run = [&](const char* version, const char* distro, const QStringList& extra = {}) {
+            qputenv("ROS_VERSION", version);
+            qputenv("ROS_DISTRO", distro);
+            const Run r = bridgescope(args + extra);
+            qunsetenv("ROS_VERSION");
+            qunsetenv("ROS_DISTRO");
+            return r;
+        };
+        const QString where = u"domain %1, this host only"_s.arg(domain);
+        Run r = run("2", "");
+        QCOMPARE(graphs(r), u"2"_s);
+        QVERIFY2(r.err.contains(u"ROS 2 (ROS_VERSION=2), "_s + where), qPrintable(r.err));
+        r = run("", "jazzy");
+        QCOMPARE(graphs(r), u"2"_s);
+        QVERIFY2(r.err.contains(u"ROS 2 (ROS_DISTRO=jazzy), "_s + where), qPrintable(r.err));
+        r = run("", "noetic");
+        QCOMPARE(graphs(r), u"1"_s);
+        QVERIFY2(r.err.contains(u"ROS 1 (ROS_DISTRO=noetic)"_s), qPrintable(r.err));
+        // ROS_VERSION before ROS_DISTRO; --ros before both
+        r = run("1", "humble");
+        QCOMPARE(graphs(r), u"1"_s);
+        QVERIFY2(r.err.contains(u"ROS 1 (ROS_VERSION=1)"_s), qPrintable(r.err));
+        r = run("2", "humble", {u"--ros"_s, u"1"_s});
+        QCOMPARE(graphs(r), u"1"_s);
+        QVERIFY2(r.err.contains(u"ROS 1 (--ros 1)"_s), qPrintable(r.err));
+        // values not understood are said and ignored: the default (ROS 1) stays
+        r = run("3", "bogus");
+        QCOMPARE(graphs(r), u"1"_s);
+        QVERIFY2(r.err.contains(u"ROS_VERSION is \"3\", not 1 or 2: ignored"_s), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u"ROS_DISTRO is \"bogus\""_s), qPrintable(r.err));
+        QVERIFY2(r.err.contains(u"ROS 1 (default)"_s), qPrintable(r.err));
+        // the window too (it says so in its status bar as well)
+        QTemporaryDir dir;
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        qputenv("ROS_VERSION", "2");
+        r = bridgescope({u"--screenshot"_s, dir.filePath(u"w.png"_s), u"--after"_s, u"0.5"_s, u"--ros-domain"_s,
+                         QString::number(domain), u"--ros-localhost-only"_s});
+        qunsetenv("ROS_VERSION");
+        QCOMPARE(r.exit, 0);
+        QVERIFY2(r.err.contains(u"ROS 2 (ROS_VERSION=2), "_s + where), qPrintable(r.err));
+    }
+
     void discoverFailsWhenNothingAnswers()
     {
         const Run r = bridgescope({u"discover"_s, u"--ros-master"_s,

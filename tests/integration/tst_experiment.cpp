@@ -233,6 +233,70 @@ private slots:
     // Issue 31: servers that cannot be reached are said within seconds (the cell keeps trying to
     // its timeout, then fails, and the command exits 1); a timeout or rate whose arithmetic would
     // overflow is refused with its place before anything runs.
+    // `ros: 2`: every cell is a ROS 2 lab on a fresh private DDS domain (DDS nodes, ROS 2 reference
+    // bridges, ROS 2 stamps); both cells complete and the report says, per cell, which ROS it ran
+    // on (issue 34, point 5)
+    void aRos2ExperimentCompletesAndReports()
+    {
+        const QString plan = writePlan(m_dir, u"ros2.yaml"_s,
+                                       "name: on ROS 2\nros: 2\nsamples: 30\nwarmup: 5\ntimeout_s: 90\n"
+                                       "defaults: {payload: 20000}\nfactors:\n  qos: [0, 1]\n");
+        const QString out = m_dir.filePath(u"ros2"_s);
+        QProcess* p = experiment({plan, u"-o"_s, out});
+        QVERIFY(p->waitForFinished(240000));
+        const QList<QJsonObject> lines = jsonLines(p->readAllStandardOutput());
+        QVERIFY2(p->exitCode() == 0, p->readAllStandardError().constData());
+        QCOMPARE(indicesOf(lines, u"finished"_s), (QList<int> {0, 1}));
+        for (const QJsonObject& o : lines)
+            if (o.value(u"event"_s).toString() == u"finished"_s)
+                QCOMPARE(o.value(u"state"_s).toString(), u"complete"_s);
+
+        QProcess json;
+        json.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, out, u"--format"_s, u"json"_s});
+        QVERIFY(json.waitForFinished(60000));
+        const QJsonArray cells
+            = QJsonDocument::fromJson(json.readAllStandardOutput()).object().value(u"cells"_s).toArray();
+        QCOMPARE(cells.size(), 2);
+        for (const QJsonValue& c : cells) {
+            QCOMPARE(c[u"ros"_s].toInt(), 2);
+            QCOMPARE(c[u"state"_s].toString(), u"complete"_s);
+            QVERIFY(c[u"groups"_s].toObject().size() > 0);
+        }
+        QProcess md;
+        md.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, out, u"--format"_s, u"md"_s});
+        QVERIFY(md.waitForFinished(60000));
+        const QString text = QString::fromUtf8(md.readAllStandardOutput());
+        QVERIFY2(text.count(u"| ROS 2 (DDS, a private domain) | complete |"_s) == 2, qPrintable(text));
+        QProcess csv;
+        csv.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, out, u"--format"_s, u"csv"_s});
+        QVERIFY(csv.waitForFinished(60000));
+        const QStringList rows = QString::fromUtf8(csv.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
+        QVERIFY2(rows.size() > 2 && rows.front().endsWith(u",p99_ms,ros"_s), qPrintable(rows.join(u'\n')));
+        for (const QString& row : rows.mid(1))
+            QVERIFY2(row.endsWith(u",2"_s), qPrintable(row));
+    }
+
+    // A ROS 2 lab's own bridge from the command template: {config} is a ROS 2 params file and
+    // {ros_domain} the cell's domain, here given to the ROS 2 reference bridge as mqtt_client would
+    // get them (`--params-file {config} -r __node:={name}`); its cell completes
+    void aRos2BridgeCommandRunsInTheCellsDomain()
+    {
+        const QByteArray yaml = "ros: 2\nsamples: 20\nwarmup: 2\ntimeout_s: 60\ndefaults: {payload: 20000}\n"
+                                "bridges:\n  templated: {command: \"exec '"
+            + QByteArray(BRIDGESCOPE_BINARY)
+            + "' bridge {config} --name {name} --ros 2 --ros-domain {ros_domain}\"}\n"
+              "cells:\n  - {bridge: templated}\n";
+        const QString out = m_dir.filePath(u"ros2-command"_s);
+        QProcess* p = experiment({writePlan(m_dir, u"ros2-command.yaml"_s, yaml), u"-o"_s, out});
+        QVERIFY(p->waitForFinished(120000));
+        QVERIFY2(p->exitCode() == 0, p->readAllStandardError().constData());
+        const QList<QJsonObject> lines = jsonLines(p->readAllStandardOutput());
+        QCOMPARE(indicesOf(lines, u"finished"_s), QList<int> {0});
+        for (const QJsonObject& o : lines)
+            if (o.value(u"event"_s).toString() == u"finished"_s)
+                QVERIFY(o.value(u"samples"_s).toDouble() >= 20);
+    }
+
     void unreachableServersAreSaidAndNumbersAreBounded()
     {
         const QString plan
@@ -307,6 +371,7 @@ private slots:
         QVERIFY(mdFile.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(mdFile.readAll());
         QVERIFY2(text.contains(u"](r-bridge-ecdf.svg)"_s), qPrintable(text));
+        QVERIFY2(text.contains(u"| ROS 1 | complete |"_s), qPrintable(text)); // which ROS the cell ran on
         QVERIFY(QFile::exists(out + u"/r-bridge-ecdf.svg"_s));
         const qsizetype table = text.indexOf(u"## Per stage (Table I layout"_s);
         QVERIFY2(table >= 0, qPrintable(text));

@@ -281,6 +281,9 @@ static bool create_entities(void)
             fprintf(stderr, "bs_ros2peer: out of memory\n");
             return false;
         }
+        p->sample.stamp_delay_ns = p->ep->stamp_delay_ns;
+        p->sample.salt = i + 1;
+        p->sample.period_ns = p->ep->rate_hz > 0.0 ? (int64_t)(1e9 / p->ep->rate_hz + 0.5) : 1000000;
         dds_set_status_mask(p->writer, DDS_PUBLICATION_MATCHED_STATUS);
         dds_waitset_attach(peer.waitset, p->writer, ATTACH(ATTACH_PUB, i));
     }
@@ -422,6 +425,10 @@ static void publish_due(double t)
 {
     for (unsigned i = 0; i < peer.npubs; i++) {
         struct pub_state *p = &peer.pubs[i];
+        if (!p->done && peer.opt.start_matched && p->matched <= 0) {
+            p->next = t + 0.5; // --start-matched: half a second after the first reader matched
+            continue;
+        }
         if (p->done || t < p->next)
             continue;
         uint64_t n = p->sent + 1;
@@ -430,6 +437,9 @@ static void publish_due(double t)
             continue;
         p->sent = n;
         printf("sent %s %llu\n", p->ep->topic, (unsigned long long)n);
+        if (p->ep->type == PEER_TIME_STAMPED && !p->ep->raw.set)
+            printf("stamp %s %llu %lld %lld\n", p->ep->topic, (unsigned long long)n,
+                   (long long)p->sample.stamp_ns, (long long)p->sample.time_ns);
         if (peer.opt.count != 0 && n >= peer.opt.count)
             p->done = true;
         // The next slot; after a stall, start again from now rather than send a burst.

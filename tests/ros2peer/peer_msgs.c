@@ -18,6 +18,8 @@ const dds_topic_descriptor_t *peer_type_descriptor(enum peer_type type)
     case PEER_POSE_STAMPED: return &geometry_msgs_msg_dds__PoseStamped__desc;
     case PEER_POINT_CLOUD2: return &sensor_msgs_msg_dds__PointCloud2__desc;
     case PEER_OPAQUE: return &bridgescope_test_msg_dds__Opaque__desc;
+    case PEER_TIME_STAMPED: return &benchmarking_suite_msg_dds__TimeStamped__desc;
+    case PEER_FLOAT64: return &std_msgs_msg_dds__Float64__desc;
     default: return NULL;
     }
 }
@@ -64,6 +66,11 @@ int peer_sample_init(struct peer_sample *s, enum peer_type type, uint32_t size)
         c->is_dense = true;
         break;
     }
+    case PEER_TIME_STAMPED:
+        s->msg.stamped.header.frame_id = s->frame_id;
+        break;
+    case PEER_FLOAT64:
+        break;
     case PEER_OPAQUE:
         s->bytes = size > 0 ? malloc(size) : NULL;
         if (size > 0 && s->bytes == NULL)
@@ -91,6 +98,25 @@ static void stamp_now(builtin_interfaces_msg_dds__Time_ *t)
     clock_gettime(CLOCK_REALTIME, &ts);
     t->sec = (int32_t)ts.tv_sec;
     t->nanosec = (uint32_t)ts.tv_nsec;
+}
+
+// ns since the epoch into a builtin_interfaces Time.
+static void set_time(builtin_interfaces_msg_dds__Time_ *t, int64_t ns)
+{
+    t->sec = (int32_t)(ns / 1000000000);
+    t->nanosec = (uint32_t)(ns % 1000000000);
+}
+
+// The process's first stamp, in whole ms: the same for every topic.
+static int64_t stamp_base_ns(void)
+{
+    static int64_t base = 0;
+    if (base == 0) {
+        struct timespec ts;
+        clock_gettime(CLOCK_REALTIME, &ts);
+        base = ((int64_t)ts.tv_sec * 1000 + ts.tv_nsec / 1000000) * 1000000;
+    }
+    return base;
 }
 
 // A float as 4 little-endian bytes, whatever the host's byte order.
@@ -137,6 +163,20 @@ void peer_sample_fill(struct peer_sample *s, uint64_t n)
     case PEER_OPAQUE:
         s->msg.opaque.n = (uint32_t)n;
         break;
+    case PEER_FLOAT64: // a latency as mqtt_client's ~/latencies/<topic>: 10 to 19 ms, in seconds
+        s->msg.float64.data = (double)(10 + n % 10) / 1000.0;
+        break;
+    case PEER_TIME_STAMPED: {
+        // splitmix64's finalizer of (n, salt): a jitter spread evenly over 0..999 us
+        uint64_t mix = n * 0x9E3779B97F4A7C15ull + (uint64_t)s->salt * 0xBF58476D1CE4E5B9ull;
+        mix = (mix ^ (mix >> 31)) * 0x94D049BB133111EBull;
+        mix = (mix ^ (mix >> 29)) % 1000u;
+        s->stamp_ns = stamp_base_ns() + (int64_t)n * s->period_ns;
+        s->time_ns = s->stamp_ns + s->stamp_delay_ns + (int64_t)mix * 1000;
+        set_time(&s->msg.stamped.header.stamp, s->stamp_ns);
+        set_time(&s->msg.stamped.time, s->time_ns);
+        break;
+    }
     default:
         break;
     }
@@ -168,6 +208,16 @@ void peer_summary(enum peer_type type, const void *msg, char *out, size_t outlen
     case PEER_OPAQUE: {
         const bridgescope_test_msg_dds__Opaque_ *o = msg;
         snprintf(out, outlen, "n=%u blob=%u", (unsigned)o->n, (unsigned)o->blob._length);
+        break;
+    }
+    case PEER_FLOAT64:
+        snprintf(out, outlen, "data=%.17g", ((const std_msgs_msg_dds__Float64_ *)msg)->data);
+        break;
+    case PEER_TIME_STAMPED: {
+        const benchmarking_suite_msg_dds__TimeStamped_ *t = msg;
+        snprintf(out, outlen, "stamp=%lld time=%lld",
+                 (long long)t->header.stamp.sec * 1000000000 + t->header.stamp.nanosec,
+                 (long long)t->time.sec * 1000000000 + t->time.nanosec);
         break;
     }
     default:

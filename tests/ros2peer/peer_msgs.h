@@ -10,6 +10,7 @@
 
 #include <dds/dds.h>
 
+#include "benchmarking_suite.h"
 #include "bridgescope_test.h"
 #include "geometry_msgs.h"
 #include "peer_options.h"
@@ -26,24 +27,33 @@ struct peer_sample {
         geometry_msgs_msg_dds__PoseStamped_ pose;
         sensor_msgs_msg_dds__PointCloud2_ cloud;
         bridgescope_test_msg_dds__Opaque_ opaque;
+        benchmarking_suite_msg_dds__TimeStamped_ stamped;
+        std_msgs_msg_dds__Float64_ float64;
     } msg;
     char text[32];                               // String data
     char frame_id[8];                            // Header frame_id
     char field_names[4][16];                     // PointCloud2 field names
     sensor_msgs_msg_dds__PointField_ fields[4];  // PointCloud2 fields
     uint8_t *bytes;                              // PointCloud2 data or Opaque blob
+    int64_t stamp_delay_ns;                      // TimeStamped: time = header.stamp + this + jitter
+    int64_t period_ns;                           // TimeStamped: header.stamp = start + n x this
+    uint32_t salt;                               // TimeStamped: makes the jitter differ per topic
+    int64_t stamp_ns, time_ns;                   // TimeStamped: what the last fill put in
 };
 
 // size: --size, at most PEER_MAX_SIZE. Returns 0, or -1 when out of memory.
 int peer_sample_init(struct peer_sample *s, enum peer_type type, uint32_t size);
 
-// Sets the content of sample number n (1, 2, ...); stamps are the wall clock now.
+// Sets the content of sample number n (1, 2, ...); stamps are the wall clock now. TimeStamped:
+// header.stamp is the same for sample n on every topic of the process that has the same rate (its
+// start, in whole ms, plus n periods), time is header.stamp + stamp_delay_ns + a jitter below 1 ms
+// that depends on n and salt; frame_id "map".
 void peer_sample_fill(struct peer_sample *s, uint64_t n);
 
 void peer_sample_fini(struct peer_sample *s);
 
 // "hello 3" (String data), "x=3" (PoseStamped position.x), "width=64 data=1024" (PointCloud2),
-// "n=3 blob=1024" (Opaque). Control characters of a String are shown as '?'.
+// "n=3 blob=1024" (Opaque), "stamp=NS time=NS" (TimeStamped), "data=0.013" (Float64). Control characters of a String are shown as '?'.
 void peer_summary(enum peer_type type, const void *msg, char *out, size_t outlen);
 
 #endif

@@ -15,6 +15,8 @@ static const char *const type_names[PEER_NTYPES] = {
     "geometry_msgs/msg/PoseStamped",
     "sensor_msgs/msg/PointCloud2",
     "bridgescope_test/msg/Opaque",
+    "benchmarking_suite/msg/TimeStamped",
+    "std_msgs/msg/Float64",
 };
 
 const char *peer_type_ros_name(enum peer_type type)
@@ -43,17 +45,22 @@ void peer_print_usage(FILE *out, const char *prog)
         "  --cdr                      also print the first serialized bytes of each received sample\n"
         "  --show-discovery           print remote endpoints and the nodes of ros_discovery_info\n"
         "  --trace FILE               write Cyclone DDS's trace (verbosity finest) to FILE\n"
+        "  --stamp-delay TOPIC:MS     a TimeStamped --pub TOPIC stamps sample N at its header.stamp\n"
+        "                             + MS ms + a jitter below 1 ms (repeatable; default 0)\n"
+        "  --start-matched            a publisher starts once a subscriber matched it, 0.5 s later\n"
         "  --raw TOPIC:HEX            every sample of --pub TOPIC is these bytes (header included,\n"
         "                             1 to %u of them): hostile CDR (repeatable)\n"
         "  --graph-raw HEX            the ros_discovery_info samples are these bytes\n"
         "  --help                     this text\n"
         "\n"
         "TYPE: std_msgs/msg/String, geometry_msgs/msg/PoseStamped, sensor_msgs/msg/PointCloud2,\n"
-        "      bridgescope_test/msg/Opaque (uint32 n, uint8[] blob)\n"
+        "      bridgescope_test/msg/Opaque (uint32 n, uint8[] blob), benchmarking_suite/msg/TimeStamped,\n"
+        "      std_msgs/msg/Float64\n"
         "QOS:  comma list of reliable|best_effort, volatile|transient_local, depth=N\n"
         "      (default reliable,volatile,depth=10, as rclcpp's default)\n"
         "\n"
         "Output, one line per event: ready | sent TOPIC N | recv TOPIC N SUMMARY | matched TOPIC COUNT\n"
+        "(TimeStamped: also stamp TOPIC N HEADER_STAMP_NS TIME_NS after sent)\n"
         "(with --cdr: cdr TOPIC N SIZE HEX...; with --show-discovery: endpoint pub|sub DDS_TOPIC\n"
         "DDS_TYPE and node NAMESPACE NAME READERS WRITERS).\n"
         "Exit status: 0 done, 1 DDS error, 2 bad arguments.\n",
@@ -229,7 +236,9 @@ static bool parse_endpoint(const char *arg, bool publisher, bool rate_zero_ok, s
     strcpy(ep->topic, parts[0]);
     if (!parse_type(parts[1], &ep->type)) {
         set_err(err, errlen, "unknown type '%s' (std_msgs/msg/String, geometry_msgs/msg/PoseStamped, "
-                "sensor_msgs/msg/PointCloud2, bridgescope_test/msg/Opaque)", parts[1]);
+                "sensor_msgs/msg/PointCloud2, bridgescope_test/msg/Opaque, benchmarking_suite/msg/TimeStamped, "
+                "std_msgs/msg/Float64)",
+                parts[1]);
         return false;
     }
     const char *qos = NULL;
@@ -392,21 +401,51 @@ static bool parse_hex(const char *s, struct peer_raw *raw, char *err, size_t err
     return true;
 }
 
+// The TOPIC of "TOPIC:VALUE" (colon: the ':' before VALUE, or NULL), resolved into ep->topic.
+// false when there is none (`want` says what was wanted) or it is no valid name.
+static bool arg_topic(const char *arg, const char *colon, const char *want, struct peer_endpoint *ep,
+                      const struct peer_options *o, char *err, size_t errlen)
+{
+    memset(ep, 0, sizeof *ep);
+    size_t len = colon != NULL ? (size_t)(colon - arg) : 0;
+    if (colon == NULL || len == 0 || len > PEER_MAX_NAME) {
+        set_err(err, errlen, "want %s, got '%.60s'", want, arg);
+        return false;
+    }
+    memcpy(ep->topic, arg, len);
+    ep->topic[len] = '\0';
+    return resolve_topic(ep, o, err, errlen);
+}
+
+// --stamp-delay TOPIC:MS, for a TimeStamped --pub of TOPIC.
+static bool attach_delay(const char *arg, struct peer_options *o, char *err, size_t errlen)
+{
+    const char *colon = strrchr(arg, ':');
+    struct peer_endpoint ep;
+    uint64_t ms = 0;
+    if (!arg_topic(arg, colon, "--stamp-delay TOPIC:MS", &ep, o, err, errlen))
+        return false;
+    if (!parse_u64(colon + 1, 0, PEER_MAX_STAMP_DELAY_MS, &ms)) {
+        set_err(err, errlen, "bad --stamp-delay '%.60s' (ms, 0..%u)", arg, PEER_MAX_STAMP_DELAY_MS);
+        return false;
+    }
+    for (unsigned i = 0; i < o->npubs; i++) {
+        if (strcmp(o->pubs[i].topic, ep.topic) == 0 && o->pubs[i].type == PEER_TIME_STAMPED) {
+            o->pubs[i].stamp_delay_ns = (int64_t)ms * 1000000;
+            return true;
+        }
+    }
+    set_err(err, errlen, "--stamp-delay %s: no TimeStamped --pub of that topic", ep.topic);
+    return false;
+}
+
 // --raw TOPIC:HEX, after the topics are resolved: TOPIC must be a --pub of this peer (and no --sub
 // of it: a topic has one type in a participant, and a raw one is not the plain one).
 static bool attach_raw(const char *arg, struct peer_options *o, char *err, size_t errlen)
 {
     const char *colon = strchr(arg, ':');
     struct peer_endpoint ep;
-    memset(&ep, 0, sizeof ep);
-    size_t len = colon != NULL ? (size_t)(colon - arg) : 0;
-    if (colon == NULL || len == 0 || len > PEER_MAX_NAME) {
-        set_err(err, errlen, "want --raw TOPIC:HEX, got '%.60s'", arg);
-        return false;
-    }
-    memcpy(ep.topic, arg, len);
-    ep.topic[len] = '\0';
-    if (!resolve_topic(&ep, o, err, errlen))
+    if (!arg_topic(arg, colon, "--raw TOPIC:HEX", &ep, o, err, errlen))
         return false;
     for (unsigned i = 0; i < o->nsubs; i++) {
         if (strcmp(o->subs[i].topic, ep.topic) == 0) {
@@ -449,6 +488,8 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
     bool have_domain = false;
     const char *raws[PEER_MAX_ENDPOINTS];
     unsigned nraw = 0;
+    const char *delays[PEER_MAX_ENDPOINTS];
+    unsigned ndelay = 0;
 
     for (int i = 1; i < argc; i++) {
         const char *opt = argv[i];
@@ -466,10 +507,14 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
             o->show_discovery = true;
             continue;
         }
+        if (strcmp(opt, "--start-matched") == 0) {
+            o->start_matched = true;
+            continue;
+        }
         // Every other option takes a value.
         static const char *const with_value[] = { "--domain", "--node", "--pub", "--sub", "--many", "--count",
                                                   "--duration", "--size", "--lease-ms", "--trace",
-                                                  "--raw", "--graph-raw" };
+                                                  "--raw", "--graph-raw", "--stamp-delay" };
         bool known = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
             known = known || strcmp(opt, with_value[k]) == 0;
@@ -539,6 +584,12 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
                 return PEER_PARSE_ERROR;
             }
             raws[nraw++] = val; // attached to their --pub once all topics are resolved
+        } else if (strcmp(opt, "--stamp-delay") == 0) {
+            if (ndelay >= PEER_MAX_ENDPOINTS) {
+                set_err(err, errlen, "more than %u --stamp-delay", PEER_MAX_ENDPOINTS);
+                return PEER_PARSE_ERROR;
+            }
+            delays[ndelay++] = val;
         } else if (strcmp(opt, "--graph-raw") == 0) {
             if (o->graph_raw.set) {
                 set_err(err, errlen, "--graph-raw given twice");
@@ -567,6 +618,9 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
             return PEER_PARSE_ERROR;
     for (unsigned i = 0; i < nraw; i++)
         if (!attach_raw(raws[i], o, err, errlen))
+            return PEER_PARSE_ERROR;
+    for (unsigned i = 0; i < ndelay; i++)
+        if (!attach_delay(delays[i], o, err, errlen))
             return PEER_PARSE_ERROR;
     if (o->many.count > 0) {
         if (!resolve_many(&o->many, o, err, errlen))

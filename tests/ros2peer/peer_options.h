@@ -18,6 +18,7 @@
 #define PEER_MANY_END 10000u                  // --many: FIRST + N, so that indices have 4 digits
 #define PEER_MANY_DIGITS 4u
 #define PEER_MAX_MANY_BYTES (64u * 1024u * 1024u)   // --many: N x --size for PointCloud2, Opaque
+#define PEER_MAX_STAMP_DELAY_MS 60000u      // --stamp-delay
 #define PEER_MAX_RAW 65536u                   // --raw, --graph-raw: bytes of a hand-made sample
 
 enum peer_type {
@@ -25,6 +26,8 @@ enum peer_type {
     PEER_POSE_STAMPED,   // geometry_msgs/msg/PoseStamped
     PEER_POINT_CLOUD2,   // sensor_msgs/msg/PointCloud2
     PEER_OPAQUE,         // bridgescope_test/msg/Opaque
+    PEER_TIME_STAMPED,   // benchmarking_suite/msg/TimeStamped
+    PEER_FLOAT64,        // std_msgs/msg/Float64
     PEER_NTYPES
 };
 
@@ -45,6 +48,7 @@ struct peer_endpoint {
     bool transient_local;            // else volatile
     int32_t depth;                   // history keep-last depth
     struct peer_raw raw;             // publishers: --raw TOPIC:HEX for this topic
+    int64_t stamp_delay_ns;          // TimeStamped publishers: --stamp-delay TOPIC:MS
 };
 
 // --many N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]]: publishers on PREFIX0000, PREFIX0001, ...
@@ -70,6 +74,7 @@ struct peer_options {
     bool exit_hard;
     bool cdr;                // print each received sample's first serialized bytes
     bool show_discovery;     // print remote endpoints and ros_discovery_info nodes
+    bool start_matched;      // a publisher starts once a reader matched it (and 0.5 s more)
     char trace_file[PEER_MAX_PATH + 1];   // Cyclone DDS trace, "" for none
     struct peer_raw graph_raw;       // --graph-raw HEX: ros_discovery_info sample bytes
 };

@@ -89,6 +89,9 @@ bad_args=(
     "--domain 1 --pub /a:std_msgs/msg/String --raw /a:00 --raw /a:00"
     "--domain 1 --pub /a:std_msgs/msg/String --sub /a:std_msgs/msg/String --raw /a:00"
     "--domain 1 --graph-raw 0"
+    "--domain 1 --pub /a:std_msgs/msg/String --stamp-delay /a:5"
+    "--domain 1 --pub /a:benchmarking_suite/msg/TimeStamped --stamp-delay /a:60001"
+    "--domain 1 --pub /a:benchmarking_suite/msg/TimeStamped --stamp-delay /b:5"
 )
 for args in "${bad_args[@]}"; do
     # shellcheck disable=SC2086 # word splitting wanted

@@ -39,7 +39,7 @@ private slots:
     {
         const QDir dir(examples());
         const QStringList files = dir.entryList({u"experiment-*.yaml"_s});
-        QCOMPARE(files.size(), 5);
+        QCOMPARE(files.size(), 6);
         QHash<QString, int> cells;
         for (const QString& f : files) {
             QString error;
@@ -49,6 +49,7 @@ private slots:
             cells.insert(f, int(p->cells.size()));
         }
         QCOMPARE(cells.value(u"experiment-table1-methods.yaml"_s), 3);
+        QCOMPARE(cells.value(u"experiment-table1-methods-ros2.yaml"_s), 3);
         QCOMPARE(cells.value(u"experiment-table2-encryption.yaml"_s), 2);
         QCOMPARE(cells.value(u"experiment-table3-qos.yaml"_s), 3);
         QCOMPARE(cells.value(u"experiment-table4-size.yaml"_s), 6);
@@ -78,6 +79,29 @@ private slots:
         QVERIFY(methods->cells[1].settings.announceEveryMessage);
         QVERIFY(methods->cells[2].settings.bridge.command.contains(u"{config}"_s));
         QCOMPARE(methods->cells[2].settings.bridge.name, u"mqtt_client"_s);
+        QCOMPARE(methods->ros, 1);
+        // the ROS 2 variant: the real mqtt_client started with the generated ROS 2 params file
+        const auto ros2 = ExperimentPlan::load(dir.filePath(u"experiment-table1-methods-ros2.yaml"_s), nullptr);
+        QVERIFY(ros2);
+        QCOMPARE(ros2->ros, 2);
+        QVERIFY(ros2->cells[2].settings.bridge.command.contains(
+            u"ros2 run mqtt_client mqtt_client --ros-args --params-file {config} -r __node:={name}"_s));
+    }
+
+    // `ros: 2` runs every cell on ROS 2; servers given need no master there (issue 34, point 5)
+    void rosOfAPlan()
+    {
+        QString error;
+        const auto p = plan("ros: 2\nfactors:\n  qos: [0, 1]\nservers: {broker: tcp://127.0.0.1:1883}\n", &error);
+        QVERIFY2(p, qPrintable(error));
+        QCOMPARE(p->ros, 2);
+        QCOMPARE(p->cells.size(), 2);
+        QCOMPARE(p->brokerUrl, u"tcp://127.0.0.1:1883"_s);
+        QCOMPARE(plan("samples: 5\n")->ros, 1);
+        QCOMPARE(plan("ros: 1\n")->ros, 1);
+        // ROS 1 still needs its master when the servers are given
+        QVERIFY(!plan("servers: {broker: tcp://127.0.0.1:1883}\n", &error));
+        QVERIFY2(error.contains(u"ros_master: URI"_s), qPrintable(error));
     }
 
     void defaultsRepetitionsAndListedCells()
@@ -148,6 +172,9 @@ private slots:
             "servers: {broker: \"tcp://lab:secret@127.0.0.1:1883\", ros_master: http://127.0.0.1:11311/}\n")
                                      << u"line 1, column 10: a plan holds no credentials"_s;
         QTest::newRow("not a map") << QByteArray("- 1\n") << u"a plan is a mapping"_s;
+        QTest::newRow("ros 3") << QByteArray("samples: 5\nros: 3\n")
+                               << u"line 2, column 6: ros is 1 (a ROS master) or 2"_s;
+        QTest::newRow("ros list") << QByteArray("ros: [2]\n") << u"line 1, column 6: ros is 1"_s;
         // Numbers far out of range are refused where they stand, naming the range, before any
         // arithmetic turns them into a negative number of seconds.
         QTest::newRow("timeout far") << QByteArray("samples: 5\ntimeout_s: 1e300\n")

@@ -9,6 +9,7 @@
 #include "mqttclientros2.h"
 #include "wire/mqttclientwire.h"
 #include "wire/ros2definitions.h"
+#include "wire/stampcodec.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -532,6 +533,51 @@ private slots:
         QVERIFY(stamps.empty());
         QCOMPARE(decoder.malformed(), 1u);
         QVERIFY2(decoder.lastError().contains(u"12-byte stamp"_s), qPrintable(decoder.lastError()));
+    }
+
+    // Issue 34: the suite's stamp in its ROS 2 form, bridged by mqtt_client for ROS 2: announced by
+    // name (no md5), CDR as Fast CDR writes it in either byte order, the 12-byte stamp in front.
+    void stampDecoderReadsRos2TimeStamped()
+    {
+        const auto timeStamped = [](Cdr::Endianness e) {
+            return MqttClientRos2::serialize(
+                [](Cdr& cdr) {
+                    cdr << int32_t(1'700'000'000) << uint32_t(5) << std::string("lidar"); // header
+                    cdr << int32_t(1'700'000'000) << uint32_t(20'000'005); // time
+                },
+                e);
+        };
+        StampCodec::Decoded mine;
+        mine.sampleNs = 1'700'000'000'000'000'005LL;
+        mine.timeNs = 1'700'000'000'020'000'005LL;
+        mine.frameId = u"lidar"_s;
+        QCOMPARE(StampCodec::encodeTimeStampedCdr(mine), timeStamped(Cdr::LITTLE_ENDIANNESS));
+        RosMsgTypeInfo type;
+        type.name = u"benchmarking_suite/msg/TimeStamped"_s;
+        type.stamped = true;
+        type.dialect = Dialect::Ros2;
+        MqttStampDecoder decoder;
+        std::vector<MqttMessage> batch {msg(typeTopic(u"car/stamp"_s), MqttClientWire::encodeType(type))};
+        for (Cdr::Endianness e : {Cdr::LITTLE_ENDIANNESS, Cdr::BIG_ENDIANNESS})
+            batch.push_back(msg(u"car/stamp"_s, MqttClientWire::stamped(kHelloStampNs, timeStamped(e), Dialect::Ros2),
+                                kHelloStampNs + 3'000'000));
+        decoder.collect(batch);
+        std::vector<StampEvent> stamps;
+        std::vector<LatencyValue> latencies;
+        decoder.takeStamps(stamps, latencies);
+        QCOMPARE(stamps.size(), std::size_t(2));
+        for (const StampEvent& s : stamps) {
+            QCOMPARE(s.topic, u"car/stamp"_s);
+            QCOMPARE(s.sampleNs, mine.sampleNs);
+            QCOMPARE(s.timeNs, mine.timeNs);
+        }
+        QCOMPARE(latencies.size(), std::size_t(2));
+        QCOMPARE(latencies[0].valueNs, 3'000'000);
+        QCOMPARE(decoder.malformedStamps(), 0u);
+        // Taken once.
+        stamps.clear();
+        decoder.takeStamps(stamps, latencies);
+        QVERIFY(stamps.empty());
     }
 };
 

@@ -70,6 +70,86 @@ private slots:
         QVERIFY(!StampCodec::decodeHeader(overflow));
     }
 
+    // Issue 34: the ROS 2 form, as rmw writes it: encapsulation header, stamp (int32 sec, uint32
+    // nanosec), frame_id (length counting its NUL, the bytes, the NUL), padding to 4 from the end of
+    // the header, time. Hand-made bytes, both byte orders, and what a hostile node could send.
+    void ros2TimeStampedDecodesCdrAndRejectsBadBytes()
+    {
+        const QByteArray le = QByteArray::fromHex("00010000"
+                                                  "00f15365"
+                                                  "15cd5b07"
+                                                  "03000000"
+                                                  "61620000"
+                                                  "01f15365"
+                                                  "00e1f505");
+        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStampedCdr(le);
+        QVERIFY(d);
+        QCOMPARE(d->sampleNs, 0x6553f100LL * 1'000'000'000LL + 123456789);
+        QCOMPARE(d->frameId, u"ab"_s);
+        QCOMPARE(d->timeNs, 0x6553f101LL * 1'000'000'000LL + 100'000'000);
+        QCOMPARE(d->seq, 0u);
+        QCOMPARE(StampCodec::encodeTimeStampedCdr(*d), le);
+        const QByteArray be = QByteArray::fromHex("00000000"
+                                                  "6553f100"
+                                                  "075bcd15"
+                                                  "00000003"
+                                                  "61620000"
+                                                  "6553f101"
+                                                  "05f5e100");
+        const std::optional<StampCodec::Decoded> b = StampCodec::decodeTimeStampedCdr(be);
+        QVERIFY(b);
+        QCOMPARE(b->sampleNs, d->sampleNs);
+        QCOMPARE(b->timeNs, d->timeNs);
+        // An empty frame_id is one NUL, three bytes of padding; RTPS may pad the end to 4 bytes.
+        const QByteArray empty = QByteArray::fromHex("00010000" "00f15365" "15cd5b07" "01000000" "00000000"
+                                                     "01f15365" "00e1f505");
+        QVERIFY(StampCodec::decodeTimeStampedCdr(empty));
+        QCOMPARE(StampCodec::decodeTimeStampedCdr(empty)->frameId, QString());
+        QVERIFY(StampCodec::decodeTimeStampedCdr(le + QByteArray(3, '\0')));
+
+        const auto rejected = [](const QByteArray& bytes, const QString& why) {
+            QString error;
+            const bool bad = !StampCodec::decodeTimeStampedCdr(bytes, &error);
+            if (!bad || !error.contains(why))
+                qWarning("%s: %s", bytes.toHex().constData(), qPrintable(error));
+            return bad && error.contains(why);
+        };
+        QVERIFY(rejected(le.left(3), u"short"_s));
+        QVERIFY(rejected(le.left(14), u"short"_s));
+        QVERIFY(rejected(le.left(24), u"ends before its time"_s));
+        QVERIFY(rejected(le + QByteArray(4, '\0'), u"4 bytes too many"_s));
+        QByteArray other = le;
+        other[1] = 3; // PL_CDR_LE: no final type's encapsulation
+        QVERIFY(rejected(other, u"encapsulation header is 00 03 00 00"_s));
+        // A frame_id of 4 GiB in 28 bytes: refused before anything is read or allocated.
+        QByteArray huge = le;
+        huge.replace(12, 4, QByteArray::fromHex("f0ffffff"));
+        QVERIFY(rejected(huge, u"frame_id claims 4294967280 bytes, only 12 left"_s));
+        QByteArray nsec = le;
+        nsec.replace(8, 4, QByteArray::fromHex("00ca9a3b"));
+        QVERIFY(rejected(nsec, u"header stamp has 1000000000 nanoseconds"_s));
+        nsec = le;
+        nsec.replace(24, 4, QByteArray::fromHex("ffffffff"));
+        QVERIFY(rejected(nsec, u"time has 4294967295 nanoseconds"_s));
+        QByteArray negative = le;
+        negative.replace(4, 4, QByteArray::fromHex("ffffffff")); // int32 sec -1
+        QVERIFY(rejected(negative, u"before 1970"_s));
+        // ROS 1 bytes are no ROS 2 sample, and the other way round.
+        QVERIFY(!StampCodec::decodeTimeStampedCdr(StampCodec::encodeTimeStamped(*d)));
+        QVERIFY(!StampCodec::decodeTimeStamped(le));
+    }
+
+    void ros2Float64LatencyDecodesCdr()
+    {
+        QCOMPARE(StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("00010000" "2b8716d9cef7933f")),
+                 std::make_optional(19'500'000LL));
+        QCOMPARE(StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("00000000" "3f93f7ced916872b")),
+                 std::make_optional(19'500'000LL));
+        QVERIFY(!StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("2b8716d9cef7933f")));
+        QVERIFY(!StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("00010000" "2b8716d9")));
+        QVERIFY(!StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("00010000" "000000000000f07f"))); // inf
+    }
+
     void jsonStamps_data()
     {
         QTest::addColumn<QByteArray>("json");

@@ -10,6 +10,7 @@
 #include "widgets/discover/fieldplotchart.h"
 #include "wire/fieldpath.h"
 #include "wire/rosmessage.h"
+#include "wire/sourcemessage.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -453,8 +454,8 @@ void DetailPane::refreshMqtt(bool force)
         QString error;
         RosDecodeLimits limits;
         limits.maxArrayElements = 32;
-        if (const auto value
-            = MqttClientWire::decodePayload(*registry, *info->rosType, m_lastPayload, &error, limits))
+        if (const auto value = SourceMessage::decode(
+                *registry, {SourceGraph::Mqtt, info->rosType->name, info->rosType}, m_lastPayload, &error, limits))
             showFields(*value);
         else
             showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
@@ -554,7 +555,7 @@ void DetailPane::refreshRos(bool force)
                             nullptr, s->lastSize)
                              .arg(s->type));
         else if (const auto value
-                 = RosMessageDecoder::decodeCdr(types, s->type, s->lastMessage, &error, limits))
+                 = SourceMessage::decode(types, {SourceGraph::Ros2, s->type, {}}, s->lastMessage, &error, limits))
             showFields(*value);
         else
             showNoFields(error);
@@ -564,7 +565,7 @@ void DetailPane::refreshRos(bool force)
     if (!registry.addDefinition(s->type, s->definition, &error)) {
         showNoFields(error);
     } else if (const auto value
-               = RosMessageDecoder::decode(registry, s->type, s->lastMessage, &error, limits)) {
+               = SourceMessage::decode(registry, {SourceGraph::Ros1, s->type, {}}, s->lastMessage, &error, limits)) {
         showFields(*value);
     } else {
         showNoFields(error);

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "wire/mqttclientwire.h"
+#include "wire/rosmessage.h"
+#include "wire/stampcodec.h"
+
+#include <optional>
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QString>
+
+/// Which graph a message came from, and so how its bytes are serialized: ROS 1 (ROS
+/// serialization), ROS 2 (CDR after an encapsulation header), MQTT (a payload: mqtt_client's wire
+/// when a type was announced for it, else whatever the device sent).
+enum class SourceGraph { Ros1, Ros2, Mqtt };
+
+/// How the messages of one topic decode: its graph and ROS type, and on MQTT the type mqtt_client
+/// announced (its dialect and whether payloads carry a stamp).
+struct SourceType
+{
+    SourceGraph graph = SourceGraph::Mqtt;
+    QString type;
+    std::optional<RosMsgTypeInfo> announced;
+    /// A ROS type is known to decode with (ROS 1 and 2 always, MQTT with an announcement).
+    bool isRos() const { return graph != SourceGraph::Mqtt || announced.has_value(); }
+};
+
+/// The one place that picks a decoder for a (graph, type): the field plots, the Discover page's
+/// detail pane, the MQTT topic tree's check of announced payloads and the stamp sources all decode
+/// through it.
+class SourceMessage
+{
+    Q_DECLARE_TR_FUNCTIONS(SourceMessage)
+public:
+    /// The message as a value: ROS 1 with RosMessageDecoder::decode(), ROS 2 with decodeCdr(), an
+    /// announced MQTT payload with MqttClientWire::decodePayload() (after its stamp, in its dialect).
+    /// Not for MQTT payloads without an announcement (nullopt, with `error` saying so): those are
+    /// JSON or opaque, the caller's to show.
+    static std::optional<RosValue> decode(const RosTypeRegistry& registry, const SourceType& type,
+                                          const QByteArray& bytes, QString* error = nullptr,
+                                          const RosDecodeLimits& limits = {});
+    /// A `benchmarking_suite/TimeStamped` of the graph's form (ROS 1 serialized, ROS 2 CDR).
+    static std::optional<StampCodec::Decoded> decodeStamp(SourceGraph graph, const QByteArray& bytes,
+                                                          QString* error = nullptr);
+    /// A std_msgs Float64 latency in seconds, as ns, of the graph's form.
+    static std::optional<qint64> decodeLatency(SourceGraph graph, const QByteArray& bytes);
+    /// The stamp type's name in the graph ("benchmarking_suite/TimeStamped" on ROS 1,
+    /// "benchmarking_suite/msg/TimeStamped" on ROS 2).
+    static QString stampType(SourceGraph graph);
+};
