@@ -18,6 +18,7 @@
 #include <set>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 using namespace Qt::StringLiterals;
@@ -44,19 +45,27 @@ void limitMemory()
 /// library prints can end up in the frames).
 int g_frames = STDOUT_FILENO;
 
-/// Writes all of `bytes` to the parent; false when it is gone.
-bool writeAll(const QByteArray& bytes)
+/// Writes a frame of `kind` with `body` to the parent, its header and body in one writev() (no copy
+/// of the body into a frame: a sample batch is megabytes); false when the parent is gone.
+bool writeFrame(Kind kind, const QByteArray& body)
 {
-    const char* p = bytes.constData();
-    qsizetype left = bytes.size();
-    while (left > 0) {
-        const ssize_t n = ::write(g_frames, p, size_t(left));
+    const QByteArray header = Ros2Protocol::frameHeader(kind, body.size());
+    iovec parts[2] = {{const_cast<char*>(header.constData()), std::size_t(header.size())},
+                      {const_cast<char*>(body.constData()), std::size_t(body.size())}};
+    int first = 0;
+    while (first < 2) {
+        const ssize_t n = ::writev(g_frames, parts + first, 2 - first);
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0)
             return false;
-        p += n;
-        left -= n;
+        std::size_t done = std::size_t(n);
+        while (first < 2 && done >= parts[first].iov_len)
+            done -= parts[first++].iov_len;
+        if (first < 2) {
+            parts[first].iov_base = static_cast<char*>(parts[first].iov_base) + done;
+            parts[first].iov_len -= done;
+        }
     }
     return true;
 }
@@ -86,7 +95,7 @@ public:
 private:
     void send(Kind kind, const QByteArray& body = {})
     {
-        if (!writeAll(Ros2Protocol::frame(kind, body)))
+        if (!writeFrame(kind, body))
             QCoreApplication::exit(0); // the parent is gone
     }
 
@@ -220,11 +229,25 @@ private:
         }
     }
 
-    /// Subscribed topics' samples, as soon as Cyclone passed them on.
+    /// Subscribed topics' samples, as soon as Cyclone passed them on: taken a batch at a time, each
+    /// once the one before is in the pipe, so that what waits for a parent that does not read stays
+    /// in the engine's bound (the rest dropped and counted there). After kTurnBytes the other
+    /// requests get a turn and this goes on.
     void sendReceived()
     {
-        for (Ros2Engine::Received& r : m_engine.takeReceived())
-            sendSamples(Kind::Received, r.topic, r.dropped, std::move(r.samples));
+        constexpr qint64 kTurnBytes = 16 * Ros2Protocol::kBatchBytes;
+        qint64 sent = 0;
+        while (sent < kTurnBytes) {
+            std::vector<Ros2Engine::Received> taken = m_engine.takeReceived(Ros2Protocol::kBatchBytes);
+            if (taken.empty())
+                return;
+            for (Ros2Engine::Received& r : taken) {
+                for (const Ros2Sample& s : r.samples)
+                    sent += s.bytes.size() + 1; // an empty sample counts too
+                sendSamples(Kind::Received, r.topic, r.dropped, std::move(r.samples));
+            }
+        }
+        QMetaObject::invokeMethod(this, &Worker::sendReceived, Qt::QueuedConnection);
     }
 
     void drain()

@@ -220,6 +220,9 @@ int main(int argc, char** argv)
                    u"ROS 2 adds %1 ms"_s.arg(m2 - m1, 0, 'f', 2));
         Bench::row(u"%1 MB ratio ROS 2 bridges / broker only"_s.arg(mb), mb0 > 0 ? m2 / mb0 : 0,
                    u"the bridges add %1 ms"_s.arg(m2 - mb0, 0, 'f', 2));
+        // for scripts/bench.sh --gate, should bench/gate.txt name them
+        Bench::gate(size == sizes.front() ? "ros2bridge_018mb_vs_ros1_bridges" : "ros2bridge_108mb_vs_ros1_bridges",
+                    m1 > 0 ? m2 / m1 : 0);
     }
     mqtt.disconnect();
     ros.shutdown();

@@ -291,19 +291,28 @@ void Ros2Endpoints::onSample(const QString& topic, const unsigned char* data, st
         m_wake();
 }
 
-std::vector<Ros2Engine::Received> Ros2Endpoints::takeReceived()
+std::vector<Ros2Engine::Received> Ros2Endpoints::takeReceived(qint64 maxBytes)
 {
     std::vector<Ros2Engine::Received> out;
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_woken = false;
+    qint64 taken = 0;
     for (auto& [topic, s] : m_subscriptions) {
-        if (s->queue.empty())
+        if (s->queue.empty() || taken >= maxBytes)
             continue;
-        out.push_back({topic, s->dropped, std::move(s->queue)});
-        s->queue.clear();
+        Ros2Engine::Received r {topic, s->dropped, {}};
+        auto end = s->queue.begin();
+        while (end != s->queue.end() && (taken == 0 || taken + end->bytes.size() <= maxBytes)) {
+            taken += end->bytes.size();
+            ++end;
+        }
+        r.samples.assign(std::make_move_iterator(s->queue.begin()), std::make_move_iterator(end));
+        s->queue.erase(s->queue.begin(), end);
+        m_queuedSamples -= r.samples.size();
+        out.push_back(std::move(r));
     }
-    m_queuedBytes = 0;
-    m_queuedSamples = 0;
+    m_queuedBytes -= taken;
+    if (m_queuedSamples == 0)
+        m_woken = false; // the next sample wakes the owner again
     return out;
 }
 

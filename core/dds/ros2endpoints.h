@@ -25,8 +25,8 @@ struct Ros2RawReader;
 /// Endpoints of one participant, each with the raw-bytes sertype (Ros2RawType), QoS as
 /// rmw_cyclonedds_cpp's create_readwrite_qos. Samples of the readers are queued on Cyclone's
 /// listener thread within kMaxQueuedBytes and kMaxQueuedSamples over all readers (a sample over
-/// either is dropped and counted), and `wake` is called
-/// there when a queue that was empty gets one; takeReceived() takes them on the owner thread.
+/// either is dropped and counted), and `wake` is called there when the queues were empty and get
+/// one; takeReceived() takes them on the owner thread, a batch at a time.
 class Ros2Endpoints
 {
 public:
@@ -46,9 +46,11 @@ public:
     bool subscribe(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why);
     void unsubscribe(const QString& topic);
 
-    /// The subscriptions' samples since the last call, topic by topic (with each one's drops
-    /// since it was made).
-    std::vector<Ros2Engine::Received> takeReceived();
+    /// The subscriptions' oldest samples, about `maxBytes` of them (at least one), topic by topic
+    /// (with each one's drops since it was made). They leave the bound as they are taken, so the
+    /// owner takes what it can pass on now: samples taken while the pipe to the parent is full
+    /// would be held beside a queue filling again (twice the bound).
+    std::vector<Ros2Engine::Received> takeReceived(qint64 maxBytes);
 
     /// Our own endpoints and node, for the graph (discovery does not show a participant its own).
     QList<Ros2Endpoint> ownEndpoints() const;

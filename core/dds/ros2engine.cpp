@@ -742,7 +742,7 @@ void Ros2Engine::unsubscribeSamples(const QString& topic)
         d->own->unsubscribe(topic);
 }
 
-std::vector<Ros2Engine::Received> Ros2Engine::takeReceived()
+std::vector<Ros2Engine::Received> Ros2Engine::takeReceived(qint64 maxBytes)
 {
-    return d ? d->own->takeReceived() : std::vector<Received>();
+    return d ? d->own->takeReceived(maxBytes) : std::vector<Received>();
 }

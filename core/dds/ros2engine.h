@@ -77,14 +77,16 @@ public:
     bool publish(const QString& topic, const QByteArray& cdr);
     bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr);
     void unsubscribeSamples(const QString& topic);
-    /// A subscribed topic's samples since the last call (and the drops of its queue so far).
+    /// Subscribed topics' samples, oldest first, about `maxBytes` of them (at least one), and the
+    /// drops of each queue so far. What is taken leaves the queues' bound: take no more than what
+    /// can be passed on now.
     struct Received
     {
         QString topic;
         quint64 dropped = 0;
         std::vector<Ros2Sample> samples;
     };
-    std::vector<Received> takeReceived();
+    std::vector<Received> takeReceived(qint64 maxBytes);
 
 signals:
     /// The graph changed, or badDiscoveryInfo() did (which is shown with it).

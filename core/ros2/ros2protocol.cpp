@@ -14,13 +14,17 @@ bool isKnown(quint8 kind)
         || (kind >= quint8(Kind::Started) && kind <= quint8(Kind::Received));
 }
 
-QByteArray frame(Kind kind, const QByteArray& body)
+QByteArray frameHeader(Kind kind, qsizetype bodySize)
 {
     QByteArray out(5, '\0');
-    qToLittleEndian(quint32(body.size()), out.data());
+    qToLittleEndian(quint32(bodySize), out.data());
     out[4] = char(kind);
-    out += body;
     return out;
+}
+
+QByteArray frame(Kind kind, const QByteArray& body)
+{
+    return frameHeader(kind, body.size()) + body;
 }
 
 void FrameReader::append(const QByteArray& bytes)
@@ -428,6 +432,10 @@ std::optional<QList<TopicStats>> decodeStats(const QByteArray& body)
 QByteArray encodeSamples(const SampleBatch& b)
 {
     Writer w;
+    qsizetype size = 4 + b.topic.size() * 3 + 8 + 4;
+    for (const Ros2Sample& s : b.samples)
+        size += 8 + 4 + s.bytes.size();
+    w.reserve(size);
     w.string(b.topic);
     w.u64(b.dropped);
     w.u32(quint32(b.samples.size()));
@@ -526,6 +534,7 @@ std::optional<EndpointRequest> decodeEndpoint(const QByteArray& body)
 QByteArray encodePublish(const PublishRequest& r)
 {
     Writer w;
+    w.reserve(4 + r.topic.size() * 3 + 4 + r.cdr.size());
     w.string(r.topic);
     w.bytes(r.cdr);
     return w.data();

@@ -62,6 +62,8 @@ struct Frame
 
 /// A frame as bytes.
 QByteArray frame(Kind kind, const QByteArray& body = {});
+/// The 5 bytes before a body of `bodySize` bytes: for writers that send the body as it is.
+QByteArray frameHeader(Kind kind, qsizetype bodySize);
 
 /// Cuts a byte stream into frames. It holds at most one frame and what came after it; a length
 /// over kMaxFrameBytes or an unknown kind ends the stream (error() says why).
@@ -94,6 +96,8 @@ public:
     void bytes(const QByteArray& b);
     void string(const QString& s) { bytes(s.toUtf8()); }
     void strings(const QStringList& list);
+    /// Room for `bytes` in all, so that a body of megabytes is not copied as it grows.
+    void reserve(qsizetype bytes) { m_bytes.reserve(bytes); }
     const QByteArray& data() const { return m_bytes; }
 
 private:

@@ -5,6 +5,7 @@
 // suite's timestamp_topic_prefix stamps joining into complete samples.
 #include "base/wallclock.h"
 #include "bridge/referencebridge.h"
+#include "bridgelog.h"
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "latency/latencyengine.h"
@@ -132,27 +133,6 @@ private:
         return false;
     }
 
-    /// Stops `p` and returns the figures of its memory-bound line: dropped to MQTT, to ROS.
-    static std::pair<qint64, qint64> droppedOf(QProcess& p)
-    {
-        p.terminate();
-        if (!p.waitForFinished(10000))
-            return {-1, -1};
-        const QString log = QString::fromUtf8(p.readAllStandardError());
-        static const QRegularExpression line(
-            u"memory bound .*: (\\d+) messages to MQTT and (\\d+) to ROS dropped"_s);
-        QRegularExpressionMatch m;
-        for (const QString& l : log.split(u'\n'))
-            if (const QRegularExpressionMatch found = line.match(l); found.hasMatch())
-                m = found; // the last
-        if (!m.hasMatch()) {
-            qWarning("%s", qPrintable(log.right(3000)));
-            return {0, 0};
-        }
-        qInfo("%s", qPrintable(m.captured(0)));
-        return {m.captured(1).toLongLong(), m.captured(2).toLongLong()};
-    }
-
     /// Calls `send` for kFloodSeconds (a ms apart), with the broker or a ROS subscriber stopped
     /// (SIGSTOP) meanwhile; the growth of the bridge's peak RSS.
     static qint64 floodWhileStopped(QProcess& bridge, qint64 stoppedPid, const std::function<void()>& send)
@@ -176,7 +156,7 @@ private:
     /// Stops `p`, which grew by `grown`: within its bound, and it dropped messages one way only.
     static void expectBoundHeld(QProcess& p, qint64 grown, bool towardsMqtt)
     {
-        const auto [toMqtt, toRos] = droppedOf(p);
+        const auto [toMqtt, toRos] = BridgeLog::droppedOf(p);
         QVERIFY2(grown < ReferenceBridge::kDefaultMaxQueuedBytes + kSlackBytes + PeakRss::kSanitizerSlack,
                  qPrintable(u"the bridge grew by %1 MiB"_s.arg(grown >> 20)));
         QVERIFY((towardsMqtt ? toMqtt : toRos) > 0);

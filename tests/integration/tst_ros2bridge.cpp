@@ -6,9 +6,13 @@
 // (tests/support/mqttclientros2.h); its DDS side as the peer receives it; its node in
 // ros_discovery_info; its timestamp_topic_prefix stamps and ~/latencies.
 #include "base/wallclock.h"
+#include "bridgelog.h"
+#include "bridge/referencebridge.h"
+#include "ddschild.h"
 #include "messageinbox.h"
 #include "mqtt/mqttlink.h"
 #include "mqttclientros2.h"
+#include "peakrss.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "testservers.h"
@@ -16,6 +20,7 @@
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
+#include <atomic>
 #include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -24,6 +29,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtEndian>
+#include <signal.h>
 
 using namespace Qt::StringLiterals;
 using MqttClientRos2::Cdr;
@@ -81,9 +87,12 @@ private:
     int m_domain = 0;
     std::unique_ptr<MqttLink> m_mqtt; ///< the test's MQTT client, subscribed to everything
     MessageInbox m_fromMqtt;
+    std::atomic<int> m_floodArrived {0}; ///< messages on flood/... (counted, not kept)
     RosTypeRegistry m_types = Ros2Definitions::registry();
 
-    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QStringList& options = {})
+    /// Starts `bridgescope bridge --ros 2` on `config`; its log goes to our stderr unless `captureLog`.
+    std::unique_ptr<QProcess> bridge(const QByteArray& config, const QStringList& options = {},
+                                     bool captureLog = false)
     {
         const QString path = m_dir.filePath(u"bridge.yaml"_s);
         QFile f(path);
@@ -91,7 +100,8 @@ private:
             f.write(config);
         f.close();
         auto p = std::make_unique<QProcess>();
-        p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        if (!captureLog)
+            p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
         p->start(QStringLiteral(BRIDGESCOPE_BINARY),
                  QStringList {u"bridge"_s, path, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(m_domain),
                               u"--ros-localhost-only"_s, u"--broker"_s, m_servers.brokerUrl()}
@@ -114,8 +124,10 @@ private slots:
         m_domain = Ros2Peer::freeDomain(200, 230);
         MqttProfile profile = MqttProfile::fromUrl(m_servers.brokerUrl());
         m_mqtt = std::make_unique<MqttLink>(profile);
-        MessageInbox* inbox = &m_fromMqtt;
-        m_mqtt->setMessageHandler([inbox](const QString& t, const QByteArray& p, qint64) { inbox->add(t, p); });
+        // flood/... is counted, not kept: the flood tests send hundreds of MiB
+        m_mqtt->setMessageHandler([this](const QString& t, const QByteArray& p, qint64) {
+            t.startsWith(u"flood/"_s) ? void(++m_floodArrived) : m_fromMqtt.add(t, p);
+        });
         m_mqtt->addSubscription(u"#"_s, 1);
         QString error;
         QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
@@ -306,6 +318,103 @@ private slots:
         stop(b);
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/chatter"_s, {}, 1, true); // no retained leftovers
         m_mqtt->publish(u"mqtt_client/ros_msg_type/in/pose"_s, {}, 1, true);
+    }
+
+    // What a peer sends must not grow the bridge without bound: 1 MiB messages from the broker,
+    // 3 s of them, while the DDS side does not keep up. A stopped subscriber (SIGSTOP: a reliable
+    // reader that acknowledges nothing) does not hold the writer up: keep last queue_size, Cyclone
+    // replaces the oldest unacknowledged sample (the bridge grew by 9 MiB, its child by 15). So the
+    // bridge's DDS process itself is stopped for 3 s (under the parent's 10 s of silence): the
+    // bridge holds at most half of --max-queued-mib towards ROS (a quarter waiting for its event
+    // loop, a quarter in the pipe), drops the rest, counts and logs them; the child, once it runs
+    // again, what it reads a frame at a time and what the writer's history keeps. Checked as the
+    // ROS 1 bridge's flood tests check: growth under the whole bound and 32 MiB of slack (it grew by
+    // 15-16 MiB; 509 MiB without the bound).
+    void aFloodTowardsAStalledDdsSideHoldsTheMemoryBound()
+    {
+        const QByteArray config = "bridge:\n  mqtt2ros:\n    - mqtt_topic: flood/in\n      ros_topic: /flood_in\n"
+                                  "      ros_type: sensor_msgs/msg/PointCloud2\n"
+                                  "      advanced: {ros: {queue_size: 10}}\n";
+        auto b = bridge(config, {u"--name"_s, u"flood_bridge"_s}, true);
+        Ros2Peer listener(m_domain, {u"--node"_s, u"/slow"_s, u"--sub"_s,
+                                     u"/flood_in:sensor_msgs/msg/PointCloud2:reliable,depth=10"_s,
+                                     u"--lease-ms"_s, u"60000"_s});
+        QVERIFY2(listener.waitFor(u"ready"_s), qPrintable(listener.errors()));
+        QVERIFY2(listener.waitFor(u"matched /flood_in 1"_s), qPrintable(listener.lines().join(u'\n')));
+        const QByteArray big = cloud(1700000000, 65536, 1.0f); // 1 MiB of points
+        MqttLink::Options options; // the test's own client holds little: a bound of its own
+        options.maxQueuedBytes = 16 * 1024 * 1024;
+        MqttLink flooder(MqttProfile::fromUrl(m_servers.brokerUrl()), options);
+        QString error;
+        QVERIFY2(flooder.connect(5000, &error), qPrintable(error));
+        for (int i = 0; i < 150 && !listener.lines().join(u'\n').contains(u"recv /flood_in"_s); ++i) {
+            flooder.send(u"flood/in"_s, big, 0, false);
+            QTest::qWait(100);
+        }
+        QVERIFY2(listener.waitFor(u"recv /flood_in"_s), qPrintable(listener.lines().join(u'\n')));
+        const qint64 child = DdsChild::of(b->processId());
+        QVERIFY(child > 0);
+        QVERIFY(PeakRss::reset(b->processId()));
+        QVERIFY(PeakRss::reset(child));
+        const qint64 bridgeBase = PeakRss::of(b->processId());
+        const qint64 childBase = PeakRss::of(child);
+        ::kill(pid_t(listener.pid()), SIGSTOP);
+        ::kill(pid_t(child), SIGSTOP);
+        QElapsedTimer clock;
+        clock.start();
+        int sent = 0;
+        while (clock.elapsed() < 3000) {
+            flooder.send(u"flood/in"_s, big, 0, false);
+            ++sent;
+            QTest::qWait(5);
+        }
+        QTest::qWait(500); // what the broker still had on its way
+        ::kill(pid_t(child), SIGCONT);
+        ::kill(pid_t(listener.pid()), SIGCONT);
+        QTest::qWait(1000); // the child reads what waited in the pipe
+        const qint64 bridgeGrew = PeakRss::of(b->processId()) - bridgeBase;
+        const qint64 childGrew = PeakRss::of(child) - childBase;
+        qInfo("%d messages of 1 MiB; the bridge grew by %.1f MiB, its DDS child by %.1f MiB", sent,
+              double(bridgeGrew) / (1 << 20), double(childGrew) / (1 << 20));
+        QCOMPARE(DdsChild::of(b->processId()), child); // not restarted for it
+        const auto [toMqtt, toRos] = BridgeLog::droppedOf(*b);
+        constexpr qint64 kSlack = 32LL << 20; // a message on its way in each library, allocation slack
+        QVERIFY2(bridgeGrew < ReferenceBridge::kDefaultMaxQueuedBytes + kSlack + PeakRss::kSanitizerSlack,
+                 qPrintable(u"the bridge grew by %1 MiB"_s.arg(bridgeGrew >> 20)));
+        QVERIFY2(childGrew < 10 * big.size() + kSlack + PeakRss::kSanitizerSlack,
+                 qPrintable(u"its DDS child grew by %1 MiB"_s.arg(childGrew >> 20)));
+        QVERIFY(toRos > 0);
+        QCOMPARE(toMqtt, qint64(0));
+    }
+
+    // The other way: 1 MiB clouds from a ROS 2 node as fast as it sends them while the broker does
+    // not read (SIGSTOP) for 3 s. What Paho holds and what waits for it stay within half of
+    // --max-queued-mib, the oldest waiting dropped, counted and logged, as in the ROS 1 bridge
+    // (it grew by 29-47 MiB; 1324 MiB with MqttLink's bound lifted).
+    void aFloodTowardsAStalledBrokerHoldsTheMemoryBound()
+    {
+        auto b = bridge("bridge:\n  ros2mqtt:\n    - {ros_topic: /flood_out, mqtt_topic: flood/out}\n",
+                        {u"--name"_s, u"flood_out_bridge"_s}, true);
+        Ros2Peer talker(m_domain, {u"--node"_s, u"/fast"_s, u"--pub"_s,
+                                   u"/flood_out:sensor_msgs/msg/PointCloud2:1000"_s, u"--size"_s, u"1048576"_s,
+                                   u"--duration"_s, u"40"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        m_floodArrived = 0;
+        QTRY_VERIFY_WITH_TIMEOUT(m_floodArrived > 0, 15000);
+        QVERIFY(PeakRss::reset(b->processId()));
+        const qint64 bridgeBase = PeakRss::of(b->processId());
+        ::kill(pid_t(m_servers.mosquittoPid()), SIGSTOP);
+        QTest::qWait(3000);
+        const qint64 bridgeGrew = PeakRss::of(b->processId()) - bridgeBase;
+        ::kill(pid_t(m_servers.mosquittoPid()), SIGCONT);
+        qInfo("the bridge grew by %.1f MiB", double(bridgeGrew) / (1 << 20));
+        talker.terminate();
+        const auto [toMqtt, toRos] = BridgeLog::droppedOf(*b);
+        constexpr qint64 kSlack = 32LL << 20; // a message on its way in each library, allocation slack
+        QVERIFY2(bridgeGrew < ReferenceBridge::kDefaultMaxQueuedBytes + kSlack + PeakRss::kSanitizerSlack,
+                 qPrintable(u"the bridge grew by %1 MiB"_s.arg(bridgeGrew >> 20)));
+        QVERIFY(toMqtt > 0);
+        QCOMPARE(toRos, qint64(0));
     }
 
     void ros1LayoutRunsOnRos2AndRos1AnnouncementsAreIgnored()

@@ -5,12 +5,16 @@
 // as soon as it arrives; our node is in ros_discovery_info with its endpoints, and in our own graph;
 // reliability matches as DDS says (a reliable reader never matches a best-effort writer).
 #include "base/wallclock.h"
+#include "ddschild.h"
+#include "peakrss.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 
+#include <chrono>
 #include <QSignalSpy>
 #include <QtEndian>
 #include <QTest>
+#include <thread>
 
 using namespace Qt::StringLiterals;
 
@@ -175,6 +179,56 @@ private slots:
             QCOMPARE(r.at(0).toString(), u"/lossy2"_s);
         QVERIFY(!peer.lines().contains(u"matched /strict 1"_s));
         QVERIFY(!peer.lines().contains(u"matched /lossy 1"_s));
+    }
+
+    // A node that publishes faster than we take them: 1 MiB samples as fast as the peer sends them
+    // (faster than the pipe carries them in a Debug build), and our event loop blocked for 4 s. The
+    // child queues within Ros2Endpoints::kMaxQueuedBytes (128 MiB), one batch on its way through
+    // the pipe besides (the taken samples counted until written: before, a whole queue waited in
+    // the pipe's write while a second one filled), and drops the rest, counted by
+    // droppedReceived(); this process holds a frame at a time. The child's growth is counted from
+    // its resident set on the domain before any sample.
+    void aFloodWhileWeDoNotReadStaysWithinTheBounds()
+    {
+        Ros2Participant p;
+        quint64 samples = 0;
+        connect(&p, &Ros2Participant::received, this, [&samples](const QString&, const Ros2Sample&) { ++samples; });
+        Ros2Qos q;
+        q.depth = 100;
+        p.subscribe(u"/flood"_s, u"sensor_msgs/msg/PointCloud2"_s, q);
+        QSignalSpy joined(&p, &Ros2Participant::joined);
+        QString error;
+        QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
+        QVERIFY(joined.wait(10000));
+        const qint64 child = DdsChild::of();
+        QVERIFY(child > 0);
+        QTest::qWait(500);
+        const qint64 childIdle = PeakRss::of(child); // on the domain, nothing received yet
+        Ros2Peer talker(m_domain, {u"--node"_s, u"/flooder"_s, u"--pub"_s,
+                                   u"/flood:sensor_msgs/msg/PointCloud2:1000:reliable,depth=100"_s,
+                                   u"--size"_s, u"1048576"_s, u"--duration"_s, u"30"_s});
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(samples > 0, 15000);
+        QVERIFY(PeakRss::reset());
+        const qint64 ownBase = PeakRss::of();
+        std::this_thread::sleep_for(std::chrono::seconds(4)); // no event loop: the pipe stays full
+        QTRY_VERIFY_WITH_TIMEOUT(p.droppedReceived() > 0, 5000);
+        QTest::qWait(1000); // what waited comes
+        const qint64 childGrew = PeakRss::of(child) - childIdle;
+        const qint64 ownGrew = PeakRss::of() - ownBase;
+        qInfo("%llu samples, %llu dropped; the child grew by %.1f MiB from %.1f MiB, this process by %.1f MiB",
+              samples, p.droppedReceived(), double(childGrew) / (1 << 20), double(childIdle) / (1 << 20),
+              double(ownGrew) / (1 << 20));
+        QCOMPARE(DdsChild::of(), child); // not restarted for it
+        constexpr qint64 kSlack = 32LL << 20; // allocation slack
+        constexpr qint64 kChildQueue = 128LL << 20; // Ros2Endpoints::kMaxQueuedBytes (core/dds)
+        // The queue, a batch on its way and its frame, Cyclone's samples being reassembled and
+        // delivered, allocation slack: it grew by 139 MiB; by 243-338 MiB before.
+        QVERIFY2(childGrew < kChildQueue + 2 * Ros2Protocol::kBatchBytes + kSlack + (16LL << 20)
+                     + PeakRss::kSanitizerSlack,
+                 qPrintable(u"the child grew by %1 MiB"_s.arg(childGrew >> 20)));
+        QVERIFY2(ownGrew < 2 * Ros2Protocol::kBatchBytes + kSlack + PeakRss::kSanitizerSlack,
+                 qPrintable(u"this process grew by %1 MiB"_s.arg(ownGrew >> 20)));
     }
 };
 

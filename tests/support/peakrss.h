@@ -37,10 +37,11 @@ inline qint64 of(qint64 pid = 0)
     return -1;
 }
 
-/// Starts the peak of this process over from its present resident set (Linux: 5 to clear_refs).
-inline bool reset()
+/// Starts the peak of process `pid` (0: this one; another of this user's) over from its present
+/// resident set (Linux: 5 to clear_refs).
+inline bool reset(qint64 pid = 0)
 {
-    QFile f(QStringLiteral("/proc/self/clear_refs"));
+    QFile f(pid > 0 ? QStringLiteral("/proc/%1/clear_refs").arg(pid) : QStringLiteral("/proc/self/clear_refs"));
     return f.open(QIODevice::WriteOnly) && f.write("5") == 1;
 }
 } // namespace PeakRss
