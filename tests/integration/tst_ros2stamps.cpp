@@ -10,6 +10,7 @@
 #include "latency/latencyengine.h"
 #include "mqtt/mqttconnection.h"
 #include "pythonref.h"
+#include "ros/rosstampsource.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "ros2stampchain.h"
@@ -106,6 +107,11 @@ private slots:
         QTest::qWait(200); // nothing more comes
         QCOMPARE(e.samples(), qint64(kSamples));
         QCOMPARE(measure.malformedStamps(), quint64(0));
+        // ROS 1 was asked for the pipeline's topics too (they may come from either graph), unless
+        // it is turned off, as `record --ros 2` does.
+        QCOMPARE(measure.rosSource()->stampTopics().size(), kTopics.size());
+        measure.setRos1(false);
+        QVERIFY(measure.rosSource()->stampTopics().isEmpty());
 
         QTemporaryDir dir;
         int rows = 0;
