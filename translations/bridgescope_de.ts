@@ -6981,10 +6981,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>a %1, not a std_msgs/Float64</source>
         <translation>ein %1, kein std_msgs/Float64</translation>
     </message>
-    <message>
-        <source>a latency that is no finite number of seconds</source>
-        <translation>eine Latenz, die keine endliche Zahl von Sekunden ist</translation>
-    </message>
 </context>
 <context>
     <name>RosTopicModel</name>
@@ -7435,6 +7431,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>no ROS type was announced for it</source>
         <translation>dafür wurde kein ROS-Typ angekündigt</translation>
+    </message>
+    <message>
+        <source>a latency that is no finite number of seconds</source>
+        <translation>eine Latenz, die keine endliche Zahl von Sekunden ist</translation>
     </message>
 </context>
 <context>

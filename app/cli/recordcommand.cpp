@@ -169,6 +169,7 @@ int runRecord(const RecordRequest& request)
         err(Record::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
     });
     MeasureSession measure(&live);
+    measure.setRos1(request.ros1);
     measure.setPipeline(request.pipeline);
     if (!measure.startRecording(request.runPath, request.info, &why)) {
         err(why);

@@ -207,6 +207,24 @@ void RosMonitor::unwatchMessages(const QString& topic)
     d->watched.remove(topic);
 }
 
+void RosMonitor::watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+{
+    watchMessages(topic, maxMessages, maxBytes);
+}
+
+void RosMonitor::unwatch(const QString& topic)
+{
+    unwatchMessages(topic);
+}
+
+std::vector<SourceArrival> RosMonitor::takeWatched(const QString& topic)
+{
+    std::vector<SourceArrival> out;
+    for (RosMessageSample& m : takeMessages(topic))
+        out.push_back({SourceGraph::Ros1, topic, {}, m.receivedNs, std::move(m.bytes)});
+    return out;
+}
+
 std::vector<RosMessageSample> RosMonitor::takeMessages(const QString& topic)
 {
     std::lock_guard<std::mutex> lock(d->mutex);

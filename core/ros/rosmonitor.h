@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/topicfigures.h"
+#include "latency/messagesource.h"
 
 #include <memory>
 #include <QByteArray>
@@ -40,7 +41,7 @@ struct RosMessageSample
 /// The process gets one roscpp node, started on first use, registered with the master given
 /// here; subscribing happens on a worker thread (the master may be slow or gone), callbacks on a
 /// roscpp spinner thread that only updates the figures under a lock. The GUI takes snapshots.
-class RosMonitor : public QObject
+class RosMonitor : public QObject, public MessageSource
 {
     Q_OBJECT
 public:
@@ -52,9 +53,10 @@ public:
     /// Subscribes to a topic. Calls are counted: the subscription ends with the unmonitor() that
     /// balances the last monitor(), so that two users (the Discover page's Mon, the Links page)
     /// do not end each other's.
-    void monitor(const QString& topic);
-    void unmonitor(const QString& topic);
-    bool isMonitored(const QString& topic) const;
+    void monitor(const QString& topic) override;
+    void unmonitor(const QString& topic) override;
+    bool isMonitored(const QString& topic) const override;
+    SourceGraph sourceGraph() const override { return SourceGraph::Ros1; }
     /// Registers every monitored topic again (after the master restarted).
     void resubscribeAll();
     /// Current figures of every monitored topic (rates computed for `nowNs`).
@@ -73,6 +75,11 @@ public:
     std::vector<RosMessageSample> takeMessages(const QString& topic);
     /// Messages of a watched topic dropped because too many came between two takes.
     quint64 droppedMessages(const QString& topic) const;
+    /// watchMessages(), unwatchMessages() and takeMessages() as a MessageSource (arrivals without
+    /// their type: the monitor's figures have it).
+    void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
+    void unwatch(const QString& topic) override;
+    std::vector<SourceArrival> takeWatched(const QString& topic) override;
 
 signals:
     void monitorFailed(const QString& topic, const QString& why);

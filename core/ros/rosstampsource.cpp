@@ -40,44 +40,29 @@ struct RosStampSource::Private
         lastError = topic + QStringLiteral(": ") + why;
     }
 
-    // roscpp spinner thread.
-    void onStamp(const QString& topic, const topic_tools::ShapeShifter& msg)
+    // roscpp spinner thread: a stamp (`latency` false) or a latency, checked by its md5.
+    void onMessage(const QString& topic, const topic_tools::ShapeShifter& msg, bool latency)
     {
         const qint64 now = wallClockNs();
         received.fetch_add(1, std::memory_order_relaxed);
-        if (msg.getMD5Sum() != StampCodec::md5()) {
+        if (msg.getMD5Sum() != (latency ? float64Md5() : StampCodec::md5())) {
             wrongType.fetch_add(1, std::memory_order_relaxed);
-            fail(topic, QCoreApplication::translate("RosStampSource", "a %1, not a benchmarking_suite/TimeStamped")
+            fail(topic, (latency ? QCoreApplication::translate("RosStampSource", "a %1, not a std_msgs/Float64")
+                                 : QCoreApplication::translate("RosStampSource",
+                                                               "a %1, not a benchmarking_suite/TimeStamped"))
                             .arg(QString::fromStdString(msg.getDataType())));
             return;
         }
-        QString why;
-        const std::optional<StampCodec::Decoded> d = SourceMessage::decodeStamp(SourceGraph::Ros1, RosBytes::of(msg), &why);
-        if (!d) {
+        StampReading r = SourceMessage::readStamp(
+            {SourceGraph::Ros1, topic, QString::fromStdString(msg.getDataType()), now, RosBytes::of(msg)}, latency);
+        if (r.stamp)
+            stamps.push(std::move(*r.stamp));
+        else if (r.latency)
+            latencies.push(std::move(*r.latency));
+        else {
             malformed.fetch_add(1, std::memory_order_relaxed);
-            fail(topic, why);
-            return;
+            fail(topic, r.error);
         }
-        stamps.push(StampEvent {topic, d->sampleNs, d->timeNs, now});
-    }
-
-    void onLatency(const QString& topic, const topic_tools::ShapeShifter& msg)
-    {
-        const qint64 now = wallClockNs();
-        received.fetch_add(1, std::memory_order_relaxed);
-        if (msg.getMD5Sum() != float64Md5()) {
-            wrongType.fetch_add(1, std::memory_order_relaxed);
-            fail(topic, QCoreApplication::translate("RosStampSource", "a %1, not a std_msgs/Float64")
-                            .arg(QString::fromStdString(msg.getDataType())));
-            return;
-        }
-        const std::optional<qint64> ns = SourceMessage::decodeLatency(SourceGraph::Ros1, RosBytes::of(msg));
-        if (!ns) {
-            malformed.fetch_add(1, std::memory_order_relaxed);
-            fail(topic, QCoreApplication::translate("RosStampSource", "a latency that is no finite number of seconds"));
-            return;
-        }
-        latencies.push(LatencyValue {topic, *ns, now});
     }
 
     // The node's worker thread: makes the subscriptions match what is wanted.
@@ -104,12 +89,8 @@ struct RosStampSource::Private
                 return;
             boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> cb
                 = [self, topic, stamp](const topic_tools::ShapeShifter::ConstPtr& msg) {
-                      if (auto p = self.lock()) {
-                          if (stamp)
-                              p->onStamp(topic, *msg);
-                          else
-                              p->onLatency(topic, *msg);
-                      }
+                      if (auto p = self.lock())
+                          p->onMessage(topic, *msg, !stamp);
                   };
             try {
                 // A deep queue: stamps come in bursts of one per component and must not be lost.

@@ -480,6 +480,26 @@ const Ros2Participant::Reader* Ros2Participant::reader(const QString& topic, con
     return r != it->readers.cend() && r->queue ? &*r : nullptr;
 }
 
+void Ros2Participant::watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+{
+    watchMessages(topic, maxMessages, maxBytes);
+}
+
+void Ros2Participant::unwatch(const QString& topic)
+{
+    unwatchMessages(topic);
+}
+
+std::vector<SourceArrival> Ros2Participant::takeWatched(const QString& topic)
+{
+    const Ros2Topic* t = m_graph.topic(topic);
+    const QString type = t ? t->type() : QString();
+    std::vector<SourceArrival> out;
+    for (Ros2Sample& s : takeMessages(topic))
+        out.push_back({SourceGraph::Ros2, topic, type, s.receivedNs, std::move(s.bytes)});
+    return out;
+}
+
 std::vector<Ros2Sample> Ros2Participant::takeMessages(const QString& topic, const void* owner)
 {
     const Reader* r = reader(topic, owner);

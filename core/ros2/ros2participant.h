@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/newestqueue.h"
+#include "latency/messagesource.h"
 #include "ros2/ros2graph.h"
 #include "ros2/ros2protocol.h"
 #include "ros2/ros2types.h"
@@ -33,7 +34,7 @@ template<typename T> class EventBuffer;
 /// The graph is rebuilt in the child when discovery pauses, or once a graph interval (250 ms
 /// unless setGraphInterval()) while it goes on; graphChanged() fires when it changed. Monitored
 /// topics' figures come every kStatsMs; watched samples and arrivals every poll of the child.
-class Ros2Participant : public QObject
+class Ros2Participant : public QObject, public MessageSource
 {
     Q_OBJECT
 public:
@@ -67,10 +68,11 @@ public:
     /// the subscription ends with the unmonitor() that balances the last monitor(), so that two
     /// users (Discover's Mon, the Links page) do not end each other's; it is made again after
     /// stop() and start() (and after a restart of the child) once the graph has the topic.
-    void monitor(const QString& topic);
+    void monitor(const QString& topic) override;
     /// Ends monitor(); the subscription stays while the topic is watched (watchMessages()).
-    void unmonitor(const QString& topic);
-    bool isMonitored(const QString& topic) const;
+    void unmonitor(const QString& topic) override;
+    bool isMonitored(const QString& topic) const override;
+    SourceGraph sourceGraph() const override { return SourceGraph::Ros2; }
     /// Figures of the monitored topics (not of those only watched), as the child last sent them.
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
     /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
@@ -88,6 +90,11 @@ public:
     /// Samples of a watched topic dropped because too many came between two takes (counted from
     /// watchMessages(), and anew after start()).
     quint64 droppedMessages(const QString& topic, const void* owner = nullptr) const;
+    /// The MessageSource calls: watchMessages() and the rest for the default owner, arrivals with
+    /// the type the graph names.
+    void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
+    void unwatch(const QString& topic) override;
+    std::vector<SourceArrival> takeWatched(const QString& topic) override;
     /// From now on (also across stop() and start()) every sample of a monitored topic is also kept,
     /// up to `maxArrivals` between two takeArrivals() (more are dropped and counted); 0 stops it.
     void keepArrivals(std::size_t maxArrivals);

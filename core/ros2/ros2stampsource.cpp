@@ -4,8 +4,6 @@
 #include "ros2/ros2participant.h"
 #include "wire/sourcemessage.h"
 
-#include <QCoreApplication>
-
 using namespace Qt::StringLiterals;
 
 Ros2StampSource::Ros2StampSource(Ros2Participant* participant, QObject* parent)
@@ -63,26 +61,25 @@ void Ros2StampSource::takeStamps(std::vector<StampEvent>& stamps, std::vector<La
 {
     if (!m_participant)
         return;
-    for (auto it = m_stamps.cbegin(); it != m_stamps.cend(); ++it) {
-        for (const Ros2Sample& s : m_participant->takeMessages(it.key(), this)) {
+    // Stamps carry the name the pipeline knows them by; latencies their topic's.
+    const auto read = [&](const QString& topic, const QString& name, bool latency) {
+        const QString type = SourceMessage::stampType(SourceGraph::Ros2);
+        for (Ros2Sample& s : m_participant->takeMessages(topic, this)) {
             ++m_received;
-            QString why;
-            const std::optional<StampCodec::Decoded> d = SourceMessage::decodeStamp(SourceGraph::Ros2, s.bytes, &why);
-            if (d)
-                stamps.push_back(StampEvent {it.value(), d->sampleNs, d->timeNs, s.receivedNs});
+            const StampReading r
+                = SourceMessage::readStamp({SourceGraph::Ros2, name, type, s.receivedNs, std::move(s.bytes)}, latency);
+            if (r.stamp)
+                stamps.push_back(*r.stamp);
+            else if (r.latency)
+                latencies.push_back(*r.latency);
             else
-                fail(it.key(), why);
+                fail(topic, r.error);
         }
-    }
-    for (const QString& topic : std::as_const(m_latencies)) {
-        for (const Ros2Sample& s : m_participant->takeMessages(topic, this)) {
-            ++m_received;
-            if (const std::optional<qint64> ns = SourceMessage::decodeLatency(SourceGraph::Ros2, s.bytes))
-                latencies.push_back(LatencyValue {topic, *ns, s.receivedNs});
-            else
-                fail(topic, QCoreApplication::translate("RosStampSource", "a latency that is no finite number of seconds"));
-        }
-    }
+    };
+    for (auto it = m_stamps.cbegin(); it != m_stamps.cend(); ++it)
+        read(it.key(), it.value(), false);
+    for (const QString& topic : std::as_const(m_latencies))
+        read(topic, topic, true);
 }
 
 quint64 Ros2StampSource::dropped() const

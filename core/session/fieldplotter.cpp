@@ -100,9 +100,9 @@ FieldPlotter::~FieldPlotter()
         return; // the session went first, and its listeners with it
     m_session->removeMqttListener(m_listener);
     for (const QString& topic : std::as_const(d->rosTopics))
-        m_session->rosMonitor()->unwatchMessages(topic);
+        m_session->rosMonitor()->unwatch(topic);
     for (const QString& topic : std::as_const(d->ros2Topics))
-        m_session->ros2()->unwatchMessages(topic);
+        m_session->ros2()->unwatch(topic);
 }
 
 int FieldPlotter::indexOf(const PlotField& field) const
@@ -162,26 +162,19 @@ void FieldPlotter::watchRos(PlotField::Source source, const QString& topic, bool
     // Enough for a few ticks at any rate; the tick decodes at most kMessagesPerTick of them.
     constexpr std::size_t kQueued = 1000;
     constexpr qint64 kQueuedBytes = 4 * kBytesPerTick;
-    if (source == PlotField::Source::Ros2) {
-        Ros2Participant* ros2 = m_session->ros2();
-        if (on && !d->ros2Topics.contains(topic)) {
-            ros2->watchMessages(topic, kQueued, kQueuedBytes); // subscribes it, monitored or not
-            d->ros2Topics.insert(topic);
-        } else if (!on) {
-            ros2->unwatchMessages(topic);
-            d->ros2Topics.remove(topic);
-            d->ros2Types.remove(topic);
-        }
-        return;
-    }
-    RosMonitor* monitor = m_session->rosMonitor();
-    if (on && !d->rosTopics.contains(topic)) {
-        monitor->watchMessages(topic, kQueued, kQueuedBytes);
-        d->rosTopics.insert(topic);
+    const bool ros2 = source == PlotField::Source::Ros2;
+    MessageSource* from = ros2 ? static_cast<MessageSource*>(m_session->ros2()) : m_session->rosMonitor();
+    QSet<QString>& watched = ros2 ? d->ros2Topics : d->rosTopics;
+    if (on && !watched.contains(topic)) {
+        from->watch(topic, kQueued, kQueuedBytes); // subscribes it, monitored or not
+        watched.insert(topic);
     } else if (!on) {
-        monitor->unwatchMessages(topic);
-        d->rosTopics.remove(topic);
-        d->rosTypes.remove(topic);
+        from->unwatch(topic);
+        watched.remove(topic);
+        if (ros2)
+            d->ros2Types.remove(topic);
+        else
+            d->rosTypes.remove(topic);
     }
 }
 
@@ -194,10 +187,10 @@ void FieldPlotter::onDrained(qint64 nowNs)
     pending.swap(d->pendingMqtt);
     QHash<QString, std::vector<Received>> rosPending;
     for (const QString& topic : std::as_const(d->rosTopics))
-        rosPending[topic] = received(m_session->rosMonitor()->takeMessages(topic));
+        rosPending[topic] = received(m_session->rosMonitor()->takeWatched(topic));
     QHash<QString, std::vector<Received>> ros2Pending;
     for (const QString& topic : std::as_const(d->ros2Topics))
-        ros2Pending[topic] = received(m_session->ros2()->takeMessages(topic));
+        ros2Pending[topic] = received(m_session->ros2()->takeWatched(topic));
 
     const auto plotTopic
         = [&](PlotField::Source source, const QString& topic, std::vector<Received>& messages) {

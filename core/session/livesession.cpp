@@ -27,24 +27,23 @@ LiveSession::LiveSession(QObject* parent)
     m_tree->setRos2Registry(m_ros2Types); // mqtt_client's ROS 2 payloads decode as ROS 2 samples do
     connect(m_ros2, &Ros2Participant::graphChanged, m_ros2Topics,
             [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(toRosGraph(graph)); });
-    connect(m_ros2Topics, &RosTopicModel::monitorRequested, this, [this](const QString& topic, bool on) {
-        if (on)
-            m_ros2->monitor(topic);
-        else
-            m_ros2->unmonitor(topic);
-    });
+    // Mon in a topic table subscribes through its graph's source, counted.
+    const auto monitorFrom = [this](RosTopicModel* model, MessageSource* source) {
+        connect(model, &RosTopicModel::monitorRequested, this, [source](const QString& topic, bool on) {
+            if (on)
+                source->monitor(topic);
+            else
+                source->unmonitor(topic);
+        });
+    };
+    monitorFrom(m_ros2Topics, m_ros2);
+    monitorFrom(m_rosTopics, m_monitor);
     connect(m_ros2, &Ros2Participant::monitorFailed, this, [this](const QString& topic, const QString& why) {
         qCWarning(lcSession).noquote() << "ROS 2 topic" << topic << "not monitored:" << why;
         m_ros2Topics->setMonitored(topic, false);
     });
     connect(m_poller, &RosGraphPoller::graphChanged, m_rosTopics, &RosTopicModel::setGraph);
     connect(m_poller, &RosGraphPoller::masterRestarted, m_monitor, &RosMonitor::resubscribeAll);
-    connect(m_rosTopics, &RosTopicModel::monitorRequested, this, [this](const QString& topic, bool on) {
-        if (on)
-            m_monitor->monitor(topic);
-        else
-            m_monitor->unmonitor(topic);
-    });
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(33);
     connect(&m_timer, &QTimer::timeout, this, &LiveSession::drainNow);

@@ -88,6 +88,12 @@ QString MeasureSession::ros2StampName(const QString& topic, const QSet<QString>&
     return ros1Stamps.contains(topic) || pipeline.indexOf(prefixed) >= 0 ? prefixed : topic;
 }
 
+void MeasureSession::setRos1(bool on)
+{
+    m_ros1On = on;
+    updateSubscriptions();
+}
+
 void MeasureSession::updateSubscriptions()
 {
     QSet<QString> stamps = m_graphStampTopics;
@@ -96,7 +102,10 @@ void MeasureSession::updateSubscriptions()
     for (const QString& t : m_engine.pipeline().topics())
         if (!t.startsWith(ros2Prefix()))
             stamps.insert(t.startsWith(u'/') ? t : u'/' + t);
-    m_ros->setTopics(stamps, m_graphLatencyTopics);
+    if (m_ros1On)
+        m_ros->setTopics(stamps, m_graphLatencyTopics);
+    else
+        m_ros->setTopics({}, {});
     QHash<QString, QString> ros2;
     for (const QString& t : std::as_const(m_ros2StampTopics))
         ros2.insert(t, ros2StampName(t, m_graphStampTopics, m_engine.pipeline()));

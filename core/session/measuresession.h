@@ -45,6 +45,11 @@ public:
     /// Where the stamps come from (its broker and ROS master).
     const LiveSession* live() const { return m_live; }
 
+    /// Whether stamps are taken from the ROS 1 master (default true); `record --ros 2` turns it off,
+    /// so that a ROS 1 topic of the same name on $ROS_MASTER_URI adds nothing.
+    void setRos1(bool on);
+    bool isRos1() const { return m_ros1On; }
+
     /// The user's pipeline: from now on nothing is proposed automatically.
     void setPipeline(const Pipeline& pipeline);
     const Pipeline& pipeline() const { return m_engine.pipeline(); }
@@ -142,6 +147,7 @@ private:
     bool m_liveAutomatic = true;
     qint64 m_liveTimeoutNs = SampleJoiner::kDefaultTimeoutNs;
     bool m_automatic = true;
+    bool m_ros1On = true;
     bool m_paused = false;
     bool m_firstSampleSaid = false;
     int m_proposedTopics = 0;

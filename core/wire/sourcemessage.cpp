@@ -33,6 +33,20 @@ std::optional<qint64> SourceMessage::decodeLatency(SourceGraph graph, const QByt
                                       : StampCodec::decodeFloat64Seconds(bytes);
 }
 
+StampReading SourceMessage::readStamp(const SourceArrival& a, bool latency)
+{
+    StampReading r;
+    if (latency) {
+        if (const std::optional<qint64> ns = decodeLatency(a.graph, a.bytes))
+            r.latency = LatencyValue {a.topic, *ns, a.receivedNs};
+        else
+            r.error = tr("a latency that is no finite number of seconds");
+    } else if (const auto d = decodeStamp(a.graph, a.bytes, &r.error)) {
+        r.stamp = StampEvent {a.topic, d->sampleNs, d->timeNs, a.receivedNs};
+    }
+    return r;
+}
+
 QString SourceMessage::stampType(SourceGraph graph)
 {
     return QLatin1StringView(graph == SourceGraph::Ros2 ? StampCodec::ros2TypeName() : StampCodec::typeName());

@@ -15,6 +15,25 @@
 /// when a type was announced for it, else whatever the device sent).
 enum class SourceGraph { Ros1, Ros2, Mqtt };
 
+/// One message as a source hands it over: which graph and topic, its ROS type (empty on MQTT
+/// without an announcement), when Bridgescope got it (wall clock) and its bytes.
+struct SourceArrival
+{
+    SourceGraph graph = SourceGraph::Mqtt;
+    QString topic;
+    QString type;
+    qint64 receivedNs = 0;
+    QByteArray bytes;
+};
+
+/// What one arrival on a stamp topic or a latency topic gives: a stamp, a latency, or why neither.
+struct StampReading
+{
+    std::optional<StampEvent> stamp;
+    std::optional<LatencyValue> latency;
+    QString error; ///< set when neither
+};
+
 /// How the messages of one topic decode: its graph and ROS type, and on MQTT the type mqtt_client
 /// announced (its dialect and whether payloads carry a stamp).
 struct SourceType
@@ -45,6 +64,10 @@ public:
                                                           QString* error = nullptr);
     /// A std_msgs Float64 latency in seconds, as ns, of the graph's form.
     static std::optional<qint64> decodeLatency(SourceGraph graph, const QByteArray& bytes);
+    /// An arrival of a stamp topic (`latency` false: a TimeStamped named by its topic) or of a
+    /// latency topic (a Float64, a series named by its topic), decoded as its graph serializes.
+    /// The caller has checked the type.
+    static StampReading readStamp(const SourceArrival& arrival, bool latency);
     /// The stamp type's name in the graph ("benchmarking_suite/TimeStamped" on ROS 1,
     /// "benchmarking_suite/msg/TimeStamped" on ROS 2).
     static QString stampType(SourceGraph graph);

@@ -4,17 +4,23 @@
 // on every topic and `time` = header.stamp + a per-topic delay + a jitter. The Measure page's engine
 // (MeasureSession on a LiveSession's ROS 2 participant) and `bridgescope record --ros 2` give the
 // same figures as numpy (tests/scripts/latency_reference.py) computes from the stamps the node
-// printed. A node that sends malformed stamps (a frame_id of 4 GiB) is counted per topic.
+// printed. A node that sends malformed stamps (a frame_id of 4 GiB) is counted per topic; a
+// pipeline mixes ROS 2 stamps with JSON stamps on MQTT; ~/latencies are rows; a field plot of a
+// stamp topic takes nothing from the measurement.
 #include "latency/latencyengine.h"
+#include "mqtt/mqttconnection.h"
 #include "pythonref.h"
+#include "ros/rosstampsource.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "ros2stampchain.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "testservers.h"
 #include "wire/stampcodec.h"
 
 #include <memory>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -101,6 +107,11 @@ private slots:
         QTest::qWait(200); // nothing more comes
         QCOMPARE(e.samples(), qint64(kSamples));
         QCOMPARE(measure.malformedStamps(), quint64(0));
+        // ROS 1 was asked for the pipeline's topics too (they may come from either graph), unless
+        // it is turned off, as `record --ros 2` does.
+        QCOMPARE(measure.rosSource()->stampTopics().size(), kTopics.size());
+        measure.setRos1(false);
+        QVERIFY(measure.rosSource()->stampTopics().isEmpty());
 
         QTemporaryDir dir;
         int rows = 0;
@@ -234,6 +245,59 @@ private slots:
         QCOMPARE(MeasureSession::ros2StampName(u"/b"_s, {}, *pipe), u"ros2:/b"_s);
         QCOMPARE(MeasureSession::ros2StampName(u"/c"_s, {}, *pipe), u"/c"_s);
         QVERIFY(pipe->indexOf(u"ros2:/b"_s) == 1 && pipe->indexOf(u"/b"_s) < 0);
+    }
+
+    // A pipeline that mixes graphs: two ROS 2 stamps from DDS and, between them, a JSON stamp that
+    // a device without ROS publishes on MQTT for the same sample (its id is the header.stamp as
+    // "sec.nsec"). Every sample joins, with exactly the three times that were sent.
+    void aPipelineMixesRos2AndMqttStamps()
+    {
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto(), qPrintable(servers.errorString()));
+        const auto live = ros2Live();
+        QVERIFY(live->isRos2Running());
+        live->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
+        MqttConnection device;
+        device.open(MqttProfile::fromUrl(servers.brokerUrl()));
+        QTRY_VERIFY_WITH_TIMEOUT(device.state() == MqttConnection::State::Connected
+                                     && live->mqtt()->state() == MqttConnection::State::Connected,
+                                 10000);
+        MeasureSession measure(live.get());
+        const QString edge = u"lab/edge/seen"_s;
+        measure.setPipeline(Pipeline({kTopics[0], edge, kTopics[1]}, 1000));
+        QHash<qint64, std::vector<qint64>> joined;
+        measure.setSampleListener([&](qint64 sampleNs, const std::vector<qint64>& times) { joined[sampleNs] = times; });
+
+        constexpr int kMixed = 50;
+        Ros2Peer chain(m_domain, chainArgs(kMixed));
+        QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
+        QHash<qint64, std::vector<qint64>> sent; // sample -> the three times
+        QElapsedTimer t;
+        t.start();
+        int seen = 0;
+        while (joined.size() < kMixed && t.elapsed() < 20000) {
+            const QStringList lines = chain.lines();
+            for (; seen < lines.size(); ++seen) {
+                const QStringList f = lines[seen].split(u' ');
+                if (f.size() != 5 || f[0] != u"stamp"_s)
+                    continue;
+                const qint64 sample = f[3].toLongLong();
+                std::vector<qint64>& times = sent[sample];
+                times.resize(3);
+                if (f[1] == kTopics[0]) {
+                    times[0] = f[4].toLongLong();
+                    times[1] = sample + 10'000'000; // the device saw it 10 ms after the sample
+                    QVERIFY(device.publish(edge, StampCodec::encodeJson(sample, times[1]), 1));
+                } else if (f[1] == kTopics[1]) {
+                    times[2] = f[4].toLongLong();
+                }
+            }
+            QTest::qWait(10);
+        }
+        QCOMPARE(joined.size(), kMixed);
+        for (auto it = joined.cbegin(); it != joined.cend(); ++it)
+            QVERIFY2(it.value() == sent.value(it.key()), qPrintable(StampCodec::timeText(it.key())));
+        QCOMPARE(measure.engine().counters().dropped(), quint64(0));
     }
 
     void malformedStampsAreCountedPerTopic()

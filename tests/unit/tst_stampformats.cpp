@@ -5,6 +5,7 @@
 #include "pythonref.h"
 #include "record/suitecsv.h"
 #include "syntheticrun.h"
+#include "wire/sourcemessage.h"
 #include "wire/stampcodec.h"
 
 #include <cstring>
@@ -148,6 +149,39 @@ private slots:
         QVERIFY(!StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("2b8716d9cef7933f")));
         QVERIFY(!StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("00010000" "2b8716d9")));
         QVERIFY(!StampCodec::decodeFloat64SecondsCdr(QByteArray::fromHex("00010000" "000000000000f07f"))); // inf
+    }
+
+    // One arrival type for every graph: its bytes read as the graph serializes them.
+    void arrivalsReadAsTheirGraphSerializes()
+    {
+        StampCodec::Decoded d;
+        d.sampleNs = 1'700'000'000'000'000'001LL;
+        d.timeNs = 1'700'000'000'020'000'001LL;
+        d.frameId = u"lidar"_s;
+        const StampReading ros1 = SourceMessage::readStamp(
+            {SourceGraph::Ros1, u"/a"_s, u"benchmarking_suite/TimeStamped"_s, 5, StampCodec::encodeTimeStamped(d)},
+            false);
+        QVERIFY(ros1.stamp && !ros1.latency);
+        QCOMPARE(ros1.stamp->topic, u"/a"_s);
+        QCOMPARE(ros1.stamp->sampleNs, d.sampleNs);
+        QCOMPARE(ros1.stamp->timeNs, d.timeNs);
+        QCOMPARE(ros1.stamp->receivedNs, 5);
+        const StampReading ros2 = SourceMessage::readStamp(
+            {SourceGraph::Ros2, u"ros2:/a"_s, {}, 6, StampCodec::encodeTimeStampedCdr(d)}, false);
+        QVERIFY(ros2.stamp);
+        QCOMPARE(ros2.stamp->topic, u"ros2:/a"_s);
+        QCOMPARE(ros2.stamp->timeNs, d.timeNs);
+        // A ROS 1 message on a ROS 2 topic does not read, and says why.
+        const StampReading wrong = SourceMessage::readStamp(
+            {SourceGraph::Ros2, u"/a"_s, {}, 6, StampCodec::encodeTimeStamped(d)}, false);
+        QVERIFY(!wrong.stamp && !wrong.latency && !wrong.error.isEmpty());
+        const StampReading latency = SourceMessage::readStamp(
+            {SourceGraph::Ros2, u"/l"_s, {}, 7, QByteArray::fromHex("00010000" "2b8716d9cef7933f")}, true);
+        QVERIFY(latency.latency && !latency.stamp);
+        QCOMPARE(latency.latency->series, u"/l"_s);
+        QCOMPARE(latency.latency->valueNs, 19'500'000);
+        const StampReading bad = SourceMessage::readStamp({SourceGraph::Ros1, u"/l"_s, {}, 7, "1234"}, true);
+        QVERIFY2(bad.error.contains(u"no finite number"_s), qPrintable(bad.error));
     }
 
     void jsonStamps_data()

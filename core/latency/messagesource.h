@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "wire/sourcemessage.h"
+
+#include <cstddef>
+#include <QString>
+#include <vector>
+
+/// The topics of a ROS graph as monitors, views and plots use them, whatever the graph: ROS 1
+/// through the master (RosMonitor), ROS 2 through DDS (Ros2Participant). Subscriptions are counted:
+/// the last unmonitor() that balances a monitor() ends one, so that two users (the Discover page's
+/// Mon, the Links page) do not end each other's. Whole messages come as SourceArrival, which
+/// SourceMessage decodes as their graph serializes.
+class MessageSource
+{
+public:
+    virtual ~MessageSource() = default;
+    virtual SourceGraph sourceGraph() const = 0;
+    virtual void monitor(const QString& topic) = 0;
+    virtual void unmonitor(const QString& topic) = 0;
+    virtual bool isMonitored(const QString& topic) const = 0;
+    /// Keeps the newest whole messages of a topic, at most `maxMessages` and `maxBytes` between two
+    /// takeWatched() (older ones are dropped and counted by the source).
+    virtual void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) = 0;
+    virtual void unwatch(const QString& topic) = 0;
+    /// The watched topic's messages since the last call, oldest first.
+    virtual std::vector<SourceArrival> takeWatched(const QString& topic) = 0;
+};
