@@ -145,8 +145,8 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
         err(Bridge::tr("--ros-master is for --ros 1; a ROS 2 bridge takes --ros-domain"));
         return ExitUsage;
     }
-    if (!ros.environmentError.isEmpty() && ros.ros2 && !ros.ros2OptionsSet)
-        err(ros.environmentError);
+    for (const QString& line : ros.notes())
+        err(line);
     request->ros2 = ros.ros2;
     request->ros2Options = ros.ros2Options;
     const QString path = parser.positionalArguments().first();

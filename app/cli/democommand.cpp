@@ -156,6 +156,7 @@ int runDemo(const DemoRequest& request, const QString& runPath)
     }
     live.connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
     MeasureSession measure(&live);
+    measure.setRos1(lab.ros() == 1); // a ROS 2 lab has no master: none is asked, none is named in the run
     measure.setPipeline(*pipeline);
     RunInfo info;
     info.name = Demo::tr("demo lab");

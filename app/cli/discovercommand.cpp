@@ -235,11 +235,8 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     request->ros1 = ros.ros1;
     request->ros2 = ros.ros2;
     request->ros2Options = ros.ros2Options;
-    if (request->ros2 && !ros.environmentError.isEmpty())
-        err(ros.environmentError);
-    if (!ros.environmentWarning.isEmpty())
-        err(ros.environmentWarning);
-    err(ros.choice());
+    for (const QString& line : ros.notes())
+        err(line);
     return -1;
 }
 

@@ -130,8 +130,8 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         err(why);
         return ExitUsage;
     }
-    if (ros.ros2 && !ros.environmentError.isEmpty())
-        err(ros.environmentError);
+    for (const QString& line : ros.notes())
+        err(line);
     request->ros1 = ros.ros1;
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);

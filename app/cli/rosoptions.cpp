@@ -54,6 +54,17 @@ QString RosOptions::choice() const
     return graphs;
 }
 
+QStringList RosOptions::notes() const
+{
+    QStringList lines;
+    if (ros2 && !domainSet && !environmentError.isEmpty())
+        lines << environmentError;
+    if (!environmentWarning.isEmpty())
+        lines << environmentWarning;
+    lines << choice();
+    return lines;
+}
+
 RosOptions::RosOptions(const QString& defaultGraphs)
     : m_graphs(u"ros"_s,
                tr("Which ROS graphs: 1 (through the master), 2 (through DDS) or both (default %1).")

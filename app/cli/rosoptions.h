@@ -22,6 +22,9 @@ public:
     /// "ROS 2 (ROS_DISTRO=jazzy), domain 0": which graphs were chosen and why, as discover and watch
     /// say it on stderr and the window in its status bar.
     QString choice() const;
+    /// What a command says on stderr before it starts: a ROS_DOMAIN_ID that was not taken (when it
+    /// would have been used), a ROS_VERSION or ROS_DISTRO that was not understood, then choice().
+    QStringList notes() const;
     /// "1" or "2" as the environment says (ROS_VERSION, else a ROS_DISTRO it names), else empty;
     /// `why` gets the variable ("ROS_DISTRO=jazzy"), `warning` a value that was not understood.
     static QString environmentGraphs(QString* why, QString* warning);

@@ -196,11 +196,8 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
         err(why);
         return ExitUsage;
     }
-    if (ros.ros2 && !ros.environmentError.isEmpty())
-        err(ros.environmentError);
-    if (!ros.environmentWarning.isEmpty())
-        err(ros.environmentWarning);
-    err(ros.choice());
+    for (const QString& line : ros.notes())
+        err(line);
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     request->ros1 = ros.ros1;
     request->masterUri = parser.value(master);
