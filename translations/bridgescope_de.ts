@@ -4219,6 +4219,14 @@ factors:
         <source>recording: stop it before opening a run</source>
         <translation>Aufzeichnung läuft: vor dem Öffnen eines Laufs beenden</translation>
     </message>
+    <message>
+        <source>domain %1, this host only</source>
+        <translation>Domäne %1, nur dieser Rechner</translation>
+    </message>
+    <message>
+        <source>domain %1</source>
+        <translation>Domain %1</translation>
+    </message>
 </context>
 <context>
     <name>MetricsServer</name>
@@ -6232,6 +6240,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows in italics cross between hosts: their raw values include the clock offset. Communication: total minus every stage on one host, one way being half of it. With two clocks, a clock offset and a difference between the two legs cannot be told apart within the offset&apos;s range (neither leg takes negative time); with one clock (one_clock: true in the pipeline, or --one-clock) each direction&apos;s own one-way latency is given instead.</source>
         <translation>Statistik in ms; Std.-Abw. ist die korrigierte Standardabweichung (ddof = 1). Kursive Zeilen gehen von einem Rechner zu einem anderen: Ihre Rohwerte enthalten den Uhrenversatz. Kommunikation: gesamt minus jede Stufe, die auf einem Rechner bleibt; eine Richtung ist die Hälfte davon. Mit zwei Uhren lassen sich ein Uhrenversatz und ein Unterschied der beiden Wege innerhalb des Versatzbereichs nicht unterscheiden (kein Weg dauert negativ lange); mit einer Uhr (one_clock: true in der Pipeline oder --one-clock) wird stattdessen die Latenz jeder Richtung angegeben.</translation>
+    </message>
+    <message>
+        <source>ROS 2</source>
+        <translation>ROS 2</translation>
     </message>
 </context>
 <context>

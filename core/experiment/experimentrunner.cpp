@@ -352,6 +352,7 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
     profile.caFile = c.lab.caFile();
     c.live->connectBroker(profile);
     c.measure = std::make_unique<MeasureSession>(c.live.get());
+    c.measure->setRos1(c.lab.ros() == 1); // a ROS 2 cell has no master: none is asked, none is named
     c.measure->setPipeline(*pipeline);
     return true;
 }

@@ -19,7 +19,9 @@ struct RunInfo
     qint64 stoppedNs = 0; ///< 0: never stopped (recording, or the recorder died)
     QString host; ///< machine name and OS
     QString version; ///< Bridgescope and Qt versions
-    QString rosMaster;
+    QString rosMaster; ///< empty when no stamp came from a ROS 1 master
+    /// The ROS 2 domain stamps came from ("domain 7, this host only"), empty when none did.
+    QString ros2Domain;
     QString broker;
     QString source; ///< for imports: the file it came from
     Pipeline pipeline;

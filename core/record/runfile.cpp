@@ -461,6 +461,7 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         {u"version"_s, info.version},
         {u"ros_master"_s, Secrets::urlWithoutCredentials(info.rosMaster)},
         {u"broker"_s, Secrets::urlWithoutCredentials(info.broker)},
+        {u"ros2_domain"_s, info.ros2Domain},
         {u"source"_s, info.source},
         {u"pipeline"_s, info.pipeline.isEmpty() ? QString() : QString::fromUtf8(info.pipeline.toYaml())},
         {u"window"_s, info.window},
@@ -664,6 +665,7 @@ bool readInfo(QSqlQuery& q, ReadGuard& guard, RunInfo* info, QString* why)
     // Runs written before credentials were kept out may hold them: never passed on to a report.
     info->rosMaster = Secrets::urlWithoutCredentials(metaText(meta, u"ros_master"_s));
     info->broker = Secrets::urlWithoutCredentials(metaText(meta, u"broker"_s));
+    info->ros2Domain = metaText(meta, u"ros2_domain"_s);
     info->source = metaText(meta, u"source"_s);
     info->window = meta.value(u"window"_s).toLongLong();
     info->timeoutNs = meta.value(u"timeout_ns"_s, 5'000'000'000LL).toLongLong();

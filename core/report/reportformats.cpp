@@ -282,6 +282,7 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
     add(QT_TRANSLATE_NOOP("ReportFormats", "Clocks"), clocksText(e));
     add(QT_TRANSLATE_NOOP("ReportFormats", "Broker"), run.info.broker);
     add(QT_TRANSLATE_NOOP("ReportFormats", "ROS master"), run.info.rosMaster);
+    add(QT_TRANSLATE_NOOP("ReportFormats", "ROS 2"), run.info.ros2Domain);
     if (measured) {
         add(QT_TRANSLATE_NOOP("ReportFormats", "Samples"),
             QCoreApplication::translate("ReportFormats", "%1 complete, %2 dropped, %3 duplicate stamps")

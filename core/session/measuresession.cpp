@@ -6,6 +6,7 @@
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosstampsource.h"
+#include "ros2/ros2participant.h"
 #include "ros2/ros2stampsource.h"
 #include "session/livesession.h"
 #include "wire/sourcemessage.h"
@@ -276,7 +277,11 @@ bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* 
     info.pipeline = m_engine.pipeline();
     info.window = m_engine.window();
     info.timeoutNs = m_engine.timeoutNs();
-    info.rosMaster = m_live->rosMasterUri();
+    info.rosMaster = m_ros1On ? m_live->rosMasterUri() : QString();
+    if (m_live->ros2()->isRunning()) {
+        const Ros2Options o = m_live->ros2()->options();
+        info.ros2Domain = o.localhostOnly ? tr("domain %1, this host only").arg(o.domain) : tr("domain %1").arg(o.domain);
+    }
     info.broker = m_live->mqtt()->profile().url;
     info.startedNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
     info.describeThisMachine();

@@ -178,6 +178,14 @@ private slots:
                                ref.value(u"stages"_s)[s].toObject()),
                      qPrintable(QString::number(s)));
         QVERIFY(sameStats(ours.value(u"total"_s).toObject(), ref.value(u"total"_s).toObject()));
+        // the run says where its stamps came from: the domain, not the master it never asked
+        QProcess md;
+        md.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, run, u"--format"_s, u"md"_s});
+        QVERIFY(md.waitForFinished(30000));
+        const QString text = QString::fromUtf8(md.readAllStandardOutput());
+        QVERIFY2(text.contains(u"domain %1, this host only"_s.arg(m_domain)), qPrintable(text.left(2000)));
+        QVERIFY2(!text.contains(u"ROS master"_s), qPrintable(text.left(2000)));
+        QVERIFY2(said.contains(u"ROS 2 (--ros 2), domain %1"_s.arg(m_domain)), qPrintable(said));
     }
 
     // A field plot of a stamp topic (the Discover page's, which watches it as the default owner)
