@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/topicfigures.h"
 #include "wire/sourcemessage.h"
 
 #include <cstddef>
+#include <QHash>
 #include <QString>
 #include <vector>
 
@@ -20,6 +22,9 @@ public:
     virtual void monitor(const QString& topic) = 0;
     virtual void unmonitor(const QString& topic) = 0;
     virtual bool isMonitored(const QString& topic) const = 0;
+    /// Current figures of every monitored topic (rates computed for `nowNs`), whatever the graph:
+    /// what Map health and other graph-neutral views read.
+    virtual QHash<QString, TopicFigures> figures(qint64 nowNs) const = 0;
     /// Keeps the newest whole messages of a topic, at most `maxMessages` and `maxBytes` between two
     /// takeWatched() (older ones are dropped and counted by the source).
     virtual void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) = 0;

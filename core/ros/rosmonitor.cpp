@@ -239,6 +239,11 @@ quint64 RosMonitor::droppedMessages(const QString& topic) const
     return w == d->watched.cend() ? 0 : w->dropped();
 }
 
+QHash<QString, TopicFigures> RosMonitor::figures(qint64 nowNs) const
+{
+    return topicFiguresOf(snapshot(nowNs));
+}
+
 QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const
 {
     QHash<QString, RosMonitorStats> out;

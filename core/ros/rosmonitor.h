@@ -61,6 +61,7 @@ public:
     void resubscribeAll();
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, RosMonitorStats> snapshot(qint64 nowNs) const;
+    QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
     /// From now on every message of a monitored topic is also kept, up to `maxArrivals` between
     /// two takeArrivals() (more are dropped and counted); 0 stops keeping them.
     void keepArrivals(std::size_t maxArrivals);

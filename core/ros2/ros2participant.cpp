@@ -434,6 +434,11 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64) const
     return m_stats;
 }
 
+QHash<QString, TopicFigures> Ros2Participant::figures(qint64 nowNs) const
+{
+    return topicFiguresOf(snapshot(nowNs));
+}
+
 Ros2Protocol::WatchRequest Ros2Participant::Watched::limits(const QString& topic) const
 {
     Ros2Protocol::WatchRequest w {topic, 0, 0};

@@ -75,6 +75,7 @@ public:
     SourceGraph sourceGraph() const override { return SourceGraph::Ros2; }
     /// Figures of the monitored topics (not of those only watched), as the child last sent them.
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
+    QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
     /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
     /// takeMessages() (older ones are dropped and counted). The topic is subscribed for it whether
     /// or not it is monitored, as soon as the graph knows its type, and again after stop() and
