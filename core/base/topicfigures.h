@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QHash>
 #include <QString>
 #include <QtGlobal>
 
@@ -19,3 +20,15 @@ struct TopicFigures
     QByteArray lastMessage; ///< as it came: ROS 1 serialization, or CDR with its encapsulation header
     quint64 lost = 0; ///< ROS 2: samples DDS reports lost (roscpp tells none)
 };
+
+/// The figures of every topic of a monitor's snapshot, without what only its graph knows (md5,
+/// matched publishers).
+template <class Stats>
+QHash<QString, TopicFigures> topicFiguresOf(const QHash<QString, Stats>& stats)
+{
+    QHash<QString, TopicFigures> figures;
+    figures.reserve(stats.size());
+    for (auto it = stats.cbegin(); it != stats.cend(); ++it)
+        figures.insert(it.key(), *it);
+    return figures;
+}

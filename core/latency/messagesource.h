@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/topicfigures.h"
 #include "wire/sourcemessage.h"
 
 #include <cstddef>
+#include <QHash>
 #include <QString>
 #include <vector>
 
@@ -11,7 +13,7 @@
 /// through the master (RosMonitor), ROS 2 through DDS (Ros2Participant). Subscriptions are counted:
 /// the last unmonitor() that balances a monitor() ends one, so that two users (the Discover page's
 /// Mon, the Links page) do not end each other's. Whole messages come as SourceArrival, which
-/// SourceMessage decodes as their graph serializes.
+/// SourceMessage decodes as their graph serializes; every message's first bytes as SourceHead (Watch).
 class MessageSource
 {
 public:
@@ -20,6 +22,15 @@ public:
     virtual void monitor(const QString& topic) = 0;
     virtual void unmonitor(const QString& topic) = 0;
     virtual bool isMonitored(const QString& topic) const = 0;
+    /// Current figures of every monitored topic (rates computed for `nowNs`), whatever the graph:
+    /// what Map health and other graph-neutral views read.
+    virtual QHash<QString, TopicFigures> figures(qint64 nowNs) const = 0;
+    /// From now on the head of every message of a monitored topic is also kept, up to `maxHeads`
+    /// between two takeArrivals() (more are dropped and counted); 0 stops keeping them.
+    virtual void keepArrivals(std::size_t maxHeads) = 0;
+    /// The monitored topics' message heads since the last call, oldest first.
+    virtual std::vector<SourceHead> takeArrivals() = 0;
+    virtual quint64 droppedArrivals() const = 0;
     /// Keeps the newest whole messages of a topic, at most `maxMessages` and `maxBytes` between two
     /// takeWatched() (older ones are dropped and counted by the source).
     virtual void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) = 0;

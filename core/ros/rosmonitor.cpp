@@ -34,7 +34,7 @@ struct RosMonitor::Private
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
-    std::unique_ptr<EventBuffer<RosArrival>> arrivals; ///< set by keepArrivals(), under `mutex`
+    std::unique_ptr<EventBuffer<SourceHead>> arrivals; ///< set by keepArrivals(), under `mutex`
     QHash<QString, NewestQueue<RosMessageSample>> watched; ///< under `mutex`
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
@@ -56,7 +56,8 @@ struct RosMonitor::Private
             t.stats.definition = QString::fromStdString(msg->getMessageDefinition());
         }
         if (arrivals)
-            arrivals->push(RosArrival {topic, now, t.stats.lastSize, bytes.left(RosArrival::kHeadBytes)});
+            arrivals->push(SourceHead {SourceGraph::Ros1, topic, now, t.stats.lastSize,
+                                       bytes.left(SourceHead::kHeadBytes)});
         if (const auto w = watched.find(topic); w != watched.end())
             w->push({now, bytes}, bytes.size()); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
@@ -180,13 +181,13 @@ void RosMonitor::keepArrivals(std::size_t maxArrivals)
     if (maxArrivals == 0)
         d->arrivals.reset();
     else
-        d->arrivals = std::make_unique<EventBuffer<RosArrival>>(maxArrivals);
+        d->arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
 }
 
-std::vector<RosArrival> RosMonitor::takeArrivals()
+std::vector<SourceHead> RosMonitor::takeArrivals()
 {
     std::lock_guard<std::mutex> lock(d->mutex);
-    return d->arrivals ? d->arrivals->take() : std::vector<RosArrival>();
+    return d->arrivals ? d->arrivals->take() : std::vector<SourceHead>();
 }
 
 quint64 RosMonitor::droppedArrivals() const
@@ -237,6 +238,11 @@ quint64 RosMonitor::droppedMessages(const QString& topic) const
     std::lock_guard<std::mutex> lock(d->mutex);
     const auto w = d->watched.constFind(topic);
     return w == d->watched.cend() ? 0 : w->dropped();
+}
+
+QHash<QString, TopicFigures> RosMonitor::figures(qint64 nowNs) const
+{
+    return topicFiguresOf(snapshot(nowNs));
 }
 
 QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const

@@ -18,17 +18,6 @@ struct RosMonitorStats : TopicFigures
     QString definition;
 };
 
-/// One message as the monitor saw it, for consumers that need every message (Watch): its
-/// first bytes are enough for a Header's seq and stamp or a std_msgs/Float64.
-struct RosArrival
-{
-    static constexpr int kHeadBytes = 16;
-    QString topic;
-    qint64 receivedNs = 0; ///< wall clock
-    int size = 0; ///< serialized bytes
-    QByteArray head; ///< the first kHeadBytes bytes (fewer when the message is shorter)
-};
-
 /// One whole message of a watched topic (for plots of its fields).
 struct RosMessageSample
 {
@@ -61,12 +50,10 @@ public:
     void resubscribeAll();
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, RosMonitorStats> snapshot(qint64 nowNs) const;
-    /// From now on every message of a monitored topic is also kept, up to `maxArrivals` between
-    /// two takeArrivals() (more are dropped and counted); 0 stops keeping them.
-    void keepArrivals(std::size_t maxArrivals);
-    /// The messages since the last call, oldest first.
-    std::vector<RosArrival> takeArrivals();
-    quint64 droppedArrivals() const;
+    QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
+    void keepArrivals(std::size_t maxArrivals) override;
+    std::vector<SourceHead> takeArrivals() override;
+    quint64 droppedArrivals() const override;
     /// Keeps the newest whole messages of a monitored topic, at most `maxMessages` and
     /// `maxBytes` between two takeMessages() (older ones are dropped and counted).
     void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);

@@ -219,7 +219,7 @@ void Ros2Participant::stop()
         it->childDropped = 0;
     }
     if (m_arrivals)
-        m_arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(m_keepArrivals);
+        m_arrivals = std::make_unique<EventBuffer<SourceHead>>(m_keepArrivals);
     m_childDroppedArrivals = 0;
 }
 
@@ -310,10 +310,12 @@ bool Ros2Participant::handle(const Ros2Protocol::Frame& f)
         if (!batch)
             return false;
         m_childDroppedArrivals = batch->dropped;
+        static_assert(Ros2Arrival::kHeadBytes <= SourceHead::kHeadBytes);
         if (m_arrivals)
             for (Ros2Arrival& a : batch->arrivals)
                 if (m_monitorUses.contains(a.topic))
-                    m_arrivals->push(std::move(a));
+                    m_arrivals->push(SourceHead {SourceGraph::Ros2, std::move(a.topic), a.receivedNs, a.size,
+                                                 std::move(a.head)});
         return true;
     }
     case Kind::Received: {
@@ -434,6 +436,11 @@ QHash<QString, Ros2MonitorStats> Ros2Participant::snapshot(qint64) const
     return m_stats;
 }
 
+QHash<QString, TopicFigures> Ros2Participant::figures(qint64 nowNs) const
+{
+    return topicFiguresOf(snapshot(nowNs));
+}
+
 Ros2Protocol::WatchRequest Ros2Participant::Watched::limits(const QString& topic) const
 {
     Ros2Protocol::WatchRequest w {topic, 0, 0};
@@ -518,14 +525,14 @@ void Ros2Participant::keepArrivals(std::size_t maxArrivals)
     if (maxArrivals == 0)
         m_arrivals.reset();
     else
-        m_arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(maxArrivals);
+        m_arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
     m_childDroppedArrivals = 0;
     send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(maxArrivals));
 }
 
-std::vector<Ros2Arrival> Ros2Participant::takeArrivals()
+std::vector<SourceHead> Ros2Participant::takeArrivals()
 {
-    return m_arrivals ? m_arrivals->take() : std::vector<Ros2Arrival>();
+    return m_arrivals ? m_arrivals->take() : std::vector<SourceHead>();
 }
 
 quint64 Ros2Participant::droppedArrivals() const

@@ -75,6 +75,7 @@ public:
     SourceGraph sourceGraph() const override { return SourceGraph::Ros2; }
     /// Figures of the monitored topics (not of those only watched), as the child last sent them.
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
+    QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
     /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
     /// takeMessages() (older ones are dropped and counted). The topic is subscribed for it whether
     /// or not it is monitored, as soon as the graph knows its type, and again after stop() and
@@ -95,11 +96,10 @@ public:
     void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
     void unwatch(const QString& topic) override;
     std::vector<SourceArrival> takeWatched(const QString& topic) override;
-    /// From now on (also across stop() and start()) every sample of a monitored topic is also kept,
-    /// up to `maxArrivals` between two takeArrivals() (more are dropped and counted); 0 stops it.
-    void keepArrivals(std::size_t maxArrivals);
-    std::vector<Ros2Arrival> takeArrivals();
-    quint64 droppedArrivals() const;
+    /// keepArrivals() holds also across stop() and start(); the child's drops are counted too.
+    void keepArrivals(std::size_t maxArrivals) override;
+    std::vector<SourceHead> takeArrivals() override;
+    quint64 droppedArrivals() const override;
 
     // Endpoints of our own: a node that publishes and subscribes (the ROS 2 reference bridge, the
     // demo lab's nodes). None of these block; each is asked of the child again after a restart.
@@ -203,7 +203,7 @@ private:
     QHash<QString, Watched> m_watched; ///< what watchMessages() asked for, across stop() and start()
     const Reader* reader(const QString& topic, const void* owner) const;
     QHash<QString, Ros2MonitorStats> m_stats;
-    std::unique_ptr<EventBuffer<Ros2Arrival>> m_arrivals;
+    std::unique_ptr<EventBuffer<SourceHead>> m_arrivals;
     quint64 m_childDroppedArrivals = 0;
     Ros2Graph m_graph;
     quint64 m_badInfo = 0;

@@ -163,7 +163,7 @@ void FieldPlotter::watchRos(PlotField::Source source, const QString& topic, bool
     constexpr std::size_t kQueued = 1000;
     constexpr qint64 kQueuedBytes = 4 * kBytesPerTick;
     const bool ros2 = source == PlotField::Source::Ros2;
-    MessageSource* from = ros2 ? static_cast<MessageSource*>(m_session->ros2()) : m_session->rosMonitor();
+    MessageSource* from = m_session->rosSource(ros2);
     QSet<QString>& watched = ros2 ? d->ros2Topics : d->rosTopics;
     if (on && !watched.contains(topic)) {
         from->watch(topic, kQueued, kQueuedBytes); // subscribes it, monitored or not

@@ -53,12 +53,17 @@ public:
     /// A ROS 2 graph as the ROS topic table shows one: nodes as publishers and subscribers
     /// (an endpoint no node claims as its GUID), every node.
     static RosGraph toRosGraph(const Ros2Graph& graph);
-    /// ROS 2 monitor figures as the ROS topic table and the mapping health take them.
+    /// ROS 2 monitor figures as the ROS topic table takes them.
     static QHash<QString, RosMonitorStats> toRosStats(const QHash<QString, Ros2MonitorStats>& stats);
 
     RosGraphPoller* rosGraph() const { return m_poller; }
     RosMonitor* rosMonitor() const { return m_monitor; }
     RosTopicModel* rosTopics() const { return m_rosTopics; }
+    /// The ROS graph's monitor as a MessageSource: the ROS 2 participant or the ROS 1 monitor.
+    MessageSource* rosSource(bool ros2) const
+    {
+        return ros2 ? static_cast<MessageSource*>(m_ros2) : static_cast<MessageSource*>(m_monitor);
+    }
     MqttConnection* mqtt() const { return m_mqtt; }
     MqttTopicTree* mqttTopics() const { return m_tree; }
 

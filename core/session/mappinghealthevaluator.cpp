@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "mappinghealthevaluator.h"
 
+#include "base/topicfigures.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
-#include "ros/rosmonitor.h"
 #include "ros2/ros2graph.h"
 
 using namespace Qt::StringLiterals;
@@ -93,7 +93,7 @@ QString rate(double hz)
 
 /// The table's few words for a healthy mapping: `10.0 → 9.9 Hz` when both ends have a rate (one
 /// unit for both, so that the destination's rate is not the part a narrow column cuts).
-QString flowSummary(const RosMonitorStats* mon, const QString& rosRate, double mqttHz, bool rosFirst)
+QString flowSummary(const TopicFigures* mon, const QString& rosRate, double mqttHz, bool rosFirst)
 {
     if (!mon || !mon->messages) {
         const QString mqttRate = rate(mqttHz);
@@ -115,7 +115,7 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
         const RosTopicInfo* rosInfo = in.graph ? in.graph->topic(ros) : nullptr;
         const auto mqttInfo = in.mqtt ? in.mqtt->info(mqtt) : std::nullopt;
         const bool mqttActive = mqttInfo && in.nowNs - mqttInfo->lastNs <= in.activeWindowNs;
-        const RosMonitorStats* mon = nullptr;
+        const TopicFigures* mon = nullptr;
         if (in.monitored) {
             const auto it = in.monitored->constFind(ros);
             if (it != in.monitored->cend())

@@ -10,7 +10,7 @@
 struct RosGraph;
 struct Ros2Graph;
 struct Ros2Qos;
-struct RosMonitorStats;
+struct TopicFigures;
 class MqttTopicTree;
 
 /// Evaluates every mapping of a config against the ROS graph, the monitored ROS topics and the
@@ -24,7 +24,7 @@ public:
     {
         const RosGraph* graph = nullptr;
         bool rosReachable = false;
-        const QHash<QString, RosMonitorStats>* monitored = nullptr;
+        const QHash<QString, TopicFigures>* monitored = nullptr; ///< MessageSource::figures()
         const MqttTopicTree* mqtt = nullptr;
         bool mqttConnected = false;
         qint64 nowNs = 0;

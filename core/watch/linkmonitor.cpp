@@ -2,9 +2,9 @@
 #include "linkmonitor.h"
 
 #include "mqtt/mqttconnection.h"
-#include "ros/rosmonitor.h"
 #include "wire/mqttclientwire.h"
 #include "wire/rosmessage.h"
+#include "wire/sourcemessage.h"
 #include "wire/stampcodec.h"
 
 #include <algorithm>
@@ -557,7 +557,7 @@ void LinkMonitor::setRosDefinition(const QString& topic, const QString& type, co
     }
     // A latency topic is found by its name; its index is kept here, where every ROS topic passes.
     const qsizetype at = topic.indexOf(u"/latencies/"_s);
-    if (at >= 0 && type == u"std_msgs/Float64"_s) {
+    if (at >= 0 && (type == u"std_msgs/Float64"_s || type == u"std_msgs/msg/Float64"_s)) {
         for (int i : m_byRos.value(topic.mid(at + 10)))
             if (m_tracks[std::size_t(i)]->def.direction == Direction::Mqtt2Ros)
                 m_byLatencyTopic.insert(topic, i);
@@ -643,21 +643,23 @@ void LinkMonitor::applyAnnouncement(Track& t, const AnnouncedType& type)
     (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
 }
 
-void LinkMonitor::addRos(const std::vector<RosArrival>& batch)
+void LinkMonitor::addRos(const std::vector<SourceHead>& batch)
 {
-    for (const RosArrival& a : batch) {
+    for (const SourceHead& a : batch) {
         if (const auto it = m_byRos.constFind(a.topic); it != m_byRos.cend()) {
+            // A ROS 2 Header has no seq: its first bytes are the stamp.
+            const bool hasSeq = a.graph == SourceGraph::Ros1;
             for (int i : *it) {
                 Track& t = *m_tracks[std::size_t(i)];
                 if (t.def.direction == Direction::Ros2Mqtt) {
                     t.src.add(a.receivedNs, a.size);
-                    if (t.srcHeader)
+                    if (t.srcHeader && hasSeq)
                         if (const auto seq = seqOf(a.head, 0))
                             t.srcSeq.add(*seq);
                     continue;
                 }
                 t.dst.add(a.receivedNs, a.size);
-                if (t.dstHeader)
+                if (t.dstHeader && hasSeq)
                     if (const auto seq = seqOf(a.head, 0))
                         t.seq.add(*seq);
             }

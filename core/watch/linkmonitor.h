@@ -14,7 +14,7 @@
 #include <vector>
 
 struct MqttMessage;
-struct RosArrival;
+struct SourceHead;
 
 /// One bridged link: a mapping of a bridge config, from its source to its destination.
 struct LinkDef
@@ -174,7 +174,8 @@ public:
     /// ROS topics to subscribe: the links' own and the bridges' latency topics found in `rosTopics`
     /// (mqtt_client publishes `~/latencies/<ros topic>` for stamped MQTT → ROS links).
     QStringList rosTopicsToMonitor(const QStringList& rosTopics) const;
-    /// The definition of a ROS topic's type (for Header.seq), from the ROS monitor.
+    /// The definition of a ROS topic's type (for Header.seq), from the ROS monitor; a ROS 2 topic's
+    /// type without one (ROS 2 has no seq; a `std_msgs/msg/Float64` latency topic is found by it).
     void setRosDefinition(const QString& topic, const QString& type, const QString& definition);
 
     /// The measurement's pipeline (its stamp topics in order): links whose PREFIX/in and PREFIX/out
@@ -184,7 +185,7 @@ public:
     void addPipelineSample(const std::vector<qint64>& times, qint64 nowNs);
 
     void addMqtt(const std::vector<MqttMessage>& batch);
-    void addRos(const std::vector<RosArrival>& batch);
+    void addRos(const std::vector<SourceHead>& batch);
     /// Checks the rules at `nowNs` (call a few times a second); statistics are refreshed once a
     /// second. Emits eventStarted/eventEnded for every change.
     void tick(qint64 nowNs);

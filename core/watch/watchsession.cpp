@@ -112,21 +112,20 @@ bool WatchSession::discoverLinks()
 void WatchSession::update(qint64 nowNs)
 {
     m_monitor->addRos(m_live->rosMonitor()->takeArrivals());
-    if (m_live->isRos2Running()) {
-        // ROS 2 samples as ROS ones: their head is the message after the CDR header (a std_msgs/Float64
-        // latency reads the same); no Header.seq in ROS 2, so no sequence gaps from them
-        std::vector<Ros2Arrival> ros2 = m_live->ros2()->takeArrivals();
-        std::vector<RosArrival> batch;
-        batch.reserve(ros2.size());
-        for (Ros2Arrival& a : ros2)
-            batch.push_back(RosArrival {std::move(a.topic), a.receivedNs, a.size, std::move(a.head)});
-        m_monitor->addRos(batch);
-    }
+    if (m_live->isRos2Running())
+        m_monitor->addRos(m_live->ros2()->takeArrivals());
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
             applyLinks();
-        // Types come with the first message: Header.seq can be read from then on.
+        // Types come with the first message: Header.seq can be read from then on. ROS 2 first, so
+        // that a topic on both graphs reads its ROS 1 messages' seq.
+        if (m_live->isRos2Running()) {
+            const QHash<QString, TopicFigures> ros2 = m_live->ros2()->figures(nowNs);
+            for (auto it = ros2.cbegin(); it != ros2.cend(); ++it)
+                if (!it->type.isEmpty())
+                    m_monitor->setRosDefinition(it.key(), it->type, QString());
+        }
         const QHash<QString, RosMonitorStats> stats = m_live->rosMonitor()->snapshot(nowNs);
         for (auto it = stats.cbegin(); it != stats.cend(); ++it)
             if (!it->type.isEmpty())

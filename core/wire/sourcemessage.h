@@ -26,6 +26,19 @@ struct SourceArrival
     QByteArray bytes;
 };
 
+/// The first bytes of one message, for consumers that need every message but not all of it (Watch):
+/// enough for a ROS 1 Header's seq and stamp or a std_msgs Float64. On ROS 2 they are the message's
+/// first bytes after its 4-byte encapsulation header (a ROS 2 Header has no seq).
+struct SourceHead
+{
+    static constexpr int kHeadBytes = 16;
+    SourceGraph graph = SourceGraph::Ros1;
+    QString topic;
+    qint64 receivedNs = 0; ///< wall clock
+    int size = 0; ///< serialized bytes (on ROS 2 the encapsulation header included)
+    QByteArray head; ///< the first kHeadBytes bytes (fewer when the message is shorter)
+};
+
 /// What one arrival on a stamp topic or a latency topic gives: a stamp, a latency, or why neither.
 struct StampReading
 {

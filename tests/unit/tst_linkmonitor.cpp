@@ -5,10 +5,10 @@
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
-#include "ros/rosmonitor.h"
 #include "watch/linkmodel.h"
 #include "watch/linkmonitor.h"
 #include "wire/mqttclientwire.h"
+#include "wire/sourcemessage.h"
 
 #include <cstring>
 #include <limits>
@@ -57,9 +57,10 @@ MqttMessage mqtt(const QString& topic, const QByteArray& payload, qint64 ns)
     return m;
 }
 
-RosArrival ros(const QString& topic, const QByteArray& bytes, qint64 ns)
+SourceHead ros(const QString& topic, const QByteArray& bytes, qint64 ns,
+               SourceGraph graph = SourceGraph::Ros1)
 {
-    return RosArrival {topic, ns, int(bytes.size()), bytes.left(RosArrival::kHeadBytes)};
+    return SourceHead {graph, topic, ns, int(bytes.size()), bytes.left(SourceHead::kHeadBytes)};
 }
 
 /// Drives a monitor with a clock: `step` advances by 100 ms (10 Hz) and ticks it.
@@ -160,6 +161,37 @@ private slots:
         // 10 % lost is above the default alert level of 5 %.
         QCOMPARE(m.level(m.indexOf(in.id())), LinkLevel::Alert);
         QVERIFY(m.reasons(m.indexOf(in.id())).contains(u"loss"_s));
+    }
+
+    // A ROS 2 link: mqtt_client's ROS 2 latency topic (std_msgs/msg/Float64) gives the latency, and
+    // the first bytes of a ROS 2 message with a Header (its stamp: ROS 2 has no seq) are no seq even
+    // when the same topic's ROS 1 type has a Header.
+    void ros2LatencyTopicAndNoSeq()
+    {
+        LinkMonitor m;
+        const LinkDef in = link(Direction::Mqtt2Ros, u"/vehicle/cmd"_s, u"vehicle/cmd"_s);
+        m.setLinks({in}, kStart);
+        m.setRosDefinition(u"/vehicle/cmd"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
+        const QString latencyTopic = u"/vehicle_bridge/latencies/vehicle/cmd"_s;
+        QVERIFY(m.rosTopicsToMonitor({latencyTopic}).contains(latencyTopic));
+        m.setRosDefinition(latencyTopic, u"std_msgs/msg/Float64"_s, QString());
+        QByteArray seconds(8, '\0');
+        const double twentyMs = 0.020;
+        std::memcpy(seconds.data(), &twentyMs, 8);
+        Clock clock {m};
+        for (quint32 i = 0; i < 50; ++i) {
+            const qint64 sent = clock.now;
+            m.addMqtt({mqtt(u"vehicle/cmd"_s, headerMessage(i), sent)});
+            // stamp.sec 3 apart: read as a seq that would be two gaps each time
+            m.addRos({ros(u"/vehicle/cmd"_s, headerMessage(3 * i), sent + 2 * kMs, SourceGraph::Ros2)});
+            m.addRos({ros(latencyTopic, seconds, sent + 2 * kMs, SourceGraph::Ros2)});
+            clock.advance(100 * kMs);
+        }
+        const LinkFigures f = m.figures(m.indexOf(in.id()));
+        QCOMPARE(f.destination.messages, quint64(50));
+        QCOMPARE(f.seqGaps, quint64(0));
+        QCOMPARE(f.latencySource, LatencySource::LatencyTopic);
+        QVERIFY2(qAbs(f.latencyP50Ms - 20) < 0.01, qPrintable(QString::number(f.latencyP50Ms)));
     }
 
     // At a start the source's subscription is up before the destination's: what the source sent
@@ -380,7 +412,7 @@ private slots:
         m.addMqtt({mqtt(u"mqtt_client/ros_msg_type/c"_s, "\x01\x02", kStart),
                    mqtt(u"c"_s, QByteArray(), kStart), mqtt(u"c"_s, "123", kStart),
                    mqtt(u"c"_s, QByteArray(8, '\xff'), kStart)});
-        m.addRos({RosArrival {u"/c"_s, kStart, 0, QByteArray()}});
+        m.addRos({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray()}});
         m.tick(kStart + 2000 * kMs);
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.destination.messages, quint64(3));

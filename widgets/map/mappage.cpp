@@ -390,9 +390,7 @@ void MapPage::updateHealth()
         m_rosBridged->setSourceModel(topics);
         updateBridgedTopics();
     }
-    const QHash<QString, RosMonitorStats> monitored = ros2
-        ? LiveSession::toRosStats(m_session->ros2()->snapshot(now))
-        : m_session->rosMonitor()->snapshot(now);
+    const QHash<QString, TopicFigures> monitored = m_session->rosSource(ros2)->figures(now);
     const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_session->ros2()->graph()) : RosGraph();
     MappingHealthEvaluator::Inputs in;
     in.graph = ros2 ? &ros2Graph : &m_session->rosGraph()->graph();
