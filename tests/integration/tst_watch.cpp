@@ -26,6 +26,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSet>
 #include <QTcpSocket>
 #include <QTest>
 #include <QTimer>
@@ -346,15 +347,30 @@ private slots:
         QVERIFY(file.open(QIODevice::ReadOnly));
         QVERIFY(file.readAll().contains("\"bridge_down\""));
 
+        // The restart ends these four stalls. A link may have more episodes once the bridge is back (a slow
+        // build delivers its first messages in a burst); those are not the ones this test follows.
+        QSet<QString> stalls;
+        for (const QJsonObject& e : events(from, u"start"_s, u"|/w/"_s, u"stall"_s))
+            stalls.insert(e.value(u"subject"_s).toString() + u'@' + e.value(u"start"_s).toString());
+        const auto stallEnds = [&] {
+            QList<QJsonObject> out;
+            for (const QJsonObject& e : events(from, u"end"_s, u"|/w/"_s))
+                if (stalls.contains(e.value(u"subject"_s).toString() + u'@' + e.value(u"start"_s).toString()))
+                    out << e;
+            return out;
+        };
         const int restarted = int(m_events.size());
         startBridge();
         announce();
-        QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"|/w/"_s).size() == 4, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(stallEnds().size() == 4, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"bridge:watch_bridge"_s).size() == 1, 5000);
-        for (const QJsonObject& e : events(restarted, u"end"_s, u"|/w/"_s)) {
-            QVERIFY(e.value(u"duration_s"_s).toDouble() > 0.5);
-            QVERIFY(!e.value(u"end"_s).toString().isEmpty());
+        for (const QJsonObject& e : stallEnds()) {
+            const QByteArray what = QJsonDocument(e).toJson(QJsonDocument::Compact);
+            QVERIFY2(e.value(u"duration_s"_s).toDouble() > 0.5, what.constData());
+            QVERIFY2(!e.value(u"end"_s).toString().isEmpty(), what.constData());
         }
+        for (const QJsonObject& e : events(restarted, u"start"_s, u"|/w/"_s))
+            qInfo().noquote() << "after the restart:" << QJsonDocument(e).toJson(QJsonDocument::Compact);
         QVERIFY(allLinksFlow(1500));
     }
 
