@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <optional>
 #include <QByteArray>
 #include <QHash>
 #include <QString>
@@ -19,6 +20,8 @@ struct TopicFigures
     QString type;
     QByteArray lastMessage; ///< as it came: ROS 1 serialization, or CDR with its encapsulation header
     quint64 lost = 0; ///< ROS 2: samples DDS reports lost (roscpp tells none)
+    /// MQTT: the latency of the last payload mqtt_client stamped, when one came (ROS: none).
+    std::optional<double> lastLatencyMs;
 };
 
 /// The figures of every topic of a monitor's snapshot, without what only its graph knows (md5,

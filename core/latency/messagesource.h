@@ -6,11 +6,13 @@
 
 #include <cstddef>
 #include <QHash>
+#include <QSet>
 #include <QString>
 #include <vector>
 
-/// The topics of a ROS graph as monitors, views and plots use them, whatever the graph: ROS 1
-/// through the master (RosMonitor), ROS 2 through DDS (Ros2Participant). Subscriptions are counted:
+/// The topics of a graph as monitors, views and plots use them, whatever the graph: ROS 1 through
+/// the master (RosMonitor), ROS 2 through DDS (Ros2Participant), MQTT through the broker
+/// (MqttSource). Subscriptions are counted:
 /// the last unmonitor() that balances a monitor() ends one, so that two users (the Discover page's
 /// Mon, the Links page) do not end each other's. Whole messages come as SourceArrival, which
 /// SourceMessage decodes as their graph serializes; every message's first bytes as SourceHead (Watch).
@@ -37,4 +39,19 @@ public:
     virtual void unwatch(const QString& topic) = 0;
     /// The watched topic's messages since the last call, oldest first.
     virtual std::vector<SourceArrival> takeWatched(const QString& topic) = 0;
+    /// Messages of a watched topic dropped because more came between two takes than it keeps.
+    virtual quint64 droppedWatched(const QString& topic) const = 0;
+
+    /// For one user whose monitored topics are `held`: monitors the topics of `wanted` not held yet,
+    /// unmonitors those held no more, and holds `wanted`.
+    void monitorExactly(QSet<QString>& held, const QSet<QString>& wanted)
+    {
+        for (const QString& topic : std::as_const(held))
+            if (!wanted.contains(topic))
+                unmonitor(topic);
+        for (const QString& topic : wanted)
+            if (!held.contains(topic))
+                monitor(topic);
+        held = wanted;
+    }
 };

@@ -538,6 +538,12 @@ QModelIndex MqttTopicTree::indexOf(const QString& topic, int column) const
     return indexOf(m_byTopic.value(topic), column);
 }
 
+std::optional<RosMsgTypeInfo> MqttTopicTree::announcedType(const QString& topic) const
+{
+    const auto type = m_types.value(topic);
+    return type ? std::optional<RosMsgTypeInfo>(type->info) : std::nullopt;
+}
+
 std::optional<MqttTopicTree::TopicInfo> MqttTopicTree::info(const QString& topic) const
 {
     const Node* n = m_byTopic.value(topic);

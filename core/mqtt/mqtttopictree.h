@@ -160,6 +160,8 @@ public:
     int unknownTypeTopics() const;
     QModelIndex indexOf(const QString& topic, int column = 0) const;
     std::optional<TopicInfo> info(const QString& topic) const;
+    /// The type mqtt_client announced for a data topic, whether or not a message came on it yet.
+    std::optional<RosMsgTypeInfo> announcedType(const QString& topic) const;
     QList<TopicInfo> topics() const; ///< every topic, by name
     const std::deque<HistoryEntry>* history(const QString& topic) const;
     /// A registry able to decode the topic's payloads, when mqtt_client announced its type (for

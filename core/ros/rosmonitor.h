@@ -67,6 +67,7 @@ public:
     void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
     void unwatch(const QString& topic) override;
     std::vector<SourceArrival> takeWatched(const QString& topic) override;
+    quint64 droppedWatched(const QString& topic) const override { return droppedMessages(topic); }
 
 signals:
     void monitorFailed(const QString& topic, const QString& why);

@@ -96,6 +96,7 @@ public:
     void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
     void unwatch(const QString& topic) override;
     std::vector<SourceArrival> takeWatched(const QString& topic) override;
+    quint64 droppedWatched(const QString& topic) const override { return droppedMessages(topic); }
     /// keepArrivals() holds also across stop() and start(); the child's drops are counted too.
     void keepArrivals(std::size_t maxArrivals) override;
     std::vector<SourceHead> takeArrivals() override;

@@ -11,6 +11,7 @@
 #include "wire/sourcemessage.h"
 
 #include <algorithm>
+#include <iterator>
 #include <optional>
 #include <QHash>
 #include <QJsonArray>
@@ -21,22 +22,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-struct Received
-{
-    qint64 receivedNs = 0;
-    QByteArray payload;
-};
-
-/// A monitor's whole messages (ROS 1 or ROS 2) as the plot takes them.
-template<typename Sample> std::vector<Received> received(std::vector<Sample> taken)
-{
-    std::vector<Received> out;
-    out.reserve(taken.size());
-    for (Sample& m : taken)
-        out.push_back({m.receivedNs, std::move(m.bytes)});
-    return out;
-}
-
 /// Up to `keep` of `n` items, evenly spread and always with the newest.
 std::vector<std::size_t> spread(std::size_t n, std::size_t keep)
 {
@@ -58,16 +43,30 @@ struct Decoded
     QJsonValue json;
     QString error;
 };
+
+SourceGraph graphOf(PlotField::Source source)
+{
+    switch (source) {
+    case PlotField::Source::Ros:
+        return SourceGraph::Ros1;
+    case PlotField::Source::Ros2:
+        return SourceGraph::Ros2;
+    case PlotField::Source::Mqtt:
+        break;
+    }
+    return SourceGraph::Mqtt;
+}
+
+constexpr PlotField::Source kSources[] {PlotField::Source::Mqtt, PlotField::Source::Ros, PlotField::Source::Ros2};
 } // namespace
 
 struct FieldPlotter::Private
 {
     qint64 originNs = 0;
-    QSet<QString> mqttTopics;
-    QSet<QString> rosTopics;
-    QSet<QString> ros2Topics;
+    /// Per source (PlotField::Source as index): the topics watched, and the messages their source
+    /// had dropped by the last tick.
+    QHash<QString, quint64> watched[std::size(kSources)];
     QHash<QString, QString> ros2Types; ///< the last type the ROS 2 graph named, for samples that outlive it
-    QHash<QString, std::vector<Received>> pendingMqtt;
     struct RosType
     {
         QString md5;
@@ -83,26 +82,16 @@ FieldPlotter::FieldPlotter(LiveSession* session, QObject* parent)
     , m_session(session)
     , d(std::make_unique<Private>())
 {
-    m_listener = session->addMqttListener([this](const std::vector<MqttMessage>& batch) {
-        if (d->mqttTopics.isEmpty())
-            return;
-        for (const MqttMessage& m : batch) {
-            if (d->mqttTopics.contains(m.topic))
-                d->pendingMqtt[m.topic].push_back({m.receivedNs, m.payload}); // shared, not copied
-        }
-    });
     connect(session, &LiveSession::drained, this, &FieldPlotter::onDrained);
 }
 
 FieldPlotter::~FieldPlotter()
 {
     if (!m_session)
-        return; // the session went first, and its listeners with it
-    m_session->removeMqttListener(m_listener);
-    for (const QString& topic : std::as_const(d->rosTopics))
-        m_session->rosMonitor()->unwatch(topic);
-    for (const QString& topic : std::as_const(d->ros2Topics))
-        m_session->ros2()->unwatch(topic);
+        return; // the session went first, and its sources with it
+    for (PlotField::Source source : kSources)
+        for (auto it = d->watched[int(source)].cbegin(); it != d->watched[int(source)].cend(); ++it)
+            m_session->source(graphOf(source))->unwatch(it.key());
 }
 
 int FieldPlotter::indexOf(const PlotField& field) const
@@ -124,10 +113,7 @@ bool FieldPlotter::add(const PlotField& field)
     s.field = field;
     s.label = field.topic + u": "_s + FieldPath::text(field.path);
     m_series.append(s);
-    if (field.source == PlotField::Source::Mqtt)
-        d->mqttTopics.insert(field.topic);
-    else
-        watchRos(field.source, field.topic, true);
+    watch(field.source, field.topic, true);
     emit fieldsChanged();
     return true;
 }
@@ -140,12 +126,8 @@ void FieldPlotter::remove(int index)
     const bool stillUsed = std::any_of(m_series.cbegin(), m_series.cend(), [&](const PlotSeries& s) {
         return s.field.source == gone.source && s.field.topic == gone.topic;
     });
-    if (!stillUsed && gone.source == PlotField::Source::Mqtt) {
-        d->mqttTopics.remove(gone.topic);
-        d->pendingMqtt.remove(gone.topic);
-    } else if (!stillUsed) {
-        watchRos(gone.source, gone.topic, false);
-    }
+    if (!stillUsed)
+        watch(gone.source, gone.topic, false);
     emit fieldsChanged();
 }
 
@@ -155,26 +137,20 @@ void FieldPlotter::clear()
         remove(int(m_series.size()) - 1);
 }
 
-void FieldPlotter::watchRos(PlotField::Source source, const QString& topic, bool on)
+void FieldPlotter::watch(PlotField::Source source, const QString& topic, bool on)
 {
     if (!m_session)
         return;
-    // Enough for a few ticks at any rate; the tick decodes at most kMessagesPerTick of them.
-    constexpr std::size_t kQueued = 1000;
-    constexpr qint64 kQueuedBytes = 4 * kBytesPerTick;
-    const bool ros2 = source == PlotField::Source::Ros2;
-    MessageSource* from = m_session->rosSource(ros2);
-    QSet<QString>& watched = ros2 ? d->ros2Topics : d->rosTopics;
+    MessageSource* from = m_session->source(graphOf(source));
+    QHash<QString, quint64>& watched = d->watched[int(source)];
     if (on && !watched.contains(topic)) {
-        from->watch(topic, kQueued, kQueuedBytes); // subscribes it, monitored or not
-        watched.insert(topic);
+        from->watch(topic, kQueued, kQueuedBytes); // subscribes it (ROS), monitored or not
+        watched.insert(topic, from->droppedWatched(topic));
     } else if (!on) {
         from->unwatch(topic);
         watched.remove(topic);
-        if (ros2)
-            d->ros2Types.remove(topic);
-        else
-            d->rosTypes.remove(topic);
+        d->ros2Types.remove(topic);
+        d->rosTypes.remove(topic);
     }
 }
 
@@ -183,17 +159,8 @@ void FieldPlotter::onDrained(qint64 nowNs)
     if (m_series.isEmpty() || !m_session)
         return;
     bool changed = false;
-    QHash<QString, std::vector<Received>> pending;
-    pending.swap(d->pendingMqtt);
-    QHash<QString, std::vector<Received>> rosPending;
-    for (const QString& topic : std::as_const(d->rosTopics))
-        rosPending[topic] = received(m_session->rosMonitor()->takeWatched(topic));
-    QHash<QString, std::vector<Received>> ros2Pending;
-    for (const QString& topic : std::as_const(d->ros2Topics))
-        ros2Pending[topic] = received(m_session->ros2()->takeWatched(topic));
-
     const auto plotTopic
-        = [&](PlotField::Source source, const QString& topic, std::vector<Received>& messages) {
+        = [&](PlotField::Source source, const QString& topic, const std::vector<SourceArrival>& messages) {
               QList<int> fields;
               int deepest = -1;
               for (int i = 0; i < m_series.size(); ++i) {
@@ -264,27 +231,27 @@ void FieldPlotter::onDrained(qint64 nowNs)
               qint64 bytes = 0;
               int decodedCount = 0;
               for (std::size_t index : chosen) {
-                  const Received& m = messages[index];
+                  const SourceArrival& m = messages[index];
                   if (d->originNs == 0)
                       d->originNs = m.receivedNs; // time 0 is the first value's
                   Decoded dec;
-                  if (m.payload.size() > kMaxPayloadBytes) {
+                  if (m.bytes.size() > kMaxPayloadBytes) {
                       dec.error = tr("a payload of %1 bytes, more than %2 are not plotted")
-                                      .arg(m.payload.size())
+                                      .arg(m.bytes.size())
                                       .arg(kMaxPayloadBytes);
-                  } else if (bytes + m.payload.size() > kBytesPerTick) {
+                  } else if (bytes + m.bytes.size() > kBytesPerTick) {
                       ++m_skipped;
                       continue;
                   } else if (!typeError.isEmpty()) {
                       dec.error = typeError;
                   } else {
-                      bytes += m.payload.size();
+                      bytes += m.bytes.size();
                       ++decodedCount;
                       if (registry && how.isRos()) {
-                          dec.ros = SourceMessage::decode(*registry, how, m.payload, &dec.error, limits);
+                          dec.ros = SourceMessage::decode(*registry, how, m.bytes, &dec.error, limits);
                       } else {
                           QJsonParseError parse {};
-                          const QJsonDocument doc = QJsonDocument::fromJson(m.payload, &parse);
+                          const QJsonDocument doc = QJsonDocument::fromJson(m.bytes, &parse);
                           if (doc.isObject())
                               dec.json = doc.object();
                           else if (doc.isArray())
@@ -313,12 +280,17 @@ void FieldPlotter::onDrained(qint64 nowNs)
               m_mostDecoded = std::max(m_mostDecoded, decodedCount);
           };
 
-    for (auto it = pending.begin(); it != pending.end(); ++it)
-        plotTopic(PlotField::Source::Mqtt, it.key(), it.value());
-    for (auto it = rosPending.begin(); it != rosPending.end(); ++it)
-        plotTopic(PlotField::Source::Ros, it.key(), it.value());
-    for (auto it = ros2Pending.begin(); it != ros2Pending.end(); ++it)
-        plotTopic(PlotField::Source::Ros2, it.key(), it.value());
+    // Every source alike: what it kept of a watched topic since the last tick, and what it dropped
+    // because more came than it keeps (skipped, like what the tick does not decode).
+    for (PlotField::Source source : kSources) {
+        MessageSource* from = m_session->source(graphOf(source));
+        for (auto it = d->watched[int(source)].begin(); it != d->watched[int(source)].end(); ++it) {
+            const quint64 dropped = from->droppedWatched(it.key());
+            m_skipped += dropped - std::min(dropped, *it);
+            *it = dropped;
+            plotTopic(source, it.key(), from->takeWatched(it.key()));
+        }
+    }
 
     // The window: the last kWindowSeconds, at most kMaxPoints per field.
     if (d->originNs == 0)

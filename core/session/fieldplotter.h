@@ -35,8 +35,8 @@ struct PlotSeries
 
 /// Values of chosen fields over time, from the live session's ticks.
 ///
-/// Nothing runs per network message: the MQTT batch of a tick and the ROS monitor's or the ROS 2
-/// participant's queue of a watched topic are taken once per drain. Work per tick is bounded: at
+/// Nothing runs per network message: every plotted topic is watched on its graph's MessageSource
+/// (MQTT, ROS 1 or ROS 2 alike), whose queue is taken once per drain. Work per tick is bounded: at
 /// most kMessagesPerTick messages per topic are decoded (evenly spread over what came, the rest
 /// counted as skipped) and at most kBytesPerTick bytes; larger payloads are errors. Points are kept
 /// for kWindowSeconds, at most kMaxPoints per field.
@@ -50,6 +50,10 @@ public:
     static constexpr int kMaxPoints = 10000;
     static constexpr int kWindowSeconds = 60;
     static constexpr int kMaxFields = 8;
+    /// What a source keeps of a plotted topic between two ticks: enough for a few ticks at any
+    /// rate (the tick decodes at most kMessagesPerTick of them); older ones are dropped and skipped.
+    static constexpr std::size_t kQueued = 1000;
+    static constexpr qint64 kQueuedBytes = 4 * kBytesPerTick;
 
     explicit FieldPlotter(LiveSession* session, QObject* parent = nullptr);
     ~FieldPlotter() override;
@@ -60,7 +64,8 @@ public:
     void clear();
     const QList<PlotSeries>& series() const { return m_series; }
     int indexOf(const PlotField& field) const;
-    /// Messages of plotted topics that were not decoded to keep a tick's work bounded.
+    /// Messages of plotted topics that were not decoded to keep a tick's work bounded, or that
+    /// their source dropped because more came between two ticks than it keeps (kQueued).
     quint64 skippedMessages() const { return m_skipped; }
     /// The most messages decoded for one topic in one tick (never above kMessagesPerTick).
     int mostDecodedInATick() const { return m_mostDecoded; }
@@ -73,12 +78,11 @@ signals:
 private:
     struct Private;
     void onDrained(qint64 nowNs);
-    void watchRos(PlotField::Source source, const QString& topic, bool on);
+    void watch(PlotField::Source source, const QString& topic, bool on);
 
     QPointer<LiveSession> m_session;
     std::unique_ptr<Private> d;
     QList<PlotSeries> m_series;
-    int m_listener = 0;
     quint64 m_skipped = 0;
     int m_mostDecoded = 0;
 };

@@ -22,6 +22,7 @@ LiveSession::LiveSession(QObject* parent)
     , m_tree(new MqttTopicTree(this))
     , m_ros2(new Ros2Participant(this))
     , m_ros2Topics(new RosTopicModel(this))
+    , m_mqttSource(std::make_unique<MqttSource>(m_tree))
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
     m_tree->setRos2Registry(m_ros2Types); // mqtt_client's ROS 2 payloads decode as ROS 2 samples do
@@ -52,6 +53,19 @@ LiveSession::LiveSession(QObject* parent)
 }
 
 LiveSession::~LiveSession() = default;
+
+MessageSource* LiveSession::source(SourceGraph graph) const
+{
+    switch (graph) {
+    case SourceGraph::Ros1:
+        return m_monitor;
+    case SourceGraph::Ros2:
+        return m_ros2;
+    case SourceGraph::Mqtt:
+        break;
+    }
+    return m_mqttSource.get();
+}
 
 void LiveSession::setRosMasterUri(const QString& uri)
 {
@@ -140,6 +154,7 @@ void LiveSession::drainNow()
     const qint64 now = wallClockNs();
     std::vector<MqttMessage> batch = m_mqtt->takeMessages();
     if (!batch.empty()) {
+        m_mqttSource->add(batch);
         for (const auto& [id, listener] : m_listeners)
             listener(batch);
         m_tree->apply(std::move(batch));

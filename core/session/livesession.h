@@ -2,6 +2,7 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
+#include "mqtt/mqttsource.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
@@ -59,11 +60,9 @@ public:
     RosGraphPoller* rosGraph() const { return m_poller; }
     RosMonitor* rosMonitor() const { return m_monitor; }
     RosTopicModel* rosTopics() const { return m_rosTopics; }
-    /// The ROS graph's monitor as a MessageSource: the ROS 2 participant or the ROS 1 monitor.
-    MessageSource* rosSource(bool ros2) const
-    {
-        return ros2 ? static_cast<MessageSource*>(m_ros2) : static_cast<MessageSource*>(m_monitor);
-    }
+    /// A graph's topics as a MessageSource: the ROS 1 monitor, the ROS 2 participant, or the
+    /// broker's topics (fed with every drain's batch before the listeners have it).
+    MessageSource* source(SourceGraph graph) const;
     MqttConnection* mqtt() const { return m_mqtt; }
     MqttTopicTree* mqttTopics() const { return m_tree; }
 
@@ -89,6 +88,7 @@ private:
     MqttTopicTree* m_tree;
     Ros2Participant* m_ros2;
     RosTopicModel* m_ros2Topics;
+    std::unique_ptr<MqttSource> m_mqttSource;
     std::shared_ptr<const RosTypeRegistry> m_ros2Types;
     std::vector<std::pair<int, MqttListener>> m_listeners;
     int m_nextListener = 1;

@@ -2,7 +2,6 @@
 #include "mappinghealthevaluator.h"
 
 #include "base/topicfigures.h"
-#include "mqtt/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
 #include "ros2/ros2graph.h"
 
@@ -113,7 +112,12 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
         const QString ros = m.rosTopic();
         const QString mqtt = m.mqttTopic();
         const RosTopicInfo* rosInfo = in.graph ? in.graph->topic(ros) : nullptr;
-        const auto mqttInfo = in.mqtt ? in.mqtt->info(mqtt) : std::nullopt;
+        const TopicFigures* mqttInfo = nullptr;
+        if (in.mqtt) {
+            const auto it = in.mqtt->constFind(mqtt);
+            if (it != in.mqtt->cend())
+                mqttInfo = &*it;
+        }
         const bool mqttActive = mqttInfo && in.nowNs - mqttInfo->lastNs <= in.activeWindowNs;
         const TopicFigures* mon = nullptr;
         if (in.monitored) {
@@ -126,9 +130,9 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
             ? rate(mon->rateHz)
             : (rosPublished ? tr("publishers: %1").arg(rosInfo->publishers.size()) : tr("no publisher"));
         const QString mqttRate
-            = mqttActive ? rate(mqttInfo->rate) : (mqttInfo ? tr("silent") : tr("never seen"));
-        if (mqttInfo && mqttInfo->latencySamples)
-            h.latencyMs = mqttInfo->lastLatencyMs;
+            = mqttActive ? rate(mqttInfo->rateHz) : (mqttInfo ? tr("silent") : tr("never seen"));
+        if (mqttInfo && mqttInfo->lastLatencyMs)
+            h.latencyMs = *mqttInfo->lastLatencyMs;
 
         if (!in.rosReachable || !in.mqttConnected) {
             h.state = MappingHealth::Unknown;
@@ -158,7 +162,7 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                                .arg(in.activeWindowNs / 1000000000);
             } else {
                 h.state = MappingHealth::Healthy;
-                h.summary = flowSummary(mon, rosRate, mqttInfo->rate, true);
+                h.summary = flowSummary(mon, rosRate, mqttInfo->rateHz, true);
                 h.detail = tr("'%1' (%2) arrives on '%3' (%4).").arg(ros, rosRate, mqtt, mqttRate);
             }
         } else {
@@ -178,17 +182,17 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                 h.detail = tr("'%1' carries %2 but nobody publishes '%3' on ROS.").arg(mqtt, mqttRate, ros);
             } else {
                 h.state = MappingHealth::Healthy;
-                h.summary = flowSummary(mon, rosRate, mqttInfo->rate, false);
+                h.summary = flowSummary(mon, rosRate, mqttInfo->rateHz, false);
                 h.detail = tr("'%1' (%2) is published on '%3' (%4).").arg(mqtt, mqttRate, ros, rosRate);
             }
         }
         // A type announcement that contradicts the ROS graph outranks everything but a missing side.
-        if (rosInfo && mqttInfo && mqttInfo->rosType && !rosInfo->type.isEmpty()
-            && !sameType(mqttInfo->rosType->name, rosInfo->type)) {
+        if (rosInfo && mqttInfo && !mqttInfo->type.isEmpty() && !rosInfo->type.isEmpty()
+            && !sameType(mqttInfo->type, rosInfo->type)) {
             h.state = MappingHealth::TypeMismatch;
             h.summary = tr("type mismatch");
             h.detail = tr("The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.")
-                           .arg(mqttInfo->rosType->name, mqtt, ros, rosInfo->type);
+                           .arg(mqttInfo->type, mqtt, ros, rosInfo->type);
         }
         // A QoS that keeps the bridge's ROS 2 endpoint from matching explains any silence.
         if (in.ros2 && h.state != MappingHealth::Missing) {

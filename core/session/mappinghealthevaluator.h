@@ -11,11 +11,10 @@ struct RosGraph;
 struct Ros2Graph;
 struct Ros2Qos;
 struct TopicFigures;
-class MqttTopicTree;
 
-/// Evaluates every mapping of a config against the ROS graph, the monitored ROS topics and the
-/// broker's topic tree. For a ROS 2 graph (`ros2` set; `graph` is then its RosGraph form) it also
-/// checks the QoS mqtt_client would use against the topic's endpoints.
+/// Evaluates every mapping of a config against the ROS graph and the figures of its ROS and MQTT
+/// topics, as their MessageSources give them. For a ROS 2 graph (`ros2` set; `graph` is then its
+/// RosGraph form) it also checks the QoS mqtt_client would use against the topic's endpoints.
 class MappingHealthEvaluator
 {
     Q_DECLARE_TR_FUNCTIONS(MappingHealth)
@@ -25,7 +24,8 @@ public:
         const RosGraph* graph = nullptr;
         bool rosReachable = false;
         const QHash<QString, TopicFigures>* monitored = nullptr; ///< MessageSource::figures()
-        const MqttTopicTree* mqtt = nullptr;
+        /// The mappings' MQTT topics' figures (the MQTT MessageSource's, with their announced type).
+        const QHash<QString, TopicFigures>* mqtt = nullptr;
         bool mqttConnected = false;
         qint64 nowNs = 0;
         qint64 activeWindowNs = 5'000'000'000LL; ///< a topic counts as active for this long after a message

@@ -564,38 +564,10 @@ void LinkMonitor::setRosDefinition(const QString& topic, const QString& type, co
     }
 }
 
-void LinkMonitor::addMqtt(const std::vector<MqttMessage>& batch)
+void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
 {
     const QString typePrefix = MqttClientWire::typeTopicPrefix();
     for (const MqttMessage& m : batch) {
-        if (const auto it = m_byMqtt.constFind(m.topic); it != m_byMqtt.cend()) {
-            for (int i : *it) {
-                Track& t = *m_tracks[std::size_t(i)];
-                if (t.def.direction == Direction::Mqtt2Ros) {
-                    t.src.add(m.receivedNs, int(m.payload.size()));
-                    if (t.srcHeader)
-                        if (const auto seq = seqOf(m.payload, t.stamped() ? 8 : 0))
-                            t.srcSeq.add(*seq);
-                    continue;
-                }
-                t.dst.add(m.receivedNs, int(m.payload.size()));
-                qsizetype offset = 0;
-                if (t.stamped()) {
-                    const auto dialect
-                        = t.ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
-                    if (const auto s = MqttClientWire::splitStamped(m.payload, dialect)) {
-                        if (!t.pipelineLatency)
-                            t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6,
-                                         LatencySource::Stamps);
-                        offset = MqttClientWire::stampBytes(dialect);
-                    }
-                }
-                if (t.dstHeader)
-                    if (const auto seq = seqOf(m.payload, offset))
-                        t.seq.add(*seq);
-            }
-            continue;
-        }
         if (m.topic.startsWith(typePrefix)) {
             announce(MqttClientWire::dataTopicOf(m.topic), m.payload);
             continue;
@@ -609,6 +581,11 @@ void LinkMonitor::addMqtt(const std::vector<MqttMessage>& batch)
             }
         }
     }
+}
+
+QStringList LinkMonitor::mqttTopics() const
+{
+    return m_byMqtt.keys();
 }
 
 void LinkMonitor::announce(const QString& dataTopic, const QByteArray& payload)
@@ -643,32 +620,71 @@ void LinkMonitor::applyAnnouncement(Track& t, const AnnouncedType& type)
     (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
 }
 
-void LinkMonitor::addRos(const std::vector<SourceHead>& batch)
+void LinkMonitor::add(const std::vector<SourceHead>& batch)
 {
     for (const SourceHead& a : batch) {
-        if (const auto it = m_byRos.constFind(a.topic); it != m_byRos.cend()) {
-            // A ROS 2 Header has no seq: its first bytes are the stamp.
-            const bool hasSeq = a.graph == SourceGraph::Ros1;
-            for (int i : *it) {
-                Track& t = *m_tracks[std::size_t(i)];
-                if (t.def.direction == Direction::Ros2Mqtt) {
-                    t.src.add(a.receivedNs, a.size);
-                    if (t.srcHeader && hasSeq)
-                        if (const auto seq = seqOf(a.head, 0))
-                            t.srcSeq.add(*seq);
-                    continue;
-                }
-                t.dst.add(a.receivedNs, a.size);
-                if (t.dstHeader && hasSeq)
-                    if (const auto seq = seqOf(a.head, 0))
-                        t.seq.add(*seq);
-            }
-        } else if (const auto lt = m_byLatencyTopic.constFind(a.topic); lt != m_byLatencyTopic.cend()) {
-            // std_msgs/Float64 in seconds, as mqtt_client publishes it.
-            Track& t = *m_tracks[std::size_t(*lt)];
-            if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)); ns && !t.pipelineLatency)
-                t.addLatency(a.receivedNs, double(*ns) / 1e6, LatencySource::LatencyTopic);
+        if (a.graph == SourceGraph::Mqtt)
+            addMqttHead(a);
+        else
+            addRosHead(a);
+    }
+}
+
+void LinkMonitor::addMqttHead(const SourceHead& m)
+{
+    const auto it = m_byMqtt.constFind(m.topic);
+    if (it == m_byMqtt.cend())
+        return;
+    for (int i : *it) {
+        Track& t = *m_tracks[std::size_t(i)];
+        // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
+        if (t.def.direction == Direction::Mqtt2Ros) {
+            t.src.add(m.receivedNs, m.size);
+            if (t.srcHeader && !t.ros2)
+                if (const auto seq = seqOf(m.head, t.stamped() ? MqttClientWire::kRos1StampBytes : 0))
+                    t.srcSeq.add(*seq);
+            continue;
         }
+        t.dst.add(m.receivedNs, m.size);
+        qsizetype offset = 0;
+        if (t.stamped()) {
+            const auto dialect = t.ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
+            if (const auto s = MqttClientWire::splitStamped(m.head, dialect)) {
+                if (!t.pipelineLatency)
+                    t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6, LatencySource::Stamps);
+                offset = MqttClientWire::stampBytes(dialect);
+            }
+        }
+        if (t.dstHeader && !t.ros2)
+            if (const auto seq = seqOf(m.head, offset))
+                t.seq.add(*seq);
+    }
+}
+
+void LinkMonitor::addRosHead(const SourceHead& a)
+{
+    if (const auto it = m_byRos.constFind(a.topic); it != m_byRos.cend()) {
+        // A ROS 2 Header has no seq: its first bytes are the stamp.
+        const bool hasSeq = a.graph == SourceGraph::Ros1;
+        for (int i : *it) {
+            Track& t = *m_tracks[std::size_t(i)];
+            if (t.def.direction == Direction::Ros2Mqtt) {
+                t.src.add(a.receivedNs, a.size);
+                if (t.srcHeader && hasSeq)
+                    if (const auto seq = seqOf(a.head, 0))
+                        t.srcSeq.add(*seq);
+                continue;
+            }
+            t.dst.add(a.receivedNs, a.size);
+            if (t.dstHeader && hasSeq)
+                if (const auto seq = seqOf(a.head, 0))
+                    t.seq.add(*seq);
+        }
+    } else if (const auto lt = m_byLatencyTopic.constFind(a.topic); lt != m_byLatencyTopic.cend()) {
+        // std_msgs/Float64 in seconds, as mqtt_client publishes it.
+        Track& t = *m_tracks[std::size_t(*lt)];
+        if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)); ns && !t.pipelineLatency)
+            t.addLatency(a.receivedNs, double(*ns) / 1e6, LatencySource::LatencyTopic);
     }
 }
 

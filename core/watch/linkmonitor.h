@@ -184,8 +184,14 @@ public:
     /// One complete sample of that pipeline (stamp times in its order), received at `nowNs`.
     void addPipelineSample(const std::vector<qint64>& times, qint64 nowNs);
 
-    void addMqtt(const std::vector<MqttMessage>& batch);
-    void addRos(const std::vector<SourceHead>& batch);
+    /// The links' MQTT topics: what the watch monitors on the MQTT source.
+    QStringList mqttTopics() const;
+    /// Messages of the links' topics, from their MessageSources (MQTT, ROS 1, ROS 2): the first
+    /// bytes of each are enough for a stamp, a Header.seq and a Float64 latency.
+    void add(const std::vector<SourceHead>& batch);
+    /// mqtt_client's control messages, which only MQTT has: type announcements and last wills
+    /// (the rest of the batch is ignored).
+    void addMqttControl(const std::vector<MqttMessage>& batch);
     /// Checks the rules at `nowNs` (call a few times a second); statistics are refreshed once a
     /// second. Emits eventStarted/eventEnded for every change.
     void tick(qint64 nowNs);
@@ -208,6 +214,8 @@ private:
                 const QString& detail, const LinkFigures& figures, qint64 nowNs);
     void refreshStatistics(qint64 nowNs);
     void announce(const QString& dataTopic, const QByteArray& payload);
+    void addMqttHead(const SourceHead& head);
+    void addRosHead(const SourceHead& head);
     void indexPipeline();
     static void applyAnnouncement(Track& track, const AnnouncedType& type);
 

@@ -13,23 +13,22 @@
 namespace {
 constexpr qint64 kTickNs = 250'000'000LL;
 constexpr qint64 kSyncNs = 1'000'000'000LL;
-constexpr std::size_t kMaxRosArrivals = 500'000; ///< between two drains (30 ms): far above any lab's rate
+constexpr std::size_t kMaxArrivals = 500'000; ///< between two drains (30 ms): far above any lab's rate
+constexpr SourceGraph kGraphs[] {SourceGraph::Mqtt, SourceGraph::Ros1, SourceGraph::Ros2};
 } // namespace
 
 WatchSession::WatchSession(LiveSession* live, QObject* parent)
     : QObject(parent)
     , m_live(live)
     , m_monitor(new LinkMonitor(this))
-    , m_rosMonitor(live->rosMonitor())
-    , m_ros2(live->ros2())
 {
-    live->rosMonitor()->keepArrivals(kMaxRosArrivals);
-    live->ros2()->keepArrivals(kMaxRosArrivals);
+    for (SourceGraph graph : kGraphs)
+        live->source(graph)->keepArrivals(kMaxArrivals);
     // The live session may outlive this watch: its listener then does nothing.
     live->addMqttListener(
         [monitor = QPointer<LinkMonitor>(m_monitor)](const std::vector<MqttMessage>& batch) {
             if (monitor)
-                monitor->addMqtt(batch);
+                monitor->addMqttControl(batch);
         });
     connect(live, &LiveSession::drained, this, &WatchSession::update);
     connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &WatchSession::syncRosTopics);
@@ -38,11 +37,12 @@ WatchSession::WatchSession(LiveSession* live, QObject* parent)
 
 WatchSession::~WatchSession()
 {
-    // The live session may go first (siblings in a window die in the order they were made).
-    if (m_rosMonitor)
-        m_rosMonitor->keepArrivals(0);
-    if (m_ros2)
-        m_ros2->keepArrivals(0);
+    if (!m_live)
+        return;
+    for (SourceGraph graph : kGraphs)
+        m_live->source(graph)->keepArrivals(0);
+    for (const QString& topic : std::as_const(m_monitoredMqtt))
+        m_live->source(SourceGraph::Mqtt)->unmonitor(topic);
 }
 
 void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
@@ -76,6 +76,7 @@ void WatchSession::applyLinks()
     for (const QString& topic : std::as_const(m_discovered))
         links << LinkDef::discoveredAt(topic, m_monitor->announced().value(topic).stamped);
     m_monitor->setLinks(links, wallClockNs());
+    syncMqttTopics();
     syncRosTopics();
 }
 
@@ -111,9 +112,10 @@ bool WatchSession::discoverLinks()
 
 void WatchSession::update(qint64 nowNs)
 {
-    m_monitor->addRos(m_live->rosMonitor()->takeArrivals());
+    m_monitor->add(m_live->source(SourceGraph::Mqtt)->takeArrivals());
+    m_monitor->add(m_live->source(SourceGraph::Ros1)->takeArrivals());
     if (m_live->isRos2Running())
-        m_monitor->addRos(m_live->ros2()->takeArrivals());
+        m_monitor->add(m_live->source(SourceGraph::Ros2)->takeArrivals());
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
@@ -137,6 +139,13 @@ void WatchSession::update(qint64 nowNs)
     }
 }
 
+void WatchSession::syncMqttTopics()
+{
+    const QStringList topics = m_monitor->mqttTopics();
+    const QSet<QString> want(topics.cbegin(), topics.cend());
+    m_live->source(SourceGraph::Mqtt)->monitorExactly(m_monitoredMqtt, want);
+}
+
 void WatchSession::syncRosTopics()
 {
     // Each wanted topic is watched where it is: on the ROS 2 domain when that has it (a ROS 2
@@ -155,22 +164,8 @@ void WatchSession::syncRosTopics()
     for (const QString& t : wanted)
         (onRos2.contains(t) ? want2 : want1).insert(t);
 
-    RosMonitor* ros = m_live->rosMonitor();
-    for (const QString& t : std::as_const(m_monitored))
-        if (!want1.contains(t))
-            ros->unmonitor(t);
-    for (const QString& t : std::as_const(want1))
-        if (!m_monitored.contains(t))
-            ros->monitor(t);
-    m_monitored = want1;
-    Ros2Participant* ros2 = m_live->ros2();
-    for (const QString& t : std::as_const(m_monitored2))
-        if (!want2.contains(t))
-            ros2->unmonitor(t);
-    for (const QString& t : std::as_const(want2))
-        if (!m_monitored2.contains(t))
-            ros2->monitor(t);
-    m_monitored2 = want2;
+    m_live->source(SourceGraph::Ros1)->monitorExactly(m_monitored, want1);
+    m_live->source(SourceGraph::Ros2)->monitorExactly(m_monitored2, want2);
 }
 
 void WatchSession::useMeasurement(MeasureSession* measure)

@@ -1,20 +1,19 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "session/livesession.h"
 #include "watch/linkmonitor.h"
 
 #include <QObject>
 #include <QPointer>
 
-class LiveSession;
 class MeasureSession;
-class RosMonitor;
-class Ros2Participant;
 
-/// Watching links live: feeds a LinkMonitor from a LiveSession (the MQTT batches of every drain,
-/// the ROS monitor's arrivals, and the ROS 2 participant's while it is in a domain), keeps the ROS
-/// and ROS 2 subscriptions in step with the links and the graphs (a link's ROS topic is watched on
-/// whichever graph has it), and ticks the monitor four times a second. Broker and master restarts are the
+/// Watching links live: feeds a LinkMonitor from a LiveSession's MessageSources (the arrivals of
+/// the MQTT source, the ROS monitor and the ROS 2 participant while it is in a domain; mqtt_client's
+/// control messages from the MQTT batches), keeps what they monitor in step with the links and the
+/// graphs (a link's ROS topic is watched on whichever graph has it), and ticks the monitor four
+/// times a second. Broker and master restarts are the
 /// live session's business (it reconnects and registers again); the links simply resume.
 class WatchSession : public QObject
 {
@@ -48,18 +47,18 @@ public:
 
 private:
     void syncRosTopics();
+    void syncMqttTopics();
     void applyLinks();
     /// Adds the links announced since the last call that no config has; true when there were any.
     bool discoverLinks();
 
-    LiveSession* m_live;
+    QPointer<LiveSession> m_live; ///< may go first (siblings in a window die in the order they were made)
     LinkMonitor* m_monitor;
-    QPointer<RosMonitor> m_rosMonitor;
-    QPointer<Ros2Participant> m_ros2;
     qint64 m_lastTickNs = 0;
     qint64 m_lastSyncNs = 0;
     QSet<QString> m_monitored;
     QSet<QString> m_monitored2; ///< ROS 2 topics subscribed
+    QSet<QString> m_monitoredMqtt;
     QList<LinkDef> m_configLinks;
     QSet<QString> m_configMqttTopics;
     QStringList m_discovered; ///< MQTT topics of the discovered links, sorted

@@ -5,6 +5,8 @@
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
+#include "mqtt/mqttsource.h"
+#include "mqtt/mqtttopictree.h"
 #include "watch/linkmodel.h"
 #include "watch/linkmonitor.h"
 #include "wire/mqttclientwire.h"
@@ -63,6 +65,20 @@ SourceHead ros(const QString& topic, const QByteArray& bytes, qint64 ns,
     return SourceHead {graph, topic, ns, int(bytes.size()), bytes.left(SourceHead::kHeadBytes)};
 }
 
+/// What the watch hands a monitor of a drain's MQTT batch: mqtt_client's control messages, then
+/// the heads the MQTT source kept of the links' topics.
+void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch)
+{
+    MqttTopicTree tree;
+    MqttSource source(&tree);
+    for (const QString& topic : m.mqttTopics())
+        source.monitor(topic);
+    source.keepArrivals(batch.size() + 1);
+    source.add(batch);
+    m.addMqttControl(batch);
+    m.add(source.takeArrivals());
+}
+
 /// Drives a monitor with a clock: `step` advances by 100 ms (10 Hz) and ticks it.
 struct Clock
 {
@@ -119,21 +135,21 @@ private slots:
         std::memcpy(seconds.data(), &twentyMs, 8);
         RosMsgTypeInfo type {u"0123456789abcdef0123456789abcdef"_s, u"test_msgs/Stamped"_s,
                              kStampedDefinition, true};
-        m.addMqtt(
+        fromBroker(m,
             {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)});
         Clock clock {m};
         quint32 seq = 0;
         for (int i = 0; i < 200; ++i) { // 20 s at 10 Hz
             const qint64 sent = clock.now;
-            m.addRos({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
+            m.add({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
             // The bridge skips seq 50 and 51 (two messages never sent on), latency 5 ms.
             if (seq != 50 && seq != 51)
-                m.addMqtt({mqtt(u"vehicle/pose"_s, MqttClientWire::stamped(sent, headerMessage(seq)),
+                fromBroker(m, {mqtt(u"vehicle/pose"_s, MqttClientWire::stamped(sent, headerMessage(seq)),
                                 sent + 5 * kMs)});
-            m.addMqtt({mqtt(u"vehicle/cmd"_s, headerMessage(seq), sent)});
+            fromBroker(m, {mqtt(u"vehicle/cmd"_s, headerMessage(seq), sent)});
             if (i % 10 != 9) {
-                m.addRos({ros(u"/vehicle/cmd"_s, headerMessage(seq), sent + 2 * kMs)});
-                m.addRos({ros(latencyTopic, seconds, sent + 2 * kMs)});
+                m.add({ros(u"/vehicle/cmd"_s, headerMessage(seq), sent + 2 * kMs)});
+                m.add({ros(latencyTopic, seconds, sent + 2 * kMs)});
             }
             ++seq;
             clock.advance(100 * kMs);
@@ -181,10 +197,10 @@ private slots:
         Clock clock {m};
         for (quint32 i = 0; i < 50; ++i) {
             const qint64 sent = clock.now;
-            m.addMqtt({mqtt(u"vehicle/cmd"_s, headerMessage(i), sent)});
+            fromBroker(m, {mqtt(u"vehicle/cmd"_s, headerMessage(i), sent)});
             // stamp.sec 3 apart: read as a seq that would be two gaps each time
-            m.addRos({ros(u"/vehicle/cmd"_s, headerMessage(3 * i), sent + 2 * kMs, SourceGraph::Ros2)});
-            m.addRos({ros(latencyTopic, seconds, sent + 2 * kMs, SourceGraph::Ros2)});
+            m.add({ros(u"/vehicle/cmd"_s, headerMessage(3 * i), sent + 2 * kMs, SourceGraph::Ros2)});
+            m.add({ros(latencyTopic, seconds, sent + 2 * kMs, SourceGraph::Ros2)});
             clock.advance(100 * kMs);
         }
         const LinkFigures f = m.figures(m.indexOf(in.id()));
@@ -192,6 +208,36 @@ private slots:
         QCOMPARE(f.seqGaps, quint64(0));
         QCOMPARE(f.latencySource, LatencySource::LatencyTopic);
         QVERIFY2(qAbs(f.latencyP50Ms - 20) < 0.01, qPrintable(QString::number(f.latencyP50Ms)));
+    }
+
+    // mqtt_client v2.5 (ROS 2) on the broker: its stamp is 12 bytes of CDR and its payloads are CDR,
+    // whose Header has no seq. The latency comes from the stamp in the first bytes the MQTT source
+    // keeps of each message; the payload's stamp seconds (3 apart) are never read as a seq.
+    void ros2MqttPayloadsGiveStampsAndNoSeq()
+    {
+        LinkMonitor m;
+        const LinkDef out = link(Direction::Ros2Mqtt, u"/vehicle/pose"_s, u"vehicle/pose"_s, true);
+        m.setLinks({out}, kStart);
+        RosMsgTypeInfo type {QString(), u"geometry_msgs/msg/PointStamped"_s, QString(), true,
+                             RosTypeRegistry::Dialect::Ros2};
+        fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)});
+        QVERIFY(m.announced().value(u"vehicle/pose"_s).ros2);
+        Clock clock {m};
+        for (quint32 i = 0; i < 50; ++i) {
+            const qint64 sent = clock.now;
+            QByteArray cdr("\x00\x01\x00\x00", 4); // CDR little endian, then the Header's stamp
+            cdr += headerMessage(3 * i);
+            m.add({ros(u"/vehicle/pose"_s, headerMessage(i), sent)});
+            fromBroker(m, {mqtt(u"vehicle/pose"_s,
+                                MqttClientWire::stamped(sent, cdr, RosTypeRegistry::Dialect::Ros2),
+                                sent + 7 * kMs)});
+            clock.advance(100 * kMs);
+        }
+        const LinkFigures f = m.figures(m.indexOf(out.id()));
+        QCOMPARE(f.destination.messages, quint64(50));
+        QCOMPARE(f.seqGaps, quint64(0));
+        QCOMPARE(f.latencySource, LatencySource::Stamps);
+        QVERIFY2(qAbs(f.latencyP50Ms - 7) < 0.01, qPrintable(QString::number(f.latencyP50Ms)));
     }
 
     // At a start the source's subscription is up before the destination's: what the source sent
@@ -203,9 +249,9 @@ private slots:
         m.setLinks({in}, kStart);
         Clock clock {m};
         for (int i = 0; i < 40; ++i) { // 4 s at 10 Hz; the destination hears from the 6th on
-            m.addMqtt({mqtt(u"bench/pointcloud"_s, "x", clock.now)});
+            fromBroker(m, {mqtt(u"bench/pointcloud"_s, "x", clock.now)});
             if (i >= 5)
-                m.addRos({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
+                m.add({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
             clock.advance(100 * kMs);
         }
         LinkFigures f = m.figures(m.indexOf(in.id()));
@@ -218,9 +264,9 @@ private slots:
         QCOMPARE(m.figures(m.indexOf(in.id())).lost, quint64(0));
         // It resumes, and three messages in a row go missing: lost, for sure.
         for (int i = 0; i < 40; ++i) {
-            m.addMqtt({mqtt(u"bench/pointcloud"_s, "x", clock.now)});
+            fromBroker(m, {mqtt(u"bench/pointcloud"_s, "x", clock.now)});
             if (i < 10 || i > 12)
-                m.addRos({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
+                m.add({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
             clock.advance(100 * kMs);
         }
         f = m.figures(m.indexOf(in.id()));
@@ -239,9 +285,9 @@ private slots:
         Clock clock {m};
         const auto run = [&](int messages, bool delivered) {
             for (int i = 0; i < messages; ++i) {
-                m.addRos({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
+                m.add({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
                 if (delivered)
-                    m.addMqtt({mqtt(u"a"_s, QByteArray(10, 'x'), clock.now + kMs)});
+                    fromBroker(m, {mqtt(u"a"_s, QByteArray(10, 'x'), clock.now + kMs)});
                 clock.advance(100 * kMs);
             }
         };
@@ -305,17 +351,17 @@ private slots:
         RosMsgTypeInfo type {u"0123456789abcdef0123456789abcdef"_s, u"test_msgs/Stamped"_s,
                              kStampedDefinition, true};
         for (const QString& topic : {u"fast"_s, u"slow"_s})
-            m.addMqtt(
+            fromBroker(m,
                 {mqtt(u"mqtt_client/ros_msg_type/"_s + topic, MqttClientWire::encodeType(type), kStart)});
         Clock clock {m};
         for (int i = 0; i < 200; ++i) { // 10 s: /fast at 20 Hz (5 ms), /slow at 5 Hz (25 ms)
             const qint64 sent = clock.now;
-            m.addRos({ros(u"/fast"_s, headerMessage(quint32(i)), sent)});
-            m.addMqtt(
+            m.add({ros(u"/fast"_s, headerMessage(quint32(i)), sent)});
+            fromBroker(m,
                 {mqtt(u"fast"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))), sent + 5 * kMs)});
             if (i % 4 == 0) {
-                m.addRos({ros(u"/slow"_s, headerMessage(quint32(i)), sent)});
-                m.addMqtt({mqtt(u"slow"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))),
+                m.add({ros(u"/slow"_s, headerMessage(quint32(i)), sent)});
+                fromBroker(m, {mqtt(u"slow"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))),
                                 sent + 25 * kMs)});
             }
             clock.advance(50 * kMs);
@@ -368,17 +414,17 @@ private slots:
         QSignalSpy started(&m, &LinkMonitor::eventStarted);
         Clock clock {m};
         for (int i = 0; i < 10; ++i) {
-            m.addRos({ros(u"/a"_s, "x", clock.now)});
-            m.addMqtt({mqtt(u"a"_s, "x", clock.now)});
+            m.add({ros(u"/a"_s, "x", clock.now)});
+            fromBroker(m, {mqtt(u"a"_s, "x", clock.now)});
             clock.advance(100 * kMs);
         }
         QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
-        m.addMqtt({mqtt(u"vehicle/status"_s, "offline", clock.now)});
+        fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
         clock.advance(100 * kMs);
         QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
         QCOMPARE(started.last().first().value<WatchEvent>().subject, u"bridge:vehicle_bridge"_s);
         QCOMPARE(started.last().first().value<WatchEvent>().reasons, QStringList {u"bridge_down"_s});
-        m.addMqtt({mqtt(u"a"_s, "x", clock.now + kMs)});
+        fromBroker(m, {mqtt(u"a"_s, "x", clock.now + kMs)});
         clock.advance(100 * kMs);
         QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
     }
@@ -391,14 +437,14 @@ private slots:
         m.setRosDefinition(u"/b"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
         qint64 t = kStart;
         for (quint32 s : {1u, 2u, 3u, 5u, 4u, 6u, 6u, 7u, 10u, 11u})
-            m.addRos({ros(u"/b"_s, headerMessage(s), t += 100 * kMs)});
+            m.add({ros(u"/b"_s, headerMessage(s), t += 100 * kMs)});
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.reordered, quint64(1)); // 4 after 5
         QCOMPARE(f.duplicates, quint64(1)); // 6 twice
         QCOMPARE(f.seqGaps, quint64(2)); // 8 and 9
         // A publisher that restarts at 0 is not a gap of four billion.
-        m.addRos({ros(u"/b"_s, headerMessage(0), t += 100 * kMs)});
-        m.addRos({ros(u"/b"_s, headerMessage(1), t += 100 * kMs)});
+        m.add({ros(u"/b"_s, headerMessage(0), t += 100 * kMs)});
+        m.add({ros(u"/b"_s, headerMessage(1), t += 100 * kMs)});
         QCOMPARE(m.figures(0).seqGaps, quint64(2));
     }
 
@@ -409,10 +455,10 @@ private slots:
         m.setLinks({l}, kStart);
         m.setRosDefinition(u"/c"_s, u"bad"_s, u"this is not a definition {"_s);
         // Short, empty and absurdly stamped payloads, and a broken announcement.
-        m.addMqtt({mqtt(u"mqtt_client/ros_msg_type/c"_s, "\x01\x02", kStart),
+        fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/c"_s, "\x01\x02", kStart),
                    mqtt(u"c"_s, QByteArray(), kStart), mqtt(u"c"_s, "123", kStart),
                    mqtt(u"c"_s, QByteArray(8, '\xff'), kStart)});
-        m.addRos({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray()}});
+        m.add({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray()}});
         m.tick(kStart + 2000 * kMs);
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.destination.messages, quint64(3));
@@ -429,7 +475,7 @@ private slots:
         m.setLinks({}, kStart);
         const RosMsgTypeInfo point {QString(32, u'a'), u"geometry_msgs/PointStamped"_s, kStampedDefinition,
                                     true};
-        m.addMqtt({mqtt(u"mqtt_client/ros_msg_type/far/pose"_s, MqttClientWire::encodeType(point), kStart),
+        fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/far/pose"_s, MqttClientWire::encodeType(point), kStart),
                    mqtt(u"mqtt_client/ros_msg_type/far/bad"_s, "\x01", kStart)});
         QCOMPARE(m.announced().size(), 1);
         QVERIFY(m.announced().value(u"far/pose"_s).stamped);
@@ -445,7 +491,7 @@ private slots:
             if (seq == 10)
                 continue; // a gap
             clock.advance(100 * kMs);
-            m.addMqtt({mqtt(u"far/pose"_s, MqttClientWire::stamped(clock.now - 15 * kMs, headerMessage(seq)),
+            fromBroker(m, {mqtt(u"far/pose"_s, MqttClientWire::stamped(clock.now - 15 * kMs, headerMessage(seq)),
                             clock.now)});
         }
         clock.advance(1000 * kMs);
@@ -464,7 +510,7 @@ private slots:
         for (int i = 0; i < LinkMonitor::kMaxAnnounced + 50; ++i)
             flood.push_back(mqtt(u"mqtt_client/ros_msg_type/x/%1"_s.arg(i), MqttClientWire::encodeType(point),
                                  clock.now));
-        m.addMqtt(flood);
+        fromBroker(m, flood);
         QVERIFY(m.announced().size() <= LinkMonitor::kMaxAnnounced);
         QVERIFY(m.droppedAnnouncements() >= 50);
     }
@@ -496,7 +542,7 @@ private slots:
             m.addPipelineSample({t, t + 1 * kMs, t + 1 * kMs + (i % 2 ? 3 : 5) * kMs, t + 30 * kMs},
                                 clock.now);
             // An injected stamp saying 40 ms: not taken.
-            m.addMqtt({mqtt(l.mqttTopic, MqttClientWire::stamped(clock.now - 40 * kMs, "x"), clock.now)});
+            fromBroker(m, {mqtt(l.mqttTopic, MqttClientWire::stamped(clock.now - 40 * kMs, "x"), clock.now)});
         }
         clock.advance(1000 * kMs);
         const LinkFigures f = m.figures(0);

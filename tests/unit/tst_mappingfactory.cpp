@@ -2,6 +2,7 @@
 // Names and options proposed for new mappings, and health from synthetic discovery data.
 #include "base/topicnames.h"
 #include "config/mappingfactory.h"
+#include "mqtt/mqttsource.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
@@ -12,6 +13,21 @@
 #include <QTest>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+/// The MQTT figures as the Map page takes them: the mappings' topics monitored on the MQTT source,
+/// which the live session hands a drain's batch before the topic tree applies it.
+QHash<QString, TopicFigures> mqttFigures(MqttTopicTree& tree, const BridgeConfig& cfg,
+                                         std::vector<MqttMessage> batch, qint64 nowNs)
+{
+    MqttSource source(&tree);
+    for (const Mapping& m : cfg.mappings)
+        source.monitor(m.mqttTopic());
+    source.add(batch);
+    tree.apply(std::move(batch));
+    return source.figures(nowNs);
+}
+} // namespace
 
 class TestMappingFactory : public QObject
 {
@@ -119,11 +135,12 @@ private slots:
         RosMsgTypeInfo pose {u"d3812c3cbc69362b77dc0b19b345f8f5"_s, u"geometry_msgs/PoseStamped"_s,
                              u"Header header"_s, false};
         batch.push_back({u"mqtt_client/ros_msg_type/e"_s, MqttClientWire::encodeType(pose), now, 0, true});
-        tree.apply(std::move(batch));
+        const QHash<QString, TopicFigures> mqtt = mqttFigures(tree, cfg, std::move(batch), now);
+        QVERIFY(!mqtt.contains(u"b"_s)); // never published
         MappingHealthEvaluator::Inputs in;
         in.graph = &graph;
         in.rosReachable = true;
-        in.mqtt = &tree;
+        in.mqtt = &mqtt;
         in.mqttConnected = true;
         in.nowNs = now;
         const auto h = MappingHealthEvaluator::evaluate(cfg, in);
@@ -196,12 +213,12 @@ private slots:
         std::vector<MqttMessage> batch;
         for (const QString& t : {u"a"_s, u"b"_s, u"c"_s, u"d"_s, u"e"_s, u"b2"_s})
             batch.push_back({t, "x", now - 1'000'000'000LL, 0, false});
-        tree.apply(std::move(batch));
+        const QHash<QString, TopicFigures> mqtt = mqttFigures(tree, cfg, std::move(batch), now);
         MappingHealthEvaluator::Inputs in;
         in.graph = &graph;
         in.ros2 = &ros2;
         in.rosReachable = true;
-        in.mqtt = &tree;
+        in.mqtt = &mqtt;
         in.mqttConnected = true;
         in.nowNs = now;
         const auto h = MappingHealthEvaluator::evaluate(cfg, in);

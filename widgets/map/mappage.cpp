@@ -375,6 +375,27 @@ void MapPage::updateBridgedTopics()
     m_mqttBridged->setBridged(mqtt);
 }
 
+MapPage::~MapPage()
+{
+    if (m_session)
+        for (const QString& topic : std::as_const(m_mqttMonitored))
+            m_session->source(SourceGraph::Mqtt)->unmonitor(topic);
+}
+
+void MapPage::monitorMappedMqttTopics()
+{
+    QSet<QString> topics;
+    const auto add = [&](const BridgeConfig& config) {
+        for (const Mapping& m : config.mappings)
+            topics.insert(m.mqttTopic());
+    };
+    add(m_doc->config());
+    for (int i = 0; m_files && i < m_files->openCount(); ++i)
+        if (i != m_files->currentIndex())
+            add(m_files->configOf(i));
+    m_session->source(SourceGraph::Mqtt)->monitorExactly(m_mqttMonitored, topics);
+}
+
 bool MapPage::usesRos2() const
 {
     return m_doc->config().layout == ConfigLayout::Ros2 && m_session->isRos2Running();
@@ -390,14 +411,16 @@ void MapPage::updateHealth()
         m_rosBridged->setSourceModel(topics);
         updateBridgedTopics();
     }
-    const QHash<QString, TopicFigures> monitored = m_session->rosSource(ros2)->figures(now);
+    const QHash<QString, TopicFigures> monitored = m_session->source(ros2 ? SourceGraph::Ros2 : SourceGraph::Ros1)->figures(now);
+    monitorMappedMqttTopics();
+    const QHash<QString, TopicFigures> mqtt = m_session->source(SourceGraph::Mqtt)->figures(now);
     const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_session->ros2()->graph()) : RosGraph();
     MappingHealthEvaluator::Inputs in;
     in.graph = ros2 ? &ros2Graph : &m_session->rosGraph()->graph();
     in.rosReachable = ros2 || m_session->rosGraph()->isReachable(); // ROS 2 has no master to miss
     in.ros2 = ros2 ? &m_session->ros2()->graph() : nullptr;
     in.monitored = &monitored;
-    in.mqtt = m_session->mqttTopics();
+    in.mqtt = &mqtt;
     in.mqttConnected = m_session->mqtt()->state() == MqttConnection::State::Connected;
     in.nowNs = now;
     const QHash<quint64, MappingHealth> shown = MappingHealthEvaluator::evaluate(m_doc->config(), in);

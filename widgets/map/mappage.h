@@ -4,6 +4,8 @@
 #include "base/topicmime.h"
 #include "config/bridgeconfig.h"
 
+#include <QPointer>
+#include <QSet>
 #include <QWidget>
 
 class BridgedTopicsProxy;
@@ -33,6 +35,7 @@ class MapPage : public QWidget
     Q_OBJECT
 public:
     MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent = nullptr);
+    ~MapPage() override;
 
     ConfigEditor* editor() const { return m_editor; }
     QTableView* rosView() const { return m_rosView; }
@@ -72,10 +75,14 @@ private:
     static void plan(Plan& p, const BridgeConfig& config, const Mapping& proposed);
     bool dropOnMappings(const QMimeData* data, int row);
     void updateBridgedTopics();
+    /// Monitors the MQTT topics of every open config's mappings on the session's MQTT source (and
+    /// no other), whose figures the health takes.
+    void monitorMappedMqttTopics();
     void bridgeSelectedRos();
     void bridgeSelectedMqtt();
 
-    LiveSession* m_session;
+    QPointer<LiveSession> m_session; ///< may go first when the window closes
+    QSet<QString> m_mqttMonitored;
     ConfigDocument* m_doc;
     QUndoStack* m_undo;
     ConfigEditor* m_editor;

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+#include "mqttsource.h"
+
+#include "mqtt/mqtttopictree.h"
+
+#include <algorithm>
+
+MqttSource::MqttSource(const MqttTopicTree* tree)
+    : m_tree(tree)
+{ }
+
+MqttSource::~MqttSource() = default;
+
+void MqttSource::add(const std::vector<MqttMessage>& batch)
+{
+    if (m_monitored.isEmpty() && m_watched.isEmpty())
+        return;
+    QHash<QString, QString> types; // a watched topic's announced type, looked up once per batch
+    for (const MqttMessage& m : batch) {
+        if (m_arrivals && m_monitored.contains(m.topic)) {
+            SourceHead h {SourceGraph::Mqtt, m.topic, m.receivedNs, int(m.payload.size()),
+                          m.payload.left(SourceHead::kHeadBytes)};
+            m_arrivals->push(std::move(h));
+        }
+        if (const auto w = m_watched.find(m.topic); w != m_watched.end()) {
+            auto type = types.find(m.topic);
+            if (type == types.end()) {
+                const auto announced = m_tree->announcedType(m.topic);
+                type = types.insert(m.topic, announced ? announced->name : QString());
+            }
+            w->push(SourceArrival {SourceGraph::Mqtt, m.topic, *type, m.receivedNs, m.payload}, m.payload.size());
+        }
+    }
+}
+
+void MqttSource::monitor(const QString& topic)
+{
+    ++m_monitored[topic];
+}
+
+void MqttSource::unmonitor(const QString& topic)
+{
+    const auto it = m_monitored.find(topic);
+    if (it != m_monitored.end() && --*it <= 0)
+        m_monitored.erase(it);
+}
+
+bool MqttSource::isMonitored(const QString& topic) const
+{
+    return m_monitored.contains(topic);
+}
+
+QHash<QString, TopicFigures> MqttSource::figures(qint64 nowNs) const
+{
+    Q_UNUSED(nowNs) // the tree's rates are those of its last tick, on the same drain
+    QHash<QString, TopicFigures> out;
+    for (auto it = m_monitored.cbegin(); it != m_monitored.cend(); ++it) {
+        const auto info = m_tree->info(it.key());
+        if (!info)
+            continue; // never seen on the broker
+        TopicFigures f;
+        f.messages = info->messages;
+        f.bytes = info->bytes;
+        f.lastSize = info->lastSize;
+        f.lastNs = info->lastNs;
+        f.rateHz = info->rate;
+        f.bytesPerSecond = info->messages ? info->rate * double(info->bytes) / double(info->messages) : 0;
+        f.type = info->rosType ? info->rosType->name : QString();
+        if (info->latencySamples)
+            f.lastLatencyMs = info->lastLatencyMs;
+        out.insert(it.key(), f);
+    }
+    return out;
+}
+
+void MqttSource::keepArrivals(std::size_t maxHeads)
+{
+    if (maxHeads == 0)
+        m_arrivals.reset();
+    else
+        m_arrivals = std::make_unique<EventBuffer<SourceHead>>(maxHeads);
+}
+
+std::vector<SourceHead> MqttSource::takeArrivals()
+{
+    return m_arrivals ? m_arrivals->take() : std::vector<SourceHead>();
+}
+
+quint64 MqttSource::droppedArrivals() const
+{
+    return m_arrivals ? m_arrivals->dropped() : 0;
+}
+
+void MqttSource::watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+{
+    m_watched[topic].setLimits(maxMessages, maxBytes);
+}
+
+void MqttSource::unwatch(const QString& topic)
+{
+    m_watched.remove(topic);
+}
+
+std::vector<SourceArrival> MqttSource::takeWatched(const QString& topic)
+{
+    const auto w = m_watched.find(topic);
+    return w == m_watched.end() ? std::vector<SourceArrival>() : w->take();
+}
+
+quint64 MqttSource::droppedWatched(const QString& topic) const
+{
+    const auto w = m_watched.constFind(topic);
+    return w == m_watched.cend() ? 0 : w->dropped();
+}

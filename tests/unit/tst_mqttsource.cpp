@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: MIT
+// The broker's topics as a MessageSource: counted monitoring, figures of monitored topics only,
+// bounded heads and watched queues that count what they drop, and types from mqtt_client's
+// announcements, fed as the live session feeds it (the batch, then the topic tree).
+#include "mqtt/mqttsource.h"
+#include "mqtt/mqtttopictree.h"
+#include "wire/mqttclientwire.h"
+
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kStart = 1'700'000'000'000'000'000LL;
+constexpr qint64 kMs = 1'000'000;
+
+MqttMessage message(const QString& topic, const QByteArray& payload, qint64 ns, bool retained = false)
+{
+    MqttMessage m;
+    m.topic = topic;
+    m.payload = payload;
+    m.receivedNs = ns;
+    m.retained = retained;
+    return m;
+}
+
+/// One drain: the source has the batch before the tree, as in LiveSession::drainNow().
+void drain(MqttSource& source, MqttTopicTree& tree, std::vector<MqttMessage> batch, qint64 nowNs)
+{
+    source.add(batch);
+    tree.apply(std::move(batch));
+    tree.tick(nowNs);
+}
+
+const RosMsgTypeInfo kPoint {u"938fa65709584ad8e77d238529be13b8"_s, u"geometry_msgs/PointStamped"_s,
+                             u"Header header\ngeometry_msgs/Point point\n"_s, true};
+} // namespace
+
+class TestMqttSource : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void monitoringIsCountedAndGivesFiguresOfMonitoredTopicsOnly()
+    {
+        MqttTopicTree tree;
+        MqttSource source(&tree);
+        QCOMPARE(source.sourceGraph(), SourceGraph::Mqtt);
+        source.monitor(u"lab/pose"_s);
+        source.monitor(u"lab/pose"_s); // Map health and Watch both
+        source.monitor(u"lab/never"_s);
+        drain(source, tree,
+              {message(MqttClientWire::typeTopicPrefix() + u"lab/pose"_s, MqttClientWire::encodeType(kPoint),
+                       kStart, true),
+               message(u"lab/other"_s, "x", kStart)},
+              kStart);
+        std::vector<MqttMessage> batch;
+        for (int i = 0; i < 20; ++i)
+            batch.push_back(message(u"lab/pose"_s, MqttClientWire::stamped(kStart + i * 100 * kMs, QByteArray(40, 'p')),
+                                    kStart + i * 100 * kMs + 3 * kMs));
+        drain(source, tree, std::move(batch), kStart + 2000 * kMs);
+
+        QHash<QString, TopicFigures> f = source.figures(kStart + 2000 * kMs);
+        QCOMPARE(f.size(), 1); // lab/other is not monitored, lab/never was never seen
+        const TopicFigures& pose = f.value(u"lab/pose"_s);
+        QCOMPARE(pose.messages, quint64(20));
+        QCOMPARE(pose.bytes, quint64(20 * (8 + 40)));
+        QCOMPARE(pose.lastSize, 48);
+        QCOMPARE(pose.lastNs, kStart + 1903 * kMs);
+        QCOMPARE(pose.type, u"geometry_msgs/PointStamped"_s);
+        QVERIFY(pose.lastLatencyMs.has_value());
+        QVERIFY2(qAbs(*pose.lastLatencyMs - 3) < 0.01, qPrintable(QString::number(*pose.lastLatencyMs)));
+
+        source.unmonitor(u"lab/pose"_s);
+        QVERIFY(source.isMonitored(u"lab/pose"_s)); // one user left
+        source.unmonitor(u"lab/pose"_s);
+        QVERIFY(!source.isMonitored(u"lab/pose"_s));
+        source.unmonitor(u"lab/pose"_s); // one too many: nothing to balance, no harm
+        QVERIFY(!source.figures(kStart).contains(u"lab/pose"_s));
+    }
+
+    void headsAreBoundedAndCountDrops()
+    {
+        MqttTopicTree tree;
+        MqttSource source(&tree);
+        source.monitor(u"a"_s);
+        std::vector<MqttMessage> batch {message(u"a"_s, "short", kStart)};
+        QVERIFY(source.takeArrivals().empty()); // not kept before keepArrivals()
+        source.add(batch);
+        QVERIFY(source.takeArrivals().empty());
+
+        source.keepArrivals(3);
+        batch.clear();
+        for (int i = 0; i < 5; ++i)
+            batch.push_back(message(u"a"_s, QByteArray(1000, char('0' + i)), kStart + i));
+        batch.push_back(message(u"b"_s, "unmonitored", kStart + 9));
+        source.add(batch);
+        const std::vector<SourceHead> heads = source.takeArrivals();
+        QCOMPARE(heads.size(), std::size_t(3)); // the oldest three: a full buffer drops what comes
+        QCOMPARE(source.droppedArrivals(), quint64(2));
+        for (std::size_t i = 0; i < heads.size(); ++i) {
+            QCOMPARE(heads[i].graph, SourceGraph::Mqtt);
+            QCOMPARE(heads[i].topic, u"a"_s);
+            QCOMPARE(heads[i].size, 1000);
+            QCOMPARE(heads[i].head, QByteArray(SourceHead::kHeadBytes, char('0' + i)));
+            QCOMPARE(heads[i].receivedNs, kStart + qint64(i));
+        }
+        QVERIFY(source.takeArrivals().empty());
+        source.keepArrivals(0);
+        source.add(batch);
+        QVERIFY(source.takeArrivals().empty());
+    }
+
+    void watchedTopicsKeepTheNewestWithinTheirBoundsAndTheirType()
+    {
+        MqttTopicTree tree;
+        MqttSource source(&tree);
+        drain(source, tree,
+              {message(MqttClientWire::typeTopicPrefix() + u"lab/pose"_s, MqttClientWire::encodeType(kPoint),
+                       kStart, true)},
+              kStart);
+        source.watch(u"lab/pose"_s, 4, 100); // four messages, 100 bytes
+        std::vector<MqttMessage> batch;
+        for (int i = 0; i < 10; ++i)
+            batch.push_back(message(u"lab/pose"_s, QByteArray(30, char('a' + i)), kStart + i));
+        source.add(batch);
+        const std::vector<SourceArrival> kept = source.takeWatched(u"lab/pose"_s);
+        QCOMPARE(kept.size(), std::size_t(3)); // 4 × 30 bytes is over 100
+        QCOMPARE(source.droppedWatched(u"lab/pose"_s), quint64(7));
+        for (std::size_t i = 0; i < kept.size(); ++i) {
+            QCOMPARE(kept[i].graph, SourceGraph::Mqtt);
+            QCOMPARE(kept[i].type, u"geometry_msgs/PointStamped"_s);
+            QCOMPARE(kept[i].receivedNs, kStart + 7 + qint64(i));
+            QCOMPARE(kept[i].bytes, batch[7 + i].payload);
+            QCOMPARE(kept[i].bytes.constData(), batch[7 + i].payload.constData()); // shared, not copied
+        }
+        QVERIFY(source.takeWatched(u"lab/pose"_s).empty());
+        QVERIFY(source.takeWatched(u"lab/other"_s).empty());
+        source.unwatch(u"lab/pose"_s);
+        source.add(batch);
+        QVERIFY(source.takeWatched(u"lab/pose"_s).empty());
+        QCOMPARE(source.droppedWatched(u"lab/pose"_s), quint64(0));
+    }
+
+    // What a peer floods a watched topic with never grows the queue past its bounds.
+    void aFloodStaysWithinTheWatchedBounds()
+    {
+        MqttTopicTree tree;
+        MqttSource source(&tree);
+        source.watch(u"flood"_s, 1000, 4 * 1024 * 1024);
+        const QByteArray kib(1024, 'x');
+        for (int round = 0; round < 20; ++round) {
+            std::vector<MqttMessage> batch;
+            for (int i = 0; i < 10'000; ++i) {
+                QByteArray payload = kib;
+                payload[0] = char(i); // each its own bytes, as Paho hands them
+                batch.push_back(message(u"flood"_s, payload, kStart + i));
+            }
+            source.add(batch);
+        }
+        const std::vector<SourceArrival> kept = source.takeWatched(u"flood"_s);
+        QCOMPARE(kept.size(), std::size_t(1000));
+        QCOMPARE(source.droppedWatched(u"flood"_s), quint64(200'000 - 1000));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMqttSource)
+#include "tst_mqttsource.moc"
