@@ -105,6 +105,9 @@ MainWindow::MainWindow(QWidget* parent)
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
     connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
             [this](const QString& path) { m_reports->addInputs({path}); });
+    // Measurements dropped on the Reports page open there, the one way files open (mainwindowfiles.cpp).
+    connect(m_reports, &ReportsPage::measurementsDropped, this,
+            [this](const QStringList& paths) { openAndReport(paths, Measurements::Compare); });
     // A finished cell of an experiment opens on the Measure page, as any run.
     connect(m_experiments, &ExperimentPage::openRunRequested, this, [this](const QString& path) {
         QString error;

@@ -57,13 +57,17 @@ public:
     /// Writes the window's state now (also done on close once rememberSession() was called).
     void saveSession() const;
 
+    /// Where measurements (runs, suite CSV, bags) open: one on Measure and several on Reports
+    /// (Show), or all on Reports (Compare: dropped on that page).
+    enum class Measurements { Show, Compare };
     /// Opens each file where it belongs and shows the page of the first that opened: a bridge
     /// config on Map (more configs are watched on Links), a pipeline and a single run, suite CSV
     /// or bag on Measure, several of those on Reports, an experiment's folder on Experiments.
-    /// Each goes among the recent files. Returns what could not be opened, a line each.
-    QStringList openPaths(const QStringList& paths);
+    /// Each goes among the recent files. Returns what could not be opened, a line each. Every file
+    /// the window is given comes through here: drops, File › Open, Open Recent, the command line.
+    QStringList openPaths(const QStringList& paths, Measurements measurements = Measurements::Show);
     /// openPaths(), saying what did not open in a (non-blocking) message box; returns it too.
-    QStringList openAndReport(const QStringList& paths);
+    QStringList openAndReport(const QStringList& paths, Measurements measurements = Measurements::Show);
 
 protected:
     void closeEvent(class QCloseEvent* event) override;

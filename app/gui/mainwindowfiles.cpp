@@ -53,38 +53,52 @@ Kind kindOf(const QString& path)
     return Kind::Config;
 }
 
-} // namespace
-
-QStringList MainWindow::openPaths(const QStringList& paths)
+/// The paths given, by kind, in their order, and those that are none.
+struct Sorted
 {
-    QStringList errors;
     QStringList configs, pipelines, plans, measurements, experiments;
+    QStringList errors;
+};
+
+Sorted sortByKind(const QStringList& paths)
+{
+    Sorted s;
     for (const QString& path : paths) {
         if (!QFileInfo::exists(path)) {
-            errors << tr("%1: no such file or folder").arg(path);
+            s.errors << MainWindow::tr("%1: no such file or folder").arg(path);
             continue;
         }
         switch (kindOf(path)) {
         case Kind::Config:
-            configs << path;
+            s.configs << path;
             break;
         case Kind::Pipeline:
-            pipelines << path;
+            s.pipelines << path;
             break;
         case Kind::Plan:
-            plans << path;
+            s.plans << path;
             break;
         case Kind::Measurement:
-            measurements << path;
+            s.measurements << path;
             break;
         case Kind::Experiment:
-            experiments << path;
+            s.experiments << path;
             break;
         case Kind::Folder:
-            errors << tr("%1: a folder, but not an experiment's (it has no experiment plan)").arg(path);
+            s.errors << MainWindow::tr("%1: a folder, but not an experiment's (it has no experiment plan)").arg(path);
             break;
         }
     }
+    return s;
+}
+
+} // namespace
+
+QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
+{
+    Sorted sorted = sortByKind(paths);
+    QStringList& errors = sorted.errors;
+    const QStringList& measurements = sorted.measurements;
     // The page to show: that of the first path that opened.
     qsizetype firstOpened = paths.size();
     QWidget* page = nullptr;
@@ -105,7 +119,7 @@ QStringList MainWindow::openPaths(const QStringList& paths)
     // Every bridge config opens on the Map page, a tab each (a lab has two ends); the Links page
     // watches them all.
     QString firstConfig;
-    for (const QString& path : configs) {
+    for (const QString& path : std::as_const(sorted.configs)) {
         if (m_files->openFile(path, &error)) {
             opened(path, m_map);
             if (firstConfig.isEmpty())
@@ -117,7 +131,7 @@ QStringList MainWindow::openPaths(const QStringList& paths)
     for (int i = 0; i < m_files->openCount(); ++i) // the first given is the one shown
         if (!firstConfig.isEmpty() && m_files->pathOf(i) == firstConfig)
             m_files->activate(i);
-    for (const QString& path : pipelines) { // the last one stays
+    for (const QString& path : std::as_const(sorted.pipelines)) { // the last one stays
         if (m_measurePage->loadPipeline(path, &error)) {
             m_files->addRecent(path);
             opened(path, m_measurePage);
@@ -126,21 +140,21 @@ QStringList MainWindow::openPaths(const QStringList& paths)
         }
     }
     // One measurement is shown on the Measure page; several are compared on the Reports page.
-    if (measurements.size() == 1) {
+    if (measurements.size() == 1 && to == Measurements::Show) {
         if (m_measurePage->runBar()->openRun(measurements.first(), &error)) {
             m_files->addRecent(measurements.first());
             opened(measurements.first(), m_measurePage);
         } else {
             fail(measurements.first(), error);
         }
-    } else if (measurements.size() > 1) {
+    } else if (!measurements.isEmpty()) {
         m_reports->addInputs(measurements); // it checks each and lists what does not read
         for (const QString& path : measurements) {
             m_files->addRecent(path);
             opened(path, m_reports);
         }
     }
-    for (const QString& path : plans) { // the last one stays
+    for (const QString& path : std::as_const(sorted.plans)) { // the last one stays
         if (m_experiments->openPlan(path, &error)) {
             m_files->addRecent(path);
             opened(path, m_experiments);
@@ -148,7 +162,7 @@ QStringList MainWindow::openPaths(const QStringList& paths)
             fail(path, error);
         }
     }
-    for (const QString& path : experiments) {
+    for (const QString& path : std::as_const(sorted.experiments)) {
         if (m_experiments->openFolder(path, &error)) {
             m_files->addRecent(path);
             opened(path, m_experiments);
@@ -161,9 +175,9 @@ QStringList MainWindow::openPaths(const QStringList& paths)
     return errors;
 }
 
-QStringList MainWindow::openAndReport(const QStringList& paths)
+QStringList MainWindow::openAndReport(const QStringList& paths, Measurements measurements)
 {
-    const QStringList errors = openPaths(paths);
+    const QStringList errors = openPaths(paths, measurements);
     if (errors.isEmpty())
         return errors;
     statusBar()->showMessage(errors.first(), 10000);

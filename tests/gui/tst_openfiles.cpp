@@ -83,6 +83,16 @@ class TestOpenFiles : public QObject
     QTemporaryDir m_dir;
     QString m_config, m_otherConfig, m_pipeline, m_csvA, m_csvB, m_bag, m_experiment, m_plan;
 
+    static QMenu* recentMenu(MainWindow& w)
+    {
+        for (QAction* a : w.menuBar()->actions())
+            if (a->menu())
+                for (QAction* b : a->menu()->actions())
+                    if (b->menu() && b->text().contains(u"Recent"_s))
+                        return b->menu();
+        return nullptr;
+    }
+
     QString write(const QString& name, const QByteArray& bytes)
     {
         const QString path = m_dir.filePath(name);
@@ -253,12 +263,7 @@ private slots:
         QTRY_VERIFY(linkBridges(w.linksPage()).contains(u"cloud"_s));
 
         // Open Recent has runs and pipelines as well as configs, and opens each where it belongs.
-        QMenu* recent = nullptr;
-        for (QAction* a : w.menuBar()->actions())
-            if (a->menu())
-                for (QAction* b : a->menu()->actions())
-                    if (b->menu() && b->text().contains(u"Recent"_s))
-                        recent = b->menu();
+        QMenu* recent = recentMenu(w);
         QVERIFY(recent);
         QStringList entries;
         for (QAction* a : recent->actions())
@@ -306,6 +311,8 @@ private slots:
         // Its own drop adds measurements as inputs, even one; a config is not its to take.
         QVERIFY(drop(w.reportsPage(), {m_csvA}));
         QCOMPARE(w.reportsPage()->inputs(), QStringList {m_csvA});
+        QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
+        QVERIFY(!w.measure()->isShowingRun());
         // A config dragged over it is not its to take: the page leaves it to the window (Qt passes
         // an ignored drag on to the parent), which opens it on the Map page.
         QMimeData mime;
@@ -316,6 +323,18 @@ private slots:
         QVERIFY(drop(&w, {m_config}));
         QCOMPARE(w.pages()->currentWidget(), w.mapPage());
         QCOMPARE(w.reportsPage()->inputs(), QStringList {m_csvA});
+        // It opens them the window's one way: a measurement never opened before goes among the
+        // recent files as from any other drop.
+        const QString fresh = m_dir.filePath(u"fresh.csv"_s);
+        QVERIFY(QFile::copy(m_csvB, fresh));
+        w.pages()->setCurrentWidget(w.reportsPage());
+        QVERIFY(drop(w.reportsPage(), {fresh}));
+        QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
+        QCOMPARE(w.reportsPage()->inputs(), (QStringList {m_csvA, fresh}));
+        QStringList entries;
+        for (QAction* a : recentMenu(w)->actions())
+            entries << a->text();
+        QVERIFY2(entries.join(u'\n').contains(u"fresh.csv"_s), qPrintable(entries.join(u'\n')));
     }
 
     void commandLineOpensEveryFile()

@@ -358,8 +358,8 @@ void ReportsPage::dropEvent(QDropEvent* event)
     files.removeIf([](const QString& f) { return !RunLoader::isMeasurement(f); });
     if (files.isEmpty())
         return;
-    addInputs(files);
     event->acceptProposedAction();
+    emit measurementsDropped(files);
 }
 
 bool ReportsPage::exportTo(const QString& path, QString* error)

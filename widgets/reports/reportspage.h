@@ -54,9 +54,12 @@ public:
 signals:
     /// The preview shows the report of the current inputs and options.
     void previewUpdated();
+    /// Measurements were dropped on the page (from a file manager): the window opens them here,
+    /// through its one way of opening files, which adds them as inputs.
+    void measurementsDropped(const QStringList& paths);
 
 protected:
-    /// Files dropped on the page (from a file manager) become inputs.
+    /// Measurements dropped on the page are compared here; anything else goes on to the window.
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
