@@ -20,7 +20,7 @@ QStringList categoryNames()
 {
     QStringList names;
     for (const QLoggingCategory& (*c)() :
-         {lcConfig, lcMqtt, lcRos, lcRos2, lcRecord, lcReport, lcBridge, lcSession, lcDemo})
+         {lcConfig, lcMqtt, lcRos, lcRos2, lcRecord, lcReport, lcBridge, lcSession, lcDemo, lcWatch})
         names << QString::fromLatin1(c().categoryName());
     return names;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "referencebridge.h"
 
+#include "base/logging.h"
 #include "base/wallclock.h"
 #include "bridge/bridgespec.h"
 #include "mqtt/mqttlink.h"
@@ -399,6 +400,8 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
     d->ros = std::make_unique<RosEndpoint>();
     d->ros->setNoticeHandler(d->log);
     d->ros->setMaxHeldBytes(d->options.maxQueuedBytes / 2);
+    qCDebug(lcBridge) << "ROS 1 bridge: at most" << d->options.maxQueuedBytes / 2
+                      << "bytes held towards ROS and as many towards the broker";
     const QString name = d->options.nodeName.isEmpty() ? u"mqtt_client"_s : d->options.nodeName;
     d->log(tr("waiting for the ROS master…"));
     if (!d->ros->start(name, d->options.rosMaster, keepWaiting, error))

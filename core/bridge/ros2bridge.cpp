@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "bridge/ros2bridge.h"
 
+#include "base/logging.h"
 #include "base/wallclock.h"
 #include "bridge/bridgespec.h"
 #include "bridge/ros2bridgewire.h"
@@ -444,6 +445,8 @@ void Ros2Bridge::Private::startMqtt()
     // for those in the pipe to the DDS process.
     const qint64 bound = options.maxQueuedBytes / 4;
     ros->setPublishBound(bound);
+    qCDebug(lcBridge) << "ROS 2 bridge: at most" << options.maxQueuedBytes / 2 << "bytes held towards the broker,"
+                      << bound << "waiting for the event loop and" << bound << "in the pipe to DDS";
     // Paho's thread: handed to the event loop within the bound, in order.
     mqtt->setMessageHandler([p, bound](const QString& topic, const QByteArray& payload, qint64 t) {
         const qint64 size = payload.size();

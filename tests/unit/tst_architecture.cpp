@@ -2,6 +2,8 @@
 // The layers (cmake/layers.txt): every #include under core/, widgets/ and app/ runs down the table,
 // third-party headers stay in the folder that wraps them, there is no cycle between folders,
 // docs/ARCHITECTURE.md's table is the file's, and the build refuses a forbidden include.
+#include "base/logging.h"
+
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
@@ -346,6 +348,55 @@ private slots:
         for (const Layer& l : std::as_const(m_table.layers))
             expected << l.folder + u": "_s + l.uses.join(u' ');
         QCOMPARE(rows, expected);
+    }
+
+    // Issue 35: the logging categories the code has are the ones ARCHITECTURE.md's table and the
+    // user guide list, in the order of Logging::categoryNames(); each is defined once and used.
+    void everyLoggingCategoryIsDocumentedAndUsed()
+    {
+        const QStringList names = Logging::categoryNames();
+        const QString code = readAll(source(u"core/base/logging.cpp"_s));
+        static const QRegularExpression defined(u"Q_LOGGING_CATEGORY\\((\\w+), \"([^\"]+)\""_s);
+        QStringList definedNames, variables;
+        for (auto it = defined.globalMatch(code); it.hasNext();) {
+            const QRegularExpressionMatch m = it.next();
+            variables << m.captured(1);
+            definedNames << m.captured(2);
+        }
+        QCOMPARE(names, definedNames);
+
+        const QString doc = readAll(source(u"docs/ARCHITECTURE.md"_s));
+        const qsizetype from = doc.indexOf(u"<!-- logging -->"_s);
+        const qsizetype to = doc.indexOf(u"<!-- /logging -->"_s);
+        QVERIFY2(from >= 0 && to > from, "docs/ARCHITECTURE.md has no <!-- logging --> table");
+        QStringList documented;
+        static const QRegularExpression row(u"^\\|\\s*`(bridgescope\\.[a-z0-9]+)`"_s);
+        for (const QString& line : doc.mid(from, to - from).split(u'\n'))
+            if (const QRegularExpressionMatch m = row.match(line); m.hasMatch())
+                documented << m.captured(1);
+        QCOMPARE(documented, names);
+
+        const QString guide = readAll(source(u"docs/user-guide.md"_s));
+        for (const QString& name : names)
+            QVERIFY2(guide.contains(u'`' + name + u'`'), qPrintable(name + u" is not in the user guide"_s));
+
+        // Defined in logging.cpp only, and each used somewhere else.
+        QHash<QString, int> uses;
+        for (const QString& folder : {u"core"_s, u"app"_s, u"widgets"_s}) {
+            QDirIterator files(source(folder), {u"*.cpp"_s, u"*.h"_s}, QDir::Files, QDirIterator::Subdirectories);
+            while (files.hasNext()) {
+                const QString path = files.next();
+                if (path.endsWith(u"/base/logging.cpp"_s) || path.endsWith(u"/base/logging.h"_s))
+                    continue;
+                const QString text = readAll(path);
+                QVERIFY2(!text.contains(u"Q_LOGGING_CATEGORY("_s), qPrintable(path));
+                for (const QString& v : std::as_const(variables))
+                    if (text.contains(u'(' + v + u')'))
+                        ++uses[v];
+            }
+        }
+        for (const QString& v : std::as_const(variables))
+            QVERIFY2(uses.value(v) > 0, qPrintable(v + u" is never used"_s));
     }
 
     // The build enforces the table too: in a config source's compile command, an MQTT header is
