@@ -159,13 +159,15 @@ void LinkTraffic::refreshLoss(qint64 nowNs)
 
 LinkFigures LinkTraffic::liveFigures() const
 {
+    // Counts are live; rates are those of the last refresh.
+    const auto counts = [](const SideFigures& live, SideFigures& out) {
+        out.messages = live.messages;
+        out.bytes = live.bytes;
+        out.lastNs = live.lastNs;
+    };
     LinkFigures f = figures;
-    f.source.messages = src.f.messages;
-    f.source.bytes = src.f.bytes;
-    f.source.lastNs = src.f.lastNs;
-    f.destination.messages = dst.f.messages;
-    f.destination.bytes = dst.f.bytes;
-    f.destination.lastNs = dst.f.lastNs;
+    counts(src.f, f.source);
+    counts(dst.f, f.destination);
     f.seqGaps = seq.gaps;
     f.duplicates = seq.duplicates;
     f.reordered = seq.reordered;
