@@ -101,44 +101,102 @@ MqttProfile brokerOf(const BridgeConfig& c)
     return p;
 }
 
-/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
-int parseWatch(const QStringList& arguments, WatchRequest* request)
+/// The command's options.
+struct WatchOptions
 {
-    QCommandLineParser parser;
-    const QCommandLineOption broker(u"broker"_s,
-                                    Watch::tr("Broker URL (default: the first config's broker)."), u"URL"_s);
-    const QCommandLineOption master(u"ros-master"_s, Watch::tr("ROS master URI (default $ROS_MASTER_URI)."),
-                                    u"URI"_s, RosMasterApi::defaultMasterUri());
-    const QCommandLineOption rules(
-        u"rules"_s, Watch::tr("Rules YAML: thresholds for all links and per link."), u"RULES.yaml"_s);
-    const QCommandLineOption metrics(
+    const QCommandLineOption broker {u"broker"_s,
+                                     Watch::tr("Broker URL (default: the first config's broker)."), u"URL"_s};
+    const QCommandLineOption master {u"ros-master"_s, Watch::tr("ROS master URI (default $ROS_MASTER_URI)."),
+                                     u"URI"_s, RosMasterApi::defaultMasterUri()};
+    const QCommandLineOption rules {
+        u"rules"_s, Watch::tr("Rules YAML: thresholds for all links and per link."), u"RULES.yaml"_s};
+    const QCommandLineOption metrics {
         u"metrics"_s,
         Watch::tr("Serve Prometheus metrics at http://HOST:PORT/metrics (e.g. 127.0.0.1:9464)."),
-        u"HOST:PORT"_s);
-    const QCommandLineOption events(u"events-jsonl"_s,
-                                    Watch::tr("Append every event to FILE as a JSON line."), u"FILE"_s);
-    const QCommandLineOption seconds(u"seconds"_s, Watch::tr("Stop after S seconds (default: at Ctrl+C)."),
-                                     u"S"_s);
-    const QCommandLineOption output({u"o"_s, u"output"_s},
-                                    Watch::tr("Record the events in this run file (never overwritten); "
-                                              "bridgescope report lists them."),
-                                    u"RUN.bsrun"_s);
-    const QCommandLineOption name(u"name"_s, Watch::tr("The run's name (default: the file's base name)."),
-                                  u"NAME"_s);
-    const QCommandLineOption notes(u"notes"_s, Watch::tr("Notes kept with the run."), u"TEXT"_s);
-    const QCommandLineOption noDiscover(
+        u"HOST:PORT"_s};
+    const QCommandLineOption events {u"events-jsonl"_s,
+                                     Watch::tr("Append every event to FILE as a JSON line."), u"FILE"_s};
+    const QCommandLineOption seconds {u"seconds"_s, Watch::tr("Stop after S seconds (default: at Ctrl+C)."),
+                                      u"S"_s};
+    const QCommandLineOption output {{u"o"_s, u"output"_s},
+                                     Watch::tr("Record the events in this run file (never overwritten); "
+                                               "bridgescope report lists them."),
+                                     u"RUN.bsrun"_s};
+    const QCommandLineOption name {u"name"_s, Watch::tr("The run's name (default: the file's base name)."),
+                                   u"NAME"_s};
+    const QCommandLineOption notes {u"notes"_s, Watch::tr("Notes kept with the run."), u"TEXT"_s};
+    const QCommandLineOption noDiscover {
         u"no-discover"_s,
-        Watch::tr("Watch only the configs' mappings, not the links mqtt_client announces on the broker."));
-    const QCommandLineOption pipeline(
+        Watch::tr("Watch only the configs' mappings, not the links mqtt_client announces on the broker.")};
+    const QCommandLineOption pipeline {
         u"pipeline"_s,
         Watch::tr(
             "The timestamp topics' pipeline: a mapping with a timestamp_topic_prefix takes its latency from "
             "PREFIX/in to PREFIX/out, and -o records the samples as well."),
-        u"PIPELINE.yaml"_s);
-    const QCommandLineOption allowEmpty(
-        u"allow-empty"_s, Watch::tr("Exit 0 even when neither the broker nor the master was ever reached."));
-    parser.addOptions({broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover,
-                       pipeline, allowEmpty});
+        u"PIPELINE.yaml"_s};
+    const QCommandLineOption allowEmpty {
+        u"allow-empty"_s, Watch::tr("Exit 0 even when neither the broker nor the master was ever reached.")};
+
+    void addTo(QCommandLineParser& parser) const
+    {
+        parser.addOptions({broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover,
+                           pipeline, allowEmpty});
+    }
+};
+
+/// The files the options name (rules, pipeline) and the broker: false after saying what is wrong.
+bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
+{
+    QString why;
+    request->broker = parser.isSet(o.broker) ? MqttProfile::fromUrl(parser.value(o.broker))
+                                             : brokerOf(request->configs.first().second);
+    if (!request->broker.validate(&why)) {
+        err(why);
+        return false;
+    }
+    if (parser.isSet(o.rules)) {
+        const std::optional<WatchRules> r = WatchRules::load(parser.value(o.rules), &why);
+        if (!r) {
+            err(why);
+            return false;
+        }
+        request->rules = *r;
+    }
+    if (parser.isSet(o.pipeline)) {
+        request->pipeline = Pipeline::load(parser.value(o.pipeline), &why);
+        if (!request->pipeline) {
+            err(why);
+            return false;
+        }
+    }
+    return true;
+}
+
+/// The run's outputs: metrics, events file, run file with its name and notes. False after saying
+/// what is wrong.
+bool readOutputs(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
+{
+    request->metrics = parser.value(o.metrics);
+    request->eventsFile = parser.value(o.events);
+    request->runPath = parser.value(o.output);
+    if ((parser.isSet(o.name) || parser.isSet(o.notes)) && !parser.isSet(o.output)) {
+        err(Watch::tr("--name and --notes describe a run: give -o RUN.bsrun too"));
+        return false;
+    }
+    request->info.name
+        = parser.isSet(o.name) ? parser.value(o.name) : QFileInfo(request->runPath).completeBaseName();
+    if (parser.isSet(o.notes))
+        request->info.notes = parser.value(o.notes)
+            + (request->info.notes.isEmpty() ? QString() : u"\n"_s + request->info.notes);
+    return true;
+}
+
+/// Parses and checks the command line. -1 to go on with `request`, otherwise the exit status.
+int parseWatch(const QStringList& arguments, WatchRequest* request)
+{
+    QCommandLineParser parser;
+    const WatchOptions o;
+    o.addTo(parser);
     RosOptions ros;
     ros.addTo(parser);
     parser.addPositionalArgument(u"CONFIG"_s, Watch::tr("mqtt_client configs whose mappings are watched."),
@@ -157,41 +215,22 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
             "metrics port could not be served or the run file not written, 2 bad options."));
     if (parsed >= 0)
         return parsed;
-    request->discover = !parser.isSet(noDiscover);
-    if (parser.positionalArguments().isEmpty() && (!parser.isSet(broker) || !request->discover)) {
+    request->discover = !parser.isSet(o.noDiscover);
+    if (parser.positionalArguments().isEmpty() && (!parser.isSet(o.broker) || !request->discover)) {
         err(Watch::tr("watch needs a bridge config, or --broker to watch the links announced there; see "
                       "bridgescope watch --help"));
         return ExitUsage;
     }
     if (!readConfigs(parser.positionalArguments(), request))
         return ExitUsage;
-    if (parser.isSet(seconds) && !CliOutput::readSeconds(parser.value(seconds), &request->seconds)) {
+    if (parser.isSet(o.seconds) && !CliOutput::readSeconds(parser.value(o.seconds), &request->seconds)) {
         err(CliOutput::secondsError());
         return ExitUsage;
     }
-    request->allowEmpty = parser.isSet(allowEmpty);
-    QString why;
-    request->broker = parser.isSet(broker) ? MqttProfile::fromUrl(parser.value(broker))
-                                           : brokerOf(request->configs.first().second);
-    if (!request->broker.validate(&why)) {
-        err(why);
+    request->allowEmpty = parser.isSet(o.allowEmpty);
+    if (!readOptionFiles(parser, o, request))
         return ExitUsage;
-    }
-    if (parser.isSet(rules)) {
-        const std::optional<WatchRules> r = WatchRules::load(parser.value(rules), &why);
-        if (!r) {
-            err(why);
-            return ExitUsage;
-        }
-        request->rules = *r;
-    }
-    if (parser.isSet(pipeline)) {
-        request->pipeline = Pipeline::load(parser.value(pipeline), &why);
-        if (!request->pipeline) {
-            err(why);
-            return ExitUsage;
-        }
-    }
+    QString why;
     if (!ros.read(parser, &why)) {
         err(why);
         return ExitUsage;
@@ -200,20 +239,105 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
         err(line);
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     request->ros1 = ros.ros1;
-    request->masterUri = parser.value(master);
-    request->metrics = parser.value(metrics);
-    request->eventsFile = parser.value(events);
-    request->runPath = parser.value(output);
-    if ((parser.isSet(name) || parser.isSet(notes)) && !parser.isSet(output)) {
-        err(Watch::tr("--name and --notes describe a run: give -o RUN.bsrun too"));
-        return ExitUsage;
+    request->masterUri = parser.value(o.master);
+    return readOutputs(parser, o, request) ? -1 : ExitUsage;
+}
+
+/// The Prometheus endpoint at HOST:PORT, said on stderr; none after saying why.
+std::unique_ptr<WatchMetrics> serveMetrics(const QString& hostPort)
+{
+    QString why;
+    std::unique_ptr<WatchMetrics> metrics = WatchMetrics::serve(hostPort, &why);
+    if (!metrics) {
+        err(why);
+        return nullptr;
     }
-    request->info.name
-        = parser.isSet(name) ? parser.value(name) : QFileInfo(request->runPath).completeBaseName();
-    if (parser.isSet(notes))
-        request->info.notes = parser.value(notes)
-            + (request->info.notes.isEmpty() ? QString() : u"\n"_s + request->info.notes);
-    return -1;
+    // The port that was bound: with port 0 the system chose it.
+    const QString host = hostPort.left(hostPort.lastIndexOf(u':'));
+    err(Watch::tr("metrics at http://%1:%2/metrics").arg(host).arg(metrics->port()));
+    return metrics;
+}
+
+/// Starts the run file of -o: in the measurement's recorder with a pipeline, else in `own`.
+bool startRecording(const WatchRequest& request, MeasureSession* measure, RunRecorder& own)
+{
+    RunInfo info = request.info;
+    info.startedNs = wallClockNs();
+    info.broker = request.broker.url;
+    info.rosMaster = request.masterUri;
+    info.describeThisMachine();
+    QString why;
+    if (measure ? !measure->startRecording(request.runPath, info, &why)
+                : !own.start(request.runPath, info, &why)) {
+        err(why);
+        return false;
+    }
+    return true;
+}
+
+/// The configs' MQTT topics, each once, in their order.
+QStringList mappedMqttTopics(const WatchRequest& request)
+{
+    QStringList watchedTopics;
+    QSet<QString> seenTopics; // a list's contains() is quadratic in a config of 1,000 links
+    for (const auto& [name, config] : request.configs)
+        for (const Mapping& m : config.mappings)
+            if (!seenTopics.contains(m.mqttTopic())) {
+                seenTopics.insert(m.mqttTopic());
+                watchedTopics << m.mqttTopic();
+            }
+    return watchedTopics;
+}
+
+/// The line said every 10 s: the links by level, and every budget that cut something.
+QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopicTree* topics,
+                     const WatchMetrics* metrics)
+{
+    const LinkMonitor* monitor = watch.monitor();
+    int counts[3] = {0, 0, 0};
+    for (int i = 0; i < monitor->linkCount(); ++i)
+        ++counts[int(monitor->level(i))];
+    QString line = Watch::tr("%1 s: %2 ok, %3 warning, %4 alert")
+                       .arg(elapsedMs / 1000)
+                       .arg(counts[0])
+                       .arg(counts[1])
+                       .arg(counts[2]);
+    if (const quint64 evicted = topics->evictedPayloads())
+        line += Watch::tr("; %1 payloads evicted from the topic history (budget %2 MiB)")
+                    .arg(evicted)
+                    .arg(topics->historyBudget() / (1024 * 1024));
+    if (const quint64 untracked = topics->untrackedMessages())
+        line += Watch::tr("; %1 messages on topics not tracked (budget %2 topics, %3 MiB of names)")
+                    .arg(untracked)
+                    .arg(topics->topicBudget())
+                    .arg(topics->structureBudget() / (1024 * 1024));
+    if (const int unwatched = watch.unwatchedLinks())
+        line += Watch::tr("; %1 announced links not watched (cap %2)")
+                    .arg(unwatched)
+                    .arg(WatchSession::kMaxDiscoveredLinks);
+    if (metrics && metrics->droppedClients())
+        line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
+    return line;
+}
+
+/// Sets the live session up for a watch and joins ROS 2 when asked; false after saying why not.
+bool prepareLive(LiveSession& live, const WatchRequest& request)
+{
+    // The topic tree's and ROS topics' figures are for views, which a watch has none of: once a
+    // second (the link monitor reads its own); every drain they cost 7 % of the watch's CPU at
+    // 1,000 links (perf, bench_watch).
+    live.setFiguresInterval(1000);
+    live.setRosMasterUri(request.masterUri);
+    QString why;
+    if (request.ros2 && !live.startRos2(*request.ros2, &why)) {
+        err(why);
+        return false;
+    }
+    // the DDS process ended (a hostile datagram, a runaway): said as it happens, and started again
+    QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
+        err(Watch::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
+    });
+    return true;
 }
 
 /// Watches until the time is up or Ctrl+C; events on stdout (and the file), a summary on stderr.
@@ -221,35 +345,16 @@ int runWatch(const WatchRequest& request)
 {
     std::unique_ptr<WatchMetrics> metrics;
     QString why;
-    if (!request.metrics.isEmpty()) {
-        metrics = WatchMetrics::serve(request.metrics, &why);
-        if (!metrics) {
-            err(why);
-            return ExitFailed;
-        }
-        // The port that was bound: with port 0 the system chose it.
-        const QString host = request.metrics.left(request.metrics.lastIndexOf(u':'));
-        err(Watch::tr("metrics at http://%1:%2/metrics").arg(host).arg(metrics->port()));
-    }
+    if (!request.metrics.isEmpty() && !(metrics = serveMetrics(request.metrics)))
+        return ExitFailed;
     QFile events(request.eventsFile);
     if (!request.eventsFile.isEmpty() && !events.open(QIODevice::WriteOnly | QIODevice::Append)) {
         err(Watch::tr("%1: %2").arg(request.eventsFile, events.errorString()));
         return ExitUsage;
     }
     LiveSession live;
-    // The topic tree's and ROS topics' figures are for views, which a watch has none of: once a
-    // second (the link monitor reads its own); every drain they cost 7 % of the watch's CPU at
-    // 1,000 links (perf, bench_watch).
-    live.setFiguresInterval(1000);
-    live.setRosMasterUri(request.masterUri);
-    if (request.ros2 && !live.startRos2(*request.ros2, &why)) {
-        err(why);
+    if (!prepareLive(live, request))
         return ExitFailed;
-    }
-    // the DDS process ended (a hostile datagram, a runaway): said as it happens, and started again
-    QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
-        err(Watch::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
-    });
     WatchSession watch(&live);
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);
@@ -266,18 +371,8 @@ int runWatch(const WatchRequest& request)
         watch.useMeasurement(measure.get());
         recorder = measure->recorder();
     }
-    if (!request.runPath.isEmpty()) {
-        RunInfo info = request.info;
-        info.startedNs = wallClockNs();
-        info.broker = request.broker.url;
-        info.rosMaster = request.masterUri;
-        info.describeThisMachine();
-        if (measure ? !measure->startRecording(request.runPath, info, &why)
-                    : !ownRecorder.start(request.runPath, info, &why)) {
-            err(why);
-            return ExitUsage;
-        }
-    }
+    if (!request.runPath.isEmpty() && !startRecording(request, measure.get(), ownRecorder))
+        return ExitUsage;
     bool recordFailed = false;
     QObject::connect(recorder, &RunRecorder::failed, [&recordFailed](const QString& failure) {
         err(Watch::tr("recording stopped: %1").arg(failure));
@@ -307,15 +402,7 @@ int runWatch(const WatchRequest& request)
     SourceCheck sources(
         live, request.ros1 && !request.configs.isEmpty(), [&live] { return qint64(live.mqtt()->received()); },
         Watch::tr("MQTT message"));
-    QStringList watchedTopics;
-    QSet<QString> seenTopics; // a list's contains() is quadratic in a config of 1,000 links
-    for (const auto& [name, config] : request.configs)
-        for (const Mapping& m : config.mappings)
-            if (!seenTopics.contains(m.mqttTopic())) {
-                seenTopics.insert(m.mqttTopic());
-                watchedTopics << m.mqttTopic();
-            }
-    sources.setTopics(watchedTopics);
+    sources.setTopics(mappedMqttTopics(request));
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
             if (request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000))
@@ -324,33 +411,8 @@ int runWatch(const WatchRequest& request)
         },
         [&](qint64 elapsedMs) {
             sources.check(elapsedMs);
-            if (elapsedMs / 1000 % 10 != 0)
-                return;
-            int counts[3] = {0, 0, 0};
-            for (int i = 0; i < monitor->linkCount(); ++i)
-                ++counts[int(monitor->level(i))];
-            QString line = Watch::tr("%1 s: %2 ok, %3 warning, %4 alert")
-                               .arg(elapsedMs / 1000)
-                               .arg(counts[0])
-                               .arg(counts[1])
-                               .arg(counts[2]);
-            if (const quint64 evicted = live.mqttTopics()->evictedPayloads())
-                line += Watch::tr("; %1 payloads evicted from the topic history (budget %2 MiB)")
-                            .arg(evicted)
-                            .arg(live.mqttTopics()->historyBudget() / (1024 * 1024));
-            const MqttTopicTree* topics = live.mqttTopics();
-            if (const quint64 untracked = topics->untrackedMessages())
-                line += Watch::tr("; %1 messages on topics not tracked (budget %2 topics, %3 MiB of names)")
-                            .arg(untracked)
-                            .arg(topics->topicBudget())
-                            .arg(topics->structureBudget() / (1024 * 1024));
-            if (const int unwatched = watch.unwatchedLinks())
-                line += Watch::tr("; %1 announced links not watched (cap %2)")
-                            .arg(unwatched)
-                            .arg(WatchSession::kMaxDiscoveredLinks);
-            if (metrics && metrics->droppedClients())
-                line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
-            err(line);
+            if (elapsedMs / 1000 % 10 == 0)
+                err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get()));
         });
     monitor->closeAll(wallClockNs());
     if (recorder->isRecording()) {

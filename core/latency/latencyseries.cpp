@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "latencyseries.h"
 
+#include "latency/quantile.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -144,15 +146,9 @@ double LatencySeries::quantileMs(double q) const
     const qint64 n = count();
     if (n == 0)
         return LatencyStats::nan();
-    // numpy's "linear" method: virtual index q*(n-1), and its lerp that is exact at both ends.
-    const double index = q * double(n - 1);
-    const qint64 lo = std::clamp<qint64>(qint64(std::floor(index)), 0, n - 1);
-    const double t = index - double(lo);
+    const auto [lo, t] = Quantile::rank(n, q);
     const auto [first, second] = m_sorted.atPair(lo);
-    const double a = toMs(first);
-    const double b = toMs(second);
-    const double diff = b - a;
-    return t >= 0.5 ? b - diff * (1 - t) : a + diff * t;
+    return Quantile::lerp(toMs(first), toMs(second), t);
 }
 
 LatencyStats LatencySeries::stats() const

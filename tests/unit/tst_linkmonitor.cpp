@@ -4,6 +4,9 @@
 // and the rules YAML (thresholds, overrides, located errors).
 #include "config/configreader.h"
 #include "fixtures.h"
+#include "latency/latencyengine.h"
+#include "latency/latencystatsmodel.h"
+#include "latency/pipeline.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttsource.h"
 #include "mqtt/mqtttopictree.h"
@@ -556,6 +559,45 @@ private slots:
         m.addPipelineSample({clock.now, clock.now + 7 * kMs}, clock.now);
         clock.advance(1000 * kMs);
         QCOMPARE(m.figures(0).latencySamples, quint64(20));
+    }
+
+    // Issue 35: one definition of p50/p99 in the whole program. The same latency samples give the
+    // same figures on the Links page's model and on the Measure page's statistics (numpy's
+    // interpolated quantile); the link monitor's own nearest-rank percentile said 6 and 10 ms
+    // where the Measure page said 5.5 and 9.91.
+    void linksAndMeasureAgreeOnPercentiles()
+    {
+        LinkDef l = link(Direction::Ros2Mqtt, u"/lab/cloud"_s, u"lab/cloud"_s);
+        l.stampPrefix = u"/lab/link"_s;
+        LinkMonitor m;
+        m.setLinks({l}, kStart);
+        const Pipeline pipeline({u"/lab/link/in"_s, u"/lab/link/out"_s});
+        m.setPipeline(pipeline.topics());
+        LatencyEngine engine(pipeline);
+        Clock clock {m};
+        for (int i = 1; i <= 10; ++i) { // 1 ms .. 10 ms
+            clock.advance(100 * kMs);
+            const std::vector<qint64> times {clock.now - 20 * kMs, clock.now - 20 * kMs + i * kMs};
+            m.addPipelineSample(times, clock.now);
+            engine.addSample(times);
+        }
+        clock.advance(1000 * kMs);
+        LatencyStatsModel measure;
+        measure.refresh(engine);
+        const int row = measure.rowOf(engine.info(engine.stageSeries(0)).id);
+        QVERIFY(row >= 0);
+        const auto measured = [&](int column) {
+            return measure.index(row, column).data(LatencyStatsModel::ValueRole).toDouble();
+        };
+        const double measureP50 = measured(LatencyStatsModel::MedianColumn);
+        const double measureP99 = measured(LatencyStatsModel::P99Column);
+        QCOMPARE(measureP50, 5.5);
+        QVERIFY2(qAbs(measureP99 - 9.91) < 1e-9, qPrintable(QString::number(measureP99, 'g', 17)));
+        LinkModel links(&m);
+        QCOMPARE(links.index(0, LinkModel::P50Column).data(LinkModel::ValueRole).toDouble(), measureP50);
+        QCOMPARE(links.index(0, LinkModel::P99Column).data(LinkModel::ValueRole).toDouble(), measureP99);
+        QCOMPARE(m.figures(0).latencyP50Ms, measureP50);
+        QCOMPARE(m.figures(0).latencyP99Ms, measureP99);
     }
 
     void rulesYaml()

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#include "linkjudge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kSecond = 1'000'000'000LL;
+
+/// The level at which `value` passes `t` (above when `above`, else below).
+LinkLevel levelOf(const Threshold& t, double value, bool above)
+{
+    const auto passes
+        = [&](double limit) { return std::isfinite(limit) && (above ? value > limit : value < limit); };
+    if (passes(t.alert))
+        return LinkLevel::Alert;
+    if (passes(t.warning))
+        return LinkLevel::Warning;
+    return LinkLevel::Ok;
+}
+
+/// Silence `silenceNs` against limits in seconds, or in periods of `periodNs` (at least 1 s).
+LinkLevel silenceLevel(const Threshold& seconds, const Threshold& periods, qint64 periodNs, qint64 silenceNs)
+{
+    const auto limitNs = [&](double s, double p) -> double {
+        if (std::isfinite(s))
+            return s * 1e9;
+        if (std::isfinite(p))
+            return std::max(p * double(periodNs), 1e9);
+        return qInf();
+    };
+    if (double(silenceNs) > limitNs(seconds.alert, periods.alert))
+        return LinkLevel::Alert;
+    if (double(silenceNs) > limitNs(seconds.warning, periods.warning))
+        return LinkLevel::Warning;
+    return LinkLevel::Ok;
+}
+} // namespace
+
+bool LinkJudge::sourcePublishes(const Input& in)
+{
+    // Shorter than the shortest stall (1 s): a source that stops is never taken for a stall.
+    return in.sourceSilenceNs >= 0 && in.sourceSilenceNs <= std::max<qint64>(2 * in.periodNs, kSecond / 2);
+}
+
+LinkJudge::Verdict LinkJudge::judge(const LinkRules& r, const LinkDef& link, const Input& in)
+{
+    const LinkFigures& f = in.figures;
+    const bool publishes = sourcePublishes(in);
+    Verdict v;
+    const auto add = [&](LinkLevel l, LinkReason reason, const QString& text) {
+        if (l == LinkLevel::Ok)
+            return;
+        v.reasons << reason;
+        if (l > v.level || v.detail.isEmpty())
+            v.detail = text;
+        v.level = std::max(v.level, l);
+    };
+    const LinkLevel stopped = in.sourceSilenceNs < 0
+        ? LinkLevel::Ok
+        : silenceLevel(r[LinkRules::SourceStoppedSeconds], Threshold(), in.periodNs, in.sourceSilenceNs);
+    const LinkLevel stall = publishes ? silenceLevel(r[LinkRules::StallSeconds], r[LinkRules::StallPeriods],
+                                                     in.periodNs, in.destinationSilenceNs)
+                                      : LinkLevel::Ok;
+    add(stopped, LinkReason::SourceStopped,
+        tr("the source %1 has been silent for %2 s")
+            .arg(link.sourceTopic())
+            .arg(double(in.sourceSilenceNs) / 1e9, 0, 'f', 1));
+    add(stall, LinkReason::Stall,
+        tr("nothing arrived on %1 for %2 s while %3 publishes")
+            .arg(link.destinationTopic())
+            .arg(double(in.destinationSilenceNs) / 1e9, 0, 'f', 1)
+            .arg(link.sourceTopic()));
+    if (!publishes || stall != LinkLevel::Ok || !in.settled)
+        return v;
+    add(levelOf(r[LinkRules::MaxLossPercent], f.lossPercent, true), LinkReason::Loss,
+        tr("%1 % of the messages lost").arg(f.lossPercent, 0, 'f', 1));
+    if (f.source.rateHz > 0) {
+        add(levelOf(r[LinkRules::MinRateHz], f.destination.rateHz, false), LinkReason::Rate,
+            tr("%1 Hz at the destination").arg(f.destination.rateHz, 0, 'f', 1));
+        add(levelOf(r[LinkRules::MinRatePercent], 100.0 * f.destination.rateHz / f.source.rateHz, false),
+            LinkReason::RateShare,
+            tr("%1 Hz at the destination for %2 Hz at the source")
+                .arg(f.destination.rateHz, 0, 'f', 1)
+                .arg(f.source.rateHz, 0, 'f', 1));
+    }
+    if (std::isfinite(f.latencyP99Ms))
+        add(levelOf(r[LinkRules::LatencyP99Ms], f.latencyP99Ms, true), LinkReason::Latency,
+            tr("latency p99 %1 ms").arg(f.latencyP99Ms, 0, 'f', 1));
+    return v;
+}
+
+QString LinkJudge::reasonName(LinkReason reason)
+{
+    // In the order of LinkReason.
+    static const char16_t* const names[]
+        = {u"source_stopped", u"stall", u"loss", u"rate", u"rate_share", u"latency", u"bridge_down"};
+    static_assert(std::size(names) == std::size_t(LinkReason::BridgeDown) + 1);
+    return QString::fromUtf16(names[std::size_t(reason)]);
+}
+
+QStringList LinkJudge::reasonNames(const QList<LinkReason>& reasons)
+{
+    QStringList names;
+    names.reserve(reasons.size());
+    for (LinkReason r : reasons)
+        names << reasonName(r);
+    return names;
+}

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "watch/linkdef.h"
+
+#include <deque>
+#include <optional>
+#include <utility>
+#include <vector>
+
+/// What a link's traffic is measured over: the windows of its rates, loss and latency.
+namespace LinkWindows {
+constexpr qint64 kSecond = 1'000'000'000LL;
+constexpr qint64 kRateWindowNs = 5 * kSecond;
+constexpr qint64 kLossWindowNs = 10 * kSecond;
+constexpr qint64 kLossLagNs = kSecond; ///< what the source sent in the last second may still be on its way
+constexpr qint64 kLatencyWindowNs = 60 * kSecond;
+constexpr qint64 kKeepArrivalsNs
+    = kLossWindowNs + kLossLagNs + kSecond; ///< arrivals kept for the loss window
+constexpr std::size_t kMaxLatencies = 10000;
+constexpr std::size_t kMaxArrivals = 100000;
+constexpr quint64 kMinLossSample = 10; ///< source messages a loss figure needs
+} // namespace LinkWindows
+
+/// One end of a link: its counts, its arrivals of the last seconds and its rate.
+struct LinkSide
+{
+    SideFigures f;
+    std::deque<std::pair<qint64, int>> arrivals; ///< (time, bytes) of the last 12 s
+    std::deque<std::pair<qint64, quint64>> cumulative; ///< (time, messages) once a second, for loss
+    double rateAtLastHz = 0; ///< the rate while it last published: its expected period
+    qint64 resumedNs = 0; ///< the first message after a silence (or ever)
+    qint64 firstNs = 0; ///< the first message ever (0: none yet)
+
+    void add(qint64 ns, int size);
+    /// Drops arrivals older than the loss window and computes the rates at `now`.
+    void refresh(qint64 now);
+    /// Messages that arrived in (from, to].
+    quint64 countIn(qint64 from, qint64 to) const;
+    /// Messages counted up to `ns` (0 before the first refresh).
+    quint64 messagesAt(qint64 ns) const;
+    qint64 expectedPeriodNs() const
+    {
+        return rateAtLastHz > 0 ? qint64(1e9 / rateAtLastHz) : LinkWindows::kSecond;
+    }
+};
+
+/// Header.seq at the destination: gaps, duplicates and reordering.
+struct SeqTracker
+{
+    bool started = false;
+    quint32 last = 0;
+    quint64 gaps = 0;
+    quint64 duplicates = 0;
+    quint64 reordered = 0;
+
+    void add(quint32 seq);
+};
+
+/// A link's traffic: what both ends saw, Header.seq at each, the loss and the latency samples.
+///
+/// Counting is per message (add() on a side, addLatency()); refresh() turns the windows into the
+/// figures once a second. The percentiles are those of core/latency (Quantile), as on the
+/// Measure page.
+struct LinkTraffic
+{
+    LinkSide src;
+    LinkSide dst;
+    SeqTracker seq; ///< at the destination
+    SeqTracker srcSeq; ///< at the source: gaps the publisher made are not the bridge's losses
+    /// What the source sent before the destination's first message, which no loss can be told
+    /// of (the destination's subscription may not have been up yet); counted once it arrives.
+    std::optional<quint64> beforeDestination;
+    std::deque<std::pair<qint64, double>> latencies; ///< (time, ms) of the latency window
+    quint64 latencySamples = 0;
+    std::vector<double> newLatencies; ///< since the last takeNewLatencies(), for histograms
+    LinkFigures figures; ///< as of the last refresh
+    quint64 lostMax = 0;
+
+    /// A latency sample (ms) at `ns`; one beyond a day is a stamp of another day and ignored.
+    void addLatency(qint64 ns, double ms, LatencySource source);
+    /// Rates, loss and the latency percentiles at `nowNs` into `figures`.
+    void refresh(qint64 nowNs);
+    /// The figures with the live counts (rates and percentiles are those of the last refresh).
+    LinkFigures liveFigures() const;
+
+private:
+    void refreshLoss(qint64 nowNs);
+};
