@@ -237,7 +237,7 @@ private slots:
         QString why;
         const auto plan = ExperimentPlan::load(QDir(out).filePath(u"plan.yaml"_s), &why);
         QVERIFY2(plan, qPrintable(why));
-        const auto state = ExperimentRunner::readState(out, *plan, &why);
+        const auto state = ExperimentFolder(out).readState(*plan, &why);
         QVERIFY2(state, qPrintable(why));
         QCOMPARE(state->first().state, CellStatus::Pending);
     }
