@@ -200,6 +200,7 @@ QWidget* ExperimentPage::createPlanPane()
     m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_editor->setPlaceholderText(tr("name: QoS study\nsamples: 600\nfactors:\n  qos: [0, 1, 2]"));
     m_editor->setAccessibleName(tr("Experiment plan"));
+    m_planStatus->setTextFormat(Qt::PlainText); // a plan's name or error is no markup
     m_planStatus->setWordWrap(true);
     m_planStatus->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addLayout(buttons);
@@ -225,6 +226,7 @@ QWidget* ExperimentPage::createCellsPane()
     m_log->setMaximumBlockCount(kMaxLogLines);
     m_log->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_log->setAccessibleName(tr("Experiment log"));
+    m_status->setTextFormat(Qt::PlainText); // the child's lines and the cells' labels are no markup
     m_status->setWordWrap(true);
     auto* top = new QWidget(split);
     auto* layout = new QVBoxLayout(top);
