@@ -169,6 +169,19 @@ void printCell(const ExperimentRunner& runner, int index, ExperimentEvent::Kind 
     printEvent(e);
 }
 
+void printThroughput(const ThroughputPoint& p)
+{
+    ExperimentEvent e;
+    e.kind = ExperimentEvent::Kind::Throughput;
+    e.rateHz = p.rateHz;
+    e.throughputSamples = double(p.samples);
+    e.expected = double(p.expected);
+    e.dropped = double(p.dropped);
+    e.p50Ms = p.p50Ms;
+    e.sustainable = p.sustainable;
+    printEvent(e);
+}
+
 int runExperiment(const ExperimentRequest& request)
 {
     ExperimentRunner::Options options;
@@ -223,17 +236,7 @@ int runExperiment(const ExperimentRequest& request)
     QObject::connect(&runner, &ExperimentRunner::probeStarted, [](int bytes, double rate) {
         err(Experiment::tr("throughput: %1 bytes at %2 Hz").arg(bytes).arg(rate));
     });
-    QObject::connect(&runner, &ExperimentRunner::probeFinished, [](const ThroughputPoint& p) {
-        ExperimentEvent e;
-        e.kind = ExperimentEvent::Kind::Throughput;
-        e.rateHz = p.rateHz;
-        e.throughputSamples = double(p.samples);
-        e.expected = double(p.expected);
-        e.dropped = double(p.dropped);
-        e.p50Ms = p.p50Ms;
-        e.sustainable = p.sustainable;
-        printEvent(e);
-    });
+    QObject::connect(&runner, &ExperimentRunner::probeFinished, printThroughput);
     std::optional<int> done;
     QObject::connect(&runner, &ExperimentRunner::finished,
                      [&](bool all) { done = int(all ? ExperimentExit::Complete : ExperimentExit::CellFailed); });
