@@ -2238,6 +2238,13 @@ factors:
         <source>%1 (#%2)</source>
         <translation>%1 (#%2)</translation>
     </message>
+    <message numerus="yes">
+        <source>%n line(s) of the experiment&apos;s output were no event and were left out.</source>
+        <translation>
+            <numerusform>%n Zeile der Ausgabe des Experiments war kein Ereignis und wurde ausgelassen.</numerusform>
+            <numerusform>%n Zeilen der Ausgabe des Experiments waren keine Ereignisse und wurden ausgelassen.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>ExperimentPlan</name>

@@ -2,24 +2,26 @@
 #include "experimentcommand.h"
 
 #include "app/cli/clioutput.h"
+#include "experiment/experimentevent.h"
 #include "experiment/experimentrunner.h"
-#include "latency/rundata.h"
 #include "mqtt/mqttprofile.h"
 
-#include <cmath>
+#include <utility>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
-using CliOutput::ExitFailed;
 using CliOutput::ExitOk;
 using CliOutput::ExitUsage;
 using CliOutput::out;
+
+// The command's exit statuses are the protocol's (the Experiments page reads them as ExperimentExit).
+static_assert(int(ExperimentExit::Complete) == CliOutput::ExitOk);
+static_assert(int(ExperimentExit::CellFailed) == CliOutput::ExitFailed);
+static_assert(int(ExperimentExit::Usage) == CliOutput::ExitUsage);
+static_assert(int(ExperimentExit::Stopped) == CliOutput::ExitCancelled);
 
 namespace {
 constexpr qsizetype kMaxTotalsPerLine = 10'000;
@@ -144,27 +146,40 @@ int dryRun(const ExperimentPlan& plan)
     return ExitOk;
 }
 
-void printCell(const ExperimentRunner& runner, int index, const QString& event)
+/// Writes `e` as the line the Experiments page reads (ExperimentEvent's codec).
+void printEvent(const ExperimentEvent& e)
+{
+    out(QString::fromUtf8(e.toLine()));
+}
+
+void printCell(const ExperimentRunner& runner, int index, ExperimentEvent::Kind kind)
 {
     const ExperimentCell& cell = runner.plan().cells[index];
     const CellStatus& s = runner.statuses()[index];
-    QJsonObject o {{u"event"_s, event},
-                   {u"index"_s, index},
-                   {u"cell"_s, cell.id()},
-                   {u"levels"_s, RunInfo::levelsJson(cell.levels)},
-                   {u"state"_s, CellStatus::stateName(s.state)}};
-    if (event == u"finished"_s) {
-        o.insert(u"samples"_s, double(s.samples));
-        o.insert(u"run"_s, s.run);
-        if (!s.reason.isEmpty())
-            o.insert(u"reason"_s, s.reason);
-        if (s.link.bytes > 0)
-            o.insert(u"link"_s,
-                     QJsonObject {{u"bytes"_s, double(s.link.bytes)},
-                                  {u"lost_bursts"_s, double(s.link.lostBursts)},
-                                  {u"read_pauses"_s, double(s.link.readPauses)}});
-    }
-    out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
+    ExperimentEvent e;
+    e.kind = kind;
+    e.index = index;
+    e.cell = cell.id();
+    e.levels = cell.levels;
+    e.state = s.state;
+    e.samples = s.samples;
+    e.run = s.run;
+    e.reason = s.reason;
+    e.link = s.link;
+    printEvent(e);
+}
+
+void printThroughput(const ThroughputPoint& p)
+{
+    ExperimentEvent e;
+    e.kind = ExperimentEvent::Kind::Throughput;
+    e.rateHz = p.rateHz;
+    e.throughputSamples = double(p.samples);
+    e.expected = double(p.expected);
+    e.dropped = double(p.dropped);
+    e.p50Ms = p.p50Ms;
+    e.sustainable = p.sustainable;
+    printEvent(e);
 }
 
 int runExperiment(const ExperimentRequest& request)
@@ -184,19 +199,15 @@ int runExperiment(const ExperimentRequest& request)
     QList<double> totals;
     bool warmingUp = false;
     const auto printProgress = [&](int i) {
-        QJsonArray ms;
-        for (double v : std::as_const(totals))
-            ms.append(std::round(v * 1000) / 1000); // µs are plenty, and keep the line short
-        totals.clear();
-        out(QString::fromUtf8(
-            QJsonDocument(QJsonObject {{u"event"_s, u"progress"_s},
-                                       {u"index"_s, i},
-                                       {u"samples"_s, double(runner.runningSamples())},
-                                       {u"of"_s, request.plan.samples},
-                                       {u"warming_up"_s, warmingUp},
-                                       {u"remaining_s"_s, qRound(runner.remainingSeconds())},
-                                       {u"total_ms"_s, ms}})
-                .toJson(QJsonDocument::Compact)));
+        ExperimentEvent e;
+        e.kind = ExperimentEvent::Kind::Progress;
+        e.index = i;
+        e.samples = runner.runningSamples();
+        e.of = request.plan.samples;
+        e.warmingUp = warmingUp;
+        e.remainingS = qRound(runner.remainingSeconds());
+        e.totalMs = std::exchange(totals, {});
+        printEvent(e);
     };
     QObject::connect(&runner, &ExperimentRunner::progress,
                      [&](int, qint64, bool warming) { warmingUp = warming; });
@@ -208,13 +219,13 @@ int runExperiment(const ExperimentRequest& request)
     QObject::connect(&runner, &ExperimentRunner::cellStarted, [&](int i) {
         totals.clear();
         warmingUp = true;
-        printCell(runner, i, u"started"_s);
+        printCell(runner, i, ExperimentEvent::Kind::Started);
         err(Experiment::tr("cell %1/%2: %3").arg(i + 1).arg(cells).arg(request.plan.cells[i].label()));
     });
     QObject::connect(&runner, &ExperimentRunner::cellFinished, [&](int i) {
         if (!totals.isEmpty())
             printProgress(i);
-        printCell(runner, i, u"finished"_s);
+        printCell(runner, i, ExperimentEvent::Kind::Finished);
         const CellStatus& s = runner.statuses()[i];
         if (s.state == CellStatus::Failed)
             err(Experiment::tr("cell %1/%2 failed: %3").arg(i + 1).arg(cells).arg(s.reason));
@@ -225,19 +236,10 @@ int runExperiment(const ExperimentRequest& request)
     QObject::connect(&runner, &ExperimentRunner::probeStarted, [](int bytes, double rate) {
         err(Experiment::tr("throughput: %1 bytes at %2 Hz").arg(bytes).arg(rate));
     });
-    QObject::connect(&runner, &ExperimentRunner::probeFinished, [](const ThroughputPoint& p) {
-        out(QString::fromUtf8(QJsonDocument(QJsonObject {{u"event"_s, u"throughput"_s},
-                                                         {u"rate_hz"_s, p.rateHz},
-                                                         {u"samples"_s, double(p.samples)},
-                                                         {u"expected"_s, double(p.expected)},
-                                                         {u"dropped"_s, double(p.dropped)},
-                                                         {u"p50_ms"_s, p.p50Ms},
-                                                         {u"sustainable"_s, p.sustainable}})
-                                  .toJson(QJsonDocument::Compact)));
-    });
+    QObject::connect(&runner, &ExperimentRunner::probeFinished, printThroughput);
     std::optional<int> done;
     QObject::connect(&runner, &ExperimentRunner::finished,
-                     [&](bool all) { done = all ? ExitOk : ExitFailed; });
+                     [&](bool all) { done = int(all ? ExperimentExit::Complete : ExperimentExit::CellFailed); });
     runner.start();
     const int status = CliOutput::runUntil([&](qint64) { return done; },
                                            [&](qint64) {

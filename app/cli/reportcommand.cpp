@@ -171,19 +171,6 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
     return std::move(*report);
 }
 
-/// Writes `text` to the request's file or stdout.
-int writeText(const ReportRequest& request, const QByteArray& text)
-{
-    QString why;
-    if (request.output.isEmpty()) {
-        CliOutput::writeStdout(text); // a failed write is reported by finish() below
-    } else if (!AtomicFile::write(request.output, text, &why, false)) {
-        err(why);
-        return ExitUsage;
-    }
-    return CliOutput::finish(ExitOk);
-}
-
 /// The tables of an experiment's folder.
 int experimentReport(const ReportRequest& request)
 {
@@ -206,16 +193,14 @@ int experimentReport(const ReportRequest& request)
         err(why);
         return ExitUsage;
     }
-    // Written to a file, the Markdown links each factor's ECDF, written beside it as SVG.
-    QString prefix;
-    if (request.format == ReportFormats::Format::Markdown && !request.output.isEmpty()) {
-        prefix = ExperimentReport::figurePrefixOf(request.output);
-        if (!report->writeFigures(prefix, &why)) {
-            err(why);
-            return ExitUsage;
-        }
+    const QByteArray text = report->exportTo(request.output, request.format, *statistics, &why);
+    if (text.isEmpty() && !why.isEmpty()) {
+        err(why);
+        return ExitUsage;
     }
-    return writeText(request, report->render(request.format, *statistics, prefix));
+    if (request.output.isEmpty())
+        CliOutput::writeStdout(text); // a failed write is reported by finish() below
+    return CliOutput::finish(ExitOk);
 }
 
 /// Renders the report and writes it to the file or stdout; nothing is written when cancelled.

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 #include <QCoreApplication>
 #include <QStringList>
 
@@ -81,6 +82,12 @@ public:
     static std::optional<QList<Statistic>> parseStatistics(const QString& list, QString* error);
     static QString statisticName(Statistic s);
     static double value(const LatencyStats& s, Statistic statistic);
+    /// A figure in ms as the tables show it ("12.3", "0.45"; "–" for none).
+    static QString formatMs(double v);
+    /// A cell's levels: "qos=1, payload=25%".
+    static QString levelsText(const ExperimentCell& cell);
+    /// Which ROS the cells ran on: "ROS 1", "ROS 2 (DDS, a private domain)".
+    QString rosText() const;
 
     /// With `figurePrefix`, each factor's ECDF is linked as figurePath(figurePrefix, factor)
     /// (relative to the Markdown file: by its file name); the caller writes the SVGs.
@@ -95,6 +102,11 @@ public:
     /// `figurePrefix` when one is given (see writeFigures()).
     QByteArray render(ReportFormats::Format format, const QList<Statistic>& statistics,
                       const QString& figurePrefix = QString()) const;
+    /// The one export of a report, for the command and the page alike: the report in `format`
+    /// written to `path` atomically (empty `path`: the bytes are only returned), Markdown with its
+    /// figures beside it (figurePrefixOf(path)). Empty with `error` when a file cannot be written.
+    QByteArray exportTo(const QString& path, ReportFormats::Format format, const QList<Statistic>& statistics,
+                        QString* error) const;
     /// Writes every factor's ECDF as figurePath(figurePrefix, factor), each atomically.
     bool writeFigures(const QString& figurePrefix, QString* error) const;
     /// The prefix of the figures beside a report file: "out/report.md" → "out/report".
@@ -103,7 +115,9 @@ public:
     QString toCsv() const; ///< one row per cell and group: every statistic
 
 private:
-    QString rosText() const; ///< which ROS the cells ran on: "ROS 1", "ROS 2 (DDS, a private domain)"
+    /// A table per factor: its levels in the order the cells have them, each pooling the values
+    /// (per cell and group, ns) of its complete cells.
+    void buildTables(const std::vector<std::vector<LatencySeries>>& values);
     ExperimentPlan m_plan;
     QString m_dir;
     QList<Group> m_groups;

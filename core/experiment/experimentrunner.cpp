@@ -172,7 +172,7 @@ ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QSt
 {
     m_statuses.resize(m_plan.cells.size());
     for (qsizetype i = 0; i < m_plan.cells.size(); ++i)
-        m_statuses[i].run = runPathOf(m_plan.cells[i]);
+        m_statuses[i].run = ExperimentFolder::runPathOf(m_plan.cells[i]);
 }
 
 ExperimentRunner::~ExperimentRunner()
@@ -191,18 +191,18 @@ bool ExperimentRunner::prepare(QString* error)
     const QDir dir(m_dir);
     if (!QDir().mkpath(dir.filePath(u"runs"_s)))
         return fail(tr("cannot make %1").arg(dir.filePath(u"runs"_s)));
-    const QString stateFile = dir.filePath(stateFileName());
+    const QString stateFile = ExperimentFolder(m_dir).statePath();
     if (QFile::exists(stateFile)) {
         if (!m_options.resume)
             return fail(tr("%1 holds an experiment already: --resume goes on with it, or give another folder")
                             .arg(m_dir));
-        QFile copy(dir.filePath(planFileName()));
+        QFile copy(ExperimentFolder(m_dir).planPath());
         if (!copy.open(QIODevice::ReadOnly) || copy.read(kMaxStateBytes) != m_planText)
             return fail(tr("%1 was made by another plan (its %2 differs): resume it with that plan, or give "
                            "another folder")
-                            .arg(m_dir, planFileName()));
+                            .arg(m_dir, ExperimentFolder::planFileName()));
         QString why;
-        const std::optional<QList<CellStatus>> state = readState(m_dir, m_plan, &why);
+        const std::optional<QList<CellStatus>> state = ExperimentFolder(m_dir).readState(m_plan, &why);
         if (!state)
             return fail(why);
         m_statuses = *state;
@@ -226,7 +226,7 @@ bool ExperimentRunner::prepare(QString* error)
         }
     } else {
         QString why;
-        if (!AtomicFile::write(dir.filePath(planFileName()), m_planText, &why, false))
+        if (!AtomicFile::write(ExperimentFolder(m_dir).planPath(), m_planText, &why, false))
             return fail(why);
     }
     const bool tls = std::any_of(m_plan.cells.cbegin(), m_plan.cells.cend(),
@@ -273,7 +273,7 @@ void ExperimentRunner::beginCell(int index)
     const ExperimentCell& cell = m_plan.cells[index];
     CellStatus& status = m_statuses[index];
     status.state = CellStatus::Running;
-    status.run = runPathOf(cell);
+    status.run = ExperimentFolder::runPathOf(cell);
     status.reason.clear();
     status.samples = 0;
     status.started = QDateTime::currentDateTimeUtc();
@@ -551,28 +551,12 @@ bool ExperimentRunner::writeState(QString* error) const
                             {u"name"_s, m_plan.name},
                             {u"cells"_s, cells}};
     QString why;
-    if (AtomicFile::write(QDir(m_dir).filePath(stateFileName()), QJsonDocument(root).toJson(), &why, false))
+    if (AtomicFile::write(ExperimentFolder(m_dir).statePath(), QJsonDocument(root).toJson(), &why, false))
         return true;
     qCWarning(lcDemo).noquote() << why;
     if (error)
         *error = why;
     return false;
-}
-
-std::optional<QList<CellStatus>> ExperimentRunner::readState(const QString& directory,
-                                                             const ExperimentPlan& plan, QString* error)
-{
-    QFile f(QDir(directory).filePath(stateFileName()));
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("%1: %2").arg(f.fileName(), f.errorString());
-        return std::nullopt;
-    }
-    QString why;
-    std::optional<QList<CellStatus>> statuses = ExperimentState::parse(f.read(kMaxStateBytes), plan, &why);
-    if (!statuses && error)
-        *error = tr("%1: %2").arg(f.fileName(), why);
-    return statuses;
 }
 
 double ThroughputResult::maxSustainableHz() const
@@ -590,7 +574,7 @@ void ExperimentRunner::nextProbe()
         return;
     if (m_probeSettings.isEmpty()) {
         // The sizes in the order the cells have them; results of an earlier start are kept.
-        const QList<ThroughputResult> earlier = readThroughput(m_dir);
+        const QList<ThroughputResult> earlier = ExperimentFolder(m_dir).readThroughput();
         m_throughput.clear();
         for (const ExperimentCell& c : std::as_const(m_plan.cells)) {
             if (std::any_of(m_probeSettings.cbegin(), m_probeSettings.cend(), [&c](const CellSettings& s) {
@@ -738,42 +722,10 @@ bool ExperimentRunner::writeThroughput() const
     for (const ThroughputResult& r : m_throughput)
         sizes.append(r.toJson());
     QString why;
-    if (AtomicFile::write(QDir(m_dir).filePath(throughputFileName()),
+    if (AtomicFile::write(ExperimentFolder(m_dir).throughputPath(),
                           QJsonDocument(QJsonObject {{u"sizes"_s, sizes}}).toJson(), &why, false))
         return true;
     qCWarning(lcDemo).noquote() << why;
     return false;
 }
 
-QList<ThroughputResult> ExperimentRunner::readThroughput(const QString& directory)
-{
-    QList<ThroughputResult> results;
-    QFile f(QDir(directory).filePath(throughputFileName()));
-    if (!f.open(QIODevice::ReadOnly))
-        return results;
-    const QJsonArray sizes
-        = QJsonDocument::fromJson(f.read(kMaxStateBytes)).object().value(u"sizes"_s).toArray();
-    for (const QJsonValue& v : sizes) {
-        const QJsonObject o = v.toObject();
-        ThroughputResult r;
-        r.payloadBytes = o.value(u"payload_bytes"_s).toInt();
-        r.level = o.value(u"level"_s).toString().left(256);
-        r.complete = o.value(u"complete"_s).toBool();
-        for (const QJsonValue& pv : o.value(u"rates"_s).toArray()) {
-            const QJsonObject po = pv.toObject();
-            ThroughputPoint p;
-            p.rateHz = po.value(u"rate_hz"_s).toDouble();
-            p.samples = po.value(u"samples"_s).toInteger();
-            p.expected = po.value(u"expected"_s).toInteger();
-            p.dropped = po.value(u"dropped"_s).toInteger();
-            p.p50Ms = po.value(u"p50_ms"_s).toDouble();
-            p.p99Ms = po.value(u"p99_ms"_s).toDouble();
-            p.sustainable = po.value(u"sustainable"_s).toBool();
-            if (r.points.size() < 1000)
-                r.points << p;
-        }
-        if (results.size() < ExperimentPlan::kMaxCells)
-            results << r;
-    }
-    return results;
-}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "experiment/experimentfolder.h"
 #include "experiment/experimentplan.h"
 #include "experiment/experimentstate.h"
 
@@ -78,17 +79,7 @@ public:
     double remainingSeconds() const;
     QString directory() const { return m_dir; }
 
-    static QString stateFileName() { return QStringLiteral("experiment.json"); }
-    static QString throughputFileName() { return QStringLiteral("throughput.json"); }
-    /// A cell's run file, relative to the experiment's folder.
-    static QString runPathOf(const ExperimentCell& cell) { return ExperimentState::runPathOf(cell); }
-    /// What DIR/throughput.json holds (empty when the plan has no throughput step or it has not run).
-    static QList<ThroughputResult> readThroughput(const QString& directory);
     const QList<ThroughputResult>& throughput() const { return m_throughput; }
-    static QString planFileName() { return QStringLiteral("plan.yaml"); }
-    /// The statuses DIR/experiment.json holds, in the plan's order of cells (ids matched).
-    static std::optional<QList<CellStatus>> readState(const QString& directory, const ExperimentPlan& plan,
-                                                      QString* error);
 
 signals:
     void cellStarted(int index);

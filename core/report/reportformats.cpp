@@ -9,6 +9,7 @@
 #include "report/ecdfsvg.h"
 #include "report/report.h"
 #include "report/reportpdf.h"
+#include "report/reporttable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,89 +34,18 @@ QString when(qint64 ns)
     return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(u"yyyy-MM-dd HH:mm:ss"_s);
 }
 
-QString latexEscape(QString s)
-{
-    QString out;
-    for (const QChar c : s) {
-        switch (c.unicode()) {
-        case u'\\':
-            out += u"\\textbackslash{}"_s;
-            break;
-        case u'&':
-        case u'%':
-        case u'$':
-        case u'#':
-        case u'_':
-        case u'{':
-        case u'}':
-            out += u'\\';
-            out += c;
-            break;
-        case u'~':
-            out += u"\\textasciitilde{}"_s;
-            break;
-        case u'^':
-            out += u"\\textasciicircum{}"_s;
-            break;
-        case 0x2192:
-            out += u"$\\rightarrow$"_s;
-            break; // →
-        case 0x2013:
-            out += u"--"_s;
-            break; // –
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
-
 /// Free text (notes, an event's detail) laid out at most this long; names at NameElider::MaxShown.
 constexpr qsizetype kMaxShownText = 1000;
 
-/// A text from a run as a report lays it out: on one line, without control characters (a NUL, an
-/// escape; each shown as U+FFFD), at most `max` characters keeping its tail. Every format's tables
-/// and facts take their texts through this, so a name cannot break a table or take minutes to lay out.
+/// A text from a run as a report lays it out (ReportTable::shown), names at NameElider::MaxShown.
 QString shown(const QString& text, qsizetype max = NameElider::MaxShown)
 {
-    QString out = NameElider::elideTail(text, max);
-    for (QChar& c : out) {
-        const char16_t u = c.unicode();
-        if (u == u'\n' || u == u'\r' || u == u'\t' || u == 0x2028 || u == 0x2029)
-            c = u' ';
-        else if (u < 0x20 || (u >= 0x7f && u < 0xa0))
-            c = QChar::ReplacementCharacter;
-    }
-    return out;
+    return ReportTable::shown(text, max);
 }
 
-/// The Markdown characters a run's text could use to end a table cell (`|`), open a code span, or
-/// make an inline link (`](`) or a raw HTML tag, taken literally (emphasis characters are left:
-/// they only style; `[ms]` stays as it is).
 QString mdEscape(const QString& s)
 {
-    QString out;
-    out.reserve(s.size());
-    for (qsizetype i = 0; i < s.size(); ++i) {
-        const QChar c = s.at(i);
-        switch (c.unicode()) {
-        case u'\\':
-        case u'|':
-        case u'`':
-        case u'<':
-        case u'>':
-            out += u'\\';
-            break;
-        case u']':
-            if (i + 1 < s.size() && s.at(i + 1) == u'(')
-                out += u'\\';
-            break;
-        default:
-            break;
-        }
-        out += c;
-    }
-    return out;
+    return ReportTable::mdEscape(s);
 }
 
 /// The report's title as laid out (its names are cut already, Report::title()).
@@ -124,21 +54,9 @@ QString titleOf(const Report& report)
     return shown(report.title(), kMaxShownText);
 }
 
-struct Cells
-{
-    QString label;
-    QStringList values;
-    bool crossing = false;
-    bool emphasized = false;
-    bool derived = false;
-};
-
-/// The stage table as cells: one run with all figures, several runs with their means.
-struct Table
-{
-    QStringList header;
-    QList<Cells> rows;
-};
+/// The tables, as every text format renders them.
+using Table = ReportTable;
+using Cells = ReportTable::Row;
 
 /// `t` with every text as shown(): names cut at NameElider::MaxShown, the last column (an event's
 /// why) at kMaxShownText when `freeTextLast`.
@@ -536,27 +454,7 @@ QByteArray ReportFormats::markdown(const Report& report)
             out += u"- **"_s + key + u":** "_s + mdEscape(value) + u'\n';
         out += u'\n';
     }
-    const auto table = [&out](const Table& t) {
-        QStringList header;
-        for (const QString& h : t.header)
-            header << mdEscape(h);
-        out += u"| "_s + header.join(u" | "_s) + u" |\n|"_s;
-        for (qsizetype i = 0; i < t.header.size(); ++i)
-            out += i == 0 ? u" --- |"_s : u" ---: |"_s;
-        out += u'\n';
-        for (const Cells& c : t.rows) {
-            QString label = mdEscape(c.label);
-            if (c.emphasized)
-                label = u"**"_s + label + u"**"_s;
-            else if (c.crossing || c.derived)
-                label = u"*"_s + label + u"*"_s;
-            QStringList values;
-            for (const QString& v : c.values)
-                values << (c.emphasized && !v.isEmpty() ? u"**"_s + mdEscape(v) + u"**"_s : mdEscape(v));
-            out += u"| "_s + label + u" | "_s + values.join(u" | "_s) + u" |\n"_s;
-        }
-        out += u'\n';
-    };
+    const auto table = [&out](const Table& t) { out += t.markdown(); };
     if (report.hasLatency()) {
         out += u"## "_s + tr("Latency per stage") + u"\n\n"_s;
         table(stageTable(report));
@@ -581,30 +479,7 @@ QByteArray ReportFormats::latex(const Report& report)
     QString out = u"% "_s + titleOf(report) + u"\n% "_s
         + tr("Written by Bridgescope; needs \\usepackage{booktabs}.") + u'\n';
     const auto table = [&out](const Table& t, const QString& caption) {
-        out += u"% "_s + caption + u'\n';
-        out += u"\\begin{tabular}{l"_s + QString(t.header.size() - 1, u'r') + u"}\n\\toprule\n"_s;
-        QStringList head;
-        for (const QString& h : t.header)
-            head << latexEscape(h);
-        out += head.join(u" & "_s) + u" \\\\\n\\midrule\n"_s;
-        bool derivedStarted = false;
-        for (const Cells& c : t.rows) {
-            if ((c.emphasized || c.derived) && !derivedStarted) {
-                out += u"\\midrule\n"_s;
-                derivedStarted = true;
-            }
-            QString label = latexEscape(c.label);
-            if (c.emphasized)
-                label = u"\\textbf{"_s + label + u'}';
-            else if (c.crossing || c.derived)
-                label = u"\\textit{"_s + label + u'}';
-            QStringList cells {label};
-            for (const QString& v : c.values)
-                cells << (c.emphasized && !v.isEmpty() ? u"\\textbf{"_s + latexEscape(v) + u'}'
-                                                       : latexEscape(v));
-            out += cells.join(u" & "_s) + u" \\\\\n"_s;
-        }
-        out += u"\\bottomrule\n\\end{tabular}\n\n"_s;
+        out += u"% "_s + caption + u'\n' + t.latex() + u'\n';
     };
     if (report.hasLatency()) {
         table(stageTable(report), tr("Latency per stage"));
@@ -642,26 +517,7 @@ QString ReportFormats::htmlBody(const Report& report, bool forQtRichText)
         }
     const QString border = forQtRichText ? u" border=\"1\" cellspacing=\"0\" cellpadding=\"3\""_s : QString();
     const auto table = [&](const Table& t, const QString& caption) {
-        out += u"<h2>"_s + caption.toHtmlEscaped() + u"</h2>\n<table class=\"stats\""_s + border
-            + u">\n<tr>"_s;
-        for (qsizetype i = 0; i < t.header.size(); ++i)
-            out += (i == 0 ? u"<th class=\"label\" align=\"left\">"_s : u"<th align=\"right\">"_s)
-                + t.header[i].toHtmlEscaped() + u"</th>"_s;
-        out += u"</tr>\n"_s;
-        for (const Cells& c : t.rows) {
-            QString label = c.label.toHtmlEscaped();
-            if (c.emphasized)
-                label = u"<b>"_s + label + u"</b>"_s;
-            else if (c.crossing || c.derived)
-                label = u"<i>"_s + label + u"</i>"_s;
-            out += u"<tr><td class=\"label\">"_s + label + u"</td>"_s;
-            for (const QString& v : c.values)
-                out += u"<td align=\"right\">"_s
-                    + (c.emphasized ? u"<b>"_s + v.toHtmlEscaped() + u"</b>"_s : v.toHtmlEscaped())
-                    + u"</td>"_s;
-            out += u"</tr>\n"_s;
-        }
-        out += u"</table>\n"_s;
+        out += u"<h2>"_s + caption.toHtmlEscaped() + u"</h2>\n"_s + t.html(border);
     };
     if (report.hasLatency()) {
         table(stageTable(report), tr("Latency per stage"));

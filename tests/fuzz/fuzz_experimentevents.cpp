@@ -2,7 +2,9 @@
 // Fuzz target for the JSON lines of `bridgescope experiment` as the Experiments page reads them
 // (ExperimentEvent::parse): the child's standard output is input like any other.
 //
-// Input: one line. Properties: an event has a known kind; a cell's index is not negative and
+// Input: one line (and, for ExperimentEventReader, the same bytes as a stream of lines). Properties:
+// the reader takes no more events than lines and refuses the rest with a count; an event written
+// back with the codec (toLine) reads as the same event; an event has a known kind; a cell's index is not negative and
 // bounded; counts are not negative; every total is finite and within its bound, and there are at
 // most kMaxTotals of them; a reason within its bound.
 #include "experiment/experimentevent.h"
@@ -12,9 +14,18 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    const auto e = ExperimentEvent::parse(fuzz::bytes(data, size));
+    const QByteArray input = fuzz::bytes(data, size);
+    ExperimentEventReader reader;
+    const qsizetype lines = input.count('\n') + 1;
+    const qsizetype read = reader.feed(input).size() + reader.feed("\n").size();
+    FUZZ_CHECK(read + reader.refused() <= lines, "more events and refusals than lines");
+    const auto e = ExperimentEvent::parse(input);
     if (!e)
         return 0;
+    const QByteArray line = e->toLine();
+    const auto again = ExperimentEvent::parse(line);
+    FUZZ_CHECK(again && again->kind == e->kind && again->index == e->index && again->cell == e->cell,
+               "an event the codec writes does not read back");
     if (e->kind == ExperimentEvent::Kind::Throughput) {
         FUZZ_CHECK(std::isfinite(e->rateHz) && std::isfinite(e->expected), "a throughput figure that is not finite");
         return 0;

@@ -128,8 +128,8 @@ private slots:
         QFile plan(QStringLiteral(BRIDGESCOPE_SOURCE_DIR)
                    + u"/resources/examples/experiment-table3-qos.yaml"_s);
         QVERIFY(plan.open(QIODevice::ReadOnly));
-        write(u"exp/"_s + ExperimentRunner::planFileName(), plan.readAll());
-        write(u"exp/"_s + ExperimentRunner::stateFileName(), "{}");
+        write(u"exp/"_s + ExperimentFolder::planFileName(), plan.readAll());
+        write(u"exp/"_s + ExperimentFolder::stateFileName(), "{}");
         // A plan alone, as a file manager or the command line gives it.
         QFile size(QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/examples/experiment-table1-methods.yaml"_s);
         QVERIFY(size.open(QIODevice::ReadOnly));

@@ -3,6 +3,7 @@
 // listed cells name what they change, repetitions come last, and every mistake names its line.
 #include "experiment/experimentevent.h"
 #include "experiment/experimentplan.h"
+#include "experiment/experimentreport.h"
 #include "experiment/experimentrunner.h"
 #include "record/runfile.h"
 #include "syntheticrun.h"
@@ -226,7 +227,7 @@ private slots:
         const auto plan
             = ExperimentPlan::fromYaml("samples: 10\nfactors:\n  qos: [0, 1]\n", dir.path(), &why);
         QVERIFY2(plan, qPrintable(why));
-        QFile state(dir.filePath(ExperimentRunner::stateFileName()));
+        QFile state(dir.filePath(ExperimentFolder::stateFileName()));
         QVERIFY(state.open(QIODevice::WriteOnly));
         state.write("{\"format\": \"bridgescope-experiment\", \"cells\": ["
                     "{\"id\": \"001-qos-0\", \"state\": \"complete\", \"samples\": 1e300,"
@@ -234,7 +235,7 @@ private slots:
                     "{\"id\": \"002-qos-1\", \"state\": \"exploded\", \"samples\": -1e19},"
                     "{\"id\": \"003-nobody\", \"state\": \"complete\"}, 7, null]}");
         state.close();
-        const auto statuses = ExperimentRunner::readState(dir.path(), *plan, &why);
+        const auto statuses = ExperimentFolder(dir.path()).readState(*plan, &why);
         QVERIFY2(statuses, qPrintable(why));
         QCOMPARE(statuses->size(), 2);
         QCOMPARE((*statuses)[0].state, CellStatus::Complete);
@@ -243,13 +244,13 @@ private slots:
         QCOMPARE((*statuses)[1].state, CellStatus::Pending);
         QCOMPARE((*statuses)[1].samples, 0);
 
-        QFile throughput(dir.filePath(ExperimentRunner::throughputFileName()));
+        QFile throughput(dir.filePath(ExperimentFolder::throughputFileName()));
         QVERIFY(throughput.open(QIODevice::WriteOnly));
         throughput.write("{\"sizes\": [{\"payload_bytes\": 1000, \"level\": \"1000\", \"complete\": true,"
                          " \"rates\": [{\"rate_hz\": 10, \"samples\": 1e300, \"expected\": -1e300,"
                          " \"dropped\": \"many\", \"sustainable\": true}]}, 3]}");
         throughput.close();
-        const QList<ThroughputResult> results = ExperimentRunner::readThroughput(dir.path());
+        const QList<ThroughputResult> results = ExperimentFolder(dir.path()).readThroughput();
         QVERIFY(!results.isEmpty());
         QVERIFY(!results.first().points.isEmpty());
         const ThroughputPoint& p = results.first().points.first();
@@ -321,12 +322,12 @@ private slots:
         QCOMPARE(s.state, CellStatus::Failed);
         QVERIFY2(s.reason.contains(u"announce once cannot be honoured"_s), qPrintable(s.reason));
         QVERIFY2(s.run.isEmpty(), qPrintable(s.run));
-        QFile state(dir.filePath(ExperimentRunner::stateFileName()));
+        QFile state(dir.filePath(ExperimentFolder::stateFileName()));
         QVERIFY(state.open(QIODevice::ReadOnly));
         const QJsonObject cell = QJsonDocument::fromJson(state.readAll())[u"cells"_s][0].toObject();
         QCOMPARE(cell.value(u"run"_s).toString(), QString());
         QCOMPARE(cell.value(u"state"_s).toString(), u"failed"_s);
-        const auto read = ExperimentRunner::readState(dir.path(), *p, &why);
+        const auto read = ExperimentFolder(dir.path()).readState(*p, &why);
         QVERIFY2(read && read->first().run.isEmpty(), qPrintable(why));
     }
 
@@ -338,18 +339,18 @@ private slots:
         const auto plan = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
         QVERIFY2(plan && plan->cells.size() == 4, qPrintable(why));
         QVERIFY(QDir(dir.path()).mkpath(u"runs"_s));
-        QFile copy(dir.filePath(ExperimentRunner::planFileName()));
+        QFile copy(dir.filePath(ExperimentFolder::planFileName()));
         QVERIFY(copy.open(QIODevice::WriteOnly) && copy.write(yaml) == yaml.size());
         copy.close();
         QJsonArray cells;
         for (const ExperimentCell& cell : plan->cells)
             cells.append(QJsonObject {{u"id"_s, cell.id()}, {u"state"_s, u"complete"_s}, {u"samples"_s, 10}});
-        QFile state(dir.filePath(ExperimentRunner::stateFileName()));
+        QFile state(dir.filePath(ExperimentFolder::stateFileName()));
         QVERIFY(state.open(QIODevice::WriteOnly));
         state.write(QJsonDocument(QJsonObject {{u"format"_s, u"bridgescope-experiment"_s}, {u"cells"_s, cells}})
                         .toJson());
         state.close();
-        const auto runOf = [&](int i) { return dir.filePath(ExperimentRunner::runPathOf(plan->cells[i])); };
+        const auto runOf = [&](int i) { return dir.filePath(ExperimentFolder::runPathOf(plan->cells[i])); };
         // 0: garbage that starts like a database; 1: a symbolic link to /etc/passwd; 2: a run of the
         // cell with 12 samples; 3: that same run, which is another cell's.
         QFile garbage(runOf(0));
@@ -381,7 +382,7 @@ private slots:
         QVERIFY2(notes[2].contains(u"another cell"_s), qPrintable(notes[2]));
         QVERIFY(statuses[1].reason.contains(u"done again"_s));
         // The state on disk says so too, and a plan that wants more samples than the run has redoes it.
-        const auto written = ExperimentRunner::readState(dir.path(), *plan, &why);
+        const auto written = ExperimentFolder(dir.path()).readState(*plan, &why);
         QVERIFY2(written && (*written)[1].state == CellStatus::Pending, qPrintable(why));
         QVERIFY(QFile::exists(u"/etc/passwd"_s));
         const QByteArray more = "samples: 13\nfactors:\n  qos: [0, 1]\n  payload: [1000, 2000]\n";
@@ -414,7 +415,7 @@ private slots:
             QByteArray("{\"event\":\"finished\",\"index\":2,\"cell\":\"c\",\"state\":\"complete\",\"samples\":-7,\"reason\":\"")
             + QByteArray(5000, 'r') + "\"}");
         QVERIFY(finished);
-        QVERIFY(finished->complete);
+        QVERIFY(finished->complete());
         QCOMPARE(finished->samples, 0);
         QCOMPARE(finished->reason.size(), ExperimentEvent::kMaxReasonChars);
         QVERIFY(!ExperimentEvent::parse("{\"event\":\"started\",\"index\":-1}"));
@@ -435,6 +436,133 @@ private slots:
         QVERIFY(throughput);
         QCOMPARE(throughput->rateHz, 0.0); // not a number: nothing said
         QVERIFY(!throughput->sustainable);
+    }
+
+    // One codec for both ends of the child's standard output: every kind of event, with every
+    // field the command fills, reads back as it was written.
+    void everyEventKindRoundTripsThroughTheCodec()
+    {
+        ExperimentEvent started;
+        started.kind = ExperimentEvent::Kind::Started;
+        started.index = 3;
+        started.cell = u"004-qos-1"_s;
+        started.levels = {{u"qos"_s, u"1"_s}, {u"payload"_s, u"25%"_s}};
+        started.state = CellStatus::Running;
+        ExperimentEvent progress;
+        progress.kind = ExperimentEvent::Kind::Progress;
+        progress.index = 3;
+        progress.samples = 45;
+        progress.of = 600;
+        progress.warmingUp = true;
+        progress.remainingS = 120;
+        progress.totalMs = {12.5, 13.125, 0.001};
+        ExperimentEvent finished = started;
+        finished.kind = ExperimentEvent::Kind::Finished;
+        finished.state = CellStatus::Failed;
+        finished.samples = 17;
+        finished.run = u"runs/004-qos-1.bsrun"_s;
+        finished.reason = u"the broker went away"_s;
+        finished.link = {1000, 2, 3};
+        ExperimentEvent throughput;
+        throughput.kind = ExperimentEvent::Kind::Throughput;
+        throughput.rateHz = 50;
+        throughput.throughputSamples = 480;
+        throughput.expected = 500;
+        throughput.dropped = 20;
+        throughput.p50Ms = 4.5;
+        throughput.sustainable = false;
+        for (const ExperimentEvent& e : {started, progress, finished, throughput}) {
+            const QByteArray line = e.toLine();
+            QVERIFY2(!line.contains('\n'), line.constData());
+            const std::optional<ExperimentEvent> back = ExperimentEvent::parse(line);
+            QVERIFY2(back, line.constData());
+            QCOMPARE(fieldsOf(*back), fieldsOf(e));
+        }
+        // The line names its event as the command always did (scripts read it too).
+        QVERIFY(finished.toLine().contains("\"event\":\"finished\""));
+        QVERIFY(finished.toLine().contains("\"state\":\"failed\""));
+    }
+
+    // The child's standard output in pieces, as the page gets it: events across the cuts are read
+    // whole; a line that is no event, or one too long to be the command's, is refused and counted,
+    // and what follows it is read again.
+    void aHostileLineIsRefusedAndCounted()
+    {
+        ExperimentEvent started;
+        started.kind = ExperimentEvent::Kind::Started;
+        started.index = 0;
+        started.cell = u"001-qos-0"_s;
+        const QByteArray line = started.toLine() + '\n';
+        ExperimentEventReader reader;
+        QList<ExperimentEvent> events = reader.feed(line.left(7));
+        QVERIFY(events.isEmpty());
+        events += reader.feed(line.mid(7) + "not json\n\n{\"event\":\"exploded\",\"index\":0}\n");
+        events += reader.feed("{\"event\":\"started\",\"index\":-4}\n{\"event\":\"progress\",\"index\":1e300}\n");
+        QCOMPARE(events.size(), 1);
+        QCOMPARE(events[0].cell, u"001-qos-0"_s);
+        QCOMPARE(reader.refused(), 4); // the empty line is no line
+        // An endless line: dropped as it comes (memory stays bounded), counted once.
+        const QByteArray chunk(1024 * 1024, 'x');
+        for (int i = 0; i < 6; ++i)
+            QVERIFY(reader.feed(chunk).isEmpty());
+        QCOMPARE(reader.refused(), 5);
+        events = reader.feed("{\"event\":\"started\",\"index\":0}\n" + line);
+        QCOMPARE(events.size(), 1); // the end of the long line is not read as a line of its own
+        QCOMPARE(events[0].cell, u"001-qos-0"_s);
+        QCOMPARE(reader.refused(), 5);
+    }
+
+    // An experiment's names and levels come out escaped in every text format, by the escaper
+    // each format has (one per format, ReportTable's): TeX's specials, Markdown's table and
+    // HTML's tags (issue 35).
+    void experimentReportsEscapeEveryFormat()
+    {
+        QTemporaryDir dir;
+        const QByteArray hostile = "B~^_%&#${}\\|*[]<script>";
+        QFile planFile(dir.filePath(u"plan.yaml"_s));
+        QVERIFY(planFile.open(QIODevice::WriteOnly));
+        planFile.write("name: 'N " + hostile + "'\nsamples: 5\nbridges:\n  '" + hostile
+                       + "': {command: \"run {config}\"}\nfactors:\n  bridge: [reference, '" + hostile + "']\n");
+        planFile.close();
+        QFile state(dir.filePath(u"experiment.json"_s));
+        QVERIFY(state.open(QIODevice::WriteOnly));
+        state.write("{\"format\": \"bridgescope-experiment\", \"cells\": []}");
+        state.close();
+        QString why;
+        const std::optional<ExperimentReport> report = ExperimentReport::load(dir.path(), &why);
+        QVERIFY2(report, qPrintable(why));
+        const QList<ExperimentReport::Statistic> mean {ExperimentReport::Statistic::Mean};
+        const QString tex = report->toTex(mean);
+        QVERIFY2(tex.contains(u"B\\textasciitilde{}\\textasciicircum{}\\_\\%\\&\\#\\$\\{\\}\\textbackslash{}|*[]<script>"_s),
+                 qPrintable(tex));
+        QVERIFY2(!tex.contains(u"B~"_s) && !tex.contains(u"^_"_s), qPrintable(tex));
+        const QString md = report->toMarkdown(mean);
+        QVERIFY2(md.contains(u"B~^_%&#${}\\\\\\|*[]\\<script\\>"_s), qPrintable(md));
+        QVERIFY2(!md.contains(u"<script>"_s), qPrintable(md));
+        for (const QString& row : md.split(u'\n')) // no name adds a column to its table
+            if (row.startsWith(u"| "_s) && row.contains(u"B~"_s))
+                QVERIFY2(row.count(u" | "_s) == (row.contains(u"bridge="_s) ? 6 : 2), qPrintable(row));
+        const QString html = report->toHtml(mean);
+        QVERIFY2(!html.contains(u"<script>"_s) && html.contains(u"&lt;script&gt;"_s), qPrintable(html));
+    }
+private:
+    /// Every field of an event, to compare one read back with the one written.
+    static QStringList fieldsOf(const ExperimentEvent& e)
+    {
+        QStringList levels;
+        for (const auto& [factor, level] : e.levels)
+            levels << factor + u'=' + level;
+        QStringList totals;
+        for (double ms : e.totalMs)
+            totals << QString::number(ms, 'g', 17);
+        return {QString::number(int(e.kind)), QString::number(e.index), e.cell, levels.join(u','),
+                QString::number(e.state), QString::number(e.samples), QString::number(e.of),
+                QString::number(e.warmingUp), QString::number(e.remainingS), totals.join(u','), e.run, e.reason,
+                QString::number(e.link.bytes), QString::number(e.link.lostBursts),
+                QString::number(e.link.readPauses), QString::number(e.rateHz, 'g', 17),
+                QString::number(e.throughputSamples, 'g', 17), QString::number(e.expected, 'g', 17),
+                QString::number(e.dropped, 'g', 17), QString::number(e.p50Ms, 'g', 17),
+                QString::number(e.sustainable)};
     }
 };
 

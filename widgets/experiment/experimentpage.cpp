@@ -3,6 +3,8 @@
 
 #include "base/atomicfile.h"
 #include "experiment/experimentevent.h"
+#include "experiment/experimentprocess.h"
+#include "experiment/experimentreportjob.h"
 #include "latency/latencyseriesset.h"
 #include "widgets/common/ecdfchart.h"
 
@@ -28,7 +30,6 @@
 #include <QTableWidget>
 #include <QTabWidget>
 #include <QTextBrowser>
-#include <QThread>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -36,23 +37,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr int kMaxLogLines = 2000;
-constexpr qsizetype kMaxLineBytes = ExperimentEvent::kMaxLineBytes; ///< a longer line from the child is cut off
-
-/// The complete lines of a child's output so far; the rest waits in `rest` for its end (a line
-/// longer than any the command writes is not ours and is dropped).
-QList<QByteArray> takeLines(QByteArray* rest, const QByteArray& more)
-{
-    *rest += more;
-    QList<QByteArray> lines;
-    qsizetype start = 0;
-    for (qsizetype end; (end = rest->indexOf('\n', start)) >= 0; start = end + 1)
-        lines << rest->sliced(start, end - start);
-    rest->remove(0, start);
-    if (rest->size() > kMaxLineBytes)
-        rest->clear();
-    return lines;
-}
-
 QColor stateColor(CellStatus::State s)
 {
     switch (s) {
@@ -90,6 +74,7 @@ ExperimentPage::ExperimentPage(QWidget* parent)
     , m_log(new QPlainTextEdit(this))
     , m_check(new QTimer(this))
     , m_redraw(new QTimer(this))
+    , m_process(new ExperimentProcess(this))
     , m_series(std::make_unique<LatencySeriesSet>())
 {
     setObjectName(u"experimentPage"_s);
@@ -126,24 +111,23 @@ ExperimentPage::ExperimentPage(QWidget* parent)
         m_chart->refresh();
     });
     m_redraw->start();
+    connect(m_process, &ExperimentProcess::event, this, &ExperimentPage::handleEvent);
+    connect(m_process, &ExperimentProcess::logLine, this, &ExperimentPage::showLogLine);
+    connect(m_process, &ExperimentProcess::finished, this, &ExperimentPage::processFinished);
+    connect(m_process, &ExperimentProcess::failedToStart, this, [this](const QString& why) {
+        m_status->setText(tr("The experiment did not start: %1").arg(why));
+        updateButtons();
+    });
     m_status->setText(tr("Open a plan or an example, choose a folder, and run it."));
     updateButtons();
 }
 
 ExperimentPage::~ExperimentPage()
 {
-    if (m_process && m_process->state() != QProcess::NotRunning) {
-        // The child stops its lab's servers and bridges; a window closing waits for that, briefly.
-        m_process->disconnect(this);
-        m_process->terminate();
-        if (!m_process->waitForFinished(15000))
-            m_process->kill();
-        m_process->waitForFinished(2000);
-    }
-    if (m_reportThread) {
-        m_reportThread->disconnect(this);
-        m_reportThread->wait();
-    }
+    // The child and the report's worker are children: each waits for its end, briefly.
+    if (m_reportJob)
+        m_reportJob->disconnect(this);
+    m_process->disconnect(this);
 }
 
 /// The run controls: the folder, run, resume, stop, progress.
@@ -216,6 +200,7 @@ QWidget* ExperimentPage::createPlanPane()
     m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_editor->setPlaceholderText(tr("name: QoS study\nsamples: 600\nfactors:\n  qos: [0, 1, 2]"));
     m_editor->setAccessibleName(tr("Experiment plan"));
+    m_planStatus->setTextFormat(Qt::PlainText); // a plan's name or error is no markup
     m_planStatus->setWordWrap(true);
     m_planStatus->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addLayout(buttons);
@@ -241,6 +226,7 @@ QWidget* ExperimentPage::createCellsPane()
     m_log->setMaximumBlockCount(kMaxLogLines);
     m_log->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_log->setAccessibleName(tr("Experiment log"));
+    m_status->setTextFormat(Qt::PlainText); // the child's lines and the cells' labels are no markup
     m_status->setWordWrap(true);
     auto* top = new QWidget(split);
     auto* layout = new QVBoxLayout(top);
@@ -280,37 +266,6 @@ QWidget* ExperimentPage::createViewsPane()
     m_views->addTab(m_chart, tr("Totals (ECDF)"));
     m_views->addTab(report, tr("Report"));
     return m_views;
-}
-
-bool ExperimentPage::openPlan(const QString& path, QString* error)
-{
-    QString why;
-    QByteArray text;
-    if (!ExperimentPlan::load(path, &why, &text) && text.isEmpty()) {
-        if (error)
-            *error = why;
-        return false;
-    }
-    // A plan with an error opens too: the editor is where it gets fixed. Path and folder first,
-    // so that the plan is checked, and its folder's state and report read, once.
-    m_planPath = path;
-    if (folder().isEmpty())
-        m_folder->setText(
-            QDir::toNativeSeparators(QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName())));
-    setPlanText(QString::fromUtf8(text));
-    return true;
-}
-
-bool ExperimentPage::openFolder(const QString& directory, QString* error)
-{
-    if (!ExperimentReport::isExperiment(directory)) {
-        if (error)
-            *error = tr("%1 is not an experiment's folder (it has no %2)")
-                         .arg(directory, ExperimentRunner::stateFileName());
-        return false;
-    }
-    m_folder->setText(QDir::toNativeSeparators(directory));
-    return openPlan(QDir(directory).filePath(ExperimentRunner::planFileName()), error);
 }
 
 void ExperimentPage::setPlanText(const QString& text)
@@ -406,7 +361,7 @@ void ExperimentPage::loadState()
         return;
     }
     QString why;
-    if (const auto state = ExperimentRunner::readState(dir, *m_plan, &why)) {
+    if (const auto state = ExperimentFolder(dir).readState(*m_plan, &why)) {
         m_statuses = *state;
         for (int i = 0; i < int(m_statuses.size()); ++i)
             updateRow(i);
@@ -518,7 +473,7 @@ void ExperimentPage::updateButtons()
 
 bool ExperimentPage::isRunning() const
 {
-    return m_process && m_process->state() != QProcess::NotRunning;
+    return m_process->isRunning();
 }
 
 bool ExperimentPage::run(bool resume, QString* error)
@@ -544,31 +499,13 @@ bool ExperimentPage::run(bool resume, QString* error)
         if (m_planPath.isEmpty() || m_planPath.startsWith(u':')) {
             if (!QDir().mkpath(dir))
                 return fail(tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir)));
-            m_planPath = QDir(dir).absoluteFilePath(ExperimentRunner::planFileName()); // the copy it keeps
+            m_planPath = QDir(dir).absoluteFilePath(ExperimentFolder::planFileName()); // the copy it keeps
         }
         QString why;
         if (!AtomicFile::write(m_planPath, planText().toUtf8(), &why))
             return fail(why);
         m_planEdited = false;
     }
-    QStringList args {u"experiment"_s, m_planPath, u"-o"_s, dir};
-    if (resume)
-        args << u"--resume"_s;
-    delete m_process;
-    m_process = new QProcess(this);
-    m_process->setProgram(m_program.isEmpty() ? QCoreApplication::applicationFilePath() : m_program);
-    m_process->setArguments(args);
-    connect(m_process, &QProcess::readyReadStandardOutput, this, &ExperimentPage::readOutput);
-    connect(m_process, &QProcess::readyReadStandardError, this, &ExperimentPage::readErrors);
-    connect(m_process, &QProcess::finished, this, &ExperimentPage::processFinished);
-    connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
-        if (e == QProcess::FailedToStart) {
-            m_status->setText(tr("The experiment did not start: %1").arg(m_process->errorString()));
-            updateButtons();
-        }
-    });
-    m_stdoutRest.clear();
-    m_stderrRest.clear();
     if (!resume) {
         m_statuses = QList<CellStatus>(m_cells.size());
         m_series = std::make_unique<LatencySeriesSet>();
@@ -578,10 +515,11 @@ bool ExperimentPage::run(bool resume, QString* error)
         for (int i = 0; i < int(m_cells.size()); ++i)
             updateRow(i);
     }
-    m_log->appendPlainText(u"$ bridgescope "_s + args.join(u' '));
+    m_process->start(m_program.isEmpty() ? QCoreApplication::applicationFilePath() : m_program, m_planPath,
+                     dir, resume);
+    m_log->appendPlainText(u"$ bridgescope "_s + m_process->arguments().join(u' '));
     showCounts();
     m_status->setText(tr("Starting…"));
-    m_process->start();
     m_views->setCurrentWidget(m_chart);
     updateButtons();
     return true;
@@ -592,33 +530,20 @@ void ExperimentPage::stop()
     if (!isRunning())
         return;
     m_status->setText(tr("Stopping after cleaning up…"));
-    m_process->terminate(); // SIGTERM: the command stops as on Ctrl+C
+    m_process->stop(); // SIGTERM: the command stops as on Ctrl+C
 }
 
-void ExperimentPage::readOutput()
+void ExperimentPage::showLogLine(const QString& line)
 {
-    for (const QByteArray& line : takeLines(&m_stdoutRest, m_process->readAllStandardOutput()))
-        handleLine(line);
+    m_log->appendPlainText(line);
+    m_status->setText(line.left(300));
 }
 
-void ExperimentPage::readErrors()
-{
-    for (const QByteArray& bytes : takeLines(&m_stderrRest, m_process->readAllStandardError())) {
-        const QString line = QString::fromUtf8(bytes).trimmed();
-        if (line.isEmpty())
-            continue;
-        m_log->appendPlainText(line);
-        m_status->setText(line.left(300));
-    }
-}
-
-/// A JSON line of `bridgescope experiment`: a cell started or finished, progress with totals
+/// An event of `bridgescope experiment`: a cell started or finished, progress with totals
 /// (read and bounded by ExperimentEvent).
-void ExperimentPage::handleLine(const QByteArray& line)
+void ExperimentPage::handleEvent(const ExperimentEvent& event)
 {
-    const std::optional<ExperimentEvent> e = ExperimentEvent::parse(line);
-    if (!e)
-        return;
+    const ExperimentEvent* e = &event;
     if (e->kind == ExperimentEvent::Kind::Throughput) {
         m_log->appendPlainText(tr("throughput: %1 Hz, %2 of %3 samples%4")
                                    .arg(e->rateHz)
@@ -655,9 +580,9 @@ void ExperimentPage::handleLine(const QByteArray& line)
                                              .arg(ExperimentPlan::durationText(e->remainingS)));
         break;
     case ExperimentEvent::Kind::Finished:
-        s.state = e->complete ? CellStatus::Complete : CellStatus::Failed;
+        s.state = e->complete() ? CellStatus::Complete : CellStatus::Failed;
         s.samples = e->samples;
-        s.run = ExperimentRunner::runPathOf(m_cells[i]); // where the runner puts it, whatever the line says
+        s.run = ExperimentFolder::runPathOf(m_cells[i]); // where the runner puts it, whatever the line says
         s.reason = e->reason;
         showCounts();
         break;
@@ -669,28 +594,36 @@ void ExperimentPage::handleLine(const QByteArray& line)
         m_grid->resizeColumnsToContents();
 }
 
-void ExperimentPage::processFinished(int exitCode, QProcess::ExitStatus status)
+void ExperimentPage::processFinished(ExperimentExit status, int exitCode)
 {
-    readOutput();
-    readErrors();
     for (int i = 0; i < int(m_statuses.size()); ++i)
         if (m_statuses[i].state == CellStatus::Running) { // stopped: the folder's state says pending
             m_statuses[i].state = CellStatus::Pending;
             updateRow(i);
         }
-    if (status == QProcess::CrashExit)
+    switch (status) {
+    case ExperimentExit::Crashed:
         m_status->setText(tr("The experiment crashed; Resume goes on with it."));
-    else if (exitCode == 0)
+        break;
+    case ExperimentExit::Complete:
         m_status->setText(tr("Every cell complete."));
-    else if (exitCode == 130)
+        break;
+    case ExperimentExit::Stopped:
         m_status->setText(tr("Stopped; Resume goes on."));
-    else if (exitCode == 1)
+        break;
+    case ExperimentExit::CellFailed:
         m_status->setText(tr("Done, but a cell failed: see its tooltip and the log."));
-    // Otherwise (2) the command's own message is the last line shown.
-    m_log->appendPlainText(tr("exit status %1").arg(status == QProcess::CrashExit ? -1 : exitCode));
+        break;
+    case ExperimentExit::Usage:
+        break; // the command's own message is the last line shown
+    }
+    if (const qint64 refused = m_process->refusedLines())
+        m_log->appendPlainText(
+            tr("%n line(s) of the experiment's output were no event and were left out.", nullptr, int(refused)));
+    m_log->appendPlainText(tr("exit status %1").arg(exitCode));
     updateButtons();
     refreshReport();
-    emit experimentFinished(status == QProcess::CrashExit ? -1 : exitCode);
+    emit experimentFinished(exitCode);
 }
 
 /// Loads the folder's report on a worker thread; the grid's figures and the ECDF of the cells
@@ -700,38 +633,42 @@ void ExperimentPage::refreshReport()
     const QString dir = folder();
     if (!ExperimentReport::isExperiment(dir))
         return;
-    if (m_reportThread) {
+    if (m_reportJob) {
         m_reportAgain = true;
         return;
     }
     m_reportFolder = dir;
-    auto result = std::make_shared<std::optional<ExperimentReport>>();
-    auto why = std::make_shared<QString>();
-    m_reportThread
-        = QThread::create([dir, result, why] { *result = ExperimentReport::load(dir, why.get()); });
-    connect(m_reportThread, &QThread::finished, this, [this, result, why] {
-        m_reportThread->deleteLater();
-        m_reportThread = nullptr;
-        m_report = *result;
-        m_reportError = *why;
-        if (m_report && m_plan && m_report->cells().size() == m_cells.size()) {
-            for (int i = 0; i < int(m_cells.size()); ++i) {
-                const ExperimentReport::Cell& c = m_report->cells()[i];
-                if (!isRunning())
-                    m_statuses[i] = c.status;
-                if (c.total && !m_series->find(seriesName(i)))
-                    for (qint64 v : c.total->values())
-                        m_series->add(seriesName(i), v);
-                updateRow(i);
-            }
+    m_reportJob = new ExperimentReportJob(dir, this);
+    connect(m_reportJob, &ExperimentReportJob::finished, this,
+            [this](std::shared_ptr<const ExperimentReport> report, const QString& error) {
+                m_reportJob->deleteLater();
+                m_reportJob = nullptr;
+                m_report = report ? std::optional<ExperimentReport>(*report) : std::nullopt;
+                m_reportError = error;
+                takeReport();
+                if (std::exchange(m_reportAgain, false))
+                    refreshReport();
+            });
+    m_reportJob->start();
+}
+
+/// The grid's figures and the ECDF of the cells that have no live totals, from the report.
+void ExperimentPage::takeReport()
+{
+    if (m_report && m_plan && m_report->cells().size() == m_cells.size()) {
+        for (int i = 0; i < int(m_cells.size()); ++i) {
+            const ExperimentReport::Cell& c = m_report->cells()[i];
+            if (!isRunning())
+                m_statuses[i] = c.status;
+            if (c.total && !m_series->find(seriesName(i)))
+                for (qint64 v : c.total->values())
+                    m_series->add(seriesName(i), v);
+            updateRow(i);
         }
-        showReport();
-        updateButtons();
-        emit reportUpdated();
-        if (std::exchange(m_reportAgain, false))
-            refreshReport();
-    });
-    m_reportThread->start();
+    }
+    showReport();
+    updateButtons();
+    emit reportUpdated();
 }
 
 void ExperimentPage::showReport()
@@ -746,47 +683,6 @@ void ExperimentPage::showReport()
     m_reportView->verticalScrollBar()->setValue(top);
 }
 
-bool ExperimentPage::exportReport(const QString& path, QString* error, const QString& format)
-{
-    if (!m_report) {
-        if (error)
-            *error = tr("There is no report yet.");
-        return false;
-    }
-    const QString kind = format.isEmpty() ? QFileInfo(path).suffix().toLower() : format;
-    const QList<ExperimentReport::Statistic> statistics {
-        ExperimentReport::Statistic(m_statistic->currentData().toInt())};
-    ReportFormats::Format f;
-    if (!ReportFormats::parse(kind == u"htm"_s ? u"html"_s : kind, &f)) {
-        if (error)
-            *error = tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind);
-        return false;
-    }
-    QString prefix;
-    if (f == ReportFormats::Format::Markdown) {
-        prefix = ExperimentReport::figurePrefixOf(path);
-        if (!m_report->writeFigures(prefix, error))
-            return false;
-    }
-    const QByteArray bytes = m_report->render(f, statistics, prefix);
-    return AtomicFile::write(path, bytes, error, false);
-}
-
-void ExperimentPage::chooseExport()
-{
-    const QString suggestion = QDir(folder()).filePath(u"report.pdf"_s);
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Report"), suggestion,
-        tr("PDF (*.pdf);;Markdown (*.md);;HTML (*.html);;LaTeX (*.tex);;CSV (*.csv);;JSON (*.json)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!exportReport(path, &error))
-        QMessageBox::warning(this, tr("Export Report"), error);
-    else
-        m_status->setText(tr("Report written to %1").arg(QDir::toNativeSeparators(path)));
-}
-
 void ExperimentPage::openCell(int row)
 {
     if (row < 0 || row >= m_statuses.size())
@@ -798,51 +694,6 @@ void ExperimentPage::openCell(int row)
         return;
     }
     emit openRunRequested(QDir(folder()).filePath(s.run));
-}
-
-void ExperimentPage::chooseFolder()
-{
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Experiment Folder"), folder());
-    if (!dir.isEmpty())
-        setFolder(dir);
-}
-
-void ExperimentPage::choosePlan()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Plan"), QFileInfo(m_planPath).path(),
-                                                      tr("Experiment plans (*.yaml *.yml);;All files (*)"));
-    QString error;
-    if (!path.isEmpty() && !openPlan(path, &error))
-        QMessageBox::warning(this, tr("Open Plan"), error);
-}
-
-void ExperimentPage::savePlanAs()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Plan"), m_planPath,
-                                                      tr("Experiment plans (*.yaml *.yml)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!AtomicFile::write(path, planText().toUtf8(), &error))
-        QMessageBox::warning(this, tr("Save Plan"), error);
-    else
-        setPlanPath(path);
-}
-
-void ExperimentPage::loadExample(int index)
-{
-    const QString path = m_examples->itemData(index).toString();
-    m_examples->setCurrentIndex(0);
-    if (path.isEmpty())
-        return;
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return;
-    setPlanText(QString::fromUtf8(f.readAll()));
-    m_planPath.clear(); // an example is saved into the folder when it runs
-    m_planEdited = true;
-    const QString name = QFileInfo(path).completeBaseName();
-    setFolder(QDir::home().filePath(u"bridgescope-experiments/"_s + name));
 }
 
 QString ExperimentPage::seriesName(int cell) const

@@ -5,9 +5,13 @@
 #include "experiment/experimentreport.h"
 #include "experiment/experimentrunner.h"
 
+class ExperimentProcess;
+class ExperimentReportJob;
+struct ExperimentEvent;
+enum class ExperimentExit : int;
+
 #include <memory>
 #include <optional>
-#include <QProcess>
 #include <QWidget>
 
 class EcdfChart;
@@ -21,16 +25,15 @@ class QPushButton;
 class QTableWidget;
 class QTabWidget;
 class QTextBrowser;
-class QThread;
 class QTimer;
 
 /// The Experiments page: a plan (opened, an example, or typed) checked as it is edited, its cells
 /// in a grid coloured by state, the running cell's totals as a live ECDF beside those of the cells
 /// before it, any finished cell opened on the Measure page, and the experiment's report.
 ///
-/// The experiment runs as `bridgescope experiment` in a child process (its labs start servers and
-/// bridges, which takes seconds, and a crash of one cannot take the window along); its JSON lines
-/// drive the page, its progress lines go to the log. Stopping it lets it clean up; Resume goes on.
+/// The experiment runs as `bridgescope experiment` in a child process (ExperimentProcess); its
+/// events drive the page, its progress lines go to the log, and the report is read by an
+/// ExperimentReportJob. The page lays out and draws. Stopping lets the child clean up; Resume goes on.
 class ExperimentPage : public QWidget
 {
     Q_OBJECT
@@ -103,10 +106,10 @@ private:
     void updateRow(int row);
     void updateButtons();
     void showCounts();
-    void readOutput();
-    void readErrors();
-    void handleLine(const QByteArray& line);
-    void processFinished(int exitCode, QProcess::ExitStatus status);
+    void showLogLine(const QString& line);
+    void handleEvent(const ExperimentEvent& event);
+    void processFinished(ExperimentExit status, int exitCode);
+    void takeReport();
     void loadState();
     void showReport();
     void openCell(int row);
@@ -135,8 +138,8 @@ private:
     QPlainTextEdit* m_log;
     QTimer* m_check; ///< the plan is checked once the typing pauses
     QTimer* m_redraw; ///< the live ECDF at most 4 times a second
-    QProcess* m_process = nullptr;
-    QThread* m_reportThread = nullptr;
+    ExperimentProcess* m_process;
+    ExperimentReportJob* m_reportJob = nullptr;
     bool m_reportAgain = false;
     QString m_planPath;
     QString m_program;
@@ -151,6 +154,4 @@ private:
     quint64 m_drawn = ~quint64(0);
     std::optional<ExperimentReport> m_report;
     QString m_reportError;
-    QByteArray m_stdoutRest;
-    QByteArray m_stderrRest;
 };

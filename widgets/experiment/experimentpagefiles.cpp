@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+// The Experiments page's files: plans opened and saved, folders opened, reports exported.
+#include "widgets/experiment/experimentpage.h"
+
+#include "base/atomicfile.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QMessageBox>
+
+using namespace Qt::StringLiterals;
+
+bool ExperimentPage::openPlan(const QString& path, QString* error)
+{
+    QString why;
+    QByteArray text;
+    if (!ExperimentPlan::load(path, &why, &text) && text.isEmpty()) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    // A plan with an error opens too: the editor is where it gets fixed. Path and folder first,
+    // so that the plan is checked, and its folder's state and report read, once.
+    m_planPath = path;
+    if (folder().isEmpty())
+        m_folder->setText(
+            QDir::toNativeSeparators(QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName())));
+    setPlanText(QString::fromUtf8(text));
+    return true;
+}
+
+bool ExperimentPage::openFolder(const QString& directory, QString* error)
+{
+    if (!ExperimentReport::isExperiment(directory)) {
+        if (error)
+            *error = tr("%1 is not an experiment's folder (it has no %2)")
+                         .arg(directory, ExperimentFolder::stateFileName());
+        return false;
+    }
+    m_folder->setText(QDir::toNativeSeparators(directory));
+    return openPlan(ExperimentFolder(directory).planPath(), error);
+}
+
+bool ExperimentPage::exportReport(const QString& path, QString* error, const QString& format)
+{
+    if (!m_report) {
+        if (error)
+            *error = tr("There is no report yet.");
+        return false;
+    }
+    const QString kind = format.isEmpty() ? QFileInfo(path).suffix().toLower() : format;
+    const QList<ExperimentReport::Statistic> statistics {
+        ExperimentReport::Statistic(m_statistic->currentData().toInt())};
+    ReportFormats::Format f;
+    if (!ReportFormats::parse(kind == u"htm"_s ? u"html"_s : kind, &f)) {
+        if (error)
+            *error = tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind);
+        return false;
+    }
+    QString why;
+    if (m_report->exportTo(path, f, statistics, &why).isEmpty() && !why.isEmpty()) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    return true;
+}
+
+void ExperimentPage::chooseExport()
+{
+    const QString suggestion = QDir(folder()).filePath(u"report.pdf"_s);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Report"), suggestion,
+        tr("PDF (*.pdf);;Markdown (*.md);;HTML (*.html);;LaTeX (*.tex);;CSV (*.csv);;JSON (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!exportReport(path, &error))
+        QMessageBox::warning(this, tr("Export Report"), error);
+    else
+        m_status->setText(tr("Report written to %1").arg(QDir::toNativeSeparators(path)));
+}
+
+void ExperimentPage::chooseFolder()
+{
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Experiment Folder"), folder());
+    if (!dir.isEmpty())
+        setFolder(dir);
+}
+
+void ExperimentPage::choosePlan()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Plan"), QFileInfo(m_planPath).path(),
+                                                      tr("Experiment plans (*.yaml *.yml);;All files (*)"));
+    QString error;
+    if (!path.isEmpty() && !openPlan(path, &error))
+        QMessageBox::warning(this, tr("Open Plan"), error);
+}
+
+void ExperimentPage::savePlanAs()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Plan"), m_planPath,
+                                                      tr("Experiment plans (*.yaml *.yml)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!AtomicFile::write(path, planText().toUtf8(), &error))
+        QMessageBox::warning(this, tr("Save Plan"), error);
+    else
+        setPlanPath(path);
+}
+
+void ExperimentPage::loadExample(int index)
+{
+    const QString path = m_examples->itemData(index).toString();
+    m_examples->setCurrentIndex(0);
+    if (path.isEmpty())
+        return;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return;
+    setPlanText(QString::fromUtf8(f.readAll()));
+    m_planPath.clear(); // an example is saved into the folder when it runs
+    m_planEdited = true;
+    const QString name = QFileInfo(path).completeBaseName();
+    setFolder(QDir::home().filePath(u"bridgescope-experiments/"_s + name));
+}
