@@ -13,7 +13,7 @@ using namespace Qt::StringLiterals;
 
 namespace {
 /// Pipelines name the line of an error, not its column.
-const YamlReader r(LocatedError::Style::Line);
+const YamlReader kReader(LocatedError::Style::Line);
 
 /// The host a name part stands for, or empty.
 QString hostOfToken(QStringView token)
@@ -144,33 +144,33 @@ int Pipeline::indexOf(QStringView topic) const
 
 Result<Pipeline> Pipeline::read(const QByteArray& yaml)
 {
-    const Result<YAML::Node> parsed = r.parse(yaml);
+    const Result<YAML::Node> parsed = kReader.parse(yaml);
     if (!parsed)
         return parsed.error();
     const YAML::Node& root = *parsed;
     if (!root.IsMap())
-        return r.error(tr("a pipeline is a mapping with topics_in_order"));
+        return kReader.error(tr("a pipeline is a mapping with topics_in_order"));
     const YAML::Node topics = root["topics_in_order"];
     if (!topics || !topics.IsSequence())
-        return r.error(tr("topics_in_order is missing or not a list"));
+        return kReader.error(tr("topics_in_order is missing or not a list"));
     QStringList names;
     for (const YAML::Node& t : topics) {
         if (!t.IsScalar() || t.Scalar().empty())
-            return r.errorAt(t, tr("every entry of topics_in_order must be a topic name"));
+            return kReader.errorAt(t, tr("every entry of topics_in_order must be a topic name"));
         // Qt drops a leading byte-order mark when decoding: the topic would change (found by
         // fuzz_pipeline).
         if (t.Scalar().rfind("\xef\xbb\xbf", 0) == 0)
-            return r.errorAt(t, tr("a topic starts with a byte-order mark (U+FEFF)"));
+            return kReader.errorAt(t, tr("a topic starts with a byte-order mark (U+FEFF)"));
         names << QString::fromStdString(t.Scalar());
         if (const qsizetype at = controlCharacter(names.last()); at >= 0)
-            return r.errorAt(t,
-                             tr("the topic %1 holds the control character U+%2 at %3")
-                                 .arg(quoted(names.last()),
-                                      u"%1"_s.arg(uint(names.last()[at].unicode()), 4, 16, QChar(u'0')),
-                                      QString::number(at + 1)));
+            return kReader.errorAt(t,
+                                   tr("the topic %1 holds the control character U+%2 at %3")
+                                       .arg(quoted(names.last()),
+                                            u"%1"_s.arg(uint(names.last()[at].unicode()), 4, 16, QChar(u'0')),
+                                            QString::number(at + 1)));
     }
     if (names.isEmpty())
-        return r.error(tr("topics_in_order is empty"));
+        return kReader.error(tr("topics_in_order is empty"));
     Pipeline p(names);
     if (const Status s = p.readSettings(root); !s)
         return s.error();
@@ -182,27 +182,28 @@ Status Pipeline::readSettings(const YAML::Node& root)
     if (const YAML::Node w = root["metrics_window"]) {
         int window = 0;
         if (!w.IsScalar() || !YAML::convert<int>::decode(w, window) || window < 0)
-            return r.errorAt(w, tr("metrics_window must be a whole number of samples (0: whole run)"));
+            return kReader.errorAt(w, tr("metrics_window must be a whole number of samples (0: whole run)"));
         m_window = window;
     }
     if (const YAML::Node one = root["one_clock"]) {
         bool oneClock = false;
         if (!one.IsScalar() || !YAML::convert<bool>::decode(one, oneClock))
-            return r.errorAt(one, tr("one_clock is true or false"));
+            return kReader.errorAt(one, tr("one_clock is true or false"));
         m_oneClock = oneClock;
     }
     if (const YAML::Node hosts = root["hosts"]) {
         if (!hosts.IsMap())
-            return r.errorAt(hosts, tr("hosts must map topics to host names"));
+            return kReader.errorAt(hosts, tr("hosts must map topics to host names"));
         for (const auto& kv : hosts) {
             const QString topic = YamlReader::text(kv.first);
             if (!kv.second.IsScalar())
-                return r.errorAt(kv.second, tr("the host of %1 must be a name").arg(topic));
+                return kReader.errorAt(kv.second, tr("the host of %1 must be a name").arg(topic));
             if (indexOf(topic) < 0)
-                return r.errorAt(kv.first, tr("hosts names %1, which is not in topics_in_order").arg(topic));
+                return kReader.errorAt(kv.first,
+                                       tr("hosts names %1, which is not in topics_in_order").arg(topic));
             const QString host = QString::fromStdString(kv.second.Scalar());
             if (controlCharacter(host) >= 0)
-                return r.errorAt(kv.second, tr("the host of %1 holds a control character").arg(topic));
+                return kReader.errorAt(kv.second, tr("the host of %1 holds a control character").arg(topic));
             setHost(topic, host);
         }
     }

@@ -13,7 +13,7 @@ const char* const kKeys[] = {"latency_p99_ms", "min_rate_hz",   "min_rate_percen
 static_assert(std::size(kKeys) == LinkRules::SettingCount);
 
 /// Rules name the line of an error, not its column.
-const YamlReader r(LocatedError::Style::Line);
+const YamlReader kReader(LocatedError::Style::Line);
 
 /// A number that is finite and not negative.
 std::optional<double> number(const YAML::Node& node)
@@ -38,7 +38,7 @@ Result<Threshold> threshold(const YAML::Node& node, const QString& key)
             const QString level = YamlReader::text(kv.first);
             const auto v = number(kv.second);
             if (!v || (level != u"warning"_s && level != u"alert"_s))
-                return r.errorAt(
+                return kReader.errorAt(
                     kv.first,
                     WatchRules::tr("%1 takes warning and alert levels, each a number ≥ 0").arg(key));
             (level == u"warning"_s ? t.warning : t.alert) = *v;
@@ -46,7 +46,7 @@ Result<Threshold> threshold(const YAML::Node& node, const QString& key)
         if (t.isSet())
             return t;
     }
-    return r.errorAt(node, WatchRules::tr("%1 takes a number ≥ 0 or {warning: N, alert: N}").arg(key));
+    return kReader.errorAt(node, WatchRules::tr("%1 takes a number ≥ 0 or {warning: N, alert: N}").arg(key));
 }
 
 /// The settings of one map; `match` is skipped (the caller reads it).
@@ -61,7 +61,7 @@ Status readSettings(const YAML::Node& map, QList<std::pair<LinkRules::Setting, T
             QStringList known;
             for (const char* k : kKeys)
                 known << QString::fromLatin1(k);
-            return r.errorAt(
+            return kReader.errorAt(
                 kv.first, WatchRules::tr("unknown setting '%1' (known: %2)").arg(key, known.join(u", "_s)));
         }
         const Result<Threshold> t = threshold(kv.second, key);
@@ -115,7 +115,7 @@ LinkRules LinkRules::defaults()
 
 Result<WatchRules> WatchRules::read(const QByteArray& yaml)
 {
-    const Result<YAML::Node> parsed = r.parse(yaml);
+    const Result<YAML::Node> parsed = kReader.parse(yaml);
     if (!parsed)
         return parsed.error();
     const YAML::Node& root = *parsed;
@@ -123,12 +123,12 @@ Result<WatchRules> WatchRules::read(const QByteArray& yaml)
     if (root.IsNull())
         return rules; // an empty file: the defaults
     if (!root.IsMap())
-        return r.error(tr("rules are a mapping with defaults and links"));
-    if (const Status s = r.checkKeys(root, {u"defaults"_s, u"links"_s}); !s)
+        return kReader.error(tr("rules are a mapping with defaults and links"));
+    if (const Status s = kReader.checkKeys(root, {u"defaults"_s, u"links"_s}); !s)
         return s.error();
     if (const YAML::Node d = root["defaults"]) {
         if (!d.IsMap())
-            return r.errorAt(d, tr("defaults is a mapping of settings"));
+            return kReader.errorAt(d, tr("defaults is a mapping of settings"));
         QList<std::pair<LinkRules::Setting, Threshold>> settings;
         if (const Status s = readSettings(d, &settings); !s)
             return s.error();
@@ -145,20 +145,20 @@ Result<WatchRules> WatchRules::read(const QByteArray& yaml)
 Status WatchRules::readOverrides(const YAML::Node& links, QList<Override>* out)
 {
     if (!links.IsSequence())
-        return r.errorAt(links, tr("links is a list of {match: PATTERN, settings...}"));
+        return kReader.errorAt(links, tr("links is a list of {match: PATTERN, settings...}"));
     if (links.size() > std::size_t(kMaxLinkRules))
-        return r.errorAt(links,
-                         tr("%1 entries in links; at most %2 are read (merge patterns with * and ?)")
-                             .arg(links.size())
-                             .arg(kMaxLinkRules));
+        return kReader.errorAt(links,
+                               tr("%1 entries in links; at most %2 are read (merge patterns with * and ?)")
+                                   .arg(links.size())
+                                   .arg(kMaxLinkRules));
     for (const YAML::Node& entry : links) {
         const YAML::Node match = entry.IsMap() ? entry["match"] : YAML::Node();
         if (!match || !match.IsScalar() || match.Scalar().empty())
-            return r.errorAt(entry, tr("every entry of links needs a match pattern"));
+            return kReader.errorAt(entry, tr("every entry of links needs a match pattern"));
         Override o;
         o.match = QString::fromStdString(match.Scalar());
         if (o.match.size() > kMaxPatternChars)
-            return r.errorAt(
+            return kReader.errorAt(
                 match,
                 tr("a match pattern of %1 characters; at most %2").arg(o.match.size()).arg(kMaxPatternChars));
         if (const Status s = readSettings(entry, &o.settings); !s)
