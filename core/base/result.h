@@ -21,6 +21,10 @@ public:
     TextPos pos; ///< zero-based, as yaml-cpp's marks; printed one-based
     QString file;
     Style style = Style::LineColumn;
+    /// What kind of error, for programs: "yaml-syntax", a YamlLimits code such as "yaml-too-deep",
+    /// or empty (a reader's own error).
+    QString code {};
+    QString fix {}; ///< how to correct it, when the reader knows
 
     /// "FILE: line L, column C: message", each part present only when known.
     QString toString() const

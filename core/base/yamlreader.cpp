@@ -13,8 +13,13 @@ Result<YAML::Node> YamlReader::parse(const QByteArray& text) const
 {
     try {
         return YamlLimits::load(text);
+    } catch (const YamlLimits::Exceeded& e) {
+        const YamlLimits::Violation& v = e.violation;
+        return LocatedError {v.message, v.pos, {}, m_style, v.code, v.fix};
     } catch (const YAML::Exception& e) {
-        return errorAt(e.mark, exactUtf8(e.msg));
+        LocatedError error = errorAt(e.mark, exactUtf8(e.msg));
+        error.code = u"yaml-syntax"_s;
+        return error;
     }
 }
 

@@ -29,8 +29,8 @@ public:
         : m_style(style)
     { }
 
-    /// The first document of `text` after YamlLimits::check(); a syntax error or a limit passed
-    /// is located where yaml-cpp or the limit found it.
+    /// The first document of `text` after YamlLimits::check(); a syntax error (code "yaml-syntax")
+    /// or a limit passed (the limit's code and fix) is located where yaml-cpp or the limit found it.
     Result<YAML::Node> parse(const QByteArray& text) const;
     /// The bytes of a YAML file (YamlLimits::readFile); the error names the file.
     static Result<QByteArray> readFile(const QString& path);

@@ -2,7 +2,6 @@
 #include "configreader.h"
 
 #include "base/exactutf8.h"
-#include "base/yamllimits.h"
 #include "base/yamlreader.h"
 #include "base/yamltree.h"
 
@@ -504,19 +503,17 @@ bool looksLikeMqttBridge(const YAML::Node& root)
 ConfigReadResult ConfigReader::read(const QByteArray& text)
 {
     Reader r;
-    YAML::Node root;
-    try {
-        root = YamlLimits::load(text);
-    } catch (const YamlLimits::Exceeded& e) {
-        const YamlLimits::Violation& v = e.violation;
-        r.problem(Severity::Error, v.code, v.pos, v.message, v.fix);
-        return r.result;
-    } catch (const YAML::Exception& e) {
-        r.problem(Severity::Error, u"yaml-syntax"_s, {e.mark.line, e.mark.column},
-                  tr("YAML syntax error: %1").arg(qs(e.msg)),
-                  tr("Fix the YAML at this place; nothing else could be checked."));
+    const Result<YAML::Node> parsed = YamlReader().parse(text);
+    if (!parsed) {
+        const LocatedError& e = parsed.error();
+        if (e.code == u"yaml-syntax"_s)
+            r.problem(Severity::Error, e.code, e.pos, tr("YAML syntax error: %1").arg(e.message),
+                      tr("Fix the YAML at this place; nothing else could be checked."));
+        else
+            r.problem(Severity::Error, e.code, e.pos, e.message, e.fix);
         return r.result;
     }
+    YAML::Node root = *parsed;
     BridgeConfig& cfg = r.result.config;
     const YAML::Node& croot = root; // const: operator[] must never insert keys
     if (!root.IsMap()) {

@@ -85,9 +85,12 @@ private slots:
         const Result<YAML::Node> syntax = reader.parse("a: [1,\n  2");
         QVERIFY(!syntax);
         QVERIFY(syntax.error().pos.isValid());
+        QCOMPARE(syntax.error().code, u"yaml-syntax"_s);
         const Result<YAML::Node> duplicate = reader.parse("a: 1\nb: 2\na: 3\n");
         QVERIFY(!duplicate);
         QCOMPARE(duplicate.error().pos, (TextPos {2, 0}));
+        QCOMPARE(duplicate.error().code, u"yaml-duplicate-key"_s);
+        QVERIFY(!duplicate.error().fix.isEmpty());
         QVERIFY2(duplicate.error().message.contains(u"appears twice"_s),
                  qPrintable(duplicate.error().message));
     }
