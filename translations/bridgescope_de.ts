@@ -2249,26 +2249,6 @@ factors:
 <context>
     <name>ExperimentPlan</name>
     <message>
-        <source>%1: a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</source>
-        <translation>%1: ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</translation>
-    </message>
-    <message>
-        <source>%1: unknown link setting &apos;%2&apos; (known: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</source>
-        <translation>%1: unbekannte Verbindungseinstellung &apos;%2&apos; (bekannt: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</translation>
-    </message>
-    <message>
-        <source>%1: %2 takes a number from 0 to %3</source>
-        <translation>%1: %2 nimmt eine Zahl von 0 bis %3</translation>
-    </message>
-    <message>
-        <source>%1: the bridge command must use {config}, the generated config&apos;s path</source>
-        <translation>%1: der Bridge-Befehl muss {config} verwenden, den Pfad der erzeugten Konfiguration</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
         <source>no link profile &apos;%1&apos; under links:</source>
         <translation>kein Verbindungsprofil &apos;%1&apos; unter links:</translation>
     </message>
@@ -2321,84 +2301,8 @@ factors:
         <translation>ein Plan ist eine Zuordnung: name, samples, factors oder cells, …</translation>
     </message>
     <message>
-        <source>%1: unknown key &apos;%2&apos; (known: %3)</source>
-        <translation>%1: unbekannter Schlüssel &apos;%2&apos; (bekannt: %3)</translation>
-    </message>
-    <message>
-        <source>%1: %2 takes a whole number from %3 to %4</source>
-        <translation>%1: %2 nimmt eine ganze Zahl von %3 bis %4</translation>
-    </message>
-    <message>
-        <source>%1: servers given are {broker: URL, ros_master: URI}</source>
-        <translation>%1: angegebene Server sind {broker: URL, ros_master: URI}</translation>
-    </message>
-    <message>
-        <source>%1: servers is embedded or {broker: URL, ros_master: URI}</source>
-        <translation>%1: servers ist embedded oder {broker: URL, ros_master: URI}</translation>
-    </message>
-    <message>
-        <source>%1: pipeline is paper or a pipeline file</source>
-        <translation>%1: pipeline ist paper oder eine Pipeline-Datei</translation>
-    </message>
-    <message>
-        <source>%1: bridges names implementations: {NAME: {command: …}}</source>
-        <translation>%1: bridges benennt Implementierungen: {NAME: {command: …}}</translation>
-    </message>
-    <message>
-        <source>%1: links names profiles: {NAME: {delay_ms: …}}</source>
-        <translation>%1: links benennt Profile: {NAME: {delay_ms: …}}</translation>
-    </message>
-    <message>
-        <source>%1: throughput is {rates_hz: [10, 20, …], seconds: N}</source>
-        <translation>%1: throughput ist {rates_hz: [10, 20, …], seconds: N}</translation>
-    </message>
-    <message>
-        <source>%1: seconds per rate from 1 to 3600</source>
-        <translation>%1: Sekunden je Rate von 1 bis 3600</translation>
-    </message>
-    <message>
-        <source>%1: defaults is a mapping of factor: level</source>
-        <translation>%1: defaults ist eine Zuordnung Faktor: Stufe</translation>
-    </message>
-    <message>
-        <source>%1: give factors (crossed) or cells (listed), not both</source>
-        <translation>%1: factors (gekreuzt) oder cells (aufgezählt) angeben, nicht beides</translation>
-    </message>
-    <message>
-        <source>%1: factors is a mapping of factor: [levels]</source>
-        <translation>%1: factors ist eine Zuordnung Faktor: [Stufen]</translation>
-    </message>
-    <message>
-        <source>%1: unknown factor &apos;%2&apos; (known: %3)</source>
-        <translation>%1: unbekannter Faktor &apos;%2&apos; (bekannt: %3)</translation>
-    </message>
-    <message>
-        <source>%1: factor &apos;%2&apos; twice</source>
-        <translation>%1: Faktor &apos;%2&apos; doppelt</translation>
-    </message>
-    <message>
-        <source>%1: %2 needs a list of levels</source>
-        <translation>%1: %2 braucht eine Liste von Stufen</translation>
-    </message>
-    <message>
-        <source>%1: more than %2 cells</source>
-        <translation>%1: mehr als %2 Zellen</translation>
-    </message>
-    <message>
-        <source>%1: cells is a list of {factor: level, …}</source>
-        <translation>%1: cells ist eine Liste von {Faktor: Stufe, …}</translation>
-    </message>
-    <message>
-        <source>%1: a cell is {factor: level, …}</source>
-        <translation>%1: eine Zelle ist {Faktor: Stufe, …}</translation>
-    </message>
-    <message>
         <source>two cells are the same: %1</source>
         <translation>zwei Zellen sind gleich: %1</translation>
-    </message>
-    <message>
-        <source>%1: a plan holds no credentials (it is copied next to its runs): give the broker without user and password</source>
-        <translation>%1: ein Plan enthält keine Zugangsdaten (er wird neben seinen Messläufen abgelegt): den Broker ohne Benutzer und Passwort angeben</translation>
     </message>
     <message>
         <source>%1 s</source>
@@ -2413,28 +2317,8 @@ factors:
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <source>line %1, column %2</source>
-        <translation>Zeile %1, Spalte %2</translation>
-    </message>
-    <message>
         <source>rate_hz takes %1 to 1000 Hz</source>
         <translation>rate_hz erwartet %1 bis 1000 Hz</translation>
-    </message>
-    <message>
-        <source>%1: timeout_s takes 1 to %2 seconds</source>
-        <translation>%1: timeout_s erwartet 1 bis %2 Sekunden</translation>
-    </message>
-    <message>
-        <source>%1: a rate from %2 to 10000 Hz</source>
-        <translation>%1: eine Rate von %2 bis 10000 Hz</translation>
-    </message>
-    <message>
-        <source>%1: a bridge is reference or {command: &quot;… {config} … {name} …&quot;, announce: once | every_message}</source>
-        <translation>%1: eine Bridge ist reference oder {command: &quot;… {config} … {name} …&quot;, announce: once | every_message}</translation>
-    </message>
-    <message>
-        <source>%1: a bridge&apos;s announce is once or every_message (what its command does)</source>
-        <translation>%1: announce einer Bridge ist once oder every_message (was ihr Befehl tut)</translation>
     </message>
     <message>
         <source>announce %1 cannot be honoured: the bridge %2 announces %3 (its entry under bridges: says so)</source>
@@ -2445,8 +2329,108 @@ factors:
         <translation>announce once ist nicht einzuhalten: was der Befehl der Bridge %1 ankündigt, ist nicht bekannt (der echte mqtt_client kündigt jede Nachricht an); announce: every_message (oder once) in ihrem Eintrag unter bridges: angeben</translation>
     </message>
     <message>
-        <source>%1: ros is 1 (a ROS master) or 2 (DDS, a private domain per cell)</source>
-        <translation>%1: ros ist 1 (ein ROS-Master) oder 2 (DDS, eine eigene Domain je Zelle)</translation>
+        <source>a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</source>
+        <translation>ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</translation>
+    </message>
+    <message>
+        <source>unknown link setting &apos;%1&apos; (known: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</source>
+        <translation>unbekannte Verbindungseinstellung &apos;%1&apos; (bekannt: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</translation>
+    </message>
+    <message>
+        <source>%1 takes a number from 0 to %2</source>
+        <translation>%1 nimmt eine Zahl von 0 bis %2</translation>
+    </message>
+    <message>
+        <source>a bridge is reference or {command: &quot;… {config} … {name} …&quot;, announce: once | every_message}</source>
+        <translation>eine Bridge ist reference oder {command: &quot;… {config} … {name} …&quot;, announce: once | every_message}</translation>
+    </message>
+    <message>
+        <source>a bridge&apos;s announce is once or every_message (what its command does)</source>
+        <translation>announce einer Bridge ist once oder every_message (was ihr Befehl tut)</translation>
+    </message>
+    <message>
+        <source>the bridge command must use {config}, the generated config&apos;s path</source>
+        <translation>der Bridge-Befehl muss {config} verwenden, den Pfad der erzeugten Konfiguration</translation>
+    </message>
+    <message>
+        <source>%1 takes a whole number from %2 to %3</source>
+        <translation>%1 nimmt eine ganze Zahl von %2 bis %3</translation>
+    </message>
+    <message>
+        <source>timeout_s takes 1 to %1 seconds</source>
+        <translation>timeout_s erwartet 1 bis %1 Sekunden</translation>
+    </message>
+    <message>
+        <source>ros is 1 (a ROS master) or 2 (DDS, a private domain per cell)</source>
+        <translation>ros ist 1 (ein ROS-Master) oder 2 (DDS, eine eigene Domain je Zelle)</translation>
+    </message>
+    <message>
+        <source>servers given are {broker: URL, ros_master: URI}</source>
+        <translation>angegebene Server sind {broker: URL, ros_master: URI}</translation>
+    </message>
+    <message>
+        <source>a plan holds no credentials (it is copied next to its runs): give the broker without user and password</source>
+        <translation>ein Plan enthält keine Zugangsdaten (er wird neben seinen Messläufen abgelegt): den Broker ohne Benutzer und Passwort angeben</translation>
+    </message>
+    <message>
+        <source>servers is embedded or {broker: URL, ros_master: URI}</source>
+        <translation>servers ist embedded oder {broker: URL, ros_master: URI}</translation>
+    </message>
+    <message>
+        <source>pipeline is paper or a pipeline file</source>
+        <translation>pipeline ist paper oder eine Pipeline-Datei</translation>
+    </message>
+    <message>
+        <source>bridges names implementations: {NAME: {command: …}}</source>
+        <translation>bridges benennt Implementierungen: {NAME: {command: …}}</translation>
+    </message>
+    <message>
+        <source>links names profiles: {NAME: {delay_ms: …}}</source>
+        <translation>links benennt Profile: {NAME: {delay_ms: …}}</translation>
+    </message>
+    <message>
+        <source>throughput is {rates_hz: [10, 20, …], seconds: N}</source>
+        <translation>throughput ist {rates_hz: [10, 20, …], seconds: N}</translation>
+    </message>
+    <message>
+        <source>a rate from %1 to 10000 Hz</source>
+        <translation>eine Rate von %1 bis 10000 Hz</translation>
+    </message>
+    <message>
+        <source>seconds per rate from 1 to 3600</source>
+        <translation>Sekunden je Rate von 1 bis 3600</translation>
+    </message>
+    <message>
+        <source>defaults is a mapping of factor: level</source>
+        <translation>defaults ist eine Zuordnung Faktor: Stufe</translation>
+    </message>
+    <message>
+        <source>give factors (crossed) or cells (listed), not both</source>
+        <translation>factors (gekreuzt) oder cells (aufgezählt) angeben, nicht beides</translation>
+    </message>
+    <message>
+        <source>factors is a mapping of factor: [levels]</source>
+        <translation>factors ist eine Zuordnung Faktor: [Stufen]</translation>
+    </message>
+    <message>
+        <source>factor &apos;%1&apos; twice</source>
+        <translation>Faktor &apos;%1&apos; doppelt</translation>
+    </message>
+    <message>
+        <source>%1 needs a list of levels</source>
+        <translation>%1 braucht eine Liste von Stufen</translation>
+    </message>
+    <message>
+        <source>more than %1 cells</source>
+        <translation>mehr als %1 Zellen</translation>
+    </message>
+    <message>
+        <source>cells is a list of {factor: level, …}</source>
+        <translation>cells ist eine Liste von {Faktor: Stufe, …}</translation>
+    </message>
+    <message>
+        <source>a cell is {factor: level, …}</source>
+        <translation>eine Zelle ist {Faktor: Stufe, …}</translation>
     </message>
 </context>
 <context>
@@ -3440,6 +3424,21 @@ factors:
     <message>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
+    </message>
+</context>
+<context>
+    <name>LocatedError</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -4914,14 +4913,6 @@ factors:
 <context>
     <name>Pipeline</name>
     <message>
-        <source>line %1</source>
-        <translation>Zeile %1</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
         <source>a pipeline is a mapping with topics_in_order</source>
         <translation>eine Pipeline ist eine Zuordnung mit topics_in_order</translation>
     </message>
@@ -4930,28 +4921,8 @@ factors:
         <translation>topics_in_order fehlt oder ist keine Liste</translation>
     </message>
     <message>
-        <source>%1: every entry of topics_in_order must be a topic name</source>
-        <translation>%1: jeder Eintrag von topics_in_order muss ein Topic-Name sein</translation>
-    </message>
-    <message>
         <source>topics_in_order is empty</source>
         <translation>topics_in_order ist leer</translation>
-    </message>
-    <message>
-        <source>%1: metrics_window must be a whole number of samples (0: whole run)</source>
-        <translation>%1: metrics_window muss eine ganze Zahl von Proben sein (0: ganzer Lauf)</translation>
-    </message>
-    <message>
-        <source>%1: hosts must map topics to host names</source>
-        <translation>%1: hosts muss Topics Rechnernamen zuordnen</translation>
-    </message>
-    <message>
-        <source>%1: the host of %2 must be a name</source>
-        <translation>%1: der Rechner von %2 muss ein Name sein</translation>
-    </message>
-    <message>
-        <source>%1: hosts names %2, which is not in topics_in_order</source>
-        <translation>%1: hosts nennt %2, das nicht in topics_in_order steht</translation>
     </message>
     <message>
         <source>%1 (%2 → %3)</source>
@@ -4962,20 +4933,40 @@ factors:
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <source>%1: the topic %2 holds the control character U+%3 at %4</source>
-        <translation>%1: das Topic %2 enthält das Steuerzeichen U+%3 an Stelle %4</translation>
+        <source>every entry of topics_in_order must be a topic name</source>
+        <translation>jeder Eintrag von topics_in_order muss ein Topic-Name sein</translation>
     </message>
     <message>
-        <source>%1: the host of %2 holds a control character</source>
-        <translation>%1: der Host von %2 enthält ein Steuerzeichen</translation>
+        <source>a topic starts with a byte-order mark (U+FEFF)</source>
+        <translation>ein Topic beginnt mit einer Bytereihenfolge-Markierung (U+FEFF)</translation>
     </message>
     <message>
-        <source>%1: a topic starts with a byte-order mark (U+FEFF)</source>
-        <translation>%1: ein Topic beginnt mit einer Bytereihenfolge-Markierung (U+FEFF)</translation>
+        <source>the topic %1 holds the control character U+%2 at %3</source>
+        <translation>das Topic %1 enthält das Steuerzeichen U+%2 an Stelle %3</translation>
     </message>
     <message>
-        <source>%1: one_clock is true or false</source>
-        <translation>%1: one_clock ist true oder false</translation>
+        <source>metrics_window must be a whole number of samples (0: whole run)</source>
+        <translation>metrics_window muss eine ganze Zahl von Proben sein (0: ganzer Lauf)</translation>
+    </message>
+    <message>
+        <source>one_clock is true or false</source>
+        <translation>one_clock ist true oder false</translation>
+    </message>
+    <message>
+        <source>hosts must map topics to host names</source>
+        <translation>hosts muss Topics Rechnernamen zuordnen</translation>
+    </message>
+    <message>
+        <source>the host of %1 must be a name</source>
+        <translation>der Rechner von %1 muss ein Name sein</translation>
+    </message>
+    <message>
+        <source>hosts names %1, which is not in topics_in_order</source>
+        <translation>hosts nennt %1, das nicht in topics_in_order steht</translation>
+    </message>
+    <message>
+        <source>the host of %1 holds a control character</source>
+        <translation>der Host von %1 enthält ein Steuerzeichen</translation>
     </message>
 </context>
 <context>
@@ -7859,52 +7850,40 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
 <context>
     <name>WatchRules</name>
     <message>
-        <source>line %1</source>
-        <translation>Zeile %1</translation>
-    </message>
-    <message>
-        <source>%1: %2 takes warning and alert levels, each a number ≥ 0</source>
-        <translation>%1: %2 erwartet Warn- und Alarmstufe, jeweils eine Zahl ≥ 0</translation>
-    </message>
-    <message>
-        <source>%1: %2 takes a number ≥ 0 or {warning: N, alert: N}</source>
-        <translation>%1: %2 erwartet eine Zahl ≥ 0 oder {warning: N, alert: N}</translation>
-    </message>
-    <message>
-        <source>%1: unknown setting &apos;%2&apos; (known: %3)</source>
-        <translation>%1: unbekannte Einstellung &apos;%2&apos; (bekannt: %3)</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
         <source>rules are a mapping with defaults and links</source>
         <translation>Regeln sind eine Zuordnung mit defaults und links</translation>
     </message>
     <message>
-        <source>%1: unknown key &apos;%2&apos; (known: defaults, links)</source>
-        <translation>%1: unbekannter Schlüssel &apos;%2&apos; (bekannt: defaults, links)</translation>
+        <source>%1 takes warning and alert levels, each a number ≥ 0</source>
+        <translation>%1 erwartet Warn- und Alarmstufe, jeweils eine Zahl ≥ 0</translation>
     </message>
     <message>
-        <source>%1: defaults is a mapping of settings</source>
-        <translation>%1: defaults ist eine Zuordnung von Einstellungen</translation>
+        <source>%1 takes a number ≥ 0 or {warning: N, alert: N}</source>
+        <translation>%1 erwartet eine Zahl ≥ 0 oder {warning: N, alert: N}</translation>
     </message>
     <message>
-        <source>%1: links is a list of {match: PATTERN, settings...}</source>
-        <translation>%1: links ist eine Liste von {match: MUSTER, Einstellungen...}</translation>
+        <source>unknown setting &apos;%1&apos; (known: %2)</source>
+        <translation>unbekannte Einstellung &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <source>%1: every entry of links needs a match pattern</source>
-        <translation>%1: jeder Eintrag von links braucht ein match-Muster</translation>
+        <source>defaults is a mapping of settings</source>
+        <translation>defaults ist eine Zuordnung von Einstellungen</translation>
     </message>
     <message>
-        <source>%1: %2 entries in links; at most %3 are read (merge patterns with * and ?)</source>
-        <translation>%1: %2 Einträge in links; höchstens %3 werden gelesen (Muster mit * und ? zusammenfassen)</translation>
+        <source>links is a list of {match: PATTERN, settings...}</source>
+        <translation>links ist eine Liste von {match: MUSTER, Einstellungen...}</translation>
     </message>
     <message>
-        <source>%1: a match pattern of %2 characters; at most %3</source>
-        <translation>%1: ein Suchmuster mit %2 Zeichen; höchstens %3</translation>
+        <source>%1 entries in links; at most %2 are read (merge patterns with * and ?)</source>
+        <translation>%1 Einträge in links; höchstens %2 werden gelesen (Muster mit * und ? zusammenfassen)</translation>
+    </message>
+    <message>
+        <source>every entry of links needs a match pattern</source>
+        <translation>jeder Eintrag von links braucht ein match-Muster</translation>
+    </message>
+    <message>
+        <source>a match pattern of %1 characters; at most %2</source>
+        <translation>ein Suchmuster mit %1 Zeichen; höchstens %2</translation>
     </message>
 </context>
 <context>
@@ -7997,10 +7976,6 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
         <source>Write the key as text, or remove the entry.</source>
         <translation>Schreiben Sie den Schlüssel als Text, oder entfernen Sie den Eintrag.</translation>
     </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
 </context>
 <context>
     <name>YamlPreview</name>
@@ -8030,10 +8005,10 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     </message>
 </context>
 <context>
-    <name>YamlVariant</name>
+    <name>YamlReader</name>
     <message>
-        <source>line %1, column %2: %3</source>
-        <translation>Zeile %1, Spalte %2: %3</translation>
+        <source>unknown key &apos;%1&apos; (known: %2)</source>
+        <translation>unbekannter Schlüssel &apos;%1&apos; (bekannt: %2)</translation>
     </message>
 </context>
 </TS>

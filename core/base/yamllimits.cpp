@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "yamllimits.h"
 
+#include "base/yamlreader.h"
+
 #include <istream>
-#include <QFile>
 #include <streambuf>
 #include <unordered_map>
 #include <vector>
@@ -388,13 +389,5 @@ YAML::Node YamlLimits::load(const QByteArray& text)
 
 std::optional<QByteArray> YamlLimits::readFile(const QString& path, QString* error)
 {
-    QFile f(path);
-    if (f.open(QIODevice::ReadOnly)) {
-        QByteArray bytes = f.read(maxBytes + 1);
-        if (f.error() == QFileDevice::NoError)
-            return bytes;
-    }
-    if (error)
-        *error = tr("%1: %2").arg(path, f.errorString());
-    return std::nullopt;
+    return YamlReader::readFile(path).toOptional(error);
 }

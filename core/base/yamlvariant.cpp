@@ -2,7 +2,7 @@
 #include "yamlvariant.h"
 
 #include "base/exactutf8.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 
 #include <QVariantList>
 #include <QVariantMap>
@@ -32,17 +32,20 @@ QVariant toVariant(const YAML::Node& node)
 }
 } // namespace
 
+Result<QVariant> YamlVariant::read(const QByteArray& text)
+{
+    const YamlReader reader;
+    const Result<YAML::Node> root = reader.parse(text);
+    if (!root)
+        return root.error();
+    try {
+        return toVariant(*root);
+    } catch (const YAML::Exception& e) { // a key that is no text
+        return reader.errorAt(e.mark, exactUtf8(e.msg));
+    }
+}
+
 std::optional<QVariant> YamlVariant::parse(const QByteArray& text, QString* error)
 {
-    try {
-        return toVariant(YamlLimits::load(text));
-    } catch (const YAML::Exception& e) {
-        if (error)
-            *error = e.mark.is_null() ? exactUtf8(e.msg)
-                                      : tr("line %1, column %2: %3")
-                                            .arg(e.mark.line + 1)
-                                            .arg(e.mark.column + 1)
-                                            .arg(exactUtf8(e.msg));
-        return std::nullopt;
-    }
+    return read(text).toOptional(error);
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <optional>
 #include <QByteArray>
 #include <QCoreApplication>
@@ -13,5 +15,7 @@ class YamlVariant
 {
     Q_DECLARE_TR_FUNCTIONS(YamlVariant)
 public:
+    /// The tree of `text`; a syntax error or a limit passed is located ("line 2, column 5: …").
+    static Result<QVariant> read(const QByteArray& text);
     static std::optional<QVariant> parse(const QByteArray& text, QString* error = nullptr);
 };

@@ -2,7 +2,7 @@
 #include "configreader.h"
 
 #include "base/exactutf8.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 #include "base/yamltree.h"
 
 #include <yaml-cpp/yaml.h>
@@ -15,14 +15,6 @@ namespace {
 QString qs(const std::string& s)
 {
     return exactUtf8(s);
-}
-
-TextPos posOf(const YAML::Node& n)
-{
-    const YAML::Mark m = n.Mark();
-    if (m.is_null())
-        return {};
-    return {m.line, m.column};
 }
 
 QString dump(const YAML::Node& n)
@@ -102,14 +94,14 @@ public:
         if (!map.IsDefined() || map.IsNull())
             return;
         if (!map.IsMap()) {
-            problem(Severity::Error, u"expected-map"_s, posOf(map),
+            problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(map),
                     tr("'%1' must be a map of options, not a %2.").arg(where, kindName(map)),
                     tr("Write the options as 'key: value' lines below '%1'.").arg(where));
             addExtra(block.extras, prefix, map);
             return;
         }
         if (!block.source.start.isValid())
-            block.source.start = posOf(map);
+            block.source.start = YamlReader::posOf(map);
         for (auto it = map.begin(); it != map.end(); ++it) {
             const QString key = keyText(it->first);
             const QStringList keyPath = prefix + QStringList {key};
@@ -117,7 +109,8 @@ public:
             const YAML::Node value = it->second;
             const OptionSpec* spec = OptionSchema::find(scope, path);
             if (spec) {
-                block.source.keys.insert(path, value.IsNull() ? posOf(it->first) : posOf(value));
+                block.source.keys.insert(
+                    path, value.IsNull() ? YamlReader::posOf(it->first) : YamlReader::posOf(value));
                 if (value.IsNull())
                     continue;
                 if (spec->kind == OptionKind::StringList && value.IsSequence()) {
@@ -140,14 +133,14 @@ public:
                         block.source.quoted.insert(path);
                     continue;
                 }
-                problem(Severity::Error, u"expected-value"_s, posOf(value),
+                problem(Severity::Error, u"expected-value"_s, YamlReader::posOf(value),
                         tr("'%1' must be a single value, not a %2.").arg(path, kindName(value)),
                         tr("Write it as '%1: value'.").arg(key));
                 addExtra(block.extras, keyPath, value);
             } else if (OptionSchema::isSection(scope, path) && (value.IsMap() || value.IsNull())) {
                 readBlock(scope, value, block, keyPath, path);
             } else {
-                block.source.keys.insert(path, posOf(it->first));
+                block.source.keys.insert(path, YamlReader::posOf(it->first));
                 addExtra(block.extras, keyPath, value);
             }
         }
@@ -170,14 +163,14 @@ public:
         m.id = Mapping::nextId();
         m.direction = d;
         m.block.source.index = index;
-        m.block.source.start = posOf(node);
+        m.block.source.start = YamlReader::posOf(node);
         return m;
     }
 
     void readRos1Bridge(const YAML::Node& bridge, BridgeConfig& cfg)
     {
         if (!bridge.IsMap()) {
-            problem(Severity::Error, u"expected-map"_s, posOf(bridge),
+            problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(bridge),
                     tr("'bridge' must be a map with 'ros2mqtt' and 'mqtt2ros' lists."));
             addExtra(cfg.rootExtras, {u"bridge"_s}, bridge);
             result.lossy = true;
@@ -194,7 +187,7 @@ public:
             if (list.IsNull())
                 continue;
             if (!list.IsSequence()) {
-                problem(Severity::Error, u"expected-list"_s, posOf(list),
+                problem(Severity::Error, u"expected-list"_s, YamlReader::posOf(list),
                         tr("'bridge.%1' must be a list of mappings ('- ros_topic: ...').").arg(key),
                         list.IsMap()
                             ? tr("This looks like the ROS 2 layout; it needs '<node>: ros__parameters:' "
@@ -207,11 +200,11 @@ public:
             int index = 0;
             for (const YAML::Node& item : list) {
                 if (!item.IsMap()) {
-                    problem(Severity::Error, u"expected-map"_s, posOf(item),
+                    problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(item),
                             tr("Entry %1 of 'bridge.%2' must be a map with 'ros_topic' and 'mqtt_topic'.")
                                 .arg(index + 1)
                                 .arg(key));
-                    drop(posOf(item), tr("Entry %1 of 'bridge.%2'").arg(index + 1).arg(key));
+                    drop(YamlReader::posOf(item), tr("Entry %1 of 'bridge.%2'").arg(index + 1).arg(key));
                     ++index;
                     continue;
                 }
@@ -226,7 +219,7 @@ public:
     void readRos2Bridge(const YAML::Node& bridge, BridgeConfig& cfg)
     {
         if (!bridge.IsMap()) {
-            problem(Severity::Error, u"expected-map"_s, posOf(bridge),
+            problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(bridge),
                     tr("'bridge' must be a map with 'ros2mqtt' and 'mqtt2ros'."));
             addExtra(cfg.rootExtras, {u"bridge"_s}, bridge);
             result.lossy = true;
@@ -251,7 +244,7 @@ public:
         const QString listKey = out ? u"ros_topics"_s : u"mqtt_topics"_s;
         const QString topicField = out ? u"ros_topic"_s : u"mqtt_topic"_s;
         if (!node.IsMap()) {
-            problem(Severity::Error, u"expected-map"_s, posOf(node),
+            problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(node),
                     tr("'bridge.%1' must be a map with '%2' and one entry per topic.").arg(key, listKey));
             addExtra(cfg.bridgeExtras, {key}, node);
             result.lossy = true;
@@ -261,9 +254,9 @@ public:
         QStringList listed;
         if (topics.IsDefined() && !topics.IsNull()) {
             if (!topics.IsSequence()) {
-                problem(Severity::Error, u"expected-list"_s, posOf(topics),
+                problem(Severity::Error, u"expected-list"_s, YamlReader::posOf(topics),
                         tr("'bridge.%1.%2' must be a list of topic names.").arg(key, listKey));
-                drop(posOf(topics), u"'bridge.%1.%2'"_s.arg(key, listKey));
+                drop(YamlReader::posOf(topics), u"'bridge.%1.%2'"_s.arg(key, listKey));
             } else {
                 int index = 0;
                 for (const YAML::Node& t : topics) {
@@ -272,7 +265,7 @@ public:
                     Mapping m = newMapping(d, index++, t);
                     const YAML::Node settings = node[topic.toStdString()];
                     if (!settings.IsDefined() || settings.IsNull()) {
-                        problem(Severity::Error, u"missing-topic-settings"_s, posOf(t),
+                        problem(Severity::Error, u"missing-topic-settings"_s, YamlReader::posOf(t),
                                 tr("'%1' is listed in '%2' but has no settings below 'bridge.%3'.")
                                     .arg(topic, listKey, key),
                                 tr("Add '%1:' with its '%2' below 'bridge.%3'.")
@@ -287,7 +280,7 @@ public:
                     for (const QString& p : m.block.values.paths())
                         ordered.copyFrom(m.block.values, p);
                     m.block.values = ordered;
-                    m.block.source.keys.insert(topicField, posOf(t));
+                    m.block.source.keys.insert(topicField, YamlReader::posOf(t));
                     if (t.IsScalar() && isQuoted(t))
                         m.block.source.quoted.insert(topicField);
                     cfg.mappings.append(m);
@@ -299,7 +292,7 @@ public:
             if (k == listKey || listed.contains(k))
                 continue;
             problem(
-                Severity::Warning, u"unlisted-topic"_s, posOf(it->first),
+                Severity::Warning, u"unlisted-topic"_s, YamlReader::posOf(it->first),
                 tr("'%1' has settings below 'bridge.%2' but is not listed in '%3'; mqtt_client ignores it.")
                     .arg(k, key, listKey),
                 tr("Add '%1' to '%2' or remove its settings.").arg(k, listKey));
@@ -340,13 +333,13 @@ public:
             if (k == u"ca_certs"_s) {
                 cfg.broker.values.setText(u"tls.enabled"_s, u"true"_s);
                 cfg.broker.values.setText(u"tls.ca_certificate"_s, text);
-                cfg.broker.source.keys.insert(u"tls.ca_certificate"_s, posOf(v));
+                cfg.broker.source.keys.insert(u"tls.ca_certificate"_s, YamlReader::posOf(v));
             } else if (k == u"certfile"_s) {
                 cfg.client.values.setText(u"tls.certificate"_s, text);
-                cfg.client.source.keys.insert(u"tls.certificate"_s, posOf(v));
+                cfg.client.source.keys.insert(u"tls.certificate"_s, YamlReader::posOf(v));
             } else if (k == u"keyfile"_s) {
                 cfg.client.values.setText(u"tls.key"_s, text);
-                cfg.client.source.keys.insert(u"tls.key"_s, posOf(v));
+                cfg.client.source.keys.insert(u"tls.key"_s, YamlReader::posOf(v));
             } else if (k == u"tls_insecure"_s) {
                 const bool insecure = YamlText::isTrue(text);
                 cfg.client.values.setText(u"tls.verify"_s, insecure ? u"false"_s : u"true"_s);
@@ -400,7 +393,7 @@ public:
                     OptionBlock& b = cfg.block(hit->scope);
                     const QString path = QLatin1String(hit->path);
                     b.values.setText(path, qs(jt->second.Scalar()));
-                    b.source.keys.insert(path, posOf(jt->second));
+                    b.source.keys.insert(path, YamlReader::posOf(jt->second));
                 } else {
                     addExtra(cfg.rootExtras, {u"mqtt"_s, section, k}, jt->second);
                 }
@@ -411,7 +404,7 @@ public:
     void readMqttBridgeList(const YAML::Node& list, BridgeConfig& cfg)
     {
         if (!list.IsSequence()) {
-            problem(Severity::Error, u"expected-list"_s, posOf(list),
+            problem(Severity::Error, u"expected-list"_s, YamlReader::posOf(list),
                     tr("mqtt_bridge's 'bridge' must be a list of factories."));
             addExtra(cfg.rootExtras, {u"bridge"_s}, list);
             result.lossy = true;
@@ -421,11 +414,11 @@ public:
         for (const YAML::Node& item : list) {
             const int i = index++;
             if (!item.IsMap()) {
-                problem(Severity::Error, u"expected-map"_s, posOf(item),
+                problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(item),
                         tr("Entry %1 of 'bridge' must be a map with 'factory', 'msg_type', 'topic_from' and "
                            "'topic_to'.")
                             .arg(i + 1));
-                drop(posOf(item), tr("Entry %1 of 'bridge'").arg(i + 1));
+                drop(YamlReader::posOf(item), tr("Entry %1 of 'bridge'").arg(i + 1));
                 continue;
             }
             const YAML::Node factoryNode = item["factory"];
@@ -436,12 +429,12 @@ public:
             } else if (factory.endsWith(u"MqttToRosBridge"_s)) {
                 d = Direction::Mqtt2Ros;
             } else {
-                problem(Severity::Error, u"unknown-factory"_s, posOf(item),
+                problem(Severity::Error, u"unknown-factory"_s, YamlReader::posOf(item),
                         tr("Entry %1 of 'bridge' has factory '%2'; only mqtt_bridge's RosToMqttBridge and "
                            "MqttToRosBridge are understood.")
                             .arg(i + 1)
                             .arg(factory));
-                drop(posOf(item), tr("Entry %1 of 'bridge'").arg(i + 1));
+                drop(YamlReader::posOf(item), tr("Entry %1 of 'bridge'").arg(i + 1));
                 continue;
             }
             Mapping m = newMapping(d, i, item);
@@ -465,7 +458,7 @@ public:
                     if (k == u"msg_type"_s)
                         text = ConfigReader::rosTypeFromMqttBridge(text);
                     m.block.values.setText(path, text);
-                    m.block.source.keys.insert(path, posOf(v));
+                    m.block.source.keys.insert(path, YamlReader::posOf(v));
                 } else {
                     addExtra(m.block.extras, {k}, v);
                 }
@@ -510,19 +503,17 @@ bool looksLikeMqttBridge(const YAML::Node& root)
 ConfigReadResult ConfigReader::read(const QByteArray& text)
 {
     Reader r;
-    YAML::Node root;
-    try {
-        root = YamlLimits::load(text);
-    } catch (const YamlLimits::Exceeded& e) {
-        const YamlLimits::Violation& v = e.violation;
-        r.problem(Severity::Error, v.code, v.pos, v.message, v.fix);
-        return r.result;
-    } catch (const YAML::Exception& e) {
-        r.problem(Severity::Error, u"yaml-syntax"_s, {e.mark.line, e.mark.column},
-                  tr("YAML syntax error: %1").arg(qs(e.msg)),
-                  tr("Fix the YAML at this place; nothing else could be checked."));
+    const Result<YAML::Node> parsed = YamlReader().parse(text);
+    if (!parsed) {
+        const LocatedError& e = parsed.error();
+        if (e.code == u"yaml-syntax"_s)
+            r.problem(Severity::Error, e.code, e.pos, tr("YAML syntax error: %1").arg(e.message),
+                      tr("Fix the YAML at this place; nothing else could be checked."));
+        else
+            r.problem(Severity::Error, e.code, e.pos, e.message, e.fix);
         return r.result;
     }
+    YAML::Node root = *parsed;
     BridgeConfig& cfg = r.result.config;
     const YAML::Node& croot = root; // const: operator[] must never insert keys
     if (!root.IsMap()) {
@@ -560,9 +551,9 @@ ConfigReadResult ConfigReader::read(const QByteArray& text)
                     if (params.IsMap())
                         r.readMqttClientRoot(params, cfg, true);
                     else if (!params.IsNull()) {
-                        r.problem(Severity::Error, u"expected-map"_s, posOf(params),
+                        r.problem(Severity::Error, u"expected-map"_s, YamlReader::posOf(params),
                                   tr("'ros__parameters' must be a map."));
-                        r.drop(posOf(params), u"'%1.ros__parameters'"_s.arg(key));
+                        r.drop(YamlReader::posOf(params), u"'%1.ros__parameters'"_s.arg(key));
                     }
                 }
             }

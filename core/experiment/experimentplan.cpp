@@ -2,7 +2,7 @@
 #include "experimentplan.h"
 
 #include "base/secrets.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 #include "base/yamltree.h"
 
 #include <algorithm>
@@ -23,23 +23,16 @@ constexpr double kStopSeconds = 2;
 constexpr double kMinRateHz = 0.01; ///< one sample every 100 s
 constexpr double kMaxTimeoutSeconds = 7 * 24 * 3600; ///< a week per cell
 
-QString where(const YAML::Mark& mark)
-{
-    return ExperimentPlan::tr("line %1, column %2").arg(mark.line + 1).arg(mark.column + 1);
-}
+using Combination = QList<std::pair<QString, YAML::Node>>;
 
 QString text(const YAML::Node& n)
 {
-    return n && n.IsScalar() ? QString::fromStdString(n.Scalar()) : QString();
+    return YamlReader::text(n);
 }
 
 std::optional<double> number(const YAML::Node& n)
 {
-    if (!n || !n.IsScalar())
-        return std::nullopt;
-    bool ok = false;
-    const double v = text(n).toDouble(&ok);
-    return ok && std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+    return YamlReader::number(n);
 }
 
 /// A compact label for a level written as a map: "delay_ms=20,jitter_ms=2".
@@ -58,15 +51,12 @@ struct Named
     QHash<QString, LinkProfile> links;
 };
 
-std::optional<LinkProfile> linkProfile(const YAML::Node& n, QString* error)
+Result<LinkProfile> linkProfile(const YamlReader& r, const YAML::Node& n)
 {
     LinkProfile p;
-    if (!n.IsMap()) {
-        *error
-            = ExperimentPlan::tr("%1: a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}")
-                  .arg(where(n.Mark()));
-        return std::nullopt;
-    }
+    if (!n.IsMap())
+        return r.errorAt(
+            n, ExperimentPlan::tr("a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}"));
     for (const auto& kv : n) {
         const QString key = text(kv.first);
         const std::optional<double> v = number(kv.second);
@@ -75,27 +65,22 @@ std::optional<LinkProfile> linkProfile(const YAML::Node& n, QString* error)
             : key == u"bandwidth_mbit"_s     ? &p.bandwidthMbit
             : key == u"loss_percent"_s       ? &p.lossPercent
                                              : nullptr;
-        if (!field) {
-            *error = ExperimentPlan::tr(
-                         "%1: unknown link setting '%2' (known: delay_ms, jitter_ms, bandwidth_mbit, "
-                         "loss_percent)")
-                         .arg(where(kv.first.Mark()), key);
-            return std::nullopt;
-        }
+        if (!field)
+            return r.errorAt(kv.first,
+                             ExperimentPlan::tr("unknown link setting '%1' (known: delay_ms, jitter_ms, "
+                                                "bandwidth_mbit, loss_percent)")
+                                 .arg(key));
         const double max = field == &p.lossPercent ? 50 : field == &p.bandwidthMbit ? 100'000 : 10'000;
-        if (!v || *v < 0 || *v > max) {
-            *error = ExperimentPlan::tr("%1: %2 takes a number from 0 to %3")
-                         .arg(where(kv.second.Mark()), key)
-                         .arg(max);
-            return std::nullopt;
-        }
+        if (!v || *v < 0 || *v > max)
+            return r.errorAt(kv.second,
+                             ExperimentPlan::tr("%1 takes a number from 0 to %2").arg(key).arg(max));
         *field = *v;
     }
     return p;
 }
 
-std::optional<BridgeImplementation> bridgeImplementation(const QString& name, const YAML::Node& n,
-                                                         QString* error)
+Result<BridgeImplementation> bridgeImplementation(const YamlReader& r, const QString& name,
+                                                  const YAML::Node& n)
 {
     BridgeImplementation b;
     b.name = name;
@@ -103,127 +88,112 @@ std::optional<BridgeImplementation> bridgeImplementation(const QString& name, co
         return b;
     const YAML::Node command = n.IsMap() ? n["command"] : YAML::Node();
     const YAML::Node announce = n.IsMap() ? n["announce"] : YAML::Node();
-    if (!command || !command.IsScalar() || command.Scalar().empty() || n.size() != (announce ? 2u : 1u)) {
-        *error = ExperimentPlan::tr(
-                     "%1: a bridge is reference or {command: \"… {config} … {name} …\", announce: "
-                     "once | every_message}")
-                     .arg(where(n.Mark()));
-        return std::nullopt;
-    }
+    if (!command || !command.IsScalar() || command.Scalar().empty() || n.size() != (announce ? 2u : 1u))
+        return r.errorAt(n,
+                         ExperimentPlan::tr("a bridge is reference or {command: \"… {config} … {name} …\", "
+                                            "announce: once | every_message}"));
     if (announce) {
         b.announce = text(announce);
-        if (b.announce != u"once"_s && b.announce != u"every_message"_s) {
-            *error = ExperimentPlan::tr("%1: a bridge's announce is once or every_message (what its command does)")
-                         .arg(where(announce.Mark()));
-            return std::nullopt;
-        }
+        if (b.announce != u"once"_s && b.announce != u"every_message"_s)
+            return r.errorAt(announce,
+                             ExperimentPlan::tr("a bridge's announce is once or every_message (what its "
+                                                "command does)"));
     }
     b.command = text(command);
-    if (!b.command.contains(u"{config}"_s)) {
-        *error = ExperimentPlan::tr("%1: the bridge command must use {config}, the generated config's path")
-                     .arg(where(command.Mark()));
-        return std::nullopt;
-    }
+    if (!b.command.contains(u"{config}"_s))
+        return r.errorAt(command,
+                         ExperimentPlan::tr("the bridge command must use {config}, the generated "
+                                            "config's path"));
     return b;
 }
 
-/// Sets one factor of `s` from its level; the level's label in `label`.
-bool applyLevel(CellSettings& s, const QString& factor, const YAML::Node& level, const Named& named,
-                QString* label, QString* error)
+/// Sets the link or the bridge of `s` from its level; the level's label, or the error at it.
+Result<QString> applyNamedLevel(const YamlReader& r, CellSettings& s, const QString& factor,
+                                const YAML::Node& level, const Named& named)
 {
-    const auto fail = [&](const QString& what) {
-        *error = ExperimentPlan::tr("%1: %2").arg(where(level.Mark()), what);
-        return false;
-    };
-    *label = level.IsScalar() ? text(level) : level.IsMap() ? mapLabel(level) : QString();
     const QString t = text(level);
     if (factor == u"link"_s) {
         if (level.IsMap()) {
-            const std::optional<LinkProfile> p = linkProfile(level, error);
+            const Result<LinkProfile> p = linkProfile(r, level);
             if (!p)
-                return false;
+                return p.error();
             s.link = *p;
-            s.linkName = *label;
-            return true;
+            s.linkName = mapLabel(level);
+            return s.linkName;
         }
-        if (t == u"none"_s) {
-            s.link = {};
-            s.linkName = t;
-            return true;
-        }
-        if (!named.links.contains(t))
-            return fail(ExperimentPlan::tr("no link profile '%1' under links:").arg(t));
-        s.link = named.links.value(t);
+        if (t != u"none"_s && !named.links.contains(t))
+            return r.errorAt(level, ExperimentPlan::tr("no link profile '%1' under links:").arg(t));
+        s.link = t == u"none"_s ? LinkProfile() : named.links.value(t);
         s.linkName = t;
-        return true;
+        return t;
     }
-    if (factor == u"bridge"_s) {
-        if (level.IsMap()) {
-            const std::optional<BridgeImplementation> b = bridgeImplementation(u"command"_s, level, error);
-            if (!b)
-                return false;
-            s.bridge = *b;
-            *label = u"command"_s;
-            return true;
-        }
-        if (t == u"reference"_s) {
-            s.bridge = {};
-            return true;
-        }
-        if (!named.bridges.contains(t))
-            return fail(ExperimentPlan::tr("no bridge '%1' under bridges: (or reference)").arg(t));
-        s.bridge = named.bridges.value(t);
-        return true;
+    if (level.IsMap()) {
+        const Result<BridgeImplementation> b = bridgeImplementation(r, u"command"_s, level);
+        if (!b)
+            return b.error();
+        s.bridge = *b;
+        return u"command"_s;
     }
-    if (!level.IsScalar())
-        return fail(ExperimentPlan::tr("a level of %1 is a single value").arg(factor));
+    if (t != u"reference"_s && !named.bridges.contains(t))
+        return r.errorAt(level, ExperimentPlan::tr("no bridge '%1' under bridges: (or reference)").arg(t));
+    s.bridge = t == u"reference"_s ? BridgeImplementation() : named.bridges.value(t);
+    return t;
+}
+
+/// Sets a factor of `s` whose level is one value; the error text, empty when it is set.
+QString applyValueLevel(CellSettings& s, const QString& factor, const YAML::Node& level)
+{
+    const QString t = text(level);
     if (factor == u"payload"_s) {
         const std::optional<int> bytes = ExperimentPlan::payloadBytes(t);
         if (!bytes)
-            return fail(
-                ExperimentPlan::tr("payload is bytes (20000), a percentage of the 0.18 MB scan (25%), "
-                                   "scan or pointcloud2; not '%1'")
-                    .arg(t));
+            return ExperimentPlan::tr("payload is bytes (20000), a percentage of the 0.18 MB scan (25%), "
+                                      "scan or pointcloud2; not '%1'")
+                .arg(t);
         s.payloadBytes = *bytes;
-        return true;
-    }
-    if (factor == u"rate_hz"_s || factor == u"detection_ms"_s) {
+    } else if (factor == u"rate_hz"_s || factor == u"detection_ms"_s) {
         const std::optional<double> v = number(level);
         const bool rate = factor == u"rate_hz"_s;
         if (!v || (rate ? (*v < kMinRateHz || *v > 1000) : (*v < 0 || *v > 10'000)))
-            return fail(rate ? ExperimentPlan::tr("rate_hz takes %1 to 1000 Hz").arg(kMinRateHz)
-                             : ExperimentPlan::tr("detection_ms takes 0 to 10000 ms"));
+            return rate ? ExperimentPlan::tr("rate_hz takes %1 to 1000 Hz").arg(kMinRateHz)
+                        : ExperimentPlan::tr("detection_ms takes 0 to 10000 ms");
         (rate ? s.rateHz : s.detectionMs) = *v;
-        return true;
-    }
-    if (factor == u"qos"_s) {
+    } else if (factor == u"qos"_s) {
         if (t != u"0"_s && t != u"1"_s && t != u"2"_s)
-            return fail(ExperimentPlan::tr("qos is 0, 1 or 2"));
+            return ExperimentPlan::tr("qos is 0, 1 or 2");
         s.qos = t.toInt();
-        return true;
-    }
-    if (factor == u"tls"_s) {
+    } else if (factor == u"tls"_s) {
         if (!YamlText::isTrue(t) && !YamlText::isFalse(t))
-            return fail(ExperimentPlan::tr("tls is true or false"));
+            return ExperimentPlan::tr("tls is true or false");
         s.tls = YamlText::isTrue(t);
-        return true;
-    }
-    if (factor == u"announce"_s) {
+    } else if (factor == u"announce"_s) {
         if (t != u"once"_s && t != u"every_message"_s)
-            return fail(ExperimentPlan::tr("announce is once or every_message"));
+            return ExperimentPlan::tr("announce is once or every_message");
         s.announceEveryMessage = t == u"every_message"_s;
-        return true;
-    }
-    if (factor == u"queue_size"_s) {
+    } else if (factor == u"queue_size"_s) {
         bool ok = false;
         const int v = t.toInt(&ok);
         if (!ok || v < 1 || v > 100'000)
-            return fail(ExperimentPlan::tr("queue_size takes 1 to 100000"));
+            return ExperimentPlan::tr("queue_size takes 1 to 100000");
         s.queueSize = v;
-        return true;
+    } else {
+        return ExperimentPlan::tr("unknown factor '%1' (known: %2)")
+            .arg(factor, ExperimentPlan::knownFactors().join(u", "_s));
     }
-    return fail(ExperimentPlan::tr("unknown factor '%1' (known: %2)")
-                    .arg(factor, ExperimentPlan::knownFactors().join(u", "_s)));
+    return {};
+}
+
+/// Sets one factor of `s` from its level; the level's label, or the error at the level.
+Result<QString> applyLevel(const YamlReader& r, CellSettings& s, const QString& factor,
+                           const YAML::Node& level, const Named& named)
+{
+    if (factor == u"link"_s || factor == u"bridge"_s)
+        return applyNamedLevel(r, s, factor, level, named);
+    if (!level.IsScalar())
+        return r.errorAt(level, ExperimentPlan::tr("a level of %1 is a single value").arg(factor));
+    if (const QString problem = applyValueLevel(s, factor, level); !problem.isEmpty())
+        return r.errorAt(level, problem);
+    return text(level);
 }
 
 /// Fits the announcement to a command's bridge: what its `bridges:` entry says it does, unless the
@@ -328,242 +298,342 @@ double ExperimentPlan::timeoutSeconds(const ExperimentCell& cell) const
     return 60 + 3 * double(warmup + samples) / cell.settings.rateHz;
 }
 
-std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, const QString& baseDir,
-                                                       QString* error)
+namespace {
+/// Reads a plan's tree in the order its keys are checked (the first error is the one reported).
+class PlanReader
 {
-    QString why;
-    const auto fail = [&](const QString& text) -> std::optional<ExperimentPlan> {
-        if (error)
-            *error = text;
-        return std::nullopt;
-    };
-    YAML::Node root;
-    try {
-        root = YamlLimits::load(yaml);
-    } catch (const YAML::Exception& e) {
-        return fail(tr("%1: %2").arg(where(e.mark), QString::fromStdString(e.msg)));
-    }
-    if (!root.IsMap())
-        return fail(tr("a plan is a mapping: name, samples, factors or cells, …"));
-    static const QStringList known {u"name"_s,      u"samples"_s, u"warmup"_s,   u"repetitions"_s,
-                                    u"timeout_s"_s, u"servers"_s, u"pipeline"_s, u"defaults"_s,
-                                    u"factors"_s,   u"cells"_s,   u"bridges"_s,  u"links"_s,
-                                    u"throughput"_s, u"ros"_s};
-    for (const auto& kv : root) {
-        const QString key = text(kv.first);
-        if (!known.contains(key))
-            return fail(
-                tr("%1: unknown key '%2' (known: %3)").arg(where(kv.first.Mark()), key, known.join(u", "_s)));
-    }
-    ExperimentPlan plan;
-    plan.name = text(root["name"]);
-    const auto count = [&](const char* key, int min, int max, int* out) {
-        const YAML::Node n = root[key];
-        if (!n)
-            return true;
-        bool ok = false;
-        const int v = text(n).toInt(&ok);
-        if (!ok || v < min || v > max) {
-            why = tr("%1: %2 takes a whole number from %3 to %4")
-                      .arg(where(n.Mark()), QLatin1String(key))
-                      .arg(min)
-                      .arg(max);
-            return false;
-        }
-        *out = v;
-        return true;
-    };
-    if (!count("samples", 1, 1'000'000, &plan.samples) || !count("warmup", 0, 100'000, &plan.warmup)
-        || !count("repetitions", 1, 1000, &plan.repetitions))
-        return fail(why);
-    if (const YAML::Node t = root["timeout_s"]) {
-        const std::optional<double> v = number(t);
-        if (!v || *v < 1 || *v > kMaxTimeoutSeconds)
-            return fail(
-                tr("%1: timeout_s takes 1 to %2 seconds").arg(where(t.Mark())).arg(kMaxTimeoutSeconds));
-        plan.cellTimeoutS = *v;
-    }
-    if (const YAML::Node r = root["ros"]) {
-        const QString ros = text(r);
-        if (ros != u"1"_s && ros != u"2"_s)
-            return fail(tr("%1: ros is 1 (a ROS master) or 2 (DDS, a private domain per cell)").arg(where(r.Mark())));
-        plan.ros = ros.toInt();
-    }
-    if (const YAML::Node s = root["servers"]) {
-        if (s.IsMap()) {
-            plan.brokerUrl = text(s["broker"]);
-            plan.rosMasterUri = text(s["ros_master"]);
-            if (plan.brokerUrl.isEmpty() || (plan.rosMasterUri.isEmpty() && plan.ros == 1))
-                return fail(tr("%1: servers given are {broker: URL, ros_master: URI}").arg(where(s.Mark())));
-            if (Secrets::urlWithoutCredentials(plan.brokerUrl) != plan.brokerUrl)
-                return fail(tr("%1: a plan holds no credentials (it is copied next to its runs): give the "
-                               "broker without user and password")
-                                .arg(where(s.Mark())));
-        } else if (text(s) != u"embedded"_s) {
-            return fail(tr("%1: servers is embedded or {broker: URL, ros_master: URI}").arg(where(s.Mark())));
-        }
-    }
-    if (const YAML::Node p = root["pipeline"]) {
-        const QString path = text(p);
-        if (path.isEmpty())
-            return fail(tr("%1: pipeline is paper or a pipeline file").arg(where(p.Mark())));
-        if (path != u"paper"_s)
-            plan.pipelinePath = QFileInfo(path).isAbsolute() ? path : QDir(baseDir).filePath(path);
+public:
+    PlanReader(const YAML::Node& root, const QString& baseDir)
+        : m_root(root)
+        , m_baseDir(baseDir)
+    { }
+
+    Result<ExperimentPlan> read()
+    {
+        if (!m_root.IsMap())
+            return m_r.error(ExperimentPlan::tr("a plan is a mapping: name, samples, factors or cells, …"));
+        static const QStringList known {u"name"_s,       u"samples"_s, u"warmup"_s,   u"repetitions"_s,
+                                        u"timeout_s"_s,  u"servers"_s, u"pipeline"_s, u"defaults"_s,
+                                        u"factors"_s,    u"cells"_s,   u"bridges"_s,  u"links"_s,
+                                        u"throughput"_s, u"ros"_s};
+        Status s = m_r.checkKeys(m_root, known);
+        m_plan.name = text(m_root["name"]);
+        if (s)
+            s = readCounts();
+        if (s)
+            s = readServers();
+        if (s)
+            s = readNamed();
+        if (s)
+            s = readThroughput();
+        if (s)
+            s = readDefaults();
+        if (!s)
+            return s.error();
+        const Result<QList<Combination>> combinations = readCombinations();
+        if (!combinations)
+            return combinations.error();
+        if (const Status cells = makeCells(*combinations); !cells)
+            return cells.error();
+        return m_plan;
     }
 
-    Named named;
-    if (const YAML::Node b = root["bridges"]) {
-        if (!b.IsMap())
-            return fail(tr("%1: bridges names implementations: {NAME: {command: …}}").arg(where(b.Mark())));
-        for (const auto& kv : b) {
-            const std::optional<BridgeImplementation> impl
-                = bridgeImplementation(text(kv.first), kv.second, &why);
-            if (!impl)
-                return fail(why);
-            named.bridges.insert(impl->name, *impl);
+private:
+    Status readCounts()
+    {
+        const auto count = [&](const char* key, int min, int max, int* out) -> Status {
+            const QString message = ExperimentPlan::tr("%1 takes a whole number from %2 to %3")
+                                        .arg(QLatin1String(key))
+                                        .arg(min)
+                                        .arg(max);
+            const Result<YamlField<int>> v = m_r.integer(m_root, key, min, max, *out, message);
+            if (!v)
+                return v.error();
+            *out = v->value;
+            return {};
+        };
+        Status s = count("samples", 1, 1'000'000, &m_plan.samples);
+        if (s)
+            s = count("warmup", 0, 100'000, &m_plan.warmup);
+        if (s)
+            s = count("repetitions", 1, 1000, &m_plan.repetitions);
+        if (!s)
+            return s;
+        if (const YAML::Node t = m_root["timeout_s"]) {
+            const std::optional<double> v = number(t);
+            if (!v || *v < 1 || *v > kMaxTimeoutSeconds)
+                return m_r.errorAt(
+                    t, ExperimentPlan::tr("timeout_s takes 1 to %1 seconds").arg(kMaxTimeoutSeconds));
+            m_plan.cellTimeoutS = *v;
         }
-    }
-    if (const YAML::Node l = root["links"]) {
-        if (!l.IsMap())
-            return fail(tr("%1: links names profiles: {NAME: {delay_ms: …}}").arg(where(l.Mark())));
-        for (const auto& kv : l) {
-            const std::optional<LinkProfile> p = linkProfile(kv.second, &why);
-            if (!p)
-                return fail(why);
-            named.links.insert(text(kv.first), *p);
+        if (const YAML::Node r = m_root["ros"]) {
+            const QString ros = text(r);
+            if (ros != u"1"_s && ros != u"2"_s)
+                return m_r.errorAt(
+                    r,
+                    ExperimentPlan::tr("ros is 1 (a ROS master) or 2 (DDS, a private domain per "
+                                       "cell)"));
+            m_plan.ros = ros.toInt();
         }
+        return {};
     }
-    if (const YAML::Node t = root["throughput"]) {
+
+    Status readServers()
+    {
+        if (const YAML::Node s = m_root["servers"]) {
+            if (s.IsMap()) {
+                m_plan.brokerUrl = text(s["broker"]);
+                m_plan.rosMasterUri = text(s["ros_master"]);
+                if (m_plan.brokerUrl.isEmpty() || (m_plan.rosMasterUri.isEmpty() && m_plan.ros == 1))
+                    return m_r.errorAt(
+                        s, ExperimentPlan::tr("servers given are {broker: URL, ros_master: URI}"));
+                if (Secrets::urlWithoutCredentials(m_plan.brokerUrl) != m_plan.brokerUrl)
+                    return m_r.errorAt(
+                        s,
+                        ExperimentPlan::tr("a plan holds no credentials (it is copied next to its "
+                                           "runs): give the broker without user and password"));
+            } else if (text(s) != u"embedded"_s) {
+                return m_r.errorAt(
+                    s, ExperimentPlan::tr("servers is embedded or {broker: URL, ros_master: URI}"));
+            }
+        }
+        if (const YAML::Node p = m_root["pipeline"]) {
+            const QString path = text(p);
+            if (path.isEmpty())
+                return m_r.errorAt(p, ExperimentPlan::tr("pipeline is paper or a pipeline file"));
+            if (path != u"paper"_s)
+                m_plan.pipelinePath = QFileInfo(path).isAbsolute() ? path : QDir(m_baseDir).filePath(path);
+        }
+        return {};
+    }
+
+    Status readNamed()
+    {
+        if (const YAML::Node b = m_root["bridges"]) {
+            if (!b.IsMap())
+                return m_r.errorAt(b,
+                                   ExperimentPlan::tr("bridges names implementations: {NAME: {command: …}}"));
+            for (const auto& kv : b) {
+                const Result<BridgeImplementation> impl
+                    = bridgeImplementation(m_r, text(kv.first), kv.second);
+                if (!impl)
+                    return impl.error();
+                m_named.bridges.insert(impl->name, *impl);
+            }
+        }
+        if (const YAML::Node l = m_root["links"]) {
+            if (!l.IsMap())
+                return m_r.errorAt(l, ExperimentPlan::tr("links names profiles: {NAME: {delay_ms: …}}"));
+            for (const auto& kv : l) {
+                const Result<LinkProfile> p = linkProfile(m_r, kv.second);
+                if (!p)
+                    return p.error();
+                m_named.links.insert(text(kv.first), *p);
+            }
+        }
+        return {};
+    }
+
+    Status readThroughput()
+    {
+        const YAML::Node t = m_root["throughput"];
+        if (!t)
+            return {};
         ThroughputStep step;
         const YAML::Node rates = t.IsMap() ? t["rates_hz"] : YAML::Node();
         if (!rates || !rates.IsSequence() || rates.size() == 0 || rates.size() > 100)
-            return fail(tr("%1: throughput is {rates_hz: [10, 20, …], seconds: N}").arg(where(t.Mark())));
+            return m_r.errorAt(t, ExperimentPlan::tr("throughput is {rates_hz: [10, 20, …], seconds: N}"));
         for (const YAML::Node& r : rates) {
             const std::optional<double> v = number(r);
             if (!v || *v < kMinRateHz || *v > 10'000)
-                return fail(tr("%1: a rate from %2 to 10000 Hz").arg(where(r.Mark())).arg(kMinRateHz));
+                return m_r.errorAt(r, ExperimentPlan::tr("a rate from %1 to 10000 Hz").arg(kMinRateHz));
             step.ratesHz << *v;
         }
         if (const YAML::Node sec = t["seconds"]) {
             const std::optional<double> v = number(sec);
             if (!v || *v < 1 || *v > 3600)
-                return fail(tr("%1: seconds per rate from 1 to 3600").arg(where(sec.Mark())));
+                return m_r.errorAt(sec, ExperimentPlan::tr("seconds per rate from 1 to 3600"));
             step.secondsPerRate = *v;
         }
-        plan.throughput = step;
+        m_plan.throughput = step;
+        return {};
     }
 
-    // The defaults every cell starts from.
-    CellSettings defaults;
-    if (const YAML::Node d = root["defaults"]) {
+    /// The defaults every cell starts from.
+    Status readDefaults()
+    {
+        const YAML::Node d = m_root["defaults"];
+        if (!d)
+            return {};
         if (!d.IsMap())
-            return fail(tr("%1: defaults is a mapping of factor: level").arg(where(d.Mark())));
-        for (const auto& kv : d) {
-            QString label;
-            if (!applyLevel(defaults, text(kv.first), kv.second, named, &label, &why))
-                return fail(why);
-        }
+            return m_r.errorAt(d, ExperimentPlan::tr("defaults is a mapping of factor: level"));
+        for (const auto& kv : d)
+            if (const Result<QString> label = applyLevel(m_r, m_defaults, text(kv.first), kv.second, m_named);
+                !label)
+                return label.error();
+        return {};
     }
 
-    // The combinations: crossed factors, or cells listed one by one.
-    const YAML::Node factors = root["factors"];
-    const YAML::Node cells = root["cells"];
-    if (factors && cells)
-        return fail(tr("%1: give factors (crossed) or cells (listed), not both").arg(where(cells.Mark())));
-    QList<QList<std::pair<QString, YAML::Node>>> combinations;
-    if (factors) {
+    /// The combinations: crossed factors, or cells listed one by one.
+    Result<QList<Combination>> readCombinations()
+    {
+        const YAML::Node factors = m_root["factors"];
+        const YAML::Node cells = m_root["cells"];
+        if (factors && cells)
+            return m_r.errorAt(cells,
+                               ExperimentPlan::tr("give factors (crossed) or cells (listed), not both"));
+        if (factors)
+            return crossed(factors);
+        if (cells)
+            return listed(cells);
+        return QList<Combination> {Combination()}; // one cell: the defaults
+    }
+
+    Status checkFactor(const YAML::Node& key) const
+    {
+        const QString factor = text(key);
+        if (!ExperimentPlan::knownFactors().contains(factor))
+            return m_r.errorAt(key,
+                               ExperimentPlan::tr("unknown factor '%1' (known: %2)")
+                                   .arg(factor, ExperimentPlan::knownFactors().join(u", "_s)));
+        return {};
+    }
+
+    Result<QList<Combination>> crossed(const YAML::Node& factors)
+    {
         if (!factors.IsMap())
-            return fail(tr("%1: factors is a mapping of factor: [levels]").arg(where(factors.Mark())));
-        combinations.append(QList<std::pair<QString, YAML::Node>>());
+            return m_r.errorAt(factors, ExperimentPlan::tr("factors is a mapping of factor: [levels]"));
+        QList<Combination> combinations {Combination()};
         for (const auto& kv : factors) {
             const QString factor = text(kv.first);
-            if (!knownFactors().contains(factor))
-                return fail(tr("%1: unknown factor '%2' (known: %3)")
-                                .arg(where(kv.first.Mark()), factor, knownFactors().join(u", "_s)));
-            if (plan.factors.contains(factor))
-                return fail(tr("%1: factor '%2' twice").arg(where(kv.first.Mark()), factor));
+            if (Status s = checkFactor(kv.first); !s)
+                return s.error();
+            if (m_plan.factors.contains(factor))
+                return m_r.errorAt(kv.first, ExperimentPlan::tr("factor '%1' twice").arg(factor));
             const YAML::Node levels = kv.second;
             if (!levels.IsSequence() || levels.size() == 0)
-                return fail(tr("%1: %2 needs a list of levels").arg(where(levels.Mark()), factor));
-            if (qint64(combinations.size()) * qint64(levels.size()) * plan.repetitions > kMaxCells)
-                return fail(tr("%1: more than %2 cells").arg(where(levels.Mark())).arg(kMaxCells));
-            plan.factors << factor;
-            QList<QList<std::pair<QString, YAML::Node>>> next;
+                return m_r.errorAt(levels, ExperimentPlan::tr("%1 needs a list of levels").arg(factor));
+            if (qint64(combinations.size()) * qint64(levels.size()) * m_plan.repetitions
+                > ExperimentPlan::kMaxCells)
+                return m_r.errorAt(levels,
+                                   ExperimentPlan::tr("more than %1 cells").arg(ExperimentPlan::kMaxCells));
+            m_plan.factors << factor;
+            QList<Combination> next;
             for (const auto& c : std::as_const(combinations))
                 for (const YAML::Node& level : levels)
-                    next.append(c + QList<std::pair<QString, YAML::Node>> {{factor, level}});
+                    next.append(c + Combination {{factor, level}});
             combinations = next;
         }
-    } else if (cells) {
+        return combinations;
+    }
+
+    Result<QList<Combination>> listed(const YAML::Node& cells)
+    {
         if (!cells.IsSequence() || cells.size() == 0)
-            return fail(tr("%1: cells is a list of {factor: level, …}").arg(where(cells.Mark())));
-        if (qint64(cells.size()) * plan.repetitions > kMaxCells)
-            return fail(tr("%1: more than %2 cells").arg(where(cells.Mark())).arg(kMaxCells));
+            return m_r.errorAt(cells, ExperimentPlan::tr("cells is a list of {factor: level, …}"));
+        if (qint64(cells.size()) * m_plan.repetitions > ExperimentPlan::kMaxCells)
+            return m_r.errorAt(cells,
+                               ExperimentPlan::tr("more than %1 cells").arg(ExperimentPlan::kMaxCells));
+        QList<Combination> combinations;
         for (const YAML::Node& cell : cells) {
             if (!cell.IsMap())
-                return fail(tr("%1: a cell is {factor: level, …}").arg(where(cell.Mark())));
-            QList<std::pair<QString, YAML::Node>> c;
+                return m_r.errorAt(cell, ExperimentPlan::tr("a cell is {factor: level, …}"));
+            Combination c;
             for (const auto& kv : cell) {
                 const QString factor = text(kv.first);
-                if (!knownFactors().contains(factor))
-                    return fail(tr("%1: unknown factor '%2' (known: %3)")
-                                    .arg(where(kv.first.Mark()), factor, knownFactors().join(u", "_s)));
-                if (!plan.factors.contains(factor))
-                    plan.factors << factor;
+                if (Status s = checkFactor(kv.first); !s)
+                    return s.error();
+                if (!m_plan.factors.contains(factor))
+                    m_plan.factors << factor;
                 c.append({factor, kv.second});
             }
             combinations.append(c);
         }
-    } else {
-        combinations.append(QList<std::pair<QString, YAML::Node>>()); // one cell: the defaults
+        return combinations;
     }
 
-    // Repetitions outermost: a matrix stopped early has every cell at least once.
-    for (int r = 0; r < plan.repetitions; ++r) {
-        for (const auto& c : std::as_const(combinations)) {
-            ExperimentCell cell;
-            cell.index = int(plan.cells.size());
-            cell.repetition = r;
-            cell.settings = defaults;
-            bool announceGiven = false;
-            for (const auto& [factor, level] : c) {
-                QString label;
-                if (!applyLevel(cell.settings, factor, level, named, &label, &why))
-                    return fail(why);
-                cell.levels.append({factor, label});
-                announceGiven = announceGiven || factor == u"announce"_s;
-            }
-            fitAnnouncement(cell.settings, announceGiven);
-            // A plan that varies announce pools a command's cell under what its bridge does.
-            if (!announceGiven && !cell.settings.bridge.announce.isEmpty() && plan.factors.contains(u"announce"_s))
-                cell.levels.append({u"announce"_s, cell.settings.bridge.announce});
-            // Listed cells name only what they change: the table columns are per factor.
-            std::sort(cell.levels.begin(), cell.levels.end(), [&plan](const auto& a, const auto& b) {
-                return plan.factors.indexOf(a.first) < plan.factors.indexOf(b.first);
-            });
-            plan.cells.append(cell);
+    Result<ExperimentCell> makeCell(const Combination& c, int repetition) const
+    {
+        ExperimentCell cell;
+        cell.index = int(m_plan.cells.size());
+        cell.repetition = repetition;
+        cell.settings = m_defaults;
+        bool announceGiven = false;
+        for (const auto& [factor, level] : c) {
+            const Result<QString> label = applyLevel(m_r, cell.settings, factor, level, m_named);
+            if (!label)
+                return label.error();
+            cell.levels.append({factor, *label});
+            announceGiven = announceGiven || factor == u"announce"_s;
         }
+        fitAnnouncement(cell.settings, announceGiven);
+        // A plan that varies announce pools a command's cell under what its bridge does.
+        if (!announceGiven && !cell.settings.bridge.announce.isEmpty()
+            && m_plan.factors.contains(u"announce"_s))
+            cell.levels.append({u"announce"_s, cell.settings.bridge.announce});
+        // Listed cells name only what they change: the table columns are per factor.
+        std::sort(cell.levels.begin(), cell.levels.end(), [this](const auto& a, const auto& b) {
+            return m_plan.factors.indexOf(a.first) < m_plan.factors.indexOf(b.first);
+        });
+        return cell;
     }
-    QSet<QString> labels;
-    for (const ExperimentCell& c : std::as_const(plan.cells)) {
-        if (labels.contains(c.label()))
-            return fail(tr("two cells are the same: %1").arg(c.label()));
-        labels.insert(c.label());
+
+    Status makeCells(const QList<Combination>& combinations)
+    {
+        // Repetitions outermost: a matrix stopped early has every cell at least once.
+        for (int r = 0; r < m_plan.repetitions; ++r) {
+            for (const auto& c : combinations) {
+                const Result<ExperimentCell> cell = makeCell(c, r);
+                if (!cell)
+                    return cell.error();
+                m_plan.cells.append(*cell);
+            }
+        }
+        QSet<QString> labels;
+        for (const ExperimentCell& c : std::as_const(m_plan.cells)) {
+            if (labels.contains(c.label()))
+                return m_r.error(ExperimentPlan::tr("two cells are the same: %1").arg(c.label()));
+            labels.insert(c.label());
+        }
+        return {};
     }
-    return plan;
+
+    YamlReader m_r;
+    const YAML::Node m_root;
+    const QString m_baseDir;
+    ExperimentPlan m_plan;
+    Named m_named;
+    CellSettings m_defaults;
+};
+} // namespace
+
+Result<ExperimentPlan> ExperimentPlan::read(const QByteArray& yaml, const QString& baseDir)
+{
+    const Result<YAML::Node> root = YamlReader().parse(yaml);
+    if (!root)
+        return root.error();
+    return PlanReader(*root, baseDir).read();
+}
+
+Result<ExperimentPlan> ExperimentPlan::readFile(const QString& path, QByteArray* text)
+{
+    return YamlReader::readFileWith(path, [&](const QByteArray& bytes) {
+        Result<ExperimentPlan> plan = read(bytes, QFileInfo(path).absolutePath());
+        if (plan && text)
+            *text = bytes;
+        return plan;
+    });
+}
+
+std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, const QString& baseDir,
+                                                       QString* error)
+{
+    return read(yaml, baseDir).toOptional(error);
 }
 
 std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString* error, QByteArray* text)
 {
-    QString why;
-    const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
-    std::optional<ExperimentPlan> plan
-        = bytes ? fromYaml(*bytes, QFileInfo(path).absolutePath(), &why) : std::nullopt;
-    if (!plan && error)
-        *error = bytes ? path + u": "_s + why : why;
-    if (plan && text)
-        *text = *bytes;
-    return plan;
+    return readFile(path, text).toOptional(error);
 }
 
 QString ExperimentPlan::durationText(double seconds)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <optional>
 #include <QCoreApplication>
 #include <QList>
@@ -93,10 +95,15 @@ public:
     QList<ExperimentCell> cells;
     std::optional<ThroughputStep> throughput;
 
-    static std::optional<ExperimentPlan> fromYaml(const QByteArray& yaml, const QString& baseDir,
-                                                  QString* error);
+    /// Reads a plan from YAML (bounded by YamlLimits); relative paths in it are taken from
+    /// `baseDir`. The error is located at the value it is about ("line 4, column 9: …").
+    static Result<ExperimentPlan> read(const QByteArray& yaml, const QString& baseDir);
     /// Reads a plan file; `text` gets its bytes (a copy of the plan is kept with its runs). A plan
     /// without a name keeps it empty: the caller names it (after the file, or the folder).
+    static Result<ExperimentPlan> readFile(const QString& path, QByteArray* text = nullptr);
+    /// read() and readFile() for callers that take the error as text.
+    static std::optional<ExperimentPlan> fromYaml(const QByteArray& yaml, const QString& baseDir,
+                                                  QString* error);
     static std::optional<ExperimentPlan> load(const QString& path, QString* error,
                                               QByteArray* text = nullptr);
 

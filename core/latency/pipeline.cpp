@@ -2,7 +2,7 @@
 #include "pipeline.h"
 
 #include "base/atomicfile.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 #include "base/yamltree.h"
 
 #include <QFile>
@@ -12,10 +12,8 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-QString lineText(const YAML::Mark& mark)
-{
-    return QCoreApplication::translate("Pipeline", "line %1").arg(mark.line + 1);
-}
+/// Pipelines name the line of an error, not its column.
+const YamlReader kReader(LocatedError::Style::Line);
 
 /// The host a name part stands for, or empty.
 QString hostOfToken(QStringView token)
@@ -144,83 +142,87 @@ int Pipeline::indexOf(QStringView topic) const
     return m_index.value(t.toString(), -1);
 }
 
-std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* error)
+Result<Pipeline> Pipeline::read(const QByteArray& yaml)
 {
-    const auto fail = [error](const QString& why) -> std::optional<Pipeline> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
-    YAML::Node root;
-    try {
-        root = YamlLimits::load(yaml);
-    } catch (const YAML::Exception& e) {
-        return fail(tr("%1: %2").arg(lineText(e.mark), QString::fromStdString(e.msg)));
-    }
+    const Result<YAML::Node> parsed = kReader.parse(yaml);
+    if (!parsed)
+        return parsed.error();
+    const YAML::Node& root = *parsed;
     if (!root.IsMap())
-        return fail(tr("a pipeline is a mapping with topics_in_order"));
+        return kReader.error(tr("a pipeline is a mapping with topics_in_order"));
     const YAML::Node topics = root["topics_in_order"];
     if (!topics || !topics.IsSequence())
-        return fail(tr("topics_in_order is missing or not a list"));
+        return kReader.error(tr("topics_in_order is missing or not a list"));
     QStringList names;
     for (const YAML::Node& t : topics) {
         if (!t.IsScalar() || t.Scalar().empty())
-            return fail(
-                tr("%1: every entry of topics_in_order must be a topic name").arg(lineText(t.Mark())));
+            return kReader.errorAt(t, tr("every entry of topics_in_order must be a topic name"));
         // Qt drops a leading byte-order mark when decoding: the topic would change (found by
         // fuzz_pipeline).
         if (t.Scalar().rfind("\xef\xbb\xbf", 0) == 0)
-            return fail(tr("%1: a topic starts with a byte-order mark (U+FEFF)").arg(lineText(t.Mark())));
+            return kReader.errorAt(t, tr("a topic starts with a byte-order mark (U+FEFF)"));
         names << QString::fromStdString(t.Scalar());
         if (const qsizetype at = controlCharacter(names.last()); at >= 0)
-            return fail(tr("%1: the topic %2 holds the control character U+%3 at %4")
-                            .arg(lineText(t.Mark()), quoted(names.last()))
-                            .arg(uint(names.last()[at].unicode()), 4, 16, QChar(u'0'))
-                            .arg(at + 1));
+            return kReader.errorAt(t,
+                                   tr("the topic %1 holds the control character U+%2 at %3")
+                                       .arg(quoted(names.last()),
+                                            u"%1"_s.arg(uint(names.last()[at].unicode()), 4, 16, QChar(u'0')),
+                                            QString::number(at + 1)));
     }
     if (names.isEmpty())
-        return fail(tr("topics_in_order is empty"));
+        return kReader.error(tr("topics_in_order is empty"));
     Pipeline p(names);
+    if (const Status s = p.readSettings(root); !s)
+        return s.error();
+    return p;
+}
+
+Status Pipeline::readSettings(const YAML::Node& root)
+{
     if (const YAML::Node w = root["metrics_window"]) {
         int window = 0;
         if (!w.IsScalar() || !YAML::convert<int>::decode(w, window) || window < 0)
-            return fail(tr("%1: metrics_window must be a whole number of samples (0: whole run)")
-                            .arg(lineText(w.Mark())));
-        p.m_window = window;
+            return kReader.errorAt(w, tr("metrics_window must be a whole number of samples (0: whole run)"));
+        m_window = window;
     }
     if (const YAML::Node one = root["one_clock"]) {
         bool oneClock = false;
         if (!one.IsScalar() || !YAML::convert<bool>::decode(one, oneClock))
-            return fail(tr("%1: one_clock is true or false").arg(lineText(one.Mark())));
-        p.m_oneClock = oneClock;
+            return kReader.errorAt(one, tr("one_clock is true or false"));
+        m_oneClock = oneClock;
     }
     if (const YAML::Node hosts = root["hosts"]) {
         if (!hosts.IsMap())
-            return fail(tr("%1: hosts must map topics to host names").arg(lineText(hosts.Mark())));
+            return kReader.errorAt(hosts, tr("hosts must map topics to host names"));
         for (const auto& kv : hosts) {
-            const QString topic = QString::fromStdString(kv.first.as<std::string>(""));
+            const QString topic = YamlReader::text(kv.first);
             if (!kv.second.IsScalar())
-                return fail(tr("%1: the host of %2 must be a name").arg(lineText(kv.second.Mark()), topic));
-            if (p.indexOf(topic) < 0)
-                return fail(tr("%1: hosts names %2, which is not in topics_in_order")
-                                .arg(lineText(kv.first.Mark()), topic));
+                return kReader.errorAt(kv.second, tr("the host of %1 must be a name").arg(topic));
+            if (indexOf(topic) < 0)
+                return kReader.errorAt(kv.first,
+                                       tr("hosts names %1, which is not in topics_in_order").arg(topic));
             const QString host = QString::fromStdString(kv.second.Scalar());
             if (controlCharacter(host) >= 0)
-                return fail(tr("%1: the host of %2 holds a control character").arg(lineText(kv.second.Mark()), topic));
-            p.setHost(topic, host);
+                return kReader.errorAt(kv.second, tr("the host of %1 holds a control character").arg(topic));
+            setHost(topic, host);
         }
     }
-    return p;
+    return {};
+}
+
+Result<Pipeline> Pipeline::readFile(const QString& path)
+{
+    return YamlReader::readFileWith(path, &Pipeline::read);
+}
+
+std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* error)
+{
+    return read(yaml).toOptional(error);
 }
 
 std::optional<Pipeline> Pipeline::load(const QString& path, QString* error)
 {
-    QString why;
-    const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
-    std::optional<Pipeline> p = bytes ? fromYaml(*bytes, &why) : std::nullopt;
-    if (!p && error)
-        *error = bytes ? path + u": "_s + why : why;
-    return p;
+    return readFile(path).toOptional(error);
 }
 
 QByteArray Pipeline::toYaml() const

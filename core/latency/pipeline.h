@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <optional>
 #include <QCoreApplication>
 #include <QHash>
 #include <QString>
 #include <QStringList>
+
+namespace YAML {
+class Node;
+}
 
 /// The stamp topics of a measured pipeline, in the order a sample passes them.
 ///
@@ -23,6 +29,9 @@ public:
     explicit Pipeline(QStringList topics, int window = kDefaultWindow);
 
     /// Parses pipeline YAML; errors name the line. Repeated topics count once (as in the suite).
+    static Result<Pipeline> read(const QByteArray& yaml);
+    static Result<Pipeline> readFile(const QString& path);
+    /// read() and readFile() for callers that take the error as text.
     static std::optional<Pipeline> fromYaml(const QByteArray& yaml, QString* error = nullptr);
     static std::optional<Pipeline> load(const QString& path, QString* error = nullptr);
     QByteArray toYaml() const;
@@ -77,6 +86,8 @@ public:
     }
 
 private:
+    /// metrics_window, one_clock and hosts of a pipeline file.
+    Status readSettings(const YAML::Node& root);
     static QString normalized(QStringView topic);
     /// The common prefix and every stage label, in one pass over the topics (not per call).
     void relabel();

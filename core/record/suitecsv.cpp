@@ -71,6 +71,54 @@ QByteArray csvCell(const QString& s)
     q.replace(u'"', u"\"\""_s);
     return '"' + q.toUtf8() + '"';
 }
+
+/// The topics of the header row; the error text, empty when every column names a topic once.
+QString readHeader(const QStringList& header, QStringList* topics)
+{
+    QSet<QString> seen; // a list's contains() made 20,000 columns quadratic
+    seen.reserve(header.size());
+    for (qsizetype i = 0; i < header.size(); ++i) {
+        const QString topic = header[i].trimmed();
+        if (topic.isEmpty())
+            return SuiteCsv::tr("column %1 of the header row has no topic name").arg(i + 1);
+        if (topic.contains(QChar(0)))
+            return SuiteCsv::tr("column %1 of the header row holds a NUL byte").arg(i + 1);
+        if (StampCodec::parseTime(topic))
+            return SuiteCsv::tr("the first row holds times, not topic names: is the header row missing?");
+        if (seen.contains(topic))
+            return SuiteCsv::tr("topic %1 appears twice in the header row").arg(topic);
+        seen.insert(topic);
+        *topics << topic;
+    }
+    return {};
+}
+
+/// The times of a row's cells; `missing` when a cell is empty. The row's problem, empty when none.
+QString readTimes(const QStringList& cells, const QStringList& topics, std::vector<qint64>* times,
+                  bool* missing)
+{
+    times->reserve(std::size_t(cells.size()));
+    for (qsizetype i = 0; i < cells.size(); ++i) {
+        const QString cell = cells[i].trimmed();
+        if (cell.isEmpty()) {
+            *missing = true;
+            continue;
+        }
+        if (cell.contains(QChar(0)))
+            return SuiteCsv::tr("column %1 (%2): a NUL byte in the cell").arg(i + 1).arg(topics[i]);
+        const std::optional<qint64> t = StampCodec::parseTime(cell);
+        if (t && !StampCodec::inRange(*t))
+            return SuiteCsv::tr("column %1 (%2): %3 is %4")
+                .arg(i + 1)
+                .arg(topics[i], cell.left(40), StampCodec::rangeText());
+        if (!t)
+            return SuiteCsv::tr("column %1 (%2): \"%3\" is not a time in seconds")
+                .arg(i + 1)
+                .arg(topics[i], cell.left(40));
+        times->push_back(*t);
+    }
+    return {};
+}
 } // namespace
 
 std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error, const Progress& progress)
@@ -110,21 +158,8 @@ std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QSt
     const QStringList header = nextRecord(text, pos, ok, span);
     if (!ok)
         return fail(line, tr("unterminated quote in the header row"));
-    QSet<QString> seen; // a list's contains() made 20,000 columns quadratic
-    seen.reserve(header.size());
-    for (qsizetype i = 0; i < header.size(); ++i) {
-        const QString topic = header[i].trimmed();
-        if (topic.isEmpty())
-            return fail(line, tr("column %1 of the header row has no topic name").arg(i + 1));
-        if (topic.contains(QChar(0)))
-            return fail(line, tr("column %1 of the header row holds a NUL byte").arg(i + 1));
-        if (StampCodec::parseTime(topic))
-            return fail(line, tr("the first row holds times, not topic names: is the header row missing?"));
-        if (seen.contains(topic))
-            return fail(line, tr("topic %1 appears twice in the header row").arg(topic));
-        seen.insert(topic);
-        data.topics << topic;
-    }
+    if (const QString why = readHeader(header, &data.topics); !why.isEmpty())
+        return fail(line, why);
     line += span;
     const auto problem = [&](int at, const QString& why) {
         ++data.malformed;
@@ -154,34 +189,8 @@ std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QSt
             continue;
         }
         std::vector<qint64> times;
-        times.reserve(std::size_t(cells.size()));
         bool missing = false;
-        QString bad;
-        for (qsizetype i = 0; i < cells.size(); ++i) {
-            const QString cell = cells[i].trimmed();
-            if (cell.isEmpty()) {
-                missing = true;
-                continue;
-            }
-            if (cell.contains(QChar(0))) {
-                bad = tr("column %1 (%2): a NUL byte in the cell").arg(i + 1).arg(data.topics[i]);
-                break;
-            }
-            const std::optional<qint64> t = StampCodec::parseTime(cell);
-            if (t && !StampCodec::inRange(*t)) {
-                bad = tr("column %1 (%2): %3 is %4")
-                          .arg(i + 1)
-                          .arg(data.topics[i], cell.left(40), StampCodec::rangeText());
-                break;
-            }
-            if (!t) {
-                bad = tr("column %1 (%2): \"%3\" is not a time in seconds")
-                          .arg(i + 1)
-                          .arg(data.topics[i], cell.left(40));
-                break;
-            }
-            times.push_back(*t);
-        }
+        const QString bad = readTimes(cells, data.topics, &times, &missing);
         if (!bad.isEmpty()) {
             problem(at, bad);
             continue;

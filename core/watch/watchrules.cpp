@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "watchrules.h"
 
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -12,10 +12,8 @@ const char* const kKeys[] = {"latency_p99_ms", "min_rate_hz",   "min_rate_percen
                              "stall_seconds",  "stall_periods", "source_stopped_seconds"};
 static_assert(std::size(kKeys) == LinkRules::SettingCount);
 
-QString where(const YAML::Mark& mark)
-{
-    return WatchRules::tr("line %1").arg(mark.line + 1);
-}
+/// Rules name the line of an error, not its column.
+const YamlReader kReader(LocatedError::Style::Line);
 
 /// A number that is finite and not negative.
 std::optional<double> number(const YAML::Node& node)
@@ -27,7 +25,7 @@ std::optional<double> number(const YAML::Node& node)
 }
 
 /// `key: 5` (the alert level) or `key: {warning: 2, alert: 5}`.
-std::optional<Threshold> threshold(const YAML::Node& node, const QString& key, QString* error)
+Result<Threshold> threshold(const YAML::Node& node, const QString& key)
 {
     Threshold t;
     if (node.IsScalar()) {
@@ -37,28 +35,25 @@ std::optional<Threshold> threshold(const YAML::Node& node, const QString& key, Q
         }
     } else if (node.IsMap()) {
         for (const auto& kv : node) {
-            const QString level = QString::fromStdString(kv.first.as<std::string>(""));
+            const QString level = YamlReader::text(kv.first);
             const auto v = number(kv.second);
-            if (!v || (level != u"warning"_s && level != u"alert"_s)) {
-                *error = WatchRules::tr("%1: %2 takes warning and alert levels, each a number ≥ 0")
-                             .arg(where(kv.first.Mark()), key);
-                return std::nullopt;
-            }
+            if (!v || (level != u"warning"_s && level != u"alert"_s))
+                return kReader.errorAt(
+                    kv.first,
+                    WatchRules::tr("%1 takes warning and alert levels, each a number ≥ 0").arg(key));
             (level == u"warning"_s ? t.warning : t.alert) = *v;
         }
         if (t.isSet())
             return t;
     }
-    *error
-        = WatchRules::tr("%1: %2 takes a number ≥ 0 or {warning: N, alert: N}").arg(where(node.Mark()), key);
-    return std::nullopt;
+    return kReader.errorAt(node, WatchRules::tr("%1 takes a number ≥ 0 or {warning: N, alert: N}").arg(key));
 }
 
 /// The settings of one map; `match` is skipped (the caller reads it).
-bool readSettings(const YAML::Node& map, QList<std::pair<LinkRules::Setting, Threshold>>* out, QString* error)
+Status readSettings(const YAML::Node& map, QList<std::pair<LinkRules::Setting, Threshold>>* out)
 {
     for (const auto& kv : map) {
-        const QString key = QString::fromStdString(kv.first.as<std::string>(""));
+        const QString key = YamlReader::text(kv.first);
         if (key == u"match"_s)
             continue;
         const auto setting = LinkRules::settingOf(key);
@@ -66,16 +61,15 @@ bool readSettings(const YAML::Node& map, QList<std::pair<LinkRules::Setting, Thr
             QStringList known;
             for (const char* k : kKeys)
                 known << QString::fromLatin1(k);
-            *error = WatchRules::tr("%1: unknown setting '%2' (known: %3)")
-                         .arg(where(kv.first.Mark()), key, known.join(u", "_s));
-            return false;
+            return kReader.errorAt(
+                kv.first, WatchRules::tr("unknown setting '%1' (known: %2)").arg(key, known.join(u", "_s)));
         }
-        const auto t = threshold(kv.second, key, error);
+        const Result<Threshold> t = threshold(kv.second, key);
         if (!t)
-            return false;
+            return t.error();
         out->append(std::make_pair(*setting, *t));
     }
-    return true;
+    return {};
 }
 
 QString levels(const Threshold& t)
@@ -119,74 +113,74 @@ LinkRules LinkRules::defaults()
     return r;
 }
 
-std::optional<WatchRules> WatchRules::fromYaml(const QByteArray& yaml, QString* error)
+Result<WatchRules> WatchRules::read(const QByteArray& yaml)
 {
-    QString why;
-    const auto fail = [&](const QString& text) -> std::optional<WatchRules> {
-        if (error)
-            *error = text;
-        return std::nullopt;
-    };
-    YAML::Node root;
-    try {
-        root = YamlLimits::load(yaml);
-    } catch (const YAML::Exception& e) {
-        return fail(tr("%1: %2").arg(where(e.mark), QString::fromStdString(e.msg)));
-    }
+    const Result<YAML::Node> parsed = kReader.parse(yaml);
+    if (!parsed)
+        return parsed.error();
+    const YAML::Node& root = *parsed;
     WatchRules rules;
     if (root.IsNull())
         return rules; // an empty file: the defaults
     if (!root.IsMap())
-        return fail(tr("rules are a mapping with defaults and links"));
-    for (const auto& kv : root) {
-        const QString key = QString::fromStdString(kv.first.as<std::string>(""));
-        if (key != u"defaults"_s && key != u"links"_s)
-            return fail(tr("%1: unknown key '%2' (known: defaults, links)").arg(where(kv.first.Mark()), key));
-    }
+        return kReader.error(tr("rules are a mapping with defaults and links"));
+    if (const Status s = kReader.checkKeys(root, {u"defaults"_s, u"links"_s}); !s)
+        return s.error();
     if (const YAML::Node d = root["defaults"]) {
         if (!d.IsMap())
-            return fail(tr("%1: defaults is a mapping of settings").arg(where(d.Mark())));
+            return kReader.errorAt(d, tr("defaults is a mapping of settings"));
         QList<std::pair<LinkRules::Setting, Threshold>> settings;
-        if (!readSettings(d, &settings, &why))
-            return fail(why);
+        if (const Status s = readSettings(d, &settings); !s)
+            return s.error();
         for (const auto& [s, t] : std::as_const(settings))
             rules.defaults[s] = t;
     }
     if (const YAML::Node links = root["links"]) {
-        if (!links.IsSequence())
-            return fail(tr("%1: links is a list of {match: PATTERN, settings...}").arg(where(links.Mark())));
-        if (links.size() > std::size_t(kMaxLinkRules))
-            return fail(tr("%1: %2 entries in links; at most %3 are read (merge patterns with * and ?)")
-                            .arg(where(links.Mark()))
-                            .arg(links.size())
-                            .arg(kMaxLinkRules));
-        for (const YAML::Node& entry : links) {
-            const YAML::Node match = entry.IsMap() ? entry["match"] : YAML::Node();
-            if (!match || !match.IsScalar() || match.Scalar().empty())
-                return fail(tr("%1: every entry of links needs a match pattern").arg(where(entry.Mark())));
-            Override o;
-            o.match = QString::fromStdString(match.Scalar());
-            if (o.match.size() > kMaxPatternChars)
-                return fail(tr("%1: a match pattern of %2 characters; at most %3")
-                                .arg(where(match.Mark()))
-                                .arg(o.match.size())
-                                .arg(kMaxPatternChars));
-            if (!readSettings(entry, &o.settings, &why))
-                return fail(why);
-            rules.overrides << o;
-        }
+        if (const Status s = readOverrides(links, &rules.overrides); !s)
+            return s.error();
     }
     return rules;
 }
 
+Status WatchRules::readOverrides(const YAML::Node& links, QList<Override>* out)
+{
+    if (!links.IsSequence())
+        return kReader.errorAt(links, tr("links is a list of {match: PATTERN, settings...}"));
+    if (links.size() > std::size_t(kMaxLinkRules))
+        return kReader.errorAt(links,
+                               tr("%1 entries in links; at most %2 are read (merge patterns with * and ?)")
+                                   .arg(links.size())
+                                   .arg(kMaxLinkRules));
+    for (const YAML::Node& entry : links) {
+        const YAML::Node match = entry.IsMap() ? entry["match"] : YAML::Node();
+        if (!match || !match.IsScalar() || match.Scalar().empty())
+            return kReader.errorAt(entry, tr("every entry of links needs a match pattern"));
+        Override o;
+        o.match = QString::fromStdString(match.Scalar());
+        if (o.match.size() > kMaxPatternChars)
+            return kReader.errorAt(
+                match,
+                tr("a match pattern of %1 characters; at most %2").arg(o.match.size()).arg(kMaxPatternChars));
+        if (const Status s = readSettings(entry, &o.settings); !s)
+            return s.error();
+        *out << o;
+    }
+    return {};
+}
+
+Result<WatchRules> WatchRules::readFile(const QString& path)
+{
+    return YamlReader::readFileWith(path, &WatchRules::read);
+}
+
+std::optional<WatchRules> WatchRules::fromYaml(const QByteArray& yaml, QString* error)
+{
+    return read(yaml).toOptional(error);
+}
+
 std::optional<WatchRules> WatchRules::load(const QString& path, QString* error)
 {
-    QString why;
-    const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
-    std::optional<WatchRules> rules = bytes ? fromYaml(*bytes, &why) : std::nullopt;
-    if (!rules && error)
-        *error = bytes ? path + u": "_s + why : why;
-    return rules;
+    return readFile(path).toOptional(error);
 }
 
 QByteArray WatchRules::toYaml() const

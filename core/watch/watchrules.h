@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -9,6 +11,10 @@
 #include <QCoreApplication>
 #include <QList>
 #include <QString>
+
+namespace YAML {
+class Node;
+}
 
 /// The two levels at which a figure of a link raises a warning and an alert (NaN: not checked).
 struct Threshold
@@ -80,11 +86,17 @@ public:
     LinkRules defaults = LinkRules::defaults();
     QList<Override> overrides;
 
-    /// Parses the YAML (bounded by YamlLimits); nullopt with a located `error`.
+    /// Parses the YAML (bounded by YamlLimits); the error is located at its line ("line 3: …").
+    static Result<WatchRules> read(const QByteArray& yaml);
+    static Result<WatchRules> readFile(const QString& path);
+    /// read() and readFile() for callers that take the error as text.
     static std::optional<WatchRules> fromYaml(const QByteArray& yaml, QString* error);
     static std::optional<WatchRules> load(const QString& path, QString* error);
     QByteArray toYaml() const;
     /// The defaults with every matching override applied in order.
     LinkRules forLink(const LinkKey& key) const;
     static bool matches(const QString& pattern, const LinkKey& key);
+
+private:
+    static Status readOverrides(const YAML::Node& links, QList<Override>* out);
 };

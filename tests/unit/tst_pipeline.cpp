@@ -205,6 +205,15 @@ private slots:
         QVERIFY2(error.contains(message), qPrintable(error));
     }
 
+    // A topic holding "%1" and a control character: the message used to substitute into the topic
+    // ("/a000a…" and "U+5 at %4").
+    void aPercentInATopicStaysInTheMessage()
+    {
+        QString error;
+        QVERIFY(!Pipeline::fromYaml("topics_in_order: [\"/a%1\\nb\", /c]\n", &error));
+        QCOMPARE(error, u"line 1: the topic \"/a%1\\u000ab\" holds the control character U+000a at 5"_s);
+    }
+
     void duplicateTopicsCountOnceAndSlashesDoNotMatter()
     {
         const Pipeline p({u"/a/x"_s, u"/a/y"_s, u"/a/x"_s, u"a/y"_s, u"/a/z"_s});
