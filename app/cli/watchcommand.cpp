@@ -250,7 +250,7 @@ int runWatch(const WatchRequest& request)
     QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
         err(Watch::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
     });
-    WatchSession watch(&live);
+    WatchSession watch(WatchSession::partsOf(&live));
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);
     watch.setConfigs(request.configs);
