@@ -78,6 +78,50 @@ struct BridgeRequest
     Ros2Options ros2Options;
 };
 
+/// The bridge's options from a parsed command line (the options parseBridge() declares, read by
+/// name). -1 to go on, otherwise the exit status.
+int readBridgeOptions(const QCommandLineParser& parser, ReferenceBridge::Options* options)
+{
+    options->brokerUrl = parser.value(u"broker"_s);
+    if (parser.isSet(u"broker-fd"_s)) {
+        if (parser.isSet(u"broker"_s)) {
+            err(Bridge::tr("give --broker or --broker-fd, not both"));
+            return ExitUsage;
+        }
+        const std::optional<QString> url = readBrokerFd(parser.value(u"broker-fd"_s));
+        if (!url)
+            return ExitUsage;
+        options->brokerUrl = *url;
+    }
+    options->rosMaster = parser.value(u"ros-master"_s);
+    options->nodeName = parser.value(u"name"_s);
+    options->announceEveryMessage = parser.isSet(u"announce-every-message"_s);
+    bool ok = false;
+    // Checked before it becomes nanoseconds: 1e300 ms has none that fit.
+    constexpr double kMaxOffsetMs = 24.0 * 3600 * 1000;
+    const double offsetMs = parser.value(u"clock-offset-ms"_s).toDouble(&ok);
+    if (!ok || !(std::abs(offsetMs) <= kMaxOffsetMs)) {
+        err(Bridge::tr("--clock-offset-ms takes -%1 to %1 milliseconds (a day)").arg(qint64(kMaxOffsetMs)));
+        return ExitUsage;
+    }
+    options->clockOffsetNs = qint64(offsetMs * 1e6);
+    const double mib = parser.value(u"max-queued-mib"_s).toDouble(&ok);
+    if (!ok || !(mib >= 1 && mib <= 1024 * 1024)) {
+        err(Bridge::tr("--max-queued-mib takes a number of MiB from 1 to 1048576"));
+        return ExitUsage;
+    }
+    options->maxQueuedBytes = qint64(mib * 1024 * 1024);
+    for (const QString& a : parser.values(u"arg"_s)) {
+        const qsizetype eq = a.indexOf(u'=');
+        if (eq <= 0) {
+            err(Bridge::tr("--arg takes NAME=VALUE, not '%1'").arg(a));
+            return ExitUsage;
+        }
+        options->args.insert(a.left(eq), a.mid(eq + 1));
+    }
+    return -1;
+}
+
 /// Parses and checks the command line and reads the config. -1 to go on with `request`,
 /// otherwise the exit status.
 int parseBridge(const QStringList& arguments, BridgeRequest* request)
@@ -158,45 +202,7 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     request->path = path;
     // At most one byte more than a config may have: /dev/zero is refused, not read forever.
     request->yaml = f.read(YamlLimits::maxBytes + 1);
-    ReferenceBridge::Options& options = request->options;
-    options.brokerUrl = parser.value(broker);
-    if (parser.isSet(brokerFd)) {
-        if (parser.isSet(broker)) {
-            err(Bridge::tr("give --broker or --broker-fd, not both"));
-            return ExitUsage;
-        }
-        const std::optional<QString> url = readBrokerFd(parser.value(brokerFd));
-        if (!url)
-            return ExitUsage;
-        options.brokerUrl = *url;
-    }
-    options.rosMaster = parser.value(master);
-    options.nodeName = parser.value(name);
-    options.announceEveryMessage = parser.isSet(everyMessage);
-    bool ok = false;
-    // Checked before it becomes nanoseconds: 1e300 ms has none that fit.
-    constexpr double kMaxOffsetMs = 24.0 * 3600 * 1000;
-    const double offsetMs = parser.value(offset).toDouble(&ok);
-    if (!ok || !(std::abs(offsetMs) <= kMaxOffsetMs)) {
-        err(Bridge::tr("--clock-offset-ms takes -%1 to %1 milliseconds (a day)").arg(qint64(kMaxOffsetMs)));
-        return ExitUsage;
-    }
-    options.clockOffsetNs = qint64(offsetMs * 1e6);
-    const double mib = parser.value(queued).toDouble(&ok);
-    if (!ok || !(mib >= 1 && mib <= 1024 * 1024)) {
-        err(Bridge::tr("--max-queued-mib takes a number of MiB from 1 to 1048576"));
-        return ExitUsage;
-    }
-    options.maxQueuedBytes = qint64(mib * 1024 * 1024);
-    for (const QString& a : parser.values(arg)) {
-        const qsizetype eq = a.indexOf(u'=');
-        if (eq <= 0) {
-            err(Bridge::tr("--arg takes NAME=VALUE, not '%1'").arg(a));
-            return ExitUsage;
-        }
-        options.args.insert(a.left(eq), a.mid(eq + 1));
-    }
-    return -1;
+    return readBridgeOptions(parser, &request->options);
 }
 
 QString droppedLine(const ReferenceBridge::Counters& c, qint64 maxQueuedBytes)

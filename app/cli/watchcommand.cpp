@@ -355,7 +355,7 @@ int runWatch(const WatchRequest& request)
     LiveSession live;
     if (!prepareLive(live, request))
         return ExitFailed;
-    WatchSession watch(&live);
+    WatchSession watch(WatchSession::partsOf(&live));
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);
     watch.setConfigs(request.configs);

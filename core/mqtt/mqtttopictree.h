@@ -2,6 +2,8 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
+#include "mqtt/mqttpayloadchecks.h"
+#include "mqtt/mqtttopicstore.h"
 #include "wire/mqttclientwire.h"
 
 #include <deque>
@@ -29,6 +31,10 @@ class RosTypeRegistry;
 /// decodes with the ROS 2 definitions the tree is given (setRos2Registry()). $SYS topics
 /// are kept apart as broker statistics. Batches come from the GUI drain timer (apply()); one batch
 /// gives one row-insert per parent and one dataChanged per parent, never a signal per message.
+///
+/// The tree is the Qt model of three parts: the topic store (MqttTopicStore: levels, figures,
+/// history, budgets), the payload checks (MqttPayloadChecks: announced types, latencies, payloads
+/// that do not decode) and the rows it shows of them.
 class MqttTopicTree : public QAbstractItemModel
 {
     Q_OBJECT
@@ -56,33 +62,26 @@ public:
         StampedRole,
     };
 
-    struct HistoryEntry
-    {
-        qint64 receivedNs = 0;
-        QByteArray payload;
-        bool retained = false;
-        quint8 qos = 0;
-        quint64 order = 0; ///< arrival order in the tree (1, 2, ...)
-    };
+    using HistoryEntry = MqttTopicNode::HistoryEntry;
     /// The default of historyBudget(): the bytes the payload history of all topics may hold.
-    static constexpr qint64 kDefaultHistoryBudget = 64 * 1024 * 1024;
+    static constexpr qint64 kDefaultHistoryBudget = MqttTopicStore::kDefaultHistoryBudget;
     /// What one kept payload costs beside its bytes (its entry and the array's header), counted in the
     /// budget.
-    static constexpr qint64 kHistoryEntryOverhead = 64;
+    static constexpr qint64 kHistoryEntryOverhead = MqttTopicStore::kHistoryEntryOverhead;
     /// The default of topicBudget(): the topics (and $SYS statistics) the tree keeps.
-    static constexpr int kDefaultTopicBudget = 20'000;
+    static constexpr int kDefaultTopicBudget = MqttTopicStore::kDefaultTopicBudget;
     /// The default of structureBudget(): the bytes the levels of all topics may take.
-    static constexpr qint64 kDefaultStructureBudget = 64 * 1024 * 1024;
+    static constexpr qint64 kDefaultStructureBudget = MqttTopicStore::kDefaultStructureBudget;
     /// What one level costs beside its name and path: the node (about 600 bytes), the blocks its
     /// three deques allocate when made (about 600 bytes each) and its hash entries.
-    static constexpr qint64 kNodeOverhead = 3072;
+    static constexpr qint64 kNodeOverhead = MqttTopicStore::kNodeOverhead;
     /// A topic's last payload is kept up to this many bytes for ValueColumn's preview (beside the
     /// history, which a busy broker may evict): at most topicBudget() × this (5 MiB by default).
-    static constexpr qsizetype kPreviewBytes = 256;
+    static constexpr qsizetype kPreviewBytes = MqttTopicStore::kPreviewBytes;
     /// The characters ValueColumn shows of it, on one line.
     static constexpr qsizetype kPreviewChars = 80;
     /// A $SYS statistic's value is kept up to this many bytes.
-    static constexpr qsizetype kMaxSysValueBytes = 1024;
+    static constexpr qsizetype kMaxSysValueBytes = MqttTopicStore::kMaxSysValueBytes;
 
     /// What is known about one topic (for the detail pane and the discover command).
     struct TopicInfo
@@ -123,24 +122,24 @@ public:
     bool hasChildren(const QString& path) const;
     ~MqttTopicTree() override;
 
-    void setHistoryDepth(int messages);
-    int historyDepth() const { return m_historyDepth; }
+    void setHistoryDepth(int messages) { m_store.setHistoryDepth(messages); }
+    int historyDepth() const { return m_store.historyDepth(); }
     /// The bytes the history of all topics may hold (payloads and kHistoryEntryOverhead each).
-    void setHistoryBudget(qint64 bytes);
-    qint64 historyBudget() const { return m_historyBudget; }
-    qint64 historyBytes() const { return m_historyBytes; }
+    void setHistoryBudget(qint64 bytes) { m_store.setHistoryBudget(bytes); }
+    qint64 historyBudget() const { return m_store.historyBudget(); }
+    qint64 historyBytes() const { return m_store.historyBytes(); }
     /// Payloads evicted from the history to keep it within historyBudget().
-    quint64 evictedPayloads() const { return m_evictedPayloads; }
+    quint64 evictedPayloads() const { return m_store.evictedPayloads(); }
     /// The topics the tree keeps at most (at least 1); a new topic past it is not added.
-    void setTopicBudget(int topics);
-    int topicBudget() const { return m_topicBudget; }
+    void setTopicBudget(int topics) { m_store.setTopicBudget(topics); }
+    int topicBudget() const { return m_store.topicBudget(); }
     /// The bytes the levels may take (names and paths as UTF-16, kNodeOverhead each); a new topic
     /// whose levels do not fit is not added.
-    void setStructureBudget(qint64 bytes);
-    qint64 structureBudget() const { return m_structureBudget; }
-    qint64 structureBytes() const { return m_structureBytes; }
+    void setStructureBudget(qint64 bytes) { m_store.setStructureBudget(bytes); }
+    qint64 structureBudget() const { return m_store.structureBudget(); }
+    qint64 structureBytes() const { return m_store.structureBytes(); }
     /// Messages on topics not added to keep within topicBudget() and structureBudget().
-    quint64 untrackedMessages() const { return m_untrackedMessages; }
+    quint64 untrackedMessages() const { return m_store.untrackedMessages(); }
     void apply(std::vector<MqttMessage>&& batch);
     /// Updates rates once a second, and says the figures that changed since the last time once a
     /// figures interval; `nowNs` is wall-clock time.
@@ -152,10 +151,10 @@ public:
     void setFiguresInterval(int ms) { m_figuresIntervalNs = qint64(ms) * 1'000'000; }
     void clear();
 
-    int topicCount() const { return int(m_byTopic.size()); }
-    quint64 totalMessages() const { return m_totalMessages; }
-    quint64 malformedTypeAnnouncements() const { return m_malformedTypes; }
-    quint64 malformedPayloads() const { return m_malformedPayloads; }
+    int topicCount() const { return m_store.topicCount(); }
+    quint64 totalMessages() const { return m_store.totalMessages(); }
+    quint64 malformedTypeAnnouncements() const { return m_checks.malformedTypeAnnouncements(); }
+    quint64 malformedPayloads() const { return m_checks.malformedPayloads(); }
     /// Topics whose announced ROS 2 type has no definition in the ROS 2 registry (shown raw).
     int unknownTypeTopics() const;
     QModelIndex indexOf(const QString& topic, int column = 0) const;
@@ -170,7 +169,7 @@ public:
     /// The ROS 2 definitions announced ROS 2 types decode with; until set, the bundled ones
     /// (Ros2Definitions::registry(), built once and shared by every tree).
     void setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry);
-    const QHash<QString, QString>& brokerStatistics() const { return m_sys; }
+    const QHash<QString, QString>& brokerStatistics() const { return m_store.statistics(); }
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;
@@ -195,51 +194,17 @@ signals:
     void brokerStatisticsChanged();
 
 private:
-    struct Node;
-    struct TypeState;
-    Node* nodeFor(const QString& topic, std::vector<Node*>& visibleParentsWithPending);
-    /// What adding the topic would cost the structure budget (its new levels and its entry, and for a
-    /// type announcement its data topic's type).
-    qint64 newTopicCost(const QString& topic) const;
-    /// Whether a new topic (or $SYS statistic) of that cost fits both budgets; counted when not.
-    bool admit(qint64 cost);
+    using Node = MqttTopicNode;
     QModelIndex indexOf(const Node* node, int column) const;
-    /// Whether the data topic's type changed.
-    bool absorbTypeAnnouncement(const QString& dataTopic, const QByteArray& payload, Node* typeNode);
-    std::shared_ptr<const RosTypeRegistry> registryOf(const TypeState& type) const;
-    QString typeNoteOf(const TypeState& type) const;
-
+    /// Announces the levels made in a batch: one row-insert per parent.
+    void insertPending(const std::vector<Node*>& withPending);
     void sayFigures();
-    std::unique_ptr<Node> m_root;
+
+    MqttTopicStore m_store;
+    MqttPayloadChecks m_checks;
     std::vector<Node*> m_dirty; ///< rows whose figures changed since sayFigures()
     qint64 m_figuresIntervalNs = 0;
     qint64 m_figuresSaidNs = 0;
-    QHash<QString, Node*> m_byTopic;
-    QHash<QString, std::shared_ptr<TypeState>> m_types; ///< by data topic
-    QHash<QString, QString> m_sys;
-    mutable std::shared_ptr<const RosTypeRegistry> m_ros2Registry; ///< set on first use when not given
-    int m_historyDepth = 20;
-    qint64 m_historyBytesPerTopic = 16 * 1024 * 1024;
-    quint64 m_totalMessages = 0;
-    quint64 m_malformedTypes = 0;
-    quint64 m_malformedPayloads = 0;
     qint64 m_lastTickNs = 0;
     DropHandler m_dropHandler;
-    const Node* nodeAt(const QString& path) const;
-    /// Keeps a topic's history within its depth and bytes, and all topics' within the budget.
-    void trimHistory(Node* n);
-    void popOldest(Node* n);
-
-    qint64 m_historyBudget = kDefaultHistoryBudget;
-    qint64 m_historyBytes = 0;
-    qint64 m_historyEntries = 0;
-    quint64 m_historyOrder = 0;
-    quint64 m_evictedPayloads = 0;
-    int m_topicBudget = kDefaultTopicBudget;
-    qint64 m_structureBudget = kDefaultStructureBudget;
-    qint64 m_structureBytes = 0;
-    quint64 m_untrackedMessages = 0;
-    /// Every kept payload's topic and order, oldest first; entries of payloads a topic's own bounds
-    /// removed are skipped when met, and swept when they are more than half.
-    std::deque<std::pair<Node*, quint64>> m_historyQueue;
 };

@@ -77,21 +77,28 @@ struct FieldPlotter::Private
     QHash<QString, RosType> rosTypes;
 };
 
-FieldPlotter::FieldPlotter(LiveSession* session, QObject* parent)
+FieldPlotter::Parts FieldPlotter::partsOf(LiveSession* live)
+{
+    return {live->sources(), live->mqttTopics(), live->ros2(), live->rosTopics(),
+            [live]() -> const RosTypeRegistry& { return live->ros2Types(); }};
+}
+
+FieldPlotter::FieldPlotter(const Parts& parts, QObject* parent)
     : QObject(parent)
-    , m_session(session)
+    , m_parts(parts)
     , d(std::make_unique<Private>())
 {
-    connect(session, &LiveSession::drained, this, &FieldPlotter::onDrained);
+    if (m_parts.sources.everyDrain)
+        m_parts.sources.everyDrain(this, [this](qint64 nowNs) { onDrained(nowNs); });
 }
 
 FieldPlotter::~FieldPlotter()
 {
-    if (!m_session)
+    if (!m_parts.sources.alive())
         return; // the session went first, and its sources with it
     for (PlotField::Source source : kSources)
         for (auto it = d->watched[int(source)].cbegin(); it != d->watched[int(source)].cend(); ++it)
-            m_session->source(graphOf(source))->unwatch(it.key());
+            m_parts.sources.of(graphOf(source))->unwatch(it.key());
 }
 
 int FieldPlotter::indexOf(const PlotField& field) const
@@ -139,9 +146,9 @@ void FieldPlotter::clear()
 
 void FieldPlotter::watch(PlotField::Source source, const QString& topic, bool on)
 {
-    if (!m_session)
+    if (!m_parts.sources.alive())
         return;
-    MessageSource* from = m_session->source(graphOf(source));
+    MessageSource* from = m_parts.sources.of(graphOf(source));
     QHash<QString, quint64>& watched = d->watched[int(source)];
     if (on && !watched.contains(topic)) {
         from->watch(topic, kQueued, kQueuedBytes); // subscribes it (ROS), monitored or not
@@ -154,147 +161,140 @@ void FieldPlotter::watch(PlotField::Source source, const QString& topic, bool on
     }
 }
 
-void FieldPlotter::onDrained(qint64 nowNs)
+struct FieldPlotter::Decoding
 {
-    if (m_series.isEmpty() || !m_session)
-        return;
-    bool changed = false;
-    const auto plotTopic
-        = [&](PlotField::Source source, const QString& topic, const std::vector<SourceArrival>& messages) {
-              QList<int> fields;
-              int deepest = -1;
-              for (int i = 0; i < m_series.size(); ++i) {
-                  if (m_series[i].field.source == source && m_series[i].field.topic == topic) {
-                      fields << i;
-                      deepest = std::max(deepest, FieldPath::maxIndex(m_series[i].field.path));
-                  }
-              }
-              if (fields.isEmpty() || messages.empty())
-                  return;
-              // How this topic's payloads decode: the ROS type announced (MQTT) or monitored (ROS), the
-              // ROS 2 graph's type as CDR with the session's ROS 2 definitions (ROS 2), else JSON.
-              std::shared_ptr<const RosTypeRegistry> held;
-              const RosTypeRegistry* registry = nullptr;
-              SourceType how; // the graph, the type and (MQTT) how mqtt_client serialized it
-              QString& type = how.type;
-              QString typeError;
-              if (source == PlotField::Source::Mqtt) {
-                  const auto info = m_session->mqttTopics()->info(topic);
-                  if (info && info->rosType) {
-                      held = m_session->mqttTopics()->registryFor(topic);
-                      registry = held.get();
-                      type = info->rosType->name;
-                      how.announced = info->rosType;
-                      if (!registry)
-                          typeError = info->typeNote.isEmpty()
-                              ? tr("the announced type %1 does not read").arg(type)
-                              : info->typeNote;
-                  }
-              } else if (source == PlotField::Source::Ros2) {
-                  const Ros2Topic* t = m_session->ros2()->graph().topic(topic);
-                  if (t && !t->types.isEmpty())
-                      d->ros2Types.insert(topic, t->type());
-                  type = d->ros2Types.value(topic);
-                  how.graph = SourceGraph::Ros2;
-                  const RosTypeRegistry& types = m_session->ros2Types();
-                  if (type.isEmpty())
-                      typeError = tr("the type is not known yet");
-                  else if (!types.contains(type))
-                      typeError = tr("no ROS 2 definition of %1 is known").arg(type);
-                  else
-                      registry = &types;
-              } else {
-                  const RosMonitorStats* stats = m_session->rosTopics()->stats(topic);
-                  Private::RosType& t = d->rosTypes[topic];
-                  if (stats && !stats->type.isEmpty() && t.md5 != stats->md5) {
-                      t.md5 = stats->md5;
-                      t.type = stats->type;
-                      t.registry = std::make_shared<RosTypeRegistry>();
-                      if (!t.registry->addDefinition(stats->type, stats->definition, &t.error))
-                          t.registry.reset();
-                  }
-                  registry = t.registry.get();
-                  type = t.type;
-                  how.graph = SourceGraph::Ros1;
-                  typeError = registry ? QString()
-                                       : (t.error.isEmpty() ? tr("the type is not known yet") : t.error);
-              }
-              RosDecodeLimits limits;
-              limits.maxArrayElements = std::min(deepest + 1, 4096);
-              limits.maxStringChars = 64;
-              limits.maxBytes = kMaxPayloadBytes;
-              limits.maxSteps = 200'000;
-              limits.maxValues = 20'000;
+    std::shared_ptr<const RosTypeRegistry> held;
+    const RosTypeRegistry* registry = nullptr;
+    SourceType how; ///< the graph, the type and (MQTT) how mqtt_client serialized it
+    QString typeError;
+};
 
-              const std::vector<std::size_t> chosen = spread(messages.size(), kMessagesPerTick);
-              m_skipped += messages.size() - chosen.size();
-              qint64 bytes = 0;
-              int decodedCount = 0;
-              for (std::size_t index : chosen) {
-                  const SourceArrival& m = messages[index];
-                  if (d->originNs == 0)
-                      d->originNs = m.receivedNs; // time 0 is the first value's
-                  Decoded dec;
-                  if (m.bytes.size() > kMaxPayloadBytes) {
-                      dec.error = tr("a payload of %1 bytes, more than %2 are not plotted")
-                                      .arg(m.bytes.size())
-                                      .arg(kMaxPayloadBytes);
-                  } else if (bytes + m.bytes.size() > kBytesPerTick) {
-                      ++m_skipped;
-                      continue;
-                  } else if (!typeError.isEmpty()) {
-                      dec.error = typeError;
-                  } else {
-                      bytes += m.bytes.size();
-                      ++decodedCount;
-                      if (registry && how.isRos()) {
-                          dec.ros = SourceMessage::decode(*registry, how, m.bytes, &dec.error, limits);
-                      } else {
-                          QJsonParseError parse {};
-                          const QJsonDocument doc = QJsonDocument::fromJson(m.bytes, &parse);
-                          if (doc.isObject())
-                              dec.json = doc.object();
-                          else if (doc.isArray())
-                              dec.json = doc.array();
-                          else
-                              dec.error = tr("not JSON: %1").arg(parse.errorString());
-                      }
-                  }
-                  const double x = double(m.receivedNs - d->originNs) / 1e9;
-                  for (int i : std::as_const(fields)) {
-                      PlotSeries& s = m_series[i];
-                      QString why = dec.error;
-                      std::optional<double> y;
-                      if (why.isEmpty())
-                          y = dec.ros ? FieldPath::number(*dec.ros, s.field.path, &why)
-                                      : FieldPath::number(dec.json, s.field.path, &why);
-                      if (y) {
-                          s.points.append(QPointF(x, *y));
-                      } else {
-                          ++s.errors;
-                          s.lastError = why;
-                      }
-                      changed = true;
-                  }
-              }
-              m_mostDecoded = std::max(m_mostDecoded, decodedCount);
-          };
+FieldPlotter::Decoding FieldPlotter::decodingOf(PlotField::Source source, const QString& topic)
+{
+    Decoding out;
+    QString& type = out.how.type;
+    if (source == PlotField::Source::Mqtt) {
+        const auto info = m_parts.mqttTopics->info(topic);
+        if (info && info->rosType) {
+            out.held = m_parts.mqttTopics->registryFor(topic);
+            out.registry = out.held.get();
+            type = info->rosType->name;
+            out.how.announced = info->rosType;
+            if (!out.registry)
+                out.typeError = info->typeNote.isEmpty() ? tr("the announced type %1 does not read").arg(type)
+                                                         : info->typeNote;
+        }
+    } else if (source == PlotField::Source::Ros2) {
+        const Ros2Topic* t = m_parts.ros2->graph().topic(topic);
+        if (t && !t->types.isEmpty())
+            d->ros2Types.insert(topic, t->type());
+        type = d->ros2Types.value(topic);
+        out.how.graph = SourceGraph::Ros2;
+        const RosTypeRegistry& types = m_parts.ros2Types();
+        if (type.isEmpty())
+            out.typeError = tr("the type is not known yet");
+        else if (!types.contains(type))
+            out.typeError = tr("no ROS 2 definition of %1 is known").arg(type);
+        else
+            out.registry = &types;
+    } else {
+        const RosMonitorStats* stats = m_parts.rosTopics->stats(topic);
+        Private::RosType& t = d->rosTypes[topic];
+        if (stats && !stats->type.isEmpty() && t.md5 != stats->md5) {
+            t.md5 = stats->md5;
+            t.type = stats->type;
+            t.registry = std::make_shared<RosTypeRegistry>();
+            if (!t.registry->addDefinition(stats->type, stats->definition, &t.error))
+                t.registry.reset();
+        }
+        out.registry = t.registry.get();
+        type = t.type;
+        out.how.graph = SourceGraph::Ros1;
+        out.typeError = out.registry ? QString() : (t.error.isEmpty() ? tr("the type is not known yet") : t.error);
+    }
+    return out;
+}
 
-    // Every source alike: what it kept of a watched topic since the last tick, and what it dropped
-    // because more came than it keeps (skipped, like what the tick does not decode).
-    for (PlotField::Source source : kSources) {
-        MessageSource* from = m_session->source(graphOf(source));
-        for (auto it = d->watched[int(source)].begin(); it != d->watched[int(source)].end(); ++it) {
-            const quint64 dropped = from->droppedWatched(it.key());
-            m_skipped += dropped - std::min(dropped, *it);
-            *it = dropped;
-            plotTopic(source, it.key(), from->takeWatched(it.key()));
+bool FieldPlotter::plotTopic(PlotField::Source source, const QString& topic,
+                             const std::vector<SourceArrival>& messages)
+{
+    QList<int> fields;
+    int deepest = -1;
+    for (int i = 0; i < m_series.size(); ++i) {
+        if (m_series[i].field.source == source && m_series[i].field.topic == topic) {
+            fields << i;
+            deepest = std::max(deepest, FieldPath::maxIndex(m_series[i].field.path));
         }
     }
+    if (fields.isEmpty() || messages.empty())
+        return false;
+    const Decoding decoding = decodingOf(source, topic);
+    RosDecodeLimits limits;
+    limits.maxArrayElements = std::min(deepest + 1, 4096);
+    limits.maxStringChars = 64;
+    limits.maxBytes = kMaxPayloadBytes;
+    limits.maxSteps = 200'000;
+    limits.maxValues = 20'000;
 
-    // The window: the last kWindowSeconds, at most kMaxPoints per field.
-    if (d->originNs == 0)
-        return;
+    bool changed = false;
+    const std::vector<std::size_t> chosen = spread(messages.size(), kMessagesPerTick);
+    m_skipped += messages.size() - chosen.size();
+    qint64 bytes = 0;
+    int decodedCount = 0;
+    for (std::size_t index : chosen) {
+        const SourceArrival& m = messages[index];
+        if (d->originNs == 0)
+            d->originNs = m.receivedNs; // time 0 is the first value's
+        Decoded dec;
+        if (m.bytes.size() > kMaxPayloadBytes) {
+            dec.error = tr("a payload of %1 bytes, more than %2 are not plotted")
+                            .arg(m.bytes.size())
+                            .arg(kMaxPayloadBytes);
+        } else if (bytes + m.bytes.size() > kBytesPerTick) {
+            ++m_skipped;
+            continue;
+        } else if (!decoding.typeError.isEmpty()) {
+            dec.error = decoding.typeError;
+        } else {
+            bytes += m.bytes.size();
+            ++decodedCount;
+            if (decoding.registry && decoding.how.isRos()) {
+                dec.ros = SourceMessage::decode(*decoding.registry, decoding.how, m.bytes, &dec.error, limits);
+            } else {
+                QJsonParseError parse {};
+                const QJsonDocument doc = QJsonDocument::fromJson(m.bytes, &parse);
+                if (doc.isObject())
+                    dec.json = doc.object();
+                else if (doc.isArray())
+                    dec.json = doc.array();
+                else
+                    dec.error = tr("not JSON: %1").arg(parse.errorString());
+            }
+        }
+        const double x = double(m.receivedNs - d->originNs) / 1e9;
+        for (int i : std::as_const(fields)) {
+            PlotSeries& s = m_series[i];
+            QString why = dec.error;
+            std::optional<double> y;
+            if (why.isEmpty())
+                y = dec.ros ? FieldPath::number(*dec.ros, s.field.path, &why)
+                            : FieldPath::number(dec.json, s.field.path, &why);
+            if (y) {
+                s.points.append(QPointF(x, *y));
+            } else {
+                ++s.errors;
+                s.lastError = why;
+            }
+            changed = true;
+        }
+    }
+    m_mostDecoded = std::max(m_mostDecoded, decodedCount);
+    return changed;
+}
+
+bool FieldPlotter::trimWindow(qint64 nowNs)
+{
+    bool changed = false;
     const double cutoff = double(nowNs - d->originNs) / 1e9 - kWindowSeconds;
     for (PlotSeries& s : m_series) {
         qsizetype old = 0;
@@ -306,6 +306,28 @@ void FieldPlotter::onDrained(qint64 nowNs)
             changed = true;
         }
     }
+    return changed;
+}
+
+void FieldPlotter::onDrained(qint64 nowNs)
+{
+    if (m_series.isEmpty() || !m_parts.sources.alive())
+        return;
+    bool changed = false;
+    // Every source alike: what it kept of a watched topic since the last tick, and what it dropped
+    // because more came than it keeps (skipped, like what the tick does not decode).
+    for (PlotField::Source source : kSources) {
+        MessageSource* from = m_parts.sources.of(graphOf(source));
+        for (auto it = d->watched[int(source)].begin(); it != d->watched[int(source)].end(); ++it) {
+            const quint64 dropped = from->droppedWatched(it.key());
+            m_skipped += dropped - std::min(dropped, *it);
+            *it = dropped;
+            changed = plotTopic(source, it.key(), from->takeWatched(it.key())) || changed;
+        }
+    }
+    if (d->originNs == 0)
+        return;
+    changed = trimWindow(nowNs) || changed;
     if (changed)
         emit updated();
 }

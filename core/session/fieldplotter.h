@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "session/livesources.h"
+
+#include <functional>
 #include <memory>
 #include <QList>
 #include <QObject>
@@ -9,6 +12,11 @@
 #include <QStringList>
 
 class LiveSession;
+class MqttTopicTree;
+class Ros2Participant;
+class RosTopicModel;
+class RosTypeRegistry;
+struct SourceArrival;
 
 /// A numeric field of an MQTT, ROS 1 or ROS 2 topic to plot over time.
 struct PlotField
@@ -33,7 +41,7 @@ struct PlotSeries
     QString lastError;
 };
 
-/// Values of chosen fields over time, from the live session's ticks.
+/// Values of chosen fields over time, from the live session's ticks (its drain, through Parts).
 ///
 /// Nothing runs per network message: every plotted topic is watched on its graph's MessageSource
 /// (MQTT, ROS 1 or ROS 2 alike), whose queue is taken once per drain. Work per tick is bounded: at
@@ -55,7 +63,21 @@ public:
     static constexpr std::size_t kQueued = 1000;
     static constexpr qint64 kQueuedBytes = 4 * kBytesPerTick;
 
-    explicit FieldPlotter(LiveSession* session, QObject* parent = nullptr);
+    /// What the plotter reads: the sources of the plotted topics, and where their types are known.
+    struct Parts
+    {
+        LiveSources sources;
+        const MqttTopicTree* mqttTopics = nullptr; ///< the types mqtt_client announces
+        const Ros2Participant* ros2 = nullptr; ///< the ROS 2 graph's types
+        const RosTopicModel* rosTopics = nullptr; ///< the ROS 1 monitor's types and definitions
+        /// The ROS 2 definitions ROS 2 samples decode with (they may change while plotting).
+        std::function<const RosTypeRegistry&()> ros2Types;
+    };
+
+    /// The parts of a live session a plotter reads.
+    static Parts partsOf(LiveSession* live);
+
+    explicit FieldPlotter(const Parts& parts, QObject* parent = nullptr);
     ~FieldPlotter() override;
 
     /// Starts plotting a field; false when it is plotted already or kMaxFields are.
@@ -77,10 +99,18 @@ signals:
 
 private:
     struct Private;
+    struct Decoding;
     void onDrained(qint64 nowNs);
     void watch(PlotField::Source source, const QString& topic, bool on);
+    /// How a topic's payloads decode: the ROS type announced (MQTT) or monitored (ROS), the ROS 2
+    /// graph's type as CDR with the session's ROS 2 definitions (ROS 2), else JSON.
+    Decoding decodingOf(PlotField::Source source, const QString& topic);
+    /// Decodes a bounded share of one topic's messages into its fields' points; true when any came.
+    bool plotTopic(PlotField::Source source, const QString& topic, const std::vector<SourceArrival>& messages);
+    /// Keeps the last kWindowSeconds, at most kMaxPoints per field; true when points went.
+    bool trimWindow(qint64 nowNs);
 
-    QPointer<LiveSession> m_session;
+    Parts m_parts; ///< m_parts.sources.alive() is false once the session went first
     std::unique_ptr<Private> d;
     QList<PlotSeries> m_series;
     quint64 m_skipped = 0;

@@ -26,6 +26,18 @@ LiveSession::LiveSession(QObject* parent)
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
     m_tree->setRos2Registry(m_ros2Types); // mqtt_client's ROS 2 payloads decode as ROS 2 samples do
+    m_sources.ros1 = m_monitor;
+    m_sources.ros2 = m_ros2;
+    m_sources.mqtt = m_mqttSource.get();
+    m_sources.owner = this;
+    // A copy of the sources may outlive the session: then nothing is tied to it.
+    m_sources.everyDrain = [self = QPointer<LiveSession>(this)](QObject* context, std::function<void(qint64)> tick) {
+        if (self)
+            connect(self, &LiveSession::drained, context, std::move(tick));
+    };
+    m_sources.everyMqttBatch = [self = QPointer<LiveSession>(this)](MqttListener listener) {
+        return self ? self->addMqttListener(std::move(listener)) : -1;
+    };
     connect(m_ros2, &Ros2Participant::graphChanged, m_ros2Topics,
             [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(toRosGraph(graph)); });
     // Mon in a topic table subscribes through its graph's source, counted.
@@ -56,15 +68,7 @@ LiveSession::~LiveSession() = default;
 
 MessageSource* LiveSession::source(SourceGraph graph) const
 {
-    switch (graph) {
-    case SourceGraph::Ros1:
-        return m_monitor;
-    case SourceGraph::Ros2:
-        return m_ros2;
-    case SourceGraph::Mqtt:
-        break;
-    }
-    return m_mqttSource.get();
+    return m_sources.of(graph);
 }
 
 void LiveSession::setRosMasterUri(const QString& uri)

@@ -6,6 +6,7 @@
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
+#include "session/livesources.h"
 
 #include <functional>
 #include <memory>
@@ -31,7 +32,7 @@ class LiveSession : public QObject
 {
     Q_OBJECT
 public:
-    using MqttListener = std::function<void(const std::vector<MqttMessage>& batch)>;
+    using MqttListener = LiveSources::MqttListener;
 
     explicit LiveSession(QObject* parent = nullptr);
     ~LiveSession() override;
@@ -63,6 +64,8 @@ public:
     /// A graph's topics as a MessageSource: the ROS 1 monitor, the ROS 2 participant, or the
     /// broker's topics (fed with every drain's batch before the listeners have it).
     MessageSource* source(SourceGraph graph) const;
+    /// The three sources with this session as their owner and drain, for a consumer to be handed.
+    LiveSources sources() const { return m_sources; }
     MqttConnection* mqtt() const { return m_mqtt; }
     MqttTopicTree* mqttTopics() const { return m_tree; }
 
@@ -89,6 +92,7 @@ private:
     Ros2Participant* m_ros2;
     RosTopicModel* m_ros2Topics;
     std::unique_ptr<MqttSource> m_mqttSource;
+    LiveSources m_sources;
     std::shared_ptr<const RosTypeRegistry> m_ros2Types;
     std::vector<std::pair<int, MqttListener>> m_listeners;
     int m_nextListener = 1;

@@ -186,37 +186,45 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                 h.detail = tr("'%1' (%2) is published on '%3' (%4).").arg(mqtt, mqttRate, ros, rosRate);
             }
         }
-        // A type announcement that contradicts the ROS graph outranks everything but a missing side.
-        if (rosInfo && mqttInfo && !mqttInfo->type.isEmpty() && !rosInfo->type.isEmpty()
-            && !sameType(mqttInfo->type, rosInfo->type)) {
-            h.state = MappingHealth::TypeMismatch;
-            h.summary = tr("type mismatch");
-            h.detail = tr("The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.")
-                           .arg(mqttInfo->type, mqtt, ros, rosInfo->type);
-        }
-        // A QoS that keeps the bridge's ROS 2 endpoint from matching explains any silence.
-        if (in.ros2 && h.state != MappingHealth::Missing) {
-            if (const Ros2Topic* t = in.ros2->topic(ros)) {
-                if (const QString why = qosProblem(m, *t); !why.isEmpty()) {
-                    h.state = MappingHealth::QosMismatch;
-                    h.summary = tr("QoS incompatible");
-                    h.detail = m.direction == Direction::Ros2Mqtt
-                        ? tr("mqtt_client's subscription to '%1' cannot match a publisher: %2. Set "
-                             "advanced.ros.qos to auto or to what the publishers offer.")
-                              .arg(ros, why)
-                        : tr("Subscribers of '%1' cannot get mqtt_client's messages: %2. Offer at least what "
-                             "they "
-                             "ask for in advanced.ros.qos.")
-                              .arg(ros, why);
-                }
-            }
-        }
-        if (h.latencyMs >= 0 && h.state == MappingHealth::Healthy) {
-            h.summary += u" · "_s + tr("%1 ms").arg(h.latencyMs, 0, 'f', 1);
-            h.detail
-                += u"\n"_s + tr("Last one-way latency on the broker: %1 ms.").arg(h.latencyMs, 0, 'f', 1);
-        }
+        overrule(m, rosInfo, mqttInfo, in, &h);
         out.insert(m.id, h);
     }
     return out;
+}
+
+void MappingHealthEvaluator::overrule(const Mapping& m, const RosTopicInfo* rosInfo, const TopicFigures* mqttInfo,
+                                      const Inputs& in, MappingHealth* h)
+{
+    const QString ros = m.rosTopic();
+    const QString mqtt = m.mqttTopic();
+    // A type announcement that contradicts the ROS graph outranks everything but a missing side.
+    if (rosInfo && mqttInfo && !mqttInfo->type.isEmpty() && !rosInfo->type.isEmpty()
+        && !sameType(mqttInfo->type, rosInfo->type)) {
+        h->state = MappingHealth::TypeMismatch;
+        h->summary = tr("type mismatch");
+        h->detail = tr("The broker announces '%1' for '%2', but '%3' has type '%4' on ROS.")
+                       .arg(mqttInfo->type, mqtt, ros, rosInfo->type);
+    }
+    // A QoS that keeps the bridge's ROS 2 endpoint from matching explains any silence.
+    if (in.ros2 && h->state != MappingHealth::Missing) {
+        if (const Ros2Topic* t = in.ros2->topic(ros)) {
+            if (const QString why = qosProblem(m, *t); !why.isEmpty()) {
+                h->state = MappingHealth::QosMismatch;
+                h->summary = tr("QoS incompatible");
+                h->detail = m.direction == Direction::Ros2Mqtt
+                    ? tr("mqtt_client's subscription to '%1' cannot match a publisher: %2. Set "
+                         "advanced.ros.qos to auto or to what the publishers offer.")
+                          .arg(ros, why)
+                    : tr("Subscribers of '%1' cannot get mqtt_client's messages: %2. Offer at least what "
+                         "they "
+                         "ask for in advanced.ros.qos.")
+                          .arg(ros, why);
+            }
+        }
+    }
+    if (h->latencyMs >= 0 && h->state == MappingHealth::Healthy) {
+        h->summary += u" · "_s + tr("%1 ms").arg(h->latencyMs, 0, 'f', 1);
+        h->detail
+            += u"\n"_s + tr("Last one-way latency on the broker: %1 ms.").arg(h->latencyMs, 0, 'f', 1);
+    }
 }

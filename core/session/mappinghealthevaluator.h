@@ -8,6 +8,7 @@
 #include <QHash>
 
 struct RosGraph;
+struct RosTopicInfo;
 struct Ros2Graph;
 struct Ros2Qos;
 struct TopicFigures;
@@ -39,4 +40,10 @@ public:
     /// ros2mqtt subscription `auto` (the default) takes the publisher's `matched` QoS. False when a
     /// value is not known (a substitution, a typo).
     static bool bridgeQos(const Mapping& m, const Ros2Qos& matched, Ros2Qos* qos);
+
+private:
+    /// What outranks the flow's verdict: a type announcement that contradicts the ROS graph, a
+    /// QoS that keeps the bridge's ROS 2 endpoint from matching; then the last latency is added.
+    static void overrule(const Mapping& m, const RosTopicInfo* rosInfo, const TopicFigures* mqttInfo,
+                         const Inputs& in, MappingHealth* h);
 };

@@ -16,11 +16,21 @@
 
 using namespace Qt::StringLiterals;
 
+MeasureSession::Parts MeasureSession::partsOf(LiveSession* live)
+{
+    return {live->sources(), live->rosGraph(), live->ros2(), live->mqtt()};
+}
+
 MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
+    : MeasureSession(partsOf(live), parent)
+{
+}
+
+MeasureSession::MeasureSession(const Parts& parts, QObject* parent)
     : QObject(parent)
-    , m_live(live)
+    , m_parts(parts)
     , m_ros(new RosStampSource(this))
-    , m_ros2(new Ros2StampSource(live->ros2(), this))
+    , m_ros2(new Ros2StampSource(parts.ros2, this))
     , m_stats(new LatencyStatsModel(this))
     , m_recorder(new RunRecorder(this))
 {
@@ -36,19 +46,29 @@ MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
         emit recordingFailed(why);
     });
     // The MQTT batch comes before drained() in the same tick: collect it, ingest on drained().
-    live->addMqttListener([this](const std::vector<MqttMessage>& batch) { m_mqttDecoder.collect(batch); });
+    parts.sources.everyMqttBatch([this](const std::vector<MqttMessage>& batch) { m_mqttDecoder.collect(batch); });
     m_sources = {m_ros, m_ros2, &m_mqttDecoder};
-    connect(live, &LiveSession::drained, this, &MeasureSession::onDrained);
-    connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &MeasureSession::onGraph);
-    connect(live->rosGraph(), &RosGraphPoller::masterRestarted, m_ros, &RosStampSource::resubscribeAll);
-    connect(live->ros2(), &Ros2Participant::graphChanged, this, &MeasureSession::onRos2Graph);
-    if (live->isRos2Running())
-        onRos2Graph(live->ros2()->graph());
-    m_ros->setMasterUri(live->rosMasterUri());
+    parts.sources.everyDrain(this, [this](qint64 nowNs) { onDrained(nowNs); });
+    connect(parts.rosGraph, &RosGraphPoller::graphChanged, this, &MeasureSession::onGraph);
+    connect(parts.rosGraph, &RosGraphPoller::masterRestarted, m_ros, &RosStampSource::resubscribeAll);
+    connect(parts.ros2, &Ros2Participant::graphChanged, this, &MeasureSession::onRos2Graph);
+    if (parts.ros2->isRunning())
+        onRos2Graph(parts.ros2->graph());
+    m_ros->setMasterUri(parts.rosGraph->masterUri());
     m_stats->refresh(m_engine);
 }
 
 MeasureSession::~MeasureSession() = default;
+
+QString MeasureSession::brokerUrl() const
+{
+    return m_parts.mqtt->profile().url;
+}
+
+QString MeasureSession::rosMasterUri() const
+{
+    return m_parts.rosGraph->masterUri();
+}
 
 void MeasureSession::onGraph(const RosGraph& graph)
 {
@@ -277,12 +297,12 @@ bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* 
     info.pipeline = m_engine.pipeline();
     info.window = m_engine.window();
     info.timeoutNs = m_engine.timeoutNs();
-    info.rosMaster = m_ros1On ? m_live->rosMasterUri() : QString();
-    if (m_live->ros2()->isRunning()) {
-        const Ros2Options o = m_live->ros2()->options();
+    info.rosMaster = m_ros1On ? rosMasterUri() : QString();
+    if (m_parts.ros2->isRunning()) {
+        const Ros2Options o = m_parts.ros2->options();
         info.ros2Domain = o.localhostOnly ? tr("domain %1, this host only").arg(o.domain) : tr("domain %1").arg(o.domain);
     }
-    info.broker = m_live->mqtt()->profile().url;
+    info.broker = brokerUrl();
     info.startedNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
     info.describeThisMachine();
     if (!m_recorder->start(path, info, error))

@@ -5,6 +5,7 @@
 #include "latency/pipelinediscovery.h"
 #include "mqtt/mqttstampdecoder.h"
 #include "record/runfile.h"
+#include "session/livesources.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -15,7 +16,10 @@
 class LatencyStatsModel;
 class RunRecorder;
 class LiveSession;
+class MqttConnection;
+class RosGraphPoller;
 class RosStampSource;
+class Ros2Participant;
 class Ros2StampSource;
 struct RosGraph;
 struct Ros2Graph;
@@ -34,6 +38,20 @@ class MeasureSession : public QObject
 {
     Q_OBJECT
 public:
+    /// What the measurement reads: the drain and its MQTT batches, the master's graph (and its
+    /// URI), the ROS 2 participant whose stamp topics it watches, and the broker a run names.
+    struct Parts
+    {
+        LiveSources sources;
+        const RosGraphPoller* rosGraph = nullptr;
+        Ros2Participant* ros2 = nullptr;
+        const MqttConnection* mqtt = nullptr;
+    };
+    /// The parts of a live session a measurement reads.
+    static Parts partsOf(LiveSession* live);
+
+    explicit MeasureSession(const Parts& parts, QObject* parent = nullptr);
+    /// The same, with the parts of `live` (partsOf()).
     explicit MeasureSession(LiveSession* live, QObject* parent = nullptr);
     ~MeasureSession() override;
 
@@ -42,8 +60,9 @@ public:
     const PipelineDiscovery& discovery() const { return m_discovery; }
     RosStampSource* rosSource() const { return m_ros; }
     Ros2StampSource* ros2Source() const { return m_ros2; }
-    /// Where the stamps come from (its broker and ROS master).
-    const LiveSession* live() const { return m_live; }
+    /// Where the stamps come from: the broker's URL and the ROS master's URI.
+    QString brokerUrl() const;
+    QString rosMasterUri() const;
 
     /// Whether stamps are taken from the ROS 1 master (default true); `record --ros 2` turns it off,
     /// so that a ROS 1 topic of the same name on $ROS_MASTER_URI adds nothing.
@@ -128,7 +147,7 @@ private:
     void publish();
     void publishSoon();
 
-    LiveSession* m_live;
+    Parts m_parts;
     RosStampSource* m_ros;
     Ros2StampSource* m_ros2;
     LatencyEngine m_engine;

@@ -17,32 +17,42 @@ constexpr std::size_t kMaxArrivals = 500'000; ///< between two drains (30 ms): f
 constexpr SourceGraph kGraphs[] {SourceGraph::Mqtt, SourceGraph::Ros1, SourceGraph::Ros2};
 } // namespace
 
-WatchSession::WatchSession(LiveSession* live, QObject* parent)
+WatchSession::Parts WatchSession::partsOf(LiveSession* live)
+{
+    return {live->sources(), live->rosGraph(), live->ros2(), live->rosMonitor()};
+}
+
+WatchSession::WatchSession(const Parts& parts, QObject* parent)
     : QObject(parent)
-    , m_live(live)
+    , m_parts(parts)
     , m_monitor(new LinkMonitor(this))
 {
     for (SourceGraph graph : kGraphs)
-        live->source(graph)->keepArrivals(kMaxArrivals);
+        m_parts.sources.of(graph)->keepArrivals(kMaxArrivals);
     // The live session may outlive this watch: its listener then does nothing.
-    live->addMqttListener(
+    m_parts.sources.everyMqttBatch(
         [monitor = QPointer<LinkMonitor>(m_monitor)](const std::vector<MqttMessage>& batch) {
             if (monitor)
                 monitor->addMqttControl(batch);
         });
-    connect(live, &LiveSession::drained, this, &WatchSession::update);
-    connect(live->rosGraph(), &RosGraphPoller::graphChanged, this, &WatchSession::syncRosTopics);
-    connect(live->ros2(), &Ros2Participant::graphChanged, this, &WatchSession::syncRosTopics);
+    m_parts.sources.everyDrain(this, [this](qint64 nowNs) { update(nowNs); });
+    connect(m_parts.rosGraph, &RosGraphPoller::graphChanged, this, &WatchSession::syncRosTopics);
+    connect(m_parts.ros2, &Ros2Participant::graphChanged, this, &WatchSession::syncRosTopics);
 }
 
 WatchSession::~WatchSession()
 {
-    if (!m_live)
+    if (!m_parts.sources.alive())
         return;
     for (SourceGraph graph : kGraphs)
-        m_live->source(graph)->keepArrivals(0);
+        m_parts.sources.of(graph)->keepArrivals(0);
     for (const QString& topic : std::as_const(m_monitoredMqtt))
-        m_live->source(SourceGraph::Mqtt)->unmonitor(topic);
+        m_parts.sources.mqtt->unmonitor(topic);
+}
+
+bool WatchSession::ros2Running() const
+{
+    return m_parts.ros2->isRunning();
 }
 
 void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
@@ -112,23 +122,23 @@ bool WatchSession::discoverLinks()
 
 void WatchSession::update(qint64 nowNs)
 {
-    m_monitor->add(m_live->source(SourceGraph::Mqtt)->takeArrivals());
-    m_monitor->add(m_live->source(SourceGraph::Ros1)->takeArrivals());
-    if (m_live->isRos2Running())
-        m_monitor->add(m_live->source(SourceGraph::Ros2)->takeArrivals());
+    m_monitor->add(m_parts.sources.mqtt->takeArrivals());
+    m_monitor->add(m_parts.sources.ros1->takeArrivals());
+    if (ros2Running())
+        m_monitor->add(m_parts.sources.ros2->takeArrivals());
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
             applyLinks();
         // Types come with the first message: Header.seq can be read from then on. ROS 2 first, so
         // that a topic on both graphs reads its ROS 1 messages' seq.
-        if (m_live->isRos2Running()) {
-            const QHash<QString, TopicFigures> ros2 = m_live->ros2()->figures(nowNs);
+        if (ros2Running()) {
+            const QHash<QString, TopicFigures> ros2 = m_parts.sources.ros2->figures(nowNs);
             for (auto it = ros2.cbegin(); it != ros2.cend(); ++it)
                 if (!it->type.isEmpty())
                     m_monitor->setRosDefinition(it.key(), it->type, QString());
         }
-        const QHash<QString, RosMonitorStats> stats = m_live->rosMonitor()->snapshot(nowNs);
+        const QHash<QString, RosMonitorStats> stats = m_parts.rosMonitor->snapshot(nowNs);
         for (auto it = stats.cbegin(); it != stats.cend(); ++it)
             if (!it->type.isEmpty())
                 m_monitor->setRosDefinition(it.key(), it->type, it->definition);
@@ -143,7 +153,7 @@ void WatchSession::syncMqttTopics()
 {
     const QStringList topics = m_monitor->mqttTopics();
     const QSet<QString> want(topics.cbegin(), topics.cend());
-    m_live->source(SourceGraph::Mqtt)->monitorExactly(m_monitoredMqtt, want);
+    m_parts.sources.mqtt->monitorExactly(m_monitoredMqtt, want);
 }
 
 void WatchSession::syncRosTopics()
@@ -151,12 +161,12 @@ void WatchSession::syncRosTopics()
     // Each wanted topic is watched where it is: on the ROS 2 domain when that has it (a ROS 2
     // subscription needs the type its publishers announce), else through the ROS 1 master.
     QSet<QString> onRos2;
-    if (m_live->isRos2Running())
-        for (const Ros2Topic& t : m_live->ros2()->graph().topics)
+    if (ros2Running())
+        for (const Ros2Topic& t : m_parts.ros2->graph().topics)
             if (!t.publishers.isEmpty())
                 onRos2.insert(t.name);
     QStringList graphTopics;
-    for (const RosTopicInfo& t : m_live->rosGraph()->graph().topics)
+    for (const RosTopicInfo& t : m_parts.rosGraph->graph().topics)
         graphTopics << t.name;
     graphTopics << QStringList(onRos2.cbegin(), onRos2.cend());
     const QStringList wanted = m_monitor->rosTopicsToMonitor(graphTopics);
@@ -164,8 +174,8 @@ void WatchSession::syncRosTopics()
     for (const QString& t : wanted)
         (onRos2.contains(t) ? want2 : want1).insert(t);
 
-    m_live->source(SourceGraph::Ros1)->monitorExactly(m_monitored, want1);
-    m_live->source(SourceGraph::Ros2)->monitorExactly(m_monitored2, want2);
+    m_parts.sources.ros1->monitorExactly(m_monitored, want1);
+    m_parts.sources.ros2->monitorExactly(m_monitored2, want2);
 }
 
 void WatchSession::useMeasurement(MeasureSession* measure)

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "session/livesession.h"
+#include "session/livesources.h"
 #include "watch/linkmonitor.h"
 
 #include <QObject>
 #include <QPointer>
+
+class LiveSession;
+class RosGraphPoller;
+class RosMonitor;
+class Ros2Participant;
 
 class MeasureSession;
 
@@ -19,11 +24,21 @@ class WatchSession : public QObject
 {
     Q_OBJECT
 public:
-    explicit WatchSession(LiveSession* live, QObject* parent = nullptr);
+    /// What the watch reads: the sources (with their drain and MQTT batches) and the two graphs.
+    struct Parts
+    {
+        LiveSources sources;
+        const RosGraphPoller* rosGraph = nullptr; ///< the ROS 1 master's graph
+        const Ros2Participant* ros2 = nullptr; ///< the ROS 2 domain's graph, while it is joined
+        const RosMonitor* rosMonitor = nullptr; ///< the ROS 1 types and definitions
+    };
+    /// The parts of a live session a watch reads.
+    static Parts partsOf(LiveSession* live);
+
+    explicit WatchSession(const Parts& parts, QObject* parent = nullptr);
     ~WatchSession() override;
 
     LinkMonitor* monitor() const { return m_monitor; }
-    LiveSession* live() const { return m_live; }
     /// Watches the links of these configs (name, config), replacing what was watched.
     void setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs);
     /// Whether the links mqtt_client announces on the broker (its type topics) that no config has
@@ -52,7 +67,9 @@ private:
     /// Adds the links announced since the last call that no config has; true when there were any.
     bool discoverLinks();
 
-    QPointer<LiveSession> m_live; ///< may go first (siblings in a window die in the order they were made)
+    bool ros2Running() const;
+
+    Parts m_parts; ///< the sources may go first (siblings in a window die in the order they were made)
     LinkMonitor* m_monitor;
     qint64 m_lastTickNs = 0;
     qint64 m_lastSyncNs = 0;

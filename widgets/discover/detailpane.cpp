@@ -4,6 +4,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
+#include "ros2/ros2participant.h"
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "widgets/common/ratechart.h"
@@ -126,9 +127,14 @@ void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, co
 }
 } // namespace
 
-DetailPane::DetailPane(LiveSession* session, QWidget* parent)
+DetailPane::Parts DetailPane::partsOf(LiveSession* live)
+{
+    return {FieldPlotter::partsOf(live), live->ros2Topics()};
+}
+
+DetailPane::DetailPane(const Parts& parts, QWidget* parent)
     : QWidget(parent)
-    , m_session(session)
+    , m_parts(parts)
     , m_title(new QLabel(this))
     , m_tabs(new QTabWidget(this))
     , m_fields(new QTreeView(this))
@@ -139,7 +145,7 @@ DetailPane::DetailPane(LiveSession* session, QWidget* parent)
     , m_history(new QTableWidget(this))
     , m_rate(new RateChart(this))
     , m_broker(new QTableWidget(this))
-    , m_plotter(new FieldPlotter(session, this))
+    , m_plotter(new FieldPlotter(parts.live, this))
     , m_plotChart(new FieldPlotChart(this))
     , m_plotList(new QListWidget(this))
     , m_plotNote(new QLabel(this))
@@ -196,7 +202,7 @@ DetailPane::DetailPane(LiveSession* session, QWidget* parent)
     m_broker->verticalHeader()->hide();
     m_broker->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_tabs->addTab(m_broker, tr("&Broker"));
-    connect(session->mqttTopics(), &MqttTopicTree::brokerStatisticsChanged, this, [this] {
+    connect(parts.live.mqttTopics, &MqttTopicTree::brokerStatisticsChanged, this, [this] {
         if (m_tabs->currentWidget() == m_broker)
             refreshBroker();
     });
@@ -403,7 +409,7 @@ void DetailPane::showPayload(const QByteArray& payload)
 
 void DetailPane::refreshMqtt(bool force)
 {
-    MqttTopicTree* tree = m_session->mqttTopics();
+    const MqttTopicTree* tree = m_parts.live.mqttTopics;
     const auto info = tree->info(m_topic);
     if (!info) {
         m_title->setText(tr("<b>%1</b>: a level of the topic tree; select a topic below it.")
@@ -487,7 +493,7 @@ void DetailPane::refreshMqtt(bool force)
 void DetailPane::refreshRos(bool force)
 {
     const bool ros2 = m_kind == Kind::Ros2;
-    RosTopicModel* model = ros2 ? m_session->ros2Topics() : m_session->rosTopics();
+    const RosTopicModel* model = ros2 ? m_parts.ros2Topics : m_parts.live.rosTopics;
     const RosTopicInfo* t = model->graph().topic(m_topic);
     const RosMonitorStats* s = model->stats(m_topic);
     const qint64 now = QDateTime::currentMSecsSinceEpoch() * 1000000LL;
@@ -503,7 +509,7 @@ void DetailPane::refreshRos(bool force)
         return;
     m_shownMessages = messages;
     QString title = u"<b>%1</b>"_s.arg(m_topic.toHtmlEscaped());
-    const Ros2Topic* t2 = ros2 ? m_session->ros2()->graph().topic(m_topic) : nullptr;
+    const Ros2Topic* t2 = ros2 ? m_parts.live.ros2->graph().topic(m_topic) : nullptr;
     if (t2) {
         // ROS 2: each endpoint's node and QoS
         auto endpoints = [](const QList<Ros2Endpoint>& list) {
@@ -549,7 +555,7 @@ void DetailPane::refreshRos(bool force)
     RosDecodeLimits limits;
     limits.maxArrayElements = 32;
     if (ros2) {
-        const RosTypeRegistry& types = m_session->ros2Types();
+        const RosTypeRegistry& types = m_parts.live.ros2Types();
         if (!types.contains(s->type))
             showNoFields(tr("No ROS 2 definition of %1 is known: the payload shows its %n byte(s) raw.",
                             nullptr, s->lastSize)
@@ -574,7 +580,7 @@ void DetailPane::refreshRos(bool force)
 
 void DetailPane::refreshBroker()
 {
-    const QHash<QString, QString>& stats = m_session->mqttTopics()->brokerStatistics();
+    const QHash<QString, QString>& stats = m_parts.live.mqttTopics->brokerStatistics();
     QStringList keys = stats.keys();
     keys.sort();
     m_broker->setRowCount(int(keys.size()));

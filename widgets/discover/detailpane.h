@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "session/fieldplotter.h"
 #include "wire/payloadtext.h"
 
 #include <QWidget>
 
 class FieldPlotChart;
-class FieldPlotter;
 class LiveSession;
 class QAction;
 class QListWidget;
@@ -18,6 +18,7 @@ class QTabWidget;
 class QTableWidget;
 class QTreeView;
 class RateChart;
+class RosTopicModel;
 struct RosValue;
 
 /// What one selected topic carries: its fields (decoded ROS message or JSON), the raw payload
@@ -31,7 +32,18 @@ public:
         NumericRole, ///< bool: the field can be plotted
     };
 
-    explicit DetailPane(LiveSession* session, QWidget* parent = nullptr);
+    /// What the pane reads: the plotter's parts (the sources, the MQTT tree, the ROS 2 graph and
+    /// definitions, the ROS topics), and the ROS 2 topics' figures.
+    struct Parts
+    {
+        FieldPlotter::Parts live;
+        const RosTopicModel* ros2Topics = nullptr;
+    };
+
+    /// The parts of a live session the pane reads.
+    static Parts partsOf(LiveSession* live);
+
+    explicit DetailPane(const Parts& parts, QWidget* parent = nullptr);
 
     void showRosTopic(const QString& topic);
     /// A ROS 2 topic: its samples decode as CDR with the session's ROS 2 definitions.
@@ -66,7 +78,7 @@ private:
     QStringList clearFields();
     void restoreCurrentField(const QStringList& path);
 
-    LiveSession* m_session;
+    Parts m_parts;
     enum class Kind { None, Ros, Ros2, Mqtt } m_kind = Kind::None;
     QString m_topic;
     quint64 m_shownMessages = ~0ull;

@@ -57,7 +57,7 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
     QLayout* bar = createConnectionBar();
     QWidget* rosBox = createRosPane();
     QWidget* mqttBox = createMqttPane();
-    m_detail = new DetailPane(session, this);
+    m_detail = new DetailPane(DetailPane::partsOf(session), this);
 
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(rosBox);

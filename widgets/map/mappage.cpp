@@ -38,9 +38,15 @@
 
 using namespace Qt::StringLiterals;
 
-MapPage::MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
+MapPage::Parts MapPage::partsOf(LiveSession* live)
+{
+    return {live->sources(), live->rosTopics(), live->ros2Topics(), live->mqttTopics(),
+            live->rosGraph(),  live->ros2(),      live->mqtt()};
+}
+
+MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
     : QWidget(parent)
-    , m_session(session)
+    , m_parts(parts)
     , m_doc(document)
     , m_undo(undoStack)
     , m_editor(new ConfigEditor(document, undoStack, this))
@@ -128,7 +134,7 @@ QLayout* MapPage::createBar()
 QWidget* MapPage::createRosPane()
 {
     m_rosBridged = new BridgedTopicsProxy(RosTopicModel::TopicRole, this);
-    m_rosBridged->setSourceModel(m_session->rosTopics());
+    m_rosBridged->setSourceModel(m_parts.rosTopics);
     auto* rosBox = new RosTopicView(m_rosBridged, tr("Filter ROS topics…"), this);
     rosBox->showOnly(
         {RosTopicModel::TopicColumn, RosTopicModel::TypeColumn, RosTopicModel::PublishersColumn});
@@ -144,7 +150,7 @@ QWidget* MapPage::createRosPane()
 QWidget* MapPage::createMqttPane()
 {
     m_mqttBridged = new BridgedTopicsProxy(MqttTopicTree::FullTopicRole, this);
-    m_mqttBridged->setSourceModel(m_session->mqttTopics());
+    m_mqttBridged->setSourceModel(m_parts.mqttTopics);
     m_mqttFilter = new MqttTopicFilter(this);
     m_mqttFilter->setSourceModel(m_mqttBridged);
     auto* mqttBox = new QWidget(this);
@@ -179,13 +185,13 @@ void MapPage::setUpDrops()
     table->setDragDropOverwriteMode(true);
     m_editor->model()->setDropHandler(
         [this](const QMimeData* data, int row) { return dropOnMappings(data, row); });
-    m_session->rosTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+    m_parts.rosTopics->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
     });
-    m_session->ros2Topics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+    m_parts.ros2Topics->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
     });
-    m_session->mqttTopics()->setDropHandler([this](const QMimeData* data, const QString& target) {
+    m_parts.mqttTopics->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeRosTopics(TopicMime::decode(data, TopicMime::rosType()), target).isEmpty();
     });
 }
@@ -252,7 +258,7 @@ QList<quint64> MapPage::apply(const Plan& p, const QString& description)
 
 QList<quint64> MapPage::bridgeRosTopics(const QList<TopicMime::Topic>& topics, const QString& mqttTarget)
 {
-    const MqttTopicTree* tree = m_session->mqttTopics();
+    const MqttTopicTree* tree = m_parts.mqttTopics;
     // One ROS topic on an MQTT topic without levels below it: exactly that topic. Otherwise the
     // target is a level the new topics go under; no target: the prefix.
     const bool exact = topics.size() == 1 && !mqttTarget.isEmpty() && tree->info(mqttTarget)
@@ -272,7 +278,7 @@ QList<quint64> MapPage::bridgeRosTopics(const QList<TopicMime::Topic>& topics, c
 
 QList<quint64> MapPage::bridgeMqttTopics(const QList<TopicMime::Topic>& topics, const QString& rosTarget)
 {
-    const MqttTopicTree* tree = m_session->mqttTopics();
+    const MqttTopicTree* tree = m_parts.mqttTopics;
     const bool exact = topics.size() == 1 && !rosTarget.isEmpty();
     // Beside a ROS topic: in its namespace.
     const QString ns = rosTarget.isEmpty()
@@ -347,7 +353,7 @@ void MapPage::bridgeSelectedMqtt()
         const QString path = i.data(MqttTopicTree::FullTopicRole).toString();
         const QStringList below = i.data(MqttTopicTree::IsTopicRole).toBool()
             ? QStringList {path}
-            : m_session->mqttTopics()->topicsBelow(path);
+            : m_parts.mqttTopics->topicsBelow(path);
         for (const QString& t : below) {
             if (!seen.contains(t)) {
                 seen.insert(t);
@@ -377,9 +383,9 @@ void MapPage::updateBridgedTopics()
 
 MapPage::~MapPage()
 {
-    if (m_session)
+    if (m_parts.sources.alive())
         for (const QString& topic : std::as_const(m_mqttMonitored))
-            m_session->source(SourceGraph::Mqtt)->unmonitor(topic);
+            m_parts.sources.mqtt->unmonitor(topic);
 }
 
 void MapPage::monitorMappedMqttTopics()
@@ -393,12 +399,12 @@ void MapPage::monitorMappedMqttTopics()
     for (int i = 0; m_files && i < m_files->openCount(); ++i)
         if (i != m_files->currentIndex())
             add(m_files->configOf(i));
-    m_session->source(SourceGraph::Mqtt)->monitorExactly(m_mqttMonitored, topics);
+    m_parts.sources.mqtt->monitorExactly(m_mqttMonitored, topics);
 }
 
 bool MapPage::usesRos2() const
 {
-    return m_doc->config().layout == ConfigLayout::Ros2 && m_session->isRos2Running();
+    return m_doc->config().layout == ConfigLayout::Ros2 && m_parts.ros2->isRunning();
 }
 
 void MapPage::updateHealth()
@@ -406,22 +412,22 @@ void MapPage::updateHealth()
     const qint64 now = wallClockNs();
     // A config in the ROS 2 layout maps against the ROS 2 graph when the Discover page shows one.
     const bool ros2 = usesRos2();
-    RosTopicModel* topics = ros2 ? m_session->ros2Topics() : m_session->rosTopics();
+    RosTopicModel* topics = ros2 ? m_parts.ros2Topics : m_parts.rosTopics;
     if (m_rosBridged->sourceModel() != topics) {
         m_rosBridged->setSourceModel(topics);
         updateBridgedTopics();
     }
-    const QHash<QString, TopicFigures> monitored = m_session->source(ros2 ? SourceGraph::Ros2 : SourceGraph::Ros1)->figures(now);
+    const QHash<QString, TopicFigures> monitored = (ros2 ? m_parts.sources.ros2 : m_parts.sources.ros1)->figures(now);
     monitorMappedMqttTopics();
-    const QHash<QString, TopicFigures> mqtt = m_session->source(SourceGraph::Mqtt)->figures(now);
-    const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_session->ros2()->graph()) : RosGraph();
+    const QHash<QString, TopicFigures> mqtt = m_parts.sources.mqtt->figures(now);
+    const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_parts.ros2->graph()) : RosGraph();
     MappingHealthEvaluator::Inputs in;
-    in.graph = ros2 ? &ros2Graph : &m_session->rosGraph()->graph();
-    in.rosReachable = ros2 || m_session->rosGraph()->isReachable(); // ROS 2 has no master to miss
-    in.ros2 = ros2 ? &m_session->ros2()->graph() : nullptr;
+    in.graph = ros2 ? &ros2Graph : &m_parts.rosGraph->graph();
+    in.rosReachable = ros2 || m_parts.rosGraph->isReachable(); // ROS 2 has no master to miss
+    in.ros2 = ros2 ? &m_parts.ros2->graph() : nullptr;
     in.monitored = &monitored;
     in.mqtt = &mqtt;
-    in.mqttConnected = m_session->mqtt()->state() == MqttConnection::State::Connected;
+    in.mqttConnected = m_parts.mqtt->state() == MqttConnection::State::Connected;
     in.nowNs = now;
     const QHash<quint64, MappingHealth> shown = MappingHealthEvaluator::evaluate(m_doc->config(), in);
     m_editor->model()->setHealth(shown);

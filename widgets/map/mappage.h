@@ -3,6 +3,7 @@
 
 #include "base/topicmime.h"
 #include "config/bridgeconfig.h"
+#include "session/livesources.h"
 
 #include <QPointer>
 #include <QSet>
@@ -14,7 +15,9 @@ class ConfigFileController;
 class ConfigTabs;
 class ConfigEditor;
 class LiveSession;
+class MqttConnection;
 class MqttTopicFilter;
+class MqttTopicTree;
 class QAction;
 class QLabel;
 class QLayout;
@@ -25,6 +28,9 @@ class QTableView;
 class QTimer;
 class QTreeView;
 class QUndoStack;
+class RosGraphPoller;
+class RosTopicModel;
+class Ros2Participant;
 
 /// The Map page: discovered ROS topics and MQTT topics beside the config's mappings. Drag ROS
 /// topics onto the MQTT tree (or the mapping table) to bridge them to MQTT, MQTT topics onto the
@@ -34,7 +40,23 @@ class MapPage : public QWidget
 {
     Q_OBJECT
 public:
-    MapPage(LiveSession* session, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent = nullptr);
+    /// What the page reads and drops on: the topic tables and tree, the graphs, the broker's state
+    /// and the sources whose figures the health takes.
+    struct Parts
+    {
+        LiveSources sources;
+        RosTopicModel* rosTopics = nullptr;
+        RosTopicModel* ros2Topics = nullptr;
+        MqttTopicTree* mqttTopics = nullptr;
+        const RosGraphPoller* rosGraph = nullptr;
+        const Ros2Participant* ros2 = nullptr;
+        const MqttConnection* mqtt = nullptr;
+    };
+
+    /// The parts of a live session the page reads.
+    static Parts partsOf(LiveSession* live);
+
+    MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent = nullptr);
     ~MapPage() override;
 
     ConfigEditor* editor() const { return m_editor; }
@@ -81,7 +103,7 @@ private:
     void bridgeSelectedRos();
     void bridgeSelectedMqtt();
 
-    QPointer<LiveSession> m_session; ///< may go first when the window closes
+    Parts m_parts; ///< the session may go first when the window closes (m_parts.sources.alive())
     QSet<QString> m_mqttMonitored;
     ConfigDocument* m_doc;
     QUndoStack* m_undo;

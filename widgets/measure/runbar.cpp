@@ -4,8 +4,6 @@
 #include "record/runrecorder.h"
 #include "report/runloader.h"
 #include "base/secrets.h"
-#include "mqtt/mqttconnection.h"
-#include "session/livesession.h"
 #include "session/measuresession.h"
 #include "session/waitingtext.h"
 #include "widgets/measure/recorddialog.h"
@@ -199,12 +197,11 @@ QString RunBar::waitingText() const
     if (m_measure->recorder()->committedStamps() > 0 || !m_recordingSince.isValid()
         || m_recordingSince.msecsTo(now) < WaitingText::kGraceMs)
         return {};
-    const LiveSession* live = m_measure->live();
     WaitingText waiting;
     waiting.what = tr("stamp");
     waiting.topics = m_measure->pipeline().topics();
-    waiting.broker = Secrets::urlWithoutCredentials(live->mqtt()->profile().url);
-    waiting.master = Secrets::urlWithoutCredentials(live->rosMasterUri());
+    waiting.broker = Secrets::urlWithoutCredentials(m_measure->brokerUrl());
+    waiting.master = Secrets::urlWithoutCredentials(m_measure->rosMasterUri());
     waiting.since = m_recordingSince;
     return waiting.text(now);
 }
