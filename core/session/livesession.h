@@ -28,7 +28,22 @@ class RosTypeRegistry;
 /// Network threads never touch a model: every tick takes what the buffers collected, hands the
 /// MQTT batch to listeners (the latency engine, mapping health) and then to the topic tree, and
 /// refreshes monitor figures. Nothing is emitted per network message.
-class LiveSession : public QObject
+/// What the Discover page drives of the live session: which ROS master, broker and ROS 2 domain
+/// it uses. The page is handed this and the parts it shows, not the session.
+class SessionControls
+{
+public:
+    virtual ~SessionControls() = default;
+    virtual void setRosMasterUri(const QString& uri) = 0;
+    virtual QString rosMasterUri() const = 0;
+    virtual void connectBroker(const MqttProfile& profile) = 0;
+    virtual void disconnectBroker() = 0;
+    virtual bool startRos2(const Ros2Options& options, QString* error = nullptr) = 0;
+    virtual void stopRos2() = 0;
+    virtual bool isRos2Running() const = 0;
+};
+
+class LiveSession : public QObject, public SessionControls
 {
     Q_OBJECT
 public:
@@ -37,15 +52,15 @@ public:
     explicit LiveSession(QObject* parent = nullptr);
     ~LiveSession() override;
 
-    void setRosMasterUri(const QString& uri);
-    QString rosMasterUri() const;
-    void connectBroker(const MqttProfile& profile);
-    void disconnectBroker();
+    void setRosMasterUri(const QString& uri) override;
+    QString rosMasterUri() const override;
+    void connectBroker(const MqttProfile& profile) override;
+    void disconnectBroker() override;
 
     /// Joins a ROS 2 domain (leaving the one before); the ROS 2 topics fill ros2Topics().
-    bool startRos2(const Ros2Options& options, QString* error = nullptr);
-    void stopRos2();
-    bool isRos2Running() const { return m_ros2->isRunning(); }
+    bool startRos2(const Ros2Options& options, QString* error = nullptr) override;
+    void stopRos2() override;
+    bool isRos2Running() const override { return m_ros2->isRunning(); }
     Ros2Participant* ros2() const { return m_ros2; }
     RosTopicModel* ros2Topics() const { return m_ros2Topics; }
     /// The ROS 2 definitions ROS 2 samples decode with (bundled, and those under the folders of

@@ -98,7 +98,7 @@ private slots:
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
 
         LiveSession session;
-        DiscoverPage page(&session);
+        DiscoverPage page(DiscoverPage::partsOf(&session));
         page.resize(1280, 760);
         page.show();
         QCOMPARE(page.rosGraphs(), DiscoverPage::RosGraphs::Ros1);
@@ -164,7 +164,7 @@ private slots:
                        u"--graph-raw"_s, u"00010000"_s + gid + u"ffffffff"_s});
         QVERIFY2(evil.waitFor(u"ready"_s), qPrintable(evil.errors()));
         LiveSession session;
-        DiscoverPage page(&session);
+        DiscoverPage page(DiscoverPage::partsOf(&session));
         page.resize(1280, 760);
         page.show();
         page.setRos2Options({m_domain, true});
@@ -199,7 +199,7 @@ private slots:
                                  u"--duration"_s, u"120"_s});
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         LiveSession session;
-        DiscoverPage page(&session);
+        DiscoverPage page(DiscoverPage::partsOf(&session));
         page.resize(1280, 760);
         page.show();
         page.setRos2Options({domain, true});

@@ -189,7 +189,7 @@ private:
             page.show();
         }
         LiveSession session;
-        DiscoverPage page {&session};
+        DiscoverPage page {DiscoverPage::partsOf(&session)};
     };
 
     static QModelIndex topicIndex(DiscoverPage& page, const QString& topic)
@@ -563,7 +563,7 @@ private slots:
     {
         const int domain = Ros2Peer::freeDomain(181, 199);
         LiveSession session;
-        DiscoverPage page(&session);
+        DiscoverPage page(DiscoverPage::partsOf(&session));
         page.show();
         page.setRos2Options({domain, true});
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);

@@ -49,15 +49,21 @@ QString bullet(const QString& colour, const QString& text)
 }
 } // namespace
 
-DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
+DiscoverPage::Parts DiscoverPage::partsOf(LiveSession* live)
+{
+    return {live,         live->rosTopics(), live->ros2Topics(), live->mqttTopics(),
+            live->mqtt(), live->rosGraph(),  live->ros2(),       DetailPane::partsOf(live)};
+}
+
+DiscoverPage::DiscoverPage(const Parts& parts, QWidget* parent)
     : QWidget(parent)
-    , m_session(session)
+    , m_parts(parts)
     , m_passwords(new PasswordStore(this))
 {
     QLayout* bar = createConnectionBar();
     QWidget* rosBox = createRosPane();
     QWidget* mqttBox = createMqttPane();
-    m_detail = new DetailPane(DetailPane::partsOf(session), this);
+    m_detail = new DetailPane(parts.detail, this);
 
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(rosBox);
@@ -82,7 +88,7 @@ DiscoverPage::DiscoverPage(LiveSession* session, QWidget* parent)
 QLayout* DiscoverPage::createConnectionBar()
 {
     auto* bar = new QGridLayout;
-    m_masterUri = new QLineEdit(m_session->rosMasterUri(), this);
+    m_masterUri = new QLineEdit(m_parts.controls->rosMasterUri(), this);
     m_masterUri->setObjectName(u"masterUri"_s);
     m_masterUri->setToolTip(tr("ROS master URI; Enter applies it"));
     m_rosState = new QLabel(this);
@@ -94,7 +100,7 @@ QLayout* DiscoverPage::createConnectionBar()
     bar->addWidget(m_rosState, 0, 2, 1, 3);
     connect(m_masterUri, &QLineEdit::returnPressed, this, [this] {
         setRosMasterUri(m_masterUri->text().trimmed());
-        emit rosMasterChosen(m_session->rosMasterUri());
+        emit rosMasterChosen(m_parts.controls->rosMasterUri());
     });
 
     m_profileBox = new QComboBox(this);
@@ -168,7 +174,7 @@ QLayout* DiscoverPage::createConnectionBar()
         emit rosGraphsChosen(m_graphs, ros2Options());
     };
     connect(m_domain, &QSpinBox::editingFinished, this, [this, rejoin] {
-        if (m_session->isRos2Running() && m_session->ros2()->options().domain != m_domain->value())
+        if (m_parts.controls->isRos2Running() && m_parts.ros2->options().domain != m_domain->value())
             rejoin();
     });
     connect(m_localhostOnly, &QCheckBox::toggled, this, rejoin);
@@ -182,7 +188,7 @@ QLayout* DiscoverPage::createConnectionBar()
 
 QWidget* DiscoverPage::createRosPane()
 {
-    auto* rosBox = new RosTopicView(m_session->rosTopics(), tr("Filter ROS topics or types…"), this);
+    auto* rosBox = new RosTopicView(m_parts.rosTopics, tr("Filter ROS topics or types…"), this);
     m_rosFilter = rosBox->filterEdit();
     m_rosFilter->setObjectName(u"rosFilter"_s);
     m_rosProxy = rosBox->proxy();
@@ -190,7 +196,7 @@ QWidget* DiscoverPage::createRosPane()
     m_rosView->setObjectName(u"rosTopics"_s);
     m_rosView->setSelectionMode(QAbstractItemView::SingleSelection);
 
-    auto* ros2Box = new RosTopicView(m_session->ros2Topics(), tr("Filter ROS 2 topics or types…"), this);
+    auto* ros2Box = new RosTopicView(m_parts.ros2Topics, tr("Filter ROS 2 topics or types…"), this);
     ros2Box->filterEdit()->setObjectName(u"ros2Filter"_s);
     m_ros2View = ros2Box->table();
     m_ros2View->setObjectName(u"ros2Topics"_s);
@@ -243,12 +249,12 @@ void DiscoverPage::applyRos2()
 {
     m_ros2Error.clear();
     if (m_graphs == RosGraphs::Ros1) {
-        m_session->stopRos2();
+        m_parts.controls->stopRos2();
     } else {
         const Ros2Options o = ros2Options();
-        const Ros2Options now = m_session->ros2()->options();
-        if (!m_session->isRos2Running() || now.domain != o.domain || now.localhostOnly != o.localhostOnly)
-            m_session->startRos2(o, &m_ros2Error);
+        const Ros2Options now = m_parts.ros2->options();
+        if (!m_parts.controls->isRos2Running() || now.domain != o.domain || now.localhostOnly != o.localhostOnly)
+            m_parts.controls->startRos2(o, &m_ros2Error);
     }
     const bool ros2 = m_graphs != RosGraphs::Ros1;
     m_domain->setEnabled(ros2);
@@ -267,7 +273,7 @@ void DiscoverPage::updateRos2Status()
         m_ros2State->setText(bullet(u"#b00020"_s, m_ros2Error));
         return;
     }
-    const Ros2Participant* ros2 = m_session->ros2();
+    const Ros2Participant* ros2 = m_parts.ros2;
     if (!ros2->lastError().isEmpty()) {
         m_ros2State->setText(bullet(u"#b00020"_s, ros2->lastError()));
         return;
@@ -315,7 +321,7 @@ QWidget* DiscoverPage::createMqttPane()
     filterRow->addWidget(publish);
     mv->addLayout(filterRow);
     m_mqttProxy = new MqttTopicFilter(this);
-    m_mqttProxy->setSourceModel(m_session->mqttTopics());
+    m_mqttProxy->setSourceModel(m_parts.mqttTopics);
     connect(m_mqttFilter, &QLineEdit::textChanged, m_mqttProxy, &MqttTopicFilter::setText);
     connect(m_searchPayloads, &QCheckBox::toggled, m_mqttProxy, &MqttTopicFilter::setSearchPayloads);
     m_mqttView = new QTreeView(mqttBox);
@@ -395,7 +401,7 @@ void DiscoverPage::createMqttActions()
 PublishDialog* DiscoverPage::openPublishDialog()
 {
     const QString topic = m_mqttView->currentIndex().data(MqttTopicTree::FullTopicRole).toString();
-    auto* dialog = new PublishDialog(m_session->mqtt(), m_session->mqttTopics(), topic, this);
+    auto* dialog = new PublishDialog(m_parts.mqtt, m_parts.mqttTopics, topic, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->show();
     return dialog;
@@ -407,7 +413,7 @@ int DiscoverPage::clearRetained()
     if (!current.isValid())
         return 0;
     const QString path = current.data(MqttTopicTree::FullTopicRole).toString();
-    const QStringList topics = m_session->mqttTopics()->retainedBelow(path);
+    const QStringList topics = m_parts.mqttTopics->retainedBelow(path);
     if (topics.isEmpty()) {
         QMessageBox::information(this, tr("Clear Retained"),
                                  tr("No retained message is known at or under %1.").arg(path));
@@ -432,7 +438,7 @@ int DiscoverPage::clearRetained()
     int cleared = 0;
     QString why;
     for (const QString& t : topics)
-        cleared += m_session->mqtt()->publish(t, QByteArray(), 0, true, &why) ? 1 : 0;
+        cleared += m_parts.mqtt->publish(t, QByteArray(), 0, true, &why) ? 1 : 0;
     if (cleared < topics.size())
         QMessageBox::warning(
             this, tr("Clear Retained"),
@@ -464,11 +470,11 @@ void DiscoverPage::connectSelection()
 
 void DiscoverPage::connectSession()
 {
-    connect(m_session->rosGraph(), &RosGraphPoller::reachabilityChanged, this,
+    connect(m_parts.rosGraph, &RosGraphPoller::reachabilityChanged, this,
             &DiscoverPage::updateRosStatus);
-    connect(m_session->rosGraph(), &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
-    connect(m_session->ros2(), &Ros2Participant::graphChanged, this, &DiscoverPage::updateRos2Status);
-    connect(m_session->mqtt(), &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
+    connect(m_parts.rosGraph, &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
+    connect(m_parts.ros2, &Ros2Participant::graphChanged, this, &DiscoverPage::updateRos2Status);
+    connect(m_parts.mqtt, &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
     // The detail pane follows its topic a few times a second, not at the drain rate.
     auto* refresh = new QTimer(this);
     connect(refresh, &QTimer::timeout, m_detail, &DetailPane::refresh);
@@ -525,7 +531,7 @@ void DiscoverPage::editProfile(bool asNew)
 
 void DiscoverPage::toggleConnection()
 {
-    const MqttConnection::State s = m_session->mqtt()->state();
+    const MqttConnection::State s = m_parts.mqtt->state();
     if (s == MqttConnection::State::Disconnected || s == MqttConnection::State::Failed) {
         MqttProfile p = m_profiles.value(m_profileBox->currentIndex());
         if (!p.username.isEmpty() && p.password.isEmpty()) {
@@ -544,7 +550,7 @@ void DiscoverPage::toggleConnection()
         }
         connectBroker(p);
     } else {
-        m_session->disconnectBroker();
+        m_parts.controls->disconnectBroker();
     }
 }
 
@@ -566,21 +572,21 @@ void DiscoverPage::connectBroker(const MqttProfile& profile)
         m_profiles[index] = profile;
     }
     m_profileBox->setCurrentIndex(index);
-    m_session->mqttTopics()->clear();
-    m_session->connectBroker(profile);
+    m_parts.mqttTopics->clear();
+    m_parts.controls->connectBroker(profile);
     updateMqttStatus();
 }
 
 void DiscoverPage::setRosMasterUri(const QString& uri)
 {
     m_masterUri->setText(uri);
-    m_session->setRosMasterUri(uri);
+    m_parts.controls->setRosMasterUri(uri);
     m_rosState->setText(bullet(u"#888"_s, tr("asking %1…").arg(uri)));
 }
 
 void DiscoverPage::updateRosStatus()
 {
-    const RosGraphPoller* p = m_session->rosGraph();
+    const RosGraphPoller* p = m_parts.rosGraph;
     m_masterUri->setEnabled(m_graphs != RosGraphs::Ros2);
     if (m_graphs == RosGraphs::Ros2)
         m_rosState->setText(bullet(u"#888"_s, tr("not shown (ROS 2 only)")));
@@ -597,7 +603,7 @@ void DiscoverPage::updateRosStatus()
 
 void DiscoverPage::updateMqttStatus()
 {
-    const MqttConnection* c = m_session->mqtt();
+    const MqttConnection* c = m_parts.mqtt;
     const MqttConnection::State s = c->state();
     QString colour = u"#888"_s;
     if (s == MqttConnection::State::Connected)
@@ -615,7 +621,7 @@ void DiscoverPage::updateMqttStatus()
     m_mqttState->setText(bullet(colour, text));
     const bool idle = s == MqttConnection::State::Disconnected || s == MqttConnection::State::Failed;
     m_connect->setText(idle ? tr("&Connect") : tr("Dis&connect"));
-    const MqttTopicTree* t = m_session->mqttTopics();
+    const MqttTopicTree* t = m_parts.mqttTopics;
     QStringList parts {tr("%1 topics").arg(t->topicCount()), tr("%1 messages").arg(c->received())};
     if (c->dropped())
         parts << tr("%1 dropped").arg(c->dropped());

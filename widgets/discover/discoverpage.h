@@ -3,13 +3,16 @@
 
 #include "mqtt/mqttconnection.h"
 #include "ros2/ros2participant.h"
+#include "session/livesession.h"
+#include "widgets/discover/detailpane.h"
 
 #include <QWidget>
 
-class DetailPane;
 class PublishDialog;
 class QAction;
-class LiveSession;
+class MqttTopicTree;
+class RosGraphPoller;
+class RosTopicModel;
 class MqttTopicFilter;
 class PasswordStore;
 class QCheckBox;
@@ -35,7 +38,24 @@ public:
     /// Which ROS graphs the page shows.
     enum class RosGraphs { Ros1, Ros2, Both };
 
-    explicit DiscoverPage(LiveSession* session, QWidget* parent = nullptr);
+    /// What the page shows and drives of a live session: its controls (master, broker, ROS 2
+    /// domain), the topic models, the connection (publishing, clearing retained messages), the
+    /// graphs' states and what the detail pane reads.
+    struct Parts
+    {
+        SessionControls* controls = nullptr;
+        RosTopicModel* rosTopics = nullptr;
+        RosTopicModel* ros2Topics = nullptr;
+        MqttTopicTree* mqttTopics = nullptr;
+        MqttConnection* mqtt = nullptr;
+        const RosGraphPoller* rosGraph = nullptr;
+        const Ros2Participant* ros2 = nullptr;
+        DetailPane::Parts detail;
+    };
+    /// The parts of a live session the page uses.
+    static Parts partsOf(LiveSession* live);
+
+    explicit DiscoverPage(const Parts& parts, QWidget* parent = nullptr);
 
     /// Shows ROS 1, ROS 2 or both; joins or leaves the ROS 2 domain as needed.
     void setRosGraphs(RosGraphs graphs);
@@ -93,7 +113,7 @@ private:
     void editProfile(bool asNew);
     void toggleConnection();
 
-    LiveSession* m_session;
+    Parts m_parts;
     PasswordStore* m_passwords;
     QList<MqttProfile> m_profiles;
     QLineEdit* m_masterUri;
