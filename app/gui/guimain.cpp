@@ -56,6 +56,7 @@ QString bridgescopeUsage()
         {u"--ros-localhost-only"_s, Gui::tr("ROS 2 discovery on this host only")},
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
+        {u"--session"_s, Gui::tr("with --screenshot: start from the saved window and save it, as a user's start does")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
         {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
         {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports, links or experiments")},
@@ -99,6 +100,7 @@ struct GuiRequest
 {
     QString screenshot; ///< empty: none
     double screenshotAfter = 1;
+    bool session = false; ///< a screenshot run restores and saves the window as a user's start does
     QString brokerUrl; ///< as given, credentials included
     std::optional<MqttProfile> broker;
     QString masterUri; ///< empty: $ROS_MASTER_URI
@@ -122,6 +124,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
                                         u"PNG"_s);
     const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
                                    u"SECONDS"_s, u"1"_s);
+    const QCommandLineOption session(
+        u"session"_s, Gui::tr("With --screenshot: start from the saved window and save it on exit."));
     const QCommandLineOption broker(
         u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."), u"URL"_s);
     const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."),
@@ -135,7 +139,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     const QCommandLineOption theme(u"theme"_s, Gui::tr("Colours: system (default), light or dark."),
                                    u"THEME"_s);
-    parser.addOptions({screenshot, after, broker, master, pipeline, page, demo, theme});
+    parser.addOptions({screenshot, after, session, broker, master, pipeline, page, demo, theme});
     RosOptions ros;
     ros.addTo(parser);
     parser.addPositionalArgument(
@@ -148,6 +152,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         return ExitUsage;
     }
     request->screenshot = parser.value(screenshot);
+    request->session = request->screenshot.isEmpty() || parser.isSet(session);
     bool ok = false;
     request->screenshotAfter = parser.value(after).toDouble(&ok);
     if (!ok || request->screenshotAfter < 0) {
@@ -242,12 +247,14 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
 }
 
 /// Saves the window as PNG after `seconds` and ends the program (1 when the file was not written).
-void scheduleScreenshot(MainWindow& window, const QString& png, double seconds)
+void scheduleScreenshot(MainWindow& window, const QString& png, double seconds, bool keep)
 {
-    QTimer::singleShot(int(seconds * 1000), &window, [&window, png] {
+    QTimer::singleShot(int(seconds * 1000), &window, [&window, png, keep] {
         const bool saved = window.grab().save(png);
         if (!saved)
             CliOutput::err(Gui::tr("Cannot write the screenshot %1").arg(png));
+        if (keep)
+            window.saveSession(); // --session: the next run starts from this one
         QCoreApplication::exit(saved ? 0 : 1);
     });
 }
@@ -266,8 +273,8 @@ int runGui(int& argc, char** argv)
     // The demo lab outlives the window: its servers go last.
     std::unique_ptr<DemoLab> lab;
     MainWindow window;
-    if (request.screenshot.isEmpty())
-        window.rememberSession(); // a screenshot shows the window as it starts the first time
+    if (request.session)
+        window.rememberSession(); // a screenshot shows the window as it starts the first time, unless --session
     if (!request.theme.isEmpty())
         Theme::apply(request.theme);
     if (!request.demo && !applyRequest(window, request))
@@ -304,6 +311,6 @@ int runGui(int& argc, char** argv)
         });
     }
     if (!request.screenshot.isEmpty())
-        scheduleScreenshot(window, request.screenshot, request.screenshotAfter);
+        scheduleScreenshot(window, request.screenshot, request.screenshotAfter, request.session);
     return app.exec();
 }
