@@ -13,7 +13,7 @@ app="$build/app/bridgescope"
 settings="$(mktemp -d)"
 trap 'rm -rf "$settings"' EXIT
 export XDG_CONFIG_HOME="$settings" LC_ALL=C.UTF-8 LANGUAGE=en
-out="$root/docs/screenshots"
+out="${BRIDGESCOPE_SHOTS_DIR:-$root/docs/screenshots}"
 shot() { # PNG SECONDS ARGS...
     local png="$1" after="$2"; shift 2
     xvfb-run -a -s "-screen 0 1280x800x24" "$app" --session --screenshot "$png" --after "$after" "$@" 2>>"$settings/log"
