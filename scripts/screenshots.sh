@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # Retakes the README's screenshots of the demo lab at 1280x800 the way a user meets the window: from
 # a second session with one settings folder (the first session is the demo on ROS 1, used and quit;
-# then each shot starts from what it left, as `--session` asks). A first session that leaves
+# then each shot starts from what it left, as `--remember` asks). A first session that leaves
 # columns, splitters and the ROS graph behind is what issue 40 found hiding figures and names.
 # Usage: scripts/screenshots.sh [BUILD_DIR]   (default build-release; builds nothing itself)
 set -euo pipefail
@@ -16,7 +16,7 @@ export XDG_CONFIG_HOME="$settings" LC_ALL=C.UTF-8 LANGUAGE=en
 out="${BRIDGESCOPE_SHOTS_DIR:-$root/docs/screenshots}"
 shot() { # PNG SECONDS ARGS...
     local png="$1" after="$2"; shift 2
-    xvfb-run -a -s "-screen 0 1280x800x24" "$app" --session --screenshot "$png" --after "$after" "$@" 2>>"$settings/log"
+    xvfb-run -a -s "-screen 0 1280x800x24" "$app" --remember --screenshot "$png" --after "$after" "$@" 2>>"$settings/log"
 }
 # The first session: the demo on ROS 1, shown for a while on every page it opens on, then quit.
 shot "$settings/first.png" 20 --demo

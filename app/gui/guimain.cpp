@@ -56,7 +56,7 @@ QString bridgescopeUsage()
         {u"--ros-localhost-only"_s, Gui::tr("ROS 2 discovery on this host only")},
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
-        {u"--session"_s, Gui::tr("with --screenshot: start from the saved window and save it, as a user's start does")},
+        {u"--remember"_s, Gui::tr("with --screenshot: start from the saved window and save it, as a user's start does")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
         {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
         {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports, links or experiments")},
@@ -124,8 +124,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
                                         u"PNG"_s);
     const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
                                    u"SECONDS"_s, u"1"_s);
-    const QCommandLineOption session(
-        u"session"_s, Gui::tr("With --screenshot: start from the saved window and save it on exit."));
+    const QCommandLineOption remember(
+        u"remember"_s, Gui::tr("With --screenshot: start from the saved window and save it on exit."));
     const QCommandLineOption broker(
         u"broker"_s, Gui::tr("MQTT broker to connect to (tcp://host:port, ssl://...)."), u"URL"_s);
     const QCommandLineOption master(u"ros-master"_s, Gui::tr("ROS master URI (default $ROS_MASTER_URI)."),
@@ -139,7 +139,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     const QCommandLineOption theme(u"theme"_s, Gui::tr("Colours: system (default), light or dark."),
                                    u"THEME"_s);
-    parser.addOptions({screenshot, after, session, broker, master, pipeline, page, demo, theme});
+    parser.addOptions({screenshot, after, remember, broker, master, pipeline, page, demo, theme});
     RosOptions ros;
     ros.addTo(parser);
     parser.addPositionalArgument(
@@ -152,7 +152,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         return ExitUsage;
     }
     request->screenshot = parser.value(screenshot);
-    request->session = request->screenshot.isEmpty() || parser.isSet(session);
+    request->session = request->screenshot.isEmpty() || parser.isSet(remember);
     bool ok = false;
     request->screenshotAfter = parser.value(after).toDouble(&ok);
     if (!ok || request->screenshotAfter < 0) {
@@ -254,7 +254,7 @@ void scheduleScreenshot(MainWindow& window, const QString& png, double seconds, 
         if (!saved)
             CliOutput::err(Gui::tr("Cannot write the screenshot %1").arg(png));
         if (keep)
-            window.saveSession(); // --session: the next run starts from this one
+            window.saveSession(); // --remember: the next run starts from this one
         QCoreApplication::exit(saved ? 0 : 1);
     });
 }
@@ -274,7 +274,7 @@ int runGui(int& argc, char** argv)
     std::unique_ptr<DemoLab> lab;
     MainWindow window;
     if (request.session)
-        window.rememberSession(); // a screenshot shows the window as it starts the first time, unless --session
+        window.rememberSession(); // a screenshot shows the window as it starts the first time, unless --remember
     if (!request.theme.isEmpty())
         Theme::apply(request.theme);
     if (!request.demo && !applyRequest(window, request))
