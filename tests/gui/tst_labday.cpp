@@ -18,6 +18,7 @@
 #include "viewaudit.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/discover/discoverpage.h"
+#include "watch/linkmodel.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 
@@ -89,6 +90,20 @@ QString pageProblems(MainWindow& w)
         }
     }
     return problems.join(u'\n');
+}
+
+/// The (topic, node) subscriptions the ROS master at `uri` lists, as `rosnode info` reads them.
+int masterSubscriptions(const QString& uri)
+{
+    QProcess p;
+    p.start(u"/usr/bin/python3"_s,
+            {u"-c"_s, u"import sys, xmlrpc.client as x\n"
+                      u"s = x.ServerProxy(sys.argv[1]).getSystemState('/tst_labday')[2]\n"
+                      u"print(sum(len(nodes) for topic, nodes in s[1]))"_s,
+             uri});
+    if (!p.waitForFinished(10000) || p.exitCode() != 0)
+        return -1;
+    return p.readAllStandardOutput().trimmed().toInt();
 }
 
 /// The suite's CSV of the paper's pipeline with the cloud's clock `offsetMs` ahead: crossings of
@@ -179,6 +194,32 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(w->measure()->engine().samples() >= 20, 30000);
         const QString problems = pageProblems(*w);
         QVERIFY2(problems.isEmpty(), qPrintable(problems));
+        QVERIFY(w->close());
+    }
+
+    // Session 4: the lab's own broker and master. A config opened to edit it subscribes to
+    // nothing on the master and raises no event: looking never changes the lab.
+    void openingAConfigToEditChangesNothingInTheLab()
+    {
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto(), qPrintable(servers.errorString()));
+        QVERIFY2(servers.startRosMaster(), qPrintable(servers.errorString()));
+        auto w = openWindow();
+        QVERIFY(w);
+        w->discoverPage()->setRosMasterUri(servers.rosMasterUri());
+        w->discoverPage()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
+        const int before = masterSubscriptions(servers.rosMasterUri());
+        QVERIFY(before >= 0);
+        const QString config = QStringLiteral(BRIDGESCOPE_FIXTURES_DIR)
+            + u"/benchmarking_suite/mqtt_client_vehicle_pointcloud.yaml"_s;
+        const QStringList errors = w->openPaths({config});
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(u'\n')));
+        QCOMPARE(w->files()->openCount(), 1);
+        // What f316abf did within a second: subscribe to every mapped ROS topic, raise alerts.
+        const bool subscribed
+            = QTest::qWaitFor([&] { return masterSubscriptions(servers.rosMasterUri()) > before; }, 6000);
+        QVERIFY2(!subscribed, "opening a config subscribed to its ROS topics");
+        QCOMPARE(w->linksPage()->eventModel()->rowCount(), 0);
         QVERIFY(w->close());
     }
 };
