@@ -10,10 +10,10 @@
 #include "app/cli/reportcommand.h"
 #include "app/cli/watchcommand.h"
 #include "app/gui/guimain.h"
-#include "base/editdistance.h"
 #include "base/logging.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <ctime>
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -44,6 +44,22 @@ class Main
 {
     Q_DECLARE_TR_FUNCTIONS(Main)
 };
+
+QtMessageHandler g_qtHandler = nullptr;
+
+/// Passes every message on but Qt's "XDG_RUNTIME_DIR not set": a Qt GUI application looks for a
+/// Wayland socket there while it picks its platform (also offscreen, as the PDF report runs), and
+/// without the variable (sudo, cron, containers) it warns on every run and uses /tmp/runtime-USER,
+/// which is all it needs.
+void withoutRuntimeDirWarning(QtMsgType type, const QMessageLogContext& context, const QString& message)
+{
+    if (type == QtWarningMsg && message.startsWith(QLatin1String("QStandardPaths: XDG_RUNTIME_DIR not set")))
+        return;
+    if (g_qtHandler)
+        g_qtHandler(type, context, message);
+    else
+        std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, message)));
+}
 
 /// Whether Qt is told which platform to use on the command line (-platform X, --platform=X).
 bool platformGiven(int argc, char** argv)
@@ -91,14 +107,7 @@ QString unknownArgument(const QString& first, const QStringList& commands)
         return Main::tr("bridgescope: %1 does not exist").arg(first);
     QString message = Main::tr("bridgescope: '%1' is not a command. The commands: %2.")
                           .arg(first, commands.join(u", "_s));
-    QString closest;
-    int best = 3; // at most two edits away
-    for (const QString& c : commands)
-        if (const int d = editDistance(first.toLower(), c); d < best) {
-            best = d;
-            closest = c;
-        }
-    if (!closest.isEmpty())
+    if (const QString closest = CliOutput::closest(first, commands); !closest.isEmpty())
         message += u'\n' + Main::tr("Did you mean '%1'?").arg(closest);
     return message + u'\n' + Main::tr("Run 'bridgescope --help' for the options and what each command does.");
 }
@@ -109,6 +118,7 @@ int main(int argc, char** argv)
     // Time zone read once, before any thread: log lines from roscpp and Paho threads format local
     // times, and glibc's first tzset() on two threads at once races (seen by TSan).
     ::tzset();
+    g_qtHandler = qInstallMessageHandler(withoutRuntimeDirWarning);
     setIdentity();
     // --verbose anywhere (before a lone --) turns on the debug messages of every layer.
     if (Logging::takeVerboseFlag(&argc, argv))
@@ -163,14 +173,21 @@ int main(int argc, char** argv)
             return CliOutput::finish(runExperimentCommand(args));
         return runConfigCommand(args);
     }
-    // A typo is not a file for the window to open, and a window without a display is not an abort.
+    // A typo is not a file for the window to open, and a window without a display is not an abort;
+    // an option the window does not know is refused before the display is looked for.
     const QString refusal = unknownArgument(first, commands);
     const QString noDisplay = refusal.isEmpty() ? whyNoDisplay(argc, argv) : QString();
     if (!refusal.isEmpty() || !noDisplay.isEmpty()) {
         QCoreApplication app(argc, argv);
         installTranslations(app);
-        CliOutput::err(refusal.isEmpty() ? noDisplay : refusal);
-        return refusal.isEmpty() ? CliOutput::ExitFailed : CliOutput::ExitUsage;
+        if (!refusal.isEmpty()) {
+            CliOutput::err(refusal);
+            return CliOutput::ExitUsage;
+        }
+        if (const int status = checkGuiArguments(app.arguments()); status >= 0)
+            return status;
+        CliOutput::err(noDisplay);
+        return CliOutput::ExitFailed;
     }
     return runGui(argc, argv);
 }

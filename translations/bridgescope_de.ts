@@ -258,6 +258,14 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
         <source>--seconds takes 0 to %1 seconds (a year)</source>
         <translation>--seconds erwartet 0 bis %1 Sekunden (ein Jahr)</translation>
     </message>
+    <message>
+        <source>%1: unknown option %2</source>
+        <translation>%1: unbekannte Option %2</translation>
+    </message>
+    <message>
+        <source>Did you mean %1?</source>
+        <translation>Ist %1 gemeint?</translation>
+    </message>
 </context>
 <context>
     <name>ConfigCommand</name>
@@ -374,6 +382,14 @@ Befehle:
     <message>
         <source>&lt;stdout&gt;</source>
         <translation>&lt;Standardausgabe&gt;</translation>
+    </message>
+    <message>
+        <source>Did you mean &apos;bridgescope config %1&apos;?</source>
+        <translation>Ist &apos;bridgescope config %1&apos; gemeint?</translation>
+    </message>
+    <message>
+        <source>Run &apos;bridgescope config --help&apos; for the commands.</source>
+        <translation>&apos;bridgescope config --help&apos; nennt die Befehle.</translation>
     </message>
 </context>
 <context>
@@ -1483,6 +1499,22 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>at most %1 fields are shown</source>
         <translation>höchstens %1 Felder werden angezeigt</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the last</source>
+        <translation>&amp;Behalten: die letzten</translation>
+    </message>
+    <message>
+        <source>and at &amp;most</source>
+        <translation>und &amp;höchstens</translation>
+    </message>
+    <message>
+        <source>points per field (%L1 at most: %2 MiB for %3 fields)</source>
+        <translation>Punkte je Feld (höchstens %L1: %2 MiB für %3 Felder)</translation>
     </message>
 </context>
 <context>
@@ -2739,6 +2771,14 @@ factors:
     <message>
         <source>seconds</source>
         <translation>Sekunden</translation>
+    </message>
+    <message>
+        <source>Wheel or + and - zoom the time, drag or Left and Right move it; double-click or Home follows the newest values again.</source>
+        <translation>Mausrad oder + und - zoomen die Zeit, Ziehen oder Links und Rechts verschieben sie; Doppelklick oder Pos1 folgt wieder den neuesten Werten.</translation>
+    </message>
+    <message>
+        <source>Zoomed or moved: double-click or press Home to follow the newest values</source>
+        <translation>Gezoomt oder verschoben: Doppelklick oder Pos1 folgt wieder den neuesten Werten</translation>
     </message>
 </context>
 <context>
@@ -6401,6 +6441,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>optional; otherwise each input&apos;s own pipeline</source>
         <translation>optional; sonst die eigene Pipeline jeder Eingabe</translation>
+    </message>
+    <message>
+        <source>a CSV file holds a single run: give one input, or tick “%1”</source>
+        <translation>eine CSV-Datei enthält nur einen Lauf: eine Eingabe angeben oder „%1“ ankreuzen</translation>
     </message>
 </context>
 <context>

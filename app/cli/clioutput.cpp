@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "clioutput.h"
 
+#include "base/editdistance.h"
 #include "base/secrets.h"
 
 #include <cerrno>
@@ -11,6 +12,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QRegularExpression>
 #include <QTimer>
 
 namespace CliOutput {
@@ -159,6 +161,50 @@ void keepFreedMemory()
     mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
 }
 
+QString closest(const QString& word, const QStringList& known)
+{
+    QString nearest;
+    int best = 3; // at most two edits away
+    for (const QString& k : known)
+        if (const int d = editDistance(word.toLower(), k); d < best) {
+            best = d;
+            nearest = k;
+        }
+    return nearest;
+}
+
+QStringList optionNames(const QCommandLineParser& parser)
+{
+    // Qt's help lists each option as "  -o, --output <OUT>  text": the names before the text.
+    static const QRegularExpression entry(QStringLiteral("^  (-[\\w-]+)(?:, (--[\\w-]+))?"),
+                                          QRegularExpression::MultilineOption);
+    QStringList names;
+    for (auto it = entry.globalMatch(parser.helpText()); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        for (int i = 1; i <= 2; ++i)
+            if (m.hasCaptured(i))
+                names << m.captured(i);
+    }
+    return names;
+}
+
+QString parseError(const QCommandLineParser& parser, const QString& command)
+{
+    QStringList lines;
+    const QStringList known = optionNames(parser);
+    for (const QString& name : parser.unknownOptionNames()) {
+        const QString typed = (name.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + name;
+        QString line = QCoreApplication::translate("Cli", "%1: unknown option %2").arg(command, typed);
+        if (const QString nearest = name.size() > 1 ? closest(typed, known) : QString(); !nearest.isEmpty())
+            line += u'\n' + QCoreApplication::translate("Cli", "Did you mean %1?").arg(nearest);
+        lines << line;
+    }
+    if (lines.isEmpty())
+        lines << parser.errorText();
+    lines << QCoreApplication::translate("Cli", "Run '%1 --help' for usage.").arg(command);
+    return lines.join(u'\n');
+}
+
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description)
 {
     parser.setApplicationDescription(description);
@@ -166,8 +212,7 @@ int parseCommand(QCommandLineParser& parser, const QStringList& args, const QStr
                                   QCoreApplication::translate("Cli", "Show this help."));
     parser.addOption(help);
     if (!parser.parse(args)) {
-        err(parser.errorText());
-        err(QCoreApplication::translate("Cli", "Run '%1 --help' for usage.").arg(args.first()));
+        err(parseError(parser, args.first()));
         return ExitUsage;
     }
     if (parser.isSet(help)) {

@@ -31,6 +31,13 @@ int finish(int exitCode);
 /// Adds -h/--help and the description, parses `args` (args[0] names the command). Returns -1 to
 /// go on, ExitOk after printing the help, ExitUsage after printing the error.
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description);
+/// The word of `known` nearest to `word`, at most two edits away, or empty: "did you mean".
+QString closest(const QString& word, const QStringList& known);
+/// The options `parser` knows, as typed ("--output", "-o"), read from its help text.
+QStringList optionNames(const QCommandLineParser& parser);
+/// Why `parser` refused the command line of `command` ("bridgescope config validate"): each unknown
+/// option named with the known one nearest to it, else the parser's own error; then where help is.
+QString parseError(const QCommandLineParser& parser, const QString& command);
 /// From now on SIGINT and SIGTERM only set stopRequested(), so that a long command can finish or
 /// remove its file instead of dying halfway.
 void catchStopSignals();

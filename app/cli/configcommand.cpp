@@ -288,6 +288,12 @@ int runConfigCommand(const QStringList& arguments)
     if (command == u"peer"_s)
         return CliOutput::finish(ConfigCommand::peer(rest));
     err(ConfigCommand::tr("bridgescope config: unknown command '%1'").arg(command));
-    err(ConfigCommand::usage());
+    if (const QString nearest = CliOutput::closest(command, {u"validate"_s, u"convert"_s, u"peer"_s});
+        !nearest.isEmpty()) {
+        err(ConfigCommand::tr("Did you mean 'bridgescope config %1'?").arg(nearest));
+        err(ConfigCommand::tr("Run 'bridgescope config --help' for the commands."));
+    } else {
+        err(ConfigCommand::usage());
+    }
     return ExitUsage;
 }

@@ -117,9 +117,12 @@ struct GuiRequest
 };
 
 /// Parses and checks the command line before anything starts. -1 to go on, otherwise the exit status.
-int parseGui(const QStringList& arguments, GuiRequest* request)
+/// `notices`: also say which ROS graphs were chosen and why (not when only checking).
+int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = true)
 {
     QCommandLineParser parser;
+    // -demo is --demo, as Qt's own -platform
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption screenshot(u"screenshot"_s, Gui::tr("Render the main window to PNG and exit."),
                                         u"PNG"_s);
     const QCommandLineOption after(u"after"_s, Gui::tr("Seconds to wait before the screenshot."),
@@ -147,8 +150,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         Gui::tr("Bridge configs, pipelines, runs, suite CSVs, bags or experiment folders to open."),
         u"[FILE|DIR]..."_s);
     if (!parser.parse(arguments)) {
-        CliOutput::err(parser.errorText());
-        CliOutput::err(bridgescopeUsage());
+        CliOutput::err(CliOutput::parseError(parser, u"bridgescope"_s));
         return ExitUsage;
     }
     request->screenshot = parser.value(screenshot);
@@ -187,7 +189,7 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         CliOutput::err(rosError);
         return ExitUsage;
     }
-    if (!ros.environmentWarning.isEmpty())
+    if (!ros.environmentWarning.isEmpty() && notices)
         CliOutput::err(ros.environmentWarning);
     request->demo = parser.isSet(demo);
     request->demoRos = ros.ros2 && !ros.ros1 ? 2 : 1;
@@ -196,7 +198,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
         request->rosChoice = request->demo && request->demoRos == 2 && !ros.domainSet
             ? Gui::tr("ROS 2 (%1), the demo lab's domain").arg(ros.reason)
             : ros.choice();
-        CliOutput::err(request->rosChoice);
+        if (notices)
+            CliOutput::err(request->rosChoice);
         request->rosGraphs = ros.ros1 && ros.ros2 ? 2 : (ros.ros2 ? 1 : 0);
     }
     if (ros.ros2OptionsSet)
@@ -209,6 +212,15 @@ int parseGui(const QStringList& arguments, GuiRequest* request)
     return -1;
 }
 
+} // namespace
+
+int checkGuiArguments(const QStringList& arguments)
+{
+    GuiRequest request;
+    return parseGui(arguments, &request, false);
+}
+
+namespace {
 /// Applies the servers, file, pipeline and page asked for; false after saying why not.
 bool applyRequest(MainWindow& window, const GuiRequest& request)
 {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <QHash>
 #include <QJsonArray>
@@ -114,8 +115,10 @@ bool FieldPlotter::add(const PlotField& field)
 {
     if (indexOf(field) >= 0 || m_series.size() >= kMaxFields || field.path.isEmpty())
         return false;
-    if (m_series.isEmpty())
+    if (m_series.isEmpty()) {
         d->originNs = 0; // set by the first value
+        m_nowSeconds = m_shownNow = 0;
+    }
     PlotSeries s;
     s.field = field;
     s.label = field.topic + u": "_s + FieldPath::text(field.path);
@@ -292,15 +295,24 @@ bool FieldPlotter::plotTopic(PlotField::Source source, const QString& topic,
     return changed;
 }
 
+void FieldPlotter::setBuffer(int seconds, int pointsPerField)
+{
+    m_seconds = std::clamp(seconds, kMinSeconds, kMaxSeconds);
+    m_points = std::clamp(pointsPerField, kMinPointsPerField, kMaxPointsPerField);
+    if (trimWindow(0))
+        emit updated();
+}
+
 bool FieldPlotter::trimWindow(qint64 nowNs)
 {
     bool changed = false;
-    const double cutoff = double(nowNs - d->originNs) / 1e9 - kWindowSeconds;
+    const double cutoff
+        = nowNs == 0 ? std::numeric_limits<double>::lowest() : double(nowNs - d->originNs) / 1e9 - m_seconds;
     for (PlotSeries& s : m_series) {
-        qsizetype old = 0;
-        while (old < s.points.size() && s.points[old].x() < cutoff)
-            ++old;
-        old = std::max(old, s.points.size() - kMaxPoints);
+        const auto kept = std::lower_bound(s.points.cbegin(), s.points.cend(), cutoff,
+                                           [](const QPointF& p, double x) { return p.x() < x; });
+        qsizetype old = kept - s.points.cbegin();
+        old = std::max(old, s.points.size() - m_points);
         if (old > 0) {
             s.points.remove(0, old);
             changed = true;
@@ -328,6 +340,11 @@ void FieldPlotter::onDrained(qint64 nowNs)
     if (d->originNs == 0)
         return;
     changed = trimWindow(nowNs) || changed;
-    if (changed)
+    // The time goes on while nothing comes: a live plot shows an outage growing, a few times a second.
+    const double now = double(nowNs - d->originNs) / 1e9;
+    if (changed || now - m_shownNow >= 0.25) {
+        m_nowSeconds = now;
+        m_shownNow = now;
         emit updated();
+    }
 }

@@ -47,7 +47,8 @@ struct PlotSeries
 /// (MQTT, ROS 1 or ROS 2 alike), whose queue is taken once per drain. Work per tick is bounded: at
 /// most kMessagesPerTick messages per topic are decoded (evenly spread over what came, the rest
 /// counted as skipped) and at most kBytesPerTick bytes; larger payloads are errors. Points are kept
-/// for kWindowSeconds, at most kMaxPoints per field.
+/// for the buffer's seconds, at most its points per field; the user sets both, and the points are
+/// bounded by kMemoryBudgetBytes for all fields together.
 class FieldPlotter : public QObject
 {
     Q_OBJECT
@@ -55,9 +56,17 @@ public:
     static constexpr int kMessagesPerTick = 50;
     static constexpr qint64 kBytesPerTick = 8 * 1024 * 1024;
     static constexpr qint64 kMaxPayloadBytes = 4 * 1024 * 1024;
-    static constexpr int kMaxPoints = 10000;
-    static constexpr int kWindowSeconds = 60;
     static constexpr int kMaxFields = 8;
+    /// What the points of all fields may take: each point is a QPointF (16 bytes).
+    static constexpr qint64 kMemoryBudgetBytes = 64 * 1024 * 1024;
+    /// The most points a field keeps, so that kMaxFields of them stay within the budget.
+    static constexpr int kMaxPointsPerField
+        = int(kMemoryBudgetBytes / (kMaxFields * qint64(sizeof(QPointF))));
+    static constexpr int kMinPointsPerField = 100;
+    static constexpr int kDefaultPointsPerField = 100'000;
+    static constexpr int kMinSeconds = 5;
+    static constexpr int kMaxSeconds = 3600;
+    static constexpr int kDefaultSeconds = 60;
     /// What a source keeps of a plotted topic between two ticks: enough for a few ticks at any
     /// rate (the tick decodes at most kMessagesPerTick of them); older ones are dropped and skipped.
     static constexpr std::size_t kQueued = 1000;
@@ -85,6 +94,14 @@ public:
     void remove(int index);
     void clear();
     const QList<PlotSeries>& series() const { return m_series; }
+    /// Keeps the last `seconds` (kMinSeconds to kMaxSeconds) and at most `pointsPerField`
+    /// (kMinPointsPerField to kMaxPointsPerField) of each field; values outside are clamped.
+    /// Fewer points are dropped at once, fewer seconds at the next tick.
+    void setBuffer(int seconds, int pointsPerField);
+    int bufferSeconds() const { return m_seconds; }
+    int bufferPoints() const { return m_points; }
+    /// The time of the last update, in the points' seconds: where a live plot's time axis ends.
+    double nowSeconds() const { return m_nowSeconds; }
     int indexOf(const PlotField& field) const;
     /// Messages of plotted topics that were not decoded to keep a tick's work bounded, or that
     /// their source dropped because more came between two ticks than it keeps (kQueued).
@@ -93,7 +110,7 @@ public:
     int mostDecodedInATick() const { return m_mostDecoded; }
 
 signals:
-    /// Once per tick in which points came or went.
+    /// Once per tick in which points came or went, and a few times a second while none come.
     void updated();
     void fieldsChanged();
 
@@ -107,7 +124,7 @@ private:
     Decoding decodingOf(PlotField::Source source, const QString& topic);
     /// Decodes a bounded share of one topic's messages into its fields' points; true when any came.
     bool plotTopic(PlotField::Source source, const QString& topic, const std::vector<SourceArrival>& messages);
-    /// Keeps the last kWindowSeconds, at most kMaxPoints per field; true when points went.
+    /// Keeps the buffer's seconds (up to `nowNs`; 0: all) and points per field; true when points went.
     bool trimWindow(qint64 nowNs);
 
     Parts m_parts; ///< m_parts.sources.alive() is false once the session went first
@@ -115,4 +132,8 @@ private:
     QList<PlotSeries> m_series;
     quint64 m_skipped = 0;
     int m_mostDecoded = 0;
+    int m_seconds = kDefaultSeconds;
+    int m_points = kDefaultPointsPerField;
+    double m_nowSeconds = 0;
+    double m_shownNow = 0;
 };

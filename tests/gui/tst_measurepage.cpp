@@ -14,12 +14,15 @@
 #include "widgets/common/livetext.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/measure/measurepage.h"
+#include "widgets/measure/recorddialog.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
+#include <QApplication>
 #include <QChartView>
 #include <QCheckBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListView>
 #include <QLogValueAxis>
 #include <QProcess>
@@ -266,6 +269,27 @@ private slots:
         // The Automatic button goes back to what the stamps say.
         w.measure()->setAutomatic();
         QCOMPARE(w.measure()->pipeline().crossings(), (QList<int> {0, 1}));
+    }
+
+    // Issue 40, point 10: the run file's label read `Run &file:` (a form row whose field is a
+    // layout gets no buddy, so the & showed); it shows "Run file:" and Alt+F goes to the path.
+    void theRecordDialogsLabelsAreMnemonics()
+    {
+        RecordDialog dialog;
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowActive(&dialog));
+        QLabel* file = nullptr;
+        for (QLabel* l : dialog.findChildren<QLabel*>())
+            if (l->text().remove(u'&') == u"Run file:"_s)
+                file = l;
+        QVERIFY(file);
+        auto* path = qobject_cast<QLineEdit*>(file->buddy());
+        QVERIFY2(path, "the & of `Run &file:` is shown: the label has no buddy");
+        QCOMPARE(path->text(), dialog.path());
+        for (QLabel* l : dialog.findChildren<QLabel*>())
+            QVERIFY2(!l->text().contains(u'&') || l->buddy(), qPrintable(l->text()));
+        QTest::keyClick(&dialog, Qt::Key_F, Qt::AltModifier);
+        QTRY_COMPARE(QApplication::focusWidget(), path);
     }
 };
 

@@ -724,6 +724,69 @@ private slots:
         QCOMPARE(p.exitCode(), 0);
         QVERIFY(QFile::exists(png));
     }
+    // Issue 40, point 10: a mistyped command or option is named with what was meant (exit 2), and
+    // an option the window does not know is refused before a display is looked for.
+    void aTypoIsNamedWithWhatWasMeant()
+    {
+        const QString valid = Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s);
+        Run r = bridgescope({u"config"_s, u"valdate"_s, valid});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"unknown command 'valdate'"_s)
+                     && r.err.contains(u"Did you mean 'bridgescope config validate'?"_s),
+                 qPrintable(r.err));
+        r = bridgescope({u"config"_s, u"validate"_s, u"--quite"_s, valid});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"unknown option --quite"_s) && r.err.contains(u"Did you mean --quiet?"_s),
+                 qPrintable(r.err));
+        r = bridgescope({u"report"_s, u"--fromat"_s, u"csv"_s, valid});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"Did you mean --format?"_s), qPrintable(r.err));
+
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            env.remove(QString::fromLatin1(name));
+        for (const bool display : {false, true}) {
+            if (display)
+                env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+            QProcess p;
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"--demoo"_s});
+            QVERIFY(p.waitForFinished(30000));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+            QCOMPARE(p.exitCode(), 2);
+            QVERIFY2(err.contains(u"unknown option --demoo"_s) && err.contains(u"Did you mean --demo?"_s)
+                         && !err.contains(u"needs a display"_s),
+                     qPrintable(err));
+        }
+    }
+
+    // Issue 40, point 10: a command needs no session of the desktop, and says nothing about one
+    // (Qt's "QStandardPaths: XDG_RUNTIME_DIR not set" on every run, as under sudo or in a container).
+    void commandsSayNothingAboutTheRuntimeDirectory()
+    {
+        QTemporaryDir dir;
+        const QString valid = Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s);
+        const SyntheticRun run = SyntheticRun::paper(50, 0, 5);
+        const QString csv = writeFile(dir, u"run.csv"_s, SuiteCsv::write(run.topics, run.samples));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(u"XDG_RUNTIME_DIR"_s);
+        for (const QStringList& args :
+             {QStringList {u"config"_s, u"validate"_s, valid}, QStringList {u"--help"_s},
+              QStringList {u"config"_s, u"valdate"_s, valid}, QStringList {u"discover"_s, u"--help"_s},
+              QStringList {u"report"_s, csv, u"--format"_s, u"pdf"_s, u"-o"_s, dir.filePath(u"r.pdf"_s)}}) {
+            QProcess p;
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), args);
+            QVERIFY(p.waitForFinished(30000));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            if (args.first() == u"report"_s) // the one that makes a QGuiApplication (offscreen)
+                QVERIFY2(p.exitCode() == 0 && QFile::exists(dir.filePath(u"r.pdf"_s)), qPrintable(err));
+            QVERIFY2(!err.contains(u"XDG_RUNTIME_DIR"_s) && !err.contains(u"QStandardPaths"_s),
+                     qPrintable(args.join(u' ') + u": "_s + err));
+        }
+    }
+
     // Issue 15, item 4: the desktop file opens run files (application/x-bridgescope-run) with the
     // program; a run opens on the Measure page, one it cannot read is an error, not a config.
     void aRunFileOpensInTheWindow()

@@ -13,9 +13,11 @@
 #include "wire/rosmessage.h"
 #include "wire/sourcemessage.h"
 
+#include <cmath>
 #include <QAction>
 #include <QComboBox>
 #include <QDateTime>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QHeaderView>
 #include <QJsonArray>
@@ -24,11 +26,15 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QLocale>
+#include <QPixmap>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
 #include <QStandardItemModel>
 #include <QTableWidget>
 #include <QTabWidget>
+#include <QTextLayout>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -148,6 +154,8 @@ DetailPane::DetailPane(const Parts& parts, QWidget* parent)
     , m_plotter(new FieldPlotter(parts.live, this))
     , m_plotChart(new FieldPlotChart(this))
     , m_plotList(new QListWidget(this))
+    , m_plotSeconds(new QSpinBox(this))
+    , m_plotPoints(new QSpinBox(this))
     , m_plotNote(new QLabel(this))
     , m_plotAction(new QAction(tr("&Plot Field"), this))
 {
@@ -210,7 +218,7 @@ DetailPane::DetailPane(const Parts& parts, QWidget* parent)
         if (m_tabs->currentWidget() == m_broker)
             refreshBroker();
         if (m_tabs->currentWidget() == m_plotChart->parentWidget())
-            m_plotChart->setSeries(m_plotter->series());
+            m_plotChart->setSeries(m_plotter->series(), m_plotter->nowSeconds());
     });
 }
 
@@ -234,9 +242,15 @@ QWidget* DetailPane::createPlotTab()
     v->setContentsMargins(0, 0, 0, 0);
     m_plotChart->setObjectName(u"plotChart"_s);
     v->addWidget(m_plotChart, 1);
+    // The legend: each field's colour and its whole name, wrapped rather than cut.
     m_plotList->setObjectName(u"plotList"_s);
-    m_plotList->setMaximumHeight(90);
+    m_plotList->setMaximumHeight(110);
+    m_plotList->setWordWrap(true);
+    m_plotList->setTextElideMode(Qt::ElideNone);
+    m_plotList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_plotList->viewport()->installEventFilter(this); // a new width wraps the names anew
     v->addWidget(m_plotList);
+    v->addLayout(createBufferRow(page));
     auto* buttons = new QHBoxLayout;
     auto* remove = new QPushButton(tr("Remo&ve"), page);
     remove->setToolTip(tr("Stop plotting the selected field (Del in the list)"));
@@ -258,6 +272,90 @@ QWidget* DetailPane::createPlotTab()
     connect(m_plotter, &FieldPlotter::fieldsChanged, this, &DetailPane::showPlots);
     showPlots();
     return page;
+}
+
+/// How much each field keeps, as the user sets it (remembered), within the memory budget.
+QBoxLayout* DetailPane::createBufferRow(QWidget* page)
+{
+    QSettings settings;
+    m_plotSeconds->setObjectName(u"plotSeconds"_s);
+    m_plotSeconds->setRange(FieldPlotter::kMinSeconds, FieldPlotter::kMaxSeconds);
+    m_plotSeconds->setSuffix(tr(" s"));
+    m_plotSeconds->setValue(settings.value(u"discover/plotSeconds"_s, FieldPlotter::kDefaultSeconds).toInt());
+    m_plotPoints->setObjectName(u"plotPoints"_s);
+    m_plotPoints->setRange(FieldPlotter::kMinPointsPerField, FieldPlotter::kMaxPointsPerField);
+    m_plotPoints->setGroupSeparatorShown(true);
+    m_plotPoints->setSingleStep(10'000);
+    m_plotPoints->setValue(
+        settings.value(u"discover/plotPoints"_s, FieldPlotter::kDefaultPointsPerField).toInt());
+    auto* keep = new QLabel(tr("&Keep the last"), page);
+    keep->setBuddy(m_plotSeconds);
+    auto* points = new QLabel(tr("and at &most"), page);
+    points->setBuddy(m_plotPoints);
+    auto* spins = new QHBoxLayout;
+    spins->addWidget(keep);
+    spins->addWidget(m_plotSeconds);
+    spins->addWidget(points);
+    spins->addWidget(m_plotPoints);
+    spins->addStretch(1);
+    // The sentence goes on below: the row stays narrow enough for the pane's share of 1280 px.
+    auto* bound = new QLabel(tr("points per field (%L1 at most: %2 MiB for %3 fields)")
+                                 .arg(FieldPlotter::kMaxPointsPerField)
+                                 .arg(FieldPlotter::kMemoryBudgetBytes / (1024 * 1024))
+                                 .arg(FieldPlotter::kMaxFields),
+                             page);
+    bound->setWordWrap(true);
+    auto* row = new QVBoxLayout;
+    row->addLayout(spins);
+    row->addWidget(bound);
+    const auto apply = [this] {
+        m_plotter->setBuffer(m_plotSeconds->value(), m_plotPoints->value());
+        m_plotChart->setBufferSeconds(m_plotter->bufferSeconds());
+        QSettings settings;
+        settings.setValue(u"discover/plotSeconds"_s, m_plotter->bufferSeconds());
+        settings.setValue(u"discover/plotPoints"_s, m_plotter->bufferPoints());
+    };
+    m_plotter->setBuffer(m_plotSeconds->value(), m_plotPoints->value());
+    m_plotChart->setBufferSeconds(m_plotter->bufferSeconds());
+    connect(m_plotSeconds, &QSpinBox::valueChanged, this, apply);
+    connect(m_plotPoints, &QSpinBox::valueChanged, this, apply);
+    return row;
+}
+
+int DetailPane::wrappedHeight(const QString& text, const QFont& font, int width)
+{
+    // As the item delegate wraps: at word boundaries, and anywhere in a word wider than the line.
+    QTextLayout layout(text, font);
+    QTextOption option;
+    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    layout.setTextOption(option);
+    layout.beginLayout();
+    qreal height = 0;
+    for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+        line.setLineWidth(width);
+        height += line.height();
+    }
+    layout.endLayout();
+    return int(std::ceil(height));
+}
+
+void DetailPane::fitLegend()
+{
+    const int width = m_plotList->viewport()->width();
+    const int text = std::max(40, width - m_plotList->iconSize().width() - kLegendMargins);
+    for (int i = 0; i < m_plotList->count(); ++i) {
+        QListWidgetItem* item = m_plotList->item(i);
+        const QSize size(width, wrappedHeight(item->text(), m_plotList->font(), text) + 4);
+        if (item->sizeHint() != size)
+            item->setSizeHint(size);
+    }
+}
+
+bool DetailPane::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_plotList->viewport() && event->type() == QEvent::Resize)
+        fitLegend();
+    return QWidget::eventFilter(watched, event);
 }
 
 bool DetailPane::plotField(const QModelIndex& index)
@@ -283,7 +381,7 @@ void DetailPane::showPlots()
 {
     const QList<PlotSeries>& series = m_plotter->series();
     if (m_tabs->currentWidget() == m_plotChart->parentWidget() || series.isEmpty())
-        m_plotChart->setSeries(series);
+        m_plotChart->setSeries(series, m_plotter->nowSeconds());
     if (m_plotList->count() != series.size()) {
         m_plotList->clear();
         for (int i = 0; i < series.size(); ++i)
@@ -292,10 +390,18 @@ void DetailPane::showPlots()
     for (int i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
         QListWidgetItem* item = m_plotList->item(i);
-        item->setText(
-            s.errors ? tr("%1 (%2 messages without a value: %3)").arg(s.label).arg(s.errors).arg(s.lastError)
-                     : s.label);
+        const QString text = s.errors
+            ? tr("%1 (%2 messages without a value: %3)").arg(s.label).arg(s.errors).arg(s.lastError)
+            : s.label;
+        if (item->text() != text)
+            item->setText(text);
+        if (item->icon().isNull()) {
+            QPixmap swatch(16, 16);
+            swatch.fill(FieldPlotChart::colour(i));
+            item->setIcon(QIcon(swatch));
+        }
     }
+    fitLegend();
     if (series.isEmpty())
         m_plotNote->setText(
             tr("Select a number in Fields and press Ctrl+L (or Plot Field in its context menu)."));

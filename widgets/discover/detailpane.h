@@ -11,6 +11,8 @@ class LiveSession;
 class QAction;
 class QListWidget;
 class QComboBox;
+class QBoxLayout;
+class QSpinBox;
 class QLabel;
 class QPlainTextEdit;
 class QStandardItemModel;
@@ -62,12 +64,24 @@ public:
     QListWidget* plotList() const { return m_plotList; }
     QAction* plotAction() const { return m_plotAction; }
     QLabel* plotNote() const { return m_plotNote; }
+    QSpinBox* plotSeconds() const { return m_plotSeconds; }
+    QSpinBox* plotPoints() const { return m_plotPoints; }
     /// Plots the numeric field at `index` of the fields view over time; false if it is none.
     bool plotField(const QModelIndex& index);
+    /// What a legend entry's icon and the margins around its text take of its width.
+    static constexpr int kLegendMargins = 16;
+    /// The height of `text` wrapped to `width` as the legend wraps it (whole, never cut).
+    static int wrappedHeight(const QString& text, const QFont& font, int width);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     QWidget* createPlotTab();
+    QBoxLayout* createBufferRow(QWidget* page);
     void showPlots();
+    /// Each legend entry as tall as its name wrapped to the list's width.
+    void fitLegend();
     void refreshMqtt(bool force);
     void refreshRos(bool force);
     void refreshBroker();
@@ -98,6 +112,8 @@ private:
     FieldPlotter* m_plotter;
     FieldPlotChart* m_plotChart;
     QListWidget* m_plotList;
+    QSpinBox* m_plotSeconds;
+    QSpinBox* m_plotPoints;
     QLabel* m_plotNote;
     QAction* m_plotAction;
 };

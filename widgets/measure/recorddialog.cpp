@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -37,7 +38,9 @@ RecordDialog::RecordDialog(QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(tr("&Name:"), m_name);
     form->addRow(tr("N&otes:"), m_notes);
-    form->addRow(tr("Run &file:"), pathRow);
+    auto* pathLabel = new QLabel(tr("Run &file:"), this); // its buddy is the field, not the row
+    pathLabel->setBuddy(m_path);
+    form->addRow(pathLabel, pathRow);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("&Record"));
     auto* layout = new QVBoxLayout(this);

@@ -251,6 +251,13 @@ std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
 
 QByteArray ReportsPage::render(const Report& report, ReportFormats::Format format, QString* error) const
 {
+    if (format == ReportFormats::Format::Csv && report.isComparison()) {
+        // The page names its own checkbox, not the command line's --join.
+        if (error)
+            *error = tr("a CSV file holds a single run: give one input, or tick “%1”")
+                         .arg(QString(m_join->text()).remove(u'&'));
+        return {};
+    }
     return ReportFormats::render(report, format, m_perSample->isChecked(), error);
 }
 
