@@ -6636,10 +6636,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>endete mit Exit-Code %1</translation>
     </message>
     <message numerus="yes">
-        <source>%n endpoint(s) not listed (over the bounds of a peer, a topic or the graph)</source>
+        <source>%n endpoint(s) not listed (over a bound)</source>
         <translation>
-            <numerusform>%n Endpunkt nicht aufgeführt (über den Grenzen eines Peers, eines Topics oder des Graphen)</numerusform>
-            <numerusform>%n Endpunkte nicht aufgeführt (über den Grenzen eines Peers, eines Topics oder des Graphen)</numerusform>
+            <numerusform>%n Endpunkt nicht aufgeführt (über einer Grenze)</numerusform>
+            <numerusform>%n Endpunkte nicht aufgeführt (über einer Grenze)</numerusform>
         </translation>
     </message>
     <message>

@@ -79,8 +79,7 @@ QString Ros2Participant::omittedText() const
 {
     if (m_graph.omitted == 0)
         return {};
-    return tr("%n endpoint(s) not listed (over the bounds of a peer, a topic or the graph)", nullptr,
-              int(std::min<quint64>(m_graph.omitted, INT_MAX)));
+    return tr("%n endpoint(s) not listed (over a bound)", nullptr, int(std::min<quint64>(m_graph.omitted, INT_MAX)));
 }
 
 QString Ros2Participant::restartText() const

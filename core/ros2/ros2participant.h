@@ -62,8 +62,8 @@ public:
     QString lastError() const { return m_error; }
     /// "restarted 2 times (last: crashed: signal 6)", or empty: for status lines.
     QString restartText() const;
-    /// "12 endpoints not listed (over the bounds of a peer, a topic or the graph)", or empty: what
-    /// the child left out of graph() (Ros2Graph::omitted), for status lines.
+    /// "12 endpoints not listed (over a bound)", or empty: what the child left out of graph()
+    /// (Ros2Graph::omitted: a peer's, a topic's or the graph's bound), for status lines.
     QString omittedText() const;
 
     /// Subscribes to a topic of the graph as raw samples (best effort, volatile: it matches every
