@@ -7,15 +7,15 @@
 #include "base/logging.h"
 #include "base/wallclock.h"
 #include "dds/ros2engine.h"
+#include "ros2/ddschildserver.h"
 #include "ros2/ros2protocol.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <csignal>
-#include <map>
 #include <QCoreApplication>
 #include <QSocketNotifier>
 #include <QTimer>
-#include <set>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/uio.h>
@@ -70,11 +70,38 @@ bool writeFrame(Kind kind, const QByteArray& body)
     return true;
 }
 
+/// The participant, with one hook for the tests of the parent's quarantine (tst_ros2bridge): with
+/// BRIDGESCOPE_DDS_TEST_CRASH_TYPE set, a writer or reader of that type aborts this process, as
+/// Cyclone DDS did on a type it could not take (issue 41).
+class ChildEngine : public Ros2Engine
+{
+public:
+    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) override
+    {
+        crashOn(type);
+        return Ros2Engine::advertise(topic, type, qos, why);
+    }
+    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) override
+    {
+        crashOn(type);
+        return Ros2Engine::subscribeSamples(topic, type, qos, why);
+    }
+
+private:
+    void crashOn(const QString& type) const
+    {
+        if (!m_crashType.isEmpty() && type == m_crashType)
+            std::abort();
+    }
+    const QString m_crashType = qEnvironmentVariable("BRIDGESCOPE_DDS_TEST_CRASH_TYPE");
+};
+
 class Worker : public QObject
 {
 public:
     Worker()
         : m_input(STDIN_FILENO, QSocketNotifier::Read)
+        , m_server(m_engine, [this](Kind kind, const QByteArray& body) { send(kind, body); })
     {
         connect(&m_input, &QSocketNotifier::activated, this, &Worker::readInput);
         connect(&m_engine, &Ros2Engine::graphChanged, this, [this](const Ros2Graph& graph) {
@@ -110,122 +137,26 @@ private:
             QCoreApplication::exit(0);
             return;
         }
-        m_reader.append(QByteArray(buffer, qsizetype(n)));
-        while (auto f = m_reader.next())
-            if (!handle(*f)) {
-                qCCritical(lcRos2) << "bridgescope-dds: a request of kind" << int(f->kind) << "does not read";
-                QCoreApplication::exit(2);
-                return;
-            }
-        if (m_reader.failed()) {
-            qCCritical(lcRos2).noquote() << "bridgescope-dds:" << m_reader.error();
+        m_server.append(QByteArray(buffer, qsizetype(n)));
+        handleTurn();
+    }
+
+    /// A turn of requests; while more wait, stdin is not read and the next turn comes after what
+    /// else waits on the event loop (the heartbeat, the drain).
+    void handleTurn()
+    {
+        switch (m_server.handlePending()) {
+        case DdsChildServer::Turn::Failed:
+            qCCritical(lcRos2).noquote() << "bridgescope-dds:" << m_server.error();
             QCoreApplication::exit(2);
-        }
-    }
-
-    bool handle(const Ros2Protocol::Frame& f)
-    {
-        switch (f.kind) {
-        case Kind::Start: {
-            const auto r = Ros2Protocol::decodeStart(f.body);
-            if (!r)
-                return false;
-            m_engine.setGraphInterval(r->graphIntervalMs);
-            QString error;
-            if (m_engine.start(r->options, &error))
-                send(Kind::Started);
-            else
-                send(Kind::StartFailed, Ros2Protocol::encodeStrings({error}));
-            return true;
-        }
-        case Kind::GraphInterval: {
-            const auto ms = Ros2Protocol::decodeNumber(f.body);
-            if (!ms || *ms < 1 || *ms > 3'600'000)
-                return false;
-            m_engine.setGraphInterval(int(*ms));
-            return true;
-        }
-        case Kind::Monitor:
-        case Kind::Unmonitor:
-        case Kind::Unwatch: {
-            const auto topic = Ros2Protocol::decodeStrings(f.body, 1);
-            if (!topic)
-                return false;
-            const QString& t = topic->first();
-            if (f.kind == Kind::Monitor) {
-                m_engine.monitor(t, true);
-            } else if (f.kind == Kind::Unmonitor) {
-                m_engine.unmonitor(t);
-                m_sentMessages.erase(t);
-            } else {
-                m_engine.unwatchMessages(t);
-                m_watched.erase(t);
-            }
-            return true;
-        }
-        case Kind::Watch: {
-            const auto w = Ros2Protocol::decodeWatch(f.body);
-            if (!w)
-                return false;
-            m_engine.watchMessages(w->topic, std::size_t(w->maxMessages), w->maxBytes);
-            m_watched.insert(w->topic);
-            return true;
-        }
-        case Kind::KeepArrivals: {
-            const auto n = Ros2Protocol::decodeNumber(f.body);
-            if (!n || *n > 100'000'000)
-                return false;
-            m_engine.keepArrivals(std::size_t(*n));
-            return true;
-        }
-        default:
-            return handleEndpoint(f);
-        }
-    }
-
-    /// Requests of our own endpoints (Ros2Participant's advertise(), publish(), subscribe()).
-    bool handleEndpoint(const Ros2Protocol::Frame& f)
-    {
-        switch (f.kind) {
-        case Kind::SetNode: {
-            const auto node = Ros2Protocol::decodeStrings(f.body, 2);
-            if (!node)
-                return false;
-            m_engine.setNode(node->at(0), node->at(1));
-            return true;
-        }
-        case Kind::Advertise:
-        case Kind::Subscribe: {
-            const auto e = Ros2Protocol::decodeEndpoint(f.body);
-            if (!e)
-                return false;
-            QString why;
-            const bool made = f.kind == Kind::Advertise ? m_engine.advertise(e->topic, e->type, e->qos, &why)
-                                                        : m_engine.subscribeSamples(e->topic, e->type, e->qos, &why);
-            if (!made)
-                qCWarning(lcRos2).noquote() << "bridgescope-dds:" << why;
-            return true;
-        }
-        case Kind::Unadvertise:
-        case Kind::Unsubscribe: {
-            const auto topic = Ros2Protocol::decodeStrings(f.body, 1);
-            if (!topic)
-                return false;
-            if (f.kind == Kind::Unadvertise)
-                m_engine.unadvertise(topic->first());
-            else
-                m_engine.unsubscribeSamples(topic->first());
-            return true;
-        }
-        case Kind::Publish: {
-            const auto p = Ros2Protocol::decodePublish(f.body);
-            if (!p)
-                return false;
-            m_engine.publish(p->topic, p->cdr); // one Cyclone refuses is lost, as on a full network
-            return true;
-        }
-        default:
-            return false;
+            return;
+        case DdsChildServer::Turn::More:
+            m_input.setEnabled(false);
+            QMetaObject::invokeMethod(this, &Worker::handleTurn, Qt::QueuedConnection);
+            return;
+        case DdsChildServer::Turn::Idle:
+            m_input.setEnabled(true);
+            return;
         }
     }
 
@@ -252,7 +183,7 @@ private:
 
     void drain()
     {
-        for (const QString& topic : m_watched)
+        for (const QString& topic : m_server.watched())
             sendSamples(Kind::Samples, topic, m_engine.droppedMessages(topic), m_engine.takeMessages(topic));
         std::vector<Ros2Arrival> arrivals = m_engine.takeArrivals();
         if (!arrivals.empty())
@@ -290,7 +221,7 @@ private:
         QList<Ros2Protocol::TopicStats> out;
         qsizetype bytes = 0;
         for (auto it = stats.cbegin(); it != stats.cend(); ++it) {
-            quint64& sent = m_sentMessages[it.key()];
+            quint64& sent = m_server.sentMessages()[it.key()];
             const bool with = sent != it->messages && bytes < Ros2Protocol::kBatchBytes;
             if (with) {
                 sent = it->messages;
@@ -301,13 +232,11 @@ private:
         send(Kind::Stats, Ros2Protocol::encodeStats(out));
     }
 
-    Ros2Engine m_engine;
+    ChildEngine m_engine;
     QSocketNotifier m_input;
-    Ros2Protocol::FrameReader m_reader;
+    DdsChildServer m_server;
     QTimer m_drain;
     QTimer m_heartbeat;
-    std::set<QString> m_watched;
-    std::map<QString, quint64> m_sentMessages;
     int m_ticks = 0;
 };
 

@@ -1061,6 +1061,17 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     </message>
 </context>
 <context>
+    <name>DdsChildServer</name>
+    <message>
+        <source>a request of kind %1 does not read</source>
+        <translation>eine Anfrage der Art %1 ist nicht lesbar</translation>
+    </message>
+    <message>
+        <source>Cyclone DDS refused it</source>
+        <translation>Cyclone DDS hat sie abgelehnt</translation>
+    </message>
+</context>
+<context>
     <name>DemoCommand</name>
     <message>
         <source>Keep the recording as this run file.</source>
@@ -6521,6 +6532,18 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>lost the broker (%1); reconnecting</source>
         <translation>Broker verloren (%1); verbinde erneut</translation>
     </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2: refused: the announced type changed more than %3 times in a minute (kept %4; messages of other types dropped)</source>
+        <translation>MQTT %1 -&gt; ROS %2: abgelehnt: der angekündigte Typ hat sich mehr als %3-mal in einer Minute geändert (%4 behalten; Nachrichten anderer Typen verworfen)</translation>
+    </message>
+    <message>
+        <source>ROS %1 -&gt; MQTT %2: refused: %3</source>
+        <translation>ROS %1 -&gt; MQTT %2: abgelehnt: %3</translation>
+    </message>
+    <message>
+        <source>MQTT %1 -&gt; ROS %2: refused: %3</source>
+        <translation>MQTT %1 -&gt; ROS %2: abgelehnt: %3</translation>
+    </message>
 </context>
 <context>
     <name>Ros2Definitions</name>
@@ -6582,6 +6605,25 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
+    <name>Ros2Names</name>
+    <message>
+        <source>the type name has %1 characters (at most %2)</source>
+        <translation>der Typname hat %1 Zeichen (höchstens %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a ROS 2 message type (pkg/msg/Type)</source>
+        <translation>„%1“ ist kein ROS-2-Nachrichtentyp (pkg/msg/Type)</translation>
+    </message>
+    <message>
+        <source>the topic name has %1 characters (at most %2)</source>
+        <translation>der Topic-Name hat %1 Zeichen (höchstens %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a ROS 2 topic name: %2</source>
+        <translation>„%1“ ist kein ROS-2-Topic-Name: %2</translation>
+    </message>
+</context>
+<context>
     <name>Ros2Options</name>
     <message>
         <source>ROS_DOMAIN_ID is &quot;%1&quot;, not a domain from 0 to %2</source>
@@ -6636,6 +6678,17 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>ended with exit code %1</source>
         <translation>endete mit Exit-Code %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n endpoint(s) not listed (over a bound)</source>
+        <translation>
+            <numerusform>%n Endpunkt nicht aufgeführt (über einer Grenze)</numerusform>
+            <numerusform>%n Endpunkte nicht aufgeführt (über einer Grenze)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the DDS process %1 while making it: quarantined, not asked again</source>
+        <translation>der DDS-Prozess %1, während er es anlegte: unter Quarantäne, wird nicht erneut angefragt</translation>
     </message>
 </context>
 <context>

@@ -97,6 +97,8 @@ public:
         ros2.insert(u"nodes"_s, nodes);
         if (const quint64 bad = participant.badDiscoveryInfo())
             ros2.insert(u"unreadable_discovery_info"_s, qint64(bad));
+        if (g.omitted)
+            ros2.insert(u"omitted_endpoints"_s, qint64(g.omitted));
         if (const quint64 restarts = participant.restarts()) {
             ros2.insert(u"discovery_restarts"_s, qint64(restarts));
             ros2.insert(u"last_restart_reason"_s, participant.lastRestartReason());
@@ -120,6 +122,8 @@ public:
             out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type())
                     .arg(t.publishers.size())
                     .arg(t.subscribers.size()));
+        if (g.omitted)
+            out(u"  "_s + participant.omittedText());
         if (participant.restarts() > 0)
             out(u"  "_s + participant.restartText());
     }

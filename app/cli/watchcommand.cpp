@@ -291,7 +291,7 @@ QStringList mappedMqttTopics(const WatchRequest& request)
 
 /// The line said every 10 s: the links by level, and every budget that cut something.
 QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopicTree* topics,
-                     const WatchMetrics* metrics)
+                     const WatchMetrics* metrics, const Ros2Participant* ros2)
 {
     const LinkMonitor* monitor = watch.monitor();
     int counts[3] = {0, 0, 0};
@@ -317,6 +317,8 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
                     .arg(WatchSession::kMaxDiscoveredLinks);
     if (metrics && metrics->droppedClients())
         line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
+    if (ros2 && ros2->graph().omitted)
+        line += u"; "_s + ros2->omittedText();
     return line;
 }
 
@@ -412,7 +414,7 @@ int runWatch(const WatchRequest& request)
         [&](qint64 elapsedMs) {
             sources.check(elapsedMs);
             if (elapsedMs / 1000 % 10 == 0)
-                err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get()));
+                err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get(), live.ros2()));
         });
     monitor->closeAll(wallClockNs());
     if (recorder->isRecording()) {

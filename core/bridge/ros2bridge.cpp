@@ -31,6 +31,9 @@ struct Route : BridgeRoute
     QString advertisedType; ///< the writer's type, or empty
     QString latencyTopic; ///< advertised once the first stamped message came
     quint64 typeChanges = 0;
+    qint64 changeWindowNs = 0; ///< when the current minute of type changes began
+    int changesInWindow = 0;
+    QString refusedType; ///< a type whose writer or reader was refused: not asked again
     bool dialectSaid = false; ///< a ROS 1 announcement was logged
     // timestamp_topic_prefix
     QString stampIn;
@@ -38,6 +41,11 @@ struct Route : BridgeRoute
 };
 
 constexpr quint64 kLoggedChanges = 5;
+/// A mapping's ROS 2 type may change this often a minute (each change is a new DDS topic and
+/// writer in the DDS process); a change beyond is refused, said once a minute, and the messages
+/// of the new type are dropped and counted (issue 41: a client flipping the announced type with
+/// every message kept the DDS process from its heartbeats until it was killed).
+constexpr int kMaxTypeChangesPerMinute = 10;
 
 /// The config's QoS over `base`: reliable or best effort, volatile or transient local ("auto" or
 /// nothing keeps the base's; "system_default" is Cyclone's: reliable, volatile), keep last
@@ -117,7 +125,8 @@ struct Ros2Bridge::Private
     void fromMqtt(const QString& topic, const QByteArray& payload, qint64 receivedNs);
     void announce(Route& r, const QByteArray& payload);
     void mqttToRos(Route& r, const QByteArray& payload, qint64 receivedNs);
-    void advertiseRoute(Route& r, const QString& type);
+    bool advertiseRoute(Route& r, const QString& type);
+    void refused(const QString& rosTopic, const QString& why);
     void startMqtt();
 };
 
@@ -229,24 +238,71 @@ void Ros2Bridge::Private::announce(Route& r, const QByteArray& payload)
     }
 }
 
-/// (Re)advertises the mapping's ROS topic with `type`.
-void Ros2Bridge::Private::advertiseRoute(Route& r, const QString& type)
+/// (Re)advertises the mapping's ROS topic with `type`; false when that is refused (a type
+/// refused before, a change past kMaxTypeChangesPerMinute, a name DDS may not be given).
+bool Ros2Bridge::Private::advertiseRoute(Route& r, const QString& type)
 {
+    if (type == r.refusedType)
+        return false;
     Ros2Qos qos;
     qos.reliability = r.reliability == u"best_effort"_s ? Ros2Qos::BestEffort : Ros2Qos::Reliable;
     qos.durability = r.durability == u"transient_local"_s ? Ros2Qos::TransientLocal : Ros2Qos::Volatile;
     qos.depth = r.queueSize;
     const bool changed = !r.advertisedType.isEmpty();
-    ros->advertise(r.rosTopic, type, qos);
+    if (changed) {
+        const qint64 nowNs = wallClockNs();
+        if (nowNs - r.changeWindowNs >= 60'000'000'000LL) {
+            r.changeWindowNs = nowNs;
+            r.changesInWindow = 0;
+        }
+        if (++r.changesInWindow > kMaxTypeChangesPerMinute) {
+            if (r.changesInWindow == kMaxTypeChangesPerMinute + 1)
+                log(tr("MQTT %1 -> ROS %2: refused: the announced type changed more than %3 times in a minute "
+                       "(kept %4; messages of other types dropped)")
+                        .arg(r.mqttTopic, r.rosTopic)
+                        .arg(kMaxTypeChangesPerMinute)
+                        .arg(r.advertisedType));
+            return false;
+        }
+    }
+    const QString before = r.advertisedType;
     r.advertisedType = type;
+    if (!ros->advertise(r.rosTopic, type, qos)) {
+        r.advertisedType = before; // said by refused()
+        return false;
+    }
     if (changed && ++r.typeChanges > kLoggedChanges)
-        return; // anyone on the broker can flip the type with every message: counted, not logged
+        return true; // anyone on the broker can flip the type with every message: counted, not logged
     if (!changed)
         log(tr("MQTT %1 -> ROS %2 (%3, %4)").arg(r.mqttTopic, r.rosTopic, type, qos.text()));
     else
         log(tr("MQTT %1 -> ROS %2: the type changed to %3%4")
                 .arg(r.mqttTopic, r.rosTopic, type,
                      r.typeChanges == kLoggedChanges ? tr(" (further changes are not logged)") : QString()));
+    return true;
+}
+
+/// The participant refused a mapping's writer or reader (a name DDS may not be given, Cyclone
+/// refused it, or the DDS process ended while making it): said once per type, not asked again;
+/// the other mappings go on.
+void Ros2Bridge::Private::refused(const QString& rosTopic, const QString& why)
+{
+    for (const auto& route : routes) {
+        Route& r = *route;
+        if (r.rosTopic != rosTopic)
+            continue;
+        QString& type = r.direction == Direction::Ros2Mqtt ? r.subscribedType : r.advertisedType;
+        const QString refusedType = type.isEmpty() ? r.announcedType : type;
+        if (refusedType == r.refusedType)
+            continue;
+        r.refusedType = refusedType;
+        if (r.direction == Direction::Ros2Mqtt) {
+            log(tr("ROS %1 -> MQTT %2: refused: %3").arg(r.rosTopic, r.mqttTopic, why));
+        } else {
+            log(tr("MQTT %1 -> ROS %2: refused: %3").arg(r.mqttTopic, r.rosTopic, why));
+            type.clear(); // the next type announced is asked for anew
+        }
+    }
 }
 
 // The event loop's thread: a message from the broker (handed over from Paho's).
@@ -283,8 +339,10 @@ void Ros2Bridge::Private::mqttToRos(Route& r, const QByteArray& payload, qint64 
         sample = sampleOf(Ros2BridgeWire::startsWithHeader(registry, type), *cdr);
         publishStamp(r.stampIn, sample, receivedNs + options.clockOffsetNs);
     }
-    if (type != r.advertisedType)
-        advertiseRoute(r, type);
+    if (type != r.advertisedType && !advertiseRoute(r, type)) {
+        counters.failed.fetch_add(1, std::memory_order_relaxed);
+        return;
+    }
     const qint64 outNs = now(); // before it leaves, so no receiver stamps earlier
     const bool ok = ros->publish(r.rosTopic, *cdr);
     (ok ? counters.toRos : counters.droppedToRos).fetch_add(1, std::memory_order_relaxed);
@@ -400,6 +458,8 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
         else
             p->log(tr("not on the ROS 2 domain: %1").arg(p->ros->lastError()));
     });
+    QObject::connect(ros, &Ros2Participant::endpointRefused, ros,
+                     [p](const QString& topic, const QString& why) { p->refused(topic, why); });
     QObject::connect(ros, &Ros2Participant::restarted, ros,
                      [p](const QString& why) { p->log(tr("the DDS process %1; starting it again").arg(why)); });
     if (!ros->start(rosOptions, error))

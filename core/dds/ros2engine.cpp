@@ -11,6 +11,9 @@
 #include "dds/ros2rawreader.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <QNetworkInterface>
@@ -22,6 +25,13 @@ using namespace Qt::StringLiterals;
 namespace {
 
 constexpr std::size_t kMaxEndpoints = 200'000;
+/// What one participant may have in the graph: a peer announcing more (a raw RTPS socket can
+/// announce any number) has the rest counted, not listed (issue 41).
+constexpr int kMaxEndpointsPerParticipant = 10'000;
+/// ROS 2 names as rcl limits them: a topic name at most 255 characters after the `rt/` prefix
+/// (RMW_TOPIC_MAX_NAME_LENGTH), a DDS type name as long (longer ones are not made by rosidl).
+constexpr std::size_t kMaxTopicChars = 255;
+constexpr std::size_t kMaxTypeChars = 255;
 /// Discovery samples taken from each built-in topic a poll: the rest wait for the next one.
 constexpr int kMaxDiscoveryPerPoll = 4096;
 
@@ -110,6 +120,29 @@ std::string domainConfig(bool localhostOnly)
     return xml.toStdString();
 }
 
+/// Cyclone's log lines (issue 41): a malformed datagram is an ERROR line of Cyclone's, two for an
+/// empty one, and what the child prints the parent forwards to its stderr; so any host of the
+/// domain could write the lab's logs. Only fatal lines pass (the child is ending); the others are
+/// counted and said at most once a minute, as a count.
+std::atomic<quint64> g_cycloneLines {0};
+std::atomic<qint64> g_cycloneSaidMs {0};
+
+void cycloneLog(void*, const dds_log_data_t* data)
+{
+    if (data->priority & DDS_LC_FATAL) {
+        std::fwrite(data->message, 1, data->size, stderr);
+        std::fputc('\n', stderr);
+        return;
+    }
+    const quint64 lines = ++g_cycloneLines;
+    const qint64 nowMs = wallClockNs() / 1'000'000;
+    qint64 said = g_cycloneSaidMs.load();
+    if (nowMs - said < 60'000 || !g_cycloneSaidMs.compare_exchange_strong(said, nowMs))
+        return;
+    qCInfo(lcRos2).noquote() << u"Cyclone DDS: %1 log line(s) of its own not shown so far (malformed datagrams "
+                                u"from peers, among others)"_s.arg(lines);
+}
+
 } // namespace
 
 struct Ros2Engine::Private
@@ -122,7 +155,11 @@ struct Ros2Engine::Private
     std::map<dds_instance_handle_t, QByteArray> handles; ///< built-in topics' instances: their gid or prefix
     std::set<QByteArray> badInfoFrom;
     quint64 badInfo = 0;
-    quint64 ignoredEndpoints = 0;
+    /// Endpoints refused by a bound (their participant's prefix), until they or it are gone; past
+    /// kMaxEndpoints only counted (refusedBeyond).
+    std::map<dds_instance_handle_t, QByteArray> refused;
+    quint64 refusedBeyond = 0;
+    std::map<QByteArray, int> perParticipant; ///< endpoints kept, by participant prefix
     QByteArray ownPrefix;
     quint64 changes = 1; ///< bumped at every change of the tables
 
@@ -164,6 +201,30 @@ struct Ros2Engine::Private
             it = it->first.startsWith(prefix) ? endpoints.erase(it) : std::next(it);
         for (auto it = services.begin(); it != services.end();)
             it = it->first.startsWith(prefix) ? services.erase(it) : std::next(it);
+        for (auto it = refused.begin(); it != refused.end();)
+            it = it->second == prefix ? refused.erase(it) : std::next(it);
+        perParticipant.erase(prefix);
+    }
+
+    quint64 refusedCount() const { return quint64(refused.size()) + refusedBeyond; }
+
+    void refuse(dds_instance_handle_t handle, const QByteArray& prefix)
+    {
+        if (refused.size() < kMaxEndpoints)
+            refused[handle] = prefix;
+        else
+            ++refusedBeyond;
+        ++changes; // the count is shown with the graph
+    }
+
+    /// An endpoint (or service endpoint) of `gid` gone from the tables.
+    void forget(const QByteArray& gid)
+    {
+        if (endpoints.erase(gid) + services.erase(gid) == 0)
+            return;
+        const auto n = perParticipant.find(gid.left(12));
+        if (n != perParticipant.end() && --n->second <= 0)
+            perParticipant.erase(n);
     }
 
     /// What the built-in topics and ros_discovery_info brought since the last poll.
@@ -224,11 +285,12 @@ struct Ros2Engine::Private
     void onEndpoint(const dds_builtintopic_endpoint_t* e, bool publisher, bool alive, dds_instance_handle_t handle)
     {
         if (!alive) {
+            if (refused.erase(handle) > 0)
+                ++changes;
             const auto h = handles.find(handle);
             if (h == handles.end())
                 return;
-            endpoints.erase(h->second);
-            services.erase(h->second);
+            forget(h->second);
             handles.erase(h);
             ++changes;
             return;
@@ -241,14 +303,32 @@ struct Ros2Engine::Private
     void endpoint(const QByteArray& gid, dds_instance_handle_t handle, const char* ddsTopic, const char* ddsType,
                   const Ros2Qos& qos, bool publisher)
     {
+        // Lengths first, read at most one past the bound: a peer's 60,000-character names never
+        // become strings here.
+        const std::size_t topicChars = ddsTopic ? strnlen(ddsTopic, kMaxTopicChars + 4) : 0;
+        const std::size_t typeChars = ddsType ? strnlen(ddsType, kMaxTypeChars + 1) : 0;
+        const bool tooLong = topicChars > kMaxTopicChars + 3 || typeChars > kMaxTypeChars;
         QString name;
-        const auto kind = Ros2Names::classifyDdsTopic(QString::fromUtf8(ddsTopic ? ddsTopic : ""), &name);
+        const auto kind = Ros2Names::classifyDdsTopic(
+            tooLong ? QString::fromUtf8(ddsTopic, 4) : QString::fromUtf8(ddsTopic ? ddsTopic : ""), &name);
         if (kind == Ros2Names::TopicKind::Other)
-            return;
-        if (endpoints.size() + services.size() >= kMaxEndpoints && !endpoints.count(gid) && !services.count(gid)) {
-            ++ignoredEndpoints;
+            return; // not in the graph anyway
+        const QByteArray prefix = gid.left(12);
+        const bool known = endpoints.count(gid) || services.count(gid);
+        if (tooLong && known) { // it was announced with names within the bounds before
+            forget(gid);
+            handles.erase(handle);
+        }
+        if (tooLong
+            || (!known
+                && (endpoints.size() + services.size() >= kMaxEndpoints
+                    || perParticipant[prefix] >= kMaxEndpointsPerParticipant))) {
+            if (!refused.count(handle))
+                refuse(handle, prefix);
             return;
         }
+        if (!known)
+            ++perParticipant[prefix];
         ++changes;
         handles[handle] = gid;
         if (kind != Ros2Names::TopicKind::Topic) {
@@ -382,9 +462,12 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
                          .arg(Ros2Options::kMaxDomain);
         return false;
     }
-    // Errors only: every malformed datagram would be a warning line on stderr, and the parent
-    // forwards what we print (a flood of hostile datagrams would flood its terminal).
-    dds_set_log_mask(DDS_LC_FATAL | DDS_LC_ERROR);
+    // Fatal lines only, through our sink (cycloneLog): every malformed datagram would be a line on
+    // stderr, and the parent forwards what we print (a flood of hostile datagrams would flood its
+    // terminal). The trace goes nowhere.
+    dds_set_log_mask(DDS_LC_FATAL);
+    dds_set_log_sink(&cycloneLog, nullptr);
+    dds_set_trace_sink([](void*, const dds_log_data_t*) {}, nullptr);
     m_options = options;
     d = std::make_shared<Private>();
     d->domain = dds_create_domain(dds_domainid_t(options.domain), domainConfig(options.localhostOnly).c_str());
@@ -493,6 +576,7 @@ void Ros2Engine::refresh()
         infos += d->own->ownInfo();
     }
     Ros2Graph graph = Ros2Graph::build(endpoints, infos, participants, services);
+    graph.omitted += d->refusedCount();
     if (graph == m_graph && bad == m_shownBadInfo)
         return;
     m_graph = std::move(graph);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "ros2/ddschildserver.h"
 #include "ros2/ros2graph.h"
 #include "ros2/ros2types.h"
 
@@ -26,7 +27,7 @@
 /// (250 ms unless setGraphInterval()) while they go on, and graphChanged() fires only when it
 /// changed. Subscriptions are type-agnostic: any type is taken as its CDR bytes, on Cyclone's
 /// listener thread, into figures under a lock. Nothing here blocks on the network.
-class Ros2Engine : public QObject
+class Ros2Engine : public QObject, public Ros2ChildEngine
 {
     Q_OBJECT
 public:
@@ -35,12 +36,12 @@ public:
 
     /// Joins the domain; false with `error` when the participant cannot be made (a domain out of
     /// range, no usable transport).
-    bool start(const Ros2Options& options, QString* error = nullptr);
+    bool start(const Ros2Options& options, QString* error = nullptr) override;
     void stop();
     bool isRunning() const;
     Ros2Options options() const { return m_options; }
     static constexpr int kPollMs = 25;
-    void setGraphInterval(int ms)
+    void setGraphInterval(int ms) override
     {
         m_graphInterval = ms;
         m_timer.setInterval(std::min(ms, kPollMs));
@@ -55,28 +56,29 @@ public:
 
     /// monitor() as Ros2Participant's; with `waitForType`, a topic the graph does not know yet is
     /// subscribed once it does, instead of failing (as before start()).
-    void monitor(const QString& topic, bool waitForType = false);
-    void unmonitor(const QString& topic);
+    void monitor(const QString& topic, bool waitForType = false) override;
+    void unmonitor(const QString& topic) override;
     bool isMonitored(const QString& topic) const;
     /// Figures of the monitored topics (rates at `nowNs`).
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
-    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);
-    void unwatchMessages(const QString& topic);
+    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
+    void unwatchMessages(const QString& topic) override;
     bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
     std::vector<Ros2Sample> takeMessages(const QString& topic);
     quint64 droppedMessages(const QString& topic) const;
-    void keepArrivals(std::size_t maxArrivals);
+    void keepArrivals(std::size_t maxArrivals) override;
     std::vector<Ros2Arrival> takeArrivals();
     quint64 droppedArrivals() const;
 
     // Endpoints of our own (Ros2Participant's setNode(), advertise(), publish(), subscribe()); each
     // false with `why` when not running or Cyclone refuses.
-    void setNode(const QString& nameSpace, const QString& name);
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr);
-    void unadvertise(const QString& topic);
-    bool publish(const QString& topic, const QByteArray& cdr);
-    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr);
-    void unsubscribeSamples(const QString& topic);
+    void setNode(const QString& nameSpace, const QString& name) override;
+    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr) override;
+    void unadvertise(const QString& topic) override;
+    bool publish(const QString& topic, const QByteArray& cdr) override;
+    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos,
+                          QString* why = nullptr) override;
+    void unsubscribeSamples(const QString& topic) override;
     /// Subscribed topics' samples, oldest first, about `maxBytes` of them (at least one), and the
     /// drops of each queue so far. What is taken leaves the queues' bound: take no more than what
     /// can be passed on now.

@@ -207,13 +207,37 @@ Ros2Graph Ros2Graph::build(const QList<Ros2Endpoint>& endpoints, const QList<Ros
                 nodeOf.insert(g, full);
         }
 
-    std::map<QString, Ros2Topic> topics;
-    std::map<QString, Ros2Node> nodes;
+    // Indexed, never scanned per endpoint: 100,000 endpoints on one topic, each of its own type,
+    // took minutes with a list lookup per endpoint (issue 41).
+    struct TopicBuild
+    {
+        Ros2Topic topic;
+        QSet<QString> types;
+    };
+    struct NodeBuild
+    {
+        Ros2Node node;
+        QSet<QString> publishes;
+        QSet<QString> subscribes;
+    };
+    std::map<QString, TopicBuild> topics;
+    std::map<QString, NodeBuild> nodes;
+    quint64 omitted = 0;
     for (Ros2Endpoint e : endpoints) {
         e.node = nodeOf.value(e.gid, e.node);
-        Ros2Topic& t = topics[e.topic];
+        TopicBuild& b = topics[e.topic];
+        Ros2Topic& t = b.topic;
         t.name = e.topic;
-        if (!t.types.contains(e.type)) {
+        if (t.publishers.size() + t.subscribers.size() >= kMaxEndpointsPerTopic) {
+            ++omitted;
+            continue;
+        }
+        if (!b.types.contains(e.type)) {
+            if (b.types.size() >= kMaxTypesPerTopic) {
+                ++omitted;
+                continue;
+            }
+            b.types.insert(e.type);
             // publishers' types first: they are what a subscriber has to match
             if (e.publisher)
                 t.types.prepend(e.type);
@@ -222,27 +246,34 @@ Ros2Graph Ros2Graph::build(const QList<Ros2Endpoint>& endpoints, const QList<Ros
         }
         (e.publisher ? t.publishers : t.subscribers).append(e);
         if (!e.node.isEmpty()) {
-            Ros2Node& n = nodes[e.node];
-            n.name = e.node;
-            QStringList& list = e.publisher ? n.publishes : n.subscribes;
-            if (!list.contains(e.topic))
-                list.append(e.topic);
+            NodeBuild& n = nodes[e.node];
+            n.node.name = e.node;
+            QSet<QString>& seen = e.publisher ? n.publishes : n.subscribes;
+            if (!seen.contains(e.topic)) {
+                seen.insert(e.topic);
+                (e.publisher ? n.node.publishes : n.node.subscribes).append(e.topic);
+            }
         }
     }
     // nodes without endpoints of ROS topics are still nodes
     for (const Ros2ParticipantInfo& p : infos)
         for (const Ros2NodeInfo& n : p.nodes)
-            nodes[n.fullName()].name = n.fullName();
+            nodes[n.fullName()].node.name = n.fullName();
 
     Ros2Graph g;
     g.participants = participants;
-    for (auto& [name, t] : topics) {
+    g.omitted = omitted;
+    for (auto& [name, b] : topics) {
+        Ros2Topic& t = b.topic;
+        if (t.publishers.isEmpty() && t.subscribers.isEmpty())
+            continue; // every endpoint of it past a bound
         auto byGid = [](const Ros2Endpoint& a, const Ros2Endpoint& b) { return a.gid < b.gid; };
         std::sort(t.publishers.begin(), t.publishers.end(), byGid);
         std::sort(t.subscribers.begin(), t.subscribers.end(), byGid);
         g.topics.append(t);
     }
-    for (auto& [name, n] : nodes) {
+    for (auto& [name, b] : nodes) {
+        Ros2Node& n = b.node;
         n.publishes.sort();
         n.subscribes.sort();
         g.nodes.append(n);
@@ -266,8 +297,8 @@ bool sameEndpoints(const QList<Ros2Endpoint>& a, const QList<Ros2Endpoint>& b)
 
 bool Ros2Graph::operator==(const Ros2Graph& o) const
 {
-    if (participants != o.participants || services != o.services || topics.size() != o.topics.size()
-        || nodes.size() != o.nodes.size())
+    if (participants != o.participants || services != o.services || omitted != o.omitted
+        || topics.size() != o.topics.size() || nodes.size() != o.nodes.size())
         return false;
     for (int i = 0; i < topics.size(); ++i) {
         const Ros2Topic &a = topics[i], &b = o.topics[i];

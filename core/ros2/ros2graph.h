@@ -103,10 +103,21 @@ struct Ros2Graph
     QList<Ros2Node> nodes; ///< sorted by name
     int participants = 0;
     int services = 0; ///< distinct service names seen (not listed)
+    /// Endpoints (and nodes) discovered but not listed because they passed a bound: a name or type
+    /// too long, too many of a participant or a topic, too many types on a topic, or a graph too
+    /// large for one frame (issue 41). Shown wherever the graph is.
+    quint64 omitted = 0;
+
+    /// A topic keeps at most this many endpoints (publishers and subscribers together) and types;
+    /// the rest are counted in `omitted`.
+    static constexpr int kMaxEndpointsPerTopic = 10'000;
+    static constexpr int kMaxTypesPerTopic = 16;
 
     const Ros2Topic* topic(const QString& name) const;
     /// Puts endpoints and node announcements together; endpoints of DDS topics that are not ROS 2
-    /// topics (`ros_discovery_info`, services) are counted, not listed.
+    /// topics (`ros_discovery_info`, services) are counted, not listed. Each endpoint costs a few
+    /// hash lookups (never a scan of what was seen before); an endpoint past a topic's bounds is
+    /// counted in `omitted`.
     static Ros2Graph build(const QList<Ros2Endpoint>& endpoints, const QList<Ros2ParticipantInfo>& infos,
                            int participants, const QStringList& serviceTopics = {});
     bool operator==(const Ros2Graph& o) const;

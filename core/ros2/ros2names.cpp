@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "ros2/ros2names.h"
 
+#include "base/topicnames.h"
+
+#include <algorithm>
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace Ros2Names {
@@ -61,6 +65,62 @@ QString ddsType(const QString& rosType)
         return parts[0] + QStringLiteral("::") + parts[1] + QStringLiteral("::dds_::") + parts[2]
             + QLatin1Char('_');
     return {};
+}
+
+namespace {
+QString quoted(const QString& s)
+{
+    return s.size() > 60 ? s.left(60) + QStringLiteral("…") : s;
+}
+
+bool isIdentifier(const QString& part)
+{
+    if (part.isEmpty() || !((part[0] >= u'a' && part[0] <= u'z') || (part[0] >= u'A' && part[0] <= u'Z')))
+        return false;
+    for (const QChar c : part)
+        if (!((c >= u'a' && c <= u'z') || (c >= u'A' && c <= u'Z') || (c >= u'0' && c <= u'9') || c == u'_'))
+            return false;
+    return true;
+}
+} // namespace
+
+bool isValidType(const QString& type, QString* why)
+{
+    auto fail = [&](const QString& reason) {
+        if (why)
+            *why = reason;
+        return false;
+    };
+    if (type.size() > kMaxNameChars)
+        return fail(QCoreApplication::translate("Ros2Names", "the type name has %1 characters (at most %2)")
+                        .arg(type.size())
+                        .arg(kMaxNameChars));
+    const QStringList parts = type.split(QLatin1Char('/'));
+    if (parts.size() < 2 || parts.size() > 3 || (parts.size() == 3 && parts[1] != QLatin1String("msg"))
+        || !std::all_of(parts.begin(), parts.end(), isIdentifier))
+        return fail(
+            QCoreApplication::translate("Ros2Names", "\"%1\" is not a ROS 2 message type (pkg/msg/Type)")
+                .arg(quoted(type)));
+    return true;
+}
+
+bool isValidTopic(const QString& topic, QString* why)
+{
+    if (ddsTopic(topic).size() - 3 > kMaxNameChars) {
+        if (why)
+            *why = QCoreApplication::translate("Ros2Names", "the topic name has %1 characters (at most %2)")
+                       .arg(topic.size())
+                       .arg(kMaxNameChars);
+        return false;
+    }
+    QString reason;
+    if (!TopicNames::isValidRosName(topic, true, &reason)) {
+        if (why)
+            *why = QCoreApplication::translate("Ros2Names", "\"%1\" is not a ROS 2 topic name: %2")
+                       .arg(quoted(topic), reason);
+        return false;
+    }
+    return true;
 }
 
 } // namespace Ros2Names

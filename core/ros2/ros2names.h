@@ -22,4 +22,16 @@ QString rosType(const QString& ddsType);
 /// not `pkg/[msg/]Type`.
 QString ddsType(const QString& rosType);
 
+/// The longest topic name (after the DDS prefix `rt/`) and type name a ROS 2 endpoint of ours may
+/// have: rcl's RMW_TOPIC_MAX_NAME_LENGTH. A name beyond it never reaches DDS (issue 41: Cyclone
+/// crashed on a 70,000-character type, past RTPS's 16-bit parameter length).
+constexpr int kMaxNameChars = 255;
+/// Whether an endpoint of ours may be made of `type`: `pkg/msg/Type` (or `pkg/Type`), each part
+/// ASCII letters, digits and underscores, starting with a letter, at most kMaxNameChars in all;
+/// `why` says what is wrong, quoting at most 60 characters of it.
+bool isValidType(const QString& type, QString* why = nullptr);
+/// Whether an endpoint of ours may be made on `topic`: a valid ROS 2 name of at most
+/// kMaxNameChars characters as DDS carries it.
+bool isValidTopic(const QString& topic, QString* why = nullptr);
+
 } // namespace Ros2Names

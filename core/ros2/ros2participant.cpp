@@ -4,6 +4,7 @@
 #include "base/eventbuffer.h"
 #include "base/helperprogram.h"
 #include "base/logging.h"
+#include "ros2/ros2names.h"
 
 #include <QCoreApplication>
 #include <QProcess>
@@ -72,6 +73,13 @@ int Ros2Participant::backoffMs(int restartsInARow)
 bool Ros2Participant::isRunning() const
 {
     return m_wanted && m_error.isEmpty(); // also while a restart waits for its backoff
+}
+
+QString Ros2Participant::omittedText() const
+{
+    if (m_graph.omitted == 0)
+        return {};
+    return tr("%n endpoint(s) not listed (over a bound)", nullptr, int(std::min<quint64>(m_graph.omitted, INT_MAX)));
 }
 
 QString Ros2Participant::restartText() const
@@ -168,10 +176,12 @@ void Ros2Participant::launch()
     for (const quint64 n : std::as_const(m_receivedDropped))
         m_receivedDroppedBefore += n; // the new child counts from 0
     m_receivedDropped.clear();
-    for (const Ros2Protocol::EndpointRequest& e : std::as_const(m_advertised))
-        send(Kind::Advertise, Ros2Protocol::encodeEndpoint(e));
-    for (const Ros2Protocol::EndpointRequest& e : std::as_const(m_subscribed))
-        send(Kind::Subscribe, Ros2Protocol::encodeEndpoint(e));
+    m_unanswered.clear();
+    const QHash<QString, Ros2Protocol::EndpointRequest> advertised = m_advertised, subscribed = m_subscribed;
+    for (const Ros2Protocol::EndpointRequest& e : advertised)
+        requestEndpoint(true, e);
+    for (const Ros2Protocol::EndpointRequest& e : subscribed)
+        requestEndpoint(false, e);
     if (!m_node.name.isEmpty())
         send(Kind::SetNode, Ros2Protocol::encodeStrings({m_node.nameSpace, m_node.name}));
 }
@@ -329,6 +339,18 @@ bool Ros2Participant::handle(const Ros2Protocol::Frame& f)
             emit received(batch->topic, s);
         return true;
     }
+    case Kind::EndpointDone: {
+        const auto done = Ros2Protocol::decodeEndpointDone(f.body);
+        if (!done)
+            return false;
+        m_unanswered.remove(endpointKey(done->advertise, {done->topic, done->type, {}}));
+        const QHash<QString, Ros2Protocol::EndpointRequest>& made = done->advertise ? m_advertised : m_subscribed;
+        const auto it = made.constFind(done->topic);
+        // refused by the child (or Cyclone), and still wanted as it was asked
+        if (!done->why.isEmpty() && it != made.cend() && it->type == done->type)
+            refuseEndpoint(done->advertise, done->topic, done->why.left(1000));
+        return true;
+    }
     case Kind::MonitorFailed: {
         const auto said = Ros2Protocol::decodeStrings(f.body, 2);
         if (!said)
@@ -389,6 +411,15 @@ void Ros2Participant::onFinished()
     m_restartReason = why;
     m_graph = Ros2Graph();
     m_stats.clear();
+    // What it was making when it ended is not asked of the next one (else a type that crashes
+    // Cyclone crashes every child after it: a loop of restarts, broken here).
+    const QHash<QString, Ros2Protocol::EndpointRequest> unanswered = std::exchange(m_unanswered, {});
+    for (auto it = unanswered.cbegin(); it != unanswered.cend(); ++it) {
+        const bool advertise = it.key().startsWith(u'A');
+        const QString reason = tr("the DDS process %1 while making it: quarantined, not asked again").arg(why);
+        m_quarantine.insert(it.key(), reason);
+        refuseEndpoint(advertise, it->topic, reason);
+    }
     const int delay = backoffMs(m_restartsInARow);
     qCWarning(lcRos2).noquote() << u"ROS 2 discovery restarted (%1): the DDS process %2; started again in %3 ms"_s
                                        .arg(m_restarts)
@@ -558,15 +589,45 @@ Ros2Protocol::EndpointRequest endpointRequest(const QString& topic, const QStrin
 }
 } // namespace
 
-void Ros2Participant::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
+QString Ros2Participant::endpointKey(bool advertise, const Ros2Protocol::EndpointRequest& e)
 {
-    const Ros2Protocol::EndpointRequest e = endpointRequest(topic, type, qos);
-    m_advertised.insert(topic, e);
-    send(Kind::Advertise, Ros2Protocol::encodeEndpoint(e));
+    return (advertise ? u"A "_s : u"S "_s) + e.topic + u' ' + e.type;
+}
+
+bool Ros2Participant::requestEndpoint(bool advertise, const Ros2Protocol::EndpointRequest& e)
+{
+    QString why;
+    const QString key = endpointKey(advertise, e);
+    const bool valid = Ros2Names::isValidTopic(e.topic, &why) && Ros2Names::isValidType(e.type, &why);
+    if (const auto q = m_quarantine.constFind(key); valid && q != m_quarantine.cend())
+        why = *q;
+    if (!why.isEmpty()) {
+        // what was made of the topic before stays made
+        emit endpointRefused(e.topic, why);
+        return false;
+    }
+    (advertise ? m_advertised : m_subscribed).insert(e.topic, e);
+    if (m_child && m_child->state() == QProcess::Running)
+        m_unanswered.insert(key, e);
+    send(advertise ? Kind::Advertise : Kind::Subscribe, Ros2Protocol::encodeEndpoint(e));
+    return true;
+}
+
+void Ros2Participant::refuseEndpoint(bool advertise, const QString& topic, const QString& why)
+{
+    (advertise ? m_advertised : m_subscribed).remove(topic);
+    emit endpointRefused(topic, why); // said by the user (the bridge: its mapping), as often as it sees fit
+}
+
+bool Ros2Participant::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
+{
+    return requestEndpoint(true, endpointRequest(topic, type, qos));
 }
 
 void Ros2Participant::unadvertise(const QString& topic)
 {
+    if (const auto it = m_advertised.constFind(topic); it != m_advertised.cend())
+        m_unanswered.remove(endpointKey(true, *it));
     if (m_advertised.remove(topic) > 0)
         send(Kind::Unadvertise, Ros2Protocol::encodeStrings({topic}));
 }
@@ -584,15 +645,15 @@ bool Ros2Participant::publish(const QString& topic, const QByteArray& cdr)
     return true;
 }
 
-void Ros2Participant::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
+bool Ros2Participant::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
-    const Ros2Protocol::EndpointRequest e = endpointRequest(topic, type, qos);
-    m_subscribed.insert(topic, e);
-    send(Kind::Subscribe, Ros2Protocol::encodeEndpoint(e));
+    return requestEndpoint(false, endpointRequest(topic, type, qos));
 }
 
 void Ros2Participant::unsubscribe(const QString& topic)
 {
+    if (const auto it = m_subscribed.constFind(topic); it != m_subscribed.cend())
+        m_unanswered.remove(endpointKey(false, *it));
     if (m_subscribed.remove(topic) > 0)
         send(Kind::Unsubscribe, Ros2Protocol::encodeStrings({topic}));
     m_receivedDropped.remove(topic);

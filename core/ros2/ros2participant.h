@@ -62,6 +62,9 @@ public:
     QString lastError() const { return m_error; }
     /// "restarted 2 times (last: crashed: signal 6)", or empty: for status lines.
     QString restartText() const;
+    /// "12 endpoints not listed (over a bound)", or empty: what the child left out of graph()
+    /// (Ros2Graph::omitted: a peer's, a topic's or the graph's bound), for status lines.
+    QString omittedText() const;
 
     /// Subscribes to a topic of the graph as raw samples (best effort, volatile: it matches every
     /// publisher). Fails with monitorFailed() when the topic has no type yet. Calls are counted:
@@ -113,7 +116,11 @@ public:
     /// ("std_msgs/msg/String": "std_msgs::msg::dds_::String_"), with QoS as rmw_cyclonedds_cpp's
     /// create_readwrite_qos (volatile or transient local, keep last `depth`; a depth below 1 is 10,
     /// rclcpp's default).
-    void advertise(const QString& topic, const QString& type, const Ros2Qos& qos = {});
+    ///
+    /// False, with endpointRefused(), when the topic or type is not one DDS may be given
+    /// (Ros2Names::isValidTopic, isValidType), or when this writer is quarantined: the child
+    /// ended while it made it before (see endpointRefused()).
+    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos = {});
     void unadvertise(const QString& topic);
     bool isAdvertised(const QString& topic) const { return m_advertised.contains(topic); }
     /// One sample: CDR bytes with their 4-byte encapsulation header (00 01 00 00). False, and
@@ -130,12 +137,15 @@ public:
     /// the graph knows the topic. Every sample comes by received() as soon as the child passes it
     /// on. Samples are at most Ros2RawType's 64 MiB, queued in the child within a byte bound (the
     /// drops counted by droppedReceived()).
-    void subscribe(const QString& topic, const QString& type, const Ros2Qos& qos = {});
+    /// False, with endpointRefused(), as advertise().
+    bool subscribe(const QString& topic, const QString& type, const Ros2Qos& qos = {});
     void unsubscribe(const QString& topic);
     bool isSubscribed(const QString& topic) const { return m_subscribed.contains(topic); }
     /// Samples of subscribed topics the child dropped because too many waited for the pipe (since
     /// this object was made).
     quint64 droppedReceived() const;
+    /// Requests quarantined since this object was made (see endpointRefused()).
+    int quarantined() const { return int(m_quarantine.size()); }
 
     /// The child program: $BRIDGESCOPE_DDS, beside this program, in ../libexec/bridgescope, or in
     /// the build tree.
@@ -155,6 +165,12 @@ signals:
     /// The participant is on the domain (after start() and after each restart), or could not be
     /// made there (`ok` false, lastError() says why).
     void joined(bool ok);
+    /// An advertise() or subscribe() that is not (or no longer) made, and why: a name DDS may not
+    /// be given, Cyclone refused it, or the child ended (crashed, stalled) before it answered the
+    /// request, which is then quarantined: not asked again after the restart, nor when asked
+    /// again with the same topic and type (issue 41: a type that crashes Cyclone would crash
+    /// every child after it). The rest goes on.
+    void endpointRefused(const QString& topic, const QString& why);
     /// One sample of a subscribed topic (receivedNs: the wall clock in the child when it came).
     void received(const QString& topic, const Ros2Sample& sample);
 
@@ -217,6 +233,14 @@ private:
     Node m_node;
     QHash<QString, Ros2Protocol::EndpointRequest> m_advertised; ///< across stop() and start()
     QHash<QString, Ros2Protocol::EndpointRequest> m_subscribed; ///< across stop() and start()
+    /// Advertise and Subscribe requests the child has not answered (EndpointDone) yet, by key.
+    QHash<QString, Ros2Protocol::EndpointRequest> m_unanswered;
+    /// Requests during which a child ended, by key, with why: never sent again.
+    QHash<QString, QString> m_quarantine;
+    static QString endpointKey(bool advertise, const Ros2Protocol::EndpointRequest& e);
+    /// Sends an Advertise or Subscribe, waiting for its answer; false when it is refused at once.
+    bool requestEndpoint(bool advertise, const Ros2Protocol::EndpointRequest& e);
+    void refuseEndpoint(bool advertise, const QString& topic, const QString& why);
     QHash<QString, quint64> m_receivedDropped; ///< the child's count, by topic, since its start
     quint64 m_receivedDroppedBefore = 0; ///< counted by children before this one
     quint64 m_publishDropped = 0;

@@ -11,7 +11,7 @@ namespace Ros2Protocol {
 bool isKnown(quint8 kind)
 {
     return (kind >= quint8(Kind::Start) && kind <= quint8(Kind::Unsubscribe))
-        || (kind >= quint8(Kind::Started) && kind <= quint8(Kind::Received));
+        || (kind >= quint8(Kind::Started) && kind <= quint8(Kind::EndpointDone));
 }
 
 QByteArray frameHeader(Kind kind, qsizetype bodySize)
@@ -93,6 +93,18 @@ void Writer::bytes(const QByteArray& b)
 {
     u32(quint32(b.size()));
     m_bytes += b;
+}
+
+void Writer::patchU32(qsizetype at, quint32 v)
+{
+    Q_ASSERT(at >= 0 && at + 4 <= m_bytes.size());
+    qToLittleEndian(v, m_bytes.data() + at);
+}
+
+void Writer::patchU64(qsizetype at, quint64 v)
+{
+    Q_ASSERT(at >= 0 && at + 8 <= m_bytes.size());
+    qToLittleEndian(v, m_bytes.data() + at);
 }
 
 void Writer::strings(const QStringList& list)
@@ -261,7 +273,7 @@ namespace {
 
 // The smallest an encoded element can be: what a count is checked against.
 constexpr int kMinEndpointBytes = 4 + 4 + 4 + 1 + 1 + 1 + 4 + 4; // gid, topic, type, flags, depth, node
-constexpr int kMinTopicBytes = 4 * 4;
+constexpr int kMinTopicBytes = 4 * 4; // name, types, publishers, subscribers
 constexpr int kMinNodeBytes = 4 * 3;
 
 void writeEndpoint(Writer& w, const Ros2Endpoint& e)
@@ -308,29 +320,62 @@ QList<Ros2Endpoint> readEndpoints(Reader& r)
 
 } // namespace
 
-QByteArray encodeGraph(const GraphUpdate& g)
+QByteArray encodeGraph(const GraphUpdate& g, qsizetype maxBytes)
 {
     Writer w;
+    quint64 omitted = g.graph.omitted;
+    // Written, then taken back when it passed the budget: counted in `omitted` instead.
+    auto fits = [&](qsizetype before, quint64 count) {
+        if (w.size() <= maxBytes)
+            return true;
+        w.truncate(before);
+        omitted += count;
+        return false;
+    };
+    auto writeEndpoints = [&](const QList<Ros2Endpoint>& list) {
+        const qsizetype countAt = w.size();
+        w.u32(0);
+        quint32 written = 0;
+        for (const Ros2Endpoint& e : list) {
+            const qsizetype before = w.size();
+            writeEndpoint(w, e);
+            if (fits(before, 1))
+                ++written;
+        }
+        w.patchU32(countAt, written);
+    };
     w.u64(g.badDiscoveryInfo);
     w.u32(quint32(g.graph.participants));
     w.u32(quint32(g.graph.services));
-    w.u32(quint32(g.graph.topics.size()));
+    const qsizetype omittedAt = w.size();
+    w.u64(0);
+    qsizetype countAt = w.size();
+    w.u32(0);
+    quint32 written = 0;
     for (const Ros2Topic& t : g.graph.topics) {
+        const qsizetype before = w.size();
         w.string(t.name);
         w.strings(t.types);
-        w.u32(quint32(t.publishers.size()));
-        for (const Ros2Endpoint& e : t.publishers)
-            writeEndpoint(w, e);
-        w.u32(quint32(t.subscribers.size()));
-        for (const Ros2Endpoint& e : t.subscribers)
-            writeEndpoint(w, e);
+        if (!fits(before, quint64(t.publishers.size() + t.subscribers.size())))
+            continue;
+        writeEndpoints(t.publishers);
+        writeEndpoints(t.subscribers);
+        ++written;
     }
-    w.u32(quint32(g.graph.nodes.size()));
+    w.patchU32(countAt, written);
+    countAt = w.size();
+    w.u32(0);
+    written = 0;
     for (const Ros2Node& n : g.graph.nodes) {
+        const qsizetype before = w.size();
         w.string(n.name);
         w.strings(n.publishes);
         w.strings(n.subscribes);
+        if (fits(before, 1))
+            ++written;
     }
+    w.patchU32(countAt, written);
+    w.patchU64(omittedAt, omitted);
     return w.data();
 }
 
@@ -341,6 +386,7 @@ std::optional<GraphUpdate> decodeGraph(const QByteArray& body)
     g.badDiscoveryInfo = r.u64();
     g.graph.participants = int(r.u32());
     g.graph.services = int(r.u32());
+    g.graph.omitted = r.u64();
     if (g.graph.participants < 0 || g.graph.services < 0)
         r.fail();
     const quint32 topics = r.count(kMinTopicBytes);
@@ -529,6 +575,30 @@ std::optional<EndpointRequest> decodeEndpoint(const QByteArray& body)
     e.qos.durability = Ros2Qos::Durability(durability);
     e.qos.depth = int(depth);
     return e;
+}
+
+QByteArray encodeEndpointDone(const EndpointDone& d)
+{
+    Writer w;
+    w.u8(d.advertise ? 1 : 0);
+    w.string(d.topic);
+    w.string(d.type);
+    w.string(d.why);
+    return w.data();
+}
+
+std::optional<EndpointDone> decodeEndpointDone(const QByteArray& body)
+{
+    Reader r(body);
+    EndpointDone d;
+    const quint8 advertise = r.u8();
+    d.advertise = advertise == 1;
+    d.topic = r.string();
+    d.type = r.string();
+    d.why = r.string();
+    if (advertise > 1 || !r.done())
+        return std::nullopt;
+    return d;
 }
 
 QByteArray encodePublish(const PublishRequest& r)

@@ -51,6 +51,7 @@ enum class Kind : quint8 {
     MonitorFailed, ///< a topic and why
     Heartbeat, ///< nothing: the child's event loop runs
     Received, ///< a SampleBatch of a subscribed topic (its drops: those of the child's queue)
+    EndpointDone, ///< an EndpointDone: the answer to an Advertise or Subscribe
 };
 bool isKnown(quint8 kind);
 
@@ -98,6 +99,12 @@ public:
     void strings(const QStringList& list);
     /// Room for `bytes` in all, so that a body of megabytes is not copied as it grows.
     void reserve(qsizetype bytes) { m_bytes.reserve(bytes); }
+    qsizetype size() const { return m_bytes.size(); }
+    /// Takes back what was written after the first `size` bytes.
+    void truncate(qsizetype size) { m_bytes.truncate(size); }
+    /// Writes over what u32() or u64() wrote at `at` (a count known only afterwards).
+    void patchU32(qsizetype at, quint32 v);
+    void patchU64(qsizetype at, quint64 v);
     const QByteArray& data() const { return m_bytes; }
 
 private:
@@ -167,7 +174,13 @@ struct GraphUpdate
     Ros2Graph graph;
     quint64 badDiscoveryInfo = 0;
 };
-QByteArray encodeGraph(const GraphUpdate& g);
+/// The most a graph frame takes: a graph larger than this is sent in part, what is left out
+/// counted in Ros2Graph::omitted (the parent refuses a frame over kMaxFrameBytes and restarts the
+/// child, which would find the same graph again: issue 41).
+constexpr qsizetype kMaxGraphBytes = 32 * 1024 * 1024;
+/// The graph, its topics in order until `maxBytes`: a topic, endpoint or node that would pass it
+/// is left out and counted in the encoded Ros2Graph::omitted.
+QByteArray encodeGraph(const GraphUpdate& g, qsizetype maxBytes = kMaxGraphBytes);
 std::optional<GraphUpdate> decodeGraph(const QByteArray& body);
 
 struct TopicStats
@@ -206,6 +219,17 @@ struct EndpointRequest
 constexpr int kMaxDepth = 10000;
 QByteArray encodeEndpoint(const EndpointRequest& r);
 std::optional<EndpointRequest> decodeEndpoint(const QByteArray& body);
+
+/// The child's answer to an Advertise or a Subscribe: made (why empty) or refused, and why.
+struct EndpointDone
+{
+    bool advertise = true; ///< else a Subscribe
+    QString topic;
+    QString type;
+    QString why;
+};
+QByteArray encodeEndpointDone(const EndpointDone& d);
+std::optional<EndpointDone> decodeEndpointDone(const QByteArray& body);
 
 struct PublishRequest
 {

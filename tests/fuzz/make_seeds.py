@@ -159,7 +159,7 @@ def endpoint(gid, topic, typ, publisher, node):
             + struct.pack("<i", -1) + pstr(node))
 
 STARTED, GRAPH, STATS, SAMPLES, ARRIVALS, MONITOR_FAILED, HEARTBEAT = 64, 66, 67, 68, 69, 70, 71
-graph = (struct.pack("<QII", 0, 2, 1) + struct.pack("<I", 1) + pstr("/chatter") + pstrs(["std_msgs/msg/String"])
+graph = (struct.pack("<QIIQ", 0, 2, 1, 0) + struct.pack("<I", 1) + pstr("/chatter") + pstrs(["std_msgs/msg/String"])
          + struct.pack("<I", 1) + endpoint(bytes(range(16)), "/chatter", "std_msgs/msg/String", 1, "/lab/talker")
          + struct.pack("<I", 0) + struct.pack("<I", 1) + pstr("/lab/talker") + pstrs(["/chatter"]) + pstrs([]))
 string_cdr = b"\x00\x01\x00\x00" + struct.pack("<I", 6) + b"hello\x00"
@@ -173,3 +173,37 @@ put("ros2frames", "session", b"\x07" + frame(STARTED) + frame(GRAPH, graph) + fr
     + frame(SAMPLES, samples) + frame(ARRIVALS, arrivals) + frame(HEARTBEAT))
 put("ros2frames", "monitor-failed", b"\x01" + frame(MONITOR_FAILED, pstr("/nobody") + pstr("no type yet")))
 put("ros2frames", "graph-only", b"\x40" + frame(GRAPH, graph))
+
+# fuzz_ddschild: what the parent writes to bridgescope-dds (core/ros2/ros2protocol.h): a slice-size
+# byte, a frames-per-turn byte, then the frames
+START, MONITOR, UNMONITOR, WATCH, UNWATCH, KEEP_ARRIVALS, GRAPH_INTERVAL, SET_NODE, ADVERTISE, UNADVERTISE, \
+    PUBLISH, SUBSCRIBE, UNSUBSCRIBE = range(1, 14)
+
+def endpoint_request(topic, typ, depth=10):
+    return pstr(topic) + pstr(typ) + bytes([1, 0]) + struct.pack("<I", depth)
+
+put("ddschild", "bridge", b"\x10\x03" + frame(START, struct.pack("<IBI", 42, 1, 250))
+    + frame(KEEP_ARRIVALS, struct.pack("<Q", 1000)) + frame(WATCH, pstr("/chatter") + struct.pack("<Qq", 100, 1 << 20))
+    + frame(MONITOR, pstr("/chatter")) + frame(SET_NODE, pstr("/") + pstr("mqtt_client"))
+    + frame(ADVERTISE, endpoint_request("/from_mqtt", "std_msgs/msg/String"))
+    + frame(SUBSCRIBE, endpoint_request("/to_mqtt", "geometry_msgs/msg/PoseStamped"))
+    + frame(PUBLISH, pstr("/from_mqtt") + struct.pack("<I", len(string_cdr)) + string_cdr)
+    + frame(GRAPH_INTERVAL, struct.pack("<Q", 100)) + frame(UNMONITOR, pstr("/chatter"))
+    + frame(UNWATCH, pstr("/chatter")) + frame(UNADVERTISE, pstr("/from_mqtt")) + frame(UNSUBSCRIBE, pstr("/to_mqtt")))
+# issue 41: a 70,000-character type name, a type flipped with every message, a name past 255
+put("ddschild", "hostile-types", b"\xff\x07" + frame(ADVERTISE, endpoint_request("/t", "a" * 70000 + "/msg/T"))
+    + b"".join(frame(ADVERTISE, endpoint_request("/flip", f"flip_msgs/msg/T{i}")) for i in range(40))
+    + frame(SUBSCRIBE, endpoint_request("/" + "x" * 300, "std_msgs/msg/String"))
+    + frame(ADVERTISE, endpoint_request("/t", "std_msgs::msg::dds_::String_")))
+
+# fuzz_ros2graph: a generated-endpoints byte, a budget byte, then records (participant, flags,
+# topic length, topic, type length, type)
+def graph_record(participant, flags, topic, typ):
+    t, y = topic.encode(), typ.encode()
+    return bytes([participant, flags, len(t)]) + t + bytes([len(y)]) + y
+
+put("ros2graph", "lab", b"\x00\xff" + graph_record(0, 17, "/chatter", "std_msgs/msg/String")
+    + graph_record(1, 16, "/chatter", "std_msgs/msg/String") + graph_record(2, 3, "/pose", "geometry_msgs/msg/PoseStamped"))
+put("ros2graph", "one-topic-many-types", b"\x15\x20" + graph_record(0, 17, "/flood", "std_msgs/msg/String"))
+put("ros2graph", "long-names", b"\x00\x08" + b"".join(
+    graph_record(3, 1, "/" + chr(97 + i) * 250, "t" * 250) for i in range(20)))

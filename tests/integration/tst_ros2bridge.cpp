@@ -417,6 +417,99 @@ private slots:
         QCOMPARE(toRos, qint64(0));
     }
 
+    // Issue 41: what a client of the broker announces must not keep the ROS 2 side down. A retained
+    // announcement of a 70,000-character type crashed Cyclone in dds_create_writer, and the parent
+    // asked every new child for the same writer: every mapping down for good. A client flipping
+    // a mapping's type with every message made the child make a topic and writer each time until
+    // its heartbeats stopped. Now: a type DDS may not be given is refused at once; a writer during
+    // which the child dies (BRIDGESCOPE_DDS_TEST_CRASH_TYPE makes it abort there, as Cyclone did)
+    // is quarantined, not asked again after the one restart; type changes past 10 a minute are
+    // refused. Each is said as "refused: ..." for its mapping, and the good mapping forwards
+    // throughout.
+    void hostileTypesAreRefusedAndTheRestGoesOn()
+    {
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      mqtt2ros:\n"
+                                  "        mqtt_topics: [in/good, in/evil, in/crash, in/flip]\n"
+                                  "        in/good: {ros_topic: /good_back}\n"
+                                  "        in/evil: {ros_topic: /evil_back}\n"
+                                  "        in/crash: {ros_topic: /crash_back}\n"
+                                  "        in/flip: {ros_topic: /flip_back}\n";
+        const std::string evilType = std::string(70'000, 'a') + "/msg/T";
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/good"_s, MqttClientRos2::announcement("std_msgs/msg/String", false),
+                        1, true);
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/evil"_s, MqttClientRos2::announcement(evilType, false), 1, true);
+        qputenv("BRIDGESCOPE_DDS_TEST_CRASH_TYPE", "crash_msgs/msg/Crash");
+        auto b = bridge(config, {u"--name"_s, u"/lab/hostile_types"_s}, true);
+        qunsetenv("BRIDGESCOPE_DDS_TEST_CRASH_TYPE");
+        QString log;
+        auto readLog = [&] { log += QString::fromUtf8(b->readAllStandardError()); };
+        connect(b.get(), &QProcess::readyReadStandardError, this, readLog);
+        Ros2Peer listener(m_domain, {u"--node"_s, u"/good_listener"_s, u"--sub"_s, u"/good_back:std_msgs/msg/String"_s});
+        QVERIFY2(listener.waitFor(u"ready"_s), qPrintable(listener.errors()));
+        QVERIFY2(listener.waitFor(u"matched /good_back 1"_s, 30000), qPrintable(log));
+        // a message of the good mapping reaches the listener (sent again every half second: after
+        // the restart, the new writer has to be matched again before anything reaches it)
+        int good = 0;
+        auto forwards = [&] {
+            QElapsedTimer t;
+            t.start();
+            while (t.elapsed() < 30000) {
+                ++good;
+                m_mqtt->publish(u"in/good"_s, MqttClientRos2::string("good " + std::to_string(good)), 1, false);
+                QElapsedTimer wait;
+                wait.start();
+                while (wait.elapsed() < 500) {
+                    for (const QString& l : listener.lines())
+                        if (l.startsWith(u"recv /good_back "_s) && l.endsWith(u" good %1"_s.arg(good)))
+                            return true;
+                    QTest::qWait(20);
+                }
+            }
+            return false;
+        };
+        QVERIFY2(forwards(), qPrintable(log));
+        QTRY_VERIFY2_WITH_TIMEOUT(log.contains(u"MQTT in/evil -> ROS /evil_back: refused: the type name has 70006 "
+                                               u"characters (at most 255)"_s),
+                                  qPrintable(log.left(3000)), 10000);
+
+        // a writer the child dies making: quarantined, said, not asked again
+        m_mqtt->publish(u"mqtt_client/ros_msg_type/in/crash"_s, MqttClientRos2::announcement("crash_msgs/msg/Crash", false),
+                        1, false);
+        for (int i = 0; i < 3; ++i)
+            m_mqtt->publish(u"in/crash"_s, MqttClientRos2::string("boom"), 1, false);
+        QTRY_VERIFY2_WITH_TIMEOUT(log.contains(u"MQTT in/crash -> ROS /crash_back: refused: the DDS process crashed"_s),
+                                  qPrintable(log.left(3000)), 20000);
+        QVERIFY2(log.contains(u"quarantined"_s), qPrintable(log.left(3000)));
+        QVERIFY2(forwards(), qPrintable(log)); // after the restart, the good mapping again
+        for (int i = 0; i < 3; ++i)
+            m_mqtt->publish(u"in/crash"_s, MqttClientRos2::string("boom"), 1, false);
+
+        // a type flipped with every message: past 10 changes a minute, refused
+        for (int i = 0; i < 60; ++i) {
+            m_mqtt->publish(u"mqtt_client/ros_msg_type/in/flip"_s,
+                            MqttClientRos2::announcement(i % 2 ? "std_msgs/msg/String" : "std_msgs/msg/Header", false), 1,
+                            false);
+            m_mqtt->publish(u"in/flip"_s, MqttClientRos2::string("flip"), 1, false);
+            if (i % 10 == 0)
+                QVERIFY2(forwards(), qPrintable(log));
+        }
+        QTRY_VERIFY2_WITH_TIMEOUT(log.contains(u"MQTT in/flip -> ROS /flip_back: refused: the announced type changed "
+                                               u"more than 10 times in a minute"_s),
+                                  qPrintable(log.left(3000)), 10000);
+        QVERIFY2(forwards(), qPrintable(log));
+        // one restart in all: the crash; none caused by the flips, none by the quarantined writer
+        QCOMPARE(log.count(u"starting it again"_s), 1);
+        QCOMPARE(log.count(u"MQTT in/crash -> ROS /crash_back: refused"_s), 1);
+        stop(b);
+        readLog();
+        for (const char* t : {"good", "evil", "crash", "flip"})
+            m_mqtt->publish(u"mqtt_client/ros_msg_type/in/"_s + QLatin1String(t), {}, 1, true);
+    }
+
     void ros1LayoutRunsOnRos2AndRos1AnnouncementsAreIgnored()
     {
         // mqtt_client's ROS 1 layout, converted as the ROS 1 bridge converts it

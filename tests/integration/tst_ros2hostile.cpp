@@ -25,11 +25,36 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUdpSocket>
 #include <signal.h>
 
 using namespace Qt::StringLiterals;
 
 namespace {
+
+/// The arguments of a well-behaved talker, /steady at 20 Hz, for the peer.
+QStringList steadyTalker()
+{
+    return {u"--node"_s, u"/steady"_s, u"--pub"_s, u"/steady:std_msgs/msg/String:20"_s, u"--duration"_s, u"120"_s};
+}
+
+/// `discover --ros 2 --json` on `domain` for `seconds`, without a broker.
+QStringList discoverArgs(int domain, int seconds)
+{
+    return {u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain), u"--ros-localhost-only"_s,
+            u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()), u"--seconds"_s,
+            QString::number(seconds), u"--json"_s};
+}
+
+/// Whether `discover --json`'s output lists the node /steady.
+bool listsSteady(const QByteArray& json)
+{
+    const QJsonArray nodes
+        = QJsonDocument::fromJson(json).object().value(u"ros2"_s).toObject().value(u"nodes"_s).toArray();
+    return std::any_of(nodes.begin(), nodes.end(), [](const QJsonValue& n) {
+        return n.toObject().value(u"name"_s).toString() == u"/steady"_s;
+    });
+}
 
 bool hasNode(const Ros2Graph& g, const QString& name)
 {
@@ -63,8 +88,7 @@ private slots:
         QSignalSpy restarted(&p, &Ros2Participant::restarted);
         QString error;
         QVERIFY2(p.start({domain, true}, &error), qPrintable(error));
-        Ros2Peer talker(domain, {u"--node"_s, u"/steady"_s, u"--pub"_s, u"/steady:std_msgs/msg/String:20"_s,
-                                 u"--duration"_s, u"120"_s});
+        Ros2Peer talker(domain, steadyTalker());
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 15000);
         p.monitor(u"/steady"_s);
@@ -110,14 +134,10 @@ private slots:
     void discoverSurvivesTheCorpus()
     {
         const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
-        Ros2Peer talker(domain, {u"--node"_s, u"/steady"_s, u"--pub"_s, u"/steady:std_msgs/msg/String:20"_s,
-                                 u"--duration"_s, u"120"_s});
+        Ros2Peer talker(domain, steadyTalker());
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         QProcess discover;
-        discover.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                       {u"discover"_s, u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain),
-                        u"--ros-localhost-only"_s, u"--broker"_s, u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort()),
-                        u"--seconds"_s, u"25"_s, u"--json"_s});
+        discover.start(QStringLiteral(BRIDGESCOPE_BINARY), discoverArgs(domain, 25));
         QVERIFY(discover.waitForStarted());
         // its DDS process runs (a loaded machine, an ASan build: seconds), then it joins
         QTRY_VERIFY_WITH_TIMEOUT(DdsChild::of(discover.processId()) > 0, 20000);
@@ -133,10 +153,7 @@ private slots:
         QVERIFY2(err.contains(u"ROS 2 discovery restarted"_s), qPrintable(err));
         const QJsonObject ros2 = QJsonDocument::fromJson(out).object().value(u"ros2"_s).toObject();
         QCOMPARE(ros2.value(u"discovery_restarts"_s).toInt(), 1);
-        bool listed = false;
-        for (const QJsonValue& n : ros2.value(u"nodes"_s).toArray())
-            listed = listed || n.toObject().value(u"name"_s).toString() == u"/steady"_s;
-        QVERIFY2(listed, out.constData());
+        QVERIFY2(listsSteady(out), out.constData());
     }
 
     // `watch --ros 2` the same: it keeps running for its seconds, says the restart, and ends normally.
@@ -160,6 +177,95 @@ private slots:
         QCOMPARE(watch.exitStatus(), QProcess::NormalExit);
         QVERIFY2(err.contains(u"ROS 2 discovery restarted"_s), qPrintable(err));
         QVERIFY2(watch.exitCode() != -1, qPrintable(err));
+    }
+
+    // Issue 41: one peer announcing 700 writers of 60,000-character topics made the child send a
+    // graph frame of over 65 MiB, which the parent refused and restarted it for, again and again
+    // (ROS 2 discovery down for good); one announcing 12,000 writers on one topic, each of a type
+    // of its own, stalled the child's graph building. Now the child refuses what passes its bounds
+    // (names over 255 characters, 10,000 endpoints a participant, 16 types a topic) and counts it:
+    // no restart, and the well-behaved node stays listed with its samples counted throughout.
+    void aPeerFloodingTheGraphIsBoundedNotRestarted_data()
+    {
+        QTest::addColumn<QString>("flood");
+        QTest::addColumn<quint64>("omitted");
+        QTest::newRow("long names") << u"700:60000"_s << quint64(700);
+        QTest::newRow("a type per writer") << u"12000:0"_s << quint64(12000 - 16);
+    }
+
+    void aPeerFloodingTheGraphIsBoundedNotRestarted()
+    {
+        QFETCH(QString, flood);
+        QFETCH(quint64, omitted);
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        Ros2Participant p;
+        QString error;
+        QVERIFY2(p.start({domain, true}, &error), qPrintable(error));
+        Ros2Peer talker(domain, steadyTalker());
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 15000);
+        p.monitor(u"/steady"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= 3, 10000);
+        // the node stays listed every time the graph changes while the flood comes
+        int graphs = 0;
+        bool alwaysListed = true;
+        connect(&p, &Ros2Participant::graphChanged, this, [&](const Ros2Graph& g) {
+            ++graphs;
+            alwaysListed = alwaysListed && hasNode(g, u"/steady"_s);
+        });
+
+        Ros2Peer flooder(domain,
+                         {u"--node"_s, u"/flooder"_s, u"--flood-graph"_s, flood, u"--duration"_s, u"120"_s});
+        QVERIFY2(flooder.waitFor(u"ready"_s, 60000), qPrintable(flooder.errors()));
+        QTRY_VERIFY2_WITH_TIMEOUT(p.graph().omitted >= omitted, qPrintable(u"omitted %1, restarts %2 (%3)"_s
+                                                                               .arg(p.graph().omitted)
+                                                                               .arg(p.restarts())
+                                                                               .arg(p.lastRestartReason())),
+                                  60000);
+        // the node's samples still counted after the flood came, by the same child
+        const quint64 before = p.snapshot(wallClockNs()).value(u"/steady"_s).messages;
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= before + 40,
+                                 15000);
+        QVERIFY2(p.restarts() == 0, qPrintable(p.lastRestartReason()));
+        QVERIFY(graphs > 0);
+        QVERIFY(alwaysListed);
+        QVERIFY(hasNode(p.graph(), u"/steady"_s));
+        QVERIFY2(p.omittedText().contains(u"not listed"_s), qPrintable(p.omittedText()));
+        for (const Ros2Topic& t : p.graph().topics) {
+            QVERIFY2(t.name.size() <= 256, qPrintable(t.name.left(80)));
+            QVERIFY(t.types.size() <= Ros2Graph::kMaxTypesPerTopic);
+        }
+    }
+
+    // Issue 41: empty UDP datagrams to a domain's ports made Cyclone log two ERROR lines each, which
+    // the parent forwards to its stderr: a peer wrote the lab's logs. `discover --ros 2` under 3,000
+    // of them says nothing of them, and lists the well-behaved node.
+    void emptyDatagramsWriteNothingToOurStderr()
+    {
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        Ros2Peer talker(domain, steadyTalker());
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        QProcess discover;
+        discover.start(QStringLiteral(BRIDGESCOPE_BINARY), discoverArgs(domain, 12));
+        QVERIFY(discover.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(DdsChild::of(discover.processId()) > 0, 20000);
+        QUdpSocket socket;
+        int sent = 0;
+        for (int round = 0; round < 300; ++round) {
+            for (quint16 port : RtpsCorpus::ports(domain))
+                sent += socket.writeDatagram(QByteArray(), QHostAddress::LocalHost, port) == 0 ? 1 : 0;
+            if (round % 30 == 0)
+                QTest::qWait(100);
+        }
+        QVERIFY(sent >= 3000);
+        QVERIFY(discover.waitForFinished(60000));
+        const QByteArray out = discover.readAllStandardOutput();
+        const QString err = QString::fromUtf8(discover.readAllStandardError());
+        QCOMPARE(discover.exitStatus(), QProcess::NormalExit);
+        const QStringList lines = err.split(u'\n', Qt::SkipEmptyParts);
+        QVERIFY2(lines.filter(u"ERROR"_s, Qt::CaseInsensitive).isEmpty(), qPrintable(err.left(2000)));
+        QVERIFY2(lines.size() < 10, qPrintable(err.left(2000)));
+        QVERIFY2(listsSteady(out), out.left(2000).constData());
     }
 
     // A child that writes garbage (as one taken over by a datagram might), or that says nothing, is

@@ -287,6 +287,38 @@ static bool create_entities(void)
         dds_set_status_mask(p->writer, DDS_PUBLICATION_MATCHED_STATUS);
         dds_waitset_attach(peer.waitset, p->writer, ATTACH(ATTACH_PUB, i));
     }
+    // --flood-graph: writers that never publish, only announced (hostile discovery, issue 41)
+    if (o->flood_count > 0) {
+        size_t cap = (size_t)o->flood_name_len + 64;
+        char *flood_topic = malloc(cap);
+        if (flood_topic == NULL) {
+            fprintf(stderr, "bs_ros2peer: out of memory\n");
+            return false;
+        }
+        qos = make_qos(true, false, false, 1, false);
+        for (unsigned i = 0; i < o->flood_count; i++) {
+            char type_name[96];
+            if (o->flood_name_len == 0) {
+                snprintf(flood_topic, cap, "rt/flood");
+                snprintf(type_name, sizeof type_name, "flood_msgs::msg::dds_::T%u_", i);
+            } else {
+                int n = snprintf(flood_topic, cap, "rt/flood%05u_", i);
+                memset(flood_topic + n, 'x', o->flood_name_len - (size_t)n + 3);
+                flood_topic[o->flood_name_len + 3] = '\0';
+                snprintf(type_name, sizeof type_name, "std_msgs::msg::dds_::String_");
+            }
+            dds_entity_t topic = peer_create_topic_named(peer.participant, peer_type_descriptor(PEER_STRING),
+                                                         flood_topic, type_name);
+            if (!dds_ok(topic, "dds_create_topic (--flood-graph)")
+                || !dds_ok(dds_create_writer(peer.publisher, topic, qos, NULL), "dds_create_writer (--flood-graph)")) {
+                free(flood_topic);
+                dds_delete_qos(qos);
+                return false;
+            }
+        }
+        dds_delete_qos(qos);
+        free(flood_topic);
+    }
     for (unsigned i = 0; i < o->nsubs; i++) {
         struct sub_state *s = &peer.subs[i];
         s->ep = &o->subs[i];

@@ -51,6 +51,9 @@ void peer_print_usage(FILE *out, const char *prog)
         "  --raw TOPIC:HEX            every sample of --pub TOPIC is these bytes (header included,\n"
         "                             1 to %u of them): hostile CDR (repeatable)\n"
         "  --graph-raw HEX            the ros_discovery_info samples are these bytes\n"
+        "  --flood-graph N:NAMELEN    N more writers that never publish (hostile discovery, at most\n"
+        "                             20000): NAMELEN 0: all on /flood, each of a type of its own;\n"
+        "                             else each on a topic of its own of NAMELEN characters (<= 60000)\n"
         "  --help                     this text\n"
         "\n"
         "TYPE: std_msgs/msg/String, geometry_msgs/msg/PoseStamped, sensor_msgs/msg/PointCloud2,\n"
@@ -514,7 +517,7 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
         // Every other option takes a value.
         static const char *const with_value[] = { "--domain", "--node", "--pub", "--sub", "--many", "--count",
                                                   "--duration", "--size", "--lease-ms", "--trace",
-                                                  "--raw", "--graph-raw", "--stamp-delay" };
+                                                  "--raw", "--graph-raw", "--stamp-delay", "--flood-graph" };
         bool known = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
             known = known || strcmp(opt, with_value[k]) == 0;
@@ -548,6 +551,24 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
             if (!parse_endpoint(val, pub, false, pub ? &o->pubs[*n] : &o->subs[*n], err, errlen))
                 return PEER_PARSE_ERROR;
             (*n)++;
+        } else if (strcmp(opt, "--flood-graph") == 0) {
+            const char *colon = strchr(val, ':');
+            char head[16];
+            uint64_t len = 0;
+            if (colon == NULL || (size_t)(colon - val) >= sizeof head) {
+                set_err(err, errlen, "bad --flood-graph '%.40s' (N:NAMELEN)", val);
+                return PEER_PARSE_ERROR;
+            }
+            memcpy(head, val, (size_t)(colon - val));
+            head[colon - val] = '\0';
+            if (!parse_u64(head, 1, PEER_MAX_FLOOD, &u) || !parse_u64(colon + 1, 0, PEER_MAX_FLOOD_NAME, &len)
+                || (len > 0 && len < 16)) {
+                set_err(err, errlen, "bad --flood-graph '%.40s' (N 1..%u, NAMELEN 0 or 16..%u)", val, PEER_MAX_FLOOD,
+                        PEER_MAX_FLOOD_NAME);
+                return PEER_PARSE_ERROR;
+            }
+            o->flood_count = (uint32_t)u;
+            o->flood_name_len = (uint32_t)len;
         } else if (strcmp(opt, "--many") == 0) {
             if (o->many.count > 0) {
                 set_err(err, errlen, "--many given twice");

@@ -19,6 +19,8 @@
 #define PEER_MANY_DIGITS 4u
 #define PEER_MAX_MANY_BYTES (64u * 1024u * 1024u)   // --many: N x --size for PointCloud2, Opaque
 #define PEER_MAX_STAMP_DELAY_MS 60000u      // --stamp-delay
+#define PEER_MAX_FLOOD 20000u                // --flood-graph: writers
+#define PEER_MAX_FLOOD_NAME 60000u           // --flood-graph: topic name length
 #define PEER_MAX_RAW 65536u                   // --raw, --graph-raw: bytes of a hand-made sample
 
 enum peer_type {
@@ -77,6 +79,9 @@ struct peer_options {
     bool start_matched;      // a publisher starts once a reader matched it (and 0.5 s more)
     char trace_file[PEER_MAX_PATH + 1];   // Cyclone DDS trace, "" for none
     struct peer_raw graph_raw;       // --graph-raw HEX: ros_discovery_info sample bytes
+    uint32_t flood_count;            // --flood-graph N:NAMELEN: N writers that never publish
+    uint32_t flood_name_len;         // 0: all on /flood, each of its own type; else each on a
+                                     // topic of its own, NAMELEN characters long
 };
 
 // "std_msgs/msg/String" and so on.

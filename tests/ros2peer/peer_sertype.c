@@ -335,13 +335,13 @@ static const struct ddsi_sertype_ops sertype_ops = {
     // derived data representations, no serialization into loaned (shared memory) buffers.
 };
 
-dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc, const char *name,
-                               const struct peer_raw *raw)
+static dds_entity_t create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc, const char *name,
+                                 const struct peer_raw *raw, const char *type_name)
 {
     struct peer_sertype *st = calloc(1, sizeof *st);
     if (st == NULL)
         return DDS_RETCODE_OUT_OF_RESOURCES;
-    ddsi_sertype_init_flags(&st->c, desc->m_typename, &sertype_ops, &serdata_ops,
+    ddsi_sertype_init_flags(&st->c, type_name, &sertype_ops, &serdata_ops,
                             DDSI_SERTYPE_FLAG_TOPICKIND_NO_KEY);
     st->c.allowed_data_representation = DDS_DATA_REPRESENTATION_FLAG_XCDR1;
     st->desc = desc;
@@ -351,6 +351,18 @@ dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descrip
     if (topic < 0)
         ddsi_sertype_unref(stp);
     return topic;
+}
+
+dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc, const char *name,
+                               const struct peer_raw *raw)
+{
+    return create_topic(participant, desc, name, raw, desc->m_typename);
+}
+
+dds_entity_t peer_create_topic_named(dds_entity_t participant, const dds_topic_descriptor_t *desc,
+                                     const char *name, const char *type_name)
+{
+    return create_topic(participant, desc, name, NULL, type_name);
 }
 
 uint32_t peer_cdr_size(const struct ddsi_serdata *sd)

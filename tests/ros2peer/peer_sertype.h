@@ -22,6 +22,11 @@ struct peer_raw;
 dds_entity_t peer_create_topic(dds_entity_t participant, const dds_topic_descriptor_t *desc,
                                const char *name, const struct peer_raw *raw);
 
+// The same with the type named `type_name` on the wire instead of desc's (hostile discovery: a
+// type of its own for each writer).
+dds_entity_t peer_create_topic_named(dds_entity_t participant, const dds_topic_descriptor_t *desc,
+                                     const char *name, const char *type_name);
+
 // A sample taken with dds_takecdr from a reader of such a topic:
 // its serialized size (the 4-byte encapsulation header included) ...
 uint32_t peer_cdr_size(const struct ddsi_serdata *sd);

@@ -8,6 +8,7 @@
 
 #include <fastcdr/Cdr.h>
 #include <fastcdr/FastBuffer.h>
+#include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -28,6 +29,8 @@ QByteArray gid(int participant, int entity)
     g[0] = char(0x01);
     g[1] = char(0x0f);
     g[11] = char(participant);
+    g[13] = char(entity >> 16);
+    g[14] = char(entity >> 8);
     g[15] = char(entity);
     return g;
 }
@@ -174,6 +177,62 @@ private slots:
             infoBytes(Cdr::LITTLE_ENDIANNESS, 24, gid(1, 0xc1), {{"/", longName, {}, {}}}), &error));
         // trailing garbage beyond alignment padding
         QVERIFY(!Ros2DiscoveryInfo::parse(good + QByteArray(16, 'x'), &error));
+    }
+
+    // Issue 41: one participant announcing 100,000 endpoints on one topic, each of a type of its
+    // own. The old build looked each type up in the topic's list (quadratic: minutes, past the
+    // parent's 10 s watchdog, again after every restart); now a topic keeps at most 16 types and
+    // 10,000 endpoints, the rest counted, in well under a second, and the other topics stay listed.
+    void aFloodOfTypesOnOneTopicIsBoundedAndFast()
+    {
+        QList<Ros2Endpoint> endpoints;
+        for (int i = 0; i < 100'000; ++i)
+            endpoints.append(endpoint(gid(7, i), u"/flood"_s, u"flood_msgs/msg/T%1"_s.arg(i), i % 2 == 0));
+        endpoints.append(endpoint(gid(1, 1), u"/chatter"_s, u"std_msgs/msg/String"_s, true));
+        QElapsedTimer timer;
+        timer.start();
+        const Ros2Graph g = Ros2Graph::build(endpoints, {}, 2);
+        const qint64 ms = timer.elapsed();
+        QVERIFY2(ms < 3000, qPrintable(u"%1 ms"_s.arg(ms)));
+        const Ros2Topic* flood = g.topic(u"/flood"_s);
+        QVERIFY(flood);
+        QCOMPARE(flood->types.size(), 16);
+        QCOMPARE(flood->publishers.size() + flood->subscribers.size(), 16);
+        QCOMPARE(g.omitted, quint64(100'000 - 16));
+        const Ros2Topic* chatter = g.topic(u"/chatter"_s);
+        QVERIFY(chatter);
+        QCOMPARE(chatter->publishers.size(), 1);
+
+        // of one type, a topic keeps 10,000 endpoints
+        QList<Ros2Endpoint> same;
+        for (int i = 0; i < 12'000; ++i)
+            same.append(endpoint(gid(7, i), u"/flood"_s, u"std_msgs/msg/String"_s, true));
+        const Ros2Graph h = Ros2Graph::build(same, {}, 1);
+        QCOMPARE(h.topic(u"/flood"_s)->publishers.size(), 10'000);
+        QCOMPARE(h.omitted, quint64(2'000));
+    }
+
+    // Names and types are checked before they reach DDS (issue 41: a 70,000-character type name
+    // from a retained MQTT announcement crashed Cyclone in dds_create_writer).
+    void typeAndTopicNamesAreCheckedBeforeDds()
+    {
+        for (const QString& ok : {u"std_msgs/msg/String"_s, u"geometry_msgs/msg/PoseStamped"_s,
+                                  u"std_msgs/String"_s, u"a/msg/B_2"_s})
+            QVERIFY2(Ros2Names::isValidType(ok), qPrintable(ok));
+        QString why;
+        QVERIFY(!Ros2Names::isValidType(u"a"_s.repeated(70'000) + u"/msg/T"_s, &why));
+        QVERIFY2(why.contains(u"70006 characters (at most 255)"_s), qPrintable(why));
+        for (const QString& bad :
+             {QString(), u"String"_s, u"std_msgs/srv/AddTwoInts"_s, u"std_msgs::msg::dds_::String_"_s,
+              u"a/msg/B/C"_s, u"a/msg/"_s, u"1a/msg/B"_s, u"a/msg/B-C"_s, u"a/msg/B\0"_s}) {
+            QVERIFY2(!Ros2Names::isValidType(bad, &why), qPrintable(bad));
+            QVERIFY2(why.contains(u"not a ROS 2 message type"_s), qPrintable(why));
+        }
+        QVERIFY(Ros2Names::isValidTopic(u"/chatter"_s));
+        QVERIFY(Ros2Names::isValidTopic(u"/"_s + u"x"_s.repeated(255))); // rt/ and 255
+        QVERIFY(!Ros2Names::isValidTopic(u"/"_s + u"x"_s.repeated(256), &why));
+        QVERIFY2(why.contains(u"at most 255"_s), qPrintable(why));
+        QVERIFY(!Ros2Names::isValidTopic(u"/a b"_s, &why));
     }
 
     void graph()

@@ -211,6 +211,57 @@ private slots:
         QVERIFY(!decodeWatch(encodeWatch({u"/a"_s, 1, -1})));
     }
 
+    // Issue 41: one peer announcing 700 writers of 60,000-character topics made a graph frame of
+    // over 65 MiB, which the parent refused, restarting the child, which found the same graph: a
+    // restart loop. A graph past its budget is sent in part, what is left out counted.
+    void aGraphPastItsBudgetIsSentInPart()
+    {
+        Ros2Graph g;
+        g.participants = 2;
+        g.omitted = 5;
+        for (int i = 0; i < 700; ++i) {
+            Ros2Topic t;
+            t.name = u"/f%1_"_s.arg(i, 4, 10, QLatin1Char('0')) + u"x"_s.repeated(60'000);
+            t.types = {u"std_msgs/msg/String"_s};
+            t.publishers = {endpoint(char(i), t.name, true)};
+            g.topics.append(t);
+        }
+        g.topics.prepend(Ros2Topic {u"/chatter"_s, {u"std_msgs/msg/String"_s}, {endpoint('\x01', u"/chatter"_s, true)}, {}});
+        g.nodes = {Ros2Node {u"/lab/talker"_s, {u"/chatter"_s}, {}}};
+        const QByteArray body = encodeGraph({g, 3});
+        QVERIFY2(body.size() <= 32 * 1024 * 1024, qPrintable(QString::number(body.size())));
+        QVERIFY(body.size() + 5 <= qsizetype(kMaxFrameBytes));
+        const auto back = decodeGraph(body);
+        QVERIFY(back);
+        QCOMPARE(back->badDiscoveryInfo, quint64(3));
+        QCOMPARE(back->graph.topics.first().name, u"/chatter"_s);
+        const qsizetype kept = back->graph.topics.size();
+        QVERIFY2(kept > 1 && kept < 701, qPrintable(QString::number(kept)));
+        // the topics left out (each with its one writer), what the graph left out before, and the
+        // node if it did not fit after them
+        QCOMPARE(back->graph.omitted, quint64(5 + 701 - kept + 1 - back->graph.nodes.size()));
+        // a small budget: the same, sooner
+        const auto tiny = decodeGraph(encodeGraph({g, 0}, 200));
+        QVERIFY(tiny);
+        QCOMPARE(tiny->graph.topics.size(), 1);
+        QCOMPARE(tiny->graph.omitted, quint64(5 + 700 + 1 - tiny->graph.nodes.size()));
+    }
+
+    void endpointDoneReadsBack()
+    {
+        const EndpointDone d {false, u"/t"_s, u"a/msg/B"_s, u"Cyclone DDS refused it"_s};
+        const auto back = decodeEndpointDone(encodeEndpointDone(d));
+        QVERIFY(back);
+        QCOMPARE(back->advertise, false);
+        QCOMPARE(back->topic, d.topic);
+        QCOMPARE(back->type, d.type);
+        QCOMPARE(back->why, d.why);
+        QByteArray bad = encodeEndpointDone(d);
+        bad[0] = 2;
+        QVERIFY(!decodeEndpointDone(bad));
+        QVERIFY(!decodeEndpointDone(encodeEndpointDone(d).chopped(1)));
+    }
+
     void endpointRequestsReadBackAndRefuseWhatNoEndpointIs()
     {
         EndpointRequest e {u"/chatter"_s, u"std_msgs/msg/String"_s, {}};
@@ -256,7 +307,7 @@ private slots:
         QVERIFY(r.next());
         QVERIFY(r.next());
         QVERIFY(!isKnown(quint8(Kind::Unsubscribe) + 1));
-        QVERIFY(!isKnown(quint8(Kind::Received) + 1));
+        QVERIFY(!isKnown(quint8(Kind::EndpointDone) + 1));
     }
 };
 

@@ -297,6 +297,8 @@ void DiscoverPage::updateRos2Status()
                        .arg(g.nodes.size());
     if (const quint64 bad = ros2->badDiscoveryInfo())
         text += u", "_s + tr("unreadable node announcements %1").arg(bad);
+    if (g.omitted)
+        text += u", "_s + ros2->omittedText();
     if (!restarts.isEmpty())
         text += u" · "_s + restarts;
     m_ros2State->setText(bullet(restarts.isEmpty() ? u"#2e7d32"_s : restartColour, text));
