@@ -4,6 +4,7 @@
 #include "latency/latencyengine.h"
 
 #include <cmath>
+#include <QHash>
 #include <QSet>
 
 using namespace Qt::StringLiterals;
@@ -76,8 +77,16 @@ QString LatencyWarnings::fixOnCommandLine()
 
 QStringList LatencyWarnings::lines(const QList<LatencyWarning>& warnings)
 {
+    // Figures wrong for the same reason (a crossing and the leg derived from it) share a line.
+    QStringList reasons;
+    QHash<QString, QStringList> labels;
+    for (const LatencyWarning& w : warnings) {
+        if (!labels.contains(w.reason))
+            reasons << w.reason;
+        labels[w.reason] << w.label;
+    }
     QStringList out;
-    for (const LatencyWarning& w : warnings)
-        out << tr("%1: %2").arg(w.label, w.reason);
+    for (const QString& reason : std::as_const(reasons))
+        out << tr("%1: %2").arg(labels.value(reason).join(u", "_s), reason);
     return out;
 }

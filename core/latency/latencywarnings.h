@@ -30,6 +30,7 @@ public:
     static QString fixInWindow();
     /// What to do about them on the command line.
     static QString fixOnCommandLine();
-    /// "communication, round trip: median -9.86 ms: a latency cannot be negative …", one per warning.
+    /// "communication, round trip: median -9.86 ms: a latency cannot be negative …"; figures wrong
+    /// for the same reason share a line.
     static QStringList lines(const QList<LatencyWarning>& warnings);
 };
