@@ -2654,6 +2654,22 @@ factors:
         <source>ROS</source>
         <translation>ROS</translation>
     </message>
+    <message>
+        <source>%1 ms [%2, %3] ms, 95 %</source>
+        <translation>%1 ms [%2, %3] ms, 95 %</translation>
+    </message>
+    <message>
+        <source>%1: no significant difference between %2 and %3: the totals shift by %4 (the means: %5 and %6 ms)</source>
+        <translation>%1: kein signifikanter Unterschied zwischen %2 und %3: die Gesamtwerte verschieben sich um %4 (die Mittelwerte: %5 und %6 ms)</translation>
+    </message>
+    <message>
+        <source>; the totals shift by %1</source>
+        <translation>; die Gesamtwerte verschieben sich um %1</translation>
+    </message>
+    <message>
+        <source> (too few samples for an interval)</source>
+        <translation> (zu wenige Samples für ein Intervall)</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentRunner</name>
@@ -3162,6 +3178,33 @@ factors:
     <message>
         <source>One clock: this direction&apos;s own one-way latency, stamp to stamp.</source>
         <translation>Eine Uhr: die Einweg-Latenz dieser Richtung, Stempel zu Stempel.</translation>
+    </message>
+    <message>
+        <source>Not a measurement: %1.</source>
+        <translation>Keine Messung: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>LatencyWarnings</name>
+    <message>
+        <source>median %1 ms: a latency cannot be negative, so the stamps&apos; order or their hosts are wrong</source>
+        <translation>Median %1 ms: eine Latenz kann nicht negativ sein, also sind die Reihenfolge der Stempel oder ihre Hosts falsch</translation>
+    </message>
+    <message>
+        <source>the order crosses between hosts %1 times where going there and back crosses %2 times: the stamps of one host are interleaved with another&apos;s</source>
+        <translation>die Reihenfolge wechselt %1-mal zwischen Hosts, wo hin und zurück %2-mal wechselt: die Stempel eines Hosts sind mit denen eines anderen verschränkt</translation>
+    </message>
+    <message>
+        <source>Set each stamp&apos;s host in the pipeline&apos;s Host column, or load a pipeline (Load Pipeline…).</source>
+        <translation>Setzen Sie den Host jedes Stempels in der Spalte Host der Pipeline, oder laden Sie eine Pipeline (Pipeline laden…).</translation>
+    </message>
+    <message>
+        <source>Set each stamp&apos;s host (hosts: in the pipeline file), or give the pipeline with --pipeline.</source>
+        <translation>Setzen Sie den Host jedes Stempels (hosts: in der Pipeline-Datei), oder geben Sie die Pipeline mit --pipeline an.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -4260,6 +4303,22 @@ factors:
     <message>
         <source> · waiting for the first stamp of %1</source>
         <translation> · wartet auf den ersten Zeitstempel von %1</translation>
+    </message>
+    <message>
+        <source>Not a measurement:</source>
+        <translation>Keine Messung:</translation>
+    </message>
+    <message>
+        <source>%1 or %2.</source>
+        <translation>%1 oder %2.</translation>
+    </message>
+    <message>
+        <source>Set hosts</source>
+        <translation>Hosts setzen</translation>
+    </message>
+    <message>
+        <source>load a pipeline</source>
+        <translation>eine Pipeline laden</translation>
     </message>
 </context>
 <context>
@@ -5801,6 +5860,10 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
         <source>ROS 2 discovery restarted: the DDS process %1</source>
         <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
     </message>
+    <message>
+        <source>not a measurement: %1</source>
+        <translation>keine Messung: %1</translation>
+    </message>
 </context>
 <context>
     <name>RecordDialog</name>
@@ -6075,6 +6138,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>Every stamp comes from one clock (one machine): each direction&apos;s own one-way latency, no clock offset.</source>
         <translation>Jeder Zeitstempel kommt von einer Uhr (ein Rechner): die Einweg-Latenz jeder Richtung, kein Uhrenversatz.</translation>
     </message>
+    <message>
+        <source>%1: not a measurement: %2</source>
+        <translation>%1: keine Messung: %2</translation>
+    </message>
 </context>
 <context>
     <name>ReportFormats</name>
@@ -6293,6 +6360,14 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>ROS 2</source>
         <translation>ROS 2</translation>
+    </message>
+    <message>
+        <source>Not a measurement</source>
+        <translation>Keine Messung</translation>
+    </message>
+    <message>
+        <source>Not a measurement (%1): %2</source>
+        <translation>Keine Messung (%1): %2</translation>
     </message>
 </context>
 <context>

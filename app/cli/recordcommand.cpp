@@ -6,6 +6,7 @@
 #include "app/cli/sourcecheck.h"
 #include "base/secrets.h"
 #include "base/yamllimits.h"
+#include "latency/latencywarnings.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
@@ -214,6 +215,11 @@ int runRecord(const RecordRequest& request)
     }
     const qint64 stamps = measure.recorder()->committedStamps();
     out(Record::tr("%1: %2 complete samples, %3 stamps").arg(request.runPath).arg(complete).arg(stamps));
+    const QList<LatencyWarning> warnings = LatencyWarnings::of(e);
+    for (const QString& line : LatencyWarnings::lines(warnings))
+        err(Record::tr("not a measurement: %1").arg(line));
+    if (!warnings.isEmpty())
+        err(LatencyWarnings::fixOnCommandLine());
     if (stamps == 0 && !request.allowEmpty) {
         err(Record::tr("nothing was recorded (%1); --allow-empty accepts an empty run")
                 .arg(!sources.brokerEverReached() && !sources.masterEverReached()

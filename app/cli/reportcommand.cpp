@@ -4,6 +4,7 @@
 #include "app/cli/clioutput.h"
 #include "base/atomicfile.h"
 #include "experiment/experimentreport.h"
+#include "latency/latencywarnings.h"
 #include "report/report.h"
 #include "report/reportformats.h"
 
@@ -224,6 +225,12 @@ int writeReport(const ReportRequest& request, const Report& report)
     }
     int status = ExitOk;
     for (const auto& run : report.runs()) {
+        // Said on stderr too: a figure that contradicts the pipeline must not pass as a result.
+        const QList<LatencyWarning> warnings = LatencyWarnings::of(*run->engine);
+        for (const QString& line : LatencyWarnings::lines(warnings))
+            err(ReportText::tr("%1: not a measurement: %2").arg(run->path, line));
+        if (!warnings.isEmpty())
+            err(LatencyWarnings::fixOnCommandLine());
         if (run->engine->samples() == 0 && !run->engine->pipeline().isEmpty()) { // a watch has no pipeline
             err(ReportText::tr("%1: no complete sample").arg(run->path));
             status = ExitFailed;

@@ -317,6 +317,42 @@ double ExperimentReport::value(const LatencyStats& s, Statistic statistic)
     return LatencyStats::nan();
 }
 
+std::optional<ShiftEstimate> ExperimentReport::shiftOf(const LatencySeries& low, const LatencySeries& high)
+{
+    // The values in each series' window: the last count() of those it keeps.
+    const auto window = [](const LatencySeries& s) {
+        const std::vector<qint64>& v = s.values();
+        return std::vector<qint64>(v.end() - qsizetype(std::min<qint64>(s.count(), qint64(v.size()))),
+                                   v.end());
+    };
+    return ShiftEstimate::of(window(low), window(high), low.msPerUnit());
+}
+
+QString ExperimentReport::shiftText(const ShiftEstimate& shift)
+{
+    return tr("%1 ms [%2, %3] ms, 95 %")
+        .arg(formatMs(shift.shiftMs), formatMs(shift.lowMs), formatMs(shift.highMs));
+}
+
+QString ExperimentReport::differenceFinding(const QString& factor, const QString& lowLevel, double lowMs,
+                                            const QString& highLevel, double highMs,
+                                            const std::optional<ShiftEstimate>& shift)
+{
+    if (shift && !shift->significant())
+        return tr("%1: no significant difference between %2 and %3: the totals shift by %4 (the means: "
+                  "%5 and %6 ms)")
+            .arg(factor, lowLevel, highLevel, shiftText(*shift), formatMs(lowMs), formatMs(highMs));
+    QString line
+        = tr("%1: the total mean is lowest at %2 (%3 ms) and highest at %4 (%5 ms), %6 ms more (%7 %)")
+              .arg(factor, lowLevel, formatMs(lowMs), highLevel, formatMs(highMs), formatMs(highMs - lowMs))
+              .arg(lowMs > 0 ? QString::number(qRound(100 * (highMs - lowMs) / lowMs)) : u"–"_s);
+    if (shift)
+        line += tr("; the totals shift by %1").arg(shiftText(*shift));
+    else
+        line += tr(" (too few samples for an interval)");
+    return line;
+}
+
 QStringList ExperimentReport::findings() const
 {
     QStringList out;
@@ -355,6 +391,12 @@ QStringList ExperimentReport::findings() const
               });
         const double lo = (*low)->groups[total].mean;
         const double hi = (*high)->groups[total].mean;
+        const std::optional<ShiftEstimate> shift
+            = (*low)->total && (*high)->total ? shiftOf(*(*low)->total, *(*high)->total) : std::nullopt;
+        if (shift && !shift->significant()) {
+            out << differenceFinding(t.factor, (*low)->level, lo, (*high)->level, hi, shift) + u'.';
+            continue; // nothing moved that the samples can tell apart from chance
+        }
         // The group that moved most between the two levels.
         int most = -1;
         double moved = 0;
@@ -365,10 +407,7 @@ QStringList ExperimentReport::findings() const
                 most = g;
             }
         }
-        QString line
-            = tr("%1: the total mean is lowest at %2 (%3 ms) and highest at %4 (%5 ms), %6 ms more (%7 %)")
-                  .arg(t.factor, (*low)->level, formatMs(lo), (*high)->level, formatMs(hi), formatMs(hi - lo))
-                  .arg(lo > 0 ? QString::number(qRound(100 * (hi - lo) / lo)) : u"–"_s);
+        QString line = differenceFinding(t.factor, (*low)->level, lo, (*high)->level, hi, shift);
         if (most >= 0)
             line += tr("; most of it in %1 (%2 ms).").arg(m_groups[most].label, formatMs(moved));
         else

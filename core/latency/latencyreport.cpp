@@ -2,6 +2,7 @@
 #include "latencyreport.h"
 
 #include "latency/latencyengine.h"
+#include "latency/latencywarnings.h"
 
 #include <cmath>
 #include <QJsonArray>
@@ -66,6 +67,11 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
                    : QJsonValue(QJsonValue::Null));
     doc.insert(u"one_clock"_s, p.oneClock());
     const auto bounds = engine.clockOffsetBoundsMs();
+    QJsonArray warnings;
+    for (const LatencyWarning& w : LatencyWarnings::of(engine))
+        warnings.append(
+            QJsonObject {{u"series"_s, w.seriesId}, {u"label"_s, w.label}, {u"reason"_s, w.reason}});
+    doc.insert(u"warnings"_s, warnings);
     doc.insert(u"clock_offset_bounds_ms"_s,
                bounds ? QJsonValue(QJsonArray {number(bounds->first), number(bounds->second)})
                       : QJsonValue(QJsonValue::Null));

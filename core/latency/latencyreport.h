@@ -10,7 +10,8 @@ class LatencyEngine;
 
 /// The measurement report as JSON (docs/formats.md, "Report JSON"): samples, drops, every stage
 /// with its crossing flag, the total, the derived communication figures and the clock offset,
-/// all statistics in ms at full double precision (NaN, where a statistic is undefined, as null).
+/// all statistics in ms at full double precision (NaN, where a statistic is undefined, as null),
+/// and the figures that contradict the pipeline (`warnings`, LatencyWarnings).
 class LatencyReport
 {
 public:

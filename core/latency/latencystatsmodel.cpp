@@ -41,6 +41,12 @@ void LatencyStatsModel::refresh(const LatencyEngine& engine)
 {
     m_oneClock = engine.pipeline().oneClock();
     m_offsetBounds = engine.clockOffsetBoundsMs();
+    m_warnings = LatencyWarnings::of(engine);
+    m_warningOf.clear();
+    for (const LatencyWarning& w : std::as_const(m_warnings)) {
+        QString& reasons = m_warningOf[w.seriesId];
+        reasons += (reasons.isEmpty() ? QString() : u"; "_s) + w.reason;
+    }
     const int n = engine.seriesCount();
     if (engine.layoutRevision() != m_layout) {
         m_layout = engine.layoutRevision();
@@ -67,7 +73,7 @@ void LatencyStatsModel::refresh(const LatencyEngine& engine)
     }
     if (!m_rows.empty())
         emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1),
-                         {Qt::DisplayRole, ValueRole, Qt::ToolTipRole});
+                         {Qt::DisplayRole, ValueRole, Qt::ToolTipRole, WarningRole});
 }
 
 int LatencyStatsModel::rowOf(const QString& seriesId) const
@@ -144,6 +150,8 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
     switch (role) {
     case Qt::DisplayRole:
         if (index.column() == SeriesColumn) {
+            if (m_warningOf.contains(r.info.id))
+                return QString(u"⚠ "_s + r.info.label);
             if (r.info.kind == LatencyEngine::Kind::ClockOffset && m_offsetBounds)
                 return QString(r.info.label + u' ' + offsetUncertaintyText(m_offsetBounds));
             return r.info.crossing ? QString(u"⇄ "_s + r.info.label) : r.info.label;
@@ -164,7 +172,11 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
         if (index.column() == SeriesColumn)
             return m_checked.contains(r.info.id) ? Qt::Checked : Qt::Unchecked;
         return {};
+    case WarningRole:
+        return m_warningOf.value(r.info.id);
     case Qt::ToolTipRole:
+        if (const auto w = m_warningOf.constFind(r.info.id); w != m_warningOf.cend())
+            return QString(tr("Not a measurement: %1.").arg(*w) + u'\n' + LatencyWarnings::fixInWindow());
         if (index.column() == SeriesColumn) {
             if (r.info.crossing && m_oneClock)
                 return QString(r.info.detail + u'\n'

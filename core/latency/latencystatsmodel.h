@@ -2,6 +2,7 @@
 #pragma once
 
 #include "latency/latencyengine.h"
+#include "latency/latencywarnings.h"
 
 #include <QAbstractTableModel>
 #include <QSet>
@@ -12,7 +13,8 @@
 ///
 /// refresh() takes the engine's current figures: rows are inserted when series appear, the whole
 /// model resets only when the pipeline changes, and the figures change with one dataChanged.
-/// The first column is checkable: checked series are drawn.
+/// The first column is checkable: checked series are drawn. A row whose figures contradict the
+/// pipeline (LatencyWarnings) says so in its label ("⚠ "), its tooltip and WarningRole.
 class LatencyStatsModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -36,6 +38,7 @@ public:
         KindRole, ///< int(LatencyEngine::Kind)
         CrossingRole, ///< bool
         ValueRole, ///< double ms (count: qint64)
+        WarningRole, ///< QString: why the row's figures contradict the pipeline, or empty
     };
 
     explicit LatencyStatsModel(QObject* parent = nullptr);
@@ -44,6 +47,8 @@ public:
     const LatencyStats& statsAt(int row) const { return m_rows[std::size_t(row)].stats; }
     const LatencyEngine::SeriesInfo& infoAt(int row) const { return m_rows[std::size_t(row)].info; }
     int rowOf(const QString& seriesId) const;
+    /// The figures that contradict the pipeline (LatencyWarnings), as of the last refresh().
+    const QList<LatencyWarning>& warnings() const { return m_warnings; }
 
     QStringList checkedSeries() const;
     void setChecked(const QString& seriesId, bool checked);
@@ -79,4 +84,6 @@ private:
     quint64 m_layout = ~quint64(0);
     bool m_oneClock = false;
     std::optional<std::pair<double, double>> m_offsetBounds;
+    QList<LatencyWarning> m_warnings;
+    QHash<QString, QString> m_warningOf; ///< series id -> its reasons
 };

@@ -336,20 +336,21 @@ QString Pipeline::stageLabel(int stage) const
     return m_stageLabels.value(stage);
 }
 
-QHash<QString, QString> Pipeline::guessHosts(const QStringList& topics)
+QString Pipeline::hostOfName(const QString& topic)
 {
     static const QRegularExpression split(u"[^A-Za-z0-9]+"_s);
+    const QStringList tokens = topic.split(split, Qt::SkipEmptyParts);
+    for (const QString& token : tokens)
+        if (QString host = hostOfToken(token); !host.isEmpty())
+            return host;
+    return {};
+}
+
+QHash<QString, QString> Pipeline::guessHosts(const QStringList& topics)
+{
     QStringList hosts;
-    for (const QString& t : topics) {
-        QString host;
-        const QStringList tokens = t.split(split, Qt::SkipEmptyParts);
-        for (const QString& token : tokens) {
-            host = hostOfToken(token);
-            if (!host.isEmpty())
-                break;
-        }
-        hosts << host;
-    }
+    for (const QString& t : topics)
+        hosts << hostOfName(t);
     // Unknown ones take the previous known host, or the next one at the start.
     QString previous;
     for (QString& h : hosts) {

@@ -78,6 +78,8 @@ public:
     /// Hosts guessed from topic names: a name part "vehicle", "car", "robot" or "cloud", "edge",
     /// "server" sets a host; topics without one take their neighbours' host.
     static QHash<QString, QString> guessHosts(const QStringList& topics);
+    /// The host a topic's name stands for ("vehicle", "cloud"), or empty when no part names one.
+    static QString hostOfName(const QString& topic);
 
     bool operator==(const Pipeline& o) const
     {

@@ -14,6 +14,11 @@
 /// Finds a pipeline in whatever stamps arrive: the topics seen, ordered by their mean time within
 /// the samples that carry every one of them, with hosts guessed from the names.
 ///
+/// When the names give two hosts or more, each host's clock orders only its own stamps: a host
+/// that is left and returned to takes the stamps of the hosts visited meanwhile into the gap they
+/// fit in, with their clock offset estimated as the clock offset row does (both ways take as
+/// long). So a cloud clock 35 ms ahead, or 250 ms behind, still gives the order the sample took.
+///
 /// A ROS topic and the MQTT topic mqtt_client carries it on ("/a/b" and "a/b") are one topic; the
 /// ROS name is kept. Memory is bounded: only the most recent samples are kept.
 class PipelineDiscovery
@@ -35,6 +40,11 @@ public:
 
 private:
     static QString key(const QString& topic);
+    /// The heard topics (finite `mean`) in order when names give two hosts or more, with each
+    /// one's host in `hosts`; empty otherwise. `sinceSample`: mean time after the sample's id.
+    std::vector<int> orderAcrossClocks(const std::vector<double>& mean,
+                                       const std::vector<double>& sinceSample,
+                                       std::vector<QString>* hosts) const;
 
     QStringList m_topics;
     QHash<QString, int> m_index; ///< normalized topic -> index in m_topics

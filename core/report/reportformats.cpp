@@ -198,6 +198,9 @@ QList<std::pair<QString, QString>> facts(const ReportRun& run)
     const bool measured = p.topicCount() > 0; // a run of `watch` may hold events only
     add(QT_TRANSLATE_NOOP("ReportFormats", "Pipeline"), measured ? pipeline : QString());
     add(QT_TRANSLATE_NOOP("ReportFormats", "Clocks"), clocksText(e));
+    if (const QList<LatencyWarning> warnings = LatencyWarnings::of(e); !warnings.isEmpty())
+        add(QT_TRANSLATE_NOOP("ReportFormats", "Not a measurement"),
+            LatencyWarnings::lines(warnings).join(u"; "_s) + u". "_s + LatencyWarnings::fixOnCommandLine());
     add(QT_TRANSLATE_NOOP("ReportFormats", "Broker"), run.info.broker);
     add(QT_TRANSLATE_NOOP("ReportFormats", "ROS master"), run.info.rosMaster);
     add(QT_TRANSLATE_NOOP("ReportFormats", "ROS 2"), run.info.ros2Domain);
@@ -482,6 +485,11 @@ QByteArray ReportFormats::latex(const Report& report)
         out += u"% "_s + caption + u'\n' + t.latex() + u'\n';
     };
     if (report.hasLatency()) {
+        for (const auto& run : report.runs())
+            for (const QString& line : LatencyWarnings::lines(LatencyWarnings::of(*run->engine)))
+                out += u"% "_s
+                    + tr("Not a measurement (%1): %2").arg(shown(run->name), shown(line, kMaxShownText))
+                    + u'\n';
         table(stageTable(report), tr("Latency per stage"));
         if (report.isComparison())
             table(totalsTable(report), tr("Total latency per run"));

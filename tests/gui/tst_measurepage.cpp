@@ -39,8 +39,8 @@ using namespace ViewHelpers;
 
 namespace {
 /// The paper's stage means (Table I, mqtt_client) as stamp offsets in µs; the cloud's clock runs
-/// 250 ms ahead of the vehicle's.
-QStringList paperStamps(const QStringList& topics)
+/// `cloudAheadUs` (250 ms) ahead of the vehicle's.
+QStringList paperStamps(const QStringList& topics, qint64 cloudAheadUs = 250'000)
 {
     const qint64 stageUs[] = {200, 300, 19000, 100, 3600, 43400, 100, 100, 19000, 100, 200};
     const std::vector<bool> cloud = SyntheticRun::paper(1, 0, 1).remote;
@@ -49,7 +49,7 @@ QStringList paperStamps(const QStringList& topics)
     for (int i = 0; i < topics.size(); ++i) {
         if (i > 0)
             t += stageUs[i - 1];
-        args << u"--stamp"_s << u"%1:%2"_s.arg(topics[i]).arg(t + (cloud[std::size_t(i)] ? 250'000 : 0));
+        args << u"--stamp"_s << u"%1:%2"_s.arg(topics[i]).arg(t + (cloud[std::size_t(i)] ? cloudAheadUs : 0));
     }
     return args;
 }
@@ -83,6 +83,24 @@ private:
         return p;
     }
 
+    /// The suite's pipeline file plus our hosts extension and `more`, as `name`; its topics in `topics`.
+    QString writePaperPipeline(const QString& name, const QByteArray& more, QStringList* topics)
+    {
+        QByteArray yaml = Fixtures::read(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s);
+        const std::optional<Pipeline> suite = Pipeline::fromYaml(yaml);
+        if (!suite)
+            return {};
+        *topics = suite->topics();
+        yaml += "\n" + more + "hosts:\n";
+        for (int i = 0; i < topics->size(); ++i)
+            yaml += "  " + topics->at(i).toUtf8() + ": " + SyntheticRun::paper(1, 0, 1).hosts()[i].toUtf8()
+                + "\n";
+        QFile f(m_dir.filePath(name));
+        if (!f.open(QIODevice::WriteOnly) || f.write(yaml) != yaml.size())
+            return {};
+        return f.fileName();
+    }
+
 private slots:
     void initTestCase()
     {
@@ -106,19 +124,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
 
         // The suite's pipeline file plus our hosts extension.
-        QByteArray yaml = Fixtures::read(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s);
-        const std::optional<Pipeline> suite = Pipeline::fromYaml(yaml);
-        QVERIFY(suite);
-        const QStringList topics = suite->topics();
-        yaml += "\nhosts:\n";
-        for (int i = 0; i < topics.size(); ++i)
-            yaml
-                += "  " + topics[i].toUtf8() + ": " + SyntheticRun::paper(1, 0, 1).hosts()[i].toUtf8() + "\n";
-        const QString file = m_dir.filePath(u"pipeline.yaml"_s);
-        QFile f(file);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(yaml);
-        f.close();
+        QStringList topics;
+        const QString file = writePaperPipeline(u"pipeline.yaml"_s, {}, &topics);
+        QVERIFY(!file.isEmpty());
         QString error;
         QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
         QCOMPARE(page->pipelineModel()->rowCount(), 12);
@@ -202,6 +210,76 @@ private slots:
         QTest::keyClick(page->statsView(), Qt::Key_R, Qt::ControlModifier);
         QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"0"_s);
         QVERIFY(page->countsLabel()->text().contains(u"0 complete"_s));
+    }
+
+    // Regression (issue 40, item 4): the automatic order put the vehicle's return stamps before
+    // the cloud's (its clock 35 ms ahead) and pinned a negative round trip on top, with no word.
+    // A pinned figure that cannot be a latency is flagged next to it, with why and what to do; the
+    // automatic order takes the clock offset into account.
+    void aNegativePinnedFigureIsFlaggedAndAutomaticFindsTheOrder()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        MeasurePage* page = w.measurePage();
+        MeasureSession* measure = w.measure();
+        w.resize(1280, 800);
+        w.show();
+        w.pages()->setCurrentWidget(page);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+
+        // The paper's pipeline, said to run on one clock while the cloud's is 35 ms ahead: the
+        // way back reads 19 - 35 ms.
+        QStringList topics;
+        const QString file = writePaperPipeline(u"one-clock.yaml"_s, "one_clock: true\n", &topics);
+        QVERIFY(!file.isEmpty());
+        QString error;
+        QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
+        QLabel* warning = page->warningLabel();
+        QVERIFY(!warning->isVisible());
+        auto pub = publish(paperStamps(topics, 35'000), 100, 11);
+        QTRY_VERIFY_WITH_TIMEOUT(measure->engine().samples() >= 100, 60000);
+        QVERIFY(pub->waitForFinished(10000));
+
+        // The pinned row says it, and the line above the pinned rows says why and what to do.
+        QAbstractItemModel* pinned = page->summaryView()->model();
+        const int back = rowOf(pinned, u"back"_s);
+        QVERIFY(back >= 0);
+        QTRY_VERIFY_WITH_TIMEOUT(pinned->index(back, 0).data().toString().startsWith(u"⚠ "_s), 5000);
+        QVERIFY(
+            pinned->index(back, LatencyStatsModel::MedianColumn).data(LatencyStatsModel::ValueRole).toDouble()
+            < 0);
+        QTRY_VERIFY_WITH_TIMEOUT(warning->isVisible(), 5000);
+        const QString text = warning->text();
+        QVERIFY2(text.contains(u"communication, back (cloud → vehicle): median -1"_s), qPrintable(text));
+        QVERIFY2(text.contains(u"a latency cannot be negative"_s), qPrintable(text));
+        QVERIFY2(text.contains(u">Set hosts</a>"_s) && text.contains(u">load a pipeline</a>"_s),
+                 qPrintable(text));
+        QVERIFY(pinned->index(back, 0).data(Qt::ToolTipRole).toString().contains(u"Load Pipeline"_s));
+        // Next to the pinned rows, whole at 1280x800.
+        QWidget* summary = page->summaryView();
+        const QRect at = warning->geometry();
+        QCOMPARE(warning->parentWidget(), summary->parentWidget());
+        QVERIFY2(at.bottom() < summary->geometry().top() && summary->geometry().top() - at.bottom() < 12,
+                 qPrintable(u"warning %1..%2, pinned rows from %3"_s.arg(at.top())
+                                .arg(at.bottom())
+                                .arg(summary->geometry().top())));
+        QVERIFY(warning->height() >= warning->heightForWidth(warning->width()));
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            w.grab().save(shots + u"/measure-warning.png"_s);
+
+        // Automatic: the cloud's stamps go between the vehicle's, whatever its clock says.
+        measure->setAutomatic();
+        pub = publish(paperStamps(topics, 35'000), 100, 12);
+        QTRY_VERIFY_WITH_TIMEOUT(measure->engine().samples() >= 50, 60000);
+        QVERIFY(pub->waitForFinished(10000));
+        QCOMPARE(measure->pipeline().topics(), topics);
+        QCOMPARE(measure->pipeline().crossings(), (QList<int> {2, 8}));
+        const LatencyEngine& e = measure->engine();
+        QTRY_VERIFY_WITH_TIMEOUT(!warning->isVisible(), 5000);
+        QVERIFY2(std::abs(e.series(e.clockOffsetSeries()).stats().median - 35.0) < 1.0,
+                 qPrintable(QString::number(e.series(e.clockOffsetSeries()).stats().median)));
+        QVERIFY(e.series(e.roundTripSeries()).stats().median > 0);
+        QVERIFY(!pinned->index(rowOf(pinned, u"round_trip"_s), 0).data().toString().startsWith(u"⚠"_s));
     }
 
     void pipelineIsEditedByKeyboardAndDrag()

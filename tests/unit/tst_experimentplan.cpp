@@ -2,6 +2,7 @@
 // Experiment plans: the shipped examples read as the paper's tables, factors cross in order,
 // listed cells name what they change, repetitions come last, and every mistake names its line.
 #include "experiment/experimentevent.h"
+#include "experiment/experimentfolder.h"
 #include "experiment/experimentplan.h"
 #include "experiment/experimentreport.h"
 #include "experiment/experimentrunner.h"
@@ -13,6 +14,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -23,6 +25,19 @@ namespace {
 QString examples()
 {
     return QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/examples"_s;
+}
+
+/// An experiment's folder: its plan copy and a state of `cells`.
+bool writeFolder(const QString& dir, const QByteArray& yaml, const QJsonArray& cells)
+{
+    QFile copy(QDir(dir).filePath(ExperimentFolder::planFileName()));
+    if (!copy.open(QIODevice::WriteOnly) || copy.write(yaml) != yaml.size())
+        return false;
+    const QByteArray state
+        = QJsonDocument(QJsonObject {{u"format"_s, u"bridgescope-experiment"_s}, {u"cells"_s, cells}})
+              .toJson();
+    QFile f(QDir(dir).filePath(ExperimentFolder::stateFileName()));
+    return f.open(QIODevice::WriteOnly) && f.write(state) == state.size();
 }
 
 std::optional<ExperimentPlan> plan(const QByteArray& yaml, QString* error = nullptr)
@@ -340,16 +355,10 @@ private slots:
         QVERIFY2(plan && plan->cells.size() == 4, qPrintable(why));
         QVERIFY(QDir(dir.path()).mkpath(u"runs"_s));
         QFile copy(dir.filePath(ExperimentFolder::planFileName()));
-        QVERIFY(copy.open(QIODevice::WriteOnly) && copy.write(yaml) == yaml.size());
-        copy.close();
         QJsonArray cells;
         for (const ExperimentCell& cell : plan->cells)
             cells.append(QJsonObject {{u"id"_s, cell.id()}, {u"state"_s, u"complete"_s}, {u"samples"_s, 10}});
-        QFile state(dir.filePath(ExperimentFolder::stateFileName()));
-        QVERIFY(state.open(QIODevice::WriteOnly));
-        state.write(QJsonDocument(QJsonObject {{u"format"_s, u"bridgescope-experiment"_s}, {u"cells"_s, cells}})
-                        .toJson());
-        state.close();
+        QVERIFY(writeFolder(dir.path(), yaml, cells));
         const auto runOf = [&](int i) { return dir.filePath(ExperimentFolder::runPathOf(plan->cells[i])); };
         // 0: garbage that starts like a database; 1: a symbolic link to /etc/passwd; 2: a run of the
         // cell with 12 samples; 3: that same run, which is another cell's.
@@ -545,6 +554,72 @@ private slots:
         const QString html = report->toHtml(mean);
         QVERIFY2(!html.contains(u"<script>"_s) && html.contains(u"&lt;script&gt;"_s), qPrintable(html));
     }
+    void findingsGiveTheShiftWithItsInterval_data()
+    {
+        QTest::addColumn<qint64>("shiftNs");
+        QTest::newRow("overlapping totals, a 277 ms outlier") << qint64(0);
+        QTest::newRow("25 ms slower") << qint64(25'000'000);
+    }
+
+    // Regression (issue 40, item 10): "21.1 ms more (46 %)" from 40 samples with a 277 ms outlier
+    // and no uncertainty. A finding gives the shift of the totals with its 95 % interval, and says
+    // when the levels cannot be told apart.
+    void findingsGiveTheShiftWithItsInterval()
+    {
+        QFETCH(qint64, shiftNs);
+        QTemporaryDir dir;
+        QString why;
+        const QByteArray yaml = "samples: 40\nfactors:\n  qos: [0, 1]\n";
+        const auto plan = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
+        QVERIFY2(plan && plan->cells.size() == 2, qPrintable(why));
+        QVERIFY(QDir(dir.path()).mkpath(u"runs"_s));
+        QJsonArray cells;
+        for (int i = 0; i < 2; ++i) {
+            const ExperimentCell& cell = plan->cells[i];
+            SyntheticRun synthetic = SyntheticRun::paper(40, 0, 100 + quint64(i));
+            if (i == 1) {
+                for (auto& sample : synthetic.samples)
+                    for (std::size_t t = 6; t < sample.size(); ++t) // a slower detection
+                        sample[t] += shiftNs;
+                synthetic.samples[5].back() += 190'000'000; // one total of about 277 ms
+            }
+            RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
+            run.info.pipeline = Pipeline(synthetic.topics, 0);
+            run.info.cell = cell.id();
+            QVERIFY2(RunFile::write(dir.filePath(ExperimentFolder::runPathOf(cell)), run, &why),
+                     qPrintable(why));
+            cells.append(QJsonObject {{u"id"_s, cell.id()},
+                                      {u"state"_s, u"complete"_s},
+                                      {u"samples"_s, 40},
+                                      {u"run"_s, ExperimentFolder::runPathOf(cell)}});
+        }
+        QVERIFY(writeFolder(dir.path(), yaml, cells));
+        const std::optional<ExperimentReport> report = ExperimentReport::load(dir.path(), &why);
+        QVERIFY2(report, qPrintable(why));
+        QString finding;
+        for (const QString& f : report->findings())
+            if (f.startsWith(u"qos: "_s))
+                finding = f;
+        static const QRegularExpression interval(
+            u"shift by (-?[0-9.]+) ms \\[(-?[0-9.]+), (-?[0-9.]+)\\] ms, 95 %"_s);
+        const QRegularExpressionMatch m = interval.match(finding);
+        QVERIFY2(m.hasMatch(), qPrintable(finding));
+        const double low = m.captured(2).toDouble();
+        const double high = m.captured(3).toDouble();
+        QVERIFY2(low <= m.captured(1).toDouble() && m.captured(1).toDouble() <= high, qPrintable(finding));
+        if (shiftNs == 0) {
+            QVERIFY2(
+                finding.startsWith(u"qos: no significant difference between 0 and 1: the totals shift by "_s),
+                qPrintable(finding));
+            QVERIFY2(low < 0 && high > 0, qPrintable(finding));
+            QVERIFY2(!finding.contains(u"more ("_s), qPrintable(finding));
+        } else {
+            QVERIFY2(finding.contains(u"ms more ("_s) && !finding.contains(u"no significant"_s),
+                     qPrintable(finding));
+            QVERIFY2(low > 15 && high < 35, qPrintable(finding));
+        }
+    }
+
 private:
     /// Every field of an event, to compare one read back with the one written.
     static QStringList fieldsOf(const ExperimentEvent& e)

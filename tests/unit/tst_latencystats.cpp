@@ -4,6 +4,8 @@
 #include "latency/latencyengine.h"
 #include "latency/latencyreport.h"
 #include "latency/latencystatsmodel.h"
+#include "latency/latencywarnings.h"
+#include "latency/shiftestimate.h"
 #include "latency/sortedblocks.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
@@ -11,10 +13,12 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+#include <random>
 #include <set>
 
 using namespace Qt::StringLiterals;
@@ -436,6 +440,139 @@ private slots:
         QCOMPARE(engine.samples(), 0);
         QCOMPARE(engine.series(0).count(), 0);
         QCOMPARE(engine.seriesCount(), 13);
+    }
+
+    // Regression (issue 40, item 4): "communication, round trip -9.86 ms" was pinned on top with no
+    // warning. A stage on one host, the total and the derived figures cannot be negative; a
+    // crossing between two clocks and the clock offset can.
+    void aNegativeFigureIsFlaggedWithItsReason()
+    {
+        // Vehicle a, b; cloud c, d; vehicle e, f. Stamp b comes 5 ms before a on the same clock;
+        // the cloud's clock runs 40 ms behind, so the outbound crossing is negative (and fine).
+        Pipeline p({u"/v/a"_s, u"/v/b"_s, u"/c/c"_s, u"/c/d"_s, u"/v/e"_s, u"/v/f"_s});
+        for (const QString& t : {u"/v/a"_s, u"/v/b"_s, u"/v/e"_s, u"/v/f"_s})
+            p.setHost(t, u"vehicle"_s);
+        p.setHost(u"/c/c"_s, u"cloud"_s);
+        p.setHost(u"/c/d"_s, u"cloud"_s);
+        LatencyEngine engine(p);
+        for (qint64 s = 0; s < 20; ++s) {
+            const qint64 t0 = s * 100'000'000;
+            engine.addSample({t0, t0 - 5'000'000, t0 + 10'000'000 - 40'000'000, t0 + 12'000'000 - 40'000'000,
+                              t0 + 30'000'000, t0 + 31'000'000});
+        }
+        const QList<LatencyWarning> warnings = LatencyWarnings::of(engine);
+        QCOMPARE(warnings.size(), 1);
+        QCOMPARE(warnings[0].seriesId, SeriesId::ofStage(0).toString());
+        QCOMPARE(
+            warnings[0].reason,
+            u"median -5.00 ms: a latency cannot be negative, so the stamps' order or their hosts are wrong"_s);
+        QVERIFY(engine.series(engine.stageSeries(1)).stats().median < 0); // the crossing: not flagged
+
+        // The stats model marks the row and says what to do; the report carries the warning.
+        LatencyStatsModel model;
+        model.refresh(engine);
+        const QModelIndex label = model.index(0, LatencyStatsModel::SeriesColumn);
+        QVERIFY2(label.data().toString().startsWith(u"⚠ "_s), qPrintable(label.data().toString()));
+        QCOMPARE(label.data(LatencyStatsModel::WarningRole).toString(), warnings[0].reason);
+        QVERIFY(label.data(Qt::ToolTipRole).toString().contains(u"Host column"_s));
+        QVERIFY(model.index(1, 0).data(LatencyStatsModel::WarningRole).toString().isEmpty());
+        const QJsonArray json = LatencyReport::json(engine).value(u"warnings"_s).toArray();
+        QCOMPARE(json.size(), 1);
+        QCOMPARE(json[0].toObject().value(u"series"_s).toString(), u"stage:0"_s);
+
+        // One clock: the crossing's negative median is a contradiction too.
+        p.setOneClock(true);
+        LatencyEngine one(p);
+        one.addSample({0, 1'000'000, -3'000'000, -2'000'000, 5'000'000, 6'000'000});
+        QCOMPARE(LatencyWarnings::of(one).size(), 2); // the outbound crossing and "there"
+    }
+
+    // The order of the issue: the vehicle's return stamps before the cloud's. Its crossings say
+    // that the stamps of the hosts are interleaved, whatever the figures.
+    void anOrderAgainstTheHostsIsFlagged()
+    {
+        Pipeline p({u"/v/a"_s, u"/c/b"_s, u"/v/c"_s, u"/c/d"_s});
+        p.setHost(u"/v/a"_s, u"vehicle"_s);
+        p.setHost(u"/c/b"_s, u"cloud"_s);
+        p.setHost(u"/v/c"_s, u"vehicle"_s);
+        p.setHost(u"/c/d"_s, u"cloud"_s);
+        LatencyEngine engine(p);
+        engine.addSample({0, 10'000'000, 20'000'000, 30'000'000});
+        const QList<LatencyWarning> warnings = LatencyWarnings::of(engine);
+        QCOMPARE(warnings.size(), 1);
+        QCOMPARE(warnings[0].seriesId, SeriesId::ofKind(SeriesKind::RoundTrip).toString());
+        QCOMPARE(warnings[0].label, u"communication, round trip"_s);
+        QVERIFY2(warnings[0].reason.contains(u"3 times where going there and back crosses 2"_s),
+                 qPrintable(warnings[0].reason));
+        // Out and back: nothing to say.
+        const SyntheticRun run = SyntheticRun::paper(30, 35'000'000, 3);
+        QVERIFY(LatencyWarnings::of(engineFor(run, true, 0)).isEmpty());
+    }
+
+    void shiftMatchesNumpy_data()
+    {
+        QTest::addColumn<int>("n");
+        QTest::addColumn<int>("m");
+        QTest::addColumn<qint64>("shiftNs");
+        QTest::addColumn<bool>("outlier");
+        QTest::addColumn<bool>("significant");
+        QTest::newRow("same distribution") << 40 << 40 << qint64(0) << false << false;
+        QTest::newRow("same distribution, a 277 ms outlier") << 40 << 40 << qint64(0) << true << false;
+        QTest::newRow("5 ms slower") << 40 << 40 << qint64(5'000'000) << false << true;
+        QTest::newRow("5 ms slower, unequal sizes") << 37 << 52 << qint64(5'000'000) << true << true;
+        QTest::newRow("odd number of differences") << 5 << 7 << qint64(-20'000'000) << false << true;
+    }
+
+    // Regression (issue 40, item 10): findings claimed "21.1 ms more (46 %)" from 40 samples with a
+    // 277 ms outlier and no uncertainty. The shift and its interval, against numpy.
+    void shiftMatchesNumpy()
+    {
+        QFETCH(int, n);
+        QFETCH(int, m);
+        QFETCH(qint64, shiftNs);
+        QFETCH(bool, outlier);
+        QFETCH(bool, significant);
+        std::mt19937_64 rng(quint64(n * 1000 + m));
+        std::exponential_distribution<double> jitter(1.0 / 3e6); // 3 ms
+        std::vector<qint64> x;
+        std::vector<qint64> y;
+        for (int i = 0; i < n; ++i)
+            x.push_back(45'000'000 + qint64(jitter(rng)));
+        for (int i = 0; i < m; ++i)
+            y.push_back(45'000'000 + shiftNs + qint64(jitter(rng)));
+        if (outlier)
+            y.back() = 277'000'000;
+        QTemporaryDir dir;
+        QFile f(dir.filePath(u"xy.txt"_s));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        for (const auto* v : {&x, &y}) {
+            for (qint64 value : *v)
+                f.write(QByteArray::number(value) + ' ');
+            f.write("\n");
+        }
+        f.close();
+        const QJsonObject ref = PythonRef::run(u"shift_reference.py"_s, {f.fileName()}).object();
+        QVERIFY2(!ref.isEmpty(), "the numpy reference did not run");
+        const std::optional<ShiftEstimate> e = ShiftEstimate::of(x, y);
+        QVERIFY(e);
+        QVERIFY2(close(e->shiftMs, ref.value(u"shift_ms"_s).toDouble()),
+                 qPrintable(u"%1 vs %2"_s.arg(e->shiftMs).arg(ref.value(u"shift_ms"_s).toDouble())));
+        QVERIFY(close(e->lowMs, ref.value(u"low_ms"_s).toDouble()));
+        QVERIFY(close(e->highMs, ref.value(u"high_ms"_s).toDouble()));
+        QVERIFY(e->lowMs <= e->shiftMs && e->shiftMs <= e->highMs);
+        QCOMPARE(e->significant(), significant);
+    }
+
+    void shiftNeedsEnoughSamples()
+    {
+        QVERIFY(!ShiftEstimate::of({}, {1, 2, 3}));
+        QVERIFY(!ShiftEstimate::of({1, 2}, {3, 4}));
+        // Values at the ends of the range: differences beyond 64 bits stay exact.
+        const qint64 big = std::numeric_limits<qint64>::max();
+        const qint64 small = std::numeric_limits<qint64>::min();
+        const auto e = ShiftEstimate::of({small, small, small, small, small}, {big, big, big, big, big}, 1.0);
+        QVERIFY(e);
+        QCOMPARE(e->lowMs, double(big) - double(small));
     }
 };
 

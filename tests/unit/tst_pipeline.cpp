@@ -252,6 +252,35 @@ private slots:
         QCOMPARE(p.host(11), u"vehicle"_s);
         QCOMPARE(d.stampCount(run.topics[3]), 50u);
     }
+    void discoveryOrdersAcrossClockOffsets_data()
+    {
+        QTest::addColumn<qint64>("offsetNs");
+        QTest::newRow("one clock") << qint64(0);
+        QTest::newRow("cloud 35 ms ahead") << qint64(35'000'000);
+        QTest::newRow("cloud 250 ms behind") << qint64(-250'000'000);
+        QTest::newRow("cloud 2 s ahead") << qint64(2'000'000'000);
+    }
+
+    // Regression (issue 40, item 4): with the cloud's clock 35 ms ahead the vehicle's return stamps
+    // came before the cloud's, and the pinned round trip read -9.86 ms. Each host's clock orders
+    // its own stamps; the cloud's visit goes where it fits, whatever the offset.
+    void discoveryOrdersAcrossClockOffsets()
+    {
+        QFETCH(qint64, offsetNs);
+        const SyntheticRun run = SyntheticRun::paper(60, offsetNs, 17);
+        PipelineDiscovery d;
+        for (const auto& s : run.samples)
+            for (int t = run.topics.size() - 1; t >= 0; --t) // the order they arrive in tells nothing
+                d.add({run.topics[t], s.front(), s[std::size_t(t)], 0});
+        const Pipeline p = d.propose();
+        QCOMPARE(p.topics(), run.topics);
+        QStringList hosts;
+        for (int t = 0; t < p.topicCount(); ++t)
+            hosts << p.host(t);
+        QCOMPARE(hosts, run.hosts());
+        QCOMPARE(p.crossings(), (QList<int> {2, 8}));
+    }
+
     // Stamps of a broker with many stamp topics: memory stays bounded by stamps, not only by
     // samples (2,000 samples of 100,000 topics were 200 million kept stamps).
     void discoveryKeepsABoundedNumberOfStamps()

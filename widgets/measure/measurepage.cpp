@@ -100,6 +100,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_pause(new QAction(tr("&Pause"), this))
     , m_reset(new QAction(tr("&Reset"), this))
     , m_mode(new QLabel(this))
+    , m_warning(new QLabel(this))
     , m_counts(new LiveText(this))
     , m_runBar(new RunBar(measure, this))
 {
@@ -297,6 +298,16 @@ QWidget* MeasurePage::createChartPane()
     auto* layout = new QVBoxLayout(pane);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
+    // A figure that contradicts the pipeline is said where it is, not drawn as a result.
+    m_warning->setObjectName(u"measureWarning"_s);
+    m_warning->setWordWrap(true);
+    m_warning->setTextFormat(Qt::RichText);
+    m_warning->setFrameShape(QFrame::StyledPanel);
+    m_warning->setContentsMargins(6, 3, 6, 3);
+    m_warning->setStyleSheet(u"QLabel#measureWarning { background: #fff3cd; color: #664d03; }"_s);
+    m_warning->hide();
+    connect(m_warning, &QLabel::linkActivated, this, &MeasurePage::onWarningLink);
+    layout->addWidget(m_warning);
     layout->addWidget(m_summaryView);
     layout->addWidget(split, 1);
     return pane;
@@ -469,6 +480,40 @@ void MeasurePage::onUpdated()
     m_pipeline->refreshCounts();
     m_seen->update(m_measure->discovery(), m_measure->pipeline(), m_measure->malformedStampsByTopic());
     updateCounts();
+    updateWarning();
+}
+
+void MeasurePage::updateWarning()
+{
+    const QList<LatencyWarning>& warnings = m_measure->statsModel()->warnings();
+    if (warnings.isEmpty()) {
+        m_warning->hide();
+        m_warning->clear();
+        return;
+    }
+    QString text = u"<b>⚠ "_s + tr("Not a measurement:").toHtmlEscaped() + u"</b> "_s;
+    text += LatencyWarnings::lines(warnings).join(u"; "_s).toHtmlEscaped() + u". "_s;
+    text += tr("%1 or %2.")
+                .arg(u"<a href=\"hosts\">"_s + tr("Set hosts").toHtmlEscaped() + u"</a>"_s,
+                     u"<a href=\"load\">"_s + tr("load a pipeline").toHtmlEscaped() + u"</a>"_s);
+    m_warning->setText(text);
+    m_warning->setToolTip(LatencyWarnings::fixInWindow());
+    m_warning->show();
+}
+
+void MeasurePage::onWarningLink(const QString& link)
+{
+    if (link == u"load"_s) {
+        choosePipelineFile();
+        return;
+    }
+    // The first host of the pipeline, ready to be typed over.
+    const QModelIndex host = m_pipeline->index(0, PipelineModel::HostColumn);
+    if (!host.isValid())
+        return;
+    m_pipelineView->setFocus();
+    m_pipelineView->setCurrentIndex(host);
+    m_pipelineView->edit(host);
 }
 
 void MeasurePage::onPipelineChanged()
@@ -492,6 +537,7 @@ void MeasurePage::onPipelineChanged()
         m_mode->setText(tr("Edited by hand."));
     m_chart->refresh();
     m_timeline->refresh();
+    updateWarning();
 }
 
 void MeasurePage::updateCounts()

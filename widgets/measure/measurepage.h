@@ -49,6 +49,8 @@ public:
     QCheckBox* logScaleBox() const { return m_log; }
     QCheckBox* smallMultiplesBox() const { return m_multiples; }
     QLabel* modeLabel() const { return m_mode; }
+    /// Above the pinned rows: which figures contradict the pipeline, why, and what to do.
+    QLabel* warningLabel() const { return m_warning; }
     RunBar* runBar() const { return m_runBar; }
     /// Saves the chart as PNG or SVG (by the suffix).
     bool saveChart(const QString& path, QString* error = nullptr);
@@ -75,6 +77,8 @@ private:
     void onUpdated();
     void onPipelineChanged();
     void updateCounts();
+    void updateWarning();
+    void onWarningLink(const QString& link);
     void choosePipelineFile();
     void chooseSaveFile();
     void removeSelectedStamps();
@@ -99,6 +103,7 @@ private:
     QAction* m_pause;
     QAction* m_reset;
     QLabel* m_mode;
+    QLabel* m_warning;
     LiveText* m_counts;
     RunBar* m_runBar;
     QList<QWidget*> m_pipelineControls; ///< disabled while recording or showing a run
