@@ -252,7 +252,12 @@ QVariant RosTopicTree::data(const QModelIndex& index, int role) const
     const int row = m_source ? m_source->rowOf(n->path) : -1;
     if (row < 0)
         return {};
-    return m_source->index(row, sourceColumn(index.column())).data(role);
+    const QVariant value = m_source->index(row, sourceColumn(index.column())).data(role);
+    if (index.column() == TypeColumn && role == Qt::DisplayRole)
+        return value.toString().section(u'/', -1); // `PoseStamped`: the package in the tooltip
+    if (index.column() == TypeColumn && role == Qt::ToolTipRole)
+        return m_source->index(row, RosTopicModel::TypeColumn).data(Qt::DisplayRole);
+    return value;
 }
 
 QVariant RosTopicTree::headerData(int section, Qt::Orientation orientation, int role) const

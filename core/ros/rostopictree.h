@@ -13,8 +13,8 @@
 /// The ROS graph's topics as a namespace tree over a RosTopicModel, as rqt and MQTT Explorer show
 /// names: a row per namespace (`timestamps/`) with its namespaces and topics below, each row
 /// showing its own segment, so that a deep name is read down the tree instead of being cut in
-/// a column. The other columns are the table's (type, publishers, …) for topics, empty for
-/// namespaces.
+/// a column. The other columns are the table's for topics (the type by its last segment, whole in
+/// its tooltip), empty for namespaces.
 ///
 /// Follows the table row by row (its inserts and removes become inserts and removes here, never
 /// a reset but for a new table), and its figures' changes. A dragged row carries its topic, a namespace every

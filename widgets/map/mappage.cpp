@@ -13,7 +13,6 @@
 #include "ros/rostopictree.h"
 #include "session/livesession.h"
 #include "session/mappinghealthevaluator.h"
-#include "widgets/common/namedelegate.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/map/bridgedtopicsproxy.h"
 #include "widgets/map/configeditor.h"
@@ -64,7 +63,7 @@ MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoS
     split->setStretchFactor(0, 0);
     split->setStretchFactor(1, 1);
     split->setCollapsible(1, false);
-    ViewSetup::initialSizes(split, {340, 940});
+    ViewSetup::initialSizes(split, {370, 910});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);
     v->addLayout(bar);
@@ -186,15 +185,14 @@ QWidget* MapPage::createRosPane()
     m_rosView->setModel(m_rosFilter);
     m_rosView->setUniformRowHeights(true);
     m_rosView->setIndentation(12); // deep names keep room for their segments
-    NameDelegate::install(m_rosView, RosTopicTree::TypeColumn);
     ViewSetup::dragsCopies(m_rosView);
     QHeaderView* header = m_rosView->header();
     header->setStretchLastSection(false);
     header->setSectionResizeMode(RosTopicTree::TopicColumn, QHeaderView::Stretch);
     header->setSectionResizeMode(RosTopicTree::TypeColumn, QHeaderView::Interactive);
-    // The names get the panel's width; a type shows its last segment (whole in Discover).
+    // The names get the panel's width; a type shows its last segment (whole in its tooltip).
     m_rosView->setColumnHidden(RosTopicTree::PublishersColumn, true);
-    m_rosView->setColumnWidth(RosTopicTree::TypeColumn, 80);
+    m_rosView->setColumnWidth(RosTopicTree::TypeColumn, 105); // `PointCloud2`, `PoseStamped` in bold
     v->addWidget(m_rosView, 1);
     connect(filter, &QLineEdit::textChanged, m_rosFilter, [this](const QString& text) {
         m_rosFilter->setFilterFixedString(text);
