@@ -414,6 +414,18 @@ Befehle:
         <source>the file is saved in another layout</source>
         <translation>die Datei wird in einem anderen Layout gespeichert</translation>
     </message>
+    <message>
+        <source>Split the file.</source>
+        <translation>Teilen Sie die Datei auf.</translation>
+    </message>
+    <message>
+        <source>The file is not a bridge config.</source>
+        <translation>Die Datei ist keine Bridge-Konfiguration.</translation>
+    </message>
+    <message>
+        <source>%1 is open read-only: %2</source>
+        <translation>%1 ist schreibgeschützt geöffnet: %2</translation>
+    </message>
 </context>
 <context>
     <name>ConfigEditor</name>
@@ -608,6 +620,10 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <source>%1 has unsaved changes. Save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
+    <message>
+        <source>Opened %1 read-only: %2</source>
+        <translation>%1 schreibgeschützt geöffnet: %2</translation>
+    </message>
 </context>
 <context>
     <name>ConfigReader</name>
@@ -792,6 +808,10 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
             <numerusform>%n Zuordnung: %1</numerusform>
             <numerusform>%n Zuordnungen: %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>(read-only)</source>
+        <translation>(schreibgeschützt)</translation>
     </message>
 </context>
 <context>
@@ -3827,10 +3847,6 @@ factors:
         <translation>MQTT-&amp;Präfix:</translation>
     </message>
     <message>
-        <source>Drag ROS topics onto the MQTT tree and MQTT topics onto the ROS topics; drop a topic on a mapping to retarget it.</source>
-        <translation>ROS-Topics auf den MQTT-Baum ziehen und MQTT-Topics auf die ROS-Topics; ein Topic auf einer Zuordnung ablegen, um sie umzulenken.</translation>
-    </message>
-    <message>
         <source>Filter ROS topics…</source>
         <translation>ROS-Topics filtern …</translation>
     </message>
@@ -3857,6 +3873,18 @@ factors:
     <message>
         <source>Retarget to %1</source>
         <translation>Auf %1 umlenken</translation>
+    </message>
+    <message>
+        <source>Discovered Topics</source>
+        <translation>Gefundene Topics</translation>
+    </message>
+    <message>
+        <source>Show or fold away the discovered ROS and MQTT topics (Ctrl+Shift+T)</source>
+        <translation>Die gefundenen ROS- und MQTT-Topics zeigen oder einklappen (Strg+Umschalt+T)</translation>
+    </message>
+    <message>
+        <source>Drag ROS topics onto the MQTT tree, MQTT topics onto a ROS namespace (or onto one ROS topic to publish there); drop a topic on a mapping to retarget it.</source>
+        <translation>Ziehen Sie ROS-Topics auf den MQTT-Baum, MQTT-Topics auf einen ROS-Namensraum (oder auf ein ROS-Topic, um dorthin zu veröffentlichen); ein Topic auf einer Zuordnung ändert deren Ziel.</translation>
     </message>
 </context>
 <context>
@@ -3996,6 +4024,18 @@ factors:
     <message>
         <source>Last one-way latency on the broker: %1 ms.</source>
         <translation>Letzte Einweg-Latenz am Broker: %1 ms.</translation>
+    </message>
+    <message>
+        <source>Over the same %1 s, %2 messages were published on &apos;%3&apos; and %4 arrived on &apos;%5&apos;.</source>
+        <translation>In denselben %1 s wurden %2 Nachrichten auf &apos;%3&apos; veröffentlicht und %4 kamen auf &apos;%5&apos; an.</translation>
+    </message>
+    <message>
+        <source>One message in flight at the interval&apos;s edge is counted on one side only.</source>
+        <translation>Eine Nachricht, die am Rand des Intervalls unterwegs ist, wird nur auf einer Seite gezählt.</translation>
+    </message>
+    <message>
+        <source>More arrive than are published: does something else publish on &apos;%1&apos; too?</source>
+        <translation>Es kommen mehr an, als veröffentlicht werden: veröffentlicht noch etwas anderes auf &apos;%1&apos;?</translation>
     </message>
 </context>
 <context>
@@ -7224,6 +7264,13 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
+    <name>RosTopicTree</name>
+    <message>
+        <source>Namespace %1: drop MQTT topics here to bridge them below it</source>
+        <translation>Namensraum %1: MQTT-Topics hier ablegen, um sie darunter zu überbrücken</translation>
+    </message>
+</context>
+<context>
     <name>RosTypeRegistry</name>
     <message>
         <source>line %1: expected &apos;MSG: package/Type&apos; after the separator</source>
@@ -8101,10 +8148,6 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
         <translation>Verschachteln Sie weniger tief.</translation>
     </message>
     <message>
-        <source>The file has more than %1 bytes; at most %1 are read.</source>
-        <translation>Die Datei hat mehr als %1 Bytes; höchstens %1 werden gelesen.</translation>
-    </message>
-    <message>
         <source>Byte 0x%1 is not valid UTF-8; the file must be UTF-8 text.</source>
         <translation>Das Byte 0x%1 ist kein gültiges UTF-8; die Datei muss UTF-8-Text sein.</translation>
     </message>
@@ -8148,6 +8191,14 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
         <source>Write the key as text, or remove the entry.</source>
         <translation>Schreiben Sie den Schlüssel als Text, oder entfernen Sie den Eintrag.</translation>
     </message>
+    <message>
+        <source>The file is larger than %1, the limit.</source>
+        <translation>Die Datei ist größer als die Grenze von %1.</translation>
+    </message>
+    <message>
+        <source>The file is %1, the limit is %2.</source>
+        <translation>Die Datei ist %1 groß, die Grenze ist %2.</translation>
+    </message>
 </context>
 <context>
     <name>YamlPreview</name>
@@ -8174,6 +8225,22 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     <message>
         <source>Saving in this layout writes the file anew: its comments are not kept.</source>
         <translation>In diesem Layout wird die Datei neu geschrieben: Ihre Kommentare gehen verloren.</translation>
+    </message>
+    <message>
+        <source>Read-only: this file cannot be edited or saved here, because it is not a bridge config Bridgescope can read. Fix it in a text editor and open it again.</source>
+        <translation>Schreibgeschützt: Diese Datei kann hier weder bearbeitet noch gespeichert werden, weil sie keine Bridge-Konfiguration ist, die Bridgescope lesen kann. Korrigieren Sie sie in einem Texteditor und öffnen Sie sie erneut.</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
+    </message>
+    <message>
+        <source>Only the first %1 of %2 are shown.</source>
+        <translation>Nur die ersten %1 von %2 werden gezeigt.</translation>
+    </message>
+    <message>
+        <source>Line %1 is past the part shown.</source>
+        <translation>Zeile %1 liegt hinter dem gezeigten Teil.</translation>
     </message>
 </context>
 <context>

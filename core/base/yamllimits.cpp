@@ -4,6 +4,7 @@
 #include "base/yamlreader.h"
 
 #include <istream>
+#include <QLocale>
 #include <streambuf>
 #include <unordered_map>
 #include <vector>
@@ -333,11 +334,25 @@ bool YamlLimits::isUtf8(const QByteArray& bytes, qsizetype* badOffset)
     return true;
 }
 
+QString YamlLimits::tooLargeMessage(qint64 size)
+{
+    // The file's size in the units people think in; its byte offset at the limit is no place.
+    const QLocale locale;
+    const auto human = [&locale](qint64 bytes, int decimals) {
+        return locale.formattedDataSize(bytes, decimals, QLocale::DataSizeTraditionalFormat);
+    };
+    const auto decimalsOf = [](qint64 bytes) { return bytes >= 10LL * 1024 * 1024 ? 0 : 1; };
+    const QString limit = human(maxBytes, 0);
+    const QString shown = human(size, decimalsOf(size));
+    if (size <= maxBytes + 1 || shown == human(maxBytes, decimalsOf(size)))
+        return tr("The file is larger than %1, the limit.").arg(limit);
+    return tr("The file is %1, the limit is %2.").arg(shown, limit);
+}
+
 std::optional<YamlLimits::Violation> YamlLimits::check(const QByteArray& text)
 {
     if (text.size() > maxBytes)
-        return Violation {positionOf(text, maxBytes), u"yaml-too-large"_s,
-                          tr("The file has more than %1 bytes; at most %1 are read.").arg(maxBytes),
+        return Violation {TextPos {}, u"yaml-too-large"_s, tooLargeMessage(text.size()),
                           tr("Split the file.")};
     qsizetype bad = 0;
     if (!isUtf8(text, &bad))

@@ -50,6 +50,9 @@ public:
     /// Nothing when `text` is UTF-8 and within every limit. YAML syntax errors are not reported
     /// here (the loader reports them); only the first document is checked, as YAML::Load reads.
     static std::optional<Violation> check(const QByteArray& text);
+    /// "The file is 17 MB, the limit is 8 MB." for a text of `size` bytes past maxBytes (said
+    /// without its size when that is not known past maxBytes + 1, what readFile() reads).
+    static QString tooLargeMessage(qint64 size);
     /// YAML::Load of the first document of `text` after check(). Throws Exceeded when a limit is
     /// passed and YAML::Exception on a syntax error.
     static YAML::Node load(const QByteArray& text);

@@ -3,6 +3,7 @@
 
 #include "base/atomicfile.h"
 #include "base/logging.h"
+#include "base/yamllimits.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"
 #include "config/configwriter.h"
@@ -28,12 +29,26 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
         result.error = tr("Cannot open %1: %2").arg(path, file.errorString());
         return result;
     }
-    const QByteArray text = file.readAll();
+    // Bounded: a file past the limit is said to be so by its size, and only its start is read.
+    result.fileSize = file.size();
+    if (result.fileSize > YamlLimits::maxBytes) {
+        Problem tooLarge;
+        tooLarge.code = u"yaml-too-large"_s;
+        tooLarge.message = YamlLimits::tooLargeMessage(result.fileSize);
+        tooLarge.fix = tr("Split the file.");
+        result.problems = {tooLarge};
+        result.error = tooLarge.format(path);
+        result.text = file.read(kShownBytes);
+        return result;
+    }
+    const QByteArray text = file.read(YamlLimits::maxBytes + 1);
     const ConfigReadResult read = ConfigReader::read(text);
     if (!read.parsed) {
         result.problems = read.problems;
         result.error = read.problems.isEmpty() ? tr("%1 is not a bridge config.").arg(path)
                                                : read.problems.first().format(path);
+        result.text = text.left(kShownBytes);
+        result.fileSize = std::max<qint64>(result.fileSize, text.size());
         return result;
     }
     emit aboutToReset();
@@ -46,6 +61,7 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     m_lossy = read.lossy;
     m_modified = false;
     m_readProblems = read.problems;
+    m_readOnly = ReadOnlyView();
     finishReset();
     qCDebug(lcConfig).noquote() << "opened" << m_path << layoutName(m_layout) << m_current.mappings.size()
                                 << "mappings," << read.problems.size() << "read problems"
@@ -54,9 +70,43 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     return result;
 }
 
+void ConfigDocument::openReadOnly(const QString& path, const LoadResult& failed)
+{
+    emit aboutToReset();
+    m_path = QFileInfo(path).absoluteFilePath();
+    m_suggestedPath.clear();
+    m_text.clear();
+    m_baseline = BridgeConfig();
+    m_current = BridgeConfig();
+    m_layout = ConfigLayout::Ros1;
+    m_lossy = false;
+    m_modified = false;
+    m_readProblems = failed.problems;
+    m_readOnly = ReadOnlyView();
+    if (failed.problems.isEmpty()) {
+        m_readOnly.reason = failed.error;
+    } else {
+        const Problem& first = failed.problems.first();
+        m_readOnly.reason = first.message;
+        if (!first.fix.isEmpty())
+            m_readOnly.reason += u" ("_s + first.fix + u')';
+    }
+    if (m_readOnly.reason.isEmpty())
+        m_readOnly.reason = tr("The file is not a bridge config.");
+    m_readOnly.errorPos = failed.problems.isEmpty() ? TextPos() : failed.problems.first().pos;
+    // Shown as text: a cut multi-byte character at the end, or bytes that are not UTF-8, become
+    // replacement characters rather than an error.
+    m_readOnly.text = QString::fromUtf8(failed.text);
+    m_readOnly.fileSize = failed.fileSize;
+    m_readOnly.truncated = failed.fileSize > failed.text.size();
+    finishReset();
+    qCDebug(lcConfig).noquote() << "opened read-only" << m_path << failed.error;
+}
+
 ConfigDocument::Snapshot ConfigDocument::snapshot() const
 {
-    return {m_path, m_suggestedPath, m_text, m_baseline, m_current, m_layout, m_lossy, m_modified, m_readProblems};
+    return {m_path,   m_suggestedPath, m_text,     m_baseline,     m_current,
+            m_layout, m_lossy,         m_modified, m_readProblems, m_readOnly};
 }
 
 void ConfigDocument::restore(const Snapshot& s)
@@ -71,6 +121,7 @@ void ConfigDocument::restore(const Snapshot& s)
     m_lossy = s.lossy;
     m_modified = s.modified;
     m_readProblems = s.readProblems;
+    m_readOnly = s.readOnly;
     finishReset();
 }
 
@@ -88,6 +139,7 @@ void ConfigDocument::reset(const BridgeConfig& config, const QString& suggestedP
     m_lossy = false;
     m_modified = true;
     m_readProblems.clear();
+    m_readOnly = ReadOnlyView();
     finishReset();
 }
 
@@ -117,6 +169,11 @@ void ConfigDocument::setValidationOptions(const ConfigValidator::Options& option
 
 QString ConfigDocument::preview(ConfigLayout layout, bool* keepsComments, QStringList* notes) const
 {
+    if (isReadOnly()) {
+        if (keepsComments)
+            *keepsComments = true;
+        return m_readOnly.text;
+    }
     if (!m_text.isEmpty() && layout == m_baseline.layout && !m_lossy) {
         BridgeConfig wanted = m_current;
         wanted.layout = layout;
@@ -134,6 +191,10 @@ QString ConfigDocument::preview(ConfigLayout layout, bool* keepsComments, QStrin
 ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayout layout, bool allowRewrite)
 {
     SaveResult result;
+    if (isReadOnly()) {
+        result.error = tr("%1 is open read-only: %2").arg(QFileInfo(m_path).fileName(), m_readOnly.reason);
+        return result;
+    }
     BridgeConfig wanted = m_current;
     wanted.layout = layout;
     QByteArray bytes;

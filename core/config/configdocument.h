@@ -26,6 +26,21 @@ public:
         bool unreadable = false; ///< the file could not be read at all (as opposed to invalid)
         QString error; ///< why it could not be opened
         QList<Problem> problems; ///< syntax/structure problems when !ok
+        /// When the file was read but is no config (or too large): its first bytes, at most
+        /// kShownBytes, to be looked at read-only (openReadOnly()).
+        QByteArray text;
+        qint64 fileSize = 0;
+    };
+    /// What a file that cannot be edited shows of itself: at most this much of its text.
+    static constexpr qsizetype kShownBytes = 1024 * 1024;
+    /// A file opened only to be read: why, where the error is, and as much of its text as is shown.
+    struct ReadOnlyView
+    {
+        QString reason; ///< the error that keeps it from being edited; empty: not read-only
+        TextPos errorPos;
+        QString text; ///< the file's first kShownBytes
+        qint64 fileSize = 0;
+        bool truncated = false; ///< the text is the file's first part only
     };
     struct SaveResult
     {
@@ -50,12 +65,18 @@ public:
         bool lossy = false;
         bool modified = false;
         QList<Problem> readProblems;
+        ReadOnlyView readOnly;
     };
     Snapshot snapshot() const;
     /// Becomes `s` again, as a load would (resetDone and the rest are emitted).
     void restore(const Snapshot& s);
 
     LoadResult load(const QString& path);
+    /// Shows a file that load() could read but not take (`failed`): its text, read-only, with
+    /// its error; nothing can be edited or saved (a broken or too large file is fixed elsewhere).
+    void openReadOnly(const QString& path, const LoadResult& failed);
+    bool isReadOnly() const { return !m_readOnly.reason.isEmpty(); }
+    const ReadOnlyView& readOnlyView() const { return m_readOnly; }
     /// Replaces the document by `config` (no file), e.g. a generated peer config.
     void reset(const BridgeConfig& config, const QString& suggestedPath = QString());
     void clear();
@@ -116,6 +137,7 @@ private:
     bool m_lossy = false;
     bool m_modified = false;
     QList<Problem> m_readProblems; ///< structure problems found when the file was read
+    ReadOnlyView m_readOnly;
     QList<Problem> m_problems;
     QHash<quint64, Severity> m_severity;
     ConfigValidator::Options m_validation;

@@ -20,10 +20,11 @@ QString Problem::severityName(Severity s)
 
 QString Problem::format(const QString& fileName) const
 {
-    const int line = pos.isValid() ? pos.line + 1 : 1;
-    const int column = pos.isValid() ? pos.column + 1 : 1;
-    QString text = fileName + u':' + QString::number(line) + u':' + QString::number(column) + u": "_s
-        + severityName(severity) + u": "_s + message;
+    // A place only where there is one: a file too large has no line to point at.
+    QString text = fileName;
+    if (pos.isValid())
+        text += u':' + QString::number(pos.line + 1) + u':' + QString::number(pos.column + 1);
+    text += u": "_s + severityName(severity) + u": "_s + message;
     if (!fix.isEmpty())
         text += u" ("_s + fix + u')';
     return text;

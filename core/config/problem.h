@@ -21,7 +21,7 @@ struct Problem
     QString field; ///< the option path it is about, if any
     TextPos pos; ///< where in the file
 
-    /// "FILE:LINE:COL: error: message; fix" (positions one-based; 1:1 when unknown).
+    /// "FILE:LINE:COL: error: message (fix)", positions one-based; "FILE: error: …" when it has none.
     QString format(const QString& fileName) const;
     static QString severityName(Severity s);
 };

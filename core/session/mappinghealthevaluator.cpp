@@ -4,6 +4,7 @@
 #include "base/topicfigures.h"
 #include "ros/rosmasterapi.h"
 #include "ros2/ros2graph.h"
+#include "session/flowrates.h"
 
 using namespace Qt::StringLiterals;
 
@@ -186,10 +187,41 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
                 h.detail = tr("'%1' (%2) is published on '%3' (%4).").arg(mqtt, mqttRate, ros, rosRate);
             }
         }
+        if (h.state == MappingHealth::Healthy)
+            rateOverOneWindow(m, in, &h);
         overrule(m, rosInfo, mqttInfo, in, &h);
         out.insert(m.id, h);
     }
     return out;
+}
+
+void MappingHealthEvaluator::rateOverOneWindow(const Mapping& m, const Inputs& in, MappingHealth* h)
+{
+    const std::optional<FlowRates::Flow> f
+        = in.flows ? in.flows->flow(m.rosTopic(), m.mqttTopic()) : std::nullopt;
+    if (!f)
+        return;
+    const bool out = m.direction == Direction::Ros2Mqtt;
+    const quint64 sent = out ? f->rosMessages : f->mqttMessages;
+    const quint64 arrived = out ? f->mqttMessages : f->rosMessages;
+    const QString from = out ? m.rosTopic() : m.mqttTopic();
+    const QString to = out ? m.mqttTopic() : m.rosTopic();
+    const double seconds = double(f->spanNs) / 1e9;
+    const double sentHz = double(sent) / seconds;
+    // A message in flight at an edge of the interval is counted on one side only: one message
+    // more or less is the count's resolution, not a faster or slower destination.
+    const bool sameCount = arrived + 1 >= sent && arrived <= sent + 1;
+    const double arrivedHz = sameCount ? sentHz : double(arrived) / seconds;
+    h->summary = tr("%1 Hz").arg(rateFigure(sentHz) + u" → "_s + rateFigure(arrivedHz));
+    QString detail = tr("Over the same %1 s, %2 messages were published on '%3' and %4 arrived on '%5'.")
+                         .arg(QString::number(seconds, 'f', 1), QString::number(sent), from,
+                              QString::number(arrived), to); // one arg(): names are not patterns
+    if (sameCount && arrived != sent)
+        detail += u' ' + tr("One message in flight at the interval's edge is counted on one side only.");
+    else if (arrived > sent)
+        detail
+            += u' ' + tr("More arrive than are published: does something else publish on '%1' too?").arg(to);
+    h->detail = detail;
 }
 
 void MappingHealthEvaluator::overrule(const Mapping& m, const RosTopicInfo* rosInfo, const TopicFigures* mqttInfo,

@@ -12,6 +12,7 @@ struct RosTopicInfo;
 struct Ros2Graph;
 struct Ros2Qos;
 struct TopicFigures;
+class FlowRates;
 
 /// Evaluates every mapping of a config against the ROS graph and the figures of its ROS and MQTT
 /// topics, as their MessageSources give them. For a ROS 2 graph (`ros2` set; `graph` is then its
@@ -31,6 +32,9 @@ public:
         qint64 nowNs = 0;
         qint64 activeWindowNs = 5'000'000'000LL; ///< a topic counts as active for this long after a message
         const Ros2Graph* ros2 = nullptr; ///< the ROS side is this ROS 2 graph
+        /// Both ends' message counts over one window: a flowing mapping's rates are taken from
+        /// there when known (the figures' own rates come from windows of their own).
+        const FlowRates* flows = nullptr;
     };
     static QHash<quint64, MappingHealth> evaluate(const BridgeConfig& config, const Inputs& in);
     /// "pkg/msg/Type" and "pkg/Type" name the same type.
@@ -42,6 +46,8 @@ public:
     static bool bridgeQos(const Mapping& m, const Ros2Qos& matched, Ros2Qos* qos);
 
 private:
+    /// A flowing mapping's rates and words from both ends counted over the same interval.
+    static void rateOverOneWindow(const Mapping& m, const Inputs& in, MappingHealth* h);
     /// What outranks the flow's verdict: a type announcement that contradicts the ROS graph, a
     /// QoS that keeps the bridge's ROS 2 endpoint from matching; then the last latency is added.
     static void overrule(const Mapping& m, const RosTopicInfo* rosInfo, const TopicFigures* mqttInfo,

@@ -262,10 +262,17 @@ private slots:
         f.close();
         MainWindow w;
         QVERIFY(w.files()->openFile(Fixtures::path(u"mqtt_client/ros1-era-params.yaml"_s)));
-        QVERIFY(!w.files()->openFile(bad));
-        // The open document stays.
+        // A broken file opens read-only in a tab of its own (issue 40); one that cannot be read
+        // at all is refused.
+        QVERIFY(w.files()->openFile(bad));
+        QVERIFY(w.document()->isReadOnly());
+        QVERIFY(!w.files()->openFile(dir.filePath(u"missing.yaml"_s)));
+        // The open document stays, in its tab, with its mappings.
+        QCOMPARE(w.files()->openCount(), 2);
+        w.files()->activate(0);
         QCOMPARE(w.document()->mappingCount(), 4);
         QVERIFY(w.document()->filePath().endsWith(u"ros1-era-params.yaml"_s));
+        QVERIFY(!w.document()->isReadOnly());
     }
 };
 

@@ -11,10 +11,12 @@
 #include "ddschild.h"
 #include "namecheck.h"
 #include "ros/rostopicmodel.h"
+#include "ros/rostopictree.h"
 #include "ros2peer.h"
 #include "rtpscorpus.h"
 #include "session/livesession.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 #include "widgets/discover/detailpane.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/map/configeditor.h"
@@ -267,19 +269,15 @@ private slots:
         // auto QoS matches; the publisher is there, no bridge carries it to the broker
         QCOMPARE(healthOf(page, u"/odom_text"_s), int(MappingHealth::NoBridge));
         // the Map's ROS list is the ROS 2 graph now
-        QAbstractItemModel* rosList = page->findChild<QTableView*>(u"mapRosTopics"_s)->model();
-        QStringList names;
-        for (int r = 0; r < rosList->rowCount(); ++r)
-            names << rosList->index(r, RosTopicModel::TopicColumn).data(RosTopicModel::TopicRole).toString();
-        QVERIFY2(names.contains(u"/scan_text"_s), qPrintable(names.join(u' ')));
+        QAbstractItemModel* rosList = page->rosView()->model();
+        QVERIFY(ViewHelpers::find(rosList, u"/scan_text"_s, RosTopicModel::TopicRole).isValid());
         // At 1280x800 the ROS 2 types keep their last segment, in the bold of bridged topics too.
         w.resize(1280, 800);
         w.pages()->setCurrentWidget(page);
         QTRY_VERIFY(rosList->rowCount() >= 3);
         QTest::qWait(300); // the columns fit themselves 100 ms after a change
-        auto* rosView = page->findChild<QTableView*>(u"mapRosTopics"_s);
-        for (int column : {int(RosTopicModel::TopicColumn), int(RosTopicModel::TypeColumn)}) {
-            const QString problem = namesShownProblem(rosView, column, 3);
+        for (int column : {int(RosTopicTree::TopicColumn), int(RosTopicTree::TypeColumn)}) {
+            const QString problem = treeNamesShownProblem(page->rosView(), column, 3);
             QVERIFY2(problem.isEmpty(), qPrintable(problem));
         }
         // the node leaves: its topics are missing from the graph

@@ -96,6 +96,8 @@ private slots:
                  Fixtures::path(u"mqtt_client/wire/pose.type.bin"_s)});
         mqttPub({u"-t"_s, u"cloud/objects"_s, u"-r"_s, u"-f"_s,
                  Fixtures::path(u"mqtt_client/wire/pose.payload.bin"_s)});
+        mqttPub({u"-t"_s, u"site/humidity"_s, u"-r"_s, u"-m"_s, u"40"_s});
+        mqttPub({u"-t"_s, u"site/temperature"_s, u"-r"_s, u"-m"_s, u"21.5"_s});
     }
 
     void cleanupTestCase()
@@ -203,6 +205,55 @@ private slots:
         made.sort(); // the file lists ros2mqtt before mqtt2ros
         back.sort();
         QCOMPARE(back, made);
+    }
+
+    // Issue 40: MQTT topics dropped on a ROS topic's row went below that topic's namespace
+    // (`plant/*` under `/…/pointcloud/`, dropped on `/…/pointcloud/in`). A topic row takes one
+    // MQTT topic exactly (it is published there); several keep their own names at the root, as
+    // dropped beside the rows; a namespace's row takes them below it.
+    void dropsOnRosTopicsAndNamespaces()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        MapPage* page = w.mapPage();
+        w.pages()->setCurrentWidget(page);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QAbstractItemView* ros = page->rosView();
+        QAbstractItemView* mqtt = page->mqttView();
+        auto rosRow = [&](const QString& t) { return find(ros->model(), t, RosTopicModel::TopicRole); };
+        auto mqttNode
+            = [&](const QString& t) { return find(mqtt->model(), t, MqttTopicTree::FullTopicRole); };
+        QTRY_VERIFY_WITH_TIMEOUT(rosRow(u"/lidar/points"_s).isValid(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            mqttNode(u"site/humidity"_s).isValid() && mqttNode(u"site/temperature"_s).isValid(), 10000);
+        page->mqttView()->expandAll();
+        ConfigDocument* doc = w.document();
+        const auto made = [doc] { return mappings(*doc).replaceInStrings(u" primitive"_s, QString()); };
+
+        // Several onto a topic: their own names, at the root.
+        dragAndDrop(mqtt, {mqttNode(u"site"_s)}, ros, centre(ros, rosRow(u"/lidar/points"_s)));
+        QCOMPARE(
+            made(),
+            (QStringList {u"in /site/humidity site/humidity"_s, u"in /site/temperature site/temperature"_s}));
+        w.undoStack()->undo();
+        // One onto a topic: exactly that topic.
+        dragAndDrop(mqtt, {mqttNode(u"site/humidity"_s)}, ros, centre(ros, rosRow(u"/lidar/points"_s)));
+        QCOMPARE(made(), QStringList {u"in /lidar/points site/humidity"_s});
+        w.undoStack()->undo();
+        // Onto a namespace: below it.
+        const QModelIndex lidar = find(ros->model(), u"lidar/"_s, Qt::DisplayRole);
+        QVERIFY2(lidar.isValid(), "no row for the namespace /lidar/");
+        dragAndDrop(mqtt, {mqttNode(u"site"_s)}, ros, centre(ros, lidar));
+        QCOMPARE(made(),
+                 (QStringList {u"in /lidar/site/humidity site/humidity"_s,
+                               u"in /lidar/site/temperature site/temperature"_s}));
+        // A namespace dragged onto the MQTT side bridges every topic below it.
+        w.undoStack()->undo();
+        dragAndDrop(ros, {lidar}, mqtt, centre(mqtt, mqttNode(u"site"_s)));
+        QCOMPARE(made(), QStringList {u"out /lidar/points site/lidar/points"_s});
     }
 
     void healthSeesBridgesAndTheirAbsence()

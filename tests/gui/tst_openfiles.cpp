@@ -293,12 +293,15 @@ private slots:
         QVERIFY(drop(&w, {notAConfig, plainFolder, m_dir.filePath(u"gone.bsrun"_s), damagedRun}));
         auto* box = w.findChild<QMessageBox*>(u"openErrors"_s);
         QVERIFY(box);
-        QVERIFY2(box->informativeText().contains(u"broken.yaml"_s), qPrintable(box->informativeText()));
+        // A config that does not read opens read-only, its error shown there (issue 40).
+        QVERIFY2(!box->informativeText().contains(u"broken.yaml"_s), qPrintable(box->informativeText()));
         QVERIFY(box->informativeText().contains(u"plain"_s));
         QVERIFY(box->informativeText().contains(u"gone.bsrun"_s));
         QVERIFY(box->informativeText().contains(u"damaged.bsrun"_s));
         QVERIFY(!w.measure()->isShowingRun());
-        QCOMPARE(w.document()->filePath(), m_config); // nothing lost
+        QCOMPARE(w.files()->openCount(), 2);
+        QCOMPARE(w.files()->pathOf(0), m_config); // nothing lost
+        QVERIFY(w.files()->pathOf(1).endsWith(u"broken.yaml"_s) && w.files()->isReadOnly(1));
         box->accept();
     }
 

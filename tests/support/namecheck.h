@@ -4,12 +4,14 @@
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/namedelegate.h"
 
+#include <functional>
 #include <QAbstractItemView>
 #include <QFontMetrics>
 #include <QHash>
 #include <QHeaderView>
 #include <QStyleOptionViewItem>
 #include <QTableView>
+#include <QTreeView>
 
 /// Whether every row's name in `column` of `view` is shown as a text of its own that keeps the
 /// name's last segment and fits the column, in the row's own font (bridged topics are bold).
@@ -111,4 +113,49 @@ inline QString cutWithRoomProblem(QTableView* view, bool* roomy = nullptr)
         }
     }
     return {};
+}
+
+/// Whether every row of a tree (every depth, expanded) shows its own text in `column` whole, and
+/// each NameDelegate column keeps its names' last segments within the column, in the row's font.
+/// Empty when so; otherwise what is wrong. `minimumLeaves`: rows without children expected.
+inline QString treeNamesShownProblem(QTreeView* view, int column, int minimumLeaves)
+{
+    using namespace Qt::StringLiterals;
+    const QAbstractItemModel* model = view->model();
+    const QStyleOptionViewItem option = cellOption(view);
+    int leaves = 0;
+    QString problem;
+    std::function<void(const QModelIndex&)> walk = [&](const QModelIndex& parent) {
+        for (int r = 0; r < model->rowCount(parent) && problem.isEmpty(); ++r) {
+            const QModelIndex index = model->index(r, column, parent);
+            const QModelIndex first = index.siblingAtColumn(0);
+            if (model->hasChildren(first)) {
+                if (!view->isExpanded(first)) {
+                    problem = u"%1: %2 not expanded"_s.arg(view->objectName(), first.data().toString());
+                    return;
+                }
+                walk(first);
+            } else {
+                ++leaves;
+            }
+            const QString text = index.data().toString();
+            const int has = view->visualRect(index).width();
+            auto* names = qobject_cast<NameDelegate*>(view->itemDelegateForColumn(column));
+            const QString shown = names ? names->displayedText(index) : text;
+            const QVariant font = index.data(Qt::FontRole);
+            const QFontMetrics fm(font.isValid() ? qvariant_cast<QFont>(font).resolve(view->font())
+                                                 : view->font());
+            const int needs = names ? fm.horizontalAdvance(shown)
+                                    : view->itemDelegateForIndex(index)->sizeHint(option, index).width();
+            if (needs > has)
+                problem
+                    = u"%1: '%2' needs %3 px, has %4"_s.arg(view->objectName(), shown).arg(needs).arg(has);
+            else if (!shown.endsWith(text.section(u'/', -1)))
+                problem = u"%1: %2 shows as %3"_s.arg(view->objectName(), text, shown);
+        }
+    };
+    walk({});
+    if (problem.isEmpty() && leaves < minimumLeaves)
+        problem = u"%1: %2 leaves"_s.arg(view->objectName()).arg(leaves);
+    return problem;
 }

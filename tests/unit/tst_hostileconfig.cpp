@@ -3,6 +3,7 @@
 // UTF-8 are refused with a located error before anything walks the tree; the anchors real files
 // use still load, edit and save.
 #include "base/yamllimits.h"
+#include "config/configdocument.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
@@ -10,6 +11,8 @@
 #include "fixtures.h"
 #include "latency/pipeline.h"
 
+#include <QFile>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -113,7 +116,7 @@ private slots:
         QTest::newRow("too many nodes") << many << u"yaml-too-many-nodes"_s << 4;
 
         QByteArray big = okBridge + "# " + QByteArray(YamlLimits::maxBytes, 'x') + '\n';
-        QTest::newRow("too large") << big << u"yaml-too-large"_s << 4;
+        QTest::newRow("too large") << big << u"yaml-too-large"_s << -1; // no place: its size
 
         // A long scalar repeated by aliases: few nodes, many bytes.
         QByteArray wide = okBridge + "s: &s " + QByteArray(1024 * 1024, 'x') + "\nl: [";
@@ -160,8 +163,41 @@ private slots:
         // The same check guards the pipeline reader and the patcher.
         QString error;
         QVERIFY(!Pipeline::fromYaml("topics_in_order: [/a, /b]\n" + text.mid(okBridge.size()), &error));
-        QVERIFY2(error.contains(u"line %1: "_s.arg(line - 2)), qPrintable(error));
+        if (line >= 0)
+            QVERIFY2(error.contains(u"line %1: "_s.arg(line - 2)), qPrintable(error));
+        else
+            QVERIFY2(!error.contains(u"line "_s), qPrintable(error));
         QCOMPARE(YamlLimits::check(text)->code, code);
+    }
+
+    // Issue 40: opening a 17 MB file said `290792:3` and `8388608 bytes`: the place of the limit's
+    // byte, which is nowhere the user can fix anything, and a count nobody reads. It says the
+    // sizes in the units people think in, and no place.
+    void aFileTooLargeSaysItsSizeNotAPlace()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"huge.yaml"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(okBridge);
+        const QByteArray line = "# " + QByteArray(58, 'x') + '\n';
+        while (f.size() < 17 * 1024 * 1024 + 300 * 1024)
+            f.write(line);
+        f.close();
+        ConfigDocument doc;
+        const ConfigDocument::LoadResult r = doc.load(path);
+        QVERIFY(!r.ok && !r.unreadable);
+        QCOMPARE(r.error, path + u": error: The file is 17 MB, the limit is 8 MB. (Split the file.)"_s);
+        QCOMPARE(r.problems.size(), 1);
+        QVERIFY(!r.problems.first().pos.isValid());
+        // Only its start was read, to be shown.
+        QCOMPARE(r.text.size(), ConfigDocument::kShownBytes);
+        // Read through the reader's bounded read: larger than the limit, its size unknown.
+        QCOMPARE(YamlLimits::tooLargeMessage(YamlLimits::maxBytes + 1),
+                 u"The file is larger than 8 MB, the limit."_s);
+        QCOMPARE(YamlLimits::tooLargeMessage(YamlLimits::maxBytes + 100),
+                 u"The file is larger than 8 MB, the limit."_s);
+        QCOMPARE(YamlLimits::tooLargeMessage(9 * 1024 * 1024), u"The file is 9.0 MB, the limit is 8 MB."_s);
     }
 
     // Within the limits nothing changes: the same text reads as before.

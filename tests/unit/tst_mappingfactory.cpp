@@ -7,6 +7,7 @@
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2graph.h"
+#include "session/flowrates.h"
 #include "session/mappinghealthevaluator.h"
 #include "wire/mqttclientwire.h"
 
@@ -163,6 +164,96 @@ private slots:
         in.mqttConnected = false;
         QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[flowing.id].state, MappingHealth::Unknown);
         QVERIFY(MappingHealthEvaluator::sameType(u"std_msgs/msg/Bool"_s, u"std_msgs/Bool"_s));
+    }
+
+    // Issue 40: Map health showed "10.0 → 10.7 Hz", a destination faster than its source, from
+    // rates of two windows: the ROS monitor's five seconds up to its last message and the MQTT
+    // tree's last one-second tick (11 messages of a bursty bridge in 1.03 s). Both ends are
+    // counted over the same interval now; one message in flight at its edge is the count's
+    // resolution, not a faster destination, and more than that is said.
+    void healthRatesShareOneWindow()
+    {
+        BridgeConfig cfg;
+        const Mapping out = Mapping::create(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        const Mapping in2 = Mapping::create(Direction::Mqtt2Ros, u"/c"_s, u"c"_s);
+        const Mapping extra = Mapping::create(Direction::Ros2Mqtt, u"/e"_s, u"e"_s);
+        cfg.mappings = {out, in2, extra};
+        RosGraph graph;
+        graph.topics = {{u"/a"_s, u"std_msgs/String"_s, {u"/talker"_s}, {u"/mqtt_client"_s}},
+                        {u"/c"_s, u"std_msgs/String"_s, {u"/mqtt_client"_s}, {}},
+                        {u"/e"_s, u"std_msgs/String"_s, {u"/talker"_s}, {u"/mqtt_client"_s}}};
+        const qint64 t0 = 100'000'000'000LL;
+        const auto figures = [](quint64 messages, double rateHz, qint64 lastNs) {
+            TopicFigures f;
+            f.messages = messages;
+            f.rateHz = rateHz;
+            f.lastNs = lastNs;
+            return f;
+        };
+        // What the sources said at the end: the rates of their own windows.
+        const qint64 now = t0 + 5'000'000'000LL;
+        QHash<QString, TopicFigures> ros {{u"/a"_s, figures(100, 10.0, now)},
+                                          {u"/c"_s, figures(80, 10.0, now)},
+                                          {u"/e"_s, figures(100, 10.0, now)}};
+        QHash<QString, TopicFigures> mqtt {{u"a"_s, figures(101, 10.7, now)},
+                                           {u"c"_s, figures(80, 10.0, now)},
+                                           {u"e"_s, figures(110, 12.0, now)}};
+        MappingHealthEvaluator::Inputs in;
+        in.graph = &graph;
+        in.rosReachable = true;
+        in.monitored = &ros;
+        in.mqtt = &mqtt;
+        in.mqttConnected = true;
+        in.nowNs = now;
+        // The counts of both ends at two instants five seconds apart.
+        FlowRates flows;
+        flows.sample(
+            t0, {{u"/a"_s, figures(50, 0, t0)}, {u"/c"_s, figures(31, 0, t0)}, {u"/e"_s, figures(50, 0, t0)}},
+            {{u"a"_s, figures(50, 0, t0)}, {u"c"_s, figures(30, 0, t0)}, {u"e"_s, figures(50, 0, t0)}});
+        flows.sample(now, ros, mqtt);
+        in.flows = &flows;
+        const auto h = MappingHealthEvaluator::evaluate(cfg, in);
+        QCOMPARE(h[out.id].state, MappingHealth::Healthy);
+        // 50 published, 51 arrived in the same 5 s: one in flight at the edge.
+        QCOMPARE(h[out.id].summary, u"10.0 → 10.0 Hz"_s);
+        QVERIFY2(h[out.id].detail.contains(u"Over the same 5.0 s, 50 messages were published on '/a' and 51 "
+                                           u"arrived on 'a'."_s),
+                 qPrintable(h[out.id].detail));
+        // MQTT to ROS: the MQTT side is the source; 49 arrived of 50.
+        QCOMPARE(h[in2.id].summary, u"10.0 → 10.0 Hz"_s);
+        // More than one message more than published: shown as measured, and said.
+        QCOMPARE(h[extra.id].summary, u"10.0 → 12.0 Hz"_s);
+        QVERIFY2(h[extra.id].detail.contains(u"something else publish on 'e'"_s),
+                 qPrintable(h[extra.id].detail));
+        // A destination never reads faster than its source within the count's resolution.
+        for (const Mapping& m : cfg.mappings) {
+            const QStringList rates = h[m.id].summary.section(u' ', 0, 2).split(u" → "_s);
+            QCOMPARE(rates.size(), 2);
+            if (m.id != extra.id)
+                QVERIFY2(rates[1].toDouble() <= rates[0].toDouble(), qPrintable(h[m.id].summary));
+        }
+
+        // Before a second sample there is no common interval.
+        FlowRates fresh;
+        fresh.sample(now, ros, mqtt);
+        QVERIFY(!fresh.flow(u"/a"_s, u"a"_s));
+        // A count that went back (a subscription made anew) gives no rate rather than a wrong one.
+        FlowRates reset;
+        reset.sample(t0, ros, mqtt);
+        reset.sample(now, {{u"/a"_s, figures(3, 0, now)}}, {{u"a"_s, figures(3, 0, now)}});
+        QVERIFY(!reset.flow(u"/a"_s, u"a"_s));
+        // Samples are bounded however often health is asked for, and span the window.
+        FlowRates often;
+        for (qint64 t = 0; t <= 20'000'000'000LL; t += 50'000'000LL)
+            often.sample(t0 + t, {{u"/a"_s, figures(quint64(t / 50'000'000LL), 0, t0 + t)}},
+                         {{u"a"_s, figures(quint64(t / 50'000'000LL), 0, t0 + t)}});
+        const std::optional<FlowRates::Flow> f = often.flow(u"/a"_s, u"a"_s);
+        QVERIFY(f);
+        QVERIFY2(f->spanNs >= FlowRates::kWindowNs
+                     && f->spanNs <= FlowRates::kWindowNs + FlowRates::kMinStepNs,
+                 qPrintable(QString::number(f->spanNs)));
+        QCOMPARE(f->rosHz(), 20.0);
+        QCOMPARE(f->mqttHz(), 20.0);
     }
 
     // ROS 2: the QoS mqtt_client v2.5 would use against the endpoints DDS discovery announced.

@@ -13,10 +13,20 @@ void BridgedTopicsProxy::setBridged(const QHash<QString, QString>& topicToMappin
     if (topicToMapping == m_bridged)
         return;
     m_bridged = topicToMapping;
-    // Fonts of any row may change; views repaint what they show.
-    if (rowCount() > 0)
-        emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1),
-                         {Qt::FontRole, Qt::ToolTipRole});
+    // Fonts of any row may change, at any depth of a tree; views repaint what they show.
+    announceAll({});
+}
+
+void BridgedTopicsProxy::announceAll(const QModelIndex& parent)
+{
+    const int rows = rowCount(parent);
+    if (rows == 0)
+        return;
+    emit dataChanged(index(0, 0, parent), index(rows - 1, columnCount(parent) - 1, parent),
+                     {Qt::FontRole, Qt::ToolTipRole});
+    for (int r = 0; r < rows; ++r)
+        if (hasChildren(index(r, 0, parent)))
+            announceAll(index(r, 0, parent));
 }
 
 QVariant BridgedTopicsProxy::data(const QModelIndex& index, int role) const

@@ -14,6 +14,7 @@ public:
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
 
 private:
+    void announceAll(const QModelIndex& parent);
     int m_topicRole;
     QHash<QString, QString> m_bridged;
 };

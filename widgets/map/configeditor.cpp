@@ -49,22 +49,28 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     m_filter->setSourceModel(m_icons);
     createActions();
 
-    auto* top = new QSplitter(Qt::Horizontal, this);
-    m_split = top;
-    top->addWidget(createMappingPane());
-    top->addWidget(createInspectorTabs());
-    top->setStretchFactor(0, 3);
-    top->setStretchFactor(1, 2);
-    // The inspector's fields get room for their values, the table more: its topics whole beside
-    // their options and health.
-    ViewSetup::initialSizes(top, {580, 320});
+    // The mapping table takes the page's width, so that its topics show whole; the inspector of
+    // the selected mappings and the problems sit below it, side by side.
+    // Made in reading order, which is the keyboard's.
+    QWidget* mappings = createMappingPane();
+    QWidget* inspector = createInspectorTabs();
     m_problems = new ProblemsPanel(document, this);
+    auto* bottom = new QSplitter(Qt::Horizontal, this);
+    bottom->setObjectName(u"inspectorSplit"_s);
+    bottom->addWidget(inspector);
+    bottom->addWidget(m_problems);
+    bottom->setStretchFactor(0, 2);
+    bottom->setStretchFactor(1, 1);
+    ViewSetup::initialSizes(bottom, {600, 300});
+    m_split = bottom;
     auto* outer = new QSplitter(Qt::Vertical, this);
-    outer->addWidget(top);
-    outer->addWidget(m_problems);
-    outer->setStretchFactor(0, 4);
-    outer->setStretchFactor(1, 1);
-    ViewSetup::initialSizes(outer, {600, 140});
+    outer->setObjectName(u"editorSplit"_s);
+    outer->addWidget(mappings);
+    outer->addWidget(bottom);
+    outer->setStretchFactor(0, 3);
+    outer->setStretchFactor(1, 2);
+    outer->setChildrenCollapsible(false);
+    ViewSetup::initialSizes(outer, {360, 280});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(outer);
@@ -77,6 +83,7 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     connect(m_doc, &ConfigDocument::resetDone, this, [this] {
         if (m_doc->mappingCount() > 0)
             selectMappings({m_doc->mapping(0).id});
+        showReadOnly();
     });
     connect(m_problems, &ProblemsPanel::mappingProblemActivated, this, &ConfigEditor::showMappingProblem);
     connect(m_problems, &ProblemsPanel::settingsProblemActivated, this, &ConfigEditor::showSettingsProblem);
@@ -163,12 +170,11 @@ void ConfigEditor::setUpTable()
     header->setStretchLastSection(false);
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setSectionResizeMode(MappingModel::DirectionColumn, QHeaderView::ResizeToContents);
-    m_table->setColumnWidth(MappingModel::OptionsColumn, 150);
-    // Health is measured (both rates and the latency, `10.0 → 9.9 Hz · 1.6 ms`, never cut); the
-    // topics share what options and health leave, never less than their last segments.
+    // Health (both rates and the latency, `10.0 → 9.9 Hz · 1.6 ms`) and the options (`stamped,
+    // QoS 0, suite stamps`: issue 40 read `st…ps`) are measured and never cut; the topics share
+    // what they leave, never less than their last segments.
     auto* fitter = new ColumnFitter(m_table);
-    fitter->figures({MappingModel::HealthColumn});
-    fitter->fit(MappingModel::OptionsColumn, 0.2);
+    fitter->figures({MappingModel::HealthColumn, MappingModel::OptionsColumn});
     fitter->fill({MappingModel::RosTopicColumn, MappingModel::MqttTopicColumn});
     m_table->addAction(m_delete);
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
@@ -191,8 +197,22 @@ QWidget* ConfigEditor::createInspectorTabs()
 
 void ConfigEditor::setInspectorWidth(int width)
 {
-    const int total = std::max(m_split->width(), width * 3);
-    m_split->setSizes({total - width, width});
+    const int total = std::max(m_split->width(), width + 200);
+    m_split->setSizes({width, total - width});
+}
+
+void ConfigEditor::showReadOnly()
+{
+    // Nothing of a file open read-only can be edited: its text and error are on the YAML tab.
+    const bool readOnly = m_doc->isReadOnly();
+    m_inspector->setEnabled(!readOnly);
+    m_settings->setEnabled(!readOnly);
+    m_table->setEnabled(!readOnly);
+    m_addOut->setEnabled(!readOnly);
+    m_addIn->setEnabled(!readOnly);
+    if (readOnly)
+        m_tabs->setCurrentWidget(m_preview);
+    updateActions();
 }
 
 QList<quint64> ConfigEditor::selectedIds() const
@@ -234,6 +254,8 @@ QModelIndex ConfigEditor::viewIndex(quint64 id) const
 
 void ConfigEditor::addMapping(Direction direction)
 {
+    if (m_doc->isReadOnly())
+        return;
     // Propose free names, so that a new mapping never collides with an existing one.
     QSet<QString> used;
     for (const Mapping& m : m_doc->config().mappings)
@@ -294,7 +316,7 @@ void ConfigEditor::showSettingsProblem(OptionScope scope, const QString& field)
 
 void ConfigEditor::updateActions()
 {
-    const bool any = m_table->selectionModel()->hasSelection();
+    const bool any = m_table->selectionModel()->hasSelection() && !m_doc->isReadOnly();
     m_delete->setEnabled(any);
     m_duplicate->setEnabled(any);
 }

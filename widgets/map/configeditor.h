@@ -21,8 +21,9 @@ class SettingsInspector;
 class SeverityIconProxy;
 class YamlPreview;
 
-/// The bridge config editor: the mapping table with its filter, an inspector for the selected
-/// mappings and for broker/client settings, the YAML preview and the problems panel.
+/// The bridge config editor: the mapping table with its filter across the width, below it an
+/// inspector for the selected mappings and for broker/client settings, the YAML preview and the
+/// problems panel.
 class ConfigEditor : public QWidget
 {
     Q_OBJECT
@@ -44,7 +45,7 @@ public:
     QLineEdit* filterEdit() const { return m_filterEdit; }
 
     QList<quint64> selectedIds() const;
-    /// Width of the inspector beside the table (the rest goes to the table).
+    /// Width of the inspector below the table (the rest goes to the problems beside it).
     void setInspectorWidth(int width);
     void selectMappings(const QList<quint64>& ids);
     /// Adds a mapping (topics proposed) and puts the cursor on its ROS topic.
@@ -60,6 +61,8 @@ private:
     void showSettingsProblem(OptionScope scope, const QString& field);
     void showMappingProblem(quint64 id, const QString& field);
     void updateActions();
+    /// Disables editing while the document is open read-only, and shows its text.
+    void showReadOnly();
     QModelIndex viewIndex(quint64 id) const;
 
     ConfigDocument* m_doc;

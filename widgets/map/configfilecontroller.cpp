@@ -67,14 +67,11 @@ bool ConfigFileController::openFile(const QString& path, QString* error)
     const bool replace = currentIsBlank();
     const ConfigDocument::Snapshot before = m_doc->snapshot();
     const ConfigDocument::LoadResult r = m_doc->load(path); // leaves the document as it was on failure
-    if (!r.ok) {
-        QStringList lines {r.error};
-        for (int i = 1; i < r.problems.size() && i < 5; ++i)
-            lines << r.problems[i].format(QFileInfo(path).fileName());
+    if (r.unreadable) {
         if (error)
-            *error = lines.join(u'\n');
+            *error = r.error;
         else
-            showError(tr("Cannot open the config"), lines.join(u'\n'));
+            showError(tr("Cannot open the config"), r.error);
         return false;
     }
     if (!replace) {
@@ -82,9 +79,16 @@ bool ConfigFileController::openFile(const QString& path, QString* error)
         m_open.append(ConfigDocument::Snapshot {});
         m_current = openCount() - 1;
     }
+    // A file that reads but is no config (broken, too large) is shown read-only with its error,
+    // in a tab of its own: the user sees where it is wrong instead of a refusal.
+    if (!r.ok)
+        m_doc->openReadOnly(path, r);
     m_undo->clear();
     addRecent(m_doc->filePath());
-    emit statusMessage(tr("Opened %1 (mappings: %2)").arg(m_doc->filePath()).arg(m_doc->mappingCount()));
+    if (!r.ok)
+        emit statusMessage(tr("Opened %1 read-only: %2").arg(m_doc->filePath(), r.error));
+    else
+        emit statusMessage(tr("Opened %1 (mappings: %2)").arg(m_doc->filePath()).arg(m_doc->mappingCount()));
     emit openConfigsChanged();
     return true;
 }
@@ -110,6 +114,11 @@ QString ConfigFileController::nameOf(int i) const
 {
     const QString path = pathOf(i);
     return path.isEmpty() ? tr("untitled") : QFileInfo(path).fileName();
+}
+
+bool ConfigFileController::isReadOnly(int i) const
+{
+    return i == m_current ? m_doc->isReadOnly() : !m_open.value(i).readOnly.reason.isEmpty();
 }
 
 bool ConfigFileController::isModified(int i) const

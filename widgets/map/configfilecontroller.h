@@ -28,7 +28,9 @@ public:
     using Ask = std::function<bool(const QString& title, const QString& question)>;
     void setAsk(Ask ask) { m_ask = std::move(ask); }
 
-    /// Opens a bridge config; what went wrong goes to `error` if given, else to a message box.
+    /// Opens a bridge config; one that reads but is broken or too large opens read-only, showing
+    /// its text and its error. What kept a file from opening at all goes to `error` if given,
+    /// else to a message box.
     bool openFile(const QString& path, QString* error = nullptr);
     /// Remembers a file of any kind among the recent ones (File › Open Recent).
     void addRecent(const QString& path);
@@ -55,6 +57,8 @@ public:
     /// The file's name, or "untitled".
     QString nameOf(int i) const;
     bool isModified(int i) const;
+    /// Open only to be read (ConfigDocument::openReadOnly()).
+    bool isReadOnly(int i) const;
     BridgeConfig configOf(int i) const;
     /// Shows open config `i` in the document.
     void activate(int i);

@@ -54,7 +54,8 @@ void ConfigTabs::setHealth(int i, const QHash<quint64, MappingHealth>& health)
 void ConfigTabs::describe(int i)
 {
     // "•" while edits are unsaved, as editors mark a modified tab.
-    const QString text = m_files->nameOf(i) + (m_files->isModified(i) ? u" •"_s : QString());
+    const QString text = m_files->nameOf(i) + (m_files->isModified(i) ? u" •"_s : QString())
+        + (m_files->isReadOnly(i) ? u' ' + tr("(read-only)") : QString());
     if (tabText(i) != text)
         setTabText(i, text);
     const QHash<quint64, MappingHealth>& health = m_health.value(i);

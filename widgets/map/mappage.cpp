@@ -10,9 +10,9 @@
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
+#include "ros/rostopictree.h"
 #include "session/livesession.h"
 #include "session/mappinghealthevaluator.h"
-#include "widgets/common/rostopicview.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/map/bridgedtopicsproxy.h"
 #include "widgets/map/configeditor.h"
@@ -21,6 +21,7 @@
 #include "widgets/map/undocommands.h"
 
 #include <chrono>
+#include <memory>
 #include <QAction>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -53,15 +54,16 @@ MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoS
     , m_healthTimer(new QTimer(this))
 {
     QLayout* bar = createBar();
-    auto* topics = new QSplitter(Qt::Vertical, this);
-    topics->addWidget(createRosPane());
-    topics->addWidget(createMqttPane());
+    // The mappings take most of the width (their topics whole); the discovered topics are trees
+    // in a panel beside them that folds away when the mappings need more.
     auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(topics);
+    split->setObjectName(u"mapSplit"_s);
+    split->addWidget(createTopicsPanel());
     split->addWidget(m_editor);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 3);
-    ViewSetup::initialSizes(split, {400, 880}); // the ROS topics get room for their names
+    split->setStretchFactor(0, 0);
+    split->setStretchFactor(1, 1);
+    split->setCollapsible(1, false);
+    ViewSetup::initialSizes(split, {370, 910});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);
     v->addLayout(bar);
@@ -96,7 +98,19 @@ QLayout* MapPage::createBar()
     connect(m_toMqtt, &QAction::triggered, this, &MapPage::bridgeSelectedRos);
     connect(m_toRos, &QAction::triggered, this, &MapPage::bridgeSelectedMqtt);
 
+    m_showTopics = new QAction(tr("Discovered Topics"), this);
+    m_showTopics->setCheckable(true);
+    m_showTopics->setChecked(true);
+    m_showTopics->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    m_showTopics->setToolTip(tr("Show or fold away the discovered ROS and MQTT topics (Ctrl+Shift+T)"));
+    addAction(m_showTopics);
+
     auto* bar = new QHBoxLayout;
+    auto* panelButton = new QToolButton(this);
+    panelButton->setDefaultAction(m_showTopics);
+    panelButton->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    bar->addWidget(panelButton);
+    bar->addSpacing(12);
     auto* bridgeLabel = new QLabel(tr("Bridge selected:"), this);
     bar->addWidget(bridgeLabel);
     for (QAction* a : {m_toMqtt, m_toRos}) {
@@ -117,33 +131,85 @@ QLayout* MapPage::createBar()
     bar->addSpacing(12);
     bar->addWidget(prefixLabel);
     bar->addWidget(m_prefix);
-    m_hint = new QLabel(
-        tr("Drag ROS topics onto the MQTT tree and MQTT topics onto the ROS topics; drop a topic on a "
-           "mapping to retarget it."),
-        this);
-    m_hint->setStyleSheet(u"color: palette(mid)"_s);
-    // A hint gives way: cut at the window's edge rather than widening the window (all in its tooltip).
-    m_hint->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    m_hint->setToolTip(m_hint->text());
-    bar->addSpacing(12);
-    bar->addWidget(m_hint, 1);
+    bar->addStretch(1);
     return bar;
 }
 
-/// Discovered ROS topics, the bridged ones marked.
+/// The discovered topics beside the mappings: how to drag, the ROS tree above the MQTT tree.
+QWidget* MapPage::createTopicsPanel()
+{
+    m_topicsPanel = new QWidget(this);
+    m_topicsPanel->setObjectName(u"topicsPanel"_s);
+    auto* v = new QVBoxLayout(m_topicsPanel);
+    v->setContentsMargins(0, 0, 0, 0);
+    // Wrapped in the panel's width, never cut.
+    m_hint = new QLabel(tr("Drag ROS topics onto the MQTT tree, MQTT topics onto a ROS namespace (or onto "
+                           "one ROS topic to publish there); drop a topic on a mapping to retarget it."),
+                        m_topicsPanel);
+    m_hint->setObjectName(u"mapHint"_s);
+    m_hint->setWordWrap(true);
+    m_hint->setStyleSheet(u"color: palette(mid)"_s);
+    v->addWidget(m_hint);
+    auto* topics = new QSplitter(Qt::Vertical, m_topicsPanel);
+    topics->setObjectName(u"topicsSplit"_s);
+    topics->addWidget(createRosPane());
+    topics->addWidget(createMqttPane());
+    v->addWidget(topics, 1);
+    connect(m_showTopics, &QAction::toggled, m_topicsPanel, &QWidget::setVisible);
+    return m_topicsPanel;
+}
+
+/// Discovered ROS topics as a namespace tree (as the MQTT topics below), the bridged ones marked.
 QWidget* MapPage::createRosPane()
 {
+    m_rosTree = new RosTopicTree(this);
+    m_rosTree->setSourceModel(m_parts.rosTopics);
     m_rosBridged = new BridgedTopicsProxy(RosTopicModel::TopicRole, this);
-    m_rosBridged->setSourceModel(m_parts.rosTopics);
-    auto* rosBox = new RosTopicView(m_rosBridged, tr("Filter ROS topics…"), this);
-    rosBox->showOnly(
-        {RosTopicModel::TopicColumn, RosTopicModel::TypeColumn, RosTopicModel::PublishersColumn});
-    m_rosFilter = rosBox->proxy();
-    m_rosView = rosBox->table();
+    m_rosBridged->setSourceModel(m_rosTree);
+    m_rosFilter = new QSortFilterProxyModel(this);
+    m_rosFilter->setSourceModel(m_rosBridged);
+    m_rosFilter->setRecursiveFilteringEnabled(true); // a match keeps its namespaces
+    m_rosFilter->setFilterRole(RosTopicTree::PathRole);
+    m_rosFilter->setFilterKeyColumn(RosTopicTree::TopicColumn);
+    m_rosFilter->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    auto* box = new QWidget(this);
+    auto* v = new QVBoxLayout(box);
+    v->setContentsMargins(0, 0, 0, 0);
+    auto* filter = new QLineEdit(box);
+    filter->setObjectName(u"rosTopicFilter"_s);
+    filter->setPlaceholderText(tr("Filter ROS topics…"));
+    filter->setClearButtonEnabled(true);
+    v->addWidget(filter);
+    m_rosView = new QTreeView(box);
     m_rosView->setObjectName(u"mapRosTopics"_s);
+    m_rosView->setModel(m_rosFilter);
+    m_rosView->setUniformRowHeights(true);
+    m_rosView->setIndentation(12); // deep names keep room for their segments
     ViewSetup::dragsCopies(m_rosView);
-    m_rosView->horizontalHeader()->setSectionResizeMode(RosTopicModel::TopicColumn, QHeaderView::Stretch);
-    return rosBox;
+    QHeaderView* header = m_rosView->header();
+    header->setStretchLastSection(false);
+    header->setSectionResizeMode(RosTopicTree::TopicColumn, QHeaderView::Stretch);
+    header->setSectionResizeMode(RosTopicTree::TypeColumn, QHeaderView::Interactive);
+    // The names get the panel's width; a type shows its last segment (whole in its tooltip).
+    m_rosView->setColumnHidden(RosTopicTree::PublishersColumn, true);
+    m_rosView->setColumnWidth(RosTopicTree::TypeColumn, 105); // `PointCloud2`, `PoseStamped` in bold
+    v->addWidget(m_rosView, 1);
+    connect(filter, &QLineEdit::textChanged, m_rosFilter, [this](const QString& text) {
+        m_rosFilter->setFilterFixedString(text);
+        if (!text.isEmpty())
+            m_rosView->expandAll(); // what matched, shown
+    });
+    // Namespaces open as they appear, as the MQTT tree's levels: names read down the tree.
+    connect(m_rosFilter, &QAbstractItemModel::rowsInserted, m_rosView,
+            [this](const QModelIndex& parent, int first, int last) {
+                for (int r = first; r <= last; ++r)
+                    m_rosView->expand(m_rosFilter->index(r, 0, parent));
+                if (parent.isValid())
+                    m_rosView->expand(parent);
+            });
+    connect(m_rosFilter, &QAbstractItemModel::modelReset, m_rosView, &QTreeView::expandAll);
+    m_rosView->expandAll();
+    return box;
 }
 
 /// Discovered MQTT topics, the bridged ones marked.
@@ -189,6 +255,9 @@ void MapPage::setUpDrops()
         return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
     });
     m_parts.ros2Topics->setDropHandler([this](const QMimeData* data, const QString& target) {
+        return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
+    });
+    m_rosTree->setDropHandler([this](const QMimeData* data, const QString& target) {
         return !bridgeMqttTopics(TopicMime::decode(data, TopicMime::mqttType()), target).isEmpty();
     });
     m_parts.mqttTopics->setDropHandler([this](const QMimeData* data, const QString& target) {
@@ -237,7 +306,7 @@ void MapPage::plan(Plan& p, const BridgeConfig& config, const Mapping& proposed)
 QList<quint64> MapPage::apply(const Plan& p, const QString& description)
 {
     QList<quint64> ids;
-    if (p.created.isEmpty() && p.after.isEmpty())
+    if ((p.created.isEmpty() && p.after.isEmpty()) || m_doc->isReadOnly())
         return ids;
     m_undo->beginMacro(description);
     if (!p.after.isEmpty()) {
@@ -279,11 +348,9 @@ QList<quint64> MapPage::bridgeRosTopics(const QList<TopicMime::Topic>& topics, c
 QList<quint64> MapPage::bridgeMqttTopics(const QList<TopicMime::Topic>& topics, const QString& rosTarget)
 {
     const MqttTopicTree* tree = m_parts.mqttTopics;
-    const bool exact = topics.size() == 1 && !rosTarget.isEmpty();
-    // Beside a ROS topic: in its namespace.
-    const QString ns = rosTarget.isEmpty()
-        ? QString()
-        : rosTarget.left(std::max<qsizetype>(1, rosTarget.lastIndexOf(u'/')));
+    const bool onNamespace = rosTarget.endsWith(u'/');
+    const bool exact = topics.size() == 1 && !rosTarget.isEmpty() && !onNamespace;
+    const QString ns = onNamespace ? rosTarget : QString();
     Plan p;
     for (const TopicMime::Topic& t : topics) {
         const QString ros = exact ? rosTarget : MappingFactory::rosTopicFor(t.name, ns);
@@ -334,10 +401,14 @@ bool MapPage::dropOnMappings(const QMimeData* data, int row)
 
 void MapPage::bridgeSelectedRos()
 {
-    QList<TopicMime::Topic> topics;
-    for (const QModelIndex& i : m_rosView->selectionModel()->selectedRows())
-        topics.append(
-            {i.data(RosTopicModel::TopicRole).toString(), i.data(RosTopicModel::TypeRole).toString()});
+    QModelIndexList rows = m_rosView->selectionModel()->selectedRows();
+    QModelIndexList sourceRows;
+    for (const QModelIndex& i : std::as_const(rows))
+        sourceRows << m_rosBridged->mapToSource(m_rosFilter->mapToSource(i));
+    // A selected namespace bridges every topic below it, as when it is dragged.
+    std::unique_ptr<QMimeData> data(m_rosTree->mimeData(sourceRows));
+    const QList<TopicMime::Topic> topics
+        = data ? TopicMime::decode(data.get(), TopicMime::rosType()) : QList<TopicMime::Topic>();
     const QModelIndex target = m_mqttView->currentIndex();
     bridgeRosTopics(topics,
                     target.isValid() && m_mqttView->selectionModel()->isSelected(target)
@@ -364,7 +435,7 @@ void MapPage::bridgeSelectedMqtt()
     const QModelIndex target = m_rosView->currentIndex();
     bridgeMqttTopics(topics,
                      target.isValid() && m_rosView->selectionModel()->isSelected(target)
-                         ? target.data(RosTopicModel::TopicRole).toString()
+                         ? target.data(RosTopicTree::PathRole).toString()
                          : QString());
 }
 
@@ -413,13 +484,16 @@ void MapPage::updateHealth()
     // A config in the ROS 2 layout maps against the ROS 2 graph when the Discover page shows one.
     const bool ros2 = usesRos2();
     RosTopicModel* topics = ros2 ? m_parts.ros2Topics : m_parts.rosTopics;
-    if (m_rosBridged->sourceModel() != topics) {
-        m_rosBridged->setSourceModel(topics);
+    if (m_rosTree->sourceModel() != topics) {
+        m_rosTree->setSourceModel(topics);
+        m_flows.clear(); // other topics, other counts
         updateBridgedTopics();
     }
     const QHash<QString, TopicFigures> monitored = (ros2 ? m_parts.sources.ros2 : m_parts.sources.ros1)->figures(now);
     monitorMappedMqttTopics();
     const QHash<QString, TopicFigures> mqtt = m_parts.sources.mqtt->figures(now);
+    // Both ends' counts at this one instant: the rates shown compare the same interval.
+    m_flows.sample(now, monitored, mqtt);
     const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_parts.ros2->graph()) : RosGraph();
     MappingHealthEvaluator::Inputs in;
     in.graph = ros2 ? &ros2Graph : &m_parts.rosGraph->graph();
@@ -429,6 +503,7 @@ void MapPage::updateHealth()
     in.mqtt = &mqtt;
     in.mqttConnected = m_parts.mqtt->state() == MqttConnection::State::Connected;
     in.nowNs = now;
+    in.flows = &m_flows;
     const QHash<quint64, MappingHealth> shown = MappingHealthEvaluator::evaluate(m_doc->config(), in);
     m_editor->model()->setHealth(shown);
     if (!m_tabs)

@@ -3,6 +3,7 @@
 
 #include "base/topicmime.h"
 #include "config/bridgeconfig.h"
+#include "session/flowrates.h"
 #include "session/livesources.h"
 
 #include <QPointer>
@@ -30,12 +31,14 @@ class QTreeView;
 class QUndoStack;
 class RosGraphPoller;
 class RosTopicModel;
+class RosTopicTree;
 class Ros2Participant;
 
-/// The Map page: discovered ROS topics and MQTT topics beside the config's mappings. Drag ROS
-/// topics onto the MQTT tree (or the mapping table) to bridge them to MQTT, MQTT topics onto the
-/// ROS topics to bridge them to ROS, a topic onto a mapping to retarget it; every mapping shows
-/// whether it carries data.
+/// The Map page: the config's mappings across the page, the inspector and problems below them,
+/// and beside them a panel (that folds away) of the discovered topics, ROS and MQTT each as a
+/// namespace tree. Drag ROS topics onto the MQTT tree (or the mapping table) to bridge them to
+/// MQTT, MQTT topics onto the ROS tree to bridge them to ROS, a topic onto a mapping to retarget
+/// it; every mapping shows whether it carries data.
 class MapPage : public QWidget
 {
     Q_OBJECT
@@ -60,7 +63,10 @@ public:
     ~MapPage() override;
 
     ConfigEditor* editor() const { return m_editor; }
-    QTableView* rosView() const { return m_rosView; }
+    QTreeView* rosView() const { return m_rosView; }
+    RosTopicTree* rosTree() const { return m_rosTree; }
+    /// Shows or folds away the panel of discovered topics.
+    QAction* topicsPanelAction() const { return m_showTopics; }
     QTreeView* mqttView() const { return m_mqttView; }
     QLineEdit* prefixEdit() const { return m_prefix; }
     QAction* bridgeToMqttAction() const { return m_toMqtt; }
@@ -68,7 +74,11 @@ public:
 
     /// Bridges ROS topics to MQTT: onto a single MQTT topic, under a level, or under the prefix.
     QList<quint64> bridgeRosTopics(const QList<TopicMime::Topic>& topics, const QString& mqttTarget);
-    /// Bridges MQTT topics to ROS: onto a single ROS topic, beside one, or at the root.
+    /// Bridges MQTT topics to ROS. `rosTarget` is where they were dropped: a namespace ("/a/",
+    /// trailing slash) takes them below it; a topic takes one MQTT topic exactly (it publishes
+    /// onto that topic), while several keep their own names at the root as if dropped beside the
+    /// rows: a topic is not a namespace (issue 40: `plant/*` dropped on `/…/pointcloud/in` went
+    /// below `/…/pointcloud/`). No target: at the root.
     QList<quint64> bridgeMqttTopics(const QList<TopicMime::Topic>& topics, const QString& rosTarget);
     /// Points a mapping at a dropped topic instead.
     bool retarget(quint64 mappingId, const QMimeData* data);
@@ -92,6 +102,7 @@ private:
     QLayout* createBar();
     QWidget* createRosPane();
     QWidget* createMqttPane();
+    QWidget* createTopicsPanel();
     void setUpDrops();
     QList<quint64> apply(const Plan& plan, const QString& description);
     static void plan(Plan& p, const BridgeConfig& config, const Mapping& proposed);
@@ -114,7 +125,11 @@ private:
     QAction* m_toRos;
     BridgedTopicsProxy* m_rosBridged;
     QSortFilterProxyModel* m_rosFilter;
-    QTableView* m_rosView;
+    RosTopicTree* m_rosTree;
+    QTreeView* m_rosView;
+    QWidget* m_topicsPanel;
+    QAction* m_showTopics;
+    FlowRates m_flows;
     BridgedTopicsProxy* m_mqttBridged;
     MqttTopicFilter* m_mqttFilter;
     QTreeView* m_mqttView;

@@ -9,10 +9,12 @@
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QRegularExpression>
 #include <QScrollBar>
 #include <QSyntaxHighlighter>
+#include <QTextBlock>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -139,6 +141,14 @@ void YamlPreview::refreshNow()
 {
     m_timer->stop();
     m_stale = false;
+    m_layout->setEnabled(!m_doc->isReadOnly());
+    if (m_doc->isReadOnly()) {
+        showReadOnly();
+        return;
+    }
+    m_text->setExtraSelections({});
+    m_errorLine = -1;
+    m_note->setStyleSheet(QString());
     bool keeps = false;
     QStringList notes;
     const QString yaml = m_doc->preview(layout(), &keeps, &notes);
@@ -154,6 +164,55 @@ void YamlPreview::refreshNow()
     const int scroll = m_text->verticalScrollBar() ? m_text->verticalScrollBar()->value() : 0;
     m_text->setPlainText(yaml);
     m_text->verticalScrollBar()->setValue(scroll);
+}
+
+void YamlPreview::showReadOnly()
+{
+    const ConfigDocument::ReadOnlyView& view = m_doc->readOnlyView();
+    const QLocale locale;
+    QStringList lines {tr("Read-only: this file cannot be edited or saved here, because it is not a "
+                          "bridge config Bridgescope can read. Fix it in a text editor and open it again.")};
+    const TextPos at = view.errorPos;
+    lines << (at.isValid() ? tr("Line %1, column %2: %3").arg(at.line + 1).arg(at.column + 1).arg(view.reason)
+                           : view.reason);
+    if (view.truncated)
+        lines << tr("Only the first %1 of %2 are shown.")
+                     .arg(locale.formattedDataSize(view.text.toUtf8().size(), 1,
+                                                   QLocale::DataSizeTraditionalFormat),
+                          locale.formattedDataSize(view.fileSize, 1, QLocale::DataSizeTraditionalFormat));
+    m_text->setPlainText(view.text);
+    QList<QTextEdit::ExtraSelection> marks;
+    const QTextBlock block = at.isValid() ? m_text->document()->findBlockByNumber(at.line) : QTextBlock();
+    if (block.isValid()) {
+        // The whole line tinted, the place itself underlined, the cursor on it.
+        QTextEdit::ExtraSelection line;
+        line.format.setBackground(ChartStyle::isDark(palette()) ? QColor(0x5c, 0x1f, 0x1f)
+                                                                : QColor(0xfd, 0xe2, 0xe2));
+        line.format.setProperty(QTextFormat::FullWidthSelection, true);
+        line.cursor = QTextCursor(block);
+        QTextEdit::ExtraSelection place;
+        place.format.setUnderlineStyle(QTextCharFormat::WaveUnderline);
+        place.format.setUnderlineColor(Qt::red);
+        place.cursor = QTextCursor(block);
+        place.cursor.movePosition(QTextCursor::Right, QTextCursor::MoveAnchor,
+                                  std::min(at.column, std::max(0, block.length() - 2)));
+        place.cursor.movePosition(QTextCursor::Right, QTextCursor::KeepAnchor);
+        marks << line << place;
+        m_text->setTextCursor(place.cursor);
+        m_text->centerCursor();
+    } else if (at.isValid()) {
+        lines << tr("Line %1 is past the part shown.").arg(at.line + 1);
+    }
+    m_text->setExtraSelections(marks);
+    m_errorLine = block.isValid() ? block.blockNumber() : -1;
+    m_note->setText(lines.join(u'\n'));
+    m_note->setStyleSheet(u"font-weight: bold"_s);
+    m_note->setVisible(true);
+}
+
+QString YamlPreview::note() const
+{
+    return m_note->isVisible() ? m_note->text() : QString();
 }
 
 void YamlPreview::changeEvent(QEvent* event)

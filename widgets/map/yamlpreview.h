@@ -11,7 +11,8 @@ class QLabel;
 class QPlainTextEdit;
 class QTimer;
 
-/// The YAML that saving would write, in a chosen layout, updated as the config changes.
+/// The YAML that saving would write, in a chosen layout, updated as the config changes; for a
+/// file open read-only, its own text with its error marked.
 class YamlPreview : public QWidget
 {
     Q_OBJECT
@@ -22,6 +23,11 @@ public:
     QString text() const;
     /// Recomputes now instead of after the short delay that batches quick edits.
     void refreshNow();
+    /// The words above the text (what saving keeps; for a read-only file, why and where).
+    QString note() const;
+    /// The line (zero-based) marked as the read-only file's error, or -1.
+    int errorLine() const { return m_errorLine; }
+    QPlainTextEdit* textView() const { return m_text; }
 
 private:
     ConfigDocument* m_doc;
@@ -30,6 +36,9 @@ private:
     QPlainTextEdit* m_text;
     QTimer* m_timer;
     bool m_stale = false;
+    int m_errorLine = -1;
+    /// A file open read-only: its text, with its error's line marked and said above.
+    void showReadOnly();
 
 protected:
     void showEvent(class QShowEvent* event) override;
