@@ -92,7 +92,8 @@ void show(MainWindow& window, const DemoLab& lab)
     if (lab.ros() == 2) { // the window's ROS 2 participant joins the lab's domain, on this host
         window.discoverPage()->setRos2Options({lab.rosDomain(), true});
         window.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs::Ros2);
-    } else {
+    } else { // the lab's graph, whatever the last session showed (a ROS 2 list stayed empty)
+        window.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs::Ros1);
         window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
     }
     window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));

@@ -38,6 +38,7 @@ public:
     void setGraph(const RosGraph& graph);
     void setMonitorStats(const QHash<QString, RosMonitorStats>& stats, qint64 nowNs);
     void setMonitored(const QString& topic, bool on);
+    int monitoredCount() const { return int(m_monitored.size()); }
     void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
     const RosGraph& graph() const { return m_graph; }
     const RosMonitorStats* stats(const QString& topic) const;

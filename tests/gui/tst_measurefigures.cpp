@@ -3,6 +3,7 @@
 // and the derived rows pinned, the latency over time beside the ECDF), an ECDF axis that one
 // outlier does not stretch, and chart ticks on round numbers.
 #include "app/gui/mainwindow.h"
+#include "guisession.h"
 #include "demo/demolab.h"
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
@@ -45,17 +46,7 @@ public:
     quint64 ecdfLayoutRevision() const override { return 1; }
 };
 
-/// The texts a chart view draws (axis labels, titles, legend), as the scene holds them.
-QStringList drawnTexts(QChartView* view)
-{
-    QStringList out;
-    for (QGraphicsItem* item : view->scene()->items())
-        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && text->isVisible())
-            out << text->toPlainText();
-        else if (auto* simple = dynamic_cast<QGraphicsSimpleTextItem*>(item); simple && simple->isVisible())
-            out << simple->text();
-    return out;
-}
+using GuiSession::drawnTexts;
 
 /// Whether `label` is a number that is a multiple of 1, 2, 2.5 or 5 times a power of ten.
 bool isRoundTick(const QString& label, double step)

@@ -2,6 +2,7 @@
 // The window remembers how it was left: geometry, page, splitters, columns and their sort, filter
 // texts; and a first start fits the screen.
 #include "app/gui/mainwindow.h"
+#include "guisession.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttprofile.h"
 #include "session/livesession.h"
@@ -33,9 +34,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QSettings().clear();
+        GuiSession::useSettingsFolder(m_dir.path());
     }
 
     void aFirstStartFitsTheScreen()

@@ -159,3 +159,49 @@ inline QString treeNamesShownProblem(QTreeView* view, int column, int minimumLea
         problem = u"%1: %2 leaves"_s.arg(view->objectName()).arg(leaves);
     return problem;
 }
+
+/// "A figure is never elided": every cell of the figure `columns` of `view` (a table, or a tree's
+/// rows under expanded levels) is as wide as its text needs, and so is each such column's title.
+/// No escape when the view is short of room: a scroll bar, never a cut figure. Empty when so;
+/// otherwise the first cut cell. Hidden columns are not shown, so not checked.
+inline QString figuresCutProblem(QAbstractItemView* view, const QList<int>& columns)
+{
+    using namespace Qt::StringLiterals;
+    auto* table = qobject_cast<QTableView*>(view);
+    auto* tree = qobject_cast<QTreeView*>(view);
+    QHeaderView* header = table ? table->horizontalHeader() : tree->header();
+    const QAbstractItemModel* model = view->model();
+    const QStyleOptionViewItem option = cellOption(view);
+    const int grid = table && table->showGrid() ? 1 : 0;
+    QList<QModelIndex> parents {QModelIndex()};
+    int rows = 0;
+    for (qsizetype p = 0; p < parents.size() && rows < 20000; ++p) {
+        const QModelIndex parent = parents[p];
+        for (int r = 0; r < model->rowCount(parent) && rows < 20000; ++r, ++rows) {
+            const QModelIndex first = model->index(r, 0, parent);
+            if (tree && tree->isExpanded(first))
+                parents << first;
+            for (int c : columns) {
+                if (header->isSectionHidden(c))
+                    continue;
+                const QModelIndex index = model->index(r, c, parent);
+                const QString text = index.data().toString();
+                if (text.isEmpty())
+                    continue;
+                const int needs = view->itemDelegateForIndex(index)->sizeHint(option, index).width() + grid;
+                if (needs > header->sectionSize(c))
+                    return u"%1: '%2' cut in column '%3' (%4 px, needs %5)"_s
+                        .arg(view->objectName(), text, model->headerData(c, Qt::Horizontal).toString())
+                        .arg(header->sectionSize(c))
+                        .arg(needs);
+            }
+        }
+    }
+    for (int c : columns)
+        if (!header->isSectionHidden(c) && ColumnFitter::titleWidth(header, c) > header->sectionSize(c))
+            return u"%1: title '%2' cut (%3 px, needs %4)"_s
+                .arg(view->objectName(), model->headerData(c, Qt::Horizontal).toString())
+                .arg(header->sectionSize(c))
+                .arg(ColumnFitter::titleWidth(header, c));
+    return {};
+}

@@ -17,13 +17,17 @@
 #include <QClipboard>
 #include <QEvent>
 #include <QFileInfo>
+#include <QGraphicsEllipseItem>
+#include <QGraphicsRectItem>
+#include <QGraphicsTextItem>
 #include <QGridLayout>
-#include <QLegendMarker>
+#include <QLegend>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QPainter>
 #include <QScatterSeries>
 #include <QSvgGenerator>
+#include <QTextDocument>
 #include <QValueAxis>
 
 using namespace Qt::StringLiterals;
@@ -36,6 +40,11 @@ struct EcdfChart::Curve
     QLineSeries* median = nullptr;
     QScatterSeries* beyond = nullptr; ///< a marker at the axis' end for values beyond it
     QString beyondText; ///< "3 beyond 95 ms", or empty
+    // The curve's entries in the panel's legend: its name, and the count beyond the axis' end.
+    QGraphicsRectItem* nameSwatch = nullptr;
+    QGraphicsTextItem* name = nullptr;
+    QGraphicsEllipseItem* beyondSwatch = nullptr;
+    QGraphicsTextItem* beyondEntry = nullptr;
 };
 
 struct EcdfChart::Panel
@@ -47,6 +56,7 @@ struct EcdfChart::Panel
     std::vector<Curve> curves;
     double lo = 0; ///< the x range shown; kept while the data fit it well (no jumping axis)
     double hi = 0;
+    int legendHeight = 0; ///< the chart's bottom margin the legend takes
 };
 
 EcdfChart::EcdfChart(QWidget* parent)
@@ -146,8 +156,9 @@ void EcdfChart::rebuild()
         auto panel = std::make_unique<Panel>();
         panel->chart = new QChart;
         panel->chart->setMargins(QMargins(4, 4, 4, 4));
-        panel->chart->legend()->setAlignment(Qt::AlignBottom);
-        panel->chart->legend()->setVisible(!m_multiples);
+        // QLegend elides what one row cannot hold (`object_detection…`, `1 beyond…`): the legend
+        // is the chart's own, in rows (layOutLegend()); small multiples have titles instead.
+        panel->chart->legend()->setVisible(false);
         panel->view = new QChartView(panel->chart);
         panel->view->setRenderHint(QPainter::Antialiasing);
         panel->view->setObjectName(u"ecdfView%1"_s.arg(i));
@@ -173,6 +184,8 @@ void EcdfChart::rebuild()
         ChartStyle::apply(panel->chart, palette());
         m_grid->addWidget(panel->view, i / columns, i % columns);
         panel->view->show(); // at once: a layout would show it only on the next event loop pass
+        Panel* raw = panel.get();
+        connect(panel->chart, &QGraphicsWidget::geometryChanged, this, [this, raw] { layOutLegend(*raw); });
         m_panels.push_back(std::move(panel));
     }
     if (m_panels.size() == 1 && ids.isEmpty())
@@ -199,13 +212,24 @@ void EcdfChart::rebuild()
             s->attachAxis(p.x);
             s->attachAxis(p.y);
         }
-        for (QXYSeries* s : std::initializer_list<QXYSeries*> {c.mean, c.median, c.beyond})
-            for (QLegendMarker* m : p.chart->legend()->markers(s))
-                m->setVisible(false);
-        if (m_multiples)
+        if (m_multiples) {
             p.chart->setTitle(m_source->ecdfLabel(index));
+        } else {
+            c.nameSwatch = new QGraphicsRectItem(0, 0, 14, 3, p.chart);
+            c.nameSwatch->setBrush(color);
+            c.nameSwatch->setPen(Qt::NoPen);
+            c.name = new QGraphicsTextItem(c.ecdf->name(), p.chart);
+            c.beyondSwatch = new QGraphicsEllipseItem(0, 0, 9, 9, p.chart);
+            c.beyondSwatch->setBrush(color);
+            c.beyondSwatch->setPen(Qt::NoPen);
+            c.beyondEntry = new QGraphicsTextItem(p.chart);
+            c.beyondSwatch->hide();
+            c.beyondEntry->hide();
+        }
         p.curves.push_back(c);
     }
+    for (auto& panel : m_panels)
+        layOutLegend(*panel);
     refresh();
 }
 
@@ -287,11 +311,72 @@ void EcdfChart::markBeyond(Panel& p, Curve& c, const LatencySeries& s)
         return;
     c.beyondText = text;
     c.beyond->setName(text);
-    for (QLegendMarker* m : p.chart->legend()->markers(c.beyond))
-        m->setVisible(beyond > 0);
     if (m_multiples) {
         const QString label = m_source->ecdfLabel(m_source->ecdfIndex(c.id));
         p.chart->setTitle(text.isEmpty() ? label : label + u" · "_s + text);
+        return;
+    }
+    c.beyondEntry->setPlainText(text);
+    layOutLegend(p);
+}
+
+/// Each entry a swatch and its whole text, left to right in rows as wide as the chart, at its
+/// bottom (an entry wider than a row wraps); the plot gets what the rows leave.
+void EcdfChart::layOutLegend(Panel& p)
+{
+    const QFont font = p.chart->legend()->font();
+    const QColor colour = p.chart->legend()->labelColor();
+    const QFontMetricsF fm(font);
+    const qreal margin = 8;
+    const qreal row = std::ceil(fm.height()) + 6;
+    const qreal width = std::max<qreal>(60, p.chart->size().width() - 2 * margin);
+    struct Placed
+    {
+        QGraphicsItem* swatch;
+        QGraphicsTextItem* text;
+        qreal x, y;
+    };
+    std::vector<Placed> placed;
+    qreal x = 0;
+    qreal y = 0;
+    qreal rowBottom = 0;
+    const auto place = [&](QGraphicsItem* swatch, QGraphicsTextItem* text, bool shown) {
+        swatch->setVisible(shown);
+        text->setVisible(shown);
+        if (!shown)
+            return;
+        text->setFont(font);
+        text->setDefaultTextColor(colour);
+        const qreal indent = swatch->boundingRect().width() + 4;
+        text->setTextWidth(-1);
+        if (indent + text->boundingRect().width() > width)
+            text->setTextWidth(width - indent); // wrapped, never cut
+        const qreal entry = indent + text->boundingRect().width();
+        if (x > 0 && x + entry > width) {
+            x = 0;
+            y = rowBottom;
+        }
+        placed.push_back({swatch, text, x, y});
+        rowBottom = std::max(rowBottom, y + std::max(row, text->boundingRect().height()));
+        x += entry + 12;
+    };
+    for (Curve& c : p.curves) {
+        if (!c.name)
+            continue;
+        place(c.nameSwatch, c.name, true);
+        place(c.beyondSwatch, c.beyondEntry, !c.beyondText.isEmpty());
+    }
+    const int height = placed.empty() ? 0 : int(std::ceil(rowBottom)) + 4;
+    const qreal top = p.chart->size().height() - height;
+    for (const Placed& e : placed) {
+        const qreal textHeight = fm.height() + 2 * e.text->document()->documentMargin();
+        const QRectF swatch = e.swatch->boundingRect();
+        e.swatch->setPos(margin + e.x, top + e.y + (textHeight - swatch.height()) / 2);
+        e.text->setPos(margin + e.x + swatch.width() + 4, top + e.y);
+    }
+    if (height != p.legendHeight) {
+        p.legendHeight = height;
+        p.chart->setMargins(QMargins(4, 4, 4, 4 + height));
     }
 }
 
@@ -348,6 +433,8 @@ void EcdfChart::changeEvent(QEvent* event)
 {
     QWidget::changeEvent(event);
     if (event->type() == QEvent::PaletteChange)
-        for (const auto& panel : m_panels)
+        for (const auto& panel : m_panels) {
             ChartStyle::apply(panel->chart, palette());
+            layOutLegend(*panel); // in the new text colour
+        }
 }

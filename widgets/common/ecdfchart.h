@@ -20,6 +20,7 @@ class QPixmap;
 ///
 /// A linear x axis ends at a high quantile (Ecdf::shownRange), not at a lone outlier: values
 /// beyond it are a marker at the end and a count in the legend. A log axis shows every value.
+/// The legend's entries are whole: they wrap into rows under the plot, which gets the rest.
 ///
 /// refresh() redraws from the source: each curve is reduced to about two points per pixel
 /// column and handed over with one replace() (the live page calls it at most once per drain).
@@ -66,6 +67,7 @@ private:
     void rebuild();
     Panel* panelOf(const QString& id) const;
     void markBeyond(Panel& p, Curve& c, const LatencySeries& s);
+    void layOutLegend(Panel& p);
 
     const EcdfSource* m_source = nullptr;
     QStringList m_ids;

@@ -127,9 +127,11 @@ void WindowMemory::restore(QWidget* root, QSettings& settings, const QString& gr
                                            h->restoreState(state);
                                        });
     }
+    // Not a tab hidden now: which ones show follows this session (Discover's ROS 2 tab in a ROS 1
+    // session showed an empty list under "ROS graph: ROS 1").
     for (QTabWidget* t : root->findChildren<QTabWidget*>())
         if (const QVariant v = settings.value(u"tabs/"_s + keyOf(t, root));
-            v.isValid() && v.toInt() >= 0 && v.toInt() < t->count())
+            v.isValid() && v.toInt() >= 0 && v.toInt() < t->count() && t->isTabVisible(v.toInt()))
             t->setCurrentIndex(v.toInt());
     for (QLineEdit* e : root->findChildren<QLineEdit*>())
         if (isFilter(e))

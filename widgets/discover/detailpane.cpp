@@ -166,6 +166,8 @@ DetailPane::DetailPane(const Parts& parts, QWidget* parent)
     m_title->setText(tr("Select a ROS or MQTT topic to see what it carries."));
     v->addWidget(m_title);
     v->addWidget(m_tabs, 1);
+    m_tabs->setElideMode(Qt::ElideNone); // `B…` told nothing; a narrow pane scrolls its tabs
+    m_tabs->setUsesScrollButtons(true);
 
     m_fields->setObjectName(u"fields"_s);
     m_fields->setModel(m_fieldModel);

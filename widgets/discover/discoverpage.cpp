@@ -7,6 +7,7 @@
 #include "ros/rosgraphpoller.h"
 #include "ros/rostopicmodel.h"
 #include "session/livesession.h"
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/rostopicview.h"
 #include "widgets/common/viewsetup.h"
@@ -37,6 +38,7 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QVBoxLayout>
+#include <utility>
 
 using namespace Qt::StringLiterals;
 
@@ -65,16 +67,27 @@ DiscoverPage::DiscoverPage(const Parts& parts, QWidget* parent)
     QWidget* mqttBox = createMqttPane();
     m_detail = new DetailPane(parts.detail, this);
 
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(rosBox);
-    split->addWidget(mqttBox);
-    split->addWidget(m_detail);
-    // The MQTT tree's figures are seen without scrolling sideways; the detail pane gives way.
-    ViewSetup::initialSizes(split, {420, 510, 350});
+    // The two lists side by side over the whole width (names, types and values are what people
+    // read), the selected topic's detail below them: at 1280 px a third column left the lists
+    // `/b…/t…/…cloud/…` and four characters of a value. Until a topic is selected the detail is
+    // a line; the first selection opens it (selectTopic()).
+    auto* lists = new QSplitter(Qt::Horizontal, this);
+    lists->setObjectName(u"discoverLists"_s);
+    lists->addWidget(rosBox);
+    lists->addWidget(mqttBox);
+    ViewSetup::initialSizes(lists, {50, 50});
+    m_split = new QSplitter(Qt::Vertical, this);
+    m_split->setObjectName(u"discoverSplit"_s);
+    m_split->addWidget(lists);
+    m_split->addWidget(m_detail);
+    m_detail->setMinimumHeight(fontMetrics().height() * 3); // its title and tabs, until opened
+    m_split->setStretchFactor(0, 1);
+    m_split->setStretchFactor(1, 0);
+    ViewSetup::initialSizes(m_split, {90, 10});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 0);
     v->addLayout(bar);
-    v->addWidget(split, 1);
+    v->addWidget(m_split, 1);
 
     createMqttActions();
     connectSelection();
@@ -201,6 +214,21 @@ QWidget* DiscoverPage::createRosPane()
     m_ros2View = ros2Box->table();
     m_ros2View->setObjectName(u"ros2Topics"_s);
     m_ros2View->setSelectionMode(QAbstractItemView::SingleSelection);
+
+    // A topic's rate, bandwidth, size and age come from monitoring it: until one is, those
+    // columns are empty, and their room goes to the names.
+    for (auto [box, model] : {std::pair(rosBox, m_parts.rosTopics), std::pair(ros2Box, m_parts.ros2Topics)}) {
+        const auto update = [table = box->table(), model = model] {
+            for (int c : {RosTopicModel::RateColumn, RosTopicModel::BandwidthColumn,
+                          RosTopicModel::SizeColumn, RosTopicModel::AgeColumn})
+                table->setColumnHidden(c, model->monitoredCount() == 0);
+        };
+        connect(model, &RosTopicModel::monitorRequested, box, update);
+        // and after the window's memory brought back an older session's columns
+        connect(model, &QAbstractItemModel::rowsInserted, box, update);
+        connect(model, &QAbstractItemModel::modelReset, box, update);
+        update();
+    }
 
     m_rosTabs = new QTabWidget(this);
     m_rosTabs->setObjectName(u"rosTabs"_s);
@@ -343,14 +371,14 @@ QWidget* DiscoverPage::createMqttPane()
     return mqttBox;
 }
 
-/// The figures a lab reads first (messages, rate, bytes, QoS, retained) beside the topics, each as
-/// wide as its title and a typical figure, so that they are seen without scrolling sideways; then
-/// the last value (MQTT Explorer's habit), the announced ROS type and the latency.
+/// The figures a lab reads first (messages, rate, bytes, QoS, retained) beside the topics, so that
+/// they are seen without scrolling sideways; then the last value (MQTT Explorer's habit), the
+/// announced ROS type and the latency.
 void DiscoverPage::setUpMqttColumns()
 {
     QHeaderView* header = m_mqttView->header();
-    header->setSectionResizeMode(MqttTopicTree::TopicColumn, QHeaderView::Interactive);
-    m_mqttView->setColumnWidth(MqttTopicTree::TopicColumn, 170);
+    header->setStretchLastSection(false); // the room left goes to the values (ColumnFitter)
+    header->setSectionResizeMode(QHeaderView::Interactive);
     for (int c : {MqttTopicTree::SizeColumn, MqttTopicTree::LastColumn})
         m_mqttView->setColumnHidden(c, true);
     const QList<int> order {
@@ -359,24 +387,26 @@ void DiscoverPage::setUpMqttColumns()
         MqttTopicTree::ValueColumn, MqttTopicTree::RosTypeColumn,  MqttTopicTree::LatencyColumn};
     for (int i = 0; i < order.size(); ++i)
         header->moveSection(header->visualIndex(order[i]), i);
-    const QFontMetrics fm = m_mqttView->fontMetrics();
-    // The title whole (a sort indicator may cover its end), or a typical figure.
-    const QFontMetrics titles = header->fontMetrics();
-    const int margin = 2 * header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 4;
-    const QList<std::pair<int, QString>> samples {
-        {MqttTopicTree::MessagesColumn, u"000000"_s},
-        {MqttTopicTree::RateColumn, u"100.0"_s},
-        {MqttTopicTree::BytesColumn, u"999.9 KB"_s},
-        {MqttTopicTree::QosColumn, u"0"_s},
-        {MqttTopicTree::RetainedColumn, MqttTopicTree::tr("retained")}};
-    for (const auto& [column, sample] : samples)
-        m_mqttView->setColumnWidth(
-            column,
-            std::max(
-                titles.horizontalAdvance(m_mqttView->model()->headerData(column, Qt::Horizontal).toString())
-                    + margin,
-                fm.horizontalAdvance(sample) + 16));
-    m_mqttView->setColumnWidth(MqttTopicTree::ValueColumn, 180);
+    // As the rows need: the figures whole as they grow (whatever was restored), the topics'
+    // levels, then the values get what is left, then the ROS types.
+    auto* fitter = new ColumnFitter(m_mqttView);
+    fitter->figures({MqttTopicTree::MessagesColumn, MqttTopicTree::RateColumn, MqttTopicTree::BytesColumn,
+                     MqttTopicTree::QosColumn, MqttTopicTree::RetainedColumn, MqttTopicTree::LatencyColumn});
+    fitter->fit(MqttTopicTree::TopicColumn, 0.4);
+    fitter->values({MqttTopicTree::ValueColumn});
+    m_mqttView->setColumnWidth(MqttTopicTree::RosTypeColumn, 170); // after the values: scrolled to
+}
+
+void DiscoverPage::selectTopic()
+{
+    // The first selection opens a detail left as a line (a first start, or a session that never
+    // selected anything); a detail the user made tall stays so.
+    if (std::exchange(m_detailOpened, true))
+        return;
+    const QList<int> sizes = m_split->sizes();
+    const int total = sizes.value(0) + sizes.value(1);
+    if (total > 0 && sizes.value(1) < total / 3)
+        m_split->setSizes({total - total * 2 / 5, total * 2 / 5});
 }
 
 /// Publish and clear retained messages: a button, the tree's context menu and keys.
@@ -455,18 +485,24 @@ void DiscoverPage::connectSelection()
 {
     connect(m_rosView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
-                if (i.isValid())
+                if (i.isValid()) {
                     m_detail->showRosTopic(i.data(RosTopicModel::TopicRole).toString());
+                    selectTopic();
+                }
             });
     connect(m_ros2View->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
-                if (i.isValid())
+                if (i.isValid()) {
                     m_detail->showRos2Topic(i.data(RosTopicModel::TopicRole).toString());
+                    selectTopic();
+                }
             });
     connect(m_mqttView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
-                if (i.isValid())
+                if (i.isValid()) {
                     m_detail->showMqttTopic(i.data(MqttTopicTree::FullTopicRole).toString());
+                    selectTopic();
+                }
             });
 }
 

@@ -23,14 +23,15 @@ class QLayout;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
+class QSplitter;
 class QTabWidget;
 class QSortFilterProxyModel;
 class QTableView;
 class QTreeView;
 
 /// The Discover page: the ROS graph on the left (ROS 1 through the master, ROS 2 through DDS, or
-/// both as two tabs), the broker's topic tree in the middle, and what the selected topic carries on
-/// the right, all live.
+/// both as two tabs), the broker's topic tree on the right, and what the selected topic carries
+/// below them, all live.
 class DiscoverPage : public QWidget
 {
     Q_OBJECT
@@ -104,6 +105,8 @@ private:
     void setUpMqttColumns();
     void createMqttActions();
     void connectSelection();
+    /// Opens the detail pane for a selected topic, if it is left as a line.
+    void selectTopic();
     void connectSession();
     void updateRosStatus();
     void updateRos2Status();
@@ -140,4 +143,6 @@ private:
     QAction* m_publishAction = nullptr;
     QAction* m_clearRetainedAction = nullptr;
     DetailPane* m_detail;
+    QSplitter* m_split; ///< the lists over the detail pane
+    bool m_detailOpened = false;
 };

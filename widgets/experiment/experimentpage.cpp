@@ -6,6 +6,7 @@
 #include "experiment/experimentprocess.h"
 #include "experiment/experimentreportjob.h"
 #include "latency/latencyseriesset.h"
+#include "widgets/common/columnfitter.h"
 #include "widgets/common/ecdfchart.h"
 
 #include <QCheckBox>
@@ -61,6 +62,7 @@ ExperimentPage::ExperimentPage(QWidget* parent)
     , m_folder(new QLineEdit(this))
     , m_examples(new QComboBox(this))
     , m_grid(new QTableWidget(this))
+    , m_gridFitter(new ColumnFitter(m_grid))
     , m_views(new QTabWidget(this))
     , m_chart(new EcdfChart(this))
     , m_reportView(new QTextBrowser(this))
@@ -384,6 +386,8 @@ void ExperimentPage::rebuildGrid()
     m_grid->clear();
     m_grid->setColumnCount(int(headers.size()));
     m_grid->setHorizontalHeaderLabels(headers);
+    const int first = int(factors.size());
+    m_gridFitter->figures({first, first + 1, first + 2, first + 3}); // state, samples, median, p99
     m_grid->setRowCount(int(m_cells.size()));
     for (int i = 0; i < int(m_cells.size()); ++i) {
         const ExperimentCell& c = m_cells[i];

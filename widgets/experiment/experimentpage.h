@@ -14,6 +14,7 @@ enum class ExperimentExit : int;
 #include <optional>
 #include <QWidget>
 
+class ColumnFitter;
 class EcdfChart;
 class LatencySeriesSet;
 class QComboBox;
@@ -125,6 +126,7 @@ private:
     QLineEdit* m_folder;
     QComboBox* m_examples;
     QTableWidget* m_grid;
+    ColumnFitter* m_gridFitter; ///< the state and the figures whole as they come
     QTabWidget* m_views;
     EcdfChart* m_chart;
     QTextBrowser* m_reportView;
