@@ -514,8 +514,14 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
     const bool stalled = v.reasons.contains(LinkReason::Stall);
     if (stalled && !t.stalled)
         ++t.stalls;
-    // A stall ended when the destination was last silent (its recovery since only confirms it).
-    const qint64 stallEnd = !stalled && t.stalled && !v.unknown ? t.silentNs : 0;
+    // A stall ended with the destination's first message after its last silence (its recovery since
+    // only confirms it).
+    qint64 stallEnd = 0;
+    if (!stalled && t.stalled && !v.unknown) {
+        stallEnd = t.silentNs;
+        for (auto it = t.dst.arrivals.crbegin(); it != t.dst.arrivals.crend() && it->first > t.silentNs; ++it)
+            stallEnd = it->first;
+    }
     if (!stalled && t.stalled)
         t.stallEndedNs = nowNs;
     t.stalled = stalled;
@@ -537,6 +543,8 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
 void LinkMonitor::evaluateBridge(const QString& name, BridgeLiveness& b, qint64 nowNs)
 {
     BridgeLiveness::Input in;
+    in.nowNs = nowNs;
+    in.blind = m_blind[std::size_t(SourceGraph::Mqtt)];
     for (int i : std::as_const(b.links)) {
         const Track& t = *m_tracks[std::size_t(i)];
         in.lastDataNs = std::max(in.lastDataNs, t.dst.f.lastNs);

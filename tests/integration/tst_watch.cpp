@@ -366,7 +366,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"bridge:watch_bridge"_s).size() == 1, 5000);
         for (const QJsonObject& e : stallEnds()) {
             const QByteArray what = QJsonDocument(e).toJson(QJsonDocument::Compact);
-            QVERIFY2(e.value(u"duration_s"_s).toDouble() > 0.5, what.constData());
+            // From its detection to the first message back (issue 40: not to the check that confirmed
+            // the recovery): a bridge restarted at once may be back within a few hundred ms.
+            QVERIFY2(e.value(u"duration_s"_s).toDouble() > 0.1, what.constData());
             QVERIFY2(!e.value(u"end"_s).toString().isEmpty(), what.constData());
         }
         for (const QJsonObject& e : events(restarted, u"start"_s, u"|/w/"_s))
