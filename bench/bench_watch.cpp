@@ -114,7 +114,7 @@ int main(int argc, char** argv)
     window.resize(1400, 900);
     window.discoverPage()->setRosMasterUri(servers.rosMasterUri());
     window.discoverPage()->connectBroker(MqttProfile::fromUrl(url));
-    window.linksPage()->addConfigFiles({configPath});
+    window.linksPage()->addConfigFiles({configPath}, nullptr, true);
     window.pages()->setCurrentWidget(window.linksPage());
     window.show();
     QTest::qWait(3000); // subscriptions settle

@@ -3376,6 +3376,26 @@ factors:
         <source>the bridge %1 carries nothing while its sources publish</source>
         <translation>die Bridge %1 überträgt nichts, während ihre Quellen senden</translation>
     </message>
+    <message>
+        <source>unknown (%1)</source>
+        <translation>unbekannt (%1)</translation>
+    </message>
+    <message>
+        <source>%1 carries messages again, not yet steadily for %2 s</source>
+        <translation>%1 erhält wieder Nachrichten, noch nicht stetig %2 s lang</translation>
+    </message>
+    <message>
+        <source>broker unreachable</source>
+        <translation>Broker nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>ROS master unreachable</source>
+        <translation>ROS-Master nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>ROS 2 domain unreachable</source>
+        <translation>ROS-2-Domäne nicht erreichbar</translation>
+    </message>
 </context>
 <context>
     <name>LinkProbe</name>
@@ -3454,10 +3474,6 @@ factors:
         <translation>Konfigurationen &amp;hinzufügen…</translation>
     </message>
     <message>
-        <source>Watch the mappings of more bridge configs (one per vehicle or robot)</source>
-        <translation>Die Mappings weiterer Bridge-Konfigurationen überwachen (eine je Fahrzeug oder Roboter)</translation>
-    </message>
-    <message>
         <source>R&amp;ules…</source>
         <translation>Re&amp;geln…</translation>
     </message>
@@ -3488,10 +3504,6 @@ factors:
     <message>
         <source>Bridge configs (*.yaml *.yml);;All files (*)</source>
         <translation>Bridge-Konfigurationen (*.yaml *.yml);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>No links: open a bridge config on the Map page, or add configs here.</source>
-        <translation>Keine Verbindungen: eine Bridge-Konfiguration auf der Seite Map öffnen oder hier hinzufügen.</translation>
     </message>
     <message numerus="yes">
         <source>%n link(s): %1 ok, %2 warning, %3 alert</source>
@@ -3531,6 +3543,98 @@ factors:
     <message>
         <source>%1 messages at the source, %2 at the destination, %3 lost, %4 Header.seq gaps, %5 duplicates, %6 reordered, %7 stalls</source>
         <translation>%1 Nachrichten an der Quelle, %2 am Ziel, %3 verloren, %4 Header.seq-Lücken, %5 Duplikate, %6 umgeordnet, %7 Stillstände</translation>
+    </message>
+    <message>
+        <source>List more bridge configs (one per vehicle or robot); check one to watch it</source>
+        <translation>Weitere Bridge-Konfigurationen auflisten (eine je Fahrzeug oder Roboter); zum Beobachten abhaken</translation>
+    </message>
+    <message>
+        <source>Watch config</source>
+        <translation>Konfiguration beobachten</translation>
+    </message>
+    <message>
+        <source>Links</source>
+        <translation>Verbindungen</translation>
+    </message>
+    <message>
+        <source>ROS</source>
+        <translation>ROS</translation>
+    </message>
+    <message>
+        <source>ROS 2</source>
+        <translation>ROS 2</translation>
+    </message>
+    <message>
+        <source>MQTT</source>
+        <translation>MQTT</translation>
+    </message>
+    <message>
+        <source>Check a config to watch its links (Space checks the current one). Opening or editing a config subscribes to nothing; watching subscribes to the topics counted here, at most %1 links in all.</source>
+        <translation>Eine Konfiguration abhaken, um ihre Verbindungen zu beobachten (Leertaste hakt die aktuelle ab). Öffnen oder Bearbeiten einer Konfiguration abonniert nichts; Beobachten abonniert die hier gezählten Topics, insgesamt höchstens %1 Verbindungen.</translation>
+    </message>
+    <message>
+        <source>&amp;Configs (checked: watched)</source>
+        <translation>&amp;Konfigurationen (abgehakt: beobachtet)</translation>
+    </message>
+    <message>
+        <source>Watching stopped: %1</source>
+        <translation>Beobachtung beendet: %1</translation>
+    </message>
+    <message>
+        <source>No config %1 is open</source>
+        <translation>Keine Konfiguration %1 ist offen</translation>
+    </message>
+    <message>
+        <source>Watching %1 refused: %2</source>
+        <translation>Beobachten von %1 abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Open a bridge config on the Map page, or add one here; check it to watch it.</source>
+        <translation>Öffnen Sie eine Bridge-Konfiguration auf der Seite Zuordnen oder fügen Sie hier eine hinzu; zum Beobachten abhaken.</translation>
+    </message>
+    <message>
+        <source>%1 ROS topics at the master, %2 on the ROS 2 domain and %3 MQTT topics</source>
+        <translation>%1 ROS-Topics am Master, %2 in der ROS-2-Domäne und %3 MQTT-Topics</translation>
+    </message>
+    <message>
+        <source>%1 is watched (links: %2): subscribed to %3.</source>
+        <translation>%1 wird beobachtet (Verbindungen: %2): abonniert sind %3.</translation>
+    </message>
+    <message>
+        <source>%1 is not watched. Watching it would subscribe to %2 (links: %3).</source>
+        <translation>%1 wird nicht beobachtet. Beobachten würde %2 abonnieren (Verbindungen: %3).</translation>
+    </message>
+    <message>
+        <source>That is more than the %1 links a window watches.</source>
+        <translation>Das sind mehr als die %1 Verbindungen, die ein Fenster beobachtet.</translation>
+    </message>
+    <message>
+        <source>… and %1 more</source>
+        <translation>… und %1 weitere</translation>
+    </message>
+    <message>
+        <source>ROS (master):</source>
+        <translation>ROS (Master):</translation>
+    </message>
+    <message>
+        <source>ROS 2:</source>
+        <translation>ROS 2:</translation>
+    </message>
+    <message>
+        <source>MQTT:</source>
+        <translation>MQTT:</translation>
+    </message>
+    <message>
+        <source>No links watched: check a config below to watch it.</source>
+        <translation>Keine Verbindungen beobachtet: unten eine Konfiguration zum Beobachten abhaken.</translation>
+    </message>
+    <message>
+        <source>, %1 unknown (the watch&apos;s own connection is down)</source>
+        <translation>, %1 unbekannt (die eigene Verbindung der Beobachtung ist unterbrochen)</translation>
     </message>
 </context>
 <context>
@@ -6370,10 +6474,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>Grund</translation>
     </message>
     <message>
-        <source>Events: every change of a watched link&apos;s or bridge&apos;s state while the run was recorded; alerts are marked.</source>
-        <translation>Ereignisse: jede Zustandsänderung einer überwachten Verbindung oder Bridge während der Aufnahme des Laufs; Alarme sind hervorgehoben.</translation>
-    </message>
-    <message>
         <source>%1 more events are in the JSON report.</source>
         <translation>%1 weitere Ereignisse stehen im JSON-Bericht.</translation>
     </message>
@@ -6408,6 +6508,22 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>Not a measurement (%1): %2</source>
         <translation>Keine Messung (%1): %2</translation>
+    </message>
+    <message>
+        <source>announced on the broker</source>
+        <translation>am Broker angekündigt</translation>
+    </message>
+    <message>
+        <source>%1, bridge %2</source>
+        <translation>%1, Bridge %2</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <source>Events: every change of a watched link&apos;s or bridge&apos;s state while the run was recorded, from the config and bridge named; alerts are marked.</source>
+        <translation>Ereignisse: jede Zustandsänderung einer beobachteten Verbindung oder Bridge während der Aufzeichnung, aus der genannten Konfiguration und Bridge; Alarme sind markiert.</translation>
     </message>
 </context>
 <context>
@@ -8065,6 +8181,14 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
         <source>metrics at http://%1:%2/metrics</source>
         <translation>Metriken unter http://%1:%2/metrics</translation>
     </message>
+    <message>
+        <source>watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 alerts), messages %9 at the sources and %10 at the destinations, lost %11, stalls %12</source>
+        <translation>Beobachtung nach %1 s beendet: Verbindungen %2 (%3 ok, %4 Warnung, %5 Alarm, %6 unbekannt), Ereignisse %7 (%8 Alarme), Nachrichten %9 an den Quellen und %10 an den Zielen, verloren %11, Stillstände %12</translation>
+    </message>
+    <message>
+        <source>, %1 unknown (the watch&apos;s own connection is down)</source>
+        <translation>, %1 unbekannt (die eigene Verbindung der Beobachtung ist unterbrochen)</translation>
+    </message>
 </context>
 <context>
     <name>WatchRules</name>
@@ -8103,6 +8227,13 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     <message>
         <source>a match pattern of %1 characters; at most %2</source>
         <translation>ein Suchmuster mit %1 Zeichen; höchstens %2</translation>
+    </message>
+</context>
+<context>
+    <name>WatchSession</name>
+    <message>
+        <source>%1 links would be watched; the limit is %2 links per window: nothing was subscribed</source>
+        <translation>%1 Verbindungen würden beobachtet; die Grenze ist %2 Verbindungen je Fenster: nichts wurde abonniert</translation>
     </message>
 </context>
 <context>

@@ -39,7 +39,7 @@ class Watch
 /// What the command line asks for.
 struct WatchRequest
 {
-    QList<std::pair<QString, BridgeConfig>> configs; ///< (name, config)
+    QList<WatchSession::Config> configs; ///< (name, file, config)
     MqttProfile broker;
     QString masterUri;
     WatchRules rules;
@@ -76,7 +76,7 @@ bool readConfigs(const QStringList& paths, WatchRequest* request)
         for (int n = 2; names.contains(name); ++n)
             name = QFileInfo(path).completeBaseName() + u'#' + QString::number(n);
         names.insert(name);
-        request->configs.append({name, read.config});
+        request->configs.append({name, QFileInfo(path).absoluteFilePath(), read.config});
         if (request->info.bridgeConfigPath.isEmpty()) { // a run keeps one config: the first
             request->info.bridgeConfigPath = QFileInfo(path).absoluteFilePath();
             request->info.bridgeConfig = *bytes;
@@ -149,7 +149,7 @@ bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, Wa
 {
     QString why;
     request->broker = parser.isSet(o.broker) ? MqttProfile::fromUrl(parser.value(o.broker))
-                                             : brokerOf(request->configs.first().second);
+                                             : brokerOf(request->configs.first().config);
     if (!request->broker.validate(&why)) {
         err(why);
         return false;
@@ -177,6 +177,11 @@ bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, Wa
 bool readOutputs(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
 {
     request->metrics = parser.value(o.metrics);
+    QString why;
+    if (parser.isSet(o.metrics) && !WatchMetrics::checkAddress(request->metrics, &why)) {
+        err(why); // a port beyond 65535 or no host: the command line is wrong, not the network
+        return false;
+    }
     request->eventsFile = parser.value(o.events);
     request->runPath = parser.value(o.output);
     if ((parser.isSet(o.name) || parser.isSet(o.notes)) && !parser.isSet(o.output)) {
@@ -280,8 +285,8 @@ QStringList mappedMqttTopics(const WatchRequest& request)
 {
     QStringList watchedTopics;
     QSet<QString> seenTopics; // a list's contains() is quadratic in a config of 1,000 links
-    for (const auto& [name, config] : request.configs)
-        for (const Mapping& m : config.mappings)
+    for (const WatchSession::Config& c : request.configs)
+        for (const Mapping& m : c.config.mappings)
             if (!seenTopics.contains(m.mqttTopic())) {
                 seenTopics.insert(m.mqttTopic());
                 watchedTopics << m.mqttTopic();
@@ -289,19 +294,83 @@ QStringList mappedMqttTopics(const WatchRequest& request)
     return watchedTopics;
 }
 
+/// What a watch saw, counted over its links and events.
+struct WatchTally
+{
+    int levels[3] = {0, 0, 0}; ///< links by LinkLevel (those seen)
+    int unknown = 0; ///< links the watch cannot see a side of now
+    quint64 sourceMessages = 0;
+    quint64 destinationMessages = 0;
+    quint64 lost = 0;
+    quint64 stalls = 0;
+    int links = 0;
+
+    static WatchTally of(const LinkMonitor& monitor)
+    {
+        WatchTally t;
+        t.links = monitor.linkCount();
+        for (int i = 0; i < monitor.linkCount(); ++i) {
+            if (monitor.unknown(i).isEmpty())
+                ++t.levels[int(monitor.level(i))];
+            else
+                ++t.unknown;
+            const LinkFigures f = monitor.figures(i);
+            t.sourceMessages += f.source.messages;
+            t.destinationMessages += f.destination.messages;
+            t.lost += f.lost;
+            t.stalls += f.stalls;
+        }
+        return t;
+    }
+};
+
+/// The summary a watch ends with: a sentence on stderr, one JSON line on stdout ("event": "summary").
+void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts)
+{
+    const WatchTally t = WatchTally::of(monitor);
+    err(Watch::tr("watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 "
+                  "alerts), messages %9 at the sources and %10 at the destinations, lost %11, stalls %12")
+            .arg(elapsedMs / 1000)
+            .arg(t.links)
+            .arg(t.levels[0])
+            .arg(t.levels[1])
+            .arg(t.levels[2])
+            .arg(t.unknown)
+            .arg(events)
+            .arg(alerts)
+            .arg(t.sourceMessages)
+            .arg(t.destinationMessages)
+            .arg(t.lost)
+            .arg(t.stalls));
+    const QJsonObject summary {{u"event"_s, u"summary"_s},
+                               {u"seconds"_s, double(elapsedMs) / 1000},
+                               {u"links"_s, t.links},
+                               {u"events"_s, events},
+                               {u"alerts"_s, alerts},
+                               {u"source_messages"_s, double(t.sourceMessages)},
+                               {u"destination_messages"_s, double(t.destinationMessages)},
+                               {u"lost"_s, double(t.lost)},
+                               {u"stalls"_s, double(t.stalls)},
+                               {u"ok"_s, t.levels[0]},
+                               {u"warning"_s, t.levels[1]},
+                               {u"alert"_s, t.levels[2]},
+                               {u"unknown"_s, t.unknown}};
+    out(QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact)));
+}
+
 /// The line said every 10 s: the links by level, and every budget that cut something.
 QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopicTree* topics,
                      const WatchMetrics* metrics, const Ros2Participant* ros2)
 {
     const LinkMonitor* monitor = watch.monitor();
-    int counts[3] = {0, 0, 0};
-    for (int i = 0; i < monitor->linkCount(); ++i)
-        ++counts[int(monitor->level(i))];
+    const WatchTally tally = WatchTally::of(*monitor);
     QString line = Watch::tr("%1 s: %2 ok, %3 warning, %4 alert")
                        .arg(elapsedMs / 1000)
-                       .arg(counts[0])
-                       .arg(counts[1])
-                       .arg(counts[2]);
+                       .arg(tally.levels[0])
+                       .arg(tally.levels[1])
+                       .arg(tally.levels[2]);
+    if (tally.unknown > 0)
+        line += Watch::tr(", %1 unknown (the watch's own connection is down)").arg(tally.unknown);
     if (const quint64 evicted = topics->evictedPayloads())
         line += Watch::tr("; %1 payloads evicted from the topic history (budget %2 MiB)")
                     .arg(evicted)
@@ -381,6 +450,12 @@ int runWatch(const WatchRequest& request)
         recordFailed = true;
     });
     live.connectBroker(request.broker);
+    int eventsSeen = 0;
+    int alertsSeen = 0;
+    QObject::connect(monitor, &LinkMonitor::eventStarted, [&](const WatchEvent& e) {
+        ++eventsSeen;
+        alertsSeen += e.level == LinkLevel::Alert;
+    });
     const auto print = [&events, &ownRecorder](const WatchEvent& e) {
         const QByteArray line = QJsonDocument(e.toJson()).toJson(QJsonDocument::Compact);
         out(QString::fromUtf8(line));
@@ -405,8 +480,10 @@ int runWatch(const WatchRequest& request)
         live, request.ros1 && !request.configs.isEmpty(), [&live] { return qint64(live.mqtt()->received()); },
         Watch::tr("MQTT message"));
     sources.setTopics(mappedMqttTopics(request));
+    qint64 watchedMs = 0;
     const int status = CliOutput::runUntil(
         [&](qint64 elapsedMs) -> std::optional<int> {
+            watchedMs = elapsedMs;
             if (request.seconds > 0 && elapsedMs >= qint64(request.seconds * 1000))
                 return ExitOk;
             return std::nullopt;
@@ -417,6 +494,7 @@ int runWatch(const WatchRequest& request)
                 err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get(), live.ros2()));
         });
     monitor->closeAll(wallClockNs());
+    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen);
     if (recorder->isRecording()) {
         live.drainNow(); // the last stamps
         if (measure ? !measure->stopRecording(&why) : !ownRecorder.stop(&why)) {

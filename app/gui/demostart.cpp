@@ -9,6 +9,7 @@
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
 
@@ -97,7 +98,10 @@ void show(MainWindow& window, const DemoLab& lab)
         window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
     }
     window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
-    // Both ends on Map, a tab each (the Links page watches both), the vehicle's shown.
+    // Both ends on Map, a tab each, the vehicle's shown. The Links page watches both from the
+    // start: the lab is the demo's own, started for this window, so watching changes no one's lab.
+    window.linksPage()->watchWhenListed(lab.vehicleConfigPath());
+    window.linksPage()->watchWhenListed(lab.cloudConfigPath());
     window.files()->openFile(lab.vehicleConfigPath());
     window.files()->openFile(lab.cloudConfigPath());
     window.files()->activate(0);

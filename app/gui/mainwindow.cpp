@@ -214,21 +214,22 @@ MainWindow::~MainWindow()
     disconnect(m_session->mqtt(), nullptr, this, nullptr);
 }
 
-/// The Links page watches every config open on the Map page, as they are edited (a second after
-/// the last edit, not at every keystroke).
+/// The Links page lists every config open on the Map page, as they are edited (a second after the
+/// last edit, not at every keystroke); it watches those the user checks there, nothing else.
 void MainWindow::watchTheMapConfig()
 {
     auto* debounce = new QTimer(this);
     debounce->setSingleShot(true);
     debounce->setInterval(1000);
     connect(debounce, &QTimer::timeout, this, [this] {
-        QList<std::pair<QString, BridgeConfig>> configs;
+        QList<WatchSession::Config> configs;
         for (int i = 0; i < m_files->openCount(); ++i) {
             const QString path = m_files->pathOf(i);
             const BridgeConfig config = m_files->configOf(i);
             if (path.isEmpty() && config.mappings.isEmpty())
                 continue; // a blank new config has no links
-            configs.append({path.isEmpty() ? tr("untitled") : QFileInfo(path).completeBaseName(), config});
+            configs.append({path.isEmpty() ? tr("untitled") : QFileInfo(path).completeBaseName(),
+                            path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath(), config});
         }
         m_links->setMapConfigs(configs);
     });

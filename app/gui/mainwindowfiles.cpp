@@ -117,7 +117,7 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
     };
     QString error;
     // Every bridge config opens on the Map page, a tab each (a lab has two ends); the Links page
-    // watches them all.
+    // lists them all, and watches those the user checks there.
     QString firstConfig;
     for (const QString& path : std::as_const(sorted.configs)) {
         if (m_files->openFile(path, &error)) {

@@ -14,8 +14,10 @@
 #include <algorithm>
 #include <cmath>
 #include <QDateTime>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QLocale>
 #include <QSet>
 
@@ -270,6 +272,23 @@ QString eventSubject(const QString& subject)
     return u"%1: %2 → %3"_s.arg(parts[0], toMqtt ? parts[2] : parts[3], toMqtt ? parts[3] : parts[2]);
 }
 
+/// Where an event came from: the watched config's file (its name) and its bridge, as the event's
+/// JSON says them (a run recorded before they were kept says its config's name, or nothing).
+QString eventOrigin(const RecordedEvent& e)
+{
+    const QJsonObject o = QJsonDocument::fromJson(e.json).object();
+    const QString config = o.value(u"config"_s).toString();
+    if (config == u"discovered"_s && o.value(u"config_file"_s).toString().isEmpty())
+        return QCoreApplication::translate("ReportFormats", "announced on the broker");
+    const QString file = o.value(u"config_file"_s).toString();
+    const QString where = file.isEmpty() ? config : QFileInfo(file).fileName();
+    const QString client = o.value(u"client"_s).toString();
+    if (client.isEmpty())
+        return where.isEmpty() ? u"–"_s : where;
+    return where.isEmpty() ? QCoreApplication::translate("ReportFormats", "bridge %1").arg(client)
+                           : QCoreApplication::translate("ReportFormats", "%1, bridge %2").arg(where, client);
+}
+
 QString duration(const RecordedEvent& e)
 {
     if (e.endNs <= 0)
@@ -293,6 +312,7 @@ Table eventsTable(const Report& report, qsizetype* more)
     if (report.isComparison())
         t.header << QCoreApplication::translate("ReportFormats", "Run");
     t.header << QCoreApplication::translate("ReportFormats", "Start")
+             << QCoreApplication::translate("ReportFormats", "From")
              << QCoreApplication::translate("ReportFormats", "Duration")
              << QCoreApplication::translate("ReportFormats", "Link")
              << QCoreApplication::translate("ReportFormats", "Level")
@@ -305,8 +325,9 @@ Table eventsTable(const Report& report, qsizetype* more)
                 continue;
             }
             Cells c;
-            QStringList cells {when(e.startNs), duration(e), eventSubject(e.subject), e.level,
-                               e.detail.isEmpty() ? e.reasons.join(u", "_s) : e.detail};
+            QStringList cells {when(e.startNs), eventOrigin(e),
+                               duration(e),     eventSubject(e.subject),
+                               e.level,         e.detail.isEmpty() ? e.reasons.join(u", "_s) : e.detail};
             if (report.isComparison())
                 c.label = run->name;
             else
@@ -341,7 +362,8 @@ QString eventsNote(qsizetype more)
 {
     QString out = QCoreApplication::translate("ReportFormats",
                                               "Events: every change of a watched link's or bridge's state "
-                                              "while the run was recorded; alerts are marked.");
+                                              "while the run was recorded, from the config and bridge "
+                                              "named; alerts are marked.");
     if (more > 0)
         out += u' '
             + QCoreApplication::translate("ReportFormats", "%1 more events are in the JSON report.")

@@ -5,8 +5,12 @@ bool BridgeLiveness::update(const Input& in)
 {
     if (willDownNs > 0 && in.lastDataNs > willDownNs)
         willDownNs = 0; // it carries data again
+    if (in.blind && willDownNs > 0 && in.nowNs - willDownNs <= 2 * kWillGraceNs)
+        willDownNs = 0; // the will of a broker going down, not of the bridge
     BridgeState next = BridgeState::Unknown;
-    if (willDownNs > 0)
+    if (in.blind)
+        next = BridgeState::Unknown;
+    else if (willDownNs > 0 && in.nowNs - willDownNs >= kWillGraceNs)
         next = BridgeState::Down;
     else if (in.carries)
         next = BridgeState::Up;

@@ -20,7 +20,13 @@ public:
         bool carries = false; ///< a link's destination got a message within five periods
         bool stalled = false; ///< a link stalls
         qint64 lastDataNs = 0; ///< the last message at any of its destinations
+        qint64 nowNs = 0;
+        /// The watch's own broker connection is down: nothing can be told of the bridge.
+        bool blind = false;
     };
+    /// How long the watch's own connection must outlive a last will before the will is believed:
+    /// a broker that shuts down sends the wills of every client it drops, the watch's among the last.
+    static constexpr qint64 kWillGraceNs = 1'000'000'000LL;
 
     QList<int> links; ///< the monitor's indexes of its links
     qint64 willDownNs = 0; ///< when its last will arrived (0: not since it last carried data)

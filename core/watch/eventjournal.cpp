@@ -10,7 +10,7 @@ std::optional<WatchEvent> EventJournal::end(const QString& subject, qint64 nowNs
         return std::nullopt;
     WatchEvent ended = *it;
     m_open.erase(it);
-    ended.endNs = nowNs;
+    ended.endNs = std::max(nowNs, ended.startNs); // an end dated back never precedes the start
     ended.atEnd = figures;
     m_ended.push_back(ended);
     if (m_ended.size() > kEndedEvents)

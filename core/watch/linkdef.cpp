@@ -35,7 +35,7 @@ QString LinkDef::bridge() const
     return client.isEmpty() ? config : client;
 }
 
-QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& name)
+QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& name, const QString& file)
 {
     QList<LinkDef> out;
     const QString client = config.client.values.text(u"id"_s);
@@ -44,6 +44,7 @@ QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& na
     for (const Mapping& m : config.mappings) {
         LinkDef l;
         l.config = name;
+        l.configFile = file;
         l.client = client;
         l.direction = m.direction;
         l.rosTopic = m.rosTopic();
@@ -130,6 +131,8 @@ QJsonObject WatchEvent::toJson() const
                    {u"detail"_s, detail},
                    {u"start"_s, isoTime(startNs)},
                    {u"figures"_s, (endNs > 0 ? atEnd : atStart).toJson()}};
+    if (!configFile.isEmpty())
+        o.insert(u"config_file"_s, configFile);
     if (!direction.isEmpty()) {
         o.insert(u"direction"_s, direction);
         o.insert(u"ros_topic"_s, rosTopic);

@@ -12,6 +12,7 @@
 struct LinkDef
 {
     QString config; ///< the config's name (its file's base name)
+    QString configFile; ///< the config's file (empty: not known, or not saved yet)
     QString client; ///< the bridge's MQTT client id (empty when the config sets none)
     Direction direction = Direction::Ros2Mqtt;
     QString rosTopic;
@@ -33,7 +34,8 @@ struct LinkDef
     QString sourceTopic() const { return direction == Direction::Ros2Mqtt ? rosTopic : mqttTopic; }
     QString destinationTopic() const { return direction == Direction::Ros2Mqtt ? mqttTopic : rosTopic; }
     /// One link per mapping of `config` (mappings without both topics are skipped).
-    static QList<LinkDef> fromConfig(const BridgeConfig& config, const QString& name);
+    static QList<LinkDef> fromConfig(const BridgeConfig& config, const QString& name,
+                                     const QString& file = QString());
     /// The link an mqtt_client announces by publishing `mqtt_client/ros_msg_type/<mqttTopic>`: some
     /// bridge sends a ROS topic there. Named "discovered|ros2mqtt||<mqttTopic>".
     static LinkDef discoveredAt(const QString& mqttTopic, bool stamped);
@@ -88,6 +90,7 @@ struct WatchEvent
 {
     QString subject; ///< a link id, or "bridge:NAME"
     QString config;
+    QString configFile; ///< where the event came from: the watched config's file (may be empty)
     QString client;
     QString direction; ///< "ros2mqtt", "mqtt2ros", or empty for a bridge
     QString rosTopic;

@@ -51,6 +51,12 @@ LinkJudge::Verdict LinkJudge::judge(const LinkRules& r, const LinkDef& link, con
     const LinkFigures& f = in.figures;
     const bool publishes = sourcePublishes(in);
     Verdict v;
+    if (in.blindness != LinkBlindness::None) {
+        // What the watcher cannot see is neither stalled nor lost: it is not known.
+        v.unknown = true;
+        v.detail = tr("unknown (%1)").arg(blindnessText(in.blindness));
+        return v;
+    }
     const auto add = [&](LinkLevel l, LinkReason reason, const QString& text) {
         if (l == LinkLevel::Ok)
             return;
@@ -62,9 +68,13 @@ LinkJudge::Verdict LinkJudge::judge(const LinkRules& r, const LinkDef& link, con
     const LinkLevel stopped = in.sourceSilenceNs < 0
         ? LinkLevel::Ok
         : silenceLevel(r[LinkRules::SourceStoppedSeconds], Threshold(), in.periodNs, in.sourceSilenceNs);
-    const LinkLevel stall = publishes ? silenceLevel(r[LinkRules::StallSeconds], r[LinkRules::StallPeriods],
-                                                     in.periodNs, in.destinationSilenceNs)
-                                      : LinkLevel::Ok;
+    LinkLevel stall = publishes ? silenceLevel(r[LinkRules::StallSeconds], r[LinkRules::StallPeriods],
+                                               in.periodNs, in.destinationSilenceNs)
+                                : LinkLevel::Ok;
+    v.silent = stall != LinkLevel::Ok;
+    // Hysteresis: a stall goes on until the destination has carried messages steadily for a while.
+    const bool recovering = publishes && stall == LinkLevel::Ok && in.stallLevel != LinkLevel::Ok
+        && in.destinationSteadyNs < kStallRecoveryNs;
     add(stopped, LinkReason::SourceStopped,
         tr("the source %1 has been silent for %2 s")
             .arg(link.sourceTopic())
@@ -74,6 +84,13 @@ LinkJudge::Verdict LinkJudge::judge(const LinkRules& r, const LinkDef& link, con
             .arg(link.destinationTopic())
             .arg(double(in.destinationSilenceNs) / 1e9, 0, 'f', 1)
             .arg(link.sourceTopic()));
+    if (recovering) {
+        stall = in.stallLevel;
+        add(stall, LinkReason::Stall,
+            tr("%1 carries messages again, not yet steadily for %2 s")
+                .arg(link.destinationTopic())
+                .arg(double(kStallRecoveryNs) / 1e9, 0, 'f', 0));
+    }
     if (!publishes || stall != LinkLevel::Ok || !in.settled)
         return v;
     add(levelOf(r[LinkRules::MaxLossPercent], f.lossPercent, true), LinkReason::Loss,
@@ -91,6 +108,21 @@ LinkJudge::Verdict LinkJudge::judge(const LinkRules& r, const LinkDef& link, con
         add(levelOf(r[LinkRules::LatencyP99Ms], f.latencyP99Ms, true), LinkReason::Latency,
             tr("latency p99 %1 ms").arg(f.latencyP99Ms, 0, 'f', 1));
     return v;
+}
+
+QString LinkJudge::blindnessText(LinkBlindness blindness)
+{
+    switch (blindness) {
+    case LinkBlindness::None:
+        break;
+    case LinkBlindness::Broker:
+        return tr("broker unreachable");
+    case LinkBlindness::RosMaster:
+        return tr("ROS master unreachable");
+    case LinkBlindness::Ros2Domain:
+        return tr("ROS 2 domain unreachable");
+    }
+    return {};
 }
 
 QString LinkJudge::reasonName(LinkReason reason)

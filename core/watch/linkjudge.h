@@ -11,9 +11,14 @@
 /// metrics are written: "stall", "source_stopped", ...
 enum class LinkReason { SourceStopped, Stall, Loss, Rate, RateShare, Latency, BridgeDown };
 
+/// What keeps the watcher from seeing a side of a link: its own connection, not the bridge.
+enum class LinkBlindness { None, Broker, RosMaster, Ros2Domain };
+
 /// The judge: a link's figures and silences against its rules give a level and the reasons.
 ///
-/// Pure: no state, no clock of its own; LinkMonitor hands in what the traffic measured.
+/// Pure: no state, no clock of its own; LinkMonitor hands in what the traffic measured, whether
+/// it can see both sides, and the stall it is in (a stall ends only after kStallRecoveryNs of
+/// steady messages, so that a destination fed in bursts does not end and restart it every second).
 class LinkJudge
 {
     // Its sentences were LinkMonitor's and keep their translations.
@@ -28,17 +33,33 @@ public:
         qint64 destinationSilenceNs = 0; ///< since the destination's last message or the source's (re)start
         /// The windows are past any stall, start or restart: loss and rates can be judged.
         bool settled = false;
+        /// The watcher cannot see a side (its broker connection is down, the master unreachable):
+        /// nothing can be told of the link, and the bridge is not blamed.
+        LinkBlindness blindness = LinkBlindness::None;
+        /// The level of the stall the link is in (Ok: none).
+        LinkLevel stallLevel = LinkLevel::Ok;
+        /// How long the destination has not been silent past the stall threshold (see Verdict::silent).
+        qint64 destinationSteadyNs = 0;
     };
+    /// How long a stalled destination must carry messages steadily before the stall ends.
+    static constexpr qint64 kStallRecoveryNs = 2'000'000'000LL;
     struct Verdict
     {
         LinkLevel level = LinkLevel::Ok;
         QList<LinkReason> reasons; ///< in the order the rules are checked
         QString detail; ///< the sentence of the worst reason
+        /// The watcher cannot tell (its own connection): `detail` says why, the level is Ok.
+        bool unknown = false;
+        /// The destination is silent past the stall threshold while the source publishes (a stall,
+        /// or one starting); the monitor counts steadiness from the last moment it was.
+        bool silent = false;
     };
 
     static Verdict judge(const LinkRules& rules, const LinkDef& link, const Input& input);
     /// Whether the source publishes now: silent for less than two periods (and half a second).
     static bool sourcePublishes(const Input& input);
+    /// "broker unreachable", "ROS master unreachable", ... (empty for None).
+    static QString blindnessText(LinkBlindness blindness);
 
     static QString reasonName(LinkReason reason);
     static QStringList reasonNames(const QList<LinkReason>& reasons);

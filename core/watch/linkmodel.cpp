@@ -85,6 +85,7 @@ void LinkModel::refresh()
         r.figures = m_monitor->figures(i);
         r.level = m_monitor->level(i);
         r.reasons = m_monitor->reasons(i);
+        r.unknown = m_monitor->unknown(i);
         r.lastEvent = m_lastEvents.value(r.id);
         const std::vector<LinkMonitor::HistoryPoint> h = m_monitor->history(i);
         r.history.clear();
@@ -148,7 +149,7 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
     const LinkDef& d = m_monitor->link(index.row());
     const LinkFigures& f = r.figures;
     if (role == LevelRole)
-        return int(r.level);
+        return r.unknown.isEmpty() ? int(r.level) : UnknownLevel;
     if (role == LinkIdRole)
         return r.id;
     if (role == HistoryRole)
@@ -179,6 +180,8 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
         const bool value = role == ValueRole;
         switch (index.column()) {
         case StateColumn:
+            if (!r.unknown.isEmpty())
+                return value ? QVariant(UnknownLevel) : QVariant(r.unknown);
             return value ? QVariant(int(r.level))
                          : QVariant(r.reasons.isEmpty() ? levelText(r.level) : r.reasons.join(u", "_s));
         case BridgeColumn:

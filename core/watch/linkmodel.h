@@ -29,12 +29,15 @@ public:
         ColumnCount
     };
     enum Role {
-        LevelRole = Qt::UserRole + 1, ///< int(LinkLevel)
+        LevelRole = Qt::UserRole + 1, ///< int(LinkLevel), or UnknownLevel
         LinkIdRole,
         HistoryRole, ///< QList<double>: rate per second, oldest first
         ValueRole, ///< the number behind a figure (sorting)
         LatencySourceRole, ///< int(LatencySource)
     };
+
+    /// LevelRole of a link the watcher cannot see a side of (its own connection is down).
+    static constexpr int UnknownLevel = -1;
 
     explicit LinkModel(LinkMonitor* monitor, QObject* parent = nullptr);
 
@@ -58,6 +61,7 @@ private:
         LinkFigures figures;
         LinkLevel level = LinkLevel::Ok;
         QStringList reasons;
+        QString unknown; ///< "unknown (broker unreachable)" while a side cannot be seen
         QList<double> history;
         QString lastEvent;
     };

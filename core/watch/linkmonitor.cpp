@@ -55,7 +55,12 @@ struct LinkMonitor::Track : LinkTraffic
     std::deque<HistoryPoint> history;
     quint64 stalls = 0;
     bool stalled = false;
+    LinkLevel stallLevel = LinkLevel::Ok;
     qint64 stallEndedNs = 0;
+    qint64 silentNs = 0; ///< the last check that found the destination silent past the stall threshold
+    bool onRos2 = false; ///< its ROS topic is watched on the ROS 2 domain
+    LinkBlindness blindness = LinkBlindness::None;
+    QString unknown; ///< the judge's sentence while it cannot see a side
 
     bool stamped() const { return announcedStamped.value_or(def.stamped); }
 
@@ -174,6 +179,42 @@ LinkLevel LinkMonitor::level(int index) const
 QStringList LinkMonitor::reasons(int index) const
 {
     return LinkJudge::reasonNames(m_tracks.at(std::size_t(index))->reasons);
+}
+
+QString LinkMonitor::unknown(int index) const
+{
+    return m_tracks.at(std::size_t(index))->unknown;
+}
+
+void LinkMonitor::setSeeing(SourceGraph graph, bool seeing)
+{
+    m_blind[std::size_t(graph)] = !seeing;
+}
+
+void LinkMonitor::setRos2Topics(const QSet<QString>& topics)
+{
+    for (auto& t : m_tracks)
+        t->onRos2 = topics.contains(t->def.rosTopic);
+}
+
+void LinkMonitor::updateSight(qint64 nowNs)
+{
+    const auto blind = [this](SourceGraph g) { return m_blind[std::size_t(g)]; };
+    for (auto& tp : m_tracks) {
+        Track& t = *tp;
+        LinkBlindness b = LinkBlindness::None;
+        if (blind(SourceGraph::Mqtt))
+            b = LinkBlindness::Broker;
+        else if (!t.def.rosTopic.isEmpty() && t.onRos2 && blind(SourceGraph::Ros2))
+            b = LinkBlindness::Ros2Domain;
+        else if (!t.def.rosTopic.isEmpty() && !t.onRos2 && blind(SourceGraph::Ros1))
+            b = LinkBlindness::RosMaster;
+        t.blindness = b;
+        if (b != LinkBlindness::None && !t.blind)
+            t.loseSight();
+        else if (b == LinkBlindness::None && t.blind)
+            t.regainSight(nowNs);
+    }
 }
 
 std::vector<LinkMonitor::HistoryPoint> LinkMonitor::history(int index) const
@@ -431,6 +472,7 @@ void LinkMonitor::refreshStatistics(qint64 nowNs)
 
 void LinkMonitor::tick(qint64 nowNs)
 {
+    updateSight(nowNs);
     const bool refresh = nowNs - m_lastRefreshNs >= kSecond;
     if (refresh) {
         m_lastRefreshNs = nowNs;
@@ -450,21 +492,43 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
     LinkJudge::Input in;
     in.figures = figures(i);
     in.periodNs = t.src.expectedPeriodNs();
-    in.sourceSilenceNs = t.src.f.lastNs > 0 ? nowNs - t.src.f.lastNs : -1;
+    // Silences count from when the watcher saw again, at the latest: what it did not see is not silence.
+    in.sourceSilenceNs = t.src.f.lastNs > 0 ? nowNs - std::max(t.src.f.lastNs, t.sightNs) : -1;
     // Silence at the destination counts from its last message, or from when the source (re)started.
-    in.destinationSilenceNs = nowNs - std::max({t.dst.f.lastNs, t.startNs, t.src.resumedNs});
-    // Right after a stall, a start or a restart of either end the windows still hold the outage, which has
-    // its own event: loss and rates are judged again once the windows are past it. Both ends must have been
-    // heard over the whole window (they subscribe at different moments).
-    in.settled = nowNs - std::max({t.stallEndedNs, t.src.resumedNs, t.dst.resumedNs})
+    // After an outage of its own sight the watch subscribes again, and the bridge (on the same broker)
+    // reconnects as well: the destination's silence counts from a margin later.
+    const qint64 seenFrom = t.sightNs > 0 ? t.sightNs + LinkWindows::kSightMarginNs : 0;
+    in.destinationSilenceNs = nowNs - std::max({t.dst.f.lastNs, t.startNs, t.src.resumedNs, seenFrom});
+    // Right after a stall, a start or a restart of either end (or of the watcher's sight) the windows still
+    // hold the outage, which has its own event: loss and rates are judged again once the windows are past
+    // it. Both ends must have been heard over the whole window (they subscribe at different moments).
+    in.settled = nowNs - std::max({t.stallEndedNs, t.src.resumedNs, t.dst.resumedNs, seenFrom})
         > LinkWindows::kLossWindowNs + LinkWindows::kLossLagNs + kSecond;
+    in.blindness = t.blindness;
+    in.stallLevel = t.stalled ? t.stallLevel : LinkLevel::Ok;
+    in.destinationSteadyNs = nowNs - t.silentNs;
     const LinkJudge::Verdict v = LinkJudge::judge(t.rules, t.def, in);
+    t.unknown = v.unknown ? v.detail : QString();
+    if (v.silent)
+        t.silentNs = nowNs;
     const bool stalled = v.reasons.contains(LinkReason::Stall);
     if (stalled && !t.stalled)
         ++t.stalls;
+    // A stall ended with the destination's first message after its last silence (its recovery since
+    // only confirms it).
+    qint64 stallEnd = 0;
+    if (!stalled && t.stalled && !v.unknown) {
+        stallEnd = t.silentNs;
+        for (auto it = t.dst.arrivals.crbegin(); it != t.dst.arrivals.crend() && it->first > t.silentNs; ++it)
+            stallEnd = it->first;
+    }
     if (!stalled && t.stalled)
         t.stallEndedNs = nowNs;
     t.stalled = stalled;
+    if (stalled)
+        t.stallLevel = std::max(t.stallLevel, v.level);
+    else
+        t.stallLevel = LinkLevel::Ok;
     t.reasons = v.reasons;
     if (v.level == t.level) {
         // Same level, same event: it gathers every reason it had.
@@ -472,12 +536,15 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
         return;
     }
     t.level = v.level;
-    change(t.def.id(), &t.def, v.level, LinkJudge::reasonNames(v.reasons), v.detail, figures(i), nowNs);
+    change(t.def.id(), &t.def, v.level, LinkJudge::reasonNames(v.reasons), v.detail, figures(i), nowNs,
+           stallEnd);
 }
 
 void LinkMonitor::evaluateBridge(const QString& name, BridgeLiveness& b, qint64 nowNs)
 {
     BridgeLiveness::Input in;
+    in.nowNs = nowNs;
+    in.blind = m_blind[std::size_t(SourceGraph::Mqtt)];
     for (int i : std::as_const(b.links)) {
         const Track& t = *m_tracks[std::size_t(i)];
         in.lastDataNs = std::max(in.lastDataNs, t.dst.f.lastNs);
@@ -498,15 +565,16 @@ void LinkMonitor::evaluateBridge(const QString& name, BridgeLiveness& b, qint64 
 
 void LinkMonitor::change(const QString& subject, const LinkDef* link, LinkLevel level,
                          const QStringList& reasons, const QString& detail, const LinkFigures& figures,
-                         qint64 nowNs)
+                         qint64 nowNs, qint64 endNs)
 {
-    if (const auto ended = m_journal.end(subject, nowNs, figures))
+    if (const auto ended = m_journal.end(subject, endNs > 0 ? endNs : nowNs, figures))
         emit eventEnded(*ended);
     if (level == LinkLevel::Ok)
         return;
     WatchEvent e;
     e.subject = subject;
     e.config = link->config;
+    e.configFile = link->configFile;
     e.client = link->client;
     if (!subject.startsWith(u"bridge:"_s)) {
         e.direction = directionName(link->direction);

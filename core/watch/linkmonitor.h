@@ -6,6 +6,7 @@
 #include "watch/linkdef.h"
 #include "watch/linkjudge.h"
 #include "watch/watchrules.h"
+#include "wire/sourcemessage.h"
 
 #include <deque>
 #include <memory>
@@ -47,6 +48,14 @@ public:
     LinkFigures figures(int index) const;
     LinkLevel level(int index) const;
     QStringList reasons(int index) const;
+    /// "unknown (broker unreachable)" while the watcher cannot see a side of the link (empty: it can).
+    QString unknown(int index) const;
+
+    /// Whether the watcher sees a graph: its own broker connection, the ROS master, the ROS 2
+    /// domain. A link with a side on an unseen graph is unknown: not stalled, nothing lost.
+    void setSeeing(SourceGraph graph, bool seeing);
+    /// The links' ROS topics watched on the ROS 2 domain (the others are watched through the master).
+    void setRos2Topics(const QSet<QString>& topics);
     /// Destination rate and latency p99, one point a second, oldest first (at most 10 minutes).
     struct HistoryPoint
     {
@@ -111,8 +120,9 @@ private:
     void evaluate(int i, qint64 nowNs);
     void evaluateBridge(const QString& name, BridgeLiveness& bridge, qint64 nowNs);
     void change(const QString& subject, const LinkDef* link, LinkLevel level, const QStringList& reasons,
-                const QString& detail, const LinkFigures& figures, qint64 nowNs);
+                const QString& detail, const LinkFigures& figures, qint64 nowNs, qint64 endNs = 0);
     void refreshStatistics(qint64 nowNs);
+    void updateSight(qint64 nowNs);
     void announce(const QString& dataTopic, const QByteArray& payload);
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
@@ -134,4 +144,5 @@ private:
     quint64 m_droppedAnnouncements = 0;
     EventJournal m_journal;
     qint64 m_lastRefreshNs = 0;
+    bool m_blind[3] = {false, false, false}; ///< by SourceGraph
 };

@@ -119,9 +119,33 @@ void LinkTraffic::refresh(qint64 nowNs)
     figures.latencyP99Ms = Quantile::of(values, 0.99);
 }
 
+void LinkTraffic::loseSight()
+{
+    blind = true;
+}
+
+void LinkTraffic::regainSight(qint64 nowNs)
+{
+    blind = false;
+    sightNs = nowNs;
+    baseline.set = false;
+    // Header.seq jumps over what the watcher did not see: not a gap.
+    seq.started = false;
+    srcSeq.started = false;
+}
+
 void LinkTraffic::refreshLoss(qint64 nowNs)
 {
     LinkFigures& f = figures;
+    // What the watcher could not see is not lost: while it is blind and until its subscriptions
+    // are back nothing is counted; then everything is counted from the counts at that moment.
+    if (blind || (sightNs > 0 && nowNs - sightNs < kSightMarginNs)) {
+        f.lossPercent = 0;
+        f.lost = lostMax;
+        return;
+    }
+    if (sightNs > 0 && !baseline.set)
+        baseline = {true, nowNs, src.f.messages, dst.f.messages, lostMax, seq.gaps, srcSeq.gaps};
     // Loss: what the source sent in a 10 s window that ended a second ago (messages on their
     // way are not lost) against what arrived in as long a window. The edges of two windows can cut one
     // message differently: one missing message is not counted, so a loss shown is a loss.
@@ -141,6 +165,8 @@ void LinkTraffic::refreshLoss(qint64 nowNs)
     qint64 from = nowNs - kLossLagNs - kLossWindowNs;
     if (dst.firstNs > 0)
         from = std::max(from, dst.firstNs - 1 - shift);
+    if (baseline.set)
+        from = std::max(from, baseline.atNs);
     const quint64 sent = src.countIn(from, nowNs - kLossLagNs);
     const quint64 got = dst.countIn(from + shift, nowNs - kLossLagNs + shift);
     f.lossPercent
@@ -149,11 +175,16 @@ void LinkTraffic::refreshLoss(qint64 nowNs)
     // pauses, everything it sent that never arrived; Header.seq gaps are losses as well.
     const bool paused
         = src.f.lastNs > 0 && nowNs - src.f.lastNs > std::max<qint64>(3 * src.expectedPeriodNs(), kSecond);
-    const quint64 sentBy = (paused ? src.f.messages : srcThen) - std::min(unjudged, srcThen);
-    if (sentBy > dst.f.messages)
-        lostMax = std::max(lostMax, sentBy - dst.f.messages);
-    if (seq.gaps > srcSeq.gaps) // gaps the bridge made: lost for sure
-        lostMax = std::max(lostMax, seq.gaps - srcSeq.gaps);
+    const quint64 srcCount = paused ? src.f.messages : srcThen;
+    const quint64 srcFloor = baseline.set ? baseline.src : std::min(unjudged, srcThen);
+    const quint64 sentBy = srcCount - std::min(srcFloor, srcCount);
+    const quint64 arrived = dst.f.messages - std::min(baseline.dst, dst.f.messages);
+    if (sentBy > arrived)
+        lostMax = std::max(lostMax, baseline.lost + sentBy - arrived);
+    const quint64 gaps = seq.gaps - std::min(baseline.seqGaps, seq.gaps);
+    const quint64 srcGaps = srcSeq.gaps - std::min(baseline.srcSeqGaps, srcSeq.gaps);
+    if (gaps > srcGaps) // gaps the bridge made: lost for sure
+        lostMax = std::max(lostMax, baseline.lost + gaps - srcGaps);
     f.lost = lostMax;
 }
 

@@ -20,6 +20,9 @@ constexpr qint64 kKeepArrivalsNs
 constexpr std::size_t kMaxLatencies = 10000;
 constexpr std::size_t kMaxArrivals = 100000;
 constexpr quint64 kMinLossSample = 10; ///< source messages a loss figure needs
+/// After the watcher sees a side again (its own connection back), what it counts from: its
+/// subscriptions are made again, and messages on their way meanwhile are not the bridge's losses.
+constexpr qint64 kSightMarginNs = kLossLagNs + kSecond;
 } // namespace LinkWindows
 
 /// One end of a link: its counts, its arrivals of the last seconds and its rate.
@@ -76,6 +79,25 @@ struct LinkTraffic
     std::vector<double> newLatencies; ///< since the last takeNewLatencies(), for histograms
     LinkFigures figures; ///< as of the last refresh
     quint64 lostMax = 0;
+    /// The watcher cannot see a side (its broker connection, the ROS master): nothing is lost then.
+    bool blind = false;
+    qint64 sightNs = 0; ///< when it saw both sides again, last (0: it never lost sight)
+    /// What loss is counted from after an outage of the watcher's sight: the counts at its end.
+    struct Baseline
+    {
+        bool set = false;
+        qint64 atNs = 0;
+        quint64 src = 0;
+        quint64 dst = 0;
+        quint64 lost = 0; ///< lost before the outage
+        quint64 seqGaps = 0;
+        quint64 srcSeqGaps = 0;
+    } baseline;
+
+    /// The watcher lost sight of a side: loss is not counted until it sees again.
+    void loseSight();
+    /// It sees both sides again at `nowNs`: loss is counted afresh, kSightMarginNs later.
+    void regainSight(qint64 nowNs);
 
     /// A latency sample (ms) at `ns`; one beyond a day is a stamp of another day and ignored.
     void addLatency(qint64 ns, double ms, LatencySource source);

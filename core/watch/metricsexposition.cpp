@@ -188,6 +188,9 @@ void writeLinks(QByteArray& out, const std::vector<Link>& links,
     static constexpr Family rate {"bridgescope_link_rate_hz", "gauge",
                                   "Messages per second at one side of a link, over the last 5 s"};
     static constexpr Family state {"bridgescope_link_state", "gauge", "0 ok, 1 warning, 2 alert"};
+    static constexpr Family seen {"bridgescope_link_seen", "gauge",
+                                  "1 while the watch sees both sides of the link, 0 while its own "
+                                  "connection cannot (the link's state is unknown then)"};
     static constexpr Family latency {"bridgescope_link_latency_seconds", "histogram",
                                      "Latency of the messages over the link"};
     static constexpr Family bridgeUp {"bridgescope_bridge_up", "gauge",
@@ -228,6 +231,9 @@ void writeLinks(QByteArray& out, const std::vector<Link>& links,
     head(out, state, format);
     linkFamily(
         out, links, state, nullptr, [](const Link& l) { return double(l.state); }, always);
+    head(out, seen, format);
+    linkFamily(
+        out, links, seen, nullptr, [](const Link& l) { return l.seen ? 1.0 : 0.0; }, always);
 
     head(out, latency, format);
     for (const Link& l : links) {

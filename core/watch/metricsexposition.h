@@ -23,6 +23,7 @@ struct MetricsSnapshot
         bool hasSeqGaps = false; ///< the counter exists from the first gap on
         double sourceRate = 0, destinationRate = 0;
         int state = 0; ///< 0 ok, 1 warning, 2 alert
+        bool seen = true; ///< false while the watch's own connection cannot see a side (unknown)
         bool hasLatency = false; ///< the histogram exists from the first stamp on
         std::array<quint64, kLatencyBounds.size()> buckets {}; ///< per bucket, not cumulative
         quint64 latencyCount = 0; ///< all observations (the +Inf bucket)

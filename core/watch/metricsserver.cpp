@@ -3,6 +3,7 @@
 
 #include "watch/httphead.h"
 
+#include <algorithm>
 #include <QPointer>
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -63,9 +64,13 @@ bool MetricsServer::parseHostPort(const QString& hostPort, QHostAddress* address
     if (colon < 0)
         return fail();
     QString host = hostPort.left(colon);
+    const QString portText = hostPort.mid(colon + 1);
+    // Digits only: toUInt() takes " 80" and "+80" as well.
+    const bool digits = !portText.isEmpty() && portText.size() <= 5
+        && std::all_of(portText.cbegin(), portText.cend(), [](QChar c) { return c >= u'0' && c <= u'9'; });
     bool ok = false;
-    const uint p = hostPort.mid(colon + 1).toUInt(&ok);
-    if (!ok || p > 65535)
+    const uint p = portText.toUInt(&ok);
+    if (!digits || !ok || p > 65535)
         return fail();
     if (host.startsWith(u'[') && host.endsWith(u']'))
         host = host.mid(1, host.size() - 2);

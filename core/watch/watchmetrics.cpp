@@ -33,6 +33,13 @@ WatchMetrics::WatchMetrics()
 
 WatchMetrics::~WatchMetrics() = default;
 
+bool WatchMetrics::checkAddress(const QString& hostPort, QString* error)
+{
+    QHostAddress address;
+    quint16 port = 0;
+    return MetricsServer::parseHostPort(hostPort, &address, &port, error);
+}
+
 std::unique_ptr<WatchMetrics> WatchMetrics::serve(const QString& hostPort, QString* error)
 {
     std::unique_ptr<WatchMetrics> m(new WatchMetrics);
@@ -89,6 +96,7 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         l.sourceRate = f.source.rateHz;
         l.destinationRate = f.destination.rateHz;
         l.state = int(monitor.level(i));
+        l.seen = monitor.unknown(i).isEmpty();
         for (double ms : monitor.takeNewLatencies(i)) {
             const double s = ms / 1000.0;
             const auto& bounds = MetricsSnapshot::kLatencyBounds;

@@ -23,6 +23,9 @@ class WatchMetrics
 public:
     /// Listens on `hostPort` ("127.0.0.1:9464", "[::1]:0" for any free port); nullptr with `error`.
     static std::unique_ptr<WatchMetrics> serve(const QString& hostPort, QString* error);
+    /// Whether `hostPort` is a HOST:PORT serve() can try (port 0 to 65535, the host an address);
+    /// false with `error` saying what it should look like.
+    static bool checkAddress(const QString& hostPort, QString* error);
     ~WatchMetrics();
     /// The port it listens on.
     int port() const;

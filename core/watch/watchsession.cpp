@@ -3,6 +3,7 @@
 
 #include "base/logging.h"
 #include "base/wallclock.h"
+#include "mqtt/mqttconnection.h"
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
@@ -19,7 +20,7 @@ constexpr SourceGraph kGraphs[] {SourceGraph::Mqtt, SourceGraph::Ros1, SourceGra
 
 WatchSession::Parts WatchSession::partsOf(LiveSession* live)
 {
-    return {live->sources(), live->rosGraph(), live->ros2(), live->rosMonitor()};
+    return {live->sources(), live->rosGraph(), live->ros2(), live->rosMonitor(), live->mqtt()};
 }
 
 WatchSession::WatchSession(const Parts& parts, QObject* parent)
@@ -57,10 +58,26 @@ bool WatchSession::ros2Running() const
 
 void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
 {
-    m_configLinks.clear();
-    m_configMqttTopics.clear();
+    QList<Config> named;
     for (const auto& [name, config] : configs)
-        m_configLinks << LinkDef::fromConfig(config, name);
+        named.append({name, QString(), config});
+    setConfigs(named);
+}
+
+bool WatchSession::setConfigs(const QList<Config>& configs, QString* error)
+{
+    QList<LinkDef> links;
+    for (const Config& c : configs)
+        links << LinkDef::fromConfig(c.config, c.name, c.file);
+    if (m_linkLimit > 0 && links.size() > m_linkLimit) {
+        if (error)
+            *error = tr("%1 links would be watched; the limit is %2 links per window: nothing was subscribed")
+                         .arg(links.size())
+                         .arg(m_linkLimit);
+        return false;
+    }
+    m_configLinks = links;
+    m_configMqttTopics.clear();
     for (const LinkDef& l : std::as_const(m_configLinks))
         m_configMqttTopics.insert(l.mqttTopic);
     m_discovered.clear();
@@ -68,6 +85,44 @@ void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& con
     applyLinks();
     qCDebug(lcWatch) << "watching" << m_monitor->linkCount() << "links of" << configs.size() << "configs,"
                      << m_discovered.size() << "discovered";
+    return true;
+}
+
+WatchSession::Plan WatchSession::planOf(const Config& config) const
+{
+    const QSet<QString> onRos2 = ros2Published();
+    Plan plan;
+    QSet<QString> ros, mqtt;
+    for (const LinkDef& l : LinkDef::fromConfig(config.config, config.name, config.file)) {
+        ++plan.links;
+        if (!ros.contains(l.rosTopic)) {
+            ros.insert(l.rosTopic);
+            (onRos2.contains(l.rosTopic) ? plan.ros2Topics : plan.rosTopics) << l.rosTopic;
+        }
+        if (!mqtt.contains(l.mqttTopic)) {
+            mqtt.insert(l.mqttTopic);
+            plan.mqttTopics << l.mqttTopic;
+        }
+    }
+    return plan;
+}
+
+QSet<QString> WatchSession::ros2Published() const
+{
+    QSet<QString> onRos2;
+    if (ros2Running())
+        for (const Ros2Topic& t : m_parts.ros2->graph().topics)
+            if (!t.publishers.isEmpty())
+                onRos2.insert(t.name);
+    return onRos2;
+}
+
+void WatchSession::updateSight()
+{
+    const bool broker = !m_parts.mqtt || m_parts.mqtt->state() == MqttConnection::State::Connected;
+    m_monitor->setSeeing(SourceGraph::Mqtt, broker);
+    m_monitor->setSeeing(SourceGraph::Ros1, m_parts.rosGraph->isReachable());
+    m_monitor->setSeeing(SourceGraph::Ros2, ros2Running());
 }
 
 void WatchSession::setDiscovering(bool discovering)
@@ -145,6 +200,7 @@ void WatchSession::update(qint64 nowNs)
     }
     if (nowNs - m_lastTickNs >= kTickNs) {
         m_lastTickNs = nowNs;
+        updateSight();
         m_monitor->tick(nowNs);
     }
 }
@@ -160,11 +216,7 @@ void WatchSession::syncRosTopics()
 {
     // Each wanted topic is watched where it is: on the ROS 2 domain when that has it (a ROS 2
     // subscription needs the type its publishers announce), else through the ROS 1 master.
-    QSet<QString> onRos2;
-    if (ros2Running())
-        for (const Ros2Topic& t : m_parts.ros2->graph().topics)
-            if (!t.publishers.isEmpty())
-                onRos2.insert(t.name);
+    const QSet<QString> onRos2 = ros2Published();
     QStringList graphTopics;
     for (const RosTopicInfo& t : m_parts.rosGraph->graph().topics)
         graphTopics << t.name;
@@ -176,6 +228,7 @@ void WatchSession::syncRosTopics()
 
     m_parts.sources.ros1->monitorExactly(m_monitored, want1);
     m_parts.sources.ros2->monitorExactly(m_monitored2, want2);
+    m_monitor->setRos2Topics(want2);
 }
 
 void WatchSession::useMeasurement(MeasureSession* measure)

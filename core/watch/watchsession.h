@@ -8,6 +8,7 @@
 #include <QPointer>
 
 class LiveSession;
+class MqttConnection;
 class RosGraphPoller;
 class RosMonitor;
 class Ros2Participant;
@@ -19,7 +20,13 @@ class MeasureSession;
 /// control messages from the MQTT batches), keeps what they monitor in step with the links and the
 /// graphs (a link's ROS topic is watched on whichever graph has it), and ticks the monitor four
 /// times a second. Broker and master restarts are the
-/// live session's business (it reconnects and registers again); the links simply resume.
+/// live session's business (it reconnects and registers again); the links simply resume. While the
+/// watch's own connection cannot see a graph (the broker connection down, the master or the ROS 2
+/// domain unreachable) the links with a side there are unknown, not stalled, and lose nothing.
+///
+/// It watches the configs it is given and nothing else: a window gives only those the user turned
+/// watching on for, within a link limit (setLinkLimit()); planOf() says beforehand what one would
+/// subscribe to.
 class WatchSession : public QObject
 {
     Q_OBJECT
@@ -31,7 +38,26 @@ public:
         const RosGraphPoller* rosGraph = nullptr; ///< the ROS 1 master's graph
         const Ros2Participant* ros2 = nullptr; ///< the ROS 2 domain's graph, while it is joined
         const RosMonitor* rosMonitor = nullptr; ///< the ROS 1 types and definitions
+        const MqttConnection* mqtt = nullptr; ///< the watch's own broker connection (null: always seen)
     };
+    /// A config to watch: its name (its file's base name), its file (empty: not saved) and content.
+    struct Config
+    {
+        QString name;
+        QString file;
+        BridgeConfig config;
+    };
+    /// What watching a config subscribes to: its links and their topics on each graph.
+    struct Plan
+    {
+        int links = 0;
+        QStringList rosTopics; ///< through the ROS 1 master
+        QStringList ros2Topics; ///< on the ROS 2 domain (those published there now)
+        QStringList mqttTopics;
+    };
+    /// The links a window watches at most (see docs/ROBUSTNESS.md): each is a subscription on the
+    /// broker and one at the master or the ROS 2 domain, which the lab's master and broker carry.
+    static constexpr int kWindowLinkLimit = 2'000;
     /// The parts of a live session a watch reads.
     static Parts partsOf(LiveSession* live);
 
@@ -41,6 +67,14 @@ public:
     LinkMonitor* monitor() const { return m_monitor; }
     /// Watches the links of these configs (name, config), replacing what was watched.
     void setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs);
+    /// Watches the links of these configs, replacing what was watched; beyond the link limit nothing
+    /// changes and false comes back with `error` (the count and the limit).
+    bool setConfigs(const QList<Config>& configs, QString* error = nullptr);
+    /// The links watched at most (0: no limit, the default; a window sets kWindowLinkLimit).
+    void setLinkLimit(int links) { m_linkLimit = links; }
+    int linkLimit() const { return m_linkLimit; }
+    /// What watching `config` would subscribe to, on the graphs as they are now.
+    Plan planOf(const Config& config) const;
     /// Whether the links mqtt_client announces on the broker (its type topics) that no config has
     /// are watched too, from their MQTT end (on by default).
     void setDiscovering(bool discovering);
@@ -68,6 +102,9 @@ private:
     bool discoverLinks();
 
     bool ros2Running() const;
+    /// The ROS 2 domain's topics that have publishers (empty when it is not joined).
+    QSet<QString> ros2Published() const;
+    void updateSight();
 
     Parts m_parts; ///< the sources may go first (siblings in a window die in the order they were made)
     LinkMonitor* m_monitor;
@@ -80,5 +117,6 @@ private:
     QSet<QString> m_configMqttTopics;
     QStringList m_discovered; ///< MQTT topics of the discovered links, sorted
     int m_unwatched = 0;
+    int m_linkLimit = 0;
     bool m_discovering = true;
 };

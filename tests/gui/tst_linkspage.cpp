@@ -10,7 +10,9 @@
 #include "demo/demolab.h"
 #include "namecheck.h"
 #include "record/runfile.h"
+#include "ros/rosmasterapi.h"
 #include "session/measuresession.h"
+#include "testservers.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
@@ -29,15 +31,75 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QProcess>
 #include <QPushButton>
 #include <QSortFilterProxyModel>
-#include <QTabWidget>
 #include <QTableView>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 #include <QValueAxis>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+/// A config of `plain` ROS → MQTT mappings /PREFIX/tN and `in` MQTT → ROS ones /PREFIX/inN.
+QString writeConfig(const QString& dir, const QString& prefix, quint16 brokerPort, int plain, int in)
+{
+    QString yaml
+        = u"broker:\n  host: 127.0.0.1\n  port: %1\nclient:\n  id: %2_bridge\nbridge:\n  ros2mqtt:\n"_s
+              .arg(brokerPort)
+              .arg(prefix);
+    for (int i = 0; i < plain; ++i)
+        yaml += u"    - {ros_topic: /%1/t%2, mqtt_topic: %1/t%2}\n"_s.arg(prefix).arg(i);
+    if (in > 0)
+        yaml += u"  mqtt2ros:\n"_s;
+    for (int i = 0; i < in; ++i)
+        yaml += u"    - {mqtt_topic: %1/in%2, ros_topic: /%1/in%2}\n"_s.arg(prefix).arg(i);
+    const QString path = dir + u'/' + prefix + u".yaml"_s;
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(yaml.toUtf8()) < 0)
+        return {};
+    return path;
+}
+
+/// The master's topics under /PREFIX/: those this process subscribes to (its anonymous node is
+/// /bridgescope_…), and all it knows.
+struct MasterTopics
+{
+    QStringList subscribed;
+    QStringList known;
+};
+MasterTopics masterTopics(const QString& masterUri, const QString& prefix)
+{
+    MasterTopics out;
+    const std::optional<RosGraph> graph = RosMasterApi(masterUri).graph(3000);
+    if (!graph)
+        return out;
+    for (const RosTopicInfo& t : graph->topics) {
+        if (!t.name.startsWith(u'/' + prefix + u'/'))
+            continue;
+        out.known << t.name;
+        for (const QString& node : t.subscribers)
+            if (node.startsWith(u"/bridgescope"_s)) {
+                out.subscribed << t.name;
+                break;
+            }
+    }
+    out.known.sort();
+    out.subscribed.sort();
+    return out;
+}
+
+QStringList rowTexts(const QTreeWidgetItem* item)
+{
+    QStringList texts;
+    for (int c = 0; c < item->columnCount(); ++c)
+        texts << item->text(c);
+    return texts;
+}
+} // namespace
 
 class TestLinksPage : public QObject
 {
@@ -89,6 +151,116 @@ private slots:
         QCOMPARE(changes, 0);
     }
 
+    // Issue 40: opening a config to edit it subscribed to each mapped ROS topic (a 20,000-mapping
+    // config grew the lab's master to 18,067 topics) and its unbridged mappings raised events.
+    // Opening lists it with what watching would subscribe to, and changes nothing in the lab; the
+    // user turns watching on (Space on its row), which subscribes to what was shown, and off or
+    // closing the config unsubscribes from all of it. Past the window's link limit it is refused.
+    void openingAConfigChangesNothingInTheLab()
+    {
+        TestServers servers;
+        QVERIFY2(servers.startMosquitto(), qPrintable(servers.errorString()));
+        QVERIFY2(servers.startRosMaster(), qPrintable(servers.errorString()));
+        const QString config = writeConfig(servers.tempPath(), u"quiet"_s, servers.mosquittoPort(), 30, 10);
+        QVERIFY(!config.isEmpty());
+        // One of its ROS topics is published and no bridge carries it: watched, it would stall.
+        QProcess pub;
+        pub.setProcessEnvironment(servers.rosEnvironment());
+        pub.start(u"rostopic"_s,
+                  {u"pub"_s, u"-r"_s, u"10"_s, u"/quiet/t0"_s, u"std_msgs/String"_s, u"data: x"_s});
+        QVERIFY(pub.waitForStarted(5000));
+        QTRY_COMPARE_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).known,
+                                  QStringList {u"/quiet/t0"_s}, 15000);
+
+        MainWindow window;
+        window.discoverPage()->setRosMasterUri(servers.rosMasterUri());
+        window.discoverPage()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
+        LinksPage* page = window.linksPage();
+        window.pages()->setCurrentWidget(page);
+        window.resize(1280, 800);
+        window.show();
+        QString error;
+        QVERIFY2(window.files()->openFile(config, &error), qPrintable(error));
+        QTreeWidget* list = page->configList();
+        QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 5000);
+        // What watching it would subscribe to, before it does: 40 links, 40 ROS topics (none is on a
+        // ROS 2 domain), 40 MQTT topics, and the topics themselves.
+        QCOMPARE(rowTexts(list->topLevelItem(0)),
+                 QStringList({u"quiet"_s, u"40"_s, u"40"_s, u"0"_s, u"40"_s}));
+        QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Unchecked);
+        QVERIFY2(
+            page->planLabel()->text().contains(u"quiet is not watched. Watching it would subscribe to 40 ROS "
+                                               u"topics at the master, 0 on the ROS 2 domain and 40 MQTT "
+                                               u"topics (links: 40)."_s),
+            qPrintable(page->planLabel()->text()));
+        QVERIFY(page->planLabel()->toolTip().contains(u"  /quiet/t29"_s));
+        QVERIFY(page->planLabel()->toolTip().contains(u"  quiet/in9"_s));
+        // Not a sleep to synchronise: the time in which a watching window subscribed and raised a stall.
+        QTest::qWait(5000);
+        QCOMPARE(masterTopics(servers.rosMasterUri(), u"quiet"_s).known, QStringList {u"/quiet/t0"_s});
+        QVERIFY(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed.isEmpty());
+        QCOMPARE(page->linkModel()->rowCount(), 0);
+        QCOMPARE(page->eventModel()->rowCount(), 0);
+        QVERIFY(window.watch()->monitor()->openEvents().isEmpty());
+        QCOMPARE(page->summaryLabel()->text(), u"No links watched: check a config below to watch it."_s);
+
+        // Turned on from the keyboard: exactly the ROS topics shown are subscribed at the master.
+        QStringList shown;
+        for (int i = 0; i < 30; ++i)
+            shown << u"/quiet/t%1"_s.arg(i);
+        for (int i = 0; i < 10; ++i)
+            shown << u"/quiet/in%1"_s.arg(i);
+        shown.sort();
+        list->setFocus();
+        list->setCurrentItem(list->topLevelItem(0));
+        QTest::keyClick(list, Qt::Key_Space);
+        QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Checked);
+        QCOMPARE(page->linkModel()->rowCount(), 40);
+        QTRY_COMPARE_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed, shown, 15000);
+        QVERIFY(page->planLabel()->text().startsWith(
+            u"quiet is watched (links: 40): subscribed to 40 ROS topics"_s));
+        // A watched config raises events, and says where they came from.
+        QTRY_VERIFY_WITH_TIMEOUT(page->eventModel()->rowCount() > 0, 15000);
+        QCOMPARE(page->eventModel()->eventAt(0).configFile, QFileInfo(config).absoluteFilePath());
+        QCOMPARE(page->eventModel()->eventAt(0).client, u"quiet_bridge"_s);
+
+        // Off: every subscription goes, and the master forgets the topics no one else has.
+        QTest::keyClick(list, Qt::Key_Space);
+        QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Unchecked);
+        QCOMPARE(page->linkModel()->rowCount(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed.isEmpty(),
+                                 15000);
+        QTRY_COMPARE_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).known,
+                                  QStringList {u"/quiet/t0"_s}, 15000);
+        // On again, then the config is closed: undone as completely.
+        QVERIFY(page->setWatched(u"quiet"_s, true));
+        QTRY_COMPARE_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed, shown, 15000);
+        QVERIFY(window.files()->closeConfig(0));
+        QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 0, 5000);
+        QCOMPARE(page->linkModel()->rowCount(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed.isEmpty(),
+                                 15000);
+
+        // Past the limit: refused, saying the count and the limit, and nothing is subscribed.
+        const QString big = writeConfig(servers.tempPath(), u"big"_s, servers.mosquittoPort(),
+                                        WatchSession::kWindowLinkLimit + 1, 0);
+        QVERIFY2(window.files()->openFile(big, &error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 10000);
+        QVERIFY2(page->planLabel()->text().contains(u"That is more than the 2000 links a window watches."_s),
+                 qPrintable(page->planLabel()->text()));
+        QVERIFY(!page->setWatched(u"big"_s, true, &error));
+        QCOMPARE(error,
+                 u"Watching big refused: 2001 links would be watched; the limit is 2000 links per "
+                 u"window: nothing was subscribed"_s);
+        QCOMPARE(page->planLabel()->text(), error);
+        QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Unchecked);
+        QCOMPARE(page->linkModel()->rowCount(), 0);
+        QTest::qWait(2000);
+        QVERIFY(masterTopics(servers.rosMasterUri(), u"big"_s).known.isEmpty());
+        pub.terminate();
+        pub.waitForFinished(5000);
+    }
+
     void showsTheLabsLinksAndTheirOutages()
     {
         DemoLab lab;
@@ -103,7 +275,9 @@ private slots:
         window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
         window.files()->openFile(lab.vehicleConfigPath());
         LinksPage* page = window.linksPage();
-        QVERIFY2(page->addConfigFiles({lab.cloudConfigPath()}, &error), qPrintable(error));
+        QVERIFY2(page->addConfigFiles({lab.cloudConfigPath()}, &error, true), qPrintable(error));
+        // The Map page's config is listed a second after it opened, and watched once checked.
+        QTRY_VERIFY_WITH_TIMEOUT(page->setWatched(lab.vehicleConfigPath(), true), 10000);
         QVERIFY(!page->addConfigFiles({lab.directory() + u"/mosquitto.conf"_s}, &error));
         QVERIFY(error.contains(u"mosquitto.conf"_s));
         // The Measure page's pipeline: every mapping with a timestamp_topic_prefix gets the
@@ -115,7 +289,7 @@ private slots:
         window.resize(1280, 800);
         window.show();
 
-        // The Map page's config arrives a second after it opened: four links, all carrying data.
+        // Four links, all carrying data.
         LinkModel* model = page->linkModel();
         QTRY_COMPARE_WITH_TIMEOUT(model->rowCount(), 4, 10000);
         const auto healthy = [&] {

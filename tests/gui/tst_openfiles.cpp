@@ -35,6 +35,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 
 using namespace Qt::StringLiterals;
 
@@ -66,13 +67,13 @@ QStringList tabTexts(MapPage* page)
     return texts;
 }
 
-QStringList linkBridges(LinksPage* page)
+/// The configs the Links page lists (watched or not: opening one watches nothing).
+QStringList listedConfigs(LinksPage* page)
 {
-    QStringList bridges;
-    const QAbstractItemModel* m = page->linkModel();
-    for (int r = 0; r < m->rowCount(); ++r)
-        bridges << m->index(r, LinkModel::BridgeColumn).data().toString();
-    return bridges;
+    QStringList names;
+    for (int r = 0; r < page->configList()->topLevelItemCount(); ++r)
+        names << page->configList()->topLevelItem(r)->text(0);
+    return names;
 }
 } // namespace
 
@@ -254,13 +255,13 @@ private slots:
         QCOMPARE(w.pages()->currentWidget(), w.experimentPage());
         QVERIFY(w.experimentPage()->planText().contains(u"Methods (Table I)"_s));
 
-        // Two configs: both on Map, a tab each, the first shown; Links watches both.
+        // Two configs: both on Map, a tab each, the first shown; Links lists both.
         QVERIFY(drop(&w, {m_otherConfig, m_config}));
         QCOMPARE(w.pages()->currentWidget(), w.mapPage());
         QCOMPARE(w.document()->filePath(), m_otherConfig);
         QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
-        QTRY_VERIFY(linkBridges(w.linksPage()).contains(u"vehicle"_s));
-        QTRY_VERIFY(linkBridges(w.linksPage()).contains(u"cloud"_s));
+        QTRY_VERIFY(listedConfigs(w.linksPage()).contains(u"vehicle"_s));
+        QTRY_VERIFY(listedConfigs(w.linksPage()).contains(u"cloud"_s));
 
         // Open Recent has runs and pipelines as well as configs, and opens each where it belongs.
         QMenu* recent = recentMenu(w);

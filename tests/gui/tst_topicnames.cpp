@@ -196,7 +196,9 @@ private slots:
         w->discoverPage()->setRosMasterUri(m_lab.rosMasterUri());
         w->discoverPage()->connectBroker(MqttProfile::fromUrl(m_lab.brokerUrl()));
         w->files()->openFile(m_lab.vehicleConfigPath());
-        QVERIFY2(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, &error), qPrintable(error));
+        QVERIFY2(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, &error, true), qPrintable(error));
+        QTRY_VERIFY(
+            w->linksPage()->setWatched(m_lab.vehicleConfigPath(), true)); // listed a second after it opened
         const std::optional<Pipeline> pipeline = Pipeline::load(m_lab.pipelinePath(), &error);
         QVERIFY2(pipeline, qPrintable(error));
         w->measure()->setPipeline(*pipeline);

@@ -46,6 +46,16 @@ QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArra
     f.write(text);
     return path;
 }
+
+/// A config of one link whose broker nothing listens on.
+QString unreachableConfig(const QTemporaryDir& dir)
+{
+    return writeFile(dir, u"bridge.yaml"_s,
+                     u"broker: {host: 127.0.0.1, port: %1}\nbridge:\n  mqtt2ros:\n    - "
+                     u"{mqtt_topic: lab/x, ros_topic: /lab/x, primitive: true}\n"_s.arg(TestServers::freePort())
+                         .toUtf8());
+}
+
 /// A run of the paper's pipeline with `samples` samples, then `sql` run on it: a hostile run file.
 QString hostileRun(const QTemporaryDir& dir, const QString& name, const QStringList& sql, int samples = 20)
 {
@@ -380,6 +390,51 @@ private slots:
                      .value(u"reachable"_s)
                      .toBool(),
                  false);
+    }
+
+    // Issue 40: `watch --metrics 127.0.0.1:99999` exited 1 as if the network had failed; a HOST:PORT
+    // that is not one is a usage error (2), said before anything runs.
+    void watchRefusesAMetricsAddressThatIsNone_data()
+    {
+        QTest::addColumn<QString>("address");
+        for (const char* a : {"127.0.0.1:99999", "127.0.0.1:65536", "127.0.0.1",
+                              "127.0.0.1:", "127.0.0.1:abc", "127.0.0.1:+80", "127.0.0.1: 80", "127.0.0.1:-1",
+                              "no.such.host:9464", "[::1:9464", "127.0.0.1:0x50", ""})
+            QTest::newRow(*a ? a : "empty") << QString::fromLatin1(a);
+    }
+    void watchRefusesAMetricsAddressThatIsNone()
+    {
+        QFETCH(QString, address);
+        QTemporaryDir dir;
+        const QString config = unreachableConfig(dir);
+        const Run r = bridgescope({u"watch"_s, config, u"--seconds"_s, u"30"_s, u"--metrics"_s, address});
+        QCOMPARE(r.exit, 2);
+        QVERIFY2(r.err.contains(u"is not HOST:PORT (for example 127.0.0.1:9464"_s), qPrintable(r.err));
+        QVERIFY2(!r.err.contains(u"watching"_s), qPrintable(r.err)); // refused before it started
+    }
+
+    // Issue 40: a watch ended without a summary. It ends (--seconds, Ctrl+C) with one: a sentence on
+    // stderr and a JSON line on stdout of what it saw.
+    void watchEndsWithASummary()
+    {
+        QTemporaryDir dir;
+        const QString config = unreachableConfig(dir);
+        const Run r
+            = bridgescope({u"watch"_s, config, u"--seconds"_s, u"1"_s, u"--allow-empty"_s, u"--ros-master"_s,
+                           u"http://127.0.0.1:%1/"_s.arg(TestServers::freePort())});
+        QVERIFY2(r.exit == 0, qPrintable(r.err));
+        QVERIFY2(
+            r.err.contains(u"watch ended after 1 s: links 1 (0 ok, 0 warning, 0 alert, 1 unknown), events 0 "
+                           u"(0 alerts), messages 0 at the sources and 0 at the destinations, lost 0, "
+                           u"stalls 0"_s),
+            qPrintable(r.err));
+        const QStringList lines = r.out.trimmed().split(u'\n');
+        const QJsonObject summary = QJsonDocument::fromJson(lines.last().toUtf8()).object();
+        QCOMPARE(summary.value(u"event"_s).toString(), u"summary"_s);
+        QCOMPARE(summary.value(u"links"_s).toInt(), 1);
+        QCOMPARE(summary.value(u"events"_s).toInt(), 0);
+        QCOMPARE(summary.value(u"unknown"_s).toInt(), 1); // the broker was never reached
+        QCOMPARE(summary.value(u"lost"_s).toDouble(), 0.0);
     }
 
     // Issue 31: a watch whose broker and master never answer says so within seconds and exits 1

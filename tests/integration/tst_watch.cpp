@@ -366,7 +366,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"bridge:watch_bridge"_s).size() == 1, 5000);
         for (const QJsonObject& e : stallEnds()) {
             const QByteArray what = QJsonDocument(e).toJson(QJsonDocument::Compact);
-            QVERIFY2(e.value(u"duration_s"_s).toDouble() > 0.5, what.constData());
+            // From its detection to the first message back (issue 40: not to the check that confirmed
+            // the recovery): a bridge restarted at once may be back within a few hundred ms.
+            QVERIFY2(e.value(u"duration_s"_s).toDouble() > 0.1, what.constData());
             QVERIFY2(!e.value(u"end"_s).toString().isEmpty(), what.constData());
         }
         for (const QJsonObject& e : events(restarted, u"start"_s, u"|/w/"_s))
@@ -498,18 +500,45 @@ private slots:
         QCOMPARE(discover.exitCode(), 0);
     }
 
-    void survivesBrokerAndMasterRestarts()
+    // Issue 40: with the watch's own broker gone, Links showed "stall", "bridge … carries nothing"
+    // and "99.0 % (135) lost", then "50.0 %" after recovery. While the broker is away every link is
+    // unknown (bridgescope_link_seen 0), no stall or bridge-down event blames the bridge, and
+    // nothing of the outage is counted as lost. Master restarts are survived, every link resuming.
+    void aBrokerOutageBlamesNoOne()
     {
         const int brokerRestarts = envInt("WATCH_BROKER_RESTARTS", 2);
         const int masterRestarts = envInt("WATCH_MASTER_RESTARTS", 1);
         const quint16 brokerPort = m_servers.mosquittoPort();
         const quint16 masterPort = m_servers.rosMasterPort();
+        const QStringList topics {u"/w/stamped"_s, u"/w/plain"_s, u"/w/in_stamped"_s, u"/w/in_plain"_s};
+        const auto total = [&](const QByteArray& text, const QString& name) {
+            double sum = 0;
+            for (const QString& t : topics)
+                sum += linkValue(text, name, t);
+            return sum;
+        };
+        const auto unseen = [&] {
+            const QByteArray text = metrics();
+            for (const QString& t : topics)
+                if (TestServers::metricSample(text, u"bridgescope_link_seen"_s, {u"topic=\"%1\""_s.arg(t)})
+                    != 0.0)
+                    return false;
+            return true;
+        };
+        waitForAllLinks(20000);
+        QTest::qWait(3000); // what was on its way has arrived and been counted
+        const QByteArray before = metrics();
+        const double lostBefore = total(before, u"bridgescope_link_lost_total"_s);
+        const double stallsBefore = total(before, u"bridgescope_link_stalls_total"_s);
         const int from = int(m_events.size());
-        const double plainStalls = linkValue(metrics(), u"bridgescope_link_stalls_total"_s, u"/w/plain"_s);
         for (int round = 0; round < qMax(brokerRestarts, masterRestarts); ++round) {
             if (round < brokerRestarts) {
                 m_servers.stopMosquitto();
-                QTest::qWait(2000);
+                QTRY_VERIFY_WITH_TIMEOUT(unseen(), 5000);
+                QTest::qWait(3000); // longer than any stall threshold: the ROS sources go on publishing
+                QVERIFY(unseen());
+                QVERIFY2(events(from, u"start"_s, u""_s).isEmpty(),
+                         QJsonDocument(events(from, u"start"_s, u""_s).value(0)).toJson().constData());
                 QVERIFY2(m_servers.startMosquittoOnPort(brokerPort), qPrintable(m_servers.errorString()));
                 QTRY_VERIFY_WITH_TIMEOUT(m_mqtt->isConnected(), 10000);
                 announce(); // retained messages do not survive a broker without persistence
@@ -524,14 +553,16 @@ private slots:
                 QCOMPARE(m_watch.state(), QProcess::Running);
             }
         }
-        // Every broker outage was a stall of the ROS → MQTT links (the ROS side went on publishing),
-        // told as an event (or, when the link was in alert already, added to its open event).
-        const double stalls
-            = linkValue(metrics(), u"bridgescope_link_stalls_total"_s, u"/w/plain"_s) - plainStalls;
-        QVERIFY2(stalls >= brokerRestarts, qPrintable(QString::number(stalls)));
-        QVERIFY(!events(from, u"start"_s, u"|ros2mqtt|"_s, u"stall"_s).isEmpty());
-        QTRY_VERIFY_WITH_TIMEOUT(
-            events(from, u"start"_s, u""_s).size() == events(from, u"end"_s, u""_s).size(), 20000);
+        QTest::qWait(3000);
+        const QByteArray after = metrics();
+        QCOMPARE(total(after, u"bridgescope_link_lost_total"_s), lostBefore);
+        QCOMPARE(total(after, u"bridgescope_link_stalls_total"_s), stallsBefore);
+        QVERIFY2(events(from, u"start"_s, u""_s, u"stall"_s).isEmpty(),
+                 QJsonDocument(events(from, u"start"_s, u""_s, u"stall"_s).value(0)).toJson().constData());
+        QVERIFY(events(from, u"start"_s, u""_s, u"bridge_down"_s).isEmpty());
+        for (const QString& t : topics)
+            QCOMPARE(TestServers::metricSample(after, u"bridgescope_link_seen"_s, {u"topic=\"%1\""_s.arg(t)}),
+                     1.0);
     }
 
     /// Last: stops the watch. Every event it printed is in its run file, with the same start and
@@ -574,6 +605,23 @@ private slots:
         QVERIFY2(md.contains(u"## Events"_s) && md.contains(u"| bridge watch_bridge | alert |"_s)
                      && md.contains(u"lab: /w/plain → w/plain"_s),
                  qPrintable(md));
+        // Issue 40: a report says where each event came from: the config file and its bridge.
+        QVERIFY2(md.contains(u"| From |"_s) && md.contains(u"| lab.yaml, bridge watch_bridge |"_s),
+                 qPrintable(md));
+        for (const RecordedEvent& e : run->events)
+            QCOMPARE(QJsonDocument::fromJson(e.json).object().value(u"config_file"_s).toString(),
+                     QFileInfo(m_config).absoluteFilePath());
+        // The watch ends with a summary of what it saw: a JSON line after the events.
+        const QList<QJsonObject> summaries = events(0, u"summary"_s, QString());
+        QCOMPARE(summaries.size(), 1);
+        const QJsonObject summary = summaries.first();
+        QCOMPARE(summary.value(u"links"_s).toInt(), 4);
+        QCOMPARE(summary.value(u"events"_s).toInt(), started.size());
+        QVERIFY(summary.value(u"destination_messages"_s).toDouble() > 100);
+        QVERIFY(summary.value(u"source_messages"_s).toDouble()
+                >= summary.value(u"destination_messages"_s).toDouble() * 0.5);
+        QVERIFY(summary.contains(u"lost"_s) && summary.contains(u"stalls"_s)
+                && summary.contains(u"unknown"_s));
     }
 };
 

@@ -321,8 +321,9 @@ private slots:
         QCOMPARE(of(started, bridge).size(), 1);
         QCOMPARE(of(started, bridge).last().reasons, QStringList {u"bridge_down"_s});
         QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
-        // It comes back: the stall ends, with its duration, and the bridge is up.
-        run(20, true);
+        // It comes back: the stall ends once messages arrive steadily (2 s), dated from their return,
+        // and the bridge is up.
+        run(25, true);
         QCOMPARE(of(ended, l.id()).size(), 1);
         const WatchEvent over = of(ended, l.id()).last();
         QVERIFY(over.durationSeconds() > 1.5 && over.durationSeconds() < 3.5);
@@ -341,6 +342,199 @@ private slots:
         run(10, true);
         QCOMPARE(m.level(0), LinkLevel::Ok);
         QVERIFY(m.openEvents().isEmpty());
+    }
+
+    // Issue 40: what the watcher cannot see (its own broker connection down, the master or the
+    // ROS 2 domain unreachable) is neither stalled nor lost: it is unknown, and says why.
+    void theJudgeCannotTellWhatItCannotSee_data()
+    {
+        QTest::addColumn<int>("blindness");
+        QTest::addColumn<QString>("detail");
+        QTest::newRow("broker") << int(LinkBlindness::Broker) << u"unknown (broker unreachable)"_s;
+        QTest::newRow("master") << int(LinkBlindness::RosMaster) << u"unknown (ROS master unreachable)"_s;
+        QTest::newRow("ros 2") << int(LinkBlindness::Ros2Domain) << u"unknown (ROS 2 domain unreachable)"_s;
+    }
+    void theJudgeCannotTellWhatItCannotSee()
+    {
+        QFETCH(int, blindness);
+        QFETCH(QString, detail);
+        const LinkDef l = link(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        LinkJudge::Input in;
+        in.periodNs = 100 * kMs;
+        in.sourceSilenceNs = 50 * kMs; // the source publishes
+        in.destinationSilenceNs = 30'000 * kMs; // and nothing arrived for 30 s
+        in.settled = true;
+        in.figures.lossPercent = 99;
+        in.figures.source.rateHz = 10;
+        const LinkJudge::Verdict seen = LinkJudge::judge(LinkRules::defaults(), l, in);
+        QCOMPARE(seen.level, LinkLevel::Alert);
+        QVERIFY(seen.reasons.contains(LinkReason::Stall));
+        in.blindness = LinkBlindness(blindness);
+        const LinkJudge::Verdict unseen = LinkJudge::judge(LinkRules::defaults(), l, in);
+        QVERIFY(unseen.unknown);
+        QCOMPARE(unseen.level, LinkLevel::Ok);
+        QVERIFY(unseen.reasons.isEmpty());
+        QCOMPARE(unseen.detail, detail);
+    }
+
+    // Issue 40: under load the same stall ended and restarted every second. A stall ends only once
+    // the destination has carried messages steadily for LinkJudge::kStallRecoveryNs.
+    void aStallNeedsSteadyMessagesToEnd()
+    {
+        const LinkDef l = link(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        LinkJudge::Input in;
+        in.periodNs = 100 * kMs;
+        in.sourceSilenceNs = 50 * kMs;
+        in.destinationSilenceNs = 100 * kMs; // a message just arrived
+        in.stallLevel = LinkLevel::Alert; // in a stall
+        in.destinationSteadyNs = 500 * kMs; // for half a second only
+        LinkJudge::Verdict v = LinkJudge::judge(LinkRules::defaults(), l, in);
+        QCOMPARE(v.level, LinkLevel::Alert);
+        QCOMPARE(v.reasons, QList<LinkReason> {LinkReason::Stall});
+        QVERIFY2(v.detail.contains(u"not yet steadily"_s), qPrintable(v.detail));
+        in.destinationSteadyNs = LinkJudge::kStallRecoveryNs;
+        v = LinkJudge::judge(LinkRules::defaults(), l, in);
+        QCOMPARE(v.level, LinkLevel::Ok);
+        QVERIFY(v.reasons.isEmpty());
+        in.stallLevel = LinkLevel::Ok; // not in a stall: a short flow is no stall
+        in.destinationSteadyNs = 100 * kMs;
+        QCOMPARE(LinkJudge::judge(LinkRules::defaults(), l, in).level, LinkLevel::Ok);
+
+        // On a monitor: a destination fed in bursts every 1.3 s is one stall, not one a second.
+        LinkMonitor m;
+        m.setLinks({l}, kStart);
+        QSignalSpy started(&m, &LinkMonitor::eventStarted);
+        QSignalSpy ended(&m, &LinkMonitor::eventEnded);
+        Clock clock {m};
+        int sent = 0;
+        const auto send = [&](bool delivered) {
+            m.add({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
+            if (delivered)
+                fromBroker(m, {mqtt(u"a"_s, QByteArray(10, 'x'), clock.now + kMs)});
+            clock.advance(100 * kMs);
+            ++sent;
+        };
+        for (int i = 0; i < 30; ++i)
+            send(true);
+        QCOMPARE(started.size(), 0);
+        for (int i = 0; i < 130; ++i) // 13 s: every 13th message arrives, the last one too
+            send(i % 13 == 12);
+        const auto linkEvents = [&](const QSignalSpy& spy) {
+            int n = 0;
+            for (const QList<QVariant>& args : spy)
+                n += args.first().value<WatchEvent>().subject == l.id();
+            return n;
+        };
+        QCOMPARE(linkEvents(started), 1);
+        QCOMPARE(linkEvents(ended), 0);
+        QCOMPARE(m.figures(0).stalls, quint64(1));
+        // Steady again: the stall ends 2 s later, dated from when the messages came back.
+        const qint64 back = clock.now; // 100 ms after the last burst's message
+        for (int i = 0; i < 25; ++i)
+            send(true);
+        QCOMPARE(linkEvents(ended), 1);
+        QCOMPARE(m.level(0), LinkLevel::Ok);
+        const WatchEvent over = ended.last().first().value<WatchEvent>();
+        QVERIFY2(over.endNs >= back - 100 * kMs && over.endNs <= back,
+                 qPrintable(QString::number((over.endNs - back) / kMs)));
+    }
+
+    // Issue 40: with the watcher's own broker connection gone, Links showed "stall", "bridge …
+    // carries nothing" and "99.0 % (135) lost", and after recovery "50.0 %". The links are unknown
+    // meanwhile, the bridge is not blamed, and what the watcher could not see is not lost.
+    void anOutageOfTheWatchersBrokerBlamesNoOne()
+    {
+        LinkMonitor m;
+        LinkDef toMqtt = link(Direction::Ros2Mqtt, u"/a"_s, u"a"_s);
+        LinkDef toRos = link(Direction::Mqtt2Ros, u"/b"_s, u"b"_s);
+        for (LinkDef* l : {&toMqtt, &toRos}) {
+            l->willTopic = u"vehicle/status"_s;
+            l->willMessage = "offline";
+        }
+        m.setLinks({toMqtt, toRos}, kStart);
+        QSignalSpy started(&m, &LinkMonitor::eventStarted);
+        Clock clock {m};
+        bool brokerUp = true;
+        const auto run = [&](int messages) {
+            for (int i = 0; i < messages; ++i) {
+                m.add({ros(u"/a"_s, headerMessage(quint32(i)), clock.now)});
+                if (brokerUp) {
+                    fromBroker(m,
+                               {mqtt(u"a"_s, headerMessage(quint32(i)), clock.now + kMs),
+                                mqtt(u"b"_s, QByteArray(10, 'x'), clock.now + kMs)});
+                    m.add({ros(u"/b"_s, QByteArray(10, 'x'), clock.now + 2 * kMs)});
+                }
+                clock.advance(100 * kMs);
+            }
+        };
+        run(150); // 15 s: settled
+        QCOMPARE(started.size(), 0);
+        QVERIFY(m.unknown(0).isEmpty());
+        // The broker goes away (the bridge's and the watcher's): 20 s unseen. Going down, it sends
+        // the bridge's last will, and the watch's own connection drops right after.
+        fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
+        clock.advance(200 * kMs);
+        brokerUp = false;
+        m.setSeeing(SourceGraph::Mqtt, false);
+        run(200);
+        for (int i : {0, 1}) {
+            QCOMPARE(m.unknown(i), u"unknown (broker unreachable)"_s);
+            QCOMPARE(m.level(i), LinkLevel::Ok);
+            QVERIFY(m.reasons(i).isEmpty());
+            QCOMPARE(m.figures(i).lost, quint64(0));
+            QCOMPARE(m.figures(i).lossPercent, 0.0);
+        }
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Unknown);
+        QCOMPARE(started.size(), 0);
+        // It is back: the links are seen again and nothing of the outage is counted as lost.
+        brokerUp = true;
+        m.setSeeing(SourceGraph::Mqtt, true);
+        run(200);
+        for (int i : {0, 1}) {
+            QVERIFY(m.unknown(i).isEmpty());
+            QCOMPARE(m.level(i), LinkLevel::Ok);
+            QCOMPARE(m.figures(i).lost, quint64(0));
+            QCOMPARE(m.figures(i).lossPercent, 0.0);
+        }
+        QCOMPARE(m.figures(0).seqGaps, quint64(0));
+        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(started.size(), 0);
+        // A loss after it is the bridge's, and counted.
+        for (int i = 0; i < 100; ++i) {
+            m.add({ros(u"/a"_s, headerMessage(quint32(1000 + i)), clock.now)});
+            if (i % 4 != 0)
+                fromBroker(m, {mqtt(u"a"_s, headerMessage(quint32(1000 + i)), clock.now + kMs)});
+            clock.advance(100 * kMs);
+        }
+        clock.advance(3000 * kMs); // the source pauses: whatever never arrived is lost
+        QCOMPARE(m.figures(0).lost, quint64(25));
+    }
+
+    // The ROS side unseen (master or domain) is unknown too; the ROS 2 one only for the links
+    // watched there.
+    void anUnreachableMasterOrDomainIsUnknown()
+    {
+        LinkMonitor m;
+        m.setLinks({link(Direction::Ros2Mqtt, u"/a"_s, u"a"_s), link(Direction::Ros2Mqtt, u"/c"_s, u"c"_s)},
+                   kStart);
+        m.setRos2Topics({u"/c"_s});
+        Clock clock {m};
+        m.setSeeing(SourceGraph::Ros1, false);
+        clock.advance(500 * kMs);
+        QCOMPARE(m.unknown(0), u"unknown (ROS master unreachable)"_s);
+        QVERIFY(m.unknown(1).isEmpty());
+        m.setSeeing(SourceGraph::Ros1, true);
+        m.setSeeing(SourceGraph::Ros2, false);
+        clock.advance(500 * kMs);
+        QVERIFY(m.unknown(0).isEmpty());
+        QCOMPARE(m.unknown(1), u"unknown (ROS 2 domain unreachable)"_s);
+        // The model shows it as the link's state.
+        LinkModel model(&m);
+        model.refresh();
+        QCOMPARE(model.index(1, LinkModel::StateColumn).data().toString(),
+                 u"unknown (ROS 2 domain unreachable)"_s);
+        QCOMPARE(model.index(1, 0).data(LinkModel::LevelRole).toInt(), LinkModel::UnknownLevel);
+        QCOMPARE(model.index(0, 0).data(LinkModel::LevelRole).toInt(), int(LinkLevel::Ok));
     }
 
     // Regression (issue 33): the Links table showed `10` beside `10.0` and `5.00` beside `25.0`; a
@@ -423,7 +617,9 @@ private slots:
         }
         QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
-        clock.advance(100 * kMs);
+        // Believed once the watch's own connection outlived it (issue 40: a broker shutting down
+        // sends every will, and the watch's connection goes next).
+        clock.advance(BridgeLiveness::kWillGraceNs + 100 * kMs);
         QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
         QCOMPARE(started.last().first().value<WatchEvent>().subject, u"bridge:vehicle_bridge"_s);
         QCOMPARE(started.last().first().value<WatchEvent>().reasons, QStringList {u"bridge_down"_s});

@@ -241,6 +241,45 @@ private slots:
         QVERIFY(!ReportFormats::html(onlyEvents).contains("<svg"));
     }
 
+    // Issue 40: editing a config raised events that went into a run's Events table with no word of
+    // where they came from. Each row says the config file and the bridge (older runs: the config's
+    // name), in every format; the JSON report keeps config_file.
+    void eventsSayWhereTheyCameFrom()
+    {
+        RunData watched;
+        watched.info.name = u"watched"_s;
+        const qint64 t0 = 1'700'000'000'000'000'000LL;
+        watched.events.push_back(
+            {u"lab|ros2mqtt|/w/plain|w/plain"_s,
+             u"alert"_s,
+             {u"stall"_s},
+             u"stalled"_s,
+             t0,
+             t0 + 1'000'000'000LL,
+             R"({"config":"lab","config_file":"/labs/vehicle/lab.yaml","client":"lab_bridge"})"});
+        watched.events.push_back(
+            {u"bridge:old"_s, u"alert"_s, {u"bridge_down"_s}, u"down"_s, t0 + 1, 0, R"({"config":"old"})"});
+        watched.events.push_back({u"discovered|ros2mqtt||d/x"_s,
+                                  u"warning"_s,
+                                  {u"rate"_s},
+                                  u"slow"_s,
+                                  t0 + 2,
+                                  0,
+                                  R"({"config":"discovered"})"});
+        const Report report = Report::fromRuns({watched}, std::nullopt, {});
+        const QString md = QString::fromUtf8(ReportFormats::markdown(report));
+        QVERIFY2(md.contains(u"| Start | From | Duration | Link | Level | Why |"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"| lab.yaml, bridge lab_bridge | 1.0 s | lab: /w/plain → w/plain | alert |"_s),
+                 qPrintable(md));
+        QVERIFY2(md.contains(u"| old | open | bridge old | alert |"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"| announced on the broker | open |"_s), qPrintable(md));
+        const QString tex = QString::fromUtf8(ReportFormats::latex(report));
+        QVERIFY2(tex.contains(u"lab.yaml, bridge lab\\_bridge"_s), qPrintable(tex));
+        const QJsonArray events
+            = QJsonDocument::fromJson(ReportFormats::json(report)).object().value(u"events"_s).toArray();
+        QCOMPARE(events[0].toObject().value(u"config_file"_s).toString(), u"/labs/vehicle/lab.yaml"_s);
+    }
+
     // Issue 31: an event's texts are input. `|` and newlines broke the Markdown table, NUL bytes
     // reached Markdown and HTML, and INT64_MIN to INT64_MAX lasted "-0.0 s" (an overflow).
     void hostileEventTextsStayInTheirCells()
@@ -266,7 +305,7 @@ private slots:
         const QStringList rows = table.split(u'\n');
         QCOMPARE(rows.size(), 4); // header, rule, two events
         for (const QString& row : rows)
-            QVERIFY2(row.count(border) == 6, qPrintable(row));
+            QVERIFY2(row.count(border) == 7, qPrintable(row)); // six columns since From (issue 40)
         QVERIFY2(rows[2].contains(u"first\\|second third  fourth \\`code\\` [link\\](x) \\<b\\>"_s),
                  qPrintable(rows[2]));
         // A duration without overflow: 2^64 ns are 213,504 days; the other one is 2.5 s.

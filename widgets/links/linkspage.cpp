@@ -29,6 +29,7 @@
 #include <QStyledItemDelegate>
 #include <QSystemTrayIcon>
 #include <QTableView>
+#include <QTreeWidget>
 #include <QVBoxLayout>
 
 using namespace Qt::StringLiterals;
@@ -44,7 +45,7 @@ QColor levelColor(int level)
     case LinkLevel::Alert:
         return QColor(0xc6, 0x28, 0x28);
     }
-    return {};
+    return QColor(0x9e, 0x9e, 0x9e); // unknown: the watcher cannot see a side
 }
 
 /// The state as a coloured dot before its words; the history as a sparkline.
@@ -132,6 +133,8 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     , m_proxy(new LinkSortProxy(this))
 {
     setObjectName(u"linksPage"_s);
+    m_watch->setLinkLimit(
+        WatchSession::kWindowLinkLimit); // what a lab's master and broker carry for a window
     QLayout* bar = createBar();
     auto* top = new QSplitter(Qt::Horizontal, this);
     top->addWidget(createLinkTable());
@@ -139,9 +142,14 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     top->setStretchFactor(0, 4);
     top->setStretchFactor(1, 1);
     ViewSetup::initialSizes(top, {1060, 220}); // the detail pane gives way to the links' names
+    auto* bottom = new QSplitter(Qt::Horizontal, this);
+    bottom->addWidget(createConfigList());
+    bottom->addWidget(createEventLog());
+    bottom->setStretchFactor(0, 1);
+    bottom->setStretchFactor(1, 2);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(top);
-    split->addWidget(createEventLog());
+    split->addWidget(bottom);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
     auto* layout = new QVBoxLayout(this);
@@ -160,6 +168,7 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     });
     connect(monitor, &LinkMonitor::eventStarted, this, &LinksPage::notify);
     updateSummary();
+    showPlan();
 }
 
 LinksPage::~LinksPage() = default;
@@ -174,7 +183,7 @@ void LinksPage::showEvent(QShowEvent* event)
 QLayout* LinksPage::createBar()
 {
     auto* add = new QPushButton(tr("&Add Configs…"), this);
-    add->setToolTip(tr("Watch the mappings of more bridge configs (one per vehicle or robot)"));
+    add->setToolTip(tr("List more bridge configs (one per vehicle or robot); check one to watch it"));
     auto* rules = new QPushButton(tr("R&ules…"), this);
     rules->setToolTip(tr("Edit the thresholds (a rules YAML) every link is held to"));
     auto* discovered = new QCheckBox(tr("&Discovered"), this);
@@ -268,19 +277,70 @@ QWidget* LinksPage::createEventLog()
     return m_events;
 }
 
-void LinksPage::setMapConfig(const QString& name, const BridgeConfig& config)
+QWidget* LinksPage::createConfigList()
 {
-    setMapConfigs({{name, config}});
+    auto* pane = new QWidget(this);
+    auto* v = new QVBoxLayout(pane);
+    v->setContentsMargins(0, 0, 0, 0);
+    m_configList = new QTreeWidget(pane);
+    m_configList->setObjectName(u"watchConfigs"_s);
+    m_configList->setRootIsDecorated(false);
+    m_configList->setUniformRowHeights(true);
+    m_configList->setHeaderLabels({tr("Watch config"), tr("Links"), tr("ROS"), tr("ROS 2"), tr("MQTT")});
+    m_configList->setToolTip(tr("Check a config to watch its links (Space checks the current one). Opening "
+                                "or editing a config subscribes to nothing; watching subscribes to the "
+                                "topics counted here, at most %1 links in all.")
+                                 .arg(WatchSession::kWindowLinkLimit));
+    auto* caption = new QLabel(tr("&Configs (checked: watched)"), pane);
+    caption->setBuddy(m_configList);
+    m_plan = new QLabel(pane);
+    m_plan->setObjectName(u"watchPlan"_s);
+    m_plan->setWordWrap(true);
+    m_plan->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    v->addWidget(caption);
+    v->addWidget(m_configList, 1);
+    v->addWidget(m_plan);
+    connect(m_configList, &QTreeWidget::itemChanged, this, &LinksPage::configChecked);
+    connect(m_configList, &QTreeWidget::currentItemChanged, this, &LinksPage::showPlan);
+    return pane;
 }
 
-void LinksPage::setMapConfigs(const QList<std::pair<QString, BridgeConfig>>& configs)
+void LinksPage::setMapConfigs(const QList<WatchSession::Config>& configs)
 {
-    m_mapConfigs = configs;
-    applyConfigs();
+    const auto key = [](const WatchSession::Config& c) { return c.file.isEmpty() ? c.name : c.file; };
+    QHash<QString, bool> watched;
+    for (const Listed& l : std::as_const(m_configs))
+        if (!l.added)
+            watched.insert(key(l.config), l.watched);
+    QList<Listed> next;
+    for (const WatchSession::Config& c : configs) {
+        if (c.name.isEmpty())
+            continue;
+        Listed l {c, false, watched.value(key(c), false)};
+        if (!c.file.isEmpty() && m_watchWhenListed.remove(c.file))
+            l.watched = true;
+        next << l;
+    }
+    for (const Listed& l : std::as_const(m_configs))
+        if (l.added)
+            next << l;
+    m_configs = next;
+    QString why;
+    if (!applyConfigs(&why)) {
+        // An edit made the watched configs pass the limit: watching stops, and says why.
+        for (Listed& l : m_configs)
+            l.watched = false;
+        applyConfigs();
+        listConfigs();
+        m_plan->setText(tr("Watching stopped: %1").arg(why));
+        return;
+    }
+    listConfigs();
 }
 
-bool LinksPage::addConfigFiles(const QStringList& paths, QString* error)
+bool LinksPage::addConfigFiles(const QStringList& paths, QString* error, bool watch)
 {
+    QList<Listed> added;
     for (const QString& path : paths) {
         const std::optional<QByteArray> bytes = YamlLimits::readFile(path, nullptr);
         const ConfigReadResult read = bytes ? ConfigReader::read(*bytes) : ConfigReadResult();
@@ -289,22 +349,154 @@ bool LinksPage::addConfigFiles(const QStringList& paths, QString* error)
                 *error = tr("%1 is not a bridge config that can be read").arg(path);
             return false;
         }
-        m_added.append({QFileInfo(path).completeBaseName(), read.config});
+        added.append({{QFileInfo(path).completeBaseName(), QFileInfo(path).absoluteFilePath(), read.config},
+                      true,
+                      watch});
     }
-    applyConfigs();
+    const QList<Listed> before = m_configs;
+    m_configs << added;
+    QString why;
+    if (!applyConfigs(&why)) {
+        m_configs = before;
+        if (error)
+            *error = why;
+        m_plan->setText(why);
+        return false;
+    }
+    listConfigs();
     return true;
 }
 
-void LinksPage::applyConfigs()
+bool LinksPage::setWatched(const QString& name, bool watched, QString* error)
 {
-    QList<std::pair<QString, BridgeConfig>> configs;
-    for (const auto& c : std::as_const(m_mapConfigs))
-        if (!c.first.isEmpty())
-            configs << c;
-    configs << m_added;
-    m_watch->setConfigs(configs);
+    const QString file = QFileInfo(name).absoluteFilePath();
+    qsizetype at = -1;
+    for (qsizetype i = 0; i < m_configs.size() && at < 0; ++i)
+        if (m_configs[i].config.name == name || m_configs[i].config.file == file)
+            at = i;
+    if (at < 0) {
+        if (error)
+            *error = tr("No config %1 is open").arg(name);
+        return false;
+    }
+    if (m_configs[at].watched == watched)
+        return true;
+    m_configs[at].watched = watched;
+    QString why;
+    const bool applied = applyConfigs(&why);
+    if (!applied) {
+        m_configs[at].watched = !watched;
+        why = tr("Watching %1 refused: %2").arg(m_configs[at].config.name, why);
+        if (error)
+            *error = why;
+    }
+    listConfigs();
+    if (!applied)
+        m_plan->setText(why);
+    return applied;
+}
+
+void LinksPage::watchWhenListed(const QString& file)
+{
+    m_watchWhenListed.insert(QFileInfo(file).absoluteFilePath());
+}
+
+bool LinksPage::applyConfigs(QString* error)
+{
+    QList<WatchSession::Config> configs;
+    for (const Listed& l : std::as_const(m_configs))
+        if (l.watched)
+            configs << l.config;
+    if (!m_watch->setConfigs(configs, error))
+        return false;
     m_model->refresh();
     updateSummary();
+    return true;
+}
+
+void LinksPage::listConfigs()
+{
+    // Rows are updated in place: this runs from a row's check (inside its delegate's event), where
+    // deleting the row would pull it from under the view.
+    const QSignalBlocker blocker(m_configList);
+    while (m_configList->topLevelItemCount() > m_configs.size())
+        delete m_configList->takeTopLevelItem(m_configList->topLevelItemCount() - 1);
+    while (m_configList->topLevelItemCount() < m_configs.size())
+        new QTreeWidgetItem(m_configList);
+    for (int row = 0; row < m_configs.size(); ++row) {
+        const Listed& l = m_configs[row];
+        const WatchSession::Plan plan = m_watch->planOf(l.config);
+        QTreeWidgetItem* item = m_configList->topLevelItem(row);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setText(0, l.config.name);
+        item->setToolTip(0, l.config.file.isEmpty() ? tr("not saved yet") : l.config.file);
+        item->setCheckState(0, l.watched ? Qt::Checked : Qt::Unchecked);
+        int column = 1;
+        for (qsizetype n : {qsizetype(plan.links), plan.rosTopics.size(), plan.ros2Topics.size(),
+                            plan.mqttTopics.size()}) {
+            item->setText(column, QString::number(n));
+            item->setTextAlignment(column++, Qt::AlignRight | Qt::AlignVCenter);
+        }
+    }
+    for (int c = 0; c < m_configList->columnCount(); ++c)
+        m_configList->resizeColumnToContents(c);
+    if (!m_configList->currentItem() && m_configList->topLevelItemCount() > 0)
+        m_configList->setCurrentItem(m_configList->topLevelItem(0));
+    showPlan();
+}
+
+void LinksPage::showPlan()
+{
+    const int row
+        = m_configList->currentItem() ? m_configList->indexOfTopLevelItem(m_configList->currentItem()) : -1;
+    if (row < 0 || row >= m_configs.size()) {
+        m_plan->setText(tr("Open a bridge config on the Map page, or add one here; check it to watch it."));
+        m_plan->setToolTip(QString());
+        return;
+    }
+    const Listed& l = m_configs[row];
+    const WatchSession::Plan plan = m_watch->planOf(l.config);
+    const QString counts = tr("%1 ROS topics at the master, %2 on the ROS 2 domain and %3 MQTT topics")
+                               .arg(plan.rosTopics.size())
+                               .arg(plan.ros2Topics.size())
+                               .arg(plan.mqttTopics.size());
+    QString text = l.watched
+        ? tr("%1 is watched (links: %2): subscribed to %3.").arg(l.config.name).arg(plan.links).arg(counts)
+        : tr("%1 is not watched. Watching it would subscribe to %2 (links: %3).")
+              .arg(l.config.name, counts)
+              .arg(plan.links);
+    if (m_watch->linkLimit() > 0 && plan.links > m_watch->linkLimit())
+        text += u' ' + tr("That is more than the %1 links a window watches.").arg(m_watch->linkLimit());
+    m_plan->setText(text);
+    // The topics themselves, a bounded list: a config may map thousands.
+    constexpr qsizetype kListed = 40;
+    QStringList lines;
+    const auto list = [&](const QString& title, const QStringList& topics) {
+        if (topics.isEmpty())
+            return;
+        lines << title;
+        for (qsizetype i = 0; i < std::min(topics.size(), kListed); ++i)
+            lines << u"  "_s + topics[i];
+        if (topics.size() > kListed)
+            lines << u"  "_s + tr("… and %1 more").arg(topics.size() - kListed);
+    };
+    list(tr("ROS (master):"), plan.rosTopics);
+    list(tr("ROS 2:"), plan.ros2Topics);
+    list(tr("MQTT:"), plan.mqttTopics);
+    m_plan->setToolTip(lines.join(u'\n'));
+}
+
+void LinksPage::configChecked(QTreeWidgetItem* item)
+{
+    const int row = m_configList->indexOfTopLevelItem(item);
+    if (row < 0 || row >= m_configs.size())
+        return;
+    const bool checked = item->checkState(0) == Qt::Checked;
+    if (checked != m_configs[row].watched) {
+        const QString key
+            = m_configs[row].config.file.isEmpty() ? m_configs[row].config.name : m_configs[row].config.file;
+        setWatched(key, checked);
+    }
 }
 
 void LinksPage::chooseConfigs()
@@ -313,7 +505,7 @@ void LinksPage::chooseConfigs()
         this, tr("Watch Bridge Configs"), QString(), tr("Bridge configs (*.yaml *.yml);;All files (*)"));
     QString error;
     if (!paths.isEmpty() && !addConfigFiles(paths, &error))
-        m_summary->setText(error);
+        m_plan->setText(error);
 }
 
 void LinksPage::editRules()
@@ -327,16 +519,24 @@ void LinksPage::updateSummary()
 {
     const LinkMonitor* monitor = m_watch->monitor();
     int counts[3] = {0, 0, 0};
-    for (int i = 0; i < monitor->linkCount(); ++i)
-        ++counts[int(monitor->level(i))];
+    int unknown = 0;
+    for (int i = 0; i < monitor->linkCount(); ++i) {
+        if (monitor->unknown(i).isEmpty())
+            ++counts[int(monitor->level(i))];
+        else
+            ++unknown;
+    }
     if (monitor->linkCount() == 0) {
-        m_summary->setText(tr("No links: open a bridge config on the Map page, or add configs here."));
+        m_summary->setText(tr("No links watched: check a config below to watch it."));
         return;
     }
-    m_summary->setText(tr("%n link(s): %1 ok, %2 warning, %3 alert", nullptr, monitor->linkCount())
-                           .arg(counts[0])
-                           .arg(counts[1])
-                           .arg(counts[2]));
+    QString text = tr("%n link(s): %1 ok, %2 warning, %3 alert", nullptr, monitor->linkCount())
+                       .arg(counts[0])
+                       .arg(counts[1])
+                       .arg(counts[2]);
+    if (unknown > 0)
+        text += tr(", %1 unknown (the watch's own connection is down)").arg(unknown);
+    m_summary->setText(text);
 }
 
 void LinksPage::showDetail()

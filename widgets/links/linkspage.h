@@ -2,7 +2,9 @@
 #pragma once
 
 #include "config/bridgeconfig.h"
+#include "watch/watchsession.h"
 
+#include <QSet>
 #include <QWidget>
 
 class EventLogModel;
@@ -14,14 +16,17 @@ class QLineEdit;
 class QSortFilterProxyModel;
 class QSystemTrayIcon;
 class QTableView;
+class QTreeWidget;
+class QTreeWidgetItem;
 class RateChart;
-class WatchSession;
 struct WatchEvent;
 
 /// The Links page: every mapping of the watched configs as a link, with its health, rates, loss,
 /// latency and a sparkline, grouped by bridge; the selected link's history; the event log.
 ///
-/// The configs are the one open on the Map page and any added here. Figures come from a
+/// The configs are those open on the Map page and any added here, listed with what watching each
+/// would subscribe to; only those the user checks are watched (opening or editing one subscribes
+/// to nothing), within WatchSession::kWindowLinkLimit links. Figures come from a
 /// WatchSession on the window's live session, refreshed once a second: the table changes with one
 /// dataChanged, so thousands of links stay fluid. An alert raised while the window is not active
 /// is also a desktop notification.
@@ -32,12 +37,21 @@ public:
     explicit LinksPage(WatchSession* watch, QWidget* parent = nullptr);
     ~LinksPage() override;
 
-    /// The config open on the Map page (replaces the previous one; empty name: none).
-    void setMapConfig(const QString& name, const BridgeConfig& config);
-    /// Every config open on the Map page, by name; they replace those given before.
-    void setMapConfigs(const QList<std::pair<QString, BridgeConfig>>& configs);
-    /// Adds the config files; false with `error` for one that cannot be read.
-    bool addConfigFiles(const QStringList& paths, QString* error = nullptr);
+    /// Every config open on the Map page; they replace those given before. A watched config that
+    /// is no longer among them is no longer watched.
+    void setMapConfigs(const QList<WatchSession::Config>& configs);
+    /// Adds the config files, watched when `watch` (within the limit); false with `error` for one
+    /// that cannot be read, or when watching them would pass the limit.
+    bool addConfigFiles(const QStringList& paths, QString* error = nullptr, bool watch = false);
+    /// Turns watching of the listed config `name` (its name, or its file) on or off; false with
+    /// `error` when there is no such config or watching it would pass the limit.
+    bool setWatched(const QString& name, bool watched, QString* error = nullptr);
+    /// The config in `file` is watched as soon as it is listed (the demo lab's own configs).
+    void watchWhenListed(const QString& file);
+    /// The configs listed, one row each with its check (watched) and counts.
+    QTreeWidget* configList() const { return m_configList; }
+    /// What watching the current config subscribes to, or why watching was refused.
+    QLabel* planLabel() const { return m_plan; }
 
     QTableView* linkView() const { return m_links; }
     QTableView* eventView() const { return m_events; }
@@ -56,7 +70,11 @@ private:
     QWidget* createLinkTable();
     QWidget* createDetailPane();
     QWidget* createEventLog();
-    void applyConfigs();
+    QWidget* createConfigList();
+    bool applyConfigs(QString* error = nullptr);
+    void listConfigs();
+    void showPlan();
+    void configChecked(QTreeWidgetItem* item);
     void chooseConfigs();
     void editRules();
     void showDetail();
@@ -76,7 +94,16 @@ private:
     RateChart* m_rateChart = nullptr;
     RateChart* m_latencyChart = nullptr;
     QSystemTrayIcon* m_tray = nullptr;
-    QList<std::pair<QString, BridgeConfig>> m_mapConfigs; ///< those open on the Map page
-    QList<std::pair<QString, BridgeConfig>> m_added;
+    /// A config listed: open on the Map page or added here, watched or not.
+    struct Listed
+    {
+        WatchSession::Config config;
+        bool added = false; ///< added on this page (else open on the Map page)
+        bool watched = false;
+    };
+    QList<Listed> m_configs;
+    QSet<QString> m_watchWhenListed; ///< files
+    QTreeWidget* m_configList = nullptr;
+    QLabel* m_plan = nullptr;
     int m_notified = 0;
 };
