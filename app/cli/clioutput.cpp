@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "clioutput.h"
 
+#include "base/regularfile.h"
 #include "base/secrets.h"
 
 #include <cerrno>
@@ -70,6 +71,7 @@ volatile std::sig_atomic_t g_stopRequested = 0;
 void requestStop(int)
 {
     g_stopRequested = 1;
+    RegularFile::requestStop(); // a long read of a file stops too, wherever it is
 }
 } // namespace
 

@@ -3,6 +3,8 @@
 
 #include "base/atomicfile.h"
 #include "base/logging.h"
+#include "base/regularfile.h"
+#include "base/yamllimits.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"
 #include "config/configwriter.h"
@@ -22,14 +24,15 @@ ConfigDocument::ConfigDocument(QObject* parent)
 ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
 {
     LoadResult result;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // A regular file, one byte past what a config may have (the reader says it is too large).
+    QString why;
+    const std::optional<QByteArray> text = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why);
+    if (!text) {
         result.unreadable = true;
-        result.error = tr("Cannot open %1: %2").arg(path, file.errorString());
+        result.error = tr("Cannot open %1: %2").arg(path, why);
         return result;
     }
-    const QByteArray text = file.readAll();
-    const ConfigReadResult read = ConfigReader::read(text);
+    const ConfigReadResult read = ConfigReader::read(*text);
     if (!read.parsed) {
         result.problems = read.problems;
         result.error = read.problems.isEmpty() ? tr("%1 is not a bridge config.").arg(path)
@@ -39,7 +42,7 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     emit aboutToReset();
     m_path = QFileInfo(path).absoluteFilePath();
     m_suggestedPath.clear();
-    m_text = text;
+    m_text = *text;
     m_baseline = read.config;
     m_current = read.config;
     m_layout = read.config.layout;
