@@ -36,6 +36,8 @@ QString sizeText(qint64 bytes)
 
 QString RegularFile::notAFile(const QString& path)
 {
+    if (path.startsWith(u':'))
+        return {}; // a Qt resource
     struct stat st {};
     if (::stat(QFile::encodeName(path).constData(), &st) != 0 || S_ISREG(st.st_mode))
         return {};
@@ -49,6 +51,17 @@ std::optional<RegularFile::Opened> RegularFile::open(const QString& path, qint64
             *error = why;
         return std::nullopt;
     };
+    if (path.startsWith(u':')) { // a Qt resource: compiled into the program, in memory, not hostile
+        Opened opened;
+        opened.file = std::make_unique<QFile>(path);
+        if (!opened.file->open(QIODevice::ReadOnly))
+            return fail(opened.file->errorString());
+        opened.size = opened.file->size();
+        if (opened.size > maxBytes)
+            return fail(tr("%1, more than the %2 such a file may have: refused")
+                            .arg(sizeText(opened.size), sizeText(maxBytes)));
+        return opened;
+    }
     // O_NONBLOCK: opening a FIFO for reading would wait for a writer; a regular file ignores it.
     const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd < 0)

@@ -423,8 +423,13 @@ private slots:
     // and a small JSON message on the same mapping still goes through.
     void aHugeJsonPayloadIsRefusedUnread()
     {
-        const QByteArray config = "bridge:\n  mqtt2ros:\n"
-                                  "    - {mqtt_topic: huge/json, ros_topic: /huge_back, json: true,"
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      mqtt2ros:\n"
+                                  "        mqtt_topics: [huge/json]\n"
+                                  "        huge/json: {ros_topic: /huge_back, json: true,"
                                   " ros_type: geometry_msgs/msg/PoseStamped}\n";
         auto b = bridge(config, {u"--name"_s, u"json_bridge"_s}, true);
         Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--sub"_s, u"/huge_back:geometry_msgs/msg/PoseStamped"_s});
@@ -438,7 +443,8 @@ private slots:
             m_mqtt->publish(u"huge/json"_s, small, 0, false);
             QTest::qWait(100);
         }
-        QVERIFY2(!peer.lines().filter(u"recv /huge_back"_s).isEmpty(), qPrintable(peer.lines().join(u'\n')));
+        QVERIFY2(!peer.lines().filter(u"recv /huge_back"_s).isEmpty(),
+                 qPrintable(peer.lines().join(u'\n') + QString::fromUtf8(b->readAllStandardError())));
         QByteArray huge = "{\"data\": [0";
         huge.reserve(40'000'020);
         while (huge.size() < 40'000'000)
