@@ -138,8 +138,7 @@ public:
         , m_progress(progress)
         , m_total(std::max<qint64>(totalBytes, 1))
         , m_deadline(std::chrono::seconds(limits.maxSeconds))
-    {
-    }
+    { }
 
     /// Takes the next bytes of the file; false when the read stopped (see finish()).
     bool feed(const char* bytes, qsizetype size)
@@ -179,7 +178,8 @@ private:
         if (RegularFile::stopRequested() || (m_progress && !m_progress(int(100 * m_fed / m_total))))
             return stop(m_line, SuiteCsv::tr("cancelled"));
         if (m_deadline.hasExpired())
-            return stop(m_line, SuiteCsv::tr("refused: reading it takes more than %1 s").arg(m_limits.maxSeconds));
+            return stop(m_line,
+                        SuiteCsv::tr("refused: reading it takes more than %1 s").arg(m_limits.maxSeconds));
         return true;
     }
 
@@ -227,7 +227,9 @@ private:
             ++i;
         }
         if (i - begin > m_limits.maxRowBytes)
-            return stop(m_line, SuiteCsv::tr("refused: a row of more than %1 MiB").arg(m_limits.maxRowBytes / (1024 * 1024)));
+            return stop(
+                m_line,
+                SuiteCsv::tr("refused: a row of more than %1 MiB").arg(m_limits.maxRowBytes / (1024 * 1024)));
         if (atEnd && begin < n) {
             i = n;
             if (!takeRecord(QByteArrayView(p + begin, n - begin), false))
@@ -243,7 +245,9 @@ private:
     bool takeRecord(QByteArrayView bytes, bool newline)
     {
         if (bytes.size() > m_limits.maxRowBytes)
-            return stop(m_line, SuiteCsv::tr("refused: a row of more than %1 MiB").arg(m_limits.maxRowBytes / (1024 * 1024)));
+            return stop(
+                m_line,
+                SuiteCsv::tr("refused: a row of more than %1 MiB").arg(m_limits.maxRowBytes / (1024 * 1024)));
         if (!m_started) {
             if (bytes.startsWith("\xEF\xBB\xBF"))
                 bytes = bytes.sliced(3); // the byte order mark
@@ -257,8 +261,10 @@ private:
             return takeHeader(bytes);
         }
         if ((m_cells += m_data.topics.size()) > m_limits.maxCells)
-            return stop(m_line, SuiteCsv::tr("refused: it has more than %1 cells (the most a measurement file may have)")
-                                    .arg(m_limits.maxCells));
+            return stop(
+                m_line,
+                SuiteCsv::tr("refused: it has more than %1 cells (the most a measurement file may have)")
+                    .arg(m_limits.maxCells));
         const QString text = QString::fromUtf8(bytes);
         qsizetype pos = 0;
         bool ok = true;
@@ -279,7 +285,8 @@ private:
             return true; // only the file's last record can be one
         }
         if (cells.size() != m_data.topics.size()) {
-            problem(at, SuiteCsv::tr("%1 cells, the header has %2").arg(cells.size()).arg(m_data.topics.size()));
+            problem(at,
+                    SuiteCsv::tr("%1 cells, the header has %2").arg(cells.size()).arg(m_data.topics.size()));
             return true;
         }
         std::vector<qint64> times;
