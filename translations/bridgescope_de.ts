@@ -74,6 +74,10 @@
         <source>not a ROS 1 bag (no #ROSBAG V2.0 header)</source>
         <translation>kein ROS-1-Bag (kein Header #ROSBAG V2.0)</translation>
     </message>
+    <message>
+        <source>%1, not a file</source>
+        <translation>%1, keine Datei</translation>
+    </message>
 </context>
 <context>
     <name>BagReader</name>
@@ -231,6 +235,10 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
     <message>
         <source>--ros-master is for --ros 1; a ROS 2 bridge takes --ros-domain</source>
         <translation>--ros-master gilt für --ros 1; eine ROS-2-Bridge nimmt --ros-domain</translation>
+    </message>
+    <message>
+        <source>%1 of the failed were json payloads over %2 MiB, refused unread</source>
+        <translation>%1 der fehlgeschlagenen waren JSON-Nutzdaten über %2 MiB, ungelesen abgelehnt</translation>
     </message>
 </context>
 <context>
@@ -1629,6 +1637,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>--seconds takes a positive number up to a year</source>
         <translation>--seconds erwartet eine positive Zahl bis zu einem Jahr</translation>
+    </message>
+    <message>
+        <source>not complete: %1 messages on topics not kept (budget %2 topics, %3 MiB of names); %4 topics listed</source>
+        <translation>nicht vollständig: %1 Nachrichten auf nicht behaltenen Topics (Budget %2 Topics, %3 MiB Namen); %4 Topics aufgeführt</translation>
     </message>
 </context>
 <context>
@@ -6008,6 +6020,21 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
         <source>not a measurement: %1</source>
         <translation>keine Messung: %1</translation>
     </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1 auf %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more topic(s)</source>
+        <translation>
+            <numerusform>%n weiteres Topic</numerusform>
+            <numerusform>%n weitere Topics</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 malformed stamps: %2 (last: %3)</source>
+        <translation>%1 fehlerhafte Zeitstempel: %2 (zuletzt: %3)</translation>
+    </message>
 </context>
 <context>
     <name>RecordDialog</name>
@@ -6145,6 +6172,45 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
     <message>
         <source>ignored the ROS 2 type announcement for %1 (%2): this bridge speaks ROS 1</source>
         <translation>ROS-2-Typankündigung für %1 (%2) ignoriert: diese Bridge spricht ROS 1</translation>
+    </message>
+</context>
+<context>
+    <name>RegularFile</name>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>ein FIFO (eine benannte Pipe)</translation>
+    </message>
+    <message>
+        <source>a device</source>
+        <translation>ein Gerät</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>ein Socket</translation>
+    </message>
+    <message>
+        <source>a folder</source>
+        <translation>ein Ordner</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine reguläre Datei</translation>
+    </message>
+    <message>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 Bytes</translation>
+    </message>
+    <message>
+        <source>%1, not a file: refused</source>
+        <translation>%1, keine Datei: abgelehnt</translation>
+    </message>
+    <message>
+        <source>%1, more than the %2 such a file may have: refused</source>
+        <translation>%1, mehr als die %2, die eine solche Datei haben darf: abgelehnt</translation>
     </message>
 </context>
 <context>
@@ -6774,6 +6840,25 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>MQTT %1 -&gt; ROS %2: refused: %3</source>
         <translation>MQTT %1 -&gt; ROS %2: abgelehnt: %3</translation>
+    </message>
+    <message>
+        <source>ROS %1</source>
+        <translation>ROS %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 (further ones are counted)</source>
+        <translation>%1: %2 (weitere werden gezählt)</translation>
+    </message>
+    <message>
+        <source>MQTT %1</source>
+        <translation>MQTT %1</translation>
+    </message>
+</context>
+<context>
+    <name>Ros2BridgeWire</name>
+    <message>
+        <source>a payload of %1 bytes, more than the %2 MiB a json mapping converts: refused unread</source>
+        <translation>Nutzdaten von %1 Bytes, mehr als die %2 MiB, die eine JSON-Zuordnung umwandelt: ungelesen abgelehnt</translation>
     </message>
 </context>
 <context>
@@ -7659,6 +7744,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source>cannot read it: the SQLite driver gives no handle to set its limits</source>
         <translation>kann sie nicht lesen: der SQLite-Treiber gibt kein Handle, um seine Grenzen zu setzen</translation>
     </message>
+    <message>
+        <source>its write-ahead log %1 is %2, not a file: refused</source>
+        <translation>ihr Write-Ahead-Log %1 ist %2, keine Datei: abgelehnt</translation>
+    </message>
 </context>
 <context>
     <name>RunLoader</name>
@@ -7933,6 +8022,18 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>column %1 (%2): %3 is %4</source>
         <translation>Spalte %1 (%2): %3 ist %4</translation>
+    </message>
+    <message>
+        <source>refused: reading it takes more than %1 s</source>
+        <translation>abgelehnt: das Lesen dauert länger als %1 s</translation>
+    </message>
+    <message>
+        <source>refused: a row of more than %1 MiB</source>
+        <translation>abgelehnt: eine Zeile von mehr als %1 MiB</translation>
+    </message>
+    <message>
+        <source>refused: it has more than %1 cells (the most a measurement file may have)</source>
+        <translation>abgelehnt: sie hat mehr als %1 Zellen (das Höchste, was eine Messdatei haben darf)</translation>
     </message>
 </context>
 <context>

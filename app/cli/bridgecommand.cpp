@@ -3,9 +3,11 @@
 
 #include "app/cli/clioutput.h"
 #include "base/yamllimits.h"
+#include "base/regularfile.h"
 #include "app/cli/rosoptions.h"
 #include "bridge/referencebridge.h"
 #include "bridge/ros2bridge.h"
+#include "bridge/ros2bridgewire.h"
 
 #include <cerrno>
 #include <cmath>
@@ -194,14 +196,15 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     request->ros2 = ros.ros2;
     request->ros2Options = ros.ros2Options;
     const QString path = parser.positionalArguments().first();
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        err(Bridge::tr("%1: %2").arg(path, f.errorString()));
+    // At most one byte more than a config may have; a FIFO or a device is refused.
+    QString why;
+    const std::optional<QByteArray> yaml = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why);
+    if (!yaml) {
+        err(Bridge::tr("%1: %2").arg(path, why));
         return ExitUsage;
     }
     request->path = path;
-    // At most one byte more than a config may have: /dev/zero is refused, not read forever.
-    request->yaml = f.read(YamlLimits::maxBytes + 1);
+    request->yaml = *yaml;
     return readBridgeOptions(parser, &request->options);
 }
 
@@ -265,6 +268,10 @@ template<typename B> int runBridge(const BridgeRequest& request)
                 .arg(c.failed.load() + c.failedWaiting.load()));
     if (c.droppedToMqtt.load() + c.droppedToRos.load() > 0)
         logLine(droppedLine(c, request.options.maxQueuedBytes));
+    if (const quint64 tooLarge = c.tooLarge.load())
+        logLine(Bridge::tr("%1 of the failed were json payloads over %2 MiB, refused unread")
+                    .arg(tooLarge)
+                    .arg(Ros2BridgeWire::kMaxJsonBytes / (1024 * 1024)));
     return ExitOk;
 }
 } // namespace

@@ -2,6 +2,7 @@
 #include "clioutput.h"
 
 #include "base/editdistance.h"
+#include "base/regularfile.h"
 #include "base/secrets.h"
 
 #include <cerrno>
@@ -72,6 +73,7 @@ volatile std::sig_atomic_t g_stopRequested = 0;
 void requestStop(int)
 {
     g_stopRequested = 1;
+    RegularFile::requestStop(); // a long read of a file stops too, wherever it is
 }
 } // namespace
 

@@ -3,6 +3,7 @@
 
 #include "app/cli/clioutput.h"
 #include "base/atomicfile.h"
+#include "base/regularfile.h"
 #include "base/yamllimits.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
@@ -57,21 +58,16 @@ public:
     static Loaded load(const QString& path)
     {
         Loaded l;
-        QFile file(path);
-        if (!file.open(QIODevice::ReadOnly)) {
-            err(tr("%1: error: cannot read the file: %2").arg(path, file.errorString()));
+        // One byte past the limit is enough for the reader to say the file is too large; a FIFO or
+        // a device such as /dev/zero is refused.
+        QString why;
+        const std::optional<QByteArray> bytes = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why);
+        if (!bytes) {
+            err(tr("%1: error: cannot read the file: %2").arg(path, why));
             l.exit = ExitUsage;
             return l;
         }
-        // One byte past the limit is enough for the reader to say the file is too large; a device
-        // such as /dev/zero is not read for ever.
-        const QByteArray bytes = file.read(YamlLimits::maxBytes + 1);
-        if (file.error() != QFileDevice::NoError) {
-            err(tr("%1: error: cannot read the file: %2").arg(path, file.errorString()));
-            l.exit = ExitUsage;
-            return l;
-        }
-        l.read = ConfigReader::read(bytes);
+        l.read = ConfigReader::read(*bytes);
         if (!l.read.parsed) {
             for (const Problem& p : std::as_const(l.read.problems))
                 err(p.format(path));

@@ -150,6 +150,13 @@ public:
             topics.append(o);
         }
         mqtt.insert(u"topics"_s, topics);
+        // Nothing silent: past the tree's budgets the list is not all there was (issue 41).
+        mqtt.insert(u"complete"_s, tree.untrackedMessages() == 0);
+        if (const quint64 untracked = tree.untrackedMessages()) {
+            mqtt.insert(u"untracked_messages"_s, qint64(untracked));
+            mqtt.insert(u"topic_budget"_s, tree.topicBudget());
+            mqtt.insert(u"names_budget_bytes"_s, tree.structureBudget());
+        }
         return mqtt;
     }
 
@@ -169,13 +176,30 @@ public:
         out(tr("MQTT broker %1: %2")
                 .arg(connection.profile().url,
                      connected ? tr("connected") : tr("not connected (%1)").arg(connection.stateDetail())));
-        for (const MqttTopicTree::TopicInfo& t : tree.topics()) {
+        const QList<MqttTopicTree::TopicInfo> topics = tree.topics();
+        for (const MqttTopicTree::TopicInfo& t : topics) {
             out(u"  %1  %2 msg  %3 B%4%5"_s.arg(t.topic)
                     .arg(t.messages)
                     .arg(t.bytes)
                     .arg(t.retainedMessages ? tr("  retained") : QString())
                     .arg(t.rosType ? u"  "_s + t.rosType->name : QString()));
         }
+        if (const QString line = untrackedLine(tree, topics.size()); !line.isEmpty())
+            out(u"  "_s + line);
+    }
+
+    /// What the topic tree did not keep, empty when it kept every topic.
+    static QString untrackedLine(const MqttTopicTree& tree, qsizetype listed)
+    {
+        const quint64 untracked = tree.untrackedMessages();
+        if (untracked == 0)
+            return {};
+        return tr("not complete: %1 messages on topics not kept (budget %2 topics, %3 MiB of names); %4 "
+                  "topics listed")
+            .arg(untracked)
+            .arg(tree.topicBudget())
+            .arg(tree.structureBudget() / (1024 * 1024))
+            .arg(listed);
     }
 };
 
@@ -318,7 +342,8 @@ int printDiscover(const DiscoverRequest& request, const Heard& heard)
         if (request.ros2)
             doc.insert(u"ros2"_s, Discover::ros2Json(heard.ros2, heard.ros2Error));
         doc.insert(u"mqtt"_s, Discover::mqttJson(connection, tree, connected));
-        out(QString::fromUtf8(QJsonDocument(doc).toJson(QJsonDocument::Indented)).trimmed());
+        // As bytes: a text copy of a document of 150,000 topics would be three times its size.
+        CliOutput::writeStdout(QJsonDocument(doc).toJson(QJsonDocument::Indented));
     } else {
         Discover::printText(request.ros1 ? &poller : nullptr, connection, tree, connected);
         if (request.ros2)

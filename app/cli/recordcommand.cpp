@@ -4,6 +4,7 @@
 #include "app/cli/clioutput.h"
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
+#include "base/regularfile.h"
 #include "base/secrets.h"
 #include "base/yamllimits.h"
 #include "latency/latencywarnings.h"
@@ -55,13 +56,15 @@ bool readRunInfo(const QCommandLineParser& parser, const QCommandLineOption& nam
     info.notes = parser.value(notes);
     if (!parser.isSet(config))
         return true;
-    QFile f(parser.value(config));
-    if (!f.open(QIODevice::ReadOnly)) {
-        err(Record::tr("%1: %2").arg(parser.value(config), f.errorString()));
+    QString why;
+    const std::optional<QByteArray> yaml
+        = RegularFile::readHead(parser.value(config), YamlLimits::maxBytes + 1, &why);
+    if (!yaml) {
+        err(Record::tr("%1: %2").arg(parser.value(config), why));
         return false;
     }
-    info.bridgeConfigPath = QFileInfo(f).absoluteFilePath();
-    info.bridgeConfig = f.read(YamlLimits::maxBytes + 1);
+    info.bridgeConfigPath = QFileInfo(parser.value(config)).absoluteFilePath();
+    info.bridgeConfig = *yaml;
     bool parsed = true;
     Secrets::redactYaml(info.bridgeConfig, nullptr, &parsed);
     if (!parsed)
@@ -155,6 +158,22 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
     return -1;
 }
 
+/// The malformed stamps so far, as the window's Measure page says them: "3 malformed stamps: 2 on
+/// /a, 1 on b (last: ...)"; empty when there were none.
+QString malformedLine(const MeasureSession& measure)
+{
+    const quint64 bad = measure.malformedStamps();
+    if (bad == 0)
+        return {};
+    const auto [worst, topics] = measure.worstMalformedTopics(3);
+    QStringList names;
+    for (const auto& [count, topic] : worst)
+        names << Record::tr("%1 on %2").arg(count).arg(topic);
+    if (topics > qsizetype(worst.size()))
+        names << Record::tr("%n more topic(s)", nullptr, int(topics - qsizetype(worst.size())));
+    return Record::tr("%1 malformed stamps: %2 (last: %3)").arg(bad).arg(names.join(u", "), measure.lastStampError());
+}
+
 /// Records until enough samples, the time is up, Ctrl+C or a failed write; progress on stderr.
 int runRecord(const RecordRequest& request)
 {
@@ -198,12 +217,14 @@ int runRecord(const RecordRequest& request)
         [&](qint64 elapsedMs) {
             sources.check(elapsedMs);
             // Committed first: after a crash the file holds at least what this line says.
+            const QString bad = malformedLine(measure);
             err(Record::tr("%1 s: %2 stamps committed, %3 complete samples, %4 dropped, %5 waiting")
                     .arg(elapsedMs / 1000)
                     .arg(measure.recorder()->committedStamps())
                     .arg(e.samples())
                     .arg(e.counters().dropped())
-                    .arg(e.pending()));
+                    .arg(e.pending())
+                + (bad.isEmpty() ? QString() : u"; "_s + bad));
         });
     if (status != ExitOk)
         return status;
@@ -220,6 +241,8 @@ int runRecord(const RecordRequest& request)
         err(Record::tr("not a measurement: %1").arg(line));
     if (!warnings.isEmpty())
         err(LatencyWarnings::fixOnCommandLine());
+    if (const QString bad = malformedLine(measure); !bad.isEmpty())
+        err(bad); // not recorded: the run holds only the stamps that read
     if (stamps == 0 && !request.allowEmpty) {
         err(Record::tr("nothing was recorded (%1); --allow-empty accepts an empty run")
                 .arg(!sources.brokerEverReached() && !sources.masterEverReached()

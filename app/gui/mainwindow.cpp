@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
 
+#include "base/regularfile.h"
+#include "base/yamllimits.h"
 #include "config/configdocument.h"
 #include "config/problemmodel.h"
 #include "mqtt/mqttconnection.h"
@@ -118,10 +120,11 @@ MainWindow::MainWindow(QWidget* parent)
     });
     m_measurePage->runBar()->setBridgeConfigProvider([this]() -> std::pair<QString, QByteArray> {
         const QString path = m_document->filePath();
-        QFile f(path);
-        if (path.isEmpty() || !f.open(QIODevice::ReadOnly))
+        const std::optional<QByteArray> bytes
+            = path.isEmpty() ? std::nullopt : RegularFile::readHead(path, YamlLimits::maxBytes + 1);
+        if (!bytes)
             return {};
-        return {path, f.readAll()};
+        return {path, *bytes};
     });
     setCentralWidget(m_pages);
     statusBar()->addPermanentWidget(m_problemStatus);

@@ -3,6 +3,7 @@
 // files through MainWindow::openPaths, which opens each where it belongs.
 #include "app/gui/mainwindow.h"
 #include "base/logging.h"
+#include "base/regularfile.h"
 #include "experiment/experimentreport.h"
 #include "report/runloader.h"
 #include "widgets/common/droppedfiles.h"
@@ -40,11 +41,10 @@ Kind kindOf(const QString& path)
         return ExperimentReport::isExperiment(path) ? Kind::Experiment : Kind::Folder;
     if (RunLoader::isMeasurement(path))
         return Kind::Measurement;
-    QFile file(path);
-    if (file.open(QIODevice::ReadOnly)) {
+    if (const std::optional<QByteArray> bytes = RegularFile::readHead(path, 256 * 1024)) {
         static const QRegularExpression pipelineKey(u"(^|\\n)topics_in_order\\s*:"_s);
         static const QRegularExpression planKey(u"(^|\\n)(factors|cells)\\s*:"_s);
-        const QString head = QString::fromUtf8(file.read(256 * 1024));
+        const QString head = QString::fromUtf8(*bytes);
         if (pipelineKey.match(head).hasMatch())
             return Kind::Pipeline;
         if (planKey.match(head).hasMatch())

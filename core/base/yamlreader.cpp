@@ -2,6 +2,7 @@
 #include "yamlreader.h"
 
 #include "base/exactutf8.h"
+#include "base/regularfile.h"
 #include "base/yamllimits.h"
 
 #include <cmath>
@@ -25,13 +26,12 @@ Result<YAML::Node> YamlReader::parse(const QByteArray& text) const
 
 Result<QByteArray> YamlReader::readFile(const QString& path)
 {
-    QFile f(path);
-    if (f.open(QIODevice::ReadOnly)) {
-        QByteArray bytes = f.read(YamlLimits::maxBytes + 1);
-        if (f.error() == QFileDevice::NoError)
-            return bytes;
-    }
-    return LocatedError {f.errorString(), {}, path};
+    // A regular file only (a FIFO or /dev/zero is refused, not waited on or read without end);
+    // one byte past the limit, so that YamlLimits says it is too large.
+    QString why;
+    if (std::optional<QByteArray> bytes = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why))
+        return std::move(*bytes);
+    return LocatedError {why, {}, path};
 }
 
 LocatedError YamlReader::error(const QString& message) const

@@ -65,6 +65,7 @@ public:
         std::atomic<quint64> toMqtt {0};
         std::atomic<quint64> toRos {0};
         std::atomic<quint64> failed {0}; ///< could not be sent (broker away, bad payload)
+        std::atomic<quint64> tooLarge {0}; ///< of those, refused unread: too large to convert (json mappings)
         // At the memory bound (updated by counters()):
         std::atomic<quint64> droppedToMqtt {0}; ///< the oldest waiting for the broker
         std::atomic<quint64> droppedToRos {0}; ///< not handed to roscpp, which held its half

@@ -127,6 +127,7 @@ struct Ros2Bridge::Private
     void mqttToRos(Route& r, const QByteArray& payload, qint64 receivedNs);
     bool advertiseRoute(Route& r, const QString& type);
     void refused(const QString& rosTopic, const QString& why);
+    void refuseTooLarge(const QString& from, qsizetype bytes);
     void startMqtt();
 };
 
@@ -182,6 +183,9 @@ void Ros2Bridge::Private::rosToMqtt(Route& r, const Ros2Sample& s)
     if (r.primitive) {
         const std::optional<QByteArray> text = Ros2BridgeWire::primitiveText(registry, r.subscribedType, s.bytes);
         ok = text && mqtt->send(r.mqttTopic, *text, r.qos, r.retained);
+    } else if (r.json && s.bytes.size() > Ros2BridgeWire::kMaxJsonBytes) {
+        refuseTooLarge(tr("ROS %1").arg(r.rosTopic), s.bytes.size());
+        ok = false;
     } else if (r.json) {
         const std::optional<QByteArray> json = Ros2BridgeWire::toJson(registry, r.subscribedType, s.bytes, nullptr);
         ok = json && mqtt->send(r.mqttTopic, *json, r.qos, r.retained);
@@ -305,6 +309,14 @@ void Ros2Bridge::Private::refused(const QString& rosTopic, const QString& why)
     }
 }
 
+// A json mapping's payload too large to convert: counted, the first one logged (a peer can send
+// them as fast as it likes).
+void Ros2Bridge::Private::refuseTooLarge(const QString& from, qsizetype bytes)
+{
+    if (counters.tooLarge.fetch_add(1, std::memory_order_relaxed) == 0)
+        log(tr("%1: %2 (further ones are counted)").arg(from, Ros2BridgeWire::tooLargeForJson(bytes)));
+}
+
 // The event loop's thread: a message from the broker (handed over from Paho's).
 void Ros2Bridge::Private::mqttToRos(Route& r, const QByteArray& payload, qint64 receivedNs)
 {
@@ -317,6 +329,8 @@ void Ros2Bridge::Private::mqttToRos(Route& r, const QByteArray& payload, qint64 
         cdr = t.cdr;
     } else if (r.primitive) {
         cdr = Ros2BridgeWire::fixedPrimitive(registry, type, payload);
+    } else if (r.json && payload.size() > Ros2BridgeWire::kMaxJsonBytes) {
+        refuseTooLarge(tr("MQTT %1").arg(r.mqttTopic), payload.size()); // counted as failed below
     } else if (r.json) {
         cdr = Ros2BridgeWire::fromJson(registry, type, payload, nullptr);
     } else if (!type.isEmpty()) {

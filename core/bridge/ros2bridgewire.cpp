@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -190,9 +191,21 @@ QJsonValue jsonOf(const RosValue& v)
 }
 } // namespace
 
+QString tooLargeForJson(qsizetype bytes)
+{
+    return QCoreApplication::translate("Ros2BridgeWire", "a payload of %1 bytes, more than the %2 MiB a json mapping converts: refused unread")
+        .arg(bytes)
+        .arg(kMaxJsonBytes / (1024 * 1024));
+}
+
 std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr,
                                  QString* error)
 {
+    if (cdr.size() > kMaxJsonBytes) {
+        if (error)
+            *error = tooLargeForJson(cdr.size());
+        return std::nullopt;
+    }
     RosDecodeLimits limits;
     limits.maxStringChars = std::numeric_limits<int>::max();
     limits.maxArrayElements = std::numeric_limits<int>::max();
@@ -205,6 +218,11 @@ std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString&
 std::optional<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json,
                                    QString* error)
 {
+    if (json.size() > kMaxJsonBytes) { // never the tree of it
+        if (error)
+            *error = tooLargeForJson(json.size());
+        return std::nullopt;
+    }
     QJsonParseError parse;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parse);
     if (!doc.isObject()) {

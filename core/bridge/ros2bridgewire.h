@@ -44,12 +44,21 @@ Typed primitiveFromText(const QByteArray& text);
 /// Text for a fixed primitive type (fixedMqtt2PrimitiveRos()): nullopt when it does not read as
 /// one ("1"/"0" are Bool too; integers out of range are refused).
 std::optional<QByteArray> fixedPrimitive(const RosTypeRegistry& registry, const QString& type, const QByteArray& text);
+/// The most a json: true mapping converts, either way: JSON text towards ROS, CDR towards JSON.
+/// QJsonDocument builds its whole tree before the encoder's limits apply (about 40 times the text:
+/// a 40 MB array of zeros took the bridge to 1.7 GB), and a decoded message is as big again; a
+/// bigger payload is refused unread (issue 41). A JSON message is a small one; big data goes as CDR.
+inline constexpr qsizetype kMaxJsonBytes = 1024 * 1024;
+
+/// Why a payload of `bytes` is not converted ("a payload of N bytes, more than ...").
+QString tooLargeForJson(qsizetype bytes);
 /// A message as a JSON object, field by field (json: true mappings towards MQTT; mqtt_client v2.5
 /// writes it with rosx_introspection, whose exact text, spacing and number format included, is
 /// not checked here); nullopt with `error`.
 std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr,
                                  QString* error);
-/// JSON text as a message of `type` (json: true mappings); nullopt with `error`.
+/// JSON text as a message of `type` (json: true mappings); nullopt with `error`. Both refuse more
+/// than kMaxJsonBytes before anything is parsed.
 std::optional<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json,
                                    QString* error);
 

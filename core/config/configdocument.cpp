@@ -3,12 +3,14 @@
 
 #include "base/atomicfile.h"
 #include "base/logging.h"
+#include "base/regularfile.h"
 #include "base/yamllimits.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"
 #include "config/configwriter.h"
 
 #include <algorithm>
+#include <limits>
 #include <QFile>
 #include <QFileInfo>
 
@@ -23,14 +25,18 @@ ConfigDocument::ConfigDocument(QObject* parent)
 ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
 {
     LoadResult result;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // A regular file (not a FIFO or a device), read no further than a config may go: a file past
+    // the limit is said to be so by its size, and only its start is read, to be shown.
+    QString why;
+    const std::optional<RegularFile::Opened> opened
+        = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
+    if (!opened) {
         result.unreadable = true;
-        result.error = tr("Cannot open %1: %2").arg(path, file.errorString());
+        result.error = tr("Cannot open %1: %2").arg(path, why);
         return result;
     }
-    // Bounded: a file past the limit is said to be so by its size, and only its start is read.
-    result.fileSize = file.size();
+    QFile& file = *opened->file;
+    result.fileSize = opened->size;
     if (result.fileSize > YamlLimits::maxBytes) {
         Problem tooLarge;
         tooLarge.code = u"yaml-too-large"_s;
@@ -38,10 +44,10 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
         tooLarge.fix = tr("Split the file.");
         result.problems = {tooLarge};
         result.error = tooLarge.format(path);
-        result.text = file.read(kShownBytes);
+        result.text = file.read(std::min<qint64>(kShownBytes, opened->size));
         return result;
     }
-    const QByteArray text = file.read(YamlLimits::maxBytes + 1);
+    const QByteArray text = file.read(std::min<qint64>(opened->size, YamlLimits::maxBytes + 1));
     const ConfigReadResult read = ConfigReader::read(text);
     if (!read.parsed) {
         result.problems = read.problems;

@@ -105,6 +105,11 @@ Mapping MappingFactory::ros2mqtt(const QString& rosTopic, const QString& rosType
     return m;
 }
 
+namespace {
+/// The most JSON text looked at to suggest a json mapping: what a json mapping converts (issue 41).
+constexpr qsizetype kMaxJsonBytes = 1024 * 1024;
+} // namespace
+
 Mapping MappingFactory::mqtt2ros(const QString& mqttTopic, const MqttFacts& source, const QString& rosTopic,
                                  ConfigLayout layout)
 {
@@ -116,7 +121,10 @@ Mapping MappingFactory::mqtt2ros(const QString& mqttTopic, const MqttFacts& sour
         m.set(u"primitive"_s, u"true"_s);
         if (layout == ConfigLayout::Ros2)
             m.set(u"ros_type"_s, typeForLayout(primitive, layout));
-    } else if (layout == ConfigLayout::Ros2 && !QJsonDocument::fromJson(source.lastPayload).isNull()) {
+    } else if (layout == ConfigLayout::Ros2 && source.lastPayload.size() <= kMaxJsonBytes
+               && !QJsonDocument::fromJson(source.lastPayload).isNull()) {
+        // (a payload from anyone on the broker: its size first, never the tree of 16 MiB; the ROS 2
+        // bridge converts no JSON above that either)
         // JSON from a non-ROS device: mqtt_client needs json and the ROS type (left to the user,
         // and flagged until it is set).
         m.set(u"json"_s, u"true"_s);

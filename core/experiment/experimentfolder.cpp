@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentfolder.h"
 
+#include "base/regularfile.h"
 #include "experiment/experimentrunner.h"
 
 #include <QDir>
@@ -28,27 +29,22 @@ QString ExperimentFolder::filePath(const QString& relative) const
 
 std::optional<QList<CellStatus>> ExperimentFolder::readState(const ExperimentPlan& plan, QString* error) const
 {
-    QFile f(statePath());
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("%1: %2").arg(f.fileName(), f.errorString());
-        return std::nullopt;
-    }
     QString why;
-    std::optional<QList<CellStatus>> statuses = ExperimentState::parse(f.read(kMaxStateBytes), plan, &why);
+    const std::optional<QByteArray> bytes = RegularFile::readHead(statePath(), kMaxStateBytes, &why);
+    std::optional<QList<CellStatus>> statuses
+        = bytes ? ExperimentState::parse(*bytes, plan, &why) : std::nullopt;
     if (!statuses && error)
-        *error = tr("%1: %2").arg(f.fileName(), why);
+        *error = tr("%1: %2").arg(statePath(), why);
     return statuses;
 }
 
 QList<ThroughputResult> ExperimentFolder::readThroughput() const
 {
     QList<ThroughputResult> results;
-    QFile f(throughputPath());
-    if (!f.open(QIODevice::ReadOnly))
-        return results;
-    const QJsonArray sizes
-        = QJsonDocument::fromJson(f.read(kMaxStateBytes)).object().value(u"sizes"_s).toArray();
+    const QJsonArray sizes = QJsonDocument::fromJson(RegularFile::head(throughputPath(), kMaxStateBytes))
+                                 .object()
+                                 .value(u"sizes"_s)
+                                 .toArray();
     for (const QJsonValue& v : sizes) {
         const QJsonObject o = v.toObject();
         ThroughputResult r;

@@ -3,7 +3,9 @@
 
 #include "base/atomicfile.h"
 #include "base/logging.h"
+#include "base/regularfile.h"
 #include "base/secrets.h"
+#include "base/yamllimits.h"
 #include "demo/demolab.h"
 #include "experiment/linkrelay.h"
 #include "latency/latencyengine.h"
@@ -196,8 +198,7 @@ bool ExperimentRunner::prepare(QString* error)
         if (!m_options.resume)
             return fail(tr("%1 holds an experiment already: --resume goes on with it, or give another folder")
                             .arg(m_dir));
-        QFile copy(ExperimentFolder(m_dir).planPath());
-        if (!copy.open(QIODevice::ReadOnly) || copy.read(kMaxStateBytes) != m_planText)
+        if (RegularFile::head(ExperimentFolder(m_dir).planPath(), kMaxStateBytes) != m_planText)
             return fail(tr("%1 was made by another plan (its %2 differs): resume it with that plan, or give "
                            "another folder")
                             .arg(m_dir, ExperimentFolder::planFileName()));
@@ -389,9 +390,7 @@ void ExperimentRunner::poll()
         info.cell = cell.id();
         info.factors = cell.levels;
         info.bridgeConfigPath = c.lab.vehicleConfigPath();
-        QFile config(c.lab.vehicleConfigPath());
-        if (config.open(QIODevice::ReadOnly))
-            info.bridgeConfig = config.readAll();
+        info.bridgeConfig = RegularFile::head(c.lab.vehicleConfigPath(), YamlLimits::maxBytes + 1);
         QString why;
         if (!c.measure->startRecording(c.runPath, info, &why)) {
             endCell(CellStatus::Failed, why);

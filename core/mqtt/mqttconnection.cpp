@@ -3,6 +3,7 @@
 
 #include "base/exactutf8.h"
 #include "base/logging.h"
+#include "base/regularfile.h"
 #include "base/secrets.h"
 #include "base/wallclock.h"
 #include "mqtt/pahooptions.h"
@@ -323,9 +324,9 @@ void MqttConnection::diagnoseTls(const QString& fallback)
         conf.setCaCertificates(QSslCertificate::fromPath(m_profile.caFile));
     if (!m_profile.certFile.isEmpty()) {
         conf.setLocalCertificate(QSslCertificate::fromPath(m_profile.certFile).value(0));
-        QFile keyFile(m_profile.keyFile);
-        if (keyFile.open(QIODevice::ReadOnly)) {
-            const QByteArray pem = keyFile.readAll();
+        // A key is a few KiB: a regular file of at most 1 MiB (not a FIFO, not /dev/zero).
+        if (const std::optional<QByteArray> read = RegularFile::read(m_profile.keyFile, 1024 * 1024)) {
+            const QByteArray& pem = *read;
             QSslKey key(pem, QSsl::Rsa, QSsl::Pem, QSsl::PrivateKey, m_profile.keyPassword.toUtf8());
             if (key.isNull())
                 key = QSslKey(pem, QSsl::Ec, QSsl::Pem, QSsl::PrivateKey, m_profile.keyPassword.toUtf8());

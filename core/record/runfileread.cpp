@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Reading a run file: its schema checked, its rows taken within the read's budgets.
+#include "base/regularfile.h"
 #include "base/secrets.h"
 #include "latency/pipeline.h"
+#include "record/readbudgets.h"
 #include "record/runfile.h"
 #include "record/runfilesql.h"
 
@@ -12,6 +14,7 @@
 #include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <limits>
 #include <QSet>
 #include <QSqlDatabase>
 #include <QSqlDriver>
@@ -27,15 +30,15 @@ using RunSql::exec;
 namespace {
 /// What one read of a run file may take (docs/formats.md, "Run files"): a run file is input, and a
 /// small file can ask for unbounded work (a view over a cross join, a recursive view).
-constexpr qint64 kMaxRows = 10'000'000; ///< rows of every table together
-constexpr qint64 kMaxTextBytes = 64 * 1024 * 1024; ///< names, metadata and event texts together
-constexpr int kMaxValueBytes = 16 * 1024 * 1024; ///< one value (SQLite's length limit)
+constexpr qint64 kMaxRows = ReadBudgets::kMaxRows; ///< rows of every table together
+constexpr qint64 kMaxTextBytes = ReadBudgets::kMaxTextBytes; ///< names, metadata and event texts together
+constexpr int kMaxValueBytes = ReadBudgets::kMaxValueBytes; ///< one value (SQLite's length limit)
 constexpr int kMaxSchemaObjects = 64;
 /// SQLite steps (VM instructions) per byte of the file and its log, and a floor: plain tables take
 /// a few steps per row, so a legitimate read stays far below.
 constexpr qint64 kStepsPerByte = 64;
 constexpr qint64 kMinSteps = 50'000'000;
-constexpr int kMaxReadSeconds = 300;
+constexpr int kMaxReadSeconds = ReadBudgets::kMaxReadSeconds;
 constexpr int kStepsPerCheck = 10000;
 
 /// The format's tables and their columns: nothing else is read, and nothing else may be in the file
@@ -145,6 +148,8 @@ private:
             m_stop = Stop::Steps;
         else if (m_deadline.hasExpired())
             m_stop = Stop::Deadline;
+        else if (RegularFile::stopRequested()) // SIGINT, SIGTERM: also where no progress is asked
+            m_stop = Stop::Cancelled;
         else if (m_progress && m_sinceProgress.elapsed() >= 100) {
             m_sinceProgress.restart();
             if (!m_progress(m_percent))
@@ -283,8 +288,7 @@ bool readEvents(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedEvent>* even
 
 bool RunFile::looksLikeRun(const QString& path)
 {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) && f.read(16) == QByteArray("SQLite format 3", 16);
+    return RegularFile::head(path, 16) == QByteArray("SQLite format 3", 16);
 }
 
 namespace {
@@ -416,14 +420,18 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
             *error = path + u": "_s + why;
         return std::nullopt;
     };
-    QFile probe(path);
-    if (!probe.open(QIODevice::ReadOnly))
-        return fail(probe.errorString());
-    if (probe.read(16) != QByteArray("SQLite format 3", 16))
+    // A regular file only: SQLite would wait on a FIFO in open() for ever.
+    QString notFile;
+    std::optional<RegularFile::Opened> probe = RegularFile::open(path, std::numeric_limits<qint64>::max(), &notFile);
+    if (!probe)
+        return fail(notFile);
+    if (probe->file->read(16) != QByteArray("SQLite format 3", 16))
         return fail(tr("not a Bridgescope run (not an SQLite database)"));
-    probe.close();
+    probe.reset();
     // A run left by a killed recorder still has its write-ahead log: open it writable to recover it.
     const QFileInfo wal(path + u"-wal"_s);
+    if (const QString what = RegularFile::notAFile(wal.filePath()); !what.isEmpty())
+        return fail(tr("its write-ahead log %1 is %2, not a file: refused").arg(wal.fileName(), what));
     const bool recovering = wal.exists();
     Connection connection(path, !recovering);
     if (!connection.isOpen())

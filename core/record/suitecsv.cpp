@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "suitecsv.h"
 
+#include "base/regularfile.h"
+#include "record/readbudgets.h"
 #include "wire/stampcodec.h"
 
+#include <limits>
+#include <QDeadlineTimer>
 #include <QFile>
 #include <QSet>
 
@@ -121,87 +125,278 @@ QString readTimes(const QStringList& cells, const QStringList& topics, std::vect
 }
 } // namespace
 
-std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error, const Progress& progress)
+namespace {
+/// Reads the CSV as its bytes come, one record at a time: never the whole file as text, so that
+/// what it holds is the samples taken (within the budgets) and one row (issue 41).
+class Parser
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("%1: %2").arg(path, f.errorString());
-        return std::nullopt;
-    }
-    return parse(f.readAll(), path, error, progress);
-}
+public:
+    Parser(const QString& name, const SuiteCsv::Limits& limits, const SuiteCsv::Progress& progress,
+           qint64 totalBytes)
+        : m_name(name)
+        , m_limits(limits)
+        , m_progress(progress)
+        , m_total(std::max<qint64>(totalBytes, 1))
+        , m_deadline(std::chrono::seconds(limits.maxSeconds))
+    { }
 
-std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QString& name, QString* error,
-                                              const Progress& progress)
-{
-    const auto fail = [&](int line, const QString& why) -> std::optional<Data> {
-        if (error)
-            *error = u"%1:%2: %3"_s.arg(name).arg(line).arg(why);
-        return std::nullopt;
-    };
-    QString text = QString::fromUtf8(bytes);
-    if (text.startsWith(QChar(0xFEFF)))
-        text.remove(0, 1);
-    qsizetype pos = 0;
-    int line = 1;
-    bool ok = true;
-    int span = 1;
-    while (pos < text.size() && (text[pos] == u'\n' || text[pos] == u'\r')) {
-        if (text[pos] == u'\n')
-            ++line;
-        ++pos;
+    /// Takes the next bytes of the file; false when the read stopped (see finish()).
+    bool feed(const char* bytes, qsizetype size)
+    {
+        if (!m_why.isEmpty())
+            return false;
+        m_fed += size;
+        m_pending.append(bytes, size);
+        if (!takeRecords(false))
+            return false;
+        return poll();
     }
-    if (pos >= text.size())
-        return fail(line, tr("empty file: expected a header row of stamp topics"));
-    Data data;
-    const QStringList header = nextRecord(text, pos, ok, span);
-    if (!ok)
-        return fail(line, tr("unterminated quote in the header row"));
-    if (const QString why = readHeader(header, &data.topics); !why.isEmpty())
-        return fail(line, why);
-    line += span;
-    const auto problem = [&](int at, const QString& why) {
-        ++data.malformed;
-        if (data.problems.size() < kMaxProblems)
-            data.problems << u"%1:%2: %3"_s.arg(name).arg(at).arg(why);
-    };
-    qint64 cellsSincePoll = 0;
-    while (pos < text.size()) {
-        // Polled by cells, not rows: one row of 20,000 columns is a lot of work already.
-        cellsSincePoll += data.topics.size();
-        if (progress && cellsSincePoll >= 100'000) {
-            cellsSincePoll = 0;
-            if (!progress(int(100 * pos / text.size())))
-                return fail(line, tr("cancelled"));
+    /// The file's end: its last record, then the data or the error.
+    std::optional<SuiteCsv::Data> finish(QString* error)
+    {
+        if (m_why.isEmpty())
+            takeRecords(true);
+        if (m_why.isEmpty() && !m_header)
+            stop(m_line, SuiteCsv::tr("empty file: expected a header row of stamp topics"));
+        if (!m_why.isEmpty()) {
+            if (error)
+                *error = m_why;
+            return std::nullopt;
         }
-        const int at = line;
+        return std::move(m_data);
+    }
+
+private:
+    bool stop(qint64 line, const QString& why)
+    {
+        m_why = u"%1:%2: %3"_s.arg(m_name).arg(line).arg(why);
+        return false;
+    }
+    /// Progress, Ctrl+C and the deadline: between chunks and every 100,000 cells.
+    bool poll()
+    {
+        if (RegularFile::stopRequested() || (m_progress && !m_progress(int(100 * m_fed / m_total))))
+            return stop(m_line, SuiteCsv::tr("cancelled"));
+        if (m_deadline.hasExpired())
+            return stop(m_line,
+                        SuiteCsv::tr("refused: reading it takes more than %1 s").arg(m_limits.maxSeconds));
+        return true;
+    }
+
+    /// Cuts the complete records out of m_pending (at the end of the file, the last one too), in
+    /// RFC 4180's quoting as nextRecord() reads it: a record ends at a line break outside quotes.
+    bool takeRecords(bool atEnd)
+    {
+        const char* p = m_pending.constData();
+        const qsizetype n = m_pending.size();
+        qsizetype begin = 0;
+        qsizetype i = m_scan;
+        while (i < n) {
+            const char c = p[i];
+            if (m_quoted) {
+                if (c == '"') {
+                    if (i + 1 >= n && !atEnd)
+                        break; // is it a doubled quote? the next chunk says
+                    if (i + 1 < n && p[i + 1] == '"') {
+                        i += 2;
+                        continue;
+                    }
+                    m_quoted = false;
+                }
+                m_cellEmpty = false;
+                ++i;
+                continue;
+            }
+            if (c == '"' && m_cellEmpty) {
+                m_quoted = true;
+            } else if (c == ',') {
+                m_cellEmpty = true;
+            } else if (c == '\r' || c == '\n') {
+                if (c == '\r' && i + 1 >= n && !atEnd)
+                    break; // CR LF cut between two chunks
+                const qsizetype terminator = c == '\r' && i + 1 < n && p[i + 1] == '\n' ? 2 : 1;
+                if (!takeRecord(QByteArrayView(p + begin, i - begin), p[i + terminator - 1] == '\n'))
+                    return false;
+                i += terminator;
+                begin = i;
+                m_cellEmpty = true;
+                continue;
+            } else {
+                m_cellEmpty = false;
+            }
+            ++i;
+        }
+        if (i - begin > m_limits.maxRowBytes)
+            return stop(
+                m_line,
+                SuiteCsv::tr("refused: a row of more than %1 MiB").arg(m_limits.maxRowBytes / (1024 * 1024)));
+        if (atEnd && begin < n) {
+            i = n;
+            if (!takeRecord(QByteArrayView(p + begin, n - begin), false))
+                return false;
+            begin = n;
+        }
+        m_pending.remove(0, begin);
+        m_scan = i - begin;
+        return true;
+    }
+
+    /// One record (without its line break); `newline`: its break was (or ended with) a LF.
+    bool takeRecord(QByteArrayView bytes, bool newline)
+    {
+        if (bytes.size() > m_limits.maxRowBytes)
+            return stop(
+                m_line,
+                SuiteCsv::tr("refused: a row of more than %1 MiB").arg(m_limits.maxRowBytes / (1024 * 1024)));
+        if (!m_started) {
+            if (bytes.startsWith("\xEF\xBB\xBF"))
+                bytes = bytes.sliced(3); // the byte order mark
+            m_started = true;
+        }
+        if (!m_header) {
+            if (bytes.isEmpty()) { // blank lines before the header
+                m_line += newline ? 1 : 0;
+                return true;
+            }
+            return takeHeader(bytes);
+        }
+        if ((m_cells += m_data.topics.size()) > m_limits.maxCells)
+            return stop(
+                m_line,
+                SuiteCsv::tr("refused: it has more than %1 cells (the most a measurement file may have)")
+                    .arg(m_limits.maxCells));
+        const QString text = QString::fromUtf8(bytes);
+        qsizetype pos = 0;
+        bool ok = true;
+        int span = 1;
+        const qint64 at = m_line;
         const QStringList cells = nextRecord(text, pos, ok, span);
-        line += span;
-        if (cells.size() == 1 && cells.first().trimmed().isEmpty())
-            continue; // blank line
-        if (!ok) {
-            problem(at, tr("unterminated quote"));
-            break;
+        m_line += span;
+        if ((m_sincePoll += m_data.topics.size()) >= 100'000) {
+            // Polled by cells, not rows: one row of 20,000 columns is a lot of work already.
+            m_sincePoll = 0;
+            if (!poll())
+                return false;
         }
-        if (cells.size() != data.topics.size()) {
-            problem(at, tr("%1 cells, the header has %2").arg(cells.size()).arg(data.topics.size()));
-            continue;
+        if (cells.size() == 1 && cells.first().trimmed().isEmpty())
+            return true; // blank line
+        if (!ok) {
+            problem(at, SuiteCsv::tr("unterminated quote"));
+            return true; // only the file's last record can be one
+        }
+        if (cells.size() != m_data.topics.size()) {
+            problem(at,
+                    SuiteCsv::tr("%1 cells, the header has %2").arg(cells.size()).arg(m_data.topics.size()));
+            return true;
         }
         std::vector<qint64> times;
         bool missing = false;
-        const QString bad = readTimes(cells, data.topics, &times, &missing);
-        if (!bad.isEmpty()) {
+        const QString bad = readTimes(cells, m_data.topics, &times, &missing);
+        if (!bad.isEmpty())
             problem(at, bad);
-            continue;
-        }
-        if (missing) {
-            ++data.incomplete;
-            continue;
-        }
-        data.samples.push_back(std::move(times));
+        else if (missing)
+            ++m_data.incomplete;
+        else
+            m_data.samples.push_back(std::move(times));
+        return true;
     }
-    return data;
+
+    bool takeHeader(QByteArrayView bytes)
+    {
+        const QString text = QString::fromUtf8(bytes);
+        qsizetype pos = 0;
+        bool ok = true;
+        int span = 1;
+        const QStringList header = nextRecord(text, pos, ok, span);
+        if (!ok)
+            return stop(m_line, SuiteCsv::tr("unterminated quote in the header row"));
+        if (const QString why = readHeader(header, &m_data.topics); !why.isEmpty())
+            return stop(m_line, why);
+        m_header = true;
+        m_line += span;
+        return true;
+    }
+
+    void problem(qint64 at, const QString& why)
+    {
+        ++m_data.malformed;
+        if (m_data.problems.size() < kMaxProblems)
+            m_data.problems << u"%1:%2: %3"_s.arg(m_name).arg(at).arg(why);
+    }
+
+    const QString m_name;
+    const SuiteCsv::Limits m_limits;
+    const SuiteCsv::Progress m_progress;
+    const qint64 m_total;
+    QDeadlineTimer m_deadline;
+    QByteArray m_pending; ///< bytes of the record being read
+    qsizetype m_scan = 0; ///< how far m_pending was scanned (quoting state below)
+    bool m_quoted = false;
+    bool m_cellEmpty = true;
+    bool m_started = false;
+    bool m_header = false;
+    qint64 m_line = 1;
+    qint64 m_fed = 0;
+    qint64 m_cells = 0;
+    qint64 m_sincePoll = 0;
+    QString m_why;
+    SuiteCsv::Data m_data;
+};
+
+constexpr qsizetype kChunkBytes = 1024 * 1024;
+} // namespace
+
+std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error, const Progress& progress,
+                                             const Limits& limits)
+{
+    // A regular file (a FIFO or /dev/zero is refused), read in chunks up to its size at the open.
+    QString why;
+    std::optional<RegularFile::Opened> f = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
+    if (!f) {
+        if (error)
+            *error = tr("%1: %2").arg(path, why);
+        return std::nullopt;
+    }
+    Parser parser(path, limits, progress, f->size);
+    QByteArray chunk(kChunkBytes, Qt::Uninitialized);
+    for (qint64 left = f->size; left > 0;) {
+        const qint64 got = f->file->read(chunk.data(), std::min<qint64>(left, kChunkBytes));
+        if (got < 0) {
+            if (error)
+                *error = tr("%1: %2").arg(path, f->file->errorString());
+            return std::nullopt;
+        }
+        if (got == 0)
+            break; // the file became shorter
+        left -= got;
+        if (!parser.feed(chunk.constData(), qsizetype(got)))
+            break;
+    }
+    return parser.finish(error);
+}
+
+std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QString& name, QString* error,
+                                              const Progress& progress, const Limits& limits)
+{
+    Parser parser(name, limits, progress, bytes.size());
+    parser.feed(bytes.constData(), bytes.size());
+    return parser.finish(error);
+}
+
+std::optional<SuiteCsv::Data> SuiteCsv::parseInSlices(const QByteArray& bytes, const QString& name,
+                                                      const std::vector<qsizetype>& slices, QString* error,
+                                                      const Limits& limits)
+{
+    Parser parser(name, limits, {}, bytes.size());
+    qsizetype at = 0;
+    for (std::size_t i = 0; at < bytes.size(); ++i) {
+        const qsizetype n = slices.empty() ? bytes.size() : std::max<qsizetype>(1, slices[i % slices.size()]);
+        const qsizetype take = std::min(n, bytes.size() - at);
+        if (!parser.feed(bytes.constData() + at, take))
+            break;
+        at += take;
+    }
+    return parser.finish(error);
 }
 
 QByteArray SuiteCsv::header(const QStringList& topics)

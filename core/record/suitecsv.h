@@ -1,12 +1,23 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "record/readbudgets.h"
+
 #include <functional>
 #include <optional>
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QStringList>
 #include <vector>
+
+/// What one read may take: the budgets of a run file (record/readbudgets.h). Past one the read
+/// is refused with the reason, never cut short silently.
+struct SuiteCsvLimits
+{
+    qint64 maxCells = ReadBudgets::kMaxRows; ///< cells of the rows after the header
+    qint64 maxRowBytes = ReadBudgets::kMaxValueBytes; ///< one record, the header row included
+    int maxSeconds = ReadBudgets::kMaxReadSeconds;
+};
 
 /// The benchmarking suite's timestamp CSV: a header row of stamp topics in pipeline order, then
 /// one row per sample, each cell "sec.nsec" with nine digits of nanoseconds.
@@ -29,13 +40,23 @@ public:
         QStringList problems; ///< "FILE:LINE: what", one per skipped row (the first 100)
     };
 
-    /// Unreadable files and files without a header row give nullopt and `error`.
-    /// `progress` (0..100, false to cancel) is polled while reading; cancelling gives nullopt.
+    /// What one read may take (outside the class only so that it can be a default argument).
+    using Limits = SuiteCsvLimits;
+
+    /// Unreadable files, files that are no regular file (a FIFO, a device), files without a header
+    /// row and files past `limits` give nullopt and `error`. The file is read 1 MiB at a time up to
+    /// its size at the open, one record at a time. `progress` (0..100, false to cancel) is polled
+    /// while reading, and RegularFile::stopRequested() (Ctrl+C); cancelling gives nullopt.
     using Progress = std::function<bool(int percent)>;
-    static std::optional<Data> read(const QString& path, QString* error = nullptr,
-                                    const Progress& progress = {});
+    static std::optional<Data> read(const QString& path, QString* error = nullptr, const Progress& progress = {},
+                                    const Limits& limits = {});
     static std::optional<Data> parse(const QByteArray& bytes, const QString& name, QString* error = nullptr,
-                                     const Progress& progress = {});
+                                     const Progress& progress = {}, const Limits& limits = {});
+    /// parse() with the bytes handed over in slices of the given sizes, in turn (the fuzz target
+    /// checks that any slicing reads the same as one piece).
+    static std::optional<Data> parseInSlices(const QByteArray& bytes, const QString& name,
+                                             const std::vector<qsizetype>& slices, QString* error = nullptr,
+                                             const Limits& limits = {});
 
     static QByteArray header(const QStringList& topics);
     static QByteArray row(const std::vector<qint64>& times);

@@ -11,6 +11,7 @@
 #include "session/livesession.h"
 #include "wire/sourcemessage.h"
 
+#include <algorithm>
 #include <QDateTime>
 #include <QThread>
 
@@ -271,6 +272,21 @@ QHash<QString, quint64> MeasureSession::malformedStampsByTopic() const
             all[it.key()] += it.value();
     }
     return all;
+}
+
+std::pair<std::vector<std::pair<quint64, QString>>, qsizetype>
+MeasureSession::worstMalformedTopics(std::size_t count) const
+{
+    const QHash<QString, quint64> byTopic = malformedStampsByTopic();
+    std::vector<std::pair<quint64, QString>> worst;
+    worst.reserve(std::size_t(byTopic.size()));
+    for (auto it = byTopic.cbegin(); it != byTopic.cend(); ++it)
+        worst.emplace_back(it.value(), it.key());
+    const std::size_t shown = std::min(worst.size(), count);
+    std::partial_sort(worst.begin(), worst.begin() + qsizetype(shown), worst.end(),
+                      [](const auto& a, const auto& b) { return a.first > b.first; });
+    worst.resize(shown);
+    return {std::move(worst), byTopic.size()};
 }
 
 QString MeasureSession::lastStampError() const

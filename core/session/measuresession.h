@@ -7,6 +7,7 @@
 #include "record/runfile.h"
 #include "session/livesources.h"
 
+#include <utility>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QSet>
@@ -104,6 +105,9 @@ public:
     QHash<QString, quint64> malformedStampsByTopic() const;
     /// The last reason of each side, "TOPIC: why".
     QString lastStampError() const;
+    /// The `count` topics with the most malformed stamps, most first (a lab needs to know which
+    /// device sends garbage), and how many topics had any.
+    std::pair<std::vector<std::pair<quint64, QString>>, qsizetype> worstMalformedTopics(std::size_t count) const;
 
     /// Called with every complete sample.
     void setSampleListener(LatencyEngine::SampleListener listener)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "wire/ros2definitions.h"
 
+#include "base/regularfile.h"
+
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
@@ -39,8 +41,8 @@ int addFolder(RosTypeRegistry& registry, const QString& folder, QStringList* err
                                    .arg(kMaxFiles));
             break;
         }
-        QFile f(path);
-        if (QFileInfo(path).size() > kMaxFileBytes || !f.open(QIODevice::ReadOnly)) {
+        const std::optional<QByteArray> text = RegularFile::read(path, kMaxFileBytes);
+        if (!text) {
             if (errors)
                 errors->append(
                     QCoreApplication::translate("Ros2Definitions", "%1: not readable or over %2 KiB")
@@ -49,7 +51,7 @@ int addFolder(RosTypeRegistry& registry, const QString& folder, QStringList* err
             continue;
         }
         QString error;
-        if (registry.addDefinition(type, QString::fromUtf8(f.read(kMaxFileBytes)), &error))
+        if (registry.addDefinition(type, QString::fromUtf8(*text), &error))
             ++added;
         else if (errors)
             errors->append(QStringLiteral("%1: %2").arg(path, error));

@@ -3,6 +3,8 @@
 #include "clirun.h"
 #include "config/configreader.h"
 #include "experiment/experimentplan.h"
+#include "mqtt/mqttlink.h"
+#include "mqtt/mqttprofile.h"
 #include "fixtures.h"
 #include "pythonref.h"
 #include "record/runfile.h"
@@ -1140,6 +1142,135 @@ private slots:
         QCOMPARE(p.exitCode(), 130);
         QVERIFY(!QFile::exists(out));
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList {u"wide.csv"_s});
+    }
+
+    // Issue 41: a run that is a FIFO blocked `report` for ever in open() (the window too), deaf
+    // to SIGTERM; a CSV that is a link to /dev/zero was read whole. Only regular files are read as
+    // data now: each is refused at once with what it is.
+    void reportRefusesFilesThatAreNotFiles()
+    {
+        QTemporaryDir dir;
+        const QString fifoRun = dir.filePath(u"shared.bsrun"_s);
+        const QString fifoCsv = dir.filePath(u"shared.csv"_s);
+        QCOMPARE(::mkfifo(QFile::encodeName(fifoRun).constData(), 0600), 0);
+        QCOMPARE(::mkfifo(QFile::encodeName(fifoCsv).constData(), 0600), 0);
+        const QString zeroCsv = dir.filePath(u"zero.csv"_s);
+        const QString zeroRun = dir.filePath(u"zero.bsrun"_s);
+        QVERIFY(QFile::link(u"/dev/zero"_s, zeroCsv));
+        QVERIFY(QFile::link(u"/dev/zero"_s, zeroRun));
+        for (const QString& path : {fifoRun, fifoCsv}) {
+            QProcess p;
+            p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, path});
+            QVERIFY(p.waitForStarted());
+            const bool ended = p.waitForFinished(10000);
+            if (!ended) { // the old code: blocked in open(), and SIGTERM does not end it either
+                ::kill(pid_t(p.processId()), SIGTERM);
+                const bool afterTerm = p.waitForFinished(2000);
+                p.kill();
+                p.waitForFinished();
+                QFAIL(qPrintable(u"report %1 still runs after 10 s (SIGTERM %2 it)"_s.arg(
+                    path, afterTerm ? u"ended"_s : u"did not end"_s)));
+            }
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QCOMPARE(p.exitCode(), 2);
+            QVERIFY2(err.contains(path) && err.contains(u"FIFO (named pipe), not a file: refused"_s), qPrintable(err));
+        }
+        for (const QString& path : {zeroCsv, zeroRun}) {
+            const Run r = bridgescope({u"report"_s, path}, 10000);
+            QCOMPARE(r.exit, 2);
+            QVERIFY2(r.err.contains(path) && r.err.contains(u"a device, not a file: refused"_s), qPrintable(r.err));
+        }
+    }
+
+    // Issue 41: rows sharing a first stamp made the key of each look for the next free one a step
+    // at a time (160,000 rows: 70 s in a Release build, far more here), deaf to SIGTERM. Every row
+    // here begins with the same stamp: it loads well within the minute this gives it.
+    void rowsSharingAFirstStampLoadFast()
+    {
+        QTemporaryDir dir;
+        QByteArray text = "/a,/b\r\n";
+        text.reserve(160'000 * 44);
+        for (int i = 0; i < 160'000; ++i)
+            text += "1700000000.000000000," + QByteArray::number(1700000001 + i) + ".000000000\r\n";
+        const QString csv = writeFile(dir, u"shared.csv"_s, text);
+        const Run r = bridgescope({u"report"_s, csv}, 60000);
+        QVERIFY2(r.exit == 0, qPrintable(u"exit %1 after %2 ms: %3"_s.arg(r.exit).arg(r.ms).arg(r.err.right(500))));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"samples"_s).toInt(), 160'000);
+        QVERIFY2(r.err.contains(u"159999 rows begin with the same stamp"_s), qPrintable(r.err));
+    }
+
+    // Issue 41: SIGTERM ends `report` while it reads and joins a CSV (the old code went on with
+    // the rows' keys for a minute, deaf to it): within two seconds, whatever it is doing.
+    void sigtermEndsACsvRead()
+    {
+        QTemporaryDir dir;
+        QByteArray text = "/a,/b\r\n";
+        for (int i = 0; i < 60'000; ++i)
+            text += "1700000000.000000000," + QByteArray::number(1700000001 + i) + ".000000000\r\n";
+        const QString csv = writeFile(dir, u"shared.csv"_s, text);
+        QProcess p;
+        p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, csv, u"--format"_s, u"md"_s});
+        QVERIFY(p.waitForStarted());
+        QVERIFY(waitUntilCaught(p, SIGTERM));
+        QTest::qWait(1000); // the old code was in the keys by now
+        QElapsedTimer clock;
+        clock.start();
+        ::kill(pid_t(p.processId()), SIGTERM);
+        const bool ended = p.waitForFinished(2000);
+        if (!ended) {
+            p.kill();
+            p.waitForFinished();
+        }
+        QVERIFY2(ended, "report did not end within 2 s of SIGTERM");
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(p.exitCode() == 130 || p.exitCode() == 0, qPrintable(QString::number(p.exitCode()))); // or done already
+        qInfo("ended %lld ms after SIGTERM with %d", clock.elapsed(), p.exitCode());
+    }
+
+    // Issue 41: with more retained topics than the topic tree keeps (64 MiB of names here),
+    // `discover` listed what it kept and said nothing of the rest. Its text and JSON say so now.
+    void discoverSaysWhenItKeptLessThanItSaw()
+    {
+        TestServers servers;
+        QVERIFY(servers.startMosquitto());
+        MqttLink link(MqttProfile::fromUrl(servers.brokerUrl()));
+        QString error;
+        QVERIFY2(link.connect(5000, &error), qPrintable(error));
+        // A topic of 30,000 characters costs the tree about 126 KB: 800 are past its 64 MiB (and
+        // within the 1,000 messages mosquitto queues for a client).
+        const QString tail(30000, u'x');
+        for (int i = 0; i < 800; ++i) {
+            const QString topic = u"many/%1/"_s.arg(i, 4, 10, QChar(u'0')) + tail;
+            MqttLink::Sent sent;
+            while ((sent = link.tryPublish(topic, "1", 1, 1, true)) == MqttLink::Sent::Full)
+                QTest::qWait(5);
+            QVERIFY(sent == MqttLink::Sent::Ok);
+        }
+        const QString last = u"many/0799/"_s + tail;
+        QTRY_VERIFY_WITH_TIMEOUT(bridgescope({u"discover"_s, u"--ros"_s, u"1"_s, u"--broker"_s, servers.brokerUrl(),
+                                              u"--seconds"_s, u"0.5"_s, u"--json"_s, u"--filter"_s, u"many/0799/#"_s})
+                                     .out.contains(last),
+                                 30000);
+        Run r = bridgescope({u"discover"_s, u"--ros"_s, u"1"_s, u"--broker"_s, servers.brokerUrl(), u"--seconds"_s,
+                             u"3"_s, u"--json"_s});
+        QCOMPARE(r.exit, 0);
+        const QJsonObject mqtt = QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"mqtt"_s).toObject();
+        const qsizetype listed = mqtt.value(u"topics"_s).toArray().size();
+        const qint64 untracked = mqtt.value(u"untracked_messages"_s).toInteger();
+        QVERIFY2(listed > 300 && listed < 800, qPrintable(QString::number(listed)));
+        QCOMPARE(mqtt.value(u"complete"_s).toBool(true), false);
+        QCOMPARE(listed + untracked, qint64(800)); // one retained message a topic
+        QCOMPARE(mqtt.value(u"topic_budget"_s).toInt(), 20000);
+        QCOMPARE(mqtt.value(u"names_budget_bytes"_s).toInteger(), qint64(64) << 20);
+        r = bridgescope({u"discover"_s, u"--ros"_s, u"1"_s, u"--broker"_s, servers.brokerUrl(), u"--seconds"_s, u"3"_s});
+        QCOMPARE(r.exit, 0);
+        QVERIFY2(r.out.contains(u"not complete: %1 messages on topics not kept (budget 20000 topics, 64 MiB of "
+                                "names); %2 topics listed"_s.arg(untracked).arg(listed)),
+                 qPrintable(r.out.right(600)));
+        // Within the budgets nothing is said, and the JSON says it is complete.
+        r = bridgescope({u"discover"_s, u"--ros"_s, u"1"_s, u"--broker"_s, servers.brokerUrl(), u"--seconds"_s,
+                         u"1"_s, u"--json"_s, u"--filter"_s, u"many/0001/#"_s});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(u"mqtt"_s)[u"complete"_s].toBool(), true);
     }
 
     // Regression (issue 11): a NUL byte cut a time cell silently; extreme stamps in a CSV gave

@@ -2,6 +2,8 @@
 // Recording runs against a real rosmaster: a run reopens with the figures that were shown live,
 // the headless recorder stops by itself, and a recorder killed with SIGKILL leaves a file that
 // opens and lacks at most the last second.
+#include "mqtt/mqttlink.h"
+#include "mqtt/mqttprofile.h"
 #include "record/runfile.h"
 #include "record/runrecorder.h"
 #include "report/report.h"
@@ -163,6 +165,41 @@ private slots:
         QVERIFY(again->waitForFinished(20000));
         QCOMPARE(again->exitCode(), 2);
         QVERIFY(QString::fromUtf8(again->readAllStandardError()).contains(u"exists already"_s));
+    }
+
+    // Issue 41: `record` counted malformed stamps and never said so (the window does): on stderr
+    // now, in the line of each second once there are any and at the end, the worst topics named.
+    void recordSaysItsMalformedStamps()
+    {
+        QFile pipe(m_dir.filePath(u"mqttpipe.yaml"_s));
+        QVERIFY(pipe.open(QIODevice::WriteOnly));
+        pipe.write("topics_in_order: [lab/garbled, lab/quiet]\n");
+        pipe.close();
+        auto rec = std::make_unique<QProcess>();
+        rec->start(QStringLiteral(BRIDGESCOPE_BINARY),
+                   {u"record"_s, u"--pipeline"_s, pipe.fileName(), u"--broker"_s, m_servers.brokerUrl(),
+                    u"--ros"_s, u"1"_s, u"--ros-master"_s, m_servers.rosMasterUri(), u"--seconds"_s, u"4"_s,
+                    u"--allow-empty"_s, u"-o"_s, m_dir.filePath(u"garbled.bsrun"_s)});
+        QVERIFY(rec->waitForStarted());
+        MqttLink link(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QString error;
+        QVERIFY2(link.connect(5000, &error), qPrintable(error));
+        int sent = 0;
+        while (rec->state() == QProcess::Running && sent < 25) {
+            QVERIFY(link.publish(u"lab/garbled"_s, "{\"sample\": \"s1\"}", 1, false)); // no time
+            ++sent;
+            QTest::qWait(100);
+        }
+        QVERIFY(rec->waitForFinished(20000));
+        const QString err = QString::fromUtf8(rec->readAllStandardError());
+        QCOMPARE(rec->exitCode(), 0);
+        static const QRegularExpression perSecond(u"^\\d+ s: .*; (\\d+) malformed stamps: \\1 on lab/garbled \\(last: "_s,
+                                                  QRegularExpression::MultilineOption);
+        QVERIFY2(perSecond.match(err).hasMatch(), qPrintable(err));
+        static const QRegularExpression atTheEnd(u"\n(\\d+) malformed stamps: \\1 on lab/garbled \\(last: lab/garbled: [^\n]+\\)\n?$"_s);
+        const QRegularExpressionMatch end = atTheEnd.match(err);
+        QVERIFY2(end.hasMatch(), qPrintable(err));
+        QVERIFY2(end.captured(1).toInt() >= 10, qPrintable(err));
     }
 
     // Regression (issue 11): with the master away, roscpp waited 2 s for it per subscription and

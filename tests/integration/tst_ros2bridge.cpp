@@ -417,6 +417,63 @@ private slots:
         QCOMPARE(toRos, qint64(0));
     }
 
+    // Issue 41: a 40 MB {"data": [0,0,...]} on a json mapping: QJsonDocument built its whole tree
+    // before the encoder's limits applied, and the bridge peaked at about 1.7 GB. Refused unread now
+    // (more than 1 MiB), counted and said; the bridge grows by little more than the payload's copies
+    // and a small JSON message on the same mapping still goes through.
+    void aHugeJsonPayloadIsRefusedUnread()
+    {
+        const QByteArray config = "/**:\n"
+                                  "  ros__parameters:\n"
+                                  "    broker: {host: localhost, port: 1883}\n"
+                                  "    bridge:\n"
+                                  "      mqtt2ros:\n"
+                                  "        mqtt_topics: [huge/json]\n"
+                                  "        huge/json: {ros_topic: /huge_back, json: true,"
+                                  " ros_type: geometry_msgs/msg/PoseStamped}\n";
+        auto b = bridge(config, {u"--name"_s, u"json_bridge"_s}, true);
+        Ros2Peer peer(m_domain, {u"--node"_s, u"/peer"_s, u"--sub"_s, u"/huge_back:geometry_msgs/msg/PoseStamped"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+        QVERIFY2(peer.waitFor(u"matched /huge_back 1"_s), qPrintable(peer.lines().join(u'\n')));
+        const QByteArray small = "{\"header\": {\"stamp\": {\"sec\": 5, \"nanosec\": 6}, \"frame_id\": \"map\"},"
+                                 " \"pose\": {\"position\": {\"x\": 7.5, \"y\": 1}, \"orientation\": {\"w\": 1}}}";
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 10000 && peer.lines().filter(u"recv /huge_back"_s).isEmpty()) {
+            m_mqtt->publish(u"huge/json"_s, small, 0, false);
+            QTest::qWait(100);
+        }
+        QVERIFY2(!peer.lines().filter(u"recv /huge_back"_s).isEmpty(),
+                 qPrintable(peer.lines().join(u'\n') + QString::fromUtf8(b->readAllStandardError())));
+        QByteArray huge = "{\"data\": [0";
+        huge.reserve(40'000'020);
+        while (huge.size() < 40'000'000)
+            huge += ",0";
+        huge += "]}";
+        QVERIFY(PeakRss::reset(b->processId()));
+        const qint64 base = PeakRss::of(b->processId());
+        QVERIFY(m_mqtt->publish(u"huge/json"_s, huge, 1, false));
+        // then a small one again: it still goes through, after the huge one was dealt with
+        const qsizetype before = peer.lines().filter(u"recv /huge_back"_s).size();
+        t.restart();
+        while (t.elapsed() < 20000 && peer.lines().filter(u"recv /huge_back"_s).size() <= before + 2) {
+            m_mqtt->publish(u"huge/json"_s, small, 0, false);
+            QTest::qWait(100);
+        }
+        QVERIFY2(peer.lines().filter(u"recv /huge_back"_s).size() > before + 2, qPrintable(peer.lines().join(u'\n')));
+        const qint64 grew = PeakRss::of(b->processId()) - base;
+        b->terminate();
+        QVERIFY(b->waitForFinished(10000));
+        const QString log = QString::fromUtf8(b->readAllStandardError());
+        qInfo("a JSON payload of 40 MB: the bridge grew by %.1f MiB", double(grew) / (1 << 20));
+        QVERIFY2(log.contains(u"MQTT huge/json: a payload of 40000003 bytes, more than the 1 MiB a json mapping "
+                              "converts: refused unread"_s),
+                 qPrintable(log.right(2000)));
+        QVERIFY2(log.contains(u"1 of the failed were json payloads over 1 MiB, refused unread"_s), qPrintable(log.right(2000)));
+        // the payload itself passes through Paho and the event buffer (a few copies); its tree was 1.7 GB
+        QVERIFY2(grew < (qint64(240) << 20) + PeakRss::kSanitizerSlack, qPrintable(u"grew %1 MiB"_s.arg(grew >> 20)));
+    }
+
     // Issue 41: what a client of the broker announces must not keep the ROS 2 side down. A retained
     // announcement of a 70,000-character type crashed Cyclone in dds_create_writer, and the parent
     // asked every new child for the same writer: every mapping down for good. A client flipping

@@ -9,6 +9,7 @@
 #include "report/runloader.h"
 #include "ros/rosstampsource.h"
 #include "stampbag.h"
+#include "peakrss.h"
 #include "syntheticrun.h"
 #include "wire/bagheader.h"
 #include "wire/stampcodec.h"
@@ -362,6 +363,101 @@ private slots:
         QVERIFY2(report, qPrintable(error));
         QCOMPARE(report->runs().front()->engine->samples(), 10);
         QCOMPARE(report->runs().front()->engine->counters().duplicates, 0u);
+
+        // Each row takes the first free key from its first stamp on (issue 41 made it a lookup
+        // instead of a walk; the keys are the same)
+        qint64 shared = 0;
+        const RunData keyed = RunData::fromSamples(Pipeline(QStringList {u"/a"_s}, 0), {{5}, {5}, {6}, {5}, {100}, {6}, {99}}, &shared);
+        QList<qint64> keys;
+        for (const RecordedStamp& st : keyed.stamps)
+            keys << st.sampleNs;
+        QCOMPARE(keys, (QList<qint64> {5, 6, 7, 8, 100, 9, 99}));
+        QCOMPARE(shared, 4);
+    }
+
+    // Issue 41: SuiteCsv::read read the whole file and made it text before parsing it (a 400 MB
+    // CSV took 1.3-1.9 GB), with no budget. It streams now, with a run file's budgets: a row of
+    // 16 MiB at most, 10 M cells, 300 s. Memory is what the samples take, never the text.
+    void csvReadsStayWithinTheirBudgets()
+    {
+        QTemporaryDir dir;
+        // 32 MiB of ordinary rows, 8 columns: read, holding the samples but never the text
+        const QString big = dir.filePath(u"big.csv"_s);
+        qint64 rows = 0;
+        {
+            QFile f(big);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("/a,/b,/c,/d,/e,/f,/g,/h\r\n");
+            while (f.size() < (qint64(32) << 20)) {
+                QByteArray chunk;
+                for (int i = 0; i < 1000; ++i, ++rows) {
+                    std::vector<qint64> row(8);
+                    for (int c = 0; c < 8; ++c)
+                        row[std::size_t(c)] = 1'700'000'000'000'000'000LL + rows * 1'000'000 + c;
+                    chunk += SuiteCsv::row(row);
+                }
+                f.write(chunk);
+            }
+        }
+        QVERIFY(PeakRss::reset());
+        qint64 base = PeakRss::of();
+        QString error;
+        std::optional<SuiteCsv::Data> data = SuiteCsv::read(big, &error);
+        qint64 grew = PeakRss::of() - base;
+        QVERIFY2(data, qPrintable(error));
+        QCOMPARE(qint64(data->samples.size()), rows);
+        data.reset();
+        qInfo("%lld rows of 8 columns (32 MiB): peak RSS grew %.1f MiB", rows, double(grew) / (1 << 20));
+        // the samples (~28 MiB here) and a chunk; the old reader held the text twice more (+96 MiB)
+        QVERIFY2(grew < (qint64(56) << 20) + PeakRss::kSanitizerSlack,
+                 qPrintable(u"grew %1 MiB"_s.arg(grew >> 20)));
+
+        // one row of 48 MiB (no line break): refused at 16 MiB, never held whole
+        const QString line = dir.filePath(u"line.csv"_s);
+        {
+            QFile f(line);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("/a,/b\r\n");
+            const QByteArray chunk(1 << 20, '1');
+            for (int i = 0; i < 48; ++i)
+                f.write(chunk);
+        }
+        QVERIFY(PeakRss::reset());
+        base = PeakRss::of();
+        QVERIFY(!SuiteCsv::read(line, &error));
+        grew = PeakRss::of() - base;
+        QVERIFY2(error.contains(line + u":2: refused: a row of more than 16 MiB"_s), qPrintable(error));
+        QVERIFY2(grew < (qint64(40) << 20) + PeakRss::kSanitizerSlack, qPrintable(u"grew %1 MiB"_s.arg(grew >> 20)));
+
+        // past the cells' budget: refused with the reason, not cut short silently
+        SuiteCsv::Limits limits;
+        limits.maxCells = 1000;
+        QVERIFY(!SuiteCsv::read(big, &error, {}, limits));
+        QVERIFY2(error.contains(u"refused: it has more than 1000 cells"_s), qPrintable(error));
+        limits = {};
+        limits.maxSeconds = 0;
+        QVERIFY(!SuiteCsv::read(big, &error, {}, limits));
+        QVERIFY2(error.contains(u"refused: reading it takes more than 0 s"_s), qPrintable(error));
+    }
+
+    // Issue 41: any slicing of the bytes reads as one piece does (the reader takes 1 MiB at a time;
+    // a quote, a CR LF or a BOM may be cut between two).
+    void csvReadsTheSameInAnySlices()
+    {
+        const QByteArray text = "\xEF\xBB\xBF\r\n\n\"/a\",\"/b\"\"x\"\r\n1.5,\"2.0\"\r\n\r\n3,4\n\"5\r\n\",6\r7,8\r\n"
+                                "9,\"1\"\"0\"\r\n,\r\n1,2,3\r\n\"1";
+        QString error;
+        const std::optional<SuiteCsv::Data> whole = SuiteCsv::parse(text, u"s.csv"_s, &error);
+        QVERIFY2(whole, qPrintable(error));
+        QCOMPARE(whole->topics, (QStringList {u"/a"_s, u"/b\"x"_s}));
+        for (qsizetype n = 1; n <= 7; ++n) {
+            const std::optional<SuiteCsv::Data> sliced = SuiteCsv::parseInSlices(text, u"s.csv"_s, {n, 1}, &error);
+            QVERIFY2(sliced, qPrintable(error));
+            QCOMPARE(sliced->topics, whole->topics);
+            QCOMPARE(sliced->samples, whole->samples);
+            QCOMPARE(sliced->problems, whole->problems);
+            QCOMPARE(sliced->incomplete, whole->incomplete);
+        }
     }
 
     // Regression (issue 11, crash 3): rosbag's library crashed (SIGSEGV) on 12 of 300 randomly

@@ -3,6 +3,8 @@
 #include "widgets/experiment/experimentpage.h"
 
 #include "base/atomicfile.h"
+#include "base/regularfile.h"
+#include "base/yamllimits.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -122,10 +124,10 @@ void ExperimentPage::loadExample(int index)
     m_examples->setCurrentIndex(0);
     if (path.isEmpty())
         return;
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
+    const std::optional<QByteArray> text = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
+    if (!text)
         return;
-    setPlanText(QString::fromUtf8(f.readAll()));
+    setPlanText(QString::fromUtf8(*text));
     m_planPath.clear(); // an example is saved into the folder when it runs
     m_planEdited = true;
     const QString name = QFileInfo(path).completeBaseName();

@@ -564,19 +564,12 @@ void MeasurePage::updateCounts()
     }
     if (const quint64 bad = m_measure->malformedStamps()) {
         // The worst topics by name: a lab needs to know which device sends garbage.
-        const QHash<QString, quint64> byTopic = m_measure->malformedStampsByTopic();
-        std::vector<std::pair<quint64, QString>> worst;
-        worst.reserve(std::size_t(byTopic.size()));
-        for (auto it = byTopic.cbegin(); it != byTopic.cend(); ++it)
-            worst.emplace_back(it.value(), it.key());
-        const std::size_t shown = std::min<std::size_t>(worst.size(), 3);
-        std::partial_sort(worst.begin(), worst.begin() + qsizetype(shown), worst.end(),
-                          [](const auto& a, const auto& b) { return a.first > b.first; });
+        const auto [worst, topics] = m_measure->worstMalformedTopics(3);
         QStringList names;
-        for (std::size_t i = 0; i < shown; ++i)
-            names << tr("%1 on %2").arg(worst[i].first).arg(worst[i].second);
-        if (worst.size() > shown)
-            names << tr("%n more topic(s)", nullptr, int(worst.size() - shown));
+        for (const auto& [count, topic] : worst)
+            names << tr("%1 on %2").arg(count).arg(topic);
+        if (topics > qsizetype(worst.size()))
+            names << tr("%n more topic(s)", nullptr, int(topics - qsizetype(worst.size())));
         text += tr(" · %1 malformed: %2 (last: %3)")
                     .arg(bad)
                     .arg(names.join(u", "), m_measure->lastStampError());
