@@ -106,6 +106,7 @@ QString unknownArgument(const QString& first, const QStringList& commands)
 
 int main(int argc, char** argv)
 {
+    CliOutput::hideCredentials(argc, argv); // a URL's password: not for ps, whatever runs
     // Time zone read once, before any thread: log lines from roscpp and Paho threads format local
     // times, and glibc's first tzset() on two threads at once races (seen by TSan).
     ::tzset();
@@ -134,7 +135,6 @@ int main(int argc, char** argv)
         QCoreApplication app(argc, argv);
         installTranslations(app);
         const QStringList args = app.arguments().mid(1);
-        CliOutput::hideCredentials(argc, argv); // a --broker URL's password: not for ps
         if (help) {
             CliOutput::out(bridgescopeUsage());
             return ExitOk;

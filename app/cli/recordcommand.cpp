@@ -215,10 +215,9 @@ int runRecord(const RecordRequest& request)
     const qint64 stamps = measure.recorder()->committedStamps();
     out(Record::tr("%1: %2 complete samples, %3 stamps").arg(request.runPath).arg(complete).arg(stamps));
     if (stamps == 0 && !request.allowEmpty) {
+        const QString nothing = sources.nothingHeard(request.ros1, request.ros2.has_value());
         err(Record::tr("nothing was recorded (%1); --allow-empty accepts an empty run")
-                .arg(!sources.brokerEverReached() && !sources.masterEverReached()
-                         ? Record::tr("neither the broker nor the master was reached")
-                         : Record::tr("no stamp of the pipeline's topics arrived")));
+                .arg(nothing.isEmpty() ? Record::tr("no stamp of the pipeline's topics arrived") : nothing));
         return ExitFailed;
     }
     return ExitOk;
