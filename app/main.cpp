@@ -115,6 +115,7 @@ QString unknownArgument(const QString& first, const QStringList& commands)
 
 int main(int argc, char** argv)
 {
+    CliOutput::hideCredentials(argc, argv); // a URL's password: not for ps, whatever runs
     // Time zone read once, before any thread: log lines from roscpp and Paho threads format local
     // times, and glibc's first tzset() on two threads at once races (seen by TSan).
     ::tzset();
@@ -144,7 +145,6 @@ int main(int argc, char** argv)
         QCoreApplication app(argc, argv);
         installTranslations(app);
         const QStringList args = app.arguments().mid(1);
-        CliOutput::hideCredentials(argc, argv); // a --broker URL's password: not for ps
         if (help) {
             CliOutput::out(bridgescopeUsage());
             return ExitOk;

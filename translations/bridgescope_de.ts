@@ -2025,6 +2025,10 @@ Rückgabewert: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsch
         <source>    fails: %1</source>
         <translation>    scheitert: %1</translation>
     </message>
+    <message>
+        <source>--ros-master: the plan runs on ROS 2 (ros: 2), which has no master</source>
+        <translation>--ros-master: der Plan läuft auf ROS 2 (ros: 2), das keinen Master hat</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentPage</name>
@@ -5991,10 +5995,6 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <translation>nichts wurde aufgezeichnet (%1); --allow-empty lässt einen leeren Lauf zu</translation>
     </message>
     <message>
-        <source>neither the broker nor the master was reached</source>
-        <translation>weder Broker noch Master waren erreichbar</translation>
-    </message>
-    <message>
         <source>no stamp of the pipeline&apos;s topics arrived</source>
         <translation>kein Zeitstempel der Pipeline-Topics kam an</translation>
     </message>
@@ -7114,6 +7114,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>the ROS master refused %1: %2</source>
         <translation>der ROS-Master lehnte %1 ab: %2</translation>
     </message>
+    <message>
+        <source>the ROS master at %1 sent more than %2 MiB</source>
+        <translation>der ROS-Master unter %1 hat mehr als %2 MiB gesendet</translation>
+    </message>
 </context>
 <context>
     <name>RosMessageDecoder</name>
@@ -7859,6 +7863,22 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source>%1; still waiting</source>
         <translation>%1; wartet weiter</translation>
     </message>
+    <message>
+        <source>neither the broker nor the master was reached, and nobody was heard on ROS 2 domain %1</source>
+        <translation>weder Broker noch Master waren erreichbar, und in der ROS-2-Domäne %1 war niemand zu hören</translation>
+    </message>
+    <message>
+        <source>the broker was not reached and nobody was heard on ROS 2 domain %1</source>
+        <translation>der Broker war nicht erreichbar, und in der ROS-2-Domäne %1 war niemand zu hören</translation>
+    </message>
+    <message>
+        <source>neither the broker nor the master was reached</source>
+        <translation>weder Broker noch Master waren erreichbar</translation>
+    </message>
+    <message>
+        <source>the broker was not reached</source>
+        <translation>der Broker war nicht erreichbar</translation>
+    </message>
 </context>
 <context>
     <name>SourceMessage</name>
@@ -8243,24 +8263,8 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
     </message>
     <message>
-        <source>Exit 0 even when neither the broker nor the master was ever reached.</source>
-        <translation>Status 0 auch dann, wenn weder Broker noch Master je erreichbar waren.</translation>
-    </message>
-    <message>
-        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state; and, from their MQTT end, the links mqtt_client announces on the broker that no config maps. Every change of a link&apos;s state is an event, printed as a JSON line.
-A broker or master that cannot be reached is said within 5 s; it keeps trying.
-Exit status: 0 stopped, 1 neither broker nor master was reached (without --allow-empty), the metrics port could not be served or the run file not written, 2 bad options.</source>
-        <translation>Beobachtet jede Abbildung der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, eine verstummte Quelle, Latenz gestempelter Nachrichten und den Zustand der Bridges; dazu, von ihrem MQTT-Ende aus, die Verbindungen, die mqtt_client am Broker ankündigt und keine Konfiguration abbildet. Jede Zustandsänderung einer Verbindung ist ein Ereignis und wird als JSON-Zeile ausgegeben.
-Ein nicht erreichbarer Broker oder Master wird innerhalb von 5 s gemeldet; es wird weiter versucht.
-Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allow-empty), der Metrik-Port konnte nicht bedient oder die Messlauf-Datei nicht geschrieben werden, 2 falsche Optionen.</translation>
-    </message>
-    <message>
         <source>MQTT message</source>
         <translation>MQTT-Nachricht</translation>
-    </message>
-    <message>
-        <source>nothing was watched: neither the broker nor the master was reached; --allow-empty accepts that</source>
-        <translation>nichts wurde beobachtet: weder Broker noch Master waren erreichbar; --allow-empty lässt das zu</translation>
     </message>
     <message>
         <source>; %1 payloads evicted from the topic history (budget %2 MiB)</source>
@@ -8289,6 +8293,22 @@ Exit-Status: 0 beendet, 1 weder Broker noch Master waren erreichbar (ohne --allo
     <message>
         <source>, %1 unknown (the watch&apos;s own connection is down)</source>
         <translation>, %1 unbekannt (die eigene Verbindung der Beobachtung ist unterbrochen)</translation>
+    </message>
+    <message>
+        <source>Exit 0 even when nothing was heard (neither the broker nor the master reached, nobody on the ROS 2 domain).</source>
+        <translation>Status 0 auch dann, wenn nichts zu hören war (weder Broker noch Master erreichbar, niemand in der ROS-2-Domäne).</translation>
+    </message>
+    <message>
+        <source>nothing was watched: %1; --allow-empty accepts that</source>
+        <translation>nichts wurde beobachtet: %1; --allow-empty lässt das zu</translation>
+    </message>
+    <message>
+        <source>Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the bridges&apos; state; and, from their MQTT end, the links mqtt_client announces on the broker that no config maps. Every change of a link&apos;s state is an event, printed as a JSON line.
+A broker or master that cannot be reached is said within 5 s; it keeps trying.
+Exit status: 0 stopped, 1 nothing heard: no broker, no master, nobody on ROS 2 (without --allow-empty), the metrics port was not served or the run file not written, 2 bad options.</source>
+        <translation>Beobachtet jede Abbildung der Konfigurationen als Verbindung, bis Strg+C: Rate an beiden Enden, verlorene Nachrichten, Lücken in Header.seq, Stillstände, eine verstummte Quelle, Latenz gestempelter Nachrichten und den Zustand der Bridges; dazu, von ihrem MQTT-Ende aus, die Verbindungen, die mqtt_client am Broker ankündigt und keine Konfiguration abbildet. Jede Zustandsänderung einer Verbindung ist ein Ereignis und wird als JSON-Zeile ausgegeben.
+Ein nicht erreichbarer Broker oder Master wird innerhalb von 5 s gemeldet; es wird weiter versucht.
+Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand auf ROS 2 (ohne --allow-empty), der Metrik-Port wurde nicht bedient oder die Messlauf-Datei nicht geschrieben, 2 falsche Optionen.</translation>
     </message>
 </context>
 <context>

@@ -127,17 +127,17 @@ int runUntil(const std::function<std::optional<int>(qint64 elapsedMs)>& check,
 void hideCredentials(int argc, char** argv)
 {
     for (int i = 1; i < argc; ++i) {
-        const QString arg = QString::fromLocal8Bit(argv[i]);
-        const QString clean = Secrets::urlWithoutCredentials(arg);
-        if (clean == arg)
+        char* arg = argv[i];
+        const char* scheme = std::strstr(arg, "://");
+        const char* at = std::strrchr(arg, '@');
+        if (!scheme || !at || at <= scheme + 3)
             continue;
-        // The user info and its '@' are the bytes the clean form lacks, right after "://".
-        const std::size_t length = std::strlen(argv[i]);
-        const qsizetype start = QByteArray(argv[i]).indexOf("://") + 3;
-        const std::size_t hidden = length - std::size_t(clean.toLocal8Bit().size());
-        if (start < 3 || hidden < 1 || std::size_t(start) + hidden > length)
-            continue;
-        std::memset(argv[i] + start, '*', hidden - 1);
+        // The copy is what every later reader of argv gets; it lives as long as the process.
+        char* typed = ::strdup(arg);
+        if (!typed)
+            continue; // no memory: the argument stays readable to the command, and to ps
+        std::memset(arg + (scheme + 3 - arg), '*', std::size_t(at - scheme - 3));
+        argv[i] = typed;
     }
 }
 

@@ -52,10 +52,13 @@ void whenStopRequested(QObject* context, std::function<void()> onStop);
 /// status the loop ended with (also from a QCoreApplication::exit() elsewhere).
 int runUntil(const std::function<std::optional<int>(qint64 elapsedMs)>& check,
              const std::function<void(qint64 elapsedMs)>& everySecond = {});
-/// Overwrites, in this process's own argv (what /proc/PID/cmdline and ps show every user), the user
-/// info of every argument that is a URL with credentials (`tcp://alice:pw@host` shows as
-/// `tcp://********@host`). Call after the arguments were copied: a typed password is then visible
-/// only for the moment between the start and this call.
+/// Hides the credentials of every URL on the command line from ps, for every entry point (the
+/// window, the demo, every command) and every form (`--broker URL`, `--broker=URL`, any bytes in
+/// the password, percent-encoded or not): in each argument that holds "://" and a later '@',
+/// everything between the first "://" and the last '@' is overwritten with '*' in the bytes the
+/// kernel shows as this process's command line (/proc/PID/cmdline: `tcp://********@host`), after
+/// `argv[i]` was pointed at a copy of the argument as typed, which Qt and the commands read. Call
+/// first thing in main(): a typed password is then visible only from exec until this call.
 void hideCredentials(int argc, char** argv);
 /// The longest duration an option takes: a year. Longer ones are mistakes, and far longer ones
 /// (1e300) have no milliseconds that fit a qint64.

@@ -42,14 +42,19 @@ struct ExperimentRequest
 };
 
 /// --broker and --ros-master instead of the plan's servers (a plan holds no credentials: it is
-/// copied next to its runs; the command line may, and main() hides them from ps).
+/// copied next to its runs; the command line may, and main() hides them from ps). A ROS 2 plan
+/// has no master: --broker alone, and --ros-master is refused.
 bool overrideServers(const QString& broker, const QString& master, ExperimentPlan* plan)
 {
     if (broker.isEmpty() && master.isEmpty())
         return true;
+    if (plan->ros == 2 && !master.isEmpty()) {
+        err(Experiment::tr("--ros-master: the plan runs on ROS 2 (ros: 2), which has no master"));
+        return false;
+    }
     const QString brokerUrl = broker.isEmpty() ? plan->brokerUrl : broker;
     const QString masterUri = master.isEmpty() ? plan->rosMasterUri : master;
-    if (brokerUrl.isEmpty() || masterUri.isEmpty()) {
+    if (brokerUrl.isEmpty() || (masterUri.isEmpty() && plan->ros != 2)) {
         err(Experiment::tr("--broker and --ros-master go together, unless the plan's servers give the other"));
         return false;
     }

@@ -244,10 +244,9 @@ int runRecord(const RecordRequest& request)
     if (const QString bad = malformedLine(measure); !bad.isEmpty())
         err(bad); // not recorded: the run holds only the stamps that read
     if (stamps == 0 && !request.allowEmpty) {
+        const QString nothing = sources.nothingHeard(request.ros1, request.ros2.has_value());
         err(Record::tr("nothing was recorded (%1); --allow-empty accepts an empty run")
-                .arg(!sources.brokerEverReached() && !sources.masterEverReached()
-                         ? Record::tr("neither the broker nor the master was reached")
-                         : Record::tr("no stamp of the pipeline's topics arrived")));
+                .arg(nothing.isEmpty() ? Record::tr("no stamp of the pipeline's topics arrived") : nothing));
         return ExitFailed;
     }
     return ExitOk;

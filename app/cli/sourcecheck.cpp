@@ -25,6 +25,7 @@ void SourceCheck::check(qint64 elapsedMs)
     const bool masterUp = m_live.rosGraph()->isReachable();
     m_brokerEver = m_brokerEver || brokerUp;
     m_masterEver = m_masterEver || masterUp;
+    m_ros2Ever = m_ros2Ever || m_live.ros2()->graph().participants > 0;
     const bool late = elapsedMs >= kGraceMs;
     const QString broker = Secrets::urlWithoutCredentials(mqtt->profile().url);
     if (brokerUp && m_brokerSaid) {
@@ -55,4 +56,17 @@ void SourceCheck::check(qint64 elapsedMs)
         err(tr("%1; still waiting").arg(waiting.text(m_since.addMSecs(elapsedMs))));
         m_silenceSaid = true;
     }
+}
+
+QString SourceCheck::nothingHeard(bool ros1, bool ros2) const
+{
+    if (m_brokerEver || (ros1 && m_masterEver) || (ros2 && m_ros2Ever))
+        return {};
+    const QString domain = ros2 ? QString::number(m_live.ros2()->options().domain) : QString();
+    if (ros1 && ros2)
+        return tr("neither the broker nor the master was reached, and nobody was heard on ROS 2 domain %1")
+            .arg(domain);
+    if (ros2)
+        return tr("the broker was not reached and nobody was heard on ROS 2 domain %1").arg(domain);
+    return ros1 ? tr("neither the broker nor the master was reached") : tr("the broker was not reached");
 }

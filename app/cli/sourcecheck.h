@@ -31,6 +31,13 @@ public:
 
     bool brokerEverReached() const { return m_brokerEver; }
     bool masterEverReached() const { return m_masterEver; }
+    /// Whether another participant was ever seen on the ROS 2 domain joined (false without one).
+    bool ros2EverHeard() const { return m_ros2Ever; }
+    /// Empty when a graph the command listens to was heard (the broker or, with `ros1`, the
+    /// master reached; on ROS 2 another participant seen); else what was waited for in vain:
+    /// "neither the broker nor the master was reached", on ROS 2 "the broker was not reached and
+    /// nobody was heard on ROS 2 domain 7".
+    QString nothingHeard(bool ros1, bool ros2) const;
 
 private:
     const LiveSession& m_live;
@@ -44,4 +51,5 @@ private:
     bool m_silenceSaid = false;
     bool m_brokerEver = false;
     bool m_masterEver = false;
+    bool m_ros2Ever = false;
 };

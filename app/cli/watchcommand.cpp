@@ -135,7 +135,9 @@ struct WatchOptions
             "PREFIX/in to PREFIX/out, and -o records the samples as well."),
         u"PIPELINE.yaml"_s};
     const QCommandLineOption allowEmpty {
-        u"allow-empty"_s, Watch::tr("Exit 0 even when neither the broker nor the master was ever reached.")};
+        u"allow-empty"_s,
+        Watch::tr("Exit 0 even when nothing was heard (neither the broker nor the master "
+                  "reached, nobody on the ROS 2 domain).")};
 
     void addTo(QCommandLineParser& parser) const
     {
@@ -216,8 +218,8 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
             "bridges' state; and, from their MQTT end, the links mqtt_client announces on the broker "
             "that no config maps. Every change of a link's state is an event, printed as a JSON line.\n"
             "A broker or master that cannot be reached is said within 5 s; it keeps trying.\n"
-            "Exit status: 0 stopped, 1 neither broker nor master was reached (without --allow-empty), the "
-            "metrics port could not be served or the run file not written, 2 bad options."));
+            "Exit status: 0 stopped, 1 nothing heard: no broker, no master, nobody on ROS 2 (without "
+            "--allow-empty), the metrics port was not served or the run file not written, 2 bad options."));
     if (parsed >= 0)
         return parsed;
     request->discover = !parser.isSet(o.noDiscover);
@@ -504,11 +506,10 @@ int runWatch(const WatchRequest& request)
         err(Watch::tr("events recorded in %1").arg(request.runPath));
     }
     sources.check(0); // how the sources are now, said or not
-    // A watch of ROS 2 alone has its graph from DDS, which is never "unreachable".
-    if (status == ExitOk && !request.allowEmpty && !sources.brokerEverReached() && request.ros1
-        && !sources.masterEverReached()) {
-        err(Watch::tr("nothing was watched: neither the broker nor the master was reached; --allow-empty "
-                      "accepts that"));
+    // Heard nothing on any graph (ROS 2: nobody else on the domain): a failure, ROS 2 as ROS 1.
+    if (const QString nothing = sources.nothingHeard(request.ros1, request.ros2.has_value());
+        status == ExitOk && !request.allowEmpty && !nothing.isEmpty()) {
+        err(Watch::tr("nothing was watched: %1; --allow-empty accepts that").arg(nothing));
         return ExitFailed;
     }
     return recordFailed ? ExitFailed : status;

@@ -144,7 +144,8 @@ bool RosEndpoint::start(const QString& name, const QString& masterUri,
     try {
         ros::init(remappings, name.toStdString(), ros::init_options::NoSigintHandler);
         ros::master::setRetryTimeout(ros::WallDuration(1.0));
-        while (!ros::master::check()) {
+        // Not ros::master::check(): it waits without end for a master that does not answer.
+        while (!RosReregistration::masterAnswers()) {
             if (!keepWaiting || !keepWaiting()) {
                 if (error)
                     *error = tr("no ROS master answers at %1")

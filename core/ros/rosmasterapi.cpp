@@ -181,7 +181,21 @@ std::optional<QVariant> RosMasterApi::decodeResponse(const QByteArray& body, QSt
 std::optional<QVariant> RosMasterApi::call(const QString& method, const QVariantList& params, int timeoutMs,
                                            QString* error) const
 {
-    auto fail = [error](const QString& why) -> std::optional<QVariant> {
+    const std::optional<QVariantList> triple = answer(method, params, timeoutMs, error);
+    if (!triple)
+        return std::nullopt;
+    if ((*triple)[0].toInt() != 1) {
+        if (error)
+            *error = tr("the ROS master refused %1: %2").arg(method, (*triple)[1].toString());
+        return std::nullopt;
+    }
+    return (*triple)[2];
+}
+
+std::optional<QVariantList> RosMasterApi::answer(const QString& method, const QVariantList& params,
+                                                 int timeoutMs, QString* error) const
+{
+    auto fail = [error](const QString& why) -> std::optional<QVariantList> {
         if (error)
             *error = why;
         return std::nullopt;
@@ -191,6 +205,7 @@ std::optional<QVariant> RosMasterApi::call(const QString& method, const QVariant
         return fail(tr("'%1' is not a ROS master URI (http://host:11311)").arg(m_uri));
     const QDeadlineTimer deadline(timeoutMs);
     QTcpSocket socket;
+    socket.setReadBufferSize(1 << 20); // what the socket takes from the kernel before we read it
     socket.connectToHost(url.host(), quint16(url.port(11311)));
     if (!socket.waitForConnected(int(deadline.remainingTime())))
         return fail(tr("no ROS master at %1: %2").arg(m_uri, socket.errorString()));
@@ -223,7 +238,10 @@ std::optional<QVariant> RosMasterApi::call(const QString& method, const QVariant
         if (!socket.waitForReadyRead(int(std::max<qint64>(1, deadline.remainingTime())))
             && socket.state() == QAbstractSocket::ConnectedState && deadline.hasExpired())
             return fail(tr("the ROS master at %1 did not answer within %2 ms").arg(m_uri).arg(timeoutMs));
-        response += socket.readAll();
+        response += socket.read(kMaxAnswerBytes + 1 - response.size());
+        if (response.size() > kMaxAnswerBytes)
+            return fail(
+                tr("the ROS master at %1 sent more than %2 MiB").arg(m_uri).arg(kMaxAnswerBytes >> 20));
     }
     if (headerEnd < 0 || !response.startsWith("HTTP/1."))
         return fail(tr("the ROS master at %1 sent no HTTP response").arg(m_uri));
@@ -237,9 +255,7 @@ std::optional<QVariant> RosMasterApi::call(const QString& method, const QVariant
     const QVariantList triple = value->toList();
     if (triple.size() != 3)
         return fail(tr("the ROS master's answer to %1 is not [code, status, value]").arg(method));
-    if (triple[0].toInt() != 1)
-        return fail(tr("the ROS master refused %1: %2").arg(method, triple[1].toString()));
-    return triple[2];
+    return triple;
 }
 
 std::optional<RosGraph> RosMasterApi::graph(int timeoutMs, QString* error) const

@@ -47,6 +47,13 @@ public:
     /// Calls `method` and returns the master's value (the third element of [code, status, value]).
     std::optional<QVariant> call(const QString& method, const QVariantList& params, int timeoutMs,
                                  QString* error = nullptr) const;
+    /// Calls `method` and returns the whole answer [code, status, value], a refusal (code != 1)
+    /// included; nullopt when no answer came within `timeoutMs` or it was not one.
+    std::optional<QVariantList> answer(const QString& method, const QVariantList& params, int timeoutMs,
+                                       QString* error = nullptr) const;
+    /// The most an answer may hold: a bigger one (a hostile server that never stops sending) is
+    /// an error, not memory. A master's getSystemState of 100,000 topics is about 20 MiB.
+    static constexpr qsizetype kMaxAnswerBytes = 256 * 1024 * 1024;
     std::optional<RosGraph> graph(int timeoutMs, QString* error = nullptr) const;
     std::optional<qint64> pid(int timeoutMs, QString* error = nullptr) const;
 

@@ -121,9 +121,9 @@ RosMonitor::RosMonitor(QObject* parent)
 RosMonitor::~RosMonitor()
 {
     d->rosNode->removeHook(d->hook);
-    Private* p = d.get();
-    // Subscribers die on the worker, before this object and its figures do.
-    d->rosNode->postAndWait([p] { p->subscribers.clear(); });
+    // Subscribers die on the worker, before this object and its figures do (or, when the worker
+    // is blocked in roscpp past RosNode::kWaitMs, whenever it is free: the job keeps them).
+    d->rosNode->postAndWait([keep = d] { keep->subscribers.clear(); });
 }
 
 void RosMonitor::setMasterUri(const QString& uri)

@@ -5,16 +5,40 @@
 #include "base/secrets.h"
 #include "ros/rosreregistration.h"
 
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <mutex>
 #include <QObject>
+#include <QSemaphore>
 #include <QThread>
 #include <QTimer>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <unistd.h>
 #include <vector>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+/// A worker was left blocked in roscpp: from now on the process ends through _exit(), with the
+/// status exit() was given, after stdio is flushed. roscpp's singletons (constructed before this
+/// handler was registered, so destroyed after it) would otherwise wait at exit for the locks and
+/// the master the blocked thread holds, and a window or command would never end.
+void leftBehind()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        ::on_exit(
+            [](int status, void*) {
+                std::fflush(nullptr);
+                ::_exit(status);
+            },
+            nullptr);
+    });
+}
+} // namespace
 
 namespace ros::master {
 // Exported by libroscpp but not declared in its headers: points master calls at another URI.
@@ -32,6 +56,7 @@ struct RosNode::Private
     QTimer* masterWatch = nullptr; ///< on the worker: registers again with a restarted master
     std::vector<Job> pending; ///< on the worker: jobs waiting for the master to answer
     QTimer* pendingRetry = nullptr; ///< on the worker: asks the master again once a second
+    std::atomic<bool> stuck {false}; ///< a wait for the worker timed out: no wait waits again
     std::mutex hookMutex;
     std::map<int, std::function<void()>> hooks;
     int nextHook = 1;
@@ -144,13 +169,22 @@ RosNode::RosNode()
 RosNode::~RosNode()
 {
     Private* p = d.get();
-    postAndWait([p] {
+    const bool onWorker = QThread::currentThread() == &d->thread;
+    const bool done = postAndWait([p] {
         p->pending.clear();
         if (p->spinner)
             p->spinner->stop();
         p->spinner.reset();
         p->node.reset();
     });
+    if (!done || onWorker) {
+        // Blocked in roscpp (or the last user let go on the worker itself, after it was left
+        // behind): the thread and what it uses stay; the process ends without waiting for it.
+        p->thread.quit();
+        (void)d.release();
+        leftBehind();
+        return;
+    }
     d->thread.quit();
     d->thread.wait();
 }
@@ -177,13 +211,27 @@ void RosNode::post(Job job)
     QMetaObject::invokeMethod(p->worker, [p, job = std::move(job)]() mutable { p->run(std::move(job)); });
 }
 
-void RosNode::postAndWait(const std::function<void()>& job)
+bool RosNode::postAndWait(std::function<void()> job)
 {
     if (QThread::currentThread() == &d->thread) {
         job();
-        return;
+        return true;
     }
-    QMetaObject::invokeMethod(d->worker, job, Qt::BlockingQueuedConnection);
+    auto done = std::make_shared<QSemaphore>();
+    QMetaObject::invokeMethod(d->worker, [done, job = std::move(job)]() mutable {
+        job();
+        job = nullptr; // what it holds goes here, before the waiter goes on
+        done->release();
+    });
+    if (d->stuck || !done->tryAcquire(1, kWaitMs)) {
+        if (!d->stuck)
+            qCWarning(lcRos) << "the ROS node's thread has not come back for" << kWaitMs
+                             << "ms (a ROS master that does not answer?); it is left behind";
+        d->stuck = true;
+        leftBehind();
+        return false;
+    }
+    return true;
 }
 
 int RosNode::addMasterChangedHook(std::function<void()> hook)

@@ -2,69 +2,63 @@
 #include "rosreregistration.h"
 
 #include "base/logging.h"
+#include "ros/rosmasterapi.h"
 
 #include <ros/master.h>
-#include <ros/network.h>
 #include <ros/this_node.h>
 #include <ros/xmlrpc_manager.h>
-#include <xmlrpcpp/XmlRpcClient.h>
+#include <vector>
 
 using namespace Qt::StringLiterals;
 
 namespace {
 
+/// Every call below gets an answer within this, or counts as no answer: a master (or a node) that
+/// accepts the connection and never answers costs this much, not the thread (roscpp's own
+/// XmlRpcClient::execute has no deadline).
+constexpr int kCallMs = RosReregistration::kDeadlineMs;
+
 /// A call to this node's own slave API (roscpp keeps its lists of topics private).
-bool callSelf(const std::string& method, XmlRpc::XmlRpcValue& params, XmlRpc::XmlRpcValue& payload)
+bool callSelf(const QString& method, const QVariantList& params, QVariant* payload = nullptr)
 {
-    std::string host;
-    uint32_t port = 0;
-    if (!ros::network::splitURI(ros::XMLRPCManager::instance()->getServerURI(), host, port))
-        return false;
-    XmlRpc::XmlRpcClient client(host.c_str(), int(port), "/");
-    XmlRpc::XmlRpcValue response;
-    const bool ok = client.execute(method.c_str(), params, response);
-    client.close();
-    if (!ok || response.getType() != XmlRpc::XmlRpcValue::TypeArray || response.size() != 3
-        || response[0].getType() != XmlRpc::XmlRpcValue::TypeInt || int(response[0]) != 1)
-        return false;
-    payload = response[2];
-    return true;
+    const RosMasterApi self(QString::fromStdString(ros::XMLRPCManager::instance()->getServerURI()),
+                            QString::fromStdString(ros::this_node::getName()));
+    const std::optional<QVariant> value = self.call(method, params, kCallMs);
+    if (value && payload)
+        *payload = *value;
+    return value.has_value();
 }
 
 /// [[topic, type], ...] from getPublications / getSubscriptions.
-std::vector<std::pair<std::string, std::string>> topicsOf(const XmlRpc::XmlRpcValue& list)
+std::vector<std::pair<QString, QString>> topicsOf(const QVariant& list)
 {
-    std::vector<std::pair<std::string, std::string>> out;
-    if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
-        return out;
-    for (int i = 0; i < list.size(); ++i) {
-        const XmlRpc::XmlRpcValue& e = list[i];
-        if (e.getType() == XmlRpc::XmlRpcValue::TypeArray && e.size() == 2
-            && e[0].getType() == XmlRpc::XmlRpcValue::TypeString
-            && e[1].getType() == XmlRpc::XmlRpcValue::TypeString)
-            out.emplace_back(std::string(e[0]), std::string(e[1]));
+    std::vector<std::pair<QString, QString>> out;
+    for (const QVariant& entry : list.toList()) {
+        const QVariantList pair = entry.toList();
+        if (pair.size() == 2 && pair[0].typeId() == QMetaType::QString
+            && pair[1].typeId() == QMetaType::QString)
+            out.emplace_back(pair[0].toString(), pair[1].toString());
     }
     return out;
 }
 
 enum class Answer { Yes, No, Unreachable };
 
-/// Calls the master on a connection of its own; `No` when it answers with an error code.
-/// (Not ros::master::execute: its pooled client stayed unusable after the master was killed while
-/// a call was under way, so a restart was never noticed.)
-Answer askMaster(const std::string& method, const XmlRpc::XmlRpcValue& params, XmlRpc::XmlRpcValue* payload)
+/// Calls the master on a connection of its own, within kCallMs; `No` when it answers with an
+/// error code. (Not ros::master::execute: its pooled client stayed unusable after the master was
+/// killed while a call was under way, so a restart was never noticed; and it waits without end
+/// for a master that does not answer.)
+Answer askMaster(const QString& method, const QVariantList& params, QVariant* payload)
 {
-    XmlRpc::XmlRpcClient client(ros::master::getHost().c_str(), int(ros::master::getPort()), "/");
-    XmlRpc::XmlRpcValue response;
-    const bool ok = client.execute(method.c_str(), params, response);
-    client.close();
-    if (!ok || response.getType() != XmlRpc::XmlRpcValue::TypeArray || response.size() != 3
-        || response[0].getType() != XmlRpc::XmlRpcValue::TypeInt)
+    const RosMasterApi master(QString::fromStdString(ros::master::getURI()),
+                              QString::fromStdString(ros::this_node::getName()));
+    const std::optional<QVariantList> answer = master.answer(method, params, kCallMs);
+    if (!answer)
         return Answer::Unreachable;
-    if (int(response[0]) != 1)
+    if ((*answer)[0].toInt() != 1)
         return Answer::No;
     if (payload)
-        *payload = response[2];
+        *payload = (*answer)[2];
     return Answer::Yes;
 }
 
@@ -72,31 +66,26 @@ Answer askMaster(const std::string& method, const XmlRpc::XmlRpcValue& params, X
 
 RosReregistration::Result RosReregistration::check(QString* detail)
 {
-    const std::string me = ros::this_node::getName();
-    const std::string api = ros::XMLRPCManager::instance()->getServerURI();
-    if (api.empty())
+    const QString me = QString::fromStdString(ros::this_node::getName());
+    const QString api = QString::fromStdString(ros::XMLRPCManager::instance()->getServerURI());
+    if (api.isEmpty())
         return Result::Registered; // no node started yet
-    XmlRpc::XmlRpcValue lookup;
-    lookup[0] = me;
-    lookup[1] = me;
-    XmlRpc::XmlRpcValue known;
-    switch (askMaster("lookupNode", lookup, &known)) {
+    QVariant known;
+    switch (askMaster(u"lookupNode"_s, {me, me}, &known)) {
     case Answer::Unreachable:
         return Result::MasterUnreachable;
     case Answer::Yes:
         // Another process may have taken our name on a new master: then it is not us it knows.
-        if (known.getType() == XmlRpc::XmlRpcValue::TypeString && std::string(known) == api)
+        if (known.typeId() == QMetaType::QString && known.toString() == api)
             return Result::Registered;
         break;
     case Answer::No:
         break;
     }
 
-    XmlRpc::XmlRpcValue self;
-    self[0] = me;
-    XmlRpc::XmlRpcValue pubList;
-    XmlRpc::XmlRpcValue subList;
-    if (!callSelf("getPublications", self, pubList) || !callSelf("getSubscriptions", self, subList)) {
+    QVariant pubList;
+    QVariant subList;
+    if (!callSelf(u"getPublications"_s, {me}, &pubList) || !callSelf(u"getSubscriptions"_s, {me}, &subList)) {
         if (detail)
             *detail = tr("cannot list this node's topics");
         return Result::Failed;
@@ -109,41 +98,29 @@ RosReregistration::Result RosReregistration::check(QString* detail)
                    << "publications and" << subscriptions.size() << "subscriptions again";
 
     QStringList refused;
-    // registerPublisher and registerSubscriber take the same arguments.
-    const auto registration = [&](const std::string& topic, const std::string& type) {
-        XmlRpc::XmlRpcValue args;
-        args[0] = me;
-        args[1] = topic;
-        args[2] = type;
-        args[3] = api;
-        return args;
-    };
     for (const auto& [topic, type] : publications) {
-        const Answer a = askMaster("registerPublisher", registration(topic, type), nullptr);
+        // registerPublisher and registerSubscriber take the same arguments.
+        const Answer a = askMaster(u"registerPublisher"_s, {me, topic, type, api}, nullptr);
         if (a == Answer::Unreachable)
             return Result::MasterUnreachable;
         if (a == Answer::No)
-            refused << QString::fromStdString(topic);
+            refused << topic;
     }
     for (const auto& [topic, type] : subscriptions) {
-        XmlRpc::XmlRpcValue publishers;
-        const Answer a = askMaster("registerSubscriber", registration(topic, type), &publishers);
+        QVariant publishers;
+        const Answer a = askMaster(u"registerSubscriber"_s, {me, topic, type, api}, &publishers);
         if (a == Answer::Unreachable)
             return Result::MasterUnreachable;
         if (a == Answer::No) {
-            refused << QString::fromStdString(topic);
+            refused << topic;
             continue;
         }
         // What roscpp does with the answer when it subscribes: connect to those publishers.
-        XmlRpc::XmlRpcValue update;
-        update[0] = std::string("/master");
-        update[1] = topic;
-        update[2]
-            = publishers.getType() == XmlRpc::XmlRpcValue::TypeArray ? publishers : XmlRpc::XmlRpcValue();
-        if (update[2].getType() != XmlRpc::XmlRpcValue::TypeArray)
-            update[2].setSize(0);
-        XmlRpc::XmlRpcValue ignored;
-        callSelf("publisherUpdate", update, ignored);
+        QVariantList uris;
+        for (const QVariant& uri : publishers.toList())
+            if (uri.typeId() == QMetaType::QString)
+                uris << uri;
+        callSelf(u"publisherUpdate"_s, {u"/master"_s, topic, QVariant(uris)});
     }
     if (!refused.isEmpty()) {
         if (detail)
@@ -158,7 +135,6 @@ RosReregistration::Result RosReregistration::check(QString* detail)
 
 bool RosReregistration::masterAnswers()
 {
-    XmlRpc::XmlRpcValue args;
-    args[0] = ros::this_node::getName();
-    return askMaster("getPid", args, nullptr) != Answer::Unreachable;
+    return askMaster(u"getPid"_s, {QString::fromStdString(ros::this_node::getName())}, nullptr)
+        != Answer::Unreachable;
 }

@@ -12,7 +12,8 @@
 /// their subscribers never hear of new publishers, while every call still succeeds. check() asks
 /// the master whether it knows this node and, when it does not, registers every publication and
 /// subscription again (and hands the subscriptions the publishers the master names), without
-/// tearing anything down. Call it from a thread that may block (about once a second).
+/// tearing anything down. Call it from a thread that may block (about once a second); a master
+/// that does not answer holds it at most kDeadlineMs a call.
 class RosReregistration
 {
     Q_DECLARE_TR_FUNCTIONS(RosReregistration)
@@ -23,9 +24,12 @@ public:
         MasterUnreachable,
         Failed, ///< the master answered but refused a registration (see `detail`)
     };
-    /// Needs a started roscpp node.
+    /// Every call to the master (and to this node's own API) is answered within this, or counts
+    /// as unanswered: a master that accepts connections and never answers costs that long.
+    static constexpr int kDeadlineMs = 2000;
+    /// Needs a started roscpp node. Each call within kDeadlineMs.
     static Result check(QString* detail = nullptr);
-    /// Whether the master roscpp is pointed at answers now, asked on a connection of its own and
-    /// without roscpp's retries. Needs ros::init.
+    /// Whether the master roscpp is pointed at answers now (within kDeadlineMs), asked on a
+    /// connection of its own and without roscpp's retries. Needs ros::init.
     static bool masterAnswers();
 };

@@ -139,8 +139,8 @@ RosStampSource::~RosStampSource()
 {
     d->rosNode->removeHook(d->hook);
     d->closing = true;
-    Private* p = d.get();
-    d->rosNode->postAndWait([p] { p->subscribers.clear(); });
+    // the job keeps what it clears: a worker blocked past RosNode::kWaitMs runs it later
+    d->rosNode->postAndWait([keep = d] { keep->subscribers.clear(); });
 }
 
 void RosStampSource::setMasterUri(const QString& uri)

@@ -22,6 +22,10 @@ namespace {
 const QString kUser = u"alice"_s;
 const QString kPassword = u"s3cr3t-Pw"_s;
 const QString kConfigPassword = u"c0nfig-Pw"_s;
+/// A second user whose password holds what URLs and option parsing trip over (issue 41, point 9).
+const QString kOddUser = u"bob"_s;
+const QString kOddPassword = u"Od/d?Pw#x@y"_s;
+const QString kOddPasswordEncoded = u"Od%2Fd%3FPw%23x%40y"_s;
 } // namespace
 
 class TestSecrets : public QObject
@@ -117,7 +121,8 @@ private:
     /// `scanMs` (as ps -eo args does), then waits for it to end. The command's own line is read
     /// only once it is `ownAfterMs` old (it hides its password first thing in main(), but the
     /// kernel shows argv from exec on) or has children.
-    PsScan runAndScan(const QStringList& args, int scanMs, int ownAfterMs = 1500)
+    PsScan runAndScan(const QStringList& args, int scanMs, int ownAfterMs = 1500,
+                      const QStringList& secrets = {kPassword})
     {
         QProcess p;
         p.setProcessEnvironment(environment());
@@ -146,8 +151,9 @@ private:
                     scan.ownHidden = scan.ownHidden || line.contains("tcp://***");
                 if (line.contains("--broker-fd"))
                     ++scan.children;
-                if (line.contains(kPassword.toUtf8()))
-                    scan.seen << QString::fromUtf8(QByteArray(line).replace('\0', ' '));
+                for (const QString& secret : secrets)
+                    if (line.contains(secret.toUtf8()))
+                        scan.seen << QString::fromUtf8(QByteArray(line).replace('\0', ' '));
             }
         }
         if (!p.waitForFinished(120000))
@@ -168,6 +174,8 @@ private slots:
         const QString passwd = m_servers.tempPath() + u"/passwd"_s;
         QProcess p;
         p.start(u"mosquitto_passwd"_s, {u"-c"_s, u"-b"_s, passwd, kUser, kPassword});
+        QVERIFY(p.waitForFinished(10000) && p.exitCode() == 0);
+        p.start(u"mosquitto_passwd"_s, {u"-b"_s, passwd, kOddUser, kOddPassword});
         QVERIFY(p.waitForFinished(10000) && p.exitCode() == 0);
         TestMosquittoOptions opts;
         opts.allowAnonymous = false;
@@ -397,6 +405,74 @@ private slots:
         // and none of its files holds them (noCredentialInAnyFileOrLog searches the whole home later)
         QVERIFY(QFileInfo::exists(dir + u"/plan.yaml"_s));
         QCOMPARE(bridgescope({u"experiment"_s, plan, u"-o"_s, dir, u"--broker"_s, u"tcp://x:y@"_s}).exit, 2);
+    }
+
+    // Issue 41, point 9: the window never hid its --broker password (only the commands did), and
+    // a command given --broker=URL as one argument kept a password with '/', '?' or '#'. Now
+    // main() hides every URL's user info first thing, for every entry point and form; each still
+    // connects with the password as typed (the window's log says so, the commands' exit too).
+    void noEntryPointShowsThePasswordInAnyForm_data()
+    {
+        QTest::addColumn<QStringList>("args"); ///< %URL% stands for the broker URL
+        QTest::addColumn<bool>("encoded"); ///< the password percent-encoded in the URL
+        QTest::addColumn<int>("ms"); ///< how long it runs
+        const QString shot = u"--screenshot"_s;
+        QTest::newRow("window --broker URL")
+            << QStringList {u"--broker"_s, u"%URL%"_s,   u"--platform"_s, u"offscreen"_s, shot,
+                            u"w1.png"_s,   u"--after"_s, u"3"_s,          u"--verbose"_s}
+            << false << 3000;
+        QTest::newRow("window --broker=URL, encoded")
+            << QStringList {u"--broker=%URL%"_s, u"--platform"_s, u"offscreen"_s, shot,
+                            u"w2.png"_s,         u"--after"_s,    u"3"_s,         u"--verbose"_s}
+            << true << 3000;
+        QTest::newRow("window --demo --broker=URL") << QStringList {u"--demo"_s,
+                                                                    u"--broker=%URL%"_s,
+                                                                    u"--ros-master"_s,
+                                                                    m_servers.rosMasterUri(),
+                                                                    u"--platform"_s,
+                                                                    u"offscreen"_s,
+                                                                    shot,
+                                                                    u"w3.png"_s,
+                                                                    u"--after"_s,
+                                                                    u"5"_s,
+                                                                    u"--verbose"_s}
+                                                    << false << 5000;
+        QTest::newRow("watch --broker=URL")
+            << QStringList {u"watch"_s, u"--broker=%URL%"_s, u"--seconds"_s, u"3"_s} << false << 3000;
+        QTest::newRow("discover --broker=URL, encoded")
+            << QStringList {u"discover"_s, u"--broker=%URL%"_s, u"--seconds"_s, u"3"_s} << true << 3000;
+        QTest::newRow("watch --broker URL")
+            << QStringList {u"watch"_s, u"--broker"_s, u"%URL%"_s, u"--seconds"_s, u"3"_s} << false << 3000;
+    }
+
+    void noEntryPointShowsThePasswordInAnyForm()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(bool, encoded);
+        QFETCH(int, ms);
+        // concatenated: the encoded password's %2F and %3F would be arg()'s placeholders
+        const QString url = u"tcp://"_s + kOddUser + u':' + (encoded ? kOddPasswordEncoded : kOddPassword)
+            + u"@127.0.0.1:"_s + QString::number(m_servers.mosquittoPort());
+        for (QString& a : args) {
+            a.replace(u"%URL%"_s, url);
+            if (a.endsWith(u".png"_s))
+                a = m_home + u"/out/"_s + a;
+        }
+        // The password as typed, its pieces after each character a parser might stop at, the user.
+        const QStringList secrets {
+            kOddPassword, kOddPasswordEncoded, u"Od/d"_s,      u"Od%2F"_s, u"?Pw"_s, u"#x@"_s,
+            u"x@y"_s,     u"%40y"_s,           kOddUser + u':'};
+        const PsScan s = runAndScan(args, ms - 500, 1500, secrets);
+        QVERIFY2(s.seen.isEmpty(), qPrintable(s.seen.join(u'\n')));
+        QVERIFY2(s.ownHidden, qPrintable(s.err)); // its own line was read, hidden
+        QVERIFY2(s.exit == 0, qPrintable(s.err));
+        // It used the password: the window's log, the command's exit and silence about the broker.
+        if (args.contains(u"--verbose"_s))
+            QVERIFY2(s.err.contains(u"tcp://127.0.0.1:%1 connected"_s.arg(m_servers.mosquittoPort())),
+                     qPrintable(s.err));
+        else
+            QVERIFY2(!s.err.contains(u"cannot be reached"_s) && !s.err.contains(u"not authori"_s),
+                     qPrintable(s.err));
     }
 
     // The commands with a password in --broker and in a config; none of it may be written down.
