@@ -3101,6 +3101,14 @@ factors:
         <source>ROS 2 (%1), the demo lab&apos;s domain</source>
         <translation>ROS 2 (%1), die Domain des Demo-Labors</translation>
     </message>
+    <message>
+        <source>with --screenshot: start from the saved window and save it, as a user&apos;s start does</source>
+        <translation>mit --screenshot: vom gespeicherten Fenster ausgehen und es speichern, wie ein Start durch den Benutzer</translation>
+    </message>
+    <message>
+        <source>With --screenshot: start from the saved window and save it on exit.</source>
+        <translation>Mit --screenshot: vom gespeicherten Fenster ausgehen und es beim Beenden speichern.</translation>
+    </message>
 </context>
 <context>
     <name>LatencyEngine</name>
