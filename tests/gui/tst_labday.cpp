@@ -24,6 +24,7 @@
 
 #include <QComboBox>
 #include <QFont>
+#include <QLabel>
 #include <QTableView>
 #include <QFile>
 #include <QProcess>
@@ -104,7 +105,7 @@ QString pageProblems(MainWindow& w)
         // The columns fit 100 ms after a change and figures grow once a second.
         (void)QTest::qWaitFor([&] { return ViewAudit::elidedFiguresIn(page).isEmpty(); }, 5000);
         problems << ViewAudit::elidedFiguresIn(page);
-        for (auto* table : page->findChildren<QTableView*>({}, Qt::FindChildrenRecursively))
+        for (auto* table : page->findChildren<QTableView*>())
             if (table->isVisible() && (table->objectName() == u"summaryView"_s || table->objectName() == u"statsView"_s))
                 problems << unflaggedNegatives(table);
         for (QAbstractItemView* view : page->findChildren<QAbstractItemView*>()) {
