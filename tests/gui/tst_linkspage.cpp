@@ -5,6 +5,7 @@
 // pane work; killing the vehicle bridge turns its links red with stall and bridge-down events in
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
+#include "signalprocess.h"
 #include "app/gui/mainwindow.h"
 #include "base/niceticks.h"
 #include "demo/demolab.h"
@@ -358,7 +359,7 @@ private slots:
         QApplication::setActiveWindow(&other);
         QTRY_VERIFY(!window.isActiveWindow());
         const int notifiedBefore = page->notificationsShown();
-        ::kill(pid_t(vehicleBridge), SIGKILL);
+        signalProcess(vehicleBridge, SIGKILL);
         const auto alerts = [&] {
             int n = 0;
             for (int r = 0; r < model->rowCount(); ++r)

@@ -3,6 +3,7 @@
 // v2.2.1's wire format byte for byte (the captured fixtures), announced types and latency topics
 // on the receiving side, two bridges carrying std_msgs and sensor_msgs both ways, and the
 // suite's timestamp_topic_prefix stamps joining into complete samples.
+#include "signalprocess.h"
 #include "base/wallclock.h"
 #include "bridge/referencebridge.h"
 #include "bridgelog.h"
@@ -139,7 +140,7 @@ private:
     {
         constexpr int kFloodSeconds = 3;
         const qint64 baseline = PeakRss::of(bridge.processId());
-        ::kill(pid_t(stoppedPid), SIGSTOP);
+        signalProcess(stoppedPid, SIGSTOP);
         QElapsedTimer clock;
         clock.start();
         while (clock.elapsed() < kFloodSeconds * 1000) {
@@ -147,7 +148,7 @@ private:
             QTest::qWait(1);
         }
         const qint64 peak = PeakRss::of(bridge.processId());
-        ::kill(pid_t(stoppedPid), SIGCONT);
+        signalProcess(stoppedPid, SIGCONT);
         qInfo("bridge peak RSS %.1f MiB over its baseline of %.1f MiB", double(peak - baseline) / (1 << 20),
               double(baseline) / (1 << 20));
         return peak - baseline;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The command line contract of `bridgescope config ...`, run as the real program.
+#include "signalprocess.h"
 #include "clirun.h"
 #include "config/configreader.h"
 #include "experiment/experimentplan.h"
@@ -624,7 +625,7 @@ private slots:
         QVERIFY(waitUntilCaught(p, SIGINT));
         QTest::qWait(100);
         QCOMPARE(p.state(), QProcess::Running);
-        ::kill(pid_t(p.processId()), SIGINT);
+        signalProcess(p.processId(), SIGINT);
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 130);
@@ -1103,7 +1104,7 @@ private slots:
         QCOMPARE(p.state(), QProcess::Running);
         QElapsedTimer clock;
         clock.start();
-        ::kill(pid_t(p.processId()), SIGTERM);
+        signalProcess(p.processId(), SIGTERM);
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 130);
@@ -1136,7 +1137,7 @@ private slots:
         QVERIFY(waitUntilCaught(p, SIGTERM)); // not a fixed wait: slow under ASan
         QTest::qWait(100);
         QCOMPARE(p.state(), QProcess::Running);
-        ::kill(pid_t(p.processId()), SIGTERM);
+        signalProcess(p.processId(), SIGTERM);
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 130);
@@ -1164,7 +1165,7 @@ private slots:
             QVERIFY(p.waitForStarted());
             const bool ended = p.waitForFinished(10000);
             if (!ended) { // the old code: blocked in open(), and SIGTERM does not end it either
-                ::kill(pid_t(p.processId()), SIGTERM);
+                signalProcess(p.processId(), SIGTERM);
                 const bool afterTerm = p.waitForFinished(2000);
                 p.kill();
                 p.waitForFinished();
@@ -1215,7 +1216,7 @@ private slots:
         QTest::qWait(1000); // the old code was in the keys by now
         QElapsedTimer clock;
         clock.start();
-        ::kill(pid_t(p.processId()), SIGTERM);
+        signalProcess(p.processId(), SIGTERM);
         const bool ended = p.waitForFinished(2000);
         if (!ended) {
             p.kill();

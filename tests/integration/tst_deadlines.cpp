@@ -2,6 +2,7 @@
 // Issue 41, points 10 and 11: a server that accepts connections and never answers costs a command
 // seconds, never the rest of its life, and a command that heard nothing on any graph says so and
 // fails, on ROS 2 as on ROS 1. Every case runs the real program against a fake peer on 127.0.0.1.
+#include "signalprocess.h"
 #include "clirun.h"
 #include "ros2peer.h"
 #include "testservers.h"
@@ -170,7 +171,7 @@ private slots:
             err += QString::fromUtf8(p->readAllStandardError());
         }
         QVERIFY2(err.contains(u"2 s: "_s), qPrintable(err)); // recording, its progress said
-        ::kill(pid_t(p->processId()), SIGTERM);
+        signalProcess(p->processId(), SIGTERM);
         clock.restart();
         QVERIFY2(p->waitForFinished(15000), qPrintable(err));
         QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));

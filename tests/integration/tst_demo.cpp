@@ -2,6 +2,7 @@
 // The demo lab headless: 20 s of the paper-shaped pipeline recorded with sensible figures, and no
 // process left behind after it ends, or after it is killed with SIGKILL; and `watch --pipeline` on
 // the lab's bridges: every link's latency from the pipeline's stamps, and a run with samples and events.
+#include "signalprocess.h"
 #include "demo/demolab.h"
 #include "record/runfile.h"
 #include "report/report.h"
@@ -292,7 +293,7 @@ private slots:
         const LabTrace lab = traceOf(log);
         QVERIFY2(!lab.dir.isEmpty(), qPrintable(log));
         QVERIFY(processesWith(lab.dir).size() >= 3); // bridges and nodes run from the lab's folder
-        ::kill(pid_t(demo.processId()), SIGKILL);
+        signalProcess(demo.processId(), SIGKILL);
         QVERIFY(demo.waitForFinished(5000));
         // Every child got SIGTERM from the kernel when the demo died.
         QVERIFY2(QTest::qWaitFor([&] { return processesWith(lab.dir).isEmpty(); }, 15000),
@@ -341,7 +342,7 @@ private slots:
                 vehicleBridge = pid;
         }
         QVERIFY(vehicleBridge > 0);
-        ::kill(pid_t(vehicleBridge), SIGKILL);
+        signalProcess(vehicleBridge, SIGKILL);
         QTest::qWait(8000);
         watch.terminate();
         QVERIFY(watch.waitForFinished(15000));

@@ -5,6 +5,7 @@
 // their levels; a bridge command that exits at once fails its cell while a bridge started through
 // the command template works; and a link profile of 20 ms delay and 2 ms jitter on each bridge's
 // broker connection shows up in the crossing stages only.
+#include "signalprocess.h"
 #include "latency/latencyengine.h"
 #include "record/runfile.h"
 #include "report/report.h"
@@ -110,7 +111,7 @@ private slots:
             120000));
         QCOMPARE(first->state(), QProcess::Running);
         QTest::qWait(5000);
-        ::kill(pid_t(first->processId()), SIGKILL);
+        signalProcess(first->processId(), SIGKILL);
         QVERIFY(first->waitForFinished(10000));
         printed += first->readAllStandardOutput();
         QCOMPARE(indicesOf(jsonLines(printed), u"finished"_s), (QList<int> {0, 1}));

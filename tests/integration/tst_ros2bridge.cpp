@@ -5,6 +5,7 @@
 // what mqtt_client v2.5 writes, the expected bytes made with Fast CDR as its RMW serializes
 // (tests/support/mqttclientros2.h); its DDS side as the peer receives it; its node in
 // ros_discovery_info; its timestamp_topic_prefix stamps and ~/latencies.
+#include "signalprocess.h"
 #include "base/wallclock.h"
 #include "bridgelog.h"
 #include "bridge/referencebridge.h"
@@ -358,8 +359,8 @@ private slots:
         QVERIFY(PeakRss::reset(child));
         const qint64 bridgeBase = PeakRss::of(b->processId());
         const qint64 childBase = PeakRss::of(child);
-        ::kill(pid_t(listener.pid()), SIGSTOP);
-        ::kill(pid_t(child), SIGSTOP);
+        signalProcess(listener.pid(), SIGSTOP);
+        signalProcess(child, SIGSTOP);
         QElapsedTimer clock;
         clock.start();
         int sent = 0;
@@ -369,8 +370,8 @@ private slots:
             QTest::qWait(5);
         }
         QTest::qWait(500); // what the broker still had on its way
-        ::kill(pid_t(child), SIGCONT);
-        ::kill(pid_t(listener.pid()), SIGCONT);
+        signalProcess(child, SIGCONT);
+        signalProcess(listener.pid(), SIGCONT);
         QTest::qWait(1000); // the child reads what waited in the pipe
         const qint64 bridgeGrew = PeakRss::of(b->processId()) - bridgeBase;
         const qint64 childGrew = PeakRss::of(child) - childBase;
@@ -403,10 +404,10 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_floodArrived > 0, 15000);
         QVERIFY(PeakRss::reset(b->processId()));
         const qint64 bridgeBase = PeakRss::of(b->processId());
-        ::kill(pid_t(m_servers.mosquittoPid()), SIGSTOP);
+        signalProcess(m_servers.mosquittoPid(), SIGSTOP);
         QTest::qWait(3000);
         const qint64 bridgeGrew = PeakRss::of(b->processId()) - bridgeBase;
-        ::kill(pid_t(m_servers.mosquittoPid()), SIGCONT);
+        signalProcess(m_servers.mosquittoPid(), SIGCONT);
         qInfo("the bridge grew by %.1f MiB", double(bridgeGrew) / (1 << 20));
         talker.terminate();
         const auto [toMqtt, toRos] = BridgeLog::droppedOf(*b);
