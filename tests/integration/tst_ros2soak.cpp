@@ -14,6 +14,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QProcess>
+#include <QScopeGuard>
 #include <QTemporaryFile>
 #include <QTest>
 #include <QUdpSocket>
@@ -77,6 +78,12 @@ private slots:
         watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
                     QStringList {u"watch"_s, u"--seconds"_s, QString::number(seconds + 60)} + ros2);
         QVERIFY(bridge.waitForStarted() && watch.waitForStarted());
+        const auto end = qScopeGuard([&] { // a failed check ends them too
+            for (QProcess* p : {&bridge, &watch}) {
+                p->kill();
+                p->waitForFinished(5000);
+            }
+        });
         QString bridgeLog, watchLog;
         connect(&bridge, &QProcess::readyReadStandardError, this,
                 [&] { bridgeLog += QString::fromUtf8(bridge.readAllStandardError()); });
