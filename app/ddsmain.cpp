@@ -72,10 +72,19 @@ bool writeFrame(Kind kind, const QByteArray& body)
 
 /// The participant, with one hook for the tests of the parent's quarantine (tst_ros2bridge): with
 /// BRIDGESCOPE_DDS_TEST_CRASH_TYPE set, a writer or reader of that type aborts this process, as
-/// Cyclone DDS did on a type it could not take (issue 41).
+/// Cyclone DDS did on a type it could not take (issue 41); with BRIDGESCOPE_DDS_TEST_CRASH_UNLESS_LIMITED
+/// set (milliseconds), this process aborts that long after it joined the domain unless its graph is
+/// limited (a peer's discovery that kills every child: the parent's loop detection, issue 41).
 class ChildEngine : public Ros2Engine
 {
 public:
+    bool start(const Ros2Options& options, QString* error) override
+    {
+        const int crashAfterMs = qEnvironmentVariableIntValue("BRIDGESCOPE_DDS_TEST_CRASH_UNLESS_LIMITED");
+        if (crashAfterMs > 0 && !options.limitedGraph)
+            QTimer::singleShot(crashAfterMs, [] { std::abort(); });
+        return Ros2Engine::start(options, error);
+    }
     bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) override
     {
         crashOn(type);

@@ -6818,10 +6818,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>nicht in der ROS-2-Domäne: %1</translation>
     </message>
     <message>
-        <source>the DDS process %1; starting it again</source>
-        <translation>der DDS-Prozess %1; wird neu gestartet</translation>
-    </message>
-    <message>
         <source>connecting to %1…</source>
         <translation>verbinde mit %1 …</translation>
     </message>
@@ -6860,6 +6856,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>MQTT %1</source>
         <translation>MQTT %1</translation>
+    </message>
+    <message>
+        <source>the DDS process %1; starting it again (%2)</source>
+        <translation>der DDS-Prozess %1; wird neu gestartet (%2)</translation>
     </message>
 </context>
 <context>
@@ -6964,13 +6964,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>%1 has no publisher or subscriber yet, so its type is not known</source>
         <translation>%1 hat noch keinen Publisher oder Subscriber, sein Typ ist also unbekannt</translation>
     </message>
-    <message numerus="yes">
-        <source>ROS 2 discovery restarted %n time(s) (last: %1)</source>
-        <translation>
-            <numerusform>ROS-2-Erkennung %n-mal neu gestartet (zuletzt: %1)</numerusform>
-            <numerusform>ROS-2-Erkennung %n-mal neu gestartet (zuletzt: %1)</numerusform>
-        </translation>
-    </message>
     <message>
         <source>cannot see ROS 2: the helper program bridgescope-dds is not installed</source>
         <translation>ROS 2 nicht sichtbar: das Hilfsprogramm bridgescope-dds ist nicht installiert</translation>
@@ -7013,6 +7006,28 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>the DDS process %1 while making it: quarantined, not asked again</source>
         <translation>der DDS-Prozess %1, während er es anlegte: unter Quarantäne, wird nicht erneut angefragt</translation>
+    </message>
+    <message numerus="yes">
+        <source>ROS 2 discovery restarted %n time(s), %1 caused by peers (last: %2)</source>
+        <translation>
+            <numerusform>ROS-2-Erkennung %n-mal neu gestartet, %1 durch Teilnehmer verursacht (zuletzt: %2)</numerusform>
+            <numerusform>ROS-2-Erkennung %n-mal neu gestartet, %1 durch Teilnehmer verursacht (zuletzt: %2)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>a restart loop broken: the graph limited</source>
+        <translation>eine Neustart-Schleife durchbrochen: der Graph begrenzt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n ROS 2 request(s) quarantined (last: %1)</source>
+        <translation>
+            <numerusform>%n ROS-2-Anfrage(n) unter Quarantäne (zuletzt: %1)</numerusform>
+            <numerusform>%n ROS-2-Anfrage(n) unter Quarantäne (zuletzt: %1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>a restart loop: %1 restarts in a row, none explained by a request; the DDS process is started again with the graph limited (%2 endpoints a participant, %3 in all)</source>
+        <translation>eine Neustart-Schleife: %1 Neustarts in Folge, keiner durch eine Anfrage erklärt; der DDS-Prozess wird mit begrenztem Graphen neu gestartet (%2 Endpunkte je Teilnehmer, %3 insgesamt)</translation>
     </message>
 </context>
 <context>

@@ -102,6 +102,13 @@ public:
         if (const quint64 restarts = participant.restarts()) {
             ros2.insert(u"discovery_restarts"_s, qint64(restarts));
             ros2.insert(u"last_restart_reason"_s, participant.lastRestartReason());
+            ros2.insert(u"discovery_restarts_by_peers"_s, qint64(participant.peerRestarts()));
+        }
+        if (const int loops = participant.restartLoopsBroken())
+            ros2.insert(u"restart_loops_broken"_s, loops);
+        if (const int quarantined = participant.quarantined()) {
+            ros2.insert(u"quarantined_requests"_s, quarantined);
+            ros2.insert(u"last_quarantine_reason"_s, participant.lastQuarantineReason());
         }
         return ros2;
     }
@@ -124,8 +131,8 @@ public:
                     .arg(t.subscribers.size()));
         if (g.omitted)
             out(u"  "_s + participant.omittedText());
-        if (participant.restarts() > 0)
-            out(u"  "_s + participant.restartText());
+        if (const QString restarts = participant.restartText(); !restarts.isEmpty())
+            out(u"  "_s + restarts);
     }
 
     static QJsonObject mqttJson(const MqttConnection& connection, const MqttTopicTree& tree,
@@ -292,6 +299,8 @@ void listen(const DiscoverRequest& request, Heard* heard)
     if (request.ros2 && !heard->ros2.start(request.ros2Options, &heard->ros2Error))
         heard->ros2Error = heard->ros2Error.isEmpty() ? Discover::tr("no participant") : heard->ros2Error;
     // said as it happens, not only at the end: a restart of the DDS process is news
+    QObject::connect(&heard->ros2, &Ros2Participant::restartLoopBroken,
+                     [](const QString& what) { err(what); });
     QObject::connect(&heard->ros2, &Ros2Participant::restarted, [](const QString& why) {
         err(Discover::tr("ROS 2 discovery restarted: the DDS process %1").arg(why));
     });

@@ -390,6 +390,8 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
         line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
     if (ros2 && ros2->graph().omitted)
         line += u"; "_s + ros2->omittedText();
+    if (ros2 && !ros2->restartText().isEmpty())
+        line += u"; "_s + ros2->restartText();
     return line;
 }
 
@@ -407,6 +409,8 @@ bool prepareLive(LiveSession& live, const WatchRequest& request)
         return false;
     }
     // the DDS process ended (a hostile datagram, a runaway): said as it happens, and started again
+    QObject::connect(live.ros2(), &Ros2Participant::restartLoopBroken,
+                     [](const QString& what) { err(what); });
     QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
         err(Watch::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
     });

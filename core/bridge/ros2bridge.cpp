@@ -474,8 +474,11 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
     });
     QObject::connect(ros, &Ros2Participant::endpointRefused, ros,
                      [p](const QString& topic, const QString& why) { p->refused(topic, why); });
-    QObject::connect(ros, &Ros2Participant::restarted, ros,
-                     [p](const QString& why) { p->log(tr("the DDS process %1; starting it again").arg(why)); });
+    QObject::connect(ros, &Ros2Participant::restarted, ros, [p](const QString& why) {
+        p->log(tr("the DDS process %1; starting it again (%2)").arg(why, p->ros->restartText()));
+    });
+    QObject::connect(ros, &Ros2Participant::restartLoopBroken, ros,
+                     [p](const QString& what) { p->log(what); });
     if (!ros->start(rosOptions, error))
         return false;
     ros->setNode(d->nameSpace, d->name);

@@ -160,6 +160,9 @@ struct Ros2Engine::Private
     std::map<dds_instance_handle_t, QByteArray> refused;
     quint64 refusedBeyond = 0;
     std::map<QByteArray, int> perParticipant; ///< endpoints kept, by participant prefix
+    /// The bounds: kMaxEndpoints and kMaxEndpointsPerParticipant, or Ros2Options::limitedGraph's.
+    std::size_t maxEndpoints = kMaxEndpoints;
+    int maxPerParticipant = kMaxEndpointsPerParticipant;
     QByteArray ownPrefix;
     quint64 changes = 1; ///< bumped at every change of the tables
 
@@ -210,7 +213,7 @@ struct Ros2Engine::Private
 
     void refuse(dds_instance_handle_t handle, const QByteArray& prefix)
     {
-        if (refused.size() < kMaxEndpoints)
+        if (refused.size() < maxEndpoints)
             refused[handle] = prefix;
         else
             ++refusedBeyond;
@@ -321,8 +324,8 @@ struct Ros2Engine::Private
         }
         if (tooLong
             || (!known
-                && (endpoints.size() + services.size() >= kMaxEndpoints
-                    || perParticipant[prefix] >= kMaxEndpointsPerParticipant))) {
+                && (endpoints.size() + services.size() >= maxEndpoints
+                    || perParticipant[prefix] >= maxPerParticipant))) {
             if (!refused.count(handle))
                 refuse(handle, prefix);
             return;
@@ -470,6 +473,10 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     dds_set_trace_sink([](void*, const dds_log_data_t*) {}, nullptr);
     m_options = options;
     d = std::make_shared<Private>();
+    if (options.limitedGraph) { // after a loop of restarts (Ros2Participant)
+        d->maxEndpoints = std::size_t(Ros2Options::kLimitedEndpoints);
+        d->maxPerParticipant = Ros2Options::kLimitedEndpointsPerParticipant;
+    }
     d->domain = dds_create_domain(dds_domainid_t(options.domain), domainConfig(options.localhostOnly).c_str());
     if (d->domain > 0)
         d->participant = createParticipant(dds_domainid_t(options.domain));

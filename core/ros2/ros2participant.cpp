@@ -84,10 +84,26 @@ QString Ros2Participant::omittedText() const
 
 QString Ros2Participant::restartText() const
 {
-    if (m_restarts == 0)
+    QString text;
+    if (m_restarts > 0)
+        text = tr("ROS 2 discovery restarted %n time(s), %1 caused by peers (last: %2)", nullptr,
+                  int(qMin<quint64>(m_restarts, INT_MAX)))
+                   .arg(m_peerRestarts)
+                   .arg(m_restartReason);
+    if (m_loopsBroken > 0)
+        text += u"; "_s + tr("a restart loop broken: the graph limited");
+    const QString quarantine = quarantineText();
+    if (!quarantine.isEmpty())
+        text += (text.isEmpty() ? QString() : u"; "_s) + quarantine;
+    return text;
+}
+
+QString Ros2Participant::quarantineText() const
+{
+    if (m_quarantine.isEmpty())
         return {};
-    return tr("ROS 2 discovery restarted %n time(s) (last: %1)", nullptr, int(qMin<quint64>(m_restarts, INT_MAX)))
-        .arg(m_restartReason);
+    return tr("%n ROS 2 request(s) quarantined (last: %1)", nullptr, int(m_quarantine.size()))
+        .arg(m_lastQuarantine);
 }
 
 void Ros2Participant::setGraphInterval(int ms)
@@ -116,6 +132,9 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
     m_wanted = true;
     m_restarts = 0;
     m_restartsInARow = 0;
+    m_unexplainedInARow = 0;
+    m_peerRestarts = 0;
+    m_limitedGraph = false;
     m_restartReason.clear();
     m_badInfo = 0;
     launch();
@@ -166,7 +185,9 @@ void Ros2Participant::launch()
     m_child = child;
     m_up.start();
     m_lastFrame.start();
-    send(Kind::Start, Ros2Protocol::encodeStart({m_options, m_graphInterval}));
+    Ros2Options options = m_options;
+    options.limitedGraph = m_limitedGraph;
+    send(Kind::Start, Ros2Protocol::encodeStart({options, m_graphInterval}));
     if (m_keepArrivals)
         send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(m_keepArrivals));
     for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
@@ -405,28 +426,51 @@ void Ros2Participant::onFinished()
         return;
     // A child that ran for a while failed anew; one that keeps failing waits longer each time.
     if (m_up.isValid() && m_up.elapsed() > kStableMs)
-        m_restartsInARow = 0;
+        m_restartsInARow = m_unexplainedInARow = 0;
     ++m_restartsInARow;
     ++m_restarts;
     m_restartReason = why;
-    m_graph = Ros2Graph();
-    m_stats.clear();
     // What it was making when it ended is not asked of the next one (else a type that crashes
     // Cyclone crashes every child after it: a loop of restarts, broken here).
     const QHash<QString, Ros2Protocol::EndpointRequest> unanswered = std::exchange(m_unanswered, {});
+    const bool ranInto = child->error() != QProcess::FailedToStart
+        && (!m_failure.isEmpty() || child->exitStatus() == QProcess::CrashExit);
+    if (!unanswered.isEmpty() || (ranInto && m_graph.participants > 0))
+        ++m_peerRestarts;
+    m_graph = Ros2Graph();
+    m_stats.clear();
     for (auto it = unanswered.cbegin(); it != unanswered.cend(); ++it) {
         const bool advertise = it.key().startsWith(u'A');
         const QString reason = tr("the DDS process %1 while making it: quarantined, not asked again").arg(why);
         m_quarantine.insert(it.key(), reason);
+        m_lastQuarantine = it->topic + u": "_s + reason;
         refuseEndpoint(advertise, it->topic, reason);
     }
-    const int delay = backoffMs(m_restartsInARow);
+    // A loop no quarantine explains (discovery, a peer's samples): the next children get a graph
+    // of a tenth of the bounds, at once, instead of the same death after every backoff.
+    m_unexplainedInARow = unanswered.isEmpty() ? m_unexplainedInARow + 1 : 0;
+    QString loop;
+    if (m_unexplainedInARow >= kLoopRestarts && !m_limitedGraph) {
+        m_limitedGraph = true;
+        ++m_loopsBroken;
+        m_restartsInARow = 0;
+        loop = tr("a restart loop: %1 restarts in a row, none explained by a request; the DDS process is "
+                  "started again with the graph limited (%2 endpoints a participant, %3 in all)")
+                   .arg(m_unexplainedInARow)
+                   .arg(Ros2Options::kLimitedEndpointsPerParticipant)
+                   .arg(Ros2Options::kLimitedEndpoints);
+    }
+    const int delay = backoffMs(std::max(m_restartsInARow, 1));
     qCWarning(lcRos2).noquote() << u"ROS 2 discovery restarted (%1): the DDS process %2; started again in %3 ms"_s
                                        .arg(m_restarts)
                                        .arg(why)
                                        .arg(delay);
     m_restartTimer.start(delay);
     emit restarted(why);
+    if (!loop.isEmpty()) {
+        qCWarning(lcRos2).noquote() << loop;
+        emit restartLoopBroken(loop);
+    }
     emit graphChanged(m_graph);
 }
 

@@ -60,8 +60,21 @@ public:
     QString lastRestartReason() const { return m_restartReason; }
     /// Why the participant is not on the domain, when it is not (empty while it is, or stopped).
     QString lastError() const { return m_error; }
-    /// "restarted 2 times (last: crashed: signal 6)", or empty: for status lines.
+    /// Restarts caused by a peer: the child ended (crashed, stalled, sent a frame that does not read)
+    /// while it made an endpoint asked for from outside data (then quarantined), or while other
+    /// participants were on the domain (discovery). The others: nobody else was there.
+    quint64 peerRestarts() const { return m_peerRestarts; }
+    /// Restart loops detected and broken: kLoopRestarts restarts in a row that no quarantine
+    /// explains, none of the children steady (kStableMs) in between. The loop is broken by starting
+    /// the next children with the graph limited (Ros2Options::limitedGraph: a tenth of the
+    /// endpoints a participant and in all), until stop(); said by restartLoopBroken().
+    int restartLoopsBroken() const { return m_loopsBroken; }
+    static constexpr int kLoopRestarts = 3;
+    /// "ROS 2 discovery restarted 2 times, 1 caused by peers (last: crashed: signal 6)", with the
+    /// loop broken and the quarantined requests, or empty: for status lines.
     QString restartText() const;
+    /// "1 ROS 2 request quarantined (last: …)", or empty.
+    QString quarantineText() const;
     /// "12 endpoints not listed (over a bound)", or empty: what the child left out of graph()
     /// (Ros2Graph::omitted: a peer's, a topic's or the graph's bound), for status lines.
     QString omittedText() const;
@@ -146,6 +159,7 @@ public:
     quint64 droppedReceived() const;
     /// Requests quarantined since this object was made (see endpointRefused()).
     int quarantined() const { return int(m_quarantine.size()); }
+    QString lastQuarantineReason() const { return m_lastQuarantine; }
 
     /// The child program: $BRIDGESCOPE_DDS, beside this program, in ../libexec/bridgescope, or in
     /// the build tree.
@@ -162,6 +176,8 @@ signals:
     void monitorFailed(const QString& topic, const QString& why);
     /// The child ended without being asked to and will be started again.
     void restarted(const QString& why);
+    /// A restart loop was detected and broken (restartLoopsBroken()); `what` says how.
+    void restartLoopBroken(const QString& what);
     /// The participant is on the domain (after start() and after each restart), or could not be
     /// made there (`ok` false, lastError() says why).
     void joined(bool ok);
@@ -209,7 +225,11 @@ private:
     QTimer m_watchdog;
     QTimer m_restartTimer;
     int m_restartsInARow = 0;
+    int m_unexplainedInARow = 0; ///< restarts in a row without a request quarantined for them
     quint64 m_restarts = 0;
+    quint64 m_peerRestarts = 0;
+    int m_loopsBroken = 0;
+    bool m_limitedGraph = false; ///< since a loop was broken, until stop()
     QString m_restartReason;
     QString m_failure; ///< why the child is being ended (a frame that did not read, silence)
     QString m_error;
@@ -237,6 +257,7 @@ private:
     QHash<QString, Ros2Protocol::EndpointRequest> m_unanswered;
     /// Requests during which a child ended, by key, with why: never sent again.
     QHash<QString, QString> m_quarantine;
+    QString m_lastQuarantine;
     static QString endpointKey(bool advertise, const Ros2Protocol::EndpointRequest& e);
     /// Sends an Advertise or Subscribe, waiting for its answer; false when it is refused at once.
     bool requestEndpoint(bool advertise, const Ros2Protocol::EndpointRequest& e);

@@ -192,7 +192,7 @@ QByteArray encodeStart(const StartRequest& r)
 {
     Writer w;
     w.u32(quint32(r.options.domain));
-    w.u8(r.options.localhostOnly ? 1 : 0);
+    w.u8((r.options.localhostOnly ? 1 : 0) | (r.options.limitedGraph ? 2 : 0));
     w.u32(quint32(r.graphIntervalMs));
     return w.data();
 }
@@ -205,11 +205,13 @@ std::optional<StartRequest> decodeStart(const QByteArray& body)
     const quint32 domain = r.u32();
     const quint8 local = r.u8();
     const quint32 interval = r.u32();
-    if (!r.done() || local > 1 || domain > quint32(Ros2Options::kMaxDomain) || interval < 1 || interval > 3'600'000)
+    if (!r.done() || local > 3 || domain > quint32(Ros2Options::kMaxDomain) || interval < 1
+        || interval > 3'600'000)
         return std::nullopt;
     s.options.domain = int(domain);
     s.graphIntervalMs = int(interval);
-    s.options.localhostOnly = local == 1;
+    s.options.localhostOnly = (local & 1) != 0;
+    s.options.limitedGraph = (local & 2) != 0;
     return s;
 }
 

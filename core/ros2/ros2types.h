@@ -38,6 +38,11 @@ struct Ros2Options
     /// UDP on 127.0.0.1 only, with unicast discovery of the participants on this host (as
     /// ROS_LOCALHOST_ONLY=1 does); otherwise every interface, multicast discovery and shared memory.
     bool localhostOnly = false;
+    /// The child's graph within a tenth of its bounds: set by Ros2Participant after a loop of
+    /// restarts no quarantine explains (issue 41), never by a user.
+    bool limitedGraph = false;
+    static constexpr int kLimitedEndpointsPerParticipant = 1'000;
+    static constexpr int kLimitedEndpoints = 20'000;
 
     /// ROS_DOMAIN_ID and ROS_LOCALHOST_ONLY from the environment; `error` says why a set value was
     /// not taken (then the default stays).

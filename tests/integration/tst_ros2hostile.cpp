@@ -179,6 +179,53 @@ private slots:
         QVERIFY2(watch.exitCode() != -1, qPrintable(err));
     }
 
+    // Issue 41: a loop of restarts that no quarantine explains (a peer's discovery that kills every
+    // child: BRIDGESCOPE_DDS_TEST_CRASH_UNLESS_LIMITED makes each abort a second after it joined unless
+    // its graph is limited) is detected after kLoopRestarts, broken by a limited graph, counted
+    // (caused by peers when the node was in its graph) and said: the status text, `discover`'s
+    // stderr and JSON.
+    void aLoopOfRestartsIsDetectedAndBroken()
+    {
+        const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
+        Ros2Peer talker(domain, steadyTalker());
+        QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
+        qputenv("BRIDGESCOPE_DDS_TEST_CRASH_UNLESS_LIMITED", "1000");
+        Ros2Participant p;
+        QSignalSpy loops(&p, &Ros2Participant::restartLoopBroken);
+        QString error;
+        QVERIFY2(p.start({domain, true}, &error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(loops.size(), 1, 30000);
+        QCOMPARE(p.restarts(), quint64(Ros2Participant::kLoopRestarts));
+        QVERIFY2(loops.at(0).at(0).toString().contains(u"graph limited (1000 endpoints a participant"_s),
+                 qPrintable(loops.at(0).at(0).toString()));
+        // the limited child stays: it lists the node and counts its samples for longer than the
+        // children before it lived
+        QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 20000);
+        p.monitor(u"/steady"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= 20, 15000);
+        QCOMPARE(p.restarts(), quint64(Ros2Participant::kLoopRestarts));
+        QCOMPARE(p.restartLoopsBroken(), 1);
+        QVERIFY2(p.peerRestarts() <= p.restarts(), qPrintable(p.restartText()));
+        QVERIFY2(p.restartText().contains(u"restarted 3 time"_s)
+                     && p.restartText().contains(u", %1 caused by peers"_s.arg(p.peerRestarts()))
+                     && p.restartText().contains(u"a restart loop broken: the graph limited"_s),
+                 qPrintable(p.restartText()));
+        p.stop();
+
+        QProcess discover;
+        discover.start(QStringLiteral(BRIDGESCOPE_BINARY), discoverArgs(domain, 15));
+        QVERIFY(discover.waitForFinished(60000));
+        qunsetenv("BRIDGESCOPE_DDS_TEST_CRASH_UNLESS_LIMITED");
+        const QByteArray out = discover.readAllStandardOutput();
+        const QString err = QString::fromUtf8(discover.readAllStandardError());
+        QVERIFY2(err.contains(u"a restart loop: 3 restarts in a row"_s), qPrintable(err));
+        const QJsonObject ros2 = QJsonDocument::fromJson(out).object().value(u"ros2"_s).toObject();
+        QCOMPARE(ros2.value(u"discovery_restarts"_s).toInt(), 3);
+        QCOMPARE(ros2.value(u"restart_loops_broken"_s).toInt(), 1);
+        QVERIFY(ros2.contains(u"discovery_restarts_by_peers"_s));
+        QVERIFY2(listsSteady(out), out.constData());
+    }
+
     // Issue 41: one peer announcing 700 writers of 60,000-character topics made the child send a
     // graph frame of over 65 MiB, which the parent refused and restarted it for, again and again
     // (ROS 2 discovery down for good); one announcing 12,000 writers on one topic, each of a type

@@ -38,7 +38,7 @@ void peer_print_usage(FILE *out, const char *prog)
         "  --many N[@FIRST]:PREFIX:TYPE[:RATE_HZ[:QOS]]   N more publishers (at most %u, once), on\n"
         "                             PREFIX0000.. or PREFIX<FIRST>..; RATE_HZ 0: they never publish\n"
         "  --count N                  stop each publisher after N samples (default unlimited)\n"
-        "  --duration SEC             exit after SEC seconds (default 30, at most 600)\n"
+        "  --duration SEC             exit after SEC seconds (default 30, at most 3600)\n"
         "  --size BYTES               PointCloud2 data and Opaque blob size (default 1024, at most %u)\n"
         "  --lease-ms MS              participant lease duration (default 2000, 100..3600000)\n"
         "  --exit-hard                end with _exit(0), deleting nothing (no goodbye on the wire)\n"
@@ -583,8 +583,8 @@ enum peer_parse_result peer_parse_options(int argc, char **argv, struct peer_opt
             }
             o->count = u;
         } else if (strcmp(opt, "--duration") == 0) {
-            if (!parse_double(val, 0.0, true, 600.0, &o->duration_s)) {
-                set_err(err, errlen, "bad --duration '%s' (seconds, more than 0, at most 600)", val);
+            if (!parse_double(val, 0.0, true, 3600.0, &o->duration_s)) {
+                set_err(err, errlen, "bad --duration '%s' (seconds, more than 0, at most 3600)", val);
                 return PEER_PARSE_ERROR;
             }
         } else if (strcmp(opt, "--size") == 0) {

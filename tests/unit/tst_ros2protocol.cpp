@@ -98,7 +98,15 @@ private slots:
         QVERIFY(start);
         QCOMPARE(start->options.domain, 42);
         QVERIFY(start->options.localhostOnly);
+        QVERIFY(!start->options.limitedGraph);
         QCOMPARE(start->graphIntervalMs, 20);
+        Ros2Options limited {7, false};
+        limited.limitedGraph = true; // after a loop of restarts (issue 41)
+        const auto restart = decodeStart(encodeStart({limited, 250}));
+        QVERIFY(restart && restart->options.limitedGraph && !restart->options.localhostOnly);
+        QByteArray flags = encodeStart({limited, 250});
+        flags[4] = 4; // no such flag
+        QVERIFY(!decodeStart(flags));
 
         const auto watch = decodeWatch(encodeWatch({u"/pose"_s, 5, 1 << 20}));
         QVERIFY(watch);
