@@ -12,6 +12,7 @@
 #include "demo/demolab.h"
 #include "mqtt/mqttprofile.h"
 #include "namecheck.h"
+#include "viewaudit.h"
 #include "ros/rostopicmodel.h"
 #include "session/livesession.h"
 #include "widgets/common/nameheader.h"
@@ -186,7 +187,8 @@ private slots:
                 model->index(0, MappingModel::HealthColumn).data().toString().contains(u"Hz"_s), 20000);
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
             table->selectRow(0);
-            QTest::qWait(1500); // figures grow once a second
+            // figures grow once a second: the picture once none is cut
+            (void)QTest::qWaitFor([&w] { return ViewAudit::elidedFiguresIn(w->mapPage()).isEmpty(); }, 3000);
             w->grab().save(dir + u"/map-1280x800-%1.png"_s.arg(tab));
         }
         for (int column : {int(MappingModel::RosTopicColumn), int(MappingModel::MqttTopicColumn)}) {

@@ -19,6 +19,7 @@
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "viewaudit.h"
 #include "viewhelpers.h"
 #include "watch/linkmodel.h"
 #include "widgets/common/ecdfchart.h"
@@ -110,7 +111,8 @@ class TestRestoredState : public QObject
         for (QWidget* page : {static_cast<QWidget*>(w.discoverPage()), static_cast<QWidget*>(w.mapPage()),
                               static_cast<QWidget*>(w.linksPage()), static_cast<QWidget*>(w.measurePage())}) {
             w.pages()->setCurrentWidget(page);
-            QTest::qWait(300); // the columns fit themselves 100 ms after they are shown
+            // The columns fit themselves 100 ms after they are shown: until none cuts a figure.
+            (void)QTest::qWaitFor([page] { return ViewAudit::elidedFiguresIn(page).isEmpty(); }, 3000);
         }
     }
 
@@ -254,7 +256,8 @@ private slots:
                                   qPrintable(u"the values show %1 px of %2"_s.arg(valueShown()).arg(room)),
                                   5000);
 
-        QTest::qWait(1500); // the figures grow once a second
+        // The figures grow once a second: until none is cut.
+        (void)QTest::qWaitFor([&w] { return ViewAudit::elidedFiguresIn(w.discoverPage()).isEmpty(); }, 3000);
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty())
             QVERIFY(w.grab().save(dir + u"/restored-discover.png"_s));
         // The ROS names keep their last levels whole and stay told apart (it showed
