@@ -122,12 +122,7 @@ const QLabel* readOnlyNote(const ConfigEditor* editor)
 template<class Check> QString settled(Check check)
 {
     QString problem;
-    for (int attempt = 0; attempt < 40; ++attempt) {
-        problem = check();
-        if (problem.isEmpty())
-            break;
-        QTest::qWait(100);
-    }
+    (void)QTest::qWaitFor([&] { return (problem = check()).isEmpty(); }, 4000);
     return problem;
 }
 } // namespace

@@ -127,12 +127,9 @@ private:
         // The Map's ROS topics are a namespace tree: every row's own segment whole.
         for (int column : {int(RosTopicTree::TopicColumn), int(RosTopicTree::TypeColumn)}) {
             QString problem;
-            for (int attempt = 0; attempt < 30; ++attempt) {
-                problem = treeNamesShownProblem(w->mapPage()->rosView(), column, 19);
-                if (problem.isEmpty())
-                    break;
-                QTest::qWait(100);
-            }
+            (void)QTest::qWaitFor(
+                [&] { return (problem = treeNamesShownProblem(w->mapPage()->rosView(), column, 19)).isEmpty(); },
+                3000);
             QVERIFY2(problem.isEmpty(), qPrintable(problem));
         }
         checkNames(w->mapPage()->editor()->table(), MappingModel::RosTopicColumn, 2);
