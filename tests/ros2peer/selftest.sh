@@ -70,7 +70,7 @@ bad_args=(
     "--domain 1 --sub /a:std_msgs/msg/String:depth=0"
     "--domain 1 --sub /1a:std_msgs/msg/String"
     "--domain 1 --size 4194305"
-    "--domain 1 --duration 601"
+    "--domain 1 --duration 3601"
     "--domain 1 --lease-ms 5"
     "--domain 1 --node /ns/"
     "--domain 1 --bogus"
@@ -95,8 +95,10 @@ bad_args=(
 )
 for args in "${bad_args[@]}"; do
     # shellcheck disable=SC2086 # word splitting wanted
-    "$peer" $args > "$work/bad.out" 2> "$work/bad.err"
+    # Bounded: a command line that is accepted by mistake would otherwise run for its --duration.
+    timeout 10 "$peer" $args > "$work/bad.out" 2> "$work/bad.err"
     rc=$?
+    [ "$rc" = 124 ] && fail "'$args' was accepted and ran (killed after 10 s), want exit 2"
     [ "$rc" = 2 ] || fail "'$args' exited $rc, want 2"
     grep -q . "$work/bad.err" || fail "'$args': no message on stderr"
 done
