@@ -1206,14 +1206,18 @@ private slots:
     {
         QTemporaryDir dir;
         QByteArray text = "/a,/b\r\n";
-        for (int i = 0; i < 60'000; ++i)
+        // 600,000 rows: about 6 s of work for a Debug build, so that the signal finds it busy
+        // (60,000 were done in 0.7 s, before the signal, on a fast machine).
+        text.reserve(600'000 * 32);
+        for (int i = 0; i < 600'000; ++i)
             text += "1700000000.000000000," + QByteArray::number(1700000001 + i) + ".000000000\r\n";
         const QString csv = writeFile(dir, u"shared.csv"_s, text);
         QProcess p;
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, csv, u"--format"_s, u"md"_s});
         QVERIFY(p.waitForStarted());
         QVERIFY(waitUntilCaught(p, SIGTERM));
-        QTest::qWait(1000); // the old code was in the keys by now
+        QTest::qWait(500); // reading and joining by now
+        QVERIFY2(p.state() == QProcess::Running, "the report ended before the signal: make its input larger");
         QElapsedTimer clock;
         clock.start();
         signalProcess(p.processId(), SIGTERM);
