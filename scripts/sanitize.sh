@@ -63,7 +63,10 @@ if [ "$what" = asan ] || [ "$what" = all ]; then
     export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1"
     export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
     export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan.supp"
-    run "ASan+UBSan (unit, integration)" "$root/build-asan" address,undefined -L 'unit|integration' --
+    # Tests labelled asan-long (real experiments, minutes under ASan) only when asked: CI's time.
+    long=(-LE asan-long)
+    [ "${BRIDGESCOPE_ASAN_LONG:-0}" = 1 ] && long=()
+    run "ASan+UBSan (unit, integration)" "$root/build-asan" address,undefined -L 'unit|integration' "${long[@]}" --
     unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
 fi
 if [ "$what" = tsan ] || [ "$what" = all ]; then
