@@ -25,12 +25,14 @@ double timeSpanFor(int seconds)
 } // namespace
 
 RateChart::RateChart(QWidget* parent)
-    : QChartView(parent)
+    // Our chart from the start: QChartView(parent) makes a chart of its own, and setChart()
+    // releases it without deleting it (LeakSanitizer found it behind every window).
+    : QChartView(new QChart, parent)
     , m_series(new QLineSeries)
     , m_x(new QValueAxis)
     , m_y(new QValueAxis)
 {
-    auto* chart = new QChart;
+    QChart* chart = this->chart();
     chart->legend()->hide();
     chart->addSeries(m_series);
     chart->addAxis(m_x, Qt::AlignBottom);
@@ -39,7 +41,6 @@ RateChart::RateChart(QWidget* parent)
     m_series->attachAxis(m_y);
     m_x->setTitleText(tr("seconds ago"));
     chart->setMargins(QMargins(2, 2, 2, 2));
-    setChart(chart);
     ChartStyle::apply(chart, palette());
     setRenderHint(QPainter::Antialiasing);
     setMinimumHeight(160);

@@ -28,14 +28,16 @@ qint64 timeStep(qint64 spanSeconds, int wanted)
 } // namespace
 
 TimelineChart::TimelineChart(QWidget* parent)
-    : QChartView(parent)
+    // Our chart from the start: QChartView(parent) makes a chart of its own, and setChart()
+    // releases it without deleting it (LeakSanitizer found it behind every window).
+    : QChartView(new QChart, parent)
     , m_mean(new QLineSeries)
     , m_max(new QLineSeries)
     , m_x(new QDateTimeAxis)
     , m_y(new QValueAxis)
 {
     setObjectName(u"latencyTimeline"_s);
-    auto* chart = new QChart;
+    QChart* chart = this->chart();
     chart->setMargins(QMargins(4, 4, 4, 4));
     chart->legend()->setAlignment(Qt::AlignBottom);
     const QColor color(seriesColor(0));
@@ -54,7 +56,6 @@ TimelineChart::TimelineChart(QWidget* parent)
     }
     m_x->setTitleText(tr("time of the sample"));
     m_y->setTitleText(tr("latency [ms]"));
-    setChart(chart);
     ChartStyle::apply(chart, palette());
     setRenderHint(QPainter::Antialiasing);
     refresh();

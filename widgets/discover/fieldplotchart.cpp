@@ -29,11 +29,13 @@ constexpr double kZoomStep = 0.8; // a wheel notch or a + shows this share of th
 } // namespace
 
 FieldPlotChart::FieldPlotChart(QWidget* parent)
-    : QChartView(parent)
+    // Our chart from the start: QChartView(parent) makes a chart of its own, and setChart()
+    // releases it without deleting it (LeakSanitizer found it behind every window).
+    : QChartView(new QChart, parent)
     , m_x(new QValueAxis)
     , m_y(new QValueAxis)
 {
-    auto* chart = new QChart;
+    QChart* chart = this->chart();
     chart->addAxis(m_x, Qt::AlignBottom);
     chart->addAxis(m_y, Qt::AlignLeft);
     chart->legend()->hide(); // the list of plotted fields is the legend: it has room for whole names
@@ -43,7 +45,6 @@ FieldPlotChart::FieldPlotChart(QWidget* parent)
     m_x->setRange(0, 10);
     m_y->setRange(0, 1);
     chart->setMargins(QMargins(2, 2, 2, 2));
-    setChart(chart);
     ChartStyle::apply(chart, palette());
     setRenderHint(QPainter::Antialiasing);
     setMinimumHeight(160);
