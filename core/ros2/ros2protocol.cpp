@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "ros2/ros2protocol.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <QCoreApplication>
 #include <QtEndian>
+#include <type_traits>
 
 namespace Ros2Protocol {
 
@@ -188,6 +190,132 @@ quint32 Reader::count(int minBytes)
     return n;
 }
 
+namespace {
+
+// Each body's fields, once: the same list writes it (IO = Writer, a const body) and reads it back
+// (IO = Reader), so that the two sides cannot drift apart. The decoders check the values after.
+template <class B, class T>
+using IfBody = std::enable_if_t<std::is_same_v<std::remove_const_t<B>, T>>;
+
+template <class IO, class B>
+IfBody<B, WatchRequest> fieldsOf(IO& io, B& w)
+{
+    io.field(w.topic);
+    io.field(w.maxMessages);
+    io.field(w.maxBytes);
+}
+
+template <class IO, class B>
+IfBody<B, Ros2Endpoint> fieldsOf(IO& io, B& e)
+{
+    io.field(e.gid);
+    io.field(e.topic);
+    io.field(e.type);
+    io.field(e.publisher);
+    io.enumeration(e.qos.reliability, Ros2Qos::Reliable);
+    io.enumeration(e.qos.durability, Ros2Qos::Persistent);
+    io.field(e.qos.depth);
+    io.field(e.node);
+}
+
+template <class IO, class B>
+IfBody<B, TopicStats> fieldsOf(IO& io, B& t)
+{
+    auto& s = t.stats;
+    io.field(t.topic);
+    io.field(s.messages);
+    io.field(s.bytes);
+    io.field(s.lastSize);
+    io.field(s.lastNs);
+    io.field(s.rateHz);
+    io.field(s.bytesPerSecond);
+    io.field(s.type);
+    io.field(s.lost);
+    io.field(s.matchedPublishers);
+    io.field(t.withMessage);
+    if (t.withMessage)
+        io.field(s.lastMessage);
+}
+
+template <class IO, class B>
+IfBody<B, SampleBatch> fieldsOf(IO& io, B& b)
+{
+    io.field(b.topic);
+    io.field(b.dropped);
+    io.list(b.samples, 8 + 4, [&](auto& sample) {
+        io.field(sample.receivedNs);
+        io.field(sample.bytes);
+    });
+}
+
+template <class IO, class B>
+IfBody<B, ArrivalBatch> fieldsOf(IO& io, B& b)
+{
+    io.field(b.dropped);
+    io.list(b.arrivals, 4 + 8 + 4 + 4, [&](auto& a) {
+        io.field(a.topic);
+        io.field(a.receivedNs);
+        io.field(a.size);
+        io.field(a.head);
+    });
+}
+
+template <class IO, class B>
+IfBody<B, EndpointRequest> fieldsOf(IO& io, B& e)
+{
+    io.field(e.topic);
+    io.field(e.type);
+    // only what an endpoint of ours can be: volatile or transient local
+    io.enumeration(e.qos.reliability, Ros2Qos::Reliable);
+    io.enumeration(e.qos.durability, Ros2Qos::TransientLocal);
+    io.field(e.qos.depth);
+}
+
+template <class IO, class B>
+IfBody<B, EndpointDone> fieldsOf(IO& io, B& d)
+{
+    io.field(d.advertise);
+    io.field(d.topic);
+    io.field(d.type);
+    io.field(d.why);
+}
+
+template <class IO, class B>
+IfBody<B, PublishRequest> fieldsOf(IO& io, B& p)
+{
+    io.field(p.topic);
+    io.field(p.cdr);
+}
+
+template <class B>
+QByteArray encodeBody(const B& body, qsizetype reserve = 0)
+{
+    Writer w;
+    w.reserve(reserve);
+    fieldsOf(w, body);
+    return w.data();
+}
+
+/// The body read as a whole and `valid`, or nothing.
+template <class B, class Valid>
+std::optional<B> decodeBody(const QByteArray& bytes, Valid valid)
+{
+    Reader r(bytes);
+    B body;
+    fieldsOf(r, body);
+    if (!r.done() || !valid(body))
+        return std::nullopt;
+    return body;
+}
+
+// The smallest an encoded element can be: what a count is checked against.
+constexpr int kMinEndpointBytes = 4 + 4 + 4 + 1 + 1 + 1 + 4 + 4; // gid, topic, type, flags, depth, node
+constexpr int kMinTopicBytes = 4 * 4; // name, types, publishers, subscribers
+constexpr int kMinNodeBytes = 4 * 3;
+constexpr int kMinStatsBytes = 4 + 8 + 8 + 4 + 8 + 8 + 8 + 4 + 8 + 4 + 1;
+
+} // namespace
+
 QByteArray encodeStart(const StartRequest& r)
 {
     Writer w;
@@ -217,23 +345,12 @@ std::optional<StartRequest> decodeStart(const QByteArray& body)
 
 QByteArray encodeWatch(const WatchRequest& r)
 {
-    Writer w;
-    w.string(r.topic);
-    w.u64(r.maxMessages);
-    w.i64(r.maxBytes);
-    return w.data();
+    return encodeBody(r);
 }
 
 std::optional<WatchRequest> decodeWatch(const QByteArray& body)
 {
-    Reader r(body);
-    WatchRequest w;
-    w.topic = r.string();
-    w.maxMessages = r.u64();
-    w.maxBytes = r.i64();
-    if (!r.done() || w.maxBytes < 0)
-        return std::nullopt;
-    return w;
+    return decodeBody<WatchRequest>(body, [](const WatchRequest& w) { return w.maxBytes >= 0; });
 }
 
 QByteArray encodeStrings(const QStringList& strings)
@@ -271,57 +388,6 @@ std::optional<quint64> decodeNumber(const QByteArray& body)
     return n;
 }
 
-namespace {
-
-// The smallest an encoded element can be: what a count is checked against.
-constexpr int kMinEndpointBytes = 4 + 4 + 4 + 1 + 1 + 1 + 4 + 4; // gid, topic, type, flags, depth, node
-constexpr int kMinTopicBytes = 4 * 4; // name, types, publishers, subscribers
-constexpr int kMinNodeBytes = 4 * 3;
-
-void writeEndpoint(Writer& w, const Ros2Endpoint& e)
-{
-    w.bytes(e.gid);
-    w.string(e.topic);
-    w.string(e.type);
-    w.u8(e.publisher ? 1 : 0);
-    w.u8(quint8(e.qos.reliability));
-    w.u8(quint8(e.qos.durability));
-    w.u32(quint32(e.qos.depth));
-    w.string(e.node);
-}
-
-Ros2Endpoint readEndpoint(Reader& r)
-{
-    Ros2Endpoint e;
-    e.gid = r.bytes();
-    e.topic = r.string();
-    e.type = r.string();
-    const quint8 publisher = r.u8();
-    const quint8 reliability = r.u8();
-    const quint8 durability = r.u8();
-    e.qos.depth = int(r.u32());
-    e.node = r.string();
-    if (e.gid.size() != 16 || publisher > 1 || reliability > Ros2Qos::Reliable || durability > Ros2Qos::Persistent
-        || e.qos.depth < -1)
-        r.fail();
-    e.publisher = publisher == 1;
-    e.qos.reliability = Ros2Qos::Reliability(reliability);
-    e.qos.durability = Ros2Qos::Durability(durability);
-    return e;
-}
-
-QList<Ros2Endpoint> readEndpoints(Reader& r)
-{
-    const quint32 n = r.count(kMinEndpointBytes);
-    QList<Ros2Endpoint> out;
-    out.reserve(qsizetype(n));
-    for (quint32 i = 0; i < n && r.ok(); ++i)
-        out.append(readEndpoint(r));
-    return out;
-}
-
-} // namespace
-
 QByteArray encodeGraph(const GraphUpdate& g, qsizetype maxBytes)
 {
     Writer w;
@@ -340,7 +406,7 @@ QByteArray encodeGraph(const GraphUpdate& g, qsizetype maxBytes)
         quint32 written = 0;
         for (const Ros2Endpoint& e : list) {
             const qsizetype before = w.size();
-            writeEndpoint(w, e);
+            fieldsOf(w, e);
             if (fits(before, 1))
                 ++written;
         }
@@ -397,8 +463,8 @@ std::optional<GraphUpdate> decodeGraph(const QByteArray& body)
         Ros2Topic t;
         t.name = r.string();
         t.types = r.strings();
-        t.publishers = readEndpoints(r);
-        t.subscribers = readEndpoints(r);
+        r.list(t.publishers, kMinEndpointBytes, [&](Ros2Endpoint& e) { fieldsOf(r, e); });
+        r.list(t.subscribers, kMinEndpointBytes, [&](Ros2Endpoint& e) { fieldsOf(r, e); });
         g.graph.topics.append(std::move(t));
     }
     const quint32 nodes = r.count(kMinNodeBytes);
@@ -410,6 +476,11 @@ std::optional<GraphUpdate> decodeGraph(const QByteArray& body)
         n.subscribes = r.strings();
         g.graph.nodes.append(std::move(n));
     }
+    for (const Ros2Topic& t : std::as_const(g.graph.topics))
+        for (const QList<Ros2Endpoint>* list : {&t.publishers, &t.subscribers})
+            for (const Ros2Endpoint& e : *list)
+                if (e.gid.size() != 16 || e.qos.depth < -1)
+                    r.fail();
     // Ros2Graph::build() gives each topic once, sorted by name: a list that is not did not come
     // from it.
     for (qsizetype i = 1; i < g.graph.topics.size() && r.ok(); ++i)
@@ -423,55 +494,21 @@ std::optional<GraphUpdate> decodeGraph(const QByteArray& body)
 QByteArray encodeStats(const QList<TopicStats>& stats)
 {
     Writer w;
-    w.u32(quint32(stats.size()));
-    for (const TopicStats& t : stats) {
-        const Ros2MonitorStats& s = t.stats;
-        w.string(t.topic);
-        w.u64(s.messages);
-        w.u64(s.bytes);
-        w.u32(quint32(s.lastSize));
-        w.i64(s.lastNs);
-        w.f64(s.rateHz);
-        w.f64(s.bytesPerSecond);
-        w.string(s.type);
-        w.u64(s.lost);
-        w.u32(quint32(s.matchedPublishers));
-        w.u8(t.withMessage ? 1 : 0);
-        if (t.withMessage)
-            w.bytes(s.lastMessage);
-    }
+    w.list(stats, kMinStatsBytes, [&](const TopicStats& t) { fieldsOf(w, t); });
     return w.data();
 }
 
 std::optional<QList<TopicStats>> decodeStats(const QByteArray& body)
 {
     Reader r(body);
-    constexpr int kMinBytes = 4 + 8 + 8 + 4 + 8 + 8 + 8 + 4 + 8 + 4 + 1;
-    const quint32 n = r.count(kMinBytes);
     QList<TopicStats> out;
-    out.reserve(qsizetype(n));
-    for (quint32 i = 0; i < n && r.ok(); ++i) {
-        TopicStats t;
-        Ros2MonitorStats& s = t.stats;
-        t.topic = r.string();
-        s.messages = r.u64();
-        s.bytes = r.u64();
-        s.lastSize = int(r.u32());
-        s.lastNs = r.i64();
-        s.rateHz = r.f64();
-        s.bytesPerSecond = r.f64();
-        s.type = r.string();
-        s.lost = r.u64();
-        s.matchedPublishers = int(r.u32());
-        const quint8 with = r.u8();
-        if (with > 1 || s.lastSize < 0 || s.matchedPublishers < 0 || !std::isfinite(s.rateHz)
+    r.list(out, kMinStatsBytes, [&](TopicStats& t) {
+        fieldsOf(r, t);
+        const Ros2MonitorStats& s = t.stats;
+        if (s.lastSize < 0 || s.matchedPublishers < 0 || !std::isfinite(s.rateHz)
             || !std::isfinite(s.bytesPerSecond) || s.rateHz < 0 || s.bytesPerSecond < 0)
             r.fail();
-        t.withMessage = with == 1;
-        if (t.withMessage)
-            s.lastMessage = r.bytes();
-        out.append(std::move(t));
-    }
+    });
     if (!r.done())
         return std::nullopt;
     return out;
@@ -479,149 +516,65 @@ std::optional<QList<TopicStats>> decodeStats(const QByteArray& body)
 
 QByteArray encodeSamples(const SampleBatch& b)
 {
-    Writer w;
     qsizetype size = 4 + b.topic.size() * 3 + 8 + 4;
     for (const Ros2Sample& s : b.samples)
         size += 8 + 4 + s.bytes.size();
-    w.reserve(size);
-    w.string(b.topic);
-    w.u64(b.dropped);
-    w.u32(quint32(b.samples.size()));
-    for (const Ros2Sample& s : b.samples) {
-        w.i64(s.receivedNs);
-        w.bytes(s.bytes);
-    }
-    return w.data();
+    return encodeBody(b, size);
 }
 
 std::optional<SampleBatch> decodeSamples(const QByteArray& body)
 {
-    Reader r(body);
-    SampleBatch b;
-    b.topic = r.string();
-    b.dropped = r.u64();
-    const quint32 n = r.count(8 + 4);
-    b.samples.reserve(n);
-    for (quint32 i = 0; i < n && r.ok(); ++i) {
-        Ros2Sample s;
-        s.receivedNs = r.i64();
-        s.bytes = r.bytes();
-        b.samples.push_back(std::move(s));
-    }
-    if (!r.done())
-        return std::nullopt;
-    return b;
+    return decodeBody<SampleBatch>(body, [](const SampleBatch&) { return true; });
 }
 
 QByteArray encodeArrivals(const ArrivalBatch& b)
 {
-    Writer w;
-    w.u64(b.dropped);
-    w.u32(quint32(b.arrivals.size()));
-    for (const Ros2Arrival& a : b.arrivals) {
-        w.string(a.topic);
-        w.i64(a.receivedNs);
-        w.u32(quint32(a.size));
-        w.bytes(a.head);
-    }
-    return w.data();
+    return encodeBody(b);
 }
 
 std::optional<ArrivalBatch> decodeArrivals(const QByteArray& body)
 {
-    Reader r(body);
-    ArrivalBatch b;
-    b.dropped = r.u64();
-    const quint32 n = r.count(4 + 8 + 4 + 4);
-    b.arrivals.reserve(n);
-    for (quint32 i = 0; i < n && r.ok(); ++i) {
-        Ros2Arrival a;
-        a.topic = r.string();
-        a.receivedNs = r.i64();
-        a.size = int(r.u32());
-        a.head = r.bytes();
-        if (a.size < 0 || a.head.size() > Ros2Arrival::kHeadBytes)
-            r.fail();
-        b.arrivals.push_back(std::move(a));
-    }
-    if (!r.done())
-        return std::nullopt;
-    return b;
+    return decodeBody<ArrivalBatch>(body, [](const ArrivalBatch& b) {
+        return std::all_of(b.arrivals.begin(), b.arrivals.end(), [](const Ros2Arrival& a) {
+            return a.size >= 0 && a.head.size() <= Ros2Arrival::kHeadBytes;
+        });
+    });
 }
 
 QByteArray encodeEndpoint(const EndpointRequest& r)
 {
-    Writer w;
-    w.string(r.topic);
-    w.string(r.type);
-    w.u8(quint8(r.qos.reliability));
-    w.u8(quint8(r.qos.durability));
-    w.u32(quint32(r.qos.depth));
-    return w.data();
+    return encodeBody(r);
 }
 
 std::optional<EndpointRequest> decodeEndpoint(const QByteArray& body)
 {
-    Reader r(body);
-    EndpointRequest e;
-    e.topic = r.string();
-    e.type = r.string();
-    const quint8 reliability = r.u8();
-    const quint8 durability = r.u8();
-    const quint32 depth = r.u32();
-    // only what an endpoint of ours can be: volatile or transient local, keep last 1..kMaxDepth
-    if (!r.done() || e.topic.isEmpty() || e.type.isEmpty() || reliability > Ros2Qos::Reliable
-        || durability > Ros2Qos::TransientLocal || depth < 1 || depth > quint32(kMaxDepth))
-        return std::nullopt;
-    e.qos.reliability = Ros2Qos::Reliability(reliability);
-    e.qos.durability = Ros2Qos::Durability(durability);
-    e.qos.depth = int(depth);
-    return e;
+    // keep last 1..kMaxDepth (a depth past INT_MAX reads negative)
+    return decodeBody<EndpointRequest>(body, [](const EndpointRequest& e) {
+        return !e.topic.isEmpty() && !e.type.isEmpty() && e.qos.depth >= 1 && e.qos.depth <= kMaxDepth;
+    });
 }
 
 QByteArray encodeEndpointDone(const EndpointDone& d)
 {
-    Writer w;
-    w.u8(d.advertise ? 1 : 0);
-    w.string(d.topic);
-    w.string(d.type);
-    w.string(d.why);
-    return w.data();
+    return encodeBody(d);
 }
 
 std::optional<EndpointDone> decodeEndpointDone(const QByteArray& body)
 {
-    Reader r(body);
-    EndpointDone d;
-    const quint8 advertise = r.u8();
-    d.advertise = advertise == 1;
-    d.topic = r.string();
-    d.type = r.string();
-    d.why = r.string();
-    if (advertise > 1 || !r.done())
-        return std::nullopt;
-    return d;
+    return decodeBody<EndpointDone>(body, [](const EndpointDone&) { return true; });
 }
 
 QByteArray encodePublish(const PublishRequest& r)
 {
-    Writer w;
-    w.reserve(4 + r.topic.size() * 3 + 4 + r.cdr.size());
-    w.string(r.topic);
-    w.bytes(r.cdr);
-    return w.data();
+    return encodeBody(r, 4 + r.topic.size() * 3 + 4 + r.cdr.size());
 }
 
 std::optional<PublishRequest> decodePublish(const QByteArray& body)
 {
-    Reader r(body);
-    PublishRequest p;
-    p.topic = r.string();
-    p.cdr = r.bytes();
     // a sample is at least its encapsulation header
-    if (!r.done() || p.topic.isEmpty() || p.cdr.size() < 4)
-        return std::nullopt;
-    return p;
+    return decodeBody<PublishRequest>(body, [](const PublishRequest& p) {
+        return !p.topic.isEmpty() && p.cdr.size() >= 4;
+    });
 }
 
 } // namespace Ros2Protocol

@@ -97,6 +97,32 @@ public:
     void bytes(const QByteArray& b);
     void string(const QString& s) { bytes(s.toUtf8()); }
     void strings(const QStringList& list);
+    /// One name for every field, the same as Reader's: a body's field list (ros2protocol.cpp,
+    /// fieldsOf) is written once and serves encoding and decoding alike.
+    void field(bool v) { u8(v ? 1 : 0); }
+    void field(quint8 v) { u8(v); }
+    void field(int v) { u32(quint32(v)); }
+    void field(quint32 v) { u32(v); }
+    void field(quint64 v) { u64(v); }
+    void field(qint64 v) { i64(v); }
+    void field(double v) { f64(v); }
+    void field(const QByteArray& v) { bytes(v); }
+    void field(const QString& v) { string(v); }
+    void field(const QStringList& v) { strings(v); }
+    /// An enum in one byte; `max` is for the reader.
+    template <class E>
+    void enumeration(E v, int /*max*/)
+    {
+        u8(quint8(v));
+    }
+    /// A count, then each element as `each` writes it.
+    template <class List, class Each>
+    void list(const List& elements, int /*minBytes*/, Each each)
+    {
+        u32(quint32(elements.size()));
+        for (const auto& e : elements)
+            each(e);
+    }
     /// Room for `bytes` in all, so that a body of megabytes is not copied as it grows.
     void reserve(qsizetype bytes) { m_bytes.reserve(bytes); }
     qsizetype size() const { return m_bytes.size(); }
@@ -130,6 +156,46 @@ public:
     /// A count of elements of at least `minBytes` each: 0 and a failure when the bytes left cannot
     /// hold that many, so that no count from the stream sizes an allocation on its own.
     quint32 count(int minBytes);
+    /// Writer's field() read back: a bool is 0 or 1, anything else fails.
+    void field(bool& v)
+    {
+        const quint8 b = u8();
+        if (b > 1)
+            fail();
+        v = b == 1;
+    }
+    void field(quint8& v) { v = u8(); }
+    void field(int& v) { v = int(u32()); } ///< past INT_MAX it is negative: the decoders' checks see it
+    void field(quint32& v) { v = u32(); }
+    void field(quint64& v) { v = u64(); }
+    void field(qint64& v) { v = i64(); }
+    void field(double& v) { v = f64(); }
+    void field(QByteArray& v) { v = bytes(); }
+    void field(QString& v) { v = string(); }
+    void field(QStringList& v) { v = strings(); }
+    /// An enum of at most `max`: a byte past it fails and leaves `v` as it was (never an enum
+    /// holding a value it does not have).
+    template <class E>
+    void enumeration(E& v, int max)
+    {
+        const quint8 b = u8();
+        if (b > max)
+            fail();
+        else
+            v = E(b);
+    }
+    /// A count of elements of at least `minBytes` each (count()), then each as `each` reads it.
+    template <class List, class Each>
+    void list(List& elements, int minBytes, Each each)
+    {
+        const quint32 n = count(minBytes);
+        elements.reserve(qsizetype(n));
+        for (quint32 i = 0; i < n && m_ok; ++i) {
+            typename List::value_type e;
+            each(e);
+            elements.push_back(std::move(e));
+        }
+    }
     bool ok() const { return m_ok; }
     bool atEnd() const { return m_pos == m_bytes.size(); }
     /// ok() and every byte read.

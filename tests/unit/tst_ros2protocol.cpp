@@ -217,6 +217,17 @@ private slots:
         s.rateHz = std::numeric_limits<double>::quiet_NaN();
         QVERIFY(!decodeStats(encodeStats({{u"/a"_s, s, false}})));
         QVERIFY(!decodeWatch(encodeWatch({u"/a"_s, 1, -1})));
+        // a flag is 0 or 1 (issue 42: one field list for both sides, the check in the reader)
+        QByteArray flag = encodeStats({{u"/a"_s, Ros2MonitorStats {}, false}});
+        QVERIFY(decodeStats(flag));
+        flag[flag.size() - 1] = 2;
+        QVERIFY(!decodeStats(flag));
+        // an enum past its last value never becomes one
+        Reader r(QByteArray(1, char(4)));
+        Ros2Qos::Durability d = Ros2Qos::Volatile;
+        r.enumeration(d, Ros2Qos::Persistent);
+        QVERIFY(!r.ok());
+        QCOMPARE(d, Ros2Qos::Volatile);
     }
 
     // Issue 41: one peer announcing 700 writers of 60,000-character topics made a graph frame of
