@@ -6599,21 +6599,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>Events: every change of a watched link&apos;s or bridge&apos;s state while the run was recorded, from the config and bridge named; alerts are marked.</source>
         <translation>Ereignisse: jede Zustandsänderung einer beobachteten Verbindung oder Bridge während der Aufzeichnung, aus der genannten Konfiguration und Bridge; Alarme sind markiert.</translation>
     </message>
-</context>
-<context>
-    <name>ReportsPage</name>
-    <message>
-        <source>&amp;Join the inputs into one run</source>
-        <translation>Eingaben zu einem Lauf zusammen&amp;führen</translation>
-    </message>
-    <message>
-        <source>CSV: stage latencies in ms, one row per sample</source>
-        <translation>CSV: Stufenlatenzen in ms, eine Zeile je Probe</translation>
-    </message>
-    <message>
-        <source>Runs, suite timestamp CSV files and ROS bags; several are compared side by side</source>
-        <translation>Läufe, Zeitstempel-CSV-Dateien der Suite und ROS-Bags; mehrere werden nebeneinander verglichen</translation>
-    </message>
     <message>
         <source>PDF</source>
         <translation>PDF</translation>
@@ -6637,6 +6622,21 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>JSON</source>
         <translation>JSON</translation>
+    </message>
+</context>
+<context>
+    <name>ReportsPage</name>
+    <message>
+        <source>&amp;Join the inputs into one run</source>
+        <translation>Eingaben zu einem Lauf zusammen&amp;führen</translation>
+    </message>
+    <message>
+        <source>CSV: stage latencies in ms, one row per sample</source>
+        <translation>CSV: Stufenlatenzen in ms, eine Zeile je Probe</translation>
+    </message>
+    <message>
+        <source>Runs, suite timestamp CSV files and ROS bags; several are compared side by side</source>
+        <translation>Läufe, Zeitstempel-CSV-Dateien der Suite und ROS-Bags; mehrere werden nebeneinander verglichen</translation>
     </message>
     <message>
         <source>whole run</source>

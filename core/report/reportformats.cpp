@@ -384,41 +384,41 @@ QString note()
 }
 } // namespace
 
+const QList<ReportFormats::Entry>& ReportFormats::formats()
+{
+    // translated when first asked, after the translator is installed
+    static const QList<Entry> all {
+        {Format::Pdf, u"pdf"_s, tr("PDF"), true,
+         [](const Report& r, bool, QString*) { return ReportPdf::render(r); }},
+        {Format::Html, u"html"_s, tr("HTML (tables and SVG figure)"), true,
+         [](const Report& r, bool, QString*) { return html(r); }},
+        {Format::Markdown, u"md"_s, tr("Markdown"), false,
+         [](const Report& r, bool, QString*) { return markdown(r); }},
+        {Format::Latex, u"tex"_s, tr("LaTeX (booktabs tabular)"), false,
+         [](const Report& r, bool, QString*) { return latex(r); }},
+        {Format::Csv, u"csv"_s, tr("CSV"), false,
+         [](const Report& r, bool perSampleMs, QString* error) { return csv(r, perSampleMs, error); }},
+        {Format::Json, u"json"_s, tr("JSON"), false, [](const Report& r, bool, QString*) { return json(r); }},
+    };
+    return all;
+}
+
+const ReportFormats::Entry& ReportFormats::entry(Format format)
+{
+    for (const Entry& e : formats())
+        if (e.format == format)
+            return e;
+    Q_UNREACHABLE(); // every Format has its row (tst_reportformats)
+}
+
 bool ReportFormats::parse(const QString& name, Format* format)
 {
-    static const QList<std::pair<QString, Format>> names {
-        {u"json"_s, Format::Json}, {u"csv"_s, Format::Csv},   {u"md"_s, Format::Markdown},
-        {u"tex"_s, Format::Latex}, {u"html"_s, Format::Html}, {u"pdf"_s, Format::Pdf}};
-    for (const auto& [n, f] : names)
-        if (n == name.toLower()) {
-            *format = f;
+    for (const Entry& e : formats())
+        if (e.name == name.toLower()) {
+            *format = e.format;
             return true;
         }
     return false;
-}
-
-QString ReportFormats::name(Format format)
-{
-    switch (format) {
-    case Format::Json:
-        return u"json"_s;
-    case Format::Csv:
-        return u"csv"_s;
-    case Format::Markdown:
-        return u"md"_s;
-    case Format::Latex:
-        return u"tex"_s;
-    case Format::Html:
-        return u"html"_s;
-    case Format::Pdf:
-        return u"pdf"_s;
-    }
-    return {};
-}
-
-QString ReportFormats::suffix(Format format)
-{
-    return name(format);
 }
 
 QByteArray ReportFormats::json(const Report& report)
@@ -610,19 +610,5 @@ QByteArray ReportFormats::html(const Report& report)
 
 QByteArray ReportFormats::render(const Report& report, Format format, bool perSampleMs, QString* error)
 {
-    switch (format) {
-    case Format::Json:
-        return json(report);
-    case Format::Csv:
-        return csv(report, perSampleMs, error);
-    case Format::Markdown:
-        return markdown(report);
-    case Format::Latex:
-        return latex(report);
-    case Format::Html:
-        return html(report);
-    case Format::Pdf:
-        return ReportPdf::render(report);
-    }
-    return {};
+    return entry(format).render(report, perSampleMs, error);
 }

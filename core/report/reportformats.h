@@ -3,6 +3,7 @@
 
 #include <QByteArray>
 #include <QCoreApplication>
+#include <QList>
 #include <QString>
 
 class Report;
@@ -18,9 +19,23 @@ class ReportFormats
     Q_DECLARE_TR_FUNCTIONS(ReportFormats)
 public:
     enum class Format { Json, Csv, Markdown, Latex, Html, Pdf };
+    /// A format is one row of formats(): its name (the command line's and the file suffix), the
+    /// title a window offers it by, whether the preview shows it as rich text with the figure,
+    /// and how it is rendered. A new format is a new row.
+    struct Entry
+    {
+        Format format;
+        QString name;
+        QString title;
+        bool richPreview = false;
+        QByteArray (*render)(const Report& report, bool perSampleMs, QString* error) = nullptr;
+    };
+    /// Every format, in the order a window offers them (the most wanted first).
+    static const QList<Entry>& formats();
+    static const Entry& entry(Format format);
     static bool parse(const QString& name, Format* format);
-    static QString name(Format format);
-    static QString suffix(Format format);
+    static QString name(Format format) { return entry(format).name; }
+    static QString suffix(Format format) { return name(format); }
 
     /// The report in `format`; empty with `error` when it has no such form (CSV of several runs).
     /// The PDF needs a QGuiApplication. `perSampleMs`: see csv().

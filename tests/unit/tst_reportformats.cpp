@@ -19,6 +19,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSet>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -82,6 +83,37 @@ private slots:
                 s[i] += qint64(i) * 2'000'000;
         m_inputs << writeCsv(m_dir, u"bridge.csv"_s, slower);
         m_inputs << writeCsv(m_dir, u"overlay.csv"_s, SyntheticRun::paper(400, 0, 3));
+    }
+
+    // One row a format (issue 42): every Format has exactly one, its name reads back, and render()
+    // gives what the row's own function gives.
+    void everyFormatIsOneRow()
+    {
+        using F = ReportFormats::Format;
+        QSet<QString> names;
+        QSet<int> formats;
+        for (const ReportFormats::Entry& e : ReportFormats::formats()) {
+            QVERIFY2(!names.contains(e.name) && !formats.contains(int(e.format)), qPrintable(e.name));
+            names.insert(e.name);
+            formats.insert(int(e.format));
+            QVERIFY(!e.title.isEmpty() && e.render);
+            F back = F::Json;
+            QVERIFY(ReportFormats::parse(e.name.toUpper(), &back));
+            QCOMPARE(back, e.format);
+            QCOMPARE(ReportFormats::suffix(e.format), e.name);
+        }
+        QCOMPARE(formats.size(), int(F::Pdf) + 1);
+        F f = F::Json;
+        QVERIFY(!ReportFormats::parse(u"docx"_s, &f));
+        QString error;
+        const std::optional<Report> one = Report::build({m_inputs.first()}, std::nullopt, {}, &error);
+        QVERIFY2(one, qPrintable(error));
+        QCOMPARE(ReportFormats::render(*one, F::Markdown, false), ReportFormats::markdown(*one));
+        QCOMPARE(ReportFormats::render(*one, F::Csv, true), ReportFormats::csv(*one, true));
+        const std::optional<Report> three = Report::build(m_inputs, std::nullopt, {}, &error);
+        QVERIFY2(three, qPrintable(error));
+        QVERIFY(ReportFormats::render(*three, F::Csv, false, &error).isEmpty());
+        QVERIFY(error.contains(u"--join"_s));
     }
 
     void suiteCsvRoundTripIsByteIdentical()

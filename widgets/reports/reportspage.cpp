@@ -128,15 +128,8 @@ QLayout* ReportsPage::createInputButtons()
 
 QLayout* ReportsPage::createForm()
 {
-    const QList<std::pair<QString, ReportFormats::Format>> formats {
-        {tr("PDF"), ReportFormats::Format::Pdf},
-        {tr("HTML (tables and SVG figure)"), ReportFormats::Format::Html},
-        {tr("Markdown"), ReportFormats::Format::Markdown},
-        {tr("LaTeX (booktabs tabular)"), ReportFormats::Format::Latex},
-        {tr("CSV"), ReportFormats::Format::Csv},
-        {tr("JSON"), ReportFormats::Format::Json}};
-    for (const auto& [label, f] : formats)
-        m_format->addItem(label, int(f));
+    for (const ReportFormats::Entry& f : ReportFormats::formats())
+        m_format->addItem(f.title, int(f.format));
     m_pipeline->setPlaceholderText(tr("optional; otherwise each input's own pipeline"));
     m_pipeline->setClearButtonEnabled(true);
     m_window->setRange(0, 100'000'000);
@@ -321,7 +314,7 @@ void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QStri
     }
     const ReportFormats::Format f = format();
     QString why;
-    if (f == ReportFormats::Format::Html || f == ReportFormats::Format::Pdf) {
+    if (ReportFormats::entry(f).richPreview) {
         // Rich text cannot show inline SVG: the figure comes as an image rendered from it.
         QSvgRenderer svg(ReportFormats::ecdfSvg(*report));
         QImage figure(QSize(720, 400) * 2, QImage::Format_ARGB32_Premultiplied);
