@@ -2,7 +2,8 @@
 #include "experimentfolder.h"
 
 #include "base/regularfile.h"
-#include "experiment/experimentrunner.h"
+#include "experiment/experimentplan.h"
+#include "experiment/throughputresult.h"
 
 #include <QDir>
 #include <QFile>
@@ -46,24 +47,7 @@ QList<ThroughputResult> ExperimentFolder::readThroughput() const
                                  .value(u"sizes"_s)
                                  .toArray();
     for (const QJsonValue& v : sizes) {
-        const QJsonObject o = v.toObject();
-        ThroughputResult r;
-        r.payloadBytes = o.value(u"payload_bytes"_s).toInt();
-        r.level = o.value(u"level"_s).toString().left(256);
-        r.complete = o.value(u"complete"_s).toBool();
-        for (const QJsonValue& pv : o.value(u"rates"_s).toArray()) {
-            const QJsonObject po = pv.toObject();
-            ThroughputPoint p;
-            p.rateHz = po.value(u"rate_hz"_s).toDouble();
-            p.samples = po.value(u"samples"_s).toInteger();
-            p.expected = po.value(u"expected"_s).toInteger();
-            p.dropped = po.value(u"dropped"_s).toInteger();
-            p.p50Ms = po.value(u"p50_ms"_s).toDouble();
-            p.p99Ms = po.value(u"p99_ms"_s).toDouble();
-            p.sustainable = po.value(u"sustainable"_s).toBool();
-            if (r.points.size() < 1000)
-                r.points << p;
-        }
+        const ThroughputResult r = ThroughputResult::fromJson(v.toObject());
         if (results.size() < ExperimentPlan::kMaxCells)
             results << r;
     }

@@ -2,6 +2,7 @@
 #include "experimentreport.h"
 
 #include "base/atomicfile.h"
+#include "experiment/experimentfolder.h"
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"
 #include "latency/palette.h"

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "experiment/experimentrunner.h"
+#include "experiment/experimentstate.h"
+#include "experiment/throughputresult.h"
 #include "latency/latencyseries.h"
 #include "latency/rundata.h"
 #include "latency/latencystats.h"

@@ -558,15 +558,6 @@ bool ExperimentRunner::writeState(QString* error) const
     return false;
 }
 
-double ThroughputResult::maxSustainableHz() const
-{
-    double best = 0;
-    for (const ThroughputPoint& p : points)
-        if (p.sustainable)
-            best = std::max(best, p.rateHz);
-    return best;
-}
-
 void ExperimentRunner::nextProbe()
 {
     if (m_stopping)
@@ -694,25 +685,6 @@ void ExperimentRunner::endProbe(const ThroughputPoint& point)
     emit probeFinished(point);
     if (!m_stopping)
         QTimer::singleShot(0, this, &ExperimentRunner::nextProbe);
-}
-
-QJsonObject ThroughputResult::toJson() const
-{
-    QJsonArray rates;
-    for (const ThroughputPoint& p : points)
-        rates.append(QJsonObject {{u"rate_hz"_s, p.rateHz},
-                                  {u"samples"_s, double(p.samples)},
-                                  {u"expected"_s, double(p.expected)},
-                                  {u"dropped"_s, double(p.dropped)},
-                                  {u"p50_ms"_s, p.p50Ms},
-                                  {u"p99_ms"_s, p.p99Ms},
-                                  {u"sustainable"_s, p.sustainable}});
-    return {{u"payload_bytes"_s, payloadBytes},
-            {u"level"_s, level},
-            {u"complete"_s, complete},
-            {u"max_sustainable_hz"_s, maxSustainableHz()},
-            {u"mb_per_s"_s, megabytesPerSecond()},
-            {u"rates"_s, rates}};
 }
 
 bool ExperimentRunner::writeThroughput() const

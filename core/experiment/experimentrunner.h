@@ -4,37 +4,13 @@
 #include "experiment/experimentfolder.h"
 #include "experiment/experimentplan.h"
 #include "experiment/experimentstate.h"
+#include "experiment/throughputresult.h"
 
 #include <memory>
 #include <QDateTime>
 #include <QJsonObject>
 #include <QObject>
 #include <QString>
-
-/// One rate of the throughput step: what arrived in its window.
-struct ThroughputPoint
-{
-    double rateHz = 0;
-    qint64 samples = 0; ///< complete samples in the window
-    qint64 expected = 0; ///< rate x window
-    qint64 dropped = 0;
-    double p50Ms = 0; ///< of the total
-    double p99Ms = 0;
-    bool sustainable = false;
-};
-
-/// The throughput step of one payload size: rates up to the first one not sustained.
-struct ThroughputResult
-{
-    int payloadBytes = 0;
-    QString level; ///< as the plan writes it, or the bytes
-    QList<ThroughputPoint> points;
-    bool complete = false;
-    /// The highest rate sustained (0: none) and the payload bytes per second it carries.
-    double maxSustainableHz() const;
-    double megabytesPerSecond() const { return maxSustainableHz() * payloadBytes / 1e6; }
-    QJsonObject toJson() const; ///< as DIR/throughput.json and the report's JSON have it
-};
 
 /// Runs an experiment plan cell after cell into a folder: each cell its own lab (servers or the
 /// given ones, bridges, relays for its link profile, nodes), the warm-up, then the samples recorded
