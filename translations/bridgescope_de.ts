@@ -1631,10 +1631,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>Auf Domäne %1 hat kein ROS-2-Teilnehmer geantwortet, und der MQTT-Broker (%2) war nicht erreichbar.</translation>
     </message>
     <message>
-        <source>ROS 2 discovery restarted: the DDS process %1</source>
-        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
-    </message>
-    <message>
         <source>--seconds takes a positive number up to a year</source>
         <translation>--seconds erwartet eine positive Zahl bis zu einem Jahr</translation>
     </message>
@@ -6021,10 +6017,6 @@ Exit status: 0 recorded, 1 nothing recorded (without --allow-empty) or the run f
 Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder Laufdatei nicht schreibbar, 2 falsche Optionen.</translation>
     </message>
     <message>
-        <source>ROS 2 discovery restarted: the DDS process %1</source>
-        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
-    </message>
-    <message>
         <source>not a measurement: %1</source>
         <translation>keine Messung: %1</translation>
     </message>
@@ -7902,6 +7894,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <source>the broker was not reached</source>
         <translation>der Broker war nicht erreichbar</translation>
     </message>
+    <message>
+        <source>ROS 2 discovery restarted: the DDS process %1</source>
+        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
+    </message>
 </context>
 <context>
     <name>SourceMessage</name>
@@ -8280,10 +8276,6 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>watch needs a bridge config, or --broker to watch the links announced there; see bridgescope watch --help</source>
         <translation>watch braucht eine Bridge-Konfiguration oder --broker, um die dort angekündigten Verbindungen zu beobachten; siehe bridgescope watch --help</translation>
-    </message>
-    <message>
-        <source>ROS 2 discovery restarted: the DDS process %1</source>
-        <translation>ROS-2-Erkennung neu gestartet: der DDS-Prozess %1</translation>
     </message>
     <message>
         <source>MQTT message</source>

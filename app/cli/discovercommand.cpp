@@ -2,6 +2,7 @@
 #include "discovercommand.h"
 
 #include "app/cli/clioutput.h"
+#include "app/cli/sourcecheck.h"
 #include "app/cli/rosoptions.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqtttopictree.h"
@@ -299,11 +300,7 @@ void listen(const DiscoverRequest& request, Heard* heard)
     if (request.ros2 && !heard->ros2.start(request.ros2Options, &heard->ros2Error))
         heard->ros2Error = heard->ros2Error.isEmpty() ? Discover::tr("no participant") : heard->ros2Error;
     // said as it happens, not only at the end: a restart of the DDS process is news
-    QObject::connect(&heard->ros2, &Ros2Participant::restartLoopBroken,
-                     [](const QString& what) { err(what); });
-    QObject::connect(&heard->ros2, &Ros2Participant::restarted, [](const QString& why) {
-        err(Discover::tr("ROS 2 discovery restarted: the DDS process %1").arg(why));
-    });
+    sayRos2Restarts(&heard->ros2);
     QObject::connect(&heard->connection, &MqttConnection::stateChanged, [heard](MqttConnection::State s) {
         heard->connected = heard->connected || s == MqttConnection::State::Connected;
     });

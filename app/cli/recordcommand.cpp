@@ -185,9 +185,7 @@ int runRecord(const RecordRequest& request)
         err(why);
         return ExitFailed;
     }
-    QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
-        err(Record::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
-    });
+    sayRos2Restarts(live.ros2());
     MeasureSession measure(&live);
     measure.setRos1(request.ros1);
     measure.setPipeline(request.pipeline);

@@ -4,6 +4,7 @@
 #include "app/cli/clioutput.h"
 #include "base/secrets.h"
 #include "ros/rosgraphpoller.h"
+#include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "session/waitingtext.h"
 
@@ -69,4 +70,12 @@ QString SourceCheck::nothingHeard(bool ros1, bool ros2) const
     if (ros2)
         return tr("the broker was not reached and nobody was heard on ROS 2 domain %1").arg(domain);
     return ros1 ? tr("neither the broker nor the master was reached") : tr("the broker was not reached");
+}
+
+void sayRos2Restarts(Ros2Participant* participant)
+{
+    QObject::connect(participant, &Ros2Participant::restartLoopBroken, [](const QString& what) { err(what); });
+    QObject::connect(participant, &Ros2Participant::restarted, [](const QString& why) {
+        err(SourceCheck::tr("ROS 2 discovery restarted: the DDS process %1").arg(why));
+    });
 }

@@ -8,6 +8,11 @@
 #include <QStringList>
 
 class LiveSession;
+class Ros2Participant;
+
+/// Says on stderr, as it happens, every restart of the participant's DDS process and a loop of
+/// them broken (`record`, `watch` and `discover` alike: a restart is news, not only a count at the end).
+void sayRos2Restarts(Ros2Participant* participant);
 
 /// What `record`, `watch` and `demo`-like commands say when their sources stay silent: within
 /// kGraceMs of the start, on stderr, that the broker or the ROS master cannot be reached (and why)

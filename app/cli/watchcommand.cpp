@@ -409,11 +409,7 @@ bool prepareLive(LiveSession& live, const WatchRequest& request)
         return false;
     }
     // the DDS process ended (a hostile datagram, a runaway): said as it happens, and started again
-    QObject::connect(live.ros2(), &Ros2Participant::restartLoopBroken,
-                     [](const QString& what) { err(what); });
-    QObject::connect(live.ros2(), &Ros2Participant::restarted, [](const QString& reason) {
-        err(Watch::tr("ROS 2 discovery restarted: the DDS process %1").arg(reason));
-    });
+    sayRos2Restarts(live.ros2());
     return true;
 }
 
