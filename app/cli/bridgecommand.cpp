@@ -2,6 +2,7 @@
 #include "bridgecommand.h"
 
 #include "app/cli/clioutput.h"
+#include "base/logging.h"
 #include "base/yamllimits.h"
 #include "base/regularfile.h"
 #include "app/cli/rosoptions.h"
@@ -272,6 +273,7 @@ template<typename B> int runBridge(const BridgeRequest& request)
         logLine(Bridge::tr("%1 of the failed were json payloads over %2 MiB, refused unread")
                     .arg(tooLarge)
                     .arg(Ros2BridgeWire::kMaxJsonBytes / (1024 * 1024)));
+    qCDebug(lcBridge).noquote() << "counters:" << c.text();
     return ExitOk;
 }
 } // namespace

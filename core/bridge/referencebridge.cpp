@@ -356,6 +356,18 @@ ReferenceBridge::~ReferenceBridge()
     stop();
 }
 
+QString ReferenceBridge::Counters::text() const
+{
+    return u"to_mqtt=%1 to_ros=%2 failed=%3 too_large=%4 dropped_to_mqtt=%5 dropped_to_ros=%6 failed_waiting=%7"_s
+        .arg(toMqtt.load())
+        .arg(toRos.load())
+        .arg(failed.load())
+        .arg(tooLarge.load())
+        .arg(droppedToMqtt.load())
+        .arg(droppedToRos.load())
+        .arg(failedWaiting.load());
+}
+
 const ReferenceBridge::Counters& ReferenceBridge::counters() const
 {
     if (d->mqtt) {

@@ -71,6 +71,10 @@ public:
         std::atomic<quint64> droppedToRos {0}; ///< not handed to roscpp, which held its half
         std::atomic<quint64> failedWaiting {0}; ///< waited for the broker, then could not be sent
         std::atomic<qint64> heldBytes {0}; ///< now: waiting for the broker, held by Paho and roscpp
+
+        /// Every counter by name ("to_mqtt=3 to_ros=5 ..."; not the heldBytes gauge), for the
+        /// line `bridge --verbose` ends with.
+        QString text() const;
     };
 
     explicit ReferenceBridge(Log log);
