@@ -159,8 +159,8 @@ void BridgeHop::announce(const QByteArray& payload)
                       .arg(m_route.mqttTopic, info->name));
         return;
     }
-    if (!m_route.rosType
-             .isEmpty()) { // a fixed type: announcements change nothing (v2.5 says so when they differ)
+    // A fixed type: announcements change nothing (v2.5 says so when they differ).
+    if (!m_route.rosType.isEmpty()) {
         if (info->name != m_route.rosType && !std::exchange(m_dialectSaid, true))
             m_log(QCoreApplication::translate("Ros2Bridge", "%1 announces %2, but the config fixes %3: kept")
                       .arg(m_route.mqttTopic, info->name, m_route.rosType));
@@ -189,9 +189,8 @@ std::optional<BridgeMessage> BridgeHop::readMqtt(const QByteArray& payload, std:
             return std::nullopt;
         return BridgeMessage {{QString(), r.rosType, QString(), false, dialect}, std::move(*bytes)};
     }
-    if (!r.rosType.isEmpty())
-        return BridgeMessage {{QString(), r.rosType, QString(), false, dialect},
-                              payload}; // v2.5: never stamped
+    if (!r.rosType.isEmpty()) // v2.5: a fixed type is never stamped
+        return BridgeMessage {{QString(), r.rosType, QString(), false, dialect}, payload};
     std::lock_guard<std::mutex> lock(m_mutex);
     if (!m_announced)
         return std::nullopt;
@@ -295,10 +294,7 @@ bool BridgeHop::advertise(const RosMsgTypeInfo& type)
     QString why;
     m_publisher = m_ros->advertise(m_route, type, &why);
     if (m_publisher < 0) {
-        m_advertised = {};
-        m_refusedType = type.name;
-        m_log(QCoreApplication::translate("Ros2Bridge", "MQTT %1 -> ROS %2: refused: %3")
-                  .arg(m_route.mqttTopic, m_route.rosTopic, why));
+        refuse(type.name, why);
         return false;
     }
     m_advertised = type;
@@ -309,10 +305,23 @@ bool BridgeHop::advertise(const RosMsgTypeInfo& type)
     else
         m_log(QCoreApplication::translate("ReferenceBridge", "MQTT %1 -> ROS %2: the type changed to %3%4")
                   .arg(m_route.mqttTopic, m_route.rosTopic, type.name,
-                       m_typeChanges == kLoggedChanges ? QCoreApplication::translate(
-                           "ReferenceBridge", " (further changes are not logged)")
-                                                       : QString()));
+                       m_typeChanges < kLoggedChanges
+                           ? QString()
+                           : QCoreApplication::translate("ReferenceBridge",
+                                                         " (further changes are not logged)")));
     return true;
+}
+
+/// No publisher, `type` not asked for again: said once. Called with m_mutex held.
+void BridgeHop::refuse(const QString& type, const QString& why)
+{
+    m_refusedType = type;
+    m_log(QCoreApplication::translate("Ros2Bridge", "MQTT %1 -> ROS %2: refused: %3")
+              .arg(m_route.mqttTopic, m_route.rosTopic, why));
+    if (m_publisher >= 0)
+        m_ros->retire(m_publisher);
+    m_publisher = -1;
+    m_advertised = {}; // the next type announced is asked for anew
 }
 
 void BridgeHop::refused(const QString& why)
@@ -321,13 +330,6 @@ void BridgeHop::refused(const QString& why)
     const QString type = !m_advertised.name.isEmpty() ? m_advertised.name
         : m_announced                                 ? m_announced->name
                                                       : QString();
-    if (type == m_refusedType)
-        return;
-    m_refusedType = type;
-    m_log(QCoreApplication::translate("Ros2Bridge", "MQTT %1 -> ROS %2: refused: %3")
-              .arg(m_route.mqttTopic, m_route.rosTopic, why));
-    if (m_publisher >= 0)
-        m_ros->retire(m_publisher);
-    m_publisher = -1;
-    m_advertised = {}; // the next type announced is asked for anew
+    if (type != m_refusedType)
+        refuse(type, why);
 }

@@ -161,6 +161,7 @@ private:
     std::optional<BridgeMessage> readMqtt(const QByteArray& payload, std::optional<qint64>* sentNs);
     bool advertise(const RosMsgTypeInfo& type);
     bool typeChangeAllowed();
+    void refuse(const QString& type, const QString& why);
     void publishLatency(qint64 receivedNs, qint64 sentNs);
 
     BridgeRoute m_route;

@@ -7,7 +7,6 @@
 // counter of the two must be the same (BridgeHop forwards for both), and so must the point at
 // which the latency is taken: the arrival of the MQTT message, as mqtt_client does.
 #include "base/wallclock.h"
-#include "bridge/referencebridge.h"
 #include "messageinbox.h"
 #include "mqtt/mqttlink.h"
 #include "mqttclientros2.h"
