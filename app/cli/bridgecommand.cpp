@@ -2,6 +2,7 @@
 #include "bridgecommand.h"
 
 #include "app/cli/clioutput.h"
+#include "base/logging.h"
 #include "base/yamllimits.h"
 #include "base/regularfile.h"
 #include "app/cli/rosoptions.h"
@@ -75,14 +76,14 @@ struct BridgeRequest
 {
     QString path;
     QByteArray yaml;
-    ReferenceBridge::Options options;
+    BridgeOptions options;
     bool ros2 = false; ///< --ros 2: the ROS 2 bridge on a DDS domain
     Ros2Options ros2Options;
 };
 
 /// The bridge's options from a parsed command line (the options parseBridge() declares, read by
 /// name). -1 to go on, otherwise the exit status.
-int readBridgeOptions(const QCommandLineParser& parser, ReferenceBridge::Options* options)
+int readBridgeOptions(const QCommandLineParser& parser, BridgeOptions* options)
 {
     options->brokerUrl = parser.value(u"broker"_s);
     if (parser.isSet(u"broker-fd"_s)) {
@@ -208,7 +209,7 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     return readBridgeOptions(parser, &request->options);
 }
 
-QString droppedLine(const ReferenceBridge::Counters& c, qint64 maxQueuedBytes)
+QString droppedLine(const BridgeCounters& c, qint64 maxQueuedBytes)
 {
     return Bridge::tr("memory bound (%1 MiB, --max-queued-mib): %2 messages to MQTT and %3 to ROS dropped so "
                       "far, %4 MiB held now")
@@ -252,7 +253,7 @@ template<typename B> int runBridge(const BridgeRequest& request)
                         [&](qint64 elapsedMs) {
                             if (elapsedMs - lastLineMs < 10000)
                                 return;
-                            const ReferenceBridge::Counters& c = bridge.counters();
+                            const BridgeCounters& c = bridge.counters();
                             const quint64 dropped = c.droppedToMqtt.load() + c.droppedToRos.load();
                             if (dropped == droppedBefore)
                                 return;
@@ -261,7 +262,7 @@ template<typename B> int runBridge(const BridgeRequest& request)
                             logLine(droppedLine(c, request.options.maxQueuedBytes));
                         });
     bridge.stop();
-    const ReferenceBridge::Counters& c = bridge.counters();
+    const BridgeCounters& c = bridge.counters();
     logLine(Bridge::tr("stopped: %1 messages to MQTT, %2 to ROS, %3 failed")
                 .arg(c.toMqtt.load())
                 .arg(c.toRos.load())
@@ -272,6 +273,7 @@ template<typename B> int runBridge(const BridgeRequest& request)
         logLine(Bridge::tr("%1 of the failed were json payloads over %2 MiB, refused unread")
                     .arg(tooLarge)
                     .arg(Ros2BridgeWire::kMaxJsonBytes / (1024 * 1024)));
+    qCDebug(lcBridge).noquote() << "counters:" << c.text();
     return ExitOk;
 }
 } // namespace

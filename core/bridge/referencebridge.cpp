@@ -2,7 +2,6 @@
 #include "referencebridge.h"
 
 #include "base/logging.h"
-#include "base/wallclock.h"
 #include "bridge/bridgespec.h"
 #include "mqtt/mqttlink.h"
 #include "ros/rosendpoint.h"
@@ -11,7 +10,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <mutex>
 #include <QCryptographicHash>
 #include <QRegularExpression>
 #include <QtEndian>
@@ -109,240 +107,102 @@ RosRawMessage fromText(const QByteArray& text)
 namespace {
 constexpr const char* kFloat64Md5 = "fdb28210bfa9d7c91146260178d9a584";
 
-/// Whether a message definition starts with a Header field (checked once per type).
-bool startsWithHeader(const QString& definition)
+/// Whether a message definition starts with a Header field.
+bool definitionStartsWithHeader(const QString& definition)
 {
     static const QRegularExpression headerFirst(u"^\\s*(#[^\\n]*\\n\\s*)*(std_msgs/)?Header\\s+\\w+"_s);
     return headerFirst.match(definition).hasMatch();
 }
 
-/// A mapping as the config says it, and its runtime state.
-struct Route : BridgeRoute
+/// The ROS 1 side of the hops: a roscpp node, ROS serialization, mqtt_client v2.2.1's texts.
+class Ros1Side : public BridgeRosSide
 {
-    // Runtime state (mqtt2ros: the announced type and its publisher; stamp publishers).
-    std::mutex mutex;
-    RosMsgTypeInfo announced;
-    bool haveType = false;
-    int publisher = -1;
-    bool advertiseFailed = false; ///< not retried for every message, only when the type changes
-    quint64 typeChanges = 0;
-    int latencyPublisher = -1;
-    int stampIn = -1;
-    int stampOut = -1;
-    std::atomic<bool> typeSent {false}; ///< ros2mqtt: announced on this connection
-    std::atomic<bool> ros2Said {
-        false}; ///< mqtt2ros: a ROS 2 announcement was logged (it comes with every message)
-    QString headerMd5; ///< the type whose Header check is cached (its thread only)
-    bool headerFirst = false;
+public:
+    explicit Ros1Side(RosEndpoint& ros)
+        : m_ros(ros)
+    { }
+    RosTypeRegistry::Dialect dialect() const override { return RosTypeRegistry::Dialect::Ros1; }
 
-    bool hasHeader(const RosRawMessage& m)
+    int advertise(const BridgeRoute& r, const RosMsgTypeInfo& t, QString* error) override
     {
-        if (headerMd5 != m.md5) {
-            headerMd5 = m.md5;
-            headerFirst = startsWithHeader(m.definition);
-        }
-        return headerFirst;
+        return m_ros.advertise(r.rosTopic, t.name, t.md5, t.definition, r.queueSize, r.latched, error);
     }
-    QString sentMd5; ///< ros2mqtt: the type announced (ROS callback thread only)
+    void retire(int publisher) override { m_ros.retire(publisher); }
+    int advertiseStamps(const QString& topic) override
+    {
+        QString why;
+        return m_ros.advertise(topic, QString::fromLatin1(StampCodec::typeName()),
+                               QString::fromLatin1(StampCodec::md5()), StampCodec::definition(), 1000, false,
+                               &why);
+    }
+    int advertiseLatency(const QString& rosTopic) override
+    {
+        QString why;
+        return m_ros.advertise(m_ros.resolve(u"~/latencies/"_s + rosTopic), u"std_msgs/Float64"_s,
+                               QString::fromLatin1(kFloat64Md5), u"float64 data\n"_s, 1, false, &why);
+    }
+    QString publisherLine(const BridgeRoute& r, const RosMsgTypeInfo& t) const override
+    {
+        return ReferenceBridge::tr("MQTT %1 -> ROS %2 (%3%4)")
+            .arg(r.mqttTopic, r.rosTopic, t.name, t.stamped ? ReferenceBridge::tr(", stamped") : QString());
+    }
+    Sent send(int publisher, const QByteArray& bytes) override
+    {
+        const RosEndpoint::Sent sent = m_ros.send(publisher, bytes);
+        return sent == RosEndpoint::Sent::Ok  ? Sent::Ok
+            : sent == RosEndpoint::Sent::Full ? Sent::Full
+                                              : Sent::Failed;
+    }
+    void publish(int publisher, const QByteArray& bytes) override
+    {
+        if (publisher >= 0)
+            m_ros.publish(publisher, bytes);
+    }
+
+    bool startsWithHeader(const RosMsgTypeInfo& type) override
+    {
+        return definitionStartsWithHeader(type.definition);
+    }
+    std::optional<StampCodec::Decoded> header(const QByteArray& bytes) override
+    {
+        return StampCodec::decodeHeader(bytes);
+    }
+    QByteArray timeStamped(const StampCodec::Decoded& stamp) override
+    {
+        return StampCodec::encodeTimeStamped(stamp);
+    }
+    QByteArray float64(double value) override
+    {
+        QByteArray bytes(8, Qt::Uninitialized);
+        std::memcpy(bytes.data(), &value, 8);
+        return bytes;
+    }
+    std::optional<QByteArray> toText(const BridgeMessage& m) override
+    {
+        return PrimitiveText::toText(m.type.name, m.bytes);
+    }
+    std::optional<BridgeMessage> fromText(const BridgeRoute&, const QByteArray& text) override
+    {
+        RosRawMessage m = PrimitiveText::fromText(text);
+        return BridgeMessage {{m.md5, m.type, m.definition, false}, std::move(m.bytes)};
+    }
+
+private:
+    RosEndpoint& m_ros;
 };
-
-/// The sample a message is: its Header when it starts with one (the suite's messages all do),
-/// else a hash of its bytes (the same at every component that carries it).
-StampCodec::Decoded sampleOf(bool headerFirst, const QByteArray& bytes)
-{
-    if (headerFirst)
-        if (std::optional<StampCodec::Decoded> header = StampCodec::decodeHeader(bytes))
-            return *header;
-    StampCodec::Decoded d;
-    d.sampleNs = StampCodec::hashId(bytes) % 4'000'000'000'000'000'000LL; // fits the header's uint32 seconds
-    return d;
-}
-
 } // namespace
 
 struct ReferenceBridge::Private
 {
     Log log;
     Options options;
-    BridgeConfig config;
     MqttProfile profile;
     MqttWill will;
-    std::vector<std::unique_ptr<Route>> routes;
+    std::vector<std::unique_ptr<BridgeHop>> hops;
     Counters counters;
     std::unique_ptr<RosEndpoint> ros;
+    std::unique_ptr<Ros1Side> side;
     std::unique_ptr<MqttLink> mqtt;
-    QString stampDefinition = StampCodec::definition();
-
-    qint64 now() const { return wallClockNs() + options.clockOffsetNs; }
-
-    void publishStamp(int publisher, const StampCodec::Decoded& sample, qint64 timeNs)
-    {
-        if (publisher < 0)
-            return;
-        StampCodec::Decoded d = sample;
-        d.timeNs = timeNs;
-        ros->publish(publisher, StampCodec::encodeTimeStamped(d));
-    }
-
-    // ROS spinner thread.
-    void rosToMqtt(Route& r, const RosRawMessage& msg, qint64 receivedNs)
-    {
-        StampCodec::Decoded sample;
-        if (!r.stampPrefix.isEmpty()) {
-            sample = sampleOf(r.hasHeader(msg), msg.bytes);
-            publishStamp(r.stampIn, sample, receivedNs + options.clockOffsetNs);
-        }
-        bool ok = true;
-        qint64 outNs = now(); // the moment the message leaves: stamped before, so no receiver is earlier
-        if (r.primitive) {
-            const std::optional<QByteArray> text = PrimitiveText::toText(msg.type, msg.bytes);
-            ok = text && mqtt->send(r.mqttTopic, *text, r.qos, r.retained);
-        } else {
-            // As mqtt_client does: the type announcement (retained) with every message, then the
-            // message, preceded by the send time when stamped.
-            // mqtt_client announces with every message; two small publishes back to back then
-            // meet Nagle's algorithm and the broker's delayed ACK, 40 ms for the second. The
-            // announcement is retained, so once per type and connection says the same.
-            if (options.announceEveryMessage || !r.typeSent.exchange(true) || r.sentMd5 != msg.md5) {
-                const QByteArray type
-                    = MqttClientWire::encodeType({msg.md5, msg.type, msg.definition, r.stamped});
-                ok = mqtt->send(MqttClientWire::typeTopicPrefix() + r.mqttTopic, type, r.qos, true);
-                r.sentMd5 = msg.md5;
-                if (!ok)
-                    r.typeSent = false;
-            }
-            const QByteArray payload = r.stamped ? MqttClientWire::stamped(now(), msg.bytes) : msg.bytes;
-            outNs = now();
-            ok = ok && mqtt->send(r.mqttTopic, payload, r.qos, r.retained);
-        }
-        (ok ? counters.toMqtt : counters.failed).fetch_add(1, std::memory_order_relaxed);
-        if (ok && !r.stampPrefix.isEmpty())
-            publishStamp(r.stampOut, sample, outNs);
-    }
-
-    // Paho thread.
-    void mqttToRos(Route& r, const QByteArray& payload, qint64 receivedNs)
-    {
-        RosRawMessage msg;
-        std::optional<qint64> sentNs;
-        int publisher = -1;
-        if (r.primitive) {
-            msg = PrimitiveText::fromText(payload);
-        } else {
-            std::lock_guard<std::mutex> lock(r.mutex);
-            if (!r.haveType) {
-                counters.failed.fetch_add(1, std::memory_order_relaxed); // type not announced yet
-                return;
-            }
-            msg.type = r.announced.name;
-            msg.md5 = r.announced.md5;
-            msg.definition = r.announced.definition;
-            if (r.announced.stamped) {
-                const std::optional<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
-                if (!s) {
-                    counters.failed.fetch_add(1, std::memory_order_relaxed);
-                    return;
-                }
-                sentNs = s->stampNs;
-                msg.bytes = s->message;
-            } else {
-                msg.bytes = payload;
-            }
-        }
-        StampCodec::Decoded sample;
-        if (!r.stampPrefix.isEmpty()) {
-            sample = sampleOf(r.hasHeader(msg), msg.bytes);
-            publishStamp(r.stampIn, sample, receivedNs + options.clockOffsetNs);
-        }
-        {
-            std::lock_guard<std::mutex> lock(r.mutex);
-            if (r.primitive && (!r.haveType || r.announced.md5 != msg.md5)) {
-                // A primitive's type follows its text ("42", then "hello"): advertised anew.
-                r.announced = {msg.md5, msg.type, msg.definition, false};
-                r.haveType = true;
-                advertiseAnnounced(r);
-            } else if (r.publisher < 0 && !r.advertiseFailed) {
-                advertiseAnnounced(r);
-            }
-            publisher = r.publisher;
-        }
-        const qint64 outNs = now(); // before it leaves, so no receiver stamps earlier
-        const RosEndpoint::Sent sent = ros->send(publisher, msg.bytes);
-        const bool ok = sent == RosEndpoint::Sent::Ok;
-        (ok                                    ? counters.toRos
-             : sent == RosEndpoint::Sent::Full ? counters.droppedToRos
-                                               : counters.failed)
-            .fetch_add(1, std::memory_order_relaxed);
-        if (ok && !r.stampPrefix.isEmpty())
-            publishStamp(r.stampOut, sample, outNs);
-        if (sentNs && r.latencyPublisher >= 0) {
-            const double seconds = double(now() - *sentNs) / 1e9;
-            QByteArray bytes(8, Qt::Uninitialized);
-            std::memcpy(bytes.data(), &seconds, 8);
-            ros->publish(r.latencyPublisher, bytes);
-        }
-    }
-
-    /// (Re)advertises `r.rosTopic` with the announced type, retiring the publisher of the type
-    /// before: roscpp refuses a second type on one topic. Called with `r.mutex` held.
-    void advertiseAnnounced(Route& r)
-    {
-        if (r.publisher >= 0) {
-            ros->retire(r.publisher);
-            r.publisher = -1;
-            ++r.typeChanges;
-        }
-        QString error;
-        const RosMsgTypeInfo& t = r.announced;
-        r.publisher = ros->advertise(r.rosTopic, t.name, t.md5, t.definition, r.queueSize, r.latched, &error);
-        r.advertiseFailed = r.publisher < 0;
-        // Anyone on the broker can flip a topic's type with every message: the first changes are
-        // logged, the rest only counted.
-        constexpr quint64 kLoggedChanges = 5;
-        if (r.typeChanges > kLoggedChanges)
-            return;
-        if (r.publisher < 0)
-            log(tr("cannot publish %1 on %2: %3").arg(t.name, r.rosTopic, error));
-        else if (r.typeChanges == 0)
-            log(tr("MQTT %1 -> ROS %2 (%3%4)")
-                    .arg(r.mqttTopic, r.rosTopic, t.name, t.stamped ? tr(", stamped") : QString()));
-        else
-            log(tr("MQTT %1 -> ROS %2: the type changed to %3%4")
-                    .arg(r.mqttTopic, r.rosTopic, t.name,
-                         r.typeChanges == kLoggedChanges ? tr(" (further changes are not logged)")
-                                                         : QString()));
-    }
-
-    // Paho thread: a type announcement for an mqtt2ros route.
-    void announce(Route& r, const QByteArray& payload)
-    {
-        QString error;
-        const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
-        if (!info) {
-            log(tr("ignored a malformed type announcement for %1: %2").arg(r.mqttTopic, error));
-            return;
-        }
-        if (info->dialect != RosTypeRegistry::Dialect::Ros1) {
-            if (!r.ros2Said.exchange(true))
-                log(tr("ignored the ROS 2 type announcement for %1 (%2): this bridge speaks ROS 1")
-                        .arg(r.mqttTopic, info->name));
-            return;
-        }
-        std::lock_guard<std::mutex> lock(r.mutex);
-        if (r.haveType && r.announced == *info)
-            return;
-        const bool changed = r.haveType && (r.announced.md5 != info->md5 || r.announced.name != info->name);
-        r.announced = *info;
-        r.haveType = true;
-        if (r.publisher < 0 || changed)
-            advertiseAnnounced(r);
-        if (info->stamped && r.latencyPublisher < 0) {
-            const QString topic = ros->resolve(u"~/latencies/"_s + r.rosTopic);
-            r.latencyPublisher
-                = ros->advertise(topic, u"std_msgs/Float64"_s, QString::fromLatin1(kFloat64Md5),
-                                 u"float64 data\n"_s, 1, false, &error);
-        }
-    }
 };
 
 ReferenceBridge::ReferenceBridge(Log log)
@@ -374,7 +234,7 @@ const MqttProfile& ReferenceBridge::profile() const
 
 int ReferenceBridge::mappingCount() const
 {
-    return int(d->routes.size());
+    return int(d->hops.size());
 }
 
 bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QString* error)
@@ -383,14 +243,13 @@ bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QStri
     if (!spec)
         return false;
     d->options = options;
-    d->config = spec->config;
     d->profile = spec->profile;
     d->will = spec->will;
-    d->routes.clear();
-    for (const BridgeRoute& b : spec->routes) {
-        auto r = std::make_unique<Route>();
-        static_cast<BridgeRoute&>(*r) = b;
-        d->routes.push_back(std::move(r));
+    d->hops.clear();
+    for (BridgeRoute r : spec->routes) {
+        r.json = false; // mqtt_client v2.2.1 knows neither
+        r.rosType.clear();
+        d->hops.push_back(std::make_unique<BridgeHop>(r, d->options, d->counters, d->log));
     }
     return true;
 }
@@ -412,40 +271,36 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
     linkOptions.will = d->will;
     linkOptions.maxQueuedBytes = d->options.maxQueuedBytes / 2;
     d->mqtt = std::make_unique<MqttLink>(d->profile, linkOptions);
+    d->side = std::make_unique<Ros1Side>(*d->ros);
     Private* p = d.get();
-    QHash<QString, Route*> byMqtt;
-    QHash<QString, Route*> byTypeTopic;
-    for (const auto& r : d->routes) {
-        if (!r->stampPrefix.isEmpty()) {
-            QString why;
-            for (const auto& [suffix, slot] : {std::pair {u"/in"_s, &r->stampIn}, {u"/out"_s, &r->stampOut}})
-                *slot = d->ros->advertise(
-                    r->stampPrefix + suffix, QString::fromLatin1(StampCodec::typeName()),
-                    QString::fromLatin1(StampCodec::md5()), d->stampDefinition, 1000, false, &why);
-        }
-        if (r->direction == Direction::Mqtt2Ros) {
-            byMqtt.insert(r->mqttTopic, r.get());
-            d->mqtt->addSubscription(r->mqttTopic, r->qos);
-            if (!r->primitive) {
-                byTypeTopic.insert(MqttClientWire::typeTopicPrefix() + r->mqttTopic, r.get());
-                d->mqtt->addSubscription(MqttClientWire::typeTopicPrefix() + r->mqttTopic, r->qos);
-            } else {
-                d->log(tr("MQTT %1 -> ROS %2 (primitive)").arg(r->mqttTopic, r->rosTopic));
-            }
+    QHash<QString, BridgeHop*> byMqtt;
+    QHash<QString, BridgeHop*> byTypeTopic;
+    for (const auto& hop : d->hops) {
+        hop->start(*d->side, *d->mqtt);
+        const BridgeRoute& r = hop->route();
+        if (r.direction != Direction::Mqtt2Ros)
+            continue;
+        byMqtt.insert(r.mqttTopic, hop.get());
+        d->mqtt->addSubscription(r.mqttTopic, r.qos);
+        if (!r.primitive) {
+            byTypeTopic.insert(MqttClientWire::typeTopicPrefix() + r.mqttTopic, hop.get());
+            d->mqtt->addSubscription(MqttClientWire::typeTopicPrefix() + r.mqttTopic, r.qos);
+        } else {
+            d->log(tr("MQTT %1 -> ROS %2 (primitive)").arg(r.mqttTopic, r.rosTopic));
         }
     }
     d->mqtt->setMessageHandler(
-        [p, byMqtt, byTypeTopic](const QString& topic, const QByteArray& payload, qint64 t) {
-            if (Route* r = byTypeTopic.value(topic))
-                p->announce(*r, payload);
-            else if (Route* r = byMqtt.value(topic))
-                p->mqttToRos(*r, payload, t);
+        [byMqtt, byTypeTopic](const QString& topic, const QByteArray& payload, qint64 t) {
+            if (BridgeHop* hop = byTypeTopic.value(topic))
+                hop->announce(payload);
+            else if (BridgeHop* hop = byMqtt.value(topic))
+                hop->fromMqtt(payload, t);
         });
     d->mqtt->setConnectedHandler([p](bool reconnect) {
         if (!reconnect)
             return;
-        for (const auto& r : p->routes)
-            r->typeSent = false; // announced again with the next message
+        for (const auto& hop : p->hops)
+            hop->reconnected();
         p->log(tr("reconnected to %1").arg(p->profile.url));
     });
     d->mqtt->setLostHandler([p](const QString& why) {
@@ -456,21 +311,25 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
         return false;
     d->log(tr("connected to %1").arg(d->profile.url));
 
-    for (const auto& r : d->routes) {
-        if (r->direction != Direction::Ros2Mqtt)
+    for (const auto& h : d->hops) {
+        const BridgeRoute& r = h->route();
+        if (r.direction != Direction::Ros2Mqtt)
             continue;
-        Route* route = r.get();
+        BridgeHop* hop = h.get();
         QString why;
         if (!d->ros->subscribe(
-                r->rosTopic, r->queueSize,
-                [p, route](const RosRawMessage& m, qint64 t) { p->rosToMqtt(*route, m, t); }, &why)) {
+                r.rosTopic, r.queueSize,
+                [hop](const RosRawMessage& m, qint64 t) {
+                    hop->fromRos({{m.md5, m.type, m.definition, false}, m.bytes}, t);
+                },
+                &why)) {
             if (error)
-                *error = tr("cannot subscribe to %1: %2").arg(r->rosTopic, why);
+                *error = tr("cannot subscribe to %1: %2").arg(r.rosTopic, why);
             return false;
         }
         d->log(tr("ROS %1 -> MQTT %2%3")
-                   .arg(r->rosTopic, r->mqttTopic,
-                        r->primitive ? tr(" (primitive)") : (r->stamped ? tr(" (stamped)") : QString())));
+                   .arg(r.rosTopic, r.mqttTopic,
+                        r.primitive ? tr(" (primitive)") : (r.stamped ? tr(" (stamped)") : QString())));
     }
     return true;
 }
@@ -483,5 +342,6 @@ void ReferenceBridge::stop()
     if (d->ros)
         d->ros->shutdown();
     d->mqtt.reset();
+    d->side.reset();
     d->ros.reset();
 }

@@ -1,18 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "config/bridgeconfig.h"
+#include "bridge/bridgehop.h"
 #include "mqtt/mqttprofile.h"
 
-#include <atomic>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <QByteArray>
 #include <QCoreApplication>
-#include <QHash>
 #include <QString>
-#include <vector>
 
 struct RosRawMessage;
 
@@ -37,41 +33,17 @@ RosRawMessage fromText(const QByteArray& text);
 /// Paho holds and what waits for it take half the bound, the oldest waiting dropped beyond it;
 /// towards ROS, what roscpp holds (its queues towards slow subscribers) takes the other half, and
 /// a message that would go beyond is dropped. Both are counted.
+///
+/// Each mapping is forwarded by a BridgeHop, as in Ros2Bridge; this class gives it its roscpp
+/// side (RosEndpoint) and the broker.
 class ReferenceBridge
 {
     Q_DECLARE_TR_FUNCTIONS(ReferenceBridge)
 public:
-    using Log = std::function<void(const QString& line)>;
-    static constexpr qint64 kDefaultMaxQueuedBytes = 64 * 1024 * 1024;
-
-    struct Options
-    {
-        QString brokerUrl; ///< overrides the config's broker (host, port, TLS) when set
-        QString rosMaster; ///< empty: ROS_MASTER_URI
-        QString nodeName; ///< empty: "mqtt_client"
-        QHash<QString, QString> args; ///< values for `$(arg NAME)` in the config
-        /// Added to this bridge's clock (stamps, injected times, latencies): a host whose clock
-        /// is off, for the demo lab.
-        qint64 clockOffsetNs = 0;
-        /// Announce the type with every message, as mqtt_client v2.2.1 does (and pay for it: see
-        /// docs/formats.md); by default once per type and connection (it is retained).
-        bool announceEveryMessage = false;
-        /// The bridge's memory bound for messages on their way (see the class), in bytes.
-        qint64 maxQueuedBytes = kDefaultMaxQueuedBytes;
-    };
-
-    struct Counters
-    {
-        std::atomic<quint64> toMqtt {0};
-        std::atomic<quint64> toRos {0};
-        std::atomic<quint64> failed {0}; ///< could not be sent (broker away, bad payload)
-        std::atomic<quint64> tooLarge {0}; ///< of those, refused unread: too large to convert (json mappings)
-        // At the memory bound (updated by counters()):
-        std::atomic<quint64> droppedToMqtt {0}; ///< the oldest waiting for the broker
-        std::atomic<quint64> droppedToRos {0}; ///< not handed to roscpp, which held its half
-        std::atomic<quint64> failedWaiting {0}; ///< waited for the broker, then could not be sent
-        std::atomic<qint64> heldBytes {0}; ///< now: waiting for the broker, held by Paho and roscpp
-    };
+    using Log = BridgeHop::Log;
+    using Options = BridgeOptions;
+    using Counters = BridgeCounters;
+    static constexpr qint64 kDefaultMaxQueuedBytes = BridgeOptions::kDefaultMaxQueuedBytes;
 
     explicit ReferenceBridge(Log log);
     ~ReferenceBridge();

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "bridge/referencebridge.h"
+#include "bridge/bridgehop.h"
+#include "mqtt/mqttprofile.h"
 #include "ros2/ros2types.h"
 
 #include <memory>
@@ -23,32 +24,29 @@
 /// Its DDS side is a Ros2Participant (the child process `bridgescope-dds`): the node is announced
 /// in ros_discovery_info under mqtt_client's name. Messages from DDS are forwarded on this
 /// thread's event loop as they come; messages from the broker are handed to it from Paho's thread.
-/// Towards ROS they take half of Options::maxQueuedBytes, a quarter waiting for the event loop and
+/// Towards ROS they take half of BridgeOptions::maxQueuedBytes, a quarter waiting for the event loop and
 /// a quarter in the pipe to the DDS process (a message beyond either is dropped and counted, one
 /// larger than a quarter passes alone); the other half bounds what waits for the broker
-/// (MqttLink), as in the ROS 1 bridge.
+/// (MqttLink), as in the ROS 1 bridge. Each mapping is forwarded by a BridgeHop, as in the ROS 1
+/// bridge; this class gives it its DDS side and subscribes as v2.5 does.
 class Ros2Bridge
 {
     Q_DECLARE_TR_FUNCTIONS(Ros2Bridge)
 public:
-    using Log = ReferenceBridge::Log;
-    using Options = ReferenceBridge::Options;
-    using Counters = ReferenceBridge::Counters;
-
-    explicit Ros2Bridge(Log log);
+    explicit Ros2Bridge(BridgeHop::Log log);
     ~Ros2Bridge();
 
     /// Reads the config (any layout). Errors: not a bridge config, no mapping, bad values.
-    bool load(const QByteArray& yaml, const Options& options, QString* error);
+    bool load(const QByteArray& yaml, const BridgeOptions& options, QString* error);
     /// Joins the domain and connects to the broker (waiting up to 10 s); then bridges from this
     /// thread's event loop.
     bool start(const Ros2Options& ros, QString* error);
     void stop();
 
-    const Counters& counters() const;
+    const BridgeCounters& counters() const;
     const MqttProfile& profile() const;
     int mappingCount() const;
-    /// The node's full name ("/mqtt_client"): Options::nodeName, else the ROS 2 config's node
+    /// The node's full name ("/mqtt_client"): BridgeOptions::nodeName, else the ROS 2 config's node
     /// key, else mqtt_client's default.
     QString nodeName() const;
 
