@@ -6082,10 +6082,6 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
 <context>
     <name>ReferenceBridge</name>
     <message>
-        <source>cannot publish %1 on %2: %3</source>
-        <translation>%1 lässt sich nicht auf %2 veröffentlichen: %3</translation>
-    </message>
-    <message>
         <source>ignored a malformed type announcement for %1: %2</source>
         <translation>fehlerhafte Typankündigung für %1 ignoriert: %2</translation>
     </message>
@@ -6770,10 +6766,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <translation>, mit Zeitstempel</translation>
     </message>
     <message>
-        <source>ignored a malformed type announcement for %1: %2</source>
-        <translation>fehlerhafte Typankündigung für %1 ignoriert: %2</translation>
-    </message>
-    <message>
         <source>ignored the ROS 1 type announcement for %1 (%2): this bridge speaks ROS 2</source>
         <translation>ROS-2-Typankündigung für %2 (%2) ignoriert: diese Bridge spricht ROS 2 {1 ?} {1 ?} {2)?}</translation>
     </message>
@@ -6784,14 +6776,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>MQTT %1 -&gt; ROS %2 (%3, %4)</source>
         <translation>MQTT %1 -&gt; ROS %2 (%3, %4)</translation>
-    </message>
-    <message>
-        <source>MQTT %1 -&gt; ROS %2: the type changed to %3%4</source>
-        <translation>MQTT %1 -&gt; ROS %2: der Typ ist jetzt %3%4</translation>
-    </message>
-    <message>
-        <source> (further changes are not logged)</source>
-        <translation> (weitere Wechsel werden nicht protokolliert)</translation>
     </message>
     <message>
         <source>%1: json needs a ros_type, as mqtt_client says</source>
