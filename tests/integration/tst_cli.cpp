@@ -210,11 +210,21 @@ private slots:
                        {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()), u"-t"_s,
                         u"plant/state"_s, u"-r"_s, u"-m"_s, u"on"_s});
         retained.waitForFinished(10000);
-        // Wait until the master knows the publisher.
-        QTRY_VERIFY_WITH_TIMEOUT(bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(),
-                                              u"--broker"_s, servers.brokerUrl(), u"--seconds"_s, u"0.5"_s})
-                                     .out.contains(u"/odom_x"_s),
-                                 30000);
+        // Wait until the master knows the publisher: 30 s of wall clock (QTRY counts its steps, not
+        // the time each discover takes), then say what discover and the publisher said.
+        QElapsedTimer waited;
+        waited.start();
+        Run seen;
+        while (!(seen = bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
+                                     servers.brokerUrl(), u"--seconds"_s, u"0.5"_s}))
+                    .out.contains(u"/odom_x"_s)
+               && waited.elapsed() < 30000)
+            QTest::qWait(200);
+        QVERIFY2(seen.out.contains(u"/odom_x"_s),
+                 qPrintable(u"after %1 ms, discover exit %2: %3 %4\nrostopic: %5"_s.arg(waited.elapsed())
+                                .arg(seen.exit)
+                                .arg(seen.out.right(500), seen.err.right(500),
+                                     QString::fromUtf8(pub.readAllStandardError().right(500)))));
         const Run r = bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
                                    servers.brokerUrl(), u"--seconds"_s, u"1"_s, u"--json"_s});
         pub.terminate();
