@@ -238,7 +238,7 @@ struct ReferenceBridge::Private
             msg.md5 = r.announced.md5;
             msg.definition = r.announced.definition;
             if (r.announced.stamped) {
-                const std::optional<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
+                const Result<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
                 if (!s) {
                     counters.failed.fetch_add(1, std::memory_order_relaxed);
                     return;
@@ -316,10 +316,10 @@ struct ReferenceBridge::Private
     // Paho thread: a type announcement for an mqtt2ros route.
     void announce(Route& r, const QByteArray& payload)
     {
-        QString error;
-        const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
+        const Result<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload);
         if (!info) {
-            log(tr("ignored a malformed type announcement for %1: %2").arg(r.mqttTopic, error));
+            log(tr("ignored a malformed type announcement for %1: %2")
+                    .arg(r.mqttTopic, info.error().toString()));
             return;
         }
         if (info->dialect != RosTypeRegistry::Dialect::Ros1) {
@@ -338,6 +338,7 @@ struct ReferenceBridge::Private
             advertiseAnnounced(r);
         if (info->stamped && r.latencyPublisher < 0) {
             const QString topic = ros->resolve(u"~/latencies/"_s + r.rosTopic);
+            QString error; // not shown: without the topic the latencies are not published
             r.latencyPublisher
                 = ros->advertise(topic, u"std_msgs/Float64"_s, QString::fromLatin1(kFloat64Md5),
                                  u"float64 data\n"_s, 1, false, &error);

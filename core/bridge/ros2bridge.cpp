@@ -187,7 +187,7 @@ void Ros2Bridge::Private::rosToMqtt(Route& r, const Ros2Sample& s)
         refuseTooLarge(tr("ROS %1").arg(r.rosTopic), s.bytes.size());
         ok = false;
     } else if (r.json) {
-        const std::optional<QByteArray> json = Ros2BridgeWire::toJson(registry, r.subscribedType, s.bytes, nullptr);
+        const Result<QByteArray> json = Ros2BridgeWire::toJson(registry, r.subscribedType, s.bytes);
         ok = json && mqtt->send(r.mqttTopic, *json, r.qos, r.retained);
     } else {
         // v2.5 announces (retained) with every message; once per type and connection says the same
@@ -218,10 +218,9 @@ void Ros2Bridge::Private::fromMqtt(const QString& topic, const QByteArray& paylo
 
 void Ros2Bridge::Private::announce(Route& r, const QByteArray& payload)
 {
-    QString error;
-    const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
+    const Result<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload);
     if (!info) {
-        log(tr("ignored a malformed type announcement for %1: %2").arg(r.mqttTopic, error));
+        log(tr("ignored a malformed type announcement for %1: %2").arg(r.mqttTopic, info.error().toString()));
         return;
     }
     if (info->dialect != RosTypeRegistry::Dialect::Ros2) {
@@ -332,7 +331,8 @@ void Ros2Bridge::Private::mqttToRos(Route& r, const QByteArray& payload, qint64 
     } else if (r.json && payload.size() > Ros2BridgeWire::kMaxJsonBytes) {
         refuseTooLarge(tr("MQTT %1").arg(r.mqttTopic), payload.size()); // counted as failed below
     } else if (r.json) {
-        cdr = Ros2BridgeWire::fromJson(registry, type, payload, nullptr);
+        if (Result<QByteArray> converted = Ros2BridgeWire::fromJson(registry, type, payload))
+            cdr = std::move(converted).value();
     } else if (!type.isEmpty()) {
         cdr = payload; // v2.5: a fixed type is never stamped
     } else if (!r.announcedType.isEmpty()) {

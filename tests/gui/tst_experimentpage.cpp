@@ -6,6 +6,7 @@
 #include "app/gui/mainwindow.h"
 #include "experiment/experimentreport.h"
 #include "latency/latencyseriesset.h"
+#include "resulttext.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/experiment/experimentpage.h"
 #include "widgets/measure/measurepage.h"

@@ -5,14 +5,15 @@
 // pane work; killing the vehicle bridge turns its links red with stall and bridge-down events in
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
-#include "signalprocess.h"
 #include "app/gui/mainwindow.h"
 #include "base/niceticks.h"
 #include "demo/demolab.h"
 #include "namecheck.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "ros/rosmasterapi.h"
 #include "session/measuresession.h"
+#include "signalprocess.h"
 #include "testservers.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"

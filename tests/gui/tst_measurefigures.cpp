@@ -11,6 +11,7 @@
 #include "latency/latencytimeline.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"
+#include "resulttext.h"
 #include "session/measuresession.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/ratechart.h"

@@ -9,6 +9,7 @@
 #include "fixtures.h"
 #include "latency/pipeline.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "session/measuresession.h"
 #include "stampbag.h"
 #include "syntheticrun.h"

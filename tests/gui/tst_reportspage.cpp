@@ -4,6 +4,7 @@
 // every kind of file, and save and copy the chart.
 #include "app/gui/mainwindow.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"

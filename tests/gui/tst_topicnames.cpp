@@ -11,6 +11,7 @@
 #include "mqtt/mqttprofile.h"
 #include "mqtt/mqtttopictree.h"
 #include "namecheck.h"
+#include "resulttext.h"
 #include "ros/rostopicmodel.h"
 #include "ros/rostopictree.h"
 #include "session/fieldplotter.h"

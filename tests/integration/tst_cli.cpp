@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: MIT
 // The command line contract of `bridgescope config ...`, run as the real program.
-#include "signalprocess.h"
 #include "clirun.h"
 #include "config/configreader.h"
 #include "experiment/experimentplan.h"
+#include "fixtures.h"
 #include "mqtt/mqttlink.h"
 #include "mqtt/mqttprofile.h"
-#include "fixtures.h"
 #include "pythonref.h"
 #include "record/runfile.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "ros2peer.h"
+#include "signalprocess.h"
 #include "syntheticrun.h"
 #include "testservers.h"
 

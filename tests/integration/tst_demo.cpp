@@ -2,13 +2,14 @@
 // The demo lab headless: 20 s of the paper-shaped pipeline recorded with sensible figures, and no
 // process left behind after it ends, or after it is killed with SIGKILL; and `watch --pipeline` on
 // the lab's bridges: every link's latency from the pipeline's stamps, and a run with samples and events.
-#include "signalprocess.h"
 #include "demo/demolab.h"
 #include "record/runfile.h"
 #include "report/report.h"
+#include "resulttext.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "signalprocess.h"
 #include "testservers.h"
 
 #include <csignal>

@@ -5,17 +5,18 @@
 // their levels; a bridge command that exits at once fails its cell while a bridge started through
 // the command template works; and a link profile of 20 ms delay and 2 ms jitter on each bridge's
 // broker connection shows up in the crossing stages only.
-#include "signalprocess.h"
 #include "latency/latencyengine.h"
 #include "record/runfile.h"
 #include "report/report.h"
+#include "resulttext.h"
+#include "signalprocess.h"
 #include "testservers.h"
 
 #include <csignal>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QHash>
 #include <QFile>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>

@@ -7,6 +7,7 @@
 #include "record/runfile.h"
 #include "record/runrecorder.h"
 #include "report/report.h"
+#include "resulttext.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"

@@ -11,6 +11,7 @@
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttlink.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "ros/rosgraphpoller.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"

@@ -12,6 +12,7 @@
 #include "base/wallclock.h"
 #include "mqtt/mqttlink.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"

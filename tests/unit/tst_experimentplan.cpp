@@ -7,6 +7,7 @@
 #include "experiment/experimentreport.h"
 #include "experiment/experimentrunner.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 
 #include <QDir>

@@ -10,6 +10,7 @@
 #include "config/configwriter.h"
 #include "fixtures.h"
 #include "latency/pipeline.h"
+#include "resulttext.h"
 
 #include <QFile>
 #include <QTemporaryDir>

@@ -9,6 +9,7 @@
 #include "latency/sortedblocks.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 
 #include <array>

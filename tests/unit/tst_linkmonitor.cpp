@@ -10,6 +10,7 @@
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttsource.h"
 #include "mqtt/mqtttopictree.h"
+#include "resulttext.h"
 #include "watch/linkmodel.h"
 #include "watch/linkmonitor.h"
 #include "wire/mqttclientwire.h"

@@ -4,6 +4,7 @@
 #include "fixtures.h"
 #include "latency/pipeline.h"
 #include "latency/pipelinediscovery.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 
 #include <QTemporaryDir>

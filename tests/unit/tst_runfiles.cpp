@@ -2,14 +2,15 @@
 // Run files and imports: a run reads back as it was written, replays to the same figures, and
 // broken files are refused with a reason; bags written with rosbag's own API import unchanged.
 #include "latency/latencyengine.h"
+#include "peakrss.h"
 #include "record/runfile.h"
 #include "record/suitecsv.h"
 #include "report/bagreaderprocess.h"
 #include "report/report.h"
 #include "report/runloader.h"
+#include "resulttext.h"
 #include "ros/rosstampsource.h"
 #include "stampbag.h"
-#include "peakrss.h"
 #include "syntheticrun.h"
 #include "wire/bagheader.h"
 #include "wire/stampcodec.h"

@@ -5,6 +5,7 @@
 #include "base/yamlreader.h"
 #include "experiment/experimentplan.h"
 #include "latency/pipeline.h"
+#include "resulttext.h"
 #include "watch/watchrules.h"
 
 #include <QTemporaryDir>
