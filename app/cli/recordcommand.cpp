@@ -191,8 +191,8 @@ int runRecord(const RecordRequest& request)
     MeasureSession measure(&live);
     measure.setRos1(request.ros1);
     measure.setPipeline(request.pipeline);
-    if (!measure.startRecording(request.runPath, request.info, &why)) {
-        err(why);
+    if (const Result<void> started = measure.startRecording(request.runPath, request.info); !started) {
+        err(started.error().toString());
         return ExitUsage;
     }
     QObject::connect(&measure, &MeasureSession::recordingFailed, [](const QString& failure) {
@@ -230,8 +230,8 @@ int runRecord(const RecordRequest& request)
         return status;
     live.drainNow(); // what arrived in the last moment
     const qint64 complete = e.samples();
-    if (!measure.stopRecording(&why)) {
-        err(Record::tr("recording failed: %1").arg(why));
+    if (const Result<void> stopped = measure.stopRecording(); !stopped) {
+        err(Record::tr("recording failed: %1").arg(stopped.error().toString()));
         return ExitFailed;
     }
     const qint64 stamps = measure.recorder()->committedStamps();

@@ -273,10 +273,10 @@ bool startRecording(const WatchRequest& request, MeasureSession* measure, RunRec
     info.broker = request.broker.url;
     info.rosMaster = request.masterUri;
     info.describeThisMachine();
-    QString why;
-    if (measure ? !measure->startRecording(request.runPath, info, &why)
-                : !own.start(request.runPath, info, &why)) {
-        err(why);
+    const Result<void> started
+        = measure ? measure->startRecording(request.runPath, info) : own.start(request.runPath, info);
+    if (!started) {
+        err(started.error().toString());
         return false;
     }
     return true;
@@ -503,8 +503,8 @@ int runWatch(const WatchRequest& request)
     printSummary(*monitor, watchedMs, eventsSeen, alertsSeen);
     if (recorder->isRecording()) {
         live.drainNow(); // the last stamps
-        if (measure ? !measure->stopRecording(&why) : !ownRecorder.stop(&why)) {
-            err(Watch::tr("%1: %2").arg(request.runPath, why));
+        if (const Result<void> stopped = measure ? measure->stopRecording() : ownRecorder.stop(); !stopped) {
+            err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));
             return ExitFailed;
         }
         err(Watch::tr("events recorded in %1").arg(request.runPath));

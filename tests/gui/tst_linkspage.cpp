@@ -353,7 +353,7 @@ private slots:
         RunInfo info;
         info.name = u"outage"_s;
         const QString runPath = runs.filePath(u"outage.bsrun"_s);
-        QVERIFY2(window.measure()->startRecording(runPath, info, &error), qPrintable(error));
+        QVERIFY2(noted(window.measure()->startRecording(runPath, info), &error), qPrintable(error));
         // Another window is in front: an alert becomes a notification.
         QWidget other;
         other.show();
@@ -401,8 +401,8 @@ private slots:
                                         .arg(table->columnWidth(c))));
             }
         QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
-        QVERIFY2(window.measure()->stopRecording(&error), qPrintable(error));
-        const std::optional<RunData> run = RunFile::read(runPath, &error);
+        QVERIFY2(noted(window.measure()->stopRecording(), &error), qPrintable(error));
+        const std::optional<RunData> run = noted(RunFile::read(runPath), &error);
         QVERIFY2(run, qPrintable(error));
         QVERIFY(std::any_of(run->events.cbegin(), run->events.cend(), [](const RecordedEvent& e) {
             return e.reasons.contains(u"bridge_down"_s) && e.subject == u"bridge:mqtt_interface_vehicle"_s;

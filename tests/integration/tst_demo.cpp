@@ -350,7 +350,7 @@ private slots:
         QCOMPARE(watch.exitCode(), 0);
         lab.stop();
 
-        const std::optional<RunData> data = RunFile::read(run, &error);
+        const std::optional<RunData> data = noted(RunFile::read(run), &error);
         QVERIFY2(data, qPrintable(error));
         QCOMPARE(data->info.pipeline.topicCount(), 12);
         QVERIFY(std::any_of(data->events.cbegin(), data->events.cend(), [](const RecordedEvent& e) {

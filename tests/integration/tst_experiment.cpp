@@ -150,7 +150,7 @@ private slots:
             {{u"qos"_s, u"1"_s}, {u"payload"_s, u"60000"_s}}};
         for (int i = 0; i < 4; ++i) {
             QString error;
-            const std::optional<RunData> run = RunFile::read(out + u"/runs/"_s + runs[i], &error);
+            const std::optional<RunData> run = noted(RunFile::read(out + u"/runs/"_s + runs[i]), &error);
             QVERIFY2(run, qPrintable(error));
             QCOMPARE(run->info.factors, levels[i]);
             QCOMPARE(run->info.experiment, u"qos and size"_s);

@@ -372,7 +372,7 @@ private slots:
         RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
         run.info.pipeline = Pipeline(synthetic.topics, 0);
         run.info.cell = plan->cells[2].id();
-        QVERIFY2(RunFile::write(runOf(2), run, &why), qPrintable(why));
+        QVERIFY2(noted(RunFile::write(runOf(2), run), &why), qPrintable(why));
         QVERIFY(QFile::copy(runOf(2), runOf(3)));
 
         ExperimentRunner::Options options;
@@ -587,7 +587,7 @@ private slots:
             RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
             run.info.pipeline = Pipeline(synthetic.topics, 0);
             run.info.cell = cell.id();
-            QVERIFY2(RunFile::write(dir.filePath(ExperimentFolder::runPathOf(cell)), run, &why),
+            QVERIFY2(noted(RunFile::write(dir.filePath(ExperimentFolder::runPathOf(cell)), run), &why),
                      qPrintable(why));
             cells.append(QJsonObject {{u"id"_s, cell.id()},
                                       {u"state"_s, u"complete"_s},
