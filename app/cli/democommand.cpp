@@ -140,9 +140,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
     else
         err(Demo::tr("broker %1, ROS master %2, configs in %3")
                 .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri(), lab.directory()));
-    const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &why);
+    const Result<Pipeline> pipeline = Pipeline::readFile(lab.pipelinePath());
     if (!pipeline) {
-        err(why);
+        err(pipeline.error().toString());
         return ExitFailed;
     }
     LiveSession live;

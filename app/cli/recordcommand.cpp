@@ -138,10 +138,10 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         err(line);
     request->ros1 = ros.ros1;
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
-    const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);
+    const Result<Pipeline> pipe = Pipeline::readFile(parser.value(pipeline));
     request->profile = MqttProfile::fromUrl(parser.value(broker));
     if (!pipe || !request->profile.validate(&why)) {
-        err(why);
+        err(pipe ? why : pipe.error().toString());
         return ExitUsage;
     }
     request->pipeline = *pipe;

@@ -5,7 +5,7 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "base/wallclock.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqtttopictree.h"
@@ -60,10 +60,9 @@ bool readConfigs(const QStringList& paths, WatchRequest* request)
 {
     QSet<QString> names;
     for (const QString& path : paths) {
-        QString why;
-        const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
+        const Result<QByteArray> bytes = YamlReader::readFile(path);
         if (!bytes) {
-            err(why);
+            err(bytes.error().toString());
             return false;
         }
         const ConfigReadResult read = ConfigReader::read(*bytes);
@@ -157,19 +156,20 @@ bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, Wa
         return false;
     }
     if (parser.isSet(o.rules)) {
-        const std::optional<WatchRules> r = WatchRules::load(parser.value(o.rules), &why);
+        const Result<WatchRules> r = WatchRules::readFile(parser.value(o.rules));
         if (!r) {
-            err(why);
+            err(r.error().toString());
             return false;
         }
         request->rules = *r;
     }
     if (parser.isSet(o.pipeline)) {
-        request->pipeline = Pipeline::load(parser.value(o.pipeline), &why);
-        if (!request->pipeline) {
-            err(why);
+        Result<Pipeline> pipeline = Pipeline::readFile(parser.value(o.pipeline));
+        if (!pipeline) {
+            err(pipeline.error().toString());
             return false;
         }
+        request->pipeline = std::move(pipeline).value();
     }
     return true;
 }

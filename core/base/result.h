@@ -40,8 +40,9 @@ public:
     }
 };
 
-/// A value, or the located error that kept a reader from making it. Returned by the readers of
-/// files (plans, rules, pipelines); `toOptional()` serves callers that take the error as text.
+/// A value, or the error that kept a function from making it: what every function with a single
+/// error returns (decoders, readers of files, writers). Functions that collect many problems
+/// (validators) return their lists instead. Built from a value or a LocatedError.
 template<typename T> class [[nodiscard]] Result
 {
 public:
@@ -75,20 +76,13 @@ public:
             m_error.file = file;
         return std::move(*this);
     }
-    /// The value, or nullopt with the error as text in `error` (when given).
-    std::optional<T> toOptional(QString* error = nullptr) &&
-    {
-        if (!ok() && error)
-            *error = m_error.toString();
-        return std::move(m_value);
-    }
 
 private:
     std::optional<T> m_value;
     LocatedError m_error;
 };
 
-/// A step of a reader that makes nothing but may fail: `Status()` is success.
+/// A step that makes nothing but may fail: `Status()` (or `return {};`) is success.
 template<> class [[nodiscard]] Result<void>
 {
 public:

@@ -178,11 +178,10 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
         return std::nullopt;
     };
     const QDir dir(directory);
-    QString why;
-    std::optional<ExperimentPlan> plan
-        = ExperimentPlan::load(ExperimentFolder(directory).planPath(), &why);
+    const Result<ExperimentPlan> plan = ExperimentPlan::readFile(ExperimentFolder(directory).planPath());
     if (!plan)
-        return fail(why);
+        return fail(plan.error().toString());
+    QString why;
     const std::optional<QList<CellStatus>> statuses = ExperimentFolder(directory).readState(*plan, &why);
     if (!statuses)
         return fail(why);

@@ -333,10 +333,13 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
     }
     if (!c.lab.startComponents(why))
         return false;
-    std::optional<Pipeline> pipeline
-        = Pipeline::load(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath, why);
-    if (!pipeline)
+    Result<Pipeline> pipeline
+        = Pipeline::readFile(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath);
+    if (!pipeline) {
+        if (why)
+            *why = pipeline.error().toString();
         return false;
+    }
     pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
     c.live = std::make_unique<LiveSession>();
     if (c.lab.ros() == 2) {

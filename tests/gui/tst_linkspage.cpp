@@ -284,7 +284,7 @@ private slots:
         QVERIFY(error.contains(u"mosquitto.conf"_s));
         // The Measure page's pipeline: every mapping with a timestamp_topic_prefix gets the
         // latency across its bridge from the stamps at PREFIX/in and PREFIX/out.
-        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         window.measure()->setPipeline(*pipeline);
         window.pages()->setCurrentWidget(page);

@@ -86,7 +86,7 @@ private slots:
         MainWindow w;
         w.discoverPage()->setRosMasterUri(lab.rosMasterUri());
         w.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
-        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         w.measure()->setPipeline(*pipeline);
         w.resize(1280, 800);

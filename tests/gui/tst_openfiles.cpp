@@ -214,7 +214,7 @@ private slots:
         w.pages()->setCurrentWidget(w.discoverPage());
         QVERIFY(drop(&w, {m_pipeline}));
         QCOMPARE(w.pages()->currentWidget(), w.measurePage());
-        QCOMPARE(w.measure()->pipeline().topics(), Pipeline::load(m_pipeline)->topics());
+        QCOMPARE(w.measure()->pipeline().topics(), Pipeline::readFile(m_pipeline)->topics());
         QCOMPARE(w.document()->filePath(), m_config); // the config stays
 
         // One measurement: shown on the Measure page.

@@ -197,7 +197,7 @@ private slots:
         QVERIFY2(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, &error, true), qPrintable(error));
         QTRY_VERIFY(
             w->linksPage()->setWatched(m_lab.vehicleConfigPath(), true)); // listed a second after it opened
-        const std::optional<Pipeline> pipeline = Pipeline::load(m_lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(m_lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         w->measure()->setPipeline(*pipeline);
         w->resize(1280, 800);

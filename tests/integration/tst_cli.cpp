@@ -1064,7 +1064,7 @@ private slots:
         const QByteArray plan = "samples: 10\nfactors:\n  qos: [0]\n";
         writeFile(dir, u"experiment/plan.yaml"_s, plan);
         QString why;
-        const std::optional<ExperimentPlan> parsed = ExperimentPlan::fromYaml(plan, experiment, &why);
+        const std::optional<ExperimentPlan> parsed = noted(ExperimentPlan::read(plan, experiment), &why);
         QVERIFY2(parsed, qPrintable(why));
         const QString id = parsed->cells.first().id();
         writeFile(dir, u"experiment/experiment.json"_s,

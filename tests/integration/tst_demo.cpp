@@ -152,7 +152,7 @@ private slots:
         LiveSession live;
         QVERIFY2(live.startRos2({lab.rosDomain(), true}, &error), qPrintable(error));
         MeasureSession measure(&live);
-        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         measure.setPipeline(*pipeline);
         const LatencyEngine& e = measure.engine();

@@ -92,7 +92,7 @@ private slots:
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
         MeasureSession measure(&live);
-        std::optional<Pipeline> pipeline = Pipeline::fromYaml(pipelineYaml());
+        Result<Pipeline> pipeline = Pipeline::read(pipelineYaml());
         QVERIFY(pipeline);
         measure.setPipeline(*pipeline);
         const QString path = m_dir.filePath(u"live.bsrun"_s);

@@ -49,13 +49,13 @@ template<typename M> void roundTrips(const M& msg)
     QString error;
     RosDecodeLimits limits;
     limits.maxArrayElements = 4096;
-    const auto value = RosMessageDecoder::decode(reg, typeOf<M>(), bytes, &error, limits);
+    const auto value = noted(RosMessageDecoder::decode(reg, typeOf<M>(), bytes, limits), &error);
     QVERIFY2(value, qPrintable(error));
     const auto yaml = RosMessageEncoder::toYaml(*value);
     QVERIFY(yaml);
-    const auto tree = YamlVariant::parse(yaml->toUtf8(), &error);
+    const auto tree = noted(YamlVariant::read(yaml->toUtf8()), &error);
     QVERIFY2(tree, qPrintable(error + u'\n' + *yaml));
-    const auto encoded = RosMessageEncoder::encode(reg, typeOf<M>(), *tree, &error);
+    const auto encoded = noted(RosMessageEncoder::encode(reg, typeOf<M>(), *tree), &error);
     QVERIFY2(encoded, qPrintable(error + u'\n' + *yaml));
     QCOMPARE(encoded->toHex(), bytes.toHex());
 }
@@ -64,13 +64,13 @@ QString encodeError(const RosTypeRegistry& reg, const QString& type, const QVari
                     const RosEncodeLimits& limits = {})
 {
     QString error;
-    const auto bytes = RosMessageEncoder::encode(reg, type, value, &error, limits);
+    const auto bytes = noted(RosMessageEncoder::encode(reg, type, value, limits), &error);
     return bytes ? u"<encoded %1 bytes>"_s.arg(bytes->size()) : error;
 }
 
 QVariant yaml(const char* text)
 {
-    return YamlVariant::parse(QByteArray(text)).value_or(QVariant());
+    return YamlVariant::read(QByteArray(text)).valueOr(QVariant());
 }
 } // namespace
 
@@ -221,7 +221,7 @@ private slots:
         QFETCH(QString, error);
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(type, definition));
-        const auto tree = YamlVariant::parse(yaml);
+        const Result<QVariant> tree = YamlVariant::read(yaml);
         QVERIFY(tree);
         QCOMPARE(encodeError(reg, type, *tree), error);
     }
