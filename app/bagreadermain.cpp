@@ -46,8 +46,8 @@ int main(int argc, char** argv)
         });
         if (!run)
             return fail(error);
-        if (!RunFile::write(args[2], *run, &error))
-            return fail(error);
+        if (const Result<void> written = RunFile::write(args[2], *run); !written)
+            return fail(written.error().toString());
     } catch (const std::bad_alloc&) {
         return fail(QCoreApplication::translate(
             "BagReader", "the bag asks for more memory than a bag of stamps needs: it is damaged"));

@@ -140,9 +140,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
     else
         err(Demo::tr("broker %1, ROS master %2, configs in %3")
                 .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri(), lab.directory()));
-    const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &why);
+    const Result<Pipeline> pipeline = Pipeline::readFile(lab.pipelinePath());
     if (!pipeline) {
-        err(why);
+        err(pipeline.error().toString());
         return ExitFailed;
     }
     LiveSession live;
@@ -163,8 +163,8 @@ int runDemo(const DemoRequest& request, const QString& runPath)
     info.notes = Demo::tr("bridgescope demo: %1 bytes at %2 Hz")
                      .arg(request.lab.payloadBytes)
                      .arg(request.lab.rateHz);
-    if (!measure.startRecording(runPath, info, &why)) {
-        err(why);
+    if (const Result<void> started = measure.startRecording(runPath, info); !started) {
+        err(started.error().toString());
         return ExitFailed;
     }
     // Until the time is up, Ctrl+C or the lab fails; a line of progress a second.
@@ -186,8 +186,8 @@ int runDemo(const DemoRequest& request, const QString& runPath)
                     .arg(total.count > 0 ? QString::number(total.mean, 'f', 1) : u"–"_s));
         });
     live.drainNow();
-    if (!measure.stopRecording(&why)) {
-        err(Demo::tr("recording failed: %1").arg(why));
+    if (const Result<void> stopped = measure.stopRecording(); !stopped) {
+        err(Demo::tr("recording failed: %1").arg(stopped.error().toString()));
         exitCode = ExitFailed;
     }
     lab.stop();

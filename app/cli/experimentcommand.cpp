@@ -118,10 +118,9 @@ int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
         return ExitUsage;
     }
     const QString path = parser.positionalArguments().first();
-    QString why;
-    std::optional<ExperimentPlan> plan = ExperimentPlan::load(path, &why, &request->planText);
+    Result<ExperimentPlan> plan = ExperimentPlan::readFile(path, &request->planText);
     if (!plan) {
-        err(why);
+        err(plan.error().toString());
         return ExitUsage;
     }
     if (plan->name.isEmpty())

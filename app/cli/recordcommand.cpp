@@ -138,10 +138,10 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         err(line);
     request->ros1 = ros.ros1;
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
-    const std::optional<Pipeline> pipe = Pipeline::load(parser.value(pipeline), &why);
+    const Result<Pipeline> pipe = Pipeline::readFile(parser.value(pipeline));
     request->profile = MqttProfile::fromUrl(parser.value(broker));
     if (!pipe || !request->profile.validate(&why)) {
-        err(why);
+        err(pipe ? why : pipe.error().toString());
         return ExitUsage;
     }
     request->pipeline = *pipe;
@@ -189,8 +189,8 @@ int runRecord(const RecordRequest& request)
     MeasureSession measure(&live);
     measure.setRos1(request.ros1);
     measure.setPipeline(request.pipeline);
-    if (!measure.startRecording(request.runPath, request.info, &why)) {
-        err(why);
+    if (const Result<void> started = measure.startRecording(request.runPath, request.info); !started) {
+        err(started.error().toString());
         return ExitUsage;
     }
     QObject::connect(&measure, &MeasureSession::recordingFailed, [](const QString& failure) {
@@ -228,8 +228,8 @@ int runRecord(const RecordRequest& request)
         return status;
     live.drainNow(); // what arrived in the last moment
     const qint64 complete = e.samples();
-    if (!measure.stopRecording(&why)) {
-        err(Record::tr("recording failed: %1").arg(why));
+    if (const Result<void> stopped = measure.stopRecording(); !stopped) {
+        err(Record::tr("recording failed: %1").arg(stopped.error().toString()));
         return ExitFailed;
     }
     const qint64 stamps = measure.recorder()->committedStamps();

@@ -127,12 +127,12 @@ int parseReport(const QStringList& arguments, ReportRequest* request)
         return ExitUsage;
     }
     if (parser.isSet(a.pipeline)) {
-        QString why;
-        request->pipeline = Pipeline::load(parser.value(a.pipeline), &why);
-        if (!request->pipeline) {
-            err(why);
+        Result<Pipeline> pipeline = Pipeline::readFile(parser.value(a.pipeline));
+        if (!pipeline) {
+            err(pipeline.error().toString());
             return ExitUsage;
         }
+        request->pipeline = std::move(pipeline).value();
     }
     return -1;
 }

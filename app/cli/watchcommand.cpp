@@ -5,7 +5,7 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "base/wallclock.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqtttopictree.h"
@@ -60,10 +60,9 @@ bool readConfigs(const QStringList& paths, WatchRequest* request)
 {
     QSet<QString> names;
     for (const QString& path : paths) {
-        QString why;
-        const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &why);
+        const Result<QByteArray> bytes = YamlReader::readFile(path);
         if (!bytes) {
-            err(why);
+            err(bytes.error().toString());
             return false;
         }
         const ConfigReadResult read = ConfigReader::read(*bytes);
@@ -157,19 +156,20 @@ bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, Wa
         return false;
     }
     if (parser.isSet(o.rules)) {
-        const std::optional<WatchRules> r = WatchRules::load(parser.value(o.rules), &why);
+        const Result<WatchRules> r = WatchRules::readFile(parser.value(o.rules));
         if (!r) {
-            err(why);
+            err(r.error().toString());
             return false;
         }
         request->rules = *r;
     }
     if (parser.isSet(o.pipeline)) {
-        request->pipeline = Pipeline::load(parser.value(o.pipeline), &why);
-        if (!request->pipeline) {
-            err(why);
+        Result<Pipeline> pipeline = Pipeline::readFile(parser.value(o.pipeline));
+        if (!pipeline) {
+            err(pipeline.error().toString());
             return false;
         }
+        request->pipeline = std::move(pipeline).value();
     }
     return true;
 }
@@ -273,10 +273,10 @@ bool startRecording(const WatchRequest& request, MeasureSession* measure, RunRec
     info.broker = request.broker.url;
     info.rosMaster = request.masterUri;
     info.describeThisMachine();
-    QString why;
-    if (measure ? !measure->startRecording(request.runPath, info, &why)
-                : !own.start(request.runPath, info, &why)) {
-        err(why);
+    const Result<void> started
+        = measure ? measure->startRecording(request.runPath, info) : own.start(request.runPath, info);
+    if (!started) {
+        err(started.error().toString());
         return false;
     }
     return true;
@@ -499,8 +499,8 @@ int runWatch(const WatchRequest& request)
     printSummary(*monitor, watchedMs, eventsSeen, alertsSeen);
     if (recorder->isRecording()) {
         live.drainNow(); // the last stamps
-        if (measure ? !measure->stopRecording(&why) : !ownRecorder.stop(&why)) {
-            err(Watch::tr("%1: %2").arg(request.runPath, why));
+        if (const Result<void> stopped = measure ? measure->stopRecording() : ownRecorder.stop(); !stopped) {
+            err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));
             return ExitFailed;
         }
         err(Watch::tr("events recorded in %1").arg(request.runPath));

@@ -8,8 +8,10 @@
 #include <QString>
 #include <utility>
 
-/// An error of a reader with where it was found: the file (empty when the text came from
-/// elsewhere) and the place in it (invalid when the error is about the whole text).
+/// The one error type of Result: what is wrong, and where when a reader knows it (the file,
+/// empty when the text came from elsewhere, and the place in it, invalid when the error is about
+/// the whole text). A decoder's error is the message alone: `LocatedError {tr("…")}`, whose
+/// toString() is that message.
 struct LocatedError
 {
     Q_DECLARE_TR_FUNCTIONS(LocatedError)
@@ -17,9 +19,9 @@ public:
     /// How the place is written: "line 3, column 7: …" (plans, configs) or "line 3: …" (rules).
     enum class Style { LineColumn, Line };
 
-    QString message; ///< what is wrong, without the place
-    TextPos pos; ///< zero-based, as yaml-cpp's marks; printed one-based
-    QString file;
+    QString message {}; ///< what is wrong, without the place
+    TextPos pos {}; ///< zero-based, as yaml-cpp's marks; printed one-based
+    QString file {};
     Style style = Style::LineColumn;
     /// What kind of error, for programs: "yaml-syntax", a YamlLimits code such as "yaml-too-deep",
     /// or empty (a reader's own error).
@@ -38,8 +40,9 @@ public:
     }
 };
 
-/// A value, or the located error that kept a reader from making it. Returned by the readers of
-/// files (plans, rules, pipelines); `toOptional()` serves callers that take the error as text.
+/// A value, or the error that kept a function from making it: what every function with a single
+/// error returns (decoders, readers of files, writers). Functions that collect many problems
+/// (validators) return their lists instead. Built from a value or a LocatedError.
 template<typename T> class [[nodiscard]] Result
 {
 public:
@@ -56,6 +59,14 @@ public:
     const T& operator*() const { return *m_value; }
     T* operator->() { return &*m_value; }
     const T* operator->() const { return &*m_value; }
+    /// The value; only when ok().
+    T& value() & { return *m_value; }
+    const T& value() const& { return *m_value; }
+    T&& value() && { return std::move(*m_value); }
+    /// The value, or `fallback` when there is an error.
+    T valueOr(T fallback) const& { return ok() ? *m_value : std::move(fallback); }
+    T valueOr(T fallback) && { return ok() ? std::move(*m_value) : std::move(fallback); }
+    /// The error; only when !ok().
     const LocatedError& error() const { return m_error; }
 
     /// The error with `file` named, when it has none yet.
@@ -65,20 +76,13 @@ public:
             m_error.file = file;
         return std::move(*this);
     }
-    /// The value, or nullopt with the error as text in `error` (when given).
-    std::optional<T> toOptional(QString* error = nullptr) &&
-    {
-        if (!ok() && error)
-            *error = m_error.toString();
-        return std::move(m_value);
-    }
 
 private:
     std::optional<T> m_value;
     LocatedError m_error;
 };
 
-/// A step of a reader that makes nothing but may fail: `Status()` is success.
+/// A step that makes nothing but may fail: `Status()` (or `return {};`) is success.
 template<> class [[nodiscard]] Result<void>
 {
 public:
@@ -88,7 +92,12 @@ public:
     { }
     bool ok() const { return !m_error.has_value(); }
     explicit operator bool() const { return ok(); }
-    const LocatedError& error() const { return *m_error; }
+    /// The error; an empty one when ok().
+    const LocatedError& error() const
+    {
+        static const LocatedError none;
+        return m_error ? *m_error : none;
+    }
 
 private:
     std::optional<LocatedError> m_error;

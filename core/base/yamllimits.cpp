@@ -401,8 +401,3 @@ YAML::Node YamlLimits::load(const QByteArray& text)
     std::istream in(&buffer);
     return YAML::Load(in);
 }
-
-std::optional<QByteArray> YamlLimits::readFile(const QString& path, QString* error)
-{
-    return YamlReader::readFile(path).toOptional(error);
-}

@@ -59,7 +59,4 @@ public:
     /// Whether `bytes` is valid UTF-8 (no overlong forms, surrogates or code points past U+10FFFF);
     /// `badOffset` receives the offset of the first invalid byte.
     static bool isUtf8(const QByteArray& bytes, qsizetype* badOffset = nullptr);
-    /// The bytes of a YAML file, at most one past maxBytes (enough for check() to say it is too
-    /// large; /dev/zero is not read for ever); nullopt with "PATH: why" when it cannot be read.
-    static std::optional<QByteArray> readFile(const QString& path, QString* error);
 };

@@ -32,7 +32,8 @@ public:
     /// The first document of `text` after YamlLimits::check(); a syntax error (code "yaml-syntax")
     /// or a limit passed (the limit's code and fix) is located where yaml-cpp or the limit found it.
     Result<YAML::Node> parse(const QByteArray& text) const;
-    /// The bytes of a YAML file (YamlLimits::readFile); the error names the file.
+    /// The bytes of a YAML file, at most one past YamlLimits::maxBytes (enough for check() to say
+    /// it is too large; /dev/zero is not read for ever); the error names the file.
     static Result<QByteArray> readFile(const QString& path);
     /// `read` (a reader of YAML bytes returning a Result) applied to the file at `path`; every
     /// error names the file.

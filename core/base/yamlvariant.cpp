@@ -44,8 +44,3 @@ Result<QVariant> YamlVariant::read(const QByteArray& text)
         return reader.errorAt(e.mark, exactUtf8(e.msg));
     }
 }
-
-std::optional<QVariant> YamlVariant::parse(const QByteArray& text, QString* error)
-{
-    return read(text).toOptional(error);
-}

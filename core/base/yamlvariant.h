@@ -17,5 +17,4 @@ class YamlVariant
 public:
     /// The tree of `text`; a syntax error or a limit passed is located ("line 2, column 5: …").
     static Result<QVariant> read(const QByteArray& text);
-    static std::optional<QVariant> parse(const QByteArray& text, QString* error = nullptr);
 };

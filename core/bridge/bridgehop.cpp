@@ -113,7 +113,7 @@ bool BridgeHop::sendToMqtt(const BridgeMessage& m, qint64* outNs)
         if (tooLargeForJson(QCoreApplication::translate("Ros2Bridge", "ROS %1").arg(r.rosTopic),
                             m.bytes.size()))
             return false;
-        const std::optional<QByteArray> json = m_ros->toJson(m);
+        const Result<QByteArray> json = m_ros->toJson(m);
         return json && m_mqtt->send(r.mqttTopic, *json, r.qos, r.retained);
     }
     // mqtt_client announces the type (retained) with every message; two small publishes back to
@@ -138,12 +138,11 @@ bool BridgeHop::sendToMqtt(const BridgeMessage& m, qint64* outNs)
 
 void BridgeHop::announce(const QByteArray& payload)
 {
-    QString error;
-    const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
+    const Result<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload);
     if (!info) {
         m_log(
             QCoreApplication::translate("ReferenceBridge", "ignored a malformed type announcement for %1: %2")
-                .arg(m_route.mqttTopic, error));
+                .arg(m_route.mqttTopic, info.error().toString()));
         return;
     }
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -184,7 +183,7 @@ std::optional<BridgeMessage> BridgeHop::readMqtt(const QByteArray& payload, std:
         if (tooLargeForJson(QCoreApplication::translate("Ros2Bridge", "MQTT %1").arg(r.mqttTopic),
                             payload.size()))
             return std::nullopt;
-        std::optional<QByteArray> bytes = m_ros->fromJson(r.rosType, payload);
+        Result<QByteArray> bytes = m_ros->fromJson(r.rosType, payload);
         if (!bytes)
             return std::nullopt;
         return BridgeMessage {{QString(), r.rosType, QString(), false, dialect}, std::move(*bytes)};
@@ -196,7 +195,7 @@ std::optional<BridgeMessage> BridgeHop::readMqtt(const QByteArray& payload, std:
         return std::nullopt;
     BridgeMessage m {*m_announced, payload};
     if (m_announced->stamped) {
-        std::optional<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload, dialect);
+        Result<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload, dialect);
         if (!s)
             return std::nullopt;
         *sentNs = s->stampNs;

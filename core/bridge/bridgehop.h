@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "bridge/bridgespec.h"
 #include "wire/mqttclientwire.h"
 #include "wire/stampcodec.h"
@@ -102,11 +103,14 @@ public:
     /// Text from the broker as the mapping's primitive (its fixed type, else what the text reads as).
     virtual std::optional<BridgeMessage> fromText(const BridgeRoute& route, const QByteArray& text) = 0;
     /// json mappings (ROS 2 only): the message as a JSON object, and the other way.
-    virtual std::optional<QByteArray> toJson(const BridgeMessage&) { return std::nullopt; }
-    virtual std::optional<QByteArray> fromJson(const QString& /*type*/, const QByteArray& /*json*/)
+    virtual Result<QByteArray> toJson(const BridgeMessage&) { return LocatedError {notJson()}; }
+    virtual Result<QByteArray> fromJson(const QString& /*type*/, const QByteArray& /*json*/)
     {
-        return std::nullopt;
+        return LocatedError {notJson()};
     }
+
+private:
+    static QString notJson() { return QStringLiteral("json mappings are ROS 2 only"); }
 };
 
 /// One mapping of a reference bridge, one direction, as mqtt_client forwards it on either ROS:

@@ -141,13 +141,13 @@ public:
             return std::nullopt;
         return BridgeMessage {ros2Type(r.rosType), std::move(*cdr)};
     }
-    std::optional<QByteArray> toJson(const BridgeMessage& m) override
+    Result<QByteArray> toJson(const BridgeMessage& m) override
     {
-        return Ros2BridgeWire::toJson(m_registry, m.type.name, m.bytes, nullptr);
+        return Ros2BridgeWire::toJson(m_registry, m.type.name, m.bytes);
     }
-    std::optional<QByteArray> fromJson(const QString& type, const QByteArray& json) override
+    Result<QByteArray> fromJson(const QString& type, const QByteArray& json) override
     {
-        return Ros2BridgeWire::fromJson(m_registry, type, json, nullptr);
+        return Ros2BridgeWire::fromJson(m_registry, type, json);
     }
 
     /// The participant refused `topic` while advertise() asked for it: the reason is kept for

@@ -35,11 +35,6 @@ void putTime(QByteArray& out, qint64 ns)
     putU32(out, quint32(ns % 1'000'000'000));
 }
 
-/// The `data` field of a decoded primitive.
-const RosValue* dataOf(const std::optional<RosValue>& v)
-{
-    return v ? v->find(u"data"_s) : nullptr;
-}
 } // namespace
 
 QByteArray encodeTimeStamped(const StampCodec::Decoded& stamp)
@@ -98,8 +93,8 @@ std::optional<QByteArray> primitiveText(const RosTypeRegistry& registry, const Q
     RosDecodeLimits limits;
     limits.maxStringChars = std::numeric_limits<int>::max();
     limits.maxArrayElements = std::numeric_limits<int>::max();
-    const std::optional<RosValue> v = RosMessageDecoder::decodeCdr(registry, type, cdr, nullptr, limits);
-    const RosValue* data = dataOf(v);
+    const Result<RosValue> v = RosMessageDecoder::decodeCdr(registry, type, cdr, limits);
+    const RosValue* data = v ? v->find(u"data"_s) : nullptr;
     if (!data)
         return std::nullopt;
     const QString t = type.mid(13);
@@ -162,7 +157,10 @@ std::optional<QByteArray> fixedPrimitive(const RosTypeRegistry& registry, const 
     } else {
         data = QString::fromUtf8(text.trimmed()); // a number: the encoder checks its range and kind
     }
-    return RosMessageEncoder::encodeCdr(registry, type, QVariantMap {{u"data"_s, data}});
+    Result<QByteArray> cdr = RosMessageEncoder::encodeCdr(registry, type, QVariantMap {{u"data"_s, data}});
+    if (!cdr)
+        return std::nullopt;
+    return std::move(cdr).value();
 }
 
 namespace {
@@ -198,39 +196,30 @@ QString tooLargeForJson(qsizetype bytes)
         .arg(kMaxJsonBytes / (1024 * 1024));
 }
 
-std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr,
-                                 QString* error)
+Result<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr)
 {
-    if (cdr.size() > kMaxJsonBytes) {
-        if (error)
-            *error = tooLargeForJson(cdr.size());
-        return std::nullopt;
-    }
+    if (cdr.size() > kMaxJsonBytes)
+        return LocatedError {tooLargeForJson(cdr.size())};
     RosDecodeLimits limits;
     limits.maxStringChars = std::numeric_limits<int>::max();
     limits.maxArrayElements = std::numeric_limits<int>::max();
-    const std::optional<RosValue> v = RosMessageDecoder::decodeCdr(registry, type, cdr, error, limits);
+    const Result<RosValue> v = RosMessageDecoder::decodeCdr(registry, type, cdr, limits);
     if (!v)
-        return std::nullopt;
+        return v.error();
     return QJsonDocument(jsonOf(*v).toObject()).toJson(QJsonDocument::Compact);
 }
 
-std::optional<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json,
-                                   QString* error)
+Result<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json)
 {
     if (json.size() > kMaxJsonBytes) { // never the tree of it
-        if (error)
-            *error = tooLargeForJson(json.size());
-        return std::nullopt;
+        return LocatedError {tooLargeForJson(json.size())};
     }
     QJsonParseError parse;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parse);
-    if (!doc.isObject()) {
-        if (error)
-            *error = parse.error != QJsonParseError::NoError ? parse.errorString() : u"not a JSON object"_s;
-        return std::nullopt;
-    }
-    return RosMessageEncoder::encodeCdr(registry, type, doc.toVariant(), error);
+    if (!doc.isObject())
+        return LocatedError {parse.error != QJsonParseError::NoError ? parse.errorString()
+                                                                     : u"not a JSON object"_s};
+    return RosMessageEncoder::encodeCdr(registry, type, doc.toVariant());
 }
 
 } // namespace Ros2BridgeWire

@@ -54,12 +54,10 @@ inline constexpr qsizetype kMaxJsonBytes = 1024 * 1024;
 QString tooLargeForJson(qsizetype bytes);
 /// A message as a JSON object, field by field (json: true mappings towards MQTT; mqtt_client v2.5
 /// writes it with rosx_introspection, whose exact text, spacing and number format included, is
-/// not checked here); nullopt with `error`.
-std::optional<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr,
-                                 QString* error);
-/// JSON text as a message of `type` (json: true mappings); nullopt with `error`. Both refuse more
-/// than kMaxJsonBytes before anything is parsed.
-std::optional<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json,
-                                   QString* error);
+/// not checked here), or why not.
+Result<QByteArray> toJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& cdr);
+/// JSON text as a message of `type` (json: true mappings), or why not. Both refuse more than
+/// kMaxJsonBytes before anything is parsed.
+Result<QByteArray> fromJson(const RosTypeRegistry& registry, const QString& type, const QByteArray& json);
 
 } // namespace Ros2BridgeWire

@@ -123,7 +123,7 @@ QByteArray pointCloud(int payloadBytes)
                             {u"row_step"_s, width * 16},
                             {u"data"_s, data},
                             {u"is_dense"_s, true}};
-    return RosMessageEncoder::encodeCdr(registry(), kPointCloud, scan).value_or(QByteArray());
+    return RosMessageEncoder::encodeCdr(registry(), kPointCloud, scan).valueOr(QByteArray());
 }
 } // namespace
 
@@ -215,7 +215,7 @@ bool Ros2DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop
         const QVariantMap objects {{u"header"_s, headerOf(*stamp)}, {u"poses"_s, poses}};
         out.stamp(*stamp, wallClockNs());
         dds.publish(u"/cloud/object_list"_s,
-                    RosMessageEncoder::encodeCdr(registry(), kPoseArray, objects).value_or(QByteArray()));
+                    RosMessageEncoder::encodeCdr(registry(), kPoseArray, objects).valueOr(QByteArray()));
     });
     runUntil(stop);
     dds.stop();

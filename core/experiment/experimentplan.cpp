@@ -625,17 +625,6 @@ Result<ExperimentPlan> ExperimentPlan::readFile(const QString& path, QByteArray*
     });
 }
 
-std::optional<ExperimentPlan> ExperimentPlan::fromYaml(const QByteArray& yaml, const QString& baseDir,
-                                                       QString* error)
-{
-    return read(yaml, baseDir).toOptional(error);
-}
-
-std::optional<ExperimentPlan> ExperimentPlan::load(const QString& path, QString* error, QByteArray* text)
-{
-    return readFile(path, text).toOptional(error);
-}
-
 QString ExperimentPlan::durationText(double seconds)
 {
     // Bounded before the conversion: a double beyond qint64 has no defined conversion.

@@ -101,11 +101,6 @@ public:
     /// Reads a plan file; `text` gets its bytes (a copy of the plan is kept with its runs). A plan
     /// without a name keeps it empty: the caller names it (after the file, or the folder).
     static Result<ExperimentPlan> readFile(const QString& path, QByteArray* text = nullptr);
-    /// read() and readFile() for callers that take the error as text.
-    static std::optional<ExperimentPlan> fromYaml(const QByteArray& yaml, const QString& baseDir,
-                                                  QString* error);
-    static std::optional<ExperimentPlan> load(const QString& path, QString* error,
-                                              QByteArray* text = nullptr);
 
     /// The factors a plan may vary, with what their levels are.
     static QStringList knownFactors();

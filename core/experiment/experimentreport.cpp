@@ -179,11 +179,10 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
         return std::nullopt;
     };
     const QDir dir(directory);
-    QString why;
-    std::optional<ExperimentPlan> plan
-        = ExperimentPlan::load(ExperimentFolder(directory).planPath(), &why);
+    const Result<ExperimentPlan> plan = ExperimentPlan::readFile(ExperimentFolder(directory).planPath());
     if (!plan)
-        return fail(why);
+        return fail(plan.error().toString());
+    QString why;
     const std::optional<QList<CellStatus>> statuses = ExperimentFolder(directory).readState(*plan, &why);
     if (!statuses)
         return fail(why);
@@ -202,11 +201,11 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
             const Progress part = [&](int percent) {
                 return !progress || progress(int((100 * i + percent) / plan->cells.size()));
             };
-            const std::optional<RunData> run = RunFile::read(dir.filePath(cell.status.run), &why, part);
+            const Result<RunData> run = RunFile::read(dir.filePath(cell.status.run), part);
             if (!run && progress && !progress(int(100 * i / plan->cells.size())))
                 return fail(tr("cancelled"));
             if (!run) {
-                cell.problem = why;
+                cell.problem = run.error().toString();
             } else if (pipeline && run->info.pipeline.topics() != pipeline->topics()) {
                 cell.problem = tr("its pipeline differs from the first cell's");
             } else {

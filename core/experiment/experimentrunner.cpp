@@ -84,10 +84,9 @@ QString keptRunProblem(const QString& path, const ExperimentCell& cell, qint64 s
         return ExperimentRunner::tr("missing");
     if (!info.isFile())
         return ExperimentRunner::tr("not a regular file");
-    QString why;
-    const std::optional<RunData> run = RunFile::read(path, &why);
+    const Result<RunData> run = RunFile::read(path);
     if (!run)
-        return why;
+        return run.error().toString();
     if (run->info.cell != cell.id())
         return ExperimentRunner::tr("the run of another cell, %1").arg(run->info.cell);
     LatencyEngine engine(run->info.pipeline);
@@ -334,10 +333,13 @@ bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
     }
     if (!c.lab.startComponents(why))
         return false;
-    std::optional<Pipeline> pipeline
-        = Pipeline::load(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath, why);
-    if (!pipeline)
+    Result<Pipeline> pipeline
+        = Pipeline::readFile(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath);
+    if (!pipeline) {
+        if (why)
+            *why = pipeline.error().toString();
         return false;
+    }
     pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
     c.live = std::make_unique<LiveSession>();
     if (c.lab.ros() == 2) {
@@ -391,9 +393,8 @@ void ExperimentRunner::poll()
         info.factors = cell.levels;
         info.bridgeConfigPath = c.lab.vehicleConfigPath();
         info.bridgeConfig = RegularFile::head(c.lab.vehicleConfigPath(), YamlLimits::maxBytes + 1);
-        QString why;
-        if (!c.measure->startRecording(c.runPath, info, &why)) {
-            endCell(CellStatus::Failed, why);
+        if (const Result<void> started = c.measure->startRecording(c.runPath, info); !started) {
+            endCell(CellStatus::Failed, started.error().toString());
             return;
         }
         c.recording = true;
@@ -431,14 +432,14 @@ void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
     Cell& c = *m_cell;
     c.timer.stop();
     CellStatus& status = m_statuses[m_current];
-    QString why;
     if (c.recording) {
         c.live->drainNow();
         sendTotals();
         status.samples = c.measure->engine().samples();
-        if (!c.measure->stopRecording(&why) && state == CellStatus::Complete) {
+        if (const Result<void> stopped = c.measure->stopRecording();
+            !stopped && state == CellStatus::Complete) {
             state = CellStatus::Failed;
-            status.reason = why;
+            status.reason = stopped.error().toString();
         }
     }
     status.state = state;
@@ -498,7 +499,7 @@ void ExperimentRunner::stop()
     Cell& c = *m_cell;
     c.timer.stop();
     if (c.recording)
-        c.measure->stopRecording();
+        static_cast<void>(c.measure->stopRecording()); // the cell is stopped, its run with it
     CellStatus& status = m_statuses[m_current];
     status.state = CellStatus::Pending;
     status.reason = tr("stopped; --resume does it again");

@@ -215,16 +215,6 @@ Result<Pipeline> Pipeline::readFile(const QString& path)
     return YamlReader::readFileWith(path, &Pipeline::read);
 }
 
-std::optional<Pipeline> Pipeline::fromYaml(const QByteArray& yaml, QString* error)
-{
-    return read(yaml).toOptional(error);
-}
-
-std::optional<Pipeline> Pipeline::load(const QString& path, QString* error)
-{
-    return readFile(path).toOptional(error);
-}
-
 QByteArray Pipeline::toYaml() const
 {
     QString out = u"metrics_window: %1\n"_s.arg(m_window);

@@ -31,9 +31,6 @@ public:
     /// Parses pipeline YAML; errors name the line. Repeated topics count once (as in the suite).
     static Result<Pipeline> read(const QByteArray& yaml);
     static Result<Pipeline> readFile(const QString& path);
-    /// read() and readFile() for callers that take the error as text.
-    static std::optional<Pipeline> fromYaml(const QByteArray& yaml, QString* error = nullptr);
-    static std::optional<Pipeline> load(const QString& path, QString* error = nullptr);
     QByteArray toYaml() const;
     bool save(const QString& path, QString* error = nullptr) const;
 

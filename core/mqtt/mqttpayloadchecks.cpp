@@ -20,12 +20,11 @@ bool MqttPayloadChecks::absorbAnnouncement(const QString& dataTopic, const QByte
 {
     if (payload.isEmpty())
         return false; // a retained announcement being deleted
-    QString error;
-    const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload, &error);
+    const Result<RosMsgTypeInfo> info = MqttClientWire::decodeType(payload);
     if (!info) {
         ++m_malformedTypes;
         ++typeNode->malformed;
-        typeNode->typeError = error;
+        typeNode->typeError = info.error().toString();
         return false;
     }
     typeNode->typeError.clear();
@@ -37,9 +36,10 @@ bool MqttPayloadChecks::absorbAnnouncement(const QString& dataTopic, const QByte
     if (info->dialect == RosTypeRegistry::Dialect::Ros2)
         return true; // no definition on the wire: the ROS 2 registry's, looked up when needed
     auto registry = std::make_shared<RosTypeRegistry>();
-    if (registry->addDefinition(info->name, info->definition, &state->error)) {
+    if (const Result<void> added = registry->addDefinition(info->name, info->definition); added) {
         state->registry = registry;
     } else {
+        state->error = added.error().toString();
         ++m_malformedTypes;
         ++typeNode->malformed;
         typeNode->typeError = tr("the definition of %1 does not read: %2").arg(info->name, state->error);
@@ -51,8 +51,9 @@ void MqttPayloadChecks::stamp(const Type& type, const MqttMessage& msg, MqttTopi
 {
     if (!type.info.stamped)
         return;
-    QString why;
-    if (const auto stamped = MqttClientWire::splitStamped(msg.payload, type.info.dialect, &why)) {
+    if (const Result<MqttClientWire::Stamped> stamped
+        = MqttClientWire::splitStamped(msg.payload, type.info.dialect);
+        stamped) {
         const double ms = double(msg.receivedNs - stamped->stampNs) / 1e6;
         n->lastLatencyMs = ms;
         n->latencies.push_back(ms);
@@ -65,7 +66,7 @@ void MqttPayloadChecks::stamp(const Type& type, const MqttMessage& msg, MqttTopi
     } else {
         ++n->malformed;
         ++m_malformedPayloads;
-        n->payloadError = why;
+        n->payloadError = stamped.error().toString();
     }
 }
 
@@ -81,12 +82,12 @@ void MqttPayloadChecks::checkNewest(MqttTopicNode* n)
     RosDecodeLimits limits;
     limits.maxArrayElements = 1;
     limits.maxStringChars = 64;
-    QString error;
-    if (!SourceMessage::decode(*registry, {SourceGraph::Mqtt, type->info.name, type->info}, payload, &error,
-                               limits)) {
+    if (const Result<RosValue> value
+        = SourceMessage::decode(*registry, {SourceGraph::Mqtt, type->info.name, type->info}, payload, limits);
+        !value) {
         ++n->malformed;
         ++m_malformedPayloads;
-        n->payloadError = error;
+        n->payloadError = value.error().toString();
     }
 }
 

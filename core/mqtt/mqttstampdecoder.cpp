@@ -49,44 +49,42 @@ void MqttStampDecoder::decode(const std::vector<MqttMessage>& batch, std::vector
                 m_types.remove(data);
                 continue;
             }
-            QString why;
-            if (const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(m.payload, &why))
+            if (const Result<RosMsgTypeInfo> info = MqttClientWire::decodeType(m.payload); info)
                 m_types.insert(data, {isTimeStamped(*info), info->stamped, info->dialect});
             else if (m_types.contains(data) || m.payload.contains(StampCodec::typeName()))
-                fail(data, tr("type announcement: %1").arg(why)); // one meant for stamps, or replacing one
+                fail(data,
+                     tr("type announcement: %1")
+                         .arg(info.error().toString())); // one meant for stamps, or replacing one
             continue; // the topic tree reports every undecodable announcement
         }
         const auto type = m_types.constFind(m.topic);
         if (type != m_types.cend()) {
             QByteArray message = m.payload;
             if (type->stamped) {
-                QString why;
-                std::optional<MqttClientWire::Stamped> split
-                    = MqttClientWire::splitStamped(m.payload, type->dialect, &why);
+                Result<MqttClientWire::Stamped> split
+                    = MqttClientWire::splitStamped(m.payload, type->dialect);
                 if (!split) {
-                    fail(m.topic, why);
+                    fail(m.topic, split.error().toString());
                     continue;
                 }
                 latencies.push_back({latencySeries(m.topic), m.receivedNs - split->stampNs, m.receivedNs});
                 message = std::move(split->message);
             }
             if (type->timeStamped) {
-                QString why;
                 const SourceGraph graph
                     = type->dialect == RosTypeRegistry::Dialect::Ros2 ? SourceGraph::Ros2 : SourceGraph::Ros1;
-                if (const auto d = SourceMessage::decodeStamp(graph, message, &why))
+                if (const Result<StampCodec::Decoded> d = SourceMessage::decodeStamp(graph, message); d)
                     stamps.push_back({m.topic, d->sampleNs, d->timeNs, m.receivedNs});
                 else
-                    fail(m.topic, why);
+                    fail(m.topic, d.error().toString());
             }
             continue;
         }
         if (mayBeJsonStamp(m.payload)) {
-            QString why;
-            if (const auto d = StampCodec::decodeJson(m.payload, &why))
+            if (const Result<StampCodec::Decoded> d = StampCodec::decodeJson(m.payload); d)
                 stamps.push_back({m.topic, d->sampleNs, d->timeNs, m.receivedNs});
             else
-                fail(m.topic, why);
+                fail(m.topic, d.error().toString());
         }
     }
 }

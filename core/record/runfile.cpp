@@ -62,7 +62,7 @@ struct RunWriter::Private
             u"INSERT INTO latencies(series, value_ns, received_ns, drained_ns) VALUES (?, ?, ?, ?)"_s);
     }
 
-    qint64 idOf(QHash<QString, qint64>& ids, const QString& table, const QString& name, QString* error)
+    Result<qint64> idOf(QHash<QString, qint64>& ids, const QString& table, const QString& name)
     {
         const auto it = ids.constFind(name);
         if (it != ids.cend())
@@ -70,11 +70,8 @@ struct RunWriter::Private
         QSqlQuery q(connection->db());
         q.prepare(u"INSERT INTO %1(name) VALUES (?)"_s.arg(table));
         q.addBindValue(name);
-        if (!q.exec()) {
-            if (error)
-                *error = q.lastError().text();
-            return -1;
-        }
+        if (!q.exec())
+            return LocatedError {q.lastError().text()};
         const qint64 id = q.lastInsertId().toLongLong();
         ids.insert(name, id);
         return id;
@@ -92,18 +89,12 @@ RunWriter::~RunWriter()
     d->connection.reset();
 }
 
-bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
+Result<void> RunWriter::create(const QString& path, const RunInfo& info)
 {
-    if (QFileInfo::exists(path)) {
-        if (error)
-            *error = tr("%1 exists already; a run is never overwritten").arg(path);
-        return false;
-    }
-    if (!QDir().mkpath(QFileInfo(path).absolutePath())) {
-        if (error)
-            *error = tr("%1: cannot create its folder").arg(path);
-        return false;
-    }
+    if (QFileInfo::exists(path))
+        return LocatedError {tr("%1 exists already; a run is never overwritten").arg(path)};
+    if (!QDir().mkpath(QFileInfo(path).absolutePath()))
+        return LocatedError {tr("%1: cannot create its folder").arg(path)};
     // No credential is stored: passwords in the bridge config are redacted, URLs lose their user
     // info. A run that embeds a private config (or one that held a secret) is private too; the
     // file is created with its mode before SQLite opens it, so it is never readable by others,
@@ -118,18 +109,12 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         && (configStat.st_mode & 0044) == 0;
     const int fd = ::open(QFile::encodeName(path).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
                           (redacted || privateConfig) ? 0600 : 0666);
-    if (fd < 0) {
-        if (error)
-            *error = tr("%1: %2").arg(path, qt_error_string(errno));
-        return false;
-    }
+    if (fd < 0)
+        return LocatedError {tr("%1: %2").arg(path, qt_error_string(errno))};
     ::close(fd);
     d->connection = std::make_unique<Connection>(path);
-    if (!d->connection->isOpen()) {
-        if (error)
-            *error = tr("%1: %2").arg(path, d->connection->error());
-        return false;
-    }
+    if (!d->connection->isOpen())
+        return LocatedError {tr("%1: %2").arg(path, d->connection->error())};
     QSqlDatabase db = d->connection->db();
     QSqlQuery q(db);
     // WAL: a commit is durable against a killed process, and readers never block the writer.
@@ -147,8 +132,8 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         kEventsTable,
     };
     for (const QString& sql : schema)
-        if (!exec(q, sql, error))
-            return false;
+        if (Result<void> done = exec(q, sql); !done)
+            return done;
     const QList<std::pair<QString, QVariant>> meta {
         {u"format"_s, u"bridgescope-run"_s},
         {u"format_version"_s, RunFile::kFormatVersion},
@@ -172,113 +157,95 @@ bool RunWriter::create(const QString& path, const RunInfo& info, QString* error)
         {u"factors"_s, factorsJson(info.factors)},
     };
     for (const auto& [key, value] : meta)
-        if (!setMeta(key, value, error))
-            return false;
+        if (Result<void> set = setMeta(key, value); !set)
+            return set;
     d->prepare();
-    return true;
+    return {};
 }
 
-bool RunWriter::open(const QString& path, QString* error)
+Result<void> RunWriter::open(const QString& path)
 {
     d->connection = std::make_unique<Connection>(path);
-    if (!d->connection->isOpen()) {
-        if (error)
-            *error = tr("%1: %2").arg(path, d->connection->error());
-        return false;
-    }
+    if (!d->connection->isOpen())
+        return LocatedError {tr("%1: %2").arg(path, d->connection->error())};
     QSqlQuery q(d->connection->db());
     for (auto [table, ids] :
          {std::make_pair(u"topics"_s, &d->topicIds), std::make_pair(u"series"_s, &d->seriesIds)}) {
-        if (!exec(q, u"SELECT id, name FROM %1"_s.arg(table), error))
-            return false;
+        if (Result<void> done = exec(q, u"SELECT id, name FROM %1"_s.arg(table)); !done)
+            return done;
         while (q.next())
             ids->insert(q.value(1).toString(), q.value(0).toLongLong());
     }
-    if (!exec(q, u"SELECT count(*) FROM stamps"_s, error) || !q.next())
-        return false;
+    if (Result<void> done = exec(q, u"SELECT count(*) FROM stamps"_s); !done)
+        return done;
+    if (!q.next())
+        return LocatedError {}; // count(*) always has a row; the error says nothing more, as before
     m_stamps = q.value(0).toLongLong();
     d->prepare();
-    return true;
+    return {};
 }
 
-bool RunWriter::setMeta(const QString& key, const QVariant& value, QString* error)
+Result<void> RunWriter::setMeta(const QString& key, const QVariant& value)
 {
     QSqlQuery q(d->connection->db());
     q.prepare(u"INSERT OR REPLACE INTO meta(key, value) VALUES (?, ?)"_s);
     q.addBindValue(key);
     q.addBindValue(value);
     if (q.exec())
-        return true;
-    if (error)
-        *error = q.lastError().text();
-    return false;
+        return {};
+    return LocatedError {q.lastError().text()};
 }
 
-bool RunWriter::append(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
-                       qint64 drainedNs, QString* error)
+Result<void> RunWriter::append(const std::vector<StampEvent>& stamps,
+                               const std::vector<LatencyValue>& latencies, qint64 drainedNs)
 {
     if (stamps.empty() && latencies.empty())
-        return true;
+        return {};
     QSqlDatabase db = d->connection->db();
-    if (!db.transaction()) {
-        if (error)
-            *error = db.lastError().text();
-        return false;
-    }
-    const auto fail = [&](const QSqlQuery& q) {
-        if (error)
-            *error = q.lastError().text();
+    if (!db.transaction())
+        return LocatedError {db.lastError().text()};
+    const auto rollBack = [&](const QString& why) {
         db.rollback();
-        return false;
+        return LocatedError {why};
     };
     QSqlQuery& s = *d->insertStamp;
     for (const StampEvent& e : stamps) {
-        const qint64 topic = d->idOf(d->topicIds, u"topics"_s, e.topic, error);
-        if (topic < 0) {
-            db.rollback();
-            return false;
-        }
-        s.bindValue(0, topic);
+        const Result<qint64> topic = d->idOf(d->topicIds, u"topics"_s, e.topic);
+        if (!topic)
+            return rollBack(topic.error().message);
+        s.bindValue(0, *topic);
         s.bindValue(1, e.sampleNs);
         s.bindValue(2, e.timeNs);
         s.bindValue(3, e.receivedNs);
         s.bindValue(4, drainedNs);
         if (!s.exec())
-            return fail(s);
+            return rollBack(s.lastError().text());
     }
     QSqlQuery& l = *d->insertLatency;
     for (const LatencyValue& v : latencies) {
-        const qint64 series = d->idOf(d->seriesIds, u"series"_s, v.series, error);
-        if (series < 0) {
-            db.rollback();
-            return false;
-        }
-        l.bindValue(0, series);
+        const Result<qint64> series = d->idOf(d->seriesIds, u"series"_s, v.series);
+        if (!series)
+            return rollBack(series.error().message);
+        l.bindValue(0, *series);
         l.bindValue(1, v.valueNs);
         l.bindValue(2, v.receivedNs);
         l.bindValue(3, drainedNs);
         if (!l.exec())
-            return fail(l);
+            return rollBack(l.lastError().text());
     }
-    if (!db.commit()) {
-        if (error)
-            *error = db.lastError().text();
-        return false;
-    }
+    if (!db.commit())
+        return LocatedError {db.lastError().text()};
     m_stamps += qint64(stamps.size());
-    return true;
+    return {};
 }
 
-bool RunWriter::putEvents(const std::vector<RecordedEvent>& events, QString* error)
+Result<void> RunWriter::putEvents(const std::vector<RecordedEvent>& events)
 {
     if (events.empty())
-        return true;
+        return {};
     QSqlDatabase db = d->connection->db();
-    if (!db.transaction()) {
-        if (error)
-            *error = db.lastError().text();
-        return false;
-    }
+    if (!db.transaction())
+        return LocatedError {db.lastError().text()};
     QSqlQuery q(db);
     q.prepare(u"INSERT INTO events(subject, start_ns, end_ns, level, reasons, detail, json) "
               "VALUES (?, ?, ?, ?, ?, ?, ?) ON CONFLICT(subject, start_ns) DO UPDATE SET "
@@ -295,28 +262,25 @@ bool RunWriter::putEvents(const std::vector<RecordedEvent>& events, QString* err
         q.bindValue(5, text(e.detail));
         q.bindValue(6, text(QString::fromUtf8(e.json)));
         if (!q.exec()) {
-            if (error)
-                *error = q.lastError().text();
+            const QString why = q.lastError().text();
             db.rollback();
-            return false;
+            return LocatedError {why};
         }
     }
-    if (!db.commit()) {
-        if (error)
-            *error = db.lastError().text();
-        return false;
-    }
-    return true;
+    if (!db.commit())
+        return LocatedError {db.lastError().text()};
+    return {};
 }
 
-bool RunWriter::finish(qint64 stoppedNs, QString* error)
+Result<void> RunWriter::finish(qint64 stoppedNs)
 {
-    if (!setMeta(u"stopped_ns"_s, stoppedNs, error))
-        return false;
+    if (Result<void> set = setMeta(u"stopped_ns"_s, stoppedNs); !set)
+        return set;
     QSqlQuery q(d->connection->db());
     // One self-contained file from now on: fold the log in and leave WAL mode.
-    return exec(q, u"PRAGMA wal_checkpoint(TRUNCATE)"_s, error)
-        && exec(q, u"PRAGMA journal_mode=DELETE"_s, error);
+    if (Result<void> done = exec(q, u"PRAGMA wal_checkpoint(TRUNCATE)"_s); !done)
+        return done;
+    return exec(q, u"PRAGMA journal_mode=DELETE"_s);
 }
 
 void RunFile::remove(const QString& path)
@@ -325,22 +289,20 @@ void RunFile::remove(const QString& path)
         QFile::remove(path + suffix);
 }
 
-bool RunFile::write(const QString& path, const RunData& run, QString* error, const Progress& progress)
+Result<void> RunFile::write(const QString& path, const RunData& run, const Progress& progress)
 {
     // The rename at the end would replace a FIFO, a device or a read-only file like any other.
-    if (const QString refused = AtomicFile::refusalReason(path); !refused.isEmpty()) {
-        if (error)
-            *error = refused;
-        return false;
-    }
+    if (const QString refused = AtomicFile::refusalReason(path); !refused.isEmpty())
+        return LocatedError {refused};
     const QString temp = path + u".part-"_s + QUuid::createUuid().toString(QUuid::Id128).left(8);
-    const auto cleanUp = [&] { remove(temp); };
+    const auto cleanUp = [&](LocatedError why) {
+        remove(temp);
+        return why;
+    };
     {
         RunWriter writer;
-        if (!writer.create(temp, run.info, error)) {
-            cleanUp();
-            return false;
-        }
+        if (Result<void> created = writer.create(temp, run.info); !created)
+            return cleanUp(created.error());
         // One transaction per drain tick as recorded, in chunks.
         std::vector<StampEvent> stamps;
         std::vector<LatencyValue> latencies;
@@ -357,35 +319,29 @@ bool RunFile::write(const QString& path, const RunData& run, QString* error, con
                 const RecordedLatency& v = run.latencies[l++];
                 latencies.push_back({run.series[v.series], v.valueNs, v.receivedNs});
             }
-            if (!writer.append(stamps, latencies, drained, error)) {
-                cleanUp();
-                return false;
-            }
-            if (progress && !progress(int(95 * i / run.stamps.size()))) {
-                cleanUp();
-                if (error)
-                    *error = tr("cancelled");
-                return false;
-            }
+            if (Result<void> appended = writer.append(stamps, latencies, drained); !appended)
+                return cleanUp(appended.error());
+            if (progress && !progress(int(95 * i / run.stamps.size())))
+                return cleanUp(LocatedError {tr("cancelled")});
         }
         latencies.clear();
         for (; l < run.latencies.size(); ++l)
             latencies.push_back(
                 {run.series[run.latencies[l].series], run.latencies[l].valueNs, run.latencies[l].receivedNs});
-        if (!writer.append({}, latencies, run.latencies.empty() ? 0 : run.latencies.back().drainedNs, error)
-            || !writer.putEvents(run.events, error) || !writer.finish(run.info.stoppedNs, error)) {
-            cleanUp();
-            return false;
-        }
+        if (Result<void> appended
+            = writer.append({}, latencies, run.latencies.empty() ? 0 : run.latencies.back().drainedNs);
+            !appended)
+            return cleanUp(appended.error());
+        if (Result<void> put = writer.putEvents(run.events); !put)
+            return cleanUp(put.error());
+        if (Result<void> finished = writer.finish(run.info.stoppedNs); !finished)
+            return cleanUp(finished.error());
     }
     // rename(2) replaces the target in one step: readers see the old run or the new one.
-    if (std::rename(QFile::encodeName(temp).constData(), QFile::encodeName(path).constData()) != 0) {
-        if (error)
-            *error = tr("%1: cannot replace it (%2)").arg(path, QString::fromLocal8Bit(std::strerror(errno)));
-        cleanUp();
-        return false;
-    }
+    if (std::rename(QFile::encodeName(temp).constData(), QFile::encodeName(path).constData()) != 0)
+        return cleanUp(LocatedError {
+            tr("%1: cannot replace it (%2)").arg(path, QString::fromLocal8Bit(std::strerror(errno)))});
     if (progress)
         progress(100);
-    return true;
+    return {};
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "latency/rundata.h"
 #include "wire/stampevent.h"
 
@@ -25,13 +26,11 @@ public:
     /// Whether the file starts like an SQLite database.
     static bool looksLikeRun(const QString& path);
 
-    static std::optional<RunData> read(const QString& path, QString* error = nullptr,
-                                       const Progress& progress = {});
+    static Result<RunData> read(const QString& path, const Progress& progress = {});
     /// Deletes a run file and its SQLite side files (-wal, -shm, -journal).
     static void remove(const QString& path);
     /// Writes a whole run (an import) atomically: to a temporary file, renamed when complete.
-    static bool write(const QString& path, const RunData& run, QString* error = nullptr,
-                      const Progress& progress = {});
+    static Result<void> write(const QString& path, const RunData& run, const Progress& progress = {});
 };
 
 /// Appends to a run file as it is recorded (one thread: the recorder's worker).
@@ -45,19 +44,19 @@ public:
     RunWriter& operator=(const RunWriter&) = delete;
 
     /// Creates a new run file; refuses to overwrite one.
-    bool create(const QString& path, const RunInfo& info, QString* error = nullptr);
+    Result<void> create(const QString& path, const RunInfo& info);
     /// Opens a run file made by create() to append to it (on another thread than the one that created it).
-    bool open(const QString& path, QString* error = nullptr);
+    Result<void> open(const QString& path);
     /// Appends events in one transaction (committed before it returns).
-    bool append(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
-                qint64 drainedNs, QString* error = nullptr);
+    Result<void> append(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
+                        qint64 drainedNs);
     /// Writes watch events in one transaction: a new one is added, one seen before (same subject
     /// and start) gets its end. So an event is in the file from its start, and a killed recorder
     /// leaves it open rather than lost.
-    bool putEvents(const std::vector<RecordedEvent>& events, QString* error = nullptr);
-    bool setMeta(const QString& key, const QVariant& value, QString* error = nullptr);
+    Result<void> putEvents(const std::vector<RecordedEvent>& events);
+    Result<void> setMeta(const QString& key, const QVariant& value);
     /// Records the stop time and makes the file self-contained.
-    bool finish(qint64 stoppedNs, QString* error = nullptr);
+    Result<void> finish(qint64 stoppedNs);
     qint64 stampCount() const { return m_stamps; }
 
 private:

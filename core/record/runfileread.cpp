@@ -173,12 +173,10 @@ private:
 /// A run file is data, not a program: every object in it must be one of the format's tables with
 /// its columns (no generated ones), an index of one, or SQLite's own. A view, a trigger or a virtual
 /// table is refused, named.
-bool checkSchema(QSqlQuery& q, QString* why)
+Result<void> checkSchema(QSqlQuery& q)
 {
-    if (!q.exec(u"SELECT type, name, tbl_name, sql FROM sqlite_master"_s)) {
-        *why = RunFile::tr("not a Bridgescope run (%1)").arg(q.lastError().text());
-        return false;
-    }
+    if (!q.exec(u"SELECT type, name, tbl_name, sql FROM sqlite_master"_s))
+        return LocatedError {RunFile::tr("not a Bridgescope run (%1)").arg(q.lastError().text())};
     const QHash<QString, QStringList>& tables = formatTables();
     const QSet<QString> internal {u"sqlite_sequence"_s, u"sqlite_stat1"_s, u"sqlite_stat4"_s};
     QStringList present;
@@ -200,18 +198,15 @@ bool checkSchema(QSqlQuery& q, QString* why)
         else
             refused = ReadGuard::tr("%1 \"%2\" is not one of its tables")
                           .arg(virtualTable ? u"virtual table"_s : type, name);
-        if (!refused.isEmpty()) {
-            *why = ReadGuard::tr("not a Bridgescope run, refused: %1").arg(refused);
-            return false;
-        }
+        if (!refused.isEmpty())
+            return LocatedError {ReadGuard::tr("not a Bridgescope run, refused: %1").arg(refused)};
     }
-    if (q.lastError().isValid()) {
-        *why = q.lastError().text();
-        return false;
-    }
+    if (q.lastError().isValid())
+        return LocatedError {q.lastError().text()};
     for (const QString& table : std::as_const(present)) {
-        if (!exec(q, u"SELECT name, hidden FROM pragma_table_xinfo('%1')"_s.arg(table), why))
-            return false;
+        if (Result<void> done = exec(q, u"SELECT name, hidden FROM pragma_table_xinfo('%1')"_s.arg(table));
+            !done)
+            return done;
         QStringList columns;
         while (q.next()) {
             if (q.value(1).toInt() != 0) // generated (2, 3) or hidden: computed when read
@@ -221,13 +216,12 @@ bool checkSchema(QSqlQuery& q, QString* why)
         QStringList expected = tables.value(table);
         std::sort(columns.begin(), columns.end());
         std::sort(expected.begin(), expected.end());
-        if (columns != expected) {
-            *why = ReadGuard::tr("not a Bridgescope run, refused: table \"%1\" has the columns %2, not %3")
-                       .arg(table, columns.join(u", "_s).left(500), expected.join(u", "_s));
-            return false;
-        }
+        if (columns != expected)
+            return LocatedError {
+                ReadGuard::tr("not a Bridgescope run, refused: table \"%1\" has the columns %2, not %3")
+                    .arg(table, columns.join(u", "_s).left(500), expected.join(u", "_s))};
     }
-    return true;
+    return {};
 }
 
 /// What a run's event may hold: its JSON is dropped beyond this, texts are cut (a run file is input).
@@ -250,17 +244,20 @@ QList<std::pair<QString, QString>> factorsOf(const QString& json)
                                    kMaxFactorText);
 }
 /// The run's watch events, by start; none from a run made before they were recorded.
-bool readEvents(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedEvent>* events, QString* error)
+Result<void> readEvents(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedEvent>* events)
 {
-    if (!exec(q, u"SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'events'"_s, error))
-        return false;
+    if (Result<void> done
+        = exec(q, u"SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'events'"_s);
+        !done)
+        return done;
     if (!q.next() || q.value(0).toInt() == 0)
-        return true;
-    if (!exec(q,
-              u"SELECT subject, start_ns, end_ns, level, reasons, detail, json FROM events "
-              "ORDER BY start_ns, rowid"_s,
-              error))
-        return false;
+        return {};
+    if (Result<void> done
+        = exec(q,
+               u"SELECT subject, start_ns, end_ns, level, reasons, detail, json FROM events "
+               "ORDER BY start_ns, rowid"_s);
+        !done)
+        return done;
     const auto text = [&q](int column) { return q.value(column).toString().left(kMaxEventText); };
     while (q.next()) {
         RecordedEvent e;
@@ -277,12 +274,9 @@ bool readEvents(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedEvent>* even
             break;
         events->push_back(std::move(e));
     }
-    if (q.lastError().isValid()) {
-        if (error)
-            *error = q.lastError().text();
-        return false;
-    }
-    return true;
+    if (q.lastError().isValid())
+        return LocatedError {q.lastError().text()};
+    return {};
 }
 } // namespace
 
@@ -293,34 +287,26 @@ bool RunFile::looksLikeRun(const QString& path)
 
 namespace {
 /// The run's metadata (refused when it is not a run's, or of a newer format).
-bool readInfo(QSqlQuery& q, ReadGuard& guard, RunInfo* info, QString* why)
+Result<void> readInfo(QSqlQuery& q, ReadGuard& guard, RunInfo* info)
 {
     QHash<QString, QVariant> meta;
-    if (!q.exec(u"SELECT key, value FROM meta"_s)) {
-        *why = RunFile::tr("not a Bridgescope run (%1)").arg(q.lastError().text());
-        return false;
-    }
+    if (!q.exec(u"SELECT key, value FROM meta"_s))
+        return LocatedError {RunFile::tr("not a Bridgescope run (%1)").arg(q.lastError().text())};
     while (q.next()) {
         const QString key = q.value(0).toString();
         const QVariant value = q.value(1);
         if (!guard.takeRow(2 * key.size() + (value.typeId() == QMetaType::QString ? 2 * value.toString().size() : 8)))
-            return false;
+            return LocatedError {}; // the guard says why
         meta.insert(key, value);
     }
-    if (q.lastError().isValid()) {
-        *why = q.lastError().text();
-        return false;
-    }
-    if (metaText(meta, u"format"_s) != u"bridgescope-run"_s) {
-        *why = RunFile::tr("not a Bridgescope run (no run metadata)");
-        return false;
-    }
-    if (meta.value(u"format_version"_s).toInt() > RunFile::kFormatVersion) {
-        *why = RunFile::tr("written by a newer Bridgescope (run format %1, this one reads %2)")
-                   .arg(meta.value(u"format_version"_s).toInt())
-                   .arg(RunFile::kFormatVersion);
-        return false;
-    }
+    if (q.lastError().isValid())
+        return LocatedError {q.lastError().text()};
+    if (metaText(meta, u"format"_s) != u"bridgescope-run"_s)
+        return LocatedError {RunFile::tr("not a Bridgescope run (no run metadata)")};
+    if (meta.value(u"format_version"_s).toInt() > RunFile::kFormatVersion)
+        return LocatedError {RunFile::tr("written by a newer Bridgescope (run format %1, this one reads %2)")
+                                 .arg(meta.value(u"format_version"_s).toInt())
+                                 .arg(RunFile::kFormatVersion)};
     info->name = metaText(meta, u"name"_s);
     info->notes = metaText(meta, u"notes"_s);
     info->startedNs = meta.value(u"started_ns"_s).toLongLong();
@@ -342,84 +328,74 @@ bool readInfo(QSqlQuery& q, ReadGuard& guard, RunInfo* info, QString* why)
     // No pipeline: a run of `watch`, with events only.
     const QByteArray pipelineYaml = metaText(meta, u"pipeline"_s).toUtf8();
     const Result<Pipeline> pipeline = pipelineYaml.isEmpty() ? Pipeline() : Pipeline::read(pipelineYaml);
-    if (!pipeline) {
-        *why = RunFile::tr("its pipeline cannot be read: %1").arg(pipeline.error().toString());
-        return false;
-    }
+    if (!pipeline)
+        return LocatedError {RunFile::tr("its pipeline cannot be read: %1").arg(pipeline.error().toString())};
     info->pipeline = *pipeline;
-    return true;
+    return {};
 }
 
 /// The names of `table` (topics, series) in id order, and each id's index among them.
-bool readNames(QSqlQuery& q, ReadGuard& guard, const QString& table, QStringList* names,
-               QHash<qint64, int>* index, QString* why)
+Result<void> readNames(QSqlQuery& q, ReadGuard& guard, const QString& table, QStringList* names,
+                       QHash<qint64, int>* index)
 {
-    if (!exec(q, u"SELECT id, name FROM %1 ORDER BY id"_s.arg(table), why))
-        return false;
+    if (Result<void> done = exec(q, u"SELECT id, name FROM %1 ORDER BY id"_s.arg(table)); !done)
+        return done;
     while (q.next()) {
         const QString name = q.value(1).toString();
         if (!guard.takeRow(2 * name.size()))
-            return false;
+            return LocatedError {}; // the guard says why
         index->insert(q.value(0).toLongLong(), int(names->size()));
         *names << name;
     }
-    return true;
+    return {};
 }
 
 /// The stamps and latencies, grown as read: never sized by a count the file gives.
-bool readValues(QSqlQuery& q, ReadGuard& guard, const QHash<qint64, int>& topicIndex,
-                const QHash<qint64, int>& seriesIndex, RunData* run, QString* why)
+Result<void> readValues(QSqlQuery& q, ReadGuard& guard, const QHash<qint64, int>& topicIndex,
+                        const QHash<qint64, int>& seriesIndex, RunData* run)
 {
     qint64 total = 0; // for the progress shown only
     if (q.exec(u"SELECT count(*) FROM stamps"_s) && q.next())
         total = std::max<qint64>(q.value(0).toLongLong(), 1);
-    if (!exec(q, u"SELECT topic, sample_ns, time_ns, received_ns, drained_ns FROM stamps ORDER BY rowid"_s, why))
-        return false;
+    if (Result<void> done
+        = exec(q, u"SELECT topic, sample_ns, time_ns, received_ns, drained_ns FROM stamps ORDER BY rowid"_s);
+        !done)
+        return done;
     qint64 n = 0;
     while (q.next()) {
         const auto topic = topicIndex.constFind(q.value(0).toLongLong());
-        if (topic == topicIndex.cend()) {
-            *why = RunFile::tr("stamp %1 names a topic the run does not have").arg(n + 1);
-            return false;
-        }
+        if (topic == topicIndex.cend())
+            return LocatedError {RunFile::tr("stamp %1 names a topic the run does not have").arg(n + 1)};
         guard.setPercent(int(90 * std::min(++n, total) / std::max<qint64>(total, 1)));
         if (!guard.takeRow())
-            return false;
+            return LocatedError {}; // the guard says why
         run->stamps.push_back({*topic, q.value(1).toLongLong(), q.value(2).toLongLong(),
                                q.value(3).toLongLong(), q.value(4).toLongLong()});
     }
-    if (q.lastError().isValid()) {
-        *why = q.lastError().text();
-        return false;
-    }
-    if (!exec(q, u"SELECT series, value_ns, received_ns, drained_ns FROM latencies ORDER BY rowid"_s, why))
-        return false;
+    if (q.lastError().isValid())
+        return LocatedError {q.lastError().text()};
+    if (Result<void> done
+        = exec(q, u"SELECT series, value_ns, received_ns, drained_ns FROM latencies ORDER BY rowid"_s);
+        !done)
+        return done;
     while (q.next()) {
         const auto series = seriesIndex.constFind(q.value(0).toLongLong());
-        if (series == seriesIndex.cend()) {
-            *why = RunFile::tr("a latency names a series the run does not have");
-            return false;
-        }
+        if (series == seriesIndex.cend())
+            return LocatedError {RunFile::tr("a latency names a series the run does not have")};
         if (!guard.takeRow())
-            return false;
+            return LocatedError {}; // the guard says why
         run->latencies.push_back(
             {*series, q.value(1).toLongLong(), q.value(2).toLongLong(), q.value(3).toLongLong()});
     }
-    if (q.lastError().isValid()) {
-        *why = q.lastError().text();
-        return false;
-    }
-    return true;
+    if (q.lastError().isValid())
+        return LocatedError {q.lastError().text()};
+    return {};
 }
 } // namespace
 
-std::optional<RunData> RunFile::read(const QString& path, QString* error, const Progress& progress)
+Result<RunData> RunFile::read(const QString& path, const Progress& progress)
 {
-    const auto fail = [&](const QString& why) -> std::optional<RunData> {
-        if (error)
-            *error = path + u": "_s + why;
-        return std::nullopt;
-    };
+    const auto fail = [&](const QString& why) { return LocatedError {path + u": "_s + why}; };
     // A regular file only: SQLite would wait on a FIFO in open() for ever.
     QString notFile;
     std::optional<RegularFile::Opened> probe = RegularFile::open(path, std::numeric_limits<qint64>::max(), &notFile);
@@ -441,21 +417,26 @@ std::optional<RunData> RunFile::read(const QString& path, QString* error, const 
         return fail(tr("cannot read it: the SQLite driver gives no handle to set its limits"));
     QSqlQuery q(connection.db());
     q.setForwardOnly(true);
-    QString why;
     // The guard's reason first: an interrupted statement only says "interrupted".
-    const auto stopped = [&] { return fail(guard.why().isEmpty() ? why : guard.why()); };
-    if (!checkSchema(q, &why))
-        return stopped();
+    const auto stopped = [&](const Result<void>& step) {
+        return fail(guard.why().isEmpty() ? step.error().message : guard.why());
+    };
     RunData run;
-    if (!readInfo(q, guard, &run.info, &why))
-        return stopped();
     QHash<qint64, int> topicIndex;
     QHash<qint64, int> seriesIndex;
-    if (!readNames(q, guard, u"topics"_s, &run.topics, &topicIndex, &why)
-        || !readNames(q, guard, u"series"_s, &run.series, &seriesIndex, &why)
-        || !readValues(q, guard, topicIndex, seriesIndex, &run, &why)
-        || !readEvents(q, guard, &run.events, &why) || !guard.why().isEmpty())
-        return stopped();
+    const std::function<Result<void>()> steps[] = {
+        [&] { return checkSchema(q); },
+        [&] { return readInfo(q, guard, &run.info); },
+        [&] { return readNames(q, guard, u"topics"_s, &run.topics, &topicIndex); },
+        [&] { return readNames(q, guard, u"series"_s, &run.series, &seriesIndex); },
+        [&] { return readValues(q, guard, topicIndex, seriesIndex, &run); },
+        [&] { return readEvents(q, guard, &run.events); },
+    };
+    for (const auto& step : steps)
+        if (const Result<void> done = step(); !done)
+            return stopped(done);
+    if (!guard.why().isEmpty())
+        return stopped({});
     if (progress)
         progress(100);
     return run;

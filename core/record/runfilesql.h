@@ -3,6 +3,8 @@
 
 // The SQLite connection the run file's writer and reader share (not part of the API).
 
+#include "base/result.h"
+
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -46,13 +48,11 @@ private:
     QString m_error;
 };
 
-inline bool exec(QSqlQuery& q, const QString& sql, QString* error)
+inline Result<void> exec(QSqlQuery& q, const QString& sql)
 {
     if (q.exec(sql))
-        return true;
-    if (error)
-        *error = q.lastError().text();
-    return false;
+        return {};
+    return LocatedError {q.lastError().text()};
 }
 
 } // namespace RunSql

@@ -31,7 +31,7 @@ struct RunRecorder::Private
     QTimer* timer = nullptr;
 
     // Worker thread: one transaction per tick of the GUI, committed together.
-    bool flush(QString* error)
+    Result<void> flush()
     {
         std::vector<Tick> ticks;
         std::vector<RecordedEvent> events;
@@ -41,14 +41,14 @@ struct RunRecorder::Private
             events.swap(queuedEvents);
         }
         for (const Tick& t : ticks) {
-            if (!writer->append(t.stamps, t.latencies, t.drainedNs, error))
-                return false;
+            if (Result<void> appended = writer->append(t.stamps, t.latencies, t.drainedNs); !appended)
+                return appended;
             queuedStamps.fetch_sub(qint64(t.stamps.size()));
         }
-        if (!writer->putEvents(events, error))
-            return false;
+        if (Result<void> put = writer->putEvents(events); !put)
+            return put;
         committed.store(writer->stampCount());
-        return true;
+        return {};
     }
 };
 
@@ -62,20 +62,17 @@ RunRecorder::RunRecorder(QObject* parent)
 RunRecorder::~RunRecorder()
 {
     if (isRecording())
-        stop();
+        static_cast<void>(stop()); // nobody is left to tell of a failure
 }
 
-bool RunRecorder::start(const QString& path, const RunInfo& info, QString* error)
+Result<void> RunRecorder::start(const QString& path, const RunInfo& info)
 {
-    if (isRecording()) {
-        if (error)
-            *error = tr("already recording to %1").arg(d->path);
-        return false;
-    }
+    if (isRecording())
+        return LocatedError {tr("already recording to %1").arg(d->path)};
     // The file is created here, so that a bad path is reported at once; writing moves to the worker.
     auto writer = std::make_unique<RunWriter>();
-    if (!writer->create(path, info, error))
-        return false;
+    if (Result<void> created = writer->create(path, info); !created)
+        return created;
     writer.reset(); // the connection belongs to this thread: reopen on the worker
     d->path = path;
     d->committed = 0;
@@ -93,13 +90,15 @@ bool RunRecorder::start(const QString& path, const RunInfo& info, QString* error
         p->worker,
         [p, self, &openError] {
             p->writer = std::make_unique<RunWriter>();
-            if (!p->writer->open(p->path, &openError))
+            if (const Result<void> opened = p->writer->open(p->path); !opened) {
+                openError = opened.error().toString();
                 return;
+            }
             p->timer = new QTimer(p->worker);
             p->timer->setInterval(kCommitIntervalMs);
             QObject::connect(p->timer, &QTimer::timeout, p->worker, [p, self] {
-                QString why;
-                if (!p->flush(&why)) {
+                if (const Result<void> flushed = p->flush(); !flushed) {
+                    const QString why = flushed.error().toString();
                     p->timer->stop();
                     p->recording = false;
                     QMetaObject::invokeMethod(self, [self, why] {
@@ -121,11 +120,9 @@ bool RunRecorder::start(const QString& path, const RunInfo& info, QString* error
         d->recording = false;
         d->thread.quit();
         d->thread.wait();
-        if (error)
-            *error = openError;
-        return false;
+        return LocatedError {openError};
     }
-    return true;
+    return {};
 }
 
 void RunRecorder::add(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
@@ -146,30 +143,31 @@ void RunRecorder::addEvent(const RecordedEvent& event)
     d->queuedEvents.push_back(event);
 }
 
-bool RunRecorder::stop(QString* error)
+Result<void> RunRecorder::stop()
 {
     if (!d->thread.isRunning())
-        return false;
+        return LocatedError {}; // nothing to stop: no message, as the callers check first
     std::shared_ptr<Private> p = d;
-    QString why;
-    bool ok = false;
+    Result<void> stopped = LocatedError {}; // no writer: its open failed and was reported
     QMetaObject::invokeMethod(
         p->worker,
-        [p, &why, &ok] {
+        [p, &stopped] {
             if (p->timer)
                 p->timer->stop();
-            ok = p->writer && p->flush(&why)
-                && p->writer->finish(QDateTime::currentMSecsSinceEpoch() * 1'000'000, &why);
+            if (p->writer) {
+                stopped = p->flush();
+                if (stopped)
+                    stopped = p->writer->finish(QDateTime::currentMSecsSinceEpoch() * 1'000'000);
+            }
             p->writer.reset();
         },
         Qt::BlockingQueuedConnection);
     d->recording = false;
-    qCDebug(lcRecord).noquote() << "stopped recording to" << d->path << (ok ? "" : "failed:") << why;
+    qCDebug(lcRecord).noquote() << "stopped recording to" << d->path << (stopped ? "" : "failed:")
+                                << (stopped ? QString() : stopped.error().toString());
     d->thread.quit();
     d->thread.wait();
-    if (!ok && error)
-        *error = why;
-    return ok;
+    return stopped;
 }
 
 bool RunRecorder::isRecording() const

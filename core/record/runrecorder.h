@@ -21,14 +21,14 @@ public:
     ~RunRecorder() override;
 
     /// Creates the run file (refusing to overwrite one) and starts the worker.
-    bool start(const QString& path, const RunInfo& info, QString* error = nullptr);
+    Result<void> start(const QString& path, const RunInfo& info);
     /// Queues one drain tick's events (GUI thread; cheap).
     void add(const std::vector<StampEvent>& stamps, const std::vector<LatencyValue>& latencies,
              qint64 drainedNs);
     /// Queues a watch event's start or end (GUI thread; cheap). Written with the next commit.
     void addEvent(const RecordedEvent& event);
     /// Commits what is queued, records the stop time and closes the file (waits for the worker).
-    bool stop(QString* error = nullptr);
+    Result<void> stop();
 
     bool isRecording() const;
     QString path() const;

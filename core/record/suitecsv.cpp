@@ -152,17 +152,14 @@ public:
         return poll();
     }
     /// The file's end: its last record, then the data or the error.
-    std::optional<SuiteCsv::Data> finish(QString* error)
+    Result<SuiteCsv::Data> finish()
     {
         if (m_why.isEmpty())
             takeRecords(true);
         if (m_why.isEmpty() && !m_header)
             stop(m_line, SuiteCsv::tr("empty file: expected a header row of stamp topics"));
-        if (!m_why.isEmpty()) {
-            if (error)
-                *error = m_why;
-            return std::nullopt;
-        }
+        if (!m_why.isEmpty())
+            return LocatedError {m_why};
         return std::move(m_data);
     }
 
@@ -346,46 +343,38 @@ private:
 constexpr qsizetype kChunkBytes = 1024 * 1024;
 } // namespace
 
-std::optional<SuiteCsv::Data> SuiteCsv::read(const QString& path, QString* error, const Progress& progress,
-                                             const Limits& limits)
+Result<SuiteCsv::Data> SuiteCsv::read(const QString& path, const Progress& progress, const Limits& limits)
 {
     // A regular file (a FIFO or /dev/zero is refused), read in chunks up to its size at the open.
     QString why;
     std::optional<RegularFile::Opened> f = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
-    if (!f) {
-        if (error)
-            *error = tr("%1: %2").arg(path, why);
-        return std::nullopt;
-    }
+    if (!f)
+        return LocatedError {tr("%1: %2").arg(path, why)};
     Parser parser(path, limits, progress, f->size);
     QByteArray chunk(kChunkBytes, Qt::Uninitialized);
     for (qint64 left = f->size; left > 0;) {
         const qint64 got = f->file->read(chunk.data(), std::min<qint64>(left, kChunkBytes));
-        if (got < 0) {
-            if (error)
-                *error = tr("%1: %2").arg(path, f->file->errorString());
-            return std::nullopt;
-        }
+        if (got < 0)
+            return LocatedError {tr("%1: %2").arg(path, f->file->errorString())};
         if (got == 0)
             break; // the file became shorter
         left -= got;
         if (!parser.feed(chunk.constData(), qsizetype(got)))
             break;
     }
-    return parser.finish(error);
+    return parser.finish();
 }
 
-std::optional<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QString& name, QString* error,
-                                              const Progress& progress, const Limits& limits)
+Result<SuiteCsv::Data> SuiteCsv::parse(const QByteArray& bytes, const QString& name, const Progress& progress,
+                                       const Limits& limits)
 {
     Parser parser(name, limits, progress, bytes.size());
     parser.feed(bytes.constData(), bytes.size());
-    return parser.finish(error);
+    return parser.finish();
 }
 
-std::optional<SuiteCsv::Data> SuiteCsv::parseInSlices(const QByteArray& bytes, const QString& name,
-                                                      const std::vector<qsizetype>& slices, QString* error,
-                                                      const Limits& limits)
+Result<SuiteCsv::Data> SuiteCsv::parseInSlices(const QByteArray& bytes, const QString& name,
+                                               const std::vector<qsizetype>& slices, const Limits& limits)
 {
     Parser parser(name, limits, {}, bytes.size());
     qsizetype at = 0;
@@ -396,7 +385,7 @@ std::optional<SuiteCsv::Data> SuiteCsv::parseInSlices(const QByteArray& bytes, c
             break;
         at += take;
     }
-    return parser.finish(error);
+    return parser.finish();
 }
 
 QByteArray SuiteCsv::header(const QStringList& topics)

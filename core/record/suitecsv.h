@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "record/readbudgets.h"
 
 #include <functional>
@@ -44,19 +45,17 @@ public:
     using Limits = SuiteCsvLimits;
 
     /// Unreadable files, files that are no regular file (a FIFO, a device), files without a header
-    /// row and files past `limits` give nullopt and `error`. The file is read 1 MiB at a time up to
+    /// row and files past `limits` give an error. The file is read 1 MiB at a time up to
     /// its size at the open, one record at a time. `progress` (0..100, false to cancel) is polled
-    /// while reading, and RegularFile::stopRequested() (Ctrl+C); cancelling gives nullopt.
+    /// while reading, and RegularFile::stopRequested() (Ctrl+C); cancelling gives an error.
     using Progress = std::function<bool(int percent)>;
-    static std::optional<Data> read(const QString& path, QString* error = nullptr, const Progress& progress = {},
-                                    const Limits& limits = {});
-    static std::optional<Data> parse(const QByteArray& bytes, const QString& name, QString* error = nullptr,
-                                     const Progress& progress = {}, const Limits& limits = {});
+    static Result<Data> read(const QString& path, const Progress& progress = {}, const Limits& limits = {});
+    static Result<Data> parse(const QByteArray& bytes, const QString& name, const Progress& progress = {},
+                              const Limits& limits = {});
     /// parse() with the bytes handed over in slices of the given sizes, in turn (the fuzz target
     /// checks that any slicing reads the same as one piece).
-    static std::optional<Data> parseInSlices(const QByteArray& bytes, const QString& name,
-                                             const std::vector<qsizetype>& slices, QString* error = nullptr,
-                                             const Limits& limits = {});
+    static Result<Data> parseInSlices(const QByteArray& bytes, const QString& name,
+                                      const std::vector<qsizetype>& slices, const Limits& limits = {});
 
     static QByteArray header(const QStringList& topics);
     static QByteArray row(const std::vector<qint64>& times);

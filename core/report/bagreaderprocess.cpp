@@ -109,11 +109,10 @@ std::optional<RunData> BagReaderProcess::read(const QString& path, QString* erro
         }
         return fail(said.isEmpty() ? tr("the bag reader failed (exit %1)").arg(child.exitCode()) : said);
     }
-    QString why;
-    std::optional<RunData> run = RunFile::read(out, &why);
+    Result<RunData> run = RunFile::read(out);
     if (!run)
-        return fail(tr("the bag reader's result does not read: %1").arg(why));
+        return fail(tr("the bag reader's result does not read: %1").arg(run.error().toString()));
     if (progress)
         progress(100);
-    return run;
+    return std::move(run).value();
 }

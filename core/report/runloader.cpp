@@ -94,10 +94,15 @@ std::optional<RunData> RunLoader::load(const QString& path, const Options& optio
     const Kind kind = kindOf(path);
     qCDebug(lcReport).noquote() << "reading" << path << "as" << kindName(kind);
     if (kind == Kind::Run) {
-        std::optional<RunData> run = RunFile::read(path, error, progress);
-        if (run && !validate(*run, path, error))
+        Result<RunData> run = RunFile::read(path, progress);
+        if (!run) {
+            if (error)
+                *error = run.error().toString();
             return std::nullopt;
-        return run;
+        }
+        if (!validate(*run, path, error))
+            return std::nullopt;
+        return std::move(run).value();
     }
     if (kind == Kind::Bag) {
         // rosbag's library crashes on damaged bags: never in this process.
@@ -106,9 +111,12 @@ std::optional<RunData> RunLoader::load(const QString& path, const Options& optio
             return std::nullopt;
         return run;
     }
-    std::optional<SuiteCsv::Data> csv = SuiteCsv::read(path, error, progress);
-    if (!csv)
+    Result<SuiteCsv::Data> csv = SuiteCsv::read(path, progress);
+    if (!csv) {
+        if (error)
+            *error = csv.error().toString();
         return std::nullopt;
+    }
     if (csv->malformed > 0 && !options.skipBadRows) {
         if (error)
             *error = csv->problems.value(0)

@@ -61,9 +61,11 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
             m.write(out);
             const QByteArray bytes(reinterpret_cast<const char*>(buffer.data()), qsizetype(buffer.size()));
             if (m.getDataType() == StampCodec::typeName()) {
-                const std::optional<StampCodec::Decoded> d = m.getMD5Sum() == StampCodec::md5()
-                    ? StampCodec::decodeTimeStamped(bytes)
-                    : std::nullopt;
+                if (m.getMD5Sum() != StampCodec::md5()) {
+                    ++malformed;
+                    continue;
+                }
+                const Result<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(bytes);
                 if (!d) {
                     ++malformed;
                     continue;

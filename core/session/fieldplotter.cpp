@@ -207,8 +207,11 @@ FieldPlotter::Decoding FieldPlotter::decodingOf(PlotField::Source source, const 
             t.md5 = stats->md5;
             t.type = stats->type;
             t.registry = std::make_shared<RosTypeRegistry>();
-            if (!t.registry->addDefinition(stats->type, stats->definition, &t.error))
+            if (const Result<void> added = t.registry->addDefinition(stats->type, stats->definition);
+                !added) {
+                t.error = added.error().toString();
                 t.registry.reset();
+            }
         }
         out.registry = t.registry.get();
         type = t.type;
@@ -262,7 +265,12 @@ bool FieldPlotter::plotTopic(PlotField::Source source, const QString& topic,
             bytes += m.bytes.size();
             ++decodedCount;
             if (decoding.registry && decoding.how.isRos()) {
-                dec.ros = SourceMessage::decode(*decoding.registry, decoding.how, m.bytes, &dec.error, limits);
+                Result<RosValue> value
+                    = SourceMessage::decode(*decoding.registry, decoding.how, m.bytes, limits);
+                if (value)
+                    dec.ros = std::move(value).value();
+                else
+                    dec.error = value.error().toString();
             } else {
                 QJsonParseError parse {};
                 const QJsonDocument doc = QJsonDocument::fromJson(m.bytes, &parse);
@@ -279,9 +287,14 @@ bool FieldPlotter::plotTopic(PlotField::Source source, const QString& topic,
             PlotSeries& s = m_series[i];
             QString why = dec.error;
             std::optional<double> y;
-            if (why.isEmpty())
-                y = dec.ros ? FieldPath::number(*dec.ros, s.field.path, &why)
-                            : FieldPath::number(dec.json, s.field.path, &why);
+            if (why.isEmpty()) {
+                const Result<double> number = dec.ros ? FieldPath::number(*dec.ros, s.field.path)
+                                                      : FieldPath::number(dec.json, s.field.path);
+                if (number)
+                    y = *number;
+                else
+                    why = number.error().toString();
+            }
             if (y) {
                 s.points.append(QPointF(x, *y));
             } else {

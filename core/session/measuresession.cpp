@@ -41,8 +41,7 @@ MeasureSession::MeasureSession(const Parts& parts, QObject* parent)
             publish();
     });
     connect(m_recorder, &RunRecorder::failed, this, [this](const QString& why) {
-        QString ignored;
-        m_recorder->stop(&ignored);
+        static_cast<void>(m_recorder->stop()); // `why` says what went wrong
         emit recordingChanged(false);
         emit recordingFailed(why);
     });
@@ -298,18 +297,12 @@ QString MeasureSession::lastStampError() const
     return both.join(u"; ");
 }
 
-bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* error)
+Result<void> MeasureSession::startRecording(const QString& path, RunInfo info)
 {
-    if (m_showingRun) {
-        if (error)
-            *error = tr("a recorded run is on screen: go back to live first");
-        return false;
-    }
-    if (m_engine.pipeline().isEmpty()) {
-        if (error)
-            *error = tr("no pipeline yet: load one, or wait until stamps arrive");
-        return false;
-    }
+    if (m_showingRun)
+        return LocatedError {tr("a recorded run is on screen: go back to live first")};
+    if (m_engine.pipeline().isEmpty())
+        return LocatedError {tr("no pipeline yet: load one, or wait until stamps arrive")};
     info.pipeline = m_engine.pipeline();
     info.window = m_engine.window();
     info.timeoutNs = m_engine.timeoutNs();
@@ -321,22 +314,22 @@ bool MeasureSession::startRecording(const QString& path, RunInfo info, QString* 
     info.broker = brokerUrl();
     info.startedNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
     info.describeThisMachine();
-    if (!m_recorder->start(path, info, error))
-        return false;
+    if (Result<void> started = m_recorder->start(path, info); !started)
+        return started;
     // A run starts from zero, so that opening it later shows exactly what was shown live.
     m_engine.reset();
     publish();
     emit recordingChanged(true);
-    return true;
+    return {};
 }
 
-bool MeasureSession::stopRecording(QString* error)
+Result<void> MeasureSession::stopRecording()
 {
     if (!m_recorder->isRecording())
-        return false;
-    const bool ok = m_recorder->stop(error);
+        return LocatedError {}; // nothing to stop
+    Result<void> stopped = m_recorder->stop();
     emit recordingChanged(false);
-    return ok;
+    return stopped;
 }
 
 bool MeasureSession::isRecording() const

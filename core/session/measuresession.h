@@ -118,8 +118,8 @@ public:
     /// Starts a run: the figures start from zero, the pipeline stays as it is until the run stops,
     /// and every raw stamp from now on goes to `path` (pipeline, window, sources and times are
     /// filled into `info`).
-    bool startRecording(const QString& path, RunInfo info, QString* error = nullptr);
-    bool stopRecording(QString* error = nullptr);
+    Result<void> startRecording(const QString& path, RunInfo info);
+    Result<void> stopRecording();
     bool isRecording() const;
     RunRecorder* recorder() const { return m_recorder; }
 

@@ -173,16 +173,6 @@ Result<WatchRules> WatchRules::readFile(const QString& path)
     return YamlReader::readFileWith(path, &WatchRules::read);
 }
 
-std::optional<WatchRules> WatchRules::fromYaml(const QByteArray& yaml, QString* error)
-{
-    return read(yaml).toOptional(error);
-}
-
-std::optional<WatchRules> WatchRules::load(const QString& path, QString* error)
-{
-    return readFile(path).toOptional(error);
-}
-
 QByteArray WatchRules::toYaml() const
 {
     QString out

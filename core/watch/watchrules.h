@@ -89,9 +89,6 @@ public:
     /// Parses the YAML (bounded by YamlLimits); the error is located at its line ("line 3: …").
     static Result<WatchRules> read(const QByteArray& yaml);
     static Result<WatchRules> readFile(const QString& path);
-    /// read() and readFile() for callers that take the error as text.
-    static std::optional<WatchRules> fromYaml(const QByteArray& yaml, QString* error);
-    static std::optional<WatchRules> load(const QString& path, QString* error);
     QByteArray toYaml() const;
     /// The defaults with every matching override applied in order.
     LinkRules forLink(const LinkKey& key) const;

@@ -42,7 +42,7 @@ bool FieldPath::isNumericType(const QString& type)
         && (RosTypeRegistry::isBuiltin(type) || type == u"number"_s || type == u"bool"_s);
 }
 
-std::optional<double> FieldPath::number(const RosValue& message, const QStringList& parts, QString* error)
+Result<double> FieldPath::number(const RosValue& message, const QStringList& parts)
 {
     const RosValue* node = &message;
     for (const QString& part : parts) {
@@ -53,16 +53,12 @@ std::optional<double> FieldPath::number(const RosValue& message, const QStringLi
                 break;
             }
         }
-        if (!next) {
-            *error = tr("no field %1").arg(text(parts));
-            return std::nullopt;
-        }
+        if (!next)
+            return LocatedError {tr("no field %1").arg(text(parts))};
         node = next;
     }
-    if (node->kind != RosValue::Scalar || !isNumericType(node->type)) {
-        *error = tr("%1 is no number").arg(text(parts));
-        return std::nullopt;
-    }
+    if (node->kind != RosValue::Scalar || !isNumericType(node->type))
+        return LocatedError {tr("%1 is no number").arg(text(parts))};
     if (node->type == u"bool"_s)
         return node->value.toBool() ? 1.0 : 0.0;
     bool ok = false;
@@ -70,11 +66,11 @@ std::optional<double> FieldPath::number(const RosValue& message, const QStringLi
         ? node->value.toString().toDouble(&ok) // times
         : node->value.toDouble(&ok);
     if (!ok)
-        *error = tr("%1 is no number").arg(text(parts));
-    return ok ? std::optional<double>(d) : std::nullopt;
+        return LocatedError {tr("%1 is no number").arg(text(parts))};
+    return d;
 }
 
-std::optional<double> FieldPath::number(const QJsonValue& document, const QStringList& parts, QString* error)
+Result<double> FieldPath::number(const QJsonValue& document, const QStringList& parts)
 {
     QJsonValue v = document;
     for (const QString& part : parts) {
@@ -85,15 +81,12 @@ std::optional<double> FieldPath::number(const QJsonValue& document, const QStrin
             v = v.toObject().value(part);
         else
             v = QJsonValue(QJsonValue::Undefined);
-        if (v.isUndefined()) {
-            *error = tr("no field %1").arg(text(parts));
-            return std::nullopt;
-        }
+        if (v.isUndefined())
+            return LocatedError {tr("no field %1").arg(text(parts))};
     }
     if (v.isBool())
         return v.toBool() ? 1.0 : 0.0;
     if (v.isDouble())
         return v.toDouble();
-    *error = tr("%1 is no number").arg(text(parts));
-    return std::nullopt;
+    return LocatedError {tr("%1 is no number").arg(text(parts))};
 }

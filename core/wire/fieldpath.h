@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <optional>
 #include <QCoreApplication>
 #include <QJsonValue>
@@ -20,6 +22,6 @@ public:
     static int maxIndex(const QStringList& parts);
     /// Whether a ROS builtin type (or a JSON "number"/"bool") is plotted as a number.
     static bool isNumericType(const QString& type);
-    static std::optional<double> number(const RosValue& message, const QStringList& parts, QString* error);
-    static std::optional<double> number(const QJsonValue& document, const QStringList& parts, QString* error);
+    static Result<double> number(const RosValue& message, const QStringList& parts);
+    static Result<double> number(const QJsonValue& document, const QStringList& parts);
 };

@@ -14,6 +14,17 @@ bool isPlainCdrHeader(const char* p)
 {
     return p[0] == 0 && (p[1] == 0 || p[1] == 1);
 }
+
+/// The three strings of an announcement, in order, each read by `readString` (ROS 1 or CDR).
+template<typename ReadString> Result<void> readStrings(RosMsgTypeInfo* info, ReadString& readString)
+{
+    for (const auto& [out, field] : {std::pair {&info->md5, "md5"}, std::pair {&info->name, "name"},
+                                     std::pair {&info->definition, "definition"}}) {
+        if (Result<void> read = readString(out, field); !read)
+            return read;
+    }
+    return {};
+}
 } // namespace
 
 QString MqttClientWire::dataTopicOf(const QString& typeTopic)
@@ -27,119 +38,100 @@ MqttClientWire::Dialect MqttClientWire::dialectOf(const QByteArray& announcement
     return !announcement.isEmpty() && announcement.at(0) == 0 ? Dialect::Ros2 : Dialect::Ros1;
 }
 
-std::optional<RosMsgTypeInfo> MqttClientWire::decodeType(const QByteArray& bytes, QString* error)
+Result<RosMsgTypeInfo> MqttClientWire::decodeType(const QByteArray& bytes)
 {
     qsizetype pos = 0;
-    auto fail = [&](const QString& what) {
-        if (error)
-            *error = what;
-        return std::nullopt;
-    };
-    auto readString = [&](QString* out, const char* field) -> bool {
+    auto readString = [&](QString* out, const char* field) -> Result<void> {
         if (pos + 4 > bytes.size()) {
-            if (error)
-                *error = tr("type announcement ends before the length of '%1' (byte %2)")
-                             .arg(QLatin1String(field))
-                             .arg(pos);
-            return false;
+            return LocatedError {tr("type announcement ends before the length of '%1' (byte %2)")
+                                     .arg(QLatin1String(field))
+                                     .arg(pos)};
         }
         const quint32 n = qFromLittleEndian<quint32>(bytes.constData() + pos);
         pos += 4;
         if (n > quint32(bytes.size() - pos)) {
-            if (error)
-                *error = tr("'%1' claims %2 bytes but only %3 follow")
-                             .arg(QLatin1String(field))
-                             .arg(n)
-                             .arg(bytes.size() - pos);
-            return false;
+            return LocatedError {tr("'%1' claims %2 bytes but only %3 follow")
+                                     .arg(QLatin1String(field))
+                                     .arg(n)
+                                     .arg(bytes.size() - pos)};
         }
         *out = exactUtf8(bytes.constData() + pos, qsizetype(n));
         pos += qsizetype(n);
-        return true;
+        return {};
     };
     if (bytes.size() > kMaxTypeBytes)
-        return fail(tr("type announcement of %1 bytes, more than the %2 one may have")
-                        .arg(bytes.size())
-                        .arg(kMaxTypeBytes));
+        return LocatedError {tr("type announcement of %1 bytes, more than the %2 one may have")
+                                 .arg(bytes.size())
+                                 .arg(kMaxTypeBytes)};
     if (dialectOf(bytes) == Dialect::Ros2)
-        return decodeRos2Type(bytes, error);
+        return decodeRos2Type(bytes);
     RosMsgTypeInfo info;
-    if (!readString(&info.md5, "md5") || !readString(&info.name, "name")
-        || !readString(&info.definition, "definition"))
-        return std::nullopt;
+    if (const Result<void> read = readStrings(&info, readString); !read)
+        return read.error();
     if (pos + 1 != bytes.size())
-        return fail(tr("type announcement has %1 bytes after the strings, expected 1 (stamped)")
-                        .arg(bytes.size() - pos));
+        return LocatedError {tr("type announcement has %1 bytes after the strings, expected 1 (stamped)")
+                                 .arg(bytes.size() - pos)};
     info.stamped = bytes.at(pos) != 0;
     // Also what keeps dialectOf() right: a length of 32 or 1 never starts with a zero byte.
     if (info.md5.size() != 32 && info.md5 != QLatin1String("*"))
-        return fail(tr("'%1' is not an MD5 sum").arg(info.md5));
+        return LocatedError {tr("'%1' is not an MD5 sum").arg(info.md5)};
     if (!info.name.contains(u'/'))
-        return fail(tr("'%1' is not a ROS type name").arg(info.name));
+        return LocatedError {tr("'%1' is not a ROS type name").arg(info.name)};
     return info;
 }
 
 // mqtt_client (ROS 2) serializes its RosMsgType with rclcpp::Serialization, that is rmw_serialize:
 // the header, then each member in order as Fast CDR (rmw_fastrtps) or rmw_cyclonedds_cpp writes
 // it; readers take any non-zero bool as true and ignore bytes after the last member.
-std::optional<RosMsgTypeInfo> MqttClientWire::decodeRos2Type(const QByteArray& bytes, QString* error)
+Result<RosMsgTypeInfo> MqttClientWire::decodeRos2Type(const QByteArray& bytes)
 {
     const char* data = bytes.constData();
     const qsizetype size = bytes.size();
-    auto fail = [&](const QString& what) {
-        if (error)
-            *error = what;
-        return std::nullopt;
-    };
     if (size < 4)
-        return fail(
-            tr("ROS 2 type announcement of %1 bytes ends inside its CDR encapsulation header").arg(size));
+        return LocatedError {
+            tr("ROS 2 type announcement of %1 bytes ends inside its CDR encapsulation header").arg(size)};
     if (!isPlainCdrHeader(data))
-        return fail(tr("ROS 2 type announcement is not plain CDR (encapsulation %1 %2)")
-                        .arg(uchar(data[0]), 2, 16, QLatin1Char('0'))
-                        .arg(uchar(data[1]), 2, 16, QLatin1Char('0')));
+        return LocatedError {tr("ROS 2 type announcement is not plain CDR (encapsulation %1 %2)")
+                                 .arg(uchar(data[0]), 2, 16, QLatin1Char('0'))
+                                 .arg(uchar(data[1]), 2, 16, QLatin1Char('0'))};
     const bool bigEndian = data[1] == 0;
     qsizetype pos = 4;
-    auto readString = [&](QString* out, const char* field) -> bool {
+    auto readString = [&](QString* out, const char* field) -> Result<void> {
         pos += (4 - (pos - 4) % 4) % 4; // a uint32 sits at a multiple of 4 from the header's end
         if (pos > size - 4) {
-            if (error)
-                *error = tr("type announcement ends before the length of '%1' (byte %2)")
-                             .arg(QLatin1String(field))
-                             .arg(std::min(pos, size));
-            return false;
+            return LocatedError {tr("type announcement ends before the length of '%1' (byte %2)")
+                                     .arg(QLatin1String(field))
+                                     .arg(std::min(pos, size))};
         }
         const quint32 n
             = bigEndian ? qFromBigEndian<quint32>(data + pos) : qFromLittleEndian<quint32>(data + pos);
         pos += 4;
         if (n > quint32(size - pos)) {
-            if (error)
-                *error = tr("'%1' claims %2 bytes but only %3 follow")
-                             .arg(QLatin1String(field))
-                             .arg(n)
-                             .arg(size - pos);
-            return false;
+            return LocatedError {tr("'%1' claims %2 bytes but only %3 follow")
+                                     .arg(QLatin1String(field))
+                                     .arg(n)
+                                     .arg(size - pos)};
         }
         // The length counts the terminating NUL, which is no part of the text.
         const qsizetype text = n > 0 && data[pos + qsizetype(n) - 1] == 0 ? qsizetype(n) - 1 : qsizetype(n);
         *out = exactUtf8(data + pos, text);
         pos += qsizetype(n);
-        return true;
+        return {};
     };
     RosMsgTypeInfo info;
     info.dialect = Dialect::Ros2;
-    if (!readString(&info.md5, "md5") || !readString(&info.name, "name")
-        || !readString(&info.definition, "definition"))
-        return std::nullopt;
+    if (const Result<void> read = readStrings(&info, readString); !read)
+        return read.error();
     if (pos >= size)
-        return fail(tr("type announcement ends before 'stamped' (byte %1)").arg(pos));
+        return LocatedError {tr("type announcement ends before 'stamped' (byte %1)").arg(pos)};
     info.stamped = data[pos] != 0;
     ++pos;
     if (size - pos > 3)
-        return fail(tr("type announcement has %1 bytes after 'stamped', more than CDR's padding of at most 3")
-                        .arg(size - pos));
+        return LocatedError {
+            tr("type announcement has %1 bytes after 'stamped', more than CDR's padding of at most 3")
+                .arg(size - pos)};
     if (!info.name.contains(u'/'))
-        return fail(tr("'%1' is not a ROS type name").arg(info.name));
+        return LocatedError {tr("'%1' is not a ROS type name").arg(info.name)};
     return info;
 }
 
@@ -164,27 +156,21 @@ QByteArray MqttClientWire::encodeType(const RosMsgTypeInfo& info)
     return out;
 }
 
-std::optional<MqttClientWire::Stamped> MqttClientWire::splitStamped(const QByteArray& payload,
-                                                                    Dialect dialect, QString* error)
+Result<MqttClientWire::Stamped> MqttClientWire::splitStamped(const QByteArray& payload, Dialect dialect)
 {
-    auto fail = [&](const QString& what) {
-        if (error)
-            *error = what;
-        return std::nullopt;
-    };
     const qsizetype stampSize = stampBytes(dialect);
     if (payload.size() < stampSize)
-        return fail(tr("stamped payload of %1 bytes, shorter than its %2-byte stamp")
-                        .arg(payload.size())
-                        .arg(stampSize));
+        return LocatedError {tr("stamped payload of %1 bytes, shorter than its %2-byte stamp")
+                                 .arg(payload.size())
+                                 .arg(stampSize)};
     const char* p = payload.constData();
     qint64 sec = 0;
     quint32 nsec = 0;
     if (dialect == Dialect::Ros2) {
         if (!isPlainCdrHeader(p))
-            return fail(tr("the stamp does not start with a CDR encapsulation header (%1 %2)")
-                            .arg(uchar(p[0]), 2, 16, QLatin1Char('0'))
-                            .arg(uchar(p[1]), 2, 16, QLatin1Char('0')));
+            return LocatedError {tr("the stamp does not start with a CDR encapsulation header (%1 %2)")
+                                     .arg(uchar(p[0]), 2, 16, QLatin1Char('0'))
+                                     .arg(uchar(p[1]), 2, 16, QLatin1Char('0'))};
         const bool bigEndian = p[1] == 0;
         sec = bigEndian ? qFromBigEndian<qint32>(p + 4) : qFromLittleEndian<qint32>(p + 4);
         nsec = bigEndian ? qFromBigEndian<quint32>(p + 8) : qFromLittleEndian<quint32>(p + 8);
@@ -193,7 +179,7 @@ std::optional<MqttClientWire::Stamped> MqttClientWire::splitStamped(const QByteA
         nsec = qFromLittleEndian<quint32>(p + 4);
     }
     if (nsec >= quint32(kNsPerSecond))
-        return fail(tr("the stamp has %1 nanoseconds, not fewer than 1000000000").arg(nsec));
+        return LocatedError {tr("the stamp has %1 nanoseconds, not fewer than 1000000000").arg(nsec)};
     Stamped s;
     s.stampNs = sec * kNsPerSecond + nsec;
     s.message = payload.mid(stampSize);
@@ -222,18 +208,16 @@ QByteArray MqttClientWire::stamped(qint64 stampNs, const QByteArray& message, Di
     return out + message;
 }
 
-std::optional<RosValue> MqttClientWire::decodePayload(const RosTypeRegistry& registry,
-                                                      const RosMsgTypeInfo& type, const QByteArray& payload,
-                                                      QString* error, const RosDecodeLimits& limits)
+Result<RosValue> MqttClientWire::decodePayload(const RosTypeRegistry& registry, const RosMsgTypeInfo& type,
+                                               const QByteArray& payload, const RosDecodeLimits& limits)
 {
     QByteArray message = payload;
     if (type.stamped) {
-        std::optional<Stamped> s = splitStamped(payload, type.dialect, error);
+        Result<Stamped> s = splitStamped(payload, type.dialect);
         if (!s)
-            return std::nullopt;
+            return s.error();
         message = std::move(s->message);
     }
-    return type.dialect == Dialect::Ros2
-        ? RosMessageDecoder::decodeCdr(registry, type.name, message, error, limits)
-        : RosMessageDecoder::decode(registry, type.name, message, error, limits);
+    return type.dialect == Dialect::Ros2 ? RosMessageDecoder::decodeCdr(registry, type.name, message, limits)
+                                         : RosMessageDecoder::decode(registry, type.name, message, limits);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "wire/rosmessage.h"
 
 #include <optional>
@@ -61,7 +62,7 @@ public:
     /// ROS 2 when the announcement starts with a zero byte (a CDR encapsulation header), else ROS 1.
     static Dialect dialectOf(const QByteArray& announcement);
     /// Decodes either dialect (dialectOf() tells which); the result says which it was.
-    static std::optional<RosMsgTypeInfo> decodeType(const QByteArray& bytes, QString* error = nullptr);
+    static Result<RosMsgTypeInfo> decodeType(const QByteArray& bytes);
     /// The announcement as the mqtt_client of `info.dialect` sends it (ROS 2: little-endian CDR,
     /// as rmw_fastrtps and rmw_cyclonedds write it on a little-endian host).
     static QByteArray encodeType(const RosMsgTypeInfo& info);
@@ -80,17 +81,15 @@ public:
         qint64 stampNs = 0;
         QByteArray message;
     };
-    static std::optional<Stamped> splitStamped(const QByteArray& payload, Dialect dialect = Dialect::Ros1,
-                                               QString* error = nullptr);
+    static Result<Stamped> splitStamped(const QByteArray& payload, Dialect dialect = Dialect::Ros1);
     /// ROS 2 stamps are written little-endian.
     static QByteArray stamped(qint64 stampNs, const QByteArray& message, Dialect dialect = Dialect::Ros1);
 
     /// A payload of an announced type as a value: the message after the stamp when stamped,
     /// decoded as the dialect serializes (RosMessageDecoder::decode() or decodeCdr()).
-    static std::optional<RosValue> decodePayload(const RosTypeRegistry& registry, const RosMsgTypeInfo& type,
-                                                 const QByteArray& payload, QString* error = nullptr,
-                                                 const RosDecodeLimits& limits = {});
+    static Result<RosValue> decodePayload(const RosTypeRegistry& registry, const RosMsgTypeInfo& type,
+                                          const QByteArray& payload, const RosDecodeLimits& limits = {});
 
 private:
-    static std::optional<RosMsgTypeInfo> decodeRos2Type(const QByteArray& bytes, QString* error);
+    static Result<RosMsgTypeInfo> decodeRos2Type(const QByteArray& bytes);
 };

@@ -8,9 +8,8 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 
-std::optional<QByteArray> PublishPayload::build(Format format, const QString& text, QString* error,
-                                                const RosTypeRegistry* registry, const RosMsgTypeInfo* type,
-                                                qint64 nowNs)
+Result<QByteArray> PublishPayload::build(Format format, const QString& text, const RosTypeRegistry* registry,
+                                         const RosMsgTypeInfo* type, qint64 nowNs)
 {
     const QByteArray utf8 = text.toUtf8();
     if (format == Format::Text)
@@ -18,35 +17,22 @@ std::optional<QByteArray> PublishPayload::build(Format format, const QString& te
     if (format == Format::Json) {
         QJsonParseError parse {};
         QJsonDocument::fromJson(utf8, &parse);
-        if (parse.error != QJsonParseError::NoError) {
-            if (error)
-                *error = tr("not JSON: %1 at character %2").arg(parse.errorString()).arg(parse.offset);
-            return std::nullopt;
-        }
+        if (parse.error != QJsonParseError::NoError)
+            return LocatedError {
+                tr("not JSON: %1 at character %2").arg(parse.errorString()).arg(parse.offset)};
         return utf8;
     }
-    if (!registry || !type) {
-        if (error)
-            *error = tr("no ROS type is announced for this topic");
-        return std::nullopt;
-    }
-    QString why;
-    const std::optional<QVariant> value = YamlVariant::parse(utf8, &why);
-    if (!value) {
-        if (error)
-            *error = tr("not YAML or JSON: %1").arg(why);
-        return std::nullopt;
-    }
+    if (!registry || !type)
+        return LocatedError {tr("no ROS type is announced for this topic")};
+    const Result<QVariant> value = YamlVariant::read(utf8);
+    if (!value)
+        return LocatedError {tr("not YAML or JSON: %1").arg(value.error().toString())};
     // mqtt_client for ROS 2 sends CDR as its RMW serializes, for ROS 1 roscpp's serialization
     const bool ros2 = type->dialect == RosTypeRegistry::Dialect::Ros2;
-    const std::optional<QByteArray> bytes = ros2
-        ? RosMessageEncoder::encodeCdr(*registry, type->name, *value, &why)
-        : RosMessageEncoder::encode(*registry, type->name, *value, &why);
-    if (!bytes) {
-        if (error)
-            *error = tr("not a %1: %2").arg(type->name, why);
-        return std::nullopt;
-    }
+    const Result<QByteArray> bytes = ros2 ? RosMessageEncoder::encodeCdr(*registry, type->name, *value)
+                                          : RosMessageEncoder::encode(*registry, type->name, *value);
+    if (!bytes)
+        return LocatedError {tr("not a %1: %2").arg(type->name, bytes.error().toString())};
     return type->stamped ? MqttClientWire::stamped(nowNs, *bytes, type->dialect) : *bytes;
 }
 
@@ -60,19 +46,24 @@ PublishPayload::Prefill PublishPayload::rosMessage(const RosTypeRegistry& regist
         limits.maxArrayElements = 4096;
         limits.maxStringChars = 64 * 1024;
         limits.maxBytes = 4 * 1024 * 1024;
-        if (const auto value = MqttClientWire::decodePayload(registry, type, lastPayload, &why, limits)) {
+        const Result<RosValue> value = MqttClientWire::decodePayload(registry, type, lastPayload, limits);
+        if (value) {
             if (const auto yaml = RosMessageEncoder::toYaml(*value)) {
                 out.text = *yaml;
                 out.note = tr("Values of the last message.");
                 return out;
             }
             why = tr("the last message is too large to edit here");
+        } else {
+            why = value.error().toString();
         }
     } else {
         why = tr("no message yet");
     }
-    if (const auto zero = RosMessageEncoder::zeroValue(registry, type.name, &why))
+    if (const Result<RosValue> zero = RosMessageEncoder::zeroValue(registry, type.name); zero)
         out.text = RosMessageEncoder::toYaml(*zero).value_or(QString());
+    else
+        why = zero.error().toString();
     out.note = tr("Zero values (%1).").arg(why);
     return out;
 }

@@ -18,11 +18,11 @@ class PublishPayload
 public:
     enum class Format { Text, Json, RosMessage };
 
-    /// The payload, or nullopt with `error` saying what is wrong (nothing should be sent then).
+    /// The payload, or the error saying what is wrong (nothing should be sent then).
     /// RosMessage needs the announced type and its registry; `nowNs` is the stamp of a stamped one.
-    static std::optional<QByteArray> build(Format format, const QString& text, QString* error,
-                                           const RosTypeRegistry* registry = nullptr,
-                                           const RosMsgTypeInfo* type = nullptr, qint64 nowNs = 0);
+    static Result<QByteArray> build(Format format, const QString& text,
+                                    const RosTypeRegistry* registry = nullptr,
+                                    const RosMsgTypeInfo* type = nullptr, qint64 nowNs = 0);
 
     struct Prefill
     {

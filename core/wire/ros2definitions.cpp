@@ -50,11 +50,10 @@ int addFolder(RosTypeRegistry& registry, const QString& folder, QStringList* err
                         .arg(kMaxFileBytes / 1024));
             continue;
         }
-        QString error;
-        if (registry.addDefinition(type, QString::fromUtf8(*text), &error))
+        if (const Result<void> read = registry.addDefinition(type, QString::fromUtf8(*text)); read)
             ++added;
         else if (errors)
-            errors->append(QStringLiteral("%1: %2").arg(path, error));
+            errors->append(QStringLiteral("%1: %2").arg(path, read.error().toString()));
     }
     return added;
 }

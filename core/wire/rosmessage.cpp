@@ -104,7 +104,7 @@ int RosTypeRegistry::builtinSize(const QString& type)
     return -1;
 }
 
-bool RosTypeRegistry::addDefinition(const QString& type, const QString& definition, QString* error)
+Result<void> RosTypeRegistry::addDefinition(const QString& type, const QString& definition)
 {
     const bool ros2 = m_dialect == Dialect::Ros2;
     QString current = ros2 ? ros2TypeName(type) : type;
@@ -119,11 +119,9 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
             // Next non-empty line names the dependency: "MSG: pkg/Type".
             while (i + 1 < lines.size() && lines[i + 1].trimmed().isEmpty())
                 ++i;
-            if (i + 1 >= lines.size() || !lines[i + 1].trimmed().startsWith(u"MSG:"_s)) {
-                if (error)
-                    *error = tr("line %1: expected 'MSG: package/Type' after the separator").arg(i + 2);
-                return false;
-            }
+            if (i + 1 >= lines.size() || !lines[i + 1].trimmed().startsWith(u"MSG:"_s))
+                return LocatedError {
+                    tr("line %1: expected 'MSG: package/Type' after the separator").arg(i + 2)};
             ++i;
             current = lines[i].trimmed().mid(4).trimmed();
             if (ros2)
@@ -136,11 +134,8 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
             continue;
         static const QRegularExpression whitespace(u"\\s"_s);
         const int space = line.indexOf(whitespace);
-        if (space < 0) {
-            if (error)
-                *error = tr("line %1: '%2' is not 'type name'").arg(i + 1).arg(line);
-            return false;
-        }
+        if (space < 0)
+            return LocatedError {tr("line %1: '%2' is not 'type name'").arg(i + 1).arg(line)};
         QString typeToken = line.left(space);
         QString rest = line.mid(space + 1).trimmed();
         const int eq = rest.indexOf(u'=');
@@ -164,32 +159,23 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
             const qulonglong fixed = len.isEmpty() || !ok ? 0 : len.toULongLong(&ok);
             ok = ok && fixed <= 0xffffffffULL;
             field.fixedLength = len.isEmpty() || bounded ? -1 : qint64(fixed);
-            if (!ok || !typeToken.endsWith(u']') || (bounded && len.isEmpty())) {
-                if (error)
-                    *error = tr("line %1: bad array type '%2'").arg(i + 1).arg(typeToken);
-                return false;
-            }
+            if (!ok || !typeToken.endsWith(u']') || (bounded && len.isEmpty()))
+                return LocatedError {tr("line %1: bad array type '%2'").arg(i + 1).arg(typeToken)};
             typeToken = typeToken.left(bracket);
         }
         // ROS 2's bounded string (string<=10): a string on the wire.
         if (ros2 && (typeToken.startsWith(u"string<="_s) || typeToken.startsWith(u"wstring<="_s)))
             typeToken = typeToken.left(typeToken.indexOf(u'<'));
         field.type = resolveType(typeToken, packageOf(current), m_dialect);
-        if (field.name.isEmpty()) {
-            if (error)
-                *error = tr("line %1: field without a name").arg(i + 1);
-            return false;
-        }
+        if (field.name.isEmpty())
+            return LocatedError {tr("line %1: field without a name").arg(i + 1)};
         // ROS names are identifiers; a hostile one of thousands of characters would also pass
         // YAML's 1024-character limit for a key when the message is edited (found by fuzzing).
-        if (field.name.size() > kMaxFieldName) {
-            if (error)
-                *error = tr("line %1: a field name of %2 characters (at most %3)")
-                             .arg(i + 1)
-                             .arg(field.name.size())
-                             .arg(kMaxFieldName);
-            return false;
-        }
+        if (field.name.size() > kMaxFieldName)
+            return LocatedError {tr("line %1: a field name of %2 characters (at most %3)")
+                                     .arg(i + 1)
+                                     .arg(field.name.size())
+                                     .arg(kMaxFieldName)};
         msg.fields.append(field);
     }
     parsed.insert(msg.name, msg);
@@ -197,7 +183,7 @@ bool RosTypeRegistry::addDefinition(const QString& type, const QString& definiti
         m_types.insert(it.key(), it.value());
     m_fixedSizes.clear();
     m_minSizes.clear();
-    return true;
+    return {};
 }
 
 const RosMessageType* RosTypeRegistry::find(const QString& type) const
@@ -553,41 +539,34 @@ private:
 } // namespace
 
 namespace {
-std::optional<RosValue> decodeWith(const RosTypeRegistry& registry, const QString& type,
-                                   const QByteArray& data, QString* error, const RosDecodeLimits& limits,
-                                   bool cdr);
+Result<RosValue> decodeWith(const RosTypeRegistry& registry, const QString& type, const QByteArray& data,
+                            const RosDecodeLimits& limits, bool cdr);
 } // namespace
 
-std::optional<RosValue> RosMessageDecoder::decode(const RosTypeRegistry& registry, const QString& type,
-                                                  const QByteArray& data, QString* error,
-                                                  const RosDecodeLimits& limits)
+Result<RosValue> RosMessageDecoder::decode(const RosTypeRegistry& registry, const QString& type,
+                                           const QByteArray& data, const RosDecodeLimits& limits)
 {
-    return decodeWith(registry, type, data, error, limits, false);
+    return decodeWith(registry, type, data, limits, false);
 }
 
-std::optional<RosValue> RosMessageDecoder::decodeCdr(const RosTypeRegistry& registry, const QString& type,
-                                                     const QByteArray& data, QString* error,
-                                                     const RosDecodeLimits& limits)
+Result<RosValue> RosMessageDecoder::decodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                              const QByteArray& data, const RosDecodeLimits& limits)
 {
     const QString name
         = registry.dialect() == RosTypeRegistry::Dialect::Ros2 ? RosTypeRegistry::ros2TypeName(type) : type;
-    return decodeWith(registry, name, data, error, limits, true);
+    return decodeWith(registry, name, data, limits, true);
 }
 
 namespace {
-std::optional<RosValue> decodeWith(const RosTypeRegistry& registry, const QString& type,
-                                   const QByteArray& data, QString* error, const RosDecodeLimits& limits,
-                                   bool cdr)
+Result<RosValue> decodeWith(const RosTypeRegistry& registry, const QString& type, const QByteArray& data,
+                            const RosDecodeLimits& limits, bool cdr)
 {
     t_lastSteps = 0;
-    if (data.size() > limits.maxBytes) {
-        if (error)
-            *error = RosMessageDecoder::tr(
-                         "the message has %1 bytes, more than the %2 bytes one message may have")
-                         .arg(data.size())
-                         .arg(limits.maxBytes);
-        return std::nullopt;
-    }
+    if (data.size() > limits.maxBytes)
+        return LocatedError {
+            RosMessageDecoder::tr("the message has %1 bytes, more than the %2 bytes one message may have")
+                .arg(data.size())
+                .arg(limits.maxBytes)};
     Reader reader(registry, data, limits);
     try {
         if (cdr) {
@@ -604,18 +583,13 @@ std::optional<RosValue> decodeWith(const RosTypeRegistry& registry, const QStrin
         t_lastSteps = reader.steps();
         // CDR writers pad the message to a multiple of 4 bytes.
         const qsizetype slack = cdr ? std::min<qsizetype>(3, reader.size() - reader.pos()) : 0;
-        if (reader.pos() + slack != reader.size()) {
-            if (error)
-                *error = RosMessageDecoder::tr("%1 bytes left over after the message")
-                             .arg(reader.size() - reader.pos());
-            return std::nullopt;
-        }
+        if (reader.pos() + slack != reader.size())
+            return LocatedError {RosMessageDecoder::tr("%1 bytes left over after the message")
+                                     .arg(reader.size() - reader.pos())};
         return root;
     } catch (const DecodeError& e) {
         t_lastSteps = reader.steps();
-        if (error)
-            *error = e.message;
-        return std::nullopt;
+        return LocatedError {e.message};
     }
 }
 } // namespace

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <optional>
 #include <QByteArray>
 #include <QCoreApplication>
@@ -48,7 +50,7 @@ public:
     /// A ROS 2 type name in its registry form: `pkg/Type` and `pkg/msg/Type` give `pkg/msg/Type`.
     static QString ros2TypeName(const QString& name);
 
-    bool addDefinition(const QString& type, const QString& definition, QString* error = nullptr);
+    Result<void> addDefinition(const QString& type, const QString& definition);
     const RosMessageType* find(const QString& type) const;
     bool contains(const QString& type) const { return m_types.contains(type); }
     /// Sizes at or above this are "too large for any message" (saturated, never overflowed).
@@ -109,15 +111,13 @@ class RosMessageDecoder
 {
     Q_DECLARE_TR_FUNCTIONS(RosMessageDecoder)
 public:
-    static std::optional<RosValue> decode(const RosTypeRegistry& registry, const QString& type,
-                                          const QByteArray& data, QString* error = nullptr,
-                                          const RosDecodeLimits& limits = {});
+    static Result<RosValue> decode(const RosTypeRegistry& registry, const QString& type,
+                                   const QByteArray& data, const RosDecodeLimits& limits = {});
     /// Decodes a ROS 2 message as DDS carries it: CDR (XCDR1) after a 4-byte encapsulation header
     /// (little- or big-endian, as the header says), aligned as CDR aligns, with a ROS 2 registry.
     /// Same limits and the same error rules as decode().
-    static std::optional<RosValue> decodeCdr(const RosTypeRegistry& registry, const QString& type,
-                                             const QByteArray& data, QString* error = nullptr,
-                                             const RosDecodeLimits& limits = {});
+    static Result<RosValue> decodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                      const QByteArray& data, const RosDecodeLimits& limits = {});
     /// Steps the last decode() on this thread took (for tests of the work bound).
     static qint64 lastSteps();
 };

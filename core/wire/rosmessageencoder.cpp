@@ -428,9 +428,8 @@ private:
 } // namespace
 
 namespace {
-std::optional<QByteArray> encodeWith(const RosTypeRegistry& registry, const QString& type,
-                                     const QVariant& value, QString* error, const RosEncodeLimits& limits,
-                                     bool cdr)
+Result<QByteArray> encodeWith(const RosTypeRegistry& registry, const QString& type, const QVariant& value,
+                              const RosEncodeLimits& limits, bool cdr)
 {
     Writer writer(registry, limits);
     if (cdr)
@@ -439,27 +438,23 @@ std::optional<QByteArray> encodeWith(const RosTypeRegistry& registry, const QStr
         writer.value(type, value, QString(), 0);
         return writer.take();
     } catch (const EncodeError& e) {
-        if (error)
-            *error = e.message;
-        return std::nullopt;
+        return LocatedError {e.message};
     }
 }
 } // namespace
 
-std::optional<QByteArray> RosMessageEncoder::encode(const RosTypeRegistry& registry, const QString& type,
-                                                    const QVariant& value, QString* error,
-                                                    const RosEncodeLimits& limits)
+Result<QByteArray> RosMessageEncoder::encode(const RosTypeRegistry& registry, const QString& type,
+                                             const QVariant& value, const RosEncodeLimits& limits)
 {
-    return encodeWith(registry, type, value, error, limits, false);
+    return encodeWith(registry, type, value, limits, false);
 }
 
-std::optional<QByteArray> RosMessageEncoder::encodeCdr(const RosTypeRegistry& registry, const QString& type,
-                                                       const QVariant& value, QString* error,
-                                                       const RosEncodeLimits& limits)
+Result<QByteArray> RosMessageEncoder::encodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                                const QVariant& value, const RosEncodeLimits& limits)
 {
     const QString name
         = registry.dialect() == RosTypeRegistry::Dialect::Ros2 ? RosTypeRegistry::ros2TypeName(type) : type;
-    return encodeWith(registry, name, value, error, limits, true);
+    return encodeWith(registry, name, value, limits, true);
 }
 
 namespace {
@@ -582,13 +577,12 @@ std::optional<QString> RosMessageEncoder::toYaml(const RosValue& message)
     return w.out;
 }
 
-std::optional<RosValue> RosMessageEncoder::zeroValue(const RosTypeRegistry& registry, const QString& type,
-                                                     QString* error)
+Result<RosValue> RosMessageEncoder::zeroValue(const RosTypeRegistry& registry, const QString& type)
 {
-    const std::optional<QByteArray> bytes = encode(registry, type, QVariant(), error);
+    const Result<QByteArray> bytes = encode(registry, type, QVariant());
     if (!bytes)
-        return std::nullopt;
+        return bytes.error();
     RosDecodeLimits limits;
     limits.maxArrayElements = 4096;
-    return RosMessageDecoder::decode(registry, type, *bytes, error, limits);
+    return RosMessageDecoder::decode(registry, type, *bytes, limits);
 }

@@ -30,20 +30,17 @@ class RosMessageEncoder
 {
     Q_DECLARE_TR_FUNCTIONS(RosMessageEncoder)
 public:
-    static std::optional<QByteArray> encode(const RosTypeRegistry& registry, const QString& type,
-                                            const QVariant& value, QString* error = nullptr,
-                                            const RosEncodeLimits& limits = {});
+    static Result<QByteArray> encode(const RosTypeRegistry& registry, const QString& type,
+                                     const QVariant& value, const RosEncodeLimits& limits = {});
     /// Serializes as rmw does for ROS 2 (and mqtt_client for ROS 2 with it): CDR (XCDR1,
     /// little-endian) after the encapsulation header 00 01 00 00, the counterpart of
     /// RosMessageDecoder::decodeCdr(). The same value rules; a string may not contain NUL.
-    static std::optional<QByteArray> encodeCdr(const RosTypeRegistry& registry, const QString& type,
-                                               const QVariant& value, QString* error = nullptr,
-                                               const RosEncodeLimits& limits = {});
+    static Result<QByteArray> encodeCdr(const RosTypeRegistry& registry, const QString& type,
+                                        const QVariant& value, const RosEncodeLimits& limits = {});
     /// A decoded message as YAML in field order that encode() takes back (after YamlVariant);
     /// nullopt when the decode cut anything (a long array or string) or a definition repeats a
     /// field name, as it would not round-trip.
     static std::optional<QString> toYaml(const RosValue& message);
     /// A value of the type with every field zero, empty or of its fixed length.
-    static std::optional<RosValue> zeroValue(const RosTypeRegistry& registry, const QString& type,
-                                             QString* error = nullptr);
+    static Result<RosValue> zeroValue(const RosTypeRegistry& registry, const QString& type);
 };

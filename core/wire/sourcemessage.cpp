@@ -1,30 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include "sourcemessage.h"
 
-std::optional<RosValue> SourceMessage::decode(const RosTypeRegistry& registry, const SourceType& type,
-                                              const QByteArray& bytes, QString* error,
-                                              const RosDecodeLimits& limits)
+Result<RosValue> SourceMessage::decode(const RosTypeRegistry& registry, const SourceType& type,
+                                       const QByteArray& bytes, const RosDecodeLimits& limits)
 {
     switch (type.graph) {
     case SourceGraph::Ros1:
-        return RosMessageDecoder::decode(registry, type.type, bytes, error, limits);
+        return RosMessageDecoder::decode(registry, type.type, bytes, limits);
     case SourceGraph::Ros2:
-        return RosMessageDecoder::decodeCdr(registry, type.type, bytes, error, limits);
+        return RosMessageDecoder::decodeCdr(registry, type.type, bytes, limits);
     case SourceGraph::Mqtt:
         break;
     }
     if (type.announced)
-        return MqttClientWire::decodePayload(registry, *type.announced, bytes, error, limits);
-    if (error)
-        *error = tr("no ROS type was announced for it");
-    return std::nullopt;
+        return MqttClientWire::decodePayload(registry, *type.announced, bytes, limits);
+    return LocatedError {tr("no ROS type was announced for it")};
 }
 
-std::optional<StampCodec::Decoded> SourceMessage::decodeStamp(SourceGraph graph, const QByteArray& bytes,
-                                                              QString* error)
+Result<StampCodec::Decoded> SourceMessage::decodeStamp(SourceGraph graph, const QByteArray& bytes)
 {
-    return graph == SourceGraph::Ros2 ? StampCodec::decodeTimeStampedCdr(bytes, error)
-                                      : StampCodec::decodeTimeStamped(bytes, error);
+    return graph == SourceGraph::Ros2 ? StampCodec::decodeTimeStampedCdr(bytes)
+                                      : StampCodec::decodeTimeStamped(bytes);
 }
 
 std::optional<qint64> SourceMessage::decodeLatency(SourceGraph graph, const QByteArray& bytes)
@@ -41,8 +37,10 @@ StampReading SourceMessage::readStamp(const SourceArrival& a, bool latency)
             r.latency = LatencyValue {a.topic, *ns, a.receivedNs};
         else
             r.error = tr("a latency that is no finite number of seconds");
-    } else if (const auto d = decodeStamp(a.graph, a.bytes, &r.error)) {
+    } else if (const Result<StampCodec::Decoded> d = decodeStamp(a.graph, a.bytes); d) {
         r.stamp = StampEvent {a.topic, d->sampleNs, d->timeNs, a.receivedNs};
+    } else {
+        r.error = d.error().toString();
     }
     return r;
 }

@@ -67,14 +67,12 @@ class SourceMessage
 public:
     /// The message as a value: ROS 1 with RosMessageDecoder::decode(), ROS 2 with decodeCdr(), an
     /// announced MQTT payload with MqttClientWire::decodePayload() (after its stamp, in its dialect).
-    /// Not for MQTT payloads without an announcement (nullopt, with `error` saying so): those are
+    /// Not for MQTT payloads without an announcement (an error saying so): those are
     /// JSON or opaque, the caller's to show.
-    static std::optional<RosValue> decode(const RosTypeRegistry& registry, const SourceType& type,
-                                          const QByteArray& bytes, QString* error = nullptr,
-                                          const RosDecodeLimits& limits = {});
+    static Result<RosValue> decode(const RosTypeRegistry& registry, const SourceType& type,
+                                   const QByteArray& bytes, const RosDecodeLimits& limits = {});
     /// A `benchmarking_suite/TimeStamped` of the graph's form (ROS 1 serialized, ROS 2 CDR).
-    static std::optional<StampCodec::Decoded> decodeStamp(SourceGraph graph, const QByteArray& bytes,
-                                                          QString* error = nullptr);
+    static Result<StampCodec::Decoded> decodeStamp(SourceGraph graph, const QByteArray& bytes);
     /// A std_msgs Float64 latency in seconds, as ns, of the graph's form.
     static std::optional<qint64> decodeLatency(SourceGraph graph, const QByteArray& bytes);
     /// An arrival of a stamp topic (`latency` false: a TimeStamped named by its topic) or of a

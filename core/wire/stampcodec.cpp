@@ -129,36 +129,29 @@ std::optional<StampCodec::Decoded> StampCodec::decodeHeader(const QByteArray& by
     return d;
 }
 
-std::optional<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArray& bytes, QString* error)
+Result<StampCodec::Decoded> StampCodec::decodeTimeStamped(const QByteArray& bytes)
 {
     qsizetype headerBytes = 0;
     std::optional<Decoded> header = decodeHeader(bytes, &headerBytes);
     if (!header) {
-        if (error && bytes.size() >= 12 && qFromLittleEndian<quint32>(bytes.constData() + 8) >= quint32(kNsPerSec))
-            *error = tr("TimeStamped header stamp has %1 nanoseconds, more than a second")
-                         .arg(qFromLittleEndian<quint32>(bytes.constData() + 8));
-        else if (error)
-            *error = bytes.size() < 16 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
-                                       : tr("TimeStamped frame_id claims %1 bytes, only %2 left")
-                                             .arg(qFromLittleEndian<quint32>(bytes.constData() + 12))
-                                             .arg(bytes.size() - 16);
-        return std::nullopt;
+        if (bytes.size() >= 12 && qFromLittleEndian<quint32>(bytes.constData() + 8) >= quint32(kNsPerSec))
+            return LocatedError {tr("TimeStamped header stamp has %1 nanoseconds, more than a second")
+                                     .arg(qFromLittleEndian<quint32>(bytes.constData() + 8))};
+        return LocatedError {bytes.size() < 16
+                                 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
+                                 : tr("TimeStamped frame_id claims %1 bytes, only %2 left")
+                                       .arg(qFromLittleEndian<quint32>(bytes.constData() + 12))
+                                       .arg(bytes.size() - 16)};
     }
     Decoded d = *header;
     Reader r {bytes};
     r.pos = headerBytes;
-    if (!r.time(d.timeNs)) {
-        if (error)
-            *error = r.badNsec ? tr("TimeStamped time has %1 nanoseconds, more than a second")
-                                     .arg(qFromLittleEndian<quint32>(bytes.constData() + r.pos - 4))
-                               : tr("TimeStamped message ends before its time field");
-        return std::nullopt;
-    }
-    if (r.pos != bytes.size()) {
-        if (error)
-            *error = tr("TimeStamped message has %1 bytes too many").arg(bytes.size() - r.pos);
-        return std::nullopt;
-    }
+    if (!r.time(d.timeNs))
+        return LocatedError {r.badNsec ? tr("TimeStamped time has %1 nanoseconds, more than a second")
+                                             .arg(qFromLittleEndian<quint32>(bytes.constData() + r.pos - 4))
+                                       : tr("TimeStamped message ends before its time field")};
+    if (r.pos != bytes.size())
+        return LocatedError {tr("TimeStamped message has %1 bytes too many").arg(bytes.size() - r.pos)};
     return d;
 }
 
@@ -175,44 +168,43 @@ QByteArray StampCodec::encodeTimeStamped(const Decoded& stamp)
     return out;
 }
 
-std::optional<StampCodec::Decoded> StampCodec::decodeTimeStampedCdr(const QByteArray& bytes, QString* error)
+Result<StampCodec::Decoded> StampCodec::decodeTimeStampedCdr(const QByteArray& bytes)
 {
-    const auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
     const std::optional<bool> big = cdrBigEndian(bytes);
     if (!big)
-        return fail(bytes.size() < 4 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
-                                     : tr("not CDR: the encapsulation header is %1")
-                                           .arg(QString::fromLatin1(bytes.left(4).toHex(' '))));
+        return LocatedError {bytes.size() < 4
+                                 ? tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())
+                                 : tr("not CDR: the encapsulation header is %1")
+                                       .arg(QString::fromLatin1(bytes.left(4).toHex(' ')))};
     Reader r {bytes, 4, false, *big, 4};
     Decoded d;
     quint32 frameLength = 0;
     if (!r.time(d.sampleNs))
-        return fail(r.badNsec ? tr("TimeStamped header stamp has %1 nanoseconds, more than a second")
-                                    .arg(*big ? qFromBigEndian<quint32>(bytes.constData() + 8)
-                                              : qFromLittleEndian<quint32>(bytes.constData() + 8))
-                              : tr("TimeStamped message too short (%1 bytes)").arg(bytes.size()));
+        return LocatedError {r.badNsec ? tr("TimeStamped header stamp has %1 nanoseconds, more than a second")
+                                             .arg(*big ? qFromBigEndian<quint32>(bytes.constData() + 8)
+                                                       : qFromLittleEndian<quint32>(bytes.constData() + 8))
+                                       : tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())};
     if (!r.u32(frameLength))
-        return fail(tr("TimeStamped message too short (%1 bytes)").arg(bytes.size()));
+        return LocatedError {tr("TimeStamped message too short (%1 bytes)").arg(bytes.size())};
     if (frameLength > quint32(bytes.size() - r.pos))
-        return fail(tr("TimeStamped frame_id claims %1 bytes, only %2 left").arg(frameLength).arg(bytes.size() - r.pos));
+        return LocatedError {tr("TimeStamped frame_id claims %1 bytes, only %2 left")
+                                 .arg(frameLength)
+                                 .arg(bytes.size() - r.pos)};
     // The length counts the terminating NUL (0 is not CDR, but harmless: an empty frame_id).
     d.frameId = QString::fromUtf8(bytes.constData() + r.pos, frameLength > 0 ? qsizetype(frameLength) - 1 : 0);
     r.pos += qsizetype(frameLength);
     r.align4();
     if (!r.time(d.timeNs))
-        return fail(r.badNsec ? tr("TimeStamped time has %1 nanoseconds, more than a second")
-                                    .arg(*big ? qFromBigEndian<quint32>(bytes.constData() + r.pos - 4)
-                                              : qFromLittleEndian<quint32>(bytes.constData() + r.pos - 4))
-                              : tr("TimeStamped message ends before its time field"));
+        return LocatedError {r.badNsec
+                                 ? tr("TimeStamped time has %1 nanoseconds, more than a second")
+                                       .arg(*big ? qFromBigEndian<quint32>(bytes.constData() + r.pos - 4)
+                                                 : qFromLittleEndian<quint32>(bytes.constData() + r.pos - 4))
+                                 : tr("TimeStamped message ends before its time field")};
     if (bytes.size() - r.pos > 3) // RTPS pads a sample to a multiple of 4 bytes, no more
-        return fail(tr("TimeStamped message has %1 bytes too many").arg(bytes.size() - r.pos));
+        return LocatedError {tr("TimeStamped message has %1 bytes too many").arg(bytes.size() - r.pos)};
     // builtin_interfaces/msg/Time has an int32 sec: what reads past 2^31 s was negative.
     if (d.sampleNs >= (qint64(1) << 31) * kNsPerSec || d.timeNs >= (qint64(1) << 31) * kNsPerSec)
-        return fail(tr("TimeStamped holds a time before 1970"));
+        return LocatedError {tr("TimeStamped holds a time before 1970")};
     return d;
 }
 
@@ -284,70 +276,48 @@ std::optional<qint64> StampCodec::parseTime(QStringView text)
     return secondsToNs(seconds);
 }
 
-std::optional<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payload, QString* error)
+Result<StampCodec::Decoded> StampCodec::decodeJson(const QByteArray& payload)
 {
-    if (payload.size() > kMaxJsonBytes) {
-        if (error)
-            *error
-                = tr("JSON stamp of %1 bytes: a stamp has at most %2").arg(payload.size()).arg(kMaxJsonBytes);
-        return std::nullopt;
-    }
+    if (payload.size() > kMaxJsonBytes)
+        return LocatedError {
+            tr("JSON stamp of %1 bytes: a stamp has at most %2").arg(payload.size()).arg(kMaxJsonBytes)};
     QJsonParseError parseError {};
     const QJsonDocument doc = QJsonDocument::fromJson(payload, &parseError);
-    if (!doc.isObject()) {
-        if (error)
-            *error = parseError.error != QJsonParseError::NoError
+    if (!doc.isObject())
+        return LocatedError {
+            parseError.error != QJsonParseError::NoError
                 ? tr("not JSON: %1 at byte %2").arg(parseError.errorString()).arg(parseError.offset)
-                : tr("JSON stamp must be an object");
-        return std::nullopt;
-    }
+                : tr("JSON stamp must be an object")};
     const QJsonObject o = doc.object();
     const QJsonValue sample = o.value(u"sample"_s);
     const QJsonValue time = o.value(u"time"_s);
-    if (sample.isUndefined() || time.isUndefined()) {
-        if (error)
-            *error = tr("JSON stamp needs \"sample\" and \"time\"");
-        return std::nullopt;
-    }
+    if (sample.isUndefined() || time.isUndefined())
+        return LocatedError {tr("JSON stamp needs \"sample\" and \"time\"")};
     Decoded d;
     if (sample.isString()) {
         const QString id = sample.toString();
-        if (id.isEmpty()) {
-            if (error)
-                *error = tr("JSON stamp's \"sample\" is empty: it names no sample");
-            return std::nullopt;
-        }
+        if (id.isEmpty())
+            return LocatedError {tr("JSON stamp's \"sample\" is empty: it names no sample")};
         const std::optional<qint64> asTime = parseTime(id);
         d.sampleNs = asTime && inRange(*asTime) ? *asTime : hashId(id.toUtf8());
         d.frameId = id;
     } else if (sample.isDouble()) {
         const std::optional<qint64> asTime = parseTime(QString::number(sample.toDouble(), 'f', 9));
-        if (!asTime || !inRange(*asTime)) {
-            if (error)
-                *error = tr("JSON stamp's \"sample\" is not a usable number (%1)").arg(rangeText());
-            return std::nullopt;
-        }
+        if (!asTime || !inRange(*asTime))
+            return LocatedError {tr("JSON stamp's \"sample\" is not a usable number (%1)").arg(rangeText())};
         d.sampleNs = *asTime;
     } else {
-        if (error)
-            *error = tr("JSON stamp's \"sample\" must be a string or a number");
-        return std::nullopt;
+        return LocatedError {tr("JSON stamp's \"sample\" must be a string or a number")};
     }
     std::optional<qint64> t;
     if (time.isString())
         t = parseTime(time.toString());
     else if (time.isDouble() && std::isfinite(time.toDouble()) && std::abs(time.toDouble()) < 9.2e9)
         t = secondsToNs(time.toDouble());
-    if (!t) {
-        if (error)
-            *error = tr("JSON stamp's \"time\" must be seconds or \"sec.nsec\"");
-        return std::nullopt;
-    }
-    if (!inRange(*t)) {
-        if (error)
-            *error = tr("JSON stamp's \"time\" %1 is %2").arg(timeText(*t), rangeText());
-        return std::nullopt;
-    }
+    if (!t)
+        return LocatedError {tr("JSON stamp's \"time\" must be seconds or \"sec.nsec\"")};
+    if (!inRange(*t))
+        return LocatedError {tr("JSON stamp's \"time\" %1 is %2").arg(timeText(*t), rangeText())};
     d.timeNs = *t;
     return d;
 }

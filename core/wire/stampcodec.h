@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "wire/stampevent.h"
 
 #include <optional>
@@ -37,7 +38,7 @@ public:
         quint32 seq = 0;
         QString frameId;
     };
-    static std::optional<Decoded> decodeTimeStamped(const QByteArray& bytes, QString* error = nullptr);
+    static Result<Decoded> decodeTimeStamped(const QByteArray& bytes);
     /// The std_msgs/Header a serialized message starts with (seq, stamp as `sampleNs`, frame_id);
     /// `consumed` gets its length.
     static std::optional<Decoded> decodeHeader(const QByteArray& bytes, qsizetype* consumed = nullptr);
@@ -52,13 +53,13 @@ public:
     /// to three bytes of padding may follow. The work is bounded by the bytes (no length is
     /// trusted before it is checked against what is left).
     static constexpr const char* ros2TypeName() { return "benchmarking_suite/msg/TimeStamped"; }
-    static std::optional<Decoded> decodeTimeStampedCdr(const QByteArray& bytes, QString* error = nullptr);
+    static Result<Decoded> decodeTimeStampedCdr(const QByteArray& bytes);
     /// Little-endian, as rmw writes it on every host we build for.
     static QByteArray encodeTimeStampedCdr(const Decoded& stamp);
 
     /// JSON stamps are small; larger payloads are an error, not parsed (the work bound per message).
     static constexpr qsizetype kMaxJsonBytes = 4096;
-    static std::optional<Decoded> decodeJson(const QByteArray& payload, QString* error = nullptr);
+    static Result<Decoded> decodeJson(const QByteArray& payload);
     static QByteArray encodeJson(qint64 sampleNs, qint64 timeNs);
 
     /// "sec.nsec" or decimal seconds as ns since the epoch (exact for "sec.nsec" text).

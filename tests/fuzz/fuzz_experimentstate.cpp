@@ -13,9 +13,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     static const ExperimentPlan plan = [] {
-        QString why;
-        const std::optional<ExperimentPlan> p = ExperimentPlan::fromYaml(
-            "samples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 25%]\n", QStringLiteral("/plans"), &why);
+        const Result<ExperimentPlan> p = ExperimentPlan::read(
+            "samples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 25%]\n", QStringLiteral("/plans"));
         FUZZ_CHECK(p && p->cells.size() == 4, "the fuzz target's own plan does not read");
         return *p;
     }();

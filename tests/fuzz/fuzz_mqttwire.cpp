@@ -22,19 +22,19 @@ const RosTypeRegistry& ros2Types()
 {
     static const RosTypeRegistry registry = [] {
         RosTypeRegistry r(Dialect::Ros2);
-        r.addDefinition(QStringLiteral("builtin_interfaces/msg/Time"),
-                        QStringLiteral("int32 sec\nuint32 nanosec\n"));
-        r.addDefinition(QStringLiteral("std_msgs/msg/Header"),
-                        QStringLiteral("builtin_interfaces/Time stamp\nstring frame_id\n"));
-        r.addDefinition(QStringLiteral("std_msgs/msg/String"), QStringLiteral("string data\n"));
-        r.addDefinition(QStringLiteral("geometry_msgs/msg/Point"),
-                        QStringLiteral("float64 x\nfloat64 y\nfloat64 z\n"));
-        r.addDefinition(QStringLiteral("geometry_msgs/msg/Quaternion"),
-                        QStringLiteral("float64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n"));
-        r.addDefinition(QStringLiteral("geometry_msgs/msg/Pose"),
-                        QStringLiteral("Point position\nQuaternion orientation\n"));
-        r.addDefinition(QStringLiteral("geometry_msgs/msg/PoseStamped"),
-                        QStringLiteral("std_msgs/Header header\nPose pose\n"));
+        (void)r.addDefinition(QStringLiteral("builtin_interfaces/msg/Time"),
+                              QStringLiteral("int32 sec\nuint32 nanosec\n"));
+        (void)r.addDefinition(QStringLiteral("std_msgs/msg/Header"),
+                              QStringLiteral("builtin_interfaces/Time stamp\nstring frame_id\n"));
+        (void)r.addDefinition(QStringLiteral("std_msgs/msg/String"), QStringLiteral("string data\n"));
+        (void)r.addDefinition(QStringLiteral("geometry_msgs/msg/Point"),
+                              QStringLiteral("float64 x\nfloat64 y\nfloat64 z\n"));
+        (void)r.addDefinition(QStringLiteral("geometry_msgs/msg/Quaternion"),
+                              QStringLiteral("float64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n"));
+        (void)r.addDefinition(QStringLiteral("geometry_msgs/msg/Pose"),
+                              QStringLiteral("Point position\nQuaternion orientation\n"));
+        (void)r.addDefinition(QStringLiteral("geometry_msgs/msg/PoseStamped"),
+                              QStringLiteral("std_msgs/Header header\nPose pose\n"));
         return r;
     }();
     return registry;
@@ -42,14 +42,13 @@ const RosTypeRegistry& ros2Types()
 
 void splitAndJoin(const QByteArray& payload, Dialect dialect)
 {
-    QString why;
-    const std::optional<MqttClientWire::Stamped> split = MqttClientWire::splitStamped(payload, dialect, &why);
+    const Result<MqttClientWire::Stamped> split = MqttClientWire::splitStamped(payload, dialect);
     if (!split) {
-        FUZZ_CHECK(!why.isEmpty(), "a stamped payload rejected without a message");
+        FUZZ_CHECK(!split.error().toString().isEmpty(), "a stamped payload rejected without a message");
         return;
     }
     const QByteArray joined = MqttClientWire::stamped(split->stampNs, split->message, dialect);
-    const std::optional<MqttClientWire::Stamped> again = MqttClientWire::splitStamped(joined, dialect);
+    const Result<MqttClientWire::Stamped> again = MqttClientWire::splitStamped(joined, dialect);
     FUZZ_CHECK(again && again->stampNs == split->stampNs && again->message == split->message,
                "a stamped payload changes when split and joined");
     // ROS 2 stamps are read in either byte order and with any options, written little-endian.
@@ -66,10 +65,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QByteArray announcement = fuzz::bytes(data + 2, typeSize);
     const QByteArray payload = fuzz::bytes(data + 2 + typeSize, size - 2 - typeSize);
 
-    QString error;
-    const std::optional<RosMsgTypeInfo> info = MqttClientWire::decodeType(announcement, &error);
+    const Result<RosMsgTypeInfo> info = MqttClientWire::decodeType(announcement);
     if (!info)
-        FUZZ_CHECK(!error.isEmpty(), "an announcement rejected without a message");
+        FUZZ_CHECK(!info.error().toString().isEmpty(), "an announcement rejected without a message");
     else
         FUZZ_CHECK(info->dialect == MqttClientWire::dialectOf(announcement),
                    "an announcement of the other dialect");
@@ -79,7 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
     if (info) {
         const QByteArray encoded = MqttClientWire::encodeType(*info);
-        const std::optional<RosMsgTypeInfo> again = MqttClientWire::decodeType(encoded);
+        const Result<RosMsgTypeInfo> again = MqttClientWire::decodeType(encoded);
         FUZZ_CHECK(again && *again == *info, "an announcement does not survive encode and decode");
 
         // The payload as the announced type: ROS 1 with the announced definition, ROS 2 with the
@@ -89,15 +87,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         if (info->dialect == Dialect::Ros2) {
             registry = ros2Types();
             if (!info->definition.isEmpty())
-                registry.addDefinition(info->name, info->definition);
+                (void)registry.addDefinition(info->name, info->definition); // contains() tells
             known = registry.contains(RosTypeRegistry::ros2TypeName(info->name));
         } else {
-            known = registry.addDefinition(info->name, info->definition, &error);
+            const Result<void> added = registry.addDefinition(info->name, info->definition);
+            known = added.ok();
         }
         if (known) {
-            error.clear();
-            if (!MqttClientWire::decodePayload(registry, *info, payload, &error))
-                FUZZ_CHECK(!error.isEmpty(), "a message rejected without a message");
+            if (const Result<RosValue> value = MqttClientWire::decodePayload(registry, *info, payload);
+                !value)
+                FUZZ_CHECK(!value.error().toString().isEmpty(), "a message rejected without a message");
         }
     }
 

@@ -9,14 +9,13 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    QString error;
-    const std::optional<Pipeline> p = Pipeline::fromYaml(fuzz::bytes(data, size), &error);
+    const Result<Pipeline> p = Pipeline::read(fuzz::bytes(data, size));
     if (!p) {
-        FUZZ_CHECK(!error.isEmpty(), "a pipeline rejected without a message");
+        FUZZ_CHECK(!p.error().toString().isEmpty(), "a pipeline rejected without a message");
         return 0;
     }
-    const std::optional<Pipeline> again = Pipeline::fromYaml(p->toYaml(), &error);
-    FUZZ_CHECK(again.has_value(), "our own pipeline YAML is rejected");
+    const Result<Pipeline> again = Pipeline::read(p->toYaml());
+    FUZZ_CHECK(again.ok(), "our own pipeline YAML is rejected");
     FUZZ_CHECK(*again == *p, "a pipeline changes when written and read back");
 
     for (int stage = 0; stage < p->stageCount(); ++stage) {

@@ -19,17 +19,19 @@ const RosTypeRegistry& ros2Types()
 {
     static const RosTypeRegistry registry = [] {
         RosTypeRegistry r(RosTypeRegistry::Dialect::Ros2);
-        r.addDefinition(QStringLiteral("builtin_interfaces/msg/Time"), QStringLiteral("int32 sec\nuint32 nanosec\n"));
-        r.addDefinition(QStringLiteral("std_msgs/msg/Header"),
-                        QStringLiteral("builtin_interfaces/Time stamp\nstring frame_id\n"));
-        r.addDefinition(QStringLiteral("std_msgs/msg/String"), QStringLiteral("string data\n"));
-        r.addDefinition(QStringLiteral("std_msgs/msg/Float64"), QStringLiteral("float64 data\n"));
-        r.addDefinition(QStringLiteral("sensor_msgs/msg/PointField"),
-                        QStringLiteral("string name\nuint32 offset\nuint8 datatype\nuint32 count\n"));
-        r.addDefinition(QStringLiteral("sensor_msgs/msg/PointCloud2"),
-                        QStringLiteral("std_msgs/Header header\nuint32 height\nuint32 width\nPointField[] fields\n"
-                                       "bool is_bigendian\nuint32 point_step\nuint32 row_step\nuint8[] data\n"
-                                       "bool is_dense\n"));
+        (void)r.addDefinition(QStringLiteral("builtin_interfaces/msg/Time"),
+                              QStringLiteral("int32 sec\nuint32 nanosec\n"));
+        (void)r.addDefinition(QStringLiteral("std_msgs/msg/Header"),
+                              QStringLiteral("builtin_interfaces/Time stamp\nstring frame_id\n"));
+        (void)r.addDefinition(QStringLiteral("std_msgs/msg/String"), QStringLiteral("string data\n"));
+        (void)r.addDefinition(QStringLiteral("std_msgs/msg/Float64"), QStringLiteral("float64 data\n"));
+        (void)r.addDefinition(QStringLiteral("sensor_msgs/msg/PointField"),
+                              QStringLiteral("string name\nuint32 offset\nuint8 datatype\nuint32 count\n"));
+        (void)r.addDefinition(
+            QStringLiteral("sensor_msgs/msg/PointCloud2"),
+            QStringLiteral("std_msgs/Header header\nuint32 height\nuint32 width\nPointField[] fields\n"
+                           "bool is_bigendian\nuint32 point_step\nuint32 row_step\nuint8[] data\n"
+                           "bool is_dense\n"));
         return r;
     }();
     return registry;
@@ -41,9 +43,9 @@ void decodeEachSample(const SampleBatch& batch)
                                     QStringLiteral("sensor_msgs/msg/PointCloud2")};
     for (const Ros2Sample& s : batch.samples)
         for (const QString& type : types) {
-            QString error;
-            if (!RosMessageDecoder::decodeCdr(ros2Types(), type, s.bytes, &error))
-                FUZZ_CHECK(!error.isEmpty(), "a CDR sample refused without a message");
+            if (const Result<RosValue> value = RosMessageDecoder::decodeCdr(ros2Types(), type, s.bytes);
+                !value)
+                FUZZ_CHECK(!value.error().toString().isEmpty(), "a CDR sample refused without a message");
         }
 }
 

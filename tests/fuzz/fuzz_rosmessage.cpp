@@ -22,43 +22,38 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QString type = newline < 0 ? definitionText : definitionText.left(newline);
     const QString definition = newline < 0 ? QString() : definitionText.mid(newline + 1);
 
-    QString error;
     RosTypeRegistry ros2(RosTypeRegistry::Dialect::Ros2);
-    if (ros2.addDefinition(type, definition, &error)) {
-        error.clear();
-        if (const auto cdr = RosMessageDecoder::decodeCdr(ros2, type, payload, &error)) {
+    if (const Result<void> added = ros2.addDefinition(type, definition); added) {
+        if (const Result<RosValue> cdr = RosMessageDecoder::decodeCdr(ros2, type, payload); cdr) {
             // and back through the YAML a user edits to CDR (little-endian, as rmw writes it)
             const QStringList lines = cdr->toLines();
             if (const std::optional<QString> yaml = RosMessageEncoder::toYaml(*cdr)) {
-                const std::optional<QVariant> tree = YamlVariant::parse(yaml->toUtf8(), &error);
-                FUZZ_CHECK(tree.has_value(), "the encoder's YAML of a CDR message does not parse");
-                error.clear();
-                if (const auto bytes = RosMessageEncoder::encodeCdr(ros2, type, *tree, &error)) {
-                    const auto again = RosMessageDecoder::decodeCdr(ros2, type, *bytes, &error);
+                const Result<QVariant> tree = YamlVariant::read(yaml->toUtf8());
+                FUZZ_CHECK(tree.ok(), "the encoder's YAML of a CDR message does not parse");
+                if (const Result<QByteArray> bytes = RosMessageEncoder::encodeCdr(ros2, type, *tree); bytes) {
+                    const Result<RosValue> again = RosMessageDecoder::decodeCdr(ros2, type, *bytes);
                     FUZZ_CHECK(again && again->toLines() == lines, "CDR-encoded values decode differently");
                 } else {
-                    FUZZ_CHECK(!error.isEmpty(), "a CDR value refused without a message");
+                    FUZZ_CHECK(!bytes.error().toString().isEmpty(), "a CDR value refused without a message");
                 }
             }
         } else {
-            FUZZ_CHECK(!error.isEmpty(), "a CDR message rejected without a message");
+            FUZZ_CHECK(!cdr.error().toString().isEmpty(), "a CDR message rejected without a message");
         }
     } else {
-        FUZZ_CHECK(!error.isEmpty(), "a ROS 2 definition rejected without a message");
+        FUZZ_CHECK(!added.error().toString().isEmpty(), "a ROS 2 definition rejected without a message");
     }
-    error.clear();
 
     RosTypeRegistry registry;
-    if (!registry.addDefinition(type, definition, &error)) {
-        FUZZ_CHECK(!error.isEmpty(), "a definition rejected without a message");
+    if (const Result<void> added = registry.addDefinition(type, definition); !added) {
+        FUZZ_CHECK(!added.error().toString().isEmpty(), "a definition rejected without a message");
         return 0;
     }
     (void)registry.fixedSize(type);
 
-    error.clear();
-    const std::optional<RosValue> value = RosMessageDecoder::decode(registry, type, payload, &error);
+    const Result<RosValue> value = RosMessageDecoder::decode(registry, type, payload);
     if (!value) {
-        FUZZ_CHECK(!error.isEmpty(), "a message rejected without a message");
+        FUZZ_CHECK(!value.error().toString().isEmpty(), "a message rejected without a message");
         return 0;
     }
     const QStringList lines = value->toLines();
@@ -70,14 +65,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     // What decodes whole comes back through the YAML a user edits: the encoder takes it, or
     // says why not (a time past 2106 after normalizing), and its bytes decode to the same values.
     if (const std::optional<QString> yaml = RosMessageEncoder::toYaml(*value)) {
-        const std::optional<QVariant> tree = YamlVariant::parse(yaml->toUtf8(), &error);
-        FUZZ_CHECK(tree.has_value(), "the encoder's YAML does not parse");
-        error.clear();
-        if (const auto bytes = RosMessageEncoder::encode(registry, type, *tree, &error)) {
-            const auto again = RosMessageDecoder::decode(registry, type, *bytes, &error);
+        const Result<QVariant> tree = YamlVariant::read(yaml->toUtf8());
+        FUZZ_CHECK(tree.ok(), "the encoder's YAML does not parse");
+        if (const Result<QByteArray> bytes = RosMessageEncoder::encode(registry, type, *tree); bytes) {
+            const Result<RosValue> again = RosMessageDecoder::decode(registry, type, *bytes);
             FUZZ_CHECK(again && again->toLines() == lines, "encoded values decode differently");
         } else {
-            FUZZ_CHECK(!error.isEmpty(), "a value refused without a message");
+            FUZZ_CHECK(!bytes.error().toString().isEmpty(), "a value refused without a message");
         }
     }
 
@@ -86,6 +80,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     tight.maxArrayElements = 1;
     tight.maxStringChars = 2;
     tight.maxDepth = 2;
-    (void)RosMessageDecoder::decode(registry, type, payload, &error, tight);
+    (void)RosMessageDecoder::decode(registry, type, payload, tight);
     return 0;
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Fuzz target for the watch rules reader (`watch --rules`, the Links page), WatchRules::fromYaml.
+// Fuzz target for the watch rules reader (`watch --rules`, the Links page), WatchRules::read.
 //
 // Input: a rules YAML, and after a NUL byte a link name matched against its patterns. Properties:
 // a rejected file says why; an accepted one is within the limits (entries, pattern length); what
@@ -21,10 +21,9 @@ bool printable(const QString& text)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const auto [yaml, nameBytes] = fuzz::splitAtNul(fuzz::bytes(data, size));
-    QString error;
-    const std::optional<WatchRules> rules = WatchRules::fromYaml(yaml, &error);
+    const Result<WatchRules> rules = WatchRules::read(yaml);
     if (!rules) {
-        FUZZ_CHECK(!error.isEmpty(), "rules rejected without a reason");
+        FUZZ_CHECK(!rules.error().toString().isEmpty(), "rules rejected without a reason");
         return 0;
     }
     FUZZ_CHECK(rules->overrides.size() <= WatchRules::kMaxLinkRules, "more entries than the limit");
@@ -41,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
                    "a negative level");
     if (allPrintable) {
         const QByteArray written = rules->toYaml();
-        const std::optional<WatchRules> again = WatchRules::fromYaml(written, &error);
+        const Result<WatchRules> again = WatchRules::read(written);
         FUZZ_CHECK(again, "what the rules write does not read back");
         FUZZ_CHECK(again->toYaml() == written, "what the rules write reads back otherwise");
     }

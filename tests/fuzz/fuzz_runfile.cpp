@@ -34,10 +34,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     QFile::remove(path + QStringLiteral("-shm"));
     QFile::remove(path + QStringLiteral("-journal"));
 
-    QString error;
-    const std::optional<RunData> run = RunFile::read(path, &error);
+    const Result<RunData> run = RunFile::read(path);
     if (!run) {
-        FUZZ_CHECK(!error.isEmpty(), "a run file rejected without a message");
+        FUZZ_CHECK(!run.error().toString().isEmpty(), "a run file rejected without a message");
         return 0;
     }
     for (const RecordedStamp& s : run->stamps)

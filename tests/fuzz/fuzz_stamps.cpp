@@ -10,26 +10,24 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const QByteArray input = fuzz::bytes(data, size);
-    QString error;
-
-    if (const auto stamp = StampCodec::decodeTimeStamped(input, &error)) {
+    if (const Result<StampCodec::Decoded> stamp = StampCodec::decodeTimeStamped(input); stamp) {
         const auto again = StampCodec::decodeTimeStamped(StampCodec::encodeTimeStamped(*stamp));
         FUZZ_CHECK(again && again->sampleNs == stamp->sampleNs && again->timeNs == stamp->timeNs
                        && again->seq == stamp->seq && again->frameId == stamp->frameId,
                    "a TimeStamped message changes in a round trip");
     } else {
-        FUZZ_CHECK(!error.isEmpty(), "a TimeStamped message rejected without a message");
+        FUZZ_CHECK(!stamp.error().toString().isEmpty(), "a TimeStamped message rejected without a message");
     }
 
-    error.clear();
-    if (const auto stamp = StampCodec::decodeTimeStampedCdr(input, &error)) {
+    if (const Result<StampCodec::Decoded> stamp = StampCodec::decodeTimeStampedCdr(input); stamp) {
         const QByteArray encoded = StampCodec::encodeTimeStampedCdr(*stamp);
         const auto again = StampCodec::decodeTimeStampedCdr(encoded);
         FUZZ_CHECK(again && again->sampleNs == stamp->sampleNs && again->timeNs == stamp->timeNs
                        && again->frameId == stamp->frameId,
                    "a ROS 2 TimeStamped sample changes in a round trip");
     } else {
-        FUZZ_CHECK(!error.isEmpty(), "a ROS 2 TimeStamped sample rejected without a message");
+        FUZZ_CHECK(!stamp.error().toString().isEmpty(),
+                   "a ROS 2 TimeStamped sample rejected without a message");
     }
     (void)StampCodec::decodeFloat64SecondsCdr(input);
 
@@ -37,8 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     if (StampCodec::decodeHeader(input, &consumed))
         FUZZ_CHECK(consumed > 0 && consumed <= input.size(), "a header longer than its bytes");
 
-    error.clear();
-    if (const auto stamp = StampCodec::decodeJson(input, &error)) {
+    if (const Result<StampCodec::Decoded> stamp = StampCodec::decodeJson(input); stamp) {
         // encodeJson writes sample ids as times; an id that is no time ("frame-17") is hashed
         // on reading, and only the time survives the round trip.
         const bool hashedId = stamp->sampleNs == StampCodec::hashId(stamp->frameId.toUtf8());
@@ -46,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         FUZZ_CHECK(again && (hashedId || again->sampleNs == stamp->sampleNs) && again->timeNs == stamp->timeNs,
                    "a JSON stamp changes in a round trip");
     } else {
-        FUZZ_CHECK(!error.isEmpty(), "a JSON stamp rejected without a message");
+        FUZZ_CHECK(!stamp.error().toString().isEmpty(), "a JSON stamp rejected without a message");
     }
 
     const QString text = QString::fromUtf8(input);

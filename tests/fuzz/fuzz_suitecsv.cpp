@@ -24,15 +24,12 @@ namespace {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const QByteArray bytes = QByteArray::fromRawData(reinterpret_cast<const char*>(data), qsizetype(size));
-    QString error;
-    const std::optional<SuiteCsv::Data> parsed = SuiteCsv::parse(bytes, QStringLiteral("fuzz.csv"), &error);
+    const Result<SuiteCsv::Data> parsed = SuiteCsv::parse(bytes, QStringLiteral("fuzz.csv"));
     // A file is read in chunks (issue 41): any slicing reads as one piece does, a quote, a CR LF
     // or the byte order mark cut between two included.
-    QString slicedError;
     const std::vector<qsizetype> slices {qsizetype(1 + size % 13), qsizetype(1 + (size / 13) % 5)};
-    const std::optional<SuiteCsv::Data> sliced
-        = SuiteCsv::parseInSlices(bytes, QStringLiteral("fuzz.csv"), slices, &slicedError);
-    if (bool(sliced) != bool(parsed) || slicedError != error)
+    const Result<SuiteCsv::Data> sliced = SuiteCsv::parseInSlices(bytes, QStringLiteral("fuzz.csv"), slices);
+    if (sliced.ok() != parsed.ok() || sliced.error().toString() != parsed.error().toString())
         fail("read in slices, the verdict differs");
     if (parsed
         && (sliced->topics != parsed->topics || sliced->samples != parsed->samples
@@ -40,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
             || sliced->malformed != parsed->malformed))
         fail("read in slices, the data differs");
     if (!parsed) {
-        if (error.isEmpty())
+        if (parsed.error().toString().isEmpty())
             fail("rejected without a message");
         return 0;
     }
@@ -57,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
     // The round trip: what we accepted, we write so that we read it the same way.
     const QByteArray again = SuiteCsv::write(parsed->topics, parsed->samples);
-    const std::optional<SuiteCsv::Data> reread = SuiteCsv::parse(again, QStringLiteral("again.csv"), &error);
+    const Result<SuiteCsv::Data> reread = SuiteCsv::parse(again, QStringLiteral("again.csv"));
     if (!reread)
         fail("our own output is rejected");
     if (reread->topics != parsed->topics)

@@ -41,9 +41,8 @@ int main(int argc, char** argv)
                           run.info.startedNs + 200'000'000LL,
                           run.info.startedNs + 700'000'000LL,
                           "{\"figures\":{\"lost\":2}}"});
-    QString error;
-    if (!RunFile::write(QString::fromLocal8Bit(argv[1]), run, &error)) {
-        std::fprintf(stderr, "%s\n", qPrintable(error));
+    if (const Result<void> written = RunFile::write(QString::fromLocal8Bit(argv[1]), run); !written) {
+        std::fprintf(stderr, "%s\n", qPrintable(written.error().toString()));
         return 1;
     }
     return 0;

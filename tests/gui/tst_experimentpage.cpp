@@ -6,6 +6,7 @@
 #include "app/gui/mainwindow.h"
 #include "experiment/experimentreport.h"
 #include "latency/latencyseriesset.h"
+#include "resulttext.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/experiment/experimentpage.h"
 #include "widgets/measure/measurepage.h"
@@ -253,7 +254,7 @@ private slots:
         QVERIFY(page.runButton()->isEnabled());
         QVERIFY(page.resumeButton()->isEnabled());
         QString why;
-        const auto plan = ExperimentPlan::load(QDir(out).filePath(u"plan.yaml"_s), &why);
+        const auto plan = noted(ExperimentPlan::readFile(QDir(out).filePath(u"plan.yaml"_s)), &why);
         QVERIFY2(plan, qPrintable(why));
         const auto state = ExperimentFolder(out).readState(*plan, &why);
         QVERIFY2(state, qPrintable(why));

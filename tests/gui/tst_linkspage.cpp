@@ -5,14 +5,15 @@
 // pane work; killing the vehicle bridge turns its links red with stall and bridge-down events in
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
-#include "signalprocess.h"
 #include "app/gui/mainwindow.h"
 #include "base/niceticks.h"
 #include "demo/demolab.h"
 #include "namecheck.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "ros/rosmasterapi.h"
 #include "session/measuresession.h"
+#include "signalprocess.h"
 #include "testservers.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
@@ -283,7 +284,7 @@ private slots:
         QVERIFY(error.contains(u"mosquitto.conf"_s));
         // The Measure page's pipeline: every mapping with a timestamp_topic_prefix gets the
         // latency across its bridge from the stamps at PREFIX/in and PREFIX/out.
-        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         window.measure()->setPipeline(*pipeline);
         window.pages()->setCurrentWidget(page);
@@ -352,7 +353,7 @@ private slots:
         RunInfo info;
         info.name = u"outage"_s;
         const QString runPath = runs.filePath(u"outage.bsrun"_s);
-        QVERIFY2(window.measure()->startRecording(runPath, info, &error), qPrintable(error));
+        QVERIFY2(noted(window.measure()->startRecording(runPath, info), &error), qPrintable(error));
         // Another window is in front: an alert becomes a notification.
         QWidget other;
         other.show();
@@ -400,8 +401,8 @@ private slots:
                                         .arg(table->columnWidth(c))));
             }
         QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
-        QVERIFY2(window.measure()->stopRecording(&error), qPrintable(error));
-        const std::optional<RunData> run = RunFile::read(runPath, &error);
+        QVERIFY2(noted(window.measure()->stopRecording(), &error), qPrintable(error));
+        const std::optional<RunData> run = noted(RunFile::read(runPath), &error);
         QVERIFY2(run, qPrintable(error));
         QVERIFY(std::any_of(run->events.cbegin(), run->events.cend(), [](const RecordedEvent& e) {
             return e.reasons.contains(u"bridge_down"_s) && e.subject == u"bridge:mqtt_interface_vehicle"_s;

@@ -11,6 +11,7 @@
 #include "latency/latencytimeline.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"
+#include "resulttext.h"
 #include "session/measuresession.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/ratechart.h"
@@ -85,7 +86,7 @@ private slots:
         MainWindow w;
         w.discoverPage()->setRosMasterUri(lab.rosMasterUri());
         w.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
-        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         w.measure()->setPipeline(*pipeline);
         w.resize(1280, 800);

@@ -87,7 +87,7 @@ private:
     QString writePaperPipeline(const QString& name, const QByteArray& more, QStringList* topics)
     {
         QByteArray yaml = Fixtures::read(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s);
-        const std::optional<Pipeline> suite = Pipeline::fromYaml(yaml);
+        const Result<Pipeline> suite = Pipeline::read(yaml);
         if (!suite)
             return {};
         *topics = suite->topics();
@@ -340,7 +340,7 @@ private slots:
         QTemporaryDir dir;
         QString error;
         QVERIFY2(page->savePipeline(dir.filePath(u"p.yaml"_s), &error), qPrintable(error));
-        const std::optional<Pipeline> back = Pipeline::load(dir.filePath(u"p.yaml"_s));
+        const Result<Pipeline> back = Pipeline::readFile(dir.filePath(u"p.yaml"_s));
         QVERIFY(back);
         QCOMPARE(back->topics(), w.measure()->pipeline().topics());
         QCOMPARE(back->host(1), u"vehicle"_s);

@@ -5,6 +5,7 @@
 // on Cyclone DDS, tests/ros2peer).
 #include "fixtures.h"
 #include "mqtt/mqtttopictree.h"
+#include "resulttext.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
 #include "ros2peer.h"
@@ -311,7 +312,7 @@ private slots:
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(info->name, info->definition));
         QString error;
-        const auto value = RosMessageDecoder::decode(reg, info->name, r.payload, &error);
+        const auto value = noted(RosMessageDecoder::decode(reg, info->name, r.payload), &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(value->find(u"pose.position.x"_s)->value.toDouble(), 7.75);
         QCOMPARE(value->find(u"pose.position.y"_s)->value.toDouble(), -2.25);
@@ -353,11 +354,12 @@ private slots:
         type.dialect = RosTypeRegistry::Dialect::Ros2;
         const RosTypeRegistry registry = Ros2Definitions::registry();
         QString error;
-        const auto first = RosMessageEncoder::encodeCdr(
-            registry, type.name,
-            QVariantMap {
-                {u"header"_s, QVariantMap {{u"frame_id"_s, u"odom"_s}}},
-                {u"pose"_s, QVariantMap {{u"position"_s, QVariantMap {{u"x"_s, 2.5}, {u"y"_s, 4}}}}}},
+        const auto first = noted(
+            RosMessageEncoder::encodeCdr(
+                registry, type.name,
+                QVariantMap {
+                    {u"header"_s, QVariantMap {{u"frame_id"_s, u"odom"_s}}},
+                    {u"pose"_s, QVariantMap {{u"position"_s, QVariantMap {{u"x"_s, 2.5}, {u"y"_s, 4}}}}}}),
             &error);
         QVERIFY2(first, qPrintable(error));
         {
@@ -393,7 +395,7 @@ private slots:
         QVERIFY(split);
         QVERIFY(r.payload.startsWith(QByteArray("\x00\x01\x00\x00", 4))); // the stamp's own header
         QVERIFY(split->stampNs / 1000000 >= before - 1000 && split->stampNs / 1000000 <= before + 60000);
-        const auto value = RosMessageDecoder::decodeCdr(registry, type.name, split->message, &error);
+        const auto value = noted(RosMessageDecoder::decodeCdr(registry, type.name, split->message), &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(value->find(u"pose.position.x"_s)->value.toDouble(), -6.125);
         QCOMPARE(value->find(u"pose.position.y"_s)->value.toDouble(), 4.0);

@@ -4,6 +4,7 @@
 // every kind of file, and save and copy the chart.
 #include "app/gui/mainwindow.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
@@ -114,8 +115,9 @@ private slots:
         RunBar* bar = w.measurePage()->runBar();
         QString error;
         const QTime started = QTime::currentTime();
-        QVERIFY2(bar->startRecording(m_dir.filePath(u"silent.bsrun"_s), u"silent"_s, QString(), &error),
-                 qPrintable(error));
+        QVERIFY2(
+            noted(bar->startRecording(m_dir.filePath(u"silent.bsrun"_s), u"silent"_s, QString()), &error),
+            qPrintable(error));
         QVERIFY(!bar->statusLabel()->text().contains(u"nothing has arrived"_s)); // not at once
         QTRY_VERIFY_WITH_TIMEOUT(bar->statusLabel()->text().contains(u"nothing has arrived"_s), 9000);
         const QString said = bar->statusLabel()->toolTip();
@@ -128,7 +130,7 @@ private slots:
         // Shown where the recording is, within the window's width.
         QVERIFY(bar->statusLabel()->isVisible());
         QVERIFY2(w.width() <= 1280, qPrintable(QString::number(w.width())));
-        QVERIFY2(bar->stopRecording(&error) || !error.isEmpty(), qPrintable(error));
+        QVERIFY2(noted(bar->stopRecording(), &error) || !error.isEmpty(), qPrintable(error));
         QCOMPARE(bar->statusLabel()->toolTip(), QString());
     }
 
@@ -142,7 +144,8 @@ private slots:
 
         const QString path = m_dir.filePath(u"runs/gui.bsrun"_s); // the folder is made on the way
         QSignalSpy recorded(bar, &RunBar::runRecorded);
-        QVERIFY2(bar->startRecording(path, u"gui run"_s, u"from the test"_s, &error), qPrintable(error));
+        QVERIFY2(noted(bar->startRecording(path, u"gui run"_s, u"from the test"_s), &error),
+                 qPrintable(error));
         QVERIFY(bar->recordButton()->text().contains(u"Stop"_s));
         QVERIFY(!bar->openButton()->isEnabled());
         QVERIFY(!page->windowBox()->isEnabled()); // the pipeline is fixed while recording
@@ -157,7 +160,7 @@ private slots:
         QVERIFY(pub.waitForFinished(10000));
         QVERIFY(bar->statusLabel()->text().contains(u"gui run"_s));
         const LatencyStats live = w.measure()->engine().series(w.measure()->engine().totalSeries()).stats();
-        QVERIFY2(bar->stopRecording(&error), qPrintable(error));
+        QVERIFY2(noted(bar->stopRecording(), &error), qPrintable(error));
         QCOMPARE(recorded.count(), 1);
         QCOMPARE(recorded.first().first().toString(), path);
         // The run goes to the Reports page's inputs straight away.
@@ -199,7 +202,7 @@ private slots:
 
         // Save As of a shown run writes a copy that opens.
         const QString copy = m_dir.filePath(u"copy.bsrun"_s);
-        QVERIFY2(bar->saveRunAs(copy, &error), qPrintable(error));
+        QVERIFY2(noted(bar->saveRunAs(copy), &error), qPrintable(error));
         QVERIFY(QFile::exists(copy));
 
         bar->backToLive();
@@ -292,7 +295,7 @@ private slots:
         QFile joined(m_dir.filePath(u"joined.csv"_s));
         QVERIFY(joined.open(QIODevice::ReadOnly));
         const std::optional<SuiteCsv::Data> rows
-            = SuiteCsv::parse(joined.readAll(), joined.fileName(), &error);
+            = noted(SuiteCsv::parse(joined.readAll(), joined.fileName()), &error);
         QVERIFY2(rows, qPrintable(error));
         QCOMPARE(rows->samples.size(), std::size_t(900)); // three runs of 300 samples
         reports->joinBox()->click();

@@ -11,6 +11,7 @@
 #include "mqtt/mqttprofile.h"
 #include "mqtt/mqtttopictree.h"
 #include "namecheck.h"
+#include "resulttext.h"
 #include "ros/rostopicmodel.h"
 #include "ros/rostopictree.h"
 #include "session/fieldplotter.h"
@@ -196,7 +197,7 @@ private slots:
         QVERIFY2(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, &error, true), qPrintable(error));
         QTRY_VERIFY(
             w->linksPage()->setWatched(m_lab.vehicleConfigPath(), true)); // listed a second after it opened
-        const std::optional<Pipeline> pipeline = Pipeline::load(m_lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(m_lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         w->measure()->setPipeline(*pipeline);
         w->resize(1280, 800);

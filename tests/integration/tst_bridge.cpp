@@ -48,7 +48,7 @@ template<typename M> RosRawMessage rosMessage(const M& message)
 
 RosRawMessage fixtureMessage(const QString& name)
 {
-    const std::optional<RosMsgTypeInfo> type
+    const Result<RosMsgTypeInfo> type
         = MqttClientWire::decodeType(Fixtures::read(u"mqtt_client/wire/"_s + name + u".type.bin"_s));
     RosRawMessage m;
     if (!type)
@@ -226,7 +226,7 @@ private slots:
                 // Eight bytes of send time (uint32 sec, uint32 nsec LE), then the message.
                 QCOMPARE(payload.size(), expected.size());
                 QCOMPARE(payload.mid(8), expected.mid(8));
-                const std::optional<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
+                const Result<MqttClientWire::Stamped> s = MqttClientWire::splitStamped(payload);
                 QVERIFY(s);
                 QVERIFY(std::abs(s->stampNs - wallClockNs()) < 5'000'000'000LL);
             } else {
@@ -315,8 +315,7 @@ private slots:
             QVERIFY2(m_ros.subscribe(
                          t, 1000,
                          [&engine, &engineMutex, t](const RosRawMessage& m, qint64 received) {
-                             const std::optional<StampCodec::Decoded> d
-                                 = StampCodec::decodeTimeStamped(m.bytes);
+                             const Result<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(m.bytes);
                              if (!d)
                                  return;
                              std::lock_guard<std::mutex> lock(engineMutex);

@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: MIT
 // The command line contract of `bridgescope config ...`, run as the real program.
-#include "signalprocess.h"
 #include "clirun.h"
 #include "config/configreader.h"
 #include "experiment/experimentplan.h"
+#include "fixtures.h"
 #include "mqtt/mqttlink.h"
 #include "mqtt/mqttprofile.h"
-#include "fixtures.h"
 #include "pythonref.h"
 #include "record/runfile.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "ros2peer.h"
+#include "signalprocess.h"
 #include "syntheticrun.h"
 #include "testservers.h"
 
@@ -69,7 +70,7 @@ QString hostileRun(const QTemporaryDir& dir, const QString& name, const QStringL
     run.series = QStringList {u"/latencies/x"_s};
     run.latencies.push_back({0, 1000, synthetic.samples.front().front(), synthetic.samples.front().front()});
     QString error;
-    if (!RunFile::write(path, run, &error))
+    if (!noted(RunFile::write(path, run), &error))
         return error;
     {
         QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"hostile"_s);
@@ -1073,7 +1074,7 @@ private slots:
         const QByteArray plan = "samples: 10\nfactors:\n  qos: [0]\n";
         writeFile(dir, u"experiment/plan.yaml"_s, plan);
         QString why;
-        const std::optional<ExperimentPlan> parsed = ExperimentPlan::fromYaml(plan, experiment, &why);
+        const std::optional<ExperimentPlan> parsed = noted(ExperimentPlan::read(plan, experiment), &why);
         QVERIFY2(parsed, qPrintable(why));
         const QString id = parsed->cells.first().id();
         writeFile(dir, u"experiment/experiment.json"_s,

@@ -2,13 +2,14 @@
 // The demo lab headless: 20 s of the paper-shaped pipeline recorded with sensible figures, and no
 // process left behind after it ends, or after it is killed with SIGKILL; and `watch --pipeline` on
 // the lab's bridges: every link's latency from the pipeline's stamps, and a run with samples and events.
-#include "signalprocess.h"
 #include "demo/demolab.h"
 #include "record/runfile.h"
 #include "report/report.h"
+#include "resulttext.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "signalprocess.h"
 #include "testservers.h"
 
 #include <csignal>
@@ -151,7 +152,7 @@ private slots:
         LiveSession live;
         QVERIFY2(live.startRos2({lab.rosDomain(), true}, &error), qPrintable(error));
         MeasureSession measure(&live);
-        const std::optional<Pipeline> pipeline = Pipeline::load(lab.pipelinePath(), &error);
+        const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         measure.setPipeline(*pipeline);
         const LatencyEngine& e = measure.engine();
@@ -349,7 +350,7 @@ private slots:
         QCOMPARE(watch.exitCode(), 0);
         lab.stop();
 
-        const std::optional<RunData> data = RunFile::read(run, &error);
+        const std::optional<RunData> data = noted(RunFile::read(run), &error);
         QVERIFY2(data, qPrintable(error));
         QCOMPARE(data->info.pipeline.topicCount(), 12);
         QVERIFY(std::any_of(data->events.cbegin(), data->events.cend(), [](const RecordedEvent& e) {

@@ -5,17 +5,18 @@
 // their levels; a bridge command that exits at once fails its cell while a bridge started through
 // the command template works; and a link profile of 20 ms delay and 2 ms jitter on each bridge's
 // broker connection shows up in the crossing stages only.
-#include "signalprocess.h"
 #include "latency/latencyengine.h"
 #include "record/runfile.h"
 #include "report/report.h"
+#include "resulttext.h"
+#include "signalprocess.h"
 #include "testservers.h"
 
 #include <csignal>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QHash>
 #include <QFile>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -149,7 +150,7 @@ private slots:
             {{u"qos"_s, u"1"_s}, {u"payload"_s, u"60000"_s}}};
         for (int i = 0; i < 4; ++i) {
             QString error;
-            const std::optional<RunData> run = RunFile::read(out + u"/runs/"_s + runs[i], &error);
+            const std::optional<RunData> run = noted(RunFile::read(out + u"/runs/"_s + runs[i]), &error);
             QVERIFY2(run, qPrintable(error));
             QCOMPARE(run->info.factors, levels[i]);
             QCOMPARE(run->info.experiment, u"qos and size"_s);

@@ -8,6 +8,7 @@
 #include "mqtt/mqttlink.h"
 #include "mqtt/mqtttopictree.h"
 #include "mqttclientros2.h"
+#include "resulttext.h"
 #include "testservers.h"
 #include "tlsfiles.h"
 #include "wire/mqttclientwire.h"
@@ -176,8 +177,10 @@ private slots:
         QVERIFY(info->meanLatencyMs >= 2000);
         const auto registry = d.tree.registryFor(u"car/chatter"_s);
         QVERIFY(registry);
-        const auto value = MqttClientWire::decodePayload(
-            *registry, *info->rosType, d.tree.history(u"car/chatter"_s)->back().payload, &error);
+        const auto value
+            = noted(MqttClientWire::decodePayload(*registry, *info->rosType,
+                                                  d.tree.history(u"car/chatter"_s)->back().payload),
+                    &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(value->toLines(), QStringList {u"data: \"hello 4\""_s});
 

@@ -7,6 +7,7 @@
 #include "record/runfile.h"
 #include "record/runrecorder.h"
 #include "report/report.h"
+#include "resulttext.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
@@ -91,7 +92,7 @@ private slots:
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
         MeasureSession measure(&live);
-        std::optional<Pipeline> pipeline = Pipeline::fromYaml(pipelineYaml());
+        Result<Pipeline> pipeline = Pipeline::read(pipelineYaml());
         QVERIFY(pipeline);
         measure.setPipeline(*pipeline);
         const QString path = m_dir.filePath(u"live.bsrun"_s);
@@ -100,17 +101,17 @@ private slots:
         info.notes = u"loopback, QoS 0"_s;
         info.bridgeConfig = "bridge: {ros2mqtt: []}\n";
         QString error;
-        QVERIFY2(measure.startRecording(path, info, &error), qPrintable(error));
-        QVERIFY(!measure.startRecording(path, info, &error)); // one at a time
+        QVERIFY2(noted(measure.startRecording(path, info), &error), qPrintable(error));
+        QVERIFY(!noted(measure.startRecording(path, info), &error)); // one at a time
         auto pub = publish(200, 100, 1'700'000'000);
         QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), 200, 60000);
         QTRY_VERIFY_WITH_TIMEOUT(measure.engine().indexOf(u"ext:/mqtt_client/latencies/lab"_s) >= 0, 10000);
         QVERIFY(pub->waitForFinished(20000));
         QTest::qWait(300);
-        QVERIFY2(measure.stopRecording(&error), qPrintable(error));
+        QVERIFY2(noted(measure.stopRecording(), &error), qPrintable(error));
         QVERIFY(!QFile::exists(path + u"-wal"_s));
 
-        const std::optional<RunData> run = RunFile::read(path, &error);
+        const std::optional<RunData> run = noted(RunFile::read(path), &error);
         QVERIFY2(run, qPrintable(error));
         QCOMPARE(run->info.name, u"live test"_s);
         QCOMPARE(run->info.notes, u"loopback, QoS 0"_s);
@@ -315,7 +316,7 @@ private slots:
         pub->kill();
 
         QString error;
-        const std::optional<RunData> run = RunFile::read(path, &error);
+        const std::optional<RunData> run = noted(RunFile::read(path), &error);
         QVERIFY2(run, qPrintable(error));
         QCOMPARE(run->info.stoppedNs, 0); // it never stopped
         QVERIFY(qint64(run->stamps.size()) >= reported);

@@ -9,6 +9,7 @@
 // garbage on the RTPS ports are counted or refused, never fatal.
 #include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
+#include "resulttext.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "testservers.h"
@@ -163,14 +164,14 @@ private slots:
             QCOMPARE(s.type, u"std_msgs/msg/String"_s);
             QCOMPARE(s.matchedPublishers, 1);
             QVERIFY2(s.rateHz > 14 && s.rateHz < 26, qPrintable(QString::number(s.rateHz)));
-            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            const auto v = noted(RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage), &error);
             QVERIFY2(v, qPrintable(error));
             QVERIFY2(field(*v, u"data"_s).startsWith(u"hello "_s), qPrintable(field(*v, u"data"_s)));
         }
         // geometry_msgs/PoseStamped: position (n, 2n, 0.5), frame "map", a stamp of now
         {
             const Ros2MonitorStats& s = stats[u"/pose"_s];
-            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            const auto v = noted(RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage), &error);
             QVERIFY2(v, qPrintable(error));
             const double x = v->find(u"pose.position.x"_s)->value.toDouble();
             QVERIFY(x >= 1);
@@ -186,7 +187,7 @@ private slots:
             const Ros2MonitorStats& s = stats[u"/cloud"_s];
             QVERIFY2(s.rateHz > 6 && s.rateHz < 14, qPrintable(QString::number(s.rateHz)));
             QVERIFY(s.lastSize > kCloudBytes);
-            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            const auto v = noted(RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage), &error);
             QVERIFY2(v, qPrintable(error));
             QCOMPARE(v->find(u"width"_s)->value.toInt(), kCloudBytes / 16);
             QCOMPARE(v->find(u"point_step"_s)->value.toInt(), 16);
@@ -201,7 +202,7 @@ private slots:
             QCOMPARE(s.type, u"bridgescope_test/msg/Opaque"_s);
             QVERIFY(!registry.contains(s.type));
             QCOMPARE(s.lastSize, 4 + 4 + 4 + kCloudBytes);
-            QVERIFY(!RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error));
+            QVERIFY(!noted(RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage), &error));
         }
 
         // unsubscribing while samples flow, and stopping with subscriptions open, are clean
@@ -293,7 +294,7 @@ private slots:
             if (c.dropped) {
                 QCOMPARE(s.messages, quint64(0));
                 QCOMPARE(s.type, c.type); // subscribed all the same
-                QVERIFY(!RosMessageDecoder::decodeCdr(registry, c.type, sent, &error));
+                QVERIFY(!noted(RosMessageDecoder::decodeCdr(registry, c.type, sent), &error));
                 QVERIFY2(error.contains(c.error, Qt::CaseInsensitive), qPrintable(c.topic + u": "_s + error));
                 continue;
             }
@@ -304,7 +305,7 @@ private slots:
             QElapsedTimer took;
             took.start();
             error.clear();
-            const auto v = RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage, &error);
+            const auto v = noted(RosMessageDecoder::decodeCdr(registry, s.type, s.lastMessage), &error);
             QVERIFY2(took.elapsed() < 100, qPrintable(c.topic));
             QVERIFY2(RosMessageDecoder::lastSteps() < 100, qPrintable(c.topic));
             if (c.error.isEmpty()) {
@@ -442,8 +443,8 @@ private slots:
         QString error;
         double previous = 0;
         for (const Ros2Sample& s : taken) {
-            const auto v
-                = RosMessageDecoder::decodeCdr(registry, u"geometry_msgs/msg/PoseStamped"_s, s.bytes, &error);
+            const auto v = noted(
+                RosMessageDecoder::decodeCdr(registry, u"geometry_msgs/msg/PoseStamped"_s, s.bytes), &error);
             QVERIFY2(v, qPrintable(error));
             const double x = v->find(u"pose.position.x"_s)->value.toDouble();
             QCOMPARE(v->find(u"pose.position.y"_s)->value.toDouble(), 2 * x);

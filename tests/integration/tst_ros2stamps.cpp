@@ -245,7 +245,7 @@ private slots:
     // the pipeline names it `ros2:/topic` (docs/formats.md); such a pipeline file reads.
     void ros2NamesWhereRos1HasTheSameName()
     {
-        const std::optional<Pipeline> pipe = Pipeline::fromYaml("topics_in_order:\n  - /a\n  - ros2:/b\n  - c\n");
+        const Result<Pipeline> pipe = Pipeline::read("topics_in_order:\n  - /a\n  - ros2:/b\n  - c\n");
         QVERIFY(pipe);
         QCOMPARE(pipe->topics(), (QStringList {u"/a"_s, u"ros2:/b"_s, u"c"_s}));
         QCOMPARE(MeasureSession::ros2StampName(u"/a"_s, {}, *pipe), u"/a"_s);

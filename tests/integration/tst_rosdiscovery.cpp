@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ROS discovery against a real rosmaster: topics, types, publishers and subscribers of real nodes
 // (rostopic), monitoring through roscpp, and a master that dies and comes back.
+#include "resulttext.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "ros/rostopicmodel.h"
@@ -126,7 +127,7 @@ private slots:
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(s.type, s.definition));
         QString error;
-        const auto v = RosMessageDecoder::decode(reg, s.type, s.lastMessage, &error);
+        const auto v = noted(RosMessageDecoder::decode(reg, s.type, s.lastMessage), &error);
         QVERIFY2(v, qPrintable(error));
         QCOMPARE(v->find(u"header.frame_id"_s)->value.toString(), u"map"_s);
         QCOMPARE(v->find(u"pose.position.x"_s)->value.toDouble(), 1.5);

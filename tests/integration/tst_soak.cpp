@@ -11,6 +11,7 @@
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttlink.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "ros/rosgraphpoller.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
@@ -95,7 +96,7 @@ private slots:
         measure.setPipeline(Pipeline({u"soak/ts/in"_s, u"soak/ts/out"_s}, 0));
         const QString runPath = m_servers.tempPath() + u"/soak.bsrun"_s;
         QString error;
-        QVERIFY2(measure.startRecording(runPath, RunInfo(), &error), qPrintable(error));
+        QVERIFY2(noted(measure.startRecording(runPath, RunInfo()), &error), qPrintable(error));
         QObject::connect(live.mqtt(), &MqttConnection::stateChanged, live.mqtt(),
                          [&](MqttConnection::State s, const QString&) { onState(s); });
         QTRY_VERIFY_WITH_TIMEOUT(live.mqtt()->state() == MqttConnection::State::Connected, 10000);
@@ -180,7 +181,7 @@ private slots:
         tick.stop();
         QTest::qWait(1000); // the last stamps arrive
         live.drainNow();
-        QVERIFY2(measure.stopRecording(&error), qPrintable(error));
+        QVERIFY2(noted(measure.stopRecording(), &error), qPrintable(error));
         onState(MqttConnection::State::Disconnected);
         QCOMPARE(bridge.state(), QProcess::Running);
         bridge.terminate();
@@ -189,7 +190,7 @@ private slots:
 
         // Every stamp published while the recorder was connected (1 s inside each connected span,
         // for the time a message takes and a loss being noticed) is in the run file.
-        const std::optional<RunData> run = RunFile::read(runPath, &error);
+        const std::optional<RunData> run = noted(RunFile::read(runPath), &error);
         QVERIFY2(run, qPrintable(error));
         QSet<QString> recorded;
         for (const RecordedStamp& s : run->stamps)

@@ -12,6 +12,7 @@
 #include "base/wallclock.h"
 #include "mqtt/mqttlink.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"
@@ -574,7 +575,7 @@ private slots:
         QCOMPARE(m_watch.exitCode(), 0);
         readEvents();
         QString error;
-        const std::optional<RunData> run = RunFile::read(m_runFile, &error);
+        const std::optional<RunData> run = noted(RunFile::read(m_runFile), &error);
         QVERIFY2(run, qPrintable(error));
         QCOMPARE(run->info.notes, u"the lab, overnight"_s);
         QCOMPARE(run->info.bridgeConfigPath, QFileInfo(m_config).absoluteFilePath());

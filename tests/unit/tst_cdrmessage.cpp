@@ -3,6 +3,7 @@
 // aligns. The bytes come from eProsima Fast CDR, the serializer of ROS 2's default RMW
 // (rmw_fastrtps serializes each member in order with it, as below), in both byte orders, and are
 // decoded with the bundled ROS 2 definitions (resources/ros2, compiled in as :/ros2).
+#include "resulttext.h"
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 #include "wire/rosmessageencoder.h"
@@ -79,13 +80,12 @@ private slots:
         // Bounds, defaults and constants.
         RosTypeRegistry r(RosTypeRegistry::Dialect::Ros2);
         QString error;
-        QVERIFY2(
-            r.addDefinition(
-                u"demo/Bounded"_s,
-                u"int32 LIMIT=5\nstring<=10 name \"x\"\nint32[<=5] few\nfloat64[3] three [1.0, 2.0, 3.0]\n"
-                "uint8 level 7 # a default\nwstring<=4 wide\n"_s,
-                &error),
-            qPrintable(error));
+        QVERIFY2(noted(r.addDefinition(u"demo/Bounded"_s,
+                                       u"int32 LIMIT=5\nstring<=10 name \"x\"\nint32[<=5] few\nfloat64[3] "
+                                       u"three [1.0, 2.0, 3.0]\n"
+                                       "uint8 level 7 # a default\nwstring<=4 wide\n"_s),
+                       &error),
+                 qPrintable(error));
         const RosMessageType* b = r.find(u"demo/msg/Bounded"_s);
         QVERIFY(b);
         QCOMPARE(b->fields.size(), 5);
@@ -94,7 +94,7 @@ private slots:
         QCOMPARE(b->fields[2].fixedLength, 3);
         QCOMPARE(b->fields[3].name, u"level"_s);
         QCOMPARE(b->fields[4].type, u"wstring"_s);
-        QVERIFY(!r.addDefinition(u"demo/Bad"_s, u"int32[<=] x\n"_s, &error));
+        QVERIFY(!noted(r.addDefinition(u"demo/Bad"_s, u"int32[<=] x\n"_s), &error));
     }
 
     void stringInBothByteOrders()
@@ -103,7 +103,8 @@ private slots:
             for (const std::string& text : {std::string("hello, ROS 2"), std::string()}) {
                 const QByteArray bytes = fastCdr(endianness, [&](Cdr& cdr) { cdr << text; });
                 QString error;
-                const auto v = RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/String"_s, bytes, &error);
+                const auto v
+                    = noted(RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/String"_s, bytes), &error);
                 QVERIFY2(v, qPrintable(error));
                 QCOMPARE(field(*v, u"data"_s), QString::fromStdString(text));
             }
@@ -120,8 +121,8 @@ private slots:
                 cdr << 0.0 << 0.0 << 0.6 << 0.8; // orientation
             });
             QString error;
-            const auto v
-                = RosMessageDecoder::decodeCdr(m_registry, u"geometry_msgs/msg/PoseStamped"_s, bytes, &error);
+            const auto v = noted(
+                RosMessageDecoder::decodeCdr(m_registry, u"geometry_msgs/msg/PoseStamped"_s, bytes), &error);
             QVERIFY2(v, qPrintable(error));
             QCOMPARE(field(*v, u"header.stamp.sec"_s), u"1700000000"_s);
             QCOMPARE(field(*v, u"header.stamp.nanosec"_s), u"123456789"_s);
@@ -149,8 +150,8 @@ private slots:
             cdr << true;
         });
         QString error;
-        const auto v
-            = RosMessageDecoder::decodeCdr(m_registry, u"sensor_msgs/msg/PointCloud2"_s, bytes, &error);
+        const auto v = noted(
+            RosMessageDecoder::decodeCdr(m_registry, u"sensor_msgs/msg/PointCloud2"_s, bytes), &error);
         QVERIFY2(v, qPrintable(error));
         QCOMPARE(field(*v, u"header.frame_id"_s), u"lidar_top"_s);
         QCOMPARE(field(*v, u"width"_s), u"15000"_s);
@@ -232,22 +233,24 @@ private slots:
         };
         for (const Case& c : cases) {
             QString error;
-            const auto bytes = RosMessageEncoder::encodeCdr(m_registry, c.type, c.value, &error);
+            const auto bytes = noted(RosMessageEncoder::encodeCdr(m_registry, c.type, c.value), &error);
             QVERIFY2(bytes, qPrintable(c.type + u": "_s + error));
             QCOMPARE(bytes->toHex(' '), c.expected.toHex(' '));
-            const auto back = RosMessageDecoder::decodeCdr(m_registry, c.type, *bytes, &error);
+            const auto back = noted(RosMessageDecoder::decodeCdr(m_registry, c.type, *bytes), &error);
             QVERIFY2(back, qPrintable(c.type + u": "_s + error));
             const auto yaml = RosMessageEncoder::toYaml(*back);
             QVERIFY(yaml);
         }
         // what CDR cannot carry, or the type does not allow, is an error naming the field
         QString error;
-        QVERIFY(!RosMessageEncoder::encodeCdr(m_registry, u"std_msgs/msg/String"_s,
-                                              QVariantMap {{u"data"_s, u"a\u0000b"_s}}, &error));
+        QVERIFY(!noted(RosMessageEncoder::encodeCdr(m_registry, u"std_msgs/msg/String"_s,
+                                                    QVariantMap {{u"data"_s, u"a\u0000b"_s}}),
+                       &error));
         QVERIFY2(error.contains(u"data"_s) && error.contains(u"NUL"_s), qPrintable(error));
-        QVERIFY(!RosMessageEncoder::encodeCdr(
-            m_registry, u"sensor_msgs/msg/NavSatFix"_s,
-            QVariantMap {{u"status"_s, QVariantMap {{u"service"_s, 70000}}}}, &error));
+        QVERIFY(!noted(
+            RosMessageEncoder::encodeCdr(m_registry, u"sensor_msgs/msg/NavSatFix"_s,
+                                         QVariantMap {{u"status"_s, QVariantMap {{u"service"_s, 70000}}}}),
+            &error));
         QVERIFY2(error.contains(u"status.service"_s), qPrintable(error));
     }
 
@@ -256,30 +259,34 @@ private slots:
         QString error;
         const QByteArray good = fastCdr(Cdr::LITTLE_ENDIANNESS, [](Cdr& cdr) { cdr << std::string("ok"); });
         // Not CDR, cut anywhere, or more than padding left over.
-        QVERIFY(!RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s,
-                                              QByteArray("\x00\x07\x00\x00", 4) + good.mid(4), &error));
+        QVERIFY(!noted(RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s,
+                                                    QByteArray("\x00\x07\x00\x00", 4) + good.mid(4)),
+                       &error));
         QVERIFY2(error.contains(u"not plain CDR"_s), qPrintable(error));
         for (int cut = 0; cut < good.size(); ++cut)
-            QVERIFY(
-                !RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s, good.left(cut), &error));
-        QVERIFY(RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s, good + QByteArray(3, 0),
-                                             &error));
-        QVERIFY(!RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s, good + QByteArray(4, 0),
-                                              &error));
+            QVERIFY(!noted(RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s, good.left(cut)),
+                           &error));
+        QVERIFY(
+            noted(RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s, good + QByteArray(3, 0)),
+                  &error));
+        QVERIFY(!noted(
+            RosMessageDecoder::decodeCdr(m_registry, u"std_msgs/msg/String"_s, good + QByteArray(4, 0)),
+            &error));
         // A sequence claiming 4 billion PointFields fails at once, not after 4 billion tries.
         const QByteArray huge = fastCdr(Cdr::LITTLE_ENDIANNESS, [](Cdr& cdr) {
             header(cdr, 0, 0, "");
             cdr << uint32_t(1) << uint32_t(1) << uint32_t(0xffffffffu);
         });
-        QVERIFY(!RosMessageDecoder::decodeCdr(m_registry, u"sensor_msgs/msg/PointCloud2"_s, huge, &error));
+        QVERIFY(
+            !noted(RosMessageDecoder::decodeCdr(m_registry, u"sensor_msgs/msg/PointCloud2"_s, huge), &error));
         QVERIFY2(error.contains(u"claims"_s), qPrintable(error));
         QVERIFY(RosMessageDecoder::lastSteps() < 100);
         // An unknown type and a wstring say so.
-        QVERIFY(!RosMessageDecoder::decodeCdr(m_registry, u"nav_msgs/msg/Odometry"_s, good, &error));
+        QVERIFY(!noted(RosMessageDecoder::decodeCdr(m_registry, u"nav_msgs/msg/Odometry"_s, good), &error));
         QVERIFY(error.contains(u"nav_msgs/msg/Odometry"_s));
         RosTypeRegistry r(RosTypeRegistry::Dialect::Ros2);
         QVERIFY(r.addDefinition(u"demo/Wide"_s, u"wstring text\n"_s));
-        QVERIFY(!RosMessageDecoder::decodeCdr(r, u"demo/Wide"_s, good, &error));
+        QVERIFY(!noted(RosMessageDecoder::decodeCdr(r, u"demo/Wide"_s, good), &error));
         QVERIFY2(error.contains(u"wstring"_s), qPrintable(error));
     }
 };

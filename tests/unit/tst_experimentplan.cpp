@@ -7,6 +7,7 @@
 #include "experiment/experimentreport.h"
 #include "experiment/experimentrunner.h"
 #include "record/runfile.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 
 #include <QDir>
@@ -43,7 +44,7 @@ bool writeFolder(const QString& dir, const QByteArray& yaml, const QJsonArray& c
 std::optional<ExperimentPlan> plan(const QByteArray& yaml, QString* error = nullptr)
 {
     QString ignored;
-    return ExperimentPlan::fromYaml(yaml, u"/plans"_s, error ? error : &ignored);
+    return noted(ExperimentPlan::read(yaml, u"/plans"_s), error ? error : &ignored);
 }
 } // namespace
 
@@ -59,7 +60,7 @@ private slots:
         QHash<QString, int> cells;
         for (const QString& f : files) {
             QString error;
-            const std::optional<ExperimentPlan> p = ExperimentPlan::load(dir.filePath(f), &error);
+            const std::optional<ExperimentPlan> p = noted(ExperimentPlan::readFile(dir.filePath(f)), &error);
             QVERIFY2(p, qPrintable(error));
             QCOMPARE(p->samples, 600);
             cells.insert(f, int(p->cells.size()));
@@ -71,7 +72,7 @@ private slots:
         QCOMPARE(cells.value(u"experiment-table4-size.yaml"_s), 6);
         QCOMPARE(cells.value(u"experiment-table5-network.yaml"_s), 4);
 
-        const auto network = ExperimentPlan::load(dir.filePath(u"experiment-table5-network.yaml"_s), nullptr);
+        const auto network = ExperimentPlan::readFile(dir.filePath(u"experiment-table5-network.yaml"_s));
         QVERIFY(network);
         QCOMPARE(network->factors, (QStringList {u"link"_s, u"payload"_s}));
         // The first factor varies slowest.
@@ -83,13 +84,13 @@ private slots:
         QCOMPARE(network->cells[3].settings.payloadBytes, 180000);
         QCOMPARE(network->cells[3].id(), u"004-link-5g-payload-100pct"_s);
 
-        const auto size = ExperimentPlan::load(dir.filePath(u"experiment-table4-size.yaml"_s), nullptr);
+        const auto size = ExperimentPlan::readFile(dir.filePath(u"experiment-table4-size.yaml"_s));
         QVERIFY(size && size->throughput);
         QCOMPARE(size->throughput->ratesHz.size(), 6);
         QCOMPARE(size->cells[5].settings.payloadBytes, ExperimentPlan::kPointCloud2Bytes);
         QCOMPARE(size->cells[1].settings.payloadBytes, 45000);
 
-        const auto methods = ExperimentPlan::load(dir.filePath(u"experiment-table1-methods.yaml"_s), nullptr);
+        const auto methods = ExperimentPlan::readFile(dir.filePath(u"experiment-table1-methods.yaml"_s));
         QVERIFY(methods);
         QVERIFY(methods->cells[0].settings.bridge.command.isEmpty());
         QVERIFY(methods->cells[1].settings.announceEveryMessage);
@@ -97,7 +98,7 @@ private slots:
         QCOMPARE(methods->cells[2].settings.bridge.name, u"mqtt_client"_s);
         QCOMPARE(methods->ros, 1);
         // the ROS 2 variant: the real mqtt_client started with the generated ROS 2 params file
-        const auto ros2 = ExperimentPlan::load(dir.filePath(u"experiment-table1-methods-ros2.yaml"_s), nullptr);
+        const auto ros2 = ExperimentPlan::readFile(dir.filePath(u"experiment-table1-methods-ros2.yaml"_s));
         QVERIFY(ros2);
         QCOMPARE(ros2->ros, 2);
         QVERIFY(ros2->cells[2].settings.bridge.command.contains(
@@ -240,7 +241,7 @@ private slots:
         QTemporaryDir dir;
         QString why;
         const auto plan
-            = ExperimentPlan::fromYaml("samples: 10\nfactors:\n  qos: [0, 1]\n", dir.path(), &why);
+            = noted(ExperimentPlan::read("samples: 10\nfactors:\n  qos: [0, 1]\n", dir.path()), &why);
         QVERIFY2(plan, qPrintable(why));
         QFile state(dir.filePath(ExperimentFolder::stateFileName()));
         QVERIFY(state.open(QIODevice::WriteOnly));
@@ -325,7 +326,7 @@ private slots:
         QString why;
         const QByteArray yaml = "samples: 5\nbridges:\n  mc: {command: \"false {config}\"}\n"
                                 "cells:\n  - {bridge: mc, announce: once}\n";
-        const auto p = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
+        const auto p = noted(ExperimentPlan::read(yaml, dir.path()), &why);
         QVERIFY2(p, qPrintable(why));
         ExperimentRunner runner(*p, yaml, dir.path(), {});
         QVERIFY2(runner.prepare(&why), qPrintable(why));
@@ -351,7 +352,7 @@ private slots:
         QTemporaryDir dir;
         QString why;
         const QByteArray yaml = "samples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 2000]\n";
-        const auto plan = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
+        const auto plan = noted(ExperimentPlan::read(yaml, dir.path()), &why);
         QVERIFY2(plan && plan->cells.size() == 4, qPrintable(why));
         QVERIFY(QDir(dir.path()).mkpath(u"runs"_s));
         QFile copy(dir.filePath(ExperimentFolder::planFileName()));
@@ -371,7 +372,7 @@ private slots:
         RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
         run.info.pipeline = Pipeline(synthetic.topics, 0);
         run.info.cell = plan->cells[2].id();
-        QVERIFY2(RunFile::write(runOf(2), run, &why), qPrintable(why));
+        QVERIFY2(noted(RunFile::write(runOf(2), run), &why), qPrintable(why));
         QVERIFY(QFile::copy(runOf(2), runOf(3)));
 
         ExperimentRunner::Options options;
@@ -395,7 +396,7 @@ private slots:
         QVERIFY2(written && (*written)[1].state == CellStatus::Pending, qPrintable(why));
         QVERIFY(QFile::exists(u"/etc/passwd"_s));
         const QByteArray more = "samples: 13\nfactors:\n  qos: [0, 1]\n  payload: [1000, 2000]\n";
-        const auto morePlan = ExperimentPlan::fromYaml(more, dir.path(), &why);
+        const auto morePlan = noted(ExperimentPlan::read(more, dir.path()), &why);
         QVERIFY(copy.open(QIODevice::WriteOnly | QIODevice::Truncate) && copy.write(more) == more.size());
         copy.close();
         ExperimentRunner again(*morePlan, more, dir.path(), options);
@@ -570,7 +571,7 @@ private slots:
         QTemporaryDir dir;
         QString why;
         const QByteArray yaml = "samples: 40\nfactors:\n  qos: [0, 1]\n";
-        const auto plan = ExperimentPlan::fromYaml(yaml, dir.path(), &why);
+        const auto plan = noted(ExperimentPlan::read(yaml, dir.path()), &why);
         QVERIFY2(plan && plan->cells.size() == 2, qPrintable(why));
         QVERIFY(QDir(dir.path()).mkpath(u"runs"_s));
         QJsonArray cells;
@@ -586,7 +587,7 @@ private slots:
             RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
             run.info.pipeline = Pipeline(synthetic.topics, 0);
             run.info.cell = cell.id();
-            QVERIFY2(RunFile::write(dir.filePath(ExperimentFolder::runPathOf(cell)), run, &why),
+            QVERIFY2(noted(RunFile::write(dir.filePath(ExperimentFolder::runPathOf(cell)), run), &why),
                      qPrintable(why));
             cells.append(QJsonObject {{u"id"_s, cell.id()},
                                       {u"state"_s, u"complete"_s},

@@ -10,6 +10,7 @@
 #include "config/configwriter.h"
 #include "fixtures.h"
 #include "latency/pipeline.h"
+#include "resulttext.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -162,7 +163,7 @@ private slots:
         QVERIFY(!r.problems.first().message.isEmpty());
         // The same check guards the pipeline reader and the patcher.
         QString error;
-        QVERIFY(!Pipeline::fromYaml("topics_in_order: [/a, /b]\n" + text.mid(okBridge.size()), &error));
+        QVERIFY(!noted(Pipeline::read("topics_in_order: [/a, /b]\n" + text.mid(okBridge.size())), &error));
         if (line >= 0)
             QVERIFY2(error.contains(u"line %1: "_s.arg(line - 2)), qPrintable(error));
         else
@@ -266,7 +267,7 @@ private slots:
                  prefix.size() - prefix.lastIndexOf('\n') - 1 + (bad.startsWith("caf") ? 3 : 0));
         QVERIFY(r.problems.first().message.contains(u"UTF-8"_s));
         QString error;
-        QVERIFY(!Pipeline::fromYaml("topics_in_order: [/a, /" + bad + "]\n", &error));
+        QVERIFY(!noted(Pipeline::read("topics_in_order: [/a, /" + bad + "]\n"), &error));
         QVERIFY2(error.contains(u"line 1"_s), qPrintable(error));
     }
 

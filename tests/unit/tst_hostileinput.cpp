@@ -5,6 +5,7 @@
 #include "latency/latencyseries.h"
 #include "latency/samplejoiner.h"
 #include "mqtt/mqttstampdecoder.h"
+#include "resulttext.h"
 #include "wire/mqttclientwire.h"
 #include "wire/payloadtext.h"
 #include "wire/stampcodec.h"
@@ -57,10 +58,10 @@ private slots:
         info.name = u"pkg/Big"_s;
         info.definition = QString(MqttClientWire::kMaxTypeBytes, u'#');
         QString error;
-        QVERIFY(!MqttClientWire::decodeType(MqttClientWire::encodeType(info), &error));
+        QVERIFY(!noted(MqttClientWire::decodeType(MqttClientWire::encodeType(info)), &error));
         QVERIFY2(error.contains(u"more than"_s), qPrintable(error));
         info.definition = u"uint8 x\n"_s;
-        QVERIFY(MqttClientWire::decodeType(MqttClientWire::encodeType(info), &error));
+        QVERIFY(noted(MqttClientWire::decodeType(MqttClientWire::encodeType(info)), &error));
     }
 
     // Every stamp that does not decode is counted for its topic, also one over the size budget

@@ -9,6 +9,7 @@
 #include "latency/sortedblocks.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 
 #include <array>
@@ -77,7 +78,7 @@ LatencyEngine legsLab(bool oneClock, qint64 offsetMs, const QList<std::array<qin
     if (oneClock)
         yaml += "one_clock: true\n";
     QString why;
-    const std::optional<Pipeline> p = Pipeline::fromYaml(yaml, &why);
+    const std::optional<Pipeline> p = noted(Pipeline::read(yaml), &why);
     if (!p)
         qFatal("%s", qPrintable(why));
     LatencyEngine engine(*p);
@@ -278,9 +279,9 @@ private slots:
         const int back = model.rowOf(u"back"_s);
         QCOMPARE(model.index(back, LatencyStatsModel::MedianColumn).data().toString(), u"45.00"_s);
         // The YAML keeps it; anything but a boolean is an error with its line.
-        QVERIFY(Pipeline::fromYaml(engine.pipeline().toYaml())->oneClock());
+        QVERIFY(Pipeline::read(engine.pipeline().toYaml())->oneClock());
         QString why;
-        QVERIFY(!Pipeline::fromYaml("topics_in_order: [/a, /b]\none_clock: [yes]\n", &why));
+        QVERIFY(!noted(Pipeline::read("topics_in_order: [/a, /b]\none_clock: [yes]\n"), &why));
         QCOMPARE(why, u"line 2: one_clock is true or false"_s);
     }
 

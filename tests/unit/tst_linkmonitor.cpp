@@ -10,6 +10,7 @@
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttsource.h"
 #include "mqtt/mqtttopictree.h"
+#include "resulttext.h"
 #include "watch/linkmodel.h"
 #include "watch/linkmonitor.h"
 #include "wire/mqttclientwire.h"
@@ -799,15 +800,15 @@ private slots:
     void rulesYaml()
     {
         QString error;
-        const auto rules = WatchRules::fromYaml("defaults:\n"
-                                                "  latency_p99_ms: {warning: 50, alert: 200}\n"
-                                                "  max_loss_percent: 2\n"
-                                                "links:\n"
-                                                "  - match: \"/vehicle/*\"\n"
-                                                "    latency_p99_ms: 20\n"
-                                                "  - match: \"client:cloud*\"\n"
-                                                "    stall_seconds: 10\n",
-                                                &error);
+        const auto rules = noted(WatchRules::read("defaults:\n"
+                                                  "  latency_p99_ms: {warning: 50, alert: 200}\n"
+                                                  "  max_loss_percent: 2\n"
+                                                  "links:\n"
+                                                  "  - match: \"/vehicle/*\"\n"
+                                                  "    latency_p99_ms: 20\n"
+                                                  "  - match: \"client:cloud*\"\n"
+                                                  "    stall_seconds: 10\n"),
+                                 &error);
         QVERIFY2(rules, qPrintable(error));
         const LinkRules all = rules->forLink({u"/robot/odom"_s, u"robot/odom"_s, u"robot"_s, u"robot"_s});
         QCOMPARE(all[LinkRules::LatencyP99Ms].warning, 50.0);
@@ -821,7 +822,7 @@ private slots:
         const LinkRules cloud = rules->forLink({u"/x"_s, u"x"_s, u"cloud_1"_s, u"c"_s});
         QCOMPARE(cloud[LinkRules::StallSeconds].alert, 10.0);
         // What it writes, it reads back the same.
-        const auto again = WatchRules::fromYaml(rules->toYaml(), &error);
+        const auto again = noted(WatchRules::read(rules->toYaml()), &error);
         QVERIFY2(again, qPrintable(error));
         QCOMPARE(again->toYaml(), rules->toYaml());
 
@@ -833,10 +834,10 @@ private slots:
                  {"watch: 1\n", u"line 1: unknown key 'watch'"_s},
                  {"defaults: [1, 2\n", u"line"_s},
                  {"a: &a [*a, *a]\n", u"line"_s}}) {
-            QVERIFY2(!WatchRules::fromYaml(yaml, &error), yaml.constData());
+            QVERIFY2(!noted(WatchRules::read(yaml), &error), yaml.constData());
             QVERIFY2(error.contains(where), qPrintable(error));
         }
-        QVERIFY(WatchRules::fromYaml(QByteArray(), &error)); // empty: the defaults
+        QVERIFY(noted(WatchRules::read(QByteArray()), &error)); // empty: the defaults
     }
 
     /// Many rules and many links: each link's rules are found once (not on every change of the link
@@ -851,7 +852,7 @@ private slots:
                 + "/*\"\n    stall_seconds: " + QByteArray::number(i % 7 + 1) + "\n";
         yaml += "  - match: \"client:ops_*\"\n    max_loss_percent: 9\n";
         QString error;
-        const auto rules = WatchRules::fromYaml(yaml, &error);
+        const auto rules = noted(WatchRules::read(yaml), &error);
         QVERIFY2(rules, qPrintable(error));
         LinkMonitor monitor;
         monitor.setRules(*rules);
@@ -902,22 +903,23 @@ private slots:
         QByteArray many = "links:\n";
         for (int i = 0; i <= WatchRules::kMaxLinkRules; ++i)
             many += "  - {match: \"/t" + QByteArray::number(i) + "\", stall_seconds: 1}\n";
-        QVERIFY(!WatchRules::fromYaml(many, &error));
+        QVERIFY(!noted(WatchRules::read(many), &error));
         QVERIFY2(error.contains(u"line 2"_s) && error.contains(u"at most 2000"_s), qPrintable(error));
         const QByteArray longPattern = "links:\n  - match: \""
             + QByteArray(WatchRules::kMaxPatternChars + 1, 'x') + "\"\n    stall_seconds: 1\n";
-        QVERIFY(!WatchRules::fromYaml(longPattern, &error));
+        QVERIFY(!noted(WatchRules::read(longPattern), &error));
         QVERIFY2(error.contains(u"line 2"_s) && error.contains(u"at most 512"_s), qPrintable(error));
         const QByteArray atTheLimit = "links:\n  - match: \"" + QByteArray(WatchRules::kMaxPatternChars, 'x')
             + "\"\n    stall_seconds: 1\n";
-        QVERIFY2(WatchRules::fromYaml(atTheLimit, &error), qPrintable(error));
+        QVERIFY2(noted(WatchRules::read(atTheLimit), &error), qPrintable(error));
     }
 
     void shippedRulesLoad()
     {
         QString error;
-        const auto rules = WatchRules::load(
-            QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/examples/watch-rules.yaml"_s, &error);
+        const auto rules = noted(WatchRules::readFile(QStringLiteral(BRIDGESCOPE_SOURCE_DIR)
+                                                      + u"/resources/examples/watch-rules.yaml"_s),
+                                 &error);
         QVERIFY2(rules, qPrintable(error));
         QCOMPARE(rules->overrides.size(), 2);
         QCOMPARE(

@@ -4,6 +4,7 @@
 #include "fixtures.h"
 #include "latency/pipeline.h"
 #include "latency/pipelinediscovery.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 
 #include <QTemporaryDir>
@@ -106,7 +107,7 @@ private slots:
         QFETCH(int, topics);
         QString error;
         const std::optional<Pipeline> p
-            = Pipeline::load(Fixtures::path(u"benchmarking_suite/"_s + file), &error);
+            = noted(Pipeline::readFile(Fixtures::path(u"benchmarking_suite/"_s + file)), &error);
         QVERIFY2(p, qPrintable(error));
         QCOMPARE(p->topicCount(), topics);
         QCOMPARE(p->window(), 600);
@@ -116,8 +117,8 @@ private slots:
 
     void hostsExtensionRoundTrips()
     {
-        std::optional<Pipeline> p
-            = Pipeline::load(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
+        Result<Pipeline> p
+            = Pipeline::readFile(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
         QVERIFY(p);
         const QHash<QString, QString> guessed = Pipeline::guessHosts(p->topics());
         for (auto it = guessed.cbegin(); it != guessed.cend(); ++it)
@@ -125,7 +126,7 @@ private slots:
         QTemporaryDir dir;
         QString error;
         QVERIFY2(p->save(dir.filePath(u"p.yaml"_s), &error), qPrintable(error));
-        const std::optional<Pipeline> back = Pipeline::load(dir.filePath(u"p.yaml"_s), &error);
+        const std::optional<Pipeline> back = noted(Pipeline::readFile(dir.filePath(u"p.yaml"_s)), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(*back, *p);
     }
@@ -136,12 +137,12 @@ private slots:
         // U+2028 and a byte-order mark inside a name too.
         const Pipeline p({u"/a\"b"_s, u"c\\d"_s, u"e: #f"_s, u"ü/\u00a0/x"_s, u"a\ufeff"_s, u"l\u2028m"_s});
         QString error;
-        const std::optional<Pipeline> back = Pipeline::fromYaml(p.toYaml(), &error);
+        const std::optional<Pipeline> back = noted(Pipeline::read(p.toYaml()), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(back->topics(), p.topics());
         const Pipeline control({u"/a\nb"_s, u"/c"_s});
         QVERIFY(control.toYaml().contains("\\u000a"));
-        QVERIFY(!Pipeline::fromYaml(control.toYaml(), &error)); // refused, with a reason, not renamed
+        QVERIFY(!noted(Pipeline::read(control.toYaml()), &error)); // refused, with a reason, not renamed
         QVERIFY(error.contains(u"control character"_s));
     }
 
@@ -149,8 +150,8 @@ private slots:
     // detection, and back. "pointcloud" is not "cloud": names are split into words.
     void guessesThePapersHosts()
     {
-        const std::optional<Pipeline> p
-            = Pipeline::load(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
+        const Result<Pipeline> p
+            = Pipeline::readFile(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
         QVERIFY(p);
         const QHash<QString, QString> hosts = Pipeline::guessHosts(p->topics());
         QStringList got;
@@ -201,7 +202,7 @@ private slots:
         QFETCH(QByteArray, yaml);
         QFETCH(QString, message);
         QString error;
-        QVERIFY(!Pipeline::fromYaml(yaml, &error));
+        QVERIFY(!noted(Pipeline::read(yaml), &error));
         QVERIFY2(error.contains(message), qPrintable(error));
     }
 
@@ -210,7 +211,7 @@ private slots:
     void aPercentInATopicStaysInTheMessage()
     {
         QString error;
-        QVERIFY(!Pipeline::fromYaml("topics_in_order: [\"/a%1\\nb\", /c]\n", &error));
+        QVERIFY(!noted(Pipeline::read("topics_in_order: [\"/a%1\\nb\", /c]\n"), &error));
         QCOMPARE(error, u"line 1: the topic \"/a%1\\u000ab\" holds the control character U+000a at 5"_s);
     }
 

@@ -2,6 +2,7 @@
 // The generic ROS 1 decoder against bytes that roscpp itself serialized and against what the real
 // mqtt_client v2.2.1 put on the broker.
 #include "fixtures.h"
+#include "resulttext.h"
 #include "rosserialize.h"
 #include "wire/mqttclientwire.h"
 #include "wire/rosmessage.h"
@@ -25,9 +26,9 @@ template<typename M> RosValue decode(const M& msg, const RosDecodeLimits& limits
     RosTypeRegistry reg;
     const QString type = QString::fromLatin1(ros::message_traits::datatype<M>());
     QString error;
-    if (!reg.addDefinition(type, QString::fromLatin1(ros::message_traits::definition<M>()), &error))
+    if (!noted(reg.addDefinition(type, QString::fromLatin1(ros::message_traits::definition<M>())), &error))
         qFatal("definition: %s", qPrintable(error));
-    const auto v = RosMessageDecoder::decode(reg, type, rosSerialize(msg), &error, limits);
+    const auto v = noted(RosMessageDecoder::decode(reg, type, rosSerialize(msg), limits), &error);
     if (!v)
         qFatal("decode: %s", qPrintable(error));
     return *v;
@@ -72,7 +73,7 @@ private slots:
         QFETCH(QStringList, lines);
         const QByteArray typeBytes = Fixtures::read(u"mqtt_client/wire/%1.type.bin"_s.arg(name));
         QString error;
-        const auto info = MqttClientWire::decodeType(typeBytes, &error);
+        const auto info = noted(MqttClientWire::decodeType(typeBytes), &error);
         QVERIFY2(info, qPrintable(error));
         QCOMPARE(info->name, type);
         QCOMPARE(info->stamped, stamped);
@@ -89,8 +90,8 @@ private slots:
             payload = split->message;
         }
         RosTypeRegistry reg;
-        QVERIFY2(reg.addDefinition(info->name, info->definition, &error), qPrintable(error));
-        const auto value = RosMessageDecoder::decode(reg, info->name, payload, &error);
+        QVERIFY2(noted(reg.addDefinition(info->name, info->definition), &error), qPrintable(error));
+        const auto value = noted(RosMessageDecoder::decode(reg, info->name, payload), &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(value->toLines(), lines);
     }
@@ -233,7 +234,7 @@ private slots:
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(info->name, info->definition));
         QString error;
-        QVERIFY(!RosMessageDecoder::decode(reg, info->name, bytes, &error));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, info->name, bytes), &error));
         QVERIFY2(error.contains(expected), qPrintable(error));
     }
 
@@ -251,7 +252,7 @@ private slots:
     {
         QFETCH(QByteArray, bytes);
         QString error;
-        QVERIFY(!MqttClientWire::decodeType(bytes, &error));
+        QVERIFY(!noted(MqttClientWire::decodeType(bytes), &error));
         QVERIFY(!error.isEmpty());
     }
 
@@ -259,13 +260,14 @@ private slots:
     {
         RosTypeRegistry reg;
         QString error;
-        QVERIFY(!reg.addDefinition(u"a/B"_s, u"int32[x] bad\n"_s, &error));
+        QVERIFY(!noted(reg.addDefinition(u"a/B"_s, u"int32[x] bad\n"_s), &error));
         QVERIFY(error.contains(u"line 1"_s));
-        QVERIFY(!reg.addDefinition(u"a/B"_s, u"int32 ok\n=====\nnot a header\n"_s, &error));
+        QVERIFY(!noted(reg.addDefinition(u"a/B"_s, u"int32 ok\n=====\nnot a header\n"_s), &error));
         // Constants are not on the wire; comments are ignored.
-        QVERIFY(reg.addDefinition(u"a/C"_s, u"int32 X=3 # three\nstring S=a#b\nuint8 v # value\n"_s, &error));
+        QVERIFY(noted(reg.addDefinition(u"a/C"_s, u"int32 X=3 # three\nstring S=a#b\nuint8 v # value\n"_s),
+                      &error));
         QCOMPARE(reg.find(u"a/C"_s)->fields.size(), 1);
-        QVERIFY(!RosMessageDecoder::decode(reg, u"a/Missing"_s, QByteArray(4, 0), &error));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, u"a/Missing"_s, QByteArray(4, 0)), &error));
     }
     // Regression (issue 11, item 4): a retained announcement of "Inner[] items" whose Inner takes no
     // bytes, and the payload ff ff ff ff, made the decoder step over 4.3e9 empty elements.
@@ -283,8 +285,8 @@ private slots:
             RosDecodeLimits limits;
             limits.maxArrayElements = shown;
             QString error;
-            const auto v
-                = RosMessageDecoder::decode(reg, u"pkg/Outer"_s, QByteArray(4, '\xff'), &error, limits);
+            const auto v = noted(
+                RosMessageDecoder::decode(reg, u"pkg/Outer"_s, QByteArray(4, '\xff'), limits), &error);
             QVERIFY2(v, qPrintable(error));
             QCOMPARE(v->find(u"items"_s)->arrayLength, 0xffffffffu);
             QCOMPARE(v->find(u"items"_s)->children.size(), shown);
@@ -330,8 +332,8 @@ private slots:
         QFETCH(QString, expected);
         RosTypeRegistry reg;
         QString error;
-        QVERIFY2(reg.addDefinition(u"pkg/Top"_s, definition, &error), qPrintable(error));
-        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Top"_s, bytes, &error));
+        QVERIFY2(noted(reg.addDefinition(u"pkg/Top"_s, definition), &error), qPrintable(error));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, u"pkg/Top"_s, bytes), &error));
         QVERIFY2(error.contains(expected), qPrintable(error));
         QVERIFY(RosMessageDecoder::lastSteps() <= RosDecodeLimits().maxSteps + 1);
     }
@@ -350,11 +352,11 @@ private slots:
         RosDecodeLimits limits;
         limits.maxSteps = 500;
         QString error;
-        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes, &error, limits));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes, limits), &error));
         QVERIFY2(error.contains(u"more than 500 steps"_s), qPrintable(error));
         limits = {};
         limits.maxBytes = 100;
-        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes, &error, limits));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, u"pkg/Names"_s, bytes, limits), &error));
         QVERIFY2(error.contains(u"4004 bytes"_s), qPrintable(error));
     }
 
@@ -363,31 +365,31 @@ private slots:
     {
         RosTypeRegistry reg;
         QString error;
-        QVERIFY2(reg.addDefinition(u"pkg/Wrap"_s,
-                                   u"Pair[1073741824] x\n===\nMSG: pkg/Pair\nfloat64 a\nfloat64 b\n"_s,
-                                   &error),
+        QVERIFY2(noted(reg.addDefinition(u"pkg/Wrap"_s,
+                                         u"Pair[1073741824] x\n===\nMSG: pkg/Pair\nfloat64 a\nfloat64 b\n"_s),
+                       &error),
                  qPrintable(error));
         QCOMPARE(reg.fixedSize(u"pkg/Wrap"_s), qint64(1) << 34);
-        QVERIFY2(reg.addDefinition(u"pkg/Huge"_s,
-                                   u"float64[4294967295] a\nHuge2[4294967295] b\n===\n"
-                                   "MSG: pkg/Huge2\nfloat64[4294967295] c\n"_s,
-                                   &error),
+        QVERIFY2(noted(reg.addDefinition(u"pkg/Huge"_s,
+                                         u"float64[4294967295] a\nHuge2[4294967295] b\n===\n"
+                                         "MSG: pkg/Huge2\nfloat64[4294967295] c\n"_s),
+                       &error),
                  qPrintable(error));
         QCOMPARE(reg.fixedSize(u"pkg/Huge"_s), RosTypeRegistry::kHugeSize);
-        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/Huge"_s, QByteArray(64, '\0'), &error));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, u"pkg/Huge"_s, QByteArray(64, '\0')), &error));
         QVERIFY2(error.contains(u"ends while reading"_s) || error.contains(u"claims"_s), qPrintable(error));
         // Lengths beyond a uint32, signs and spaces are not array lengths.
         for (const QString& bad : {u"int32[-1] x"_s, u"int32[4294967296] x"_s, u"int32[+3] x"_s})
-            QVERIFY2(!reg.addDefinition(u"pkg/Bad"_s, bad, &error), qPrintable(bad));
+            QVERIFY2(!noted(reg.addDefinition(u"pkg/Bad"_s, bad), &error), qPrintable(bad));
         // A chain of 100,000 dependencies: sized without recursing 100,000 deep.
         QString chain;
         for (int i = 0; i < 100000; ++i)
             chain += u"T%1 a\n===\nMSG: pkg/T%1\n"_s.arg(i + 1);
         chain += u"uint8 end\n"_s;
-        QVERIFY(reg.addDefinition(u"pkg/T0"_s, chain, &error));
+        QVERIFY(noted(reg.addDefinition(u"pkg/T0"_s, chain), &error));
         QCOMPARE(reg.fixedSize(u"pkg/T0"_s), -1);
         QVERIFY(reg.minSize(u"pkg/T0"_s) >= 0);
-        QVERIFY(!RosMessageDecoder::decode(reg, u"pkg/T0"_s, QByteArray(1, '\0'), &error));
+        QVERIFY(!noted(RosMessageDecoder::decode(reg, u"pkg/T0"_s, QByteArray(1, '\0')), &error));
         QVERIFY2(error.contains(u"nested deeper"_s), qPrintable(error));
     }
 };

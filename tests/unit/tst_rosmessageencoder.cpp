@@ -3,6 +3,7 @@
 // through the decoder and the YAML a user edits, and values that do not fit.
 #include "base/yamlvariant.h"
 #include "fixtures.h"
+#include "resulttext.h"
 #include "rosserialize.h"
 #include "wire/mqttclientwire.h"
 #include "wire/publishpayload.h"
@@ -34,7 +35,8 @@ template<typename M> RosTypeRegistry registryOf()
 {
     RosTypeRegistry reg;
     QString error;
-    if (!reg.addDefinition(typeOf<M>(), QString::fromLatin1(ros::message_traits::definition<M>()), &error))
+    if (!noted(reg.addDefinition(typeOf<M>(), QString::fromLatin1(ros::message_traits::definition<M>())),
+               &error))
         qFatal("definition: %s", qPrintable(error));
     return reg;
 }
@@ -47,13 +49,13 @@ template<typename M> void roundTrips(const M& msg)
     QString error;
     RosDecodeLimits limits;
     limits.maxArrayElements = 4096;
-    const auto value = RosMessageDecoder::decode(reg, typeOf<M>(), bytes, &error, limits);
+    const auto value = noted(RosMessageDecoder::decode(reg, typeOf<M>(), bytes, limits), &error);
     QVERIFY2(value, qPrintable(error));
     const auto yaml = RosMessageEncoder::toYaml(*value);
     QVERIFY(yaml);
-    const auto tree = YamlVariant::parse(yaml->toUtf8(), &error);
+    const auto tree = noted(YamlVariant::read(yaml->toUtf8()), &error);
     QVERIFY2(tree, qPrintable(error + u'\n' + *yaml));
-    const auto encoded = RosMessageEncoder::encode(reg, typeOf<M>(), *tree, &error);
+    const auto encoded = noted(RosMessageEncoder::encode(reg, typeOf<M>(), *tree), &error);
     QVERIFY2(encoded, qPrintable(error + u'\n' + *yaml));
     QCOMPARE(encoded->toHex(), bytes.toHex());
 }
@@ -62,13 +64,13 @@ QString encodeError(const RosTypeRegistry& reg, const QString& type, const QVari
                     const RosEncodeLimits& limits = {})
 {
     QString error;
-    const auto bytes = RosMessageEncoder::encode(reg, type, value, &error, limits);
+    const auto bytes = noted(RosMessageEncoder::encode(reg, type, value, limits), &error);
     return bytes ? u"<encoded %1 bytes>"_s.arg(bytes->size()) : error;
 }
 
 QVariant yaml(const char* text)
 {
-    return YamlVariant::parse(QByteArray(text)).value_or(QVariant());
+    return YamlVariant::read(QByteArray(text)).valueOr(QVariant());
 }
 } // namespace
 
@@ -87,21 +89,23 @@ private slots:
         p.pose.orientation.w = 1;
         const RosTypeRegistry reg = registryOf<geometry_msgs::PoseStamped>();
         QString error;
-        const auto bytes = RosMessageEncoder::encode(
-            reg, typeOf<geometry_msgs::PoseStamped>(),
-            yaml("header: {seq: 42, stamp: '1700000000.123456789', frame_id: base_link}\n"
-                 "pose: {position: {x: 4.25, y: -1e-300}, orientation: {w: 1}}"),
-            &error);
+        const auto bytes
+            = noted(RosMessageEncoder::encode(
+                        reg, typeOf<geometry_msgs::PoseStamped>(),
+                        yaml("header: {seq: 42, stamp: '1700000000.123456789', frame_id: base_link}\n"
+                             "pose: {position: {x: 4.25, y: -1e-300}, orientation: {w: 1}}")),
+                    &error);
         QVERIFY2(bytes, qPrintable(error));
         QCOMPARE(bytes->toHex(), rosSerialize(p).toHex());
 
         // JSON is YAML too; a time as {secs, nsecs} as rostopic writes it.
-        const auto json = RosMessageEncoder::encode(
-            reg, typeOf<geometry_msgs::PoseStamped>(),
-            yaml(R"({"header": {"seq": 42, "stamp": {"secs": 1700000000, "nsecs": 123456789},)"
-                 R"( "frame_id": "base_link"}, "pose": {"position": {"x": 4.25, "y": -1e-300},)"
-                 R"( "orientation": {"w": 1.0}}})"),
-            &error);
+        const auto json
+            = noted(RosMessageEncoder::encode(
+                        reg, typeOf<geometry_msgs::PoseStamped>(),
+                        yaml(R"({"header": {"seq": 42, "stamp": {"secs": 1700000000, "nsecs": 123456789},)"
+                             R"( "frame_id": "base_link"}, "pose": {"position": {"x": 4.25, "y": -1e-300},)"
+                             R"( "orientation": {"w": 1.0}}})")),
+                    &error);
         QVERIFY2(json, qPrintable(error));
         QCOMPARE(json->toHex(), rosSerialize(p).toHex());
     }
@@ -165,7 +169,8 @@ private slots:
     {
         const RosTypeRegistry reg = registryOf<sensor_msgs::Imu>();
         QString error;
-        const auto bytes = RosMessageEncoder::encode(reg, typeOf<sensor_msgs::Imu>(), QVariant(), &error);
+        const auto bytes
+            = noted(RosMessageEncoder::encode(reg, typeOf<sensor_msgs::Imu>(), QVariant()), &error);
         QVERIFY2(bytes, qPrintable(error));
         QCOMPARE(bytes->toHex(), rosSerialize(sensor_msgs::Imu()).toHex());
         const auto zero = RosMessageEncoder::zeroValue(reg, typeOf<sensor_msgs::Imu>());
@@ -216,7 +221,7 @@ private slots:
         QFETCH(QString, error);
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(type, definition));
-        const auto tree = YamlVariant::parse(yaml);
+        const Result<QVariant> tree = YamlVariant::read(yaml);
         QVERIFY(tree);
         QCOMPARE(encodeError(reg, type, *tree), error);
     }
@@ -264,13 +269,13 @@ private slots:
     void publishPayloadChecksBeforeSending()
     {
         QString error;
-        QCOMPARE(
-            PublishPayload::build(PublishPayload::Format::Text, u"héllo"_s, &error).value_or(QByteArray()),
-            QByteArray("h\xc3\xa9llo"));
-        QCOMPARE(PublishPayload::build(PublishPayload::Format::Json, u"{\"a\": 1}"_s, &error)
+        QCOMPARE(noted(PublishPayload::build(PublishPayload::Format::Text, u"héllo"_s), &error)
+                     .value_or(QByteArray()),
+                 QByteArray("h\xc3\xa9llo"));
+        QCOMPARE(noted(PublishPayload::build(PublishPayload::Format::Json, u"{\"a\": 1}"_s), &error)
                      .value_or(QByteArray()),
                  QByteArray("{\"a\": 1}"));
-        QVERIFY(!PublishPayload::build(PublishPayload::Format::Json, u"{\"a\": }"_s, &error));
+        QVERIFY(!noted(PublishPayload::build(PublishPayload::Format::Json, u"{\"a\": }"_s), &error));
         QVERIFY2(error.startsWith(u"not JSON: "_s), qPrintable(error));
 
         // A stamped String, as mqtt_client sends it: the stamp, then the message.
@@ -280,14 +285,15 @@ private slots:
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(info->name, info->definition));
         const qint64 stamp = 1'700'000'000'250'000'000LL;
-        const auto bytes = PublishPayload::build(PublishPayload::Format::RosMessage, u"data: hello mqtt"_s,
-                                                 &error, &reg, &*info, stamp);
+        const auto bytes = noted(PublishPayload::build(PublishPayload::Format::RosMessage,
+                                                       u"data: hello mqtt"_s, &reg, &*info, stamp),
+                                 &error);
         QVERIFY2(bytes, qPrintable(error));
         std_msgs::String s;
         s.data = "hello mqtt";
         QCOMPARE(bytes->toHex(), MqttClientWire::stamped(stamp, rosSerialize(s)).toHex());
-        QVERIFY(
-            !PublishPayload::build(PublishPayload::Format::RosMessage, u"data: [1]"_s, &error, &reg, &*info));
+        QVERIFY(!noted(
+            PublishPayload::build(PublishPayload::Format::RosMessage, u"data: [1]"_s, &reg, &*info), &error));
         QCOMPARE(error, u"not a std_msgs/String: data: needs text, not a list"_s);
 
         // Prefilled from the captured payload.

@@ -2,14 +2,15 @@
 // Run files and imports: a run reads back as it was written, replays to the same figures, and
 // broken files are refused with a reason; bags written with rosbag's own API import unchanged.
 #include "latency/latencyengine.h"
+#include "peakrss.h"
 #include "record/runfile.h"
 #include "record/suitecsv.h"
 #include "report/bagreaderprocess.h"
 #include "report/report.h"
 #include "report/runloader.h"
+#include "resulttext.h"
 #include "ros/rosstampsource.h"
 #include "stampbag.h"
-#include "peakrss.h"
 #include "syntheticrun.h"
 #include "wire/bagheader.h"
 #include "wire/stampcodec.h"
@@ -98,10 +99,10 @@ private slots:
         const RunData run = liveLikeRun(400);
         const QString path = dir.filePath(u"unit.bsrun"_s);
         QString error;
-        QVERIFY2(RunFile::write(path, run, &error), qPrintable(error));
+        QVERIFY2(noted(RunFile::write(path, run), &error), qPrintable(error));
         QVERIFY(RunFile::looksLikeRun(path));
         QVERIFY(!QFile::exists(path + u"-wal"_s)); // one self-contained file
-        const std::optional<RunData> back = RunFile::read(path, &error);
+        const std::optional<RunData> back = noted(RunFile::read(path), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(back->info.name, run.info.name);
         QCOMPARE(back->info.pipeline, run.info.pipeline);
@@ -153,7 +154,7 @@ private slots:
         f.write(bytes);
         f.close();
         QString error;
-        QVERIFY(!RunFile::read(path, &error));
+        QVERIFY(!noted(RunFile::read(path), &error));
         QVERIFY2(error.startsWith(path + u": "_s) && error.contains(message), qPrintable(error));
     }
 
@@ -172,11 +173,11 @@ private slots:
         }
         QSqlDatabase::removeDatabase(u"other"_s);
         QString error;
-        QVERIFY(!RunFile::read(path, &error));
+        QVERIFY(!noted(RunFile::read(path), &error));
         QVERIFY2(error.contains(u"no run metadata"_s), qPrintable(error));
         // A run is never overwritten.
         RunWriter writer;
-        QVERIFY(!writer.create(path, RunInfo(), &error));
+        QVERIFY(!noted(writer.create(path, RunInfo()), &error));
         QVERIFY(error.contains(u"exists already"_s));
     }
 
@@ -222,13 +223,13 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(u"hostile.bsrun"_s);
         QString error;
-        QVERIFY2(RunFile::write(path, liveLikeRun(20), &error), qPrintable(error));
+        QVERIFY2(noted(RunFile::write(path, liveLikeRun(20)), &error), qPrintable(error));
         editRun(path, sql);
         if (QTest::currentTestFailed())
             return;
         QElapsedTimer clock;
         clock.start();
-        QVERIFY(!RunFile::read(path, &error));
+        QVERIFY(!noted(RunFile::read(path), &error));
         QVERIFY2(clock.elapsed() < 3000, qPrintable(QString::number(clock.elapsed())));
         QVERIFY2(error.startsWith(path + u": not a Bridgescope run, refused: "_s) && error.contains(message),
                  qPrintable(error));
@@ -244,7 +245,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(u"long.bsrun"_s);
         QString error;
-        QVERIFY2(RunFile::write(path, liveLikeRun(20), &error), qPrintable(error));
+        QVERIFY2(noted(RunFile::write(path, liveLikeRun(20)), &error), qPrintable(error));
         editRun(path, {u"INSERT INTO latencies(series, value_ns, received_ns, drained_ns) "
                        "WITH RECURSIVE n(x) AS (SELECT 0 UNION ALL SELECT x + 1 FROM n WHERE x < 1999999) "
                        "SELECT (SELECT min(id) FROM series), x, 1, 1 FROM n"_s});
@@ -252,15 +253,17 @@ private slots:
             return;
         QElapsedTimer whole;
         whole.start();
-        QVERIFY2(RunFile::read(path, &error), qPrintable(error));
+        QVERIFY2(noted(RunFile::read(path), &error), qPrintable(error));
         const qint64 wholeMs = whole.elapsed();
         QElapsedTimer clock;
         clock.start();
         int asked = 0;
-        const std::optional<RunData> run = RunFile::read(path, &error, [&](int) {
-            ++asked;
-            return clock.elapsed() < wholeMs / 10;
-        });
+        const std::optional<RunData> run = noted(RunFile::read(path,
+                                                               [&](int) {
+                                                                   ++asked;
+                                                                   return clock.elapsed() < wholeMs / 10;
+                                                               }),
+                                                 &error);
         QVERIFY2(!run, qPrintable(u"read to the end (%1 ms), asked %2 times"_s.arg(clock.elapsed()).arg(asked)));
         QVERIFY2(error.endsWith(u": cancelled"_s), qPrintable(error));
         QVERIFY2(clock.elapsed() < wholeMs / 10 + 300,
@@ -328,7 +331,7 @@ private slots:
         QString error;
         std::optional<RunData> run = RunLoader::load(csv.fileName(), {}, &error);
         QVERIFY2(run, qPrintable(error));
-        QVERIFY(RunFile::write(dir.filePath(u"suite.bsrun"_s), *run, &error));
+        QVERIFY(noted(RunFile::write(dir.filePath(u"suite.bsrun"_s), *run), &error));
         const std::optional<Report> report
             = Report::build({dir.filePath(u"suite.bsrun"_s)}, std::nullopt, {}, &error);
         QVERIFY2(report, qPrintable(error));
@@ -357,7 +360,7 @@ private slots:
         QCOMPARE(warnings.size(), 1);
         QVERIFY2(warnings.first().contains(u"1 rows begin with the same stamp"_s),
                  qPrintable(warnings.first()));
-        QVERIFY(RunFile::write(dir.filePath(u"coarse.bsrun"_s), *run, &error));
+        QVERIFY(noted(RunFile::write(dir.filePath(u"coarse.bsrun"_s), *run), &error));
         const std::optional<Report> report
             = Report::build({dir.filePath(u"coarse.bsrun"_s)}, std::nullopt, {}, &error);
         QVERIFY2(report, qPrintable(error));
@@ -402,7 +405,7 @@ private slots:
         QVERIFY(PeakRss::reset());
         qint64 base = PeakRss::of();
         QString error;
-        std::optional<SuiteCsv::Data> data = SuiteCsv::read(big, &error);
+        std::optional<SuiteCsv::Data> data = noted(SuiteCsv::read(big), &error);
         qint64 grew = PeakRss::of() - base;
         QVERIFY2(data, qPrintable(error));
         QCOMPARE(qint64(data->samples.size()), rows);
@@ -424,7 +427,7 @@ private slots:
         }
         QVERIFY(PeakRss::reset());
         base = PeakRss::of();
-        QVERIFY(!SuiteCsv::read(line, &error));
+        QVERIFY(!noted(SuiteCsv::read(line), &error));
         grew = PeakRss::of() - base;
         QVERIFY2(error.contains(line + u":2: refused: a row of more than 16 MiB"_s), qPrintable(error));
         QVERIFY2(grew < (qint64(40) << 20) + PeakRss::kSanitizerSlack, qPrintable(u"grew %1 MiB"_s.arg(grew >> 20)));
@@ -432,11 +435,11 @@ private slots:
         // past the cells' budget: refused with the reason, not cut short silently
         SuiteCsv::Limits limits;
         limits.maxCells = 1000;
-        QVERIFY(!SuiteCsv::read(big, &error, {}, limits));
+        QVERIFY(!noted(SuiteCsv::read(big, {}, limits), &error));
         QVERIFY2(error.contains(u"refused: it has more than 1000 cells"_s), qPrintable(error));
         limits = {};
         limits.maxSeconds = 0;
-        QVERIFY(!SuiteCsv::read(big, &error, {}, limits));
+        QVERIFY(!noted(SuiteCsv::read(big, {}, limits), &error));
         QVERIFY2(error.contains(u"refused: reading it takes more than 0 s"_s), qPrintable(error));
     }
 
@@ -447,11 +450,12 @@ private slots:
         const QByteArray text = "\xEF\xBB\xBF\r\n\n\"/a\",\"/b\"\"x\"\r\n1.5,\"2.0\"\r\n\r\n3,4\n\"5\r\n\",6\r7,8\r\n"
                                 "9,\"1\"\"0\"\r\n,\r\n1,2,3\r\n\"1";
         QString error;
-        const std::optional<SuiteCsv::Data> whole = SuiteCsv::parse(text, u"s.csv"_s, &error);
+        const std::optional<SuiteCsv::Data> whole = noted(SuiteCsv::parse(text, u"s.csv"_s), &error);
         QVERIFY2(whole, qPrintable(error));
         QCOMPARE(whole->topics, (QStringList {u"/a"_s, u"/b\"x"_s}));
         for (qsizetype n = 1; n <= 7; ++n) {
-            const std::optional<SuiteCsv::Data> sliced = SuiteCsv::parseInSlices(text, u"s.csv"_s, {n, 1}, &error);
+            const std::optional<SuiteCsv::Data> sliced
+                = noted(SuiteCsv::parseInSlices(text, u"s.csv"_s, {n, 1}), &error);
             QVERIFY2(sliced, qPrintable(error));
             QCOMPARE(sliced->topics, whole->topics);
             QCOMPARE(sliced->samples, whole->samples);
@@ -521,7 +525,7 @@ private slots:
         run.stamps[11].sampleNs = -1;
         const QString path = dir.filePath(u"extreme.bsrun"_s);
         QString error;
-        QVERIFY2(RunFile::write(path, run, &error), qPrintable(error));
+        QVERIFY2(noted(RunFile::write(path, run), &error), qPrintable(error));
         QVERIFY(!RunLoader::load(path, {}, &error));
         QVERIFY2(error.startsWith(path + u": stamp 8 ("_s), qPrintable(error));
         QVERIFY2(error.contains(u"time_ns: 9223372036854775807"_s), qPrintable(error));
@@ -533,7 +537,7 @@ private slots:
             st.timeNs
                 = StampCodec::kMaxTimeNs - 1 - (&st - run.stamps.data()) % 2 * (StampCodec::kMaxTimeNs - 1);
         const QString edge = dir.filePath(u"edge.bsrun"_s);
-        QVERIFY2(RunFile::write(edge, run, &error), qPrintable(error));
+        QVERIFY2(noted(RunFile::write(edge, run), &error), qPrintable(error));
         const std::optional<Report> report = Report::build({edge}, std::nullopt, {}, &error);
         QVERIFY2(report, qPrintable(error));
         const LatencyEngine& e = *report->runs().front()->engine;
@@ -556,7 +560,7 @@ private slots:
         QString error;
         {
             RunWriter writer;
-            QVERIFY2(writer.create(path, info, &error), qPrintable(error));
+            QVERIFY2(noted(writer.create(path, info), &error), qPrintable(error));
             RecordedEvent stall {u"lab|ros2mqtt|/w/plain|w/plain"_s,
                                  u"alert"_s,
                                  {u"stall"_s, u"loss"_s},
@@ -571,13 +575,13 @@ private slots:
                                 info.startedNs + 6'000'000'000LL,
                                 0,
                                 "{}"};
-            QVERIFY2(writer.putEvents({stall, down}, &error), qPrintable(error));
+            QVERIFY2(noted(writer.putEvents({stall, down}), &error), qPrintable(error));
             stall.endNs = stall.startNs + 2'500'000'000LL;
             stall.json = R"({"subject":"x","figures":{"lost":7}})";
-            QVERIFY2(writer.putEvents({stall}, &error), qPrintable(error));
-            QVERIFY2(writer.finish(info.startedNs + 10'000'000'000LL, &error), qPrintable(error));
+            QVERIFY2(noted(writer.putEvents({stall}), &error), qPrintable(error));
+            QVERIFY2(noted(writer.finish(info.startedNs + 10'000'000'000LL), &error), qPrintable(error));
         }
-        std::optional<RunData> back = RunFile::read(path, &error);
+        std::optional<RunData> back = noted(RunFile::read(path), &error);
         QVERIFY2(back, qPrintable(error));
         QVERIFY(back->info.pipeline.isEmpty());
         QCOMPARE(back->events.size(), std::size_t(2)); // the end updated the event, no second row
@@ -590,8 +594,8 @@ private slots:
 
         // Rewritten (an import, a join): the same events.
         const QString copy = dir.filePath(u"copy.bsrun"_s);
-        QVERIFY2(RunFile::write(copy, *back, &error), qPrintable(error));
-        const std::optional<RunData> again = RunFile::read(copy, &error);
+        QVERIFY2(noted(RunFile::write(copy, *back), &error), qPrintable(error));
+        const std::optional<RunData> again = noted(RunFile::read(copy), &error);
         QVERIFY2(again, qPrintable(error));
         QCOMPARE(again->events.size(), std::size_t(2));
         QCOMPARE(again->events[0].endNs, e.endNs);
@@ -619,10 +623,10 @@ private slots:
         }
         QSqlDatabase::removeDatabase(u"edit"_s);
         QSqlDatabase::removeDatabase(u"edit2"_s);
-        back = RunFile::read(path, &error);
+        back = noted(RunFile::read(path), &error);
         QVERIFY2(back, qPrintable(error));
         QVERIFY(back->events.empty());
-        back = RunFile::read(copy, &error);
+        back = noted(RunFile::read(copy), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(back->events[1].detail.size(), 4096);
     }

@@ -4,6 +4,7 @@
 #include "fixtures.h"
 #include "pythonref.h"
 #include "record/suitecsv.h"
+#include "resulttext.h"
 #include "syntheticrun.h"
 #include "wire/sourcemessage.h"
 #include "wire/stampcodec.h"
@@ -41,7 +42,7 @@ private slots:
                                                     "6c696461"
                                                     "01f15365"
                                                     "00e1f505");
-        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(wire);
+        const Result<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(wire);
         QVERIFY(d);
         QCOMPARE(d->seq, 7u);
         QCOMPARE(d->sampleNs, 0x6553f100LL * 1'000'000'000LL + 123456789);
@@ -49,24 +50,24 @@ private slots:
         QCOMPARE(d->timeNs, 0x6553f101LL * 1'000'000'000LL + 100'000'000);
         QCOMPARE(StampCodec::encodeTimeStamped(*d), wire);
         QString error;
-        QVERIFY(!StampCodec::decodeTimeStamped(wire.left(20), &error));
+        QVERIFY(!noted(StampCodec::decodeTimeStamped(wire.left(20)), &error));
         QVERIFY(error.contains(u"short"_s) || error.contains(u"ends"_s));
-        QVERIFY(!StampCodec::decodeTimeStamped(wire + "x", &error));
+        QVERIFY(!noted(StampCodec::decodeTimeStamped(wire + "x"), &error));
         QByteArray lying = wire;
         lying[12] = char(0xff); // frame_id length far beyond the message
-        QVERIFY(!StampCodec::decodeTimeStamped(lying, &error));
+        QVERIFY(!noted(StampCodec::decodeTimeStamped(lying), &error));
         QVERIFY(error.contains(u"frame_id"_s));
 
         // nsec >= 1e9 is no ROS time: it would not survive encoding (found by fuzz_stamps).
         QByteArray overflow = wire;
         overflow.replace(24, 4, QByteArray::fromHex("ffffffff"));
         error.clear();
-        QVERIFY(!StampCodec::decodeTimeStamped(overflow, &error));
+        QVERIFY(!noted(StampCodec::decodeTimeStamped(overflow), &error));
         QVERIFY2(error.contains(u"4294967295 nanoseconds"_s), qPrintable(error));
         overflow = wire;
         overflow.replace(8, 4, QByteArray::fromHex("00ca9a3b")); // exactly 1e9 in the header stamp
         error.clear();
-        QVERIFY(!StampCodec::decodeTimeStamped(overflow, &error));
+        QVERIFY(!noted(StampCodec::decodeTimeStamped(overflow), &error));
         QVERIFY2(error.contains(u"header stamp"_s), qPrintable(error));
         QVERIFY(!StampCodec::decodeHeader(overflow));
     }
@@ -83,7 +84,7 @@ private slots:
                                                   "61620000"
                                                   "01f15365"
                                                   "00e1f505");
-        const std::optional<StampCodec::Decoded> d = StampCodec::decodeTimeStampedCdr(le);
+        const Result<StampCodec::Decoded> d = StampCodec::decodeTimeStampedCdr(le);
         QVERIFY(d);
         QCOMPARE(d->sampleNs, 0x6553f100LL * 1'000'000'000LL + 123456789);
         QCOMPARE(d->frameId, u"ab"_s);
@@ -97,7 +98,7 @@ private slots:
                                                   "61620000"
                                                   "6553f101"
                                                   "05f5e100");
-        const std::optional<StampCodec::Decoded> b = StampCodec::decodeTimeStampedCdr(be);
+        const Result<StampCodec::Decoded> b = StampCodec::decodeTimeStampedCdr(be);
         QVERIFY(b);
         QCOMPARE(b->sampleNs, d->sampleNs);
         QCOMPARE(b->timeNs, d->timeNs);
@@ -110,7 +111,7 @@ private slots:
 
         const auto rejected = [](const QByteArray& bytes, const QString& why) {
             QString error;
-            const bool bad = !StampCodec::decodeTimeStampedCdr(bytes, &error);
+            const bool bad = !noted(StampCodec::decodeTimeStampedCdr(bytes), &error);
             if (!bad || !error.contains(why))
                 qWarning("%s: %s", bytes.toHex().constData(), qPrintable(error));
             return bad && error.contains(why);
@@ -205,12 +206,11 @@ private slots:
         QFETCH(QByteArray, json);
         QFETCH(qint64, sample);
         QFETCH(qint64, time);
-        const std::optional<StampCodec::Decoded> d = StampCodec::decodeJson(json);
+        const Result<StampCodec::Decoded> d = StampCodec::decodeJson(json);
         QVERIFY(d);
         QCOMPARE(d->sampleNs, sample);
         QCOMPARE(d->timeNs, time);
-        const std::optional<StampCodec::Decoded> back
-            = StampCodec::decodeJson(StampCodec::encodeJson(sample, time));
+        const Result<StampCodec::Decoded> back = StampCodec::decodeJson(StampCodec::encodeJson(sample, time));
         QVERIFY(back);
         QCOMPARE(back->sampleNs, sample);
         QCOMPARE(back->timeNs, time);
@@ -245,7 +245,7 @@ private slots:
         QFETCH(QByteArray, json);
         QFETCH(QString, message);
         QString error;
-        QVERIFY(!StampCodec::decodeJson(json, &error));
+        QVERIFY(!noted(StampCodec::decodeJson(json), &error));
         QVERIFY2(error.contains(message), qPrintable(error));
     }
 
@@ -291,7 +291,7 @@ private slots:
         const QByteArray suiteBytes = f.readAll();
         QCOMPARE(SuiteCsv::write(run.topics, run.samples), suiteBytes);
         QString error;
-        const std::optional<SuiteCsv::Data> back = SuiteCsv::parse(suiteBytes, u"suite.csv"_s, &error);
+        const std::optional<SuiteCsv::Data> back = noted(SuiteCsv::parse(suiteBytes, u"suite.csv"_s), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(back->topics, run.topics);
         QCOMPARE(back->samples, run.samples);
@@ -308,7 +308,7 @@ private slots:
                                "4,5\n" // too few cells
                                "5,6,7\n";
         QString error;
-        const std::optional<SuiteCsv::Data> d = SuiteCsv::parse(csv, u"run.csv"_s, &error);
+        const std::optional<SuiteCsv::Data> d = noted(SuiteCsv::parse(csv, u"run.csv"_s), &error);
         QVERIFY2(d, qPrintable(error));
         QCOMPARE(d->topics, (QStringList {u"/a"_s, u"/b"_s, u"/c,with comma"_s}));
         QCOMPARE(d->samples.size(), 2u);
@@ -335,7 +335,7 @@ private slots:
         QFETCH(QByteArray, csv);
         QFETCH(QString, message);
         QString error;
-        QVERIFY(!SuiteCsv::parse(csv, u"run.csv"_s, &error));
+        QVERIFY(!noted(SuiteCsv::parse(csv, u"run.csv"_s), &error));
         QVERIFY2(error.contains(message), qPrintable(error));
     }
     // Regression (issue 11): a NUL byte in a time cell cut the number ("12\0 99" read as 12), and
@@ -349,7 +349,7 @@ private slots:
         csv += '\0';
         csv += "99\n5,-6\n7,5000000000\n9223372036854775807,1\n4294967295.999999999,4294967296\n8,9\n";
         QString error;
-        const std::optional<SuiteCsv::Data> d = SuiteCsv::parse(csv, u"run.csv"_s, &error);
+        const std::optional<SuiteCsv::Data> d = noted(SuiteCsv::parse(csv, u"run.csv"_s), &error);
         QVERIFY2(d, qPrintable(error));
         QCOMPARE(d->samples.size(), 2u);
         QCOMPARE(d->malformed, 5);
@@ -363,7 +363,7 @@ private slots:
         QVERIFY2(d->problems[3].startsWith(u"run.csv:6: column 1 (/a)"_s), qPrintable(d->problems[3]));
         QVERIFY2(d->problems[4].startsWith(u"run.csv:7: column 2 (/b): 4294967296 is outside"_s),
                  qPrintable(d->problems[4]));
-        QVERIFY(!SuiteCsv::parse(QByteArray("/a,/", 4) + '\0' + "b\n1,2\n", u"run.csv"_s, &error));
+        QVERIFY(!noted(SuiteCsv::parse(QByteArray("/a,/", 4) + '\0' + "b\n1,2\n", u"run.csv"_s), &error));
         QVERIFY2(error.startsWith(u"run.csv:1: column 2 of the header row holds a NUL byte"_s),
                  qPrintable(error));
     }

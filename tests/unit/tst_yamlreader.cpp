@@ -5,6 +5,7 @@
 #include "base/yamlreader.h"
 #include "experiment/experimentplan.h"
 #include "latency/pipeline.h"
+#include "resulttext.h"
 #include "watch/watchrules.h"
 
 #include <QTemporaryDir>
@@ -27,7 +28,7 @@ private slots:
         QCOMPARE(plan.error().toString(), u"line 3, column 12: qos is 0, 1 or 2"_s);
         // The text form is what fromYaml() has always given.
         QString error;
-        QVERIFY(!ExperimentPlan::fromYaml("samples: 5\nfactors:\n  qos: [0, 3]\n", u"/p"_s, &error));
+        QVERIFY(!noted(ExperimentPlan::read("samples: 5\nfactors:\n  qos: [0, 3]\n", u"/p"_s), &error));
         QCOMPARE(error, plan.error().toString());
     }
 
@@ -58,7 +59,7 @@ private slots:
         QCOMPARE(missing.error().file, dir.filePath(u"none.yaml"_s));
         QVERIFY(!missing.error().pos.isValid());
         QString error;
-        QVERIFY(!WatchRules::load(dir.filePath(u"none.yaml"_s), &error));
+        QVERIFY(!noted(WatchRules::readFile(dir.filePath(u"none.yaml"_s)), &error));
         QCOMPARE(error, missing.error().toString());
         QVERIFY(error.startsWith(dir.filePath(u"none.yaml"_s) + u": "_s));
     }

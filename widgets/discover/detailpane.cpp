@@ -565,14 +565,14 @@ void DetailPane::refreshMqtt(bool force)
 
     // Fields: the decoded ROS message when mqtt_client announced the type, else JSON if it is.
     if (const auto registry = tree->registryFor(m_topic); registry && info->rosType) {
-        QString error;
         RosDecodeLimits limits;
         limits.maxArrayElements = 32;
-        if (const auto value = SourceMessage::decode(
-                *registry, {SourceGraph::Mqtt, info->rosType->name, info->rosType}, m_lastPayload, &error, limits))
+        if (const Result<RosValue> value = SourceMessage::decode(
+                *registry, {SourceGraph::Mqtt, info->rosType->name, info->rosType}, m_lastPayload, limits);
+            value)
             showFields(*value);
         else
-            showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, error));
+            showNoFields(tr("does not decode as %1: %2").arg(info->rosType->name, value.error().toString()));
     } else if (!info->typeNote.isEmpty()) {
         showNoFields(info->typeNote);
     } else if (m_lastPayload.size() <= kMaxJsonFieldsBytes
@@ -659,7 +659,6 @@ void DetailPane::refreshRos(bool force)
         showNoFields(tr("(waiting for the first message)"));
         return;
     }
-    QString error;
     RosDecodeLimits limits;
     limits.maxArrayElements = 32;
     if (ros2) {
@@ -668,21 +667,23 @@ void DetailPane::refreshRos(bool force)
             showNoFields(tr("No ROS 2 definition of %1 is known: the payload shows its %n byte(s) raw.",
                             nullptr, s->lastSize)
                              .arg(s->type));
-        else if (const auto value
-                 = SourceMessage::decode(types, {SourceGraph::Ros2, s->type, {}}, s->lastMessage, &error, limits))
+        else if (const Result<RosValue> value
+                 = SourceMessage::decode(types, {SourceGraph::Ros2, s->type, {}}, s->lastMessage, limits);
+                 value)
             showFields(*value);
         else
-            showNoFields(error);
+            showNoFields(value.error().toString());
         return;
     }
     RosTypeRegistry registry;
-    if (!registry.addDefinition(s->type, s->definition, &error)) {
-        showNoFields(error);
-    } else if (const auto value
-               = SourceMessage::decode(registry, {SourceGraph::Ros1, s->type, {}}, s->lastMessage, &error, limits)) {
+    if (const Result<void> added = registry.addDefinition(s->type, s->definition); !added) {
+        showNoFields(added.error().toString());
+    } else if (const Result<RosValue> value
+               = SourceMessage::decode(registry, {SourceGraph::Ros1, s->type, {}}, s->lastMessage, limits);
+               value) {
         showFields(*value);
     } else {
-        showNoFields(error);
+        showNoFields(value.error().toString());
     }
 }
 

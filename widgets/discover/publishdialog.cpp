@@ -157,13 +157,13 @@ bool PublishDialog::publish()
     const auto format = Format(m_format->currentData().toInt());
     const auto info = m_topics->info(topic);
     const auto registry = m_topics->registryFor(topic);
-    const std::optional<QByteArray> payload = PublishPayload::build(
+    const Result<QByteArray> payload = PublishPayload::build(
         format == Text ? PublishPayload::Format::Text
                        : (format == Json ? PublishPayload::Format::Json : PublishPayload::Format::RosMessage),
-        m_payload->toPlainText(), &why, registry.get(), info && info->rosType ? &*info->rosType : nullptr,
+        m_payload->toPlainText(), registry.get(), info && info->rosType ? &*info->rosType : nullptr,
         wallClockNs());
     if (!payload) {
-        setStatus(tr("Not sent: %1").arg(why), true);
+        setStatus(tr("Not sent: %1").arg(payload.error().toString()), true);
         return false;
     }
     const bool retained = m_retained->isChecked();

@@ -306,11 +306,12 @@ void ExperimentPage::checkPlan()
     m_check->stop();
     if (isRunning())
         return; // the grid is the running experiment's
-    QString why;
     const QString base = m_planPath.isEmpty() ? QDir::currentPath() : QFileInfo(m_planPath).path();
-    m_plan = ExperimentPlan::fromYaml(planText().toUtf8(), base, &why);
+    Result<ExperimentPlan> plan = ExperimentPlan::read(planText().toUtf8(), base);
+    m_plan = plan ? std::optional<ExperimentPlan>(std::move(plan).value()) : std::nullopt;
     if (!m_plan) {
-        m_planStatus->setText(planText().trimmed().isEmpty() ? QString() : tr("Not a plan: %1").arg(why));
+        m_planStatus->setText(
+            planText().trimmed().isEmpty() ? QString() : tr("Not a plan: %1").arg(plan.error().toString()));
         m_planStatus->setStyleSheet(u"color: #c0392b;"_s);
         updateButtons();
         return;

@@ -20,11 +20,10 @@ using namespace Qt::StringLiterals;
 
 bool ExperimentPage::openPlan(const QString& path, QString* error)
 {
-    QString why;
     QByteArray text;
-    if (!ExperimentPlan::load(path, &why, &text) && text.isEmpty()) {
+    if (const Result<ExperimentPlan> plan = ExperimentPlan::readFile(path, &text); !plan && text.isEmpty()) {
         if (error)
-            *error = why;
+            *error = plan.error().toString();
         return false;
     }
     // A plan with an error opens too: the editor is where it gets fixed. Path and folder first,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "linkspage.h"
 
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 #include "config/configreader.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
@@ -342,7 +342,7 @@ bool LinksPage::addConfigFiles(const QStringList& paths, QString* error, bool wa
 {
     QList<Listed> added;
     for (const QString& path : paths) {
-        const std::optional<QByteArray> bytes = YamlLimits::readFile(path, nullptr);
+        const Result<QByteArray> bytes = YamlReader::readFile(path);
         const ConfigReadResult read = bytes ? ConfigReader::read(*bytes) : ConfigReadResult();
         if (!read.parsed) {
             if (error)

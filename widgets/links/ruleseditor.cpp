@@ -2,7 +2,7 @@
 #include "ruleseditor.h"
 
 #include "base/atomicfile.h"
-#include "base/yamllimits.h"
+#include "base/yamlreader.h"
 
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -54,8 +54,9 @@ RulesEditor::RulesEditor(const WatchRules& rules, QWidget* parent)
 
 void RulesEditor::check()
 {
-    QString error;
-    m_rules = WatchRules::fromYaml(m_text->toPlainText().toUtf8(), &error);
+    Result<WatchRules> rules = WatchRules::read(m_text->toPlainText().toUtf8());
+    const QString error = rules.error().toString();
+    m_rules = rules ? std::optional<WatchRules>(std::move(rules).value()) : std::nullopt;
     m_apply->setEnabled(bool(m_rules));
     m_status->setText(
         m_rules ? tr("Valid: %n override(s) after the defaults.", nullptr, int(m_rules->overrides.size()))
@@ -69,11 +70,10 @@ void RulesEditor::load()
                                                       tr("Rules (*.yaml *.yml);;All files (*)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (const std::optional<QByteArray> bytes = YamlLimits::readFile(path, &error))
+    if (const Result<QByteArray> bytes = YamlReader::readFile(path); bytes)
         m_text->setPlainText(QString::fromUtf8(*bytes)); // checked as if typed
     else
-        m_status->setText(error);
+        m_status->setText(bytes.error().toString());
 }
 
 void RulesEditor::save()

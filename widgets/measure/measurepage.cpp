@@ -581,9 +581,12 @@ void MeasurePage::updateCounts()
 
 bool MeasurePage::loadPipeline(const QString& path, QString* error)
 {
-    const std::optional<Pipeline> p = Pipeline::load(path, error);
-    if (!p)
+    const Result<Pipeline> p = Pipeline::readFile(path);
+    if (!p) {
+        if (error)
+            *error = p.error().toString();
         return false;
+    }
     m_pipelineFile = path;
     m_measure->setPipeline(*p);
     onPipelineChanged();

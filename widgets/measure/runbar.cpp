@@ -61,7 +61,7 @@ RunBar::RunBar(MeasureSession* measure, QWidget* parent)
     updateState();
 }
 
-bool RunBar::startRecording(const QString& path, const QString& name, const QString& notes, QString* error)
+Result<void> RunBar::startRecording(const QString& path, const QString& name, const QString& notes)
 {
     RunInfo info;
     info.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
@@ -71,37 +71,36 @@ bool RunBar::startRecording(const QString& path, const QString& name, const QStr
         info.bridgeConfigPath = configPath;
         info.bridgeConfig = text;
     }
-    if (!m_measure->startRecording(path, info, error))
-        return false;
+    if (Result<void> started = m_measure->startRecording(path, info); !started)
+        return started;
     m_recordingName = info.name;
     m_recordingSince = QDateTime::currentDateTime();
     updateState();
-    return true;
+    return {};
 }
 
-bool RunBar::stopRecording(QString* error)
+Result<void> RunBar::stopRecording()
 {
     const QString path = m_measure->recorder()->path();
-    if (!m_measure->stopRecording(error))
-        return false;
+    if (Result<void> stopped = m_measure->stopRecording(); !stopped)
+        return stopped;
     updateState();
     emit runRecorded(path);
-    return true;
+    return {};
 }
 
 void RunBar::toggleRecording()
 {
-    QString error;
     if (m_measure->isRecording()) {
-        if (!stopRecording(&error) && !error.isEmpty())
-            QMessageBox::warning(this, tr("Stop Recording"), error);
+        if (const Result<void> stopped = stopRecording(); !stopped && !stopped.error().toString().isEmpty())
+            QMessageBox::warning(this, tr("Stop Recording"), stopped.error().toString());
         return;
     }
     RecordDialog dialog(this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    if (!startRecording(dialog.path(), dialog.name(), dialog.notes(), &error))
-        QMessageBox::warning(this, tr("Record a Run"), error);
+    if (const Result<void> started = startRecording(dialog.path(), dialog.name(), dialog.notes()); !started)
+        QMessageBox::warning(this, tr("Record a Run"), started.error().toString());
 }
 
 bool RunBar::openRun(const QString& path, QString* error)
@@ -139,22 +138,18 @@ bool RunBar::openRun(const QString& path, QString* error)
     return true;
 }
 
-bool RunBar::saveRunAs(const QString& path, QString* error)
+Result<void> RunBar::saveRunAs(const QString& path)
 {
-    if (!m_shown) {
-        if (error)
-            *error = tr("no run on screen");
-        return false;
-    }
+    if (!m_shown)
+        return LocatedError {tr("no run on screen")};
     QProgressDialog progress(tr("Writing %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 100, this);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(500);
-    const bool ok = RunFile::write(path, *m_shown, error, [&progress](int percent) {
+    return RunFile::write(path, *m_shown, [&progress](int percent) {
         progress.setValue(percent);
         QApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
         return !progress.wasCanceled();
     });
-    return ok;
 }
 
 void RunBar::backToLive()
@@ -186,9 +181,8 @@ void RunBar::chooseSaveRun()
                                                       tr("Bridgescope runs (*.%1)").arg(RunFile::suffix()));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!saveRunAs(path, &error))
-        QMessageBox::warning(this, tr("Save Run As"), error);
+    if (const Result<void> saved = saveRunAs(path); !saved)
+        QMessageBox::warning(this, tr("Save Run As"), saved.error().toString());
 }
 
 QString RunBar::waitingText() const

@@ -26,13 +26,12 @@ public:
     /// Where the open bridge config comes from (path and text), kept with each run.
     void setBridgeConfigProvider(ConfigProvider provider) { m_config = std::move(provider); }
 
-    bool startRecording(const QString& path, const QString& name, const QString& notes,
-                        QString* error = nullptr);
-    bool stopRecording(QString* error = nullptr);
+    Result<void> startRecording(const QString& path, const QString& name, const QString& notes);
+    Result<void> stopRecording();
     /// Opens a run, suite CSV or bag (with a progress dialog when it takes long). When the user
     /// cancels, it returns false and leaves `error` empty.
     bool openRun(const QString& path, QString* error = nullptr);
-    bool saveRunAs(const QString& path, QString* error = nullptr);
+    Result<void> saveRunAs(const QString& path);
     void backToLive();
 
     QPushButton* recordButton() const { return m_record; }

@@ -231,9 +231,13 @@ std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
     ReportJob::Request r;
     r.inputs = inputs();
     if (!m_pipeline->text().trimmed().isEmpty()) {
-        r.pipeline = Pipeline::load(m_pipeline->text().trimmed(), error);
-        if (!r.pipeline)
+        Result<Pipeline> pipeline = Pipeline::readFile(m_pipeline->text().trimmed());
+        if (!pipeline) {
+            if (error)
+                *error = pipeline.error().toString();
             return std::nullopt;
+        }
+        r.pipeline = std::move(pipeline).value();
     }
     r.options.window = m_window->value();
     r.options.join = m_join->isChecked();
