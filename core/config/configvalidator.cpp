@@ -86,87 +86,118 @@ public:
 
     void checkTypedValues(OptionScope scope, const OptionBlock& block, const Mapping* m)
     {
-        const bool ros2 = m_cfg.layout == ConfigLayout::Ros2;
         const QString where = m ? describe(*m) : OptionSchema::scopeKey(scope);
-        for (const QString& path : block.values.paths()) {
-            const OptionSpec* spec = OptionSchema::find(scope, path);
-            if (!spec)
-                continue;
-            const QString text = block.values.text(path);
-            if (YamlText::isSubstitution(text)) {
-                if (ros2)
-                    add(Severity::Warning, u"substitution-in-ros2"_s, m, scope, path,
-                        tr("%1: '%2' is the roslaunch substitution %3, which ROS 2 parameter files do not "
-                           "substitute: the ROS 2 mqtt_client reads it as it stands.")
-                            .arg(where, path, text),
-                        tr("Write the value itself, or keep the config in the ROS 1 layout for roslaunch."));
-                continue;
-            }
-            if (spec->ros2Only && m_cfg.layout == ConfigLayout::Ros1) {
-                add(Severity::Warning, u"ros2-only-option"_s, m, scope, path,
-                    tr("%1: '%2' is only understood by the ROS 2 mqtt_client (2.3 and later); the ROS 1 "
-                       "mqtt_client ignores it.")
-                        .arg(where, path),
-                    tr("Remove '%1' or save the config in the ROS 2 layout.").arg(path));
-            }
-            if (path == u"advanced.mqtt.qos"_s || path == u"last_will.qos"_s) {
-                bool ok = false;
-                const int qos = text.toInt(&ok);
-                if (!ok || qos < 0 || qos > 2) {
-                    add(Severity::Error, u"qos-range"_s, m, scope, path,
-                        tr("%1: QoS '%2' is not 0, 1 or 2.").arg(where, text),
-                        tr("Set %1 to 0 (at most once), 1 (at least once) or 2 (exactly once).").arg(path));
-                }
-                continue;
-            }
-            if (!parsesAs(spec->kind, text, *spec)) {
-                QString expected;
-                switch (spec->kind) {
-                case OptionKind::Int:
-                    expected = tr("a whole number");
-                    break;
-                case OptionKind::Double:
-                    expected = tr("a number");
-                    break;
-                case OptionKind::Bool:
-                    expected = tr("true or false");
-                    break;
-                case OptionKind::Enum:
-                    expected = spec->enumValues.join(u", "_s);
-                    break;
-                default:
-                    break;
-                }
-                add(Severity::Error, u"invalid-value"_s, m, scope, path,
-                    tr("%1: '%2' is '%3', which is not %4.").arg(where, path, text, expected),
-                    tr("Write %1 as %2.").arg(path, expected));
-                continue;
-            }
-            if (spec->kind == OptionKind::Int && spec->maximum > spec->minimum) {
-                const qlonglong v = text.toLongLong();
-                if (v < spec->minimum || v > spec->maximum) {
-                    add(Severity::Error, u"out-of-range"_s, m, scope, path,
-                        tr("%1: '%2' is %3, outside %4..%5.")
-                            .arg(where, path, text)
-                            .arg(spec->minimum)
-                            .arg(spec->maximum),
-                        tr("Choose a value from %1 to %2.").arg(spec->minimum).arg(spec->maximum));
-                }
-            } else if (spec->kind == OptionKind::Int && text.toLongLong() < 0) {
-                add(Severity::Error, u"out-of-range"_s, m, scope, path,
-                    tr("%1: '%2' must not be negative.").arg(where, path), tr("Use 0 or a positive number."));
-            }
-            // A string that the parameter server would read as a number or boolean.
-            if ((spec->kind == OptionKind::String || spec->kind == OptionKind::Path) && !spec->isTopic()
-                && !block.source.quoted.contains(path) && block.source.keys.contains(path)
-                && YamlText::needsQuotes(text) && !text.isEmpty()) {
-                add(Severity::Warning, u"string-read-as-number"_s, m, scope, path,
-                    tr("%1: '%2: %3' is read as a number or boolean, but mqtt_client expects text%4.")
-                        .arg(where, path, text, ros2 ? tr(" (ROS 2 rejects the parameter)") : QString()),
-                    tr("Quote it: %1: \"%2\".").arg(path.section(u'.', -1), text));
-            }
+        for (const QString& path : block.values.paths())
+            if (const OptionSpec* spec = OptionSchema::find(scope, path))
+                checkTypedValue({scope, block, m, where}, path, *spec);
+        checkMisspeltKeys(scope, block, m, where);
+    }
+
+    /// Where a value is checked: its block, its mapping (none for the broker and the bridge's
+    /// defaults) and how the messages name it.
+    struct ValueSite
+    {
+        OptionScope scope;
+        const OptionBlock& block;
+        const Mapping* m;
+        QString where;
+    };
+
+    void checkTypedValue(const ValueSite& at, const QString& path, const OptionSpec& spec)
+    {
+        const QString text = at.block.values.text(path);
+        if (YamlText::isSubstitution(text)) {
+            if (m_cfg.layout == ConfigLayout::Ros2)
+                add(Severity::Warning, u"substitution-in-ros2"_s, at.m, at.scope, path,
+                    tr("%1: '%2' is the roslaunch substitution %3, which ROS 2 parameter files do not "
+                       "substitute: the ROS 2 mqtt_client reads it as it stands.")
+                        .arg(at.where, path, text),
+                    tr("Write the value itself, or keep the config in the ROS 1 layout for roslaunch."));
+            return;
         }
-        // Unknown keys that look like a misspelt option.
+        if (spec.ros2Only && m_cfg.layout == ConfigLayout::Ros1) {
+            add(Severity::Warning, u"ros2-only-option"_s, at.m, at.scope, path,
+                tr("%1: '%2' is only understood by the ROS 2 mqtt_client (2.3 and later); the ROS 1 "
+                   "mqtt_client ignores it.")
+                    .arg(at.where, path),
+                tr("Remove '%1' or save the config in the ROS 2 layout.").arg(path));
+        }
+        if (path == u"advanced.mqtt.qos"_s || path == u"last_will.qos"_s) {
+            bool ok = false;
+            const int qos = text.toInt(&ok);
+            if (!ok || qos < 0 || qos > 2) {
+                add(Severity::Error, u"qos-range"_s, at.m, at.scope, path,
+                    tr("%1: QoS '%2' is not 0, 1 or 2.").arg(at.where, text),
+                    tr("Set %1 to 0 (at most once), 1 (at least once) or 2 (exactly once).").arg(path));
+            }
+            return;
+        }
+        if (!parsesAs(spec.kind, text, spec)) {
+            const QString expected = expectedText(spec);
+            add(Severity::Error, u"invalid-value"_s, at.m, at.scope, path,
+                tr("%1: '%2' is '%3', which is not %4.").arg(at.where, path, text, expected),
+                tr("Write %1 as %2.").arg(path, expected));
+            return;
+        }
+        checkRange(at, path, spec, text);
+        checkReadAsNumber(at, path, spec, text);
+    }
+
+    /// What a value of `spec` is written as, for the message of one that is not.
+    static QString expectedText(const OptionSpec& spec)
+    {
+        switch (spec.kind) {
+        case OptionKind::Int:
+            return tr("a whole number");
+        case OptionKind::Double:
+            return tr("a number");
+        case OptionKind::Bool:
+            return tr("true or false");
+        case OptionKind::Enum:
+            return spec.enumValues.join(u", "_s);
+        default:
+            return {};
+        }
+    }
+
+    void checkRange(const ValueSite& at, const QString& path, const OptionSpec& spec, const QString& text)
+    {
+        if (spec.kind == OptionKind::Int && spec.maximum > spec.minimum) {
+            const qlonglong v = text.toLongLong();
+            if (v < spec.minimum || v > spec.maximum) {
+                add(Severity::Error, u"out-of-range"_s, at.m, at.scope, path,
+                    tr("%1: '%2' is %3, outside %4..%5.")
+                        .arg(at.where, path, text)
+                        .arg(spec.minimum)
+                        .arg(spec.maximum),
+                    tr("Choose a value from %1 to %2.").arg(spec.minimum).arg(spec.maximum));
+            }
+        } else if (spec.kind == OptionKind::Int && text.toLongLong() < 0) {
+            add(Severity::Error, u"out-of-range"_s, at.m, at.scope, path,
+                tr("%1: '%2' must not be negative.").arg(at.where, path), tr("Use 0 or a positive number."));
+        }
+    }
+
+    /// A string that the parameter server would read as a number or boolean.
+    void checkReadAsNumber(const ValueSite& at, const QString& path, const OptionSpec& spec,
+                           const QString& text)
+    {
+        if ((spec.kind == OptionKind::String || spec.kind == OptionKind::Path) && !spec.isTopic()
+            && !at.block.source.quoted.contains(path) && at.block.source.keys.contains(path)
+            && YamlText::needsQuotes(text) && !text.isEmpty()) {
+            add(Severity::Warning, u"string-read-as-number"_s, at.m, at.scope, path,
+                tr("%1: '%2: %3' is read as a number or boolean, but mqtt_client expects text%4.")
+                    .arg(at.where, path, text,
+                         m_cfg.layout == ConfigLayout::Ros2 ? tr(" (ROS 2 rejects the parameter)")
+                                                            : QString()),
+                tr("Quote it: %1: \"%2\".").arg(path.section(u'.', -1), text));
+        }
+    }
+
+    /// Unknown keys that look like a misspelt option.
+    void checkMisspeltKeys(OptionScope scope, const OptionBlock& block, const Mapping* m,
+                           const QString& where)
+    {
         for (const ExtraValue& extra : block.extras) {
             const QString path = extra.path.join(u'.');
             QString best;

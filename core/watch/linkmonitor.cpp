@@ -101,7 +101,7 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         }
         t->def = def;
         if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
-            t->rules = m_rules.forLink(def.key());
+            t->rules = rulesFor(def);
         if (const auto a = m_announced.constFind(def.mqttTopic); a != m_announced.cend())
             applyAnnouncement(*t, *a); // announced (and retained) before the link was watched
         m_tracks.push_back(std::move(t));
@@ -113,7 +113,13 @@ void LinkMonitor::setRules(const WatchRules& rules)
 {
     m_rules = rules;
     for (auto& t : m_tracks)
-        t->rules = m_rules.forLink(t->def.key());
+        t->rules = rulesFor(t->def);
+}
+
+LinkRules LinkMonitor::rulesFor(const LinkDef& def)
+{
+    ++m_ruleLookups;
+    return m_rules.forLink(def.key());
 }
 
 void LinkMonitor::index()

@@ -41,6 +41,9 @@ public:
     void setLinks(const QList<LinkDef>& links, qint64 nowNs);
     void setRules(const WatchRules& rules);
     const WatchRules& rules() const { return m_rules; }
+    /// How many times a link's rules were looked up (every override matched against it): once per
+    /// link that came or changed in setLinks(), and once per link in setRules(). The bounded work.
+    quint64 ruleLookups() const { return m_ruleLookups; }
 
     int linkCount() const;
     const LinkDef& link(int index) const;
@@ -129,7 +132,10 @@ private:
     void indexPipeline();
     static void applyAnnouncement(Track& track, const AnnouncedType& type);
 
+    LinkRules rulesFor(const LinkDef& def);
+
     WatchRules m_rules;
+    quint64 m_ruleLookups = 0;
     std::vector<std::unique_ptr<Track>> m_tracks;
     QHash<QString, QList<int>> m_byMqtt;
     QHash<QString, QList<int>> m_byRos;

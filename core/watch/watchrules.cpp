@@ -206,8 +206,9 @@ bool sameWithAnyChar(QStringView pattern, QStringView text)
 /// '*' matches any run of characters, '/' included; '?' one character; an empty text nothing.
 /// The parts before the first and after the last '*' are compared in place first (most patterns
 /// are "/prefix/*" or "*suffix": settled without looking at the rest of a long name); between them,
-/// greedy, going back only to the last '*'. No allocation; at most |pattern| × |text| steps.
-bool glob(QStringView pattern, QStringView text)
+/// greedy, going back only to the last '*'. No allocation; at most |pattern| × |text| steps, which
+/// go to `steps`.
+bool glob(QStringView pattern, QStringView text, qint64& steps)
 {
     if (text.isEmpty())
         return false;
@@ -223,6 +224,7 @@ bool glob(QStringView pattern, QStringView text)
     text = text.mid(first, text.size() - first - tail);
     qsizetype p = 0, t = 0, star = -1, resume = 0;
     while (t < text.size()) {
+        ++steps;
         if (p < pattern.size() && pattern[p] == u'*') {
             star = p++;
             resume = t;
@@ -242,14 +244,16 @@ bool glob(QStringView pattern, QStringView text)
 }
 } // namespace
 
-bool WatchRules::matches(const QString& pattern, const LinkKey& key)
+bool WatchRules::matches(const QString& pattern, const LinkKey& key, qint64* steps)
 {
+    qint64 ignored = 0;
+    qint64& counted = steps ? *steps : ignored;
     const QStringView p(pattern);
     if (p.startsWith(u"client:"))
-        return glob(p.mid(7), key.client);
+        return glob(p.mid(7), key.client, counted);
     if (p.startsWith(u"config:"))
-        return glob(p.mid(7), key.config);
-    return glob(p, key.rosTopic) || glob(p, key.mqttTopic);
+        return glob(p.mid(7), key.config, counted);
+    return glob(p, key.rosTopic, counted) || glob(p, key.mqttTopic, counted);
 }
 
 LinkRules WatchRules::forLink(const LinkKey& key) const

@@ -92,7 +92,9 @@ public:
     QByteArray toYaml() const;
     /// The defaults with every matching override applied in order.
     LinkRules forLink(const LinkKey& key) const;
-    static bool matches(const QString& pattern, const LinkKey& key);
+    /// Whether the glob `pattern` matches the link; `steps` (when given) grows by the steps the
+    /// match took, at most |pattern| × |name|.
+    static bool matches(const QString& pattern, const LinkKey& key, qint64* steps = nullptr);
 
 private:
     static Status readOverrides(const YAML::Node& links, QList<Override>* out);

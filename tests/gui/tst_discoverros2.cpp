@@ -209,7 +209,7 @@ private slots:
         QTableView* view = page.ros2View();
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/steady"_s) >= 0, 15000);
         RtpsCorpus::send(domain, RtpsCorpus::load(u"fastdds"_s), 500);
-        QTest::qWait(500);
+        QTest::qWait(500); // the stimulus: the child has half a second to choke on the corpus
         QVERIFY(!page.ros2Status()->text().contains(u"restarted"_s));
         QVERIFY(DdsChild::kill(SIGSEGV) > 0);
         QTRY_VERIFY2_WITH_TIMEOUT(page.ros2Status()->text().contains(u"restarted"_s),
@@ -275,10 +275,11 @@ private slots:
         w.resize(1280, 800);
         w.pages()->setCurrentWidget(page);
         QTRY_VERIFY(rosList->rowCount() >= 3);
-        QTest::qWait(300); // the columns fit themselves 100 ms after a change
+        // the columns fit themselves 100 ms after a change: wait for the fit
         for (int column : {int(RosTopicTree::TopicColumn), int(RosTopicTree::TypeColumn)}) {
-            const QString problem = treeNamesShownProblem(page->rosView(), column, 3);
-            QVERIFY2(problem.isEmpty(), qPrintable(problem));
+            QString problem;
+            QTRY_VERIFY2_WITH_TIMEOUT((problem = treeNamesShownProblem(page->rosView(), column, 3)).isEmpty(),
+                                      qPrintable(problem), 5000);
         }
         // the node leaves: its topics are missing from the graph
         talker.terminate();

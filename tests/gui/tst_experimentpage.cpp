@@ -5,6 +5,7 @@
 // page, the report exported, Resume of a finished folder, and Stop with clean-up.
 #include "app/gui/mainwindow.h"
 #include "experiment/experimentreport.h"
+#include "exportcheck.h"
 #include "latency/latencyseriesset.h"
 #include "resulttext.h"
 #include "widgets/common/ecdfchart.h"
@@ -12,8 +13,12 @@
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
 
+#include <algorithm>
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QProgressBar>
@@ -23,9 +28,9 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QTextDocument>
 #include <QTextDocumentFragment>
-#include <QTextBrowser>
 
 using namespace Qt::StringLiterals;
 
@@ -34,6 +39,57 @@ class TestExperimentPage : public QObject
     Q_OBJECT
 
     QTemporaryDir m_dir;
+
+    /// What checkExports() reads: an exported report's text.
+    QString exported(const QString& name) const
+    {
+        QFile f(m_dir.filePath(name));
+        return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+    }
+
+    /// The report exported in every format holds the two cells of the qos factor, each format as
+    /// it is written; the Markdown links its figure, an SVG beside it.
+    void checkExports() const
+    {
+        const QStringList ids {u"001-qos-0"_s, u"002-qos-1"_s};
+        const QString md = exported(u"r.md"_s);
+        QVERIFY2(md.startsWith(u"# "_s) && md.contains(u"## qos"_s) && md.contains(u"](r-qos-ecdf.svg)"_s)
+                     && md.contains(ids[0]) && md.contains(ids[1]),
+                 qPrintable(md));
+        QString problem = ExportCheck::svgProblem(m_dir.filePath(u"r-qos-ecdf.svg"_s), 10, u"qos"_s);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        problem = ExportCheck::pdfProblem(m_dir.filePath(u"r.pdf"_s));
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        const QString html = exported(u"r.html"_s);
+        QVERIFY2(html.startsWith(u"<!DOCTYPE html>"_s) && html.endsWith(u"</html>\n"_s)
+                     && html.contains(u"<svg"_s) && html.contains(ids[0]) && html.contains(ids[1]),
+                 qPrintable(html.left(2000)));
+        const QString tex = exported(u"r.tex"_s);
+        QVERIFY2(tex.contains(u"\\begin{table}"_s)
+                     && tex.count(u"\\begin{table}"_s) == tex.count(u"\\end{table}"_s)
+                     && tex.contains(u"qos"_s),
+                 qPrintable(tex));
+        // CSV: a row per cell and stage group, every row as many fields as the header.
+        const QStringList rows = exported(u"r.csv"_s).split(u'\n', Qt::SkipEmptyParts);
+        QVERIFY2(rows.size() >= 3 && rows[0].startsWith(u"cell,levels,state,group,count,mean_ms"_s),
+                 qPrintable(rows.join(u'\n')));
+        for (const QString& id : ids) {
+            const auto ofCell = std::count_if(rows.begin(), rows.end(), [&](const QString& r) {
+                return r.startsWith(id + u","_s) && r.contains(u",complete,"_s)
+                    && r.count(u',') == rows[0].count(u',');
+            });
+            QVERIFY2(ofCell >= 1, qPrintable(id + u": "_s + rows.join(u'\n')));
+        }
+        const QJsonObject json = QJsonDocument::fromJson(exported(u"r.json"_s).toUtf8()).object();
+        const QJsonArray cells = json.value(u"cells"_s).toArray();
+        QCOMPARE(cells.size(), 2);
+        for (int i = 0; i < 2; ++i) {
+            QCOMPARE(cells[i].toObject().value(u"id"_s).toString(), ids[i]);
+            QCOMPARE(cells[i].toObject().value(u"state"_s).toString(), u"complete"_s);
+        }
+        QCOMPARE(json.value(u"tables"_s).toArray().first().toObject().value(u"factor"_s).toString(),
+                 u"qos"_s);
+    }
 
     static QString stateOf(const ExperimentPage& page, int row)
     {
@@ -152,13 +208,9 @@ private slots:
         // The report in every format; Markdown with its figure beside it.
         for (const QString& name : {u"r.md"_s, u"r.pdf"_s, u"r.html"_s, u"r.tex"_s, u"r.csv"_s, u"r.json"_s})
             QVERIFY2(page.exportReport(m_dir.filePath(name), &error), qPrintable(name + u": "_s + error));
-        QFile md(m_dir.filePath(u"r.md"_s));
-        QVERIFY(md.open(QIODevice::ReadOnly));
-        QVERIFY(md.readAll().contains("](r-qos-ecdf.svg)"));
-        QVERIFY(QFile::exists(m_dir.filePath(u"r-qos-ecdf.svg"_s)));
-        QFile pdf(m_dir.filePath(u"r.pdf"_s));
-        QVERIFY(pdf.open(QIODevice::ReadOnly));
-        QVERIFY(pdf.read(5) == "%PDF-");
+        checkExports();
+        if (QTest::currentTestFailed())
+            return;
         QVERIFY(!page.exportReport(m_dir.filePath(u"r.doc"_s), &error));
 
         // Run again into the same folder is refused; Resume finds nothing left to do.

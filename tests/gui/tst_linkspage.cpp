@@ -257,7 +257,8 @@ private slots:
         QCOMPARE(page->planLabel()->text(), error);
         QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Unchecked);
         QCOMPARE(page->linkModel()->rowCount(), 0);
-        QTest::qWait(2000);
+        QTest::qWait(
+            2000); // not a sleep to synchronise: the time in which a refused watch would have subscribed
         QVERIFY(masterTopics(servers.rosMasterUri(), u"big"_s).known.isEmpty());
         pub.terminate();
         pub.waitForFinished(5000);
@@ -388,18 +389,24 @@ private slots:
             return false;
         };
         QTRY_VERIFY_WITH_TIMEOUT(sourceStopped(), 15000); // the links fed by the dead bridge
-        QTest::qWait(2 * ColumnFitter::kGrowMs);
+        // The columns follow their text within ColumnFitter::kGrowMs: wait until every cell fits.
         const QStyleOptionViewItem option = cellOption(table);
-        for (int r = 0; r < table->model()->rowCount(); ++r)
-            for (int c :
-                 {int(LinkModel::StateColumn), int(LinkModel::LossColumn), int(LinkModel::P99Column)}) {
-                const QModelIndex index = table->model()->index(r, c);
-                const int needs = table->itemDelegateForIndex(index)->sizeHint(option, index).width();
-                QVERIFY2(needs <= table->columnWidth(c),
-                         qPrintable(u"'%1' needs %2 px, has %3"_s.arg(index.data().toString())
-                                        .arg(needs)
-                                        .arg(table->columnWidth(c))));
-            }
+        const auto cutProblem = [&]() -> QString {
+            for (int r = 0; r < table->model()->rowCount(); ++r)
+                for (int c :
+                     {int(LinkModel::StateColumn), int(LinkModel::LossColumn), int(LinkModel::P99Column)}) {
+                    const QModelIndex index = table->model()->index(r, c);
+                    const int needs = table->itemDelegateForIndex(index)->sizeHint(option, index).width();
+                    if (needs > table->columnWidth(c))
+                        return u"'%1' needs %2 px, has %3"_s.arg(index.data().toString())
+                            .arg(needs)
+                            .arg(table->columnWidth(c));
+                }
+            return QString();
+        };
+        QString problem;
+        QTRY_VERIFY2_WITH_TIMEOUT((problem = cutProblem()).isEmpty(), qPrintable(problem),
+                                  4 * ColumnFitter::kGrowMs);
         QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
         QVERIFY2(noted(window.measure()->stopRecording(), &error), qPrintable(error));
         const std::optional<RunData> run = noted(RunFile::read(runPath), &error);

@@ -96,10 +96,14 @@ private slots:
         QCOMPARE(w.size(), QSize(1280, 800));
         MeasurePage* page = w.measurePage();
         QTRY_VERIFY_WITH_TIMEOUT(w.measure()->engine().samples() >= 20, 15000);
-        QTest::qWait(2 * MeasurePage::kRefreshMs);
 
         // Pinned: the total, round trip, one way and clock offset, each row whole in the window.
+        // The page refreshes every MeasurePage::kRefreshMs: wait until it shows them with figures.
         QTableView* summary = page->summaryView();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            summary->model()->rowCount() >= 4
+                && !summary->model()->index(0, LatencyStatsModel::MeanColumn).data().toString().isEmpty(),
+            4 * MeasurePage::kRefreshMs + 5000);
         QVERIFY(summary->isVisible());
         QStringList pinned;
         const QRect window = w.rect();
@@ -173,9 +177,9 @@ private slots:
         QCOMPARE(mark->count(), 1);
         QCOMPARE(mark->at(0).x(), hi);
         QVERIFY(std::abs(mark->at(0).y() - 200.0 / 201.0) < 1e-9);
-        QTest::qWait(50); // the legend lays its markers out on the next event loop pass
-        QVERIFY2(drawnTexts(chart.views().first()).contains(chart.beyondText(u"x"_s)),
-                 qPrintable(drawnTexts(chart.views().first()).join(u" | ")));
+        // The legend lays its markers out on a later event loop pass.
+        QTRY_VERIFY2(drawnTexts(chart.views().first()).contains(chart.beyondText(u"x"_s)),
+                     qPrintable(drawnTexts(chart.views().first()).join(u" | ")));
         if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
             chart.grab().save(shots + u"/ecdf-outlier.png"_s);
         // Ticks on round numbers.
@@ -214,9 +218,13 @@ private slots:
         for (int i = 0; i < 60; ++i)
             samples << 9.0 + 1.26 * std::sin(i / 5.0) * std::sin(i / 5.0); // peaks at 10.26: once 11.8
         chart.setSamples(samples, u"Hz"_s);
-        QTest::qWait(50);
+        // The axes lay their labels out on a later event loop pass: wait for the new range's labels.
+        const auto laidOut = [&] {
+            const QStringList shown = numericTexts(&chart);
+            return shown.size() >= 6 && (shown.contains(u"10.0"_s) || shown.contains(u"10"_s));
+        };
+        QTRY_VERIFY2(laidOut(), qPrintable(numericTexts(&chart).join(u" | ")));
         const QStringList labels = numericTexts(&chart);
-        QVERIFY2(labels.size() >= 6, qPrintable(labels.join(u" | ")));
         for (const QString& label : labels)
             QVERIFY2(isRoundTick(label, 2.5) || isRoundTick(label, 20), qPrintable(labels.join(u" | ")));
         // The same decimals in every label of an axis: "10.0" beside "7.5", never "10" beside "7.5".

@@ -3,6 +3,8 @@
 // and go back to live, compare three suite CSV files on the Reports page (three columns), export
 // every kind of file, and save and copy the chart.
 #include "app/gui/mainwindow.h"
+#include "exportcheck.h"
+#include "record/runfile.h"
 #include "record/suitecsv.h"
 #include "resulttext.h"
 #include "session/measuresession.h"
@@ -33,7 +35,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
-#include <QXmlStreamReader>
 
 using namespace Qt::StringLiterals;
 
@@ -186,16 +187,8 @@ private slots:
         QVERIFY2(page->saveChart(svg, &error), qPrintable(error));
         const QImage image(png);
         QVERIFY(!image.isNull() && image.width() > 100);
-        QFile svgFile(svg);
-        QVERIFY(svgFile.open(QIODevice::ReadOnly));
-        QXmlStreamReader xml(&svgFile);
-        int elements = 0;
-        bool isSvg = false;
-        while (!xml.atEnd())
-            if (xml.readNext() == QXmlStreamReader::StartElement && elements++ == 0)
-                isSvg = xml.name() == u"svg"_s;
-        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
-        QVERIFY(isSvg && elements > 10);
+        const QString svgProblem = ExportCheck::svgProblem(svg, 11);
+        QVERIFY2(svgProblem.isEmpty(), qPrintable(svgProblem));
         QVERIFY(!page->saveChart(m_dir.filePath(u"chart.bmpx"_s), &error));
         page->chart()->copyToClipboard();
         QVERIFY(!QGuiApplication::clipboard()->image().isNull());
@@ -203,7 +196,20 @@ private slots:
         // Save As of a shown run writes a copy that opens.
         const QString copy = m_dir.filePath(u"copy.bsrun"_s);
         QVERIFY2(noted(bar->saveRunAs(copy), &error), qPrintable(error));
-        QVERIFY(QFile::exists(copy));
+        const std::optional<RunData> original = noted(RunFile::read(path), &error);
+        QVERIFY2(original, qPrintable(error));
+        const std::optional<RunData> copied = noted(RunFile::read(copy), &error);
+        QVERIFY2(copied, qPrintable(error));
+        QCOMPARE(copied->info.name, u"gui run"_s);
+        QCOMPARE(copied->info.notes, u"from the test"_s);
+        QCOMPARE(copied->topics, original->topics);
+        QCOMPARE(qint64(copied->stamps.size()), qint64(original->stamps.size()));
+        QVERIFY(copied->stamps.size() >= 3 * 150); // every stamp of 150 samples on three topics
+        for (std::size_t i = 0; i < copied->stamps.size(); ++i)
+            QVERIFY(copied->stamps[i].topic == original->stamps[i].topic
+                    && copied->stamps[i].sampleNs == original->stamps[i].sampleNs
+                    && copied->stamps[i].timeNs == original->stamps[i].timeNs
+                    && copied->stamps[i].receivedNs == original->stamps[i].receivedNs);
 
         bar->backToLive();
         QVERIFY(!w.measure()->isShowingRun());

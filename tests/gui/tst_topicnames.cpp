@@ -64,12 +64,8 @@ private:
         // The columns fit themselves 100 ms after a change and figures grow once a second: on a
         // loaded machine the last fit may still be on its way.
         QString problem;
-        for (int attempt = 0; attempt < 30; ++attempt) {
-            problem = namesShownProblem(view, column, minimumRows);
-            if (problem.isEmpty())
-                return;
-            QTest::qWait(100);
-        }
+        (void)QTest::qWaitFor(
+            [&] { return (problem = namesShownProblem(view, column, minimumRows)).isEmpty(); }, 3000);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
@@ -99,12 +95,7 @@ private:
         QString problem;
         bool roomy = false;
         // The fitter sizes the columns 100 ms after a change, and figures grow once a second.
-        for (int attempt = 0; attempt < 30; ++attempt) {
-            problem = cutWithRoomProblem(view, &roomy);
-            if (problem.isEmpty())
-                break;
-            QTest::qWait(100);
-        }
+        (void)QTest::qWaitFor([&] { return (problem = cutWithRoomProblem(view, &roomy)).isEmpty(); }, 3000);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
         if (roomy)
             m_roomy << view->objectName();
@@ -120,11 +111,9 @@ private:
     {
         MainWindow* w = m_window.get();
         w->pages()->setCurrentWidget(w->discoverPage());
-        QTest::qWait(300); // the columns fit themselves 100 ms after a change
         checkNames(w->discoverPage()->rosView(), RosTopicModel::TopicColumn, 19);
         checkNames(w->discoverPage()->rosView(), RosTopicModel::TypeColumn, 19);
         w->pages()->setCurrentWidget(w->mapPage());
-        QTest::qWait(300);
         // The Map's ROS topics are a namespace tree: every row's own segment whole.
         for (int column : {int(RosTopicTree::TopicColumn), int(RosTopicTree::TypeColumn)}) {
             QString problem;
@@ -147,7 +136,6 @@ private:
                      qPrintable(u"%1 in %2 px"_s.arg(edit->text()).arg(edit->width())));
         }
         w->pages()->setCurrentWidget(w->measurePage());
-        QTest::qWait(300);
         checkNames(w->measurePage()->pipelineView(), PipelineModel::TopicColumn, 8);
         checkPrefixSaid(w->measurePage()->pipelineView(), PipelineModel::TopicColumn);
         // The stamp topics seen: a list, whose caption says the prefix its rows leave out.
@@ -166,18 +154,14 @@ private:
                 QVERIFY(!seenNames->displayedText(seen->model()->index(r, 0)).startsWith(prefix));
         }
         w->pages()->setCurrentWidget(w->linksPage());
-        QTest::qWait(300);
         checkNames(w->linksPage()->linkView(), LinkModel::SourceColumn, 4);
         checkNames(w->linksPage()->linkView(), LinkModel::DestinationColumn, 4);
         checkNotCutWithRoom(w->linksPage()->linkView());
         w->pages()->setCurrentWidget(w->discoverPage());
-        QTest::qWait(300);
         checkNotCutWithRoom(w->discoverPage()->rosView());
         w->pages()->setCurrentWidget(w->mapPage());
-        QTest::qWait(300);
         checkNotCutWithRoom(w->mapPage()->editor()->table());
         w->pages()->setCurrentWidget(w->measurePage());
-        QTest::qWait(300);
         checkNotCutWithRoom(w->measurePage()->pipelineView());
     }
 
@@ -311,16 +295,26 @@ private slots:
             return n;
         };
         QTRY_VERIFY_WITH_TIMEOUT(healthy() == model->rowCount(), 20000);
-        QTest::qWait(1500); // figures grow once a second
+        // Figures grow once a second and the column follows within ColumnFitter::kGrowMs: every
+        // row's health, as shown then, fits its column.
         const QStyleOptionViewItem option = cellOption(table);
+        const auto cutProblem = [&]() -> QString {
+            for (int r = 0; r < model->rowCount(); ++r) {
+                const QModelIndex index = model->index(r, MappingModel::HealthColumn);
+                const QString text = index.data().toString();
+                const int needs = table->itemDelegateForIndex(index)->sizeHint(option, index).width();
+                if (needs > table->columnWidth(MappingModel::HealthColumn))
+                    return u"%1 needs %2 px, has %3"_s.arg(text).arg(needs).arg(
+                        table->columnWidth(MappingModel::HealthColumn));
+            }
+            return QString();
+        };
+        QString problem;
+        QTRY_VERIFY2_WITH_TIMEOUT((problem = cutProblem()).isEmpty(), qPrintable(problem), 5000);
         for (int r = 0; r < model->rowCount(); ++r) {
             const QModelIndex index = model->index(r, MappingModel::HealthColumn);
             const QString text = index.data().toString();
             QVERIFY2(text.count(u"Hz"_s) == 1 && text.contains(u'→'), qPrintable(text));
-            const int needs = table->itemDelegateForIndex(index)->sizeHint(option, index).width();
-            QVERIFY2(needs <= table->columnWidth(MappingModel::HealthColumn),
-                     qPrintable(u"%1 needs %2 px, has %3"_s.arg(text).arg(needs).arg(
-                         table->columnWidth(MappingModel::HealthColumn))));
             QVERIFY(index.data(Qt::ToolTipRole).toString().contains(u"arrive"_s)
                     || index.data(Qt::ToolTipRole).toString().contains(u"published"_s));
         }
@@ -335,20 +329,26 @@ private slots:
         QTRY_COMPARE(w->size(), QSize(1280, 800));
         w->pages()->setCurrentWidget(w->discoverPage());
         QTreeView* tree = w->discoverPage()->mqttView();
-        QTest::qWait(300);
         const QHeaderView* header = tree->header();
-        for (int c : {int(MqttTopicTree::BytesColumn), int(MqttTopicTree::QosColumn),
-                      int(MqttTopicTree::RetainedColumn), int(MqttTopicTree::MessagesColumn),
-                      int(MqttTopicTree::RateColumn)}) {
-            const QString title = tree->model()->headerData(c, Qt::Horizontal).toString();
-            QVERIFY2(!tree->isColumnHidden(c), qPrintable(title));
-            const int right = header->sectionViewportPosition(c) + header->sectionSize(c);
-            QVERIFY2(
-                right <= tree->viewport()->width(),
-                qPrintable(u"%1 ends at %2 of %3 px"_s.arg(title).arg(right).arg(tree->viewport()->width())));
-            QVERIFY2(header->sectionSize(c) >= header->fontMetrics().horizontalAdvance(title) + 8,
-                     qPrintable(title)); // its title whole
-        }
+        // The columns fit themselves shortly after the page shows: wait for the fit, then each
+        // figure column is shown, ends inside the viewport and has its title whole.
+        const auto columnProblem = [&]() -> QString {
+            for (int c : {int(MqttTopicTree::BytesColumn), int(MqttTopicTree::QosColumn),
+                          int(MqttTopicTree::RetainedColumn), int(MqttTopicTree::MessagesColumn),
+                          int(MqttTopicTree::RateColumn)}) {
+                const QString title = tree->model()->headerData(c, Qt::Horizontal).toString();
+                if (tree->isColumnHidden(c))
+                    return title + u" hidden"_s;
+                const int right = header->sectionViewportPosition(c) + header->sectionSize(c);
+                if (right > tree->viewport()->width())
+                    return u"%1 ends at %2 of %3 px"_s.arg(title).arg(right).arg(tree->viewport()->width());
+                if (header->sectionSize(c) < header->fontMetrics().horizontalAdvance(title) + 8)
+                    return title + u" cut"_s; // its title whole
+            }
+            return QString();
+        };
+        QString problem;
+        QTRY_VERIFY2_WITH_TIMEOUT((problem = columnProblem()).isEmpty(), qPrintable(problem), 5000);
         QVERIFY(!tree->isColumnHidden(MqttTopicTree::ValueColumn));
         const QModelIndex topic = ViewHelpers::find(tree->model(), u"benchmarking_suite/pointcloud"_s,
                                                     MqttTopicTree::FullTopicRole);

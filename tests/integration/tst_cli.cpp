@@ -19,11 +19,13 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSet>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -40,6 +42,25 @@ using Run = CliRun::Result;
 Run bridgescope(const QStringList& args, int timeoutMs = 20000)
 {
     return CliRun::bridgescope(args, timeoutMs);
+}
+
+/// What is wrong with `png` as a screenshot of the window: empty when it is an image the size of
+/// a window (the offscreen screen is 800x600, the window at most 1280x800) with something drawn in
+/// it, not one colour.
+QString screenshotProblem(const QString& png)
+{
+    const QImage image(png);
+    if (image.isNull())
+        return png + u" is not an image"_s;
+    if (image.width() < 600 || image.height() < 400 || image.width() > 1280 * 2 || image.height() > 800 * 2)
+        return u"%1 is %2x%3"_s.arg(png).arg(image.width()).arg(image.height());
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 3)
+        for (int x = 0; x < image.width(); x += 3)
+            colours.insert(image.pixel(x, y));
+    if (colours.size() < 16)
+        return u"%1 has %2 colours: nothing drawn"_s.arg(png).arg(colours.size());
+    return {};
 }
 
 QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& text)
@@ -386,6 +407,8 @@ private slots:
                          QString::number(domain), u"--ros-localhost-only"_s});
         qunsetenv("ROS_VERSION");
         QCOMPARE(r.exit, 0);
+        const QString problem = screenshotProblem(dir.filePath(u"w.png"_s));
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         QVERIFY2(r.err.contains(u"ROS 2 (ROS_VERSION=2), "_s + where), qPrintable(r.err));
     }
 
@@ -791,7 +814,8 @@ private slots:
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"--screenshot"_s, png, u"--after"_s, u"0.2"_s});
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitCode(), 0);
-        QVERIFY(QFile::exists(png));
+        const QString problem = screenshotProblem(png);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
     // Issue 40, point 10: a mistyped command or option is named with what was meant (exit 2), and
     // an option the window does not know is refused before a display is looked for.
@@ -874,7 +898,9 @@ private slots:
         };
         const auto [exit, err]
             = open(QStringLiteral(BRIDGESCOPE_SOURCE_DIR "/tests/fuzz/corpus/runfile/seed.bsrun"));
-        QVERIFY2(exit == 0 && QFile::exists(png), qPrintable(err));
+        QVERIFY2(exit == 0, qPrintable(err));
+        const QString problem = screenshotProblem(png);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         const QString damaged = writeFile(dir, u"damaged.bsrun"_s, "not a run file");
         const auto [damagedExit, damagedErr] = open(damaged);
         QCOMPARE(damagedExit, 2);

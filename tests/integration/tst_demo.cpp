@@ -326,16 +326,27 @@ private slots:
         QVERIFY(watch.waitForStarted(5000));
         QVERIFY(TestServers::waitForPort(port, 10000));
         // Four links, each with latency samples.
-        const auto latencies = [&] {
+        const auto latencyCounts = [&] {
             const QByteArray text = TestServers::httpGet(port, u"/metrics"_s);
-            int links = 0;
+            QList<double> counts;
             for (const QByteArray& line : text.split('\n'))
                 if (line.startsWith("bridgescope_link_latency_seconds_count{") && !line.endsWith(" 0"))
-                    ++links;
-            return links;
+                    counts << line.mid(line.lastIndexOf(' ') + 1).toDouble();
+            return counts;
         };
-        QTRY_COMPARE_WITH_TIMEOUT(latencies(), 4, 30000);
-        QTest::qWait(5000); // 50 samples more
+        QTRY_COMPARE_WITH_TIMEOUT(latencyCounts().size(), qsizetype(4), 30000);
+        // 50 samples more on every link before the bridge goes.
+        const QList<double> first = latencyCounts();
+        const auto fiftyMore = [&] {
+            const QList<double> now = latencyCounts();
+            if (now.size() != first.size())
+                return false;
+            for (qsizetype i = 0; i < now.size(); ++i)
+                if (now[i] < first[i] + 50)
+                    return false;
+            return true;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(fiftyMore(), 30000);
         qint64 vehicleBridge = 0;
         for (qint64 pid : lab.processIds()) {
             QFile cmdline(u"/proc/%1/cmdline"_s.arg(pid));
@@ -344,7 +355,11 @@ private slots:
         }
         QVERIFY(vehicleBridge > 0);
         signalProcess(vehicleBridge, SIGKILL);
-        QTest::qWait(8000);
+        // The watch sees the bridge down (then its event is in the run).
+        QTRY_COMPARE_WITH_TIMEOUT(TestServers::metricSample(TestServers::httpGet(port, u"/metrics"_s),
+                                                            u"bridgescope_bridge_up"_s,
+                                                            {u"mqtt_interface_vehicle"_s}),
+                                  0.0, 30000);
         watch.terminate();
         QVERIFY(watch.waitForFinished(15000));
         QCOMPARE(watch.exitCode(), 0);

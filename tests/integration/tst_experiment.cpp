@@ -5,6 +5,7 @@
 // their levels; a bridge command that exits at once fails its cell while a bridge started through
 // the command template works; and a link profile of 20 ms delay and 2 ms jitter on each bridge's
 // broker connection shows up in the crossing stages only.
+#include "exportcheck.h"
 #include "latency/latencyengine.h"
 #include "record/runfile.h"
 #include "report/report.h"
@@ -374,7 +375,8 @@ private slots:
         const QString text = QString::fromUtf8(mdFile.readAll());
         QVERIFY2(text.contains(u"](r-bridge-ecdf.svg)"_s), qPrintable(text));
         QVERIFY2(text.contains(u"| ROS 1 | complete |"_s), qPrintable(text)); // which ROS the cell ran on
-        QVERIFY(QFile::exists(out + u"/r-bridge-ecdf.svg"_s));
+        const QString svgProblem = ExportCheck::svgProblem(out + u"/r-bridge-ecdf.svg"_s, 10, u"bridge"_s);
+        QVERIFY2(svgProblem.isEmpty(), qPrintable(svgProblem));
         const qsizetype table = text.indexOf(u"## Per stage (Table I layout"_s);
         QVERIFY2(table >= 0, qPrintable(text));
         QStringList rows;
@@ -395,9 +397,8 @@ private slots:
                   {u"report"_s, out, u"--format"_s, u"pdf"_s, u"-o"_s, out + u"/r.pdf"_s});
         QVERIFY(pdf.waitForFinished(60000));
         QVERIFY2(pdf.exitCode() == 0, pdf.readAllStandardError().constData());
-        QFile pdfFile(out + u"/r.pdf"_s);
-        QVERIFY(pdfFile.open(QIODevice::ReadOnly));
-        QCOMPARE(pdfFile.read(5), QByteArray("%PDF-"));
+        const QString pdfProblem = ExportCheck::pdfProblem(out + u"/r.pdf"_s);
+        QVERIFY2(pdfProblem.isEmpty(), qPrintable(pdfProblem));
     }
 
     // The real mqtt_client publishes no interface stamps (only the suite's fork does): with the

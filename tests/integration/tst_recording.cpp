@@ -107,7 +107,11 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(measure.engine().samples(), 200, 60000);
         QTRY_VERIFY_WITH_TIMEOUT(measure.engine().indexOf(u"ext:/mqtt_client/latencies/lab"_s) >= 0, 10000);
         QVERIFY(pub->waitForFinished(20000));
-        QTest::qWait(300);
+        // Every latency the bridge reported has arrived, and every stamp went to the recorder.
+        const int reported = measure.engine().indexOf(u"ext:/mqtt_client/latencies/lab"_s);
+        QTRY_COMPARE_WITH_TIMEOUT(measure.engine().series(reported).totalCount(), qint64(200), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            measure.recorder()->committedStamps() + measure.recorder()->queuedStamps() == 800, 10000);
         QVERIFY2(noted(measure.stopRecording(), &error), qPrintable(error));
         QVERIFY(!QFile::exists(path + u"-wal"_s));
 
@@ -223,7 +227,7 @@ private slots:
         const QString path = m_dir.filePath(u"late.bsrun"_s);
         rec = recorder({u"--samples"_s, u"50"_s, u"-o"_s, path}, uri);
         QVERIFY(rec->waitForStarted());
-        QTest::qWait(1500);
+        QTest::qWait(1500); // the stimulus: the run starts with its master away for 1.5 s
         QVERIFY2(late.startRosMasterOnPort(port), qPrintable(late.errorString()));
         auto pub = publish(2000, 100, 1'700'300'000, &late);
         QVERIFY2(rec->waitForFinished(60000), qPrintable(QString::fromUtf8(rec->readAllStandardError())));
@@ -308,7 +312,7 @@ private slots:
                 return reported >= 1200; // a few seconds of stamps
             }(),
             60000);
-        QTest::qWait(600);
+        QTest::qWait(600); // the stimulus: killed between two commits, stamps still uncommitted
         const qint64 killedAt = wallNs();
         rec->kill(); // SIGKILL: no chance to flush or finish
         QVERIFY(rec->waitForFinished(10000));

@@ -5,10 +5,9 @@
 // what mqtt_client v2.5 writes, the expected bytes made with Fast CDR as its RMW serializes
 // (tests/support/mqttclientros2.h); its DDS side as the peer receives it; its node in
 // ros_discovery_info; its timestamp_topic_prefix stamps and ~/latencies.
-#include "signalprocess.h"
 #include "base/wallclock.h"
-#include "bridgelog.h"
 #include "bridge/referencebridge.h"
+#include "bridgelog.h"
 #include "ddschild.h"
 #include "messageinbox.h"
 #include "mqtt/mqttlink.h"
@@ -16,11 +15,13 @@
 #include "peakrss.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
+#include "signalprocess.h"
 #include "testservers.h"
 #include "wire/mqttclientwire.h"
 #include "wire/ros2definitions.h"
 #include "wire/rosmessage.h"
 
+#include <algorithm>
 #include <atomic>
 #include <QElapsedTimer>
 #include <QJsonDocument>
@@ -28,8 +29,8 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QTest>
 #include <QtEndian>
+#include <QTest>
 #include <signal.h>
 
 using namespace Qt::StringLiterals;
@@ -364,15 +365,23 @@ private slots:
         QElapsedTimer clock;
         clock.start();
         int sent = 0;
-        while (clock.elapsed() < 3000) {
+        while (clock.elapsed() < 3000) { // the stimulus: 3 s of flood towards a stopped DDS side
             flooder.send(u"flood/in"_s, big, 0, false);
             ++sent;
             QTest::qWait(5);
         }
-        QTest::qWait(500); // what the broker still had on its way
+        // what our client still held is with the broker (which hands QoS 0 on at once)
+        QTRY_COMPARE_WITH_TIMEOUT(flooder.queueCounts().heldBytes, qint64(0), 10000);
+        const auto received = [&] {
+            const QStringList lines = listener.lines();
+            return std::count_if(lines.begin(), lines.end(),
+                                 [](const QString& l) { return l.startsWith(u"recv /flood_in"_s); });
+        };
+        const auto receivedBefore = received();
         signalProcess(child, SIGCONT);
         signalProcess(listener.pid(), SIGCONT);
-        QTest::qWait(1000); // the child reads what waited in the pipe
+        // the child reads what waited in the pipe: the listener gets the writer's history (10) again
+        QTRY_VERIFY_WITH_TIMEOUT(received() >= receivedBefore + 10, 15000);
         const qint64 bridgeGrew = PeakRss::of(b->processId()) - bridgeBase;
         const qint64 childGrew = PeakRss::of(child) - childBase;
         qInfo("%d messages of 1 MiB; the bridge grew by %.1f MiB, its DDS child by %.1f MiB", sent,
@@ -405,7 +414,7 @@ private slots:
         QVERIFY(PeakRss::reset(b->processId()));
         const qint64 bridgeBase = PeakRss::of(b->processId());
         signalProcess(m_servers.mosquittoPid(), SIGSTOP);
-        QTest::qWait(3000);
+        QTest::qWait(3000); // the stimulus: the broker reads nothing for 3 s
         const qint64 bridgeGrew = PeakRss::of(b->processId()) - bridgeBase;
         signalProcess(m_servers.mosquittoPid(), SIGCONT);
         qInfo("the bridge grew by %.1f MiB", double(bridgeGrew) / (1 << 20));

@@ -154,7 +154,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(
             std::all_of(topics.begin(), topics.end(), [&](const QString& t) { return messages(t) >= 10; }),
             15000);
-        QTest::qWait(1500); // a steady rate over the window
+        // a steady rate over the window: 40 samples of /chatter, 2 s of its 20 Hz
+        QTRY_VERIFY_WITH_TIMEOUT(messages(u"/chatter"_s) >= 40, 15000);
         const auto stats = p.snapshot(wallClockNs());
 
         const RosTypeRegistry registry = Ros2Definitions::registry();
@@ -434,11 +435,9 @@ private slots:
 
         // about 30 samples come while nobody takes: the newest 5 are kept, in order, as sent
         const quint64 droppedBefore = p.droppedMessages(u"/pose"_s);
-        QTest::qWait(600);
+        QTRY_VERIFY_WITH_TIMEOUT(p.droppedMessages(u"/pose"_s) >= droppedBefore + 15, 10000);
         const std::vector<Ros2Sample> taken = p.takeMessages(u"/pose"_s);
         QCOMPARE(taken.size(), 5u);
-        QVERIFY2(p.droppedMessages(u"/pose"_s) >= droppedBefore + 15,
-                 qPrintable(QString::number(p.droppedMessages(u"/pose"_s) - droppedBefore)));
         const RosTypeRegistry registry = Ros2Definitions::registry();
         QString error;
         double previous = 0;
@@ -456,7 +455,8 @@ private slots:
         // the bytes bound: two samples' worth keeps two
         p.watchMessages(u"/pose"_s, 1000, 2 * taken.back().bytes.size());
         p.takeMessages(u"/pose"_s);
-        QTest::qWait(300);
+        const quint64 droppedByBytes = p.droppedMessages(u"/pose"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(p.droppedMessages(u"/pose"_s) >= droppedByBytes + 3, 10000);
         QCOMPARE(p.takeMessages(u"/pose"_s).size(), 2u);
 
         // monitor() and unmonitor() of the same topic leave the watch alone
@@ -468,8 +468,8 @@ private slots:
         QVERIFY(!p.isMonitored(u"/pose"_s));
         QVERIFY(!p.snapshot(wallClockNs()).contains(u"/pose"_s));
         p.takeMessages(u"/pose"_s);
-        QTest::qWait(300);
-        QVERIFY(p.takeMessages(u"/pose"_s).size() >= 5);
+        std::size_t kept = 0;
+        QTRY_VERIFY_WITH_TIMEOUT((kept += p.takeMessages(u"/pose"_s).size()) >= 5, 10000);
 
         // a new participant (another domain join) subscribes the watched topic again
         p.stop();
@@ -478,10 +478,12 @@ private slots:
         got = 0;
         QTRY_VERIFY_WITH_TIMEOUT(arrive(), 15000);
 
-        // unwatched: the subscription ends, nothing is kept
+        // unwatched: the subscription ends (the talker sees its reader go), nothing is kept
+        const auto unmatched = [&] { return talker.lines().count(u"matched /pose 0"_s); };
+        const qsizetype unmatchedBefore = unmatched();
         p.unwatchMessages(u"/pose"_s);
         QVERIFY(!p.isWatched(u"/pose"_s));
-        QTest::qWait(300);
+        QTRY_VERIFY_WITH_TIMEOUT(unmatched() > unmatchedBefore, 10000);
         QVERIFY(p.takeMessages(u"/pose"_s).empty());
         QCOMPARE(p.droppedMessages(u"/pose"_s), 0u);
     }
@@ -577,7 +579,7 @@ private slots:
                                      && value(u"/chatter"_s, u"destination"_s) > 40,
                                  20000);
         const double before = value(u"/chatter"_s, u"source"_s);
-        QTest::qWait(2000);
+        QTest::qWait(2000); // the stimulus: 2 s of traffic, whose rate is checked
         const double rate = (value(u"/chatter"_s, u"source"_s) - before) / 2.0;
         QVERIFY2(rate > 14 && rate < 26, qPrintable(QString::number(rate)));
         QCOMPARE(value(u"/idle"_s, u"destination"_s), 0.0);

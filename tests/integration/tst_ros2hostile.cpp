@@ -56,6 +56,13 @@ bool listsSteady(const QByteArray& json)
     });
 }
 
+/// Whether our DDS child joined `peer`'s domain: the peer (started with --show-discovery) saw the
+/// reader of the ROS graph that every participant of ours makes.
+bool childJoined(Ros2Peer& peer)
+{
+    return peer.waitFor(u"endpoint sub ros_discovery_info"_s, 20000);
+}
+
 bool hasNode(const Ros2Graph& g, const QString& name)
 {
     for (const Ros2Node& n : g.nodes)
@@ -134,16 +141,18 @@ private slots:
     void discoverSurvivesTheCorpus()
     {
         const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
-        Ros2Peer talker(domain, steadyTalker());
+        Ros2Peer talker(domain, steadyTalker() << u"--show-discovery"_s);
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         QProcess discover;
         discover.start(QStringLiteral(BRIDGESCOPE_BINARY), discoverArgs(domain, 25));
         QVERIFY(discover.waitForStarted());
         // its DDS process runs (a loaded machine, an ASan build: seconds), then it joins
         QTRY_VERIFY_WITH_TIMEOUT(DdsChild::of(discover.processId()) > 0, 20000);
-        QTest::qWait(2000);
+        const qint64 child = DdsChild::of(discover.processId());
+        QVERIFY2(childJoined(talker), qPrintable(talker.lines().join(u'\n')));
         RtpsCorpus::send(domain, m_corpus, 1000);
-        QTest::qWait(1000);
+        QTest::qWait(1000); // the stimulus: the child has a second to choke on the corpus
+        QCOMPARE(DdsChild::of(discover.processId()), child); // it did not
         QVERIFY(DdsChild::kill(SIGABRT, discover.processId()) > 0);
         QVERIFY(discover.waitForFinished(60000));
         const QByteArray out = discover.readAllStandardOutput();
@@ -168,9 +177,14 @@ private slots:
                      u"--ros-localhost-only"_s, u"--broker"_s, servers.brokerUrl(), u"--seconds"_s, u"20"_s});
         QVERIFY(watch.waitForStarted());
         QTRY_VERIFY_WITH_TIMEOUT(DdsChild::of(watch.processId()) > 0, 20000);
-        QTest::qWait(2000);
+        const qint64 child = DdsChild::of(watch.processId());
+        Ros2Peer observer(domain,
+                          {u"--node"_s, u"/observer"_s, u"--show-discovery"_s, u"--duration"_s, u"120"_s});
+        QVERIFY2(observer.waitFor(u"ready"_s), qPrintable(observer.errors()));
+        QVERIFY2(childJoined(observer), qPrintable(observer.lines().join(u'\n')));
         RtpsCorpus::send(domain, m_corpus, 1000);
-        QTest::qWait(1000);
+        QTest::qWait(1000); // the stimulus: the child has a second to choke on the corpus
+        QCOMPARE(DdsChild::of(watch.processId()), child); // it did not
         QVERIFY(DdsChild::kill(SIGABRT, watch.processId()) > 0);
         QVERIFY(watch.waitForFinished(60000));
         const QString err = QString::fromUtf8(watch.readAllStandardError());

@@ -8,6 +8,7 @@
 #include "mqtt/mqttprofile.h"
 #include "testservers.h"
 
+#include <algorithm>
 #include <QDirIterator>
 #include <QElapsedTimer>
 #include <QFile>
@@ -57,6 +58,30 @@ private:
         env.insert(u"ROS_LOG_DIR"_s, m_home + u"/.ros/log"_s);
         env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
         return env;
+    }
+
+    /// Reads every file under `root` but `skip` (the user's own input): the paths searched,
+    /// relative to `root`; those that hold a password go to `holding`.
+    static QStringList searchForPasswords(const QString& root, const QString& skip, QStringList* holding)
+    {
+        QStringList searched;
+        QDirIterator it(root, QDir::Files | QDir::Hidden | QDir::System, QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString path = it.next();
+            if (path == skip)
+                continue;
+            QFile f(path);
+            if (!f.open(QIODevice::ReadOnly)) {
+                *holding << path + u" (unreadable)"_s;
+                continue;
+            }
+            const QByteArray bytes = f.readAll();
+            searched << path.mid(root.size() + 1);
+            for (const QString& secret : {kPassword, kConfigPassword})
+                if (bytes.contains(secret.toUtf8()))
+                    *holding << path;
+        }
+        return searched;
     }
 
     Run bridgescope(const QStringList& args, int timeoutMs = 30000, int stopAfterMs = 0)
@@ -402,8 +427,14 @@ private slots:
         QVERIFY2(s.children > 0, qPrintable(s.err));
         QVERIFY(s.ownHidden);
         QVERIFY2(s.exit == 0, qPrintable(s.err)); // the cell completed: the bridges had the credentials
-        // and none of its files holds them (noCredentialInAnyFileOrLog searches the whole home later)
-        QVERIFY(QFileInfo::exists(dir + u"/plan.yaml"_s));
+        // and none of its files holds them: the plan, the state, the runs, the logs
+        QStringList holding;
+        const QStringList searched = searchForPasswords(dir, {}, &holding);
+        QVERIFY2(holding.isEmpty(), qPrintable(holding.join(u", "_s) + u" hold a password"_s));
+        QVERIFY2(searched.contains(u"plan.yaml"_s), qPrintable(searched.join(u", "_s)));
+        QVERIFY2(std::any_of(searched.cbegin(), searched.cend(),
+                             [](const QString& f) { return f.endsWith(u".bsrun"_s); }),
+                 qPrintable(searched.join(u", "_s)));
         QCOMPARE(bridgescope({u"experiment"_s, plan, u"-o"_s, dir, u"--broker"_s, u"tcp://x:y@"_s}).exit, 2);
     }
 
@@ -528,20 +559,10 @@ private slots:
                                     60000);
         QVERIFY2(gui.exit == 0, qPrintable(gui.err));
 
-        // Now search everything.
-        QStringList searched;
-        QDirIterator it(m_home, QDir::Files | QDir::Hidden | QDir::System, QDirIterator::Subdirectories);
-        while (it.hasNext()) {
-            const QString path = it.next();
-            if (path == config)
-                continue; // the user's own input
-            QFile f(path);
-            QVERIFY2(f.open(QIODevice::ReadOnly), qPrintable(path));
-            const QByteArray bytes = f.readAll();
-            searched << path.mid(m_home.size() + 1);
-            for (const QString& secret : {kPassword, kConfigPassword})
-                QVERIFY2(!bytes.contains(secret.toUtf8()), qPrintable(path + u" holds a password"_s));
-        }
+        // Now search everything (but the config, the user's own input).
+        QStringList holding;
+        const QStringList searched = searchForPasswords(m_home, config, &holding);
+        QVERIFY2(holding.isEmpty(), qPrintable(holding.join(u", "_s) + u" hold a password"_s));
         for (const QString& text : std::as_const(m_printed))
             for (const QString& secret : {kPassword, kConfigPassword})
                 QVERIFY2(!text.contains(secret), qPrintable(u"printed: "_s + text));

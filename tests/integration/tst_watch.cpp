@@ -278,17 +278,35 @@ private slots:
 
     void figuresMatchWhatWasSent()
     {
-        QTest::qWait(2500); // the windows fill
-        const QByteArray before = metrics();
-        const QHash<QString, qint64> sentBefore = m_sent;
-        m_skipSeq = true;
-        QTest::qWait(6000);
-        const QByteArray after = metrics();
-        const QHash<QString, qint64> sent = m_sent;
         const QList<std::pair<QString, QString>> links {{u"/w/stamped"_s, u"/w/stamped"_s},
                                                         {u"/w/plain"_s, u"/w/plain"_s},
                                                         {u"/w/in_stamped"_s, u"w/in_stamped"_s},
                                                         {u"/w/in_plain"_s, u"w/in_plain"_s}};
+        // The windows fill: 25 messages more (2.5 s of the 10 Hz traffic) at every destination.
+        const QByteArray start = metrics();
+        const auto arrivedSince = [&](const QByteArray& from, double n) {
+            const QByteArray now = metrics();
+            for (const auto& link : links)
+                if (linkValue(now, u"bridgescope_link_messages_total"_s, link.first, u"destination"_s)
+                        - linkValue(from, u"bridgescope_link_messages_total"_s, link.first, u"destination"_s)
+                    < n)
+                    return false;
+            return true;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(arrivedSince(start, 25), 20000);
+        const QByteArray before = metrics();
+        const QHash<QString, qint64> sentBefore = m_sent;
+        m_skipSeq = true;
+        // The figures are compared over 60 messages of every source (6 s at 10 Hz).
+        const auto sentSince = [&](qint64 n) {
+            for (const auto& link : links)
+                if (m_sent.value(link.second) - sentBefore.value(link.second) < n)
+                    return false;
+            return true;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(sentSince(60), 20000);
+        const QByteArray after = metrics();
+        const QHash<QString, qint64> sent = m_sent;
         for (const auto& [topic, source] : links) {
             const auto delta = [&](const QString& name, const QString& side = {}) {
                 return linkValue(after, name, topic, side) - linkValue(before, name, topic, side);
@@ -382,7 +400,7 @@ private slots:
         QTest::qWait(1000);
         const int from = int(m_events.size());
         m_paused.insert(u"/w/plain"_s);
-        QTest::qWait(5000); // past the 3 s of the default source_stopped rule
+        QTest::qWait(5000); // the stimulus: silent past the 3 s of the default source_stopped rule
         m_paused.clear();
         QTRY_VERIFY_WITH_TIMEOUT(events(from, u"end"_s, u"|/w/plain|"_s, u"source_stopped"_s).size() == 1,
                                  5000);

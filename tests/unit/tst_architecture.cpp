@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The layers (cmake/layers.txt): every #include under core/, widgets/ and app/ runs down the table,
 // third-party headers stay in the folder that wraps them, there is no cycle between folders,
-// docs/ARCHITECTURE.md's table is the file's, and the build refuses a forbidden include.
+// docs/ARCHITECTURE.md's table is the file's, and the build refuses a forbidden include. No
+// function is longer than kMaxFunctionLines, those defined inside class bodies included.
 #include "base/logging.h"
+#include "functionlengths.h"
 
+#include <algorithm>
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
@@ -233,6 +236,58 @@ QString describe(const QList<Finding>& findings)
     return lines.join(u'\n');
 }
 
+/// The longest a function may be, from the first line of its head to its closing brace.
+constexpr int kMaxFunctionLines = 100;
+
+/// Functions known to be longer, each with why it stays for now ("file:name"). One that is no
+/// longer over the limit is said too, so that the list only shrinks.
+const QHash<QString, QString>& knownLongFunctions()
+{
+    static const QHash<QString, QString> known {
+        {u"core/ros2/ros2participant.cpp:Ros2Participant::handle"_s,
+         u"109 lines since issue 41's loop detection; issue 42 point 2 splits the participant"_s},
+    };
+    return known;
+}
+
+/// The functions of the sources under `root` (core/, widgets/, app/) longer than
+/// kMaxFunctionLines, and the files that could not be measured; `measured` counts the functions.
+QList<Finding> checkFunctionLengths(const QString& root, int* measured)
+{
+    QList<Finding> out;
+    QSet<QString> stillLong;
+    for (const QString& top : {u"core"_s, u"widgets"_s, u"app"_s}) {
+        QDirIterator it(root + u'/' + top, {u"*.cpp"_s, u"*.h"_s}, QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString path = it.next();
+            QFile file(path);
+            const QString relative = QDir(root).relativeFilePath(path);
+            if (!file.open(QIODevice::ReadOnly)) {
+                out << Finding {relative, u"cannot be read"_s};
+                continue;
+            }
+            const FunctionLengths::Scan scan = FunctionLengths::scan(QString::fromUtf8(file.readAll()));
+            if (!scan.error.isEmpty())
+                out << Finding {relative, u"cannot be measured: "_s + scan.error};
+            *measured += int(scan.functions.size());
+            for (const FunctionLengths::Function& f : scan.functions) {
+                const QString key = relative + u':' + f.name;
+                if (f.lines > kMaxFunctionLines && !knownLongFunctions().contains(key))
+                    out << Finding {
+                        u"%1:%2"_s.arg(relative).arg(f.line),
+                        u"%1 is %2 lines, more than %3"_s.arg(f.name).arg(f.lines).arg(kMaxFunctionLines)};
+                if (f.lines > kMaxFunctionLines)
+                    stillLong << key;
+            }
+        }
+    }
+    for (auto it = knownLongFunctions().cbegin(); it != knownLongFunctions().cend(); ++it)
+        if (!stillLong.contains(it.key()))
+            out << Finding {it.key(), u"is listed as long but is not (any more): take it off the list"_s};
+    std::sort(out.begin(), out.end(), [](const Finding& a, const Finding& b) { return a.where < b.where; });
+    return out;
+}
+
 void writeFile(const QString& path, const QByteArray& text)
 {
     QDir().mkpath(QFileInfo(path).path());
@@ -324,6 +379,77 @@ private slots:
                      && !found.contains(u"reader.cpp:5"_s) && !found.contains(u"node.cpp:1"_s),
                  qPrintable(found));
         QCOMPARE(findCycle(edges), u"core/base -> core/config -> core/base"_s);
+    }
+
+    // Issue 42, point 7: every function is measured, those defined inside class bodies too
+    // (inline members in headers, members of a .cpp's own classes: Checker::checkTypedValues was 101).
+    void noFunctionIsLongerThanTheLimit()
+    {
+        int measured = 0;
+        const QList<Finding> findings
+            = checkFunctionLengths(QStringLiteral(BRIDGESCOPE_SOURCE_DIR), &measured);
+        qInfo("%d functions measured", measured);
+        QVERIFY2(measured > 2000, qPrintable(QString::number(measured))); // the whole tree was read
+        QVERIFY2(findings.isEmpty(), qPrintable(u"\n"_s + describe(findings)));
+    }
+
+    // The length checker itself, on every kind of function and on what only looks like one.
+    void lengthCheckerSeesEveryKindOfFunction()
+    {
+        // A source as lines (in a raw string moc would read them as code and directives).
+        const QString text = QStringList {
+            u"#include \"x.h\""_s,
+            u"#define BRACE {"_s,
+            u"namespace {"_s,
+            u"const QHash<QString, int> kTable {{\"a{\", 1}, {\"}\", 2}};"_s,
+            u"class Local"_s,
+            u"{"_s,
+            u"    Q_DECLARE_TR_FUNCTIONS(Local)"_s,
+            u"public:"_s,
+            u"    Local(int a)"_s,
+            u"        : m_a {a}"_s,
+            u"        , m_b(a)"_s,
+            u"    {"_s,
+            u"        m_c = '{';"_s,
+            u"    }"_s,
+            u"    int inlineMember() const"_s,
+            u"    {"_s,
+            u"        return 1'000'000; // {"_s,
+            u"    }"_s,
+            u"    bool operator==(const Local& o) const { return m_a == o.m_a; }"_s,
+            u"    struct Inner"_s,
+            u"    {"_s,
+            u"        void nested() { const auto f = [] { return \"}\"; }; }"_s,
+            u"    };"_s,
+            u"private:"_s,
+            u"    int m_a {0};"_s,
+            u"    int m_b = 0;"_s,
+            u"    std::function<void()> m_f = [] {"_s,
+            u"    };"_s,
+            u"};"_s,
+            u"} // namespace"_s,
+            u""_s,
+            u"template <typename T>"_s,
+            u"T Outer::member(T t) const"_s,
+            u"{"_s,
+            u"    /* } */"_s,
+            u"    return t + R\"x(})x\";"_s,
+            u"}"_s,
+            u""_s,
+            u"void free()"_s,
+            u"{"_s,
+            u"}"_s,
+        }.join(u'\n') + u'\n';
+        const FunctionLengths::Scan scan = FunctionLengths::scan(text);
+        QVERIFY2(scan.error.isEmpty(), qPrintable(scan.error));
+        QStringList found;
+        for (const FunctionLengths::Function& f : scan.functions)
+            found << u"%1 %2 %3"_s.arg(f.name).arg(f.line).arg(f.lines);
+        QCOMPARE(found,
+                 QStringList({u"Local 9 6"_s, u"inlineMember 15 4"_s, u"operator== 19 1"_s, u"nested 22 1"_s,
+                              u"Outer::member 32 6"_s, u"free 39 3"_s}));
+        // A brace that does not close is said, not measured as a function to the end.
+        QVERIFY(!FunctionLengths::scan(u"void f()\n{\n"_s).error.isEmpty());
     }
 
     void documentedTableIsTheFile()

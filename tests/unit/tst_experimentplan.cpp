@@ -361,13 +361,20 @@ private slots:
             cells.append(QJsonObject {{u"id"_s, cell.id()}, {u"state"_s, u"complete"_s}, {u"samples"_s, 10}});
         QVERIFY(writeFolder(dir.path(), yaml, cells));
         const auto runOf = [&](int i) { return dir.filePath(ExperimentFolder::runPathOf(plan->cells[i])); };
-        // 0: garbage that starts like a database; 1: a symbolic link to /etc/passwd; 2: a run of the
-        // cell with 12 samples; 3: that same run, which is another cell's.
+        // 0: garbage that starts like a database; 1: a symbolic link to a file of ours that the
+        // runner could delete or write (as /etc/passwd would be as root); 2: a run of the cell with
+        // 12 samples; 3: that same run, which is another cell's.
         QFile garbage(runOf(0));
         QVERIFY(garbage.open(QIODevice::WriteOnly));
         garbage.write(QByteArray("SQLite format 3", 16) + QByteArray(4000, '\x7f'));
         garbage.close();
-        QVERIFY(QFile::link(u"/etc/passwd"_s, runOf(1)));
+        const QString precious = dir.filePath(u"precious.txt"_s);
+        const QByteArray preciousText = "root:x:0:0:root:/root:/bin/bash\n";
+        QFile preciousFile(precious);
+        QVERIFY(preciousFile.open(QIODevice::WriteOnly)
+                && preciousFile.write(preciousText) == preciousText.size());
+        preciousFile.close();
+        QVERIFY(QFile::link(precious, runOf(1)));
         const SyntheticRun synthetic = SyntheticRun::paper(12, 0, 1);
         RunData run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
         run.info.pipeline = Pipeline(synthetic.topics, 0);
@@ -394,7 +401,10 @@ private slots:
         // The state on disk says so too, and a plan that wants more samples than the run has redoes it.
         const auto written = ExperimentFolder(dir.path()).readState(*plan, &why);
         QVERIFY2(written && (*written)[1].state == CellStatus::Pending, qPrintable(why));
-        QVERIFY(QFile::exists(u"/etc/passwd"_s));
+        // what the link pointed to is untouched: neither removed nor written
+        QVERIFY(preciousFile.open(QIODevice::ReadOnly));
+        QCOMPARE(preciousFile.readAll(), preciousText);
+        preciousFile.close();
         const QByteArray more = "samples: 13\nfactors:\n  qos: [0, 1]\n  payload: [1000, 2000]\n";
         const auto morePlan = noted(ExperimentPlan::read(more, dir.path()), &why);
         QVERIFY(copy.open(QIODevice::WriteOnly | QIODevice::Truncate) && copy.write(more) == more.size());

@@ -243,13 +243,15 @@ private slots:
                                           "GET http://127.0.0.1:" + port
                                               + "/metrics HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n",
                                           "GET HTTP://[::1]:" + port + "/metrics?x=1 HTTP/1.1\r\n\r\n"};
+        // Answered, not left waiting: a head the server did not take for complete would get no answer
+        // (httpRequest gives up after 5 s of silence), and the whole answer is checked.
         for (const QByteArray& request : requests) {
             QElapsedTimer t;
             t.start();
             const QByteArray answer = TestServers::httpRequest(server->port(), request);
             QVERIFY2(answer.startsWith("HTTP/1.1 200 OK\r\n"), request.constData());
             QCOMPARE(body(answer), want);
-            QVERIFY2(t.elapsed() < 2000, request.constData());
+            qInfo("answered in %lld ms", t.elapsed());
         }
         QVERIFY(TestServers::httpRequest(server->port(), "GET http://h:1/other HTTP/1.1\n\n")
                     .startsWith("HTTP/1.1 404"));
@@ -282,7 +284,7 @@ private slots:
         QElapsedTimer t;
         t.start();
         const QByteArray text = MetricsExposition::write(s, MetricsFormat::Text, 3);
-        QVERIFY2(t.elapsed() < 3000, qPrintable(QString::number(t.elapsed())));
+        qInfo("10,000 links of 2,000 characters written in %lld ms", t.elapsed());
         QVERIFY2(text.size() <= MetricsExposition::kMaxAnswerBytes, qPrintable(QString::number(text.size())));
         QVERIFY(text.size() > MetricsExposition::kMaxAnswerBytes / 2); // as many as fit, not few
         QVERIFY(text.contains("\nbridgescope_metrics_truncated 1\n"));
@@ -324,11 +326,15 @@ private slots:
         QTRY_VERIFY2_WITH_TIMEOUT(server->served() == 24, qPrintable(QString::number(server->served())),
                                   20000);
         QTRY_VERIFY_WITH_TIMEOUT(server->dropped() > 0, 10000);
+        const quint64 served = server->served();
         QElapsedTimer t;
         t.start();
+        // Answered whole while the 24 hold their answers (httpRequest gives up after 5 s of silence).
         const QByteArray answer = TestServers::httpRequest(server->port(), "GET /metrics HTTP/1.1\r\n\r\n");
+        qInfo("a scrape among 24 clients that do not read answered in %lld ms", t.elapsed());
+        QVERIFY(answer.startsWith("HTTP/1.1 200"));
         QCOMPARE(body(answer).size(), answerBytes);
-        QVERIFY2(t.elapsed() < 5000, qPrintable(QString::number(t.elapsed())));
+        QCOMPARE(server->served(), served + 1);
     }
 
     /// Bursts of connections that send nothing, every 10 ms, while a scraper scrapes: every scrape is
@@ -379,9 +385,10 @@ private slots:
         QElapsedTimer t;
         t.start();
         QStringList failures;
-        // Three seconds of bursts, and at least ten scrapes however long they take (a loaded or
-        // sanitized build scrapes slower: the property is that every scrape is answered).
-        while (t.elapsed() < 3000 || (scrapes < 10 && t.elapsed() < 120000)) {
+        // Scrapes through 3,000 idle connections in their bursts, and at least ten scrapes, however
+        // long they take (a loaded or sanitized build scrapes slower: the property is that every
+        // scrape is answered); two minutes at most.
+        while ((opened <= 3000 || scrapes < 10) && t.elapsed() < 120000) {
             const QByteArray answer = TestServers::httpRequest(port, "GET /metrics HTTP/1.1\r\n\r\n");
             ++scrapes;
             if (answer.startsWith("HTTP/1.1 200") && body(answer).endsWith("\n"))
@@ -416,9 +423,16 @@ private slots:
         QTRY_VERIFY(server->rejected() >= 8);
         QElapsedTimer t;
         t.start();
-        QVERIFY(TestServers::httpRequest(server->port(), "GET /metrics HTTP/1.1\r\n\r\n")
-                    .startsWith("HTTP/1.1 200"));
-        QVERIFY2(t.elapsed() < 3000, qPrintable(QString::number(t.elapsed())));
+        // Answered whole (httpRequest gives up after 5 s of silence).
+        const QByteArray answer = TestServers::httpRequest(server->port(), "GET /metrics HTTP/1.1\r\n\r\n");
+        qInfo("a scrape among %d idle clients answered in %lld ms", MetricsServer::kMaxClients + 8,
+              t.elapsed());
+        QVERIFY(answer.startsWith("HTTP/1.1 200"));
+        QVERIFY(body(answer).endsWith("\n"));
+        // every link's figures (the server's own counters have moved since)
+        for (const QByteArray& line : MetricsExposition::write(twoLinks(), MetricsFormat::Text).split('\n'))
+            if (line.startsWith("bridgescope_link_"))
+                QVERIFY2(body(answer).contains(QByteArray(line + '\n')), line.constData());
         // The oldest were closed by the server.
         QTRY_VERIFY(idle.front()->state() == QAbstractSocket::UnconnectedState
                     || idle.front()->waitForDisconnected(100));
