@@ -23,23 +23,29 @@ bool RunData::replay(LatencyEngine& engine, const std::function<bool()>& keepGoi
     std::vector<int> topicIndex;
     for (const QString& t : topics)
         topicIndex.push_back(engine.pipeline().indexOf(t));
+    // Asked every 65,536 stamps and every 65,536 latencies: a run of millions of either takes a while.
+    const auto stop = [&keepGoing](std::size_t n) { return keepGoing && n % 65536 == 65535 && !keepGoing(); };
     std::size_t l = 0;
+    const auto ingestLatency = [&] {
+        engine.ingest(LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+        return !stop(l++);
+    };
     for (std::size_t i = 0; i < stamps.size();) {
         const qint64 drained = stamps[i].drainedNs;
         for (; i < stamps.size() && stamps[i].drainedNs == drained; ++i) {
             const RecordedStamp& s = stamps[i];
             engine.ingest(topicIndex[std::size_t(s.topic)], s.sampleNs, s.timeNs, s.receivedNs);
-            if (keepGoing && i % 65536 == 65535 && !keepGoing())
+            if (stop(i))
                 return false;
         }
-        for (; l < latencies.size() && latencies[l].drainedNs <= drained; ++l)
-            engine.ingest(
-                LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+        while (l < latencies.size() && latencies[l].drainedNs <= drained)
+            if (!ingestLatency())
+                return false;
         engine.expire(drained);
     }
-    for (; l < latencies.size(); ++l)
-        engine.ingest(
-            LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
+    while (l < latencies.size())
+        if (!ingestLatency())
+            return false;
     return true;
 }
 

@@ -133,6 +133,25 @@ private slots:
         }
     }
 
+    // A run of millions of latencies and few stamps: the replay asks whether to go on between
+    // latencies too (the latencies after the last stamp were ingested to the end, deaf to
+    // Ctrl+C and SIGTERM: a CI run under ASan took 10 s to end `report`).
+    void aReplayOfLatenciesIsCancelled()
+    {
+        RunData run;
+        run.info.pipeline = Pipeline(QStringList {u"/a"_s, u"/b"_s});
+        run.series = {u"ext:/mqtt_client/latencies/lab"_s};
+        run.latencies.resize(300'000, RecordedLatency {0, 1'000'000, 1, 1});
+        LatencyEngine engine(run.info.pipeline);
+        const int series = engine.indexOf(run.series.first());
+        int asked = 0;
+        QVERIFY(!run.replay(engine, [&] { return ++asked < 2; }));
+        QCOMPARE(asked, 2);
+        QVERIFY(series < 0 || engine.series(series).totalCount() <= 2 * 65536);
+        LatencyEngine whole(run.info.pipeline);
+        QVERIFY(run.replay(whole, [] { return true; }));
+    }
+
     void brokenRunFilesAreRefusedWithAReason_data()
     {
         QTest::addColumn<QByteArray>("bytes");
