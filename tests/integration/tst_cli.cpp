@@ -240,8 +240,7 @@ private slots:
         while (!(seen = bridgescope({u"discover"_s, u"--ros-master"_s, servers.rosMasterUri(), u"--broker"_s,
                                      servers.brokerUrl(), u"--seconds"_s, u"0.5"_s}))
                     .out.contains(u"/odom_x"_s)
-               && waited.elapsed() < 30000)
-            QTest::qWait(200);
+               && waited.elapsed() < 30000) { } // each discover listens 0.5 s: no pause of its own
         QVERIFY2(seen.out.contains(u"/odom_x"_s),
                  qPrintable(u"after %1 ms, discover exit %2: %3 %4\nrostopic: %5"_s.arg(waited.elapsed())
                                 .arg(seen.exit)
@@ -1253,7 +1252,16 @@ private slots:
         p.start(QStringLiteral(BRIDGESCOPE_BINARY), {u"report"_s, csv, u"--format"_s, u"md"_s});
         QVERIFY(p.waitForStarted());
         QVERIFY(waitUntilCaught(p, SIGTERM));
-        QTest::qWait(500); // reading and joining by now
+        // Reading by now: it has taken in at least half of the file (its reads, /proc/PID/io).
+        const auto readBytes = [pid = p.processId()] {
+            QFile io(u"/proc/%1/io"_s.arg(pid));
+            if (io.open(QIODevice::ReadOnly))
+                for (const QByteArray& line : io.readAll().split('\n'))
+                    if (line.startsWith("rchar:"))
+                        return line.mid(6).trimmed().toLongLong();
+            return qint64(0);
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(readBytes() >= text.size() / 2 || p.state() != QProcess::Running, 20000);
         QVERIFY2(p.state() == QProcess::Running, "the report ended before the signal: make its input larger");
         QElapsedTimer clock;
         clock.start();
