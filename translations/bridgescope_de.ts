@@ -8070,12 +8070,12 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>Höchstwert je Sekunde</translation>
     </message>
     <message>
-        <source>time of the sample</source>
-        <translation>Zeit der Probe</translation>
-    </message>
-    <message>
         <source>latency [ms]</source>
         <translation>Latenz [ms]</translation>
+    </message>
+    <message>
+        <source>sample time</source>
+        <translation>Probenzeit</translation>
     </message>
 </context>
 <context>

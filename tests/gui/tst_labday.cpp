@@ -105,6 +105,9 @@ QString pageProblems(MainWindow& w)
         // The columns fit 100 ms after a change and figures grow once a second.
         (void)QTest::qWaitFor([&] { return ViewAudit::elidedFiguresIn(page).isEmpty(); }, 5000);
         problems << ViewAudit::elidedFiguresIn(page);
+        // Axis labels and legends of the charts too (the latency timeline's `23:2...`).
+        (void)QTest::qWaitFor([&] { return ViewAudit::elidedChartTexts(page).isEmpty(); }, 3000);
+        problems << ViewAudit::elidedChartTexts(page);
         for (auto* table : page->findChildren<QTableView*>())
             if (table->isVisible() && (table->objectName() == u"summaryView"_s || table->objectName() == u"statsView"_s))
                 problems << unflaggedNegatives(table);

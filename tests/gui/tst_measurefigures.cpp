@@ -13,6 +13,7 @@
 #include "mqtt/mqttprofile.h"
 #include "resulttext.h"
 #include "session/measuresession.h"
+#include "viewaudit.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/timelinechart.h"
@@ -27,6 +28,7 @@
 #include <QGraphicsTextItem>
 #include <QLegendMarker>
 #include <QRandomGenerator>
+#include <QRegularExpression>
 #include <QScatterSeries>
 #include <QTableView>
 #include <QTabWidget>
@@ -140,6 +142,14 @@ private slots:
         QVERIFY(timelineRect.left() >= chartRect.right()); // beside it
         QVERIFY(window.contains(timelineRect));
         QVERIFY(timelineRect.width() >= 220 && timelineRect.height() >= 200);
+        // Every label, title and legend entry whole (it read `23:2...`, `time of the sam...`,
+        // `highest ...` at 1280x800); the legend lays itself out on a later pass.
+        QTRY_VERIFY2(ViewAudit::elidedChartTexts(page).isEmpty(),
+                     qPrintable(ViewAudit::elidedChartTexts(page).join(u"; ")));
+        const QStringList drawn = drawnTexts(timeline);
+        QVERIFY2(drawn.contains(u"highest per second"_s) && drawn.contains(u"total, mean per second"_s),
+                 qPrintable(drawn.join(u" | ")));
+        QVERIFY2(drawn.filter(QRegularExpression(u"^\\d\\d:\\d\\d"_s)).size() >= 2, qPrintable(drawn.join(u" | ")));
         for (const QString& label : numericTexts(timeline))
             QVERIFY2(isRoundTick(label, timeline->latencyAxis()->max()
                                             / double(timeline->latencyAxis()->tickCount() - 1)),

@@ -4,6 +4,9 @@
 #include "widgets/common/namedelegate.h"
 
 #include <QAbstractItemView>
+#include <QChartView>
+#include <QGraphicsSimpleTextItem>
+#include <QGraphicsTextItem>
 #include <QHeaderView>
 #include <QRegularExpression>
 #include <QStyleOptionViewItem>
@@ -103,6 +106,28 @@ inline QStringList elidedFiguresIn(QWidget* root)
     for (QAbstractItemView* view : root->findChildren<QAbstractItemView*>())
         if (view->isVisible() && !qobject_cast<QHeaderView*>(view)) // a header is a view of titles
             problems << elidedFigures(view);
+    return problems;
+}
+/// Texts the charts shown in `root` draw cut: Qt Charts elides an axis label, axis title or
+/// QLegend entry that has no room with "..." (`23:2...`, `highest ...`); "chart: 'text'" each.
+inline QStringList elidedChartTexts(QWidget* root)
+{
+    QStringList problems;
+    for (QChartView* view : root->findChildren<QChartView*>()) {
+        if (!view->isVisible())
+            continue;
+        for (QGraphicsItem* item : view->scene()->items()) {
+            if (!item->isVisible())
+                continue;
+            QString text;
+            if (auto* rich = dynamic_cast<QGraphicsTextItem*>(item))
+                text = rich->toPlainText();
+            else if (auto* simple = dynamic_cast<QGraphicsSimpleTextItem*>(item))
+                text = simple->text();
+            if (text.endsWith(QStringLiteral("...")) || text.contains(QChar(0x2026)))
+                problems << QStringLiteral("%1: '%2'").arg(view->objectName(), text);
+        }
+    }
     return problems;
 }
 } // namespace ViewAudit

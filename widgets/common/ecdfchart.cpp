@@ -7,6 +7,7 @@
 #include "latency/latencyseries.h"
 #include "latency/palette.h"
 #include "widgets/common/chartstyle.h"
+#include "widgets/common/rowlegend.h"
 
 #include <climits>
 #include <cmath>
@@ -27,7 +28,6 @@
 #include <QPainter>
 #include <QScatterSeries>
 #include <QSvgGenerator>
-#include <QTextDocument>
 #include <QValueAxis>
 
 using namespace Qt::StringLiterals;
@@ -41,10 +41,8 @@ struct EcdfChart::Curve
     QScatterSeries* beyond = nullptr; ///< a marker at the axis' end for values beyond it
     QString beyondText; ///< "3 beyond 95 ms", or empty
     // The curve's entries in the panel's legend: its name, and the count beyond the axis' end.
-    QGraphicsRectItem* nameSwatch = nullptr;
-    QGraphicsTextItem* name = nullptr;
-    QGraphicsEllipseItem* beyondSwatch = nullptr;
-    QGraphicsTextItem* beyondEntry = nullptr;
+    int nameEntry = -1;
+    int beyondEntry = -1;
 };
 
 struct EcdfChart::Panel
@@ -56,7 +54,7 @@ struct EcdfChart::Panel
     std::vector<Curve> curves;
     double lo = 0; ///< the x range shown; kept while the data fit it well (no jumping axis)
     double hi = 0;
-    int legendHeight = 0; ///< the chart's bottom margin the legend takes
+    RowLegend* legend = nullptr; ///< none in small multiples (titles instead)
 };
 
 EcdfChart::EcdfChart(QWidget* parent)
@@ -157,8 +155,10 @@ void EcdfChart::rebuild()
         panel->chart = new QChart;
         panel->chart->setMargins(QMargins(4, 4, 4, 4));
         // QLegend elides what one row cannot hold (`object_detection…`, `1 beyond…`): the legend
-        // is the chart's own, in rows (layOutLegend()); small multiples have titles instead.
+        // is in rows (RowLegend); small multiples have titles instead.
         panel->chart->legend()->setVisible(false);
+        if (!m_multiples)
+            panel->legend = new RowLegend(panel->chart);
         panel->view = new QChartView(panel->chart);
         panel->view->setRenderHint(QPainter::Antialiasing);
         panel->view->setObjectName(u"ecdfView%1"_s.arg(i));
@@ -184,8 +184,6 @@ void EcdfChart::rebuild()
         ChartStyle::apply(panel->chart, palette());
         m_grid->addWidget(panel->view, i / columns, i % columns);
         panel->view->show(); // at once: a layout would show it only on the next event loop pass
-        Panel* raw = panel.get();
-        connect(panel->chart, &QGraphicsWidget::geometryChanged, this, [this, raw] { layOutLegend(*raw); });
         m_panels.push_back(std::move(panel));
     }
     if (m_panels.size() == 1 && ids.isEmpty())
@@ -215,21 +213,17 @@ void EcdfChart::rebuild()
         if (m_multiples) {
             p.chart->setTitle(m_source->ecdfLabel(index));
         } else {
-            c.nameSwatch = new QGraphicsRectItem(0, 0, 14, 3, p.chart);
-            c.nameSwatch->setBrush(color);
-            c.nameSwatch->setPen(Qt::NoPen);
-            c.name = new QGraphicsTextItem(c.ecdf->name(), p.chart);
-            c.beyondSwatch = new QGraphicsEllipseItem(0, 0, 9, 9, p.chart);
-            c.beyondSwatch->setBrush(color);
-            c.beyondSwatch->setPen(Qt::NoPen);
-            c.beyondEntry = new QGraphicsTextItem(p.chart);
-            c.beyondSwatch->hide();
-            c.beyondEntry->hide();
+            auto* line = new QGraphicsRectItem(0, 0, 14, 3, p.chart);
+            line->setBrush(color);
+            line->setPen(Qt::NoPen);
+            c.nameEntry = p.legend->addEntry(line, c.ecdf->name());
+            auto* dot = new QGraphicsEllipseItem(0, 0, 9, 9, p.chart);
+            dot->setBrush(color);
+            dot->setPen(Qt::NoPen);
+            c.beyondEntry = p.legend->addEntry(dot, QString());
         }
         p.curves.push_back(c);
     }
-    for (auto& panel : m_panels)
-        layOutLegend(*panel);
     refresh();
 }
 
@@ -316,68 +310,7 @@ void EcdfChart::markBeyond(Panel& p, Curve& c, const LatencySeries& s)
         p.chart->setTitle(text.isEmpty() ? label : label + u" · "_s + text);
         return;
     }
-    c.beyondEntry->setPlainText(text);
-    layOutLegend(p);
-}
-
-/// Each entry a swatch and its whole text, left to right in rows as wide as the chart, at its
-/// bottom (an entry wider than a row wraps); the plot gets what the rows leave.
-void EcdfChart::layOutLegend(Panel& p)
-{
-    const QFont font = p.chart->legend()->font();
-    const QColor colour = p.chart->legend()->labelColor();
-    const QFontMetricsF fm(font);
-    const qreal margin = 8;
-    const qreal row = std::ceil(fm.height()) + 6;
-    const qreal width = std::max<qreal>(60, p.chart->size().width() - 2 * margin);
-    struct Placed
-    {
-        QGraphicsItem* swatch;
-        QGraphicsTextItem* text;
-        qreal x, y;
-    };
-    std::vector<Placed> placed;
-    qreal x = 0;
-    qreal y = 0;
-    qreal rowBottom = 0;
-    const auto place = [&](QGraphicsItem* swatch, QGraphicsTextItem* text, bool shown) {
-        swatch->setVisible(shown);
-        text->setVisible(shown);
-        if (!shown)
-            return;
-        text->setFont(font);
-        text->setDefaultTextColor(colour);
-        const qreal indent = swatch->boundingRect().width() + 4;
-        text->setTextWidth(-1);
-        if (indent + text->boundingRect().width() > width)
-            text->setTextWidth(width - indent); // wrapped, never cut
-        const qreal entry = indent + text->boundingRect().width();
-        if (x > 0 && x + entry > width) {
-            x = 0;
-            y = rowBottom;
-        }
-        placed.push_back({swatch, text, x, y});
-        rowBottom = std::max(rowBottom, y + std::max(row, text->boundingRect().height()));
-        x += entry + 12;
-    };
-    for (Curve& c : p.curves) {
-        if (!c.name)
-            continue;
-        place(c.nameSwatch, c.name, true);
-        place(c.beyondSwatch, c.beyondEntry, !c.beyondText.isEmpty());
-    }
-    const int height = placed.empty() ? 0 : int(std::ceil(rowBottom)) + 4;
-    const qreal top = p.chart->size().height() - height;
-    for (const Placed& e : placed) {
-        const qreal textHeight = fm.height() + 2 * e.text->document()->documentMargin();
-        const QRectF swatch = e.swatch->boundingRect();
-        e.swatch->setPos(margin + e.x, top + e.y + (textHeight - swatch.height()) / 2);
-        e.text->setPos(margin + e.x + swatch.width() + 4, top + e.y);
-    }
-    if (height != p.legendHeight) {
-        p.legendHeight = height;
-        p.chart->setMargins(QMargins(4, 4, 4, 4 + height));
-    }
+    p.legend->setText(c.beyondEntry, text);
 }
 
 QString EcdfChart::beyondText(const QString& id) const
@@ -435,6 +368,7 @@ void EcdfChart::changeEvent(QEvent* event)
     if (event->type() == QEvent::PaletteChange)
         for (const auto& panel : m_panels) {
             ChartStyle::apply(panel->chart, palette());
-            layOutLegend(*panel); // in the new text colour
+            if (panel->legend)
+                panel->legend->layOut(); // in the new text colour
         }
 }

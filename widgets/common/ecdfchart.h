@@ -67,7 +67,6 @@ private:
     void rebuild();
     Panel* panelOf(const QString& id) const;
     void markBeyond(Panel& p, Curve& c, const LatencySeries& s);
-    void layOutLegend(Panel& p);
 
     const EcdfSource* m_source = nullptr;
     QStringList m_ids;

@@ -4,12 +4,14 @@
 #include "latency/latencytimeline.h"
 #include "latency/palette.h"
 #include "widgets/common/chartstyle.h"
+#include "widgets/common/rowlegend.h"
 
 #include <algorithm>
 #include <QChart>
 #include <QDateTime>
 #include <QDateTimeAxis>
 #include <QEvent>
+#include <QGraphicsRectItem>
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -39,7 +41,6 @@ TimelineChart::TimelineChart(QWidget* parent)
     setObjectName(u"latencyTimeline"_s);
     QChart* chart = this->chart();
     chart->setMargins(QMargins(4, 4, 4, 4));
-    chart->legend()->setAlignment(Qt::AlignBottom);
     const QColor color(seriesColor(0));
     m_mean->setName(tr("total, mean per second"));
     m_mean->setPen(QPen(color, 2));
@@ -47,6 +48,15 @@ TimelineChart::TimelineChart(QWidget* parent)
     light.setAlpha(140);
     m_max->setName(tr("highest per second"));
     m_max->setPen(QPen(light, 1.2));
+    // The legend in rows, whole: QLegend cut both names to `highest …` and `total, m…` beside
+    // the ECDF at 1280x800.
+    m_legend = new RowLegend(chart);
+    for (QLineSeries* s : {m_mean, m_max}) {
+        auto* line = new QGraphicsRectItem(0, 0, 14, 3, chart);
+        line->setBrush(s->pen().color());
+        line->setPen(Qt::NoPen);
+        m_legend->addEntry(line, s->name());
+    }
     chart->addAxis(m_x, Qt::AlignBottom);
     chart->addAxis(m_y, Qt::AlignLeft);
     for (QLineSeries* s : {m_max, m_mean}) {
@@ -54,7 +64,7 @@ TimelineChart::TimelineChart(QWidget* parent)
         s->attachAxis(m_x);
         s->attachAxis(m_y);
     }
-    m_x->setTitleText(tr("time of the sample"));
+    m_x->setTitleText(tr("sample time"));
     m_y->setTitleText(tr("latency [ms]"));
     ChartStyle::apply(chart, palette());
     setRenderHint(QPainter::Antialiasing);
@@ -101,22 +111,42 @@ void TimelineChart::refresh()
     }
     m_mean->replace(mean);
     m_max->replace(max);
-    // Time ticks on round seconds or minutes: the ends on a step; as many as have room for their
-    // labels ("12:03:05" elided to "12:0…" tells nothing).
-    const int labelWidth = fontMetrics().horizontalAdvance(u"00:00:00"_s) * 3 / 2;
-    const int wanted = std::clamp(int(width() * 0.85) / std::max(1, labelWidth), 3, 7);
+    m_first = first;
+    m_last = last;
+    fitTimeAxis();
+    ChartStyle::setNiceRange(m_y, bottom, top > bottom ? top : bottom + 1, 5);
+}
+
+/// Time ticks on round seconds or minutes, the ends on a step, as many as the plot has room for
+/// with their labels whole ("12:03:05" elided to "12:0…" tells nothing): again at every resize.
+void TimelineChart::fitTimeAxis()
+{
+    const qint64 first = m_first;
+    const qint64 last = m_last;
+    const QFontMetrics labels(m_x->labelsFont());
+    const qreal plot = chart()->plotArea().width() > 0 ? chart()->plotArea().width() : width() * 0.7;
+    // Each label gets the plot's width over the ticks; room for its text and a gap.
+    const int labelWidth = labels.horizontalAdvance(u"00:00:00"_s) + labels.horizontalAdvance(u"00"_s);
+    const int wanted = std::clamp(int(plot) / std::max(1, labelWidth), 2, 7);
     const qint64 step = timeStep(last - first, wanted);
     const qint64 from = first - ((first % step) + step) % step;
     const qint64 to = from + (last - from + step - 1) / step * step;
     m_x->setRange(QDateTime::fromSecsSinceEpoch(from), QDateTime::fromSecsSinceEpoch(to));
     m_x->setTickCount(int((to - from) / step) + 1);
     m_x->setFormat(step < 60 ? u"HH:mm:ss"_s : step < 86400 ? u"HH:mm"_s : u"yyyy-MM-dd"_s);
-    ChartStyle::setNiceRange(m_y, bottom, top > bottom ? top : bottom + 1, 5);
+}
+
+void TimelineChart::resizeEvent(QResizeEvent* event)
+{
+    QChartView::resizeEvent(event);
+    fitTimeAxis();
 }
 
 void TimelineChart::changeEvent(QEvent* event)
 {
     QChartView::changeEvent(event);
-    if (event->type() == QEvent::PaletteChange)
+    if (event->type() == QEvent::PaletteChange) {
         ChartStyle::apply(chart(), palette());
+        m_legend->layOut(); // in the new text colour
+    }
 }
