@@ -423,10 +423,6 @@ Befehle:
         <translation>die Datei wird in einem anderen Layout gespeichert</translation>
     </message>
     <message>
-        <source>Split the file.</source>
-        <translation>Teilen Sie die Datei auf.</translation>
-    </message>
-    <message>
         <source>The file is not a bridge config.</source>
         <translation>Die Datei ist keine Bridge-Konfiguration.</translation>
     </message>
@@ -770,6 +766,10 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>The rest of the file from this place on</source>
         <translation>Der Rest der Datei ab dieser Stelle</translation>
+    </message>
+    <message>
+        <source>Split the file.</source>
+        <translation>Teilen Sie die Datei auf.</translation>
     </message>
 </context>
 <context>

@@ -13,6 +13,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFile>
+#include <limits>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;
@@ -61,13 +62,19 @@ public:
         // One byte past the limit is enough for the reader to say the file is too large; a FIFO or
         // a device such as /dev/zero is refused.
         QString why;
-        const std::optional<QByteArray> bytes = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why);
-        if (!bytes) {
+        const std::optional<RegularFile::Opened> opened
+            = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
+        if (!opened) {
             err(tr("%1: error: cannot read the file: %2").arg(path, why));
             l.exit = ExitUsage;
             return l;
         }
-        l.read = ConfigReader::read(*bytes);
+        if (opened->size > YamlLimits::maxBytes) { // said by its size ("17 MB, the limit is 8 MB"), unread
+            err(ConfigReader::tooLarge(opened->size).format(path));
+            l.exit = ExitFailed;
+            return l;
+        }
+        l.read = ConfigReader::read(opened->file->read(opened->size));
         if (!l.read.parsed) {
             for (const Problem& p : std::as_const(l.read.problems))
                 err(p.format(path));

@@ -38,10 +38,7 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     QFile& file = *opened->file;
     result.fileSize = opened->size;
     if (result.fileSize > YamlLimits::maxBytes) {
-        Problem tooLarge;
-        tooLarge.code = u"yaml-too-large"_s;
-        tooLarge.message = YamlLimits::tooLargeMessage(result.fileSize);
-        tooLarge.fix = tr("Split the file.");
+        const Problem tooLarge = ConfigReader::tooLarge(result.fileSize);
         result.problems = {tooLarge};
         result.error = tooLarge.format(path);
         result.text = file.read(std::min<qint64>(kShownBytes, opened->size));

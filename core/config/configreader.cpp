@@ -2,6 +2,7 @@
 #include "configreader.h"
 
 #include "base/exactutf8.h"
+#include "base/yamllimits.h"
 #include "base/yamlreader.h"
 #include "base/yamltree.h"
 
@@ -499,6 +500,15 @@ bool looksLikeMqttBridge(const YAML::Node& root)
 }
 
 } // namespace
+
+Problem ConfigReader::tooLarge(qint64 size)
+{
+    Problem p;
+    p.code = u"yaml-too-large"_s;
+    p.message = YamlLimits::tooLargeMessage(size);
+    p.fix = tr("Split the file.");
+    return p;
+}
 
 ConfigReadResult ConfigReader::read(const QByteArray& text)
 {

@@ -23,6 +23,9 @@ class ConfigReader
     Q_DECLARE_TR_FUNCTIONS(ConfigReader)
 public:
     static ConfigReadResult read(const QByteArray& text);
+    /// A file of `size` bytes, past YamlLimits::maxBytes: refused by its size, unread ("The file is
+    /// 17 MB, the limit is 8 MB."), whoever opened it.
+    static Problem tooLarge(qint64 size);
     /// mqtt_bridge "std_msgs.msg:Bool" <-> ROS "std_msgs/Bool".
     static QString rosTypeFromMqttBridge(const QString& msgType);
     static QString mqttBridgeTypeFromRos(const QString& rosType);

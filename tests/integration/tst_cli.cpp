@@ -137,6 +137,18 @@ private slots:
         QCOMPARE(r.exit, 2);
         QVERIFY(r.err.contains(u"missing.yaml"_s));
 
+        // A file past the limit is said by its size, as a user counts it (issue 40: it said
+        // "larger than 8 MB" of a 17 MB file, the 8 MB it had read).
+        const QString huge = writeFile(dir, u"huge.yaml"_s, "bridge:\n");
+        {
+            QFile f(huge);
+            QVERIFY(f.resize(17 * 1000 * 1000));
+        }
+        r = bridgescope({u"config"_s, u"validate"_s, huge});
+        QCOMPARE(r.exit, 1);
+        QVERIFY2(r.err.contains(huge + u": error: The file is 16 MB, the limit is 8 MB. (Split the file.)"_s),
+                 qPrintable(r.err));
+
         // Warnings alone keep a file valid.
         r = bridgescope(
             {u"config"_s, u"validate"_s, Fixtures::path(u"mqtt_client/ros1-era-params.aws.yaml"_s)});
