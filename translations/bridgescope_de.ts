@@ -7409,72 +7409,6 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     </message>
 </context>
 <context>
-    <name>RosTopicModel</name>
-    <message>
-        <source>/s</source>
-        <translation>/s</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>waiting…</source>
-        <translation>warte …</translation>
-    </message>
-    <message>
-        <source>Subscribe and show rate, bandwidth and the last message</source>
-        <translation>Abonnieren und Rate, Bandbreite und letzte Nachricht zeigen</translation>
-    </message>
-    <message>
-        <source>Monitor: subscribe and show rate, bandwidth and the last message</source>
-        <translation>Beobachten: abonnieren und Rate, Bandbreite und letzte Nachricht zeigen</translation>
-    </message>
-    <message>
-        <source>Mon</source>
-        <translation>Beob.</translation>
-    </message>
-    <message>
-        <source>Topic</source>
-        <translation>Topic</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <source>Pubs</source>
-        <translation>Pubs</translation>
-    </message>
-    <message>
-        <source>Subs</source>
-        <translation>Subs</translation>
-    </message>
-    <message>
-        <source>Rate (Hz)</source>
-        <translation>Rate (Hz)</translation>
-    </message>
-    <message>
-        <source>Bandwidth</source>
-        <translation>Bandbreite</translation>
-    </message>
-    <message>
-        <source>Size</source>
-        <translation>Größe</translation>
-    </message>
-    <message>
-        <source>Last</source>
-        <translation>Zuletzt</translation>
-    </message>
-</context>
-<context>
-    <name>RosTopicTree</name>
-    <message>
-        <source>Namespace %1: drop MQTT topics here to bridge them below it</source>
-        <translation>Namensraum %1: MQTT-Topics hier ablegen, um sie darunter zu überbrücken</translation>
-    </message>
-</context>
-<context>
     <name>RosTypeRegistry</name>
     <message>
         <source>line %1: expected &apos;MSG: package/Type&apos; after the separator</source>
@@ -8135,6 +8069,72 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>&apos;+&apos; must be a whole level</source>
         <translation>&apos;+&apos; muss eine ganze Ebene sein</translation>
+    </message>
+</context>
+<context>
+    <name>TopicTableModel</name>
+    <message>
+        <source>/s</source>
+        <translation>/s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>waiting…</source>
+        <translation>warte …</translation>
+    </message>
+    <message>
+        <source>Subscribe and show rate, bandwidth and the last message</source>
+        <translation>Abonnieren und Rate, Bandbreite und letzte Nachricht zeigen</translation>
+    </message>
+    <message>
+        <source>Monitor: subscribe and show rate, bandwidth and the last message</source>
+        <translation>Beobachten: abonnieren und Rate, Bandbreite und letzte Nachricht zeigen</translation>
+    </message>
+    <message>
+        <source>Mon</source>
+        <translation>Beob.</translation>
+    </message>
+    <message>
+        <source>Topic</source>
+        <translation>Topic</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Pubs</source>
+        <translation>Pubs</translation>
+    </message>
+    <message>
+        <source>Subs</source>
+        <translation>Subs</translation>
+    </message>
+    <message>
+        <source>Rate (Hz)</source>
+        <translation>Rate (Hz)</translation>
+    </message>
+    <message>
+        <source>Bandwidth</source>
+        <translation>Bandbreite</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Last</source>
+        <translation>Zuletzt</translation>
+    </message>
+</context>
+<context>
+    <name>TopicTree</name>
+    <message>
+        <source>Namespace %1: drop MQTT topics here to bridge them below it</source>
+        <translation>Namensraum %1: MQTT-Topics hier ablegen, um sie darunter zu überbrücken</translation>
     </message>
 </context>
 <context>

@@ -37,7 +37,7 @@ public:
         if (!poller.isReachable())
             ros.insert(u"error"_s, poller.lastError());
         QJsonArray topics;
-        for (const RosTopicInfo& t : poller.graph().topics) {
+        for (const TopicInfo& t : poller.graph().topics) {
             QJsonObject o;
             o.insert(u"name"_s, t.name);
             o.insert(u"type"_s, t.type);
@@ -176,7 +176,7 @@ public:
                     .arg(poller->masterUri(),
                          poller->isReachable() ? tr("reachable")
                                                : tr("unreachable (%1)").arg(poller->lastError())));
-            for (const RosTopicInfo& t : poller->graph().topics)
+            for (const TopicInfo& t : poller->graph().topics)
                 out(u"  %1  %2  pubs %3  subs %4"_s.arg(t.name, t.type)
                         .arg(t.publishers.size())
                         .arg(t.subscribers.size()));

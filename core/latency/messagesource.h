@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/topicfigures.h"
+#include "topics/topicfigures.h"
 #include "wire/sourcemessage.h"
 
 #include <cstddef>

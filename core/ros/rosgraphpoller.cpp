@@ -19,22 +19,22 @@ public:
         const QString current = uri;
         RosMasterApi api(current);
         QString error;
-        const std::optional<RosGraph> graph = api.graph(timeoutMs, &error);
+        const std::optional<TopicGraph> graph = api.graph(timeoutMs, &error);
         std::optional<qint64> pid;
         if (graph)
             pid = api.pid(timeoutMs, &error);
-        emit result(graph && pid, graph.value_or(RosGraph()), pid.value_or(-1), error, current);
+        emit result(graph && pid, graph.value_or(TopicGraph()), pid.value_or(-1), error, current);
     }
 
 signals:
-    void result(bool ok, const RosGraph& graph, qint64 pid, const QString& error, const QString& uri);
+    void result(bool ok, const TopicGraph& graph, qint64 pid, const QString& error, const QString& uri);
 };
 
 RosGraphPoller::RosGraphPoller(QObject* parent)
     : QObject(parent)
     , m_uri(RosMasterApi::defaultMasterUri())
 {
-    qRegisterMetaType<RosGraph>();
+    qRegisterMetaType<TopicGraph>();
     m_worker = new Worker;
     m_worker->uri = m_uri;
     m_worker->moveToThread(&m_thread);
@@ -82,7 +82,7 @@ void RosGraphPoller::pollNow()
     QMetaObject::invokeMethod(m_worker, [w = m_worker] { w->poll(); });
 }
 
-void RosGraphPoller::onResult(bool ok, const RosGraph& graph, qint64 pid, const QString& error,
+void RosGraphPoller::onResult(bool ok, const TopicGraph& graph, qint64 pid, const QString& error,
                               const QString& uri)
 {
     if (uri != m_uri)

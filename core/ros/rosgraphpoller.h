@@ -26,25 +26,25 @@ public:
     /// Asks for a poll now (the answer comes as signals, like every other).
     void pollNow();
 
-    const RosGraph& graph() const { return m_graph; }
+    const TopicGraph& graph() const { return m_graph; }
     bool isReachable() const { return m_reachable; }
     QString lastError() const { return m_error; }
     int polls() const { return m_polls; }
 
 signals:
-    void graphChanged(const RosGraph& graph);
+    void graphChanged(const TopicGraph& graph);
     void reachabilityChanged(bool reachable, const QString& detail);
     void masterRestarted();
     void polled(); ///< after every poll, changed or not
 
 private:
-    void onResult(bool ok, const RosGraph& graph, qint64 pid, const QString& error, const QString& uri);
+    void onResult(bool ok, const TopicGraph& graph, qint64 pid, const QString& error, const QString& uri);
 
     class Worker;
     QThread m_thread;
     Worker* m_worker = nullptr;
     QString m_uri;
-    RosGraph m_graph;
+    TopicGraph m_graph;
     bool m_reachable = false;
     bool m_known = false;
     qint64 m_pid = -1;

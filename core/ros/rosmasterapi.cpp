@@ -10,13 +10,6 @@
 
 using namespace Qt::StringLiterals;
 
-const RosTopicInfo* RosGraph::topic(const QString& name) const
-{
-    const auto it = std::lower_bound(topics.cbegin(), topics.cend(), name,
-                                     [](const RosTopicInfo& t, const QString& n) { return t.name < n; });
-    return it != topics.cend() && it->name == name ? &*it : nullptr;
-}
-
 RosMasterApi::RosMasterApi(const QString& masterUri, const QString& callerId)
     : m_uri(masterUri)
     , m_callerId(callerId)
@@ -258,7 +251,7 @@ std::optional<QVariantList> RosMasterApi::answer(const QString& method, const QV
     return triple;
 }
 
-std::optional<RosGraph> RosMasterApi::graph(int timeoutMs, QString* error) const
+std::optional<TopicGraph> RosMasterApi::graph(int timeoutMs, QString* error) const
 {
     const QDeadlineTimer deadline(timeoutMs);
     const std::optional<QVariant> state = call(u"getSystemState"_s, {m_callerId}, timeoutMs, error);
@@ -268,7 +261,7 @@ std::optional<RosGraph> RosMasterApi::graph(int timeoutMs, QString* error) const
         = call(u"getTopicTypes"_s, {m_callerId}, int(std::max<qint64>(1, deadline.remainingTime())), error);
     if (!types)
         return std::nullopt;
-    QHash<QString, RosTopicInfo> topics;
+    QHash<QString, TopicInfo> topics;
     QSet<QString> nodes;
     const QVariantList lists = state->toList();
     for (int which = 0; which < lists.size() && which < 3; ++which) {
@@ -285,7 +278,7 @@ std::optional<RosGraph> RosMasterApi::graph(int timeoutMs, QString* error) const
                 nodes.insert(n);
             if (which == 2)
                 continue; // services: their nodes count, they are no topics
-            RosTopicInfo& t = topics[name];
+            TopicInfo& t = topics[name];
             t.name = name;
             (which == 0 ? t.publishers : t.subscribers) = members;
         }
@@ -300,10 +293,10 @@ std::optional<RosGraph> RosMasterApi::graph(int timeoutMs, QString* error) const
         if (it != topics.end())
             it->type = pair[1].toString();
     }
-    RosGraph g;
+    TopicGraph g;
     g.topics = topics.values();
     std::sort(g.topics.begin(), g.topics.end(),
-              [](const RosTopicInfo& a, const RosTopicInfo& b) { return a.name < b.name; });
+              [](const TopicInfo& a, const TopicInfo& b) { return a.name < b.name; });
     g.nodes = QStringList(nodes.cbegin(), nodes.cend());
     g.nodes.sort();
     return g;

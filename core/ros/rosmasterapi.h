@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "topics/topicgraph.h"
+
 #include <optional>
 #include <QCoreApplication>
 #include <QList>
@@ -8,30 +10,6 @@
 #include <QString>
 #include <QStringList>
 #include <QVariant>
-
-/// One topic of the ROS graph.
-struct RosTopicInfo
-{
-    QString name;
-    QString type;
-    QStringList publishers; ///< node names
-    QStringList subscribers;
-    bool operator==(const RosTopicInfo& o) const
-    {
-        return name == o.name && type == o.type && publishers == o.publishers && subscribers == o.subscribers;
-    }
-};
-
-/// What the master knows: topics (sorted by name) and nodes.
-struct RosGraph
-{
-    QList<RosTopicInfo> topics;
-    QStringList nodes;
-    bool operator==(const RosGraph& o) const { return topics == o.topics && nodes == o.nodes; }
-    bool operator!=(const RosGraph& o) const { return !(*this == o); }
-    const RosTopicInfo* topic(const QString& name) const;
-};
-Q_DECLARE_METATYPE(RosGraph)
 
 /// The ROS master's XML-RPC API, spoken directly over TCP with a deadline on every call.
 ///
@@ -54,7 +32,7 @@ public:
     /// The most an answer may hold: a bigger one (a hostile server that never stops sending) is
     /// an error, not memory. A master's getSystemState of 100,000 topics is about 20 MiB.
     static constexpr qsizetype kMaxAnswerBytes = 256 * 1024 * 1024;
-    std::optional<RosGraph> graph(int timeoutMs, QString* error = nullptr) const;
+    std::optional<TopicGraph> graph(int timeoutMs, QString* error = nullptr) const;
     std::optional<qint64> pid(int timeoutMs, QString* error = nullptr) const;
 
     /// An XML-RPC request body; a response body parsed into QVariant (arrays become QVariantList).

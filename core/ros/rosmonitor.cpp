@@ -21,7 +21,7 @@ namespace {
 
 struct TopicState
 {
-    RosMonitorStats stats;
+    TopicStats stats;
     RateWindow rates;
 };
 } // namespace
@@ -245,12 +245,12 @@ QHash<QString, TopicFigures> RosMonitor::figures(qint64 nowNs) const
     return topicFiguresOf(snapshot(nowNs));
 }
 
-QHash<QString, RosMonitorStats> RosMonitor::snapshot(qint64 nowNs) const
+QHash<QString, TopicStats> RosMonitor::snapshot(qint64 nowNs) const
 {
-    QHash<QString, RosMonitorStats> out;
+    QHash<QString, TopicStats> out;
     std::lock_guard<std::mutex> lock(d->mutex);
     for (auto it = d->topics.cbegin(); it != d->topics.cend(); ++it) {
-        RosMonitorStats s = it->stats;
+        TopicStats s = it->stats;
         std::tie(s.rateHz, s.bytesPerSecond) = it->rates.rates(nowNs);
         out.insert(it.key(), s);
     }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/topicfigures.h"
 #include "latency/messagesource.h"
+#include "topics/topicgraph.h"
 
 #include <memory>
 #include <QByteArray>
@@ -12,12 +12,6 @@
 #include <vector>
 
 /// Figures of one monitored ROS topic, like rqt_topic shows them.
-struct RosMonitorStats : TopicFigures
-{
-    QString md5;
-    QString definition;
-};
-
 /// One whole message of a watched topic (for plots of its fields).
 struct RosMessageSample
 {
@@ -49,7 +43,7 @@ public:
     /// Registers every monitored topic again (after the master restarted).
     void resubscribeAll();
     /// Current figures of every monitored topic (rates computed for `nowNs`).
-    QHash<QString, RosMonitorStats> snapshot(qint64 nowNs) const;
+    QHash<QString, TopicStats> snapshot(qint64 nowNs) const;
     QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
     void keepArrivals(std::size_t maxArrivals) override;
     std::vector<SourceHead> takeArrivals() override;

@@ -312,3 +312,20 @@ bool Ros2Graph::operator==(const Ros2Graph& o) const
             return false;
     return true;
 }
+
+TopicGraph Ros2Graph::topicGraph() const
+{
+    TopicGraph g;
+    auto names = [](const QList<Ros2Endpoint>& endpoints) {
+        QStringList list;
+        for (const Ros2Endpoint& e : endpoints)
+            list << (e.node.isEmpty() ? QStringLiteral("(%1)").arg(QString::fromLatin1(e.gid.toHex()))
+                                      : e.node);
+        return list;
+    };
+    for (const Ros2Topic& t : topics)
+        g.topics.append({t.name, t.type(), names(t.publishers), names(t.subscribers)});
+    for (const Ros2Node& n : nodes)
+        g.nodes << n.name;
+    return g;
+}

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "topics/topicgraph.h"
+
 #include <optional>
 #include <QByteArray>
 #include <QCoreApplication>
@@ -114,6 +116,9 @@ struct Ros2Graph
     static constexpr int kMaxTypesPerTopic = 16;
 
     const Ros2Topic* topic(const QString& name) const;
+    /// The graph as every view shows one (graph-neutral): nodes as publishers and subscribers (an
+    /// endpoint no node claims as its GUID in parentheses), every node.
+    TopicGraph topicGraph() const;
     /// Puts endpoints and node announcements together; endpoints of DDS topics that are not ROS 2
     /// topics (`ros_discovery_info`, services) are counted, not listed. Each endpoint costs a few
     /// hash lookups (never a scan of what was seen before); an endpoint past a topic's bounds is

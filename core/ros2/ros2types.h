@@ -1,17 +1,28 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/topicfigures.h"
+#include "topics/topicgraph.h"
 
 #include <QByteArray>
+#include <QHash>
 #include <QString>
 #include <QtGlobal>
 
-/// Figures of one monitored ROS 2 topic, as RosMonitorStats are for ROS 1.
+/// Figures of one monitored ROS 2 topic.
 struct Ros2MonitorStats : TopicFigures
 {
     int matchedPublishers = 0;
 };
+
+/// ROS 2 monitor figures as every view takes them (no md5 or definition in ROS 2).
+inline QHash<QString, TopicStats> topicStatsOf(const QHash<QString, Ros2MonitorStats>& ros2)
+{
+    QHash<QString, TopicStats> stats;
+    stats.reserve(ros2.size());
+    for (auto it = ros2.cbegin(); it != ros2.cend(); ++it)
+        static_cast<TopicFigures&>(stats[it.key()]) = *it;
+    return stats;
+}
 
 /// One sample as the monitor saw it, for consumers that need every sample (Watch): the first bytes
 /// of the message after its 4-byte encapsulation header (a Header's stamp, a std_msgs/Float64).

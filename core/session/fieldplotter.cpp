@@ -3,7 +3,7 @@
 
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "wire/fieldpath.h"
@@ -201,7 +201,7 @@ FieldPlotter::Decoding FieldPlotter::decodingOf(PlotField::Source source, const 
         else
             out.registry = &types;
     } else {
-        const RosMonitorStats* stats = m_parts.rosTopics->stats(topic);
+        const TopicStats* stats = m_parts.rosTopics->stats(topic);
         Private::RosType& t = d->rosTypes[topic];
         if (stats && !stats->type.isEmpty() && t.md5 != stats->md5) {
             t.md5 = stats->md5;

@@ -14,7 +14,7 @@
 class LiveSession;
 class MqttTopicTree;
 class Ros2Participant;
-class RosTopicModel;
+class TopicTableModel;
 class RosTypeRegistry;
 struct SourceArrival;
 
@@ -78,7 +78,7 @@ public:
         LiveSources sources;
         const MqttTopicTree* mqttTopics = nullptr; ///< the types mqtt_client announces
         const Ros2Participant* ros2 = nullptr; ///< the ROS 2 graph's types
-        const RosTopicModel* rosTopics = nullptr; ///< the ROS 1 monitor's types and definitions
+        const TopicTableModel* rosTopics = nullptr; ///< the ROS 1 monitor's types and definitions
         /// The ROS 2 definitions ROS 2 samples decode with (they may change while plotting).
         std::function<const RosTypeRegistry&()> ros2Types;
     };

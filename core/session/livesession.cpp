@@ -7,7 +7,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "wire/ros2definitions.h"
 
 #include <algorithm>
@@ -17,11 +17,11 @@ LiveSession::LiveSession(QObject* parent)
     : QObject(parent)
     , m_poller(new RosGraphPoller(this))
     , m_monitor(new RosMonitor(this))
-    , m_rosTopics(new RosTopicModel(this))
+    , m_rosTopics(new TopicTableModel(this))
     , m_mqtt(new MqttConnection(this))
     , m_tree(new MqttTopicTree(this))
     , m_ros2(new Ros2Participant(this))
-    , m_ros2Topics(new RosTopicModel(this))
+    , m_ros2Topics(new TopicTableModel(this))
     , m_mqttSource(std::make_unique<MqttSource>(m_tree))
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
@@ -39,10 +39,10 @@ LiveSession::LiveSession(QObject* parent)
         return self ? self->addMqttListener(std::move(listener)) : -1;
     };
     connect(m_ros2, &Ros2Participant::graphChanged, m_ros2Topics,
-            [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(toRosGraph(graph)); });
+            [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(graph.topicGraph()); });
     // Mon in a topic table subscribes through its graph's source, counted.
-    const auto monitorFrom = [this](RosTopicModel* model, MessageSource* source) {
-        connect(model, &RosTopicModel::monitorRequested, this, [source](const QString& topic, bool on) {
+    const auto monitorFrom = [this](TopicTableModel* model, MessageSource* source) {
+        connect(model, &TopicTableModel::monitorRequested, this, [source](const QString& topic, bool on) {
             if (on)
                 source->monitor(topic);
             else
@@ -55,7 +55,7 @@ LiveSession::LiveSession(QObject* parent)
         qCWarning(lcSession).noquote() << "ROS 2 topic" << topic << "not monitored:" << why;
         m_ros2Topics->setMonitored(topic, false);
     });
-    connect(m_poller, &RosGraphPoller::graphChanged, m_rosTopics, &RosTopicModel::setGraph);
+    connect(m_poller, &RosGraphPoller::graphChanged, m_rosTopics, &TopicTableModel::setGraph);
     connect(m_poller, &RosGraphPoller::masterRestarted, m_monitor, &RosMonitor::resubscribeAll);
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(33);
@@ -102,31 +102,6 @@ void LiveSession::setRos2DefinitionFolders(const QStringList& folders, QStringLi
     m_tree->setRos2Registry(m_ros2Types);
 }
 
-RosGraph LiveSession::toRosGraph(const Ros2Graph& graph)
-{
-    RosGraph g;
-    auto names = [](const QList<Ros2Endpoint>& endpoints) {
-        QStringList list;
-        for (const Ros2Endpoint& e : endpoints)
-            list << (e.node.isEmpty() ? QStringLiteral("(%1)").arg(QString::fromLatin1(e.gid.toHex()))
-                                      : e.node);
-        return list;
-    };
-    for (const Ros2Topic& t : graph.topics)
-        g.topics.append({t.name, t.type(), names(t.publishers), names(t.subscribers)});
-    for (const Ros2Node& n : graph.nodes)
-        g.nodes << n.name;
-    return g;
-}
-
-QHash<QString, RosMonitorStats> LiveSession::toRosStats(const QHash<QString, Ros2MonitorStats>& ros2)
-{
-    QHash<QString, RosMonitorStats> stats;
-    for (auto it = ros2.cbegin(); it != ros2.cend(); ++it)
-        static_cast<TopicFigures&>(stats[it.key()]) = *it; // no md5 or definition in ROS 2
-    return stats;
-}
-
 void LiveSession::connectBroker(const MqttProfile& profile)
 {
     qCDebug(lcSession).noquote() << "broker" << Secrets::urlWithoutCredentials(profile.url) << "history"
@@ -168,7 +143,7 @@ void LiveSession::drainNow()
         m_figuresSetNs = now;
         m_rosTopics->setMonitorStats(m_monitor->snapshot(now), now);
         if (m_ros2->isRunning())
-            m_ros2Topics->setMonitorStats(toRosStats(m_ros2->snapshot(now)), now);
+            m_ros2Topics->setMonitorStats(topicStatsOf(m_ros2->snapshot(now)), now);
     }
     emit drained(now);
 }

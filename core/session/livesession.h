@@ -18,7 +18,7 @@
 class MqttTopicTree;
 class RosGraphPoller;
 class RosMonitor;
-class RosTopicModel;
+class TopicTableModel;
 class RosTypeRegistry;
 
 /// The live side of the application: the ROS master poller, the roscpp monitor, the ROS 2
@@ -62,20 +62,15 @@ public:
     void stopRos2() override;
     bool isRos2Running() const override { return m_ros2->isRunning(); }
     Ros2Participant* ros2() const { return m_ros2; }
-    RosTopicModel* ros2Topics() const { return m_ros2Topics; }
+    TopicTableModel* ros2Topics() const { return m_ros2Topics; }
     /// The ROS 2 definitions ROS 2 samples decode with (bundled, and those under the folders of
     /// setRos2DefinitionFolders()).
     const RosTypeRegistry& ros2Types() const { return *m_ros2Types; }
     void setRos2DefinitionFolders(const QStringList& folders, QStringList* errors = nullptr);
-    /// A ROS 2 graph as the ROS topic table shows one: nodes as publishers and subscribers
-    /// (an endpoint no node claims as its GUID), every node.
-    static RosGraph toRosGraph(const Ros2Graph& graph);
-    /// ROS 2 monitor figures as the ROS topic table takes them.
-    static QHash<QString, RosMonitorStats> toRosStats(const QHash<QString, Ros2MonitorStats>& stats);
 
     RosGraphPoller* rosGraph() const { return m_poller; }
     RosMonitor* rosMonitor() const { return m_monitor; }
-    RosTopicModel* rosTopics() const { return m_rosTopics; }
+    TopicTableModel* rosTopics() const { return m_rosTopics; }
     /// A graph's topics as a MessageSource: the ROS 1 monitor, the ROS 2 participant, or the
     /// broker's topics (fed with every drain's batch before the listeners have it).
     MessageSource* source(SourceGraph graph) const;
@@ -101,11 +96,11 @@ signals:
 private:
     RosGraphPoller* m_poller;
     RosMonitor* m_monitor;
-    RosTopicModel* m_rosTopics;
+    TopicTableModel* m_rosTopics;
     MqttConnection* m_mqtt;
     MqttTopicTree* m_tree;
     Ros2Participant* m_ros2;
-    RosTopicModel* m_ros2Topics;
+    TopicTableModel* m_ros2Topics;
     std::unique_ptr<MqttSource> m_mqttSource;
     LiveSources m_sources;
     std::shared_ptr<const RosTypeRegistry> m_ros2Types;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mappinghealthevaluator.h"
 
-#include "base/topicfigures.h"
+#include "topics/topicfigures.h"
 #include "ros/rosmasterapi.h"
 #include "ros2/ros2graph.h"
 #include "session/flowrates.h"
@@ -112,7 +112,7 @@ QHash<quint64, MappingHealth> MappingHealthEvaluator::evaluate(const BridgeConfi
         MappingHealth h;
         const QString ros = m.rosTopic();
         const QString mqtt = m.mqttTopic();
-        const RosTopicInfo* rosInfo = in.graph ? in.graph->topic(ros) : nullptr;
+        const TopicInfo* rosInfo = in.graph ? in.graph->topic(ros) : nullptr;
         const TopicFigures* mqttInfo = nullptr;
         if (in.mqtt) {
             const auto it = in.mqtt->constFind(mqtt);
@@ -224,7 +224,7 @@ void MappingHealthEvaluator::rateOverOneWindow(const Mapping& m, const Inputs& i
     h->detail = detail;
 }
 
-void MappingHealthEvaluator::overrule(const Mapping& m, const RosTopicInfo* rosInfo, const TopicFigures* mqttInfo,
+void MappingHealthEvaluator::overrule(const Mapping& m, const TopicInfo* rosInfo, const TopicFigures* mqttInfo,
                                       const Inputs& in, MappingHealth* h)
 {
     const QString ros = m.rosTopic();

@@ -7,8 +7,8 @@
 #include <QCoreApplication>
 #include <QHash>
 
-struct RosGraph;
-struct RosTopicInfo;
+struct TopicGraph;
+struct TopicInfo;
 struct Ros2Graph;
 struct Ros2Qos;
 struct TopicFigures;
@@ -16,14 +16,14 @@ class FlowRates;
 
 /// Evaluates every mapping of a config against the ROS graph and the figures of its ROS and MQTT
 /// topics, as their MessageSources give them. For a ROS 2 graph (`ros2` set; `graph` is then its
-/// RosGraph form) it also checks the QoS mqtt_client would use against the topic's endpoints.
+/// TopicGraph form) it also checks the QoS mqtt_client would use against the topic's endpoints.
 class MappingHealthEvaluator
 {
     Q_DECLARE_TR_FUNCTIONS(MappingHealth)
 public:
     struct Inputs
     {
-        const RosGraph* graph = nullptr;
+        const TopicGraph* graph = nullptr;
         bool rosReachable = false;
         const QHash<QString, TopicFigures>* monitored = nullptr; ///< MessageSource::figures()
         /// The mappings' MQTT topics' figures (the MQTT MessageSource's, with their announced type).
@@ -50,6 +50,6 @@ private:
     static void rateOverOneWindow(const Mapping& m, const Inputs& in, MappingHealth* h);
     /// What outranks the flow's verdict: a type announcement that contradicts the ROS graph, a
     /// QoS that keeps the bridge's ROS 2 endpoint from matching; then the last latency is added.
-    static void overrule(const Mapping& m, const RosTopicInfo* rosInfo, const TopicFigures* mqttInfo,
+    static void overrule(const Mapping& m, const TopicInfo* rosInfo, const TopicFigures* mqttInfo,
                          const Inputs& in, MappingHealth* h);
 };

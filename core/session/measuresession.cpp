@@ -70,11 +70,11 @@ QString MeasureSession::rosMasterUri() const
     return m_parts.rosGraph->masterUri();
 }
 
-void MeasureSession::onGraph(const RosGraph& graph)
+void MeasureSession::onGraph(const TopicGraph& graph)
 {
     QSet<QString> stamps;
     QSet<QString> latencies;
-    for (const RosTopicInfo& t : graph.topics) {
+    for (const TopicInfo& t : graph.topics) {
         if (t.type == SourceMessage::stampType(SourceGraph::Ros1))
             stamps.insert(t.name);
         else if (t.type == u"std_msgs/Float64"_s && t.name.contains(u"/latencies/"_s))

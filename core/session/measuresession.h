@@ -22,7 +22,7 @@ class RosGraphPoller;
 class RosStampSource;
 class Ros2Participant;
 class Ros2StampSource;
-struct RosGraph;
+struct TopicGraph;
 struct Ros2Graph;
 
 /// The live measurement: stamps from ROS 1, ROS 2 and MQTT, joined by the latency engine, on the
@@ -143,7 +143,7 @@ signals:
     void stampTopicsChanged();
 
 private:
-    void onGraph(const RosGraph& graph);
+    void onGraph(const TopicGraph& graph);
     void onRos2Graph(const Ros2Graph& graph);
     void onDrained(qint64 nowNs);
     void updateSubscriptions();

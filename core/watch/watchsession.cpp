@@ -193,7 +193,7 @@ void WatchSession::update(qint64 nowNs)
                 if (!it->type.isEmpty())
                     m_monitor->setRosDefinition(it.key(), it->type, QString());
         }
-        const QHash<QString, RosMonitorStats> stats = m_parts.rosMonitor->snapshot(nowNs);
+        const QHash<QString, TopicStats> stats = m_parts.rosMonitor->snapshot(nowNs);
         for (auto it = stats.cbegin(); it != stats.cend(); ++it)
             if (!it->type.isEmpty())
                 m_monitor->setRosDefinition(it.key(), it->type, it->definition);
@@ -218,7 +218,7 @@ void WatchSession::syncRosTopics()
     // subscription needs the type its publishers announce), else through the ROS 1 master.
     const QSet<QString> onRos2 = ros2Published();
     QStringList graphTopics;
-    for (const RosTopicInfo& t : m_parts.rosGraph->graph().topics)
+    for (const TopicInfo& t : m_parts.rosGraph->graph().topics)
         graphTopics << t.name;
     graphTopics << QStringList(onRos2.cbegin(), onRos2.cend());
     const QStringList wanted = m_monitor->rosTopicsToMonitor(graphTopics);

@@ -6,7 +6,7 @@
 #include "mqtt/mqtttopicfilter.h"
 #include "mqtt/mqtttopictree.h"
 #include "mqttclientros2.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "viewhelpers.h"
@@ -154,7 +154,7 @@ private slots:
                 .isValid(),
             15000);
         QTRY_VERIFY_WITH_TIMEOUT(
-            ViewHelpers::find(page->rosView()->model(), u"/vehicle/pose"_s, RosTopicModel::TopicRole)
+            ViewHelpers::find(page->rosView()->model(), u"/vehicle/pose"_s, TopicTableModel::TopicRole)
                 .isValid(),
             20000);
         QVERIFY(page->mqttStatus()->text().contains(u"connected"_s));
@@ -212,14 +212,14 @@ private slots:
 
         // Monitoring a ROS topic subscribes to it; its last message decodes.
         QAbstractItemModel* ros = page->rosView()->model();
-        const QModelIndex rosPose = ViewHelpers::find(ros, u"/vehicle/pose"_s, RosTopicModel::TopicRole);
-        QVERIFY(ros->setData(rosPose.siblingAtColumn(RosTopicModel::MonitorColumn), Qt::Checked,
+        const QModelIndex rosPose = ViewHelpers::find(ros, u"/vehicle/pose"_s, TopicTableModel::TopicRole);
+        QVERIFY(ros->setData(rosPose.siblingAtColumn(TopicTableModel::MonitorColumn), Qt::Checked,
                              Qt::CheckStateRole));
         page->rosView()->setCurrentIndex(rosPose);
         QTRY_VERIFY_WITH_TIMEOUT(
             fieldNames(page->detail()->fieldsView()->model()).contains(u"pose.position.x"_s), 30000);
         QTRY_VERIFY_WITH_TIMEOUT(
-            !rosPose.siblingAtColumn(RosTopicModel::RateColumn).data().toString().isEmpty(), 10000);
+            !rosPose.siblingAtColumn(TopicTableModel::RateColumn).data().toString().isEmpty(), 10000);
         QVERIFY(page->detail()->title()->text().contains(u"base_link"_s)
                 == false); // fields, not the title, hold values
 

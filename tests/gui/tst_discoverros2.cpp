@@ -10,8 +10,8 @@
 #include "config/mappingmodel.h"
 #include "ddschild.h"
 #include "namecheck.h"
-#include "ros/rostopicmodel.h"
-#include "ros/rostopictree.h"
+#include "topics/topictablemodel.h"
+#include "topics/topictree.h"
 #include "ros2peer.h"
 #include "rtpscorpus.h"
 #include "session/livesession.h"
@@ -51,7 +51,7 @@ QStringList column(const QTableView* view, int column)
 
 int rowOf(const QTableView* view, const QString& topic)
 {
-    return int(column(view, RosTopicModel::TopicColumn).indexOf(topic));
+    return int(column(view, TopicTableModel::TopicColumn).indexOf(topic));
 }
 
 /// "name = value" of every top-level field the detail pane shows.
@@ -115,28 +115,28 @@ private slots:
         QTableView* view = page.ros2View();
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/chatter"_s) >= 0 && rowOf(view, u"/blob"_s) >= 0, 15000);
         const int chatter = rowOf(view, u"/chatter"_s);
-        QCOMPARE(column(view, RosTopicModel::TypeColumn).at(chatter), u"std_msgs/msg/String"_s);
-        QCOMPARE(column(view, RosTopicModel::PublishersColumn).at(chatter), u"1"_s);
+        QCOMPARE(column(view, TopicTableModel::TypeColumn).at(chatter), u"std_msgs/msg/String"_s);
+        QCOMPARE(column(view, TopicTableModel::PublishersColumn).at(chatter), u"1"_s);
         QTRY_VERIFY_WITH_TIMEOUT(page.ros2Status()->text().contains(u"topics 2, nodes 1"_s), 5000);
         QVERIFY(page.rosStatus()->text().contains(u"ROS 2 only"_s));
 
         // Monitor, select: decoded fields, QoS and node in the title
-        RosTopicModel* model = session.ros2Topics();
-        QVERIFY(model->setData(model->index(model->rowOf(u"/chatter"_s), RosTopicModel::MonitorColumn),
+        TopicTableModel* model = session.ros2Topics();
+        QVERIFY(model->setData(model->index(model->rowOf(u"/chatter"_s), TopicTableModel::MonitorColumn),
                                Qt::Checked, Qt::CheckStateRole));
-        view->setCurrentIndex(view->model()->index(chatter, RosTopicModel::TopicColumn));
+        view->setCurrentIndex(view->model()->index(chatter, TopicTableModel::TopicColumn));
         DetailPane* detail = page.detail();
         QCOMPARE(detail->topic(), u"/chatter"_s);
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
         QVERIFY2(detail->title()->text().contains(u"/lab/talker (reliable, volatile)"_s),
                  qPrintable(detail->title()->text()));
         QTRY_VERIFY_WITH_TIMEOUT(
-            column(view, RosTopicModel::RateColumn).at(rowOf(view, u"/chatter"_s)).toDouble() > 10, 10000);
+            column(view, TopicTableModel::RateColumn).at(rowOf(view, u"/chatter"_s)).toDouble() > 10, 10000);
 
         // a type without a definition: said so, the bytes shown raw
-        QVERIFY(model->setData(model->index(model->rowOf(u"/blob"_s), RosTopicModel::MonitorColumn),
+        QVERIFY(model->setData(model->index(model->rowOf(u"/blob"_s), TopicTableModel::MonitorColumn),
                                Qt::Checked, Qt::CheckStateRole));
-        view->setCurrentIndex(view->model()->index(rowOf(view, u"/blob"_s), RosTopicModel::TopicColumn));
+        view->setCurrentIndex(view->model()->index(rowOf(view, u"/blob"_s), TopicTableModel::TopicColumn));
         QTRY_VERIFY_WITH_TIMEOUT(
             fields(detail).join(u'|').contains(u"No ROS 2 definition of bridgescope_test/msg/Opaque"_s),
             10000);
@@ -176,19 +176,19 @@ private slots:
         QTRY_VERIFY2_WITH_TIMEOUT(page.ros2Status()->text().contains(u"unreadable node announcements 1"_s),
                                   qPrintable(page.ros2Status()->text()), 10000);
 
-        RosTopicModel* model = session.ros2Topics();
+        TopicTableModel* model = session.ros2Topics();
         for (const QString& topic : {u"/huge"_s, u"/fine"_s})
-            QVERIFY(model->setData(model->index(model->rowOf(topic), RosTopicModel::MonitorColumn),
+            QVERIFY(model->setData(model->index(model->rowOf(topic), TopicTableModel::MonitorColumn),
                                    Qt::Checked, Qt::CheckStateRole));
-        view->setCurrentIndex(view->model()->index(rowOf(view, u"/huge"_s), RosTopicModel::TopicColumn));
+        view->setCurrentIndex(view->model()->index(rowOf(view, u"/huge"_s), TopicTableModel::TopicColumn));
         DetailPane* detail = page.detail();
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"needs 4294967280 more bytes"_s), 10000);
         QVERIFY(!detail->payloadView()->toPlainText().isEmpty()); // the bytes, shown raw
         // the well-formed topic of the same node decodes, and both keep their rates
-        view->setCurrentIndex(view->model()->index(rowOf(view, u"/fine"_s), RosTopicModel::TopicColumn));
+        view->setCurrentIndex(view->model()->index(rowOf(view, u"/fine"_s), TopicTableModel::TopicColumn));
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(
-            column(view, RosTopicModel::RateColumn).at(rowOf(view, u"/huge"_s)).toDouble() > 10, 10000);
+            column(view, TopicTableModel::RateColumn).at(rowOf(view, u"/huge"_s)).toDouble() > 10, 10000);
     }
 
     // Hostile datagrams on the domain (issue 31), which Cyclone DDS goes through, then a crash of
@@ -270,13 +270,13 @@ private slots:
         QCOMPARE(healthOf(page, u"/odom_text"_s), int(MappingHealth::NoBridge));
         // the Map's ROS list is the ROS 2 graph now
         QAbstractItemModel* rosList = page->rosView()->model();
-        QVERIFY(ViewHelpers::find(rosList, u"/scan_text"_s, RosTopicModel::TopicRole).isValid());
+        QVERIFY(ViewHelpers::find(rosList, u"/scan_text"_s, TopicTableModel::TopicRole).isValid());
         // At 1280x800 the ROS 2 types keep their last segment, in the bold of bridged topics too.
         w.resize(1280, 800);
         w.pages()->setCurrentWidget(page);
         QTRY_VERIFY(rosList->rowCount() >= 3);
         // the columns fit themselves 100 ms after a change: wait for the fit
-        for (int column : {int(RosTopicTree::TopicColumn), int(RosTopicTree::TypeColumn)}) {
+        for (int column : {int(TopicTree::TopicColumn), int(TopicTree::TypeColumn)}) {
             QString problem;
             QTRY_VERIFY2_WITH_TIMEOUT((problem = treeNamesShownProblem(page->rosView(), column, 3)).isEmpty(),
                                       qPrintable(problem), 5000);

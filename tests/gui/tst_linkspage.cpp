@@ -76,10 +76,10 @@ struct MasterTopics
 MasterTopics masterTopics(const QString& masterUri, const QString& prefix)
 {
     MasterTopics out;
-    const std::optional<RosGraph> graph = RosMasterApi(masterUri).graph(3000);
+    const std::optional<TopicGraph> graph = RosMasterApi(masterUri).graph(3000);
     if (!graph)
         return out;
-    for (const RosTopicInfo& t : graph->topics) {
+    for (const TopicInfo& t : graph->topics) {
         if (!t.name.startsWith(u'/' + prefix + u'/'))
             continue;
         out.known << t.name;

@@ -13,7 +13,7 @@
 #include "mqtt/mqttprofile.h"
 #include "namecheck.h"
 #include "viewaudit.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "session/livesession.h"
 #include "widgets/common/nameheader.h"
 #include "widgets/discover/discoverpage.h"

@@ -9,7 +9,7 @@
 #include "config/mappingmodel.h"
 #include "fixtures.h"
 #include "mqtt/mqtttopictree.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "viewhelpers.h"
@@ -124,8 +124,8 @@ private slots:
         QAbstractItemModelTester mqttTester(page->mqttView()->model(),
                                             QAbstractItemModelTester::FailureReportingMode::QtTest);
         QTRY_VERIFY_WITH_TIMEOUT(
-            find(page->rosView()->model(), u"/vehicle/speed"_s, RosTopicModel::TopicRole).isValid()
-                && find(page->rosView()->model(), u"/lidar/points"_s, RosTopicModel::TopicRole).isValid(),
+            find(page->rosView()->model(), u"/vehicle/speed"_s, TopicTableModel::TopicRole).isValid()
+                && find(page->rosView()->model(), u"/lidar/points"_s, TopicTableModel::TopicRole).isValid(),
             30000);
         QTRY_VERIFY_WITH_TIMEOUT(
             find(page->mqttView()->model(), u"cloud/objects"_s, MqttTopicTree::FullTopicRole).isValid()
@@ -139,7 +139,7 @@ private slots:
         QAbstractItemView* ros = page->rosView();
         QAbstractItemView* mqtt = page->mqttView();
         QAbstractItemView* table = page->editor()->table();
-        auto rosRow = [&](const QString& t) { return find(ros->model(), t, RosTopicModel::TopicRole); };
+        auto rosRow = [&](const QString& t) { return find(ros->model(), t, TopicTableModel::TopicRole); };
         auto mqttNode
             = [&](const QString& t) { return find(mqtt->model(), t, MqttTopicTree::FullTopicRole); };
 
@@ -223,7 +223,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QAbstractItemView* ros = page->rosView();
         QAbstractItemView* mqtt = page->mqttView();
-        auto rosRow = [&](const QString& t) { return find(ros->model(), t, RosTopicModel::TopicRole); };
+        auto rosRow = [&](const QString& t) { return find(ros->model(), t, TopicTableModel::TopicRole); };
         auto mqttNode
             = [&](const QString& t) { return find(mqtt->model(), t, MqttTopicTree::FullTopicRole); };
         QTRY_VERIFY_WITH_TIMEOUT(rosRow(u"/lidar/points"_s).isValid(), 30000);

@@ -7,7 +7,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "resulttext.h"
 #include "ros/rosmonitor.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "ros2peer.h"
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
@@ -577,9 +577,9 @@ private slots:
                        u"/plot/blob:bridgescope_test/msg/Opaque:20"_s});
         QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
 
-        RosTopicModel* model = session.ros2Topics();
+        TopicTableModel* model = session.ros2Topics();
         QTRY_VERIFY_WITH_TIMEOUT(model->rowOf(u"/plot/pose"_s) >= 0, 15000);
-        const QModelIndex monitor = model->index(model->rowOf(u"/plot/pose"_s), RosTopicModel::MonitorColumn);
+        const QModelIndex monitor = model->index(model->rowOf(u"/plot/pose"_s), TopicTableModel::MonitorColumn);
         QVERIFY(model->setData(monitor, Qt::Checked, Qt::CheckStateRole));
         DetailPane* detail = page.detail();
         detail->showRos2Topic(u"/plot/pose"_s);

@@ -15,7 +15,7 @@
 #include "latency/pipelinemodel.h"
 #include "mqtt/mqtttopictree.h"
 #include "namecheck.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
@@ -159,9 +159,9 @@ class TestRestoredState : public QObject
         w.pages()->setCurrentWidget(w.discoverPage());
         QTRY_VERIFY(rosView->model()->rowCount() > 5);
         checkFigures(rosView,
-                     allBut(rosView->model(), {RosTopicModel::TopicColumn, RosTopicModel::TypeColumn}));
-        checkNames(rosView, RosTopicModel::TopicColumn, 5);
-        checkNames(rosView, RosTopicModel::TypeColumn, 5);
+                     allBut(rosView->model(), {TopicTableModel::TopicColumn, TopicTableModel::TypeColumn}));
+        checkNames(rosView, TopicTableModel::TopicColumn, 5);
+        checkNames(rosView, TopicTableModel::TypeColumn, 5);
         QTreeView* tree = w.discoverPage()->mqttView();
         checkFigures(tree,
                      {MqttTopicTree::MessagesColumn, MqttTopicTree::RateColumn, MqttTopicTree::BytesColumn,
@@ -262,8 +262,8 @@ private slots:
             QVERIFY(w.grab().save(dir + u"/restored-discover.png"_s));
         // The ROS names keep their last levels whole and stay told apart (it showed
         // `/b…/t…/…cloud/…` and `g…/PoseArray`).
-        checkNames(ros, RosTopicModel::TopicColumn, 19);
-        checkNames(ros, RosTopicModel::TypeColumn, 19);
+        checkNames(ros, TopicTableModel::TopicColumn, 19);
+        checkNames(ros, TopicTableModel::TypeColumn, 19);
 
         // The selection opened the detail: its tabs whole, side by side.
         QTabBar* tabs = discover->detail()->findChild<QTabWidget*>()->tabBar();

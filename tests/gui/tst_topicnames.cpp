@@ -12,8 +12,8 @@
 #include "mqtt/mqtttopictree.h"
 #include "namecheck.h"
 #include "resulttext.h"
-#include "ros/rostopicmodel.h"
-#include "ros/rostopictree.h"
+#include "topics/topictablemodel.h"
+#include "topics/topictree.h"
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
@@ -111,11 +111,11 @@ private:
     {
         MainWindow* w = m_window.get();
         w->pages()->setCurrentWidget(w->discoverPage());
-        checkNames(w->discoverPage()->rosView(), RosTopicModel::TopicColumn, 19);
-        checkNames(w->discoverPage()->rosView(), RosTopicModel::TypeColumn, 19);
+        checkNames(w->discoverPage()->rosView(), TopicTableModel::TopicColumn, 19);
+        checkNames(w->discoverPage()->rosView(), TopicTableModel::TypeColumn, 19);
         w->pages()->setCurrentWidget(w->mapPage());
         // The Map's ROS topics are a namespace tree: every row's own segment whole.
-        for (int column : {int(RosTopicTree::TopicColumn), int(RosTopicTree::TypeColumn)}) {
+        for (int column : {int(TopicTree::TopicColumn), int(TopicTree::TypeColumn)}) {
             QString problem;
             (void)QTest::qWaitFor(
                 [&] { return (problem = treeNamesShownProblem(w->mapPage()->rosView(), column, 19)).isEmpty(); },
@@ -205,9 +205,9 @@ private slots:
         QHash<QString, QString> nameOf;
         int joined = 0;
         for (int r = 0; r < model->rowCount(); ++r) {
-            const QString name = model->index(r, RosTopicModel::TopicColumn).data().toString();
+            const QString name = model->index(r, TopicTableModel::TopicColumn).data().toString();
             const QString elided = map->fontMetrics().elidedText(
-                name, Qt::ElideMiddle, map->columnWidth(RosTopicTree::TopicColumn) - 8);
+                name, Qt::ElideMiddle, map->columnWidth(TopicTree::TopicColumn) - 8);
             joined += nameOf.value(elided, name) != name;
             nameOf.insert(elided, name);
         }
@@ -362,7 +362,7 @@ private slots:
     void fullNameInTheTooltip()
     {
         QTableView* view = m_window->discoverPage()->rosView();
-        const QModelIndex index = view->model()->index(0, RosTopicModel::TopicColumn);
+        const QModelIndex index = view->model()->index(0, TopicTableModel::TopicColumn);
         QCOMPARE(index.data(Qt::ToolTipRole).toString(), index.data().toString());
     }
 
@@ -378,11 +378,11 @@ private slots:
         const QAbstractItemModel* model = view->model();
         QModelIndex row;
         for (int r = 0; r < model->rowCount(); ++r)
-            if (model->index(r, RosTopicModel::TopicColumn).data().toString() == topic)
-                row = model->index(r, RosTopicModel::MonitorColumn);
+            if (model->index(r, TopicTableModel::TopicColumn).data().toString() == topic)
+                row = model->index(r, TopicTableModel::MonitorColumn);
         QVERIFY2(row.isValid(), "the demo has no latency topic");
         QVERIFY(view->model()->setData(row, Qt::Checked, Qt::CheckStateRole));
-        view->setCurrentIndex(row.siblingAtColumn(RosTopicModel::TopicColumn));
+        view->setCurrentIndex(row.siblingAtColumn(TopicTableModel::TopicColumn));
         DetailPane* detail = w->discoverPage()->detail();
         QTRY_COMPARE(detail->topic(), topic);
         const auto dataField = [detail]() -> QModelIndex {

@@ -452,11 +452,11 @@ private slots:
     }
 
     /// The type the master lists for `topic`, and who publishes it.
-    RosTopicInfo masterTopic(const QString& topic)
+    TopicInfo masterTopic(const QString& topic)
     {
-        const std::optional<RosGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
-        const RosTopicInfo* t = g ? g->topic(topic) : nullptr;
-        return t ? *t : RosTopicInfo();
+        const std::optional<TopicGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
+        const TopicInfo* t = g ? g->topic(topic) : nullptr;
+        return t ? *t : TopicInfo();
     }
 
     // Issue 31: a ROS flood towards a broker that does not read grew the bridge by 80 MB/s to

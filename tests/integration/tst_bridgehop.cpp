@@ -248,8 +248,8 @@ private slots:
         QTRY_VERIFY2_WITH_TIMEOUT(log1.contains(u"bridging 5 mapping"_s), qPrintable(log1), 20000);
         QTRY_VERIFY2_WITH_TIMEOUT(log2.contains(u"bridging 5 mapping"_s), qPrintable(log2), 20000);
         const auto ros1Advertised = [this] {
-            const std::optional<RosGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
-            const RosTopicInfo* t = g ? g->topic(u"/hop/pose_back"_s) : nullptr;
+            const std::optional<TopicGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
+            const TopicInfo* t = g ? g->topic(u"/hop/pose_back"_s) : nullptr;
             return t && !t->publishers.isEmpty();
         };
         const auto ros2Advertised = [&dds] {

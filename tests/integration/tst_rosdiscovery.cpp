@@ -4,7 +4,7 @@
 #include "resulttext.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "testservers.h"
 #include "wire/rosmessage.h"
 
@@ -52,7 +52,7 @@ private:
     QProcess m_process;
 };
 
-const RosTopicInfo* topic(const RosGraphPoller& poller, const QString& name)
+const TopicInfo* topic(const RosGraphPoller& poller, const QString& name)
 {
     return poller.graph().topic(name);
 }
@@ -77,9 +77,9 @@ private slots:
         poller.setMasterUri(m_servers.rosMasterUri());
         poller.start(200);
         QTRY_VERIFY_WITH_TIMEOUT(poller.isReachable(), 10000);
-        RosTopicModel model;
+        TopicTableModel model;
         QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
-        connect(&poller, &RosGraphPoller::graphChanged, &model, &RosTopicModel::setGraph);
+        connect(&poller, &RosGraphPoller::graphChanged, &model, &TopicTableModel::setGraph);
 
         auto pub = std::make_unique<Node>(
             m_servers,
@@ -89,15 +89,15 @@ private slots:
                                      && topic(poller, u"/chatter"_s)->publishers.size() == 1
                                      && topic(poller, u"/chatter"_s)->subscribers.size() == 1,
                                  20000);
-        const RosTopicInfo* t = topic(poller, u"/chatter"_s);
+        const TopicInfo* t = topic(poller, u"/chatter"_s);
         QCOMPARE(t->type, u"std_msgs/String"_s);
         QVERIFY(t->publishers.first().startsWith(u"/rostopic_"_s));
         QVERIFY(t->subscribers.first() != t->publishers.first());
         QVERIFY(poller.graph().nodes.contains(t->publishers.first()));
         const int row = model.rowOf(u"/chatter"_s);
         QVERIFY(row >= 0);
-        QCOMPARE(model.index(row, RosTopicModel::TypeColumn).data().toString(), u"std_msgs/String"_s);
-        QCOMPARE(model.index(row, RosTopicModel::PublishersColumn).data().toString(), u"1"_s);
+        QCOMPARE(model.index(row, TopicTableModel::TypeColumn).data().toString(), u"std_msgs/String"_s);
+        QCOMPARE(model.index(row, TopicTableModel::PublishersColumn).data().toString(), u"1"_s);
 
         pub->stop();
         QTRY_VERIFY_WITH_TIMEOUT(
@@ -118,7 +118,7 @@ private slots:
         monitor.monitor(u"/pose"_s);
         QVERIFY(monitor.isMonitored(u"/pose"_s));
         QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/pose"_s).messages >= 15, 30000);
-        const RosMonitorStats s = monitor.snapshot(nowNs()).value(u"/pose"_s);
+        const TopicStats s = monitor.snapshot(nowNs()).value(u"/pose"_s);
         QCOMPARE(s.type, u"geometry_msgs/PoseStamped"_s);
         QCOMPARE(s.md5, u"d3812c3cbc69362b77dc0b19b345f8f5"_s);
         // rostopic pub -r 10: the measured rate is near 10 Hz (wide bounds: a loaded CI machine).

@@ -122,7 +122,7 @@ private slots:
         const Mapping mismatch = Mapping::create(Direction::Ros2Mqtt, u"/e"_s, u"e"_s);
         cfg.mappings = {flowing, noBridge, missing, idle, inFlowing, inNoBridge, mismatch};
 
-        RosGraph graph;
+        TopicGraph graph;
         graph.topics = {{u"/a"_s, u"std_msgs/String"_s, {u"/talker"_s}, {u"/mqtt_client"_s}},
                         {u"/b"_s, u"std_msgs/String"_s, {u"/talker"_s}, {}},
                         {u"/c"_s, u"std_msgs/String"_s, {u"/mqtt_client"_s}, {}},
@@ -178,7 +178,7 @@ private slots:
         const Mapping in2 = Mapping::create(Direction::Mqtt2Ros, u"/c"_s, u"c"_s);
         const Mapping extra = Mapping::create(Direction::Ros2Mqtt, u"/e"_s, u"e"_s);
         cfg.mappings = {out, in2, extra};
-        RosGraph graph;
+        TopicGraph graph;
         graph.topics = {{u"/a"_s, u"std_msgs/String"_s, {u"/talker"_s}, {u"/mqtt_client"_s}},
                         {u"/c"_s, u"std_msgs/String"_s, {u"/mqtt_client"_s}, {}},
                         {u"/e"_s, u"std_msgs/String"_s, {u"/talker"_s}, {u"/mqtt_client"_s}}};
@@ -295,7 +295,7 @@ private slots:
             endpoint(6, u"/e"_s, true, Ros2Qos::Reliable, Ros2Qos::TransientLocal, u"/mqtt_client"_s),
             endpoint(7, u"/e"_s, false, Ros2Qos::Reliable, Ros2Qos::TransientLocal, u"/planner"_s)};
         const Ros2Graph ros2 = Ros2Graph::build(endpoints, {}, 3);
-        RosGraph graph;
+        TopicGraph graph;
         for (const Ros2Topic& t : ros2.topics)
             graph.topics.append({t.name, t.type(), {u"/x"_s}, {}});
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rostopicview.h"
 
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/viewsetup.h"
@@ -21,21 +21,21 @@ RosTopicView::RosTopicView(QAbstractItemModel* source, const QString& placeholde
     m_filter->setPlaceholderText(placeholder);
     m_filter->setClearButtonEnabled(true);
     m_proxy->setSourceModel(source);
-    m_proxy->setSortRole(RosTopicModel::SortRole);
+    m_proxy->setSortRole(TopicTableModel::SortRole);
     m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
     m_proxy->setFilterKeyColumn(-1);
     m_table->setModel(m_proxy);
-    ViewSetup::records(m_table, RosTopicModel::TopicColumn);
-    m_topicDelegate = NameDelegate::install(m_table, RosTopicModel::TopicColumn);
-    NameDelegate::install(m_table, RosTopicModel::TypeColumn);
+    ViewSetup::records(m_table, TopicTableModel::TopicColumn);
+    m_topicDelegate = NameDelegate::install(m_table, TopicTableModel::TopicColumn);
+    NameDelegate::install(m_table, TopicTableModel::TypeColumn);
     m_fitter = new ColumnFitter(m_table);
     QList<int> figures;
-    for (int c = 0; c < RosTopicModel::ColumnCount; ++c)
-        if (c != RosTopicModel::TopicColumn && c != RosTopicModel::TypeColumn)
+    for (int c = 0; c < TopicTableModel::ColumnCount; ++c)
+        if (c != TopicTableModel::TopicColumn && c != TopicTableModel::TypeColumn)
             figures << c;
     m_fitter->figures(figures); // rates change every second: measured then, not at every cell
-    m_fitter->fit(RosTopicModel::TypeColumn, 0.25);
-    m_fitter->fit(RosTopicModel::TopicColumn, 0.55);
+    m_fitter->fit(TopicTableModel::TypeColumn, 0.25);
+    m_fitter->fit(TopicTableModel::TopicColumn, 0.55);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_filter);
@@ -45,6 +45,6 @@ RosTopicView::RosTopicView(QAbstractItemModel* source, const QString& placeholde
 
 void RosTopicView::showOnly(const QList<int>& columns)
 {
-    for (int c = 0; c < RosTopicModel::ColumnCount; ++c)
+    for (int c = 0; c < TopicTableModel::ColumnCount; ++c)
         m_table->setColumnHidden(c, !columns.contains(c));
 }

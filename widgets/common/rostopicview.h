@@ -12,7 +12,7 @@ class ColumnFitter;
 class NameDelegate;
 
 /// The ROS graph's topics as a filterable, sortable table: a filter line over a table of `source`
-/// (a RosTopicModel, or a proxy of one), matched in every column, case-insensitive. The ROS side
+/// (a TopicTableModel, or a proxy of one), matched in every column, case-insensitive. The ROS side
 /// of the Discover and Map pages.
 ///
 /// Names are what people look for: the topic and type columns draw through NameDelegate (rows stay
@@ -27,7 +27,7 @@ public:
     QLineEdit* filterEdit() const { return m_filter; }
     QSortFilterProxyModel* proxy() const { return m_proxy; }
     QTableView* table() const { return m_table; }
-    /// Hides every column but these (RosTopicModel's column numbers).
+    /// Hides every column but these (TopicTableModel's column numbers).
     void showOnly(const QList<int>& columns);
     NameDelegate* topicDelegate() const { return m_topicDelegate; }
 

@@ -3,7 +3,7 @@
 
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "ros2/ros2participant.h"
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
@@ -601,9 +601,9 @@ void DetailPane::refreshMqtt(bool force)
 void DetailPane::refreshRos(bool force)
 {
     const bool ros2 = m_kind == Kind::Ros2;
-    const RosTopicModel* model = ros2 ? m_parts.ros2Topics : m_parts.live.rosTopics;
-    const RosTopicInfo* t = model->graph().topic(m_topic);
-    const RosMonitorStats* s = model->stats(m_topic);
+    const TopicTableModel* model = ros2 ? m_parts.ros2Topics : m_parts.live.rosTopics;
+    const TopicInfo* t = model->graph().topic(m_topic);
+    const TopicStats* s = model->stats(m_topic);
     const qint64 now = QDateTime::currentMSecsSinceEpoch() * 1000000LL;
     if (s && now - m_lastRosSample >= 1000000000LL) {
         m_lastRosSample = now;

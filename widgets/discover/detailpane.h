@@ -20,7 +20,7 @@ class QTabWidget;
 class QTableWidget;
 class QTreeView;
 class RateChart;
-class RosTopicModel;
+class TopicTableModel;
 struct RosValue;
 
 /// What one selected topic carries: its fields (decoded ROS message or JSON), the raw payload
@@ -39,7 +39,7 @@ public:
     struct Parts
     {
         FieldPlotter::Parts live;
-        const RosTopicModel* ros2Topics = nullptr;
+        const TopicTableModel* ros2Topics = nullptr;
     };
 
     /// The parts of a live session the pane reads.

@@ -5,7 +5,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "mqtt/passwordstore.h"
 #include "ros/rosgraphpoller.h"
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 #include "session/livesession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
@@ -219,11 +219,11 @@ QWidget* DiscoverPage::createRosPane()
     // columns are empty, and their room goes to the names.
     for (auto [box, model] : {std::pair(rosBox, m_parts.rosTopics), std::pair(ros2Box, m_parts.ros2Topics)}) {
         const auto update = [table = box->table(), model = model] {
-            for (int c : {RosTopicModel::RateColumn, RosTopicModel::BandwidthColumn,
-                          RosTopicModel::SizeColumn, RosTopicModel::AgeColumn})
+            for (int c : {TopicTableModel::RateColumn, TopicTableModel::BandwidthColumn,
+                          TopicTableModel::SizeColumn, TopicTableModel::AgeColumn})
                 table->setColumnHidden(c, model->monitoredCount() == 0);
         };
-        connect(model, &RosTopicModel::monitorRequested, box, update);
+        connect(model, &TopicTableModel::monitorRequested, box, update);
         // and after the window's memory brought back an older session's columns
         connect(model, &QAbstractItemModel::rowsInserted, box, update);
         connect(model, &QAbstractItemModel::modelReset, box, update);
@@ -486,14 +486,14 @@ void DiscoverPage::connectSelection()
     connect(m_rosView->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
                 if (i.isValid()) {
-                    m_detail->showRosTopic(i.data(RosTopicModel::TopicRole).toString());
+                    m_detail->showRosTopic(i.data(TopicTableModel::TopicRole).toString());
                     selectTopic();
                 }
             });
     connect(m_ros2View->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& i) {
                 if (i.isValid()) {
-                    m_detail->showRos2Topic(i.data(RosTopicModel::TopicRole).toString());
+                    m_detail->showRos2Topic(i.data(TopicTableModel::TopicRole).toString());
                     selectTopic();
                 }
             });

@@ -12,7 +12,7 @@ class PublishDialog;
 class QAction;
 class MqttTopicTree;
 class RosGraphPoller;
-class RosTopicModel;
+class TopicTableModel;
 class MqttTopicFilter;
 class PasswordStore;
 class QCheckBox;
@@ -45,8 +45,8 @@ public:
     struct Parts
     {
         SessionControls* controls = nullptr;
-        RosTopicModel* rosTopics = nullptr;
-        RosTopicModel* ros2Topics = nullptr;
+        TopicTableModel* rosTopics = nullptr;
+        TopicTableModel* ros2Topics = nullptr;
         MqttTopicTree* mqttTopics = nullptr;
         MqttConnection* mqtt = nullptr;
         const RosGraphPoller* rosGraph = nullptr;

@@ -9,8 +9,8 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
-#include "ros/rostopicmodel.h"
-#include "ros/rostopictree.h"
+#include "topics/topictablemodel.h"
+#include "topics/topictree.h"
 #include "session/livesession.h"
 #include "session/mappinghealthevaluator.h"
 #include "widgets/common/viewsetup.h"
@@ -162,15 +162,15 @@ QWidget* MapPage::createTopicsPanel()
 /// Discovered ROS topics as a namespace tree (as the MQTT topics below), the bridged ones marked.
 QWidget* MapPage::createRosPane()
 {
-    m_rosTree = new RosTopicTree(this);
+    m_rosTree = new TopicTree(this);
     m_rosTree->setSourceModel(m_parts.rosTopics);
-    m_rosBridged = new BridgedTopicsProxy(RosTopicModel::TopicRole, this);
+    m_rosBridged = new BridgedTopicsProxy(TopicTableModel::TopicRole, this);
     m_rosBridged->setSourceModel(m_rosTree);
     m_rosFilter = new QSortFilterProxyModel(this);
     m_rosFilter->setSourceModel(m_rosBridged);
     m_rosFilter->setRecursiveFilteringEnabled(true); // a match keeps its namespaces
-    m_rosFilter->setFilterRole(RosTopicTree::PathRole);
-    m_rosFilter->setFilterKeyColumn(RosTopicTree::TopicColumn);
+    m_rosFilter->setFilterRole(TopicTree::PathRole);
+    m_rosFilter->setFilterKeyColumn(TopicTree::TopicColumn);
     m_rosFilter->setFilterCaseSensitivity(Qt::CaseInsensitive);
     auto* box = new QWidget(this);
     auto* v = new QVBoxLayout(box);
@@ -188,11 +188,11 @@ QWidget* MapPage::createRosPane()
     ViewSetup::dragsCopies(m_rosView);
     QHeaderView* header = m_rosView->header();
     header->setStretchLastSection(false);
-    header->setSectionResizeMode(RosTopicTree::TopicColumn, QHeaderView::Stretch);
-    header->setSectionResizeMode(RosTopicTree::TypeColumn, QHeaderView::Interactive);
+    header->setSectionResizeMode(TopicTree::TopicColumn, QHeaderView::Stretch);
+    header->setSectionResizeMode(TopicTree::TypeColumn, QHeaderView::Interactive);
     // The names get the panel's width; a type shows its last segment (whole in its tooltip).
-    m_rosView->setColumnHidden(RosTopicTree::PublishersColumn, true);
-    m_rosView->setColumnWidth(RosTopicTree::TypeColumn, 105); // `PointCloud2`, `PoseStamped` in bold
+    m_rosView->setColumnHidden(TopicTree::PublishersColumn, true);
+    m_rosView->setColumnWidth(TopicTree::TypeColumn, 105); // `PointCloud2`, `PoseStamped` in bold
     v->addWidget(m_rosView, 1);
     connect(filter, &QLineEdit::textChanged, m_rosFilter, [this](const QString& text) {
         m_rosFilter->setFilterFixedString(text);
@@ -435,7 +435,7 @@ void MapPage::bridgeSelectedMqtt()
     const QModelIndex target = m_rosView->currentIndex();
     bridgeMqttTopics(topics,
                      target.isValid() && m_rosView->selectionModel()->isSelected(target)
-                         ? target.data(RosTopicTree::PathRole).toString()
+                         ? target.data(TopicTree::PathRole).toString()
                          : QString());
 }
 
@@ -483,7 +483,7 @@ void MapPage::updateHealth()
     const qint64 now = wallClockNs();
     // A config in the ROS 2 layout maps against the ROS 2 graph when the Discover page shows one.
     const bool ros2 = usesRos2();
-    RosTopicModel* topics = ros2 ? m_parts.ros2Topics : m_parts.rosTopics;
+    TopicTableModel* topics = ros2 ? m_parts.ros2Topics : m_parts.rosTopics;
     if (m_rosTree->sourceModel() != topics) {
         m_rosTree->setSourceModel(topics);
         m_flows.clear(); // other topics, other counts
@@ -494,9 +494,8 @@ void MapPage::updateHealth()
     const QHash<QString, TopicFigures> mqtt = m_parts.sources.mqtt->figures(now);
     // Both ends' counts at this one instant: the rates shown compare the same interval.
     m_flows.sample(now, monitored, mqtt);
-    const RosGraph ros2Graph = ros2 ? LiveSession::toRosGraph(m_parts.ros2->graph()) : RosGraph();
     MappingHealthEvaluator::Inputs in;
-    in.graph = ros2 ? &ros2Graph : &m_parts.rosGraph->graph();
+    in.graph = ros2 ? &m_parts.ros2Topics->graph() : &m_parts.rosGraph->graph();
     in.rosReachable = ros2 || m_parts.rosGraph->isReachable(); // ROS 2 has no master to miss
     in.ros2 = ros2 ? &m_parts.ros2->graph() : nullptr;
     in.monitored = &monitored;

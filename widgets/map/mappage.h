@@ -30,8 +30,8 @@ class QTimer;
 class QTreeView;
 class QUndoStack;
 class RosGraphPoller;
-class RosTopicModel;
-class RosTopicTree;
+class TopicTableModel;
+class TopicTree;
 class Ros2Participant;
 
 /// The Map page: the config's mappings across the page, the inspector and problems below them,
@@ -48,8 +48,8 @@ public:
     struct Parts
     {
         LiveSources sources;
-        RosTopicModel* rosTopics = nullptr;
-        RosTopicModel* ros2Topics = nullptr;
+        TopicTableModel* rosTopics = nullptr;
+        TopicTableModel* ros2Topics = nullptr;
         MqttTopicTree* mqttTopics = nullptr;
         const RosGraphPoller* rosGraph = nullptr;
         const Ros2Participant* ros2 = nullptr;
@@ -64,7 +64,7 @@ public:
 
     ConfigEditor* editor() const { return m_editor; }
     QTreeView* rosView() const { return m_rosView; }
-    RosTopicTree* rosTree() const { return m_rosTree; }
+    TopicTree* rosTree() const { return m_rosTree; }
     /// Shows or folds away the panel of discovered topics.
     QAction* topicsPanelAction() const { return m_showTopics; }
     QTreeView* mqttView() const { return m_mqttView; }
@@ -125,7 +125,7 @@ private:
     QAction* m_toRos;
     BridgedTopicsProxy* m_rosBridged;
     QSortFilterProxyModel* m_rosFilter;
-    RosTopicTree* m_rosTree;
+    TopicTree* m_rosTree;
     QTreeView* m_rosView;
     QWidget* m_topicsPanel;
     QAction* m_showTopics;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "rostopictree.h"
+#include "topictree.h"
 
 #include "base/topicmime.h"
 
@@ -9,16 +9,16 @@
 
 using namespace Qt::StringLiterals;
 
-RosTopicTree::RosTopicTree(QObject* parent)
+TopicTree::TopicTree(QObject* parent)
     : QAbstractItemModel(parent)
     , m_root(std::make_unique<Node>())
 {
     m_root->path = u"/"_s;
 }
 
-RosTopicTree::~RosTopicTree() = default;
+TopicTree::~TopicTree() = default;
 
-void RosTopicTree::setSourceModel(RosTopicModel* source)
+void TopicTree::setSourceModel(TopicTableModel* source)
 {
     if (source == m_source)
         return;
@@ -35,27 +35,27 @@ void RosTopicTree::setSourceModel(RosTopicModel* source)
                                      sourceRowsAboutToBeRemoved(first, last);
                                  })
                       << connect(source, &QAbstractItemModel::dataChanged, this,
-                                 &RosTopicTree::sourceDataChanged)
-                      << connect(source, &QAbstractItemModel::modelReset, this, &RosTopicTree::rebuild)
-                      << connect(source, &QAbstractItemModel::layoutChanged, this, &RosTopicTree::rebuild)
+                                 &TopicTree::sourceDataChanged)
+                      << connect(source, &QAbstractItemModel::modelReset, this, &TopicTree::rebuild)
+                      << connect(source, &QAbstractItemModel::layoutChanged, this, &TopicTree::rebuild)
                       << connect(source, &QObject::destroyed, this, [this] { setSourceModel(nullptr); });
     }
     rebuild();
 }
 
-int RosTopicTree::sourceColumn(int column)
+int TopicTree::sourceColumn(int column)
 {
     switch (column) {
     case TypeColumn:
-        return RosTopicModel::TypeColumn;
+        return TopicTableModel::TypeColumn;
     case PublishersColumn:
-        return RosTopicModel::PublishersColumn;
+        return TopicTableModel::PublishersColumn;
     default:
-        return RosTopicModel::TopicColumn;
+        return TopicTableModel::TopicColumn;
     }
 }
 
-bool RosTopicTree::before(const Node& a, bool topic, const QString& segment)
+bool TopicTree::before(const Node& a, bool topic, const QString& segment)
 {
     // Namespaces first, then topics, each by name (as file managers list folders and files).
     if (a.isTopic != topic)
@@ -63,7 +63,7 @@ bool RosTopicTree::before(const Node& a, bool topic, const QString& segment)
     return a.segment < segment;
 }
 
-int RosTopicTree::rowOf(const Node* node) const
+int TopicTree::rowOf(const Node* node) const
 {
     const Node* parent = node->parent;
     auto it = std::lower_bound(
@@ -74,25 +74,25 @@ int RosTopicTree::rowOf(const Node* node) const
     return int(it - parent->children.cbegin());
 }
 
-QModelIndex RosTopicTree::indexOfNode(const Node* node, int column) const
+QModelIndex TopicTree::indexOfNode(const Node* node, int column) const
 {
     if (!node || node == m_root.get())
         return {};
     return createIndex(rowOf(node), column, const_cast<Node*>(node));
 }
 
-RosTopicTree::Node* RosTopicTree::nodeOf(const QModelIndex& index) const
+TopicTree::Node* TopicTree::nodeOf(const QModelIndex& index) const
 {
     return index.isValid() ? static_cast<Node*>(index.internalPointer()) : m_root.get();
 }
 
-QModelIndex RosTopicTree::indexOf(const QString& path, int column) const
+QModelIndex TopicTree::indexOf(const QString& path, int column) const
 {
     const Node* n = path.endsWith(u'/') ? m_namespaces.value(path) : m_topics.value(path);
     return n ? indexOfNode(n, column) : QModelIndex();
 }
 
-void RosTopicTree::rebuild()
+void TopicTree::rebuild()
 {
     beginResetModel();
     m_root->children.clear();
@@ -100,13 +100,13 @@ void RosTopicTree::rebuild()
     m_namespaces.clear();
     if (m_source) {
         for (int r = 0; r < m_source->rowCount(); ++r)
-            addTopic(m_source->index(r, RosTopicModel::TopicColumn).data(RosTopicModel::TopicRole).toString(),
+            addTopic(m_source->index(r, TopicTableModel::TopicColumn).data(TopicTableModel::TopicRole).toString(),
                      false);
     }
     endResetModel();
 }
 
-RosTopicTree::Node* RosTopicTree::insertChild(Node* parent, const QString& segment, const QString& path,
+TopicTree::Node* TopicTree::insertChild(Node* parent, const QString& segment, const QString& path,
                                               bool isTopic, bool announce)
 {
     auto& children = parent->children;
@@ -129,7 +129,7 @@ RosTopicTree::Node* RosTopicTree::insertChild(Node* parent, const QString& segme
     return raw;
 }
 
-void RosTopicTree::addTopic(const QString& name, bool announce)
+void TopicTree::addTopic(const QString& name, bool announce)
 {
     const QStringList parts = name.split(u'/', Qt::SkipEmptyParts);
     if (parts.isEmpty() || m_topics.contains(name))
@@ -144,7 +144,7 @@ void RosTopicTree::addTopic(const QString& name, bool announce)
     insertChild(parent, parts.last(), name, true, announce);
 }
 
-void RosTopicTree::removeTopic(const QString& name)
+void TopicTree::removeTopic(const QString& name)
 {
     Node* n = m_topics.value(name);
     // The topic's row, then every namespace it leaves empty.
@@ -159,27 +159,27 @@ void RosTopicTree::removeTopic(const QString& name)
     }
 }
 
-void RosTopicTree::sourceRowsInserted(int first, int last)
+void TopicTree::sourceRowsInserted(int first, int last)
 {
     for (int r = first; r <= last; ++r)
-        addTopic(m_source->index(r, RosTopicModel::TopicColumn).data(RosTopicModel::TopicRole).toString(),
+        addTopic(m_source->index(r, TopicTableModel::TopicColumn).data(TopicTableModel::TopicRole).toString(),
                  true);
 }
 
-void RosTopicTree::sourceRowsAboutToBeRemoved(int first, int last)
+void TopicTree::sourceRowsAboutToBeRemoved(int first, int last)
 {
     for (int r = first; r <= last; ++r)
-        removeTopic(m_source->index(r, RosTopicModel::TopicColumn).data(RosTopicModel::TopicRole).toString());
+        removeTopic(m_source->index(r, TopicTableModel::TopicColumn).data(TopicTableModel::TopicRole).toString());
 }
 
-void RosTopicTree::sourceDataChanged(const QModelIndex& topLeft, const QModelIndex& bottomRight,
+void TopicTree::sourceDataChanged(const QModelIndex& topLeft, const QModelIndex& bottomRight,
                                      const QList<int>& roles)
 {
     // One signal per namespace whose topics changed, spanning their rows.
     QHash<const Node*, std::pair<int, int>> spans;
     for (int r = topLeft.row(); r <= bottomRight.row(); ++r) {
         const Node* n = m_topics.value(
-            m_source->index(r, RosTopicModel::TopicColumn).data(RosTopicModel::TopicRole).toString());
+            m_source->index(r, TopicTableModel::TopicColumn).data(TopicTableModel::TopicRole).toString());
         if (!n)
             continue;
         const int row = rowOf(n);
@@ -195,7 +195,7 @@ void RosTopicTree::sourceDataChanged(const QModelIndex& topLeft, const QModelInd
     }
 }
 
-QModelIndex RosTopicTree::index(int row, int column, const QModelIndex& parent) const
+QModelIndex TopicTree::index(int row, int column, const QModelIndex& parent) const
 {
     if (row < 0 || column < 0 || column >= ColumnCount || (parent.isValid() && parent.column() != 0))
         return {};
@@ -205,31 +205,31 @@ QModelIndex RosTopicTree::index(int row, int column, const QModelIndex& parent) 
     return createIndex(row, column, p->children[size_t(row)].get());
 }
 
-QModelIndex RosTopicTree::parent(const QModelIndex& child) const
+QModelIndex TopicTree::parent(const QModelIndex& child) const
 {
     if (!child.isValid())
         return {};
     return indexOfNode(static_cast<const Node*>(child.internalPointer())->parent, 0);
 }
 
-int RosTopicTree::rowCount(const QModelIndex& parent) const
+int TopicTree::rowCount(const QModelIndex& parent) const
 {
     if (parent.isValid() && parent.column() != 0)
         return 0;
     return int(nodeOf(parent)->children.size());
 }
 
-int RosTopicTree::columnCount(const QModelIndex&) const
+int TopicTree::columnCount(const QModelIndex&) const
 {
     return ColumnCount;
 }
 
-bool RosTopicTree::hasChildren(const QModelIndex& parent) const
+bool TopicTree::hasChildren(const QModelIndex& parent) const
 {
     return rowCount(parent) > 0;
 }
 
-QVariant RosTopicTree::data(const QModelIndex& index, int role) const
+QVariant TopicTree::data(const QModelIndex& index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid))
         return {};
@@ -241,7 +241,7 @@ QVariant RosTopicTree::data(const QModelIndex& index, int role) const
     if (!n->isTopic) {
         if (index.column() != TopicColumn)
             return {};
-        if (role == Qt::DisplayRole || role == RosTopicModel::SortRole)
+        if (role == Qt::DisplayRole || role == TopicTableModel::SortRole)
             return QString(n->segment + u'/');
         if (role == Qt::ToolTipRole)
             return tr("Namespace %1: drop MQTT topics here to bridge them below it").arg(n->path);
@@ -256,18 +256,18 @@ QVariant RosTopicTree::data(const QModelIndex& index, int role) const
     if (index.column() == TypeColumn && role == Qt::DisplayRole)
         return value.toString().section(u'/', -1); // `PoseStamped`: the package in the tooltip
     if (index.column() == TypeColumn && role == Qt::ToolTipRole)
-        return m_source->index(row, RosTopicModel::TypeColumn).data(Qt::DisplayRole);
+        return m_source->index(row, TopicTableModel::TypeColumn).data(Qt::DisplayRole);
     return value;
 }
 
-QVariant RosTopicTree::headerData(int section, Qt::Orientation orientation, int role) const
+QVariant TopicTree::headerData(int section, Qt::Orientation orientation, int role) const
 {
     if (!m_source || section < 0 || section >= ColumnCount)
         return {};
     return m_source->headerData(sourceColumn(section), orientation, role);
 }
 
-Qt::ItemFlags RosTopicTree::flags(const QModelIndex& index) const
+Qt::ItemFlags TopicTree::flags(const QModelIndex& index) const
 {
     Qt::ItemFlags f = QAbstractItemModel::flags(index) | Qt::ItemIsDropEnabled;
     if (index.isValid())
@@ -275,12 +275,12 @@ Qt::ItemFlags RosTopicTree::flags(const QModelIndex& index) const
     return f;
 }
 
-QStringList RosTopicTree::mimeTypes() const
+QStringList TopicTree::mimeTypes() const
 {
     return {TopicMime::rosType()};
 }
 
-void RosTopicTree::collectTopics(const Node* node, QStringList* out) const
+void TopicTree::collectTopics(const Node* node, QStringList* out) const
 {
     for (const auto& c : node->children) {
         if (c->isTopic)
@@ -290,7 +290,7 @@ void RosTopicTree::collectTopics(const Node* node, QStringList* out) const
     }
 }
 
-QStringList RosTopicTree::topicsBelow(const QString& ns) const
+QStringList TopicTree::topicsBelow(const QString& ns) const
 {
     QStringList out;
     if (const Node* n = ns == u"/"_s ? m_root.get() : m_namespaces.value(ns))
@@ -298,7 +298,7 @@ QStringList RosTopicTree::topicsBelow(const QString& ns) const
     return out;
 }
 
-QMimeData* RosTopicTree::mimeData(const QModelIndexList& indexes) const
+QMimeData* TopicTree::mimeData(const QModelIndexList& indexes) const
 {
     // A topic drags itself; a namespace every topic below it.
     QList<TopicMime::Topic> topics;
@@ -323,12 +323,12 @@ QMimeData* RosTopicTree::mimeData(const QModelIndexList& indexes) const
     return topics.isEmpty() ? nullptr : TopicMime::encode(TopicMime::rosType(), topics);
 }
 
-bool RosTopicTree::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
+bool TopicTree::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
 {
     return m_dropHandler && data && data->hasFormat(TopicMime::mqttType());
 }
 
-bool RosTopicTree::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+bool TopicTree::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
                                 const QModelIndex& parent)
 {
     if (!canDropMimeData(data, action, row, column, parent))

@@ -1,19 +1,18 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "ros/rosmasterapi.h"
-#include "ros/rosmonitor.h"
+#include "topics/topicgraph.h"
 
 #include <functional>
 #include <QAbstractTableModel>
 #include <QSet>
 
-/// The ROS graph's topics as a table: name, type, publishers, subscribers, and for monitored
+/// A ROS graph's topics (ROS 1 or ROS 2) as a table: name, type, publishers, subscribers, and for monitored
 /// topics rate, bandwidth, size and the time since the last message.
 ///
 /// A new graph is merged in row by row (inserts and removes, never a reset); checking the
 /// Monitor column asks for a subscription through monitorRequested().
-class RosTopicModel : public QAbstractTableModel
+class TopicTableModel : public QAbstractTableModel
 {
     Q_OBJECT
 public:
@@ -33,15 +32,15 @@ public:
     /// Handles MQTT topics dropped on a ROS topic (its name) or beside the topics (empty).
     using DropHandler = std::function<bool(const QMimeData* data, const QString& targetTopic)>;
 
-    explicit RosTopicModel(QObject* parent = nullptr);
+    explicit TopicTableModel(QObject* parent = nullptr);
 
-    void setGraph(const RosGraph& graph);
-    void setMonitorStats(const QHash<QString, RosMonitorStats>& stats, qint64 nowNs);
+    void setGraph(const TopicGraph& graph);
+    void setMonitorStats(const QHash<QString, TopicStats>& stats, qint64 nowNs);
     void setMonitored(const QString& topic, bool on);
     int monitoredCount() const { return int(m_monitored.size()); }
     void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
-    const RosGraph& graph() const { return m_graph; }
-    const RosMonitorStats* stats(const QString& topic) const;
+    const TopicGraph& graph() const { return m_graph; }
+    const TopicStats* stats(const QString& topic) const;
     int rowOf(const QString& topic) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
@@ -66,9 +65,9 @@ signals:
     void monitorRequested(const QString& topic, bool on);
 
 private:
-    RosGraph m_graph;
+    TopicGraph m_graph;
     QSet<QString> m_monitored;
-    QHash<QString, RosMonitorStats> m_stats;
+    QHash<QString, TopicStats> m_stats;
     qint64 m_nowNs = 0;
     DropHandler m_dropHandler;
 };

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "rostopicmodel.h"
+#include "topictablemodel.h"
 
 #include "base/topicmime.h"
 
@@ -9,23 +9,23 @@
 
 using namespace Qt::StringLiterals;
 
-RosTopicModel::RosTopicModel(QObject* parent)
+TopicTableModel::TopicTableModel(QObject* parent)
     : QAbstractTableModel(parent)
 { }
 
-int RosTopicModel::rowOf(const QString& topic) const
+int TopicTableModel::rowOf(const QString& topic) const
 {
     const auto it = std::lower_bound(m_graph.topics.cbegin(), m_graph.topics.cend(), topic,
-                                     [](const RosTopicInfo& t, const QString& n) { return t.name < n; });
+                                     [](const TopicInfo& t, const QString& n) { return t.name < n; });
     return it != m_graph.topics.cend() && it->name == topic ? int(it - m_graph.topics.cbegin()) : -1;
 }
 
-void RosTopicModel::setGraph(const RosGraph& graph)
+void TopicTableModel::setGraph(const TopicGraph& graph)
 {
     // Both lists are sorted: remove what went away (from the back), insert what is new in place,
     // then tell about rows whose type or nodes changed.
     QSet<QString> next;
-    for (const RosTopicInfo& t : graph.topics)
+    for (const TopicInfo& t : graph.topics)
         next.insert(t.name);
     for (int row = int(m_graph.topics.size()) - 1; row >= 0; --row) {
         if (!next.contains(m_graph.topics[row].name)) {
@@ -35,7 +35,7 @@ void RosTopicModel::setGraph(const RosGraph& graph)
         }
     }
     for (int row = 0; row < graph.topics.size(); ++row) {
-        const RosTopicInfo& t = graph.topics[row];
+        const TopicInfo& t = graph.topics[row];
         if (row < m_graph.topics.size() && m_graph.topics[row].name == t.name) {
             if (!(m_graph.topics[row] == t)) {
                 m_graph.topics[row] = t;
@@ -50,7 +50,7 @@ void RosTopicModel::setGraph(const RosGraph& graph)
     m_graph.nodes = graph.nodes;
 }
 
-void RosTopicModel::setMonitorStats(const QHash<QString, RosMonitorStats>& stats, qint64 nowNs)
+void TopicTableModel::setMonitorStats(const QHash<QString, TopicStats>& stats, qint64 nowNs)
 {
     m_stats = stats;
     m_nowNs = nowNs;
@@ -58,7 +58,7 @@ void RosTopicModel::setMonitorStats(const QHash<QString, RosMonitorStats>& stats
         emit dataChanged(index(0, RateColumn), index(int(m_graph.topics.size()) - 1, AgeColumn));
 }
 
-void RosTopicModel::setMonitored(const QString& topic, bool on)
+void TopicTableModel::setMonitored(const QString& topic, bool on)
 {
     if (on == m_monitored.contains(topic))
         return;
@@ -72,29 +72,29 @@ void RosTopicModel::setMonitored(const QString& topic, bool on)
     emit monitorRequested(topic, on);
 }
 
-const RosMonitorStats* RosTopicModel::stats(const QString& topic) const
+const TopicStats* TopicTableModel::stats(const QString& topic) const
 {
     const auto it = m_stats.constFind(topic);
     return it == m_stats.cend() ? nullptr : &*it;
 }
 
-int RosTopicModel::rowCount(const QModelIndex& parent) const
+int TopicTableModel::rowCount(const QModelIndex& parent) const
 {
     return parent.isValid() ? 0 : int(m_graph.topics.size());
 }
 
-int RosTopicModel::columnCount(const QModelIndex& parent) const
+int TopicTableModel::columnCount(const QModelIndex& parent) const
 {
     return parent.isValid() ? 0 : ColumnCount;
 }
 
-QVariant RosTopicModel::data(const QModelIndex& index, int role) const
+QVariant TopicTableModel::data(const QModelIndex& index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return {};
-    const RosTopicInfo& t = m_graph.topics[index.row()];
+    const TopicInfo& t = m_graph.topics[index.row()];
     const bool monitored = m_monitored.contains(t.name);
-    const RosMonitorStats* s = monitored ? stats(t.name) : nullptr;
+    const TopicStats* s = monitored ? stats(t.name) : nullptr;
     const bool any = s && s->messages > 0;
     switch (role) {
     case Qt::CheckStateRole:
@@ -164,7 +164,7 @@ QVariant RosTopicModel::data(const QModelIndex& index, int role) const
     return {};
 }
 
-bool RosTopicModel::setData(const QModelIndex& index, const QVariant& value, int role)
+bool TopicTableModel::setData(const QModelIndex& index, const QVariant& value, int role)
 {
     if (role != Qt::CheckStateRole || index.column() != MonitorColumn
         || !checkIndex(index, CheckIndexOption::IndexIsValid))
@@ -173,7 +173,7 @@ bool RosTopicModel::setData(const QModelIndex& index, const QVariant& value, int
     return true;
 }
 
-Qt::ItemFlags RosTopicModel::flags(const QModelIndex& index) const
+Qt::ItemFlags TopicTableModel::flags(const QModelIndex& index) const
 {
     Qt::ItemFlags f = QAbstractTableModel::flags(index) | Qt::ItemIsDropEnabled;
     if (index.isValid())
@@ -183,12 +183,12 @@ Qt::ItemFlags RosTopicModel::flags(const QModelIndex& index) const
     return f;
 }
 
-QStringList RosTopicModel::mimeTypes() const
+QStringList TopicTableModel::mimeTypes() const
 {
     return {TopicMime::rosType()};
 }
 
-QMimeData* RosTopicModel::mimeData(const QModelIndexList& indexes) const
+QMimeData* TopicTableModel::mimeData(const QModelIndexList& indexes) const
 {
     QList<TopicMime::Topic> topics;
     QSet<int> rows;
@@ -196,18 +196,18 @@ QMimeData* RosTopicModel::mimeData(const QModelIndexList& indexes) const
         if (!i.isValid() || rows.contains(i.row()))
             continue;
         rows.insert(i.row());
-        const RosTopicInfo& t = m_graph.topics[i.row()];
+        const TopicInfo& t = m_graph.topics[i.row()];
         topics.append({t.name, t.type});
     }
     return topics.isEmpty() ? nullptr : TopicMime::encode(TopicMime::rosType(), topics);
 }
 
-bool RosTopicModel::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
+bool TopicTableModel::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex&) const
 {
     return m_dropHandler && data && data->hasFormat(TopicMime::mqttType());
 }
 
-bool RosTopicModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+bool TopicTableModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
                                  const QModelIndex& parent)
 {
     if (!canDropMimeData(data, action, row, column, parent))
@@ -217,7 +217,7 @@ bool RosTopicModel::dropMimeData(const QMimeData* data, Qt::DropAction action, i
         data, target >= 0 && target < m_graph.topics.size() ? m_graph.topics[target].name : QString());
 }
 
-QVariant RosTopicModel::headerData(int section, Qt::Orientation orientation, int role) const
+QVariant TopicTableModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
     if (orientation != Qt::Horizontal)
         return {};

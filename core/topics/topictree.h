@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "ros/rostopicmodel.h"
+#include "topics/topictablemodel.h"
 
 #include <functional>
 #include <memory>
@@ -10,7 +10,7 @@
 #include <QPointer>
 #include <vector>
 
-/// The ROS graph's topics as a namespace tree over a RosTopicModel, as rqt and MQTT Explorer show
+/// The ROS graph's topics as a namespace tree over a TopicTableModel, as rqt and MQTT Explorer show
 /// names: a row per namespace (`timestamps/`) with its namespaces and topics below, each row
 /// showing its own segment, so that a deep name is read down the tree instead of being cut in
 /// a column. The other columns are the table's for topics (the type by its last segment, whole in
@@ -19,7 +19,7 @@
 /// Follows the table row by row (its inserts and removes become inserts and removes here, never
 /// a reset but for a new table), and its figures' changes. A dragged row carries its topic, a namespace every
 /// topic below it; MQTT topics dropped on a row go to the DropHandler with that row's name.
-class RosTopicTree : public QAbstractItemModel
+class TopicTree : public QAbstractItemModel
 {
     Q_OBJECT
 public:
@@ -28,21 +28,21 @@ public:
     /// The table's data roles (TopicRole, TypeRole, …) hold for topic rows; these for every row.
     enum Role {
         /// A row's full name: a topic's name, or a namespace's with its trailing slash ("/a/b/").
-        PathRole = RosTopicModel::MonitoredRole + 16,
+        PathRole = TopicTableModel::MonitoredRole + 16,
         IsTopicRole,
     };
     /// Where MQTT topics were dropped: a topic, a namespace ("/a/b/", trailing slash), or beside
     /// every row (empty).
     using DropHandler = std::function<bool(const QMimeData* data, const QString& target)>;
 
-    explicit RosTopicTree(QObject* parent = nullptr);
-    ~RosTopicTree() override;
+    explicit TopicTree(QObject* parent = nullptr);
+    ~TopicTree() override;
 
-    void setSourceModel(RosTopicModel* source);
-    RosTopicModel* sourceModel() const { return m_source; }
+    void setSourceModel(TopicTableModel* source);
+    TopicTableModel* sourceModel() const { return m_source; }
     void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
     /// The row of a topic or namespace ("/a/b/"), or an invalid index.
-    QModelIndex indexOf(const QString& path, int column = RosTopicModel::TopicColumn) const;
+    QModelIndex indexOf(const QString& path, int column = TopicTableModel::TopicColumn) const;
     /// Every topic below a namespace ("/a/"), in tree order.
     QStringList topicsBelow(const QString& ns) const;
 
@@ -90,7 +90,7 @@ private:
                            const QList<int>& roles);
     void collectTopics(const Node* node, QStringList* out) const;
 
-    QPointer<RosTopicModel> m_source;
+    QPointer<TopicTableModel> m_source;
     QList<QMetaObject::Connection> m_connections;
     std::unique_ptr<Node> m_root;
     QHash<QString, Node*> m_topics; ///< by name

@@ -7,7 +7,7 @@
 #include <QString>
 #include <QtGlobal>
 
-/// What a monitor knows of one subscribed topic, ROS 1 (RosMonitorStats) and ROS 2
+/// What a monitor knows of one subscribed topic, ROS 1 (TopicStats) and ROS 2
 /// (Ros2MonitorStats) alike, so that the views show both from one model.
 struct TopicFigures
 {
