@@ -136,7 +136,7 @@ def parallel_apis(root):
         return any(re.search(pattern, read(p)) for p in files(root, ("core",), (".h",)))
     source_h = os.path.join(root, "core/latency/messagesource.h")
     pure = len(re.findall(r"=\s*0\s*;", read(source_h))) if os.path.exists(source_h) else 0
-    stats = [t for t in ("TopicFigures", "RosMonitorStats", "Ros2MonitorStats") if exists(r"struct\s+" + t + r"\b")]
+    stats = [t for t in ("TopicFigures", "RosMonitorStats", "TopicStats", "Ros2MonitorStats") if exists(r"struct\s+" + t + r"\b")]
     samples = [t for t in ("SourceArrival", "SourceHead", "Ros2Sample", "RosMessageSample", "Ros2Arrival")
                if exists(r"struct\s+" + t + r"\b")]
     parallel = [n for n in ("watchMessages", "takeMessages") if exists(r"\b" + n + r"\(")]
