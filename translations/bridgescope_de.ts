@@ -1505,14 +1505,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>Remo&amp;ve</source>
         <translation>&amp;Entfernen</translation>
     </message>
-    <message>
-        <source>no node</source>
-        <translation>kein Knoten</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
     <message numerus="yes">
         <source>No ROS 2 definition of %1 is known: the payload shows its %n byte(s) raw.</source>
         <translation>
@@ -1694,18 +1686,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <translation>frage %1 …</translation>
     </message>
     <message>
-        <source>asking the master…</source>
-        <translation>frage den Master …</translation>
-    </message>
-    <message>
-        <source>reachable: %1 topics, %2 nodes</source>
-        <translation>erreichbar: %1 Topics, %2 Knoten</translation>
-    </message>
-    <message>
-        <source>unreachable: %1 (retrying every second)</source>
-        <translation>nicht erreichbar: %1 (neuer Versuch jede Sekunde)</translation>
-    </message>
-    <message>
         <source>Dis&amp;connect</source>
         <translation>&amp;Trennen</translation>
     </message>
@@ -1814,18 +1794,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>ROS &amp;2</source>
         <translation>ROS &amp;2</translation>
-    </message>
-    <message>
-        <source>listening on domain %1: no participant yet</source>
-        <translation>lausche auf Domäne %1: noch kein Teilnehmer</translation>
-    </message>
-    <message>
-        <source>domain %1: participants %2, topics %3, nodes %4</source>
-        <translation>Domäne %1: Teilnehmer %2, Topics %3, Knoten %4</translation>
-    </message>
-    <message>
-        <source>unreadable node announcements %1</source>
-        <translation>unlesbare Knotenmeldungen %1</translation>
     </message>
     <message>
         <source>not shown (ROS 2 only)</source>
@@ -2861,6 +2829,45 @@ factors:
     <message>
         <source>no ROS 2 definition of %1 is known</source>
         <translation>für %1 ist keine ROS-2-Definition bekannt</translation>
+    </message>
+</context>
+<context>
+    <name>GraphStatus</name>
+    <message>
+        <source>asking the master…</source>
+        <translation>frage den Master …</translation>
+    </message>
+    <message>
+        <source>reachable: %1 topics, %2 nodes</source>
+        <translation>erreichbar: %1 Topics, %2 Knoten</translation>
+    </message>
+    <message>
+        <source>unreachable: %1 (retrying every second)</source>
+        <translation>nicht erreichbar: %1 (neuer Versuch jede Sekunde)</translation>
+    </message>
+    <message>
+        <source>listening on domain %1: no participant yet</source>
+        <translation>lausche auf Domäne %1: noch kein Teilnehmer</translation>
+    </message>
+    <message>
+        <source>domain %1: participants %2, topics %3, nodes %4</source>
+        <translation>Domäne %1: Teilnehmer %2, Topics %3, Knoten %4</translation>
+    </message>
+    <message>
+        <source>unreadable node announcements %1</source>
+        <translation>unlesbare Knotenmeldungen %1</translation>
+    </message>
+    <message>
+        <source>no node</source>
+        <translation>kein Knoten</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>%1; publishers: %2; subscribers: %3</source>
+        <translation>%1; Publisher: %2; Subscriber: %3</translation>
     </message>
 </context>
 <context>

@@ -10,10 +10,10 @@
 #include "config/configwriter.h"
 #include "config/peerconfig.h"
 
+#include <limits>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFile>
-#include <limits>
 
 using namespace Qt::StringLiterals;
 using CliOutput::err;

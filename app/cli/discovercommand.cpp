@@ -2,8 +2,8 @@
 #include "discovercommand.h"
 
 #include "app/cli/clioutput.h"
-#include "app/cli/sourcecheck.h"
 #include "app/cli/rosoptions.h"
+#include "app/cli/sourcecheck.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"

@@ -3,9 +3,9 @@
 
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
-#include "topics/topictablemodel.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"
+#include "topics/topictablemodel.h"
 #include "wire/fieldpath.h"
 #include "wire/rosmessage.h"
 #include "wire/sourcemessage.h"

@@ -7,6 +7,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
+#include "session/graphstatus.h"
 #include "topics/topictablemodel.h"
 #include "wire/ros2definitions.h"
 
@@ -21,6 +22,7 @@ LiveSession::LiveSession(QObject* parent)
     , m_mqtt(new MqttConnection(this))
     , m_tree(new MqttTopicTree(this))
     , m_ros2(new Ros2Participant(this))
+    , m_graphStatus(new GraphStatus(m_poller, m_ros2, this))
     , m_ros2Topics(new TopicTableModel(this))
     , m_mqttSource(std::make_unique<MqttSource>(m_tree))
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))

@@ -15,6 +15,7 @@
 #include <QTimer>
 #include <vector>
 
+class GraphStatus;
 class MqttTopicTree;
 class RosGraphPoller;
 class RosMonitor;
@@ -69,6 +70,8 @@ public:
     void setRos2DefinitionFolders(const QStringList& folders, QStringList* errors = nullptr);
 
     RosGraphPoller* rosGraph() const { return m_poller; }
+    /// Both ROS graphs as the pages show them, whichever transport holds each.
+    const GraphStatus* graphStatus() const { return m_graphStatus; }
     RosMonitor* rosMonitor() const { return m_monitor; }
     TopicTableModel* rosTopics() const { return m_rosTopics; }
     /// A graph's topics as a MessageSource: the ROS 1 monitor, the ROS 2 participant, or the
@@ -100,6 +103,7 @@ private:
     MqttConnection* m_mqtt;
     MqttTopicTree* m_tree;
     Ros2Participant* m_ros2;
+    GraphStatus* m_graphStatus;
     TopicTableModel* m_ros2Topics;
     std::unique_ptr<MqttSource> m_mqttSource;
     LiveSources m_sources;

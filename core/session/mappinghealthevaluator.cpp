@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "mappinghealthevaluator.h"
 
-#include "topics/topicfigures.h"
 #include "ros/rosmasterapi.h"
 #include "ros2/ros2graph.h"
 #include "session/flowrates.h"
+#include "topics/topicfigures.h"
 
 using namespace Qt::StringLiterals;
 

@@ -7,11 +7,11 @@
 #include "record/runfile.h"
 #include "session/livesources.h"
 
-#include <utility>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QSet>
 #include <QTimer>
+#include <utility>
 #include <vector>
 
 class LatencyStatsModel;

@@ -1,21 +1,21 @@
 // SPDX-License-Identifier: MIT
 // The Discover page's ROS 2 graph: a Cyclone DDS node (tests/ros2peer) seen through Bridgescope's
-// participant (Cyclone DDS, in bridgescope-dds), shown in the ROS 2 tab with its node, monitored, its samples decoded in the
-// detail pane with the bundled definitions, an unknown type shown raw; the ROS 1 / ROS 2 / both
-// switch joining and leaving the domain; a ROS 2 config on the Map page judged against the ROS 2
-// graph (QoS that cannot match, a publisher without a bridge).
+// participant (Cyclone DDS, in bridgescope-dds), shown in the ROS 2 tab with its node, monitored, its samples
+// decoded in the detail pane with the bundled definitions, an unknown type shown raw; the ROS 1 / ROS 2 /
+// both switch joining and leaving the domain; a ROS 2 config on the Map page judged against the ROS 2 graph
+// (QoS that cannot match, a publisher without a bridge).
 #include "app/gui/mainwindow.h"
 #include "config/configdocument.h"
 #include "config/mappinghealth.h"
 #include "config/mappingmodel.h"
 #include "ddschild.h"
 #include "namecheck.h"
-#include "topics/topictablemodel.h"
-#include "topics/topictree.h"
 #include "ros2peer.h"
 #include "rtpscorpus.h"
 #include "session/livesession.h"
 #include "testservers.h"
+#include "topics/topictablemodel.h"
+#include "topics/topictree.h"
 #include "viewhelpers.h"
 #include "widgets/discover/detailpane.h"
 #include "widgets/discover/discoverpage.h"

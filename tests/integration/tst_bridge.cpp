@@ -3,7 +3,6 @@
 // v2.2.1's wire format byte for byte (the captured fixtures), announced types and latency topics
 // on the receiving side, two bridges carrying std_msgs and sensor_msgs both ways, and the
 // suite's timestamp_topic_prefix stamps joining into complete samples.
-#include "signalprocess.h"
 #include "base/wallclock.h"
 #include "bridge/referencebridge.h"
 #include "bridgelog.h"
@@ -16,6 +15,7 @@
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "ros/rosmasterapi.h"
+#include "signalprocess.h"
 #include "testservers.h"
 #include "wire/mqttclientwire.h"
 #include "wire/stampcodec.h"

@@ -4,8 +4,8 @@
 #include "resulttext.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
-#include "topics/topictablemodel.h"
 #include "testservers.h"
+#include "topics/topictablemodel.h"
 #include "wire/rosmessage.h"
 
 #include <chrono>

@@ -345,6 +345,22 @@ private slots:
         qInfo().noquote() << u"folder graph (no cycle):\n  "_s + graph.join(u"\n  "_s);
     }
 
+    // Issue 42: the views show either ROS graph through core/topics and core/session
+    // (GraphStatus); no widget includes a ROS transport, so a third graph is no widget's change.
+    void noWidgetIncludesARosTransport()
+    {
+        QHash<QString, QSet<QString>> edges;
+        (void)checkIncludes(QStringLiteral(BRIDGESCOPE_SOURCE_DIR), m_table, &edges);
+        QStringList found;
+        for (auto it = edges.cbegin(); it != edges.cend(); ++it)
+            if (it.key().startsWith(u"widgets/"_s))
+                for (const QString& transport : {u"core/ros"_s, u"core/ros2"_s, u"core/dds"_s})
+                    if (it.value().contains(transport))
+                        found << it.key() + u" -> "_s + transport;
+        QVERIFY2(found.isEmpty(), qPrintable(found.join(u"; "_s)));
+        QVERIFY(edges.value(u"widgets/common"_s).contains(u"core/topics"_s)); // the topic table's models
+    }
+
     // The checker itself, on a small tree that breaks each rule once.
     void checkerFindsEveryKindOfViolation()
     {

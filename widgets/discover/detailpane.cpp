@@ -2,11 +2,10 @@
 #include "detailpane.h"
 
 #include "mqtt/mqtttopictree.h"
-#include "ros/rosmonitor.h"
-#include "topics/topictablemodel.h"
-#include "ros2/ros2participant.h"
 #include "session/fieldplotter.h"
+#include "session/graphstatus.h"
 #include "session/livesession.h"
+#include "topics/topictablemodel.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/discover/fieldplotchart.h"
 #include "wire/fieldpath.h"
@@ -135,7 +134,7 @@ void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, co
 
 DetailPane::Parts DetailPane::partsOf(LiveSession* live)
 {
-    return {FieldPlotter::partsOf(live), live->ros2Topics()};
+    return {FieldPlotter::partsOf(live), live->ros2Topics(), live->graphStatus()};
 }
 
 DetailPane::DetailPane(const Parts& parts, QWidget* parent)
@@ -617,19 +616,9 @@ void DetailPane::refreshRos(bool force)
         return;
     m_shownMessages = messages;
     QString title = u"<b>%1</b>"_s.arg(m_topic.toHtmlEscaped());
-    const Ros2Topic* t2 = ros2 ? m_parts.live.ros2->graph().topic(m_topic) : nullptr;
-    if (t2) {
-        // ROS 2: each endpoint's node and QoS
-        auto endpoints = [](const QList<Ros2Endpoint>& list) {
-            QStringList parts;
-            for (const Ros2Endpoint& e : list)
-                parts << u"%1 (%2)"_s.arg(e.node.isEmpty() ? tr("no node") : e.node, e.qos.text());
-            return parts.isEmpty() ? tr("none") : parts.join(u", "_s);
-        };
-        title += u"<br>"_s
-            + tr("%1; publishers: %2; subscribers: %3")
-                  .arg(t2->types.join(u" / "_s).toHtmlEscaped(), endpoints(t2->publishers).toHtmlEscaped(),
-                       endpoints(t2->subscribers).toHtmlEscaped());
+    if (const QString endpoints = ros2 ? m_parts.graphs->ros2EndpointsText(m_topic) : QString();
+        !endpoints.isEmpty()) {
+        title += u"<br>"_s + endpoints.toHtmlEscaped(); // ROS 2: each endpoint's node and QoS
     } else if (t) {
         title += u"<br>"_s
             + tr("%1; publishers: %2; subscribers: %3")

@@ -7,6 +7,7 @@
 #include <QWidget>
 
 class FieldPlotChart;
+class GraphStatus;
 class LiveSession;
 class QAction;
 class QListWidget;
@@ -40,6 +41,7 @@ public:
     {
         FieldPlotter::Parts live;
         const TopicTableModel* ros2Topics = nullptr;
+        const GraphStatus* graphs = nullptr; ///< a ROS 2 topic's endpoints and their QoS
     };
 
     /// The parts of a live session the pane reads.

@@ -4,9 +4,9 @@
 #include "mqtt/mqtttopicfilter.h"
 #include "mqtt/mqtttopictree.h"
 #include "mqtt/passwordstore.h"
-#include "ros/rosgraphpoller.h"
-#include "topics/topictablemodel.h"
+#include "session/graphstatus.h"
 #include "session/livesession.h"
+#include "topics/topictablemodel.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/rostopicview.h"
@@ -49,12 +49,28 @@ QString bullet(const QString& colour, const QString& text)
 {
     return u"<span style=\"color:%1\">●</span> %2"_s.arg(colour, text.toHtmlEscaped());
 }
+
+/// A graph's line in the colour of its level.
+QString bullet(const GraphStatus::Line& line, const QString& text)
+{
+    switch (line.level) {
+    case GraphStatus::Level::Ok:
+        return bullet(u"#2e7d32"_s, text);
+    case GraphStatus::Level::Troubled:
+        return bullet(u"#e65100"_s, text);
+    case GraphStatus::Level::Failed:
+        return bullet(u"#b00020"_s, text);
+    case GraphStatus::Level::Idle:
+        break;
+    }
+    return bullet(u"#888"_s, text);
+}
 } // namespace
 
 DiscoverPage::Parts DiscoverPage::partsOf(LiveSession* live)
 {
     return {live,         live->rosTopics(), live->ros2Topics(), live->mqttTopics(),
-            live->mqtt(), live->rosGraph(),  live->ros2(),       DetailPane::partsOf(live)};
+            live->mqtt(), live->graphStatus(), DetailPane::partsOf(live)};
 }
 
 DiscoverPage::DiscoverPage(const Parts& parts, QWidget* parent)
@@ -187,7 +203,7 @@ QLayout* DiscoverPage::createConnectionBar()
         emit rosGraphsChosen(m_graphs, ros2Options());
     };
     connect(m_domain, &QSpinBox::editingFinished, this, [this, rejoin] {
-        if (m_parts.controls->isRos2Running() && m_parts.ros2->options().domain != m_domain->value())
+        if (m_parts.controls->isRos2Running() && m_parts.graphs->ros2Options().domain != m_domain->value())
             rejoin();
     });
     connect(m_localhostOnly, &QCheckBox::toggled, this, rejoin);
@@ -280,7 +296,7 @@ void DiscoverPage::applyRos2()
         m_parts.controls->stopRos2();
     } else {
         const Ros2Options o = ros2Options();
-        const Ros2Options now = m_parts.ros2->options();
+        const Ros2Options now = m_parts.graphs->ros2Options();
         if (!m_parts.controls->isRos2Running() || now.domain != o.domain || now.localhostOnly != o.localhostOnly)
             m_parts.controls->startRos2(o, &m_ros2Error);
     }
@@ -301,36 +317,10 @@ void DiscoverPage::updateRos2Status()
         m_ros2State->setText(bullet(u"#b00020"_s, m_ros2Error));
         return;
     }
-    const Ros2Participant* ros2 = m_parts.ros2;
-    if (!ros2->lastError().isEmpty()) {
-        m_ros2State->setText(bullet(u"#b00020"_s, ros2->lastError()));
-        return;
-    }
-    // a restart of the DDS process (a hostile datagram, a runaway) is said, never hidden
-    const QString restarts = ros2->restartText();
-    const QString restartColour = u"#e65100"_s;
-    const Ros2Graph& g = ros2->graph();
-    if (g.participants == 0) {
-        QString text = tr("listening on domain %1: no participant yet").arg(m_domain->value());
-        if (!restarts.isEmpty())
-            text += u" · "_s + restarts;
-        m_ros2State->setText(bullet(restarts.isEmpty() ? u"#888"_s : restartColour, text));
-        m_ros2State->setToolTip(ros2->lastRestartReason());
-        return;
-    }
-    QString text = tr("domain %1: participants %2, topics %3, nodes %4")
-                       .arg(m_domain->value())
-                       .arg(g.participants)
-                       .arg(g.topics.size())
-                       .arg(g.nodes.size());
-    if (const quint64 bad = ros2->badDiscoveryInfo())
-        text += u", "_s + tr("unreadable node announcements %1").arg(bad);
-    if (g.omitted)
-        text += u", "_s + ros2->omittedText();
-    if (!restarts.isEmpty())
-        text += u" · "_s + restarts;
-    m_ros2State->setText(bullet(restarts.isEmpty() ? u"#2e7d32"_s : restartColour, text));
-    m_ros2State->setToolTip(ros2->lastRestartReason());
+    const GraphStatus::Line line = m_parts.graphs->ros2Line();
+    m_ros2State->setText(bullet(line, line.text));
+    if (line.level != GraphStatus::Level::Failed)
+        m_ros2State->setToolTip(line.toolTip);
 }
 
 QWidget* DiscoverPage::createMqttPane()
@@ -508,10 +498,8 @@ void DiscoverPage::connectSelection()
 
 void DiscoverPage::connectSession()
 {
-    connect(m_parts.rosGraph, &RosGraphPoller::reachabilityChanged, this,
-            &DiscoverPage::updateRosStatus);
-    connect(m_parts.rosGraph, &RosGraphPoller::graphChanged, this, &DiscoverPage::updateRosStatus);
-    connect(m_parts.ros2, &Ros2Participant::graphChanged, this, &DiscoverPage::updateRos2Status);
+    connect(m_parts.graphs, &GraphStatus::ros1Changed, this, &DiscoverPage::updateRosStatus);
+    connect(m_parts.graphs, &GraphStatus::ros2Changed, this, &DiscoverPage::updateRos2Status);
     connect(m_parts.mqtt, &MqttConnection::stateChanged, this, &DiscoverPage::updateMqttStatus);
     // The detail pane follows its topic a few times a second, not at the drain rate.
     auto* refresh = new QTimer(this);
@@ -624,19 +612,11 @@ void DiscoverPage::setRosMasterUri(const QString& uri)
 
 void DiscoverPage::updateRosStatus()
 {
-    const RosGraphPoller* p = m_parts.rosGraph;
     m_masterUri->setEnabled(m_graphs != RosGraphs::Ros2);
     if (m_graphs == RosGraphs::Ros2)
         m_rosState->setText(bullet(u"#888"_s, tr("not shown (ROS 2 only)")));
-    else if (p->polls() == 0)
-        m_rosState->setText(bullet(u"#888"_s, tr("asking the master…")));
-    else if (p->isReachable())
-        m_rosState->setText(bullet(
-            u"#2e7d32"_s,
-            tr("reachable: %1 topics, %2 nodes").arg(p->graph().topics.size()).arg(p->graph().nodes.size())));
     else
-        m_rosState->setText(
-            bullet(u"#b00020"_s, tr("unreachable: %1 (retrying every second)").arg(p->lastError())));
+        m_rosState->setText(bullet(m_parts.graphs->ros1Line(), m_parts.graphs->ros1Line().text));
 }
 
 void DiscoverPage::updateMqttStatus()

@@ -2,16 +2,15 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
-#include "ros2/ros2participant.h"
 #include "session/livesession.h"
 #include "widgets/discover/detailpane.h"
 
 #include <QWidget>
 
+class GraphStatus;
+class MqttTopicTree;
 class PublishDialog;
 class QAction;
-class MqttTopicTree;
-class RosGraphPoller;
 class TopicTableModel;
 class MqttTopicFilter;
 class PasswordStore;
@@ -49,8 +48,7 @@ public:
         TopicTableModel* ros2Topics = nullptr;
         MqttTopicTree* mqttTopics = nullptr;
         MqttConnection* mqtt = nullptr;
-        const RosGraphPoller* rosGraph = nullptr;
-        const Ros2Participant* ros2 = nullptr;
+        const GraphStatus* graphs = nullptr;
         DetailPane::Parts detail;
     };
     /// The parts of a live session the page uses.

@@ -7,12 +7,11 @@
 #include "config/mappingmodel.h"
 #include "mqtt/mqtttopicfilter.h"
 #include "mqtt/mqtttopictree.h"
-#include "ros/rosgraphpoller.h"
-#include "ros/rosmonitor.h"
-#include "topics/topictablemodel.h"
-#include "topics/topictree.h"
+#include "session/graphstatus.h"
 #include "session/livesession.h"
 #include "session/mappinghealthevaluator.h"
+#include "topics/topictablemodel.h"
+#include "topics/topictree.h"
 #include "widgets/common/viewsetup.h"
 #include "widgets/map/bridgedtopicsproxy.h"
 #include "widgets/map/configeditor.h"
@@ -42,7 +41,7 @@ using namespace Qt::StringLiterals;
 MapPage::Parts MapPage::partsOf(LiveSession* live)
 {
     return {live->sources(), live->rosTopics(), live->ros2Topics(), live->mqttTopics(),
-            live->rosGraph(),  live->ros2(),      live->mqtt()};
+            live->graphStatus(), live->mqtt()};
 }
 
 MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
@@ -475,7 +474,7 @@ void MapPage::monitorMappedMqttTopics()
 
 bool MapPage::usesRos2() const
 {
-    return m_doc->config().layout == ConfigLayout::Ros2 && m_parts.ros2->isRunning();
+    return m_doc->config().layout == ConfigLayout::Ros2 && m_parts.graphs->ros2Running();
 }
 
 void MapPage::updateHealth()
@@ -495,9 +494,9 @@ void MapPage::updateHealth()
     // Both ends' counts at this one instant: the rates shown compare the same interval.
     m_flows.sample(now, monitored, mqtt);
     MappingHealthEvaluator::Inputs in;
-    in.graph = ros2 ? &m_parts.ros2Topics->graph() : &m_parts.rosGraph->graph();
-    in.rosReachable = ros2 || m_parts.rosGraph->isReachable(); // ROS 2 has no master to miss
-    in.ros2 = ros2 ? &m_parts.ros2->graph() : nullptr;
+    in.graph = ros2 ? &m_parts.ros2Topics->graph() : &m_parts.rosTopics->graph();
+    in.rosReachable = ros2 || m_parts.graphs->ros1Reachable(); // ROS 2 has no master to miss
+    in.ros2 = ros2 ? &m_parts.graphs->ros2Graph() : nullptr;
     in.monitored = &monitored;
     in.mqtt = &mqtt;
     in.mqttConnected = m_parts.mqtt->state() == MqttConnection::State::Connected;

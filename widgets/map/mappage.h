@@ -15,6 +15,7 @@ class ConfigDocument;
 class ConfigFileController;
 class ConfigTabs;
 class ConfigEditor;
+class GraphStatus;
 class LiveSession;
 class MqttConnection;
 class MqttTopicFilter;
@@ -29,10 +30,8 @@ class QTableView;
 class QTimer;
 class QTreeView;
 class QUndoStack;
-class RosGraphPoller;
 class TopicTableModel;
 class TopicTree;
-class Ros2Participant;
 
 /// The Map page: the config's mappings across the page, the inspector and problems below them,
 /// and beside them a panel (that folds away) of the discovered topics, ROS and MQTT each as a
@@ -51,8 +50,7 @@ public:
         TopicTableModel* rosTopics = nullptr;
         TopicTableModel* ros2Topics = nullptr;
         MqttTopicTree* mqttTopics = nullptr;
-        const RosGraphPoller* rosGraph = nullptr;
-        const Ros2Participant* ros2 = nullptr;
+        const GraphStatus* graphs = nullptr;
         const MqttConnection* mqtt = nullptr;
     };
 
