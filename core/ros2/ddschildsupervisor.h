@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "ros2/ros2link.h"
+#include "ros2/ddschildpipe.h"
 #include "ros2/ros2protocol.h"
 
 #include <functional>

@@ -1,50 +1,29 @@
 // SPDX-License-Identifier: MIT
 #include "ros2/ros2link.h"
 
-#include "base/eventbuffer.h"
 #include "base/logging.h"
-#include "ros2/ros2names.h"
 
 #include <QCoreApplication>
 
 using namespace Qt::StringLiterals;
 using Ros2Protocol::Kind;
 
-// The texts here are Ros2Participant's (what it says of its requests): they keep its translation
-// context.
-
 Ros2Link::Ros2Link(DdsChildPipe& pipe, QObject* parent)
     : QObject(parent)
     , m_pipe(pipe)
+    , m_endpoints(pipe, this)
 { }
-
-Ros2Link::~Ros2Link() = default;
-
-void Ros2Link::send(Kind kind, const QByteArray& body)
-{
-    m_pipe.send(kind, body);
-}
 
 void Ros2Link::replay(const Ros2Options& options)
 {
-    send(Kind::Start, Ros2Protocol::encodeStart({options, m_graphInterval}));
+    m_pipe.send(Kind::Start, Ros2Protocol::encodeStart({options, m_graphInterval}));
     if (m_keepArrivals)
-        send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(m_keepArrivals));
+        m_pipe.send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(m_keepArrivals));
     for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
-        send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(it.key())));
+        m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(it.key())));
     for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
-        send(Kind::Monitor, Ros2Protocol::encodeStrings({it.key()}));
-    for (const quint64 n : std::as_const(m_receivedDropped))
-        m_receivedDroppedBefore += n; // the new child counts from 0
-    m_receivedDropped.clear();
-    m_unanswered.clear();
-    const QHash<QString, Ros2Protocol::EndpointRequest> advertised = m_advertised, subscribed = m_subscribed;
-    for (const Ros2Protocol::EndpointRequest& e : advertised)
-        requestEndpoint(true, e);
-    for (const Ros2Protocol::EndpointRequest& e : subscribed)
-        requestEndpoint(false, e);
-    if (!m_node.name.isEmpty())
-        send(Kind::SetNode, Ros2Protocol::encodeStrings({m_node.nameSpace, m_node.name}));
+        m_pipe.send(Kind::Monitor, Ros2Protocol::encodeStrings({it.key()}));
+    m_endpoints.replay();
 }
 
 bool Ros2Link::causedByPeers(bool ranInto) const
@@ -54,21 +33,9 @@ bool Ros2Link::causedByPeers(bool ranInto) const
 
 void Ros2Link::childLost(const QString& why)
 {
-    // What it was making when it ended is not asked of the next one (else a type that crashes
-    // Cyclone crashes every child after it: a loop of restarts, broken here).
-    const QHash<QString, Ros2Protocol::EndpointRequest> unanswered = std::exchange(m_unanswered, {});
     m_graph = Ros2Graph();
     m_stats.clear();
-    for (auto it = unanswered.cbegin(); it != unanswered.cend(); ++it) {
-        const bool advertise = it.key().startsWith(u'A');
-        const QString reason
-            = QCoreApplication::translate("Ros2Participant",
-                                          "the DDS process %1 while making it: quarantined, not asked again")
-                  .arg(why);
-        m_quarantine.insert(it.key(), reason);
-        m_lastQuarantine = it->topic + u": "_s + reason;
-        refuseEndpoint(advertise, it->topic, reason);
-    }
+    m_endpoints.quarantineUnanswered(why);
 }
 
 void Ros2Link::childStopped()
@@ -89,7 +56,7 @@ void Ros2Link::setGraphInterval(int ms)
 {
     m_graphInterval = qBound(1, ms, 3'600'000);
     if (m_pipe.hasChild())
-        send(Kind::GraphInterval, Ros2Protocol::encodeNumber(quint64(m_graphInterval)));
+        m_pipe.send(Kind::GraphInterval, Ros2Protocol::encodeNumber(quint64(m_graphInterval)));
 }
 
 bool Ros2Link::handle(const Ros2Protocol::Frame& f)
@@ -102,8 +69,14 @@ bool Ros2Link::handle(const Ros2Protocol::Frame& f)
             return false;
         emit started();
         return true;
-    case Kind::StartFailed:
-        return onStartFailed(f.body);
+    case Kind::StartFailed: {
+        const auto why = Ros2Protocol::decodeStrings(f.body, 1);
+        if (!why)
+            return false;
+        qCWarning(lcRos2).noquote() << "ROS 2 participant not made:" << why->first().left(1000);
+        emit startFailed(why->first().left(1000));
+        return true;
+    }
     case Kind::Graph:
         return onGraph(f.body);
     case Kind::Stats:
@@ -113,25 +86,14 @@ bool Ros2Link::handle(const Ros2Protocol::Frame& f)
     case Kind::Arrivals:
         return onArrivals(f.body);
     case Kind::Received:
-        return onReceived(f.body);
+        return m_endpoints.onReceived(f.body);
     case Kind::EndpointDone:
-        return onEndpointDone(f.body);
+        return m_endpoints.onEndpointDone(f.body);
     case Kind::MonitorFailed:
         return onMonitorFailed(f.body);
     default:
         return false; // a request: the child has no business sending it
     }
-}
-
-bool Ros2Link::onStartFailed(const QByteArray& body)
-{
-    const auto why = Ros2Protocol::decodeStrings(body, 1);
-    if (!why)
-        return false;
-    const QString error = why->first().left(1000);
-    qCWarning(lcRos2).noquote() << "ROS 2 participant not made:" << error;
-    emit startFailed(error);
-    return true;
 }
 
 bool Ros2Link::onGraph(const QByteArray& body)
@@ -193,33 +155,6 @@ bool Ros2Link::onArrivals(const QByteArray& body)
     return true;
 }
 
-bool Ros2Link::onReceived(const QByteArray& body)
-{
-    auto batch = Ros2Protocol::decodeSamples(body);
-    if (!batch)
-        return false;
-    if (!m_subscribed.contains(batch->topic))
-        return true; // unsubscribed since the child sent it
-    m_receivedDropped.insert(batch->topic, batch->dropped);
-    for (const Ros2Sample& s : batch->samples)
-        emit received(batch->topic, s);
-    return true;
-}
-
-bool Ros2Link::onEndpointDone(const QByteArray& body)
-{
-    const auto done = Ros2Protocol::decodeEndpointDone(body);
-    if (!done)
-        return false;
-    m_unanswered.remove(endpointKey(done->advertise, {done->topic, done->type, {}}));
-    const QHash<QString, Ros2Protocol::EndpointRequest>& made = done->advertise ? m_advertised : m_subscribed;
-    const auto it = made.constFind(done->topic);
-    // refused by the child (or Cyclone), and still wanted as it was asked
-    if (!done->why.isEmpty() && it != made.cend() && it->type == done->type)
-        refuseEndpoint(done->advertise, done->topic, done->why.left(1000));
-    return true;
-}
-
 bool Ros2Link::onMonitorFailed(const QByteArray& body)
 {
     const auto said = Ros2Protocol::decodeStrings(body, 2);
@@ -242,6 +177,7 @@ void Ros2Link::monitor(const QString& topic)
     if (m_pipe.hasChild()) { // as the participant would say at once: a topic it does not know has no type
         const Ros2Topic* t = m_graph.topic(topic);
         if (!t || t->types.isEmpty()) {
+            // the text is Ros2Participant's: it keeps its translation context
             emit monitorFailed(
                 topic,
                 QCoreApplication::translate("Ros2Participant",
@@ -251,7 +187,7 @@ void Ros2Link::monitor(const QString& topic)
         }
     }
     m_monitorUses.insert(topic, 1); // before start(): subscribed once the graph has the topic
-    send(Kind::Monitor, Ros2Protocol::encodeStrings({topic}));
+    m_pipe.send(Kind::Monitor, Ros2Protocol::encodeStrings({topic}));
 }
 
 void Ros2Link::unmonitor(const QString& topic)
@@ -261,7 +197,7 @@ void Ros2Link::unmonitor(const QString& topic)
         return; // not monitored, or still wanted by another user
     m_monitorUses.erase(uses);
     m_stats.remove(topic);
-    send(Kind::Unmonitor, Ros2Protocol::encodeStrings({topic}));
+    m_pipe.send(Kind::Unmonitor, Ros2Protocol::encodeStrings({topic}));
 }
 
 bool Ros2Link::isMonitored(const QString& topic) const
@@ -290,7 +226,7 @@ void Ros2Link::watchMessages(const QString& topic, std::size_t maxMessages, qint
         r.queue->setLimits(maxMessages, maxBytes);
     else if (m_pipe.hasChild())
         r.queue = std::make_shared<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
-    send(Kind::Watch, Ros2Protocol::encodeWatch(w.limits(topic)));
+    m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(w.limits(topic)));
 }
 
 void Ros2Link::unwatchMessages(const QString& topic, const void* owner)
@@ -300,9 +236,9 @@ void Ros2Link::unwatchMessages(const QString& topic, const void* owner)
         return;
     if (it->readers.isEmpty()) {
         m_watched.erase(it);
-        send(Kind::Unwatch, Ros2Protocol::encodeStrings({topic}));
+        m_pipe.send(Kind::Unwatch, Ros2Protocol::encodeStrings({topic}));
     } else {
-        send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(topic)));
+        m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(topic)));
     }
 }
 
@@ -335,7 +271,7 @@ void Ros2Link::keepArrivals(std::size_t maxArrivals)
     else
         m_arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
     m_childDroppedArrivals = 0;
-    send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(maxArrivals));
+    m_pipe.send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(maxArrivals));
 }
 
 std::vector<SourceHead> Ros2Link::takeArrivals()
@@ -346,101 +282,4 @@ std::vector<SourceHead> Ros2Link::takeArrivals()
 quint64 Ros2Link::droppedArrivals() const
 {
     return m_arrivals ? m_arrivals->dropped() + m_childDroppedArrivals : 0;
-}
-
-void Ros2Link::setNode(const QString& nameSpace, const QString& name)
-{
-    m_node = {nameSpace, name};
-    send(Kind::SetNode, Ros2Protocol::encodeStrings({nameSpace, name}));
-}
-
-namespace {
-Ros2Protocol::EndpointRequest endpointRequest(const QString& topic, const QString& type, Ros2Qos qos)
-{
-    if (qos.depth < 1)
-        qos.depth = 10; // rclcpp's default
-    qos.depth = std::min(qos.depth, Ros2Protocol::kMaxDepth);
-    if (qos.durability != Ros2Qos::Volatile)
-        qos.durability = Ros2Qos::TransientLocal; // what a ROS 2 node can ask for of the two others
-    return {topic, type, qos};
-}
-} // namespace
-
-bool Ros2Link::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
-{
-    return requestEndpoint(true, endpointRequest(topic, type, qos));
-}
-
-bool Ros2Link::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
-{
-    return requestEndpoint(false, endpointRequest(topic, type, qos));
-}
-
-QString Ros2Link::endpointKey(bool advertise, const Ros2Protocol::EndpointRequest& e)
-{
-    return (advertise ? u"A "_s : u"S "_s) + e.topic + u' ' + e.type;
-}
-
-bool Ros2Link::requestEndpoint(bool advertise, const Ros2Protocol::EndpointRequest& e)
-{
-    QString why;
-    const QString key = endpointKey(advertise, e);
-    const bool valid = Ros2Names::isValidTopic(e.topic, &why) && Ros2Names::isValidType(e.type, &why);
-    if (const auto q = m_quarantine.constFind(key); valid && q != m_quarantine.cend())
-        why = *q;
-    if (!why.isEmpty()) {
-        // what was made of the topic before stays made
-        emit endpointRefused(e.topic, why);
-        return false;
-    }
-    (advertise ? m_advertised : m_subscribed).insert(e.topic, e);
-    if (m_pipe.childRunning())
-        m_unanswered.insert(key, e);
-    send(advertise ? Kind::Advertise : Kind::Subscribe, Ros2Protocol::encodeEndpoint(e));
-    return true;
-}
-
-void Ros2Link::refuseEndpoint(bool advertise, const QString& topic, const QString& why)
-{
-    (advertise ? m_advertised : m_subscribed).remove(topic);
-    emit endpointRefused(topic, why); // said by the user (the bridge: its mapping), as often as it sees fit
-}
-
-void Ros2Link::unadvertise(const QString& topic)
-{
-    if (const auto it = m_advertised.constFind(topic); it != m_advertised.cend())
-        m_unanswered.remove(endpointKey(true, *it));
-    if (m_advertised.remove(topic) > 0)
-        send(Kind::Unadvertise, Ros2Protocol::encodeStrings({topic}));
-}
-
-bool Ros2Link::publish(const QString& topic, const QByteArray& cdr)
-{
-    const qint64 pending = m_pipe.childRunning() ? m_pipe.bytesToWrite() : 0;
-    const bool sendable = m_pipe.childRunning() && m_advertised.contains(topic) && cdr.size() >= 4
-        && cdr.size() <= qsizetype(Ros2Protocol::kMaxFrameBytes) - 1024
-        && (pending == 0 || pending + cdr.size() <= m_publishBound);
-    if (!sendable) {
-        ++m_publishDropped;
-        return false;
-    }
-    send(Kind::Publish, Ros2Protocol::encodePublish({topic, cdr}));
-    return true;
-}
-
-void Ros2Link::unsubscribe(const QString& topic)
-{
-    if (const auto it = m_subscribed.constFind(topic); it != m_subscribed.cend())
-        m_unanswered.remove(endpointKey(false, *it));
-    if (m_subscribed.remove(topic) > 0)
-        send(Kind::Unsubscribe, Ros2Protocol::encodeStrings({topic}));
-    m_receivedDropped.remove(topic);
-}
-
-quint64 Ros2Link::droppedReceived() const
-{
-    quint64 n = m_receivedDroppedBefore;
-    for (const quint64 d : m_receivedDropped)
-        n += d;
-    return n;
 }

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/eventbuffer.h"
 #include "base/newestqueue.h"
 #include "latency/messagesource.h"
+#include "ros2/ddschildpipe.h"
+#include "ros2/ros2endpointlink.h"
 #include "ros2/ros2graph.h"
 #include "ros2/ros2protocol.h"
 #include "ros2/ros2types.h"
@@ -13,36 +16,17 @@
 #include <QString>
 #include <vector>
 
-template<typename T> class EventBuffer;
-
-/// What Ros2Link needs of the child process `bridgescope-dds`: DdsChildSupervisor in the program,
-/// a recorder in tests.
-class DdsChildPipe
-{
-public:
-    virtual ~DdsChildPipe() = default;
-    /// A child was launched and its end was not handled yet (it may be ending).
-    virtual bool hasChild() const = 0;
-    /// A child runs: what is sent now reaches it.
-    virtual bool childRunning() const = 0;
-    /// Bytes sent to the running child that it has not read yet.
-    virtual qint64 bytesToWrite() const = 0;
-    /// One frame to the running child (dropped when none runs).
-    virtual void send(Ros2Protocol::Kind kind, const QByteArray& body) = 0;
-};
-
 /// The parent side of the ROS 2 participant's pipe, above the process: owns everything asked of
 /// the child (monitored topics with their counted uses, watched topics with each owner's queue,
-/// arrivals kept, the node, advertised and subscribed endpoints), asks it again of each new child
-/// (replay()), reads what the child sends (handle()), and quarantines the requests a child ended
-/// while making (childLost()): they are never asked again. Knows nothing of processes: the pipe
-/// does (DdsChildSupervisor); Ros2Participant puts the two together.
+/// arrivals kept; the node and its endpoints in endpoints()), asks it again of each new child
+/// (replay()), reads what the child sends (handle()), and has the requests a child ended while
+/// making quarantined (childLost()): they are never asked again. Knows nothing of processes: the
+/// pipe does (DdsChildSupervisor); Ros2Participant puts the two together.
 class Ros2Link : public QObject
 {
     Q_OBJECT
 public:
     explicit Ros2Link(DdsChildPipe& pipe, QObject* parent = nullptr);
-    ~Ros2Link() override;
 
     /// A new child runs: asks it to join as `options` say, then everything asked so far, except
     /// quarantined requests.
@@ -50,12 +34,12 @@ public:
     /// A frame from the child; false when it does not read or is not one the child may send.
     bool handle(const Ros2Protocol::Frame& frame);
     /// Whether the child that ended was making a request (Advertise, Subscribe not answered yet).
-    bool makingRequests() const { return !m_unanswered.isEmpty(); }
+    bool makingRequests() const { return m_endpoints.makingRequests(); }
     /// Whether peers caused the end of the child: it was making a request, or it ran into trouble
     /// (`ranInto`: crashed, stalled, sent a frame that does not read) while others were on the domain.
     bool causedByPeers(bool ranInto) const;
     /// The child ended unasked (`why`): its graph and figures are gone, and the requests it was
-    /// making are quarantined (endpointRefused()).
+    /// making are quarantined (Ros2EndpointLink::endpointRefused()).
     void childLost(const QString& why);
     /// The child was ended on purpose: its graph, figures, samples and arrivals are gone; what was
     /// asked stays, to be replayed.
@@ -82,24 +66,9 @@ public:
     std::vector<SourceHead> takeArrivals();
     quint64 droppedArrivals() const;
 
-    void setNode(const QString& nameSpace, const QString& name);
-    /// Asks for a writer; false, with endpointRefused(), when its name or type may not be given to
-    /// DDS or it is quarantined (as Ros2Participant::advertise()).
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos);
-    void unadvertise(const QString& topic);
-    bool isAdvertised(const QString& topic) const { return m_advertised.contains(topic); }
-    bool publish(const QString& topic, const QByteArray& cdr);
-    void setPublishBound(qint64 bytes) { m_publishBound = bytes; }
-    quint64 publishDropped() const { return m_publishDropped; }
-    /// Asks for a reader, as advertise().
-    bool subscribe(const QString& topic, const QString& type, const Ros2Qos& qos);
-    void unsubscribe(const QString& topic);
-    bool isSubscribed(const QString& topic) const { return m_subscribed.contains(topic); }
-    quint64 droppedReceived() const;
-    int quarantined() const { return int(m_quarantine.size()); }
-    QString lastQuarantineReason() const { return m_lastQuarantine; }
-
-    static constexpr qint64 kMaxPendingPublishBytes = 128 * 1024 * 1024;
+    /// The node and its writers and readers.
+    Ros2EndpointLink& endpoints() { return m_endpoints; }
+    const Ros2EndpointLink& endpoints() const { return m_endpoints; }
 
 signals:
     void graphChanged(const Ros2Graph& graph);
@@ -108,8 +77,6 @@ signals:
     void started();
     /// The child could not make its participant (StartFailed), and why.
     void startFailed(const QString& why);
-    void endpointRefused(const QString& topic, const QString& why);
-    void received(const QString& topic, const Ros2Sample& sample);
 
 private:
     /// One owner's queue of a watched topic.
@@ -126,20 +93,12 @@ private:
         /// What the child keeps between two polls: enough for the most demanding owner.
         Ros2Protocol::WatchRequest limits(const QString& topic) const;
     };
-    void send(Ros2Protocol::Kind kind, const QByteArray& body = {});
-    bool onStartFailed(const QByteArray& body);
     bool onGraph(const QByteArray& body);
     bool onStats(const QByteArray& body);
     bool onSamples(const QByteArray& body);
     bool onArrivals(const QByteArray& body);
-    bool onReceived(const QByteArray& body);
-    bool onEndpointDone(const QByteArray& body);
     bool onMonitorFailed(const QByteArray& body);
     const Reader* reader(const QString& topic, const void* owner) const;
-    static QString endpointKey(bool advertise, const Ros2Protocol::EndpointRequest& e);
-    /// Sends an Advertise or Subscribe, waiting for its answer; false when it is refused at once.
-    bool requestEndpoint(bool advertise, const Ros2Protocol::EndpointRequest& e);
-    void refuseEndpoint(bool advertise, const QString& topic, const QString& why);
 
     DdsChildPipe& m_pipe;
     int m_graphInterval = 250;
@@ -152,21 +111,5 @@ private:
     Ros2Graph m_graph;
     quint64 m_badInfo = 0;
 
-    struct Node
-    {
-        QString nameSpace;
-        QString name;
-    };
-    Node m_node;
-    QHash<QString, Ros2Protocol::EndpointRequest> m_advertised; ///< across stop() and start()
-    QHash<QString, Ros2Protocol::EndpointRequest> m_subscribed; ///< across stop() and start()
-    /// Advertise and Subscribe requests the child has not answered (EndpointDone) yet, by key.
-    QHash<QString, Ros2Protocol::EndpointRequest> m_unanswered;
-    /// Requests during which a child ended, by key, with why: never sent again.
-    QHash<QString, QString> m_quarantine;
-    QString m_lastQuarantine;
-    QHash<QString, quint64> m_receivedDropped; ///< the child's count, by topic, since its start
-    quint64 m_receivedDroppedBefore = 0; ///< counted by children before this one
-    quint64 m_publishDropped = 0;
-    qint64 m_publishBound = kMaxPendingPublishBytes;
+    Ros2EndpointLink m_endpoints;
 };

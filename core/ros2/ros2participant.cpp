@@ -50,14 +50,15 @@ Ros2Participant::Ros2Participant(QObject* parent)
     });
     connect(&m_link, &Ros2Link::graphChanged, this, &Ros2Participant::graphChanged);
     connect(&m_link, &Ros2Link::monitorFailed, this, &Ros2Participant::monitorFailed);
-    connect(&m_link, &Ros2Link::endpointRefused, this, &Ros2Participant::endpointRefused);
-    connect(&m_link, &Ros2Link::received, this, &Ros2Participant::received);
+    connect(&m_link.endpoints(), &Ros2EndpointLink::endpointRefused, this, &Ros2Participant::endpointRefused);
+    connect(&m_link.endpoints(), &Ros2EndpointLink::received, this, &Ros2Participant::received);
 }
 
 Ros2Participant::~Ros2Participant()
 {
     m_supervisor.disconnect(this);
     m_link.disconnect(this);
+    m_link.endpoints().disconnect(this);
 }
 
 bool Ros2Participant::isRunning() const
@@ -237,35 +238,35 @@ quint64 Ros2Participant::droppedArrivals() const
 
 void Ros2Participant::setNode(const QString& nameSpace, const QString& name)
 {
-    m_link.setNode(nameSpace, name);
+    m_link.endpoints().setNode(nameSpace, name);
 }
 
 bool Ros2Participant::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
-    return m_link.advertise(topic, type, qos);
+    return m_link.endpoints().advertise(topic, type, qos);
 }
 
 void Ros2Participant::unadvertise(const QString& topic)
 {
-    m_link.unadvertise(topic);
+    m_link.endpoints().unadvertise(topic);
 }
 
 bool Ros2Participant::publish(const QString& topic, const QByteArray& cdr)
 {
-    return m_link.publish(topic, cdr);
+    return m_link.endpoints().publish(topic, cdr);
 }
 
 bool Ros2Participant::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
-    return m_link.subscribe(topic, type, qos);
+    return m_link.endpoints().subscribe(topic, type, qos);
 }
 
 void Ros2Participant::unsubscribe(const QString& topic)
 {
-    m_link.unsubscribe(topic);
+    m_link.endpoints().unsubscribe(topic);
 }
 
 quint64 Ros2Participant::droppedReceived() const
 {
-    return m_link.droppedReceived();
+    return m_link.endpoints().droppedReceived();
 }

@@ -34,8 +34,8 @@ template<typename T> class EventBuffer;
 /// the child.
 ///
 /// The work is split by what each part knows: DdsChildSupervisor keeps the child running (launch,
-/// watchdog, backoff, restart counts), Ros2Link keeps what is asked of it and replays it; this
-/// object is the one both are used through.
+/// watchdog, backoff, restart counts), Ros2Link keeps what is asked of it and replays it (the node
+/// and its writers and readers in Ros2EndpointLink); this object is the one they are used through.
 ///
 /// The graph is rebuilt in the child when discovery pauses, or once a graph interval (250 ms
 /// unless setGraphInterval()) while it goes on; graphChanged() fires when it changed. Monitored
@@ -141,7 +141,7 @@ public:
     /// ended while it made it before (see endpointRefused()).
     bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos = {});
     void unadvertise(const QString& topic);
-    bool isAdvertised(const QString& topic) const { return m_link.isAdvertised(topic); }
+    bool isAdvertised(const QString& topic) const { return m_link.endpoints().isAdvertised(topic); }
     /// One sample: CDR bytes with their 4-byte encapsulation header (00 01 00 00). False, and
     /// counted by publishDropped(), when it cannot be sent now: not advertised, the child not
     /// running, the pipe holding the publish bound already, or a sample that is not CDR. A sample
@@ -149,9 +149,9 @@ public:
     bool publish(const QString& topic, const QByteArray& cdr);
     /// Bytes of samples the pipe to the child may hold before publish() drops (default
     /// kMaxPendingPublishBytes).
-    void setPublishBound(qint64 bytes) { m_link.setPublishBound(bytes); }
-    static constexpr qint64 kMaxPendingPublishBytes = Ros2Link::kMaxPendingPublishBytes;
-    quint64 publishDropped() const { return m_link.publishDropped(); }
+    void setPublishBound(qint64 bytes) { m_link.endpoints().setPublishBound(bytes); }
+    static constexpr qint64 kMaxPendingPublishBytes = Ros2EndpointLink::kMaxPendingPublishBytes;
+    quint64 publishDropped() const { return m_link.endpoints().publishDropped(); }
     /// A DDS reader of `topic` of `type` with `qos` (as advertise()'s), made at once whether or not
     /// the graph knows the topic. Every sample comes by received() as soon as the child passes it
     /// on. Samples are at most Ros2RawType's 64 MiB, queued in the child within a byte bound (the
@@ -159,13 +159,13 @@ public:
     /// False, with endpointRefused(), as advertise().
     bool subscribe(const QString& topic, const QString& type, const Ros2Qos& qos = {});
     void unsubscribe(const QString& topic);
-    bool isSubscribed(const QString& topic) const { return m_link.isSubscribed(topic); }
+    bool isSubscribed(const QString& topic) const { return m_link.endpoints().isSubscribed(topic); }
     /// Samples of subscribed topics the child dropped because too many waited for the pipe (since
     /// this object was made).
     quint64 droppedReceived() const;
     /// Requests quarantined since this object was made (see endpointRefused()).
-    int quarantined() const { return m_link.quarantined(); }
-    QString lastQuarantineReason() const { return m_link.lastQuarantineReason(); }
+    int quarantined() const { return m_link.endpoints().quarantined(); }
+    QString lastQuarantineReason() const { return m_link.endpoints().lastQuarantineReason(); }
 
     /// The child program: $BRIDGESCOPE_DDS, beside this program, in ../libexec/bridgescope, or in
     /// the build tree.

@@ -136,9 +136,9 @@ void TestRos2Link::replaysEverythingAskedAfterARestart()
     link.monitor(u"/a"_s);
     link.watchMessages(u"/w"_s, 5, 1000, nullptr);
     link.keepArrivals(7);
-    link.setNode(u"/ns"_s, u"bridge"_s);
-    QVERIFY(link.advertise(u"/out"_s, kString, {}));
-    QVERIFY(link.subscribe(u"/in"_s, kString, {}));
+    link.endpoints().setNode(u"/ns"_s, u"bridge"_s);
+    QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
+    QVERIFY(link.endpoints().subscribe(u"/in"_s, kString, {}));
 
     pipe.up = true;
     pipe.sent.clear();
@@ -152,7 +152,7 @@ void TestRos2Link::replaysEverythingAskedAfterARestart()
     QVERIFY(!link.makingRequests());
 
     // a child that ends after it answered: the next is asked the same
-    QSignalSpy refused(&link, &Ros2Link::endpointRefused);
+    QSignalSpy refused(&link.endpoints(), &Ros2EndpointLink::endpointRefused);
     link.childLost(u"crashed (signal 11)"_s);
     QCOMPARE(refused.count(), 0);
     pipe.sent.clear();
@@ -169,23 +169,23 @@ void TestRos2Link::aRequestTheChildDiedOnIsQuarantinedNotReplayed()
 {
     RecordingPipe pipe;
     Ros2Link link(pipe);
-    QVERIFY(link.advertise(u"/out"_s, kString, {}));
-    QVERIFY(link.subscribe(u"/in"_s, kString, {}));
+    QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
+    QVERIFY(link.endpoints().subscribe(u"/in"_s, kString, {}));
     QVERIFY(link.handle(endpointDone(false, u"/in"_s))); // answered: not what the child died on
     QVERIFY(link.makingRequests());
     QVERIFY(link.causedByPeers(false));
 
-    QSignalSpy refused(&link, &Ros2Link::endpointRefused);
+    QSignalSpy refused(&link.endpoints(), &Ros2EndpointLink::endpointRefused);
     link.childLost(u"crashed (signal 6)"_s);
     const QString reason
         = u"the DDS process crashed (signal 6) while making it: quarantined, not asked again"_s;
     QCOMPARE(refused.count(), 1);
     QCOMPARE(refused.at(0).at(0).toString(), u"/out"_s);
     QCOMPARE(refused.at(0).at(1).toString(), reason);
-    QCOMPARE(link.quarantined(), 1);
-    QCOMPARE(link.lastQuarantineReason(), u"/out: "_s + reason);
-    QVERIFY(!link.isAdvertised(u"/out"_s));
-    QVERIFY(link.isSubscribed(u"/in"_s));
+    QCOMPARE(link.endpoints().quarantined(), 1);
+    QCOMPARE(link.endpoints().lastQuarantineReason(), u"/out: "_s + reason);
+    QVERIFY(!link.endpoints().isAdvertised(u"/out"_s));
+    QVERIFY(link.endpoints().isSubscribed(u"/in"_s));
 
     pipe.sent.clear();
     link.replay({});
@@ -193,12 +193,12 @@ void TestRos2Link::aRequestTheChildDiedOnIsQuarantinedNotReplayed()
 
     // asked again as it was: refused at once, never sent
     pipe.sent.clear();
-    QVERIFY(!link.advertise(u"/out"_s, kString, {}));
+    QVERIFY(!link.endpoints().advertise(u"/out"_s, kString, {}));
     QCOMPARE(refused.count(), 2);
     QCOMPARE(refused.at(1).at(1).toString(), reason);
     QVERIFY(pipe.sent.isEmpty());
     // another type on the topic is another request
-    QVERIFY(link.advertise(u"/out"_s, u"std_msgs/msg/Int32"_s, {}));
+    QVERIFY(link.endpoints().advertise(u"/out"_s, u"std_msgs/msg/Int32"_s, {}));
     QCOMPARE(pipe.said(), QStringList({u"Advertise /out"_s}));
 }
 
@@ -206,29 +206,29 @@ void TestRos2Link::anAnsweredRequestIsNotQuarantined()
 {
     RecordingPipe pipe;
     Ros2Link link(pipe);
-    QVERIFY(link.advertise(u"/out"_s, kString, {}));
+    QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
     QVERIFY(link.handle(endpointDone(true, u"/out"_s)));
-    link.unadvertise(u"/out"_s);
+    link.endpoints().unadvertise(u"/out"_s);
     QVERIFY(!link.makingRequests());
     link.childLost(u"crashed (signal 11)"_s);
-    QCOMPARE(link.quarantined(), 0);
+    QCOMPARE(link.endpoints().quarantined(), 0);
 }
 
 void TestRos2Link::aRefusedEndpointIsForgotten()
 {
     RecordingPipe pipe;
     Ros2Link link(pipe);
-    QSignalSpy refused(&link, &Ros2Link::endpointRefused);
-    QVERIFY(!link.advertise(u"/bad topic"_s, kString, {}));
+    QSignalSpy refused(&link.endpoints(), &Ros2EndpointLink::endpointRefused);
+    QVERIFY(!link.endpoints().advertise(u"/bad topic"_s, kString, {}));
     QCOMPARE(refused.count(), 1);
     QVERIFY(pipe.sent.isEmpty());
 
-    QVERIFY(link.advertise(u"/out"_s, kString, {}));
+    QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
     QVERIFY(link.handle(endpointDone(true, u"/out"_s, u"Cyclone said no"_s)));
     QCOMPARE(refused.count(), 2);
     QCOMPARE(refused.at(1).at(1).toString(), u"Cyclone said no"_s);
-    QVERIFY(!link.isAdvertised(u"/out"_s));
-    QCOMPARE(link.quarantined(), 0);
+    QVERIFY(!link.endpoints().isAdvertised(u"/out"_s));
+    QCOMPARE(link.endpoints().quarantined(), 0);
     pipe.sent.clear();
     link.replay({});
     QCOMPARE(pipe.said(), QStringList({u"Start"_s}));
@@ -321,18 +321,18 @@ void TestRos2Link::publishKeepsItsBound()
 {
     RecordingPipe pipe;
     Ros2Link link(pipe);
-    QVERIFY(!link.publish(u"/out"_s, kCdr)); // not advertised
-    QVERIFY(link.advertise(u"/out"_s, kString, {}));
-    QVERIFY(link.publish(u"/out"_s, kCdr));
-    link.setPublishBound(16);
+    QVERIFY(!link.endpoints().publish(u"/out"_s, kCdr)); // not advertised
+    QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
+    QVERIFY(link.endpoints().publish(u"/out"_s, kCdr));
+    link.endpoints().setPublishBound(16);
     pipe.pending = 8;
-    QVERIFY(!link.publish(u"/out"_s, kCdr)); // 8 waiting + 14 is over 16
+    QVERIFY(!link.endpoints().publish(u"/out"_s, kCdr)); // 8 waiting + 14 is over 16
     pipe.pending = 0;
-    QVERIFY(link.publish(u"/out"_s, kCdr + kCdr)); // larger than the bound, but nothing waits
-    QVERIFY(!link.publish(u"/out"_s, QByteArray("\x00\x01", 2))); // not CDR
+    QVERIFY(link.endpoints().publish(u"/out"_s, kCdr + kCdr)); // larger than the bound, but nothing waits
+    QVERIFY(!link.endpoints().publish(u"/out"_s, QByteArray("\x00\x01", 2))); // not CDR
     pipe.up = false;
-    QVERIFY(!link.publish(u"/out"_s, kCdr));
-    QCOMPARE(link.publishDropped(), quint64(4));
+    QVERIFY(!link.endpoints().publish(u"/out"_s, kCdr));
+    QCOMPARE(link.endpoints().publishDropped(), quint64(4));
 }
 
 QTEST_GUILESS_MAIN(TestRos2Link)
