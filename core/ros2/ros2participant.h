@@ -3,7 +3,9 @@
 
 #include "base/newestqueue.h"
 #include "latency/messagesource.h"
+#include "ros2/ddschildsupervisor.h"
 #include "ros2/ros2graph.h"
+#include "ros2/ros2link.h"
 #include "ros2/ros2protocol.h"
 #include "ros2/ros2types.h"
 
@@ -31,6 +33,10 @@ template<typename T> class EventBuffer;
 /// (monitored, watched topics, arrivals) is asked again. Nothing here blocks on the network or on
 /// the child.
 ///
+/// The work is split by what each part knows: DdsChildSupervisor keeps the child running (launch,
+/// watchdog, backoff, restart counts), Ros2Link keeps what is asked of it and replays it (the node
+/// and its writers and readers in Ros2EndpointLink); this object is the one they are used through.
+///
 /// The graph is rebuilt in the child when discovery pauses, or once a graph interval (250 ms
 /// unless setGraphInterval()) while it goes on; graphChanged() fires when it changed. Monitored
 /// topics' figures come every kStatsMs; watched samples and arrivals every poll of the child.
@@ -52,24 +58,24 @@ public:
     static constexpr int kStatsMs = Ros2Protocol::kStatsMs;
     void setGraphInterval(int ms);
 
-    const Ros2Graph& graph() const { return m_graph; }
+    const Ros2Graph& graph() const { return m_link.graph(); }
     /// Samples of ros_discovery_info that could not be read (each also logged once per participant).
-    quint64 badDiscoveryInfo() const { return m_badInfo; }
+    quint64 badDiscoveryInfo() const { return m_link.badDiscoveryInfo(); }
     /// How often the child was started again since start(), and why the last time.
-    quint64 restarts() const { return m_restarts; }
-    QString lastRestartReason() const { return m_restartReason; }
+    quint64 restarts() const { return m_supervisor.restarts().restarts(); }
+    QString lastRestartReason() const { return m_supervisor.restarts().lastReason(); }
     /// Why the participant is not on the domain, when it is not (empty while it is, or stopped).
     QString lastError() const { return m_error; }
     /// Restarts caused by a peer: the child ended (crashed, stalled, sent a frame that does not read)
     /// while it made an endpoint asked for from outside data (then quarantined), or while other
     /// participants were on the domain (discovery). The others: nobody else was there.
-    quint64 peerRestarts() const { return m_peerRestarts; }
+    quint64 peerRestarts() const { return m_supervisor.restarts().peerRestarts(); }
     /// Restart loops detected and broken: kLoopRestarts restarts in a row that no quarantine
     /// explains, none of the children steady (kStableMs) in between. The loop is broken by starting
     /// the next children with the graph limited (Ros2Options::limitedGraph: a tenth of the
     /// endpoints a participant and in all), until stop(); said by restartLoopBroken().
-    int restartLoopsBroken() const { return m_loopsBroken; }
-    static constexpr int kLoopRestarts = 3;
+    int restartLoopsBroken() const { return m_supervisor.restarts().loopsBroken(); }
+    static constexpr int kLoopRestarts = DdsRestartCount::kLoopRestarts;
     /// "ROS 2 discovery restarted 2 times, 1 caused by peers (last: crashed: signal 6)", with the
     /// loop broken and the quarantined requests, or empty: for status lines.
     QString restartText() const;
@@ -101,7 +107,7 @@ public:
     void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
                        const void* owner = nullptr);
     void unwatchMessages(const QString& topic, const void* owner = nullptr);
-    bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
+    bool isWatched(const QString& topic) const { return m_link.isWatched(topic); }
     /// The watched topic's samples since the owner's last call, oldest first.
     std::vector<Ros2Sample> takeMessages(const QString& topic, const void* owner = nullptr);
     /// Samples of a watched topic dropped because too many came between two takes (counted from
@@ -135,7 +141,7 @@ public:
     /// ended while it made it before (see endpointRefused()).
     bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos = {});
     void unadvertise(const QString& topic);
-    bool isAdvertised(const QString& topic) const { return m_advertised.contains(topic); }
+    bool isAdvertised(const QString& topic) const { return m_link.endpoints().isAdvertised(topic); }
     /// One sample: CDR bytes with their 4-byte encapsulation header (00 01 00 00). False, and
     /// counted by publishDropped(), when it cannot be sent now: not advertised, the child not
     /// running, the pipe holding the publish bound already, or a sample that is not CDR. A sample
@@ -143,9 +149,9 @@ public:
     bool publish(const QString& topic, const QByteArray& cdr);
     /// Bytes of samples the pipe to the child may hold before publish() drops (default
     /// kMaxPendingPublishBytes).
-    void setPublishBound(qint64 bytes) { m_publishBound = bytes; }
-    static constexpr qint64 kMaxPendingPublishBytes = 128 * 1024 * 1024;
-    quint64 publishDropped() const { return m_publishDropped; }
+    void setPublishBound(qint64 bytes) { m_link.endpoints().setPublishBound(bytes); }
+    static constexpr qint64 kMaxPendingPublishBytes = Ros2EndpointLink::kMaxPendingPublishBytes;
+    quint64 publishDropped() const { return m_link.endpoints().publishDropped(); }
     /// A DDS reader of `topic` of `type` with `qos` (as advertise()'s), made at once whether or not
     /// the graph knows the topic. Every sample comes by received() as soon as the child passes it
     /// on. Samples are at most Ros2RawType's 64 MiB, queued in the child within a byte bound (the
@@ -153,21 +159,21 @@ public:
     /// False, with endpointRefused(), as advertise().
     bool subscribe(const QString& topic, const QString& type, const Ros2Qos& qos = {});
     void unsubscribe(const QString& topic);
-    bool isSubscribed(const QString& topic) const { return m_subscribed.contains(topic); }
+    bool isSubscribed(const QString& topic) const { return m_link.endpoints().isSubscribed(topic); }
     /// Samples of subscribed topics the child dropped because too many waited for the pipe (since
     /// this object was made).
     quint64 droppedReceived() const;
     /// Requests quarantined since this object was made (see endpointRefused()).
-    int quarantined() const { return int(m_quarantine.size()); }
-    QString lastQuarantineReason() const { return m_lastQuarantine; }
+    int quarantined() const { return m_link.endpoints().quarantined(); }
+    QString lastQuarantineReason() const { return m_link.endpoints().lastQuarantineReason(); }
 
     /// The child program: $BRIDGESCOPE_DDS, beside this program, in ../libexec/bridgescope, or in
     /// the build tree.
-    static QString program();
+    static QString program() { return DdsChildSupervisor::program(); }
     /// The backoff before the n-th restart in a row (1, 2, ...): 250 ms doubling up to 30 s.
-    static int backoffMs(int restartsInARow);
+    static int backoffMs(int restartsInARow) { return DdsRestartCount::backoffMs(restartsInARow); }
     /// The child is ended when it sends nothing for this long (it sends a heartbeat every second).
-    static constexpr int kSilenceMs = 10'000;
+    static constexpr int kSilenceMs = DdsChildSupervisor::kSilenceMs;
 
 signals:
     /// The graph changed, or what is shown with it did (badDiscoveryInfo(), restarts(),
@@ -191,79 +197,12 @@ signals:
     void received(const QString& topic, const Ros2Sample& sample);
 
 private:
-    /// One owner's queue of a watched topic.
-    struct Reader
-    {
-        std::size_t maxMessages = 0;
-        qint64 maxBytes = 0;
-        std::shared_ptr<NewestQueue<Ros2Sample>> queue; ///< from the first samples until stop()
-    };
-    struct Watched
-    {
-        QHash<const void*, Reader> readers;
-        quint64 childDropped = 0;
-        /// What the child keeps between two polls: enough for the most demanding owner.
-        Ros2Protocol::WatchRequest limits(const QString& topic) const;
-    };
-    void launch();
-    void send(Ros2Protocol::Kind kind, const QByteArray& body = {});
-    void onOutput();
-    bool handle(const Ros2Protocol::Frame& frame);
-    void onFinished();
-    void childFailed(const QString& why);
-    void checkSilence();
-    /// Closes the child's input; it ends by itself (waited for up to a second with `wait`), or is
-    /// killed after 3 s.
-    void endChild(bool wait = false);
+    void onLaunched(bool limitedGraph);
+    void onLaunchFailed(const QString& why);
+    void onChildFailed(const QString& why, const QString& loopBroken);
 
+    DdsChildSupervisor m_supervisor;
+    Ros2Link m_link;
     Ros2Options m_options;
-    bool m_wanted = false; ///< between start() and stop()
-    QProcess* m_child = nullptr;
-    Ros2Protocol::FrameReader m_reader;
-    QElapsedTimer m_lastFrame;
-    QElapsedTimer m_up; ///< since the child started
-    QTimer m_watchdog;
-    QTimer m_restartTimer;
-    int m_restartsInARow = 0;
-    int m_unexplainedInARow = 0; ///< restarts in a row without a request quarantined for them
-    quint64 m_restarts = 0;
-    quint64 m_peerRestarts = 0;
-    int m_loopsBroken = 0;
-    bool m_limitedGraph = false; ///< since a loop was broken, until stop()
-    QString m_restartReason;
-    QString m_failure; ///< why the child is being ended (a frame that did not read, silence)
     QString m_error;
-
-    int m_graphInterval = 250;
-    std::size_t m_keepArrivals = 0;
-    QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
-    QHash<QString, Watched> m_watched; ///< what watchMessages() asked for, across stop() and start()
-    const Reader* reader(const QString& topic, const void* owner) const;
-    QHash<QString, Ros2MonitorStats> m_stats;
-    std::unique_ptr<EventBuffer<SourceHead>> m_arrivals;
-    quint64 m_childDroppedArrivals = 0;
-    Ros2Graph m_graph;
-    quint64 m_badInfo = 0;
-
-    struct Node
-    {
-        QString nameSpace;
-        QString name;
-    };
-    Node m_node;
-    QHash<QString, Ros2Protocol::EndpointRequest> m_advertised; ///< across stop() and start()
-    QHash<QString, Ros2Protocol::EndpointRequest> m_subscribed; ///< across stop() and start()
-    /// Advertise and Subscribe requests the child has not answered (EndpointDone) yet, by key.
-    QHash<QString, Ros2Protocol::EndpointRequest> m_unanswered;
-    /// Requests during which a child ended, by key, with why: never sent again.
-    QHash<QString, QString> m_quarantine;
-    QString m_lastQuarantine;
-    static QString endpointKey(bool advertise, const Ros2Protocol::EndpointRequest& e);
-    /// Sends an Advertise or Subscribe, waiting for its answer; false when it is refused at once.
-    bool requestEndpoint(bool advertise, const Ros2Protocol::EndpointRequest& e);
-    void refuseEndpoint(bool advertise, const QString& topic, const QString& why);
-    QHash<QString, quint64> m_receivedDropped; ///< the child's count, by topic, since its start
-    quint64 m_receivedDroppedBefore = 0; ///< counted by children before this one
-    quint64 m_publishDropped = 0;
-    qint64 m_publishBound = kMaxPendingPublishBytes;
 };

@@ -243,10 +243,7 @@ constexpr int kMaxFunctionLines = 100;
 /// longer over the limit is said too, so that the list only shrinks.
 const QHash<QString, QString>& knownLongFunctions()
 {
-    static const QHash<QString, QString> known {
-        {u"core/ros2/ros2participant.cpp:Ros2Participant::handle"_s,
-         u"109 lines since issue 41's loop detection; issue 42 point 2 splits the participant"_s},
-    };
+    static const QHash<QString, QString> known {};
     return known;
 }
 
