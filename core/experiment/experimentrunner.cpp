@@ -161,7 +161,7 @@ ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QSt
     connect(m_throughputStep.get(), &ThroughputStep::probeFinished, this, &ExperimentRunner::probeFinished);
     connect(m_throughputStep.get(), &ThroughputStep::finished, this, [this] {
         m_throughputDone = true;
-        nextCell();
+        finish(); // not nextCell(): it would begin a failed cell a second time
     });
 }
 
@@ -251,6 +251,11 @@ void ExperimentRunner::nextCell()
         m_throughputStep->start();
         return;
     }
+    finish();
+}
+
+void ExperimentRunner::finish()
+{
     const bool all = std::all_of(m_statuses.cbegin(), m_statuses.cend(),
                                  [](const CellStatus& s) { return s.state == CellStatus::Complete; });
     emit finished(all);

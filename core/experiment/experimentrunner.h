@@ -74,6 +74,7 @@ signals:
 private:
     struct Cell;
     void nextCell();
+    void finish(); ///< finished(), whether every cell is complete
     void beginCell(int index);
     void poll();
     void saySilence(Cell& c);

@@ -4,8 +4,10 @@
 // go up until one is not sustained and nothing is tried after it; what it signals is what it
 // writes to DIR/throughput.json; a later start keeps the complete sizes and measures a size that
 // is not complete again from its first rate; stop() starts no further rate and drops a running one.
+// The runner starts it after the cells, and a cell that failed is not begun again after it.
 #include "experiment/experimentfolder.h"
 #include "experiment/experimentplan.h"
+#include "experiment/experimentrunner.h"
 #include "experiment/throughputstep.h"
 #include "resulttext.h"
 #include "testservers.h"
@@ -193,6 +195,36 @@ private slots:
         QCOMPARE(points.size(), 1);
         QCOMPARE(finished.size(), 0);
         QCOMPARE(fileOf(path), before);
+    }
+
+    // The runner starts the step after the cells, and each cell once per start: a cell that
+    // failed was begun again once the step had finished.
+    void theRunnerTriesAFailedCellOncePerStart()
+    {
+        const QByteArray yaml = "samples: 10\nservers: {broker: \"" + m_servers.brokerUrl().toUtf8()
+            + "\", ros_master: \"" + m_servers.rosMasterUri().toUtf8()
+            + "\"}\n"
+              "bridges:\n  broken: {command: \"echo no such bridge {config} >&2; exit 3\"}\n"
+              "cells:\n  - {payload: 2000, bridge: broken}\n"
+              "throughput: {rates_hz: [5], seconds: 1}\n";
+        QString why;
+        const auto plan = noted(ExperimentPlan::read(yaml, m_dir.path()), &why);
+        QVERIFY2(plan, qPrintable(why));
+        ExperimentRunner::Options options;
+        options.program = QStringLiteral(BRIDGESCOPE_BINARY);
+        ExperimentRunner runner(*plan, yaml, m_dir.filePath(u"runner"_s), options);
+        QVERIFY2(runner.prepare(&why), qPrintable(why));
+        QSignalSpy cells(&runner, &ExperimentRunner::cellStarted);
+        QSignalSpy probes(&runner, &ExperimentRunner::probeStarted);
+        QSignalSpy finished(&runner, &ExperimentRunner::finished);
+        runner.start();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+        QCOMPARE(finished[0][0].toBool(), false);
+        QCOMPARE(runner.statuses()[0].state, CellStatus::Failed);
+        QCOMPARE(cells.size(), 1);
+        QCOMPARE(probes.size(), 1);
+        QCOMPARE(runner.throughput().size(), 1);
+        QVERIFY(runner.throughput()[0].complete);
     }
 };
 
