@@ -439,7 +439,7 @@ private:
         const YAML::Node t = m_root["throughput"];
         if (!t)
             return {};
-        ThroughputStep step;
+        ThroughputSettings step;
         const YAML::Node rates = t.IsMap() ? t["rates_hz"] : YAML::Node();
         if (!rates || !rates.IsSequence() || rates.size() == 0 || rates.size() > 100)
             return m_r.errorAt(t, ExperimentPlan::tr("throughput is {rates_hz: [10, 20, …], seconds: N}"));

@@ -62,8 +62,9 @@ struct ExperimentCell
     QString label() const; ///< "qos 1, payload 50%"
 };
 
-/// The optional throughput step: per payload size, a rate sweep through the bridges.
-struct ThroughputStep
+/// What the plan asks of the optional throughput step (ThroughputStep): per payload size, a rate
+/// sweep through the bridges.
+struct ThroughputSettings
 {
     QList<double> ratesHz;
     double secondsPerRate = 10;
@@ -93,7 +94,7 @@ public:
     QString pipelinePath; ///< empty: the paper's pipeline of the lab
     QStringList factors; ///< names of the factors that vary, in the plan's order
     QList<ExperimentCell> cells;
-    std::optional<ThroughputStep> throughput;
+    std::optional<ThroughputSettings> throughput;
 
     /// Reads a plan from YAML (bounded by YamlLimits); relative paths in it are taken from
     /// `baseDir`. The error is located at the value it is about ("line 4, column 9: …").

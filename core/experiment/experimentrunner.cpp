@@ -4,9 +4,8 @@
 #include "base/atomicfile.h"
 #include "base/logging.h"
 #include "base/regularfile.h"
-#include "base/secrets.h"
 #include "base/yamllimits.h"
-#include "demo/demolab.h"
+#include "experiment/experimentlab.h"
 #include "experiment/linkrelay.h"
 #include "latency/latencyengine.h"
 #include "latency/pipeline.h"
@@ -17,7 +16,6 @@
 #include "session/measuresession.h"
 
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -25,14 +23,10 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTimer>
-#include <QUrl>
 
 using namespace Qt::StringLiterals;
 
 namespace {
-constexpr int kPollMs = 100;
-/// A probe's samples time out after this (not the 5 s default): the window waits for it.
-constexpr qint64 kProbeTimeoutMs = 2000;
 constexpr qsizetype kMaxStateBytes = ExperimentState::kMaxBytes;
 /// A cell whose broker or master cannot be reached, or whose stamps do not come, says so after this.
 constexpr qint64 kSilenceMs = 5000;
@@ -139,27 +133,13 @@ QString silentStampsText(const MeasureSession& measure, const CellSettings& sett
 
 } // namespace
 
-/// What a running cell holds; destroyed in reverse: the measurement, the live session, the relays,
-/// then the lab (which stops its processes).
-struct ExperimentRunner::Cell
+/// What a running cell holds: its lab, then what the runner keeps of it (destroyed first).
+struct ExperimentRunner::Cell : ExperimentLab
 {
-    DemoLab lab;
-    std::unique_ptr<LinkRelay> vehicleRelay;
-    std::unique_ptr<LinkRelay> cloudRelay;
-    std::unique_ptr<LiveSession> live;
-    std::unique_ptr<MeasureSession> measure;
     QTimer timer;
-    QElapsedTimer clock;
     bool recording = false;
     qint64 totalsSent = 0; ///< of the total series' values, those already in totals()
     QString runPath;
-    // A probe of the throughput step: measuring since windowStartMs (-1: warming up).
-    bool probe = false;
-    double rateHz = 0;
-    qint64 windowStartMs = -1;
-    qint64 resetAtMs = -1; ///< when the warm-up's samples were forgotten
-    qint64 samplesBefore = 0; ///< complete samples when the window opened, and dropped ones
-    qint64 droppedBefore = 0;
     bool silenceSaid = false; ///< warning() was emitted for this cell
 };
 
@@ -174,11 +154,20 @@ ExperimentRunner::ExperimentRunner(ExperimentPlan plan, QByteArray planText, QSt
     m_statuses.resize(m_plan.cells.size());
     for (qsizetype i = 0; i < m_plan.cells.size(); ++i)
         m_statuses[i].run = ExperimentFolder::runPathOf(m_plan.cells[i]);
+    if (!m_plan.throughput)
+        return;
+    m_throughputStep = std::make_unique<ThroughputStep>(m_plan, m_dir, m_options.program);
+    connect(m_throughputStep.get(), &ThroughputStep::probeStarted, this, &ExperimentRunner::probeStarted);
+    connect(m_throughputStep.get(), &ThroughputStep::probeFinished, this, &ExperimentRunner::probeFinished);
+    connect(m_throughputStep.get(), &ThroughputStep::finished, this, [this] {
+        m_throughputDone = true;
+        finish(); // not nextCell(): it would begin a failed cell a second time
+    });
 }
 
 ExperimentRunner::~ExperimentRunner()
 {
-    if (m_cell)
+    if (m_cell || (m_throughputStep && m_throughputStep->isProbing()))
         stop();
 }
 
@@ -258,10 +247,15 @@ void ExperimentRunner::nextCell()
         }
     }
     m_current = -1;
-    if (m_plan.throughput && !m_throughputDone) {
-        nextProbe();
+    if (m_throughputStep && !m_throughputDone) {
+        m_throughputStep->start();
         return;
     }
+    finish();
+}
+
+void ExperimentRunner::finish()
+{
     const bool all = std::all_of(m_statuses.cbegin(), m_statuses.cend(),
                                  [](const CellStatus& s) { return s.state == CellStatus::Complete; });
     emit finished(all);
@@ -290,74 +284,12 @@ void ExperimentRunner::beginCell(int index)
         return;
     }
     QString why;
-    if (!startLab(cell.settings, index, &why)) {
+    if (!m_cell->start(m_plan, cell.settings, index, m_dir, m_options.program, &why)) {
         endCell(CellStatus::Failed, why);
         return;
     }
     connect(&m_cell->timer, &QTimer::timeout, this, &ExperimentRunner::poll);
-    m_cell->timer.start(kPollMs);
-}
-
-bool ExperimentRunner::startLab(const CellSettings& s, int seed, QString* why)
-{
-    Cell& c = *m_cell;
-    c.clock.start();
-    DemoLab::Options o;
-    o.program = m_options.program;
-    o.payloadBytes = s.payloadBytes;
-    o.rateHz = s.rateHz;
-    o.detectionMs = s.detectionMs;
-    o.cloudOffsetMs = 0; // one machine, one clock: the crossing stages are the one-way latencies
-    o.brokerUrl = m_plan.brokerUrl;
-    o.rosMasterUri = m_plan.rosMasterUri;
-    o.qos = s.qos;
-    o.queueSize = s.queueSize;
-    o.announceEveryMessage = s.announceEveryMessage;
-    o.tlsDirectory = s.tls ? QDir(m_dir).filePath(u"tls"_s) : QString();
-    o.bridgeCommand = s.bridge.command;
-    o.ros = m_plan.ros; // ROS 2: the lab picks a fresh free domain for each cell
-    if (!c.lab.startServers(o, why))
-        return false;
-    if (!s.link.isNone()) {
-        // host and port without the user info: a password may hold what QUrl refuses
-        const QUrl broker(Secrets::urlWithoutCredentials(c.lab.brokerUrl()));
-        const quint16 port = quint16(broker.port(1883));
-        c.vehicleRelay = LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 1);
-        c.cloudRelay = c.vehicleRelay
-            ? LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 2)
-            : nullptr;
-        if (!c.cloudRelay)
-            return false;
-        c.lab.setBridgePort(u"vehicle"_s, c.vehicleRelay->port());
-        c.lab.setBridgePort(u"cloud"_s, c.cloudRelay->port());
-    }
-    if (!c.lab.startComponents(why))
-        return false;
-    Result<Pipeline> pipeline
-        = Pipeline::readFile(m_plan.pipelinePath.isEmpty() ? c.lab.pipelinePath() : m_plan.pipelinePath);
-    if (!pipeline) {
-        if (why)
-            *why = pipeline.error().toString();
-        return false;
-    }
-    pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
-    c.live = std::make_unique<LiveSession>();
-    if (c.lab.ros() == 2) {
-        Ros2Options dds;
-        dds.domain = c.lab.rosDomain();
-        dds.localhostOnly = true;
-        if (!c.live->startRos2(dds, why))
-            return false;
-    } else {
-        c.live->setRosMasterUri(c.lab.rosMasterUri());
-    }
-    MqttProfile profile = MqttProfile::fromUrl(c.lab.brokerUrl());
-    profile.caFile = c.lab.caFile();
-    c.live->connectBroker(profile);
-    c.measure = std::make_unique<MeasureSession>(c.live.get());
-    c.measure->setRos1(c.lab.ros() == 1); // a ROS 2 cell has no master: none is asked, none is named
-    c.measure->setPipeline(*pipeline);
-    return true;
+    m_cell->timer.start(ExperimentLab::kPollMs);
 }
 
 void ExperimentRunner::poll()
@@ -488,14 +420,16 @@ void ExperimentRunner::sendTotals()
 void ExperimentRunner::stop()
 {
     m_stopping = true;
+    if (m_throughputStep) {
+        const bool probing = m_throughputStep->isProbing();
+        m_throughputStep->stop(); // the rate is measured again on resume
+        if (probing) {
+            emit finished(false);
+            return;
+        }
+    }
     if (!m_cell)
         return;
-    if (m_cell->probe) { // the rate is measured again on resume
-        m_cell.reset();
-        m_probeSize = -1;
-        emit finished(false);
-        return;
-    }
     Cell& c = *m_cell;
     c.timer.stop();
     if (c.recording)
@@ -513,6 +447,12 @@ qint64 ExperimentRunner::runningSamples() const
     if (!m_cell) // it has ended: what it recorded (its last progress line says so, not 0)
         return m_current >= 0 && m_current < int(m_statuses.size()) ? m_statuses[m_current].samples : 0;
     return m_cell->recording ? m_cell->measure->engine().samples() : 0;
+}
+
+const QList<ThroughputResult>& ExperimentRunner::throughput() const
+{
+    static const QList<ThroughputResult> none;
+    return m_throughputStep ? m_throughputStep->results() : none;
 }
 
 double ExperimentRunner::remainingSeconds() const
@@ -558,146 +498,3 @@ bool ExperimentRunner::writeState(QString* error) const
         *error = why;
     return false;
 }
-
-void ExperimentRunner::nextProbe()
-{
-    if (m_stopping)
-        return;
-    if (m_probeSettings.isEmpty()) {
-        // The sizes in the order the cells have them; results of an earlier start are kept.
-        const QList<ThroughputResult> earlier = ExperimentFolder(m_dir).readThroughput();
-        m_throughput.clear();
-        for (const ExperimentCell& c : std::as_const(m_plan.cells)) {
-            if (std::any_of(m_probeSettings.cbegin(), m_probeSettings.cend(), [&c](const CellSettings& s) {
-                    return s.payloadBytes == c.settings.payloadBytes;
-                }))
-                continue;
-            m_probeSettings << c.settings;
-            ThroughputResult r;
-            r.payloadBytes = c.settings.payloadBytes;
-            r.level = QString::number(r.payloadBytes);
-            for (const auto& [factor, level] : c.levels)
-                if (factor == u"payload"_s)
-                    r.level = level;
-            for (const ThroughputResult& e : earlier)
-                if (e.payloadBytes == r.payloadBytes && e.complete)
-                    r = e;
-            m_throughput << r;
-        }
-    }
-    for (int i = 0; i < int(m_throughput.size()); ++i) {
-        ThroughputResult& r = m_throughput[i];
-        if (r.complete)
-            continue;
-        if (r.points.size() >= m_plan.throughput->ratesHz.size()) {
-            r.complete = true;
-            continue;
-        }
-        m_probeSize = i;
-        CellSettings s = m_probeSettings[i];
-        s.rateHz = m_plan.throughput->ratesHz[r.points.size()];
-        s.detectionMs = 0; // the bridges' limit, not the detection's (40 ms caps it at 25 Hz)
-        emit probeStarted(s.payloadBytes, s.rateHz);
-        qCDebug(lcDemo).noquote() << "throughput" << s.payloadBytes << "bytes at" << s.rateHz << "Hz";
-        m_cell = std::make_unique<Cell>();
-        m_cell->probe = true;
-        m_cell->rateHz = s.rateHz;
-        QString why;
-        if (!startLab(s, 100'000 + i * 100 + int(r.points.size()), &why)) {
-            qCWarning(lcDemo).noquote() << why;
-            ThroughputPoint failed;
-            failed.rateHz = s.rateHz;
-            endProbe(failed);
-            return;
-        }
-        m_cell->measure->setWindow(0);
-        m_cell->measure->setTimeoutNs(kProbeTimeoutMs * 1'000'000);
-        connect(&m_cell->timer, &QTimer::timeout, this, &ExperimentRunner::pollProbe);
-        m_cell->timer.start(kPollMs);
-        return;
-    }
-    m_throughputDone = true;
-    writeThroughput();
-    nextCell();
-}
-
-void ExperimentRunner::pollProbe()
-{
-    Cell& c = *m_cell;
-    const LatencyEngine& engine = c.measure->engine();
-    const qint64 now = c.clock.elapsed();
-    ThroughputPoint p;
-    p.rateHz = c.rateHz;
-    if (c.windowStartMs < 0) {
-        // Warm: a second's worth of samples (at least three), then a reset that forgets the lab's
-        // start (samples from before every stamp subscription existed never complete). The reset
-        // cuts the sample in flight, whose later stamps then time out as a "dropped" sample: the
-        // window opens once that has happened, and counts from there.
-        if (c.resetAtMs < 0 && engine.samples() >= std::max<qint64>(3, qint64(c.rateHz))) {
-            c.measure->reset();
-            c.resetAtMs = now;
-        } else if (c.resetAtMs >= 0 && now - c.resetAtMs >= kProbeTimeoutMs + 500) {
-            c.live->drainNow();
-            c.samplesBefore = engine.samples();
-            c.droppedBefore = qint64(engine.counters().dropped());
-            c.windowStartMs = now;
-        } else if (now > 60'000 || !c.lab.isRunning()) {
-            endProbe(p); // nothing came through: not sustained
-        }
-        return;
-    }
-    const double seconds = m_plan.throughput->secondsPerRate;
-    if (now - c.windowStartMs < qint64(seconds * 1000) && c.lab.isRunning())
-        return;
-    c.live->drainNow();
-    p.samples = engine.samples() - c.samplesBefore;
-    p.expected = qint64(c.rateHz * seconds);
-    p.dropped = qint64(engine.counters().dropped()) - c.droppedBefore;
-    // The window's totals: the last p.samples values of the total series.
-    const LatencySeries& series = engine.series(engine.totalSeries());
-    LatencySeries window(series.msPerUnit());
-    window.setWindow(0);
-    const std::vector<qint64>& values = series.values();
-    for (auto v = values.end() - std::min<qint64>(std::max<qint64>(p.samples, 0), qint64(values.size()));
-         v != values.end(); ++v)
-        window.append(*v);
-    const LatencyStats total = window.stats();
-    p.p50Ms = std::isfinite(total.median) ? total.median : 0;
-    p.p99Ms = std::isfinite(total.p99) ? total.p99 : 0;
-    // Sustained: (almost) every sample through, none dropped, and the latency not running away
-    // from the lowest rate's (a queue that grows shows there first).
-    const QList<ThroughputPoint>& before = m_throughput[m_probeSize].points;
-    const double base = before.isEmpty() ? p.p50Ms : before.first().p50Ms;
-    p.sustainable = c.lab.isRunning() && p.samples >= qint64(0.95 * double(p.expected)) && p.dropped == 0
-        && p.p50Ms <= 2 * base + 5;
-    endProbe(p);
-}
-
-void ExperimentRunner::endProbe(const ThroughputPoint& point)
-{
-    m_cell.reset();
-    ThroughputResult& r = m_throughput[m_probeSize];
-    r.points << point;
-    // Rates go up: after the first one not sustained, the higher ones are not tried.
-    if (!point.sustainable || r.points.size() >= m_plan.throughput->ratesHz.size())
-        r.complete = true;
-    m_probeSize = -1;
-    writeThroughput();
-    emit probeFinished(point);
-    if (!m_stopping)
-        QTimer::singleShot(0, this, &ExperimentRunner::nextProbe);
-}
-
-bool ExperimentRunner::writeThroughput() const
-{
-    QJsonArray sizes;
-    for (const ThroughputResult& r : m_throughput)
-        sizes.append(r.toJson());
-    QString why;
-    if (AtomicFile::write(ExperimentFolder(m_dir).throughputPath(),
-                          QJsonDocument(QJsonObject {{u"sizes"_s, sizes}}).toJson(), &why, false))
-        return true;
-    qCWarning(lcDemo).noquote() << why;
-    return false;
-}
-

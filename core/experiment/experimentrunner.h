@@ -4,7 +4,7 @@
 #include "experiment/experimentfolder.h"
 #include "experiment/experimentplan.h"
 #include "experiment/experimentstate.h"
-#include "experiment/throughputresult.h"
+#include "experiment/throughputstep.h"
 
 #include <memory>
 #include <QDateTime>
@@ -55,7 +55,8 @@ public:
     double remainingSeconds() const;
     QString directory() const { return m_dir; }
 
-    const QList<ThroughputResult>& throughput() const { return m_throughput; }
+    /// The throughput step's results so far (none when the plan has no such step).
+    const QList<ThroughputResult>& throughput() const;
 
 signals:
     void cellStarted(int index);
@@ -66,25 +67,20 @@ signals:
     void warning(int index, const QString& text);
     /// The running cell's samples recorded since the last call: their totals, in ms.
     void totals(int index, const QList<double>& totalMs);
-    void probeStarted(int payloadBytes, double rateHz); ///< a rate of the throughput step
+    void probeStarted(int payloadBytes, double rateHz); ///< a rate of the throughput step (ThroughputStep)
     void probeFinished(const ThroughputPoint& point);
     void finished(bool allComplete);
 
 private:
     struct Cell;
     void nextCell();
+    void finish(); ///< finished(), whether every cell is complete
     void beginCell(int index);
     void poll();
     void saySilence(Cell& c);
     void endCell(CellStatus::State state, const QString& reason);
     void sendTotals();
     bool writeState(QString* error = nullptr) const;
-    bool startLab(const CellSettings& settings, int seed, QString* why);
-    // The throughput step, after the cells: per payload size, rates up to the first not sustained.
-    void nextProbe();
-    void pollProbe();
-    void endProbe(const ThroughputPoint& point);
-    bool writeThroughput() const;
 
     ExperimentPlan m_plan;
     QByteArray m_planText;
@@ -95,8 +91,6 @@ private:
     int m_current = -1;
     bool m_stopping = false;
     std::unique_ptr<Cell> m_cell;
-    QList<ThroughputResult> m_throughput;
-    QList<CellSettings> m_probeSettings; ///< per size: the first cell's settings with that payload
-    int m_probeSize = -1; ///< while a probe runs
+    std::unique_ptr<ThroughputStep> m_throughputStep; ///< after the cells, when the plan has one
     bool m_throughputDone = false;
 };

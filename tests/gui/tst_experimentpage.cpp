@@ -91,9 +91,32 @@ class TestExperimentPage : public QObject
                  u"qos"_s);
     }
 
+    /// One of the page's widgets, by its object name (the page has it from its start).
+    template<typename W> static W* part(const ExperimentPage& page, const QString& name)
+    {
+        W* w = page.findChild<W*>(name);
+        if (!w)
+            qFatal("the Experiments page has no %s named %s", W::staticMetaObject.className(),
+                   qPrintable(name));
+        return w;
+    }
+    static QTableWidget* cellGrid(const ExperimentPage& page)
+    {
+        return part<QTableWidget>(page, u"cellGrid"_s);
+    }
+    static QLabel* planStatus(const ExperimentPage& page) { return part<QLabel>(page, u"planStatus"_s); }
+    static QPushButton* runButton(const ExperimentPage& page)
+    {
+        return part<QPushButton>(page, u"runButton"_s);
+    }
+    static QPushButton* resumeButton(const ExperimentPage& page)
+    {
+        return part<QPushButton>(page, u"resumeButton"_s);
+    }
+
     static QString stateOf(const ExperimentPage& page, int row)
     {
-        return page.cellGrid()->item(row, page.stateColumn())->text();
+        return cellGrid(page)->item(row, page.stateColumn())->text();
     }
 
 private slots:
@@ -103,27 +126,28 @@ private slots:
     {
         ExperimentPage page;
         page.setPlanText(u"samples: 10\nfactors:\n  qos: [0, 7]\n"_s);
-        QVERIFY2(page.planStatus()->text().contains(u"Not a plan"_s), qPrintable(page.planStatus()->text()));
-        QVERIFY(!page.runButton()->isEnabled());
+        QVERIFY2(planStatus(page)->text().contains(u"Not a plan"_s), qPrintable(planStatus(page)->text()));
+        QVERIFY(!runButton(page)->isEnabled());
         QString error;
         QVERIFY(!page.run(false, &error));
 
         page.setPlanText(u"name: grid\nsamples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 50%]\n"_s);
-        QVERIFY2(page.planStatus()->text().contains(u"4 cell"_s), qPrintable(page.planStatus()->text()));
-        QCOMPARE(page.cellGrid()->rowCount(), 4);
+        QVERIFY2(planStatus(page)->text().contains(u"4 cell"_s), qPrintable(planStatus(page)->text()));
+        QCOMPARE(cellGrid(page)->rowCount(), 4);
         // The two factors, state, samples, median, p99, the cell.
-        QCOMPARE(page.cellGrid()->columnCount(), 7);
-        QCOMPARE(page.cellGrid()->horizontalHeaderItem(0)->text(), u"qos"_s);
-        QCOMPARE(page.cellGrid()->item(3, 1)->text(), u"50%"_s);
-        QCOMPARE(page.cellGrid()->item(3, 6)->text(), u"004-qos-1-payload-50pct"_s);
+        QCOMPARE(cellGrid(page)->columnCount(), 7);
+        QCOMPARE(cellGrid(page)->horizontalHeaderItem(0)->text(), u"qos"_s);
+        QCOMPARE(cellGrid(page)->item(3, 1)->text(), u"50%"_s);
+        QCOMPARE(cellGrid(page)->item(3, 6)->text(), u"004-qos-1-payload-50pct"_s);
         QCOMPARE(stateOf(page, 0), u"pending"_s);
         // A cell not run yet has the view's own background, not a black one (issue 33).
-        for (int row = 0; row < page.cellGrid()->rowCount(); ++row)
-            for (int col = 0; col < page.cellGrid()->columnCount(); ++col)
-                QVERIFY2(page.cellGrid()->item(row, col)->data(Qt::BackgroundRole).isNull(),
+        const QTableWidget* grid = cellGrid(page);
+        for (int row = 0; row < grid->rowCount(); ++row)
+            for (int col = 0; col < grid->columnCount(); ++col)
+                QVERIFY2(grid->item(row, col)->data(Qt::BackgroundRole).isNull(),
                          qPrintable(u"row %1 column %2"_s.arg(row).arg(col)));
-        QVERIFY(page.runButton()->isEnabled());
-        QVERIFY(!page.resumeButton()->isEnabled()); // no folder with an experiment
+        QVERIFY(runButton(page)->isEnabled());
+        QVERIFY(!resumeButton(page)->isEnabled()); // no folder with an experiment
         // Without a folder it says so instead of running somewhere.
         QVERIFY(!page.run(false, &error));
         QVERIFY2(error.contains(u"folder"_s), qPrintable(error));
@@ -136,7 +160,7 @@ private slots:
         ExperimentPage page;
         page.resize(1280, 800);
         page.setPlanText(u"name: 'N ~ ^ <script> <b>x'\nsamples: 10\nfactors:\n  qos: [0, 1]\n"_s);
-        const QLabel* status = page.planStatus();
+        const QLabel* status = planStatus(page);
         // What the label draws: rich text (Qt's AutoText guess) loses its tags and what a
         // <script> holds.
         const bool rich = status->textFormat() == Qt::RichText
@@ -160,9 +184,9 @@ private slots:
         QString error;
         QVERIFY2(page.run(false, &error), qPrintable(error));
         QVERIFY(page.isRunning());
-        QVERIFY(!page.runButton()->isEnabled());
-        QVERIFY(page.stopButton()->isEnabled());
-        QVERIFY(page.planEditor()->isReadOnly());
+        QVERIFY(!runButton(page)->isEnabled());
+        QVERIFY(part<QPushButton>(page, u"stopButton"_s)->isEnabled());
+        QVERIFY(part<QPlainTextEdit>(page, u"planEditor"_s)->isReadOnly());
         // The first cell shows as running while it records, with its totals coming in.
         QVERIFY(QTest::qWaitFor([&] { return stateOf(page, 0) == u"running"_s; }, 60000));
         QVERIFY(QTest::qWaitFor(
@@ -175,9 +199,9 @@ private slots:
         QCOMPARE(finished.first().first().toInt(), 0);
         QCOMPARE(stateOf(page, 0), u"complete"_s);
         QCOMPARE(stateOf(page, 1), u"complete"_s);
-        QCOMPARE(page.progressBar()->value(), 2);
-        QVERIFY(page.cellGrid()->item(0, 0)->background().color().green() > 0); // coloured by state
-        QVERIFY(!page.log()->toPlainText().isEmpty());
+        QCOMPARE(part<QProgressBar>(page, u"experimentProgress"_s)->value(), 2);
+        QVERIFY(cellGrid(page)->item(0, 0)->background().color().green() > 0); // coloured by state
+        QVERIFY(!part<QPlainTextEdit>(page, u"experimentLog"_s)->toPlainText().isEmpty());
 
         // The report comes from the folder, and the live totals are those in the run files.
         QVERIFY(QTest::qWaitFor([&] { return page.report().has_value(); }, 30000));
@@ -192,13 +216,13 @@ private slots:
             QVERIFY2(std::abs(live->stats().mean - c.total->stats().mean) < 1e-3,
                      qPrintable(u"%1 vs %2"_s.arg(live->stats().mean).arg(c.total->stats().mean)));
         }
-        QCOMPARE(page.chart()->series().size(), 2);
-        QVERIFY(page.cellGrid()->item(1, page.stateColumn() + 2)->text().toDouble() > 0); // median
-        QVERIFY2(page.reportView()->toPlainText().contains(u"qos"_s),
-                 qPrintable(page.reportView()->toPlainText()));
+        QCOMPARE(part<EcdfChart>(page, u"totalsChart"_s)->series().size(), 2);
+        QVERIFY(cellGrid(page)->item(1, page.stateColumn() + 2)->text().toDouble() > 0); // median
+        const QString reportText = part<QTextBrowser>(page, u"reportView"_s)->toPlainText();
+        QVERIFY2(reportText.contains(u"qos"_s), qPrintable(reportText));
 
         // A finished cell opens on the Measure page.
-        emit page.cellGrid()->cellActivated(1, 0);
+        emit cellGrid(page)->cellActivated(1, 0);
         QCOMPARE(window.pages()->currentWidget(), window.measurePage());
         QVERIFY2(window.measurePage()->runBar()->statusLabel()->text().contains(u"002-qos-1"_s),
                  qPrintable(window.measurePage()->runBar()->statusLabel()->text()));
@@ -216,7 +240,7 @@ private slots:
         // Run again into the same folder is refused; Resume finds nothing left to do.
         QVERIFY(!page.run(false, &error));
         QVERIFY2(error.contains(u"Resume"_s), qPrintable(error));
-        QVERIFY(page.resumeButton()->isEnabled());
+        QVERIFY(resumeButton(page)->isEnabled());
         finished.clear();
         QVERIFY2(page.run(true, &error), qPrintable(error));
         QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
@@ -226,7 +250,7 @@ private slots:
         // Opening the folder afresh shows the same cells and states.
         ExperimentPage other;
         QVERIFY2(other.openFolder(out, &error), qPrintable(error));
-        QCOMPARE(other.cellGrid()->rowCount(), 2);
+        QCOMPARE(cellGrid(other)->rowCount(), 2);
         QCOMPARE(stateOf(other, 1), u"complete"_s);
         QVERIFY(QTest::qWaitFor([&] { return other.liveSeries()->find(u"qos 1"_s) != nullptr; }, 30000));
     }
@@ -273,7 +297,7 @@ private slots:
         QCOMPARE(live->totalCount(), 2); // 1.5 and 2.5 ms; the rest is no measurement
         QCOMPARE(live->stats().mean, 2.0);
         QVERIFY(!page.liveSeries()->find(u"qos 1"_s));
-        QVERIFY(page.runButton()->isEnabled());
+        QVERIFY(runButton(page)->isEnabled());
     }
 
     void stopCleansUpAndLeavesTheCellToResume()
@@ -299,12 +323,13 @@ private slots:
         QCOMPARE(finished.first().first().toInt(), 130);
         QCOMPARE(stateOf(page, 0), u"pending"_s);
         // A cell not run yet has the view's own background, not a black one (issue 33).
-        for (int row = 0; row < page.cellGrid()->rowCount(); ++row)
-            for (int col = 0; col < page.cellGrid()->columnCount(); ++col)
-                QVERIFY2(page.cellGrid()->item(row, col)->data(Qt::BackgroundRole).isNull(),
+        const QTableWidget* grid = cellGrid(page);
+        for (int row = 0; row < grid->rowCount(); ++row)
+            for (int col = 0; col < grid->columnCount(); ++col)
+                QVERIFY2(grid->item(row, col)->data(Qt::BackgroundRole).isNull(),
                          qPrintable(u"row %1 column %2"_s.arg(row).arg(col)));
-        QVERIFY(page.runButton()->isEnabled());
-        QVERIFY(page.resumeButton()->isEnabled());
+        QVERIFY(runButton(page)->isEnabled());
+        QVERIFY(resumeButton(page)->isEnabled());
         QString why;
         const auto plan = noted(ExperimentPlan::readFile(QDir(out).filePath(u"plan.yaml"_s)), &why);
         QVERIFY2(plan, qPrintable(why));

@@ -80,6 +80,19 @@ ExperimentPage::ExperimentPage(QWidget* parent)
     , m_series(std::make_unique<LatencySeriesSet>())
 {
     setObjectName(u"experimentPage"_s);
+    // Named for tests and tools, which find the page's parts as a user would.
+    m_editor->setObjectName(u"planEditor"_s);
+    m_planStatus->setObjectName(u"planStatus"_s);
+    m_grid->setObjectName(u"cellGrid"_s);
+    m_views->setObjectName(u"experimentViews"_s);
+    m_chart->setObjectName(u"totalsChart"_s);
+    m_reportView->setObjectName(u"reportView"_s);
+    m_run->setObjectName(u"runButton"_s);
+    m_resume->setObjectName(u"resumeButton"_s);
+    m_stop->setObjectName(u"stopButton"_s);
+    m_progress->setObjectName(u"experimentProgress"_s);
+    m_status->setObjectName(u"experimentStatus"_s);
+    m_log->setObjectName(u"experimentLog"_s);
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(createPlanPane());
     split->addWidget(createCellsPane());

@@ -69,22 +69,11 @@ public:
     /// Of the last report computed (nullopt before the first).
     const std::optional<ExperimentReport>& report() const { return m_report; }
 
-    QPlainTextEdit* planEditor() const { return m_editor; }
-    QLabel* planStatus() const { return m_planStatus; }
-    QTableWidget* cellGrid() const { return m_grid; }
-    /// The grid's columns: a level per factor, then this one (the state), samples, total median,
-    /// total p99, the cell's id.
+    /// The cell grid's (object name "cellGrid") columns: a level per factor, then this one (the
+    /// state), samples, total median, total p99, the cell's id.
     int stateColumn() const;
-    EcdfChart* chart() const { return m_chart; }
+    /// The running and finished cells' totals the chart draws, per cell label.
     const LatencySeriesSet* liveSeries() const { return m_series.get(); }
-    QTextBrowser* reportView() const { return m_reportView; }
-    QTabWidget* views() const { return m_views; }
-    QPushButton* runButton() const { return m_run; }
-    QPushButton* resumeButton() const { return m_resume; }
-    QPushButton* stopButton() const { return m_stop; }
-    QProgressBar* progressBar() const { return m_progress; }
-    QLabel* statusLabel() const { return m_status; }
-    QPlainTextEdit* log() const { return m_log; }
     /// Exports the report in `format` ("md", "html", "tex", "csv", "json" or "pdf", by the suffix
     /// when empty); Markdown gets its ECDF figures beside it as SVG.
     bool exportReport(const QString& path, QString* error = nullptr, const QString& format = QString());
