@@ -135,11 +135,21 @@ def parallel_apis(root):
     def exists(pattern):
         return any(re.search(pattern, read(p)) for p in files(root, ("core",), (".h",)))
     source_h = os.path.join(root, "core/latency/messagesource.h")
-    pure = len(re.findall(r"=\s*0\s*;", read(source_h))) if os.path.exists(source_h) else 0
-    stats = [t for t in ("TopicFigures", "RosMonitorStats", "TopicStats", "Ros2MonitorStats") if exists(r"struct\s+" + t + r"\b")]
+    # MessageSource's own, not those of the Tap it hands out (the class body up to its "};").
+    body = re.search(r"class MessageSource\b.*?\n};", read(source_h), re.S) if os.path.exists(source_h) else None
+    pure = len(re.findall(r"=\s*0\s*;", body.group(0))) if body else 0
+    # The monitor figures: TopicFigures and the graph-specific structs made of it (not the
+    # child's frame body Ros2Protocol::TopicStats).
+    stats = ["TopicFigures"] if exists(r"struct\s+TopicFigures\b") else []
+    stats += [t for t in ("RosMonitorStats", "TopicStats", "Ros2MonitorStats")
+              if exists(r"struct\s+" + t + r"\s*:\s*TopicFigures\b")]
     samples = [t for t in ("SourceArrival", "SourceHead", "Ros2Sample", "RosMessageSample", "Ros2Arrival")
                if exists(r"struct\s+" + t + r"\b")]
-    parallel = [n for n in ("watchMessages", "takeMessages") if exists(r"\b" + n + r"\(")]
+    # What the MessageSource implementations offer beside the interface (issue 42's parallel APIs).
+    sources_h = [os.path.join(root, f) for f in ("core/ros/rosmonitor.h", "core/ros2/ros2participant.h",
+                                                 "core/mqtt/mqttsource.h")]
+    parallel = [n for n in ("watchMessages", "takeMessages")
+                if any(os.path.exists(p) and re.search(r"\b" + n + r"\(", read(p)) for p in sources_h)]
     includes = set()
     for p in files(root, ("widgets",)):
         if re.search(r'#include\s+"(ros|ros2)/', read(p)):

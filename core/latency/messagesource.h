@@ -5,6 +5,7 @@
 #include "wire/sourcemessage.h"
 
 #include <cstddef>
+#include <memory>
 #include <QHash>
 #include <QSet>
 #include <QString>
@@ -14,8 +15,22 @@
 /// the master (RosMonitor), ROS 2 through DDS (Ros2Participant), MQTT through the broker
 /// (MqttSource). Subscriptions are counted:
 /// the last unmonitor() that balances a monitor() ends one, so that two users (the Discover page's
-/// Mon, the Links page) do not end each other's. Whole messages come as SourceArrival, which
-/// SourceMessage decodes as their graph serializes; every message's first bytes as SourceHead (Watch).
+/// Mon, the Links page) do not end each other's. Whole messages come through a Tap per consumer as
+/// SourceArrival, which SourceMessage decodes as their graph serializes; every monitored message's
+/// first bytes as SourceHead (Watch).
+/// One consumer's queue of a topic's whole messages (MessageSource::openTap()). Destroying it
+/// ends what it asked of its source (the last tap of a topic ends the subscription made for it);
+/// it may outlive its source, and then takes what was kept and nothing more.
+class Tap
+{
+public:
+    virtual ~Tap() = default;
+    /// The messages since the last call, oldest first.
+    virtual std::vector<SourceArrival> take() = 0;
+    /// Messages dropped because more came between two takes than the tap keeps.
+    virtual quint64 dropped() const = 0;
+};
+
 class MessageSource
 {
 public:
@@ -33,14 +48,11 @@ public:
     /// The monitored topics' message heads since the last call, oldest first.
     virtual std::vector<SourceHead> takeArrivals() = 0;
     virtual quint64 droppedArrivals() const = 0;
-    /// Keeps the newest whole messages of a topic, at most `maxMessages` and `maxBytes` between two
-    /// takeWatched() (older ones are dropped and counted by the source).
-    virtual void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) = 0;
-    virtual void unwatch(const QString& topic) = 0;
-    /// The watched topic's messages since the last call, oldest first.
-    virtual std::vector<SourceArrival> takeWatched(const QString& topic) = 0;
-    /// Messages of a watched topic dropped because more came between two takes than it keeps.
-    virtual quint64 droppedWatched(const QString& topic) const = 0;
+    /// A queue of this topic's whole messages for one consumer: the newest `maxMessages` within
+    /// `maxBytes` between two Tap::take() (older ones dropped and counted in the tap). The topic is
+    /// subscribed for it, monitored or not, as long as a tap of it is open; every tap gets every
+    /// message, so two consumers never take each other's.
+    virtual std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) = 0;
 
     /// For one user whose monitored topics are `held`: monitors the topics of `wanted` not held yet,
     /// unmonitors those held no more, and holds `wanted`.

@@ -13,7 +13,7 @@ MqttSource::~MqttSource() = default;
 
 void MqttSource::add(const std::vector<MqttMessage>& batch)
 {
-    if (m_monitored.isEmpty() && m_watched.isEmpty())
+    if (m_monitored.isEmpty() && m_taps.empty())
         return;
     QHash<QString, QString> types; // a watched topic's announced type, looked up once per batch
     for (const MqttMessage& m : batch) {
@@ -22,13 +22,13 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
                           m.payload.left(SourceHead::kHeadBytes)};
             m_arrivals->push(std::move(h));
         }
-        if (const auto w = m_watched.find(m.topic); w != m_watched.end()) {
+        if (m_taps.tapped(m.topic)) {
             auto type = types.find(m.topic);
             if (type == types.end()) {
                 const auto announced = m_tree->announcedType(m.topic);
                 type = types.insert(m.topic, announced ? announced->name : QString());
             }
-            w->push(SourceArrival {SourceGraph::Mqtt, m.topic, *type, m.receivedNs, m.payload}, m.payload.size());
+            m_taps.deliver(SourceArrival {SourceGraph::Mqtt, m.topic, *type, m.receivedNs, m.payload});
         }
     }
 }
@@ -91,24 +91,7 @@ quint64 MqttSource::droppedArrivals() const
     return m_arrivals ? m_arrivals->dropped() : 0;
 }
 
-void MqttSource::watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+std::unique_ptr<Tap> MqttSource::openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
 {
-    m_watched[topic].setLimits(maxMessages, maxBytes);
-}
-
-void MqttSource::unwatch(const QString& topic)
-{
-    m_watched.remove(topic);
-}
-
-std::vector<SourceArrival> MqttSource::takeWatched(const QString& topic)
-{
-    const auto w = m_watched.find(topic);
-    return w == m_watched.end() ? std::vector<SourceArrival>() : w->take();
-}
-
-quint64 MqttSource::droppedWatched(const QString& topic) const
-{
-    const auto w = m_watched.constFind(topic);
-    return w == m_watched.cend() ? 0 : w->dropped();
+    return m_taps.open(topic, maxMessages, maxBytes);
 }

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "base/eventbuffer.h"
-#include "base/newestqueue.h"
 #include "latency/messagesource.h"
+#include "latency/taphub.h"
 #include "mqtt/mqttconnection.h"
 
 #include <memory>
@@ -38,14 +38,13 @@ public:
     void keepArrivals(std::size_t maxHeads) override;
     std::vector<SourceHead> takeArrivals() override;
     quint64 droppedArrivals() const override;
-    void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
-    void unwatch(const QString& topic) override;
-    std::vector<SourceArrival> takeWatched(const QString& topic) override;
-    quint64 droppedWatched(const QString& topic) const override;
+    /// Subscribes to nothing (the connection takes every topic); arrivals carry the type
+    /// mqtt_client announced for the topic.
+    std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
 
 private:
     const MqttTopicTree* m_tree;
     QHash<QString, int> m_monitored; ///< topic → monitor() calls not yet balanced
     std::unique_ptr<EventBuffer<SourceHead>> m_arrivals; ///< set by keepArrivals()
-    QHash<QString, NewestQueue<SourceArrival>> m_watched;
+    TapHub m_taps;
 };

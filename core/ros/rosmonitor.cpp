@@ -2,9 +2,9 @@
 #include "rosmonitor.h"
 
 #include "base/eventbuffer.h"
-#include "base/newestqueue.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
+#include "latency/taphub.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
 
@@ -28,6 +28,18 @@ struct TopicState
 
 struct RosMonitor::Private
 {
+    /// A tapped topic is subscribed as a monitored one is: one use of it while a tap is open.
+    explicit Private(QPointer<RosMonitor> owner)
+        : taps([owner](const QString& topic, bool tapped) {
+            if (!owner)
+                return;
+            if (tapped)
+                owner->monitor(topic);
+            else
+                owner->unmonitor(topic);
+        })
+    { }
+
     mutable std::mutex mutex;
     QHash<QString, TopicState> topics;
     QHash<QString, int> wanted; ///< monitor() calls not yet balanced by unmonitor(), per topic
@@ -35,7 +47,7 @@ struct RosMonitor::Private
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
     std::unique_ptr<EventBuffer<SourceHead>> arrivals; ///< set by keepArrivals(), under `mutex`
-    QHash<QString, NewestQueue<RosMessageSample>> watched; ///< under `mutex`
+    TapHub taps; ///< its own lock; a tapped topic is monitored while a tap of it is open
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
     {
@@ -58,8 +70,7 @@ struct RosMonitor::Private
         if (arrivals)
             arrivals->push(SourceHead {SourceGraph::Ros1, topic, now, t.stats.lastSize,
                                        bytes.left(SourceHead::kHeadBytes)});
-        if (const auto w = watched.find(topic); w != watched.end())
-            w->push({now, bytes}, bytes.size()); // shares the bytes, no copy
+        taps.deliver({SourceGraph::Ros1, topic, {}, now, bytes}); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
         t.rates.add(now, t.stats.lastSize);
     }
@@ -108,7 +119,7 @@ struct RosMonitor::Private
 
 RosMonitor::RosMonitor(QObject* parent)
     : QObject(parent)
-    , d(std::make_shared<Private>())
+    , d(std::make_shared<Private>(QPointer<RosMonitor>(this)))
 {
     std::weak_ptr<Private> weak = d;
     QPointer<RosMonitor> self(this);
@@ -196,48 +207,9 @@ quint64 RosMonitor::droppedArrivals() const
     return d->arrivals ? d->arrivals->dropped() : 0;
 }
 
-void RosMonitor::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+std::unique_ptr<Tap> RosMonitor::openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
 {
-    std::lock_guard<std::mutex> lock(d->mutex);
-    d->watched[topic].setLimits(maxMessages, maxBytes);
-}
-
-void RosMonitor::unwatchMessages(const QString& topic)
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    d->watched.remove(topic);
-}
-
-void RosMonitor::watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
-{
-    watchMessages(topic, maxMessages, maxBytes);
-}
-
-void RosMonitor::unwatch(const QString& topic)
-{
-    unwatchMessages(topic);
-}
-
-std::vector<SourceArrival> RosMonitor::takeWatched(const QString& topic)
-{
-    std::vector<SourceArrival> out;
-    for (RosMessageSample& m : takeMessages(topic))
-        out.push_back({SourceGraph::Ros1, topic, {}, m.receivedNs, std::move(m.bytes)});
-    return out;
-}
-
-std::vector<RosMessageSample> RosMonitor::takeMessages(const QString& topic)
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    const auto w = d->watched.find(topic);
-    return w == d->watched.end() ? std::vector<RosMessageSample>() : w->take();
-}
-
-quint64 RosMonitor::droppedMessages(const QString& topic) const
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    const auto w = d->watched.constFind(topic);
-    return w == d->watched.cend() ? 0 : w->dropped();
+    return d->taps.open(topic, maxMessages, maxBytes);
 }
 
 QHash<QString, TopicFigures> RosMonitor::figures(qint64 nowNs) const

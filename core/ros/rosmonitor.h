@@ -11,14 +11,6 @@
 #include <QString>
 #include <vector>
 
-/// Figures of one monitored ROS topic, like rqt_topic shows them.
-/// One whole message of a watched topic (for plots of its fields).
-struct RosMessageSample
-{
-    qint64 receivedNs = 0; ///< wall clock
-    QByteArray bytes; ///< serialized
-};
-
 /// Generic subscriptions to ROS topics for monitoring (the only code that uses roscpp).
 ///
 /// The process gets one roscpp node, started on first use, registered with the master given
@@ -48,20 +40,9 @@ public:
     void keepArrivals(std::size_t maxArrivals) override;
     std::vector<SourceHead> takeArrivals() override;
     quint64 droppedArrivals() const override;
-    /// Keeps the newest whole messages of a monitored topic, at most `maxMessages` and
-    /// `maxBytes` between two takeMessages() (older ones are dropped and counted).
-    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes);
-    void unwatchMessages(const QString& topic);
-    /// The watched topic's messages since the last call, oldest first.
-    std::vector<RosMessageSample> takeMessages(const QString& topic);
-    /// Messages of a watched topic dropped because too many came between two takes.
-    quint64 droppedMessages(const QString& topic) const;
-    /// watchMessages(), unwatchMessages() and takeMessages() as a MessageSource (arrivals without
-    /// their type: the monitor's figures have it).
-    void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
-    void unwatch(const QString& topic) override;
-    std::vector<SourceArrival> takeWatched(const QString& topic) override;
-    quint64 droppedWatched(const QString& topic) const override { return droppedMessages(topic); }
+    /// While a tap of a topic is open, the topic is monitored for it (one use, counted with the
+    /// others); its messages come without their type (the monitor's figures have it).
+    std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
 
 signals:
     void monitorFailed(const QString& topic, const QString& why);

@@ -215,7 +215,7 @@ Ros2Protocol::WatchRequest Ros2Link::Watched::limits(const QString& topic) const
     return w;
 }
 
-void Ros2Link::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
+void Ros2Link::openQueue(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
                              const void* owner)
 {
     Watched& w = m_watched[topic];
@@ -229,7 +229,7 @@ void Ros2Link::watchMessages(const QString& topic, std::size_t maxMessages, qint
     m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(w.limits(topic)));
 }
 
-void Ros2Link::unwatchMessages(const QString& topic, const void* owner)
+void Ros2Link::closeQueue(const QString& topic, const void* owner)
 {
     const auto it = m_watched.find(topic);
     if (it == m_watched.end() || it->readers.remove(owner) == 0)
@@ -251,13 +251,13 @@ const Ros2Link::Reader* Ros2Link::reader(const QString& topic, const void* owner
     return r != it->readers.cend() && r->queue ? &*r : nullptr;
 }
 
-std::vector<Ros2Sample> Ros2Link::takeMessages(const QString& topic, const void* owner)
+std::vector<Ros2Sample> Ros2Link::takeQueued(const QString& topic, const void* owner)
 {
     const Reader* r = reader(topic, owner);
     return r ? r->queue->take() : std::vector<Ros2Sample>();
 }
 
-quint64 Ros2Link::droppedMessages(const QString& topic, const void* owner) const
+quint64 Ros2Link::droppedQueued(const QString& topic, const void* owner) const
 {
     const Reader* r = reader(topic, owner);
     return r ? r->queue->dropped() + m_watched.value(topic).childDropped : 0;

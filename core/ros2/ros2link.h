@@ -56,11 +56,13 @@ public:
     bool isMonitored(const QString& topic) const;
     const QHash<QString, Ros2MonitorStats>& stats() const { return m_stats; }
 
-    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes, const void* owner);
-    void unwatchMessages(const QString& topic, const void* owner);
+    /// One queue of a topic's whole samples per `owner` (each Tap of the participant): the topic
+    /// is subscribed while a queue of it is open, and asked again after each restart of the child.
+    void openQueue(const QString& topic, std::size_t maxMessages, qint64 maxBytes, const void* owner);
+    void closeQueue(const QString& topic, const void* owner);
     bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
-    std::vector<Ros2Sample> takeMessages(const QString& topic, const void* owner);
-    quint64 droppedMessages(const QString& topic, const void* owner) const;
+    std::vector<Ros2Sample> takeQueued(const QString& topic, const void* owner);
+    quint64 droppedQueued(const QString& topic, const void* owner) const;
 
     void keepArrivals(std::size_t maxArrivals);
     std::vector<SourceHead> takeArrivals();
@@ -104,7 +106,7 @@ private:
     int m_graphInterval = 250;
     std::size_t m_keepArrivals = 0;
     QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
-    QHash<QString, Watched> m_watched; ///< what watchMessages() asked for, across stop() and start()
+    QHash<QString, Watched> m_watched; ///< what openQueue() asked for, across stop() and start()
     QHash<QString, Ros2MonitorStats> m_stats;
     std::unique_ptr<EventBuffer<SourceHead>> m_arrivals;
     quint64 m_childDroppedArrivals = 0;

@@ -180,45 +180,46 @@ QHash<QString, TopicFigures> Ros2Participant::figures(qint64 nowNs) const
     return topicFiguresOf(snapshot(nowNs));
 }
 
-void Ros2Participant::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
-                                    const void* owner)
+namespace {
+/// A tap of the participant: its own queue in the link, keyed by the tap itself.
+class Ros2Tap : public Tap
 {
-    m_link.watchMessages(topic, maxMessages, maxBytes, owner);
-}
+public:
+    Ros2Tap(Ros2Participant* participant, Ros2Link* link, QString topic, std::size_t maxMessages, qint64 maxBytes)
+        : m_participant(participant)
+        , m_link(link)
+        , m_topic(std::move(topic))
+    {
+        m_link->openQueue(m_topic, maxMessages, maxBytes, this);
+    }
+    ~Ros2Tap() override
+    {
+        if (m_participant) // the participant (and its link) may have gone first
+            m_link->closeQueue(m_topic, this);
+    }
+    std::vector<SourceArrival> take() override
+    {
+        if (!m_participant)
+            return {};
+        const Ros2Topic* t = m_participant->graph().topic(m_topic);
+        const QString type = t ? t->type() : QString();
+        std::vector<SourceArrival> out;
+        for (Ros2Sample& s : m_link->takeQueued(m_topic, this))
+            out.push_back({SourceGraph::Ros2, m_topic, type, s.receivedNs, std::move(s.bytes)});
+        return out;
+    }
+    quint64 dropped() const override { return m_participant ? m_link->droppedQueued(m_topic, this) : 0; }
 
-void Ros2Participant::unwatchMessages(const QString& topic, const void* owner)
-{
-    m_link.unwatchMessages(topic, owner);
-}
+private:
+    QPointer<Ros2Participant> m_participant;
+    Ros2Link* m_link;
+    QString m_topic;
+};
+} // namespace
 
-void Ros2Participant::watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
+std::unique_ptr<Tap> Ros2Participant::openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
 {
-    watchMessages(topic, maxMessages, maxBytes);
-}
-
-void Ros2Participant::unwatch(const QString& topic)
-{
-    unwatchMessages(topic);
-}
-
-std::vector<SourceArrival> Ros2Participant::takeWatched(const QString& topic)
-{
-    const Ros2Topic* t = graph().topic(topic);
-    const QString type = t ? t->type() : QString();
-    std::vector<SourceArrival> out;
-    for (Ros2Sample& s : takeMessages(topic))
-        out.push_back({SourceGraph::Ros2, topic, type, s.receivedNs, std::move(s.bytes)});
-    return out;
-}
-
-std::vector<Ros2Sample> Ros2Participant::takeMessages(const QString& topic, const void* owner)
-{
-    return m_link.takeMessages(topic, owner);
-}
-
-quint64 Ros2Participant::droppedMessages(const QString& topic, const void* owner) const
-{
-    return m_link.droppedMessages(topic, owner);
+    return std::make_unique<Ros2Tap>(this, &m_link, topic, maxMessages, maxBytes);
 }
 
 void Ros2Participant::keepArrivals(std::size_t maxArrivals)

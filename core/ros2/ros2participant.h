@@ -91,34 +91,21 @@ public:
     /// users (Discover's Mon, the Links page) do not end each other's; it is made again after
     /// stop() and start() (and after a restart of the child) once the graph has the topic.
     void monitor(const QString& topic) override;
-    /// Ends monitor(); the subscription stays while the topic is watched (watchMessages()).
+    /// Ends monitor(); the subscription stays while a tap of the topic is open (openTap()).
     void unmonitor(const QString& topic) override;
     bool isMonitored(const QString& topic) const override;
     SourceGraph sourceGraph() const override { return SourceGraph::Ros2; }
     /// Figures of the monitored topics (not of those only watched), as the child last sent them.
     QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
     QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
-    /// Keeps the newest whole samples of a topic, at most `maxMessages` and `maxBytes` between two
-    /// takeMessages() (older ones are dropped and counted). The topic is subscribed for it whether
-    /// or not it is monitored, as soon as the graph knows its type, and again after stop() and
-    /// start(); monitor() and unmonitor() leave the queue alone. Each `owner` (a field plot, the
-    /// stamps of the Measure page) gets every sample in a queue of its own: one does not take or end
-    /// another's; the subscription ends with the last owner's unwatchMessages().
-    void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
-                       const void* owner = nullptr);
-    void unwatchMessages(const QString& topic, const void* owner = nullptr);
+    /// A tap of a topic: it is subscribed for the tap whether or not it is monitored, as soon as
+    /// the graph knows its type, and again after stop() and start() (and a restart of the child);
+    /// monitor() and unmonitor() leave taps alone. Each tap (a field plot, the Measure page's
+    /// stamps) gets every sample in a queue of its own (the child's queue for the topic is sized
+    /// for the most demanding one); the subscription ends with the last tap. Arrivals carry the
+    /// type the graph names; drops are counted from the tap's opening, and anew after start().
+    std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
     bool isWatched(const QString& topic) const { return m_link.isWatched(topic); }
-    /// The watched topic's samples since the owner's last call, oldest first.
-    std::vector<Ros2Sample> takeMessages(const QString& topic, const void* owner = nullptr);
-    /// Samples of a watched topic dropped because too many came between two takes (counted from
-    /// watchMessages(), and anew after start()).
-    quint64 droppedMessages(const QString& topic, const void* owner = nullptr) const;
-    /// The MessageSource calls: watchMessages() and the rest for the default owner, arrivals with
-    /// the type the graph names.
-    void watch(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
-    void unwatch(const QString& topic) override;
-    std::vector<SourceArrival> takeWatched(const QString& topic) override;
-    quint64 droppedWatched(const QString& topic) const override { return droppedMessages(topic); }
     /// keepArrivals() holds also across stop() and start(); the child's drops are counted too.
     void keepArrivals(std::size_t maxArrivals) override;
     std::vector<SourceHead> takeArrivals() override;

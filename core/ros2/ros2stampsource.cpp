@@ -12,20 +12,15 @@ Ros2StampSource::Ros2StampSource(Ros2Participant* participant, QObject* parent)
 {
 }
 
-Ros2StampSource::~Ros2StampSource()
-{
-    for (auto it = m_stamps.cbegin(); it != m_stamps.cend(); ++it)
-        unwatch(it.key());
-    for (const QString& t : std::as_const(m_latencies))
-        unwatch(t);
-}
+Ros2StampSource::~Ros2StampSource() = default; // the taps close with it
 
 void Ros2StampSource::unwatch(const QString& topic)
 {
-    if (!m_participant)
+    const auto it = m_taps.find(topic);
+    if (it == m_taps.end())
         return;
-    m_droppedBefore += m_participant->droppedMessages(topic, this);
-    m_participant->unwatchMessages(topic, this);
+    m_droppedBefore += it->second->dropped();
+    m_taps.erase(it);
 }
 
 void Ros2StampSource::setTopics(const QHash<QString, QString>& stampTopics, const QSet<QString>& latencyTopics)
@@ -45,7 +40,7 @@ void Ros2StampSource::setTopics(const QHash<QString, QString>& stampTopics, cons
         after.insert(it.key());
     for (const QString& t : std::as_const(after))
         if (!had(t))
-            m_participant->watchMessages(t, kQueued, kQueuedBytes, this);
+            m_taps[t] = m_participant->openTap(t, kQueued, kQueuedBytes);
     m_stamps = stampTopics;
     m_latencies = latencyTopics;
 }
@@ -64,10 +59,14 @@ void Ros2StampSource::takeStamps(std::vector<StampEvent>& stamps, std::vector<La
     // Stamps carry the name the pipeline knows them by; latencies their topic's.
     const auto read = [&](const QString& topic, const QString& name, bool latency) {
         const QString type = SourceMessage::stampType(SourceGraph::Ros2);
-        for (Ros2Sample& s : m_participant->takeMessages(topic, this)) {
+        const auto tap = m_taps.find(topic);
+        if (tap == m_taps.end())
+            return;
+        for (SourceArrival& s : tap->second->take()) {
             ++m_received;
-            const StampReading r
-                = SourceMessage::readStamp({SourceGraph::Ros2, name, type, s.receivedNs, std::move(s.bytes)}, latency);
+            s.topic = name;
+            s.type = type;
+            const StampReading r = SourceMessage::readStamp(s, latency);
             if (r.stamp)
                 stamps.push_back(*r.stamp);
             else if (r.latency)
@@ -85,11 +84,7 @@ void Ros2StampSource::takeStamps(std::vector<StampEvent>& stamps, std::vector<La
 quint64 Ros2StampSource::dropped() const
 {
     quint64 n = m_droppedBefore;
-    if (m_participant) {
-        for (auto it = m_stamps.cbegin(); it != m_stamps.cend(); ++it)
-            n += m_participant->droppedMessages(it.key(), this);
-        for (const QString& t : m_latencies)
-            n += m_participant->droppedMessages(t, this);
-    }
+    for (const auto& [topic, tap] : m_taps)
+        n += tap->dropped();
     return n;
 }

@@ -4,6 +4,8 @@
 #include "latency/stampsource.h"
 #include "wire/stampevent.h"
 
+#include <map>
+#include <memory>
 #include <QHash>
 #include <QObject>
 #include <QPointer>
@@ -12,11 +14,12 @@
 #include <vector>
 
 class Ros2Participant;
+class Tap;
 
 /// Stamps from a ROS 2 graph, as RosStampSource takes them from ROS 1: the suite's
 /// `benchmarking_suite/msg/TimeStamped` topics and mqtt_client's `~/latencies/<topic>`
 /// (`std_msgs/msg/Float64`, seconds), read as whole samples through the participant
-/// (Ros2Participant::watchMessages()) and decoded by hand (StampCodec).
+/// (a Tap of the participant per topic) and decoded by hand (StampCodec).
 ///
 /// A stamp needs the whole sample (its frame_id comes before `time`), so a topic is watched, not
 /// only monitored, in a queue of this source's own (a field plot of the same topic takes nothing
@@ -58,6 +61,7 @@ private:
     void unwatch(const QString& topic);
 
     QPointer<Ros2Participant> m_participant;
+    std::map<QString, std::unique_ptr<Tap>> m_taps; ///< a tap per stamp and latency topic
     QHash<QString, QString> m_stamps;
     QSet<QString> m_latencies;
     quint64 m_received = 0;

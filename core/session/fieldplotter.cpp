@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <iterator>
 #include <limits>
+#include <map>
+#include <memory>
 #include <optional>
 #include <QHash>
 #include <QJsonArray>
@@ -64,9 +66,14 @@ constexpr PlotField::Source kSources[] {PlotField::Source::Mqtt, PlotField::Sour
 struct FieldPlotter::Private
 {
     qint64 originNs = 0;
-    /// Per source (PlotField::Source as index): the topics watched, and the messages their source
+    /// Per source (PlotField::Source as index): a tap of each plotted topic, and the messages it
     /// had dropped by the last tick.
-    QHash<QString, quint64> watched[std::size(kSources)];
+    struct Watched
+    {
+        std::unique_ptr<Tap> tap;
+        quint64 dropped = 0;
+    };
+    std::map<QString, Watched> watched[std::size(kSources)];
     QHash<QString, QString> ros2Types; ///< the last type the ROS 2 graph named, for samples that outlive it
     struct RosType
     {
@@ -95,11 +102,7 @@ FieldPlotter::FieldPlotter(const Parts& parts, QObject* parent)
 
 FieldPlotter::~FieldPlotter()
 {
-    if (!m_parts.sources.alive())
-        return; // the session went first, and its sources with it
-    for (PlotField::Source source : kSources)
-        for (auto it = d->watched[int(source)].cbegin(); it != d->watched[int(source)].cend(); ++it)
-            m_parts.sources.of(graphOf(source))->unwatch(it.key());
+    // The taps close with `d` (harmless when the session and its sources went first).
 }
 
 int FieldPlotter::indexOf(const PlotField& field) const
@@ -152,13 +155,11 @@ void FieldPlotter::watch(PlotField::Source source, const QString& topic, bool on
     if (!m_parts.sources.alive())
         return;
     MessageSource* from = m_parts.sources.of(graphOf(source));
-    QHash<QString, quint64>& watched = d->watched[int(source)];
-    if (on && !watched.contains(topic)) {
-        from->watch(topic, kQueued, kQueuedBytes); // subscribes it (ROS), monitored or not
-        watched.insert(topic, from->droppedWatched(topic));
+    auto& watched = d->watched[int(source)];
+    if (on && !watched.count(topic)) {
+        watched[topic].tap = from->openTap(topic, kQueued, kQueuedBytes); // subscribes it, monitored or not
     } else if (!on) {
-        from->unwatch(topic);
-        watched.remove(topic);
+        watched.erase(topic);
         d->ros2Types.remove(topic);
         d->rosTypes.remove(topic);
     }
@@ -342,12 +343,11 @@ void FieldPlotter::onDrained(qint64 nowNs)
     // Every source alike: what it kept of a watched topic since the last tick, and what it dropped
     // because more came than it keeps (skipped, like what the tick does not decode).
     for (PlotField::Source source : kSources) {
-        MessageSource* from = m_parts.sources.of(graphOf(source));
-        for (auto it = d->watched[int(source)].begin(); it != d->watched[int(source)].end(); ++it) {
-            const quint64 dropped = from->droppedWatched(it.key());
-            m_skipped += dropped - std::min(dropped, *it);
-            *it = dropped;
-            changed = plotTopic(source, it.key(), from->takeWatched(it.key())) || changed;
+        for (auto& [topic, watched] : d->watched[int(source)]) {
+            const quint64 dropped = watched.tap->dropped();
+            m_skipped += dropped - std::min(dropped, watched.dropped);
+            watched.dropped = dropped;
+            changed = plotTopic(source, topic, watched.tap->take()) || changed;
         }
     }
     if (d->originNs == 0)

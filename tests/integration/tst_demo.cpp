@@ -217,8 +217,8 @@ private slots:
         // The vehicle starts once its stamps have a subscriber (a measuring Bridgescope): this one.
         const QString first = DemoLab::pipelineTopics().first();
         const QString last = DemoLab::pipelineTopics().last();
-        dds.watchMessages(first, 100, 1024 * 1024);
-        dds.watchMessages(last, 100, 1024 * 1024);
+        const std::unique_ptr<Tap> firstTap = dds.openTap(first, 100, 1024 * 1024);
+        const std::unique_ptr<Tap> lastTap = dds.openTap(last, 100, 1024 * 1024);
         const auto missing = [&] {
             QStringList gone;
             for (const QString& t : DemoLab::pipelineTopics()) {
@@ -247,10 +247,10 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(missing(), QString(), 20000);
         QVERIFY(lab.isRunning());
         // the point cloud flows: samples of 20000 bytes and more (its CDR) at about 10 Hz
-        dds.watchMessages(u"/cloud/pointcloud"_s, 100, 64 * 1024 * 1024);
-        std::vector<Ros2Sample> clouds;
+        const std::unique_ptr<Tap> cloudTap = dds.openTap(u"/cloud/pointcloud"_s, 100, 64 * 1024 * 1024);
+        std::vector<SourceArrival> clouds;
         const auto take = [&] {
-            for (Ros2Sample& sample : dds.takeMessages(u"/cloud/pointcloud"_s))
+            for (SourceArrival& sample : cloudTap->take())
                 clouds.push_back(std::move(sample));
             return clouds.size();
         };
@@ -258,7 +258,7 @@ private slots:
         QVERIFY(clouds.front().bytes.size() >= 20000);
         // and comes back: the last stamp of the pipeline, of a scan the vehicle sent
         std::size_t back = 0; // counted, not taken in the condition: QTRY_ asks it once more at the end
-        QTRY_VERIFY_WITH_TIMEOUT((back += dds.takeMessages(last).size()) > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT((back += lastTap->take().size()) > 0, 10000);
     }
 
     // With servers given, the lab uses them and starts only its components.

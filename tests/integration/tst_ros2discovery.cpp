@@ -421,27 +421,29 @@ private slots:
         Ros2Participant p;
         QVERIFY(p.start({m_domain, true}));
         // asked for before the topic exists: subscribed once the graph knows its type
-        p.watchMessages(u"/pose"_s, 5, 1024 * 1024);
+        std::unique_ptr<Tap> tap = p.openTap(u"/pose"_s, 5, 1024 * 1024);
         QVERIFY(p.isWatched(u"/pose"_s));
         Ros2Peer talker(m_domain,
                         {u"--node"_s, u"/poser"_s, u"--pub"_s, u"/pose:geometry_msgs/msg/PoseStamped:50"_s});
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         // (QTRY evaluates its condition more than once: what was taken is kept)
         std::size_t got = 0;
-        const auto arrive = [&] { return (got += p.takeMessages(u"/pose"_s).size()) > 0; };
+        const auto arrive = [&] { return (got += tap->take().size()) > 0; };
         QTRY_VERIFY_WITH_TIMEOUT(arrive(), 15000);
         QVERIFY(!p.isMonitored(u"/pose"_s));
         QVERIFY(!p.snapshot(wallClockNs()).contains(u"/pose"_s));
 
         // about 30 samples come while nobody takes: the newest 5 are kept, in order, as sent
-        const quint64 droppedBefore = p.droppedMessages(u"/pose"_s);
-        QTRY_VERIFY_WITH_TIMEOUT(p.droppedMessages(u"/pose"_s) >= droppedBefore + 15, 10000);
-        const std::vector<Ros2Sample> taken = p.takeMessages(u"/pose"_s);
+        const quint64 droppedBefore = tap->dropped();
+        QTRY_VERIFY_WITH_TIMEOUT(tap->dropped() >= droppedBefore + 15, 10000);
+        const std::vector<SourceArrival> taken = tap->take();
         QCOMPARE(taken.size(), 5u);
         const RosTypeRegistry registry = Ros2Definitions::registry();
         QString error;
         double previous = 0;
-        for (const Ros2Sample& s : taken) {
+        for (const SourceArrival& s : taken) {
+            QCOMPARE(s.graph, SourceGraph::Ros2);
+            QCOMPARE(s.type, u"geometry_msgs/msg/PoseStamped"_s); // as the graph names it
             const auto v = noted(
                 RosMessageDecoder::decodeCdr(registry, u"geometry_msgs/msg/PoseStamped"_s, s.bytes), &error);
             QVERIFY2(v, qPrintable(error));
@@ -452,40 +454,41 @@ private slots:
         }
         QVERIFY(taken.front().receivedNs <= taken.back().receivedNs);
 
-        // the bytes bound: two samples' worth keeps two
-        p.watchMessages(u"/pose"_s, 1000, 2 * taken.back().bytes.size());
-        p.takeMessages(u"/pose"_s);
-        const quint64 droppedByBytes = p.droppedMessages(u"/pose"_s);
-        QTRY_VERIFY_WITH_TIMEOUT(p.droppedMessages(u"/pose"_s) >= droppedByBytes + 3, 10000);
-        QCOMPARE(p.takeMessages(u"/pose"_s).size(), 2u);
+        // the bytes bound, in a second tap of the same topic: two samples' worth keeps two, while
+        // the first tap keeps its own five
+        std::unique_ptr<Tap> small = p.openTap(u"/pose"_s, 1000, 2 * taken.back().bytes.size());
+        const quint64 firstDropped = tap->dropped();
+        QTRY_VERIFY_WITH_TIMEOUT(small->dropped() >= 3 && tap->dropped() >= firstDropped + 3, 10000);
+        QCOMPARE(small->take().size(), 2u); // both full: what comes meanwhile drops their oldest
+        QCOMPARE(tap->take().size(), 5u);
+        small.reset(); // one tap closes, the other goes on
+        QVERIFY(p.isWatched(u"/pose"_s));
 
-        // monitor() and unmonitor() of the same topic leave the watch alone
-        p.watchMessages(u"/pose"_s, 1000, 1024 * 1024);
+        // monitor() and unmonitor() of the same topic leave the tap alone
+        tap = p.openTap(u"/pose"_s, 1000, 1024 * 1024);
         p.monitor(u"/pose"_s);
         QVERIFY(p.isMonitored(u"/pose"_s));
         QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/pose"_s).messages > 0, 5000);
         p.unmonitor(u"/pose"_s);
         QVERIFY(!p.isMonitored(u"/pose"_s));
         QVERIFY(!p.snapshot(wallClockNs()).contains(u"/pose"_s));
-        p.takeMessages(u"/pose"_s);
+        tap->take();
         std::size_t kept = 0;
-        QTRY_VERIFY_WITH_TIMEOUT((kept += p.takeMessages(u"/pose"_s).size()) >= 5, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT((kept += tap->take().size()) >= 5, 10000);
 
-        // a new participant (another domain join) subscribes the watched topic again
+        // a new participant (another domain join) subscribes the tapped topic again
         p.stop();
-        QVERIFY(p.takeMessages(u"/pose"_s).empty());
+        QVERIFY(tap->take().empty());
         QVERIFY(p.start({m_domain, true}));
         got = 0;
         QTRY_VERIFY_WITH_TIMEOUT(arrive(), 15000);
 
-        // unwatched: the subscription ends (the talker sees its reader go), nothing is kept
+        // the last tap closed: the subscription ends (the talker sees its reader go)
         const auto unmatched = [&] { return talker.lines().count(u"matched /pose 0"_s); };
         const qsizetype unmatchedBefore = unmatched();
-        p.unwatchMessages(u"/pose"_s);
+        tap.reset();
         QVERIFY(!p.isWatched(u"/pose"_s));
         QTRY_VERIFY_WITH_TIMEOUT(unmatched() > unmatchedBefore, 10000);
-        QVERIFY(p.takeMessages(u"/pose"_s).empty());
-        QCOMPARE(p.droppedMessages(u"/pose"_s), 0u);
     }
 
     // Two users of one subscription (Discover's Mon and the Links page) do not end each other's,

@@ -188,8 +188,8 @@ private slots:
         QVERIFY2(said.contains(u"ROS 2 (--ros 2), domain %1"_s.arg(m_domain)), qPrintable(said));
     }
 
-    // A field plot of a stamp topic (the Discover page's, which watches it as the default owner)
-    // takes its samples from a queue of its own, and ending it ends nothing of the Measure page's.
+    // A field plot of a stamp topic (a tap of its own, as the Discover page's plot has) takes its
+    // samples from a queue of its own, and closing it ends nothing of the Measure page's.
     void aFieldPlotOfAStampTopicTakesNothingFromMeasure()
     {
         const auto live = ros2Live();
@@ -197,13 +197,15 @@ private slots:
         MeasureSession measure(live.get());
         measure.setPipeline(Pipeline(kTopics, 1000));
         Ros2Participant* p = live->ros2();
-        p->watchMessages(kTopics[1], 1000, 1 << 20);
+        std::unique_ptr<Tap> tap = p->openTap(kTopics[1], 1000, 1 << 20);
         int plotted = 0;
         QTimer plot;
         connect(&plot, &QTimer::timeout, this, [&] {
-            plotted += int(p->takeMessages(kTopics[1]).size());
-            if (plotted >= kSamples / 3 && p->isWatched(kTopics[1])) {
-                p->unwatchMessages(kTopics[1]); // the plot closes halfway
+            if (!tap)
+                return;
+            plotted += int(tap->take().size());
+            if (plotted >= kSamples / 3) {
+                tap.reset(); // the plot closes halfway
                 plotted += 1000;
             }
         });

@@ -119,14 +119,20 @@ private slots:
               {message(MqttClientWire::typeTopicPrefix() + u"lab/pose"_s, MqttClientWire::encodeType(kPoint),
                        kStart, true)},
               kStart);
-        source.watch(u"lab/pose"_s, 4, 100); // four messages, 100 bytes
+        std::unique_ptr<Tap> tap = source.openTap(u"lab/pose"_s, 4, 100); // four messages, 100 bytes
+        std::unique_ptr<Tap> roomy = source.openTap(u"lab/pose"_s, 100, 1000); // another consumer's
         std::vector<MqttMessage> batch;
         for (int i = 0; i < 10; ++i)
             batch.push_back(message(u"lab/pose"_s, QByteArray(30, char('a' + i)), kStart + i));
         source.add(batch);
-        const std::vector<SourceArrival> kept = source.takeWatched(u"lab/pose"_s);
+        const std::vector<SourceArrival> kept = tap->take();
         QCOMPARE(kept.size(), std::size_t(3)); // 4 × 30 bytes is over 100
-        QCOMPARE(source.droppedWatched(u"lab/pose"_s), quint64(7));
+        QCOMPARE(tap->dropped(), quint64(7));
+        // Each tap its own queue and count: the roomier one kept all ten, the bytes shared too.
+        const std::vector<SourceArrival> all = roomy->take();
+        QCOMPARE(all.size(), std::size_t(10));
+        QCOMPARE(roomy->dropped(), quint64(0));
+        QCOMPARE(all[9].bytes.constData(), batch[9].payload.constData());
         for (std::size_t i = 0; i < kept.size(); ++i) {
             QCOMPARE(kept[i].graph, SourceGraph::Mqtt);
             QCOMPARE(kept[i].type, u"geometry_msgs/PointStamped"_s);
@@ -134,12 +140,19 @@ private slots:
             QCOMPARE(kept[i].bytes, batch[7 + i].payload);
             QCOMPARE(kept[i].bytes.constData(), batch[7 + i].payload.constData()); // shared, not copied
         }
-        QVERIFY(source.takeWatched(u"lab/pose"_s).empty());
-        QVERIFY(source.takeWatched(u"lab/other"_s).empty());
-        source.unwatch(u"lab/pose"_s);
+        QVERIFY(tap->take().empty());
+        std::unique_ptr<Tap> other = source.openTap(u"lab/other"_s, 4, 100);
+        QVERIFY(other->take().empty());
+        // Closing one tap leaves the other; a tap that outlives its source takes nothing more.
+        tap.reset();
         source.add(batch);
-        QVERIFY(source.takeWatched(u"lab/pose"_s).empty());
-        QCOMPARE(source.droppedWatched(u"lab/pose"_s), quint64(0));
+        QCOMPARE(roomy->take().size(), std::size_t(10));
+        {
+            MqttSource gone(&tree);
+            other = gone.openTap(u"lab/pose"_s, 4, 100);
+        }
+        QVERIFY(other->take().empty());
+        QCOMPARE(other->dropped(), quint64(0));
     }
 
     // What a peer floods a watched topic with never grows the queue past its bounds.
@@ -147,7 +160,7 @@ private slots:
     {
         MqttTopicTree tree;
         MqttSource source(&tree);
-        source.watch(u"flood"_s, 1000, 4 * 1024 * 1024);
+        const std::unique_ptr<Tap> tap = source.openTap(u"flood"_s, 1000, 4 * 1024 * 1024);
         const QByteArray kib(1024, 'x');
         for (int round = 0; round < 20; ++round) {
             std::vector<MqttMessage> batch;
@@ -158,9 +171,9 @@ private slots:
             }
             source.add(batch);
         }
-        const std::vector<SourceArrival> kept = source.takeWatched(u"flood"_s);
+        const std::vector<SourceArrival> kept = tap->take();
         QCOMPARE(kept.size(), std::size_t(1000));
-        QCOMPARE(source.droppedWatched(u"flood"_s), quint64(200'000 - 1000));
+        QCOMPARE(tap->dropped(), quint64(200'000 - 1000));
     }
 };
 

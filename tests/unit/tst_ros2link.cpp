@@ -134,7 +134,7 @@ void TestRos2Link::replaysEverythingAskedAfterARestart()
     pipe.up = false; // asked before start(): made once a child runs
     link.monitor(u"/a"_s);
     link.monitor(u"/a"_s);
-    link.watchMessages(u"/w"_s, 5, 1000, nullptr);
+    link.openQueue(u"/w"_s, 5, 1000, nullptr);
     link.keepArrivals(7);
     link.endpoints().setNode(u"/ns"_s, u"bridge"_s);
     QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
@@ -268,18 +268,18 @@ void TestRos2Link::eachOwnerOfAWatchedTopicGetsEverySample()
     RecordingPipe pipe;
     Ros2Link link(pipe);
     int plot = 0, stamps = 0;
-    link.watchMessages(u"/w"_s, 2, 1 << 20, &plot);
-    link.watchMessages(u"/w"_s, 10, 1 << 20, &stamps);
+    link.openQueue(u"/w"_s, 2, 1 << 20, &plot);
+    link.openQueue(u"/w"_s, 10, 1 << 20, &stamps);
     QCOMPARE(pipe.said(), QStringList({u"Watch /w 2"_s, u"Watch /w 10"_s}));
     QVERIFY(link.handle(samples(u"/w"_s, {{1, kCdr}, {2, kCdr}, {3, kCdr}}, 4)));
-    QCOMPARE(link.takeMessages(u"/w"_s, &plot).size(), std::size_t(2));
-    QCOMPARE(link.droppedMessages(u"/w"_s, &plot), quint64(1 + 4));
-    QCOMPARE(link.takeMessages(u"/w"_s, &stamps).size(), std::size_t(3));
-    QCOMPARE(link.droppedMessages(u"/w"_s, &stamps), quint64(4));
+    QCOMPARE(link.takeQueued(u"/w"_s, &plot).size(), std::size_t(2));
+    QCOMPARE(link.droppedQueued(u"/w"_s, &plot), quint64(1 + 4));
+    QCOMPARE(link.takeQueued(u"/w"_s, &stamps).size(), std::size_t(3));
+    QCOMPARE(link.droppedQueued(u"/w"_s, &stamps), quint64(4));
 
-    link.unwatchMessages(u"/w"_s, &stamps);
+    link.closeQueue(u"/w"_s, &stamps);
     QCOMPARE(pipe.said().last(), u"Watch /w 2"_s);
-    link.unwatchMessages(u"/w"_s, &plot);
+    link.closeQueue(u"/w"_s, &plot);
     QCOMPARE(pipe.said().last(), u"Unwatch /w"_s);
     QVERIFY(link.handle(samples(u"/w"_s, {{4, kCdr}}))); // unwatched since the child sent it
     QVERIFY(!link.isWatched(u"/w"_s));
