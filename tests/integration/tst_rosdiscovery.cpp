@@ -148,6 +148,21 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/pose"_s).messages >= 1, 10000);
         monitor.unmonitor(u"/pose"_s);
         QVERIFY(!monitor.isMonitored(u"/pose"_s));
+
+        // A tap (a field plot's) subscribes the topic for itself, monitored or not, and gets
+        // whole messages in its own bounded queue; closing the last tap ends the subscription.
+        std::unique_ptr<Tap> tap = monitor.openTap(u"/pose"_s, 2, 1 << 20);
+        QVERIFY(monitor.isMonitored(u"/pose"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(tap->dropped() >= 3, 10000); // more came than it keeps
+        const std::vector<SourceArrival> kept = tap->take();
+        QCOMPARE(kept.size(), std::size_t(2));
+        QCOMPARE(kept.back().graph, SourceGraph::Ros1);
+        QCOMPARE(kept.back().topic, u"/pose"_s);
+        const auto w = noted(RosMessageDecoder::decode(reg, s.type, kept.back().bytes), &error);
+        QVERIFY2(w, qPrintable(error));
+        QCOMPARE(w->find(u"pose.position.x"_s)->value.toDouble(), 1.5);
+        tap.reset();
+        QVERIFY(!monitor.isMonitored(u"/pose"_s));
     }
 
     void deadMasterIsReportedNotWaitedFor()
