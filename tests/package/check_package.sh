@@ -183,7 +183,8 @@ status=0
 domain=$((200 + $$ % 30))
 out="$(run "$usr/bin/bridgescope" --verbose discover --ros 2 --ros-domain "$domain" --ros-localhost-only \
     --broker tcp://127.0.0.1:1 --seconds 1 2>&1)" || status=$?
-grep -qF "starting $usr/bin/../libexec/bridgescope/bridgescope-dds for domain $domain" <<<"$out" \
+# (the participant says the domain it joins, its supervisor the child it starts for it)
+{ grep -qF "joining domain $domain" <<<"$out" && grep -qF "starting $usr/bin/../libexec/bridgescope/bridgescope-dds" <<<"$out"; } \
     || fail "the installed program did not start the installed DDS helper: $out"
 grep -qF "restarted" <<<"$out" && fail "the installed DDS helper did not run: $out"
 pass "the installed DDS helper runs the ROS 2 participant"
