@@ -25,6 +25,12 @@ constexpr qint64 kMiB = 1024 * 1024;
 /// What announced topics may take: the topic tree's levels (64 MiB) and payload history (64 MiB), and
 /// the 5,000 discovered links watched with their windows and metrics series.
 constexpr qint64 kAnnouncedBudget = 64 * kMiB + 64 * kMiB + 64 * kMiB;
+/// What the test's own scrapes of /metrics may add to the peak it reads after them: an answer of
+/// at most MetricsExposition::kMaxAnswerBytes (16 MiB; 5,000 links of 1,000-character names fill
+/// it) while it is formatted and while it is sent. Since the peak is read once the scrapes say the
+/// flood was taken (not after a sleep), it holds them: measured (Debug) 162 MiB before the first
+/// scrape, 179-189 MiB after them, 197 MiB in a loaded CI run.
+constexpr qint64 kScrapeBudget = 2 * 16 * kMiB;
 /// A sample without labels from an exposition; NaN when absent.
 double plainSample(const QByteArray& metrics, const QByteArray& name)
 {
@@ -222,7 +228,7 @@ private slots:
         qInfo("watch: VmHWM %lld MiB before, %lld MiB after %d announced topics; %.0f messages not tracked, "
               "%.0f links not watched",
               base / kMiB, peak / kMiB, published, untracked, unwatched);
-        QVERIFY2(peak - base < kAnnouncedBudget * PeakRss::kSanitizerFactor,
+        QVERIFY2(peak - base < (kAnnouncedBudget + kScrapeBudget) * PeakRss::kSanitizerFactor,
                  qPrintable(u"%1 MiB over %2 MiB"_s.arg((peak - base) / kMiB).arg(base / kMiB)));
         // 5,000 links watched (as many as fit in the answer are in it, the others counted as omitted).
         QCOMPARE(metrics.count("bridgescope_link_state{")
