@@ -194,7 +194,7 @@ private:
     {
         for (const QString& topic : m_server.watched())
             sendSamples(Kind::Samples, topic, m_engine.droppedMessages(topic), m_engine.takeMessages(topic));
-        std::vector<Ros2Arrival> arrivals = m_engine.takeArrivals();
+        std::vector<SourceHead> arrivals = m_engine.takeArrivals();
         if (!arrivals.empty())
             send(Kind::Arrivals, Ros2Protocol::encodeArrivals({m_engine.droppedArrivals(), std::move(arrivals)}));
         if (++m_ticks * Ros2Engine::kPollMs >= Ros2Protocol::kStatsMs) {

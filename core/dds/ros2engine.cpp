@@ -177,7 +177,7 @@ struct Ros2Engine::Private
         std::unique_ptr<NewestQueue<Ros2Sample>> watched; ///< set while watchMessages() asks
     };
     std::map<QString, Monitored> monitored; ///< under `mutex`
-    std::unique_ptr<EventBuffer<Ros2Arrival>> arrivals; ///< set by keepArrivals(), under `mutex`
+    std::unique_ptr<EventBuffer<SourceHead>> arrivals; ///< set by keepArrivals(), under `mutex`
 
     dds_entity_t domain = 0;
     dds_entity_t participant = 0;
@@ -398,7 +398,7 @@ struct Ros2Engine::Private
             it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
         if (arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
             arrivals->push(
-                Ros2Arrival {topic, now, s.lastSize, s.lastMessage.mid(4, Ros2Arrival::kHeadBytes)});
+                SourceHead {SourceGraph::Ros2, topic, now, s.lastSize, s.lastMessage.mid(4, SourceHead::kHeadBytes)});
     }
 
     /// Ends a use of a topic's subscription (monitor() or watchMessages()), and the subscription
@@ -497,7 +497,7 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     d->publicationReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
     d->subscriptionReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
     if (m_keepArrivals)
-        d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(m_keepArrivals);
+        d->arrivals = std::make_unique<EventBuffer<SourceHead>>(m_keepArrivals);
     openDiscoveryInfo();
     d->own = std::make_unique<Ros2Endpoints>(d->participant, [this] {
         QMetaObject::invokeMethod(this, [this] { emit samplesReceived(); }, Qt::QueuedConnection);
@@ -771,15 +771,15 @@ void Ros2Engine::keepArrivals(std::size_t maxArrivals)
     if (maxArrivals == 0)
         d->arrivals.reset();
     else
-        d->arrivals = std::make_unique<EventBuffer<Ros2Arrival>>(maxArrivals);
+        d->arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
 }
 
-std::vector<Ros2Arrival> Ros2Engine::takeArrivals()
+std::vector<SourceHead> Ros2Engine::takeArrivals()
 {
     if (!d)
         return {};
     std::lock_guard<std::mutex> lock(d->mutex);
-    return d->arrivals ? d->arrivals->take() : std::vector<Ros2Arrival>();
+    return d->arrivals ? d->arrivals->take() : std::vector<SourceHead>();
 }
 
 quint64 Ros2Engine::droppedArrivals() const

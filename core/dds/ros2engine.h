@@ -67,7 +67,7 @@ public:
     std::vector<Ros2Sample> takeMessages(const QString& topic);
     quint64 droppedMessages(const QString& topic) const;
     void keepArrivals(std::size_t maxArrivals) override;
-    std::vector<Ros2Arrival> takeArrivals();
+    std::vector<SourceHead> takeArrivals();
     quint64 droppedArrivals() const;
 
     // Endpoints of our own (Ros2Participant's setNode(), advertise(), publish(), subscribe()); each

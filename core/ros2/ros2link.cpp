@@ -146,12 +146,10 @@ bool Ros2Link::onArrivals(const QByteArray& body)
     if (!batch)
         return false;
     m_childDroppedArrivals = batch->dropped;
-    static_assert(Ros2Arrival::kHeadBytes <= SourceHead::kHeadBytes);
     if (m_arrivals)
-        for (Ros2Arrival& a : batch->arrivals)
+        for (SourceHead& a : batch->arrivals)
             if (m_monitorUses.contains(a.topic))
-                m_arrivals->push(SourceHead {SourceGraph::Ros2, std::move(a.topic), a.receivedNs, a.size,
-                                             std::move(a.head)});
+                m_arrivals->push(std::move(a));
     return true;
 }
 

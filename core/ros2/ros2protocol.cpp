@@ -534,11 +534,15 @@ QByteArray encodeArrivals(const ArrivalBatch& b)
 
 std::optional<ArrivalBatch> decodeArrivals(const QByteArray& body)
 {
-    return decodeBody<ArrivalBatch>(body, [](const ArrivalBatch& b) {
-        return std::all_of(b.arrivals.begin(), b.arrivals.end(), [](const Ros2Arrival& a) {
-            return a.size >= 0 && a.head.size() <= Ros2Arrival::kHeadBytes;
+    std::optional<ArrivalBatch> batch = decodeBody<ArrivalBatch>(body, [](const ArrivalBatch& b) {
+        return std::all_of(b.arrivals.begin(), b.arrivals.end(), [](const SourceHead& a) {
+            return a.size >= 0 && a.head.size() <= SourceHead::kHeadBytes;
         });
     });
+    if (batch)
+        for (SourceHead& a : batch->arrivals)
+            a.graph = SourceGraph::Ros2; // the graph is not on the wire: the child's are ROS 2's
+    return batch;
 }
 
 QByteArray encodeEndpoint(const EndpointRequest& r)

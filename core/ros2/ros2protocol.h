@@ -270,7 +270,7 @@ std::optional<SampleBatch> decodeSamples(const QByteArray& body);
 struct ArrivalBatch
 {
     quint64 dropped = 0; ///< the child's drops since arrivals were kept
-    std::vector<Ros2Arrival> arrivals;
+    std::vector<SourceHead> arrivals;
 };
 QByteArray encodeArrivals(const ArrivalBatch& b);
 std::optional<ArrivalBatch> decodeArrivals(const QByteArray& body);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "topics/topicgraph.h"
+#include "wire/sourcemessage.h"
 
 #include <QByteArray>
 #include <QHash>
@@ -23,17 +24,6 @@ inline QHash<QString, TopicStats> topicStatsOf(const QHash<QString, Ros2MonitorS
         static_cast<TopicFigures&>(stats[it.key()]) = *it;
     return stats;
 }
-
-/// One sample as the monitor saw it, for consumers that need every sample (Watch): the first bytes
-/// of the message after its 4-byte encapsulation header (a Header's stamp, a std_msgs/Float64).
-struct Ros2Arrival
-{
-    static constexpr int kHeadBytes = 16;
-    QString topic;
-    qint64 receivedNs = 0; ///< wall clock
-    int size = 0; ///< CDR bytes, header included
-    QByteArray head; ///< the message's first kHeadBytes bytes after the encapsulation header
-};
 
 /// One whole sample of a watched topic (for plots of its fields).
 struct Ros2Sample

@@ -79,8 +79,8 @@ void body(const Frame& f)
         break;
     case Kind::Arrivals:
         if (const auto a = decodeArrivals(f.body)) {
-            for (const Ros2Arrival& x : a->arrivals)
-                FUZZ_CHECK(x.head.size() <= Ros2Arrival::kHeadBytes && x.size >= 0, "an arrival out of bounds");
+            for (const SourceHead& x : a->arrivals)
+                FUZZ_CHECK(x.head.size() <= SourceHead::kHeadBytes && x.size >= 0, "an arrival out of bounds");
         }
         break;
     case Kind::Start:

@@ -152,9 +152,15 @@ private slots:
         QCOMPARE(samples->samples.size(), 2u);
         QCOMPARE(samples->samples[1].bytes.size(), 100000);
 
-        const auto arrivals = decodeArrivals(encodeArrivals({3, {{u"/t"_s, 5, 100, "0123456789abcdef"}}}));
+        // The graph is not on the wire: what the child sends reads back as ROS 2's, whatever it was.
+        const auto arrivals = decodeArrivals(
+            encodeArrivals({3, {{SourceGraph::Mqtt, u"/t"_s, 5, 100, "0123456789abcdef"}}}));
         QVERIFY(arrivals);
         QCOMPARE(arrivals->dropped, 3u);
+        QCOMPARE(arrivals->arrivals.front().graph, SourceGraph::Ros2);
+        QCOMPARE(arrivals->arrivals.front().topic, u"/t"_s);
+        QCOMPARE(arrivals->arrivals.front().receivedNs, 5);
+        QCOMPARE(arrivals->arrivals.front().size, 100);
         QCOMPARE(arrivals->arrivals.front().head, QByteArray("0123456789abcdef"));
     }
 
