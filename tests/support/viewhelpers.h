@@ -13,6 +13,17 @@
 
 /// What GUI tests do to item views: find rows, and drag between views as a real drag would.
 namespace ViewHelpers {
+/// The child of `parent` (any depth) of type W named `name`; stops the test naming what is missing
+/// instead of letting it crash on a null pointer (tests find widgets by object name, issue 42).
+template<typename W> W* named(const QObject& parent, const QString& name)
+{
+    W* w = parent.findChild<W*>(name);
+    if (!w)
+        qFatal("%s has no %s named %s", parent.metaObject()->className(), W::staticMetaObject.className(),
+               qPrintable(name));
+    return w;
+}
+
 /// The action `text` of the menu `menu` in `w`'s menu bar (accelerators ignored), or nullptr.
 inline QAction* menuAction(QMainWindow& w, const QString& menu, const QString& text)
 {

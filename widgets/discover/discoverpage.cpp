@@ -82,6 +82,7 @@ DiscoverPage::DiscoverPage(const Parts& parts, QWidget* parent)
     QWidget* rosBox = createRosPane();
     QWidget* mqttBox = createMqttPane();
     m_detail = new DetailPane(parts.detail, this);
+    m_detail->setObjectName(u"detailPane"_s);
 
     // The two lists side by side over the whole width (names, types and values are what people
     // read), the selected topic's detail below them: at 1280 px a third column left the lists
@@ -403,6 +404,7 @@ void DiscoverPage::selectTopic()
 void DiscoverPage::createMqttActions()
 {
     m_publishAction = new QAction(tr("&Publish…"), this);
+    m_publishAction->setObjectName(u"publishAction"_s);
     m_publishAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_publishAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_publishAction->setToolTip(tr("Publish a message to the selected topic (Ctrl+P)"));

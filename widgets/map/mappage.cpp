@@ -52,6 +52,7 @@ MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoS
     , m_editor(new ConfigEditor(document, undoStack, this))
     , m_healthTimer(new QTimer(this))
 {
+    setObjectName(u"mapPage"_s);
     QLayout* bar = createBar();
     // The mappings take most of the width (their topics whole); the discovered topics are trees
     // in a panel beside them that folds away when the mappings need more.
@@ -98,6 +99,7 @@ QLayout* MapPage::createBar()
     connect(m_toRos, &QAction::triggered, this, &MapPage::bridgeSelectedMqtt);
 
     m_showTopics = new QAction(tr("Discovered Topics"), this);
+    m_showTopics->setObjectName(u"topicsPanelAction"_s);
     m_showTopics->setCheckable(true);
     m_showTopics->setChecked(true);
     m_showTopics->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
