@@ -34,6 +34,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 using namespace WindowParts;
 
 namespace {
@@ -89,7 +90,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ConfigEditor* editor = w.configEditor();
-        MappingInspector* inspector = named<MappingInspector>(*editor, u"mappingInspector"_s);
+        MappingInspector* inspector = only<MappingInspector>(*editor);
         QCOMPARE(visibleRows(editor), 2);
         QVERIFY(!w.isWindowModified());
 
@@ -153,7 +154,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ConfigEditor* editor = w.configEditor();
-        MappingInspector* inspector = named<MappingInspector>(*editor, u"mappingInspector"_s);
+        MappingInspector* inspector = only<MappingInspector>(*editor);
         ProblemModel* problems = editor->problems()->model();
         QCOMPARE(problems->errorCount(), 0);
         // The whole chain the table shows (filter over icons over mappings) stays consistent.
@@ -206,7 +207,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ConfigEditor* editor = w.configEditor();
-        MappingInspector* inspector = named<MappingInspector>(*editor, u"mappingInspector"_s);
+        MappingInspector* inspector = only<MappingInspector>(*editor);
         ConfigDocument* doc = w.document();
 
         // Insert adds a mapping and puts the cursor on its ROS topic.
@@ -246,18 +247,17 @@ private slots:
         QCOMPARE(doc->mapping(1).rosTopic(), u"/ping/primitive"_s);
 
         // Broker settings edit through their own form.
-        named<SettingsInspector>(*editor, u"settingsInspector"_s)->focusField(OptionScope::Broker, u"port"_s);
-        auto* port = qobject_cast<QLineEdit*>(named<SettingsInspector>(*editor, u"settingsInspector"_s)
-                                                  ->form(OptionScope::Broker)
-                                                  ->editor(u"port"_s));
+        only<SettingsInspector>(*editor)->focusField(OptionScope::Broker, u"port"_s);
+        auto* port = qobject_cast<QLineEdit*>(
+            only<SettingsInspector>(*editor)->form(OptionScope::Broker)->editor(u"port"_s));
         typeInto(port, u"8883"_s);
         QCOMPARE(doc->config().broker.values.text(u"port"_s), u"8883"_s);
 
         // The preview shows the ROS 2 layout on request.
-        named<YamlPreview>(*editor, u"preview"_s)->setLayout(ConfigLayout::Ros2);
-        named<YamlPreview>(*editor, u"preview"_s)->refreshNow();
-        QVERIFY(named<YamlPreview>(*editor, u"preview"_s)->text().contains(u"ros__parameters:"_s));
-        QVERIFY(named<YamlPreview>(*editor, u"preview"_s)->text().contains(u"/lidar/points:"_s));
+        only<YamlPreview>(*editor)->setLayout(ConfigLayout::Ros2);
+        only<YamlPreview>(*editor)->refreshNow();
+        QVERIFY(only<YamlPreview>(*editor)->text().contains(u"ros__parameters:"_s));
+        QVERIFY(only<YamlPreview>(*editor)->text().contains(u"/lidar/points:"_s));
     }
 
     void unreadableFilesAreReportedAndNothingIsLost()

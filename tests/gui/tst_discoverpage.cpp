@@ -34,6 +34,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 
 namespace {
 QStringList fieldNames(QAbstractItemModel* model, const QModelIndex& parent = {})
@@ -140,7 +141,7 @@ private slots:
     {
         MainWindow w;
         DiscoverPage* page = w.discoverPage();
-        DetailPane* detail = named<DetailPane>(*page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(*page);
         page->setRosMasterUri(m_servers.rosMasterUri());
         page->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
         w.show();
@@ -268,7 +269,7 @@ private slots:
         f.close();
         MainWindow w;
         DiscoverPage* page = w.discoverPage();
-        DetailPane* detail = named<DetailPane>(*page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(*page);
         page->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
         w.show();
         QTRY_VERIFY_WITH_TIMEOUT(named<QLabel>(*page, u"mqttState"_s)->text().contains(u"connected"_s),

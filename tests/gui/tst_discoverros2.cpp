@@ -39,6 +39,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 using namespace WindowParts;
 
 namespace {
@@ -130,7 +131,7 @@ private slots:
         QVERIFY(model->setData(model->index(model->rowOf(u"/chatter"_s), TopicTableModel::MonitorColumn),
                                Qt::Checked, Qt::CheckStateRole));
         view->setCurrentIndex(view->model()->index(chatter, TopicTableModel::TopicColumn));
-        DetailPane* detail = named<DetailPane>(page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(page);
         QCOMPARE(detail->topic(), u"/chatter"_s);
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
         QVERIFY2(detail->title()->text().contains(u"/lab/talker (reliable, volatile)"_s),
@@ -187,7 +188,7 @@ private slots:
             QVERIFY(model->setData(model->index(model->rowOf(topic), TopicTableModel::MonitorColumn),
                                    Qt::Checked, Qt::CheckStateRole));
         view->setCurrentIndex(view->model()->index(rowOf(view, u"/huge"_s), TopicTableModel::TopicColumn));
-        DetailPane* detail = named<DetailPane>(page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(page);
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"needs 4294967280 more bytes"_s), 10000);
         QVERIFY(
             !named<QPlainTextEdit>(*detail, u"payload"_s)->toPlainText().isEmpty()); // the bytes, shown raw

@@ -31,6 +31,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 
 class TestFieldPlot : public QObject
 {
@@ -48,7 +49,7 @@ private:
             page.show();
             detail()->findChild<QTabWidget*>()->setCurrentWidget(chart()->parentWidget());
         }
-        DetailPane* detail() { return named<DetailPane>(page, u"detailPane"_s); }
+        DetailPane* detail() { return only<DetailPane>(page); }
         FieldPlotChart* chart() { return named<FieldPlotChart>(*detail(), u"plotChart"_s); }
         FieldPlotter* plotter() { return named<FieldPlotter>(*detail(), u"fieldPlotter"_s); }
         LiveSession session;

@@ -42,6 +42,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 using namespace WindowParts;
 
 namespace {
@@ -116,7 +117,7 @@ QString fieldsCut(const QWidget* widget)
 /// The words above a read-only file's text (that it is read-only, why and where), or null.
 const QLabel* readOnlyNote(const ConfigEditor* editor)
 {
-    for (const QLabel* label : named<YamlPreview>(*editor, u"preview"_s)->findChildren<QLabel*>())
+    for (const QLabel* label : only<YamlPreview>(*editor)->findChildren<QLabel*>())
         if (label->isVisible() && label->text().contains(u"Read-only"_s))
             return label;
     return nullptr;
@@ -202,7 +203,7 @@ private slots:
         QVERIFY2(labelCut(hint).isEmpty(), qPrintable(labelCut(hint)));
         // The inspector of the first mapping: its fields whole.
         table->selectRow(0);
-        MappingInspector* inspector = named<MappingInspector>(*page->editor(), u"mappingInspector"_s);
+        MappingInspector* inspector = only<MappingInspector>(*page->editor());
         QTRY_VERIFY(!named<QLineEdit>(*inspector, u"ros_topic"_s)->text().isEmpty());
         const QString fields = settled([&] { return fieldsCut(inspector); });
         QVERIFY2(fields.isEmpty(), qPrintable(fields));
@@ -260,9 +261,8 @@ private slots:
                  qPrintable(tabs->tabText(tabs->currentIndex())));
         ConfigEditor* editor = mapPage(*w)->editor();
         auto* inspectorTabs = editor->findChild<QTabWidget*>(u"inspectorTabs"_s);
-        QCOMPARE(inspectorTabs->currentWidget(),
-                 static_cast<QWidget*>(named<YamlPreview>(*editor, u"preview"_s)));
-        QTRY_COMPARE(named<YamlPreview>(*editor, u"preview"_s)->text(), QString::fromUtf8(text));
+        QCOMPARE(inspectorTabs->currentWidget(), static_cast<QWidget*>(only<YamlPreview>(*editor)));
+        QTRY_COMPARE(only<YamlPreview>(*editor)->text(), QString::fromUtf8(text));
         // Why, where, and that it is read-only, above the text, whole.
         const QLabel* noteLabel = readOnlyNote(editor);
         QVERIFY(noteLabel);
@@ -271,7 +271,7 @@ private slots:
         const QString noteCut = settled([&] { return labelCut(noteLabel); });
         QVERIFY2(noteCut.isEmpty(), qPrintable(noteCut));
         // The line is marked and the cursor is on it.
-        auto* view = named<YamlPreview>(*editor, u"preview"_s)->findChild<QPlainTextEdit*>(u"previewText"_s);
+        auto* view = only<YamlPreview>(*editor)->findChild<QPlainTextEdit*>(u"previewText"_s);
         const QList<QTextEdit::ExtraSelection> marks = view->extraSelections();
         QVERIFY(!marks.isEmpty());
         const int line = marks.first().cursor.block().blockNumber();
@@ -309,7 +309,7 @@ private slots:
         QVERIFY2(note.contains(u"The file is 17 MB, the limit is 8 MB."_s), qPrintable(note));
         QVERIFY2(note.contains(u"Only the first 1.0 MB of 17.3 MB are shown."_s), qPrintable(note));
         QVERIFY(!note.contains(u"8388608"_s));
-        const QString shown = named<YamlPreview>(*editor, u"preview"_s)->text();
+        const QString shown = only<YamlPreview>(*editor)->text();
         QVERIFY(shown.startsWith(u"bridge:\n  ros2mqtt:\n"_s));
         QVERIFY2(shown.size() <= 1024 * 1024, qPrintable(QString::number(shown.size())));
         QVERIFY(w->files()->closeConfig(w->files()->currentIndex()));

@@ -24,6 +24,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 
 namespace {
 using ViewHelpers::menuAction;
@@ -102,7 +103,7 @@ private slots:
         QVERIFY(lo <= report.steps.front().rtt.min);
         // Up to the largest, or a high quantile with what lies beyond marked (issue 33).
         QVERIFY(hi >= report.steps.front().rtt.max || !w.chart()->beyondText(series).isEmpty());
-        QVERIFY(!named<QTableWidget>(w, u"steps"_s)->isVisible()); // no sweep, no table
+        QVERIFY(!only<QTableWidget>(w)->isVisible()); // no sweep, no table
 
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty())
@@ -144,16 +145,16 @@ private slots:
         configure(w, m_servers.brokerUrl(), 100, 100);
         named<QCheckBox>(w, u"sweep"_s)->setChecked(true);
         QVERIFY(!named<QSpinBox>(w, u"count"_s)->isEnabled());
-        QVERIFY(named<QTableWidget>(w, u"steps"_s)->isVisible());
+        QVERIFY(only<QTableWidget>(w)->isVisible());
         QSignalSpy finished(&w, &ProbeDialog::probeFinished);
         named<QPushButton>(w, u"startButton"_s)->click();
         // Two steps are enough to see the table grow; then stop.
-        QTRY_VERIFY_WITH_TIMEOUT(named<QTableWidget>(w, u"steps"_s)->rowCount() >= 2, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(only<QTableWidget>(w)->rowCount() >= 2, 20000);
         named<QPushButton>(w, u"stopButton"_s)->click();
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
         const auto report = finished.first().first().value<LinkProbeReport>();
-        QCOMPARE(named<QTableWidget>(w, u"steps"_s)->rowCount(), int(report.steps.size()));
-        QCOMPARE(named<QTableWidget>(w, u"steps"_s)->item(0, 0)->text(), w.locale().toString(100.0, 'f', 1));
+        QCOMPARE(only<QTableWidget>(w)->rowCount(), int(report.steps.size()));
+        QCOMPARE(only<QTableWidget>(w)->item(0, 0)->text(), w.locale().toString(100.0, 'f', 1));
         QVERIFY(report.best >= 0);
         QVERIFY2(named<QLabel>(w, u"sweepResult"_s)
                      ->text()

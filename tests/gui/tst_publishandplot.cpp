@@ -46,6 +46,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 
 namespace {
 /// One message as a subscriber of its own got it.
@@ -464,7 +465,7 @@ private slots:
         mosquittoPub(
             {u"-t"_s, u"plot/json"_s, u"-r"_s, u"-m"_s, u"{\"a\": -1, \"v\": [0, -1], \"name\": \"x\"}"_s});
         Page p(m_servers.brokerUrl());
-        DetailPane* detail = named<DetailPane>(p.page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(p.page);
         FieldPlotChart* plotChart = named<FieldPlotChart>(*detail, u"plotChart"_s);
         QListWidget* plotList = named<QListWidget>(*detail, u"plotList"_s);
         select(p.page, u"plot/json"_s);
@@ -544,7 +545,7 @@ private slots:
     {
         Page p(m_servers.brokerUrl());
         p.page.setRosMasterUri(m_servers.rosMasterUri());
-        DetailPane* detail = named<DetailPane>(p.page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(p.page);
         p.session.rosMonitor()->monitor(u"/plot/stamps"_s);
         QProcess node;
         node.setProcessEnvironment(m_servers.rosEnvironment());
@@ -598,7 +599,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(model->rowOf(u"/plot/pose"_s) >= 0, 15000);
         const QModelIndex monitor = model->index(model->rowOf(u"/plot/pose"_s), TopicTableModel::MonitorColumn);
         QVERIFY(model->setData(monitor, Qt::Checked, Qt::CheckStateRole));
-        DetailPane* detail = named<DetailPane>(page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(page);
         QListWidget* plotList = named<QListWidget>(*detail, u"plotList"_s);
         detail->showRos2Topic(u"/plot/pose"_s);
         const QStringList x {u"pose"_s, u"position"_s, u"x"_s};
@@ -652,7 +653,7 @@ private slots:
     {
         mosquittoPub({u"-t"_s, u"plot/hostile"_s, u"-r"_s, u"-m"_s, u"{\"a\": 1}"_s});
         Page p(m_servers.brokerUrl());
-        DetailPane* detail = named<DetailPane>(p.page, u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(p.page);
         QListWidget* plotList = named<QListWidget>(*detail, u"plotList"_s);
         select(p.page, u"plot/hostile"_s);
         QTRY_VERIFY(fieldAt(detail, {u"a"_s}).isValid());

@@ -47,6 +47,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 using namespace WindowParts;
 
 namespace {
@@ -273,7 +274,7 @@ private slots:
         checkNames(ros, TopicTableModel::TypeColumn, 19);
 
         // The selection opened the detail: its tabs whole, side by side.
-        QTabBar* tabs = named<DetailPane>(*discover, u"detailPane"_s)->findChild<QTabWidget*>()->tabBar();
+        QTabBar* tabs = only<DetailPane>(*discover)->findChild<QTabWidget*>()->tabBar();
         QTRY_VERIFY(tabs->isVisible());
         for (int i = 0; i < tabs->count(); ++i) {
             const QString text = tabs->tabText(i).remove(u'&');
@@ -285,8 +286,8 @@ private slots:
                                     .arg(rect.x())
                                     .arg(tabs->width())));
         }
-        QVERIFY2(named<DetailPane>(*discover, u"detailPane"_s)->height() >= 200,
-                 qPrintable(QString::number(named<DetailPane>(*discover, u"detailPane"_s)->height())));
+        QVERIFY2(only<DetailPane>(*discover)->height() >= 200,
+                 qPrintable(QString::number(only<DetailPane>(*discover)->height())));
     }
 
     // Point 9: the ECDF's legend names each series whole (it read `object_detection…`,

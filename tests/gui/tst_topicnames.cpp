@@ -52,6 +52,7 @@
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
+using ViewHelpers::only;
 using namespace WindowParts;
 
 class TestTopicNames : public QObject
@@ -136,7 +137,7 @@ private:
         // The inspector beside the table shows the selected mapping's topics whole.
         QTableView* mappings = mapPage(*w)->editor()->table();
         mappings->selectRow(0);
-        MappingInspector* inspector = named<MappingInspector>(*mapPage(*w)->editor(), u"mappingInspector"_s);
+        MappingInspector* inspector = only<MappingInspector>(*mapPage(*w)->editor());
         for (QLineEdit* edit :
              {named<QLineEdit>(*inspector, u"ros_topic"_s), named<QLineEdit>(*inspector, u"mqtt_topic"_s)}) {
             QTRY_VERIFY(!edit->text().isEmpty());
@@ -393,7 +394,7 @@ private slots:
         QVERIFY2(row.isValid(), "the demo has no latency topic");
         QVERIFY(view->model()->setData(row, Qt::Checked, Qt::CheckStateRole));
         view->setCurrentIndex(row.siblingAtColumn(TopicTableModel::TopicColumn));
-        DetailPane* detail = named<DetailPane>(*w->discoverPage(), u"detailPane"_s);
+        DetailPane* detail = only<DetailPane>(*w->discoverPage());
         QTRY_COMPARE(detail->topic(), topic);
         const auto dataField = [detail]() -> QModelIndex {
             const QAbstractItemModel* m = named<QTreeView>(*detail, u"fields"_s)->model();

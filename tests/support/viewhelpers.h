@@ -24,6 +24,18 @@ template<typename W> W* named(const QObject& parent, const QString& name)
     return w;
 }
 
+/// The one child of `parent` (any depth) of type W; stops the test when there is none or more.
+/// For containers the window memory keys by their class: a name would move where the sizes and
+/// columns of everything inside them are saved (WindowMemory::keyOf), so they have none.
+template<typename W> W* only(const QObject& parent)
+{
+    const QList<W*> found = parent.findChildren<W*>();
+    if (found.size() != 1)
+        qFatal("%s has %lld %s, not one", parent.metaObject()->className(), qlonglong(found.size()),
+               W::staticMetaObject.className());
+    return found.first();
+}
+
 /// The action `text` of the menu `menu` in `w`'s menu bar (accelerators ignored), or nullptr.
 inline QAction* menuAction(QMainWindow& w, const QString& menu, const QString& text)
 {

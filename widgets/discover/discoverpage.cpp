@@ -82,7 +82,6 @@ DiscoverPage::DiscoverPage(const Parts& parts, QWidget* parent)
     QWidget* rosBox = createRosPane();
     QWidget* mqttBox = createMqttPane();
     m_detail = new DetailPane(parts.detail, this);
-    m_detail->setObjectName(u"detailPane"_s);
 
     // The two lists side by side over the whole width (names, types and values are what people
     // read), the selected topic's detail below them: at 1280 px a third column left the lists

@@ -188,11 +188,8 @@ QWidget* ConfigEditor::createInspectorTabs()
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(u"inspectorTabs"_s);
     m_inspector = new MappingInspector(m_doc, m_undo, m_tabs);
-    m_inspector->setObjectName(u"mappingInspector"_s);
     m_settings = new SettingsInspector(m_doc, m_undo, m_tabs);
-    m_settings->setObjectName(u"settingsInspector"_s);
     m_preview = new YamlPreview(m_doc, m_tabs);
-    m_preview->setObjectName(u"preview"_s);
     m_tabs->addTab(m_inspector, tr("&Mapping"));
     m_tabs->addTab(m_settings, tr("&Broker && client"));
     m_tabs->addTab(m_preview, tr("&YAML"));

@@ -52,7 +52,6 @@ MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoS
     , m_editor(new ConfigEditor(document, undoStack, this))
     , m_healthTimer(new QTimer(this))
 {
-    setObjectName(u"mapPage"_s);
     QLayout* bar = createBar();
     // The mappings take most of the width (their topics whole); the discovered topics are trees
     // in a panel beside them that folds away when the mappings need more.

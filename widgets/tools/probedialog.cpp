@@ -83,7 +83,6 @@ ProbeDialog::ProbeDialog(QWidget* parent)
     m_sweep->setObjectName(u"sweep"_s);
     m_start->setObjectName(u"startButton"_s);
     m_stop->setObjectName(u"stopButton"_s);
-    m_steps->setObjectName(u"steps"_s);
     m_sweepResult->setObjectName(u"sweepResult"_s);
 
     auto* top = new QHBoxLayout;
