@@ -90,6 +90,7 @@ MainWindow::MainWindow(QWidget* parent)
     , m_problemStatus(new QLabel(this))
 {
     setObjectName(u"mainWindow"_s);
+    m_undo->setObjectName(u"undoStack"_s);
     setAcceptDrops(true); // files dropped anywhere open where they belong (mainwindowfiles.cpp)
     // The topics' figures are read by eye: four times a second, not at every drain (a view repaints
     // and re-measures its rows at every change of them).

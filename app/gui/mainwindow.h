@@ -31,17 +31,13 @@ public:
     ~MainWindow() override;
 
     ConfigDocument* document() const { return m_document; }
-    QUndoStack* undoStack() const { return m_undo; }
     ConfigEditor* configEditor() const { return m_configEditor; }
     ConfigFileController* files() const { return m_files; }
     LiveSession* session() const { return m_session; }
     DiscoverPage* discoverPage() const { return m_discover; }
-    MapPage* mapPage() const { return m_map; }
     MeasurePage* measurePage() const { return m_measurePage; }
     MeasureSession* measure() const { return m_measure; }
-    ReportsPage* reportsPage() const { return m_reports; }
     LinksPage* linksPage() const { return m_links; }
-    ExperimentPage* experimentPage() const { return m_experiments; }
     WatchSession* watch() const { return m_watch; }
     QTabWidget* pages() const { return m_pages; }
 

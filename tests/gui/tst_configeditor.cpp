@@ -16,6 +16,7 @@
 #include "widgets/map/optionform.h"
 #include "widgets/map/settingsinspector.h"
 #include "widgets/map/yamlpreview.h"
+#include "windowparts.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -32,6 +33,9 @@
 #include <QUndoStack>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
+using namespace WindowParts;
 
 namespace {
 QByteArray readFile(const QString& path)
@@ -86,6 +90,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ConfigEditor* editor = w.configEditor();
+        MappingInspector* inspector = only<MappingInspector>(*editor);
         QCOMPARE(visibleRows(editor), 2);
         QVERIFY(!w.isWindowModified());
 
@@ -93,17 +98,17 @@ private slots:
         QTableView* table = editor->table();
         const QModelIndex first = table->model()->index(0, MappingModel::RosTopicColumn);
         QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualRect(first).center());
-        QCOMPARE(editor->inspector()->rosTopicEdit()->text(), u"/ping/primitive"_s);
+        QCOMPARE(named<QLineEdit>(*inspector, u"ros_topic"_s)->text(), u"/ping/primitive"_s);
 
         // Edit the MQTT topic and the QoS in the inspector.
-        typeInto(editor->inspector()->mqttTopicEdit(), u"pingpong/edited"_s);
-        auto* qos = qobject_cast<QLineEdit*>(
-            editor->inspector()->form(Direction::Ros2Mqtt)->editor(u"advanced.mqtt.qos"_s));
+        typeInto(named<QLineEdit>(*inspector, u"mqtt_topic"_s), u"pingpong/edited"_s);
+        auto* qos
+            = qobject_cast<QLineEdit*>(inspector->form(Direction::Ros2Mqtt)->editor(u"advanced.mqtt.qos"_s));
         QVERIFY(qos);
         typeInto(qos, u"1"_s);
         QCOMPARE(w.document()->mapping(0).mqttTopic(), u"pingpong/edited"_s);
         QCOMPARE(w.document()->mapping(0).value(u"advanced.mqtt.qos"_s), u"1"_s);
-        QCOMPARE(w.undoStack()->count(), 2);
+        QCOMPARE(undoStack(w)->count(), 2);
         QVERIFY(w.isWindowModified());
 
         // Undo both, redo both, through the Edit menu.
@@ -112,12 +117,12 @@ private slots:
         undo->trigger();
         QVERIFY(!w.document()->mapping(0).isSet(u"advanced.mqtt.qos"_s));
         QCOMPARE(qos->text(), QString());
-        w.undoStack()->undo();
+        undoStack(w)->undo();
         QCOMPARE(w.document()->mapping(0).mqttTopic(), u"pingpong/primitive"_s);
-        QCOMPARE(editor->inspector()->mqttTopicEdit()->text(), u"pingpong/primitive"_s);
+        QCOMPARE(named<QLineEdit>(*inspector, u"mqtt_topic"_s)->text(), u"pingpong/primitive"_s);
         QVERIFY(!w.isWindowModified()); // back to what is on disk
-        w.undoStack()->redo();
-        w.undoStack()->redo();
+        undoStack(w)->redo();
+        undoStack(w)->redo();
         QCOMPARE(w.document()->mapping(0).mqttTopic(), u"pingpong/edited"_s);
         QCOMPARE(qos->text(), u"1"_s);
 
@@ -126,7 +131,7 @@ private slots:
         QVERIFY(save);
         save->trigger();
         QVERIFY(!w.isWindowModified());
-        QVERIFY(w.undoStack()->isClean());
+        QVERIFY(undoStack(w)->isClean());
         const QByteArray saved = readFile(path);
         QCOMPARE(commentLines(saved), commentLines(original));
         QVERIFY(saved.contains("    version: *tls_1_2\n"));
@@ -149,13 +154,15 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ConfigEditor* editor = w.configEditor();
+        MappingInspector* inspector = only<MappingInspector>(*editor);
         ProblemModel* problems = editor->problems()->model();
         QCOMPARE(problems->errorCount(), 0);
         // The whole chain the table shows (filter over icons over mappings) stays consistent.
         QAbstractItemModelTester tableTester(editor->table()->model(),
                                              QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QAbstractItemModelTester problemTester(editor->problems()->view()->model(),
-                                               QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QAbstractItemModelTester problemTester(
+            named<QTreeView>(*editor->problems(), u"problemsView"_s)->model(),
+            QAbstractItemModelTester::FailureReportingMode::QtTest);
 
         // Editing a topic in the table itself: a wildcard in a published topic is an error.
         QTableView* table = editor->table();
@@ -171,22 +178,22 @@ private slots:
         // The delegate commits on the next turn of the event loop.
         QTRY_COMPARE(w.document()->mapping(0).mqttTopic(), u"pingpong/#"_s);
         QCOMPARE(problems->errorCount(), 1);
-        QCOMPARE(w.undoStack()->count(), 1);
+        QCOMPARE(undoStack(w)->count(), 1);
         QCOMPARE(mqtt.siblingAtColumn(0).data(Qt::DecorationRole).isNull(), false);
 
         // Activating the problem selects the mapping and focuses the field.
         table->clearSelection();
-        QTreeView* view = editor->problems()->view();
+        QTreeView* view = named<QTreeView>(*editor->problems(), u"problemsView"_s);
         view->setCurrentIndex(view->model()->index(0, 0));
         emit view->activated(view->model()->index(0, 0));
         QCOMPARE(editor->selectedIds(), QList<quint64> {w.document()->mapping(0).id});
-        QVERIFY(editor->inspector()->mqttTopicEdit()->hasFocus());
-        QVERIFY(editor->inspector()->findChild<QLabel*>(u"problems"_s)->text().contains(u"wildcard"_s));
+        QVERIFY(named<QLineEdit>(*inspector, u"mqtt_topic"_s)->hasFocus());
+        QVERIFY(inspector->findChild<QLabel*>(u"problems"_s)->text().contains(u"wildcard"_s));
 
         // "With problems" shows just that mapping.
-        editor->filterProxy()->setOnlyProblems(true);
+        named<MappingFilterProxy>(*editor, u"mappingFilterProxy"_s)->setOnlyProblems(true);
         QCOMPARE(visibleRows(editor), 1);
-        editor->filterProxy()->setOnlyProblems(false);
+        named<MappingFilterProxy>(*editor, u"mappingFilterProxy"_s)->setOnlyProblems(false);
         QTest::keyClicks(editor->filterEdit(), u"pong/ros"_s);
         QCOMPARE(visibleRows(editor), 1);
         editor->filterEdit()->clear();
@@ -200,31 +207,32 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ConfigEditor* editor = w.configEditor();
+        MappingInspector* inspector = only<MappingInspector>(*editor);
         ConfigDocument* doc = w.document();
 
         // Insert adds a mapping and puts the cursor on its ROS topic.
         editor->table()->setFocus();
         QTest::keyClick(editor->table(), Qt::Key_Insert);
         QCOMPARE(doc->mappingCount(), 5);
-        QVERIFY(editor->inspector()->rosTopicEdit()->hasFocus());
-        QTest::keyClicks(editor->inspector()->rosTopicEdit(), u"/lidar/points"_s);
-        QTest::keyClick(editor->inspector()->rosTopicEdit(), Qt::Key_Tab);
+        QVERIFY(named<QLineEdit>(*inspector, u"ros_topic"_s)->hasFocus());
+        QTest::keyClicks(named<QLineEdit>(*inspector, u"ros_topic"_s), u"/lidar/points"_s);
+        QTest::keyClick(named<QLineEdit>(*inspector, u"ros_topic"_s), Qt::Key_Tab);
         QCOMPARE(doc->mapping(4).rosTopic(), u"/lidar/points"_s);
 
         // Select the two ros2mqtt mappings and set QoS 2 on both in one step.
         editor->selectMappings({doc->mapping(0).id, doc->mapping(1).id});
-        QCOMPARE(editor->inspector()->mappings().size(), 2);
-        QVERIFY(!editor->inspector()->rosTopicEdit()->isEnabled());
-        const int before = w.undoStack()->count();
-        auto* qos = qobject_cast<QLineEdit*>(
-            editor->inspector()->form(Direction::Ros2Mqtt)->editor(u"advanced.mqtt.qos"_s));
+        QCOMPARE(inspector->mappings().size(), 2);
+        QVERIFY(!named<QLineEdit>(*inspector, u"ros_topic"_s)->isEnabled());
+        const int before = undoStack(w)->count();
+        auto* qos
+            = qobject_cast<QLineEdit*>(inspector->form(Direction::Ros2Mqtt)->editor(u"advanced.mqtt.qos"_s));
         QCOMPARE(qos->placeholderText(), u"default: 0"_s);
         typeInto(qos, u"2"_s);
         QCOMPARE(doc->mapping(0).value(u"advanced.mqtt.qos"_s), u"2"_s);
         QCOMPARE(doc->mapping(1).value(u"advanced.mqtt.qos"_s), u"2"_s);
-        QCOMPARE(w.undoStack()->count(), before + 1);
+        QCOMPARE(undoStack(w)->count(), before + 1);
         auto* retained = qobject_cast<QComboBox*>(
-            editor->inspector()->form(Direction::Ros2Mqtt)->editor(u"advanced.mqtt.retained"_s));
+            inspector->form(Direction::Ros2Mqtt)->editor(u"advanced.mqtt.retained"_s));
         retained->setCurrentIndex(retained->findData(u"true"_s));
         emit retained->activated(retained->currentIndex());
         QCOMPARE(doc->mapping(1).value(u"advanced.mqtt.retained"_s), u"true"_s);
@@ -233,23 +241,23 @@ private slots:
         editor->table()->setFocus();
         QTest::keyClick(editor->table(), Qt::Key_Delete);
         QCOMPARE(doc->mappingCount(), 3);
-        w.undoStack()->undo();
+        undoStack(w)->undo();
         QCOMPARE(doc->mappingCount(), 5);
         QCOMPARE(doc->mapping(0).rosTopic(), u"/ping/ros"_s);
         QCOMPARE(doc->mapping(1).rosTopic(), u"/ping/primitive"_s);
 
         // Broker settings edit through their own form.
-        editor->settings()->focusField(OptionScope::Broker, u"port"_s);
-        auto* port
-            = qobject_cast<QLineEdit*>(editor->settings()->form(OptionScope::Broker)->editor(u"port"_s));
+        only<SettingsInspector>(*editor)->focusField(OptionScope::Broker, u"port"_s);
+        auto* port = qobject_cast<QLineEdit*>(
+            only<SettingsInspector>(*editor)->form(OptionScope::Broker)->editor(u"port"_s));
         typeInto(port, u"8883"_s);
         QCOMPARE(doc->config().broker.values.text(u"port"_s), u"8883"_s);
 
         // The preview shows the ROS 2 layout on request.
-        editor->preview()->setLayout(ConfigLayout::Ros2);
-        editor->preview()->refreshNow();
-        QVERIFY(editor->preview()->text().contains(u"ros__parameters:"_s));
-        QVERIFY(editor->preview()->text().contains(u"/lidar/points:"_s));
+        only<YamlPreview>(*editor)->setLayout(ConfigLayout::Ros2);
+        only<YamlPreview>(*editor)->refreshNow();
+        QVERIFY(only<YamlPreview>(*editor)->text().contains(u"ros__parameters:"_s));
+        QVERIFY(only<YamlPreview>(*editor)->text().contains(u"/lidar/points:"_s));
     }
 
     void unreadableFilesAreReportedAndNothingIsLost()

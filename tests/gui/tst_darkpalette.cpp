@@ -3,12 +3,14 @@
 // while they are shown.
 #include "app/gui/mainwindow.h"
 #include "latency/latencyseriesset.h"
+#include "viewhelpers.h"
 #include "widgets/common/chartstyle.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/theme.h"
 #include "widgets/map/mappage.h"
 #include "widgets/map/yamlpreview.h"
+#include "windowparts.h"
 
 #include <QAbstractAxis>
 #include <QApplication>
@@ -19,6 +21,8 @@
 #include <QTest>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using namespace WindowParts;
 
 namespace {
 QPalette darkPalette()
@@ -112,7 +116,7 @@ private slots:
     void theYamlPreviewFollowsThePalette()
     {
         MainWindow w;
-        YamlPreview* preview = w.mapPage()->findChild<YamlPreview*>();
+        YamlPreview* preview = mapPage(w)->findChild<YamlPreview*>();
         QVERIFY(preview);
         QVERIFY(!preview->isDarkHighlighting());
         QApplication::setPalette(darkPalette());

@@ -33,6 +33,8 @@
 #include <QTreeView>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
 
 namespace {
 QStringList fieldNames(QAbstractItemModel* model, const QModelIndex& parent = {})
@@ -139,13 +141,14 @@ private slots:
     {
         MainWindow w;
         DiscoverPage* page = w.discoverPage();
+        DetailPane* detail = only<DetailPane>(*page);
         page->setRosMasterUri(m_servers.rosMasterUri());
         page->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QAbstractItemModelTester treeTester(page->mqttView()->model(),
                                             QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QAbstractItemModelTester rosTester(page->rosView()->model(),
+        QAbstractItemModelTester rosTester(named<QTableView>(*page, u"rosTopics"_s)->model(),
                                            QAbstractItemModelTester::FailureReportingMode::QtTest);
 
         // Both sides fill up.
@@ -153,49 +156,51 @@ private slots:
             ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole)
                 .isValid(),
             15000);
-        QTRY_VERIFY_WITH_TIMEOUT(
-            ViewHelpers::find(page->rosView()->model(), u"/vehicle/pose"_s, TopicTableModel::TopicRole)
-                .isValid(),
-            20000);
-        QVERIFY(page->mqttStatus()->text().contains(u"connected"_s));
-        QVERIFY(page->rosStatus()->text().contains(u"reachable"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(ViewHelpers::find(named<QTableView>(*page, u"rosTopics"_s)->model(),
+                                                   u"/vehicle/pose"_s, TopicTableModel::TopicRole)
+                                     .isValid(),
+                                 20000);
+        QVERIFY(named<QLabel>(*page, u"mqttState"_s)->text().contains(u"connected"_s));
+        QVERIFY(named<QLabel>(*page, u"rosState"_s)->text().contains(u"reachable"_s));
 
         // The MQTT topic that mqtt_client announced decodes into fields.
         const QModelIndex pose
             = ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole);
         page->mqttView()->setCurrentIndex(pose);
-        QTRY_VERIFY(page->detail()->title()->text().contains(u"geometry_msgs/PoseStamped"_s));
-        const QStringList fields = fieldNames(page->detail()->fieldsView()->model());
+        QTRY_VERIFY(detail->title()->text().contains(u"geometry_msgs/PoseStamped"_s));
+        const QStringList fields = fieldNames(named<QTreeView>(*detail, u"fields"_s)->model());
         QVERIFY2(fields.contains(u"pose.position.x"_s), qPrintable(fields.join(u' ')));
 
         // So does one that mqtt_client for ROS 2 announced; a type without a definition says so.
         page->mqttView()->setCurrentIndex(
             ViewHelpers::find(page->mqttView()->model(), u"ros2/chatter"_s, MqttTopicTree::FullTopicRole));
-        QTRY_VERIFY_WITH_TIMEOUT(page->detail()->title()->text().contains(
+        QTRY_VERIFY_WITH_TIMEOUT(detail->title()->text().contains(
                                      u"ROS 2 type std_msgs/msg/String (announced by mqtt_client), stamped"_s),
                                  10000);
-        QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model()).contains(u"data"_s));
-        QCOMPARE(page->detail()->fieldsView()->model()->index(0, 1).data().toString(), u"hello ros2"_s);
+        QTRY_VERIFY(fieldNames(named<QTreeView>(*detail, u"fields"_s)->model()).contains(u"data"_s));
+        QCOMPARE(named<QTreeView>(*detail, u"fields"_s)->model()->index(0, 1).data().toString(),
+                 u"hello ros2"_s);
         page->mqttView()->setCurrentIndex(
             ViewHelpers::find(page->mqttView()->model(), u"ros2/state"_s, MqttTopicTree::FullTopicRole));
-        QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model())
+        QTRY_VERIFY(fieldNames(named<QTreeView>(*detail, u"fields"_s)->model())
                         .join(u' ')
                         .contains(u"No ROS 2 definition of my_pkg/msg/State"_s));
-        QVERIFY(page->mqttCounters()->text().contains(u"1 topic(s) of an unknown ROS 2 type"_s));
+        QVERIFY(
+            named<LiveText>(*page, u"counters"_s)->text().contains(u"1 topic(s) of an unknown ROS 2 type"_s));
 
         // JSON shows as fields too.
         page->mqttView()->setCurrentIndex(ViewHelpers::find(page->mqttView()->model(), u"fleet/car1/status"_s,
                                                             MqttTopicTree::FullTopicRole));
-        QTRY_VERIFY(fieldNames(page->detail()->fieldsView()->model()).contains(u"speed"_s));
-        QVERIFY(page->detail()->payloadView()->toPlainText().contains(u"\"gear\": \"D\""_s));
+        QTRY_VERIFY(fieldNames(named<QTreeView>(*detail, u"fields"_s)->model()).contains(u"speed"_s));
+        QVERIFY(named<QPlainTextEdit>(*detail, u"payload"_s)->toPlainText().contains(u"\"gear\": \"D\""_s));
         // A hostile one shows a bounded number of fields, and says that the rest is not shown.
         QElapsedTimer shown;
         shown.start();
         page->mqttView()->setCurrentIndex(ViewHelpers::find(
             page->mqttView()->model(), u"fleet/hostile/json"_s, MqttTopicTree::FullTopicRole));
-        QTRY_VERIFY_WITH_TIMEOUT(fieldNames(page->detail()->fieldsView()->model()).contains(u"k0.[0]"_s),
-                                 20000);
-        const QStringList wideFields = fieldNames(page->detail()->fieldsView()->model());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            fieldNames(named<QTreeView>(*detail, u"fields"_s)->model()).contains(u"k0.[0]"_s), 20000);
+        const QStringList wideFields = fieldNames(named<QTreeView>(*detail, u"fields"_s)->model());
         QVERIFY2(wideFields.size() <= 5000 + 100, qPrintable(QString::number(wideFields.size())));
         QVERIFY(wideFields.contains(u"…"_s));
         QVERIFY2(shown.elapsed() < 15000, qPrintable(QString::number(shown.elapsed())));
@@ -211,16 +216,17 @@ private slots:
         page->mqttFilter()->clear();
 
         // Monitoring a ROS topic subscribes to it; its last message decodes.
-        QAbstractItemModel* ros = page->rosView()->model();
+        QAbstractItemModel* ros = named<QTableView>(*page, u"rosTopics"_s)->model();
         const QModelIndex rosPose = ViewHelpers::find(ros, u"/vehicle/pose"_s, TopicTableModel::TopicRole);
         QVERIFY(ros->setData(rosPose.siblingAtColumn(TopicTableModel::MonitorColumn), Qt::Checked,
                              Qt::CheckStateRole));
-        page->rosView()->setCurrentIndex(rosPose);
+        named<QTableView>(*page, u"rosTopics"_s)->setCurrentIndex(rosPose);
         QTRY_VERIFY_WITH_TIMEOUT(
-            fieldNames(page->detail()->fieldsView()->model()).contains(u"pose.position.x"_s), 30000);
+            fieldNames(named<QTreeView>(*detail, u"fields"_s)->model()).contains(u"pose.position.x"_s),
+            30000);
         QTRY_VERIFY_WITH_TIMEOUT(
             !rosPose.siblingAtColumn(TopicTableModel::RateColumn).data().toString().isEmpty(), 10000);
-        QVERIFY(page->detail()->title()->text().contains(u"base_link"_s)
+        QVERIFY(detail->title()->text().contains(u"base_link"_s)
                 == false); // fields, not the title, hold values
 
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
@@ -263,9 +269,11 @@ private slots:
         f.close();
         MainWindow w;
         DiscoverPage* page = w.discoverPage();
+        DetailPane* detail = only<DetailPane>(*page);
         page->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
         w.show();
-        QTRY_VERIFY_WITH_TIMEOUT(page->mqttStatus()->text().contains(u"connected"_s), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(named<QLabel>(*page, u"mqttState"_s)->text().contains(u"connected"_s),
+                                 10000);
         run(u"mosquitto_pub"_s, pubArgs() + QStringList {u"-t"_s, u"lidar/raw"_s, u"-f"_s, file});
         QTRY_VERIFY_WITH_TIMEOUT(
             ViewHelpers::find(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole)
@@ -273,9 +281,11 @@ private slots:
             10000);
         page->mqttView()->setCurrentIndex(
             ViewHelpers::find(page->mqttView()->model(), u"lidar/raw"_s, MqttTopicTree::FullTopicRole));
-        QTRY_VERIFY(page->detail()->payloadNote()->text().contains(u"showing the first"_s));
+        QTRY_VERIFY(named<QLabel>(*detail, u"payloadNote"_s)->text().contains(u"showing the first"_s));
         // Hex, because the bytes are no text; the stored payload is whole.
-        QVERIFY(page->detail()->payloadView()->toPlainText().startsWith(u"00000000  00 83 06 89"_s));
+        QVERIFY(named<QPlainTextEdit>(*detail, u"payload"_s)
+                    ->toPlainText()
+                    .startsWith(u"00000000  00 83 06 89"_s));
         QCOMPARE(w.session()->mqttTopics()->history(u"lidar/raw"_s)->back().payload.size(), 2 * 1024 * 1024);
     }
 

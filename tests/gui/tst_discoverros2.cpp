@@ -21,6 +21,7 @@
 #include "widgets/discover/discoverpage.h"
 #include "widgets/map/configeditor.h"
 #include "widgets/map/mappage.h"
+#include "windowparts.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -37,6 +38,9 @@
 #include <signal.h>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
+using namespace WindowParts;
 
 namespace {
 /// The displayed text of a column of the table, row by row.
@@ -58,7 +62,7 @@ int rowOf(const QTableView* view, const QString& topic)
 QStringList fields(const DetailPane* detail)
 {
     QStringList out;
-    const QAbstractItemModel* m = detail->fieldsView()->model();
+    const QAbstractItemModel* m = named<QTreeView>(*detail, u"fields"_s)->model();
     for (int r = 0; r < m->rowCount(); ++r)
         out << m->index(r, 0).data().toString() + u" = "_s + m->index(r, 1).data().toString();
     return out;
@@ -101,6 +105,7 @@ private slots:
 
         LiveSession session;
         DiscoverPage page(DiscoverPage::partsOf(&session));
+        QTabWidget* rosTabs = named<QTabWidget>(page, u"rosTabs"_s);
         page.resize(1280, 760);
         page.show();
         QCOMPARE(page.rosGraphs(), DiscoverPage::RosGraphs::Ros1);
@@ -109,23 +114,24 @@ private slots:
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
         QVERIFY(session.isRos2Running());
         QCOMPARE(page.rosGraphsBox()->currentIndex(), 1);
-        QCOMPARE(page.rosTabs()->currentIndex(), 1);
-        QVERIFY(!page.rosTabs()->tabBar()->isVisible());
+        QCOMPARE(rosTabs->currentIndex(), 1);
+        QVERIFY(!rosTabs->tabBar()->isVisible());
 
-        QTableView* view = page.ros2View();
+        QTableView* view = named<QTableView>(page, u"ros2Topics"_s);
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/chatter"_s) >= 0 && rowOf(view, u"/blob"_s) >= 0, 15000);
         const int chatter = rowOf(view, u"/chatter"_s);
         QCOMPARE(column(view, TopicTableModel::TypeColumn).at(chatter), u"std_msgs/msg/String"_s);
         QCOMPARE(column(view, TopicTableModel::PublishersColumn).at(chatter), u"1"_s);
-        QTRY_VERIFY_WITH_TIMEOUT(page.ros2Status()->text().contains(u"topics 2, nodes 1"_s), 5000);
-        QVERIFY(page.rosStatus()->text().contains(u"ROS 2 only"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(named<QLabel>(page, u"ros2State"_s)->text().contains(u"topics 2, nodes 1"_s),
+                                 5000);
+        QVERIFY(named<QLabel>(page, u"rosState"_s)->text().contains(u"ROS 2 only"_s));
 
         // Monitor, select: decoded fields, QoS and node in the title
         TopicTableModel* model = session.ros2Topics();
         QVERIFY(model->setData(model->index(model->rowOf(u"/chatter"_s), TopicTableModel::MonitorColumn),
                                Qt::Checked, Qt::CheckStateRole));
         view->setCurrentIndex(view->model()->index(chatter, TopicTableModel::TopicColumn));
-        DetailPane* detail = page.detail();
+        DetailPane* detail = only<DetailPane>(page);
         QCOMPARE(detail->topic(), u"/chatter"_s);
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
         QVERIFY2(detail->title()->text().contains(u"/lab/talker (reliable, volatile)"_s),
@@ -141,18 +147,18 @@ private slots:
             fields(detail).join(u'|').contains(u"No ROS 2 definition of bridgescope_test/msg/Opaque"_s),
             10000);
         QVERIFY2(fields(detail).join(u'|').contains(u"268 byte"_s), qPrintable(fields(detail).join(u'|')));
-        QVERIFY(!detail->payloadView()->toPlainText().isEmpty());
+        QVERIFY(!named<QPlainTextEdit>(*detail, u"payload"_s)->toPlainText().isEmpty());
         QVERIFY2(detail->title()->text().contains(u"best effort"_s), qPrintable(detail->title()->text()));
 
         // both graphs: two tabs; ROS 1 only: the domain is left and the ROS 2 table empties
         page.setRosGraphs(DiscoverPage::RosGraphs::Both);
-        QVERIFY(page.rosTabs()->tabBar()->isVisible());
-        QVERIFY(page.rosTabs()->isTabVisible(0) && page.rosTabs()->isTabVisible(1));
+        QVERIFY(rosTabs->tabBar()->isVisible());
+        QVERIFY(rosTabs->isTabVisible(0) && rosTabs->isTabVisible(1));
         QVERIFY(session.isRos2Running());
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros1);
         QVERIFY(!session.isRos2Running());
         QCOMPARE(model->rowCount(), 0);
-        QVERIFY(!page.rosTabs()->isTabVisible(1));
+        QVERIFY(!rosTabs->isTabVisible(1));
     }
 
     // A hostile node: a String claiming 4 GiB, and an unreadable ros_discovery_info. The pane says
@@ -167,23 +173,25 @@ private slots:
         QVERIFY2(evil.waitFor(u"ready"_s), qPrintable(evil.errors()));
         LiveSession session;
         DiscoverPage page(DiscoverPage::partsOf(&session));
+        QLabel* ros2State = named<QLabel>(page, u"ros2State"_s);
         page.resize(1280, 760);
         page.show();
         page.setRos2Options({m_domain, true});
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
-        QTableView* view = page.ros2View();
+        QTableView* view = named<QTableView>(page, u"ros2Topics"_s);
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/huge"_s) >= 0 && rowOf(view, u"/fine"_s) >= 0, 15000);
-        QTRY_VERIFY2_WITH_TIMEOUT(page.ros2Status()->text().contains(u"unreadable node announcements 1"_s),
-                                  qPrintable(page.ros2Status()->text()), 10000);
+        QTRY_VERIFY2_WITH_TIMEOUT(ros2State->text().contains(u"unreadable node announcements 1"_s),
+                                  qPrintable(ros2State->text()), 10000);
 
         TopicTableModel* model = session.ros2Topics();
         for (const QString& topic : {u"/huge"_s, u"/fine"_s})
             QVERIFY(model->setData(model->index(model->rowOf(topic), TopicTableModel::MonitorColumn),
                                    Qt::Checked, Qt::CheckStateRole));
         view->setCurrentIndex(view->model()->index(rowOf(view, u"/huge"_s), TopicTableModel::TopicColumn));
-        DetailPane* detail = page.detail();
+        DetailPane* detail = only<DetailPane>(page);
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"needs 4294967280 more bytes"_s), 10000);
-        QVERIFY(!detail->payloadView()->toPlainText().isEmpty()); // the bytes, shown raw
+        QVERIFY(
+            !named<QPlainTextEdit>(*detail, u"payload"_s)->toPlainText().isEmpty()); // the bytes, shown raw
         // the well-formed topic of the same node decodes, and both keep their rates
         view->setCurrentIndex(view->model()->index(rowOf(view, u"/fine"_s), TopicTableModel::TopicColumn));
         QTRY_VERIFY_WITH_TIMEOUT(fields(detail).join(u'|').contains(u"data = hello "_s), 10000);
@@ -202,20 +210,21 @@ private slots:
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         LiveSession session;
         DiscoverPage page(DiscoverPage::partsOf(&session));
+        QLabel* ros2State = named<QLabel>(page, u"ros2State"_s);
         page.resize(1280, 760);
         page.show();
         page.setRos2Options({domain, true});
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);
-        QTableView* view = page.ros2View();
+        QTableView* view = named<QTableView>(page, u"ros2Topics"_s);
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/steady"_s) >= 0, 15000);
         RtpsCorpus::send(domain, RtpsCorpus::load(u"fastdds"_s), 500);
         QTest::qWait(500); // the stimulus: the child has half a second to choke on the corpus
-        QVERIFY(!page.ros2Status()->text().contains(u"restarted"_s));
+        QVERIFY(!ros2State->text().contains(u"restarted"_s));
         QVERIFY(DdsChild::kill(SIGSEGV) > 0);
-        QTRY_VERIFY2_WITH_TIMEOUT(page.ros2Status()->text().contains(u"restarted"_s),
-                                  qPrintable(page.ros2Status()->text()), 20000);
+        QTRY_VERIFY2_WITH_TIMEOUT(ros2State->text().contains(u"restarted"_s), qPrintable(ros2State->text()),
+                                  20000);
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(view, u"/steady"_s) >= 0 && session.ros2()->graph().participants > 0, 60000);
-        QVERIFY(page.ros2Status()->text().contains(u"restarted"_s)); // and it stays said
+        QVERIFY(ros2State->text().contains(u"restarted"_s)); // and it stays said
     }
 
     void mapRos2Config()
@@ -255,7 +264,7 @@ private slots:
         w.discoverPage()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
         w.discoverPage()->setRos2Options({m_domain, true});
         w.discoverPage()->setRosGraphs(DiscoverPage::RosGraphs::Ros2);
-        MapPage* page = w.mapPage();
+        MapPage* page = mapPage(w);
         w.show();
         QTRY_VERIFY_WITH_TIMEOUT(w.session()->mqtt()->state() == MqttConnection::State::Connected, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(w.session()->ros2Topics()->rowOf(u"/odom_text"_s) >= 0
@@ -269,7 +278,7 @@ private slots:
         // auto QoS matches; the publisher is there, no bridge carries it to the broker
         QCOMPARE(healthOf(page, u"/odom_text"_s), int(MappingHealth::NoBridge));
         // the Map's ROS list is the ROS 2 graph now
-        QAbstractItemModel* rosList = page->rosView()->model();
+        QAbstractItemModel* rosList = named<QTreeView>(*page, u"mapRosTopics"_s)->model();
         QVERIFY(ViewHelpers::find(rosList, u"/scan_text"_s, TopicTableModel::TopicRole).isValid());
         // At 1280x800 the ROS 2 types keep their last segment, in the bold of bridged topics too.
         w.resize(1280, 800);
@@ -278,8 +287,10 @@ private slots:
         // the columns fit themselves 100 ms after a change: wait for the fit
         for (int column : {int(TopicTree::TopicColumn), int(TopicTree::TypeColumn)}) {
             QString problem;
-            QTRY_VERIFY2_WITH_TIMEOUT((problem = treeNamesShownProblem(page->rosView(), column, 3)).isEmpty(),
-                                      qPrintable(problem), 5000);
+            QTRY_VERIFY2_WITH_TIMEOUT(
+                (problem = treeNamesShownProblem(named<QTreeView>(*page, u"mapRosTopics"_s), column, 3))
+                    .isEmpty(),
+                qPrintable(problem), 5000);
         }
         // the node leaves: its topics are missing from the graph
         talker.terminate();

@@ -8,10 +8,12 @@
 #include "exportcheck.h"
 #include "latency/latencyseriesset.h"
 #include "resulttext.h"
+#include "viewhelpers.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/experiment/experimentpage.h"
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
+#include "windowparts.h"
 
 #include <algorithm>
 #include <QDir>
@@ -33,6 +35,8 @@
 #include <QTextDocumentFragment>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using namespace WindowParts;
 
 class TestExperimentPage : public QObject
 {
@@ -91,27 +95,18 @@ class TestExperimentPage : public QObject
                  u"qos"_s);
     }
 
-    /// One of the page's widgets, by its object name (the page has it from its start).
-    template<typename W> static W* part(const ExperimentPage& page, const QString& name)
-    {
-        W* w = page.findChild<W*>(name);
-        if (!w)
-            qFatal("the Experiments page has no %s named %s", W::staticMetaObject.className(),
-                   qPrintable(name));
-        return w;
-    }
     static QTableWidget* cellGrid(const ExperimentPage& page)
     {
-        return part<QTableWidget>(page, u"cellGrid"_s);
+        return named<QTableWidget>(page, u"cellGrid"_s);
     }
-    static QLabel* planStatus(const ExperimentPage& page) { return part<QLabel>(page, u"planStatus"_s); }
+    static QLabel* planStatus(const ExperimentPage& page) { return named<QLabel>(page, u"planStatus"_s); }
     static QPushButton* runButton(const ExperimentPage& page)
     {
-        return part<QPushButton>(page, u"runButton"_s);
+        return named<QPushButton>(page, u"runButton"_s);
     }
     static QPushButton* resumeButton(const ExperimentPage& page)
     {
-        return part<QPushButton>(page, u"resumeButton"_s);
+        return named<QPushButton>(page, u"resumeButton"_s);
     }
 
     static QString stateOf(const ExperimentPage& page, int row)
@@ -173,7 +168,7 @@ private slots:
     {
         MainWindow window;
         window.show();
-        ExperimentPage& page = *window.experimentPage();
+        ExperimentPage& page = *experimentPage(window);
         page.setProgram(QStringLiteral(BRIDGESCOPE_BINARY));
         window.pages()->setCurrentWidget(&page);
         page.setPlanText(u"name: page test\nsamples: 40\nwarmup: 3\ndefaults: {payload: 20000}\n"
@@ -185,8 +180,8 @@ private slots:
         QVERIFY2(page.run(false, &error), qPrintable(error));
         QVERIFY(page.isRunning());
         QVERIFY(!runButton(page)->isEnabled());
-        QVERIFY(part<QPushButton>(page, u"stopButton"_s)->isEnabled());
-        QVERIFY(part<QPlainTextEdit>(page, u"planEditor"_s)->isReadOnly());
+        QVERIFY(named<QPushButton>(page, u"stopButton"_s)->isEnabled());
+        QVERIFY(named<QPlainTextEdit>(page, u"planEditor"_s)->isReadOnly());
         // The first cell shows as running while it records, with its totals coming in.
         QVERIFY(QTest::qWaitFor([&] { return stateOf(page, 0) == u"running"_s; }, 60000));
         QVERIFY(QTest::qWaitFor(
@@ -199,9 +194,9 @@ private slots:
         QCOMPARE(finished.first().first().toInt(), 0);
         QCOMPARE(stateOf(page, 0), u"complete"_s);
         QCOMPARE(stateOf(page, 1), u"complete"_s);
-        QCOMPARE(part<QProgressBar>(page, u"experimentProgress"_s)->value(), 2);
+        QCOMPARE(named<QProgressBar>(page, u"experimentProgress"_s)->value(), 2);
         QVERIFY(cellGrid(page)->item(0, 0)->background().color().green() > 0); // coloured by state
-        QVERIFY(!part<QPlainTextEdit>(page, u"experimentLog"_s)->toPlainText().isEmpty());
+        QVERIFY(!named<QPlainTextEdit>(page, u"experimentLog"_s)->toPlainText().isEmpty());
 
         // The report comes from the folder, and the live totals are those in the run files.
         QVERIFY(QTest::qWaitFor([&] { return page.report().has_value(); }, 30000));
@@ -216,16 +211,17 @@ private slots:
             QVERIFY2(std::abs(live->stats().mean - c.total->stats().mean) < 1e-3,
                      qPrintable(u"%1 vs %2"_s.arg(live->stats().mean).arg(c.total->stats().mean)));
         }
-        QCOMPARE(part<EcdfChart>(page, u"totalsChart"_s)->series().size(), 2);
+        QCOMPARE(named<EcdfChart>(page, u"totalsChart"_s)->series().size(), 2);
         QVERIFY(cellGrid(page)->item(1, page.stateColumn() + 2)->text().toDouble() > 0); // median
-        const QString reportText = part<QTextBrowser>(page, u"reportView"_s)->toPlainText();
+        const QString reportText = named<QTextBrowser>(page, u"reportView"_s)->toPlainText();
         QVERIFY2(reportText.contains(u"qos"_s), qPrintable(reportText));
 
         // A finished cell opens on the Measure page.
         emit cellGrid(page)->cellActivated(1, 0);
         QCOMPARE(window.pages()->currentWidget(), window.measurePage());
-        QVERIFY2(window.measurePage()->runBar()->statusLabel()->text().contains(u"002-qos-1"_s),
-                 qPrintable(window.measurePage()->runBar()->statusLabel()->text()));
+        QVERIFY2(
+            named<QLabel>(*window.measurePage()->runBar(), u"runStatus"_s)->text().contains(u"002-qos-1"_s),
+            qPrintable(named<QLabel>(*window.measurePage()->runBar(), u"runStatus"_s)->text()));
         window.measurePage()->runBar()->backToLive();
         window.pages()->setCurrentWidget(&page);
 

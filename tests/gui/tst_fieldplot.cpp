@@ -8,6 +8,7 @@
 #include "session/fieldplotter.h"
 #include "session/livesession.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 #include "widgets/discover/detailpane.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/discover/fieldplotchart.h"
@@ -29,6 +30,8 @@
 #include <QWheelEvent>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
 
 class TestFieldPlot : public QObject
 {
@@ -46,8 +49,9 @@ private:
             page.show();
             detail()->findChild<QTabWidget*>()->setCurrentWidget(chart()->parentWidget());
         }
-        DetailPane* detail() { return page.detail(); }
-        FieldPlotChart* chart() { return page.detail()->plotChart(); }
+        DetailPane* detail() { return only<DetailPane>(page); }
+        FieldPlotChart* chart() { return named<FieldPlotChart>(*detail(), u"plotChart"_s); }
+        FieldPlotter* plotter() { return named<FieldPlotter>(*detail(), u"fieldPlotter"_s); }
         LiveSession session;
         DiscoverPage page {DiscoverPage::partsOf(&session)};
     };
@@ -100,10 +104,10 @@ private slots:
         Page p(m_servers.brokerUrl());
         auto pub = publisher();
         QTRY_VERIFY(pub->state() == MqttConnection::State::Connected);
-        QVERIFY(p.detail()->plotter()->add({PlotField::Source::Mqtt, u"zoom/a"_s, {u"v"_s}}));
+        QVERIFY(p.plotter()->add({PlotField::Source::Mqtt, u"zoom/a"_s, {u"v"_s}}));
         publishRun(*pub, u"zoom/a"_s, 0, 40);
         FieldPlotChart* chart = p.chart();
-        QValueAxis* x = chart->timeAxis();
+        QValueAxis* x = named<QValueAxis>(*chart->chart(), u"timeAxis"_s);
         QTRY_VERIFY(!chart->runs(0).isEmpty() && chart->runs(0).last()->count() >= 30);
         QVERIFY(chart->isFollowing());
         const double left = x->min();
@@ -120,7 +124,7 @@ private slots:
         // Not following: new values do not move what the user looks at.
         const double zoomedLeft = x->min();
         publishRun(*pub, u"zoom/a"_s, 40, 5);
-        QTRY_VERIFY(p.detail()->plotter()->series()[0].points.size() >= 44);
+        QTRY_VERIFY(p.plotter()->series()[0].points.size() >= 44);
         QCOMPARE(x->min(), zoomedLeft);
 
         // A drag of a quarter of the plot's width to the right shows a quarter earlier.
@@ -147,21 +151,21 @@ private slots:
         QTest::mouseDClick(chart->viewport(), Qt::LeftButton, {}, inPlot(chart, 0.3));
         QVERIFY(chart->isFollowing());
         QVERIFY(chart->chart()->title().isEmpty());
-        const double newest = p.detail()->plotter()->series()[0].points.last().x();
-        QVERIFY2(x->max() >= newest && x->min() <= p.detail()->plotter()->series()[0].points.first().x(),
+        const double newest = p.plotter()->series()[0].points.last().x();
+        QVERIFY2(x->max() >= newest && x->min() <= p.plotter()->series()[0].points.first().x(),
                  qPrintable(u"%1 .. %2, newest %3"_s.arg(x->min()).arg(x->max()).arg(newest)));
         // Zoomed into the first seconds, new values come after what is shown; Home shows them.
         wheel(chart, inPlot(chart, 0.05), 10);
         QVERIFY(!chart->isFollowing());
-        const auto newestPoint = [&p] { return p.detail()->plotter()->series()[0].points.last().x(); };
+        const auto newestPoint = [&p] { return p.plotter()->series()[0].points.last().x(); };
         publishRun(*pub, u"zoom/a"_s, 45, 5);
-        QTRY_VERIFY(p.detail()->plotter()->series()[0].points.last().y() == 49);
+        QTRY_VERIFY(p.plotter()->series()[0].points.last().y() == 49);
         QVERIFY2(x->max() < newestPoint(), qPrintable(u"%1, newest %2"_s.arg(x->max()).arg(newestPoint())));
         QTest::keyClick(chart, Qt::Key_Home);
         QVERIFY(chart->isFollowing());
         QVERIFY2(x->max() >= newestPoint(), qPrintable(u"%1, newest %2"_s.arg(x->max()).arg(newestPoint())));
         publishRun(*pub, u"zoom/a"_s, 50, 5);
-        QTRY_VERIFY(p.detail()->plotter()->series()[0].points.last().y() == 54);
+        QTRY_VERIFY(p.plotter()->series()[0].points.last().y() == 54);
         QTRY_VERIFY2(x->max() >= newestPoint(),
                      qPrintable(u"%1, newest %2"_s.arg(x->max()).arg(newestPoint())));
         QCOMPARE(chart->runs(0).last()->points().last().y(), 54.0);
@@ -175,14 +179,14 @@ private slots:
         Page p(m_servers.brokerUrl());
         auto pub = publisher();
         QTRY_VERIFY(pub->state() == MqttConnection::State::Connected);
-        const FieldPlotter* plotter = p.detail()->plotter();
-        QVERIFY(p.detail()->plotter()->add({PlotField::Source::Mqtt, u"gap/a"_s, {u"v"_s}}));
+        const FieldPlotter* plotter = p.plotter();
+        QVERIFY(p.plotter()->add({PlotField::Source::Mqtt, u"gap/a"_s, {u"v"_s}}));
         publishRun(*pub, u"gap/a"_s, 0, 20);
         QTRY_COMPARE(plotter->series()[0].points.size(), 20);
         const double lastBefore = plotter->series()[0].points.last().x();
         // The outage: nothing for three seconds, while the plot's time goes on (it shows so).
         QTRY_VERIFY_WITH_TIMEOUT(plotter->nowSeconds() > lastBefore + 3, 10000);
-        QTRY_VERIFY(p.chart()->timeAxis()->max() > lastBefore + 2.5);
+        QTRY_VERIFY(named<QValueAxis>(*p.chart()->chart(), u"timeAxis"_s)->max() > lastBefore + 2.5);
         publishRun(*pub, u"gap/a"_s, 20, 20);
         QTRY_COMPARE(plotter->series()[0].points.size(), 40);
 
@@ -210,7 +214,7 @@ private slots:
             p.page.grab().save(dir + u"/field-plot-gap.png"_s);
 
         // The buffer: the user's seconds drop what is older (the run before the outage).
-        QSpinBox* seconds = p.detail()->plotSeconds();
+        QSpinBox* seconds = named<QSpinBox>(*p.detail(), u"plotSeconds"_s);
         QCOMPARE(seconds->value(), FieldPlotter::kDefaultSeconds);
         seconds->setValue(FieldPlotter::kMinSeconds);
         QCOMPARE(plotter->bufferSeconds(), FieldPlotter::kMinSeconds);
@@ -226,9 +230,9 @@ private slots:
         Page p(m_servers.brokerUrl());
         auto pub = publisher();
         QTRY_VERIFY(pub->state() == MqttConnection::State::Connected);
-        FieldPlotter* plotter = p.detail()->plotter();
+        FieldPlotter* plotter = p.plotter();
         QVERIFY(plotter->add({PlotField::Source::Mqtt, u"buffer/a"_s, {u"v"_s}}));
-        QSpinBox* points = p.detail()->plotPoints();
+        QSpinBox* points = named<QSpinBox>(*p.detail(), u"plotPoints"_s);
         QCOMPARE(points->maximum(), FieldPlotter::kMaxPointsPerField);
         QVERIFY(qint64(FieldPlotter::kMaxPointsPerField) * FieldPlotter::kMaxFields * qint64(sizeof(QPointF))
                 <= FieldPlotter::kMemoryBudgetBytes);
@@ -260,10 +264,9 @@ private slots:
         Page p(m_servers.brokerUrl());
         const QString base = u"lab/site_a/vehicle_01/sensors/environment/temperature/temp-sensor-%1"_s;
         for (int i = 0; i < FieldPlotter::kMaxFields; ++i)
-            QVERIFY(p.detail()->plotter()->add(
-                {PlotField::Source::Mqtt, base.arg(i), {u"temperature_celsius"_s}}));
+            QVERIFY(p.plotter()->add({PlotField::Source::Mqtt, base.arg(i), {u"temperature_celsius"_s}}));
         FieldPlotChart* chart = p.chart();
-        QListWidget* legend = p.detail()->plotList();
+        QListWidget* legend = named<QListWidget>(*p.detail(), u"plotList"_s);
         QTRY_COMPARE(legend->count(), FieldPlotter::kMaxFields);
         QTRY_COMPARE(chart->lines().size(), FieldPlotter::kMaxFields);
         for (int i = 0; i < legend->count(); ++i) {

@@ -16,25 +16,27 @@
 #include "syntheticrun.h"
 #include "testservers.h"
 #include "viewaudit.h"
+#include "viewhelpers.h"
+#include "watch/linkmodel.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/discover/discoverpage.h"
-#include "watch/linkmodel.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 
 #include <QComboBox>
+#include <QFile>
 #include <QFont>
 #include <QLabel>
-#include <QTableView>
-#include <QFile>
 #include <QProcess>
 #include <QSettings>
+#include <QTableView>
 #include <QTabWidget>
-#include <QTreeWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
 
 namespace {
 /// The demo lab as `bridgescope --demo [--ros 2]` starts it: the window first, the lab behind it.
@@ -225,7 +227,8 @@ private slots:
         QVERIFY(startDemo(*w, lab, 1));
         auto* graphs = w->discoverPage()->rosGraphsBox();
         QVERIFY2(!graphs->currentText().contains(u"ROS 2"_s), qPrintable(graphs->currentText()));
-        QTRY_VERIFY_WITH_TIMEOUT(w->discoverPage()->rosView()->model()->rowCount() >= 19, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            named<QTableView>(*w->discoverPage(), u"rosTopics"_s)->model()->rowCount() >= 19, 20000);
         QTRY_VERIFY_WITH_TIMEOUT(w->measure()->engine().samples() >= 20, 30000);
         const QString problems = pageProblems(*w);
         QVERIFY2(problems.isEmpty(), qPrintable(problems));
@@ -254,13 +257,13 @@ private slots:
         const bool subscribed
             = QTest::qWaitFor([&] { return masterSubscriptions(servers.rosMasterUri()) > before; }, 6000);
         QVERIFY2(!subscribed, "opening a config subscribed to its ROS topics");
-        QCOMPARE(w->linksPage()->eventModel()->rowCount(), 0);
+        QCOMPARE(named<EventLogModel>(*w->linksPage(), u"eventModel"_s)->rowCount(), 0);
 
         // Watched, then the lab's broker goes away and comes back: the links are unknown while
         // the window cannot see the broker, nothing is blamed on a bridge, and they come back.
         LinksPage* links = w->linksPage();
         w->pages()->setCurrentWidget(links);
-        QTreeWidget* list = links->configList();
+        QTreeWidget* list = named<QTreeWidget>(*links, u"watchConfigs"_s);
         QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 5000);
         list->setFocus();
         list->setCurrentItem(list->topLevelItem(0));
@@ -268,18 +271,18 @@ private slots:
         QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Checked);
         QTRY_VERIFY_WITH_TIMEOUT(masterSubscriptions(servers.rosMasterUri()) > before, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(links->linkModel()->rowCount() > 0, 5000);
-        const int events = links->eventModel()->rowCount();
+        const int events = named<EventLogModel>(*links, u"eventModel"_s)->rowCount();
         const quint16 port = servers.mosquittoPort();
         servers.stopMosquitto();
-        QTRY_VERIFY2_WITH_TIMEOUT(links->summaryLabel()->text().contains(u"unknown"_s),
-                                  qPrintable(links->summaryLabel()->text()), 20000);
+        QTRY_VERIFY2_WITH_TIMEOUT(named<QLabel>(*links, u"linkSummary"_s)->text().contains(u"unknown"_s),
+                                  qPrintable(named<QLabel>(*links, u"linkSummary"_s)->text()), 20000);
         QVERIFY2(servers.startMosquittoOnPort(port), qPrintable(servers.errorString()));
-        QTRY_VERIFY2_WITH_TIMEOUT(!links->summaryLabel()->text().contains(u"unknown"_s),
-                                  qPrintable(links->summaryLabel()->text()), 30000);
-        for (int r = events; r < links->eventModel()->rowCount(); ++r) {
+        QTRY_VERIFY2_WITH_TIMEOUT(!named<QLabel>(*links, u"linkSummary"_s)->text().contains(u"unknown"_s),
+                                  qPrintable(named<QLabel>(*links, u"linkSummary"_s)->text()), 30000);
+        for (int r = events; r < named<EventLogModel>(*links, u"eventModel"_s)->rowCount(); ++r) {
             QStringList cells;
-            for (int c = 0; c < links->eventModel()->columnCount(); ++c)
-                cells << links->eventModel()->index(r, c).data().toString();
+            for (int c = 0; c < named<EventLogModel>(*links, u"eventModel"_s)->columnCount(); ++c)
+                cells << named<EventLogModel>(*links, u"eventModel"_s)->index(r, c).data().toString();
             const QString row = cells.join(u" | "_s);
             QVERIFY2(!row.contains(u"stall"_s) && !row.contains(u"carries nothing"_s) && !row.contains(u"lost"_s),
                      qPrintable(row));

@@ -15,6 +15,7 @@
 #include "session/measuresession.h"
 #include "signalprocess.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 #include "watch/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
@@ -44,6 +45,7 @@
 #include <QValueAxis>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
 
 namespace {
 /// A config of `plain` ROS → MQTT mappings /PREFIX/tN and `in` MQTT → ROS ones /PREFIX/inN.
@@ -111,16 +113,17 @@ private slots:
     void rulesAreEditedAndChecked()
     {
         RulesEditor editor(WatchRules {});
-        QVERIFY(editor.applyButton()->isEnabled());
-        QVERIFY(editor.textEdit()->toPlainText().contains(u"stall_periods: 5"_s));
-        editor.textEdit()->setPlainText(u"defaults:\n  stall_seconds: soon\n"_s);
-        QVERIFY(!editor.applyButton()->isEnabled());
-        QVERIFY2(editor.statusLabel()->text().contains(u"line 2"_s),
-                 qPrintable(editor.statusLabel()->text()));
+        QVERIFY(named<QPushButton>(editor, u"rulesApply"_s)->isEnabled());
+        QVERIFY(named<QPlainTextEdit>(editor, u"rulesText"_s)->toPlainText().contains(u"stall_periods: 5"_s));
+        named<QPlainTextEdit>(editor, u"rulesText"_s)->setPlainText(u"defaults:\n  stall_seconds: soon\n"_s);
+        QVERIFY(!named<QPushButton>(editor, u"rulesApply"_s)->isEnabled());
+        QVERIFY2(named<QLabel>(editor, u"rulesStatus"_s)->text().contains(u"line 2"_s),
+                 qPrintable(named<QLabel>(editor, u"rulesStatus"_s)->text()));
         QVERIFY(!editor.rules());
-        editor.textEdit()->setPlainText(u"defaults:\n  stall_seconds: 2\nlinks:\n  - match: \"/a/*\"\n"
-                                        u"    latency_p99_ms: {warning: 5, alert: 9}\n"_s);
-        QVERIFY(editor.applyButton()->isEnabled());
+        named<QPlainTextEdit>(editor, u"rulesText"_s)
+            ->setPlainText(u"defaults:\n  stall_seconds: 2\nlinks:\n  - match: \"/a/*\"\n"
+                           u"    latency_p99_ms: {warning: 5, alert: 9}\n"_s);
+        QVERIFY(named<QPushButton>(editor, u"rulesApply"_s)->isEnabled());
         QVERIFY(editor.rules());
         QCOMPARE(editor.rules()->defaults[LinkRules::StallSeconds].alert, 2.0);
         QCOMPARE(editor.rules()->forLink({u"/a/b"_s, u"a/b"_s, {}, {}})[LinkRules::LatencyP99Ms].warning,
@@ -178,33 +181,34 @@ private slots:
         window.discoverPage()->setRosMasterUri(servers.rosMasterUri());
         window.discoverPage()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
         LinksPage* page = window.linksPage();
+        QLabel* plan = named<QLabel>(*page, u"watchPlan"_s);
         window.pages()->setCurrentWidget(page);
         window.resize(1280, 800);
         window.show();
         QString error;
         QVERIFY2(window.files()->openFile(config, &error), qPrintable(error));
-        QTreeWidget* list = page->configList();
+        QTreeWidget* list = named<QTreeWidget>(*page, u"watchConfigs"_s);
         QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 5000);
         // What watching it would subscribe to, before it does: 40 links, 40 ROS topics (none is on a
         // ROS 2 domain), 40 MQTT topics, and the topics themselves.
         QCOMPARE(rowTexts(list->topLevelItem(0)),
                  QStringList({u"quiet"_s, u"40"_s, u"40"_s, u"0"_s, u"40"_s}));
         QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Unchecked);
-        QVERIFY2(
-            page->planLabel()->text().contains(u"quiet is not watched. Watching it would subscribe to 40 ROS "
-                                               u"topics at the master, 0 on the ROS 2 domain and 40 MQTT "
-                                               u"topics (links: 40)."_s),
-            qPrintable(page->planLabel()->text()));
-        QVERIFY(page->planLabel()->toolTip().contains(u"  /quiet/t29"_s));
-        QVERIFY(page->planLabel()->toolTip().contains(u"  quiet/in9"_s));
+        QVERIFY2(plan->text().contains(u"quiet is not watched. Watching it would subscribe to 40 ROS "
+                                       u"topics at the master, 0 on the ROS 2 domain and 40 MQTT "
+                                       u"topics (links: 40)."_s),
+                 qPrintable(plan->text()));
+        QVERIFY(plan->toolTip().contains(u"  /quiet/t29"_s));
+        QVERIFY(plan->toolTip().contains(u"  quiet/in9"_s));
         // Not a sleep to synchronise: the time in which a watching window subscribed and raised a stall.
         QTest::qWait(5000);
         QCOMPARE(masterTopics(servers.rosMasterUri(), u"quiet"_s).known, QStringList {u"/quiet/t0"_s});
         QVERIFY(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed.isEmpty());
         QCOMPARE(page->linkModel()->rowCount(), 0);
-        QCOMPARE(page->eventModel()->rowCount(), 0);
+        QCOMPARE(named<EventLogModel>(*page, u"eventModel"_s)->rowCount(), 0);
         QVERIFY(window.watch()->monitor()->openEvents().isEmpty());
-        QCOMPARE(page->summaryLabel()->text(), u"No links watched: check a config below to watch it."_s);
+        QCOMPARE(named<QLabel>(*page, u"linkSummary"_s)->text(),
+                 u"No links watched: check a config below to watch it."_s);
 
         // Turned on from the keyboard: exactly the ROS topics shown are subscribed at the master.
         QStringList shown;
@@ -219,12 +223,12 @@ private slots:
         QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Checked);
         QCOMPARE(page->linkModel()->rowCount(), 40);
         QTRY_COMPARE_WITH_TIMEOUT(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed, shown, 15000);
-        QVERIFY(page->planLabel()->text().startsWith(
-            u"quiet is watched (links: 40): subscribed to 40 ROS topics"_s));
+        QVERIFY(plan->text().startsWith(u"quiet is watched (links: 40): subscribed to 40 ROS topics"_s));
         // A watched config raises events, and says where they came from.
-        QTRY_VERIFY_WITH_TIMEOUT(page->eventModel()->rowCount() > 0, 15000);
-        QCOMPARE(page->eventModel()->eventAt(0).configFile, QFileInfo(config).absoluteFilePath());
-        QCOMPARE(page->eventModel()->eventAt(0).client, u"quiet_bridge"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(named<EventLogModel>(*page, u"eventModel"_s)->rowCount() > 0, 15000);
+        QCOMPARE(named<EventLogModel>(*page, u"eventModel"_s)->eventAt(0).configFile,
+                 QFileInfo(config).absoluteFilePath());
+        QCOMPARE(named<EventLogModel>(*page, u"eventModel"_s)->eventAt(0).client, u"quiet_bridge"_s);
 
         // Off: every subscription goes, and the master forgets the topics no one else has.
         QTest::keyClick(list, Qt::Key_Space);
@@ -248,13 +252,13 @@ private slots:
                                         WatchSession::kWindowLinkLimit + 1, 0);
         QVERIFY2(window.files()->openFile(big, &error), qPrintable(error));
         QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 10000);
-        QVERIFY2(page->planLabel()->text().contains(u"That is more than the 2000 links a window watches."_s),
-                 qPrintable(page->planLabel()->text()));
+        QVERIFY2(plan->text().contains(u"That is more than the 2000 links a window watches."_s),
+                 qPrintable(plan->text()));
         QVERIFY(!page->setWatched(u"big"_s, true, &error));
         QCOMPARE(error,
                  u"Watching big refused: 2001 links would be watched; the limit is 2000 links per "
                  u"window: nothing was subscribed"_s);
-        QCOMPARE(page->planLabel()->text(), error);
+        QCOMPARE(plan->text(), error);
         QCOMPARE(list->topLevelItem(0)->checkState(0), Qt::Unchecked);
         QCOMPARE(page->linkModel()->rowCount(), 0);
         QTest::qWait(
@@ -278,6 +282,7 @@ private slots:
         window.discoverPage()->connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
         window.files()->openFile(lab.vehicleConfigPath());
         LinksPage* page = window.linksPage();
+        QLabel* summary = named<QLabel>(*page, u"linkSummary"_s);
         QVERIFY2(page->addConfigFiles({lab.cloudConfigPath()}, &error, true), qPrintable(error));
         // The Map page's config is listed a second after it opened, and watched once checked.
         QTRY_VERIFY_WITH_TIMEOUT(page->setWatched(lab.vehicleConfigPath(), true), 10000);
@@ -305,7 +310,7 @@ private slots:
             return true;
         };
         QTRY_VERIFY_WITH_TIMEOUT(healthy(), 30000);
-        QVERIFY(page->summaryLabel()->text().contains(u"4 ok"_s));
+        QVERIFY(summary->text().contains(u"4 ok"_s));
         // Every link has its latency, from the pipeline's stamps: in both directions, stamped or not.
         const auto allHaveLatency = [&] {
             for (int r = 0; r < model->rowCount(); ++r) {
@@ -319,13 +324,14 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(allHaveLatency(), 10000);
 
         // Filtering and the detail pane.
-        QTableView* table = page->linkView();
+        QTableView* table = named<QTableView>(*page, u"linkTable"_s);
         page->findChild<QLineEdit*>(u"linkFilter"_s)->setText(u"object_list"_s);
         QCOMPARE(table->model()->rowCount(), 2);
         page->findChild<QLineEdit*>(u"linkFilter"_s)->clear();
         QCOMPARE(table->model()->rowCount(), 4);
         table->setCurrentIndex(table->model()->index(0, 0));
-        QTRY_VERIFY_WITH_TIMEOUT(page->detailLabel()->text().contains(u"messages at the source"_s), 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            named<LiveText>(*page, u"linkDetail"_s)->text().contains(u"messages at the source"_s), 3000);
         // Sorted by destination rate, numerically.
         table->sortByColumn(LinkModel::DestinationRateColumn, Qt::DescendingOrder);
         const double first = table->model()
@@ -369,7 +375,7 @@ private slots:
             return n;
         };
         QTRY_VERIFY_WITH_TIMEOUT(alerts() >= 1, 10000);
-        EventLogModel* log = page->eventModel();
+        EventLogModel* log = named<EventLogModel>(*page, u"eventModel"_s);
         QTRY_VERIFY_WITH_TIMEOUT(log->rowCount() >= 2, 5000);
         bool bridgeDown = false;
         bool stall = false;
@@ -407,7 +413,7 @@ private slots:
         QString problem;
         QTRY_VERIFY2_WITH_TIMEOUT((problem = cutProblem()).isEmpty(), qPrintable(problem),
                                   4 * ColumnFitter::kGrowMs);
-        QVERIFY(page->summaryLabel()->text().contains(u"alert"_s));
+        QVERIFY(summary->text().contains(u"alert"_s));
         QVERIFY2(noted(window.measure()->stopRecording(), &error), qPrintable(error));
         const std::optional<RunData> run = noted(RunFile::read(runPath), &error);
         QVERIFY2(run, qPrintable(error));

@@ -15,6 +15,7 @@
 #include "session/livesession.h"
 #include "topics/topictablemodel.h"
 #include "viewaudit.h"
+#include "viewhelpers.h"
 #include "widgets/common/nameheader.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/map/configeditor.h"
@@ -23,6 +24,7 @@
 #include "widgets/map/mappage.h"
 #include "widgets/map/mappinginspector.h"
 #include "widgets/map/yamlpreview.h"
+#include "windowparts.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -39,6 +41,9 @@
 #include <QTreeView>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
+using namespace WindowParts;
 
 namespace {
 /// What of the mapping table is cut: a title, an options or health cell; empty when nothing.
@@ -112,7 +117,7 @@ QString fieldsCut(const QWidget* widget)
 /// The words above a read-only file's text (that it is read-only, why and where), or null.
 const QLabel* readOnlyNote(const ConfigEditor* editor)
 {
-    for (const QLabel* label : editor->preview()->findChildren<QLabel*>())
+    for (const QLabel* label : only<YamlPreview>(*editor)->findChildren<QLabel*>())
         if (label->isVisible() && label->text().contains(u"Read-only"_s))
             return label;
     return nullptr;
@@ -151,7 +156,7 @@ private slots:
         // The paper's vehicle config: the suite's long stamp topics.
         QVERIFY(w->files()->openFile(QStringLiteral(BRIDGESCOPE_SOURCE_DIR "/resources/examples/paper_vehicle.yaml")));
         w->resize(1280, 800);
-        w->pages()->setCurrentWidget(w->mapPage());
+        w->pages()->setCurrentWidget(mapPage(*w));
         w->show();
         QVERIFY(QTest::qWaitForWindowExposed(w));
         QTRY_COMPARE(w->size(), QSize(1280, 800));
@@ -170,7 +175,7 @@ private slots:
     {
         QFETCH(int, tab);
         MainWindow* w = m_window.get();
-        MapPage* page = w->mapPage();
+        MapPage* page = mapPage(*w);
         w->files()->activate(tab);
         QTableView* table = page->editor()->table();
         const QAbstractItemModel* model = table->model();
@@ -183,7 +188,7 @@ private slots:
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
             table->selectRow(0);
             // figures grow once a second: the picture once none is cut
-            (void)QTest::qWaitFor([&w] { return ViewAudit::elidedFiguresIn(w->mapPage()).isEmpty(); }, 3000);
+            (void)QTest::qWaitFor([&w] { return ViewAudit::elidedFiguresIn(mapPage(*w)).isEmpty(); }, 3000);
             w->grab().save(dir + u"/map-1280x800-%1.png"_s.arg(tab));
         }
         for (int column : {int(MappingModel::RosTopicColumn), int(MappingModel::MqttTopicColumn)}) {
@@ -198,12 +203,12 @@ private slots:
         QVERIFY2(labelCut(hint).isEmpty(), qPrintable(labelCut(hint)));
         // The inspector of the first mapping: its fields whole.
         table->selectRow(0);
-        MappingInspector* inspector = page->editor()->inspector();
-        QTRY_VERIFY(!inspector->rosTopicEdit()->text().isEmpty());
+        MappingInspector* inspector = only<MappingInspector>(*page->editor());
+        QTRY_VERIFY(!named<QLineEdit>(*inspector, u"ros_topic"_s)->text().isEmpty());
         const QString fields = settled([&] { return fieldsCut(inspector); });
         QVERIFY2(fields.isEmpty(), qPrintable(fields));
         // The discovered ROS topics: a namespace tree, every row's segment whole.
-        auto* ros = qobject_cast<QTreeView*>(page->rosView());
+        auto* ros = qobject_cast<QTreeView*>(named<QTreeView>(*page, u"mapRosTopics"_s));
         QVERIFY2(ros, "the Map's ROS topics are no namespace tree");
         const QString names = settled([&] { return treeNamesShownProblem(ros, 0, 19); });
         QVERIFY2(names.isEmpty(), qPrintable(names));
@@ -214,11 +219,11 @@ private slots:
     void theTopicsPanelFoldsAway()
     {
         MainWindow* w = m_window.get();
-        MapPage* page = w->mapPage();
+        MapPage* page = mapPage(*w);
         w->files()->activate(0);
         QTableView* table = page->editor()->table();
         const int before = table->width();
-        page->topicsPanelAction()->setChecked(false);
+        named<QAction>(*page, u"topicsPanelAction"_s)->setChecked(false);
         QTRY_VERIFY(table->width() > before + 200);
         const QString problem = settled([&] {
             for (int c : {int(MappingModel::RosTopicColumn), int(MappingModel::MqttTopicColumn)}) {
@@ -231,7 +236,7 @@ private slots:
             }
             return cutInMappingTable(table);
         });
-        page->topicsPanelAction()->setChecked(true);
+        named<QAction>(*page, u"topicsPanelAction"_s)->setChecked(true);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
@@ -250,14 +255,14 @@ private slots:
         f.close();
         QVERIFY(w->files()->openFile(path));
         QVERIFY(w->document()->filePath().endsWith(u"broken.yaml"_s));
-        auto* tabs = w->mapPage()->findChild<ConfigTabs*>();
+        auto* tabs = mapPage(*w)->findChild<ConfigTabs*>();
         QVERIFY(tabs);
         QVERIFY2(tabs->tabText(tabs->currentIndex()).contains(u"read-only"_s),
                  qPrintable(tabs->tabText(tabs->currentIndex())));
-        ConfigEditor* editor = w->mapPage()->editor();
+        ConfigEditor* editor = mapPage(*w)->editor();
         auto* inspectorTabs = editor->findChild<QTabWidget*>(u"inspectorTabs"_s);
-        QCOMPARE(inspectorTabs->currentWidget(), static_cast<QWidget*>(editor->preview()));
-        QTRY_COMPARE(editor->preview()->text(), QString::fromUtf8(text));
+        QCOMPARE(inspectorTabs->currentWidget(), static_cast<QWidget*>(only<YamlPreview>(*editor)));
+        QTRY_COMPARE(only<YamlPreview>(*editor)->text(), QString::fromUtf8(text));
         // Why, where, and that it is read-only, above the text, whole.
         const QLabel* noteLabel = readOnlyNote(editor);
         QVERIFY(noteLabel);
@@ -266,7 +271,7 @@ private slots:
         const QString noteCut = settled([&] { return labelCut(noteLabel); });
         QVERIFY2(noteCut.isEmpty(), qPrintable(noteCut));
         // The line is marked and the cursor is on it.
-        auto* view = editor->preview()->findChild<QPlainTextEdit*>(u"previewText"_s);
+        auto* view = only<YamlPreview>(*editor)->findChild<QPlainTextEdit*>(u"previewText"_s);
         const QList<QTextEdit::ExtraSelection> marks = view->extraSelections();
         QVERIFY(!marks.isEmpty());
         const int line = marks.first().cursor.block().blockNumber();
@@ -298,13 +303,13 @@ private slots:
             f.write(block);
         f.close();
         QVERIFY(w->files()->openFile(path));
-        ConfigEditor* editor = w->mapPage()->editor();
+        ConfigEditor* editor = mapPage(*w)->editor();
         QTRY_VERIFY(readOnlyNote(editor) && readOnlyNote(editor)->text().contains(u" MB"_s));
         const QString note = readOnlyNote(editor)->text();
         QVERIFY2(note.contains(u"The file is 17 MB, the limit is 8 MB."_s), qPrintable(note));
         QVERIFY2(note.contains(u"Only the first 1.0 MB of 17.3 MB are shown."_s), qPrintable(note));
         QVERIFY(!note.contains(u"8388608"_s));
-        const QString shown = editor->preview()->text();
+        const QString shown = only<YamlPreview>(*editor)->text();
         QVERIFY(shown.startsWith(u"bridge:\n  ros2mqtt:\n"_s));
         QVERIFY2(shown.size() <= 1024 * 1024, qPrintable(QString::number(shown.size())));
         QVERIFY(w->files()->closeConfig(w->files()->currentIndex()));

@@ -17,6 +17,7 @@
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/map/mappage.h"
+#include "windowparts.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -33,6 +34,7 @@
 
 using namespace Qt::StringLiterals;
 using namespace ViewHelpers;
+using namespace WindowParts;
 
 namespace {
 QStringList mappings(const ConfigDocument& doc)
@@ -113,31 +115,32 @@ private slots:
         MainWindow w;
         w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
         w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        MapPage* page = w.mapPage();
+        MapPage* page = mapPage(w);
         w.pages()->setCurrentWidget(page);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QAbstractItemModelTester mappingTester(page->editor()->table()->model(),
                                                QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QAbstractItemModelTester rosTester(page->rosView()->model(),
+        QTreeView* rosView = named<QTreeView>(*page, u"mapRosTopics"_s);
+        QTreeView* mqttView = named<QTreeView>(*page, u"mapMqttTopics"_s);
+        QAbstractItemModelTester rosTester(rosView->model(),
                                            QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QAbstractItemModelTester mqttTester(page->mqttView()->model(),
+        QAbstractItemModelTester mqttTester(mqttView->model(),
                                             QAbstractItemModelTester::FailureReportingMode::QtTest);
         QTRY_VERIFY_WITH_TIMEOUT(
-            find(page->rosView()->model(), u"/vehicle/speed"_s, TopicTableModel::TopicRole).isValid()
-                && find(page->rosView()->model(), u"/lidar/points"_s, TopicTableModel::TopicRole).isValid(),
+            find(rosView->model(), u"/vehicle/speed"_s, TopicTableModel::TopicRole).isValid()
+                && find(rosView->model(), u"/lidar/points"_s, TopicTableModel::TopicRole).isValid(),
             30000);
         QTRY_VERIFY_WITH_TIMEOUT(
-            find(page->mqttView()->model(), u"cloud/objects"_s, MqttTopicTree::FullTopicRole).isValid()
-                && find(page->mqttView()->model(), u"plant/temperature"_s, MqttTopicTree::FullTopicRole)
-                       .isValid(),
+            find(mqttView->model(), u"cloud/objects"_s, MqttTopicTree::FullTopicRole).isValid()
+                && find(mqttView->model(), u"plant/temperature"_s, MqttTopicTree::FullTopicRole).isValid(),
             10000);
-        page->mqttView()->expandAll();
+        mqttView->expandAll();
         ConfigDocument* doc = w.document();
-        QUndoStack* undo = w.undoStack();
+        QUndoStack* undo = undoStack(w);
 
-        QAbstractItemView* ros = page->rosView();
-        QAbstractItemView* mqtt = page->mqttView();
+        QAbstractItemView* ros = named<QTreeView>(*page, u"mapRosTopics"_s);
+        QAbstractItemView* mqtt = named<QTreeView>(*page, u"mapMqttTopics"_s);
         QAbstractItemView* table = page->editor()->table();
         auto rosRow = [&](const QString& t) { return find(ros->model(), t, TopicTableModel::TopicRole); };
         auto mqttNode
@@ -154,7 +157,7 @@ private slots:
         dragAndDrop(mqtt, {mqttNode(u"cloud/objects"_s)}, ros, below(ros));
         QCOMPARE(mappings(*doc).last(), u"in /cloud/objects cloud/objects"_s);
         // 4. Several ROS topics onto the mapping table: under the prefix.
-        page->prefixEdit()->setText(u"vehicle"_s);
+        named<QLineEdit>(*page, u"mqttPrefix"_s)->setText(u"vehicle"_s);
         dragAndDrop(ros, {rosRow(u"/lidar/points"_s), rosRow(u"/vehicle/speed"_s)}, table, below(table));
         QCOMPARE(mappings(*doc),
                  (QStringList {u"out /vehicle/speed vehicle/vehicle/speed primitive"_s,
@@ -179,7 +182,7 @@ private slots:
         ros->selectionModel()->select(rosRow(u"/lidar/points"_s),
                                       QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
         mqtt->selectionModel()->clearSelection();
-        page->prefixEdit()->setText(u"kbd"_s);
+        named<QLineEdit>(*page, u"mqttPrefix"_s)->setText(u"kbd"_s);
         page->bridgeToMqttAction()->trigger();
         QCOMPARE(mappings(*doc).last(), u"out /lidar/points kbd/lidar/points"_s);
         ros->selectionModel()->select(rosRow(u"/lidar/points"_s),
@@ -216,20 +219,20 @@ private slots:
         MainWindow w;
         w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
         w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        MapPage* page = w.mapPage();
+        MapPage* page = mapPage(w);
         w.pages()->setCurrentWidget(page);
         w.resize(1280, 800);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QAbstractItemView* ros = page->rosView();
-        QAbstractItemView* mqtt = page->mqttView();
+        QAbstractItemView* ros = named<QTreeView>(*page, u"mapRosTopics"_s);
+        QAbstractItemView* mqtt = named<QTreeView>(*page, u"mapMqttTopics"_s);
         auto rosRow = [&](const QString& t) { return find(ros->model(), t, TopicTableModel::TopicRole); };
         auto mqttNode
             = [&](const QString& t) { return find(mqtt->model(), t, MqttTopicTree::FullTopicRole); };
         QTRY_VERIFY_WITH_TIMEOUT(rosRow(u"/lidar/points"_s).isValid(), 30000);
         QTRY_VERIFY_WITH_TIMEOUT(
             mqttNode(u"site/humidity"_s).isValid() && mqttNode(u"site/temperature"_s).isValid(), 10000);
-        page->mqttView()->expandAll();
+        named<QTreeView>(*page, u"mapMqttTopics"_s)->expandAll();
         ConfigDocument* doc = w.document();
         const auto made = [doc] { return mappings(*doc).replaceInStrings(u" primitive"_s, QString()); };
 
@@ -238,11 +241,11 @@ private slots:
         QCOMPARE(
             made(),
             (QStringList {u"in /site/humidity site/humidity"_s, u"in /site/temperature site/temperature"_s}));
-        w.undoStack()->undo();
+        undoStack(w)->undo();
         // One onto a topic: exactly that topic.
         dragAndDrop(mqtt, {mqttNode(u"site/humidity"_s)}, ros, centre(ros, rosRow(u"/lidar/points"_s)));
         QCOMPARE(made(), QStringList {u"in /lidar/points site/humidity"_s});
-        w.undoStack()->undo();
+        undoStack(w)->undo();
         // Onto a namespace: below it.
         const QModelIndex lidar = find(ros->model(), u"lidar/"_s, Qt::DisplayRole);
         QVERIFY2(lidar.isValid(), "no row for the namespace /lidar/");
@@ -251,7 +254,7 @@ private slots:
                  (QStringList {u"in /lidar/site/humidity site/humidity"_s,
                                u"in /lidar/site/temperature site/temperature"_s}));
         // A namespace dragged onto the MQTT side bridges every topic below it.
-        w.undoStack()->undo();
+        undoStack(w)->undo();
         dragAndDrop(ros, {lidar}, mqtt, centre(mqtt, mqttNode(u"site"_s)));
         QCOMPARE(made(), QStringList {u"out /lidar/points site/lidar/points"_s});
     }
@@ -261,7 +264,7 @@ private slots:
         MainWindow w;
         w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
         w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        MapPage* page = w.mapPage();
+        MapPage* page = mapPage(w);
         w.show();
         QTRY_VERIFY_WITH_TIMEOUT(w.session()->rosTopics()->rowOf(u"/vehicle/speed"_s) >= 0, 30000);
         QTRY_VERIFY_WITH_TIMEOUT(w.session()->mqtt()->state() == MqttConnection::State::Connected, 10000);
@@ -306,7 +309,7 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(w.session()->rosTopics()->rowOf(u"/benchmarking_suite/packets"_s) >= 0,
                                      30000);
             QTest::qWait(2500);
-            page->mqttView()->expandAll();
+            named<QTreeView>(*page, u"mapMqttTopics"_s)->expandAll();
             page->updateHealth();
             w.grab().save(shots + u"/map.png"_s);
             traffic.stop();

@@ -3,8 +3,8 @@
 // and the derived rows pinned, the latency over time beside the ECDF), an ECDF axis that one
 // outlier does not stretch, and chart ticks on round numbers.
 #include "app/gui/mainwindow.h"
-#include "guisession.h"
 #include "demo/demolab.h"
+#include "guisession.h"
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
 #include "latency/latencystatsmodel.h"
@@ -14,6 +14,7 @@
 #include "resulttext.h"
 #include "session/measuresession.h"
 #include "viewaudit.h"
+#include "viewhelpers.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/timelinechart.h"
@@ -36,6 +37,7 @@
 #include <QValueAxis>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
 
 namespace {
 /// One series of values in ms, as the chart reads an engine's.
@@ -101,7 +103,7 @@ private slots:
 
         // Pinned: the total, round trip, one way and clock offset, each row whole in the window.
         // The page refreshes every MeasurePage::kRefreshMs: wait until it shows them with figures.
-        QTableView* summary = page->summaryView();
+        QTableView* summary = named<QTableView>(*page, u"summaryView"_s);
         QTRY_VERIFY_WITH_TIMEOUT(
             summary->model()->rowCount() >= 4
                 && !summary->model()->index(0, LatencyStatsModel::MeanColumn).data().toString().isEmpty(),
@@ -127,14 +129,14 @@ private slots:
         QVERIFY(summary->viewport()->rect().contains(summary->visualRect(mean)));
         QVERIFY(!mean.data().toString().isEmpty());
         // The stage table below holds the stages only, so nothing is shown twice.
-        QTableView* stats = page->statsView();
+        QTableView* stats = named<QTableView>(*page, u"statsView"_s);
         for (int r = 0; r < stats->model()->rowCount(); ++r) {
             const QString id = stats->model()->index(r, 0).data(LatencyStatsModel::SeriesIdRole).toString();
             QCOMPARE(stats->isRowHidden(r), pinned.contains(id));
         }
 
         // The latency over time beside the ECDF, with points once samples came.
-        TimelineChart* timeline = page->timelineChart();
+        TimelineChart* timeline = named<TimelineChart>(*page, u"latencyTimeline"_s);
         QVERIFY(timeline->isVisible());
         QTRY_VERIFY(timeline->pointCount() > 0);
         const QRect chartRect(page->chart()->mapTo(&w, QPoint()), page->chart()->size());
@@ -151,9 +153,12 @@ private slots:
                  qPrintable(drawn.join(u" | ")));
         QVERIFY2(drawn.filter(QRegularExpression(u"^\\d\\d:\\d\\d"_s)).size() >= 2, qPrintable(drawn.join(u" | ")));
         for (const QString& label : numericTexts(timeline))
-            QVERIFY2(isRoundTick(label, timeline->latencyAxis()->max()
-                                            / double(timeline->latencyAxis()->tickCount() - 1)),
-                     qPrintable(label));
+            QVERIFY2(
+                isRoundTick(
+                    label,
+                    named<QValueAxis>(*timeline->chart(), u"latencyAxis"_s)->max()
+                        / double(named<QValueAxis>(*timeline->chart(), u"latencyAxis"_s)->tickCount() - 1)),
+                qPrintable(label));
         if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
             w.grab().save(shots + u"/measure-demo.png"_s);
     }
@@ -213,9 +218,12 @@ private slots:
         TimelineChart chart;
         chart.setTimeline(&timeline);
         QCOMPARE(chart.pointCount(), 3);
-        QVERIFY2(chart.timeAxis()->tickCount() >= 2 && chart.timeAxis()->tickCount() <= 7,
-                 qPrintable(QString::number(chart.timeAxis()->tickCount())));
-        QVERIFY(chart.latencyAxis()->max() >= 30 && chart.latencyAxis()->max() <= 40);
+        QVERIFY2(
+            named<QDateTimeAxis>(*chart.chart(), u"timeAxis"_s)->tickCount() >= 2
+                && named<QDateTimeAxis>(*chart.chart(), u"timeAxis"_s)->tickCount() <= 7,
+            qPrintable(QString::number(named<QDateTimeAxis>(*chart.chart(), u"timeAxis"_s)->tickCount())));
+        QVERIFY(named<QValueAxis>(*chart.chart(), u"latencyAxis"_s)->max() >= 30
+                && named<QValueAxis>(*chart.chart(), u"latencyAxis"_s)->max() <= 40);
     }
 
     void rateChartTicksAreRound()

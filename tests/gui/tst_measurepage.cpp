@@ -114,10 +114,11 @@ private slots:
         MainWindow w;
         w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
         MeasurePage* page = w.measurePage();
+        QTableView* statsView = named<QTableView>(*page, u"statsView"_s);
         MeasureSession* measure = w.measure();
-        QAbstractItemModelTester statsTester(page->statsView()->model());
-        QAbstractItemModelTester pipelineTester(page->pipelineModel());
-        QAbstractItemModelTester seenTester(page->stampTopicsView()->model());
+        QAbstractItemModelTester statsTester(statsView->model());
+        QAbstractItemModelTester pipelineTester(named<PipelineModel>(*page, u"pipelineModel"_s));
+        QAbstractItemModelTester seenTester(named<QListView>(*page, u"stampTopicsView"_s)->model());
         w.resize(1280, 800); // the size of a first start (the README shows it)
         w.show();
         w.pages()->setCurrentWidget(page);
@@ -129,11 +130,11 @@ private slots:
         QVERIFY(!file.isEmpty());
         QString error;
         QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
-        QCOMPARE(page->pipelineModel()->rowCount(), 12);
-        QCOMPARE(page->windowBox()->value(), 600);
-        QVERIFY(page->modeLabel()->text().contains(u"pipeline.yaml"_s));
+        QCOMPARE(named<PipelineModel>(*page, u"pipelineModel"_s)->rowCount(), 12);
+        QCOMPARE(named<QSpinBox>(*page, u"windowBox"_s)->value(), 600);
+        QVERIFY(named<QLabel>(*page, u"modeLabel"_s)->text().contains(u"pipeline.yaml"_s));
         // 11 stages, the total, round trip, one way and clock offset.
-        QAbstractItemModel* table = page->statsView()->model();
+        QAbstractItemModel* table = statsView->model();
         QCOMPARE(table->rowCount(), 15);
 
         auto pub = publish(paperStamps(topics), 400, 3);
@@ -157,7 +158,7 @@ private slots:
         QVERIFY2(std::abs(offset.median - 250.0) < 1.0, qPrintable(QString::number(offset.median)));
         const LatencyStats oneWay = e.series(e.oneWaySeries()).stats();
         QVERIFY2(std::abs(oneWay.mean - 19.15) < 0.5, qPrintable(QString::number(oneWay.mean)));
-        QVERIFY(page->countsLabel()->text().contains(u"400 complete"_s));
+        QVERIFY(named<LiveText>(*page, u"measureCounts"_s)->text().contains(u"400 complete"_s));
 
         // Plot the detection stage and the one-way latency next to the total.
         table->setData(table->index(rowOf(table, u"stage:5"_s), 0), Qt::Checked, Qt::CheckStateRole);
@@ -185,31 +186,31 @@ private slots:
         table->setData(table->index(rowOf(table, u"stage:0"_s), 0), Qt::Unchecked, Qt::CheckStateRole);
         chart->refresh();
 
-        page->logScaleBox()->click();
+        named<QCheckBox>(*page, u"logScaleBox"_s)->click();
         QVERIFY(qobject_cast<QLogValueAxis*>(chart->views().first()->chart()->axes(Qt::Horizontal).first()));
-        page->smallMultiplesBox()->click();
+        named<QCheckBox>(*page, u"smallMultiplesBox"_s)->click();
         QCOMPARE(chart->views().size(), 3);
-        page->smallMultiplesBox()->click();
-        page->logScaleBox()->click();
+        named<QCheckBox>(*page, u"smallMultiplesBox"_s)->click();
+        named<QCheckBox>(*page, u"logScaleBox"_s)->click();
         QCOMPARE(chart->views().size(), 1);
 
         // Pause freezes the table while measuring goes on; resuming shows what came meanwhile.
-        page->statsView()->setFocus();
-        QTest::keyClick(page->statsView(), Qt::Key_P, Qt::ControlModifier);
+        statsView->setFocus();
+        QTest::keyClick(statsView, Qt::Key_P, Qt::ControlModifier);
         QVERIFY(page->pauseAction()->isChecked());
-        QVERIFY(page->countsLabel()->text().contains(u"paused"_s));
+        QVERIFY(named<LiveText>(*page, u"measureCounts"_s)->text().contains(u"paused"_s));
         pub = publish(paperStamps(topics), 100, 4);
         QTRY_VERIFY_WITH_TIMEOUT(e.samples() >= 500, 60000);
         QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"400"_s);
-        QTest::keyClick(page->statsView(), Qt::Key_P, Qt::ControlModifier);
+        QTest::keyClick(statsView, Qt::Key_P, Qt::ControlModifier);
         QTRY_COMPARE_WITH_TIMEOUT(table->index(total, LatencyStatsModel::CountColumn).data().toString(),
                                   u"500"_s, 5000);
         // The window: the last 100 samples only.
-        page->windowBox()->setValue(100);
+        named<QSpinBox>(*page, u"windowBox"_s)->setValue(100);
         QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"100"_s);
-        QTest::keyClick(page->statsView(), Qt::Key_R, Qt::ControlModifier);
+        QTest::keyClick(statsView, Qt::Key_R, Qt::ControlModifier);
         QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"0"_s);
-        QVERIFY(page->countsLabel()->text().contains(u"0 complete"_s));
+        QVERIFY(named<LiveText>(*page, u"measureCounts"_s)->text().contains(u"0 complete"_s));
     }
 
     // Regression (issue 40, item 4): the automatic order put the vehicle's return stamps before
@@ -234,14 +235,14 @@ private slots:
         QVERIFY(!file.isEmpty());
         QString error;
         QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
-        QLabel* warning = page->warningLabel();
+        QLabel* warning = named<QLabel>(*page, u"measureWarning"_s);
         QVERIFY(!warning->isVisible());
         auto pub = publish(paperStamps(topics, 35'000), 100, 11);
         QTRY_VERIFY_WITH_TIMEOUT(measure->engine().samples() >= 100, 60000);
         QVERIFY(pub->waitForFinished(10000));
 
         // The pinned row says it, and the line above the pinned rows says why and what to do.
-        QAbstractItemModel* pinned = page->summaryView()->model();
+        QAbstractItemModel* pinned = named<QTableView>(*page, u"summaryView"_s)->model();
         const int back = rowOf(pinned, u"back"_s);
         QVERIFY(back >= 0);
         QTRY_VERIFY_WITH_TIMEOUT(pinned->index(back, 0).data().toString().startsWith(u"⚠ "_s), 5000);
@@ -256,7 +257,7 @@ private slots:
                  qPrintable(text));
         QVERIFY(pinned->index(back, 0).data(Qt::ToolTipRole).toString().contains(u"Load Pipeline"_s));
         // Next to the pinned rows, whole at 1280x800.
-        QWidget* summary = page->summaryView();
+        QWidget* summary = named<QTableView>(*page, u"summaryView"_s);
         const QRect at = warning->geometry();
         QCOMPARE(warning->parentWidget(), summary->parentWidget());
         QVERIFY2(at.bottom() < summary->geometry().top() && summary->geometry().top() - at.bottom() < 12,
@@ -299,22 +300,23 @@ private slots:
             w.measure()->pipeline().topics(),
             (QStringList {u"/lab/vehicle/send"_s, u"/lab/cloud/recv"_s, u"/lab/vehicle/done"_s}), 60000);
         QVERIFY(w.measure()->isAutomatic());
-        QVERIFY(page->modeLabel()->text().startsWith(u"Automatic"_s));
-        QTRY_COMPARE_WITH_TIMEOUT(page->stampTopicsView()->model()->rowCount(), 3, 5000);
+        QVERIFY(named<QLabel>(*page, u"modeLabel"_s)->text().startsWith(u"Automatic"_s));
+        QTRY_COMPARE_WITH_TIMEOUT(named<QListView>(*page, u"stampTopicsView"_s)->model()->rowCount(), 3,
+                                  5000);
         QVERIFY(pub->waitForFinished(20000));
 
-        QTableView* view = page->pipelineView();
-        PipelineModel* model = page->pipelineModel();
+        QTableView* view = named<QTableView>(*page, u"pipelineView"_s);
+        PipelineModel* model = named<PipelineModel>(*page, u"pipelineModel"_s);
         view->setFocus();
         view->setCurrentIndex(model->index(0, PipelineModel::TopicColumn));
         QTest::keyClick(view, Qt::Key_Delete);
         QCOMPARE(w.measure()->pipeline().topics(),
                  (QStringList {u"/lab/cloud/recv"_s, u"/lab/vehicle/done"_s}));
         QVERIFY(!w.measure()->isAutomatic());
-        QCOMPARE(page->modeLabel()->text(), u"Edited by hand."_s);
+        QCOMPARE(named<QLabel>(*page, u"modeLabel"_s)->text(), u"Edited by hand."_s);
 
         // Drag the removed topic back from the topics seen, onto the first row.
-        QListView* seen = page->stampTopicsView();
+        QListView* seen = named<QListView>(*page, u"stampTopicsView"_s);
         const QModelIndex send = find(seen->model(), u"/lab/vehicle/send"_s, StampTopicModel::TopicRole);
         QVERIFY(send.isValid());
         QVERIFY(!send.data(StampTopicModel::InPipelineRole).toBool());

@@ -20,6 +20,7 @@
 #include <QTest>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
 
 namespace {
 constexpr int kSamples = 100;
@@ -52,7 +53,7 @@ private slots:
 
         Ros2Peer chain(domain, Ros2StampChain::args(kSamples));
         QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
-        QAbstractItemModel* table = page->statsView()->model();
+        QAbstractItemModel* table = named<QTableView>(*page, u"statsView"_s)->model();
         QTRY_COMPARE_WITH_TIMEOUT(
             table->index(rowOf(table, u"total"_s), LatencyStatsModel::CountColumn).data().toString(),
             QString::number(kSamples), 20000);
@@ -66,7 +67,8 @@ private slots:
         const auto check = [&](const QString& id, const QJsonObject& numpy) {
             const int row = rowOf(table, id);
             QVERIFY2(row >= 0, qPrintable(id));
-            QVERIFY(!page->statsView()->isColumnHidden(LatencyStatsModel::MedianColumn));
+            QVERIFY(
+                !named<QTableView>(*page, u"statsView"_s)->isColumnHidden(LatencyStatsModel::MedianColumn));
             QCOMPARE(table->index(row, LatencyStatsModel::CountColumn).data().toString(),
                      QString::number(numpy.value(u"count"_s).toInt()));
             QCOMPARE(table->index(row, LatencyStatsModel::MedianColumn).data().toString(),

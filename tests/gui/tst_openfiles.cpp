@@ -13,6 +13,7 @@
 #include "session/measuresession.h"
 #include "stampbag.h"
 #include "syntheticrun.h"
+#include "viewhelpers.h"
 #include "watch/linkmodel.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/experiment/experimentpage.h"
@@ -23,6 +24,7 @@
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
 #include "widgets/reports/reportspage.h"
+#include "windowparts.h"
 
 #include <QAction>
 #include <QDragEnterEvent>
@@ -39,6 +41,8 @@
 #include <QTreeWidget>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using namespace WindowParts;
 
 namespace {
 /// Drops `paths` as a file manager would: drag enter, then drop, at the middle of `target`.
@@ -63,8 +67,8 @@ bool drop(QWidget* target, const QStringList& paths)
 QStringList tabTexts(MapPage* page)
 {
     QStringList texts;
-    for (int i = 0; i < page->configTabs()->count(); ++i)
-        texts << page->configTabs()->tabText(i);
+    for (int i = 0; i < named<ConfigTabs>(*page, u"configTabs"_s)->count(); ++i)
+        texts << named<ConfigTabs>(*page, u"configTabs"_s)->tabText(i);
     return texts;
 }
 
@@ -72,8 +76,8 @@ QStringList tabTexts(MapPage* page)
 QStringList listedConfigs(LinksPage* page)
 {
     QStringList names;
-    for (int r = 0; r < page->configList()->topLevelItemCount(); ++r)
-        names << page->configList()->topLevelItem(r)->text(0);
+    for (int r = 0; r < named<QTreeWidget>(*page, u"watchConfigs"_s)->topLevelItemCount(); ++r)
+        names << named<QTreeWidget>(*page, u"watchConfigs"_s)->topLevelItem(r)->text(0);
     return names;
 }
 } // namespace
@@ -155,12 +159,12 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.openPaths({vehicle, cloud}).isEmpty());
-        ConfigTabs* tabs = w.mapPage()->configTabs();
-        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
+        ConfigTabs* tabs = named<ConfigTabs>(*mapPage(w), u"configTabs"_s);
+        QCOMPARE(tabTexts(mapPage(w)), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
         QCOMPARE(tabs->currentIndex(), 0);
-        QVERIFY(tabs->isVisible() && tabs->geometry().intersects(w.mapPage()->rect()));
+        QVERIFY(tabs->isVisible() && tabs->geometry().intersects(mapPage(w)->rect()));
         QVERIFY2(w.windowTitle().startsWith(u"vehicle.yaml"_s), qPrintable(w.windowTitle()));
-        w.mapPage()->updateHealth();
+        mapPage(w)->updateHealth();
         QVERIFY2(tabs->tabToolTip(1).contains(cloud) && tabs->tabToolTip(1).contains(u"mapping"_s),
                  qPrintable(tabs->tabToolTip(1)));
 
@@ -174,7 +178,7 @@ private slots:
         const int cloudMappings = w.document()->mappingCount();
         w.document()->removeMappings({w.document()->mapping(0).id});
         QVERIFY(w.files()->save());
-        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml •"_s, u"cloud.yaml"_s}));
+        QCOMPARE(tabTexts(mapPage(w)), QStringList({u"vehicle.yaml •"_s, u"cloud.yaml"_s}));
         ConfigDocument reread;
         QVERIFY(reread.load(cloud).ok);
         QCOMPARE(reread.mappingCount(), cloudMappings - 1);
@@ -189,14 +193,14 @@ private slots:
         QVERIFY(w.files()->save());
         QVERIFY(reread.load(vehicle).ok);
         QCOMPARE(reread.mappingCount(), vehicleMappings - 1);
-        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
+        QCOMPARE(tabTexts(mapPage(w)), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
 
         // Opening one again shows it; closing one leaves the other.
         QVERIFY(w.openPaths({cloud}).isEmpty());
         QCOMPARE(tabs->count(), 2);
         QCOMPARE(w.document()->filePath(), cloud);
         QVERIFY(w.files()->closeConfig(1));
-        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s}));
+        QCOMPARE(tabTexts(mapPage(w)), QStringList({u"vehicle.yaml"_s}));
         QCOMPARE(w.document()->filePath(), vehicle);
     }
 
@@ -208,7 +212,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
 
         QVERIFY(drop(&w, {m_config}));
-        QCOMPARE(w.pages()->currentWidget(), w.mapPage());
+        QCOMPARE(w.pages()->currentWidget(), mapPage(w));
         QCOMPARE(w.document()->filePath(), m_config);
 
         w.pages()->setCurrentWidget(w.discoverPage());
@@ -228,7 +232,7 @@ private slots:
         QVERIFY2(noted(w.measurePage()->runBar()->saveRunAs(run), &error), qPrintable(error));
         w.measurePage()->runBar()->backToLive();
         QVERIFY(!w.measure()->isShowingRun());
-        w.pages()->setCurrentWidget(w.mapPage());
+        w.pages()->setCurrentWidget(mapPage(w));
         QVERIFY(drop(&w, {run}));
         QCOMPARE(w.pages()->currentWidget(), w.measurePage());
         QVERIFY(w.measure()->isShowingRun());
@@ -242,25 +246,25 @@ private slots:
 
         // Several: compared on the Reports page, bags among them.
         QVERIFY(drop(&w, {m_csvA, m_csvB, m_bag}));
-        QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
-        QCOMPARE(w.reportsPage()->inputs(), QStringList({m_csvA, m_csvB, m_bag}));
+        QCOMPARE(w.pages()->currentWidget(), reportsPage(w));
+        QCOMPARE(reportsPage(w)->inputs(), QStringList({m_csvA, m_csvB, m_bag}));
 
         // An experiment's folder.
         QVERIFY(drop(&w, {m_experiment}));
-        QCOMPARE(w.pages()->currentWidget(), w.experimentPage());
-        QVERIFY(w.experimentPage()->planText().contains(u"qos"_s));
+        QCOMPARE(w.pages()->currentWidget(), experimentPage(w));
+        QVERIFY(experimentPage(w)->planText().contains(u"qos"_s));
 
         // A plan: to the Experiments page, not refused as a config (issue 33).
         w.pages()->setCurrentWidget(w.discoverPage());
         QVERIFY(drop(&w, {m_plan}));
-        QCOMPARE(w.pages()->currentWidget(), w.experimentPage());
-        QVERIFY(w.experimentPage()->planText().contains(u"Methods (Table I)"_s));
+        QCOMPARE(w.pages()->currentWidget(), experimentPage(w));
+        QVERIFY(experimentPage(w)->planText().contains(u"Methods (Table I)"_s));
 
         // Two configs: both on Map, a tab each, the first shown; Links lists both.
         QVERIFY(drop(&w, {m_otherConfig, m_config}));
-        QCOMPARE(w.pages()->currentWidget(), w.mapPage());
+        QCOMPARE(w.pages()->currentWidget(), mapPage(w));
         QCOMPARE(w.document()->filePath(), m_otherConfig);
-        QCOMPARE(tabTexts(w.mapPage()), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
+        QCOMPARE(tabTexts(mapPage(w)), QStringList({u"vehicle.yaml"_s, u"cloud.yaml"_s}));
         QTRY_VERIFY(listedConfigs(w.linksPage()).contains(u"vehicle"_s));
         QTRY_VERIFY(listedConfigs(w.linksPage()).contains(u"cloud"_s));
 
@@ -273,7 +277,7 @@ private slots:
         for (const QString& name : {u"a.bsrun"_s, u"logger.yaml"_s, u"a.csv"_s, u"b.csv"_s, u"stamps.bag"_s,
                                     u"exp"_s, u"cloud.yaml"_s})
             QVERIFY2(entries.join(u'\n').contains(name), qPrintable(entries.join(u'\n')));
-        w.pages()->setCurrentWidget(w.mapPage());
+        w.pages()->setCurrentWidget(mapPage(w));
         for (QAction* a : recent->actions())
             if (a->text().startsWith(u"a.bsrun"_s)) {
                 a->trigger(); // the menu is made anew: its actions go
@@ -312,30 +316,30 @@ private slots:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.pages()->setCurrentWidget(w.reportsPage());
+        w.pages()->setCurrentWidget(reportsPage(w));
         // Its own drop adds measurements as inputs, even one; a config is not its to take.
-        QVERIFY(drop(w.reportsPage(), {m_csvA}));
-        QCOMPARE(w.reportsPage()->inputs(), QStringList {m_csvA});
-        QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
+        QVERIFY(drop(reportsPage(w), {m_csvA}));
+        QCOMPARE(reportsPage(w)->inputs(), QStringList {m_csvA});
+        QCOMPARE(w.pages()->currentWidget(), reportsPage(w));
         QVERIFY(!w.measure()->isShowingRun());
         // A config dragged over it is not its to take: the page leaves it to the window (Qt passes
         // an ignored drag on to the parent), which opens it on the Map page.
         QMimeData mime;
         mime.setUrls({QUrl::fromLocalFile(m_config)});
         QDragEnterEvent enter(QPoint(5, 5), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-        static_cast<QObject*>(w.reportsPage())->event(&enter); // the page alone, not its parents
+        static_cast<QObject*>(reportsPage(w))->event(&enter); // the page alone, not its parents
         QVERIFY(!enter.isAccepted());
         QVERIFY(drop(&w, {m_config}));
-        QCOMPARE(w.pages()->currentWidget(), w.mapPage());
-        QCOMPARE(w.reportsPage()->inputs(), QStringList {m_csvA});
+        QCOMPARE(w.pages()->currentWidget(), mapPage(w));
+        QCOMPARE(reportsPage(w)->inputs(), QStringList {m_csvA});
         // It opens them the window's one way: a measurement never opened before goes among the
         // recent files as from any other drop.
         const QString fresh = m_dir.filePath(u"fresh.csv"_s);
         QVERIFY(QFile::copy(m_csvB, fresh));
-        w.pages()->setCurrentWidget(w.reportsPage());
-        QVERIFY(drop(w.reportsPage(), {fresh}));
-        QCOMPARE(w.pages()->currentWidget(), w.reportsPage());
-        QCOMPARE(w.reportsPage()->inputs(), (QStringList {m_csvA, fresh}));
+        w.pages()->setCurrentWidget(reportsPage(w));
+        QVERIFY(drop(reportsPage(w), {fresh}));
+        QCOMPARE(w.pages()->currentWidget(), reportsPage(w));
+        QCOMPARE(reportsPage(w)->inputs(), (QStringList {m_csvA, fresh}));
         QStringList entries;
         for (QAction* a : recentMenu(w)->actions())
             entries << a->text();

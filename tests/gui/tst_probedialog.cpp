@@ -23,6 +23,8 @@
 #include <QTest>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
 
 namespace {
 using ViewHelpers::menuAction;
@@ -41,9 +43,9 @@ private:
 
     void configure(ProbeDialog& w, const QString& url, int count, double rateHz)
     {
-        w.brokerEdit()->setText(url);
-        w.countBox()->setValue(count);
-        w.rateBox()->setValue(rateHz);
+        named<QLineEdit>(w, u"broker"_s)->setText(url);
+        named<QSpinBox>(w, u"count"_s)->setValue(count);
+        named<QDoubleSpinBox>(w, u"rate"_s)->setValue(rateHz);
     }
 
 private slots:
@@ -56,23 +58,25 @@ private slots:
     void runShowsEveryRoundTripWithStatsAndEcdf()
     {
         ProbeDialog w;
+        QPushButton* stop = named<QPushButton>(w, u"stopButton"_s);
+        QPushButton* start = named<QPushButton>(w, u"startButton"_s);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         configure(w, m_servers.brokerUrl(), 50, 100);
         QSignalSpy finished(&w, &ProbeDialog::probeFinished);
-        QTest::mouseClick(w.startButton(), Qt::LeftButton);
+        QTest::mouseClick(start, Qt::LeftButton);
         QVERIFY(w.isRunning());
-        QVERIFY(!w.startButton()->isEnabled());
-        QVERIFY(w.stopButton()->isEnabled());
-        QVERIFY(!w.brokerEdit()->isEnabled());
+        QVERIFY(!start->isEnabled());
+        QVERIFY(stop->isEnabled());
+        QVERIFY(!named<QLineEdit>(w, u"broker"_s)->isEnabled());
 
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
         const auto report = finished.first().first().value<LinkProbeReport>();
         QVERIFY2(report.error.isEmpty(), qPrintable(report.error));
         QVERIFY(!w.isRunning());
-        QVERIFY(w.startButton()->isEnabled());
-        QVERIFY(!w.stopButton()->isEnabled());
-        QVERIFY(w.errorLabel()->isHidden());
+        QVERIFY(start->isEnabled());
+        QVERIFY(!stop->isEnabled());
+        QVERIFY(named<QLabel>(w, u"probeError"_s)->isHidden());
         QCOMPARE(text(w, ProbeDialog::Sent), u"50"_s);
         QCOMPARE(text(w, ProbeDialog::Received), u"50"_s);
         QCOMPARE(text(w, ProbeDialog::Lost), u"0 (0.0 %)"_s);
@@ -99,7 +103,7 @@ private slots:
         QVERIFY(lo <= report.steps.front().rtt.min);
         // Up to the largest, or a high quantile with what lies beyond marked (issue 33).
         QVERIFY(hi >= report.steps.front().rtt.max || !w.chart()->beyondText(series).isEmpty());
-        QVERIFY(!w.stepsView()->isVisible()); // no sweep, no table
+        QVERIFY(!only<QTableWidget>(w)->isVisible()); // no sweep, no table
 
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty())
@@ -109,10 +113,12 @@ private slots:
     void longRunUpdatesLiveAndStops()
     {
         ProbeDialog w;
+        QPushButton* stop = named<QPushButton>(w, u"stopButton"_s);
+        QPushButton* start = named<QPushButton>(w, u"startButton"_s);
         w.show();
         configure(w, m_servers.brokerUrl(), 100'000, 200);
         QSignalSpy finished(&w, &ProbeDialog::probeFinished);
-        w.startButton()->click();
+        start->click();
         // Live: counts and the curve grow while the probe still sends.
         QTRY_VERIFY_WITH_TIMEOUT(w.locale().toInt(text(w, ProbeDialog::Received)) >= 50, 10000);
         QVERIFY(w.isRunning());
@@ -121,15 +127,15 @@ private slots:
         bool ok = false;
         QVERIFY(w.locale().toDouble(text(w, ProbeDialog::Median), &ok) > 0 && ok);
 
-        w.stopButton()->click();
-        QVERIFY(!w.stopButton()->isEnabled());
+        stop->click();
+        QVERIFY(!stop->isEnabled());
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
         const auto report = finished.first().first().value<LinkProbeReport>();
         QVERIFY(report.interrupted);
         QVERIFY(report.steps.front().sent < 100'000);
         QCOMPARE(text(w, ProbeDialog::Sent), w.locale().toString(report.steps.front().sent));
         QCOMPARE(text(w, ProbeDialog::Received), w.locale().toString(report.steps.front().received));
-        QVERIFY(w.startButton()->isEnabled());
+        QVERIFY(start->isEnabled());
     }
 
     void sweepListsItsSteps()
@@ -137,45 +143,49 @@ private slots:
         ProbeDialog w;
         w.show();
         configure(w, m_servers.brokerUrl(), 100, 100);
-        w.sweepBox()->setChecked(true);
-        QVERIFY(!w.countBox()->isEnabled());
-        QVERIFY(w.stepsView()->isVisible());
+        named<QCheckBox>(w, u"sweep"_s)->setChecked(true);
+        QVERIFY(!named<QSpinBox>(w, u"count"_s)->isEnabled());
+        QVERIFY(only<QTableWidget>(w)->isVisible());
         QSignalSpy finished(&w, &ProbeDialog::probeFinished);
-        w.startButton()->click();
+        named<QPushButton>(w, u"startButton"_s)->click();
         // Two steps are enough to see the table grow; then stop.
-        QTRY_VERIFY_WITH_TIMEOUT(w.stepsView()->rowCount() >= 2, 20000);
-        w.stopButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(only<QTableWidget>(w)->rowCount() >= 2, 20000);
+        named<QPushButton>(w, u"stopButton"_s)->click();
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
         const auto report = finished.first().first().value<LinkProbeReport>();
-        QCOMPARE(w.stepsView()->rowCount(), int(report.steps.size()));
-        QCOMPARE(w.stepsView()->item(0, 0)->text(), w.locale().toString(100.0, 'f', 1));
+        QCOMPARE(only<QTableWidget>(w)->rowCount(), int(report.steps.size()));
+        QCOMPARE(only<QTableWidget>(w)->item(0, 0)->text(), w.locale().toString(100.0, 'f', 1));
         QVERIFY(report.best >= 0);
-        QVERIFY2(w.sweepResult()->text().contains(w.locale().toString(report.maxRateHz(), 'f', 1)),
-                 qPrintable(w.sweepResult()->text()));
+        QVERIFY2(named<QLabel>(w, u"sweepResult"_s)
+                     ->text()
+                     .contains(w.locale().toString(report.maxRateHz(), 'f', 1)),
+                 qPrintable(named<QLabel>(w, u"sweepResult"_s)->text()));
         QVERIFY(!w.chart()->series().isEmpty());
     }
 
     void unreachableBrokerIsReportedInTheDialog()
     {
         ProbeDialog w;
+        QPushButton* start = named<QPushButton>(w, u"startButton"_s);
         w.show();
         const QString url = u"tcp://127.0.0.1:%1"_s.arg(TestServers::freePort());
         configure(w, url, 50, 100);
         QSignalSpy finished(&w, &ProbeDialog::probeFinished);
-        w.startButton()->click();
+        start->click();
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
-        QVERIFY(w.startButton()->isEnabled());
-        QVERIFY(!w.stopButton()->isEnabled());
-        QVERIFY(w.brokerEdit()->isEnabled());
-        QVERIFY(!w.errorLabel()->isHidden());
-        QVERIFY2(w.errorLabel()->text().contains(url), qPrintable(w.errorLabel()->text()));
+        QVERIFY(start->isEnabled());
+        QVERIFY(!named<QPushButton>(w, u"stopButton"_s)->isEnabled());
+        QVERIFY(named<QLineEdit>(w, u"broker"_s)->isEnabled());
+        QVERIFY(!named<QLabel>(w, u"probeError"_s)->isHidden());
+        QVERIFY2(named<QLabel>(w, u"probeError"_s)->text().contains(url),
+                 qPrintable(named<QLabel>(w, u"probeError"_s)->text()));
         QVERIFY(!QApplication::activeModalWidget()); // said in the dialog, not in a message box
         QCOMPARE(text(w, ProbeDialog::Received), u"0"_s);
 
         // The next run clears the error.
         configure(w, m_servers.brokerUrl(), 5, 50);
-        w.startButton()->click();
-        QVERIFY(w.errorLabel()->isHidden());
+        start->click();
+        QVERIFY(named<QLabel>(w, u"probeError"_s)->isHidden());
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 20000);
         QCOMPARE(text(w, ProbeDialog::Received), u"5"_s);
     }
@@ -197,7 +207,7 @@ private slots:
         auto* dialog = w.findChild<ProbeDialog*>();
         QVERIFY(dialog);
         QVERIFY(dialog->isVisible());
-        QCOMPARE(dialog->brokerEdit()->text(), m_servers.brokerUrl());
+        QCOMPARE(named<QLineEdit>(*dialog, u"broker"_s)->text(), m_servers.brokerUrl());
         dialog->close();
         action->trigger();
         QCOMPARE(w.findChildren<ProbeDialog*>().size(), 1); // the same dialog, with its last result

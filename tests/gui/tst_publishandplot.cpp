@@ -45,6 +45,8 @@
 #include <QTreeView>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
 
 namespace {
 /// One message as a subscriber of its own got it.
@@ -77,7 +79,7 @@ QString shown(const QList<double>& values)
 /// The fields view's index of the field at `path`, or an invalid one.
 QModelIndex fieldAt(DetailPane* detail, const QStringList& path, const QModelIndex& parent = {})
 {
-    QAbstractItemModel* m = detail->fieldsView()->model();
+    QAbstractItemModel* m = named<QTreeView>(*detail, u"fields"_s)->model();
     for (int r = 0; r < m->rowCount(parent); ++r) {
         const QModelIndex i = m->index(r, 0, parent);
         if (i.data(DetailPane::FieldPathRole).toStringList() == path)
@@ -94,12 +96,12 @@ bool plotFromView(DetailPane* detail, const QStringList& path)
     const QModelIndex i = fieldAt(detail, path);
     if (!i.isValid())
         return false;
-    detail->fieldsView()->setCurrentIndex(i);
-    if (!detail->plotAction()->isEnabled())
+    named<QTreeView>(*detail, u"fields"_s)->setCurrentIndex(i);
+    if (!named<QAction>(*detail, u"plotAction"_s)->isEnabled())
         return false;
-    const qsizetype before = detail->plotter()->series().size();
-    detail->plotAction()->trigger();
-    return detail->plotter()->series().size() == before + 1;
+    const qsizetype before = named<FieldPlotter>(*detail, u"fieldPlotter"_s)->series().size();
+    named<QAction>(*detail, u"plotAction"_s)->trigger();
+    return named<FieldPlotter>(*detail, u"fieldPlotter"_s)->series().size() == before + 1;
 }
 
 /// Answers the next message box with `button`, keeping its text (polls: the box may come late).
@@ -234,28 +236,33 @@ private slots:
         page.findChild<QToolButton*>(u"publishTool"_s)->click();
         auto* dialog = page.findChild<PublishDialog*>();
         QVERIFY(dialog);
-        QCOMPARE(dialog->topicEdit()->text(), u"fleet/car1/status"_s);
-        QCOMPARE(dialog->formatBox()->currentIndex(), int(PublishDialog::Json));
-        QCOMPARE(dialog->payloadEdit()->toPlainText(), u"{\"speed\": 12.5}"_s);
+        QPushButton* publishButton = named<QPushButton>(*dialog, u"publishButton"_s);
+        QComboBox* format = named<QComboBox>(*dialog, u"publishFormat"_s);
+        QPlainTextEdit* payloadEdit = named<QPlainTextEdit>(*dialog, u"publishPayload"_s);
+        QCOMPARE(named<QLineEdit>(*dialog, u"publishTopic"_s)->text(), u"fleet/car1/status"_s);
+        QCOMPARE(format->currentIndex(), int(PublishDialog::Json));
+        QCOMPARE(payloadEdit->toPlainText(), u"{\"speed\": 12.5}"_s);
 
         // Text at QoS 1 to a live subscriber.
-        dialog->topicEdit()->setText(u"test/text"_s);
-        dialog->formatBox()->setCurrentIndex(PublishDialog::Text);
-        dialog->payloadEdit()->setPlainText(u"hello, wörld"_s);
-        dialog->qosBox()->setCurrentIndex(1);
-        Received r = receiveOne(u"test/text"_s, 10, [&] { dialog->publishButton()->click(); });
-        QVERIFY2(r.got, qPrintable(dialog->status()->text()));
+        named<QLineEdit>(*dialog, u"publishTopic"_s)->setText(u"test/text"_s);
+        format->setCurrentIndex(PublishDialog::Text);
+        payloadEdit->setPlainText(u"hello, wörld"_s);
+        named<QComboBox>(*dialog, u"publishQos"_s)->setCurrentIndex(1);
+        Received r = receiveOne(u"test/text"_s, 10, [&] { publishButton->click(); });
+        QVERIFY2(r.got, qPrintable(named<QLabel>(*dialog, u"publishStatus"_s)->text()));
         QCOMPARE(r.payload, QByteArray("hello, w\xc3\xb6rld"));
         QCOMPARE(r.qos, 1);
         QCOMPARE(r.retained, false);
-        QVERIFY(dialog->status()->text().contains(u"published 13 bytes to test/text"_s));
+        QVERIFY(named<QLabel>(*dialog, u"publishStatus"_s)
+                    ->text()
+                    .contains(u"published 13 bytes to test/text"_s));
 
         // JSON, retained at QoS 2: a subscriber that comes later gets it from the broker.
-        dialog->topicEdit()->setText(u"test/json"_s);
-        dialog->formatBox()->setCurrentIndex(PublishDialog::Json);
-        dialog->payloadEdit()->setPlainText(u"{\"a\": [1, 2.5, \"x\"]}"_s);
-        dialog->qosBox()->setCurrentIndex(2);
-        dialog->retainedBox()->setChecked(true);
+        named<QLineEdit>(*dialog, u"publishTopic"_s)->setText(u"test/json"_s);
+        format->setCurrentIndex(PublishDialog::Json);
+        payloadEdit->setPlainText(u"{\"a\": [1, 2.5, \"x\"]}"_s);
+        named<QComboBox>(*dialog, u"publishQos"_s)->setCurrentIndex(2);
+        named<QCheckBox>(*dialog, u"publishRetained"_s)->setChecked(true);
         QVERIFY(dialog->publish());
         QTRY_VERIFY_WITH_TIMEOUT(session.mqttTopics()->info(u"test/json"_s).has_value(), 10000);
         r = receiveOne(u"test/json"_s, 5);
@@ -265,14 +272,14 @@ private slots:
         QCOMPARE(r.retained, true);
 
         // Invalid JSON is refused with a message, and nothing reaches the broker.
-        dialog->topicEdit()->setText(u"test/bad"_s);
-        dialog->retainedBox()->setChecked(false);
-        dialog->formatBox()->setCurrentIndex(PublishDialog::Json);
-        dialog->payloadEdit()->setPlainText(u"{\"a\": 1,}"_s);
-        r = receiveOne(u"test/bad"_s, 2, [&] { dialog->publishButton()->click(); });
+        named<QLineEdit>(*dialog, u"publishTopic"_s)->setText(u"test/bad"_s);
+        named<QCheckBox>(*dialog, u"publishRetained"_s)->setChecked(false);
+        format->setCurrentIndex(PublishDialog::Json);
+        payloadEdit->setPlainText(u"{\"a\": 1,}"_s);
+        r = receiveOne(u"test/bad"_s, 2, [&] { publishButton->click(); });
         QVERIFY(!r.got);
-        QVERIFY2(dialog->status()->text().contains(u"Not sent: not JSON"_s),
-                 qPrintable(dialog->status()->text()));
+        QVERIFY2(named<QLabel>(*dialog, u"publishStatus"_s)->text().contains(u"Not sent: not JSON"_s),
+                 qPrintable(named<QLabel>(*dialog, u"publishStatus"_s)->text()));
         QVERIFY(!session.mqttTopics()->info(u"test/bad"_s));
     }
 
@@ -283,31 +290,35 @@ private slots:
         DiscoverPage& page = p.page;
         select(page, u"vehicle/pose"_s);
         QTRY_VERIFY(session.mqttTopics()->registryFor(u"vehicle/pose"_s));
-        page.publishAction()->trigger();
+        named<QAction>(page, u"publishAction"_s)->trigger();
         auto* dialog = page.findChild<PublishDialog*>();
         QVERIFY(dialog);
-        QCOMPARE(dialog->formatBox()->currentIndex(), int(PublishDialog::RosMessage));
-        QVERIFY(dialog->formatBox()->currentText().contains(u"geometry_msgs/PoseStamped"_s));
+        QPushButton* publishButton = named<QPushButton>(*dialog, u"publishButton"_s);
+        QComboBox* format = named<QComboBox>(*dialog, u"publishFormat"_s);
+        QLabel* status = named<QLabel>(*dialog, u"publishStatus"_s);
+        QPlainTextEdit* payloadEdit = named<QPlainTextEdit>(*dialog, u"publishPayload"_s);
+        QCOMPARE(format->currentIndex(), int(PublishDialog::RosMessage));
+        QVERIFY(format->currentText().contains(u"geometry_msgs/PoseStamped"_s));
         // Prefilled from the captured message (x 1.5, frame "map").
-        QString yaml = dialog->payloadEdit()->toPlainText();
+        QString yaml = payloadEdit->toPlainText();
         QVERIFY2(yaml.contains(u"    x: 1.5\n"_s) && yaml.contains(u"frame_id: \"map\""_s), qPrintable(yaml));
         yaml.replace(u"    x: 1.5\n"_s, u"    x: 7.75\n"_s);
-        dialog->payloadEdit()->setPlainText(yaml);
+        payloadEdit->setPlainText(yaml);
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty())
             dialog->grab().save(dir + u"/publish-dialog.png"_s);
 
         // Retained is set and the broker keeps one: asked first; cancelled, nothing is sent.
-        dialog->retainedBox()->setChecked(true);
+        named<QCheckBox>(*dialog, u"publishRetained"_s)->setChecked(true);
         QString question;
         answerNextBox(QMessageBox::Cancel, &question);
         Received r = receiveOne(u"vehicle/pose"_s, 3, [&] { QVERIFY(!dialog->publish()); });
         QVERIFY(question.contains(u"retained message for vehicle/pose"_s));
         QCOMPARE(r.payload, Fixtures::read(u"mqtt_client/wire/pose.payload.bin"_s)); // the old one
 
-        dialog->retainedBox()->setChecked(false);
+        named<QCheckBox>(*dialog, u"publishRetained"_s)->setChecked(false);
         r = receiveOne(
-            u"vehicle/pose"_s, 10, [&] { dialog->publishButton()->click(); }, true);
-        QVERIFY2(r.got && !r.retained, qPrintable(dialog->status()->text()));
+            u"vehicle/pose"_s, 10, [&] { publishButton->click(); }, true);
+        QVERIFY2(r.got && !r.retained, qPrintable(status->text()));
         const auto info = MqttClientWire::decodeType(Fixtures::read(u"mqtt_client/wire/pose.type.bin"_s));
         RosTypeRegistry reg;
         QVERIFY(reg.addDefinition(info->name, info->definition));
@@ -321,19 +332,19 @@ private slots:
 
         // A value that does not fit its field is refused by name.
         yaml.replace(u"seq: 3"_s, u"seq: -3"_s);
-        dialog->payloadEdit()->setPlainText(yaml);
+        payloadEdit->setPlainText(yaml);
         QVERIFY(!dialog->publish());
-        QVERIFY2(dialog->status()->text().contains(u"header.seq: -3 does not fit uint32"_s),
-                 qPrintable(dialog->status()->text()));
+        QVERIFY2(status->text().contains(u"header.seq: -3 does not fit uint32"_s),
+                 qPrintable(status->text()));
 
         // A stamped type gets mqtt_client's send stamp before the message.
-        dialog->topicEdit()->setText(u"chat"_s);
-        QCOMPARE(dialog->formatBox()->currentIndex(), int(PublishDialog::RosMessage));
-        QCOMPARE(dialog->payloadEdit()->toPlainText(), u"data: \"hello mqtt\"\n"_s);
-        dialog->payloadEdit()->setPlainText(u"data: ahoy"_s);
+        named<QLineEdit>(*dialog, u"publishTopic"_s)->setText(u"chat"_s);
+        QCOMPARE(format->currentIndex(), int(PublishDialog::RosMessage));
+        QCOMPARE(payloadEdit->toPlainText(), u"data: \"hello mqtt\"\n"_s);
+        payloadEdit->setPlainText(u"data: ahoy"_s);
         const qint64 before = QDateTime::currentMSecsSinceEpoch();
         r = receiveOne(
-            u"chat"_s, 10, [&] { dialog->publishButton()->click(); }, true);
+            u"chat"_s, 10, [&] { publishButton->click(); }, true);
         const auto split = MqttClientWire::splitStamped(r.payload);
         QVERIFY(split);
         QVERIFY(split->stampNs / 1000000 >= before - 1000 && split->stampNs / 1000000 <= before + 60000);
@@ -376,21 +387,24 @@ private slots:
         Page p(m_servers.brokerUrl());
         select(p.page, u"robot2/pose"_s);
         QTRY_VERIFY(p.session.mqttTopics()->registryFor(u"robot2/pose"_s));
-        p.page.publishAction()->trigger();
+        named<QAction>(p.page, u"publishAction"_s)->trigger();
         auto* dialog = p.page.findChild<PublishDialog*>();
         QVERIFY(dialog);
-        QTRY_COMPARE(dialog->formatBox()->currentIndex(), int(PublishDialog::RosMessage));
-        QVERIFY(dialog->formatBox()->currentText().contains(type.name));
-        QString yaml = dialog->payloadEdit()->toPlainText();
+        QComboBox* format = named<QComboBox>(*dialog, u"publishFormat"_s);
+        QLabel* status = named<QLabel>(*dialog, u"publishStatus"_s);
+        QPlainTextEdit* payloadEdit = named<QPlainTextEdit>(*dialog, u"publishPayload"_s);
+        QTRY_COMPARE(format->currentIndex(), int(PublishDialog::RosMessage));
+        QVERIFY(format->currentText().contains(type.name));
+        QString yaml = payloadEdit->toPlainText();
         QVERIFY2(yaml.contains(u"    x: 2.5\n"_s) && yaml.contains(u"frame_id: \"odom\""_s),
                  qPrintable(yaml));
         yaml.replace(u"    x: 2.5\n"_s, u"    x: -6.125\n"_s);
-        dialog->payloadEdit()->setPlainText(yaml);
+        payloadEdit->setPlainText(yaml);
 
         const qint64 before = QDateTime::currentMSecsSinceEpoch();
         const Received r = receiveOne(
-            u"robot2/pose"_s, 10, [&] { dialog->publishButton()->click(); }, true);
-        QVERIFY2(r.got, qPrintable(dialog->status()->text()));
+            u"robot2/pose"_s, 10, [&] { named<QPushButton>(*dialog, u"publishButton"_s)->click(); }, true);
+        QVERIFY2(r.got, qPrintable(status->text()));
         const auto split = MqttClientWire::splitStamped(r.payload, type.dialect);
         QVERIFY(split);
         QVERIFY(r.payload.startsWith(QByteArray("\x00\x01\x00\x00", 4))); // the stamp's own header
@@ -402,10 +416,9 @@ private slots:
         QCOMPARE(value->find(u"header.frame_id"_s)->value.toString(), u"odom"_s);
 
         // CDR strings end at a NUL: a NUL typed into one is refused by name
-        dialog->payloadEdit()->setPlainText(yaml.replace(u"\"odom\""_s, u"\"od\\0om\""_s));
+        payloadEdit->setPlainText(yaml.replace(u"\"odom\""_s, u"\"od\\0om\""_s));
         QVERIFY(!dialog->publish());
-        QVERIFY2(dialog->status()->text().contains(u"header.frame_id"_s),
-                 qPrintable(dialog->status()->text()));
+        QVERIFY2(status->text().contains(u"header.frame_id"_s), qPrintable(status->text()));
     }
 
     void clearsRetainedMessagesAfterAsking()
@@ -452,7 +465,9 @@ private slots:
         mosquittoPub(
             {u"-t"_s, u"plot/json"_s, u"-r"_s, u"-m"_s, u"{\"a\": -1, \"v\": [0, -1], \"name\": \"x\"}"_s});
         Page p(m_servers.brokerUrl());
-        DetailPane* detail = p.page.detail();
+        DetailPane* detail = only<DetailPane>(p.page);
+        FieldPlotChart* plotChart = named<FieldPlotChart>(*detail, u"plotChart"_s);
+        QListWidget* plotList = named<QListWidget>(*detail, u"plotList"_s);
         select(p.page, u"plot/json"_s);
         QTRY_VERIFY(fieldAt(detail, {u"v"_s, u"[1]"_s}).isValid());
         QVERIFY(!plotFromView(detail, {u"name"_s})); // text is no number
@@ -465,11 +480,14 @@ private slots:
         // A new message rebuilds the fields; the one the user is on stays current, ready to plot.
         QVERIFY(publisher.publish(u"plot/json"_s, "{\"a\": -2, \"v\": [0, -2], \"name\": \"x\"}"));
         QTRY_COMPARE(fieldAt(detail, {u"a"_s}).siblingAtColumn(1).data().toString(), u"-2"_s);
-        QCOMPARE(detail->fieldsView()->currentIndex().data(DetailPane::FieldPathRole).toStringList(),
+        QCOMPARE(named<QTreeView>(*detail, u"fields"_s)
+                     ->currentIndex()
+                     .data(DetailPane::FieldPathRole)
+                     .toStringList(),
                  (QStringList {u"v"_s, u"[1]"_s}));
-        QVERIFY(detail->plotAction()->isEnabled());
-        QTRY_COMPARE(detail->plotter()->series()[0].points.size(), 1); // the -2
-        detail->plotter()->clear();
+        QVERIFY(named<QAction>(*detail, u"plotAction"_s)->isEnabled());
+        QTRY_COMPARE(named<FieldPlotter>(*detail, u"fieldPlotter"_s)->series()[0].points.size(), 1); // the -2
+        named<FieldPlotter>(*detail, u"fieldPlotter"_s)->clear();
         QVERIFY(plotFromView(detail, {u"a"_s}));
         QVERIFY(plotFromView(detail, {u"v"_s, u"[1]"_s}));
         QList<double> as;
@@ -484,13 +502,13 @@ private slots:
             vs << i * 1.25;
             QTest::qWait(10);
         }
-        const FieldPlotter* plotter = detail->plotter();
+        const FieldPlotter* plotter = named<FieldPlotter>(*detail, u"fieldPlotter"_s);
         QTRY_COMPARE_WITH_TIMEOUT(plotter->series()[1].points.size(), 30, 10000);
         QCOMPARE(values(plotter->series()[0]), as);
         QCOMPARE(values(plotter->series()[1]), vs);
         QCOMPARE(plotter->series()[0].errors, 0u);
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
-            detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
+            detail->findChild<QTabWidget*>()->setCurrentWidget(plotChart->parentWidget());
             p.page.resize(1280, 700);
             QTest::qWait(300);
             p.page.grab().save(dir + u"/field-plot.png"_s);
@@ -499,8 +517,8 @@ private slots:
         // The chart shows the same points, a line per field in colours of its own; at a window's
         // width the legend has room for the whole names.
         p.page.resize(1280, 700);
-        detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
-        const QList<QLineSeries*>& lines = detail->plotChart()->lines();
+        detail->findChild<QTabWidget*>()->setCurrentWidget(plotChart->parentWidget());
+        const QList<QLineSeries*>& lines = plotChart->lines();
         QCOMPARE(lines.size(), 2);
         QTRY_COMPARE(lines[0]->name(), u"plot/json: a"_s);
         QCOMPARE(lines[1]->name(), u"plot/json: v[1]"_s);
@@ -512,22 +530,22 @@ private slots:
         QCOMPARE(lines[1]->points().last().y(), 37.5);
 
         // Removed from the list: one line stays.
-        detail->plotList()->setCurrentRow(0);
-        detail->plotList()->setFocus();
+        plotList->setCurrentRow(0);
+        plotList->setFocus();
         for (QPushButton* b : detail->findChildren<QPushButton*>()) {
             if (b->text() == u"Remo&ve"_s)
                 b->click();
         }
         QCOMPARE(plotter->series().size(), 1);
-        QCOMPARE(detail->plotChart()->lines().size(), 1);
-        QCOMPARE(detail->plotChart()->lines()[0]->name(), u"plot/json: v[1]"_s);
+        QCOMPARE(plotChart->lines().size(), 1);
+        QCOMPARE(plotChart->lines()[0]->name(), u"plot/json: v[1]"_s);
     }
 
     void plotsRosFieldsOfALivePublisher()
     {
         Page p(m_servers.brokerUrl());
         p.page.setRosMasterUri(m_servers.rosMasterUri());
-        DetailPane* detail = p.page.detail();
+        DetailPane* detail = only<DetailPane>(p.page);
         p.session.rosMonitor()->monitor(u"/plot/stamps"_s);
         QProcess node;
         node.setProcessEnvironment(m_servers.rosEnvironment());
@@ -542,7 +560,7 @@ private slots:
         // one tick, and the plot would decimate them.
         QTRY_COMPARE_WITH_TIMEOUT(node.state(), QProcess::NotRunning, 30000);
         QCOMPARE(node.exitCode(), 0);
-        const FieldPlotter* plotter = detail->plotter();
+        const FieldPlotter* plotter = named<FieldPlotter>(*detail, u"fieldPlotter"_s);
         QTRY_VERIFY_WITH_TIMEOUT(
             !plotter->series()[0].points.isEmpty() && plotter->series()[0].points.last().y() == 59, 10000);
         // Every message from the one plotting began, in order: seq, and the time it carries.
@@ -581,18 +599,20 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(model->rowOf(u"/plot/pose"_s) >= 0, 15000);
         const QModelIndex monitor = model->index(model->rowOf(u"/plot/pose"_s), TopicTableModel::MonitorColumn);
         QVERIFY(model->setData(monitor, Qt::Checked, Qt::CheckStateRole));
-        DetailPane* detail = page.detail();
+        DetailPane* detail = only<DetailPane>(page);
+        QListWidget* plotList = named<QListWidget>(*detail, u"plotList"_s);
         detail->showRos2Topic(u"/plot/pose"_s);
         const QStringList x {u"pose"_s, u"position"_s, u"x"_s};
         const QStringList y {u"pose"_s, u"position"_s, u"y"_s};
         QTRY_VERIFY_WITH_TIMEOUT(fieldAt(detail, y).isValid(), 15000);
         QVERIFY(plotFromView(detail, x));
         QVERIFY(plotFromView(detail, y));
-        QVERIFY(detail->plotNote()->text().isEmpty());
+        QVERIFY(named<QLabel>(*detail, u"plotNote"_s)->text().isEmpty());
         // no Ctrl+L on an unknown type's fields (it has none), so straight to the plotter
-        QVERIFY(detail->plotter()->add({PlotField::Source::Ros2, u"/plot/blob"_s, {u"n"_s}}));
+        QVERIFY(named<FieldPlotter>(*detail, u"fieldPlotter"_s)
+                    ->add({PlotField::Source::Ros2, u"/plot/blob"_s, {u"n"_s}}));
 
-        const FieldPlotter* plotter = detail->plotter();
+        const FieldPlotter* plotter = named<FieldPlotter>(*detail, u"fieldPlotter"_s);
         QTRY_VERIFY_WITH_TIMEOUT(plotter->series()[1].points.size() >= 3, 10000);
         QVERIFY(model->setData(monitor, Qt::Unchecked, Qt::CheckStateRole));
         QVERIFY(!session.ros2()->isMonitored(u"/plot/pose"_s));
@@ -618,11 +638,11 @@ private slots:
         QVERIFY(blob.points.isEmpty());
         QVERIFY2(blob.errors >= 20, qPrintable(QString::number(blob.errors)));
         QCOMPARE(blob.lastError, u"no ROS 2 definition of bridgescope_test/msg/Opaque is known"_s);
-        QVERIFY2(detail->plotList()->item(2)->text().contains(u"no ROS 2 definition"_s),
-                 qPrintable(detail->plotList()->item(2)->text()));
+        QVERIFY2(plotList->item(2)->text().contains(u"no ROS 2 definition"_s),
+                 qPrintable(plotList->item(2)->text()));
 
         // the last field of a topic gone: its subscription ends with it
-        detail->plotter()->clear();
+        named<FieldPlotter>(*detail, u"fieldPlotter"_s)->clear();
         QVERIFY(!session.ros2()->isWatched(u"/plot/pose"_s));
         QVERIFY(!session.ros2()->isWatched(u"/plot/blob"_s));
     }
@@ -633,7 +653,8 @@ private slots:
     {
         mosquittoPub({u"-t"_s, u"plot/hostile"_s, u"-r"_s, u"-m"_s, u"{\"a\": 1}"_s});
         Page p(m_servers.brokerUrl());
-        DetailPane* detail = p.page.detail();
+        DetailPane* detail = only<DetailPane>(p.page);
+        QListWidget* plotList = named<QListWidget>(*detail, u"plotList"_s);
         select(p.page, u"plot/hostile"_s);
         QTRY_VERIFY(fieldAt(detail, {u"a"_s}).isValid());
         QVERIFY(plotFromView(detail, {u"a"_s}));
@@ -645,14 +666,14 @@ private slots:
         for (int i = 0; i < 2000; ++i)
             QVERIFY(publisher.publish(u"plot/hostile"_s, "{\"a\": [[[" + QByteArray::number(i)));
         QVERIFY(publisher.publish(u"plot/hostile"_s, "{\"a\": 7}"));
-        const FieldPlotter* plotter = detail->plotter();
+        const FieldPlotter* plotter = named<FieldPlotter>(*detail, u"fieldPlotter"_s);
         QTRY_VERIFY_WITH_TIMEOUT(!plotter->series()[0].points.isEmpty(), 20000);
         QCOMPARE(values(plotter->series()[0]), QList<double> {7});
         // Each of the 2001 bad payloads was counted as an error or skipped, never decoded at length.
         QCOMPARE(plotter->series()[0].errors + plotter->skippedMessages(), 2001u);
         QVERIFY(plotter->mostDecodedInATick() <= FieldPlotter::kMessagesPerTick);
-        QVERIFY2(detail->plotList()->item(0)->text().contains(u"messages without a value"_s),
-                 qPrintable(detail->plotList()->item(0)->text()));
+        QVERIFY2(plotList->item(0)->text().contains(u"messages without a value"_s),
+                 qPrintable(plotList->item(0)->text()));
     }
 };
 

@@ -10,11 +10,13 @@
 #include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
 #include "widgets/reports/reportspage.h"
+#include "windowparts.h"
 
 #include <QCheckBox>
 #include <QClipboard>
@@ -37,6 +39,8 @@
 #include <QTimer>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using namespace WindowParts;
 
 namespace {
 /// Writes `run` as a suite CSV, `hours` later than it was made (runs of a day never share samples).
@@ -114,14 +118,15 @@ private slots:
                               "topics_in_order: [/quiet/lab/a, /quiet/lab/b, /quiet/lab/c, /quiet/lab/d, "
                               "/quiet/lab/e]\n"));
         RunBar* bar = w.measurePage()->runBar();
+        QLabel* runStatus = named<QLabel>(*bar, u"runStatus"_s);
         QString error;
         const QTime started = QTime::currentTime();
         QVERIFY2(
             noted(bar->startRecording(m_dir.filePath(u"silent.bsrun"_s), u"silent"_s, QString()), &error),
             qPrintable(error));
-        QVERIFY(!bar->statusLabel()->text().contains(u"nothing has arrived"_s)); // not at once
-        QTRY_VERIFY_WITH_TIMEOUT(bar->statusLabel()->text().contains(u"nothing has arrived"_s), 9000);
-        const QString said = bar->statusLabel()->toolTip();
+        QVERIFY(!runStatus->text().contains(u"nothing has arrived"_s)); // not at once
+        QTRY_VERIFY_WITH_TIMEOUT(runStatus->text().contains(u"nothing has arrived"_s), 9000);
+        const QString said = runStatus->toolTip();
         QVERIFY2(said.startsWith(u"nothing has arrived since %1 ("_s.arg(started.toString(u"HH:mm:ss"_s)))
                      || said.startsWith(u"nothing has arrived since %1 ("_s.arg(started.addSecs(1).toString(u"HH:mm:ss"_s))),
                  qPrintable(said));
@@ -129,10 +134,10 @@ private slots:
                  qPrintable(said));
         QVERIFY2(said.contains(u"the ROS master "_s + m_servers.rosMasterUri()), qPrintable(said));
         // Shown where the recording is, within the window's width.
-        QVERIFY(bar->statusLabel()->isVisible());
+        QVERIFY(runStatus->isVisible());
         QVERIFY2(w.width() <= 1280, qPrintable(QString::number(w.width())));
         QVERIFY2(noted(bar->stopRecording(), &error) || !error.isEmpty(), qPrintable(error));
-        QCOMPARE(bar->statusLabel()->toolTip(), QString());
+        QCOMPARE(runStatus->toolTip(), QString());
     }
 
     void recordsOpensAndGoesBackToLive()
@@ -141,15 +146,17 @@ private slots:
         QVERIFY(showMeasuring(w, u"lab.yaml"_s, "topics_in_order: [/lab/a, /lab/b, /lab/c]\nhosts: {/lab/c: cloud}\n"));
         MeasurePage* page = w.measurePage();
         RunBar* bar = page->runBar();
+        QLabel* runStatus = named<QLabel>(*bar, u"runStatus"_s);
         QString error;
 
         const QString path = m_dir.filePath(u"runs/gui.bsrun"_s); // the folder is made on the way
         QSignalSpy recorded(bar, &RunBar::runRecorded);
         QVERIFY2(noted(bar->startRecording(path, u"gui run"_s, u"from the test"_s), &error),
                  qPrintable(error));
-        QVERIFY(bar->recordButton()->text().contains(u"Stop"_s));
-        QVERIFY(!bar->openButton()->isEnabled());
-        QVERIFY(!page->windowBox()->isEnabled()); // the pipeline is fixed while recording
+        QVERIFY(named<QPushButton>(*bar, u"recordButton"_s)->text().contains(u"Stop"_s));
+        QVERIFY(!named<QPushButton>(*bar, u"openButton"_s)->isEnabled());
+        QVERIFY(
+            !named<QSpinBox>(*page, u"windowBox"_s)->isEnabled()); // the pipeline is fixed while recording
 
         QProcess pub;
         pub.setProcessEnvironment(m_servers.rosEnvironment());
@@ -159,26 +166,26 @@ private slots:
                    u"/lab/c:7000"_s});
         QTRY_VERIFY_WITH_TIMEOUT(w.measure()->engine().samples() >= 150, 30000);
         QVERIFY(pub.waitForFinished(10000));
-        QVERIFY(bar->statusLabel()->text().contains(u"gui run"_s));
+        QVERIFY(runStatus->text().contains(u"gui run"_s));
         const LatencyStats live = w.measure()->engine().series(w.measure()->engine().totalSeries()).stats();
         QVERIFY2(noted(bar->stopRecording(), &error), qPrintable(error));
         QCOMPARE(recorded.count(), 1);
         QCOMPARE(recorded.first().first().toString(), path);
         // The run goes to the Reports page's inputs straight away.
-        QVERIFY(w.reportsPage()->inputs().contains(path));
-        QVERIFY(page->windowBox()->isEnabled());
+        QVERIFY(reportsPage(w)->inputs().contains(path));
+        QVERIFY(named<QSpinBox>(*page, u"windowBox"_s)->isEnabled());
 
         // Opened again, the Measure page shows it as it was; live stamps wait.
         QVERIFY2(bar->openRun(path, &error), qPrintable(error));
         QVERIFY(w.measure()->isShowingRun());
-        QVERIFY(bar->liveButton()->isVisible());
-        QVERIFY(!bar->recordButton()->isEnabled());
+        QVERIFY(named<QPushButton>(*bar, u"liveButton"_s)->isVisible());
+        QVERIFY(!named<QPushButton>(*bar, u"recordButton"_s)->isEnabled());
         const LatencyStats shown = w.measure()->engine().series(w.measure()->engine().totalSeries()).stats();
         QCOMPARE(shown.count, live.count);
         QCOMPARE(shown.mean, live.mean);
         QCOMPARE(shown.p999, live.p999);
-        QVERIFY(page->modeLabel()->text().contains(u"gui run"_s)
-                || bar->statusLabel()->text().contains(u"gui run"_s));
+        QVERIFY(named<QLabel>(*page, u"modeLabel"_s)->text().contains(u"gui run"_s)
+                || runStatus->text().contains(u"gui run"_s));
 
         // Save the chart as PNG and SVG, copy it to the clipboard.
         const QString png = m_dir.filePath(u"chart.png"_s);
@@ -213,8 +220,8 @@ private slots:
 
         bar->backToLive();
         QVERIFY(!w.measure()->isShowingRun());
-        QVERIFY(bar->recordButton()->isEnabled());
-        QVERIFY(bar->liveButton()->isHidden());
+        QVERIFY(named<QPushButton>(*bar, u"recordButton"_s)->isEnabled());
+        QVERIFY(named<QPushButton>(*bar, u"liveButton"_s)->isHidden());
 
         // A broken file is refused with its name; the page stays live.
         const QString broken = m_dir.filePath(u"broken.bsrun"_s);
@@ -230,7 +237,7 @@ private slots:
     void comparesThreeRunsAndExportsEveryFormat()
     {
         MainWindow w;
-        ReportsPage* reports = w.reportsPage();
+        ReportsPage* reports = reportsPage(w);
         w.resize(1280, 800); // the size of a first start (the README shows it)
         w.show();
         w.pages()->setCurrentWidget(reports);
@@ -247,7 +254,7 @@ private slots:
         QVERIFY(enter.isAccepted());
         QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
         QCoreApplication::sendEvent(reports, &drop);
-        QCOMPARE(reports->inputList()->count(), 3);
+        QCOMPARE(named<QListWidget>(*reports, u"reportInputs"_s)->count(), 3);
         QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty() && !reports->isBusy(), 30000);
         const QStringList columns = markdownColumns(reports->previewText());
         QCOMPARE(columns.size(), 4); // the stages and one column per run, in input order
@@ -256,10 +263,10 @@ private slots:
 
         // Joined, the three files are one run: one column.
         updated.clear();
-        reports->joinBox()->click();
+        named<QCheckBox>(*reports, u"joinBox"_s)->click();
         QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty() && !reports->isBusy(), 30000);
         QCOMPARE(markdownColumns(reports->previewText()).first(), u"Stage"_s); // one run's statistics
-        reports->joinBox()->click();
+        named<QCheckBox>(*reports, u"joinBox"_s)->click();
         QTRY_VERIFY_WITH_TIMEOUT(markdownColumns(reports->previewText()).size() == 4 && !reports->isBusy(),
                                  30000);
 
@@ -290,13 +297,13 @@ private slots:
         reports->setFormat(ReportFormats::Format::Csv);
         QVERIFY(!reports->exportTo(m_dir.filePath(u"compared.csv"_s), &error));
         // Issue 40, point 10: the window names its checkbox, not the command line's --join.
-        const QString joinBox = reports->joinBox()->text().remove(u'&');
+        const QString joinBox = named<QCheckBox>(*reports, u"joinBox"_s)->text().remove(u'&');
         QVERIFY2(error.contains(joinBox) && !error.contains(u"--join"_s), qPrintable(error));
         QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty() && !reports->isBusy(), 30000);
         QVERIFY2(reports->previewText().contains(joinBox) && !reports->previewText().contains(u"--join"_s),
                  qPrintable(reports->previewText()));
         QVERIFY(!QFile::exists(m_dir.filePath(u"compared.csv"_s)));
-        reports->joinBox()->click();
+        named<QCheckBox>(*reports, u"joinBox"_s)->click();
         QVERIFY2(reports->exportTo(m_dir.filePath(u"joined.csv"_s), &error), qPrintable(error));
         QFile joined(m_dir.filePath(u"joined.csv"_s));
         QVERIFY(joined.open(QIODevice::ReadOnly));
@@ -304,7 +311,7 @@ private slots:
             = noted(SuiteCsv::parse(joined.readAll(), joined.fileName()), &error);
         QVERIFY2(rows, qPrintable(error));
         QCOMPARE(rows->samples.size(), std::size_t(900)); // three runs of 300 samples
-        reports->joinBox()->click();
+        named<QCheckBox>(*reports, u"joinBox"_s)->click();
         for (const auto& [format, suffix] : {std::pair {ReportFormats::Format::Json, u"json"_s},
                                              {ReportFormats::Format::Latex, u"tex"_s},
                                              {ReportFormats::Format::Html, u"html"_s}}) {
@@ -326,7 +333,7 @@ private slots:
     {
         const QString big = writeCsv(m_dir, u"long.csv"_s, SyntheticRun::paper(180'000, 0, 9), 5);
         MainWindow w;
-        ReportsPage* reports = w.reportsPage();
+        ReportsPage* reports = reportsPage(w);
         w.show();
         w.pages()->setCurrentWidget(reports);
         QVERIFY(QTest::qWaitForWindowExposed(&w));

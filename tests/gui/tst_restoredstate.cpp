@@ -29,6 +29,7 @@
 #include "widgets/map/configeditor.h"
 #include "widgets/map/mappage.h"
 #include "widgets/measure/measurepage.h"
+#include "windowparts.h"
 
 #include <memory>
 #include <QChartView>
@@ -45,6 +46,9 @@
 #include <QTreeView>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
+using namespace WindowParts;
 
 namespace {
 /// The figure columns of a table: every column but these.
@@ -108,7 +112,7 @@ class TestRestoredState : public QObject
     void visitEveryPage()
     {
         MainWindow& w = *m_window;
-        for (QWidget* page : {static_cast<QWidget*>(w.discoverPage()), static_cast<QWidget*>(w.mapPage()),
+        for (QWidget* page : {static_cast<QWidget*>(w.discoverPage()), static_cast<QWidget*>(mapPage(w)),
                               static_cast<QWidget*>(w.linksPage()), static_cast<QWidget*>(w.measurePage())}) {
             w.pages()->setCurrentWidget(page);
             // The columns fit themselves 100 ms after they are shown: until none cuts a figure.
@@ -136,13 +140,14 @@ class TestRestoredState : public QObject
         MainWindow& w = *m_window;
         w.pages()->setCurrentWidget(w.measurePage());
         MeasurePage* measure = w.measurePage();
-        const QList<int> stats = allBut(measure->statsView()->model(), {LatencyStatsModel::SeriesColumn});
-        checkFigures(measure->summaryView(), stats);
-        checkFigures(measure->statsView(), stats);
-        checkFigures(measure->pipelineView(), {PipelineModel::IndexColumn});
+        const QList<int> stats
+            = allBut(named<QTableView>(*measure, u"statsView"_s)->model(), {LatencyStatsModel::SeriesColumn});
+        checkFigures(named<QTableView>(*measure, u"summaryView"_s), stats);
+        checkFigures(named<QTableView>(*measure, u"statsView"_s), stats);
+        checkFigures(named<QTableView>(*measure, u"pipelineView"_s), {PipelineModel::IndexColumn});
 
         w.pages()->setCurrentWidget(w.linksPage());
-        QTableView* links = w.linksPage()->linkView();
+        QTableView* links = named<QTableView>(*w.linksPage(), u"linkTable"_s);
         QTRY_VERIFY(links->model()->rowCount() > 0);
         checkFigures(links,
                      {LinkModel::StateColumn, LinkModel::BridgeColumn, LinkModel::DirectionColumn,
@@ -151,8 +156,8 @@ class TestRestoredState : public QObject
         checkNames(links, LinkModel::SourceColumn, 1);
         checkNames(links, LinkModel::DestinationColumn, 1);
 
-        w.pages()->setCurrentWidget(w.mapPage());
-        QTableView* mappings = w.mapPage()->editor()->table();
+        w.pages()->setCurrentWidget(mapPage(w));
+        QTableView* mappings = mapPage(w)->editor()->table();
         checkFigures(mappings, {MappingModel::HealthColumn});
         checkNames(mappings, MappingModel::RosTopicColumn, 1);
 
@@ -193,7 +198,7 @@ private slots:
         open(1, 1234);
         const LatencyEngine& engine = m_window->measure()->engine();
         QTRY_VERIFY_WITH_TIMEOUT(engine.series(engine.totalSeries()).stats().max > 1000, 20000);
-        checkEveryView(m_window->discoverPage()->rosView());
+        checkEveryView(named<QTableView>(*m_window->discoverPage(), u"rosTopics"_s));
         quit();
     }
 
@@ -205,9 +210,11 @@ private slots:
         DiscoverPage* discover = m_window->discoverPage();
         QCOMPARE(discover->rosGraphs(), DiscoverPage::RosGraphs::Ros2);
         QCOMPARE(discover->rosGraphsBox()->currentText(), u"ROS 2"_s);
-        QCOMPARE(discover->rosTabs()->currentWidget()->findChild<QTableView*>(), discover->ros2View());
-        QTRY_VERIFY_WITH_TIMEOUT(discover->ros2View()->model()->rowCount() >= 10, 20000);
-        checkEveryView(discover->ros2View());
+        QCOMPARE(named<QTabWidget>(*discover, u"rosTabs"_s)->currentWidget()->findChild<QTableView*>(),
+                 named<QTableView>(*discover, u"ros2Topics"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(named<QTableView>(*discover, u"ros2Topics"_s)->model()->rowCount() >= 10,
+                                 20000);
+        checkEveryView(named<QTableView>(*discover, u"ros2Topics"_s));
         quit();
     }
 
@@ -220,10 +227,11 @@ private slots:
         m_window->pages()->setCurrentWidget(discover);
         QCOMPARE(discover->rosGraphs(), DiscoverPage::RosGraphs::Ros1);
         QCOMPARE(discover->rosGraphsBox()->currentText(), u"ROS 1"_s);
-        QTRY_VERIFY(discover->rosView()->isVisible());
-        QVERIFY(!discover->ros2View()->isVisible());
-        QTRY_VERIFY_WITH_TIMEOUT(discover->rosView()->model()->rowCount() >= 19, 20000);
-        checkEveryView(discover->rosView());
+        QTRY_VERIFY(named<QTableView>(*discover, u"rosTopics"_s)->isVisible());
+        QVERIFY(!named<QTableView>(*discover, u"ros2Topics"_s)->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(named<QTableView>(*discover, u"rosTopics"_s)->model()->rowCount() >= 19,
+                                 20000);
+        checkEveryView(named<QTableView>(*discover, u"rosTopics"_s));
         quit();
     }
 
@@ -236,7 +244,7 @@ private slots:
         MainWindow& w = *m_window;
         DiscoverPage* discover = w.discoverPage();
         w.pages()->setCurrentWidget(discover);
-        QTableView* ros = discover->rosView();
+        QTableView* ros = named<QTableView>(*discover, u"rosTopics"_s);
         QTRY_VERIFY_WITH_TIMEOUT(ros->model()->rowCount() >= 19, 20000);
         QTreeView* tree = discover->mqttView();
         const QModelIndex topic = ViewHelpers::find(tree->model(), u"benchmarking_suite/pointcloud"_s,
@@ -266,7 +274,7 @@ private slots:
         checkNames(ros, TopicTableModel::TypeColumn, 19);
 
         // The selection opened the detail: its tabs whole, side by side.
-        QTabBar* tabs = discover->detail()->findChild<QTabWidget*>()->tabBar();
+        QTabBar* tabs = only<DetailPane>(*discover)->findChild<QTabWidget*>()->tabBar();
         QTRY_VERIFY(tabs->isVisible());
         for (int i = 0; i < tabs->count(); ++i) {
             const QString text = tabs->tabText(i).remove(u'&');
@@ -278,8 +286,8 @@ private slots:
                                     .arg(rect.x())
                                     .arg(tabs->width())));
         }
-        QVERIFY2(discover->detail()->height() >= 200,
-                 qPrintable(QString::number(discover->detail()->height())));
+        QVERIFY2(only<DetailPane>(*discover)->height() >= 200,
+                 qPrintable(QString::number(only<DetailPane>(*discover)->height())));
     }
 
     // Point 9: the ECDF's legend names each series whole (it read `object_detection…`,

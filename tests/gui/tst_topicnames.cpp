@@ -30,6 +30,7 @@
 #include "widgets/map/mappage.h"
 #include "widgets/map/mappinginspector.h"
 #include "widgets/measure/measurepage.h"
+#include "windowparts.h"
 
 #include <QChart>
 #include <QElapsedTimer>
@@ -50,6 +51,9 @@
 #include <QTreeView>
 
 using namespace Qt::StringLiterals;
+using ViewHelpers::named;
+using ViewHelpers::only;
+using namespace WindowParts;
 
 class TestTopicNames : public QObject
 {
@@ -111,35 +115,40 @@ private:
     {
         MainWindow* w = m_window.get();
         w->pages()->setCurrentWidget(w->discoverPage());
-        checkNames(w->discoverPage()->rosView(), TopicTableModel::TopicColumn, 19);
-        checkNames(w->discoverPage()->rosView(), TopicTableModel::TypeColumn, 19);
-        w->pages()->setCurrentWidget(w->mapPage());
+        checkNames(named<QTableView>(*w->discoverPage(), u"rosTopics"_s), TopicTableModel::TopicColumn, 19);
+        checkNames(named<QTableView>(*w->discoverPage(), u"rosTopics"_s), TopicTableModel::TypeColumn, 19);
+        w->pages()->setCurrentWidget(mapPage(*w));
         // The Map's ROS topics are a namespace tree: every row's own segment whole.
         for (int column : {int(TopicTree::TopicColumn), int(TopicTree::TypeColumn)}) {
             QString problem;
             (void)QTest::qWaitFor(
-                [&] { return (problem = treeNamesShownProblem(w->mapPage()->rosView(), column, 19)).isEmpty(); },
+                [&] {
+                    return (problem = treeNamesShownProblem(named<QTreeView>(*mapPage(*w), u"mapRosTopics"_s),
+                                                            column, 19))
+                        .isEmpty();
+                },
                 3000);
             QVERIFY2(problem.isEmpty(), qPrintable(problem));
         }
-        checkNames(w->mapPage()->editor()->table(), MappingModel::RosTopicColumn, 2);
-        checkNames(w->mapPage()->editor()->table(), MappingModel::MqttTopicColumn, 2);
-        checkNoSideways(w->mapPage()->rosView());
-        checkNoSideways(w->mapPage()->editor()->table());
+        checkNames(mapPage(*w)->editor()->table(), MappingModel::RosTopicColumn, 2);
+        checkNames(mapPage(*w)->editor()->table(), MappingModel::MqttTopicColumn, 2);
+        checkNoSideways(named<QTreeView>(*mapPage(*w), u"mapRosTopics"_s));
+        checkNoSideways(mapPage(*w)->editor()->table());
         // The inspector beside the table shows the selected mapping's topics whole.
-        QTableView* mappings = w->mapPage()->editor()->table();
+        QTableView* mappings = mapPage(*w)->editor()->table();
         mappings->selectRow(0);
-        MappingInspector* inspector = w->mapPage()->editor()->inspector();
-        for (QLineEdit* edit : {inspector->rosTopicEdit(), inspector->mqttTopicEdit()}) {
+        MappingInspector* inspector = only<MappingInspector>(*mapPage(*w)->editor());
+        for (QLineEdit* edit :
+             {named<QLineEdit>(*inspector, u"ros_topic"_s), named<QLineEdit>(*inspector, u"mqtt_topic"_s)}) {
             QTRY_VERIFY(!edit->text().isEmpty());
             QVERIFY2(edit->fontMetrics().horizontalAdvance(edit->text()) + 12 <= edit->width(),
                      qPrintable(u"%1 in %2 px"_s.arg(edit->text()).arg(edit->width())));
         }
         w->pages()->setCurrentWidget(w->measurePage());
-        checkNames(w->measurePage()->pipelineView(), PipelineModel::TopicColumn, 8);
-        checkPrefixSaid(w->measurePage()->pipelineView(), PipelineModel::TopicColumn);
+        checkNames(named<QTableView>(*w->measurePage(), u"pipelineView"_s), PipelineModel::TopicColumn, 8);
+        checkPrefixSaid(named<QTableView>(*w->measurePage(), u"pipelineView"_s), PipelineModel::TopicColumn);
         // The stamp topics seen: a list, whose caption says the prefix its rows leave out.
-        QListView* seen = w->measurePage()->stampTopicsView();
+        QListView* seen = named<QListView>(*w->measurePage(), u"stampTopicsView"_s);
         checkNames(seen, 0, 8);
         auto* seenNames = qobject_cast<NameDelegate*>(seen->itemDelegateForColumn(0));
         QVERIFY(seenNames);
@@ -154,15 +163,15 @@ private:
                 QVERIFY(!seenNames->displayedText(seen->model()->index(r, 0)).startsWith(prefix));
         }
         w->pages()->setCurrentWidget(w->linksPage());
-        checkNames(w->linksPage()->linkView(), LinkModel::SourceColumn, 4);
-        checkNames(w->linksPage()->linkView(), LinkModel::DestinationColumn, 4);
-        checkNotCutWithRoom(w->linksPage()->linkView());
+        checkNames(named<QTableView>(*w->linksPage(), u"linkTable"_s), LinkModel::SourceColumn, 4);
+        checkNames(named<QTableView>(*w->linksPage(), u"linkTable"_s), LinkModel::DestinationColumn, 4);
+        checkNotCutWithRoom(named<QTableView>(*w->linksPage(), u"linkTable"_s));
         w->pages()->setCurrentWidget(w->discoverPage());
-        checkNotCutWithRoom(w->discoverPage()->rosView());
-        w->pages()->setCurrentWidget(w->mapPage());
-        checkNotCutWithRoom(w->mapPage()->editor()->table());
+        checkNotCutWithRoom(named<QTableView>(*w->discoverPage(), u"rosTopics"_s));
+        w->pages()->setCurrentWidget(mapPage(*w));
+        checkNotCutWithRoom(mapPage(*w)->editor()->table());
         w->pages()->setCurrentWidget(w->measurePage());
-        checkNotCutWithRoom(w->measurePage()->pipelineView());
+        checkNotCutWithRoom(named<QTableView>(*w->measurePage(), u"pipelineView"_s));
     }
 
 private slots:
@@ -187,8 +196,10 @@ private slots:
         w->resize(1280, 800);
         w->show();
         QVERIFY(QTest::qWaitForWindowExposed(w));
-        QTRY_VERIFY_WITH_TIMEOUT(w->discoverPage()->rosView()->model()->rowCount() >= 19, 15000);
-        QTRY_VERIFY_WITH_TIMEOUT(w->linksPage()->linkView()->model()->rowCount() >= 4, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            named<QTableView>(*w->discoverPage(), u"rosTopics"_s)->model()->rowCount() >= 19, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(named<QTableView>(*w->linksPage(), u"linkTable"_s)->model()->rowCount() >= 4,
+                                 15000);
     }
 
     void distinctAt1280x800()
@@ -200,7 +211,7 @@ private slots:
         QVERIFY2(m_roomy.contains(u"linkTable"_s), qPrintable(m_roomy.values().join(u", "_s)));
         // What the views drew before: Qt's middle elision at the same width joins stamp topics.
         // (the width the Map's topic tree gives its names)
-        QTreeView* map = m_window->mapPage()->rosView();
+        QTreeView* map = named<QTreeView>(*mapPage(*m_window), u"mapRosTopics"_s);
         const QAbstractItemModel* model = m_window->session()->rosTopics();
         QHash<QString, QString> nameOf;
         int joined = 0;
@@ -285,8 +296,8 @@ private slots:
         MainWindow* w = m_window.get();
         w->resize(1280, 800);
         QTRY_COMPARE(w->size(), QSize(1280, 800));
-        w->pages()->setCurrentWidget(w->mapPage());
-        QTableView* table = w->mapPage()->editor()->table();
+        w->pages()->setCurrentWidget(mapPage(*w));
+        QTableView* table = mapPage(*w)->editor()->table();
         const QAbstractItemModel* model = table->model();
         const auto healthy = [&] {
             int n = 0;
@@ -361,7 +372,7 @@ private slots:
 
     void fullNameInTheTooltip()
     {
-        QTableView* view = m_window->discoverPage()->rosView();
+        QTableView* view = named<QTableView>(*m_window->discoverPage(), u"rosTopics"_s);
         const QModelIndex index = view->model()->index(0, TopicTableModel::TopicColumn);
         QCOMPARE(index.data(Qt::ToolTipRole).toString(), index.data().toString());
     }
@@ -374,7 +385,7 @@ private slots:
         w->resize(1280, 800);
         w->pages()->setCurrentWidget(w->discoverPage());
         const QString topic = u"/mqtt_interface_vehicle/latencies/vehicle/object_list"_s;
-        QTableView* view = w->discoverPage()->rosView();
+        QTableView* view = named<QTableView>(*w->discoverPage(), u"rosTopics"_s);
         const QAbstractItemModel* model = view->model();
         QModelIndex row;
         for (int r = 0; r < model->rowCount(); ++r)
@@ -383,19 +394,19 @@ private slots:
         QVERIFY2(row.isValid(), "the demo has no latency topic");
         QVERIFY(view->model()->setData(row, Qt::Checked, Qt::CheckStateRole));
         view->setCurrentIndex(row.siblingAtColumn(TopicTableModel::TopicColumn));
-        DetailPane* detail = w->discoverPage()->detail();
+        DetailPane* detail = only<DetailPane>(*w->discoverPage());
         QTRY_COMPARE(detail->topic(), topic);
         const auto dataField = [detail]() -> QModelIndex {
-            const QAbstractItemModel* m = detail->fieldsView()->model();
+            const QAbstractItemModel* m = named<QTreeView>(*detail, u"fields"_s)->model();
             for (int r = 0; r < m->rowCount(); ++r)
                 if (m->index(r, 0).data(DetailPane::FieldPathRole).toStringList() == QStringList {u"data"_s})
                     return m->index(r, 0);
             return {};
         };
         QTRY_VERIFY_WITH_TIMEOUT(dataField().isValid(), 15000);
-        detail->fieldsView()->setCurrentIndex(dataField());
-        detail->plotAction()->trigger(); // as Ctrl+L does
-        const FieldPlotter* plotter = detail->plotter();
+        named<QTreeView>(*detail, u"fields"_s)->setCurrentIndex(dataField());
+        named<QAction>(*detail, u"plotAction"_s)->trigger(); // as Ctrl+L does
+        const FieldPlotter* plotter = named<FieldPlotter>(*detail, u"fieldPlotter"_s);
         QCOMPARE(plotter->series().size(), 1);
         QTRY_VERIFY_WITH_TIMEOUT(plotter->series()[0].points.size() >= 30, 20000);
         // One point per message at 10 Hz, in time order, each a latency in seconds (mqtt_client's
@@ -413,8 +424,9 @@ private slots:
         // With the other bridge's latency beside it, the legend (the list below the chart, issue 40)
         // names both whole: topic and field, each entry as tall as its wrapped name needs.
         const QString other = u"/mqtt_interface_cloud/latencies/cloud/pointcloud"_s;
-        QVERIFY(detail->plotter()->add({PlotField::Source::Ros, other, {u"data"_s}}));
-        FieldPlotChart* chart = detail->plotChart();
+        QVERIFY(named<FieldPlotter>(*detail, u"fieldPlotter"_s)
+                    ->add({PlotField::Source::Ros, other, {u"data"_s}}));
+        FieldPlotChart* chart = named<FieldPlotChart>(*detail, u"plotChart"_s);
         detail->findChild<QTabWidget*>()->setCurrentWidget(chart->parentWidget());
         QTRY_COMPARE(chart->lines().size(), 2);
         QTRY_VERIFY(chart->lines()[1]->count() > 0);
@@ -422,7 +434,7 @@ private slots:
         const QString second = chart->lines()[1]->name();
         QCOMPARE(first, topic + u": data"_s);
         QCOMPARE(second, other + u": data"_s);
-        QListWidget* legend = detail->plotList();
+        QListWidget* legend = named<QListWidget>(*detail, u"plotList"_s);
         QTRY_COMPARE(legend->count(), 2);
         for (int i = 0; i < 2; ++i) {
             const QRect rect = legend->visualItemRect(legend->item(i));
@@ -433,7 +445,8 @@ private slots:
                      qPrintable(legend->item(i)->text()));
         }
         if (const QString dir = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
-            detail->findChild<QTabWidget*>()->setCurrentWidget(detail->plotChart()->parentWidget());
+            detail->findChild<QTabWidget*>()->setCurrentWidget(
+                named<FieldPlotChart>(*detail, u"plotChart"_s)->parentWidget());
             QTest::qWait(500);
             w->grab().save(dir + u"/field-plot.png"_s);
         }

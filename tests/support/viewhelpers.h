@@ -13,6 +13,29 @@
 
 /// What GUI tests do to item views: find rows, and drag between views as a real drag would.
 namespace ViewHelpers {
+/// The child of `parent` (any depth) of type W named `name`; stops the test naming what is missing
+/// instead of letting it crash on a null pointer (tests find widgets by object name, issue 42).
+template<typename W> W* named(const QObject& parent, const QString& name)
+{
+    W* w = parent.findChild<W*>(name);
+    if (!w)
+        qFatal("%s has no %s named %s", parent.metaObject()->className(), W::staticMetaObject.className(),
+               qPrintable(name));
+    return w;
+}
+
+/// The one child of `parent` (any depth) of type W; stops the test when there is none or more.
+/// For containers the window memory keys by their class: a name would move where the sizes and
+/// columns of everything inside them are saved (WindowMemory::keyOf), so they have none.
+template<typename W> W* only(const QObject& parent)
+{
+    const QList<W*> found = parent.findChildren<W*>();
+    if (found.size() != 1)
+        qFatal("%s has %lld %s, not one", parent.metaObject()->className(), qlonglong(found.size()),
+               W::staticMetaObject.className());
+    return found.first();
+}
+
 /// The action `text` of the menu `menu` in `w`'s menu bar (accelerators ignored), or nullptr.
 inline QAction* menuAction(QMainWindow& w, const QString& menu, const QString& text)
 {

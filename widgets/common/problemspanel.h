@@ -16,7 +16,6 @@ class ProblemsPanel : public QWidget
     Q_OBJECT
 public:
     explicit ProblemsPanel(ConfigDocument* document, QWidget* parent = nullptr);
-    QTreeView* view() const { return m_view; }
     ProblemModel* model() const { return m_model; }
 
 signals:

@@ -57,6 +57,8 @@ TimelineChart::TimelineChart(QWidget* parent)
         line->setPen(Qt::NoPen);
         m_legend->addEntry(line, s->name());
     }
+    m_x->setObjectName(u"timeAxis"_s);
+    m_y->setObjectName(u"latencyAxis"_s);
     chart->addAxis(m_x, Qt::AlignBottom);
     chart->addAxis(m_y, Qt::AlignLeft);
     for (QLineSeries* s : {m_max, m_mean}) {

@@ -21,8 +21,6 @@ public:
     void refresh();
     /// Points drawn (tests).
     qsizetype pointCount() const;
-    QDateTimeAxis* timeAxis() const { return m_x; }
-    QValueAxis* latencyAxis() const { return m_y; }
 
 protected:
     void changeEvent(QEvent* event) override; ///< a new palette recolours it

@@ -168,6 +168,10 @@ DetailPane::DetailPane(const Parts& parts, QWidget* parent)
     m_tabs->setElideMode(Qt::ElideNone); // `B…` told nothing; a narrow pane scrolls its tabs
     m_tabs->setUsesScrollButtons(true);
 
+    m_payloadNote->setObjectName(u"payloadNote"_s);
+    m_plotter->setObjectName(u"fieldPlotter"_s);
+    m_plotNote->setObjectName(u"plotNote"_s);
+    m_plotAction->setObjectName(u"plotAction"_s);
     m_fields->setObjectName(u"fields"_s);
     m_fields->setModel(m_fieldModel);
     m_fields->setUniformRowHeights(true);

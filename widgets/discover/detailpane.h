@@ -57,17 +57,7 @@ public:
     void refresh();
 
     QString topic() const { return m_topic; }
-    QTreeView* fieldsView() const { return m_fields; }
-    QPlainTextEdit* payloadView() const { return m_payload; }
-    QLabel* payloadNote() const { return m_payloadNote; }
     QLabel* title() const { return m_title; }
-    FieldPlotter* plotter() const { return m_plotter; }
-    FieldPlotChart* plotChart() const { return m_plotChart; }
-    QListWidget* plotList() const { return m_plotList; }
-    QAction* plotAction() const { return m_plotAction; }
-    QLabel* plotNote() const { return m_plotNote; }
-    QSpinBox* plotSeconds() const { return m_plotSeconds; }
-    QSpinBox* plotPoints() const { return m_plotPoints; }
     /// Plots the numeric field at `index` of the fields view over time; false if it is none.
     bool plotField(const QModelIndex& index);
     /// What a legend entry's icon and the margins around its text take of its width.

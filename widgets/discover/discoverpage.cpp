@@ -403,6 +403,7 @@ void DiscoverPage::selectTopic()
 void DiscoverPage::createMqttActions()
 {
     m_publishAction = new QAction(tr("&Publish…"), this);
+    m_publishAction->setObjectName(u"publishAction"_s);
     m_publishAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_publishAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_publishAction->setToolTip(tr("Publish a message to the selected topic (Ctrl+P)"));

@@ -62,26 +62,17 @@ public:
     /// The ROS 2 domain (and whether discovery stays on this host); joins it again when ROS 2 is shown.
     void setRos2Options(const Ros2Options& options);
     Ros2Options ros2Options() const;
-    QTableView* ros2View() const { return m_ros2View; }
-    QLabel* ros2Status() const { return m_ros2State; }
     QComboBox* rosGraphsBox() const { return m_graphsBox; }
-    QTabWidget* rosTabs() const { return m_rosTabs; }
 
     /// Connects to `profile` (and remembers it as the last one used).
     void connectBroker(const MqttProfile& profile);
     void setRosMasterUri(const QString& uri);
 
-    QTableView* rosView() const { return m_rosView; }
     QTreeView* mqttView() const { return m_mqttView; }
-    DetailPane* detail() const { return m_detail; }
     QLineEdit* rosFilter() const { return m_rosFilter; }
     QLineEdit* mqttFilter() const { return m_mqttFilter; }
     MqttTopicFilter* mqttFilterModel() const { return m_mqttProxy; }
     QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
-    QLabel* mqttStatus() const { return m_mqttState; }
-    LiveText* mqttCounters() const { return m_counters; }
-    QLabel* rosStatus() const { return m_rosState; }
-    QAction* publishAction() const { return m_publishAction; }
     QAction* clearRetainedAction() const { return m_clearRetainedAction; }
 
     /// Opens a publish dialog for the selected MQTT topic (or level), beside the page.

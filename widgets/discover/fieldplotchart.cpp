@@ -36,6 +36,7 @@ FieldPlotChart::FieldPlotChart(QWidget* parent)
     , m_y(new QValueAxis)
 {
     QChart* chart = this->chart();
+    m_x->setObjectName(u"timeAxis"_s);
     chart->addAxis(m_x, Qt::AlignBottom);
     chart->addAxis(m_y, Qt::AlignLeft);
     chart->legend()->hide(); // the list of plotted fields is the legend: it has room for whole names

@@ -33,7 +33,6 @@ public:
     QList<QLineSeries*> runs(int field) const;
     /// The colour of field `field`'s line.
     static QColor colour(int field);
-    QValueAxis* timeAxis() const { return m_x; }
     bool isFollowing() const { return m_following; }
     /// Follows the newest values over the whole buffer again.
     void follow();

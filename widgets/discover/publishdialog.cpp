@@ -40,6 +40,9 @@ PublishDialog::PublishDialog(MqttConnection* connection, MqttTopicTree* topics, 
 {
     setWindowTitle(tr("Publish to MQTT"));
     m_topic->setObjectName(u"publishTopic"_s);
+    m_qos->setObjectName(u"publishQos"_s);
+    m_retained->setObjectName(u"publishRetained"_s);
+    m_format->setObjectName(u"publishFormat"_s);
     m_qos->addItems({u"0"_s, u"1"_s, u"2"_s});
     m_format->addItem(tr("Text"), int(Text));
     m_format->addItem(tr("JSON"), int(Json));

@@ -24,14 +24,6 @@ public:
     PublishDialog(MqttConnection* connection, MqttTopicTree* topics, const QString& topic,
                   QWidget* parent = nullptr);
 
-    QLineEdit* topicEdit() const { return m_topic; }
-    QComboBox* qosBox() const { return m_qos; }
-    QCheckBox* retainedBox() const { return m_retained; }
-    QComboBox* formatBox() const { return m_format; }
-    QPlainTextEdit* payloadEdit() const { return m_payload; }
-    QPushButton* publishButton() const { return m_publish; }
-    QLabel* status() const { return m_status; }
-
     /// Builds the payload and sends it; false (and the status says why) when nothing was sent.
     bool publish();
 

@@ -133,6 +133,7 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     , m_proxy(new LinkSortProxy(this))
 {
     setObjectName(u"linksPage"_s);
+    m_eventModel->setObjectName(u"eventModel"_s);
     m_watch->setLinkLimit(
         WatchSession::kWindowLinkLimit); // what a lab's master and broker carry for a window
     QLayout* bar = createBar();

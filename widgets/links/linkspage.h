@@ -48,18 +48,9 @@ public:
     bool setWatched(const QString& name, bool watched, QString* error = nullptr);
     /// The config in `file` is watched as soon as it is listed (the demo lab's own configs).
     void watchWhenListed(const QString& file);
-    /// The configs listed, one row each with its check (watched) and counts.
-    QTreeWidget* configList() const { return m_configList; }
-    /// What watching the current config subscribes to, or why watching was refused.
-    QLabel* planLabel() const { return m_plan; }
 
-    QTableView* linkView() const { return m_links; }
     QTableView* eventView() const { return m_events; }
     LinkModel* linkModel() const { return m_model; }
-    EventLogModel* eventModel() const { return m_eventModel; }
-    QLabel* summaryLabel() const { return m_summary; }
-    /// The selected link's figures (its name is above them, in a label of its own).
-    LiveText* detailLabel() const { return m_detail; }
     int notificationsShown() const { return m_notified; }
 
 protected:
@@ -90,6 +81,7 @@ private:
     QLineEdit* m_filter = nullptr;
     QLabel* m_summary = nullptr;
     QLabel* m_detailTitle = nullptr;
+    /// The selected link's figures (its name is above them, in a label of its own).
     LiveText* m_detail = nullptr;
     RateChart* m_rateChart = nullptr;
     RateChart* m_latencyChart = nullptr;
@@ -103,7 +95,9 @@ private:
     };
     QList<Listed> m_configs;
     QSet<QString> m_watchWhenListed; ///< files
+    /// The configs listed, one row each with its check (watched) and counts.
     QTreeWidget* m_configList = nullptr;
+    /// What watching the current config subscribes to, or why watching was refused.
     QLabel* m_plan = nullptr;
     int m_notified = 0;
 };

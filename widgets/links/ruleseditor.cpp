@@ -36,6 +36,7 @@ RulesEditor::RulesEditor(const WatchRules& rules, QWidget* parent)
     help->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     m_apply = buttons->addButton(tr("&Apply"), QDialogButtonBox::AcceptRole);
+    m_apply->setObjectName(u"rulesApply"_s);
     QPushButton* load = buttons->addButton(tr("&Open…"), QDialogButtonBox::ActionRole);
     QPushButton* save = buttons->addButton(tr("&Save As…"), QDialogButtonBox::ActionRole);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);

@@ -19,9 +19,6 @@ public:
 
     /// The rules of the text, when it is valid.
     std::optional<WatchRules> rules() const { return m_rules; }
-    QPlainTextEdit* textEdit() const { return m_text; }
-    QLabel* statusLabel() const { return m_status; }
-    QPushButton* applyButton() const { return m_apply; }
 
 private:
     void check();

@@ -46,6 +46,7 @@ ConfigEditor::ConfigEditor(ConfigDocument* document, QUndoStack* undoStack, QWid
     });
     m_icons->setSourceModel(m_model);
     m_icons->setHealthColumn(MappingModel::HealthColumn, MappingModel::HealthStateRole);
+    m_filter->setObjectName(u"mappingFilterProxy"_s);
     m_filter->setSourceModel(m_icons);
     createActions();
 

@@ -37,10 +37,6 @@ public:
 
     QTableView* table() const { return m_table; }
     MappingModel* model() const { return m_model; }
-    MappingFilterProxy* filterProxy() const { return m_filter; }
-    MappingInspector* inspector() const { return m_inspector; }
-    SettingsInspector* settings() const { return m_settings; }
-    YamlPreview* preview() const { return m_preview; }
     ProblemsPanel* problems() const { return m_problems; }
     QLineEdit* filterEdit() const { return m_filterEdit; }
 

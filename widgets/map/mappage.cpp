@@ -98,6 +98,7 @@ QLayout* MapPage::createBar()
     connect(m_toRos, &QAction::triggered, this, &MapPage::bridgeSelectedMqtt);
 
     m_showTopics = new QAction(tr("Discovered Topics"), this);
+    m_showTopics->setObjectName(u"topicsPanelAction"_s);
     m_showTopics->setCheckable(true);
     m_showTopics->setChecked(true);
     m_showTopics->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));

@@ -61,12 +61,7 @@ public:
     ~MapPage() override;
 
     ConfigEditor* editor() const { return m_editor; }
-    QTreeView* rosView() const { return m_rosView; }
     TopicTree* rosTree() const { return m_rosTree; }
-    /// Shows or folds away the panel of discovered topics.
-    QAction* topicsPanelAction() const { return m_showTopics; }
-    QTreeView* mqttView() const { return m_mqttView; }
-    QLineEdit* prefixEdit() const { return m_prefix; }
     QAction* bridgeToMqttAction() const { return m_toMqtt; }
     QAction* bridgeToRosAction() const { return m_toRos; }
 
@@ -85,7 +80,6 @@ public:
     void updateHealth();
     /// Shows a tab per config `files` has open above the page, each with its health.
     void setFileController(ConfigFileController* files);
-    ConfigTabs* configTabs() const { return m_tabs; }
     /// The config is in the ROS 2 layout and a ROS 2 graph is there to map it against.
     bool usesRos2() const;
 
@@ -126,6 +120,7 @@ private:
     TopicTree* m_rosTree;
     QTreeView* m_rosView;
     QWidget* m_topicsPanel;
+    /// Shows or folds away the panel of discovered topics.
     QAction* m_showTopics;
     FlowRates m_flows;
     BridgedTopicsProxy* m_mqttBridged;

@@ -26,8 +26,6 @@ public:
     /// Puts the keyboard focus on an option (or a topic field) of the shown mapping.
     void focusField(const QString& path);
 
-    QLineEdit* rosTopicEdit() const { return m_rosTopic; }
-    QLineEdit* mqttTopicEdit() const { return m_mqttTopic; }
     OptionForm* form(Direction d) const { return d == Direction::Ros2Mqtt ? m_outForm : m_inForm; }
 
 private:

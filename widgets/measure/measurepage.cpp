@@ -105,6 +105,11 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_runBar(new RunBar(measure, this))
 {
     setObjectName(u"measurePage"_s);
+    m_pipeline->setObjectName(u"pipelineModel"_s);
+    m_window->setObjectName(u"windowBox"_s);
+    m_log->setObjectName(u"logScaleBox"_s);
+    m_multiples->setObjectName(u"smallMultiplesBox"_s);
+    m_mode->setObjectName(u"modeLabel"_s);
     QLayout* controls = createControls();
     QWidget* pipelinePane = createPipelinePane();
     QWidget* chartPane = createChartPane();

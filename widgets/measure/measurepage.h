@@ -35,22 +35,8 @@ public:
     bool savePipeline(const QString& path, QString* error = nullptr);
 
     EcdfChart* chart() const { return m_chart; }
-    QTableView* statsView() const { return m_statsView; }
-    /// The total and the derived rows (round trip, one way, clock offset), pinned above the charts.
-    QTableView* summaryView() const { return m_summaryView; }
-    TimelineChart* timelineChart() const { return m_timeline; }
-    QTableView* pipelineView() const { return m_pipelineView; }
-    QListView* stampTopicsView() const { return m_seenView; }
-    PipelineModel* pipelineModel() const { return m_pipeline; }
-    QSpinBox* windowBox() const { return m_window; }
     QAction* pauseAction() const { return m_pause; }
     QAction* resetAction() const { return m_reset; }
-    LiveText* countsLabel() const { return m_counts; }
-    QCheckBox* logScaleBox() const { return m_log; }
-    QCheckBox* smallMultiplesBox() const { return m_multiples; }
-    QLabel* modeLabel() const { return m_mode; }
-    /// Above the pinned rows: which figures contradict the pipeline, why, and what to do.
-    QLabel* warningLabel() const { return m_warning; }
     RunBar* runBar() const { return m_runBar; }
     /// Saves the chart as PNG or SVG (by the suffix).
     bool saveChart(const QString& path, QString* error = nullptr);
@@ -92,6 +78,7 @@ private:
     StampTopicModel* m_seen;
     EcdfChart* m_chart;
     QTableView* m_statsView;
+    /// The total and the derived rows (round trip, one way, clock offset), pinned above the charts.
     QTableView* m_summaryView;
     TimelineChart* m_timeline;
     QTableView* m_pipelineView;
@@ -103,6 +90,7 @@ private:
     QAction* m_pause;
     QAction* m_reset;
     QLabel* m_mode;
+    /// Above the pinned rows: which figures contradict the pipeline, why, and what to do.
     QLabel* m_warning;
     LiveText* m_counts;
     RunBar* m_runBar;

@@ -35,6 +35,9 @@ RunBar::RunBar(MeasureSession* measure, QWidget* parent)
         tr("Record every stamp from now on into a run file, to open, compare and report later"));
     m_open->setToolTip(tr("Show a recorded run as it was, or import the suite's timestamp CSV or a ROS bag"));
     m_save->setToolTip(tr("Save the run on screen (an imported CSV or bag) as a Bridgescope run"));
+    m_record->setObjectName(u"recordButton"_s);
+    m_open->setObjectName(u"openButton"_s);
+    m_live->setObjectName(u"liveButton"_s);
     m_status->setObjectName(u"runStatus"_s);
     m_status->setWordWrap(true); // what a silent recording waits for is long: it wraps, not widens
     auto* layout = new QHBoxLayout(this);

@@ -34,11 +34,7 @@ public:
     Result<void> saveRunAs(const QString& path);
     void backToLive();
 
-    QPushButton* recordButton() const { return m_record; }
-    QPushButton* openButton() const { return m_open; }
     QPushButton* saveButton() const { return m_save; }
-    QPushButton* liveButton() const { return m_live; }
-    QLabel* statusLabel() const { return m_status; }
 
 signals:
     /// A recording finished and its file is complete.

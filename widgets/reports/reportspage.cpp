@@ -55,6 +55,7 @@ ReportsPage::ReportsPage(QWidget* parent)
     , m_debounce(new QTimer(this))
 {
     setObjectName(u"reportsPage"_s);
+    m_join->setObjectName(u"joinBox"_s);
     setAcceptDrops(true); // files dropped anywhere on the page are added
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(createSettingsPane());

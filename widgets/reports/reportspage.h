@@ -45,11 +45,7 @@ public:
     QString previewText() const;
     bool isBusy() const;
 
-    QListWidget* inputList() const { return m_inputs; }
-    QComboBox* formatBox() const { return m_format; }
-    QCheckBox* joinBox() const { return m_join; }
     QCheckBox* perSampleBox() const { return m_perSample; }
-    QLabel* statusLabel() const { return m_status; }
 
 signals:
     /// The preview shows the report of the current inputs and options.

@@ -78,6 +78,12 @@ ProbeDialog::ProbeDialog(QWidget* parent)
 {
     setWindowTitle(tr("Link Probe"));
     setObjectName(u"probeDialog"_s);
+    m_rate->setObjectName(u"rate"_s);
+    m_count->setObjectName(u"count"_s);
+    m_sweep->setObjectName(u"sweep"_s);
+    m_start->setObjectName(u"startButton"_s);
+    m_stop->setObjectName(u"stopButton"_s);
+    m_sweepResult->setObjectName(u"sweepResult"_s);
 
     auto* top = new QHBoxLayout;
     top->addLayout(createSettingsColumn(), 0);

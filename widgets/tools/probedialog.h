@@ -42,20 +42,9 @@ public:
     void setProfile(const MqttProfile& profile);
     bool isRunning() const { return m_running; }
 
-    QLineEdit* brokerEdit() const { return m_broker; }
     QSpinBox* sizeBox() const { return m_size; }
-    QDoubleSpinBox* rateBox() const { return m_rate; }
-    QComboBox* qosBox() const { return m_qos; }
-    QSpinBox* countBox() const { return m_count; }
-    QCheckBox* sweepBox() const { return m_sweep; }
     QCheckBox* viaEchoBox() const { return m_viaEcho; }
-    QPushButton* startButton() const { return m_start; }
-    QPushButton* stopButton() const { return m_stop; }
     QLabel* figure(Figure f) const { return m_figures[f]; }
-    QLabel* statusLabel() const { return m_status; }
-    QLabel* errorLabel() const { return m_error; }
-    QTableWidget* stepsView() const { return m_steps; }
-    QLabel* sweepResult() const { return m_sweepResult; }
     EcdfChart* chart() const { return m_chart; }
 
     void start();
