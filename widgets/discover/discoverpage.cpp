@@ -51,8 +51,9 @@ QString bullet(const QString& colour, const QString& text)
 }
 
 /// A graph's line in the colour of its level.
-QString bullet(const GraphStatus::Line& line, const QString& text)
+QString bullet(const GraphStatus::Line& line)
 {
+    const QString& text = line.text;
     switch (line.level) {
     case GraphStatus::Level::Ok:
         return bullet(u"#2e7d32"_s, text);
@@ -318,7 +319,7 @@ void DiscoverPage::updateRos2Status()
         return;
     }
     const GraphStatus::Line line = m_parts.graphs->ros2Line();
-    m_ros2State->setText(bullet(line, line.text));
+    m_ros2State->setText(bullet(line));
     if (line.level != GraphStatus::Level::Failed)
         m_ros2State->setToolTip(line.toolTip);
 }
@@ -617,7 +618,7 @@ void DiscoverPage::updateRosStatus()
     if (m_graphs == RosGraphs::Ros2)
         m_rosState->setText(bullet(u"#888"_s, tr("not shown (ROS 2 only)")));
     else
-        m_rosState->setText(bullet(m_parts.graphs->ros1Line(), m_parts.graphs->ros1Line().text));
+        m_rosState->setText(bullet(m_parts.graphs->ros1Line()));
 }
 
 void DiscoverPage::updateMqttStatus()
