@@ -386,10 +386,12 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
         line += Watch::tr("; %1 announced links not watched (cap %2)")
                     .arg(unwatched)
                     .arg(WatchSession::kMaxDiscoveredLinks);
+    if (const quint64 untimed = watch.droppedHeads())
+        line += Watch::tr("; %1 messages not timed (more between two reads than the watch keeps)").arg(untimed);
     if (metrics && metrics->droppedClients())
         line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
     if (ros2 && ros2->graph().omitted)
-        line += u"; "_s + ros2->omittedText();
+        line += u"; "_s + ros2->graph().omittedText();
     if (ros2 && !ros2->restartText().isEmpty())
         line += u"; "_s + ros2->restartText();
     return line;

@@ -13,11 +13,11 @@
 
 /// The topics of a graph as monitors, views and plots use them, whatever the graph: ROS 1 through
 /// the master (RosMonitor), ROS 2 through DDS (Ros2Participant), MQTT through the broker
-/// (MqttSource). Subscriptions are counted:
+/// (MqttSource). Subscriptions are counted (each user holds its own Subscriptions):
 /// the last unmonitor() that balances a monitor() ends one, so that two users (the Discover page's
 /// Mon, the Links page) do not end each other's. Whole messages come through a Tap per consumer as
 /// SourceArrival, which SourceMessage decodes as their graph serializes; every monitored message's
-/// first bytes as SourceHead (Watch).
+/// first bytes come through a HeadTap per consumer as SourceHead (Watch).
 /// One consumer's queue of a topic's whole messages (MessageSource::openTap()). Destroying it
 /// ends what it asked of its source (the last tap of a topic ends the subscription made for it);
 /// it may outlive its source, and then takes what was kept and nothing more.
@@ -28,6 +28,19 @@ public:
     /// The messages since the last call, oldest first.
     virtual std::vector<SourceArrival> take() = 0;
     /// Messages dropped because more came between two takes than the tap keeps.
+    virtual quint64 dropped() const = 0;
+};
+
+/// One consumer's buffer of every monitored message's head (MessageSource::openHeadTap()).
+/// Destroying it ends what it asked of its source; it may outlive its source.
+class HeadTap
+{
+public:
+    virtual ~HeadTap() = default;
+    /// The heads since the last call, oldest first.
+    virtual std::vector<SourceHead> take() = 0;
+    /// Heads dropped because more came between two takes than the tap keeps (on ROS 2 also those
+    /// the DDS child dropped).
     virtual quint64 dropped() const = 0;
 };
 
@@ -42,28 +55,13 @@ public:
     /// Current figures of every monitored topic (rates computed for `nowNs`), whatever the graph:
     /// what Map health and other graph-neutral views read.
     virtual QHash<QString, TopicFigures> figures(qint64 nowNs) const = 0;
-    /// From now on the head of every message of a monitored topic is also kept, up to `maxHeads`
-    /// between two takeArrivals() (more are dropped and counted); 0 stops keeping them.
-    virtual void keepArrivals(std::size_t maxHeads) = 0;
-    /// The monitored topics' message heads since the last call, oldest first.
-    virtual std::vector<SourceHead> takeArrivals() = 0;
-    virtual quint64 droppedArrivals() const = 0;
+    /// From now on, and as long as the tap is open, the head of every message of a monitored topic
+    /// is kept for this consumer, up to `maxHeads` between two HeadTap::take() (more are dropped
+    /// and counted in the tap). Every tap gets every head.
+    virtual std::unique_ptr<HeadTap> openHeadTap(std::size_t maxHeads) = 0;
     /// A queue of this topic's whole messages for one consumer: the newest `maxMessages` within
     /// `maxBytes` between two Tap::take() (older ones dropped and counted in the tap). The topic is
     /// subscribed for it, monitored or not, as long as a tap of it is open; every tap gets every
     /// message, so two consumers never take each other's.
     virtual std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) = 0;
-
-    /// For one user whose monitored topics are `held`: monitors the topics of `wanted` not held yet,
-    /// unmonitors those held no more, and holds `wanted`.
-    void monitorExactly(QSet<QString>& held, const QSet<QString>& wanted)
-    {
-        for (const QString& topic : std::as_const(held))
-            if (!wanted.contains(topic))
-                unmonitor(topic);
-        for (const QString& topic : wanted)
-            if (!held.contains(topic))
-                monitor(topic);
-        held = wanted;
-    }
 };

@@ -17,11 +17,9 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
         return;
     QHash<QString, QString> types; // a watched topic's announced type, looked up once per batch
     for (const MqttMessage& m : batch) {
-        if (m_arrivals && m_monitored.contains(m.topic)) {
-            SourceHead h {SourceGraph::Mqtt, m.topic, m.receivedNs, int(m.payload.size()),
-                          m.payload.left(SourceHead::kHeadBytes)};
-            m_arrivals->push(std::move(h));
-        }
+        if (m_heads.active() && m_monitored.contains(m.topic))
+            m_heads.deliver({SourceGraph::Mqtt, m.topic, m.receivedNs, int(m.payload.size()),
+                             m.payload.left(SourceHead::kHeadBytes)});
         if (m_taps.tapped(m.topic)) {
             auto type = types.find(m.topic);
             if (type == types.end()) {
@@ -73,22 +71,9 @@ QHash<QString, TopicFigures> MqttSource::figures(qint64 nowNs) const
     return out;
 }
 
-void MqttSource::keepArrivals(std::size_t maxHeads)
+std::unique_ptr<HeadTap> MqttSource::openHeadTap(std::size_t maxHeads)
 {
-    if (maxHeads == 0)
-        m_arrivals.reset();
-    else
-        m_arrivals = std::make_unique<EventBuffer<SourceHead>>(maxHeads);
-}
-
-std::vector<SourceHead> MqttSource::takeArrivals()
-{
-    return m_arrivals ? m_arrivals->take() : std::vector<SourceHead>();
-}
-
-quint64 MqttSource::droppedArrivals() const
-{
-    return m_arrivals ? m_arrivals->dropped() : 0;
+    return m_heads.open(maxHeads);
 }
 
 std::unique_ptr<Tap> MqttSource::openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes)

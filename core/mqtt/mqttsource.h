@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/eventbuffer.h"
+#include "latency/headhub.h"
 #include "latency/messagesource.h"
 #include "latency/taphub.h"
 #include "mqtt/mqttconnection.h"
@@ -16,7 +16,7 @@ class MqttTopicTree;
 /// Map health): what RosMonitor is to ROS 1 and Ros2Participant to ROS 2.
 ///
 /// The connection's discovery subscription already takes every topic, so monitoring subscribes to
-/// nothing: it marks the topics whose figures (figures()) and message heads (keepArrivals()) a user
+/// nothing: it marks the topics whose figures (figures()) and message heads (openHeadTap()) a user
 /// wants. The live session hands it each drain's batch (add()) on the GUI thread, where every call
 /// runs; work per message is a hash lookup, and what it keeps is bounded by the callers' limits.
 /// Figures are the topic tree's (rates, the last stamped payload's latency); the type of an arrival
@@ -35,9 +35,7 @@ public:
     void unmonitor(const QString& topic) override;
     bool isMonitored(const QString& topic) const override;
     QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
-    void keepArrivals(std::size_t maxHeads) override;
-    std::vector<SourceHead> takeArrivals() override;
-    quint64 droppedArrivals() const override;
+    std::unique_ptr<HeadTap> openHeadTap(std::size_t maxHeads) override;
     /// Subscribes to nothing (the connection takes every topic); arrivals carry the type
     /// mqtt_client announced for the topic.
     std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
@@ -45,6 +43,6 @@ public:
 private:
     const MqttTopicTree* m_tree;
     QHash<QString, int> m_monitored; ///< topic → monitor() calls not yet balanced
-    std::unique_ptr<EventBuffer<SourceHead>> m_arrivals; ///< set by keepArrivals()
+    HeadHub m_heads;
     TapHub m_taps;
 };

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
-#include "base/eventbuffer.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
+#include "latency/headhub.h"
 #include "latency/taphub.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
@@ -46,7 +46,7 @@ struct RosMonitor::Private
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
-    std::unique_ptr<EventBuffer<SourceHead>> arrivals; ///< set by keepArrivals(), under `mutex`
+    HeadHub heads; ///< its own lock
     TapHub taps; ///< its own lock; a tapped topic is monitored while a tap of it is open
 
     void record(const QString& topic, const topic_tools::ShapeShifter::ConstPtr& msg)
@@ -67,9 +67,8 @@ struct RosMonitor::Private
             t.stats.md5 = QString::fromStdString(msg->getMD5Sum());
             t.stats.definition = QString::fromStdString(msg->getMessageDefinition());
         }
-        if (arrivals)
-            arrivals->push(SourceHead {SourceGraph::Ros1, topic, now, t.stats.lastSize,
-                                       bytes.left(SourceHead::kHeadBytes)});
+        if (heads.active())
+            heads.deliver({SourceGraph::Ros1, topic, now, t.stats.lastSize, bytes.left(SourceHead::kHeadBytes)});
         taps.deliver({SourceGraph::Ros1, topic, {}, now, bytes}); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
         t.rates.add(now, t.stats.lastSize);
@@ -186,25 +185,9 @@ void RosMonitor::resubscribeAll()
     d->subscribeAll(d, this);
 }
 
-void RosMonitor::keepArrivals(std::size_t maxArrivals)
+std::unique_ptr<HeadTap> RosMonitor::openHeadTap(std::size_t maxHeads)
 {
-    std::lock_guard<std::mutex> lock(d->mutex);
-    if (maxArrivals == 0)
-        d->arrivals.reset();
-    else
-        d->arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
-}
-
-std::vector<SourceHead> RosMonitor::takeArrivals()
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->arrivals ? d->arrivals->take() : std::vector<SourceHead>();
-}
-
-quint64 RosMonitor::droppedArrivals() const
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->arrivals ? d->arrivals->dropped() : 0;
+    return d->heads.open(maxHeads);
 }
 
 std::unique_ptr<Tap> RosMonitor::openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes)

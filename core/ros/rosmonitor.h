@@ -37,9 +37,7 @@ public:
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, TopicStats> snapshot(qint64 nowNs) const;
     QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
-    void keepArrivals(std::size_t maxArrivals) override;
-    std::vector<SourceHead> takeArrivals() override;
-    quint64 droppedArrivals() const override;
+    std::unique_ptr<HeadTap> openHeadTap(std::size_t maxHeads) override;
     /// While a tap of a topic is open, the topic is monitored for it (one use, counted with the
     /// others); its messages come without their type (the monitor's figures have it).
     std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;

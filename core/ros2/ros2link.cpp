@@ -11,7 +11,9 @@ using Ros2Protocol::Kind;
 Ros2Link::Ros2Link(DdsChildPipe& pipe, QObject* parent)
     : QObject(parent)
     , m_pipe(pipe)
+    , m_watches(pipe)
     , m_endpoints(pipe, this)
+    , m_heads([this](std::size_t largestBound) { keepHeads(largestBound); })
 { }
 
 void Ros2Link::replay(const Ros2Options& options)
@@ -19,8 +21,7 @@ void Ros2Link::replay(const Ros2Options& options)
     m_pipe.send(Kind::Start, Ros2Protocol::encodeStart({options, m_graphInterval}));
     if (m_keepArrivals)
         m_pipe.send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(m_keepArrivals));
-    for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
-        m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(it.key())));
+    m_watches.replay();
     for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
         m_pipe.send(Kind::Monitor, Ros2Protocol::encodeStrings({it.key()}));
     m_endpoints.replay();
@@ -42,14 +43,8 @@ void Ros2Link::childStopped()
 {
     m_graph = Ros2Graph();
     m_stats.clear();
-    for (auto it = m_watched.begin(); it != m_watched.end(); ++it) {
-        for (Reader& r : it->readers)
-            r.queue.reset();
-        it->childDropped = 0;
-    }
-    if (m_arrivals)
-        m_arrivals = std::make_unique<EventBuffer<SourceHead>>(m_keepArrivals);
-    m_childDroppedArrivals = 0;
+    m_watches.childStopped();
+    m_childDroppedHeads = 0;
 }
 
 void Ros2Link::setGraphInterval(int ms)
@@ -82,7 +77,7 @@ bool Ros2Link::handle(const Ros2Protocol::Frame& f)
     case Kind::Stats:
         return onStats(f.body);
     case Kind::Samples:
-        return onSamples(f.body);
+        return m_watches.onSamples(f.body);
     case Kind::Arrivals:
         return onArrivals(f.body);
     case Kind::Received:
@@ -122,34 +117,19 @@ bool Ros2Link::onStats(const QByteArray& body)
     return true;
 }
 
-bool Ros2Link::onSamples(const QByteArray& body)
-{
-    auto batch = Ros2Protocol::decodeSamples(body);
-    if (!batch)
-        return false;
-    const auto it = m_watched.find(batch->topic);
-    if (it == m_watched.end())
-        return true; // unwatched since the child sent it
-    it->childDropped = batch->dropped;
-    for (Reader& r : it->readers) {
-        if (!r.queue)
-            r.queue = std::make_shared<NewestQueue<Ros2Sample>>(r.maxMessages, r.maxBytes);
-        for (const Ros2Sample& s : batch->samples)
-            r.queue->push(Ros2Sample(s), s.bytes.size()); // shared bytes (QByteArray), no copy
-    }
-    return true;
-}
-
 bool Ros2Link::onArrivals(const QByteArray& body)
 {
     auto batch = Ros2Protocol::decodeArrivals(body);
     if (!batch)
         return false;
-    m_childDroppedArrivals = batch->dropped;
-    if (m_arrivals)
+    // The child counts its drops from the last KeepArrivals or its start.
+    const quint64 before = batch->dropped >= m_childDroppedHeads ? m_childDroppedHeads : 0;
+    m_heads.addDroppedUpstream(batch->dropped - before);
+    m_childDroppedHeads = batch->dropped;
+    if (m_heads.active())
         for (SourceHead& a : batch->arrivals)
             if (m_monitorUses.contains(a.topic))
-                m_arrivals->push(std::move(a));
+                m_heads.deliver(std::move(a));
     return true;
 }
 
@@ -203,81 +183,14 @@ bool Ros2Link::isMonitored(const QString& topic) const
     return m_pipe.hasChild() && m_monitorUses.contains(topic) && m_graph.topic(topic);
 }
 
-Ros2Protocol::WatchRequest Ros2Link::Watched::limits(const QString& topic) const
+std::unique_ptr<HeadTap> Ros2Link::openHeadTap(std::size_t maxHeads)
 {
-    Ros2Protocol::WatchRequest w {topic, 0, 0};
-    for (const Reader& r : readers) {
-        w.maxMessages = std::max<quint64>(w.maxMessages, r.maxMessages);
-        w.maxBytes = std::max(w.maxBytes, r.maxBytes);
-    }
-    return w;
+    return m_heads.open(maxHeads);
 }
 
-void Ros2Link::openQueue(const QString& topic, std::size_t maxMessages, qint64 maxBytes,
-                             const void* owner)
+void Ros2Link::keepHeads(std::size_t maxHeads)
 {
-    Watched& w = m_watched[topic];
-    Reader& r = w.readers[owner];
-    r.maxMessages = maxMessages;
-    r.maxBytes = maxBytes;
-    if (r.queue)
-        r.queue->setLimits(maxMessages, maxBytes);
-    else if (m_pipe.hasChild())
-        r.queue = std::make_shared<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
-    m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(w.limits(topic)));
-}
-
-void Ros2Link::closeQueue(const QString& topic, const void* owner)
-{
-    const auto it = m_watched.find(topic);
-    if (it == m_watched.end() || it->readers.remove(owner) == 0)
-        return;
-    if (it->readers.isEmpty()) {
-        m_watched.erase(it);
-        m_pipe.send(Kind::Unwatch, Ros2Protocol::encodeStrings({topic}));
-    } else {
-        m_pipe.send(Kind::Watch, Ros2Protocol::encodeWatch(it->limits(topic)));
-    }
-}
-
-const Ros2Link::Reader* Ros2Link::reader(const QString& topic, const void* owner) const
-{
-    const auto it = m_watched.constFind(topic);
-    if (it == m_watched.cend())
-        return nullptr;
-    const auto r = it->readers.constFind(owner);
-    return r != it->readers.cend() && r->queue ? &*r : nullptr;
-}
-
-std::vector<Ros2Sample> Ros2Link::takeQueued(const QString& topic, const void* owner)
-{
-    const Reader* r = reader(topic, owner);
-    return r ? r->queue->take() : std::vector<Ros2Sample>();
-}
-
-quint64 Ros2Link::droppedQueued(const QString& topic, const void* owner) const
-{
-    const Reader* r = reader(topic, owner);
-    return r ? r->queue->dropped() + m_watched.value(topic).childDropped : 0;
-}
-
-void Ros2Link::keepArrivals(std::size_t maxArrivals)
-{
-    m_keepArrivals = maxArrivals;
-    if (maxArrivals == 0)
-        m_arrivals.reset();
-    else
-        m_arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
-    m_childDroppedArrivals = 0;
-    m_pipe.send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(maxArrivals));
-}
-
-std::vector<SourceHead> Ros2Link::takeArrivals()
-{
-    return m_arrivals ? m_arrivals->take() : std::vector<SourceHead>();
-}
-
-quint64 Ros2Link::droppedArrivals() const
-{
-    return m_arrivals ? m_arrivals->dropped() + m_childDroppedArrivals : 0;
+    m_keepArrivals = maxHeads;
+    m_childDroppedHeads = 0;
+    m_pipe.send(Kind::KeepArrivals, Ros2Protocol::encodeNumber(maxHeads));
 }

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/eventbuffer.h"
-#include "base/newestqueue.h"
+#include "latency/headhub.h"
 #include "latency/messagesource.h"
 #include "ros2/ddschildpipe.h"
 #include "ros2/ros2endpointlink.h"
 #include "ros2/ros2graph.h"
 #include "ros2/ros2protocol.h"
 #include "ros2/ros2types.h"
+#include "ros2/ros2watchlink.h"
 
 #include <memory>
 #include <QHash>
@@ -17,7 +17,7 @@
 #include <vector>
 
 /// The parent side of the ROS 2 participant's pipe, above the process: owns everything asked of
-/// the child (monitored topics with their counted uses, watched topics with each owner's queue,
+/// the child (monitored topics with their counted uses, watched topics with each owner's queue in watches(),
 /// arrivals kept; the node and its endpoints in endpoints()), asks it again of each new child
 /// (replay()), reads what the child sends (handle()), and has the requests a child ended while
 /// making quarantined (childLost()): they are never asked again. Knows nothing of processes: the
@@ -56,17 +56,13 @@ public:
     bool isMonitored(const QString& topic) const;
     const QHash<QString, Ros2MonitorStats>& stats() const { return m_stats; }
 
-    /// One queue of a topic's whole samples per `owner` (each Tap of the participant): the topic
-    /// is subscribed while a queue of it is open, and asked again after each restart of the child.
-    void openQueue(const QString& topic, std::size_t maxMessages, qint64 maxBytes, const void* owner);
-    void closeQueue(const QString& topic, const void* owner);
-    bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
-    std::vector<Ros2Sample> takeQueued(const QString& topic, const void* owner);
-    quint64 droppedQueued(const QString& topic, const void* owner) const;
+    /// The topics watched for their whole samples, each owner's queue.
+    Ros2WatchLink& watches() { return m_watches; }
+    const Ros2WatchLink& watches() const { return m_watches; }
 
-    void keepArrivals(std::size_t maxArrivals);
-    std::vector<SourceHead> takeArrivals();
-    quint64 droppedArrivals() const;
+    /// The child keeps heads while a head tap is open, as many as the most demanding tap's bound,
+    /// and again after each restart.
+    std::unique_ptr<HeadTap> openHeadTap(std::size_t maxHeads);
 
     /// The node and its writers and readers.
     Ros2EndpointLink& endpoints() { return m_endpoints; }
@@ -81,37 +77,22 @@ signals:
     void startFailed(const QString& why);
 
 private:
-    /// One owner's queue of a watched topic.
-    struct Reader
-    {
-        std::size_t maxMessages = 0;
-        qint64 maxBytes = 0;
-        std::shared_ptr<NewestQueue<Ros2Sample>> queue; ///< from the first samples until stop()
-    };
-    struct Watched
-    {
-        QHash<const void*, Reader> readers;
-        quint64 childDropped = 0;
-        /// What the child keeps between two polls: enough for the most demanding owner.
-        Ros2Protocol::WatchRequest limits(const QString& topic) const;
-    };
     bool onGraph(const QByteArray& body);
     bool onStats(const QByteArray& body);
-    bool onSamples(const QByteArray& body);
     bool onArrivals(const QByteArray& body);
     bool onMonitorFailed(const QByteArray& body);
-    const Reader* reader(const QString& topic, const void* owner) const;
+    void keepHeads(std::size_t maxHeads);
 
     DdsChildPipe& m_pipe;
     int m_graphInterval = 250;
     std::size_t m_keepArrivals = 0;
     QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()
-    QHash<QString, Watched> m_watched; ///< what openQueue() asked for, across stop() and start()
     QHash<QString, Ros2MonitorStats> m_stats;
-    std::unique_ptr<EventBuffer<SourceHead>> m_arrivals;
-    quint64 m_childDroppedArrivals = 0;
+    quint64 m_childDroppedHeads = 0; ///< as the child's last Arrivals said
     Ros2Graph m_graph;
     quint64 m_badInfo = 0;
 
+    Ros2WatchLink m_watches;
     Ros2EndpointLink m_endpoints;
+    HeadHub m_heads; ///< last: destroyed first, so that no tap closing later calls into this link
 };

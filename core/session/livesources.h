@@ -2,6 +2,7 @@
 #pragma once
 
 #include "latency/messagesource.h"
+#include "latency/subscriptions.h"
 #include "mqtt/mqttconnection.h"
 
 #include <functional>
@@ -31,6 +32,8 @@ struct LiveSources
     std::function<int(MqttListener listener)> everyMqttBatch;
 
     bool alive() const { return !owner.isNull(); }
+    /// A user's own counted subscriptions on the source of `graph`.
+    Subscriptions subscriptions(SourceGraph graph) const { return Subscriptions(of(graph), owner); }
     MessageSource* of(SourceGraph graph) const
     {
         switch (graph) {

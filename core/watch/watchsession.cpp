@@ -27,9 +27,12 @@ WatchSession::WatchSession(const Parts& parts, QObject* parent)
     : QObject(parent)
     , m_parts(parts)
     , m_monitor(new LinkMonitor(this))
+    , m_monitored(m_parts.sources.subscriptions(SourceGraph::Ros1))
+    , m_monitored2(m_parts.sources.subscriptions(SourceGraph::Ros2))
+    , m_monitoredMqtt(m_parts.sources.subscriptions(SourceGraph::Mqtt))
 {
     for (SourceGraph graph : kGraphs)
-        m_parts.sources.of(graph)->keepArrivals(kMaxArrivals);
+        m_heads.push_back(m_parts.sources.of(graph)->openHeadTap(kMaxArrivals));
     // The live session may outlive this watch: its listener then does nothing.
     m_parts.sources.everyMqttBatch(
         [monitor = QPointer<LinkMonitor>(m_monitor)](const std::vector<MqttMessage>& batch) {
@@ -43,12 +46,15 @@ WatchSession::WatchSession(const Parts& parts, QObject* parent)
 
 WatchSession::~WatchSession()
 {
-    if (!m_parts.sources.alive())
-        return;
-    for (SourceGraph graph : kGraphs)
-        m_parts.sources.of(graph)->keepArrivals(0);
-    for (const QString& topic : std::as_const(m_monitoredMqtt))
-        m_parts.sources.mqtt->unmonitor(topic);
+    // The heads taps and subscriptions end themselves; they may outlive their sources.
+}
+
+quint64 WatchSession::droppedHeads() const
+{
+    quint64 n = 0;
+    for (const std::unique_ptr<HeadTap>& heads : m_heads)
+        n += heads->dropped();
+    return n;
 }
 
 bool WatchSession::ros2Running() const
@@ -177,10 +183,8 @@ bool WatchSession::discoverLinks()
 
 void WatchSession::update(qint64 nowNs)
 {
-    m_monitor->add(m_parts.sources.mqtt->takeArrivals());
-    m_monitor->add(m_parts.sources.ros1->takeArrivals());
-    if (ros2Running())
-        m_monitor->add(m_parts.sources.ros2->takeArrivals());
+    for (const std::unique_ptr<HeadTap>& heads : m_heads)
+        m_monitor->add(heads->take());
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
@@ -209,7 +213,7 @@ void WatchSession::syncMqttTopics()
 {
     const QStringList topics = m_monitor->mqttTopics();
     const QSet<QString> want(topics.cbegin(), topics.cend());
-    m_parts.sources.mqtt->monitorExactly(m_monitoredMqtt, want);
+    m_monitoredMqtt.holdExactly(want);
 }
 
 void WatchSession::syncRosTopics()
@@ -226,8 +230,8 @@ void WatchSession::syncRosTopics()
     for (const QString& t : wanted)
         (onRos2.contains(t) ? want2 : want1).insert(t);
 
-    m_parts.sources.ros1->monitorExactly(m_monitored, want1);
-    m_parts.sources.ros2->monitorExactly(m_monitored2, want2);
+    m_monitored.holdExactly(want1);
+    m_monitored2.holdExactly(want2);
     m_monitor->setRos2Topics(want2);
 }
 

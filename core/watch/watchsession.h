@@ -4,8 +4,10 @@
 #include "session/livesources.h"
 #include "watch/linkmonitor.h"
 
+#include <memory>
 #include <QObject>
 #include <QPointer>
+#include <vector>
 
 class LiveSession;
 class MqttConnection;
@@ -85,6 +87,9 @@ public:
     static constexpr int kMaxDiscoveredLinks = 5'000;
     /// Announced links not watched to keep within kMaxDiscoveredLinks (as of the last discovery).
     int unwatchedLinks() const { return m_unwatched; }
+    /// Messages of watched topics that came and went untimed (more between two reads than the
+    /// watch keeps, here or in the DDS child).
+    quint64 droppedHeads() const;
     void setRules(const WatchRules& rules) { m_monitor->setRules(rules); }
     /// Works with the measurement of `measure`: every event goes into its run file while it
     /// records (the events open when the recording starts, then each start and end; an event still
@@ -108,11 +113,12 @@ private:
 
     Parts m_parts; ///< the sources may go first (siblings in a window die in the order they were made)
     LinkMonitor* m_monitor;
+    std::vector<std::unique_ptr<HeadTap>> m_heads; ///< one per graph
     qint64 m_lastTickNs = 0;
     qint64 m_lastSyncNs = 0;
-    QSet<QString> m_monitored;
-    QSet<QString> m_monitored2; ///< ROS 2 topics subscribed
-    QSet<QString> m_monitoredMqtt;
+    Subscriptions m_monitored; ///< ROS 1 topics subscribed
+    Subscriptions m_monitored2; ///< ROS 2 topics subscribed
+    Subscriptions m_monitoredMqtt;
     QList<LinkDef> m_configLinks;
     QSet<QString> m_configMqttTopics;
     QStringList m_discovered; ///< MQTT topics of the discovered links, sorted

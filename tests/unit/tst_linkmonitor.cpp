@@ -77,10 +77,10 @@ void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch)
     MqttSource source(&tree);
     for (const QString& topic : m.mqttTopics())
         source.monitor(topic);
-    source.keepArrivals(batch.size() + 1);
+    const std::unique_ptr<HeadTap> heads = source.openHeadTap(batch.size() + 1);
     source.add(batch);
     m.addMqttControl(batch);
-    m.add(source.takeArrivals());
+    m.add(heads->take());
 }
 
 /// Drives a monitor with a clock: `step` advances by 100 ms (10 Hz) and ticks it.

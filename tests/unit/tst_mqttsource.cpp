@@ -2,6 +2,7 @@
 // The broker's topics as a MessageSource: counted monitoring, figures of monitored topics only,
 // bounded heads and watched queues that count what they drop, and types from mqtt_client's
 // announcements, fed as the live session feeds it (the batch, then the topic tree).
+#include "latency/subscriptions.h"
 #include "mqtt/mqttsource.h"
 #include "mqtt/mqtttopictree.h"
 #include "wire/mqttclientwire.h"
@@ -79,25 +80,53 @@ private slots:
         QVERIFY(!source.figures(kStart).contains(u"lab/pose"_s));
     }
 
-    void headsAreBoundedAndCountDrops()
+    void eachUserHoldsItsOwnSubscriptions()
     {
         MqttTopicTree tree;
         MqttSource source(&tree);
-        source.monitor(u"a"_s);
-        std::vector<MqttMessage> batch {message(u"a"_s, "short", kStart)};
-        QVERIFY(source.takeArrivals().empty()); // not kept before keepArrivals()
-        source.add(batch);
-        QVERIFY(source.takeArrivals().empty());
+        auto owner = std::make_unique<QObject>(); // what owns the source in a window
+        {
+            Subscriptions links(&source, owner.get());
+            Subscriptions map(&source, owner.get());
+            links.holdExactly({u"a"_s, u"b"_s});
+            map.holdExactly({u"b"_s});
+            QVERIFY(source.isMonitored(u"a"_s) && source.isMonitored(u"b"_s));
+            links.holdExactly({u"a"_s}); // the map still wants b
+            QVERIFY(source.isMonitored(u"b"_s));
+            map.holdExactly({});
+            QVERIFY(!source.isMonitored(u"b"_s));
+            QVERIFY(source.isMonitored(u"a"_s));
+            Subscriptions moved = std::move(links); // the subscriptions go with it
+            QCOMPARE(moved.held(), QSet<QString>({u"a"_s}));
+            QVERIFY(links.held().isEmpty());
+        }
+        QVERIFY(!source.isMonitored(u"a"_s)); // destroyed: released
+        Subscriptions late(&source, owner.get());
+        late.holdExactly({u"c"_s});
+        owner.reset(); // the source's owner went first: nothing is asked of it any more
+        late.holdExactly({});
+        QVERIFY(source.isMonitored(u"c"_s));
+    }
 
-        source.keepArrivals(3);
+    void headsAreBoundedAndCountDropsPerTap()
+    {
+        MqttTopicTree tree;
+        auto source = std::make_unique<MqttSource>(&tree);
+        source->monitor(u"a"_s);
+        std::vector<MqttMessage> batch {message(u"a"_s, "short", kStart)};
+        source->add(batch); // no tap open: nothing kept
+        std::unique_ptr<HeadTap> small = source->openHeadTap(3);
+        QVERIFY(small->take().empty());
+
+        std::unique_ptr<HeadTap> large = source->openHeadTap(10);
         batch.clear();
         for (int i = 0; i < 5; ++i)
             batch.push_back(message(u"a"_s, QByteArray(1000, char('0' + i)), kStart + i));
         batch.push_back(message(u"b"_s, "unmonitored", kStart + 9));
-        source.add(batch);
-        const std::vector<SourceHead> heads = source.takeArrivals();
+        source->add(batch);
+        const std::vector<SourceHead> heads = small->take();
         QCOMPARE(heads.size(), std::size_t(3)); // the oldest three: a full buffer drops what comes
-        QCOMPARE(source.droppedArrivals(), quint64(2));
+        QCOMPARE(small->dropped(), quint64(2));
         for (std::size_t i = 0; i < heads.size(); ++i) {
             QCOMPARE(heads[i].graph, SourceGraph::Mqtt);
             QCOMPARE(heads[i].topic, u"a"_s);
@@ -105,10 +134,17 @@ private slots:
             QCOMPARE(heads[i].head, QByteArray(SourceHead::kHeadBytes, char('0' + i)));
             QCOMPARE(heads[i].receivedNs, kStart + qint64(i));
         }
-        QVERIFY(source.takeArrivals().empty());
-        source.keepArrivals(0);
-        source.add(batch);
-        QVERIFY(source.takeArrivals().empty());
+        // the other consumer got every head: one never takes another's
+        QCOMPARE(large->take().size(), std::size_t(5));
+        QCOMPARE(large->dropped(), quint64(0));
+        QVERIFY(small->take().empty());
+
+        small.reset(); // one consumer closing leaves the other's heads coming
+        source->add(batch);
+        QCOMPARE(large->take().size(), std::size_t(5));
+        source.reset(); // a tap may outlive its source
+        QVERIFY(large->take().empty());
+        large.reset();
     }
 
     void watchedTopicsKeepTheNewestWithinTheirBoundsAndTheirType()

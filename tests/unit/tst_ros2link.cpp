@@ -125,6 +125,7 @@ private slots:
     void framesTheChildMayNotSendDoNotRead();
     void peersCauseAnEndWhenOthersAreOnTheDomain();
     void publishKeepsItsBound();
+    void eachHeadTapGetsEveryHeadAndTheChildKeepsForTheLargest();
 };
 
 void TestRos2Link::replaysEverythingAskedAfterARestart()
@@ -134,8 +135,8 @@ void TestRos2Link::replaysEverythingAskedAfterARestart()
     pipe.up = false; // asked before start(): made once a child runs
     link.monitor(u"/a"_s);
     link.monitor(u"/a"_s);
-    link.openQueue(u"/w"_s, 5, 1000, nullptr);
-    link.keepArrivals(7);
+    link.watches().openQueue(u"/w"_s, 5, 1000, nullptr);
+    const std::unique_ptr<HeadTap> heads = link.openHeadTap(7);
     link.endpoints().setNode(u"/ns"_s, u"bridge"_s);
     QVERIFY(link.endpoints().advertise(u"/out"_s, kString, {}));
     QVERIFY(link.endpoints().subscribe(u"/in"_s, kString, {}));
@@ -268,21 +269,21 @@ void TestRos2Link::eachOwnerOfAWatchedTopicGetsEverySample()
     RecordingPipe pipe;
     Ros2Link link(pipe);
     int plot = 0, stamps = 0;
-    link.openQueue(u"/w"_s, 2, 1 << 20, &plot);
-    link.openQueue(u"/w"_s, 10, 1 << 20, &stamps);
+    link.watches().openQueue(u"/w"_s, 2, 1 << 20, &plot);
+    link.watches().openQueue(u"/w"_s, 10, 1 << 20, &stamps);
     QCOMPARE(pipe.said(), QStringList({u"Watch /w 2"_s, u"Watch /w 10"_s}));
     QVERIFY(link.handle(samples(u"/w"_s, {{1, kCdr}, {2, kCdr}, {3, kCdr}}, 4)));
-    QCOMPARE(link.takeQueued(u"/w"_s, &plot).size(), std::size_t(2));
-    QCOMPARE(link.droppedQueued(u"/w"_s, &plot), quint64(1 + 4));
-    QCOMPARE(link.takeQueued(u"/w"_s, &stamps).size(), std::size_t(3));
-    QCOMPARE(link.droppedQueued(u"/w"_s, &stamps), quint64(4));
+    QCOMPARE(link.watches().takeQueued(u"/w"_s, &plot).size(), std::size_t(2));
+    QCOMPARE(link.watches().droppedQueued(u"/w"_s, &plot), quint64(1 + 4));
+    QCOMPARE(link.watches().takeQueued(u"/w"_s, &stamps).size(), std::size_t(3));
+    QCOMPARE(link.watches().droppedQueued(u"/w"_s, &stamps), quint64(4));
 
-    link.closeQueue(u"/w"_s, &stamps);
+    link.watches().closeQueue(u"/w"_s, &stamps);
     QCOMPARE(pipe.said().last(), u"Watch /w 2"_s);
-    link.closeQueue(u"/w"_s, &plot);
+    link.watches().closeQueue(u"/w"_s, &plot);
     QCOMPARE(pipe.said().last(), u"Unwatch /w"_s);
     QVERIFY(link.handle(samples(u"/w"_s, {{4, kCdr}}))); // unwatched since the child sent it
-    QVERIFY(!link.isWatched(u"/w"_s));
+    QVERIFY(!link.watches().isWatched(u"/w"_s));
 }
 
 void TestRos2Link::framesTheChildMayNotSendDoNotRead()
@@ -333,6 +334,41 @@ void TestRos2Link::publishKeepsItsBound()
     pipe.up = false;
     QVERIFY(!link.endpoints().publish(u"/out"_s, kCdr));
     QCOMPARE(link.endpoints().publishDropped(), quint64(4));
+}
+
+void TestRos2Link::eachHeadTapGetsEveryHeadAndTheChildKeepsForTheLargest()
+{
+    RecordingPipe pipe;
+    Ros2Link link(pipe);
+    pipe.up = false; // monitored before the child knows the topic: asked once it runs
+    link.monitor(u"/a"_s);
+    pipe.up = true;
+    std::unique_ptr<HeadTap> small = link.openHeadTap(2);
+    std::unique_ptr<HeadTap> large = link.openHeadTap(50);
+    std::unique_ptr<HeadTap> middle = link.openHeadTap(9); // not the largest: nothing to ask
+    QCOMPARE(pipe.said(), QStringList({u"KeepArrivals 2"_s, u"KeepArrivals 50"_s}));
+
+    const auto arrivals = [](quint64 dropped, int heads) {
+        Ros2Protocol::ArrivalBatch b;
+        b.dropped = dropped;
+        for (int i = 0; i < heads; ++i)
+            b.arrivals.push_back({SourceGraph::Ros2, i % 2 ? u"/unmonitored"_s : u"/a"_s, i, 8, "head"});
+        return Ros2Protocol::Frame {Kind::Arrivals, Ros2Protocol::encodeArrivals(b)};
+    };
+    QVERIFY(link.handle(arrivals(3, 8))); // four of /a; the child dropped three
+    QCOMPARE(small->take().size(), std::size_t(2));
+    QCOMPARE(small->dropped(), quint64(2 + 3));
+    QCOMPARE(large->take().size(), std::size_t(4));
+    QCOMPARE(large->dropped(), quint64(3));
+    QVERIFY(link.handle(arrivals(5, 0))); // the child's count is cumulative: two more
+    QCOMPARE(large->dropped(), quint64(5));
+    QCOMPARE(middle->dropped(), quint64(5));
+
+    pipe.sent.clear();
+    large.reset();
+    middle.reset();
+    small.reset();
+    QCOMPARE(pipe.said(), QStringList({u"KeepArrivals 9"_s, u"KeepArrivals 2"_s, u"KeepArrivals 0"_s}));
 }
 
 QTEST_GUILESS_MAIN(TestRos2Link)

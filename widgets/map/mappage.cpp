@@ -47,6 +47,7 @@ MapPage::Parts MapPage::partsOf(LiveSession* live)
 MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
     : QWidget(parent)
     , m_parts(parts)
+    , m_mqttMonitored(parts.sources.subscriptions(SourceGraph::Mqtt))
     , m_doc(document)
     , m_undo(undoStack)
     , m_editor(new ConfigEditor(document, undoStack, this))
@@ -454,9 +455,7 @@ void MapPage::updateBridgedTopics()
 
 MapPage::~MapPage()
 {
-    if (m_parts.sources.alive())
-        for (const QString& topic : std::as_const(m_mqttMonitored))
-            m_parts.sources.mqtt->unmonitor(topic);
+    // m_mqttMonitored ends its subscriptions itself (when the sources are still there)
 }
 
 void MapPage::monitorMappedMqttTopics()
@@ -470,7 +469,7 @@ void MapPage::monitorMappedMqttTopics()
     for (int i = 0; m_files && i < m_files->openCount(); ++i)
         if (i != m_files->currentIndex())
             add(m_files->configOf(i));
-    m_parts.sources.mqtt->monitorExactly(m_mqttMonitored, topics);
+    m_mqttMonitored.holdExactly(topics);
 }
 
 bool MapPage::usesRos2() const

@@ -107,7 +107,7 @@ private:
     void bridgeSelectedMqtt();
 
     Parts m_parts; ///< the session may go first when the window closes (m_parts.sources.alive())
-    QSet<QString> m_mqttMonitored;
+    Subscriptions m_mqttMonitored; ///< the mapped MQTT topics, for their health
     ConfigDocument* m_doc;
     QUndoStack* m_undo;
     ConfigEditor* m_editor;
