@@ -149,13 +149,13 @@ int main(int argc, char** argv)
         u"/bench/out"_s, 100, [&viaRos1](const RosRawMessage& m, qint64 t) { viaRos1.add(m.bytes, 4, t); }, &error);
     const int pub = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false, &error);
     Ros2Participant dds;
-    QObject::connect(&dds, &Ros2Participant::received,
+    QObject::connect(&dds.node(), &Ros2EndpointLink::received,
                      [&viaRos2](const QString&, const Ros2Sample& s) { viaRos2.add(s.bytes, 8, s.receivedNs); });
     Ros2Qos qos;
     qos.depth = 100;
-    dds.setNode(u"/"_s, u"bench_ros2bridge"_s);
-    dds.advertise(u"/bench2/in"_s, kBlob2Type, qos);
-    dds.subscribe(u"/bench2/out"_s, kBlob2Type, qos);
+    dds.node().setNode(u"/"_s, u"bench_ros2bridge"_s);
+    dds.node().advertise(u"/bench2/in"_s, kBlob2Type, qos);
+    dds.node().subscribe(u"/bench2/out"_s, kBlob2Type, qos);
     if (!dds.start({domain, true}, &error)) {
         std::fprintf(stderr, "dds: %s\n", qPrintable(error));
         return 1;
@@ -171,7 +171,7 @@ int main(int argc, char** argv)
         if (path == 1) {
             ros.publish(pub, blob(size, wallClockNs(), false));
         } else if (path == 2) {
-            dds.publish(u"/bench2/in"_s, blob(size, wallClockNs(), true));
+            dds.node().publish(u"/bench2/in"_s, blob(size, wallClockNs(), true));
         } else {
             QByteArray payload(size, '\x5a');
             const qint64 now = wallClockNs();

@@ -100,16 +100,16 @@ public:
             ros2.insert(u"unreadable_discovery_info"_s, qint64(bad));
         if (g.omitted)
             ros2.insert(u"omitted_endpoints"_s, qint64(g.omitted));
-        if (const quint64 restarts = participant.restarts()) {
+        if (const quint64 restarts = participant.restartCount().restarts()) {
             ros2.insert(u"discovery_restarts"_s, qint64(restarts));
-            ros2.insert(u"last_restart_reason"_s, participant.lastRestartReason());
-            ros2.insert(u"discovery_restarts_by_peers"_s, qint64(participant.peerRestarts()));
+            ros2.insert(u"last_restart_reason"_s, participant.restartCount().lastReason());
+            ros2.insert(u"discovery_restarts_by_peers"_s, qint64(participant.restartCount().peerRestarts()));
         }
-        if (const int loops = participant.restartLoopsBroken())
+        if (const int loops = participant.restartCount().loopsBroken())
             ros2.insert(u"restart_loops_broken"_s, loops);
-        if (const int quarantined = participant.quarantined()) {
+        if (const int quarantined = participant.node().quarantined()) {
             ros2.insert(u"quarantined_requests"_s, quarantined);
-            ros2.insert(u"last_quarantine_reason"_s, participant.lastQuarantineReason());
+            ros2.insert(u"last_quarantine_reason"_s, participant.node().lastQuarantineReason());
         }
         return ros2;
     }
@@ -131,7 +131,7 @@ public:
                     .arg(t.publishers.size())
                     .arg(t.subscribers.size()));
         if (g.omitted)
-            out(u"  "_s + participant.omittedText());
+            out(u"  "_s + participant.graph().omittedText());
         if (const QString restarts = participant.restartText(); !restarts.isEmpty())
             out(u"  "_s + restarts);
     }

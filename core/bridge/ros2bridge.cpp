@@ -97,15 +97,15 @@ public:
     Sent send(int publisher, const QByteArray& cdr) override
     {
         const QString topic = m_topics.value(publisher);
-        if (topic.isEmpty() || !m_ros.isAdvertised(topic) || cdr.size() < 4)
+        if (topic.isEmpty() || !m_ros.node().isAdvertised(topic) || cdr.size() < 4)
             return Sent::Failed; // no writer, or not CDR (no encapsulation header)
         // Refused now: the pipe to the DDS process holds its bound, or the process is restarting.
-        return m_ros.publish(topic, cdr) ? Sent::Ok : Sent::Full;
+        return m_ros.node().publish(topic, cdr) ? Sent::Ok : Sent::Full;
     }
     void publish(int publisher, const QByteArray& cdr) override
     {
         if (const QString topic = m_topics.value(publisher); !topic.isEmpty())
-            m_ros.publish(topic, cdr);
+            m_ros.node().publish(topic, cdr);
     }
 
     bool startsWithHeader(const RosMsgTypeInfo& type) override
@@ -165,7 +165,7 @@ private:
     {
         m_advertising = topic;
         m_refusal.clear();
-        const bool ok = m_ros.advertise(topic, type, qos);
+        const bool ok = m_ros.node().advertise(topic, type, qos);
         m_advertising.clear();
         if (!ok) {
             if (error)
@@ -267,7 +267,7 @@ void Ros2Bridge::Private::subscribe(Route& r, const QString& type, const Ros2Qos
 {
     const BridgeRoute& b = r.hop->route();
     r.subscribedType = type;
-    ros->subscribe(b.rosTopic, type, qos);
+    ros->node().subscribe(b.rosTopic, type, qos);
     log(tr("ROS %1 -> MQTT %2 (%3, %4%5)")
             .arg(b.rosTopic, b.mqttTopic, type, qos.text(),
                  b.primitive ? tr(", primitive") : (b.stamped ? tr(", stamped") : QString())));
@@ -377,7 +377,7 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
     d->ros = std::make_unique<Ros2Participant>();
     Private* p = d.get();
     Ros2Participant* ros = d->ros.get();
-    QObject::connect(ros, &Ros2Participant::received, ros, [p](const QString& topic, const Ros2Sample& s) {
+    QObject::connect(&ros->node(), &Ros2EndpointLink::received, ros, [p](const QString& topic, const Ros2Sample& s) {
         if (Route* r = p->byRosTopic.value(topic))
             r->hop->fromRos({ros2Type(r->subscribedType), s.bytes}, s.receivedNs);
     });
@@ -391,7 +391,7 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
         else
             p->log(tr("not on the ROS 2 domain: %1").arg(p->ros->lastError()));
     });
-    QObject::connect(ros, &Ros2Participant::endpointRefused, ros,
+    QObject::connect(&ros->node(), &Ros2EndpointLink::endpointRefused, ros,
                      [p](const QString& topic, const QString& why) { p->refused(topic, why); });
     QObject::connect(ros, &Ros2Participant::restarted, ros, [p](const QString& why) {
         p->log(tr("the DDS process %1; starting it again (%2)").arg(why, p->ros->restartText()));
@@ -400,7 +400,7 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
                      [p](const QString& what) { p->log(what); });
     if (!ros->start(rosOptions, error))
         return false;
-    ros->setNode(d->nameSpace, d->name);
+    ros->node().setNode(d->nameSpace, d->name);
     d->side = std::make_unique<Ros2Side>(*ros, d->registry, [p](const QString& topic) { return p->resolve(topic); });
     for (Route& r : d->routes) {
         const BridgeRoute& b = r.hop->route();
@@ -437,7 +437,7 @@ void Ros2Bridge::Private::startMqtt()
     // Towards ROS, half of the bound: a quarter for messages waiting for the event loop, a quarter
     // for those in the pipe to the DDS process.
     const qint64 bound = options.maxQueuedBytes / 4;
-    ros->setPublishBound(bound);
+    ros->node().setPublishBound(bound);
     qCDebug(lcBridge) << "ROS 2 bridge: at most" << options.maxQueuedBytes / 2 << "bytes held towards the broker,"
                       << bound << "waiting for the event loop and" << bound << "in the pipe to DDS";
     // Paho's thread: handed to the event loop within the bound, in order.

@@ -53,7 +53,7 @@ struct Stamper
         d.sampleNs = sampleNs;
         d.frameId = kFrame;
         d.timeNs = wallNs + offsetNs;
-        dds.publish(topic, Ros2BridgeWire::encodeTimeStamped(d));
+        dds.node().publish(topic, Ros2BridgeWire::encodeTimeStamped(d));
     }
 };
 
@@ -64,9 +64,9 @@ bool setUp(Ros2Participant& dds, const Ros2DemoNodes::Options& o, const QString&
 {
     if (!dds.start(o.dds, error))
         return false;
-    dds.setNode(u"/"_s, name);
+    dds.node().setNode(u"/"_s, name);
     for (const Stamper* s : stampers)
-        dds.advertise(s->topic, QLatin1String(Ros2BridgeWire::kTimeStampedType));
+        dds.node().advertise(s->topic, QLatin1String(Ros2BridgeWire::kTimeStampedType));
     QEventLoop wait;
     bool ok = false;
     QObject::connect(&dds, &Ros2Participant::joined, &wait, [&](bool joined) {
@@ -134,9 +134,9 @@ bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& st
     Stamper back {dds, kStamps + u"object_list"_s, o.clockOffsetNs};
     if (!setUp(dds, o, u"demo_vehicle"_s, {&sent, &back}, error))
         return false;
-    dds.advertise(u"/vehicle/pointcloud"_s, kPointCloud);
-    dds.subscribe(u"/vehicle/object_list"_s, kPoseArray);
-    QObject::connect(&dds, &Ros2Participant::received, &dds, [&back](const QString& topic, const Ros2Sample& s) {
+    dds.node().advertise(u"/vehicle/pointcloud"_s, kPointCloud);
+    dds.node().subscribe(u"/vehicle/object_list"_s, kPoseArray);
+    QObject::connect(&dds.node(), &Ros2EndpointLink::received, &dds, [&back](const QString& topic, const Ros2Sample& s) {
         if (topic != u"/vehicle/object_list"_s)
             return;
         if (const std::optional<qint64> stamp = Ros2BridgeWire::headerStampNs(s.bytes))
@@ -177,7 +177,7 @@ bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& st
         qToLittleEndian<qint32>(qint32(now / 1'000'000'000LL), p + 4);
         qToLittleEndian<quint32>(quint32(now % 1'000'000'000LL), p + 8);
         sent.stamp(now, wallClockNs());
-        dds.publish(u"/vehicle/pointcloud"_s, scan);
+        dds.node().publish(u"/vehicle/pointcloud"_s, scan);
         const qint64 waitNs = qint64(double(++scans) * periodNs) - clock.nsecsElapsed();
         tick.start(int(std::max<qint64>(0, waitNs / 1'000'000)));
     });
@@ -194,10 +194,10 @@ bool Ros2DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop
     Stamper out {dds, kStamps + u"object_detection/object_list"_s, o.clockOffsetNs};
     if (!setUp(dds, o, u"demo_object_detection"_s, {&in, &out}, error))
         return false;
-    dds.advertise(u"/cloud/object_list"_s, kPoseArray);
-    dds.subscribe(u"/cloud/pointcloud"_s, kPointCloud);
+    dds.node().advertise(u"/cloud/object_list"_s, kPoseArray);
+    dds.node().subscribe(u"/cloud/pointcloud"_s, kPointCloud);
     std::mt19937 rng(11);
-    QObject::connect(&dds, &Ros2Participant::received, &dds, [&](const QString& topic, const Ros2Sample& s) {
+    QObject::connect(&dds.node(), &Ros2EndpointLink::received, &dds, [&](const QString& topic, const Ros2Sample& s) {
         if (topic != u"/cloud/pointcloud"_s)
             return;
         const std::optional<qint64> stamp = Ros2BridgeWire::headerStampNs(s.bytes);
@@ -214,7 +214,7 @@ bool Ros2DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop
                                   {u"orientation"_s, QVariantMap {{u"w"_s, 1.0}}}};
         const QVariantMap objects {{u"header"_s, headerOf(*stamp)}, {u"poses"_s, poses}};
         out.stamp(*stamp, wallClockNs());
-        dds.publish(u"/cloud/object_list"_s,
+        dds.node().publish(u"/cloud/object_list"_s,
                     RosMessageEncoder::encodeCdr(registry(), kPoseArray, objects).valueOr(QByteArray()));
     });
     runUntil(stop);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <QCoreApplication>
 #include <QHash>
 #include <QSet>
 #include <QtEndian>
@@ -328,4 +329,13 @@ TopicGraph Ros2Graph::topicGraph() const
     for (const Ros2Node& n : nodes)
         g.nodes << n.name;
     return g;
+}
+
+QString Ros2Graph::omittedText() const
+{
+    if (omitted == 0)
+        return {};
+    // the text is Ros2Participant's: it keeps its translation context
+    return QCoreApplication::translate("Ros2Participant", "%n endpoint(s) not listed (over a bound)", nullptr,
+                                       int(std::min<quint64>(omitted, INT_MAX)));
 }

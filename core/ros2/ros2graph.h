@@ -116,6 +116,8 @@ struct Ros2Graph
     static constexpr int kMaxTypesPerTopic = 16;
 
     const Ros2Topic* topic(const QString& name) const;
+    /// "12 endpoints not listed (over a bound)", or empty: what `omitted` counts, for status lines.
+    QString omittedText() const;
     /// The graph as every view shows one (graph-neutral): nodes as publishers and subscribers (an
     /// endpoint no node claims as its GUID in parentheses), every node.
     TopicGraph topicGraph() const;

@@ -50,8 +50,6 @@ Ros2Participant::Ros2Participant(QObject* parent)
     });
     connect(&m_link, &Ros2Link::graphChanged, this, &Ros2Participant::graphChanged);
     connect(&m_link, &Ros2Link::monitorFailed, this, &Ros2Participant::monitorFailed);
-    connect(&m_link.endpoints(), &Ros2EndpointLink::endpointRefused, this, &Ros2Participant::endpointRefused);
-    connect(&m_link.endpoints(), &Ros2EndpointLink::received, this, &Ros2Participant::received);
 }
 
 Ros2Participant::~Ros2Participant()
@@ -66,36 +64,31 @@ bool Ros2Participant::isRunning() const
     return m_supervisor.isWanted() && m_error.isEmpty(); // also while a restart waits for its backoff
 }
 
-QString Ros2Participant::omittedText() const
+namespace {
+/// "1 ROS 2 request quarantined (last: …)", or empty.
+QString quarantineText(const Ros2EndpointLink& node)
 {
-    const quint64 omitted = graph().omitted;
-    if (omitted == 0)
+    if (node.quarantined() == 0)
         return {};
-    return tr("%n endpoint(s) not listed (over a bound)", nullptr, int(std::min<quint64>(omitted, INT_MAX)));
+    return Ros2Participant::tr("%n ROS 2 request(s) quarantined (last: %1)", nullptr, node.quarantined())
+        .arg(node.lastQuarantineReason());
 }
+} // namespace
 
 QString Ros2Participant::restartText() const
 {
     QString text;
-    if (restarts() > 0)
+    if (restartCount().restarts() > 0)
         text = tr("ROS 2 discovery restarted %n time(s), %1 caused by peers (last: %2)", nullptr,
-                  int(qMin<quint64>(restarts(), INT_MAX)))
-                   .arg(peerRestarts())
-                   .arg(lastRestartReason());
-    if (restartLoopsBroken() > 0)
+                  int(qMin<quint64>(restartCount().restarts(), INT_MAX)))
+                   .arg(restartCount().peerRestarts())
+                   .arg(restartCount().lastReason());
+    if (restartCount().loopsBroken() > 0)
         text += u"; "_s + tr("a restart loop broken: the graph limited");
-    const QString quarantine = quarantineText();
+    const QString quarantine = quarantineText(node());
     if (!quarantine.isEmpty())
         text += (text.isEmpty() ? QString() : u"; "_s) + quarantine;
     return text;
-}
-
-QString Ros2Participant::quarantineText() const
-{
-    if (quarantined() == 0)
-        return {};
-    return tr("%n ROS 2 request(s) quarantined (last: %1)", nullptr, quarantined())
-        .arg(lastQuarantineReason());
 }
 
 void Ros2Participant::setGraphInterval(int ms)
@@ -113,7 +106,7 @@ bool Ros2Participant::start(const Ros2Options& options, QString* error)
                          .arg(Ros2Options::kMaxDomain);
         return false;
     }
-    if (program().isEmpty()) {
+    if (DdsChildSupervisor::program().isEmpty()) {
         if (error)
             *error = tr("cannot see ROS 2: the helper program bridgescope-dds is not installed");
         return false;
@@ -135,7 +128,7 @@ void Ros2Participant::onLaunched(bool limitedGraph)
 void Ros2Participant::onLaunchFailed(const QString& why)
 {
     m_error = why;
-    if (restarts() > 0)
+    if (restartCount().restarts() > 0)
         emit graphChanged(graph()); // a restart that failed: lastError() says why
 }
 
@@ -190,12 +183,12 @@ public:
         , m_link(link)
         , m_topic(std::move(topic))
     {
-        m_link->openQueue(m_topic, maxMessages, maxBytes, this);
+        m_link->watches().openQueue(m_topic, maxMessages, maxBytes, this);
     }
     ~Ros2Tap() override
     {
         if (m_participant) // the participant (and its link) may have gone first
-            m_link->closeQueue(m_topic, this);
+            m_link->watches().closeQueue(m_topic, this);
     }
     std::vector<SourceArrival> take() override
     {
@@ -204,11 +197,11 @@ public:
         const Ros2Topic* t = m_participant->graph().topic(m_topic);
         const QString type = t ? t->type() : QString();
         std::vector<SourceArrival> out;
-        for (Ros2Sample& s : m_link->takeQueued(m_topic, this))
+        for (Ros2Sample& s : m_link->watches().takeQueued(m_topic, this))
             out.push_back({SourceGraph::Ros2, m_topic, type, s.receivedNs, std::move(s.bytes)});
         return out;
     }
-    quint64 dropped() const override { return m_participant ? m_link->droppedQueued(m_topic, this) : 0; }
+    quint64 dropped() const override { return m_participant ? m_link->watches().droppedQueued(m_topic, this) : 0; }
 
 private:
     QPointer<Ros2Participant> m_participant;
@@ -222,52 +215,8 @@ std::unique_ptr<Tap> Ros2Participant::openTap(const QString& topic, std::size_t 
     return std::make_unique<Ros2Tap>(this, &m_link, topic, maxMessages, maxBytes);
 }
 
-void Ros2Participant::keepArrivals(std::size_t maxArrivals)
+std::unique_ptr<HeadTap> Ros2Participant::openHeadTap(std::size_t maxHeads)
 {
-    m_link.keepArrivals(maxArrivals);
+    return m_link.openHeadTap(maxHeads);
 }
 
-std::vector<SourceHead> Ros2Participant::takeArrivals()
-{
-    return m_link.takeArrivals();
-}
-
-quint64 Ros2Participant::droppedArrivals() const
-{
-    return m_link.droppedArrivals();
-}
-
-void Ros2Participant::setNode(const QString& nameSpace, const QString& name)
-{
-    m_link.endpoints().setNode(nameSpace, name);
-}
-
-bool Ros2Participant::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
-{
-    return m_link.endpoints().advertise(topic, type, qos);
-}
-
-void Ros2Participant::unadvertise(const QString& topic)
-{
-    m_link.endpoints().unadvertise(topic);
-}
-
-bool Ros2Participant::publish(const QString& topic, const QByteArray& cdr)
-{
-    return m_link.endpoints().publish(topic, cdr);
-}
-
-bool Ros2Participant::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
-{
-    return m_link.endpoints().subscribe(topic, type, qos);
-}
-
-void Ros2Participant::unsubscribe(const QString& topic)
-{
-    m_link.endpoints().unsubscribe(topic);
-}
-
-quint64 Ros2Participant::droppedReceived() const
-{
-    return m_link.endpoints().droppedReceived();
-}

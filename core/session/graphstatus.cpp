@@ -52,12 +52,12 @@ GraphStatus::Line GraphStatus::ros2Line() const
         if (const quint64 bad = m_ros2->badDiscoveryInfo())
             text += u", "_s + tr("unreadable node announcements %1").arg(bad);
         if (g.omitted)
-            text += u", "_s + m_ros2->omittedText();
+            text += u", "_s + m_ros2->graph().omittedText();
     }
     if (!restarts.isEmpty())
         text += u" · "_s + restarts;
     const Level quiet = g.participants == 0 ? Level::Idle : Level::Ok;
-    return {restarts.isEmpty() ? quiet : Level::Troubled, text, m_ros2->lastRestartReason()};
+    return {restarts.isEmpty() ? quiet : Level::Troubled, text, m_ros2->restartCount().lastReason()};
 }
 
 bool GraphStatus::ros2Running() const

@@ -216,7 +216,7 @@ private slots:
         Seen seen1;
         Seen seen2;
         Ros2Participant dds;
-        connect(&dds, &Ros2Participant::received, this, [&seen2](const QString& topic, const Ros2Sample& s) {
+        connect(&dds.node(), &Ros2EndpointLink::received, this, [&seen2](const QString& topic, const Ros2Sample& s) {
             if (topic == u"/hop/pose_back"_s && s.bytes.size() >= 8)
                 seen2.pose(qFromLittleEndian<qint32>(s.bytes.constData() + 4));
             else if (topic.endsWith(u"/latencies/hop/pose_back"_s) && s.bytes.size() == 12)
@@ -224,9 +224,9 @@ private slots:
             else if (const auto d = StampCodec::decodeTimeStampedCdr(s.bytes))
                 seen2.stampIn(*d);
         });
-        dds.subscribe(u"/hop/pose_back"_s, u"geometry_msgs/msg/PoseStamped"_s);
-        dds.subscribe(u"/hop_bridge/latencies/hop/pose_back"_s, u"std_msgs/msg/Float64"_s);
-        dds.subscribe(u"/ts/hop/pose_back/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
+        dds.node().subscribe(u"/hop/pose_back"_s, u"geometry_msgs/msg/PoseStamped"_s);
+        dds.node().subscribe(u"/hop_bridge/latencies/hop/pose_back"_s, u"std_msgs/msg/Float64"_s);
+        dds.node().subscribe(u"/ts/hop/pose_back/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
         QVERIFY2(dds.start({m_domain, true}, &error), qPrintable(error));
 
         // The announcement for MQTT -> ROS, retained: each bridge takes it when it subscribes, and

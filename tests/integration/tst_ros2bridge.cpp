@@ -172,10 +172,10 @@ private slots:
         auto b = bridge(config);
         Ros2Participant stamps; // the suite's stamps, as a Measure page would read them
         QList<QPair<QString, Ros2Sample>> got;
-        connect(&stamps, &Ros2Participant::received, this,
+        connect(&stamps.node(), &Ros2EndpointLink::received, this,
                 [&got](const QString& t, const Ros2Sample& s) { got.append({t, s}); });
-        stamps.subscribe(u"/bench/bridge/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
-        stamps.subscribe(u"/bench/bridge/out"_s, u"benchmarking_suite/msg/TimeStamped"_s);
+        stamps.node().subscribe(u"/bench/bridge/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
+        stamps.node().subscribe(u"/bench/bridge/out"_s, u"benchmarking_suite/msg/TimeStamped"_s);
         QString error;
         QVERIFY2(stamps.start({m_domain, true}, &error), qPrintable(error));
         const qint64 before = wallClockNs();
@@ -275,12 +275,12 @@ private slots:
         auto b = bridge(config, {u"--name"_s, u"/lab/bridge2"_s});
         Ros2Participant latencies;
         QList<double> latency;
-        connect(&latencies, &Ros2Participant::received, this, [&latency](const QString&, const Ros2Sample& s) {
+        connect(&latencies.node(), &Ros2EndpointLink::received, this, [&latency](const QString&, const Ros2Sample& s) {
             if (s.bytes.size() == 12)
                 latency.append(qFromLittleEndian<double>(s.bytes.constData() + 4));
         });
         // mqtt_client's "~/latencies/" + "/pose_back", its "//" made one
-        latencies.subscribe(u"/lab/bridge2/latencies/pose_back"_s, u"std_msgs/msg/Float64"_s);
+        latencies.node().subscribe(u"/lab/bridge2/latencies/pose_back"_s, u"std_msgs/msg/Float64"_s);
         QString error;
         QVERIFY2(latencies.start({m_domain, true}, &error), qPrintable(error));
         Ros2Peer listener(m_domain, {u"--node"_s, u"/listener"_s, u"--sub"_s, u"/chatter_back:std_msgs/msg/String"_s,

@@ -72,15 +72,15 @@ private slots:
         Ros2Participant p;
         QString error;
         QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
-        QVERIFY(!p.publish(u"/chatter"_s, stringCdr(u"early"_s))); // not advertised
-        QCOMPARE(p.publishDropped(), 1u);
-        p.advertise(u"/chatter"_s, u"std_msgs/msg/String"_s);
+        QVERIFY(!p.node().publish(u"/chatter"_s, stringCdr(u"early"_s))); // not advertised
+        QCOMPARE(p.node().publishDropped(), 1u);
+        p.node().advertise(u"/chatter"_s, u"std_msgs/msg/String"_s);
         Ros2Peer listener(m_domain, {u"--node"_s, u"/listener"_s, u"--sub"_s, u"/chatter:std_msgs/msg/String"_s,
                                      u"--cdr"_s});
         QVERIFY2(listener.waitFor(u"ready"_s), qPrintable(listener.errors()));
         QVERIFY2(listener.waitFor(u"matched /chatter 1"_s), qPrintable(listener.errors()));
         for (int i = 1; i <= 5; ++i) {
-            QVERIFY(p.publish(u"/chatter"_s, stringCdr(u"from bridgescope %1"_s.arg(i))));
+            QVERIFY(p.node().publish(u"/chatter"_s, stringCdr(u"from bridgescope %1"_s.arg(i))));
             QTest::qWait(20);
         }
         QVERIFY2(listener.waitFor(u"recv /chatter 5 "_s), qPrintable(listener.lines().join(u'\n')));
@@ -91,14 +91,14 @@ private slots:
         QVERIFY2(lines.filter(u"cdr /chatter 1 "_s).value(0).startsWith(u"cdr /chatter 1 2"_s)
                      && lines.filter(u"cdr /chatter 1 "_s).value(0).contains(u" 00 01 00 00 13 00 00 00 66 72"_s),
                  qPrintable(lines.join(u'\n')));
-        QCOMPARE(p.publishDropped(), 1u);
+        QCOMPARE(p.node().publishDropped(), 1u);
     }
 
     void aNodesSamplesComeAsTheyArrive()
     {
         Ros2Participant p;
-        QSignalSpy received(&p, &Ros2Participant::received);
-        p.subscribe(u"/chatter"_s, u"std_msgs/msg/String"_s); // before start(): made once it runs
+        QSignalSpy received(&p.node(), &Ros2EndpointLink::received);
+        p.node().subscribe(u"/chatter"_s, u"std_msgs/msg/String"_s); // before start(): made once it runs
         QString error;
         QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
         Ros2Peer talker(m_domain, {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:50"_s});
@@ -121,8 +121,8 @@ private slots:
         const auto first = received.at(received.size() - 5).at(1).value<Ros2Sample>().receivedNs;
         const auto last = received.last().at(1).value<Ros2Sample>().receivedNs;
         QVERIFY2(last - first > 40'000'000, qPrintable(QString::number(last - first)));
-        QCOMPARE(p.droppedReceived(), 0u);
-        p.unsubscribe(u"/chatter"_s);
+        QCOMPARE(p.node().droppedReceived(), 0u);
+        p.node().unsubscribe(u"/chatter"_s);
         QTest::qWait(300);
         const qsizetype after = received.size();
         QTest::qWait(300);
@@ -134,10 +134,10 @@ private slots:
         Ros2Participant p;
         QString error;
         QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
-        p.setNode(u"/lab"_s, u"mqtt_client"_s);
-        p.advertise(u"/out"_s, u"std_msgs/msg/String"_s);
-        p.advertise(u"/pose"_s, u"geometry_msgs/msg/PoseStamped"_s);
-        p.subscribe(u"/in"_s, u"std_msgs/msg/String"_s);
+        p.node().setNode(u"/lab"_s, u"mqtt_client"_s);
+        p.node().advertise(u"/out"_s, u"std_msgs/msg/String"_s);
+        p.node().advertise(u"/pose"_s, u"geometry_msgs/msg/PoseStamped"_s);
+        p.node().subscribe(u"/in"_s, u"std_msgs/msg/String"_s);
         Ros2Peer watcher(m_domain, {u"--node"_s, u"/watcher"_s, u"--show-discovery"_s});
         QVERIFY2(watcher.waitFor(u"node /lab mqtt_client 1 2"_s), qPrintable(watcher.lines().join(u'\n')));
         const QStringList lines = watcher.lines();
@@ -150,7 +150,7 @@ private slots:
         QCOMPARE(n->publishes, (QStringList {u"/out"_s, u"/pose"_s}));
         QCOMPARE(n->subscribes, QStringList {u"/in"_s});
         // an endpoint that goes is announced without it
-        p.unadvertise(u"/pose"_s);
+        p.node().unadvertise(u"/pose"_s);
         QVERIFY2(watcher.waitFor(u"node /lab mqtt_client 1 1"_s), qPrintable(watcher.lines().join(u'\n')));
         QTRY_VERIFY_WITH_TIMEOUT(node(p.graph(), u"/lab/mqtt_client"_s)->publishes == QStringList {u"/out"_s}, 5000);
     }
@@ -158,15 +158,15 @@ private slots:
     void reliabilityMatchesAsDdsSays()
     {
         Ros2Participant p;
-        QSignalSpy received(&p, &Ros2Participant::received);
+        QSignalSpy received(&p.node(), &Ros2EndpointLink::received);
         QString error;
         QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
         // our writers: best effort to a reliable reader never matches, reliable does
-        p.advertise(u"/strict"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
-        p.advertise(u"/fine"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
+        p.node().advertise(u"/strict"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
+        p.node().advertise(u"/fine"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
         // our readers: reliable of a best-effort writer never matches, best effort does
-        p.subscribe(u"/lossy"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
-        p.subscribe(u"/lossy2"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
+        p.node().subscribe(u"/lossy"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
+        p.node().subscribe(u"/lossy2"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
         Ros2Peer peer(m_domain, {u"--sub"_s, u"/strict:std_msgs/msg/String:reliable"_s, u"--sub"_s,
                                  u"/fine:std_msgs/msg/String:reliable"_s, u"--pub"_s,
                                  u"/lossy:std_msgs/msg/String:50:best_effort"_s, u"--pub"_s,
@@ -192,10 +192,10 @@ private slots:
     {
         Ros2Participant p;
         quint64 samples = 0;
-        connect(&p, &Ros2Participant::received, this, [&samples](const QString&, const Ros2Sample&) { ++samples; });
+        connect(&p.node(), &Ros2EndpointLink::received, this, [&samples](const QString&, const Ros2Sample&) { ++samples; });
         Ros2Qos q;
         q.depth = 100;
-        p.subscribe(u"/flood"_s, u"sensor_msgs/msg/PointCloud2"_s, q);
+        p.node().subscribe(u"/flood"_s, u"sensor_msgs/msg/PointCloud2"_s, q);
         QSignalSpy joined(&p, &Ros2Participant::joined);
         QString error;
         QVERIFY2(p.start({m_domain, true}, &error), qPrintable(error));
@@ -212,12 +212,12 @@ private slots:
         QVERIFY(PeakRss::reset());
         const qint64 ownBase = PeakRss::of();
         std::this_thread::sleep_for(std::chrono::seconds(4)); // no event loop: the pipe stays full
-        QTRY_VERIFY_WITH_TIMEOUT(p.droppedReceived() > 0, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(p.node().droppedReceived() > 0, 5000);
         QTest::qWait(1000); // what waited comes
         const qint64 childGrew = PeakRss::of(child) - childIdle;
         const qint64 ownGrew = PeakRss::of() - ownBase;
         qInfo("%llu samples, %llu dropped; the child grew by %.1f MiB from %.1f MiB, this process by %.1f MiB",
-              samples, p.droppedReceived(), double(childGrew) / (1 << 20), double(childIdle) / (1 << 20),
+              samples, p.node().droppedReceived(), double(childGrew) / (1 << 20), double(childIdle) / (1 << 20),
               double(ownGrew) / (1 << 20));
         QCOMPARE(DdsChild::of(), child); // not restarted for it
         constexpr qint64 kSlack = 32LL << 20; // allocation slack

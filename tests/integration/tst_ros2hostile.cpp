@@ -109,18 +109,18 @@ private slots:
         // the same child still runs, lists the node and counts its samples
         const quint64 sent = p.snapshot(wallClockNs()).value(u"/steady"_s).messages;
         QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= sent + 20, 15000);
-        QCOMPARE(p.restarts(), quint64(0));
+        QCOMPARE(p.restartCount().restarts(), quint64(0));
         QCOMPARE(DdsChild::of(), child);
         QVERIFY(hasNode(p.graph(), u"/steady"_s));
-        qInfo().noquote() << "after the corpus: restarts" << p.restarts() << "child peak RSS"
+        qInfo().noquote() << "after the corpus: restarts" << p.restartCount().restarts() << "child peak RSS"
                           << (childBefore >> 10) << "kB before," << (PeakRss::of(child) >> 10) << "kB after";
 
         // a crash of the child: restarted, said with its reason (SIGABRT, as an abort() in the
         // library: ASan's own handler would turn a SIGSEGV into exit code 1)
         QCOMPARE(DdsChild::kill(SIGABRT), child);
-        QTRY_VERIFY_WITH_TIMEOUT(p.restarts() == 1, 10000);
-        QCOMPARE(quint64(restarted.size()), p.restarts());
-        QVERIFY2(p.lastRestartReason().contains(u"signal 6"_s), qPrintable(p.lastRestartReason()));
+        QTRY_VERIFY_WITH_TIMEOUT(p.restartCount().restarts() == 1, 10000);
+        QCOMPARE(quint64(restarted.size()), p.restartCount().restarts());
+        QVERIFY2(p.restartCount().lastReason().contains(u"signal 6"_s), qPrintable(p.restartCount().lastReason()));
         QVERIFY2(p.restartText().contains(u"restarted"_s), qPrintable(p.restartText()));
 
         // and the graph comes back, with the node, its samples and the topic still monitored
@@ -209,7 +209,7 @@ private slots:
         QString error;
         QVERIFY2(p.start({domain, true}, &error), qPrintable(error));
         QTRY_COMPARE_WITH_TIMEOUT(loops.size(), 1, 30000);
-        QCOMPARE(p.restarts(), quint64(Ros2Participant::kLoopRestarts));
+        QCOMPARE(p.restartCount().restarts(), quint64(Ros2Participant::kLoopRestarts));
         QVERIFY2(loops.at(0).at(0).toString().contains(u"graph limited (1000 endpoints a participant"_s),
                  qPrintable(loops.at(0).at(0).toString()));
         // the limited child stays: it lists the node and counts its samples for longer than the
@@ -217,11 +217,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 20000);
         p.monitor(u"/steady"_s);
         QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= 20, 15000);
-        QCOMPARE(p.restarts(), quint64(Ros2Participant::kLoopRestarts));
-        QCOMPARE(p.restartLoopsBroken(), 1);
-        QVERIFY2(p.peerRestarts() <= p.restarts(), qPrintable(p.restartText()));
+        QCOMPARE(p.restartCount().restarts(), quint64(Ros2Participant::kLoopRestarts));
+        QCOMPARE(p.restartCount().loopsBroken(), 1);
+        QVERIFY2(p.restartCount().peerRestarts() <= p.restartCount().restarts(), qPrintable(p.restartText()));
         QVERIFY2(p.restartText().contains(u"restarted 3 time"_s)
-                     && p.restartText().contains(u", %1 caused by peers"_s.arg(p.peerRestarts()))
+                     && p.restartText().contains(u", %1 caused by peers"_s.arg(p.restartCount().peerRestarts()))
                      && p.restartText().contains(u"a restart loop broken: the graph limited"_s),
                  qPrintable(p.restartText()));
         p.stop();
@@ -280,18 +280,18 @@ private slots:
         QVERIFY2(flooder.waitFor(u"ready"_s, 60000), qPrintable(flooder.errors()));
         QTRY_VERIFY2_WITH_TIMEOUT(p.graph().omitted >= omitted, qPrintable(u"omitted %1, restarts %2 (%3)"_s
                                                                                .arg(p.graph().omitted)
-                                                                               .arg(p.restarts())
-                                                                               .arg(p.lastRestartReason())),
+                                                                               .arg(p.restartCount().restarts())
+                                                                               .arg(p.restartCount().lastReason())),
                                   60000);
         // the node's samples still counted after the flood came, by the same child
         const quint64 before = p.snapshot(wallClockNs()).value(u"/steady"_s).messages;
         QTRY_VERIFY_WITH_TIMEOUT(p.snapshot(wallClockNs()).value(u"/steady"_s).messages >= before + 40,
                                  15000);
-        QVERIFY2(p.restarts() == 0, qPrintable(p.lastRestartReason()));
+        QVERIFY2(p.restartCount().restarts() == 0, qPrintable(p.restartCount().lastReason()));
         QVERIFY(graphs > 0);
         QVERIFY(alwaysListed);
         QVERIFY(hasNode(p.graph(), u"/steady"_s));
-        QVERIFY2(p.omittedText().contains(u"not listed"_s), qPrintable(p.omittedText()));
+        QVERIFY2(p.graph().omittedText().contains(u"not listed"_s), qPrintable(p.graph().omittedText()));
         for (const Ros2Topic& t : p.graph().topics) {
             QVERIFY2(t.name.size() <= 256, qPrintable(t.name.left(80)));
             QVERIFY(t.types.size() <= Ros2Graph::kMaxTypesPerTopic);
@@ -345,8 +345,8 @@ private slots:
         {
             Ros2Participant p;
             QVERIFY(p.start({0, true}));
-            QTRY_VERIFY_WITH_TIMEOUT(p.restarts() >= 2, 10000);
-            QVERIFY2(p.lastRestartReason().contains(u"frame"_s), qPrintable(p.lastRestartReason()));
+            QTRY_VERIFY_WITH_TIMEOUT(p.restartCount().restarts() >= 2, 10000);
+            QVERIFY2(p.restartCount().lastReason().contains(u"frame"_s), qPrintable(p.restartCount().lastReason()));
             QVERIFY(p.graph().topics.isEmpty());
         }
         // random bytes from the start: an unknown kind or a length too long, whichever comes first
@@ -356,12 +356,12 @@ private slots:
         {
             Ros2Participant p;
             QVERIFY(p.start({0, true}));
-            QTRY_VERIFY_WITH_TIMEOUT(p.restarts() >= 2, 10000);
+            QTRY_VERIFY_WITH_TIMEOUT(p.restartCount().restarts() >= 2, 10000);
         }
         qunsetenv("BRIDGESCOPE_DDS");
-        QCOMPARE(Ros2Participant::backoffMs(1), 250);
-        QCOMPARE(Ros2Participant::backoffMs(3), 1000);
-        QCOMPARE(Ros2Participant::backoffMs(30), 30000);
+        QCOMPARE(DdsRestartCount::backoffMs(1), 250);
+        QCOMPARE(DdsRestartCount::backoffMs(3), 1000);
+        QCOMPARE(DdsRestartCount::backoffMs(30), 30000);
     }
 };
 

@@ -328,7 +328,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(measure.discovery().topics().contains(u"/lab/good"_s), 10000);
         QCOMPARE(measure.malformedStampsByTopic().value(u"/lab/good"_s), quint64(0));
         QVERIFY(live->ros2()->isRunning());
-        QCOMPARE(live->ros2()->restarts(), quint64(0));
+        QCOMPARE(live->ros2()->restartCount().restarts(), quint64(0));
     }
 };
 
