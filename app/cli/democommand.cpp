@@ -197,10 +197,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
 /// Prints the latency report of the recorded run; fails when it holds no complete sample.
 int printDemo(const DemoRequest& request, const QString& runPath)
 {
-    QString why;
-    const std::optional<Report> report = Report::build({runPath}, std::nullopt, {}, &why);
+    const Result<Report> report = Report::build({runPath}, std::nullopt, {});
     if (!report) {
-        err(why);
+        err(report.error().toString());
         return ExitFailed;
     }
     const QByteArray text = request.summary == ReportFormats::Format::Json ? ReportFormats::json(*report)

@@ -153,10 +153,9 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
         }
         return !CliOutput::stopRequested();
     };
-    QString why;
     QStringList warnings;
-    std::optional<Report> report
-        = Report::build(request.inputs, request.pipeline, request.options, &why, &warnings, progress);
+    Result<Report> report
+        = Report::build(request.inputs, request.pipeline, request.options, &warnings, progress);
     if (tty && shown >= 0)
         std::fprintf(stderr, "\r\033[K");
     if (CliOutput::stopRequested()) {
@@ -164,7 +163,7 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
         return ExitCancelled;
     }
     if (!report) {
-        err(why);
+        err(report.error().toString());
         return ExitUsage;
     }
     for (const QString& w : std::as_const(warnings))
@@ -207,19 +206,19 @@ int experimentReport(const ReportRequest& request)
 /// Renders the report and writes it to the file or stdout; nothing is written when cancelled.
 int writeReport(const ReportRequest& request, const Report& report)
 {
-    QString why;
-    const QByteArray text = ReportFormats::render(report, request.format, request.perSample, &why);
-    if (text.isEmpty() && !why.isEmpty()) {
-        err(why);
+    const Result<QByteArray> text = ReportFormats::render(report, request.format, request.perSample);
+    if (!text) {
+        err(text.error().toString());
         return ExitUsage;
     }
     if (CliOutput::stopRequested()) { // formatting thousands of stages takes a while too
         err(ReportText::tr("cancelled; nothing written"));
         return ExitCancelled;
     }
+    QString why;
     if (request.output.isEmpty()) {
-        CliOutput::writeStdout(text); // a failed write is reported by finish() below
-    } else if (!AtomicFile::write(request.output, text, &why, false)) {
+        CliOutput::writeStdout(*text); // a failed write is reported by finish() below
+    } else if (!AtomicFile::write(request.output, *text, &why, false)) {
         err(why);
         return ExitUsage;
     }

@@ -91,7 +91,7 @@ private slots:
         QVERIFY(!QDir(lab.dir).exists()); // the lab cleans up after itself
 
         QString error;
-        const std::optional<Report> report = Report::build({run}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({run}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         const LatencyEngine& e = *report->runs().front()->engine;
         // 10 Hz for 20 s, less the first second of starting up.
@@ -371,7 +371,7 @@ private slots:
         QVERIFY(std::any_of(data->events.cbegin(), data->events.cend(), [](const RecordedEvent& e) {
             return e.reasons.contains(u"bridge_down"_s) && e.subject == u"bridge:mqtt_interface_vehicle"_s;
         }));
-        const std::optional<Report> report = Report::build({run}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({run}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY2(report->runs().front()->engine->samples() >= 20,
                  qPrintable(QString::number(report->runs().front()->engine->samples())));

@@ -120,17 +120,17 @@ bool RunBar::openRun(const QString& path, QString* error)
     QStringList warnings;
     RunLoader::Options options;
     options.skipBadRows = true; // an interactive import shows what was skipped instead of refusing
-    std::optional<RunData> run = RunLoader::load(path, options, error, &warnings, report);
+    Result<RunData> run = RunLoader::load(path, options, &warnings, report);
     const bool cancelled = progress.wasCanceled();
     progress.reset();
     if (!run) {
-        if (cancelled && error)
-            error->clear();
+        if (!cancelled && error)
+            *error = run.error().toString();
         return false;
     }
     if (!m_measure->showRun(*run, error))
         return false;
-    m_shown = std::move(run);
+    m_shown = std::move(run).value();
     m_shownPath = path;
     if (!warnings.isEmpty())
         QMessageBox::information(this, tr("Open Run"),

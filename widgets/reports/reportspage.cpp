@@ -247,16 +247,14 @@ std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
     return r;
 }
 
-QByteArray ReportsPage::render(const Report& report, ReportFormats::Format format, QString* error) const
+Result<QByteArray> ReportsPage::render(const Report& report, ReportFormats::Format format) const
 {
     if (format == ReportFormats::Format::Csv && report.isComparison()) {
         // The page names its own checkbox, not the command line's --join.
-        if (error)
-            *error = tr("a CSV file holds a single run: give one input, or tick “%1”")
-                         .arg(QString(m_join->text()).remove(u'&'));
-        return {};
+        return LocatedError {tr("a CSV file holds a single run: give one input, or tick “%1”")
+                                 .arg(QString(m_join->text()).remove(u'&'))};
     }
-    return ReportFormats::render(report, format, m_perSample->isChecked(), error);
+    return ReportFormats::render(report, format, m_perSample->isChecked());
 }
 
 void ReportsPage::schedulePreview()
@@ -318,7 +316,6 @@ void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QStri
         return;
     }
     const ReportFormats::Format f = format();
-    QString why;
     if (ReportFormats::entry(f).richPreview) {
         // Rich text cannot show inline SVG: the figure comes as an image rendered from it.
         QSvgRenderer svg(ReportFormats::ecdfSvg(*report));
@@ -334,8 +331,8 @@ void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QStri
         m_rich->setHtml(m_preview);
         m_previewStack->setCurrentWidget(m_rich);
     } else {
-        const QByteArray text = render(*report, f, &why);
-        m_preview = text.isEmpty() && !why.isEmpty() ? why : QString::fromUtf8(text);
+        const Result<QByteArray> text = render(*report, f);
+        m_preview = text ? QString::fromUtf8(*text) : text.error().toString();
         m_text->setPlainText(m_preview);
         m_previewStack->setCurrentWidget(m_text);
     }
@@ -407,13 +404,13 @@ bool ReportsPage::exportTo(const QString& path, QString* error)
             *error = job.isCancelled() ? tr("cancelled; nothing written") : why;
         return false;
     }
-    const QByteArray bytes = render(*report, format(), &why);
-    if (bytes.isEmpty()) {
+    const Result<QByteArray> bytes = render(*report, format());
+    if (!bytes || bytes->isEmpty()) {
         if (error)
-            *error = why;
+            *error = bytes.error().toString();
         return false;
     }
-    return AtomicFile::write(path, bytes, error, false);
+    return AtomicFile::write(path, *bytes, error, false);
 }
 
 void ReportsPage::chooseInputs()

@@ -74,7 +74,7 @@ private:
     void showPreview(const std::shared_ptr<Report>& report, const QString& error);
     /// What the page's fields ask for; nullopt with `error` when the pipeline file does not load.
     std::optional<ReportJob::Request> request(QString* error) const;
-    QByteArray render(const Report& report, ReportFormats::Format format, QString* error) const;
+    Result<QByteArray> render(const Report& report, ReportFormats::Format format) const;
 
     QListWidget* m_inputs;
     QComboBox* m_format;
