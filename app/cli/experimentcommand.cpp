@@ -191,9 +191,8 @@ int runExperiment(const ExperimentRequest& request)
     ExperimentRunner::Options options;
     options.resume = request.resume;
     ExperimentRunner runner(request.plan, request.planText, request.directory, options);
-    QString why;
-    if (!runner.prepare(&why)) {
-        err(why);
+    if (const Status prepared = runner.prepare(); !prepared) {
+        err(prepared.error().toString());
         return ExitUsage;
     }
     for (const QString& note : runner.resumeNotes())

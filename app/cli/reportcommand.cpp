@@ -174,32 +174,31 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
 /// The tables of an experiment's folder.
 int experimentReport(const ReportRequest& request)
 {
-    QString why;
-    const std::optional<QList<ExperimentReport::Statistic>> statistics
-        = ExperimentReport::parseStatistics(request.statistics, &why);
+    const Result<QList<ExperimentReport::Statistic>> statistics
+        = ExperimentReport::parseStatistics(request.statistics);
     if (!statistics) {
-        err(why);
+        err(statistics.error().toString());
         return ExitUsage;
     }
     // Its runs are read like any other: Ctrl+C and SIGTERM end a long read.
     CliOutput::catchStopSignals();
-    const std::optional<ExperimentReport> report = ExperimentReport::load(
-        request.inputs.first(), &why, [](int) { return !CliOutput::stopRequested(); });
+    const Result<ExperimentReport> report
+        = ExperimentReport::load(request.inputs.first(), [](int) { return !CliOutput::stopRequested(); });
     if (CliOutput::stopRequested()) {
         err(ReportText::tr("cancelled; nothing written"));
         return ExitCancelled;
     }
     if (!report) {
-        err(why);
+        err(report.error().toString());
         return ExitUsage;
     }
-    const QByteArray text = report->exportTo(request.output, request.format, *statistics, &why);
-    if (text.isEmpty() && !why.isEmpty()) {
-        err(why);
+    const Result<QByteArray> text = report->exportTo(request.output, request.format, *statistics);
+    if (!text) {
+        err(text.error().toString());
         return ExitUsage;
     }
     if (request.output.isEmpty())
-        CliOutput::writeStdout(text); // a failed write is reported by finish() below
+        CliOutput::writeStdout(*text); // a failed write is reported by finish() below
     return CliOutput::finish(ExitOk);
 }
 

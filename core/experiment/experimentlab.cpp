@@ -40,11 +40,16 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
         // host and port without the user info: a password may hold what QUrl refuses
         const QUrl broker(Secrets::urlWithoutCredentials(lab.brokerUrl()));
         const quint16 port = quint16(broker.port(1883));
-        vehicleRelay = LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 1);
-        cloudRelay = vehicleRelay ? LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 2)
-                                  : nullptr;
-        if (!cloudRelay)
-            return false;
+        for (auto [relay, n] : {std::pair {&vehicleRelay, 1u}, std::pair {&cloudRelay, 2u}}) {
+            Result<std::unique_ptr<LinkRelay>> started
+                = LinkRelay::start(s.link, broker.host(), port, 2u * quint32(seed) + n);
+            if (!started) {
+                if (why)
+                    *why = started.error().toString();
+                return false;
+            }
+            *relay = std::move(started).value();
+        }
         lab.setBridgePort(u"vehicle"_s, vehicleRelay->port());
         lab.setBridgePort(u"cloud"_s, cloudRelay->port());
     }

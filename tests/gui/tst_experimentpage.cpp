@@ -329,7 +329,7 @@ private slots:
         QString why;
         const auto plan = noted(ExperimentPlan::readFile(QDir(out).filePath(u"plan.yaml"_s)), &why);
         QVERIFY2(plan, qPrintable(why));
-        const auto state = ExperimentFolder(out).readState(*plan, &why);
+        const auto state = noted(ExperimentFolder(out).readState(*plan), &why);
         QVERIFY2(state, qPrintable(why));
         QCOMPARE(state->first().state, CellStatus::Pending);
     }

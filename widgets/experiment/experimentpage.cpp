@@ -376,15 +376,14 @@ void ExperimentPage::loadState()
         updateButtons();
         return;
     }
-    QString why;
-    if (const auto state = ExperimentFolder(dir).readState(*m_plan, &why)) {
+    if (const Result<QList<CellStatus>> state = ExperimentFolder(dir).readState(*m_plan)) {
         m_statuses = *state;
         for (int i = 0; i < int(m_statuses.size()); ++i)
             updateRow(i);
         m_grid->resizeColumnsToContents();
         showCounts();
     } else {
-        m_status->setText(why);
+        m_status->setText(state.error().toString());
     }
     updateButtons();
     if (dir != m_reportFolder) // a run's end and Refresh read it again

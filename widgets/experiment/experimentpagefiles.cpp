@@ -64,10 +64,9 @@ bool ExperimentPage::exportReport(const QString& path, QString* error, const QSt
             *error = tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind);
         return false;
     }
-    QString why;
-    if (m_report->exportTo(path, f, statistics, &why).isEmpty() && !why.isEmpty()) {
+    if (const Result<QByteArray> exported = m_report->exportTo(path, f, statistics); !exported) {
         if (error)
-            *error = why;
+            *error = exported.error().toString();
         return false;
     }
     return true;
