@@ -140,14 +140,15 @@ int main(int argc, char** argv)
 
     Collector viaRos1, viaRos2, viaBroker;
     RosEndpoint ros;
-    QString error;
-    if (!ros.start(u"bench_ros2bridge"_s, servers.rosMasterUri(), {}, &error)) {
-        std::fprintf(stderr, "ros: %s\n", qPrintable(error));
+    if (const Status started = ros.start(u"bench_ros2bridge"_s, servers.rosMasterUri(), {}); !started) {
+        std::fprintf(stderr, "ros: %s\n", qPrintable(started.error().toString()));
         return 1;
     }
-    ros.subscribe(
-        u"/bench/out"_s, 100, [&viaRos1](const RosRawMessage& m, qint64 t) { viaRos1.add(m.bytes, 4, t); }, &error);
-    const int pub = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false, &error);
+    QString error;
+    static_cast<void>(ros.subscribe( // a failure shows as nothing arriving
+        u"/bench/out"_s, 100, [&viaRos1](const RosRawMessage& m, qint64 t) { viaRos1.add(m.bytes, 4, t); }));
+    const int pub
+        = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false).valueOr(-1);
     Ros2Participant dds;
     QObject::connect(&dds, &Ros2Participant::received,
                      [&viaRos2](const QString&, const Ros2Sample& s) { viaRos2.add(s.bytes, 8, s.receivedNs); });

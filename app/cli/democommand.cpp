@@ -262,20 +262,19 @@ int runDemoNodeCommand(const QStringList& arguments)
     o.clockOffsetNs = qint64(parser.value(offset).toDouble() * 1e6);
     CliOutput::catchStopSignals();
     CliOutput::keepFreedMemory();
-    QString why;
     const auto stop = [] { return CliOutput::stopRequested(); };
-    bool ok = false;
+    Status ran;
     if (lab.ros == 2) {
         // on 127.0.0.1 only, as the lab's whole domain
         Ros2DemoNodes::Options o2;
         static_cast<DemoNodes::Options&>(o2) = o;
         o2.dds = {lab.rosDomain, true};
-        ok = role == u"vehicle"_s ? Ros2DemoNodes::runVehicle(o2, stop, &why) : Ros2DemoNodes::runCloud(o2, stop, &why);
+        ran = role == u"vehicle"_s ? Ros2DemoNodes::runVehicle(o2, stop) : Ros2DemoNodes::runCloud(o2, stop);
     } else {
-        ok = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop, &why) : DemoNodes::runCloud(o, stop, &why);
+        ran = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop) : DemoNodes::runCloud(o, stop);
     }
-    if (!ok && !CliOutput::stopRequested()) {
-        err(Demo::tr("demo-node %1: %2").arg(role, why));
+    if (!ran && !CliOutput::stopRequested()) {
+        err(Demo::tr("demo-node %1: %2").arg(role, ran.error().toString()));
         return ExitFailed;
     }
     return ExitOk;

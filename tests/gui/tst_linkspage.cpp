@@ -78,7 +78,7 @@ struct MasterTopics
 MasterTopics masterTopics(const QString& masterUri, const QString& prefix)
 {
     MasterTopics out;
-    const std::optional<TopicGraph> graph = RosMasterApi(masterUri).graph(3000);
+    const Result<TopicGraph> graph = RosMasterApi(masterUri).graph(3000);
     if (!graph)
         return out;
     for (const TopicInfo& t : graph->topics) {
