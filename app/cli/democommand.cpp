@@ -126,10 +126,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
 {
     CliOutput::catchStopSignals();
     DemoLab lab;
-    QString why;
     err(Demo::tr("starting the demo lab…"));
-    if (!lab.start(request.lab, &why)) {
-        err(Demo::tr("the demo lab did not start: %1").arg(why));
+    if (const Status started = lab.start(request.lab); !started) {
+        err(Demo::tr("the demo lab did not start: %1").arg(started.error().toString()));
         return ExitFailed;
     }
     if (lab.ros() == 2)
@@ -146,6 +145,7 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         return ExitFailed;
     }
     LiveSession live;
+    QString why;
     if (lab.ros() == 2) {
         if (!live.startRos2({lab.rosDomain(), true}, &why)) {
             err(why);

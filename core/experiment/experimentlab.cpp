@@ -34,8 +34,11 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
     o.tlsDirectory = s.tls ? QDir(directory).filePath(u"tls"_s) : QString();
     o.bridgeCommand = s.bridge.command;
     o.ros = plan.ros; // ROS 2: the lab picks a fresh free domain for each cell
-    if (!lab.startServers(o, why))
+    if (Status servers = lab.startServers(o); !servers) {
+        if (why)
+            *why = servers.error().toString();
         return false;
+    }
     if (!s.link.isNone()) {
         // host and port without the user info: a password may hold what QUrl refuses
         const QUrl broker(Secrets::urlWithoutCredentials(lab.brokerUrl()));
@@ -53,8 +56,11 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
         lab.setBridgePort(u"vehicle"_s, vehicleRelay->port());
         lab.setBridgePort(u"cloud"_s, cloudRelay->port());
     }
-    if (!lab.startComponents(why))
+    if (Status components = lab.startComponents(); !components) {
+        if (why)
+            *why = components.error().toString();
         return false;
+    }
     Result<Pipeline> pipeline
         = Pipeline::readFile(plan.pipelinePath.isEmpty() ? lab.pipelinePath() : plan.pipelinePath);
     if (!pipeline) {

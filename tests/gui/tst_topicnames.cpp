@@ -181,7 +181,7 @@ private slots:
         options.program = QStringLiteral(BRIDGESCOPE_BINARY);
         options.payloadBytes = 20000; // the views are tested, not the lab
         QString error;
-        QVERIFY2(m_lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(m_lab.start(options), &error), qPrintable(error));
         m_window = std::make_unique<MainWindow>();
         MainWindow* w = m_window.get();
         w->discoverPage()->setRosMasterUri(m_lab.rosMasterUri());

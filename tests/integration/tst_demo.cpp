@@ -148,7 +148,7 @@ private slots:
     {
         DemoLab lab;
         QString error;
-        QVERIFY2(lab.start(ros2Lab(), &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         LiveSession live;
         QVERIFY2(live.startRos2({lab.rosDomain(), true}, &error), qPrintable(error));
         MeasureSession measure(&live);
@@ -179,7 +179,7 @@ private slots:
         options.bridgeCommand = u"echo {name} {ros_domain} $ROS_DOMAIN_ID $ROS_LOCALHOST_ONLY {config} >> '"_s
             + said + u"'; exec sleep 30"_s;
         QString error;
-        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(options), &error), qPrintable(error));
         QCOMPARE(lab.ros(), 2);
         QVERIFY(lab.rosMasterUri().isEmpty());
         QVERIFY2(lab.rosDomain() >= 161 && lab.rosDomain() <= 232, qPrintable(QString::number(lab.rosDomain())));
@@ -199,7 +199,7 @@ private slots:
         QVERIFY2(text.contains(u"/vehicle/pointcloud"_s), qPrintable(text));
         // the next lab gets another domain
         DemoLab next;
-        QVERIFY2(next.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(next.start(options), &error), qPrintable(error));
         QVERIFY(next.rosDomain() != lab.rosDomain());
     }
 
@@ -211,7 +211,7 @@ private slots:
     {
         DemoLab lab;
         QString error;
-        QVERIFY2(lab.start(ros2Lab(), &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         Ros2Participant dds;
         QVERIFY2(dds.start({lab.rosDomain(), true}, &error), qPrintable(error));
         // The vehicle starts once its stamps have a subscriber (a measuring Bridgescope): this one.
@@ -313,7 +313,7 @@ private slots:
         options.program = QStringLiteral(BRIDGESCOPE_BINARY);
         options.payloadBytes = 20000;
         QString error;
-        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(options), &error), qPrintable(error));
         const quint16 port = TestServers::freePort();
         const QString run = m_dir.filePath(u"watched.bsrun"_s);
         QProcess watch;
