@@ -126,9 +126,8 @@ int main(int argc, char** argv)
     });
     mqtt.addSubscription(u"bench/peer"_s, 0);
     mqtt.addSubscription(u"bench/data"_s, 0);
-    QString error;
-    if (!mqtt.connect(5000, &error)) {
-        std::fprintf(stderr, "mqtt: %s\n", qPrintable(error));
+    if (const Status connected = mqtt.connect(5000); !connected) {
+        std::fprintf(stderr, "mqtt: %s\n", qPrintable(connected.error().toString()));
         return 1;
     }
     // Warm up: until a message makes it through both bridges (they announce the type first).

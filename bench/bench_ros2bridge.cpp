@@ -164,8 +164,8 @@ int main(int argc, char** argv)
     MqttLink mqtt(MqttProfile::fromUrl(broker));
     mqtt.setMessageHandler([&viaBroker](const QString&, const QByteArray& p, qint64 t) { viaBroker.add(p, 0, t); });
     mqtt.addSubscription(u"bench/peer"_s, 0);
-    if (!mqtt.connect(5000, &error)) {
-        std::fprintf(stderr, "mqtt: %s\n", qPrintable(error));
+    if (const Status connected = mqtt.connect(5000); !connected) {
+        std::fprintf(stderr, "mqtt: %s\n", qPrintable(connected.error().toString()));
         return 1;
     }
     const auto send = [&](int path, int size) {

@@ -256,9 +256,8 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     profile = MqttProfile::fromUrl(parser.value(broker));
     if (parser.isSet(filter))
         profile.filters = parser.values(filter);
-    QString why;
-    if (!profile.validate(&why)) {
-        err(why);
+    if (const Status valid = profile.validate(); !valid) {
+        err(valid.error().toString());
         return ExitUsage;
     }
     request->masterUri = parser.value(master);

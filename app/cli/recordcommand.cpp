@@ -140,8 +140,12 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     const Result<Pipeline> pipe = Pipeline::readFile(parser.value(pipeline));
     request->profile = MqttProfile::fromUrl(parser.value(broker));
-    if (!pipe || !request->profile.validate(&why)) {
-        err(pipe ? why : pipe.error().toString());
+    if (!pipe) {
+        err(pipe.error().toString());
+        return ExitUsage;
+    }
+    if (const Status valid = request->profile.validate(); !valid) {
+        err(valid.error().toString());
         return ExitUsage;
     }
     request->pipeline = *pipe;

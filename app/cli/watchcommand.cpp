@@ -148,11 +148,10 @@ struct WatchOptions
 /// The files the options name (rules, pipeline) and the broker: false after saying what is wrong.
 bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
 {
-    QString why;
     request->broker = parser.isSet(o.broker) ? MqttProfile::fromUrl(parser.value(o.broker))
                                              : brokerOf(request->configs.first().config);
-    if (!request->broker.validate(&why)) {
-        err(why);
+    if (const Status valid = request->broker.validate(); !valid) {
+        err(valid.error().toString());
         return false;
     }
     if (parser.isSet(o.rules)) {

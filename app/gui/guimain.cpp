@@ -164,9 +164,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = t
     if (parser.isSet(broker)) {
         request->brokerUrl = parser.value(broker);
         request->broker = MqttProfile::fromUrl(request->brokerUrl);
-        QString error;
-        if (!request->broker->validate(&error)) {
-            CliOutput::err(error);
+        if (const Status valid = request->broker->validate(); !valid) {
+            CliOutput::err(valid.error().toString());
             return ExitUsage;
         }
     }

@@ -81,8 +81,8 @@ Result<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString& broke
         return substituteArgs(c.effective(scope, path), args, &missing);
     };
     spec.profile = brokerProfile(c, brokerUrl, setting);
-    if (QString why; !spec.profile.validate(&why))
-        return LocatedError {why};
+    if (Status valid = spec.profile.validate(); !valid)
+        return valid.error();
     spec.will.topic = setting(OptionScope::Client, u"last_will.topic"_s);
     spec.will.message = setting(OptionScope::Client, u"last_will.message"_s).toUtf8();
     spec.will.qos = setting(OptionScope::Client, u"last_will.qos"_s).toInt();

@@ -308,8 +308,8 @@ Status ReferenceBridge::start(const std::function<bool()>& keepWaiting)
         p->log(tr("lost the broker (%1); reconnecting").arg(why.isEmpty() ? u"?"_s : why));
     });
     d->log(tr("connecting to %1…").arg(d->profile.url));
-    if (QString why; !d->mqtt->connect(10000, &why))
-        return LocatedError {why};
+    if (Status connected = d->mqtt->connect(10000); !connected)
+        return connected;
     d->log(tr("connected to %1").arg(d->profile.url));
 
     for (const auto& h : d->hops) {

@@ -413,8 +413,8 @@ Status Ros2Bridge::start(const Ros2Options& rosOptions)
         r.hop->start(*d->side, *d->mqtt); // stamp topics; a fixed type's writer before any message
     d->setupSubscriptions();
     d->log(tr("connecting to %1…").arg(d->spec.profile.url));
-    if (QString why; !d->mqtt->connect(10000, &why))
-        return LocatedError {why};
+    if (Status connected = d->mqtt->connect(10000); !connected)
+        return connected;
     d->log(tr("connected to %1").arg(d->spec.profile.url));
     return {};
 }

@@ -172,9 +172,8 @@ void MqttConnection::open(const MqttProfile& profile)
 {
     close();
     m_profile = profile;
-    QString error;
-    if (!profile.validate(&error)) {
-        setState(State::Failed, error);
+    if (const Status valid = profile.validate(); !valid) {
+        setState(State::Failed, valid.error().toString());
         return;
     }
     d->retrySeconds = 1;

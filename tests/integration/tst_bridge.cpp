@@ -191,7 +191,7 @@ private slots:
                 inbox->add(t, p);
         });
         m_mqtt->addSubscription(u"#"_s, 0);
-        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(m_mqtt->connect(5000), &error), qPrintable(error));
     }
 
     void cleanupTestCase()
@@ -502,7 +502,7 @@ private slots:
         options.maxQueuedBytes = 16 * 1024 * 1024;
         MqttLink flooder(MqttProfile::fromUrl(m_servers.brokerUrl()), options);
         QString error;
-        QVERIFY2(flooder.connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(flooder.connect(5000), &error), qPrintable(error));
         const QByteArray big(kFloodBytes, 'x');
         const qint64 grown
             = floodWhileStopped(*p, hz.processId(), [&] { flooder.send(u"flood/in"_s, big, 0, false); });

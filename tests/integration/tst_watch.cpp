@@ -223,7 +223,7 @@ private slots:
         QVERIFY2(noted(m_ros.start(u"watch_test"_s, m_servers.rosMasterUri(), {}), &error),
                  qPrintable(error));
         m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(m_mqtt->connect(5000), &error), qPrintable(error));
         m_pointType = rosMessage(geometry_msgs::PointStamped());
         m_stringType = rosMessage(std_msgs::String());
         m_stampedPub = noted(m_ros.advertise(u"/w/stamped"_s, m_pointType.type, m_pointType.md5,
