@@ -178,9 +178,11 @@ bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, Wa
 bool readOutputs(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
 {
     request->metrics = parser.value(o.metrics);
-    QString why;
-    if (parser.isSet(o.metrics) && !WatchMetrics::checkAddress(request->metrics, &why)) {
-        err(why); // a port beyond 65535 or no host: the command line is wrong, not the network
+    if (const Status address
+        = parser.isSet(o.metrics) ? WatchMetrics::checkAddress(request->metrics) : Status();
+        !address) {
+        err(address.error()
+                .toString()); // a port beyond 65535 or no host: the command line is wrong, not the network
         return false;
     }
     request->eventsFile = parser.value(o.events);
@@ -252,12 +254,12 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
 /// The Prometheus endpoint at HOST:PORT, said on stderr; none after saying why.
 std::unique_ptr<WatchMetrics> serveMetrics(const QString& hostPort)
 {
-    QString why;
-    std::unique_ptr<WatchMetrics> metrics = WatchMetrics::serve(hostPort, &why);
-    if (!metrics) {
-        err(why);
+    Result<std::unique_ptr<WatchMetrics>> served = WatchMetrics::serve(hostPort);
+    if (!served) {
+        err(served.error().toString());
         return nullptr;
     }
+    std::unique_ptr<WatchMetrics> metrics = std::move(served).value();
     // The port that was bound: with port 0 the system chose it.
     const QString host = hostPort.left(hostPort.lastIndexOf(u':'));
     err(Watch::tr("metrics at http://%1:%2/metrics").arg(host).arg(metrics->port()));
@@ -430,7 +432,7 @@ int runWatch(const WatchRequest& request)
     WatchSession watch(WatchSession::partsOf(&live));
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);
-    watch.setConfigs(request.configs);
+    static_cast<void>(watch.setConfigs(request.configs)); // the command sets no link limit: it cannot fail
     LinkMonitor* monitor = watch.monitor();
     // With a pipeline the measurement records the run (its stamps and the events); without one the
     // run holds the events alone.

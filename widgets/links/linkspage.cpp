@@ -408,8 +408,11 @@ bool LinksPage::applyConfigs(QString* error)
     for (const Listed& l : std::as_const(m_configs))
         if (l.watched)
             configs << l.config;
-    if (!m_watch->setConfigs(configs, error))
+    if (const Status set = m_watch->setConfigs(configs); !set) {
+        if (error)
+            *error = set.error().toString();
         return false;
+    }
     m_model->refresh();
     updateSummary();
     return true;
