@@ -198,10 +198,9 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     request->ros2Options = ros.ros2Options;
     const QString path = parser.positionalArguments().first();
     // At most one byte more than a config may have; a FIFO or a device is refused.
-    QString why;
-    const std::optional<QByteArray> yaml = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why);
+    const Result<QByteArray> yaml = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
     if (!yaml) {
-        err(Bridge::tr("%1: %2").arg(path, why));
+        err(Bridge::tr("%1: %2").arg(path, yaml.error().toString()));
         return ExitUsage;
     }
     request->path = path;

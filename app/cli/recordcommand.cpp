@@ -56,11 +56,9 @@ bool readRunInfo(const QCommandLineParser& parser, const QCommandLineOption& nam
     info.notes = parser.value(notes);
     if (!parser.isSet(config))
         return true;
-    QString why;
-    const std::optional<QByteArray> yaml
-        = RegularFile::readHead(parser.value(config), YamlLimits::maxBytes + 1, &why);
+    const Result<QByteArray> yaml = RegularFile::readHead(parser.value(config), YamlLimits::maxBytes + 1);
     if (!yaml) {
-        err(Record::tr("%1: %2").arg(parser.value(config), why));
+        err(Record::tr("%1: %2").arg(parser.value(config), yaml.error().toString()));
         return false;
     }
     info.bridgeConfigPath = QFileInfo(parser.value(config)).absoluteFilePath();

@@ -214,11 +214,10 @@ int writeReport(const ReportRequest& request, const Report& report)
         err(ReportText::tr("cancelled; nothing written"));
         return ExitCancelled;
     }
-    QString why;
     if (request.output.isEmpty()) {
         CliOutput::writeStdout(*text); // a failed write is reported by finish() below
-    } else if (!AtomicFile::write(request.output, *text, &why, false)) {
-        err(why);
+    } else if (const Status written = AtomicFile::write(request.output, *text, false); !written) {
+        err(written.error().toString());
         return ExitUsage;
     }
     int status = ExitOk;

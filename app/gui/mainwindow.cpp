@@ -121,8 +121,9 @@ MainWindow::MainWindow(QWidget* parent)
     });
     m_measurePage->runBar()->setBridgeConfigProvider([this]() -> std::pair<QString, QByteArray> {
         const QString path = m_document->filePath();
-        const std::optional<QByteArray> bytes
-            = path.isEmpty() ? std::nullopt : RegularFile::readHead(path, YamlLimits::maxBytes + 1);
+        if (path.isEmpty())
+            return {};
+        const Result<QByteArray> bytes = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
         if (!bytes)
             return {};
         return {path, *bytes};

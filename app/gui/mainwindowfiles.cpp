@@ -41,7 +41,7 @@ Kind kindOf(const QString& path)
         return ExperimentReport::isExperiment(path) ? Kind::Experiment : Kind::Folder;
     if (RunLoader::isMeasurement(path))
         return Kind::Measurement;
-    if (const std::optional<QByteArray> bytes = RegularFile::readHead(path, 256 * 1024)) {
+    if (const Result<QByteArray> bytes = RegularFile::readHead(path, 256 * 1024)) {
         static const QRegularExpression pipelineKey(u"(^|\\n)topics_in_order\\s*:"_s);
         static const QRegularExpression planKey(u"(^|\\n)(factors|cells)\\s*:"_s);
         const QString head = QString::fromUtf8(*bytes);

@@ -327,9 +327,11 @@ Status DemoLab::startComponents()
         const bool relayed = d->bridgePorts.contains(side);
         const QString host = relayed ? u"127.0.0.1"_s : broker.host();
         const quint16 port = relayed ? d->bridgePorts.value(side) : quint16(broker.port(1883));
-        if (!AtomicFile::write(d->dir.filePath(side + u".yaml"_s),
-                               bridgeConfig(side, host, port, caFile(), o).toUtf8(), &why, false))
-            return stopWith(why);
+        if (const Status written
+            = AtomicFile::write(d->dir.filePath(side + u".yaml"_s),
+                                bridgeConfig(side, host, port, caFile(), o).toUtf8(), false);
+            !written)
+            return stopWith(written.error().toString());
     }
     Pipeline pipeline(pipelineTopics(), 600);
     for (const QString& t : pipelineTopics())
@@ -337,8 +339,8 @@ Status DemoLab::startComponents()
             t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
     // Without the cloud's offset every component stamps with this machine's clock.
     pipeline.setOneClock(o.cloudOffsetMs == 0);
-    if (!AtomicFile::write(pipelinePath(), pipeline.toYaml(), &why, false))
-        return stopWith(why);
+    if (const Status written = AtomicFile::write(pipelinePath(), pipeline.toYaml(), false); !written)
+        return stopWith(written.error().toString());
 
     // The components.
     const QString offset = QString::number(o.cloudOffsetMs);

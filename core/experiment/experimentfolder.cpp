@@ -30,10 +30,9 @@ QString ExperimentFolder::filePath(const QString& relative) const
 
 Result<QList<CellStatus>> ExperimentFolder::readState(const ExperimentPlan& plan) const
 {
-    QString why;
-    const std::optional<QByteArray> bytes = RegularFile::readHead(statePath(), kMaxStateBytes, &why);
+    const Result<QByteArray> bytes = RegularFile::readHead(statePath(), kMaxStateBytes);
     if (!bytes)
-        return LocatedError {tr("%1: %2").arg(statePath(), why)};
+        return LocatedError {tr("%1: %2").arg(statePath(), bytes.error().toString())};
     Result<QList<CellStatus>> statuses = ExperimentState::parse(*bytes, plan);
     if (!statuses)
         return LocatedError {tr("%1: %2").arg(statePath(), statuses.error().toString())};

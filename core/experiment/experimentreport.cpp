@@ -448,19 +448,23 @@ Result<QByteArray> ExperimentReport::exportTo(const QString& path, ReportFormats
             return written.error();
     }
     const QByteArray bytes = render(format, statistics, prefix);
-    QString why;
-    if (!path.isEmpty() && !AtomicFile::write(path, bytes, &why, false))
-        return LocatedError {why};
+    if (path.isEmpty())
+        return bytes;
+    if (Status written = AtomicFile::write(path, bytes, false); !written)
+        return written.error();
     return bytes;
 }
 
 Status ExperimentReport::writeFigures(const QString& figurePrefix) const
 {
-    QString why;
-    for (int t = 0; t < int(m_tables.size()); ++t)
-        if (const QByteArray svg = ecdfSvg(t); !svg.isEmpty()
-            && !AtomicFile::write(figurePath(figurePrefix, m_tables[t].factor), svg, &why, false))
-            return LocatedError {why};
+    for (int t = 0; t < int(m_tables.size()); ++t) {
+        const QByteArray svg = ecdfSvg(t);
+        if (svg.isEmpty())
+            continue;
+        if (Status written = AtomicFile::write(figurePath(figurePrefix, m_tables[t].factor), svg, false);
+            !written)
+            return written;
+    }
     return {};
 }
 

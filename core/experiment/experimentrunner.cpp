@@ -211,9 +211,9 @@ Status ExperimentRunner::prepare()
             }
         }
     } else {
-        QString why;
-        if (!AtomicFile::write(ExperimentFolder(m_dir).planPath(), m_planText, &why, false))
-            return LocatedError {why};
+        if (Status written = AtomicFile::write(ExperimentFolder(m_dir).planPath(), m_planText, false);
+            !written)
+            return written;
     }
     const bool tls = std::any_of(m_plan.cells.cbegin(), m_plan.cells.cend(),
                                  [](const ExperimentCell& c) { return c.settings.tls; });
@@ -486,9 +486,9 @@ Status ExperimentRunner::writeState() const
                             {u"version"_s, 1},
                             {u"name"_s, m_plan.name},
                             {u"cells"_s, cells}};
-    QString why;
-    if (AtomicFile::write(ExperimentFolder(m_dir).statePath(), QJsonDocument(root).toJson(), &why, false))
-        return {};
-    qCWarning(lcDemo).noquote() << why;
-    return LocatedError {why};
+    const Status written
+        = AtomicFile::write(ExperimentFolder(m_dir).statePath(), QJsonDocument(root).toJson(), false);
+    if (!written)
+        qCWarning(lcDemo).noquote() << written.error().toString();
+    return written;
 }

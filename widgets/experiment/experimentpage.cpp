@@ -518,9 +518,8 @@ bool ExperimentPage::run(bool resume, QString* error)
                 return fail(tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir)));
             m_planPath = QDir(dir).absoluteFilePath(ExperimentFolder::planFileName()); // the copy it keeps
         }
-        QString why;
-        if (!AtomicFile::write(m_planPath, planText().toUtf8(), &why))
-            return fail(why);
+        if (const Status written = AtomicFile::write(m_planPath, planText().toUtf8()); !written)
+            return fail(written.error().toString());
         m_planEdited = false;
     }
     if (!resume) {

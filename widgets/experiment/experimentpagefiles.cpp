@@ -109,9 +109,8 @@ void ExperimentPage::savePlanAs()
                                                       tr("Experiment plans (*.yaml *.yml)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!AtomicFile::write(path, planText().toUtf8(), &error))
-        QMessageBox::warning(this, tr("Save Plan"), error);
+    if (const Status written = AtomicFile::write(path, planText().toUtf8()); !written)
+        QMessageBox::warning(this, tr("Save Plan"), written.error().toString());
     else
         setPlanPath(path);
 }
@@ -122,7 +121,7 @@ void ExperimentPage::loadExample(int index)
     m_examples->setCurrentIndex(0);
     if (path.isEmpty())
         return;
-    const std::optional<QByteArray> text = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
+    const Result<QByteArray> text = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
     if (!text)
         return;
     setPlanText(QString::fromUtf8(*text));

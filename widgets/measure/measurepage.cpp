@@ -438,7 +438,10 @@ void MeasurePage::updateEditable()
 
 bool MeasurePage::saveChart(const QString& path, QString* error)
 {
-    return m_chart->save(path, error);
+    const Status saved = m_chart->save(path);
+    if (!saved && error)
+        *error = saved.error().toString();
+    return saved.ok();
 }
 
 void MeasurePage::chooseChartFile()
@@ -600,8 +603,11 @@ bool MeasurePage::loadPipeline(const QString& path, QString* error)
 
 bool MeasurePage::savePipeline(const QString& path, QString* error)
 {
-    if (!m_measure->pipeline().save(path, error))
+    if (const Status saved = m_measure->pipeline().save(path); !saved) {
+        if (error)
+            *error = saved.error().toString();
         return false;
+    }
     m_pipelineFile = path;
     onPipelineChanged();
     return true;

@@ -410,7 +410,10 @@ bool ReportsPage::exportTo(const QString& path, QString* error)
             *error = bytes.error().toString();
         return false;
     }
-    return AtomicFile::write(path, *bytes, error, false);
+    const Status written = AtomicFile::write(path, *bytes, false);
+    if (!written && error)
+        *error = written.error().toString();
+    return written.ok();
 }
 
 void ReportsPage::chooseInputs()
