@@ -179,9 +179,8 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
         err(Bridge::tr("bridge takes one config file; see bridgescope bridge --help"));
         return ExitUsage;
     }
-    QString rosError;
-    if (!ros.read(parser, &rosError)) {
-        err(rosError);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     if (ros.ros1 && ros.ros2) {

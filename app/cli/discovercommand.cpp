@@ -262,9 +262,8 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     }
     request->masterUri = parser.value(master);
     request->json = parser.isSet(json);
-    QString error;
-    if (!ros.read(parser, &error)) {
-        err(error);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     request->ros1 = ros.ros1;

@@ -127,9 +127,8 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         return ExitUsage;
     }
     request->allowEmpty = parser.isSet(allowEmpty);
-    QString why;
-    if (!ros.read(parser, &why)) {
-        err(why);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     for (const QString& line : ros.notes())

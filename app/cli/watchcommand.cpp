@@ -238,9 +238,8 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     request->allowEmpty = parser.isSet(o.allowEmpty);
     if (!readOptionFiles(parser, o, request))
         return ExitUsage;
-    QString why;
-    if (!ros.read(parser, &why)) {
-        err(why);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     for (const QString& line : ros.notes())

@@ -183,9 +183,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = t
         CliOutput::err(Gui::tr("--theme takes one of: %1").arg(Theme::names().join(u", "_s)));
         return ExitUsage;
     }
-    QString rosError;
-    if (!ros.read(parser, &rosError)) {
-        CliOutput::err(rosError);
+    if (const Status read = ros.read(parser); !read) {
+        CliOutput::err(read.error().toString());
         return ExitUsage;
     }
     if (!ros.environmentWarning.isEmpty() && notices)
