@@ -117,9 +117,8 @@ void show(MainWindow& window, const DemoLab& lab)
     servers->setToolTip(Gui::tr("Point bridgescope discover, watch or mosquitto_sub at these; configs in %1")
                             .arg(lab.directory()));
     window.statusBar()->addPermanentWidget(servers); // not hidden by passing messages
-    QString error;
-    if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
-        CliOutput::err(error);
+    if (const Status loaded = window.measurePage()->loadPipeline(lab.pipelinePath()); !loaded)
+        CliOutput::err(loaded.error().toString());
     window.pages()->setCurrentWidget(window.measurePage());
     // The paper's Fig. 5 view: detection, one-way communication and the total.
     window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);

@@ -244,9 +244,8 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
     if (automated && !errors.isEmpty())
         return false;
     if (!request.pipeline.isEmpty()) {
-        QString error;
-        if (!window.measurePage()->loadPipeline(request.pipeline, &error)) {
-            CliOutput::err(error);
+        if (const Status loaded = window.measurePage()->loadPipeline(request.pipeline); !loaded) {
+            CliOutput::err(loaded.error().toString());
             return false;
         }
         window.pages()->setCurrentWidget(window.measurePage());

@@ -227,17 +227,14 @@ QString ReportsPage::previewText() const
     return m_preview;
 }
 
-std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
+Result<ReportJob::Request> ReportsPage::request() const
 {
     ReportJob::Request r;
     r.inputs = inputs();
     if (!m_pipeline->text().trimmed().isEmpty()) {
         Result<Pipeline> pipeline = Pipeline::readFile(m_pipeline->text().trimmed());
-        if (!pipeline) {
-            if (error)
-                *error = pipeline.error().toString();
-            return std::nullopt;
-        }
+        if (!pipeline)
+            return pipeline.error();
         r.pipeline = std::move(pipeline).value();
     }
     r.options.window = m_window->value();
@@ -279,10 +276,9 @@ void ReportsPage::startPreview()
         emit previewUpdated();
         return;
     }
-    QString error;
-    std::optional<ReportJob::Request> r = request(&error);
+    Result<ReportJob::Request> r = request();
     if (!r) {
-        showPreview(nullptr, error);
+        showPreview(nullptr, r.error().toString());
         return;
     }
     m_job = new ReportJob(std::move(*r), this);
@@ -364,15 +360,11 @@ void ReportsPage::dropEvent(QDropEvent* event)
     emit measurementsDropped(files);
 }
 
-bool ReportsPage::exportTo(const QString& path, QString* error)
+Status ReportsPage::exportTo(const QString& path)
 {
-    QString why;
-    std::optional<ReportJob::Request> r = request(&why);
-    if (!r) {
-        if (error)
-            *error = why;
-        return false;
-    }
+    Result<ReportJob::Request> r = request();
+    if (!r)
+        return r.error();
     // A window-modal progress dialog over a local event loop: the page stays painted, the rest of
     // the window keeps running, and Cancel reaches the job.
     ReportJob job(std::move(*r));
@@ -381,6 +373,7 @@ bool ReportsPage::exportTo(const QString& path, QString* error)
     progress.setMinimumDuration(500);
     QEventLoop loop;
     std::shared_ptr<Report> report;
+    QString why;
     // The Cancel button emits canceled(); QProgressDialog::cancel() (Escape, or a caller) only sets
     // wasCanceled(), which each progress step looks at.
     connect(&progress, &QProgressDialog::canceled, &job, &ReportJob::cancel);
@@ -399,21 +392,14 @@ bool ReportsPage::exportTo(const QString& path, QString* error)
     job.start();
     loop.exec();
     progress.reset();
-    if (!report) {
-        if (error)
-            *error = job.isCancelled() ? tr("cancelled; nothing written") : why;
-        return false;
-    }
+    if (!report)
+        return LocatedError {job.isCancelled() ? tr("cancelled; nothing written") : why};
     const Result<QByteArray> bytes = render(*report, format());
-    if (!bytes || bytes->isEmpty()) {
-        if (error)
-            *error = bytes.error().toString();
-        return false;
-    }
-    const Status written = AtomicFile::write(path, *bytes, false);
-    if (!written && error)
-        *error = written.error().toString();
-    return written.ok();
+    if (!bytes)
+        return bytes.error();
+    if (bytes->isEmpty())
+        return LocatedError {}; // nothing to write, and nothing wrong to say
+    return AtomicFile::write(path, *bytes, false);
 }
 
 void ReportsPage::chooseInputs()
@@ -443,9 +429,8 @@ void ReportsPage::chooseExport()
                                                       tr("%1 files (*.%2)").arg(suffix.toUpper(), suffix));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!exportTo(path, &error))
-        QMessageBox::warning(this, tr("Export Report"), error);
+    if (const Status exported = exportTo(path); !exported)
+        QMessageBox::warning(this, tr("Export Report"), exported.error().toString());
     else
         m_status->setText(tr("Written: %1").arg(path));
 }
