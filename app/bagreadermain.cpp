@@ -38,14 +38,13 @@ int main(int argc, char** argv)
     if (args.size() != 3)
         return fail(QCoreApplication::translate("BagReader", "usage: bridgescope-bagreader BAG OUT.bsrun"));
     try {
-        QString error;
-        const std::optional<RunData> run = RosbagImport::read(args[1], &error, [](int percent) {
+        const Result<RunData> run = RosbagImport::read(args[1], [](int percent) {
             std::printf("progress %d\n", percent);
             std::fflush(stdout);
             return true;
         });
         if (!run)
-            return fail(error);
+            return fail(run.error().toString());
         if (const Result<void> written = RunFile::write(args[2], *run); !written)
             return fail(written.error().toString());
     } catch (const std::bad_alloc&) {

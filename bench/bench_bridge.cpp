@@ -97,25 +97,23 @@ int main(int argc, char** argv)
     }
 
     RosEndpoint ros;
-    QString error;
-    if (!ros.start(u"bench_bridge"_s, servers.rosMasterUri(), {}, &error)) {
-        std::fprintf(stderr, "ros: %s\n", qPrintable(error));
+    if (const Status started = ros.start(u"bench_bridge"_s, servers.rosMasterUri(), {}); !started) {
+        std::fprintf(stderr, "ros: %s\n", qPrintable(started.error().toString()));
         return 1;
     }
     Collector viaBridges;
     Collector viaBroker;
     Collector viaOneBridge; ///< ROS -> vehicle bridge -> broker -> this client: where the time goes
-    ros.subscribe(
-        u"/bench/out"_s, 100,
-        [&viaBridges](const RosRawMessage& m, qint64 receivedNs) {
+    static_cast<void>(ros.subscribe( // a failure shows as nothing arriving
+        u"/bench/out"_s, 100, [&viaBridges](const RosRawMessage& m, qint64 receivedNs) {
             qint64 sent = 0;
             if (m.bytes.size() >= 12) {
                 std::memcpy(&sent, m.bytes.constData() + 4, 8);
                 viaBridges.add(sent, receivedNs);
             }
-        },
-        &error);
-    const int pub = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false, &error);
+        }));
+    const int pub
+        = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false).valueOr(-1);
     MqttLink mqtt(MqttProfile::fromUrl(servers.brokerUrl()));
     mqtt.setMessageHandler([&](const QString& topic, const QByteArray& payload, qint64 receivedNs) {
         qint64 sent = 0;
@@ -128,8 +126,8 @@ int main(int argc, char** argv)
     });
     mqtt.addSubscription(u"bench/peer"_s, 0);
     mqtt.addSubscription(u"bench/data"_s, 0);
-    if (!mqtt.connect(5000, &error)) {
-        std::fprintf(stderr, "mqtt: %s\n", qPrintable(error));
+    if (const Status connected = mqtt.connect(5000); !connected) {
+        std::fprintf(stderr, "mqtt: %s\n", qPrintable(connected.error().toString()));
         return 1;
     }
     // Warm up: until a message makes it through both bridges (they announce the type first).

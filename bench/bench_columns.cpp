@@ -59,8 +59,7 @@ int main(int argc, char** argv)
         f.close();
         qint64 complete = 0;
         const double import = Bench::medianMs(runs, [&] {
-            QString error;
-            const std::optional<Report> report = Report::build({csv}, std::nullopt, {}, &error);
+            const Result<Report> report = Report::build({csv}, std::nullopt, {});
             complete = report ? report->runs().front()->engine->samples() : -1;
         });
         if (labelled < columns || complete != rows)

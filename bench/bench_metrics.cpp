@@ -110,12 +110,12 @@ int main(int argc, char** argv)
         const prometheus::TextSerializer serializer;
         theirs = serializer.Serialize(registry->Collect()).size();
     });
-    QString error;
-    const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
-    if (!server) {
-        qCritical("%s", qPrintable(error));
+    Result<std::unique_ptr<MetricsServer>> listening = MetricsServer::listen(u"127.0.0.1:0"_s);
+    if (!listening) {
+        qCritical("%s", qPrintable(listening.error().toString()));
         return 1;
     }
+    const std::unique_ptr<MetricsServer> server = std::move(listening).value();
     server->publish(std::make_shared<MetricsSnapshot>(snapshot));
     qsizetype scraped = 0;
     const double http = Bench::medianMs(runs, [&] {

@@ -140,14 +140,15 @@ int main(int argc, char** argv)
 
     Collector viaRos1, viaRos2, viaBroker;
     RosEndpoint ros;
-    QString error;
-    if (!ros.start(u"bench_ros2bridge"_s, servers.rosMasterUri(), {}, &error)) {
-        std::fprintf(stderr, "ros: %s\n", qPrintable(error));
+    if (const Status started = ros.start(u"bench_ros2bridge"_s, servers.rosMasterUri(), {}); !started) {
+        std::fprintf(stderr, "ros: %s\n", qPrintable(started.error().toString()));
         return 1;
     }
-    ros.subscribe(
-        u"/bench/out"_s, 100, [&viaRos1](const RosRawMessage& m, qint64 t) { viaRos1.add(m.bytes, 4, t); }, &error);
-    const int pub = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false, &error);
+    QString error;
+    static_cast<void>(ros.subscribe( // a failure shows as nothing arriving
+        u"/bench/out"_s, 100, [&viaRos1](const RosRawMessage& m, qint64 t) { viaRos1.add(m.bytes, 4, t); }));
+    const int pub
+        = ros.advertise(u"/bench/in"_s, kBlobType, kBlobMd5, kBlobDefinition, 100, false).valueOr(-1);
     Ros2Participant dds;
     QObject::connect(&dds.node(), &Ros2EndpointLink::received,
                      [&viaRos2](const QString&, const Ros2Sample& s) { viaRos2.add(s.bytes, 8, s.receivedNs); });
@@ -163,8 +164,8 @@ int main(int argc, char** argv)
     MqttLink mqtt(MqttProfile::fromUrl(broker));
     mqtt.setMessageHandler([&viaBroker](const QString&, const QByteArray& p, qint64 t) { viaBroker.add(p, 0, t); });
     mqtt.addSubscription(u"bench/peer"_s, 0);
-    if (!mqtt.connect(5000, &error)) {
-        std::fprintf(stderr, "mqtt: %s\n", qPrintable(error));
+    if (const Status connected = mqtt.connect(5000); !connected) {
+        std::fprintf(stderr, "mqtt: %s\n", qPrintable(connected.error().toString()));
         return 1;
     }
     const auto send = [&](int path, int size) {

@@ -179,9 +179,8 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
         err(Bridge::tr("bridge takes one config file; see bridgescope bridge --help"));
         return ExitUsage;
     }
-    QString rosError;
-    if (!ros.read(parser, &rosError)) {
-        err(rosError);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     if (ros.ros1 && ros.ros2) {
@@ -198,10 +197,9 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     request->ros2Options = ros.ros2Options;
     const QString path = parser.positionalArguments().first();
     // At most one byte more than a config may have; a FIFO or a device is refused.
-    QString why;
-    const std::optional<QByteArray> yaml = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why);
+    const Result<QByteArray> yaml = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
     if (!yaml) {
-        err(Bridge::tr("%1: %2").arg(path, why));
+        err(Bridge::tr("%1: %2").arg(path, yaml.error().toString()));
         return ExitUsage;
     }
     request->path = path;
@@ -220,14 +218,14 @@ QString droppedLine(const BridgeCounters& c, qint64 maxQueuedBytes)
 }
 
 /// Starts the bridge of the ROS asked for.
-bool startBridge(ReferenceBridge& bridge, const BridgeRequest&, QString* why)
+Status startBridge(ReferenceBridge& bridge, const BridgeRequest&)
 {
-    return bridge.start([] { return !CliOutput::stopRequested(); }, why);
+    return bridge.start([] { return !CliOutput::stopRequested(); });
 }
 
-bool startBridge(Ros2Bridge& bridge, const BridgeRequest& request, QString* why)
+Status startBridge(Ros2Bridge& bridge, const BridgeRequest& request)
 {
-    return bridge.start(request.ros2Options, why);
+    return bridge.start(request.ros2Options);
 }
 
 /// Bridges until Ctrl+C or SIGTERM; a line when it starts and the counts when it stops.
@@ -235,14 +233,13 @@ template<typename B> int runBridge(const BridgeRequest& request)
 {
     CliOutput::keepFreedMemory();
     B bridge(logLine);
-    QString why;
-    if (!bridge.load(request.yaml, request.options, &why)) {
-        err(u"%1: %2"_s.arg(request.path, why));
+    if (const Status loaded = bridge.load(request.yaml, request.options); !loaded) {
+        err(u"%1: %2"_s.arg(request.path, loaded.error().toString()));
         return ExitUsage;
     }
     CliOutput::catchStopSignals();
-    if (!startBridge(bridge, request, &why)) {
-        err(Bridge::tr("bridge failed: %1").arg(why));
+    if (const Status started = startBridge(bridge, request); !started) {
+        err(Bridge::tr("bridge failed: %1").arg(started.error().toString()));
         return CliOutput::stopRequested() ? ExitOk : ExitFailed;
     }
     logLine(Bridge::tr("bridging %n mapping(s); Ctrl+C stops", nullptr, bridge.mappingCount()));

@@ -61,11 +61,10 @@ public:
         Loaded l;
         // One byte past the limit is enough for the reader to say the file is too large; a FIFO or
         // a device such as /dev/zero is refused.
-        QString why;
-        const std::optional<RegularFile::Opened> opened
-            = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
+        const Result<RegularFile::Opened> opened
+            = RegularFile::open(path, std::numeric_limits<qint64>::max());
         if (!opened) {
-            err(tr("%1: error: cannot read the file: %2").arg(path, why));
+            err(tr("%1: error: cannot read the file: %2").arg(path, opened.error().toString()));
             l.exit = ExitUsage;
             return l;
         }
@@ -87,9 +86,8 @@ public:
     {
         if (outPath.isEmpty() || outPath == u"-"_s)
             return CliOutput::finish(CliOutput::writeStdout(text.toUtf8()) ? ExitOk : ExitUsage);
-        QString error;
-        if (!AtomicFile::write(outPath, text.toUtf8(), &error)) {
-            err(tr("%1: error: %2").arg(outPath, error));
+        if (const Status written = AtomicFile::write(outPath, text.toUtf8()); !written) {
+            err(tr("%1: error: %2").arg(outPath, written.error().toString()));
             return ExitUsage;
         }
         return ExitOk;

@@ -126,10 +126,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
 {
     CliOutput::catchStopSignals();
     DemoLab lab;
-    QString why;
     err(Demo::tr("starting the demo lab…"));
-    if (!lab.start(request.lab, &why)) {
-        err(Demo::tr("the demo lab did not start: %1").arg(why));
+    if (const Status started = lab.start(request.lab); !started) {
+        err(Demo::tr("the demo lab did not start: %1").arg(started.error().toString()));
         return ExitFailed;
     }
     if (lab.ros() == 2)
@@ -146,6 +145,7 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         return ExitFailed;
     }
     LiveSession live;
+    QString why;
     if (lab.ros() == 2) {
         if (!live.startRos2({lab.rosDomain(), true}, &why)) {
             err(why);
@@ -197,10 +197,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
 /// Prints the latency report of the recorded run; fails when it holds no complete sample.
 int printDemo(const DemoRequest& request, const QString& runPath)
 {
-    QString why;
-    const std::optional<Report> report = Report::build({runPath}, std::nullopt, {}, &why);
+    const Result<Report> report = Report::build({runPath}, std::nullopt, {});
     if (!report) {
-        err(why);
+        err(report.error().toString());
         return ExitFailed;
     }
     const QByteArray text = request.summary == ReportFormats::Format::Json ? ReportFormats::json(*report)
@@ -263,20 +262,19 @@ int runDemoNodeCommand(const QStringList& arguments)
     o.clockOffsetNs = qint64(parser.value(offset).toDouble() * 1e6);
     CliOutput::catchStopSignals();
     CliOutput::keepFreedMemory();
-    QString why;
     const auto stop = [] { return CliOutput::stopRequested(); };
-    bool ok = false;
+    Status ran;
     if (lab.ros == 2) {
         // on 127.0.0.1 only, as the lab's whole domain
         Ros2DemoNodes::Options o2;
         static_cast<DemoNodes::Options&>(o2) = o;
         o2.dds = {lab.rosDomain, true};
-        ok = role == u"vehicle"_s ? Ros2DemoNodes::runVehicle(o2, stop, &why) : Ros2DemoNodes::runCloud(o2, stop, &why);
+        ran = role == u"vehicle"_s ? Ros2DemoNodes::runVehicle(o2, stop) : Ros2DemoNodes::runCloud(o2, stop);
     } else {
-        ok = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop, &why) : DemoNodes::runCloud(o, stop, &why);
+        ran = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop) : DemoNodes::runCloud(o, stop);
     }
-    if (!ok && !CliOutput::stopRequested()) {
-        err(Demo::tr("demo-node %1: %2").arg(role, why));
+    if (!ran && !CliOutput::stopRequested()) {
+        err(Demo::tr("demo-node %1: %2").arg(role, ran.error().toString()));
         return ExitFailed;
     }
     return ExitOk;

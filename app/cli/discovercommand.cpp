@@ -256,16 +256,14 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     profile = MqttProfile::fromUrl(parser.value(broker));
     if (parser.isSet(filter))
         profile.filters = parser.values(filter);
-    QString why;
-    if (!profile.validate(&why)) {
-        err(why);
+    if (const Status valid = profile.validate(); !valid) {
+        err(valid.error().toString());
         return ExitUsage;
     }
     request->masterUri = parser.value(master);
     request->json = parser.isSet(json);
-    QString error;
-    if (!ros.read(parser, &error)) {
-        err(error);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     request->ros1 = ros.ros1;

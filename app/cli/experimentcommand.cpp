@@ -58,9 +58,8 @@ bool overrideServers(const QString& broker, const QString& master, ExperimentPla
         err(Experiment::tr("--broker and --ros-master go together, unless the plan's servers give the other"));
         return false;
     }
-    QString why;
-    if (!MqttProfile::fromUrl(brokerUrl).validate(&why)) {
-        err(why);
+    if (const Status valid = MqttProfile::fromUrl(brokerUrl).validate(); !valid) {
+        err(valid.error().toString());
         return false;
     }
     plan->brokerUrl = brokerUrl;
@@ -191,9 +190,8 @@ int runExperiment(const ExperimentRequest& request)
     ExperimentRunner::Options options;
     options.resume = request.resume;
     ExperimentRunner runner(request.plan, request.planText, request.directory, options);
-    QString why;
-    if (!runner.prepare(&why)) {
-        err(why);
+    if (const Status prepared = runner.prepare(); !prepared) {
+        err(prepared.error().toString());
         return ExitUsage;
     }
     for (const QString& note : runner.resumeNotes())

@@ -281,9 +281,8 @@ int parseProbe(const QStringList& arguments, ProbeRequest* request)
     }
     if (!request->sweep && !parser.isSet(a.maxRate))
         options.maxRateHz = std::max(options.maxRateHz, options.rateHz);
-    QString why;
-    if (!options.validate(&why)) {
-        err(why);
+    if (const Status valid = options.validate(); !valid) {
+        err(valid.error().toString());
         return ExitUsage;
     }
     return -1;

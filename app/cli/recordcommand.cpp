@@ -56,11 +56,9 @@ bool readRunInfo(const QCommandLineParser& parser, const QCommandLineOption& nam
     info.notes = parser.value(notes);
     if (!parser.isSet(config))
         return true;
-    QString why;
-    const std::optional<QByteArray> yaml
-        = RegularFile::readHead(parser.value(config), YamlLimits::maxBytes + 1, &why);
+    const Result<QByteArray> yaml = RegularFile::readHead(parser.value(config), YamlLimits::maxBytes + 1);
     if (!yaml) {
-        err(Record::tr("%1: %2").arg(parser.value(config), why));
+        err(Record::tr("%1: %2").arg(parser.value(config), yaml.error().toString()));
         return false;
     }
     info.bridgeConfigPath = QFileInfo(parser.value(config)).absoluteFilePath();
@@ -129,9 +127,8 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         return ExitUsage;
     }
     request->allowEmpty = parser.isSet(allowEmpty);
-    QString why;
-    if (!ros.read(parser, &why)) {
-        err(why);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     for (const QString& line : ros.notes())
@@ -140,8 +137,12 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
     request->ros2 = ros.ros2 ? std::optional<Ros2Options>(ros.ros2Options) : std::nullopt;
     const Result<Pipeline> pipe = Pipeline::readFile(parser.value(pipeline));
     request->profile = MqttProfile::fromUrl(parser.value(broker));
-    if (!pipe || !request->profile.validate(&why)) {
-        err(pipe ? why : pipe.error().toString());
+    if (!pipe) {
+        err(pipe.error().toString());
+        return ExitUsage;
+    }
+    if (const Status valid = request->profile.validate(); !valid) {
+        err(valid.error().toString());
         return ExitUsage;
     }
     request->pipeline = *pipe;

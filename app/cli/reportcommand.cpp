@@ -153,10 +153,9 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
         }
         return !CliOutput::stopRequested();
     };
-    QString why;
     QStringList warnings;
-    std::optional<Report> report
-        = Report::build(request.inputs, request.pipeline, request.options, &why, &warnings, progress);
+    Result<Report> report
+        = Report::build(request.inputs, request.pipeline, request.options, &warnings, progress);
     if (tty && shown >= 0)
         std::fprintf(stderr, "\r\033[K");
     if (CliOutput::stopRequested()) {
@@ -164,7 +163,7 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
         return ExitCancelled;
     }
     if (!report) {
-        err(why);
+        err(report.error().toString());
         return ExitUsage;
     }
     for (const QString& w : std::as_const(warnings))
@@ -175,42 +174,40 @@ std::variant<Report, int> buildReport(const ReportRequest& request)
 /// The tables of an experiment's folder.
 int experimentReport(const ReportRequest& request)
 {
-    QString why;
-    const std::optional<QList<ExperimentReport::Statistic>> statistics
-        = ExperimentReport::parseStatistics(request.statistics, &why);
+    const Result<QList<ExperimentReport::Statistic>> statistics
+        = ExperimentReport::parseStatistics(request.statistics);
     if (!statistics) {
-        err(why);
+        err(statistics.error().toString());
         return ExitUsage;
     }
     // Its runs are read like any other: Ctrl+C and SIGTERM end a long read.
     CliOutput::catchStopSignals();
-    const std::optional<ExperimentReport> report = ExperimentReport::load(
-        request.inputs.first(), &why, [](int) { return !CliOutput::stopRequested(); });
+    const Result<ExperimentReport> report
+        = ExperimentReport::load(request.inputs.first(), [](int) { return !CliOutput::stopRequested(); });
     if (CliOutput::stopRequested()) {
         err(ReportText::tr("cancelled; nothing written"));
         return ExitCancelled;
     }
     if (!report) {
-        err(why);
+        err(report.error().toString());
         return ExitUsage;
     }
-    const QByteArray text = report->exportTo(request.output, request.format, *statistics, &why);
-    if (text.isEmpty() && !why.isEmpty()) {
-        err(why);
+    const Result<QByteArray> text = report->exportTo(request.output, request.format, *statistics);
+    if (!text) {
+        err(text.error().toString());
         return ExitUsage;
     }
     if (request.output.isEmpty())
-        CliOutput::writeStdout(text); // a failed write is reported by finish() below
+        CliOutput::writeStdout(*text); // a failed write is reported by finish() below
     return CliOutput::finish(ExitOk);
 }
 
 /// Renders the report and writes it to the file or stdout; nothing is written when cancelled.
 int writeReport(const ReportRequest& request, const Report& report)
 {
-    QString why;
-    const QByteArray text = ReportFormats::render(report, request.format, request.perSample, &why);
-    if (text.isEmpty() && !why.isEmpty()) {
-        err(why);
+    const Result<QByteArray> text = ReportFormats::render(report, request.format, request.perSample);
+    if (!text) {
+        err(text.error().toString());
         return ExitUsage;
     }
     if (CliOutput::stopRequested()) { // formatting thousands of stages takes a while too
@@ -218,9 +215,9 @@ int writeReport(const ReportRequest& request, const Report& report)
         return ExitCancelled;
     }
     if (request.output.isEmpty()) {
-        CliOutput::writeStdout(text); // a failed write is reported by finish() below
-    } else if (!AtomicFile::write(request.output, text, &why, false)) {
-        err(why);
+        CliOutput::writeStdout(*text); // a failed write is reported by finish() below
+    } else if (const Status written = AtomicFile::write(request.output, *text, false); !written) {
+        err(written.error().toString());
         return ExitUsage;
     }
     int status = ExitOk;

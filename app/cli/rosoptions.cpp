@@ -81,14 +81,12 @@ void RosOptions::addTo(QCommandLineParser& parser) const
     parser.addOptions({m_graphs, m_domain, m_localhost});
 }
 
-bool RosOptions::read(const QCommandLineParser& parser, QString* error)
+Status RosOptions::read(const QCommandLineParser& parser)
 {
     graphsSet = parser.isSet(m_graphs);
     QString which = parser.value(m_graphs);
-    if (which != u"1"_s && which != u"2"_s && which != u"both"_s) {
-        *error = tr("--ros takes 1, 2 or both, not \"%1\"").arg(which.left(40));
-        return false;
-    }
+    if (which != u"1"_s && which != u"2"_s && which != u"both"_s)
+        return LocatedError {tr("--ros takes 1, 2 or both, not \"%1\"").arg(which.left(40))};
     environmentWarning.clear();
     QString why;
     const QString fromEnvironment = environmentGraphs(&why, &environmentWarning);
@@ -107,15 +105,14 @@ bool RosOptions::read(const QCommandLineParser& parser, QString* error)
     if (parser.isSet(m_domain)) {
         bool ok = false;
         const int id = parser.value(m_domain).toInt(&ok);
-        if (!ok || id < 0 || id > Ros2Options::kMaxDomain) {
-            *error = tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain);
-            return false;
-        }
+        if (!ok || id < 0 || id > Ros2Options::kMaxDomain)
+            return LocatedError {
+                tr("--ros-domain takes a domain id from 0 to %1").arg(Ros2Options::kMaxDomain)};
         ros2Options.domain = id;
     }
     if (parser.isSet(m_localhost))
         ros2Options.localhostOnly = true;
     domainSet = parser.isSet(m_domain);
     ros2OptionsSet = domainSet || parser.isSet(m_localhost);
-    return true;
+    return {};
 }

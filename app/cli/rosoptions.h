@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "ros2/ros2participant.h"
 
 #include <QCommandLineOption>
@@ -16,8 +17,8 @@ public:
     /// `defaultGraphs` is what --ros means when it is not given: "1", "2" or "both".
     explicit RosOptions(const QString& defaultGraphs = QStringLiteral("1"));
     void addTo(QCommandLineParser& parser) const;
-    /// Reads them after parser.parse(); false with `error` on a bad value.
-    bool read(const QCommandLineParser& parser, QString* error);
+    /// Reads them after parser.parse(); an error on a bad value.
+    Status read(const QCommandLineParser& parser);
 
     /// "ROS 2 (ROS_DISTRO=jazzy), domain 0": which graphs were chosen and why, as discover and watch
     /// say it on stderr and the window in its status bar.

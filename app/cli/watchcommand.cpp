@@ -148,11 +148,10 @@ struct WatchOptions
 /// The files the options name (rules, pipeline) and the broker: false after saying what is wrong.
 bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
 {
-    QString why;
     request->broker = parser.isSet(o.broker) ? MqttProfile::fromUrl(parser.value(o.broker))
                                              : brokerOf(request->configs.first().config);
-    if (!request->broker.validate(&why)) {
-        err(why);
+    if (const Status valid = request->broker.validate(); !valid) {
+        err(valid.error().toString());
         return false;
     }
     if (parser.isSet(o.rules)) {
@@ -179,9 +178,11 @@ bool readOptionFiles(const QCommandLineParser& parser, const WatchOptions& o, Wa
 bool readOutputs(const QCommandLineParser& parser, const WatchOptions& o, WatchRequest* request)
 {
     request->metrics = parser.value(o.metrics);
-    QString why;
-    if (parser.isSet(o.metrics) && !WatchMetrics::checkAddress(request->metrics, &why)) {
-        err(why); // a port beyond 65535 or no host: the command line is wrong, not the network
+    if (const Status address
+        = parser.isSet(o.metrics) ? WatchMetrics::checkAddress(request->metrics) : Status();
+        !address) {
+        err(address.error()
+                .toString()); // a port beyond 65535 or no host: the command line is wrong, not the network
         return false;
     }
     request->eventsFile = parser.value(o.events);
@@ -237,9 +238,8 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     request->allowEmpty = parser.isSet(o.allowEmpty);
     if (!readOptionFiles(parser, o, request))
         return ExitUsage;
-    QString why;
-    if (!ros.read(parser, &why)) {
-        err(why);
+    if (const Status read = ros.read(parser); !read) {
+        err(read.error().toString());
         return ExitUsage;
     }
     for (const QString& line : ros.notes())
@@ -253,12 +253,12 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
 /// The Prometheus endpoint at HOST:PORT, said on stderr; none after saying why.
 std::unique_ptr<WatchMetrics> serveMetrics(const QString& hostPort)
 {
-    QString why;
-    std::unique_ptr<WatchMetrics> metrics = WatchMetrics::serve(hostPort, &why);
-    if (!metrics) {
-        err(why);
+    Result<std::unique_ptr<WatchMetrics>> served = WatchMetrics::serve(hostPort);
+    if (!served) {
+        err(served.error().toString());
         return nullptr;
     }
+    std::unique_ptr<WatchMetrics> metrics = std::move(served).value();
     // The port that was bound: with port 0 the system chose it.
     const QString host = hostPort.left(hostPort.lastIndexOf(u':'));
     err(Watch::tr("metrics at http://%1:%2/metrics").arg(host).arg(metrics->port()));
@@ -433,7 +433,7 @@ int runWatch(const WatchRequest& request)
     WatchSession watch(WatchSession::partsOf(&live));
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);
-    watch.setConfigs(request.configs);
+    static_cast<void>(watch.setConfigs(request.configs)); // the command sets no link limit: it cannot fail
     LinkMonitor* monitor = watch.monitor();
     // With a pipeline the measurement records the run (its stamps and the events); without one the
     // run holds the events alone.

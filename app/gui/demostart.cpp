@@ -56,9 +56,8 @@ void start(MainWindow& window, DemoLab& lab, const DemoLab::Options& options,
             window.statusBar()->showMessage(Gui::tr("The demo lab did not start: %1").arg(error));
         done(error);
     };
-    QString error;
-    if (!lab.launchServers(options, &error)) {
-        QTimer::singleShot(0, &window, [finish, error] { finish(error); });
+    if (const Status launched = lab.launchServers(options); !launched) {
+        QTimer::singleShot(0, &window, [finish, error = launched.error().toString()] { finish(error); });
         return;
     }
     auto* poll = new QTimer(&window);
@@ -78,8 +77,8 @@ void start(MainWindow& window, DemoLab& lab, const DemoLab::Options& options,
         delete since;
         if (state == DemoLab::Poll::Ready) {
             what->setText(Gui::tr("Starting the demo lab: bridges and nodes…"));
-            if (!lab.startComponents(&why)) {
-                finish(why);
+            if (const Status started = lab.startComponents(); !started) {
+                finish(started.error().toString());
                 return;
             }
         }
@@ -118,9 +117,8 @@ void show(MainWindow& window, const DemoLab& lab)
     servers->setToolTip(Gui::tr("Point bridgescope discover, watch or mosquitto_sub at these; configs in %1")
                             .arg(lab.directory()));
     window.statusBar()->addPermanentWidget(servers); // not hidden by passing messages
-    QString error;
-    if (!window.measurePage()->loadPipeline(lab.pipelinePath(), &error))
-        CliOutput::err(error);
+    if (const Status loaded = window.measurePage()->loadPipeline(lab.pipelinePath()); !loaded)
+        CliOutput::err(loaded.error().toString());
     window.pages()->setCurrentWidget(window.measurePage());
     // The paper's Fig. 5 view: detection, one-way communication and the total.
     window.measure()->statsModel()->setChecked(SeriesId::ofStage(5).toString(), true);

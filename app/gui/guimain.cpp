@@ -164,9 +164,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = t
     if (parser.isSet(broker)) {
         request->brokerUrl = parser.value(broker);
         request->broker = MqttProfile::fromUrl(request->brokerUrl);
-        QString error;
-        if (!request->broker->validate(&error)) {
-            CliOutput::err(error);
+        if (const Status valid = request->broker->validate(); !valid) {
+            CliOutput::err(valid.error().toString());
             return ExitUsage;
         }
     }
@@ -184,9 +183,8 @@ int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = t
         CliOutput::err(Gui::tr("--theme takes one of: %1").arg(Theme::names().join(u", "_s)));
         return ExitUsage;
     }
-    QString rosError;
-    if (!ros.read(parser, &rosError)) {
-        CliOutput::err(rosError);
+    if (const Status read = ros.read(parser); !read) {
+        CliOutput::err(read.error().toString());
         return ExitUsage;
     }
     if (!ros.environmentWarning.isEmpty() && notices)
@@ -246,9 +244,8 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
     if (automated && !errors.isEmpty())
         return false;
     if (!request.pipeline.isEmpty()) {
-        QString error;
-        if (!window.measurePage()->loadPipeline(request.pipeline, &error)) {
-            CliOutput::err(error);
+        if (const Status loaded = window.measurePage()->loadPipeline(request.pipeline); !loaded) {
+            CliOutput::err(loaded.error().toString());
             return false;
         }
         window.pages()->setCurrentWidget(window.measurePage());

@@ -113,16 +113,17 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QStringList& paths) { openAndReport(paths, Measurements::Compare); });
     // A finished cell of an experiment opens on the Measure page, as any run.
     connect(m_experiments, &ExperimentPage::openRunRequested, this, [this](const QString& path) {
-        QString error;
-        if (m_measurePage->runBar()->openRun(path, &error))
+        const Status opened = m_measurePage->runBar()->openRun(path);
+        if (opened)
             m_pages->setCurrentWidget(m_measurePage);
-        else if (!error.isEmpty())
+        else if (const QString error = opened.error().toString(); !error.isEmpty())
             QMessageBox::warning(this, tr("Open Run"), error);
     });
     m_measurePage->runBar()->setBridgeConfigProvider([this]() -> std::pair<QString, QByteArray> {
         const QString path = m_document->filePath();
-        const std::optional<QByteArray> bytes
-            = path.isEmpty() ? std::nullopt : RegularFile::readHead(path, YamlLimits::maxBytes + 1);
+        if (path.isEmpty())
+            return {};
+        const Result<QByteArray> bytes = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
         if (!bytes)
             return {};
         return {path, *bytes};

@@ -41,7 +41,7 @@ Kind kindOf(const QString& path)
         return ExperimentReport::isExperiment(path) ? Kind::Experiment : Kind::Folder;
     if (RunLoader::isMeasurement(path))
         return Kind::Measurement;
-    if (const std::optional<QByteArray> bytes = RegularFile::readHead(path, 256 * 1024)) {
+    if (const Result<QByteArray> bytes = RegularFile::readHead(path, 256 * 1024)) {
         static const QRegularExpression pipelineKey(u"(^|\\n)topics_in_order\\s*:"_s);
         static const QRegularExpression planKey(u"(^|\\n)(factors|cells)\\s*:"_s);
         const QString head = QString::fromUtf8(*bytes);
@@ -132,20 +132,20 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
         if (!firstConfig.isEmpty() && m_files->pathOf(i) == firstConfig)
             m_files->activate(i);
     for (const QString& path : std::as_const(sorted.pipelines)) { // the last one stays
-        if (m_measurePage->loadPipeline(path, &error)) {
+        if (const Status loaded = m_measurePage->loadPipeline(path)) {
             m_files->addRecent(path);
             opened(path, m_measurePage);
         } else {
-            fail(path, error);
+            fail(path, loaded.error().toString());
         }
     }
     // One measurement is shown on the Measure page; several are compared on the Reports page.
     if (measurements.size() == 1 && to == Measurements::Show) {
-        if (m_measurePage->runBar()->openRun(measurements.first(), &error)) {
+        if (const Status run = m_measurePage->runBar()->openRun(measurements.first())) {
             m_files->addRecent(measurements.first());
             opened(measurements.first(), m_measurePage);
         } else {
-            fail(measurements.first(), error);
+            fail(measurements.first(), run.error().toString());
         }
     } else if (!measurements.isEmpty()) {
         m_reports->addInputs(measurements); // it checks each and lists what does not read
@@ -155,19 +155,19 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
         }
     }
     for (const QString& path : std::as_const(sorted.plans)) { // the last one stays
-        if (m_experiments->openPlan(path, &error)) {
+        if (const Status plan = m_experiments->openPlan(path)) {
             m_files->addRecent(path);
             opened(path, m_experiments);
         } else {
-            fail(path, error);
+            fail(path, plan.error().toString());
         }
     }
     for (const QString& path : std::as_const(sorted.experiments)) {
-        if (m_experiments->openFolder(path, &error)) {
+        if (const Status folder = m_experiments->openFolder(path)) {
             m_files->addRecent(path);
             opened(path, m_experiments);
         } else {
-            fail(path, error);
+            fail(path, folder.error().toString());
         }
     }
     if (page)

@@ -34,25 +34,24 @@ bool writeAll(int fd, const QByteArray& data)
 }
 
 // Writes a complete, synced copy of `data` to a fresh temporary file in `dir`.
-QByteArray writeTemp(const QString& dir, const QString& base, const QByteArray& data, mode_t mode,
-                     QString* error)
+Result<QByteArray> writeTemp(const QString& dir, const QString& base, const QByteArray& data, mode_t mode)
 {
     QByteArray tmpl = QFile::encodeName(dir + u"/."_s + base + u".XXXXXX"_s);
     const int fd = ::mkstemp(tmpl.data());
-    if (fd < 0) {
-        *error = AtomicFile::tr("cannot create a temporary file in %1: %2").arg(dir, errnoText());
-        return QByteArray();
-    }
+    if (fd < 0)
+        return LocatedError {
+            AtomicFile::tr("cannot create a temporary file in %1: %2").arg(dir, errnoText())};
+    QString why;
     bool ok = writeAll(fd, data) && ::fchmod(fd, mode) == 0 && ::fsync(fd) == 0;
     if (!ok)
-        *error = AtomicFile::tr("cannot write %1: %2").arg(QFile::decodeName(tmpl), errnoText());
+        why = AtomicFile::tr("cannot write %1: %2").arg(QFile::decodeName(tmpl), errnoText());
     if (::close(fd) != 0 && ok) {
-        *error = AtomicFile::tr("cannot write %1: %2").arg(QFile::decodeName(tmpl), errnoText());
+        why = AtomicFile::tr("cannot write %1: %2").arg(QFile::decodeName(tmpl), errnoText());
         ok = false;
     }
     if (!ok) {
         ::unlink(tmpl.constData());
-        return QByteArray();
+        return LocatedError {why};
     }
     return tmpl;
 }
@@ -131,20 +130,15 @@ QString AtomicFile::refusalReason(const QString& path)
     return refusal(path, QFile::encodeName(resolvedTarget(path)));
 }
 
-bool AtomicFile::write(const QString& path, const QByteArray& data, QString* error, bool keepBackup)
+Status AtomicFile::write(const QString& path, const QByteArray& data, bool keepBackup)
 {
-    QString ignored;
-    if (!error)
-        error = &ignored;
     // Write through a symbolic link to the file it names, keeping the link.
     const QFileInfo info(resolvedTarget(path));
     const QString dir = info.absolutePath();
     const QString targetName = info.absoluteFilePath();
     const QByteArray target = QFile::encodeName(targetName);
-    if (const QString why = refusal(path, target); !why.isEmpty()) {
-        *error = why;
-        return false;
-    }
+    if (const QString why = refusal(path, target); !why.isEmpty())
+        return LocatedError {why};
 
     mode_t mode = 0644;
     struct stat st
@@ -159,21 +153,26 @@ bool AtomicFile::write(const QString& path, const QByteArray& data, QString* err
         mode = 0666 & ~mask;
     }
 
-    const QByteArray tmp = writeTemp(dir, info.fileName(), data, mode, error);
-    if (tmp.isEmpty())
-        return false;
+    const Result<QByteArray> written = writeTemp(dir, info.fileName(), data, mode);
+    if (!written)
+        return written.error();
+    const QByteArray tmp = *written;
 
     if (keepBackup && exists) {
         // The previous file becomes the backup by a hard link, so it is never copied half-way;
         // where links are not possible, a synced copy is made instead.
         const QByteArray bak = QFile::encodeName(backupPath(targetName, 0));
         QByteArray bakTmp = tmp + ".bak";
+        QString copyError; // why the copy could not be written, when it could not
         bool ok = ::link(target.constData(), bakTmp.constData()) == 0;
         if (!ok) {
             QFile old(targetName);
             if (old.open(QIODevice::ReadOnly)) {
-                bakTmp = writeTemp(dir, info.fileName() + u".bak"_s, old.readAll(), mode, error);
-                ok = !bakTmp.isEmpty();
+                const Result<QByteArray> copy
+                    = writeTemp(dir, info.fileName() + u".bak"_s, old.readAll(), mode);
+                ok = copy.ok();
+                bakTmp = copy.valueOr(QByteArray());
+                copyError = copy.error().message;
             }
         }
         // Older backups move one place down (.bak -> .bak.1 -> .bak.2 ...); the oldest is dropped.
@@ -181,30 +180,31 @@ bool AtomicFile::write(const QString& path, const QByteArray& data, QString* err
             const QByteArray from = QFile::encodeName(backupPath(targetName, n - 1));
             const QByteArray to = QFile::encodeName(backupPath(targetName, n));
             if (::rename(from.constData(), to.constData()) != 0 && errno != ENOENT) {
-                *error = AtomicFile::tr("cannot keep the previous file as %1: %2")
-                             .arg(QFile::decodeName(to), errnoText());
+                const LocatedError error {AtomicFile::tr("cannot keep the previous file as %1: %2")
+                                              .arg(QFile::decodeName(to), errnoText())};
                 ::unlink(bakTmp.constData());
                 ::unlink(tmp.constData());
-                return false;
+                return error;
             }
         }
         if (!ok || ::rename(bakTmp.constData(), bak.constData()) != 0) {
-            if (ok)
-                *error = AtomicFile::tr("cannot keep the previous file as %1: %2")
-                             .arg(QFile::decodeName(bak), errnoText());
-            else if (error->isEmpty())
-                *error = AtomicFile::tr("cannot keep the previous file as %1").arg(QFile::decodeName(bak));
+            const LocatedError error {
+                ok ? AtomicFile::tr("cannot keep the previous file as %1: %2")
+                         .arg(QFile::decodeName(bak), errnoText())
+                    : !copyError.isEmpty()
+                    ? copyError
+                    : AtomicFile::tr("cannot keep the previous file as %1").arg(QFile::decodeName(bak))};
             ::unlink(bakTmp.constData());
             ::unlink(tmp.constData());
-            return false;
+            return error;
         }
     }
 
     if (::rename(tmp.constData(), target.constData()) != 0) {
-        *error = AtomicFile::tr("cannot replace %1: %2").arg(path, errnoText());
+        const LocatedError error {AtomicFile::tr("cannot replace %1: %2").arg(path, errnoText())};
         ::unlink(tmp.constData());
-        return false;
+        return error;
     }
     syncDirectory(dir);
-    return true;
+    return {};
 }

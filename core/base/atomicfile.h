@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QString>
@@ -19,8 +21,8 @@ public:
     /// replaced. With `keepBackup`, the previous file becomes `path`.bak and older backups move to
     /// .bak.1, .bak.2, ... (see maxBackups). Permissions of an existing file are kept. Every write,
     /// sync and close is checked (a full disk is an error). On failure nothing at `path` has
-    /// changed and `error` says why.
-    static bool write(const QString& path, const QByteArray& data, QString* error, bool keepBackup = true);
+    /// changed and the error says why.
+    static Status write(const QString& path, const QByteArray& data, bool keepBackup = true);
     /// The name of backup `n` of `path`: 0 is `path`.bak, n > 0 is `path`.bak.n.
     static QString backupPath(const QString& path, int n);
     /// Why `path` must not be written over (not a regular file, read-only), or empty when it may be

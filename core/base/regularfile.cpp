@@ -44,42 +44,37 @@ QString RegularFile::notAFile(const QString& path)
     return kindOf(st.st_mode);
 }
 
-std::optional<RegularFile::Opened> RegularFile::open(const QString& path, qint64 maxBytes, QString* error)
+Result<RegularFile::Opened> RegularFile::open(const QString& path, qint64 maxBytes)
 {
-    const auto fail = [&](const QString& why) -> std::optional<Opened> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
     if (path.startsWith(u':')) { // a Qt resource: compiled into the program, in memory, not hostile
         Opened opened;
         opened.file = std::make_unique<QFile>(path);
         if (!opened.file->open(QIODevice::ReadOnly))
-            return fail(opened.file->errorString());
+            return LocatedError {opened.file->errorString()};
         opened.size = opened.file->size();
         if (opened.size > maxBytes)
-            return fail(tr("%1, more than the %2 such a file may have: refused")
-                            .arg(sizeText(opened.size), sizeText(maxBytes)));
+            return LocatedError {tr("%1, more than the %2 such a file may have: refused")
+                                     .arg(sizeText(opened.size), sizeText(maxBytes))};
         return opened;
     }
     // O_NONBLOCK: opening a FIFO for reading would wait for a writer; a regular file ignores it.
     const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd < 0)
-        return fail(QString::fromLocal8Bit(std::strerror(errno)));
+        return LocatedError {QString::fromLocal8Bit(std::strerror(errno))};
     struct stat st {};
     if (::fstat(fd, &st) != 0) {
         const int e = errno;
         ::close(fd);
-        return fail(QString::fromLocal8Bit(std::strerror(e)));
+        return LocatedError {QString::fromLocal8Bit(std::strerror(e))};
     }
     if (!S_ISREG(st.st_mode)) {
         ::close(fd);
-        return fail(tr("%1, not a file: refused").arg(kindOf(st.st_mode)));
+        return LocatedError {tr("%1, not a file: refused").arg(kindOf(st.st_mode))};
     }
     if (st.st_size > maxBytes) {
         ::close(fd);
-        return fail(tr("%1, more than the %2 such a file may have: refused")
-                        .arg(sizeText(st.st_size), sizeText(maxBytes)));
+        return LocatedError {tr("%1, more than the %2 such a file may have: refused")
+                                 .arg(sizeText(st.st_size), sizeText(maxBytes))};
     }
     const int flags = ::fcntl(fd, F_GETFL);
     if (flags >= 0)
@@ -89,31 +84,28 @@ std::optional<RegularFile::Opened> RegularFile::open(const QString& path, qint64
     opened.size = st.st_size;
     if (!opened.file->open(fd, QIODevice::ReadOnly, QFileDevice::AutoCloseHandle)) {
         ::close(fd);
-        return fail(opened.file->errorString());
+        return LocatedError {opened.file->errorString()};
     }
     return opened;
 }
 
-std::optional<QByteArray> RegularFile::read(const QString& path, qint64 maxBytes, QString* error)
+Result<QByteArray> RegularFile::read(const QString& path, qint64 maxBytes)
 {
-    return readHead(path, maxBytes, error, true);
+    return readHead(path, maxBytes, true);
 }
 
-std::optional<QByteArray> RegularFile::readHead(const QString& path, qint64 count, QString* error)
+Result<QByteArray> RegularFile::readHead(const QString& path, qint64 count)
 {
-    return readHead(path, count, error, false);
+    return readHead(path, count, false);
 }
 
-std::optional<QByteArray> RegularFile::readHead(const QString& path, qint64 count, QString* error, bool whole)
+Result<QByteArray> RegularFile::readHead(const QString& path, qint64 count, bool whole)
 {
-    std::optional<Opened> f = open(path, whole ? count : std::numeric_limits<qint64>::max(), error);
+    Result<Opened> f = open(path, whole ? count : std::numeric_limits<qint64>::max());
     if (!f)
-        return std::nullopt;
+        return f.error();
     QByteArray bytes = f->file->read(std::min(count, f->size)); // never more than its size at the check
-    if (f->file->error() != QFileDevice::NoError) {
-        if (error)
-            *error = f->file->errorString();
-        return std::nullopt;
-    }
+    if (f->file->error() != QFileDevice::NoError)
+        return LocatedError {f->file->errorString()};
     return bytes;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <atomic>
 #include <memory>
 #include <optional>
@@ -28,17 +30,20 @@ public:
     };
 
     /// Opens `path` for reading when it is a regular file of at most `maxBytes` bytes; otherwise
-    /// nullopt and `error`, without the path ("a FIFO (named pipe), not a file: refused", "3.0 MiB,
-    /// more than the 1 MiB such a file may have: refused", or the system's reason).
-    static std::optional<Opened> open(const QString& path, qint64 maxBytes, QString* error = nullptr);
+    /// an error without the path ("a FIFO (named pipe), not a file: refused", "3.0 MiB, more than
+    /// the 1 MiB such a file may have: refused", or the system's reason).
+    static Result<Opened> open(const QString& path, qint64 maxBytes);
     /// The bytes of the regular file `path`, at most `maxBytes` (a bigger file is refused, not cut).
-    static std::optional<QByteArray> read(const QString& path, qint64 maxBytes, QString* error = nullptr);
+    static Result<QByteArray> read(const QString& path, qint64 maxBytes);
     /// The first `count` bytes of the regular file `path`, whatever its size (for a reader that
     /// says itself that a file is too large, given one byte past its limit).
-    static std::optional<QByteArray> readHead(const QString& path, qint64 count, QString* error = nullptr);
+    static Result<QByteArray> readHead(const QString& path, qint64 count);
     /// readHead() without an error: empty when `path` is no regular file (for telling kinds of
     /// files apart by their first bytes).
-    static QByteArray head(const QString& path, qint64 count) { return readHead(path, count).value_or(QByteArray()); }
+    static QByteArray head(const QString& path, qint64 count)
+    {
+        return readHead(path, count).valueOr(QByteArray());
+    }
     /// What `path` is when it is not a regular file ("a FIFO", "a device", ...), empty when it is one
     /// (or when it does not exist: open() says so).
     static QString notAFile(const QString& path);
@@ -49,7 +54,7 @@ public:
     static bool stopRequested() { return s_stop.load(std::memory_order_relaxed); }
 
 private:
-    static std::optional<QByteArray> readHead(const QString& path, qint64 count, QString* error, bool whole);
+    static Result<QByteArray> readHead(const QString& path, qint64 count, bool whole);
     static std::atomic<bool> s_stop;
     static_assert(std::atomic<bool>::is_always_lock_free);
 };

@@ -28,10 +28,7 @@ Result<QByteArray> YamlReader::readFile(const QString& path)
 {
     // A regular file only (a FIFO or /dev/zero is refused, not waited on or read without end);
     // one byte past the limit, so that YamlLimits says it is too large.
-    QString why;
-    if (std::optional<QByteArray> bytes = RegularFile::readHead(path, YamlLimits::maxBytes + 1, &why))
-        return std::move(*bytes);
-    return LocatedError {why, {}, path};
+    return RegularFile::readHead(path, YamlLimits::maxBytes + 1).inFile(path);
 }
 
 LocatedError YamlReader::error(const QString& message) const

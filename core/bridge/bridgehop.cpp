@@ -290,10 +290,10 @@ bool BridgeHop::advertise(const RosMsgTypeInfo& type)
         return false;
     if (m_publisher >= 0)
         m_ros->retire(m_publisher);
-    QString why;
-    m_publisher = m_ros->advertise(m_route, type, &why);
-    if (m_publisher < 0) {
-        refuse(type.name, why);
+    const Result<int> publisher = m_ros->advertise(m_route, type);
+    m_publisher = publisher.valueOr(-1);
+    if (!publisher) {
+        refuse(type.name, publisher.error().toString());
         return false;
     }
     m_advertised = type;

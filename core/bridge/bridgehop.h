@@ -76,8 +76,8 @@ public:
 
     // The graph. Publisher ids are the side's own; -1 is none.
     /// A publisher of the mapping's ROS topic with `type` (the mapping's queue, latch or QoS);
-    /// -1 with `error` when the side refuses it.
-    virtual int advertise(const BridgeRoute& route, const RosMsgTypeInfo& type, QString* error) = 0;
+    /// An error when the side refuses it.
+    virtual Result<int> advertise(const BridgeRoute& route, const RosMsgTypeInfo& type) = 0;
     /// Stops publishing with `publisher` (its topic can be advertised anew with another type).
     virtual void retire(int publisher) = 0;
     /// A publisher of the suite's TimeStamped on `topic` (`<timestamp_topic_prefix>/in`, `/out`).

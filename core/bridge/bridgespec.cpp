@@ -62,20 +62,16 @@ MqttProfile brokerProfile(const BridgeConfig& c, const QString& brokerUrl,
 }
 } // namespace
 
-std::optional<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString& brokerUrl,
-                                           const QHash<QString, QString>& args, QString* error)
+Result<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString& brokerUrl,
+                                    const QHash<QString, QString>& args)
 {
-    const auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
     // The texts are the ROS 1 bridge's, which read configs first: its translations hold for both.
     ConfigReadResult read = ConfigReader::read(yaml);
     if (!read.parsed) {
         // Located, as `config validate` says it: "LINE:COL: error: ...".
         const QString first = read.problems.isEmpty() ? QString() : read.problems.first().format(QString()).mid(1);
-        return fail(QCoreApplication::translate("ReferenceBridge", "not a bridge config: %1").arg(first));
+        return LocatedError {
+            QCoreApplication::translate("ReferenceBridge", "not a bridge config: %1").arg(first)};
     }
     BridgeSpec spec;
     spec.config = read.config;
@@ -85,15 +81,14 @@ std::optional<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString
         return substituteArgs(c.effective(scope, path), args, &missing);
     };
     spec.profile = brokerProfile(c, brokerUrl, setting);
-    QString why;
-    if (!spec.profile.validate(&why))
-        return fail(why);
+    if (Status valid = spec.profile.validate(); !valid)
+        return valid.error();
     spec.will.topic = setting(OptionScope::Client, u"last_will.topic"_s);
     spec.will.message = setting(OptionScope::Client, u"last_will.message"_s).toUtf8();
     spec.will.qos = setting(OptionScope::Client, u"last_will.qos"_s).toInt();
     spec.will.retained = setting(OptionScope::Client, u"last_will.retained"_s) == u"true"_s;
 
-    const auto unresolved = [&missing, &fail] {
+    const auto unresolved = [&missing] {
         missing.removeDuplicates();
         QStringList uses;
         QStringList gives;
@@ -101,7 +96,9 @@ std::optional<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString
             uses << u"$(arg %1)"_s.arg(name);
             gives << u"--arg %1=VALUE"_s.arg(name);
         }
-        return fail(QCoreApplication::translate("ReferenceBridge", "the config uses %1: give the values with %2").arg(uses.join(u", "_s), gives.join(u' ')));
+        return LocatedError {
+            QCoreApplication::translate("ReferenceBridge", "the config uses %1: give the values with %2")
+                .arg(uses.join(u", "_s), gives.join(u' '))};
     };
     for (const Mapping& m : c.mappings) {
         const auto value = [&](const QString& path) { return substituteArgs(m.effective(path), args, &missing); };
@@ -118,8 +115,11 @@ std::optional<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString
         if (!missing.isEmpty())
             return unresolved();
         if (!ok || r.qos < 0 || r.qos > 2)
-            return fail(QCoreApplication::translate("ReferenceBridge", "%1: qos must be 0, 1 or 2 (give $(arg ...) values with --arg NAME=VALUE)")
-                            .arg(m.sourceTopic()));
+            return LocatedError {
+                QCoreApplication::translate(
+                    "ReferenceBridge",
+                    "%1: qos must be 0, 1 or 2 (give $(arg ...) values with --arg NAME=VALUE)")
+                    .arg(m.sourceTopic())};
         r.retained = value(u"advanced.mqtt.retained"_s) == u"true"_s;
         r.latched = value(u"advanced.ros.latched"_s) == u"true"_s;
         r.queueSize = qMax(1, value(u"advanced.ros.queue_size"_s).toInt());
@@ -127,12 +127,14 @@ std::optional<BridgeSpec> BridgeSpec::load(const QByteArray& yaml, const QString
         r.durability = m.isSet(u"advanced.ros.qos.durability"_s) ? value(u"advanced.ros.qos.durability"_s) : QString();
         r.stampPrefix = value(u"timestamp_topic_prefix"_s);
         if (r.rosTopic.isEmpty() || r.mqttTopic.isEmpty())
-            return fail(QCoreApplication::translate("ReferenceBridge", "a mapping without ros_topic or mqtt_topic"));
+            return LocatedError {
+                QCoreApplication::translate("ReferenceBridge", "a mapping without ros_topic or mqtt_topic")};
         if (!missing.isEmpty())
             return unresolved();
         spec.routes.push_back(std::move(r));
     }
     if (spec.routes.empty())
-        return fail(QCoreApplication::translate("ReferenceBridge", "the config has no mapping to bridge"));
+        return LocatedError {
+            QCoreApplication::translate("ReferenceBridge", "the config has no mapping to bridge")};
     return spec;
 }

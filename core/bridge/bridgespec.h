@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "config/bridgeconfig.h"
 #include "mqtt/mqttlink.h"
 #include "mqtt/mqttprofile.h"
@@ -43,8 +44,8 @@ struct BridgeSpec
     MqttWill will;
     std::vector<BridgeRoute> routes;
 
-    /// The config read; nullopt with `error` when it is not a bridge config, has no mapping, uses
-    /// an `$(arg NAME)` not in `args`, or a value is out of range.
-    static std::optional<BridgeSpec> load(const QByteArray& yaml, const QString& brokerUrl,
-                                          const QHash<QString, QString>& args, QString* error);
+    /// The config read; an error when it is not a bridge config, has no mapping, uses an
+    /// `$(arg NAME)` not in `args`, or a value is out of range.
+    static Result<BridgeSpec> load(const QByteArray& yaml, const QString& brokerUrl,
+                                   const QHash<QString, QString>& args);
 };

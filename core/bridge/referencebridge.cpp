@@ -123,23 +123,24 @@ public:
     { }
     RosTypeRegistry::Dialect dialect() const override { return RosTypeRegistry::Dialect::Ros1; }
 
-    int advertise(const BridgeRoute& r, const RosMsgTypeInfo& t, QString* error) override
+    Result<int> advertise(const BridgeRoute& r, const RosMsgTypeInfo& t) override
     {
-        return m_ros.advertise(r.rosTopic, t.name, t.md5, t.definition, r.queueSize, r.latched, error);
+        return m_ros.advertise(r.rosTopic, t.name, t.md5, t.definition, r.queueSize, r.latched);
     }
     void retire(int publisher) override { m_ros.retire(publisher); }
     int advertiseStamps(const QString& topic) override
     {
-        QString why;
-        return m_ros.advertise(topic, QString::fromLatin1(StampCodec::typeName()),
-                               QString::fromLatin1(StampCodec::md5()), StampCodec::definition(), 1000, false,
-                               &why);
+        return m_ros
+            .advertise(topic, QString::fromLatin1(StampCodec::typeName()),
+                       QString::fromLatin1(StampCodec::md5()), StampCodec::definition(), 1000, false)
+            .valueOr(-1);
     }
     int advertiseLatency(const QString& rosTopic) override
     {
-        QString why;
-        return m_ros.advertise(m_ros.resolve(u"~/latencies/"_s + rosTopic), u"std_msgs/Float64"_s,
-                               QString::fromLatin1(kFloat64Md5), u"float64 data\n"_s, 1, false, &why);
+        return m_ros
+            .advertise(m_ros.resolve(u"~/latencies/"_s + rosTopic), u"std_msgs/Float64"_s,
+                       QString::fromLatin1(kFloat64Md5), u"float64 data\n"_s, 1, false)
+            .valueOr(-1);
     }
     QString publisherLine(const BridgeRoute& r, const RosMsgTypeInfo& t) const override
     {
@@ -237,11 +238,11 @@ int ReferenceBridge::mappingCount() const
     return int(d->hops.size());
 }
 
-bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QString* error)
+Status ReferenceBridge::load(const QByteArray& yaml, const Options& options)
 {
-    std::optional<BridgeSpec> spec = BridgeSpec::load(yaml, options.brokerUrl, options.args, error);
+    Result<BridgeSpec> spec = BridgeSpec::load(yaml, options.brokerUrl, options.args);
     if (!spec)
-        return false;
+        return spec.error();
     d->options = options;
     d->profile = spec->profile;
     d->will = spec->will;
@@ -251,10 +252,10 @@ bool ReferenceBridge::load(const QByteArray& yaml, const Options& options, QStri
         r.rosType.clear();
         d->hops.push_back(std::make_unique<BridgeHop>(r, d->options, d->counters, d->log));
     }
-    return true;
+    return {};
 }
 
-bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* error)
+Status ReferenceBridge::start(const std::function<bool()>& keepWaiting)
 {
     d->ros = std::make_unique<RosEndpoint>();
     d->ros->setNoticeHandler(d->log);
@@ -263,8 +264,8 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
                       << "bytes held towards ROS and as many towards the broker";
     const QString name = d->options.nodeName.isEmpty() ? u"mqtt_client"_s : d->options.nodeName;
     d->log(tr("waiting for the ROS master…"));
-    if (!d->ros->start(name, d->options.rosMaster, keepWaiting, error))
-        return false;
+    if (Status started = d->ros->start(name, d->options.rosMaster, keepWaiting); !started)
+        return started;
     d->log(tr("ROS node %1 started").arg(d->ros->nodeName()));
 
     MqttLink::Options linkOptions;
@@ -307,8 +308,8 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
         p->log(tr("lost the broker (%1); reconnecting").arg(why.isEmpty() ? u"?"_s : why));
     });
     d->log(tr("connecting to %1…").arg(d->profile.url));
-    if (!d->mqtt->connect(10000, error))
-        return false;
+    if (Status connected = d->mqtt->connect(10000); !connected)
+        return connected;
     d->log(tr("connected to %1").arg(d->profile.url));
 
     for (const auto& h : d->hops) {
@@ -316,22 +317,19 @@ bool ReferenceBridge::start(const std::function<bool()>& keepWaiting, QString* e
         if (r.direction != Direction::Ros2Mqtt)
             continue;
         BridgeHop* hop = h.get();
-        QString why;
-        if (!d->ros->subscribe(
-                r.rosTopic, r.queueSize,
-                [hop](const RosRawMessage& m, qint64 t) {
-                    hop->fromRos({{m.md5, m.type, m.definition, false}, m.bytes}, t);
-                },
-                &why)) {
-            if (error)
-                *error = tr("cannot subscribe to %1: %2").arg(r.rosTopic, why);
-            return false;
-        }
+        if (Status subscribed
+            = d->ros->subscribe(r.rosTopic, r.queueSize,
+                                [hop](const RosRawMessage& m, qint64 t) {
+                                    hop->fromRos({{m.md5, m.type, m.definition, false}, m.bytes}, t);
+                                });
+            !subscribed)
+            return LocatedError {
+                tr("cannot subscribe to %1: %2").arg(r.rosTopic, subscribed.error().toString())};
         d->log(tr("ROS %1 -> MQTT %2%3")
                    .arg(r.rosTopic, r.mqttTopic,
                         r.primitive ? tr(" (primitive)") : (r.stamped ? tr(" (stamped)") : QString())));
     }
-    return true;
+    return {};
 }
 
 void ReferenceBridge::stop()

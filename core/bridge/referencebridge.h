@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "bridge/bridgehop.h"
 #include "mqtt/mqttprofile.h"
 
@@ -49,9 +50,9 @@ public:
     ~ReferenceBridge();
 
     /// Reads the config (any layout). Errors: not a bridge config, no mapping, bad values.
-    bool load(const QByteArray& yaml, const Options& options, QString* error);
+    Status load(const QByteArray& yaml, const Options& options);
     /// Connects to broker and master (waiting for the master while `keepWaiting`) and bridges.
-    bool start(const std::function<bool()>& keepWaiting, QString* error);
+    Status start(const std::function<bool()>& keepWaiting);
     void stop();
 
     const Counters& counters() const;

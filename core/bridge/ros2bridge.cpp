@@ -69,9 +69,9 @@ public:
     }
     RosTypeRegistry::Dialect dialect() const override { return RosTypeRegistry::Dialect::Ros2; }
 
-    int advertise(const BridgeRoute& r, const RosMsgTypeInfo& t, QString* error) override
+    Result<int> advertise(const BridgeRoute& r, const RosMsgTypeInfo& t) override
     {
-        return advertise(r.rosTopic, t.name, writerQos(r), error);
+        return advertise(r.rosTopic, t.name, writerQos(r));
     }
     /// Advertising a topic anew replaces its writer (a writer refused meanwhile keeps the old one).
     void retire(int) override {}
@@ -79,7 +79,8 @@ public:
     {
         Ros2Qos qos;
         qos.depth = 1000;
-        return advertise(m_resolve(topic), QString::fromLatin1(Ros2BridgeWire::kTimeStampedType), qos, nullptr);
+        return advertise(m_resolve(topic), QString::fromLatin1(Ros2BridgeWire::kTimeStampedType), qos)
+            .valueOr(-1);
     }
     int advertiseLatency(const QString& rosTopic) override
     {
@@ -88,7 +89,7 @@ public:
         topic.replace(u"//"_s, u"/"_s);
         Ros2Qos qos;
         qos.depth = 1;
-        return advertise(m_resolve(topic), u"std_msgs/msg/Float64"_s, qos, nullptr);
+        return advertise(m_resolve(topic), u"std_msgs/msg/Float64"_s, qos).valueOr(-1);
     }
     QString publisherLine(const BridgeRoute& r, const RosMsgTypeInfo& t) const override
     {
@@ -161,17 +162,14 @@ public:
     }
 
 private:
-    int advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* error)
+    Result<int> advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
     {
         m_advertising = topic;
         m_refusal.clear();
         const bool ok = m_ros.node().advertise(topic, type, qos);
         m_advertising.clear();
-        if (!ok) {
-            if (error)
-                *error = m_refusal;
-            return -1;
-        }
+        if (!ok)
+            return LocatedError {m_refusal};
         const qsizetype id = m_topics.indexOf(topic);
         if (id >= 0)
             return int(id);
@@ -312,11 +310,11 @@ Ros2Bridge::~Ros2Bridge()
     stop();
 }
 
-bool Ros2Bridge::load(const QByteArray& yaml, const BridgeOptions& options, QString* error)
+Status Ros2Bridge::load(const QByteArray& yaml, const BridgeOptions& options)
 {
-    std::optional<BridgeSpec> spec = BridgeSpec::load(yaml, options.brokerUrl, options.args, error);
+    Result<BridgeSpec> spec = BridgeSpec::load(yaml, options.brokerUrl, options.args);
     if (!spec)
-        return false;
+        return spec.error();
     d->options = options;
     d->spec = std::move(*spec);
     QString full = options.nodeName;
@@ -336,14 +334,11 @@ bool Ros2Bridge::load(const QByteArray& yaml, const BridgeOptions& options, QStr
             r.json = false; // v2.5: primitive wins
         if (r.primitive || r.json)
             r.stamped = false; // v2.5 injects no stamp into text
-        if (r.json && r.rosType.isEmpty()) {
-            if (error)
-                *error = tr("%1: json needs a ros_type, as mqtt_client says").arg(r.mqttTopic);
-            return false;
-        }
+        if (r.json && r.rosType.isEmpty())
+            return LocatedError {tr("%1: json needs a ros_type, as mqtt_client says").arg(r.mqttTopic)};
         d->routes.push_back({std::make_unique<BridgeHop>(r, d->options, d->counters, d->log), {}, {}});
     }
-    return true;
+    return {};
 }
 
 QString Ros2Bridge::nodeName() const
@@ -372,7 +367,7 @@ int Ros2Bridge::mappingCount() const
     return int(d->routes.size());
 }
 
-bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
+Status Ros2Bridge::start(const Ros2Options& rosOptions)
 {
     d->ros = std::make_unique<Ros2Participant>();
     Private* p = d.get();
@@ -398,8 +393,9 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
     });
     QObject::connect(ros, &Ros2Participant::restartLoopBroken, ros,
                      [p](const QString& what) { p->log(what); });
-    if (!ros->start(rosOptions, error))
-        return false;
+    QString why;
+    if (!ros->start(rosOptions, &why))
+        return LocatedError {why};
     ros->node().setNode(d->nameSpace, d->name);
     d->side = std::make_unique<Ros2Side>(*ros, d->registry, [p](const QString& topic) { return p->resolve(topic); });
     for (Route& r : d->routes) {
@@ -417,10 +413,10 @@ bool Ros2Bridge::start(const Ros2Options& rosOptions, QString* error)
         r.hop->start(*d->side, *d->mqtt); // stamp topics; a fixed type's writer before any message
     d->setupSubscriptions();
     d->log(tr("connecting to %1…").arg(d->spec.profile.url));
-    if (!d->mqtt->connect(10000, error))
-        return false;
+    if (Status connected = d->mqtt->connect(10000); !connected)
+        return connected;
     d->log(tr("connected to %1").arg(d->spec.profile.url));
-    return true;
+    return {};
 }
 
 void Ros2Bridge::Private::startMqtt()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "bridge/bridgehop.h"
 #include "mqtt/mqttprofile.h"
 #include "ros2/ros2types.h"
@@ -37,10 +38,10 @@ public:
     ~Ros2Bridge();
 
     /// Reads the config (any layout). Errors: not a bridge config, no mapping, bad values.
-    bool load(const QByteArray& yaml, const BridgeOptions& options, QString* error);
+    Status load(const QByteArray& yaml, const BridgeOptions& options);
     /// Joins the domain and connects to the broker (waiting up to 10 s); then bridges from this
     /// thread's event loop.
-    bool start(const Ros2Options& ros, QString* error);
+    Status start(const Ros2Options& ros);
     void stop();
 
     const BridgeCounters& counters() const;

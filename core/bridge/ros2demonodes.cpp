@@ -59,11 +59,11 @@ struct Stamper
 
 /// Starts the participant as node `name` with the stamps' writers and waits (at most 15 s) until
 /// it is on the domain.
-bool setUp(Ros2Participant& dds, const Ros2DemoNodes::Options& o, const QString& name,
-           std::initializer_list<const Stamper*> stampers, QString* error)
+Status setUp(Ros2Participant& dds, const Ros2DemoNodes::Options& o, const QString& name,
+             std::initializer_list<const Stamper*> stampers)
 {
-    if (!dds.start(o.dds, error))
-        return false;
+    if (QString why; !dds.start(o.dds, &why))
+        return LocatedError {why};
     dds.node().setNode(u"/"_s, name);
     for (const Stamper* s : stampers)
         dds.node().advertise(s->topic, QLatin1String(Ros2BridgeWire::kTimeStampedType));
@@ -75,10 +75,11 @@ bool setUp(Ros2Participant& dds, const Ros2DemoNodes::Options& o, const QString&
     });
     QTimer::singleShot(15000, &wait, &QEventLoop::quit);
     wait.exec();
-    if (!ok && error)
-        *error = dds.lastError().isEmpty() ? Ros2DemoNodes::tr("the DDS process did not join the domain")
-                                           : dds.lastError();
-    return ok;
+    if (!ok)
+        return LocatedError {dds.lastError().isEmpty()
+                                 ? Ros2DemoNodes::tr("the DDS process did not join the domain")
+                                 : dds.lastError()};
+    return {};
 }
 
 /// Runs the event loop until `stop` says so (asked every 50 ms).
@@ -127,13 +128,13 @@ QByteArray pointCloud(int payloadBytes)
 }
 } // namespace
 
-bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, QString* error)
+Status Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop)
 {
     Ros2Participant dds;
     Stamper sent {dds, kStamps + u"pointcloud"_s, o.clockOffsetNs};
     Stamper back {dds, kStamps + u"object_list"_s, o.clockOffsetNs};
-    if (!setUp(dds, o, u"demo_vehicle"_s, {&sent, &back}, error))
-        return false;
+    if (Status joined = setUp(dds, o, u"demo_vehicle"_s, {&sent, &back}); !joined)
+        return joined;
     dds.node().advertise(u"/vehicle/pointcloud"_s, kPointCloud);
     dds.node().subscribe(u"/vehicle/object_list"_s, kPoseArray);
     QObject::connect(&dds.node(), &Ros2EndpointLink::received, &dds, [&back](const QString& topic, const Ros2Sample& s) {
@@ -143,11 +144,8 @@ bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& st
             back.stamp(*stamp, s.receivedNs);
     });
     QByteArray scan = pointCloud(o.payloadBytes);
-    if (scan.size() < 16) {
-        if (error)
-            *error = tr("cannot encode the point cloud");
-        return false;
-    }
+    if (scan.size() < 16)
+        return LocatedError {tr("cannot encode the point cloud")};
 
     // Start when the bridge and a measuring Bridgescope listen (at most 15 s): samples sent
     // before would count as dropped, though nothing was lost.
@@ -184,16 +182,16 @@ bool Ros2DemoNodes::runVehicle(const Options& o, const std::function<bool()>& st
     tick.start(0);
     runUntil(stop);
     dds.stop();
-    return true;
+    return {};
 }
 
-bool Ros2DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop, QString* error)
+Status Ros2DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop)
 {
     Ros2Participant dds;
     Stamper in {dds, kStamps + u"object_detection/pointcloud"_s, o.clockOffsetNs};
     Stamper out {dds, kStamps + u"object_detection/object_list"_s, o.clockOffsetNs};
-    if (!setUp(dds, o, u"demo_object_detection"_s, {&in, &out}, error))
-        return false;
+    if (Status joined = setUp(dds, o, u"demo_object_detection"_s, {&in, &out}); !joined)
+        return joined;
     dds.node().advertise(u"/cloud/object_list"_s, kPoseArray);
     dds.node().subscribe(u"/cloud/pointcloud"_s, kPointCloud);
     std::mt19937 rng(11);
@@ -219,5 +217,5 @@ bool Ros2DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop
     });
     runUntil(stop);
     dds.stop();
-    return true;
+    return {};
 }

@@ -25,8 +25,8 @@ public:
     {
         Ros2Options dds {0, true};
     };
-    /// Runs until `stop` returns true (asked every 50 ms); false with `error` when the participant
-    /// cannot be started or does not join the domain.
-    static bool runVehicle(const Options& options, const std::function<bool()>& stop, QString* error);
-    static bool runCloud(const Options& options, const std::function<bool()>& stop, QString* error);
+    /// Runs until `stop` returns true (asked every 50 ms); an error when the participant cannot be
+    /// started or does not join the domain.
+    static Status runVehicle(const Options& options, const std::function<bool()>& stop);
+    static Status runCloud(const Options& options, const std::function<bool()>& stop);
 };

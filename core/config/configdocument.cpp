@@ -27,12 +27,10 @@ ConfigDocument::LoadResult ConfigDocument::load(const QString& path)
     LoadResult result;
     // A regular file (not a FIFO or a device), read no further than a config may go: a file past
     // the limit is said to be so by its size, and only its start is read, to be shown.
-    QString why;
-    const std::optional<RegularFile::Opened> opened
-        = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
+    const Result<RegularFile::Opened> opened = RegularFile::open(path, std::numeric_limits<qint64>::max());
     if (!opened) {
         result.unreadable = true;
-        result.error = tr("Cannot open %1: %2").arg(path, why);
+        result.error = tr("Cannot open %1: %2").arg(path, opened.error().toString());
         return result;
     }
     QFile& file = *opened->file;
@@ -221,7 +219,8 @@ ConfigDocument::SaveResult ConfigDocument::save(const QString& path, ConfigLayou
         result.rewritten = !m_text.isEmpty();
         written = ConfigReader::read(bytes);
     }
-    if (!AtomicFile::write(path, bytes, &result.error)) {
+    if (const Status saved = AtomicFile::write(path, bytes); !saved) {
+        result.error = saved.error().toString();
         result.status = SaveResult::Failed;
         return result;
     }

@@ -200,26 +200,27 @@ QStringList DemoLab::pipelineTopics()
     return t;
 }
 
-bool DemoLab::start(const Options& o, QString* error)
+Status DemoLab::start(const Options& o)
 {
-    return startServers(o, error) && startComponents(error);
+    if (Status servers = startServers(o); !servers)
+        return servers;
+    return startComponents();
 }
 
-bool DemoLab::startServers(const Options& o, QString* error)
+Status DemoLab::startServers(const Options& o)
 {
-    if (!launchServers(o, error))
-        return false;
+    if (Status launched = launchServers(o); !launched)
+        return launched;
     const QDeadlineTimer deadline(20000);
     for (const auto& [name, port] : std::as_const(d->starting))
         if (!LoopbackPorts::waitForListener(port, int(deadline.remainingTime()),
                                             [this] { return isRunning(); })) {
-            if (error)
-                *error = tr("%1 did not start: %2").arg(name, d->logOf(name));
+            const LocatedError error {tr("%1 did not start: %2").arg(name, d->logOf(name))};
             stop();
-            return false;
+            return error;
         }
     d->starting.clear();
-    return true;
+    return {};
 }
 
 DemoLab::Poll DemoLab::pollServers(QString* error)
@@ -238,24 +239,22 @@ DemoLab::Poll DemoLab::pollServers(QString* error)
     return Poll::Ready;
 }
 
-bool DemoLab::launchServers(const Options& o, QString* error)
+Status DemoLab::launchServers(const Options& o)
 {
-    const auto fail = [this, error](const QString& why) {
-        if (error)
-            *error = why;
+    const auto stopWith = [this](const QString& why) {
         stop();
-        return false;
+        return LocatedError {why};
     };
     d->options = o;
     d->bridgePorts.clear();
     if (!d->dir.isValid())
-        return fail(tr("cannot make a folder for the demo: %1").arg(d->dir.errorString()));
+        return stopWith(tr("cannot make a folder for the demo: %1").arg(d->dir.errorString()));
     QDir().mkpath(d->dir.filePath(u"ros/log"_s));
     const bool tls = !o.tlsDirectory.isEmpty();
     if (tls)
         for (const char* f : {"ca.crt", "server.crt", "server.key"})
             if (!QFileInfo::exists(QDir(o.tlsDirectory).filePath(QLatin1String(f))))
-                return fail(tr("TLS needs %1 in %2").arg(QLatin1String(f), o.tlsDirectory));
+                return stopWith(tr("TLS needs %1 in %2").arg(QLatin1String(f), o.tlsDirectory));
 
     // The servers: the ones given, else private ones on free loopback ports.
     const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
@@ -265,7 +264,7 @@ bool DemoLab::launchServers(const Options& o, QString* error)
     d->brokerUrl = o.brokerUrl;
     if (d->brokerUrl.isEmpty()) {
         if (mosquitto.isEmpty())
-            return fail(tr("the demo needs mosquitto (scripts/setup.sh installs it) or --broker"));
+            return stopWith(tr("the demo needs mosquitto (scripts/setup.sh installs it) or --broker"));
         const quint16 port = LoopbackPorts::freePort();
         d->brokerUrl = u"%1://127.0.0.1:%2"_s.arg(tls ? u"ssl"_s : u"tcp"_s).arg(port);
         QFile conf(d->dir.filePath(u"mosquitto.conf"_s));
@@ -283,7 +282,7 @@ bool DemoLab::launchServers(const Options& o, QString* error)
                 t.absoluteFilePath(u"server.key"_s));
         }
         if (!conf.open(QIODevice::WriteOnly) || conf.write(text.toUtf8()) < 0)
-            return fail(tr("cannot write %1").arg(conf.fileName()));
+            return stopWith(tr("cannot write %1").arg(conf.fileName()));
         conf.close();
         d->launch(u"mosquitto"_s, mosquitto, {u"-c"_s, conf.fileName()});
         started.append({u"mosquitto"_s, port});
@@ -291,16 +290,16 @@ bool DemoLab::launchServers(const Options& o, QString* error)
     d->masterUri = o.ros == 2 ? QString() : o.rosMasterUri;
     d->domain = o.ros != 2 ? -1 : (o.rosDomain >= 0 ? o.rosDomain : freeDomain());
     if (o.ros == 2 && d->domain < 0)
-        return fail(tr("no free ROS 2 domain on this host"));
+        return stopWith(tr("no free ROS 2 domain on this host"));
     if (d->masterUri.isEmpty() && o.ros != 2) {
         if (rosmaster.isEmpty())
-            return fail(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
+            return stopWith(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
         const quint16 port = LoopbackPorts::freePort();
         d->masterUri = u"http://127.0.0.1:%1/"_s.arg(port);
         d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(port)});
         started.append({u"rosmaster"_s, port});
     }
-    return true;
+    return {};
 }
 
 void DemoLab::setBridgePort(const QString& side, quint16 port)
@@ -308,13 +307,11 @@ void DemoLab::setBridgePort(const QString& side, quint16 port)
     d->bridgePorts.insert(side, port);
 }
 
-bool DemoLab::startComponents(QString* error)
+Status DemoLab::startComponents()
 {
-    const auto fail = [this, error](const QString& why) {
-        if (error)
-            *error = why;
+    const auto stopWith = [this](const QString& why) {
         stop();
-        return false;
+        return LocatedError {why};
     };
     const Options& o = d->options;
     const QString program = o.program.isEmpty() ? QCoreApplication::applicationFilePath() : o.program;
@@ -330,9 +327,11 @@ bool DemoLab::startComponents(QString* error)
         const bool relayed = d->bridgePorts.contains(side);
         const QString host = relayed ? u"127.0.0.1"_s : broker.host();
         const quint16 port = relayed ? d->bridgePorts.value(side) : quint16(broker.port(1883));
-        if (!AtomicFile::write(d->dir.filePath(side + u".yaml"_s),
-                               bridgeConfig(side, host, port, caFile(), o).toUtf8(), &why, false))
-            return fail(why);
+        if (const Status written
+            = AtomicFile::write(d->dir.filePath(side + u".yaml"_s),
+                                bridgeConfig(side, host, port, caFile(), o).toUtf8(), false);
+            !written)
+            return stopWith(written.error().toString());
     }
     Pipeline pipeline(pipelineTopics(), 600);
     for (const QString& t : pipelineTopics())
@@ -340,8 +339,8 @@ bool DemoLab::startComponents(QString* error)
             t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
     // Without the cloud's offset every component stamps with this machine's clock.
     pipeline.setOneClock(o.cloudOffsetMs == 0);
-    if (!AtomicFile::write(pipelinePath(), pipeline.toYaml(), &why, false))
-        return fail(why);
+    if (const Status written = AtomicFile::write(pipelinePath(), pipeline.toYaml(), false); !written)
+        return stopWith(written.error().toString());
 
     // The components.
     const QString offset = QString::number(o.cloudOffsetMs);
@@ -373,7 +372,7 @@ bool DemoLab::startComponents(QString* error)
         // the host and port the bridge connects to (the relay's, when one is in between).
         const QByteArray secret = credentials ? bridgeBrokerUrl(side).toUtf8() : QByteArray();
         if (!d->launch(side + u"_bridge"_s, program, args + common, secret, &why))
-            return fail(why);
+            return stopWith(why);
     }
     d->launch(u"object_detection"_s, program,
               QStringList {u"demo-node"_s, u"cloud"_s, u"--clock-offset-ms"_s, offset, u"--detection-ms"_s,
@@ -385,8 +384,8 @@ bool DemoLab::startComponents(QString* error)
                   + common);
     for (const auto& p : d->processes)
         if (!p->waitForStarted(5000))
-            return fail(tr("cannot start %1: %2").arg(p->program(), p->errorString()));
-    return true;
+            return stopWith(tr("cannot start %1: %2").arg(p->program(), p->errorString()));
+    return {};
 }
 
 void DemoLab::stop()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <memory>
 #include <QCoreApplication>
 #include <QString>
@@ -53,16 +55,16 @@ public:
     DemoLab& operator=(const DemoLab&) = delete;
 
     /// Starts the servers (waiting until they listen, a second or two) and the components.
-    bool start(const Options& options, QString* error);
+    Status start(const Options& options);
     /// The same in two steps, for an experiment that puts a relay between a bridge and the broker.
-    bool startServers(const Options& options, QString* error);
+    Status startServers(const Options& options);
     /// The port a side's bridge ("vehicle", "cloud") connects to instead of the broker's (a relay
     /// on 127.0.0.1 in front of it); before startComponents().
     void setBridgePort(const QString& side, quint16 port);
-    bool startComponents(QString* error);
+    Status startComponents();
     /// startServers() without waiting, for a window that shows progress meanwhile: launches the
     /// servers; then pollServers() until they listen (each poll a loopback connect per server).
-    bool launchServers(const Options& options, QString* error);
+    Status launchServers(const Options& options);
     enum class Poll { Waiting, Ready, Failed };
     /// Whether the launched servers listen now; Failed (with `error`) when one stopped.
     Poll pollServers(QString* error);

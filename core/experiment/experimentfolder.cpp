@@ -28,14 +28,14 @@ QString ExperimentFolder::filePath(const QString& relative) const
     return QDir(m_path).filePath(relative);
 }
 
-std::optional<QList<CellStatus>> ExperimentFolder::readState(const ExperimentPlan& plan, QString* error) const
+Result<QList<CellStatus>> ExperimentFolder::readState(const ExperimentPlan& plan) const
 {
-    QString why;
-    const std::optional<QByteArray> bytes = RegularFile::readHead(statePath(), kMaxStateBytes, &why);
-    std::optional<QList<CellStatus>> statuses
-        = bytes ? ExperimentState::parse(*bytes, plan, &why) : std::nullopt;
-    if (!statuses && error)
-        *error = tr("%1: %2").arg(statePath(), why);
+    const Result<QByteArray> bytes = RegularFile::readHead(statePath(), kMaxStateBytes);
+    if (!bytes)
+        return LocatedError {tr("%1: %2").arg(statePath(), bytes.error().toString())};
+    Result<QList<CellStatus>> statuses = ExperimentState::parse(*bytes, plan);
+    if (!statuses)
+        return LocatedError {tr("%1: %2").arg(statePath(), statuses.error().toString())};
     return statuses;
 }
 

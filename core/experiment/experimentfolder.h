@@ -37,7 +37,8 @@ public:
     QString filePath(const QString& relative) const;
 
     /// The statuses the state file holds, in the plan's order of cells (ids matched).
-    std::optional<QList<CellStatus>> readState(const ExperimentPlan& plan, QString* error) const;
+    /// An error names the state file.
+    Result<QList<CellStatus>> readState(const ExperimentPlan& plan) const;
     /// What the throughput file holds (empty when the plan has no throughput step or it has not run).
     QList<ThroughputResult> readThroughput() const;
 

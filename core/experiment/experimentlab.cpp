@@ -34,22 +34,33 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
     o.tlsDirectory = s.tls ? QDir(directory).filePath(u"tls"_s) : QString();
     o.bridgeCommand = s.bridge.command;
     o.ros = plan.ros; // ROS 2: the lab picks a fresh free domain for each cell
-    if (!lab.startServers(o, why))
+    if (Status servers = lab.startServers(o); !servers) {
+        if (why)
+            *why = servers.error().toString();
         return false;
+    }
     if (!s.link.isNone()) {
         // host and port without the user info: a password may hold what QUrl refuses
         const QUrl broker(Secrets::urlWithoutCredentials(lab.brokerUrl()));
         const quint16 port = quint16(broker.port(1883));
-        vehicleRelay = LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 1);
-        cloudRelay = vehicleRelay ? LinkRelay::start(s.link, broker.host(), port, why, 2u * quint32(seed) + 2)
-                                  : nullptr;
-        if (!cloudRelay)
-            return false;
+        for (auto [relay, n] : {std::pair {&vehicleRelay, 1u}, std::pair {&cloudRelay, 2u}}) {
+            Result<std::unique_ptr<LinkRelay>> started
+                = LinkRelay::start(s.link, broker.host(), port, 2u * quint32(seed) + n);
+            if (!started) {
+                if (why)
+                    *why = started.error().toString();
+                return false;
+            }
+            *relay = std::move(started).value();
+        }
         lab.setBridgePort(u"vehicle"_s, vehicleRelay->port());
         lab.setBridgePort(u"cloud"_s, cloudRelay->port());
     }
-    if (!lab.startComponents(why))
+    if (Status components = lab.startComponents(); !components) {
+        if (why)
+            *why = components.error().toString();
         return false;
+    }
     Result<Pipeline> pipeline
         = Pipeline::readFile(plan.pipelinePath.isEmpty() ? lab.pipelinePath() : plan.pipelinePath);
     if (!pipeline) {

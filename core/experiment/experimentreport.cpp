@@ -170,22 +170,15 @@ bool ExperimentReport::isExperiment(const QString& path)
     return ExperimentFolder::isExperiment(path);
 }
 
-std::optional<ExperimentReport> ExperimentReport::load(const QString& directory, QString* error,
-                                                       const Progress& progress)
+Result<ExperimentReport> ExperimentReport::load(const QString& directory, const Progress& progress)
 {
-    const auto fail = [&](const QString& why) -> std::optional<ExperimentReport> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
     const QDir dir(directory);
     const Result<ExperimentPlan> plan = ExperimentPlan::readFile(ExperimentFolder(directory).planPath());
     if (!plan)
-        return fail(plan.error().toString());
-    QString why;
-    const std::optional<QList<CellStatus>> statuses = ExperimentFolder(directory).readState(*plan, &why);
+        return plan.error();
+    const Result<QList<CellStatus>> statuses = ExperimentFolder(directory).readState(*plan);
     if (!statuses)
-        return fail(why);
+        return statuses.error();
 
     ExperimentReport r;
     r.m_plan = *plan;
@@ -203,7 +196,7 @@ std::optional<ExperimentReport> ExperimentReport::load(const QString& directory,
             };
             const Result<RunData> run = RunFile::read(dir.filePath(cell.status.run), part);
             if (!run && progress && !progress(int(100 * i / plan->cells.size())))
-                return fail(tr("cancelled"));
+                return LocatedError {tr("cancelled")};
             if (!run) {
                 cell.problem = run.error().toString();
             } else if (pipeline && run->info.pipeline.topics() != pipeline->topics()) {
@@ -263,7 +256,7 @@ void ExperimentReport::buildTables(const std::vector<std::vector<LatencySeries>>
     }
 }
 
-std::optional<QList<Statistic>> ExperimentReport::parseStatistics(const QString& list, QString* error)
+Result<QList<Statistic>> ExperimentReport::parseStatistics(const QString& list)
 {
     QList<Statistic> out;
     for (const QString& name : list.split(u',', Qt::SkipEmptyParts)) {
@@ -276,11 +269,8 @@ std::optional<QList<Statistic>> ExperimentReport::parseStatistics(const QString&
             out << Statistic::Std;
         else if (n == u"p99"_s)
             out << Statistic::P99;
-        else {
-            if (error)
-                *error = tr("'%1' is not a statistic (mean, median, std, p99)").arg(n);
-            return std::nullopt;
-        }
+        else
+            return LocatedError {tr("'%1' is not a statistic (mean, median, std, p99)").arg(n)};
     }
     if (out.isEmpty())
         out << Statistic::Mean;
@@ -447,29 +437,35 @@ QString ExperimentReport::rosText() const
     return m_plan.ros == 2 ? tr("ROS 2 (DDS, a private domain)") : tr("ROS 1");
 }
 
-QByteArray ExperimentReport::exportTo(const QString& path, ReportFormats::Format format,
-                                      const QList<Statistic>& statistics, QString* error) const
+Result<QByteArray> ExperimentReport::exportTo(const QString& path, ReportFormats::Format format,
+                                              const QList<Statistic>& statistics) const
 {
     // Written to a file, the Markdown links each factor's ECDF, written beside it as SVG.
     QString prefix;
     if (format == ReportFormats::Format::Markdown && !path.isEmpty()) {
         prefix = figurePrefixOf(path);
-        if (!writeFigures(prefix, error))
-            return {};
+        if (Status written = writeFigures(prefix); !written)
+            return written.error();
     }
     const QByteArray bytes = render(format, statistics, prefix);
-    if (!path.isEmpty() && !AtomicFile::write(path, bytes, error, false))
-        return {};
+    if (path.isEmpty())
+        return bytes;
+    if (Status written = AtomicFile::write(path, bytes, false); !written)
+        return written.error();
     return bytes;
 }
 
-bool ExperimentReport::writeFigures(const QString& figurePrefix, QString* error) const
+Status ExperimentReport::writeFigures(const QString& figurePrefix) const
 {
-    for (int t = 0; t < int(m_tables.size()); ++t)
-        if (const QByteArray svg = ecdfSvg(t); !svg.isEmpty()
-            && !AtomicFile::write(figurePath(figurePrefix, m_tables[t].factor), svg, error, false))
-            return false;
-    return true;
+    for (int t = 0; t < int(m_tables.size()); ++t) {
+        const QByteArray svg = ecdfSvg(t);
+        if (svg.isEmpty())
+            continue;
+        if (Status written = AtomicFile::write(figurePath(figurePrefix, m_tables[t].factor), svg, false);
+            !written)
+            return written;
+    }
+    return {};
 }
 
 QString ExperimentReport::figurePrefixOf(const QString& reportPath)

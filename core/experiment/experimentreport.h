@@ -56,10 +56,9 @@ public:
         QList<Column> columns;
     };
 
-    /// Reads DIR (its plan copy, state and runs); nullopt with `error` when it is no experiment, or
-    /// when `progress` cancels (it is asked while each run is read).
-    static std::optional<ExperimentReport> load(const QString& directory, QString* error,
-                                                const Progress& progress = {});
+    /// Reads DIR (its plan copy, state and runs); an error when it is no experiment, or when
+    /// `progress` cancels (it is asked while each run is read).
+    static Result<ExperimentReport> load(const QString& directory, const Progress& progress = {});
     /// Whether `path` is an experiment's folder.
     static bool isExperiment(const QString& path);
 
@@ -93,7 +92,7 @@ public:
     /// "out/report-qos-ecdf.svg".
     static QString figurePath(const QString& figurePrefix, const QString& factor);
 
-    static std::optional<QList<Statistic>> parseStatistics(const QString& list, QString* error);
+    static Result<QList<Statistic>> parseStatistics(const QString& list);
     static QString statisticName(Statistic s);
     static double value(const LatencyStats& s, Statistic statistic);
     /// A figure in ms as the tables show it ("12.3", "0.45"; "–" for none).
@@ -118,11 +117,11 @@ public:
                       const QString& figurePrefix = QString()) const;
     /// The one export of a report, for the command and the page alike: the report in `format`
     /// written to `path` atomically (empty `path`: the bytes are only returned), Markdown with its
-    /// figures beside it (figurePrefixOf(path)). Empty with `error` when a file cannot be written.
-    QByteArray exportTo(const QString& path, ReportFormats::Format format, const QList<Statistic>& statistics,
-                        QString* error) const;
+    /// figures beside it (figurePrefixOf(path)). An error when a file cannot be written.
+    Result<QByteArray> exportTo(const QString& path, ReportFormats::Format format,
+                                const QList<Statistic>& statistics) const;
     /// Writes every factor's ECDF as figurePath(figurePrefix, factor), each atomically.
-    bool writeFigures(const QString& figurePrefix, QString* error) const;
+    Status writeFigures(const QString& figurePrefix) const;
     /// The prefix of the figures beside a report file: "out/report.md" → "out/report".
     static QString figurePrefixOf(const QString& reportPath);
     QByteArray toJson() const;

@@ -22,9 +22,11 @@ void ExperimentReportJob::start()
         return;
     // The worker writes m_report and m_error; they are read only after it has ended.
     m_worker = QThread::create([this] {
-        std::optional<ExperimentReport> r
-            = ExperimentReport::load(m_directory, &m_error, [this](int) { return !m_cancel.load(); });
-        if (r && !m_cancel.load())
+        Result<ExperimentReport> r
+            = ExperimentReport::load(m_directory, [this](int) { return !m_cancel.load(); });
+        if (!r)
+            m_error = r.error().toString();
+        else if (!m_cancel.load())
             m_report = std::make_shared<const ExperimentReport>(std::move(*r));
     });
     m_worker->setParent(this);

@@ -32,37 +32,38 @@ constexpr qsizetype kMaxStateBytes = ExperimentState::kMaxBytes;
 constexpr qint64 kSilenceMs = 5000;
 
 /// A CA and a server certificate for 127.0.0.1, made with openssl in `dir` (EC keys: quick).
-bool makeTlsFiles(const QString& dir, QString* error)
+Status makeTlsFiles(const QString& dir)
 {
     QDir().mkpath(dir);
-    const auto run = [&](const QStringList& args) {
+    const auto run = [&](const QStringList& args) -> Status {
         QProcess p;
         p.setWorkingDirectory(dir);
         p.setProcessChannelMode(QProcess::MergedChannels);
         p.start(u"openssl"_s, args);
-        if (!p.waitForFinished(30000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
-            *error = ExperimentRunner::tr("openssl %1 failed: %2")
-                         .arg(args.first(),
-                              p.errorString() + u' ' + QString::fromLocal8Bit(p.readAll()).right(300));
-            return false;
-        }
-        return true;
+        if (!p.waitForFinished(30000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
+            return LocatedError {
+                ExperimentRunner::tr("openssl %1 failed: %2")
+                    .arg(args.first(),
+                         p.errorString() + u' ' + QString::fromLocal8Bit(p.readAll()).right(300))};
+        return {};
     };
     QFile ext(QDir(dir).filePath(u"server.ext"_s));
-    if (!ext.open(QIODevice::WriteOnly) || ext.write("subjectAltName=IP:127.0.0.1,DNS:localhost\n") < 0) {
-        *error = ExperimentRunner::tr("cannot write %1").arg(ext.fileName());
-        return false;
-    }
+    if (!ext.open(QIODevice::WriteOnly) || ext.write("subjectAltName=IP:127.0.0.1,DNS:localhost\n") < 0)
+        return LocatedError {ExperimentRunner::tr("cannot write %1").arg(ext.fileName())};
     ext.close();
     const QStringList ec {u"-newkey"_s, u"ec"_s, u"-pkeyopt"_s, u"ec_paramgen_curve:prime256v1"_s,
                           u"-nodes"_s};
-    return run(QStringList {u"req"_s, u"-x509"_s} + ec
-               + QStringList {u"-keyout"_s, u"ca.key"_s, u"-out"_s, u"ca.crt"_s, u"-days"_s, u"3650"_s,
-                              u"-subj"_s, u"/CN=Bridgescope experiment CA"_s})
-        && run(QStringList {u"req"_s} + ec
-               + QStringList {u"-keyout"_s, u"server.key"_s, u"-out"_s, u"server.csr"_s, u"-subj"_s,
-                              u"/CN=127.0.0.1"_s})
-        && run({u"x509"_s, u"-req"_s, u"-in"_s, u"server.csr"_s, u"-CA"_s, u"ca.crt"_s, u"-CAkey"_s,
+    if (Status ca = run(QStringList {u"req"_s, u"-x509"_s} + ec
+                        + QStringList {u"-keyout"_s, u"ca.key"_s, u"-out"_s, u"ca.crt"_s, u"-days"_s,
+                                       u"3650"_s, u"-subj"_s, u"/CN=Bridgescope experiment CA"_s});
+        !ca)
+        return ca;
+    if (Status request = run(QStringList {u"req"_s} + ec
+                             + QStringList {u"-keyout"_s, u"server.key"_s, u"-out"_s, u"server.csr"_s,
+                                            u"-subj"_s, u"/CN=127.0.0.1"_s});
+        !request)
+        return request;
+    return run({u"x509"_s, u"-req"_s, u"-in"_s, u"server.csr"_s, u"-CA"_s, u"ca.crt"_s, u"-CAkey"_s,
                 u"ca.key"_s, u"-CAcreateserial"_s, u"-out"_s, u"server.crt"_s, u"-days"_s, u"3650"_s,
                 u"-extfile"_s, u"server.ext"_s});
 }
@@ -171,29 +172,25 @@ ExperimentRunner::~ExperimentRunner()
         stop();
 }
 
-bool ExperimentRunner::prepare(QString* error)
+Status ExperimentRunner::prepare()
 {
-    const auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
-        return false;
-    };
     const QDir dir(m_dir);
     if (!QDir().mkpath(dir.filePath(u"runs"_s)))
-        return fail(tr("cannot make %1").arg(dir.filePath(u"runs"_s)));
+        return LocatedError {tr("cannot make %1").arg(dir.filePath(u"runs"_s))};
     const QString stateFile = ExperimentFolder(m_dir).statePath();
     if (QFile::exists(stateFile)) {
         if (!m_options.resume)
-            return fail(tr("%1 holds an experiment already: --resume goes on with it, or give another folder")
-                            .arg(m_dir));
+            return LocatedError {
+                tr("%1 holds an experiment already: --resume goes on with it, or give another folder")
+                    .arg(m_dir)};
         if (RegularFile::head(ExperimentFolder(m_dir).planPath(), kMaxStateBytes) != m_planText)
-            return fail(tr("%1 was made by another plan (its %2 differs): resume it with that plan, or give "
-                           "another folder")
-                            .arg(m_dir, ExperimentFolder::planFileName()));
-        QString why;
-        const std::optional<QList<CellStatus>> state = ExperimentFolder(m_dir).readState(m_plan, &why);
+            return LocatedError {
+                tr("%1 was made by another plan (its %2 differs): resume it with that plan, or give "
+                   "another folder")
+                    .arg(m_dir, ExperimentFolder::planFileName())};
+        const Result<QList<CellStatus>> state = ExperimentFolder(m_dir).readState(m_plan);
         if (!state)
-            return fail(why);
+            return state.error();
         m_statuses = *state;
         m_resumeNotes.clear();
         for (qsizetype i = 0; i < m_statuses.size(); ++i) {
@@ -214,18 +211,17 @@ bool ExperimentRunner::prepare(QString* error)
             }
         }
     } else {
-        QString why;
-        if (!AtomicFile::write(ExperimentFolder(m_dir).planPath(), m_planText, &why, false))
-            return fail(why);
+        if (Status written = AtomicFile::write(ExperimentFolder(m_dir).planPath(), m_planText, false);
+            !written)
+            return written;
     }
     const bool tls = std::any_of(m_plan.cells.cbegin(), m_plan.cells.cend(),
                                  [](const ExperimentCell& c) { return c.settings.tls; });
     if (tls && !QFile::exists(dir.filePath(u"tls/server.crt"_s))) {
-        QString why;
-        if (!makeTlsFiles(dir.filePath(u"tls"_s), &why))
-            return fail(why);
+        if (Status made = makeTlsFiles(dir.filePath(u"tls"_s)); !made)
+            return made;
     }
-    return writeState(error);
+    return writeState();
 }
 
 void ExperimentRunner::start()
@@ -272,7 +268,7 @@ void ExperimentRunner::beginCell(int index)
     status.samples = 0;
     status.started = QDateTime::currentDateTimeUtc();
     status.finished = {};
-    writeState();
+    static_cast<void>(writeState()); // a failure is logged; the cells go on
     emit cellStarted(index);
     qCDebug(lcDemo).noquote() << "cell" << cell.id() << "starts";
 
@@ -389,7 +385,7 @@ void ExperimentRunner::endCell(CellStatus::State state, const QString& reason)
         status.link.readPauses += relay->readPauses();
     }
     m_cell.reset(); // stops the lab
-    writeState();
+    static_cast<void>(writeState()); // a failure is logged; the cells go on
     qCDebug(lcDemo).noquote() << "cell" << m_plan.cells[m_current].id() << CellStatus::stateName(state)
                               << status.reason;
     emit cellFinished(m_current);
@@ -438,7 +434,7 @@ void ExperimentRunner::stop()
     status.state = CellStatus::Pending;
     status.reason = tr("stopped; --resume does it again");
     m_cell.reset();
-    writeState();
+    static_cast<void>(writeState()); // a failure is logged; the cells go on
     emit finished(false);
 }
 
@@ -469,7 +465,7 @@ double ExperimentRunner::remainingSeconds() const
     return seconds;
 }
 
-bool ExperimentRunner::writeState(QString* error) const
+Status ExperimentRunner::writeState() const
 {
     QJsonArray cells;
     for (qsizetype i = 0; i < m_plan.cells.size(); ++i) {
@@ -490,11 +486,9 @@ bool ExperimentRunner::writeState(QString* error) const
                             {u"version"_s, 1},
                             {u"name"_s, m_plan.name},
                             {u"cells"_s, cells}};
-    QString why;
-    if (AtomicFile::write(ExperimentFolder(m_dir).statePath(), QJsonDocument(root).toJson(), &why, false))
-        return true;
-    qCWarning(lcDemo).noquote() << why;
-    if (error)
-        *error = why;
-    return false;
+    const Status written
+        = AtomicFile::write(ExperimentFolder(m_dir).statePath(), QJsonDocument(root).toJson(), false);
+    if (!written)
+        qCWarning(lcDemo).noquote() << written.error().toString();
+    return written;
 }

@@ -34,9 +34,9 @@ public:
     ~ExperimentRunner() override;
 
     /// Makes (or, resuming, checks) the folder: the plan's copy, the state, TLS files when a cell
-    /// needs them. False with `error` when the folder holds another plan or cannot be written.
+    /// needs them. An error when the folder holds another plan or cannot be written.
     /// Resuming, a complete cell's run is checked (see resumeNotes()).
-    bool prepare(QString* error);
+    Status prepare();
     /// What prepare() found resuming: each complete cell whose run could not be kept (a symlink,
     /// not a regular file, not a run of the cell, fewer samples than the plan's), done again.
     const QStringList& resumeNotes() const { return m_resumeNotes; }
@@ -80,7 +80,8 @@ private:
     void saySilence(Cell& c);
     void endCell(CellStatus::State state, const QString& reason);
     void sendTotals();
-    bool writeState(QString* error = nullptr) const;
+    /// Writes the state file; a failure is logged too.
+    Status writeState() const;
 
     ExperimentPlan m_plan;
     QByteArray m_planText;

@@ -23,23 +23,17 @@ QString CellStatus::stateName(State s)
     return {};
 }
 
-std::optional<QList<CellStatus>> ExperimentState::parse(const QByteArray& json, const ExperimentPlan& plan,
-                                                        QString* error)
+Result<QList<CellStatus>> ExperimentState::parse(const QByteArray& json, const ExperimentPlan& plan)
 {
-    if (json.size() > kMaxBytes) {
-        if (error)
-            *error = tr("not an experiment's state (larger than %1 MiB)").arg(kMaxBytes / (1024 * 1024));
-        return std::nullopt;
-    }
+    if (json.size() > kMaxBytes)
+        return LocatedError {
+            tr("not an experiment's state (larger than %1 MiB)").arg(kMaxBytes / (1024 * 1024))};
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     const QJsonObject root = doc.object();
     if (parseError.error != QJsonParseError::NoError
-        || root.value(u"format"_s).toString() != u"bridgescope-experiment"_s) {
-        if (error)
-            *error = tr("not an experiment's state (%1)").arg(parseError.errorString());
-        return std::nullopt;
-    }
+        || root.value(u"format"_s).toString() != u"bridgescope-experiment"_s)
+        return LocatedError {tr("not an experiment's state (%1)").arg(parseError.errorString())};
     QHash<QString, QJsonObject> byId;
     for (const QJsonValue& v : root.value(u"cells"_s).toArray())
         byId.insert(v.toObject().value(u"id"_s).toString(), v.toObject());

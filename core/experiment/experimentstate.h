@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "experiment/experimentplan.h"
 
 #include <optional>
@@ -44,7 +45,6 @@ public:
         return QStringLiteral("runs/%1.bsrun").arg(cell.id());
     }
     /// The statuses `json` holds, in the plan's order of cells (matched by id; a cell it does not
-    /// name is pending). nullopt with `error` when it is not an experiment's state.
-    static std::optional<QList<CellStatus>> parse(const QByteArray& json, const ExperimentPlan& plan,
-                                                  QString* error = nullptr);
+    /// name is pending). An error when it is not an experiment's state.
+    static Result<QList<CellStatus>> parse(const QByteArray& json, const ExperimentPlan& plan);
 };

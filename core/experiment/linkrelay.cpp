@@ -239,8 +239,8 @@ private:
     Pipe* m_down = nullptr;
 };
 
-std::unique_ptr<LinkRelay> LinkRelay::start(const LinkProfile& profile, const QString& targetHost,
-                                            quint16 targetPort, QString* error, quint32 seed)
+Result<std::unique_ptr<LinkRelay>> LinkRelay::start(const LinkProfile& profile, const QString& targetHost,
+                                                    quint16 targetPort, quint32 seed)
 {
     std::unique_ptr<LinkRelay> r(new LinkRelay);
     r->m_thread = std::make_unique<QThread>();
@@ -273,11 +273,8 @@ std::unique_ptr<LinkRelay> LinkRelay::start(const LinkProfile& profile, const QS
                              });
         },
         Qt::BlockingQueuedConnection);
-    if (!why.isEmpty()) {
-        if (error)
-            *error = tr("the link relay cannot listen: %1").arg(why);
-        return nullptr;
-    }
+    if (!why.isEmpty())
+        return LocatedError {tr("the link relay cannot listen: %1").arg(why)};
     return r;
 }
 

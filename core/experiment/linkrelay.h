@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "experiment/experimentplan.h"
 
 #include <atomic>
@@ -31,9 +32,9 @@ public:
     static constexpr qint64 kReadBufferBytes = 256 * 1024; ///< each socket's own read buffer
     static constexpr double kRetransmissionMs = 200; ///< Linux's minimum RTO
 
-    /// Listens on 127.0.0.1 (a free port) and relays to targetHost:targetPort; nullptr with `error`.
-    static std::unique_ptr<LinkRelay> start(const LinkProfile& profile, const QString& targetHost,
-                                            quint16 targetPort, QString* error, quint32 seed = 1);
+    /// Listens on 127.0.0.1 (a free port) and relays to targetHost:targetPort.
+    static Result<std::unique_ptr<LinkRelay>> start(const LinkProfile& profile, const QString& targetHost,
+                                                    quint16 targetPort, quint32 seed = 1);
     ~LinkRelay();
 
     quint16 port() const { return m_port; }

@@ -188,10 +188,10 @@ bool ThroughputStep::writeResults() const
     QJsonArray sizes;
     for (const ThroughputResult& r : m_results)
         sizes.append(r.toJson());
-    QString why;
-    if (AtomicFile::write(ExperimentFolder(m_dir).throughputPath(),
-                          QJsonDocument(QJsonObject {{u"sizes"_s, sizes}}).toJson(), &why, false))
-        return true;
-    qCWarning(lcDemo).noquote() << why;
-    return false;
+    const Status written
+        = AtomicFile::write(ExperimentFolder(m_dir).throughputPath(),
+                            QJsonDocument(QJsonObject {{u"sizes"_s, sizes}}).toJson(), false);
+    if (!written)
+        qCWarning(lcDemo).noquote() << written.error().toString();
+    return written.ok();
 }

@@ -234,9 +234,9 @@ QByteArray Pipeline::toYaml() const
     return out.toUtf8();
 }
 
-bool Pipeline::save(const QString& path, QString* error) const
+Status Pipeline::save(const QString& path) const
 {
-    return AtomicFile::write(path, toYaml(), error);
+    return AtomicFile::write(path, toYaml());
 }
 
 QString Pipeline::host(int topicIndex) const

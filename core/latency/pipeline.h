@@ -32,7 +32,7 @@ public:
     static Result<Pipeline> read(const QByteArray& yaml);
     static Result<Pipeline> readFile(const QString& path);
     QByteArray toYaml() const;
-    bool save(const QString& path, QString* error = nullptr) const;
+    Status save(const QString& path) const;
 
     const QStringList& topics() const { return m_topics; }
     int topicCount() const { return int(m_topics.size()); }

@@ -164,8 +164,12 @@ struct LinkProbe::Run
                                       : tr("the connection to the broker was lost: %1").arg(cause);
             changed.notify_all();
         });
-        return link->connect(10000, &report.error)
-            && link->subscribeAndWait(report.receiveTopic, options.qos, 5000, &report.error);
+        Status ready = link->connect(10000);
+        if (ready)
+            ready = link->subscribeAndWait(report.receiveTopic, options.qos, 5000);
+        if (!ready)
+            report.error = ready.error().toString();
+        return ready.ok();
     }
 
     void disconnect() { link.reset(); }
@@ -370,30 +374,25 @@ struct LinkProbe::Run
     }
 };
 
-bool LinkProbeOptions::validate(QString* error) const
+Status LinkProbeOptions::validate() const
 {
     constexpr double kMinRateHz = 0.01;
-    auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
-        return false;
-    };
     if (payloadBytes < kHeaderBytes || payloadBytes > kMaxPayloadBytes)
-        return fail(
-            LinkProbe::tr("--size must be between %1 and %2 bytes").arg(kHeaderBytes).arg(kMaxPayloadBytes));
+        return LocatedError {
+            LinkProbe::tr("--size must be between %1 and %2 bytes").arg(kHeaderBytes).arg(kMaxPayloadBytes)};
     // A rate near 0 makes the interval between messages infinite (1e9 / 1e-300 ns), and the send
     // times computed from it undefined: bounded like every number given.
     if (!(rateHz >= kMinRateHz) || !std::isfinite(rateHz) || rateHz > 1e6)
-        return fail(LinkProbe::tr("--rate must be from %1 to 1000000 Hz").arg(kMinRateHz));
+        return LocatedError {LinkProbe::tr("--rate must be from %1 to 1000000 Hz").arg(kMinRateHz)};
     if (qos < 0 || qos > 2)
-        return fail(LinkProbe::tr("--qos must be 0, 1 or 2"));
+        return LocatedError {LinkProbe::tr("--qos must be 0, 1 or 2")};
     if (count < 1 || count > 100'000'000)
-        return fail(LinkProbe::tr("--count must be between 1 and 100000000"));
+        return LocatedError {LinkProbe::tr("--count must be between 1 and 100000000")};
     if (!(maxRateHz >= rateHz) || !std::isfinite(maxRateHz) || maxRateHz > 1e6)
-        return fail(LinkProbe::tr("--max-rate must be at least --rate and at most 1000000 Hz"));
+        return LocatedError {LinkProbe::tr("--max-rate must be at least --rate and at most 1000000 Hz")};
     if (!(sweepSeconds > 0) || !(stepSeconds > 0) || !(rateFactor > 1) || drainMs < 0)
-        return fail(LinkProbe::tr("the sweep needs positive durations and a factor above 1"));
-    return profile.validate(error);
+        return LocatedError {LinkProbe::tr("the sweep needs positive durations and a factor above 1")};
+    return profile.validate();
 }
 
 qint64 LinkProbeReport::received() const
@@ -483,11 +482,10 @@ void LinkProbe::launch(const LinkProbeOptions& options, int mode)
     const quint64 generation = ++m_generation;
     m_worker = std::thread([this, options, mode, generation] {
         Run run(this, options, mode, m_stop, m_echoed, &m_live);
-        QString why;
-        if (options.validate(&why))
+        if (const Status valid = options.validate())
             run.execute();
         else
-            run.report.error = why;
+            run.report.error = valid.error().toString();
         const LinkProbeReport report = run.report;
         QMetaObject::invokeMethod(
             this,

@@ -40,7 +40,7 @@ struct LinkProbeOptions
     static constexpr qint64 kMaxStepMessages = 5000;
 
     /// Checks sizes, rates, counts and QoS; the message names the option.
-    bool validate(QString* error) const;
+    Status validate() const;
 };
 
 /// The outcome of sending at one rate: counts and the round trip times.

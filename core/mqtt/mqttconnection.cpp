@@ -172,9 +172,8 @@ void MqttConnection::open(const MqttProfile& profile)
 {
     close();
     m_profile = profile;
-    QString error;
-    if (!profile.validate(&error)) {
-        setState(State::Failed, error);
+    if (const Status valid = profile.validate(); !valid) {
+        setState(State::Failed, valid.error().toString());
         return;
     }
     d->retrySeconds = 1;
@@ -325,7 +324,7 @@ void MqttConnection::diagnoseTls(const QString& fallback)
     if (!m_profile.certFile.isEmpty()) {
         conf.setLocalCertificate(QSslCertificate::fromPath(m_profile.certFile).value(0));
         // A key is a few KiB: a regular file of at most 1 MiB (not a FIFO, not /dev/zero).
-        if (const std::optional<QByteArray> read = RegularFile::read(m_profile.keyFile, 1024 * 1024)) {
+        if (const Result<QByteArray> read = RegularFile::read(m_profile.keyFile, 1024 * 1024)) {
             const QByteArray& pem = *read;
             QSslKey key(pem, QSsl::Rsa, QSsl::Pem, QSsl::PrivateKey, m_profile.keyPassword.toUtf8());
             if (key.isNull())

@@ -241,7 +241,7 @@ void MqttLink::addSubscription(const QString& filter, int qos)
     }
 }
 
-bool MqttLink::connect(int timeoutMs, QString* error)
+Status MqttLink::connect(int timeoutMs)
 {
     const MqttProfile& p = d->profile;
     try {
@@ -313,24 +313,20 @@ bool MqttLink::connect(int timeoutMs, QString* error)
             d->sender = std::thread([p = d.get()] { p->sendLoop(); });
         }
         mqtt::token_ptr token = d->client->connect(builder.finalize());
-        if (!token->wait_for(std::chrono::milliseconds(timeoutMs))) {
-            if (error)
-                *error = tr("no answer from %1 within %2 s").arg(p.url).arg(timeoutMs / 1000.0);
-            return false;
-        }
+        if (!token->wait_for(std::chrono::milliseconds(timeoutMs)))
+            return LocatedError {tr("no answer from %1 within %2 s").arg(p.url).arg(timeoutMs / 1000.0)};
     } catch (const mqtt::exception& e) {
-        if (error)
-            *error = e.get_return_code() == -1
+        return LocatedError {
+            e.get_return_code() == -1
                 ? tr("no broker answers at %1").arg(p.url)
                 : tr("cannot connect to %1: %2")
                       .arg(p.url,
-                           QString::fromStdString(e.get_message().empty() ? e.what() : e.get_message()));
-        return false;
+                           QString::fromStdString(e.get_message().empty() ? e.what() : e.get_message()))};
     }
-    return true;
+    return {};
 }
 
-bool MqttLink::subscribeAndWait(const QString& filter, int qos, int timeoutMs, QString* error)
+Status MqttLink::subscribeAndWait(const QString& filter, int qos, int timeoutMs)
 {
     {
         std::lock_guard<std::mutex> lock(d->mutex);
@@ -340,16 +336,13 @@ bool MqttLink::subscribeAndWait(const QString& filter, int qos, int timeoutMs, Q
         if (d->client
             && d->client->subscribe(filter.toStdString(), qos)
                    ->wait_for(std::chrono::milliseconds(timeoutMs)))
-            return true;
-        if (error)
-            *error
-                = tr("the broker at %1 does not confirm the subscription to %2").arg(d->profile.url, filter);
+            return {};
+        return LocatedError {
+            tr("the broker at %1 does not confirm the subscription to %2").arg(d->profile.url, filter)};
     } catch (const mqtt::exception& e) {
-        if (error)
-            *error = tr("the broker at %1 refuses the subscription to %2: %3")
-                         .arg(d->profile.url, filter, QString::fromStdString(e.what()));
+        return LocatedError {tr("the broker at %1 refuses the subscription to %2: %3")
+                                 .arg(d->profile.url, filter, QString::fromStdString(e.what()))};
     }
-    return false;
 }
 
 bool MqttLink::publish(const QString& topic, const QByteArray& payload, int qos, bool retained)

@@ -64,9 +64,9 @@ public:
     void addSubscription(const QString& filter, int qos);
 
     /// Connects, waiting up to `timeoutMs` for the broker's answer.
-    bool connect(int timeoutMs, QString* error);
+    Status connect(int timeoutMs);
     /// Subscribes now and waits up to `timeoutMs` for the broker to confirm (also held on reconnects).
-    bool subscribeAndWait(const QString& filter, int qos, int timeoutMs, QString* error);
+    Status subscribeAndWait(const QString& filter, int qos, int timeoutMs);
     bool publish(const QString& topic, const QByteArray& payload, int qos, bool retained);
     enum class Sent { Ok, Full, Failed };
     /// publish() that tells a full window (QoS 1/2 in flight, or messages not yet written: try

@@ -22,40 +22,36 @@ bool MqttProfile::isTls() const
     return scheme == u"ssl"_s || scheme == u"mqtts"_s || scheme == u"wss"_s;
 }
 
-bool MqttProfile::validate(QString* error) const
+Status MqttProfile::validate() const
 {
-    auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
-        return false;
-    };
     const QUrl u(url, QUrl::StrictMode);
     // Never echo the URL as given: what did not parse may be a password.
     const QString shown = Secrets::redactedUrl(url);
     static const QStringList schemes = {u"tcp"_s, u"ssl"_s, u"mqtt"_s, u"mqtts"_s, u"ws"_s, u"wss"_s};
     if (!u.isValid() || u.scheme().isEmpty())
-        return fail(
+        return LocatedError {
             ProfileText::tr("'%1' is not a broker URL; write it as tcp://host:1883 or ssl://host:8883.")
-                .arg(shown));
+                .arg(shown)};
     if (!schemes.contains(u.scheme()))
-        return fail(ProfileText::tr("'%1' is not a broker scheme; use tcp, ssl, mqtt, mqtts, ws or wss.")
-                        .arg(u.scheme()));
+        return LocatedError {
+            ProfileText::tr("'%1' is not a broker scheme; use tcp, ssl, mqtt, mqtts, ws or wss.")
+                .arg(u.scheme())};
     if (u.host().isEmpty())
-        return fail(ProfileText::tr("'%1' names no host.").arg(shown));
+        return LocatedError {ProfileText::tr("'%1' names no host.").arg(shown)};
     if (u.port() == 0)
-        return fail(ProfileText::tr("'%1': port 0 is not a port.").arg(shown));
+        return LocatedError {ProfileText::tr("'%1': port 0 is not a port.").arg(shown)};
     if (mqttVersion != 4 && mqttVersion != 5)
-        return fail(ProfileText::tr("MQTT version must be 3.1.1 (4) or 5."));
+        return LocatedError {ProfileText::tr("MQTT version must be 3.1.1 (4) or 5.")};
     if (filters.isEmpty())
-        return fail(ProfileText::tr("Subscribe at least one topic filter, e.g. #."));
+        return LocatedError {ProfileText::tr("Subscribe at least one topic filter, e.g. #.")};
     for (const QString& f : filters) {
         QString why;
         if (!TopicNames::isValidMqttTopic(f, false, &why))
-            return fail(ProfileText::tr("Filter '%1': %2.").arg(f, why));
+            return LocatedError {ProfileText::tr("Filter '%1': %2.").arg(f, why)};
     }
     if (!certFile.isEmpty() && keyFile.isEmpty())
-        return fail(ProfileText::tr("A client certificate needs its key file."));
-    return true;
+        return LocatedError {ProfileText::tr("A client certificate needs its key file.")};
+    return {};
 }
 
 QString MqttProfile::pahoUri() const

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <QCoreApplication>
 #include <QList>
 #include <QString>
@@ -32,7 +34,7 @@ struct MqttProfile
 
     bool isTls() const;
     /// Checks the URL (scheme, host, port) and the filters; the message says what is wrong.
-    bool validate(QString* error) const;
+    Status validate() const;
     /// The URL with the scheme Paho understands (mqtt:// -> tcp://, mqtts:// -> ssl://).
     QString pahoUri() const;
     /// A profile for `url`; credentials in it (`tcp://user:pass@host`) move to username and

@@ -397,13 +397,12 @@ Result<RunData> RunFile::read(const QString& path, const Progress& progress)
 {
     const auto fail = [&](const QString& why) { return LocatedError {path + u": "_s + why}; };
     // A regular file only: SQLite would wait on a FIFO in open() for ever.
-    QString notFile;
-    std::optional<RegularFile::Opened> probe = RegularFile::open(path, std::numeric_limits<qint64>::max(), &notFile);
+    Result<RegularFile::Opened> probe = RegularFile::open(path, std::numeric_limits<qint64>::max());
     if (!probe)
-        return fail(notFile);
+        return fail(probe.error().toString());
     if (probe->file->read(16) != QByteArray("SQLite format 3", 16))
         return fail(tr("not a Bridgescope run (not an SQLite database)"));
-    probe.reset();
+    probe->file.reset();
     // A run left by a killed recorder still has its write-ahead log: open it writable to recover it.
     const QFileInfo wal(path + u"-wal"_s);
     if (const QString what = RegularFile::notAFile(wal.filePath()); !what.isEmpty())

@@ -346,10 +346,9 @@ constexpr qsizetype kChunkBytes = 1024 * 1024;
 Result<SuiteCsv::Data> SuiteCsv::read(const QString& path, const Progress& progress, const Limits& limits)
 {
     // A regular file (a FIFO or /dev/zero is refused), read in chunks up to its size at the open.
-    QString why;
-    std::optional<RegularFile::Opened> f = RegularFile::open(path, std::numeric_limits<qint64>::max(), &why);
+    Result<RegularFile::Opened> f = RegularFile::open(path, std::numeric_limits<qint64>::max());
     if (!f)
-        return LocatedError {tr("%1: %2").arg(path, why)};
+        return LocatedError {tr("%1: %2").arg(path, f.error().toString())};
     Parser parser(path, limits, progress, f->size);
     QByteArray chunk(kChunkBytes, Qt::Uninitialized);
     for (qint64 left = f->size; left > 0;) {

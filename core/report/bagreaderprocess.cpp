@@ -26,21 +26,17 @@ QString BagReaderProcess::program()
 #endif
 }
 
-std::optional<RunData> BagReaderProcess::read(const QString& path, QString* error, const Progress& progress)
+Result<RunData> BagReaderProcess::read(const QString& path, const Progress& progress)
 {
-    const auto fail = [&](const QString& why) -> std::optional<RunData> {
-        if (error)
-            *error = path + u": "_s + why;
-        return std::nullopt;
-    };
+    const auto bagError = [&](const QString& why) { return LocatedError {why, {}, path}; };
     if (const QString why = BagHeader::refusal(path); !why.isEmpty())
-        return fail(why);
+        return bagError(why);
     const QString helper = program();
     if (helper.isEmpty())
-        return fail(tr("cannot read bags: the helper program bridgescope-bagreader is not installed"));
+        return bagError(tr("cannot read bags: the helper program bridgescope-bagreader is not installed"));
     QTemporaryDir dir;
     if (!dir.isValid())
-        return fail(tr("no temporary folder: %1").arg(dir.errorString()));
+        return bagError(tr("no temporary folder: %1").arg(dir.errorString()));
     const QString out = dir.filePath(u"bag.bsrun"_s);
 
     QProcess child;
@@ -56,7 +52,7 @@ std::optional<RunData> BagReaderProcess::read(const QString& path, QString* erro
     qCDebug(lcReport).noquote() << "starting" << helper << "for" << path;
     child.start(helper, {QFileInfo(path).absoluteFilePath(), out});
     if (!child.waitForStarted(10000))
-        return fail(tr("cannot start %1: %2").arg(helper, child.errorString()));
+        return bagError(tr("cannot start %1: %2").arg(helper, child.errorString()));
     QByteArray pending;
     QElapsedTimer sinceProgress;
     sinceProgress.start();
@@ -91,28 +87,25 @@ std::optional<RunData> BagReaderProcess::read(const QString& path, QString* erro
             pending.clear(); // not ours to keep: the child only prints short lines
     }
     if (cancelled)
-        return fail(tr("cancelled"));
+        return bagError(tr("cancelled"));
     if (stalled)
-        return fail(
+        return bagError(
             tr("the bag reader made no progress for %1 s; the bag may be damaged").arg(kStallMs / 1000));
     const QString said = QString::fromUtf8(child.readAllStandardError().left(4096)).trimmed();
     qCDebug(lcReport) << "the bag reader ended:" << (child.exitStatus() == QProcess::CrashExit ? "crashed" : "exit")
                       << child.exitCode();
     if (child.exitStatus() == QProcess::CrashExit)
-        return fail(tr("the bag is damaged: rosbag's library crashed reading it%1")
-                        .arg(said.isEmpty() ? QString() : u" ("_s + said + u')'));
+        return bagError(tr("the bag is damaged: rosbag's library crashed reading it%1")
+                            .arg(said.isEmpty() ? QString() : u" ("_s + said + u')'));
     if (child.exitCode() != 0) {
-        if (said.startsWith(path) || said.startsWith(QFileInfo(path).absoluteFilePath())) {
-            if (error)
-                *error = said; // rosbagimport names the file itself
-            return std::nullopt;
-        }
-        return fail(said.isEmpty() ? tr("the bag reader failed (exit %1)").arg(child.exitCode()) : said);
+        if (said.startsWith(path) || said.startsWith(QFileInfo(path).absoluteFilePath()))
+            return LocatedError {said}; // rosbagimport names the file itself
+        return bagError(said.isEmpty() ? tr("the bag reader failed (exit %1)").arg(child.exitCode()) : said);
     }
     Result<RunData> run = RunFile::read(out);
     if (!run)
-        return fail(tr("the bag reader's result does not read: %1").arg(run.error().toString()));
+        return bagError(tr("the bag reader's result does not read: %1").arg(run.error().toString()));
     if (progress)
         progress(100);
-    return std::move(run).value();
+    return run;
 }

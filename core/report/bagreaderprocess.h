@@ -3,7 +3,6 @@
 
 #include "record/runfile.h"
 
-#include <optional>
 #include <QCoreApplication>
 
 /// Reads a ROS bag in a child process (`bridgescope-bagreader`), never in this one.
@@ -15,8 +14,8 @@ class BagReaderProcess
 {
     Q_DECLARE_TR_FUNCTIONS(BagReaderProcess)
 public:
-    static std::optional<RunData> read(const QString& path, QString* error = nullptr,
-                                       const Progress& progress = {});
+    /// The bag as a run; the error names the file.
+    static Result<RunData> read(const QString& path, const Progress& progress = {});
     /// The helper program: $BRIDGESCOPE_BAGREADER, beside this program, in ../libexec/bridgescope,
     /// or in the build tree.
     static QString program();

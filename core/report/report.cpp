@@ -41,15 +41,11 @@ std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<P
     return run;
 }
 
-std::optional<Report> Report::build(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
-                                    const Options& options, QString* error, QStringList* warnings,
-                                    const Progress& progress)
+Result<Report> Report::build(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
+                             const Options& options, QStringList* warnings, const Progress& progress)
 {
-    if (inputs.isEmpty()) {
-        if (error)
-            *error = tr("no input files");
-        return std::nullopt;
-    }
+    if (inputs.isEmpty())
+        return LocatedError {tr("no input files")};
     std::vector<RunData> data;
     QStringList kinds;
     for (qsizetype i = 0; i < inputs.size(); ++i) {
@@ -59,20 +55,17 @@ std::optional<Report> Report::build(const QStringList& inputs, const std::option
         };
         RunLoader::Options loadOptions;
         loadOptions.skipBadRows = options.skipBadRows;
-        std::optional<RunData> run = RunLoader::load(path, loadOptions, error, warnings, part);
+        Result<RunData> run = RunLoader::load(path, loadOptions, warnings, part);
         if (!run)
-            return std::nullopt;
+            return run.error();
         if (pipeline) {
             // Every topic the pipeline names must be in the input, or nothing would ever complete.
             const Pipeline inInput(run->topics); // matches either spelling, by hash
             for (const QString& topic : pipeline->topics()) {
                 const bool found = inInput.indexOf(topic) >= 0;
-                if (!found && !run->stamps.empty()) {
-                    if (error)
-                        *error = tr("%1: no stamps of topic %2 (it has: %3)")
-                                     .arg(path, topic, run->topics.join(u", "_s));
-                    return std::nullopt;
-                }
+                if (!found && !run->stamps.empty())
+                    return LocatedError {tr("%1: no stamps of topic %2 (it has: %3)")
+                                             .arg(path, topic, run->topics.join(u", "_s))};
             }
         }
         if (run->info.name.isEmpty())
@@ -82,11 +75,7 @@ std::optional<Report> Report::build(const QStringList& inputs, const std::option
     }
     Report report;
     report.m_options = options;
-    const auto cancelled = [&] {
-        if (error)
-            *error = tr("cancelled");
-        return std::nullopt;
-    };
+    const auto cancelled = [] { return LocatedError {tr("cancelled")}; };
     if (options.join && data.size() > 1) {
         RunData joined = RunLoader::join(std::move(data));
         report.m_runs.push_back(compute(std::move(joined), pipeline, options, progress, 90));

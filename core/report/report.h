@@ -42,9 +42,9 @@ public:
     };
 
     /// Reads and computes every input. `warnings` gets skipped rows; `progress` can cancel.
-    static std::optional<Report> build(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
-                                       const Options& options, QString* error = nullptr,
-                                       QStringList* warnings = nullptr, const Progress& progress = {});
+    static Result<Report> build(const QStringList& inputs, const std::optional<Pipeline>& pipeline,
+                                const Options& options, QStringList* warnings = nullptr,
+                                const Progress& progress = {});
     /// A report of runs already in memory (the Reports page's live measurement, tests).
     static Report fromRuns(std::vector<RunData> runs, const std::optional<Pipeline>& pipeline,
                            const Options& options);

@@ -389,16 +389,17 @@ const QList<ReportFormats::Entry>& ReportFormats::formats()
     // translated when first asked, after the translator is installed
     static const QList<Entry> all {
         {Format::Pdf, u"pdf"_s, tr("PDF"), true,
-         [](const Report& r, bool, QString*) { return ReportPdf::render(r); }},
+         [](const Report& r, bool) -> Result<QByteArray> { return ReportPdf::render(r); }},
         {Format::Html, u"html"_s, tr("HTML (tables and SVG figure)"), true,
-         [](const Report& r, bool, QString*) { return html(r); }},
+         [](const Report& r, bool) -> Result<QByteArray> { return html(r); }},
         {Format::Markdown, u"md"_s, tr("Markdown"), false,
-         [](const Report& r, bool, QString*) { return markdown(r); }},
+         [](const Report& r, bool) -> Result<QByteArray> { return markdown(r); }},
         {Format::Latex, u"tex"_s, tr("LaTeX (booktabs tabular)"), false,
-         [](const Report& r, bool, QString*) { return latex(r); }},
+         [](const Report& r, bool) -> Result<QByteArray> { return latex(r); }},
         {Format::Csv, u"csv"_s, tr("CSV"), false,
-         [](const Report& r, bool perSampleMs, QString* error) { return csv(r, perSampleMs, error); }},
-        {Format::Json, u"json"_s, tr("JSON"), false, [](const Report& r, bool, QString*) { return json(r); }},
+         [](const Report& r, bool perSampleMs) { return csv(r, perSampleMs); }},
+        {Format::Json, u"json"_s, tr("JSON"), false,
+         [](const Report& r, bool) -> Result<QByteArray> { return json(r); }},
     };
     return all;
 }
@@ -441,13 +442,11 @@ QByteArray ReportFormats::json(const Report& report)
     return QJsonDocument(QJsonObject {{u"runs"_s, runs}}).toJson(QJsonDocument::Indented);
 }
 
-QByteArray ReportFormats::csv(const Report& report, bool perSampleMs, QString* error)
+Result<QByteArray> ReportFormats::csv(const Report& report, bool perSampleMs)
 {
-    if (report.isComparison()) {
-        if (error)
-            *error = tr("a CSV file holds a single run: give one input, or join several with --join");
-        return {};
-    }
+    if (report.isComparison())
+        return LocatedError {
+            tr("a CSV file holds a single run: give one input, or join several with --join")};
     const ReportRun& run = *report.runs().front();
     const Pipeline& p = run.engine->pipeline();
     if (!perSampleMs)
@@ -608,7 +607,7 @@ QByteArray ReportFormats::html(const Report& report)
     return out.toUtf8();
 }
 
-QByteArray ReportFormats::render(const Report& report, Format format, bool perSampleMs, QString* error)
+Result<QByteArray> ReportFormats::render(const Report& report, Format format, bool perSampleMs)
 {
-    return entry(format).render(report, perSampleMs, error);
+    return entry(format).render(report, perSampleMs);
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QList>
@@ -28,7 +30,7 @@ public:
         QString name;
         QString title;
         bool richPreview = false;
-        QByteArray (*render)(const Report& report, bool perSampleMs, QString* error) = nullptr;
+        Result<QByteArray> (*render)(const Report& report, bool perSampleMs) = nullptr;
     };
     /// Every format, in the order a window offers them (the most wanted first).
     static const QList<Entry>& formats();
@@ -37,14 +39,14 @@ public:
     static QString name(Format format) { return entry(format).name; }
     static QString suffix(Format format) { return name(format); }
 
-    /// The report in `format`; empty with `error` when it has no such form (CSV of several runs).
+    /// The report in `format`; an error when it has no such form (CSV of several runs).
     /// The PDF needs a QGuiApplication. `perSampleMs`: see csv().
-    static QByteArray render(const Report& report, Format format, bool perSampleMs, QString* error = nullptr);
+    static Result<QByteArray> render(const Report& report, Format format, bool perSampleMs);
 
     static QByteArray json(const Report& report);
     /// The suite CSV of a single run (complete samples); with `perSampleMs`, one row per sample
-    /// of stage latencies in ms instead. Empty with `error` for several runs.
-    static QByteArray csv(const Report& report, bool perSampleMs, QString* error = nullptr);
+    /// of stage latencies in ms instead. An error for several runs.
+    static Result<QByteArray> csv(const Report& report, bool perSampleMs);
     static QByteArray markdown(const Report& report);
     static QByteArray latex(const Report& report);
     /// One self-contained file: title block, tables and the ECDF figure as inline SVG. Well-formed

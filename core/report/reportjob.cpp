@@ -23,15 +23,17 @@ void ReportJob::start()
     // The worker writes m_report, m_error and m_warnings; they are read only after it has ended.
     m_worker = QThread::create([this] {
         int last = -1;
-        std::optional<Report> r = Report::build(m_request.inputs, m_request.pipeline, m_request.options,
-                                                &m_error, &m_warnings, [this, &last](int percent) {
-                                                    if (percent != last) {
-                                                        last = percent;
-                                                        emit progress(percent);
-                                                    }
-                                                    return !m_cancel.load();
-                                                });
-        if (r && !m_cancel.load())
+        Result<Report> r = Report::build(m_request.inputs, m_request.pipeline, m_request.options, &m_warnings,
+                                         [this, &last](int percent) {
+                                             if (percent != last) {
+                                                 last = percent;
+                                                 emit progress(percent);
+                                             }
+                                             return !m_cancel.load();
+                                         });
+        if (!r)
+            m_error = r.error().toString();
+        else if (!m_cancel.load())
             m_report = std::make_shared<Report>(std::move(*r));
     });
     m_worker->setParent(this);

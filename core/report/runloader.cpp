@@ -16,7 +16,7 @@ namespace {
 /// Every stamp of a run must be a ROS time and every latency smaller than the span of those, or
 /// the figures overflow (INT64-extreme stamps gave exit 0 and absurd statistics). The first bad
 /// one is named with its place; all are counted.
-bool validate(const RunData& run, const QString& path, QString* error)
+Status validate(const RunData& run, const QString& path)
 {
     qint64 bad = 0;
     QString first;
@@ -51,11 +51,9 @@ bool validate(const RunData& run, const QString& path, QString* error)
         check(l.drainedNs, false, "drained_ns", qsizetype(i), series);
     }
     if (bad == 0)
-        return true;
-    if (error)
-        *error = first
-            + (bad > 1 ? RunLoader::tr(" (and %1 more values out of range)").arg(bad - 1) : QString());
-    return false;
+        return {};
+    return LocatedError {
+        first + (bad > 1 ? RunLoader::tr(" (and %1 more values out of range)").arg(bad - 1) : QString())};
 }
 } // namespace
 
@@ -88,51 +86,35 @@ QString RunLoader::kindName(Kind kind)
     return {};
 }
 
-std::optional<RunData> RunLoader::load(const QString& path, const Options& options, QString* error,
-                                       QStringList* warnings, const Progress& progress)
+Result<RunData> RunLoader::load(const QString& path, const Options& options, QStringList* warnings,
+                                const Progress& progress)
 {
     const Kind kind = kindOf(path);
     qCDebug(lcReport).noquote() << "reading" << path << "as" << kindName(kind);
-    if (kind == Kind::Run) {
-        Result<RunData> run = RunFile::read(path, progress);
-        if (!run) {
-            if (error)
-                *error = run.error().toString();
-            return std::nullopt;
-        }
-        if (!validate(*run, path, error))
-            return std::nullopt;
-        return std::move(run).value();
-    }
-    if (kind == Kind::Bag) {
+    if (kind == Kind::Run || kind == Kind::Bag) {
         // rosbag's library crashes on damaged bags: never in this process.
-        std::optional<RunData> run = BagReaderProcess::read(path, error, progress);
-        if (run && !validate(*run, path, error))
-            return std::nullopt;
+        Result<RunData> run
+            = kind == Kind::Run ? RunFile::read(path, progress) : BagReaderProcess::read(path, progress);
+        if (!run)
+            return run;
+        if (Status valid = validate(*run, path); !valid)
+            return valid.error();
         return run;
     }
     Result<SuiteCsv::Data> csv = SuiteCsv::read(path, progress);
-    if (!csv) {
-        if (error)
-            *error = csv.error().toString();
-        return std::nullopt;
-    }
-    if (csv->malformed > 0 && !options.skipBadRows) {
-        if (error)
-            *error = csv->problems.value(0)
-                + (csv->malformed > 1 ? tr(" (and %1 more rows that cannot be read)").arg(csv->malformed - 1)
-                                      : QString());
-        return std::nullopt;
-    }
+    if (!csv)
+        return csv.error();
+    if (csv->malformed > 0 && !options.skipBadRows)
+        return LocatedError {csv->problems.value(0)
+                             + (csv->malformed > 1
+                                    ? tr(" (and %1 more rows that cannot be read)").arg(csv->malformed - 1)
+                                    : QString())};
     if (warnings)
         *warnings += csv->problems;
-    if (csv->topics.size() < 2) {
-        if (error)
-            *error = tr("%1: a pipeline needs at least two stamp topics, the file has %2")
-                         .arg(path)
-                         .arg(csv->topics.size());
-        return std::nullopt;
-    }
+    if (csv->topics.size() < 2)
+        return LocatedError {tr("%1: a pipeline needs at least two stamp topics, the file has %2")
+                                 .arg(path)
+                                 .arg(csv->topics.size())};
     qint64 shared = 0;
     RunData run = RunData::fromSamples(Pipeline(csv->topics, 0), csv->samples, &shared);
     if (shared && warnings)

@@ -3,7 +3,6 @@
 
 #include "record/runfile.h"
 
-#include <optional>
 #include <QCoreApplication>
 #include <QStringList>
 
@@ -28,8 +27,8 @@ public:
     };
 
     /// The input as a run. `warnings` gets what was skipped ("FILE:LINE: what").
-    static std::optional<RunData> load(const QString& path, const Options& options, QString* error = nullptr,
-                                       QStringList* warnings = nullptr, const Progress& progress = {});
+    static Result<RunData> load(const QString& path, const Options& options, QStringList* warnings = nullptr,
+                                const Progress& progress = {});
     /// Several inputs as one run: their events one after the other (same stamp topics expected).
     static RunData join(std::vector<RunData> runs);
 };

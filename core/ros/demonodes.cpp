@@ -14,12 +14,11 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-template<typename M> int advertiseAs(RosEndpoint& ros, const QString& topic, int queue, QString* error)
+template<typename M> Result<int> advertiseAs(RosEndpoint& ros, const QString& topic, int queue)
 {
     return ros.advertise(topic, QString::fromLatin1(ros::message_traits::DataType<M>::value()),
                          QString::fromLatin1(ros::message_traits::MD5Sum<M>::value()),
-                         QString::fromLatin1(ros::message_traits::Definition<M>::value()), queue, false,
-                         error);
+                         QString::fromLatin1(ros::message_traits::Definition<M>::value()), queue, false);
 }
 
 /// The demo's stamp publisher: TimeStamped for a header, on this host's (offset) clock.
@@ -29,12 +28,15 @@ struct Stamper
     int publisher = -1;
     qint64 offsetNs = 0;
 
-    bool init(const QString& component, QString* error)
+    Status init(const QString& component)
     {
-        publisher = ros.advertise(
-            DemoNodes::stampPrefix() + component, QString::fromLatin1(StampCodec::typeName()),
-            QString::fromLatin1(StampCodec::md5()), StampCodec::definition(), 100, false, error);
-        return publisher >= 0;
+        const Result<int> advertised
+            = ros.advertise(DemoNodes::stampPrefix() + component, QString::fromLatin1(StampCodec::typeName()),
+                            QString::fromLatin1(StampCodec::md5()), StampCodec::definition(), 100, false);
+        if (!advertised)
+            return advertised.error();
+        publisher = *advertised;
+        return {};
     }
     void stamp(const std_msgs::Header& h, qint64 wallNs)
     {
@@ -63,24 +65,28 @@ bool waitUntil(const std::function<bool()>& stop, double seconds)
 }
 } // namespace
 
-bool DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, QString* error)
+Status DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop)
 {
     RosEndpoint ros;
-    if (!ros.start(
-            u"demo_vehicle"_s, o.masterUri, [&stop] { return !stop(); }, error))
-        return false;
+    if (Status started = ros.start(u"demo_vehicle"_s, o.masterUri, [&stop] { return !stop(); }); !started)
+        return started;
     Stamper sent {ros, -1, o.clockOffsetNs};
     Stamper back {ros, -1, o.clockOffsetNs};
-    const int cloudPub = advertiseAs<sensor_msgs::PointCloud2>(ros, u"/vehicle/pointcloud"_s, 10, error);
-    if (cloudPub < 0 || !sent.init(u"pointcloud"_s, error) || !back.init(u"object_list"_s, error))
-        return false;
-    if (!ros.subscribe(
-            u"/vehicle/object_list"_s, 10,
-            [&back](const RosRawMessage& m, qint64 receivedNs) {
-                back.stamp(RosBytes::read<geometry_msgs::PoseArray>(m.bytes).header, receivedNs);
-            },
-            error))
-        return false;
+    const Result<int> cloud = advertiseAs<sensor_msgs::PointCloud2>(ros, u"/vehicle/pointcloud"_s, 10);
+    if (!cloud)
+        return cloud.error();
+    const int cloudPub = *cloud;
+    for (auto [stamper, component] :
+         {std::pair {&sent, u"pointcloud"_s}, std::pair {&back, u"object_list"_s}})
+        if (Status advertised = stamper->init(component); !advertised)
+            return advertised;
+    if (Status subscribed
+        = ros.subscribe(u"/vehicle/object_list"_s, 10,
+                        [&back](const RosRawMessage& m, qint64 receivedNs) {
+                            back.stamp(RosBytes::read<geometry_msgs::PoseArray>(m.bytes).header, receivedNs);
+                        });
+        !subscribed)
+        return subscribed;
 
     // A VelodyneScan-sized cloud: 16-byte points (x, y, z, intensity), one row.
     sensor_msgs::PointCloud2 scan;
@@ -110,7 +116,7 @@ bool DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, 
            && (ros.subscriberCount(cloudPub) == 0 || ros.subscriberCount(sent.publisher) == 0))
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     if (!waitUntil(stop, 0.5)) // the other components' stamp subscriptions settle
-        return true;
+        return {};
 
     const double period = 1.0 / std::max(0.1, o.rateHz);
     auto next = std::chrono::steady_clock::now();
@@ -130,24 +136,28 @@ bool DemoNodes::runVehicle(const Options& o, const std::function<bool()>& stop, 
             break;
     }
     ros.shutdown();
-    return true;
+    return {};
 }
 
-bool DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop, QString* error)
+Status DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop)
 {
     RosEndpoint ros;
-    if (!ros.start(
-            u"demo_object_detection"_s, o.masterUri, [&stop] { return !stop(); }, error))
-        return false;
+    if (Status started = ros.start(u"demo_object_detection"_s, o.masterUri, [&stop] { return !stop(); });
+        !started)
+        return started;
     Stamper in {ros, -1, o.clockOffsetNs};
     Stamper out {ros, -1, o.clockOffsetNs};
-    const int listPub = advertiseAs<geometry_msgs::PoseArray>(ros, u"/cloud/object_list"_s, 10, error);
-    if (listPub < 0 || !in.init(u"object_detection/pointcloud"_s, error)
-        || !out.init(u"object_detection/object_list"_s, error))
-        return false;
+    const Result<int> list = advertiseAs<geometry_msgs::PoseArray>(ros, u"/cloud/object_list"_s, 10);
+    if (!list)
+        return list.error();
+    const int listPub = *list;
+    for (auto [stamper, component] : {std::pair {&in, u"object_detection/pointcloud"_s},
+                                      std::pair {&out, u"object_detection/object_list"_s}})
+        if (Status advertised = stamper->init(component); !advertised)
+            return advertised;
     auto rng = std::make_shared<std::mt19937>(11);
     const double meanMs = o.detectionMs;
-    if (!ros.subscribe(
+    if (Status subscribed = ros.subscribe(
             u"/cloud/pointcloud"_s, 2,
             [&, rng, meanMs](const RosRawMessage& m, qint64 receivedNs) {
                 const sensor_msgs::PointCloud2 scan = RosBytes::read<sensor_msgs::PointCloud2>(m.bytes);
@@ -165,11 +175,11 @@ bool DemoNodes::runCloud(const Options& o, const std::function<bool()>& stop, QS
                 }
                 out.stamp(objects.header, wallClockNs());
                 ros.publish(listPub, RosBytes::of(objects));
-            },
-            error))
-        return false;
+            });
+        !subscribed)
+        return subscribed;
     while (!stop())
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     ros.shutdown();
-    return true;
+    return {};
 }

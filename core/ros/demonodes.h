@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <functional>
 #include <QCoreApplication>
 #include <QString>
@@ -29,10 +31,10 @@ public:
         double detectionMs = 40;
         qint64 clockOffsetNs = 0; ///< this host's clock error
     };
-    /// Runs until `stop` returns true (asked every 50 ms). Returns false with `error` when the
-    /// master is not there or a topic cannot be used.
-    static bool runVehicle(const Options& options, const std::function<bool()>& stop, QString* error);
-    static bool runCloud(const Options& options, const std::function<bool()>& stop, QString* error);
+    /// Runs until `stop` returns true (asked every 50 ms). An error when the master is not there or
+    /// a topic cannot be used.
+    static Status runVehicle(const Options& options, const std::function<bool()>& stop);
+    static Status runCloud(const Options& options, const std::function<bool()>& stop);
 
     static QString stampPrefix() { return QStringLiteral("/benchmarking_suite/timestamps/"); }
 };

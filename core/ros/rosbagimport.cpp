@@ -14,15 +14,11 @@
 
 using namespace Qt::StringLiterals;
 
-std::optional<RunData> RosbagImport::read(const QString& path, QString* error, const Progress& progress)
+Result<RunData> RosbagImport::read(const QString& path, const Progress& progress)
 {
-    const auto fail = [&](const QString& why) -> std::optional<RunData> {
-        if (error)
-            *error = path + u": "_s + why;
-        return std::nullopt;
-    };
+    const auto bagError = [&](const QString& why) { return LocatedError {why, {}, path}; };
     if (const QString why = BagHeader::refusal(path); !why.isEmpty())
-        return fail(why);
+        return bagError(why);
     RunData run;
     try {
         rosbag::Bag bag;
@@ -42,9 +38,9 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
         for (const rosbag::ConnectionInfo* c : view.getConnections())
             anyStamps = anyStamps || c->datatype == StampCodec::typeName();
         if (!anyStamps)
-            return fail(tr("no %1 topics in the bag (it has: %2)")
-                            .arg(QLatin1StringView(StampCodec::typeName()),
-                                 bagTopics.isEmpty() ? tr("nothing") : bagTopics.join(u", "_s)));
+            return bagError(tr("no %1 topics in the bag (it has: %2)")
+                                .arg(QLatin1StringView(StampCodec::typeName()),
+                                     bagTopics.isEmpty() ? tr("nothing") : bagTopics.join(u", "_s)));
         QHash<QString, int> topicIndex;
         QHash<QString, int> seriesIndex;
         PipelineDiscovery discovery;
@@ -93,7 +89,7 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
                 run.latencies.push_back({*it, *v, received, received});
             }
             if (progress && ++n % 10000 == 0 && !progress(int(95 * n / std::max<std::size_t>(total, 1))))
-                return fail(tr("cancelled"));
+                return bagError(tr("cancelled"));
         }
         run.info.pipeline = discovery.propose(0);
         run.info.window = 0;
@@ -106,9 +102,9 @@ std::optional<RunData> RosbagImport::read(const QString& path, QString* error, c
                 = tr("%1 messages of the stamp types did not decode and were skipped.").arg(malformed);
         bag.close();
     } catch (const rosbag::BagException& e) {
-        return fail(tr("cannot read the bag: %1").arg(QString::fromStdString(e.what())));
+        return bagError(tr("cannot read the bag: %1").arg(QString::fromStdString(e.what())));
     } catch (const ros::Exception& e) {
-        return fail(tr("cannot read the bag: %1").arg(QString::fromStdString(e.what())));
+        return bagError(tr("cannot read the bag: %1").arg(QString::fromStdString(e.what())));
     }
     if (progress)
         progress(100);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "latency/rundata.h"
 
 #include <optional>
@@ -15,6 +16,6 @@ class RosbagImport
 {
     Q_DECLARE_TR_FUNCTIONS(RosbagImport)
 public:
-    static std::optional<RunData> read(const QString& path, QString* error = nullptr,
-                                       const Progress& progress = {});
+    /// The bag as a run; the error names the file.
+    static Result<RunData> read(const QString& path, const Progress& progress = {});
 };

@@ -135,8 +135,8 @@ RosEndpoint::~RosEndpoint()
     shutdown();
 }
 
-bool RosEndpoint::start(const QString& name, const QString& masterUri,
-                        const std::function<bool()>& keepWaiting, QString* error)
+Status RosEndpoint::start(const QString& name, const QString& masterUri,
+                          const std::function<bool()>& keepWaiting)
 {
     std::map<std::string, std::string> remappings;
     if (!masterUri.isEmpty())
@@ -146,12 +146,9 @@ bool RosEndpoint::start(const QString& name, const QString& masterUri,
         ros::master::setRetryTimeout(ros::WallDuration(1.0));
         // Not ros::master::check(): it waits without end for a master that does not answer.
         while (!RosReregistration::masterAnswers()) {
-            if (!keepWaiting || !keepWaiting()) {
-                if (error)
-                    *error = tr("no ROS master answers at %1")
-                                 .arg(QString::fromStdString(ros::master::getURI()));
-                return false;
-            }
+            if (!keepWaiting || !keepWaiting())
+                return LocatedError {
+                    tr("no ROS master answers at %1").arg(QString::fromStdString(ros::master::getURI()))};
             std::this_thread::sleep_for(std::chrono::milliseconds(500));
         }
         d->node = std::make_unique<ros::NodeHandle>();
@@ -161,11 +158,9 @@ bool RosEndpoint::start(const QString& name, const QString& masterUri,
         d->watchStop = false;
         d->watch = std::thread([p = d.get()] { p->watchMaster(); });
     } catch (const ros::Exception& e) {
-        if (error)
-            *error = QString::fromStdString(e.what());
-        return false;
+        return LocatedError {QString::fromStdString(e.what())};
     }
-    return true;
+    return {};
 }
 
 void RosEndpoint::shutdown()
@@ -212,10 +207,10 @@ QString RosEndpoint::resolve(const QString& name) const
     }
 }
 
-bool RosEndpoint::subscribe(const QString& topic, int queueSize, Handler handler, QString* error)
+Status RosEndpoint::subscribe(const QString& topic, int queueSize, Handler handler)
 {
     if (!d->node)
-        return false;
+        return LocatedError {};
     // The type's texts are converted once per type, not per message (a definition is kilobytes);
     // roscpp never runs one subscription's callbacks concurrently.
     struct TypeCache
@@ -243,18 +238,16 @@ bool RosEndpoint::subscribe(const QString& topic, int queueSize, Handler handler
         options.transport_hints = ros::TransportHints().tcpNoDelay();
         d->subscribers.push_back(d->node->subscribe(options));
     } catch (const ros::Exception& e) {
-        if (error)
-            *error = QString::fromStdString(e.what());
-        return false;
+        return LocatedError {QString::fromStdString(e.what())};
     }
-    return true;
+    return {};
 }
 
-int RosEndpoint::advertise(const QString& topic, const QString& type, const QString& md5,
-                           const QString& definition, int queueSize, bool latched, QString* error)
+Result<int> RosEndpoint::advertise(const QString& topic, const QString& type, const QString& md5,
+                                   const QString& definition, int queueSize, bool latched)
 {
     if (!d->node)
-        return -1;
+        return LocatedError {};
     Private::Publisher p {{}, type.toStdString(), md5.toStdString(), definition.toStdString(), latched, 0};
     try {
         ros::AdvertiseOptions options(topic.toStdString(), uint32_t(std::max(1, queueSize)), p.md5, p.type,
@@ -262,17 +255,12 @@ int RosEndpoint::advertise(const QString& topic, const QString& type, const QStr
         options.latch = latched;
         p.pub = d->node->advertise(options);
     } catch (const ros::Exception& e) {
-        if (error)
-            *error = QString::fromStdString(e.what());
-        return -1;
+        return LocatedError {QString::fromStdString(e.what())};
     }
     // roscpp answers a second advertisement of a topic with another type by an invalid publisher
     // (and a log line); publishing on it aborts a Debug build.
-    if (!p.pub) {
-        if (error)
-            *error = tr("this node already publishes %1 with another type").arg(topic);
-        return -1;
-    }
+    if (!p.pub)
+        return LocatedError {tr("this node already publishes %1 with another type").arg(topic)};
     std::lock_guard<std::mutex> lock(d->mutex);
     if (!d->freeIds.empty()) {
         const int id = d->freeIds.back();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <functional>
 #include <memory>
 #include <QByteArray>
@@ -36,8 +38,7 @@ public:
 
     /// Starts the node `name` (no SIGINT handler: the caller stops) once `masterUri` answers;
     /// `keepWaiting` is asked every half second while the master is not there.
-    bool start(const QString& name, const QString& masterUri, const std::function<bool()>& keepWaiting,
-               QString* error);
+    Status start(const QString& name, const QString& masterUri, const std::function<bool()>& keepWaiting);
     void shutdown();
     /// Gets a line when the node registers again with a restarted master (on a thread of its own).
     void setNoticeHandler(std::function<void(const QString& line)> notice);
@@ -46,11 +47,13 @@ public:
     /// `name` resolved as roscpp does ("~/x" is private to the node, "//" collapses).
     QString resolve(const QString& name) const;
 
-    bool subscribe(const QString& topic, int queueSize, Handler handler, QString* error);
-    /// Advertises `topic` with the given type; returns a publisher id, or -1 with `error` (also when
-    /// roscpp refuses it: a topic this node already publishes with another type).
-    int advertise(const QString& topic, const QString& type, const QString& md5, const QString& definition,
-                  int queueSize, bool latched, QString* error);
+    /// An error without text when the node has not started.
+    Status subscribe(const QString& topic, int queueSize, Handler handler);
+    /// Advertises `topic` with the given type; returns a publisher id, or an error (also when roscpp
+    /// refuses it: a topic this node already publishes with another type; without text when the
+    /// node has not started).
+    Result<int> advertise(const QString& topic, const QString& type, const QString& md5,
+                          const QString& definition, int queueSize, bool latched);
     /// Stops publishing with `publisher` (its topic can then be advertised with another type); the id
     /// is invalid afterwards and may be handed out again.
     void retire(int publisher);

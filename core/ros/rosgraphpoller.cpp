@@ -18,12 +18,10 @@ public:
     {
         const QString current = uri;
         RosMasterApi api(current);
-        QString error;
-        const std::optional<TopicGraph> graph = api.graph(timeoutMs, &error);
-        std::optional<qint64> pid;
-        if (graph)
-            pid = api.pid(timeoutMs, &error);
-        emit result(graph && pid, graph.value_or(TopicGraph()), pid.value_or(-1), error, current);
+        const Result<TopicGraph> graph = api.graph(timeoutMs);
+        const Result<qint64> pid = graph ? api.pid(timeoutMs) : Result<qint64>(graph.error());
+        emit result(graph && pid, graph.valueOr(TopicGraph()), pid.valueOr(-1), pid.error().toString(),
+                    current);
     }
 
 signals:

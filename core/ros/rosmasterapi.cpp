@@ -137,7 +137,7 @@ QByteArray RosMasterApi::encodeCall(const QString& method, const QVariantList& p
     return out.toUtf8();
 }
 
-std::optional<QVariant> RosMasterApi::decodeResponse(const QByteArray& body, QString* error)
+Result<QVariant> RosMasterApi::decodeResponse(const QByteArray& body)
 {
     QXmlStreamReader xml(body);
     try {
@@ -152,56 +152,42 @@ std::optional<QVariant> RosMasterApi::decodeResponse(const QByteArray& body, QSt
                 const QVariant v = parseValue(xml);
                 if (fault) {
                     const QVariantMap m = v.toMap();
-                    if (error)
-                        *error = tr("XML-RPC fault %1: %2")
-                                     .arg(m.value(u"faultCode"_s).toString(),
-                                          m.value(u"faultString"_s).toString());
-                    return std::nullopt;
+                    return LocatedError {
+                        tr("XML-RPC fault %1: %2")
+                            .arg(m.value(u"faultCode"_s).toString(), m.value(u"faultString"_s).toString())};
                 }
                 return v;
             }
         }
-        if (error)
-            *error = xml.hasError() ? tr("malformed XML-RPC response: %1").arg(xml.errorString())
-                                    : tr("the XML-RPC response holds no value");
+        return LocatedError {xml.hasError() ? tr("malformed XML-RPC response: %1").arg(xml.errorString())
+                                            : tr("the XML-RPC response holds no value")};
     } catch (const XmlError& e) {
-        if (error)
-            *error = tr("malformed XML-RPC response: %1").arg(e.message);
+        return LocatedError {tr("malformed XML-RPC response: %1").arg(e.message)};
     }
-    return std::nullopt;
 }
 
-std::optional<QVariant> RosMasterApi::call(const QString& method, const QVariantList& params, int timeoutMs,
-                                           QString* error) const
+Result<QVariant> RosMasterApi::call(const QString& method, const QVariantList& params, int timeoutMs) const
 {
-    const std::optional<QVariantList> triple = answer(method, params, timeoutMs, error);
+    const Result<QVariantList> triple = answer(method, params, timeoutMs);
     if (!triple)
-        return std::nullopt;
-    if ((*triple)[0].toInt() != 1) {
-        if (error)
-            *error = tr("the ROS master refused %1: %2").arg(method, (*triple)[1].toString());
-        return std::nullopt;
-    }
+        return triple.error();
+    if ((*triple)[0].toInt() != 1)
+        return LocatedError {tr("the ROS master refused %1: %2").arg(method, (*triple)[1].toString())};
     return (*triple)[2];
 }
 
-std::optional<QVariantList> RosMasterApi::answer(const QString& method, const QVariantList& params,
-                                                 int timeoutMs, QString* error) const
+Result<QVariantList> RosMasterApi::answer(const QString& method, const QVariantList& params,
+                                          int timeoutMs) const
 {
-    auto fail = [error](const QString& why) -> std::optional<QVariantList> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
     const QUrl url(m_uri);
     if (!url.isValid() || url.host().isEmpty())
-        return fail(tr("'%1' is not a ROS master URI (http://host:11311)").arg(m_uri));
+        return LocatedError {tr("'%1' is not a ROS master URI (http://host:11311)").arg(m_uri)};
     const QDeadlineTimer deadline(timeoutMs);
     QTcpSocket socket;
     socket.setReadBufferSize(1 << 20); // what the socket takes from the kernel before we read it
     socket.connectToHost(url.host(), quint16(url.port(11311)));
     if (!socket.waitForConnected(int(deadline.remainingTime())))
-        return fail(tr("no ROS master at %1: %2").arg(m_uri, socket.errorString()));
+        return LocatedError {tr("no ROS master at %1: %2").arg(m_uri, socket.errorString())};
     const QByteArray body = encodeCall(method, params);
     const QByteArray path = url.path().isEmpty() ? QByteArray("/") : url.path().toUtf8();
     QByteArray request = "POST " + path + " HTTP/1.0\r\nUser-Agent: bridgescope\r\nHost: "
@@ -227,40 +213,41 @@ std::optional<QVariantList> RosMasterApi::answer(const QString& method, const QV
         if (socket.state() != QAbstractSocket::ConnectedState && socket.bytesAvailable() == 0)
             break;
         if (deadline.hasExpired())
-            return fail(tr("the ROS master at %1 did not answer within %2 ms").arg(m_uri).arg(timeoutMs));
+            return LocatedError {
+                tr("the ROS master at %1 did not answer within %2 ms").arg(m_uri).arg(timeoutMs)};
         if (!socket.waitForReadyRead(int(std::max<qint64>(1, deadline.remainingTime())))
             && socket.state() == QAbstractSocket::ConnectedState && deadline.hasExpired())
-            return fail(tr("the ROS master at %1 did not answer within %2 ms").arg(m_uri).arg(timeoutMs));
+            return LocatedError {
+                tr("the ROS master at %1 did not answer within %2 ms").arg(m_uri).arg(timeoutMs)};
         response += socket.read(kMaxAnswerBytes + 1 - response.size());
         if (response.size() > kMaxAnswerBytes)
-            return fail(
-                tr("the ROS master at %1 sent more than %2 MiB").arg(m_uri).arg(kMaxAnswerBytes >> 20));
+            return LocatedError {
+                tr("the ROS master at %1 sent more than %2 MiB").arg(m_uri).arg(kMaxAnswerBytes >> 20)};
     }
     if (headerEnd < 0 || !response.startsWith("HTTP/1."))
-        return fail(tr("the ROS master at %1 sent no HTTP response").arg(m_uri));
+        return LocatedError {tr("the ROS master at %1 sent no HTTP response").arg(m_uri)};
     const QByteArray status = response.left(response.indexOf('\r'));
     if (!status.contains(" 200"))
-        return fail(tr("the ROS master at %1 answered %2").arg(m_uri, QString::fromLatin1(status)));
-    QString why;
-    const std::optional<QVariant> value = decodeResponse(response.mid(headerEnd + 4), &why);
+        return LocatedError {tr("the ROS master at %1 answered %2").arg(m_uri, QString::fromLatin1(status))};
+    const Result<QVariant> value = decodeResponse(response.mid(headerEnd + 4));
     if (!value)
-        return fail(why);
+        return value.error();
     const QVariantList triple = value->toList();
     if (triple.size() != 3)
-        return fail(tr("the ROS master's answer to %1 is not [code, status, value]").arg(method));
+        return LocatedError {tr("the ROS master's answer to %1 is not [code, status, value]").arg(method)};
     return triple;
 }
 
-std::optional<TopicGraph> RosMasterApi::graph(int timeoutMs, QString* error) const
+Result<TopicGraph> RosMasterApi::graph(int timeoutMs) const
 {
     const QDeadlineTimer deadline(timeoutMs);
-    const std::optional<QVariant> state = call(u"getSystemState"_s, {m_callerId}, timeoutMs, error);
+    const Result<QVariant> state = call(u"getSystemState"_s, {m_callerId}, timeoutMs);
     if (!state)
-        return std::nullopt;
-    const std::optional<QVariant> types
-        = call(u"getTopicTypes"_s, {m_callerId}, int(std::max<qint64>(1, deadline.remainingTime())), error);
+        return state.error();
+    const Result<QVariant> types
+        = call(u"getTopicTypes"_s, {m_callerId}, int(std::max<qint64>(1, deadline.remainingTime())));
     if (!types)
-        return std::nullopt;
+        return types.error();
     QHash<QString, TopicInfo> topics;
     QSet<QString> nodes;
     const QVariantList lists = state->toList();
@@ -302,10 +289,10 @@ std::optional<TopicGraph> RosMasterApi::graph(int timeoutMs, QString* error) con
     return g;
 }
 
-std::optional<qint64> RosMasterApi::pid(int timeoutMs, QString* error) const
+Result<qint64> RosMasterApi::pid(int timeoutMs) const
 {
-    const std::optional<QVariant> v = call(u"getPid"_s, {m_callerId}, timeoutMs, error);
+    const Result<QVariant> v = call(u"getPid"_s, {m_callerId}, timeoutMs);
     if (!v)
-        return std::nullopt;
+        return v.error();
     return v->toLongLong();
 }

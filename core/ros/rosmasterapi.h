@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "topics/topicgraph.h"
 
 #include <optional>
@@ -23,21 +24,19 @@ public:
     explicit RosMasterApi(const QString& masterUri, const QString& callerId = QStringLiteral("/bridgescope"));
 
     /// Calls `method` and returns the master's value (the third element of [code, status, value]).
-    std::optional<QVariant> call(const QString& method, const QVariantList& params, int timeoutMs,
-                                 QString* error = nullptr) const;
+    Result<QVariant> call(const QString& method, const QVariantList& params, int timeoutMs) const;
     /// Calls `method` and returns the whole answer [code, status, value], a refusal (code != 1)
-    /// included; nullopt when no answer came within `timeoutMs` or it was not one.
-    std::optional<QVariantList> answer(const QString& method, const QVariantList& params, int timeoutMs,
-                                       QString* error = nullptr) const;
+    /// included; an error when no answer came within `timeoutMs` or it was not one.
+    Result<QVariantList> answer(const QString& method, const QVariantList& params, int timeoutMs) const;
     /// The most an answer may hold: a bigger one (a hostile server that never stops sending) is
     /// an error, not memory. A master's getSystemState of 100,000 topics is about 20 MiB.
     static constexpr qsizetype kMaxAnswerBytes = 256 * 1024 * 1024;
-    std::optional<TopicGraph> graph(int timeoutMs, QString* error = nullptr) const;
-    std::optional<qint64> pid(int timeoutMs, QString* error = nullptr) const;
+    Result<TopicGraph> graph(int timeoutMs) const;
+    Result<qint64> pid(int timeoutMs) const;
 
     /// An XML-RPC request body; a response body parsed into QVariant (arrays become QVariantList).
     static QByteArray encodeCall(const QString& method, const QVariantList& params);
-    static std::optional<QVariant> decodeResponse(const QByteArray& body, QString* error);
+    static Result<QVariant> decodeResponse(const QByteArray& body);
     /// http://host:port/ from ROS_MASTER_URI (default http://localhost:11311/).
     static QString defaultMasterUri();
 

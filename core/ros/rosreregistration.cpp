@@ -23,10 +23,10 @@ bool callSelf(const QString& method, const QVariantList& params, QVariant* paylo
 {
     const RosMasterApi self(QString::fromStdString(ros::XMLRPCManager::instance()->getServerURI()),
                             QString::fromStdString(ros::this_node::getName()));
-    const std::optional<QVariant> value = self.call(method, params, kCallMs);
+    const Result<QVariant> value = self.call(method, params, kCallMs);
     if (value && payload)
         *payload = *value;
-    return value.has_value();
+    return value.ok();
 }
 
 /// [[topic, type], ...] from getPublications / getSubscriptions.
@@ -52,7 +52,7 @@ Answer askMaster(const QString& method, const QVariantList& params, QVariant* pa
 {
     const RosMasterApi master(QString::fromStdString(ros::master::getURI()),
                               QString::fromStdString(ros::this_node::getName()));
-    const std::optional<QVariantList> answer = master.answer(method, params, kCallMs);
+    const Result<QVariantList> answer = master.answer(method, params, kCallMs);
     if (!answer)
         return Answer::Unreachable;
     if ((*answer)[0].toInt() != 1)

@@ -50,19 +50,14 @@ bool hasSentSomething(QTcpSocket* socket)
 }
 } // namespace
 
-bool MetricsServer::parseHostPort(const QString& hostPort, QHostAddress* address, quint16* port,
-                                  QString* error)
+Result<MetricsServer::Endpoint> MetricsServer::parseHostPort(const QString& hostPort)
 {
     const qsizetype colon = hostPort.lastIndexOf(u':');
-    const auto fail = [&] {
-        if (error)
-            *error = tr("'%1' is not HOST:PORT (for example 127.0.0.1:9464, [::1]:9464, or :9464 for every "
-                        "interface)")
-                         .arg(hostPort);
-        return false;
-    };
+    const LocatedError notHostPort {
+        tr("'%1' is not HOST:PORT (for example 127.0.0.1:9464, [::1]:9464, or :9464 for every interface)")
+            .arg(hostPort)};
     if (colon < 0)
-        return fail();
+        return notHostPort;
     QString host = hostPort.left(colon);
     const QString portText = hostPort.mid(colon + 1);
     // Digits only: toUInt() takes " 80" and "+80" as well.
@@ -71,7 +66,7 @@ bool MetricsServer::parseHostPort(const QString& hostPort, QHostAddress* address
     bool ok = false;
     const uint p = portText.toUInt(&ok);
     if (!digits || !ok || p > 65535)
-        return fail();
+        return notHostPort;
     if (host.startsWith(u'[') && host.endsWith(u']'))
         host = host.mid(1, host.size() - 2);
     QHostAddress a;
@@ -80,18 +75,17 @@ bool MetricsServer::parseHostPort(const QString& hostPort, QHostAddress* address
     else if (host.compare(u"localhost"_s, Qt::CaseInsensitive) == 0)
         a = QHostAddress::LocalHost;
     else if (!a.setAddress(host))
-        return fail();
-    *address = a;
-    *port = quint16(p);
-    return true;
+        return notHostPort;
+    return Endpoint {a, quint16(p)};
 }
 
-std::unique_ptr<MetricsServer> MetricsServer::listen(const QString& hostPort, QString* error)
+Result<std::unique_ptr<MetricsServer>> MetricsServer::listen(const QString& hostPort)
 {
-    QHostAddress address;
-    quint16 port = 0;
-    if (!parseHostPort(hostPort, &address, &port, error))
-        return nullptr;
+    const Result<Endpoint> endpoint = parseHostPort(hostPort);
+    if (!endpoint)
+        return endpoint.error();
+    const QHostAddress address = endpoint->address;
+    const quint16 port = endpoint->port;
     std::unique_ptr<MetricsServer> s(new MetricsServer);
     s->m_thread = std::make_unique<QThread>();
     s->m_thread->setObjectName(u"metrics http"_s);
@@ -114,11 +108,8 @@ std::unique_ptr<MetricsServer> MetricsServer::listen(const QString& hostPort, QS
                              [self] { self->accept(); });
         },
         Qt::BlockingQueuedConnection);
-    if (!why.isEmpty()) {
-        if (error)
-            *error = tr("cannot serve metrics on %1: %2").arg(hostPort, why);
-        return nullptr; // the destructor stops the thread
-    }
+    if (!why.isEmpty()) // the destructor stops the thread
+        return LocatedError {tr("cannot serve metrics on %1: %2").arg(hostPort, why)};
     return s;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "watch/metricsexposition.h"
 
 #include <atomic>
@@ -41,8 +42,8 @@ public:
     static constexpr qsizetype kMaxQueuedBytes = 64 * 1024 * 1024;
 
     /// Listens on `hostPort` ("127.0.0.1:9464", "[::1]:0" for a free port, "localhost:9464",
-    /// ":9464" for every interface); nullptr with `error` when it cannot.
-    static std::unique_ptr<MetricsServer> listen(const QString& hostPort, QString* error);
+    /// ":9464" for every interface); an error when it cannot.
+    static Result<std::unique_ptr<MetricsServer>> listen(const QString& hostPort);
     ~MetricsServer();
 
     quint16 port() const { return m_port; }
@@ -54,8 +55,14 @@ public:
     /// Clients closed to make room for a newcomer or to keep within kMaxQueuedBytes.
     quint64 dropped() const { return m_dropped.load(); }
 
-    /// Splits "host:port" / "[v6]:port"; false with `error` when it is not one.
-    static bool parseHostPort(const QString& hostPort, QHostAddress* address, quint16* port, QString* error);
+    /// Where to listen: the address and the port of a "host:port".
+    struct Endpoint
+    {
+        QHostAddress address;
+        quint16 port = 0;
+    };
+    /// Splits "host:port" / "[v6]:port"; an error when it is not one.
+    static Result<Endpoint> parseHostPort(const QString& hostPort);
 
 private:
     MetricsServer() = default;

@@ -33,19 +33,20 @@ WatchMetrics::WatchMetrics()
 
 WatchMetrics::~WatchMetrics() = default;
 
-bool WatchMetrics::checkAddress(const QString& hostPort, QString* error)
+Status WatchMetrics::checkAddress(const QString& hostPort)
 {
-    QHostAddress address;
-    quint16 port = 0;
-    return MetricsServer::parseHostPort(hostPort, &address, &port, error);
+    if (const Result<MetricsServer::Endpoint> endpoint = MetricsServer::parseHostPort(hostPort); !endpoint)
+        return endpoint.error();
+    return {};
 }
 
-std::unique_ptr<WatchMetrics> WatchMetrics::serve(const QString& hostPort, QString* error)
+Result<std::unique_ptr<WatchMetrics>> WatchMetrics::serve(const QString& hostPort)
 {
+    Result<std::unique_ptr<MetricsServer>> server = MetricsServer::listen(hostPort);
+    if (!server)
+        return server.error();
     std::unique_ptr<WatchMetrics> m(new WatchMetrics);
-    m->d->server = MetricsServer::listen(hostPort, error);
-    if (!m->d->server)
-        return nullptr;
+    m->d->server = std::move(server).value();
     m->d->server->publish(std::make_shared<MetricsSnapshot>());
     return m;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <memory>
 #include <QCoreApplication>
 #include <QString>
@@ -21,11 +23,11 @@ class WatchMetrics
 {
     Q_DECLARE_TR_FUNCTIONS(WatchMetrics)
 public:
-    /// Listens on `hostPort` ("127.0.0.1:9464", "[::1]:0" for any free port); nullptr with `error`.
-    static std::unique_ptr<WatchMetrics> serve(const QString& hostPort, QString* error);
+    /// Listens on `hostPort` ("127.0.0.1:9464", "[::1]:0" for any free port).
+    static Result<std::unique_ptr<WatchMetrics>> serve(const QString& hostPort);
     /// Whether `hostPort` is a HOST:PORT serve() can try (port 0 to 65535, the host an address);
-    /// false with `error` saying what it should look like.
-    static bool checkAddress(const QString& hostPort, QString* error);
+    /// an error saying what it should look like.
+    static Status checkAddress(const QString& hostPort);
     ~WatchMetrics();
     /// The port it listens on.
     int port() const;

@@ -67,21 +67,19 @@ void WatchSession::setConfigs(const QList<std::pair<QString, BridgeConfig>>& con
     QList<Config> named;
     for (const auto& [name, config] : configs)
         named.append({name, QString(), config});
-    setConfigs(named);
+    static_cast<void>(setConfigs(named)); // beyond the link limit nothing changes, as before
 }
 
-bool WatchSession::setConfigs(const QList<Config>& configs, QString* error)
+Status WatchSession::setConfigs(const QList<Config>& configs)
 {
     QList<LinkDef> links;
     for (const Config& c : configs)
         links << LinkDef::fromConfig(c.config, c.name, c.file);
-    if (m_linkLimit > 0 && links.size() > m_linkLimit) {
-        if (error)
-            *error = tr("%1 links would be watched; the limit is %2 links per window: nothing was subscribed")
-                         .arg(links.size())
-                         .arg(m_linkLimit);
-        return false;
-    }
+    if (m_linkLimit > 0 && links.size() > m_linkLimit)
+        return LocatedError {
+            tr("%1 links would be watched; the limit is %2 links per window: nothing was subscribed")
+                .arg(links.size())
+                .arg(m_linkLimit)};
     m_configLinks = links;
     m_configMqttTopics.clear();
     for (const LinkDef& l : std::as_const(m_configLinks))
@@ -91,7 +89,7 @@ bool WatchSession::setConfigs(const QList<Config>& configs, QString* error)
     applyLinks();
     qCDebug(lcWatch) << "watching" << m_monitor->linkCount() << "links of" << configs.size() << "configs,"
                      << m_discovered.size() << "discovered";
-    return true;
+    return {};
 }
 
 WatchSession::Plan WatchSession::planOf(const Config& config) const

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "session/livesources.h"
 #include "watch/linkmonitor.h"
 
@@ -70,8 +71,8 @@ public:
     /// Watches the links of these configs (name, config), replacing what was watched.
     void setConfigs(const QList<std::pair<QString, BridgeConfig>>& configs);
     /// Watches the links of these configs, replacing what was watched; beyond the link limit nothing
-    /// changes and false comes back with `error` (the count and the limit).
-    bool setConfigs(const QList<Config>& configs, QString* error = nullptr);
+    /// changes and the error says so (the count and the limit).
+    Status setConfigs(const QList<Config>& configs);
     /// The links watched at most (0: no limit, the default; a window sets kWindowLinkLimit).
     void setLinkLimit(int links) { m_linkLimit = links; }
     int linkLimit() const { return m_linkLimit; }

@@ -41,7 +41,7 @@ int addFolder(RosTypeRegistry& registry, const QString& folder, QStringList* err
                                    .arg(kMaxFiles));
             break;
         }
-        const std::optional<QByteArray> text = RegularFile::read(path, kMaxFileBytes);
+        const Result<QByteArray> text = RegularFile::read(path, kMaxFileBytes);
         if (!text) {
             if (errors)
                 errors->append(

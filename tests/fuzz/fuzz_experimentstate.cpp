@@ -18,10 +18,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         FUZZ_CHECK(p && p->cells.size() == 4, "the fuzz target's own plan does not read");
         return *p;
     }();
-    QString error;
-    const std::optional<QList<CellStatus>> statuses = ExperimentState::parse(fuzz::bytes(data, size), plan, &error);
+    const Result<QList<CellStatus>> statuses = ExperimentState::parse(fuzz::bytes(data, size), plan);
     if (!statuses) {
-        FUZZ_CHECK(!error.isEmpty(), "a state file rejected without a message");
+        FUZZ_CHECK(!statuses.error().toString().isEmpty(), "a state file rejected without a message");
         return 0;
     }
     FUZZ_CHECK(statuses->size() == plan.cells.size(), "not one status per cell of the plan");

@@ -124,7 +124,7 @@ private slots:
         QVERIFY2(planStatus(page)->text().contains(u"Not a plan"_s), qPrintable(planStatus(page)->text()));
         QVERIFY(!runButton(page)->isEnabled());
         QString error;
-        QVERIFY(!page.run(false, &error));
+        QVERIFY(!noted(page.run(false), &error));
 
         page.setPlanText(u"name: grid\nsamples: 10\nfactors:\n  qos: [0, 1]\n  payload: [1000, 50%]\n"_s);
         QVERIFY2(planStatus(page)->text().contains(u"4 cell"_s), qPrintable(planStatus(page)->text()));
@@ -144,7 +144,7 @@ private slots:
         QVERIFY(runButton(page)->isEnabled());
         QVERIFY(!resumeButton(page)->isEnabled()); // no folder with an experiment
         // Without a folder it says so instead of running somewhere.
-        QVERIFY(!page.run(false, &error));
+        QVERIFY(!noted(page.run(false), &error));
         QVERIFY2(error.contains(u"folder"_s), qPrintable(error));
     }
 
@@ -177,7 +177,7 @@ private slots:
         page.setFolder(out);
         QSignalSpy finished(&page, &ExperimentPage::experimentFinished);
         QString error;
-        QVERIFY2(page.run(false, &error), qPrintable(error));
+        QVERIFY2(noted(page.run(false), &error), qPrintable(error));
         QVERIFY(page.isRunning());
         QVERIFY(!runButton(page)->isEnabled());
         QVERIFY(named<QPushButton>(page, u"stopButton"_s)->isEnabled());
@@ -227,25 +227,26 @@ private slots:
 
         // The report in every format; Markdown with its figure beside it.
         for (const QString& name : {u"r.md"_s, u"r.pdf"_s, u"r.html"_s, u"r.tex"_s, u"r.csv"_s, u"r.json"_s})
-            QVERIFY2(page.exportReport(m_dir.filePath(name), &error), qPrintable(name + u": "_s + error));
+            QVERIFY2(noted(page.exportReport(m_dir.filePath(name)), &error),
+                     qPrintable(name + u": "_s + error));
         checkExports();
         if (QTest::currentTestFailed())
             return;
-        QVERIFY(!page.exportReport(m_dir.filePath(u"r.doc"_s), &error));
+        QVERIFY(!noted(page.exportReport(m_dir.filePath(u"r.doc"_s)), &error));
 
         // Run again into the same folder is refused; Resume finds nothing left to do.
-        QVERIFY(!page.run(false, &error));
+        QVERIFY(!noted(page.run(false), &error));
         QVERIFY2(error.contains(u"Resume"_s), qPrintable(error));
         QVERIFY(resumeButton(page)->isEnabled());
         finished.clear();
-        QVERIFY2(page.run(true, &error), qPrintable(error));
+        QVERIFY2(noted(page.run(true), &error), qPrintable(error));
         QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
         QCOMPARE(finished.first().first().toInt(), 0);
         QCOMPARE(stateOf(page, 0), u"complete"_s);
 
         // Opening the folder afresh shows the same cells and states.
         ExperimentPage other;
-        QVERIFY2(other.openFolder(out, &error), qPrintable(error));
+        QVERIFY2(noted(other.openFolder(out), &error), qPrintable(error));
         QCOMPARE(cellGrid(other)->rowCount(), 2);
         QCOMPARE(stateOf(other, 1), u"complete"_s);
         QVERIFY(QTest::qWaitFor([&] { return other.liveSeries()->find(u"qos 1"_s) != nullptr; }, 30000));
@@ -281,7 +282,7 @@ private slots:
         page.setFolder(m_dir.filePath(u"hostile"_s));
         QSignalSpy finished(&page, &ExperimentPage::experimentFinished);
         QString error;
-        QVERIFY2(page.run(false, &error), qPrintable(error));
+        QVERIFY2(noted(page.run(false), &error), qPrintable(error));
         QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, 30000));
         QCOMPARE(finished.first().first().toInt(), 0);
         QCOMPARE(stateOf(page, 0), u"complete"_s);
@@ -306,7 +307,7 @@ private slots:
         page.setFolder(out);
         QSignalSpy finished(&page, &ExperimentPage::experimentFinished);
         QString error;
-        QVERIFY2(page.run(false, &error), qPrintable(error));
+        QVERIFY2(noted(page.run(false), &error), qPrintable(error));
         QVERIFY(QTest::qWaitFor(
             [&] {
                 const LatencySeries* s = page.liveSeries()->find(u"qos 0"_s);
@@ -329,7 +330,7 @@ private slots:
         QString why;
         const auto plan = noted(ExperimentPlan::readFile(QDir(out).filePath(u"plan.yaml"_s)), &why);
         QVERIFY2(plan, qPrintable(why));
-        const auto state = ExperimentFolder(out).readState(*plan, &why);
+        const auto state = noted(ExperimentFolder(out).readState(*plan), &why);
         QVERIFY2(state, qPrintable(why));
         QCOMPARE(state->first().state, CellStatus::Pending);
     }

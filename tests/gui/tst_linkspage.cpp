@@ -78,7 +78,7 @@ struct MasterTopics
 MasterTopics masterTopics(const QString& masterUri, const QString& prefix)
 {
     MasterTopics out;
-    const std::optional<TopicGraph> graph = RosMasterApi(masterUri).graph(3000);
+    const Result<TopicGraph> graph = RosMasterApi(masterUri).graph(3000);
     if (!graph)
         return out;
     for (const TopicInfo& t : graph->topics) {
@@ -254,7 +254,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 10000);
         QVERIFY2(plan->text().contains(u"That is more than the 2000 links a window watches."_s),
                  qPrintable(plan->text()));
-        QVERIFY(!page->setWatched(u"big"_s, true, &error));
+        QVERIFY(!noted(page->setWatched(u"big"_s, true), &error));
         QCOMPARE(error,
                  u"Watching big refused: 2001 links would be watched; the limit is 2000 links per "
                  u"window: nothing was subscribed"_s);
@@ -275,7 +275,7 @@ private slots:
         options.program = QStringLiteral(BRIDGESCOPE_BINARY);
         options.payloadBytes = 20000; // a lighter point cloud: the page, not the lab, is tested
         QString error;
-        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(options), &error), qPrintable(error));
 
         MainWindow window;
         window.discoverPage()->setRosMasterUri(lab.rosMasterUri());
@@ -283,10 +283,10 @@ private slots:
         window.files()->openFile(lab.vehicleConfigPath());
         LinksPage* page = window.linksPage();
         QLabel* summary = named<QLabel>(*page, u"linkSummary"_s);
-        QVERIFY2(page->addConfigFiles({lab.cloudConfigPath()}, &error, true), qPrintable(error));
+        QVERIFY2(noted(page->addConfigFiles({lab.cloudConfigPath()}, true), &error), qPrintable(error));
         // The Map page's config is listed a second after it opened, and watched once checked.
         QTRY_VERIFY_WITH_TIMEOUT(page->setWatched(lab.vehicleConfigPath(), true), 10000);
-        QVERIFY(!page->addConfigFiles({lab.directory() + u"/mosquitto.conf"_s}, &error));
+        QVERIFY(!noted(page->addConfigFiles({lab.directory() + u"/mosquitto.conf"_s}), &error));
         QVERIFY(error.contains(u"mosquitto.conf"_s));
         // The Measure page's pipeline: every mapping with a timestamp_topic_prefix gets the
         // latency across its bridge from the stamps at PREFIX/in and PREFIX/out.

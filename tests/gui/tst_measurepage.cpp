@@ -6,6 +6,7 @@
 #include "latency/latencystatsmodel.h"
 #include "latency/pipelinemodel.h"
 #include "latency/stamptopicmodel.h"
+#include "resulttext.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
@@ -129,7 +130,7 @@ private slots:
         const QString file = writePaperPipeline(u"pipeline.yaml"_s, {}, &topics);
         QVERIFY(!file.isEmpty());
         QString error;
-        QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
+        QVERIFY2(noted(page->loadPipeline(file), &error), qPrintable(error));
         QCOMPARE(named<PipelineModel>(*page, u"pipelineModel"_s)->rowCount(), 12);
         QCOMPARE(named<QSpinBox>(*page, u"windowBox"_s)->value(), 600);
         QVERIFY(named<QLabel>(*page, u"modeLabel"_s)->text().contains(u"pipeline.yaml"_s));
@@ -234,7 +235,7 @@ private slots:
         const QString file = writePaperPipeline(u"one-clock.yaml"_s, "one_clock: true\n", &topics);
         QVERIFY(!file.isEmpty());
         QString error;
-        QVERIFY2(page->loadPipeline(file, &error), qPrintable(error));
+        QVERIFY2(noted(page->loadPipeline(file), &error), qPrintable(error));
         QLabel* warning = named<QLabel>(*page, u"measureWarning"_s);
         QVERIFY(!warning->isVisible());
         auto pub = publish(paperStamps(topics, 35'000), 100, 11);
@@ -341,7 +342,7 @@ private slots:
         // Save and load the pipeline as a file the suite can read too.
         QTemporaryDir dir;
         QString error;
-        QVERIFY2(page->savePipeline(dir.filePath(u"p.yaml"_s), &error), qPrintable(error));
+        QVERIFY2(noted(page->savePipeline(dir.filePath(u"p.yaml"_s)), &error), qPrintable(error));
         const Result<Pipeline> back = Pipeline::readFile(dir.filePath(u"p.yaml"_s));
         QVERIFY(back);
         QCOMPARE(back->topics(), w.measure()->pipeline().topics());

@@ -92,7 +92,7 @@ private:
             return false;
         f.close();
         QString error;
-        const bool loaded = w.measurePage()->loadPipeline(f.fileName(), &error);
+        const bool loaded = noted(w.measurePage()->loadPipeline(f.fileName()), &error);
         if (!loaded)
             qWarning("%s", qPrintable(error));
         return loaded;
@@ -176,7 +176,7 @@ private slots:
         QVERIFY(named<QSpinBox>(*page, u"windowBox"_s)->isEnabled());
 
         // Opened again, the Measure page shows it as it was; live stamps wait.
-        QVERIFY2(bar->openRun(path, &error), qPrintable(error));
+        QVERIFY2(noted(bar->openRun(path), &error), qPrintable(error));
         QVERIFY(w.measure()->isShowingRun());
         QVERIFY(named<QPushButton>(*bar, u"liveButton"_s)->isVisible());
         QVERIFY(!named<QPushButton>(*bar, u"recordButton"_s)->isEnabled());
@@ -190,13 +190,13 @@ private slots:
         // Save the chart as PNG and SVG, copy it to the clipboard.
         const QString png = m_dir.filePath(u"chart.png"_s);
         const QString svg = m_dir.filePath(u"chart.svg"_s);
-        QVERIFY2(page->saveChart(png, &error), qPrintable(error));
-        QVERIFY2(page->saveChart(svg, &error), qPrintable(error));
+        QVERIFY2(noted(page->saveChart(png), &error), qPrintable(error));
+        QVERIFY2(noted(page->saveChart(svg), &error), qPrintable(error));
         const QImage image(png);
         QVERIFY(!image.isNull() && image.width() > 100);
         const QString svgProblem = ExportCheck::svgProblem(svg, 11);
         QVERIFY2(svgProblem.isEmpty(), qPrintable(svgProblem));
-        QVERIFY(!page->saveChart(m_dir.filePath(u"chart.bmpx"_s), &error));
+        QVERIFY(!noted(page->saveChart(m_dir.filePath(u"chart.bmpx"_s)), &error));
         page->chart()->copyToClipboard();
         QVERIFY(!QGuiApplication::clipboard()->image().isNull());
 
@@ -229,7 +229,7 @@ private slots:
         QVERIFY(b.open(QIODevice::WriteOnly));
         b.write("SQLite format 3\0garbage", 23);
         b.close();
-        QVERIFY(!bar->openRun(broken, &error));
+        QVERIFY(!noted(bar->openRun(broken), &error));
         QVERIFY2(error.contains(u"broken.bsrun"_s), qPrintable(error));
         QVERIFY(!w.measure()->isShowingRun());
     }
@@ -281,7 +281,7 @@ private slots:
         QString error;
         const QString pdf = m_dir.filePath(u"report.pdf"_s);
         reports->setFormat(ReportFormats::Format::Pdf);
-        QVERIFY2(reports->exportTo(pdf, &error), qPrintable(error));
+        QVERIFY2(noted(reports->exportTo(pdf), &error), qPrintable(error));
         QFile pdfFile(pdf);
         QVERIFY(pdfFile.open(QIODevice::ReadOnly));
         QVERIFY(pdfFile.read(5) == "%PDF-");
@@ -295,7 +295,7 @@ private slots:
         // The suite CSV holds one run: a comparison is refused with the way out, joined it is written.
         updated.clear();
         reports->setFormat(ReportFormats::Format::Csv);
-        QVERIFY(!reports->exportTo(m_dir.filePath(u"compared.csv"_s), &error));
+        QVERIFY(!noted(reports->exportTo(m_dir.filePath(u"compared.csv"_s)), &error));
         // Issue 40, point 10: the window names its checkbox, not the command line's --join.
         const QString joinBox = named<QCheckBox>(*reports, u"joinBox"_s)->text().remove(u'&');
         QVERIFY2(error.contains(joinBox) && !error.contains(u"--join"_s), qPrintable(error));
@@ -304,7 +304,7 @@ private slots:
                  qPrintable(reports->previewText()));
         QVERIFY(!QFile::exists(m_dir.filePath(u"compared.csv"_s)));
         named<QCheckBox>(*reports, u"joinBox"_s)->click();
-        QVERIFY2(reports->exportTo(m_dir.filePath(u"joined.csv"_s), &error), qPrintable(error));
+        QVERIFY2(noted(reports->exportTo(m_dir.filePath(u"joined.csv"_s)), &error), qPrintable(error));
         QFile joined(m_dir.filePath(u"joined.csv"_s));
         QVERIFY(joined.open(QIODevice::ReadOnly));
         const std::optional<SuiteCsv::Data> rows
@@ -317,13 +317,13 @@ private slots:
                                              {ReportFormats::Format::Html, u"html"_s}}) {
             reports->setFormat(format);
             const QString out = m_dir.filePath(u"report."_s + suffix);
-            QVERIFY2(reports->exportTo(out, &error), qPrintable(error));
+            QVERIFY2(noted(reports->exportTo(out), &error), qPrintable(error));
             QVERIFY2(QFileInfo(out).size() > 100, qPrintable(out));
         }
         // An export that cannot be written says so and leaves nothing behind.
         const QString nowhere = m_dir.filePath(u"missing/dir/report.md"_s);
         reports->setFormat(ReportFormats::Format::Markdown);
-        QVERIFY(!reports->exportTo(nowhere, &error));
+        QVERIFY(!noted(reports->exportTo(nowhere), &error));
         QVERIFY(!error.isEmpty());
         QVERIFY(!QFile::exists(nowhere));
     }
@@ -349,7 +349,7 @@ private slots:
         });
         const QString out = m_dir.filePath(u"cancelled.html"_s);
         QString error;
-        QVERIFY(!reports->exportTo(out, &error));
+        QVERIFY(!noted(reports->exportTo(out), &error));
         QVERIFY(sawProgress);
         QVERIFY2(error.contains(u"cancelled"_s), qPrintable(error));
         QVERIFY(!QFile::exists(out));

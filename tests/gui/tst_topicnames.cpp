@@ -181,13 +181,14 @@ private slots:
         options.program = QStringLiteral(BRIDGESCOPE_BINARY);
         options.payloadBytes = 20000; // the views are tested, not the lab
         QString error;
-        QVERIFY2(m_lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(m_lab.start(options), &error), qPrintable(error));
         m_window = std::make_unique<MainWindow>();
         MainWindow* w = m_window.get();
         w->discoverPage()->setRosMasterUri(m_lab.rosMasterUri());
         w->discoverPage()->connectBroker(MqttProfile::fromUrl(m_lab.brokerUrl()));
         w->files()->openFile(m_lab.vehicleConfigPath());
-        QVERIFY2(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, &error, true), qPrintable(error));
+        QVERIFY2(noted(w->linksPage()->addConfigFiles({m_lab.cloudConfigPath()}, true), &error),
+                 qPrintable(error));
         QTRY_VERIFY(
             w->linksPage()->setWatched(m_lab.vehicleConfigPath(), true)); // listed a second after it opened
         const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(m_lab.pipelinePath()), &error);

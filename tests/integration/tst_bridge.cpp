@@ -12,6 +12,7 @@
 #include "messageinbox.h"
 #include "mqtt/mqttlink.h"
 #include "peakrss.h"
+#include "resulttext.h"
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "ros/rosmasterapi.h"
@@ -103,21 +104,21 @@ private:
     {
         QString error;
         Inbox* inbox = &m_fromRos;
-        QVERIFY2(m_ros.subscribe(
-                     topic, 100,
-                     [inbox, topic](const RosRawMessage& m, qint64) {
-                         std::lock_guard<std::mutex> lock(inbox->mutex);
-                         inbox->messages[topic].append(m.bytes);
-                         inbox->rosTypes[topic] = m;
-                     },
-                     &error),
+        QVERIFY2(noted(m_ros.subscribe(topic, 100,
+                                       [inbox, topic](const RosRawMessage& m, qint64) {
+                                           std::lock_guard<std::mutex> lock(inbox->mutex);
+                                           inbox->messages[topic].append(m.bytes);
+                                           inbox->rosTypes[topic] = m;
+                                       }),
+                       &error),
                  qPrintable(error));
     }
 
     int advertise(const QString& topic, const RosRawMessage& m)
     {
         QString error;
-        const int id = m_ros.advertise(topic, m.type, m.md5, m.definition, 10, false, &error);
+        const int id
+            = noted(m_ros.advertise(topic, m.type, m.md5, m.definition, 10, false), &error).value_or(-1);
         if (id < 0)
             qWarning("%s", qPrintable(error));
         return id;
@@ -178,7 +179,8 @@ private slots:
         QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
         QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
         QString error;
-        QVERIFY2(m_ros.start(u"bridge_test"_s, m_servers.rosMasterUri(), {}, &error), qPrintable(error));
+        QVERIFY2(noted(m_ros.start(u"bridge_test"_s, m_servers.rosMasterUri(), {}), &error),
+                 qPrintable(error));
         m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
         Inbox* inbox = &m_fromMqtt;
         std::atomic<int>* flood = &m_floodArrived;
@@ -189,7 +191,7 @@ private slots:
                 inbox->add(t, p);
         });
         m_mqtt->addSubscription(u"#"_s, 0);
-        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(m_mqtt->connect(5000), &error), qPrintable(error));
     }
 
     void cleanupTestCase()
@@ -312,17 +314,18 @@ private slots:
         std::mutex engineMutex;
         for (const QString& t : stampTopics) {
             QString error;
-            QVERIFY2(m_ros.subscribe(
-                         t, 1000,
-                         [&engine, &engineMutex, t](const RosRawMessage& m, qint64 received) {
-                             const Result<StampCodec::Decoded> d = StampCodec::decodeTimeStamped(m.bytes);
-                             if (!d)
-                                 return;
-                             std::lock_guard<std::mutex> lock(engineMutex);
-                             engine.ingest(StampEvent {t, d->sampleNs, d->timeNs, received});
-                         },
-                         &error),
-                     qPrintable(error));
+            QVERIFY2(
+                noted(m_ros.subscribe(t, 1000,
+                                      [&engine, &engineMutex, t](const RosRawMessage& m, qint64 received) {
+                                          const Result<StampCodec::Decoded> d
+                                              = StampCodec::decodeTimeStamped(m.bytes);
+                                          if (!d)
+                                              return;
+                                          std::lock_guard<std::mutex> lock(engineMutex);
+                                          engine.ingest(StampEvent {t, d->sampleNs, d->timeNs, received});
+                                      }),
+                      &error),
+                qPrintable(error));
         }
         listenRos(u"/cloud/cloud"_s);
         listenRos(u"/vehicle/reply"_s);
@@ -423,11 +426,11 @@ private slots:
             QString error;
             const QByteArray yaml = Fixtures::read(file);
             if (ConfigReader::read(yaml).config.mappings.isEmpty()) { // settings only: nothing to run
-                QVERIFY(!b.load(yaml, options, &error));
+                QVERIFY(!noted(b.load(yaml, options), &error));
                 QVERIFY2(error.contains(u"no mapping"_s), qPrintable(error));
                 continue;
             }
-            QVERIFY2(b.load(yaml, options, &error), qPrintable(file + u": "_s + error));
+            QVERIFY2(noted(b.load(yaml, options), &error), qPrintable(file + u": "_s + error));
             QVERIFY(b.mappingCount() > 0);
         }
     }
@@ -454,7 +457,7 @@ private slots:
     /// The type the master lists for `topic`, and who publishes it.
     TopicInfo masterTopic(const QString& topic)
     {
-        const std::optional<TopicGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
+        const Result<TopicGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
         const TopicInfo* t = g ? g->topic(topic) : nullptr;
         return t ? *t : TopicInfo();
     }
@@ -499,7 +502,7 @@ private slots:
         options.maxQueuedBytes = 16 * 1024 * 1024;
         MqttLink flooder(MqttProfile::fromUrl(m_servers.brokerUrl()), options);
         QString error;
-        QVERIFY2(flooder.connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(flooder.connect(5000), &error), qPrintable(error));
         const QByteArray big(kFloodBytes, 'x');
         const qint64 grown
             = floodWhileStopped(*p, hz.processId(), [&] { flooder.send(u"flood/in"_s, big, 0, false); });

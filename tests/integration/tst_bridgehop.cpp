@@ -10,6 +10,7 @@
 #include "messageinbox.h"
 #include "mqtt/mqttlink.h"
 #include "mqttclientros2.h"
+#include "resulttext.h"
 #include "ros/rosendpoint.h"
 #include "ros/rosmasterapi.h"
 #include "ros2/ros2participant.h"
@@ -187,12 +188,12 @@ private slots:
         QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
         m_domain = Ros2Peer::freeDomain(200, 230);
         QString error;
-        QVERIFY2(m_ros.start(u"hop_test"_s, m_servers.rosMasterUri(), {}, &error), qPrintable(error));
+        QVERIFY2(noted(m_ros.start(u"hop_test"_s, m_servers.rosMasterUri(), {}), &error), qPrintable(error));
         m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
         m_mqtt->setMessageHandler(
             [this](const QString& t, const QByteArray& p, qint64) { m_fromMqtt.add(t, p); });
         m_mqtt->addSubscription(u"#"_s, 1);
-        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(m_mqtt->connect(5000), &error), qPrintable(error));
     }
 
     void cleanupTestCase()
@@ -209,8 +210,9 @@ private slots:
              {u"/hop/pose_back"_s, u"/hop_bridge/latencies/hop/pose_back"_s, u"/ts/hop/pose_back/in"_s}) {
             MessageInbox* inbox = &m_fromRos1;
             QVERIFY2(
-                m_ros.subscribe(
-                    t, 100, [inbox, t](const RosRawMessage& m, qint64) { inbox->add(t, m.bytes); }, &error),
+                noted(m_ros.subscribe(t, 100,
+                                      [inbox, t](const RosRawMessage& m, qint64) { inbox->add(t, m.bytes); }),
+                      &error),
                 qPrintable(error));
         }
         Seen seen1;
@@ -248,7 +250,7 @@ private slots:
         QTRY_VERIFY2_WITH_TIMEOUT(log1.contains(u"bridging 5 mapping"_s), qPrintable(log1), 20000);
         QTRY_VERIFY2_WITH_TIMEOUT(log2.contains(u"bridging 5 mapping"_s), qPrintable(log2), 20000);
         const auto ros1Advertised = [this] {
-            const std::optional<TopicGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
+            const Result<TopicGraph> g = RosMasterApi(m_servers.rosMasterUri()).graph(3000);
             const TopicInfo* t = g ? g->topic(u"/hop/pose_back"_s) : nullptr;
             return t && !t->publishers.isEmpty();
         };
@@ -270,9 +272,13 @@ private slots:
             {}, u"std_msgs/String"_s, u"992ce8a1687cec8c8bd883ec73ca41d1"_s, u"string data\n"_s};
         const RosMsgTypeInfo pose1 = ros1PoseType();
         const int wordsPub
-            = m_ros.advertise(u"/hop/words"_s, hello.type, hello.md5, hello.definition, 10, false, &error);
+            = noted(m_ros.advertise(u"/hop/words"_s, hello.type, hello.md5, hello.definition, 10, false),
+                    &error)
+                  .value_or(-1);
         const int posePub
-            = m_ros.advertise(u"/hop/pose"_s, pose1.name, pose1.md5, pose1.definition, 10, false, &error);
+            = noted(m_ros.advertise(u"/hop/pose"_s, pose1.name, pose1.md5, pose1.definition, 10, false),
+                    &error)
+                  .value_or(-1);
         QVERIFY2(wordsPub >= 0 && posePub >= 0, qPrintable(error));
         QTRY_VERIFY_WITH_TIMEOUT(m_ros.subscriberCount(wordsPub) > 0 && m_ros.subscriberCount(posePub) > 0,
                                  15000);

@@ -91,7 +91,7 @@ private slots:
         QVERIFY(!QDir(lab.dir).exists()); // the lab cleans up after itself
 
         QString error;
-        const std::optional<Report> report = Report::build({run}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({run}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         const LatencyEngine& e = *report->runs().front()->engine;
         // 10 Hz for 20 s, less the first second of starting up.
@@ -148,7 +148,7 @@ private slots:
     {
         DemoLab lab;
         QString error;
-        QVERIFY2(lab.start(ros2Lab(), &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         LiveSession live;
         QVERIFY2(live.startRos2({lab.rosDomain(), true}, &error), qPrintable(error));
         MeasureSession measure(&live);
@@ -179,7 +179,7 @@ private slots:
         options.bridgeCommand = u"echo {name} {ros_domain} $ROS_DOMAIN_ID $ROS_LOCALHOST_ONLY {config} >> '"_s
             + said + u"'; exec sleep 30"_s;
         QString error;
-        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(options), &error), qPrintable(error));
         QCOMPARE(lab.ros(), 2);
         QVERIFY(lab.rosMasterUri().isEmpty());
         QVERIFY2(lab.rosDomain() >= 161 && lab.rosDomain() <= 232, qPrintable(QString::number(lab.rosDomain())));
@@ -199,7 +199,7 @@ private slots:
         QVERIFY2(text.contains(u"/vehicle/pointcloud"_s), qPrintable(text));
         // the next lab gets another domain
         DemoLab next;
-        QVERIFY2(next.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(next.start(options), &error), qPrintable(error));
         QVERIFY(next.rosDomain() != lab.rosDomain());
     }
 
@@ -211,7 +211,7 @@ private slots:
     {
         DemoLab lab;
         QString error;
-        QVERIFY2(lab.start(ros2Lab(), &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         Ros2Participant dds;
         QVERIFY2(dds.start({lab.rosDomain(), true}, &error), qPrintable(error));
         // The vehicle starts once its stamps have a subscriber (a measuring Bridgescope): this one.
@@ -313,7 +313,7 @@ private slots:
         options.program = QStringLiteral(BRIDGESCOPE_BINARY);
         options.payloadBytes = 20000;
         QString error;
-        QVERIFY2(lab.start(options, &error), qPrintable(error));
+        QVERIFY2(noted(lab.start(options), &error), qPrintable(error));
         const quint16 port = TestServers::freePort();
         const QString run = m_dir.filePath(u"watched.bsrun"_s);
         QProcess watch;
@@ -371,7 +371,7 @@ private slots:
         QVERIFY(std::any_of(data->events.cbegin(), data->events.cend(), [](const RecordedEvent& e) {
             return e.reasons.contains(u"bridge_down"_s) && e.subject == u"bridge:mqtt_interface_vehicle"_s;
         }));
-        const std::optional<Report> report = Report::build({run}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({run}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY2(report->runs().front()->engine->samples() >= 20,
                  qPrintable(QString::number(report->runs().front()->engine->samples())));

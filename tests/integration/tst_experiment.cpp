@@ -68,7 +68,7 @@ QString writePlan(const QTemporaryDir& dir, const QString& name, const QByteArra
 /// The engine of a run file (the report's own loading).
 std::optional<Report> reportOf(const QString& run, QString* error)
 {
-    return Report::build({run}, std::nullopt, {}, error);
+    return noted(Report::build({run}, std::nullopt, {}), error);
 }
 } // namespace
 

@@ -161,7 +161,7 @@ private slots:
                  qPrintable(QString::fromUtf8(rec->readAllStandardError())));
         pub->kill();
         QString error;
-        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({path}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY(report->runs().front()->engine->samples() >= 100);
         QCOMPARE(report->runs().front()->info.name, u"headless"_s);
@@ -188,7 +188,7 @@ private slots:
         QVERIFY(rec->waitForStarted());
         MqttLink link(MqttProfile::fromUrl(m_servers.brokerUrl()));
         QString error;
-        QVERIFY2(link.connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(link.connect(5000), &error), qPrintable(error));
         int sent = 0;
         while (rec->state() == QProcess::Running && sent < 25) {
             QVERIFY(link.publish(u"lab/garbled"_s, "{\"sample\": \"s1\"}", 1, false)); // no time
@@ -234,7 +234,7 @@ private slots:
         QCOMPARE(rec->exitCode(), 0);
         pub->kill();
         QString error;
-        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({path}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY(report->runs().front()->engine->samples() >= 50);
     }
@@ -329,7 +329,7 @@ private slots:
             last = std::max(last, s.receivedNs);
         QVERIFY2(killedAt - last < 1'000'000'000LL,
                  qPrintable(u"last stamp %1 ms before the kill"_s.arg((killedAt - last) / 1'000'000)));
-        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({path}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY(report->runs().front()->engine->samples() > 250);
     }

@@ -105,7 +105,7 @@ private slots:
 
         // The stamp source (20 samples/s, two stamps each) and a witness of what comes back.
         MqttLink source(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        QVERIFY2(source.connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(source.connect(5000), &error), qPrintable(error));
         std::mutex mutex;
         std::vector<std::pair<QString, qint64>> published; // topic, stamp time
         qint64 backCount = 0;
@@ -115,7 +115,7 @@ private slots:
             std::lock_guard<std::mutex> lock(mutex);
             ++backCount;
         });
-        QVERIFY2(witness.connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(witness.connect(5000), &error), qPrintable(error));
         qint64 seq = 0;
         QTimer tick;
         QObject::connect(&tick, &QTimer::timeout, [&] {

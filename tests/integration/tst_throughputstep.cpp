@@ -213,7 +213,7 @@ private slots:
         ExperimentRunner::Options options;
         options.program = QStringLiteral(BRIDGESCOPE_BINARY);
         ExperimentRunner runner(*plan, yaml, m_dir.filePath(u"runner"_s), options);
-        QVERIFY2(runner.prepare(&why), qPrintable(why));
+        QVERIFY2(noted(runner.prepare(), &why), qPrintable(why));
         QSignalSpy cells(&runner, &ExperimentRunner::cellStarted);
         QSignalSpy probes(&runner, &ExperimentRunner::probeStarted);
         QSignalSpy finished(&runner, &ExperimentRunner::finished);

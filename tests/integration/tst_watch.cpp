@@ -220,16 +220,21 @@ private slots:
         QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
         QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
         QString error;
-        QVERIFY2(m_ros.start(u"watch_test"_s, m_servers.rosMasterUri(), {}, &error), qPrintable(error));
+        QVERIFY2(noted(m_ros.start(u"watch_test"_s, m_servers.rosMasterUri(), {}), &error),
+                 qPrintable(error));
         m_mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        QVERIFY2(m_mqtt->connect(5000, &error), qPrintable(error));
+        QVERIFY2(noted(m_mqtt->connect(5000), &error), qPrintable(error));
         m_pointType = rosMessage(geometry_msgs::PointStamped());
         m_stringType = rosMessage(std_msgs::String());
-        m_stampedPub = m_ros.advertise(u"/w/stamped"_s, m_pointType.type, m_pointType.md5,
-                                       m_pointType.definition, 10, false, &error);
+        m_stampedPub = noted(m_ros.advertise(u"/w/stamped"_s, m_pointType.type, m_pointType.md5,
+                                             m_pointType.definition, 10, false),
+                             &error)
+                           .value_or(-1);
         QVERIFY2(m_stampedPub >= 0, qPrintable(error));
-        m_plainPub = m_ros.advertise(u"/w/plain"_s, m_stringType.type, m_stringType.md5,
-                                     m_stringType.definition, 10, false, &error);
+        m_plainPub = noted(m_ros.advertise(u"/w/plain"_s, m_stringType.type, m_stringType.md5,
+                                           m_stringType.definition, 10, false),
+                           &error)
+                         .value_or(-1);
         QVERIFY2(m_plainPub >= 0, qPrintable(error));
         announce();
 

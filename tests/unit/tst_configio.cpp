@@ -8,6 +8,7 @@
 #include "config/configwriter.h"
 #include "configcompare.h"
 #include "fixtures.h"
+#include "resulttext.h"
 
 #include <csignal>
 #include <QSet>
@@ -359,10 +360,10 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(u"bridge.yaml"_s);
         QString error;
-        QVERIFY(AtomicFile::write(path, "first\n", &error));
+        QVERIFY(noted(AtomicFile::write(path, "first\n"), &error));
         QVERIFY(!QFile::exists(path + u".bak"_s));
         ::chmod(QFile::encodeName(path).constData(), 0640);
-        QVERIFY(AtomicFile::write(path, "second\n", &error));
+        QVERIFY(noted(AtomicFile::write(path, "second\n"), &error));
         QFile now(path), bak(path + u".bak"_s);
         QVERIFY(now.open(QIODevice::ReadOnly) && bak.open(QIODevice::ReadOnly));
         QCOMPARE(now.readAll(), QByteArray("second\n"));
@@ -383,7 +384,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(u"bridge.yaml"_s);
         QString error;
-        QVERIFY(AtomicFile::write(path, "keep\n", &error));
+        QVERIFY(noted(AtomicFile::write(path, "keep\n"), &error));
         struct rlimit old
         {
         };
@@ -392,7 +393,7 @@ private slots:
         struct rlimit tiny = old;
         tiny.rlim_cur = 16;
         QCOMPARE(::setrlimit(RLIMIT_FSIZE, &tiny), 0);
-        const bool ok = AtomicFile::write(path, QByteArray(4096, 'x'), &error, true);
+        const bool ok = noted(AtomicFile::write(path, QByteArray(4096, 'x'), true), &error);
         ::setrlimit(RLIMIT_FSIZE, &old);
         std::signal(SIGXFSZ, oldHandler);
         QVERIFY(!ok);
@@ -406,7 +407,7 @@ private slots:
     void atomicSaveIntoMissingDirectoryFails()
     {
         QString error;
-        QVERIFY(!AtomicFile::write(u"/nonexistent-dir-bridgescope/x.yaml"_s, "x", &error));
+        QVERIFY(!noted(AtomicFile::write(u"/nonexistent-dir-bridgescope/x.yaml"_s, "x"), &error));
         QVERIFY(error.contains(u"nonexistent-dir-bridgescope"_s));
     }
 
@@ -419,7 +420,7 @@ private slots:
         QString error;
         const int saves = AtomicFile::maxBackups + 3;
         for (int i = 1; i <= saves; ++i)
-            QVERIFY2(AtomicFile::write(path, "version " + QByteArray::number(i) + '\n', &error),
+            QVERIFY2(noted(AtomicFile::write(path, "version " + QByteArray::number(i) + '\n'), &error),
                      qPrintable(error));
         auto content = [](const QString& p) {
             QFile f(p);
@@ -470,7 +471,7 @@ private slots:
         };
         QCOMPARE(::stat(QFile::encodeName(target).constData(), &before), 0);
         QString error;
-        QVERIFY(!AtomicFile::write(path, "x: 1\n", &error));
+        QVERIFY(!noted(AtomicFile::write(path, "x: 1\n"), &error));
         QVERIFY2(error.contains(u"not a regular file"_s), qPrintable(error));
         struct stat after
         {
@@ -489,9 +490,9 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(u"locked.yaml"_s);
         QString error;
-        QVERIFY(AtomicFile::write(path, "keep\n", &error));
+        QVERIFY(noted(AtomicFile::write(path, "keep\n"), &error));
         QCOMPARE(::chmod(QFile::encodeName(path).constData(), 0444), 0);
-        QVERIFY(!AtomicFile::write(path, "new\n", &error));
+        QVERIFY(!noted(AtomicFile::write(path, "new\n"), &error));
         QVERIFY2(error.contains(u"read-only"_s), qPrintable(error));
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -511,9 +512,9 @@ private slots:
         const QString real = dir.filePath(u"real.yaml"_s);
         const QString link = dir.filePath(u"link.yaml"_s);
         QString error;
-        QVERIFY(AtomicFile::write(real, "one\n", &error));
+        QVERIFY(noted(AtomicFile::write(real, "one\n"), &error));
         QVERIFY(QFile::link(real, link));
-        QVERIFY2(AtomicFile::write(link, "two\n", &error), qPrintable(error));
+        QVERIFY2(noted(AtomicFile::write(link, "two\n"), &error), qPrintable(error));
         QVERIFY(QFileInfo(link).isSymLink());
         QFile f(real), bak(real + u".bak"_s);
         QVERIFY(f.open(QIODevice::ReadOnly) && bak.open(QIODevice::ReadOnly));

@@ -251,7 +251,7 @@ private slots:
                     "{\"id\": \"002-qos-1\", \"state\": \"exploded\", \"samples\": -1e19},"
                     "{\"id\": \"003-nobody\", \"state\": \"complete\"}, 7, null]}");
         state.close();
-        const auto statuses = ExperimentFolder(dir.path()).readState(*plan, &why);
+        const auto statuses = noted(ExperimentFolder(dir.path()).readState(*plan), &why);
         QVERIFY2(statuses, qPrintable(why));
         QCOMPARE(statuses->size(), 2);
         QCOMPARE((*statuses)[0].state, CellStatus::Complete);
@@ -329,7 +329,7 @@ private slots:
         const auto p = noted(ExperimentPlan::read(yaml, dir.path()), &why);
         QVERIFY2(p, qPrintable(why));
         ExperimentRunner runner(*p, yaml, dir.path(), {});
-        QVERIFY2(runner.prepare(&why), qPrintable(why));
+        QVERIFY2(noted(runner.prepare(), &why), qPrintable(why));
         QSignalSpy finished(&runner, &ExperimentRunner::finished);
         runner.start();
         QVERIFY(finished.wait(5000));
@@ -343,7 +343,7 @@ private slots:
         const QJsonObject cell = QJsonDocument::fromJson(state.readAll())[u"cells"_s][0].toObject();
         QCOMPARE(cell.value(u"run"_s).toString(), QString());
         QCOMPARE(cell.value(u"state"_s).toString(), u"failed"_s);
-        const auto read = ExperimentFolder(dir.path()).readState(*p, &why);
+        const auto read = noted(ExperimentFolder(dir.path()).readState(*p), &why);
         QVERIFY2(read && read->first().run.isEmpty(), qPrintable(why));
     }
 
@@ -385,7 +385,7 @@ private slots:
         ExperimentRunner::Options options;
         options.resume = true;
         ExperimentRunner runner(*plan, yaml, dir.path(), options);
-        QVERIFY2(runner.prepare(&why), qPrintable(why));
+        QVERIFY2(noted(runner.prepare(), &why), qPrintable(why));
         const QList<CellStatus>& statuses = runner.statuses();
         QCOMPARE(statuses[0].state, CellStatus::Pending);
         QCOMPARE(statuses[1].state, CellStatus::Pending);
@@ -399,7 +399,7 @@ private slots:
         QVERIFY2(notes[2].contains(u"another cell"_s), qPrintable(notes[2]));
         QVERIFY(statuses[1].reason.contains(u"done again"_s));
         // The state on disk says so too, and a plan that wants more samples than the run has redoes it.
-        const auto written = ExperimentFolder(dir.path()).readState(*plan, &why);
+        const auto written = noted(ExperimentFolder(dir.path()).readState(*plan), &why);
         QVERIFY2(written && (*written)[1].state == CellStatus::Pending, qPrintable(why));
         // what the link pointed to is untouched: neither removed nor written
         QVERIFY(preciousFile.open(QIODevice::ReadOnly));
@@ -410,7 +410,7 @@ private slots:
         QVERIFY(copy.open(QIODevice::WriteOnly | QIODevice::Truncate) && copy.write(more) == more.size());
         copy.close();
         ExperimentRunner again(*morePlan, more, dir.path(), options);
-        QVERIFY2(again.prepare(&why), qPrintable(why));
+        QVERIFY2(noted(again.prepare(), &why), qPrintable(why));
         QCOMPARE(again.statuses()[2].state, CellStatus::Pending);
         QVERIFY2(again.resumeNotes().join(u'\n').contains(u"12 complete samples, the cell needs 13"_s),
                  qPrintable(again.resumeNotes().join(u'\n')));
@@ -549,7 +549,7 @@ private slots:
         state.write("{\"format\": \"bridgescope-experiment\", \"cells\": []}");
         state.close();
         QString why;
-        const std::optional<ExperimentReport> report = ExperimentReport::load(dir.path(), &why);
+        const std::optional<ExperimentReport> report = noted(ExperimentReport::load(dir.path()), &why);
         QVERIFY2(report, qPrintable(why));
         const QList<ExperimentReport::Statistic> mean {ExperimentReport::Statistic::Mean};
         const QString tex = report->toTex(mean);
@@ -605,7 +605,7 @@ private slots:
                                       {u"run"_s, ExperimentFolder::runPathOf(cell)}});
         }
         QVERIFY(writeFolder(dir.path(), yaml, cells));
-        const std::optional<ExperimentReport> report = ExperimentReport::load(dir.path(), &why);
+        const std::optional<ExperimentReport> report = noted(ExperimentReport::load(dir.path()), &why);
         QVERIFY2(report, qPrintable(why));
         QString finding;
         for (const QString& f : report->findings())

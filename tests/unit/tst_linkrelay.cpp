@@ -111,10 +111,10 @@ private slots:
         LinkProfile profile;
         profile.delayMs = delayMs;
         profile.bandwidthMbit = bandwidthMbit;
-        QString error;
-        std::unique_ptr<LinkRelay> relay
-            = LinkRelay::start(profile, u"127.0.0.1"_s, target.serverPort(), &error);
-        QVERIFY2(relay, qPrintable(error));
+        Result<std::unique_ptr<LinkRelay>> started
+            = LinkRelay::start(profile, u"127.0.0.1"_s, target.serverPort());
+        QVERIFY2(started, qPrintable(started.error().toString()));
+        std::unique_ptr<LinkRelay> relay = std::move(started).value();
 
         QVERIFY(PeakRss::reset());
         const qint64 before = PeakRss::of();

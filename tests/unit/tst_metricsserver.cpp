@@ -2,6 +2,7 @@
 // What `watch --metrics` serves: both exposition formats, checked by Prometheus' own promtool and
 // by the rules of OpenMetrics; the format a scraper's Accept header asks for; and the HTTP server
 // against bad, oversized, idle and many clients on loopback.
+#include "resulttext.h"
 #include "testservers.h"
 #include "watch/metricsserver.h"
 
@@ -164,32 +165,35 @@ private slots:
 
     void hostAndPort()
     {
-        QHostAddress a;
-        quint16 p = 1;
-        QVERIFY(MetricsServer::parseHostPort(u"127.0.0.1:9464"_s, &a, &p, nullptr));
-        QCOMPARE(a, QHostAddress(QHostAddress::LocalHost));
-        QCOMPARE(p, quint16(9464));
-        QVERIFY(MetricsServer::parseHostPort(u"[::1]:0"_s, &a, &p, nullptr));
-        QCOMPARE(a, QHostAddress(QHostAddress::LocalHostIPv6));
-        QVERIFY(MetricsServer::parseHostPort(u":9464"_s, &a, &p, nullptr));
-        QCOMPARE(a, QHostAddress(QHostAddress::Any));
+        Result<MetricsServer::Endpoint> e = MetricsServer::parseHostPort(u"127.0.0.1:9464"_s);
+        QVERIFY(e);
+        QCOMPARE(e->address, QHostAddress(QHostAddress::LocalHost));
+        QCOMPARE(e->port, quint16(9464));
+        e = MetricsServer::parseHostPort(u"[::1]:0"_s);
+        QVERIFY(e);
+        QCOMPARE(e->address, QHostAddress(QHostAddress::LocalHostIPv6));
+        e = MetricsServer::parseHostPort(u":9464"_s);
+        QVERIFY(e);
+        QCOMPARE(e->address, QHostAddress(QHostAddress::Any));
         QString error;
         for (const QString& bad :
              {u"9464"_s, u"127.0.0.1:"_s, u"127.0.0.1:70000"_s, u"example.org:80"_s, u"127.0.0.1:-1"_s})
-            QVERIFY2(!MetricsServer::parseHostPort(bad, &a, &p, &error) && error.contains(bad),
+            QVERIFY2(!noted(MetricsServer::parseHostPort(bad), &error) && error.contains(bad),
                      qPrintable(bad));
-        QVERIFY(!MetricsServer::listen(u"256.0.0.1:0"_s, &error));
+        QVERIFY(!noted(MetricsServer::listen(u"256.0.0.1:0"_s), &error));
         // A port in use is said, not a crash.
-        const std::unique_ptr<MetricsServer> first = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        const std::unique_ptr<MetricsServer> first
+            = noted(MetricsServer::listen(u"127.0.0.1:0"_s), &error).value_or(nullptr);
         QVERIFY2(first, qPrintable(error));
-        QVERIFY(!MetricsServer::listen(u"127.0.0.1:%1"_s.arg(first->port()), &error));
+        QVERIFY(!noted(MetricsServer::listen(u"127.0.0.1:%1"_s.arg(first->port())), &error));
         QVERIFY2(error.contains(u"cannot serve metrics"_s), qPrintable(error));
     }
 
     void servesOverHttp()
     {
         QString error;
-        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        const std::unique_ptr<MetricsServer> server
+            = noted(MetricsServer::listen(u"127.0.0.1:0"_s), &error).value_or(nullptr);
         QVERIFY2(server, qPrintable(error));
         const quint16 port = server->port();
         QVERIFY(port > 0);
@@ -231,7 +235,8 @@ private slots:
     void leniantHeadsAreAnswered()
     {
         QString error;
-        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        const std::unique_ptr<MetricsServer> server
+            = noted(MetricsServer::listen(u"127.0.0.1:0"_s), &error).value_or(nullptr);
         QVERIFY2(server, qPrintable(error));
         server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
         const QByteArray want = MetricsExposition::write(twoLinks(), MetricsFormat::Text);
@@ -302,7 +307,8 @@ private slots:
     void nonReadersAreDroppedPastTheBudget()
     {
         QString error;
-        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        const std::unique_ptr<MetricsServer> server
+            = noted(MetricsServer::listen(u"127.0.0.1:0"_s), &error).value_or(nullptr);
         QVERIFY2(server, qPrintable(error));
         MetricsSnapshot s;
         for (int i = 0; i < 9000; ++i) {
@@ -342,7 +348,8 @@ private slots:
     void idleBurstsDoNotStarveScrapes()
     {
         QString error;
-        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        const std::unique_ptr<MetricsServer> server
+            = noted(MetricsServer::listen(u"127.0.0.1:0"_s), &error).value_or(nullptr);
         QVERIFY2(server, qPrintable(error));
         server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
         const quint16 port = server->port();
@@ -411,7 +418,8 @@ private slots:
     void idleClientsDoNotLockOutTheScraper()
     {
         QString error;
-        const std::unique_ptr<MetricsServer> server = MetricsServer::listen(u"127.0.0.1:0"_s, &error);
+        const std::unique_ptr<MetricsServer> server
+            = noted(MetricsServer::listen(u"127.0.0.1:0"_s), &error).value_or(nullptr);
         QVERIFY2(server, qPrintable(error));
         server->publish(std::make_shared<MetricsSnapshot>(twoLinks()));
         std::vector<std::unique_ptr<QTcpSocket>> idle;

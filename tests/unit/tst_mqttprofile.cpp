@@ -3,6 +3,7 @@
 // ROS master's XML-RPC encoding.
 #include "mqtt/mqttprofile.h"
 #include "mqtt/passwordstore.h"
+#include "resulttext.h"
 #include "ros/rosmasterapi.h"
 #include "wire/payloadtext.h"
 
@@ -46,7 +47,7 @@ private slots:
         QFETCH(QString, paho);
         const MqttProfile p = MqttProfile::fromUrl(url);
         QString error;
-        QCOMPARE(p.validate(&error), valid);
+        QCOMPARE(noted(p.validate(), &error), valid);
         if (valid)
             QCOMPARE(p.pahoUri(), paho);
         else
@@ -58,12 +59,12 @@ private slots:
         MqttProfile p;
         p.filters = {u"a/#/b"_s};
         QString error;
-        QVERIFY(!p.validate(&error));
+        QVERIFY(!noted(p.validate(), &error));
         QVERIFY(error.contains(u"a/#/b"_s));
         p.filters = {u"a/+/b"_s, u"#"_s};
-        QVERIFY(p.validate(&error));
+        QVERIFY(noted(p.validate(), &error));
         p.certFile = u"client.pem"_s;
-        QVERIFY(!p.validate(&error)); // a certificate needs its key
+        QVERIFY(!noted(p.validate(), &error)); // a certificate needs its key
     }
 
     // Regression guard: passwords never reach the settings file.
@@ -120,16 +121,18 @@ private slots:
         QVERIFY(call.contains("<string>/a&lt;b&gt;</string>"));
         QVERIFY(call.contains("<i4>3</i4>"));
         QString error;
-        const auto v = RosMasterApi::decodeResponse(
-            "<?xml "
-            "version='1.0'?><methodResponse><params><param><value><array><data><value><int>1</int></value>"
-            "<value><string>ok</string></value><value><array><data><value>/x</value><value><i4>-2</i4></"
-            "value>"
-            "<value><boolean>1</boolean></value><value><struct><member><name>k</name><value><double>1.5</"
-            "double>"
-            "</value></member></struct></value></data></array></value></data></array></value></param></"
-            "params>"
-            "</methodResponse>",
+        const auto v = noted(
+            RosMasterApi::decodeResponse(
+                "<?xml "
+                "version='1.0'?><methodResponse><params><param><value><array><data><value><int>1</int></"
+                "value>"
+                "<value><string>ok</string></value><value><array><data><value>/x</value><value><i4>-2</i4></"
+                "value>"
+                "<value><boolean>1</boolean></value><value><struct><member><name>k</name><value><double>1.5</"
+                "double>"
+                "</value></member></struct></value></data></array></value></data></array></value></param></"
+                "params>"
+                "</methodResponse>"),
             &error);
         QVERIFY2(v, qPrintable(error));
         const QVariantList triple = v->toList();
@@ -157,7 +160,7 @@ private slots:
     {
         QFETCH(QByteArray, body);
         QString error;
-        QVERIFY(!RosMasterApi::decodeResponse(body, &error));
+        QVERIFY(!noted(RosMasterApi::decodeResponse(body), &error));
         QVERIFY(!error.isEmpty());
     }
 

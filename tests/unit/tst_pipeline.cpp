@@ -125,7 +125,7 @@ private slots:
             p->setHost(it.key(), it.value());
         QTemporaryDir dir;
         QString error;
-        QVERIFY2(p->save(dir.filePath(u"p.yaml"_s), &error), qPrintable(error));
+        QVERIFY2(noted(p->save(dir.filePath(u"p.yaml"_s)), &error), qPrintable(error));
         const std::optional<Pipeline> back = noted(Pipeline::readFile(dir.filePath(u"p.yaml"_s)), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(*back, *p);

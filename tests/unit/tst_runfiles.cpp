@@ -255,7 +255,7 @@ private slots:
         QVERIFY2(error.startsWith(path + u": not a Bridgescope run, refused: "_s) && error.contains(message),
                  qPrintable(error));
         // The report says the same, and the loader of the window too.
-        QVERIFY(!Report::build({path}, std::nullopt, {}, &error));
+        QVERIFY(!noted(Report::build({path}, std::nullopt, {}), &error));
         QVERIFY2(error.contains(message), qPrintable(error));
     }
 
@@ -315,7 +315,7 @@ private slots:
         QVERIFY(BagHeader::looksLikeBag(path));
         QCOMPARE(RunLoader::kindOf(path), RunLoader::Kind::Bag);
         QString error;
-        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({path}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         const LatencyEngine& e = *report->runs().front()->engine;
         QCOMPARE(e.pipeline().topics(), synthetic.topics); // found in the stamps, in order
@@ -336,7 +336,7 @@ private slots:
                       StampBag::shaped("992ce8a1687cec8c8bd883ec73ca41d1", "std_msgs/String", "string data\n",
                                        QByteArray("\x02\0\0\0hi", 6)));
         }
-        QVERIFY(!RunLoader::load(other, {}, &error));
+        QVERIFY(!noted(RunLoader::load(other, {}), &error));
         QVERIFY2(error.contains(u"no benchmarking_suite/TimeStamped topics"_s)
                      && error.contains(u"/chatter (std_msgs/String)"_s),
                  qPrintable(error));
@@ -348,7 +348,7 @@ private slots:
         QVERIFY(cut.open(QIODevice::WriteOnly));
         cut.write(head);
         cut.close();
-        QVERIFY(!RunLoader::load(cut.fileName(), {}, &error));
+        QVERIFY(!noted(RunLoader::load(cut.fileName(), {}), &error));
         QVERIFY2(error.startsWith(cut.fileName()), qPrintable(error));
     }
 
@@ -362,11 +362,11 @@ private slots:
         csv.close();
         const QByteArray before = sha(csv.fileName());
         QString error;
-        std::optional<RunData> run = RunLoader::load(csv.fileName(), {}, &error);
+        std::optional<RunData> run = noted(RunLoader::load(csv.fileName(), {}), &error);
         QVERIFY2(run, qPrintable(error));
         QVERIFY(noted(RunFile::write(dir.filePath(u"suite.bsrun"_s), *run), &error));
         const std::optional<Report> report
-            = Report::build({dir.filePath(u"suite.bsrun"_s)}, std::nullopt, {}, &error);
+            = noted(Report::build({dir.filePath(u"suite.bsrun"_s)}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QCOMPARE(report->runs().front()->engine->samples(), 30);
         QCOMPARE(report->runs().front()->samples, synthetic.samples);
@@ -388,14 +388,14 @@ private slots:
         csv.close();
         QString error;
         QStringList warnings;
-        std::optional<RunData> run = RunLoader::load(csv.fileName(), {}, &error, &warnings);
+        std::optional<RunData> run = noted(RunLoader::load(csv.fileName(), {}, &warnings), &error);
         QVERIFY2(run, qPrintable(error));
         QCOMPARE(warnings.size(), 1);
         QVERIFY2(warnings.first().contains(u"1 rows begin with the same stamp"_s),
                  qPrintable(warnings.first()));
         QVERIFY(noted(RunFile::write(dir.filePath(u"coarse.bsrun"_s), *run), &error));
         const std::optional<Report> report
-            = Report::build({dir.filePath(u"coarse.bsrun"_s)}, std::nullopt, {}, &error);
+            = noted(Report::build({dir.filePath(u"coarse.bsrun"_s)}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QCOMPARE(report->runs().front()->engine->samples(), 10);
         QCOMPARE(report->runs().front()->engine->counters().duplicates, 0u);
@@ -531,7 +531,7 @@ private slots:
             f.write(bytes);
             f.close();
             QString error;
-            if (RunLoader::load(damaged, {}, &error)) {
+            if (noted(RunLoader::load(damaged, {}), &error)) {
                 ++read;
             } else {
                 ++refused;
@@ -559,11 +559,11 @@ private slots:
         const QString path = dir.filePath(u"extreme.bsrun"_s);
         QString error;
         QVERIFY2(noted(RunFile::write(path, run), &error), qPrintable(error));
-        QVERIFY(!RunLoader::load(path, {}, &error));
+        QVERIFY(!noted(RunLoader::load(path, {}), &error));
         QVERIFY2(error.startsWith(path + u": stamp 8 ("_s), qPrintable(error));
         QVERIFY2(error.contains(u"time_ns: 9223372036854775807"_s), qPrintable(error));
         QVERIFY2(error.contains(u"and 2 more"_s), qPrintable(error));
-        QVERIFY(!Report::build({path}, std::nullopt, {}, &error));
+        QVERIFY(!noted(Report::build({path}, std::nullopt, {}), &error));
         // The largest ROS time is fine, and so are the figures it gives.
         run = RunData::fromSamples(Pipeline(synthetic.topics, 0), synthetic.samples);
         for (RecordedStamp& st : run.stamps)
@@ -571,7 +571,7 @@ private slots:
                 = StampCodec::kMaxTimeNs - 1 - (&st - run.stamps.data()) % 2 * (StampCodec::kMaxTimeNs - 1);
         const QString edge = dir.filePath(u"edge.bsrun"_s);
         QVERIFY2(noted(RunFile::write(edge, run), &error), qPrintable(error));
-        const std::optional<Report> report = Report::build({edge}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({edge}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         const LatencyEngine& e = *report->runs().front()->engine;
         QCOMPARE(e.samples(), 5);
@@ -634,7 +634,7 @@ private slots:
         QCOMPARE(again->events[0].endNs, e.endNs);
 
         // The report of a run with events only: the events, no latency tables.
-        const std::optional<Report> report = Report::build({path}, std::nullopt, {}, &error);
+        const std::optional<Report> report = noted(Report::build({path}, std::nullopt, {}), &error);
         QVERIFY2(report, qPrintable(error));
         QVERIFY(report->hasEvents() && !report->hasLatency());
 

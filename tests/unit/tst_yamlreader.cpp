@@ -44,7 +44,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(u"plan.yaml"_s);
-        QVERIFY(AtomicFile::write(path, "samples: 5\nfactor: {}\n", nullptr, false));
+        QVERIFY(AtomicFile::write(path, "samples: 5\nfactor: {}\n", false));
         QByteArray text;
         const Result<ExperimentPlan> plan = ExperimentPlan::readFile(path, &text);
         QVERIFY(!plan);

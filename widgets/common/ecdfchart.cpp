@@ -327,15 +327,12 @@ QPixmap EcdfChart::toPixmap() const
     return const_cast<EcdfChart*>(this)->grab(); // grab() only paints
 }
 
-bool EcdfChart::save(const QString& path, QString* error) const
+Status EcdfChart::save(const QString& path) const
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != u"svg"_s && suffix != u"png"_s) {
-        if (error)
-            *error
-                = tr("%1: a chart is saved as SVG or PNG; give the file the suffix .svg or .png").arg(path);
-        return false;
-    }
+    if (suffix != u"svg"_s && suffix != u"png"_s)
+        return LocatedError {
+            tr("%1: a chart is saved as SVG or PNG; give the file the suffix .svg or .png").arg(path)};
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
     if (suffix == u"svg"_s) {
@@ -350,11 +347,9 @@ bool EcdfChart::save(const QString& path, QString* error) const
         for (const auto& p : m_panels)
             p->view->QWidget::render(&painter, p->view->mapTo(this, QPoint(0, 0)));
     } else if (!toPixmap().save(&buffer, "PNG")) {
-        if (error)
-            *error = tr("cannot encode the chart as PNG");
-        return false;
+        return LocatedError {tr("cannot encode the chart as PNG")};
     }
-    return AtomicFile::write(path, buffer.data(), error, false);
+    return AtomicFile::write(path, buffer.data(), false);
 }
 
 void EcdfChart::copyToClipboard() const

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <QColor>
 #include <QStringList>
 #include <QWidget>
@@ -54,7 +56,7 @@ public:
     /// The chart as the user sees it, for PNG files and the clipboard.
     QPixmap toPixmap() const;
     /// Writes PNG or SVG (by the suffix), atomically.
-    bool save(const QString& path, QString* error = nullptr) const;
+    Status save(const QString& path) const;
     void copyToClipboard() const;
 
 protected:

@@ -161,9 +161,8 @@ QLayout* ExperimentPage::createRunBar()
     m_resume->setToolTip(tr("Go on with the folder: skip the complete cells, redo the others"));
     m_stop->setToolTip(tr("Stop after cleaning up; Resume goes on"));
     const auto start = [this](bool resume) {
-        QString error;
-        if (!run(resume, &error))
-            QMessageBox::warning(this, tr("Experiment"), error);
+        if (const Status started = run(resume); !started)
+            QMessageBox::warning(this, tr("Experiment"), started.error().toString());
     };
     connect(m_run, &QPushButton::clicked, this, [start] { start(false); });
     connect(m_resume, &QPushButton::clicked, this, [start] { start(true); });
@@ -196,9 +195,10 @@ QWidget* ExperimentPage::createPlanPane()
     openFolderButton->setToolTip(tr("An experiment's folder: its plan, cells and report"));
     connect(openFolderButton, &QPushButton::clicked, this, [this] {
         const QString dir = QFileDialog::getExistingDirectory(this, tr("Open Experiment"), folder());
-        QString error;
-        if (!dir.isEmpty() && !openFolder(dir, &error))
-            QMessageBox::warning(this, tr("Open Experiment"), error);
+        if (dir.isEmpty())
+            return;
+        if (const Status opened = openFolder(dir); !opened)
+            QMessageBox::warning(this, tr("Open Experiment"), opened.error().toString());
     });
     m_examples->addItem(tr("Examples…"));
     const QDir examples(u":/examples"_s);
@@ -376,15 +376,14 @@ void ExperimentPage::loadState()
         updateButtons();
         return;
     }
-    QString why;
-    if (const auto state = ExperimentFolder(dir).readState(*m_plan, &why)) {
+    if (const Result<QList<CellStatus>> state = ExperimentFolder(dir).readState(*m_plan)) {
         m_statuses = *state;
         for (int i = 0; i < int(m_statuses.size()); ++i)
             updateRow(i);
         m_grid->resizeColumnsToContents();
         showCounts();
     } else {
-        m_status->setText(why);
+        m_status->setText(state.error().toString());
     }
     updateButtons();
     if (dir != m_reportFolder) // a run's end and Refresh read it again
@@ -494,34 +493,29 @@ bool ExperimentPage::isRunning() const
     return m_process->isRunning();
 }
 
-bool ExperimentPage::run(bool resume, QString* error)
+Status ExperimentPage::run(bool resume)
 {
-    const auto fail = [error](const QString& why) {
-        if (error)
-            *error = why;
-        return false;
-    };
     if (isRunning())
-        return fail(tr("An experiment is running already."));
+        return LocatedError {tr("An experiment is running already.")};
     checkPlan();
     if (!m_plan)
-        return fail(m_planStatus->text());
+        return LocatedError {m_planStatus->text()};
     const QString dir = folder();
     if (dir.isEmpty())
-        return fail(tr("Choose the folder the experiment's runs go to."));
+        return LocatedError {tr("Choose the folder the experiment's runs go to.")};
     if (!resume && ExperimentReport::isExperiment(dir))
-        return fail(tr("%1 holds an experiment already: Resume goes on with it, or choose another folder.")
-                        .arg(QDir::toNativeSeparators(dir)));
+        return LocatedError {
+            tr("%1 holds an experiment already: Resume goes on with it, or choose another folder.")
+                .arg(QDir::toNativeSeparators(dir))};
     // The child runs the plan's file: an edited or untitled plan is saved first.
     if (m_planPath.isEmpty() || m_planEdited) {
         if (m_planPath.isEmpty() || m_planPath.startsWith(u':')) {
             if (!QDir().mkpath(dir))
-                return fail(tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir)));
+                return LocatedError {tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir))};
             m_planPath = QDir(dir).absoluteFilePath(ExperimentFolder::planFileName()); // the copy it keeps
         }
-        QString why;
-        if (!AtomicFile::write(m_planPath, planText().toUtf8(), &why))
-            return fail(why);
+        if (Status written = AtomicFile::write(m_planPath, planText().toUtf8()); !written)
+            return written;
         m_planEdited = false;
     }
     if (!resume) {
@@ -540,7 +534,7 @@ bool ExperimentPage::run(bool resume, QString* error)
     m_status->setText(tr("Starting…"));
     m_views->setCurrentWidget(m_chart);
     updateButtons();
-    return true;
+    return {};
 }
 
 void ExperimentPage::stop()

@@ -43,9 +43,9 @@ public:
     ~ExperimentPage() override;
 
     /// Opens a plan file into the editor (and proposes a folder beside it).
-    bool openPlan(const QString& path, QString* error = nullptr);
+    Status openPlan(const QString& path);
     /// Opens an experiment's folder: its plan, the state of its cells, its report.
-    bool openFolder(const QString& directory, QString* error = nullptr);
+    Status openFolder(const QString& directory);
     void setPlanText(const QString& text);
     QString planText() const;
     void setPlanPath(const QString& path);
@@ -55,8 +55,8 @@ public:
 
     /// The bridgescope binary that runs the experiment (default: this program).
     void setProgram(const QString& path) { m_program = path; }
-    /// Saves the plan (when edited) and starts the experiment; false with `error` when it cannot.
-    bool run(bool resume, QString* error = nullptr);
+    /// Saves the plan (when edited) and starts the experiment; an error when it cannot.
+    Status run(bool resume);
     /// Asks the running experiment to stop after cleaning up.
     void stop();
     bool isRunning() const;
@@ -76,7 +76,7 @@ public:
     const LatencySeriesSet* liveSeries() const { return m_series.get(); }
     /// Exports the report in `format` ("md", "html", "tex", "csv", "json" or "pdf", by the suffix
     /// when empty); Markdown gets its ECDF figures beside it as SVG.
-    bool exportReport(const QString& path, QString* error = nullptr, const QString& format = QString());
+    Status exportReport(const QString& path, const QString& format = QString());
 
 signals:
     /// The user asked to see a finished cell's run on the Measure page.

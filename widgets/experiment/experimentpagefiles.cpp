@@ -18,14 +18,11 @@
 
 using namespace Qt::StringLiterals;
 
-bool ExperimentPage::openPlan(const QString& path, QString* error)
+Status ExperimentPage::openPlan(const QString& path)
 {
     QByteArray text;
-    if (const Result<ExperimentPlan> plan = ExperimentPlan::readFile(path, &text); !plan && text.isEmpty()) {
-        if (error)
-            *error = plan.error().toString();
-        return false;
-    }
+    if (const Result<ExperimentPlan> plan = ExperimentPlan::readFile(path, &text); !plan && text.isEmpty())
+        return plan.error();
     // A plan with an error opens too: the editor is where it gets fixed. Path and folder first,
     // so that the plan is checked, and its folder's state and report read, once.
     m_planPath = path;
@@ -33,44 +30,31 @@ bool ExperimentPage::openPlan(const QString& path, QString* error)
         m_folder->setText(
             QDir::toNativeSeparators(QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName())));
     setPlanText(QString::fromUtf8(text));
-    return true;
+    return {};
 }
 
-bool ExperimentPage::openFolder(const QString& directory, QString* error)
+Status ExperimentPage::openFolder(const QString& directory)
 {
-    if (!ExperimentReport::isExperiment(directory)) {
-        if (error)
-            *error = tr("%1 is not an experiment's folder (it has no %2)")
-                         .arg(directory, ExperimentFolder::stateFileName());
-        return false;
-    }
+    if (!ExperimentReport::isExperiment(directory))
+        return LocatedError {tr("%1 is not an experiment's folder (it has no %2)")
+                                 .arg(directory, ExperimentFolder::stateFileName())};
     m_folder->setText(QDir::toNativeSeparators(directory));
-    return openPlan(ExperimentFolder(directory).planPath(), error);
+    return openPlan(ExperimentFolder(directory).planPath());
 }
 
-bool ExperimentPage::exportReport(const QString& path, QString* error, const QString& format)
+Status ExperimentPage::exportReport(const QString& path, const QString& format)
 {
-    if (!m_report) {
-        if (error)
-            *error = tr("There is no report yet.");
-        return false;
-    }
+    if (!m_report)
+        return LocatedError {tr("There is no report yet.")};
     const QString kind = format.isEmpty() ? QFileInfo(path).suffix().toLower() : format;
     const QList<ExperimentReport::Statistic> statistics {
         ExperimentReport::Statistic(m_statistic->currentData().toInt())};
     ReportFormats::Format f;
-    if (!ReportFormats::parse(kind == u"htm"_s ? u"html"_s : kind, &f)) {
-        if (error)
-            *error = tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind);
-        return false;
-    }
-    QString why;
-    if (m_report->exportTo(path, f, statistics, &why).isEmpty() && !why.isEmpty()) {
-        if (error)
-            *error = why;
-        return false;
-    }
-    return true;
+    if (!ReportFormats::parse(kind == u"htm"_s ? u"html"_s : kind, &f))
+        return LocatedError {tr("Unknown report format '%1' (md, html, tex, csv, json, pdf).").arg(kind)};
+    if (const Result<QByteArray> exported = m_report->exportTo(path, f, statistics); !exported)
+        return exported.error();
+    return {};
 }
 
 void ExperimentPage::chooseExport()
@@ -81,9 +65,8 @@ void ExperimentPage::chooseExport()
         tr("PDF (*.pdf);;Markdown (*.md);;HTML (*.html);;LaTeX (*.tex);;CSV (*.csv);;JSON (*.json)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!exportReport(path, &error))
-        QMessageBox::warning(this, tr("Export Report"), error);
+    if (const Status exported = exportReport(path); !exported)
+        QMessageBox::warning(this, tr("Export Report"), exported.error().toString());
     else
         m_status->setText(tr("Report written to %1").arg(QDir::toNativeSeparators(path)));
 }
@@ -99,9 +82,10 @@ void ExperimentPage::choosePlan()
 {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Plan"), QFileInfo(m_planPath).path(),
                                                       tr("Experiment plans (*.yaml *.yml);;All files (*)"));
-    QString error;
-    if (!path.isEmpty() && !openPlan(path, &error))
-        QMessageBox::warning(this, tr("Open Plan"), error);
+    if (path.isEmpty())
+        return;
+    if (const Status opened = openPlan(path); !opened)
+        QMessageBox::warning(this, tr("Open Plan"), opened.error().toString());
 }
 
 void ExperimentPage::savePlanAs()
@@ -110,9 +94,8 @@ void ExperimentPage::savePlanAs()
                                                       tr("Experiment plans (*.yaml *.yml)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!AtomicFile::write(path, planText().toUtf8(), &error))
-        QMessageBox::warning(this, tr("Save Plan"), error);
+    if (const Status written = AtomicFile::write(path, planText().toUtf8()); !written)
+        QMessageBox::warning(this, tr("Save Plan"), written.error().toString());
     else
         setPlanPath(path);
 }
@@ -123,7 +106,7 @@ void ExperimentPage::loadExample(int index)
     m_examples->setCurrentIndex(0);
     if (path.isEmpty())
         return;
-    const std::optional<QByteArray> text = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
+    const Result<QByteArray> text = RegularFile::readHead(path, YamlLimits::maxBytes + 1);
     if (!text)
         return;
     setPlanText(QString::fromUtf8(*text));

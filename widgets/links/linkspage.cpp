@@ -326,75 +326,64 @@ void LinksPage::setMapConfigs(const QList<WatchSession::Config>& configs)
         if (l.added)
             next << l;
     m_configs = next;
-    QString why;
-    if (!applyConfigs(&why)) {
+    if (const Status applied = applyConfigs(); !applied) {
         // An edit made the watched configs pass the limit: watching stops, and says why.
         for (Listed& l : m_configs)
             l.watched = false;
-        applyConfigs();
+        static_cast<void>(applyConfigs()); // none watched: within any limit
         listConfigs();
-        m_plan->setText(tr("Watching stopped: %1").arg(why));
+        m_plan->setText(tr("Watching stopped: %1").arg(applied.error().toString()));
         return;
     }
     listConfigs();
 }
 
-bool LinksPage::addConfigFiles(const QStringList& paths, QString* error, bool watch)
+Status LinksPage::addConfigFiles(const QStringList& paths, bool watch)
 {
     QList<Listed> added;
     for (const QString& path : paths) {
         const Result<QByteArray> bytes = YamlReader::readFile(path);
         const ConfigReadResult read = bytes ? ConfigReader::read(*bytes) : ConfigReadResult();
-        if (!read.parsed) {
-            if (error)
-                *error = tr("%1 is not a bridge config that can be read").arg(path);
-            return false;
-        }
+        if (!read.parsed)
+            return LocatedError {tr("%1 is not a bridge config that can be read").arg(path)};
         added.append({{QFileInfo(path).completeBaseName(), QFileInfo(path).absoluteFilePath(), read.config},
                       true,
                       watch});
     }
     const QList<Listed> before = m_configs;
     m_configs << added;
-    QString why;
-    if (!applyConfigs(&why)) {
+    if (Status applied = applyConfigs(); !applied) {
         m_configs = before;
-        if (error)
-            *error = why;
-        m_plan->setText(why);
-        return false;
+        m_plan->setText(applied.error().toString());
+        return applied;
     }
     listConfigs();
-    return true;
+    return {};
 }
 
-bool LinksPage::setWatched(const QString& name, bool watched, QString* error)
+Status LinksPage::setWatched(const QString& name, bool watched)
 {
     const QString file = QFileInfo(name).absoluteFilePath();
     qsizetype at = -1;
     for (qsizetype i = 0; i < m_configs.size() && at < 0; ++i)
         if (m_configs[i].config.name == name || m_configs[i].config.file == file)
             at = i;
-    if (at < 0) {
-        if (error)
-            *error = tr("No config %1 is open").arg(name);
-        return false;
-    }
+    if (at < 0)
+        return LocatedError {tr("No config %1 is open").arg(name)};
     if (m_configs[at].watched == watched)
-        return true;
+        return {};
     m_configs[at].watched = watched;
-    QString why;
-    const bool applied = applyConfigs(&why);
-    if (!applied) {
-        m_configs[at].watched = !watched;
-        why = tr("Watching %1 refused: %2").arg(m_configs[at].config.name, why);
-        if (error)
-            *error = why;
+    const Status applied = applyConfigs();
+    if (applied) {
+        listConfigs();
+        return {};
     }
+    m_configs[at].watched = !watched;
+    const LocatedError refused {
+        tr("Watching %1 refused: %2").arg(m_configs[at].config.name, applied.error().toString())};
     listConfigs();
-    if (!applied)
-        m_plan->setText(why);
-    return applied;
+    m_plan->setText(refused.message);
+    return refused;
 }
 
 void LinksPage::watchWhenListed(const QString& file)
@@ -402,17 +391,17 @@ void LinksPage::watchWhenListed(const QString& file)
     m_watchWhenListed.insert(QFileInfo(file).absoluteFilePath());
 }
 
-bool LinksPage::applyConfigs(QString* error)
+Status LinksPage::applyConfigs()
 {
     QList<WatchSession::Config> configs;
     for (const Listed& l : std::as_const(m_configs))
         if (l.watched)
             configs << l.config;
-    if (!m_watch->setConfigs(configs, error))
-        return false;
+    if (Status set = m_watch->setConfigs(configs); !set)
+        return set;
     m_model->refresh();
     updateSummary();
-    return true;
+    return {};
 }
 
 void LinksPage::listConfigs()
@@ -496,7 +485,7 @@ void LinksPage::configChecked(QTreeWidgetItem* item)
     if (checked != m_configs[row].watched) {
         const QString key
             = m_configs[row].config.file.isEmpty() ? m_configs[row].config.name : m_configs[row].config.file;
-        setWatched(key, checked);
+        static_cast<void>(setWatched(key, checked)); // a refusal is shown in the plan line
     }
 }
 
@@ -504,9 +493,10 @@ void LinksPage::chooseConfigs()
 {
     const QStringList paths = QFileDialog::getOpenFileNames(
         this, tr("Watch Bridge Configs"), QString(), tr("Bridge configs (*.yaml *.yml);;All files (*)"));
-    QString error;
-    if (!paths.isEmpty() && !addConfigFiles(paths, &error))
-        m_plan->setText(error);
+    if (paths.isEmpty())
+        return;
+    if (const Status added = addConfigFiles(paths); !added)
+        m_plan->setText(added.error().toString());
 }
 
 void LinksPage::editRules()

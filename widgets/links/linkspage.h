@@ -40,12 +40,12 @@ public:
     /// Every config open on the Map page; they replace those given before. A watched config that
     /// is no longer among them is no longer watched.
     void setMapConfigs(const QList<WatchSession::Config>& configs);
-    /// Adds the config files, watched when `watch` (within the limit); false with `error` for one
-    /// that cannot be read, or when watching them would pass the limit.
-    bool addConfigFiles(const QStringList& paths, QString* error = nullptr, bool watch = false);
-    /// Turns watching of the listed config `name` (its name, or its file) on or off; false with
-    /// `error` when there is no such config or watching it would pass the limit.
-    bool setWatched(const QString& name, bool watched, QString* error = nullptr);
+    /// Adds the config files, watched when `watch` (within the limit); an error for one that
+    /// cannot be read, or when watching them would pass the limit.
+    Status addConfigFiles(const QStringList& paths, bool watch = false);
+    /// Turns watching of the listed config `name` (its name, or its file) on or off; an error when
+    /// there is no such config or watching it would pass the limit.
+    Status setWatched(const QString& name, bool watched);
     /// The config in `file` is watched as soon as it is listed (the demo lab's own configs).
     void watchWhenListed(const QString& file);
 
@@ -62,7 +62,7 @@ private:
     QWidget* createDetailPane();
     QWidget* createEventLog();
     QWidget* createConfigList();
-    bool applyConfigs(QString* error = nullptr);
+    Status applyConfigs();
     void listConfigs();
     void showPlan();
     void configChecked(QTreeWidgetItem* item);

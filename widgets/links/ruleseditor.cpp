@@ -81,7 +81,8 @@ void RulesEditor::save()
 {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save Watch Rules"), u"watch-rules.yaml"_s,
                                                       tr("Rules (*.yaml *.yml);;All files (*)"));
-    QString error;
-    if (!path.isEmpty() && !AtomicFile::write(path, m_text->toPlainText().toUtf8(), &error))
-        m_status->setText(error);
+    if (path.isEmpty())
+        return;
+    if (const Status written = AtomicFile::write(path, m_text->toPlainText().toUtf8()); !written)
+        m_status->setText(written.error().toString());
 }

@@ -204,9 +204,8 @@ bool ConfigFileController::exportTo(const QString& path, ConfigLayout layout)
 {
     QStringList notes;
     const QString text = ConfigWriter::write(m_doc->config(), layout, &notes);
-    QString error;
-    if (!AtomicFile::write(path, text.toUtf8(), &error)) {
-        showError(tr("Cannot export the config"), error);
+    if (const Status written = AtomicFile::write(path, text.toUtf8()); !written) {
+        showError(tr("Cannot export the config"), written.error().toString());
         return false;
     }
     emit statusMessage(tr("Exported %1 as %2%3")
@@ -220,9 +219,8 @@ bool ConfigFileController::writePeer(const QString& path, const QString& clientI
     const PeerConfig::Result peer = PeerConfig::make(m_doc->config(), clientId);
     QStringList notes = peer.notes;
     const QString text = ConfigWriter::write(peer.config, m_doc->layout(), &notes);
-    QString error;
-    if (!AtomicFile::write(path, text.toUtf8(), &error)) {
-        showError(tr("Cannot write the peer config"), error);
+    if (const Status written = AtomicFile::write(path, text.toUtf8()); !written) {
+        showError(tr("Cannot write the peer config"), written.error().toString());
         return false;
     }
     emit statusMessage(tr("Wrote the peer config %1%2")

@@ -436,9 +436,9 @@ void MeasurePage::updateEditable()
     m_window->setEnabled(!m_measure->isRecording());
 }
 
-bool MeasurePage::saveChart(const QString& path, QString* error)
+Status MeasurePage::saveChart(const QString& path)
 {
-    return m_chart->save(path, error);
+    return m_chart->save(path);
 }
 
 void MeasurePage::chooseChartFile()
@@ -447,9 +447,8 @@ void MeasurePage::chooseChartFile()
                                                       tr("SVG (*.svg);;PNG (*.png)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!saveChart(path, &error))
-        QMessageBox::warning(this, tr("Export Chart"), error);
+    if (const Status saved = saveChart(path); !saved)
+        QMessageBox::warning(this, tr("Export Chart"), saved.error().toString());
 }
 
 void MeasurePage::applyEdit(const Pipeline& pipeline)
@@ -584,27 +583,24 @@ void MeasurePage::updateCounts()
     m_counts->setText(text);
 }
 
-bool MeasurePage::loadPipeline(const QString& path, QString* error)
+Status MeasurePage::loadPipeline(const QString& path)
 {
     const Result<Pipeline> p = Pipeline::readFile(path);
-    if (!p) {
-        if (error)
-            *error = p.error().toString();
-        return false;
-    }
+    if (!p)
+        return p.error();
     m_pipelineFile = path;
     m_measure->setPipeline(*p);
     onPipelineChanged();
-    return true;
+    return {};
 }
 
-bool MeasurePage::savePipeline(const QString& path, QString* error)
+Status MeasurePage::savePipeline(const QString& path)
 {
-    if (!m_measure->pipeline().save(path, error))
-        return false;
+    if (Status saved = m_measure->pipeline().save(path); !saved)
+        return saved;
     m_pipelineFile = path;
     onPipelineChanged();
-    return true;
+    return {};
 }
 
 void MeasurePage::choosePipelineFile()
@@ -614,9 +610,8 @@ void MeasurePage::choosePipelineFile()
                                        tr("Pipelines (*.yaml *.yml);;All files (*)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!loadPipeline(path, &error))
-        QMessageBox::warning(this, tr("Load Pipeline"), error);
+    if (const Status loaded = loadPipeline(path); !loaded)
+        QMessageBox::warning(this, tr("Load Pipeline"), loaded.error().toString());
 }
 
 void MeasurePage::chooseSaveFile()
@@ -626,9 +621,8 @@ void MeasurePage::chooseSaveFile()
         tr("Pipelines (*.yaml *.yml)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!savePipeline(path, &error))
-        QMessageBox::warning(this, tr("Save Pipeline"), error);
+    if (const Status saved = savePipeline(path); !saved)
+        QMessageBox::warning(this, tr("Save Pipeline"), saved.error().toString());
 }
 
 void MeasurePage::removeSelectedStamps()

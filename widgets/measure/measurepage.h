@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
+
 #include <QWidget>
 
 class NameDelegate;
@@ -31,15 +33,15 @@ class MeasurePage : public QWidget
 public:
     MeasurePage(MeasureSession* measure, QWidget* parent = nullptr);
 
-    bool loadPipeline(const QString& path, QString* error = nullptr);
-    bool savePipeline(const QString& path, QString* error = nullptr);
+    Status loadPipeline(const QString& path);
+    Status savePipeline(const QString& path);
 
     EcdfChart* chart() const { return m_chart; }
     QAction* pauseAction() const { return m_pause; }
     QAction* resetAction() const { return m_reset; }
     RunBar* runBar() const { return m_runBar; }
     /// Saves the chart as PNG or SVG (by the suffix).
-    bool saveChart(const QString& path, QString* error = nullptr);
+    Status saveChart(const QString& path);
 
     /// How often the page shows new figures while they come (MeasureSession::setPublishInterval).
     static constexpr int kRefreshMs = 500;

@@ -106,7 +106,7 @@ void RunBar::toggleRecording()
         QMessageBox::warning(this, tr("Record a Run"), started.error().toString());
 }
 
-bool RunBar::openRun(const QString& path, QString* error)
+Status RunBar::openRun(const QString& path)
 {
     // Large runs take a moment: show progress (after half a second) and allow cancelling.
     QProgressDialog progress(tr("Reading %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 100, this);
@@ -120,17 +120,14 @@ bool RunBar::openRun(const QString& path, QString* error)
     QStringList warnings;
     RunLoader::Options options;
     options.skipBadRows = true; // an interactive import shows what was skipped instead of refusing
-    std::optional<RunData> run = RunLoader::load(path, options, error, &warnings, report);
+    Result<RunData> run = RunLoader::load(path, options, &warnings, report);
     const bool cancelled = progress.wasCanceled();
     progress.reset();
-    if (!run) {
-        if (cancelled && error)
-            error->clear();
-        return false;
-    }
-    if (!m_measure->showRun(*run, error))
-        return false;
-    m_shown = std::move(run);
+    if (!run)
+        return cancelled ? LocatedError {} : run.error();
+    if (QString why; !m_measure->showRun(*run, &why))
+        return LocatedError {why};
+    m_shown = std::move(run).value();
     m_shownPath = path;
     if (!warnings.isEmpty())
         QMessageBox::information(this, tr("Open Run"),
@@ -138,7 +135,7 @@ bool RunBar::openRun(const QString& path, QString* error)
                                      .arg(warnings.size())
                                      .arg(warnings.mid(0, 10).join(u'\n')));
     updateState();
-    return true;
+    return {};
 }
 
 Result<void> RunBar::saveRunAs(const QString& path)
@@ -170,8 +167,8 @@ void RunBar::chooseRun()
         tr("Runs, suite CSV and bags (*.%1 *.csv *.bag);;All files (*)").arg(RunFile::suffix()));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!openRun(path, &error) && !error.isEmpty()) // empty: the user cancelled
+    const Status opened = openRun(path);
+    if (const QString error = opened.error().toString(); !error.isEmpty()) // empty: the user cancelled
         QMessageBox::warning(this, tr("Open Run"), error);
 }
 

@@ -29,8 +29,8 @@ public:
     Result<void> startRecording(const QString& path, const QString& name, const QString& notes);
     Result<void> stopRecording();
     /// Opens a run, suite CSV or bag (with a progress dialog when it takes long). When the user
-    /// cancels, it returns false and leaves `error` empty.
-    bool openRun(const QString& path, QString* error = nullptr);
+    /// cancels, the error is empty.
+    Status openRun(const QString& path);
     Result<void> saveRunAs(const QString& path);
     void backToLive();
 

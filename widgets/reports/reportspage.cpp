@@ -227,17 +227,14 @@ QString ReportsPage::previewText() const
     return m_preview;
 }
 
-std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
+Result<ReportJob::Request> ReportsPage::request() const
 {
     ReportJob::Request r;
     r.inputs = inputs();
     if (!m_pipeline->text().trimmed().isEmpty()) {
         Result<Pipeline> pipeline = Pipeline::readFile(m_pipeline->text().trimmed());
-        if (!pipeline) {
-            if (error)
-                *error = pipeline.error().toString();
-            return std::nullopt;
-        }
+        if (!pipeline)
+            return pipeline.error();
         r.pipeline = std::move(pipeline).value();
     }
     r.options.window = m_window->value();
@@ -247,16 +244,14 @@ std::optional<ReportJob::Request> ReportsPage::request(QString* error) const
     return r;
 }
 
-QByteArray ReportsPage::render(const Report& report, ReportFormats::Format format, QString* error) const
+Result<QByteArray> ReportsPage::render(const Report& report, ReportFormats::Format format) const
 {
     if (format == ReportFormats::Format::Csv && report.isComparison()) {
         // The page names its own checkbox, not the command line's --join.
-        if (error)
-            *error = tr("a CSV file holds a single run: give one input, or tick “%1”")
-                         .arg(QString(m_join->text()).remove(u'&'));
-        return {};
+        return LocatedError {tr("a CSV file holds a single run: give one input, or tick “%1”")
+                                 .arg(QString(m_join->text()).remove(u'&'))};
     }
-    return ReportFormats::render(report, format, m_perSample->isChecked(), error);
+    return ReportFormats::render(report, format, m_perSample->isChecked());
 }
 
 void ReportsPage::schedulePreview()
@@ -281,10 +276,9 @@ void ReportsPage::startPreview()
         emit previewUpdated();
         return;
     }
-    QString error;
-    std::optional<ReportJob::Request> r = request(&error);
+    Result<ReportJob::Request> r = request();
     if (!r) {
-        showPreview(nullptr, error);
+        showPreview(nullptr, r.error().toString());
         return;
     }
     m_job = new ReportJob(std::move(*r), this);
@@ -318,7 +312,6 @@ void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QStri
         return;
     }
     const ReportFormats::Format f = format();
-    QString why;
     if (ReportFormats::entry(f).richPreview) {
         // Rich text cannot show inline SVG: the figure comes as an image rendered from it.
         QSvgRenderer svg(ReportFormats::ecdfSvg(*report));
@@ -334,8 +327,8 @@ void ReportsPage::showPreview(const std::shared_ptr<Report>& report, const QStri
         m_rich->setHtml(m_preview);
         m_previewStack->setCurrentWidget(m_rich);
     } else {
-        const QByteArray text = render(*report, f, &why);
-        m_preview = text.isEmpty() && !why.isEmpty() ? why : QString::fromUtf8(text);
+        const Result<QByteArray> text = render(*report, f);
+        m_preview = text ? QString::fromUtf8(*text) : text.error().toString();
         m_text->setPlainText(m_preview);
         m_previewStack->setCurrentWidget(m_text);
     }
@@ -367,15 +360,11 @@ void ReportsPage::dropEvent(QDropEvent* event)
     emit measurementsDropped(files);
 }
 
-bool ReportsPage::exportTo(const QString& path, QString* error)
+Status ReportsPage::exportTo(const QString& path)
 {
-    QString why;
-    std::optional<ReportJob::Request> r = request(&why);
-    if (!r) {
-        if (error)
-            *error = why;
-        return false;
-    }
+    Result<ReportJob::Request> r = request();
+    if (!r)
+        return r.error();
     // A window-modal progress dialog over a local event loop: the page stays painted, the rest of
     // the window keeps running, and Cancel reaches the job.
     ReportJob job(std::move(*r));
@@ -384,6 +373,7 @@ bool ReportsPage::exportTo(const QString& path, QString* error)
     progress.setMinimumDuration(500);
     QEventLoop loop;
     std::shared_ptr<Report> report;
+    QString why;
     // The Cancel button emits canceled(); QProgressDialog::cancel() (Escape, or a caller) only sets
     // wasCanceled(), which each progress step looks at.
     connect(&progress, &QProgressDialog::canceled, &job, &ReportJob::cancel);
@@ -402,18 +392,14 @@ bool ReportsPage::exportTo(const QString& path, QString* error)
     job.start();
     loop.exec();
     progress.reset();
-    if (!report) {
-        if (error)
-            *error = job.isCancelled() ? tr("cancelled; nothing written") : why;
-        return false;
-    }
-    const QByteArray bytes = render(*report, format(), &why);
-    if (bytes.isEmpty()) {
-        if (error)
-            *error = why;
-        return false;
-    }
-    return AtomicFile::write(path, bytes, error, false);
+    if (!report)
+        return LocatedError {job.isCancelled() ? tr("cancelled; nothing written") : why};
+    const Result<QByteArray> bytes = render(*report, format());
+    if (!bytes)
+        return bytes.error();
+    if (bytes->isEmpty())
+        return LocatedError {}; // nothing to write, and nothing wrong to say
+    return AtomicFile::write(path, *bytes, false);
 }
 
 void ReportsPage::chooseInputs()
@@ -443,9 +429,8 @@ void ReportsPage::chooseExport()
                                                       tr("%1 files (*.%2)").arg(suffix.toUpper(), suffix));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!exportTo(path, &error))
-        QMessageBox::warning(this, tr("Export Report"), error);
+    if (const Status exported = exportTo(path); !exported)
+        QMessageBox::warning(this, tr("Export Report"), exported.error().toString());
     else
         m_status->setText(tr("Written: %1").arg(path));
 }

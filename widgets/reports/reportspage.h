@@ -40,7 +40,7 @@ public:
     void setPipelineFile(const QString& path);
 
     /// Builds the report and writes it to `path` (in the selected format), with a progress dialog.
-    bool exportTo(const QString& path, QString* error = nullptr);
+    Status exportTo(const QString& path);
     /// What the preview shows now (plain text, or the HTML of rich previews).
     QString previewText() const;
     bool isBusy() const;
@@ -72,9 +72,9 @@ private:
     void schedulePreview();
     void startPreview();
     void showPreview(const std::shared_ptr<Report>& report, const QString& error);
-    /// What the page's fields ask for; nullopt with `error` when the pipeline file does not load.
-    std::optional<ReportJob::Request> request(QString* error) const;
-    QByteArray render(const Report& report, ReportFormats::Format format, QString* error) const;
+    /// What the page's fields ask for; an error when the pipeline file does not load.
+    Result<ReportJob::Request> request() const;
+    Result<QByteArray> render(const Report& report, ReportFormats::Format format) const;
 
     QListWidget* m_inputs;
     QComboBox* m_format;

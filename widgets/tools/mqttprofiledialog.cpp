@@ -140,9 +140,8 @@ bool MqttProfileDialog::rememberPassword() const
 
 void MqttProfileDialog::accept()
 {
-    QString error;
-    if (!profile().validate(&error)) {
-        m_error->setText(error);
+    if (const Status valid = profile().validate(); !valid) {
+        m_error->setText(valid.error().toString());
         m_error->show();
         return;
     }
