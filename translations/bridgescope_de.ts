@@ -5209,14 +5209,6 @@ factors:
         <translation>topics_in_order ist leer</translation>
     </message>
     <message>
-        <source>%1 (%2 → %3)</source>
-        <translation>%1 (%2 → %3)</translation>
-    </message>
-    <message>
-        <source>%1 → %2</source>
-        <translation>%1 → %2</translation>
-    </message>
-    <message>
         <source>every entry of topics_in_order must be a topic name</source>
         <translation>jeder Eintrag von topics_in_order muss ein Topic-Name sein</translation>
     </message>
@@ -5226,6 +5218,17 @@ factors:
     </message>
     <message>
         <source>the topic %1 holds the control character U+%2 at %3</source>
+<context>
+    <name>PipelineLabels</name>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2 → %3)</source>
+        <translation>%1 (%2 → %3)</translation>
+    </message>
+</context>
         <translation>das Topic %1 enthält das Steuerzeichen U+%2 an Stelle %3</translation>
     </message>
     <message>
