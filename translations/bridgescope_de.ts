@@ -3117,33 +3117,6 @@ factors:
     </message>
 </context>
 <context>
-    <name>LatencyEngine</name>
-    <message>
-        <source>total</source>
-        <translation>gesamt</translation>
-    </message>
-    <message>
-        <source>communication, round trip</source>
-        <translation>Kommunikation, hin und zurück</translation>
-    </message>
-    <message>
-        <source>communication, one way (half the round trip)</source>
-        <translation>Kommunikation, eine Richtung (halbe Umlaufzeit)</translation>
-    </message>
-    <message>
-        <source>clock offset (%1 ahead of %2)</source>
-        <translation>Uhrenversatz (%1 vor %2)</translation>
-    </message>
-    <message>
-        <source>communication, there (%1 → %2)</source>
-        <translation>Kommunikation, hin (%1 → %2)</translation>
-    </message>
-    <message>
-        <source>communication, back (%1 → %2)</source>
-        <translation>Kommunikation, zurück (%1 → %2)</translation>
-    </message>
-</context>
-<context>
     <name>LatencyStatsModel</name>
     <message>
         <source>Crosses from %1 to %2: the raw value includes the clock offset between the hosts.</source>
@@ -5218,17 +5191,6 @@ factors:
     </message>
     <message>
         <source>the topic %1 holds the control character U+%2 at %3</source>
-<context>
-    <name>PipelineLabels</name>
-    <message>
-        <source>%1 → %2</source>
-        <translation>%1 → %2</translation>
-    </message>
-    <message>
-        <source>%1 (%2 → %3)</source>
-        <translation>%1 (%2 → %3)</translation>
-    </message>
-</context>
         <translation>das Topic %1 enthält das Steuerzeichen U+%2 an Stelle %3</translation>
     </message>
     <message>
@@ -5254,6 +5216,17 @@ factors:
     <message>
         <source>the host of %1 holds a control character</source>
         <translation>der Host von %1 enthält ein Steuerzeichen</translation>
+    </message>
+</context>
+<context>
+    <name>PipelineLabels</name>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2 → %3)</source>
+        <translation>%1 (%2 → %3)</translation>
     </message>
 </context>
 <context>
@@ -5283,6 +5256,33 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
     <message>
         <source>Stamps</source>
         <translation>Zeitstempel</translation>
+    </message>
+</context>
+<context>
+    <name>PipelineSeries</name>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>communication, round trip</source>
+        <translation>Kommunikation, hin und zurück</translation>
+    </message>
+    <message>
+        <source>communication, one way (half the round trip)</source>
+        <translation>Kommunikation, eine Richtung (halbe Umlaufzeit)</translation>
+    </message>
+    <message>
+        <source>communication, there (%1 → %2)</source>
+        <translation>Kommunikation, hin (%1 → %2)</translation>
+    </message>
+    <message>
+        <source>communication, back (%1 → %2)</source>
+        <translation>Kommunikation, zurück (%1 → %2)</translation>
+    </message>
+    <message>
+        <source>clock offset (%1 ahead of %2)</source>
+        <translation>Uhrenversatz (%1 vor %2)</translation>
     </message>
 </context>
 <context>
