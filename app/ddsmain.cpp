@@ -192,11 +192,13 @@ private:
 
     void drain()
     {
+        Ros2TopicReaders& readers = m_engine.readers();
         for (const QString& topic : m_server.watched())
-            sendSamples(Kind::Samples, topic, m_engine.droppedMessages(topic), m_engine.takeMessages(topic));
-        std::vector<SourceHead> arrivals = m_engine.takeArrivals();
+            sendSamples(Kind::Samples, topic, readers.droppedMessages(topic), readers.takeMessages(topic));
+        std::vector<SourceHead> arrivals = readers.takeArrivals();
         if (!arrivals.empty())
-            send(Kind::Arrivals, Ros2Protocol::encodeArrivals({m_engine.droppedArrivals(), std::move(arrivals)}));
+            send(Kind::Arrivals,
+                 Ros2Protocol::encodeArrivals({readers.droppedArrivals(), std::move(arrivals)}));
         if (++m_ticks * Ros2Engine::kPollMs >= Ros2Protocol::kStatsMs) {
             m_ticks = 0;
             sendStats();
@@ -224,7 +226,7 @@ private:
     /// The monitored topics' figures; a topic's last message only when it changed.
     void sendStats()
     {
-        const QHash<QString, Ros2MonitorStats> stats = m_engine.snapshot(wallClockNs());
+        const QHash<QString, Ros2MonitorStats> stats = m_engine.readers().snapshot(wallClockNs());
         if (stats.isEmpty())
             return;
         QList<Ros2Protocol::TopicStats> out;

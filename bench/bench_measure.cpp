@@ -51,7 +51,7 @@ void chartUpdate()
 
     EcdfChart chart;
     chart.resize(1200, 700);
-    chart.setSource(&engine);
+    chart.setSource(&engine.pipelineSeries());
     chart.setSeries({u"total"_s});
     chart.show();
     QTest::qWait(100);

@@ -1995,6 +1995,65 @@ Rückgabewert: 0 alle Zellen vollständig, 1 eine Zelle fehlgeschlagen, 2 falsch
     </message>
 </context>
 <context>
+    <name>ExperimentFindings</name>
+    <message>
+        <source>%1 ms [%2, %3] ms, 95 %</source>
+        <translation>%1 ms [%2, %3] ms, 95 %</translation>
+    </message>
+    <message>
+        <source>%1: no significant difference between %2 and %3: the totals shift by %4 (the means: %5 and %6 ms)</source>
+        <translation>%1: kein signifikanter Unterschied zwischen %2 und %3: die Gesamtwerte verschieben sich um %4 (die Mittelwerte: %5 und %6 ms)</translation>
+    </message>
+    <message>
+        <source>%1: the total mean is lowest at %2 (%3 ms) and highest at %4 (%5 ms), %6 ms more (%7 %)</source>
+        <translation>%1: der mittlere Gesamtwert ist bei %2 am niedrigsten (%3 ms) und bei %4 am höchsten (%5 ms), %6 ms mehr (%7 %)</translation>
+    </message>
+    <message>
+        <source>; the totals shift by %1</source>
+        <translation>; die Gesamtwerte verschieben sich um %1</translation>
+    </message>
+    <message>
+        <source> (too few samples for an interval)</source>
+        <translation> (zu wenige Samples für ein Intervall)</translation>
+    </message>
+    <message>
+        <source>Cell %1 (%2) failed: %3</source>
+        <translation>Zelle %1 (%2) fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>Cell %1 (%2) is not done (%3): --resume finishes it.</source>
+        <translation>Zelle %1 (%2) ist nicht fertig (%3): --resume vollendet sie.</translation>
+    </message>
+    <message>
+        <source>Cell %1 is left out: %2</source>
+        <translation>Zelle %1 bleibt unberücksichtigt: %2</translation>
+    </message>
+    <message>
+        <source>Throughput with %1 (%2 bytes): up to %3 Hz sustained, %4 MB/s.</source>
+        <translation>Durchsatz mit %1 (%2 Bytes): bis %3 Hz gehalten, %4 MB/s.</translation>
+    </message>
+    <message>
+        <source>Throughput with %1 (%2 bytes): not even %3 Hz was sustained.</source>
+        <translation>Durchsatz mit %1 (%2 Bytes): nicht einmal %3 Hz wurden gehalten.</translation>
+    </message>
+    <message>
+        <source>; most of it in %1 (%2 ms).</source>
+        <translation>; das meiste davon in %1 (%2 ms).</translation>
+    </message>
+    <message>
+        <source>QoS 1 and 2 wait for the broker&apos;s acknowledgements (PUBACK; PUBREC, PUBREL, PUBCOMP), and a client without TCP_NODELAY (Paho) can wait for a delayed ACK of up to 40 ms on each.</source>
+        <translation>QoS 1 und 2 warten auf die Bestätigungen des Brokers (PUBACK; PUBREC, PUBREL, PUBCOMP), und ein Client ohne TCP_NODELAY (Paho) kann auf jede bis zu 40 ms auf ein verzögertes ACK warten.</translation>
+    </message>
+    <message>
+        <source>Announcing the type before every message (mqtt_client 2.2.1) puts a small publish in front of each message; without TCP_NODELAY the message then waits for the delayed ACK of the first, up to 40 ms.</source>
+        <translation>Die Typankündigung vor jeder Nachricht (mqtt_client 2.2.1) stellt jeder Nachricht eine kleine Veröffentlichung voran; ohne TCP_NODELAY wartet die Nachricht dann bis zu 40 ms auf das verzögerte ACK der ersten.</translation>
+    </message>
+    <message>
+        <source>The smallest payload (%1) is slower through the interfaces than %2 (%3 against %4 ms): small messages wait for delayed ACKs where Nagle&apos;s algorithm holds them.</source>
+        <translation>Die kleinste Nutzlast (%1) ist in den Schnittstellen langsamer als %2 (%3 gegenüber %4 ms): kleine Nachrichten warten auf verzögerte ACKs, wo Nagles Algorithmus sie zurückhält.</translation>
+    </message>
+</context>
+<context>
     <name>ExperimentPage</name>
     <message>
         <source>&amp;Run</source>
@@ -2503,38 +2562,6 @@ factors:
         <translation>p99</translation>
     </message>
     <message>
-        <source>Cell %1 (%2) failed: %3</source>
-        <translation>Zelle %1 (%2) fehlgeschlagen: %3</translation>
-    </message>
-    <message>
-        <source>Cell %1 (%2) is not done (%3): --resume finishes it.</source>
-        <translation>Zelle %1 (%2) ist nicht fertig (%3): --resume vollendet sie.</translation>
-    </message>
-    <message>
-        <source>Cell %1 is left out: %2</source>
-        <translation>Zelle %1 bleibt unberücksichtigt: %2</translation>
-    </message>
-    <message>
-        <source>%1: the total mean is lowest at %2 (%3 ms) and highest at %4 (%5 ms), %6 ms more (%7 %)</source>
-        <translation>%1: der mittlere Gesamtwert ist bei %2 am niedrigsten (%3 ms) und bei %4 am höchsten (%5 ms), %6 ms mehr (%7 %)</translation>
-    </message>
-    <message>
-        <source>; most of it in %1 (%2 ms).</source>
-        <translation>; das meiste davon in %1 (%2 ms).</translation>
-    </message>
-    <message>
-        <source>QoS 1 and 2 wait for the broker&apos;s acknowledgements (PUBACK; PUBREC, PUBREL, PUBCOMP), and a client without TCP_NODELAY (Paho) can wait for a delayed ACK of up to 40 ms on each.</source>
-        <translation>QoS 1 und 2 warten auf die Bestätigungen des Brokers (PUBACK; PUBREC, PUBREL, PUBCOMP), und ein Client ohne TCP_NODELAY (Paho) kann auf jede bis zu 40 ms auf ein verzögertes ACK warten.</translation>
-    </message>
-    <message>
-        <source>Announcing the type before every message (mqtt_client 2.2.1) puts a small publish in front of each message; without TCP_NODELAY the message then waits for the delayed ACK of the first, up to 40 ms.</source>
-        <translation>Die Typankündigung vor jeder Nachricht (mqtt_client 2.2.1) stellt jeder Nachricht eine kleine Veröffentlichung voran; ohne TCP_NODELAY wartet die Nachricht dann bis zu 40 ms auf das verzögerte ACK der ersten.</translation>
-    </message>
-    <message>
-        <source>The smallest payload (%1) is slower through the interfaces than %2 (%3 against %4 ms): small messages wait for delayed ACKs where Nagle&apos;s algorithm holds them.</source>
-        <translation>Die kleinste Nutzlast (%1) ist in den Schnittstellen langsamer als %2 (%3 gegenüber %4 ms): kleine Nachrichten warten auf verzögerte ACKs, wo Nagles Algorithmus sie zurückhält.</translation>
-    </message>
-    <message>
         <source>Experiment report: %1</source>
         <translation>Experimentbericht: %1</translation>
     </message>
@@ -2585,14 +2612,6 @@ factors:
     <message>
         <source>Findings</source>
         <translation>Befunde</translation>
-    </message>
-    <message>
-        <source>Throughput with %1 (%2 bytes): up to %3 Hz sustained, %4 MB/s.</source>
-        <translation>Durchsatz mit %1 (%2 Bytes): bis %3 Hz gehalten, %4 MB/s.</translation>
-    </message>
-    <message>
-        <source>Throughput with %1 (%2 bytes): not even %3 Hz was sustained.</source>
-        <translation>Durchsatz mit %1 (%2 Bytes): nicht einmal %3 Hz wurden gehalten.</translation>
     </message>
     <message>
         <source>Throughput</source>
@@ -2653,22 +2672,6 @@ factors:
     <message>
         <source>ROS</source>
         <translation>ROS</translation>
-    </message>
-    <message>
-        <source>%1 ms [%2, %3] ms, 95 %</source>
-        <translation>%1 ms [%2, %3] ms, 95 %</translation>
-    </message>
-    <message>
-        <source>%1: no significant difference between %2 and %3: the totals shift by %4 (the means: %5 and %6 ms)</source>
-        <translation>%1: kein signifikanter Unterschied zwischen %2 und %3: die Gesamtwerte verschieben sich um %4 (die Mittelwerte: %5 und %6 ms)</translation>
-    </message>
-    <message>
-        <source>; the totals shift by %1</source>
-        <translation>; die Gesamtwerte verschieben sich um %1</translation>
-    </message>
-    <message>
-        <source> (too few samples for an interval)</source>
-        <translation> (zu wenige Samples für ein Intervall)</translation>
     </message>
 </context>
 <context>
@@ -3111,33 +3114,6 @@ factors:
     <message>
         <source>With --screenshot: start from the saved window and save it on exit.</source>
         <translation>Mit --screenshot: vom gespeicherten Fenster ausgehen und es beim Beenden speichern.</translation>
-    </message>
-</context>
-<context>
-    <name>LatencyEngine</name>
-    <message>
-        <source>total</source>
-        <translation>gesamt</translation>
-    </message>
-    <message>
-        <source>communication, round trip</source>
-        <translation>Kommunikation, hin und zurück</translation>
-    </message>
-    <message>
-        <source>communication, one way (half the round trip)</source>
-        <translation>Kommunikation, eine Richtung (halbe Umlaufzeit)</translation>
-    </message>
-    <message>
-        <source>clock offset (%1 ahead of %2)</source>
-        <translation>Uhrenversatz (%1 vor %2)</translation>
-    </message>
-    <message>
-        <source>communication, there (%1 → %2)</source>
-        <translation>Kommunikation, hin (%1 → %2)</translation>
-    </message>
-    <message>
-        <source>communication, back (%1 → %2)</source>
-        <translation>Kommunikation, zurück (%1 → %2)</translation>
     </message>
 </context>
 <context>
@@ -5206,14 +5182,6 @@ factors:
         <translation>topics_in_order ist leer</translation>
     </message>
     <message>
-        <source>%1 (%2 → %3)</source>
-        <translation>%1 (%2 → %3)</translation>
-    </message>
-    <message>
-        <source>%1 → %2</source>
-        <translation>%1 → %2</translation>
-    </message>
-    <message>
         <source>every entry of topics_in_order must be a topic name</source>
         <translation>jeder Eintrag von topics_in_order muss ein Topic-Name sein</translation>
     </message>
@@ -5251,6 +5219,17 @@ factors:
     </message>
 </context>
 <context>
+    <name>PipelineLabels</name>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2 → %3)</source>
+        <translation>%1 (%2 → %3)</translation>
+    </message>
+</context>
+<context>
     <name>PipelineModel</name>
     <message>
         <source>The machine whose clock stamps this topic; stages between different hosts are crossings.</source>
@@ -5277,6 +5256,33 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
     <message>
         <source>Stamps</source>
         <translation>Zeitstempel</translation>
+    </message>
+</context>
+<context>
+    <name>PipelineSeries</name>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>communication, round trip</source>
+        <translation>Kommunikation, hin und zurück</translation>
+    </message>
+    <message>
+        <source>communication, one way (half the round trip)</source>
+        <translation>Kommunikation, eine Richtung (halbe Umlaufzeit)</translation>
+    </message>
+    <message>
+        <source>communication, there (%1 → %2)</source>
+        <translation>Kommunikation, hin (%1 → %2)</translation>
+    </message>
+    <message>
+        <source>communication, back (%1 → %2)</source>
+        <translation>Kommunikation, zurück (%1 → %2)</translation>
+    </message>
+    <message>
+        <source>clock offset (%1 ahead of %2)</source>
+        <translation>Uhrenversatz (%1 vor %2)</translation>
     </message>
 </context>
 <context>

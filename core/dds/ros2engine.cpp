@@ -1,21 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include "dds/ros2engine.h"
 
-#include "base/eventbuffer.h"
 #include "base/logging.h"
-#include "base/newestqueue.h"
-#include "base/ratewindow.h"
 #include "base/wallclock.h"
-#include "ros2/ros2names.h"
 #include "dds/ros2endpoints.h"
 #include "dds/ros2rawreader.h"
+#include "ros2/ros2names.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <map>
-#include <mutex>
 #include <QNetworkInterface>
 #include <QtGlobal>
 #include <set>
@@ -165,19 +161,6 @@ struct Ros2Engine::Private
     int maxPerParticipant = kMaxEndpointsPerParticipant;
     QByteArray ownPrefix;
     quint64 changes = 1; ///< bumped at every change of the tables
-
-    mutable std::mutex mutex; ///< for what Cyclone's listener thread touches: the subscriptions
-    /// A subscribed topic: monitored, watched, or both.
-    struct Monitored
-    {
-        std::unique_ptr<Ros2RawReader> reader;
-        Ros2MonitorStats stats;
-        RateWindow rates;
-        bool monitored = false; ///< asked for by monitor()
-        std::unique_ptr<NewestQueue<Ros2Sample>> watched; ///< set while watchMessages() asks
-    };
-    std::map<QString, Monitored> monitored; ///< under `mutex`
-    std::unique_ptr<EventBuffer<SourceHead>> arrivals; ///< set by keepArrivals(), under `mutex`
 
     dds_entity_t domain = 0;
     dds_entity_t participant = 0;
@@ -378,51 +361,6 @@ struct Ros2Engine::Private
         dds_builtintopic_free_endpoint(w);
         return prefix;
     }
-
-    /// On Cyclone's listener thread.
-    void onSample(const QString& topic, const Ros2RawSample& sample)
-    {
-        const qint64 now = wallClockNs();
-        std::lock_guard<std::mutex> lock(mutex);
-        const auto it = monitored.find(topic);
-        if (it == monitored.end())
-            return;
-        Ros2MonitorStats& s = it->second.stats;
-        ++s.messages;
-        s.bytes += sample.size;
-        s.lastSize = int(sample.size);
-        s.lastNs = now;
-        s.lastMessage = QByteArray(reinterpret_cast<const char*>(sample.data), qsizetype(sample.size));
-        it->second.rates.add(now, s.lastSize);
-        if (it->second.watched)
-            it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
-        if (arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
-            arrivals->push(
-                SourceHead {SourceGraph::Ros2, topic, now, s.lastSize, s.lastMessage.mid(4, SourceHead::kHeadBytes)});
-    }
-
-    /// Ends a use of a topic's subscription (monitor() or watchMessages()), and the subscription
-    /// with the last one.
-    void release(const QString& topic, bool monitorUse)
-    {
-        std::unique_ptr<Ros2RawReader> reader;
-        {
-            std::lock_guard<std::mutex> lock(mutex);
-            const auto it = monitored.find(topic);
-            if (it == monitored.end())
-                return;
-            if (monitorUse)
-                it->second.monitored = false;
-            else
-                it->second.watched.reset();
-            if (it->second.monitored || it->second.watched)
-                return;
-            reader = std::move(it->second.reader);
-            monitored.erase(it);
-        }
-        if (reader)
-            reader->close(); // waits for a callback in flight; onSample then finds no entry
-    }
 };
 
 Ros2Engine::Ros2Engine(QObject* parent)
@@ -496,8 +434,7 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     d->participantReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr);
     d->publicationReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
     d->subscriptionReader = dds_create_reader(d->participant, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
-    if (m_keepArrivals)
-        d->arrivals = std::make_unique<EventBuffer<SourceHead>>(m_keepArrivals);
+    m_readers.keepArrivals(m_keepArrivals);
     openDiscoveryInfo();
     d->own = std::make_unique<Ros2Endpoints>(d->participant, [this] {
         QMetaObject::invokeMethod(this, [this] { emit samplesReceived(); }, Qt::QueuedConnection);
@@ -535,6 +472,7 @@ void Ros2Engine::stop()
     // The participant with everything in it, then the domain (Private's destructor): deleting a
     // reader waits for its listener in flight, which still finds the tables it writes to.
     d.reset();
+    m_readers.clear();
     m_graph = Ros2Graph();
 }
 
@@ -590,10 +528,10 @@ void Ros2Engine::refresh()
     m_shownBadInfo = bad;
     // watched or monitored topics whose type the graph did not know before (or since start())
     for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
-        if (!isSubscribed(it.key()) && m_graph.topic(it.key()))
+        if (!m_readers.isSubscribed(it.key()) && m_graph.topic(it.key()))
             subscribe(it.key(), m_monitorUses.contains(it.key()), nullptr);
     for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
-        if (!isSubscribed(it.key()) && m_graph.topic(it.key()))
+        if (!m_readers.isSubscribed(it.key()) && m_graph.topic(it.key()))
             subscribe(it.key(), true, nullptr);
     emit graphChanged(m_graph);
 }
@@ -608,13 +546,9 @@ void Ros2Engine::monitor(const QString& topic, bool waitForType)
         ++uses.value(); // subscribed already for another user (the Links page, Discover's Mon)
         return;
     }
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
-            it->second.monitored = true; // subscribed already (watched)
-            m_monitorUses.insert(topic, 1);
-            return;
-        }
+    if (m_readers.markMonitored(topic)) { // subscribed already (watched)
+        m_monitorUses.insert(topic, 1);
+        return;
     }
     QString why;
     if (subscribe(topic, true, &why))
@@ -636,20 +570,17 @@ bool Ros2Engine::subscribe(const QString& topic, bool monitored, QString* why)
     if (ddsType.isEmpty())
         ddsType = type;
     auto reader = std::make_unique<Ros2RawReader>();
-    Private* p = d.get();
-    reader->onSample = [p, topic](const Ros2RawSample& s, const dds_sample_info_t&) { p->onSample(topic, s); };
+    Ros2TopicReaders* readers = &m_readers;
+    reader->onSample = [readers, topic](const Ros2RawSample& s, const dds_sample_info_t&) {
+        readers->onSample(topic, s.data, s.size);
+    };
     reader->topic = Ros2RawType::createTopic(d->participant, Ros2Names::ddsTopic(topic).toStdString(),
                                              ddsType.toStdString());
     bool opened = false;
     if (reader->topic > 0) {
-        {
-            std::lock_guard<std::mutex> lock(d->mutex);
-            auto& m = d->monitored[topic];
-            m.stats.type = type;
-            m.monitored = monitored;
-            if (const auto w = m_watched.constFind(topic); w != m_watched.cend())
-                m.watched = std::make_unique<NewestQueue<Ros2Sample>>(w->maxMessages, w->maxBytes);
-        }
+        m_readers.add(topic, type, monitored);
+        if (const auto w = m_watched.constFind(topic); w != m_watched.cend())
+            m_readers.watch(topic, w->maxMessages, w->maxBytes);
         // best effort and volatile match every publisher
         dds_qos_t* qos = dds_create_qos();
         dds_qset_reliability(qos, DDS_RELIABILITY_BEST_EFFORT, 0);
@@ -662,14 +593,12 @@ bool Ros2Engine::subscribe(const QString& topic, bool monitored, QString* why)
     }
     if (!opened) {
         reader->close();
-        std::lock_guard<std::mutex> lock(d->mutex);
-        d->monitored.erase(topic);
+        m_readers.remove(topic);
         if (why)
             *why = tr("Cyclone DDS could not subscribe to %1 as %2").arg(topic, type);
         return false;
     }
-    std::lock_guard<std::mutex> lock(d->mutex);
-    d->monitored[topic].reader = std::move(reader);
+    m_readers.setReader(topic, std::move(reader));
     return true;
 }
 
@@ -680,24 +609,7 @@ void Ros2Engine::unmonitor(const QString& topic)
         return; // not monitored, or still wanted by another user
     m_monitorUses.erase(uses);
     if (d && d->participant > 0)
-        d->release(topic, true);
-}
-
-bool Ros2Engine::isMonitored(const QString& topic) const
-{
-    if (!d)
-        return false;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    const auto it = d->monitored.find(topic);
-    return it != d->monitored.end() && it->second.monitored;
-}
-
-bool Ros2Engine::isSubscribed(const QString& topic) const
-{
-    if (!d)
-        return false;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->monitored.count(topic) > 0;
+        m_readers.release(topic, true);
 }
 
 void Ros2Engine::watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes)
@@ -705,89 +617,22 @@ void Ros2Engine::watchMessages(const QString& topic, std::size_t maxMessages, qi
     m_watched.insert(topic, {maxMessages, maxBytes});
     if (!d || d->participant <= 0)
         return; // start() and the graph bring the subscription
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        if (const auto it = d->monitored.find(topic); it != d->monitored.end()) {
-            if (it->second.watched)
-                it->second.watched->setLimits(maxMessages, maxBytes);
-            else
-                it->second.watched = std::make_unique<NewestQueue<Ros2Sample>>(maxMessages, maxBytes);
-            return;
-        }
-    }
-    subscribe(topic, false, nullptr); // else when the graph knows its type (refresh())
+    if (!m_readers.watch(topic, maxMessages, maxBytes))
+        subscribe(topic, false, nullptr); // else when the graph knows its type (refresh())
 }
 
 void Ros2Engine::unwatchMessages(const QString& topic)
 {
     m_watched.remove(topic);
     if (d && d->participant > 0)
-        d->release(topic, false);
-}
-
-std::vector<Ros2Sample> Ros2Engine::takeMessages(const QString& topic)
-{
-    if (!d)
-        return {};
-    std::lock_guard<std::mutex> lock(d->mutex);
-    const auto it = d->monitored.find(topic);
-    return it != d->monitored.end() && it->second.watched ? it->second.watched->take()
-                                                          : std::vector<Ros2Sample>();
-}
-
-quint64 Ros2Engine::droppedMessages(const QString& topic) const
-{
-    if (!d)
-        return 0;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    const auto it = d->monitored.find(topic);
-    return it != d->monitored.end() && it->second.watched ? it->second.watched->dropped() : 0;
-}
-
-QHash<QString, Ros2MonitorStats> Ros2Engine::snapshot(qint64 nowNs) const
-{
-    QHash<QString, Ros2MonitorStats> out;
-    if (!d)
-        return out;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    for (const auto& [topic, m] : d->monitored) {
-        if (!m.monitored)
-            continue; // only watched
-        Ros2MonitorStats s = m.stats;
-        std::tie(s.rateHz, s.bytesPerSecond) = m.rates.rates(nowNs);
-        s.matchedPublishers = m.reader ? m.reader->matched.load() : 0;
-        s.lost = m.reader ? m.reader->lost.load() : 0;
-        out.insert(topic, s);
-    }
-    return out;
+        m_readers.release(topic, false);
 }
 
 void Ros2Engine::keepArrivals(std::size_t maxArrivals)
 {
     m_keepArrivals = maxArrivals;
-    if (!d)
-        return;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    if (maxArrivals == 0)
-        d->arrivals.reset();
-    else
-        d->arrivals = std::make_unique<EventBuffer<SourceHead>>(maxArrivals);
-}
-
-std::vector<SourceHead> Ros2Engine::takeArrivals()
-{
-    if (!d)
-        return {};
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->arrivals ? d->arrivals->take() : std::vector<SourceHead>();
-}
-
-quint64 Ros2Engine::droppedArrivals() const
-{
-    if (!d)
-        return 0;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->arrivals ? d->arrivals->dropped() : 0;
+    if (d)
+        m_readers.keepArrivals(maxArrivals);
 }
 
 void Ros2Engine::setNode(const QString& nameSpace, const QString& name)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "dds/ros2topicreaders.h"
 #include "ros2/ddschildserver.h"
 #include "ros2/ros2graph.h"
 #include "ros2/ros2types.h"
@@ -58,17 +59,13 @@ public:
     /// subscribed once it does, instead of failing (as before start()).
     void monitor(const QString& topic, bool waitForType = false) override;
     void unmonitor(const QString& topic) override;
-    bool isMonitored(const QString& topic) const;
-    /// Figures of the monitored topics (rates at `nowNs`).
-    QHash<QString, Ros2MonitorStats> snapshot(qint64 nowNs) const;
     void watchMessages(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
     void unwatchMessages(const QString& topic) override;
     bool isWatched(const QString& topic) const { return m_watched.contains(topic); }
-    std::vector<Ros2Sample> takeMessages(const QString& topic);
-    quint64 droppedMessages(const QString& topic) const;
     void keepArrivals(std::size_t maxArrivals) override;
-    std::vector<SourceHead> takeArrivals();
-    quint64 droppedArrivals() const;
+    /// What monitor(), watchMessages() and keepArrivals() read: the figures (snapshot()), the
+    /// watched topics' samples and the arrivals, to be taken there (empty while not running).
+    Ros2TopicReaders& readers() { return m_readers; }
 
     // Endpoints of our own (Ros2Participant's setNode(), advertise(), publish(), subscribe()); each
     // false with `why` when not running or Cyclone refuses.
@@ -108,11 +105,11 @@ private:
     /// Makes the topic's reader; false with `why` when the graph has no type for it or Cyclone
     /// refuses.
     bool subscribe(const QString& topic, bool monitored, QString* why);
-    bool isSubscribed(const QString& topic) const;
     void openDiscoveryInfo();
 
     struct Private;
     std::shared_ptr<Private> d;
+    Ros2TopicReaders m_readers; ///< Cyclone's listeners write here: outlives `d`'s readers
     Ros2Options m_options;
     std::size_t m_keepArrivals = 0;
     QHash<QString, int> m_monitorUses; ///< monitor() calls not balanced yet, across stop() and start()

@@ -72,20 +72,10 @@ public:
     /// A method comparison (the plan varies the bridge): the report adds the paper's Table I
     /// layout, every stage a row and every complete cell a column.
     bool hasMethodTable() const;
-    /// What the report found: failed and unfinished cells, throughput, and per factor the levels
-    /// with the lowest and the highest total mean, with the shift of their totals and its 95 %
-    /// interval (ShiftEstimate); "no significant difference" when the interval holds zero.
+    /// What the report found (ExperimentFindings::of): failed and unfinished cells, throughput, and
+    /// per factor the levels with the lowest and the highest total mean, with the shift of their
+    /// totals and its 95 % interval (ShiftEstimate); "no significant difference" when it holds zero.
     QStringList findings() const;
-    /// The shift of `high`'s values against `low`'s (each series' window), nullopt when too few.
-    static std::optional<ShiftEstimate> shiftOf(const LatencySeries& low, const LatencySeries& high);
-    /// "3.2 ms [-1.0, 7.5] ms, 95 %".
-    static QString shiftText(const ShiftEstimate& shift);
-    /// A factor's finding: the levels with the lowest and the highest total mean, with the shift of
-    /// their totals; "no significant difference" when its interval holds zero.
-    static QString differenceFinding(const QString& factor, const QString& lowLevel, double lowMs,
-                                     const QString& highLevel, double highMs,
-                                     const std::optional<ShiftEstimate>& shift);
-
     /// The totals' ECDFs of factor table `table`, one curve per level (SVG, as the run reports').
     QByteArray ecdfSvg(int table, int width = 720, int height = 400) const;
     /// Where toMarkdown() links the ECDF of `factor` when given `figurePrefix` ("out/report"):

@@ -104,14 +104,14 @@ QString silentStampsText(const MeasureSession& measure, const CellSettings& sett
     for (int i = 0; i < p.topicCount(); ++i) {
         if (measure.discovery().stampCount(p.topics()[i]) > 0)
             continue;
-        silent << p.shortTopic(i);
+        silent << p.labels().shortTopic(i);
         interfacesOnly = interfacesOnly && p.component(i).startsWith(u"mqtt_interface"_s);
     }
     if (silent.isEmpty())
         return {};
     constexpr int kNamed = 8;
     const qsizetype count = silent.size();
-    const QString prefix = p.topics()[0].left(p.topics()[0].size() - p.shortTopic(0).size());
+    const QString prefix = p.topics()[0].left(p.topics()[0].size() - p.labels().shortTopic(0).size());
     if (count > kNamed) {
         silent = silent.mid(0, kNamed);
         silent << ExperimentRunner::tr("%1 more").arg(count - kNamed);

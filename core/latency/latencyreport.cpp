@@ -36,37 +36,38 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
     QJsonObject doc;
     doc.insert(u"samples"_s, engine.samples());
     doc.insert(u"dropped"_s, qint64(engine.counters().dropped()) + extraDropped);
+    const PipelineSeries& series = engine.pipelineSeries();
+    const auto statsOf = [&series](int index) { return statsJson(series.series(index).stats()); };
     QJsonArray stages;
     for (int s = 0; s < p.stageCount(); ++s) {
         QJsonObject stage;
         stage.insert(u"from"_s, p.topics()[s]);
         stage.insert(u"to"_s, p.topics()[s + 1]);
         stage.insert(u"crossing"_s, p.isCrossing(s));
-        stage.insert(u"stats"_s, statsJson(engine.series(engine.stageSeries(s)).stats()));
+        stage.insert(u"stats"_s, statsOf(series.stageSeries(s)));
         stages.append(stage);
     }
     doc.insert(u"stages"_s, stages);
     doc.insert(u"total"_s,
                engine.totalSeries() >= 0 ? QJsonValue(statsJson(engine.series(engine.totalSeries()).stats()))
                                          : QJsonValue(QJsonValue::Null));
-    if (engine.roundTripSeries() >= 0) {
+    if (series.roundTripSeries() >= 0) {
         QJsonObject comm;
-        comm.insert(u"round_trip"_s, statsJson(engine.series(engine.roundTripSeries()).stats()));
-        comm.insert(u"one_way"_s, statsJson(engine.series(engine.oneWaySeries()).stats()));
-        if (engine.thereSeries() >= 0) {
-            comm.insert(u"there"_s, statsJson(engine.series(engine.thereSeries()).stats()));
-            comm.insert(u"back"_s, statsJson(engine.series(engine.backSeries()).stats()));
+        comm.insert(u"round_trip"_s, statsOf(series.roundTripSeries()));
+        comm.insert(u"one_way"_s, statsOf(series.oneWaySeries()));
+        if (series.thereSeries() >= 0) {
+            comm.insert(u"there"_s, statsOf(series.thereSeries()));
+            comm.insert(u"back"_s, statsOf(series.backSeries()));
         }
         doc.insert(u"communication"_s, comm);
     } else {
         doc.insert(u"communication"_s, QJsonValue::Null);
     }
     doc.insert(u"clock_offset"_s,
-               engine.clockOffsetSeries() >= 0
-                   ? QJsonValue(statsJson(engine.series(engine.clockOffsetSeries()).stats()))
-                   : QJsonValue(QJsonValue::Null));
+               series.clockOffsetSeries() >= 0 ? QJsonValue(statsOf(series.clockOffsetSeries()))
+                                               : QJsonValue(QJsonValue::Null));
     doc.insert(u"one_clock"_s, p.oneClock());
-    const auto bounds = engine.clockOffsetBoundsMs();
+    const auto bounds = series.clockOffsetBoundsMs();
     QJsonArray warnings;
     for (const LatencyWarning& w : LatencyWarnings::of(engine))
         warnings.append(

@@ -40,7 +40,7 @@ QString LatencyStatsModel::offsetExplanation(const std::optional<std::pair<doubl
 void LatencyStatsModel::refresh(const LatencyEngine& engine)
 {
     m_oneClock = engine.pipeline().oneClock();
-    m_offsetBounds = engine.clockOffsetBoundsMs();
+    m_offsetBounds = engine.pipelineSeries().clockOffsetBoundsMs();
     m_warnings = LatencyWarnings::of(engine);
     m_warningOf.clear();
     for (const LatencyWarning& w : std::as_const(m_warnings)) {
@@ -48,8 +48,8 @@ void LatencyStatsModel::refresh(const LatencyEngine& engine)
         reasons += (reasons.isEmpty() ? QString() : u"; "_s) + w.reason;
     }
     const int n = engine.seriesCount();
-    if (engine.layoutRevision() != m_layout) {
-        m_layout = engine.layoutRevision();
+    if (engine.pipelineSeries().layoutRevision() != m_layout) {
+        m_layout = engine.pipelineSeries().layoutRevision();
         // Series only added at the end (a new external latency): insert rows, keep the views' state.
         bool prefix = n >= int(m_rows.size());
         for (int i = 0; prefix && i < int(m_rows.size()); ++i)

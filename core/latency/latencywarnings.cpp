@@ -54,7 +54,8 @@ QList<LatencyWarning> LatencyWarnings::of(const LatencyEngine& engine)
     const qsizetype crossings = p.crossings().size();
     const qsizetype expected = 2 * (hosts.size() - 1);
     if (hosts.size() > 1 && crossings > expected) {
-        const int pinned = engine.roundTripSeries() >= 0 ? engine.roundTripSeries() : engine.totalSeries();
+        const int roundTrip = engine.pipelineSeries().roundTripSeries();
+        const int pinned = roundTrip >= 0 ? roundTrip : engine.totalSeries();
         if (pinned >= 0)
             out.append({engine.info(pinned).id, engine.info(pinned).label,
                         tr("the order crosses between hosts %1 times where going there and back crosses %2 "

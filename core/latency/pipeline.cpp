@@ -6,7 +6,6 @@
 #include "base/yamltree.h"
 
 #include <QFile>
-#include <QRegularExpression>
 #include <yaml-cpp/yaml.h>
 
 using namespace Qt::StringLiterals;
@@ -14,20 +13,6 @@ using namespace Qt::StringLiterals;
 namespace {
 /// Pipelines name the line of an error, not its column.
 const YamlReader kReader(LocatedError::Style::Line);
-
-/// The host a name part stands for, or empty.
-QString hostOfToken(QStringView token)
-{
-    static const QStringList vehicle {u"vehicle"_s, u"car"_s, u"robot"_s, u"ego"_s};
-    static const QStringList cloud {u"cloud"_s, u"edge"_s, u"server"_s, u"backend"_s};
-    for (const QString& v : vehicle)
-        if (token.compare(v, Qt::CaseInsensitive) == 0)
-            return u"vehicle"_s;
-    for (const QString& c : cloud)
-        if (token.compare(c, Qt::CaseInsensitive) == 0)
-            return u"cloud"_s;
-    return {};
-}
 
 /// A double-quoted YAML scalar: control characters escaped, so that a line break in a name
 /// cannot be folded into a space (or end the scalar) when the file is read back.
@@ -87,42 +72,7 @@ void Pipeline::setTopics(QStringList topics)
         m_index.insert(u'/' + key, int(m_topics.size())); // the ROS spelling: found without a copy
         m_topics.append(std::move(t));
     }
-    relabel();
-}
-
-void Pipeline::relabel()
-{
-    // Linear in the topics: labelling used to recompute the common prefix in every call and
-    // compare every stage's label with every other's (cubic: 20,000 columns never finished).
-    m_prefix = 0;
-    m_stageLabels.clear();
-    if (m_topics.size() < 2)
-        return;
-    const QString& first = m_topics.first();
-    qsizetype common = first.size();
-    for (const QString& other : std::as_const(m_topics)) {
-        qsizetype i = 0;
-        while (i < common && i < other.size() && other[i] == first[i])
-            ++i;
-        common = i;
-    }
-    // The longest common prefix ending in '/' (none when the topics share no character).
-    m_prefix = common == 0 ? 0 : first.lastIndexOf(u'/', common - 1) + 1;
-
-    // Between components, the components say it ("mqtt_interface_vehicle → mqtt_interface_cloud"),
-    // unless another stage would read the same.
-    QStringList brief;
-    brief.reserve(stageCount());
-    QHash<QString, int> uses;
-    for (int s = 0; s < stageCount(); ++s) {
-        const QString a = component(s);
-        const QString b = component(s + 1);
-        brief << (a == b ? longStageLabel(s) : tr("%1 → %2").arg(a, b));
-        ++uses[brief.back()];
-    }
-    m_stageLabels.reserve(stageCount());
-    for (int s = 0; s < stageCount(); ++s)
-        m_stageLabels << (uses.value(brief[s]) > 1 ? longStageLabel(s) : brief[s]);
+    m_labels = PipelineLabels(m_topics);
 }
 
 int Pipeline::indexOf(const QString& topic) const
@@ -293,72 +243,12 @@ std::optional<std::pair<int, int>> Pipeline::outAndReturnCrossings() const
     return std::make_pair(c[0], c[1]);
 }
 
-QString Pipeline::shortTopic(int topicIndex) const
+QString Pipeline::stageLabel(int stage) const
 {
-    if (topicIndex < 0 || topicIndex >= m_topics.size())
-        return {};
-    const QString& t = m_topics[topicIndex];
-    const QString rest = t.mid(m_prefix);
-    return rest.isEmpty() ? t : rest;
+    return m_labels.stageLabel(stage);
 }
 
 QString Pipeline::component(int topicIndex) const
 {
-    const QString t = shortTopic(topicIndex);
-    const qsizetype slash = t.indexOf(u'/');
-    return slash > 0 ? t.left(slash) : t;
-}
-
-QString Pipeline::longStageLabel(int stage) const
-{
-    const QString a = shortTopic(stage);
-    const QString b = shortTopic(stage + 1);
-    // Within one component ("x/data/in" -> "x/data/out"), name the component once.
-    const qsizetype slashA = a.lastIndexOf(u'/');
-    const qsizetype slashB = b.lastIndexOf(u'/');
-    if (slashA > 0 && slashA == slashB && a.left(slashA) == b.left(slashB))
-        return tr("%1 (%2 → %3)").arg(a.left(slashA), a.mid(slashA + 1), b.mid(slashB + 1));
-    return tr("%1 → %2").arg(a, b);
-}
-
-QString Pipeline::stageLabel(int stage) const
-{
-    return m_stageLabels.value(stage);
-}
-
-QString Pipeline::hostOfName(const QString& topic)
-{
-    static const QRegularExpression split(u"[^A-Za-z0-9]+"_s);
-    const QStringList tokens = topic.split(split, Qt::SkipEmptyParts);
-    for (const QString& token : tokens)
-        if (QString host = hostOfToken(token); !host.isEmpty())
-            return host;
-    return {};
-}
-
-QHash<QString, QString> Pipeline::guessHosts(const QStringList& topics)
-{
-    QStringList hosts;
-    for (const QString& t : topics)
-        hosts << hostOfName(t);
-    // Unknown ones take the previous known host, or the next one at the start.
-    QString previous;
-    for (QString& h : hosts) {
-        if (h.isEmpty())
-            h = previous;
-        else
-            previous = h;
-    }
-    QString next;
-    for (qsizetype i = hosts.size() - 1; i >= 0; --i) {
-        if (hosts[i].isEmpty())
-            hosts[i] = next;
-        else
-            next = hosts[i];
-    }
-    QHash<QString, QString> out;
-    for (qsizetype i = 0; i < topics.size(); ++i)
-        if (!hosts[i].isEmpty())
-            out.insert(topics[i], hosts[i]);
-    return out;
+    return m_labels.component(topicIndex);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/result.h"
+#include "latency/pipelinelabels.h"
 
 #include <optional>
 #include <QCoreApplication>
@@ -43,8 +44,6 @@ public:
     int indexOf(const QString& topic) const;
     int indexOf(const char16_t* topic) const { return indexOf(QStringView(topic)); }
     void setTopics(QStringList topics);
-    /// Whether two names are the same stamp topic ("/a/b" on ROS is "a/b" on MQTT).
-    static bool sameTopic(QStringView a, QStringView b) { return normalized(a) == normalized(b); }
 
     int window() const { return m_window; }
     void setWindow(int samples) { m_window = samples; }
@@ -62,21 +61,13 @@ public:
     /// With exactly one crossing away from the first stamp's host and one back to it: (out, return).
     std::optional<std::pair<int, int>> outAndReturnCrossings() const;
 
+    /// How the topics and stages are named for people (PipelineLabels).
+    const PipelineLabels& labels() const { return m_labels; }
     /// A short label for stage i: "mqtt_interface_vehicle → mqtt_interface_cloud" between
     /// components, "mqtt_interface_vehicle/pointcloud (in → out)" within one.
     QString stageLabel(int stage) const;
-    /// The stage's two topics without their common prefix.
-    QString longStageLabel(int stage) const;
     /// The first name part after the common prefix ("mqtt_interface_vehicle").
     QString component(int topicIndex) const;
-    /// The topic without the prefix all topics share.
-    QString shortTopic(int topicIndex) const;
-
-    /// Hosts guessed from topic names: a name part "vehicle", "car", "robot" or "cloud", "edge",
-    /// "server" sets a host; topics without one take their neighbours' host.
-    static QHash<QString, QString> guessHosts(const QStringList& topics);
-    /// The host a topic's name stands for ("vehicle", "cloud"), or empty when no part names one.
-    static QString hostOfName(const QString& topic);
 
     bool operator==(const Pipeline& o) const
     {
@@ -88,12 +79,9 @@ private:
     /// metrics_window, one_clock and hosts of a pipeline file.
     Status readSettings(const YAML::Node& root);
     static QString normalized(QStringView topic);
-    /// The common prefix and every stage label, in one pass over the topics (not per call).
-    void relabel();
 
     QStringList m_topics;
-    qsizetype m_prefix = 0; ///< length of the prefix all topics share, up to a '/'
-    QStringList m_stageLabels;
+    PipelineLabels m_labels; ///< of m_topics, made again with them
     QHash<QString, int> m_index; ///< normalized topic and "/" + normalized topic -> index
     QHash<QString, QString> m_hosts;
     int m_window = kDefaultWindow;

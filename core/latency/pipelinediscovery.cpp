@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "pipelinediscovery.h"
 
+#include "latency/hostguess.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -129,7 +131,7 @@ std::vector<int> PipelineDiscovery::orderAcrossClocks(const std::vector<double>&
     for (std::size_t t = 0; t < topics; ++t) {
         if (!std::isfinite(mean[t]))
             continue;
-        host[t] = Pipeline::hostOfName(m_topics[int(t)]);
+        host[t] = HostGuess::ofName(m_topics[int(t)]);
         if (host[t].isEmpty())
             continue;
         named.push_back(int(t));
@@ -241,7 +243,7 @@ Pipeline PipelineDiscovery::propose(int window) const
     for (int t : order)
         ordered << m_topics[t];
     Pipeline p(ordered, window);
-    const QHash<QString, QString> hosts = Pipeline::guessHosts(ordered);
+    const QHash<QString, QString> hosts = HostGuess::ofTopics(ordered);
     for (auto it = hosts.cbegin(); it != hosts.cend(); ++it)
         p.setHost(it.key(), it.value());
     for (std::size_t t = 0; t < hostOf.size(); ++t)

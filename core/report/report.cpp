@@ -37,7 +37,8 @@ std::unique_ptr<ReportRun> Report::compute(RunData&& data, const std::optional<P
         return nullptr;
     const LatencyEngine& e = *run->engine;
     for (int s = e.pipeline().stageCount() - 1; s >= 0; --s) // backwards: the first of a label wins
-        run->stageByLabel.insert(e.info(e.stageSeries(s)).label, e.stageSeries(s));
+        run->stageByLabel.insert(e.info(e.pipelineSeries().stageSeries(s)).label,
+                                 e.pipelineSeries().stageSeries(s));
     return run;
 }
 
@@ -144,7 +145,7 @@ QList<Report::Row> Report::rows() const
     for (const auto& run : m_runs) {
         const LatencyEngine& e = *run->engine;
         for (int s = 0; s < e.pipeline().stageCount(); ++s) {
-            const LatencyEngine::SeriesInfo& info = e.info(e.stageSeries(s));
+            const LatencyEngine::SeriesInfo& info = e.info(e.pipelineSeries().stageSeries(s));
             if (seen.contains(info.label))
                 continue;
             seen.insert(info.label);
@@ -156,9 +157,9 @@ QList<Report::Row> Report::rows() const
     bool offset = false;
     bool legs = false;
     for (const auto& run : m_runs) {
-        roundTrip = roundTrip || run->engine->roundTripSeries() >= 0;
-        offset = offset || run->engine->clockOffsetSeries() >= 0;
-        legs = legs || run->engine->thereSeries() >= 0;
+        roundTrip = roundTrip || run->engine->pipelineSeries().roundTripSeries() >= 0;
+        offset = offset || run->engine->pipelineSeries().clockOffsetSeries() >= 0;
+        legs = legs || run->engine->pipelineSeries().thereSeries() >= 0;
     }
     if (roundTrip) {
         out.append({tr("communication, one way (half the round trip)"),

@@ -147,15 +147,16 @@ Table totalsTable(const Report& report)
 /// with how far it may be off; empty without an outbound and a return crossing.
 QString clocksText(const LatencyEngine& e)
 {
-    if (e.thereSeries() >= 0)
+    if (e.pipelineSeries().thereSeries() >= 0)
         return QCoreApplication::translate("ReportFormats",
                                            "one clock: each direction's own one-way latency, no offset");
-    if (e.clockOffsetSeries() < 0)
+    if (e.pipelineSeries().clockOffsetSeries() < 0)
         return {};
     // Short: a comparison lists it once per run, side by side; what it cannot tell apart is said
     // once, in the note under the tables.
-    const auto bounds = e.clockOffsetBoundsMs();
-    const QString median = LatencyStatsModel::msText(e.series(e.clockOffsetSeries()).stats().median);
+    const auto bounds = e.pipelineSeries().clockOffsetBoundsMs();
+    const QString median
+        = LatencyStatsModel::msText(e.series(e.pipelineSeries().clockOffsetSeries()).stats().median);
     if (!bounds)
         return QCoreApplication::translate("ReportFormats", "two clocks: offset %1 ms").arg(median);
     return QCoreApplication::translate("ReportFormats", "two clocks: offset %1 ms %2, between %3 and %4 ms")
@@ -572,8 +573,9 @@ QByteArray ReportFormats::ecdfSvg(const Report& report, int width, int height)
             continue;
         const QString total = report.isComparison() ? shown(run->name) : tr("total");
         curves.append({total, seriesColor(color++), &e.series(e.totalSeries())});
-        if (!report.isComparison() && e.oneWaySeries() >= 0)
-            curves.append({tr("communication, one way"), seriesColor(color++), &e.series(e.oneWaySeries())});
+        if (!report.isComparison() && e.pipelineSeries().oneWaySeries() >= 0)
+            curves.append({tr("communication, one way"), seriesColor(color++),
+                           &e.series(e.pipelineSeries().oneWaySeries())});
     }
     return EcdfSvg::render(curves, width, height,
                            report.isComparison() ? tr("Total latency per run") : tr("Latency distribution"));

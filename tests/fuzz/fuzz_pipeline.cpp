@@ -5,6 +5,7 @@
 // Properties: an error has a message; a pipeline we accept is written and read back the same;
 // every stage has a label; guessed hosts name only the pipeline's topics.
 #include "fuzzcheck.h"
+#include "latency/hostguess.h"
 #include "latency/pipeline.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -20,18 +21,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
     for (int stage = 0; stage < p->stageCount(); ++stage) {
         FUZZ_CHECK(!p->stageLabel(stage).isEmpty(), "a stage without a label");
-        (void)p->longStageLabel(stage);
+        (void)p->labels().longStageLabel(stage);
         (void)p->isCrossing(stage);
     }
     for (int i = 0; i < p->topicCount(); ++i) {
         FUZZ_CHECK(p->indexOf(p->topics().at(i)) >= 0, "a topic that indexOf() does not find");
         (void)p->component(i);
-        (void)p->shortTopic(i);
+        (void)p->labels().shortTopic(i);
         (void)p->host(i);
     }
     (void)p->crossings();
     (void)p->outAndReturnCrossings();
-    const QHash<QString, QString> guessed = Pipeline::guessHosts(p->topics());
+    const QHash<QString, QString> guessed = HostGuess::ofTopics(p->topics());
     for (auto it = guessed.cbegin(); it != guessed.cend(); ++it)
         FUZZ_CHECK(p->topics().contains(it.key()), "a guessed host for a topic that is not there");
     return 0;

@@ -155,9 +155,9 @@ private slots:
         QVERIFY(table->index(crossing, 0).data().toString().startsWith(u"⇄"_s));
         QVERIFY(table->index(crossing, 0).data(Qt::FontRole).value<QFont>().italic());
         // The cloud's 250 ms lead shows up in the offset estimate, not in the one-way latency.
-        const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
+        const LatencyStats offset = e.series(e.pipelineSeries().clockOffsetSeries()).stats();
         QVERIFY2(std::abs(offset.median - 250.0) < 1.0, qPrintable(QString::number(offset.median)));
-        const LatencyStats oneWay = e.series(e.oneWaySeries()).stats();
+        const LatencyStats oneWay = e.series(e.pipelineSeries().oneWaySeries()).stats();
         QVERIFY2(std::abs(oneWay.mean - 19.15) < 0.5, qPrintable(QString::number(oneWay.mean)));
         QVERIFY(named<LiveText>(*page, u"measureCounts"_s)->text().contains(u"400 complete"_s));
 
@@ -171,7 +171,7 @@ private slots:
         QVERIFY(points > 10);
         QVERIFY(points <= 2 * chart->views().first()->width() + 2);
         const auto [lo, hi] = chart->range(u"total"_s);
-        QVERIFY(lo <= e.series(e.oneWaySeries()).stats().min);
+        QVERIFY(lo <= e.series(e.pipelineSeries().oneWaySeries()).stats().min);
         // Up to the largest, or a high quantile with what lies beyond marked (issue 33).
         QVERIFY(hi >= e.series(e.totalSeries()).stats().max || !chart->beyondText(u"total"_s).isEmpty());
         QTest::qWait(50); // the legend lays its markers out on the next event loop pass
@@ -278,9 +278,10 @@ private slots:
         QCOMPARE(measure->pipeline().crossings(), (QList<int> {2, 8}));
         const LatencyEngine& e = measure->engine();
         QTRY_VERIFY_WITH_TIMEOUT(!warning->isVisible(), 5000);
-        QVERIFY2(std::abs(e.series(e.clockOffsetSeries()).stats().median - 35.0) < 1.0,
-                 qPrintable(QString::number(e.series(e.clockOffsetSeries()).stats().median)));
-        QVERIFY(e.series(e.roundTripSeries()).stats().median > 0);
+        QVERIFY2(
+            std::abs(e.series(e.pipelineSeries().clockOffsetSeries()).stats().median - 35.0) < 1.0,
+            qPrintable(QString::number(e.series(e.pipelineSeries().clockOffsetSeries()).stats().median)));
+        QVERIFY(e.series(e.pipelineSeries().roundTripSeries()).stats().median > 0);
         QVERIFY(!pinned->index(rowOf(pinned, u"round_trip"_s), 0).data().toString().startsWith(u"⚠"_s));
     }
 
@@ -337,7 +338,7 @@ private slots:
         QCOMPARE(w.measure()->pipeline().crossings(), (QList<int> {0, 1}));
         QVERIFY(model->setData(model->index(1, PipelineModel::HostColumn), u"vehicle"_s));
         QCOMPARE(w.measure()->pipeline().crossings(), QList<int>());
-        QCOMPARE(w.measure()->engine().roundTripSeries(), -1);
+        QCOMPARE(w.measure()->engine().pipelineSeries().roundTripSeries(), -1);
 
         // Save and load the pipeline as a file the suite can read too.
         QTemporaryDir dir;

@@ -101,15 +101,16 @@ private slots:
         QCOMPARE(p.host(5), u"cloud"_s);
         // The detection works about 40 ms; the cloud's clock is 35 ms ahead and the estimate finds it,
         // off by half the difference between the two directions' transit (a few ms here).
-        const LatencyStats detection = e.series(e.stageSeries(5)).stats();
+        const LatencyStats detection = e.series(e.pipelineSeries().stageSeries(5)).stats();
         QVERIFY2(std::abs(detection.mean - 40) < 8, qPrintable(QString::number(detection.mean)));
-        const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
+        const LatencyStats offset = e.series(e.pipelineSeries().clockOffsetSeries()).stats();
         QVERIFY2(std::abs(offset.median - 35) < 15, qPrintable(QString::number(offset.median)));
         const LatencyStats total = e.series(e.totalSeries()).stats();
         QVERIFY2(total.mean > detection.mean && total.mean < 500, qPrintable(QString::number(total.mean)));
         for (int s = 0; s < p.stageCount(); ++s)
             if (!p.isCrossing(s))
-                QVERIFY2(e.series(e.stageSeries(s)).stats().min >= 0, qPrintable(p.stageLabel(s)));
+                QVERIFY2(e.series(e.pipelineSeries().stageSeries(s)).stats().min >= 0,
+                         qPrintable(p.stageLabel(s)));
     }
 
     // `demo --ros 2` headless: the lab on a private domain, measured, its report printed; nothing it
@@ -157,12 +158,13 @@ private slots:
         measure.setPipeline(*pipeline);
         const LatencyEngine& e = measure.engine();
         QTRY_VERIFY_WITH_TIMEOUT(e.samples() >= 40, 20000);
-        const LatencyStats detection = e.series(e.stageSeries(5)).stats();
+        const LatencyStats detection = e.series(e.pipelineSeries().stageSeries(5)).stats();
         QVERIFY2(std::abs(detection.mean - 40) < 10, qPrintable(QString::number(detection.mean)));
-        const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
+        const LatencyStats offset = e.series(e.pipelineSeries().clockOffsetSeries()).stats();
         QVERIFY2(std::abs(offset.median - 35) < 15, qPrintable(QString::number(offset.median)));
         for (int s = 0; s < pipeline->stageCount(); ++s)
-            QVERIFY2(e.series(e.stageSeries(s)).stats().count > 0, qPrintable(pipeline->stageLabel(s)));
+            QVERIFY2(e.series(e.pipelineSeries().stageSeries(s)).stats().count > 0,
+                     qPrintable(pipeline->stageLabel(s)));
     }
 
     // A ROS 2 lab: no master, a free private domain, configs as ROS 2 params files whose node is

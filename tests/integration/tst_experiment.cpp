@@ -189,7 +189,7 @@ private slots:
             // A group of one stage is that stage; the interfaces are the sum of theirs.
             double interfaces = 0;
             for (int s = 0; s < p.stageCount(); ++s) {
-                const LatencyStats st = e.series(e.stageSeries(s)).stats();
+                const LatencyStats st = e.series(e.pipelineSeries().stageSeries(s)).stats();
                 if (p.component(s) == u"object_detection"_s && p.component(s + 1) == u"object_detection"_s)
                     QVERIFY(
                         std::abs(groups.value(u"object_detection"_s).toObject().value(u"median"_s).toDouble()
@@ -496,8 +496,8 @@ private slots:
         const Pipeline& pipeline = a.pipeline();
         int crossings = 0;
         for (int s = 0; s < pipeline.stageCount(); ++s) {
-            const LatencyStats x = a.series(a.stageSeries(s)).stats();
-            const LatencyStats y = b.series(b.stageSeries(s)).stats();
+            const LatencyStats x = a.series(a.pipelineSeries().stageSeries(s)).stats();
+            const LatencyStats y = b.series(b.pipelineSeries().stageSeries(s)).stats();
             const QString what = u"%1: %2 -> %3 ms mean, %4 -> %5 ms std"_s.arg(pipeline.stageLabel(s))
                                      .arg(x.mean)
                                      .arg(y.mean)

@@ -135,16 +135,16 @@ private slots:
                 expected.push_back(stampNs(s, stage + 1, offsets[stage + 1])
                                    - stampNs(s, stage, offsets[stage]));
             std::sort(expected.begin(), expected.end());
-            QCOMPARE(sortedValues(e.series(e.stageSeries(stage))), expected);
+            QCOMPARE(sortedValues(e.series(e.pipelineSeries().stageSeries(stage))), expected);
         }
         QCOMPARE(e.counters().dropped(), 0u);
         QCOMPARE(e.counters().unknownTopic, 0u);
         // Outbound crossing b -> c takes 18.5 ms + jitter, the return c -> d 25 ms + the same
         // jitter: the offset estimate is (18.5 - 25) / 2 = -3.25 ms for every sample.
-        const LatencyStats offset = e.series(e.clockOffsetSeries()).stats();
+        const LatencyStats offset = e.series(e.pipelineSeries().clockOffsetSeries()).stats();
         QCOMPARE(offset.min, -3.25);
         QCOMPARE(offset.max, -3.25);
-        QCOMPARE(e.series(e.roundTripSeries()).stats().count, kSamples);
+        QCOMPARE(e.series(e.pipelineSeries().roundTripSeries()).stats().count, kSamples);
 
         // Single-stage series: mqtt_client's ~/latencies on ROS, and the stamped MQTT payloads.
         QTRY_VERIFY_WITH_TIMEOUT(e.indexOf(u"ext:/mqtt_client/latencies/bench/a"_s) >= 0
@@ -187,7 +187,7 @@ private slots:
                  (QStringList {u"/auto/vehicle/x"_s, u"/auto/cloud/y"_s, u"/auto/vehicle/z"_s}));
         QCOMPARE(measure.pipeline().crossings(), (QList<int> {0, 1}));
         QCOMPARE(measure.discovery().stampCount(u"/auto/cloud/y"_s), quint64(kSamples));
-        QVERIFY(measure.engine().clockOffsetSeries() >= 0);
+        QVERIFY(measure.engine().pipelineSeries().clockOffsetSeries() >= 0);
     }
 
     // Issue 11: a bad stamp is counted and shown for its topic, not only in a total, also when

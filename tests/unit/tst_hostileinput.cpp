@@ -106,11 +106,11 @@ private slots:
         LatencyEngine engine(p);
         for (int k = 0; k < 3; ++k)
             engine.addSample({0, top, 0, top, 0, top, 0});
-        const LatencyStats rt = engine.series(engine.roundTripSeries()).stats();
+        const LatencyStats rt = engine.series(engine.pipelineSeries().roundTripSeries()).stats();
         QCOMPARE(rt.count, 3);
         QCOMPARE(rt.min, 0.0); // six spans of ±top that cancel: exactly 0, not a wrapped sum
-        QCOMPARE(engine.series(engine.stageSeries(0)).stats().mean, double(top) / 1e6);
-        QCOMPARE(engine.series(engine.stageSeries(1)).stats().mean, -double(top) / 1e6);
+        QCOMPARE(engine.series(engine.pipelineSeries().stageSeries(0)).stats().mean, double(top) / 1e6);
+        QCOMPARE(engine.series(engine.pipelineSeries().stageSeries(1)).stats().mean, -double(top) / 1e6);
 
         LatencySeries series;
         series.setWindow(0);

@@ -180,21 +180,21 @@ private slots:
         const QJsonArray stages = ref.value(u"stages"_s).toArray();
         QCOMPARE(stages.size(), engine.pipeline().stageCount());
         for (int s = 0; s < stages.size(); ++s)
-            compareStats(u"stage %1"_s.arg(s), engine.series(engine.stageSeries(s)).stats(),
+            compareStats(u"stage %1"_s.arg(s), engine.series(engine.pipelineSeries().stageSeries(s)).stats(),
                          stages[s].toObject());
         compareStats(u"total"_s, engine.series(engine.totalSeries()).stats(),
                      ref.value(u"total"_s).toObject());
         if (!hosts) {
-            QCOMPARE(engine.roundTripSeries(), -1);
+            QCOMPARE(engine.pipelineSeries().roundTripSeries(), -1);
             QVERIFY(ref.value(u"communication"_s).isNull());
             return;
         }
         const QJsonObject comm = ref.value(u"communication"_s).toObject();
-        compareStats(u"round trip"_s, engine.series(engine.roundTripSeries()).stats(),
+        compareStats(u"round trip"_s, engine.series(engine.pipelineSeries().roundTripSeries()).stats(),
                      comm.value(u"round_trip"_s).toObject());
-        compareStats(u"one way"_s, engine.series(engine.oneWaySeries()).stats(),
+        compareStats(u"one way"_s, engine.series(engine.pipelineSeries().oneWaySeries()).stats(),
                      comm.value(u"one_way"_s).toObject());
-        compareStats(u"clock offset"_s, engine.series(engine.clockOffsetSeries()).stats(),
+        compareStats(u"clock offset"_s, engine.series(engine.pipelineSeries().clockOffsetSeries()).stats(),
                      ref.value(u"clock_offset"_s).toObject());
     }
 
@@ -228,17 +228,17 @@ private slots:
             base += 100 * ms;
         }
         QCOMPARE(engine.pipeline().crossings(), (QList<int> {1, 3}));
-        const LatencyStats rt = engine.series(engine.roundTripSeries()).stats();
+        const LatencyStats rt = engine.series(engine.pipelineSeries().roundTripSeries()).stats();
         QCOMPARE(rt.count, 3);
         QCOMPARE(rt.mean, 40.0);
         QCOMPARE(rt.median, 40.0);
         QCOMPARE(rt.std, 10.0); // deviations -10, 0, 10: sqrt(200 / 2)
         QCOMPARE(rt.min, 30.0);
         QCOMPARE(rt.max, 50.0);
-        const LatencyStats oneWay = engine.series(engine.oneWaySeries()).stats();
+        const LatencyStats oneWay = engine.series(engine.pipelineSeries().oneWaySeries()).stats();
         QCOMPARE(oneWay.mean, 20.0);
         QCOMPARE(oneWay.std, 5.0);
-        const LatencyStats offset = engine.series(engine.clockOffsetSeries()).stats();
+        const LatencyStats offset = engine.series(engine.pipelineSeries().clockOffsetSeries()).stats();
         QCOMPARE(offset.min, 245.0);
         QCOMPARE(offset.median, 250.0);
         QCOMPARE(offset.max, 260.0);
@@ -246,7 +246,7 @@ private slots:
         // The raw crossing stages hold the offset; the total does not.
         QCOMPARE(engine.series(1).stats().mean, (10 + 20 + 35) / 3.0 + 250.0);
         QCOMPARE(engine.series(engine.totalSeries()).stats().mean, 2 + (5 + 7 + 9) / 3.0 + 40 + 1);
-        QCOMPARE(engine.info(engine.clockOffsetSeries()).hostTo, u"cloud"_s);
+        QCOMPARE(engine.info(engine.pipelineSeries().clockOffsetSeries()).hostTo, u"cloud"_s);
     }
 
     // One clock (one machine): the real bridge's asymmetric legs (5 ms out, 45 ms back while its
@@ -256,11 +256,11 @@ private slots:
     {
         const LatencyEngine engine = legsLab(true, 0, {{5, 45, 3}, {5, 45, 4}, {7, 43, 5}});
         QVERIFY(engine.pipeline().oneClock());
-        QCOMPARE(engine.clockOffsetSeries(), -1);
-        QVERIFY(engine.thereSeries() >= 0 && engine.backSeries() >= 0);
-        QCOMPARE(engine.series(engine.thereSeries()).stats().mean, 17.0 / 3);
-        QCOMPARE(engine.series(engine.backSeries()).stats().mean, 133.0 / 3);
-        QCOMPARE(engine.series(engine.roundTripSeries()).stats().mean, 50.0);
+        QCOMPARE(engine.pipelineSeries().clockOffsetSeries(), -1);
+        QVERIFY(engine.pipelineSeries().thereSeries() >= 0 && engine.pipelineSeries().backSeries() >= 0);
+        QCOMPARE(engine.series(engine.pipelineSeries().thereSeries()).stats().mean, 17.0 / 3);
+        QCOMPARE(engine.series(engine.pipelineSeries().backSeries()).stats().mean, 133.0 / 3);
+        QCOMPARE(engine.series(engine.pipelineSeries().roundTripSeries()).stats().mean, 50.0);
         const QJsonObject doc = LatencyReport::json(engine);
         QVERIFY(doc.value(u"clock_offset"_s).isNull());
         QVERIFY(doc.value(u"clock_offset_bounds_ms"_s).isNull());
@@ -292,9 +292,9 @@ private slots:
         // Legs out 10, 20, 35 and back 20, 20, 15 ms; the cloud 250 ms ahead. Raw out = 260, 270, 285,
         // raw back = -230, -230, -235: the offset lies in [235, 260], half width 12.5 ms.
         const LatencyEngine engine = legsLab(false, 250, {{10, 20, 5}, {20, 20, 7}, {35, 15, 9}});
-        QCOMPARE(engine.thereSeries(), -1);
-        QVERIFY(engine.clockOffsetSeries() >= 0);
-        const auto bounds = engine.clockOffsetBoundsMs();
+        QCOMPARE(engine.pipelineSeries().thereSeries(), -1);
+        QVERIFY(engine.pipelineSeries().clockOffsetSeries() >= 0);
+        const auto bounds = engine.pipelineSeries().clockOffsetBoundsMs();
         QVERIFY(bounds);
         QCOMPARE(bounds->first, 235.0);
         QCOMPARE(bounds->second, 260.0);
@@ -467,7 +467,8 @@ private slots:
         QCOMPARE(
             warnings[0].reason,
             u"median -5.00 ms: a latency cannot be negative, so the stamps' order or their hosts are wrong"_s);
-        QVERIFY(engine.series(engine.stageSeries(1)).stats().median < 0); // the crossing: not flagged
+        QVERIFY(engine.series(engine.pipelineSeries().stageSeries(1)).stats().median
+                < 0); // the crossing: not flagged
 
         // The stats model marks the row and says what to do; the report carries the warning.
         LatencyStatsModel model;

@@ -781,7 +781,7 @@ private slots:
         clock.advance(1000 * kMs);
         LatencyStatsModel measure;
         measure.refresh(engine);
-        const int row = measure.rowOf(engine.info(engine.stageSeries(0)).id);
+        const int row = measure.rowOf(engine.info(engine.pipelineSeries().stageSeries(0)).id);
         QVERIFY(row >= 0);
         const auto measured = [&](int column) {
             return measure.index(row, column).data(LatencyStatsModel::ValueRole).toDouble();

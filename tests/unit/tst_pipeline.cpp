@@ -2,6 +2,7 @@
 // Pipelines: the suite's metrics-logger files, the hosts extension, host guessing, stage labels,
 // and finding a pipeline in stamps alone.
 #include "fixtures.h"
+#include "latency/hostguess.h"
 #include "latency/pipeline.h"
 #include "latency/pipelinediscovery.h"
 #include "resulttext.h"
@@ -120,7 +121,7 @@ private slots:
         Result<Pipeline> p
             = Pipeline::readFile(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
         QVERIFY(p);
-        const QHash<QString, QString> guessed = Pipeline::guessHosts(p->topics());
+        const QHash<QString, QString> guessed = HostGuess::ofTopics(p->topics());
         for (auto it = guessed.cbegin(); it != guessed.cend(); ++it)
             p->setHost(it.key(), it.value());
         QTemporaryDir dir;
@@ -153,7 +154,7 @@ private slots:
         const Result<Pipeline> p
             = Pipeline::readFile(Fixtures::path(u"benchmarking_suite/metrics_logger_mqtt_interface.yaml"_s));
         QVERIFY(p);
-        const QHash<QString, QString> hosts = Pipeline::guessHosts(p->topics());
+        const QHash<QString, QString> hosts = HostGuess::ofTopics(p->topics());
         QStringList got;
         for (const QString& t : p->topics())
             got << hosts.value(t);
@@ -167,13 +168,13 @@ private slots:
         QCOMPARE(withHosts.stageLabel(2), u"mqtt_interface_vehicle → mqtt_interface_cloud"_s);
         QCOMPARE(withHosts.stageLabel(0), u"pointcloud → mqtt_interface_vehicle"_s);
         QCOMPARE(withHosts.stageLabel(5), u"object_detection (pointcloud → object_list)"_s);
-        QCOMPARE(withHosts.longStageLabel(2),
+        QCOMPARE(withHosts.labels().longStageLabel(2),
                  u"mqtt_interface_vehicle/pointcloud/out → mqtt_interface_cloud/pointcloud/in"_s);
         // Labels that would read the same fall back to the long form.
         const Pipeline twice({u"/t/a/x"_s, u"/t/b/x"_s, u"/t/a/y"_s, u"/t/b/y"_s});
         QCOMPARE(twice.stageLabel(0), u"a/x → b/x"_s);
         QCOMPARE(twice.stageLabel(1), u"b → a"_s);
-        QCOMPARE(withHosts.shortTopic(0), u"pointcloud"_s);
+        QCOMPARE(withHosts.labels().shortTopic(0), u"pointcloud"_s);
     }
 
     void badPipelinesSayWhereAndWhy_data()
@@ -310,7 +311,7 @@ private slots:
             for (int s = 0; s < p.stageCount(); ++s)
                 QCOMPARE(p.stageLabel(s), old.stageLabel(s));
             for (int t = 0; t < p.topicCount(); ++t)
-                QCOMPARE(p.shortTopic(t), old.shortTopic(t));
+                QCOMPARE(p.labels().shortTopic(t), old.shortTopic(t));
         }
         // A large pipeline: components repeat, so many labels fall back to the long form.
         QStringList topics;
@@ -329,7 +330,7 @@ private slots:
         QCOMPARE(huge.stageLabel(0), u"c0 → c1"_s);
         QCOMPARE(huge.stageLabel(19998), u"c19998 → c19999"_s);
         QCOMPARE(huge.stageLabel(19999), QString());
-        QCOMPARE(huge.shortTopic(7), u"c7/d/out"_s);
+        QCOMPARE(huge.labels().shortTopic(7), u"c7/d/out"_s);
         // Topics sharing no character keep their components.
         const Pipeline disjoint({u"veh/a/in"_s, u"cloud/a/out"_s});
         QCOMPARE(disjoint.stageLabel(0), u"veh → cloud"_s);

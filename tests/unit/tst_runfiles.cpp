@@ -576,8 +576,8 @@ private slots:
         const LatencyEngine& e = *report->runs().front()->engine;
         QCOMPARE(e.samples(), 5);
         const double spanMs = double(StampCodec::kMaxTimeNs - 1) / 1e6;
-        QCOMPARE(e.series(e.stageSeries(0)).stats().min, -spanMs);
-        QCOMPARE(e.series(e.stageSeries(1)).stats().max, spanMs);
+        QCOMPARE(e.series(e.pipelineSeries().stageSeries(0)).stats().min, -spanMs);
+        QCOMPARE(e.series(e.pipelineSeries().stageSeries(1)).stats().max, spanMs);
     }
 
     // Issue 13: a watch's events are in the run from their start (a killed recorder leaves them

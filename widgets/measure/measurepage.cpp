@@ -279,7 +279,7 @@ QWidget* MeasurePage::createChartPane()
     m_statsView->horizontalHeader()->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_statsView->horizontalHeader(), &QWidget::customContextMenuRequested, this,
             &MeasurePage::showColumnMenu);
-    m_chart->setSource(&m_measure->engine());
+    m_chart->setSource(&m_measure->engine().pipelineSeries());
     m_chart->setSeries(m_measure->statsModel()->checkedSeries());
     m_chart->setMinimumHeight(240);
     m_timeline->setTimeline(&m_measure->engine().timeline());
