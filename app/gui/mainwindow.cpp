@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
 
+#include "app/gui/pageparts.h"
 #include "base/regularfile.h"
 #include "base/yamllimits.h"
 #include "config/configdocument.h"
@@ -9,6 +10,7 @@
 #include "ros/rosnode.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "watch/livewatch.h"
 #include "watch/watchsession.h"
 #include "widgets/common/problemspanel.h"
 #include "widgets/common/theme.h"
@@ -73,17 +75,18 @@ void showToolWindow(QWidget* window, const QString& name, const QString& title, 
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
-    , m_session(new LiveSession(this))
-    , m_measure(new MeasureSession(m_session, this))
+    , m_live(new LiveWatch(LiveWatch::Measuring::Yes, this))
+    , m_session(m_live->live())
+    , m_measure(m_live->measure())
     , m_document(new ConfigDocument(this))
     , m_undo(new QUndoStack(this))
     , m_files(new ConfigFileController(m_document, m_undo, this))
     , m_pages(new QTabWidget(this))
-    , m_discover(new DiscoverPage(DiscoverPage::partsOf(m_session), m_pages))
-    , m_map(new MapPage(MapPage::partsOf(m_session), m_document, m_undo, m_pages))
+    , m_discover(new DiscoverPage(PageParts::discover(m_session), m_pages))
+    , m_map(new MapPage(PageParts::map(m_session), m_document, m_undo, m_pages))
     , m_measurePage(new MeasurePage(m_measure, m_pages))
     , m_reports(new ReportsPage(m_pages))
-    , m_watch(new WatchSession(WatchSession::partsOf(m_session), this))
+    , m_watch(m_live->watch())
     , m_links(new LinksPage(m_watch, m_pages))
     , m_experiments(new ExperimentPage(m_pages))
     , m_configEditor(m_map->editor())
@@ -104,7 +107,6 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_experiments, tr("Experiments"));
     m_map->setFileController(m_files); // a tab per open config
     watchTheMapConfig();
-    m_watch->useMeasurement(m_measure); // pipeline latency for the links; a recorded run lists their events
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
     connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
             [this](const QString& path) { m_reports->addInputs({path}); });

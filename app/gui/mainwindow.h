@@ -13,6 +13,7 @@ class MeasurePage;
 class MeasureSession;
 class ReportsPage;
 class LiveSession;
+class LiveWatch;
 class ConfigEditor;
 class ConfigFileController;
 class QLabel;
@@ -78,6 +79,7 @@ private:
     void updateRecentMenu(const QStringList& files);
     void chooseFiles();
 
+    LiveWatch* m_live; ///< the live session, its watch and measurement
     LiveSession* m_session;
     MeasureSession* m_measure;
     ConfigDocument* m_document;

@@ -7,7 +7,6 @@
 #include <QObject>
 #include <QPointer>
 
-class LiveSession;
 class MqttConnection;
 class RosGraphPoller;
 class RosMonitor;
@@ -58,9 +57,6 @@ public:
     /// The links a window watches at most (see docs/ROBUSTNESS.md): each is a subscription on the
     /// broker and one at the master or the ROS 2 domain, which the lab's master and broker carry.
     static constexpr int kWindowLinkLimit = 2'000;
-    /// The parts of a live session a watch reads.
-    static Parts partsOf(LiveSession* live);
-
     explicit WatchSession(const Parts& parts, QObject* parent = nullptr);
     ~WatchSession() override;
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
-#include "session/livesession.h"
+#include "session/sessioncontrols.h"
 #include "widgets/discover/detailpane.h"
 
 #include <QWidget>
@@ -51,9 +51,6 @@ public:
         const GraphStatus* graphs = nullptr;
         DetailPane::Parts detail;
     };
-    /// The parts of a live session the page uses.
-    static Parts partsOf(LiveSession* live);
-
     explicit DiscoverPage(const Parts& parts, QWidget* parent = nullptr);
 
     /// Shows ROS 1, ROS 2 or both; joins or leaves the ROS 2 domain as needed.
