@@ -21,6 +21,7 @@
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/map/mappage.h"
+#include "widgets/map/recentfiles.h"
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
 #include "widgets/reports/reportspage.h"
@@ -80,7 +81,8 @@ MainWindow::MainWindow(QWidget* parent)
     , m_measure(m_live->measure())
     , m_document(new ConfigDocument(this))
     , m_undo(new QUndoStack(this))
-    , m_files(new ConfigFileController(m_document, m_undo, this))
+    , m_recent(new RecentFiles(this))
+    , m_files(new ConfigFileController(m_document, m_undo, m_recent, this))
     , m_pages(new QTabWidget(this))
     , m_discover(new DiscoverPage(PageParts::discover(m_session), m_pages))
     , m_map(new MapPage(PageParts::map(m_session), m_document, m_undo, m_pages))
@@ -139,7 +141,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &ConfigDocument::resetDone, this, [this] { m_pages->setCurrentWidget(m_map); });
     connect(m_files, &ConfigFileController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
-    connect(m_files, &ConfigFileController::recentFilesChanged, this, &MainWindow::updateRecentMenu);
+    connect(m_recent, &RecentFiles::changed, this, &MainWindow::updateRecentMenu);
     connect(m_configEditor->problems()->model(), &ProblemModel::countsChanged, this,
             &MainWindow::updateProblemStatus);
     connect(m_session->mqtt(), &MqttConnection::stateChanged, this, &MainWindow::updateProblemStatus);
@@ -250,7 +252,7 @@ void MainWindow::createMenus()
     file->addAction(tr("&New"), QKeySequence::New, m_files, &ConfigFileController::newFile);
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::chooseFiles);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
-    updateRecentMenu(m_files->recentFiles());
+    updateRecentMenu(m_recent->files());
     file->addSeparator();
     file->addAction(tr("&Save"), QKeySequence::Save, m_files, &ConfigFileController::save);
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, m_files, &ConfigFileController::saveAs);

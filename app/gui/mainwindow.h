@@ -20,6 +20,7 @@ class QLabel;
 class QMenu;
 class QTabWidget;
 class QUndoStack;
+class RecentFiles;
 
 /// The main window: wires the pages, menus and status bar together and does nothing else.
 class MainWindow : public QMainWindow
@@ -84,6 +85,7 @@ private:
     MeasureSession* m_measure;
     ConfigDocument* m_document;
     QUndoStack* m_undo;
+    RecentFiles* m_recent; ///< File › Open Recent
     ConfigFileController* m_files;
     QTabWidget* m_pages;
     DiscoverPage* m_discover;

@@ -67,10 +67,6 @@ public:
 
     QTreeView* mqttView() const { return m_mqttView; }
     QLineEdit* rosFilter() const { return m_rosFilter; }
-    QLineEdit* mqttFilter() const { return m_mqttFilter; }
-    MqttTopicFilter* mqttFilterModel() const { return m_mqttProxy; }
-    QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
-    QAction* clearRetainedAction() const { return m_clearRetainedAction; }
 
     /// Opens a publish dialog for the selected MQTT topic (or level), beside the page.
     PublishDialog* openPublishDialog();

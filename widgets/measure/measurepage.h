@@ -35,8 +35,6 @@ public:
     bool savePipeline(const QString& path, QString* error = nullptr);
 
     EcdfChart* chart() const { return m_chart; }
-    QAction* pauseAction() const { return m_pause; }
-    QAction* resetAction() const { return m_reset; }
     RunBar* runBar() const { return m_runBar; }
     /// Saves the chart as PNG or SVG (by the suffix).
     bool saveChart(const QString& path, QString* error = nullptr);
