@@ -10,6 +10,7 @@
 #include "mqtt/mqtttopictree.h"
 #include "session/livesession.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 #include "widgets/discover/discoverpage.h"
 
 #include <algorithm>
@@ -102,7 +103,7 @@ int main(int argc, char** argv)
     Bench::row(u"peak resident memory (MiB)"_s, double(rssPeak) / 1024);
 
     // A filter keystroke with every topic in the tree: type "vehicle_042/sensor_1" and back.
-    QLineEdit* filter = window.discoverPage()->mqttFilter();
+    auto* filter = ViewHelpers::named<QLineEdit>(*window.discoverPage(), u"mqttFilter"_s);
     std::vector<double> keys;
     for (int round = 0; round < 3; ++round) {
         for (QChar c : u"vehicle_042/sensor_1"_s) {

@@ -18,6 +18,7 @@
 #include "demo/demolab.h"
 #include "mqtt/mqttprofile.h"
 #include "testservers.h"
+#include "viewhelpers.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/measure/measurepage.h"
 
@@ -185,7 +186,7 @@ int main(int argc, char** argv)
         printPaints(paints.get(), seconds);
     }
     pages->setCurrentWidget(window.measurePage());
-    window.measurePage()->pauseAction()->setChecked(true);
+    ViewHelpers::named<QAction>(*window.measurePage(), u"pauseAction"_s)->setChecked(true);
     idle(2000);
     if (paints)
         paints->counts.clear();

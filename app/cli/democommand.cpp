@@ -9,6 +9,7 @@
 #include "report/reportformats.h"
 #include "ros/demonodes.h"
 #include "bridge/ros2demonodes.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -155,7 +156,7 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         live.setRosMasterUri(lab.rosMasterUri());
     }
     live.connectBroker(MqttProfile::fromUrl(lab.brokerUrl()));
-    MeasureSession measure(&live);
+    MeasureSession measure(LiveParts::measure(&live));
     measure.setRos1(lab.ros() == 1); // a ROS 2 lab has no master: none is asked, none is named in the run
     measure.setPipeline(*pipeline);
     RunInfo info;

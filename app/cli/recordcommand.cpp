@@ -10,6 +10,7 @@
 #include "latency/latencywarnings.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -187,7 +188,7 @@ int runRecord(const RecordRequest& request)
         return ExitFailed;
     }
     sayRos2Restarts(live.ros2());
-    MeasureSession measure(&live);
+    MeasureSession measure(LiveParts::measure(&live));
     measure.setRos1(request.ros1);
     measure.setPipeline(request.pipeline);
     if (const Result<void> started = measure.startRecording(request.runPath, request.info); !started) {

@@ -13,6 +13,7 @@
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "watch/livewatch.h"
 #include "watch/watchmetrics.h"
 #include "watch/watchsession.h"
 
@@ -265,17 +266,15 @@ std::unique_ptr<WatchMetrics> serveMetrics(const QString& hostPort)
     return metrics;
 }
 
-/// Starts the run file of -o: in the measurement's recorder with a pipeline, else in `own`.
-bool startRecording(const WatchRequest& request, MeasureSession* measure, RunRecorder& own)
+/// Starts the run file of -o: in the measurement's recorder with a pipeline, else in the watch's own.
+bool startRecording(const WatchRequest& request, LiveWatch& watch)
 {
     RunInfo info = request.info;
     info.startedNs = wallClockNs();
     info.broker = request.broker.url;
     info.rosMaster = request.masterUri;
     info.describeThisMachine();
-    const Result<void> started
-        = measure ? measure->startRecording(request.runPath, info) : own.start(request.runPath, info);
-    if (!started) {
+    if (const Result<void> started = watch.startRecording(request.runPath, info); !started) {
         err(started.error().toString());
         return false;
     }
@@ -427,27 +426,22 @@ int runWatch(const WatchRequest& request)
         err(Watch::tr("%1: %2").arg(request.eventsFile, events.errorString()));
         return ExitUsage;
     }
-    LiveSession live;
+    // With a pipeline the measurement records the run (its stamps and the events); without one the
+    // run holds the events alone.
+    LiveWatch assembly(request.pipeline ? LiveWatch::Measuring::Yes : LiveWatch::Measuring::No);
+    LiveSession& live = *assembly.live();
     if (!prepareLive(live, request))
         return ExitFailed;
-    WatchSession watch(WatchSession::partsOf(&live));
+    WatchSession& watch = *assembly.watch();
     watch.setRules(request.rules);
     watch.setDiscovering(request.discover);
     static_cast<void>(watch.setConfigs(request.configs)); // the command sets no link limit: it cannot fail
     LinkMonitor* monitor = watch.monitor();
-    // With a pipeline the measurement records the run (its stamps and the events); without one the
-    // run holds the events alone.
-    std::unique_ptr<MeasureSession> measure;
-    RunRecorder ownRecorder;
-    RunRecorder* recorder = &ownRecorder;
-    if (request.pipeline) {
-        measure = std::make_unique<MeasureSession>(&live);
-        measure->setPipeline(*request.pipeline);
-        watch.useMeasurement(measure.get());
-        recorder = measure->recorder();
-    }
-    if (!request.runPath.isEmpty() && !startRecording(request, measure.get(), ownRecorder))
+    if (request.pipeline)
+        assembly.measure()->setPipeline(*request.pipeline);
+    if (!request.runPath.isEmpty() && !startRecording(request, assembly))
         return ExitUsage;
+    RunRecorder* recorder = assembly.recorder();
     bool recordFailed = false;
     QObject::connect(recorder, &RunRecorder::failed, [&recordFailed](const QString& failure) {
         err(Watch::tr("recording stopped: %1").arg(failure));
@@ -460,14 +454,13 @@ int runWatch(const WatchRequest& request)
         ++eventsSeen;
         alertsSeen += e.level == LinkLevel::Alert;
     });
-    const auto print = [&events, &ownRecorder](const WatchEvent& e) {
+    const auto print = [&events](const WatchEvent& e) {
         const QByteArray line = QJsonDocument(e.toJson()).toJson(QJsonDocument::Compact);
         out(QString::fromUtf8(line));
         if (events.isOpen()) {
             events.write(line + '\n');
             events.flush();
         }
-        ownRecorder.addEvent(e.toRecorded()); // with a pipeline, the measurement records them
     };
     QObject::connect(monitor, &LinkMonitor::eventStarted, print);
     QObject::connect(monitor, &LinkMonitor::eventEnded, print);
@@ -500,8 +493,7 @@ int runWatch(const WatchRequest& request)
     monitor->closeAll(wallClockNs());
     printSummary(*monitor, watchedMs, eventsSeen, alertsSeen);
     if (recorder->isRecording()) {
-        live.drainNow(); // the last stamps
-        if (const Result<void> stopped = measure ? measure->stopRecording() : ownRecorder.stop(); !stopped) {
+        if (const Result<void> stopped = assembly.stopRecording(); !stopped) {
             err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));
             return ExitFailed;
         }

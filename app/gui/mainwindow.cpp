@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
 
+#include "app/gui/pageparts.h"
 #include "base/regularfile.h"
 #include "base/yamllimits.h"
 #include "config/configdocument.h"
@@ -9,6 +10,7 @@
 #include "ros/rosnode.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "watch/livewatch.h"
 #include "watch/watchsession.h"
 #include "widgets/common/problemspanel.h"
 #include "widgets/common/theme.h"
@@ -19,6 +21,7 @@
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/map/mappage.h"
+#include "widgets/map/recentfiles.h"
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
 #include "widgets/reports/reportspage.h"
@@ -73,17 +76,19 @@ void showToolWindow(QWidget* window, const QString& name, const QString& title, 
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
-    , m_session(new LiveSession(this))
-    , m_measure(new MeasureSession(m_session, this))
+    , m_live(new LiveWatch(LiveWatch::Measuring::Yes, this))
+    , m_session(m_live->live())
+    , m_measure(m_live->measure())
     , m_document(new ConfigDocument(this))
     , m_undo(new QUndoStack(this))
-    , m_files(new ConfigFileController(m_document, m_undo, this))
+    , m_recent(new RecentFiles(this))
+    , m_files(new ConfigFileController(m_document, m_undo, m_recent, this))
     , m_pages(new QTabWidget(this))
-    , m_discover(new DiscoverPage(DiscoverPage::partsOf(m_session), m_pages))
-    , m_map(new MapPage(MapPage::partsOf(m_session), m_document, m_undo, m_pages))
+    , m_discover(new DiscoverPage(PageParts::discover(m_session), m_pages))
+    , m_map(new MapPage(PageParts::map(m_session), m_document, m_undo, m_pages))
     , m_measurePage(new MeasurePage(m_measure, m_pages))
     , m_reports(new ReportsPage(m_pages))
-    , m_watch(new WatchSession(WatchSession::partsOf(m_session), this))
+    , m_watch(m_live->watch())
     , m_links(new LinksPage(m_watch, m_pages))
     , m_experiments(new ExperimentPage(m_pages))
     , m_configEditor(m_map->editor())
@@ -104,7 +109,6 @@ MainWindow::MainWindow(QWidget* parent)
     m_pages->addTab(m_experiments, tr("Experiments"));
     m_map->setFileController(m_files); // a tab per open config
     watchTheMapConfig();
-    m_watch->useMeasurement(m_measure); // pipeline latency for the links; a recorded run lists their events
     // A finished recording is ready to report on; every run keeps the bridge config it ran with.
     connect(m_measurePage->runBar(), &RunBar::runRecorded, m_reports,
             [this](const QString& path) { m_reports->addInputs({path}); });
@@ -138,7 +142,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &ConfigDocument::resetDone, this, [this] { m_pages->setCurrentWidget(m_map); });
     connect(m_files, &ConfigFileController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
-    connect(m_files, &ConfigFileController::recentFilesChanged, this, &MainWindow::updateRecentMenu);
+    connect(m_recent, &RecentFiles::changed, this, &MainWindow::updateRecentMenu);
     connect(m_configEditor->problems()->model(), &ProblemModel::countsChanged, this,
             &MainWindow::updateProblemStatus);
     connect(m_session->mqtt(), &MqttConnection::stateChanged, this, &MainWindow::updateProblemStatus);
@@ -249,7 +253,7 @@ void MainWindow::createMenus()
     file->addAction(tr("&New"), QKeySequence::New, m_files, &ConfigFileController::newFile);
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::chooseFiles);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
-    updateRecentMenu(m_files->recentFiles());
+    updateRecentMenu(m_recent->files());
     file->addSeparator();
     file->addAction(tr("&Save"), QKeySequence::Save, m_files, &ConfigFileController::save);
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, m_files, &ConfigFileController::saveAs);

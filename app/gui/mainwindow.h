@@ -13,12 +13,14 @@ class MeasurePage;
 class MeasureSession;
 class ReportsPage;
 class LiveSession;
+class LiveWatch;
 class ConfigEditor;
 class ConfigFileController;
 class QLabel;
 class QMenu;
 class QTabWidget;
 class QUndoStack;
+class RecentFiles;
 
 /// The main window: wires the pages, menus and status bar together and does nothing else.
 class MainWindow : public QMainWindow
@@ -78,10 +80,12 @@ private:
     void updateRecentMenu(const QStringList& files);
     void chooseFiles();
 
+    LiveWatch* m_live; ///< the live session, its watch and measurement
     LiveSession* m_session;
     MeasureSession* m_measure;
     ConfigDocument* m_document;
     QUndoStack* m_undo;
+    RecentFiles* m_recent; ///< File › Open Recent
     ConfigFileController* m_files;
     QTabWidget* m_pages;
     DiscoverPage* m_discover;

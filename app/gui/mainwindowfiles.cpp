@@ -11,6 +11,7 @@
 #include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/map/mappage.h"
+#include "widgets/map/recentfiles.h"
 #include "widgets/measure/measurepage.h"
 #include "widgets/measure/runbar.h"
 #include "widgets/reports/reportspage.h"
@@ -133,7 +134,7 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
             m_files->activate(i);
     for (const QString& path : std::as_const(sorted.pipelines)) { // the last one stays
         if (const Status loaded = m_measurePage->loadPipeline(path)) {
-            m_files->addRecent(path);
+            m_recent->add(path);
             opened(path, m_measurePage);
         } else {
             fail(path, loaded.error().toString());
@@ -142,7 +143,7 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
     // One measurement is shown on the Measure page; several are compared on the Reports page.
     if (measurements.size() == 1 && to == Measurements::Show) {
         if (const Status run = m_measurePage->runBar()->openRun(measurements.first())) {
-            m_files->addRecent(measurements.first());
+            m_recent->add(measurements.first());
             opened(measurements.first(), m_measurePage);
         } else {
             fail(measurements.first(), run.error().toString());
@@ -150,13 +151,13 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
     } else if (!measurements.isEmpty()) {
         m_reports->addInputs(measurements); // it checks each and lists what does not read
         for (const QString& path : measurements) {
-            m_files->addRecent(path);
+            m_recent->add(path);
             opened(path, m_reports);
         }
     }
     for (const QString& path : std::as_const(sorted.plans)) { // the last one stays
         if (const Status plan = m_experiments->openPlan(path)) {
-            m_files->addRecent(path);
+            m_recent->add(path);
             opened(path, m_experiments);
         } else {
             fail(path, plan.error().toString());
@@ -164,7 +165,7 @@ QStringList MainWindow::openPaths(const QStringList& paths, Measurements to)
     }
     for (const QString& path : std::as_const(sorted.experiments)) {
         if (const Status folder = m_experiments->openFolder(path)) {
-            m_files->addRecent(path);
+            m_recent->add(path);
             opened(path, m_experiments);
         } else {
             fail(path, folder.error().toString());

@@ -5,6 +5,7 @@
 #include "experiment/linkrelay.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 
@@ -82,7 +83,7 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
     MqttProfile profile = MqttProfile::fromUrl(lab.brokerUrl());
     profile.caFile = lab.caFile();
     live->connectBroker(profile);
-    measure = std::make_unique<MeasureSession>(live.get());
+    measure = std::make_unique<MeasureSession>(LiveParts::measure(live.get()));
     measure->setRos1(lab.ros() == 1); // a ROS 2 cell has no master: none is asked, none is named
     measure->setPipeline(*pipeline);
     return true;

@@ -4,7 +4,6 @@
 #include "mqtt/mqtttopictree.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
-#include "session/livesession.h"
 #include "topics/topictablemodel.h"
 #include "wire/fieldpath.h"
 #include "wire/rosmessage.h"
@@ -84,12 +83,6 @@ struct FieldPlotter::Private
     };
     QHash<QString, RosType> rosTypes;
 };
-
-FieldPlotter::Parts FieldPlotter::partsOf(LiveSession* live)
-{
-    return {live->sources(), live->mqttTopics(), live->ros2(), live->rosTopics(),
-            [live]() -> const RosTypeRegistry& { return live->ros2Types(); }};
-}
 
 FieldPlotter::FieldPlotter(const Parts& parts, QObject* parent)
     : QObject(parent)

@@ -11,7 +11,6 @@
 #include <QPointF>
 #include <QStringList>
 
-class LiveSession;
 class MqttTopicTree;
 class Ros2Participant;
 class TopicTableModel;
@@ -82,9 +81,6 @@ public:
         /// The ROS 2 definitions ROS 2 samples decode with (they may change while plotting).
         std::function<const RosTypeRegistry&()> ros2Types;
     };
-
-    /// The parts of a live session a plotter reads.
-    static Parts partsOf(LiveSession* live);
 
     explicit FieldPlotter(const Parts& parts, QObject* parent = nullptr);
     ~FieldPlotter() override;

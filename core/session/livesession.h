@@ -7,6 +7,7 @@
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
 #include "session/livesources.h"
+#include "session/sessioncontrols.h"
 
 #include <functional>
 #include <memory>
@@ -29,21 +30,6 @@ class RosTypeRegistry;
 /// Network threads never touch a model: every tick takes what the buffers collected, hands the
 /// MQTT batch to listeners (the latency engine, mapping health) and then to the topic tree, and
 /// refreshes monitor figures. Nothing is emitted per network message.
-/// What the Discover page drives of the live session: which ROS master, broker and ROS 2 domain
-/// it uses. The page is handed this and the parts it shows, not the session.
-class SessionControls
-{
-public:
-    virtual ~SessionControls() = default;
-    virtual void setRosMasterUri(const QString& uri) = 0;
-    virtual QString rosMasterUri() const = 0;
-    virtual void connectBroker(const MqttProfile& profile) = 0;
-    virtual void disconnectBroker() = 0;
-    virtual bool startRos2(const Ros2Options& options, QString* error = nullptr) = 0;
-    virtual void stopRos2() = 0;
-    virtual bool isRos2Running() const = 0;
-};
-
 class LiveSession : public QObject, public SessionControls
 {
     Q_OBJECT

@@ -3,12 +3,12 @@
 
 #include "base/logging.h"
 #include "latency/latencystatsmodel.h"
+#include "mqtt/mqttconnection.h"
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosstampsource.h"
 #include "ros2/ros2participant.h"
 #include "ros2/ros2stampsource.h"
-#include "session/livesession.h"
 #include "wire/sourcemessage.h"
 
 #include <algorithm>
@@ -16,16 +16,6 @@
 #include <QThread>
 
 using namespace Qt::StringLiterals;
-
-MeasureSession::Parts MeasureSession::partsOf(LiveSession* live)
-{
-    return {live->sources(), live->rosGraph(), live->ros2(), live->mqtt()};
-}
-
-MeasureSession::MeasureSession(LiveSession* live, QObject* parent)
-    : MeasureSession(partsOf(live), parent)
-{
-}
 
 MeasureSession::MeasureSession(const Parts& parts, QObject* parent)
     : QObject(parent)

@@ -16,7 +16,6 @@
 
 class LatencyStatsModel;
 class RunRecorder;
-class LiveSession;
 class MqttConnection;
 class RosGraphPoller;
 class RosStampSource;
@@ -48,12 +47,8 @@ public:
         Ros2Participant* ros2 = nullptr;
         const MqttConnection* mqtt = nullptr;
     };
-    /// The parts of a live session a measurement reads.
-    static Parts partsOf(LiveSession* live);
-
+    /// The parts of a live session: LiveParts::measure() (session/liveparts.h).
     explicit MeasureSession(const Parts& parts, QObject* parent = nullptr);
-    /// The same, with the parts of `live` (partsOf()).
-    explicit MeasureSession(LiveSession* live, QObject* parent = nullptr);
     ~MeasureSession() override;
 
     const LatencyEngine& engine() const { return m_engine; }

@@ -8,7 +8,6 @@
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
-#include "session/livesession.h"
 #include "session/measuresession.h"
 
 namespace {
@@ -17,11 +16,6 @@ constexpr qint64 kSyncNs = 1'000'000'000LL;
 constexpr std::size_t kMaxArrivals = 500'000; ///< between two drains (30 ms): far above any lab's rate
 constexpr SourceGraph kGraphs[] {SourceGraph::Mqtt, SourceGraph::Ros1, SourceGraph::Ros2};
 } // namespace
-
-WatchSession::Parts WatchSession::partsOf(LiveSession* live)
-{
-    return {live->sources(), live->rosGraph(), live->ros2(), live->rosMonitor(), live->mqtt()};
-}
 
 WatchSession::WatchSession(const Parts& parts, QObject* parent)
     : QObject(parent)

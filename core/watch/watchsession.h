@@ -10,7 +10,6 @@
 #include <QPointer>
 #include <vector>
 
-class LiveSession;
 class MqttConnection;
 class RosGraphPoller;
 class RosMonitor;
@@ -61,9 +60,6 @@ public:
     /// The links a window watches at most (see docs/ROBUSTNESS.md): each is a subscription on the
     /// broker and one at the master or the ROS 2 domain, which the lab's master and broker carry.
     static constexpr int kWindowLinkLimit = 2'000;
-    /// The parts of a live session a watch reads.
-    static Parts partsOf(LiveSession* live);
-
     explicit WatchSession(const Parts& parts, QObject* parent = nullptr);
     ~WatchSession() override;
 

@@ -206,14 +206,14 @@ private slots:
         QVERIFY2(shown.elapsed() < 15000, qPrintable(QString::number(shown.elapsed())));
 
         // Filtering by name keeps the path to a match.
-        QTest::keyClicks(page->mqttFilter(), u"car1"_s);
+        QTest::keyClicks(named<QLineEdit>(*page, u"mqttFilter"_s), u"car1"_s);
         QTRY_VERIFY(
             !ViewHelpers::find(page->mqttView()->model(), u"vehicle/pose"_s, MqttTopicTree::FullTopicRole)
                  .isValid());
         QVERIFY(
             ViewHelpers::find(page->mqttView()->model(), u"fleet/car1/status"_s, MqttTopicTree::FullTopicRole)
                 .isValid());
-        page->mqttFilter()->clear();
+        named<QLineEdit>(*page, u"mqttFilter"_s)->clear();
 
         // Monitoring a ROS topic subscribes to it; its last message decodes.
         QAbstractItemModel* ros = named<QTableView>(*page, u"rosTopics"_s)->model();

@@ -5,6 +5,7 @@
 // both switch joining and leaving the domain; a ROS 2 config on the Map page judged against the ROS 2 graph
 // (QoS that cannot match, a publisher without a bridge).
 #include "app/gui/mainwindow.h"
+#include "app/gui/pageparts.h"
 #include "config/configdocument.h"
 #include "config/mappinghealth.h"
 #include "config/mappingmodel.h"
@@ -104,7 +105,7 @@ private slots:
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
 
         LiveSession session;
-        DiscoverPage page(DiscoverPage::partsOf(&session));
+        DiscoverPage page(PageParts::discover(&session));
         QTabWidget* rosTabs = named<QTabWidget>(page, u"rosTabs"_s);
         page.resize(1280, 760);
         page.show();
@@ -172,7 +173,7 @@ private slots:
                        u"--graph-raw"_s, u"00010000"_s + gid + u"ffffffff"_s});
         QVERIFY2(evil.waitFor(u"ready"_s), qPrintable(evil.errors()));
         LiveSession session;
-        DiscoverPage page(DiscoverPage::partsOf(&session));
+        DiscoverPage page(PageParts::discover(&session));
         QLabel* ros2State = named<QLabel>(page, u"ros2State"_s);
         page.resize(1280, 760);
         page.show();
@@ -209,7 +210,7 @@ private slots:
                                  u"--duration"_s, u"120"_s});
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         LiveSession session;
-        DiscoverPage page(DiscoverPage::partsOf(&session));
+        DiscoverPage page(PageParts::discover(&session));
         QLabel* ros2State = named<QLabel>(page, u"ros2State"_s);
         page.resize(1280, 760);
         page.show();

@@ -3,6 +3,7 @@
 // mouse and the keyboard zoom and move the time, a double-click or Home follows the newest values
 // again, an outage is a gap rather than a straight line, the buffer is the user's (and bounded by
 // the memory budget), and the legend names every field whole at 1280x800.
+#include "app/gui/pageparts.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttprofile.h"
 #include "session/fieldplotter.h"
@@ -53,7 +54,7 @@ private:
         FieldPlotChart* chart() { return named<FieldPlotChart>(*detail(), u"plotChart"_s); }
         FieldPlotter* plotter() { return named<FieldPlotter>(*detail(), u"fieldPlotter"_s); }
         LiveSession session;
-        DiscoverPage page {DiscoverPage::partsOf(&session)};
+        DiscoverPage page {PageParts::discover(&session)};
     };
 
     /// A publisher of its own on the test broker.

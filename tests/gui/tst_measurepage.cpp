@@ -198,7 +198,7 @@ private slots:
         // Pause freezes the table while measuring goes on; resuming shows what came meanwhile.
         statsView->setFocus();
         QTest::keyClick(statsView, Qt::Key_P, Qt::ControlModifier);
-        QVERIFY(page->pauseAction()->isChecked());
+        QVERIFY(named<QAction>(*page, u"pauseAction"_s)->isChecked());
         QVERIFY(named<LiveText>(*page, u"measureCounts"_s)->text().contains(u"paused"_s));
         pub = publish(paperStamps(topics), 100, 4);
         QTRY_VERIFY_WITH_TIMEOUT(e.samples() >= 500, 60000);

@@ -3,6 +3,7 @@
 // a separate subscriber (mosquitto_sub) sees exactly what the dialog sent. Field plots in the
 // detail pane follow real publishers (MQTT JSON, a ROS node on a real rosmaster, and a ROS 2 node
 // on Cyclone DDS, tests/ros2peer).
+#include "app/gui/pageparts.h"
 #include "fixtures.h"
 #include "mqtt/mqtttopictree.h"
 #include "resulttext.h"
@@ -192,7 +193,7 @@ private:
             page.show();
         }
         LiveSession session;
-        DiscoverPage page {DiscoverPage::partsOf(&session)};
+        DiscoverPage page {PageParts::discover(&session)};
     };
 
     static QModelIndex topicIndex(DiscoverPage& page, const QString& topic)
@@ -583,7 +584,7 @@ private slots:
     {
         const int domain = Ros2Peer::freeDomain(181, 199);
         LiveSession session;
-        DiscoverPage page(DiscoverPage::partsOf(&session));
+        DiscoverPage page(PageParts::discover(&session));
         page.show();
         page.setRos2Options({domain, true});
         page.setRosGraphs(DiscoverPage::RosGraphs::Ros2);

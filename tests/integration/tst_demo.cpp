@@ -7,6 +7,7 @@
 #include "report/report.h"
 #include "resulttext.h"
 #include "ros2/ros2participant.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "signalprocess.h"
@@ -152,7 +153,7 @@ private slots:
         QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         LiveSession live;
         QVERIFY2(live.startRos2({lab.rosDomain(), true}, &error), qPrintable(error));
-        MeasureSession measure(&live);
+        MeasureSession measure(LiveParts::measure(&live));
         const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
         measure.setPipeline(*pipeline);

@@ -5,6 +5,7 @@
 #include "latency/stamptopicmodel.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttstampdecoder.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "testservers.h"
@@ -95,7 +96,7 @@ private slots:
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
         live.connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        MeasureSession measure(&live);
+        MeasureSession measure(LiveParts::measure(&live));
         QAbstractItemModelTester tester(measure.statsModel());
         measure.setTimeoutNs(60'000'000'000LL); // ROS subscriptions take a poll or two to appear
         Pipeline pipeline({u"/bench/a"_s, u"/bench/b"_s, u"/bench/c"_s, u"/bench/d"_s}, 0);
@@ -170,7 +171,7 @@ private slots:
     {
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
-        MeasureSession measure(&live);
+        MeasureSession measure(LiveParts::measure(&live));
         measure.setTimeoutNs(60'000'000'000LL);
         QVERIFY(measure.isAutomatic());
         Publisher ros(m_servers,
@@ -196,7 +197,7 @@ private slots:
     {
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
-        MeasureSession measure(&live);
+        MeasureSession measure(LiveParts::measure(&live));
         measure.setTimeoutNs(60'000'000'000LL);
         Publisher ros(m_servers,
                       {u"--stamp"_s, u"/bad/ok:0"_s, u"--stamp"_s, u"/bad/ok2:1000"_s, u"--malformed"_s,

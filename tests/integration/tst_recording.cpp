@@ -8,6 +8,7 @@
 #include "record/runrecorder.h"
 #include "report/report.h"
 #include "resulttext.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
@@ -91,7 +92,7 @@ private slots:
     {
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
-        MeasureSession measure(&live);
+        MeasureSession measure(LiveParts::measure(&live));
         Result<Pipeline> pipeline = Pipeline::read(pipelineYaml());
         QVERIFY(pipeline);
         measure.setPipeline(*pipeline);

@@ -14,6 +14,7 @@
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "ros2stampchain.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "testservers.h"
@@ -98,7 +99,7 @@ private slots:
     {
         const auto live = ros2Live();
         QVERIFY(live->isRos2Running());
-        MeasureSession measure(live.get());
+        MeasureSession measure(LiveParts::measure(live.get()));
         measure.setPipeline(Pipeline(kTopics, 1000));
         Ros2Peer chain(m_domain, chainArgs(kSamples));
         QVERIFY2(chain.waitFor(u"ready"_s), qPrintable(chain.errors()));
@@ -195,7 +196,7 @@ private slots:
     {
         const auto live = ros2Live();
         QVERIFY(live->isRos2Running());
-        MeasureSession measure(live.get());
+        MeasureSession measure(LiveParts::measure(live.get()));
         measure.setPipeline(Pipeline(kTopics, 1000));
         Ros2Participant* p = live->ros2();
         std::unique_ptr<Tap> tap = p->openTap(kTopics[1], 1000, 1 << 20);
@@ -225,7 +226,7 @@ private slots:
     {
         const auto live = ros2Live();
         QVERIFY(live->isRos2Running());
-        MeasureSession measure(live.get());
+        MeasureSession measure(LiveParts::measure(live.get()));
         constexpr int kValues = 30;
         Ros2Peer bridge(m_domain, {u"--node"_s, u"/mqtt_client"_s, u"--pub"_s,
                                    u"/mqtt_client/latencies/lab/out:std_msgs/msg/Float64:50"_s, u"--count"_s,
@@ -273,7 +274,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(device.state() == MqttConnection::State::Connected
                                      && live->mqtt()->state() == MqttConnection::State::Connected,
                                  10000);
-        MeasureSession measure(live.get());
+        MeasureSession measure(LiveParts::measure(live.get()));
         const QString edge = u"lab/edge/seen"_s;
         measure.setPipeline(Pipeline({kTopics[0], edge, kTopics[1]}, 1000));
         QHash<qint64, std::vector<qint64>> joined;
@@ -315,7 +316,7 @@ private slots:
     {
         const auto live = ros2Live();
         QVERIFY(live->isRos2Running());
-        MeasureSession measure(live.get());
+        MeasureSession measure(LiveParts::measure(live.get()));
         // A stamp whose frame_id claims 4 GiB, in 28 bytes.
         Ros2Peer hostile(m_domain, {u"--pub"_s, u"/lab/bad:benchmarking_suite/msg/TimeStamped:50"_s,
                                     u"--raw"_s, u"/lab/bad:0001000000f1536515cd5b07f0ffffff6162000001f1536500e1f505"_s,

@@ -13,6 +13,7 @@
 #include "record/runfile.h"
 #include "resulttext.h"
 #include "ros/rosgraphpoller.h"
+#include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "testservers.h"
@@ -92,7 +93,7 @@ private slots:
         LiveSession live;
         live.setRosMasterUri(m_servers.rosMasterUri());
         live.connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
-        MeasureSession measure(&live);
+        MeasureSession measure(LiveParts::measure(&live));
         measure.setPipeline(Pipeline({u"soak/ts/in"_s, u"soak/ts/out"_s}, 0));
         const QString runPath = m_servers.tempPath() + u"/soak.bsrun"_s;
         QString error;

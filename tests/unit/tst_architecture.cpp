@@ -358,6 +358,31 @@ private slots:
         QVERIFY(edges.value(u"widgets/common"_s).contains(u"core/topics"_s)); // the topic table's models
     }
 
+    // A page takes the parts it shows (its Parts), built where the window is composed
+    // (app/gui/pageparts.h), never the live session itself; nor does a consumer in core/.
+    void noWidgetIncludesTheLiveSession()
+    {
+        static const QRegularExpression include(u"^\\s*#\\s*include\\s*\"session/livesession\\.h\""_s,
+                                                QRegularExpression::MultilineOption);
+        QStringList found;
+        const QStringList consumers {u"core/session/fieldplotter.h"_s, u"core/session/fieldplotter.cpp"_s,
+                                     u"core/session/measuresession.h"_s, u"core/session/measuresession.cpp"_s,
+                                     u"core/watch/watchsession.h"_s, u"core/watch/watchsession.cpp"_s};
+        for (const QString& path : consumers)
+            if (include.match(readAll(source(path))).hasMatch())
+                found << path;
+        QDirIterator files(source(u"widgets"_s), {u"*.cpp"_s, u"*.h"_s}, QDir::Files, QDirIterator::Subdirectories);
+        int read = 0;
+        while (files.hasNext()) {
+            const QString path = files.next();
+            ++read;
+            if (include.match(readAll(path)).hasMatch())
+                found << path;
+        }
+        QVERIFY(read > 50); // the widgets were read
+        QVERIFY2(found.isEmpty(), qPrintable(found.join(u"; "_s)));
+    }
+
     // The checker itself, on a small tree that breaks each rule once.
     void checkerFindsEveryKindOfViolation()
     {

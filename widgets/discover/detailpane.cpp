@@ -4,7 +4,6 @@
 #include "mqtt/mqtttopictree.h"
 #include "session/fieldplotter.h"
 #include "session/graphstatus.h"
-#include "session/livesession.h"
 #include "topics/topictablemodel.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/discover/fieldplotchart.h"
@@ -131,11 +130,6 @@ void addJson(QStandardItem* parent, const QString& name, const QJsonValue& v, co
     parent->appendRow(items);
 }
 } // namespace
-
-DetailPane::Parts DetailPane::partsOf(LiveSession* live)
-{
-    return {FieldPlotter::partsOf(live), live->ros2Topics(), live->graphStatus()};
-}
 
 DetailPane::DetailPane(const Parts& parts, QWidget* parent)
     : QWidget(parent)

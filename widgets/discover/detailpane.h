@@ -8,7 +8,6 @@
 
 class FieldPlotChart;
 class GraphStatus;
-class LiveSession;
 class QAction;
 class QListWidget;
 class QComboBox;
@@ -43,9 +42,6 @@ public:
         const TopicTableModel* ros2Topics = nullptr;
         const GraphStatus* graphs = nullptr; ///< a ROS 2 topic's endpoints and their QoS
     };
-
-    /// The parts of a live session the pane reads.
-    static Parts partsOf(LiveSession* live);
 
     explicit DetailPane(const Parts& parts, QWidget* parent = nullptr);
 

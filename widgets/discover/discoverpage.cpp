@@ -5,7 +5,6 @@
 #include "mqtt/mqtttopictree.h"
 #include "mqtt/passwordstore.h"
 #include "session/graphstatus.h"
-#include "session/livesession.h"
 #include "topics/topictablemodel.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
@@ -67,12 +66,6 @@ QString bullet(const GraphStatus::Line& line)
     return bullet(u"#888"_s, text);
 }
 } // namespace
-
-DiscoverPage::Parts DiscoverPage::partsOf(LiveSession* live)
-{
-    return {live,         live->rosTopics(), live->ros2Topics(), live->mqttTopics(),
-            live->mqtt(), live->graphStatus(), DetailPane::partsOf(live)};
-}
 
 DiscoverPage::DiscoverPage(const Parts& parts, QWidget* parent)
     : QWidget(parent)

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
-#include "session/livesession.h"
+#include "session/sessioncontrols.h"
 #include "widgets/discover/detailpane.h"
 
 #include <QWidget>
@@ -51,9 +51,6 @@ public:
         const GraphStatus* graphs = nullptr;
         DetailPane::Parts detail;
     };
-    /// The parts of a live session the page uses.
-    static Parts partsOf(LiveSession* live);
-
     explicit DiscoverPage(const Parts& parts, QWidget* parent = nullptr);
 
     /// Shows ROS 1, ROS 2 or both; joins or leaves the ROS 2 domain as needed.
@@ -70,10 +67,6 @@ public:
 
     QTreeView* mqttView() const { return m_mqttView; }
     QLineEdit* rosFilter() const { return m_rosFilter; }
-    QLineEdit* mqttFilter() const { return m_mqttFilter; }
-    MqttTopicFilter* mqttFilterModel() const { return m_mqttProxy; }
-    QSortFilterProxyModel* rosFilterModel() const { return m_rosProxy; }
-    QAction* clearRetainedAction() const { return m_clearRetainedAction; }
 
     /// Opens a publish dialog for the selected MQTT topic (or level), beside the page.
     PublishDialog* openPublishDialog();

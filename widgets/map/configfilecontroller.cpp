@@ -5,26 +5,22 @@
 #include "config/configdocument.h"
 #include "config/configwriter.h"
 #include "config/peerconfig.h"
+#include "widgets/map/recentfiles.h"
 
 #include <algorithm>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
-#include <QSettings>
 #include <QUndoStack>
 
 using namespace Qt::StringLiterals;
 
-namespace {
-const auto kRecentKey = "recentConfigFiles";
-constexpr int kMaxRecent = 10;
-} // namespace
-
 ConfigFileController::ConfigFileController(ConfigDocument* document, QUndoStack* undoStack,
-                                           QWidget* dialogParent)
+                                           RecentFiles* recent, QWidget* dialogParent)
     : QObject(dialogParent)
     , m_doc(document)
     , m_undo(undoStack)
+    , m_recent(recent)
     , m_parent(dialogParent)
     , m_open {m_doc->snapshot()}
 {
@@ -84,7 +80,7 @@ bool ConfigFileController::openFile(const QString& path, QString* error)
     if (!r.ok)
         m_doc->openReadOnly(path, r);
     m_undo->clear();
-    addRecent(m_doc->filePath());
+    m_recent->add(m_doc->filePath());
     if (!r.ok)
         emit statusMessage(tr("Opened %1 read-only: %2").arg(m_doc->filePath(), r.error));
     else
@@ -192,7 +188,7 @@ bool ConfigFileController::saveTo(const QString& path, ConfigLayout layout)
         return false;
     }
     m_undo->setClean();
-    addRecent(m_doc->filePath());
+    m_recent->add(m_doc->filePath());
     QString message = tr("Saved %1").arg(m_doc->filePath());
     if (!r.notes.isEmpty())
         message += u" ("_s + r.notes.join(u"; "_s) + u')';
@@ -226,22 +222,6 @@ bool ConfigFileController::writePeer(const QString& path, const QString& clientI
     emit statusMessage(tr("Wrote the peer config %1%2")
                            .arg(path, notes.isEmpty() ? QString() : u" ("_s + notes.join(u"; "_s) + u')'));
     return true;
-}
-
-QStringList ConfigFileController::recentFiles() const
-{
-    return QSettings().value(QLatin1String(kRecentKey)).toStringList();
-}
-
-void ConfigFileController::addRecent(const QString& path)
-{
-    QStringList files = recentFiles();
-    files.removeAll(path);
-    files.prepend(path);
-    while (files.size() > kMaxRecent)
-        files.removeLast();
-    QSettings().setValue(QLatin1String(kRecentKey), files);
-    emit recentFilesChanged(files);
 }
 
 bool ConfigFileController::maybeSave()

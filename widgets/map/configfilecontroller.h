@@ -8,10 +8,12 @@
 #include <QObject>
 
 class QUndoStack;
+class RecentFiles;
 class QWidget;
 
 /// File handling of the config editor: new, open, save, save as, export in another layout,
-/// generate the peer config, recent files, and asking before unsaved edits are lost.
+/// generate the peer config, and asking before unsaved edits are lost (what it opens and saves goes
+/// among the recent files).
 /// The writing itself is ConfigDocument's (core); this class only asks and reports.
 ///
 /// Several configs are open at once (a lab has two ends: the vehicle's and the cloud's). They take
@@ -22,7 +24,9 @@ class ConfigFileController : public QObject
 {
     Q_OBJECT
 public:
-    ConfigFileController(ConfigDocument* document, QUndoStack* undoStack, QWidget* dialogParent);
+    /// Files opened and saved go among `recent`.
+    ConfigFileController(ConfigDocument* document, QUndoStack* undoStack, RecentFiles* recent,
+                         QWidget* dialogParent);
 
     /// How questions are asked; replaceable so that tests need no modal dialog.
     using Ask = std::function<bool(const QString& title, const QString& question)>;
@@ -32,12 +36,9 @@ public:
     /// its text and its error. What kept a file from opening at all goes to `error` if given,
     /// else to a message box.
     bool openFile(const QString& path, QString* error = nullptr);
-    /// Remembers a file of any kind among the recent ones (File › Open Recent).
-    void addRecent(const QString& path);
     bool saveTo(const QString& path, ConfigLayout layout);
     bool exportTo(const QString& path, ConfigLayout layout);
     bool writePeer(const QString& path, const QString& clientId);
-    QStringList recentFiles() const;
 
     bool newFile();
     bool open();
@@ -66,7 +67,6 @@ public:
     bool closeConfig(int i);
 
 signals:
-    void recentFilesChanged(const QStringList& files);
     void statusMessage(const QString& message);
     /// A config was opened, closed or shown.
     void openConfigsChanged();
@@ -81,6 +81,7 @@ private:
 
     ConfigDocument* m_doc;
     QUndoStack* m_undo;
+    RecentFiles* m_recent;
     QWidget* m_parent;
     Ask m_ask;
     QList<ConfigDocument::Snapshot> m_open; ///< m_open[m_current] is the document's, kept there

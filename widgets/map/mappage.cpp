@@ -8,7 +8,6 @@
 #include "mqtt/mqtttopicfilter.h"
 #include "mqtt/mqtttopictree.h"
 #include "session/graphstatus.h"
-#include "session/livesession.h"
 #include "session/mappinghealthevaluator.h"
 #include "topics/topictablemodel.h"
 #include "topics/topictree.h"
@@ -37,12 +36,6 @@
 #include <QVBoxLayout>
 
 using namespace Qt::StringLiterals;
-
-MapPage::Parts MapPage::partsOf(LiveSession* live)
-{
-    return {live->sources(), live->rosTopics(), live->ros2Topics(), live->mqttTopics(),
-            live->graphStatus(), live->mqtt()};
-}
 
 MapPage::MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent)
     : QWidget(parent)

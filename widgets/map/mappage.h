@@ -16,7 +16,6 @@ class ConfigFileController;
 class ConfigTabs;
 class ConfigEditor;
 class GraphStatus;
-class LiveSession;
 class MqttConnection;
 class MqttTopicFilter;
 class MqttTopicTree;
@@ -53,9 +52,6 @@ public:
         const GraphStatus* graphs = nullptr;
         const MqttConnection* mqtt = nullptr;
     };
-
-    /// The parts of a live session the page reads.
-    static Parts partsOf(LiveSession* live);
 
     MapPage(const Parts& parts, ConfigDocument* document, QUndoStack* undoStack, QWidget* parent = nullptr);
     ~MapPage() override;

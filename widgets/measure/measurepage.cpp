@@ -175,6 +175,7 @@ void MeasurePage::setUpWindowAndActions()
     m_window->setToolTip(
         tr("Statistics and ECDFs over the last N complete samples (the paper: 600), or 0 for the "
            "whole run"));
+    m_pause->setObjectName(u"pauseAction"_s);
     m_pause->setCheckable(true);
     m_pause->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_pause->setShortcutContext(Qt::WidgetWithChildrenShortcut);

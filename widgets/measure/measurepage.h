@@ -37,8 +37,6 @@ public:
     Status savePipeline(const QString& path);
 
     EcdfChart* chart() const { return m_chart; }
-    QAction* pauseAction() const { return m_pause; }
-    QAction* resetAction() const { return m_reset; }
     RunBar* runBar() const { return m_runBar; }
     /// Saves the chart as PNG or SVG (by the suffix).
     Status saveChart(const QString& path);

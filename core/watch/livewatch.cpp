@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+#include "livewatch.h"
+
+#include "record/runrecorder.h"
+#include "session/liveparts.h"
+#include "session/livesession.h"
+#include "session/measuresession.h"
+#include "watch/watchsession.h"
+
+namespace {
+WatchSession::Parts watchParts(LiveSession* live)
+{
+    return {live->sources(), live->rosGraph(), live->ros2(), live->rosMonitor(), live->mqtt()};
+}
+} // namespace
+
+LiveWatch::LiveWatch(Measuring measuring, QObject* parent)
+    : QObject(parent)
+    , m_live(new LiveSession(this))
+    , m_measure(measuring == Measuring::Yes ? new MeasureSession(LiveParts::measure(m_live), this) : nullptr)
+    , m_watch(new WatchSession(watchParts(m_live), this))
+{
+    if (m_measure) {
+        // pipeline latency for the links; a recorded run lists their events
+        m_watch->useMeasurement(m_measure);
+        return;
+    }
+    m_ownRecorder = new RunRecorder(this);
+    const auto add = [recorder = m_ownRecorder](const WatchEvent& e) { recorder->addEvent(e.toRecorded()); };
+    connect(m_watch->monitor(), &LinkMonitor::eventStarted, m_ownRecorder, add);
+    connect(m_watch->monitor(), &LinkMonitor::eventEnded, m_ownRecorder, add);
+}
+
+LiveWatch::~LiveWatch() = default;
+
+RunRecorder* LiveWatch::recorder() const
+{
+    return m_measure ? m_measure->recorder() : m_ownRecorder;
+}
+
+Result<void> LiveWatch::startRecording(const QString& path, const RunInfo& info)
+{
+    return m_measure ? m_measure->startRecording(path, info) : m_ownRecorder->start(path, info);
+}
+
+Result<void> LiveWatch::stopRecording()
+{
+    m_live->drainNow(); // the last stamps and events
+    return m_measure ? m_measure->stopRecording() : m_ownRecorder->stop();
+}
