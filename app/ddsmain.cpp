@@ -78,22 +78,22 @@ bool writeFrame(Kind kind, const QByteArray& body)
 class ChildEngine : public Ros2Engine
 {
 public:
-    bool start(const Ros2Options& options, QString* error) override
+    Status start(const Ros2Options& options) override
     {
         const int crashAfterMs = qEnvironmentVariableIntValue("BRIDGESCOPE_DDS_TEST_CRASH_UNLESS_LIMITED");
         if (crashAfterMs > 0 && !options.limitedGraph)
             QTimer::singleShot(crashAfterMs, [] { std::abort(); });
-        return Ros2Engine::start(options, error);
+        return Ros2Engine::start(options);
     }
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) override
+    Status advertise(const QString& topic, const QString& type, const Ros2Qos& qos) override
     {
         crashOn(type);
-        return Ros2Engine::advertise(topic, type, qos, why);
+        return Ros2Engine::advertise(topic, type, qos);
     }
-    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) override
+    Status subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos) override
     {
         crashOn(type);
-        return Ros2Engine::subscribeSamples(topic, type, qos, why);
+        return Ros2Engine::subscribeSamples(topic, type, qos);
     }
 
 private:

@@ -84,9 +84,8 @@ int discover(int domain, int topics, const QString& prefix, int intervalMs, int 
             QCoreApplication::exit(0);
     });
     clock.start();
-    QString error;
-    if (!participant.start({domain, true}, &error)) {
-        std::fprintf(stderr, "bench_ros2_bridgescope: %s\n", qPrintable(error));
+    if (const Status joined = participant.start({domain, true}); !joined) {
+        std::fprintf(stderr, "bench_ros2_bridgescope: %s\n", qPrintable(joined.error().toString()));
         return 1;
     }
     QTimer::singleShot(timeoutS * 1000, [] { QCoreApplication::exit(1); });
@@ -107,9 +106,8 @@ int discover(int domain, int topics, const QString& prefix, int intervalMs, int 
 int subscribe(int domain, const QString& topic, int size, int timeoutS)
 {
     Ros2Participant participant;
-    QString error;
-    if (!participant.start({domain, true}, &error)) {
-        std::fprintf(stderr, "bench_ros2_bridgescope: %s\n", qPrintable(error));
+    if (const Status joined = participant.start({domain, true}); !joined) {
+        std::fprintf(stderr, "bench_ros2_bridgescope: %s\n", qPrintable(joined.error().toString()));
         return 1;
     }
     QObject::connect(&participant, &Ros2Participant::monitorFailed, [](const QString&, const QString& why) {

@@ -144,7 +144,6 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "ros: %s\n", qPrintable(started.error().toString()));
         return 1;
     }
-    QString error;
     static_cast<void>(ros.subscribe( // a failure shows as nothing arriving
         u"/bench/out"_s, 100, [&viaRos1](const RosRawMessage& m, qint64 t) { viaRos1.add(m.bytes, 4, t); }));
     const int pub
@@ -157,8 +156,8 @@ int main(int argc, char** argv)
     dds.node().setNode(u"/"_s, u"bench_ros2bridge"_s);
     dds.node().advertise(u"/bench2/in"_s, kBlob2Type, qos);
     dds.node().subscribe(u"/bench2/out"_s, kBlob2Type, qos);
-    if (!dds.start({domain, true}, &error)) {
-        std::fprintf(stderr, "dds: %s\n", qPrintable(error));
+    if (const Status joined = dds.start({domain, true}); !joined) {
+        std::fprintf(stderr, "dds: %s\n", qPrintable(joined.error().toString()));
         return 1;
     }
     MqttLink mqtt(MqttProfile::fromUrl(broker));

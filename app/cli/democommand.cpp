@@ -146,10 +146,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         return ExitFailed;
     }
     LiveSession live;
-    QString why;
     if (lab.ros() == 2) {
-        if (!live.startRos2({lab.rosDomain(), true}, &why)) {
-            err(why);
+        if (const Status joined = live.startRos2({lab.rosDomain(), true}); !joined) {
+            err(joined.error().toString());
             return ExitFailed;
         }
     } else {

@@ -295,8 +295,11 @@ void listen(const DiscoverRequest& request, Heard* heard)
         heard->poller.setMasterUri(request.masterUri);
         heard->poller.start(500);
     }
-    if (request.ros2 && !heard->ros2.start(request.ros2Options, &heard->ros2Error))
-        heard->ros2Error = heard->ros2Error.isEmpty() ? Discover::tr("no participant") : heard->ros2Error;
+    if (request.ros2) {
+        if (const Status joined = heard->ros2.start(request.ros2Options); !joined)
+            heard->ros2Error = joined.error().message.isEmpty() ? Discover::tr("no participant")
+                                                                : joined.error().toString();
+    }
     // said as it happens, not only at the end: a restart of the DDS process is news
     sayRos2Restarts(&heard->ros2);
     QObject::connect(&heard->connection, &MqttConnection::stateChanged, [heard](MqttConnection::State s) {

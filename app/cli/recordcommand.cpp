@@ -182,10 +182,11 @@ int runRecord(const RecordRequest& request)
     LiveSession live;
     live.setRosMasterUri(request.masterUri);
     live.connectBroker(request.profile);
-    QString why;
-    if (request.ros2 && !live.startRos2(*request.ros2, &why)) {
-        err(why);
-        return ExitFailed;
+    if (request.ros2) {
+        if (const Status joined = live.startRos2(*request.ros2); !joined) {
+            err(joined.error().toString());
+            return ExitFailed;
+        }
     }
     sayRos2Restarts(live.ros2());
     MeasureSession measure(LiveParts::measure(&live));

@@ -404,10 +404,11 @@ bool prepareLive(LiveSession& live, const WatchRequest& request)
     // 1,000 links (perf, bench_watch).
     live.setFiguresInterval(1000);
     live.setRosMasterUri(request.masterUri);
-    QString why;
-    if (request.ros2 && !live.startRos2(*request.ros2, &why)) {
-        err(why);
-        return false;
+    if (request.ros2) {
+        if (const Status joined = live.startRos2(*request.ros2); !joined) {
+            err(joined.error().toString());
+            return false;
+        }
     }
     // the DDS process ended (a hostile datagram, a runaway): said as it happens, and started again
     sayRos2Restarts(live.ros2());
@@ -418,7 +419,6 @@ bool prepareLive(LiveSession& live, const WatchRequest& request)
 int runWatch(const WatchRequest& request)
 {
     std::unique_ptr<WatchMetrics> metrics;
-    QString why;
     if (!request.metrics.isEmpty() && !(metrics = serveMetrics(request.metrics)))
         return ExitFailed;
     QFile events(request.eventsFile);

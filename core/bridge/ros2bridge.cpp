@@ -393,9 +393,8 @@ Status Ros2Bridge::start(const Ros2Options& rosOptions)
     });
     QObject::connect(ros, &Ros2Participant::restartLoopBroken, ros,
                      [p](const QString& what) { p->log(what); });
-    QString why;
-    if (!ros->start(rosOptions, &why))
-        return LocatedError {why};
+    if (Status joined = ros->start(rosOptions); !joined)
+        return joined;
     ros->node().setNode(d->nameSpace, d->name);
     d->side = std::make_unique<Ros2Side>(*ros, d->registry, [p](const QString& topic) { return p->resolve(topic); });
     for (Route& r : d->routes) {

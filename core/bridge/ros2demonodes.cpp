@@ -62,8 +62,8 @@ struct Stamper
 Status setUp(Ros2Participant& dds, const Ros2DemoNodes::Options& o, const QString& name,
              std::initializer_list<const Stamper*> stampers)
 {
-    if (QString why; !dds.start(o.dds, &why))
-        return LocatedError {why};
+    if (Status joined = dds.start(o.dds); !joined)
+        return joined;
     dds.node().setNode(u"/"_s, name);
     for (const Stamper* s : stampers)
         dds.node().advertise(s->topic, QLatin1String(Ros2BridgeWire::kTimeStampedType));

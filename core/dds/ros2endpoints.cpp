@@ -170,7 +170,7 @@ void Ros2Endpoints::announce()
     dds_write(m_infoWriter, &sample);
 }
 
-bool Ros2Endpoints::advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+Status Ros2Endpoints::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
     unadvertise(topic);
     Writer w;
@@ -181,15 +181,13 @@ bool Ros2Endpoints::advertise(const QString& topic, const QString& type, const R
     if (w.writer <= 0) {
         if (w.topic > 0)
             dds_delete(w.topic);
-        if (why)
-            *why = QStringLiteral("Cyclone DDS could not make a writer of %1 as %2").arg(topic, type);
-        return false;
+        return LocatedError {QStringLiteral("Cyclone DDS could not make a writer of %1 as %2").arg(topic, type)};
     }
     w.endpoint = {guidOf(w.writer), topic, type, true, qos, {}};
     m_writers[topic] = w;
     ++m_changes;
     announce();
-    return true;
+    return {};
 }
 
 void Ros2Endpoints::unadvertise(const QString& topic)
@@ -213,7 +211,7 @@ bool Ros2Endpoints::publish(const QString& topic, const QByteArray& cdr)
     return dds_write(it->second.writer, &sample) == DDS_RETCODE_OK;
 }
 
-bool Ros2Endpoints::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+Status Ros2Endpoints::subscribe(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
     unsubscribe(topic);
     auto s = std::make_unique<Subscription>();
@@ -235,9 +233,7 @@ bool Ros2Endpoints::subscribe(const QString& topic, const QString& type, const R
         reader->close();
         std::lock_guard<std::mutex> lock(m_mutex);
         m_subscriptions.erase(topic);
-        if (why)
-            *why = QStringLiteral("Cyclone DDS could not make a reader of %1 as %2").arg(topic, type);
-        return false;
+        return LocatedError {QStringLiteral("Cyclone DDS could not make a reader of %1 as %2").arg(topic, type)};
     }
     {
         std::lock_guard<std::mutex> lock(m_mutex);
@@ -245,7 +241,7 @@ bool Ros2Endpoints::subscribe(const QString& topic, const QString& type, const R
     }
     ++m_changes;
     announce();
-    return true;
+    return {};
 }
 
 void Ros2Endpoints::unsubscribe(const QString& topic)

@@ -39,11 +39,11 @@ public:
 
     void setNode(const QString& nameSpace, const QString& name);
     /// False with `why` when Cyclone refuses.
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why);
+    Status advertise(const QString& topic, const QString& type, const Ros2Qos& qos);
     void unadvertise(const QString& topic);
     /// False when the topic is not advertised or Cyclone refuses the sample.
     bool publish(const QString& topic, const QByteArray& cdr);
-    bool subscribe(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why);
+    Status subscribe(const QString& topic, const QString& type, const Ros2Qos& qos);
     void unsubscribe(const QString& topic);
 
     /// The subscriptions' oldest samples, about `maxBytes` of them (at least one), topic by topic

@@ -336,15 +336,14 @@ struct Ros2Engine::Private
         if (prefix.isEmpty() || prefix == ownPrefix)
             return;
         const QByteArray bytes(reinterpret_cast<const char*>(sample.data), qsizetype(sample.size));
-        QString error;
-        auto parsed = Ros2DiscoveryInfo::parse(bytes, &error);
+        Result<Ros2ParticipantInfo> parsed = Ros2DiscoveryInfo::parse(bytes);
         ++changes; // when not read: the graph is the same, but what is shown with it (the count) is not
         if (!parsed) {
             ++badInfo;
             // the first 16 participants are named in the log, once each; the set stays that small
             if (badInfoFrom.size() < 16 && badInfoFrom.insert(prefix).second)
                 qCWarning(lcRos2).noquote()
-                    << "ros_discovery_info from participant" << prefix.toHex() << "not read:" << error;
+                    << "ros_discovery_info from participant" << prefix.toHex() << "not read:" << parsed.error().toString();
             return;
         }
         // a participant speaks for itself only: its announcement is kept under its own prefix
@@ -393,16 +392,13 @@ static dds_entity_t createParticipant(dds_domainid_t domain)
     return participant;
 }
 
-bool Ros2Engine::start(const Ros2Options& options, QString* error)
+Status Ros2Engine::start(const Ros2Options& options)
 {
     stop();
-    if (options.domain < 0 || options.domain > Ros2Options::kMaxDomain) {
-        if (error)
-            *error = tr("domain %1 is out of range: ROS 2 domains are 0 to %2")
-                         .arg(options.domain)
-                         .arg(Ros2Options::kMaxDomain);
-        return false;
-    }
+    if (options.domain < 0 || options.domain > Ros2Options::kMaxDomain)
+        return LocatedError {tr("domain %1 is out of range: ROS 2 domains are 0 to %2")
+                                 .arg(options.domain)
+                                 .arg(Ros2Options::kMaxDomain)};
     // Fatal lines only, through our sink (cycloneLog): every malformed datagram would be a line on
     // stderr, and the parent forwards what we print (a flood of hostile datagrams would flood its
     // terminal). The trace goes nowhere.
@@ -421,12 +417,10 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     if (d->participant <= 0) {
         const QString why = QString::fromUtf8(dds_strretcode(d->domain > 0 ? d->participant : d->domain));
         d.reset();
-        if (error)
-            *error = tr("Cyclone DDS could not create a participant on domain %1 (%2: no usable network "
-                        "interface or ports?)")
-                         .arg(options.domain)
-                         .arg(why);
-        return false;
+        return LocatedError {tr("Cyclone DDS could not create a participant on domain %1 (%2: no usable network "
+                                "interface or ports?)")
+                                 .arg(options.domain)
+                                 .arg(why)};
     }
     dds_guid_t own;
     if (dds_get_guid(d->participant, &own) == DDS_RETCODE_OK)
@@ -444,7 +438,7 @@ bool Ros2Engine::start(const Ros2Options& options, QString* error)
     m_polledChanges = 0;
     m_shownBadInfo = 0;
     m_timer.start();
-    return true;
+    return {};
 }
 
 /// Node names: every participant's ros_discovery_info, kept (transient local) by its writer and
@@ -529,10 +523,10 @@ void Ros2Engine::refresh()
     // watched or monitored topics whose type the graph did not know before (or since start())
     for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it)
         if (!m_readers.isSubscribed(it.key()) && m_graph.topic(it.key()))
-            subscribe(it.key(), m_monitorUses.contains(it.key()), nullptr);
+            static_cast<void>(subscribe(it.key(), m_monitorUses.contains(it.key()))); // failing: asked again at the next refresh
     for (auto it = m_monitorUses.cbegin(); it != m_monitorUses.cend(); ++it)
         if (!m_readers.isSubscribed(it.key()) && m_graph.topic(it.key()))
-            subscribe(it.key(), true, nullptr);
+            static_cast<void>(subscribe(it.key(), true)); // failing: asked again at the next refresh
     emit graphChanged(m_graph);
 }
 
@@ -550,21 +544,17 @@ void Ros2Engine::monitor(const QString& topic, bool waitForType)
         m_monitorUses.insert(topic, 1);
         return;
     }
-    QString why;
-    if (subscribe(topic, true, &why))
+    if (const Status subscribed = subscribe(topic, true))
         m_monitorUses.insert(topic, 1);
     else
-        emit monitorFailed(topic, why);
+        emit monitorFailed(topic, subscribed.error().message);
 }
 
-bool Ros2Engine::subscribe(const QString& topic, bool monitored, QString* why)
+Status Ros2Engine::subscribe(const QString& topic, bool monitored)
 {
     const Ros2Topic* t = m_graph.topic(topic);
-    if (!t || t->types.isEmpty()) {
-        if (why)
-            *why = tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic);
-        return false;
-    }
+    if (!t || t->types.isEmpty())
+        return LocatedError {tr("%1 has no publisher or subscriber yet, so its type is not known").arg(topic)};
     const QString type = t->type();
     QString ddsType = Ros2Names::ddsType(type);
     if (ddsType.isEmpty())
@@ -594,12 +584,10 @@ bool Ros2Engine::subscribe(const QString& topic, bool monitored, QString* why)
     if (!opened) {
         reader->close();
         m_readers.remove(topic);
-        if (why)
-            *why = tr("Cyclone DDS could not subscribe to %1 as %2").arg(topic, type);
-        return false;
+        return LocatedError {tr("Cyclone DDS could not subscribe to %1 as %2").arg(topic, type)};
     }
     m_readers.setReader(topic, std::move(reader));
-    return true;
+    return {};
 }
 
 void Ros2Engine::unmonitor(const QString& topic)
@@ -618,7 +606,7 @@ void Ros2Engine::watchMessages(const QString& topic, std::size_t maxMessages, qi
     if (!d || d->participant <= 0)
         return; // start() and the graph bring the subscription
     if (!m_readers.watch(topic, maxMessages, maxBytes))
-        subscribe(topic, false, nullptr); // else when the graph knows its type (refresh())
+        static_cast<void>(subscribe(topic, false)); // else when the graph knows its type (refresh())
 }
 
 void Ros2Engine::unwatchMessages(const QString& topic)
@@ -641,14 +629,11 @@ void Ros2Engine::setNode(const QString& nameSpace, const QString& name)
         d->own->setNode(nameSpace, name);
 }
 
-bool Ros2Engine::advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+Status Ros2Engine::advertise(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
-    if (!d) {
-        if (why)
-            *why = tr("not on a domain");
-        return false;
-    }
-    return d->own->advertise(topic, type, qos, why);
+    if (!d)
+        return LocatedError {tr("not on a domain")};
+    return d->own->advertise(topic, type, qos);
 }
 
 void Ros2Engine::unadvertise(const QString& topic)
@@ -662,14 +647,11 @@ bool Ros2Engine::publish(const QString& topic, const QByteArray& cdr)
     return d && d->own->publish(topic, cdr);
 }
 
-bool Ros2Engine::subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+Status Ros2Engine::subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos)
 {
-    if (!d) {
-        if (why)
-            *why = tr("not on a domain");
-        return false;
-    }
-    return d->own->subscribe(topic, type, qos, why);
+    if (!d)
+        return LocatedError {tr("not on a domain")};
+    return d->own->subscribe(topic, type, qos);
 }
 
 void Ros2Engine::unsubscribeSamples(const QString& topic)

@@ -37,7 +37,7 @@ public:
 
     /// Joins the domain; false with `error` when the participant cannot be made (a domain out of
     /// range, no usable transport).
-    bool start(const Ros2Options& options, QString* error = nullptr) override;
+    Status start(const Ros2Options& options) override;
     void stop();
     bool isRunning() const;
     Ros2Options options() const { return m_options; }
@@ -70,11 +70,10 @@ public:
     // Endpoints of our own (Ros2Participant's setNode(), advertise(), publish(), subscribe()); each
     // false with `why` when not running or Cyclone refuses.
     void setNode(const QString& nameSpace, const QString& name) override;
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why = nullptr) override;
+    Status advertise(const QString& topic, const QString& type, const Ros2Qos& qos) override;
     void unadvertise(const QString& topic) override;
     bool publish(const QString& topic, const QByteArray& cdr) override;
-    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos,
-                          QString* why = nullptr) override;
+    Status subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos) override;
     void unsubscribeSamples(const QString& topic) override;
     /// Subscribed topics' samples, oldest first, about `maxBytes` of them (at least one), and the
     /// drops of each queue so far. What is taken leaves the queues' bound: take no more than what
@@ -104,7 +103,7 @@ private:
     void refresh();
     /// Makes the topic's reader; false with `why` when the graph has no type for it or Cyclone
     /// refuses.
-    bool subscribe(const QString& topic, bool monitored, QString* why);
+    Status subscribe(const QString& topic, bool monitored);
     void openDiscoveryInfo();
 
     struct Private;

@@ -17,8 +17,8 @@ using namespace Qt::StringLiterals;
 ExperimentLab::ExperimentLab() = default;
 ExperimentLab::~ExperimentLab() = default;
 
-bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int seed,
-                          const QString& directory, const QString& program, QString* why)
+Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int seed,
+                            const QString& directory, const QString& program)
 {
     clock.start();
     DemoLab::Options o;
@@ -35,11 +35,8 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
     o.tlsDirectory = s.tls ? QDir(directory).filePath(u"tls"_s) : QString();
     o.bridgeCommand = s.bridge.command;
     o.ros = plan.ros; // ROS 2: the lab picks a fresh free domain for each cell
-    if (Status servers = lab.startServers(o); !servers) {
-        if (why)
-            *why = servers.error().toString();
-        return false;
-    }
+    if (Status servers = lab.startServers(o); !servers)
+        return servers;
     if (!s.link.isNone()) {
         // host and port without the user info: a password may hold what QUrl refuses
         const QUrl broker(Secrets::urlWithoutCredentials(lab.brokerUrl()));
@@ -47,36 +44,27 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
         for (auto [relay, n] : {std::pair {&vehicleRelay, 1u}, std::pair {&cloudRelay, 2u}}) {
             Result<std::unique_ptr<LinkRelay>> started
                 = LinkRelay::start(s.link, broker.host(), port, 2u * quint32(seed) + n);
-            if (!started) {
-                if (why)
-                    *why = started.error().toString();
-                return false;
-            }
+            if (!started)
+                return started.error();
             *relay = std::move(started).value();
         }
         lab.setBridgePort(u"vehicle"_s, vehicleRelay->port());
         lab.setBridgePort(u"cloud"_s, cloudRelay->port());
     }
-    if (Status components = lab.startComponents(); !components) {
-        if (why)
-            *why = components.error().toString();
-        return false;
-    }
+    if (Status components = lab.startComponents(); !components)
+        return components;
     Result<Pipeline> pipeline
         = Pipeline::readFile(plan.pipelinePath.isEmpty() ? lab.pipelinePath() : plan.pipelinePath);
-    if (!pipeline) {
-        if (why)
-            *why = pipeline.error().toString();
-        return false;
-    }
+    if (!pipeline)
+        return pipeline.error();
     pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
     live = std::make_unique<LiveSession>();
     if (lab.ros() == 2) {
         Ros2Options dds;
         dds.domain = lab.rosDomain();
         dds.localhostOnly = true;
-        if (!live->startRos2(dds, why))
-            return false;
+        if (Status joined = live->startRos2(dds); !joined)
+            return joined;
     } else {
         live->setRosMasterUri(lab.rosMasterUri());
     }
@@ -86,5 +74,5 @@ bool ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, int
     measure = std::make_unique<MeasureSession>(LiveParts::measure(live.get()));
     measure->setRos1(lab.ros() == 1); // a ROS 2 cell has no master: none is asked, none is named
     measure->setPipeline(*pipeline);
-    return true;
+    return {};
 }

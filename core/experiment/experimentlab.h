@@ -27,10 +27,10 @@ struct ExperimentLab
     ExperimentLab& operator=(const ExperimentLab&) = delete;
 
     /// Starts everything for `settings` of `plan`, whose folder is `directory` (its TLS files) and
-    /// whose bridges and nodes are run by `program`; `seed` makes the relays' randomness. False with
-    /// `why` when a part does not start; what did start stays until this is destroyed.
-    bool start(const ExperimentPlan& plan, const CellSettings& settings, int seed, const QString& directory,
-               const QString& program, QString* why);
+    /// whose bridges and nodes are run by `program`; `seed` makes the relays' randomness. The error
+    /// when a part does not start; what did start stays until this is destroyed.
+    Status start(const ExperimentPlan& plan, const CellSettings& settings, int seed, const QString& directory,
+                 const QString& program);
 
     DemoLab lab;
     std::unique_ptr<LinkRelay> vehicleRelay;

@@ -279,9 +279,8 @@ void ExperimentRunner::beginCell(int index)
         endCell(CellStatus::Failed, cell.settings.problem);
         return;
     }
-    QString why;
-    if (!m_cell->start(m_plan, cell.settings, index, m_dir, m_options.program, &why)) {
-        endCell(CellStatus::Failed, why);
+    if (Status started = m_cell->start(m_plan, cell.settings, index, m_dir, m_options.program); !started) {
+        endCell(CellStatus::Failed, started.error().toString());
         return;
     }
     connect(&m_cell->timer, &QTimer::timeout, this, &ExperimentRunner::poll);

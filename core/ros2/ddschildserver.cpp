@@ -35,11 +35,10 @@ bool DdsChildServer::handle(const Ros2Protocol::Frame& f)
         if (!r)
             return false;
         m_engine.setGraphInterval(r->graphIntervalMs);
-        QString error;
-        if (m_engine.start(r->options, &error))
+        if (const Status started = m_engine.start(r->options))
             m_send(Kind::Started, {});
         else
-            m_send(Kind::StartFailed, Ros2Protocol::encodeStrings({error}));
+            m_send(Kind::StartFailed, Ros2Protocol::encodeStrings({started.error().message}));
         return true;
     }
     case Kind::GraphInterval: {
@@ -107,9 +106,12 @@ bool DdsChildServer::handleEndpoint(const Ros2Protocol::Frame& f)
         QString why;
         // the parent checks these too; checked here again, so that nothing reaches DDS unchecked
         bool made = Ros2Names::isValidTopic(e->topic, &why) && Ros2Names::isValidType(e->type, &why);
-        if (made)
-            made = advertise ? m_engine.advertise(e->topic, e->type, e->qos, &why)
-                             : m_engine.subscribeSamples(e->topic, e->type, e->qos, &why);
+        if (made) {
+            const Status endpoint = advertise ? m_engine.advertise(e->topic, e->type, e->qos)
+                                              : m_engine.subscribeSamples(e->topic, e->type, e->qos);
+            made = endpoint.ok();
+            why = endpoint.error().message;
+        }
         if (!made && why.isEmpty())
             why = QCoreApplication::translate("DdsChildServer", "Cyclone DDS refused it");
         m_send(Kind::EndpointDone,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "ros2/ros2graph.h"
 #include "ros2/ros2protocol.h"
 #include "ros2/ros2types.h"
@@ -18,7 +19,7 @@ class Ros2ChildEngine
 {
 public:
     virtual ~Ros2ChildEngine() = default;
-    virtual bool start(const Ros2Options& options, QString* error) = 0;
+    virtual Status start(const Ros2Options& options) = 0;
     virtual void setGraphInterval(int ms) = 0;
     virtual void monitor(const QString& topic, bool waitForType) = 0;
     virtual void unmonitor(const QString& topic) = 0;
@@ -26,11 +27,11 @@ public:
     virtual void unwatchMessages(const QString& topic) = 0;
     virtual void keepArrivals(std::size_t maxArrivals) = 0;
     virtual void setNode(const QString& nameSpace, const QString& name) = 0;
-    virtual bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) = 0;
+    /// The error's message may be empty: the server then says Cyclone refused it.
+    virtual Status advertise(const QString& topic, const QString& type, const Ros2Qos& qos) = 0;
     virtual void unadvertise(const QString& topic) = 0;
     virtual bool publish(const QString& topic, const QByteArray& cdr) = 0;
-    virtual bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
-        = 0;
+    virtual Status subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos) = 0;
     virtual void unsubscribeSamples(const QString& topic) = 0;
 };
 

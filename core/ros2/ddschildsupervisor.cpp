@@ -84,20 +84,18 @@ QString DdsChildSupervisor::program()
 #endif
 }
 
-bool DdsChildSupervisor::start(QString* error)
+Status DdsChildSupervisor::start()
 {
     stop();
     m_wanted = true;
     m_count.newStart();
     const QString failed = launch();
     if (!m_child) {
-        if (error)
-            *error = failed;
         m_wanted = false;
-        return false;
+        return LocatedError {failed};
     }
     m_watchdog.start();
-    return true;
+    return {};
 }
 
 QString DdsChildSupervisor::launch()

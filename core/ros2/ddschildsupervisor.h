@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "ros2/ddschildpipe.h"
 #include "ros2/ros2protocol.h"
 
@@ -72,9 +73,9 @@ public:
     };
     void setCauseOfEnd(std::function<Cause(bool ranInto)> cause) { m_cause = std::move(cause); }
 
-    /// Launches the first child (launched() or launchFailed() says how); false with `error` when
+    /// Launches the first child (launched() or launchFailed() says how); the error when
     /// it could not be started. The restarts are counted anew.
-    bool start(QString* error = nullptr);
+    Status start();
     void stop();
     /// Between start() and stop(), also while a restart waits for its backoff.
     bool isWanted() const { return m_wanted; }

@@ -169,22 +169,17 @@ std::optional<Ros2ParticipantInfo> parseWithGid(const QByteArray& cdr, int gidSi
 
 } // namespace
 
-std::optional<Ros2ParticipantInfo> Ros2DiscoveryInfo::parse(const QByteArray& cdr, QString* error)
+Result<Ros2ParticipantInfo> Ros2DiscoveryInfo::parse(const QByteArray& cdr)
 {
-    if (cdr.size() < 4 || cdr.at(0) != 0 || (cdr.at(1) != 0 && cdr.at(1) != 1)) {
-        if (error)
-            *error = tr("not a CDR sample (its encapsulation header is missing or not plain CDR)");
-        return std::nullopt;
-    }
+    if (cdr.size() < 4 || cdr.at(0) != 0 || (cdr.at(1) != 0 && cdr.at(1) != 1))
+        return LocatedError {tr("not a CDR sample (its encapsulation header is missing or not plain CDR)")};
     for (int gidSize : {24, 16}) {
         if (auto info = parseWithGid(cdr, gidSize))
-            return info;
+            return std::move(*info);
     }
-    if (error)
-        *error = tr("not a ParticipantEntitiesInfo of %n byte(s): a length runs past the end, a name is over "
-                    "256 characters, or bytes are left over",
-                    nullptr, int(cdr.size()));
-    return std::nullopt;
+    return LocatedError {tr("not a ParticipantEntitiesInfo of %n byte(s): a length runs past the end, a name is "
+                            "over 256 characters, or bytes are left over",
+                            nullptr, int(cdr.size()))};
 }
 
 const Ros2Topic* Ros2Graph::topic(const QString& name) const

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "topics/topicgraph.h"
 
 #include <optional>
@@ -76,7 +77,7 @@ class Ros2DiscoveryInfo
     Q_DECLARE_TR_FUNCTIONS(Ros2DiscoveryInfo)
 public:
     static constexpr int kMaxNodes = 4096;
-    static std::optional<Ros2ParticipantInfo> parse(const QByteArray& cdr, QString* error = nullptr);
+    static Result<Ros2ParticipantInfo> parse(const QByteArray& cdr);
 };
 
 /// A ROS 2 topic with its endpoints.

@@ -96,25 +96,19 @@ void Ros2Participant::setGraphInterval(int ms)
     m_link.setGraphInterval(ms);
 }
 
-bool Ros2Participant::start(const Ros2Options& options, QString* error)
+Status Ros2Participant::start(const Ros2Options& options)
 {
     stop();
-    if (options.domain < 0 || options.domain > Ros2Options::kMaxDomain) {
-        if (error)
-            *error = tr("domain %1 is out of range: ROS 2 domains are 0 to %2")
-                         .arg(options.domain)
-                         .arg(Ros2Options::kMaxDomain);
-        return false;
-    }
-    if (DdsChildSupervisor::program().isEmpty()) {
-        if (error)
-            *error = tr("cannot see ROS 2: the helper program bridgescope-dds is not installed");
-        return false;
-    }
+    if (options.domain < 0 || options.domain > Ros2Options::kMaxDomain)
+        return LocatedError {tr("domain %1 is out of range: ROS 2 domains are 0 to %2")
+                                 .arg(options.domain)
+                                 .arg(Ros2Options::kMaxDomain)};
+    if (DdsChildSupervisor::program().isEmpty())
+        return LocatedError {tr("cannot see ROS 2: the helper program bridgescope-dds is not installed")};
     m_options = options;
     m_link.resetBadDiscoveryInfo();
     qCDebug(lcRos2).noquote() << "joining domain" << m_options.domain;
-    return m_supervisor.start(error);
+    return m_supervisor.start();
 }
 
 void Ros2Participant::onLaunched(bool limitedGraph)

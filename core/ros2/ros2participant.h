@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/newestqueue.h"
+#include "base/result.h"
 #include "latency/messagesource.h"
 #include "ros2/ddschildsupervisor.h"
 #include "ros2/ros2graph.h"
@@ -47,10 +48,10 @@ public:
     explicit Ros2Participant(QObject* parent = nullptr);
     ~Ros2Participant() override;
 
-    /// Starts the child that joins the domain; false with `error` when the domain is out of range
+    /// Starts the child that joins the domain; the error when the domain is out of range
     /// or the child cannot be started. A participant that the DDS library cannot make (no usable
     /// transport) is said later, by lastError() and graphChanged().
-    bool start(const Ros2Options& options, QString* error = nullptr);
+    Status start(const Ros2Options& options);
     void stop();
     bool isRunning() const;
     Ros2Options options() const { return m_options; }

@@ -85,11 +85,11 @@ QString LiveSession::rosMasterUri() const
     return m_poller->masterUri();
 }
 
-bool LiveSession::startRos2(const Ros2Options& options, QString* error)
+Status LiveSession::startRos2(const Ros2Options& options)
 {
     qCDebug(lcSession) << "ROS 2 domain" << options.domain << (options.localhostOnly ? "on this host" : "");
     stopRos2();
-    return m_ros2->start(options, error);
+    return m_ros2->start(options);
 }
 
 void LiveSession::stopRos2()

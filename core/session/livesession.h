@@ -45,7 +45,7 @@ public:
     void disconnectBroker() override;
 
     /// Joins a ROS 2 domain (leaving the one before); the ROS 2 topics fill ros2Topics().
-    bool startRos2(const Ros2Options& options, QString* error = nullptr) override;
+    Status startRos2(const Ros2Options& options) override;
     void stopRos2() override;
     bool isRos2Running() const override { return m_ros2->isRunning(); }
     Ros2Participant* ros2() const { return m_ros2; }

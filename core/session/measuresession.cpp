@@ -327,13 +327,10 @@ bool MeasureSession::isRecording() const
     return m_recorder->isRecording();
 }
 
-bool MeasureSession::showRun(const RunData& run, QString* error)
+Status MeasureSession::showRun(const RunData& run)
 {
-    if (m_recorder->isRecording()) {
-        if (error)
-            *error = tr("recording: stop it before opening a run");
-        return false;
-    }
+    if (m_recorder->isRecording())
+        return LocatedError {tr("recording: stop it before opening a run")};
     if (!m_showingRun) {
         m_livePipeline = m_engine.pipeline();
         m_liveAutomatic = m_automatic;
@@ -349,7 +346,7 @@ bool MeasureSession::showRun(const RunData& run, QString* error)
     emit pipelineChanged();
     emit showingRunChanged(true);
     publish();
-    return true;
+    return {};
 }
 
 void MeasureSession::showLive()

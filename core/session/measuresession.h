@@ -120,7 +120,7 @@ public:
 
     /// Shows a recorded run instead of the live measurement: the figures as they were at its end.
     /// Live stamps are not measured meanwhile.
-    bool showRun(const RunData& run, QString* error = nullptr);
+    Status showRun(const RunData& run);
     /// Back to measuring live (from zero, with the live pipeline).
     void showLive();
     bool isShowingRun() const { return m_showingRun; }

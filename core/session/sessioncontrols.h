@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "mqtt/mqttprofile.h"
 #include "ros2/ros2types.h"
 
@@ -16,7 +17,7 @@ public:
     virtual QString rosMasterUri() const = 0;
     virtual void connectBroker(const MqttProfile& profile) = 0;
     virtual void disconnectBroker() = 0;
-    virtual bool startRos2(const Ros2Options& options, QString* error = nullptr) = 0;
+    virtual Status startRos2(const Ros2Options& options) = 0;
     virtual void stopRos2() = 0;
     virtual bool isRos2Running() const = 0;
 };

@@ -17,11 +17,10 @@ class RecordingEngine : public Ros2ChildEngine
 {
 public:
     int endpointCalls = 0;
-    bool start(const Ros2Options& options, QString* error) override
+    Status start(const Ros2Options& options) override
     {
         FUZZ_CHECK(options.domain >= 0 && options.domain <= Ros2Options::kMaxDomain, "a domain out of range");
-        *error = QStringLiteral("not here");
-        return false;
+        return LocatedError {QStringLiteral("not here")};
     }
     void setGraphInterval(int ms) override
     {
@@ -39,9 +38,9 @@ public:
         FUZZ_CHECK(n <= 100'000'000, "an arrival bound out of range");
     }
     void setNode(const QString&, const QString&) override { }
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why) override
+    Status advertise(const QString& topic, const QString& type, const Ros2Qos& qos) override
     {
-        return endpoint(topic, type, qos, why);
+        return endpoint(topic, type, qos);
     }
     void unadvertise(const QString&) override { }
     bool publish(const QString&, const QByteArray& cdr) override
@@ -49,26 +48,23 @@ public:
         FUZZ_CHECK(cdr.size() >= 4, "a sample without its encapsulation header");
         return true;
     }
-    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos,
-                          QString* why) override
+    Status subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos) override
     {
-        return endpoint(topic, type, qos, why);
+        return endpoint(topic, type, qos);
     }
     void unsubscribeSamples(const QString&) override { }
 
 private:
-    bool endpoint(const QString& topic, const QString& type, const Ros2Qos& qos, QString* why)
+    Status endpoint(const QString& topic, const QString& type, const Ros2Qos& qos)
     {
         ++endpointCalls;
         FUZZ_CHECK(Ros2Names::isValidTopic(topic) && Ros2Names::isValidType(type),
                    "an unchecked name reached DDS");
         FUZZ_CHECK(type.size() <= Ros2Names::kMaxNameChars, "a type name past the bound reached DDS");
         FUZZ_CHECK(qos.depth >= 1 && qos.depth <= Ros2Protocol::kMaxDepth, "a depth out of range");
-        if (topic.size() % 2) { // refused now and then, as Cyclone may
-            *why = QStringLiteral("refused");
-            return false;
-        }
-        return true;
+        if (topic.size() % 2) // refused now and then, as Cyclone may
+            return LocatedError {QStringLiteral("refused")};
+        return {};
     }
 };
 

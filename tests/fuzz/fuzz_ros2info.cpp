@@ -12,10 +12,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const QByteArray bytes = fuzz::bytes(data, size);
-    QString error;
-    const auto info = Ros2DiscoveryInfo::parse(bytes, &error);
+    const auto info = Ros2DiscoveryInfo::parse(bytes);
     if (!info) {
-        FUZZ_CHECK(!error.isEmpty(), "a discovery sample refused without a message");
+        FUZZ_CHECK(!info.error().message.isEmpty(), "a discovery sample refused without a message");
     } else {
         FUZZ_CHECK(info->gid.size() == 16, "a participant GUID that is not 16 bytes");
         FUZZ_CHECK(info->nodes.size() <= Ros2DiscoveryInfo::kMaxNodes, "more nodes than the limit");

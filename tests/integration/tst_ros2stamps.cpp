@@ -87,7 +87,7 @@ private:
         auto live = std::make_unique<LiveSession>();
         live->setRosMasterUri(u"http://127.0.0.1:1"_s);
         QString error;
-        if (!live->startRos2({m_domain, true}, &error))
+        if (!noted(live->startRos2({m_domain, true}), &error))
             qWarning("%s", qPrintable(error));
         return live;
     }
@@ -336,3 +336,4 @@ private slots:
 
 QTEST_GUILESS_MAIN(TestRos2Stamps)
 #include "tst_ros2stamps.moc"
+#include "resulttext.h"

@@ -20,12 +20,12 @@ public:
     bool startOk = true;
     QString refuseType; ///< advertise() and subscribeSamples() refuse it, saying nothing
 
-    bool start(const Ros2Options& options, QString* error) override
+    Status start(const Ros2Options& options) override
     {
         calls << u"start %1 %2"_s.arg(options.domain).arg(options.localhostOnly);
         if (!startOk)
-            *error = u"no domain"_s;
-        return startOk;
+            return LocatedError {u"no domain"_s};
+        return {};
     }
     void setGraphInterval(int ms) override { calls << u"interval %1"_s.arg(ms); }
     void monitor(const QString& topic, bool waitForType) override
@@ -43,10 +43,10 @@ public:
     {
         calls << u"node %1 %2"_s.arg(nameSpace, name);
     }
-    bool advertise(const QString& topic, const QString& type, const Ros2Qos& qos, QString*) override
+    Status advertise(const QString& topic, const QString& type, const Ros2Qos& qos) override
     {
         calls << u"advertise %1 %2 %3"_s.arg(topic, type).arg(qos.depth);
-        return type != refuseType;
+        return refusal(type);
     }
     void unadvertise(const QString& topic) override { calls << u"unadvertise "_s + topic; }
     bool publish(const QString& topic, const QByteArray& cdr) override
@@ -54,12 +54,20 @@ public:
         calls << u"publish %1 %2"_s.arg(topic).arg(cdr.size());
         return true;
     }
-    bool subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos, QString*) override
+    Status subscribeSamples(const QString& topic, const QString& type, const Ros2Qos& qos) override
     {
         calls << u"subscribe %1 %2 %3"_s.arg(topic, type).arg(qos.depth);
-        return type != refuseType;
+        return refusal(type);
     }
     void unsubscribeSamples(const QString& topic) override { calls << u"unsubscribe "_s + topic; }
+
+private:
+    Status refusal(const QString& type) const
+    {
+        if (type == refuseType)
+            return LocatedError {}; // refused, saying nothing
+        return {};
+    }
 };
 
 struct Sent

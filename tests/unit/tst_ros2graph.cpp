@@ -138,9 +138,8 @@ private slots:
                                        {"/robot1", "listener", {gid(1, 4), gid(1, 7)}, {}}};
         const QByteArray bytes = infoBytes(littleEndian ? Cdr::LITTLE_ENDIANNESS : Cdr::BIG_ENDIANNESS,
                                            gidSize, gid(1, 0xc1), nodes);
-        QString error;
-        const auto info = Ros2DiscoveryInfo::parse(bytes, &error);
-        QVERIFY2(info, qPrintable(error));
+        const auto info = Ros2DiscoveryInfo::parse(bytes);
+        QVERIFY2(info, qPrintable(info.error().toString()));
         QCOMPARE(info->gid, gid(1, 0xc1));
         QCOMPARE(info->nodes.size(), 2);
         QCOMPARE(info->nodes[0].fullName(), u"/talker"_s);
@@ -157,9 +156,11 @@ private slots:
         // no truncation reads past the end or yields the node; one is ambiguous by nature: 4 + 24
         // bytes of a Humble sample (its Gid's zero tail as the node count) read as a Jazzy one without nodes
         for (int n = 0; n < good.size() - 3; ++n) {
-            const auto cut = Ros2DiscoveryInfo::parse(good.left(n), &error);
+            const auto cut = Ros2DiscoveryInfo::parse(good.left(n));
             QVERIFY2(!cut || (n >= 4 + 16 + 4 && n <= 4 + 16 + 4 + 3 && cut->nodes.isEmpty()),
                      qPrintable(QString::number(n)));
+            if (!cut)
+                error = cut.error().toString();
         }
         QVERIFY(!error.isEmpty());
         // a node count of four billion in 40 bytes: refused before anything is allocated
@@ -168,15 +169,15 @@ private slots:
         huge[4 + 25] = char(0xff);
         huge[4 + 26] = char(0xff);
         huge[4 + 27] = char(0xff);
-        QVERIFY(!Ros2DiscoveryInfo::parse(huge, &error));
+        QVERIFY(!Ros2DiscoveryInfo::parse(huge));
         // not CDR at all
-        QVERIFY(!Ros2DiscoveryInfo::parse("\x00\x07\x00\x00garbage", &error));
+        QVERIFY(!Ros2DiscoveryInfo::parse("\x00\x07\x00\x00garbage"));
         // a node name longer than rmw's 256
         const std::string longName(300, 'n');
         QVERIFY(!Ros2DiscoveryInfo::parse(
-            infoBytes(Cdr::LITTLE_ENDIANNESS, 24, gid(1, 0xc1), {{"/", longName, {}, {}}}), &error));
+            infoBytes(Cdr::LITTLE_ENDIANNESS, 24, gid(1, 0xc1), {{"/", longName, {}, {}}})));
         // trailing garbage beyond alignment padding
-        QVERIFY(!Ros2DiscoveryInfo::parse(good + QByteArray(16, 'x'), &error));
+        QVERIFY(!Ros2DiscoveryInfo::parse(good + QByteArray(16, 'x')));
     }
 
     // Issue 41: one participant announcing 100,000 endpoints on one topic, each of a type of its

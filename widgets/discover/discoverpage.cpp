@@ -292,7 +292,8 @@ void DiscoverPage::applyRos2()
         const Ros2Options o = ros2Options();
         const Ros2Options now = m_parts.graphs->ros2Options();
         if (!m_parts.controls->isRos2Running() || now.domain != o.domain || now.localhostOnly != o.localhostOnly)
-            m_parts.controls->startRos2(o, &m_ros2Error);
+            if (const Status joined = m_parts.controls->startRos2(o); !joined)
+                m_ros2Error = joined.error().toString();
     }
     const bool ros2 = m_graphs != RosGraphs::Ros1;
     m_domain->setEnabled(ros2);

@@ -125,8 +125,8 @@ Status RunBar::openRun(const QString& path)
     progress.reset();
     if (!run)
         return cancelled ? LocatedError {} : run.error();
-    if (QString why; !m_measure->showRun(*run, &why))
-        return LocatedError {why};
+    if (Status shown = m_measure->showRun(*run); !shown)
+        return shown;
     m_shown = std::move(run).value();
     m_shownPath = path;
     if (!warnings.isEmpty())
