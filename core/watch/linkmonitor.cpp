@@ -4,7 +4,6 @@
 #include "mqtt/mqttconnection.h"
 #include "watch/linktraffic.h"
 #include "wire/mqttclientwire.h"
-#include "wire/rosmessage.h"
 #include "wire/sourcemessage.h"
 #include "wire/stampcodec.h"
 
@@ -18,18 +17,6 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr qint64 kSecond = LinkWindows::kSecond;
 constexpr std::size_t kHistoryPoints = 600;
-
-bool headerFirst(const QString& type, const QString& definition)
-{
-    RosTypeRegistry registry;
-    if (type.isEmpty() || !registry.addDefinition(type, definition))
-        return false;
-    const RosMessageType* t = registry.find(type);
-    if (!t || t->fields.isEmpty())
-        return false;
-    const RosField& f = t->fields.first();
-    return !f.isArray && (f.type == u"Header"_s || f.type == u"std_msgs/Header"_s);
-}
 
 std::optional<quint32> seqOf(const QByteArray& bytes, qsizetype offset)
 {
@@ -102,7 +89,7 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         t->def = def;
         if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
             t->rules = rulesFor(def);
-        if (const auto a = m_announced.constFind(def.mqttTopic); a != m_announced.cend())
+        if (const auto a = m_announced.all().constFind(def.mqttTopic); a != m_announced.all().cend())
             applyAnnouncement(*t, *a); // announced (and retained) before the link was watched
         m_tracks.push_back(std::move(t));
     }
@@ -280,7 +267,7 @@ QStringList LinkMonitor::rosTopicsToMonitor(const QStringList& rosTopics) const
 
 void LinkMonitor::setRosDefinition(const QString& topic, const QString& type, const QString& definition)
 {
-    const bool header = headerFirst(type, definition);
+    const bool header = AnnouncedTypes::headerFirst(type, definition);
     for (int i : m_byRos.value(topic)) {
         Track& t = *m_tracks[std::size_t(i)];
         (t.def.direction == Direction::Mqtt2Ros ? t.dstHeader : t.srcHeader) = header;
@@ -299,7 +286,10 @@ void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
     const QString typePrefix = MqttClientWire::typeTopicPrefix();
     for (const MqttMessage& m : batch) {
         if (m.topic.startsWith(typePrefix)) {
-            announce(MqttClientWire::dataTopicOf(m.topic), m.payload);
+            const QString dataTopic = MqttClientWire::dataTopicOf(m.topic);
+            if (const auto type = m_announced.add(dataTopic, m.payload))
+                for (int i : m_byMqtt.value(dataTopic))
+                    applyAnnouncement(*m_tracks[std::size_t(i)], *type);
             continue;
         }
         if (const auto it = m_willTopics.constFind(m.topic); it != m_willTopics.cend()) {
@@ -316,31 +306,6 @@ void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
 QStringList LinkMonitor::mqttTopics() const
 {
     return m_byMqtt.keys();
-}
-
-void LinkMonitor::announce(const QString& dataTopic, const QByteArray& payload)
-{
-    // mqtt_client may announce with every message: each change is decoded once.
-    const std::size_t hash = qHash(payload);
-    auto known = m_announcementHash.find(dataTopic);
-    if (known != m_announcementHash.end() && *known == hash)
-        return;
-    if (known == m_announcementHash.end()) {
-        if (m_announcementHash.size() >= kMaxAnnounced) {
-            ++m_droppedAnnouncements; // a broker's worth of made-up topics: bounded
-            return;
-        }
-        known = m_announcementHash.insert(dataTopic, hash);
-    }
-    *known = hash;
-    const auto type = MqttClientWire::decodeType(payload);
-    if (!type)
-        return;
-    const AnnouncedType announced {type->name, type->stamped, headerFirst(type->name, type->definition),
-                                   type->dialect == MqttClientWire::Dialect::Ros2};
-    m_announced.insert(dataTopic, announced);
-    for (int i : m_byMqtt.value(dataTopic))
-        applyAnnouncement(*m_tracks[std::size_t(i)], announced);
 }
 
 void LinkMonitor::applyAnnouncement(Track& t, const AnnouncedType& type)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "watch/announcedtypes.h"
 #include "watch/bridgeliveness.h"
 #include "watch/eventjournal.h"
 #include "watch/linkdef.h"
@@ -79,10 +80,9 @@ public:
     QList<WatchEvent> endedEvents() const;
 
     /// Every MQTT topic an mqtt_client announced a type for (retained or not), at most
-    /// kMaxAnnounced; `droppedAnnouncements()` counts the topics beyond.
-    static constexpr int kMaxAnnounced = 10'000;
-    const QHash<QString, AnnouncedType>& announced() const { return m_announced; }
-    quint64 droppedAnnouncements() const { return m_droppedAnnouncements; }
+    /// kMaxAnnounced; `announcedTypes().dropped()` counts the topics beyond.
+    static constexpr int kMaxAnnounced = AnnouncedTypes::kMax;
+    const AnnouncedTypes& announcedTypes() const { return m_announced; }
 
     /// ROS topics to subscribe: the links' own and the bridges' latency topics found in `rosTopics`
     /// (mqtt_client publishes `~/latencies/<ros topic>` for stamped MQTT → ROS links).
@@ -126,7 +126,6 @@ private:
                 const QString& detail, const LinkFigures& figures, qint64 nowNs, qint64 endNs = 0);
     void refreshStatistics(qint64 nowNs);
     void updateSight(qint64 nowNs);
-    void announce(const QString& dataTopic, const QByteArray& payload);
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
     void indexPipeline();
@@ -145,9 +144,7 @@ private:
     QHash<QString, QList<QString>> m_willTopics; ///< will topic -> bridges
     QStringList m_pipeline; ///< stamp topics
     std::vector<int> m_pipelineLinks; ///< tracks that have both stamps in it
-    QHash<QString, AnnouncedType> m_announced; ///< by data topic
-    QHash<QString, std::size_t> m_announcementHash; ///< by data topic: the last payload's, decoded once
-    quint64 m_droppedAnnouncements = 0;
+    AnnouncedTypes m_announced;
     EventJournal m_journal;
     qint64 m_lastRefreshNs = 0;
     bool m_blind[3] = {false, false, false}; ///< by SourceGraph

@@ -139,7 +139,7 @@ void WatchSession::applyLinks()
 {
     QList<LinkDef> links = m_configLinks;
     for (const QString& topic : std::as_const(m_discovered))
-        links << LinkDef::discoveredAt(topic, m_monitor->announced().value(topic).stamped);
+        links << LinkDef::discoveredAt(topic, m_monitor->announcedTypes().all().value(topic).stamped);
     m_monitor->setLinks(links, wallClockNs());
     syncMqttTopics();
     syncRosTopics();
@@ -153,7 +153,7 @@ bool WatchSession::discoverLinks()
     }
     // The links watched stay (while announced), then the newly announced ones in name order, up to
     // the cap: what a hostile client announces past it is counted, not watched.
-    const QHash<QString, AnnouncedType>& announced = m_monitor->announced();
+    const QHash<QString, AnnouncedType>& announced = m_monitor->announcedTypes().all();
     QStringList found;
     for (const QString& topic : std::as_const(m_discovered))
         if (announced.contains(topic) && !m_configMqttTopics.contains(topic))

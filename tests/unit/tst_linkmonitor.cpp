@@ -225,7 +225,7 @@ private slots:
         RosMsgTypeInfo type {QString(), u"geometry_msgs/msg/PointStamped"_s, QString(), true,
                              RosTypeRegistry::Dialect::Ros2};
         fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)});
-        QVERIFY(m.announced().value(u"vehicle/pose"_s).ros2);
+        QVERIFY(m.announcedTypes().all().value(u"vehicle/pose"_s).ros2);
         Clock clock {m};
         for (quint32 i = 0; i < 50; ++i) {
             const qint64 sent = clock.now;
@@ -677,9 +677,9 @@ private slots:
                                     true};
         fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/far/pose"_s, MqttClientWire::encodeType(point), kStart),
                    mqtt(u"mqtt_client/ros_msg_type/far/bad"_s, "\x01", kStart)});
-        QCOMPARE(m.announced().size(), 1);
-        QVERIFY(m.announced().value(u"far/pose"_s).stamped);
-        QVERIFY(m.announced().value(u"far/pose"_s).header);
+        QCOMPARE(m.announcedTypes().all().size(), 1);
+        QVERIFY(m.announcedTypes().all().value(u"far/pose"_s).stamped);
+        QVERIFY(m.announcedTypes().all().value(u"far/pose"_s).header);
 
         const LinkDef d = LinkDef::discoveredAt(u"far/pose"_s, true);
         QCOMPARE(d.id(), u"discovered|ros2mqtt||far/pose"_s);
@@ -711,8 +711,8 @@ private slots:
             flood.push_back(mqtt(u"mqtt_client/ros_msg_type/x/%1"_s.arg(i), MqttClientWire::encodeType(point),
                                  clock.now));
         fromBroker(m, flood);
-        QVERIFY(m.announced().size() <= LinkMonitor::kMaxAnnounced);
-        QVERIFY(m.droppedAnnouncements() >= 50);
+        QVERIFY(m.announcedTypes().all().size() <= LinkMonitor::kMaxAnnounced);
+        QVERIFY(m.announcedTypes().dropped() >= 50);
     }
 
     // Latency from a pipeline: a link whose timestamp_topic_prefix stamps (PREFIX/in, PREFIX/out)
