@@ -69,7 +69,7 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         snapshot->untrackedTopicMessages = topics->untrackedMessages();
     }
     snapshot->unwatchedLinks = unwatchedLinks;
-    snapshot->droppedAnnouncements = monitor.announcedTypes().dropped();
+    snapshot->droppedAnnouncements = monitor.reader().announcedTypes().dropped();
     snapshot->links.reserve(std::size_t(monitor.linkCount()));
     QSet<QString> alive;
     alive.reserve(monitor.linkCount());
