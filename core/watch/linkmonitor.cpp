@@ -47,7 +47,7 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         }
         t->def = def;
         if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
-            t->rules = rulesFor(def);
+            t->rules = m_ruleBook.forLink(def);
         m_tracks.push_back(std::move(t));
     }
     index();
@@ -55,40 +55,17 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
 
 void LinkMonitor::setRules(const WatchRules& rules)
 {
-    m_rules = rules;
+    m_ruleBook.set(rules);
     for (auto& t : m_tracks)
-        t->rules = rulesFor(t->def);
-}
-
-LinkRules LinkMonitor::rulesFor(const LinkDef& def)
-{
-    ++m_ruleLookups;
-    return m_rules.forLink(def.key());
+        t->rules = m_ruleBook.forLink(t->def);
 }
 
 void LinkMonitor::index()
 {
     m_byId.clear();
-    m_willTopics.clear();
-    QHash<QString, std::shared_ptr<BridgeLiveness>> bridges;
-    for (int i = 0; i < int(m_tracks.size()); ++i) {
-        const LinkDef& d = m_tracks[std::size_t(i)]->def;
-        m_byId.insert(d.id(), i);
-        if (d.discovered)
-            continue; // whose bridge it is, the broker does not say
-        std::shared_ptr<BridgeLiveness>& b = bridges[d.bridge()];
-        if (!b) {
-            b = std::make_shared<BridgeLiveness>();
-            if (const auto old = m_bridges.value(d.bridge())) { // what it knew stays
-                b->willDownNs = old->willDownNs;
-                b->state = old->state;
-            }
-        }
-        b->links << i;
-        if (!d.willTopic.isEmpty() && !m_willTopics.value(d.willTopic).contains(d.bridge()))
-            m_willTopics[d.willTopic] << d.bridge();
-    }
-    m_bridges = bridges;
+    for (int i = 0; i < int(m_tracks.size()); ++i)
+        m_byId.insert(m_tracks[std::size_t(i)]->def.id(), i);
+    m_bridges.index(m_tracks);
     m_reader.index();
 }
 
@@ -130,35 +107,10 @@ QString LinkMonitor::unknown(int index) const
     return m_tracks.at(std::size_t(index))->unknown;
 }
 
-void LinkMonitor::setSeeing(SourceGraph graph, bool seeing)
-{
-    m_blind[std::size_t(graph)] = !seeing;
-}
-
 void LinkMonitor::setRos2Topics(const QSet<QString>& topics)
 {
     for (auto& t : m_tracks)
         t->onRos2 = topics.contains(t->def.rosTopic);
-}
-
-void LinkMonitor::updateSight(qint64 nowNs)
-{
-    const auto blind = [this](SourceGraph g) { return m_blind[std::size_t(g)]; };
-    for (auto& tp : m_tracks) {
-        Track& t = *tp;
-        LinkBlindness b = LinkBlindness::None;
-        if (blind(SourceGraph::Mqtt))
-            b = LinkBlindness::Broker;
-        else if (!t.def.rosTopic.isEmpty() && t.onRos2 && blind(SourceGraph::Ros2))
-            b = LinkBlindness::Ros2Domain;
-        else if (!t.def.rosTopic.isEmpty() && !t.onRos2 && blind(SourceGraph::Ros1))
-            b = LinkBlindness::RosMaster;
-        t.blindness = b;
-        if (b != LinkBlindness::None && !t.blind)
-            t.loseSight();
-        else if (b == LinkBlindness::None && t.blind)
-            t.regainSight(nowNs);
-    }
 }
 
 std::vector<LinkMonitor::HistoryPoint> LinkMonitor::history(int index) const
@@ -174,19 +126,6 @@ std::vector<double> LinkMonitor::takeNewLatencies(int index)
     return out;
 }
 
-LinkMonitor::BridgeState LinkMonitor::bridgeState(const QString& bridge) const
-{
-    const auto b = m_bridges.value(bridge);
-    return b ? b->state : BridgeState::Unknown;
-}
-
-QStringList LinkMonitor::bridges() const
-{
-    QStringList names = m_bridges.keys();
-    names.sort();
-    return names;
-}
-
 void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
 {
     const QString typePrefix = MqttClientWire::typeTopicPrefix();
@@ -195,14 +134,7 @@ void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
             m_reader.announce(MqttClientWire::dataTopicOf(m.topic), m.payload);
             continue;
         }
-        if (const auto it = m_willTopics.constFind(m.topic); it != m_willTopics.cend()) {
-            for (const QString& name : *it) {
-                auto b = m_bridges.value(name);
-                const int first = b && !b->links.isEmpty() ? b->links.first() : -1;
-                if (first >= 0 && m.payload == m_tracks[std::size_t(first)]->def.willMessage && !m.retained)
-                    b->willDownNs = m.receivedNs;
-            }
-        }
+        m_bridges.noteWill(m, m_tracks);
     }
 }
 
@@ -219,7 +151,7 @@ void LinkMonitor::refreshStatistics(qint64 nowNs)
 
 void LinkMonitor::tick(qint64 nowNs)
 {
-    updateSight(nowNs);
+    m_sight.update(m_tracks, nowNs);
     const bool refresh = nowNs - m_lastRefreshNs >= kSecond;
     if (refresh) {
         m_lastRefreshNs = nowNs;
@@ -227,7 +159,7 @@ void LinkMonitor::tick(qint64 nowNs)
     }
     for (int i = 0; i < int(m_tracks.size()); ++i)
         evaluate(i, nowNs);
-    for (auto it = m_bridges.begin(); it != m_bridges.end(); ++it)
+    for (auto it = m_bridges.all().begin(); it != m_bridges.all().end(); ++it)
         evaluateBridge(it.key(), **it, nowNs);
     if (refresh)
         emit refreshed();
@@ -291,7 +223,7 @@ void LinkMonitor::evaluateBridge(const QString& name, BridgeLiveness& b, qint64 
 {
     BridgeLiveness::Input in;
     in.nowNs = nowNs;
-    in.blind = m_blind[std::size_t(SourceGraph::Mqtt)];
+    in.blind = !m_sight.sees(SourceGraph::Mqtt);
     for (int i : std::as_const(b.links)) {
         const Track& t = *m_tracks[std::size_t(i)];
         in.lastDataNs = std::max(in.lastDataNs, t.dst.f.lastNs);

@@ -3,10 +3,13 @@
 
 #include "watch/bridgeliveness.h"
 #include "watch/eventjournal.h"
+#include "watch/linkbridges.h"
 #include "watch/linkdef.h"
 #include "watch/linkjudge.h"
 #include "watch/linkreader.h"
+#include "watch/linkrulebook.h"
 #include "watch/linktrack.h"
+#include "watch/watchersight.h"
 #include "watch/watchrules.h"
 #include "wire/sourcemessage.h"
 
@@ -42,10 +45,9 @@ public:
     /// Replaces the links (figures of links that stay are kept); `nowNs` starts the new ones.
     void setLinks(const QList<LinkDef>& links, qint64 nowNs);
     void setRules(const WatchRules& rules);
-    const WatchRules& rules() const { return m_rules; }
-    /// How many times a link's rules were looked up (every override matched against it): once per
-    /// link that came or changed in setLinks(), and once per link in setRules(). The bounded work.
-    quint64 ruleLookups() const { return m_ruleLookups; }
+    /// The rules, and how many times a link's rules were looked up: once per link that came or
+    /// changed in setLinks(), and once per link in setRules(). The bounded work.
+    const LinkRuleBook& ruleBook() const { return m_ruleBook; }
 
     int linkCount() const;
     const LinkDef& link(int index) const;
@@ -58,7 +60,7 @@ public:
 
     /// Whether the watcher sees a graph: its own broker connection, the ROS master, the ROS 2
     /// domain. A link with a side on an unseen graph is unknown: not stalled, nothing lost.
-    void setSeeing(SourceGraph graph, bool seeing);
+    WatcherSight& sight() { return m_sight; }
     /// The links' ROS topics watched on the ROS 2 domain (the others are watched through the master).
     void setRos2Topics(const QSet<QString>& topics);
     /// Destination rate and latency p99, one point a second, oldest first (at most 10 minutes).
@@ -68,8 +70,7 @@ public:
     std::vector<double> takeNewLatencies(int index);
     /// Bridges by name: up, down, or unknown (no traffic to judge by).
     using BridgeState = ::BridgeState;
-    BridgeState bridgeState(const QString& bridge) const;
-    QStringList bridges() const;
+    const LinkBridges& bridges() const { return m_bridges; }
     /// The events: those open now, and the last 1,000 that ended (oldest first).
     const EventJournal& events() const { return m_journal; }
 
@@ -101,18 +102,13 @@ private:
     void change(const QString& subject, const LinkDef* link, LinkLevel level, const QStringList& reasons,
                 const QString& detail, const LinkFigures& figures, qint64 nowNs, qint64 endNs = 0);
     void refreshStatistics(qint64 nowNs);
-    void updateSight(qint64 nowNs);
 
-    LinkRules rulesFor(const LinkDef& def);
-
-    WatchRules m_rules;
-    quint64 m_ruleLookups = 0;
+    LinkRuleBook m_ruleBook;
     std::vector<std::unique_ptr<Track>> m_tracks;
     LinkReader m_reader {m_tracks};
     QHash<QString, int> m_byId;
-    QHash<QString, std::shared_ptr<BridgeLiveness>> m_bridges;
-    QHash<QString, QList<QString>> m_willTopics; ///< will topic -> bridges
+    LinkBridges m_bridges;
     EventJournal m_journal;
     qint64 m_lastRefreshNs = 0;
-    bool m_blind[3] = {false, false, false}; ///< by SourceGraph
+    WatcherSight m_sight;
 };

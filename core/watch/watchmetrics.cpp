@@ -112,8 +112,8 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
     if (alive.size() != d->links.size())
         for (auto it = d->links.begin(); it != d->links.end();)
             it = alive.contains(it.key()) ? std::next(it) : d->links.erase(it);
-    for (const QString& name : monitor.bridges()) {
-        const LinkMonitor::BridgeState s = monitor.bridgeState(name);
+    for (const QString& name : monitor.bridges().names()) {
+        const LinkMonitor::BridgeState s = monitor.bridges().state(name);
         if (s != LinkMonitor::BridgeState::Unknown)
             snapshot->bridges.push_back(
                 {MetricsExposition::label("bridge", name.toUtf8()), s == LinkMonitor::BridgeState::Up});

@@ -120,9 +120,9 @@ QSet<QString> WatchSession::ros2Published() const
 void WatchSession::updateSight()
 {
     const bool broker = !m_parts.mqtt || m_parts.mqtt->state() == MqttConnection::State::Connected;
-    m_monitor->setSeeing(SourceGraph::Mqtt, broker);
-    m_monitor->setSeeing(SourceGraph::Ros1, m_parts.rosGraph->isReachable());
-    m_monitor->setSeeing(SourceGraph::Ros2, ros2Running());
+    m_monitor->sight().setSeeing(SourceGraph::Mqtt, broker);
+    m_monitor->sight().setSeeing(SourceGraph::Ros1, m_parts.rosGraph->isReachable());
+    m_monitor->sight().setSeeing(SourceGraph::Ros2, ros2Running());
 }
 
 void WatchSession::setDiscovering(bool discovering)

@@ -307,7 +307,7 @@ private slots:
         const QString bridge = u"bridge:vehicle_bridge"_s;
         run(30, true);
         QCOMPARE(started.size(), 0);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         // The bridge dies: the source goes on, nothing arrives.
         const qint64 died = clock.now;
         run(30, false);
@@ -321,7 +321,7 @@ private slots:
         // The bridge is down too, since the moment its link stalled.
         QCOMPARE(of(started, bridge).size(), 1);
         QCOMPARE(of(started, bridge).last().reasons, QStringList {u"bridge_down"_s});
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
         // It comes back: the stall ends once messages arrive steadily (2 s), dated from their return,
         // and the bridge is up.
         run(25, true);
@@ -330,7 +330,7 @@ private slots:
         QVERIFY(over.durationSeconds() > 1.5 && over.durationSeconds() < 3.5);
         QCOMPARE(over.toJson().value(u"event"_s).toString(), u"end"_s);
         QCOMPARE(of(ended, bridge).size(), 1);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         // The source pauses: "source stopped", never a stall, and the bridge is not blamed.
         const int before = of(started, l.id()).size();
         clock.advance(5000 * kMs);
@@ -476,7 +476,7 @@ private slots:
         fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
         clock.advance(200 * kMs);
         brokerUp = false;
-        m.setSeeing(SourceGraph::Mqtt, false);
+        m.sight().setSeeing(SourceGraph::Mqtt, false);
         run(200);
         for (int i : {0, 1}) {
             QCOMPARE(m.unknown(i), u"unknown (broker unreachable)"_s);
@@ -485,11 +485,11 @@ private slots:
             QCOMPARE(m.figures(i).lost, quint64(0));
             QCOMPARE(m.figures(i).lossPercent, 0.0);
         }
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Unknown);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Unknown);
         QCOMPARE(started.size(), 0);
         // It is back: the links are seen again and nothing of the outage is counted as lost.
         brokerUp = true;
-        m.setSeeing(SourceGraph::Mqtt, true);
+        m.sight().setSeeing(SourceGraph::Mqtt, true);
         run(200);
         for (int i : {0, 1}) {
             QVERIFY(m.unknown(i).isEmpty());
@@ -498,7 +498,7 @@ private slots:
             QCOMPARE(m.figures(i).lossPercent, 0.0);
         }
         QCOMPARE(m.figures(0).seqGaps, quint64(0));
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         QCOMPARE(started.size(), 0);
         // A loss after it is the bridge's, and counted.
         for (int i = 0; i < 100; ++i) {
@@ -520,12 +520,12 @@ private slots:
                    kStart);
         m.setRos2Topics({u"/c"_s});
         Clock clock {m};
-        m.setSeeing(SourceGraph::Ros1, false);
+        m.sight().setSeeing(SourceGraph::Ros1, false);
         clock.advance(500 * kMs);
         QCOMPARE(m.unknown(0), u"unknown (ROS master unreachable)"_s);
         QVERIFY(m.unknown(1).isEmpty());
-        m.setSeeing(SourceGraph::Ros1, true);
-        m.setSeeing(SourceGraph::Ros2, false);
+        m.sight().setSeeing(SourceGraph::Ros1, true);
+        m.sight().setSeeing(SourceGraph::Ros2, false);
         clock.advance(500 * kMs);
         QVERIFY(m.unknown(0).isEmpty());
         QCOMPARE(m.unknown(1), u"unknown (ROS 2 domain unreachable)"_s);
@@ -616,17 +616,17 @@ private slots:
             fromBroker(m, {mqtt(u"a"_s, "x", clock.now)});
             clock.advance(100 * kMs);
         }
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
         // Believed once the watch's own connection outlived it (issue 40: a broker shutting down
         // sends every will, and the watch's connection goes next).
         clock.advance(BridgeLiveness::kWillGraceNs + 100 * kMs);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
         QCOMPARE(started.last().first().value<WatchEvent>().subject, u"bridge:vehicle_bridge"_s);
         QCOMPARE(started.last().first().value<WatchEvent>().reasons, QStringList {u"bridge_down"_s});
         fromBroker(m, {mqtt(u"a"_s, "x", clock.now + kMs)});
         clock.advance(100 * kMs);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
     }
 
     void seqDuplicatesAndReordering()
@@ -684,7 +684,7 @@ private slots:
         const LinkDef d = LinkDef::discoveredAt(u"far/pose"_s, true);
         QCOMPARE(d.id(), u"discovered|ros2mqtt||far/pose"_s);
         m.setLinks({d}, kStart);
-        QVERIFY(m.bridges().isEmpty());
+        QVERIFY(m.bridges().names().isEmpty());
         QVERIFY(m.reader().rosTopicsToMonitor({u"/far/pose"_s}).isEmpty());
         Clock clock {m};
         for (quint32 seq = 0; seq < 30; ++seq) {
@@ -868,7 +868,7 @@ private slots:
         qInfo("2,000 links under 1,001 rules started in %lld ms", timer.elapsed());
         // Bounded work: each link's 1,001 rules looked up once, when it came, not again in every
         // round for the links that stayed (11,000 lookups).
-        QCOMPARE(monitor.ruleLookups(), quint64(2000));
+        QCOMPARE(monitor.ruleBook().lookups(), quint64(2000));
         // A late rule matched and an early one did not match where it should not.
         const LinkRules v7 = rules->forLink({u"/fleet/v7/x"_s, u"fleet/v7/x"_s, u"c"_s, u"d"_s});
         QCOMPARE(v7[LinkRules::StallSeconds].alert, 1.0);
