@@ -2,72 +2,18 @@
 #include "linkmonitor.h"
 
 #include "mqtt/mqttconnection.h"
-#include "watch/linktraffic.h"
 #include "wire/mqttclientwire.h"
-#include "wire/rosmessage.h"
-#include "wire/sourcemessage.h"
-#include "wire/stampcodec.h"
 
 #include <algorithm>
 #include <limits>
 #include <map>
-#include <QtEndian>
 
 using namespace Qt::StringLiterals;
 
 namespace {
 constexpr qint64 kSecond = LinkWindows::kSecond;
 constexpr std::size_t kHistoryPoints = 600;
-
-bool headerFirst(const QString& type, const QString& definition)
-{
-    RosTypeRegistry registry;
-    if (type.isEmpty() || !registry.addDefinition(type, definition))
-        return false;
-    const RosMessageType* t = registry.find(type);
-    if (!t || t->fields.isEmpty())
-        return false;
-    const RosField& f = t->fields.first();
-    return !f.isArray && (f.type == u"Header"_s || f.type == u"std_msgs/Header"_s);
-}
-
-std::optional<quint32> seqOf(const QByteArray& bytes, qsizetype offset)
-{
-    if (bytes.size() < offset + 4)
-        return std::nullopt;
-    return qFromLittleEndian<quint32>(bytes.constData() + offset);
-}
-
 } // namespace
-
-/// A link: its definition and rules, its traffic, and what the judge last said of it.
-struct LinkMonitor::Track : LinkTraffic
-{
-    LinkDef def;
-    LinkRules rules;
-    qint64 startNs = 0;
-    bool dstHeader = false; ///< the destination's messages start with a Header
-    bool srcHeader = false;
-    std::optional<bool> announcedStamped;
-    bool ros2 = false; ///< announced by mqtt_client for ROS 2: CDR, a 12-byte stamp
-    LinkLevel level = LinkLevel::Ok;
-    QList<LinkReason> reasons;
-    std::deque<HistoryPoint> history;
-    quint64 stalls = 0;
-    bool stalled = false;
-    LinkLevel stallLevel = LinkLevel::Ok;
-    qint64 stallEndedNs = 0;
-    qint64 silentNs = 0; ///< the last check that found the destination silent past the stall threshold
-    bool onRos2 = false; ///< its ROS topic is watched on the ROS 2 domain
-    LinkBlindness blindness = LinkBlindness::None;
-    QString unknown; ///< the judge's sentence while it cannot see a side
-
-    bool stamped() const { return announcedStamped.value_or(def.stamped); }
-
-    int pipelineIn = -1; ///< index of PREFIX/in in the pipeline
-    int pipelineOut = -1;
-    bool pipelineLatency = false; ///< a pipeline sample arrived: other latency sources are ignored
-};
 
 LinkMonitor::LinkMonitor(QObject* parent)
     : QObject(parent)
@@ -101,9 +47,7 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         }
         t->def = def;
         if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
-            t->rules = rulesFor(def);
-        if (const auto a = m_announced.constFind(def.mqttTopic); a != m_announced.cend())
-            applyAnnouncement(*t, *a); // announced (and retained) before the link was watched
+            t->rules = m_ruleBook.forLink(def);
         m_tracks.push_back(std::move(t));
     }
     index();
@@ -111,47 +55,18 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
 
 void LinkMonitor::setRules(const WatchRules& rules)
 {
-    m_rules = rules;
+    m_ruleBook.set(rules);
     for (auto& t : m_tracks)
-        t->rules = rulesFor(t->def);
-}
-
-LinkRules LinkMonitor::rulesFor(const LinkDef& def)
-{
-    ++m_ruleLookups;
-    return m_rules.forLink(def.key());
+        t->rules = m_ruleBook.forLink(t->def);
 }
 
 void LinkMonitor::index()
 {
-    m_byMqtt.clear();
-    m_byRos.clear();
     m_byId.clear();
-    m_byLatencyTopic.clear();
-    m_willTopics.clear();
-    QHash<QString, std::shared_ptr<BridgeLiveness>> bridges;
-    for (int i = 0; i < int(m_tracks.size()); ++i) {
-        const LinkDef& d = m_tracks[std::size_t(i)]->def;
-        m_byMqtt[d.mqttTopic] << i;
-        if (!d.rosTopic.isEmpty())
-            m_byRos[d.rosTopic] << i;
-        m_byId.insert(d.id(), i);
-        if (d.discovered)
-            continue; // whose bridge it is, the broker does not say
-        std::shared_ptr<BridgeLiveness>& b = bridges[d.bridge()];
-        if (!b) {
-            b = std::make_shared<BridgeLiveness>();
-            if (const auto old = m_bridges.value(d.bridge())) { // what it knew stays
-                b->willDownNs = old->willDownNs;
-                b->state = old->state;
-            }
-        }
-        b->links << i;
-        if (!d.willTopic.isEmpty() && !m_willTopics.value(d.willTopic).contains(d.bridge()))
-            m_willTopics[d.willTopic] << d.bridge();
-    }
-    m_bridges = bridges;
-    indexPipeline();
+    for (int i = 0; i < int(m_tracks.size()); ++i)
+        m_byId.insert(m_tracks[std::size_t(i)]->def.id(), i);
+    m_bridges.index(m_tracks);
+    m_reader.index();
 }
 
 int LinkMonitor::linkCount() const
@@ -192,35 +107,10 @@ QString LinkMonitor::unknown(int index) const
     return m_tracks.at(std::size_t(index))->unknown;
 }
 
-void LinkMonitor::setSeeing(SourceGraph graph, bool seeing)
-{
-    m_blind[std::size_t(graph)] = !seeing;
-}
-
 void LinkMonitor::setRos2Topics(const QSet<QString>& topics)
 {
     for (auto& t : m_tracks)
         t->onRos2 = topics.contains(t->def.rosTopic);
-}
-
-void LinkMonitor::updateSight(qint64 nowNs)
-{
-    const auto blind = [this](SourceGraph g) { return m_blind[std::size_t(g)]; };
-    for (auto& tp : m_tracks) {
-        Track& t = *tp;
-        LinkBlindness b = LinkBlindness::None;
-        if (blind(SourceGraph::Mqtt))
-            b = LinkBlindness::Broker;
-        else if (!t.def.rosTopic.isEmpty() && t.onRos2 && blind(SourceGraph::Ros2))
-            b = LinkBlindness::Ros2Domain;
-        else if (!t.def.rosTopic.isEmpty() && !t.onRos2 && blind(SourceGraph::Ros1))
-            b = LinkBlindness::RosMaster;
-        t.blindness = b;
-        if (b != LinkBlindness::None && !t.blind)
-            t.loseSight();
-        else if (b == LinkBlindness::None && t.blind)
-            t.regainSight(nowNs);
-    }
 }
 
 std::vector<LinkMonitor::HistoryPoint> LinkMonitor::history(int index) const
@@ -236,232 +126,15 @@ std::vector<double> LinkMonitor::takeNewLatencies(int index)
     return out;
 }
 
-LinkMonitor::BridgeState LinkMonitor::bridgeState(const QString& bridge) const
-{
-    const auto b = m_bridges.value(bridge);
-    return b ? b->state : BridgeState::Unknown;
-}
-
-QStringList LinkMonitor::bridges() const
-{
-    QStringList names = m_bridges.keys();
-    names.sort();
-    return names;
-}
-
-QList<WatchEvent> LinkMonitor::openEvents() const
-{
-    return m_journal.openEvents();
-}
-
-QList<WatchEvent> LinkMonitor::endedEvents() const
-{
-    return m_journal.endedEvents();
-}
-
-QStringList LinkMonitor::rosTopicsToMonitor(const QStringList& rosTopics) const
-{
-    QStringList out = m_byRos.keys();
-    // mqtt_client: the private "latencies/<ros topic>" of the node that publishes the ROS topic.
-    for (const QString& t : rosTopics) {
-        const qsizetype at = t.indexOf(u"/latencies/"_s);
-        if (at < 0)
-            continue;
-        const QString rosTopic = t.mid(at + 10);
-        for (int i : m_byRos.value(rosTopic)) {
-            if (m_tracks[std::size_t(i)]->def.direction == Direction::Mqtt2Ros) {
-                out << t;
-                break;
-            }
-        }
-    }
-    return out;
-}
-
-void LinkMonitor::setRosDefinition(const QString& topic, const QString& type, const QString& definition)
-{
-    const bool header = headerFirst(type, definition);
-    for (int i : m_byRos.value(topic)) {
-        Track& t = *m_tracks[std::size_t(i)];
-        (t.def.direction == Direction::Mqtt2Ros ? t.dstHeader : t.srcHeader) = header;
-    }
-    // A latency topic is found by its name; its index is kept here, where every ROS topic passes.
-    const qsizetype at = topic.indexOf(u"/latencies/"_s);
-    if (at >= 0 && (type == u"std_msgs/Float64"_s || type == u"std_msgs/msg/Float64"_s)) {
-        for (int i : m_byRos.value(topic.mid(at + 10)))
-            if (m_tracks[std::size_t(i)]->def.direction == Direction::Mqtt2Ros)
-                m_byLatencyTopic.insert(topic, i);
-    }
-}
-
 void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
 {
     const QString typePrefix = MqttClientWire::typeTopicPrefix();
     for (const MqttMessage& m : batch) {
         if (m.topic.startsWith(typePrefix)) {
-            announce(MqttClientWire::dataTopicOf(m.topic), m.payload);
+            m_reader.announce(MqttClientWire::dataTopicOf(m.topic), m.payload);
             continue;
         }
-        if (const auto it = m_willTopics.constFind(m.topic); it != m_willTopics.cend()) {
-            for (const QString& name : *it) {
-                auto b = m_bridges.value(name);
-                const int first = b && !b->links.isEmpty() ? b->links.first() : -1;
-                if (first >= 0 && m.payload == m_tracks[std::size_t(first)]->def.willMessage && !m.retained)
-                    b->willDownNs = m.receivedNs;
-            }
-        }
-    }
-}
-
-QStringList LinkMonitor::mqttTopics() const
-{
-    return m_byMqtt.keys();
-}
-
-void LinkMonitor::announce(const QString& dataTopic, const QByteArray& payload)
-{
-    // mqtt_client may announce with every message: each change is decoded once.
-    const std::size_t hash = qHash(payload);
-    auto known = m_announcementHash.find(dataTopic);
-    if (known != m_announcementHash.end() && *known == hash)
-        return;
-    if (known == m_announcementHash.end()) {
-        if (m_announcementHash.size() >= kMaxAnnounced) {
-            ++m_droppedAnnouncements; // a broker's worth of made-up topics: bounded
-            return;
-        }
-        known = m_announcementHash.insert(dataTopic, hash);
-    }
-    *known = hash;
-    const auto type = MqttClientWire::decodeType(payload);
-    if (!type)
-        return;
-    const AnnouncedType announced {type->name, type->stamped, headerFirst(type->name, type->definition),
-                                   type->dialect == MqttClientWire::Dialect::Ros2};
-    m_announced.insert(dataTopic, announced);
-    for (int i : m_byMqtt.value(dataTopic))
-        applyAnnouncement(*m_tracks[std::size_t(i)], announced);
-}
-
-void LinkMonitor::applyAnnouncement(Track& t, const AnnouncedType& type)
-{
-    t.announcedStamped = type.stamped;
-    t.ros2 = type.ros2;
-    (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
-}
-
-void LinkMonitor::add(const std::vector<SourceHead>& batch)
-{
-    for (const SourceHead& a : batch) {
-        if (a.graph == SourceGraph::Mqtt)
-            addMqttHead(a);
-        else
-            addRosHead(a);
-    }
-}
-
-void LinkMonitor::addMqttHead(const SourceHead& m)
-{
-    const auto it = m_byMqtt.constFind(m.topic);
-    if (it == m_byMqtt.cend())
-        return;
-    for (int i : *it) {
-        Track& t = *m_tracks[std::size_t(i)];
-        // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
-        if (t.def.direction == Direction::Mqtt2Ros) {
-            t.src.add(m.receivedNs, m.size);
-            if (t.srcHeader && !t.ros2)
-                if (const auto seq = seqOf(m.head, t.stamped() ? MqttClientWire::kRos1StampBytes : 0))
-                    t.srcSeq.add(*seq);
-            continue;
-        }
-        t.dst.add(m.receivedNs, m.size);
-        qsizetype offset = 0;
-        if (t.stamped()) {
-            const auto dialect = t.ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
-            if (const auto s = MqttClientWire::splitStamped(m.head, dialect)) {
-                if (!t.pipelineLatency)
-                    t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6,
-                                 LatencySource::Stamps);
-                offset = MqttClientWire::stampBytes(dialect);
-            }
-        }
-        if (t.dstHeader && !t.ros2)
-            if (const auto seq = seqOf(m.head, offset))
-                t.seq.add(*seq);
-    }
-}
-
-void LinkMonitor::addRosHead(const SourceHead& a)
-{
-    if (const auto it = m_byRos.constFind(a.topic); it != m_byRos.cend()) {
-        // A ROS 2 Header has no seq: its first bytes are the stamp.
-        const bool hasSeq = a.graph == SourceGraph::Ros1;
-        for (int i : *it) {
-            Track& t = *m_tracks[std::size_t(i)];
-            if (t.def.direction == Direction::Ros2Mqtt) {
-                t.src.add(a.receivedNs, a.size);
-                if (t.srcHeader && hasSeq)
-                    if (const auto seq = seqOf(a.head, 0))
-                        t.srcSeq.add(*seq);
-                continue;
-            }
-            t.dst.add(a.receivedNs, a.size);
-            if (t.dstHeader && hasSeq)
-                if (const auto seq = seqOf(a.head, 0))
-                    t.seq.add(*seq);
-        }
-    } else if (const auto lt = m_byLatencyTopic.constFind(a.topic); lt != m_byLatencyTopic.cend()) {
-        // std_msgs/Float64 in seconds, as mqtt_client publishes it.
-        Track& t = *m_tracks[std::size_t(*lt)];
-        if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)); ns && !t.pipelineLatency)
-            t.addLatency(a.receivedNs, double(*ns) / 1e6, LatencySource::LatencyTopic);
-    }
-}
-
-void LinkMonitor::setPipeline(const QStringList& stampTopics)
-{
-    m_pipeline = stampTopics;
-    indexPipeline();
-}
-
-void LinkMonitor::indexPipeline()
-{
-    QHash<QString, int> at;
-    for (qsizetype i = 0; i < m_pipeline.size(); ++i) {
-        // The suite's configs name their prefix with or without the leading slash.
-        QString name = m_pipeline[i];
-        if (name.startsWith(u'/'))
-            name.remove(0, 1);
-        at.insert(name, int(i));
-    }
-    m_pipelineLinks.clear();
-    for (int i = 0; i < int(m_tracks.size()); ++i) {
-        Track& t = *m_tracks[std::size_t(i)];
-        QString prefix = t.def.stampPrefix;
-        while (prefix.startsWith(u'/'))
-            prefix.remove(0, 1);
-        while (prefix.endsWith(u'/'))
-            prefix.chop(1);
-        t.pipelineIn = prefix.isEmpty() ? -1 : at.value(prefix + u"/in"_s, -1);
-        t.pipelineOut = prefix.isEmpty() ? -1 : at.value(prefix + u"/out"_s, -1);
-        if (t.pipelineIn >= 0 && t.pipelineOut >= 0)
-            m_pipelineLinks.push_back(i);
-        else
-            t.pipelineLatency = false;
-    }
-}
-
-void LinkMonitor::addPipelineSample(const std::vector<qint64>& times, qint64 nowNs)
-{
-    for (int i : m_pipelineLinks) {
-        Track& t = *m_tracks[std::size_t(i)];
-        if (std::size_t(std::max(t.pipelineIn, t.pipelineOut)) >= times.size())
-            continue; // a sample of another pipeline than the one set
-        t.pipelineLatency = true;
-        t.addLatency(nowNs,
-                     double(times[std::size_t(t.pipelineOut)] - times[std::size_t(t.pipelineIn)]) / 1e6,
-                     LatencySource::Pipeline);
+        m_bridges.noteWill(m, m_tracks);
     }
 }
 
@@ -478,7 +151,7 @@ void LinkMonitor::refreshStatistics(qint64 nowNs)
 
 void LinkMonitor::tick(qint64 nowNs)
 {
-    updateSight(nowNs);
+    m_sight.update(m_tracks, nowNs);
     const bool refresh = nowNs - m_lastRefreshNs >= kSecond;
     if (refresh) {
         m_lastRefreshNs = nowNs;
@@ -486,7 +159,7 @@ void LinkMonitor::tick(qint64 nowNs)
     }
     for (int i = 0; i < int(m_tracks.size()); ++i)
         evaluate(i, nowNs);
-    for (auto it = m_bridges.begin(); it != m_bridges.end(); ++it)
+    for (auto it = m_bridges.all().begin(); it != m_bridges.all().end(); ++it)
         evaluateBridge(it.key(), **it, nowNs);
     if (refresh)
         emit refreshed();
@@ -550,7 +223,7 @@ void LinkMonitor::evaluateBridge(const QString& name, BridgeLiveness& b, qint64 
 {
     BridgeLiveness::Input in;
     in.nowNs = nowNs;
-    in.blind = m_blind[std::size_t(SourceGraph::Mqtt)];
+    in.blind = !m_sight.sees(SourceGraph::Mqtt);
     for (int i : std::as_const(b.links)) {
         const Track& t = *m_tracks[std::size_t(i)];
         in.lastDataNs = std::max(in.lastDataNs, t.dst.f.lastNs);

@@ -3,8 +3,13 @@
 
 #include "watch/bridgeliveness.h"
 #include "watch/eventjournal.h"
+#include "watch/linkbridges.h"
 #include "watch/linkdef.h"
 #include "watch/linkjudge.h"
+#include "watch/linkreader.h"
+#include "watch/linkrulebook.h"
+#include "watch/linktrack.h"
+#include "watch/watchersight.h"
 #include "watch/watchrules.h"
 #include "wire/sourcemessage.h"
 
@@ -17,14 +22,14 @@
 #include <vector>
 
 struct MqttMessage;
-struct SourceHead;
 
 /// Watches links: counts what arrives at both ends, checks the rules, and turns every change
 /// of a link's or a bridge's state into an event.
 ///
-/// It routes messages to the links and holds the parts that do the work: each link's traffic
-/// (LinkTraffic: rates, loss, Header.seq, latency percentiles), the judge (LinkJudge: rules to a
-/// level and reasons), each bridge's liveness (BridgeLiveness) and the events (EventJournal).
+/// It holds the links (LinkTrack) and the parts that do the work: the reader that routes messages to
+/// them (LinkReader), each link's traffic (LinkTraffic: rates, loss, Header.seq, latency percentiles), the
+/// judge (LinkJudge: rules to a level and reasons), each bridge's liveness (BridgeLiveness) and the events
+/// (EventJournal).
 ///
 /// Pure logic on the owner's thread: messages are handed in batches (from the MQTT connection's
 /// drain and the ROS monitor's arrivals), time is passed in, so tests drive it with any clock.
@@ -40,10 +45,9 @@ public:
     /// Replaces the links (figures of links that stay are kept); `nowNs` starts the new ones.
     void setLinks(const QList<LinkDef>& links, qint64 nowNs);
     void setRules(const WatchRules& rules);
-    const WatchRules& rules() const { return m_rules; }
-    /// How many times a link's rules were looked up (every override matched against it): once per
-    /// link that came or changed in setLinks(), and once per link in setRules(). The bounded work.
-    quint64 ruleLookups() const { return m_ruleLookups; }
+    /// The rules, and how many times a link's rules were looked up: once per link that came or
+    /// changed in setLinks(), and once per link in setRules(). The bounded work.
+    const LinkRuleBook& ruleBook() const { return m_ruleBook; }
 
     int linkCount() const;
     const LinkDef& link(int index) const;
@@ -56,55 +60,28 @@ public:
 
     /// Whether the watcher sees a graph: its own broker connection, the ROS master, the ROS 2
     /// domain. A link with a side on an unseen graph is unknown: not stalled, nothing lost.
-    void setSeeing(SourceGraph graph, bool seeing);
+    WatcherSight& sight() { return m_sight; }
     /// The links' ROS topics watched on the ROS 2 domain (the others are watched through the master).
     void setRos2Topics(const QSet<QString>& topics);
     /// Destination rate and latency p99, one point a second, oldest first (at most 10 minutes).
-    struct HistoryPoint
-    {
-        qint64 ns = 0;
-        double rateHz = 0;
-        double p99Ms = qQNaN();
-        LinkLevel level = LinkLevel::Ok;
-    };
+    using HistoryPoint = LinkHistoryPoint;
     std::vector<HistoryPoint> history(int index) const;
     /// Latency samples (ms) since the last call, for histograms (at most 10,000 are kept).
     std::vector<double> takeNewLatencies(int index);
     /// Bridges by name: up, down, or unknown (no traffic to judge by).
     using BridgeState = ::BridgeState;
-    BridgeState bridgeState(const QString& bridge) const;
-    QStringList bridges() const;
-    /// Events that are open now, and the last 1,000 that ended (oldest first).
-    QList<WatchEvent> openEvents() const;
-    QList<WatchEvent> endedEvents() const;
+    const LinkBridges& bridges() const { return m_bridges; }
+    /// The events: those open now, and the last 1,000 that ended (oldest first).
+    const EventJournal& events() const { return m_journal; }
 
-    /// Every MQTT topic an mqtt_client announced a type for (retained or not), at most
-    /// kMaxAnnounced; `droppedAnnouncements()` counts the topics beyond.
-    static constexpr int kMaxAnnounced = 10'000;
-    const QHash<QString, AnnouncedType>& announced() const { return m_announced; }
-    quint64 droppedAnnouncements() const { return m_droppedAnnouncements; }
-
-    /// ROS topics to subscribe: the links' own and the bridges' latency topics found in `rosTopics`
-    /// (mqtt_client publishes `~/latencies/<ros topic>` for stamped MQTT → ROS links).
-    QStringList rosTopicsToMonitor(const QStringList& rosTopics) const;
-    /// The definition of a ROS topic's type (for Header.seq), from the ROS monitor; a ROS 2 topic's
-    /// type without one (ROS 2 has no seq; a `std_msgs/msg/Float64` latency topic is found by it).
-    void setRosDefinition(const QString& topic, const QString& type, const QString& definition);
-
-    /// The measurement's pipeline (its stamp topics in order): links whose PREFIX/in and PREFIX/out
-    /// are in it take their latency from its samples, and from nothing else once one arrived.
-    void setPipeline(const QStringList& stampTopics);
-    /// One complete sample of that pipeline (stamp times in its order), received at `nowNs`.
-    void addPipelineSample(const std::vector<qint64>& times, qint64 nowNs);
-
-    /// The links' MQTT topics: what the watch monitors on the MQTT source.
-    QStringList mqttTopics() const;
-    /// Messages of the links' topics, from their MessageSources (MQTT, ROS 1, ROS 2): the first
-    /// bytes of each are enough for a stamp, a Header.seq and a Float64 latency.
-    void add(const std::vector<SourceHead>& batch);
     /// mqtt_client's control messages, which only MQTT has: type announcements and last wills
     /// (the rest of the batch is ignored).
     void addMqttControl(const std::vector<MqttMessage>& batch);
+    /// What reads the links' messages (and latency topics, pipeline samples) into their traffic.
+    LinkReader& reader() { return m_reader; }
+    const LinkReader& reader() const { return m_reader; }
+    /// Every MQTT topic an mqtt_client announced a type for, at most kMaxAnnounced.
+    static constexpr int kMaxAnnounced = AnnouncedTypes::kMax;
     /// Checks the rules at `nowNs` (call a few times a second); statistics are refreshed once a
     /// second. Emits eventStarted/eventEnded for every change.
     void tick(qint64 nowNs);
@@ -118,37 +95,20 @@ signals:
     void refreshed();
 
 private:
-    struct Track;
+    using Track = LinkTrack;
     void index();
     void evaluate(int i, qint64 nowNs);
     void evaluateBridge(const QString& name, BridgeLiveness& bridge, qint64 nowNs);
     void change(const QString& subject, const LinkDef* link, LinkLevel level, const QStringList& reasons,
                 const QString& detail, const LinkFigures& figures, qint64 nowNs, qint64 endNs = 0);
     void refreshStatistics(qint64 nowNs);
-    void updateSight(qint64 nowNs);
-    void announce(const QString& dataTopic, const QByteArray& payload);
-    void addMqttHead(const SourceHead& head);
-    void addRosHead(const SourceHead& head);
-    void indexPipeline();
-    static void applyAnnouncement(Track& track, const AnnouncedType& type);
 
-    LinkRules rulesFor(const LinkDef& def);
-
-    WatchRules m_rules;
-    quint64 m_ruleLookups = 0;
+    LinkRuleBook m_ruleBook;
     std::vector<std::unique_ptr<Track>> m_tracks;
-    QHash<QString, QList<int>> m_byMqtt;
-    QHash<QString, QList<int>> m_byRos;
-    QHash<QString, int> m_byLatencyTopic; ///< ROS latency topic -> link
+    LinkReader m_reader {m_tracks};
     QHash<QString, int> m_byId;
-    QHash<QString, std::shared_ptr<BridgeLiveness>> m_bridges;
-    QHash<QString, QList<QString>> m_willTopics; ///< will topic -> bridges
-    QStringList m_pipeline; ///< stamp topics
-    std::vector<int> m_pipelineLinks; ///< tracks that have both stamps in it
-    QHash<QString, AnnouncedType> m_announced; ///< by data topic
-    QHash<QString, std::size_t> m_announcementHash; ///< by data topic: the last payload's, decoded once
-    quint64 m_droppedAnnouncements = 0;
+    LinkBridges m_bridges;
     EventJournal m_journal;
     qint64 m_lastRefreshNs = 0;
-    bool m_blind[3] = {false, false, false}; ///< by SourceGraph
+    WatcherSight m_sight;
 };

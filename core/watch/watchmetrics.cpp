@@ -70,7 +70,7 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         snapshot->untrackedTopicMessages = topics->untrackedMessages();
     }
     snapshot->unwatchedLinks = unwatchedLinks;
-    snapshot->droppedAnnouncements = monitor.droppedAnnouncements();
+    snapshot->droppedAnnouncements = monitor.reader().announcedTypes().dropped();
     snapshot->links.reserve(std::size_t(monitor.linkCount()));
     QSet<QString> alive;
     alive.reserve(monitor.linkCount());
@@ -113,8 +113,8 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
     if (alive.size() != d->links.size())
         for (auto it = d->links.begin(); it != d->links.end();)
             it = alive.contains(it.key()) ? std::next(it) : d->links.erase(it);
-    for (const QString& name : monitor.bridges()) {
-        const LinkMonitor::BridgeState s = monitor.bridgeState(name);
+    for (const QString& name : monitor.bridges().names()) {
+        const LinkMonitor::BridgeState s = monitor.bridges().state(name);
         if (s != LinkMonitor::BridgeState::Unknown)
             snapshot->bridges.push_back(
                 {MetricsExposition::label("bridge", name.toUtf8()), s == LinkMonitor::BridgeState::Up});

@@ -118,9 +118,9 @@ QSet<QString> WatchSession::ros2Published() const
 void WatchSession::updateSight()
 {
     const bool broker = !m_parts.mqtt || m_parts.mqtt->state() == MqttConnection::State::Connected;
-    m_monitor->setSeeing(SourceGraph::Mqtt, broker);
-    m_monitor->setSeeing(SourceGraph::Ros1, m_parts.rosGraph->isReachable());
-    m_monitor->setSeeing(SourceGraph::Ros2, ros2Running());
+    m_monitor->sight().setSeeing(SourceGraph::Mqtt, broker);
+    m_monitor->sight().setSeeing(SourceGraph::Ros1, m_parts.rosGraph->isReachable());
+    m_monitor->sight().setSeeing(SourceGraph::Ros2, ros2Running());
 }
 
 void WatchSession::setDiscovering(bool discovering)
@@ -137,7 +137,8 @@ void WatchSession::applyLinks()
 {
     QList<LinkDef> links = m_configLinks;
     for (const QString& topic : std::as_const(m_discovered))
-        links << LinkDef::discoveredAt(topic, m_monitor->announced().value(topic).stamped);
+        links << LinkDef::discoveredAt(topic,
+                                       m_monitor->reader().announcedTypes().all().value(topic).stamped);
     m_monitor->setLinks(links, wallClockNs());
     syncMqttTopics();
     syncRosTopics();
@@ -151,7 +152,7 @@ bool WatchSession::discoverLinks()
     }
     // The links watched stay (while announced), then the newly announced ones in name order, up to
     // the cap: what a hostile client announces past it is counted, not watched.
-    const QHash<QString, AnnouncedType>& announced = m_monitor->announced();
+    const QHash<QString, AnnouncedType>& announced = m_monitor->reader().announcedTypes().all();
     QStringList found;
     for (const QString& topic : std::as_const(m_discovered))
         if (announced.contains(topic) && !m_configMqttTopics.contains(topic))
@@ -176,7 +177,7 @@ bool WatchSession::discoverLinks()
 void WatchSession::update(qint64 nowNs)
 {
     for (const std::unique_ptr<HeadTap>& heads : m_heads)
-        m_monitor->add(heads->take());
+        m_monitor->reader().add(heads->take());
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
@@ -187,12 +188,12 @@ void WatchSession::update(qint64 nowNs)
             const QHash<QString, TopicFigures> ros2 = m_parts.sources.ros2->figures(nowNs);
             for (auto it = ros2.cbegin(); it != ros2.cend(); ++it)
                 if (!it->type.isEmpty())
-                    m_monitor->setRosDefinition(it.key(), it->type, QString());
+                    m_monitor->reader().setRosDefinition(it.key(), it->type, QString());
         }
         const QHash<QString, TopicStats> stats = m_parts.rosMonitor->snapshot(nowNs);
         for (auto it = stats.cbegin(); it != stats.cend(); ++it)
             if (!it->type.isEmpty())
-                m_monitor->setRosDefinition(it.key(), it->type, it->definition);
+                m_monitor->reader().setRosDefinition(it.key(), it->type, it->definition);
     }
     if (nowNs - m_lastTickNs >= kTickNs) {
         m_lastTickNs = nowNs;
@@ -203,7 +204,7 @@ void WatchSession::update(qint64 nowNs)
 
 void WatchSession::syncMqttTopics()
 {
-    const QStringList topics = m_monitor->mqttTopics();
+    const QStringList topics = m_monitor->reader().mqttTopics();
     const QSet<QString> want(topics.cbegin(), topics.cend());
     m_monitoredMqtt.holdExactly(want);
 }
@@ -217,7 +218,7 @@ void WatchSession::syncRosTopics()
     for (const TopicInfo& t : m_parts.rosGraph->graph().topics)
         graphTopics << t.name;
     graphTopics << QStringList(onRos2.cbegin(), onRos2.cend());
-    const QStringList wanted = m_monitor->rosTopicsToMonitor(graphTopics);
+    const QStringList wanted = m_monitor->reader().rosTopicsToMonitor(graphTopics);
     QSet<QString> want1, want2;
     for (const QString& t : wanted)
         (onRos2.contains(t) ? want2 : want1).insert(t);
@@ -233,14 +234,15 @@ void WatchSession::useMeasurement(MeasureSession* measure)
     connect(measure, &MeasureSession::recordingChanged, this, [this, recorder](bool recording) {
         if (!recording)
             return;
-        for (const WatchEvent& e : m_monitor->openEvents())
+        for (const WatchEvent& e : m_monitor->events().openEvents())
             recorder->addEvent(e.toRecorded());
     });
     const auto add = [recorder](const WatchEvent& e) { recorder->addEvent(e.toRecorded()); };
     connect(m_monitor, &LinkMonitor::eventStarted, recorder, add);
     connect(m_monitor, &LinkMonitor::eventEnded, recorder, add);
 
-    const auto setPipeline = [this, measure] { m_monitor->setPipeline(measure->pipeline().topics()); };
+    const auto setPipeline
+        = [this, measure] { m_monitor->reader().setPipeline(measure->pipeline().topics()); };
     connect(measure, &MeasureSession::pipelineChanged, this, setPipeline);
     setPipeline();
     // Samples complete on this thread, in the measurement's drain; a recorded run shown (replayed)
@@ -249,6 +251,6 @@ void WatchSession::useMeasurement(MeasureSession* measure)
         [monitor = QPointer<LinkMonitor>(m_monitor),
          source = QPointer<MeasureSession>(measure)](qint64, const std::vector<qint64>& times) {
             if (monitor && source && !source->isShowingRun())
-                monitor->addPipelineSample(times, wallClockNs());
+                monitor->reader().addPipelineSample(times, wallClockNs());
         });
 }

@@ -206,7 +206,7 @@ private slots:
         QVERIFY(masterTopics(servers.rosMasterUri(), u"quiet"_s).subscribed.isEmpty());
         QCOMPARE(page->linkModel()->rowCount(), 0);
         QCOMPARE(named<EventLogModel>(*page, u"eventModel"_s)->rowCount(), 0);
-        QVERIFY(window.watch()->monitor()->openEvents().isEmpty());
+        QVERIFY(window.watch()->monitor()->events().openEvents().isEmpty());
         QCOMPARE(named<QLabel>(*page, u"linkSummary"_s)->text(),
                  u"No links watched: check a config below to watch it."_s);
 

@@ -75,12 +75,12 @@ void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch)
 {
     MqttTopicTree tree;
     MqttSource source(&tree);
-    for (const QString& topic : m.mqttTopics())
+    for (const QString& topic : m.reader().mqttTopics())
         source.monitor(topic);
     const std::unique_ptr<HeadTap> heads = source.openHeadTap(batch.size() + 1);
     source.add(batch);
     m.addMqttControl(batch);
-    m.add(heads->take());
+    m.reader().add(heads->take());
 }
 
 /// Drives a monitor with a clock: `step` advances by 100 ms (10 Hz) and ticks it.
@@ -127,13 +127,13 @@ private slots:
         const LinkDef out = link(Direction::Ros2Mqtt, u"/vehicle/pose"_s, u"vehicle/pose"_s, true);
         const LinkDef in = link(Direction::Mqtt2Ros, u"/vehicle/cmd"_s, u"vehicle/cmd"_s);
         m.setLinks({out, in}, kStart);
-        m.setRosDefinition(u"/vehicle/cmd"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
+        m.reader().setRosDefinition(u"/vehicle/cmd"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
         // mqtt_client's latency of the MQTT → ROS link: ~/latencies/<ros topic>, Float64 seconds.
         const QString latencyTopic = u"/vehicle_bridge/latencies/vehicle/cmd"_s;
-        QVERIFY(m.rosTopicsToMonitor({latencyTopic, u"/elsewhere/latencies/other"_s}).contains(latencyTopic));
-        QVERIFY(!m.rosTopicsToMonitor({u"/elsewhere/latencies/other"_s})
+        QVERIFY(m.reader().rosTopicsToMonitor({latencyTopic, u"/elsewhere/latencies/other"_s}).contains(latencyTopic));
+        QVERIFY(!m.reader().rosTopicsToMonitor({u"/elsewhere/latencies/other"_s})
                      .contains(u"/elsewhere/latencies/other"_s));
-        m.setRosDefinition(latencyTopic, u"std_msgs/Float64"_s, u"float64 data\n"_s);
+        m.reader().setRosDefinition(latencyTopic, u"std_msgs/Float64"_s, u"float64 data\n"_s);
         QByteArray seconds(8, '\0');
         const double twentyMs = 0.020;
         std::memcpy(seconds.data(), &twentyMs, 8);
@@ -145,15 +145,15 @@ private slots:
         quint32 seq = 0;
         for (int i = 0; i < 200; ++i) { // 20 s at 10 Hz
             const qint64 sent = clock.now;
-            m.add({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
+            m.reader().add({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
             // The bridge skips seq 50 and 51 (two messages never sent on), latency 5 ms.
             if (seq != 50 && seq != 51)
                 fromBroker(m, {mqtt(u"vehicle/pose"_s, MqttClientWire::stamped(sent, headerMessage(seq)),
                                 sent + 5 * kMs)});
             fromBroker(m, {mqtt(u"vehicle/cmd"_s, headerMessage(seq), sent)});
             if (i % 10 != 9) {
-                m.add({ros(u"/vehicle/cmd"_s, headerMessage(seq), sent + 2 * kMs)});
-                m.add({ros(latencyTopic, seconds, sent + 2 * kMs)});
+                m.reader().add({ros(u"/vehicle/cmd"_s, headerMessage(seq), sent + 2 * kMs)});
+                m.reader().add({ros(latencyTopic, seconds, sent + 2 * kMs)});
             }
             ++seq;
             clock.advance(100 * kMs);
@@ -191,10 +191,10 @@ private slots:
         LinkMonitor m;
         const LinkDef in = link(Direction::Mqtt2Ros, u"/vehicle/cmd"_s, u"vehicle/cmd"_s);
         m.setLinks({in}, kStart);
-        m.setRosDefinition(u"/vehicle/cmd"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
+        m.reader().setRosDefinition(u"/vehicle/cmd"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
         const QString latencyTopic = u"/vehicle_bridge/latencies/vehicle/cmd"_s;
-        QVERIFY(m.rosTopicsToMonitor({latencyTopic}).contains(latencyTopic));
-        m.setRosDefinition(latencyTopic, u"std_msgs/msg/Float64"_s, QString());
+        QVERIFY(m.reader().rosTopicsToMonitor({latencyTopic}).contains(latencyTopic));
+        m.reader().setRosDefinition(latencyTopic, u"std_msgs/msg/Float64"_s, QString());
         QByteArray seconds(8, '\0');
         const double twentyMs = 0.020;
         std::memcpy(seconds.data(), &twentyMs, 8);
@@ -203,8 +203,8 @@ private slots:
             const qint64 sent = clock.now;
             fromBroker(m, {mqtt(u"vehicle/cmd"_s, headerMessage(i), sent)});
             // stamp.sec 3 apart: read as a seq that would be two gaps each time
-            m.add({ros(u"/vehicle/cmd"_s, headerMessage(3 * i), sent + 2 * kMs, SourceGraph::Ros2)});
-            m.add({ros(latencyTopic, seconds, sent + 2 * kMs, SourceGraph::Ros2)});
+            m.reader().add({ros(u"/vehicle/cmd"_s, headerMessage(3 * i), sent + 2 * kMs, SourceGraph::Ros2)});
+            m.reader().add({ros(latencyTopic, seconds, sent + 2 * kMs, SourceGraph::Ros2)});
             clock.advance(100 * kMs);
         }
         const LinkFigures f = m.figures(m.indexOf(in.id()));
@@ -225,13 +225,13 @@ private slots:
         RosMsgTypeInfo type {QString(), u"geometry_msgs/msg/PointStamped"_s, QString(), true,
                              RosTypeRegistry::Dialect::Ros2};
         fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)});
-        QVERIFY(m.announced().value(u"vehicle/pose"_s).ros2);
+        QVERIFY(m.reader().announcedTypes().all().value(u"vehicle/pose"_s).ros2);
         Clock clock {m};
         for (quint32 i = 0; i < 50; ++i) {
             const qint64 sent = clock.now;
             QByteArray cdr("\x00\x01\x00\x00", 4); // CDR little endian, then the Header's stamp
             cdr += headerMessage(3 * i);
-            m.add({ros(u"/vehicle/pose"_s, headerMessage(i), sent)});
+            m.reader().add({ros(u"/vehicle/pose"_s, headerMessage(i), sent)});
             fromBroker(m, {mqtt(u"vehicle/pose"_s,
                                 MqttClientWire::stamped(sent, cdr, RosTypeRegistry::Dialect::Ros2),
                                 sent + 7 * kMs)});
@@ -255,7 +255,7 @@ private slots:
         for (int i = 0; i < 40; ++i) { // 4 s at 10 Hz; the destination hears from the 6th on
             fromBroker(m, {mqtt(u"bench/pointcloud"_s, "x", clock.now)});
             if (i >= 5)
-                m.add({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
+                m.reader().add({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
             clock.advance(100 * kMs);
         }
         LinkFigures f = m.figures(m.indexOf(in.id()));
@@ -270,7 +270,7 @@ private slots:
         for (int i = 0; i < 40; ++i) {
             fromBroker(m, {mqtt(u"bench/pointcloud"_s, "x", clock.now)});
             if (i < 10 || i > 12)
-                m.add({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
+                m.reader().add({ros(u"/cloud/pointcloud"_s, "x", clock.now + 2 * kMs)});
             clock.advance(100 * kMs);
         }
         f = m.figures(m.indexOf(in.id()));
@@ -289,7 +289,7 @@ private slots:
         Clock clock {m};
         const auto run = [&](int messages, bool delivered) {
             for (int i = 0; i < messages; ++i) {
-                m.add({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
+                m.reader().add({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
                 if (delivered)
                     fromBroker(m, {mqtt(u"a"_s, QByteArray(10, 'x'), clock.now + kMs)});
                 clock.advance(100 * kMs);
@@ -307,7 +307,7 @@ private slots:
         const QString bridge = u"bridge:vehicle_bridge"_s;
         run(30, true);
         QCOMPARE(started.size(), 0);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         // The bridge dies: the source goes on, nothing arrives.
         const qint64 died = clock.now;
         run(30, false);
@@ -321,7 +321,7 @@ private slots:
         // The bridge is down too, since the moment its link stalled.
         QCOMPARE(of(started, bridge).size(), 1);
         QCOMPARE(of(started, bridge).last().reasons, QStringList {u"bridge_down"_s});
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
         // It comes back: the stall ends once messages arrive steadily (2 s), dated from their return,
         // and the bridge is up.
         run(25, true);
@@ -330,7 +330,7 @@ private slots:
         QVERIFY(over.durationSeconds() > 1.5 && over.durationSeconds() < 3.5);
         QCOMPARE(over.toJson().value(u"event"_s).toString(), u"end"_s);
         QCOMPARE(of(ended, bridge).size(), 1);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         // The source pauses: "source stopped", never a stall, and the bridge is not blamed.
         const int before = of(started, l.id()).size();
         clock.advance(5000 * kMs);
@@ -342,7 +342,7 @@ private slots:
         QCOMPARE(of(started, bridge).size(), 1);
         run(10, true);
         QCOMPARE(m.level(0), LinkLevel::Ok);
-        QVERIFY(m.openEvents().isEmpty());
+        QVERIFY(m.events().openEvents().isEmpty());
     }
 
     // Issue 40: what the watcher cannot see (its own broker connection down, the master or the
@@ -409,7 +409,7 @@ private slots:
         Clock clock {m};
         int sent = 0;
         const auto send = [&](bool delivered) {
-            m.add({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
+            m.reader().add({ros(u"/a"_s, QByteArray(10, 'x'), clock.now)});
             if (delivered)
                 fromBroker(m, {mqtt(u"a"_s, QByteArray(10, 'x'), clock.now + kMs)});
             clock.advance(100 * kMs);
@@ -458,12 +458,12 @@ private slots:
         bool brokerUp = true;
         const auto run = [&](int messages) {
             for (int i = 0; i < messages; ++i) {
-                m.add({ros(u"/a"_s, headerMessage(quint32(i)), clock.now)});
+                m.reader().add({ros(u"/a"_s, headerMessage(quint32(i)), clock.now)});
                 if (brokerUp) {
                     fromBroker(m,
                                {mqtt(u"a"_s, headerMessage(quint32(i)), clock.now + kMs),
                                 mqtt(u"b"_s, QByteArray(10, 'x'), clock.now + kMs)});
-                    m.add({ros(u"/b"_s, QByteArray(10, 'x'), clock.now + 2 * kMs)});
+                    m.reader().add({ros(u"/b"_s, QByteArray(10, 'x'), clock.now + 2 * kMs)});
                 }
                 clock.advance(100 * kMs);
             }
@@ -476,7 +476,7 @@ private slots:
         fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
         clock.advance(200 * kMs);
         brokerUp = false;
-        m.setSeeing(SourceGraph::Mqtt, false);
+        m.sight().setSeeing(SourceGraph::Mqtt, false);
         run(200);
         for (int i : {0, 1}) {
             QCOMPARE(m.unknown(i), u"unknown (broker unreachable)"_s);
@@ -485,11 +485,11 @@ private slots:
             QCOMPARE(m.figures(i).lost, quint64(0));
             QCOMPARE(m.figures(i).lossPercent, 0.0);
         }
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Unknown);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Unknown);
         QCOMPARE(started.size(), 0);
         // It is back: the links are seen again and nothing of the outage is counted as lost.
         brokerUp = true;
-        m.setSeeing(SourceGraph::Mqtt, true);
+        m.sight().setSeeing(SourceGraph::Mqtt, true);
         run(200);
         for (int i : {0, 1}) {
             QVERIFY(m.unknown(i).isEmpty());
@@ -498,11 +498,11 @@ private slots:
             QCOMPARE(m.figures(i).lossPercent, 0.0);
         }
         QCOMPARE(m.figures(0).seqGaps, quint64(0));
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         QCOMPARE(started.size(), 0);
         // A loss after it is the bridge's, and counted.
         for (int i = 0; i < 100; ++i) {
-            m.add({ros(u"/a"_s, headerMessage(quint32(1000 + i)), clock.now)});
+            m.reader().add({ros(u"/a"_s, headerMessage(quint32(1000 + i)), clock.now)});
             if (i % 4 != 0)
                 fromBroker(m, {mqtt(u"a"_s, headerMessage(quint32(1000 + i)), clock.now + kMs)});
             clock.advance(100 * kMs);
@@ -520,12 +520,12 @@ private slots:
                    kStart);
         m.setRos2Topics({u"/c"_s});
         Clock clock {m};
-        m.setSeeing(SourceGraph::Ros1, false);
+        m.sight().setSeeing(SourceGraph::Ros1, false);
         clock.advance(500 * kMs);
         QCOMPARE(m.unknown(0), u"unknown (ROS master unreachable)"_s);
         QVERIFY(m.unknown(1).isEmpty());
-        m.setSeeing(SourceGraph::Ros1, true);
-        m.setSeeing(SourceGraph::Ros2, false);
+        m.sight().setSeeing(SourceGraph::Ros1, true);
+        m.sight().setSeeing(SourceGraph::Ros2, false);
         clock.advance(500 * kMs);
         QVERIFY(m.unknown(0).isEmpty());
         QCOMPARE(m.unknown(1), u"unknown (ROS 2 domain unreachable)"_s);
@@ -554,11 +554,11 @@ private slots:
         Clock clock {m};
         for (int i = 0; i < 200; ++i) { // 10 s: /fast at 20 Hz (5 ms), /slow at 5 Hz (25 ms)
             const qint64 sent = clock.now;
-            m.add({ros(u"/fast"_s, headerMessage(quint32(i)), sent)});
+            m.reader().add({ros(u"/fast"_s, headerMessage(quint32(i)), sent)});
             fromBroker(m,
                 {mqtt(u"fast"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))), sent + 5 * kMs)});
             if (i % 4 == 0) {
-                m.add({ros(u"/slow"_s, headerMessage(quint32(i)), sent)});
+                m.reader().add({ros(u"/slow"_s, headerMessage(quint32(i)), sent)});
                 fromBroker(m, {mqtt(u"slow"_s, MqttClientWire::stamped(sent, headerMessage(quint32(i))),
                                 sent + 25 * kMs)});
             }
@@ -612,21 +612,21 @@ private slots:
         QSignalSpy started(&m, &LinkMonitor::eventStarted);
         Clock clock {m};
         for (int i = 0; i < 10; ++i) {
-            m.add({ros(u"/a"_s, "x", clock.now)});
+            m.reader().add({ros(u"/a"_s, "x", clock.now)});
             fromBroker(m, {mqtt(u"a"_s, "x", clock.now)});
             clock.advance(100 * kMs);
         }
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
         fromBroker(m, {mqtt(u"vehicle/status"_s, "offline", clock.now)});
         // Believed once the watch's own connection outlived it (issue 40: a broker shutting down
         // sends every will, and the watch's connection goes next).
         clock.advance(BridgeLiveness::kWillGraceNs + 100 * kMs);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Down);
         QCOMPARE(started.last().first().value<WatchEvent>().subject, u"bridge:vehicle_bridge"_s);
         QCOMPARE(started.last().first().value<WatchEvent>().reasons, QStringList {u"bridge_down"_s});
         fromBroker(m, {mqtt(u"a"_s, "x", clock.now + kMs)});
         clock.advance(100 * kMs);
-        QCOMPARE(m.bridgeState(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
+        QCOMPARE(m.bridges().state(u"vehicle_bridge"_s), LinkMonitor::BridgeState::Up);
     }
 
     void seqDuplicatesAndReordering()
@@ -634,17 +634,17 @@ private slots:
         LinkMonitor m;
         const LinkDef l = link(Direction::Mqtt2Ros, u"/b"_s, u"b"_s);
         m.setLinks({l}, kStart);
-        m.setRosDefinition(u"/b"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
+        m.reader().setRosDefinition(u"/b"_s, u"test_msgs/Stamped"_s, kStampedDefinition);
         qint64 t = kStart;
         for (quint32 s : {1u, 2u, 3u, 5u, 4u, 6u, 6u, 7u, 10u, 11u})
-            m.add({ros(u"/b"_s, headerMessage(s), t += 100 * kMs)});
+            m.reader().add({ros(u"/b"_s, headerMessage(s), t += 100 * kMs)});
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.reordered, quint64(1)); // 4 after 5
         QCOMPARE(f.duplicates, quint64(1)); // 6 twice
         QCOMPARE(f.seqGaps, quint64(2)); // 8 and 9
         // A publisher that restarts at 0 is not a gap of four billion.
-        m.add({ros(u"/b"_s, headerMessage(0), t += 100 * kMs)});
-        m.add({ros(u"/b"_s, headerMessage(1), t += 100 * kMs)});
+        m.reader().add({ros(u"/b"_s, headerMessage(0), t += 100 * kMs)});
+        m.reader().add({ros(u"/b"_s, headerMessage(1), t += 100 * kMs)});
         QCOMPARE(m.figures(0).seqGaps, quint64(2));
     }
 
@@ -653,12 +653,12 @@ private slots:
         LinkMonitor m;
         const LinkDef l = link(Direction::Ros2Mqtt, u"/c"_s, u"c"_s, true);
         m.setLinks({l}, kStart);
-        m.setRosDefinition(u"/c"_s, u"bad"_s, u"this is not a definition {"_s);
+        m.reader().setRosDefinition(u"/c"_s, u"bad"_s, u"this is not a definition {"_s);
         // Short, empty and absurdly stamped payloads, and a broken announcement.
         fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/c"_s, "\x01\x02", kStart),
                    mqtt(u"c"_s, QByteArray(), kStart), mqtt(u"c"_s, "123", kStart),
                    mqtt(u"c"_s, QByteArray(8, '\xff'), kStart)});
-        m.add({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray()}});
+        m.reader().add({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray()}});
         m.tick(kStart + 2000 * kMs);
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.destination.messages, quint64(3));
@@ -677,15 +677,15 @@ private slots:
                                     true};
         fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/far/pose"_s, MqttClientWire::encodeType(point), kStart),
                    mqtt(u"mqtt_client/ros_msg_type/far/bad"_s, "\x01", kStart)});
-        QCOMPARE(m.announced().size(), 1);
-        QVERIFY(m.announced().value(u"far/pose"_s).stamped);
-        QVERIFY(m.announced().value(u"far/pose"_s).header);
+        QCOMPARE(m.reader().announcedTypes().all().size(), 1);
+        QVERIFY(m.reader().announcedTypes().all().value(u"far/pose"_s).stamped);
+        QVERIFY(m.reader().announcedTypes().all().value(u"far/pose"_s).header);
 
         const LinkDef d = LinkDef::discoveredAt(u"far/pose"_s, true);
         QCOMPARE(d.id(), u"discovered|ros2mqtt||far/pose"_s);
         m.setLinks({d}, kStart);
-        QVERIFY(m.bridges().isEmpty());
-        QVERIFY(m.rosTopicsToMonitor({u"/far/pose"_s}).isEmpty());
+        QVERIFY(m.bridges().names().isEmpty());
+        QVERIFY(m.reader().rosTopicsToMonitor({u"/far/pose"_s}).isEmpty());
         Clock clock {m};
         for (quint32 seq = 0; seq < 30; ++seq) {
             if (seq == 10)
@@ -711,8 +711,8 @@ private slots:
             flood.push_back(mqtt(u"mqtt_client/ros_msg_type/x/%1"_s.arg(i), MqttClientWire::encodeType(point),
                                  clock.now));
         fromBroker(m, flood);
-        QVERIFY(m.announced().size() <= LinkMonitor::kMaxAnnounced);
-        QVERIFY(m.droppedAnnouncements() >= 50);
+        QVERIFY(m.reader().announcedTypes().all().size() <= LinkMonitor::kMaxAnnounced);
+        QVERIFY(m.reader().announcedTypes().dropped() >= 50);
     }
 
     // Latency from a pipeline: a link whose timestamp_topic_prefix stamps (PREFIX/in, PREFIX/out)
@@ -734,12 +734,12 @@ private slots:
         QString prefix = l.stampPrefix;
         if (!prefix.startsWith(u'/'))
             prefix.prepend(u'/');
-        m.setPipeline({u"/sensor"_s, prefix + u"/in"_s, prefix + u"/out"_s, u"/far"_s});
+        m.reader().setPipeline({u"/sensor"_s, prefix + u"/in"_s, prefix + u"/out"_s, u"/far"_s});
         Clock clock {m};
         for (int i = 0; i < 20; ++i) {
             clock.advance(100 * kMs);
             const qint64 t = clock.now - 50 * kMs;
-            m.addPipelineSample({t, t + 1 * kMs, t + 1 * kMs + (i % 2 ? 3 : 5) * kMs, t + 30 * kMs},
+            m.reader().addPipelineSample({t, t + 1 * kMs, t + 1 * kMs + (i % 2 ? 3 : 5) * kMs, t + 30 * kMs},
                                 clock.now);
             // An injected stamp saying 40 ms: not taken.
             fromBroker(m, {mqtt(l.mqttTopic, MqttClientWire::stamped(clock.now - 40 * kMs, "x"), clock.now)});
@@ -752,8 +752,8 @@ private slots:
         QCOMPARE(f.latencySource, LatencySource::Pipeline);
         QCOMPARE(f.toJson().value(u"latency_source"_s).toString(), u"pipeline"_s);
         // A pipeline without the link's stamps: its samples say nothing about it.
-        m.setPipeline({u"/sensor"_s, u"/far"_s});
-        m.addPipelineSample({clock.now, clock.now + 7 * kMs}, clock.now);
+        m.reader().setPipeline({u"/sensor"_s, u"/far"_s});
+        m.reader().addPipelineSample({clock.now, clock.now + 7 * kMs}, clock.now);
         clock.advance(1000 * kMs);
         QCOMPARE(m.figures(0).latencySamples, quint64(20));
     }
@@ -769,13 +769,13 @@ private slots:
         LinkMonitor m;
         m.setLinks({l}, kStart);
         const Pipeline pipeline({u"/lab/link/in"_s, u"/lab/link/out"_s});
-        m.setPipeline(pipeline.topics());
+        m.reader().setPipeline(pipeline.topics());
         LatencyEngine engine(pipeline);
         Clock clock {m};
         for (int i = 1; i <= 10; ++i) { // 1 ms .. 10 ms
             clock.advance(100 * kMs);
             const std::vector<qint64> times {clock.now - 20 * kMs, clock.now - 20 * kMs + i * kMs};
-            m.addPipelineSample(times, clock.now);
+            m.reader().addPipelineSample(times, clock.now);
             engine.addSample(times);
         }
         clock.advance(1000 * kMs);
@@ -868,7 +868,7 @@ private slots:
         qInfo("2,000 links under 1,001 rules started in %lld ms", timer.elapsed());
         // Bounded work: each link's 1,001 rules looked up once, when it came, not again in every
         // round for the links that stayed (11,000 lookups).
-        QCOMPARE(monitor.ruleLookups(), quint64(2000));
+        QCOMPARE(monitor.ruleBook().lookups(), quint64(2000));
         // A late rule matched and an early one did not match where it should not.
         const LinkRules v7 = rules->forLink({u"/fleet/v7/x"_s, u"fleet/v7/x"_s, u"c"_s, u"d"_s});
         QCOMPARE(v7[LinkRules::StallSeconds].alert, 1.0);

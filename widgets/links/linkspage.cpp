@@ -501,7 +501,7 @@ void LinksPage::chooseConfigs()
 
 void LinksPage::editRules()
 {
-    RulesEditor editor(m_watch->monitor()->rules(), this);
+    RulesEditor editor(m_watch->monitor()->ruleBook().rules(), this);
     if (editor.exec() == QDialog::Accepted && editor.rules())
         m_watch->setRules(*editor.rules());
 }

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+#include "linkreader.h"
+
+#include "watch/linktrack.h"
+#include "wire/mqttclientwire.h"
+#include "wire/sourcemessage.h"
+#include "wire/stampcodec.h"
+
+#include <algorithm>
+#include <QtEndian>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+std::optional<quint32> seqOf(const QByteArray& bytes, qsizetype offset)
+{
+    if (bytes.size() < offset + 4)
+        return std::nullopt;
+    return qFromLittleEndian<quint32>(bytes.constData() + offset);
+}
+
+} // namespace
+
+LinkReader::LinkReader(Tracks& tracks)
+    : m_tracks(tracks)
+{ }
+
+void LinkReader::index()
+{
+    m_byMqtt.clear();
+    m_byRos.clear();
+    m_byLatencyTopic.clear();
+    for (int i = 0; i < int(m_tracks.size()); ++i) {
+        LinkTrack& t = *m_tracks[std::size_t(i)];
+        m_byMqtt[t.def.mqttTopic] << i;
+        if (!t.def.rosTopic.isEmpty())
+            m_byRos[t.def.rosTopic] << i;
+        if (const auto a = m_announced.all().constFind(t.def.mqttTopic); a != m_announced.all().cend())
+            applyAnnouncement(t, *a); // announced (and retained) before the link was watched
+    }
+    indexPipeline();
+}
+
+void LinkReader::announce(const QString& dataTopic, const QByteArray& payload)
+{
+    if (const auto type = m_announced.add(dataTopic, payload))
+        for (int i : m_byMqtt.value(dataTopic))
+            applyAnnouncement(*m_tracks[std::size_t(i)], *type);
+}
+
+QStringList LinkReader::rosTopicsToMonitor(const QStringList& rosTopics) const
+{
+    QStringList out = m_byRos.keys();
+    // mqtt_client: the private "latencies/<ros topic>" of the node that publishes the ROS topic.
+    for (const QString& t : rosTopics) {
+        const qsizetype at = t.indexOf(u"/latencies/"_s);
+        if (at < 0)
+            continue;
+        const QString rosTopic = t.mid(at + 10);
+        for (int i : m_byRos.value(rosTopic)) {
+            if (m_tracks[std::size_t(i)]->def.direction == Direction::Mqtt2Ros) {
+                out << t;
+                break;
+            }
+        }
+    }
+    return out;
+}
+
+void LinkReader::setRosDefinition(const QString& topic, const QString& type, const QString& definition)
+{
+    const bool header = AnnouncedTypes::headerFirst(type, definition);
+    for (int i : m_byRos.value(topic)) {
+        LinkTrack& t = *m_tracks[std::size_t(i)];
+        (t.def.direction == Direction::Mqtt2Ros ? t.dstHeader : t.srcHeader) = header;
+    }
+    // A latency topic is found by its name; its index is kept here, where every ROS topic passes.
+    const qsizetype at = topic.indexOf(u"/latencies/"_s);
+    if (at >= 0 && (type == u"std_msgs/Float64"_s || type == u"std_msgs/msg/Float64"_s)) {
+        for (int i : m_byRos.value(topic.mid(at + 10)))
+            if (m_tracks[std::size_t(i)]->def.direction == Direction::Mqtt2Ros)
+                m_byLatencyTopic.insert(topic, i);
+    }
+}
+
+QStringList LinkReader::mqttTopics() const
+{
+    return m_byMqtt.keys();
+}
+
+void LinkReader::applyAnnouncement(LinkTrack& t, const AnnouncedType& type)
+{
+    t.announcedStamped = type.stamped;
+    t.ros2 = type.ros2;
+    (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
+}
+
+void LinkReader::add(const std::vector<SourceHead>& batch)
+{
+    for (const SourceHead& a : batch) {
+        if (a.graph == SourceGraph::Mqtt)
+            addMqttHead(a);
+        else
+            addRosHead(a);
+    }
+}
+
+void LinkReader::addMqttHead(const SourceHead& m)
+{
+    const auto it = m_byMqtt.constFind(m.topic);
+    if (it == m_byMqtt.cend())
+        return;
+    for (int i : *it) {
+        LinkTrack& t = *m_tracks[std::size_t(i)];
+        // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
+        if (t.def.direction == Direction::Mqtt2Ros) {
+            t.src.add(m.receivedNs, m.size);
+            if (t.srcHeader && !t.ros2)
+                if (const auto seq = seqOf(m.head, t.stamped() ? MqttClientWire::kRos1StampBytes : 0))
+                    t.srcSeq.add(*seq);
+            continue;
+        }
+        t.dst.add(m.receivedNs, m.size);
+        qsizetype offset = 0;
+        if (t.stamped()) {
+            const auto dialect = t.ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
+            if (const auto s = MqttClientWire::splitStamped(m.head, dialect)) {
+                if (!t.pipelineLatency)
+                    t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6,
+                                 LatencySource::Stamps);
+                offset = MqttClientWire::stampBytes(dialect);
+            }
+        }
+        if (t.dstHeader && !t.ros2)
+            if (const auto seq = seqOf(m.head, offset))
+                t.seq.add(*seq);
+    }
+}
+
+void LinkReader::addRosHead(const SourceHead& a)
+{
+    if (const auto it = m_byRos.constFind(a.topic); it != m_byRos.cend()) {
+        // A ROS 2 Header has no seq: its first bytes are the stamp.
+        const bool hasSeq = a.graph == SourceGraph::Ros1;
+        for (int i : *it) {
+            LinkTrack& t = *m_tracks[std::size_t(i)];
+            if (t.def.direction == Direction::Ros2Mqtt) {
+                t.src.add(a.receivedNs, a.size);
+                if (t.srcHeader && hasSeq)
+                    if (const auto seq = seqOf(a.head, 0))
+                        t.srcSeq.add(*seq);
+                continue;
+            }
+            t.dst.add(a.receivedNs, a.size);
+            if (t.dstHeader && hasSeq)
+                if (const auto seq = seqOf(a.head, 0))
+                    t.seq.add(*seq);
+        }
+    } else if (const auto lt = m_byLatencyTopic.constFind(a.topic); lt != m_byLatencyTopic.cend()) {
+        // std_msgs/Float64 in seconds, as mqtt_client publishes it.
+        LinkTrack& t = *m_tracks[std::size_t(*lt)];
+        if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)); ns && !t.pipelineLatency)
+            t.addLatency(a.receivedNs, double(*ns) / 1e6, LatencySource::LatencyTopic);
+    }
+}
+
+void LinkReader::setPipeline(const QStringList& stampTopics)
+{
+    m_pipeline = stampTopics;
+    indexPipeline();
+}
+
+void LinkReader::indexPipeline()
+{
+    QHash<QString, int> at;
+    for (qsizetype i = 0; i < m_pipeline.size(); ++i) {
+        // The suite's configs name their prefix with or without the leading slash.
+        QString name = m_pipeline[i];
+        if (name.startsWith(u'/'))
+            name.remove(0, 1);
+        at.insert(name, int(i));
+    }
+    m_pipelineLinks.clear();
+    for (int i = 0; i < int(m_tracks.size()); ++i) {
+        LinkTrack& t = *m_tracks[std::size_t(i)];
+        QString prefix = t.def.stampPrefix;
+        while (prefix.startsWith(u'/'))
+            prefix.remove(0, 1);
+        while (prefix.endsWith(u'/'))
+            prefix.chop(1);
+        t.pipelineIn = prefix.isEmpty() ? -1 : at.value(prefix + u"/in"_s, -1);
+        t.pipelineOut = prefix.isEmpty() ? -1 : at.value(prefix + u"/out"_s, -1);
+        if (t.pipelineIn >= 0 && t.pipelineOut >= 0)
+            m_pipelineLinks.push_back(i);
+        else
+            t.pipelineLatency = false;
+    }
+}
+
+void LinkReader::addPipelineSample(const std::vector<qint64>& times, qint64 nowNs)
+{
+    for (int i : m_pipelineLinks) {
+        LinkTrack& t = *m_tracks[std::size_t(i)];
+        if (std::size_t(std::max(t.pipelineIn, t.pipelineOut)) >= times.size())
+            continue; // a sample of another pipeline than the one set
+        t.pipelineLatency = true;
+        t.addLatency(nowNs,
+                     double(times[std::size_t(t.pipelineOut)] - times[std::size_t(t.pipelineIn)]) / 1e6,
+                     LatencySource::Pipeline);
+    }
+}

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "watch/announcedtypes.h"
+
+#include <memory>
+#include <QHash>
+#include <QStringList>
+#include <vector>
+
+struct LinkTrack;
+struct SourceHead;
+
+/// Reads what arrives for the watched links into their traffic: routes each message by topic to
+/// its links, and takes from it what the link can give (a stamp's latency, a Header.seq, a byte
+/// count); latency topics (`~/latencies/<ros topic>`) and the measurement's pipeline give latency too.
+///
+/// How a link's messages are read follows what is known of its types: mqtt_client's announcements
+/// (AnnouncedTypes) and the ROS definitions the ROS monitor found. It works on the LinkMonitor's
+/// tracks; index() is called whenever they change.
+class LinkReader
+{
+public:
+    using Tracks = std::vector<std::unique_ptr<LinkTrack>>;
+    explicit LinkReader(Tracks& tracks);
+
+    /// The tracks changed: routes anew, and what was announced (retained) before applies to new links.
+    void index();
+
+    /// The links' MQTT topics: what the watch monitors on the MQTT source.
+    QStringList mqttTopics() const;
+    /// ROS topics to subscribe: the links' own and the bridges' latency topics found in `rosTopics`
+    /// (mqtt_client publishes `~/latencies/<ros topic>` for stamped MQTT → ROS links).
+    QStringList rosTopicsToMonitor(const QStringList& rosTopics) const;
+    /// The definition of a ROS topic's type (for Header.seq), from the ROS monitor; a ROS 2 topic's
+    /// type without one (ROS 2 has no seq; a `std_msgs/msg/Float64` latency topic is found by it).
+    void setRosDefinition(const QString& topic, const QString& type, const QString& definition);
+
+    /// Every MQTT topic an mqtt_client announced a type for (bounded, see AnnouncedTypes).
+    const AnnouncedTypes& announcedTypes() const { return m_announced; }
+    /// mqtt_client's announcement of `dataTopic`'s type.
+    void announce(const QString& dataTopic, const QByteArray& payload);
+
+    /// The measurement's pipeline (its stamp topics in order): links whose PREFIX/in and PREFIX/out
+    /// are in it take their latency from its samples, and from nothing else once one arrived.
+    void setPipeline(const QStringList& stampTopics);
+    /// One complete sample of that pipeline (stamp times in its order), received at `nowNs`.
+    void addPipelineSample(const std::vector<qint64>& times, qint64 nowNs);
+
+    /// Messages of the links' topics, from their MessageSources (MQTT, ROS 1, ROS 2): the first
+    /// bytes of each are enough for a stamp, a Header.seq and a Float64 latency.
+    void add(const std::vector<SourceHead>& batch);
+
+private:
+    void addMqttHead(const SourceHead& head);
+    void addRosHead(const SourceHead& head);
+    void indexPipeline();
+    static void applyAnnouncement(LinkTrack& track, const AnnouncedType& type);
+
+    Tracks& m_tracks;
+    QHash<QString, QList<int>> m_byMqtt;
+    QHash<QString, QList<int>> m_byRos;
+    QHash<QString, int> m_byLatencyTopic; ///< ROS latency topic -> link
+    QStringList m_pipeline; ///< stamp topics
+    std::vector<int> m_pipelineLinks; ///< tracks that have both stamps in it
+    AnnouncedTypes m_announced;
+};

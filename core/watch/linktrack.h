@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "watch/linkdef.h"
+#include "watch/linkjudge.h"
+#include "watch/linktraffic.h"
+#include "watch/watchrules.h"
+
+#include <deque>
+#include <optional>
+
+/// Destination rate and latency p99 of a link at one refresh.
+struct LinkHistoryPoint
+{
+    qint64 ns = 0;
+    double rateHz = 0;
+    double p99Ms = qQNaN();
+    LinkLevel level = LinkLevel::Ok;
+};
+
+/// A watched link: its definition and rules, its traffic, how its messages are read (LinkReader),
+/// and what the judge last said of it (LinkMonitor).
+struct LinkTrack : LinkTraffic
+{
+    LinkDef def;
+    LinkRules rules;
+    qint64 startNs = 0;
+    bool dstHeader = false; ///< the destination's messages start with a Header
+    bool srcHeader = false;
+    std::optional<bool> announcedStamped;
+    bool ros2 = false; ///< announced by mqtt_client for ROS 2: CDR, a 12-byte stamp
+    LinkLevel level = LinkLevel::Ok;
+    QList<LinkReason> reasons;
+    std::deque<LinkHistoryPoint> history;
+    quint64 stalls = 0;
+    bool stalled = false;
+    LinkLevel stallLevel = LinkLevel::Ok;
+    qint64 stallEndedNs = 0;
+    qint64 silentNs = 0; ///< the last check that found the destination silent past the stall threshold
+    bool onRos2 = false; ///< its ROS topic is watched on the ROS 2 domain
+    LinkBlindness blindness = LinkBlindness::None;
+    QString unknown; ///< the judge's sentence while it cannot see a side
+
+    bool stamped() const { return announcedStamped.value_or(def.stamped); }
+
+    int pipelineIn = -1; ///< index of PREFIX/in in the pipeline
+    int pipelineOut = -1;
+    bool pipelineLatency = false; ///< a pipeline sample arrived: other latency sources are ignored
+};

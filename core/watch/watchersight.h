@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "wire/sourcemessage.h"
+
+#include <memory>
+#include <vector>
+
+struct LinkTrack;
+
+/// What the watcher can see: its own broker connection, the ROS master, the ROS 2 domain. A link
+/// with a side on an unseen graph is unknown (LinkBlindness): not stalled, nothing lost, and its
+/// traffic counts again from when the watcher sees it again.
+class WatcherSight
+{
+public:
+    void setSeeing(SourceGraph graph, bool seeing) { m_blind[std::size_t(graph)] = !seeing; }
+    bool sees(SourceGraph graph) const { return !m_blind[std::size_t(graph)]; }
+    /// Each link's blindness at `nowNs`, from the graphs its sides are on: a link that loses sight
+    /// forgets its windows, one that regains it counts from `nowNs`.
+    void update(const std::vector<std::unique_ptr<LinkTrack>>& tracks, qint64 nowNs) const;
+
+private:
+    bool m_blind[3] = {false, false, false}; ///< by SourceGraph
+};
