@@ -98,9 +98,10 @@ void ThroughputStep::nextProbe()
         qCDebug(lcDemo).noquote() << "throughput" << s.payloadBytes << "bytes at" << s.rateHz << "Hz";
         m_probe = std::make_unique<Probe>();
         m_probe->rateHz = s.rateHz;
-        QString why;
-        if (!m_probe->start(m_plan, s, 100'000 + i * 100 + int(r.points.size()), m_dir, m_program, &why)) {
-            qCWarning(lcDemo).noquote() << why;
+        if (const Status started
+            = m_probe->start(m_plan, s, 100'000 + i * 100 + int(r.points.size()), m_dir, m_program);
+            !started) {
+            qCWarning(lcDemo).noquote() << started.error().toString();
             ThroughputPoint failed;
             failed.rateHz = s.rateHz;
             endProbe(failed);

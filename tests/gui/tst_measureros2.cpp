@@ -43,7 +43,7 @@ private slots:
         const int domain = Ros2Peer::freeDomain(101, 120);
         MainWindow w;
         QString error;
-        noted(QVERIFY2(w.session()->startRos2({domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(w.session()->startRos2({domain, true}), &error), qPrintable(error));
         MeasurePage* page = w.measurePage();
         w.measure()->setPipeline(Pipeline(Ros2StampChain::topics(), 1000));
         w.resize(1280, 800);

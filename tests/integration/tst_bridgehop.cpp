@@ -229,7 +229,7 @@ private slots:
         dds.node().subscribe(u"/hop/pose_back"_s, u"geometry_msgs/msg/PoseStamped"_s);
         dds.node().subscribe(u"/hop_bridge/latencies/hop/pose_back"_s, u"std_msgs/msg/Float64"_s);
         dds.node().subscribe(u"/ts/hop/pose_back/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
-        noted(QVERIFY2(dds.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(dds.start({m_domain, true}), &error), qPrintable(error));
 
         // The announcement for MQTT -> ROS, retained: each bridge takes it when it subscribes, and
         // advertises the topic (nothing is counted for it).

@@ -152,7 +152,7 @@ private slots:
         QString error;
         QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         LiveSession live;
-        noted(QVERIFY2(live.startRos2({lab.rosDomain(), true}), &error), qPrintable(error));
+        QVERIFY2(noted(live.startRos2({lab.rosDomain(), true}), &error), qPrintable(error));
         MeasureSession measure(LiveParts::measure(&live));
         const std::optional<Pipeline> pipeline = noted(Pipeline::readFile(lab.pipelinePath()), &error);
         QVERIFY2(pipeline, qPrintable(error));
@@ -216,7 +216,7 @@ private slots:
         QString error;
         QVERIFY2(noted(lab.start(ros2Lab()), &error), qPrintable(error));
         Ros2Participant dds;
-        noted(QVERIFY2(dds.start({lab.rosDomain(), true}), &error), qPrintable(error));
+        QVERIFY2(noted(dds.start({lab.rosDomain(), true}), &error), qPrintable(error));
         // The vehicle starts once its stamps have a subscriber (a measuring Bridgescope): this one.
         const QString first = DemoLab::pipelineTopics().first();
         const QString last = DemoLab::pipelineTopics().last();

@@ -134,7 +134,7 @@ private slots:
         for (int s = 0; s < shown.seriesCount(); ++s)
             liveStats.push_back(shown.series(s).stats());
         const int liveSeries = shown.seriesCount();
-        noted(QVERIFY(measure.showRun(*run), &error));
+        QVERIFY(noted(measure.showRun(*run), &error));
         QVERIFY(measure.isShowingRun());
         QCOMPARE(measure.engine().seriesCount(), liveSeries);
         for (int s = 0; s < liveSeries; ++s) {

@@ -178,7 +178,7 @@ private slots:
         stamps.node().subscribe(u"/bench/bridge/in"_s, u"benchmarking_suite/msg/TimeStamped"_s);
         stamps.node().subscribe(u"/bench/bridge/out"_s, u"benchmarking_suite/msg/TimeStamped"_s);
         QString error;
-        noted(QVERIFY2(stamps.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(stamps.start({m_domain, true}), &error), qPrintable(error));
         const qint64 before = wallClockNs();
         Ros2Peer talker(m_domain, {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:20"_s,
                                    u"--pub"_s, u"/pose:geometry_msgs/msg/PoseStamped:20"_s, u"--pub"_s,
@@ -283,7 +283,7 @@ private slots:
         // mqtt_client's "~/latencies/" + "/pose_back", its "//" made one
         latencies.node().subscribe(u"/lab/bridge2/latencies/pose_back"_s, u"std_msgs/msg/Float64"_s);
         QString error;
-        noted(QVERIFY2(latencies.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(latencies.start({m_domain, true}), &error), qPrintable(error));
         Ros2Peer listener(m_domain, {u"--node"_s, u"/listener"_s, u"--sub"_s, u"/chatter_back:std_msgs/msg/String"_s,
                                      u"--sub"_s, u"/pose_back:geometry_msgs/msg/PoseStamped"_s, u"--sub"_s,
                                      u"/cloud_back:sensor_msgs/msg/PointCloud2:best_effort"_s, u"--cdr"_s,

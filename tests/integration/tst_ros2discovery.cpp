@@ -80,7 +80,7 @@ private slots:
         Ros2Participant p;
         QSignalSpy changed(&p, &Ros2Participant::graphChanged);
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
 
         Ros2Peer talker(m_domain,
                         {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:20"_s,
@@ -134,7 +134,7 @@ private slots:
     {
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         QSignalSpy failed(&p, &Ros2Participant::monitorFailed);
         Ros2Peer talker(m_domain,
                         {u"--node"_s, u"/sensors"_s, u"--size"_s, QString::number(kCloudBytes), u"--pub"_s,
@@ -265,7 +265,7 @@ private slots:
                  << u"%1:%2"_s.arg(c.topic, c.hex);
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         Ros2Peer evil(m_domain, args);
         QVERIFY2(evil.waitFor(u"ready"_s), qPrintable(evil.errors()));
         QTRY_VERIFY_WITH_TIMEOUT(std::all_of(cases.begin(), cases.end(),
@@ -337,7 +337,7 @@ private slots:
         };
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         std::vector<std::unique_ptr<Ros2Peer>> evil;
         for (int i = 0; i < int(infos.size()); ++i) {
             evil.push_back(std::make_unique<Ros2Peer>(
@@ -386,7 +386,7 @@ private slots:
     {
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         QRandomGenerator random(20261126);
         QUdpSocket socket;
         int sent = 0;

@@ -71,7 +71,7 @@ private slots:
     {
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         QVERIFY(!p.node().publish(u"/chatter"_s, stringCdr(u"early"_s))); // not advertised
         QCOMPARE(p.node().publishDropped(), 1u);
         p.node().advertise(u"/chatter"_s, u"std_msgs/msg/String"_s);
@@ -100,7 +100,7 @@ private slots:
         QSignalSpy received(&p.node(), &Ros2EndpointLink::received);
         p.node().subscribe(u"/chatter"_s, u"std_msgs/msg/String"_s); // before start(): made once it runs
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         Ros2Peer talker(m_domain, {u"--node"_s, u"/talker"_s, u"--pub"_s, u"/chatter:std_msgs/msg/String:50"_s});
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         QTRY_VERIFY_WITH_TIMEOUT(received.size() >= 10, 15000);
@@ -133,7 +133,7 @@ private slots:
     {
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         p.node().setNode(u"/lab"_s, u"mqtt_client"_s);
         p.node().advertise(u"/out"_s, u"std_msgs/msg/String"_s);
         p.node().advertise(u"/pose"_s, u"geometry_msgs/msg/PoseStamped"_s);
@@ -160,7 +160,7 @@ private slots:
         Ros2Participant p;
         QSignalSpy received(&p.node(), &Ros2EndpointLink::received);
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         // our writers: best effort to a reliable reader never matches, reliable does
         p.node().advertise(u"/strict"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::BestEffort));
         p.node().advertise(u"/fine"_s, u"std_msgs/msg/String"_s, qos(Ros2Qos::Reliable));
@@ -198,7 +198,7 @@ private slots:
         p.node().subscribe(u"/flood"_s, u"sensor_msgs/msg/PointCloud2"_s, q);
         QSignalSpy joined(&p, &Ros2Participant::joined);
         QString error;
-        noted(QVERIFY2(p.start({m_domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({m_domain, true}), &error), qPrintable(error));
         QVERIFY(joined.wait(10000));
         const qint64 child = DdsChild::of();
         QVERIFY(child > 0);

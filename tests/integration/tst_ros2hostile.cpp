@@ -94,7 +94,7 @@ private slots:
         Ros2Participant p;
         QSignalSpy restarted(&p, &Ros2Participant::restarted);
         QString error;
-        noted(QVERIFY2(p.start({domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({domain, true}), &error), qPrintable(error));
         Ros2Peer talker(domain, steadyTalker());
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 15000);
@@ -207,7 +207,7 @@ private slots:
         Ros2Participant p;
         QSignalSpy loops(&p, &Ros2Participant::restartLoopBroken);
         QString error;
-        noted(QVERIFY2(p.start({domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({domain, true}), &error), qPrintable(error));
         QTRY_COMPARE_WITH_TIMEOUT(loops.size(), 1, 30000);
         QCOMPARE(p.restartCount().restarts(), quint64(Ros2Participant::kLoopRestarts));
         QVERIFY2(loops.at(0).at(0).toString().contains(u"graph limited (1000 endpoints a participant"_s),
@@ -261,7 +261,7 @@ private slots:
         const int domain = Ros2Peer::freeDomain(RtpsCorpus::kFirstDomain, RtpsCorpus::kLastDomain);
         Ros2Participant p;
         QString error;
-        noted(QVERIFY2(p.start({domain, true}), &error), qPrintable(error));
+        QVERIFY2(noted(p.start({domain, true}), &error), qPrintable(error));
         Ros2Peer talker(domain, steadyTalker());
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
         QTRY_VERIFY_WITH_TIMEOUT(hasNode(p.graph(), u"/steady"_s), 15000);
