@@ -7,7 +7,7 @@
 //   scripts/bench.sh bench_discovery        (BENCH_SECONDS, BENCH_RATE, BENCH_TOPICS override)
 #include "app/gui/mainwindow.h"
 #include "benchutil.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "widgets/discover/discoverpage.h"

@@ -5,7 +5,7 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "mqtt/mqttconnection.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros2/ros2participant.h"
 

@@ -8,7 +8,7 @@
 #include "base/yamlreader.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"

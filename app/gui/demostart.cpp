@@ -4,7 +4,7 @@
 #include "app/cli/clioutput.h"
 #include "app/gui/mainwindow.h"
 #include "base/secrets.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/seriesid.h"
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"

@@ -3,7 +3,7 @@
 
 #include "base/nameelider.h"
 #include "latency/latencyreport.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/palette.h"
 #include "record/suitecsv.h"
 #include "report/ecdfsvg.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fieldplotter.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"

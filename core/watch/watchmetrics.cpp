@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "watchmetrics.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "watch/linkmonitor.h"
 #include "watch/metricsserver.h"
 

@@ -3,8 +3,8 @@
 // with what mqtt_client sends (for ROS 1 and ROS 2), JSON and a 2 MB binary payload.
 #include "app/gui/mainwindow.h"
 #include "fixtures.h"
-#include "mqtt/mqtttopicfilter.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopicfilter.h"
+#include "models/mqtttopictree.h"
 #include "mqttclientros2.h"
 #include "session/livesession.h"
 #include "testservers.h"

@@ -16,7 +16,7 @@
 #include "signalprocess.h"
 #include "testservers.h"
 #include "viewhelpers.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"

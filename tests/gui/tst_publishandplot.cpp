@@ -4,7 +4,7 @@
 // detail pane follow real publishers (MQTT JSON, a ROS node on a real rosmaster, and a ROS 2 node
 // on Cyclone DDS, tests/ros2peer).
 #include "fixtures.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "resulttext.h"
 #include "ros/rosmonitor.h"
 #include "ros2peer.h"

@@ -6,7 +6,7 @@
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttlink.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "mqttclientros2.h"
 #include "resulttext.h"
 #include "testservers.h"

@@ -5,7 +5,7 @@
 // are written out by hand, byte by byte, from mqtt_client's source (MqttClient.cpp, v2.5.0):
 // the two agree, and both decode in MqttClientWire, the topic tree and the stamp decoder.
 #include "mqtt/mqttstampdecoder.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "mqttclientros2.h"
 #include "resulttext.h"
 #include "wire/mqttclientwire.h"

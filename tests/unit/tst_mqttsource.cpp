@@ -3,7 +3,7 @@
 // bounded heads and watched queues that count what they drop, and types from mqtt_client's
 // announcements, fed as the live session feeds it (the batch, then the topic tree).
 #include "mqtt/mqttsource.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "wire/mqttclientwire.h"
 
 #include <QTest>
@@ -44,7 +44,7 @@ private slots:
     void monitoringIsCountedAndGivesFiguresOfMonitoredTopicsOnly()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         QCOMPARE(source.sourceGraph(), SourceGraph::Mqtt);
         source.monitor(u"lab/pose"_s);
         source.monitor(u"lab/pose"_s); // Map health and Watch both
@@ -82,7 +82,7 @@ private slots:
     void headsAreBoundedAndCountDrops()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         source.monitor(u"a"_s);
         std::vector<MqttMessage> batch {message(u"a"_s, "short", kStart)};
         QVERIFY(source.takeArrivals().empty()); // not kept before keepArrivals()
@@ -114,7 +114,7 @@ private slots:
     void watchedTopicsKeepTheNewestWithinTheirBoundsAndTheirType()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         drain(source, tree,
               {message(MqttClientWire::typeTopicPrefix() + u"lab/pose"_s, MqttClientWire::encodeType(kPoint),
                        kStart, true)},
@@ -148,7 +148,7 @@ private slots:
         source.add(batch);
         QCOMPARE(roomy->take().size(), std::size_t(10));
         {
-            MqttSource gone(&tree);
+            MqttSource gone(&tree.topicData());
             other = gone.openTap(u"lab/pose"_s, 4, 100);
         }
         QVERIFY(other->take().empty());
@@ -159,7 +159,7 @@ private slots:
     void aFloodStaysWithinTheWatchedBounds()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         const std::unique_ptr<Tap> tap = source.openTap(u"flood"_s, 1000, 4 * 1024 * 1024);
         const QByteArray kib(1024, 'x');
         for (int round = 0; round < 20; ++round) {

@@ -2,7 +2,7 @@
 // The MQTT topic tree: exact counts, subtree sums, bounded history, mqtt_client awareness, and
 // batched, consistent model signals.
 #include "fixtures.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "wire/mqttclientwire.h"
 
 #include <QAbstractItemModelTester>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "detailpane.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "session/fieldplotter.h"
 #include "session/graphstatus.h"
 #include "session/livesession.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "discoverpage.h"
 
-#include "mqtt/mqtttopicfilter.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopicfilter.h"
+#include "models/mqtttopictree.h"
 #include "mqtt/passwordstore.h"
 #include "session/graphstatus.h"
 #include "session/livesession.h"

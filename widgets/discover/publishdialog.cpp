@@ -4,7 +4,7 @@
 #include "base/topicnames.h"
 #include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "wire/payloadtext.h"
 #include "wire/publishpayload.h"
 

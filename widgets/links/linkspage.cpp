@@ -3,7 +3,7 @@
 
 #include "base/yamlreader.h"
 #include "config/configreader.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
