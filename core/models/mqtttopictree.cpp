@@ -300,16 +300,6 @@ bool MqttTopicTree::hasChildren(const QString& path) const
     return n && !n->children.empty();
 }
 
-QStringList MqttTopicTree::topicsBelow(const QString& path, int limit) const
-{
-    return m_topics.store().topicsBelow(path, limit);
-}
-
-bool MqttTopicTree::mayHoldRetained(const QString& topic) const
-{
-    return m_topics.store().mayHoldRetained(topic);
-}
-
 Qt::ItemFlags MqttTopicTree::flags(const QModelIndex& index) const
 {
     Qt::ItemFlags f = QAbstractItemModel::flags(index) | Qt::ItemIsDropEnabled;
@@ -332,7 +322,8 @@ QMimeData* MqttTopicTree::mimeData(const QModelIndexList& indexes) const
         if (!i.isValid() || i.column() != 0)
             continue;
         const Node* n = static_cast<const Node*>(i.internalPointer());
-        const QStringList names = n->isTopic ? QStringList {n->path} : topicsBelow(n->path);
+        const QStringList names
+            = n->isTopic ? QStringList {n->path} : m_topics.store().topicsBelow(n->path, 1000);
         for (const QString& t : names) {
             if (seen.contains(t))
                 continue;

@@ -30,6 +30,7 @@ class RosTypeRegistry;
 /// decodes with the ROS 2 definitions the tree is given (setRos2Registry()). $SYS topics
 /// are kept apart as broker statistics. Batches come from the GUI drain timer (apply()); one batch
 /// gives one row-insert per parent and one dataChanged per parent, never a signal per message.
+/// The figures and budgets named here are the topic store's (topicData().store()).
 ///
 /// The tree is the Qt model of the kept topics (MqttTopics in core/mqtt: the topic store and the
 /// payload checks), which it owns and feeds: what is not rows (figures, history, types, budgets) is
@@ -89,38 +90,18 @@ public:
 
     explicit MqttTopicTree(QObject* parent = nullptr);
     void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
-    /// Every topic at or below a level (a topic itself, or all topics of a subtree).
-    QStringList topicsBelow(const QString& path, int limit = 1000) const;
-    /// Whether the broker may keep a retained message for the topic: one arrived retained, and
-    /// the last payload is not the empty one that deletes it.
-    bool mayHoldRetained(const QString& topic) const;
-    /// The topics at or below a level that may hold a retained message (see mayHoldRetained()).
-    QStringList retainedBelow(const QString& path, int limit = 100000) const
-    {
-        return m_topics.retainedBelow(path, limit);
-    }
     /// Whether a level has levels below it.
     bool hasChildren(const QString& path) const;
     ~MqttTopicTree() override;
 
     void setHistoryDepth(int messages) { m_topics.store().setHistoryDepth(messages); }
-    int historyDepth() const { return m_topics.store().historyDepth(); }
     /// The bytes the history of all topics may hold (payloads and kHistoryEntryOverhead each).
     void setHistoryBudget(qint64 bytes) { m_topics.store().setHistoryBudget(bytes); }
-    qint64 historyBudget() const { return m_topics.store().historyBudget(); }
-    qint64 historyBytes() const { return m_topics.store().historyBytes(); }
-    /// Payloads evicted from the history to keep it within historyBudget().
-    quint64 evictedPayloads() const { return m_topics.store().evictedPayloads(); }
     /// The topics the tree keeps at most (at least 1); a new topic past it is not added.
     void setTopicBudget(int topics) { m_topics.store().setTopicBudget(topics); }
-    int topicBudget() const { return m_topics.store().topicBudget(); }
     /// The bytes the levels may take (names and paths as UTF-16, kNodeOverhead each); a new topic
     /// whose levels do not fit is not added.
     void setStructureBudget(qint64 bytes) { m_topics.store().setStructureBudget(bytes); }
-    qint64 structureBudget() const { return m_topics.store().structureBudget(); }
-    qint64 structureBytes() const { return m_topics.store().structureBytes(); }
-    /// Messages on topics not added to keep within topicBudget() and structureBudget().
-    quint64 untrackedMessages() const { return m_topics.store().untrackedMessages(); }
     void apply(std::vector<MqttMessage>&& batch);
     /// Updates rates once a second, and says the figures that changed since the last time once a
     /// figures interval; `nowNs` is wall-clock time.
@@ -132,29 +113,12 @@ public:
     void setFiguresInterval(int ms) { m_figuresIntervalNs = qint64(ms) * 1'000'000; }
     void clear();
 
-    int topicCount() const { return m_topics.store().topicCount(); }
-    quint64 totalMessages() const { return m_topics.store().totalMessages(); }
-    quint64 malformedTypeAnnouncements() const { return m_topics.checks().malformedTypeAnnouncements(); }
-    quint64 malformedPayloads() const { return m_topics.checks().malformedPayloads(); }
-    /// Topics whose announced ROS 2 type has no definition in the ROS 2 registry (shown raw).
-    int unknownTypeTopics() const { return m_topics.checks().unknownTypeTopics(); }
     QModelIndex indexOf(const QString& topic, int column = 0) const;
-    std::optional<TopicInfo> info(const QString& topic) const { return m_topics.info(topic); }
-    /// The type mqtt_client announced for a data topic, whether or not a message came on it yet.
-    std::optional<RosMsgTypeInfo> announcedType(const QString& topic) const { return m_topics.announcedType(topic); }
-    QList<TopicInfo> topics() const { return m_topics.topics(); } ///< every topic, by name
-    const std::deque<HistoryEntry>* history(const QString& topic) const { return m_topics.history(topic); }
-    /// A registry able to decode the topic's payloads, when mqtt_client announced its type (for
-    /// ROS 2, the ROS 2 registry when it knows the type; else none, and TopicInfo::typeNote says so).
-    std::shared_ptr<const RosTypeRegistry> registryFor(const QString& topic) const
-    {
-        return m_topics.registryFor(topic);
-    }
     /// The ROS 2 definitions announced ROS 2 types decode with; until set, the bundled ones
     /// (Ros2Definitions::registry(), built once and shared by every tree).
     void setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry);
-    const QHash<QString, QString>& brokerStatistics() const { return m_topics.store().statistics(); }
-    /// The kept topics the rows show, for readers that need no model.
+    /// The kept topics the rows show: their figures, history, types and budgets (what the tree
+    /// keeps at most is set here).
     const MqttTopics& topicData() const { return m_topics; }
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;

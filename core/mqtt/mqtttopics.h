@@ -77,7 +77,7 @@ public:
     std::shared_ptr<const RosTypeRegistry> registryFor(const QString& topic) const;
     /// The topics at or below a level that may hold a retained message
     /// (MqttTopicStore::mayHoldRetained()).
-    QStringList retainedBelow(const QString& path, int limit) const;
+    QStringList retainedBelow(const QString& path, int limit = 100000) const;
 
     MqttTopicStore& store() { return m_store; }
     const MqttTopicStore& store() const { return m_store; }

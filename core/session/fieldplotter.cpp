@@ -178,9 +178,9 @@ FieldPlotter::Decoding FieldPlotter::decodingOf(PlotField::Source source, const 
     Decoding out;
     QString& type = out.how.type;
     if (source == PlotField::Source::Mqtt) {
-        const auto info = m_parts.mqttTopics->info(topic);
+        const auto info = m_parts.mqttTopics->topicData().info(topic);
         if (info && info->rosType) {
-            out.held = m_parts.mqttTopics->registryFor(topic);
+            out.held = m_parts.mqttTopics->topicData().registryFor(topic);
             out.registry = out.held.get();
             type = info->rosType->name;
             out.how.announced = info->rosType;

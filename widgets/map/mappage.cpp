@@ -269,13 +269,13 @@ namespace {
 MappingFactory::MqttFacts factsOf(const MqttTopicTree* tree, const QString& topic)
 {
     MappingFactory::MqttFacts f;
-    const auto info = tree->info(topic);
+    const auto info = tree->topicData().info(topic);
     if (!info)
         return f;
     f.seen = true;
     if (info->rosType)
         f.announcedType = info->rosType->name;
-    if (const auto* h = tree->history(topic); h && !h->empty())
+    if (const auto* h = tree->topicData().history(topic); h && !h->empty())
         f.lastPayload = h->back().payload;
     return f;
 }
@@ -330,7 +330,7 @@ QList<quint64> MapPage::bridgeRosTopics(const QList<TopicMime::Topic>& topics, c
     const MqttTopicTree* tree = m_parts.mqttTopics;
     // One ROS topic on an MQTT topic without levels below it: exactly that topic. Otherwise the
     // target is a level the new topics go under; no target: the prefix.
-    const bool exact = topics.size() == 1 && !mqttTarget.isEmpty() && tree->info(mqttTarget)
+    const bool exact = topics.size() == 1 && !mqttTarget.isEmpty() && tree->topicData().info(mqttTarget)
         && !tree->hasChildren(mqttTarget);
     const QString prefix = mqttTarget.isEmpty() ? m_prefix->text().trimmed() : mqttTarget;
     Plan p;
@@ -424,7 +424,7 @@ void MapPage::bridgeSelectedMqtt()
         const QString path = i.data(MqttTopicTree::FullTopicRole).toString();
         const QStringList below = i.data(MqttTopicTree::IsTopicRole).toBool()
             ? QStringList {path}
-            : m_parts.mqttTopics->topicsBelow(path);
+            : m_parts.mqttTopics->topicData().store().topicsBelow(path, 1000);
         for (const QString& t : below) {
             if (!seen.contains(t)) {
                 seen.insert(t);
