@@ -5,7 +5,7 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "base/wallclock.h"
-#include "base/yamlreader.h"
+#include "yaml/yamlreader.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
 #include "models/mqtttopictree.h"

@@ -3,7 +3,7 @@
 
 #include "app/cli/clioutput.h"
 #include "app/gui/mainwindow.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "models/latencystatsmodel.h"
 #include "latency/seriesid.h"
 #include "mqtt/mqttprofile.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
 
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 #include "config/configdocument.h"
 #include "config/problemmodel.h"
 #include "mqtt/mqttconnection.h"

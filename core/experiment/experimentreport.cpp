@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentreport.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "experiment/experimentfolder.h"
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"

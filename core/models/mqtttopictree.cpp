@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqtttopictree.h"
 
-#include "base/topicmime.h"
+#include "text/topicmime.h"
 #include "wire/rosmessage.h"
 
 #include <algorithm>

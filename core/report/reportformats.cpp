@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reportformats.h"
 
-#include "base/nameelider.h"
+#include "text/nameelider.h"
 #include "latency/latencyreport.h"
 #include "models/latencystatsmodel.h"
 #include "latency/palette.h"

@@ -2,7 +2,7 @@
 #include "livesession.h"
 
 #include "base/logging.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "base/wallclock.h"
 #include "models/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"

@@ -6,7 +6,7 @@
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
 #include "app/gui/mainwindow.h"
-#include "base/niceticks.h"
+#include "text/niceticks.h"
 #include "demo/demolab.h"
 #include "namecheck.h"
 #include "record/runfile.h"

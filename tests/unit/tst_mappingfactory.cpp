@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Names and options proposed for new mappings, and health from synthetic discovery data.
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 #include "config/mappingfactory.h"
 #include "mqtt/mqttsource.h"
 #include "models/mqtttopictree.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "publishdialog.h"
 
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 #include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
 #include "models/mqtttopictree.h"

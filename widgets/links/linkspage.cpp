@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "linkspage.h"
 
-#include "base/yamlreader.h"
+#include "yaml/yamlreader.h"
 #include "config/configreader.h"
 #include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
