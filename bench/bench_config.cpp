@@ -4,7 +4,7 @@
 //
 //   scripts/bench.sh bench_config
 #include "app/gui/mainwindow.h"
-#include "base/yamllimits.h"
+#include "yaml/yamllimits.h"
 #include "benchutil.h"
 #include "config/configdocument.h"
 #include "config/configreader.h"

@@ -7,7 +7,7 @@
 //   scripts/bench.sh bench_discovery        (BENCH_SECONDS, BENCH_RATE, BENCH_TOPICS override)
 #include "app/gui/mainwindow.h"
 #include "benchutil.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "viewhelpers.h"
@@ -79,7 +79,7 @@ int main(int argc, char** argv)
     subLines += quint64(sub.readAllStandardOutput().count('\n'));
     window.session()->drainNow();
     const quint64 ours = window.session()->mqtt()->received();
-    const quint64 processed = window.session()->mqttTopics()->totalMessages();
+    const quint64 processed = window.session()->mqttTopics()->topicData().store().totalMessages();
     const qint64 rssAfter = Bench::statusKb("VmRSS:");
     const qint64 rssPeak = Bench::statusKb("VmHWM:");
 
@@ -91,7 +91,7 @@ int main(int argc, char** argv)
                    100.0 * double(ours) / double(std::max<quint64>(1, subLines)), 0, 'f', 1));
     Bench::row(u"  of those in the topic tree"_s, double(processed),
                u"dropped in the buffer: %1"_s.arg(window.session()->mqtt()->dropped()));
-    Bench::row(u"topics in the tree"_s, window.session()->mqttTopics()->topicCount());
+    Bench::row(u"topics in the tree"_s, window.session()->mqttTopics()->topicData().store().topicCount());
     Bench::row(u"GUI event loop lag p50 (ms)"_s, Bench::percentile(lags, 0.5));
     Bench::row(u"GUI event loop lag p99 (ms)"_s, Bench::percentile(lags, 0.99), u"goal < 50 ms"_s);
     Bench::row(u"GUI event loop lag max (ms)"_s,
@@ -124,7 +124,7 @@ int main(int argc, char** argv)
         }
     }
     Bench::row(u"filter keystroke to repainted view, median (ms)"_s, Bench::percentile(keys, 0.5),
-               u"%1 topics"_s.arg(window.session()->mqttTopics()->topicCount()));
+               u"%1 topics"_s.arg(window.session()->mqttTopics()->topicData().store().topicCount()));
     Bench::row(u"filter keystroke to repainted view, p90 (ms)"_s, Bench::percentile(keys, 0.9));
     return 0;
 }

@@ -15,7 +15,7 @@
 #include "benchutil.h"
 #include "session/livesession.h"
 #include "testservers.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"

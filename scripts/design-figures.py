@@ -155,7 +155,7 @@ def parallel_apis(root):
         if re.search(r'#include\s+"(ros|ros2)/', read(p)):
             includes.add(os.path.relpath(p, root))
     models = []
-    for p in files(root, ("core/mqtt", "core/ros", "core/ros2", "core/watch", "core/latency"), (".h",)):
+    for p in files(root, ("core/mqtt", "core/ros", "core/ros2", "core/dds", "core/watch", "core/latency"), (".h",)):
         for m in re.finditer(r"class\s+(\w+)\s*(?:final\s*)?:\s*public\s+QAbstract\w*Model", read(p)):
             models.append(m.group(1))
     return pure, stats, samples, parallel, sorted(includes), sorted(models)

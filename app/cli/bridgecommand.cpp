@@ -3,8 +3,8 @@
 
 #include "app/cli/clioutput.h"
 #include "base/logging.h"
-#include "base/yamllimits.h"
-#include "base/regularfile.h"
+#include "yaml/yamllimits.h"
+#include "files/regularfile.h"
 #include "app/cli/rosoptions.h"
 #include "bridge/referencebridge.h"
 #include "bridge/ros2bridge.h"

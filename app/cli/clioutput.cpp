@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "clioutput.h"
 
-#include "base/editdistance.h"
-#include "base/regularfile.h"
-#include "base/secrets.h"
+#include "text/editdistance.h"
+#include "files/regularfile.h"
+#include "yaml/secrets.h"
 
 #include <cerrno>
 #include <csignal>

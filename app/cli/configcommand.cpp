@@ -2,9 +2,9 @@
 #include "configcommand.h"
 
 #include "app/cli/clioutput.h"
-#include "base/atomicfile.h"
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "files/atomicfile.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"

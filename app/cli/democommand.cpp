@@ -2,7 +2,7 @@
 #include "democommand.h"
 
 #include "app/cli/clioutput.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "demo/demolab.h"
 #include "record/runrecorder.h"
 #include "report/report.h"

@@ -5,7 +5,7 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "mqtt/mqttconnection.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros2/ros2participant.h"
 
@@ -145,7 +145,7 @@ public:
         if (!everConnected)
             mqtt.insert(u"error"_s, connection.stateDetail());
         QJsonArray topics;
-        for (const MqttTopicTree::TopicInfo& t : tree.topics()) {
+        for (const MqttTopicTree::TopicInfo& t : tree.topicData().topics()) {
             QJsonObject o;
             o.insert(u"name"_s, t.topic);
             o.insert(u"messages"_s, qint64(t.messages));
@@ -159,11 +159,11 @@ public:
         }
         mqtt.insert(u"topics"_s, topics);
         // Nothing silent: past the tree's budgets the list is not all there was (issue 41).
-        mqtt.insert(u"complete"_s, tree.untrackedMessages() == 0);
-        if (const quint64 untracked = tree.untrackedMessages()) {
+        mqtt.insert(u"complete"_s, tree.topicData().store().untrackedMessages() == 0);
+        if (const quint64 untracked = tree.topicData().store().untrackedMessages()) {
             mqtt.insert(u"untracked_messages"_s, qint64(untracked));
-            mqtt.insert(u"topic_budget"_s, tree.topicBudget());
-            mqtt.insert(u"names_budget_bytes"_s, tree.structureBudget());
+            mqtt.insert(u"topic_budget"_s, tree.topicData().store().topicBudget());
+            mqtt.insert(u"names_budget_bytes"_s, tree.topicData().store().structureBudget());
         }
         return mqtt;
     }
@@ -184,7 +184,7 @@ public:
         out(tr("MQTT broker %1: %2")
                 .arg(connection.profile().url,
                      connected ? tr("connected") : tr("not connected (%1)").arg(connection.stateDetail())));
-        const QList<MqttTopicTree::TopicInfo> topics = tree.topics();
+        const QList<MqttTopicTree::TopicInfo> topics = tree.topicData().topics();
         for (const MqttTopicTree::TopicInfo& t : topics) {
             out(u"  %1  %2 msg  %3 B%4%5"_s.arg(t.topic)
                     .arg(t.messages)
@@ -199,14 +199,14 @@ public:
     /// What the topic tree did not keep, empty when it kept every topic.
     static QString untrackedLine(const MqttTopicTree& tree, qsizetype listed)
     {
-        const quint64 untracked = tree.untrackedMessages();
+        const quint64 untracked = tree.topicData().store().untrackedMessages();
         if (untracked == 0)
             return {};
         return tr("not complete: %1 messages on topics not kept (budget %2 topics, %3 MiB of names); %4 "
                   "topics listed")
             .arg(untracked)
-            .arg(tree.topicBudget())
-            .arg(tree.structureBudget() / (1024 * 1024))
+            .arg(tree.topicData().store().topicBudget())
+            .arg(tree.topicData().store().structureBudget() / (1024 * 1024))
             .arg(listed);
     }
 };

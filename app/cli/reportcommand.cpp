@@ -2,7 +2,7 @@
 #include "reportcommand.h"
 
 #include "app/cli/clioutput.h"
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "experiment/experimentreport.h"
 #include "latency/latencywarnings.h"
 #include "report/report.h"

@@ -2,7 +2,7 @@
 #include "sourcecheck.h"
 
 #include "app/cli/clioutput.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "ros/rosgraphpoller.h"
 #include "ros2/ros2participant.h"
 #include "session/livesession.h"

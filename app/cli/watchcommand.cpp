@@ -5,10 +5,10 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "base/wallclock.h"
-#include "base/yamlreader.h"
+#include "yaml/yamlreader.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
@@ -372,15 +372,15 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
                        .arg(tally.levels[2]);
     if (tally.unknown > 0)
         line += Watch::tr(", %1 unknown (the watch's own connection is down)").arg(tally.unknown);
-    if (const quint64 evicted = topics->evictedPayloads())
+    if (const quint64 evicted = topics->topicData().store().evictedPayloads())
         line += Watch::tr("; %1 payloads evicted from the topic history (budget %2 MiB)")
                     .arg(evicted)
-                    .arg(topics->historyBudget() / (1024 * 1024));
-    if (const quint64 untracked = topics->untrackedMessages())
+                    .arg(topics->topicData().store().historyBudget() / (1024 * 1024));
+    if (const quint64 untracked = topics->topicData().store().untrackedMessages())
         line += Watch::tr("; %1 messages on topics not tracked (budget %2 topics, %3 MiB of names)")
                     .arg(untracked)
-                    .arg(topics->topicBudget())
-                    .arg(topics->structureBudget() / (1024 * 1024));
+                    .arg(topics->topicData().store().topicBudget())
+                    .arg(topics->topicData().store().structureBudget() / (1024 * 1024));
     if (const int unwatched = watch.unwatchedLinks())
         line += Watch::tr("; %1 announced links not watched (cap %2)")
                     .arg(unwatched)

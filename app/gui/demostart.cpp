@@ -3,8 +3,8 @@
 
 #include "app/cli/clioutput.h"
 #include "app/gui/mainwindow.h"
-#include "base/secrets.h"
-#include "latency/latencystatsmodel.h"
+#include "yaml/secrets.h"
+#include "models/latencystatsmodel.h"
 #include "latency/seriesid.h"
 #include "mqtt/mqttprofile.h"
 #include "session/measuresession.h"

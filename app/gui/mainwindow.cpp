@@ -2,8 +2,8 @@
 #include "mainwindow.h"
 
 #include "app/gui/pageparts.h"
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 #include "config/configdocument.h"
 #include "config/problemmodel.h"
 #include "mqtt/mqttconnection.h"

@@ -3,7 +3,7 @@
 // files through MainWindow::openPaths, which opens each where it belongs.
 #include "app/gui/mainwindow.h"
 #include "base/logging.h"
-#include "base/regularfile.h"
+#include "files/regularfile.h"
 #include "experiment/experimentreport.h"
 #include "report/runloader.h"
 #include "widgets/common/droppedfiles.h"

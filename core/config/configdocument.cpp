@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "configdocument.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "base/logging.h"
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"
 #include "config/configwriter.h"

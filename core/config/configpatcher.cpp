@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "configpatcher.h"
 
-#include "base/yamllimits.h"
-#include "base/yamltree.h"
+#include "yaml/yamllimits.h"
+#include "yaml/yamltree.h"
 #include "config/configreader.h"
 #include "config/configwriter.h"
 

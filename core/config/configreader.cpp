@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "configreader.h"
 
-#include "base/exactutf8.h"
-#include "base/yamllimits.h"
-#include "base/yamlreader.h"
-#include "base/yamltree.h"
+#include "text/exactutf8.h"
+#include "yaml/yamllimits.h"
+#include "yaml/yamlreader.h"
+#include "yaml/yamltree.h"
 
 #include <yaml-cpp/yaml.h>
 

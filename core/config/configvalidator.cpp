@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "configvalidator.h"
 
-#include "base/editdistance.h"
-#include "base/topicnames.h"
-#include "base/yamltree.h"
+#include "text/editdistance.h"
+#include "text/topicnames.h"
+#include "yaml/yamltree.h"
 
 #include <QDir>
 #include <QFileInfo>

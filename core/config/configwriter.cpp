@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "configwriter.h"
 
-#include "base/yamltree.h"
+#include "yaml/yamltree.h"
 #include "config/configreader.h"
 
 using namespace Qt::StringLiterals;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mappingmodel.h"
 
-#include "base/topicmime.h"
-#include "base/yamltree.h"
+#include "text/topicmime.h"
+#include "yaml/yamltree.h"
 #include "config/configdocument.h"
 
 #include <QMimeData>

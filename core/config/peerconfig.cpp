@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "peerconfig.h"
 
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 
 using namespace Qt::StringLiterals;
 

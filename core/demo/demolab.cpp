@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "demolab.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "base/logging.h"
 #include "base/loopbackports.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "config/bridgeconfig.h"
 #include "config/configwriter.h"
 #include "latency/pipeline.h"

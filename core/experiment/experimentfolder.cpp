@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentfolder.h"
 
-#include "base/regularfile.h"
+#include "files/regularfile.h"
 #include "experiment/experimentplan.h"
 #include "experiment/throughputresult.h"
 

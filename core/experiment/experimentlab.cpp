@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentlab.h"
 
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "experiment/linkrelay.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "experimentplan.h"
 
-#include "base/secrets.h"
-#include "base/yamlreader.h"
-#include "base/yamltree.h"
+#include "yaml/secrets.h"
+#include "yaml/yamlreader.h"
+#include "yaml/yamltree.h"
 
 #include <algorithm>
 #include <cmath>

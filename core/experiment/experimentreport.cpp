@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "experimentreport.h"
 
-#include "base/atomicfile.h"
 #include "experiment/experimentfindings.h"
+#include "files/atomicfile.h"
 #include "experiment/experimentfolder.h"
 #include "latency/latencyengine.h"
 #include "latency/latencyseries.h"

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "experimentrunner.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "base/logging.h"
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 #include "experiment/experimentlab.h"
 #include "experiment/linkrelay.h"
 #include "latency/latencyengine.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "throughputstep.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "base/logging.h"
 #include "experiment/experimentfolder.h"
 #include "experiment/experimentlab.h"

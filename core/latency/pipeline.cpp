@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline.h"
 
-#include "base/atomicfile.h"
-#include "base/yamlreader.h"
-#include "base/yamltree.h"
+#include "files/atomicfile.h"
+#include "yaml/yamlreader.h"
+#include "yaml/yamltree.h"
 
 #include <QFile>
 #include <yaml-cpp/yaml.h>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "mqttconnection.h"
 
-#include "base/exactutf8.h"
+#include "text/exactutf8.h"
 #include "base/logging.h"
-#include "base/regularfile.h"
-#include "base/secrets.h"
+#include "files/regularfile.h"
+#include "yaml/secrets.h"
 #include "base/wallclock.h"
 #include "mqtt/pahooptions.h"
 

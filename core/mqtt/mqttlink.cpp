@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttlink.h"
 
-#include "base/exactutf8.h"
+#include "text/exactutf8.h"
 #include "base/wallclock.h"
 #include "mqtt/pahooptions.h"
 

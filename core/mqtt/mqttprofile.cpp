@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mqttprofile.h"
 
-#include "base/secrets.h"
-#include "base/topicnames.h"
+#include "yaml/secrets.h"
+#include "text/topicnames.h"
 
 #include <QSettings>
 #include <QUrl>

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "mqttsource.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "mqtt/mqtttopics.h"
 
 #include <algorithm>
 
-MqttSource::MqttSource(const MqttTopicTree* tree)
-    : m_tree(tree)
+MqttSource::MqttSource(const MqttTopics* topics)
+    : m_topics(topics)
 { }
 
 MqttSource::~MqttSource() = default;
@@ -23,7 +23,7 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
         if (m_taps.tapped(m.topic)) {
             auto type = types.find(m.topic);
             if (type == types.end()) {
-                const auto announced = m_tree->announcedType(m.topic);
+                const auto announced = m_topics->announcedType(m.topic);
                 type = types.insert(m.topic, announced ? announced->name : QString());
             }
             m_taps.deliver(SourceArrival {SourceGraph::Mqtt, m.topic, *type, m.receivedNs, m.payload});
@@ -53,7 +53,7 @@ QHash<QString, TopicFigures> MqttSource::figures(qint64 nowNs) const
     Q_UNUSED(nowNs) // the tree's rates are those of its last tick, on the same drain
     QHash<QString, TopicFigures> out;
     for (auto it = m_monitored.cbegin(); it != m_monitored.cend(); ++it) {
-        const auto info = m_tree->info(it.key());
+        const auto info = m_topics->info(it.key());
         if (!info)
             continue; // never seen on the broker
         TopicFigures f;

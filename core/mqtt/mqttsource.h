@@ -10,7 +10,7 @@
 #include <QHash>
 #include <vector>
 
-class MqttTopicTree;
+class MqttTopics;
 
 /// The broker's topics as a MessageSource, for the views that take any graph (field plots, Watch,
 /// Map health): what RosMonitor is to ROS 1 and Ros2Participant to ROS 2.
@@ -24,7 +24,7 @@ class MqttTopicTree;
 class MqttSource : public MessageSource
 {
 public:
-    explicit MqttSource(const MqttTopicTree* tree);
+    explicit MqttSource(const MqttTopics* topics);
     ~MqttSource() override;
 
     /// One drain's messages, oldest first.
@@ -41,7 +41,7 @@ public:
     std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
 
 private:
-    const MqttTopicTree* m_tree;
+    const MqttTopics* m_topics;
     QHash<QString, int> m_monitored; ///< topic → monitor() calls not yet balanced
     HeadHub m_heads;
     TapHub m_taps;

@@ -69,7 +69,7 @@ struct MqttTopicNode
 /// The broker's topics as a tree of levels with their figures, within bounds: at most topicBudget()
 /// topics (and $SYS statistics, kept apart), structureBudget() bytes of levels, and a payload
 /// history of historyDepth() per topic, 16 MiB per topic and historyBudget() over all topics (past
-/// it the oldest payloads of any topic go first). No Qt model: MqttTopicTree shows it.
+/// it the oldest payloads of any topic go first). No Qt model: MqttTopicTree (core/models) shows it.
 class MqttTopicStore
 {
 public:
@@ -90,12 +90,14 @@ public:
     void setHistoryBudget(qint64 bytes) { m_historyBudget = std::max<qint64>(0, bytes); }
     qint64 historyBudget() const { return m_historyBudget; }
     qint64 historyBytes() const { return m_historyBytes; }
+    /// Payloads evicted from the history to keep it within historyBudget().
     quint64 evictedPayloads() const { return m_evictedPayloads; }
     void setTopicBudget(int topics) { m_topicBudget = std::max(1, topics); }
     int topicBudget() const { return m_topicBudget; }
     void setStructureBudget(qint64 bytes) { m_structureBudget = std::max<qint64>(0, bytes); }
     qint64 structureBudget() const { return m_structureBudget; }
     qint64 structureBytes() const { return m_structureBytes; }
+    /// Messages on topics not added to keep within topicBudget() and structureBudget().
     quint64 untrackedMessages() const { return m_untrackedMessages; }
     quint64 totalMessages() const { return m_totalMessages; }
     void clear();
@@ -119,7 +121,10 @@ public:
     QStringList topicNames() const { return m_byTopic.keys(); }
     /// The level at a path ("" the root), or null.
     const Node* nodeAt(const QString& path) const;
+    /// Every topic at or below a level (a topic itself, or all topics of a subtree).
     QStringList topicsBelow(const QString& path, int limit) const;
+    /// Whether the broker may keep a retained message for the topic: one arrived retained, and
+    /// the last payload is not the empty one that deletes it.
     bool mayHoldRetained(const QString& topic) const;
 
 private:

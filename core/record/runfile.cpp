@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "runfile.h"
 
-#include "base/atomicfile.h"
-#include "base/secrets.h"
+#include "files/atomicfile.h"
+#include "yaml/secrets.h"
 #include "latency/latencyengine.h"
 #include "record/runfilesql.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Reading a run file: its schema checked, its rows taken within the read's budgets.
-#include "base/regularfile.h"
-#include "base/secrets.h"
+#include "files/regularfile.h"
+#include "yaml/secrets.h"
 #include "latency/pipeline.h"
 #include "record/readbudgets.h"
 #include "record/runfile.h"

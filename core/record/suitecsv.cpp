@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "suitecsv.h"
 
-#include "base/regularfile.h"
+#include "files/regularfile.h"
 #include "record/readbudgets.h"
 #include "wire/stampcodec.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ecdfsvg.h"
 
-#include "base/niceticks.h"
+#include "text/niceticks.h"
 #include "latency/ecdf.h"
 #include "latency/latencyseries.h"
 

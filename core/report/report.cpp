@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "report.h"
 
-#include "base/nameelider.h"
+#include "text/nameelider.h"
 #include "latency/seriesid.h"
 #include "report/runloader.h"
 

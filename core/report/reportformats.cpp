@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "reportformats.h"
 
-#include "base/nameelider.h"
+#include "text/nameelider.h"
 #include "latency/latencyreport.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/palette.h"
 #include "record/suitecsv.h"
 #include "report/ecdfsvg.h"

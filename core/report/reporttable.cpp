@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reporttable.h"
 
-#include "base/nameelider.h"
+#include "text/nameelider.h"
 
 using namespace Qt::StringLiterals;
 

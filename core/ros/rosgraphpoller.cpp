@@ -2,7 +2,7 @@
 #include "rosgraphpoller.h"
 
 #include "base/logging.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 
 #include <QTimer>
 

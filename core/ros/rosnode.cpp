@@ -2,7 +2,7 @@
 #include "rosnode.h"
 
 #include "base/logging.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "ros/rosreregistration.h"
 
 #include <atomic>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ros2/ddschildsupervisor.h"
 
-#include "base/helperprogram.h"
+#include "files/helperprogram.h"
 #include "base/logging.h"
 
 #include <QCoreApplication>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ros2/ros2names.h"
 
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 
 #include <algorithm>
 #include <QCoreApplication>

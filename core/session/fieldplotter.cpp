@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fieldplotter.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
 #include "topics/topictablemodel.h"
@@ -171,9 +171,9 @@ FieldPlotter::Decoding FieldPlotter::decodingOf(PlotField::Source source, const 
     Decoding out;
     QString& type = out.how.type;
     if (source == PlotField::Source::Mqtt) {
-        const auto info = m_parts.mqttTopics->info(topic);
+        const auto info = m_parts.mqttTopics->topicData().info(topic);
         if (info && info->rosType) {
-            out.held = m_parts.mqttTopics->registryFor(topic);
+            out.held = m_parts.mqttTopics->topicData().registryFor(topic);
             out.registry = out.held.get();
             type = info->rosType->name;
             out.how.announced = info->rosType;

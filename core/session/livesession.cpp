@@ -2,9 +2,9 @@
 #include "livesession.h"
 
 #include "base/logging.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "base/wallclock.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "session/graphstatus.h"
@@ -24,7 +24,7 @@ LiveSession::LiveSession(QObject* parent)
     , m_ros2(new Ros2Participant(this))
     , m_graphStatus(new GraphStatus(m_poller, m_ros2, this))
     , m_ros2Topics(new TopicTableModel(this))
-    , m_mqttSource(std::make_unique<MqttSource>(m_tree))
+    , m_mqttSource(std::make_unique<MqttSource>(&m_tree->topicData()))
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
     m_tree->setRos2Registry(m_ros2Types); // mqtt_client's ROS 2 payloads decode as ROS 2 samples do

@@ -2,7 +2,7 @@
 #include "measuresession.h"
 
 #include "base/logging.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "mqtt/mqttconnection.h"
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "topictablemodel.h"
 
-#include "base/topicmime.h"
+#include "text/topicmime.h"
 
 #include <algorithm>
 #include <QLocale>

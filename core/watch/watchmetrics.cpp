@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "watchmetrics.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "watch/linkmonitor.h"
 #include "watch/metricsserver.h"
 
@@ -65,9 +65,9 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
 {
     auto snapshot = std::make_shared<MetricsSnapshot>();
     if (topics) {
-        snapshot->historyEvicted = topics->evictedPayloads();
-        snapshot->historyBytes = topics->historyBytes();
-        snapshot->untrackedTopicMessages = topics->untrackedMessages();
+        snapshot->historyEvicted = topics->topicData().store().evictedPayloads();
+        snapshot->historyBytes = topics->topicData().store().historyBytes();
+        snapshot->untrackedTopicMessages = topics->topicData().store().untrackedMessages();
     }
     snapshot->unwatchedLinks = unwatchedLinks;
     snapshot->droppedAnnouncements = monitor.reader().announcedTypes().dropped();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "watchrules.h"
 
-#include "base/yamlreader.h"
+#include "yaml/yamlreader.h"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "bagheader.h"
 
-#include "base/regularfile.h"
+#include "files/regularfile.h"
 
 #include <QFile>
 #include <QFileInfo>

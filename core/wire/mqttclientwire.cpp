@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqttclientwire.h"
 
-#include "base/exactutf8.h"
+#include "text/exactutf8.h"
 
 #include <QtEndian>
 

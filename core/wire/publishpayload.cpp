@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "publishpayload.h"
 
-#include "base/yamlvariant.h"
+#include "yaml/yamlvariant.h"
 #include "wire/rosmessage.h"
 #include "wire/rosmessageencoder.h"
 

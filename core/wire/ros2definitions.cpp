@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "wire/ros2definitions.h"
 
-#include "base/regularfile.h"
+#include "files/regularfile.h"
 
 #include <QDirIterator>
 #include <QFile>

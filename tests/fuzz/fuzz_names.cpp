@@ -5,7 +5,7 @@
 // the MQTT 3.1.1 spec (4.7) and the ROS 1 graph name rules: a valid published topic is also a
 // valid filter, has no wildcard and matches itself, and "#" and a "+" per level match it unless it
 // starts with '$'; a ROS 2 (strict) name is a ROS 1 name; a rejected name says why.
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 #include "fuzzcheck.h"
 
 #include <QStringList>

@@ -7,8 +7,8 @@
 // Properties: a text that parses comes out as YAML whose every secret key holds "<redacted>", an
 // empty value or a launch argument, aliases resolved; a text that does not parse comes out as the
 // one comment that says so; redacting again changes nothing.
-#include "base/secrets.h"
-#include "base/yamllimits.h"
+#include "yaml/secrets.h"
+#include "yaml/yamllimits.h"
 #include "fuzzcheck.h"
 
 #include <yaml-cpp/yaml.h>

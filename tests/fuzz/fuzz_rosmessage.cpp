@@ -9,7 +9,7 @@
 // back (RosMessageEncoder) to bytes with the same values. The same definition and bytes go
 // through the ROS 2 dialect and the CDR decoder too (a ROS 2 publisher is as hostile), and what
 // decodes comes back through the CDR encoder to the same values.
-#include "base/yamlvariant.h"
+#include "yaml/yamlvariant.h"
 #include "fuzzcheck.h"
 #include "wire/rosmessage.h"
 #include "wire/rosmessageencoder.h"

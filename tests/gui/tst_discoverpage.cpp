@@ -3,8 +3,8 @@
 // with what mqtt_client sends (for ROS 1 and ROS 2), JSON and a 2 MB binary payload.
 #include "app/gui/mainwindow.h"
 #include "fixtures.h"
-#include "mqtt/mqtttopicfilter.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopicfilter.h"
+#include "models/mqtttopictree.h"
 #include "mqttclientros2.h"
 #include "session/livesession.h"
 #include "testservers.h"
@@ -286,7 +286,8 @@ private slots:
         QVERIFY(named<QPlainTextEdit>(*detail, u"payload"_s)
                     ->toPlainText()
                     .startsWith(u"00000000  00 83 06 89"_s));
-        QCOMPARE(w.session()->mqttTopics()->history(u"lidar/raw"_s)->back().payload.size(), 2 * 1024 * 1024);
+        QCOMPARE(w.session()->mqttTopics()->topicData().history(u"lidar/raw"_s)->back().payload.size(),
+                 2 * 1024 * 1024);
     }
 
     // Issue 11: credentials typed into the URL (and a name copied from it) leave the URL and

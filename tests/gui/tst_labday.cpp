@@ -17,7 +17,7 @@
 #include "testservers.h"
 #include "viewaudit.h"
 #include "viewhelpers.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"

@@ -6,7 +6,7 @@
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
 #include "app/gui/mainwindow.h"
-#include "base/niceticks.h"
+#include "text/niceticks.h"
 #include "demo/demolab.h"
 #include "namecheck.h"
 #include "record/runfile.h"
@@ -16,7 +16,7 @@
 #include "signalprocess.h"
 #include "testservers.h"
 #include "viewhelpers.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"

@@ -8,7 +8,7 @@
 #include "config/mappinghealth.h"
 #include "config/mappingmodel.h"
 #include "fixtures.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "topics/topictablemodel.h"

@@ -7,7 +7,7 @@
 #include "guisession.h"
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/latencytimeline.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttprofile.h"

@@ -3,10 +3,10 @@
 // Table I with derived rows, ECDFs, pause and reset, and editing the pipeline by keyboard and drag.
 #include "app/gui/mainwindow.h"
 #include "fixtures.h"
-#include "latency/latencystatsmodel.h"
-#include "latency/pipelinemodel.h"
-#include "latency/stamptopicmodel.h"
+#include "models/latencystatsmodel.h"
 #include "resulttext.h"
+#include "widgets/measure/pipelinemodel.h"
+#include "widgets/measure/stamptopicmodel.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"

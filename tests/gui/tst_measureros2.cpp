@@ -4,7 +4,7 @@
 // that domain, shows at 1280x800 the count, median and p99 of every stage and of the total as
 // numpy computes them from the stamps the node printed.
 #include "app/gui/mainwindow.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/pipeline.h"
 #include "ros2peer.h"
 #include "ros2stampchain.h"

@@ -14,7 +14,7 @@
 #include "stampbag.h"
 #include "syntheticrun.h"
 #include "viewhelpers.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/experiment/experimentpage.h"
 #include "widgets/links/linkspage.h"

@@ -5,7 +5,7 @@
 // on Cyclone DDS, tests/ros2peer).
 #include "app/gui/pageparts.h"
 #include "fixtures.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "resulttext.h"
 #include "ros/rosmonitor.h"
 #include "ros2peer.h"
@@ -265,7 +265,7 @@ private slots:
         named<QComboBox>(*dialog, u"publishQos"_s)->setCurrentIndex(2);
         named<QCheckBox>(*dialog, u"publishRetained"_s)->setChecked(true);
         QVERIFY(dialog->publish());
-        QTRY_VERIFY_WITH_TIMEOUT(session.mqttTopics()->info(u"test/json"_s).has_value(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(session.mqttTopics()->topicData().info(u"test/json"_s).has_value(), 10000);
         r = receiveOne(u"test/json"_s, 5);
         QVERIFY(r.got);
         QCOMPARE(r.payload, QByteArray("{\"a\": [1, 2.5, \"x\"]}"));
@@ -281,7 +281,7 @@ private slots:
         QVERIFY(!r.got);
         QVERIFY2(named<QLabel>(*dialog, u"publishStatus"_s)->text().contains(u"Not sent: not JSON"_s),
                  qPrintable(named<QLabel>(*dialog, u"publishStatus"_s)->text()));
-        QVERIFY(!session.mqttTopics()->info(u"test/bad"_s));
+        QVERIFY(!session.mqttTopics()->topicData().info(u"test/bad"_s));
     }
 
     void publishesRosMessagesAsMqttClientDoes()
@@ -290,7 +290,7 @@ private slots:
         LiveSession& session = p.session;
         DiscoverPage& page = p.page;
         select(page, u"vehicle/pose"_s);
-        QTRY_VERIFY(session.mqttTopics()->registryFor(u"vehicle/pose"_s));
+        QTRY_VERIFY(session.mqttTopics()->topicData().registryFor(u"vehicle/pose"_s));
         named<QAction>(page, u"publishAction"_s)->trigger();
         auto* dialog = page.findChild<PublishDialog*>();
         QVERIFY(dialog);
@@ -387,7 +387,7 @@ private slots:
         }
         Page p(m_servers.brokerUrl());
         select(p.page, u"robot2/pose"_s);
-        QTRY_VERIFY(p.session.mqttTopics()->registryFor(u"robot2/pose"_s));
+        QTRY_VERIFY(p.session.mqttTopics()->topicData().registryFor(u"robot2/pose"_s));
         named<QAction>(p.page, u"publishAction"_s)->trigger();
         auto* dialog = p.page.findChild<PublishDialog*>();
         QVERIFY(dialog);
@@ -450,7 +450,8 @@ private slots:
         question.clear();
         QTest::keyClick(page.mqttView(), Qt::Key_Delete);
         QTRY_VERIFY(question.contains(u"retained message of keep/a"_s));
-        QTRY_VERIFY_WITH_TIMEOUT(!session.mqttTopics()->mayHoldRetained(u"keep/a"_s), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!session.mqttTopics()->topicData().store().mayHoldRetained(u"keep/a"_s),
+                                 10000);
         QVERIFY(!receiveOne(u"keep/a"_s, 2).got);
 
         // A level: both topics under it, counted in the question.

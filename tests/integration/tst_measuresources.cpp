@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Stamps from a real rosmaster (a roscpp node publishing TimeStamped and Float64) and a real
 // mosquitto (mqtt_client's wire format, stamped, and JSON stamps) end up as exact statistics.
-#include "latency/latencystatsmodel.h"
-#include "latency/stamptopicmodel.h"
+#include "models/latencystatsmodel.h"
+#include "widgets/measure/stamptopicmodel.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttstampdecoder.h"
 #include "session/liveparts.h"

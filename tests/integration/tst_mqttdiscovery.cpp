@@ -6,7 +6,7 @@
 #include "fixtures.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttlink.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "mqttclientros2.h"
 #include "resulttext.h"
 #include "testservers.h"
@@ -33,7 +33,7 @@ struct Discovery
     quint64 messages(const QString& topic)
     {
         drain();
-        const auto i = tree.info(topic);
+        const auto i = tree.topicData().info(topic);
         return i ? i->messages : 0;
     }
     bool connected() const { return connection.state() == MqttConnection::State::Connected; }
@@ -75,9 +75,9 @@ private slots:
         Discovery d;
         d.open(MqttProfile::fromUrl(servers.brokerUrl()));
         QTRY_VERIFY_WITH_TIMEOUT(d.connected(), 10000);
-        QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.topicCount()), 3, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.topicData().store().topicCount()), 3, 10000);
         for (int i = 0; i < 3; ++i) {
-            const auto info = d.tree.info(u"site/retained/%1"_s.arg(i));
+            const auto info = d.tree.topicData().info(u"site/retained/%1"_s.arg(i));
             QCOMPARE(info->messages, 1u);
             QVERIFY(info->retained);
         }
@@ -90,10 +90,10 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"site/live"_s), 250u, 10000);
         QTest::qWait(200); // nothing more arrives
         QCOMPARE(d.messages(u"site/live"_s), 250u);
-        QVERIFY(!d.tree.info(u"site/live"_s)->retained);
+        QVERIFY(!d.tree.topicData().info(u"site/live"_s)->retained);
         QCOMPARE(d.connection.received(), 253u);
         QCOMPARE(d.connection.dropped(), 0u);
-        QCOMPARE(d.tree.history(u"site/live"_s)->back().payload, QByteArray("sample 249"));
+        QCOMPARE(d.tree.topicData().history(u"site/live"_s)->back().payload, QByteArray("sample 249"));
 
         // A topic that begins with a byte-order mark is another topic than the one without it.
         run(u"mosquitto_pub"_s, pubArgs(servers) + QStringList {u"-t"_s, u"\ufeffsite/live"_s, u"-m"_s, u"bom"_s});
@@ -117,7 +117,7 @@ private slots:
                 + QStringList {u"-t"_s, u"cap/pose"_s, u"-f"_s,
                                Fixtures::path(u"mqtt_client/wire/pose.payload.bin"_s)});
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"cap/pose"_s), 1u, 10000);
-        const auto info = d.tree.info(u"cap/pose"_s);
+        const auto info = d.tree.topicData().info(u"cap/pose"_s);
         QVERIFY(info->rosType);
         QCOMPARE(info->rosType->name, u"geometry_msgs/PoseStamped"_s);
         QCOMPARE(info->malformedPayloads, 0u);
@@ -129,8 +129,9 @@ private slots:
         run(u"mosquitto_pub"_s,
             pubArgs(servers) + QStringList {u"-t"_s, u"cap/pose"_s, u"-m"_s, u"not a pose"_s});
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"cap/pose"_s), 2u, 10000);
-        QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.malformedTypeAnnouncements()), 1u, 10000);
-        QCOMPARE(d.tree.malformedPayloads(), 1u);
+        QTRY_COMPARE_WITH_TIMEOUT((d.drain(), d.tree.topicData().checks().malformedTypeAnnouncements()), 1u,
+                                  10000);
+        QCOMPARE(d.tree.topicData().checks().malformedPayloads(), 1u);
     }
 
     // What mqtt_client for ROS 2 publishes for a stamped std_msgs/msg/String mapping, sent by a
@@ -165,7 +166,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"car/chatter"_s), 5u, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"car/state"_s), 1u, 10000);
 
-        const auto info = d.tree.info(u"car/chatter"_s);
+        const auto info = d.tree.topicData().info(u"car/chatter"_s);
         QVERIFY(info->rosType);
         QCOMPARE(info->rosType->name, u"std_msgs/msg/String"_s);
         QCOMPARE(info->rosType->dialect, RosTypeRegistry::Dialect::Ros2);
@@ -175,27 +176,27 @@ private slots:
         QVERIFY2(info->lastLatencyMs >= 2000 && info->lastLatencyMs < 12000,
                  qPrintable(QString::number(info->lastLatencyMs)));
         QVERIFY(info->meanLatencyMs >= 2000);
-        const auto registry = d.tree.registryFor(u"car/chatter"_s);
+        const auto registry = d.tree.topicData().registryFor(u"car/chatter"_s);
         QVERIFY(registry);
-        const auto value
-            = noted(MqttClientWire::decodePayload(*registry, *info->rosType,
-                                                  d.tree.history(u"car/chatter"_s)->back().payload),
-                    &error);
+        const auto value = noted(
+            MqttClientWire::decodePayload(*registry, *info->rosType,
+                                          d.tree.topicData().history(u"car/chatter"_s)->back().payload),
+            &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(value->toLines(), QStringList {u"data: \"hello 4\""_s});
 
-        const auto state = d.tree.info(u"car/state"_s);
+        const auto state = d.tree.topicData().info(u"car/state"_s);
         QCOMPARE(state->rosType->name, u"my_pkg/msg/State"_s);
-        QVERIFY(!d.tree.registryFor(u"car/state"_s));
+        QVERIFY(!d.tree.topicData().registryFor(u"car/state"_s));
         QVERIFY(state->typeNote.contains(u"my_pkg/msg/State"_s));
-        QCOMPARE(d.tree.unknownTypeTopics(), 1);
+        QCOMPARE(d.tree.topicData().checks().unknownTypeTopics(), 1);
 
         // A payload cut inside its stamp is counted, with the reason.
         QVERIFY(bridge.publish(u"car/chatter"_s, QByteArray::fromHex("0001000001"), 0, false));
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"car/chatter"_s), 6u, 10000);
-        QCOMPARE(d.tree.info(u"car/chatter"_s)->malformedPayloads, 1u);
-        QVERIFY(d.tree.info(u"car/chatter"_s)->payloadError.contains(u"12-byte stamp"_s));
-        QCOMPARE(d.tree.malformedTypeAnnouncements(), 0u);
+        QCOMPARE(d.tree.topicData().info(u"car/chatter"_s)->malformedPayloads, 1u);
+        QVERIFY(d.tree.topicData().info(u"car/chatter"_s)->payloadError.contains(u"12-byte stamp"_s));
+        QCOMPARE(d.tree.topicData().checks().malformedTypeAnnouncements(), 0u);
     }
 
     void tlsWithClientCertificates()
@@ -344,8 +345,8 @@ private slots:
         f.close();
         run(u"mosquitto_pub"_s, pubArgs(servers) + QStringList {u"-t"_s, u"blob/scan"_s, u"-f"_s, file});
         QTRY_COMPARE_WITH_TIMEOUT(d.messages(u"blob/scan"_s), 1u, 10000);
-        QCOMPARE(d.tree.history(u"blob/scan"_s)->back().payload, big);
-        QCOMPARE(d.tree.info(u"blob/scan"_s)->lastSize, 2 * 1024 * 1024);
+        QCOMPARE(d.tree.topicData().history(u"blob/scan"_s)->back().payload, big);
+        QCOMPARE(d.tree.topicData().info(u"blob/scan"_s)->lastSize, 2 * 1024 * 1024);
     }
 
     void badUrlsFailWithAClearMessage_data()

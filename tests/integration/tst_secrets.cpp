@@ -4,7 +4,7 @@
 // TMPDIR inside one temporary folder; then every file in it and everything printed is searched
 // for the password. That the commands really connected (so the password was used, not dropped)
 // is checked by what they report.
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "mqtt/mqttprofile.h"
 #include "resulttext.h"
 #include "testservers.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Reading, writing and converting bridge configs, checked against the real files of mqtt_client,
 // the benchmarking suite and mqtt_bridge.
-#include "base/atomicfile.h"
-#include "base/yamltree.h"
+#include "files/atomicfile.h"
+#include "yaml/yamltree.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"

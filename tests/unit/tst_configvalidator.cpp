@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Every validation rule, one row each: the YAML, the problems it must give, and where.
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 

@@ -2,7 +2,7 @@
 // Hostile YAML (issue 11): alias bombs, cycles, deep nesting, huge files and bytes that are not
 // UTF-8 are refused with a located error before anything walks the tree; the anchors real files
 // use still load, edit and save.
-#include "base/yamllimits.h"
+#include "yaml/yamllimits.h"
 #include "config/configdocument.h"
 #include "config/configpatcher.h"
 #include "config/configreader.h"

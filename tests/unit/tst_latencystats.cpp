@@ -3,7 +3,7 @@
 // same samples) and figures derived by hand below.
 #include "latency/latencyengine.h"
 #include "latency/latencyreport.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/latencywarnings.h"
 #include "latency/shiftestimate.h"
 #include "latency/sortedblocks.h"

@@ -5,13 +5,13 @@
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "latency/latencyengine.h"
-#include "latency/latencystatsmodel.h"
+#include "models/latencystatsmodel.h"
 #include "latency/pipeline.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttsource.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "resulttext.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "watch/linkmonitor.h"
 #include "wire/mqttclientwire.h"
 #include "wire/sourcemessage.h"
@@ -74,7 +74,7 @@ SourceHead ros(const QString& topic, const QByteArray& bytes, qint64 ns,
 void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch)
 {
     MqttTopicTree tree;
-    MqttSource source(&tree);
+    MqttSource source(&tree.topicData());
     for (const QString& topic : m.reader().mqttTopics())
         source.monitor(topic);
     const std::unique_ptr<HeadTap> heads = source.openHeadTap(batch.size() + 1);

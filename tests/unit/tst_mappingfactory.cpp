@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Names and options proposed for new mappings, and health from synthetic discovery data.
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 #include "config/mappingfactory.h"
 #include "mqtt/mqttsource.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2graph.h"
@@ -21,7 +21,7 @@ namespace {
 QHash<QString, TopicFigures> mqttFigures(MqttTopicTree& tree, const BridgeConfig& cfg,
                                          std::vector<MqttMessage> batch, qint64 nowNs)
 {
-    MqttSource source(&tree);
+    MqttSource source(&tree.topicData());
     for (const Mapping& m : cfg.mappings)
         source.monitor(m.mqttTopic());
     source.add(batch);

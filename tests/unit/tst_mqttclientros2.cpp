@@ -5,7 +5,7 @@
 // are written out by hand, byte by byte, from mqtt_client's source (MqttClient.cpp, v2.5.0):
 // the two agree, and both decode in MqttClientWire, the topic tree and the stamp decoder.
 #include "mqtt/mqttstampdecoder.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "mqttclientros2.h"
 #include "resulttext.h"
 #include "wire/mqttclientwire.h"
@@ -365,7 +365,7 @@ private slots:
         batch.push_back(msg(u"car/pose"_s, poseStamped(Cdr::LITTLE_ENDIANNESS, -3.5)));
         tree.apply(std::move(batch));
 
-        const auto hello = tree.info(u"car/hello"_s);
+        const auto hello = tree.topicData().info(u"car/hello"_s);
         QVERIFY(hello->rosType);
         QCOMPARE(hello->rosType->name, u"std_msgs/msg/String"_s);
         QCOMPARE(hello->rosType->dialect, Dialect::Ros2);
@@ -377,28 +377,29 @@ private slots:
         QCOMPARE(tree.indexOf(u"car/hello"_s, MqttTopicTree::RosTypeColumn).data().toString(),
                  u"std_msgs/msg/String (stamped)"_s);
         QCOMPARE(tree.indexOf(u"car/hello"_s, MqttTopicTree::LatencyColumn).data().toString(), u"12.5 ms"_s);
-        const auto registry = tree.registryFor(u"car/hello"_s);
+        const auto registry = tree.topicData().registryFor(u"car/hello"_s);
         QVERIFY(registry);
         QCOMPARE(registry->dialect(), Dialect::Ros2);
         QString error;
-        const auto value = noted(MqttClientWire::decodePayload(*registry, *hello->rosType,
-                                                               tree.history(u"car/hello"_s)->back().payload),
-                                 &error);
+        const auto value
+            = noted(MqttClientWire::decodePayload(*registry, *hello->rosType,
+                                                  tree.topicData().history(u"car/hello"_s)->back().payload),
+                    &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(field(*value, u"data"_s), u"hello"_s);
 
-        const auto pose = tree.info(u"car/pose"_s);
+        const auto pose = tree.topicData().info(u"car/pose"_s);
         QCOMPARE(pose->rosType->name, u"geometry_msgs/msg/PoseStamped"_s);
         QCOMPARE(pose->malformedPayloads, 0u);
         QCOMPARE(pose->latencySamples, 0u);
         // One registry for every ROS 2 topic of every tree: parsed once, not per message.
-        QCOMPARE(tree.registryFor(u"car/pose"_s).get(), registry.get());
+        QCOMPARE(tree.topicData().registryFor(u"car/pose"_s).get(), registry.get());
         MqttTopicTree other;
         batch.clear();
         batch.push_back(msg(typeTopic(u"x"_s), kStringAnnouncement));
         other.apply(std::move(batch));
-        QCOMPARE(other.registryFor(u"x"_s).get(), registry.get());
-        QCOMPARE(tree.unknownTypeTopics(), 0);
+        QCOMPARE(other.topicData().registryFor(u"x"_s).get(), registry.get());
+        QCOMPARE(tree.topicData().checks().unknownTypeTopics(), 0);
     }
 
     // mqtt_client announces with every message: the same announcement changes nothing; a ROS 1
@@ -417,7 +418,7 @@ private slots:
                 msg(typeTopic(u"t"_s), MqttClientRos2::announcement("std_msgs/msg/String", false)));
             tree.apply(std::move(batch));
         }
-        QCOMPARE(tree.info(u"t"_s)->rosType->dialect, Dialect::Ros2);
+        QCOMPARE(tree.topicData().info(u"t"_s)->rosType->dialect, Dialect::Ros2);
         // The data topic's row was told of its type, once.
         int rowChanges = 0;
         for (const auto& args : changed) {
@@ -433,8 +434,8 @@ private slots:
             msg(typeTopic(u"t"_s),
                 MqttClientWire::encodeType({u"*"_s, u"std_msgs/String"_s, u"string data\n"_s, false})));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.info(u"t"_s)->rosType->dialect, Dialect::Ros1);
-        QCOMPARE(tree.info(u"t"_s)->rosType->name, u"std_msgs/String"_s);
+        QCOMPARE(tree.topicData().info(u"t"_s)->rosType->dialect, Dialect::Ros1);
+        QCOMPARE(tree.topicData().info(u"t"_s)->rosType->name, u"std_msgs/String"_s);
     }
 
     void unknownRos2TypesShowRawAndSaySo()
@@ -449,15 +450,15 @@ private slots:
                                                     })),
                             100'020'000'000LL));
         tree.apply(std::move(batch));
-        const auto info = tree.info(u"robot/state"_s);
+        const auto info = tree.topicData().info(u"robot/state"_s);
         QCOMPARE(info->rosType->name, u"my_pkg/msg/State"_s);
-        QVERIFY(!tree.registryFor(u"robot/state"_s));
+        QVERIFY(!tree.topicData().registryFor(u"robot/state"_s));
         QVERIFY2(info->typeNote.contains(u"No ROS 2 definition of my_pkg/msg/State"_s),
                  qPrintable(info->typeNote));
         QCOMPARE(info->malformedPayloads, 0u); // not malformed, only unknown
-        QCOMPARE(tree.malformedTypeAnnouncements(), 0u);
+        QCOMPARE(tree.topicData().checks().malformedTypeAnnouncements(), 0u);
         QCOMPARE(info->lastLatencyMs, 20.0); // the stamp needs no definition
-        QCOMPARE(tree.unknownTypeTopics(), 1);
+        QCOMPARE(tree.topicData().checks().unknownTypeTopics(), 1);
         const QString tip = tree.indexOf(u"robot/state"_s).data(Qt::ToolTipRole).toString();
         QVERIFY2(tip.contains(u"No ROS 2 definition"_s), qPrintable(tip));
 
@@ -467,15 +468,15 @@ private slots:
         QSignalSpy changed(&tree, &QAbstractItemModel::dataChanged);
         tree.setRos2Registry(withState);
         QCOMPARE(changed.size(), 1);
-        QCOMPARE(tree.unknownTypeTopics(), 0);
-        const auto registry = tree.registryFor(u"robot/state"_s);
+        QCOMPARE(tree.topicData().checks().unknownTypeTopics(), 0);
+        const auto registry = tree.topicData().registryFor(u"robot/state"_s);
         QVERIFY(registry);
-        QVERIFY(tree.info(u"robot/state"_s)->typeNote.isEmpty());
+        QVERIFY(tree.topicData().info(u"robot/state"_s)->typeNote.isEmpty());
         QString error;
-        const auto value
-            = noted(MqttClientWire::decodePayload(*registry, *tree.info(u"robot/state"_s)->rosType,
-                                                  tree.history(u"robot/state"_s)->back().payload),
-                    &error);
+        const auto value = noted(
+            MqttClientWire::decodePayload(*registry, *tree.topicData().info(u"robot/state"_s)->rosType,
+                                          tree.topicData().history(u"robot/state"_s)->back().payload),
+            &error);
         QVERIFY2(value, qPrintable(error));
         QCOMPARE(value->toLines(), (QStringList {u"mode: 7"_s, u"level: -1"_s}));
     }
@@ -488,36 +489,37 @@ private slots:
         batch.push_back(msg(typeTopic(u"u"_s), MqttClientRos2::announcement("std_msgs/msg/String", false)));
         batch.push_back(msg(u"s"_s, kStampedHello.left(8))); // a ROS 1-sized stamp
         tree.apply(std::move(batch));
-        QCOMPARE(tree.info(u"s"_s)->malformedPayloads, 1u);
-        QVERIFY2(tree.info(u"s"_s)->payloadError.contains(u"shorter than its 12-byte stamp"_s),
-                 qPrintable(tree.info(u"s"_s)->payloadError));
-        QCOMPARE(tree.info(u"s"_s)->latencySamples, 0u);
+        QCOMPARE(tree.topicData().info(u"s"_s)->malformedPayloads, 1u);
+        QVERIFY2(tree.topicData().info(u"s"_s)->payloadError.contains(u"shorter than its 12-byte stamp"_s),
+                 qPrintable(tree.topicData().info(u"s"_s)->payloadError));
+        QCOMPARE(tree.topicData().info(u"s"_s)->latencySamples, 0u);
 
         batch.clear();
         batch.push_back(msg(u"s"_s, kStampedHello.left(12), kHelloStampNs)); // the stamp alone
         tree.apply(std::move(batch));
-        QCOMPARE(tree.info(u"s"_s)->malformedPayloads, 2u);
-        QCOMPARE(tree.info(u"s"_s)->latencySamples, 1u);
-        QVERIFY2(tree.info(u"s"_s)->payloadError.contains(u"encapsulation header"_s),
-                 qPrintable(tree.info(u"s"_s)->payloadError));
+        QCOMPARE(tree.topicData().info(u"s"_s)->malformedPayloads, 2u);
+        QCOMPARE(tree.topicData().info(u"s"_s)->latencySamples, 1u);
+        QVERIFY2(tree.topicData().info(u"s"_s)->payloadError.contains(u"encapsulation header"_s),
+                 qPrintable(tree.topicData().info(u"s"_s)->payloadError));
 
         batch.clear();
         batch.push_back(msg(u"u"_s, "plain text")); // not CDR
         batch.push_back(msg(u"u"_s, MqttClientRos2::string("ok")));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.info(u"u"_s)->malformedPayloads, 0u); // only the newest of a batch is checked
+        QCOMPARE(tree.topicData().info(u"u"_s)->malformedPayloads,
+                 0u); // only the newest of a batch is checked
         batch.clear();
         batch.push_back(msg(u"u"_s, MqttClientRos2::string("cut").left(9)));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.info(u"u"_s)->malformedPayloads, 1u);
-        QCOMPARE(tree.malformedPayloads(), 3u);
+        QCOMPARE(tree.topicData().info(u"u"_s)->malformedPayloads, 1u);
+        QCOMPARE(tree.topicData().checks().malformedPayloads(), 3u);
 
         // A broken ROS 2 announcement is a malformed announcement.
         batch.clear();
         batch.push_back(msg(typeTopic(u"b"_s), kStringAnnouncement.left(30)));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.malformedTypeAnnouncements(), 1u);
-        QVERIFY(!tree.info(typeTopic(u"b"_s))->typeError.isEmpty());
+        QCOMPARE(tree.topicData().checks().malformedTypeAnnouncements(), 1u);
+        QVERIFY(!tree.topicData().info(typeTopic(u"b"_s))->typeError.isEmpty());
     }
 
     // Measure and Watch: the stamp of a ROS 2 payload is a latency, a bad one is counted.

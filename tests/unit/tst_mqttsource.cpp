@@ -4,7 +4,7 @@
 // announcements, fed as the live session feeds it (the batch, then the topic tree).
 #include "latency/subscriptions.h"
 #include "mqtt/mqttsource.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "wire/mqttclientwire.h"
 
 #include <QTest>
@@ -45,7 +45,7 @@ private slots:
     void monitoringIsCountedAndGivesFiguresOfMonitoredTopicsOnly()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         QCOMPARE(source.sourceGraph(), SourceGraph::Mqtt);
         source.monitor(u"lab/pose"_s);
         source.monitor(u"lab/pose"_s); // Map health and Watch both
@@ -83,7 +83,7 @@ private slots:
     void eachUserHoldsItsOwnSubscriptions()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         auto owner = std::make_unique<QObject>(); // what owns the source in a window
         {
             Subscriptions links(&source, owner.get());
@@ -111,7 +111,7 @@ private slots:
     void headsAreBoundedAndCountDropsPerTap()
     {
         MqttTopicTree tree;
-        auto source = std::make_unique<MqttSource>(&tree);
+        auto source = std::make_unique<MqttSource>(&tree.topicData());
         source->monitor(u"a"_s);
         std::vector<MqttMessage> batch {message(u"a"_s, "short", kStart)};
         source->add(batch); // no tap open: nothing kept
@@ -150,7 +150,7 @@ private slots:
     void watchedTopicsKeepTheNewestWithinTheirBoundsAndTheirType()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         drain(source, tree,
               {message(MqttClientWire::typeTopicPrefix() + u"lab/pose"_s, MqttClientWire::encodeType(kPoint),
                        kStart, true)},
@@ -184,7 +184,7 @@ private slots:
         source.add(batch);
         QCOMPARE(roomy->take().size(), std::size_t(10));
         {
-            MqttSource gone(&tree);
+            MqttSource gone(&tree.topicData());
             other = gone.openTap(u"lab/pose"_s, 4, 100);
         }
         QVERIFY(other->take().empty());
@@ -195,7 +195,7 @@ private slots:
     void aFloodStaysWithinTheWatchedBounds()
     {
         MqttTopicTree tree;
-        MqttSource source(&tree);
+        MqttSource source(&tree.topicData());
         const std::unique_ptr<Tap> tap = source.openTap(u"flood"_s, 1000, 4 * 1024 * 1024);
         const QByteArray kib(1024, 'x');
         for (int round = 0; round < 20; ++round) {

@@ -2,7 +2,7 @@
 // The MQTT topic tree: exact counts, subtree sums, bounded history, mqtt_client awareness, and
 // batched, consistent model signals.
 #include "fixtures.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "wire/mqttclientwire.h"
 
 #include <QAbstractItemModelTester>
@@ -58,16 +58,16 @@ private slots:
         QCOMPARE(dump(tree),
                  (QStringList {u"vehicle 4"_s, u"  lidar 2"_s, u"    points 2"_s, u"  status 1"_s,
                                u"cloud 1"_s, u"  objects 1"_s}));
-        QCOMPARE(tree.topicCount(), 4);
-        QCOMPARE(tree.totalMessages(), 5u);
-        const auto points = tree.info(u"vehicle/lidar/points"_s);
+        QCOMPARE(tree.topicData().store().topicCount(), 4);
+        QCOMPARE(tree.topicData().store().totalMessages(), 5u);
+        const auto points = tree.topicData().info(u"vehicle/lidar/points"_s);
         QCOMPARE(points->messages, 2u);
         QCOMPARE(points->bytes, 150u);
         QCOMPARE(points->lastSize, 50);
-        QCOMPARE(tree.info(u"vehicle/status"_s)->retained, true);
-        QCOMPARE(tree.info(u"cloud/objects"_s)->qos, 1);
+        QCOMPARE(tree.topicData().info(u"vehicle/status"_s)->retained, true);
+        QCOMPARE(tree.topicData().info(u"cloud/objects"_s)->qos, 1);
         QCOMPARE(tree.index(0, MqttTopicTree::BytesColumn).data(MqttTopicTree::SortRole).toULongLong(), 166u);
-        QVERIFY(!tree.info(u"vehicle/lidar"_s)); // a level, not a topic
+        QVERIFY(!tree.topicData().info(u"vehicle/lidar"_s)); // a level, not a topic
     }
 
     void oneInsertPerParentPerBatch()
@@ -81,7 +81,7 @@ private slots:
             batch.push_back(msg(u"fleet/car%1/speed"_s.arg(i % 100), QByteArray::number(i)));
         tree.apply(std::move(batch));
         QCOMPARE(inserted.size(), 1); // "fleet" (with its new subtree) under the root
-        QCOMPARE(tree.topicCount(), 100);
+        QCOMPARE(tree.topicData().store().topicCount(), 100);
         inserted.clear();
         changed.clear();
         batch.clear();
@@ -91,7 +91,7 @@ private slots:
         // New "fuel" children: one insert under each car that got one; figures: one signal per parent.
         QCOMPARE(inserted.size(), 100);
         QVERIFY(changed.size() <= 102);
-        QCOMPARE(tree.info(u"fleet/car7/speed"_s)->messages, 15u);
+        QCOMPARE(tree.topicData().info(u"fleet/car7/speed"_s)->messages, 15u);
     }
 
     // MQTT Explorer's habit (issue 33): each topic's last value on its row, one short line; a
@@ -145,12 +145,12 @@ private slots:
             big[i] = char(i * 7);
         batch.push_back(msg(u"blob"_s, big));
         tree.apply(std::move(batch));
-        const auto* h = tree.history(u"t"_s);
+        const auto* h = tree.topicData().history(u"t"_s);
         QCOMPARE(int(h->size()), 5);
         QCOMPARE(h->front().payload, QByteArray("7"));
         QCOMPARE(h->back().payload, QByteArray("11"));
-        QCOMPARE(tree.history(u"blob"_s)->back().payload, big);
-        QCOMPARE(tree.info(u"blob"_s)->lastSize, 2 * 1024 * 1024);
+        QCOMPARE(tree.topicData().history(u"blob"_s)->back().payload, big);
+        QCOMPARE(tree.topicData().info(u"blob"_s)->lastSize, 2 * 1024 * 1024);
         QCOMPARE(tree.indexOf(u"blob"_s).data(MqttTopicTree::SearchTextRole).toString(), QString());
         QCOMPARE(tree.indexOf(u"t"_s).data(MqttTopicTree::SearchTextRole).toString(), u"11"_s);
     }
@@ -160,7 +160,7 @@ private slots:
     void historyOfAllTopicsStaysWithinItsBudget()
     {
         MqttTopicTree tree;
-        QCOMPARE(tree.historyBudget(), qint64(64) * 1024 * 1024);
+        QCOMPARE(tree.topicData().store().historyBudget(), qint64(64) * 1024 * 1024);
         const QByteArray payload(200 * 1000, 'p'); // shared: the test itself stays small
         qint64 ns = 1;
         for (int round = 0; round < 20; ++round) {
@@ -168,20 +168,20 @@ private slots:
             for (int t = 0; t < 500; ++t)
                 batch.push_back(msg(u"fleet/v%1/cloud"_s.arg(t), payload, false, ns++));
             tree.apply(std::move(batch));
-            QVERIFY2(tree.historyBytes() <= tree.historyBudget(),
-                     qPrintable(QString::number(tree.historyBytes())));
+            QVERIFY2(tree.topicData().store().historyBytes() <= tree.topicData().store().historyBudget(),
+                     qPrintable(QString::number(tree.topicData().store().historyBytes())));
         }
         qint64 kept = 0;
         for (int t = 0; t < 500; ++t)
-            kept += qint64(tree.history(u"fleet/v%1/cloud"_s.arg(t))->size());
+            kept += qint64(tree.topicData().history(u"fleet/v%1/cloud"_s.arg(t))->size());
         const qint64 cost = payload.size() + MqttTopicTree::kHistoryEntryOverhead;
-        QCOMPARE(kept, tree.historyBudget() / cost);
-        QCOMPARE(tree.evictedPayloads(), quint64(500 * 20 - kept));
-        QCOMPARE(tree.historyBytes(), kept * cost);
+        QCOMPARE(kept, tree.topicData().store().historyBudget() / cost);
+        QCOMPARE(tree.topicData().store().evictedPayloads(), quint64(500 * 20 - kept));
+        QCOMPARE(tree.topicData().store().historyBytes(), kept * cost);
         // The newest are kept, oldest first gone: the last topics of the last round have theirs.
-        QCOMPARE(tree.history(u"fleet/v499/cloud"_s)->back().receivedNs, ns - 1);
-        QVERIFY(tree.history(u"fleet/v0/cloud"_s)->size() <= 1);
-        QCOMPARE(tree.info(u"fleet/v0/cloud"_s)->messages, quint64(20)); // the counts are whole
+        QCOMPARE(tree.topicData().history(u"fleet/v499/cloud"_s)->back().receivedNs, ns - 1);
+        QVERIFY(tree.topicData().history(u"fleet/v0/cloud"_s)->size() <= 1);
+        QCOMPARE(tree.topicData().info(u"fleet/v0/cloud"_s)->messages, quint64(20)); // the counts are whole
 
         // A smaller budget takes effect with the next message; tiny payloads pay their bookkeeping.
         tree.setHistoryBudget(1024 * 1024);
@@ -189,11 +189,11 @@ private slots:
         for (int i = 0; i < 100000; ++i)
             many.push_back(msg(u"tiny/%1"_s.arg(i % 5000), "x", false, ns++));
         tree.apply(std::move(many));
-        QVERIFY(tree.historyBytes() <= 1024 * 1024);
-        QVERIFY(tree.evictedPayloads() > quint64(500 * 20 - kept));
+        QVERIFY(tree.topicData().store().historyBytes() <= 1024 * 1024);
+        QVERIFY(tree.topicData().store().evictedPayloads() > quint64(500 * 20 - kept));
         tree.clear();
-        QCOMPARE(tree.historyBytes(), qint64(0));
-        QCOMPARE(tree.evictedPayloads(), quint64(0));
+        QCOMPARE(tree.topicData().store().historyBytes(), qint64(0));
+        QCOMPARE(tree.topicData().store().evictedPayloads(), quint64(0));
     }
 
     /// A client publishing to 10,000 made-up topics cost a watch 180 MiB, with long names 460 MiB:
@@ -202,8 +202,8 @@ private slots:
     void topicsStayWithinTheirBudgets()
     {
         MqttTopicTree tree;
-        QCOMPARE(tree.topicBudget(), 20000);
-        QCOMPARE(tree.structureBudget(), qint64(64) * 1024 * 1024);
+        QCOMPARE(tree.topicData().store().topicBudget(), 20000);
+        QCOMPARE(tree.topicData().store().structureBudget(), qint64(64) * 1024 * 1024);
         qint64 ns = 1;
         for (int round = 0; round < 5; ++round) {
             std::vector<MqttMessage> batch;
@@ -211,22 +211,22 @@ private slots:
                 batch.push_back(msg(u"made/up/%1"_s.arg(round * 5000 + t), "x", false, ns++));
             tree.apply(std::move(batch));
         }
-        QCOMPARE(tree.topicCount(), 20000);
-        QCOMPARE(tree.untrackedMessages(), quint64(5000));
-        QVERIFY(tree.structureBytes() <= tree.structureBudget());
+        QCOMPARE(tree.topicData().store().topicCount(), 20000);
+        QCOMPARE(tree.topicData().store().untrackedMessages(), quint64(5000));
+        QVERIFY(tree.topicData().store().structureBytes() <= tree.topicData().store().structureBudget());
         std::vector<MqttMessage> more;
         more.push_back(msg(u"made/up/0"_s, "y", false, ns++)); // kept: updates
         more.push_back(msg(u"made/up/new"_s, "z", false, ns++)); // not kept
         more.push_back(msg(u"$SYS/broker/uptime"_s, "1 s", false, ns++)); // a topic too
         tree.apply(std::move(more));
-        QCOMPARE(tree.info(u"made/up/0"_s)->messages, quint64(2));
-        QVERIFY(!tree.info(u"made/up/new"_s));
-        QVERIFY(tree.brokerStatistics().isEmpty());
-        QCOMPARE(tree.untrackedMessages(), quint64(5002));
-        QCOMPARE(tree.totalMessages(), quint64(25003));
+        QCOMPARE(tree.topicData().info(u"made/up/0"_s)->messages, quint64(2));
+        QVERIFY(!tree.topicData().info(u"made/up/new"_s));
+        QVERIFY(tree.topicData().store().statistics().isEmpty());
+        QCOMPARE(tree.topicData().store().untrackedMessages(), quint64(5002));
+        QCOMPARE(tree.topicData().store().totalMessages(), quint64(25003));
         tree.clear();
-        QCOMPARE(tree.untrackedMessages(), quint64(0));
-        QCOMPARE(tree.structureBytes(), qint64(0));
+        QCOMPARE(tree.topicData().store().untrackedMessages(), quint64(0));
+        QCOMPARE(tree.topicData().store().structureBytes(), qint64(0));
 
         // Names as long as MQTT allows are kept, and paid for: 600 of 60,000 characters do not fit.
         for (int round = 0; round < 12; ++round) {
@@ -235,10 +235,11 @@ private slots:
                 batch.push_back(msg(u"%1/"_s.arg(round * 50 + t) + QString(60000, u'n'), "x", false, ns++));
             tree.apply(std::move(batch));
         }
-        QVERIFY2(tree.topicCount() > 100 && tree.topicCount() < 300,
-                 qPrintable(QString::number(tree.topicCount())));
-        QCOMPARE(tree.untrackedMessages(), quint64(600 - tree.topicCount()));
-        QVERIFY(tree.structureBytes() <= tree.structureBudget());
+        QVERIFY2(tree.topicData().store().topicCount() > 100 && tree.topicData().store().topicCount() < 300,
+                 qPrintable(QString::number(tree.topicData().store().topicCount())));
+        QCOMPARE(tree.topicData().store().untrackedMessages(),
+                 quint64(600 - tree.topicData().store().topicCount()));
+        QVERIFY(tree.topicData().store().structureBytes() <= tree.topicData().store().structureBudget());
     }
 
     /// A deep topic keeps every prefix as a level's path: it pays for all of them, counted before
@@ -257,11 +258,11 @@ private slots:
         for (int t = 0; t < 20; ++t)
             batch.push_back(msg(u"a/%1"_s.arg(t), "x"));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.topicCount(), 10);
-        QCOMPARE(tree.untrackedMessages(), quint64(11));
+        QCOMPARE(tree.topicData().store().topicCount(), 10);
+        QCOMPARE(tree.topicData().store().untrackedMessages(), quint64(11));
         QCOMPARE(tree.rowCount(), 1); // "a" only
         QCOMPARE(tree.rowCount(tree.index(0, 0)), 10);
-        QVERIFY(tree.structureBytes() <= 1024 * 1024);
+        QVERIFY(tree.topicData().store().structureBytes() <= 1024 * 1024);
     }
 
     void learnsTypesFromMqttClientAnnouncements()
@@ -273,11 +274,11 @@ private slots:
                             Fixtures::read(u"mqtt_client/wire/pose.type.bin"_s), true));
         batch.push_back(msg(u"cap/pose"_s, Fixtures::read(u"mqtt_client/wire/pose.payload.bin"_s)));
         tree.apply(std::move(batch));
-        const auto pose = tree.info(u"cap/pose"_s);
+        const auto pose = tree.topicData().info(u"cap/pose"_s);
         QVERIFY(pose->rosType);
         QCOMPARE(pose->rosType->name, u"geometry_msgs/PoseStamped"_s);
         QCOMPARE(pose->malformedPayloads, 0u);
-        QVERIFY(tree.registryFor(u"cap/pose"_s));
+        QVERIFY(tree.topicData().registryFor(u"cap/pose"_s));
         QCOMPARE(tree.indexOf(u"cap/pose"_s, MqttTopicTree::RosTypeColumn).data().toString(),
                  u"geometry_msgs/PoseStamped"_s);
 
@@ -289,7 +290,7 @@ private slots:
                             Fixtures::read(u"mqtt_client/wire/string_stamped.type.bin"_s), true));
         batch.push_back(msg(u"cap/string_stamped"_s, payload, false, stamp + 12'500'000));
         tree.apply(std::move(batch));
-        const auto s = tree.info(u"cap/string_stamped"_s);
+        const auto s = tree.topicData().info(u"cap/string_stamped"_s);
         QCOMPARE(s->rosType->stamped, true);
         QCOMPARE(s->lastLatencyMs, 12.5);
         QCOMPARE(s->latencySamples, 1u);
@@ -343,11 +344,11 @@ private slots:
                             Fixtures::read(u"mqtt_client/wire/string_stamped.type.bin"_s)));
         batch.push_back(msg(u"cap/s"_s, "short"));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.malformedTypeAnnouncements(), 1u);
-        QVERIFY(!tree.info(u"mqtt_client/ros_msg_type/bad"_s)->typeError.isEmpty());
-        QCOMPARE(tree.info(u"cap/pose"_s)->malformedPayloads, 1u);
-        QCOMPARE(tree.info(u"cap/s"_s)->malformedPayloads, 1u);
-        QCOMPARE(tree.malformedPayloads(), 2u);
+        QCOMPARE(tree.topicData().checks().malformedTypeAnnouncements(), 1u);
+        QVERIFY(!tree.topicData().info(u"mqtt_client/ros_msg_type/bad"_s)->typeError.isEmpty());
+        QCOMPARE(tree.topicData().info(u"cap/pose"_s)->malformedPayloads, 1u);
+        QCOMPARE(tree.topicData().info(u"cap/s"_s)->malformedPayloads, 1u);
+        QCOMPARE(tree.topicData().checks().malformedPayloads(), 2u);
     }
 
     void sysTopicsAreBrokerStatistics()
@@ -359,8 +360,9 @@ private slots:
         batch.push_back(msg(u"a"_s, "1"));
         tree.apply(std::move(batch));
         QCOMPARE(stats.size(), 1);
-        QCOMPARE(tree.brokerStatistics().value(u"$SYS/broker/version"_s), u"mosquitto version 2.0.11"_s);
-        QCOMPARE(tree.topicCount(), 1);
+        QCOMPARE(tree.topicData().store().statistics().value(u"$SYS/broker/version"_s),
+                 u"mosquitto version 2.0.11"_s);
+        QCOMPARE(tree.topicData().store().topicCount(), 1);
     }
 
     void ratesComeFromTicks()
@@ -372,9 +374,9 @@ private slots:
             batch.push_back(msg(u"a/b"_s, "x"));
         tree.apply(std::move(batch));
         tree.tick(3'000'000'000); // two seconds later
-        QCOMPARE(tree.info(u"a/b"_s)->rate, 20.0);
+        QCOMPARE(tree.topicData().info(u"a/b"_s)->rate, 20.0);
         QCOMPARE(tree.index(0, MqttTopicTree::RateColumn).data(MqttTopicTree::SortRole).toDouble(), 20.0);
-        QCOMPARE(tree.info(u"a/b"_s)->rateHistory, QList<double> {20.0});
+        QCOMPARE(tree.topicData().info(u"a/b"_s)->rateHistory, QList<double> {20.0});
     }
 
     void recursiveFilterFindsDeepTopics()
@@ -422,17 +424,17 @@ private slots:
         batch.push_back(msg(u"mqtt_client/ros_msg_type/evil/big"_s,
                             announce(QString(MqttClientWire::kMaxTypeBytes, u'#')), true));
         tree.apply(std::move(batch));
-        QCOMPARE(tree.info(u"evil/empty"_s)->malformedPayloads, 0u);
-        QCOMPARE(tree.info(u"evil/many"_s)->malformedPayloads, 1u);
-        QVERIFY2(tree.info(u"evil/many"_s)->payloadError.contains(u"more than 1000000 steps"_s),
-                 qPrintable(tree.info(u"evil/many"_s)->payloadError));
+        QCOMPARE(tree.topicData().info(u"evil/empty"_s)->malformedPayloads, 0u);
+        QCOMPARE(tree.topicData().info(u"evil/many"_s)->malformedPayloads, 1u);
+        QVERIFY2(tree.topicData().info(u"evil/many"_s)->payloadError.contains(u"more than 1000000 steps"_s),
+                 qPrintable(tree.topicData().info(u"evil/many"_s)->payloadError));
         QVERIFY(tree.data(tree.indexOf(u"evil/many"_s), Qt::ToolTipRole).toString().contains(u"more than"_s));
         for (const QString& t :
              {u"mqtt_client/ros_msg_type/evil/def"_s, u"mqtt_client/ros_msg_type/evil/big"_s}) {
-            QCOMPARE(tree.info(t)->malformedPayloads, 1u);
-            QVERIFY(!tree.info(t)->typeError.isEmpty());
+            QCOMPARE(tree.topicData().info(t)->malformedPayloads, 1u);
+            QVERIFY(!tree.topicData().info(t)->typeError.isEmpty());
         }
-        QCOMPARE(tree.malformedTypeAnnouncements(), 2u);
+        QCOMPARE(tree.topicData().checks().malformedTypeAnnouncements(), 2u);
     }
 };
 

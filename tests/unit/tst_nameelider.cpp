@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // NameElider: the shortenings of slash-separated names keep what tells the names apart.
-#include "base/nameelider.h"
+#include "text/nameelider.h"
 
 #include <QSet>
 #include <QTest>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Issue 33, point 6: ticks on round numbers in every chart and report (1, 2, 2.5 or 5 times a
 // power of ten), never 11.8 / 8.88 / 5.92.
-#include "base/niceticks.h"
+#include "text/niceticks.h"
 
 #include <cmath>
 #include <QRandomGenerator>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The ROS 1 encoder against roscpp's own serialization (what mqtt_client sends), round trips
 // through the decoder and the YAML a user edits, and values that do not fit.
-#include "base/yamlvariant.h"
+#include "yaml/yamlvariant.h"
 #include "fixtures.h"
 #include "resulttext.h"
 #include "rosserialize.h"

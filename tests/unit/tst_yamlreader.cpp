@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // One YAML reader and one result type: the plan, rules and pipeline readers report their errors as
 // a located value (message, line, column, file), written as each reader always wrote them.
-#include "base/atomicfile.h"
-#include "base/yamlreader.h"
+#include "files/atomicfile.h"
+#include "yaml/yamlreader.h"
 #include "experiment/experimentplan.h"
 #include "latency/pipeline.h"
 #include "resulttext.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "chartstyle.h"
 
-#include "base/niceticks.h"
+#include "text/niceticks.h"
 
 #include <QAbstractAxis>
 #include <QChart>

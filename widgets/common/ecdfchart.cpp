@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ecdfchart.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "latency/ecdf.h"
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/nameelider.h"
+#include "text/nameelider.h"
 
 #include <QHash>
 #include <QPointer>

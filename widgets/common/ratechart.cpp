@@ -3,7 +3,7 @@
 
 #include "widgets/common/chartstyle.h"
 
-#include "base/niceticks.h"
+#include "text/niceticks.h"
 
 #include <algorithm>
 #include <cmath>

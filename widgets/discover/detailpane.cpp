@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "detailpane.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "session/fieldplotter.h"
 #include "session/graphstatus.h"
 #include "topics/topictablemodel.h"
@@ -515,7 +515,7 @@ void DetailPane::showPayload(const QByteArray& payload)
 void DetailPane::refreshMqtt(bool force)
 {
     const MqttTopicTree* tree = m_parts.live.mqttTopics;
-    const auto info = tree->info(m_topic);
+    const auto info = tree->topicData().info(m_topic);
     if (!info) {
         m_title->setText(tr("<b>%1</b>: a level of the topic tree; select a topic below it.")
                              .arg(m_topic.toHtmlEscaped()));
@@ -556,12 +556,12 @@ void DetailPane::refreshMqtt(bool force)
             + tr("malformed type announcement: %1").arg(info->typeError.toHtmlEscaped()) + u"</font>"_s;
     m_title->setText(title);
 
-    const auto* history = tree->history(m_topic);
+    const auto* history = tree->topicData().history(m_topic);
     m_lastPayload = history && !history->empty() ? history->back().payload : QByteArray();
     showPayload(m_lastPayload);
 
     // Fields: the decoded ROS message when mqtt_client announced the type, else JSON if it is.
-    if (const auto registry = tree->registryFor(m_topic); registry && info->rosType) {
+    if (const auto registry = tree->topicData().registryFor(m_topic); registry && info->rosType) {
         RosDecodeLimits limits;
         limits.maxArrayElements = 32;
         if (const Result<RosValue> value = SourceMessage::decode(
@@ -676,7 +676,7 @@ void DetailPane::refreshRos(bool force)
 
 void DetailPane::refreshBroker()
 {
-    const QHash<QString, QString>& stats = m_parts.live.mqttTopics->brokerStatistics();
+    const QHash<QString, QString>& stats = m_parts.live.mqttTopics->topicData().store().statistics();
     QStringList keys = stats.keys();
     keys.sort();
     m_broker->setRowCount(int(keys.size()));

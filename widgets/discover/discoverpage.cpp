@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "discoverpage.h"
 
-#include "mqtt/mqtttopicfilter.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopicfilter.h"
+#include "models/mqtttopictree.h"
 #include "mqtt/passwordstore.h"
 #include "session/graphstatus.h"
 #include "topics/topictablemodel.h"
@@ -431,7 +431,7 @@ int DiscoverPage::clearRetained()
     if (!current.isValid())
         return 0;
     const QString path = current.data(MqttTopicTree::FullTopicRole).toString();
-    const QStringList topics = m_parts.mqttTopics->retainedBelow(path);
+    const QStringList topics = m_parts.mqttTopics->topicData().retainedBelow(path);
     if (topics.isEmpty()) {
         QMessageBox::information(this, tr("Clear Retained"),
                                  tr("No retained message is known at or under %1.").arg(path));
@@ -636,21 +636,24 @@ void DiscoverPage::updateMqttStatus()
     const bool idle = s == MqttConnection::State::Disconnected || s == MqttConnection::State::Failed;
     m_connect->setText(idle ? tr("&Connect") : tr("Dis&connect"));
     const MqttTopicTree* t = m_parts.mqttTopics;
-    QStringList parts {tr("%1 topics").arg(t->topicCount()), tr("%1 messages").arg(c->received())};
+    QStringList parts {tr("%1 topics").arg(t->topicData().store().topicCount()),
+                       tr("%1 messages").arg(c->received())};
     if (c->dropped())
         parts << tr("%1 dropped").arg(c->dropped());
-    if (t->malformedTypeAnnouncements() || t->malformedPayloads())
-        parts << tr("%1 malformed").arg(t->malformedTypeAnnouncements() + t->malformedPayloads());
-    if (const int unknown = t->unknownTypeTopics())
+    if (t->topicData().checks().malformedTypeAnnouncements() || t->topicData().checks().malformedPayloads())
+        parts << tr("%1 malformed")
+                     .arg(t->topicData().checks().malformedTypeAnnouncements()
+                          + t->topicData().checks().malformedPayloads());
+    if (const int unknown = t->topicData().checks().unknownTypeTopics())
         parts << tr("%n topic(s) of an unknown ROS 2 type", nullptr, unknown);
-    if (const quint64 evicted = t->evictedPayloads())
+    if (const quint64 evicted = t->topicData().store().evictedPayloads())
         parts << tr("%1 payloads evicted from the history (budget %2 MiB)")
                      .arg(evicted)
-                     .arg(t->historyBudget() / (1024 * 1024));
-    if (const quint64 untracked = t->untrackedMessages())
+                     .arg(t->topicData().store().historyBudget() / (1024 * 1024));
+    if (const quint64 untracked = t->topicData().store().untrackedMessages())
         parts << tr("%1 messages on topics not tracked (budget %2 topics, %3 MiB of names)")
                      .arg(untracked)
-                     .arg(t->topicBudget())
-                     .arg(t->structureBudget() / (1024 * 1024));
+                     .arg(t->topicData().store().topicBudget())
+                     .arg(t->topicData().store().structureBudget() / (1024 * 1024));
     m_counters->setText(parts.join(u" · "_s));
 }

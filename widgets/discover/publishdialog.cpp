@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "publishdialog.h"
 
-#include "base/topicnames.h"
+#include "text/topicnames.h"
 #include "base/wallclock.h"
 #include "mqtt/mqttconnection.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 #include "wire/payloadtext.h"
 #include "wire/publishpayload.h"
 
@@ -95,14 +95,14 @@ PublishDialog::PublishDialog(MqttConnection* connection, MqttTopicTree* topics, 
 void PublishDialog::topicChanged()
 {
     const QString topic = m_topic->text();
-    const auto info = m_topics->info(topic);
-    const bool typed = info && info->rosType && m_topics->registryFor(topic);
+    const auto info = m_topics->topicData().info(topic);
+    const bool typed = info && info->rosType && m_topics->topicData().registryFor(topic);
     auto* model = qobject_cast<QStandardItemModel*>(m_format->model());
     if (QStandardItem* item = model ? model->item(RosMessage) : nullptr)
         item->setEnabled(typed);
     m_format->setItemText(RosMessage,
                           typed ? tr("ROS message (%1)").arg(info->rosType->name) : tr("ROS message"));
-    const auto* history = m_topics->history(topic);
+    const auto* history = m_topics->topicData().history(topic);
     const QByteArray last = history && !history->empty() ? history->back().payload : QByteArray();
     Format want = Text;
     if (typed)
@@ -118,13 +118,13 @@ void PublishDialog::topicChanged()
 void PublishDialog::formatChanged()
 {
     const QString topic = m_topic->text();
-    const auto info = m_topics->info(topic);
-    const auto* history = m_topics->history(topic);
+    const auto info = m_topics->topicData().info(topic);
+    const auto* history = m_topics->topicData().history(topic);
     const QByteArray last = history && !history->empty() ? history->back().payload : QByteArray();
     const auto format = Format(m_format->currentData().toInt());
     m_note->clear();
     if (format == RosMessage) {
-        const auto registry = m_topics->registryFor(topic);
+        const auto registry = m_topics->topicData().registryFor(topic);
         if (info && info->rosType && registry) {
             const PublishPayload::Prefill pre = PublishPayload::rosMessage(*registry, *info->rosType, last);
             m_payload->setPlainText(pre.text);
@@ -158,8 +158,8 @@ bool PublishDialog::publish()
         return false;
     }
     const auto format = Format(m_format->currentData().toInt());
-    const auto info = m_topics->info(topic);
-    const auto registry = m_topics->registryFor(topic);
+    const auto info = m_topics->topicData().info(topic);
+    const auto registry = m_topics->topicData().registryFor(topic);
     const Result<QByteArray> payload = PublishPayload::build(
         format == Text ? PublishPayload::Format::Text
                        : (format == Json ? PublishPayload::Format::Json : PublishPayload::Format::RosMessage),
@@ -170,7 +170,7 @@ bool PublishDialog::publish()
         return false;
     }
     const bool retained = m_retained->isChecked();
-    if (retained && m_topics->mayHoldRetained(topic)) {
+    if (retained && m_topics->topicData().store().mayHoldRetained(topic)) {
         QMessageBox ask(QMessageBox::Question, tr("Replace the retained message"),
                         tr("The broker keeps a retained message for %1. Replace it?").arg(topic),
                         QMessageBox::Yes | QMessageBox::Cancel, this);

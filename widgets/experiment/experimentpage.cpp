@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "experimentpage.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "experiment/experimentevent.h"
 #include "experiment/experimentprocess.h"
 #include "experiment/experimentreportjob.h"

@@ -2,9 +2,9 @@
 // The Experiments page's files: plans opened and saved, folders opened, reports exported.
 #include "widgets/experiment/experimentpage.h"
 
-#include "base/atomicfile.h"
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "files/atomicfile.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 
 #include <QComboBox>
 #include <QDir>

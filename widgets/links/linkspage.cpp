@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "linkspage.h"
 
-#include "base/yamlreader.h"
+#include "yaml/yamlreader.h"
 #include "config/configreader.h"
-#include "watch/linkmodel.h"
+#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "ruleseditor.h"
 
-#include "base/atomicfile.h"
-#include "base/yamlreader.h"
+#include "files/atomicfile.h"
+#include "yaml/yamlreader.h"
 
 #include <QDialogButtonBox>
 #include <QFileDialog>

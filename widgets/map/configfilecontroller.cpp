@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "configfilecontroller.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "config/configdocument.h"
 #include "config/configwriter.h"
 #include "config/peerconfig.h"

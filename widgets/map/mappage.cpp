@@ -5,8 +5,8 @@
 #include "config/configdocument.h"
 #include "config/mappingfactory.h"
 #include "config/mappingmodel.h"
-#include "mqtt/mqtttopicfilter.h"
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopicfilter.h"
+#include "models/mqtttopictree.h"
 #include "session/graphstatus.h"
 #include "session/mappinghealthevaluator.h"
 #include "topics/topictablemodel.h"
@@ -263,13 +263,13 @@ namespace {
 MappingFactory::MqttFacts factsOf(const MqttTopicTree* tree, const QString& topic)
 {
     MappingFactory::MqttFacts f;
-    const auto info = tree->info(topic);
+    const auto info = tree->topicData().info(topic);
     if (!info)
         return f;
     f.seen = true;
     if (info->rosType)
         f.announcedType = info->rosType->name;
-    if (const auto* h = tree->history(topic); h && !h->empty())
+    if (const auto* h = tree->topicData().history(topic); h && !h->empty())
         f.lastPayload = h->back().payload;
     return f;
 }
@@ -324,7 +324,7 @@ QList<quint64> MapPage::bridgeRosTopics(const QList<TopicMime::Topic>& topics, c
     const MqttTopicTree* tree = m_parts.mqttTopics;
     // One ROS topic on an MQTT topic without levels below it: exactly that topic. Otherwise the
     // target is a level the new topics go under; no target: the prefix.
-    const bool exact = topics.size() == 1 && !mqttTarget.isEmpty() && tree->info(mqttTarget)
+    const bool exact = topics.size() == 1 && !mqttTarget.isEmpty() && tree->topicData().info(mqttTarget)
         && !tree->hasChildren(mqttTarget);
     const QString prefix = mqttTarget.isEmpty() ? m_prefix->text().trimmed() : mqttTarget;
     Plan p;
@@ -418,7 +418,7 @@ void MapPage::bridgeSelectedMqtt()
         const QString path = i.data(MqttTopicTree::FullTopicRole).toString();
         const QStringList below = i.data(MqttTopicTree::IsTopicRole).toBool()
             ? QStringList {path}
-            : m_parts.mqttTopics->topicsBelow(path);
+            : m_parts.mqttTopics->topicData().store().topicsBelow(path, 1000);
         for (const QString& t : below) {
             if (!seen.contains(t)) {
                 seen.insert(t);

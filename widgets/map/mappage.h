@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "base/topicmime.h"
+#include "text/topicmime.h"
 #include "config/bridgeconfig.h"
 #include "session/flowrates.h"
 #include "session/livesources.h"

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "measurepage.h"
 
-#include "latency/latencystatsmodel.h"
-#include "latency/pipelinemodel.h"
-#include "latency/stamptopicmodel.h"
+#include "models/latencystatsmodel.h"
+#include "widgets/measure/pipelinemodel.h"
+#include "widgets/measure/stamptopicmodel.h"
 #include "session/measuresession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/ecdfchart.h"

@@ -3,7 +3,7 @@
 
 #include "record/runrecorder.h"
 #include "report/runloader.h"
-#include "base/secrets.h"
+#include "yaml/secrets.h"
 #include "session/measuresession.h"
 #include "session/waitingtext.h"
 #include "widgets/measure/recorddialog.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reportspage.h"
 
-#include "base/atomicfile.h"
+#include "files/atomicfile.h"
 #include "record/runfile.h"
 #include "report/report.h"
 #include "report/runloader.h"

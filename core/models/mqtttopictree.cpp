@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqtttopictree.h"
 
-#include "base/topicmime.h"
+#include "text/topicmime.h"
 #include "wire/rosmessage.h"
 
 #include <algorithm>
@@ -14,7 +14,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-constexpr int kRateHistory = 120;
 constexpr qsizetype kSearchTextChars = 256;
 
 bool looksLikeText(const QByteArray& payload)
@@ -63,71 +62,30 @@ void MqttTopicTree::clear()
 {
     beginResetModel();
     m_dirty.clear(); // of the nodes that go now
-    m_store.clear();
-    m_checks.clear();
+    m_topics.clear();
     endResetModel();
     emit brokerStatisticsChanged();
 }
 
 void MqttTopicTree::setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry)
 {
-    m_checks.setRos2Registry(std::move(registry));
+    m_topics.setRos2Registry(std::move(registry));
     // Announced ROS 2 types may decode now, or no longer: their rows show it.
-    for (const QString& topic : m_checks.ros2Topics()) {
-        if (const Node* n = m_store.topic(topic); n && n->visible)
+    for (const QString& topic : m_topics.checks().ros2Topics()) {
+        if (const Node* n = m_topics.store().topic(topic); n && n->visible)
             emit dataChanged(indexOf(n, 0), indexOf(n, ColumnCount - 1));
     }
-}
-
-int MqttTopicTree::unknownTypeTopics() const
-{
-    return m_checks.unknownTypeTopics();
 }
 
 void MqttTopicTree::apply(std::vector<MqttMessage>&& batch)
 {
     if (batch.empty())
         return;
-    std::vector<Node*> withPending;
-    std::vector<Node*> typed;
-    bool sysChanged = false;
-    const QString typePrefix = MqttClientWire::typeTopicPrefix();
-    for (MqttMessage& msg : batch) {
-        m_store.countArrival();
-        if (msg.topic.startsWith(u"$SYS/"_s)) {
-            sysChanged = m_store.addStatistic(msg) || sysChanged;
-            continue;
-        }
-        Node* n = m_store.admitTopic(msg.topic, withPending);
-        if (!n)
-            continue; // past a budget: counted, not kept
-        m_store.count(n, msg, m_dirty);
-        if (msg.topic.startsWith(typePrefix)) {
-            const QString dataTopic = msg.topic.mid(typePrefix.size());
-            // The data topic's row shows the new type (its figures did not change).
-            if (m_checks.absorbAnnouncement(dataTopic, msg.payload, n)) {
-                if (Node* data = m_store.topic(dataTopic))
-                    data->markDirty(m_dirty);
-            }
-        }
-        if (const auto type = m_checks.typeOf(msg.topic)) {
-            m_checks.stamp(*type, msg, n);
-            if (!n->typedTouched) {
-                n->typedTouched = true;
-                typed.push_back(n);
-            }
-        }
-        m_store.keep(n, std::move(msg));
-    }
-    insertPending(withPending);
-    // Payloads of announced types must decode: check the newest one of each topic in the batch.
-    for (Node* n : typed) {
-        n->typedTouched = false;
-        m_checks.checkNewest(n);
-    }
+    const MqttTopics::Applied applied = m_topics.apply(std::move(batch), m_dirty);
+    insertPending(applied.withPending);
     if (m_figuresIntervalNs == 0)
         sayFigures();
-    if (sysChanged)
+    if (applied.statisticsChanged)
         emit brokerStatisticsChanged();
 }
 
@@ -153,7 +111,7 @@ void MqttTopicTree::sayFigures()
     QHash<Node*, std::pair<int, int>> spans;
     for (Node* n : std::exchange(m_dirty, {})) {
         n->dirty = false;
-        if (n == m_store.root() || !n->visible)
+        if (n == m_topics.store().root() || !n->visible)
             continue;
         auto it = spans.find(n->parent);
         if (it == spans.end())
@@ -174,29 +132,16 @@ void MqttTopicTree::tick(qint64 nowNs)
         m_figuresSaidNs = nowNs;
         sayFigures();
     }
-    if (m_lastTickNs == 0) {
-        m_lastTickNs = nowNs;
+    if (!m_topics.updateRates(nowNs))
         return;
-    }
-    const qint64 elapsed = nowNs - m_lastTickNs;
-    if (elapsed < 1000000000LL)
-        return;
-    m_lastTickNs = nowNs;
-    const double seconds = double(elapsed) / 1e9;
     // Walk the visible tree; one dataChanged of the rate column per parent.
-    std::vector<Node*> stack {m_store.root()};
+    std::vector<Node*> stack {m_topics.store().root()};
     while (!stack.empty()) {
         Node* parent = stack.back();
         stack.pop_back();
         for (auto& c : parent->children) {
-            Node* n = c.get();
-            n->rate = double(n->subMessages - n->subMessagesAtTick) / seconds;
-            n->subMessagesAtTick = n->subMessages;
-            n->rateHistory.push_back(float(n->rate));
-            if (n->rateHistory.size() > kRateHistory)
-                n->rateHistory.pop_front();
-            if (!n->children.empty())
-                stack.push_back(n);
+            if (!c->children.empty())
+                stack.push_back(c.get());
         }
         if (!parent->children.empty()) {
             const QModelIndex p = indexOf(parent, 0);
@@ -207,80 +152,21 @@ void MqttTopicTree::tick(qint64 nowNs)
 
 QModelIndex MqttTopicTree::indexOf(const Node* node, int column) const
 {
-    if (!node || node == m_store.root() || !node->visible)
+    if (!node || node == m_topics.store().root() || !node->visible)
         return {};
     return createIndex(node->row, column, const_cast<Node*>(node));
 }
 
 QModelIndex MqttTopicTree::indexOf(const QString& topic, int column) const
 {
-    return indexOf(m_store.topic(topic), column);
-}
-
-std::optional<RosMsgTypeInfo> MqttTopicTree::announcedType(const QString& topic) const
-{
-    const auto type = m_checks.typeOf(topic);
-    return type ? std::optional<RosMsgTypeInfo>(type->info) : std::nullopt;
-}
-
-std::optional<MqttTopicTree::TopicInfo> MqttTopicTree::info(const QString& topic) const
-{
-    const Node* n = m_store.topic(topic);
-    if (!n)
-        return std::nullopt;
-    TopicInfo i;
-    i.topic = topic;
-    i.messages = n->messages;
-    i.bytes = n->bytes;
-    i.retainedMessages = n->retainedMessages;
-    i.lastSize = n->lastSize;
-    i.retained = n->retained;
-    i.qos = n->qos;
-    i.lastNs = n->lastNs;
-    i.rate = n->rate;
-    if (const auto type = m_checks.typeOf(topic)) {
-        i.rosType = type->info;
-        i.typeNote = m_checks.typeNoteOf(*type);
-    }
-    i.typeError = n->typeError;
-    i.malformedPayloads = n->malformed;
-    i.payloadError = n->payloadError;
-    i.lastLatencyMs = n->lastLatencyMs;
-    i.meanLatencyMs = n->latencies.empty() ? 0 : n->latencySum / double(n->latencies.size());
-    i.latencySamples = n->latencySamples;
-    for (float r : n->rateHistory)
-        i.rateHistory << double(r);
-    return i;
-}
-
-QList<MqttTopicTree::TopicInfo> MqttTopicTree::topics() const
-{
-    QStringList names = m_store.topicNames();
-    names.sort();
-    QList<TopicInfo> out;
-    out.reserve(names.size());
-    for (const QString& t : std::as_const(names))
-        out << *info(t);
-    return out;
-}
-
-const std::deque<MqttTopicTree::HistoryEntry>* MqttTopicTree::history(const QString& topic) const
-{
-    const Node* n = m_store.topic(topic);
-    return n ? &n->history : nullptr;
-}
-
-std::shared_ptr<const RosTypeRegistry> MqttTopicTree::registryFor(const QString& topic) const
-{
-    const auto type = m_checks.typeOf(topic);
-    return type ? m_checks.registryOf(*type) : nullptr;
+    return indexOf(m_topics.store().topic(topic), column);
 }
 
 QModelIndex MqttTopicTree::index(int row, int column, const QModelIndex& parent) const
 {
     if (row < 0 || column < 0 || column >= ColumnCount)
         return {};
-    const Node* p = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : m_store.root();
+    const Node* p = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : m_topics.store().root();
     if (row >= int(p->children.size()))
         return {};
     return createIndex(row, column, p->children[size_t(row)].get());
@@ -298,7 +184,7 @@ int MqttTopicTree::rowCount(const QModelIndex& parent) const
 {
     if (parent.isValid() && parent.column() != 0)
         return 0;
-    const Node* p = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : m_store.root();
+    const Node* p = parent.isValid() ? static_cast<const Node*>(parent.internalPointer()) : m_topics.store().root();
     return int(p->children.size());
 }
 
@@ -312,7 +198,7 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
     if (!index.isValid())
         return {};
     const Node* n = static_cast<const Node*>(index.internalPointer());
-    const auto type = n->isTopic ? m_checks.typeOf(n->path) : nullptr;
+    const auto type = n->isTopic ? m_topics.checks().typeOf(n->path) : nullptr;
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
@@ -383,7 +269,7 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
         if (!n->typeError.isEmpty())
             return n->typeError;
         if (type) {
-            if (const QString note = m_checks.typeNoteOf(*type); !note.isEmpty())
+            if (const QString note = m_topics.checks().typeNoteOf(*type); !note.isEmpty())
                 return QString(n->path + u'\n' + note);
         }
         if (n->malformed && !n->payloadError.isEmpty())
@@ -410,28 +296,8 @@ QVariant MqttTopicTree::data(const QModelIndex& index, int role) const
 
 bool MqttTopicTree::hasChildren(const QString& path) const
 {
-    const Node* n = m_store.nodeAt(path);
+    const Node* n = m_topics.store().nodeAt(path);
     return n && !n->children.empty();
-}
-
-QStringList MqttTopicTree::topicsBelow(const QString& path, int limit) const
-{
-    return m_store.topicsBelow(path, limit);
-}
-
-bool MqttTopicTree::mayHoldRetained(const QString& topic) const
-{
-    return m_store.mayHoldRetained(topic);
-}
-
-QStringList MqttTopicTree::retainedBelow(const QString& path, int limit) const
-{
-    QStringList out;
-    for (const QString& t : topicsBelow(path, limit)) {
-        if (mayHoldRetained(t))
-            out << t;
-    }
-    return out;
 }
 
 Qt::ItemFlags MqttTopicTree::flags(const QModelIndex& index) const
@@ -456,12 +322,13 @@ QMimeData* MqttTopicTree::mimeData(const QModelIndexList& indexes) const
         if (!i.isValid() || i.column() != 0)
             continue;
         const Node* n = static_cast<const Node*>(i.internalPointer());
-        const QStringList names = n->isTopic ? QStringList {n->path} : topicsBelow(n->path);
+        const QStringList names
+            = n->isTopic ? QStringList {n->path} : m_topics.store().topicsBelow(n->path, 1000);
         for (const QString& t : names) {
             if (seen.contains(t))
                 continue;
             seen.insert(t);
-            const auto type = m_checks.typeOf(t);
+            const auto type = m_topics.checks().typeOf(t);
             topics.append({t, type ? type->info.name : QString()});
         }
     }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "secrets.h"
 
-#include "base/yamllimits.h"
+#include "yaml/yamllimits.h"
 
 #include <QRegularExpression>
 #include <QStringList>

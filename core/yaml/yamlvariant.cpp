@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "yamlvariant.h"
 
-#include "base/exactutf8.h"
-#include "base/yamlreader.h"
+#include "text/exactutf8.h"
+#include "yaml/yamlreader.h"
 
 #include <QVariantList>
 #include <QVariantMap>

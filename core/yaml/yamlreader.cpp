@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "yamlreader.h"
 
-#include "base/exactutf8.h"
-#include "base/regularfile.h"
-#include "base/yamllimits.h"
+#include "text/exactutf8.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 
 #include <cmath>
 #include <QFile>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mqtttopicfilter.h"
 
-#include "mqtt/mqtttopictree.h"
+#include "models/mqtttopictree.h"
 
 MqttTopicFilter::MqttTopicFilter(QObject* parent)
     : QSortFilterProxyModel(parent)

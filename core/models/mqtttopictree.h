@@ -2,8 +2,7 @@
 #pragma once
 
 #include "mqtt/mqttconnection.h"
-#include "mqtt/mqttpayloadchecks.h"
-#include "mqtt/mqtttopicstore.h"
+#include "mqtt/mqtttopics.h"
 #include "wire/mqttclientwire.h"
 
 #include <deque>
@@ -31,10 +30,11 @@ class RosTypeRegistry;
 /// decodes with the ROS 2 definitions the tree is given (setRos2Registry()). $SYS topics
 /// are kept apart as broker statistics. Batches come from the GUI drain timer (apply()); one batch
 /// gives one row-insert per parent and one dataChanged per parent, never a signal per message.
+/// The figures and budgets named here are the topic store's (topicData().store()).
 ///
-/// The tree is the Qt model of three parts: the topic store (MqttTopicStore: levels, figures,
-/// history, budgets), the payload checks (MqttPayloadChecks: announced types, latencies, payloads
-/// that do not decode) and the rows it shows of them.
+/// The tree is the Qt model of the kept topics (MqttTopics in core/mqtt: the topic store and the
+/// payload checks), which it owns and feeds: what is not rows (figures, history, types, budgets) is
+/// there, and topicData() hands it to readers that need no model.
 class MqttTopicTree : public QAbstractItemModel
 {
     Q_OBJECT
@@ -83,63 +83,25 @@ public:
     /// A $SYS statistic's value is kept up to this many bytes.
     static constexpr qsizetype kMaxSysValueBytes = MqttTopicStore::kMaxSysValueBytes;
 
-    /// What is known about one topic (for the detail pane and the discover command).
-    struct TopicInfo
-    {
-        QString topic;
-        quint64 messages = 0; ///< on this topic itself
-        quint64 bytes = 0;
-        quint64 retainedMessages = 0;
-        int lastSize = 0;
-        bool retained = false; ///< the last message was retained
-        int qos = 0;
-        qint64 lastNs = 0;
-        double rate = 0;
-        std::optional<RosMsgTypeInfo> rosType;
-        QString typeError; ///< a type announcement that could not be decoded
-        QString typeNote; ///< why payloads of the announced type show raw (a ROS 2 type not known)
-        quint64 malformedPayloads = 0; ///< did not decode (also over a decode budget), per topic
-        QString payloadError; ///< why the last malformed payload did not decode
-        double lastLatencyMs = 0;
-        double meanLatencyMs = 0;
-        quint64 latencySamples = 0;
-        QList<double> rateHistory; ///< one value per second, oldest first
-    };
+    using TopicInfo = MqttTopics::TopicInfo;
 
     /// Handles ROS topics dropped on a level (its path) or beside the tree (empty).
     using DropHandler = std::function<bool(const QMimeData* data, const QString& targetPath)>;
 
     explicit MqttTopicTree(QObject* parent = nullptr);
     void setDropHandler(DropHandler handler) { m_dropHandler = std::move(handler); }
-    /// Every topic at or below a level (a topic itself, or all topics of a subtree).
-    QStringList topicsBelow(const QString& path, int limit = 1000) const;
-    /// Whether the broker may keep a retained message for the topic: one arrived retained, and
-    /// the last payload is not the empty one that deletes it.
-    bool mayHoldRetained(const QString& topic) const;
-    /// The topics at or below a level that may hold a retained message (see mayHoldRetained()).
-    QStringList retainedBelow(const QString& path, int limit = 100000) const;
     /// Whether a level has levels below it.
     bool hasChildren(const QString& path) const;
     ~MqttTopicTree() override;
 
-    void setHistoryDepth(int messages) { m_store.setHistoryDepth(messages); }
-    int historyDepth() const { return m_store.historyDepth(); }
+    void setHistoryDepth(int messages) { m_topics.store().setHistoryDepth(messages); }
     /// The bytes the history of all topics may hold (payloads and kHistoryEntryOverhead each).
-    void setHistoryBudget(qint64 bytes) { m_store.setHistoryBudget(bytes); }
-    qint64 historyBudget() const { return m_store.historyBudget(); }
-    qint64 historyBytes() const { return m_store.historyBytes(); }
-    /// Payloads evicted from the history to keep it within historyBudget().
-    quint64 evictedPayloads() const { return m_store.evictedPayloads(); }
+    void setHistoryBudget(qint64 bytes) { m_topics.store().setHistoryBudget(bytes); }
     /// The topics the tree keeps at most (at least 1); a new topic past it is not added.
-    void setTopicBudget(int topics) { m_store.setTopicBudget(topics); }
-    int topicBudget() const { return m_store.topicBudget(); }
+    void setTopicBudget(int topics) { m_topics.store().setTopicBudget(topics); }
     /// The bytes the levels may take (names and paths as UTF-16, kNodeOverhead each); a new topic
     /// whose levels do not fit is not added.
-    void setStructureBudget(qint64 bytes) { m_store.setStructureBudget(bytes); }
-    qint64 structureBudget() const { return m_store.structureBudget(); }
-    qint64 structureBytes() const { return m_store.structureBytes(); }
-    /// Messages on topics not added to keep within topicBudget() and structureBudget().
-    quint64 untrackedMessages() const { return m_store.untrackedMessages(); }
+    void setStructureBudget(qint64 bytes) { m_topics.store().setStructureBudget(bytes); }
     void apply(std::vector<MqttMessage>&& batch);
     /// Updates rates once a second, and says the figures that changed since the last time once a
     /// figures interval; `nowNs` is wall-clock time.
@@ -151,25 +113,13 @@ public:
     void setFiguresInterval(int ms) { m_figuresIntervalNs = qint64(ms) * 1'000'000; }
     void clear();
 
-    int topicCount() const { return m_store.topicCount(); }
-    quint64 totalMessages() const { return m_store.totalMessages(); }
-    quint64 malformedTypeAnnouncements() const { return m_checks.malformedTypeAnnouncements(); }
-    quint64 malformedPayloads() const { return m_checks.malformedPayloads(); }
-    /// Topics whose announced ROS 2 type has no definition in the ROS 2 registry (shown raw).
-    int unknownTypeTopics() const;
     QModelIndex indexOf(const QString& topic, int column = 0) const;
-    std::optional<TopicInfo> info(const QString& topic) const;
-    /// The type mqtt_client announced for a data topic, whether or not a message came on it yet.
-    std::optional<RosMsgTypeInfo> announcedType(const QString& topic) const;
-    QList<TopicInfo> topics() const; ///< every topic, by name
-    const std::deque<HistoryEntry>* history(const QString& topic) const;
-    /// A registry able to decode the topic's payloads, when mqtt_client announced its type (for
-    /// ROS 2, the ROS 2 registry when it knows the type; else none, and TopicInfo::typeNote says so).
-    std::shared_ptr<const RosTypeRegistry> registryFor(const QString& topic) const;
     /// The ROS 2 definitions announced ROS 2 types decode with; until set, the bundled ones
     /// (Ros2Definitions::registry(), built once and shared by every tree).
     void setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry);
-    const QHash<QString, QString>& brokerStatistics() const { return m_store.statistics(); }
+    /// The kept topics the rows show: their figures, history, types and budgets (what the tree
+    /// keeps at most is set here).
+    const MqttTopics& topicData() const { return m_topics; }
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;
@@ -200,11 +150,9 @@ private:
     void insertPending(const std::vector<Node*>& withPending);
     void sayFigures();
 
-    MqttTopicStore m_store;
-    MqttPayloadChecks m_checks;
+    MqttTopics m_topics;
     std::vector<Node*> m_dirty; ///< rows whose figures changed since sayFigures()
     qint64 m_figuresIntervalNs = 0;
     qint64 m_figuresSaidNs = 0;
-    qint64 m_lastTickNs = 0;
     DropHandler m_dropHandler;
 };

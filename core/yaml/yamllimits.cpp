@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "yamllimits.h"
 
-#include "base/yamlreader.h"
+#include "yaml/yamlreader.h"
 
 #include <istream>
 #include <QLocale>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "stamptopicmodel.h"
 
-#include "base/topicmime.h"
+#include "text/topicmime.h"
 #include "latency/pipeline.h"
 #include "latency/pipelinediscovery.h"
 
