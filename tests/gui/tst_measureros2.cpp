@@ -4,8 +4,9 @@
 // that domain, shows at 1280x800 the count, median and p99 of every stage and of the total as
 // numpy computes them from the stamps the node printed.
 #include "app/gui/mainwindow.h"
-#include "models/latencystatsmodel.h"
 #include "latency/pipeline.h"
+#include "models/latencystatsmodel.h"
+#include "resulttext.h"
 #include "ros2peer.h"
 #include "ros2stampchain.h"
 #include "session/livesession.h"
@@ -88,4 +89,3 @@ private slots:
 
 QTEST_MAIN(TestMeasureRos2)
 #include "tst_measureros2.moc"
-#include "resulttext.h"

@@ -300,10 +300,10 @@ private slots:
         w.pages()->setCurrentWidget(w.measurePage());
         EcdfChart* chart = w.measurePage()->chart();
         QTRY_VERIFY(chart->series().size() >= 3);
-        const LatencyEngine& engine = w.measure()->engine();
+        const PipelineSeries& series = w.measure()->engine().pipelineSeries();
         QStringList wanted;
         for (const QString& id : chart->series())
-            wanted << engine.ecdfLabel(engine.ecdfIndex(id));
+            wanted << series.ecdfLabel(series.ecdfIndex(id));
         chart->refresh();
         for (const QString& id : chart->series())
             if (!chart->beyondText(id).isEmpty())

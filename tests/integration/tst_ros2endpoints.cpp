@@ -7,6 +7,7 @@
 #include "base/wallclock.h"
 #include "ddschild.h"
 #include "peakrss.h"
+#include "resulttext.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 
@@ -238,4 +239,3 @@ private slots:
 
 QTEST_GUILESS_MAIN(TestRos2Endpoints)
 #include "tst_ros2endpoints.moc"
-#include "resulttext.h"

@@ -12,6 +12,7 @@
 #include "clirun.h"
 #include "ddschild.h"
 #include "peakrss.h"
+#include "resulttext.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
 #include "rtpscorpus.h"
@@ -367,4 +368,3 @@ private slots:
 
 QTEST_GUILESS_MAIN(TestRos2Hostile)
 #include "tst_ros2hostile.moc"
-#include "resulttext.h"

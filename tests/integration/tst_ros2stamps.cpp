@@ -10,6 +10,7 @@
 #include "latency/latencyengine.h"
 #include "mqtt/mqttconnection.h"
 #include "pythonref.h"
+#include "resulttext.h"
 #include "ros/rosstampsource.h"
 #include "ros2/ros2participant.h"
 #include "ros2peer.h"
@@ -336,4 +337,3 @@ private slots:
 
 QTEST_GUILESS_MAIN(TestRos2Stamps)
 #include "tst_ros2stamps.moc"
-#include "resulttext.h"
