@@ -8322,6 +8322,10 @@ Exit status: 0 stopped, 1 nothing heard: no broker, no master, nobody on ROS 2 (
 Ein nicht erreichbarer Broker oder Master wird innerhalb von 5 s gemeldet; es wird weiter versucht.
 Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand auf ROS 2 (ohne --allow-empty), der Metrik-Port wurde nicht bedient oder die Messlauf-Datei nicht geschrieben, 2 falsche Optionen.</translation>
     </message>
+    <message>
+        <source>; %1 messages not timed (more between two reads than the watch keeps)</source>
+        <translation>; %1 Nachrichten nicht zeitlich erfasst (mehr zwischen zwei Lesevorgängen, als die Beobachtung behält)</translation>
+    </message>
 </context>
 <context>
     <name>WatchRules</name>

@@ -330,7 +330,9 @@ QString Ros2Graph::omittedText() const
 {
     if (omitted == 0)
         return {};
+    // Counted first: lupdate 6.4 loops forever on a template argument list (min<quint64>) among a
+    // translate()'s arguments.
+    const int count = int(std::min<quint64>(omitted, INT_MAX));
     // the text is Ros2Participant's: it keeps its translation context
-    return QCoreApplication::translate("Ros2Participant", "%n endpoint(s) not listed (over a bound)", nullptr,
-                                       int(std::min<quint64>(omitted, INT_MAX)));
+    return QCoreApplication::translate("Ros2Participant", "%n endpoint(s) not listed (over a bound)", nullptr, count);
 }
