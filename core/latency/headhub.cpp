@@ -4,6 +4,7 @@
 #include "base/eventbuffer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct HeadHub::State
 {
     mutable std::mutex mutex;
     std::vector<std::shared_ptr<HeadQueue>> taps; ///< under `mutex`
+    std::atomic<int> open {0}; ///< taps.size(), read without the lock
     std::function<void(std::size_t)> boundChanged;
 
     /// Under `mutex`.
@@ -37,10 +39,8 @@ struct HeadHub::State
 class HeadHub::HubHeadTap : public HeadTap
 {
 public:
-    HubHeadTap(std::weak_ptr<State> state, std::shared_ptr<std::atomic<int>> open,
-               std::shared_ptr<HeadQueue> queue)
+    HubHeadTap(std::weak_ptr<State> state, std::shared_ptr<HeadQueue> queue)
         : m_state(std::move(state))
-        , m_open(std::move(open))
         , m_queue(std::move(queue))
     { }
 
@@ -56,7 +56,7 @@ public:
             const std::size_t before = state->largestBound();
             auto& taps = state->taps;
             taps.erase(std::remove(taps.begin(), taps.end(), m_queue), taps.end());
-            m_open->store(int(taps.size()), std::memory_order_relaxed);
+            state->open.store(int(taps.size()), std::memory_order_relaxed);
             bound = state->largestBound();
             if (bound != before)
                 changed = state->boundChanged;
@@ -74,13 +74,11 @@ public:
 
 private:
     std::weak_ptr<State> m_state;
-    std::shared_ptr<std::atomic<int>> m_open;
     std::shared_ptr<HeadQueue> m_queue;
 };
 
 HeadHub::HeadHub(std::function<void(std::size_t largestBound)> boundChanged)
     : m_state(std::make_shared<State>())
-    , m_open(std::make_shared<std::atomic<int>>(0))
 {
     m_state->boundChanged = std::move(boundChanged);
 }
@@ -101,14 +99,19 @@ std::unique_ptr<HeadTap> HeadHub::open(std::size_t maxHeads)
         std::lock_guard<std::mutex> lock(m_state->mutex);
         const std::size_t before = m_state->largestBound();
         m_state->taps.push_back(queue);
-        m_open->store(int(m_state->taps.size()), std::memory_order_relaxed);
+        m_state->open.store(int(m_state->taps.size()), std::memory_order_relaxed);
         bound = m_state->largestBound();
         if (bound != before)
             changed = m_state->boundChanged;
     }
     if (changed)
         changed(bound);
-    return std::make_unique<HubHeadTap>(m_state, m_open, std::move(queue));
+    return std::make_unique<HubHeadTap>(m_state, std::move(queue));
+}
+
+bool HeadHub::active() const
+{
+    return m_state->open.load(std::memory_order_relaxed) > 0;
 }
 
 void HeadHub::deliver(SourceHead&& head)

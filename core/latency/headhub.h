@@ -3,7 +3,6 @@
 
 #include "latency/messagesource.h"
 
-#include <atomic>
 #include <functional>
 #include <memory>
 
@@ -23,7 +22,7 @@ public:
 
     std::unique_ptr<HeadTap> open(std::size_t maxHeads);
     /// True while a tap is open: a source checks it before it builds a head.
-    bool active() const { return m_open->load(std::memory_order_relaxed) > 0; }
+    bool active() const;
     /// Puts `head` into every open tap (a full tap drops it and counts it).
     void deliver(SourceHead&& head);
     /// Heads dropped before they reached this hub (a child process's own bound): counted in every
@@ -34,5 +33,4 @@ private:
     struct State;
     class HubHeadTap;
     std::shared_ptr<State> m_state;
-    std::shared_ptr<std::atomic<int>> m_open;
 };
