@@ -78,6 +78,14 @@ void LatencyEngine::expire(qint64 nowNs)
         ++m_revision;
 }
 
+void LatencyEngine::setClock(const ClockEstimate& estimate)
+{
+    const quint64 layout = m_series.layoutRevision();
+    m_series.setClock(estimate);
+    if (m_series.layoutRevision() != layout)
+        ++m_revision;
+}
+
 void LatencyEngine::reset()
 {
     m_joiner.reset(m_pipeline.topicCount());

@@ -30,6 +30,23 @@ QJsonObject LatencyReport::statsJson(const LatencyStats& s)
     return o;
 }
 
+QJsonObject LatencyReport::measuredJson(const PipelineSeries& series, int index)
+{
+    QJsonObject o = statsJson(series.series(index).stats());
+    o.insert(u"uncertainty_ms"_s, number(series.uncertaintyMs(index).value_or(std::nan(""))));
+    return o;
+}
+
+QJsonObject LatencyReport::clockJson(const ClockEstimate& c)
+{
+    return QJsonObject {{u"offset_ms"_s, double(c.offsetNs) / 1e6},
+                        {u"uncertainty_ms"_s, double(c.uncertaintyNs) / 1e6},
+                        {u"drift_ppm"_s, c.driftPpm},
+                        {u"best_round_trip_ms"_s, double(c.bestRoundTripNs) / 1e6},
+                        {u"probes"_s, c.probes},
+                        {u"at_ns"_s, QString::number(c.atNs)}};
+}
+
 QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped)
 {
     const Pipeline& p = engine.pipeline();
@@ -45,6 +62,8 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
         stage.insert(u"to"_s, p.topics()[s + 1]);
         stage.insert(u"crossing"_s, p.isCrossing(s));
         stage.insert(u"stats"_s, statsOf(series.stageSeries(s)));
+        if (const int corrected = series.correctedSeries(s); corrected >= 0)
+            stage.insert(u"corrected"_s, measuredJson(series, corrected));
         stages.append(stage);
     }
     doc.insert(u"stages"_s, stages);
@@ -59,6 +78,8 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
             comm.insert(u"there"_s, statsOf(series.thereSeries()));
             comm.insert(u"back"_s, statsOf(series.backSeries()));
         }
+        if (series.asymmetrySeries() >= 0)
+            comm.insert(u"asymmetry"_s, measuredJson(series, series.asymmetrySeries()));
         doc.insert(u"communication"_s, comm);
     } else {
         doc.insert(u"communication"_s, QJsonValue::Null);
@@ -76,5 +97,10 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
     doc.insert(u"clock_offset_bounds_ms"_s,
                bounds ? QJsonValue(QJsonArray {number(bounds->first), number(bounds->second)})
                       : QJsonValue(QJsonValue::Null));
+    QJsonObject clocks;
+    for (auto c = series.clocks().cbegin(); c != series.clocks().cend(); ++c)
+        clocks.insert(c.key(), clockJson(*c));
+    if (!clocks.isEmpty())
+        doc.insert(u"clocks"_s, clocks);
     return doc;
 }

@@ -22,7 +22,9 @@ bool mustNotBeNegative(const LatencyEngine::SeriesInfo& info, bool oneClock)
     case SeriesKind::OneWay:
     case SeriesKind::There:
     case SeriesKind::Back:
+    case SeriesKind::Corrected: // beyond its uncertainty: see below
         return true;
+    case SeriesKind::Asymmetry: // either way may be the longer
     case SeriesKind::ClockOffset:
     case SeriesKind::External: // measured by a bridge, not by this pipeline's order
         return false;
@@ -38,7 +40,9 @@ QList<LatencyWarning> LatencyWarnings::of(const LatencyEngine& engine)
     for (int i = 0; i < engine.seriesCount(); ++i) {
         const LatencyEngine::SeriesInfo& info = engine.info(i);
         const LatencyStats s = engine.series(i).stats();
-        if (s.count == 0 || !(s.median < 0) || !mustNotBeNegative(info, p.oneClock()))
+        // A corrected crossing may lie below zero by as much as its clocks are uncertain.
+        const double floor = -engine.pipelineSeries().uncertaintyMs(i).value_or(0);
+        if (s.count == 0 || !(s.median < floor) || !mustNotBeNegative(info, p.oneClock()))
             continue;
         out.append({info.id, info.label,
                     tr("median %1 ms: a latency cannot be negative, so the stamps' order or their hosts are "

@@ -56,6 +56,11 @@ void PipelineSeries::rebuild(const Pipeline& p, qint64 window)
     m_sameHost.clear();
     m_offsetStages = {-1, -1};
     m_stages = p.stageCount();
+    m_window = window;
+    m_crossingHosts.assign(std::size_t(m_stages), {});
+    m_corrected.assign(std::size_t(m_stages), -1);
+    m_asymmetry = -1;
+    m_uncertainty.clear();
 
     bool crossing = false;
     for (int s = 0; s < p.stageCount(); ++s) {
@@ -68,8 +73,11 @@ void PipelineSeries::rebuild(const Pipeline& p, qint64 window)
         info.crossing = p.isCrossing(s);
         info.hostFrom = p.host(s);
         info.hostTo = p.host(s + 1);
-        if (info.crossing)
+        if (info.crossing) {
             crossing = true;
+            if (!p.oneClock())
+                m_crossingHosts[std::size_t(s)] = {info.hostFrom, info.hostTo};
+        }
         else if (!info.hostFrom.isEmpty() && info.hostFrom == info.hostTo)
             m_sameHost.push_back(s);
         addSeries(std::move(info), 1e-6, window);
@@ -96,6 +104,7 @@ void PipelineSeries::rebuild(const Pipeline& p, qint64 window)
         m_oneWay = addSeries(std::move(ow), 0.5e-6, window);
         if (const auto pair = p.outAndReturnCrossings())
             addLegSeries(p, *pair, window);
+        addCorrectedSeries();
     }
     for (std::size_t i = 0; i < externalInfo.size(); ++i) {
         const int index = int(m_series.size());
@@ -137,6 +146,106 @@ void PipelineSeries::addLegSeries(const Pipeline& p, std::pair<int, int> legs, q
     m_clockOffset = addSeries(std::move(off), 0.5e-6, window);
 }
 
+ClockEstimate PipelineSeries::clockBetween(const QString& from, const QString& to) const
+{
+    const auto a = m_clocks.constFind(from);
+    const auto b = m_clocks.constFind(to);
+    if (a == m_clocks.cend() || b == m_clocks.cend())
+        return {};
+    return ClockEstimate::between(*a, *b);
+}
+
+void PipelineSeries::setClock(const ClockEstimate& estimate)
+{
+    // The prober measures the hosts a pipeline names; a bound keeps a stream of names from growing it.
+    constexpr qsizetype kMaxHosts = 256;
+    if (!estimate.isValid() || estimate.host.isEmpty()
+        || (m_clocks.size() >= kMaxHosts && !m_clocks.contains(estimate.host)))
+        return;
+    m_clocks.insert(estimate.host, estimate);
+    if (addCorrectedSeries())
+        ++m_layoutRevision;
+}
+
+int PipelineSeries::correctedSeries(int stage) const
+{
+    return stage >= 0 && std::size_t(stage) < m_corrected.size() ? m_corrected[std::size_t(stage)] : -1;
+}
+
+bool PipelineSeries::addCorrectedSeries()
+{
+    bool made = false;
+    const auto withUncertainty = [this](Info info, double msPerUnit) {
+        const int index = addSeries(std::move(info), msPerUnit, m_window);
+        auto uncertainty = std::make_shared<LatencySeries>(msPerUnit);
+        uncertainty->setWindow(m_window);
+        m_uncertainty.insert(index, std::move(uncertainty));
+        return index;
+    };
+    for (std::size_t s = 0; s < m_crossingHosts.size(); ++s) {
+        const auto& [from, to] = m_crossingHosts[s];
+        if (from.isEmpty() || m_corrected[s] >= 0 || !clockBetween(from, to).isValid())
+            continue;
+        Info info;
+        info.id = SeriesId::ofCorrected(int(s)).toString();
+        info.label = tr("%1, clocks measured").arg(m_info[s].label);
+        info.detail = m_info[s].detail;
+        info.kind = Kind::Corrected;
+        info.stage = int(s);
+        info.hostFrom = from;
+        info.hostTo = to;
+        m_corrected[s] = withUncertainty(std::move(info), 1e-6);
+        made = true;
+    }
+    const auto [out, back] = m_offsetStages;
+    if (m_asymmetry < 0 && out >= 0 && correctedSeries(out) >= 0 && correctedSeries(back) >= 0) {
+        Info info;
+        info.id = SeriesId::ofKind(Kind::Asymmetry).toString();
+        info.label = tr("path asymmetry (there − half the round trip)");
+        info.kind = Kind::Asymmetry;
+        info.hostFrom = m_crossingHosts[std::size_t(out)].first;
+        info.hostTo = m_crossingHosts[std::size_t(out)].second;
+        m_asymmetry = withUncertainty(std::move(info), 0.5e-6); // (there − back), read at half scale
+        made = true;
+    }
+    return made;
+}
+
+void PipelineSeries::appendCorrected(const std::vector<qint64>& t)
+{
+    // The corrected value of crossing s and the uncertainty it carries; nullopt while unmeasured.
+    const auto corrected = [&](std::size_t s) -> std::optional<std::pair<LatencyInt128, qint64>> {
+        const ClockEstimate c = clockBetween(m_crossingHosts[s].first, m_crossingHosts[s].second);
+        if (!c.isValid())
+            return std::nullopt;
+        return std::make_pair(span(t, s, s + 1) - c.offsetNs, c.uncertaintyNs);
+    };
+    for (std::size_t s = 0; s < m_corrected.size(); ++s) {
+        if (m_corrected[s] < 0)
+            continue;
+        if (const auto value = corrected(s)) {
+            m_series[std::size_t(m_corrected[s])]->append(saturated(value->first));
+            m_uncertainty.value(m_corrected[s])->append(value->second);
+        }
+    }
+    if (m_asymmetry < 0)
+        return;
+    const auto there = corrected(std::size_t(m_offsetStages.first));
+    const auto back = corrected(std::size_t(m_offsetStages.second));
+    if (there && back) {
+        m_series[std::size_t(m_asymmetry)]->append(saturated(there->first - back->first));
+        m_uncertainty.value(m_asymmetry)->append(saturated(LatencyInt128(there->second) + back->second));
+    }
+}
+
+std::optional<double> PipelineSeries::uncertaintyMs(int series) const
+{
+    const auto it = m_uncertainty.constFind(series);
+    if (it == m_uncertainty.cend() || (*it)->count() == 0)
+        return std::nullopt;
+    return (*it)->stats().max;
+}
+
 int PipelineSeries::external(const QString& name, qint64 window)
 {
     const QString id = SeriesId::external(name).toString();
@@ -175,18 +284,25 @@ qint64 PipelineSeries::add(const std::vector<qint64>& t)
         m_series[std::size_t(m_there)]->append(saturated(span(t, std::size_t(out), std::size_t(out) + 1)));
         m_series[std::size_t(m_back)]->append(saturated(span(t, std::size_t(back), std::size_t(back) + 1)));
     }
+    if (!m_uncertainty.isEmpty())
+        appendCorrected(t);
     return total;
 }
 
 void PipelineSeries::setWindow(qint64 samples)
 {
+    m_window = samples;
     for (auto& s : m_series)
+        s->setWindow(samples);
+    for (auto& s : m_uncertainty)
         s->setWindow(samples);
 }
 
 void PipelineSeries::clearValues()
 {
     for (auto& s : m_series)
+        s->clear();
+    for (auto& s : m_uncertainty)
         s->clear();
 }
 

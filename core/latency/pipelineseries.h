@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "clock/clockestimate.h"
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
 #include "latency/seriesid.h"
@@ -19,6 +20,11 @@ class Pipeline;
 /// a return crossing each leg on its own under one clock, else the clock offset), and the
 /// externals measured elsewhere, which survive a change of pipeline. Found by index or by their
 /// SeriesId text; an ECDF chart draws them.
+///
+/// With the hosts' clocks measured (setClock(), from the clock service's probes), each crossing
+/// also has its one-way latency corrected by the offset between its two hosts, each value with the
+/// uncertainty of the estimate it was corrected by; with an outbound and a return crossing, their
+/// asymmetry beside the paper's derived round trip.
 class PipelineSeries final : public EcdfSource
 {
     Q_DECLARE_TR_FUNCTIONS(PipelineSeries)
@@ -53,6 +59,14 @@ public:
     /// Empties every series; the layout stays.
     void clearValues();
 
+    /// What the clock of `estimate.host` is known to be, relative to the prober: every later sample
+    /// corrects the crossings between two hosts with estimates by their offset. The corrected
+    /// series of a crossing is made when both its hosts first have one. Kept across rebuilds.
+    void setClock(const ClockEstimate& estimate);
+    const QHash<QString, ClockEstimate>& clocks() const { return m_clocks; }
+    /// The offset of `to`'s clock relative to `from`'s; invalid unless both were measured.
+    ClockEstimate clockBetween(const QString& from, const QString& to) const;
+
     int count() const { return int(m_series.size()); }
     const Info& info(int series) const { return m_info[std::size_t(series)]; }
     const LatencySeries& series(int series) const { return *m_series[std::size_t(series)]; }
@@ -67,6 +81,13 @@ public:
     /// as its own one-way latency; -1 otherwise (then there may be a clock offset instead).
     int thereSeries() const { return m_there; }
     int backSeries() const { return m_back; }
+    /// The crossing `stage` corrected by the measured clocks; -1 when not (yet) measured.
+    int correctedSeries(int stage) const;
+    /// (corrected there − corrected back) / 2; -1 without both corrected legs.
+    int asymmetrySeries() const { return m_asymmetry; }
+    /// How far the values of a Corrected or Asymmetry series can be off, in ms: the largest
+    /// uncertainty any value in its window was corrected with. nullopt for other series, or none.
+    std::optional<double> uncertaintyMs(int series) const;
     /// Where the clock offset can lie, in ms, over the window: each sample bounds it by
     /// [-(return leg), outbound leg] (the legs take no negative time), so the interval is
     /// [-min return, min outbound]. An offset and a difference of the legs cannot be told apart
@@ -84,6 +105,10 @@ private:
     int addSeries(Info info, double msPerUnit, qint64 window);
     /// The figures of an outbound and a return crossing: there and back (one clock) or the offset.
     void addLegSeries(const Pipeline& pipeline, std::pair<int, int> legs, qint64 window);
+    /// The corrected series of every crossing whose hosts both have a clock, and the asymmetry;
+    /// true when one was made.
+    bool addCorrectedSeries();
+    void appendCorrected(const std::vector<qint64>& times);
 
     std::vector<Info> m_info;
     std::vector<std::unique_ptr<LatencySeries>> m_series;
@@ -97,5 +122,13 @@ private:
     int m_back = -1;
     std::vector<int> m_sameHost;
     std::pair<int, int> m_offsetStages {-1, -1};
+    qint64 m_window = 0;
+    /// Crossings by stage: (from host, to host); their corrected series, -1 while not measured.
+    std::vector<std::pair<QString, QString>> m_crossingHosts;
+    std::vector<int> m_corrected;
+    int m_asymmetry = -1;
+    QHash<QString, ClockEstimate> m_clocks;
+    /// Per Corrected or Asymmetry series: the uncertainty each value carried, in the series' unit.
+    QHash<int, std::shared_ptr<LatencySeries>> m_uncertainty;
     quint64 m_layoutRevision = 0;
 };

@@ -6,6 +6,7 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr QStringView stagePrefix = u"stage:";
 constexpr QStringView externalPrefix = u"ext:";
+constexpr QStringView correctedPrefix = u"corrected:";
 constexpr std::pair<SeriesKind, QStringView> fixedIds[] = {
     {SeriesKind::Total, u"total"},
     {SeriesKind::RoundTrip, u"round_trip"},
@@ -13,7 +14,16 @@ constexpr std::pair<SeriesKind, QStringView> fixedIds[] = {
     {SeriesKind::ClockOffset, u"clock_offset"},
     {SeriesKind::There, u"there"},
     {SeriesKind::Back, u"back"},
+    {SeriesKind::Asymmetry, u"asymmetry"},
 };
+
+/// The stage index after `prefix`, or -1.
+int indexAfter(const QString& text, QStringView prefix)
+{
+    bool ok = false;
+    const int index = QStringView(text).mid(prefix.size()).toInt(&ok);
+    return ok && index >= 0 ? index : -1;
+}
 } // namespace
 
 QString SeriesId::toString() const
@@ -21,6 +31,8 @@ QString SeriesId::toString() const
     switch (kind) {
     case SeriesKind::Stage:
         return stagePrefix + QString::number(stage);
+    case SeriesKind::Corrected:
+        return correctedPrefix + QString::number(stage);
     case SeriesKind::External:
         return externalPrefix + name;
     default:
@@ -33,12 +45,14 @@ QString SeriesId::toString() const
 
 std::optional<SeriesId> SeriesId::parse(const QString& text)
 {
-    if (text.startsWith(stagePrefix)) {
-        bool ok = false;
-        const int index = QStringView(text).mid(stagePrefix.size()).toInt(&ok);
-        if (!ok || index < 0)
+    for (const auto& [prefix, kind] : {std::pair {stagePrefix, SeriesKind::Stage},
+                                       std::pair {correctedPrefix, SeriesKind::Corrected}}) {
+        if (!text.startsWith(prefix))
+            continue;
+        const int index = indexAfter(text, prefix);
+        if (index < 0)
             return std::nullopt;
-        return ofStage(index);
+        return SeriesId {kind, index, {}};
     }
     if (text.startsWith(externalPrefix))
         return external(text.mid(externalPrefix.size()));

@@ -14,19 +14,22 @@ enum class SeriesKind {
     There, ///< one clock: the outbound crossing, its own one-way latency
     Back, ///< one clock: the return crossing
     External, ///< a latency measured by somebody else (mqtt_client's ~/latencies, stamped MQTT)
+    Corrected, ///< a crossing stage corrected by the hosts' measured clocks: its one-way latency
+    Asymmetry, ///< measured clocks: (there − back) / 2, what half the round trip misattributes to each way
 };
 
 /// The stable id of a latency series, the key by which charts, tables, settings and reports name
 /// it. Its text ("stage:3", "total", "round_trip", "one_way", "clock_offset", "there", "back",
-/// "ext:<name>") is built and read only here.
+/// "ext:<name>", "corrected:3", "asymmetry") is built and read only here.
 struct SeriesId
 {
     SeriesKind kind = SeriesKind::Total;
-    int stage = -1; ///< Stage: the index in the pipeline
+    int stage = -1; ///< Stage, Corrected: the stage's index in the pipeline
     QString name; ///< External: the series' name
 
     static SeriesId ofStage(int index) { return {SeriesKind::Stage, index, {}}; }
-    static SeriesId ofKind(SeriesKind kind) { return {kind, -1, {}}; } ///< not Stage or External
+    static SeriesId ofCorrected(int stage) { return {SeriesKind::Corrected, stage, {}}; }
+    static SeriesId ofKind(SeriesKind kind) { return {kind, -1, {}}; } ///< not Stage, Corrected or External
     static SeriesId external(const QString& name) { return {SeriesKind::External, -1, name}; }
 
     QString toString() const;

@@ -25,6 +25,18 @@ QString LatencyStatsModel::offsetUncertaintyText(const std::optional<std::pair<d
     return tr("± %1 ms").arg(msText((boundsMs->second - boundsMs->first) / 2));
 }
 
+QString LatencyStatsModel::figureText(double ms, std::optional<double> uncertaintyMs)
+{
+    if (uncertaintyMs && std::abs(ms) < *uncertaintyMs)
+        return u"< "_s + msText(*uncertaintyMs);
+    return msText(ms);
+}
+
+QString LatencyStatsModel::uncertaintyText(std::optional<double> uncertaintyMs)
+{
+    return uncertaintyMs ? tr("± %1 ms").arg(msText(*uncertaintyMs)) : QString();
+}
+
 QString LatencyStatsModel::offsetExplanation(const std::optional<std::pair<double, double>>& boundsMs)
 {
     QString text;
@@ -70,7 +82,13 @@ void LatencyStatsModel::refresh(const LatencyEngine& engine)
     for (int i = 0; i < n && i < int(m_rows.size()); ++i) {
         m_rows[std::size_t(i)].info = engine.info(i);
         m_rows[std::size_t(i)].stats = engine.series(i).stats();
+        m_rows[std::size_t(i)].uncertaintyMs = engine.pipelineSeries().uncertaintyMs(i);
     }
+    // A raw crossing's tooltip names its corrected figure.
+    m_correctedMedian.clear();
+    for (const Row& r : m_rows)
+        if (r.info.kind == LatencyEngine::Kind::Corrected && r.stats.count > 0)
+            m_correctedMedian.insert(r.info.stage, {r.stats.median, r.uncertaintyMs.value_or(0)});
     if (!m_rows.empty())
         emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1),
                          {Qt::DisplayRole, ValueRole, Qt::ToolTipRole, WarningRole});
@@ -154,11 +172,14 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
                 return QString(u"⚠ "_s + r.info.label);
             if (r.info.kind == LatencyEngine::Kind::ClockOffset && m_offsetBounds)
                 return QString(r.info.label + u' ' + offsetUncertaintyText(m_offsetBounds));
+            if (r.uncertaintyMs)
+                return QString(r.info.label + u' ' + uncertaintyText(r.uncertaintyMs));
             return r.info.crossing ? QString(u"⇄ "_s + r.info.label) : r.info.label;
         }
         if (index.column() == CountColumn)
             return QString::number(s.count);
-        return msText(value());
+        // The spread is no distance from zero: only the other figures can vanish in the uncertainty.
+        return index.column() == StdColumn ? msText(value()) : figureText(value(), r.uncertaintyMs);
     case ValueRole:
         if (index.column() == SeriesColumn)
             return r.info.label;
@@ -177,32 +198,12 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
     case Qt::ToolTipRole:
         if (const auto w = m_warningOf.constFind(r.info.id); w != m_warningOf.cend())
             return QString(tr("Not a measurement: %1.").arg(*w) + u'\n' + LatencyWarnings::fixInWindow());
-        if (index.column() == SeriesColumn) {
-            if (r.info.crossing && m_oneClock)
-                return QString(r.info.detail + u'\n'
-                               + tr("Crosses from %1 to %2; both stamp with one clock: the value is its "
-                                    "one-way latency.")
-                                     .arg(r.info.hostFrom, r.info.hostTo));
-            if (r.info.crossing)
-                return QString(
-                    r.info.detail + u'\n'
-                    + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
-                         "hosts.")
-                          .arg(r.info.hostFrom, r.info.hostTo));
-            if (r.info.kind == LatencyEngine::Kind::RoundTrip)
-                return tr("Derived per sample: total minus every stage that stays on one host.");
-            if (r.info.kind == LatencyEngine::Kind::OneWay)
-                return tr("Half the round trip: the mean of both ways, as in the paper.");
-            if (r.info.kind == LatencyEngine::Kind::ClockOffset)
-                return QString(
-                    tr("((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.")
-                    + u'\n' + offsetExplanation(m_offsetBounds));
-            if (r.info.kind == LatencyEngine::Kind::There || r.info.kind == LatencyEngine::Kind::Back)
-                return tr("One clock: this direction's own one-way latency, stamp to stamp.");
-            if (r.info.kind == LatencyEngine::Kind::External)
-                return tr("Measured by the bridge itself (single-stage series).");
-            return r.info.detail;
-        }
+        if (index.column() == SeriesColumn)
+            return seriesToolTip(r);
+        if (index.column() != CountColumn && index.column() != StdColumn && r.uncertaintyMs
+            && std::abs(value()) < *r.uncertaintyMs)
+            return tr("%1 ms: smaller than its uncertainty (%2), so it cannot be told from zero.")
+                .arg(QString::number(value(), 'g', 17), uncertaintyText(r.uncertaintyMs));
         if (index.column() != CountColumn && !std::isnan(value()))
             return QString(QString::number(value(), 'g', 17) + u" ms"_s);
         return {};
@@ -215,6 +216,49 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
     default:
         return {};
     }
+}
+
+QString LatencyStatsModel::seriesToolTip(const Row& r) const
+{
+    if (r.info.kind == LatencyEngine::Kind::Corrected)
+        return QString(r.info.detail + u'\n'
+                       + tr("Stamp to stamp, corrected by the offset between the clocks of %1 and %2 that the clock "
+                            "service measured: its one-way latency, within %3.")
+                             .arg(r.info.hostFrom, r.info.hostTo, uncertaintyText(r.uncertaintyMs)));
+    if (r.info.kind == LatencyEngine::Kind::Asymmetry)
+        return tr("How much longer the way there takes than the way back, halved: what half the round trip "
+                  "(the paper's one way) misattributes to each way. Measured clocks; within %1.")
+            .arg(uncertaintyText(r.uncertaintyMs));
+    if (r.info.crossing && !m_oneClock)
+        if (const auto c = m_correctedMedian.constFind(r.info.stage); c != m_correctedMedian.cend())
+            return QString(r.info.detail + u'\n'
+                           + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
+                                "hosts. Corrected by the measured clocks (pinned above): median %3 ms %4.")
+                                 .arg(r.info.hostFrom, r.info.hostTo, msText(c->first), uncertaintyText(c->second)));
+    if (r.info.crossing && m_oneClock)
+        return QString(r.info.detail + u'\n'
+                       + tr("Crosses from %1 to %2; both stamp with one clock: the value is its "
+                            "one-way latency.")
+                             .arg(r.info.hostFrom, r.info.hostTo));
+    if (r.info.crossing)
+        return QString(
+            r.info.detail + u'\n'
+            + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
+                 "hosts.")
+                  .arg(r.info.hostFrom, r.info.hostTo));
+    if (r.info.kind == LatencyEngine::Kind::RoundTrip)
+        return tr("Derived per sample: total minus every stage that stays on one host.");
+    if (r.info.kind == LatencyEngine::Kind::OneWay)
+        return tr("Half the round trip: the mean of both ways, as in the paper.");
+    if (r.info.kind == LatencyEngine::Kind::ClockOffset)
+        return QString(
+            tr("((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.")
+            + u'\n' + offsetExplanation(m_offsetBounds));
+    if (r.info.kind == LatencyEngine::Kind::There || r.info.kind == LatencyEngine::Kind::Back)
+        return tr("One clock: this direction's own one-way latency, stamp to stamp.");
+    if (r.info.kind == LatencyEngine::Kind::External)
+        return tr("Measured by the bridge itself (single-stage series).");
+    return r.info.detail;
 }
 
 bool LatencyStatsModel::setData(const QModelIndex& index, const QVariant& value, int role)

@@ -69,6 +69,11 @@ public:
     /// The sentence for a clock offset row: where it lies, and that asymmetry and offset cannot be
     /// told apart inside that range.
     static QString offsetExplanation(const std::optional<std::pair<double, double>>& boundsMs);
+    /// A figure of a series corrected by measured clocks: msText(), or "< 0.50" when it lies within
+    /// its uncertainty of zero (it cannot be told from zero); plain msText() without an uncertainty.
+    static QString figureText(double ms, std::optional<double> uncertaintyMs);
+    /// "± 0.50 ms", what a corrected series' figures can be off by; empty without one.
+    static QString uncertaintyText(std::optional<double> uncertaintyMs);
 
 signals:
     void checkedChanged();
@@ -78,12 +83,16 @@ private:
     {
         LatencyEngine::SeriesInfo info;
         LatencyStats stats;
+        std::optional<double> uncertaintyMs; ///< corrected by measured clocks: how far off it can be
     };
+    /// The tooltip of a row's first column.
+    QString seriesToolTip(const Row& row) const;
     std::vector<Row> m_rows;
     QSet<QString> m_checked;
     quint64 m_layout = ~quint64(0);
     bool m_oneClock = false;
     std::optional<std::pair<double, double>> m_offsetBounds;
+    QHash<int, std::pair<double, double>> m_correctedMedian; ///< stage -> corrected median and its uncertainty, ms
     QList<LatencyWarning> m_warnings;
     QHash<QString, QString> m_warningOf; ///< series id -> its reasons
 };

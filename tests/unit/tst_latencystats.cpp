@@ -69,7 +69,8 @@ LatencyEngine engineFor(const SyntheticRun& run, bool withHosts, qint64 window)
 /// The lab of derivedCommunicationTwoHosts from pipeline YAML: six stamps, vehicle and cloud,
 /// `oneClock` as the YAML says. Per sample (d_out, d_back, processing) in ms; the cloud's clock runs
 /// `offsetMs` ahead.
-LatencyEngine legsLab(bool oneClock, qint64 offsetMs, const QList<std::array<qint64, 3>>& runs)
+LatencyEngine legsLab(bool oneClock, qint64 offsetMs, const QList<std::array<qint64, 3>>& runs,
+                      const QList<ClockEstimate>& clocks = {})
 {
     QByteArray yaml = "metrics_window: 0\ntopics_in_order: [/v/send, /v/bridge_out, /c/bridge_in, "
                       "/c/bridge_out, /v/bridge_in, /v/done]\nhosts: {/v/send: vehicle, /v/bridge_out: "
@@ -82,6 +83,8 @@ LatencyEngine legsLab(bool oneClock, qint64 offsetMs, const QList<std::array<qin
     if (!p)
         qFatal("%s", qPrintable(why));
     LatencyEngine engine(*p);
+    for (const ClockEstimate& c : clocks)
+        engine.setClock(c);
     const qint64 ms = 1'000'000;
     qint64 base = 1'700'000'000LL * 1'000'000'000LL;
     for (const auto& r : runs) {
@@ -309,6 +312,63 @@ private slots:
         const QString tip = model.index(offset, LatencyStatsModel::SeriesColumn).data(Qt::ToolTipRole).toString();
         QVERIFY2(tip.contains(u"between 235.00 and 260.00 ms"_s), qPrintable(tip));
         QVERIFY2(tip.contains(u"cannot be told apart"_s), qPrintable(tip));
+    }
+
+    // Measured clocks: each crossing corrected, with its uncertainty on screen and in the report;
+    // a figure within its uncertainty of zero says so instead of passing for a latency.
+    void measuredClocksCorrectTheCrossingsOnScreenAndInTheReport()
+    {
+        // Legs out 10, 20, 35 and back 20, 20, 15 ms, the cloud 250 ms ahead; the estimate is 0.3 ms
+        // short of that, ± 0.4 ms.
+        QList<ClockEstimate> clocks;
+        for (const auto& [host, offsetMs, uncertaintyMs] :
+             {std::tuple {u"vehicle"_s, 0.0, 0.1}, std::tuple {u"cloud"_s, 249.7, 0.3}}) {
+            ClockEstimate c;
+            c.host = host;
+            c.offsetNs = qint64(offsetMs * 1e6);
+            c.uncertaintyNs = qint64(uncertaintyMs * 1e6);
+            clocks << c;
+        }
+        const LatencyEngine engine
+            = legsLab(false, 250, {{10, 20, 5}, {20, 20, 7}, {35, 15, 9}, {0, 40, 1}}, clocks);
+        const PipelineSeries& series = engine.pipelineSeries();
+        const int there = series.correctedSeries(1);
+        const int back = series.correctedSeries(3);
+        QVERIFY(there >= 0 && back >= 0);
+        QCOMPARE(engine.series(there).stats().max, 35.3);
+        QCOMPARE(engine.series(back).stats().max, 39.7);
+        QCOMPARE(series.uncertaintyMs(there).value_or(0), 0.4);
+
+        LatencyStatsModel model;
+        model.refresh(engine);
+        const int row = model.rowOf(u"corrected:1"_s);
+        QCOMPARE(model.index(row, LatencyStatsModel::SeriesColumn).data().toString(),
+                 series.info(there).label + u" ± 0.40 ms"_s);
+        QVERIFY(series.info(there).label.endsWith(u", clocks measured"_s));
+        // Out 0.3 ms in the fourth sample: within its 0.4 ms, so the minimum cannot be told from zero.
+        QCOMPARE(model.index(row, LatencyStatsModel::MinColumn).data().toString(), u"< 0.40"_s);
+        QVERIFY(model.index(row, LatencyStatsModel::MinColumn).data(Qt::ToolTipRole).toString().contains(
+            u"cannot be told from zero"_s));
+        QCOMPARE(model.index(row, LatencyStatsModel::MaxColumn).data().toString(), u"35.30"_s);
+        QVERIFY(model.index(row, LatencyStatsModel::SeriesColumn).data(Qt::ToolTipRole).toString().contains(
+            u"vehicle and cloud"_s));
+        const QString raw
+            = model.index(model.rowOf(u"stage:1"_s), LatencyStatsModel::SeriesColumn).data(Qt::ToolTipRole).toString();
+        QVERIFY2(raw.contains(u"Corrected by the measured clocks"_s), qPrintable(raw));
+        // The paper's one way beside it: (there − back) / 2 is the asymmetry.
+        const int asymmetry = model.rowOf(u"asymmetry"_s);
+        QVERIFY(asymmetry >= 0);
+        // (there − back) / 2 per sample: -4.7, 0.3, 10.3, -19.7 (the 0.3 ms error of the offset in each)
+        QCOMPARE(engine.series(series.asymmetrySeries()).stats().median, -2.2);
+
+        const QJsonObject doc = LatencyReport::json(engine);
+        const QJsonObject corrected = doc.value(u"stages"_s).toArray()[1].toObject().value(u"corrected"_s).toObject();
+        QCOMPARE(corrected.value(u"max_ms"_s).toDouble(), 35.3);
+        QCOMPARE(corrected.value(u"uncertainty_ms"_s).toDouble(), 0.4);
+        QVERIFY(doc.value(u"communication"_s).toObject().contains(u"asymmetry"_s));
+        QCOMPARE(doc.value(u"clocks"_s).toObject().value(u"cloud"_s).toObject().value(u"offset_ms"_s).toDouble(),
+                 249.7);
+        QVERIFY(!doc.value(u"stages"_s).toArray()[0].toObject().contains(u"corrected"_s));
     }
 
     // Hand derivation for 1..10 ms: mean 5.5; variance sum((k - 5.5)^2) / 9 = 82.5 / 9; the

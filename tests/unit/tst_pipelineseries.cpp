@@ -19,6 +19,16 @@ Pipeline crossingTwice(bool oneClock)
     p.setOneClock(oneClock);
     return p;
 }
+
+ClockEstimate clock(const QString& host, double offsetMs, double uncertaintyMs)
+{
+    ClockEstimate e;
+    e.host = host;
+    e.offsetNs = qint64(offsetMs * 1e6);
+    e.uncertaintyNs = qint64(uncertaintyMs * 1e6);
+    e.probes = 8;
+    return e;
+}
 } // namespace
 
 class TestPipelineSeries : public QObject
@@ -63,6 +73,66 @@ private slots:
         set.add({0, 12'000'000, 17'000'000, 25'000'000});
         QCOMPARE(set.series(set.thereSeries()).stats().mean, 12.0);
         QCOMPARE(set.series(set.backSeries()).stats().mean, 8.0);
+    }
+
+    void measuredClocksCorrectEachCrossingWithItsUncertainty()
+    {
+        PipelineSeries set;
+        set.rebuild(crossingTwice(false), 0);
+        // The cloud's clock 35 ms ahead; out 20 ms (10 ms more than back), the cloud 5 ms, back 10 ms.
+        const auto sample = [&set](qint64 at) {
+            set.add({at, at + 55'000'000, at + 60'000'000, at + 35'000'000});
+        };
+        sample(0);
+        QCOMPARE(set.correctedSeries(0), -1); // nothing measured, nothing made
+        QCOMPARE(set.asymmetrySeries(), -1);
+        const quint64 layout = set.layoutRevision();
+        set.setClock(clock(u"cloud"_s, 35, 0.3));
+        QCOMPARE(set.correctedSeries(0), -1); // the vehicle's clock is not known yet
+        QCOMPARE(set.layoutRevision(), layout);
+        set.setClock(clock(u"vehicle"_s, 0, 0.2));
+        QVERIFY(set.layoutRevision() != layout);
+        QCOMPARE(set.correctedSeries(1), -1); // within the cloud: no crossing
+        const int there = set.correctedSeries(0);
+        const int back = set.correctedSeries(2);
+        QVERIFY(there >= 0 && back >= 0 && set.asymmetrySeries() >= 0);
+        QCOMPARE(set.info(there).id, u"corrected:0"_s);
+        QCOMPARE(set.info(there).kind, SeriesKind::Corrected);
+        QCOMPARE(set.indexOf(u"corrected:2"_s), back);
+        QCOMPARE(set.series(there).count(), qint64(0)); // corrected from the next sample on
+        sample(100'000'000);
+        sample(200'000'000);
+        QCOMPARE(set.series(there).stats().median, 20.0);
+        QCOMPARE(set.series(back).stats().median, 10.0);
+        QCOMPARE(set.uncertaintyMs(there), std::make_optional(0.5));
+        // The paper's derived one way puts 15 ms on each; the asymmetry is what it misattributes.
+        QCOMPARE(set.series(set.oneWaySeries()).stats().median, 15.0);
+        QCOMPARE(set.series(set.asymmetrySeries()).stats().median, 5.0);
+        QCOMPARE(set.uncertaintyMs(set.asymmetrySeries()), std::make_optional(0.5));
+        QVERIFY(!set.uncertaintyMs(set.totalSeries()));
+
+        // A later, worse estimate: the figure carries the largest uncertainty of its window.
+        set.setClock(clock(u"cloud"_s, 36, 1.3));
+        sample(300'000'000);
+        QCOMPARE(set.series(there).stats().min, 19.0);
+        QCOMPARE(set.uncertaintyMs(there), std::make_optional(1.5));
+
+        // A new pipeline keeps the clocks: its crossings are corrected at once; one clock needs none.
+        set.rebuild(crossingTwice(false), 0);
+        QVERIFY(set.correctedSeries(0) >= 0);
+        set.rebuild(crossingTwice(true), 0);
+        QCOMPARE(set.correctedSeries(0), -1);
+        QCOMPARE(set.asymmetrySeries(), -1);
+    }
+
+    void seriesIdsOfCorrectedCrossingsRoundTrip()
+    {
+        QCOMPARE(SeriesId::ofCorrected(3).toString(), u"corrected:3"_s);
+        QCOMPARE(SeriesId::parse(u"corrected:3"_s), std::make_optional(SeriesId::ofCorrected(3)));
+        QCOMPARE(SeriesId::parse(u"asymmetry"_s), std::make_optional(SeriesId::ofKind(SeriesKind::Asymmetry)));
+        QVERIFY(!SeriesId::parse(u"corrected:-1"_s));
+        QVERIFY(!SeriesId::parse(u"corrected:x"_s));
+        QCOMPARE(SeriesId::parse(u"stage:2"_s), std::make_optional(SeriesId::ofStage(2)));
     }
 
     void externalsSurviveANewPipelineAndChangeTheLayout()
