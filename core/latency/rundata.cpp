@@ -26,12 +26,15 @@ bool RunData::replay(LatencyEngine& engine, const std::function<bool()>& keepGoi
     // Asked every 65,536 stamps and every 65,536 latencies: a run of millions of either takes a while.
     const auto stop = [&keepGoing](std::size_t n) { return keepGoing && n % 65536 == 65535 && !keepGoing(); };
     std::size_t l = 0;
+    std::size_t c = 0;
     const auto ingestLatency = [&] {
         engine.ingest(LatencyValue {series[latencies[l].series], latencies[l].valueNs, latencies[l].receivedNs});
         return !stop(l++);
     };
     for (std::size_t i = 0; i < stamps.size();) {
         const qint64 drained = stamps[i].drainedNs;
+        for (; c < clocks.size() && clocks[c].drainedNs <= drained; ++c)
+            engine.setClock(clocks[c].estimate);
         for (; i < stamps.size() && stamps[i].drainedNs == drained; ++i) {
             const RecordedStamp& s = stamps[i];
             engine.ingest(topicIndex[std::size_t(s.topic)], s.sampleNs, s.timeNs, s.receivedNs);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "clock/clockestimate.h"
 #include "latency/pipeline.h"
 
 #include <functional>
@@ -63,6 +64,14 @@ struct RecordedLatency
     qint64 drainedNs = 0;
 };
 
+/// A host's clock as measured while recording (the clock service's estimate), and the drain tick
+/// after which it held: a replay corrects the samples of later ticks by it, as live did.
+struct RecordedClock
+{
+    ClockEstimate estimate;
+    qint64 drainedNs = 0;
+};
+
 /// A watch event as recorded: a link's or a bridge's state change (WatchEvent in core/watch).
 struct RecordedEvent
 {
@@ -90,6 +99,7 @@ struct RunData
     QStringList series;
     std::vector<RecordedLatency> latencies;
     std::vector<RecordedEvent> events; ///< by start time
+    std::vector<RecordedClock> clocks; ///< by drain tick; none in a run recorded without the clock service
     qint64 droppedBeforeImport = 0; ///< e.g. incomplete rows of a suite CSV
 
     /// Feeds every event to `engine` (set to the run's pipeline before) tick by tick, as live.

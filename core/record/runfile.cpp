@@ -7,6 +7,7 @@
 #include "record/runfilesql.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -41,6 +42,11 @@ QString factorsJson(const QList<std::pair<QString, QString>>& factors)
         ? QString()
         : QString::fromUtf8(QJsonDocument(RunInfo::levelsJson(factors)).toJson(QJsonDocument::Compact));
 }
+/// The hosts' clocks as measured while recording (a run written before the clock service has none).
+const QString kClocksTable = u"CREATE TABLE clocks(host TEXT NOT NULL, offset_ns INTEGER NOT NULL, "
+                             "uncertainty_ns INTEGER NOT NULL, drift_ppb INTEGER NOT NULL, "
+                             "best_round_trip_ns INTEGER NOT NULL, at_ns INTEGER NOT NULL, "
+                             "probes INTEGER NOT NULL, drained_ns INTEGER NOT NULL)"_s;
 } // namespace
 
 struct RunWriter::Private
@@ -130,6 +136,7 @@ Result<void> RunWriter::create(const QString& path, const RunInfo& info)
         u"NULL, "
         "drained_ns INTEGER NOT NULL)"_s,
         kEventsTable,
+        kClocksTable,
     };
     for (const QString& sql : schema)
         if (Result<void> done = exec(q, sql); !done)
@@ -272,6 +279,37 @@ Result<void> RunWriter::putEvents(const std::vector<RecordedEvent>& events)
     return {};
 }
 
+Result<void> RunWriter::putClocks(const std::vector<RecordedClock>& clocks)
+{
+    if (clocks.empty())
+        return {};
+    QSqlDatabase db = d->connection->db();
+    if (!db.transaction())
+        return LocatedError {db.lastError().text()};
+    QSqlQuery q(db);
+    q.prepare(u"INSERT INTO clocks(host, offset_ns, uncertainty_ns, drift_ppb, best_round_trip_ns, at_ns, probes, "
+              "drained_ns) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"_s);
+    for (const RecordedClock& c : clocks) {
+        const ClockEstimate& e = c.estimate;
+        q.bindValue(0, e.host.isNull() ? QString(u""_s) : e.host);
+        q.bindValue(1, e.offsetNs);
+        q.bindValue(2, e.uncertaintyNs);
+        q.bindValue(3, qint64(std::llround(e.driftPpm * 1000)));
+        q.bindValue(4, e.bestRoundTripNs);
+        q.bindValue(5, e.atNs);
+        q.bindValue(6, e.probes);
+        q.bindValue(7, c.drainedNs);
+        if (!q.exec()) {
+            const QString why = q.lastError().text();
+            db.rollback();
+            return LocatedError {why};
+        }
+    }
+    if (!db.commit())
+        return LocatedError {db.lastError().text()};
+    return {};
+}
+
 Result<void> RunWriter::finish(qint64 stoppedNs)
 {
     if (Result<void> set = setMeta(u"stopped_ns"_s, stoppedNs); !set)
@@ -333,6 +371,8 @@ Result<void> RunFile::write(const QString& path, const RunData& run, const Progr
             !appended)
             return cleanUp(appended.error());
         if (Result<void> put = writer.putEvents(run.events); !put)
+            return cleanUp(put.error());
+        if (Result<void> put = writer.putClocks(run.clocks); !put)
             return cleanUp(put.error());
         if (Result<void> finished = writer.finish(run.info.stoppedNs); !finished)
             return cleanUp(finished.error());

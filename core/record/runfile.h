@@ -54,6 +54,8 @@ public:
     /// and start) gets its end. So an event is in the file from its start, and a killed recorder
     /// leaves it open rather than lost.
     Result<void> putEvents(const std::vector<RecordedEvent>& events);
+    /// Writes the hosts' clocks as measured (each with the drain tick after which it held).
+    Result<void> putClocks(const std::vector<RecordedClock>& clocks);
     Result<void> setMeta(const QString& key, const QVariant& value);
     /// Records the stop time and makes the file self-contained.
     Result<void> finish(qint64 stoppedNs);

@@ -53,6 +53,9 @@ const QHash<QString, QStringList>& formatTables()
         {u"latencies"_s, {u"series"_s, u"value_ns"_s, u"received_ns"_s, u"drained_ns"_s}},
         {u"events"_s,
          {u"subject"_s, u"start_ns"_s, u"end_ns"_s, u"level"_s, u"reasons"_s, u"detail"_s, u"json"_s}},
+        {u"clocks"_s,
+         {u"host"_s, u"offset_ns"_s, u"uncertainty_ns"_s, u"drift_ppb"_s, u"best_round_trip_ns"_s, u"at_ns"_s,
+          u"probes"_s, u"drained_ns"_s}},
     };
     return tables;
 }
@@ -243,6 +246,52 @@ QList<std::pair<QString, QString>> factorsOf(const QString& json)
     return RunInfo::levelsFromJson(QJsonDocument::fromJson(json.toUtf8()).array(), kMaxFactors,
                                    kMaxFactorText);
 }
+/// Whether the file has `table` (those added to the format later are optional).
+Result<bool> hasTable(QSqlQuery& q, const QString& table)
+{
+    q.prepare(u"SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = ?"_s);
+    q.addBindValue(table);
+    if (!q.exec())
+        return LocatedError {q.lastError().text()};
+    return q.next() && q.value(0).toInt() > 0;
+}
+
+/// The hosts' clocks as measured, by drain tick; none from a run recorded without them. An
+/// estimate that is no estimate (no host, a negative uncertainty) is left out.
+Result<void> readClocks(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedClock>* clocks)
+{
+    const Result<bool> has = hasTable(q, u"clocks"_s);
+    if (!has)
+        return has.error();
+    if (!*has)
+        return {};
+    if (Result<void> done = exec(q,
+                                 u"SELECT host, offset_ns, uncertainty_ns, drift_ppb, best_round_trip_ns, at_ns, "
+                                 "probes, drained_ns FROM clocks ORDER BY drained_ns, rowid"_s);
+        !done)
+        return done;
+    constexpr int kMaxHostName = 256;
+    while (q.next()) {
+        RecordedClock c;
+        ClockEstimate& e = c.estimate;
+        e.host = q.value(0).toString().left(kMaxHostName);
+        e.offsetNs = q.value(1).toLongLong();
+        e.uncertaintyNs = q.value(2).toLongLong();
+        e.driftPpm = double(q.value(3).toLongLong()) / 1000;
+        e.bestRoundTripNs = q.value(4).toLongLong();
+        e.atNs = q.value(5).toLongLong();
+        e.probes = int(std::clamp<qint64>(q.value(6).toLongLong(), 0, std::numeric_limits<int>::max()));
+        c.drainedNs = q.value(7).toLongLong();
+        if (!guard.takeRow(2 * e.host.size()))
+            break;
+        if (!e.host.isEmpty() && e.isValid())
+            clocks->push_back(std::move(c));
+    }
+    if (q.lastError().isValid())
+        return LocatedError {q.lastError().text()};
+    return {};
+}
+
 /// The run's watch events, by start; none from a run made before they were recorded.
 Result<void> readEvents(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedEvent>* events)
 {
@@ -430,6 +479,7 @@ Result<RunData> RunFile::read(const QString& path, const Progress& progress)
         [&] { return readNames(q, guard, u"series"_s, &run.series, &seriesIndex); },
         [&] { return readValues(q, guard, topicIndex, seriesIndex, &run); },
         [&] { return readEvents(q, guard, &run.events); },
+        [&] { return readClocks(q, guard, &run.clocks); },
     };
     for (const auto& step : steps)
         if (const Result<void> done = step(); !done)

@@ -21,6 +21,7 @@ struct RunRecorder::Private
     std::mutex mutex;
     std::vector<Tick> queued; ///< guarded by mutex
     std::vector<RecordedEvent> queuedEvents; ///< guarded by mutex
+    std::vector<RecordedClock> queuedClocks; ///< guarded by mutex
     std::atomic<qint64> queuedStamps {0};
     std::atomic<qint64> committed {0};
     std::atomic<bool> recording {false};
@@ -35,10 +36,12 @@ struct RunRecorder::Private
     {
         std::vector<Tick> ticks;
         std::vector<RecordedEvent> events;
+        std::vector<RecordedClock> clocks;
         {
             std::lock_guard<std::mutex> lock(mutex);
             ticks.swap(queued);
             events.swap(queuedEvents);
+            clocks.swap(queuedClocks);
         }
         for (const Tick& t : ticks) {
             if (Result<void> appended = writer->append(t.stamps, t.latencies, t.drainedNs); !appended)
@@ -46,6 +49,8 @@ struct RunRecorder::Private
             queuedStamps.fetch_sub(qint64(t.stamps.size()));
         }
         if (Result<void> put = writer->putEvents(events); !put)
+            return put;
+        if (Result<void> put = writer->putClocks(clocks); !put)
             return put;
         committed.store(writer->stampCount());
         return {};
@@ -141,6 +146,14 @@ void RunRecorder::addEvent(const RecordedEvent& event)
         return;
     std::lock_guard<std::mutex> lock(d->mutex);
     d->queuedEvents.push_back(event);
+}
+
+void RunRecorder::addClock(const ClockEstimate& estimate, qint64 drainedNs)
+{
+    if (!d->recording)
+        return;
+    std::lock_guard<std::mutex> lock(d->mutex);
+    d->queuedClocks.push_back({estimate, drainedNs});
 }
 
 Result<void> RunRecorder::stop()

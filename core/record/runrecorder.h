@@ -27,6 +27,8 @@ public:
              qint64 drainedNs);
     /// Queues a watch event's start or end (GUI thread; cheap). Written with the next commit.
     void addEvent(const RecordedEvent& event);
+    /// A host's clock as measured, holding after the drain tick `drainedNs`.
+    void addClock(const ClockEstimate& estimate, qint64 drainedNs);
     /// Commits what is queued, records the stop time and closes the file (waits for the worker).
     Result<void> stop();
 

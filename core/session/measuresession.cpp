@@ -99,6 +99,19 @@ QString MeasureSession::ros2StampName(const QString& topic, const QSet<QString>&
     return ros1Stamps.contains(topic) || pipeline.indexOf(prefixed) >= 0 ? prefixed : topic;
 }
 
+void MeasureSession::setClock(const ClockEstimate& estimate)
+{
+    // One pending estimate per host: a newer one replaces it (a tick applies the latest).
+    for (ClockEstimate& pending : m_pendingClocks)
+        if (pending.host == estimate.host) {
+            pending = estimate;
+            return;
+        }
+    constexpr std::size_t kMaxPendingHosts = 256;
+    if (m_pendingClocks.size() < kMaxPendingHosts)
+        m_pendingClocks.push_back(estimate);
+}
+
 void MeasureSession::setRos1(bool on)
 {
     m_ros1On = on;
@@ -132,6 +145,10 @@ void MeasureSession::onDrained(qint64 nowNs)
         source->takeStamps(stamps, latencies);
     if (m_showingRun)
         return; // a recorded run is on screen: live stamps are not measured meanwhile
+    for (const ClockEstimate& clock : std::exchange(m_pendingClocks, {})) {
+        m_engine.setClock(clock);
+        m_recorder->addClock(clock, nowNs);
+    }
     m_recorder->add(stamps, latencies, nowNs);
 
     const int topicsBefore = int(m_discovery.topics().size());
@@ -306,8 +323,11 @@ Result<void> MeasureSession::startRecording(const QString& path, RunInfo info)
     info.describeThisMachine();
     if (Result<void> started = m_recorder->start(path, info); !started)
         return started;
-    // A run starts from zero, so that opening it later shows exactly what was shown live.
+    // A run starts from zero, so that opening it later shows exactly what was shown live; with the
+    // clocks known so far, which its replay applies before its first stamp.
     m_engine.reset();
+    for (const ClockEstimate& clock : m_engine.pipelineSeries().clocks())
+        m_recorder->addClock(clock, 0);
     publish();
     emit recordingChanged(true);
     return {};

@@ -67,6 +67,9 @@ public:
 
     /// The user's pipeline: from now on nothing is proposed automatically.
     void setPipeline(const Pipeline& pipeline);
+    /// A host's clock as the clock service measured it: the crossings of the samples drained from
+    /// now on are corrected by it, and a recording keeps it (so its replay corrects alike).
+    void setClock(const ClockEstimate& estimate);
     const Pipeline& pipeline() const { return m_engine.pipeline(); }
     /// Back to proposing a pipeline from the stamps seen.
     void setAutomatic();
@@ -160,6 +163,7 @@ private:
     QSet<QString> m_ros2LatencyTopics;
     RunRecorder* m_recorder;
     bool m_showingRun = false;
+    std::vector<ClockEstimate> m_pendingClocks; ///< applied at the next drain tick, before its stamps
     RunInfo m_shownRun;
     Pipeline m_livePipeline;
     bool m_liveAutomatic = true;

@@ -133,6 +133,79 @@ private slots:
         }
     }
 
+    // The clocks measured while recording are kept with their ticks, and a replay corrects the
+    // crossings from the tick they held on, as live did; a run without them reads as before.
+    void measuredClocksAreKeptAndReplayed()
+    {
+        QTemporaryDir dir;
+        RunData run = liveLikeRun(400);
+        const auto clock = [](const QString& host, qint64 offsetNs, qint64 uncertaintyNs) {
+            ClockEstimate c;
+            c.host = host;
+            c.offsetNs = offsetNs;
+            c.uncertaintyNs = uncertaintyNs;
+            c.driftPpm = -1.25;
+            c.bestRoundTripNs = 2 * uncertaintyNs;
+            c.atNs = 1'700'000'000'000'000'000;
+            c.probes = 9;
+            return c;
+        };
+        // The vehicle from the start, the cloud (40 ms ahead, as the stamps are) from the middle on.
+        const qint64 middle = run.stamps[run.stamps.size() / 2].drainedNs;
+        run.clocks = {{clock(u"vehicle"_s, 0, 100'000), 0}, {clock(u"cloud"_s, 40'000'000, 300'000), middle}};
+        const QString path = dir.filePath(u"clocks.bsrun"_s);
+        QString error;
+        QVERIFY2(noted(RunFile::write(path, run), &error), qPrintable(error));
+        const std::optional<RunData> back = noted(RunFile::read(path), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->clocks.size(), std::size_t(2));
+        const ClockEstimate& cloud = back->clocks[1].estimate;
+        QCOMPARE(cloud.host, u"cloud"_s);
+        QCOMPARE(cloud.offsetNs, qint64(40'000'000));
+        QCOMPARE(cloud.uncertaintyNs, qint64(300'000));
+        QCOMPARE(cloud.driftPpm, -1.25);
+        QCOMPARE(cloud.bestRoundTripNs, qint64(600'000));
+        QCOMPARE(cloud.atNs, 1'700'000'000'000'000'000);
+        QCOMPARE(cloud.probes, 9);
+        QCOMPARE(back->clocks[1].drainedNs, middle);
+
+        LatencyEngine engine(back->info.pipeline);
+        engine.setWindow(0);
+        back->replay(engine);
+        const PipelineSeries& series = engine.pipelineSeries();
+        const QList<int> crossings = back->info.pipeline.crossings();
+        QCOMPARE(crossings.size(), 2);
+        const int there = series.correctedSeries(crossings[0]);
+        QVERIFY(there >= 0);
+        // Corrected from the middle on: about half the samples, each its true one-way latency.
+        const qint64 corrected = engine.series(there).count();
+        QVERIFY2(corrected > engine.samples() / 3 && corrected < engine.samples() * 2 / 3,
+                 qPrintable(u"%1 of %2"_s.arg(corrected).arg(engine.samples())));
+        const LatencyStats raw = engine.series(crossings[0]).stats();
+        QVERIFY(raw.min > 40); // the raw crossing holds the 40 ms offset
+        const LatencyStats stats = engine.series(there).stats();
+        QVERIFY2(stats.min > 0 && stats.median > 15 && stats.median < 25, qPrintable(QString::number(stats.median)));
+        QCOMPARE(series.uncertaintyMs(there).value_or(0), 0.4);
+
+        // A run of a Bridgescope before the clock service: no table, no clocks, no corrected series.
+        const QString old = dir.filePath(u"old.bsrun"_s);
+        QVERIFY(QFile::copy(path, old));
+        editRun(old, {u"DROP TABLE clocks"_s});
+        const std::optional<RunData> before = noted(RunFile::read(old), &error);
+        QVERIFY2(before, qPrintable(error));
+        QVERIFY(before->clocks.empty());
+        LatencyEngine plain(before->info.pipeline);
+        before->replay(plain);
+        QCOMPARE(plain.pipelineSeries().correctedSeries(crossings[0]), -1);
+
+        // Estimates that are none (no host, a negative uncertainty) are left out, not applied.
+        editRun(path, {u"UPDATE clocks SET uncertainty_ns = -5 WHERE host = 'cloud'"_s,
+                       u"INSERT INTO clocks VALUES ('', 1, 1, 0, 1, 1, 1, 0)"_s});
+        const std::optional<RunData> hostile = noted(RunFile::read(path), &error);
+        QVERIFY2(hostile, qPrintable(error));
+        QCOMPARE(hostile->clocks.size(), std::size_t(1));
+    }
+
     // A run of millions of latencies and few stamps: the replay asks whether to go on between
     // latencies too (the latencies after the last stamp were ingested to the end, deaf to
     // Ctrl+C and SIGTERM: a CI run under ASan took 10 s to end `report`).
