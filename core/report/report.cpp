@@ -174,7 +174,29 @@ QList<Report::Row> Report::rows() const
     if (offset)
         out.append(
             {tr("clock offset"), SeriesId::ofKind(SeriesKind::ClockOffset).toString(), false, false, true});
+    // Measured clocks: each crossing corrected, and the asymmetry beside the paper's one way.
+    bool asymmetry = false;
+    for (const auto& run : m_runs) {
+        const PipelineSeries& series = run->engine->pipelineSeries();
+        asymmetry = asymmetry || series.asymmetrySeries() >= 0;
+        for (int s = 0; s < run->engine->pipeline().stageCount(); ++s) {
+            const int corrected = series.correctedSeries(s);
+            if (corrected < 0 || seen.contains(series.info(corrected).id))
+                continue;
+            seen.insert(series.info(corrected).id);
+            out.append({series.info(corrected).label, series.info(corrected).id, true, false, true});
+        }
+    }
+    if (asymmetry)
+        out.append({tr("path asymmetry (there − half the round trip)"),
+                    SeriesId::ofKind(SeriesKind::Asymmetry).toString(), false, false, true});
     return out;
+}
+
+std::optional<double> Report::uncertaintyMs(const ReportRun& run, const Row& row) const
+{
+    const int index = run.engine->indexOf(row.seriesId);
+    return index < 0 ? std::nullopt : run.engine->pipelineSeries().uncertaintyMs(index);
 }
 
 std::optional<LatencyStats> Report::stats(const ReportRun& run, const Row& row) const

@@ -70,6 +70,9 @@ public:
     QList<Row> rows() const;
     /// The statistics of `row` in `run`, or nullopt when the run has no such series.
     std::optional<LatencyStats> stats(const ReportRun& run, const Row& row) const;
+    /// How far the figures of `row` in `run` can be off: a crossing corrected by measured clocks,
+    /// or the asymmetry; nullopt for other rows.
+    std::optional<double> uncertaintyMs(const ReportRun& run, const Row& row) const;
 
 private:
     /// nullptr when `progress` cancelled it.

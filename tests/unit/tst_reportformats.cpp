@@ -217,6 +217,47 @@ private slots:
         QVERIFY(html.contains("stroke-dasharray=\"6,4\"")); // means
     }
 
+    // Issue 43: a run with measured clocks reports each crossing corrected, with its interval, the
+    // asymmetry beside the paper's one way, and the clocks themselves, in every format.
+    void measuredClocksAreReportedWithTheirIntervals()
+    {
+        RunData run = RunData::fromSamples(paperWithHosts(), SyntheticRun::paper(200, 35'000'000, 5).samples);
+        run.info.name = u"two hosts"_s;
+        for (const auto& [host, offsetNs, uncertaintyNs] :
+             {std::tuple {u"vehicle"_s, qint64(0), qint64(100'000)},
+              std::tuple {u"cloud"_s, qint64(35'000'000), qint64(300'000)}}) {
+            ClockEstimate c;
+            c.host = host;
+            c.offsetNs = offsetNs;
+            c.uncertaintyNs = uncertaintyNs;
+            run.clocks.push_back({c, 0});
+        }
+        const Report one = Report::fromRuns({run}, std::nullopt, {});
+        const QString md = QString::fromUtf8(ReportFormats::markdown(one));
+        QVERIFY2(md.contains(u"clocks measured: cloud +35.00 ms ± 0.40 ms against vehicle"_s), qPrintable(md));
+        QVERIFY2(md.contains(u", clocks measured ± 0.40 ms* |"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"path asymmetry (there − half the round trip) ± 0.40 ms"_s), qPrintable(md));
+        const QJsonObject doc = QJsonDocument::fromJson(ReportFormats::json(one)).object();
+        const QJsonArray stages = doc.value(u"stages"_s).toArray();
+        int corrected = 0;
+        for (const QJsonValue& stage : stages)
+            if (const QJsonObject c = stage.toObject().value(u"corrected"_s).toObject(); !c.isEmpty()) {
+                ++corrected;
+                // The crossings take about 19 ms each way in the synthetic run, whatever the offset.
+                QVERIFY2(qAbs(c.value(u"mean_ms"_s).toDouble() - 19) < 2, qPrintable(QString::number(c.value(u"mean_ms"_s).toDouble())));
+                QCOMPARE(c.value(u"uncertainty_ms"_s).toDouble(), 0.4);
+            }
+        QCOMPARE(corrected, 2);
+        const QString tex = QString::fromUtf8(ReportFormats::latex(one));
+        QVERIFY2(tex.contains(u"clocks measured"_s), qPrintable(tex));
+
+        // Without the clocks: as before, no corrected row, the offset estimated from the round trip.
+        run.clocks.clear();
+        const QString plain = QString::fromUtf8(ReportFormats::markdown(Report::fromRuns({run}, std::nullopt, {})));
+        QVERIFY(!plain.contains(u"clocks measured"_s));
+        QVERIFY(plain.contains(u"two clocks: offset"_s));
+    }
+
     // Issue 13: the events recorded with a run are listed in every format; a run of `watch`
     // (events, no pipeline) has no latency tables or figure.
     void eventsAreListed()
