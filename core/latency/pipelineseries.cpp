@@ -77,8 +77,7 @@ void PipelineSeries::rebuild(const Pipeline& p, qint64 window)
             crossing = true;
             if (!p.oneClock())
                 m_crossingHosts[std::size_t(s)] = {info.hostFrom, info.hostTo};
-        }
-        else if (!info.hostFrom.isEmpty() && info.hostFrom == info.hostTo)
+        } else if (!info.hostFrom.isEmpty() && info.hostFrom == info.hostTo)
             m_sameHost.push_back(s);
         addSeries(std::move(info), 1e-6, window);
     }

@@ -8,12 +8,9 @@ constexpr QStringView stagePrefix = u"stage:";
 constexpr QStringView externalPrefix = u"ext:";
 constexpr QStringView correctedPrefix = u"corrected:";
 constexpr std::pair<SeriesKind, QStringView> fixedIds[] = {
-    {SeriesKind::Total, u"total"},
-    {SeriesKind::RoundTrip, u"round_trip"},
-    {SeriesKind::OneWay, u"one_way"},
-    {SeriesKind::ClockOffset, u"clock_offset"},
-    {SeriesKind::There, u"there"},
-    {SeriesKind::Back, u"back"},
+    {SeriesKind::Total, u"total"},         {SeriesKind::RoundTrip, u"round_trip"},
+    {SeriesKind::OneWay, u"one_way"},      {SeriesKind::ClockOffset, u"clock_offset"},
+    {SeriesKind::There, u"there"},         {SeriesKind::Back, u"back"},
     {SeriesKind::Asymmetry, u"asymmetry"},
 };
 
@@ -45,8 +42,8 @@ QString SeriesId::toString() const
 
 std::optional<SeriesId> SeriesId::parse(const QString& text)
 {
-    for (const auto& [prefix, kind] : {std::pair {stagePrefix, SeriesKind::Stage},
-                                       std::pair {correctedPrefix, SeriesKind::Corrected}}) {
+    for (const auto& [prefix, kind] :
+         {std::pair {stagePrefix, SeriesKind::Stage}, std::pair {correctedPrefix, SeriesKind::Corrected}}) {
         if (!text.startsWith(prefix))
             continue;
         const int index = indexAfter(text, prefix);

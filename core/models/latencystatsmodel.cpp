@@ -221,39 +221,40 @@ QVariant LatencyStatsModel::data(const QModelIndex& index, int role) const
 QString LatencyStatsModel::seriesToolTip(const Row& r) const
 {
     if (r.info.kind == LatencyEngine::Kind::Corrected)
-        return QString(r.info.detail + u'\n'
-                       + tr("Stamp to stamp, corrected by the offset between the clocks of %1 and %2 that the clock "
-                            "service measured: its one-way latency, within %3.")
-                             .arg(r.info.hostFrom, r.info.hostTo, uncertaintyText(r.uncertaintyMs)));
+        return QString(
+            r.info.detail + u'\n'
+            + tr("Stamp to stamp, corrected by the offset between the clocks of %1 and %2 that the clock "
+                 "service measured: its one-way latency, within %3.")
+                  .arg(r.info.hostFrom, r.info.hostTo, uncertaintyText(r.uncertaintyMs)));
     if (r.info.kind == LatencyEngine::Kind::Asymmetry)
         return tr("How much longer the way there takes than the way back, halved: what half the round trip "
                   "(the paper's one way) misattributes to each way. Measured clocks; within %1.")
             .arg(uncertaintyText(r.uncertaintyMs));
     if (r.info.crossing && !m_oneClock)
         if (const auto c = m_correctedMedian.constFind(r.info.stage); c != m_correctedMedian.cend())
-            return QString(r.info.detail + u'\n'
-                           + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
-                                "hosts. Corrected by the measured clocks (pinned above): median %3 ms %4.")
-                                 .arg(r.info.hostFrom, r.info.hostTo, msText(c->first), uncertaintyText(c->second)));
+            return QString(
+                r.info.detail + u'\n'
+                + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
+                     "hosts. Corrected by the measured clocks (pinned above): median %3 ms %4.")
+                      .arg(r.info.hostFrom, r.info.hostTo, msText(c->first), uncertaintyText(c->second)));
     if (r.info.crossing && m_oneClock)
         return QString(r.info.detail + u'\n'
                        + tr("Crosses from %1 to %2; both stamp with one clock: the value is its "
                             "one-way latency.")
                              .arg(r.info.hostFrom, r.info.hostTo));
     if (r.info.crossing)
-        return QString(
-            r.info.detail + u'\n'
-            + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
-                 "hosts.")
-                  .arg(r.info.hostFrom, r.info.hostTo));
+        return QString(r.info.detail + u'\n'
+                       + tr("Crosses from %1 to %2: the raw value includes the clock offset between the "
+                            "hosts.")
+                             .arg(r.info.hostFrom, r.info.hostTo));
     if (r.info.kind == LatencyEngine::Kind::RoundTrip)
         return tr("Derived per sample: total minus every stage that stays on one host.");
     if (r.info.kind == LatencyEngine::Kind::OneWay)
         return tr("Half the round trip: the mean of both ways, as in the paper.");
     if (r.info.kind == LatencyEngine::Kind::ClockOffset)
         return QString(
-            tr("((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.")
-            + u'\n' + offsetExplanation(m_offsetBounds));
+            tr("((c_in − v_out) − (v_in − c_out)) / 2 per sample, assuming both ways take as long.") + u'\n'
+            + offsetExplanation(m_offsetBounds));
     if (r.info.kind == LatencyEngine::Kind::There || r.info.kind == LatencyEngine::Kind::Back)
         return tr("One clock: this direction's own one-way latency, stamp to stamp.");
     if (r.info.kind == LatencyEngine::Kind::External)

@@ -92,7 +92,8 @@ private:
     quint64 m_layout = ~quint64(0);
     bool m_oneClock = false;
     std::optional<std::pair<double, double>> m_offsetBounds;
-    QHash<int, std::pair<double, double>> m_correctedMedian; ///< stage -> corrected median and its uncertainty, ms
+    QHash<int, std::pair<double, double>>
+        m_correctedMedian; ///< stage -> corrected median and its uncertainty, ms
     QList<LatencyWarning> m_warnings;
     QHash<QString, QString> m_warningOf; ///< series id -> its reasons
 };

@@ -2,9 +2,9 @@
 #include "runfile.h"
 
 #include "files/atomicfile.h"
-#include "yaml/secrets.h"
 #include "latency/latencyengine.h"
 #include "record/runfilesql.h"
+#include "yaml/secrets.h"
 
 #include <cerrno>
 #include <cmath>
@@ -287,8 +287,9 @@ Result<void> RunWriter::putClocks(const std::vector<RecordedClock>& clocks)
     if (!db.transaction())
         return LocatedError {db.lastError().text()};
     QSqlQuery q(db);
-    q.prepare(u"INSERT INTO clocks(host, offset_ns, uncertainty_ns, drift_ppb, best_round_trip_ns, at_ns, probes, "
-              "drained_ns) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"_s);
+    q.prepare(
+        u"INSERT INTO clocks(host, offset_ns, uncertainty_ns, drift_ppb, best_round_trip_ns, at_ns, probes, "
+        "drained_ns) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"_s);
     for (const RecordedClock& c : clocks) {
         const ClockEstimate& e = c.estimate;
         q.bindValue(0, e.host.isNull() ? QString(u""_s) : e.host);

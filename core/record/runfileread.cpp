@@ -265,9 +265,10 @@ Result<void> readClocks(QSqlQuery& q, ReadGuard& guard, std::vector<RecordedCloc
         return has.error();
     if (!*has)
         return {};
-    if (Result<void> done = exec(q,
-                                 u"SELECT host, offset_ns, uncertainty_ns, drift_ppb, best_round_trip_ns, at_ns, "
-                                 "probes, drained_ns FROM clocks ORDER BY drained_ns, rowid"_s);
+    if (Result<void> done
+        = exec(q,
+               u"SELECT host, offset_ns, uncertainty_ns, drift_ppb, best_round_trip_ns, at_ns, "
+               "probes, drained_ns FROM clocks ORDER BY drained_ns, rowid"_s);
         !done)
         return done;
     constexpr int kMaxHostName = 256;

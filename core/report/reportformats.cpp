@@ -114,9 +114,10 @@ Table stageTable(const Report& report)
         for (const auto& run : report.runs()) {
             const std::optional<LatencyStats> s = report.stats(*run, r);
             const std::optional<double> u = report.uncertaintyMs(*run, r);
-            c.values << (!s ? QString()
-                         : u ? LatencyStatsModel::figureText(s->mean, u) + u' ' + LatencyStatsModel::uncertaintyText(u)
-                             : ms(s->mean));
+            c.values << (!s      ? QString()
+                             : u ? LatencyStatsModel::figureText(s->mean, u) + u' '
+                                 + LatencyStatsModel::uncertaintyText(u)
+                                 : ms(s->mean));
         }
         t.rows.append(c);
     }
@@ -168,8 +169,9 @@ QString measuredClocksText(const LatencyEngine& e)
                           LatencyStatsModel::uncertaintyText(double(between.uncertaintyNs) / 1e6), home);
     }
     parts.sort();
-    return parts.isEmpty() ? QString()
-                           : QCoreApplication::translate("ReportFormats", "clocks measured: %1").arg(parts.join(u"; "_s));
+    return parts.isEmpty()
+        ? QString()
+        : QCoreApplication::translate("ReportFormats", "clocks measured: %1").arg(parts.join(u"; "_s));
 }
 
 /// Title-block lines: what was measured, where, when, how much.

@@ -347,13 +347,18 @@ private slots:
         QVERIFY(series.info(there).label.endsWith(u", clocks measured"_s));
         // Out 0.3 ms in the fourth sample: within its 0.4 ms, so the minimum cannot be told from zero.
         QCOMPARE(model.index(row, LatencyStatsModel::MinColumn).data().toString(), u"< 0.40"_s);
-        QVERIFY(model.index(row, LatencyStatsModel::MinColumn).data(Qt::ToolTipRole).toString().contains(
-            u"cannot be told from zero"_s));
+        QVERIFY(model.index(row, LatencyStatsModel::MinColumn)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(u"cannot be told from zero"_s));
         QCOMPARE(model.index(row, LatencyStatsModel::MaxColumn).data().toString(), u"35.30"_s);
-        QVERIFY(model.index(row, LatencyStatsModel::SeriesColumn).data(Qt::ToolTipRole).toString().contains(
-            u"vehicle and cloud"_s));
-        const QString raw
-            = model.index(model.rowOf(u"stage:1"_s), LatencyStatsModel::SeriesColumn).data(Qt::ToolTipRole).toString();
+        QVERIFY(model.index(row, LatencyStatsModel::SeriesColumn)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(u"vehicle and cloud"_s));
+        const QString raw = model.index(model.rowOf(u"stage:1"_s), LatencyStatsModel::SeriesColumn)
+                                .data(Qt::ToolTipRole)
+                                .toString();
         QVERIFY2(raw.contains(u"Corrected by the measured clocks"_s), qPrintable(raw));
         // The paper's one way beside it: (there − back) / 2 is the asymmetry.
         const int asymmetry = model.rowOf(u"asymmetry"_s);
@@ -362,12 +367,14 @@ private slots:
         QCOMPARE(engine.series(series.asymmetrySeries()).stats().median, -2.2);
 
         const QJsonObject doc = LatencyReport::json(engine);
-        const QJsonObject corrected = doc.value(u"stages"_s).toArray()[1].toObject().value(u"corrected"_s).toObject();
+        const QJsonObject corrected
+            = doc.value(u"stages"_s).toArray()[1].toObject().value(u"corrected"_s).toObject();
         QCOMPARE(corrected.value(u"max_ms"_s).toDouble(), 35.3);
         QCOMPARE(corrected.value(u"uncertainty_ms"_s).toDouble(), 0.4);
         QVERIFY(doc.value(u"communication"_s).toObject().contains(u"asymmetry"_s));
-        QCOMPARE(doc.value(u"clocks"_s).toObject().value(u"cloud"_s).toObject().value(u"offset_ms"_s).toDouble(),
-                 249.7);
+        QCOMPARE(
+            doc.value(u"clocks"_s).toObject().value(u"cloud"_s).toObject().value(u"offset_ms"_s).toDouble(),
+            249.7);
         QVERIFY(!doc.value(u"stages"_s).toArray()[0].toObject().contains(u"corrected"_s));
     }
 

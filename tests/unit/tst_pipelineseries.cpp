@@ -129,7 +129,8 @@ private slots:
     {
         QCOMPARE(SeriesId::ofCorrected(3).toString(), u"corrected:3"_s);
         QCOMPARE(SeriesId::parse(u"corrected:3"_s), std::make_optional(SeriesId::ofCorrected(3)));
-        QCOMPARE(SeriesId::parse(u"asymmetry"_s), std::make_optional(SeriesId::ofKind(SeriesKind::Asymmetry)));
+        QCOMPARE(SeriesId::parse(u"asymmetry"_s),
+                 std::make_optional(SeriesId::ofKind(SeriesKind::Asymmetry)));
         QVERIFY(!SeriesId::parse(u"corrected:-1"_s));
         QVERIFY(!SeriesId::parse(u"corrected:x"_s));
         QCOMPARE(SeriesId::parse(u"stage:2"_s), std::make_optional(SeriesId::ofStage(2)));

@@ -234,7 +234,8 @@ private slots:
         }
         const Report one = Report::fromRuns({run}, std::nullopt, {});
         const QString md = QString::fromUtf8(ReportFormats::markdown(one));
-        QVERIFY2(md.contains(u"clocks measured: cloud +35.00 ms ± 0.40 ms against vehicle"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"clocks measured: cloud +35.00 ms ± 0.40 ms against vehicle"_s),
+                 qPrintable(md));
         QVERIFY2(md.contains(u", clocks measured ± 0.40 ms* |"_s), qPrintable(md));
         QVERIFY2(md.contains(u"path asymmetry (there − half the round trip) ± 0.40 ms"_s), qPrintable(md));
         const QJsonObject doc = QJsonDocument::fromJson(ReportFormats::json(one)).object();
@@ -244,7 +245,8 @@ private slots:
             if (const QJsonObject c = stage.toObject().value(u"corrected"_s).toObject(); !c.isEmpty()) {
                 ++corrected;
                 // The crossings take about 19 ms each way in the synthetic run, whatever the offset.
-                QVERIFY2(qAbs(c.value(u"mean_ms"_s).toDouble() - 19) < 2, qPrintable(QString::number(c.value(u"mean_ms"_s).toDouble())));
+                QVERIFY2(qAbs(c.value(u"mean_ms"_s).toDouble() - 19) < 2,
+                         qPrintable(QString::number(c.value(u"mean_ms"_s).toDouble())));
                 QCOMPARE(c.value(u"uncertainty_ms"_s).toDouble(), 0.4);
             }
         QCOMPARE(corrected, 2);
@@ -253,7 +255,8 @@ private slots:
 
         // Without the clocks: as before, no corrected row, the offset estimated from the round trip.
         run.clocks.clear();
-        const QString plain = QString::fromUtf8(ReportFormats::markdown(Report::fromRuns({run}, std::nullopt, {})));
+        const QString plain
+            = QString::fromUtf8(ReportFormats::markdown(Report::fromRuns({run}, std::nullopt, {})));
         QVERIFY(!plain.contains(u"clocks measured"_s));
         QVERIFY(plain.contains(u"two clocks: offset"_s));
     }
