@@ -42,8 +42,11 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
         const QUrl broker(Secrets::urlWithoutCredentials(lab.brokerUrl()));
         const quint16 port = quint16(broker.port(1883));
         for (auto [relay, n] : {std::pair {&vehicleRelay, 1u}, std::pair {&cloudRelay, 2u}}) {
+            LinkProfile profile = s.link;
+            if (relay == &cloudRelay)
+                profile.thereExtraMs = 0; // the way there leaves the vehicle: only its relay adds it
             Result<std::unique_ptr<LinkRelay>> started
-                = LinkRelay::start(s.link, broker.host(), port, 2u * quint32(seed) + n);
+                = LinkRelay::start(profile, broker.host(), port, 2u * quint32(seed) + n);
             if (!started)
                 return started.error();
             *relay = std::move(started).value();

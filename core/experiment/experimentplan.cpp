@@ -56,7 +56,9 @@ Result<LinkProfile> linkProfile(const YamlReader& r, const YAML::Node& n)
     LinkProfile p;
     if (!n.IsMap())
         return r.errorAt(
-            n, ExperimentPlan::tr("a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}"));
+            n,
+            ExperimentPlan::tr(
+                "a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms}"));
     for (const auto& kv : n) {
         const QString key = text(kv.first);
         const std::optional<double> v = number(kv.second);
@@ -64,11 +66,12 @@ Result<LinkProfile> linkProfile(const YamlReader& r, const YAML::Node& n)
             : key == u"jitter_ms"_s          ? &p.jitterMs
             : key == u"bandwidth_mbit"_s     ? &p.bandwidthMbit
             : key == u"loss_percent"_s       ? &p.lossPercent
+            : key == u"there_extra_ms"_s     ? &p.thereExtraMs
                                              : nullptr;
         if (!field)
             return r.errorAt(kv.first,
                              ExperimentPlan::tr("unknown link setting '%1' (known: delay_ms, jitter_ms, "
-                                                "bandwidth_mbit, loss_percent)")
+                                                "bandwidth_mbit, loss_percent, there_extra_ms)")
                                  .arg(key));
         const double max = field == &p.lossPercent ? 50 : field == &p.bandwidthMbit ? 100'000 : 10'000;
         if (!v || *v < 0 || *v > max)

@@ -16,7 +16,13 @@ struct LinkProfile
     double jitterMs = 0; ///< standard deviation of the delay
     double bandwidthMbit = 0; ///< per direction; 0: unlimited
     double lossPercent = 0; ///< of the relay's chunks, each "lost" one waits a retransmission timeout
-    bool isNone() const { return delayMs == 0 && jitterMs == 0 && bandwidthMbit == 0 && lossPercent == 0; }
+    /// Added to the way there only (the vehicle's bridge to the broker): a path whose two ways differ,
+    /// which half the round trip cannot see (`there_extra_ms`).
+    double thereExtraMs = 0;
+    bool isNone() const
+    {
+        return delayMs == 0 && jitterMs == 0 && bandwidthMbit == 0 && lossPercent == 0 && thereExtraMs == 0;
+    }
 };
 
 /// Which bridge carries the cell's data: ours, or a command that starts the lab's own.

@@ -201,7 +201,10 @@ public:
         m_upstream->setReadBufferSize(kReadBufferBytes);
         client->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         m_upstream->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        m_up = new Pipe(client, m_upstream, profile, seed, relay, this);
+        // The way there is longer by thereExtraMs: towards the broker, on the relay the vehicle uses.
+        LinkProfile up = profile;
+        up.delayMs += profile.thereExtraMs;
+        m_up = new Pipe(client, m_upstream, up, seed, relay, this);
         m_down = new Pipe(m_upstream, client, profile, seed * 7919u + 1, relay, this);
         connect(client, &QTcpSocket::disconnected, this, [this] {
             m_up->close();

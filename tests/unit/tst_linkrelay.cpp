@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <netinet/in.h>
+#include <QElapsedTimer>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
@@ -79,6 +80,46 @@ class TestLinkRelay : public QObject
 {
     Q_OBJECT
 private slots:
+    // Issue 43: `there_extra_ms` lengthens the way towards the broker only, so that a test can make
+    // a path whose two ways differ by a known amount.
+    void theWayThereCanTakeLongerThanTheWayBack()
+    {
+        QTcpServer target;
+        QVERIFY(target.listen(QHostAddress::LocalHost));
+        QTcpSocket* peer = nullptr;
+        QElapsedTimer clock;
+        qint64 arrivedThere = -1;
+        connect(&target, &QTcpServer::newConnection, this, [&] {
+            peer = target.nextPendingConnection();
+            connect(peer, &QTcpSocket::readyRead, this, [&] {
+                peer->readAll();
+                arrivedThere = clock.nsecsElapsed();
+                clock.restart();
+                peer->write("back");
+            });
+        });
+        LinkProfile profile;
+        profile.delayMs = 5;
+        profile.thereExtraMs = 30;
+        Result<std::unique_ptr<LinkRelay>> started
+            = LinkRelay::start(profile, u"127.0.0.1"_s, target.serverPort());
+        QVERIFY2(started, qPrintable(started.error().toString()));
+        const std::unique_ptr<LinkRelay> relay = std::move(started).value();
+        QTcpSocket client;
+        client.connectToHost(QHostAddress::LocalHost, relay->port());
+        QVERIFY(client.waitForConnected(5000));
+        QTRY_VERIFY(peer != nullptr);
+        qint64 back = -1;
+        connect(&client, &QTcpSocket::readyRead, this, [&] { back = clock.nsecsElapsed(); });
+        clock.start();
+        client.write("there");
+        QTRY_VERIFY(back >= 0);
+        qInfo("there %.1f ms, back %.1f ms", double(arrivedThere) / 1e6, double(back) / 1e6);
+        QVERIFY2(arrivedThere >= 35'000'000 && arrivedThere < 60'000'000,
+                 qPrintable(QString::number(arrivedThere)));
+        QVERIFY2(back >= 5'000'000 && back < 30'000'000, qPrintable(QString::number(back)));
+    }
+
     void aFloodHoldsTheMemoryBound_data()
     {
         QTest::addColumn<double>("delayMs");
