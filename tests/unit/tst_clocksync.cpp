@@ -3,9 +3,11 @@
 // `pmc -u -b 0 'GET TIME_STATUS_NP'`; anything else, and output past the bound, is "not reported".
 // Also runs stand-in programs on PATH: their output is read, a hanging one is stopped in time.
 #include "clock/clocksync.h"
+#include "clock/clocksyncreader.h"
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -133,6 +135,16 @@ private slots:
 
         script(u"chronyc"_s, "yes\n"); // endless output: stopped at the bound
         QCOMPARE(ClockSync::read(2000).source, ClockSyncState::Source::Ptp);
+
+        // The reader runs them off its owner's thread and hands the state over.
+        script(u"chronyc"_s, "printf '%s' '" + kChrony.trimmed() + "'\n");
+        ClockSyncReader reader;
+        QSignalSpy changed(&reader, &ClockSyncReader::stateChanged);
+        QCOMPARE(reader.state().text(), u"not reported"_s);
+        reader.start();
+        QVERIFY(changed.wait(5000));
+        QCOMPARE(reader.state().source, ClockSyncState::Source::Chrony);
+        QCOMPARE(changed.first().first().value<ClockSyncState>().reference, u"169.254.169.123"_s);
     }
 };
 
