@@ -61,7 +61,7 @@ std::optional<ClockProbe> ClockServer::accept(const QByteArray& bytes, const QSt
         ++m_counters.refused;
         return std::nullopt;
     }
-    if (!m_budget.allow(peer, wallClockNs())) {
+    if (!m_budget.allow(peer.isEmpty() ? reply : peer, wallClockNs())) {
         ++m_counters.overBudget;
         return std::nullopt;
     }

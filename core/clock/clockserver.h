@@ -59,9 +59,10 @@ public:
     /// This host's clock as the answers show it: `wallNs` plus the simulated offset.
     qint64 serverClockNs(qint64 wallNs) const;
 
-    /// A transport's probe: the probe when it is to be answered, or nothing (counted). `peer` is whom the
-    /// budget charges. `replyPrefix`, when not empty, is the prefix the probe's reply topic must have (MQTT);
-    /// otherwise it must have none.
+    /// A transport's probe: the probe when it is to be answered, or nothing (counted). `peer` is
+    /// whom the budget charges (empty: the probe's reply topic). `replyPrefix`, when not empty, is
+    /// the prefix the probe's reply topic must have, with more after it (MQTT); otherwise the
+    /// probe must carry none.
     std::optional<ClockProbe> accept(const QByteArray& bytes, const QString& peer,
                                      const QString& replyPrefix);
     /// The answer to `probe` received at `arrivedWallNs`, with t3 taken now: call right before sending.

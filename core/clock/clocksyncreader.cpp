@@ -36,7 +36,8 @@ void ClockSyncReader::readNow()
     connect(m_thread, &QThread::finished, this, [this, result] {
         m_thread->deleteLater();
         m_thread = nullptr;
-        const bool changed = !(*result == m_state);
+        const bool changed = !m_read || !(*result == m_state);
+        m_read = true;
         m_state = *result;
         if (changed)
             emit stateChanged(m_state);

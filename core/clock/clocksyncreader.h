@@ -26,6 +26,7 @@ public:
     const ClockSyncState& state() const { return m_state; }
 
 signals:
+    /// After the first read, and whenever a read differs from the one before.
     void stateChanged(const ClockSyncState& state);
 
 private:
@@ -34,4 +35,5 @@ private:
     QTimer m_timer;
     QThread* m_thread = nullptr; ///< the read under way, if any
     ClockSyncState m_state;
+    bool m_read = false; ///< the first read is always handed over, "not reported" too
 };
