@@ -459,6 +459,10 @@ Siehe bridgescope clock serve --help und bridgescope clock probe --help.</transl
         <source>clock takes serve or probe, not &apos;%1&apos;; see bridgescope clock --help</source>
         <translation>clock erwartet serve oder probe, nicht „%1“; siehe bridgescope clock --help</translation>
     </message>
+    <message>
+        <source>The last probe that could not be sent: %1</source>
+        <translation>Die letzte Probe, die nicht gesendet werden konnte: %1</translation>
+    </message>
 </context>
 <context>
     <name>ClockProbe</name>

@@ -384,6 +384,8 @@ int runProbe(const ProbeRequest& request)
                 .arg(request.target)
                 .arg(prober.counters().sent)
                 .arg(prober.counters().lost));
+        if (!prober.lastSendError().isEmpty())
+            err(Clock::tr("The last probe that could not be sent: %1").arg(prober.lastSendError()));
         return ExitFailed;
     }
     return status == ExitFailed ? ExitFailed : ExitOk;

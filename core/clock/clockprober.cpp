@@ -77,11 +77,11 @@ void ClockProber::sendOne()
     probe.name = host();
     prepare(probe);
     probe.t1 = wallClockNs();
-    QString error;
-    if (send(probe.encode(), &error)) {
+    if (const Status sent = send(probe.encode()); sent.ok()) {
         m_pending.insert(probe.nonce, probe.t1);
         ++m_counters.sent;
     } else {
+        m_lastSendError = sent.error().toString();
         ++m_counters.sendFailed;
     }
     emit countersChanged();

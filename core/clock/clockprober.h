@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "base/result.h"
 #include "clock/clockestimate.h"
 #include "clock/clockestimator.h"
 #include "clock/clockprobe.h"
@@ -68,6 +69,8 @@ public:
     const ClockSyncState& farSyncState() const { return m_farSync; }
     /// The name the far host answers with (empty until it answered).
     const QString& farName() const { return m_farName; }
+    /// Why the last probe that could not be sent was not (empty when none failed).
+    const QString& lastSendError() const { return m_lastSendError; }
     /// Whether every probe asked for (options().count) was sent and none is still awaited.
     bool isDone() const;
 
@@ -81,8 +84,8 @@ signals:
     void finished();
 
 protected:
-    /// Sends the probe's bytes; false and why when it could not.
-    virtual bool send(const QByteArray& bytes, QString* error) = 0;
+    /// Sends the probe's bytes, or says why it could not.
+    virtual Status send(const QByteArray& bytes) = 0;
     /// What the transport adds to a probe (the reply topic over MQTT).
     virtual void prepare(ClockProbe& probe) { Q_UNUSED(probe) }
     /// The transport is ready: the burst begins.
@@ -104,6 +107,7 @@ private:
     ClockProberCounters m_counters;
     ClockSyncState m_farSync;
     QString m_farName;
+    QString m_lastSendError;
     bool m_finished = false;
 };
 

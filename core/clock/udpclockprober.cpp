@@ -29,12 +29,11 @@ void UdpClockProber::start()
     startProbing();
 }
 
-bool UdpClockProber::send(const QByteArray& bytes, QString* error)
+Status UdpClockProber::send(const QByteArray& bytes)
 {
     if (m_socket->writeDatagram(bytes, m_address, m_port) == bytes.size())
-        return true;
-    *error = m_socket->errorString();
-    return false;
+        return {};
+    return LocatedError {m_socket->errorString()};
 }
 
 void UdpClockProber::readAnswers()

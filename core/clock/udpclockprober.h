@@ -20,7 +20,7 @@ public:
     void start() override;
 
 protected:
-    bool send(const QByteArray& bytes, QString* error) override;
+    Status send(const QByteArray& bytes) override;
 
 private:
     void readAnswers();

@@ -44,9 +44,12 @@ void MqttClockProber::onState(MqttConnection::State state, const QString& detail
     }
 }
 
-bool MqttClockProber::send(const QByteArray& bytes, QString* error)
+Status MqttClockProber::send(const QByteArray& bytes)
 {
-    return m_connection.publish(MqttClockServer::probeTopic(host()), bytes, 0, false, error);
+    QString why;
+    if (m_connection.publish(MqttClockServer::probeTopic(host()), bytes, 0, false, &why))
+        return {};
+    return LocatedError {why};
 }
 
 void MqttClockProber::prepare(ClockProbe& probe)

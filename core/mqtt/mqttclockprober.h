@@ -23,7 +23,7 @@ public:
     const MqttConnection& connection() const { return m_connection; }
 
 protected:
-    bool send(const QByteArray& bytes, QString* error) override;
+    Status send(const QByteArray& bytes) override;
     void prepare(ClockProbe& probe) override;
 
 private:
