@@ -7,6 +7,9 @@
 #include "base/wallclock.h"
 #include "clirun.h"
 #include "clock/clockprobe.h"
+#include "clock/clockserver.h"
+#include "mqtt/mqttclockprober.h"
+#include "mqtt/mqttclockserver.h"
 #include "mqtt/mqttconnection.h"
 #include "signalprocess.h"
 #include "testservers.h"
@@ -17,8 +20,10 @@
 #include <QNetworkDatagram>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSignalSpy>
 #include <QTest>
 #include <QUdpSocket>
+#include <QUrl>
 
 using namespace Qt::StringLiterals;
 
@@ -197,6 +202,49 @@ private slots:
         const CliRun::Result badName
             = CliRun::bridgescope({u"clock"_s, u"serve"_s, u"--name"_s, u"a/b"_s, u"--udp"_s, u"0"_s});
         QCOMPARE(badName.exit, 2);
+    }
+
+    void theClassesRunOnOneEventLoop()
+    {
+        // As the window runs them: service and prober on this thread's loop, no program between.
+        ClockServerOptions options;
+        options.name = u"edge"_s;
+        options.clockOffsetMs = 35;
+        ClockServer server(options);
+        QVERIFY(server.listen().ok());
+        MqttClockServer mqttServer(&server);
+        QSignalSpy serverState(&mqttServer, &MqttClockServer::stateChanged);
+        mqttServer.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QTRY_COMPARE(mqttServer.connection().state(), MqttConnection::State::Connected);
+        MqttClockProber prober(u"edge"_s, MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QVERIFY(prober.replyTopic().startsWith(MqttClockServer::replyPrefix(u"edge"_s)));
+        ClockProberOptions o;
+        o.count = 8;
+        prober.setOptions(o);
+        QSignalSpy estimates(&prober, &ClockProber::estimateChanged);
+        QSignalSpy finished(&prober, &ClockProber::finished);
+        prober.start();
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(estimates.size(), 8);
+        const ClockEstimate e = estimates.last().first().value<ClockEstimate>();
+        QCOMPARE(e.host, u"edge"_s);
+        QCOMPARE(e.probes, 8);
+        QVERIFY2(std::llabs(e.offsetNs - 35'000'000) <= e.uncertaintyNs,
+                 qPrintable(u"%1 ± %2 ns"_s.arg(e.offsetNs).arg(e.uncertaintyNs)));
+        QCOMPARE(prober.counters().answered, 8);
+        QCOMPARE(server.counters().answered, 8u);
+    }
+
+    void theBrokerPasswordIsNeverPrinted()
+    {
+        QUrl url(m_servers.brokerUrl());
+        url.setUserName(u"clockuser"_s);
+        url.setPassword(u"s3cret-pw"_s);
+        const CliRun::Result r = CliRun::bridgescope({u"clock"_s, u"probe"_s, u"--broker"_s, url.toString(),
+                                                      u"--host"_s, u"nobody"_s, u"--count"_s, u"1"_s});
+        QCOMPARE(r.exit, 1);
+        QVERIFY2(r.err.contains(u"127.0.0.1"_s), qPrintable(r.err));
+        QVERIFY(!r.out.contains(u"s3cret"_s) && !r.err.contains(u"s3cret"_s));
     }
 
     void hostileInputIsCountedNotAnswered()
