@@ -509,6 +509,10 @@ Siehe bridgescope clock serve --help und bridgescope clock probe --help.</transl
         <source>cannot listen for clock probes on UDP %1:%2: %3</source>
         <translation>auf UDP %1:%2 kann nicht auf Uhrproben gewartet werden: %3</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos; cannot name a host (1 to 64 bytes without spaces, &apos;/&apos;, &apos;+&apos; or &apos;#&apos;)</source>
+        <translation>„%1“ kann keinen Rechner benennen (1 bis 64 Bytes ohne Leerzeichen, „/“, „+“ oder „#“)</translation>
+    </message>
 </context>
 <context>
     <name>ClockSync</name>
@@ -4825,6 +4829,13 @@ factors:
     <message>
         <source>the stamp has %1 nanoseconds, not fewer than 1000000000</source>
         <translation>der Zeitstempel hat %1 Nanosekunden, nicht weniger als 1000000000</translation>
+    </message>
+</context>
+<context>
+    <name>MqttClockProber</name>
+    <message>
+        <source>&apos;%1&apos; cannot name a host (1 to 64 bytes without spaces, &apos;/&apos;, &apos;+&apos; or &apos;#&apos;)</source>
+        <translation>„%1“ kann keinen Rechner benennen (1 bis 64 Bytes ohne Leerzeichen, „/“, „+“ oder „#“)</translation>
     </message>
 </context>
 <context>

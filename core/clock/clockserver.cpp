@@ -17,6 +17,9 @@ ClockServer::~ClockServer() = default;
 
 Status ClockServer::listen()
 {
+    if (!ClockProbe::isValidName(m_options.name))
+        return LocatedError {tr("'%1' cannot name a host (1 to 64 bytes without spaces, '/', '+' or '#')")
+                                 .arg(m_options.name)};
     if (m_options.udpPort < 0)
         return {};
     m_udp = new QUdpSocket(this);

@@ -48,7 +48,7 @@ public:
     explicit ClockServer(ClockServerOptions options, QObject* parent = nullptr);
     ~ClockServer() override;
 
-    /// Binds the UDP port, if one is asked for; the error names the address.
+    /// Checks the name and binds the UDP port, if one is asked for; the error names the address.
     Status listen();
     quint16 udpPort() const;
     const ClockServerOptions& options() const { return m_options; }

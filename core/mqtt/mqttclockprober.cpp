@@ -21,6 +21,11 @@ MqttClockProber::~MqttClockProber() = default;
 
 void MqttClockProber::start()
 {
+    if (!ClockProbe::isValidName(host())) {
+        emit failed(
+            tr("'%1' cannot name a host (1 to 64 bytes without spaces, '/', '+' or '#')").arg(host()));
+        return;
+    }
     m_profile.filters = {m_replyTopic};
     m_profile.brokerStatistics = false;
     m_started = false;

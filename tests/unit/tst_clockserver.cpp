@@ -78,6 +78,16 @@ private slots:
         QCOMPARE(server->counters().answered, 8u);
     }
 
+    void refusesANameThatCannotBeATopicLevel()
+    {
+        ClockServerOptions o;
+        o.name = QStringLiteral("a/b");
+        ClockServer server(o);
+        const Status listening = server.listen();
+        QVERIFY(!listening.ok());
+        QVERIFY(listening.error().toString().contains(QStringLiteral("'a/b' cannot name a host")));
+    }
+
     void aProbeForAnotherHostIsRefused()
     {
         const auto server = startServer(0);
