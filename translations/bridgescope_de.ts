@@ -276,6 +276,276 @@ Exit-Status: 0 beendet, 1 Broker oder Master ausgefallen, 2 falsche Optionen ode
     </message>
 </context>
 <context>
+    <name>ClockCommand</name>
+    <message>
+        <source>--udp takes %1, not &apos;%2&apos;</source>
+        <translation>--udp erwartet %1, nicht „%2“</translation>
+    </message>
+    <message>
+        <source>--udp: cannot resolve &apos;%1&apos;: %2</source>
+        <translation>--udp: „%1“ lässt sich nicht auflösen: %2</translation>
+    </message>
+    <message>
+        <source>--broker: %1</source>
+        <translation>--broker: %1</translation>
+    </message>
+    <message>
+        <source>answered %1, malformed %2, refused %3, over budget %4, send failed %5</source>
+        <translation>beantwortet %1, fehlerhaft %2, abgelehnt %3, über dem Budget %4, Senden fehlgeschlagen %5</translation>
+    </message>
+    <message>
+        <source>This host&apos;s name, as pipelines name it (required).</source>
+        <translation>Der Name dieses Rechners, wie Pipelines ihn nennen (erforderlich).</translation>
+    </message>
+    <message>
+        <source>Answer probes through this broker.</source>
+        <translation>Proben über diesen Broker beantworten.</translation>
+    </message>
+    <message>
+        <source>Answer probes on this UDP port (address 127.0.0.1 unless given; port 0: a free one).</source>
+        <translation>Proben auf diesem UDP-Port beantworten (Adresse 127.0.0.1, wenn keine angegeben ist; Port 0: ein freier).</translation>
+    </message>
+    <message>
+        <source>Answer as a clock this many ms ahead (tests and demos).</source>
+        <translation>Als Uhr antworten, die so viele ms vorgeht (Tests und Demos).</translation>
+    </message>
+    <message>
+        <source>Answers four-timestamp clock probes from other hosts (bridgescope clock probe) over the broker on bridgescope/clock/NAME/probe and/or on a UDP port, with this host&apos;s sync state from chrony or linuxptp when it can read it. Runs until Ctrl+C or SIGTERM; prints its counts at the start and once a minute.
+Exit status: 0 stopped, 1 the port or the broker failed, 2 bad options.</source>
+        <translation>Beantwortet Uhrproben mit vier Zeitstempeln von anderen Rechnern (bridgescope clock probe) über den Broker auf bridgescope/clock/NAME/probe und/oder auf einem UDP-Port, mit dem Synchronisationszustand dieses Rechners von chrony oder linuxptp, wenn er lesbar ist. Läuft bis Strg+C oder SIGTERM; gibt seine Zählungen zu Beginn und einmal pro Minute aus.
+Exit-Status: 0 beendet, 1 Port oder Broker fehlgeschlagen, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>--name takes 1 to 64 bytes without spaces, &apos;/&apos;, &apos;+&apos; or &apos;#&apos;; see bridgescope clock serve --help</source>
+        <translation>--name erwartet 1 bis 64 Bytes ohne Leerzeichen, „/“, „+“ oder „#“; siehe bridgescope clock serve --help</translation>
+    </message>
+    <message>
+        <source>--clock-offset-ms takes a number of ms within a day</source>
+        <translation>--clock-offset-ms erwartet eine Zahl von ms innerhalb eines Tages</translation>
+    </message>
+    <message>
+        <source>clock serve needs --udp, --broker or both; see bridgescope clock serve --help</source>
+        <translation>clock serve braucht --udp, --broker oder beides; siehe bridgescope clock serve --help</translation>
+    </message>
+    <message>
+        <source>UDP %1:%2</source>
+        <translation>UDP %1:%2</translation>
+    </message>
+    <message>
+        <source>MQTT %1 on %2</source>
+        <translation>MQTT %1 auf %2</translation>
+    </message>
+    <message>
+        <source>Clock service %1 (clock offset %2 ms): %3</source>
+        <translation>Uhrdienst %1 (Uhrversatz %2 ms): %3</translation>
+    </message>
+    <message>
+        <source>Sync state: %1</source>
+        <translation>Synchronisationszustand: %1</translation>
+    </message>
+    <message>
+        <source>MQTT: %1</source>
+        <translation>MQTT: %1</translation>
+    </message>
+    <message>
+        <source>Clock of %1</source>
+        <translation>Uhr von %1</translation>
+    </message>
+    <message>
+        <source>offset</source>
+        <translation>Versatz</translation>
+    </message>
+    <message>
+        <source>%1 ms ± %2 ms (far clock minus ours)</source>
+        <translation>%1 ms ± %2 ms (ferne Uhr minus unsere)</translation>
+    </message>
+    <message>
+        <source>drift</source>
+        <translation>Drift</translation>
+    </message>
+    <message>
+        <source>not measured (probes span under 10 s)</source>
+        <translation>nicht gemessen (Proben umfassen weniger als 10 s)</translation>
+    </message>
+    <message>
+        <source>%1 ppm</source>
+        <translation>%1 ppm</translation>
+    </message>
+    <message>
+        <source>best round trip</source>
+        <translation>beste Umlaufzeit</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>probes</source>
+        <translation>Proben</translation>
+    </message>
+    <message>
+        <source>%1 sent, %2 answered, %3 lost, %4 unknown answers</source>
+        <translation>%1 gesendet, %2 beantwortet, %3 verloren, %4 unbekannte Antworten</translation>
+    </message>
+    <message>
+        <source>far sync state</source>
+        <translation>ferne Synchronisation</translation>
+    </message>
+    <message>
+        <source>Probe the clock service on this UDP address and port.</source>
+        <translation>Den Uhrdienst auf dieser UDP-Adresse und diesem Port proben.</translation>
+    </message>
+    <message>
+        <source>Probe through this broker (with --host).</source>
+        <translation>Über diesen Broker proben (mit --host).</translation>
+    </message>
+    <message>
+        <source>The far host&apos;s name (its clock serve --name).</source>
+        <translation>Der Name des fernen Rechners (sein clock serve --name).</translation>
+    </message>
+    <message>
+        <source>Probes to send (default 10; the first 8 in a burst).</source>
+        <translation>Zu sendende Proben (Standard 10; die ersten 8 in einem Schub).</translation>
+    </message>
+    <message>
+        <source>Between the probes after the burst (default 1000).</source>
+        <translation>Abstand der Proben nach dem Schub (Standard 1000).</translation>
+    </message>
+    <message>
+        <source>Print one JSON document.</source>
+        <translation>Ein JSON-Dokument ausgeben.</translation>
+    </message>
+    <message>
+        <source>Measures a far host&apos;s clock against ours with four-timestamp probes to its clock service (bridgescope clock serve): the offset (far minus ours) with the interval it surely lies in, the drift, the best round trip, and the far host&apos;s own sync state.
+Exit status: 0 measured, 1 nothing answered, 2 bad options.</source>
+        <translation>Misst die Uhr eines fernen Rechners gegen unsere mit Proben mit vier Zeitstempeln an seinen Uhrdienst (bridgescope clock serve): den Versatz (fern minus unsere) mit dem Intervall, in dem er sicher liegt, die Drift, die beste Umlaufzeit und den eigenen Synchronisationszustand des fernen Rechners.
+Exit-Status: 0 gemessen, 1 nichts hat geantwortet, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>clock probe needs either --udp ADDR:PORT or --broker URL --host NAME</source>
+        <translation>clock probe braucht entweder --udp ADRESSE:PORT oder --broker URL --host NAME</translation>
+    </message>
+    <message>
+        <source>--host takes the far host&apos;s name: 1 to 64 bytes without spaces, &apos;/&apos;, &apos;+&apos; or &apos;#&apos;</source>
+        <translation>--host erwartet den Namen des fernen Rechners: 1 bis 64 Bytes ohne Leerzeichen, „/“, „+“ oder „#“</translation>
+    </message>
+    <message>
+        <source>--count takes 1 to 100000 probes, --interval-ms 10 to 3600000 ms</source>
+        <translation>--count erwartet 1 bis 100000 Proben, --interval-ms 10 bis 3600000 ms</translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1 auf %2</translation>
+    </message>
+    <message>
+        <source>Cannot probe %1: %2</source>
+        <translation>%1 kann nicht geprobt werden: %2</translation>
+    </message>
+    <message>
+        <source>Nothing answered the clock probes to %1 (%2 sent, %3 lost). Is &apos;bridgescope clock serve&apos; running there?</source>
+        <translation>Niemand hat die Uhrproben an %1 beantwortet (%2 gesendet, %3 verloren). Läuft dort „bridgescope clock serve“?</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope clock serve|probe [options]
+  serve   answer clock probes on a UDP port and/or through a broker
+  probe   measure a far host&apos;s clock against ours
+See bridgescope clock serve --help and bridgescope clock probe --help.</source>
+        <translation>Aufruf: bridgescope clock serve|probe [Optionen]
+  serve   Uhrproben auf einem UDP-Port und/oder über einen Broker beantworten
+  probe   die Uhr eines fernen Rechners gegen unsere messen
+Siehe bridgescope clock serve --help und bridgescope clock probe --help.</translation>
+    </message>
+    <message>
+        <source>clock takes serve or probe, not &apos;%1&apos;; see bridgescope clock --help</source>
+        <translation>clock erwartet serve oder probe, nicht „%1“; siehe bridgescope clock --help</translation>
+    </message>
+    <message>
+        <source>The last probe that could not be sent: %1</source>
+        <translation>Die letzte Probe, die nicht gesendet werden konnte: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ClockProbe</name>
+    <message>
+        <source>a clock probe has %1 bytes, not %2</source>
+        <translation>eine Uhrprobe hat %1 Bytes, nicht %2</translation>
+    </message>
+    <message>
+        <source>not a clock probe (wrong magic)</source>
+        <translation>keine Uhrprobe (falsche Kennung)</translation>
+    </message>
+    <message>
+        <source>clock probe version %1 is not known (%2 is)</source>
+        <translation>Uhrproben-Version %1 ist unbekannt (bekannt ist %2)</translation>
+    </message>
+    <message>
+        <source>clock probe kind %1 is not known</source>
+        <translation>Uhrproben-Art %1 ist unbekannt</translation>
+    </message>
+    <message>
+        <source>the host name of a clock probe is not valid</source>
+        <translation>der Rechnername einer Uhrprobe ist ungültig</translation>
+    </message>
+    <message>
+        <source>the reply topic of a clock probe is not valid</source>
+        <translation>das Antwort-Topic einer Uhrprobe ist ungültig</translation>
+    </message>
+    <message>
+        <source>a clock probe carries server fields</source>
+        <translation>eine Uhrprobe enthält Serverfelder</translation>
+    </message>
+    <message>
+        <source>a clock probe&apos;s answer lacks its host or has t3 before t2</source>
+        <translation>der Antwort auf eine Uhrprobe fehlt der Rechner, oder t3 liegt vor t2</translation>
+    </message>
+    <message>
+        <source>the sync state of a clock probe is not valid</source>
+        <translation>der Synchronisationszustand einer Uhrprobe ist ungültig</translation>
+    </message>
+</context>
+<context>
+    <name>ClockServer</name>
+    <message>
+        <source>cannot listen for clock probes on UDP %1:%2: %3</source>
+        <translation>auf UDP %1:%2 kann nicht auf Uhrproben gewartet werden: %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot name a host (1 to 64 bytes without spaces, &apos;/&apos;, &apos;+&apos; or &apos;#&apos;)</source>
+        <translation>„%1“ kann keinen Rechner benennen (1 bis 64 Bytes ohne Leerzeichen, „/“, „+“ oder „#“)</translation>
+    </message>
+</context>
+<context>
+    <name>ClockSync</name>
+    <message>
+        <source>chrony, %1 (%2): offset %3 ms, root delay %4 ms, root dispersion %5 ms, frequency %6 ppm</source>
+        <translation>chrony, %1 (%2): Versatz %3 ms, Wurzelverzögerung %4 ms, Wurzelstreuung %5 ms, Frequenz %6 ppm</translation>
+    </message>
+    <message>
+        <source>synchronised</source>
+        <translation>synchronisiert</translation>
+    </message>
+    <message>
+        <source>not synchronised</source>
+        <translation>nicht synchronisiert</translation>
+    </message>
+    <message>
+        <source>linuxptp, %1 (%2): master offset %3 ms</source>
+        <translation>linuxptp, %1 (%2): Master-Versatz %3 ms</translation>
+    </message>
+    <message>
+        <source>grandmaster present</source>
+        <translation>Grandmaster vorhanden</translation>
+    </message>
+    <message>
+        <source>no grandmaster</source>
+        <translation>kein Grandmaster</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
+</context>
+<context>
     <name>ConfigCommand</name>
     <message>
         <source>Usage: bridgescope config &lt;command&gt; [options]
@@ -3115,6 +3385,10 @@ factors:
         <source>With --screenshot: start from the saved window and save it on exit.</source>
         <translation>Mit --screenshot: vom gespeicherten Fenster ausgehen und es beim Beenden speichern.</translation>
     </message>
+    <message>
+        <source>answer clock probes; measure a far host&apos;s clock and its uncertainty</source>
+        <translation>Uhrproben beantworten; die Uhr eines fernen Rechners und ihre Unsicherheit messen</translation>
+    </message>
 </context>
 <context>
     <name>LatencyStatsModel</name>
@@ -4555,6 +4829,13 @@ factors:
     <message>
         <source>the stamp has %1 nanoseconds, not fewer than 1000000000</source>
         <translation>der Zeitstempel hat %1 Nanosekunden, nicht weniger als 1000000000</translation>
+    </message>
+</context>
+<context>
+    <name>MqttClockProber</name>
+    <message>
+        <source>&apos;%1&apos; cannot name a host (1 to 64 bytes without spaces, &apos;/&apos;, &apos;+&apos; or &apos;#&apos;)</source>
+        <translation>„%1“ kann keinen Rechner benennen (1 bis 64 Bytes ohne Leerzeichen, „/“, „+“ oder „#“)</translation>
     </message>
 </context>
 <context>
@@ -8148,6 +8429,13 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>Namespace %1: drop MQTT topics here to bridge them below it</source>
         <translation>Namensraum %1: MQTT-Topics hier ablegen, um sie darunter zu überbrücken</translation>
+    </message>
+</context>
+<context>
+    <name>UdpClockProber</name>
+    <message>
+        <source>cannot open a UDP socket: %1</source>
+        <translation>ein UDP-Socket lässt sich nicht öffnen: %1</translation>
     </message>
 </context>
 <context>

@@ -70,6 +70,7 @@ QString bridgescopeUsage()
         {u"discover [--json] [--ros 2]"_s, Gui::tr("list ROS, ROS 2 and MQTT topics")},
         {u"bridge CONFIG.yaml"_s, Gui::tr("run a config as a reference bridge")},
         {u"probe [--sweep] [--echo]"_s, Gui::tr("round trips and throughput through the broker")},
+        {u"clock serve|probe"_s, Gui::tr("answer clock probes; measure a far host's clock and its uncertainty")},
         {u"demo [--seconds N]"_s, Gui::tr("the demo lab without a window")},
         {u"record --pipeline P -o RUN"_s, Gui::tr("record a measurement run")},
         {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},

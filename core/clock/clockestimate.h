@@ -18,7 +18,9 @@ struct ClockEstimate
     qint64 offsetNs = 0; ///< far clock minus ours
     qint64 uncertaintyNs = -1; ///< < 0: no estimate yet
     double driftPpm = 0; ///< far clock's rate minus ours, in parts per million (0 until measured)
-    qint64 bestRoundTripNs = -1; ///< the lowest-delay probe's round trip, its legs' processing excluded
+    /// The round trip (the far host's processing excluded) of the probe the estimate rests on: the
+    /// lowest-delay one, unless a later one gives the tighter bound by now (ClockEstimator).
+    qint64 bestRoundTripNs = -1;
     qint64 atNs = 0; ///< our wall clock when the estimate holds (ns since the epoch)
     int probes = 0; ///< answered probes it rests on
 

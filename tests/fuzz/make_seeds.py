@@ -207,3 +207,24 @@ put("ros2graph", "lab", b"\x00\xff" + graph_record(0, 17, "/chatter", "std_msgs/
 put("ros2graph", "one-topic-many-types", b"\x15\x20" + graph_record(0, 17, "/flood", "std_msgs/msg/String"))
 put("ros2graph", "long-names", b"\x00\x08" + b"".join(
     graph_record(3, 1, "/" + chr(97 + i) * 250, "t" * 250) for i in range(20)))
+
+# fuzz_clockprobe: probes and answers (docs/formats.md, "Clock probes"): 288 bytes, little-endian.
+def clock_probe(kind, nonce, t1, t2=0, t3=0, name="", reply="", sync=None):
+    n, r = name.encode(), reply.encode()
+    head = b"BSCK" + bytes([1, kind, len(n), len(r)]) + struct.pack("<Qqqq", nonce, t1, t2, t3)
+    body = n.ljust(64, b"\0") + r.ljust(120, b"\0")
+    if sync is None:
+        return head + body + bytes(64)
+    source, status, ref, values = sync
+    ref = ref.encode()
+    return head + body + bytes([source, status, len(ref), 0]) + struct.pack("<5q", *values) + ref.ljust(20, b"\0")
+
+t1 = 1732860000123456789
+put("clockprobe", "udp-probe", clock_probe(1, 1, t1))
+put("clockprobe", "mqtt-probe", clock_probe(1, 2, t1, name="cloud", reply="bridgescope/clock/cloud/reply/vehicle-1"))
+put("clockprobe", "answer", clock_probe(2, 1, t1, t1 + 35000000, t1 + 35020000, name="cloud"))
+put("clockprobe", "answer-chrony", clock_probe(2, 3, t1, t1 + 5, t1 + 9, name="wolke-\u00fc",
+                                               sync=(1, 0, "169.254.169.123", (-1234, 543210, 123456, -12345, 50))))
+put("clockprobe", "answer-ptp", clock_probe(2, 4, t1, t1 - 250000000, t1 - 249990000, name="edge",
+                                            sync=(2, 1, "90e2ba.fffe.2a8b3c", (-12, 0, 0, 0, 0))))
+put("clockprobe", "short", clock_probe(1, 1, t1)[:100])
