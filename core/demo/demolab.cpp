@@ -382,6 +382,14 @@ Status DemoLab::startComponents()
               QStringList {u"demo-node"_s, u"vehicle"_s, u"--size"_s, QString::number(o.payloadBytes),
                            u"--rate"_s, QString::number(o.rateHz)}
                   + common);
+    if (o.cloudOffsetMs != 0 && !credentials && caFile().isEmpty()) {
+        // Two clocks: each "host" runs the clock service on the lab's broker, the cloud's with its
+        // offset, so that the window measures the offset instead of deriving it from the round trip.
+        for (const QString& side : {u"vehicle"_s, u"cloud"_s})
+            d->launch(side + u"_clock"_s, program,
+                      {u"clock"_s, u"serve"_s, u"--name"_s, side, u"--broker"_s, d->brokerUrl,
+                       u"--clock-offset-ms"_s, side == u"cloud"_s ? offset : u"0"_s});
+    }
     for (const auto& p : d->processes)
         if (!p->waitForStarted(5000))
             return stopWith(tr("cannot start %1: %2").arg(p->program(), p->errorString()));

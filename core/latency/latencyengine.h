@@ -61,6 +61,8 @@ public:
     /// Every series, with the communication figures and the clock offset's bounds; an EcdfSource.
     /// A host's measured clock (PipelineSeries::setClock): later samples' crossings are corrected.
     void setClock(const ClockEstimate& estimate);
+    /// Forgets the clocks; setPipeline() after it makes no corrected series until one comes.
+    void clearClocks() { m_series.clearClocks(); }
     const PipelineSeries& pipelineSeries() const { return m_series; }
     int seriesCount() const { return m_series.count(); }
     const SeriesInfo& info(int series) const { return m_series.info(series); }

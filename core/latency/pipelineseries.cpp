@@ -3,6 +3,7 @@
 
 #include "latency/pipeline.h"
 
+#include <algorithm>
 #include <limits>
 
 using namespace Qt::StringLiterals;
@@ -187,7 +188,11 @@ bool PipelineSeries::addCorrectedSeries()
             continue;
         Info info;
         info.id = SeriesId::ofCorrected(int(s)).toString();
-        info.label = tr("%1, clocks measured").arg(m_info[s].label);
+        // Named by its hosts, as the paper's communication rows are; by its stage where two crossings
+        // share the same hosts.
+        const bool shared = std::count(m_crossingHosts.cbegin(), m_crossingHosts.cend(), m_crossingHosts[s]) > 1;
+        info.label = shared ? tr("%1, clocks measured").arg(m_info[s].label)
+                            : tr("communication, %1 → %2, clocks measured").arg(from, to);
         info.detail = m_info[s].detail;
         info.kind = Kind::Corrected;
         info.stage = int(s);

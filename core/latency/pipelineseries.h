@@ -64,6 +64,8 @@ public:
     /// series of a crossing is made when both its hosts first have one. Kept across rebuilds.
     void setClock(const ClockEstimate& estimate);
     const QHash<QString, ClockEstimate>& clocks() const { return m_clocks; }
+    /// Forgets every clock (another run is shown); the corrected series stay until the next rebuild.
+    void clearClocks() { m_clocks.clear(); }
     /// The offset of `to`'s clock relative to `from`'s; invalid unless both were measured.
     ClockEstimate clockBetween(const QString& from, const QString& to) const;
 

@@ -2,6 +2,7 @@
 #include "reportformats.h"
 
 #include "text/nameelider.h"
+#include "latency/clocktext.h"
 #include "latency/latencyreport.h"
 #include "models/latencystatsmodel.h"
 #include "latency/palette.h"
@@ -150,37 +151,13 @@ Table totalsTable(const Report& report)
     return shownTable(std::move(t));
 }
 
-/// The clocks the clock service measured, each against the pipeline's first host: "clocks measured:
-/// cloud +35.02 ms ± 0.41 ms against vehicle"; empty without.
-QString measuredClocksText(const LatencyEngine& e)
-{
-    const PipelineSeries& series = e.pipelineSeries();
-    const QString home = e.pipeline().host(0);
-    QStringList parts;
-    for (auto c = series.clocks().cbegin(); c != series.clocks().cend(); ++c) {
-        if (c.key() == home)
-            continue;
-        const ClockEstimate between = series.clockBetween(home, c.key());
-        if (!between.isValid())
-            continue;
-        const double offsetMs = double(between.offsetNs) / 1e6;
-        parts << QCoreApplication::translate("ReportFormats", "%1 %2 ms %3 against %4")
-                     .arg(c.key(), (offsetMs >= 0 ? u"+"_s : QString()) + LatencyStatsModel::msText(offsetMs),
-                          LatencyStatsModel::uncertaintyText(double(between.uncertaintyNs) / 1e6), home);
-    }
-    parts.sort();
-    return parts.isEmpty()
-        ? QString()
-        : QCoreApplication::translate("ReportFormats", "clocks measured: %1").arg(parts.join(u"; "_s));
-}
-
 /// Title-block lines: what was measured, where, when, how much.
 /// How the run's clocks were read: one clock (each way its own latency), or an offset estimated
 /// with how far it may be off; empty without an outbound and a return crossing.
 QString clocksText(const LatencyEngine& e)
 {
-    if (QString measured = measuredClocksText(e); !measured.isEmpty())
-        return measured;
+    if (const QString measured = ClockText::measured(e.pipelineSeries(), e.pipeline()); !measured.isEmpty())
+        return QCoreApplication::translate("ReportFormats", "clocks measured: %1").arg(measured);
     if (e.pipelineSeries().thereSeries() >= 0)
         return QCoreApplication::translate("ReportFormats",
                                            "one clock: each direction's own one-way latency, no offset");

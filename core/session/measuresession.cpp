@@ -2,6 +2,8 @@
 #include "measuresession.h"
 
 #include "base/logging.h"
+#include "latency/clocktext.h"
+#include "session/clockwatch.h"
 #include "models/latencystatsmodel.h"
 #include "mqtt/mqttconnection.h"
 #include "record/runrecorder.h"
@@ -45,6 +47,13 @@ MeasureSession::MeasureSession(const Parts& parts, QObject* parent)
     if (parts.ros2->isRunning())
         onRos2Graph(parts.ros2->graph());
     m_ros->setMasterUri(parts.rosGraph->masterUri());
+    if (parts.mqtt) {
+        // The clocks of the live pipeline's hosts, probed on the measured broker while it is connected.
+        m_clockWatch = new ClockWatch([this](const ClockEstimate& e) { setClock(e); }, this);
+        connect(m_clockWatch, &ClockWatch::problemsChanged, this,
+                [this] { setClockProblems(m_clockWatch->problems()); });
+        connect(parts.mqtt, &MqttConnection::stateChanged, this, &MeasureSession::updateClockWatch);
+    }
     m_stats->refresh(m_engine);
 }
 
@@ -112,6 +121,22 @@ void MeasureSession::setClock(const ClockEstimate& estimate)
         m_pendingClocks.push_back(estimate);
 }
 
+QString MeasureSession::clocksText() const
+{
+    const QString measured = ClockText::measured(m_engine.pipelineSeries(), m_engine.pipeline());
+    QStringList parts;
+    if (!measured.isEmpty())
+        parts << tr("Clocks measured: %1.").arg(measured);
+    if (!m_clockProblems.isEmpty())
+        parts << m_clockProblems;
+    return parts.join(u' ');
+}
+
+void MeasureSession::setClockProblems(const QString& problems)
+{
+    m_clockProblems = problems;
+}
+
 void MeasureSession::setRos1(bool on)
 {
     m_ros1On = on;
@@ -134,6 +159,23 @@ void MeasureSession::updateSubscriptions()
     for (const QString& t : std::as_const(m_ros2StampTopics))
         ros2.insert(t, ros2StampName(t, m_graphStampTopics, m_engine.pipeline()));
     m_ros2->setTopics(ros2, m_ros2LatencyTopics);
+    updateClockWatch();
+}
+
+void MeasureSession::updateClockWatch()
+{
+    if (!m_clockWatch)
+        return;
+    const Pipeline& p = m_showingRun ? m_livePipeline : m_engine.pipeline();
+    QStringList hosts;
+    if (!p.oneClock())
+        for (int t = 0; t < p.topicCount(); ++t)
+            hosts << p.host(t);
+    // Only while the broker is connected: looking at a pipeline with a broker that is not there
+    // probes nothing.
+    if (m_parts.mqtt->state() != MqttConnection::State::Connected)
+        hosts.clear();
+    m_clockWatch->watch(hosts, m_parts.mqtt->profile());
 }
 
 void MeasureSession::onDrained(qint64 nowNs)
@@ -356,10 +398,13 @@ Status MeasureSession::showRun(const RunData& run)
         m_liveAutomatic = m_automatic;
         m_liveTimeoutNs = m_engine.timeoutNs();
     }
+    if (!m_showingRun)
+        m_liveClocks = m_engine.pipelineSeries().clocks().values();
     m_showingRun = true;
     m_shownRun = run.info;
     Pipeline p = run.info.pipeline;
     p.setWindow(int(run.info.window));
+    m_engine.clearClocks(); // the run's own clocks only: a run without them reads as it was recorded
     m_engine.setPipeline(p);
     m_engine.setTimeoutNs(run.info.timeoutNs > 0 ? run.info.timeoutNs : SampleJoiner::kDefaultTimeoutNs);
     run.replay(m_engine);
@@ -376,7 +421,10 @@ void MeasureSession::showLive()
     m_showingRun = false;
     m_shownRun = RunInfo();
     m_engine.setTimeoutNs(m_liveTimeoutNs);
+    m_engine.clearClocks();
     m_engine.setPipeline(m_livePipeline);
+    for (const ClockEstimate& clock : std::exchange(m_liveClocks, {}))
+        m_engine.setClock(clock);
     m_automatic = m_liveAutomatic;
     m_proposedTopics = 0;
     m_proposedWithCompleteSamples = false;

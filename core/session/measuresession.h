@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+class ClockWatch;
 class LatencyStatsModel;
 class RunRecorder;
 class MqttConnection;
@@ -70,6 +71,14 @@ public:
     /// A host's clock as the clock service measured it: the crossings of the samples drained from
     /// now on are corrected by it, and a recording keeps it (so its replay corrects alike).
     void setClock(const ClockEstimate& estimate);
+    /// What the page says of the clocks: "Clocks measured: cloud +35.02 ms ± 0.41 ms against vehicle"
+    /// and the hosts whose clock service does not answer; empty when nothing is measured or probed.
+    QString clocksText() const;
+    /// What the prober says of hosts it gets no estimate from ("cloud: no answer for 12 s"), shown with
+    /// the clocks; empty when all answer.
+    void setClockProblems(const QString& problems);
+    /// Probes the clocks of the live pipeline's hosts (ClockWatch); null in a session without a broker.
+    const ClockWatch* clockWatch() const { return m_clockWatch; }
     const Pipeline& pipeline() const { return m_engine.pipeline(); }
     /// Back to proposing a pipeline from the stamps seen.
     void setAutomatic();
@@ -145,6 +154,7 @@ private:
     void onRos2Graph(const Ros2Graph& graph);
     void onDrained(qint64 nowNs);
     void updateSubscriptions();
+    void updateClockWatch();
     void proposeIfNew();
     void publish();
     void publishSoon();
@@ -164,6 +174,9 @@ private:
     RunRecorder* m_recorder;
     bool m_showingRun = false;
     std::vector<ClockEstimate> m_pendingClocks; ///< applied at the next drain tick, before its stamps
+    QList<ClockEstimate> m_liveClocks; ///< while a run is shown: the live clocks, back with live
+    ClockWatch* m_clockWatch = nullptr;
+    QString m_clockProblems;
     RunInfo m_shownRun;
     Pipeline m_livePipeline;
     bool m_liveAutomatic = true;

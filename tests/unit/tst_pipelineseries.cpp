@@ -125,6 +125,20 @@ private slots:
         QCOMPARE(set.asymmetrySeries(), -1);
     }
 
+    void correctedCrossingsAreNamedByTheirHostsUnlessTwoShareThem()
+    {
+        Pipeline p({u"/v/a"_s, u"/c/b"_s, u"/v/c"_s, u"/c/d"_s}, 0);
+        for (const QString& t : p.topics())
+            p.setHost(t, t.startsWith(u"/v/"_s) ? u"vehicle"_s : u"cloud"_s);
+        PipelineSeries set;
+        set.rebuild(p, 0);
+        set.setClock(clock(u"vehicle"_s, 0, 0.1));
+        set.setClock(clock(u"cloud"_s, 5, 0.1));
+        QCOMPARE(set.info(set.correctedSeries(1)).label, u"communication, cloud → vehicle, clocks measured"_s);
+        QCOMPARE(set.info(set.correctedSeries(0)).label, set.info(0).label + u", clocks measured"_s);
+        QCOMPARE(set.info(set.correctedSeries(2)).label, set.info(2).label + u", clocks measured"_s);
+    }
+
     void seriesIdsOfCorrectedCrossingsRoundTrip()
     {
         QCOMPARE(SeriesId::ofCorrected(3).toString(), u"corrected:3"_s);

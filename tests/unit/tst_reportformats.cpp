@@ -236,7 +236,7 @@ private slots:
         const QString md = QString::fromUtf8(ReportFormats::markdown(one));
         QVERIFY2(md.contains(u"clocks measured: cloud +35.00 ms ± 0.40 ms against vehicle"_s),
                  qPrintable(md));
-        QVERIFY2(md.contains(u", clocks measured ± 0.40 ms* |"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"| *communication, vehicle → cloud, clocks measured ± 0.40 ms* |"_s), qPrintable(md));
         QVERIFY2(md.contains(u"path asymmetry (there − half the round trip) ± 0.40 ms"_s), qPrintable(md));
         const QJsonObject doc = QJsonDocument::fromJson(ReportFormats::json(one)).object();
         const QJsonArray stages = doc.value(u"stages"_s).toArray();

@@ -101,6 +101,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_reset(new QAction(tr("&Reset"), this))
     , m_mode(new QLabel(this))
     , m_warning(new QLabel(this))
+    , m_clocks(new QLabel(this))
     , m_counts(new LiveText(this))
     , m_runBar(new RunBar(measure, this))
 {
@@ -314,6 +315,14 @@ QWidget* MeasurePage::createChartPane()
     m_warning->hide();
     connect(m_warning, &QLabel::linkActivated, this, &MeasurePage::onWarningLink);
     layout->addWidget(m_warning);
+    m_clocks->setObjectName(u"measureClocks"_s);
+    m_clocks->setWordWrap(true);
+    m_clocks->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_clocks->setToolTip(tr("Each host's clock against the pipeline's first host, from the clock service's "
+                            "probes: the crossings between measured hosts are corrected by it (rows \"clocks "
+                            "measured\"), each within the uncertainty shown."));
+    m_clocks->hide();
+    layout->addWidget(m_clocks);
     layout->addWidget(m_summaryView);
     layout->addWidget(split, 1);
     return pane;
@@ -486,6 +495,15 @@ void MeasurePage::onUpdated()
     m_seen->update(m_measure->discovery(), m_measure->pipeline(), m_measure->malformedStampsByTopic());
     updateCounts();
     updateWarning();
+    updateClocks();
+}
+
+void MeasurePage::updateClocks()
+{
+    const QString text = m_measure->clocksText();
+    m_clocks->setVisible(!text.isEmpty());
+    if (m_clocks->text() != text)
+        m_clocks->setText(text);
 }
 
 void MeasurePage::updateWarning()

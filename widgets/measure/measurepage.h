@@ -64,6 +64,7 @@ private:
     void onPipelineChanged();
     void updateCounts();
     void updateWarning();
+    void updateClocks();
     void onWarningLink(const QString& link);
     void choosePipelineFile();
     void chooseSaveFile();
@@ -92,6 +93,8 @@ private:
     QLabel* m_mode;
     /// Above the pinned rows: which figures contradict the pipeline, why, and what to do.
     QLabel* m_warning;
+    /// Above the pinned rows: the hosts' clocks as measured, and the clock services that do not answer.
+    QLabel* m_clocks;
     LiveText* m_counts;
     RunBar* m_runBar;
     QList<QWidget*> m_pipelineControls; ///< disabled while recording or showing a run

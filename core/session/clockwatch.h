@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "clock/clockestimate.h"
+#include "mqtt/mqttprofile.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <QCoreApplication>
+#include <QObject>
+#include <QStringList>
+#include <QTimer>
+
+class ClockProber;
+
+/// Probes the clock service (`bridgescope clock serve`) of every host a measured pipeline names,
+/// over the measured broker, and hands each estimate to the measurement. A pipeline on one clock,
+/// without hosts, or a session without a broker probes nothing: watching needs the user's
+/// pipeline with hosts on a connected broker, and stops completely when either goes.
+class ClockWatch : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kMaxHosts = 16; ///< hosts probed at once; a pipeline naming more probes the first
+
+    using Sink = std::function<void(const ClockEstimate&)>;
+    explicit ClockWatch(Sink sink, QObject* parent = nullptr);
+    ~ClockWatch() override;
+
+    /// Probes `hosts` (at most kMaxHosts, in order) on the broker of `profile`; probers of hosts no
+    /// longer named stop, those still named go on. An empty list or broker URL stops every prober.
+    void watch(const QStringList& hosts, const MqttProfile& profile);
+    QStringList hosts() const;
+    const ClockProber* prober(const QString& host) const;
+    /// What keeps hosts unmeasured, for the page: "No clock service answers for cloud on the broker
+    /// (run `bridgescope clock serve --name cloud --broker …` there)."; empty when every host answers
+    /// (or when none is probed).
+    QString problems() const;
+    /// Hosts named beyond kMaxHosts, not probed.
+    int omittedHosts() const { return m_omitted; }
+
+signals:
+    void problemsChanged();
+
+private:
+    void checkProblems();
+
+    Sink m_sink;
+    MqttProfile m_profile;
+    std::map<QString, std::unique_ptr<ClockProber>> m_probers; ///< host -> its prober
+    std::map<QString, QString> m_failures; ///< host -> why its transport failed
+    QTimer m_check; ///< looks for hosts that do not answer
+    QString m_problems;
+    int m_omitted = 0;
+};

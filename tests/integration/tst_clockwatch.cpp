@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// ClockWatch, as the window and `record` run it: the clock services of a pipeline's hosts (in this
+// process, on a real mosquitto) probed over the broker, each estimate handed on within its stated
+// uncertainty of the injected offset; a host without a service is said on screen, not waited for
+// silently; a pipeline on one clock, or no broker, probes nothing, and what stops is stopped.
+#include "clock/clockprober.h"
+#include "clock/clockserver.h"
+#include "mqtt/mqttclockserver.h"
+#include "session/clockwatch.h"
+#include "testservers.h"
+
+#include <map>
+#include <memory>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// A host's clock service on the broker, its clock `offsetMs` ahead of ours.
+struct Service
+{
+    Service(const QString& name, double offsetMs, const QString& brokerUrl)
+    {
+        ClockServerOptions o;
+        o.name = name;
+        o.clockOffsetMs = offsetMs;
+        server = std::make_unique<ClockServer>(o);
+        mqtt = std::make_unique<MqttClockServer>(server.get());
+        mqtt->open(MqttProfile::fromUrl(brokerUrl));
+    }
+    std::unique_ptr<ClockServer> server;
+    std::unique_ptr<MqttClockServer> mqtt;
+};
+} // namespace
+
+class TestClockWatch : public QObject
+{
+    Q_OBJECT
+private:
+    TestServers m_servers;
+
+private slots:
+    void initTestCase() { QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString())); }
+
+    void eachHostOfThePipelineIsMeasuredAndASilentOneIsSaid()
+    {
+        Service vehicle(u"vehicle"_s, 0, m_servers.brokerUrl());
+        Service cloud(u"cloud"_s, -250, m_servers.brokerUrl());
+        QTRY_COMPARE(vehicle.mqtt->connection().state(), MqttConnection::State::Connected);
+        QTRY_COMPARE(cloud.mqtt->connection().state(), MqttConnection::State::Connected);
+
+        std::map<QString, ClockEstimate> latest;
+        ClockWatch watch([&latest](const ClockEstimate& e) { latest[e.host] = e; });
+        QSignalSpy problems(&watch, &ClockWatch::problemsChanged);
+        watch.watch({u"vehicle"_s, u"cloud"_s, u"cloud"_s, u"edge"_s, QString()},
+                    MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QCOMPARE(watch.hosts(), (QStringList {u"cloud"_s, u"edge"_s, u"vehicle"_s}));
+        QTRY_VERIFY_WITH_TIMEOUT(latest.count(u"vehicle"_s) && latest.count(u"cloud"_s)
+                                     && latest[u"cloud"_s].probes >= 8,
+                                 10000);
+        for (const auto& [host, offsetMs] : {std::pair {u"vehicle"_s, 0.0}, std::pair {u"cloud"_s, -250.0}}) {
+            const ClockEstimate& e = latest[host];
+            qInfo("%s: %.3f ms ± %.3f ms", qPrintable(host), double(e.offsetNs) / 1e6, double(e.uncertaintyNs) / 1e6);
+            QVERIFY2(std::llabs(e.offsetNs - qint64(offsetMs * 1e6)) <= e.uncertaintyNs,
+                     qPrintable(u"%1: %2 ± %3 ns"_s.arg(host).arg(e.offsetNs).arg(e.uncertaintyNs)));
+            QVERIFY(e.uncertaintyNs < 5'000'000); // loopback: a few ms at most
+        }
+        // No service for "edge": said, with what to run, once its burst went unanswered.
+        QTRY_VERIFY_WITH_TIMEOUT(watch.problems().contains(u"No clock service answers for edge"_s), 10000);
+        QVERIFY(!watch.problems().contains(u"cloud"_s));
+        QVERIFY(watch.problems().contains(u"clock serve --name"_s));
+        QVERIFY(problems.size() > 0);
+
+        // The user's pipeline loses "edge": its prober stops, the others go on; then nothing is watched.
+        const ClockProber* cloudProber = watch.prober(u"cloud"_s);
+        watch.watch({u"vehicle"_s, u"cloud"_s}, MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QCOMPARE(watch.prober(u"cloud"_s), cloudProber);
+        QVERIFY(!watch.prober(u"edge"_s));
+        QTRY_VERIFY(watch.problems().isEmpty());
+        watch.watch({}, MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QVERIFY(watch.hosts().isEmpty());
+        // Without a broker, nothing either.
+        MqttProfile none;
+        none.url.clear();
+        watch.watch({u"vehicle"_s}, none);
+        QVERIFY(watch.hosts().isEmpty());
+        const quint64 answered = cloud.server->counters().answered;
+        QTest::qWait(1500); // nothing is awaited here: no probe may come during it
+        QCOMPARE(cloud.server->counters().answered, answered);
+    }
+
+    void aPipelineNamingTooManyHostsProbesABoundedFew()
+    {
+        ClockWatch watch([](const ClockEstimate&) {});
+        QStringList hosts;
+        for (int i = 0; i < ClockWatch::kMaxHosts + 5; ++i)
+            hosts << u"h%1"_s.arg(i);
+        watch.watch(hosts, MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QCOMPARE(watch.hosts().size(), ClockWatch::kMaxHosts);
+        QCOMPARE(watch.omittedHosts(), 5);
+        QVERIFY(watch.problems().contains(u"5 more host"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestClockWatch)
+#include "tst_clockwatch.moc"
