@@ -2534,6 +2534,10 @@ factors:
         <source>a cell is {factor: level, …}</source>
         <translation>eine Zelle ist {Faktor: Stufe, …}</translation>
     </message>
+    <message>
+        <source>this version runs both sides of a cell on this machine: remove hosts: from the plan to run it here</source>
+        <translation>diese Version führt beide Seiten einer Zelle auf diesem Rechner aus: hosts: aus dem Plan entfernen, um ihn hier auszuführen</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentReport</name>
