@@ -37,14 +37,6 @@ public:
             finishLine();
     }
     QStringList lines() const { return m_lines; }
-    /// The last non-empty line, or empty.
-    QString lastLine() const
-    {
-        for (auto it = m_lines.crbegin(); it != m_lines.crend(); ++it)
-            if (!it->trimmed().isEmpty())
-                return it->trimmed();
-        return {};
-    }
 
 private:
     QString finishLine()

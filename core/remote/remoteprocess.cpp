@@ -134,6 +134,16 @@ void RemoteProcess::readStandardError()
     }
 }
 
+QStringList RemoteProcess::lastErrorLines() const
+{
+    // The far program writes while the script reports its start: the report may come after it.
+    QStringList lines;
+    for (const QString& line : m_stderr.lines())
+        if (!line.startsWith(s_startedMarker) && !line.trimmed().isEmpty())
+            lines << line;
+    return lines;
+}
+
 void RemoteProcess::stop()
 {
     if (!isRunning() || m_stopTimer->isActive())
@@ -166,7 +176,8 @@ void RemoteProcess::onFinished(int exitCode, QProcess::ExitStatus status)
     m_stdout.flush();
     m_stderr.flush();
     m_exitCode = status == QProcess::NormalExit ? exitCode : -1;
-    const QString message = m_stderr.lastLine();
+    const QStringList errors = lastErrorLines();
+    const QString message = errors.isEmpty() ? QString() : errors.last().trimmed();
     if (status != QProcess::NormalExit) {
         if (!m_endingLocally)
             m_error = tr("ssh to %1 (%2) ended unexpectedly").arg(m_role, m_host.url());

@@ -52,8 +52,9 @@ public:
     QString errorString() const { return m_error; }
     /// The last lines of the program's stdout, bounded.
     QStringList lastOutputLines() const { return m_stdout.lines(); }
-    /// The last lines of the program's and ssh's stderr, bounded.
-    QStringList lastErrorLines() const { return m_stderr.lines(); }
+    /// The last non-empty lines of the program's and ssh's stderr, bounded (without the far
+    /// script's own report of the start).
+    QStringList lastErrorLines() const;
     const RemoteHost& host() const { return m_host; }
 
 signals:

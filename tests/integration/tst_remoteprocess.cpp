@@ -158,6 +158,7 @@ private slots:
         QCOMPARE(remote.exitCode(), 3);
         QCOMPARE(remote.errorString(),
                  u"the program on cloud (%1) ended with status 3: no broker at tcp://x"_s.arg(cloud().url()));
+        QCOMPARE(remote.lastErrorLines(), QStringList {u"no broker at tcp://x"_s});
     }
 };
 
