@@ -33,6 +33,8 @@ PACKAGES=(
     python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-rospy python3-rostopic
     # servers the tests and the demo start
     mosquitto mosquitto-clients
+    # experiments on two hosts over ssh, and their two-namespace test lab (tests/support/twohostlab.h)
+    openssh-client openssh-server iproute2
     # headless GUI runs, report checks, reference computations
     xvfb xauth poppler-utils python3-numpy python3-yaml python3-genmsg
     # the Debian package (scripts/package.sh) and its test (tests/package): dpkg-shlibdeps for its

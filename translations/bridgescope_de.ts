@@ -2804,6 +2804,10 @@ factors:
         <source>a cell is {factor: level, …}</source>
         <translation>eine Zelle ist {Faktor: Stufe, …}</translation>
     </message>
+    <message>
+        <source>this version runs both sides of a cell on this machine: remove hosts: from the plan to run it here</source>
+        <translation>diese Version führt beide Seiten einer Zelle auf diesem Rechner aus: hosts: aus dem Plan entfernen, um ihn hier auszuführen</translation>
+    </message>
 </context>
 <context>
     <name>ExperimentReport</name>
@@ -5567,6 +5571,29 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
     </message>
 </context>
 <context>
+    <name>PlanHosts</name>
+    <message>
+        <source>program is the absolute path of bridgescope on the far host (/usr/bin/bridgescope), at most %1 characters</source>
+        <translation>program ist der absolute Pfad von bridgescope auf dem entfernten Host (/usr/bin/bridgescope), höchstens %1 Zeichen</translation>
+    </message>
+    <message>
+        <source>a host is ssh://user@host[:port] or {url: ssh://…, program: PATH}</source>
+        <translation>ein Host ist ssh://user@host[:port] oder {url: ssh://…, program: PFAD}</translation>
+    </message>
+    <message>
+        <source>hosts is {vehicle: ssh://user@host, cloud: ssh://user@host}</source>
+        <translation>hosts ist {vehicle: ssh://user@host, cloud: ssh://user@host}</translation>
+    </message>
+    <message>
+        <source>unknown host &apos;%1&apos;: a plan&apos;s hosts are vehicle and cloud</source>
+        <translation>unbekannter Host &apos;%1&apos;: die Hosts eines Plans sind vehicle und cloud</translation>
+    </message>
+    <message>
+        <source>program is bridgescope&apos;s path on the hosts: it needs hosts:</source>
+        <translation>program ist der Pfad von bridgescope auf den Hosts: es braucht hosts:</translation>
+    </message>
+</context>
+<context>
     <name>ProbeCommand</name>
     <message>
         <source>sent</source>
@@ -6501,6 +6528,100 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
     <message>
         <source>%1, more than the %2 such a file may have: refused</source>
         <translation>%1, mehr als die %2, die eine solche Datei haben darf: abgelehnt</translation>
+    </message>
+</context>
+<context>
+    <name>RemoteHost</name>
+    <message>
+        <source>want ssh://user@host or ssh://user@host:port</source>
+        <translation>erwartet ssh://user@host oder ssh://user@host:port</translation>
+    </message>
+    <message>
+        <source>a host URL longer than %1 characters</source>
+        <translation>eine Host-URL länger als %1 Zeichen</translation>
+    </message>
+    <message>
+        <source>a password in a host URL is never accepted: use a key or an ssh agent (ssh://user@host)</source>
+        <translation>ein Passwort in einer Host-URL wird nie angenommen: einen Schlüssel oder einen ssh-Agenten verwenden (ssh://user@host)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an ssh:// URL: %2</source>
+        <translation>&quot;%1&quot; ist keine ssh://-URL: %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no user: %2</source>
+        <translation>&quot;%1&quot; nennt keinen Benutzer: %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a user name (lower-case letters, digits, &apos;_&apos; and &apos;-&apos;, at most 32, not starting with a digit or &apos;-&apos;)</source>
+        <translation>&quot;%1&quot; ist kein Benutzername (Kleinbuchstaben, Ziffern, &apos;_&apos; und &apos;-&apos;, höchstens 32, nicht mit einer Ziffer oder &apos;-&apos; beginnend)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: an IPv6 address without its closing &apos;]&apos;</source>
+        <translation>&quot;%1&quot;: eine IPv6-Adresse ohne schließende &apos;]&apos;</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an IPv6 address</source>
+        <translation>&quot;%1&quot; ist keine IPv6-Adresse</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: nothing may follow the host but :port</source>
+        <translation>&quot;%1&quot;: auf den Host darf nur :port folgen</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: an empty port</source>
+        <translation>&quot;%1&quot;: ein leerer Port</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: an IPv6 address goes in brackets (ssh://user@[::1]:22)</source>
+        <translation>&quot;%1&quot;: eine IPv6-Adresse steht in eckigen Klammern (ssh://user@[::1]:22)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no host: %2</source>
+        <translation>&quot;%1&quot; nennt keinen Host: %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is neither a host name nor an IP address (a path, a query or other characters are not allowed)</source>
+        <translation>&quot;%1&quot; ist weder ein Hostname noch eine IP-Adresse (ein Pfad, eine Abfrage oder andere Zeichen sind nicht erlaubt)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a port (1 to 65535)</source>
+        <translation>&quot;%1&quot; ist kein Port (1 bis 65535)</translation>
+    </message>
+</context>
+<context>
+    <name>RemoteProcess</name>
+    <message>
+        <source>%1 (%2) already runs a program</source>
+        <translation>%1 (%2) führt bereits ein Programm aus</translation>
+    </message>
+    <message>
+        <source>cannot run on %1 (%2): %3</source>
+        <translation>kann auf %1 (%2) nicht ausführen: %3</translation>
+    </message>
+    <message>
+        <source>cannot start %1 for %2 (%3): %4</source>
+        <translation>kann %1 für %2 (%3) nicht starten: %4</translation>
+    </message>
+    <message>
+        <source>ssh to %1 (%2) ended unexpectedly</source>
+        <translation>ssh zu %1 (%2) endete unerwartet</translation>
+    </message>
+    <message>
+        <source>cannot reach %1 (%2): %3</source>
+        <translation>%1 (%2) nicht erreichbar: %3</translation>
+    </message>
+    <message>
+        <source>lost %1 (%2): %3</source>
+        <translation>Verbindung zu %1 (%2) verloren: %3</translation>
+    </message>
+    <message>
+        <source>could not start the program on %1 (%2): %3</source>
+        <translation>konnte das Programm auf %1 (%2) nicht starten: %3</translation>
+    </message>
+    <message>
+        <source>the program on %1 (%2) ended with status %3: %4</source>
+        <translation>das Programm auf %1 (%2) endete mit Status %3: %4</translation>
     </message>
 </context>
 <context>
@@ -8120,6 +8241,21 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>a latency that is no finite number of seconds</source>
         <translation>eine Latenz, die keine endliche Zahl von Sekunden ist</translation>
+    </message>
+</context>
+<context>
+    <name>SshCommand</name>
+    <message>
+        <source>no program to run on the far host</source>
+        <translation>kein Programm zum Ausführen auf dem entfernten Host</translation>
+    </message>
+    <message>
+        <source>a word for the far host holds a NUL character</source>
+        <translation>ein Wort für den entfernten Host enthält ein NUL-Zeichen</translation>
+    </message>
+    <message>
+        <source>the known-hosts file &quot;%1&quot; has white space, quotes, &apos;%&apos; or &apos;\&apos; in its name, which ssh&apos;s options cannot carry</source>
+        <translation>die Known-Hosts-Datei &quot;%1&quot; hat Leerraum, Anführungszeichen, &apos;%&apos; oder &apos;\&apos; im Namen, was die Optionen von ssh nicht tragen können</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,11 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
                             const QString& directory, const QString& program)
 {
     clock.start();
+    // The plan reads its hosts (PlanHosts) and core/remote runs programs there, but the lab does not
+    // start its sides over ssh yet: a cell fails saying so rather than run both sides here unnoticed.
+    if (plan.hosts.any())
+        return LocatedError {ExperimentPlan::tr("this version runs both sides of a cell on this machine: "
+                                                "remove hosts: from the plan to run it here")};
     DemoLab::Options o;
     o.program = program;
     o.payloadBytes = s.payloadBytes;

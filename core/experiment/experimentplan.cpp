@@ -318,13 +318,15 @@ public:
         static const QStringList known {u"name"_s,       u"samples"_s, u"warmup"_s,   u"repetitions"_s,
                                         u"timeout_s"_s,  u"servers"_s, u"pipeline"_s, u"defaults"_s,
                                         u"factors"_s,    u"cells"_s,   u"bridges"_s,  u"links"_s,
-                                        u"throughput"_s, u"ros"_s};
+                                        u"throughput"_s, u"ros"_s,    u"hosts"_s,    u"program"_s};
         Status s = m_r.checkKeys(m_root, known);
         m_plan.name = text(m_root["name"]);
         if (s)
             s = readCounts();
         if (s)
             s = readServers();
+        if (s)
+            s = readHosts();
         if (s)
             s = readNamed();
         if (s)
@@ -407,6 +409,15 @@ private:
             if (path != u"paper"_s)
                 m_plan.pipelinePath = QFileInfo(path).isAbsolute() ? path : QDir(m_baseDir).filePath(path);
         }
+        return {};
+    }
+
+    Status readHosts()
+    {
+        const Result<PlanHosts> hosts = PlanHosts::read(m_r, m_root["hosts"], m_root["program"]);
+        if (!hosts)
+            return hosts.error();
+        m_plan.hosts = *hosts;
         return {};
     }
 

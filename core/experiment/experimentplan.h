@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/result.h"
+#include "experiment/planhosts.h"
 
 #include <optional>
 #include <QCoreApplication>
@@ -101,6 +102,9 @@ public:
     QStringList factors; ///< names of the factors that vary, in the plan's order
     QList<ExperimentCell> cells;
     std::optional<ThroughputSettings> throughput;
+    /// The hosts the vehicle's and the cloud's side run on over ssh (`hosts:`, `program:`); none:
+    /// every side runs here.
+    PlanHosts hosts;
 
     /// Reads a plan from YAML (bounded by YamlLimits); relative paths in it are taken from
     /// `baseDir`. The error is located at the value it is about ("line 4, column 9: …").

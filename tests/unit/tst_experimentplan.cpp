@@ -3,6 +3,7 @@
 // listed cells name what they change, repetitions come last, and every mistake names its line.
 #include "experiment/experimentevent.h"
 #include "experiment/experimentfolder.h"
+#include "experiment/experimentlab.h"
 #include "experiment/experimentplan.h"
 #include "experiment/experimentreport.h"
 #include "experiment/experimentrunner.h"
@@ -121,6 +122,45 @@ private slots:
         QVERIFY2(error.contains(u"ros_master: URI"_s), qPrintable(error));
     }
 
+    // Issue 43: the vehicle's and the cloud's side on hosts of their own, over ssh.
+    void hostsOfAPlan()
+    {
+        QString error;
+        const auto p = plan("hosts:\n  vehicle: ssh://pi@vehicle.lab\n"
+                            "  cloud: {url: \"ssh://ubuntu@[fd00::2]:2222\", program: /opt/bs/bin/bridgescope}\n"
+                            "program: /usr/bin/bridgescope\n",
+                            &error);
+        QVERIFY2(p, qPrintable(error));
+        QVERIFY(p->hosts.any());
+        QCOMPARE(p->hosts.vehicle->host.url(), u"ssh://pi@vehicle.lab"_s);
+        QCOMPARE(p->hosts.cloud->host.destination(), u"ubuntu@fd00::2"_s);
+        QCOMPARE(p->hosts.cloud->host.port, quint16(2222));
+        // A host's own program, else the plan's, else the controller's own path.
+        QCOMPARE(p->hosts.programFor(u"cloud"_s, u"/here/bridgescope"_s), u"/opt/bs/bin/bridgescope"_s);
+        QCOMPARE(p->hosts.programFor(u"vehicle"_s, u"/here/bridgescope"_s), u"/usr/bin/bridgescope"_s);
+        const auto cloudOnly = plan("hosts: {cloud: ssh://root@10.0.0.2}\n", &error);
+        QVERIFY2(cloudOnly, qPrintable(error));
+        QVERIFY(!cloudOnly->hosts.vehicle);
+        QCOMPARE(cloudOnly->hosts.programFor(u"cloud"_s, u"/here/bridgescope"_s), u"/here/bridgescope"_s);
+        // Without hosts: every side here, as before.
+        QVERIFY(!plan("samples: 5\n")->hosts.any());
+    }
+
+    // Until the lab starts its sides over ssh, a cell of a plan with hosts fails saying so, before
+    // it starts anything, instead of running both sides here unnoticed.
+    void aCellOfAPlanWithHostsFailsClearly()
+    {
+        const auto p = plan("samples: 5\nhosts: {cloud: ssh://root@10.0.0.2}\n");
+        QVERIFY(p);
+        QTemporaryDir dir;
+        ExperimentLab lab;
+        const Status started = lab.start(*p, p->cells[0].settings, 1, dir.path(), u"/bin/false"_s);
+        QVERIFY(!started);
+        QCOMPARE(started.error().toString(), u"this version runs both sides of a cell on this machine: remove hosts: "
+                                             u"from the plan to run it here"_s);
+        QVERIFY(lab.lab.processIds().isEmpty());
+    }
+
     void defaultsRepetitionsAndListedCells()
     {
         QString error;
@@ -204,6 +244,29 @@ private slots:
                                            << u"line 1, column 21: rate_hz takes 0.01 to 1000"_s;
         QTest::newRow("throughput rate tiny") << QByteArray("throughput: {rates_hz: [1e-300]}\n")
                                               << u"line 1, column 25: a rate from 0.01 to 10000 Hz"_s;
+        // Issue 43: hosts over ssh; a password is never repeated in the message.
+        QTest::newRow("third host") << QByteArray("hosts:\n  vehicle: ssh://a@b\n  edge: ssh://a@c\n")
+                                    << u"line 3, column 3: unknown host 'edge': a plan's hosts are vehicle and cloud"_s;
+        QTest::newRow("twice") << QByteArray("hosts:\n  cloud: ssh://a@b\n  cloud: ssh://a@c\n")
+                               << u"line 3, column 3: The key \"cloud\" appears twice"_s;
+        QTest::newRow("not a map") << QByteArray("hosts: [ssh://a@b]\n")
+                                   << u"line 1, column 8: hosts is {vehicle: ssh://user@host, cloud: ssh://user@host}"_s;
+        QTest::newRow("password") << QByteArray("samples: 5\nhosts: {cloud: \"ssh://root:hunter2@b\"}\n")
+                                  << u"line 2, column 16: a password in a host URL is never accepted: use a key or an ssh agent (ssh://user@host)"_s;
+        QTest::newRow("no user") << QByteArray("hosts:\n  vehicle: ssh://b\n")
+                                 << u"line 2, column 12: \"ssh://b\" names no user"_s;
+        QTest::newRow("port") << QByteArray("hosts: {vehicle: \"ssh://a@b:70000\"}\n")
+                              << u"line 1, column 18: \"70000\" is not a port (1 to 65535)"_s;
+        QTest::newRow("shell in host") << QByteArray("hosts: {vehicle: \"ssh://a@b;reboot\"}\n")
+                                       << u"line 1, column 18: \"b;reboot\" is neither a host name nor an IP address"_s;
+        QTest::newRow("unknown host key") << QByteArray("hosts:\n  cloud: {url: ssh://a@b, key: /k}\n")
+                                          << u"line 2, column 27: unknown key 'key'"_s;
+        QTest::newRow("no url") << QByteArray("hosts:\n  cloud: {program: /usr/bin/bridgescope}\n")
+                                << u"line 2, column 10: a host is ssh://user@host[:port] or {url: ssh://…, program: PATH}"_s;
+        QTest::newRow("relative program") << QByteArray("hosts: {cloud: ssh://a@b}\nprogram: bin/bridgescope\n")
+                                          << u"line 2, column 10: program is the absolute path of bridgescope on the far host"_s;
+        QTest::newRow("program without hosts") << QByteArray("program: /usr/bin/bridgescope\n")
+                                               << u"line 1, column 10: program is bridgescope's path on the hosts: it needs hosts:"_s;
     }
 
     void mistakesNameTheirLine()
@@ -213,6 +276,7 @@ private slots:
         QString error;
         QVERIFY(!plan(yaml, &error));
         QVERIFY2(error.contains(message), qPrintable(error));
+        QVERIFY2(!error.contains(u"hunter2"_s), qPrintable(error));
     }
 
     void durationsNeverOverflow()
