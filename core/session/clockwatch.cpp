@@ -4,7 +4,6 @@
 #include "base/wallclock.h"
 #include "mqtt/mqttclockprober.h"
 
-
 using namespace Qt::StringLiterals;
 
 ClockWatch::ClockWatch(Sink sink, QObject* parent)

@@ -56,12 +56,12 @@ private slots:
         watch.watch({u"vehicle"_s, u"cloud"_s, u"cloud"_s, u"edge"_s, QString()},
                     MqttProfile::fromUrl(m_servers.brokerUrl()));
         QCOMPARE(watch.hosts(), (QStringList {u"cloud"_s, u"edge"_s, u"vehicle"_s}));
-        QTRY_VERIFY_WITH_TIMEOUT(latest.count(u"vehicle"_s) && latest.count(u"cloud"_s)
-                                     && latest[u"cloud"_s].probes >= 8,
-                                 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            latest.count(u"vehicle"_s) && latest.count(u"cloud"_s) && latest[u"cloud"_s].probes >= 8, 10000);
         for (const auto& [host, offsetMs] : {std::pair {u"vehicle"_s, 0.0}, std::pair {u"cloud"_s, -250.0}}) {
             const ClockEstimate& e = latest[host];
-            qInfo("%s: %.3f ms ± %.3f ms", qPrintable(host), double(e.offsetNs) / 1e6, double(e.uncertaintyNs) / 1e6);
+            qInfo("%s: %.3f ms ± %.3f ms", qPrintable(host), double(e.offsetNs) / 1e6,
+                  double(e.uncertaintyNs) / 1e6);
             QVERIFY2(std::llabs(e.offsetNs - qint64(offsetMs * 1e6)) <= e.uncertaintyNs,
                      qPrintable(u"%1: %2 ± %3 ns"_s.arg(host).arg(e.offsetNs).arg(e.uncertaintyNs)));
             QVERIFY(e.uncertaintyNs < 5'000'000); // loopback: a few ms at most
