@@ -546,6 +546,35 @@ Siehe bridgescope clock serve --help und bridgescope clock probe --help.</transl
     </message>
 </context>
 <context>
+    <name>ClockText</name>
+    <message>
+        <source>%1 %2 ms ± %3 ms against %4</source>
+        <translation>%1 %2 ms ± %3 ms gegenüber %4</translation>
+    </message>
+</context>
+<context>
+    <name>ClockWatch</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>No clock service answers for %1 on the broker: run `bridgescope clock serve --name NAME --broker URL` on each host, or set one_clock: true for hosts that share a clock.</source>
+        <translation>Für %1 antwortet kein Uhrendienst am Broker: `bridgescope clock serve --name NAME --broker URL` auf jedem Rechner starten oder one_clock: true setzen, wenn die Rechner eine Uhr teilen.</translation>
+    </message>
+    <message>
+        <source>Clocks cannot be probed: %1.</source>
+        <translation>Die Uhren lassen sich nicht abfragen: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more host(s) not probed (at most %1).</source>
+        <translation>
+            <numerusform>%n weiterer Rechner nicht abgefragt (höchstens %1).</numerusform>
+            <numerusform>%n weitere Rechner nicht abgefragt (höchstens %1).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>ConfigCommand</name>
     <message>
         <source>Usage: bridgescope config &lt;command&gt; [options]
@@ -2701,14 +2730,6 @@ factors:
         <translation>announce once ist nicht einzuhalten: was der Befehl der Bridge %1 ankündigt, ist nicht bekannt (der echte mqtt_client kündigt jede Nachricht an); announce: every_message (oder once) in ihrem Eintrag unter bridges: angeben</translation>
     </message>
     <message>
-        <source>a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</source>
-        <translation>ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent}</translation>
-    </message>
-    <message>
-        <source>unknown link setting &apos;%1&apos; (known: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</source>
-        <translation>unbekannte Verbindungseinstellung &apos;%1&apos; (bekannt: delay_ms, jitter_ms, bandwidth_mbit, loss_percent)</translation>
-    </message>
-    <message>
         <source>%1 takes a number from 0 to %2</source>
         <translation>%1 nimmt eine Zahl von 0 bis %2</translation>
     </message>
@@ -2807,6 +2828,14 @@ factors:
     <message>
         <source>this version runs both sides of a cell on this machine: remove hosts: from the plan to run it here</source>
         <translation>diese Version führt beide Seiten einer Zelle auf diesem Rechner aus: hosts: aus dem Plan entfernen, um ihn hier auszuführen</translation>
+    </message>
+    <message>
+        <source>a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms}</source>
+        <translation>ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms}</translation>
+    </message>
+    <message>
+        <source>unknown link setting &apos;%1&apos; (known: delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms)</source>
+        <translation>unbekannte Verbindungseinstellung „%1“ (bekannt: delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms)</translation>
     </message>
 </context>
 <context>
@@ -3483,6 +3512,22 @@ factors:
     <message>
         <source>Not a measurement: %1.</source>
         <translation>Keine Messung: %1.</translation>
+    </message>
+    <message>
+        <source>%1 ms: smaller than its uncertainty (%2), so it cannot be told from zero.</source>
+        <translation>%1 ms: kleiner als seine Unsicherheit (%2), also nicht von null zu unterscheiden.</translation>
+    </message>
+    <message>
+        <source>Stamp to stamp, corrected by the offset between the clocks of %1 and %2 that the clock service measured: its one-way latency, within %3.</source>
+        <translation>Zeitstempel zu Zeitstempel, korrigiert um den vom Uhrendienst gemessenen Versatz zwischen den Uhren von %1 und %2: seine Einweg-Latenz, auf %3 genau.</translation>
+    </message>
+    <message>
+        <source>How much longer the way there takes than the way back, halved: what half the round trip (the paper&apos;s one way) misattributes to each way. Measured clocks; within %1.</source>
+        <translation>Wie viel länger der Hinweg als der Rückweg dauert, halbiert: was die halbe Umlaufzeit (die eine Richtung des Papers) jeder Richtung falsch zuschreibt. Gemessene Uhren; auf %1 genau.</translation>
+    </message>
+    <message>
+        <source>Crosses from %1 to %2: the raw value includes the clock offset between the hosts. Corrected by the measured clocks (pinned above): median %3 ms %4.</source>
+        <translation>Geht von %1 zu %2: Der Rohwert enthält den Uhrenversatz zwischen den Rechnern. Mit den gemessenen Uhren korrigiert (oben angeheftet): Median %3 ms %4.</translation>
     </message>
 </context>
 <context>
@@ -4745,6 +4790,10 @@ factors:
         <source>load a pipeline</source>
         <translation>eine Pipeline laden</translation>
     </message>
+    <message>
+        <source>Each host&apos;s clock against the pipeline&apos;s first host, from the clock service&apos;s probes: the crossings between measured hosts are corrected by it (rows &quot;clocks measured&quot;), each within the uncertainty shown.</source>
+        <translation>Die Uhr jedes Rechners gegenüber dem ersten Rechner der Pipeline, aus den Proben des Uhrendienstes: Übergänge zwischen gemessenen Rechnern werden damit korrigiert (Zeilen „Uhren gemessen“), jeweils auf die angezeigte Unsicherheit genau.</translation>
+    </message>
 </context>
 <context>
     <name>MeasureSession</name>
@@ -4767,6 +4816,10 @@ factors:
     <message>
         <source>domain %1</source>
         <translation>Domain %1</translation>
+    </message>
+    <message>
+        <source>Clocks measured: %1.</source>
+        <translation>Uhren gemessen: %1.</translation>
     </message>
 </context>
 <context>
@@ -5568,6 +5621,18 @@ Die Stufe vom vorigen Zeitstempel geht von %2 zu %3.</translation>
     <message>
         <source>clock offset (%1 ahead of %2)</source>
         <translation>Uhrenversatz (%1 vor %2)</translation>
+    </message>
+    <message>
+        <source>%1, clocks measured</source>
+        <translation>%1, Uhren gemessen</translation>
+    </message>
+    <message>
+        <source>communication, %1 → %2, clocks measured</source>
+        <translation>Kommunikation, %1 → %2, Uhren gemessen</translation>
+    </message>
+    <message>
+        <source>path asymmetry (there − half the round trip)</source>
+        <translation>Wegasymmetrie (hin − halbe Umlaufzeit)</translation>
     </message>
 </context>
 <context>
@@ -6678,6 +6743,10 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
         <source>communication, back</source>
         <translation>Kommunikation, zurück</translation>
     </message>
+    <message>
+        <source>path asymmetry (there − half the round trip)</source>
+        <translation>Wegasymmetrie (hin − halbe Umlaufzeit)</translation>
+    </message>
 </context>
 <context>
     <name>ReportCommand</name>
@@ -7025,6 +7094,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>JSON</source>
         <translation>JSON</translation>
+    </message>
+    <message>
+        <source>clocks measured: %1</source>
+        <translation>Uhren gemessen: %1</translation>
     </message>
 </context>
 <context>

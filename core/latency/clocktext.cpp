@@ -33,10 +33,3 @@ QString ClockText::measured(const PipelineSeries& series, const Pipeline& pipeli
     parts.sort();
     return parts.join(u"; "_s);
 }
-
-QString ClockText::estimate(const ClockEstimate& e)
-{
-    return tr("%1 ms ± %2 ms (drift %3 ppm, %n probes)", nullptr, e.probes)
-        .arg(signedMs(double(e.offsetNs) / 1e6), QString::number(double(e.uncertaintyNs) / 1e6, 'f', 2),
-             (e.driftPpm >= 0 ? u"+"_s : QString()) + QString::number(e.driftPpm, 'f', 1));
-}

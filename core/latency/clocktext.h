@@ -6,7 +6,6 @@
 
 class PipelineSeries;
 class Pipeline;
-struct ClockEstimate;
 
 /// How the measured clocks of a pipeline's hosts read for people, in the window and in reports:
 /// each host against the pipeline's first host, with its uncertainty.
@@ -17,6 +16,4 @@ public:
     /// "cloud +35.02 ms ± 0.41 ms against vehicle; …", sorted by host; empty when no host other
     /// than the first has an estimate against it.
     static QString measured(const PipelineSeries& series, const Pipeline& pipeline);
-    /// One estimate: "+35.02 ms ± 0.41 ms (drift +0.3 ppm, 42 probes)".
-    static QString estimate(const ClockEstimate& estimate);
 };
