@@ -237,6 +237,9 @@ int runRecord(const RecordRequest& request)
     }
     const qint64 stamps = measure.recorder()->committedStamps();
     out(Record::tr("%1: %2 complete samples, %3 stamps").arg(request.runPath).arg(complete).arg(stamps));
+    // The hosts' clocks as measured (kept in the run), or which host's clock service did not answer.
+    if (const QString clocks = measure.clocksText(); !clocks.isEmpty())
+        err(clocks);
     const QList<LatencyWarning> warnings = LatencyWarnings::of(e);
     for (const QString& line : LatencyWarnings::lines(warnings))
         err(Record::tr("not a measurement: %1").arg(line));
