@@ -74,6 +74,15 @@ const ClockProber* ClockWatch::prober(const QString& host) const
     return it == m_probers.end() ? nullptr : it->second.get();
 }
 
+QString ClockWatch::syncText() const
+{
+    QStringList lines;
+    for (const auto& [host, prober] : m_probers)
+        if (prober->farSyncState().isReported())
+            lines << host + u": "_s + prober->farSyncState().text();
+    return lines.join(u'\n');
+}
+
 QString ClockWatch::problems() const
 {
     return m_problems;

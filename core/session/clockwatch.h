@@ -37,6 +37,9 @@ public:
     /// (run `bridgescope clock serve --name cloud --broker …` there)."; empty when every host answers
     /// (or when none is probed).
     QString problems() const;
+    /// What each probed host says of its own clock (chrony, PTP), a line per host that reports it:
+    /// "cloud: chrony, synchronised to 10.0.0.1: offset +0.012 ms, …".
+    QString syncText() const;
     /// Hosts named beyond kMaxHosts, not probed.
     int omittedHosts() const { return m_omitted; }
 

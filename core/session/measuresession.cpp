@@ -132,6 +132,11 @@ QString MeasureSession::clocksText() const
     return parts.join(u' ');
 }
 
+QString MeasureSession::clockSyncText() const
+{
+    return m_clockWatch ? m_clockWatch->syncText() : QString();
+}
+
 void MeasureSession::setClockProblems(const QString& problems)
 {
     m_clockProblems = problems;

@@ -77,6 +77,8 @@ public:
     /// What the prober says of hosts it gets no estimate from ("cloud: no answer for 12 s"), shown with
     /// the clocks; empty when all answer.
     void setClockProblems(const QString& problems);
+    /// What the measured hosts say of their own clocks (chrony, PTP), a line each; empty when none does.
+    QString clockSyncText() const;
     /// Probes the clocks of the live pipeline's hosts (ClockWatch); null in a session without a broker.
     const ClockWatch* clockWatch() const { return m_clockWatch; }
     const Pipeline& pipeline() const { return m_engine.pipeline(); }

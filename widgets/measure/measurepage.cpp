@@ -318,9 +318,10 @@ QWidget* MeasurePage::createChartPane()
     m_clocks->setObjectName(u"measureClocks"_s);
     m_clocks->setWordWrap(true);
     m_clocks->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_clocks->setToolTip(tr("Each host's clock against the pipeline's first host, from the clock service's "
-                            "probes: the crossings between measured hosts are corrected by it (rows \"clocks "
-                            "measured\"), each within the uncertainty shown."));
+    m_clocksTip = tr("Each host's clock against the pipeline's first host, from the clock service's "
+                     "probes: the crossings between measured hosts are corrected by it (rows \"clocks "
+                     "measured\"), each within the uncertainty shown.");
+    m_clocks->setToolTip(m_clocksTip);
     m_clocks->hide();
     layout->addWidget(m_clocks);
     layout->addWidget(m_summaryView);
@@ -504,6 +505,10 @@ void MeasurePage::updateClocks()
     m_clocks->setVisible(!text.isEmpty());
     if (m_clocks->text() != text)
         m_clocks->setText(text);
+    const QString sync = m_measure->clockSyncText();
+    const QString tip = m_clocksTip + (sync.isEmpty() ? QString() : u"\n\n"_s + sync);
+    if (m_clocks->toolTip() != tip)
+        m_clocks->setToolTip(tip);
 }
 
 void MeasurePage::updateWarning()

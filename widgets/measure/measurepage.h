@@ -95,6 +95,7 @@ private:
     QLabel* m_warning;
     /// Above the pinned rows: the hosts' clocks as measured, and the clock services that do not answer.
     QLabel* m_clocks;
+    QString m_clocksTip; ///< what the clocks line is; the hosts' own sync states follow it
     LiveText* m_counts;
     RunBar* m_runBar;
     QList<QWidget*> m_pipelineControls; ///< disabled while recording or showing a run
