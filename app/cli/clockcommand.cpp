@@ -192,6 +192,8 @@ int runServe(const ServeRequest& request)
                              }
                          });
         mqtt->open(profile);
+        if (status != ExitOk) // refused at once (a TLS file that does not read): before any loop ran
+            return status;
     }
     QTimer minute;
     QObject::connect(&minute, &QTimer::timeout, &server, [&] { out(countsLine(server.counters())); });
@@ -359,14 +361,21 @@ int runProbe(const ProbeRequest& request)
     // Bounded: the connection, every probe's interval, the last answer's timeout, and a margin.
     const qint64 limitMs = 10'000 + options.count * options.intervalMs + options.answerTimeoutMs;
     const int status = CliOutput::runUntil([&](qint64 elapsedMs) -> std::optional<int> {
+        if (!failure.isEmpty()) // also when it failed at once, before the loop ran
+            return ExitFailed;
         if (prober.isDone())
             return ExitOk;
+        // A broker not reached is said within 5 s, as by the other commands.
+        if (elapsedMs > 5000 && prober.counters().sent == 0 && !prober.transportProblem().isEmpty())
+            return ExitFailed;
         if (elapsedMs > limitMs)
             return ExitFailed;
         return std::nullopt;
     });
     prober.stop();
     const ClockEstimate estimate = prober.estimate(wallClockNs());
+    if (failure.isEmpty() && !estimate.isValid())
+        failure = prober.transportProblem();
     if (!failure.isEmpty()) {
         err(Clock::tr("Cannot probe %1: %2").arg(request.target, failure));
         return ExitFailed;

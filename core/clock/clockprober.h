@@ -71,6 +71,8 @@ public:
     const QString& farName() const { return m_farName; }
     /// Why the last probe that could not be sent was not (empty when none failed).
     const QString& lastSendError() const { return m_lastSendError; }
+    /// What keeps the transport from working now (a broker not reached, and why); empty when it works.
+    const QString& transportProblem() const { return m_transportProblem; }
     /// Whether every probe asked for (options().count) was sent and none is still awaited.
     bool isDone() const;
 
@@ -90,6 +92,7 @@ protected:
     virtual void prepare(ClockProbe& probe) { Q_UNUSED(probe) }
     /// The transport is ready: the burst begins.
     void startProbing();
+    void setTransportProblem(const QString& problem) { m_transportProblem = problem; }
     /// An answer's bytes, received at `t4Ns` (our wall clock, taken as soon as they were read).
     void received(const QByteArray& bytes, qint64 t4Ns);
     /// Something arrived that cannot be an answer to us (another sender): counted as unknown.
@@ -108,6 +111,7 @@ private:
     ClockSyncState m_farSync;
     QString m_farName;
     QString m_lastSendError;
+    QString m_transportProblem;
     bool m_finished = false;
 };
 

@@ -41,7 +41,13 @@ void MqttClockProber::stop()
 
 void MqttClockProber::onState(MqttConnection::State state, const QString& detail)
 {
-    if (state == MqttConnection::State::Connected && !m_started) {
+    const bool connected = state == MqttConnection::State::Connected;
+    // The last reason stays while it tries again ("no broker answers at ...; retrying in 2 s").
+    if (connected)
+        setTransportProblem(QString());
+    else if (state == MqttConnection::State::Reconnecting || state == MqttConnection::State::Failed)
+        setTransportProblem(detail.isEmpty() ? MqttConnection::stateText(state) : detail);
+    if (connected && !m_started) {
         m_started = true;
         startProbing();
     } else if (state == MqttConnection::State::Failed) {

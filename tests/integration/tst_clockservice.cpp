@@ -194,6 +194,12 @@ private slots:
         const CliRun::Result mqtt = probeMqtt(u"nobody"_s, 2);
         QCOMPARE(mqtt.exit, 1);
         QVERIFY2(mqtt.err.contains(u"bridgescope/clock/nobody/probe"_s), qPrintable(mqtt.err));
+        const CliRun::Result noBroker
+            = CliRun::bridgescope({u"clock"_s, u"probe"_s, u"--broker"_s,
+                                   u"tcp://127.0.0.1:"_s + QString::number(TestServers::freePort()),
+                                   u"--host"_s, u"cloud"_s, u"--count"_s, u"1"_s});
+        QCOMPARE(noBroker.exit, 1);
+        QVERIFY2(noBroker.err.contains(u"no broker answers at tcp://127.0.0.1:"_s), qPrintable(noBroker.err));
         const CliRun::Result usage
             = CliRun::bridgescope({u"clock"_s, u"probe"_s, u"--broker"_s, m_servers.brokerUrl()});
         QCOMPARE(usage.exit, 2);
