@@ -573,6 +573,14 @@ Siehe bridgescope clock serve --help und bridgescope clock probe --help.</transl
             <numerusform>%n weitere Rechner nicht abgefragt (höchstens %1).</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 for %2 s</source>
+        <translation>%1 seit %2 s</translation>
+    </message>
+    <message>
+        <source>No answer from the clock service of %1: the estimate kept grows less certain with time.</source>
+        <translation>Keine Antwort vom Uhrendienst von %1: die behaltene Schätzung wird mit der Zeit unsicherer.</translation>
+    </message>
 </context>
 <context>
     <name>ConfigCommand</name>
@@ -4820,6 +4828,10 @@ factors:
     <message>
         <source>Clocks measured: %1.</source>
         <translation>Uhren gemessen: %1.</translation>
+    </message>
+    <message>
+        <source>Measuring the clocks of %1 through the broker (bridgescope clock serve on each host)…</source>
+        <translation>Messe die Uhren von %1 über den Broker (bridgescope clock serve auf jedem Rechner) …</translation>
     </message>
 </context>
 <context>

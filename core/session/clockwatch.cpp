@@ -11,7 +11,7 @@ ClockWatch::ClockWatch(Sink sink, QObject* parent)
     , m_sink(std::move(sink))
 {
     m_check.setInterval(1000);
-    connect(&m_check, &QTimer::timeout, this, &ClockWatch::checkProblems);
+    connect(&m_check, &QTimer::timeout, this, &ClockWatch::tick);
 }
 
 ClockWatch::~ClockWatch() = default;
@@ -36,14 +36,18 @@ void ClockWatch::watch(const QStringList& named, const MqttProfile& profile)
             continue;
         }
         m_failures.erase(it->first);
+        m_lastAnswerNs.erase(it->first);
         it = m_probers.erase(it);
     }
     for (const QString& host : std::as_const(hosts)) {
         if (m_probers.count(host))
             continue;
         auto prober = std::make_unique<MqttClockProber>(host, m_profile);
-        connect(prober.get(), &ClockProber::estimateChanged, this, [this](const ClockEstimate& e) {
-            m_failures.erase(e.host);
+        connect(prober.get(), &ClockProber::estimateChanged, this, [this, host](const ClockEstimate& e) {
+            if (e.probes < kMinProbes)
+                return;
+            m_failures.erase(host);
+            m_lastAnswerNs[host] = wallClockNs();
             m_sink(e);
         });
         connect(prober.get(), &ClockProber::failed, this, [this, host](const QString& why) {
@@ -74,6 +78,15 @@ const ClockProber* ClockWatch::prober(const QString& host) const
     return it == m_probers.end() ? nullptr : it->second.get();
 }
 
+void ClockWatch::tick()
+{
+    const qint64 now = wallClockNs();
+    for (const auto& [host, prober] : m_probers)
+        if (const ClockEstimate e = prober->estimate(now); e.isValid() && e.probes >= kMinProbes)
+            m_sink(e);
+    checkProblems();
+}
+
 QString ClockWatch::syncText() const
 {
     QStringList lines;
@@ -92,10 +105,16 @@ void ClockWatch::checkProblems()
 {
     const qint64 now = wallClockNs();
     QStringList silent;
+    QStringList stale;
     QStringList failed;
     for (const auto& [host, prober] : m_probers) {
         if (const auto f = m_failures.find(host); f != m_failures.end()) {
             failed << tr("%1 (%2)").arg(host, f->second);
+            continue;
+        }
+        if (const auto last = m_lastAnswerNs.find(host); last != m_lastAnswerNs.end()) {
+            if (now - last->second > kSilentNs)
+                stale << tr("%1 for %2 s").arg(host).arg((now - last->second) / 1'000'000'000);
             continue;
         }
         const ClockProberCounters c = prober->counters();
@@ -109,6 +128,10 @@ void ClockWatch::checkProblems()
         parts << tr("No clock service answers for %1 on the broker: run `bridgescope clock serve --name NAME "
                     "--broker URL` on each host, or set one_clock: true for hosts that share a clock.")
                      .arg(silent.join(u", "_s));
+    if (!stale.isEmpty())
+        parts << tr("No answer from the clock service of %1: the estimate kept grows less certain with "
+                    "time.")
+                     .arg(stale.join(u", "_s));
     if (!failed.isEmpty())
         parts << tr("Clocks cannot be probed: %1.").arg(failed.join(u"; "_s));
     if (m_omitted > 0)

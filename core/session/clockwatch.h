@@ -23,6 +23,11 @@ class ClockWatch : public QObject
     Q_OBJECT
 public:
     static constexpr int kMaxHosts = 16; ///< hosts probed at once; a pipeline naming more probes the first
+    /// A measured host silent this long is said: its estimate ages (the uncertainty grows with time).
+    static constexpr qint64 kSilentNs = 5'000'000'000;
+    /// Answers an estimate needs before it corrects anything: the first ones, through a connection
+    /// just made, are the slowest (and their uncertainty would stay the figures' for a whole window).
+    static constexpr int kMinProbes = 4;
 
     using Sink = std::function<void(const ClockEstimate&)>;
     explicit ClockWatch(Sink sink, QObject* parent = nullptr);
@@ -48,12 +53,16 @@ signals:
 
 private:
     void checkProblems();
+    /// Once a second: every measured host's estimate as of now (its uncertainty grows with the time
+    /// since its best probe, so a silent service's estimate is handed on less certain), then the problems.
+    void tick();
 
     Sink m_sink;
     MqttProfile m_profile;
     std::map<QString, std::unique_ptr<ClockProber>> m_probers; ///< host -> its prober
     std::map<QString, QString> m_failures; ///< host -> why its transport failed
-    QTimer m_check; ///< looks for hosts that do not answer
+    std::map<QString, qint64> m_lastAnswerNs; ///< host -> when its latest estimate came (our wall clock)
+    QTimer m_check; ///< ages the estimates and looks for hosts that do not answer
     QString m_problems;
     int m_omitted = 0;
 };

@@ -129,6 +129,9 @@ QString MeasureSession::clocksText() const
         parts << tr("Clocks measured: %1.").arg(measured);
     if (!m_clockProblems.isEmpty())
         parts << m_clockProblems;
+    else if (parts.isEmpty() && m_clockWatch && !m_clockWatch->hosts().isEmpty())
+        parts << tr("Measuring the clocks of %1 through the broker (bridgescope clock serve on each host)…")
+                     .arg(m_clockWatch->hosts().join(u", "_s));
     return parts.join(u' ');
 }
 
@@ -139,7 +142,10 @@ QString MeasureSession::clockSyncText() const
 
 void MeasureSession::setClockProblems(const QString& problems)
 {
+    if (problems == m_clockProblems)
+        return;
     m_clockProblems = problems;
+    emit clocksChanged();
 }
 
 void MeasureSession::setRos1(bool on)
@@ -172,15 +178,15 @@ void MeasureSession::updateClockWatch()
     if (!m_clockWatch)
         return;
     const Pipeline& p = m_showingRun ? m_livePipeline : m_engine.pipeline();
+    const bool automatic = m_showingRun ? m_liveAutomatic : m_automatic;
     QStringList hosts;
-    if (!p.oneClock())
+    // The user's pipeline only (loaded, edited, given to record): one proposed from what is seen
+    // probes nothing by itself. On two clocks, while the broker is connected.
+    if (!automatic && !p.oneClock() && m_parts.mqtt->state() == MqttConnection::State::Connected)
         for (int t = 0; t < p.topicCount(); ++t)
             hosts << p.host(t);
-    // Only while the broker is connected: looking at a pipeline with a broker that is not there
-    // probes nothing.
-    if (m_parts.mqtt->state() != MqttConnection::State::Connected)
-        hosts.clear();
     m_clockWatch->watch(hosts, m_parts.mqtt->profile());
+    emit clocksChanged();
 }
 
 void MeasureSession::onDrained(qint64 nowNs)
@@ -192,9 +198,12 @@ void MeasureSession::onDrained(qint64 nowNs)
         source->takeStamps(stamps, latencies);
     if (m_showingRun)
         return; // a recorded run is on screen: live stamps are not measured meanwhile
-    for (const ClockEstimate& clock : std::exchange(m_pendingClocks, {})) {
-        m_engine.setClock(clock);
-        m_recorder->addClock(clock, nowNs);
+    if (!m_pendingClocks.empty()) {
+        for (const ClockEstimate& clock : std::exchange(m_pendingClocks, {})) {
+            m_engine.setClock(clock);
+            m_recorder->addClock(clock, nowNs);
+        }
+        emit clocksChanged();
     }
     m_recorder->add(stamps, latencies, nowNs);
 
@@ -286,6 +295,7 @@ void MeasureSession::setAutomatic()
     m_proposedTopics = 0;
     m_proposedWithCompleteSamples = false;
     proposeIfNew();
+    updateClockWatch();
     publish();
 }
 

@@ -150,6 +150,8 @@ signals:
     void pipelineChanged();
     /// New stamp topics were seen.
     void stampTopicsChanged();
+    /// What clocksText() says may have changed: an estimate came, a host went silent, probing began.
+    void clocksChanged();
 
 private:
     void onGraph(const TopicGraph& graph);

@@ -2,20 +2,23 @@
 // The Measure page on live stamps from a real rosmaster: the paper's pipeline with two hosts,
 // Table I with derived rows, ECDFs, pause and reset, and editing the pipeline by keyboard and drag.
 #include "app/gui/mainwindow.h"
+#include "clock/clockserver.h"
 #include "fixtures.h"
 #include "models/latencystatsmodel.h"
+#include "mqtt/mqttclockserver.h"
 #include "resulttext.h"
-#include "widgets/measure/pipelinemodel.h"
-#include "widgets/measure/stamptopicmodel.h"
 #include "session/measuresession.h"
 #include "syntheticrun.h"
 #include "testservers.h"
+#include "viewaudit.h"
 #include "viewhelpers.h"
 #include "widgets/common/ecdfchart.h"
 #include "widgets/common/livetext.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/measure/measurepage.h"
+#include "widgets/measure/pipelinemodel.h"
 #include "widgets/measure/recorddialog.h"
+#include "widgets/measure/stamptopicmodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -107,6 +110,7 @@ private slots:
     {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_servers.startRosMaster());
+        QVERIFY2(m_servers.startMosquitto(), qPrintable(m_servers.errorString()));
         m_servers.exportRosEnvironment();
     }
 
@@ -212,6 +216,84 @@ private slots:
         QTest::keyClick(statsView, Qt::Key_R, Qt::ControlModifier);
         QCOMPARE(table->index(total, LatencyStatsModel::CountColumn).data().toString(), u"0"_s);
         QVERIFY(named<LiveText>(*page, u"measureCounts"_s)->text().contains(u"0 complete"_s));
+    }
+
+    // Issue 43: the window probes the clock services of the pipeline's hosts on the broker it is
+    // connected to, says what it does and what does not answer, and pins each crossing corrected
+    // by the measured offset with its interval; a service that goes away is said too.
+    void clocksAreMeasuredAndEachCrossingCorrected()
+    {
+        MainWindow w;
+        w.discoverPage()->setRosMasterUri(m_servers.rosMasterUri());
+        w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        MeasurePage* page = w.measurePage();
+        w.resize(1280, 800);
+        w.show();
+        w.pages()->setCurrentWidget(page);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* clocks = named<QLabel>(*page, u"measureClocks"_s);
+        QVERIFY(!clocks->isVisible()); // nothing probed before the user's pipeline
+
+        QStringList topics;
+        const QString file = writePaperPipeline(u"clocks.yaml"_s, {}, &topics);
+        QString error;
+        QVERIFY2(noted(page->loadPipeline(file), &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(clocks->isVisible() && clocks->text().contains(u"cloud, vehicle"_s), 10000);
+        // No service yet: said, with what to run, once the first probes went unanswered.
+        QTRY_VERIFY_WITH_TIMEOUT(clocks->text().contains(u"No clock service answers for cloud, vehicle"_s),
+                                 10000);
+
+        // The hosts' services: the cloud's clock 250 ms ahead, as its stamps are.
+        const auto serve = [this](const QString& name, double offsetMs) {
+            ClockServerOptions o;
+            o.name = name;
+            o.clockOffsetMs = offsetMs;
+            auto server = std::make_unique<ClockServer>(o);
+            auto mqtt = std::make_unique<MqttClockServer>(server.get());
+            mqtt->open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+            return std::pair {std::move(server), std::move(mqtt)};
+        };
+        auto vehicle = serve(u"vehicle"_s, 0);
+        auto cloud = serve(u"cloud"_s, 250);
+        QTRY_VERIFY_WITH_TIMEOUT(clocks->text().startsWith(u"Clocks measured: cloud +250."_s)
+                                     || clocks->text().startsWith(u"Clocks measured: cloud +249.9"_s),
+                                 15000);
+        QVERIFY2(clocks->text().contains(u" ms ± "_s) && clocks->text().contains(u"against vehicle"_s),
+                 qPrintable(clocks->text()));
+
+        auto pub = publish(paperStamps(topics), 300, 5);
+        const LatencyEngine& e = w.measure()->engine();
+        const int out = e.pipeline().crossings().first();
+        QTRY_VERIFY_WITH_TIMEOUT(e.pipelineSeries().correctedSeries(out) >= 0
+                                     && e.series(e.pipelineSeries().correctedSeries(out)).count() >= 250,
+                                 60000);
+        QVERIFY(pub->waitForFinished(10000));
+        // Pinned: each way corrected, within its interval, and the asymmetry beside half the round trip.
+        auto* summary = named<QTableView>(*page, u"summaryView"_s);
+        QAbstractItemModel* pinned = summary->model();
+        QTRY_VERIFY(rowOf(pinned, SeriesId::ofCorrected(out).toString()) >= 0);
+        const int row = rowOf(pinned, SeriesId::ofCorrected(out).toString());
+        const QString label = pinned->index(row, 0).data().toString();
+        QVERIFY2(label.startsWith(u"communication, vehicle → cloud, clocks measured ± "_s),
+                 qPrintable(label));
+        QVERIFY(rowOf(pinned, u"asymmetry"_s) >= 0);
+        QVERIFY(rowOf(pinned, u"one_way"_s) >= 0);
+        // The synthetic crossings take about 19 ms each way, whatever the 250 ms between the clocks.
+        const double median = pinned->index(row, LatencyStatsModel::MedianColumn)
+                                  .data(LatencyStatsModel::ValueRole)
+                                  .toDouble();
+        QVERIFY2(std::abs(median - 19) < 2, qPrintable(QString::number(median)));
+        QVERIFY2(ViewAudit::elidedFiguresIn(&w).isEmpty(),
+                 qPrintable(ViewAudit::elidedFiguresIn(&w).join(u'\n')));
+        QCOMPARE(clocks->width() <= page->width(), true);
+        if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+            w.grab().save(shots + u"/measure-clocks.png"_s);
+
+        // The cloud's service goes away: the estimate is kept, less certain with time, and it is said.
+        cloud = {};
+        QTRY_VERIFY_WITH_TIMEOUT(clocks->text().contains(u"No answer from the clock service of cloud"_s),
+                                 15000);
+        QVERIFY(clocks->text().startsWith(u"Clocks measured: cloud"_s));
     }
 
     // Regression (issue 40, item 4): the automatic order put the vehicle's return stamps before

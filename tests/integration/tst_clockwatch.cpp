@@ -78,6 +78,18 @@ private slots:
         QCOMPARE(watch.prober(u"cloud"_s), cloudProber);
         QVERIFY(!watch.prober(u"edge"_s));
         QTRY_VERIFY(watch.problems().isEmpty());
+
+        // The cloud's service goes away: its estimate is still handed on, each second less certain
+        // (the drift allowance since its best probe), and the page says the service is silent.
+        const ClockEstimate before = latest[u"cloud"_s];
+        const quint64 answeredBefore = cloud.server->counters().answered;
+        cloud.mqtt.reset();
+        cloud.server.reset();
+        QTRY_VERIFY_WITH_TIMEOUT(watch.problems().contains(u"No answer from the clock service of cloud"_s),
+                                 15000);
+        QVERIFY(latest[u"cloud"_s].uncertaintyNs > before.uncertaintyNs);
+        QCOMPARE(latest[u"cloud"_s].offsetNs, before.offsetNs);
+        QVERIFY(answeredBefore > 0);
         watch.watch({}, MqttProfile::fromUrl(m_servers.brokerUrl()));
         QVERIFY(watch.hosts().isEmpty());
         // Without a broker, nothing either.
@@ -85,9 +97,9 @@ private slots:
         none.url.clear();
         watch.watch({u"vehicle"_s}, none);
         QVERIFY(watch.hosts().isEmpty());
-        const quint64 answered = cloud.server->counters().answered;
+        const quint64 answered = vehicle.server->counters().answered;
         QTest::qWait(1500); // nothing is awaited here: no probe may come during it
-        QCOMPARE(cloud.server->counters().answered, answered);
+        QCOMPARE(vehicle.server->counters().answered, answered);
     }
 
     void aPipelineNamingTooManyHostsProbesABoundedFew()

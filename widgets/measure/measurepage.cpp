@@ -428,6 +428,7 @@ void MeasurePage::connectSession()
     connect(m_measure, &MeasureSession::pipelineChanged, this, &MeasurePage::onPipelineChanged);
     connect(m_measure, &MeasureSession::stampTopicsChanged, this,
             [this] { m_seen->update(m_measure->discovery(), m_measure->pipeline()); });
+    connect(m_measure, &MeasureSession::clocksChanged, this, &MeasurePage::updateClocks);
     connect(m_measure, &MeasureSession::recordingChanged, this, &MeasurePage::updateEditable);
     connect(m_measure, &MeasureSession::showingRunChanged, this, &MeasurePage::updateEditable);
 }
