@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Writes the seed of fuzz_runfile: a small but real run file (three stamp topics, a few samples,
-// one external latency series, one watch event) through RunFile::write, as `record` and imports write it.
+// one external latency series, one watch event, two hosts' clocks) through RunFile::write, as `record` and imports write it.
 //   make_runfile_seed OUT.bsrun
 #include "record/runfile.h"
 
@@ -41,6 +41,20 @@ int main(int argc, char** argv)
                           run.info.startedNs + 200'000'000LL,
                           run.info.startedNs + 700'000'000LL,
                           "{\"figures\":{\"lost\":2}}"});
+    // The hosts' clocks as measured (issue 43): the vehicle's from the start, the cloud's later.
+    for (const auto& [host, offsetNs, drained] : {std::tuple {QStringLiteral("vehicle"), qint64(0), qint64(0)},
+                                                 std::tuple {QStringLiteral("cloud"), qint64(35'000'000),
+                                                             run.info.startedNs + 150'000'000LL}}) {
+        ClockEstimate c;
+        c.host = host;
+        c.offsetNs = offsetNs;
+        c.uncertaintyNs = 400'000;
+        c.driftPpm = 1.5;
+        c.bestRoundTripNs = 800'000;
+        c.atNs = drained;
+        c.probes = 8;
+        run.clocks.push_back({c, drained});
+    }
     if (const Result<void> written = RunFile::write(QString::fromLocal8Bit(argv[1]), run); !written) {
         std::fprintf(stderr, "%s\n", qPrintable(written.error().toString()));
         return 1;
