@@ -6608,6 +6608,17 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
     </message>
 </context>
 <context>
+    <name>RemoteCommand</name>
+    <message>
+        <source>%1 (%2) did not finish %3 within %4 s</source>
+        <translation>%1 (%2) hat %3 nicht innerhalb von %4 s beendet</translation>
+    </message>
+    <message>
+        <source>%1 on %2 (%3) ended with status %4: %5</source>
+        <translation>%1 auf %2 (%3) endete mit Status %4: %5</translation>
+    </message>
+</context>
+<context>
     <name>RemoteHost</name>
     <message>
         <source>want ssh://user@host or ssh://user@host:port</source>
@@ -6673,20 +6684,8 @@ Exit-Status: 0 aufgezeichnet, 1 nichts aufgezeichnet (ohne --allow-empty) oder L
         <translation>%1 (%2) führt bereits ein Programm aus</translation>
     </message>
     <message>
-        <source>cannot run on %1 (%2): %3</source>
-        <translation>kann auf %1 (%2) nicht ausführen: %3</translation>
-    </message>
-    <message>
-        <source>cannot start %1 for %2 (%3): %4</source>
-        <translation>kann %1 für %2 (%3) nicht starten: %4</translation>
-    </message>
-    <message>
         <source>ssh to %1 (%2) ended unexpectedly</source>
         <translation>ssh zu %1 (%2) endete unerwartet</translation>
-    </message>
-    <message>
-        <source>cannot reach %1 (%2): %3</source>
-        <translation>%1 (%2) nicht erreichbar: %3</translation>
     </message>
     <message>
         <source>lost %1 (%2): %3</source>
@@ -8341,6 +8340,18 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>the known-hosts file &quot;%1&quot; has white space, quotes, &apos;%&apos; or &apos;\&apos; in its name, which ssh&apos;s options cannot carry</source>
         <translation>die Known-Hosts-Datei &quot;%1&quot; hat Leerraum, Anführungszeichen, &apos;%&apos; oder &apos;\&apos; im Namen, was die Optionen von ssh nicht tragen können</translation>
+    </message>
+    <message>
+        <source>cannot reach %1 (%2): %3</source>
+        <translation>%1 (%2) nicht erreichbar: %3</translation>
+    </message>
+    <message>
+        <source>cannot run on %1 (%2): %3</source>
+        <translation>kann auf %1 (%2) nicht ausführen: %3</translation>
+    </message>
+    <message>
+        <source>cannot start %1 for %2 (%3): %4</source>
+        <translation>kann %1 für %2 (%3) nicht starten: %4</translation>
     </message>
 </context>
 <context>

@@ -98,12 +98,12 @@ bool RemoteProcess::start(const QStringList& argv)
         QStringList {u"sh"_s, u"-c"_s, s_script, u"bridgescope-remote"_s, QString::number(m_graceSeconds)}
         + argv);
     if (!command) {
-        m_error = tr("cannot run on %1 (%2): %3").arg(m_role, m_host.url(), command.error().toString());
+        m_error = SshCommand::cannotRun(m_role, m_host, command.error().toString());
         return false;
     }
     const Result<QStringList> args = SshCommand::arguments(m_host, m_options, *command);
     if (!args) {
-        m_error = tr("cannot run on %1 (%2): %3").arg(m_role, m_host.url(), args.error().toString());
+        m_error = SshCommand::cannotRun(m_role, m_host, args.error().toString());
         return false;
     }
     m_ssh = std::make_unique<QProcess>();
@@ -115,8 +115,7 @@ bool RemoteProcess::start(const QStringList& argv)
     connect(m_ssh.get(), &QProcess::finished, this, &RemoteProcess::onFinished);
     m_ssh->start(m_options.program, *args);
     if (!m_ssh->waitForStarted(5000)) {
-        m_error = tr("cannot start %1 for %2 (%3): %4")
-                      .arg(m_options.program, m_role, m_host.url(), m_ssh->errorString());
+        m_error = SshCommand::cannotStart(m_options.program, m_role, m_host, m_ssh->errorString());
         m_ssh.reset();
         return false;
     }
@@ -182,7 +181,7 @@ void RemoteProcess::onFinished(int exitCode, QProcess::ExitStatus status)
         if (!m_endingLocally)
             m_error = tr("ssh to %1 (%2) ended unexpectedly").arg(m_role, m_host.url());
     } else if (exitCode == 255 && m_remotePid == 0) {
-        m_error = tr("cannot reach %1 (%2): %3").arg(m_role, m_host.url(), message);
+        m_error = SshCommand::cannotReach(m_role, m_host, message);
     } else if (exitCode == 255 && !m_stopRequested) {
         m_error = tr("lost %1 (%2): %3").arg(m_role, m_host.url(), message);
     } else if (m_remotePid == 0 && exitCode != 0) {

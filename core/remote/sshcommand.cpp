@@ -58,3 +58,19 @@ Result<QStringList> SshCommand::arguments(const RemoteHost& host, const SshOptio
     args << u"-p"_s << QString::number(host.port) << host.destination() << u"--"_s << remoteCommand;
     return args;
 }
+
+QString SshCommand::cannotReach(const QString& role, const RemoteHost& host, const QString& sshMessage)
+{
+    return tr("cannot reach %1 (%2): %3").arg(role, host.url(), sshMessage);
+}
+
+QString SshCommand::cannotRun(const QString& role, const RemoteHost& host, const QString& why)
+{
+    return tr("cannot run on %1 (%2): %3").arg(role, host.url(), why);
+}
+
+QString SshCommand::cannotStart(const QString& program, const QString& role, const RemoteHost& host,
+                                const QString& why)
+{
+    return tr("cannot start %1 for %2 (%3): %4").arg(program, role, host.url(), why);
+}

@@ -40,4 +40,13 @@ public:
     /// An error when a configured file name cannot be passed safely.
     static Result<QStringList> arguments(const RemoteHost& host, const SshOptions& options,
                                          const QString& remoteCommand);
+
+    /// The messages of every ssh run, the same whichever runs it; `role` names the host ("cloud").
+    /// "cannot reach ROLE (URL): ssh's message" (ssh's exit status 255).
+    static QString cannotReach(const QString& role, const RemoteHost& host, const QString& sshMessage);
+    /// "cannot run on ROLE (URL): why" (words that cannot be sent).
+    static QString cannotRun(const QString& role, const RemoteHost& host, const QString& why);
+    /// "cannot start PROGRAM for ROLE (URL): why" (no ssh here).
+    static QString cannotStart(const QString& program, const QString& role, const RemoteHost& host,
+                               const QString& why);
 };

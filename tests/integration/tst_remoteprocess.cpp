@@ -2,15 +2,35 @@
 // Programs on another host over ssh (issue 43), against the two-namespace lab: they run on the far
 // side, end when stopped or when the local ssh is killed, an unreachable host fails clearly within
 // the connect timeout, and hostile words run nothing extra over there.
+#include "remote/remotecommand.h"
 #include "remote/remoteprocess.h"
 #include "signalprocess.h"
 #include "twohostlab.h"
 
+#include <QCoreApplication>
+#include <QDir>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
+
+namespace {
+// Whether a live process's command line holds `text` (the namespaces share this machine's pids;
+// read from /proc: procps, pgrep's package, is not on every machine).
+bool anyProcessMentions(const QString& text)
+{
+    const QByteArray needle = text.toLocal8Bit();
+    const QStringList pids = QDir(u"/proc"_s).entryList({u"[0-9]*"_s}, QDir::Dirs);
+    for (const QString& pid : pids) {
+        QFile cmdline(u"/proc/"_s + pid + u"/cmdline"_s);
+        if (pid.toLongLong() != QCoreApplication::applicationPid() && cmdline.open(QIODevice::ReadOnly)
+            && cmdline.readAll().contains(needle))
+            return true;
+    }
+    return false;
+}
+} // namespace
 
 class TestRemoteProcess : public QObject
 {
@@ -148,6 +168,63 @@ private slots:
         QVERIFY(dash.waitForFinished(20000));
         QCOMPARE(dash.exitCode(), 127);
         QVERIFY(!QFile::exists(dir.filePath(u"injected"_s)));
+    }
+
+    // Short commands (checks before a cell, files a side needs): input in, output out, bounded.
+    void aCommandRunsWithItsInputAndBoundedOutput()
+    {
+        const RemoteRun echo = RemoteCommand::run(cloud(), options(), u"cloud"_s, {u"cat"_s}, "one\ntwo\n");
+        QVERIFY2(echo.ok(), qPrintable(echo.error));
+        QCOMPARE(echo.output, QByteArray("one\ntwo\n"));
+        const RemoteRun flood
+            = RemoteCommand::run(cloud(), options(), u"cloud"_s,
+                                 {u"head"_s, u"-c"_s, u"5000000"_s, u"/dev/zero"_s}, {}, 20000, 1000);
+        QVERIFY(flood.ok());
+        QCOMPARE(flood.output.size(), 1000);
+        const RemoteRun failing = RemoteCommand::run(
+            cloud(), options(), u"cloud"_s, {u"sh"_s, u"-c"_s, u"echo 'no such file' >&2; exit 4"_s});
+        QCOMPARE(failing.exitCode, 4);
+        QCOMPARE(failing.error, u"sh on cloud (%1) ended with status 4: no such file"_s.arg(cloud().url()));
+        const RemoteRun refused = RemoteCommand::run(cloud(2), options(2), u"cloud"_s, {u"true"_s});
+        QCOMPARE(refused.exitCode, 255);
+        QCOMPARE(refused.error,
+                 u"cannot reach cloud (%1): ssh: connect to host %2 port 2: Connection refused"_s.arg(
+                     cloud(2).url(), cloud().host));
+    }
+
+    void aCommandPastItsDeadlineEndsOnBothSides()
+    {
+        QTemporaryDir dir;
+        const QString mark = dir.filePath(u"still-running"_s);
+        // Writes a file every second for a minute unless ended.
+        const RemoteRun slow = RemoteCommand::run(
+            cloud(), options(), u"cloud"_s,
+            {u"sh"_s, u"-c"_s, u"for i in $(seq 60); do date > \"$1\"; sleep 1; done"_s, u"slow"_s, mark}, {},
+            1000);
+        QCOMPARE(slow.exitCode, -1);
+        QCOMPARE(slow.error, u"cloud (%1) did not finish sh within 1 s"_s.arg(cloud().url()));
+        // The far loop ends too (timeout -s KILL on the far side, a few seconds after): the file
+        // stops changing.
+        QTRY_VERIFY_WITH_TIMEOUT(!anyProcessMentions(mark), 10000);
+    }
+
+    void aFileIsWrittenOnTheFarHostUnderAnyName()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"new folder/$(touch injected)'; touch injected; '-x.yaml"_s);
+        QByteArray bytes;
+        for (int i = 0; i < 256 * 64; ++i)
+            bytes.append(char(i % 256));
+        const RemoteRun written = RemoteCommand::writeFile(cloud(), options(), u"cloud"_s, path, bytes);
+        QVERIFY2(written.ok(), qPrintable(written.error));
+        QFile file(path); // the namespaces share this machine's file system
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), bytes);
+        QCOMPARE(file.permissions()
+                     & (QFile::ReadGroup | QFile::ReadOther | QFile::WriteGroup | QFile::WriteOther),
+                 QFile::Permissions());
+        QVERIFY(!QFile::exists(dir.filePath(u"injected"_s)));
+        QVERIFY(!QFile::exists(u"injected"_s));
     }
 
     void aFailingFarProgramSaysWhy()

@@ -137,6 +137,39 @@ private slots:
         }
     }
 
+    // The broker on one side, reached from the other over the veth (issue 43, point 4).
+    void aBrokerOnOneSideServesTheOther()
+    {
+        TwoHostLab lab;
+        TWOHOSTLAB_UP_OR_SKIP(lab);
+        const QString conf = QFileInfo(lab.clientKey()).absolutePath() + u"/mosquitto.conf"_s;
+        QFile file(conf);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(
+            u"listener 1883 %1\nallow_anonymous true\n"_s.arg(lab.address(TwoHostLab::Cloud)).toLatin1());
+        file.close();
+        const auto broker
+            = lab.startProcess(TwoHostLab::Cloud, u"mosquitto"_s, {u"mosquitto"_s, u"-c"_s, conf});
+        QVERIFY2(broker, qPrintable(lab.errorString()));
+        const QStringList common = {u"-h"_s, lab.address(TwoHostLab::Cloud), u"-t"_s, u"lab/hello"_s};
+        // Retained, so the subscriber that comes later gets it; retried while the broker starts.
+        QTRY_VERIFY2_WITH_TIMEOUT(lab.run(TwoHostLab::Vehicle,
+                                          QStringList {u"mosquitto_pub"_s} + common
+                                              + QStringList {u"-r"_s, u"-m"_s, u"over the veth"_s})
+                                          .exitCode
+                                      == 0,
+                                  qPrintable(lab.log(u"mosquitto"_s)), 10000);
+        const LabRun sub = lab.run(TwoHostLab::Vehicle,
+                                   QStringList {u"mosquitto_sub"_s} + common
+                                       + QStringList {u"-C"_s, u"1"_s, u"-W"_s, u"5"_s});
+        QCOMPARE(sub.out, u"over the veth\n"_s);
+        // Only over the veth: the vehicle's own loopback has no broker.
+        QVERIFY(lab.run(TwoHostLab::Vehicle,
+                        {u"mosquitto_pub"_s, u"-h"_s, u"127.0.0.1"_s, u"-t"_s, u"x"_s, u"-m"_s, u"x"_s})
+                    .exitCode
+                != 0);
+    }
+
     void rateLimitsTheVeth()
     {
         TwoHostLab lab;

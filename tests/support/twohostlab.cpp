@@ -374,6 +374,27 @@ LabRun TwoHostLab::run(Side side, const QStringList& argv, int timeoutMs) const
     return runProgram(all.first(), all.mid(1), timeoutMs);
 }
 
+std::unique_ptr<QProcess> TwoHostLab::startProcess(Side side, const QString& name, const QStringList& argv)
+{
+    const QStringList all = inNamespace(side, argv);
+    auto process = std::make_unique<QProcess>();
+    process->setStandardOutputFile(path(name + u".log"_s));
+    process->setStandardErrorFile(path(name + u".log"_s), QIODevice::Append);
+    process->setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGTERM); });
+    process->start(all.first(), all.mid(1));
+    if (!process->waitForStarted(5000)) {
+        m_error = u"cannot start %1 in %2: %3"_s.arg(argv.value(0), netns(side), process->errorString());
+        return nullptr;
+    }
+    return process;
+}
+
+QString TwoHostLab::log(const QString& name) const
+{
+    QFile file(path(name + u".log"_s));
+    return file.open(QIODevice::ReadOnly) ? QString::fromLocal8Bit(file.readAll()) : QString();
+}
+
 bool TwoHostLab::setRate(Side side, const QString& rate)
 {
     const LabRun r = run(side,

@@ -62,6 +62,12 @@ public:
     QStringList inNamespace(Side side, const QStringList& argv) const;
     /// Runs argv inside `side`'s namespace and waits at most timeoutMs (then kills it).
     LabRun run(Side side, const QStringList& argv, int timeoutMs = 10000) const;
+    /// Starts a long-running argv inside `side`'s namespace (a broker on one side, a clock
+    /// service), its output in the lab's folder as NAME.log; it gets SIGTERM if the test process
+    /// dies, and the lab's teardown kills what is left. Null with errorString() when it does not start.
+    std::unique_ptr<QProcess> startProcess(Side side, const QString& name, const QStringList& argv);
+    /// The log of a process startProcess() started.
+    QString log(const QString& name) const;
     /// Limits the rate out of `side`'s veth with tc tbf (e.g. "10mbit"); false with errorString().
     bool setRate(Side side, const QString& rate);
     /// Pids of every process inside `side`'s namespace.
