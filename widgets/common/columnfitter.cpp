@@ -10,8 +10,10 @@
 #include <QHash>
 #include <QHeaderView>
 #include <QScopedValueRollback>
+#include <QScrollBar>
 #include <QStyle>
 #include <QStyleOptionHeader>
+#include <QStyleOptionViewItem>
 #include <QTableView>
 #include <QTreeView>
 
@@ -63,8 +65,21 @@ ColumnFitter::ColumnFitter(QAbstractItemView* view, QHeaderView* header)
     connect(model, &QAbstractItemModel::rowsRemoved, this, refit);
     connect(model, &QAbstractItemModel::modelReset, this, refit);
     connect(model, &QAbstractItemModel::layoutChanged, this, refit);
-    // Changed cells matter in the fill columns (topics edited); in the figure columns once a
-    // kGrowMs at most; not in the others, whose figures change every second (they would twitch).
+    // Rows moved (and the parents noted with them perhaps gone): every shown row is measured at
+    // the next paint, new rows too (before the refit).
+    const auto allShown = [this] { noteAllShownChanged(); };
+    connect(model, &QAbstractItemModel::rowsAboutToBeInserted, this, allShown);
+    connect(model, &QAbstractItemModel::rowsAboutToBeRemoved, this, allShown);
+    connect(model, &QAbstractItemModel::modelAboutToBeReset, this, allShown);
+    connect(model, &QAbstractItemModel::layoutAboutToBeChanged, this, allShown);
+    connect(view->verticalScrollBar(), &QScrollBar::valueChanged, this, allShown);
+    if (auto* tree = qobject_cast<QTreeView*>(view)) {
+        connect(tree, &QTreeView::expanded, this, allShown);
+        connect(tree, &QTreeView::collapsed, this, allShown);
+    }
+    // Changed cells matter in the fill columns (topics edited); in the figure columns where they
+    // are painted (growToShownChanges), the other columns sharing the room anew once a kGrowMs
+    // at most; not in the others, whose figures change every second (they would twitch).
     m_growTimer.setSingleShot(true);
     m_growTimer.setInterval(kGrowMs);
     connect(&m_growTimer, &QTimer::timeout, this, [this] {
@@ -72,7 +87,8 @@ ColumnFitter::ColumnFitter(QAbstractItemView* view, QHeaderView* header)
         if (!m_view->isVisible())
             return;
         // Sized by hand or restored: the figures grow all the same, the other columns stay.
-        if (fitFigures(true) && !keepsWidths())
+        const bool grown = std::exchange(m_grown, false);
+        if ((fitFigures(true) || grown) && !keepsWidths())
             fitTheRest(); // the fill and fitted columns share what is left
     });
     connect(model, &QAbstractItemModel::dataChanged, this,
@@ -80,9 +96,7 @@ ColumnFitter::ColumnFitter(QAbstractItemView* view, QHeaderView* header)
                 for (int c : std::as_const(m_fills))
                     if (c >= from.column() && c <= to.column())
                         m_timer.start();
-                for (int c : std::as_const(m_figures))
-                    if (c >= from.column() && c <= to.column() && !m_growTimer.isActive())
-                        m_growTimer.start();
+                noteChanged(from, to);
             });
     // Sized by hand: a handle dragged or double-clicked. (A model's reset resizes sections too,
     // and is no reason to stop fitting.) Once the drag ends, what it cut is widened again.
@@ -175,13 +189,91 @@ bool ColumnFitter::fitFigures(bool growOnly)
     return changed;
 }
 
+void ColumnFitter::noteChanged(const QModelIndex& from, const QModelIndex& to)
+{
+    // Bounded: past this many noted ranges, the shown rows are measured instead (a viewport's worth).
+    constexpr int kMaxNoted = 64;
+    if (std::none_of(m_figures.begin(), m_figures.end(),
+                     [&](int c) { return c >= from.column() && c <= to.column(); }))
+        return;
+    if (!m_growTimer.isActive())
+        m_growTimer.start(); // rows not shown yet, and the room shared anew
+    if (m_allShownChanged)
+        return;
+    if (m_changed.size() >= kMaxNoted)
+        noteAllShownChanged();
+    else
+        m_changed.append({from.parent(), from.row(), to.row(), from.column(), to.column()});
+}
+
+void ColumnFitter::noteAllShownChanged()
+{
+    m_changed.clear();
+    m_allShownChanged = !m_figures.isEmpty();
+}
+
+bool ColumnFitter::growToShownChanges()
+{
+    if (m_changed.isEmpty() && !m_allShownChanged)
+        return false;
+    const QList<Changed> changed = std::exchange(m_changed, {});
+    const bool all = std::exchange(m_allShownChanged, false);
+    const QAbstractItemModel* model = m_view->model();
+    QStyleOptionViewItem option;
+    option.initFrom(m_view->viewport());
+    option.widget = m_view;
+    option.font = m_view->font();
+    option.fontMetrics = m_view->fontMetrics();
+    QHash<int, int> needs; // the widest changed cell shown, by column
+    // The rows shown, top to bottom: a viewport's worth at most.
+    const int height = m_view->viewport()->height();
+    for (int y = 0; y < height;) {
+        const QModelIndex shown = m_view->indexAt(QPoint(0, y));
+        if (!shown.isValid())
+            break;
+        const QRect rect = m_view->visualRect(shown);
+        y = std::max(y + 1, rect.bottom() + 1);
+        const QModelIndex parent = shown.parent();
+        for (int c : std::as_const(m_figures)) {
+            if (c >= header()->count() || isHidden(c))
+                continue;
+            const auto holds = [&](const Changed& n) {
+                return n.parent == parent && shown.row() >= n.first && shown.row() <= n.last
+                    && c >= n.firstColumn && c <= n.lastColumn;
+            };
+            if (!all && std::none_of(changed.begin(), changed.end(), holds))
+                continue;
+            const QModelIndex index = model->index(shown.row(), c, parent);
+            if (const QAbstractItemDelegate* delegate = m_view->itemDelegateForIndex(index))
+                needs[c] = std::max(needs.value(c), delegate->sizeHint(option, index).width());
+        }
+    }
+    const QScopedValueRollback fitting(m_fitting, true);
+    bool grown = false;
+    for (auto it = needs.cbegin(); it != needs.cend(); ++it)
+        if (it.value() > width(it.key())) {
+            setWidth(it.key(), it.value());
+            grown = true;
+        }
+    if (grown) {
+        m_grown = true;
+        if (!m_growTimer.isActive())
+            m_growTimer.start();
+    }
+    return grown;
+}
+
 bool ColumnFitter::eventFilter(QObject* watched, QEvent* event)
 {
     // Compared with the viewport kept at construction: while the view is destroyed its viewport
     // still gets events, and the view is no longer one to ask (UBSan: a member call on a QWidget).
-    if (watched == m_viewport && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
+    // A figure is never painted cut: the changed cells about to be painted are measured first.
+    if (watched == m_viewport && event->type() == QEvent::Paint)
+        growToShownChanges();
+    else if (watched == m_viewport && (event->type() == QEvent::Resize || event->type() == QEvent::Show)) {
+        noteAllShownChanged(); // rows come into sight (figures changed while hidden)
         m_timer.start();
-    else if (watched == m_headerObject && event->type() == QEvent::DynamicPropertyChange)
+    } else if (watched == m_headerObject && event->type() == QEvent::DynamicPropertyChange)
         m_timer.start(); // restored: its widths are checked once they are back
     return QObject::eventFilter(watched, event);
 }

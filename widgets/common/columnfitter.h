@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QList>
+#include <QModelIndex>
 #include <QObject>
 #include <QTimer>
 
@@ -40,8 +41,10 @@ public:
     /// These columns (made Interactive here) take the width their figures need, as
     /// QHeaderView::ResizeToContents would, without its cost: that measures every row's text at
     /// every change of any cell (30 times a second on a live page). Here they are measured when
-    /// the rows or the view change, and at most once a kGrowMs while figures change, and then
-    /// only grow (figures that shrink by a digit do not make the columns twitch).
+    /// the rows or the view change; while figures change, the changed cells that are shown are
+    /// measured before the view paints them, and the columns grow at once (a figure that gains a
+    /// digit is never drawn cut), but never shrink (figures that lose a digit do not make the
+    /// columns twitch). The other columns share the room anew at most once a kGrowMs.
     void figures(const QList<int>& columns);
     static constexpr int kGrowMs = 1000;
     /// Fits now (the timer does it after changes).
@@ -61,6 +64,13 @@ private:
     /// Sizes the figure columns to their content; with `growOnly`, only those that need more room.
     /// True when a width changed.
     bool fitFigures(bool growOnly);
+    /// Grows the figure columns to the changed cells the viewport is about to paint (the rows
+    /// shown, at most a viewport's worth). True when a width changed.
+    bool growToShownChanges();
+    /// Notes changed cells of the figure columns, measured when they are painted.
+    void noteChanged(const QModelIndex& from, const QModelIndex& to);
+    /// Every shown figure cell is measured at the next paint (rows moved, scrolled, expanded).
+    void noteAllShownChanged();
     /// Sizes the fitted and fill columns in the room the others leave.
     void fitTheRest();
     /// The widths are the user's (sized by hand or restored): kept where they are wide enough.
@@ -82,6 +92,15 @@ private:
     QList<int> m_figures;
     QTimer m_timer;
     QTimer m_growTimer;
+    /// Changed rows of the figure columns not painted yet: a parent, its rows and the columns.
+    struct Changed
+    {
+        QModelIndex parent;
+        int first, last, firstColumn, lastColumn;
+    };
+    QList<Changed> m_changed;
+    bool m_allShownChanged = false; ///< rows moved or too many changes noted: every shown row
+    bool m_grown = false; ///< figures grew at a paint: the other columns share the room anew
     bool m_fitting = false;
     bool m_userSized = false;
 };
