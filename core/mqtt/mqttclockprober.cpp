@@ -11,8 +11,8 @@ MqttClockProber::MqttClockProber(const QString& host, const MqttProfile& profile
     , m_replyTopic(MqttClockServer::replyPrefix(host)
                    + QString::number(QRandomGenerator::global()->generate64(), 16))
 {
-    m_drain.setTimerType(Qt::PreciseTimer);
-    m_drain.setInterval(MqttClockServer::kDrainIntervalMs);
+    m_drain.setTimerType(Qt::CoarseTimer);
+    m_drain.setInterval(kDrainIntervalMs);
     connect(&m_drain, &QTimer::timeout, this, &MqttClockProber::drain);
     connect(&m_connection, &MqttConnection::stateChanged, this, &MqttClockProber::onState);
 }

@@ -19,7 +19,7 @@ MqttClockServer::MqttClockServer(ClockServer* server, QObject* parent)
     : QObject(parent)
     , m_server(server)
 {
-    m_drain.setTimerType(Qt::PreciseTimer);
+    m_drain.setTimerType(Qt::CoarseTimer);
     m_drain.setInterval(kDrainIntervalMs);
     connect(&m_drain, &QTimer::timeout, this, &MqttClockServer::drain);
     connect(&m_connection, &MqttConnection::stateChanged, this, &MqttClockServer::stateChanged);

@@ -231,7 +231,7 @@ private slots:
         w.show();
         w.pages()->setCurrentWidget(page);
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        auto* clocks = named<QLabel>(*page, u"measureClocks"_s);
+        auto* clocks = named<LiveText>(*page, u"measureClocks"_s);
         QVERIFY(!clocks->isVisible()); // nothing probed before the user's pipeline
 
         QStringList topics;

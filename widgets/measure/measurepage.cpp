@@ -101,7 +101,7 @@ MeasurePage::MeasurePage(MeasureSession* measure, QWidget* parent)
     , m_reset(new QAction(tr("&Reset"), this))
     , m_mode(new QLabel(this))
     , m_warning(new QLabel(this))
-    , m_clocks(new QLabel(this))
+    , m_clocks(new LiveText(this))
     , m_counts(new LiveText(this))
     , m_runBar(new RunBar(measure, this))
 {
@@ -317,7 +317,6 @@ QWidget* MeasurePage::createChartPane()
     layout->addWidget(m_warning);
     m_clocks->setObjectName(u"measureClocks"_s);
     m_clocks->setWordWrap(true);
-    m_clocks->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_clocksTip = tr("Each host's clock against the pipeline's first host, from the clock service's "
                      "probes: the crossings between measured hosts are corrected by it (rows \"clocks "
                      "measured\"), each within the uncertainty shown.");

@@ -94,7 +94,7 @@ private:
     /// Above the pinned rows: which figures contradict the pipeline, why, and what to do.
     QLabel* m_warning;
     /// Above the pinned rows: the hosts' clocks as measured, and the clock services that do not answer.
-    QLabel* m_clocks;
+    LiveText* m_clocks;
     QString m_clocksTip; ///< what the clocks line is; the hosts' own sync states follow it
     LiveText* m_counts;
     RunBar* m_runBar;
