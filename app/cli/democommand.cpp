@@ -81,7 +81,15 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
                                  u"1|2"_s, u"1"_s);
     const QCommandLineOption domain(u"ros-domain"_s, Demo::tr("With --ros 2: this domain instead of a free one."),
                                     u"ID"_s);
-    parser.addOptions({seconds, output, format, size, broker, master, ros, domain});
+    const QCommandLineOption cloudHost(
+        u"cloud-host"_s,
+        Demo::tr("Run the cloud's bridge, object detection and clock service on this host over OpenSSH "
+                 "(ssh://user@host[:port]; keys or an agent, never a password; ROS 1)."),
+        u"URL"_s);
+    const QCommandLineOption cloudProgram(
+        u"cloud-program"_s, Demo::tr("With --cloud-host: bridgescope's path there (default: this one's)."),
+        u"PATH"_s);
+    parser.addOptions({seconds, output, format, size, broker, master, ros, domain, cloudHost, cloudProgram});
     QStringList args = arguments;
     args.replace(0, u"bridgescope demo"_s);
     const int parsed = CliOutput::parseCommand(
@@ -90,7 +98,8 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
             "Runs the demo lab without a window: a private mosquitto and rosmaster, a vehicle and a cloud "
             "reference bridge, a 0.18 MB point cloud at 10 Hz, a 40 ms object detection in the cloud whose "
             "clock is 35 ms ahead, and stamps at every component; records every stamp and prints the "
-            "latency report at the end. Everything it started stops with it.\n"
+            "latency report at the end. Everything it started stops with it, on this host and on the "
+            "cloud's (--cloud-host).\n"
             "Exit status: 0 samples measured, 1 the lab failed or measured nothing, 2 bad options."));
     if (parsed >= 0)
         return parsed;
@@ -114,6 +123,18 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
     request->lab.rosMasterUri = parser.value(master);
     if (!readRos(parser.value(ros), parser.isSet(domain) ? parser.value(domain) : QString(), &request->lab))
         return ExitUsage;
+    if (parser.isSet(cloudHost)) {
+        const Result<RemoteHost> host = RemoteHost::parse(parser.value(cloudHost));
+        if (!host) {
+            err(Demo::tr("--cloud-host: %1").arg(host.error().toString()));
+            return ExitUsage;
+        }
+        request->lab.cloudHost
+            = DemoLab::FarHost {*host, parser.value(cloudProgram), SshOptions::fromEnvironment()};
+    } else if (parser.isSet(cloudProgram)) {
+        err(Demo::tr("--cloud-program needs --cloud-host"));
+        return ExitUsage;
+    }
     request->runPath = parser.value(output);
     if (!request->runPath.isEmpty() && QFileInfo::exists(request->runPath)) {
         err(Demo::tr("%1 exists already; a run is never overwritten").arg(request->runPath));
@@ -140,6 +161,9 @@ int runDemo(const DemoRequest& request, const QString& runPath)
     else
         err(Demo::tr("broker %1, ROS master %2, configs in %3")
                 .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()), lab.rosMasterUri(), lab.directory()));
+    if (lab.isFar(u"cloud"_s))
+        err(Demo::tr("the cloud's side runs on %1, reaching this host at %2")
+                .arg(request.lab.cloudHost->host.url(), lab.listenAddress(u"cloud"_s)));
     const Result<Pipeline> pipeline = Pipeline::readFile(lab.pipelinePath());
     if (!pipeline) {
         err(pipeline.error().toString());

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "demolab.h"
 
-#include "files/atomicfile.h"
 #include "base/logging.h"
 #include "base/loopbackports.h"
-#include "yaml/secrets.h"
 #include "config/bridgeconfig.h"
 #include "config/configwriter.h"
+#include "files/atomicfile.h"
 #include "latency/pipeline.h"
+#include "remote/remotecommand.h"
+#include "remote/remoteprocess.h"
+#include "yaml/secrets.h"
 
 #include <atomic>
 #include <cerrno>
@@ -16,12 +18,15 @@
 #include <pwd.h>
 #include <QDeadlineTimer>
 #include <QDir>
+#include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
+#include <QHostAddress>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUrl>
 #include <sys/prctl.h>
 #include <unistd.h>
@@ -63,6 +68,12 @@ QString bridgeConfig(const QString& side, const QString& host, quint16 port, con
     return ConfigWriter::write(c, o.ros == 2 ? ConfigLayout::Ros2 : ConfigLayout::Ros1);
 }
 
+/// An address as a URL's host (an IPv6 literal in brackets).
+QString urlHost(const QString& address)
+{
+    return address.contains(u':') ? u"[%1]"_s.arg(address) : address;
+}
+
 /// `text` as one word for sh.
 QString shellQuoted(const QString& text)
 {
@@ -83,12 +94,179 @@ struct DemoLab::Private
     QHash<QString, quint16> bridgePorts; ///< side -> relay port
     QList<std::pair<QString, quint16>> starting; ///< servers launched, not yet listening
     int domain = -1; ///< ROS 2: the lab's domain
+    quint16 masterPort = 0; ///< the private rosmaster's, else 0
+    QString program; ///< the bridgescope the components run here
 
-    QProcessEnvironment rosEnvironment() const
+    /// A side on another host: what its ssh session says of the two ends, and its folder there.
+    struct Far
+    {
+        QString listenAddress; ///< this host, as the far one reaches it
+        QString ownAddress; ///< the far host's own address on that connection (its ROS_IP)
+        QString directory; ///< a private folder there (mktemp -d), removed at stop
+    };
+    QHash<QString, Far> far; ///< side -> where it runs
+    std::vector<std::unique_ptr<RemoteProcess>> remotes; ///< in start order
+    QStringList remoteNames;
+
+    const std::optional<FarHost>& farHost(const QString& side) const
+    {
+        return side == u"vehicle"_s ? options.vehicleHost : options.cloudHost;
+    }
+
+    /// Asks the side's host how it sees this one (SSH_CONNECTION: client address, port, its own
+    /// address, port) and makes its private folder there.
+    Status prepareFar(const QString& side)
+    {
+        const FarHost& h = *farHost(side);
+        const RemoteRun where = RemoteCommand::run(h.host, h.ssh, side, {u"printenv"_s, u"SSH_CONNECTION"_s},
+                                                   {}, RemoteCommand::kDefaultTimeoutMs, 4096);
+        if (!where.ok())
+            return LocatedError {where.error};
+        const QStringList ends = QString::fromLatin1(where.output).simplified().split(u' ');
+        if (ends.size() != 4 || QHostAddress(ends[0]).isNull() || QHostAddress(ends[2]).isNull())
+            return LocatedError {DemoLab::tr("%1 (%2) does not say its ssh connection (SSH_CONNECTION)")
+                                     .arg(side, h.host.url())};
+        const RemoteRun made = RemoteCommand::run(h.host, h.ssh, side,
+                                                  {u"mktemp"_s, u"-d"_s, u"/tmp/bridgescope-lab-XXXXXX"_s},
+                                                  {}, RemoteCommand::kDefaultTimeoutMs, 4096);
+        const QString folder = QString::fromUtf8(made.output).trimmed();
+        if (!made.ok() || !folder.startsWith(u"/tmp/bridgescope-lab-"_s) || folder.contains(u'\n'))
+            return LocatedError {
+                made.ok() ? DemoLab::tr("%1 (%2) made no folder for the lab").arg(side, h.host.url())
+                          : made.error};
+        far.insert(side, {QHostAddress(ends[0]).toString(), QHostAddress(ends[2]).toString(), folder});
+        return {};
+    }
+
+    /// The broker's host and port as `side`'s bridge reaches them: the relay in front of it when
+    /// there is one (and `viaRelay`), the lab's own broker by this host's address from a far side, else the
+    /// URL's.
+    std::pair<QString, quint16> brokerFor(const QString& side, const QUrl& broker, bool viaRelay = true) const
+    {
+        const QString here = far.contains(side) ? far[side].listenAddress : u"127.0.0.1"_s;
+        if (viaRelay && bridgePorts.contains(side))
+            return {here, bridgePorts.value(side)};
+        if (far.contains(side) && options.brokerUrl.isEmpty())
+            return {here, quint16(broker.port(1883))};
+        return {broker.host(), quint16(broker.port(1883))};
+    }
+
+    /// The master's URI as `side`'s nodes reach it.
+    QString masterFor(const QString& side) const
+    {
+        if (far.contains(side) && masterPort != 0)
+            return u"http://%1:%2/"_s.arg(urlHost(far[side].listenAddress)).arg(masterPort);
+        return masterUri;
+    }
+
+    /// Starts `args` of bridgescope on `side`'s far host, with the lab's ROS environment there.
+    Status launchFar(const QString& side, const QString& name, const QStringList& args)
+    {
+        const FarHost& h = *farHost(side);
+        const Far& f = far[side];
+        const QString program = h.program.isEmpty() ? QCoreApplication::applicationFilePath() : h.program;
+        auto p = std::make_unique<RemoteProcess>(h.host, h.ssh, side);
+        const QStringList argv = QStringList {u"env"_s,
+                                              u"-u"_s,
+                                              u"ROS_HOSTNAME"_s,
+                                              u"ROS_MASTER_URI="_s + masterFor(side),
+                                              u"ROS_IP="_s + f.ownAddress,
+                                              u"ROS_HOME="_s + f.directory + u"/ros"_s,
+                                              u"ROS_LOG_DIR="_s + f.directory + u"/ros/log"_s,
+                                              u"ROS_VERSION=1"_s,
+                                              program}
+            + args;
+        if (!p->start(argv))
+            return LocatedError {p->errorString()};
+        qCDebug(lcDemo).noquote() << "started" << name << "on" << h.host.url() << args.join(u' ');
+        remotes.push_back(std::move(p));
+        remoteNames << name;
+        return {};
+    }
+
+    /// Starts bridgescope with `args` (and the lab's ROS arguments unless `clock`) on `side`'s host.
+    Status start(const QString& side, const QString& name, const QStringList& args,
+                 const QByteArray& secret = {}, bool ros = true)
+    {
+        const QStringList all = !ros ? args
+            : options.ros == 2
+            ? args + QStringList {u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(domain)}
+            : args + QStringList {u"--ros-master"_s, masterFor(side)};
+        if (far.contains(side))
+            return launchFar(side, name, all);
+        QString why;
+        if (!launch(name, program, all, secret, &why))
+            return LocatedError {why};
+        return {};
+    }
+
+    /// Both bridges' configs, here and on a far side's host.
+    Status writeConfigs(const QUrl& broker, const QString& caFile)
+    {
+        for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
+            const auto [host, port] = brokerFor(side, broker);
+            const QByteArray config = bridgeConfig(side, host, port, caFile, options).toUtf8();
+            if (const Status written = AtomicFile::write(dir.filePath(side + u".yaml"_s), config, false);
+                !written)
+                return written;
+            if (far.contains(side)) {
+                const FarHost& h = *farHost(side);
+                const RemoteRun copied = RemoteCommand::writeFile(
+                    h.host, h.ssh, side, far[side].directory + u"/"_s + side + u".yaml"_s, config);
+                if (!copied.ok())
+                    return LocatedError {copied.error};
+            }
+        }
+        return {};
+    }
+
+    /// Waits until every far program runs (its host reported its pid) or one ended.
+    Status waitForFar(int timeoutMs)
+    {
+        const QDeadlineTimer deadline(timeoutMs);
+        for (std::size_t i = 0; i < remotes.size(); ++i) {
+            RemoteProcess& r = *remotes[i];
+            while (!r.hasStarted() && r.isRunning() && !deadline.hasExpired()) {
+                QEventLoop wait;
+                QTimer::singleShot(20, &wait, &QEventLoop::quit);
+                wait.exec(QEventLoop::ExcludeUserInputEvents);
+            }
+            if (!r.hasStarted())
+                return LocatedError {DemoLab::tr("%1 did not start on %2: %3")
+                                         .arg(remoteNames[qsizetype(i)], r.host().url(), farError(r))};
+        }
+        return {};
+    }
+
+    static QString farError(const RemoteProcess& r)
+    {
+        if (!r.errorString().isEmpty())
+            return r.errorString();
+        const QStringList lines = r.lastErrorLines();
+        return lines.isEmpty() ? DemoLab::tr("no answer") : lines.mid(qMax(0, lines.size() - 5)).join(u'\n');
+    }
+
+    /// Ends the far programs and removes their folders.
+    void stopFar()
+    {
+        for (auto it = remotes.rbegin(); it != remotes.rend(); ++it)
+            (*it)->stop();
+        for (auto it = remotes.rbegin(); it != remotes.rend(); ++it)
+            (*it)->waitForFinished(8000);
+        remotes.clear();
+        remoteNames.clear();
+        for (auto it = far.cbegin(); it != far.cend(); ++it)
+            if (const auto& h = farHost(it.key()))
+                RemoteCommand::run(h->host, h->ssh, it.key(), {u"rm"_s, u"-rf"_s, u"--"_s, it->directory}, {},
+                                   5000, 4096);
+        far.clear();
+    }
+
+    QProcessEnvironment rosEnvironment(const QString& rosIp) const
     {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(u"ROS_MASTER_URI"_s, masterUri);
-        env.insert(u"ROS_IP"_s, u"127.0.0.1"_s);
+        env.insert(u"ROS_IP"_s, rosIp);
         env.remove(u"ROS_HOSTNAME"_s);
         env.insert(u"ROS_HOME"_s, dir.filePath(u"ros"_s));
         env.insert(u"ROS_LOG_DIR"_s, dir.filePath(u"ros/log"_s));
@@ -107,7 +285,8 @@ struct DemoLab::Private
     /// end only this child inherits, and the child is told the descriptor's number
     /// (`--broker-fd N`). Empty when the pipe could not be made (`error` says why).
     QProcess* launch(const QString& name, const QString& program, QStringList args,
-                     const QByteArray& secret = {}, QString* error = nullptr)
+                     const QByteArray& secret = {}, QString* error = nullptr,
+                     const QString& rosIp = QStringLiteral("127.0.0.1"))
     {
         int readEnd = -1;
         if (!secret.isEmpty()) {
@@ -117,7 +296,7 @@ struct DemoLab::Private
             args << u"--broker-fd"_s << QString::number(readEnd);
         }
         auto p = std::make_unique<QProcess>();
-        p->setProcessEnvironment(rosEnvironment());
+        p->setProcessEnvironment(rosEnvironment(rosIp));
         p->setStandardOutputFile(dir.filePath(name + u".log"_s));
         p->setStandardErrorFile(dir.filePath(name + u".log"_s), QIODevice::Append);
         p->setChildProcessModifier([readEnd] {
@@ -255,6 +434,27 @@ Status DemoLab::launchServers(const Options& o)
         for (const char* f : {"ca.crt", "server.crt", "server.key"})
             if (!QFileInfo::exists(QDir(o.tlsDirectory).filePath(QLatin1String(f))))
                 return stopWith(tr("TLS needs %1 in %2").arg(QLatin1String(f), o.tlsDirectory));
+    d->far.clear();
+    if (o.vehicleHost || o.cloudHost) {
+        // Nothing secret travels to another host: no credentials, no keys, no command template.
+        if (o.ros == 2)
+            return stopWith(tr("a side on another host needs ROS 1 in this version (ROS 2 across hosts "
+                               "needs DDS discovery between them)"));
+        if (tls || Secrets::urlWithoutCredentials(o.brokerUrl) != o.brokerUrl)
+            return stopWith(tr("a side on another host needs a broker without TLS or credentials in this "
+                               "version: they would have to be copied there"));
+        if (!o.bridgeCommand.isEmpty())
+            return stopWith(tr("a side on another host runs the reference bridge: a bridge command runs "
+                               "on this host only"));
+        for (const QString& side : {u"vehicle"_s, u"cloud"_s})
+            if (d->farHost(side))
+                if (const Status prepared = d->prepareFar(side); !prepared)
+                    return stopWith(prepared.error().toString());
+    }
+    QStringList farListeners; // this host's addresses the far sides reach it by
+    for (const Private::Far& f : std::as_const(d->far))
+        if (!farListeners.contains(f.listenAddress) && !QHostAddress(f.listenAddress).isLoopback())
+            farListeners << f.listenAddress;
 
     // The servers: the ones given, else private ones on free loopback ports.
     const QString mosquitto = QStandardPaths::findExecutable(u"mosquitto"_s, {u"/usr/sbin"_s, u"/usr/bin"_s});
@@ -275,6 +475,8 @@ Status DemoLab::launchServers(const Options& o)
               // user, and a change of user clears the parent-death signal.
               "user %2\n"_s.arg(port)
                   .arg(QString::fromLocal8Bit(user));
+        for (const QString& address : std::as_const(farListeners))
+            text += u"listener %1 %2\n"_s.arg(port).arg(address);
         if (tls) {
             const QDir t(o.tlsDirectory);
             text += u"cafile %1\ncertfile %2\nkeyfile %3\nrequire_certificate false\n"_s.arg(
@@ -288,6 +490,7 @@ Status DemoLab::launchServers(const Options& o)
         started.append({u"mosquitto"_s, port});
     }
     d->masterUri = o.ros == 2 ? QString() : o.rosMasterUri;
+    d->masterPort = 0;
     d->domain = o.ros != 2 ? -1 : (o.rosDomain >= 0 ? o.rosDomain : freeDomain());
     if (o.ros == 2 && d->domain < 0)
         return stopWith(tr("no free ROS 2 domain on this host"));
@@ -296,7 +499,11 @@ Status DemoLab::launchServers(const Options& o)
             return stopWith(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
         const quint16 port = LoopbackPorts::freePort();
         d->masterUri = u"http://127.0.0.1:%1/"_s.arg(port);
-        d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(port)});
+        d->masterPort = port;
+        // With a far side the master listens on every address (ROS_IP not a loopback one), and
+        // tells the far nodes its address on their link.
+        d->launch(u"rosmaster"_s, rosmaster, {u"--core"_s, u"-p"_s, QString::number(port)}, {}, nullptr,
+                  farListeners.value(0, u"127.0.0.1"_s));
         started.append({u"rosmaster"_s, port});
     }
     return {};
@@ -322,42 +529,34 @@ Status DemoLab::startComponents()
 
     // Configs: both bridges (to the broker, or to the relay in front of it) and the paper's
     // pipeline (Fig. 4) with the demo's hosts.
-    QString why;
-    for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
-        const bool relayed = d->bridgePorts.contains(side);
-        const QString host = relayed ? u"127.0.0.1"_s : broker.host();
-        const quint16 port = relayed ? d->bridgePorts.value(side) : quint16(broker.port(1883));
-        if (const Status written
-            = AtomicFile::write(d->dir.filePath(side + u".yaml"_s),
-                                bridgeConfig(side, host, port, caFile(), o).toUtf8(), false);
-            !written)
-            return stopWith(written.error().toString());
-    }
+    if (const Status written = d->writeConfigs(broker, caFile()); !written)
+        return stopWith(written.error().toString());
     Pipeline pipeline(pipelineTopics(), 600);
     for (const QString& t : pipelineTopics())
         pipeline.setHost(
             t, t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
-    // Without the cloud's offset every component stamps with this machine's clock.
-    pipeline.setOneClock(o.cloudOffsetMs == 0);
+    // Without the cloud's offset and with both sides here every component stamps with this
+    // machine's clock.
+    const bool twoClocks = o.cloudOffsetMs != 0 || !d->far.isEmpty();
+    pipeline.setOneClock(!twoClocks);
     if (const Status written = AtomicFile::write(pipelinePath(), pipeline.toYaml(), false); !written)
         return stopWith(written.error().toString());
 
-    // The components.
+    // The components, each on its side's host.
     const QString offset = QString::number(o.cloudOffsetMs);
-    const QStringList common = o.ros == 2
-        ? QStringList {u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(d->domain)}
-        : QStringList {u"--ros-master"_s, rosMasterUri()};
+    d->program = program;
     for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
         const QString name = u"mqtt_interface_"_s + side;
-        const QString config = side == u"vehicle"_s ? vehicleConfigPath() : cloudConfigPath();
+        const QString config = d->far.contains(side) ? d->far[side].directory + u"/"_s + side + u".yaml"_s
+            : side == u"vehicle"_s                   ? vehicleConfigPath()
+                                                     : cloudConfigPath();
         if (!o.bridgeCommand.isEmpty()) {
-            const bool relayed = d->bridgePorts.contains(side);
+            const auto [host, port] = d->brokerFor(side, broker);
             QString command = o.bridgeCommand;
             command.replace(u"{config}"_s, shellQuoted(config))
                 .replace(u"{name}"_s, shellQuoted(name))
-                .replace(u"{broker_host}"_s, shellQuoted(relayed ? u"127.0.0.1"_s : broker.host()))
-                .replace(u"{broker_port}"_s,
-                         QString::number(relayed ? d->bridgePorts.value(side) : broker.port(1883)))
+                .replace(u"{broker_host}"_s, shellQuoted(host))
+                .replace(u"{broker_port}"_s, QString::number(port))
                 .replace(u"{ros_master}"_s, shellQuoted(rosMasterUri()))
                 .replace(u"{ros_domain}"_s, QString::number(d->domain));
             d->launch(side + u"_bridge"_s, u"/bin/sh"_s, {u"-c"_s, command});
@@ -371,33 +570,50 @@ Status DemoLab::startComponents()
         // The config holds host and port, not secrets: the credentials go through a pipe, with
         // the host and port the bridge connects to (the relay's, when one is in between).
         const QByteArray secret = credentials ? bridgeBrokerUrl(side).toUtf8() : QByteArray();
-        if (!d->launch(side + u"_bridge"_s, program, args + common, secret, &why))
-            return stopWith(why);
+        if (const Status started = d->start(side, side + u"_bridge"_s, args, secret); !started)
+            return stopWith(started.error().toString());
     }
-    d->launch(u"object_detection"_s, program,
-              QStringList {u"demo-node"_s, u"cloud"_s, u"--clock-offset-ms"_s, offset, u"--detection-ms"_s,
-                           QString::number(o.detectionMs)}
-                  + common);
-    d->launch(u"vehicle"_s, program,
-              QStringList {u"demo-node"_s, u"vehicle"_s, u"--size"_s, QString::number(o.payloadBytes),
-                           u"--rate"_s, QString::number(o.rateHz)}
-                  + common);
-    if (o.cloudOffsetMs != 0 && !credentials && caFile().isEmpty()) {
-        // Two clocks: each "host" runs the clock service on the lab's broker, the cloud's with its
-        // offset, so that the window measures the offset instead of deriving it from the round trip.
-        for (const QString& side : {u"vehicle"_s, u"cloud"_s})
-            d->launch(side + u"_clock"_s, program,
-                      {u"clock"_s, u"serve"_s, u"--name"_s, side, u"--broker"_s, d->brokerUrl,
-                       u"--clock-offset-ms"_s, side == u"cloud"_s ? offset : u"0"_s});
+    const QList<std::pair<QString, QStringList>> nodes {
+        {u"cloud"_s,
+         {u"demo-node"_s, u"cloud"_s, u"--clock-offset-ms"_s, offset, u"--detection-ms"_s,
+          QString::number(o.detectionMs)}},
+        {u"vehicle"_s,
+         {u"demo-node"_s, u"vehicle"_s, u"--size"_s, QString::number(o.payloadBytes), u"--rate"_s,
+          QString::number(o.rateHz)}}};
+    for (const auto& [side, args] : nodes)
+        if (const Status started = d->start(side, side == u"cloud"_s ? u"object_detection"_s : side, args);
+            !started)
+            return stopWith(started.error().toString());
+    if (twoClocks && !credentials && caFile().isEmpty()) {
+        // Two clocks: each host runs the clock service on the lab's broker (the cloud's with the
+        // demo's offset), so that the window measures the offset instead of deriving it from the
+        // round trip.
+        for (const QString& side : {u"vehicle"_s, u"cloud"_s}) {
+            const auto [host, port] = d->brokerFor(side, broker, false);
+            const QString url = u"%1://%2:%3"_s.arg(broker.scheme(), urlHost(host)).arg(port);
+            const QStringList args {u"clock"_s,
+                                    u"serve"_s,
+                                    u"--name"_s,
+                                    side,
+                                    u"--broker"_s,
+                                    url,
+                                    u"--clock-offset-ms"_s,
+                                    side == u"cloud"_s ? offset : u"0"_s};
+            if (const Status started = d->start(side, side + u"_clock"_s, args, {}, false); !started)
+                return stopWith(started.error().toString());
+        }
     }
     for (const auto& p : d->processes)
         if (!p->waitForStarted(5000))
             return stopWith(tr("cannot start %1: %2").arg(p->program(), p->errorString()));
+    if (const Status far = d->waitForFar(20000); !far)
+        return stopWith(far.error().toString());
     return {};
 }
 
 void DemoLab::stop()
 {
+    d->stopFar();
     // Components first, servers last, each asked to stop (SIGTERM) before it is killed.
     for (auto it = d->processes.rbegin(); it != d->processes.rend(); ++it)
         if ((*it)->state() != QProcess::NotRunning)
@@ -414,10 +630,13 @@ void DemoLab::stop()
 
 bool DemoLab::isRunning() const
 {
-    if (d->processes.empty())
+    if (d->processes.empty() && d->remotes.empty())
         return false;
     for (const auto& p : d->processes)
         if (p->state() == QProcess::NotRunning)
+            return false;
+    for (const auto& r : d->remotes)
+        if (!r->isRunning())
             return false;
     return true;
 }
@@ -427,6 +646,11 @@ QString DemoLab::failure() const
     for (std::size_t i = 0; i < d->processes.size(); ++i)
         if (d->processes[i]->state() == QProcess::NotRunning)
             return tr("%1 stopped: %2").arg(d->names[qsizetype(i)], d->logOf(d->names[qsizetype(i)]));
+    for (std::size_t i = 0; i < d->remotes.size(); ++i)
+        if (!d->remotes[i]->isRunning())
+            return tr("%1 on %2 stopped: %3")
+                .arg(d->remoteNames[qsizetype(i)], d->remotes[i]->host().url(),
+                     Private::farError(*d->remotes[i]));
     return QString();
 }
 
@@ -439,6 +663,16 @@ QString DemoLab::bridgeBrokerUrl(const QString& side) const
     const qsizetype start = d->brokerUrl.indexOf(u"://"_s) + 3;
     const QString userInfo = d->brokerUrl.mid(start, d->brokerUrl.size() - clean.size());
     return d->brokerUrl.left(start) + userInfo + u"127.0.0.1:%1"_s.arg(d->bridgePorts.value(side));
+}
+
+QString DemoLab::listenAddress(const QString& side) const
+{
+    return d->far.contains(side) ? d->far[side].listenAddress : u"127.0.0.1"_s;
+}
+
+bool DemoLab::isFar(const QString& side) const
+{
+    return d->far.contains(side);
 }
 
 QString DemoLab::brokerUrl() const

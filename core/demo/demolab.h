@@ -2,8 +2,11 @@
 #pragma once
 
 #include "base/result.h"
+#include "remote/remotehost.h"
+#include "remote/sshcommand.h"
 
 #include <memory>
+#include <optional>
 #include <QCoreApplication>
 #include <QString>
 #include <QStringList>
@@ -18,10 +21,24 @@ class QProcess;
 /// point cloud at 10 Hz) and the cloud's object detection (about 40 ms), the cloud's clock ahead
 /// by `cloudOffsetMs`; stamps at every component. Every child gets SIGTERM when this process dies
 /// (PR_SET_PDEATHSIG), so even a crash leaves no process behind.
+///
+/// A side may run on another host (Options::vehicleHost, cloudHost): its bridge, its node and its
+/// clock service start there over OpenSSH (RemoteProcess: they end with their ssh session, also
+/// when this process is killed), its config goes to a private folder there, and the servers here
+/// listen also on the address that host reaches this one by (its SSH_CONNECTION).
 class DemoLab
 {
     Q_DECLARE_TR_FUNCTIONS(DemoLab)
 public:
+    /// A side on another host, reached over OpenSSH (keys or an agent, BatchMode). ROS 1 and a
+    /// broker without credentials or TLS: nothing secret has to travel to that host.
+    struct FarHost
+    {
+        RemoteHost host;
+        QString program; ///< bridgescope on that host; empty: this program's path
+        SshOptions ssh = SshOptions::fromEnvironment();
+    };
+
     struct Options
     {
         QString program; ///< the bridgescope binary (default: this program)
@@ -47,6 +64,8 @@ public:
         int ros = 1;
         /// With ROS 2: the domain; -1, a free one (see freeDomain()).
         int rosDomain = -1;
+        std::optional<FarHost> vehicleHost; ///< the vehicle side's host; none: this one
+        std::optional<FarHost> cloudHost; ///< the cloud side's host; none: this one
     };
 
     DemoLab();
@@ -72,6 +91,12 @@ public:
     bool isRunning() const;
     /// What stopped running meanwhile (empty while everything runs).
     QString failure() const;
+
+    /// The address a side's host reaches this one by (the lab's servers and relays listen there):
+    /// 127.0.0.1 for a side on this host. Known once the servers are launched.
+    QString listenAddress(const QString& side) const;
+    /// Whether a side runs on another host.
+    bool isFar(const QString& side) const;
 
     QString brokerUrl() const; ///< ssl:// with TLS
     /// The broker URL a side's bridge is given (through a pipe, never its command line): the

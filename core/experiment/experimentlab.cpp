@@ -21,11 +21,6 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
                             const QString& directory, const QString& program)
 {
     clock.start();
-    // The plan reads its hosts (PlanHosts) and core/remote runs programs there, but the lab does not
-    // start its sides over ssh yet: a cell fails saying so rather than run both sides here unnoticed.
-    if (plan.hosts.any())
-        return LocatedError {ExperimentPlan::tr("this version runs both sides of a cell on this machine: "
-                                                "remove hosts: from the plan to run it here")};
     DemoLab::Options o;
     o.program = program;
     o.payloadBytes = s.payloadBytes;
@@ -40,6 +35,13 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
     o.tlsDirectory = s.tls ? QDir(directory).filePath(u"tls"_s) : QString();
     o.bridgeCommand = s.bridge.command;
     o.ros = plan.ros; // ROS 2: the lab picks a fresh free domain for each cell
+    // A side the plan puts on a host of its own starts there over ssh, with the bridgescope the
+    // plan names for it (else this one's path: the same installation on every host).
+    const QString localProgram = program.isEmpty() ? QCoreApplication::applicationFilePath() : program;
+    for (auto [role, host] : {std::pair {u"vehicle"_s, &o.vehicleHost}, std::pair {u"cloud"_s, &o.cloudHost}})
+        if (const std::optional<PlanHost>& side = plan.hosts.side(role))
+            *host = DemoLab::FarHost {side->host, plan.hosts.programFor(role, localProgram),
+                                      SshOptions::fromEnvironment()};
     if (Status servers = lab.startServers(o); !servers)
         return servers;
     if (!s.link.isNone()) {
@@ -50,8 +52,10 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
             LinkProfile profile = s.link;
             if (relay == &cloudRelay)
                 profile.thereExtraMs = 0; // the way there leaves the vehicle: only its relay adds it
-            Result<std::unique_ptr<LinkRelay>> started
-                = LinkRelay::start(profile, broker.host(), port, 2u * quint32(seed) + n);
+            // A bridge on another host reaches its relay by this host's address on their link.
+            const QString side = relay == &vehicleRelay ? u"vehicle"_s : u"cloud"_s;
+            Result<std::unique_ptr<LinkRelay>> started = LinkRelay::start(
+                profile, broker.host(), port, 2u * quint32(seed) + n, lab.listenAddress(side));
             if (!started)
                 return started.error();
             *relay = std::move(started).value();
@@ -65,7 +69,9 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
         = Pipeline::readFile(plan.pipelinePath.isEmpty() ? lab.pipelinePath() : plan.pipelinePath);
     if (!pipeline)
         return pipeline.error();
-    pipeline->setOneClock(true); // every component of the cell stamps with this machine's clock
+    // Every component of a cell on this machine stamps with its clock; with hosts, two clocks
+    // (the hosts' clock services measure them).
+    pipeline->setOneClock(!plan.hosts.any());
     live = std::make_unique<LiveSession>();
     if (lab.ros() == 2) {
         Ros2Options dds;

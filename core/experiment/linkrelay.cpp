@@ -243,8 +243,13 @@ private:
 };
 
 Result<std::unique_ptr<LinkRelay>> LinkRelay::start(const LinkProfile& profile, const QString& targetHost,
-                                                    quint16 targetPort, quint32 seed)
+                                                    quint16 targetPort, quint32 seed,
+                                                    const QString& listenAddress)
 {
+    const QHostAddress address(listenAddress);
+    if (address.isNull())
+        return LocatedError {
+            tr("the link relay cannot listen on '%1': not an IP address").arg(listenAddress)};
     std::unique_ptr<LinkRelay> r(new LinkRelay);
     r->m_thread = std::make_unique<QThread>();
     r->m_thread->setObjectName(u"link relay"_s);
@@ -255,8 +260,8 @@ Result<std::unique_ptr<LinkRelay>> LinkRelay::start(const LinkProfile& profile, 
     LinkRelay* self = r.get();
     QMetaObject::invokeMethod(
         r->m_server,
-        [self, profile, targetHost, targetPort, seed, &why] {
-            if (!self->m_server->listen(QHostAddress::LocalHost, 0)) {
+        [self, profile, targetHost, targetPort, seed, address, &why] {
+            if (!self->m_server->listen(address, 0)) {
                 why = self->m_server->errorString();
                 return;
             }

@@ -32,9 +32,11 @@ public:
     static constexpr qint64 kReadBufferBytes = 256 * 1024; ///< each socket's own read buffer
     static constexpr double kRetransmissionMs = 200; ///< Linux's minimum RTO
 
-    /// Listens on 127.0.0.1 (a free port) and relays to targetHost:targetPort.
-    static Result<std::unique_ptr<LinkRelay>> start(const LinkProfile& profile, const QString& targetHost,
-                                                    quint16 targetPort, quint32 seed = 1);
+    /// Listens on `listenAddress` (an IP literal; 127.0.0.1 unless a bridge on another host
+    /// connects to it) on a free port, and relays to targetHost:targetPort.
+    static Result<std::unique_ptr<LinkRelay>>
+    start(const LinkProfile& profile, const QString& targetHost, quint16 targetPort, quint32 seed = 1,
+          const QString& listenAddress = QStringLiteral("127.0.0.1"));
     ~LinkRelay();
 
     quint16 port() const { return m_port; }

@@ -599,15 +599,7 @@ private slots:
         QCOMPARE(stages[2].toObject().value(u"crossing"_s).toBool(), true);
         QCOMPARE(stages[3].toObject().value(u"crossing"_s).toBool(), false);
         QCOMPARE(stages[0].toObject().value(u"from"_s).toString(), run.topics[0]);
-        const auto same = [](const QJsonObject& a, const QJsonObject& b) {
-            for (auto it = b.begin(); it != b.end(); ++it) {
-                const double x = a.value(it.key()).toDouble();
-                const double y = it.value().toDouble();
-                if (std::abs(x - y) > 1e-9 + 1e-10 * std::abs(y))
-                    return false;
-            }
-            return a.keys() == b.keys();
-        };
+        const auto same = PythonRef::sameStats;
         for (int s = 0; s < 11; ++s)
             QVERIFY2(
                 same(stages[s].toObject().value(u"stats"_s).toObject(), ref.value(u"stages"_s)[s].toObject()),

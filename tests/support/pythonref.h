@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cmath>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QTest>
 
@@ -18,5 +20,18 @@ inline QJsonDocument run(const QString& script, const QStringList& args)
         return {};
     }
     return QJsonDocument::fromJson(p.readAllStandardOutput());
+}
+
+/// Whether `ours` has the reference's statistics (the same keys), each to the last digit that
+/// float64 arithmetic on ms values can hold.
+inline bool sameStats(const QJsonObject& ours, const QJsonObject& reference)
+{
+    for (auto it = reference.begin(); it != reference.end(); ++it) {
+        const double x = ours.value(it.key()).toDouble();
+        const double y = it.value().toDouble();
+        if (std::abs(x - y) > 1e-9 + 1e-10 * std::abs(y))
+            return false;
+    }
+    return ours.keys() == reference.keys();
 }
 } // namespace PythonRef

@@ -146,18 +146,39 @@ private slots:
         QVERIFY(!plan("samples: 5\n")->hosts.any());
     }
 
-    // Until the lab starts its sides over ssh, a cell of a plan with hosts fails saying so, before
-    // it starts anything, instead of running both sides here unnoticed.
-    void aCellOfAPlanWithHostsFailsClearly()
+    // A cell of a plan with hosts fails before it starts anything here when a host cannot be
+    // reached (ssh's own words, naming the side and its URL), and a ROS 2 plan with hosts is
+    // refused saying why; nothing is left running.
+    void aCellWhoseHostCannotBeReachedFailsClearly()
     {
+        QTemporaryDir dir;
+        const QString ssh = dir.filePath(u"ssh"_s);
+        QFile script(ssh);
+        QVERIFY(script.open(QIODevice::WriteOnly));
+        script.write(
+            "#!/bin/sh\necho 'ssh: connect to host 10.0.0.2 port 22: Connection refused' >&2\nexit 255\n");
+        script.close();
+        QVERIFY(script.setPermissions(script.permissions() | QFileDevice::ExeOwner));
+        qputenv("BRIDGESCOPE_SSH", ssh.toLocal8Bit());
         const auto p = plan("samples: 5\nhosts: {cloud: ssh://root@10.0.0.2}\n");
         QVERIFY(p);
-        QTemporaryDir dir;
+        {
+            ExperimentLab lab;
+            const Status started = lab.start(*p, p->cells[0].settings, 1, dir.path(), u"/bin/false"_s);
+            QVERIFY(!started);
+            QCOMPARE(started.error().toString(),
+                     u"cannot reach cloud (ssh://root@10.0.0.2): ssh: connect to host 10.0.0.2 port 22: "
+                     u"Connection refused"_s);
+            QVERIFY(lab.lab.processIds().isEmpty());
+        }
+        const auto ros2 = plan("samples: 5\nros: 2\nhosts: {cloud: ssh://root@10.0.0.2}\n");
+        QVERIFY(ros2);
         ExperimentLab lab;
-        const Status started = lab.start(*p, p->cells[0].settings, 1, dir.path(), u"/bin/false"_s);
+        const Status started = lab.start(*ros2, ros2->cells[0].settings, 1, dir.path(), u"/bin/false"_s);
+        qunsetenv("BRIDGESCOPE_SSH");
         QVERIFY(!started);
-        QCOMPARE(started.error().toString(), u"this version runs both sides of a cell on this machine: remove hosts: "
-                                             u"from the plan to run it here"_s);
+        QVERIFY2(started.error().toString().contains(u"needs ROS 1"_s),
+                 qPrintable(started.error().toString()));
         QVERIFY(lab.lab.processIds().isEmpty());
     }
 
