@@ -135,6 +135,15 @@ struct DemoLab::Private
                 made.ok() ? DemoLab::tr("%1 (%2) made no folder for the lab").arg(side, h.host.url())
                           : made.error};
         far.insert(side, {QHostAddress(ends[0]).toString(), QHostAddress(ends[2]).toString(), folder});
+        // The folder goes when its ssh session ends (the far watcher's TERM), however this process
+        // ends: a fixed script, the folder's path an argument of it, never shell syntax.
+        auto keeper = std::make_unique<RemoteProcess>(h.host, h.ssh, side);
+        if (!keeper->start({u"sh"_s, u"-c"_s,
+                            u"trap 'rm -rf -- \"$1\"; exit 0' TERM HUP INT; while sleep 1; do :; done"_s,
+                            u"bridgescope-lab-folder"_s, folder}))
+            return LocatedError {keeper->errorString()};
+        remotes.push_back(std::move(keeper));
+        remoteNames << side + u"_folder"_s;
         return {};
     }
 

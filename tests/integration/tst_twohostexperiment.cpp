@@ -9,8 +9,10 @@
 // printed, where the machine cannot make namespaces.
 #include "demo/demolab.h"
 #include "pythonref.h"
+#include "signalprocess.h"
 #include "twohostlab.h"
 
+#include <csignal>
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -158,6 +160,32 @@ private slots:
         QVERIFY2(u > 0 && u < 5, qPrintable(QString::number(u)));
         QVERIFY2(std::abs(there - back - 10) < 2 + 2 * u, qPrintable(u"%1 − %2"_s.arg(there).arg(back)));
         QVERIFY2(std::abs(half - back - 5) < 2 + u, qPrintable(u"half %1, back %2"_s.arg(half).arg(back)));
+    }
+
+    // Killed with SIGKILL (no clean-up of its own) while its cloud runs, the controller leaves
+    // nothing on the cloud's host: the programs end with their ssh sessions, the folder with its.
+    void aKilledControllerLeavesNothingOnTheFarHost()
+    {
+        const QSet<QString> foldersBefore = labFolders();
+        QProcess demo;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"BRIDGESCOPE_SSH"_s, m_lab.sshProgram(TwoHostLab::Vehicle));
+        demo.setProcessEnvironment(env);
+        const QStringList argv
+            = m_lab.inNamespace(TwoHostLab::Vehicle,
+                                {QStringLiteral(BRIDGESCOPE_BINARY), u"demo"_s, u"--cloud-host"_s,
+                                 m_lab.sshUrl(TwoHostLab::Cloud), u"--size"_s, u"2000"_s});
+        demo.start(argv.first(), argv.mid(1));
+        QVERIFY(demo.waitForStarted(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            commandLines(m_lab.pids(TwoHostLab::Cloud)).join(u'\n').contains(u"clock serve --name cloud"_s),
+            60000);
+        QVERIFY(labFolders() != foldersBefore);
+        signalProcess(demo.processId(), SIGKILL);
+        QVERIFY(demo.waitForFinished(10000));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !commandLines(m_lab.pids(TwoHostLab::Cloud)).join(u'\n').contains(u"bridgescope"_s), 15000);
+        QTRY_COMPARE_WITH_TIMEOUT(labFolders(), foldersBefore, 10000);
     }
 
     // `bridgescope demo --cloud-host`: the demo's cloud (its clock 35 ms ahead) in the cloud's
