@@ -1421,12 +1421,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Größe der Punktwolke in Bytes (Vorgabe 180000).</translation>
     </message>
     <message>
-        <source>Runs the demo lab without a window: a private mosquitto and rosmaster, a vehicle and a cloud reference bridge, a 0.18 MB point cloud at 10 Hz, a 40 ms object detection in the cloud whose clock is 35 ms ahead, and stamps at every component; records every stamp and prints the latency report at the end. Everything it started stops with it.
-Exit status: 0 samples measured, 1 the lab failed or measured nothing, 2 bad options.</source>
-        <translation>Führt das Demo-Labor ohne Fenster aus: eigene Instanzen von mosquitto und rosmaster, je eine Referenz-Bridge im Fahrzeug und in der Cloud, eine Punktwolke von 0,18 MB mit 10 Hz, eine Objekterkennung von 40 ms in der Cloud, deren Uhr 35 ms vorgeht, und Zeitstempel an jeder Komponente; zeichnet jeden Zeitstempel auf und gibt am Ende den Latenzbericht aus. Alles, was es gestartet hat, endet mit ihm.
-Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 falsche Optionen.</translation>
-    </message>
-    <message>
         <source>--format takes md or json</source>
         <translation>--format erwartet md oder json</translation>
     </message>
@@ -1550,6 +1544,32 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>ROS 2 domain id (default 0).</source>
         <translation>ROS-2-Domain-ID (Standard 0).</translation>
     </message>
+    <message>
+        <source>Run the cloud&apos;s bridge, object detection and clock service on this host over OpenSSH (ssh://user@host[:port]; keys or an agent, never a password; ROS 1).</source>
+        <translation>Bridge, Objekterkennung und Uhrendienst der Cloud über OpenSSH auf diesem Rechner ausführen (ssh://benutzer@rechner[:port]; Schlüssel oder ein Agent, nie ein Passwort; ROS 1).</translation>
+    </message>
+    <message>
+        <source>With --cloud-host: bridgescope&apos;s path there (default: this one&apos;s).</source>
+        <translation>Mit --cloud-host: der Pfad von bridgescope dort (Vorgabe: der hiesige).</translation>
+    </message>
+    <message>
+        <source>Runs the demo lab without a window: a private mosquitto and rosmaster, a vehicle and a cloud reference bridge, a 0.18 MB point cloud at 10 Hz, a 40 ms object detection in the cloud whose clock is 35 ms ahead, and stamps at every component; records every stamp and prints the latency report at the end. Everything it started stops with it, on this host and on the cloud&apos;s (--cloud-host).
+Exit status: 0 samples measured, 1 the lab failed or measured nothing, 2 bad options.</source>
+        <translation>Führt das Demo-Labor ohne Fenster aus: eigene Instanzen von mosquitto und rosmaster, je eine Referenz-Bridge im Fahrzeug und in der Cloud, eine Punktwolke von 0,18 MB mit 10 Hz, eine Objekterkennung von 40 ms in der Cloud, deren Uhr 35 ms vorgeht, und Zeitstempel an jeder Komponente; zeichnet jeden Zeitstempel auf und gibt am Ende den Latenzbericht aus. Alles, was es gestartet hat, endet mit ihm, auf diesem Rechner und auf dem der Cloud (--cloud-host).
+Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 falsche Optionen.</translation>
+    </message>
+    <message>
+        <source>--cloud-host: %1</source>
+        <translation>--cloud-host: %1</translation>
+    </message>
+    <message>
+        <source>--cloud-program needs --cloud-host</source>
+        <translation>--cloud-program braucht --cloud-host</translation>
+    </message>
+    <message>
+        <source>the cloud&apos;s side runs on %1, reaching this host at %2</source>
+        <translation>die Seite der Cloud läuft auf %1 und erreicht diesen Rechner unter %2</translation>
+    </message>
 </context>
 <context>
     <name>DemoLab</name>
@@ -1600,6 +1620,38 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>no free ROS 2 domain on this host</source>
         <translation>keine freie ROS-2-Domain auf diesem Rechner</translation>
+    </message>
+    <message>
+        <source>%1 (%2) does not say its ssh connection (SSH_CONNECTION)</source>
+        <translation>%1 (%2) nennt seine ssh-Verbindung nicht (SSH_CONNECTION)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) made no folder for the lab</source>
+        <translation>%1 (%2) hat keinen Ordner für das Labor angelegt</translation>
+    </message>
+    <message>
+        <source>%1 did not start on %2: %3</source>
+        <translation>%1 ist auf %2 nicht gestartet: %3</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>a side on another host needs ROS 1 in this version (ROS 2 across hosts needs DDS discovery between them)</source>
+        <translation>eine Seite auf einem anderen Rechner braucht in dieser Version ROS 1 (ROS 2 über Rechner hinweg braucht DDS-Discovery zwischen ihnen)</translation>
+    </message>
+    <message>
+        <source>a side on another host needs a broker without TLS or credentials in this version: they would have to be copied there</source>
+        <translation>eine Seite auf einem anderen Rechner braucht in dieser Version einen Broker ohne TLS und Zugangsdaten: sie müssten dorthin kopiert werden</translation>
+    </message>
+    <message>
+        <source>a side on another host runs the reference bridge: a bridge command runs on this host only</source>
+        <translation>eine Seite auf einem anderen Rechner führt die Referenz-Bridge aus: ein Bridge-Befehl läuft nur auf diesem Rechner</translation>
+    </message>
+    <message>
+        <source>%1 on %2 stopped: %3</source>
+        <translation>%1 auf %2 beendet: %3</translation>
     </message>
 </context>
 <context>
@@ -2834,10 +2886,6 @@ factors:
         <translation>eine Zelle ist {Faktor: Stufe, …}</translation>
     </message>
     <message>
-        <source>this version runs both sides of a cell on this machine: remove hosts: from the plan to run it here</source>
-        <translation>diese Version führt beide Seiten einer Zelle auf diesem Rechner aus: hosts: aus dem Plan entfernen, um ihn hier auszuführen</translation>
-    </message>
-    <message>
         <source>a link profile is {delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms}</source>
         <translation>ein Verbindungsprofil ist {delay_ms, jitter_ms, bandwidth_mbit, loss_percent, there_extra_ms}</translation>
     </message>
@@ -3799,6 +3847,10 @@ factors:
     <message>
         <source>the link relay cannot listen: %1</source>
         <translation>das Verbindungsrelais kann nicht lauschen: %1</translation>
+    </message>
+    <message>
+        <source>the link relay cannot listen on &apos;%1&apos;: not an IP address</source>
+        <translation>das Verbindungsrelais kann nicht auf „%1“ lauschen: keine IP-Adresse</translation>
     </message>
 </context>
 <context>
