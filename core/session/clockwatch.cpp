@@ -37,6 +37,7 @@ void ClockWatch::watch(const QStringList& named, const MqttProfile& profile)
         }
         m_failures.erase(it->first);
         m_lastAnswerNs.erase(it->first);
+        m_firstAnswerNs.erase(it->first);
         it = m_probers.erase(it);
     }
     for (const QString& host : std::as_const(hosts)) {
@@ -46,9 +47,12 @@ void ClockWatch::watch(const QStringList& named, const MqttProfile& profile)
         connect(prober.get(), &ClockProber::estimateChanged, this, [this, host](const ClockEstimate& e) {
             if (e.probes < kMinProbes)
                 return;
+            const qint64 now = wallClockNs();
             m_failures.erase(host);
-            m_lastAnswerNs[host] = wallClockNs();
-            m_sink(e);
+            m_lastAnswerNs[host] = now;
+            m_firstAnswerNs.try_emplace(host, now);
+            if (isSettled(host, e, now))
+                m_sink(e);
         });
         connect(prober.get(), &ClockProber::failed, this, [this, host](const QString& why) {
             m_failures[host] = why;
@@ -82,9 +86,18 @@ void ClockWatch::tick()
 {
     const qint64 now = wallClockNs();
     for (const auto& [host, prober] : m_probers)
-        if (const ClockEstimate e = prober->estimate(now); e.isValid() && e.probes >= kMinProbes)
+        if (const ClockEstimate e = prober->estimate(now); e.isValid() && isSettled(host, e, now))
             m_sink(e);
     checkProblems();
+}
+
+bool ClockWatch::isSettled(const QString& host, const ClockEstimate& e, qint64 nowNs) const
+{
+    if (e.probes < kMinProbes)
+        return false;
+    const auto first = m_firstAnswerNs.find(host);
+    return e.uncertaintyNs <= kSettledUncertaintyNs
+        || (first != m_firstAnswerNs.end() && nowNs - first->second >= kSettleNs);
 }
 
 QString ClockWatch::syncText() const

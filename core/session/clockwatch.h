@@ -28,6 +28,12 @@ public:
     /// Answers an estimate needs before it corrects anything: the first ones, through a connection
     /// just made, are the slowest (and their uncertainty would stay the figures' for a whole window).
     static constexpr int kMinProbes = 4;
+    /// An estimate looser than this waits, at most kSettleNs after the host's first answers, for a
+    /// tighter one before it corrects anything: a slow start (a busy host, a connection still
+    /// warming) would otherwise set the figures' interval for a whole window. After that, whatever
+    /// it is, it is used and shown.
+    static constexpr qint64 kSettledUncertaintyNs = 2'000'000;
+    static constexpr qint64 kSettleNs = 10'000'000'000;
 
     using Sink = std::function<void(const ClockEstimate&)>;
     explicit ClockWatch(Sink sink, QObject* parent = nullptr);
@@ -53,6 +59,9 @@ signals:
 
 private:
     void checkProblems();
+    /// Whether `host`'s estimate `e` may correct figures now (kMinProbes, then kSettledUncertaintyNs
+    /// or kSettleNs).
+    bool isSettled(const QString& host, const ClockEstimate& e, qint64 nowNs) const;
     /// Once a second: every measured host's estimate as of now (its uncertainty grows with the time
     /// since its best probe, so a silent service's estimate is handed on less certain), then the problems.
     void tick();
@@ -62,6 +71,7 @@ private:
     std::map<QString, std::unique_ptr<ClockProber>> m_probers; ///< host -> its prober
     std::map<QString, QString> m_failures; ///< host -> why its transport failed
     std::map<QString, qint64> m_lastAnswerNs; ///< host -> when its latest estimate came (our wall clock)
+    std::map<QString, qint64> m_firstAnswerNs; ///< host -> when its first estimate came (our wall clock)
     QTimer m_check; ///< ages the estimates and looks for hosts that do not answer
     QString m_problems;
     int m_omitted = 0;

@@ -5,14 +5,17 @@
 // silently; a pipeline on one clock, or no broker, probes nothing, and what stops is stopped.
 #include "clock/clockprober.h"
 #include "clock/clockserver.h"
+#include "experiment/linkrelay.h"
 #include "mqtt/mqttclockserver.h"
 #include "session/clockwatch.h"
 #include "testservers.h"
 
 #include <map>
 #include <memory>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
+#include <QUrl>
 
 using namespace Qt::StringLiterals;
 
@@ -100,6 +103,50 @@ private slots:
         const quint64 answered = vehicle.server->counters().answered;
         QTest::qWait(1500); // nothing is awaited here: no probe may come during it
         QCOMPARE(vehicle.server->counters().answered, answered);
+    }
+
+    // A host whose answers come slowly (3 ms each way through a relay: its uncertainty above
+    // kSettledUncertaintyNs) corrects nothing for kSettleNs after its first answers, waiting for a
+    // tighter one; then its estimate is used as it is. A fast host's is used at once.
+    void aLooseFirstEstimateWaitsBeforeItCorrects()
+    {
+        LinkProfile slow;
+        slow.delayMs = 3;
+        const QUrl broker(m_servers.brokerUrl());
+        Result<std::unique_ptr<LinkRelay>> relay
+            = LinkRelay::start(slow, broker.host(), quint16(broker.port()), 7);
+        QVERIFY(relay);
+        Service vehicle(u"vehicle"_s, 0, m_servers.brokerUrl());
+        Service cloud(u"cloud"_s, 20, u"tcp://127.0.0.1:%1"_s.arg((*relay)->port()));
+        QTRY_COMPARE(vehicle.mqtt->connection().state(), MqttConnection::State::Connected);
+        QTRY_COMPARE(cloud.mqtt->connection().state(), MqttConnection::State::Connected);
+
+        QElapsedTimer clock;
+        std::map<QString, qint64> handedMs;
+        std::map<QString, ClockEstimate> latest;
+        ClockWatch watch([&](const ClockEstimate& e) {
+            handedMs.try_emplace(e.host, clock.elapsed());
+            latest[e.host] = e;
+        });
+        clock.start();
+        watch.watch({u"vehicle"_s, u"cloud"_s}, MqttProfile::fromUrl(m_servers.brokerUrl()));
+        qint64 cloudAnsweredMs = -1;
+        connect(watch.prober(u"cloud"_s), &ClockProber::estimateChanged, this, [&](const ClockEstimate& e) {
+            if (e.probes >= ClockWatch::kMinProbes && cloudAnsweredMs < 0)
+                cloudAnsweredMs = clock.elapsed();
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(handedMs.count(u"vehicle"_s) && cloudAnsweredMs >= 0, 10000);
+        QVERIFY(!handedMs.count(u"cloud"_s));
+        QTRY_VERIFY_WITH_TIMEOUT(handedMs.count(u"cloud"_s), 20000);
+        const qint64 waited = handedMs[u"cloud"_s] - cloudAnsweredMs;
+        const ClockEstimate& e = latest[u"cloud"_s];
+        qInfo("cloud: first answers at %lld ms, used at %lld ms: %.3f ms ± %.3f ms", cloudAnsweredMs,
+              handedMs[u"cloud"_s], double(e.offsetNs) / 1e6, double(e.uncertaintyNs) / 1e6);
+        QVERIFY2(e.uncertaintyNs > ClockWatch::kSettledUncertaintyNs,
+                 qPrintable(QString::number(e.uncertaintyNs)));
+        QVERIFY2(waited >= ClockWatch::kSettleNs / 1'000'000 - 1000, qPrintable(QString::number(waited)));
+        QVERIFY2(std::llabs(e.offsetNs - 20'000'000) <= e.uncertaintyNs,
+                 qPrintable(QString::number(e.offsetNs)));
     }
 
     void aPipelineNamingTooManyHostsProbesABoundedFew()
