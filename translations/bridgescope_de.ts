@@ -1545,10 +1545,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>ROS-2-Domain-ID (Standard 0).</translation>
     </message>
     <message>
-        <source>Run the cloud&apos;s bridge, object detection and clock service on this host over OpenSSH (ssh://user@host[:port]; keys or an agent, never a password; ROS 1).</source>
-        <translation>Bridge, Objekterkennung und Uhrendienst der Cloud über OpenSSH auf diesem Rechner ausführen (ssh://benutzer@rechner[:port]; Schlüssel oder ein Agent, nie ein Passwort; ROS 1).</translation>
-    </message>
-    <message>
         <source>With --cloud-host: bridgescope&apos;s path there (default: this one&apos;s).</source>
         <translation>Mit --cloud-host: der Pfad von bridgescope dort (Vorgabe: der hiesige).</translation>
     </message>
@@ -1569,6 +1565,14 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>the cloud&apos;s side runs on %1, reaching this host at %2</source>
         <translation>die Seite der Cloud läuft auf %1 und erreicht diesen Rechner unter %2</translation>
+    </message>
+    <message>
+        <source>Run the cloud&apos;s bridge, object detection and clock service on this host over OpenSSH (ssh://user@host[:port]; keys or an agent, never a password).</source>
+        <translation>Bridge, Objekterkennung und Uhrendienst der Cloud über OpenSSH auf diesem Rechner ausführen (ssh://benutzer@rechner[:port]; Schlüssel oder ein Agent, nie ein Passwort).</translation>
+    </message>
+    <message>
+        <source>broker %1, ROS 2 domain %2, configs in %3</source>
+        <translation>Broker %1, ROS-2-Domäne %2, Konfigurationen in %3</translation>
     </message>
 </context>
 <context>
@@ -1636,10 +1640,6 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>no answer</source>
         <translation>keine Antwort</translation>
-    </message>
-    <message>
-        <source>a side on another host needs ROS 1 in this version (ROS 2 across hosts needs DDS discovery between them)</source>
-        <translation>eine Seite auf einem anderen Rechner braucht in dieser Version ROS 1 (ROS 2 über Rechner hinweg braucht DDS-Discovery zwischen ihnen)</translation>
     </message>
     <message>
         <source>a side on another host needs a broker without TLS or credentials in this version: they would have to be copied there</source>
@@ -7479,6 +7479,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>ROS_DOMAIN_ID is &quot;%1&quot;, not a domain from 0 to %2</source>
         <translation>ROS_DOMAIN_ID ist „%1“, keine Domäne von 0 bis %2</translation>
+    </message>
+    <message>
+        <source>ROS_STATIC_PEERS takes at most %1 IP addresses separated by &apos;;&apos;, not &quot;%2&quot;</source>
+        <translation>ROS_STATIC_PEERS erwartet höchstens %1 durch „;“ getrennte IP-Adressen, nicht „%2“</translation>
     </message>
 </context>
 <context>

@@ -84,7 +84,7 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
     const QCommandLineOption cloudHost(
         u"cloud-host"_s,
         Demo::tr("Run the cloud's bridge, object detection and clock service on this host over OpenSSH "
-                 "(ssh://user@host[:port]; keys or an agent, never a password; ROS 1)."),
+                 "(ssh://user@host[:port]; keys or an agent, never a password)."),
         u"URL"_s);
     const QCommandLineOption cloudProgram(
         u"cloud-program"_s, Demo::tr("With --cloud-host: bridgescope's path there (default: this one's)."),
@@ -154,7 +154,8 @@ int runDemo(const DemoRequest& request, const QString& runPath)
         return ExitFailed;
     }
     if (lab.ros() == 2)
-        err(Demo::tr("broker %1, ROS 2 domain %2 (this host only), configs in %3")
+        err((lab.isLocalhostOnly() ? Demo::tr("broker %1, ROS 2 domain %2 (this host only), configs in %3")
+                                   : Demo::tr("broker %1, ROS 2 domain %2, configs in %3"))
                 .arg(Secrets::urlWithoutCredentials(lab.brokerUrl()))
                 .arg(lab.rosDomain())
                 .arg(lab.directory()));
@@ -171,7 +172,7 @@ int runDemo(const DemoRequest& request, const QString& runPath)
     }
     LiveSession live;
     if (lab.ros() == 2) {
-        if (const Status joined = live.startRos2({lab.rosDomain(), true}); !joined) {
+        if (const Status joined = live.startRos2(lab.ros2Options()); !joined) {
             err(joined.error().toString());
             return ExitFailed;
         }
@@ -289,10 +290,12 @@ int runDemoNodeCommand(const QStringList& arguments)
     const auto stop = [] { return CliOutput::stopRequested(); };
     Status ran;
     if (lab.ros == 2) {
-        // on 127.0.0.1 only, as the lab's whole domain
         Ros2DemoNodes::Options o2;
         static_cast<DemoNodes::Options&>(o2) = o;
-        o2.dds = {lab.rosDomain, true};
+        // The lab's domain stays on 127.0.0.1 unless its sides span hosts (ROS_LOCALHOST_ONLY=0).
+        o2.dds = {lab.rosDomain, qEnvironmentVariable("ROS_LOCALHOST_ONLY").trimmed() != u"0"_s};
+        if (!o2.dds.localhostOnly)
+            o2.dds.staticPeers = Ros2Options::fromEnvironment().staticPeers;
         ran = role == u"vehicle"_s ? Ros2DemoNodes::runVehicle(o2, stop) : Ros2DemoNodes::runCloud(o2, stop);
     } else {
         ran = role == u"vehicle"_s ? DemoNodes::runVehicle(o, stop) : DemoNodes::runCloud(o, stop);

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <QHostAddress>
 #include <QNetworkInterface>
 #include <QtGlobal>
 #include <set>
@@ -74,7 +75,7 @@ Ros2Qos qosOf(const dds_qos_t* qos, bool publisher)
 /// Every IPv4 interface that is up and can multicast, and the loopback without multicast (for
 /// this host's nodes that talk on 127.0.0.1 only), as Cyclone's <Interfaces>; empty when there is
 /// none (Cyclone then picks one itself).
-QString allInterfaces()
+QString allInterfaces(bool withLoopback = true)
 {
     QString out;
     for (const QNetworkInterface& i : QNetworkInterface::allInterfaces()) {
@@ -85,9 +86,10 @@ QString allInterfaces()
         });
         if (!ipv4 || !(flags & QNetworkInterface::IsUp) || !(flags & QNetworkInterface::IsRunning))
             continue;
-        if (flags & QNetworkInterface::IsLoopBack)
-            out += u"<NetworkInterface name=\"%1\" multicast=\"false\"/>"_s.arg(i.name().toHtmlEscaped());
-        else if (flags & QNetworkInterface::CanMulticast)
+        if (flags & QNetworkInterface::IsLoopBack) {
+            if (withLoopback)
+                out += u"<NetworkInterface name=\"%1\" multicast=\"false\"/>"_s.arg(i.name().toHtmlEscaped());
+        } else if (flags & QNetworkInterface::CanMulticast)
             out += u"<NetworkInterface name=\"%1\"/>"_s.arg(i.name().toHtmlEscaped());
     }
     return out.isEmpty() ? out : u"<Interfaces>"_s + out + u"</Interfaces>"_s;
@@ -100,16 +102,29 @@ QString allInterfaces()
 /// samples come as bursts of fragments: the system's default receive buffer (208 KiB on a stock
 /// kernel) drops half of a 0.18 MB topic at 100 Hz (docs/BENCHMARKS.md), so 4 MiB are asked for
 /// (the kernel caps it at net.core.rmem_max).
-std::string domainConfig(bool localhostOnly)
+std::string domainConfig(bool localhostOnly, const QStringList& staticPeers)
 {
-    const QString general = localhostOnly ? u"<Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
-                                            u"<AllowMulticast>false</AllowMulticast>"_s
-                                          : allInterfaces();
+    const QString general = localhostOnly
+        ? u"<Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
+          u"<AllowMulticast>false</AllowMulticast>"_s
+        : allInterfaces(staticPeers.isEmpty());
+    QString peers;
+    if (!localhostOnly && !staticPeers.isEmpty()) {
+        // Static peers (ROS_STATIC_PEERS): the hosts named (this one's own address among them for its
+        // own participants), asked for by unicast at every participant index, over the interfaces
+        // that reach them (Cyclone sends a peer's packets through loopback too, where they fail);
+        // addresses only (checked as they came in).
+        for (const QString& p : staticPeers)
+            if (!QHostAddress(p).isNull())
+                peers += u"<Peer Address=\"%1\"/>"_s.arg(QHostAddress(p).toString().toHtmlEscaped());
+        peers = u"<Peers>"_s + peers + u"</Peers>"_s;
+    }
     const QString discovery = localhostOnly ? u"<ParticipantIndex>auto</ParticipantIndex>"
                                               u"<MaxAutoParticipantIndex>30</MaxAutoParticipantIndex>"
                                               u"<Peers><Peer Address=\"127.0.0.1\"/></Peers>"_s
                                             : u"<ParticipantIndex>auto</ParticipantIndex>"
-                                              u"<MaxAutoParticipantIndex>119</MaxAutoParticipantIndex>"_s;
+                                              u"<MaxAutoParticipantIndex>119</MaxAutoParticipantIndex>"_s
+            + peers;
     const QString xml = u"<CycloneDDS><Domain Id=\"any\"><General>"_s + general + u"</General><Discovery>"_s
         + discovery + u"</Discovery><Internal><SocketReceiveBufferSize min=\"default\" max=\"4MB\"/></Internal>"
                       u"<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>"_s;
@@ -411,7 +426,8 @@ Status Ros2Engine::start(const Ros2Options& options)
         d->maxEndpoints = std::size_t(Ros2Options::kLimitedEndpoints);
         d->maxPerParticipant = Ros2Options::kLimitedEndpointsPerParticipant;
     }
-    d->domain = dds_create_domain(dds_domainid_t(options.domain), domainConfig(options.localhostOnly).c_str());
+    d->domain = dds_create_domain(dds_domainid_t(options.domain),
+                                  domainConfig(options.localhostOnly, options.staticPeers).c_str());
     if (d->domain > 0)
         d->participant = createParticipant(dds_domainid_t(options.domain));
     if (d->participant <= 0) {

@@ -175,15 +175,17 @@ struct DemoLab::Private
         const Far& f = far[side];
         const QString program = h.program.isEmpty() ? QCoreApplication::applicationFilePath() : h.program;
         auto p = std::make_unique<RemoteProcess>(h.host, h.ssh, side);
-        const QStringList argv = QStringList {u"env"_s,
-                                              u"-u"_s,
-                                              u"ROS_HOSTNAME"_s,
-                                              u"ROS_MASTER_URI="_s + masterFor(side),
-                                              u"ROS_IP="_s + f.ownAddress,
-                                              u"ROS_HOME="_s + f.directory + u"/ros"_s,
-                                              u"ROS_LOG_DIR="_s + f.directory + u"/ros/log"_s,
-                                              u"ROS_VERSION=1"_s,
-                                              program}
+        // ROS 1: the master here, announced by the far host's own address. ROS 2: the lab's
+        // domain over the link (DDS discovery on every interface, not this host's loopback only).
+        const QStringList ros = options.ros == 2
+            ? QStringList {u"ROS_VERSION=2"_s, u"ROS_DOMAIN_ID="_s + QString::number(domain),
+                           u"ROS_LOCALHOST_ONLY=0"_s,
+                           u"ROS_STATIC_PEERS="_s + ros2Options().staticPeers.join(u';')}
+            : QStringList {u"ROS_VERSION=1"_s, u"ROS_MASTER_URI="_s + masterFor(side),
+                           u"ROS_IP="_s + f.ownAddress};
+        const QStringList argv = QStringList {u"env"_s, u"-u"_s, u"ROS_HOSTNAME"_s} + ros
+            + QStringList {u"ROS_HOME="_s + f.directory + u"/ros"_s,
+                           u"ROS_LOG_DIR="_s + f.directory + u"/ros/log"_s, program}
             + args;
         if (!p->start(argv))
             return LocatedError {p->errorString()};
@@ -271,6 +273,20 @@ struct DemoLab::Private
         far.clear();
     }
 
+    /// The lab's ROS 2 domain for whoever joins it: on this host only, or with a far side on every
+    /// interface, the hosts' addresses on their link as static peers (multicast may not pass).
+    Ros2Options ros2Options() const
+    {
+        Ros2Options o;
+        o.domain = qMax(0, domain);
+        o.localhostOnly = far.isEmpty();
+        for (const Far& f : far)
+            for (const QString& address : {f.listenAddress, f.ownAddress})
+                if (!o.staticPeers.contains(address))
+                    o.staticPeers << address;
+        return o;
+    }
+
     QProcessEnvironment rosEnvironment(const QString& rosIp) const
     {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -283,8 +299,13 @@ struct DemoLab::Private
         // with ROS 2 a bridge of the lab's own (a command) joins the lab's domain too.
         env.insert(u"ROS_VERSION"_s, options.ros == 2 ? u"2"_s : u"1"_s);
         if (options.ros == 2) {
+            // This host's loopback only, unless a side is elsewhere: then the lab's hosts are
+            // each other's static peers.
+            const Ros2Options dds = ros2Options();
             env.insert(u"ROS_DOMAIN_ID"_s, QString::number(domain));
-            env.insert(u"ROS_LOCALHOST_ONLY"_s, u"1"_s);
+            env.insert(u"ROS_LOCALHOST_ONLY"_s, dds.localhostOnly ? u"1"_s : u"0"_s);
+            if (!dds.staticPeers.isEmpty())
+                env.insert(u"ROS_STATIC_PEERS"_s, dds.staticPeers.join(u';'));
         }
         return env;
     }
@@ -439,16 +460,9 @@ Status DemoLab::launchServers(const Options& o)
         return stopWith(tr("cannot make a folder for the demo: %1").arg(d->dir.errorString()));
     QDir().mkpath(d->dir.filePath(u"ros/log"_s));
     const bool tls = !o.tlsDirectory.isEmpty();
-    if (tls)
-        for (const char* f : {"ca.crt", "server.crt", "server.key"})
-            if (!QFileInfo::exists(QDir(o.tlsDirectory).filePath(QLatin1String(f))))
-                return stopWith(tr("TLS needs %1 in %2").arg(QLatin1String(f), o.tlsDirectory));
     d->far.clear();
     if (o.vehicleHost || o.cloudHost) {
         // Nothing secret travels to another host: no credentials, no keys, no command template.
-        if (o.ros == 2)
-            return stopWith(tr("a side on another host needs ROS 1 in this version (ROS 2 across hosts "
-                               "needs DDS discovery between them)"));
         if (tls || Secrets::urlWithoutCredentials(o.brokerUrl) != o.brokerUrl)
             return stopWith(tr("a side on another host needs a broker without TLS or credentials in this "
                                "version: they would have to be copied there"));
@@ -460,6 +474,10 @@ Status DemoLab::launchServers(const Options& o)
                 if (const Status prepared = d->prepareFar(side); !prepared)
                     return stopWith(prepared.error().toString());
     }
+    if (tls)
+        for (const char* f : {"ca.crt", "server.crt", "server.key"})
+            if (!QFileInfo::exists(QDir(o.tlsDirectory).filePath(QLatin1String(f))))
+                return stopWith(tr("TLS needs %1 in %2").arg(QLatin1String(f), o.tlsDirectory));
     QStringList farListeners; // this host's addresses the far sides reach it by
     for (const Private::Far& f : std::as_const(d->far))
         if (!farListeners.contains(f.listenAddress) && !QHostAddress(f.listenAddress).isLoopback())
@@ -682,6 +700,16 @@ QString DemoLab::listenAddress(const QString& side) const
 bool DemoLab::isFar(const QString& side) const
 {
     return d->far.contains(side);
+}
+
+bool DemoLab::isLocalhostOnly() const
+{
+    return d->options.ros == 2 && d->far.isEmpty();
+}
+
+Ros2Options DemoLab::ros2Options() const
+{
+    return d->ros2Options();
 }
 
 QString DemoLab::brokerUrl() const

@@ -4,6 +4,7 @@
 #include "base/result.h"
 #include "remote/remotehost.h"
 #include "remote/sshcommand.h"
+#include "ros2/ros2types.h"
 
 #include <memory>
 #include <optional>
@@ -30,8 +31,9 @@ class DemoLab
 {
     Q_DECLARE_TR_FUNCTIONS(DemoLab)
 public:
-    /// A side on another host, reached over OpenSSH (keys or an agent, BatchMode). ROS 1 and a
-    /// broker without credentials or TLS: nothing secret has to travel to that host.
+    /// A side on another host, reached over OpenSSH (keys or an agent, BatchMode), with a broker
+    /// without credentials or TLS: nothing secret has to travel to that host. With ROS 2 the
+    /// lab's domain spans both hosts (DDS discovery on every interface).
     struct FarHost
     {
         RemoteHost host;
@@ -97,6 +99,13 @@ public:
     QString listenAddress(const QString& side) const;
     /// Whether a side runs on another host.
     bool isFar(const QString& side) const;
+    /// With ROS 2: whether the lab's domain stays on this host's loopback (no side elsewhere);
+    /// with a far side, the domain spans the hosts and whoever measures it joins it on every
+    /// interface.
+    bool isLocalhostOnly() const;
+    /// How whoever measures joins the lab's ROS 2 domain: its id, on this host only, or (with a far
+    /// side) on every interface with the far hosts as static peers.
+    Ros2Options ros2Options() const;
 
     QString brokerUrl() const; ///< ssl:// with TLS
     /// The broker URL a side's bridge is given (through a pipe, never its command line): the

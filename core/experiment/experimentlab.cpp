@@ -74,10 +74,7 @@ Status ExperimentLab::start(const ExperimentPlan& plan, const CellSettings& s, i
     pipeline->setOneClock(!plan.hosts.any());
     live = std::make_unique<LiveSession>();
     if (lab.ros() == 2) {
-        Ros2Options dds;
-        dds.domain = lab.rosDomain();
-        dds.localhostOnly = true;
-        if (Status joined = live->startRos2(dds); !joined)
+        if (Status joined = live->startRos2(lab.ros2Options()); !joined)
             return joined;
     } else {
         live->setRosMasterUri(lab.rosMasterUri());

@@ -4,6 +4,7 @@
 #include "base/logging.h"
 
 #include <QCoreApplication>
+#include <QHostAddress>
 #include <QtGlobal>
 
 using namespace Qt::StringLiterals;
@@ -24,6 +25,23 @@ Ros2Options Ros2Options::fromEnvironment(QString* error)
                          .arg(kMaxDomain);
     }
     o.localhostOnly = qEnvironmentVariable("ROS_LOCALHOST_ONLY").trimmed() == QLatin1String("1");
+    const QStringList peers
+        = qEnvironmentVariable("ROS_STATIC_PEERS").split(QLatin1Char(';'), Qt::SkipEmptyParts);
+    for (const QString& peer : peers) {
+        const QHostAddress address(peer.trimmed());
+        if (address.isNull() || o.staticPeers.size() >= kMaxStaticPeers) {
+            if (error)
+                *error
+                    = QCoreApplication::translate("Ros2Options",
+                                                  "ROS_STATIC_PEERS takes at most %1 IP addresses separated "
+                                                  "by ';', not \"%2\"")
+                          .arg(kMaxStaticPeers)
+                          .arg(peer.left(40));
+            o.staticPeers.clear();
+            break;
+        }
+        o.staticPeers << address.toString();
+    }
     return o;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <QCoreApplication>
+#include <QHostAddress>
 #include <QtEndian>
 #include <type_traits>
 
@@ -322,6 +323,7 @@ QByteArray encodeStart(const StartRequest& r)
     w.u32(quint32(r.options.domain));
     w.u8((r.options.localhostOnly ? 1 : 0) | (r.options.limitedGraph ? 2 : 0));
     w.u32(quint32(r.graphIntervalMs));
+    w.strings(r.options.staticPeers);
     return w.data();
 }
 
@@ -333,13 +335,18 @@ std::optional<StartRequest> decodeStart(const QByteArray& body)
     const quint32 domain = r.u32();
     const quint8 local = r.u8();
     const quint32 interval = r.u32();
-    if (!r.done() || local > 3 || domain > quint32(Ros2Options::kMaxDomain) || interval < 1
-        || interval > 3'600'000)
+    const QStringList peers = r.strings();
+    if (!r.done() || local > 3 || peers.size() > Ros2Options::kMaxStaticPeers
+        || std::any_of(peers.begin(), peers.end(),
+                       [](const QString& p) { return p.size() > 64 || QHostAddress(p).isNull(); })
+        || domain > quint32(Ros2Options::kMaxDomain) || interval < 1 || interval > 3'600'000)
         return std::nullopt;
     s.options.domain = int(domain);
     s.graphIntervalMs = int(interval);
     s.options.localhostOnly = (local & 1) != 0;
     s.options.limitedGraph = (local & 2) != 0;
+    for (const QString& p : peers)
+        s.options.staticPeers << QHostAddress(p).toString(); // only what an address reads as
     return s;
 }
 

@@ -77,18 +77,26 @@ class TestTwoHostExperiment : public QObject
 private slots:
     void initTestCase() { TWOHOSTLAB_UP_OR_SKIP(m_lab); }
 
+    void aPlanRunsItsCloudOnTheCloudsHost_data()
+    {
+        QTest::addColumn<int>("ros");
+        QTest::newRow("ROS 1") << 1;
+        QTest::newRow("ROS 2") << 2;
+    }
     void aPlanRunsItsCloudOnTheCloudsHost()
     {
+        QFETCH(int, ros);
         const QString planPath = m_dir.filePath(u"two-hosts.yaml"_s);
         QFile plan(planPath);
         QVERIFY(plan.open(QIODevice::WriteOnly));
-        plan.write(u"name: two hosts\nsamples: 150\nwarmup: 10\n"
+        plan.write(u"name: two hosts\nros: %2\nsamples: 150\nwarmup: 10\n"
                    "defaults: {payload: 2000, rate_hz: 20, detection_ms: 5, link: {there_extra_ms: 10}}\n"
                    "hosts: {cloud: %1}\n"_s.arg(m_lab.sshUrl(TwoHostLab::Cloud))
+                       .arg(ros)
                        .toUtf8());
         plan.close();
         const QSet<QString> foldersBefore = labFolders();
-        const QString out = m_dir.filePath(u"out"_s);
+        const QString out = m_dir.filePath(u"out-ros%1"_s.arg(ros));
 
         QProcess controller;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -111,7 +119,9 @@ private slots:
             },
             240000));
         const QString err = QString::fromUtf8(controller.readAllStandardError());
-        QVERIFY2(controller.exitCode() == 0, qPrintable(err + QString::fromUtf8(controller.readAllStandardOutput())));
+        QVERIFY2(
+            controller.exitCode() == 0,
+            qPrintable(QString(err + QString::fromUtf8(controller.readAllStandardOutput())).right(3000)));
         QVERIFY2(bridge && detection && clock, qPrintable(u"bridge %1, detection %2, clock %3"_s.arg(bridge).arg(detection).arg(clock)));
         // Nothing of the cloud's side is left there: its programs ended with their ssh sessions
         // and its folder is gone.
@@ -124,7 +134,7 @@ private slots:
         const QString run = out + u"/runs/"_s + runs.first();
 
         // The report equals numpy on the run's raw stamps.
-        const QString csv = m_dir.filePath(u"stamps.csv"_s);
+        const QString csv = m_dir.filePath(u"stamps-ros%1.csv"_s.arg(ros));
         const Ran written = bridgescope({u"report"_s, run, u"--format"_s, u"csv"_s, u"-o"_s, csv});
         QVERIFY2(written.exit == 0, qPrintable(written.err));
         const Ran json = bridgescope({u"report"_s, run, u"--format"_s, u"json"_s});
@@ -158,8 +168,9 @@ private slots:
         const double u = std::max(corrected[0].value(u"uncertainty_ms"_s).toDouble(),
                                   corrected[1].value(u"uncertainty_ms"_s).toDouble());
         const double half = comm.value(u"one_way"_s)[u"median_ms"_s].toDouble();
-        qInfo("across namespaces: corrected there %.2f ms, back %.2f ms (± %.2f ms), half the round trip %.2f ms",
-              there, back, u, half);
+        qInfo("ROS %d across namespaces: corrected there %.2f ms, back %.2f ms (± %.2f ms), half the round "
+              "trip %.2f ms",
+              ros, there, back, u, half);
         QVERIFY2(u > 0 && u < 5, qPrintable(QString::number(u)));
         QVERIFY2(std::abs(there - back - 10) < 2 + 2 * u, qPrintable(u"%1 − %2"_s.arg(there).arg(back)));
         QVERIFY2(std::abs(half - back - 5) < 2 + u, qPrintable(u"half %1, back %2"_s.arg(half).arg(back)));

@@ -147,8 +147,8 @@ private slots:
     }
 
     // A cell of a plan with hosts fails before it starts anything here when a host cannot be
-    // reached (ssh's own words, naming the side and its URL), and a ROS 2 plan with hosts is
-    // refused saying why; nothing is left running.
+    // reached (ssh's own words, naming the side and its URL), and a TLS cell with hosts is refused
+    // saying why (its keys would have to be copied there); nothing is left running.
     void aCellWhoseHostCannotBeReachedFailsClearly()
     {
         QTemporaryDir dir;
@@ -171,13 +171,13 @@ private slots:
                      u"Connection refused"_s);
             QVERIFY(lab.lab.processIds().isEmpty());
         }
-        const auto ros2 = plan("samples: 5\nros: 2\nhosts: {cloud: ssh://root@10.0.0.2}\n");
-        QVERIFY(ros2);
+        const auto tls = plan("samples: 5\ndefaults: {tls: true}\nhosts: {cloud: ssh://root@10.0.0.2}\n");
+        QVERIFY(tls);
         ExperimentLab lab;
-        const Status started = lab.start(*ros2, ros2->cells[0].settings, 1, dir.path(), u"/bin/false"_s);
+        const Status started = lab.start(*tls, tls->cells[0].settings, 1, dir.path(), u"/bin/false"_s);
         qunsetenv("BRIDGESCOPE_SSH");
         QVERIFY(!started);
-        QVERIFY2(started.error().toString().contains(u"needs ROS 1"_s),
+        QVERIFY2(started.error().toString().contains(u"needs a broker without TLS or credentials"_s),
                  qPrintable(started.error().toString()));
         QVERIFY(lab.lab.processIds().isEmpty());
     }

@@ -107,6 +107,18 @@ private slots:
         QByteArray flags = encodeStart({limited, 250});
         flags[4] = 4; // no such flag
         QVERIFY(!decodeStart(flags));
+        // Static peers (a lab across hosts, ROS_STATIC_PEERS): addresses only, at most kMaxStaticPeers.
+        Ros2Options peered {9, false};
+        peered.staticPeers = {u"10.0.0.1"_s, u"fd00::2"_s};
+        const auto withPeers = decodeStart(encodeStart({peered, 250}));
+        QVERIFY(withPeers);
+        QCOMPARE(withPeers->options.staticPeers, (QStringList {u"10.0.0.1"_s, u"fd00::2"_s}));
+        peered.staticPeers = {u"10.0.0.1\"/><Peer Address=\"evil"_s};
+        QVERIFY(!decodeStart(encodeStart({peered, 250})));
+        peered.staticPeers.clear();
+        for (int i = 0; i <= Ros2Options::kMaxStaticPeers; ++i)
+            peered.staticPeers << u"10.0.0.%1"_s.arg(i + 1);
+        QVERIFY(!decodeStart(encodeStart({peered, 250})));
 
         const auto watch = decodeWatch(encodeWatch({u"/pose"_s, 5, 1 << 20}));
         QVERIFY(watch);
@@ -204,6 +216,20 @@ private slots:
         a.u32(10);
         a.bytes(QByteArray(17, 'h')); // a head longer than an arrival keeps
         QVERIFY(!decodeArrivals(a.data()));
+    }
+
+    // ROS_STATIC_PEERS: IP addresses separated by ';'; anything else is said and none is taken.
+    void staticPeersFromTheEnvironment()
+    {
+        qputenv("ROS_STATIC_PEERS", " 10.0.0.1;;fd00::2 ");
+        QString error;
+        QCOMPARE(Ros2Options::fromEnvironment(&error).staticPeers,
+                 (QStringList {u"10.0.0.1"_s, u"fd00::2"_s}));
+        QVERIFY(error.isEmpty());
+        qputenv("ROS_STATIC_PEERS", "10.0.0.1;cloud.lab");
+        QVERIFY(Ros2Options::fromEnvironment(&error).staticPeers.isEmpty());
+        QVERIFY2(error.contains(u"cloud.lab"_s), qPrintable(error));
+        qunsetenv("ROS_STATIC_PEERS");
     }
 
     void valuesOutOfRangeAreRefused()
