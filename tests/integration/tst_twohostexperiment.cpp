@@ -74,6 +74,18 @@ class TestTwoHostExperiment : public QObject
     TwoHostLab m_lab;
     QTemporaryDir m_dir;
 
+    /// Starts bridgescope with `args` inside the vehicle's namespace, its ssh the lab's.
+    bool startInVehicle(QProcess& p, const QStringList& args)
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"BRIDGESCOPE_SSH"_s, m_lab.sshProgram(TwoHostLab::Vehicle));
+        p.setProcessEnvironment(env);
+        const QStringList argv
+            = m_lab.inNamespace(TwoHostLab::Vehicle, QStringList {QStringLiteral(BRIDGESCOPE_BINARY)} + args);
+        p.start(argv.first(), argv.mid(1));
+        return p.waitForStarted(5000);
+    }
+
 private slots:
     void initTestCase() { TWOHOSTLAB_UP_OR_SKIP(m_lab); }
 
@@ -99,13 +111,7 @@ private slots:
         const QString out = m_dir.filePath(u"out-ros%1"_s.arg(ros));
 
         QProcess controller;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(u"BRIDGESCOPE_SSH"_s, m_lab.sshProgram(TwoHostLab::Vehicle));
-        controller.setProcessEnvironment(env);
-        const QStringList argv = m_lab.inNamespace(
-            TwoHostLab::Vehicle, {QStringLiteral(BRIDGESCOPE_BINARY), u"experiment"_s, planPath, u"-o"_s, out});
-        controller.start(argv.first(), argv.mid(1));
-        QVERIFY(controller.waitForStarted(5000));
+        QVERIFY(startInVehicle(controller, {u"experiment"_s, planPath, u"-o"_s, out}));
         // The cloud's side runs in the cloud's namespace while the cell records.
         bool bridge = false, detection = false, clock = false;
         QVERIFY(QTest::qWaitFor(
@@ -122,11 +128,12 @@ private slots:
         QVERIFY2(
             controller.exitCode() == 0,
             qPrintable(QString(err + QString::fromUtf8(controller.readAllStandardOutput())).right(3000)));
-        QVERIFY2(bridge && detection && clock, qPrintable(u"bridge %1, detection %2, clock %3"_s.arg(bridge).arg(detection).arg(clock)));
+        QVERIFY2(bridge && detection && clock,
+                 qPrintable(u"bridge %1, detection %2, clock %3"_s.arg(bridge).arg(detection).arg(clock)));
         // Nothing of the cloud's side is left there: its programs ended with their ssh sessions
         // and its folder is gone.
-        QTRY_VERIFY_WITH_TIMEOUT(!commandLines(m_lab.pids(TwoHostLab::Cloud)).join(u'\n').contains(u"bridgescope"_s),
-                                 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !commandLines(m_lab.pids(TwoHostLab::Cloud)).join(u'\n').contains(u"bridgescope"_s), 10000);
         QCOMPARE(labFolders(), foldersBefore);
 
         const QStringList runs = QDir(out + u"/runs"_s).entryList({u"*.bsrun"_s}, QDir::Files);
@@ -142,19 +149,24 @@ private slots:
         const QJsonObject ours = QJsonDocument::fromJson(json.out.toUtf8()).object();
         QStringList hosts;
         for (const QString& t : DemoLab::pipelineTopics())
-            hosts << (t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s : u"vehicle"_s);
-        const QJsonObject ref = PythonRef::run(u"latency_reference.py"_s, {csv, u"--hosts"_s, hosts.join(u',')}).object();
+            hosts << (t.contains(u"_cloud/"_s) || t.contains(u"object_detection"_s) ? u"cloud"_s
+                                                                                    : u"vehicle"_s);
+        const QJsonObject ref
+            = PythonRef::run(u"latency_reference.py"_s, {csv, u"--hosts"_s, hosts.join(u',')}).object();
         QVERIFY(!ref.isEmpty());
         QVERIFY2(ours.value(u"samples"_s).toInt() >= 150, qPrintable(json.out.left(400)));
         const QJsonArray stages = ours.value(u"stages"_s).toArray();
         QCOMPARE(stages.size(), 11);
         for (int s = 0; s < 11; ++s)
-            QVERIFY2(same(stages[s].toObject().value(u"stats"_s).toObject(), ref.value(u"stages"_s)[s].toObject()),
-                     qPrintable(QString::number(s)));
+            QVERIFY2(
+                same(stages[s].toObject().value(u"stats"_s).toObject(), ref.value(u"stages"_s)[s].toObject()),
+                qPrintable(QString::number(s)));
         QVERIFY(same(ours.value(u"total"_s).toObject(), ref.value(u"total"_s).toObject()));
         const QJsonObject comm = ours.value(u"communication"_s).toObject();
-        QVERIFY(same(comm.value(u"round_trip"_s).toObject(), ref.value(u"communication"_s)[u"round_trip"_s].toObject()));
-        QVERIFY(same(comm.value(u"one_way"_s).toObject(), ref.value(u"communication"_s)[u"one_way"_s].toObject()));
+        QVERIFY(same(comm.value(u"round_trip"_s).toObject(),
+                     ref.value(u"communication"_s)[u"round_trip"_s].toObject()));
+        QVERIFY(same(comm.value(u"one_way"_s).toObject(),
+                     ref.value(u"communication"_s)[u"one_way"_s].toObject()));
 
         // The two crossings corrected by the measured clocks: there about 10 ms longer than back,
         // which half the round trip cannot see; the asymmetry says half of it.
@@ -182,15 +194,8 @@ private slots:
     {
         const QSet<QString> foldersBefore = labFolders();
         QProcess demo;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(u"BRIDGESCOPE_SSH"_s, m_lab.sshProgram(TwoHostLab::Vehicle));
-        demo.setProcessEnvironment(env);
-        const QStringList argv
-            = m_lab.inNamespace(TwoHostLab::Vehicle,
-                                {QStringLiteral(BRIDGESCOPE_BINARY), u"demo"_s, u"--cloud-host"_s,
-                                 m_lab.sshUrl(TwoHostLab::Cloud), u"--size"_s, u"2000"_s});
-        demo.start(argv.first(), argv.mid(1));
-        QVERIFY(demo.waitForStarted(5000));
+        QVERIFY(startInVehicle(
+            demo, {u"demo"_s, u"--cloud-host"_s, m_lab.sshUrl(TwoHostLab::Cloud), u"--size"_s, u"2000"_s}));
         QTRY_VERIFY_WITH_TIMEOUT(
             commandLines(m_lab.pids(TwoHostLab::Cloud)).join(u'\n').contains(u"clock serve --name cloud"_s),
             60000);
@@ -207,16 +212,9 @@ private slots:
     void theDemoRunsItsCloudOnAnotherHost()
     {
         QProcess demo;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(u"BRIDGESCOPE_SSH"_s, m_lab.sshProgram(TwoHostLab::Vehicle));
-        demo.setProcessEnvironment(env);
-        const QStringList argv
-            = m_lab.inNamespace(TwoHostLab::Vehicle,
-                                {QStringLiteral(BRIDGESCOPE_BINARY), u"demo"_s, u"--cloud-host"_s,
-                                 m_lab.sshUrl(TwoHostLab::Cloud), u"--seconds"_s, u"15"_s, u"--size"_s,
-                                 u"20000"_s, u"--format"_s, u"json"_s});
-        demo.start(argv.first(), argv.mid(1));
-        QVERIFY(demo.waitForStarted(5000));
+        QVERIFY(startInVehicle(demo,
+                               {u"demo"_s, u"--cloud-host"_s, m_lab.sshUrl(TwoHostLab::Cloud), u"--seconds"_s,
+                                u"15"_s, u"--size"_s, u"20000"_s, u"--format"_s, u"json"_s}));
         bool detection = false;
         QVERIFY(QTest::qWaitFor(
             [&] {
@@ -249,15 +247,8 @@ private slots:
     void theWindowWatchesTheTwoHostDemo()
     {
         QProcess demo;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(u"BRIDGESCOPE_SSH"_s, m_lab.sshProgram(TwoHostLab::Vehicle));
-        demo.setProcessEnvironment(env);
-        const QStringList argv
-            = m_lab.inNamespace(TwoHostLab::Vehicle,
-                                {QStringLiteral(BRIDGESCOPE_BINARY), u"demo"_s, u"--cloud-host"_s,
-                                 m_lab.sshUrl(TwoHostLab::Cloud), u"--seconds"_s, u"90"_s});
-        demo.start(argv.first(), argv.mid(1));
-        QVERIFY(demo.waitForStarted(5000));
+        QVERIFY(startInVehicle(
+            demo, {u"demo"_s, u"--cloud-host"_s, m_lab.sshUrl(TwoHostLab::Cloud), u"--seconds"_s, u"90"_s}));
         QString err;
         const QRegularExpression servers(u"broker (\\S+), ROS master (\\S+), configs in (\\S+)"_s);
         QRegularExpressionMatch m;
