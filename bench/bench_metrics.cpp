@@ -23,11 +23,13 @@ MetricsSnapshot snapshotOf(int links)
 {
     using MetricsExposition::label;
     MetricsSnapshot s;
+    s.ownLabels = label("host", "vehicle-1");
     for (int i = 0; i < links; ++i) {
         MetricsSnapshot::Link l;
-        l.labels = label("config", "fleet") + ',' + label("client", "fleet_bridge") + ','
-            + label("direction", "mqtt2ros") + ',' + label("topic", "/fleet/t" + QByteArray::number(i)) + ','
-            + label("mqtt_topic", "fleet/t" + QByteArray::number(i));
+        const QByteArray n = QByteArray::number(i);
+        l.labels = s.ownLabels + ',' + label("bridge", "fleet_bridge") + ','
+            + label("link", "fleet/t" + n + " → /fleet/t" + n) + ',' + label("direction", "mqtt2ros");
+        l.stage = label("stage", "bridge");
         l.sourceMessages = 12345 + i;
         l.destinationMessages = 12340 + i;
         l.sourceBytes = 1234567.0 * i;
@@ -38,14 +40,14 @@ MetricsSnapshot snapshotOf(int links)
         l.state = i % 3;
         if (i % 10 == 0) {
             l.hasLatency = true;
-            l.buckets[4] = 100;
-            l.buckets[5] = 20;
+            l.buckets[6] = 100; // 8 ms
+            l.buckets[7] = 20; // 15 ms
             l.latencyCount = 120;
             l.latencySum = 1.234;
         }
         s.links.push_back(l);
     }
-    s.bridges.push_back({label("bridge", "fleet_bridge"), true});
+    s.bridges.push_back({s.ownLabels + ',' + label("bridge", "fleet_bridge"), true});
     return s;
 }
 
@@ -65,11 +67,11 @@ std::shared_ptr<prometheus::Registry> registryOf(int links)
     const Histogram::BucketBoundaries bounds(MetricsSnapshot::kLatencyBounds.cbegin(),
                                              MetricsSnapshot::kLatencyBounds.cend());
     for (int i = 0; i < links; ++i) {
-        const Labels labels {{"config", "fleet"},
-                             {"client", "fleet_bridge"},
-                             {"direction", "mqtt2ros"},
-                             {"topic", "/fleet/t" + std::to_string(i)},
-                             {"mqtt_topic", "fleet/t" + std::to_string(i)}};
+        const std::string n = std::to_string(i);
+        const Labels labels {{"host", "vehicle-1"},
+                             {"bridge", "fleet_bridge"},
+                             {"link", "fleet/t" + n + " → /fleet/t" + n},
+                             {"direction", "mqtt2ros"}};
         for (const char* side : {"source", "destination"}) {
             Labels l = labels;
             l.emplace("side", side);
@@ -81,12 +83,14 @@ std::shared_ptr<prometheus::Registry> registryOf(int links)
         stalls.Add(labels);
         state.Add(labels).Set(i % 3);
         if (i % 10 == 0) {
-            Histogram& h = latency.Add(labels, bounds);
+            Labels staged = labels;
+            staged.emplace("stage", "bridge");
+            Histogram& h = latency.Add(staged, bounds);
             for (int k = 0; k < 120; ++k)
                 h.Observe(k < 100 ? 0.008 : 0.015);
         }
     }
-    up.Add({{"bridge", "fleet_bridge"}}).Set(1);
+    up.Add({{"host", "vehicle-1"}, {"bridge", "fleet_bridge"}}).Set(1);
     return r;
 }
 

@@ -45,6 +45,7 @@ struct WatchRequest
     QString masterUri;
     WatchRules rules;
     QString metrics; ///< HOST:PORT, empty: none
+    QList<WatchMetrics::Label> labels; ///< --label: on every metric
     QString eventsFile; ///< empty: none
     QString runPath; ///< -o: the events are recorded in this run file; empty: none
     RunInfo info; ///< of that run
@@ -114,6 +115,11 @@ struct WatchOptions
         u"metrics"_s,
         Watch::tr("Serve Prometheus metrics at http://HOST:PORT/metrics (e.g. 127.0.0.1:9464)."),
         u"HOST:PORT"_s};
+    const QCommandLineOption label {
+        u"label"_s,
+        Watch::tr("A label on every metric, e.g. site=garage or host=vehicle-3 (default host: this "
+                  "machine's name); repeat it for more."),
+        u"NAME=VALUE"_s};
     const QCommandLineOption events {u"events-jsonl"_s,
                                      Watch::tr("Append every event to FILE as a JSON line."), u"FILE"_s};
     const QCommandLineOption seconds {u"seconds"_s, Watch::tr("Stop after S seconds (default: at Ctrl+C)."),
@@ -141,8 +147,8 @@ struct WatchOptions
 
     void addTo(QCommandLineParser& parser) const
     {
-        parser.addOptions({broker, master, rules, metrics, events, seconds, output, name, notes, noDiscover,
-                           pipeline, allowEmpty});
+        parser.addOptions({broker, master, rules, metrics, label, events, seconds, output, name, notes,
+                           noDiscover, pipeline, allowEmpty});
     }
 };
 
@@ -185,6 +191,23 @@ bool readOutputs(const QCommandLineParser& parser, const WatchOptions& o, WatchR
         err(address.error()
                 .toString()); // a port beyond 65535 or no host: the command line is wrong, not the network
         return false;
+    }
+    if (parser.isSet(o.label) && !parser.isSet(o.metrics)) {
+        err(Watch::tr("--label names the metrics: give --metrics HOST:PORT too"));
+        return false;
+    }
+    const QStringList labels = parser.values(o.label);
+    if (labels.size() > WatchMetrics::kMaxOwnLabels) {
+        err(Watch::tr("at most %1 --label options").arg(WatchMetrics::kMaxOwnLabels));
+        return false;
+    }
+    for (const QString& text : labels) {
+        const Result<WatchMetrics::Label> l = WatchMetrics::parseLabel(text);
+        if (!l) {
+            err(l.error().toString());
+            return false;
+        }
+        request->labels.push_back(*l);
     }
     request->eventsFile = parser.value(o.events);
     request->runPath = parser.value(o.output);
@@ -252,9 +275,9 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
 }
 
 /// The Prometheus endpoint at HOST:PORT, said on stderr; none after saying why.
-std::unique_ptr<WatchMetrics> serveMetrics(const QString& hostPort)
+std::unique_ptr<WatchMetrics> serveMetrics(const QString& hostPort, const QList<WatchMetrics::Label>& labels)
 {
-    Result<std::unique_ptr<WatchMetrics>> served = WatchMetrics::serve(hostPort);
+    Result<std::unique_ptr<WatchMetrics>> served = WatchMetrics::serve(hostPort, labels);
     if (!served) {
         err(served.error().toString());
         return nullptr;
@@ -419,7 +442,7 @@ bool prepareLive(LiveSession& live, const WatchRequest& request)
 int runWatch(const WatchRequest& request)
 {
     std::unique_ptr<WatchMetrics> metrics;
-    if (!request.metrics.isEmpty() && !(metrics = serveMetrics(request.metrics)))
+    if (!request.metrics.isEmpty() && !(metrics = serveMetrics(request.metrics, request.labels)))
         return ExitFailed;
     QFile events(request.eventsFile);
     if (!request.eventsFile.isEmpty() && !events.open(QIODevice::WriteOnly | QIODevice::Append)) {

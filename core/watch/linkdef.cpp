@@ -35,6 +35,13 @@ QString LinkDef::bridge() const
     return client.isEmpty() ? config : client;
 }
 
+QString LinkDef::name() const
+{
+    if (sourceTopic().isEmpty() || destinationTopic().isEmpty())
+        return sourceTopic() + destinationTopic();
+    return sourceTopic() + u" → "_s + destinationTopic();
+}
+
 QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& name, const QString& file)
 {
     QList<LinkDef> out;

@@ -30,6 +30,9 @@ struct LinkDef
     /// "config|ros2mqtt|/ros/topic|mqtt/topic": stable across runs, unique within a watch.
     QString id() const;
     QString bridge() const; ///< what names the bridge: the client id, else the config
+    /// "SOURCE → DESTINATION" (topics in the direction of the data), or the one topic known of a
+    /// discovered link: its name in a bridge, as the metrics' `link` label has it.
+    QString name() const;
     LinkKey key() const { return {rosTopic, mqttTopic, client, config}; }
     QString sourceTopic() const { return direction == Direction::Ros2Mqtt ? rosTopic : mqttTopic; }
     QString destinationTopic() const { return direction == Direction::Ros2Mqtt ? mqttTopic : rosTopic; }

@@ -10,8 +10,8 @@ using Link = MetricsSnapshot::Link;
 
 /// Bucket bounds as OpenMetrics' canonical numbers ("1.0", not "1").
 constexpr std::array<const char*, MetricsSnapshot::kLatencyBounds.size()> kBoundTexts {
-    "0.0005", "0.001", "0.002", "0.005", "0.01", "0.02", "0.05",
-    "0.1",    "0.2",   "0.5",   "1.0",   "2.0",  "5.0",  "10.0"};
+    "0.0001", "0.00025", "0.0005", "0.001", "0.0025", "0.005", "0.01", "0.025",
+    "0.05",   "0.1",     "0.25",   "0.5",   "1.0",    "2.5",   "5.0",  "10.0"};
 
 void appendNumber(QByteArray& out, double v)
 {
@@ -82,8 +82,8 @@ void linkFamily(QByteArray& out, const std::vector<Link>& links, const Family& f
             sample(out, f.name, suffix, l.labels, extraLabel, value(l));
 }
 
-/// Most bytes one sample of a link takes beside its labels: the longest name with its suffix
-/// (39), the extra label (19), braces, comma, space, the longest number (24) and the newline.
+/// Most bytes one sample of a link takes beside its labels and stage: the longest name with its
+/// suffix (39), the extra label (19), braces, commas, space, the longest number (24) and the newline.
 constexpr qsizetype kSampleOverhead = 100;
 constexpr int kLinkSamples = 10; ///< without the histogram
 constexpr int kLatencySamples
@@ -94,8 +94,8 @@ std::size_t linksWithin(const std::vector<Link>& links, qsizetype budget)
 {
     std::size_t n = 0;
     for (const Link& l : links) {
-        const qsizetype cost
-            = (l.labels.size() + kSampleOverhead) * (kLinkSamples + (l.hasLatency ? kLatencySamples : 0));
+        const qsizetype cost = (l.labels.size() + kSampleOverhead) * kLinkSamples
+            + (l.hasLatency ? (l.labels.size() + l.stage.size() + kSampleOverhead) * kLatencySamples : 0);
         if (cost > budget)
             break;
         budget -= cost;
@@ -239,18 +239,19 @@ void writeLinks(QByteArray& out, const std::vector<Link>& links,
     for (const Link& l : links) {
         if (!l.hasLatency)
             continue;
+        const QByteArray labels = l.labels + ',' + l.stage;
         quint64 cumulative = 0;
         for (std::size_t b = 0; b < l.buckets.size(); ++b) {
             cumulative += l.buckets[b];
-            out += "bridgescope_link_latency_seconds_bucket{" + l.labels + ",le=\"" + kBoundTexts[b] + "\"} ";
+            out += "bridgescope_link_latency_seconds_bucket{" + labels + ",le=\"" + kBoundTexts[b] + "\"} ";
             appendCount(out, cumulative);
             out += '\n';
         }
-        out += "bridgescope_link_latency_seconds_bucket{" + l.labels + ",le=\"+Inf\"} ";
+        out += "bridgescope_link_latency_seconds_bucket{" + labels + ",le=\"+Inf\"} ";
         appendCount(out, l.latencyCount);
         out += '\n';
-        sample(out, "bridgescope_link_latency_seconds", "_count", l.labels, nullptr, double(l.latencyCount));
-        sample(out, "bridgescope_link_latency_seconds", "_sum", l.labels, nullptr, l.latencySum);
+        sample(out, "bridgescope_link_latency_seconds", "_count", labels, nullptr, double(l.latencyCount));
+        sample(out, "bridgescope_link_latency_seconds", "_sum", labels, nullptr, l.latencySum);
     }
 
     head(out, bridgeUp, format);
@@ -258,13 +259,15 @@ void writeLinks(QByteArray& out, const std::vector<Link>& links,
         sample(out, bridgeUp.name, "", b.labels, nullptr, b.up ? 1 : 0);
 }
 
-/// A sample without labels.
-void plain(QByteArray& out, const Family& f, MetricsFormat format, double value)
+/// A sample with only the watch's own labels.
+void plain(QByteArray& out, const Family& f, MetricsFormat format, const QByteArray& ownLabels, double value)
 {
     head(out, f, format);
     out += f.name;
     if (qstrcmp(f.type, "counter") == 0)
         out += "_total";
+    if (!ownLabels.isEmpty())
+        out += '{' + ownLabels + '}';
     out += ' ';
     appendNumber(out, value);
     out += '\n';
@@ -291,10 +294,13 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
         "MQTT messages on topics not added to the topic tree to keep it within its topic and byte budgets"};
     static constexpr Family unwatched {"bridgescope_links_unwatched", "gauge",
                                        "Links announced on the broker and not watched, past the cap of 5000"};
+    static constexpr Family info {"bridgescope_watch_info", "gauge",
+                                  "1 while the watch serves its metrics; its labels say which watch it is"};
     static constexpr Family announcements {
         "bridgescope_announcements_dropped", "counter",
         "Type announcements of new topics past the 10000 a watch keeps, not read"};
-    constexpr qsizetype kOwnBytes = 8192; ///< the heads, our own figures and the trailer
+    constexpr qsizetype kOwnBytes
+        = 8192 + 16 * kMaxLabelValueBytes; ///< heads, own figures and labels, trailer
     qsizetype budget = kMaxAnswerBytes - kOwnBytes;
     // The bridges first (one sample each), then as many links as fit.
     std::size_t bridgeCount = 0;
@@ -315,14 +321,18 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
                                                            s.bridges.cbegin() + std::ptrdiff_t(bridgeCount));
         writeLinks(out, links, bridges, format);
     }
-    plain(out, truncated, format, left > 0 ? 1 : 0);
-    plain(out, omitted, format, double(left));
-    plain(out, dropped, format, double(droppedClients));
-    plain(out, evicted, format, double(s.historyEvicted));
-    plain(out, held, format, double(s.historyBytes));
-    plain(out, untracked, format, double(s.untrackedTopicMessages));
-    plain(out, unwatched, format, double(s.unwatchedLinks));
-    plain(out, announcements, format, double(s.droppedAnnouncements));
+    QByteArray infoLabels = s.ownLabels;
+    if (!s.version.isEmpty())
+        infoLabels += QByteArray(infoLabels.isEmpty() ? "" : ",") + label("version", s.version);
+    plain(out, info, format, infoLabels, 1);
+    plain(out, truncated, format, s.ownLabels, left > 0 ? 1 : 0);
+    plain(out, omitted, format, s.ownLabels, double(left));
+    plain(out, dropped, format, s.ownLabels, double(droppedClients));
+    plain(out, evicted, format, s.ownLabels, double(s.historyEvicted));
+    plain(out, held, format, s.ownLabels, double(s.historyBytes));
+    plain(out, untracked, format, s.ownLabels, double(s.untrackedTopicMessages));
+    plain(out, unwatched, format, s.ownLabels, double(s.unwatchedLinks));
+    plain(out, announcements, format, s.ownLabels, double(s.droppedAnnouncements));
     if (format == MetricsFormat::OpenMetrics)
         out += "# EOF\n";
     return out;

@@ -10,12 +10,15 @@
 /// times a second and the metrics server formats when it is scraped (on its own thread).
 struct MetricsSnapshot
 {
-    /// Upper bounds of the latency histogram's buckets in seconds (+Inf is implied).
-    static constexpr std::array<double, 14> kLatencyBounds {0.0005, 0.001, 0.002, 0.005, 0.01, 0.02, 0.05,
-                                                            0.1,    0.2,   0.5,   1,     2,    5,    10};
+    /// Upper bounds of the latency histogram's buckets in seconds (+Inf is implied): 1, 2.5, 5 per
+    /// decade from 0.1 ms (a loopback bridge) to 10 s (a link over a cellular outage). The same on
+    /// every host, so that Prometheus can add the buckets of a fleet.
+    static constexpr std::array<double, 16> kLatencyBounds {
+        0.0001, 0.00025, 0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1, 2.5, 5, 10};
     struct Link
     {
-        QByteArray labels; ///< `config="…",client="…",…` escaped, without braces
+        QByteArray labels; ///< `host="…",bridge="…",link="…",direction="…"` escaped, without braces
+        QByteArray stage; ///< `stage="…"`: the latency's stage, on the histogram only
         double sourceMessages = 0, destinationMessages = 0;
         double sourceBytes = 0, destinationBytes = 0;
         double lost = 0, stalls = 0;
@@ -36,6 +39,10 @@ struct MetricsSnapshot
     };
     std::vector<Link> links;
     std::vector<Bridge> bridges;
+    /// The watch's own labels (`host="…"` and the --label ones), on the samples that have no link
+    /// or bridge; the links' and bridges' labels begin with them.
+    QByteArray ownLabels;
+    QByteArray version; ///< Bridgescope's, on bridgescope_watch_info
     /// The MQTT topic history's budget (MqttTopicTree): payloads evicted to keep within it, bytes held.
     quint64 historyEvicted = 0;
     qint64 historyBytes = 0;

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <QHash>
+#include <QRegularExpression>
 #include <QSet>
+#include <QSysInfo>
 
 using namespace Qt::StringLiterals;
 
@@ -17,13 +19,31 @@ struct WatchMetrics::Private
     /// Each link's series by link id, kept between updates: counters never go back, and the
     /// histogram grows by the samples taken since the last update.
     QHash<QString, MetricsSnapshot::Link> links;
+    /// The label sets in use: two links whose bridge, topics and direction agree (the same link in two
+    /// configs) would be one series twice, and Prometheus refuses a whole scrape for that.
+    QSet<QByteArray> labelSets;
+    QByteArray ownLabels; ///< `host="…",…`
 
-    static QByteArray labelsOf(const LinkDef& def)
+    QByteArray labelsOf(const LinkDef& def)
     {
         using MetricsExposition::label;
-        return label("config", def.config.toUtf8()) + ',' + label("client", def.client.toUtf8()) + ','
-            + label("direction", def.direction == Direction::Ros2Mqtt ? "ros2mqtt" : "mqtt2ros") + ','
-            + label("topic", def.rosTopic.toUtf8()) + ',' + label("mqtt_topic", def.mqttTopic.toUtf8());
+        QByteArray labels = ownLabels + ',' + label("bridge", def.bridge().toUtf8()) + ','
+            + label("link", def.name().toUtf8()) + ','
+            + label("direction", directionName(def.direction).toUtf8());
+        if (labelSets.contains(labels))
+            labels += ',' + label("config", def.config.toUtf8());
+        labelSets.insert(labels);
+        return labels;
+    }
+
+    static QByteArray stageOf(const LinkDef& def)
+    {
+        QString stage = def.stampPrefix;
+        while (stage.startsWith(u'/'))
+            stage.remove(0, 1);
+        while (stage.endsWith(u'/'))
+            stage.chop(1);
+        return MetricsExposition::label("stage", stage.isEmpty() ? "bridge" : stage.toUtf8());
     }
 };
 
@@ -40,12 +60,56 @@ Status WatchMetrics::checkAddress(const QString& hostPort)
     return {};
 }
 
-Result<std::unique_ptr<WatchMetrics>> WatchMetrics::serve(const QString& hostPort)
+Result<WatchMetrics::Label> WatchMetrics::parseLabel(const QString& text)
 {
+    const qsizetype eq = text.indexOf(u'=');
+    if (eq < 0)
+        return LocatedError {tr("label '%1' is not NAME=VALUE").arg(text.left(80))};
+    const QString name = text.left(eq);
+    const QString value = text.mid(eq + 1);
+    static const QRegularExpression valid(u"^[a-zA-Z_][a-zA-Z0-9_]{0,63}$"_s);
+    if (!valid.match(name).hasMatch() || name.startsWith(u"__"_s))
+        return LocatedError {tr("label name '%1' is not a Prometheus label name (letters, digits and _, "
+                                "not starting with a digit or __, at most 64)")
+                                 .arg(name.left(80))};
+    static const QStringList ours {u"bridge"_s, u"link"_s, u"direction"_s, u"side"_s,
+                                   u"stage"_s,  u"le"_s,   u"version"_s,   u"config"_s};
+    static const QStringList scrapers {u"job"_s, u"instance"_s};
+    if (ours.contains(name))
+        return LocatedError {tr("label '%1' is one the watch writes itself").arg(name)};
+    if (scrapers.contains(name))
+        return LocatedError {
+            tr("label '%1' is one Prometheus sets when it scrapes; name the host with host=").arg(name)};
+    if (value.isEmpty())
+        return LocatedError {tr("label '%1' has no value (Prometheus drops an empty label)").arg(name)};
+    if (value.toUtf8().size() > MetricsExposition::kMaxLabelValueBytes)
+        return LocatedError {
+            tr("label '%1' is longer than %2 bytes").arg(name).arg(MetricsExposition::kMaxLabelValueBytes)};
+    return Label {name, value};
+}
+
+Result<std::unique_ptr<WatchMetrics>> WatchMetrics::serve(const QString& hostPort, const QList<Label>& labels)
+{
+    if (labels.size() > kMaxOwnLabels)
+        return LocatedError {tr("at most %1 labels of a watch's own").arg(kMaxOwnLabels)};
+    QList<Label> own {{u"host"_s, QSysInfo::machineHostName()}};
+    for (const Label& l : labels) {
+        if (const Result<Label> ok = parseLabel(l.first + u'=' + l.second); !ok)
+            return ok.error();
+        const auto same
+            = std::find_if(own.begin(), own.end(), [&](const Label& o) { return o.first == l.first; });
+        if (same != own.end())
+            same->second = l.second; // the last one given wins, host included
+        else
+            own.push_back(l);
+    }
     Result<std::unique_ptr<MetricsServer>> server = MetricsServer::listen(hostPort);
     if (!server)
         return server.error();
     std::unique_ptr<WatchMetrics> m(new WatchMetrics);
+    for (const Label& l : std::as_const(own))
+        m->d->ownLabels += QByteArray(m->d->ownLabels.isEmpty() ? "" : ",")
+            + MetricsExposition::label(l.first.toUtf8().constData(), l.second.toUtf8());
     m->d->server = std::move(server).value();
     m->d->server->publish(std::make_shared<MetricsSnapshot>());
     return m;
@@ -70,6 +134,8 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         snapshot->untrackedTopicMessages = topics->topicData().store().untrackedMessages();
     }
     snapshot->unwatchedLinks = unwatchedLinks;
+    snapshot->ownLabels = d->ownLabels;
+    snapshot->version = QByteArrayLiteral(BRIDGESCOPE_VERSION);
     snapshot->droppedAnnouncements = monitor.reader().announcedTypes().dropped();
     snapshot->links.reserve(std::size_t(monitor.linkCount()));
     QSet<QString> alive;
@@ -82,7 +148,8 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         auto it = d->links.find(id);
         if (it == d->links.end()) {
             it = d->links.insert(id, {});
-            it->labels = Private::labelsOf(def);
+            it->labels = d->labelsOf(def);
+            it->stage = Private::stageOf(def);
         }
         MetricsSnapshot::Link& l = *it;
         const LinkFigures f = monitor.figures(i);
@@ -110,14 +177,21 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         }
         snapshot->links.push_back(l);
     }
-    if (alive.size() != d->links.size())
+    if (alive.size() != d->links.size()) {
         for (auto it = d->links.begin(); it != d->links.end();)
-            it = alive.contains(it.key()) ? std::next(it) : d->links.erase(it);
+            if (alive.contains(it.key())) {
+                ++it;
+            } else {
+                d->labelSets.remove(it->labels);
+                it = d->links.erase(it);
+            }
+    }
     for (const QString& name : monitor.bridges().names()) {
         const LinkMonitor::BridgeState s = monitor.bridges().state(name);
         if (s != LinkMonitor::BridgeState::Unknown)
             snapshot->bridges.push_back(
-                {MetricsExposition::label("bridge", name.toUtf8()), s == LinkMonitor::BridgeState::Up});
+                {d->ownLabels + ',' + MetricsExposition::label("bridge", name.toUtf8()),
+                 s == LinkMonitor::BridgeState::Up});
     }
     d->server->publish(std::move(snapshot));
 }

@@ -11,6 +11,7 @@
 // 10 and 3, the default run 2 and 1.
 #include "base/wallclock.h"
 #include "mqtt/mqttlink.h"
+#include "prometheusserver.h"
 #include "record/runfile.h"
 #include "resulttext.h"
 #include "ros/rosbytes.h"
@@ -176,13 +177,25 @@ private:
 
     QByteArray metrics() { return TestServers::httpGet(m_metricsPort, u"/metrics"_s); }
 
+    /// A sample of the link with this ROS topic (`link` is "SOURCE → DESTINATION"), NaN if none.
+    static double sampleOf(const QByteArray& text, const QString& name, const QString& rosTopic,
+                           QStringList labels)
+    {
+        for (const QString& link : {u"link=\"%1 → "_s.arg(rosTopic), u" → %1\""_s.arg(rosTopic)}) {
+            const double v = TestServers::metricSample(text, name, labels + QStringList {link});
+            if (!qIsNaN(v))
+                return v;
+        }
+        return qQNaN();
+    }
+
     double linkValue(const QByteArray& text, const QString& name, const QString& rosTopic,
                      const QString& side = {})
     {
-        QStringList labels {u"topic=\"%1\""_s.arg(rosTopic)};
+        QStringList labels;
         if (!side.isEmpty())
             labels << u"side=\"%1\""_s.arg(side);
-        const double v = TestServers::metricSample(text, name, labels);
+        const double v = sampleOf(text, name, rosTopic, labels);
         return qIsNaN(v) ? 0 : v; // a counter made on its first count (seq gaps, latency) is 0 before
     }
 
@@ -419,41 +432,16 @@ private slots:
 
     void prometheusScrapesTheLinks()
     {
-        const QString prometheus = u"/usr/bin/prometheus"_s;
-        QVERIFY2(QFile::exists(prometheus), "Debian's prometheus package (scripts/setup.sh installs it)");
-        const quint16 port = TestServers::freePort();
-        const QString dir = m_servers.tempPath() + u"/prometheus"_s;
-        QFile config(m_servers.tempPath() + u"/prometheus.yml"_s);
-        QVERIFY(config.open(QIODevice::WriteOnly));
-        config.write(u"global:\n  scrape_interval: 1s\n  evaluation_interval: 1s\n"
-                     u"scrape_configs:\n  - job_name: bridgescope\n    static_configs:\n"
-                     u"      - targets: ['127.0.0.1:%1']\n"_s.arg(m_metricsPort)
-                         .toUtf8());
-        config.close();
-        QProcess server;
-        server.setProcessChannelMode(QProcess::MergedChannels);
-        server.start(prometheus,
-                     {u"--config.file="_s + config.fileName(), u"--storage.tsdb.path="_s + dir,
-                      u"--web.listen-address=127.0.0.1:%1"_s.arg(port)});
-        QVERIFY(server.waitForStarted(5000));
-        const auto query = [&](const QString& promql) {
-            QUrlQuery q;
-            q.addQueryItem(u"query"_s, promql);
-            const QByteArray body
-                = TestServers::httpGet(port, u"/api/v1/query?"_s + q.toString(QUrl::FullyEncoded));
-            const QJsonArray result = QJsonDocument::fromJson(body)
-                                          .object()
-                                          .value(u"data"_s)
-                                          .toObject()
-                                          .value(u"result"_s)
-                                          .toArray();
-            return result.isEmpty()
-                ? qQNaN()
-                : result.first().toObject().value(u"value"_s).toArray().at(1).toString().toDouble();
-        };
-        const QString counter = u"bridgescope_link_messages_total{topic=\"/w/plain\",side=\"destination\"}"_s;
+        PrometheusServer server;
+        QVERIFY2(server.start(u"global:\n  scrape_interval: 1s\n  evaluation_interval: 1s\n"
+                              u"scrape_configs:\n  - job_name: bridgescope\n    static_configs:\n"
+                              u"      - targets: ['127.0.0.1:%1']\n"_s.arg(m_metricsPort)),
+                 qPrintable(server.errorString()));
+        const auto query = [&](const QString& promql) { return server.value(promql); };
+        const QString counter
+            = u"bridgescope_link_messages_total{link=\"/w/plain → w/plain\",side=\"destination\"}"_s;
         const QString median
-            = u"histogram_quantile(0.5, rate(bridgescope_link_latency_seconds_bucket{topic=\"/w/in_stamped\"}[5s]))"_s;
+            = u"histogram_quantile(0.5, rate(bridgescope_link_latency_seconds_bucket{link=\"w/in_stamped → /w/in_stamped\"}[5s]))"_s;
         QTRY_VERIFY_WITH_TIMEOUT(!qIsNaN(query(counter)) && !qIsNaN(query(median)), 30000);
         // The counter Prometheus holds is the one the watch serves, a scrape (1 s, 10 messages) behind.
         const double stored = query(counter);
@@ -468,8 +456,6 @@ private slots:
         // reads what it gets without a scrape error.
         QCOMPARE(query(u"up{job=\"bridgescope\"}"_s), 1.0);
         QCOMPARE(query(u"scrape_samples_scraped{job=\"bridgescope\"} > 0"_s) > 0, true);
-        server.terminate();
-        QVERIFY(server.waitForFinished(10000));
     }
 
     void shippedPrometheusFilesAreValid()
@@ -501,10 +487,10 @@ private slots:
         QVERIFY(discover.waitForStarted(5000));
         QVERIFY(TestServers::waitForPort(port, 10000));
         const auto count = [&](const QString& mqttTopic) {
-            return TestServers::metricSample(
-                TestServers::httpGet(port, u"/metrics"_s), u"bridgescope_link_messages_total"_s,
-                {u"config=\"discovered\""_s, u"mqtt_topic=\"%1\""_s.arg(mqttTopic),
-                 u"side=\"destination\""_s});
+            // A discovered link knows its MQTT end only, and is named after it.
+            return TestServers::metricSample(TestServers::httpGet(port, u"/metrics"_s),
+                                             u"bridgescope_link_messages_total"_s,
+                                             {u"link=\"%1\""_s.arg(mqttTopic), u"side=\"destination\""_s});
         };
         // The bridge's ROS → MQTT topics and the "remote" bridge's, announced by this test.
         for (const QString& t : {u"w/stamped"_s, u"w/plain"_s, u"w/in_stamped"_s, u"w/in_plain"_s})
@@ -515,7 +501,7 @@ private slots:
         QVERIFY2(after - before >= 12 && after - before <= 28, qPrintable(QString::number(after - before)));
         // The 20 ms the test backdates its stamps, from the discovered link's histogram.
         const QByteArray text = TestServers::httpGet(port, u"/metrics"_s);
-        const QStringList labels {u"config=\"discovered\""_s, u"mqtt_topic=\"w/in_stamped\""_s};
+        const QStringList labels {u"link=\"w/in_stamped\""_s};
         const double sum = TestServers::metricSample(text, u"bridgescope_link_latency_seconds_sum"_s, labels);
         const double n = TestServers::metricSample(text, u"bridgescope_link_latency_seconds_count"_s, labels);
         QVERIFY2(n > 5 && sum / n >= 0.02 && sum / n < 0.1, qPrintable(u"%1 / %2"_s.arg(sum).arg(n)));
@@ -544,8 +530,7 @@ private slots:
         const auto unseen = [&] {
             const QByteArray text = metrics();
             for (const QString& t : topics)
-                if (TestServers::metricSample(text, u"bridgescope_link_seen"_s, {u"topic=\"%1\""_s.arg(t)})
-                    != 0.0)
+                if (sampleOf(text, u"bridgescope_link_seen"_s, t, {}) != 0.0)
                     return false;
             return true;
         };
@@ -585,8 +570,7 @@ private slots:
                  QJsonDocument(events(from, u"start"_s, u""_s, u"stall"_s).value(0)).toJson().constData());
         QVERIFY(events(from, u"start"_s, u""_s, u"bridge_down"_s).isEmpty());
         for (const QString& t : topics)
-            QCOMPARE(TestServers::metricSample(after, u"bridgescope_link_seen"_s, {u"topic=\"%1\""_s.arg(t)}),
-                     1.0);
+            QCOMPARE(sampleOf(after, u"bridgescope_link_seen"_s, t, {}), 1.0);
     }
 
     /// Last: stops the watch. Every event it printed is in its run file, with the same start and

@@ -27,9 +27,12 @@ MetricsSnapshot twoLinks()
 {
     using MetricsExposition::label;
     MetricsSnapshot s;
+    s.ownLabels = label("host", "vehicle-3") + ',' + label("site", "garage");
+    s.version = "9.9.9";
     MetricsSnapshot::Link a;
-    a.labels = label("config", "lab") + ',' + label("client", "vehicle") + ','
-        + label("direction", "ros2mqtt") + ',' + label("topic", "/a") + ',' + label("mqtt_topic", "a");
+    a.labels = s.ownLabels + ',' + label("bridge", "vehicle") + ',' + label("link", "/a → a") + ','
+        + label("direction", "ros2mqtt");
+    a.stage = label("stage", "bridge");
     a.sourceMessages = 120;
     a.destinationMessages = 118;
     a.sourceBytes = 12e9; // beyond 32 bits
@@ -41,17 +44,17 @@ MetricsSnapshot twoLinks()
     a.destinationRate = 9.5;
     a.state = 1;
     a.hasLatency = true;
-    a.buckets[0] = 1; // <= 0.5 ms
-    a.buckets[4] = 2; // <= 10 ms
+    a.buckets[2] = 1; // <= 0.5 ms
+    a.buckets[6] = 2; // <= 10 ms
     a.latencyCount = 4; // one above 10 s
     a.latencySum = 11.02;
     s.links.push_back(a);
     MetricsSnapshot::Link b;
     // A hostile topic name: quotes, a backslash, a newline and UTF-8 stay one label value.
-    b.labels = label("config", "lab") + ',' + label("client", "") + ',' + label("direction", "mqtt2ros") + ','
-        + label("topic", "/b\"\\\n/ü") + ',' + label("mqtt_topic", "b");
+    b.labels = s.ownLabels + ',' + label("bridge", "lab") + ',' + label("link", "b → /b\"\\\n/ü") + ','
+        + label("direction", "mqtt2ros");
     s.links.push_back(b);
-    s.bridges.push_back({label("bridge", "vehicle"), true});
+    s.bridges.push_back({s.ownLabels + ',' + label("bridge", "vehicle"), true});
     return s;
 }
 
@@ -80,12 +83,15 @@ private slots:
         QVERIFY2(promtool.exitCode() == 0, qPrintable(said + u"\n"_s + QString::fromUtf8(text)));
 
         QVERIFY(text.contains("# TYPE bridgescope_link_messages_total counter\n"));
-        QVERIFY(text.contains("bridgescope_link_messages_total{config=\"lab\",client=\"vehicle\","
-                              "direction=\"ros2mqtt\",topic=\"/a\",mqtt_topic=\"a\",side=\"source\"} 120\n"));
+        QVERIFY(text.contains(
+            "bridgescope_link_messages_total{host=\"vehicle-3\",site=\"garage\",bridge=\"vehicle\","
+            "link=\"/a → a\",direction=\"ros2mqtt\",side=\"source\"} 120\n"));
         QVERIFY(text.contains(",side=\"source\"} 12000000000\n"));
         QVERIFY(text.contains("bridgescope_link_rate_hz{") && text.contains("} 9.75\n"));
-        QVERIFY(text.contains("topic=\"/b\\\"\\\\\\n/ü\""));
-        // Cumulative buckets; +Inf is the count.
+        QVERIFY(text.contains("link=\"b → /b\\\"\\\\\\n/ü\""));
+        // Cumulative buckets from 0.1 ms; +Inf is the count. The stage only on the histogram.
+        QVERIFY(text.contains("direction=\"ros2mqtt\",stage=\"bridge\",le=\"0.0001\"} 0\n"));
+        QVERIFY(text.contains(",le=\"0.00025\"} 0\n"));
         QVERIFY(text.contains(",le=\"0.0005\"} 1\n"));
         QVERIFY(text.contains(",le=\"0.005\"} 1\n"));
         QVERIFY(text.contains(",le=\"0.01\"} 3\n"));
@@ -95,7 +101,13 @@ private slots:
         // Only the link with gaps has the gap counter; the link without stamps has no histogram.
         QCOMPARE(text.count("bridgescope_link_seq_gaps_total{"), 1);
         QCOMPARE(text.count("bridgescope_link_latency_seconds_count{"), 1);
-        QVERIFY(text.contains("bridgescope_bridge_up{bridge=\"vehicle\"} 1\n"));
+        QVERIFY(text.contains(
+            "bridgescope_bridge_up{host=\"vehicle-3\",site=\"garage\",bridge=\"vehicle\"} 1\n"));
+        QCOMPARE(text.count("stage="), 17 + 2);
+        // The watch's own figures carry its labels too, and the info says which watch it is.
+        QVERIFY(text.contains(
+            "bridgescope_watch_info{host=\"vehicle-3\",site=\"garage\",version=\"9.9.9\"} 1\n"));
+        QVERIFY(text.contains("bridgescope_metrics_truncated{host=\"vehicle-3\",site=\"garage\"} 0\n"));
         QVERIFY(!text.contains("# EOF"));
     }
 
@@ -143,8 +155,8 @@ private slots:
             }
         }
         // 10 of the links and bridges (bridgescope_link_seen since issue 40), 5 of the answer and the
-        // history budgets, 3 of the announced ones
-        QCOMPARE(typeOf.size(), 18);
+        // history budgets, 3 of the announced ones, the watch's info (issue 44)
+        QCOMPARE(typeOf.size(), 19);
     }
 
     void theScraperChoosesTheFormat()
@@ -299,7 +311,7 @@ private slots:
         QVERIFY2(omitted > 0 && omitted < 10000, qPrintable(QString::number(omitted)));
         QVERIFY(text.contains("\nbridgescope_metrics_dropped_clients_total 3\n"));
         QVERIFY(MetricsExposition::write(twoLinks(), MetricsFormat::OpenMetrics)
-                    .contains("\nbridgescope_metrics_truncated 0\n"));
+                    .contains("\nbridgescope_metrics_truncated{host=\"vehicle-3\",site=\"garage\"} 0\n"));
     }
 
     /// Clients that ask and never read hold their answers in the server's memory: past the budget,

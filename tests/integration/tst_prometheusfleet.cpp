@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+// A fleet on Prometheus (issue 44): two `bridgescope watch` processes, each on its own "host" (its
+// own mosquitto and rosmaster, its own --label host=…), scraped by a real Prometheus server. The
+// latency histograms of the same link on both hosts add up in Prometheus to what numpy counts on
+// the union of the samples the test sent (tests/scripts/histogram_reference.py), bucket by bucket,
+// and the fleet's percentiles fall in the buckets numpy's do.
+#include "base/wallclock.h"
+#include "mqtt/mqttlink.h"
+#include "prometheusserver.h"
+#include "pythonref.h"
+#include "resulttext.h"
+#include "ros/rosbytes.h"
+#include "testservers.h"
+#include "watch/metricsexposition.h"
+#include "wire/mqttclientwire.h"
+
+#include <geometry_msgs/PointStamped.h>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// One host of the fleet: its servers, its watch and what the test sent there.
+struct Host
+{
+    QString name;
+    TestServers servers;
+    std::unique_ptr<MqttLink> mqtt;
+    QProcess watch;
+    quint16 metricsPort = 0;
+    std::vector<double> sent; ///< the latencies (s) the stamps were backdated by
+};
+
+/// Latencies far from every bucket bound (at least 20 ms below the bound above), so that the
+/// transit from the test's publish to the watch's arrival (under a millisecond, but once 4 ms in a
+/// Debug build) never moves one to the next bucket: numpy's counts of the backdates are then
+/// exactly the buckets' counts.
+constexpr double kVehicleLatencies[] {0.03, 0.07, 0.3, 0.7, 3.0, 0.15};
+constexpr double kEdgeLatencies[] {0.03, 0.2, 0.4, 1.5, 6.0, 0.07};
+} // namespace
+
+class TestPrometheusFleet : public QObject
+{
+    Q_OBJECT
+
+    Host m_hosts[2];
+    PrometheusServer m_prometheus;
+
+    void startHost(Host& h, const QString& name)
+    {
+        h.name = name;
+        QVERIFY2(h.servers.startMosquitto(), qPrintable(h.servers.errorString()));
+        QVERIFY2(h.servers.startRosMaster(), qPrintable(h.servers.errorString()));
+        QString error;
+        h.mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(h.servers.brokerUrl()));
+        QVERIFY2(noted(h.mqtt->connect(5000), &error), qPrintable(error));
+        // As a sending mqtt_client announces a stamped link: its type, retained.
+        const RosMsgTypeInfo point {
+            QString::fromLatin1(ros::message_traits::MD5Sum<geometry_msgs::PointStamped>::value()),
+            QString::fromLatin1(ros::message_traits::DataType<geometry_msgs::PointStamped>::value()),
+            QString::fromLatin1(ros::message_traits::Definition<geometry_msgs::PointStamped>::value()), true};
+        QVERIFY(h.mqtt->publish(u"mqtt_client/ros_msg_type/fleet/stamped"_s,
+                                MqttClientWire::encodeType(point), 0, true));
+        h.metricsPort = TestServers::freePort();
+        h.watch.setProcessEnvironment(h.servers.rosEnvironment());
+        h.watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        h.watch.setStandardOutputFile(QProcess::nullDevice());
+        h.watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                      {u"watch"_s, u"--broker"_s, h.servers.brokerUrl(), u"--ros-master"_s,
+                       h.servers.rosMasterUri(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(h.metricsPort),
+                       u"--label"_s, u"host="_s + name, u"--label"_s, u"site=garage"_s, u"--seconds"_s,
+                       u"300"_s});
+        QVERIFY(h.watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(h.metricsPort, 10000));
+    }
+
+    /// Publishes `n` stamped messages on `h`'s broker, backdated by latencies from `from`.
+    template<std::size_t N> void send(Host& h, const double (&from)[N], int n)
+    {
+        for (int i = 0; i < n; ++i) {
+            const double latency = from[std::size_t(i * 7) % N];
+            geometry_msgs::PointStamped p;
+            p.header.seq = quint32(i);
+            const qint64 stampNs = wallClockNs() - qint64(latency * 1e9);
+            QVERIFY(h.mqtt->publish(u"fleet/stamped"_s, MqttClientWire::stamped(stampNs, RosBytes::of(p)), 0,
+                                    false));
+            h.sent.push_back(latency);
+            QTest::qWait(10); // 100 messages a second: a paced source, not a flood
+        }
+    }
+
+    /// The watch's own count of latency samples on its link (NaN before the link is discovered).
+    double watchCount(const Host& h) const
+    {
+        return TestServers::metricSample(TestServers::httpGet(h.metricsPort, u"/metrics"_s),
+                                         u"bridgescope_link_messages_total"_s,
+                                         {u"link=\"fleet/stamped\""_s, u"side=\"destination\""_s});
+    }
+
+private slots:
+    void initTestCase()
+    {
+        startHost(m_hosts[0], u"vehicle-1"_s);
+        startHost(m_hosts[1], u"edge-1"_s);
+        QVERIFY2(m_prometheus.start(
+                     u"global:\n  scrape_interval: 1s\n  evaluation_interval: 1s\n"
+                     u"scrape_configs:\n  - job_name: bridgescope\n    static_configs:\n"
+                     u"      - targets: ['127.0.0.1:%1', '127.0.0.1:%2']\n"_s.arg(m_hosts[0].metricsPort)
+                         .arg(m_hosts[1].metricsPort)),
+                 qPrintable(m_prometheus.errorString()));
+    }
+
+    void cleanupTestCase()
+    {
+        m_prometheus.stop();
+        for (Host& h : m_hosts) {
+            h.watch.terminate();
+            h.watch.waitForFinished(10000);
+        }
+    }
+
+    /// Buckets from two watches added by Prometheus equal numpy's counts on the union of the
+    /// samples; the count is the union's, the sum within the transit time of each sample.
+    void histogramsAddUpAcrossHosts()
+    {
+        // The link is discovered from its retained type announcement before anything is sent.
+        for (const Host& h : m_hosts)
+            QTRY_VERIFY2_WITH_TIMEOUT(watchCount(h) == 0, qPrintable(h.name), 15000);
+        send(m_hosts[0], kVehicleLatencies, 48);
+        send(m_hosts[1], kEdgeLatencies, 72);
+        const QString link = u"{link=\"fleet/stamped\",site=\"garage\"}"_s;
+        QTRY_COMPARE_WITH_TIMEOUT(
+            m_prometheus.value(u"sum(bridgescope_link_latency_seconds_count%1)"_s.arg(link)), 120.0, 30000);
+        // Each host's own series, told apart by its label.
+        QCOMPARE(
+            m_prometheus.value(
+                u"sum(bridgescope_link_latency_seconds_count{host=\"vehicle-1\",link=\"fleet/stamped\"})"_s),
+            48.0);
+        QCOMPARE(
+            m_prometheus.value(
+                u"sum(bridgescope_link_latency_seconds_count{host=\"edge-1\",link=\"fleet/stamped\"})"_s),
+            72.0);
+
+        // numpy on the union of what was sent.
+        QFile samples(m_hosts[0].servers.tempPath() + u"/union.txt"_s);
+        QVERIFY(samples.open(QIODevice::WriteOnly));
+        for (const Host& h : m_hosts)
+            for (double s : h.sent)
+                samples.write(QByteArray::number(s, 'g', 17) + '\n');
+        samples.close();
+        QStringList bounds;
+        for (double b : MetricsSnapshot::kLatencyBounds)
+            bounds << QString::number(b, 'g', 17);
+        const QJsonObject want
+            = PythonRef::run(u"histogram_reference.py"_s, {samples.fileName(), bounds.join(u',')}).object();
+        QCOMPARE(want.value(u"count"_s).toInt(), 120);
+
+        const QJsonArray buckets
+            = m_prometheus.query(u"sum by (le) (bridgescope_link_latency_seconds_bucket%1)"_s.arg(link));
+        QCOMPARE(buckets.size(), int(MetricsSnapshot::kLatencyBounds.size()) + 1);
+        const QJsonObject wantLe = want.value(u"le"_s).toObject();
+        int compared = 0;
+        for (const QJsonValue& v : buckets) {
+            const QJsonObject series = v.toObject();
+            const QString le = series.value(u"metric"_s).toObject().value(u"le"_s).toString();
+            const double got = series.value(u"value"_s).toArray().at(1).toString().toDouble();
+            if (le == u"+Inf"_s) {
+                QCOMPARE(got, 120.0);
+                continue;
+            }
+            for (auto it = wantLe.begin(); it != wantLe.end(); ++it)
+                if (it.key().toDouble() == le.toDouble()) {
+                    QVERIFY2(got == it.value().toDouble(),
+                             qPrintable(u"le %1: Prometheus %2, numpy %3"_s.arg(le).arg(got).arg(
+                                 it.value().toInt())));
+                    ++compared;
+                }
+        }
+        QCOMPARE(compared, int(MetricsSnapshot::kLatencyBounds.size()));
+        // The sum: the backdates plus each message's transit from this test to the watch.
+        const double sum = m_prometheus.value(u"sum(bridgescope_link_latency_seconds_sum%1)"_s.arg(link));
+        const double wantSum = want.value(u"sum"_s).toDouble();
+        QVERIFY2(sum >= wantSum && sum < wantSum + 120 * 0.02,
+                 qPrintable(u"%1 vs %2"_s.arg(sum).arg(wantSum)));
+        // The fleet's percentiles: Prometheus interpolates inside the bucket numpy's value is in.
+        for (const char* q : {"50", "99"}) {
+            const double got = m_prometheus.value(
+                u"histogram_quantile(0.%1, sum by (le) (bridgescope_link_latency_seconds_bucket%2))"_s.arg(
+                    QString::fromLatin1(q), link));
+            const QJsonArray bucket = want.value(u"p%1_bucket"_s.arg(QString::fromLatin1(q))).toArray();
+            QVERIFY2(got > bucket.at(0).toDouble() && got <= bucket.at(1).toDouble(),
+                     qPrintable(u"p%1: Prometheus %2, numpy %3 in (%4, %5]"_s.arg(QString::fromLatin1(q))
+                                    .arg(got)
+                                    .arg(want.value(u"p%1"_s.arg(QString::fromLatin1(q))).toDouble())
+                                    .arg(bucket.at(0).toDouble())
+                                    .arg(bucket.at(1).toDouble())));
+        }
+    }
+
+    /// Every series carries the host's labels: the bridges, the watch's own figures and its info.
+    void everySeriesSaysItsHost()
+    {
+        for (const Host& h : m_hosts) {
+            const QString selector = u"{host=\"%1\",site=\"garage\"}"_s.arg(h.name);
+            QTRY_COMPARE_WITH_TIMEOUT(m_prometheus.value(u"bridgescope_watch_info%1"_s.arg(selector)), 1.0,
+                                      10000);
+            QCOMPARE(m_prometheus.value(u"bridgescope_metrics_truncated%1"_s.arg(selector)), 0.0);
+            QCOMPARE(m_prometheus.value(u"count(bridgescope_link_state%1)"_s.arg(selector)), 1.0);
+        }
+        QCOMPARE(m_prometheus.value(u"count(bridgescope_link_state{link=\"fleet/stamped\"})"_s), 2.0);
+    }
+
+    /// --label refuses what would break the fleet's series, before anything starts.
+    void badLabelsAreRefused()
+    {
+        const QStringList bad {u"le=1"_s,
+                               u"job=x"_s,
+                               u"2x=y"_s,
+                               u"__name=x"_s,
+                               u"site="_s,
+                               u"novalue"_s,
+                               u"site="_s + QString(300, u'x')};
+        for (const QString& label : bad) {
+            QProcess watch;
+            watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                        {u"watch"_s, u"--broker"_s, m_hosts[0].servers.brokerUrl(), u"--metrics"_s,
+                         u"127.0.0.1:0"_s, u"--label"_s, label, u"--seconds"_s, u"1"_s});
+            QVERIFY(watch.waitForFinished(10000));
+            const QString said = QString::fromUtf8(watch.readAllStandardError());
+            QVERIFY2(watch.exitCode() == 2 && said.contains(u"label"_s), qPrintable(label + u": "_s + said));
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPrometheusFleet)
+#include "tst_prometheusfleet.moc"
