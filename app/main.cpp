@@ -9,6 +9,7 @@
 #include "app/cli/probecommand.h"
 #include "app/cli/recordcommand.h"
 #include "app/cli/reportcommand.h"
+#include "app/cli/rulescommand.h"
 #include "app/cli/watchcommand.h"
 #include "app/gui/guimain.h"
 #include "base/logging.h"
@@ -130,8 +131,9 @@ int main(int argc, char** argv)
     const bool version = first == u"-v"_s || first == u"--version"_s;
     // The commands people type; `demo-node` (the demo lab's own child processes) is not one of
     // them: it runs, but no list, help or suggestion names it.
-    static const QStringList commands = {u"bridge"_s, u"clock"_s,  u"config"_s, u"demo"_s,  u"discover"_s,
-                                         u"experiment"_s, u"probe"_s, u"record"_s, u"report"_s, u"watch"_s};
+    static const QStringList commands
+        = {u"bridge"_s, u"clock"_s,  u"config"_s, u"demo"_s,  u"discover"_s, u"experiment"_s,
+           u"probe"_s,  u"record"_s, u"report"_s, u"rules"_s, u"watch"_s};
     const bool internal = first == u"demo-node"_s;
     if (first == u"report"_s && wantsPdf(argc, argv)) {
         // PDF reports lay text out with Qt GUI; no window ever opens, so no display is needed.
@@ -174,6 +176,8 @@ int main(int argc, char** argv)
             return CliOutput::finish(runExperimentCommand(args));
         if (first == u"clock"_s)
             return CliOutput::finish(runClockCommand(args));
+        if (first == u"rules"_s)
+            return CliOutput::finish(runRulesCommand(args));
         return runConfigCommand(args);
     }
     // A typo is not a file for the window to open, and a window without a display is not an abort;

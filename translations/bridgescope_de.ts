@@ -3478,6 +3478,10 @@ factors:
         <source>answer clock probes; measure a far host&apos;s clock and its uncertainty</source>
         <translation>Uhrproben beantworten; die Uhr eines fernen Rechners und ihre Unsicherheit messen</translation>
     </message>
+    <message>
+        <source>print the Prometheus rules and alerts for watch --metrics</source>
+        <translation>die Prometheus-Regeln und -Alarme für watch --metrics ausgeben</translation>
+    </message>
 </context>
 <context>
     <name>LatencyStatsModel</name>
@@ -8007,6 +8011,25 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
     <message>
         <source>cannot read the bag: %1</source>
         <translation>das Bag ist nicht lesbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Rules</name>
+    <message>
+        <source>Prints the Prometheus rules for the metrics of watch --metrics: recording rules per link, bridge and host, and alerts (a bridge down, a link in alert or stalled, loss over 1 %, latency p99 over 100 ms, a host&apos;s watch gone). Save them where Prometheus reads its rule_files:
+  bridgescope rules &gt; /etc/prometheus/bridgescope-rules.yml
+Exit status: 0 printed, 2 bad arguments or standard output cannot be written.</source>
+        <translation>Gibt die Prometheus-Regeln für die Metriken von watch --metrics aus: Aufzeichnungsregeln je Verbindung, Bridge und Rechner, und Alarme (eine Bridge ausgefallen, eine Verbindung im Alarm oder ins Stocken geraten, Verlust über 1 %, Latenz-p99 über 100 ms, die Überwachung eines Rechners verschwunden). Dort speichern, wo Prometheus seine rule_files liest:
+  bridgescope rules &gt; /etc/prometheus/bridgescope-rules.yml
+Exit-Status: 0 ausgegeben, 2 falsche Argumente oder die Standardausgabe ist nicht beschreibbar.</translation>
+    </message>
+    <message>
+        <source>rules takes no arguments; see bridgescope rules --help</source>
+        <translation>rules erwartet keine Argumente; siehe bridgescope rules --help</translation>
+    </message>
+    <message>
+        <source>error: the rules are not in this build: %1</source>
+        <translation>Fehler: die Regeln fehlen in diesem Build: %1</translation>
     </message>
 </context>
 <context>

@@ -76,6 +76,7 @@ QString bridgescopeUsage()
         {u"report INPUT... [--format F]"_s, Gui::tr("latency reports of runs, CSV files and bags")},
         {u"watch CONFIG.yaml... [--metrics H:P]"_s,
          Gui::tr("watch every bridged link for hours: events, metrics")},
+        {u"rules"_s, Gui::tr("print the Prometheus rules and alerts for watch --metrics")},
         {u"experiment PLAN.yaml -o DIR"_s, Gui::tr("run an experiment matrix unattended, a run per cell")},
     };
     QString text

@@ -53,6 +53,7 @@ files=(
     ./usr/share/man/man1/bridgescope.1.gz
     ./usr/share/doc/bridgescope/copyright
     ./usr/share/doc/bridgescope/changelog.gz
+    ./usr/share/bridgescope/prometheus/bridgescope-rules.yml
 )
 sizes=(16 32 48 64 128 256)
 for s in "${sizes[@]}"; do
@@ -150,6 +151,12 @@ for word in "${options[@]}" "${commands[@]}"; do
     grep -qF -- "$word" <<<"$page" || fail "the manual page does not mention $word (bridgescope --help does)"
 done
 pass "bridgescope --version; the manual page has the ${#options[@]} options and ${#commands[@]} commands of --help"
+
+# `bridgescope rules` prints the Prometheus rules the package installs, byte for byte.
+run "$usr/bin/bridgescope" rules >"$tmp/rules.yml" || fail "bridgescope rules exits $?"
+cmp -s "$tmp/rules.yml" "$usr/share/bridgescope/prometheus/bridgescope-rules.yml" \
+    || fail "bridgescope rules prints other rules than the package installs"
+pass "bridgescope rules prints the installed rules"
 
 valid="$fixtures/mqtt_client/ros1-era-params.yaml"
 run "$usr/bin/bridgescope" config validate "$valid" || fail "config validate $valid exits $?"
