@@ -8925,6 +8925,49 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
         <source>; %1 messages not timed (more between two reads than the watch keeps)</source>
         <translation>; %1 Nachrichten nicht zeitlich erfasst (mehr zwischen zwei Lesevorgängen, als die Beobachtung behält)</translation>
     </message>
+    <message>
+        <source>A label on every metric, e.g. site=garage or host=vehicle-3 (default host: this machine&apos;s name); repeat it for more.</source>
+        <translation>Ein Label an jeder Metrik, z. B. site=garage oder host=vehicle-3 (Vorgabe für host: der Name dieses Rechners); für mehr wiederholen.</translation>
+    </message>
+    <message>
+        <source>--label names the metrics: give --metrics HOST:PORT too</source>
+        <translation>--label benennt die Metriken: auch --metrics HOST:PORT angeben</translation>
+    </message>
+    <message>
+        <source>at most %1 --label options</source>
+        <translation>höchstens %1 Optionen --label</translation>
+    </message>
+</context>
+<context>
+    <name>WatchMetrics</name>
+    <message>
+        <source>label &apos;%1&apos; is not NAME=VALUE</source>
+        <translation>Label „%1“ hat nicht die Form NAME=WERT</translation>
+    </message>
+    <message>
+        <source>label name &apos;%1&apos; is not a Prometheus label name (letters, digits and _, not starting with a digit or __, at most 64)</source>
+        <translation>Labelname „%1“ ist kein Prometheus-Labelname (Buchstaben, Ziffern und _, nicht mit einer Ziffer oder __ beginnend, höchstens 64)</translation>
+    </message>
+    <message>
+        <source>label &apos;%1&apos; is one the watch writes itself</source>
+        <translation>Label „%1“ schreibt die Überwachung selbst</translation>
+    </message>
+    <message>
+        <source>label &apos;%1&apos; is one Prometheus sets when it scrapes; name the host with host=</source>
+        <translation>Label „%1“ setzt Prometheus beim Abfragen; den Rechner mit host= benennen</translation>
+    </message>
+    <message>
+        <source>label &apos;%1&apos; has no value (Prometheus drops an empty label)</source>
+        <translation>Label „%1“ hat keinen Wert (Prometheus verwirft ein leeres Label)</translation>
+    </message>
+    <message>
+        <source>label &apos;%1&apos; is longer than %2 bytes</source>
+        <translation>Label „%1“ ist länger als %2 Bytes</translation>
+    </message>
+    <message>
+        <source>at most %1 labels of a watch&apos;s own</source>
+        <translation>höchstens %1 eigene Labels einer Überwachung</translation>
+    </message>
 </context>
 <context>
     <name>WatchRules</name>

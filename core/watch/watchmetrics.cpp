@@ -150,6 +150,9 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
             it = d->links.insert(id, {});
             it->labels = d->labelsOf(def);
             it->stage = Private::stageOf(def);
+            // A link that can have latency serves its histogram at zero from the start: a series
+            // whose first scrape already counts has no rate() over those counts.
+            it->hasLatency = def.stamped || !def.stampPrefix.isEmpty();
         }
         MetricsSnapshot::Link& l = *it;
         const LinkFigures f = monitor.figures(i);

@@ -19,7 +19,8 @@ class MqttTopicTree;
 /// and the ones a lab gives (`--label site=garage`). Per link (labels bridge: its client id, else its
 /// config name; link: "SOURCE → DESTINATION" topic; direction): counters of messages and bytes at
 /// each side, messages lost and stalls; gauges of the rate at each side and the link's state (0 ok,
-/// 1 warning, 2 alert); from the first latency sample a histogram of the latency in seconds (label
+/// 1 warning, 2 alert); a histogram of the latency in seconds, from the start for a stamped link or
+/// one with a stamp prefix, else from its first latency sample (label
 /// stage: the link's stamp prefix, else "bridge"), from the first gap a counter of Header.seq gaps.
 /// Per bridge: bridge_up (1 up, 0 down, absent while unknown). The labels are the same on every
 /// host, so that Prometheus adds a fleet's counters and buckets. update() publishes a snapshot on

@@ -108,6 +108,7 @@ private slots:
         startHost(m_hosts[1], u"edge-1"_s);
         QVERIFY2(m_prometheus.start(
                      u"global:\n  scrape_interval: 1s\n  evaluation_interval: 1s\n"
+                     u"rule_files: ['" BRIDGESCOPE_SOURCE_DIR "/resources/prometheus/bridgescope-rules.yml']\n"
                      u"scrape_configs:\n  - job_name: bridgescope\n    static_configs:\n"
                      u"      - targets: ['127.0.0.1:%1', '127.0.0.1:%2']\n"_s.arg(m_hosts[0].metricsPort)
                          .arg(m_hosts[1].metricsPort)),
@@ -130,6 +131,10 @@ private slots:
         // The link is discovered from its retained type announcement before anything is sent.
         for (const Host& h : m_hosts)
             QTRY_VERIFY2_WITH_TIMEOUT(watchCount(h) == 0, qPrintable(h.name), 15000);
+        // And Prometheus has its 0: a counter's first sample is where its rate starts.
+        QTRY_COMPARE_WITH_TIMEOUT(
+            m_prometheus.value(u"count(bridgescope_link_messages_total{link=\"fleet/stamped\",side=\"destination\"} == 0)"_s),
+            2.0, 15000);
         send(m_hosts[0], kVehicleLatencies, 48);
         send(m_hosts[1], kEdgeLatencies, 72);
         const QString link = u"{link=\"fleet/stamped\",site=\"garage\"}"_s;
@@ -212,6 +217,31 @@ private slots:
             QCOMPARE(m_prometheus.value(u"count(bridgescope_link_state%1)"_s.arg(selector)), 1.0);
         }
         QCOMPARE(m_prometheus.value(u"count(bridgescope_link_state{link=\"fleet/stamped\"})"_s), 2.0);
+    }
+
+    /// The rules that ship (`bridgescope rules`) read the series a real watch serves: each host's
+    /// recorded message rate and p99, and a watch that stops is an alert naming its host.
+    void theShippedRulesReadTheWatches()
+    {
+        for (const Host& h : m_hosts)
+            QTRY_VERIFY2_WITH_TIMEOUT(
+                m_prometheus.value(u"host:bridgescope_link_messages:rate5m{host=\"%1\",side=\"destination\"}"_s.arg(h.name))
+                    > 0,
+                qPrintable(h.name), 15000);
+        const double p99 = m_prometheus.value(
+            u"host_bridge_link:bridgescope_link_latency_seconds:p99_rate5m{host=\"edge-1\",link=\"fleet/stamped\"}"_s);
+        QVERIFY2(p99 > 2.5 && p99 <= 10, qPrintable(QString::number(p99))); // the 6 s backdates: (5, 10]
+        QVERIFY(m_prometheus.query(u"ALERTS{alertname=\"BridgescopeWatchDown\"}"_s).isEmpty());
+        Host& stopped = m_hosts[1];
+        stopped.watch.terminate();
+        QVERIFY(stopped.watch.waitForFinished(10000));
+        // Pending first (its `for:` is 2 minutes): the alert is there and names the stopped host.
+        QTRY_VERIFY_WITH_TIMEOUT(!m_prometheus.query(u"ALERTS{alertname=\"BridgescopeWatchDown\"}"_s).isEmpty(),
+                                 15000);
+        const QJsonArray alerts = m_prometheus.query(u"ALERTS{alertname=\"BridgescopeWatchDown\"}"_s);
+        QCOMPARE(alerts.size(), 1);
+        QCOMPARE(alerts.first().toObject().value(u"metric"_s).toObject().value(u"instance"_s).toString(),
+                 u"127.0.0.1:%1"_s.arg(stopped.metricsPort));
     }
 
     /// --label refuses what would break the fleet's series, before anything starts.
