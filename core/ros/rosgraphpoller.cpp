@@ -13,19 +13,28 @@ public:
     QTimer timer;
     QString uri;
     int timeoutMs = 800;
+    /// The master's last answers: an unchanged graph is neither parsed nor sent again.
+    RosMasterApi::GraphAnswers answers;
+    QString answersUri;
 
     void poll()
     {
         const QString current = uri;
+        if (answersUri != current) {
+            answers = {};
+            answersUri = current;
+        }
         RosMasterApi api(current);
-        const Result<TopicGraph> graph = api.graph(timeoutMs);
+        const Result<std::optional<TopicGraph>> graph = api.graphIfChanged(timeoutMs, &answers);
         const Result<qint64> pid = graph ? api.pid(timeoutMs) : Result<qint64>(graph.error());
-        emit result(graph && pid, graph.valueOr(TopicGraph()), pid.valueOr(-1), pid.error().toString(),
-                    current);
+        const bool changed = graph && graph->has_value();
+        emit result(graph && pid, changed, changed ? **graph : TopicGraph(), pid.valueOr(-1),
+                    pid.error().toString(), current);
     }
 
 signals:
-    void result(bool ok, const TopicGraph& graph, qint64 pid, const QString& error, const QString& uri);
+    void result(bool ok, bool changed, const TopicGraph& graph, qint64 pid, const QString& error,
+                const QString& uri);
 };
 
 RosGraphPoller::RosGraphPoller(QObject* parent)
@@ -80,8 +89,8 @@ void RosGraphPoller::pollNow()
     QMetaObject::invokeMethod(m_worker, [w = m_worker] { w->poll(); });
 }
 
-void RosGraphPoller::onResult(bool ok, const TopicGraph& graph, qint64 pid, const QString& error,
-                              const QString& uri)
+void RosGraphPoller::onResult(bool ok, bool changed, const TopicGraph& graph, qint64 pid,
+                              const QString& error, const QString& uri)
 {
     if (uri != m_uri)
         return; // an answer from the master we left
@@ -113,7 +122,7 @@ void RosGraphPoller::onResult(bool ok, const TopicGraph& graph, qint64 pid, cons
         qCDebug(lcRos) << "master restarted (pid" << pid << ")";
         emit masterRestarted();
     }
-    if (graph != m_graph) {
+    if (changed && graph != m_graph) {
         m_graph = graph;
         emit graphChanged(m_graph);
     }

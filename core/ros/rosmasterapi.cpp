@@ -168,7 +168,15 @@ Result<QVariant> RosMasterApi::decodeResponse(const QByteArray& body)
 
 Result<QVariant> RosMasterApi::call(const QString& method, const QVariantList& params, int timeoutMs) const
 {
-    const Result<QVariantList> triple = answer(method, params, timeoutMs);
+    const Result<QByteArray> body = rawAnswer(method, params, timeoutMs);
+    if (!body)
+        return body.error();
+    return valueOf(method, *body);
+}
+
+Result<QVariant> RosMasterApi::valueOf(const QString& method, const QByteArray& body)
+{
+    const Result<QVariantList> triple = tripleOf(method, body);
     if (!triple)
         return triple.error();
     if ((*triple)[0].toInt() != 1)
@@ -176,8 +184,28 @@ Result<QVariant> RosMasterApi::call(const QString& method, const QVariantList& p
     return (*triple)[2];
 }
 
+Result<QVariantList> RosMasterApi::tripleOf(const QString& method, const QByteArray& body)
+{
+    const Result<QVariant> value = decodeResponse(body);
+    if (!value)
+        return value.error();
+    const QVariantList triple = value->toList();
+    if (triple.size() != 3)
+        return LocatedError {tr("the ROS master's answer to %1 is not [code, status, value]").arg(method)};
+    return triple;
+}
+
 Result<QVariantList> RosMasterApi::answer(const QString& method, const QVariantList& params,
                                           int timeoutMs) const
+{
+    const Result<QByteArray> body = rawAnswer(method, params, timeoutMs);
+    if (!body)
+        return body.error();
+    return tripleOf(method, *body);
+}
+
+Result<QByteArray> RosMasterApi::rawAnswer(const QString& method, const QVariantList& params,
+                                           int timeoutMs) const
 {
     const QUrl url(m_uri);
     if (!url.isValid() || url.host().isEmpty())
@@ -229,28 +257,46 @@ Result<QVariantList> RosMasterApi::answer(const QString& method, const QVariantL
     const QByteArray status = response.left(response.indexOf('\r'));
     if (!status.contains(" 200"))
         return LocatedError {tr("the ROS master at %1 answered %2").arg(m_uri, QString::fromLatin1(status))};
-    const Result<QVariant> value = decodeResponse(response.mid(headerEnd + 4));
-    if (!value)
-        return value.error();
-    const QVariantList triple = value->toList();
-    if (triple.size() != 3)
-        return LocatedError {tr("the ROS master's answer to %1 is not [code, status, value]").arg(method)};
-    return triple;
+    return response.mid(headerEnd + 4);
 }
 
 Result<TopicGraph> RosMasterApi::graph(int timeoutMs) const
 {
+    GraphAnswers none;
+    const Result<std::optional<TopicGraph>> g = graphIfChanged(timeoutMs, &none);
+    if (!g)
+        return g.error();
+    return **g;
+}
+
+Result<std::optional<TopicGraph>> RosMasterApi::graphIfChanged(int timeoutMs, GraphAnswers* previous) const
+{
     const QDeadlineTimer deadline(timeoutMs);
-    const Result<QVariant> state = call(u"getSystemState"_s, {m_callerId}, timeoutMs);
+    Result<QByteArray> stateBody = rawAnswer(u"getSystemState"_s, {m_callerId}, timeoutMs);
+    if (!stateBody)
+        return stateBody.error();
+    Result<QByteArray> typesBody
+        = rawAnswer(u"getTopicTypes"_s, {m_callerId}, int(std::max<qint64>(1, deadline.remainingTime())));
+    if (!typesBody)
+        return typesBody.error();
+    if (*stateBody == previous->state && *typesBody == previous->types && !previous->state.isEmpty())
+        return std::optional<TopicGraph>(); // the same bytes: the same graph, not parsed again
+    const Result<QVariant> state = valueOf(u"getSystemState"_s, *stateBody);
     if (!state)
         return state.error();
-    const Result<QVariant> types
-        = call(u"getTopicTypes"_s, {m_callerId}, int(std::max<qint64>(1, deadline.remainingTime())));
+    const Result<QVariant> types = valueOf(u"getTopicTypes"_s, *typesBody);
     if (!types)
         return types.error();
+    previous->state = std::move(stateBody).value();
+    previous->types = std::move(typesBody).value();
+    return std::optional<TopicGraph>(graphOf(*state, *types));
+}
+
+TopicGraph RosMasterApi::graphOf(const QVariant& state, const QVariant& types)
+{
     QHash<QString, TopicInfo> topics;
     QSet<QString> nodes;
-    const QVariantList lists = state->toList();
+    const QVariantList lists = state.toList();
     for (int which = 0; which < lists.size() && which < 3; ++which) {
         for (const QVariant& entry : lists[which].toList()) {
             const QVariantList pair = entry.toList();
@@ -272,7 +318,7 @@ Result<TopicGraph> RosMasterApi::graph(int timeoutMs) const
     }
     // The master remembers a topic's type after its last node left; only topics with a publisher
     // or subscriber right now are part of the graph.
-    for (const QVariant& entry : types->toList()) {
+    for (const QVariant& entry : types.toList()) {
         const QVariantList pair = entry.toList();
         if (pair.size() != 2)
             continue;

@@ -32,6 +32,17 @@ public:
     /// an error, not memory. A master's getSystemState of 100,000 topics is about 20 MiB.
     static constexpr qsizetype kMaxAnswerBytes = 256 * 1024 * 1024;
     Result<TopicGraph> graph(int timeoutMs) const;
+    /// The master's last answers about the graph, byte for byte.
+    struct GraphAnswers
+    {
+        QByteArray state; ///< getSystemState
+        QByteArray types; ///< getTopicTypes
+    };
+    /// The graph, or nothing when the master answered byte for byte what `*previous` holds (an
+    /// unchanged graph of 10,000 topics is not parsed again); `*previous` then holds the answers.
+    Result<std::optional<TopicGraph>> graphIfChanged(int timeoutMs, GraphAnswers* previous) const;
+    /// The body of the HTTP answer to `method`, not decoded.
+    Result<QByteArray> rawAnswer(const QString& method, const QVariantList& params, int timeoutMs) const;
     Result<qint64> pid(int timeoutMs) const;
 
     /// An XML-RPC request body; a response body parsed into QVariant (arrays become QVariantList).
@@ -41,6 +52,9 @@ public:
     static QString defaultMasterUri();
 
 private:
+    static Result<QVariantList> tripleOf(const QString& method, const QByteArray& body);
+    static Result<QVariant> valueOf(const QString& method, const QByteArray& body);
+    static TopicGraph graphOf(const QVariant& state, const QVariant& types);
     QString m_uri;
     QString m_callerId;
 };

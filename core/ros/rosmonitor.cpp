@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
+#include <atomic>
+
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "latency/headhub.h"
@@ -42,6 +44,7 @@ struct RosMonitor::Private
 
     mutable std::mutex mutex;
     QHash<QString, TopicState> topics;
+    std::atomic<quint64> typesLearned {0};
     QHash<QString, int> wanted; ///< monitor() calls not yet balanced by unmonitor(), per topic
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
@@ -66,6 +69,7 @@ struct RosMonitor::Private
             t.stats.type = QString::fromStdString(msg->getDataType());
             t.stats.md5 = QString::fromStdString(msg->getMD5Sum());
             t.stats.definition = QString::fromStdString(msg->getMessageDefinition());
+            ++typesLearned;
         }
         if (heads.active())
             heads.deliver({SourceGraph::Ros1, topic, now, t.stats.lastSize, bytes.left(SourceHead::kHeadBytes)});
@@ -198,6 +202,11 @@ std::unique_ptr<Tap> RosMonitor::openTap(const QString& topic, std::size_t maxMe
 QHash<QString, TopicFigures> RosMonitor::figures(qint64 nowNs) const
 {
     return topicFiguresOf(snapshot(nowNs));
+}
+
+quint64 RosMonitor::typesLearned() const
+{
+    return d->typesLearned;
 }
 
 QHash<QString, TopicStats> RosMonitor::snapshot(qint64 nowNs) const

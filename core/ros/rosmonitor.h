@@ -36,6 +36,9 @@ public:
     void resubscribeAll();
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, TopicStats> snapshot(qint64 nowNs) const;
+    /// How many times a monitored topic's type became known (its first message): a reader of the
+    /// types takes snapshot() only when this moved.
+    quint64 typesLearned() const;
     QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
     std::unique_ptr<HeadTap> openHeadTap(std::size_t maxHeads) override;
     /// While a tap of a topic is open, the topic is monitored for it (one use, counted with the

@@ -62,6 +62,7 @@ void LinkMonitor::setRules(const WatchRules& rules)
 
 void LinkMonitor::index()
 {
+    ++m_linksVersion;
     m_byId.clear();
     for (int i = 0; i < int(m_tracks.size()); ++i)
         m_byId.insert(m_tracks[std::size_t(i)]->def.id(), i);
@@ -142,6 +143,9 @@ void LinkMonitor::refreshStatistics(qint64 nowNs)
 {
     for (auto& tp : m_tracks) {
         Track& t = *tp;
+        if (t.dormant())
+            continue; // nothing to refresh, and no history yet: a fleet's idle links cost nothing
+        ++m_changes;
         t.refresh(nowNs);
         t.history.push_back({nowNs, t.dst.f.rateHz, t.figures.latencyP99Ms, t.level});
         if (t.history.size() > kHistoryPoints)
@@ -151,14 +155,19 @@ void LinkMonitor::refreshStatistics(qint64 nowNs)
 
 void LinkMonitor::tick(qint64 nowNs)
 {
-    m_sight.update(m_tracks, nowNs);
+    m_changes += quint64(m_sight.update(m_tracks, nowNs));
     const bool refresh = nowNs - m_lastRefreshNs >= kSecond;
     if (refresh) {
         m_lastRefreshNs = nowNs;
         refreshStatistics(nowNs);
     }
-    for (int i = 0; i < int(m_tracks.size()); ++i)
-        evaluate(i, nowNs);
+    // Only links whose verdict can change: a dormant link judged dormant with the same sight is
+    // judged the same (idle work does not grow with a fleet's silent links).
+    for (int i = 0; i < int(m_tracks.size()); ++i) {
+        const Track& t = *m_tracks[std::size_t(i)];
+        if (!(t.judgedDormant && t.dormant() && t.judgedBlindness == t.blindness))
+            evaluate(i, nowNs);
+    }
     for (auto it = m_bridges.all().begin(); it != m_bridges.all().end(); ++it)
         evaluateBridge(it.key(), **it, nowNs);
     if (refresh)
@@ -168,6 +177,8 @@ void LinkMonitor::tick(qint64 nowNs)
 void LinkMonitor::evaluate(int i, qint64 nowNs)
 {
     Track& t = *m_tracks[std::size_t(i)];
+    t.judgedDormant = t.dormant();
+    t.judgedBlindness = t.blindness;
     LinkJudge::Input in;
     in.figures = figures(i);
     in.periodNs = t.src.expectedPeriodNs();
@@ -246,6 +257,7 @@ void LinkMonitor::change(const QString& subject, const LinkDef* link, LinkLevel 
                          const QStringList& reasons, const QString& detail, const LinkFigures& figures,
                          qint64 nowNs, qint64 endNs)
 {
+    ++m_changes;
     if (const auto ended = m_journal.end(subject, endNs > 0 ? endNs : nowNs, figures))
         emit eventEnded(*ended);
     if (level == LinkLevel::Ok)

@@ -50,6 +50,12 @@ public:
     const LinkRuleBook& ruleBook() const { return m_ruleBook; }
 
     int linkCount() const;
+    /// Moves whenever the links are set (their indexes may have changed).
+    quint64 linksVersion() const { return m_linksVersion; }
+    /// Moves whenever a figure, level or sight of a link may have changed: messages read, links set,
+    /// statistics refreshed for a link that has heard something, events, blindness. A reader of every
+    /// link's figures (the metrics) skips a fleet of idle links while it stands still.
+    quint64 activity() const { return m_linksVersion + m_reader.read() + m_changes; }
     const LinkDef& link(int index) const;
     int indexOf(const QString& id) const;
     LinkFigures figures(int index) const;
@@ -111,4 +117,6 @@ private:
     EventJournal m_journal;
     qint64 m_lastRefreshNs = 0;
     WatcherSight m_sight;
+    quint64 m_linksVersion = 0;
+    quint64 m_changes = 0; ///< refreshes of hearing links, level and sight changes
 };

@@ -97,6 +97,7 @@ void LinkReader::applyAnnouncement(LinkTrack& t, const AnnouncedType& type)
 
 void LinkReader::add(const std::vector<SourceHead>& batch)
 {
+    m_read += batch.size();
     for (const SourceHead& a : batch) {
         if (a.graph == SourceGraph::Mqtt)
             addMqttHead(a);
@@ -199,6 +200,7 @@ void LinkReader::indexPipeline()
 
 void LinkReader::addPipelineSample(const std::vector<qint64>& times, qint64 nowNs)
 {
+    ++m_read;
     for (int i : m_pipelineLinks) {
         LinkTrack& t = *m_tracks[std::size_t(i)];
         if (std::size_t(std::max(t.pipelineIn, t.pipelineOut)) >= times.size())

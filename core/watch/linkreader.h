@@ -50,8 +50,11 @@ public:
     /// Messages of the links' topics, from their MessageSources (MQTT, ROS 1, ROS 2): the first
     /// bytes of each are enough for a stamp, a Header.seq and a Float64 latency.
     void add(const std::vector<SourceHead>& batch);
+    /// Messages and pipeline samples read so far (whether they were a link's or not).
+    quint64 read() const { return m_read; }
 
 private:
+    quint64 m_read = 0;
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
     void indexPipeline();

@@ -42,6 +42,14 @@ struct LinkTrack : LinkTraffic
     QString unknown; ///< the judge's sentence while it cannot see a side
 
     bool stamped() const { return announcedStamped.value_or(def.stamped); }
+    /// Nothing has arrived at either end yet: no silence counts and no figure moves, so the judge's
+    /// verdict cannot change while the watcher sees what it saw (see LinkMonitor::tick()).
+    bool dormant() const
+    {
+        return src.f.lastNs == 0 && dst.f.lastNs == 0 && latencySamples == 0 && !stalled && level == LinkLevel::Ok;
+    }
+    bool judgedDormant = false; ///< dormant() when the judge last saw the link
+    LinkBlindness judgedBlindness = LinkBlindness::None; ///< and its blindness then
 
     int pipelineIn = -1; ///< index of PREFIX/in in the pipeline
     int pipelineOut = -1;

@@ -20,6 +20,9 @@ LiveWatch::LiveWatch(Measuring measuring, QObject* parent)
     , m_measure(measuring == Measuring::Yes ? new MeasureSession(LiveParts::measure(m_live), this) : nullptr)
     , m_watch(new WatchSession(watchParts(m_live), this))
 {
+    // The watch shows no topic list: the topics' figures (every topic's rates, O(topics)) are
+    // needed every few seconds at most (the window sets its own), not at every drain.
+    m_live->setFiguresInterval(5000);
     if (m_measure) {
         // pipeline latency for the links; a recorded run lists their events
         m_watch->useMeasurement(m_measure);

@@ -3,8 +3,9 @@
 
 #include "watch/linktrack.h"
 
-void WatcherSight::update(const std::vector<std::unique_ptr<LinkTrack>>& tracks, qint64 nowNs) const
+int WatcherSight::update(const std::vector<std::unique_ptr<LinkTrack>>& tracks, qint64 nowNs) const
 {
+    int changed = 0;
     const auto blind = [this](SourceGraph g) { return m_blind[std::size_t(g)]; };
     for (const auto& tp : tracks) {
         LinkTrack& t = *tp;
@@ -15,10 +16,12 @@ void WatcherSight::update(const std::vector<std::unique_ptr<LinkTrack>>& tracks,
             b = LinkBlindness::Ros2Domain;
         else if (!t.def.rosTopic.isEmpty() && !t.onRos2 && blind(SourceGraph::Ros1))
             b = LinkBlindness::RosMaster;
+        changed += t.blindness != b ? 1 : 0;
         t.blindness = b;
         if (b != LinkBlindness::None && !t.blind)
             t.loseSight();
         else if (b == LinkBlindness::None && t.blind)
             t.regainSight(nowNs);
     }
+    return changed;
 }

@@ -18,7 +18,8 @@ public:
     bool sees(SourceGraph graph) const { return !m_blind[std::size_t(graph)]; }
     /// Each link's blindness at `nowNs`, from the graphs its sides are on: a link that loses sight
     /// forgets its windows, one that regains it counts from `nowNs`.
-    void update(const std::vector<std::unique_ptr<LinkTrack>>& tracks, qint64 nowNs) const;
+    /// Returns how many links' blindness changed.
+    int update(const std::vector<std::unique_ptr<LinkTrack>>& tracks, qint64 nowNs) const;
 
 private:
     bool m_blind[3] = {false, false, false}; ///< by SourceGraph

@@ -16,9 +16,14 @@ using namespace Qt::StringLiterals;
 struct WatchMetrics::Private
 {
     std::unique_ptr<MetricsServer> server;
-    /// Each link's series by link id, kept between updates: counters never go back, and the
-    /// histogram grows by the samples taken since the last update.
-    QHash<QString, MetricsSnapshot::Link> links;
+    /// Each link's series in the monitor's order (and its id), kept between updates: counters never
+    /// go back, and the histogram grows by the samples taken since the last update. Made again
+    /// only when the monitor's links change (LinkMonitor::linksVersion()).
+    std::vector<MetricsSnapshot::Link> links;
+    std::vector<QString> ids;
+    quint64 linksVersion = ~quint64(0);
+    quint64 activity = ~quint64(0); ///< LinkMonitor::activity() at the last update
+    std::shared_ptr<const MetricsSnapshot> published;
     /// The label sets in use: two links whose bridge, topics and direction agree (the same link in two
     /// configs) would be one series twice, and Prometheus refuses a whole scrape for that.
     QSet<QByteArray> labelSets;
@@ -34,6 +39,46 @@ struct WatchMetrics::Private
             labels += ',' + label("config", def.config.toUtf8());
         labelSets.insert(labels);
         return labels;
+    }
+
+    /// Takes the monitor's links: the series of links that stay are kept, new ones start at zero.
+    void follow(const LinkMonitor& monitor)
+    {
+        std::vector<QString> now;
+        now.reserve(std::size_t(monitor.linkCount()));
+        QSet<QString> staying;
+        for (int i = 0; i < monitor.linkCount(); ++i) {
+            now.push_back(monitor.link(i).id());
+            staying.insert(now.back());
+        }
+        QHash<QString, MetricsSnapshot::Link> old;
+        old.reserve(qsizetype(ids.size()));
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            if (staying.contains(ids[i]))
+                old.insert(ids[i], std::move(links[i]));
+            else
+                labelSets.remove(links[i].labels); // free before the new links take theirs
+        }
+        links.clear();
+        links.reserve(now.size());
+        for (int i = 0; i < monitor.linkCount(); ++i) {
+            const LinkDef& def = monitor.link(i);
+            const QString& id = now[std::size_t(i)];
+            if (auto it = old.find(id); it != old.end()) {
+                links.push_back(std::move(*it));
+                old.erase(it);
+            } else {
+                MetricsSnapshot::Link l;
+                l.labels = labelsOf(def);
+                l.stage = stageOf(def);
+                // A link that can have latency serves its histogram at zero from the start: a series
+                // whose first scrape already counts has no rate() over those counts.
+                l.hasLatency = def.stamped || !def.stampPrefix.isEmpty();
+                links.push_back(std::move(l));
+            }
+        }
+        ids = std::move(now);
+        linksVersion = monitor.linksVersion();
     }
 
     static QByteArray stageOf(const LinkDef& def)
@@ -137,24 +182,29 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
     snapshot->ownLabels = d->ownLabels;
     snapshot->version = QByteArrayLiteral(BRIDGESCOPE_VERSION);
     snapshot->droppedAnnouncements = monitor.reader().announcedTypes().dropped();
-    snapshot->links.reserve(std::size_t(monitor.linkCount()));
-    QSet<QString> alive;
-    alive.reserve(monitor.linkCount());
+    // Nothing of any link moved (a fleet of idle links): the last snapshot stands, or lends its
+    // links when only the watch's own figures are new. No figure of every link four times a second.
+    const quint64 activity = monitor.activity();
+    if (activity == d->activity && d->published) {
+        const MetricsSnapshot& last = *d->published;
+        if (last.historyEvicted == snapshot->historyEvicted && last.historyBytes == snapshot->historyBytes
+            && last.untrackedTopicMessages == snapshot->untrackedTopicMessages
+            && last.unwatchedLinks == snapshot->unwatchedLinks
+            && last.droppedAnnouncements == snapshot->droppedAnnouncements)
+            return;
+        snapshot->links = last.links;
+        snapshot->bridges = last.bridges;
+        d->published = snapshot;
+        d->server->publish(std::move(snapshot));
+        return;
+    }
+    d->activity = activity;
+    if (d->linksVersion != monitor.linksVersion())
+        d->follow(monitor);
+    snapshot->links.reserve(d->links.size());
     const auto counter = [](double& series, quint64 total) { series = std::max(series, double(total)); };
-    for (int i = 0; i < monitor.linkCount(); ++i) {
-        const LinkDef& def = monitor.link(i);
-        const QString id = def.id();
-        alive.insert(id);
-        auto it = d->links.find(id);
-        if (it == d->links.end()) {
-            it = d->links.insert(id, {});
-            it->labels = d->labelsOf(def);
-            it->stage = Private::stageOf(def);
-            // A link that can have latency serves its histogram at zero from the start: a series
-            // whose first scrape already counts has no rate() over those counts.
-            it->hasLatency = def.stamped || !def.stampPrefix.isEmpty();
-        }
-        MetricsSnapshot::Link& l = *it;
+    for (int i = 0; i < int(d->links.size()); ++i) {
+        MetricsSnapshot::Link& l = d->links[std::size_t(i)];
         const LinkFigures f = monitor.figures(i);
         counter(l.sourceMessages, f.source.messages);
         counter(l.destinationMessages, f.destination.messages);
@@ -180,15 +230,6 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         }
         snapshot->links.push_back(l);
     }
-    if (alive.size() != d->links.size()) {
-        for (auto it = d->links.begin(); it != d->links.end();)
-            if (alive.contains(it.key())) {
-                ++it;
-            } else {
-                d->labelSets.remove(it->labels);
-                it = d->links.erase(it);
-            }
-    }
     for (const QString& name : monitor.bridges().names()) {
         const LinkMonitor::BridgeState s = monitor.bridges().state(name);
         if (s != LinkMonitor::BridgeState::Unknown)
@@ -196,5 +237,6 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
                 {d->ownLabels + ',' + MetricsExposition::label("bridge", name.toUtf8()),
                  s == LinkMonitor::BridgeState::Up});
     }
+    d->published = snapshot;
     d->server->publish(std::move(snapshot));
 }

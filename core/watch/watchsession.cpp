@@ -135,6 +135,7 @@ void WatchSession::setDiscovering(bool discovering)
 
 void WatchSession::applyLinks()
 {
+    m_rosTypesSeen = -1; // new links read the types known already
     QList<LinkDef> links = m_configLinks;
     for (const QString& topic : std::as_const(m_discovered))
         links << LinkDef::discoveredAt(topic,
@@ -190,10 +191,15 @@ void WatchSession::update(qint64 nowNs)
                 if (!it->type.isEmpty())
                     m_monitor->reader().setRosDefinition(it.key(), it->type, QString());
         }
-        const QHash<QString, TopicStats> stats = m_parts.rosMonitor->snapshot(nowNs);
-        for (auto it = stats.cbegin(); it != stats.cend(); ++it)
-            if (!it->type.isEmpty())
-                m_monitor->reader().setRosDefinition(it.key(), it->type, it->definition);
+        // Every monitored topic's figures only when a type became known (a fleet's idle topics
+        // cost nothing) or the links changed.
+        if (const qint64 learned = qint64(m_parts.rosMonitor->typesLearned()); learned != m_rosTypesSeen) {
+            m_rosTypesSeen = learned;
+            const QHash<QString, TopicStats> stats = m_parts.rosMonitor->snapshot(nowNs);
+            for (auto it = stats.cbegin(); it != stats.cend(); ++it)
+                if (!it->type.isEmpty())
+                    m_monitor->reader().setRosDefinition(it.key(), it->type, it->definition);
+        }
     }
     if (nowNs - m_lastTickNs >= kTickNs) {
         m_lastTickNs = nowNs;

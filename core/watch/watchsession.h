@@ -113,6 +113,8 @@ private:
     std::vector<std::unique_ptr<HeadTap>> m_heads; ///< one per graph
     qint64 m_lastTickNs = 0;
     qint64 m_lastSyncNs = 0;
+    /// RosMonitor::typesLearned() when the reader last took the ROS 1 types (-1: take them again).
+    qint64 m_rosTypesSeen = -1;
     Subscriptions m_monitored; ///< ROS 1 topics subscribed
     Subscriptions m_monitored2; ///< ROS 2 topics subscribed
     Subscriptions m_monitoredMqtt;

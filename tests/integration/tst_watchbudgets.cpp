@@ -35,12 +35,11 @@ constexpr qint64 kScrapeBudget = 2 * 16 * kMiB;
 /// A sample without labels from an exposition; NaN when absent.
 double plainSample(const QByteArray& metrics, const QByteArray& name)
 {
-    const QByteArray key = '\n' + name + ' ';
-    const qsizetype at = metrics.indexOf(key);
-    if (at < 0)
-        return qQNaN();
-    const qsizetype from = at + key.size();
-    return metrics.mid(from, metrics.indexOf('\n', from) - from).toDouble();
+    // The watch's own figures carry only its own labels (host, since issue 44): `NAME{…} VALUE`.
+    for (const QByteArray& line : metrics.split('\n'))
+        if (line.startsWith(QByteArray(name + ' ')) || line.startsWith(QByteArray(name + '{')))
+            return line.mid(line.lastIndexOf(' ') + 1).toDouble();
+    return qQNaN();
 }
 } // namespace
 
