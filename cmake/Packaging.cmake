@@ -107,8 +107,12 @@ install(FILES ${packaging_src}/bridgescope-mime.xml
 install(FILES ${packaging_out}/${BRIDGESCOPE_APP_ID}.metainfo.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo)
 install(FILES ${icon_svg} DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
 install(FILES ${packaging_out}/bridgescope.1.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-# The Prometheus rules for `watch --metrics` (`bridgescope rules` prints the same file).
+# The Prometheus rules for `watch --metrics` (`bridgescope rules` prints the same file), and the
+# example configurations of a fleet (docs/fleet.md): a lab's scrapes, a vehicle's agent, federation.
 install(FILES ${PROJECT_SOURCE_DIR}/resources/prometheus/bridgescope-rules.yml
+              ${PROJECT_SOURCE_DIR}/resources/prometheus/prometheus.yml
+              ${PROJECT_SOURCE_DIR}/resources/prometheus/agent.yml
+              ${PROJECT_SOURCE_DIR}/resources/prometheus/federation.yml
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bridgescope/prometheus)
 # A native package (no Debian revision): its changelog is changelog.gz.
 install(FILES ${packaging_out}/copyright ${packaging_out}/changelog.gz DESTINATION ${BRIDGESCOPE_DOCDIR})

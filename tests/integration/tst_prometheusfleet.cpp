@@ -4,17 +4,11 @@
 // latency histograms of the same link on both hosts add up in Prometheus to what numpy counts on
 // the union of the samples the test sent (tests/scripts/histogram_reference.py), bucket by bucket,
 // and the fleet's percentiles fall in the buckets numpy's do.
-#include "base/wallclock.h"
-#include "mqtt/mqttlink.h"
+#include "fleethost.h"
 #include "prometheusserver.h"
 #include "pythonref.h"
-#include "resulttext.h"
-#include "ros/rosbytes.h"
-#include "testservers.h"
 #include "watch/metricsexposition.h"
-#include "wire/mqttclientwire.h"
 
-#include <geometry_msgs/PointStamped.h>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -25,13 +19,8 @@ using namespace Qt::StringLiterals;
 
 namespace {
 /// One host of the fleet: its servers, its watch and what the test sent there.
-struct Host
+struct Host : FleetHost
 {
-    QString name;
-    TestServers servers;
-    std::unique_ptr<MqttLink> mqtt;
-    QProcess watch;
-    quint16 metricsPort = 0;
     std::vector<double> sent; ///< the latencies (s) the stamps were backdated by
 };
 
@@ -50,56 +39,21 @@ class TestPrometheusFleet : public QObject
     Host m_hosts[2];
     PrometheusServer m_prometheus;
 
-    void startHost(Host& h, const QString& name)
-    {
-        h.name = name;
-        QVERIFY2(h.servers.startMosquitto(), qPrintable(h.servers.errorString()));
-        QVERIFY2(h.servers.startRosMaster(), qPrintable(h.servers.errorString()));
-        QString error;
-        h.mqtt = std::make_unique<MqttLink>(MqttProfile::fromUrl(h.servers.brokerUrl()));
-        QVERIFY2(noted(h.mqtt->connect(5000), &error), qPrintable(error));
-        // As a sending mqtt_client announces a stamped link: its type, retained.
-        const RosMsgTypeInfo point {
-            QString::fromLatin1(ros::message_traits::MD5Sum<geometry_msgs::PointStamped>::value()),
-            QString::fromLatin1(ros::message_traits::DataType<geometry_msgs::PointStamped>::value()),
-            QString::fromLatin1(ros::message_traits::Definition<geometry_msgs::PointStamped>::value()), true};
-        QVERIFY(h.mqtt->publish(u"mqtt_client/ros_msg_type/fleet/stamped"_s,
-                                MqttClientWire::encodeType(point), 0, true));
-        h.metricsPort = TestServers::freePort();
-        h.watch.setProcessEnvironment(h.servers.rosEnvironment());
-        h.watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-        h.watch.setStandardOutputFile(QProcess::nullDevice());
-        h.watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                      {u"watch"_s, u"--broker"_s, h.servers.brokerUrl(), u"--ros-master"_s,
-                       h.servers.rosMasterUri(), u"--metrics"_s, u"127.0.0.1:%1"_s.arg(h.metricsPort),
-                       u"--label"_s, u"host="_s + name, u"--label"_s, u"site=garage"_s, u"--seconds"_s,
-                       u"300"_s});
-        QVERIFY(h.watch.waitForStarted(5000));
-        QVERIFY(TestServers::waitForPort(h.metricsPort, 10000));
-    }
+    void startHost(Host& h, const QString& name) { h.start(name, {u"fleet/stamped"_s}, {u"site=garage"_s}); }
 
     /// Publishes `n` stamped messages on `h`'s broker, backdated by latencies from `from`.
     template<std::size_t N> void send(Host& h, const double (&from)[N], int n)
     {
         for (int i = 0; i < n; ++i) {
             const double latency = from[std::size_t(i * 7) % N];
-            geometry_msgs::PointStamped p;
-            p.header.seq = quint32(i);
-            const qint64 stampNs = wallClockNs() - qint64(latency * 1e9);
-            QVERIFY(h.mqtt->publish(u"fleet/stamped"_s, MqttClientWire::stamped(stampNs, RosBytes::of(p)), 0,
-                                    false));
+            QVERIFY(h.publishStamped(u"fleet/stamped"_s, latency, quint32(i)));
             h.sent.push_back(latency);
             QTest::qWait(10); // 100 messages a second: a paced source, not a flood
         }
     }
 
     /// The watch's own count of latency samples on its link (NaN before the link is discovered).
-    double watchCount(const Host& h) const
-    {
-        return TestServers::metricSample(TestServers::httpGet(h.metricsPort, u"/metrics"_s),
-                                         u"bridgescope_link_messages_total"_s,
-                                         {u"link=\"fleet/stamped\""_s, u"side=\"destination\""_s});
-    }
+    double watchCount(const Host& h) const { return h.watchCount(u"fleet/stamped"_s); }
 
 private slots:
     void initTestCase()
@@ -118,10 +72,8 @@ private slots:
     void cleanupTestCase()
     {
         m_prometheus.stop();
-        for (Host& h : m_hosts) {
-            h.watch.terminate();
-            h.watch.waitForFinished(10000);
-        }
+        for (Host& h : m_hosts)
+            h.stop();
     }
 
     /// Buckets from two watches added by Prometheus equal numpy's counts on the union of the

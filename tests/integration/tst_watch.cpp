@@ -463,7 +463,9 @@ private slots:
         const QString dir = QStringLiteral(BRIDGESCOPE_SOURCE_DIR) + u"/resources/prometheus/"_s;
         for (const QStringList& args :
              {QStringList {u"check"_s, u"rules"_s, dir + u"bridgescope-rules.yml"_s},
-              QStringList {u"check"_s, u"config"_s, dir + u"prometheus.yml"_s}}) {
+              QStringList {u"check"_s, u"config"_s, dir + u"prometheus.yml"_s},
+              QStringList {u"check"_s, u"config"_s, dir + u"agent.yml"_s},
+              QStringList {u"check"_s, u"config"_s, dir + u"federation.yml"_s}}) {
             QProcess promtool;
             promtool.setProcessChannelMode(QProcess::MergedChannels);
             promtool.start(u"/usr/bin/promtool"_s, args);

@@ -54,6 +54,9 @@ files=(
     ./usr/share/doc/bridgescope/copyright
     ./usr/share/doc/bridgescope/changelog.gz
     ./usr/share/bridgescope/prometheus/bridgescope-rules.yml
+    ./usr/share/bridgescope/prometheus/prometheus.yml
+    ./usr/share/bridgescope/prometheus/agent.yml
+    ./usr/share/bridgescope/prometheus/federation.yml
 )
 sizes=(16 32 48 64 128 256)
 for s in "${sizes[@]}"; do
