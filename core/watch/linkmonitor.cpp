@@ -177,6 +177,7 @@ void LinkMonitor::tick(qint64 nowNs)
 void LinkMonitor::evaluate(int i, qint64 nowNs)
 {
     Track& t = *m_tracks[std::size_t(i)];
+    ++m_judgements;
     t.judgedDormant = t.dormant();
     t.judgedBlindness = t.blindness;
     LinkJudge::Input in;

@@ -56,6 +56,8 @@ public:
     /// statistics refreshed for a link that has heard something, events, blindness. A reader of every
     /// link's figures (the metrics) skips a fleet of idle links while it stands still.
     quint64 activity() const { return m_linksVersion + m_reader.read() + m_changes; }
+    /// How many times a link was judged: the bounded idle work (a silent fleet is not judged).
+    quint64 judgements() const { return m_judgements; }
     const LinkDef& link(int index) const;
     int indexOf(const QString& id) const;
     LinkFigures figures(int index) const;
@@ -119,4 +121,5 @@ private:
     WatcherSight m_sight;
     quint64 m_linksVersion = 0;
     quint64 m_changes = 0; ///< refreshes of hearing links, level and sight changes
+    quint64 m_judgements = 0;
 };

@@ -3,6 +3,7 @@
 // (rostopic), monitoring through roscpp, and a master that dies and comes back.
 #include "resulttext.h"
 #include "ros/rosgraphpoller.h"
+#include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
 #include "testservers.h"
 #include "topics/topictablemodel.h"
@@ -69,6 +70,30 @@ private slots:
     {
         QVERIFY2(m_servers.startRosMaster(), qPrintable(m_servers.errorString()));
         m_servers.exportRosEnvironment(); // roscpp in this process (RosMonitor) reads it
+    }
+
+    /// Issue 44: parsing the master's whole graph every second took most of a watch's idle time at
+    /// 10,000 topics. Answers the same byte for byte are not parsed again; a change is.
+    void anUnchangedGraphIsNotParsedAgain()
+    {
+        const RosMasterApi api(m_servers.rosMasterUri());
+        RosMasterApi::GraphAnswers last;
+        QString error;
+        const auto first = noted(api.graphIfChanged(2000, &last), &error);
+        QVERIFY2(first && first->has_value(), qPrintable(error));
+        const auto again = noted(api.graphIfChanged(2000, &last), &error);
+        QVERIFY2(again && !again->has_value(), qPrintable(error));
+        const QVariantList registration {u"/graph_probe"_s, u"/graph/changed"_s, u"std_msgs/String"_s,
+                                         u"http://127.0.0.1:1/"_s};
+        QVERIFY(noted(api.call(u"registerPublisher"_s, registration, 2000), &error));
+        const auto changed = noted(api.graphIfChanged(2000, &last), &error);
+        QVERIFY2(changed && changed->has_value(), qPrintable(error));
+        const QList<TopicInfo>& topics = (*changed)->topics;
+        QVERIFY(std::any_of(topics.cbegin(), topics.cend(),
+                            [](const TopicInfo& t) { return t.name == u"/graph/changed"_s; }));
+        QVERIFY(noted(api.call(u"unregisterPublisher"_s,
+                               {u"/graph_probe"_s, u"/graph/changed"_s, u"http://127.0.0.1:1/"_s}, 2000),
+                      &error));
     }
 
     void topicsTypesAndNodesAppearAndDisappear()

@@ -538,6 +538,43 @@ private slots:
         QCOMPARE(model.index(0, 0).data(LinkModel::LevelRole).toInt(), int(LinkLevel::Ok));
     }
 
+    /// Issue 44: a watch of 10,000 silent links spent most of a core judging them four times a
+    /// second. A link that has heard nothing is judged again only when what it can tell changes:
+    /// its first message, or the watcher's sight; the metrics' activity stands still meanwhile.
+    void silentLinksAreNotJudgedAgain()
+    {
+        LinkMonitor m;
+        QList<LinkDef> links;
+        for (int i = 0; i < 10000; ++i)
+            links << link(Direction::Ros2Mqtt, u"/fleet/t%1"_s.arg(i), u"fleet/t%1"_s.arg(i));
+        m.setLinks(links, kStart);
+        Clock clock {m};
+        clock.advance(50 * kMs);
+        QCOMPARE(m.judgements(), quint64(10000)); // each once
+        const quint64 activity = m.activity();
+        clock.advance(10'000 * kMs);
+        QCOMPARE(m.judgements(), quint64(10000));
+        QCOMPARE(m.activity(), activity);
+        QVERIFY(m.history(0).empty());
+        // One link hears its source: it alone is judged from then on, and its silence counts.
+        m.reader().add({ros(u"/fleet/t7"_s, QByteArray(8, 'x'), clock.now)});
+        clock.advance(50 * kMs);
+        QCOMPARE(m.judgements(), quint64(10001));
+        QVERIFY(m.activity() != activity);
+        clock.advance(10'000 * kMs);
+        QCOMPARE(m.level(7), LinkLevel::Warning); // source_stopped: the judge still runs for it
+        QCOMPARE(m.reasons(7), QStringList {u"source_stopped"_s});
+        QVERIFY(m.judgements() < quint64(10000 + 1 + 201));
+        // The watcher's broker goes away: every link is unknown, each judged once more.
+        const quint64 before = m.judgements();
+        m.sight().setSeeing(SourceGraph::Mqtt, false);
+        clock.advance(50 * kMs);
+        QVERIFY(m.judgements() - before >= 10000);
+        QCOMPARE(m.unknown(4242), u"unknown (broker unreachable)"_s);
+        clock.advance(1000 * kMs);
+        QVERIFY(m.judgements() - before < 10000 + 21 * 2);
+    }
+
     // Regression (issue 33): the Links table showed `10` beside `10.0` and `5.00` beside `25.0`; a
     // column's figures have one precision, whatever their size.
     void aColumnsFiguresHaveOnePrecision()
