@@ -11,6 +11,7 @@
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/viewsetup.h"
+#include "fleet/fleetsource.h"
 #include "widgets/links/fleetview.h"
 #include "widgets/links/ruleseditor.h"
 
@@ -189,6 +190,7 @@ QLayout* LinksPage::createSourceChoice(QWidget* local)
     connect(m_sourceChoice, &QComboBox::currentIndexChanged, this, [this](int index) {
         m_sources->setCurrentIndex(index);
         QSettings().setValue(u"links/source"_s, index == 1 ? u"prometheus"_s : u"watch"_s);
+        m_fleet->source()->setRules(m_watch->monitor()->ruleBook().rules()); // as the local links'
         if (index == 1 && !m_fleet->isRefreshing())
             m_fleet->connectToRemembered();
         else if (index == 0)
@@ -209,6 +211,7 @@ void LinksPage::showFleet(const QString& url)
     m_sourceChoice->setCurrentIndex(1);
     m_sources->setCurrentIndex(1);
     QSettings().setValue(u"links/source"_s, u"prometheus"_s);
+    m_fleet->source()->setRules(m_watch->monitor()->ruleBook().rules());
     m_fleet->connectTo(url);
 }
 
@@ -533,8 +536,10 @@ void LinksPage::chooseConfigs()
 void LinksPage::editRules()
 {
     RulesEditor editor(m_watch->monitor()->ruleBook().rules(), this);
-    if (editor.exec() == QDialog::Accepted && editor.rules())
+    if (editor.exec() == QDialog::Accepted && editor.rules()) {
         m_watch->setRules(*editor.rules());
+        m_fleet->source()->setRules(*editor.rules()); // the fleet's links are held to the same
+    }
 }
 
 void LinksPage::updateSummary()
