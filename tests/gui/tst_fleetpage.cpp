@@ -83,11 +83,12 @@ private slots:
         const QString url = u"http://"_s + m_fleet.prometheus.address();
         page->showFleet(url);
         QCOMPARE(named<QComboBox>(*page, u"linkSource"_s)->currentText(), u"Prometheus server…"_s);
-        FleetView* view = page->fleetView();
+        auto* view = named<FleetView>(*page, u"fleetView"_s);
         QVERIFY(view->isVisible());
-        QTableView* table = view->table();
+        auto* table = named<QTableView>(*view, u"fleetTable"_s);
+        auto* status = named<QLabel>(*view, u"fleetStatus"_s);
         QTRY_COMPARE_WITH_TIMEOUT(table->model()->rowCount(), 2, 20000);
-        QTRY_VERIFY_WITH_TIMEOUT(view->status()->text().startsWith(u"Links: 2 on 2 hosts, 0 not reporting"_s),
+        QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 0 not reporting"_s),
                                  15000);
         QCOMPARE(columnTexts(table, FleetModel::HostColumn), (QStringList {u"edge-1"_s, u"vehicle-1"_s}));
         QCOMPARE(columnTexts(table, FleetModel::LinkColumn),
@@ -96,7 +97,7 @@ private slots:
             QVERIFY2(state != u"unknown"_s, qPrintable(state));
         // The figures: the destination's messages are the watches' (30 each), shown whole.
         const auto allCounted = [view] {
-            const QList<FleetLink>& links = view->model()->snapshot().links;
+            const QList<FleetLink>& links = view->source()->snapshot().links;
             return std::all_of(links.cbegin(), links.cend(),
                                [](const FleetLink& l) { return l.figures.destination.messages == 30; });
         };
@@ -113,7 +114,7 @@ private slots:
 
         // One watch stops: its host is not reporting, its link unknown and why.
         QVERIFY(m_fleet.hosts[1].stopWatch());
-        QTRY_VERIFY_WITH_TIMEOUT(view->status()->text().startsWith(u"Links: 2 on 2 hosts, 1 not reporting"_s),
+        QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 1 not reporting"_s),
                                  30000);
         const QStringList hosts = columnTexts(table, FleetModel::HostColumn);
         const int edge = int(hosts.indexOf(u"edge-1"_s));

@@ -39,10 +39,7 @@ public:
     void stop();
     bool isRefreshing() const;
 
-    FleetModel* model() const { return m_model; }
     FleetSource* source() const { return m_source; }
-    QTableView* table() const { return m_table; }
-    QLabel* status() const { return m_status; }
 
 private:
     QWidget* createBar();

@@ -55,7 +55,6 @@ public:
     /// Shows every host's links from the Prometheus server at `url` (the fleet view) instead of
     /// this window's own watch.
     void showFleet(const QString& url);
-    FleetView* fleetView() const { return m_fleet; }
 
     QTableView* eventView() const { return m_events; }
     LinkModel* linkModel() const { return m_model; }
