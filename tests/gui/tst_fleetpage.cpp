@@ -10,6 +10,7 @@
 #include "mqtt/mqttconnection.h"
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
+#include "viewaudit.h"
 #include "viewhelpers.h"
 #include "watchedfleet.h"
 #include "widgets/links/fleetmodel.h"
@@ -88,8 +89,7 @@ private slots:
         auto* table = named<QTableView>(*view, u"fleetTable"_s);
         auto* status = named<QLabel>(*view, u"fleetStatus"_s);
         QTRY_COMPARE_WITH_TIMEOUT(table->model()->rowCount(), 2, 20000);
-        QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 0 not reporting"_s),
-                                 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 0 not reporting"_s), 15000);
         QCOMPARE(columnTexts(table, FleetModel::HostColumn), (QStringList {u"edge-1"_s, u"vehicle-1"_s}));
         QCOMPARE(columnTexts(table, FleetModel::LinkColumn),
                  (QStringList {u"fleet/stamped"_s, u"fleet/stamped"_s}));
@@ -114,8 +114,7 @@ private slots:
 
         // One watch stops: its host is not reporting, its link unknown and why.
         QVERIFY(m_fleet.hosts[1].stopWatch());
-        QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 1 not reporting"_s),
-                                 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 1 not reporting"_s), 30000);
         const QStringList hosts = columnTexts(table, FleetModel::HostColumn);
         const int edge = int(hosts.indexOf(u"edge-1"_s));
         QVERIFY(edge >= 0);
@@ -127,6 +126,11 @@ private slots:
                     .startsWith(u"host stopped reporting since "_s));
         QCOMPARE(table->model()->index(1 - edge, FleetModel::StateColumn).data().toString() == u"unknown"_s,
                  false);
+        // The reporting host's charts: nothing cut anywhere in the window, figures nor chart texts.
+        table->setCurrentIndex(table->model()->index(1 - edge, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(ViewAudit::elidedFiguresIn(&window).isEmpty(), 5000);
+        QVERIFY2(ViewAudit::elidedChartTexts(&window).isEmpty(),
+                 qPrintable(ViewAudit::elidedChartTexts(&window).join(u'\n')));
         if (const QByteArray png = qgetenv("FLEET_SCREENSHOT"); !png.isEmpty()) {
             table->setCurrentIndex(table->model()->index(1 - edge, 0)); // the charts of the one reporting
             QTest::qWait(1500); // the history's charts
