@@ -3340,6 +3340,10 @@ factors:
         <source>ms</source>
         <translation>ms</translation>
     </message>
+    <message>
+        <source>The password was not kept: %1.</source>
+        <translation>Das Passwort wurde nicht aufbewahrt: %1.</translation>
+    </message>
 </context>
 <context>
     <name>GraphStatus</name>

@@ -86,6 +86,10 @@ FleetView::FleetView(QWidget* parent)
                 if (key == keyringKey(m_url->text(), m_user->text()) && !isRefreshing())
                     connectTo(m_url->text(), m_user->text(), password);
             });
+    connect(m_passwords, &PasswordStore::stored, this, [this](const QString&, bool ok, const QString& error) {
+        if (!ok) // said, never written anywhere else instead
+            m_status->setText(m_status->text() + u' ' + tr("The password was not kept: %1.").arg(error));
+    });
     const QSettings settings;
     m_url->setText(settings.value(kUrlKey).toString());
     m_user->setText(settings.value(kUserKey).toString());
