@@ -3194,6 +3194,158 @@ factors:
     </message>
 </context>
 <context>
+    <name>FleetModel</name>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>alert</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Rechner</translation>
+    </message>
+    <message>
+        <source>Bridge</source>
+        <translation>Bridge</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Source Hz</source>
+        <translation>Quelle Hz</translation>
+    </message>
+    <message>
+        <source>Destination Hz</source>
+        <translation>Ziel Hz</translation>
+    </message>
+    <message>
+        <source>Loss %</source>
+        <translation>Verlust %</translation>
+    </message>
+    <message>
+        <source>p99 ms</source>
+        <translation>p99 ms</translation>
+    </message>
+    <message>
+        <source>Why</source>
+        <translation>Warum</translation>
+    </message>
+</context>
+<context>
+    <name>FleetSnapshotBuilder</name>
+    <message>
+        <source>host stopped reporting</source>
+        <translation>Rechner meldet nicht mehr</translation>
+    </message>
+    <message>
+        <source>host stopped reporting since %1</source>
+        <translation>Rechner meldet seit %1 nicht mehr</translation>
+    </message>
+    <message>
+        <source>unknown (the watch on %1 cannot see both sides)</source>
+        <translation>unbekannt (die Überwachung auf %1 sieht nicht beide Seiten)</translation>
+    </message>
+    <message>
+        <source>the bridge %1 on %2 is down</source>
+        <translation>die Bridge %1 auf %2 ist ausgefallen</translation>
+    </message>
+</context>
+<context>
+    <name>FleetSource</name>
+    <message>
+        <source>cannot read the fleet from %1: %2</source>
+        <translation>die Flotte lässt sich nicht von %1 lesen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>FleetView</name>
+    <message>
+        <source>http://prometheus:9090</source>
+        <translation>http://prometheus:9090</translation>
+    </message>
+    <message>
+        <source>no basic auth</source>
+        <translation>ohne Basic Auth</translation>
+    </message>
+    <message>
+        <source>Kept in the system keyring, never in a file</source>
+        <translation>Im Schlüsselbund des Systems aufbewahrt, nie in einer Datei</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <source>Prometheus &amp;URL:</source>
+        <translation>Prometheus-&amp;URL:</translation>
+    </message>
+    <message>
+        <source>U&amp;ser:</source>
+        <translation>Be&amp;nutzer:</translation>
+    </message>
+    <message>
+        <source>Pass&amp;word:</source>
+        <translation>Pass&amp;wort:</translation>
+    </message>
+    <message>
+        <source>Choose the Prometheus server that scrapes the watches of the fleet.</source>
+        <translation>Den Prometheus-Server wählen, der die Überwachungen der Flotte abfragt.</translation>
+    </message>
+    <message>
+        <source>Destination rate, last %1 minutes</source>
+        <translation>Rate am Ziel, letzte %1 Minuten</translation>
+    </message>
+    <message>
+        <source>Latency p99, last %1 minutes</source>
+        <translation>Latenz p99, letzte %1 Minuten</translation>
+    </message>
+    <message>
+        <source>Reading the fleet from %1…</source>
+        <translation>Lese die Flotte von %1 …</translation>
+    </message>
+    <message>
+        <source>%1 (the links as of %2)</source>
+        <translation>%1 (die Verbindungen mit Stand %2)</translation>
+    </message>
+    <message>
+        <source>Links: %1 on %2 hosts, %3 not reporting, as of %4</source>
+        <translation>Verbindungen: %1 auf %2 Rechnern, %3 melden nicht, Stand %4</translation>
+    </message>
+    <message>
+        <source>; %1 series past the bound, %2 of the wrong form left out</source>
+        <translation>; %1 Reihen über der Grenze, %2 in falscher Form ausgelassen</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>The password was not kept: %1.</source>
+        <translation>Das Passwort wurde nicht aufbewahrt: %1.</translation>
+    </message>
+</context>
+<context>
     <name>GraphStatus</name>
     <message>
         <source>asking the master…</source>
@@ -3481,6 +3633,14 @@ factors:
     <message>
         <source>print the Prometheus rules and alerts for watch --metrics</source>
         <translation>die Prometheus-Regeln und -Alarme für watch --metrics ausgeben</translation>
+    </message>
+    <message>
+        <source>the Links page shows every host&apos;s links from this Prometheus server</source>
+        <translation>die Seite Verbindungen zeigt die Verbindungen aller Rechner von diesem Prometheus-Server</translation>
+    </message>
+    <message>
+        <source>Show every host&apos;s links from this Prometheus server on the Links page.</source>
+        <translation>Die Verbindungen aller Rechner von diesem Prometheus-Server auf der Seite Verbindungen zeigen.</translation>
     </message>
 </context>
 <context>
@@ -4025,6 +4185,22 @@ factors:
     <message>
         <source>, %1 unknown (the watch&apos;s own connection is down)</source>
         <translation>, %1 unbekannt (die eigene Verbindung der Beobachtung ist unterbrochen)</translation>
+    </message>
+    <message>
+        <source>This window&apos;s watch</source>
+        <translation>Überwachung dieses Fensters</translation>
+    </message>
+    <message>
+        <source>Prometheus server…</source>
+        <translation>Prometheus-Server …</translation>
+    </message>
+    <message>
+        <source>Where the links come from: the bridges this window watches itself, or every host&apos;s watch as a Prometheus server has them (nothing subscribed)</source>
+        <translation>Woher die Verbindungen kommen: die Bridges, die dieses Fenster selbst überwacht, oder die Überwachungen aller Rechner, wie ein Prometheus-Server sie hat (nichts abonniert)</translation>
+    </message>
+    <message>
+        <source>&amp;Links from:</source>
+        <translation>&amp;Verbindungen von:</translation>
     </message>
 </context>
 <context>
@@ -6248,6 +6424,72 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
     <message>
         <source>&amp;Problems: %1</source>
         <translation>&amp;Probleme: %1</translation>
+    </message>
+</context>
+<context>
+    <name>PrometheusAnswer</name>
+    <message>
+        <source>not JSON at byte %1 (%2)</source>
+        <translation>kein JSON bei Byte %1 (%2)</translation>
+    </message>
+    <message>
+        <source>not an answer of the Prometheus HTTP API (no object)</source>
+        <translation>keine Antwort der Prometheus-HTTP-API (kein Objekt)</translation>
+    </message>
+    <message>
+        <source>the server refused the query: %1: %2</source>
+        <translation>der Server hat die Abfrage abgelehnt: %1: %2</translation>
+    </message>
+    <message>
+        <source>not an answer of the Prometheus HTTP API (status &quot;%1&quot;)</source>
+        <translation>keine Antwort der Prometheus-HTTP-API (Status „%1“)</translation>
+    </message>
+    <message>
+        <source>not an answer of the Prometheus HTTP API (result type &quot;%1&quot;)</source>
+        <translation>keine Antwort der Prometheus-HTTP-API (Ergebnistyp „%1“)</translation>
+    </message>
+</context>
+<context>
+    <name>PrometheusClient</name>
+    <message>
+        <source>not a URL: %1</source>
+        <translation>keine URL: %1</translation>
+    </message>
+    <message>
+        <source>a Prometheus server is reached over http or https, not %1</source>
+        <translation>ein Prometheus-Server wird über http oder https erreicht, nicht über %1</translation>
+    </message>
+    <message>
+        <source>the URL names no host: %1</source>
+        <translation>die URL nennt keinen Rechner: %1</translation>
+    </message>
+    <message>
+        <source>the URL must not hold a user or password: give them beside it</source>
+        <translation>die URL darf keinen Benutzer und kein Passwort enthalten: diese daneben angeben</translation>
+    </message>
+    <message>
+        <source>the URL is the server&apos;s base, without a query: %1</source>
+        <translation>die URL ist die Basis des Servers, ohne Abfrage: %1</translation>
+    </message>
+    <message>
+        <source>no Prometheus server chosen</source>
+        <translation>kein Prometheus-Server gewählt</translation>
+    </message>
+    <message>
+        <source>the server refused the credentials (HTTP %1)</source>
+        <translation>der Server hat die Zugangsdaten abgelehnt (HTTP %1)</translation>
+    </message>
+    <message>
+        <source>the answer is larger than %1 MiB: refused</source>
+        <translation>die Antwort ist größer als %1 MiB: abgelehnt</translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>keine Antwort innerhalb von %1 s</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
     </message>
 </context>
 <context>

@@ -7,9 +7,11 @@
 #include "app/gui/mainwindow.h"
 #include "base/logging.h"
 #include "demo/demolab.h"
+#include "fleet/prometheusclient.h"
 #include "mqtt/mqttprofile.h"
 #include "widgets/common/theme.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 #include "widgets/measure/measurepage.h"
 
@@ -56,10 +58,13 @@ QString bridgescopeUsage()
         {u"--ros-localhost-only"_s, Gui::tr("ROS 2 discovery on this host only")},
         {u"--screenshot PNG"_s, Gui::tr("render the main window to PNG and exit")},
         {u"--after SECONDS"_s, Gui::tr("wait this long before the screenshot (default 1)")},
-        {u"--remember"_s, Gui::tr("with --screenshot: start from the saved window and save it, as a user's start does")},
+        {u"--remember"_s,
+         Gui::tr("with --screenshot: start from the saved window and save it, as a user's start does")},
         {u"--pipeline PIPE.yaml"_s, Gui::tr("measure with this pipeline")},
         {u"--demo"_s, Gui::tr("start the embedded demo lab and show it")},
         {u"--page PAGE"_s, Gui::tr("open on a page: discover, map, measure, reports, links or experiments")},
+        {u"--prometheus URL"_s,
+         Gui::tr("the Links page shows every host's links from this Prometheus server")},
         {u"--theme THEME"_s, Gui::tr("colours: system (default), light or dark")},
         {u"--verbose"_s, Gui::tr("debug messages of every layer on stderr, also after a command")},
         {u"-h, --help"_s, Gui::tr("show this help")},
@@ -112,6 +117,7 @@ struct GuiRequest
     std::optional<Ros2Options> ros2;
     QString rosChoice; ///< which ROS graphs --ros or the environment chose and why; empty: none did
     QString pipeline;
+    QString prometheus; ///< the fleet view's server (http or https, checked)
     int page = -1;
     bool demo = false;
     QString theme; ///< empty: the one last chosen (or the desktop's)
@@ -144,7 +150,10 @@ int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = t
     const QCommandLineOption demo(u"demo"_s, Gui::tr("Start the embedded demo lab and show it."));
     const QCommandLineOption theme(u"theme"_s, Gui::tr("Colours: system (default), light or dark."),
                                    u"THEME"_s);
-    parser.addOptions({screenshot, after, remember, broker, master, pipeline, page, demo, theme});
+    const QCommandLineOption prometheus(
+        u"prometheus"_s, Gui::tr("Show every host's links from this Prometheus server on the Links page."),
+        u"URL"_s);
+    parser.addOptions({screenshot, after, remember, broker, master, pipeline, page, demo, theme, prometheus});
     RosOptions ros;
     ros.addTo(parser);
     parser.addPositionalArgument(
@@ -179,6 +188,11 @@ int parseGui(const QStringList& arguments, GuiRequest* request, bool notices = t
             CliOutput::err(Gui::tr("--page takes one of: %1").arg(names.join(u", "_s)));
             return ExitUsage;
         }
+    }
+    request->prometheus = parser.value(prometheus);
+    if (const auto url = PrometheusClient::checkUrl(request->prometheus); parser.isSet(prometheus) && !url) {
+        CliOutput::err(url.error().toString());
+        return ExitUsage;
     }
     request->theme = parser.value(theme);
     if (!request->theme.isEmpty() && !Theme::names().contains(request->theme)) {
@@ -252,6 +266,8 @@ bool applyRequest(MainWindow& window, const GuiRequest& request)
         }
         window.pages()->setCurrentWidget(window.measurePage());
     }
+    if (!request.prometheus.isEmpty())
+        window.linksPage()->showFleet(request.prometheus);
     if (request.page >= 0)
         window.pages()->setCurrentIndex(request.page);
     return true;

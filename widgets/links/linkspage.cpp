@@ -1,20 +1,24 @@
 // SPDX-License-Identifier: MIT
 #include "linkspage.h"
 
-#include "yaml/yamlreader.h"
 #include "config/configreader.h"
-#include "widgets/links/linkmodel.h"
+#include "fleet/fleetsource.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
+#include "widgets/common/figuresortproxy.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/common/viewsetup.h"
+#include "widgets/links/fleetview.h"
+#include "widgets/links/linkmodel.h"
 #include "widgets/links/ruleseditor.h"
+#include "yaml/yamlreader.h"
 
 #include <algorithm>
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -24,8 +28,10 @@
 #include <QLineEdit>
 #include <QPainter>
 #include <QPushButton>
+#include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStyledItemDelegate>
 #include <QSystemTrayIcon>
 #include <QTableView>
@@ -104,25 +110,6 @@ public:
     }
 };
 
-/// Sorts figures by their numbers, everything else by its text.
-class LinkSortProxy : public QSortFilterProxyModel
-{
-public:
-    using QSortFilterProxyModel::QSortFilterProxyModel;
-
-protected:
-    bool lessThan(const QModelIndex& a, const QModelIndex& b) const override
-    {
-        const QVariant va = a.data(LinkModel::ValueRole);
-        const QVariant vb = b.data(LinkModel::ValueRole);
-        if (va.typeId() == QMetaType::Double || va.typeId() == QMetaType::Int) {
-            const double x = va.toDouble();
-            const double y = vb.toDouble();
-            return (std::isnan(x) ? -1 : x) < (std::isnan(y) ? -1 : y);
-        }
-        return QSortFilterProxyModel::lessThan(a, b);
-    }
-};
 } // namespace
 
 LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
@@ -130,7 +117,7 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     , m_watch(watch)
     , m_model(new LinkModel(watch->monitor(), this))
     , m_eventModel(new EventLogModel(watch->monitor(), this))
-    , m_proxy(new LinkSortProxy(this))
+    , m_proxy(new FigureSortProxy(LinkModel::ValueRole, this))
 {
     setObjectName(u"linksPage"_s);
     m_eventModel->setObjectName(u"eventModel"_s);
@@ -153,10 +140,15 @@ LinksPage::LinksPage(WatchSession* watch, QWidget* parent)
     split->addWidget(bottom);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
+    auto* local = new QWidget(this);
+    auto* localLayout = new QVBoxLayout(local);
+    localLayout->setContentsMargins(0, 0, 0, 0);
+    localLayout->addLayout(bar);
+    localLayout->addWidget(split, 1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 0);
-    layout->addLayout(bar);
-    layout->addWidget(split, 1);
+    layout->addLayout(createSourceChoice(local));
+    layout->addWidget(m_sources, 1);
 
     LinkMonitor* monitor = watch->monitor();
     connect(monitor, &LinkMonitor::refreshed, this, [this] {
@@ -179,6 +171,48 @@ void LinksPage::showEvent(QShowEvent* event)
     QWidget::showEvent(event);
     updateSummary();
     showDetail();
+}
+
+QLayout* LinksPage::createSourceChoice(QWidget* local)
+{
+    m_fleet = new FleetView(this);
+    m_sources = new QStackedWidget(this);
+    m_sources->addWidget(local);
+    m_sources->addWidget(m_fleet);
+    m_sourceChoice = new QComboBox(this);
+    m_sourceChoice->setObjectName(u"linkSource"_s);
+    m_sourceChoice->addItem(tr("This window's watch"));
+    m_sourceChoice->addItem(tr("Prometheus server…"));
+    m_sourceChoice->setToolTip(tr("Where the links come from: the bridges this window watches itself, or "
+                                  "every host's watch as a Prometheus server has them (nothing subscribed)"));
+    auto* label = new QLabel(tr("&Links from:"), this);
+    label->setBuddy(m_sourceChoice);
+    connect(m_sourceChoice, &QComboBox::currentIndexChanged, this, [this](int index) {
+        m_sources->setCurrentIndex(index);
+        QSettings().setValue(u"links/source"_s, index == 1 ? u"prometheus"_s : u"watch"_s);
+        m_fleet->source()->setRules(m_watch->monitor()->ruleBook().rules()); // as the local links'
+        if (index == 1 && !m_fleet->isRefreshing())
+            m_fleet->connectToRemembered();
+        else if (index == 0)
+            m_fleet->stop();
+    });
+    if (QSettings().value(u"links/source"_s).toString() == "prometheus"_L1)
+        m_sourceChoice->setCurrentIndex(1);
+    auto* row = new QHBoxLayout;
+    row->addWidget(label);
+    row->addWidget(m_sourceChoice);
+    row->addStretch(1);
+    return row;
+}
+
+void LinksPage::showFleet(const QString& url)
+{
+    const QSignalBlocker quiet(m_sourceChoice);
+    m_sourceChoice->setCurrentIndex(1);
+    m_sources->setCurrentIndex(1);
+    QSettings().setValue(u"links/source"_s, u"prometheus"_s);
+    m_fleet->source()->setRules(m_watch->monitor()->ruleBook().rules());
+    m_fleet->connectTo(url);
 }
 
 QLayout* LinksPage::createBar()
@@ -502,8 +536,10 @@ void LinksPage::chooseConfigs()
 void LinksPage::editRules()
 {
     RulesEditor editor(m_watch->monitor()->ruleBook().rules(), this);
-    if (editor.exec() == QDialog::Accepted && editor.rules())
+    if (editor.exec() == QDialog::Accepted && editor.rules()) {
         m_watch->setRules(*editor.rules());
+        m_fleet->source()->setRules(*editor.rules()); // the fleet's links are held to the same
+    }
 }
 
 void LinksPage::updateSummary()

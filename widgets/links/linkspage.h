@@ -8,6 +8,9 @@
 #include <QWidget>
 
 class EventLogModel;
+class FleetView;
+class QComboBox;
+class QStackedWidget;
 class LinkModel;
 class LiveText;
 class QLabel;
@@ -49,6 +52,10 @@ public:
     /// The config in `file` is watched as soon as it is listed (the demo lab's own configs).
     void watchWhenListed(const QString& file);
 
+    /// Shows every host's links from the Prometheus server at `url` (the fleet view) instead of
+    /// this window's own watch.
+    void showFleet(const QString& url);
+
     QTableView* eventView() const { return m_events; }
     LinkModel* linkModel() const { return m_model; }
     int notificationsShown() const { return m_notified; }
@@ -57,6 +64,8 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// "Links from: this window's watch | Prometheus server…" over the two views.
+    QLayout* createSourceChoice(QWidget* local);
     QLayout* createBar();
     QWidget* createLinkTable();
     QWidget* createDetailPane();
@@ -86,6 +95,9 @@ private:
     RateChart* m_rateChart = nullptr;
     RateChart* m_latencyChart = nullptr;
     QSystemTrayIcon* m_tray = nullptr;
+    QComboBox* m_sourceChoice = nullptr;
+    QStackedWidget* m_sources = nullptr;
+    FleetView* m_fleet = nullptr;
     /// A config listed: open on the Map page or added here, watched or not.
     struct Listed
     {

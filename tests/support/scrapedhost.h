@@ -18,7 +18,7 @@
 /// `bridgescope watch --metrics` labelled host=NAME, whose links the test announces on the broker
 /// as a sending mqtt_client does and feeds with stamped messages. Uses QVERIFY: after start(),
 /// check QTest::currentTestFailed().
-struct FleetHost
+struct ScrapedHost
 {
     QString name;
     TestServers servers;

@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: MIT
+#include "fleetsnapshot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <QDateTime>
+#include <tuple>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kSecondNs = 1'000'000'000LL;
+/// The window of the watch's bridgescope_link_rate_hz.
+constexpr qint64 kRateWindowNs = 5 * kSecondNs;
+/// The window of the increase() queries.
+constexpr qint64 kRecentWindowNs = 60 * kSecondNs;
+
+QString linkKey(const PrometheusAnswer::Series& s)
+{
+    return s.label(u"host"_s) + u'|' + s.label(u"bridge"_s) + u'|' + s.label(u"link"_s) + u'|'
+        + s.label(u"direction"_s);
+}
+
+double valueOf(const PrometheusAnswer::Series& s)
+{
+    return s.points.isEmpty() ? qQNaN() : s.points.constLast().value;
+}
+
+/// A finite, non-negative count (what a hostile server sends otherwise counts as nothing).
+double count(double v)
+{
+    return std::isfinite(v) && v > 0 ? v : 0;
+}
+
+/// The figures of every link a query names, by key and side.
+struct Figures
+{
+    double sourceRate = 0, destinationRate = 0;
+    double sourceMessages = 0, destinationMessages = 0;
+    double sourceBytes = 0, destinationBytes = 0;
+    double sourceRecent = 0, destinationRecent = 0;
+    double lost = 0, recentLost = 0, stalls = 0;
+    double p50 = qQNaN(), p99 = qQNaN();
+    int state = -1;
+    bool seen = true;
+};
+
+/// A quantile in ms, NaN unless a finite non-negative number.
+double latencyMs(double v)
+{
+    return std::isfinite(v) && v >= 0 ? v : qQNaN();
+}
+
+/// A count as the figures keep it.
+quint64 whole(double v)
+{
+    return quint64(std::min(v, 1.8e19));
+}
+
+using Setter = void (*)(Figures&, bool source, double value);
+
+void collect(const QHash<QString, PrometheusAnswer>& answers, const QString& name,
+             QHash<QString, Figures>* figures, Setter set)
+{
+    const PrometheusAnswer answer = answers.value(name);
+    for (const PrometheusAnswer::Series& s : answer.series) {
+        const auto it = figures->find(linkKey(s));
+        if (it != figures->end())
+            set(*it, s.label(u"side"_s) != "destination"_L1, valueOf(s));
+    }
+}
+
+/// The side's silence as far as Prometheus tells: none while the watch's 5-second rate is above
+/// zero, at most a period when it counted messages over the last minute, else the whole minute.
+qint64 silenceNs(double rate, double recent, double total, qint64 periodNs)
+{
+    if (rate > 0)
+        return 0;
+    if (recent > 0)
+        return std::min(kRateWindowNs, std::max(periodNs, kSecondNs / 2));
+    return total > 0 ? kRecentWindowNs : -1;
+}
+
+LinkJudge::Verdict judge(const LinkRules& rules, const FleetLink& link, const Figures& f)
+{
+    LinkJudge::Input in;
+    in.figures = link.figures;
+    const double sourceHz = f.sourceRate > 0 ? f.sourceRate : f.sourceRecent / 60.0;
+    in.periodNs = sourceHz > 0 ? qint64(1e9 / sourceHz) : 0;
+    in.sourceSilenceNs = silenceNs(f.sourceRate, f.sourceRecent, f.sourceMessages, in.periodNs);
+    in.destinationSilenceNs
+        = silenceNs(f.destinationRate, f.destinationRecent, f.destinationMessages, in.periodNs);
+    if (in.destinationSilenceNs < 0)
+        in.destinationSilenceNs = in.sourceSilenceNs >= 0 ? kRecentWindowNs : 0;
+    in.settled = f.sourceRecent > 0;
+    return LinkJudge::judge(rules, link.def, in);
+}
+/// The hosts: reporting now, seen within the hour, or seen by an earlier refresh (`hostsSeen`, updated).
+QHash<QString, FleetHost> hostsOf(const QHash<QString, PrometheusAnswer>& answers, double now,
+                                  QHash<QString, double>* hostsSeen)
+{
+    QHash<QString, FleetHost> hosts;
+    for (const PrometheusAnswer::Series& s : answers.value(u"lastSeen"_s).series) {
+        const QString name = s.label(u"host"_s);
+        const double t = valueOf(s);
+        if (!name.isEmpty())
+            hosts[name] = FleetHost {name, {}, false, std::isfinite(t) ? t : 0};
+    }
+    for (auto it = hostsSeen->cbegin(); it != hostsSeen->cend(); ++it) {
+        FleetHost& h = hosts[it.key()];
+        h.name = it.key();
+        h.lastSeen = std::max(h.lastSeen, it.value());
+    }
+    for (const PrometheusAnswer::Series& s : answers.value(u"info"_s).series) {
+        const QString name = s.label(u"host"_s);
+        if (name.isEmpty())
+            continue;
+        FleetHost& h = hosts[name];
+        h.name = name;
+        h.version = s.label(u"version"_s);
+        h.reporting = true;
+        h.lastSeen = now;
+    }
+    for (const FleetHost& h : std::as_const(hosts))
+        hostsSeen->insert(h.name, h.lastSeen);
+
+    return hosts;
+}
+
+/// The links: every link of a reporting host that its watch serves now; a silent host's last ones.
+QHash<QString, FleetLink> linksOf(const QHash<QString, PrometheusAnswer>& answers,
+                                  QHash<QString, FleetHost>& hosts, double now)
+{
+    QHash<QString, bool> current;
+    for (const PrometheusAnswer::Series& s : answers.value(u"state"_s).series)
+        current.insert(linkKey(s), true);
+    QHash<QString, FleetLink> links;
+    for (const PrometheusAnswer::Series& s : answers.value(u"links"_s).series) {
+        FleetLink l;
+        l.host = s.label(u"host"_s);
+        l.bridge = s.label(u"bridge"_s);
+        l.link = s.label(u"link"_s);
+        l.direction = s.label(u"direction"_s);
+        if (l.host.isEmpty() || l.link.isEmpty())
+            continue;
+        auto h = hosts.find(l.host);
+        if (h == hosts.end()) {
+            // Links of a host whose info was never seen: taken as reporting while they are served.
+            h = hosts.insert(l.host, FleetHost {l.host, {}, current.contains(l.key()), now});
+        }
+        l.hostReporting = h->reporting;
+        if (l.hostReporting && !current.contains(l.key()))
+            continue; // the watch no longer watches it
+        l.def = FleetSnapshotBuilder::linkDef(l.bridge, l.link, l.direction);
+        links.insert(l.key(), l);
+    }
+
+    return links;
+}
+
+/// The figures of `links` from the answers.
+QHash<QString, Figures> figuresOf(const QHash<QString, PrometheusAnswer>& answers,
+                                  const QHash<QString, FleetLink>& links)
+{
+    QHash<QString, Figures> figures;
+    for (auto it = links.cbegin(); it != links.cend(); ++it)
+        figures.insert(it.key(), Figures {});
+    collect(answers, u"state"_s, &figures,
+            [](Figures& f, bool, double v) { f.state = std::isfinite(v) && v >= 0 && v <= 2 ? int(v) : -1; });
+    collect(answers, u"seen"_s, &figures, [](Figures& f, bool, double v) { f.seen = !(v == 0); });
+    collect(answers, u"rate"_s, &figures, [](Figures& f, bool source, double v) {
+        (source ? f.sourceRate : f.destinationRate) = count(v);
+    });
+    collect(answers, u"messages"_s, &figures, [](Figures& f, bool source, double v) {
+        (source ? f.sourceMessages : f.destinationMessages) = count(v);
+    });
+    collect(answers, u"bytes"_s, &figures, [](Figures& f, bool source, double v) {
+        (source ? f.sourceBytes : f.destinationBytes) = count(v);
+    });
+    collect(answers, u"recent"_s, &figures, [](Figures& f, bool source, double v) {
+        (source ? f.sourceRecent : f.destinationRecent) = count(v);
+    });
+    collect(answers, u"lost"_s, &figures, [](Figures& f, bool, double v) { f.lost = count(v); });
+    collect(answers, u"recentLost"_s, &figures, [](Figures& f, bool, double v) { f.recentLost = count(v); });
+    collect(answers, u"stalls"_s, &figures, [](Figures& f, bool, double v) { f.stalls = count(v); });
+    collect(answers, u"p50"_s, &figures, [](Figures& f, bool, double v) { f.p50 = latencyMs(v); });
+    collect(answers, u"p99"_s, &figures, [](Figures& f, bool, double v) { f.p99 = latencyMs(v); });
+    return figures;
+}
+
+} // namespace
+
+QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
+{
+    const QString quantile = u"1000 * histogram_quantile(%1, sum by (host, bridge, link, direction, le) "
+                             "(rate(bridgescope_link_latency_seconds_bucket[1m])))"_s;
+    return {
+        {u"links"_s, u"last_over_time(bridgescope_link_state[1h])"_s},
+        {u"state"_s, u"bridgescope_link_state"_s},
+        {u"seen"_s, u"bridgescope_link_seen"_s},
+        {u"rate"_s, u"bridgescope_link_rate_hz"_s},
+        {u"messages"_s, u"bridgescope_link_messages_total"_s},
+        {u"bytes"_s, u"bridgescope_link_bytes_total"_s},
+        {u"lost"_s, u"bridgescope_link_lost_total"_s},
+        {u"stalls"_s, u"bridgescope_link_stalls_total"_s},
+        {u"recent"_s, u"increase(bridgescope_link_messages_total[1m])"_s},
+        {u"recentLost"_s, u"increase(bridgescope_link_lost_total[1m])"_s},
+        {u"p50"_s, quantile.arg(u"0.5"_s)},
+        {u"p99"_s, quantile.arg(u"0.99"_s)},
+        {u"bridges"_s, u"bridgescope_bridge_up"_s},
+        {u"info"_s, u"bridgescope_watch_info"_s},
+        {u"lastSeen"_s, u"max by (host) (max_over_time(timestamp(bridgescope_watch_info)[1h:15s]))"_s},
+    };
+}
+
+LinkDef FleetSnapshotBuilder::linkDef(const QString& bridge, const QString& link, const QString& direction)
+{
+    LinkDef d;
+    d.config = bridge;
+    d.client = bridge;
+    d.direction = direction == "mqtt2ros"_L1 ? Direction::Mqtt2Ros : Direction::Ros2Mqtt;
+    const qsizetype arrow = link.indexOf(u" → "_s);
+    if (arrow < 0) {
+        d.mqttTopic = link; // a discovered link: only its MQTT topic is known
+        d.discovered = true;
+        return d;
+    }
+    const QString source = link.left(arrow);
+    const QString destination = link.mid(arrow + 3);
+    d.rosTopic = d.direction == Direction::Ros2Mqtt ? source : destination;
+    d.mqttTopic = d.direction == Direction::Ros2Mqtt ? destination : source;
+    return d;
+}
+
+QString FleetSnapshotBuilder::stoppedText(double lastSeen)
+{
+    if (!(lastSeen > 0))
+        return tr("host stopped reporting");
+    return tr("host stopped reporting since %1")
+        .arg(QDateTime::fromMSecsSinceEpoch(qint64(lastSeen * 1000)).toString(u"HH:mm"_s));
+}
+
+FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>& answers,
+                                          const WatchRules& rules, double now,
+                                          QHash<QString, double>* hostsSeen)
+{
+    FleetSnapshot snap;
+    snap.time = now;
+    for (const PrometheusAnswer& a : answers) {
+        snap.droppedSeries += a.droppedSeries;
+        snap.badSamples += a.badSamples;
+        for (const QString& w : a.warnings)
+            if (!snap.warnings.contains(w))
+                snap.warnings << w;
+    }
+
+    QHash<QString, FleetHost> hosts = hostsOf(answers, now, hostsSeen);
+    QHash<QString, FleetLink> links = linksOf(answers, hosts, now);
+    QHash<QString, Figures> figures = figuresOf(answers, links);
+    QHash<QString, bool> bridgeDown;
+    for (const PrometheusAnswer::Series& s : answers.value(u"bridges"_s).series)
+        if (valueOf(s) == 0)
+            bridgeDown.insert(s.label(u"host"_s) + u'|' + s.label(u"bridge"_s), true);
+
+    for (FleetLink& l : links) {
+        const Figures& f = figures[l.key()];
+        LinkFigures& lf = l.figures;
+        lf.source.rateHz = f.sourceRate;
+        lf.destination.rateHz = f.destinationRate;
+        lf.source.messages = whole(f.sourceMessages);
+        lf.destination.messages = whole(f.destinationMessages);
+        lf.source.bytes = whole(f.sourceBytes);
+        lf.destination.bytes = whole(f.destinationBytes);
+        lf.lost = whole(f.lost);
+        lf.stalls = whole(f.stalls);
+        lf.lossPercent = f.sourceRecent > 0 ? std::min(100.0, 100.0 * f.recentLost / f.sourceRecent) : 0;
+        lf.latencyP50Ms = f.p50;
+        lf.latencyP99Ms = f.p99;
+        if (std::isfinite(f.p99))
+            lf.latencySource = LatencySource::Stamps;
+        l.reportedState = f.state;
+        if (!l.hostReporting) {
+            l.verdict.unknown = true;
+            l.verdict.detail = stoppedText(hosts.value(l.host).lastSeen);
+            continue;
+        }
+        if (!f.seen) {
+            l.verdict.unknown = true;
+            l.verdict.detail = tr("unknown (the watch on %1 cannot see both sides)").arg(l.host);
+            continue;
+        }
+        l.verdict = judge(rules.forLink(l.def.key()), l, f);
+        if (bridgeDown.contains(l.host + u'|' + l.bridge)) {
+            l.bridgeDown = true;
+            l.verdict.level = LinkLevel::Alert;
+            l.verdict.reasons.prepend(LinkReason::BridgeDown);
+            l.verdict.detail = tr("the bridge %1 on %2 is down").arg(l.bridge, l.host);
+        }
+    }
+
+    snap.links = links.values();
+    std::sort(snap.links.begin(), snap.links.end(), [](const FleetLink& a, const FleetLink& b) {
+        return std::tie(a.host, a.bridge, a.link, a.direction)
+            < std::tie(b.host, b.bridge, b.link, b.direction);
+    });
+    snap.hosts = hosts.values();
+    std::sort(snap.hosts.begin(), snap.hosts.end(),
+              [](const FleetHost& a, const FleetHost& b) { return a.name < b.name; });
+    return snap;
+}

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QCoreApplication>
+#include <QHash>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+/// What one answer of Prometheus's HTTP API (/api/v1/query, /api/v1/query_range) said, as far as
+/// the fleet view reads it: a vector or a matrix of series, each its labels and its samples.
+///
+/// The bytes come from a server on the network and are hostile: read() is bounded (at most
+/// kMaxSeries series and kMaxPoints points in all, the rest counted in `droppedSeries` /
+/// `droppedPoints`), and what does not have the expected form (wrong types, values that are not
+/// numbers, missing fields) is counted in `badSamples`, never a crash. An answer that is not a
+/// success at all is an error with the server's own words.
+struct PrometheusAnswer
+{
+    Q_DECLARE_TR_FUNCTIONS(PrometheusAnswer)
+public:
+    static constexpr qsizetype kMaxSeries = 20000; ///< series taken from one answer
+    static constexpr qsizetype kMaxPoints = 2'000'000; ///< samples taken from one answer, in all
+    static constexpr qsizetype kMaxLabels = 64; ///< labels of one series (the rest dropped)
+    static constexpr qsizetype kMaxTextChars = 4096; ///< one label name or value, the error text
+
+    struct Point
+    {
+        double time = 0; ///< seconds since the epoch
+        double value = 0; ///< may be NaN or ±Inf (Prometheus writes them as "NaN", "+Inf")
+    };
+    struct Series
+    {
+        QHash<QString, QString> labels;
+        QList<Point> points; ///< one for a vector, in time order for a matrix
+        QString label(const QString& name) const { return labels.value(name); }
+    };
+
+    QList<Series> series;
+    qsizetype droppedSeries = 0; ///< past kMaxSeries
+    qsizetype droppedPoints = 0; ///< past kMaxPoints
+    qsizetype badSamples = 0; ///< series or samples of the wrong form, skipped
+    QString error; ///< empty on success: "bad_data: …", "not JSON at byte 12", …
+    QStringList warnings; ///< the server's own warnings, at most a few
+
+    bool ok() const { return error.isEmpty(); }
+    /// Reads an answer's bytes (already bounded in size by the client).
+    static PrometheusAnswer read(const QByteArray& json);
+    /// A sample value as Prometheus writes it: a JSON string of a float ("1.5", "NaN", "+Inf").
+    /// Anything else is not a value (false).
+    static bool readValue(const QString& text, double* out);
+};

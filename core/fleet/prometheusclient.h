@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "base/result.h"
+#include "fleet/prometheusanswer.h"
+
+#include <functional>
+#include <map>
+#include <QByteArray>
+#include <QObject>
+#include <QUrl>
+
+class QNetworkAccessManager;
+class QNetworkReply;
+
+/// A client of Prometheus's HTTP API (/api/v1/query, /api/v1/query_range) on Qt's event loop:
+/// every call returns at once and its answer comes later, so a window's thread never waits on the
+/// network. Each answer is bounded before it is parsed: at most kMaxAnswerBytes (the reply is
+/// aborted past them), at most kTimeoutMs from the request to the last byte, then
+/// PrometheusAnswer::read's bounds. The password of basic auth is only held in memory and only
+/// sent in the Authorization header; it is never logged or shown.
+class PrometheusClient : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr qint64 kMaxAnswerBytes = 32 * 1024 * 1024;
+    static constexpr int kTimeoutMs = 10'000;
+
+    explicit PrometheusClient(QObject* parent = nullptr);
+    ~PrometheusClient() override;
+
+    /// The server's base URL (http or https, no user or password in it): "http://host:9090" or a
+    /// path prefix behind a proxy ("https://host/prometheus"). Other schemes are refused.
+    static Result<QUrl> checkUrl(const QString& text);
+    /// Where the queries go; aborts what is in flight (their callbacks get an error).
+    void setServer(const QUrl& base, const QString& user = {}, const QString& password = {});
+    QUrl server() const { return m_base; }
+    /// The answer bound, for tests (default kMaxAnswerBytes).
+    void setMaxAnswerBytes(qint64 bytes) { m_maxBytes = bytes; }
+    void setTimeoutMs(int ms) { m_timeoutMs = ms; }
+
+    using Callback = std::function<void(const PrometheusAnswer&)>;
+    /// An instant query at now (or at `time`, seconds since the epoch, when > 0).
+    void query(const QString& promql, Callback done, double time = 0);
+    /// A range query from `start` to `end` (seconds since the epoch) every `stepSeconds`.
+    void queryRange(const QString& promql, double start, double end, double stepSeconds, Callback done);
+    /// Aborts every request in flight; their callbacks get "aborted".
+    void abortAll();
+    int inFlight() const { return int(m_replies.size()); }
+    /// Answers refused so far: too big, too slow, unreachable, not the API's form.
+    quint64 failures() const { return m_failures; }
+
+    /// `"value"` escaped for a PromQL string literal (backslash, quote, newline).
+    static QString quoted(const QString& value);
+
+private:
+    void send(const QString& path, const QList<std::pair<QString, QString>>& params, Callback done);
+    /// Reads what `reply` has into its pending body; false (the reply finished with an error)
+    /// past the bound, or when it is no longer pending.
+    bool take(QNetworkReply* reply);
+    QString timedOut() const;
+    /// `body` by value: the pending entry it may come from is erased here.
+    void finish(QNetworkReply* reply, QByteArray body, const QString& error);
+
+    QNetworkAccessManager* m_network = nullptr;
+    QUrl m_base;
+    QByteArray m_authorization;
+    qint64 m_maxBytes = kMaxAnswerBytes;
+    int m_timeoutMs = kTimeoutMs;
+    quint64 m_failures = 0;
+    struct Pending
+    {
+        Callback done;
+        QByteArray body;
+    };
+    std::map<QNetworkReply*, Pending> m_replies;
+};

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Fuzz target for the answers of Prometheus's HTTP API the fleet view parses (PrometheusAnswer::read):
+// the bytes of a server on the network, already bounded in size by PrometheusClient.
+//
+// Input: an answer's body. Properties: no crash; a refusal says why and keeps no series; at most
+// kMaxSeries series, kMaxPoints points and kMaxLabels labels a series, each label within its bound;
+// every time a finite number; the counts of what was dropped or skipped never negative.
+#include "fleet/prometheusanswer.h"
+#include "fuzzcheck.h"
+
+#include <cmath>
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    const PrometheusAnswer a = PrometheusAnswer::read(fuzz::bytes(data, size));
+    FUZZ_CHECK(a.droppedSeries >= 0 && a.droppedPoints >= 0 && a.badSamples >= 0, "a negative count");
+    if (!a.ok()) {
+        FUZZ_CHECK(a.series.isEmpty(), "a refused answer with series");
+        FUZZ_CHECK(a.error.size() <= 3 * PrometheusAnswer::kMaxTextChars, "an error past its bound");
+        return 0;
+    }
+    FUZZ_CHECK(a.series.size() <= PrometheusAnswer::kMaxSeries, "series past the bound");
+    qsizetype points = 0;
+    for (const PrometheusAnswer::Series& s : a.series) {
+        FUZZ_CHECK(s.labels.size() <= PrometheusAnswer::kMaxLabels, "labels past the bound");
+        for (auto it = s.labels.cbegin(); it != s.labels.cend(); ++it)
+            FUZZ_CHECK(it.key().size() <= PrometheusAnswer::kMaxTextChars + 1
+                           && it.value().size() <= PrometheusAnswer::kMaxTextChars + 1,
+                       "a label past its bound");
+        for (const PrometheusAnswer::Point& p : s.points)
+            FUZZ_CHECK(std::isfinite(p.time), "a time that is not a number");
+        points += s.points.size();
+    }
+    FUZZ_CHECK(points <= PrometheusAnswer::kMaxPoints + a.series.size(), "points past the bound");
+    FUZZ_CHECK(a.warnings.size() <= 5, "warnings past the bound");
+    return 0;
+}

@@ -1,0 +1,439 @@
+// SPDX-License-Identifier: MIT
+// The fleet view's core without a Prometheus: PrometheusAnswer on hand-written and hostile answers,
+// FleetSnapshotBuilder's mapping and judging, and PrometheusClient's bounds against a small HTTP
+// server of the test's own that answers too much, too late or not at all.
+#include "fleet/fleetsnapshot.h"
+#include "fleet/prometheusclient.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSignalSpy>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+/// JSON written with single quotes (readable in C++ strings).
+QByteArray j(const char* text)
+{
+    return QByteArray(text).replace('\'', '"');
+}
+
+using Labels = QList<std::pair<QString, QString>>;
+
+QJsonObject metric(const Labels& labels)
+{
+    QJsonObject m;
+    for (const auto& [k, v] : labels)
+        m.insert(k, v);
+    return m;
+}
+
+/// A vector answer of `series` (labels, value as Prometheus writes it).
+PrometheusAnswer vector(const QList<std::pair<Labels, QString>>& series, double time = 1000)
+{
+    QJsonArray result;
+    for (const auto& [labels, value] : series)
+        result.append(QJsonObject {{u"metric"_s, metric(labels)}, {u"value"_s, QJsonArray {time, value}}});
+    const QJsonObject top {{u"status"_s, u"success"_s},
+                           {u"data"_s, QJsonObject {{u"resultType"_s, u"vector"_s}, {u"result"_s, result}}}};
+    return PrometheusAnswer::read(QJsonDocument(top).toJson(QJsonDocument::Compact));
+}
+
+Labels link(const QString& host, const QString& name, const QString& side = {})
+{
+    Labels l {
+        {u"host"_s, host}, {u"bridge"_s, u"bridge1"_s}, {u"link"_s, name}, {u"direction"_s, u"ros2mqtt"_s}};
+    if (!side.isEmpty())
+        l.append({u"side"_s, side});
+    return l;
+}
+
+/// Answers for two hosts: "a" reporting with links "/x → x" (healthy), "/s → s" (stalled),
+/// "/l → l" (losing 10 %), "/p → p" (p99 300 ms); "b" stopped reporting, its link "/y → y" known
+/// from the hour.
+QHash<QString, PrometheusAnswer> twoHosts()
+{
+    const QStringList names {u"/x → x"_s, u"/s → s"_s, u"/l → l"_s, u"/p → p"_s};
+    QList<std::pair<Labels, QString>> state, rate, messages, recent, lost, recentLost, seen;
+    for (const QString& n : names) {
+        state.append({link(u"a"_s, n), u"0"_s});
+        seen.append({link(u"a"_s, n), u"1"_s});
+        rate.append({link(u"a"_s, n, u"source"_s), u"10"_s});
+        rate.append({link(u"a"_s, n, u"destination"_s), n.startsWith(u"/s"_s) ? u"0"_s : u"10"_s});
+        messages.append({link(u"a"_s, n, u"source"_s), u"1200"_s});
+        messages.append({link(u"a"_s, n, u"destination"_s), u"1100"_s});
+        recent.append({link(u"a"_s, n, u"source"_s), u"600"_s});
+        recent.append({link(u"a"_s, n, u"destination"_s), n.startsWith(u"/s"_s) ? u"0"_s : u"600"_s});
+        lost.append({link(u"a"_s, n), u"100"_s});
+        recentLost.append({link(u"a"_s, n), n.startsWith(u"/l"_s) ? u"60"_s : u"0"_s});
+    }
+    QList<std::pair<Labels, QString>> links = state;
+    links.append({link(u"b"_s, u"/y → y"_s), u"0"_s});
+    QHash<QString, PrometheusAnswer> a;
+    a[u"links"_s] = vector(links);
+    a[u"state"_s] = vector(state);
+    a[u"seen"_s] = vector(seen);
+    a[u"rate"_s] = vector(rate);
+    a[u"messages"_s] = vector(messages);
+    a[u"bytes"_s] = vector({});
+    a[u"lost"_s] = vector(lost);
+    a[u"stalls"_s] = vector({});
+    a[u"recent"_s] = vector(recent);
+    a[u"recentLost"_s] = vector(recentLost);
+    a[u"p50"_s] = vector({{link(u"a"_s, u"/p → p"_s), u"100"_s}, {link(u"a"_s, u"/x → x"_s), u"NaN"_s}});
+    a[u"p99"_s] = vector({{link(u"a"_s, u"/p → p"_s), u"300"_s}, {link(u"a"_s, u"/x → x"_s), u"NaN"_s}});
+    a[u"bridges"_s] = vector({{{{u"host"_s, u"a"_s}, {u"bridge"_s, u"bridge1"_s}}, u"1"_s}});
+    a[u"info"_s] = vector({{{{u"host"_s, u"a"_s}, {u"version"_s, u"1.2.3"_s}}, u"1"_s}});
+    a[u"lastSeen"_s] = vector({{{{u"host"_s, u"a"_s}}, u"1000"_s}, {{{u"host"_s, u"b"_s}}, u"900"_s}});
+    return a;
+}
+
+const FleetLink* find(const FleetSnapshot& s, const QString& host, const QString& name)
+{
+    for (const FleetLink& l : s.links)
+        if (l.host == host && l.link == name)
+            return &l;
+    return nullptr;
+}
+
+/// A one-shot HTTP server: answers each request with `head` and `body` (or nothing, when `silent`).
+class TinyServer : public QTcpServer
+{
+public:
+    QByteArray answer;
+    bool silent = false;
+    TinyServer()
+    {
+        connect(this, &QTcpServer::newConnection, this, [this] {
+            while (QTcpSocket* s = nextPendingConnection()) {
+                connect(s, &QTcpSocket::readyRead, s, [this, s] {
+                    if (!s->readAll().contains("\r\n\r\n") || silent)
+                        return;
+                    s->write(answer);
+                    s->disconnectFromHost();
+                });
+            }
+        });
+        listen(QHostAddress::LocalHost);
+    }
+    QUrl url() const { return QUrl(u"http://127.0.0.1:%1"_s.arg(serverPort())); }
+};
+
+QByteArray http(const QByteArray& body)
+{
+    return "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\nContent-Length: "
+        + QByteArray::number(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
+}
+
+PrometheusAnswer ask(PrometheusClient& client)
+{
+    PrometheusAnswer answer;
+    bool done = false;
+    client.query(u"up"_s, [&](const PrometheusAnswer& a) {
+        answer = a;
+        done = true;
+    });
+    if (!QTest::qWaitFor([&] { return done; }, 20000))
+        answer.error = u"test: no callback"_s;
+    return answer;
+}
+} // namespace
+
+class TestFleetSnapshot : public QObject
+{
+    Q_OBJECT
+private slots:
+    void readsVectorMatrixScalarAndErrors()
+    {
+        const PrometheusAnswer v
+            = PrometheusAnswer::read(j("{'status':'success','data':{'resultType':'vector','result':[{'metric'"
+                                       ":{'host':'a'},'value':[12.5,'3']}]}}"));
+        QVERIFY(v.ok());
+        QCOMPARE(v.series.size(), 1);
+        QCOMPARE(v.series[0].label(u"host"_s), u"a"_s);
+        QCOMPARE(v.series[0].points[0].time, 12.5);
+        QCOMPARE(v.series[0].points[0].value, 3.0);
+        const PrometheusAnswer m
+            = PrometheusAnswer::read(j("{'status':'success','data':{'resultType':'matrix','result':[{'metric'"
+                                       ":{},'values':[[1,'1'],[2,'NaN'],[3,'+Inf']]}]}}"));
+        QVERIFY(m.ok());
+        QCOMPARE(m.series[0].points.size(), 3);
+        QVERIFY(std::isnan(m.series[0].points[1].value));
+        QVERIFY(std::isinf(m.series[0].points[2].value));
+        const PrometheusAnswer s = PrometheusAnswer::read(
+            j("{'status':'success','data':{'resultType':'scalar','result':[5,'7']}}"));
+        QCOMPARE(s.series[0].points[0].value, 7.0);
+        const PrometheusAnswer e = PrometheusAnswer::read(
+            j("{'status':'error','errorType':'bad_data','error':'parse error at char 3'}"));
+        QVERIFY(!e.ok());
+        QCOMPARE(e.error, u"the server refused the query: bad_data: parse error at char 3"_s);
+    }
+
+    void hostileAnswersAreCountedNotTrusted_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<bool>("ok");
+        QTest::addColumn<int>("series");
+        QTest::addColumn<int>("bad");
+        QTest::newRow("not json") << QByteArray("<html>") << false << 0 << 0;
+        QTest::newRow("array") << QByteArray("[1,2]") << false << 0 << 0;
+        QTest::newRow("no status") << QByteArray(j("{'data':{}}")) << false << 0 << 0;
+        QTest::newRow("result not array")
+            << QByteArray(j("{'status':'success','data':{'resultType':'vector','result':7}}")) << false << 0
+            << 0;
+        QTest::newRow("unknown type")
+            << QByteArray(j("{'status':'success','data':{'resultType':'string','result':[1,'x']}}")) << false
+            << 0 << 0;
+        QTest::newRow("value a number") << QByteArray(
+            j("{'status':'success','data':{'resultType':'vector','result':[{'metric':{},'value':[1,3]}]}}"))
+                                        << true << 0 << 1;
+        QTest::newRow("value text") << QByteArray(j(
+            "{'status':'success','data':{'resultType':'vector','result':[{'metric':{},'value':[1,'abc']}]}}"))
+                                    << true << 0 << 1;
+        QTest::newRow("huge number") << QByteArray(j("{'status':'success','data':{'resultType':'vector','"
+                                                     "result':[{'metric':{},'value':[1,'1e999']}]}}"))
+                                     << true << 0 << 1;
+        QTest::newRow("label not string") << QByteArray(j("{'status':'success','data':{'resultType':'vector',"
+                                                          "'result':[{'metric':{'a':1},'value':[1,'1']}]}}"))
+                                          << true << 0 << 1;
+        QTest::newRow("series not object")
+            << QByteArray(j("{'status':'success','data':{'resultType':'vector','result':[null,'x',{'metric':{"
+                            "},'value':[1,'2']}]}}"))
+            << true << 1 << 2;
+        QTest::newRow("matrix point short")
+            << QByteArray(j("{'status':'success','data':{'resultType':'matrix','result':[{'metric':{},'"
+                            "values':[[1],[2,'2'],'x']}]}}"))
+            << true << 1 << 2;
+        QTest::newRow("time nan") << QByteArray(j("{'status':'success','data':{'resultType':'vector','result'"
+                                                  ":[{'metric':{},'value':['NaN','1']}]}}"))
+                                  << true << 0 << 1;
+    }
+    void hostileAnswersAreCountedNotTrusted()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(bool, ok);
+        QFETCH(int, series);
+        QFETCH(int, bad);
+        const PrometheusAnswer a = PrometheusAnswer::read(json);
+        QCOMPARE(a.ok(), ok);
+        QCOMPARE(a.series.size(), series);
+        QCOMPARE(a.badSamples, bad);
+        if (!ok)
+            QVERIFY(!a.error.isEmpty());
+    }
+
+    void seriesPastTheBoundAreCounted()
+    {
+        QByteArray json = j("{'status':'success','data':{'resultType':'vector','result':[");
+        const qsizetype n = PrometheusAnswer::kMaxSeries + 7;
+        for (qsizetype i = 0; i < n; ++i)
+            json += (i ? "," : "") + QByteArray(j("{'metric':{'i':'")) + QByteArray::number(i)
+                + j("'},'value':[1,'1']}");
+        json += "]}}";
+        const PrometheusAnswer a = PrometheusAnswer::read(json);
+        QVERIFY(a.ok());
+        QCOMPARE(a.series.size(), PrometheusAnswer::kMaxSeries);
+        QCOMPARE(a.droppedSeries, 7);
+    }
+
+    void linkLabelsGiveTheTopics()
+    {
+        const LinkDef r = FleetSnapshotBuilder::linkDef(u"b"_s, u"/ros/t → mqtt/t"_s, u"ros2mqtt"_s);
+        QCOMPARE(r.rosTopic, u"/ros/t"_s);
+        QCOMPARE(r.mqttTopic, u"mqtt/t"_s);
+        const LinkDef m = FleetSnapshotBuilder::linkDef(u"b"_s, u"mqtt/t → /ros/t"_s, u"mqtt2ros"_s);
+        QCOMPARE(m.direction, Direction::Mqtt2Ros);
+        QCOMPARE(m.rosTopic, u"/ros/t"_s);
+        QCOMPARE(m.mqttTopic, u"mqtt/t"_s);
+        QCOMPARE(m.name(), u"mqtt/t → /ros/t"_s);
+        const LinkDef d = FleetSnapshotBuilder::linkDef(u"discovered"_s, u"only/mqtt"_s, u"ros2mqtt"_s);
+        QVERIFY(d.discovered);
+        QCOMPARE(d.mqttTopic, u"only/mqtt"_s);
+    }
+
+    void everyHostsLinksJudgedByTheLocalJudge()
+    {
+        QHash<QString, double> seen;
+        WatchRules rules;
+        rules.defaults[LinkRules::LatencyP99Ms] = Threshold {50, 200};
+        const FleetSnapshot s = FleetSnapshotBuilder::build(twoHosts(), rules, 1000, &seen);
+        QCOMPARE(s.links.size(), 5);
+        QCOMPARE(s.hosts.size(), 2);
+        QCOMPARE(s.hosts[0].name, u"a"_s);
+        QVERIFY(s.hosts[0].reporting);
+        QCOMPARE(s.hosts[0].version, u"1.2.3"_s);
+        QVERIFY(!s.hosts[1].reporting);
+
+        const FleetLink* x = find(s, u"a"_s, u"/x → x"_s);
+        QVERIFY(x);
+        QCOMPARE(x->figures.source.rateHz, 10.0);
+        QCOMPARE(x->figures.source.messages, 1200u);
+        QCOMPARE(x->figures.destination.messages, 1100u);
+        QCOMPARE(x->figures.lost, 100u);
+        QVERIFY(std::isnan(x->figures.latencyP99Ms));
+        QCOMPARE(x->verdict.level, LinkLevel::Ok);
+        QVERIFY(!x->verdict.unknown);
+        QCOMPARE(x->def.rosTopic, u"/x"_s);
+
+        const FleetLink* st = find(s, u"a"_s, u"/s → s"_s);
+        QCOMPARE(st->verdict.level, LinkLevel::Alert);
+        QCOMPARE(LinkJudge::reasonNames(st->verdict.reasons), QStringList {u"stall"_s});
+        QVERIFY2(st->verdict.detail.startsWith(u"nothing arrived on s for "_s),
+                 qPrintable(st->verdict.detail));
+
+        const FleetLink* l = find(s, u"a"_s, u"/l → l"_s);
+        QCOMPARE(l->figures.lossPercent, 10.0);
+        QCOMPARE(l->verdict.level, LinkLevel::Alert);
+        QCOMPARE(l->verdict.detail, u"10.0 % of the messages lost"_s);
+
+        const FleetLink* p = find(s, u"a"_s, u"/p → p"_s);
+        QCOMPARE(p->figures.latencyP99Ms, 300.0);
+        QCOMPARE(p->figures.latencyP50Ms, 100.0);
+        QCOMPARE(p->verdict.level, LinkLevel::Alert);
+        QCOMPARE(p->verdict.detail, u"latency p99 300.0 ms"_s);
+
+        const FleetLink* y = find(s, u"b"_s, u"/y → y"_s);
+        QVERIFY(y);
+        QVERIFY(!y->hostReporting);
+        QVERIFY(y->verdict.unknown);
+        QCOMPARE(y->verdict.level, LinkLevel::Ok);
+        QCOMPARE(y->verdict.detail,
+                 u"host stopped reporting since "_s
+                     + QDateTime::fromSecsSinceEpoch(900).toString(u"HH:mm"_s));
+        QCOMPARE(seen.value(u"a"_s), 1000.0);
+        QCOMPARE(seen.value(u"b"_s), 900.0);
+    }
+
+    void aHostSeenBeforeThatVanishesStoppedReporting()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        // Host a's series are gone now (its watch stopped), and the server forgot the hour.
+        answers[u"info"_s] = vector({});
+        answers[u"state"_s] = vector({});
+        answers[u"lastSeen"_s] = vector({});
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1060, &seen);
+        QCOMPARE(s.hosts.size(), 2);
+        QVERIFY(!s.hosts[0].reporting);
+        QCOMPARE(s.hosts[0].lastSeen, 1000.0);
+        const FleetLink* x = find(s, u"a"_s, u"/x → x"_s);
+        QVERIFY(x);
+        QVERIFY(x->verdict.unknown);
+        QVERIFY(x->verdict.detail.startsWith(u"host stopped reporting since "_s));
+        for (const FleetLink& l : s.links)
+            QVERIFY2(l.verdict.unknown, qPrintable(l.key()));
+    }
+
+    void linksNoLongerServedAreDroppedBridgeDownIsSaid()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        answers[u"state"_s] = vector({{link(u"a"_s, u"/x → x"_s), u"0"_s}});
+        answers[u"bridges"_s] = vector({{{{u"host"_s, u"a"_s}, {u"bridge"_s, u"bridge1"_s}}, u"0"_s}});
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        QCOMPARE(s.links.size(), 2); // a's /x and b's /y
+        const FleetLink* x = find(s, u"a"_s, u"/x → x"_s);
+        QVERIFY(x->bridgeDown);
+        QCOMPARE(x->verdict.level, LinkLevel::Alert);
+        QCOMPARE(x->verdict.detail, u"the bridge bridge1 on a is down"_s);
+    }
+
+    void hostileFiguresNeverJudgeOk()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        answers[u"rate"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"-5"_s},
+                                     {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"NaN"_s}});
+        answers[u"messages"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"1e300"_s}});
+        answers[u"seen"_s] = vector({{link(u"a"_s, u"/s → s"_s), u"0"_s}});
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        const FleetLink* x = find(s, u"a"_s, u"/x → x"_s);
+        QCOMPARE(x->figures.source.rateHz, 0.0);
+        QCOMPARE(x->figures.destination.rateHz, 0.0);
+        QVERIFY(x->figures.source.messages > 0);
+        const FleetLink* st = find(s, u"a"_s, u"/s → s"_s);
+        QVERIFY(st->verdict.unknown);
+        QCOMPARE(st->verdict.detail, u"unknown (the watch on a cannot see both sides)"_s);
+    }
+
+    void urlsAreCheckedSchemesRefused()
+    {
+        QCOMPARE(PrometheusClient::checkUrl(u"http://127.0.0.1:9090/"_s)->toString(),
+                 u"http://127.0.0.1:9090"_s);
+        QCOMPARE(PrometheusClient::checkUrl(u"https://lab/prometheus"_s)->toString(),
+                 u"https://lab/prometheus"_s);
+        QVERIFY(!PrometheusClient::checkUrl(u"ftp://lab:9090"_s).ok());
+        QVERIFY(!PrometheusClient::checkUrl(u"file:///etc/passwd"_s).ok());
+        QVERIFY(!PrometheusClient::checkUrl(u"http://user:secret@lab:9090"_s).ok());
+        QVERIFY(!PrometheusClient::checkUrl(u"http://lab:9090/?x=1"_s).ok());
+        QVERIFY(!PrometheusClient::checkUrl(u""_s).ok());
+        QCOMPARE(PrometheusClient::quoted(u"a\"b\\c\nd"_s), u"\"a\\\"b\\\\c\\nd\""_s);
+    }
+
+    void anAnswerPastItsSizeIsRefused()
+    {
+        TinyServer server;
+        QByteArray body = j("{'status':'success','data':{'resultType':'vector','result':[");
+        body += QByteArray(4000, ' ') + "]}}";
+        server.answer = http(body);
+        PrometheusClient client;
+        client.setServer(server.url());
+        client.setMaxAnswerBytes(1000);
+        const PrometheusAnswer a = ask(client);
+        QVERIFY(!a.ok());
+        QVERIFY2(a.error.startsWith(u"the answer is larger than"_s), qPrintable(a.error));
+        client.setMaxAnswerBytes(PrometheusClient::kMaxAnswerBytes);
+        const PrometheusAnswer b = ask(client);
+        QVERIFY2(b.ok(), qPrintable(b.error));
+        QCOMPARE(client.failures(), 1u);
+    }
+
+    void aSilentServerTimesOutAnAbsentOneIsSaid()
+    {
+        TinyServer server;
+        server.silent = true;
+        PrometheusClient client;
+        client.setServer(server.url());
+        client.setTimeoutMs(300);
+        const PrometheusAnswer a = ask(client);
+        QCOMPARE(a.error, u"no answer within 0.3 s"_s);
+        const quint16 port = server.serverPort();
+        server.close();
+        client.setServer(QUrl(u"http://127.0.0.1:%1"_s.arg(port)));
+        const PrometheusAnswer b = ask(client);
+        QVERIFY(!b.ok());
+        QVERIFY2(b.error.contains(u"refused"_s), qPrintable(b.error));
+    }
+
+    void basicAuthIsSentOnlyInTheHeader()
+    {
+        QTcpServer server;
+        QVERIFY(server.listen(QHostAddress::LocalHost));
+        QByteArray request;
+        connect(&server, &QTcpServer::newConnection, this, [&] {
+            QTcpSocket* s = server.nextPendingConnection();
+            connect(s, &QTcpSocket::readyRead, s, [&request, s] {
+                request += s->readAll();
+                if (request.contains("up") || request.contains("query="))
+                    s->write(http(j("{'status':'success','data':{'resultType':'vector','result':[]}}")));
+            });
+        });
+        PrometheusClient client;
+        client.setServer(QUrl(u"http://127.0.0.1:%1"_s.arg(server.serverPort())), u"lab"_s, u"s3cret"_s);
+        const PrometheusAnswer a = ask(client);
+        QVERIFY2(a.ok(), qPrintable(a.error));
+        const QByteArray header = "Authorization: Basic " + QByteArray("lab:s3cret").toBase64();
+        QVERIFY(request.contains(header));
+        QVERIFY(!request.contains("s3cret"));
+        QVERIFY(request.startsWith("POST /api/v1/query "));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFleetSnapshot)
+#include "tst_fleetsnapshot.moc"
