@@ -574,7 +574,7 @@ private slots:
         const auto value = [&](const QString& topic, const QString& side) {
             const double v = TestServers::metricSample(
                 TestServers::httpGet(port, u"/metrics"_s), u"bridgescope_link_messages_total"_s,
-                {u"topic=\"%1\""_s.arg(topic), u"side=\"%1\""_s.arg(side)});
+                {u"link=\"%1 → "_s.arg(topic), u"side=\"%1\""_s.arg(side)}); // ROS → MQTT links
             return qIsNaN(v) ? 0.0 : v;
         };
         // both ROS 2 sources counted from DDS, /chatter's destination from the broker
