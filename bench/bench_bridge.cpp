@@ -212,7 +212,7 @@ int main(int argc, char** argv)
             Bench::gate("bridge_018mb_vs_broker_only", pMed > 0 ? bMed / pMed : 0);
     }
     // BENCH_SWEEP=0: the gate's short run, the latencies only
-    if (Bench::envInt("BENCH_SWEEP", 1) != 0) {
+    if (Bench::envInt("BENCH_SWEEP", 1, 0) != 0) {
         // Throughput at 0.18 MB: raise the rate by 1.5x per one-second step, on each path alone, until
         // more than 1 % is lost or the median exceeds 10x the first step's (at least 10 ms).
         std::printf("\nHighest sustainable rate at 0.18 MB (1 s steps, x1.5 from 50 Hz, <= 1 %% lost, median <= "

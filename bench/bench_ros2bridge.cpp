@@ -194,7 +194,7 @@ int main(int argc, char** argv)
                 count, rate);
     Bench::header("median ms");
     std::vector<int> sizes {180'000};
-    if (Bench::envInt("BENCH_LARGE", 0))
+    if (Bench::envInt("BENCH_LARGE", 0, 0))
         sizes.push_back(1'080'000);
     for (const int size : sizes) {
         const qint64 period = 1'000'000'000LL / rate;

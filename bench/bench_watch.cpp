@@ -11,13 +11,16 @@
 //     resident memory.
 //
 //   scripts/bench.sh bench_watch        (BENCH_LINKS, BENCH_SECONDS override)
+//
+// BENCH_FORM=fleet runs its fleet form instead (bench/watchfleet.cpp): 10,000 links, no window.
 #include "app/gui/mainwindow.h"
 #include "benchutil.h"
 #include "session/livesession.h"
 #include "testservers.h"
-#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
+#include "watchfleet.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkmodel.h"
 #include "widgets/links/linkspage.h"
 
 #include <QApplication>
@@ -32,11 +35,6 @@
 using namespace Qt::StringLiterals;
 
 namespace {
-
-QString topic(int i)
-{
-    return u"fleet/vehicle_%1/sensor_%2"_s.arg(i / 100, 3, 10, QChar(u'0')).arg(i % 100, 2, 10, QChar(u'0'));
-}
 
 /// GET /metrics: the whole answer.
 QByteArray scrape(quint16 port)
@@ -66,10 +64,12 @@ int main(int argc, char** argv)
 {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
+    const QString program = QCoreApplication::applicationDirPath() + u"/../app/bridgescope"_s;
+    if (qgetenv("BENCH_FORM") == "fleet")
+        return runWatchFleet(program);
     const int links = Bench::envInt("BENCH_LINKS", 1000);
     const int seconds = Bench::envInt("BENCH_SECONDS", 30);
     const int rate = links * 10;
-    const QString program = QCoreApplication::applicationDirPath() + u"/../app/bridgescope"_s;
 
     TestServers servers;
     if (!servers.startMosquitto(
@@ -85,7 +85,7 @@ int main(int argc, char** argv)
         = u"broker:\n  host: 127.0.0.1\n  port: %1\nclient:\n  id: fleet_bridge\nbridge:\n  mqtt2ros:\n"_s
               .arg(servers.mosquittoPort());
     for (int i = 0; i < links; ++i)
-        config += u"    - {mqtt_topic: %1, ros_topic: /%1, primitive: true}\n"_s.arg(topic(i));
+        config += u"    - {mqtt_topic: %1, ros_topic: /%1, primitive: true}\n"_s.arg(fleetTopic(i));
     const QString configPath = servers.tempPath() + u"/fleet.yaml"_s;
     QFile f(configPath);
     if (!f.open(QIODevice::WriteOnly) || f.write(config.toUtf8()) < 0)

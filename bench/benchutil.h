@@ -45,12 +45,20 @@ inline double percentile(std::vector<double> v, double p)
     return v[lo] + (v[hi] - v[lo]) * (rank - double(lo));
 }
 
-/// A positive integer from the environment, or `fallback`.
-inline int envInt(const char* name, int fallback)
+/// An integer of at least `minimum` from the environment, or `fallback` when it is unset. A count
+/// takes the default minimum of 1; a switch (BENCH_SWEEP=0 turns the sweep off) a minimum of 0. A
+/// value that is not such a number is said on stderr, and the fallback taken.
+inline int envInt(const char* name, int fallback, int minimum = 1)
 {
+    if (!qEnvironmentVariableIsSet(name))
+        return fallback;
     bool ok = false;
     const int v = qEnvironmentVariableIntValue(name, &ok);
-    return ok && v > 0 ? v : fallback;
+    if (ok && v >= minimum)
+        return v;
+    std::fprintf(stderr, "%s=%s is not an integer of at least %d: %d taken\n", name,
+                 qgetenv(name).constData(), minimum, fallback);
+    return fallback;
 }
 
 inline void header(const char* valueTitle)
