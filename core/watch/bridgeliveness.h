@@ -29,6 +29,11 @@ public:
     static constexpr qint64 kWillGraceNs = 1'000'000'000LL;
 
     QList<int> links; ///< the monitor's indexes of its links
+    /// What its links showed when the judge last saw each (LinkMonitor keeps these as it judges
+    /// them, so that a bridge of 10,000 links is judged without a pass over them every tick).
+    qint64 lastDataNs = 0; ///< the last message at any of its destinations
+    qint64 carriesUntilNs = 0; ///< a destination got a message within five of its source's periods until then
+    int stalledLinks = 0; ///< links that stall
     qint64 willDownNs = 0; ///< when its last will arrived (0: not since it last carried data)
     BridgeState state = BridgeState::Unknown;
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 using namespace Qt::StringLiterals;
 
@@ -22,28 +23,62 @@ LinkLevel levelOf(const Threshold& t, double value, bool above)
     return LinkLevel::Ok;
 }
 
+/// The silence a limit in seconds, or else in periods of `periodNs` (at least 1 s), allows (inf: none).
+double silenceLimitNs(double seconds, double periods, qint64 periodNs)
+{
+    if (std::isfinite(seconds))
+        return seconds * 1e9;
+    if (std::isfinite(periods))
+        return std::max(periods * double(periodNs), 1e9);
+    return qInf();
+}
+
 /// Silence `silenceNs` against limits in seconds, or in periods of `periodNs` (at least 1 s).
 LinkLevel silenceLevel(const Threshold& seconds, const Threshold& periods, qint64 periodNs, qint64 silenceNs)
 {
-    const auto limitNs = [&](double s, double p) -> double {
-        if (std::isfinite(s))
-            return s * 1e9;
-        if (std::isfinite(p))
-            return std::max(p * double(periodNs), 1e9);
-        return qInf();
-    };
-    if (double(silenceNs) > limitNs(seconds.alert, periods.alert))
+    if (double(silenceNs) > silenceLimitNs(seconds.alert, periods.alert, periodNs))
         return LinkLevel::Alert;
-    if (double(silenceNs) > limitNs(seconds.warning, periods.warning))
+    if (double(silenceNs) > silenceLimitNs(seconds.warning, periods.warning, periodNs))
         return LinkLevel::Warning;
     return LinkLevel::Ok;
+}
+
+/// The source's silence up to which it still publishes (LinkJudge::sourcePublishes).
+qint64 publishingLimitNs(qint64 periodNs)
+{
+    // Shorter than the shortest stall (1 s): a source that stops is never taken for a stall.
+    return std::max<qint64>(2 * periodNs, kSecond / 2);
 }
 } // namespace
 
 bool LinkJudge::sourcePublishes(const Input& in)
 {
-    // Shorter than the shortest stall (1 s): a source that stops is never taken for a stall.
-    return in.sourceSilenceNs >= 0 && in.sourceSilenceNs <= std::max<qint64>(2 * in.periodNs, kSecond / 2);
+    return in.sourceSilenceNs >= 0 && in.sourceSilenceNs <= publishingLimitNs(in.periodNs);
+}
+
+qint64 LinkJudge::quietNs(const LinkRules& r, const Input& in)
+{
+    if (in.blindness != LinkBlindness::None)
+        return 0; // the monitor judges every link again when the watcher's sight changes
+    qint64 next = std::numeric_limits<qint64>::max();
+    // A silence passes a limit the nanosecond after it equals it (the levels compare with >).
+    const auto until = [&](double limitNs, qint64 silenceNs) {
+        if (silenceNs >= 0 && std::isfinite(limitNs) && double(silenceNs) <= limitNs)
+            next = std::min(next, qint64(std::ceil(limitNs)) - silenceNs + 1);
+    };
+    until(double(publishingLimitNs(in.periodNs)), in.sourceSilenceNs);
+    const Threshold& stopped = r[LinkRules::SourceStoppedSeconds];
+    until(silenceLimitNs(stopped.warning, qInf(), in.periodNs), in.sourceSilenceNs);
+    until(silenceLimitNs(stopped.alert, qInf(), in.periodNs), in.sourceSilenceNs);
+    const Threshold& stallS = r[LinkRules::StallSeconds];
+    const Threshold& stallP = r[LinkRules::StallPeriods];
+    until(silenceLimitNs(stallS.warning, stallP.warning, in.periodNs), in.destinationSilenceNs);
+    until(silenceLimitNs(stallS.alert, stallP.alert, in.periodNs), in.destinationSilenceNs);
+    if (in.stallLevel != LinkLevel::Ok && in.destinationSteadyNs < kStallRecoveryNs)
+        next = std::min(next, kStallRecoveryNs - std::max<qint64>(in.destinationSteadyNs, 0));
+    if (!in.settled && in.settlesInNs > 0)
+        next = std::min(next, in.settlesInNs);
+    return next == std::numeric_limits<qint64>::max() ? 0 : std::max<qint64>(next, 1);
 }
 
 LinkJudge::Verdict LinkJudge::judge(const LinkRules& r, const LinkDef& link, const Input& in)

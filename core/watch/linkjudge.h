@@ -33,6 +33,8 @@ public:
         qint64 destinationSilenceNs = 0; ///< since the destination's last message or the source's (re)start
         /// The windows are past any stall, start or restart: loss and rates can be judged.
         bool settled = false;
+        /// Until then (0 once settled): the moment the verdict may change without a message.
+        qint64 settlesInNs = 0;
         /// The watcher cannot see a side (its broker connection is down, the master unreachable):
         /// nothing can be told of the link, and the bridge is not blamed.
         LinkBlindness blindness = LinkBlindness::None;
@@ -56,6 +58,11 @@ public:
     };
 
     static Verdict judge(const LinkRules& rules, const LinkDef& link, const Input& input);
+    /// How long the verdict on `input` stays the same if no message arrives and the figures stay:
+    /// until the first silence crosses a limit, a stall's recovery ends or the windows settle
+    /// (0: never, or not while the watcher is blind). The monitor judges a link again then, not on
+    /// every tick.
+    static qint64 quietNs(const LinkRules& rules, const Input& input);
     /// Whether the source publishes now: silent for less than two periods (and half a second).
     static bool sourcePublishes(const Input& input);
     /// "broker unreachable", "ROS master unreachable", ... (empty for None).

@@ -58,11 +58,16 @@ void LinkMonitor::setRules(const WatchRules& rules)
     m_ruleBook.set(rules);
     for (auto& t : m_tracks)
         t->rules = m_ruleBook.forLink(t->def);
+    m_judgeAll = true;
 }
 
 void LinkMonitor::index()
 {
     ++m_linksVersion;
+    m_judgeAll = true;
+    m_deadlines = {}; // their indexes are gone
+    for (auto& t : m_tracks)
+        t->queuedNs = 0;
     m_byId.clear();
     for (int i = 0; i < int(m_tracks.size()); ++i)
         m_byId.insert(m_tracks[std::size_t(i)]->def.id(), i);
@@ -112,6 +117,7 @@ void LinkMonitor::setRos2Topics(const QSet<QString>& topics)
 {
     for (auto& t : m_tracks)
         t->onRos2 = topics.contains(t->def.rosTopic);
+    ++m_ros2Version;
 }
 
 std::vector<LinkMonitor::HistoryPoint> LinkMonitor::history(int index) const
@@ -139,45 +145,107 @@ void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)
     }
 }
 
-void LinkMonitor::refreshStatistics(qint64 nowNs)
+std::vector<int> LinkMonitor::refreshStatistics(qint64 nowNs)
 {
-    for (auto& tp : m_tracks) {
-        Track& t = *tp;
+    std::vector<int> refreshed;
+    for (int i = 0; i < int(m_tracks.size()); ++i) {
+        Track& t = *m_tracks[std::size_t(i)];
         if (t.dormant())
             continue; // nothing to refresh, and no history yet: a fleet's idle links cost nothing
-        ++m_changes;
-        t.refresh(nowNs);
+        if (!t.still(nowNs)) { // past every window a refresh gives the same figures: only the point
+            ++m_changes;
+            t.refresh(nowNs);
+            refreshed.push_back(i);
+        }
         t.history.push_back({nowNs, t.dst.f.rateHz, t.figures.latencyP99Ms, t.level});
         if (t.history.size() > kHistoryPoints)
             t.history.pop_front();
     }
+    return refreshed;
+}
+
+bool LinkMonitor::sightMoved()
+{
+    const auto key = std::make_tuple(m_sight.blindMask(), m_linksVersion, m_ros2Version);
+    if (m_sightKey == key)
+        return false;
+    m_sightKey = key;
+    return true;
 }
 
 void LinkMonitor::tick(qint64 nowNs)
 {
-    m_changes += quint64(m_sight.update(m_tracks, nowNs));
+    if (sightMoved()) {
+        const int changed = m_sight.update(m_tracks, nowNs);
+        m_changes += quint64(changed);
+        m_judgeAll = m_judgeAll || changed > 0;
+    }
     const bool refresh = nowNs - m_lastRefreshNs >= kSecond;
+    std::vector<int> moved; // the links whose figures were refreshed
     if (refresh) {
         m_lastRefreshNs = nowNs;
-        refreshStatistics(nowNs);
+        moved = refreshStatistics(nowNs);
     }
-    // Only links whose verdict can change: a dormant link judged dormant with the same sight is
-    // judged the same (idle work does not grow with a fleet's silent links).
-    for (int i = 0; i < int(m_tracks.size()); ++i) {
-        const Track& t = *m_tracks[std::size_t(i)];
-        if (!(t.judgedDormant && t.dormant() && t.judgedBlindness == t.blindness))
-            evaluate(i, nowNs);
-    }
+    judgeChanged(moved, nowNs);
+    if (refresh) // the sources' periods moved: what the bridges' links show, counted anew
+        m_bridges.recount(m_tracks);
     for (auto it = m_bridges.all().begin(); it != m_bridges.all().end(); ++it)
         evaluateBridge(it.key(), **it, nowNs);
     if (refresh)
         emit refreshed();
 }
 
+void LinkMonitor::judgeChanged(const std::vector<int>& refreshed, qint64 nowNs)
+{
+    const std::vector<int> heard = m_reader.takeHeard();
+    if (m_judgeAll) {
+        m_judgeAll = false;
+        // A dormant link judged dormant with the same sight is judged the same (idle work does not
+        // grow with a fleet's silent links).
+        for (int i = 0; i < int(m_tracks.size()); ++i) {
+            const Track& t = *m_tracks[std::size_t(i)];
+            if (!(t.judgedDormant && t.dormant() && t.judgedBlindness == t.blindness))
+                evaluate(i, nowNs);
+        }
+        return;
+    }
+    const auto judge = [&](int i) {
+        if (m_tracks[std::size_t(i)]->judgedNs != nowNs)
+            evaluate(i, nowNs);
+    };
+    for (int i : heard)
+        judge(i);
+    for (int i : refreshed)
+        judge(i);
+    while (!m_deadlines.empty() && m_deadlines.top().first <= nowNs) {
+        const auto [at, i] = m_deadlines.top();
+        m_deadlines.pop();
+        Track& t = *m_tracks[std::size_t(i)];
+        if (t.queuedNs != at)
+            continue; // an entry its link left for an earlier one
+        t.queuedNs = 0;
+        if (t.judgeAtNs > nowNs)
+            schedule(i, t.judgeAtNs); // its deadline moved on since
+        else if (t.judgeAtNs > 0)
+            judge(i);
+    }
+}
+
+void LinkMonitor::schedule(int i, qint64 atNs)
+{
+    Track& t = *m_tracks[std::size_t(i)];
+    t.judgeAtNs = atNs;
+    if (atNs <= 0 || (t.queuedNs > 0 && t.queuedNs <= atNs))
+        return; // none, or its entry comes first and looks at judgeAtNs then
+    t.queuedNs = atNs;
+    m_deadlines.emplace(atNs, i);
+}
+
 void LinkMonitor::evaluate(int i, qint64 nowNs)
 {
     Track& t = *m_tracks[std::size_t(i)];
     ++m_judgements;
+    t.judgedNs = nowNs;
     t.judgedDormant = t.dormant();
     t.judgedBlindness = t.blindness;
     LinkJudge::Input in;
@@ -193,12 +261,17 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
     // Right after a stall, a start or a restart of either end (or of the watcher's sight) the windows still
     // hold the outage, which has its own event: loss and rates are judged again once the windows are past
     // it. Both ends must have been heard over the whole window (they subscribe at different moments).
-    in.settled = nowNs - std::max({t.stallEndedNs, t.src.resumedNs, t.dst.resumedNs, seenFrom})
-        > LinkWindows::kLossWindowNs + LinkWindows::kLossLagNs + kSecond;
+    const qint64 settledAt = std::max({t.stallEndedNs, t.src.resumedNs, t.dst.resumedNs, seenFrom})
+        + LinkWindows::kLossWindowNs + LinkWindows::kLossLagNs + kSecond;
+    in.settled = nowNs > settledAt;
+    in.settlesInNs = in.settled ? 0 : settledAt - nowNs + 1;
     in.blindness = t.blindness;
     in.stallLevel = t.stalled ? t.stallLevel : LinkLevel::Ok;
     in.destinationSteadyNs = nowNs - t.silentNs;
     const LinkJudge::Verdict v = LinkJudge::judge(t.rules, t.def, in);
+    if (!t.dormant()) // a dormant link is judged again at its first message or a change of sight
+        if (const qint64 quiet = LinkJudge::quietNs(t.rules, in))
+            schedule(i, nowNs + quiet);
     t.unknown = v.unknown ? v.detail : QString();
     if (v.silent)
         t.silentNs = nowNs;
@@ -215,6 +288,11 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
     }
     if (!stalled && t.stalled)
         t.stallEndedNs = nowNs;
+    if (t.bridge) {
+        t.bridge->stalledLinks += int(stalled) - int(t.stalled);
+        t.bridge->lastDataNs = std::max(t.bridge->lastDataNs, t.dst.f.lastNs);
+        t.bridge->carriesUntilNs = std::max(t.bridge->carriesUntilNs, LinkBridges::carriesUntilNs(t));
+    }
     t.stalled = stalled;
     if (stalled)
         t.stallLevel = std::max(t.stallLevel, v.level);
@@ -236,13 +314,10 @@ void LinkMonitor::evaluateBridge(const QString& name, BridgeLiveness& b, qint64 
     BridgeLiveness::Input in;
     in.nowNs = nowNs;
     in.blind = !m_sight.sees(SourceGraph::Mqtt);
-    for (int i : std::as_const(b.links)) {
-        const Track& t = *m_tracks[std::size_t(i)];
-        in.lastDataNs = std::max(in.lastDataNs, t.dst.f.lastNs);
-        const qint64 limit = std::max<qint64>(5 * t.src.expectedPeriodNs(), kSecond);
-        in.carries = in.carries || (t.dst.f.lastNs > 0 && nowNs - t.dst.f.lastNs <= limit);
-        in.stalled = in.stalled || t.reasons.contains(LinkReason::Stall);
-    }
+    // What its links showed when they were last judged: a link judged at this tick if it heard.
+    in.lastDataNs = b.lastDataNs;
+    in.carries = b.carriesUntilNs > 0 && nowNs <= b.carriesUntilNs;
+    in.stalled = b.stalledLinks > 0;
     if (!b.update(in))
         return;
     const bool down = b.state == BridgeState::Down;

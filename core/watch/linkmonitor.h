@@ -15,10 +15,13 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <QHash>
 #include <QJsonObject>
 #include <QObject>
 #include <QStringList>
+#include <queue>
+#include <tuple>
 #include <vector>
 
 struct MqttMessage;
@@ -109,7 +112,16 @@ private:
     void evaluateBridge(const QString& name, BridgeLiveness& bridge, qint64 nowNs);
     void change(const QString& subject, const LinkDef* link, LinkLevel level, const QStringList& reasons,
                 const QString& detail, const LinkFigures& figures, qint64 nowNs, qint64 endNs = 0);
-    void refreshStatistics(qint64 nowNs);
+    /// Refreshes the statistics of links that heard something within their windows; the others
+    /// get their history point only. Returns the links refreshed (their figures may have moved).
+    std::vector<int> refreshStatistics(qint64 nowNs);
+    /// Judges the links whose verdict may have changed: all after a change of links, rules or
+    /// sight; else those that heard something, were refreshed or whose deadline passed.
+    void judgeChanged(const std::vector<int>& refreshed, qint64 nowNs);
+    /// When link `i` is to be judged next without a message (0: not).
+    void schedule(int i, qint64 atNs);
+    /// Whether the links' sight needs a pass over them (the blind graphs, links or ROS 2 topics moved).
+    bool sightMoved();
 
     LinkRuleBook m_ruleBook;
     std::vector<std::unique_ptr<Track>> m_tracks;
@@ -122,4 +134,11 @@ private:
     quint64 m_linksVersion = 0;
     quint64 m_changes = 0; ///< refreshes of hearing links, level and sight changes
     quint64 m_judgements = 0;
+    /// (time, link): when a silence may change a link's verdict, earliest first; one live entry a
+    /// link (LinkTrack::queuedNs), older ones are dropped when they come up.
+    std::priority_queue<std::pair<qint64, int>, std::vector<std::pair<qint64, int>>, std::greater<>>
+        m_deadlines;
+    bool m_judgeAll = true; ///< links, rules or sight changed: every link is judged at the next tick
+    quint64 m_ros2Version = 0; ///< moves with setRos2Topics()
+    std::optional<std::tuple<unsigned, quint64, quint64>> m_sightKey; ///< what update() last saw
 };

@@ -30,8 +30,10 @@ void LinkReader::index()
     m_byMqtt.clear();
     m_byRos.clear();
     m_byLatencyTopic.clear();
+    m_heard.clear(); // their indexes are gone: the monitor judges every link after a change of links
     for (int i = 0; i < int(m_tracks.size()); ++i) {
         LinkTrack& t = *m_tracks[std::size_t(i)];
+        t.heard = false;
         m_byMqtt[t.def.mqttTopic] << i;
         if (!t.def.rosTopic.isEmpty())
             m_byRos[t.def.rosTopic] << i;
@@ -95,6 +97,24 @@ void LinkReader::applyAnnouncement(LinkTrack& t, const AnnouncedType& type)
     (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
 }
 
+void LinkReader::heard(int i)
+{
+    LinkTrack& t = *m_tracks[std::size_t(i)];
+    if (t.heard)
+        return;
+    t.heard = true;
+    m_heard.push_back(i);
+}
+
+std::vector<int> LinkReader::takeHeard()
+{
+    std::vector<int> out;
+    out.swap(m_heard);
+    for (int i : out)
+        m_tracks[std::size_t(i)]->heard = false;
+    return out;
+}
+
 void LinkReader::add(const std::vector<SourceHead>& batch)
 {
     m_read += batch.size();
@@ -112,6 +132,7 @@ void LinkReader::addMqttHead(const SourceHead& m)
     if (it == m_byMqtt.cend())
         return;
     for (int i : *it) {
+        heard(i);
         LinkTrack& t = *m_tracks[std::size_t(i)];
         // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
         if (t.def.direction == Direction::Mqtt2Ros) {
@@ -144,6 +165,7 @@ void LinkReader::addRosHead(const SourceHead& a)
         // A ROS 2 Header has no seq: its first bytes are the stamp.
         const bool hasSeq = a.graph == SourceGraph::Ros1;
         for (int i : *it) {
+            heard(i);
             LinkTrack& t = *m_tracks[std::size_t(i)];
             if (t.def.direction == Direction::Ros2Mqtt) {
                 t.src.add(a.receivedNs, a.size);
@@ -159,6 +181,7 @@ void LinkReader::addRosHead(const SourceHead& a)
         }
     } else if (const auto lt = m_byLatencyTopic.constFind(a.topic); lt != m_byLatencyTopic.cend()) {
         // std_msgs/Float64 in seconds, as mqtt_client publishes it.
+        heard(*lt);
         LinkTrack& t = *m_tracks[std::size_t(*lt)];
         if (const auto ns = StampCodec::decodeFloat64Seconds(a.head.left(8)); ns && !t.pipelineLatency)
             t.addLatency(a.receivedNs, double(*ns) / 1e6, LatencySource::LatencyTopic);
@@ -205,6 +228,7 @@ void LinkReader::addPipelineSample(const std::vector<qint64>& times, qint64 nowN
         LinkTrack& t = *m_tracks[std::size_t(i)];
         if (std::size_t(std::max(t.pipelineIn, t.pipelineOut)) >= times.size())
             continue; // a sample of another pipeline than the one set
+        heard(i);
         t.pipelineLatency = true;
         t.addLatency(nowNs,
                      double(times[std::size_t(t.pipelineOut)] - times[std::size_t(t.pipelineIn)]) / 1e6,

@@ -52,9 +52,14 @@ public:
     void add(const std::vector<SourceHead>& batch);
     /// Messages and pipeline samples read so far (whether they were a link's or not).
     quint64 read() const { return m_read; }
+    /// The links that heard something since the last call, each once (the monitor judges them).
+    std::vector<int> takeHeard();
 
 private:
     quint64 m_read = 0;
+    std::vector<int> m_heard;
+    /// Track `i` heard something: into m_heard unless it is there already.
+    void heard(int i);
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
     void indexPipeline();

@@ -6,6 +6,7 @@
 #include "watch/linktraffic.h"
 #include "watch/watchrules.h"
 
+#include <algorithm>
 #include <deque>
 #include <optional>
 
@@ -50,6 +51,24 @@ struct LinkTrack : LinkTraffic
     }
     bool judgedDormant = false; ///< dormant() when the judge last saw the link
     LinkBlindness judgedBlindness = LinkBlindness::None; ///< and its blindness then
+    qint64 judgedNs = 0; ///< when the judge last saw it
+    /// When a silence may change its verdict next (LinkJudge::quietNs; 0: not before a message).
+    qint64 judgeAtNs = 0;
+    qint64 queuedNs = 0; ///< the time of its entry in the monitor's deadlines (0: none)
+    bool heard = false; ///< in the reader's list of links heard since the judge last saw them
+    struct BridgeLiveness* bridge = nullptr; ///< the bridge that carries it (none: discovered)
+
+    /// How long after the last thing a link heard its figures stop moving: past every window.
+    static constexpr qint64 kStillNs = LinkWindows::kLatencyWindowNs + 2 * LinkWindows::kSecond;
+    /// Nothing arrived for longer than every window (both ends, latency, the watcher's sight and
+    /// a stall's end): a refresh would give the same figures again (LinkMonitor skips it).
+    bool still(qint64 nowNs) const
+    {
+        const qint64 last
+            = std::max({src.f.lastNs, dst.f.lastNs, latencies.empty() ? 0 : latencies.back().first,
+                        sightNs > 0 ? sightNs + LinkWindows::kSightMarginNs : 0, stallEndedNs});
+        return last > 0 && nowNs - last > kStillNs && !blind;
+    }
 
     int pipelineIn = -1; ///< index of PREFIX/in in the pipeline
     int pipelineOut = -1;

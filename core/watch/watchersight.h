@@ -16,6 +16,12 @@ class WatcherSight
 public:
     void setSeeing(SourceGraph graph, bool seeing) { m_blind[std::size_t(graph)] = !seeing; }
     bool sees(SourceGraph graph) const { return !m_blind[std::size_t(graph)]; }
+    /// The graphs it cannot see, one bit each (by SourceGraph): update() needs a pass over the links
+    /// only when this, the links or their graphs changed.
+    unsigned blindMask() const
+    {
+        return (m_blind[0] ? 1U : 0U) | (m_blind[1] ? 2U : 0U) | (m_blind[2] ? 4U : 0U);
+    }
     /// Each link's blindness at `nowNs`, from the graphs its sides are on: a link that loses sight
     /// forgets its windows, one that regains it counts from `nowNs`.
     /// Returns how many links' blindness changed.

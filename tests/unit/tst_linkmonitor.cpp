@@ -575,6 +575,62 @@ private slots:
         QVERIFY(m.judgements() - before < 10000 + 21 * 2);
     }
 
+    // Issue 44: links that heard and fell silent are judged when something can change (a message,
+    // a refresh while their windows move, a silence reaching a limit), not on every tick; past every
+    // window they cost nothing but their history point.
+    void heardThenSilentLinksAreJudgedOnTheirDeadlines()
+    {
+        LinkMonitor m;
+        constexpr int n = 1000;
+        QList<LinkDef> links;
+        for (int i = 0; i < n; ++i)
+            links << link(Direction::Ros2Mqtt, u"/fleet/t%1"_s.arg(i), u"fleet/t%1"_s.arg(i));
+        m.setLinks(links, kStart);
+        Clock clock {m};
+        const quint64 atStart = m.judgements();
+        qint64 lastSent = 0;
+        for (int k = 0; k < 30; ++k) { // 3 s at 10 Hz on every link, both ends, two ticks a message
+            std::vector<SourceHead> sent;
+            std::vector<MqttMessage> arrived;
+            for (int i = 0; i < n; ++i) {
+                sent.push_back(ros(u"/fleet/t%1"_s.arg(i), QByteArray(8, 'x'), clock.now));
+                arrived.push_back(mqtt(u"fleet/t%1"_s.arg(i), QByteArray(8, 'x'), clock.now + 2 * kMs));
+            }
+            lastSent = clock.now;
+            m.reader().add(sent);
+            fromBroker(m, arrived);
+            clock.advance(100 * kMs);
+        }
+        // Judged at the 30 ticks that heard and the 3 or 4 refreshes: not at all 60 ticks.
+        QVERIFY2(m.judgements() - atStart <= quint64(35 * n),
+                 qPrintable(QString::number(m.judgements() - atStart)));
+        QCOMPARE(m.level(0), LinkLevel::Ok);
+        // The source stops: source_stopped (3 s) is told at the first tick past its limit, not at
+        // the next refresh.
+        while (m.level(0) == LinkLevel::Ok && clock.now < lastSent + 5'000 * kMs)
+            clock.advance(50 * kMs);
+        QCOMPARE(m.reasons(0), QStringList {u"source_stopped"_s});
+        QVERIFY2(clock.now - lastSent > 3'000 * kMs && clock.now - lastSent <= 3'050 * kMs,
+                 qPrintable(QString::number(double(clock.now - lastSent) / 1e6)));
+        // Past every window: no judge, no refresh, nothing for the metrics; the history goes on.
+        clock.advance(LinkTrack::kStillNs + 2'000 * kMs);
+        const quint64 judged = m.judgements();
+        const quint64 activity = m.activity();
+        const std::size_t points = m.history(0).size();
+        clock.advance(10'000 * kMs);
+        QCOMPARE(m.judgements(), judged);
+        QCOMPARE(m.activity(), activity);
+        QVERIFY(m.history(0).size() >= points + 9);
+        QCOMPARE(m.history(0).back().level, LinkLevel::Warning);
+        QCOMPARE(m.level(0), LinkLevel::Warning);
+        // One link hears its source again: it alone is judged, and is ok again.
+        m.reader().add({ros(u"/fleet/t5"_s, QByteArray(8, 'x'), clock.now)});
+        clock.advance(50 * kMs);
+        QCOMPARE(m.judgements(), judged + 1);
+        QCOMPARE(m.level(5), LinkLevel::Ok);
+        QCOMPARE(m.level(6), LinkLevel::Warning);
+    }
+
     // Regression (issue 33): the Links table showed `10` beside `10.0` and `5.00` beside `25.0`; a
     // column's figures have one precision, whatever their size.
     void aColumnsFiguresHaveOnePrecision()
