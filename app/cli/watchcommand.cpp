@@ -5,7 +5,6 @@
 #include "app/cli/rosoptions.h"
 #include "app/cli/sourcecheck.h"
 #include "base/wallclock.h"
-#include "yaml/yamlreader.h"
 #include "config/configreader.h"
 #include "latency/pipeline.h"
 #include "models/mqtttopictree.h"
@@ -13,10 +12,13 @@
 #include "ros/rosmasterapi.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
+#include "watch/eventthrottle.h"
 #include "watch/livewatch.h"
 #include "watch/watchmetrics.h"
 #include "watch/watchsession.h"
+#include "yaml/yamlreader.h"
 
+#include <climits>
 #include <QCommandLineParser>
 #include <QFile>
 #include <QFileInfo>
@@ -349,7 +351,7 @@ struct WatchTally
 };
 
 /// The summary a watch ends with: a sentence on stderr, one JSON line on stdout ("event": "summary").
-void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts)
+void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts, quint64 heldBack)
 {
     const WatchTally t = WatchTally::of(monitor);
     err(Watch::tr("watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 "
@@ -378,7 +380,14 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
                                {u"ok"_s, t.levels[0]},
                                {u"warning"_s, t.levels[1]},
                                {u"alert"_s, t.levels[2]},
-                               {u"unknown"_s, t.unknown}};
+                               {u"unknown"_s, t.unknown},
+                               {u"held_back"_s, double(heldBack)}};
+    if (heldBack > 0)
+        err(Watch::tr("%n event line(s) held back by the storm bound (%1 a second after a burst of %2): "
+                      "counted in the held_back lines",
+                      nullptr, int(std::min<quint64>(heldBack, INT_MAX)))
+                .arg(EventThrottle::kPerSecond)
+                .arg(EventThrottle::kBurst));
     out(QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact)));
 }
 
@@ -438,6 +447,34 @@ bool prepareLive(LiveSession& live, const WatchRequest& request)
     return true;
 }
 
+/// The event lines, on stdout and in the --events-jsonl file: an event storm (thousands of links
+/// stalling at once) is bounded, the lines past the bucket counted and said once a second.
+struct EventLines
+{
+    QFile* file = nullptr;
+    EventThrottle throttle;
+
+    void write(const QJsonObject& o)
+    {
+        const QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+        out(QString::fromUtf8(line));
+        if (file->isOpen()) {
+            file->write(line + '\n');
+            file->flush();
+        }
+    }
+    void print(const WatchEvent& e)
+    {
+        if (throttle.admit(e, wallClockNs()))
+            write(e.toJson());
+    }
+    void sayHeldBack(EventThrottle::Line when)
+    {
+        if (const auto line = throttle.heldBackLine(wallClockNs(), when))
+            write(*line);
+    }
+};
+
 /// Watches until the time is up or Ctrl+C; events on stdout (and the file), a summary on stderr.
 int runWatch(const WatchRequest& request)
 {
@@ -477,16 +514,9 @@ int runWatch(const WatchRequest& request)
         ++eventsSeen;
         alertsSeen += e.level == LinkLevel::Alert;
     });
-    const auto print = [&events](const WatchEvent& e) {
-        const QByteArray line = QJsonDocument(e.toJson()).toJson(QJsonDocument::Compact);
-        out(QString::fromUtf8(line));
-        if (events.isOpen()) {
-            events.write(line + '\n');
-            events.flush();
-        }
-    };
-    QObject::connect(monitor, &LinkMonitor::eventStarted, print);
-    QObject::connect(monitor, &LinkMonitor::eventEnded, print);
+    EventLines lines {&events};
+    QObject::connect(monitor, &LinkMonitor::eventStarted, [&lines](const WatchEvent& e) { lines.print(e); });
+    QObject::connect(monitor, &LinkMonitor::eventEnded, [&lines](const WatchEvent& e) { lines.print(e); });
     // The metrics follow the counts four times a second (rates and percentiles change once a second).
     QTimer metricsTimer;
     if (metrics) {
@@ -509,12 +539,14 @@ int runWatch(const WatchRequest& request)
             return std::nullopt;
         },
         [&](qint64 elapsedMs) {
+            lines.sayHeldBack(EventThrottle::Line::Paced);
             sources.check(elapsedMs);
             if (elapsedMs / 1000 % 10 == 0)
                 err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get(), live.ros2()));
         });
     monitor->closeAll(wallClockNs());
-    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen);
+    lines.sayHeldBack(EventThrottle::Line::Last);
+    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen, lines.throttle.heldBack());
     if (recorder->isRecording()) {
         if (const Result<void> stopped = assembly.stopRecording(); !stopped) {
             err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));

@@ -8,11 +8,12 @@
 
 using namespace Qt::StringLiterals;
 
-namespace {
-QString isoTime(qint64 ns)
+QString WatchEvent::isoTime(qint64 ns)
 {
     return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000, Qt::UTC).toString(Qt::ISODateWithMs);
 }
+
+namespace {
 
 QJsonValue number(double v)
 {

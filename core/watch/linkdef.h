@@ -117,6 +117,8 @@ struct WatchEvent
     /// As a run file keeps it: the JSON line with the figures at start and (when ended) at end.
     RecordedEvent toRecorded() const;
     static QString levelName(LinkLevel level);
+    /// A time as events write it: ISO 8601, UTC, milliseconds.
+    static QString isoTime(qint64 ns);
 };
 
 /// "ros2mqtt" or "mqtt2ros", as events and the JSON name a direction.

@@ -17,6 +17,7 @@
 #include "ros/rosbytes.h"
 #include "ros/rosendpoint.h"
 #include "testservers.h"
+#include "watch/eventthrottle.h"
 #include "wire/mqttclientwire.h"
 
 #include <geometry_msgs/PointStamped.h>
@@ -577,6 +578,81 @@ private slots:
 
     /// Last: stops the watch. Every event it printed is in its run file, with the same start and
     /// end, and the report of the run lists them.
+    /// Issue 44: 1,500 links whose sources fall silent at once are an event storm. Past a burst
+    /// the lines are held back, counted by kind and reason in held_back lines: what was written
+    /// and what was held back add up to every event the watch saw (the summary's).
+    void anEventStormIsBoundedAndCounted()
+    {
+        constexpr int kLinks = 1500;
+        QString config
+            = u"broker:\n  host: 127.0.0.1\n  port: %1\nclient:\n  id: storm_bridge\nbridge:\n  mqtt2ros:\n"_s
+                  .arg(m_servers.mosquittoPort());
+        for (int i = 0; i < kLinks; ++i)
+            config += u"    - {mqtt_topic: storm/t%1, ros_topic: /storm/t%1, primitive: true}\n"_s.arg(i);
+        const QString path = m_servers.tempPath() + u"/storm.yaml"_s;
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly) && f.write(config.toUtf8()) > 0);
+        f.close();
+        const quint16 port = TestServers::freePort();
+        const QString jsonl = m_servers.tempPath() + u"/storm.jsonl"_s;
+        QProcess watch;
+        watch.setProcessEnvironment(m_servers.rosEnvironment());
+        watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"watch"_s, path, u"--ros-master"_s, m_servers.rosMasterUri(), u"--metrics"_s,
+                     u"127.0.0.1:%1"_s.arg(port), u"--events-jsonl"_s, jsonl});
+        QVERIFY(watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(port, 10000));
+        // Every source is heard (the watch's subscriptions are up), then all fall silent at once:
+        // source_stopped for every link 3 s later.
+        const auto sourcesHeard = [&] {
+            int n = 0;
+            for (const QByteArray& line : TestServers::httpGet(port, u"/metrics"_s).split('\n'))
+                n += line.startsWith("bridgescope_link_messages_total{") && line.contains("side=\"source\"")
+                    && !line.endsWith(" 0");
+            return n;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int i = 0; i < kLinks; ++i)
+                    m_mqtt->publish(u"storm/t%1"_s.arg(i), "x", 0, false);
+                return sourcesHeard() == kLinks;
+            }(),
+            30000);
+        QByteArray out;
+        QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).contains("\"event\":\"held_back\""),
+                                 20000);
+        watch.terminate(); // the stop ends every open event: a second storm, of ends
+        QVERIFY(watch.waitForFinished(20000));
+        QCOMPARE(watch.exitCode(), 0);
+        out += watch.readAllStandardOutput();
+        double written = 0, heldBack = 0, heldLines = 0;
+        QJsonObject summary;
+        for (const QByteArray& line : out.split('\n')) {
+            const QJsonObject o = QJsonDocument::fromJson(line).object();
+            const QString kind = o.value(u"event"_s).toString();
+            written += kind == u"start"_s || kind == u"end"_s;
+            if (kind == u"held_back"_s) {
+                heldBack += o.value(u"started"_s).toDouble() + o.value(u"ended"_s).toDouble();
+                heldLines += 1;
+                QVERIFY(o.value(u"reasons"_s).toObject().value(u"source_stopped"_s).toDouble() > 0);
+            }
+            if (kind == u"summary"_s)
+                summary = o;
+        }
+        const double events = summary.value(u"events"_s).toDouble();
+        QVERIFY2(events >= kLinks, qPrintable(QString::fromUtf8(QJsonDocument(summary).toJson())));
+        QCOMPARE(written + heldBack, 2 * events); // every event started and ended: written or counted
+        QCOMPARE(summary.value(u"held_back"_s).toDouble(), heldBack);
+        QVERIFY2(written <= EventThrottle::kBurst + 20 * EventThrottle::kPerSecond,
+                 qPrintable(QString::number(written)));
+        QVERIFY(heldLines >= 2 && heldLines <= 40);
+        // The events file holds the same lines as stdout.
+        QFile file(jsonl);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll().count('\n') + 1, out.count('\n')); // stdout has the summary too
+    }
+
     void theRunFileHoldsTheEvents()
     {
         m_watch.terminate();
