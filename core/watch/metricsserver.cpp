@@ -237,14 +237,18 @@ QByteArray MetricsServer::exposition(MetricsFormat format)
         std::lock_guard<std::mutex> lock(m_mutex);
         snapshot = m_snapshot;
     }
-    if (snapshot != m_answered || !m_answered) {
+    // An answer holds the snapshot and the server's own count of clients it dropped: either new
+    // makes it anew (the watch publishes only when its figures move).
+    const quint64 dropped = m_dropped.load();
+    if (snapshot != m_answered || !m_answered || dropped != m_answeredDropped) {
         m_answered = snapshot;
+        m_answeredDropped = dropped;
         for (QByteArray& a : m_answers)
             a.clear();
     }
     QByteArray& a = m_answers[format == MetricsFormat::OpenMetrics ? 1 : 0];
     if (a.isEmpty())
-        a = MetricsExposition::write(snapshot ? *snapshot : MetricsSnapshot {}, format, m_dropped.load());
+        a = MetricsExposition::write(snapshot ? *snapshot : MetricsSnapshot {}, format, dropped);
     return a;
 }
 

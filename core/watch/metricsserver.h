@@ -83,6 +83,7 @@ private:
     QList<QPointer<QTcpSocket>> m_clients; ///< on m_thread: open, oldest first
     std::shared_ptr<const MetricsSnapshot> m_answered; ///< on m_thread: the snapshot m_answers are of
     QByteArray m_answers[2]; ///< on m_thread: by MetricsFormat
+    quint64 m_answeredDropped = 0; ///< on m_thread: the dropped clients m_answers say
     std::mutex m_mutex;
     std::shared_ptr<const MetricsSnapshot> m_snapshot;
     std::atomic<quint64> m_served {0};

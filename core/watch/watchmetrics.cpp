@@ -24,7 +24,6 @@ struct WatchMetrics::Private
     quint64 linksVersion = ~quint64(0);
     quint64 activity = ~quint64(0); ///< LinkMonitor::activity() at the last update
     std::shared_ptr<const MetricsSnapshot> published;
-    quint64 droppedAtPublish = 0; ///< the server's dropped clients, which each answer says
     /// The label sets in use: two links whose bridge, topics and direction agree (the same link in two
     /// configs) would be one series twice, and Prometheus refuses a whole scrape for that.
     QSet<QByteArray> labelSets;
@@ -191,13 +190,11 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         if (last.historyEvicted == snapshot->historyEvicted && last.historyBytes == snapshot->historyBytes
             && last.untrackedTopicMessages == snapshot->untrackedTopicMessages
             && last.unwatchedLinks == snapshot->unwatchedLinks
-            && last.droppedAnnouncements == snapshot->droppedAnnouncements
-            && d->server->dropped() == d->droppedAtPublish)
+            && last.droppedAnnouncements == snapshot->droppedAnnouncements)
             return;
         snapshot->links = last.links;
         snapshot->bridges = last.bridges;
         d->published = snapshot;
-        d->droppedAtPublish = d->server->dropped();
         d->server->publish(std::move(snapshot));
         return;
     }
@@ -241,6 +238,5 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
                  s == LinkMonitor::BridgeState::Up});
     }
     d->published = snapshot;
-    d->droppedAtPublish = d->server->dropped();
     d->server->publish(std::move(snapshot));
 }

@@ -351,7 +351,13 @@ private slots:
         const QByteArray answer = TestServers::httpRequest(server->port(), "GET /metrics HTTP/1.1\r\n\r\n");
         qInfo("a scrape among 24 clients that do not read answered in %lld ms", t.elapsed());
         QVERIFY(answer.startsWith("HTTP/1.1 200"));
-        QCOMPARE(body(answer).size(), answerBytes);
+        // The same snapshot, and the server's own count of the clients it dropped, with no new
+        // snapshot published: the server says its drops in every answer itself.
+        const QByteArray expected = MetricsExposition::write(s, MetricsFormat::Text, server->dropped());
+        QCOMPARE(body(answer).size(), expected.size());
+        const QByteArray droppedLine
+            = "\nbridgescope_metrics_dropped_clients_total " + QByteArray::number(server->dropped()) + '\n';
+        QVERIFY(body(answer).contains(droppedLine));
         QCOMPARE(server->served(), served + 1);
     }
 
