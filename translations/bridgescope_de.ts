@@ -3247,6 +3247,10 @@ factors:
         <source>Why</source>
         <translation>Warum</translation>
     </message>
+    <message>
+        <source>Messages per second, the mean of the last %1 s (the window of the rate chart)</source>
+        <translation>Nachrichten pro Sekunde, Mittel der letzten %1 s (das Fenster des Ratendiagramms)</translation>
+    </message>
 </context>
 <context>
     <name>FleetSnapshotBuilder</name>

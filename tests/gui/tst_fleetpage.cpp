@@ -103,6 +103,13 @@ private slots:
         };
         QTRY_VERIFY_WITH_TIMEOUT(allCounted(), 20000);
         QApplication::processEvents();
+        // The links are discovered ones (their MQTT topic only): no source side, so no source rate.
+        QCOMPARE(columnTexts(table, FleetModel::SourceRateColumn), (QStringList {u"–"_s, u"–"_s}));
+        // The rates are the mean over the rate chart's window, and the header says so.
+        QVERIFY(table->model()
+                    ->headerData(FleetModel::DestinationRateColumn, Qt::Horizontal, Qt::ToolTipRole)
+                    .toString()
+                    .contains(u"last 60 s (the window of the rate chart)"_s));
         for (int c : {int(FleetModel::StateColumn), int(FleetModel::SourceRateColumn),
                       int(FleetModel::DestinationRateColumn), int(FleetModel::LossColumn),
                       int(FleetModel::P99Column)})

@@ -348,8 +348,8 @@ private slots:
     {
         QHash<QString, double> seen;
         QHash<QString, PrometheusAnswer> answers = twoHosts();
-        answers[u"rate"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"-5"_s},
-                                     {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"NaN"_s}});
+        answers[u"recent"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"-5"_s},
+                                       {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"NaN"_s}});
         answers[u"messages"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"1e300"_s}});
         answers[u"seen"_s] = vector({{link(u"a"_s, u"/s → s"_s), u"0"_s}});
         const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
@@ -360,6 +360,53 @@ private slots:
         const FleetLink* st = find(s, u"a"_s, u"/s → s"_s);
         QVERIFY(st->verdict.unknown);
         QCOMPARE(st->verdict.detail, u"unknown (the watch on a cannot see both sides)"_s);
+    }
+
+    /// A link slower than one message in the watch's 5 s: its 5-s rate is 0, the minute's mean is
+    /// not. The table shows the minute's mean, the window of the history's chart (it showed 0.0
+    /// beside a chart of 0.5 Hz).
+    void aSlowLinkShowsTheRateOfTheChartsWindow()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        answers[u"rate"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"0"_s},
+                                     {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"0"_s}});
+        answers[u"recent"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"30"_s},
+                                       {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"30"_s}});
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        const FleetLink* x = find(s, u"a"_s, u"/x → x"_s);
+        QCOMPARE(x->figures.source.rateHz, 0.5);
+        QCOMPARE(x->figures.destination.rateHz, 0.5);
+        // One window for both: the snapshot's increase and the history's rate.
+        QCOMPARE(FleetSnapshotBuilder::rateRange(), u"[60s]"_s);
+        bool recentInWindow = false;
+        for (const auto& [name, promql] : FleetSnapshotBuilder::queries())
+            recentInWindow
+                |= name == "recent"_L1 && promql.endsWith(FleetSnapshotBuilder::rateRange() + u')');
+        QVERIFY(recentInWindow);
+    }
+
+    /// A discovered link knows only its MQTT topic: it has no source side, so no source rate (NaN,
+    /// shown "–"), never 0.
+    void aDiscoveredLinkHasNoSourceRate()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        const QString name = u"only/mqtt"_s;
+        for (const QString& query : {u"links"_s, u"state"_s})
+            answers[query].series.append(vector({{link(u"a"_s, name), u"0"_s}}).series);
+        answers[u"rate"_s].series.append(vector({{link(u"a"_s, name, u"source"_s), u"0"_s},
+                                                 {link(u"a"_s, name, u"destination"_s), u"2"_s}})
+                                             .series);
+        answers[u"recent"_s].series.append(vector({{link(u"a"_s, name, u"source"_s), u"0"_s},
+                                                   {link(u"a"_s, name, u"destination"_s), u"120"_s}})
+                                               .series);
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        const FleetLink* d = find(s, u"a"_s, name);
+        QVERIFY(d);
+        QVERIFY(d->def.discovered);
+        QVERIFY2(std::isnan(d->figures.source.rateHz), qPrintable(QString::number(d->figures.source.rateHz)));
+        QCOMPARE(d->figures.destination.rateHz, 2.0);
     }
 
     void urlsAreCheckedSchemesRefused()

@@ -115,6 +115,10 @@ QVariant FleetModel::data(const QModelIndex& index, int role) const
 
 QVariant FleetModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
+    if (orientation == Qt::Horizontal && role == Qt::ToolTipRole
+        && (section == SourceRateColumn || section == DestinationRateColumn))
+        return tr("Messages per second, the mean of the last %1 s (the window of the rate chart)")
+            .arg(FleetSnapshotBuilder::kRateWindowSeconds);
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return {};
     switch (section) {
