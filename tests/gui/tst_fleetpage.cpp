@@ -17,6 +17,8 @@
 #include "widgets/links/fleetview.h"
 #include "widgets/links/linkspage.h"
 
+#include <QChart>
+#include <QChartView>
 #include <QComboBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -25,6 +27,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QXYSeries>
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
@@ -41,6 +44,14 @@ QStringList clientsOf(const WatchedFleet& fleet)
         out << (graph ? graph->nodes.join(u',') : u"no graph"_s);
     }
     return out;
+}
+
+/// The points the chart named `name` in `view` draws.
+int chartPoints(const QWidget& view, const QString& name)
+{
+    const QList<QAbstractSeries*> series = named<QChartView>(view, name)->chart()->series();
+    const auto* line = series.isEmpty() ? nullptr : qobject_cast<const QXYSeries*>(series.first());
+    return line ? int(line->count()) : 0;
 }
 
 /// The texts of `column` of the view's rows, in the order shown.
@@ -120,7 +131,7 @@ private slots:
             }
 
         // One watch stops: its host is not reporting, its link unknown and why.
-        QVERIFY(m_fleet.hosts[1].stopWatch());
+        QVERIFY(m_fleet.hosts[1].stop());
         QTRY_VERIFY_WITH_TIMEOUT(status->text().startsWith(u"Links: 2 on 2 hosts, 1 not reporting"_s), 30000);
         const QStringList hosts = columnTexts(table, FleetModel::HostColumn);
         const int edge = int(hosts.indexOf(u"edge-1"_s));
@@ -138,11 +149,12 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(ViewAudit::elidedFiguresIn(&window).isEmpty(), 5000);
         QVERIFY2(ViewAudit::elidedChartTexts(&window).isEmpty(),
                  qPrintable(ViewAudit::elidedChartTexts(&window).join(u'\n')));
-        if (const QByteArray png = qgetenv("FLEET_SCREENSHOT"); !png.isEmpty()) {
-            table->setCurrentIndex(table->model()->index(1 - edge, 0)); // the charts of the one reporting
-            QTest::qWait(1500); // the history's charts
+        // The selected link's history: both charts draw its points.
+        QTRY_VERIFY_WITH_TIMEOUT(chartPoints(*view, u"fleetRateChart"_s) > 0
+                                     && chartPoints(*view, u"fleetLatencyChart"_s) > 0,
+                                 15000);
+        if (const QByteArray png = qgetenv("FLEET_SCREENSHOT"); !png.isEmpty())
             QVERIFY(window.grab().save(QString::fromLocal8Bit(png)));
-        }
 
         // Nothing was asked of any host's broker or master: the window has no MQTT connection,
         // the masters no node they did not have (the edge's lost its watch).

@@ -164,7 +164,7 @@ private slots:
     /// A watch that stops: its host is not reporting, its links unknown, never ok.
     void aStoppedWatchsHostStoppedReporting()
     {
-        QVERIFY(m_fleet.hosts[1].stopWatch());
+        QVERIFY(m_fleet.hosts[1].stop());
         QTRY_VERIFY_WITH_TIMEOUT(refreshed(m_source) && hostOf(m_source.snapshot(), u"edge-1"_s)
                                      && !hostOf(m_source.snapshot(), u"edge-1"_s)->reporting,
                                  20000);
