@@ -3196,22 +3196,6 @@ factors:
 <context>
     <name>FleetModel</name>
     <message>
-        <source>unknown</source>
-        <translation>unbekannt</translation>
-    </message>
-    <message>
-        <source>ok</source>
-        <translation>ok</translation>
-    </message>
-    <message>
-        <source>warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <source>alert</source>
-        <translation>Alarm</translation>
-    </message>
-    <message>
         <source>Host</source>
         <translation>Rechner</translation>
     </message>
@@ -3246,6 +3230,10 @@ factors:
     <message>
         <source>Why</source>
         <translation>Warum</translation>
+    </message>
+    <message>
+        <source>Messages per second, the mean of the last %1 s (the window of the rate chart)</source>
+        <translation>Nachrichten pro Sekunde, Mittel der letzten %1 s (das Fenster des Ratendiagramms)</translation>
     </message>
 </context>
 <context>
@@ -3774,7 +3762,7 @@ factors:
     </message>
 </context>
 <context>
-    <name>LinkModel</name>
+    <name>LinkCells</name>
     <message>
         <source>ok</source>
         <translation>ok</translation>
@@ -3787,6 +3775,13 @@ factors:
         <source>alert</source>
         <translation>Alarm</translation>
     </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+</context>
+<context>
+    <name>LinkModel</name>
     <message>
         <source>%1 ended after %2 s</source>
         <translation>%1 endete nach %2 s</translation>

@@ -232,4 +232,11 @@ int parseCommand(QCommandLineParser& parser, const QStringList& args, const QStr
     return -1;
 }
 
+int parseCommand(QCommandLineParser& parser, QStringList arguments, const QString& command,
+                 const QString& description)
+{
+    arguments.replace(0, command);
+    return parseCommand(parser, arguments, description);
+}
+
 } // namespace CliOutput

@@ -31,6 +31,10 @@ int finish(int exitCode);
 /// Adds -h/--help and the description, parses `args` (args[0] names the command). Returns -1 to
 /// go on, ExitOk after printing the help, ExitUsage after printing the error.
 int parseCommand(QCommandLineParser& parser, const QStringList& args, const QString& description);
+/// parseCommand() of a command's `arguments` (as main passes them on), args[0] taken as `command`
+/// ("bridgescope rules"): the name its help and its errors give.
+int parseCommand(QCommandLineParser& parser, QStringList arguments, const QString& command,
+                 const QString& description);
 /// The word of `known` nearest to `word`, at most two edits away, or empty: "did you mean".
 QString closest(const QString& word, const QStringList& known);
 /// The options `parser` knows, as typed ("--output", "-o"), read from its help text.

@@ -109,10 +109,8 @@ int parseServe(const QStringList& arguments, ServeRequest* request)
                                      Clock::tr("Answer as a clock this many ms ahead (tests and demos)."),
                                      u"MS"_s, u"0"_s};
     parser.addOptions({name, broker, udp, offset});
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope clock serve"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope clock serve"_s,
         Clock::tr("Answers four-timestamp clock probes from other hosts (bridgescope clock probe) over the "
                   "broker on bridgescope/clock/NAME/probe and/or on a UDP port, "
                   "with this host's sync state from chrony or linuxptp when it can read it. Runs until "
@@ -297,10 +295,8 @@ int parseProbe(const QStringList& arguments, ProbeRequest* request)
                                        u"MS"_s, u"1000"_s};
     const QCommandLineOption json {u"json"_s, Clock::tr("Print one JSON document.")};
     parser.addOptions({udp, broker, host, count, interval, json});
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope clock probe"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope clock probe"_s,
         Clock::tr("Measures a far host's clock against ours with four-timestamp probes to its clock service "
                   "(bridgescope clock serve): the offset (far minus ours) with the interval it surely lies "
                   "in, the drift, the best round trip, and the far host's own sync state.\n"

@@ -13,22 +13,23 @@ namespace {
 class Rules
 {
     Q_DECLARE_TR_FUNCTIONS(Rules)
+public:
+    static QString help()
+    {
+        return tr("Prints the Prometheus rules for the metrics of watch --metrics: recording rules per "
+                  "link, bridge and host, and alerts (a bridge down, a link in alert or stalled, loss "
+                  "over 1 %, latency p99 over 100 ms, a host's watch gone). Save them where Prometheus "
+                  "reads its rule_files:\n"
+                  "  bridgescope rules > /etc/prometheus/bridgescope-rules.yml\n"
+                  "Exit status: 0 printed, 2 bad arguments or standard output cannot be written.");
+    }
 };
 } // namespace
 
 int runRulesCommand(const QStringList& arguments)
 {
     QCommandLineParser parser;
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope rules"_s);
-    const int parsed = CliOutput::parseCommand(
-        parser, args,
-        Rules::tr("Prints the Prometheus rules for the metrics of watch --metrics: recording rules per "
-                  "link, bridge and host, and alerts (a bridge down, a link in alert or stalled, loss "
-                  "over 1 %, latency p99 over 100 ms, a host's watch gone). Save them where Prometheus "
-                  "reads its rule_files:\n"
-                  "  bridgescope rules > /etc/prometheus/bridgescope-rules.yml\n"
-                  "Exit status: 0 printed, 2 bad arguments or standard output cannot be written."));
+    const int parsed = CliOutput::parseCommand(parser, arguments, u"bridgescope rules"_s, Rules::help());
     if (parsed >= 0)
         return parsed;
     if (!parser.positionalArguments().isEmpty()) {

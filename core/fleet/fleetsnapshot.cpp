@@ -13,7 +13,7 @@ constexpr qint64 kSecondNs = 1'000'000'000LL;
 /// The window of the watch's bridgescope_link_rate_hz.
 constexpr qint64 kRateWindowNs = 5 * kSecondNs;
 /// The window of the increase() queries.
-constexpr qint64 kRecentWindowNs = 60 * kSecondNs;
+constexpr qint64 kRecentWindowNs = FleetSnapshotBuilder::kRateWindowSeconds * kSecondNs;
 
 QString linkKey(const PrometheusAnswer::Series& s)
 {
@@ -85,7 +85,8 @@ LinkJudge::Verdict judge(const LinkRules& rules, const FleetLink& link, const Fi
 {
     LinkJudge::Input in;
     in.figures = link.figures;
-    const double sourceHz = f.sourceRate > 0 ? f.sourceRate : f.sourceRecent / 60.0;
+    const double sourceHz
+        = f.sourceRate > 0 ? f.sourceRate : f.sourceRecent / FleetSnapshotBuilder::kRateWindowSeconds;
     in.periodNs = sourceHz > 0 ? qint64(1e9 / sourceHz) : 0;
     in.sourceSilenceNs = silenceNs(f.sourceRate, f.sourceRecent, f.sourceMessages, in.periodNs);
     in.destinationSilenceNs
@@ -203,14 +204,19 @@ QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
         {u"bytes"_s, u"bridgescope_link_bytes_total"_s},
         {u"lost"_s, u"bridgescope_link_lost_total"_s},
         {u"stalls"_s, u"bridgescope_link_stalls_total"_s},
-        {u"recent"_s, u"increase(bridgescope_link_messages_total[1m])"_s},
-        {u"recentLost"_s, u"increase(bridgescope_link_lost_total[1m])"_s},
+        {u"recent"_s, u"increase(bridgescope_link_messages_total%1)"_s.arg(rateRange())},
+        {u"recentLost"_s, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange())},
         {u"p50"_s, quantile.arg(u"0.5"_s)},
         {u"p99"_s, quantile.arg(u"0.99"_s)},
         {u"bridges"_s, u"bridgescope_bridge_up"_s},
         {u"info"_s, u"bridgescope_watch_info"_s},
         {u"lastSeen"_s, u"max by (host) (max_over_time(timestamp(bridgescope_watch_info)[1h:15s]))"_s},
     };
+}
+
+QString FleetSnapshotBuilder::rateRange()
+{
+    return u"[%1s]"_s.arg(kRateWindowSeconds);
 }
 
 LinkDef FleetSnapshotBuilder::linkDef(const QString& bridge, const QString& link, const QString& direction)
@@ -265,8 +271,10 @@ FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>
     for (FleetLink& l : links) {
         const Figures& f = figures[l.key()];
         LinkFigures& lf = l.figures;
-        lf.source.rateHz = f.sourceRate;
-        lf.destination.rateHz = f.destinationRate;
+        // The mean over the chart's window (the watch's own 5-s rate is 0 for a slow link); a
+        // discovered link has no source side to give a rate of.
+        lf.source.rateHz = l.def.discovered ? qQNaN() : f.sourceRecent / kRateWindowSeconds;
+        lf.destination.rateHz = f.destinationRecent / kRateWindowSeconds;
         lf.source.messages = whole(f.sourceMessages);
         lf.destination.messages = whole(f.destinationMessages);
         lf.source.bytes = whole(f.sourceBytes);

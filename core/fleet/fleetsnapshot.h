@@ -50,10 +50,17 @@ struct FleetSnapshot
 ///
 /// Prometheus does not keep the times of a link's last messages; its silences are estimated from
 /// the watch's 5-second rates and the counters' increase over the last minute (see build()).
+/// The rates a link shows are its counters' mean over kRateWindowSeconds, the window of the
+/// history's chart too: a link slower than one message in 5 s is not shown as 0 Hz beside a chart
+/// that draws it.
 class FleetSnapshotBuilder
 {
     Q_DECLARE_TR_FUNCTIONS(FleetSnapshotBuilder)
 public:
+    /// The window of the rates shown, in the table and in the history's chart.
+    static constexpr int kRateWindowSeconds = 60;
+    /// kRateWindowSeconds as a PromQL range: "[60s]".
+    static QString rateRange();
     /// A name and its PromQL, asked together at each refresh.
     static QList<std::pair<QString, QString>> queries();
     /// `hostsSeen`: each host's last sighting from earlier refreshes, updated. A host seen before

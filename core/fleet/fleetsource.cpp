@@ -64,8 +64,9 @@ void FleetSource::history(const FleetLink& link, double now, double minutes, dou
     const QString selector = u"host=%1,bridge=%2,link=%3,direction=%4"_s.arg(
         PrometheusClient::quoted(link.host), PrometheusClient::quoted(link.bridge),
         PrometheusClient::quoted(link.link), PrometheusClient::quoted(link.direction));
-    const QString rate
-        = u"rate(bridgescope_link_messages_total{%1,side=\"destination\"}[1m])"_s.arg(selector);
+    // The table's window (FleetSnapshotBuilder::kRateWindowSeconds): the chart draws what it shows.
+    const QString rate = u"rate(bridgescope_link_messages_total{%1,side=\"destination\"}%2)"_s.arg(
+        selector, FleetSnapshotBuilder::rateRange());
     const QString p99 = u"1000 * histogram_quantile(0.99, sum by (le) "
                         "(rate(bridgescope_link_latency_seconds_bucket{%1}[1m])))"_s.arg(selector);
     auto result = std::make_shared<FleetHistory>();

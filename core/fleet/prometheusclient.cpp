@@ -140,7 +140,10 @@ bool PrometheusClient::take(QNetworkReply* reply)
     auto it = m_replies.find(reply);
     if (it == m_replies.end())
         return false;
-    if (it->second.body.size() + reply->bytesAvailable() > m_maxBytes) {
+    // An answer that announces more than the bound is refused before its body is read.
+    const QVariant announced = reply->header(QNetworkRequest::ContentLengthHeader);
+    if (it->second.body.size() + reply->bytesAvailable() > m_maxBytes
+        || (announced.isValid() && announced.toLongLong() > m_maxBytes)) {
         finish(
             reply, {},
             tr("the answer is larger than %1 MiB: refused").arg(double(m_maxBytes) / 1048576.0, 0, 'g', 3));

@@ -101,12 +101,43 @@ private slots:
             QCOMPARE(double(l->figures.stalls), own(h, u"bridgescope_link_stalls_total"_s));
             QVERIFY(!l->verdict.unknown);
             QVERIFY(l->hostReporting);
+            // A discovered link (its MQTT topic only): no source side, no source rate, not 0.
+            QVERIFY(l->def.discovered);
+            QVERIFY2(std::isnan(l->figures.source.rateHz),
+                     qPrintable(QString::number(l->figures.source.rateHz)));
         }
         // The p99 from the histograms, in the bucket the backdates put it: 3 s in (2.5, 5], 6 s in (5, 10].
         const double vehicleP99 = linkOf(s, u"vehicle-1"_s)->figures.latencyP99Ms;
         const double edgeP99 = linkOf(s, u"edge-1"_s)->figures.latencyP99Ms;
         QVERIFY2(vehicleP99 > 2500 && vehicleP99 <= 5000, qPrintable(QString::number(vehicleP99)));
         QVERIFY2(edgeP99 > 5000 && edgeP99 <= 10000, qPrintable(QString::number(edgeP99)));
+    }
+
+    /// The table's rate is the chart's: once the watch's own 5-s rate of the edge's burst is 0 (a
+    /// link slower than a message in 5 s), the table still shows what the chart draws, not 0.0.
+    void theTablesRateIsTheChartsRate()
+    {
+        const QString fiveSeconds
+            = u"bridgescope_link_rate_hz{host=\"edge-1\",link=\"fleet/stamped\",side=\"destination\"}"_s;
+        QTRY_COMPARE_WITH_TIMEOUT(m_fleet.prometheus.value(fiveSeconds), 0.0, 20000);
+        QVERIFY(refreshed(m_source));
+        const double now = double(QDateTime::currentMSecsSinceEpoch()) / 1000.0;
+        const FleetLink link = *linkOf(m_source.snapshot(), u"edge-1"_s);
+        FleetHistory history;
+        bool done = false;
+        m_source.history(link, now, 5, 1, [&](const FleetHistory& h) {
+            history = h;
+            done = true;
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(done, 15000);
+        QVERIFY2(history.error.isEmpty(), qPrintable(history.error));
+        QVERIFY(!history.destinationRateHz.isEmpty());
+        const double table = link.figures.destination.rateHz;
+        const double chart = history.destinationRateHz.constLast().value;
+        QVERIFY2(table > 0, "the minute still holds the 72 messages");
+        // The same window a moment apart: within a scrape's share of it.
+        QVERIFY2(std::abs(table - chart) <= 0.25 * chart,
+                 qPrintable(u"table %1 Hz, chart %2 Hz"_s.arg(table).arg(chart)));
     }
 
     /// The link's history from query_range: the destination's rate over the last minutes.
@@ -133,7 +164,7 @@ private slots:
     /// A watch that stops: its host is not reporting, its links unknown, never ok.
     void aStoppedWatchsHostStoppedReporting()
     {
-        QVERIFY(m_fleet.hosts[1].stopWatch());
+        QVERIFY(m_fleet.hosts[1].stop());
         QTRY_VERIFY_WITH_TIMEOUT(refreshed(m_source) && hostOf(m_source.snapshot(), u"edge-1"_s)
                                      && !hostOf(m_source.snapshot(), u"edge-1"_s)->reporting,
                                  20000);

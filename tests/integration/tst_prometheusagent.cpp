@@ -7,8 +7,8 @@
 // - two lab servers scrape one watch each and a central one federates bridgescope_* from both (the
 //   shipped federation.yml): it holds every link of both watches, with their host and counts.
 #include "prometheusserver.h"
-#include "scrapedhost.h"
 #include "tcprelay.h"
+#include "watchedhost.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -60,7 +60,7 @@ class TestPrometheusAgent : public QObject
 {
     Q_OBJECT
 
-    ScrapedHost m_hosts[2];
+    WatchedHost m_hosts[2];
     const QStringList m_links[2] {{u"fleet/stamped"_s, u"fleet/pose"_s, u"fleet/scan"_s},
                                   {u"fleet/stamped"_s, u"fleet/map"_s}};
 
@@ -119,7 +119,7 @@ private slots:
 
     void cleanupTestCase()
     {
-        for (ScrapedHost& h : m_hosts)
+        for (WatchedHost& h : m_hosts)
             h.stop();
     }
 
@@ -127,7 +127,7 @@ private slots:
     /// messages; once it is back, the lab holds every scrape of the outage and the watch's counts.
     void agentKeepsTheOutageForTheLab()
     {
-        ScrapedHost& vehicle = m_hosts[0];
+        WatchedHost& vehicle = m_hosts[0];
         PrometheusServer lab;
         QVERIFY2(lab.start(u"global:\n  scrape_interval: 1s\n"_s, {u"--web.enable-remote-write-receiver"_s}),
                  qPrintable(lab.errorString()));
@@ -253,7 +253,7 @@ private slots:
         for (int i = 0; i < 2; ++i)
             publishAndCount(i, 4 + i);
         for (int i = 0; i < 2; ++i) {
-            const ScrapedHost& h = m_hosts[i];
+            const WatchedHost& h = m_hosts[i];
             QCOMPARE(h.watchLinks(), int(m_links[i].size()));
             QTRY_COMPARE_WITH_TIMEOUT(
                 central.value(u"count by (host) (bridgescope_link_state{host=\"%1\"})"_s.arg(h.name)),

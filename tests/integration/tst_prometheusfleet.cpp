@@ -144,7 +144,7 @@ private slots:
             qPrintable(QString::number(p99)), 15000);
         QVERIFY(m_prometheus.query(u"ALERTS{alertname=\"BridgescopeWatchDown\"}"_s).isEmpty());
         WatchedHost& stopped = m_hosts[1];
-        QVERIFY(stopped.stopWatch());
+        QVERIFY(stopped.stop());
         // Pending first (its `for:` is 2 minutes): the alert is there and names the stopped host.
         QTRY_VERIFY_WITH_TIMEOUT(
             !m_prometheus.query(u"ALERTS{alertname=\"BridgescopeWatchDown\"}"_s).isEmpty(), 15000);

@@ -35,10 +35,22 @@ bool PrometheusServer::start(const QString& configYaml, const QStringList& extra
         args << u"--storage.tsdb.path="_s + m_dir.filePath(u"data"_s);
     else
         args << u"--storage.agent.path="_s + m_dir.filePath(u"agent"_s);
+    m_args = args + extraArgs;
+    return launch();
+}
+
+bool PrometheusServer::restart()
+{
+    stop();
+    return launch();
+}
+
+bool PrometheusServer::launch()
+{
     m_process = std::make_unique<QProcess>();
     m_process->setProgram(QString::fromLatin1(kProgram));
-    m_process->setArguments(args + extraArgs);
-    m_process->setStandardOutputFile(m_dir.filePath(u"log"_s));
+    m_process->setArguments(m_args);
+    m_process->setStandardOutputFile(m_dir.filePath(u"log"_s), QIODevice::Append); // a restart adds
     m_process->setStandardErrorFile(m_dir.filePath(u"log"_s), QIODevice::Append);
     m_process->setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGTERM); });
     m_process->start();

@@ -17,7 +17,11 @@ public:
     /// Writes `configYaml` and starts the server with `extraArgs` (e.g. --enable-feature=agent);
     /// false with errorString() when it did not answer /-/ready within 30 s.
     bool start(const QString& configYaml, const QStringList& extraArgs = {});
+    /// After stop(): the same server again, on the same port with the same data (a restart, as an
+    /// operator's); false with errorString() as start().
+    bool restart();
     void stop();
+    bool isRunning() const { return m_process && m_process->state() == QProcess::Running; }
     ~PrometheusServer();
     quint16 port() const { return m_port; }
     QString address() const; ///< 127.0.0.1:PORT
@@ -31,7 +35,10 @@ public:
     QByteArray get(const QString& pathAndQuery) const;
 
 private:
+    bool launch();
+
     QTemporaryDir m_dir;
+    QStringList m_args;
     std::unique_ptr<QProcess> m_process;
     quint16 m_port = 0;
     QString m_error;

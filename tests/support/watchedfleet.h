@@ -28,7 +28,7 @@ struct WatchedFleet
     {
         prometheus.stop();
         for (WatchedHost& h : hosts)
-            h.stopWatch();
+            h.stop();
     }
 
     /// Until both watches discovered the stamped link from its retained type announcement, and

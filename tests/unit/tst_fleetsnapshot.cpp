@@ -3,8 +3,11 @@
 // FleetSnapshotBuilder's mapping and judging, and PrometheusClient's bounds against a small HTTP
 // server of the test's own that answers too much, too late or not at all.
 #include "fleet/fleetsnapshot.h"
+#include "fleet/fleetsource.h"
 #include "fleet/prometheusclient.h"
+#include "peakrss.h"
 
+#include <memory>
 #include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -122,6 +125,50 @@ public:
         listen(QHostAddress::LocalHost);
     }
     QUrl url() const { return QUrl(u"http://127.0.0.1:%1"_s.arg(serverPort())); }
+};
+
+/// A hostile HTTP server: every request gets a body past any budget, 1 MiB at a time as the client
+/// takes it: `kLength` bytes announced in Content-Length, or (endless) no length and no end.
+class FloodServer : public QTcpServer
+{
+public:
+    static constexpr qint64 kChunk = 1 << 20;
+    static constexpr qint64 kLength = qint64(48) << 20;
+    qint64 written = 0; ///< body bytes, all connections
+    qint64 most = 0; ///< body bytes of the connection that took the most
+    explicit FloodServer(bool endless)
+    {
+        connect(this, &QTcpServer::newConnection, this, [this, endless] {
+            while (QTcpSocket* s = nextPendingConnection()) {
+                auto sent = std::make_shared<qint64>(-1); // -1: not asked yet
+                const auto feed = [this, s, sent, endless] {
+                    while (*sent >= 0 && s->bytesToWrite() < kChunk && (endless || *sent < kLength)) {
+                        s->write(m_chunk);
+                        *sent += kChunk;
+                        written += kChunk;
+                        most = std::max(most, *sent);
+                    }
+                };
+                connect(s, &QTcpSocket::readyRead, s, [s, sent, feed, endless] {
+                    if (!s->readAll().contains("\r\n\r\n") || *sent >= 0)
+                        return;
+                    s->write("HTTP/1.1 200 OK\r\nContent-Type: application/json\r\n"
+                             + (endless ? QByteArray("Connection: close\r\n")
+                                        : "Content-Length: " + QByteArray::number(kLength) + "\r\n")
+                             + "\r\n");
+                    *sent = 0;
+                    feed();
+                });
+                connect(s, &QTcpSocket::bytesWritten, s, feed);
+                connect(s, &QTcpSocket::disconnected, s, &QObject::deleteLater);
+            }
+        });
+        listen(QHostAddress::LocalHost);
+    }
+    QUrl url() const { return QUrl(u"http://127.0.0.1:%1"_s.arg(serverPort())); }
+
+private:
+    const QByteArray m_chunk = QByteArray(kChunk, ' ');
 };
 
 QByteArray http(const QByteArray& body)
@@ -348,8 +395,8 @@ private slots:
     {
         QHash<QString, double> seen;
         QHash<QString, PrometheusAnswer> answers = twoHosts();
-        answers[u"rate"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"-5"_s},
-                                     {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"NaN"_s}});
+        answers[u"recent"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"-5"_s},
+                                       {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"NaN"_s}});
         answers[u"messages"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"1e300"_s}});
         answers[u"seen"_s] = vector({{link(u"a"_s, u"/s → s"_s), u"0"_s}});
         const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
@@ -360,6 +407,53 @@ private slots:
         const FleetLink* st = find(s, u"a"_s, u"/s → s"_s);
         QVERIFY(st->verdict.unknown);
         QCOMPARE(st->verdict.detail, u"unknown (the watch on a cannot see both sides)"_s);
+    }
+
+    /// A link slower than one message in the watch's 5 s: its 5-s rate is 0, the minute's mean is
+    /// not. The table shows the minute's mean, the window of the history's chart (it showed 0.0
+    /// beside a chart of 0.5 Hz).
+    void aSlowLinkShowsTheRateOfTheChartsWindow()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        answers[u"rate"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"0"_s},
+                                     {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"0"_s}});
+        answers[u"recent"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"30"_s},
+                                       {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"30"_s}});
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        const FleetLink* x = find(s, u"a"_s, u"/x → x"_s);
+        QCOMPARE(x->figures.source.rateHz, 0.5);
+        QCOMPARE(x->figures.destination.rateHz, 0.5);
+        // One window for both: the snapshot's increase and the history's rate.
+        QCOMPARE(FleetSnapshotBuilder::rateRange(), u"[60s]"_s);
+        bool recentInWindow = false;
+        for (const auto& [name, promql] : FleetSnapshotBuilder::queries())
+            recentInWindow
+                |= name == "recent"_L1 && promql.endsWith(FleetSnapshotBuilder::rateRange() + u')');
+        QVERIFY(recentInWindow);
+    }
+
+    /// A discovered link knows only its MQTT topic: it has no source side, so no source rate (NaN,
+    /// shown "–"), never 0.
+    void aDiscoveredLinkHasNoSourceRate()
+    {
+        QHash<QString, double> seen;
+        QHash<QString, PrometheusAnswer> answers = twoHosts();
+        const QString name = u"only/mqtt"_s;
+        for (const QString& query : {u"links"_s, u"state"_s})
+            answers[query].series.append(vector({{link(u"a"_s, name), u"0"_s}}).series);
+        answers[u"rate"_s].series.append(vector({{link(u"a"_s, name, u"source"_s), u"0"_s},
+                                                 {link(u"a"_s, name, u"destination"_s), u"2"_s}})
+                                             .series);
+        answers[u"recent"_s].series.append(vector({{link(u"a"_s, name, u"source"_s), u"0"_s},
+                                                   {link(u"a"_s, name, u"destination"_s), u"120"_s}})
+                                               .series);
+        const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
+        const FleetLink* d = find(s, u"a"_s, name);
+        QVERIFY(d);
+        QVERIFY(d->def.discovered);
+        QVERIFY2(std::isnan(d->figures.source.rateHz), qPrintable(QString::number(d->figures.source.rateHz)));
+        QCOMPARE(d->figures.destination.rateHz, 2.0);
     }
 
     void urlsAreCheckedSchemesRefused()
@@ -392,6 +486,52 @@ private slots:
         const PrometheusAnswer b = ask(client);
         QVERIFY2(b.ok(), qPrintable(b.error));
         QCOMPARE(client.failures(), 1u);
+    }
+
+    /// A server that answers every query of a refresh with more than 32 MiB (announced, or endless):
+    /// each answer is refused at its budget, counted, the refresh says so, and this process's
+    /// memory stays bounded while the whole refresh is refused.
+    void aHugeOrEndlessAnswerIsRefusedAtItsBudget_data()
+    {
+        QTest::addColumn<bool>("endless");
+        QTest::newRow("48 MiB announced") << false;
+        QTest::newRow("endless") << true;
+    }
+    void aHugeOrEndlessAnswerIsRefusedAtItsBudget()
+    {
+        QFETCH(bool, endless);
+        FloodServer server(endless);
+        FleetSource source;
+        source.setServer(server.url());
+        source.client()->setTimeoutMs(60000); // the budget of bytes is under test, not the one of time
+        QVERIFY(PeakRss::reset());
+        const qint64 before = PeakRss::of();
+        QSignalSpy refreshed(&source, &FleetSource::refreshed);
+        source.refresh();
+        QVERIFY(refreshed.wait(120000));
+        const qint64 grew = PeakRss::of() - before;
+        qInfo("%lld MiB sent, at most %lld MiB on one connection; peak RSS grew by %lld MiB",
+              server.written >> 20, server.most >> 20, grew >> 20);
+        const qint64 queries = FleetSnapshotBuilder::queries().size();
+        QCOMPARE(source.client()->failures(), quint64(queries));
+        QCOMPARE(source.refreshes(), 1u);
+        QVERIFY2(source.error().startsWith(u"cannot read the fleet from %1: "_s.arg(server.url().toString())),
+                 qPrintable(source.error()));
+        QVERIFY2(source.error().endsWith(u"the answer is larger than 32 MiB: refused"_s),
+                 qPrintable(source.error()));
+        QVERIFY(source.snapshot().links.isEmpty());
+        // An endless answer is read up to its budget: at most `kParallel` budgets at a time (a
+        // QByteArray grows by half again) and the buffers on the way. One that announces more
+        // than its budget is refused before its body is read: the buffers only.
+        constexpr qint64 kParallel = 6; // QNetworkAccessManager's connections to one host
+        const qint64 buffers = qint64(32) << 20;
+        const qint64 bound
+            = endless ? kParallel * PrometheusClient::kMaxAnswerBytes * 3 / 2 + buffers : buffers;
+        if (endless)
+            QVERIFY2(server.most >= PrometheusClient::kMaxAnswerBytes,
+                     "the budget was reached, not a short read");
+        QVERIFY2(grew < bound + PeakRss::kSanitizerSlack,
+                 qPrintable(u"peak RSS grew by %1 MiB, bound %2 MiB"_s.arg(grew >> 20).arg(bound >> 20)));
     }
 
     void aSilentServerTimesOutAnAbsentOneIsSaid()

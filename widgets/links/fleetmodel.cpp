@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "fleetmodel.h"
 
-#include <cmath>
-#include <QLocale>
+#include "widgets/links/linkcells.h"
 
 using namespace Qt::StringLiterals;
 
 namespace {
 QString figure(double v, int decimals)
 {
-    return std::isfinite(v) ? QLocale().toString(v, 'f', decimals) : u"–"_s;
+    return LinkCells::figure(v, decimals, QLocale());
 }
 } // namespace
 
@@ -46,17 +45,7 @@ int FleetModel::columnCount(const QModelIndex& parent) const
 
 QString FleetModel::stateText(const FleetLink& link)
 {
-    if (link.verdict.unknown)
-        return tr("unknown");
-    switch (link.verdict.level) {
-    case LinkLevel::Ok:
-        return tr("ok");
-    case LinkLevel::Warning:
-        return tr("warning");
-    case LinkLevel::Alert:
-        return tr("alert");
-    }
-    return {};
+    return LinkCells::stateText(link.verdict);
 }
 
 QVariant FleetModel::data(const QModelIndex& index, int role) const
@@ -84,7 +73,7 @@ QVariant FleetModel::data(const QModelIndex& index, int role) const
         }
     }
     if (role == Qt::TextAlignmentRole && index.column() >= SourceRateColumn && index.column() <= P99Column)
-        return int(Qt::AlignRight | Qt::AlignVCenter);
+        return LinkCells::figureAlignment();
     if (role == Qt::ToolTipRole)
         return l->verdict.detail.isEmpty() ? QVariant() : QVariant(l->verdict.detail);
     if (role != Qt::DisplayRole)
@@ -115,6 +104,10 @@ QVariant FleetModel::data(const QModelIndex& index, int role) const
 
 QVariant FleetModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
+    if (orientation == Qt::Horizontal && role == Qt::ToolTipRole
+        && (section == SourceRateColumn || section == DestinationRateColumn))
+        return tr("Messages per second, the mean of the last %1 s (the window of the rate chart)")
+            .arg(FleetSnapshotBuilder::kRateWindowSeconds);
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return {};
     switch (section) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "linkmodel.h"
 
+#include "widgets/links/linkcells.h"
+
 #include <QDateTime>
 
 using namespace Qt::StringLiterals;
@@ -8,11 +10,6 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr int kHistorySeconds = 300;
 constexpr qsizetype kMaxEvents = 10000;
-
-QString figure(double v, int decimals)
-{
-    return std::isfinite(v) ? QString::number(v, 'f', decimals) : u"–"_s;
-}
 
 /// The decimals every figure of a column is shown with: one precision per column (`10` beside
 /// `10.0` reads as two kinds of figure), as many as the column's largest figure leaves room for.
@@ -22,19 +19,6 @@ int columnDecimals(double largest, int mostDecimals)
     for (double limit = 10; decimals > 0 && largest >= limit; limit *= 100)
         --decimals;
     return decimals;
-}
-
-QString levelText(LinkLevel l)
-{
-    switch (l) {
-    case LinkLevel::Ok:
-        return LinkModel::tr("ok");
-    case LinkLevel::Warning:
-        return LinkModel::tr("warning");
-    case LinkLevel::Alert:
-        return LinkModel::tr("alert");
-    }
-    return QString();
 }
 
 QString timeText(qint64 ns)
@@ -175,15 +159,16 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
         return tip;
     }
     if (role == Qt::TextAlignmentRole && index.column() >= SourceRateColumn && index.column() <= P99Column)
-        return int(Qt::AlignRight | Qt::AlignVCenter);
+        return LinkCells::figureAlignment();
     if (role == ValueRole || role == Qt::DisplayRole) {
         const bool value = role == ValueRole;
         switch (index.column()) {
         case StateColumn:
             if (!r.unknown.isEmpty())
                 return value ? QVariant(UnknownLevel) : QVariant(r.unknown);
-            return value ? QVariant(int(r.level))
-                         : QVariant(r.reasons.isEmpty() ? levelText(r.level) : r.reasons.join(u", "_s));
+            return value
+                ? QVariant(int(r.level))
+                : QVariant(r.reasons.isEmpty() ? LinkCells::levelText(r.level) : r.reasons.join(u", "_s));
         case BridgeColumn:
             return d.bridge();
         case DirectionColumn:
@@ -194,18 +179,21 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
         case DestinationColumn:
             return d.destinationTopic();
         case SourceRateColumn:
-            return value ? QVariant(f.source.rateHz) : QVariant(figure(f.source.rateHz, m_rateDecimals));
+            return value ? QVariant(f.source.rateHz)
+                         : QVariant(LinkCells::figure(f.source.rateHz, m_rateDecimals));
         case DestinationRateColumn:
             return value ? QVariant(f.destination.rateHz)
-                         : QVariant(figure(f.destination.rateHz, m_rateDecimals));
+                         : QVariant(LinkCells::figure(f.destination.rateHz, m_rateDecimals));
         case LossColumn:
             return value ? QVariant(f.lossPercent)
                          : QVariant(f.lost > 0 ? tr("%1 % (%2)").arg(f.lossPercent, 0, 'f', 1).arg(f.lost)
                                                : tr("%1 %").arg(f.lossPercent, 0, 'f', 1));
         case P50Column:
-            return value ? QVariant(f.latencyP50Ms) : QVariant(figure(f.latencyP50Ms, m_msDecimals));
+            return value ? QVariant(f.latencyP50Ms)
+                         : QVariant(LinkCells::figure(f.latencyP50Ms, m_msDecimals));
         case P99Column:
-            return value ? QVariant(f.latencyP99Ms) : QVariant(figure(f.latencyP99Ms, m_msDecimals));
+            return value ? QVariant(f.latencyP99Ms)
+                         : QVariant(LinkCells::figure(f.latencyP99Ms, m_msDecimals));
         case HistoryColumn:
             return value ? QVariant(f.destination.rateHz) : QVariant();
         case LastEventColumn:
@@ -290,7 +278,8 @@ QVariant EventLogModel::data(const QModelIndex& index, int role) const
     case TimeColumn:
         return timeText(e.endNs > 0 ? e.endNs : e.startNs);
     case LevelColumn:
-        return e.endNs > 0 ? tr("%1 ended").arg(levelText(e.level)) : levelText(e.level);
+        return e.endNs > 0 ? tr("%1 ended").arg(LinkCells::levelText(e.level))
+                           : LinkCells::levelText(e.level);
     case SubjectColumn:
         return e.subject.startsWith(u"bridge:"_s)
             ? tr("bridge %1").arg(e.subject.mid(7))
