@@ -305,9 +305,8 @@ std::pair<double, qsizetype> promtoolMs(const QString& url, bool atOnce)
     }
     return {double(t.nsecsElapsed()) / 1e6, bytes};
 }
-} // namespace
 
-namespace {
+/// One load of the fleet view, in ms from the URL set.
 struct ViewLoad
 {
     double refreshedMs = -1; ///< until the source's snapshot and the model's rows
