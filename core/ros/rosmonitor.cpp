@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
-#include <atomic>
-
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "latency/headhub.h"
@@ -10,6 +8,8 @@
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
 
+#include <atomic>
+#include <deque>
 #include <mutex>
 #include <QPointer>
 #include <QSet>
@@ -45,6 +45,7 @@ struct RosMonitor::Private
     mutable std::mutex mutex;
     QHash<QString, TopicState> topics;
     std::atomic<quint64> typesLearned {0};
+    std::deque<LearnedType> learned; ///< under `mutex`: the last kMaxLearnedKept learned types
     QHash<QString, int> wanted; ///< monitor() calls not yet balanced by unmonitor(), per topic
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
@@ -69,6 +70,9 @@ struct RosMonitor::Private
             t.stats.type = QString::fromStdString(msg->getDataType());
             t.stats.md5 = QString::fromStdString(msg->getMD5Sum());
             t.stats.definition = QString::fromStdString(msg->getMessageDefinition());
+            learned.push_back({topic, t.stats.type, t.stats.definition});
+            if (learned.size() > kMaxLearnedKept)
+                learned.pop_front();
             ++typesLearned;
         }
         if (heads.active())
@@ -207,6 +211,17 @@ QHash<QString, TopicFigures> RosMonitor::figures(qint64 nowNs) const
 quint64 RosMonitor::typesLearned() const
 {
     return d->typesLearned;
+}
+
+std::vector<RosMonitor::LearnedType> RosMonitor::typesLearnedSince(quint64 from, bool* complete) const
+{
+    std::lock_guard<std::mutex> lock(d->mutex);
+    const quint64 total = d->typesLearned;
+    const quint64 oldest = total - d->learned.size();
+    *complete = from >= oldest;
+    if (!*complete || from >= total)
+        return {};
+    return {d->learned.begin() + qsizetype(from - oldest), d->learned.end()};
 }
 
 QHash<QString, TopicStats> RosMonitor::snapshot(qint64 nowNs) const

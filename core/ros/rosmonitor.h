@@ -39,6 +39,19 @@ public:
     /// How many times a monitored topic's type became known (its first message): a reader of the
     /// types takes snapshot() only when this moved.
     quint64 typesLearned() const;
+    /// A type that became known: the n-th (from 0) of typesLearned().
+    struct LearnedType
+    {
+        QString topic;
+        QString type;
+        QString definition;
+    };
+    /// The most learned types kept for typesLearnedSince(); a reader further behind takes snapshot().
+    static constexpr std::size_t kMaxLearnedKept = 20000;
+    /// The types learned from the `from`-th on (a reader's cursor: typesLearned() when it last read),
+    /// so that a fleet's 10,000 topics learning their types one by one cost one each, not a snapshot
+    /// of all each second. Nothing, and `*complete` false, when some are no longer kept.
+    std::vector<LearnedType> typesLearnedSince(quint64 from, bool* complete) const;
     QHash<QString, TopicFigures> figures(qint64 nowNs) const override;
     std::unique_ptr<HeadTap> openHeadTap(std::size_t maxHeads) override;
     /// While a tap of a topic is open, the topic is monitored for it (one use, counted with the

@@ -191,21 +191,38 @@ void WatchSession::update(qint64 nowNs)
                 if (!it->type.isEmpty())
                     m_monitor->reader().setRosDefinition(it.key(), it->type, QString());
         }
-        // Every monitored topic's figures only when a type became known (a fleet's idle topics
-        // cost nothing) or the links changed.
-        if (const qint64 learned = qint64(m_parts.rosMonitor->typesLearned()); learned != m_rosTypesSeen) {
-            m_rosTypesSeen = learned;
-            const QHash<QString, TopicStats> stats = m_parts.rosMonitor->snapshot(nowNs);
-            for (auto it = stats.cbegin(); it != stats.cend(); ++it)
-                if (!it->type.isEmpty())
-                    m_monitor->reader().setRosDefinition(it.key(), it->type, it->definition);
-        }
+        takeRosTypes(nowNs);
     }
     if (nowNs - m_lastTickNs >= kTickNs) {
         m_lastTickNs = nowNs;
         updateSight();
         m_monitor->tick(nowNs);
     }
+}
+
+void WatchSession::takeRosTypes(qint64 nowNs)
+{
+    // The types learned since the last time, one by one (a fleet's topics learn theirs as the
+    // bridge advertises them); every monitored topic's only when the links changed or the reader
+    // fell further behind than the monitor keeps.
+    const quint64 learned = m_parts.rosMonitor->typesLearned();
+    if (qint64(learned) == m_rosTypesSeen)
+        return;
+    bool complete = false;
+    const std::vector<RosMonitor::LearnedType> types = m_rosTypesSeen < 0
+        ? std::vector<RosMonitor::LearnedType>()
+        : m_parts.rosMonitor->typesLearnedSince(quint64(m_rosTypesSeen), &complete);
+    if (complete) {
+        for (const RosMonitor::LearnedType& t : types)
+            m_monitor->reader().setRosDefinition(t.topic, t.type, t.definition);
+        m_rosTypesSeen += qint64(types.size());
+        return;
+    }
+    m_rosTypesSeen = qint64(learned);
+    const QHash<QString, TopicStats> stats = m_parts.rosMonitor->snapshot(nowNs);
+    for (auto it = stats.cbegin(); it != stats.cend(); ++it)
+        if (!it->type.isEmpty())
+            m_monitor->reader().setRosDefinition(it.key(), it->type, it->definition);
 }
 
 void WatchSession::syncMqttTopics()

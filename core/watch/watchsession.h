@@ -115,6 +115,8 @@ private:
     qint64 m_lastSyncNs = 0;
     /// RosMonitor::typesLearned() when the reader last took the ROS 1 types (-1: take them again).
     qint64 m_rosTypesSeen = -1;
+    /// Hands the reader the ROS 1 types learned since the last call.
+    void takeRosTypes(qint64 nowNs);
     Subscriptions m_monitored; ///< ROS 1 topics subscribed
     Subscriptions m_monitored2; ///< ROS 2 topics subscribed
     Subscriptions m_monitoredMqtt;

@@ -146,6 +146,16 @@ private slots:
         const TopicStats s = monitor.snapshot(nowNs()).value(u"/pose"_s);
         QCOMPARE(s.type, u"geometry_msgs/PoseStamped"_s);
         QCOMPARE(s.md5, u"d3812c3cbc69362b77dc0b19b345f8f5"_s);
+        // Issue 44: a reader takes the types learned since its cursor, one each, not a snapshot.
+        bool complete = false;
+        const std::vector<RosMonitor::LearnedType> learned = monitor.typesLearnedSince(0, &complete);
+        QVERIFY(complete);
+        QCOMPARE(learned.size(), std::size_t(1));
+        QCOMPARE(learned[0].topic, u"/pose"_s);
+        QCOMPARE(learned[0].type, s.type);
+        QCOMPARE(learned[0].definition, s.definition);
+        QCOMPARE(monitor.typesLearned(), quint64(1));
+        QVERIFY(monitor.typesLearnedSince(1, &complete).empty() && complete);
         // rostopic pub -r 10: the measured rate is near 10 Hz (wide bounds: a loaded CI machine).
         QVERIFY2(s.rateHz > 3 && s.rateHz < 30, qPrintable(QString::number(s.rateHz)));
         QVERIFY(s.bytesPerSecond > 0);
