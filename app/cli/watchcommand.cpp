@@ -497,6 +497,7 @@ int runWatch(const WatchRequest& request)
     watch.setDiscovering(request.discover);
     static_cast<void>(watch.setConfigs(request.configs)); // the command sets no link limit: it cannot fail
     LinkMonitor* monitor = watch.monitor();
+    monitor->setHistoryPoints(0); // the command draws no chart: no history (19 KiB a link)
     if (request.pipeline)
         assembly.measure()->setPipeline(*request.pipeline);
     if (!request.runPath.isEmpty() && !startRecording(request, assembly))
@@ -514,7 +515,8 @@ int runWatch(const WatchRequest& request)
         ++eventsSeen;
         alertsSeen += e.level == LinkLevel::Alert;
     });
-    EventLines lines {&events};
+    EventLines lines;
+    lines.file = &events;
     QObject::connect(monitor, &LinkMonitor::eventStarted, [&lines](const WatchEvent& e) { lines.print(e); });
     QObject::connect(monitor, &LinkMonitor::eventEnded, [&lines](const WatchEvent& e) { lines.print(e); });
     // The metrics follow the counts four times a second (rates and percentiles change once a second).

@@ -12,7 +12,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 constexpr qint64 kSecond = LinkWindows::kSecond;
-constexpr std::size_t kHistoryPoints = 600;
 } // namespace
 
 LinkMonitor::LinkMonitor(QObject* parent)
@@ -51,6 +50,14 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         m_tracks.push_back(std::move(t));
     }
     index();
+}
+
+void LinkMonitor::setHistoryPoints(std::size_t points)
+{
+    m_historyPoints = points;
+    for (auto& t : m_tracks)
+        while (t->history.size() > points)
+            t->history.pop_front();
 }
 
 void LinkMonitor::setRules(const WatchRules& rules)
@@ -157,8 +164,10 @@ std::vector<int> LinkMonitor::refreshStatistics(qint64 nowNs)
             t.refresh(nowNs);
             refreshed.push_back(i);
         }
+        if (m_historyPoints == 0)
+            continue;
         t.history.push_back({nowNs, t.dst.f.rateHz, t.figures.latencyP99Ms, t.level});
-        if (t.history.size() > kHistoryPoints)
+        if (t.history.size() > m_historyPoints)
             t.history.pop_front();
     }
     return refreshed;

@@ -76,6 +76,11 @@ public:
     void setRos2Topics(const QSet<QString>& topics);
     /// Destination rate and latency p99, one point a second, oldest first (at most 10 minutes).
     using HistoryPoint = LinkHistoryPoint;
+    /// How many points a link's history keeps (default kHistoryPoints; 0: none). A history costs
+    /// 32 bytes a point: 19 KiB a link that heard something, 190 MiB at 10,000 links, which a
+    /// `watch` that draws no chart does not keep.
+    void setHistoryPoints(std::size_t points);
+    static constexpr std::size_t kHistoryPoints = 600;
     std::vector<HistoryPoint> history(int index) const;
     /// Latency samples (ms) since the last call, for histograms (at most 10,000 are kept).
     std::vector<double> takeNewLatencies(int index);
@@ -134,6 +139,7 @@ private:
     quint64 m_linksVersion = 0;
     quint64 m_changes = 0; ///< refreshes of hearing links, level and sight changes
     quint64 m_judgements = 0;
+    std::size_t m_historyPoints = kHistoryPoints;
     /// (time, link): when a silence may change a link's verdict, earliest first; one live entry a
     /// link (LinkTrack::queuedNs), older ones are dropped when they come up.
     std::priority_queue<std::pair<qint64, int>, std::vector<std::pair<qint64, int>>, std::greater<>>

@@ -629,6 +629,11 @@ private slots:
         QCOMPARE(m.judgements(), judged + 1);
         QCOMPARE(m.level(5), LinkLevel::Ok);
         QCOMPARE(m.level(6), LinkLevel::Warning);
+        // A watch that draws no chart keeps no history (19 KiB a link).
+        m.setHistoryPoints(0);
+        QVERIFY(m.history(0).empty());
+        clock.advance(2'000 * kMs);
+        QVERIFY(m.history(5).empty());
     }
 
     // Regression (issue 33): the Links table showed `10` beside `10.0` and `5.00` beside `25.0`; a
