@@ -207,7 +207,7 @@ int runWatchFleet(const QString& program)
 {
     const int links = Bench::envInt("BENCH_LINKS", 10000);
     const int rate = Bench::envInt("BENCH_RATE", 5000);
-    const int seconds = Bench::envInt("BENCH_SECONDS", 90);
+    const int seconds = Bench::envInt("BENCH_SECONDS", 150);
     const int idleS = Bench::envInt("BENCH_IDLE_S", 20);
     const int settleS = Bench::envInt("BENCH_SETTLE_S", 70, 0);
     const int scrapeS = Bench::envInt("BENCH_SCRAPE_S", 5);
@@ -230,7 +230,7 @@ int runWatchFleet(const QString& program)
     load.start();
     Scrape atLive;
     const double liveS = scrapeUntil(
-        fleet, scrapeS, seconds - 15, [&](const Scrape& s) { return s.live >= links; }, &atLive);
+        fleet, scrapeS, seconds - 30, [&](const Scrape& s) { return s.live >= links; }, &atLive);
     // The steady span: from every link live (or the ramp's end) to the load's last seconds.
     const double cpu0 = fleet.watchCpu(), sub0 = fleet.subCpu();
     const quint64 lines0 = fleet.subLines;
