@@ -9174,6 +9174,13 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
         <source>at most %1 --label options</source>
         <translation>höchstens %1 Optionen --label</translation>
     </message>
+    <message numerus="yes">
+        <source>%n event line(s) held back by the storm bound (%1 a second after a burst of %2): counted in the held_back lines</source>
+        <translation>
+            <numerusform>%n Ereigniszeile von der Sturmgrenze zurückgehalten (%1 pro Sekunde nach einem Schub von %2): in den held_back-Zeilen gezählt</numerusform>
+            <numerusform>%n Ereigniszeilen von der Sturmgrenze zurückgehalten (%1 pro Sekunde nach einem Schub von %2): in den held_back-Zeilen gezählt</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>WatchMetrics</name>
