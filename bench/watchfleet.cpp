@@ -20,6 +20,7 @@
 #include "watchfleet.h"
 
 #include "benchutil.h"
+#include "peakrss.h"
 #include "ros/rosmasterapi.h"
 #include "testservers.h"
 
@@ -90,8 +91,9 @@ struct Fleet
     double watchCpu() const { return Bench::processCpuSeconds(watch.processId()); }
     double subCpu() const { return Bench::processCpuSeconds(sub.processId()); }
     double watchRssMiB() const { return double(childKb(watch.processId(), "VmRSS:")) / 1024; }
-    double watchPeakMiB() const { return double(childKb(watch.processId(), "VmHWM:")) / 1024; }
+    double watchPeakMiB() const { return double(PeakRss::of(watch.processId())) / (1024 * 1024); }
 
+    /// VmRSS of a child (PeakRss gives its VmHWM; Bench::statusKb this process's own).
     static long long childKb(qint64 pid, const char* field)
     {
         QFile f(u"/proc/%1/status"_s.arg(pid));
