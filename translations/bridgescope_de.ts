@@ -9181,6 +9181,10 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
             <numerusform>%n Ereigniszeilen von der Sturmgrenze zurückgehalten (%1 pro Sekunde nach einem Schub von %2): in den held_back-Zeilen gezählt</numerusform>
         </translation>
     </message>
+    <message>
+        <source>; %1 ROS subscriptions made again (the master listed a publisher that never connected), %2 silent now</source>
+        <translation>; %1 ROS-Abonnements erneut angelegt (der Master nannte einen Publisher, der sich nie verband), %2 jetzt stumm</translation>
+    </message>
 </context>
 <context>
     <name>WatchMetrics</name>

@@ -10,6 +10,7 @@
 #include "models/mqtttopictree.h"
 #include "record/runrecorder.h"
 #include "ros/rosmasterapi.h"
+#include "ros/rosmonitor.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "watch/eventthrottle.h"
@@ -351,7 +352,8 @@ struct WatchTally
 };
 
 /// The summary a watch ends with: a sentence on stderr, one JSON line on stdout ("event": "summary").
-void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts, quint64 heldBack)
+void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts, quint64 heldBack,
+                  quint64 rosMadeAgain)
 {
     const WatchTally t = WatchTally::of(monitor);
     err(Watch::tr("watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 "
@@ -381,7 +383,8 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
                                {u"warning"_s, t.levels[1]},
                                {u"alert"_s, t.levels[2]},
                                {u"unknown"_s, t.unknown},
-                               {u"held_back"_s, double(heldBack)}};
+                               {u"held_back"_s, double(heldBack)},
+                               {u"ros_subscriptions_made_again"_s, double(rosMadeAgain)}};
     if (heldBack > 0)
         err(Watch::tr("%n event line(s) held back by the storm bound (%1 a second after a burst of %2): "
                       "counted in the held_back lines",
@@ -393,7 +396,7 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
 
 /// The line said every 10 s: the links by level, and every budget that cut something.
 QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopicTree* topics,
-                     const WatchMetrics* metrics, const Ros2Participant* ros2)
+                     const WatchMetrics* metrics, const RosMonitor* ros1, const Ros2Participant* ros2)
 {
     const LinkMonitor* monitor = watch.monitor();
     const WatchTally tally = WatchTally::of(*monitor);
@@ -421,6 +424,11 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
         line += Watch::tr("; %1 messages not timed (more between two reads than the watch keeps)").arg(untimed);
     if (metrics && metrics->droppedClients())
         line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
+    if (const quint64 again = ros1 ? ros1->subscriptionsMadeAgain() : 0)
+        line += Watch::tr("; %1 ROS subscriptions made again (the master listed a publisher that never "
+                          "connected), %2 silent now")
+                    .arg(again)
+                    .arg(ros1->silentSubscriptions());
     if (ros2 && ros2->graph().omitted)
         line += u"; "_s + ros2->graph().omittedText();
     if (ros2 && !ros2->restartText().isEmpty())
@@ -544,11 +552,13 @@ int runWatch(const WatchRequest& request)
             lines.sayHeldBack(EventThrottle::Line::Paced);
             sources.check(elapsedMs);
             if (elapsedMs / 1000 % 10 == 0)
-                err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get(), live.ros2()));
+                err(progressLine(elapsedMs, watch, live.mqttTopics(), metrics.get(), live.rosMonitor(),
+                                 live.ros2()));
         });
     monitor->closeAll(wallClockNs());
     lines.sayHeldBack(EventThrottle::Line::Last);
-    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen, lines.throttle.heldBack());
+    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen, lines.throttle.heldBack(),
+                 live.rosMonitor()->subscriptionsMadeAgain());
     if (recorder->isRecording()) {
         if (const Result<void> stopped = assembly.stopRecording(); !stopped) {
             err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));

@@ -1,18 +1,23 @@
 // SPDX-License-Identifier: MIT
 #include "rosmonitor.h"
 
+#include "base/logging.h"
 #include "base/ratewindow.h"
 #include "base/wallclock.h"
 #include "latency/headhub.h"
 #include "latency/taphub.h"
 #include "ros/rosbytes.h"
 #include "ros/rosnode.h"
+#include "ros/silentsubscriptions.h"
 
+#include <algorithm>
 #include <atomic>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <QPointer>
 #include <QSet>
+#include <QTimer>
 #include <ros/ros.h>
 #include <topic_tools/shape_shifter.h>
 #include <tuple>
@@ -50,6 +55,12 @@ struct RosMonitor::Private
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
     int hook = 0;
     QHash<QString, ros::Subscriber> subscribers; ///< touched on the node's worker thread only
+    TopicGraph graph; ///< under `mutex`: the master's, from setGraph()
+    quint64 graphVersion = 0; ///< under `mutex`
+    quint64 graphListed = 0; ///< the worker's: the graph version `silence` lists
+    SilentSubscriptions silence; ///< the worker's only
+    std::atomic<quint64> madeAgain {0};
+    std::atomic<int> silentNow {0};
     HeadHub heads; ///< its own lock
     TapHub taps; ///< its own lock; a tapped topic is monitored while a tap of it is open
 
@@ -104,6 +115,47 @@ struct RosMonitor::Private
                 },
                 Qt::QueuedConnection);
         }
+    }
+
+    // On the node's worker thread: the topics `graph` lists a publisher of, this node not counted
+    // (roscpp never connects a subscription to its own node's publisher through the master).
+    void listPublished(const TopicGraph& graph)
+    {
+        const QString self = QString::fromStdString(ros::this_node::getName());
+        QSet<QString> listed;
+        for (const TopicInfo& t : graph.topics) {
+            if (std::any_of(t.publishers.cbegin(), t.publishers.cend(),
+                            [&](const QString& n) { return n != self; }))
+                listed.insert(t.name);
+        }
+        silence.setListed(std::move(listed));
+    }
+
+    // On the node's worker thread: subscribes again what stayed silent (see SilentSubscriptions).
+    void mendSilent(ros::NodeHandle& node, const std::weak_ptr<Private>& self, QPointer<RosMonitor> owner)
+    {
+        std::optional<TopicGraph> changed;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            if (graphVersion != graphListed) {
+                changed = graph;
+                graphListed = graphVersion;
+            }
+        }
+        if (changed)
+            listPublished(*changed);
+        const QList<QString> again
+            = silence.pass(wallClockNs(), subscribers.keys(), [this](const QString& topic) {
+                  const auto it = subscribers.constFind(topic);
+                  return it == subscribers.cend() ? 0 : int(it->getNumPublishers());
+              });
+        for (const QString& topic : again) {
+            qCInfo(lcRos).noquote()
+                << u"subscribing again to %1: the master lists a publisher, none has connected"_s.arg(topic);
+            subscribe(node, topic, self, owner);
+        }
+        madeAgain = silence.made();
+        silentNow = silence.silent();
     }
 
     void subscribeAll(const std::shared_ptr<Private>& self, QPointer<RosMonitor> owner)
@@ -191,6 +243,42 @@ bool RosMonitor::isMonitored(const QString& topic) const
 void RosMonitor::resubscribeAll()
 {
     d->subscribeAll(d, this);
+}
+
+void RosMonitor::setGraph(const TopicGraph& graph)
+{
+    {
+        std::lock_guard<std::mutex> lock(d->mutex);
+        d->graph = graph;
+        ++d->graphVersion;
+    }
+    if (m_mend)
+        return;
+    m_mend = new QTimer(this);
+    connect(m_mend, &QTimer::timeout, this, [this] {
+        {
+            std::lock_guard<std::mutex> lock(d->mutex);
+            if (d->wanted.isEmpty())
+                return; // no node to start for it: looking registers nothing
+        }
+        std::weak_ptr<Private> weak = d;
+        QPointer<RosMonitor> self(this);
+        d->rosNode->post([weak, self](ros::NodeHandle& node) {
+            if (auto p = weak.lock())
+                p->mendSilent(node, weak, self);
+        });
+    });
+    m_mend->start(kMendPeriodMs);
+}
+
+quint64 RosMonitor::subscriptionsMadeAgain() const
+{
+    return d->madeAgain;
+}
+
+int RosMonitor::silentSubscriptions() const
+{
+    return d->silentNow;
 }
 
 std::unique_ptr<HeadTap> RosMonitor::openHeadTap(std::size_t maxHeads)

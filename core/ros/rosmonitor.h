@@ -34,6 +34,14 @@ public:
     SourceGraph sourceGraph() const override { return SourceGraph::Ros1; }
     /// Registers every monitored topic again (after the master restarted).
     void resubscribeAll();
+    /// The master's graph: a monitored topic it lists a publisher of that stays without one
+    /// connected is subscribed again (see SilentSubscriptions), checked every kMendPeriodMs.
+    void setGraph(const TopicGraph& graph);
+    static constexpr int kMendPeriodMs = 2000;
+    /// Subscriptions made again because they stayed silent, since the start.
+    quint64 subscriptionsMadeAgain() const;
+    /// Monitored topics silent for SilentSubscriptions::kSilentNs or more at the last check.
+    int silentSubscriptions() const;
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, TopicStats> snapshot(qint64 nowNs) const;
     /// How many times a monitored topic's type became known (its first message): a reader of the
@@ -64,4 +72,5 @@ signals:
 private:
     struct Private;
     std::shared_ptr<Private> d;
+    class QTimer* m_mend = nullptr; ///< from the first setGraph()
 };

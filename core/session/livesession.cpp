@@ -59,6 +59,7 @@ LiveSession::LiveSession(QObject* parent)
     });
     connect(m_poller, &RosGraphPoller::graphChanged, m_rosTopics, &TopicTableModel::setGraph);
     connect(m_poller, &RosGraphPoller::masterRestarted, m_monitor, &RosMonitor::resubscribeAll);
+    connect(m_poller, &RosGraphPoller::graphChanged, m_monitor, &RosMonitor::setGraph);
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(33);
     connect(&m_timer, &QTimer::timeout, this, &LiveSession::drainNow);

@@ -5,6 +5,7 @@
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
+#include "ros/silentsubscriptions.h"
 #include "testservers.h"
 #include "topics/topictablemodel.h"
 #include "wire/rosmessage.h"
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <memory>
 #include <QAbstractItemModelTester>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTest>
@@ -26,16 +28,23 @@ qint64 nowNs()
         .count();
 }
 
-// A ROS node of its own: `rostopic pub` or `rostopic echo`, stopped (and unregistered) on destruction.
+// A ROS node of its own: `rostopic pub` or `rostopic echo` (or a rospy script), stopped (and
+// unregistered) on destruction.
 class Node
 {
 public:
-    Node(const TestServers& servers, const QStringList& args)
+    Node(const TestServers& servers, const QStringList& args, const QString& program = u"rostopic"_s)
     {
         m_process.setProcessEnvironment(servers.rosEnvironment());
         m_process.setProcessChannelMode(QProcess::MergedChannels);
-        m_process.start(u"rostopic"_s, args);
+        m_process.start(program, args);
         m_process.waitForStarted(10000);
+    }
+    /// What it wrote so far.
+    QByteArray output()
+    {
+        m_said += m_process.readAll();
+        return m_said;
     }
     ~Node() { stop(); }
     void stop()
@@ -51,7 +60,33 @@ public:
 
 private:
     QProcess m_process;
+    QByteArray m_said;
 };
+
+// A real rospy publisher of /flaky (std_msgs/UInt32, 10 Hz) whose node refuses the first
+// `argv[1]` requestTopic calls, as a node busy with thousands of them does: roscpp does not ask
+// again, and its subscription stays silent while the master lists the publisher.
+constexpr char kFlakyPublisher[] = R"(
+import sys, rospy, rospy.impl.masterslave as masterslave
+from std_msgs.msg import UInt32
+refusals = [int(sys.argv[1])]
+answer = masterslave.ROSHandler.requestTopic
+def refusing(self, caller_id, topic, protocols):
+    if refusals[0] > 0:
+        refusals[0] -= 1
+        print("refused", caller_id, flush=True)
+        return -1, "busy: refused by the test", 0
+    return answer(self, caller_id, topic, protocols)
+masterslave.ROSHandler.requestTopic = refusing
+rospy.init_node("flaky", anonymous=True)
+pub = rospy.Publisher("/flaky", UInt32, queue_size=10)
+rate = rospy.Rate(10)
+n = 0
+while not rospy.is_shutdown():
+    pub.publish(UInt32(n))
+    n += 1
+    rate.sleep()
+)";
 
 const TopicInfo* topic(const RosGraphPoller& poller, const QString& name)
 {
@@ -198,6 +233,36 @@ private slots:
         QCOMPARE(w->find(u"pose.position.x"_s)->value.toDouble(), 1.5);
         tap.reset();
         QVERIFY(!monitor.isMonitored(u"/pose"_s));
+    }
+
+    /// Issue 44: at 10,000 links about 150 subscriptions never connected: their publisher's node,
+    /// asked for 10,000 topics at once, failed some requests, and roscpp asks once. A subscription
+    /// the master lists a publisher for and that stays without one is made again.
+    void aSubscriptionLeftSilentIsMadeAgain()
+    {
+        RosGraphPoller poller;
+        poller.setMasterUri(m_servers.rosMasterUri());
+        poller.start(200);
+        Node pub(m_servers, {u"-c"_s, QString::fromLatin1(kFlakyPublisher), u"1"_s}, u"/usr/bin/python3"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            topic(poller, u"/flaky"_s) && !topic(poller, u"/flaky"_s)->publishers.isEmpty(), 20000);
+        RosMonitor monitor;
+        monitor.setMasterUri(m_servers.rosMasterUri());
+        connect(&poller, &RosGraphPoller::graphChanged, &monitor, &RosMonitor::setGraph);
+        monitor.setGraph(poller.graph());
+        monitor.monitor(u"/flaky"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(pub.output().contains("refused"), 20000);
+        QElapsedTimer sinceRefused;
+        sinceRefused.start();
+        // roscpp leaves it there: made again only once silent (no publisher connected while the
+        // master lists one) for SilentSubscriptions::kSilentNs; then it hears the publisher.
+        QTRY_COMPARE_WITH_TIMEOUT(monitor.subscriptionsMadeAgain(), 1u, 30000);
+        QVERIFY(sinceRefused.elapsed() >= SilentSubscriptions::kSilentNs / 1'000'000 - 500);
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/flaky"_s).messages >= 3, 20000);
+        QCOMPARE(monitor.subscriptionsMadeAgain(), 1u);
+        QTRY_COMPARE_WITH_TIMEOUT(monitor.silentSubscriptions(), 0, 10000);
+        QCOMPARE(pub.output().count("refused"), 1);
+        monitor.unmonitor(u"/flaky"_s);
     }
 
     void deadMasterIsReportedNotWaitedFor()
