@@ -4,15 +4,19 @@
 #include "base/logging.h"
 #include "yaml/secrets.h"
 
+#include <algorithm>
+#include <QElapsedTimer>
 #include <QTimer>
 
 class RosGraphPoller::Worker : public QObject
 {
     Q_OBJECT
 public:
-    QTimer timer;
+    QTimer timer; ///< single shot, armed again after each poll
     QString uri;
-    int timeoutMs = 800;
+    int intervalMs = 1000;
+    int lastMs = 0; ///< how long the last answered poll took
+    bool running = false;
     /// The master's last answers: an unchanged graph is neither parsed nor sent again.
     RosMasterApi::GraphAnswers answers;
     QString answersUri;
@@ -23,11 +27,18 @@ public:
         if (answersUri != current) {
             answers = {};
             answersUri = current;
+            lastMs = 0;
         }
         RosMasterApi api(current);
+        const int timeoutMs = RosGraphPoller::timeoutMs(intervalMs, lastMs);
+        QElapsedTimer took;
+        took.start();
         const Result<std::optional<TopicGraph>> graph = api.graphIfChanged(timeoutMs, &answers);
         const Result<qint64> pid = graph ? api.pid(timeoutMs) : Result<qint64>(graph.error());
         const bool changed = graph && graph->has_value();
+        lastMs = graph && pid ? int(took.elapsed()) : 0; // a master that stopped answering: short again
+        if (running)
+            timer.start(RosGraphPoller::delayMs(intervalMs, lastMs));
         emit result(graph && pid, changed, changed ? **graph : TopicGraph(), pid.valueOr(-1),
                     pid.error().toString(), current);
     }
@@ -47,6 +58,7 @@ RosGraphPoller::RosGraphPoller(QObject* parent)
     m_worker->moveToThread(&m_thread);
     m_worker->timer.moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    m_worker->timer.setSingleShot(true);
     connect(&m_worker->timer, &QTimer::timeout, m_worker, &Worker::poll);
     connect(m_worker, &Worker::result, this, &RosGraphPoller::onResult);
     m_thread.setObjectName(QStringLiteral("ros-master-poller"));
@@ -72,8 +84,8 @@ void RosGraphPoller::setMasterUri(const QString& uri)
 void RosGraphPoller::start(int intervalMs)
 {
     QMetaObject::invokeMethod(m_worker, [w = m_worker, intervalMs] {
-        w->timeoutMs = std::max(100, intervalMs * 4 / 5);
-        w->timer.start(intervalMs);
+        w->intervalMs = std::max(100, intervalMs);
+        w->running = true;
         w->poll();
     });
 }
@@ -81,7 +93,22 @@ void RosGraphPoller::start(int intervalMs)
 void RosGraphPoller::stop()
 {
     QMetaObject::invokeMethod(
-        m_worker, [w = m_worker] { w->timer.stop(); }, Qt::BlockingQueuedConnection);
+        m_worker,
+        [w = m_worker] {
+            w->running = false;
+            w->timer.stop();
+        },
+        Qt::BlockingQueuedConnection);
+}
+
+int RosGraphPoller::timeoutMs(int intervalMs, int lastMs)
+{
+    return std::max(std::max(100, intervalMs * 4 / 5), std::min(kMaxTimeoutMs, 4 * lastMs));
+}
+
+int RosGraphPoller::delayMs(int intervalMs, int lastMs)
+{
+    return std::max(intervalMs, std::min(kMaxDelayMs, 4 * lastMs));
 }
 
 void RosGraphPoller::pollNow()

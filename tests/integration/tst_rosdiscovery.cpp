@@ -265,6 +265,31 @@ private slots:
         monitor.unmonitor(u"/flaky"_s);
     }
 
+    /// Issue 44: a master of 10,000 topics answers in 0.6 to 1.3 s while busy; polled every second
+    /// with a 0.8 s deadline it answered us all the time and was called unreachable when slow.
+    void thePollerFollowsTheMastersPace()
+    {
+        QCOMPARE(RosGraphPoller::timeoutMs(1000, 0), 800); // unknown or silent: a hung master soon said
+        QCOMPARE(RosGraphPoller::delayMs(1000, 0), 1000);
+        QCOMPARE(RosGraphPoller::timeoutMs(1000, 20), 800); // a small graph: as before
+        QCOMPARE(RosGraphPoller::delayMs(1000, 20), 1000);
+        QCOMPARE(RosGraphPoller::timeoutMs(1000, 1200), 4800); // a large one: time to answer,
+        QCOMPARE(RosGraphPoller::delayMs(1000, 1200), 4800); // and a fifth of the master's time
+        QCOMPARE(RosGraphPoller::timeoutMs(1000, 60000), RosGraphPoller::kMaxTimeoutMs);
+        QCOMPARE(RosGraphPoller::delayMs(1000, 60000), RosGraphPoller::kMaxDelayMs);
+        // Against the real master: polls keep coming at the interval while it answers quickly.
+        RosGraphPoller poller;
+        poller.setMasterUri(m_servers.rosMasterUri());
+        QSignalSpy polled(&poller, &RosGraphPoller::polled);
+        poller.start(100);
+        QTRY_VERIFY_WITH_TIMEOUT(polled.size() >= 6, 10000);
+        QVERIFY(poller.isReachable());
+        poller.stop();
+        const int stopped = poller.polls();
+        QTest::qWait(400); // a stimulus: the time for three more polls, had it not stopped
+        QVERIFY(poller.polls() <= stopped + 1); // at most one already on its way
+    }
+
     void deadMasterIsReportedNotWaitedFor()
     {
         RosGraphPoller poller;
