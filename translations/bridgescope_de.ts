@@ -4468,6 +4468,10 @@ factors:
         <source>&amp;Close Config</source>
         <translation>Konfiguration &amp;schließen</translation>
     </message>
+    <message>
+        <source>no mappings yet: add one (Insert) or drag topics onto each other</source>
+        <translation>noch keine Zuordnungen: eine hinzufügen (Einfg) oder Topics aufeinander ziehen</translation>
+    </message>
 </context>
 <context>
     <name>MapPage</name>

@@ -159,13 +159,18 @@ MainWindow::MainWindow(QWidget* parent)
 void MainWindow::updateProblemStatus()
 {
     const ProblemModel* problems = m_configEditor->problems()->model();
-    QString text = ProblemModel::countText(problems->errorCount(), problems->warningCount());
+    // A new config's one error is that it has no mapping yet: said as what to do, not as "1 error".
+    const bool onlyEmpty = problems->rowCount() == 1 && problems->problem(0).code == u"no-mappings"_s;
+    QString text = onlyEmpty ? tr("no mappings yet: add one (Insert) or drag topics onto each other")
+                             : ProblemModel::countText(problems->errorCount(), problems->warningCount());
     const MqttConnection* mqtt = m_session->mqtt();
     const bool down
         = mqtt->state() == MqttConnection::State::Reconnecting || mqtt->state() == MqttConnection::State::Failed;
     if (down) {
         const QString broker = MqttProfile::withoutCredentials(mqtt->profile().url);
-        const QString config = problems->errorCount() + problems->warningCount() > 0 ? u" · "_s + text : QString();
+        const QString config = problems->errorCount() + problems->warningCount() > 0 && !onlyEmpty
+            ? u" · "_s + text
+            : QString();
         text = tr("broker %1 unreachable").arg(broker) + config;
     }
     m_problemStatus->setText(text);

@@ -2,6 +2,7 @@
 // The window remembers how it was left: geometry, page, splitters, columns and their sort, filter
 // texts; and a first start fits the screen.
 #include "app/gui/mainwindow.h"
+#include "config/configdocument.h"
 #include "guisession.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttprofile.h"
@@ -10,6 +11,7 @@
 #include "widgets/common/windowmemory.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/links/linkspage.h"
+#include "widgets/map/configeditor.h"
 
 #include <QHeaderView>
 #include <QLabel>
@@ -56,12 +58,22 @@ private slots:
         QVERIFY(status);
         w.session()->connectBroker(MqttProfile::fromUrl(servers.brokerUrl()));
         QTRY_COMPARE_WITH_TIMEOUT(w.session()->mqtt()->state(), MqttConnection::State::Connected, 10000);
-        const QString up = status->text(); // the config's problems: an empty config has some
+        // A new config: its one error (no mapping) said as what to do, not as "1 error".
+        QVERIFY2(status->text().startsWith(u"no mappings yet"_s), qPrintable(status->text()));
+        auto* editor = w.findChild<ConfigEditor*>();
+        QVERIFY(editor);
+        editor->addMapping(Direction::Ros2Mqtt);
+        QTRY_VERIFY2(!status->text().contains(u"no mappings"_s), qPrintable(status->text()));
+        const QString up = status->text(); // the config's problems, if any
         QVERIFY2(!up.contains(u"unreachable"_s), qPrintable(up));
         servers.stopMosquitto();
         QTRY_VERIFY2_WITH_TIMEOUT(status->text().contains(u"unreachable"_s), qPrintable(status->text()), 15000);
         QVERIFY2(status->text().contains(u"127.0.0.1:%1"_s.arg(servers.mosquittoPort())), qPrintable(status->text()));
         QVERIFY2(status->text().endsWith(up) || up == u"no problems"_s, qPrintable(status->text()));
+        // Down and empty again: the broker, and no "· 1 error" after it.
+        w.document()->removeMappings({w.document()->mapping(0).id});
+        QTRY_VERIFY2(!status->text().contains(u" · "_s), qPrintable(status->text()));
+        QVERIFY2(status->text().contains(u"unreachable"_s), qPrintable(status->text()));
         QVERIFY(!status->text().contains(u"no problems"_s));
         QVERIFY(!status->toolTip().isEmpty()); // why
     }
