@@ -164,10 +164,8 @@ int parseBridge(const QStringList& arguments, BridgeRequest* request)
     ros.addTo(parser);
     parser.addPositionalArgument(u"CONFIG"_s, Bridge::tr("mqtt_client config (ROS 1 or ROS 2 layout)."),
                                  u"CONFIG.yaml"_s);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope bridge"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope bridge"_s,
         Bridge::tr(
             "Runs an mqtt_client config as a reference bridge between the ROS master and the broker, with "
             "mqtt_client's wire protocol (type announcements, injected stamps, latency topics, primitives) "

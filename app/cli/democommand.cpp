@@ -90,10 +90,8 @@ int parseDemo(const QStringList& arguments, DemoRequest* request)
         u"cloud-program"_s, Demo::tr("With --cloud-host: bridgescope's path there (default: this one's)."),
         u"PATH"_s);
     parser.addOptions({seconds, output, format, size, broker, master, ros, domain, cloudHost, cloudProgram});
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope demo"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope demo"_s,
         Demo::tr(
             "Runs the demo lab without a window: a private mosquitto and rosmaster, a vehicle and a cloud "
             "reference bridge, a 0.18 MB point cloud at 10 Hz, a 40 ms object detection in the cloud whose "
@@ -265,10 +263,9 @@ int runDemoNodeCommand(const QStringList& arguments)
     const QCommandLineOption domain(u"ros-domain"_s, Demo::tr("ROS 2 domain id (default 0)."), u"ID"_s, u"0"_s);
     parser.addOptions({master, size, rate, detection, offset, ros, domain});
     parser.addPositionalArgument(u"ROLE"_s, Demo::tr("vehicle or cloud."), u"vehicle|cloud"_s);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope demo-node"_s);
-    const int parsed = CliOutput::parseCommand(
-        parser, args, Demo::tr("One of the demo lab's ROS nodes; the lab starts them."));
+    const int parsed
+        = CliOutput::parseCommand(parser, arguments, u"bridgescope demo-node"_s,
+                                  Demo::tr("One of the demo lab's ROS nodes; the lab starts them."));
     if (parsed >= 0)
         return parsed;
     const QString role = parser.positionalArguments().value(0);

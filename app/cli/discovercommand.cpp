@@ -240,10 +240,8 @@ int parseDiscover(const QStringList& arguments, DiscoverRequest* request)
     parser.addOptions({broker, master, seconds, json, filter});
     RosOptions ros;
     ros.addTo(parser);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope discover"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope discover"_s,
         Discover::tr("Lists what is on the ROS master and the MQTT broker after listening for a while. Exit "
                      "status: 0 when at least one of them answered, 1 when neither did, 2 on bad options."));
     if (parsed >= 0)

@@ -90,10 +90,8 @@ int parseExperiment(const QStringList& arguments, ExperimentRequest* request)
     parser.addOptions({output, resume, dryRun, broker, master});
     parser.addPositionalArgument(u"PLAN"_s, Experiment::tr("The experiment plan (docs/formats.md)."),
                                  u"PLAN.yaml"_s);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope experiment"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope experiment"_s,
         Experiment::tr(
             "Runs an experiment plan unattended: every cell of its matrix (payload, rate, QoS, TLS, "
             "announcement, queue size, bridge implementation, link profile) on its own lab, "

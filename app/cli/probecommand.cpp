@@ -252,10 +252,8 @@ int parseProbe(const QStringList& arguments, ProbeRequest* request)
     QCommandLineParser parser;
     const ProbeArguments a;
     parser.addOptions(a.all());
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope probe"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope probe"_s,
         Probe::tr(
             "Measures the link to a broker: publishes numbered, timed messages and times their round "
             "trip, back from the broker itself or through an echo client (probe --echo) elsewhere. "

@@ -100,10 +100,8 @@ int parseRecord(const QStringList& arguments, RecordRequest* request)
         {pipeline, broker, master, samples, seconds, output, name, notes, config, allowEmpty, oneClock});
     RosOptions ros;
     ros.addTo(parser);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope record"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope record"_s,
         Record::tr(
             "Records a measurement run: every stamp of the pipeline from ROS 1, ROS 2 (--ros 2 or both) and "
             "MQTT, committed to the run "

@@ -97,9 +97,7 @@ int parseReport(const QStringList& arguments, ReportRequest* request)
     parser.addPositionalArgument(
         u"INPUT"_s, ReportText::tr("Runs, suite timestamp CSV files or bags; or an experiment's folder."),
         u"INPUT..."_s);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope report"_s);
-    const int parsed = CliOutput::parseCommand(parser, args, description);
+    const int parsed = CliOutput::parseCommand(parser, arguments, u"bridgescope report"_s, description);
     if (parsed >= 0)
         return parsed;
     if (!ReportFormats::parse(parser.value(a.format), &request->format)) {
