@@ -236,10 +236,8 @@ int parseWatch(const QStringList& arguments, WatchRequest* request)
     ros.addTo(parser);
     parser.addPositionalArgument(u"CONFIG"_s, Watch::tr("mqtt_client configs whose mappings are watched."),
                                  u"[CONFIG.yaml...]"_s);
-    QStringList args = arguments;
-    args.replace(0, u"bridgescope watch"_s);
     const int parsed = CliOutput::parseCommand(
-        parser, args,
+        parser, arguments, u"bridgescope watch"_s,
         Watch::tr(
             "Watches every mapping of the configs as a link, until Ctrl+C: rate at both ends, messages "
             "lost, Header.seq gaps, stalls, the source stopping, latency of stamped messages and the "
@@ -353,7 +351,7 @@ struct WatchTally
 
 /// The summary a watch ends with: a sentence on stderr, one JSON line on stdout ("event": "summary").
 void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts, quint64 heldBack,
-                  quint64 rosMadeAgain)
+                  quint64 rosAskedAgain)
 {
     const WatchTally t = WatchTally::of(monitor);
     err(Watch::tr("watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 "
@@ -384,7 +382,7 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
                                {u"alert"_s, t.levels[2]},
                                {u"unknown"_s, t.unknown},
                                {u"held_back"_s, double(heldBack)},
-                               {u"ros_subscriptions_made_again"_s, double(rosMadeAgain)}};
+                               {u"ros_publishers_asked_again"_s, double(rosAskedAgain)}};
     if (heldBack > 0)
         err(Watch::tr("%n event line(s) held back by the storm bound (%1 a second after a burst of %2): "
                       "counted in the held_back lines",
@@ -424,8 +422,8 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
         line += Watch::tr("; %1 messages not timed (more between two reads than the watch keeps)").arg(untimed);
     if (metrics && metrics->droppedClients())
         line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
-    if (const quint64 again = ros1 ? ros1->subscriptionsMadeAgain() : 0)
-        line += Watch::tr("; %1 ROS subscriptions made again (the master listed a publisher that never "
+    if (const quint64 again = ros1 ? ros1->publishersAskedAgain() : 0)
+        line += Watch::tr("; ROS publishers asked again for %1 topics (the master listed them, none "
                           "connected), %2 silent now")
                     .arg(again)
                     .arg(ros1->silentSubscriptions());
@@ -558,7 +556,7 @@ int runWatch(const WatchRequest& request)
     monitor->closeAll(wallClockNs());
     lines.sayHeldBack(EventThrottle::Line::Last);
     printSummary(*monitor, watchedMs, eventsSeen, alertsSeen, lines.throttle.heldBack(),
-                 live.rosMonitor()->subscriptionsMadeAgain());
+                 live.rosMonitor()->publishersAskedAgain());
     if (recorder->isRecording()) {
         if (const Result<void> stopped = assembly.stopRecording(); !stopped) {
             err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));

@@ -7,6 +7,7 @@
 #include "latency/headhub.h"
 #include "latency/taphub.h"
 #include "ros/rosbytes.h"
+#include "ros/rosmasterapi.h"
 #include "ros/rosnode.h"
 #include "ros/silentsubscriptions.h"
 
@@ -19,6 +20,7 @@
 #include <QSet>
 #include <QTimer>
 #include <ros/ros.h>
+#include <ros/xmlrpc_manager.h>
 #include <topic_tools/shape_shifter.h>
 #include <tuple>
 
@@ -59,7 +61,11 @@ struct RosMonitor::Private
     quint64 graphVersion = 0; ///< under `mutex`
     quint64 graphListed = 0; ///< the worker's: the graph version `silence` lists
     SilentSubscriptions silence; ///< the worker's only
-    std::atomic<quint64> madeAgain {0};
+    QHash<QString, QStringList> publishersOf; ///< the worker's: the graph's publishers but this node
+    QHash<QString, QString> nodeUris; ///< the worker's: a publisher's address (empty: not found)
+    static constexpr int kMaxLookupsPerPass = 10;
+    static constexpr int kCallMs = 1000; ///< a lookup at the master, a publisherUpdate to this node
+    std::atomic<quint64> askedAgain {0};
     std::atomic<int> silentNow {0};
     HeadHub heads; ///< its own lock
     TapHub taps; ///< its own lock; a tapped topic is monitored while a tap of it is open
@@ -117,22 +123,54 @@ struct RosMonitor::Private
         }
     }
 
-    // On the node's worker thread: the topics `graph` lists a publisher of, this node not counted
+    // On the node's worker thread: the publishers `graph` lists a topic of, this node not counted
     // (roscpp never connects a subscription to its own node's publisher through the master).
     void listPublished(const TopicGraph& graph)
     {
         const QString self = QString::fromStdString(ros::this_node::getName());
+        publishersOf.clear();
+        nodeUris.clear(); // a node started again has another address
         QSet<QString> listed;
         for (const TopicInfo& t : graph.topics) {
-            if (std::any_of(t.publishers.cbegin(), t.publishers.cend(),
-                            [&](const QString& n) { return n != self; }))
+            QStringList others = t.publishers;
+            others.removeAll(self);
+            if (!others.isEmpty()) {
                 listed.insert(t.name);
+                publishersOf.insert(t.name, others);
+            }
         }
         silence.setListed(std::move(listed));
     }
 
-    // On the node's worker thread: subscribes again what stayed silent (see SilentSubscriptions).
-    void mendSilent(ros::NodeHandle& node, const std::weak_ptr<Private>& self, QPointer<RosMonitor> owner)
+    // On the node's worker thread: the XML-RPC addresses of `topic`'s publishers, looked up at the
+    // master (at most `*lookups` more calls, each within kCallMs; known ones kept until the graph
+    // changes).
+    QVariantList publisherUris(const QString& topic, int* lookups)
+    {
+        QVariantList uris;
+        const QString caller = QString::fromStdString(ros::this_node::getName());
+        for (const QString& node : publishersOf.value(topic)) {
+            auto it = nodeUris.constFind(node);
+            if (it == nodeUris.cend()) {
+                if (*lookups <= 0)
+                    continue;
+                --*lookups;
+                const RosMasterApi master(QString::fromStdString(ros::master::getURI()), caller);
+                const Result<QVariant> uri = master.call(u"lookupNode"_s, {caller, node}, kCallMs);
+                it = nodeUris.insert(node, uri ? uri->toString() : QString());
+            }
+            if (!it->isEmpty())
+                uris.append(*it);
+        }
+        return uris;
+    }
+
+    // On the node's worker thread: asks again the publishers of what stayed silent (see
+    // SilentSubscriptions) through this node's publisherUpdate, as the master does: roscpp starts a
+    // request only to a publisher neither connected nor already asked, so a request still on its
+    // way is not doubled, and nothing connected is dropped (only topics with none connected are
+    // passed, with every publisher the master lists).
+    void mendSilent()
     {
         std::optional<TopicGraph> changed;
         {
@@ -144,17 +182,26 @@ struct RosMonitor::Private
         }
         if (changed)
             listPublished(*changed);
-        const QList<QString> again
-            = silence.pass(wallClockNs(), subscribers.keys(), [this](const QString& topic) {
-                  const auto it = subscribers.constFind(topic);
-                  return it == subscribers.cend() ? 0 : int(it->getNumPublishers());
-              });
+        const auto connected = [this](const QString& topic) {
+            const auto it = subscribers.constFind(topic);
+            return it == subscribers.cend() ? 0 : int(it->getNumPublishers());
+        };
+        const QList<QString> again = silence.pass(wallClockNs(), subscribers.keys(), connected);
+        int lookups = kMaxLookupsPerPass;
+        const QString caller = QString::fromStdString(ros::this_node::getName());
         for (const QString& topic : again) {
+            const QVariantList uris = publisherUris(topic, &lookups);
+            if (uris.isEmpty() || connected(topic) > 0)
+                continue;
             qCInfo(lcRos).noquote()
-                << u"subscribing again to %1: the master lists a publisher, none has connected"_s.arg(topic);
-            subscribe(node, topic, self, owner);
+                << u"asking the publishers of %1 again: the master lists them, none has connected"_s.arg(
+                       topic);
+            // This node's own publisherUpdate, as the master calls it (roscpp's is private).
+            const RosMasterApi self(QString::fromStdString(ros::XMLRPCManager::instance()->getServerURI()),
+                                    caller);
+            if (self.call(u"publisherUpdate"_s, {caller, topic, uris}, kCallMs))
+                ++askedAgain;
         }
-        madeAgain = silence.made();
         silentNow = silence.silent();
     }
 
@@ -262,18 +309,17 @@ void RosMonitor::setGraph(const TopicGraph& graph)
                 return; // no node to start for it: looking registers nothing
         }
         std::weak_ptr<Private> weak = d;
-        QPointer<RosMonitor> self(this);
-        d->rosNode->post([weak, self](ros::NodeHandle& node) {
+        d->rosNode->post([weak](ros::NodeHandle&) {
             if (auto p = weak.lock())
-                p->mendSilent(node, weak, self);
+                p->mendSilent();
         });
     });
     m_mend->start(kMendPeriodMs);
 }
 
-quint64 RosMonitor::subscriptionsMadeAgain() const
+quint64 RosMonitor::publishersAskedAgain() const
 {
-    return d->madeAgain;
+    return d->askedAgain;
 }
 
 int RosMonitor::silentSubscriptions() const

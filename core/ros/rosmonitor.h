@@ -34,12 +34,13 @@ public:
     SourceGraph sourceGraph() const override { return SourceGraph::Ros1; }
     /// Registers every monitored topic again (after the master restarted).
     void resubscribeAll();
-    /// The master's graph: a monitored topic it lists a publisher of that stays without one
-    /// connected is subscribed again (see SilentSubscriptions), checked every kMendPeriodMs.
+    /// The master's graph: the publishers of a monitored topic that stays without one connected
+    /// while the master lists them are asked again (see SilentSubscriptions), checked every
+    /// kMendPeriodMs.
     void setGraph(const TopicGraph& graph);
     static constexpr int kMendPeriodMs = 2000;
-    /// Subscriptions made again because they stayed silent, since the start.
-    quint64 subscriptionsMadeAgain() const;
+    /// Silent topics whose publishers were asked again, since the start.
+    quint64 publishersAskedAgain() const;
     /// Monitored topics silent for SilentSubscriptions::kSilentNs or more at the last check.
     int silentSubscriptions() const;
     /// Current figures of every monitored topic (rates computed for `nowNs`).

@@ -7,17 +7,17 @@
 #include <QSet>
 #include <QString>
 
-/// Which silent ROS 1 subscriptions to make again, within bounds.
+/// Which silent ROS 1 subscriptions to ask their publishers again for, within bounds.
 ///
 /// roscpp asks a publisher for a topic (requestTopic) once, when the master names it; when that
 /// request fails (the publisher's node is busy with 10,000 other requests, out of descriptors, a
 /// moment away), roscpp does not ask again until the master names a publisher of the topic anew.
 /// The subscription then stays silent while the publisher talks to everyone else. A subscription
 /// is silent when the master lists a publisher of its topic (other than this process) and none is
-/// connected; one silent for kSilentNs is made again, the next time after twice as long (at most
-/// kMaxBackoffNs), at most kMaxPerPass in a pass, so that a publisher that refuses every request
-/// costs one subscription every five minutes, not a loop. Plain bookkeeping: the caller asks
-/// roscpp and subscribes.
+/// connected (a request on its way counts as silent: roscpp does not say); one silent for kSilentNs
+/// is asked about again, the next time after twice as long (at most kMaxBackoffNs), at most
+/// kMaxPerPass in a pass, so that a publisher that refuses every request costs one request every
+/// five minutes, not a loop. Plain bookkeeping: the caller asks roscpp (see RosMonitor).
 class SilentSubscriptions
 {
 public:
@@ -28,10 +28,10 @@ public:
     /// The topics the master lists a publisher of, not counting this process.
     void setListed(QSet<QString> topics) { m_listed = std::move(topics); }
     /// One pass over the subscribed topics at `nowNs`; `connected(topic)` tells the publishers
-    /// connected to the subscription. The topics to subscribe again now.
+    /// connected to the subscription. The topics to ask about again now.
     QList<QString> pass(qint64 nowNs, const QList<QString>& subscribed,
                         const std::function<int(const QString&)>& connected);
-    /// Subscriptions made again since the start.
+    /// Topics to ask about again given since the start.
     quint64 made() const { return m_made; }
     /// Subscriptions silent for kSilentNs or longer at the last pass.
     int silent() const { return m_silentLong; }

@@ -236,9 +236,9 @@ private slots:
     }
 
     /// Issue 44: at 10,000 links about 150 subscriptions never connected: their publisher's node,
-    /// asked for 10,000 topics at once, failed some requests, and roscpp asks once. A subscription
-    /// the master lists a publisher for and that stays without one is made again.
-    void aSubscriptionLeftSilentIsMadeAgain()
+    /// asked for 10,000 topics at once, failed some requests, and roscpp asks once. The publishers
+    /// of a subscription that the master lists and that stays without one are asked again.
+    void aSubscriptionLeftSilentAsksItsPublishersAgain()
     {
         RosGraphPoller poller;
         poller.setMasterUri(m_servers.rosMasterUri());
@@ -254,12 +254,12 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(pub.output().contains("refused"), 20000);
         QElapsedTimer sinceRefused;
         sinceRefused.start();
-        // roscpp leaves it there: made again only once silent (no publisher connected while the
+        // roscpp leaves it there: asked again only once silent (no publisher connected while the
         // master lists one) for SilentSubscriptions::kSilentNs; then it hears the publisher.
-        QTRY_COMPARE_WITH_TIMEOUT(monitor.subscriptionsMadeAgain(), 1u, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(monitor.publishersAskedAgain(), 1u, 30000);
         QVERIFY(sinceRefused.elapsed() >= SilentSubscriptions::kSilentNs / 1'000'000 - 500);
         QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/flaky"_s).messages >= 3, 20000);
-        QCOMPARE(monitor.subscriptionsMadeAgain(), 1u);
+        QCOMPARE(monitor.publishersAskedAgain(), 1u);
         QTRY_COMPARE_WITH_TIMEOUT(monitor.silentSubscriptions(), 0, 10000);
         QCOMPARE(pub.output().count("refused"), 1);
         monitor.unmonitor(u"/flaky"_s);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Issue 44: ROS 1 subscriptions that roscpp left silent (its one requestTopic to a listed publisher
-// failed) are made again after 10 s, then less and less often, a bounded number a pass; a topic
+// failed) are asked about again after 10 s, then less and less often, a bounded number a pass; a topic
 // with a publisher connected, or none listed, is left alone.
 #include "ros/silentsubscriptions.h"
 
@@ -17,7 +17,7 @@ class TestSilentSubscriptions : public QObject
 {
     Q_OBJECT
 private slots:
-    void aListedTopicWithNoPublisherConnectedIsMadeAgainThenBackedOff()
+    void aListedTopicWithNoPublisherConnectedIsAskedAgainThenBackedOff()
     {
         SilentSubscriptions s;
         s.setListed({u"/a"_s, u"/b"_s});
