@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "prometheusanswer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -33,19 +34,20 @@ bool readPoint(const QJsonValue& v, PrometheusAnswer::Point* out)
 }
 
 /// The labels of `metric`, bounded; false when it is not an object of strings.
-bool readLabels(const QJsonValue& metric, QHash<QString, QString>* out)
+bool readLabels(const QJsonValue& metric, QList<PrometheusAnswer::Label>* out)
 {
     if (metric.isUndefined())
         return true; // a series without labels (e.g. of sum())
     if (!metric.isObject())
         return false;
     const QJsonObject o = metric.toObject();
+    out->reserve(std::min(o.size(), PrometheusAnswer::kMaxLabels));
     for (auto it = o.begin(); it != o.end(); ++it) {
         if (!it.value().isString())
             return false;
         if (out->size() >= PrometheusAnswer::kMaxLabels)
             break;
-        out->insert(bounded(it.key()), bounded(it.value().toString()));
+        out->append({bounded(it.key()), bounded(it.value().toString())});
     }
     return true;
 }

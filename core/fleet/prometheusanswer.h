@@ -2,10 +2,10 @@
 #pragma once
 
 #include <QCoreApplication>
-#include <QHash>
 #include <QList>
 #include <QString>
 #include <QStringList>
+#include <utility>
 
 /// What one answer of Prometheus's HTTP API (/api/v1/query, /api/v1/query_range) said, as far as
 /// the fleet view reads it: a vector or a matrix of series, each its labels and its samples.
@@ -29,11 +29,21 @@ public:
         double time = 0; ///< seconds since the epoch
         double value = 0; ///< may be NaN or ±Inf (Prometheus writes them as "NaN", "+Inf")
     };
+    using Label = std::pair<QString, QString>; ///< a name and its value
     struct Series
     {
-        QHash<QString, QString> labels;
+        /// As the answer gives them: a few a series (the fleet's queries aggregate to the labels
+        /// they use), so a flat list and not a hash of its own for each of thousands of series.
+        QList<Label> labels;
         QList<Point> points; ///< one for a vector, in time order for a matrix
-        QString label(const QString& name) const { return labels.value(name); }
+        /// The value of the label `name`, empty when there is none.
+        QString label(QStringView name) const
+        {
+            for (const Label& l : labels)
+                if (l.first == name)
+                    return l.second;
+            return {};
+        }
     };
 
     QList<Series> series;
