@@ -54,8 +54,15 @@ public:
     QStringList warnings; ///< the server's own warnings, at most a few
 
     bool ok() const { return error.isEmpty(); }
-    /// Reads an answer's bytes (already bounded in size by the client).
+    /// Reads an answer's bytes (already bounded in size by the client): Prometheus's usual form
+    /// straight from the bytes, anything else as readGeneral() does, with the same result.
     static PrometheusAnswer read(const QByteArray& json);
+    /// Reads Prometheus's usual form of an answer (success, a vector or a matrix, strings without
+    /// escapes, within the bounds) straight from the bytes; false, `out` untouched, for any other.
+    static bool readUsual(const QByteArray& json, PrometheusAnswer* out);
+    /// Reads any answer through a JSON document: errors, warnings, scalars, escapes, what is past
+    /// a bound or of the wrong form (counted).
+    static PrometheusAnswer readGeneral(const QByteArray& json);
     /// A sample value as Prometheus writes it: a JSON string of a float ("1.5", "NaN", "+Inf").
     /// Anything else is not a value (false).
     static bool readValue(const QString& text, double* out);
