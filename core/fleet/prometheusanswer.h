@@ -19,7 +19,10 @@ struct PrometheusAnswer
 {
     Q_DECLARE_TR_FUNCTIONS(PrometheusAnswer)
 public:
-    static constexpr qsizetype kMaxSeries = 20000; ///< series taken from one answer
+    /// Series taken from one answer: the fleet view's per-side answers hold 2 a link, so 25,000
+    /// links (10,000 use 40 % of it). A memory bound: a series of the fleet's few short labels
+    /// takes well under 1 KiB, and the bytes of an answer are bounded before it is parsed.
+    static constexpr qsizetype kMaxSeries = 50'000;
     static constexpr qsizetype kMaxPoints = 2'000'000; ///< samples taken from one answer, in all
     static constexpr qsizetype kMaxLabels = 64; ///< labels of one series (the rest dropped)
     static constexpr qsizetype kMaxTextChars = 4096; ///< one label name or value, the error text
