@@ -393,6 +393,16 @@ void viewRows(const Fleet& fleet, int expected, int loads, int spanS)
                    .arg(seconds, 0, 'f', 0)
                    .arg(centralCpu, 0, 'f', 1)
                    .arg(double(Bench::statusKb("VmHWM:")) / 1024, 0, 'f', 0));
+    // The same wait with the view stopped: what this process costs without it (the children it
+    // watches, qWait's wake-ups), the floor under the figure above.
+    view->stop();
+    QTest::qWait(kScrapeS * 1000); // a refresh under way ends
+    const double idle0 = Bench::cpuSeconds();
+    span.restart();
+    QTest::qWait(spanS * 1000 / 2); // the span measured
+    Bench::row(u"peer: the same process with the view stopped (% of a core)"_s,
+               100 * (Bench::cpuSeconds() - idle0) / (double(span.elapsed()) / 1000),
+               u"the bench's own floor over %1 s"_s.arg(double(span.elapsed()) / 1000, 0, 'f', 0));
 }
 } // namespace
 

@@ -136,7 +136,11 @@ QHash<QString, FleetLink> linksOf(const QHash<QString, PrometheusAnswer>& answer
     for (const PrometheusAnswer::Series& s : answers.value(u"state"_s).series)
         current.insert(linkKey(s), true);
     QHash<QString, FleetLink> links;
-    for (const PrometheusAnswer::Series& s : answers.value(u"links"_s).series) {
+    // `links` holds the hour's links of the hosts not reporting (all of them, from an older
+    // server's answer), `state` those served now.
+    QList<PrometheusAnswer::Series> named = answers.value(u"links"_s).series;
+    named += answers.value(u"state"_s).series;
+    for (const PrometheusAnswer::Series& s : std::as_const(named)) {
         FleetLink l;
         l.host = s.label(u"host"_s);
         l.bridge = s.label(u"bridge"_s);
@@ -144,16 +148,17 @@ QHash<QString, FleetLink> linksOf(const QHash<QString, PrometheusAnswer>& answer
         l.direction = s.label(u"direction"_s);
         if (l.host.isEmpty() || l.link.isEmpty())
             continue;
+        const QString key = l.key();
         auto h = hosts.find(l.host);
         if (h == hosts.end()) {
             // Links of a host whose info was never seen: taken as reporting while they are served.
-            h = hosts.insert(l.host, FleetHost {l.host, {}, current.contains(l.key()), now});
+            h = hosts.insert(l.host, FleetHost {l.host, {}, current.contains(key), now});
         }
         l.hostReporting = h->reporting;
-        if (l.hostReporting && !current.contains(l.key()))
-            continue; // the watch no longer watches it
+        if ((l.hostReporting && !current.contains(key)) || links.contains(key))
+            continue; // the watch no longer watches it, or it is listed already
         l.def = FleetSnapshotBuilder::linkDef(l.bridge, l.link, l.direction);
-        links.insert(l.key(), l);
+        links.insert(key, l);
     }
 
     return links;
@@ -193,23 +198,36 @@ QHash<QString, Figures> figuresOf(const QHash<QString, PrometheusAnswer>& answer
 
 QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
 {
+    // Each answer carries the labels the view reads and nothing else: the scrapers' `job` and
+    // `instance` (and a watch's own --label's) are aggregated away on the server, so a series is a
+    // few short labels (a refresh reads tens of thousands of them).
+    const QString perLink = u"host, bridge, link, direction"_s;
+    const QString perSide = perLink + u", side"_s;
+    const auto by = [](const QString& op, const QString& labels, const QString& expr) {
+        return u"%1 by (%2) (%3)"_s.arg(op, labels, expr);
+    };
     const QString quantile = u"1000 * histogram_quantile(%1, sum by (host, bridge, link, direction, le) "
                              "(rate(bridgescope_link_latency_seconds_bucket[1m])))"_s;
     return {
-        {u"links"_s, u"last_over_time(bridgescope_link_state[1h])"_s},
-        {u"state"_s, u"bridgescope_link_state"_s},
-        {u"seen"_s, u"bridgescope_link_seen"_s},
-        {u"rate"_s, u"bridgescope_link_rate_hz"_s},
-        {u"messages"_s, u"bridgescope_link_messages_total"_s},
-        {u"bytes"_s, u"bridgescope_link_bytes_total"_s},
-        {u"lost"_s, u"bridgescope_link_lost_total"_s},
-        {u"stalls"_s, u"bridgescope_link_stalls_total"_s},
-        {u"recent"_s, u"increase(bridgescope_link_messages_total%1)"_s.arg(rateRange())},
-        {u"recentLost"_s, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange())},
+        // The last hour's links only of hosts not reporting now: the others' are in `state`.
+        {u"links"_s,
+         by(u"max"_s, perLink, u"last_over_time(bridgescope_link_state[1h])"_s)
+             + u" unless on (host) bridgescope_watch_info"_s},
+        {u"state"_s, by(u"max"_s, perLink, u"bridgescope_link_state"_s)},
+        {u"seen"_s, by(u"min"_s, perLink, u"bridgescope_link_seen"_s)},
+        {u"rate"_s, by(u"sum"_s, perSide, u"bridgescope_link_rate_hz"_s)},
+        {u"messages"_s, by(u"sum"_s, perSide, u"bridgescope_link_messages_total"_s)},
+        {u"bytes"_s, by(u"sum"_s, perSide, u"bridgescope_link_bytes_total"_s)},
+        {u"lost"_s, by(u"sum"_s, perLink, u"bridgescope_link_lost_total"_s)},
+        {u"stalls"_s, by(u"sum"_s, perLink, u"bridgescope_link_stalls_total"_s)},
+        {u"recent"_s,
+         by(u"sum"_s, perSide, u"increase(bridgescope_link_messages_total%1)"_s.arg(rateRange()))},
+        {u"recentLost"_s,
+         by(u"sum"_s, perLink, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange()))},
         {u"p50"_s, quantile.arg(u"0.5"_s)},
         {u"p99"_s, quantile.arg(u"0.99"_s)},
-        {u"bridges"_s, u"bridgescope_bridge_up"_s},
-        {u"info"_s, u"bridgescope_watch_info"_s},
+        {u"bridges"_s, by(u"min"_s, u"host, bridge"_s, u"bridgescope_bridge_up"_s)},
+        {u"info"_s, by(u"max"_s, u"host, version"_s, u"bridgescope_watch_info"_s)},
         {u"lastSeen"_s, u"max by (host) (max_over_time(timestamp(bridgescope_watch_info)[1h:15s]))"_s},
     };
 }

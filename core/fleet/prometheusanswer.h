@@ -2,10 +2,10 @@
 #pragma once
 
 #include <QCoreApplication>
-#include <QHash>
 #include <QList>
 #include <QString>
 #include <QStringList>
+#include <utility>
 
 /// What one answer of Prometheus's HTTP API (/api/v1/query, /api/v1/query_range) said, as far as
 /// the fleet view reads it: a vector or a matrix of series, each its labels and its samples.
@@ -19,7 +19,10 @@ struct PrometheusAnswer
 {
     Q_DECLARE_TR_FUNCTIONS(PrometheusAnswer)
 public:
-    static constexpr qsizetype kMaxSeries = 20000; ///< series taken from one answer
+    /// Series taken from one answer: the fleet view's per-side answers hold 2 a link, so 25,000
+    /// links (10,000 use 40 % of it). A memory bound: a series of the fleet's few short labels
+    /// takes well under 1 KiB, and the bytes of an answer are bounded before it is parsed.
+    static constexpr qsizetype kMaxSeries = 50'000;
     static constexpr qsizetype kMaxPoints = 2'000'000; ///< samples taken from one answer, in all
     static constexpr qsizetype kMaxLabels = 64; ///< labels of one series (the rest dropped)
     static constexpr qsizetype kMaxTextChars = 4096; ///< one label name or value, the error text
@@ -29,11 +32,21 @@ public:
         double time = 0; ///< seconds since the epoch
         double value = 0; ///< may be NaN or ±Inf (Prometheus writes them as "NaN", "+Inf")
     };
+    using Label = std::pair<QString, QString>; ///< a name and its value
     struct Series
     {
-        QHash<QString, QString> labels;
+        /// As the answer gives them: a few a series (the fleet's queries aggregate to the labels
+        /// they use), so a flat list and not a hash of its own for each of thousands of series.
+        QList<Label> labels;
         QList<Point> points; ///< one for a vector, in time order for a matrix
-        QString label(const QString& name) const { return labels.value(name); }
+        /// The value of the label `name`, empty when there is none.
+        QString label(QStringView name) const
+        {
+            for (const Label& l : labels)
+                if (l.first == name)
+                    return l.second;
+            return {};
+        }
     };
 
     QList<Series> series;
@@ -44,8 +57,15 @@ public:
     QStringList warnings; ///< the server's own warnings, at most a few
 
     bool ok() const { return error.isEmpty(); }
-    /// Reads an answer's bytes (already bounded in size by the client).
+    /// Reads an answer's bytes (already bounded in size by the client): Prometheus's usual form
+    /// straight from the bytes, anything else as readGeneral() does, with the same result.
     static PrometheusAnswer read(const QByteArray& json);
+    /// Reads Prometheus's usual form of an answer (success, a vector or a matrix, strings without
+    /// escapes, within the bounds) straight from the bytes; false, `out` untouched, for any other.
+    static bool readUsual(const QByteArray& json, PrometheusAnswer* out);
+    /// Reads any answer through a JSON document: errors, warnings, scalars, escapes, what is past
+    /// a bound or of the wrong form (counted).
+    static PrometheusAnswer readGeneral(const QByteArray& json);
     /// A sample value as Prometheus writes it: a JSON string of a float ("1.5", "NaN", "+Inf").
     /// Anything else is not a value (false).
     static bool readValue(const QString& text, double* out);

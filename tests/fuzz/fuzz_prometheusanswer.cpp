@@ -23,9 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     qsizetype points = 0;
     for (const PrometheusAnswer::Series& s : a.series) {
         FUZZ_CHECK(s.labels.size() <= PrometheusAnswer::kMaxLabels, "labels past the bound");
-        for (auto it = s.labels.cbegin(); it != s.labels.cend(); ++it)
-            FUZZ_CHECK(it.key().size() <= PrometheusAnswer::kMaxTextChars + 1
-                           && it.value().size() <= PrometheusAnswer::kMaxTextChars + 1,
+        for (const auto& [name, value] : s.labels)
+            FUZZ_CHECK(name.size() <= PrometheusAnswer::kMaxTextChars + 1
+                           && value.size() <= PrometheusAnswer::kMaxTextChars + 1,
                        "a label past its bound");
         for (const PrometheusAnswer::Point& p : s.points)
             FUZZ_CHECK(std::isfinite(p.time), "a time that is not a number");

@@ -29,6 +29,31 @@ const FleetHost* hostOf(const FleetSnapshot& s, const QString& name)
     return nullptr;
 }
 
+/// What `source`'s server answers now to the refresh's query `name`.
+PrometheusAnswer answerTo(FleetSource& source, const QString& name)
+{
+    QString promql;
+    for (const auto& [n, q] : FleetSnapshotBuilder::queries())
+        if (n == name)
+            promql = q;
+    PrometheusAnswer answer;
+    answer.error = u"no answer"_s;
+    source.client()->query(promql, [&](const PrometheusAnswer& a) { answer = a; });
+    if (!QTest::qWaitFor([&] { return answer.error != "no answer"_L1; }, 15000))
+        answer.error = u"no answer within 15 s"_s;
+    return answer;
+}
+
+/// The hosts of the series in `a`, sorted.
+QStringList hostsOf(const PrometheusAnswer& a)
+{
+    QStringList hosts;
+    for (const PrometheusAnswer::Series& s : a.series)
+        hosts << s.label(u"host"_s);
+    hosts.sort();
+    return hosts;
+}
+
 /// One refresh, waited for.
 bool refreshed(FleetSource& source)
 {
@@ -106,6 +131,20 @@ private slots:
             QVERIFY2(std::isnan(l->figures.source.rateHz),
                      qPrintable(QString::number(l->figures.source.rateHz)));
         }
+        // Issue 44, point 5: the hour's links are asked only of hosts not reporting; the links of
+        // the others come from their state, and the answers carry only the labels the view reads.
+        const PrometheusAnswer hour = answerTo(m_source, u"links"_s);
+        QVERIFY2(hour.ok(), qPrintable(hour.error));
+        QCOMPARE(hostsOf(hour), QStringList());
+        const PrometheusAnswer state = answerTo(m_source, u"state"_s);
+        QCOMPARE(hostsOf(state), (QStringList {u"edge-1"_s, u"vehicle-1"_s}));
+        for (const PrometheusAnswer::Series& series : state.series) {
+            QStringList names;
+            for (const auto& [name, value] : series.labels)
+                names << name;
+            names.sort();
+            QCOMPARE(names, (QStringList {u"bridge"_s, u"direction"_s, u"host"_s, u"link"_s}));
+        }
         // The p99 from the histograms, in the bucket the backdates put it: 3 s in (2.5, 5], 6 s in (5, 10].
         const double vehicleP99 = linkOf(s, u"vehicle-1"_s)->figures.latencyP99Ms;
         const double edgeP99 = linkOf(s, u"edge-1"_s)->figures.latencyP99Ms;
@@ -178,6 +217,7 @@ private slots:
         const FleetLink* vehicle = linkOf(s, u"vehicle-1"_s);
         QVERIFY(vehicle && vehicle->hostReporting && !vehicle->verdict.unknown);
         QVERIFY(hostOf(s, u"vehicle-1"_s)->reporting);
+        QCOMPARE(hostsOf(answerTo(m_source, u"links"_s)), QStringList {u"edge-1"_s});
     }
 
     /// Prometheus gone: the window's own outage is said, the links stay as they were.

@@ -3,6 +3,9 @@
 
 #include "widgets/links/linkcells.h"
 
+#include <cmath>
+#include <utility>
+
 using namespace Qt::StringLiterals;
 
 namespace {
@@ -16,16 +19,50 @@ void FleetModel::setSnapshot(const FleetSnapshot& snapshot)
 {
     const bool sameRows = snapshot.links.size() == m_snapshot.links.size()
         && std::equal(snapshot.links.cbegin(), snapshot.links.cend(), m_snapshot.links.cbegin(),
-                      [](const FleetLink& a, const FleetLink& b) { return a.key() == b.key(); });
-    if (sameRows) {
-        m_snapshot = snapshot; // one dataChanged: the selection and the scroll stay
-        if (!m_snapshot.links.isEmpty())
-            emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+                      [](const FleetLink& a, const FleetLink& b) {
+                          return a.host == b.host && a.bridge == b.bridge && a.link == b.link
+                              && a.direction == b.direction;
+                      });
+    if (!sameRows) {
+        beginResetModel();
+        m_snapshot = snapshot;
+        endResetModel();
         return;
     }
-    beginResetModel();
-    m_snapshot = snapshot;
-    endResetModel();
+    // The selection and the scroll stay. Only the rows whose cells changed are said to, and only
+    // their columns after the link's names: a sort by host (the default) is not redone for
+    // figures, the reason's column is measured again only when a reason changed, and an unchanged
+    // fleet costs no repaint at all.
+    const FleetSnapshot before = std::exchange(m_snapshot, snapshot);
+    emitChanged(before, StateColumn, P99Column, &sameFigures);
+    emitChanged(before, WhyColumn, WhyColumn,
+                [](const FleetLink& a, const FleetLink& b) { return a.verdict.detail == b.verdict.detail; });
+}
+
+void FleetModel::emitChanged(const FleetSnapshot& before, int firstColumn, int lastColumn,
+                             bool (*same)(const FleetLink&, const FleetLink&))
+{
+    int first = -1;
+    for (int row = 0; row <= int(m_snapshot.links.size()); ++row) {
+        const bool changed = row < m_snapshot.links.size() && !same(before.links[row], m_snapshot.links[row]);
+        if (changed && first < 0)
+            first = row;
+        if (!changed && first >= 0) {
+            emit dataChanged(index(first, firstColumn), index(row - 1, lastColumn));
+            first = -1;
+        }
+    }
+}
+
+bool FleetModel::sameFigures(const FleetLink& a, const FleetLink& b)
+{
+    const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+    const LinkFigures& f = a.figures;
+    const LinkFigures& g = b.figures;
+    return a.hostReporting == b.hostReporting && a.verdict.unknown == b.verdict.unknown
+        && a.verdict.level == b.verdict.level && a.verdict.detail == b.verdict.detail // the tooltip
+        && same(f.source.rateHz, g.source.rateHz) && same(f.destination.rateHz, g.destination.rateHz)
+        && same(f.lossPercent, g.lossPercent) && same(f.latencyP99Ms, g.latencyP99Ms);
 }
 
 const FleetLink* FleetModel::linkAt(int row) const

@@ -41,5 +41,11 @@ public:
     static QString stateText(const FleetLink& link);
 
 private:
+    /// Whether the two show the same state and figures.
+    static bool sameFigures(const FleetLink& a, const FleetLink& b);
+    /// dataChanged for each run of rows that `same` tells changed from `before`, in the columns given.
+    void emitChanged(const FleetSnapshot& before, int firstColumn, int lastColumn,
+                     bool (*same)(const FleetLink&, const FleetLink&));
+
     FleetSnapshot m_snapshot;
 };

@@ -57,6 +57,9 @@ FleetView::FleetView(QWidget* parent)
     m_table->setModel(m_proxy);
     ViewSetup::records(m_table, FleetModel::HostColumn);
     m_table->setSortingEnabled(true);
+    // The columns fit the rows shown and about as many around them (ColumnFitter grows them for
+    // rows scrolled to), not a thousand rows' text measured at each refresh of a large fleet.
+    m_table->horizontalHeader()->setResizeContentsPrecision(kFitRows);
     auto* fitter = new ColumnFitter(m_table);
     fitter->figures({FleetModel::StateColumn, FleetModel::SourceRateColumn, FleetModel::DestinationRateColumn,
                      FleetModel::LossColumn, FleetModel::P99Column});

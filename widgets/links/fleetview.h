@@ -26,6 +26,8 @@ class FleetView : public QWidget
 public:
     static constexpr int kRefreshMs = 5000;
     static constexpr double kHistoryMinutes = 15;
+    /// Rows measured to fit a column (QHeaderView::resizeContentsPrecision; Qt's default is 1,000).
+    static constexpr int kFitRows = 200;
 
     explicit FleetView(QWidget* parent = nullptr);
     ~FleetView() override;
