@@ -17,6 +17,7 @@
 //                                                         BENCH_IDLE_S, BENCH_SETTLE_S, BENCH_SCRAPE_S)
 //   BENCH_WATCH_BINARY=OTHER/bridgescope ...             the watch of another build (an A/B; the
 //                                                         reference bridge stays this build's)
+//   BENCH_WATCH_LOG=FILE ...                             the watch's standard error (progress lines)
 #include "watchfleet.h"
 
 #include "benchutil.h"
@@ -144,6 +145,8 @@ bool Fleet::start(int links)
     bridge.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     bridge.start(program, {u"bridge"_s, configPath});
     watch.setProcessEnvironment(servers.rosEnvironment());
+    if (const QString log = qEnvironmentVariable("BENCH_WATCH_LOG"); !log.isEmpty())
+        watch.setStandardErrorFile(log); // its progress lines, every 10 s
     QObject::connect(&watch, &QProcess::readyReadStandardOutput, [this] {
         const QByteArray out = watch.readAllStandardOutput();
         eventBytes += quint64(out.size());

@@ -186,7 +186,17 @@ struct RosMonitor::Private
             const auto it = subscribers.constFind(topic);
             return it == subscribers.cend() ? 0 : int(it->getNumPublishers());
         };
-        const QList<QString> again = silence.pass(wallClockNs(), subscribers.keys(), connected);
+        // Candidates: subscribed topics that have heard nothing (one that heard is connected, and
+        // roscpp tries a dropped connection again by itself).
+        QList<QString> unheard;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            for (auto it = topics.cbegin(); it != topics.cend(); ++it) {
+                if (it->stats.messages == 0 && subscribers.contains(it.key()))
+                    unheard.append(it.key());
+            }
+        }
+        const QList<QString> again = silence.pass(wallClockNs(), unheard, connected);
         int lookups = kMaxLookupsPerPass;
         const QString caller = QString::fromStdString(ros::this_node::getName());
         for (const QString& topic : again) {

@@ -45,13 +45,54 @@ private slots:
         }
         QVERIFY2(s.made() - made <= 3600 / 300 + 2, qPrintable(QString::number(s.made() - made)));
         QVERIFY(s.made() - made >= 3600 / 300 - 1);
-        // Connected: silent no more, and when it falls silent again it waits its 10 s anew.
+        // Connected: found so at its next check (at most 5 minutes on), not asked, silent no more;
+        // then checked every 10 s (roscpp's count is dear: only when due), never asked.
         connected[u"/a"_s] = 1;
-        QVERIFY(s.pass(now + kS, subscribed, ask).isEmpty());
+        made = s.made();
+        for (int i = 0; i < 310; ++i) {
+            now += kS;
+            QVERIFY(s.pass(now, subscribed, ask).isEmpty());
+        }
+        QCOMPARE(s.made(), made);
         QCOMPARE(s.silent(), 0);
+        // Silent again: asked within 10 s.
         connected[u"/a"_s] = 0;
-        QVERIFY(s.pass(now + 2 * kS, subscribed, ask).isEmpty());
-        QCOMPARE(s.pass(now + 12 * kS, subscribed, ask), QList<QString> {u"/a"_s});
+        int asked = 0;
+        for (int i = 0; i < 10; ++i) {
+            now += kS;
+            asked += int(s.pass(now, subscribed, ask).size());
+        }
+        QCOMPARE(asked, 1);
+    }
+
+    void roscppIsAskedOnlyForWhatIsDueAndBounded()
+    {
+        // roscpp's count walks every subscription: asked only when a topic is due, at most
+        // kMaxChecksPerPass a pass, in turn.
+        SilentSubscriptions s;
+        QSet<QString> listed;
+        QList<QString> candidates;
+        for (int i = 0; i < 1000; ++i) {
+            candidates.append(u"/q%1"_s.arg(i));
+            listed.insert(candidates.last());
+        }
+        s.setListed(listed);
+        int calls = 0;
+        const auto connectedQuiet = [&calls](const QString&) {
+            ++calls;
+            return 1; // connected, just quiet
+        };
+        s.pass(kStart, candidates, connectedQuiet);
+        QCOMPARE(calls, 0); // nothing due yet
+        QSet<int> perPass;
+        for (int p = 1; p <= 10; ++p) {
+            calls = 0;
+            QVERIFY(s.pass(kStart + 10 * kS + p * 2 * kS, candidates, connectedQuiet).isEmpty());
+            QVERIFY2(calls <= SilentSubscriptions::kMaxChecksPerPass, qPrintable(QString::number(calls)));
+            perPass.insert(calls);
+        }
+        QVERIFY(perPass.contains(SilentSubscriptions::kMaxChecksPerPass)); // the due ones, in turn
+        QCOMPARE(s.made(), 0u);
     }
 
     void aPassMakesAtMostItsBoundAndTheRestComeNext()
