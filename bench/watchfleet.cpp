@@ -78,6 +78,7 @@ struct Fleet
 {
     TestServers servers;
     QString program;
+    QString watchProgram; ///< BENCH_WATCH_BINARY, else `program`
     QString configPath;
     quint16 metricsPort = TestServers::freePort();
     QProcess bridge;
@@ -160,7 +161,7 @@ bool Fleet::start(int links)
                 ++eventReasons[kind];
         }
     });
-    watch.start(program,
+    watch.start(watchProgram,
                 {u"watch"_s, configPath, u"--ros-master"_s, servers.rosMasterUri(), u"--metrics"_s,
                  u"127.0.0.1:%1"_s.arg(metricsPort)});
     QObject::connect(&sub, &QProcess::readyReadStandardOutput,
@@ -218,10 +219,12 @@ int runWatchFleet(const QString& program)
     const int scrapeS = Bench::envInt("BENCH_SCRAPE_S", 5);
     Fleet fleet;
     fleet.program = program;
+    fleet.watchProgram = qEnvironmentVariable("BENCH_WATCH_BINARY", program);
     if (!fleet.start(links))
         return 1;
-    std::printf("bench_watch fleet: %d links, %d msg/s in all (each link every %.1f s), %d s of load\n\n",
-                links, rate, double(links) / rate, seconds);
+    std::printf("bench_watch fleet: %d links, %d msg/s in all (each link every %.1f s), %d s of load\n"
+                "watch: %s\n\n",
+                links, rate, double(links) / rate, seconds, qPrintable(fleet.watchProgram));
     const double listedS = scrapeUntil(fleet, 1, 60, [&](const Scrape& s) { return s.links >= links; });
     const double subscribedS = untilSubscribed(fleet, links, 300);
     QTest::qWait(2000); // the last subscriptions' connections

@@ -9,6 +9,7 @@
 #include "ros/rosbytes.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosnode.h"
+#include "ros/rosreregistration.h"
 #include "ros/silentsubscriptions.h"
 
 #include <algorithm>
@@ -52,6 +53,7 @@ struct RosMonitor::Private
     mutable std::mutex mutex;
     QHash<QString, TopicState> topics;
     std::atomic<quint64> typesLearned {0};
+    std::atomic<quint64> subscriptions {0};
     std::deque<LearnedType> learned; ///< under `mutex`: the last kMaxLearnedKept learned types
     QHash<QString, int> wanted; ///< monitor() calls not yet balanced by unmonitor(), per topic
     std::shared_ptr<RosNode> rosNode = RosNode::acquire();
@@ -104,6 +106,7 @@ struct RosMonitor::Private
                    QPointer<RosMonitor> owner)
     {
         subscribers.remove(topic);
+        ++subscriptions;
         boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> cb
             = [self, topic](const topic_tools::ShapeShifter::ConstPtr& msg) {
                   if (auto p = self.lock())
@@ -215,13 +218,20 @@ struct RosMonitor::Private
         silentNow = silence.silent();
     }
 
-    void subscribeAll(const std::shared_ptr<Private>& self, QPointer<RosMonitor> owner)
+    /// `unlessKnown`: not when the master knows this node (or knows it again once told).
+    void subscribeAll(const std::shared_ptr<Private>& self, QPointer<RosMonitor> owner, bool unlessKnown)
     {
         std::weak_ptr<Private> weak = self;
-        rosNode->post([weak, owner](ros::NodeHandle& node) {
+        rosNode->post([weak, owner, unlessKnown](ros::NodeHandle& node) {
             auto p = weak.lock();
             if (!p)
                 return;
+            if (unlessKnown) {
+                const RosReregistration::Result r = RosReregistration::check();
+                if (r == RosReregistration::Result::Registered
+                    || r == RosReregistration::Result::Reregistered)
+                    return; // the master has every subscription, and the subscriptions their publishers
+            }
             QList<QString> topics;
             {
                 std::lock_guard<std::mutex> lock(p->mutex);
@@ -241,7 +251,7 @@ RosMonitor::RosMonitor(QObject* parent)
     QPointer<RosMonitor> self(this);
     d->hook = d->rosNode->addMasterChangedHook([weak, self] {
         if (auto p = weak.lock())
-            p->subscribeAll(p, self);
+            p->subscribeAll(p, self, false); // another master
     });
 }
 
@@ -299,7 +309,12 @@ bool RosMonitor::isMonitored(const QString& topic) const
 
 void RosMonitor::resubscribeAll()
 {
-    d->subscribeAll(d, this);
+    d->subscribeAll(d, this, true);
+}
+
+quint64 RosMonitor::subscriptions() const
+{
+    return d->subscriptions;
 }
 
 void RosMonitor::setGraph(const TopicGraph& graph)

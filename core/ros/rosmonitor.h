@@ -32,7 +32,10 @@ public:
     void unmonitor(const QString& topic) override;
     bool isMonitored(const QString& topic) const override;
     SourceGraph sourceGraph() const override { return SourceGraph::Ros1; }
-    /// Registers every monitored topic again (after the master restarted).
+    /// Registers every monitored topic again after the master restarted (RosGraphPoller::
+    /// masterRestarted()): not when the master still knows this node, or knows it again once told
+    /// (RosReregistration::check()). A master that answered a poll late (busy with 10,000 topics)
+    /// is the same master; subscribing 10,000 topics again tore down every connection (issue 44).
     void resubscribeAll();
     /// The master's graph: the publishers of a monitored topic that stays without one connected
     /// while the master lists them are asked again (see SilentSubscriptions), checked every
@@ -43,6 +46,8 @@ public:
     quint64 publishersAskedAgain() const;
     /// Monitored topics silent for SilentSubscriptions::kSilentNs or more at the last check.
     int silentSubscriptions() const;
+    /// How many times a topic was subscribed in roscpp (monitor() and resubscriptions).
+    quint64 subscriptions() const;
     /// Current figures of every monitored topic (rates computed for `nowNs`).
     QHash<QString, TopicStats> snapshot(qint64 nowNs) const;
     /// How many times a monitored topic's type became known (its first message): a reader of the

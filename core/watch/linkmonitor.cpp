@@ -163,6 +163,7 @@ std::vector<int> LinkMonitor::refreshStatistics(qint64 nowNs)
             ++m_changes;
             t.refresh(nowNs);
             refreshed.push_back(i);
+            m_reader.moved(i);
         }
         if (m_historyPoints == 0)
             continue;
@@ -254,6 +255,7 @@ void LinkMonitor::evaluate(int i, qint64 nowNs)
 {
     Track& t = *m_tracks[std::size_t(i)];
     ++m_judgements;
+    m_reader.moved(i); // its level, reasons, stalls or sight may change
     t.judgedNs = nowNs;
     t.judgedDormant = t.dormant();
     t.judgedBlindness = t.blindness;

@@ -59,6 +59,10 @@ public:
     /// statistics refreshed for a link that has heard something, events, blindness. A reader of every
     /// link's figures (the metrics) skips a fleet of idle links while it stands still.
     quint64 activity() const { return m_linksVersion + m_reader.read() + m_changes; }
+    /// The links whose figures, level or sight may have moved since the last call (each once): heard
+    /// something, refreshed or judged. For the one reader of every link's figures (the metrics),
+    /// which takes every link again when linksVersion() moves.
+    std::vector<int> takeMoved() { return m_reader.takeMoved(); }
     /// How many times a link was judged: the bounded idle work (a silent fleet is not judged).
     quint64 judgements() const { return m_judgements; }
     const LinkDef& link(int index) const;

@@ -31,9 +31,11 @@ void LinkReader::index()
     m_byRos.clear();
     m_byLatencyTopic.clear();
     m_heard.clear(); // their indexes are gone: the monitor judges every link after a change of links
+    m_moved.clear(); // and a reader of every link's figures takes them all again (linksVersion())
     for (int i = 0; i < int(m_tracks.size()); ++i) {
         LinkTrack& t = *m_tracks[std::size_t(i)];
         t.heard = false;
+        t.moved = false;
         m_byMqtt[t.def.mqttTopic] << i;
         if (!t.def.rosTopic.isEmpty())
             m_byRos[t.def.rosTopic] << i;
@@ -97,22 +99,43 @@ void LinkReader::applyAnnouncement(LinkTrack& t, const AnnouncedType& type)
     (t.def.direction == Direction::Ros2Mqtt ? t.dstHeader : t.srcHeader) = type.header;
 }
 
-void LinkReader::heard(int i)
+void LinkReader::mark(std::vector<int>& list, bool LinkTrack::*in, int i)
 {
     LinkTrack& t = *m_tracks[std::size_t(i)];
-    if (t.heard)
+    if (t.*in)
         return;
-    t.heard = true;
-    m_heard.push_back(i);
+    t.*in = true;
+    list.push_back(i);
+}
+
+std::vector<int> LinkReader::take(std::vector<int>& list, bool LinkTrack::*in)
+{
+    std::vector<int> out;
+    out.swap(list);
+    for (int i : out)
+        (*m_tracks[std::size_t(i)]).*in = false;
+    return out;
+}
+
+void LinkReader::heard(int i)
+{
+    mark(m_heard, &LinkTrack::heard, i);
+    mark(m_moved, &LinkTrack::moved, i);
+}
+
+void LinkReader::moved(int i)
+{
+    mark(m_moved, &LinkTrack::moved, i);
+}
+
+std::vector<int> LinkReader::takeMoved()
+{
+    return take(m_moved, &LinkTrack::moved);
 }
 
 std::vector<int> LinkReader::takeHeard()
 {
-    std::vector<int> out;
-    out.swap(m_heard);
-    for (int i : out)
-        m_tracks[std::size_t(i)]->heard = false;
-    return out;
+    return take(m_heard, &LinkTrack::heard);
 }
 
 void LinkReader::add(const std::vector<SourceHead>& batch)

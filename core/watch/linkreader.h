@@ -54,12 +54,23 @@ public:
     quint64 read() const { return m_read; }
     /// The links that heard something since the last call, each once (the monitor judges them).
     std::vector<int> takeHeard();
+    /// Link `i`'s figures, level or sight may have moved (it heard something, was refreshed or
+    /// judged): into the list takeMoved() gives, unless it is there already.
+    void moved(int i);
+    /// The links that moved since the last call, each once, for the one reader of every link's
+    /// figures (the metrics); after index() it starts empty (the indexes are gone).
+    std::vector<int> takeMoved();
 
 private:
     quint64 m_read = 0;
     std::vector<int> m_heard;
-    /// Track `i` heard something: into m_heard unless it is there already.
+    std::vector<int> m_moved;
+    /// Track `i` heard something: into m_heard and m_moved unless it is there already.
     void heard(int i);
+    /// Puts track `i` into `list` unless its flag `in` says it is there.
+    void mark(std::vector<int>& list, bool LinkTrack::*in, int i);
+    /// Empties `list`, clearing its tracks' flag `in`; what it held.
+    std::vector<int> take(std::vector<int>& list, bool LinkTrack::*in);
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
     void indexPipeline();

@@ -7,6 +7,7 @@
 
 namespace {
 using Link = MetricsSnapshot::Link;
+using Links = MetricsSnapshot::Links;
 
 /// Bucket bounds as OpenMetrics' canonical numbers ("1.0", not "1").
 constexpr std::array<const char*, MetricsSnapshot::kLatencyBounds.size()> kBoundTexts {
@@ -73,13 +74,13 @@ void sample(QByteArray& out, const char* name, const char* suffix, const QByteAr
 
 /// One counter or gauge family over every link; `value` reads the link's figure.
 template<typename Value, typename Has>
-void linkFamily(QByteArray& out, const std::vector<Link>& links, const Family& f, const char* extraLabel,
-                Value value, Has has)
+void linkFamily(QByteArray& out, const std::vector<const Link*>& links, const Family& f,
+                const char* extraLabel, Value value, Has has)
 {
     const char* suffix = qstrcmp(f.type, "counter") == 0 ? "_total" : "";
-    for (const Link& l : links)
-        if (has(l))
-            sample(out, f.name, suffix, l.labels, extraLabel, value(l));
+    for (const Link* l : links)
+        if (has(*l))
+            sample(out, f.name, suffix, l->labels, extraLabel, value(*l));
 }
 
 /// Most bytes one sample of a link takes beside its labels and stage: the longest name with its
@@ -90,7 +91,7 @@ constexpr int kLatencySamples
     = int(MetricsSnapshot::kLatencyBounds.size()) + 3; ///< buckets, +Inf, count, sum
 
 /// How many of the links (from the first) fit in `budget` bytes, by an upper bound of their samples.
-std::size_t linksWithin(const std::vector<Link>& links, qsizetype budget)
+std::size_t linksWithin(const Links& links, qsizetype budget)
 {
     std::size_t n = 0;
     for (const Link& l : links) {
@@ -106,6 +107,17 @@ std::size_t linksWithin(const std::vector<Link>& links, qsizetype budget)
 
 const auto always = [](const Link&) { return true; };
 } // namespace
+
+bool MetricsSnapshot::Link::operator==(const Link& o) const
+{
+    return labels == o.labels && stage == o.stage && sourceMessages == o.sourceMessages
+        && destinationMessages == o.destinationMessages && sourceBytes == o.sourceBytes
+        && destinationBytes == o.destinationBytes && lost == o.lost && stalls == o.stalls
+        && seqGaps == o.seqGaps && hasSeqGaps == o.hasSeqGaps && sourceRate == o.sourceRate
+        && destinationRate == o.destinationRate && state == o.state && seen == o.seen
+        && hasLatency == o.hasLatency && buckets == o.buckets && latencyCount == o.latencyCount
+        && latencySum == o.latencySum;
+}
 
 QByteArray MetricsExposition::label(const char* name, const QByteArray& utf8Value)
 {
@@ -172,7 +184,7 @@ QByteArray MetricsExposition::contentType(MetricsFormat format)
 
 namespace {
 /// The families of the links and bridges.
-void writeLinks(QByteArray& out, const std::vector<Link>& links,
+void writeLinks(QByteArray& out, const std::vector<const Link*>& links,
                 const std::vector<MetricsSnapshot::Bridge>& bridges, MetricsFormat format)
 {
     static constexpr Family messages {"bridgescope_link_messages", "counter",
@@ -199,8 +211,8 @@ void writeLinks(QByteArray& out, const std::vector<Link>& links,
     static constexpr const char* destination = ",side=\"destination\"";
 
     qsizetype labelBytes = 0;
-    for (const Link& l : links)
-        labelBytes += l.labels.size();
+    for (const Link* l : links)
+        labelBytes += l->labels.size();
     out.reserve(labelBytes * 12 + qsizetype(links.size()) * 700 + 4096);
 
     head(out, messages, format);
@@ -236,7 +248,8 @@ void writeLinks(QByteArray& out, const std::vector<Link>& links,
         out, links, seen, nullptr, [](const Link& l) { return l.seen ? 1.0 : 0.0; }, always);
 
     head(out, latency, format);
-    for (const Link& l : links) {
+    for (const Link* link : links) {
+        const Link& l = *link;
         if (!l.hasLatency)
             continue;
         const QByteArray labels = l.labels + ',' + l.stage;
@@ -313,10 +326,13 @@ QByteArray MetricsExposition::write(const MetricsSnapshot& s, MetricsFormat form
     const std::size_t linkCount = linksWithin(s.links, budget);
     const std::size_t left = s.links.size() - linkCount + s.bridges.size() - bridgeCount;
     QByteArray out;
+    std::vector<const Link*> links;
+    links.reserve(linkCount);
+    for (std::size_t i = 0; i < linkCount; ++i)
+        links.push_back(s.links.items()[i].get());
     if (left == 0) {
-        writeLinks(out, s.links, s.bridges, format);
+        writeLinks(out, links, s.bridges, format);
     } else {
-        const std::vector<Link> links(s.links.cbegin(), s.links.cbegin() + std::ptrdiff_t(linkCount));
         const std::vector<MetricsSnapshot::Bridge> bridges(s.bridges.cbegin(),
                                                            s.bridges.cbegin() + std::ptrdiff_t(bridgeCount));
         writeLinks(out, links, bridges, format);

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <iterator>
+#include <memory>
 #include <QByteArray>
 #include <QtGlobal>
 #include <vector>
@@ -31,13 +33,62 @@ struct MetricsSnapshot
         std::array<quint64, kLatencyBounds.size()> buckets {}; ///< per bucket, not cumulative
         quint64 latencyCount = 0; ///< all observations (the +Inf bucket)
         double latencySum = 0; ///< seconds
+
+        bool operator==(const Link& o) const;
+        bool operator!=(const Link& o) const { return !(*this == o); }
+    };
+    /// The links in their order, each held by the snapshots that serve it: the next snapshot shares
+    /// the links that did not move and holds new ones for those that did (WatchMetrics::update()),
+    /// so that an update of a few links does not copy 10,000.
+    class Links
+    {
+    public:
+        using Item = std::shared_ptr<const Link>;
+        class const_iterator
+        {
+        public:
+            using iterator_category = std::forward_iterator_tag;
+            using value_type = Link;
+            using difference_type = std::ptrdiff_t;
+            using pointer = const Link*;
+            using reference = const Link&;
+            explicit const_iterator(std::vector<Item>::const_iterator at)
+                : m_at(at)
+            { }
+            const Link& operator*() const { return **m_at; }
+            const Link* operator->() const { return m_at->get(); }
+            const_iterator& operator++()
+            {
+                ++m_at;
+                return *this;
+            }
+            bool operator==(const const_iterator& o) const { return m_at == o.m_at; }
+            bool operator!=(const const_iterator& o) const { return m_at != o.m_at; }
+
+        private:
+            std::vector<Item>::const_iterator m_at;
+        };
+        void push_back(Link link) { m_items.push_back(std::make_shared<const Link>(std::move(link))); }
+        void reserve(std::size_t n) { m_items.reserve(n); }
+        void clear() { m_items.clear(); }
+        std::size_t size() const { return m_items.size(); }
+        bool empty() const { return m_items.empty(); }
+        const Link& operator[](std::size_t i) const { return *m_items[i]; }
+        const_iterator begin() const { return const_iterator(m_items.cbegin()); }
+        const_iterator end() const { return const_iterator(m_items.cend()); }
+        /// The shared links themselves: a snapshot's maker replaces those that moved.
+        std::vector<Item>& items() { return m_items; }
+        const std::vector<Item>& items() const { return m_items; }
+
+    private:
+        std::vector<Item> m_items;
     };
     struct Bridge
     {
         QByteArray labels; ///< `bridge="…"`
         bool up = false;
     };
-    std::vector<Link> links;
+    Links links;
     std::vector<Bridge> bridges;
     /// The watch's own labels (`host="…"` and the --label ones), on the samples that have no link
     /// or bridge; the links' and bridges' labels begin with them.

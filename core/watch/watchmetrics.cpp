@@ -16,10 +16,12 @@ using namespace Qt::StringLiterals;
 struct WatchMetrics::Private
 {
     std::unique_ptr<MetricsServer> server;
-    /// Each link's series in the monitor's order (and its id), kept between updates: counters never
-    /// go back, and the histogram grows by the samples taken since the last update. Made again
-    /// only when the monitor's links change (LinkMonitor::linksVersion()).
-    std::vector<MetricsSnapshot::Link> links;
+    /// Each link's series in the monitor's order (and its id), kept between updates and shared with
+    /// the snapshot published last: counters never go back, and the histogram grows by the samples
+    /// taken since the last update. An update makes anew only the links that moved
+    /// (LinkMonitor::takeMoved()); all of them only when the monitor's links change
+    /// (LinkMonitor::linksVersion()).
+    MetricsSnapshot::Links links;
     std::vector<QString> ids;
     quint64 linksVersion = ~quint64(0);
     quint64 activity = ~quint64(0); ///< LinkMonitor::activity() at the last update
@@ -51,11 +53,11 @@ struct WatchMetrics::Private
             now.push_back(monitor.link(i).id());
             staying.insert(now.back());
         }
-        QHash<QString, MetricsSnapshot::Link> old;
+        QHash<QString, MetricsSnapshot::Links::Item> old;
         old.reserve(qsizetype(ids.size()));
         for (std::size_t i = 0; i < ids.size(); ++i) {
             if (staying.contains(ids[i]))
-                old.insert(ids[i], std::move(links[i]));
+                old.insert(ids[i], std::move(links.items()[i]));
             else
                 labelSets.remove(links[i].labels); // free before the new links take theirs
         }
@@ -65,7 +67,7 @@ struct WatchMetrics::Private
             const LinkDef& def = monitor.link(i);
             const QString& id = now[std::size_t(i)];
             if (auto it = old.find(id); it != old.end()) {
-                links.push_back(std::move(*it));
+                links.items().push_back(std::move(*it));
                 old.erase(it);
             } else {
                 MetricsSnapshot::Link l;
@@ -79,6 +81,59 @@ struct WatchMetrics::Private
         }
         ids = std::move(now);
         linksVersion = monitor.linksVersion();
+    }
+
+    /// Brings the series up to date with the links that moved (every link when the links changed).
+    /// Whether a series changed.
+    bool take(LinkMonitor& monitor)
+    {
+        const std::vector<int> moved = monitor.takeMoved();
+        bool changed = false;
+        if (linksVersion != monitor.linksVersion()) {
+            follow(monitor);
+            for (int i = 0; i < int(links.size()); ++i)
+                refresh(monitor, i);
+            return true;
+        }
+        for (int i : moved)
+            changed = refresh(monitor, i) || changed;
+        return changed;
+    }
+
+    /// Brings link `i`'s series up to date with the monitor: a new one when a figure moved, else the
+    /// one the last snapshot serves. Whether it moved.
+    bool refresh(LinkMonitor& monitor, int i)
+    {
+        MetricsSnapshot::Links::Item& item = links.items()[std::size_t(i)];
+        MetricsSnapshot::Link l = *item;
+        const auto counter = [](double& series, quint64 total) { series = std::max(series, double(total)); };
+        const LinkFigures f = monitor.figures(i);
+        counter(l.sourceMessages, f.source.messages);
+        counter(l.destinationMessages, f.destination.messages);
+        counter(l.sourceBytes, f.source.bytes);
+        counter(l.destinationBytes, f.destination.bytes);
+        counter(l.lost, f.lost);
+        counter(l.stalls, f.stalls);
+        counter(l.seqGaps, f.seqGaps);
+        l.hasSeqGaps = l.hasSeqGaps || f.seqGaps > 0;
+        l.sourceRate = f.source.rateHz;
+        l.destinationRate = f.destination.rateHz;
+        l.state = int(monitor.level(i));
+        l.seen = monitor.unknown(i).isEmpty();
+        for (double ms : monitor.takeNewLatencies(i)) {
+            const double s = ms / 1000.0;
+            const auto& bounds = MetricsSnapshot::kLatencyBounds;
+            const auto b = std::lower_bound(bounds.cbegin(), bounds.cend(), s); // le: s <= bound
+            if (b != bounds.cend())
+                ++l.buckets[std::size_t(b - bounds.cbegin())];
+            ++l.latencyCount;
+            l.latencySum += s;
+            l.hasLatency = true;
+        }
+        if (l == *item)
+            return false;
+        item = std::make_shared<const MetricsSnapshot::Link>(std::move(l));
+        return true;
     }
 
     static QByteArray stageOf(const LinkDef& def)
@@ -182,10 +237,11 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
     snapshot->ownLabels = d->ownLabels;
     snapshot->version = QByteArrayLiteral(BRIDGESCOPE_VERSION);
     snapshot->droppedAnnouncements = monitor.reader().announcedTypes().dropped();
+    const quint64 activity = monitor.activity();
+    const bool linksMoved = d->take(monitor);
     // Nothing of any link moved (a fleet of idle links): the last snapshot stands, or lends its
     // links when only the watch's own figures are new. No figure of every link four times a second.
-    const quint64 activity = monitor.activity();
-    if (activity == d->activity && d->published) {
+    if (!linksMoved && activity == d->activity && d->published) {
         const MetricsSnapshot& last = *d->published;
         if (last.historyEvicted == snapshot->historyEvicted && last.historyBytes == snapshot->historyBytes
             && last.untrackedTopicMessages == snapshot->untrackedTopicMessages
@@ -199,37 +255,7 @@ void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int
         return;
     }
     d->activity = activity;
-    if (d->linksVersion != monitor.linksVersion())
-        d->follow(monitor);
-    snapshot->links.reserve(d->links.size());
-    const auto counter = [](double& series, quint64 total) { series = std::max(series, double(total)); };
-    for (int i = 0; i < int(d->links.size()); ++i) {
-        MetricsSnapshot::Link& l = d->links[std::size_t(i)];
-        const LinkFigures f = monitor.figures(i);
-        counter(l.sourceMessages, f.source.messages);
-        counter(l.destinationMessages, f.destination.messages);
-        counter(l.sourceBytes, f.source.bytes);
-        counter(l.destinationBytes, f.destination.bytes);
-        counter(l.lost, f.lost);
-        counter(l.stalls, f.stalls);
-        counter(l.seqGaps, f.seqGaps);
-        l.hasSeqGaps = l.hasSeqGaps || f.seqGaps > 0;
-        l.sourceRate = f.source.rateHz;
-        l.destinationRate = f.destination.rateHz;
-        l.state = int(monitor.level(i));
-        l.seen = monitor.unknown(i).isEmpty();
-        for (double ms : monitor.takeNewLatencies(i)) {
-            const double s = ms / 1000.0;
-            const auto& bounds = MetricsSnapshot::kLatencyBounds;
-            const auto b = std::lower_bound(bounds.cbegin(), bounds.cend(), s); // le: s <= bound
-            if (b != bounds.cend())
-                ++l.buckets[std::size_t(b - bounds.cbegin())];
-            ++l.latencyCount;
-            l.latencySum += s;
-            l.hasLatency = true;
-        }
-        snapshot->links.push_back(l);
-    }
+    snapshot->links = d->links; // the links that did not move are shared with the last snapshot
     for (const QString& name : monitor.bridges().names()) {
         const LinkMonitor::BridgeState s = monitor.bridges().state(name);
         if (s != LinkMonitor::BridgeState::Unknown)

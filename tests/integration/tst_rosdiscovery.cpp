@@ -301,6 +301,26 @@ private slots:
         QVERIFY(poller.lastError().contains(u"no ROS master"_s));
     }
 
+    /// Regression (issue 44): a master that answered a poll late (busy with 10,000 topics) came
+    /// "back" and the watch subscribed every topic again, tearing down every connection, again
+    /// and again. The master still knows the node: nothing is subscribed again, messages go on.
+    void aMasterThatStillKnowsTheNodeIsNotSubscribedAgain()
+    {
+        RosMonitor monitor;
+        monitor.setMasterUri(m_servers.rosMasterUri());
+        monitor.monitor(u"/steady"_s);
+        Node pub(m_servers, {u"pub"_s, u"-r"_s, u"10"_s, u"/steady"_s, u"std_msgs/UInt32"_s, u"data: 1"_s});
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/steady"_s).messages >= 3, 30000);
+        const quint64 subscribed = monitor.subscriptions();
+        QCOMPARE(subscribed, quint64(1));
+        monitor.resubscribeAll(); // what RosGraphPoller::masterRestarted() asks for
+        monitor.monitor(u"/after"_s); // jobs run in order: once it is subscribed, the check ran
+        QTRY_COMPARE_WITH_TIMEOUT(monitor.subscriptions(), subscribed + 1, 10000);
+        const quint64 before = monitor.snapshot(nowNs()).value(u"/steady"_s).messages;
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.snapshot(nowNs()).value(u"/steady"_s).messages >= before + 3, 10000);
+        QCOMPARE(monitor.subscriptions(), subscribed + 1);
+    }
+
     // Runs last: it restarts the master the other functions use.
     void masterRestartIsRecoveredFrom()
     {
