@@ -9186,8 +9186,8 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
         </translation>
     </message>
     <message>
-        <source>; ROS publishers asked again for %1 topics (the master listed them, none connected), %2 silent now</source>
-        <translation>; ROS-Publisher für %1 Topics erneut angefragt (der Master nannte sie, keiner verband sich), %2 jetzt stumm</translation>
+        <source>; ROS publishers asked again for %1 topics (the master listed them, none connected), %2 subscribed again, %3 silent now</source>
+        <translation>; ROS-Publisher für %1 Topics erneut angefragt (der Master nannte sie, keiner verband sich), %2 neu abonniert, %3 jetzt stumm</translation>
     </message>
 </context>
 <context>

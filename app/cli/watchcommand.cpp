@@ -351,7 +351,7 @@ struct WatchTally
 
 /// The summary a watch ends with: a sentence on stderr, one JSON line on stdout ("event": "summary").
 void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int alerts, quint64 heldBack,
-                  quint64 rosAskedAgain)
+                  const RosMonitor& ros1)
 {
     const WatchTally t = WatchTally::of(monitor);
     err(Watch::tr("watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 "
@@ -382,7 +382,8 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
                                {u"alert"_s, t.levels[2]},
                                {u"unknown"_s, t.unknown},
                                {u"held_back"_s, double(heldBack)},
-                               {u"ros_publishers_asked_again"_s, double(rosAskedAgain)}};
+                               {u"ros_publishers_asked_again"_s, double(ros1.publishersAskedAgain())},
+                               {u"ros_subscriptions_made_again"_s, double(ros1.subscriptionsMadeAgain())}};
     if (heldBack > 0)
         err(Watch::tr("%n event line(s) held back by the storm bound (%1 a second after a burst of %2): "
                       "counted in the held_back lines",
@@ -424,8 +425,9 @@ QString progressLine(qint64 elapsedMs, const WatchSession& watch, const MqttTopi
         line += Watch::tr("; %1 metrics clients dropped").arg(metrics->droppedClients());
     if (const quint64 again = ros1 ? ros1->publishersAskedAgain() : 0)
         line += Watch::tr("; ROS publishers asked again for %1 topics (the master listed them, none "
-                          "connected), %2 silent now")
+                          "connected), %2 subscribed again, %3 silent now")
                     .arg(again)
+                    .arg(ros1->subscriptionsMadeAgain())
                     .arg(ros1->silentSubscriptions());
     if (ros2 && ros2->graph().omitted)
         line += u"; "_s + ros2->graph().omittedText();
@@ -555,8 +557,7 @@ int runWatch(const WatchRequest& request)
         });
     monitor->closeAll(wallClockNs());
     lines.sayHeldBack(EventThrottle::Line::Last);
-    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen, lines.throttle.heldBack(),
-                 live.rosMonitor()->publishersAskedAgain());
+    printSummary(*monitor, watchedMs, eventsSeen, alertsSeen, lines.throttle.heldBack(), *live.rosMonitor());
     if (recorder->isRecording()) {
         if (const Result<void> stopped = assembly.stopRecording(); !stopped) {
             err(Watch::tr("%1: %2").arg(request.runPath, stopped.error().toString()));

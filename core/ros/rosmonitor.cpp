@@ -17,6 +17,7 @@
 #include <deque>
 #include <mutex>
 #include <optional>
+#include <QDeadlineTimer>
 #include <QPointer>
 #include <QSet>
 #include <QTimer>
@@ -68,6 +69,9 @@ struct RosMonitor::Private
     static constexpr int kMaxLookupsPerPass = 10;
     static constexpr int kCallMs = 1000; ///< a lookup at the master, a publisherUpdate to this node
     std::atomic<quint64> askedAgain {0};
+    std::atomic<quint64> madeAgain {0};
+    static constexpr int kPassBudgetMs = 250; ///< a pass's calls, then the worker's other jobs
+    static constexpr int kAsksBeforeSubscribing = 2; ///< asks (at 10, 30 s) before a new subscription (70 s)
     std::atomic<int> silentNow {0};
     HeadHub heads; ///< its own lock
     TapHub taps; ///< its own lock; a tapped topic is monitored while a tap of it is open
@@ -173,7 +177,7 @@ struct RosMonitor::Private
     // request only to a publisher neither connected nor already asked, so a request still on its
     // way is not doubled, and nothing connected is dropped (only topics with none connected are
     // passed, with every publisher the master lists).
-    void mendSilent()
+    void mendSilent(ros::NodeHandle& node, const std::weak_ptr<Private>& weakSelf, QPointer<RosMonitor> owner)
     {
         std::optional<TopicGraph> changed;
         {
@@ -202,7 +206,19 @@ struct RosMonitor::Private
         const QList<QString> again = silence.pass(wallClockNs(), unheard, connected);
         int lookups = kMaxLookupsPerPass;
         const QString caller = QString::fromStdString(ros::this_node::getName());
+        const QDeadlineTimer budget(kPassBudgetMs); // the worker subscribes for everyone else too
         for (const QString& topic : again) {
+            if (budget.hasExpired())
+                break; // the rest when next due
+            if (silence.tries(topic) > kAsksBeforeSubscribing) {
+                // Asked twice and still silent at 70 s: a request roscpp keeps waiting for that will
+                // not come; only a new subscription forgets it.
+                qCInfo(lcRos).noquote()
+                    << u"subscribing again to %1: its publishers were asked and none connected"_s.arg(topic);
+                subscribe(node, topic, weakSelf, owner);
+                ++madeAgain;
+                continue;
+            }
             const QVariantList uris = publisherUris(topic, &lookups);
             if (uris.isEmpty() || connected(topic) > 0)
                 continue;
@@ -334,9 +350,10 @@ void RosMonitor::setGraph(const TopicGraph& graph)
                 return; // no node to start for it: looking registers nothing
         }
         std::weak_ptr<Private> weak = d;
-        d->rosNode->post([weak](ros::NodeHandle&) {
+        QPointer<RosMonitor> self(this);
+        d->rosNode->post([weak, self](ros::NodeHandle& node) {
             if (auto p = weak.lock())
-                p->mendSilent();
+                p->mendSilent(node, weak, self);
         });
     });
     m_mend->start(kMendPeriodMs);
@@ -345,6 +362,11 @@ void RosMonitor::setGraph(const TopicGraph& graph)
 quint64 RosMonitor::publishersAskedAgain() const
 {
     return d->askedAgain;
+}
+
+quint64 RosMonitor::subscriptionsMadeAgain() const
+{
+    return d->madeAgain;
 }
 
 int RosMonitor::silentSubscriptions() const

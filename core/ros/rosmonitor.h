@@ -44,6 +44,9 @@ public:
     static constexpr int kMendPeriodMs = 2000;
     /// Silent topics whose publishers were asked again, since the start.
     quint64 publishersAskedAgain() const;
+    /// Silent topics subscribed again after their publishers were asked twice in vain
+    /// (roscpp waits without end for a request that never comes back), since the start.
+    quint64 subscriptionsMadeAgain() const;
     /// Monitored topics silent for SilentSubscriptions::kSilentNs or more at the last check.
     int silentSubscriptions() const;
     /// How many times a topic was subscribed in roscpp (monitor() and resubscriptions).

@@ -34,6 +34,8 @@ public:
     /// to the subscription. The topics to ask about again now.
     QList<QString> pass(qint64 nowNs, const QList<QString>& candidates,
                         const std::function<int(const QString&)>& connected);
+    /// How many times `topic` was given to ask about again in its current silence (0: none).
+    int tries(const QString& topic) const { return m_silent.value(topic).tries; }
     /// Topics to ask about again given since the start.
     quint64 made() const { return m_made; }
     /// Candidates silent for kSilentNs or longer at the last pass (not found connected).

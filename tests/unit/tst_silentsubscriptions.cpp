@@ -31,6 +31,8 @@ private slots:
         QCOMPARE(s.pass(kStart + 10 * kS, subscribed, ask), QList<QString> {u"/a"_s});
         QCOMPARE(s.silent(), 1);
         QCOMPARE(s.made(), 1u);
+        QCOMPARE(s.tries(u"/a"_s), 1); // the caller asks at first, subscribes anew after some tries
+        QCOMPARE(s.tries(u"/b"_s), 0);
         // Still silent: again after 20 s more, then 40 s more.
         QVERIFY(s.pass(kStart + 29 * kS, subscribed, ask).isEmpty());
         QCOMPARE(s.pass(kStart + 30 * kS, subscribed, ask), QList<QString> {u"/a"_s});
