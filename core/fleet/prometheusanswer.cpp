@@ -193,6 +193,8 @@ private:
                     return false;
             out->append({name, value});
         } while (eat(','));
+        // In name order, as the JSON document gives them (its object keeps its keys sorted).
+        std::sort(out->begin(), out->end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         return eat('}');
     }
     bool series(PrometheusAnswer::Series* s, Kind* kind, qsizetype* points)

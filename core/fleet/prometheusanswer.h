@@ -35,7 +35,7 @@ public:
     using Label = std::pair<QString, QString>; ///< a name and its value
     struct Series
     {
-        /// As the answer gives them: a few a series (the fleet's queries aggregate to the labels
+        /// In name order: a few a series (the fleet's queries aggregate to the labels
         /// they use), so a flat list and not a hash of its own for each of thousands of series.
         QList<Label> labels;
         QList<Point> points; ///< one for a vector, in time order for a matrix
