@@ -79,10 +79,10 @@ public:
                 return false;
             if (key == "status" && rawString(&status))
                 success = status == "success";
-            else if (key == "data" && !data)
-                data = readData(out);
+            else if (key == "data" && !data && readData(out))
+                data = true;
             else
-                return false;
+                return false; // a data that is not the usual one is not read on from its middle
         } while (eat(','));
         if (!eat('}') || !success || !data)
             return false;
@@ -148,6 +148,8 @@ private:
             return i > from ? i : -1;
         };
         qsizetype i = text.startsWith('-') ? 1 : 0;
+        if (i + 1 < text.size() && text[i] == '0' && text[i + 1] >= '0' && text[i + 1] <= '9')
+            return false; // JSON has no leading zeros: the document refuses "08", so must this
         if ((i = digits(i)) < 0)
             return false;
         if (i < text.size() && text[i] == '.' && (i = digits(i + 1)) < 0)
