@@ -20,8 +20,10 @@
 /// arrival (under a millisecond alone, 20 ms and more with other tests on two cores) never moves a
 /// sample to the next bucket: numpy's counts of the backdates are then the buckets' counts. The
 /// vehicle's p99 is in (2.5, 5] s, the edge's in (5, 10] s.
-inline constexpr double kVehicleLatencies[] {0.051, 0.101, 0.501, 1.01, 2.51, 0.251};
-inline constexpr double kEdgeLatencies[] {0.051, 0.251, 0.501, 2.51, 5.01, 0.101};
+// Each a little above a bucket's bound and at least 149 ms below the next: a measured latency is the
+// stamp's plus the delivery's delay (tens of ms under ASan on a busy machine put a 0.051 past 0.1).
+inline constexpr double kVehicleLatencies[] {0.101, 0.101, 0.501, 1.01, 2.51, 0.251};
+inline constexpr double kEdgeLatencies[] {0.251, 0.251, 0.501, 2.51, 5.01, 0.101};
 
 /// One host of a fleet on Prometheus (issue 44): its own mosquitto and rosmaster, and a
 /// `bridgescope watch --metrics` labelled host=NAME, whose links the test announces on the broker
