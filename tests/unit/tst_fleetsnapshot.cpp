@@ -152,10 +152,12 @@ public:
                 connect(s, &QTcpSocket::readyRead, s, [s, sent, feed, endless] {
                     if (!s->readAll().contains("\r\n\r\n") || *sent >= 0)
                         return;
-                    s->write("HTTP/1.1 200 OK\r\nContent-Type: application/json\r\n"
-                             + (endless ? QByteArray("Connection: close\r\n")
-                                        : "Content-Length: " + QByteArray::number(kLength) + "\r\n")
-                             + "\r\n");
+                    // One answer a connection (it reads no second request): Connection: close, so
+                    // that the client does not send the next query on it.
+                    s->write(
+                        "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\nConnection: close\r\n"
+                        + (endless ? QByteArray() : "Content-Length: " + QByteArray::number(kLength) + "\r\n")
+                        + "\r\n");
                     *sent = 0;
                     feed();
                 });
