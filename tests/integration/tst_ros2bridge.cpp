@@ -185,10 +185,10 @@ private slots:
                                    u"/cloud:sensor_msgs/msg/PointCloud2:10"_s, u"--size"_s,
                                    QString::number(kCloudPoints * 16), u"--show-discovery"_s});
         QVERIFY2(talker.waitFor(u"ready"_s), qPrintable(talker.errors()));
-        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/chatter"_s).size() >= 3 && m_fromMqtt.on(u"out/pose"_s).size() >= 3
+        QTRY_VERIFY_WITH_TIMEOUT(m_fromMqtt.on(u"out/chatter"_s).size() >= 3
+                                     && m_fromMqtt.on(u"out/pose"_s).size() >= 3
                                      && m_fromMqtt.on(u"out/cloud"_s).size() >= 2,
                                  15000);
-        const qint64 after = wallClockNs();
         // the announcements, byte for byte (name and stamped only), retained
         QCOMPARE(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/chatter"_s).value(0),
                  MqttClientRos2::announcement("std_msgs/msg/String", false));
@@ -203,13 +203,17 @@ private slots:
             const std::string text = m.mid(8, m.indexOf('\0', 8) - 8).toStdString();
             QCOMPARE(m, padded(MqttClientRos2::string(text)));
         }
-        // stamped: the 12-byte CDR send time, then the message
-        for (const QByteArray& m : m_fromMqtt.on(u"out/pose"_s)) {
+        // stamped: the 12-byte CDR send time, then the message (sent before it was taken: the inbox
+        // fills on Paho's thread, so the bound is read after the copy, not before it)
+        const QList<QByteArray> poses = m_fromMqtt.on(u"out/pose"_s);
+        const qint64 posesTaken = wallClockNs();
+        for (const QByteArray& m : poses) {
             QVERIFY(m.size() > 12);
             const qint32 sec = qFromLittleEndian<qint32>(m.constData() + 4);
             const quint32 nsec = qFromLittleEndian<quint32>(m.constData() + 8);
             const qint64 sent = qint64(sec) * 1'000'000'000 + nsec;
-            QVERIFY(sent >= before && sent <= after);
+            QVERIFY2(sent >= before && sent <= posesTaken,
+                     qPrintable(u"%1 not in [%2, %3]"_s.arg(sent).arg(before).arg(posesTaken)));
             QCOMPARE(m.left(12), MqttClientRos2::stamp(sec, nsec));
             const auto v = RosMessageDecoder::decodeCdr(m_types, u"geometry_msgs/msg/PoseStamped"_s, m.mid(12));
             QVERIFY(v);
@@ -238,13 +242,14 @@ private slots:
         QCOMPARE(bridgeNode()->publishes, (QStringList {u"/bench/bridge/in"_s, u"/bench/bridge/out"_s}));
         // the suite's stamps: the pose's header.stamp as the sample, in before out
         QTRY_VERIFY_WITH_TIMEOUT(got.size() >= 4, 10000);
+        const qint64 gotUntil = wallClockNs();
         QHash<qint64, qint64> in;
         for (const auto& [topic, s] : std::as_const(got)) {
             const auto v = RosMessageDecoder::decodeCdr(m_types, u"std_msgs/msg/Header"_s, s.bytes);
             QVERIFY(s.bytes.size() >= 28);
             const qint64 sample = qint64(qFromLittleEndian<qint32>(s.bytes.constData() + 4)) * 1'000'000'000
                 + qFromLittleEndian<quint32>(s.bytes.constData() + 8);
-            QVERIFY(sample >= before - 1'000'000'000 && sample <= after);
+            QVERIFY(sample >= before - 1'000'000'000 && sample <= gotUntil);
             const qsizetype timeAt = s.bytes.size() - 8;
             const qint64 time = qint64(qFromLittleEndian<qint32>(s.bytes.constData() + timeAt)) * 1'000'000'000
                 + qFromLittleEndian<quint32>(s.bytes.constData() + timeAt + 4);
