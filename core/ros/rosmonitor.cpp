@@ -152,10 +152,9 @@ struct RosMonitor::Private
     // On the node's worker thread: the XML-RPC addresses of `topic`'s publishers, looked up at the
     // master (at most `*lookups` more calls, each within kCallMs; known ones kept until the graph
     // changes).
-    QVariantList publisherUris(const QString& topic, int* lookups)
+    QVariantList publisherUris(const QString& topic, const QString& caller, int* lookups)
     {
         QVariantList uris;
-        const QString caller = QString::fromStdString(ros::this_node::getName());
         for (const QString& node : publishersOf.value(topic)) {
             auto it = nodeUris.constFind(node);
             if (it == nodeUris.cend()) {
@@ -219,7 +218,7 @@ struct RosMonitor::Private
                 ++madeAgain;
                 continue;
             }
-            const QVariantList uris = publisherUris(topic, &lookups);
+            const QVariantList uris = publisherUris(topic, caller, &lookups);
             if (uris.isEmpty() || connected(topic) > 0)
                 continue;
             qCInfo(lcRos).noquote()
