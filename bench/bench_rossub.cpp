@@ -8,14 +8,21 @@
 //
 // It says on stderr "topics N" after each look, and stops looking once it has EXPECTED topics.
 //
-//   bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED
-#include <algorithm>
+// With TOPICS_FILE (one ROS topic a line) it subscribes to every topic in it at once instead, before
+// any is advertised, as `bridgescope watch` does, and prints "RECEIVED HEARD" once a second: HEARD
+// is how many of those topics have received a message (bench_watch's fleet form: the peer of the
+// watch's time until every link is live).
+//
+//   bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED [TOPICS_FILE]
 #include "peercount.h"
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <memory>
 #include <ros/master.h>
 #include <ros/ros.h>
 #include <string>
@@ -23,10 +30,47 @@
 #include <unistd.h>
 #include <vector>
 
+namespace {
+std::atomic<unsigned long long> heard {0};
+
+/// TOPICS_FILE's form: every topic at once, a flag a topic for its first message.
+int subscribeUpfront(ros::NodeHandle& node, const char* path)
+{
+    std::ifstream in(path);
+    std::vector<std::string> names;
+    for (std::string line; std::getline(in, line) && names.size() < 100000;)
+        if (!line.empty())
+            names.push_back(line);
+    const auto flags = std::make_shared<std::vector<std::atomic<bool>>>(names.size());
+    std::vector<ros::Subscriber> subs;
+    subs.reserve(names.size());
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        const boost::function<void(const topic_tools::ShapeShifter::ConstPtr&)> count
+            = [flags, i](const topic_tools::ShapeShifter::ConstPtr&) {
+                  ++PeerCount::received;
+                  if (!(*flags)[i].exchange(true))
+                      ++heard;
+              };
+        subs.push_back(node.subscribe<topic_tools::ShapeShifter>(names[i], 10, count));
+    }
+    std::fprintf(stderr, "topics %zu\n", subs.size());
+    for (int tenths = 0; !PeerCount::stop; ++tenths) {
+        usleep(100000);
+        if (tenths % 10 == 0) {
+            std::printf("%llu %llu\n", static_cast<unsigned long long>(PeerCount::received),
+                        static_cast<unsigned long long>(heard));
+            std::fflush(stdout);
+        }
+    }
+    std::_Exit(0); // roscpp's static teardown is not the subject
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
-    if (argc != 5) {
-        std::fprintf(stderr, "usage: bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED\n");
+    if (argc != 5 && argc != 6) {
+        std::fprintf(stderr,
+                     "usage: bench_rossub MASTER_URI PREFIX SECONDS_TO_FIND_TOPICS EXPECTED [TOPICS_FILE]\n");
         return 2;
     }
     PeerCount::stopOnTerm();
@@ -40,6 +84,8 @@ int main(int argc, char** argv)
     std::vector<std::string> have;
     ros::AsyncSpinner spinner(1);
     spinner.start();
+    if (argc == 6)
+        return subscribeUpfront(node, argv[5]);
     // Topics appear as the bridge advertises them: look again for a while.
     for (int i = 0; i < wantSeconds * 2 && !PeerCount::stop && subs.size() < expected; ++i) {
         ros::master::V_TopicInfo topics;

@@ -18,6 +18,14 @@
 //   BENCH_WATCH_BINARY=OTHER/bridgescope ...             the watch of another build (an A/B; the
 //                                                         reference bridge stays this build's)
 //   BENCH_WATCH_LOG=FILE ...                             the watch's standard error (progress lines)
+//   BENCH_ROS_PEER=1 ...                                 bench_rossub subscribes to every link's ROS
+//                                                         topic beside the watch, as it does: the peer
+//                                                         of its time until every link is live and of
+//                                                         its ROS side's cost (the bridge then sends
+//                                                         every message twice: not for the other rows)
+//   BENCH_ROS_PEER=instead ...                           bench_rossub in the watch's place, nothing else
+//                                                         changed: how long a bare roscpp subscriber
+//                                                         takes until it has heard every topic
 #include "watchfleet.h"
 
 #include "benchutil.h"
@@ -85,6 +93,13 @@ struct Fleet
     QProcess watch;
     QProcess sub;
     QProcess loadgen;
+    QProcess rosPeer; ///< BENCH_ROS_PEER: a bare roscpp subscriber to every link's topic
+    quint64 rosPeerReceived = 0;
+    quint64 rosPeerHeard = 0;
+    quint64 rosPeerTopics = 0;
+    QElapsedTimer load; ///< from the load's start
+    double rosPeerAllHeardS = -1; ///< when the peer had heard every topic, from the load's start
+    double rosPeer99HeardS = -1; ///< when it had heard 99 % of them
     quint64 subLines = 0;
     quint64 eventBytes = 0;
     quint64 eventLines = 0;
@@ -92,6 +107,7 @@ struct Fleet
 
     double watchCpu() const { return Bench::processCpuSeconds(watch.processId()); }
     double subCpu() const { return Bench::processCpuSeconds(sub.processId()); }
+    double rosPeerCpu() const { return Bench::processCpuSeconds(rosPeer.processId()); }
     double watchRssMiB() const { return double(childKb(watch.processId(), "VmRSS:")) / 1024; }
     double watchPeakMiB() const { return double(PeakRss::of(watch.processId())) / (1024 * 1024); }
 
@@ -108,6 +124,7 @@ struct Fleet
     }
 
     bool start(int links);
+    bool startRosPeer(int links);
     /// CPU % of one core the watch takes over `seconds`, nothing else asked of it.
     double idleCpuPercent(int seconds)
     {
@@ -117,7 +134,7 @@ struct Fleet
     }
     void stop()
     {
-        for (QProcess* p : {&loadgen, &watch, &bridge, &sub}) {
+        for (QProcess* p : {&loadgen, &watch, &bridge, &sub, &rosPeer}) {
             p->terminate();
             p->waitForFinished(10000);
         }
@@ -161,15 +178,48 @@ bool Fleet::start(int links)
                 ++eventReasons[kind];
         }
     });
-    watch.start(watchProgram,
-                {u"watch"_s, configPath, u"--ros-master"_s, servers.rosMasterUri(), u"--metrics"_s,
-                 u"127.0.0.1:%1"_s.arg(metricsPort)});
+    const QByteArray peer = qgetenv("BENCH_ROS_PEER");
+    if (peer != "instead")
+        watch.start(watchProgram,
+                    {u"watch"_s, configPath, u"--ros-master"_s, servers.rosMasterUri(), u"--metrics"_s,
+                     u"127.0.0.1:%1"_s.arg(metricsPort)});
     QObject::connect(&sub, &QProcess::readyReadStandardOutput,
                      [this] { subLines += quint64(sub.readAllStandardOutput().count('\n')); });
     sub.start(u"mosquitto_sub"_s,
               {u"-h"_s, u"127.0.0.1"_s, u"-p"_s, QString::number(servers.mosquittoPort()), u"-t"_s,
                u"fleet/#"_s, u"-F"_s, u"%t"_s});
-    return bridge.waitForStarted() && watch.waitForStarted() && sub.waitForStarted();
+    return bridge.waitForStarted() && (peer == "instead" || watch.waitForStarted()) && sub.waitForStarted()
+        && (peer.isEmpty() || startRosPeer(links));
+}
+
+bool Fleet::startRosPeer(int links)
+{
+    rosPeerTopics = quint64(links);
+    QFile topics(servers.tempPath() + u"/fleet-topics.txt"_s);
+    if (!topics.open(QIODevice::WriteOnly))
+        return false;
+    for (int i = 0; i < links; ++i)
+        topics.write(u"/%1\n"_s.arg(fleetTopic(i)).toUtf8());
+    topics.close();
+    QObject::connect(&rosPeer, &QProcess::readyReadStandardOutput, [this] {
+        while (rosPeer.canReadLine()) {
+            const QList<QByteArray> f = rosPeer.readLine().trimmed().split(' ');
+            if (f.size() == 2) {
+                rosPeerReceived = f[0].toULongLong();
+                rosPeerHeard = f[1].toULongLong();
+                const double nowS = load.isValid() ? double(load.elapsed()) / 1000 : -1;
+                if (rosPeer99HeardS < 0 && rosPeerHeard * 100 >= rosPeerTopics * 99)
+                    rosPeer99HeardS = nowS;
+                if (rosPeerAllHeardS < 0 && rosPeerHeard >= rosPeerTopics)
+                    rosPeerAllHeardS = nowS;
+            }
+        }
+    });
+    rosPeer.setProcessEnvironment(servers.rosEnvironment());
+    rosPeer.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    rosPeer.start(QCoreApplication::applicationDirPath() + u"/bench_rossub"_s,
+                  {servers.rosMasterUri(), u"/fleet/"_s, u"0"_s, QString::number(links), topics.fileName()});
+    return rosPeer.waitForStarted();
 }
 
 /// Seconds until the master lists a subscriber on every link's ROS topic (-1: not within
@@ -207,6 +257,42 @@ double scrapeUntil(Fleet& fleet, int everyS, int timeoutS, const std::function<b
     }
     return -1;
 }
+/// BENCH_ROS_PEER=instead: the same bridge, load and master, bench_rossub in the watch's place.
+int runRosPeerInstead(Fleet& fleet, int links, int rate, int seconds)
+{
+    const double subscribedS = untilSubscribed(fleet, links, 300);
+    QTest::qWait(2000); // the last subscriptions' connections, as for the watch
+    fleet.loadgen.start(QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
+                        {fleet.servers.brokerUrl(), QString::number(links), QString::number(rate),
+                         QString::number(seconds), u"32"_s});
+    fleet.load.start();
+    QTest::qWaitFor([&] { return fleet.rosPeerAllHeardS >= 0; }, (seconds - 30) * 1000);
+    const double cpu0 = fleet.rosPeerCpu();
+    const quint64 received0 = fleet.rosPeerReceived;
+    const qint64 spanStart = fleet.load.elapsed();
+    QTest::qWaitFor([] { return false; }, int(std::max<qint64>(0, (seconds - 3) * 1000LL - spanStart)));
+    const double cpu = fleet.rosPeerCpu() - cpu0;
+    const quint64 received = fleet.rosPeerReceived - received0;
+    const double spanS = double(fleet.load.elapsed() - spanStart) / 1000;
+    fleet.loadgen.waitForFinished(20000);
+    const double idle0 = fleet.rosPeerCpu();
+    QTest::qWait(20000); // the span measured: roscpp at rest with every connection open
+    const double idle = 100 * (fleet.rosPeerCpu() - idle0) / 20;
+    Bench::header("value");
+    Bench::row(u"seconds until the master lists bench_rossub's subscription on every topic"_s, subscribedS);
+    Bench::row(u"peer: seconds from the first message until bench_rossub heard every topic"_s,
+               fleet.rosPeerAllHeardS,
+               u"%1 of %2 topics heard at the load's end"_s.arg(fleet.rosPeerHeard).arg(links));
+    Bench::row(u"peer: seconds from the first message until bench_rossub heard 99 % of the topics"_s,
+               fleet.rosPeer99HeardS);
+    Bench::row(u"peer: bench_rossub CPU per message after that (us)"_s,
+               received ? cpu / double(received) * 1e6 : 0,
+               u"%1 messages over %2 s"_s.arg(received).arg(spanS, 0, 'f', 0));
+    Bench::row(u"peer: bench_rossub idle CPU after the load (% of a core)"_s, idle,
+               u"%1 topics connected, nothing sent"_s.arg(fleet.rosPeerHeard));
+    fleet.stop();
+    return 0;
+}
 } // namespace
 
 int runWatchFleet(const QString& program)
@@ -222,6 +308,8 @@ int runWatchFleet(const QString& program)
     fleet.watchProgram = qEnvironmentVariable("BENCH_WATCH_BINARY", program);
     if (!fleet.start(links))
         return 1;
+    if (qgetenv("BENCH_ROS_PEER") == "instead")
+        return runRosPeerInstead(fleet, links, rate, seconds);
     std::printf("bench_watch fleet: %d links, %d msg/s in all (each link every %.1f s), %d s of load\n"
                 "watch: %s\n\n",
                 links, rate, double(links) / rate, seconds, qPrintable(fleet.watchProgram));
@@ -234,19 +322,28 @@ int runWatchFleet(const QString& program)
     fleet.loadgen.start(QCoreApplication::applicationDirPath() + u"/bench_loadgen"_s,
                         {fleet.servers.brokerUrl(), QString::number(links), QString::number(rate),
                          QString::number(seconds), u"32"_s});
-    QElapsedTimer load;
+    QElapsedTimer& load = fleet.load;
     load.start();
     Scrape atLive;
+    double live99S = -1;
     const double liveS = scrapeUntil(
-        fleet, scrapeS, seconds - 30, [&](const Scrape& s) { return s.live >= links; }, &atLive);
+        fleet, scrapeS, seconds - 30,
+        [&](const Scrape& s) {
+            if (live99S < 0 && s.live * 100 >= links * 99)
+                live99S = double(load.elapsed()) / 1000;
+            return s.live >= links;
+        },
+        &atLive);
     // The steady span: from every link live (or the ramp's end) to the load's last seconds.
-    const double cpu0 = fleet.watchCpu(), sub0 = fleet.subCpu();
-    const quint64 lines0 = fleet.subLines;
+    const double cpu0 = fleet.watchCpu(), sub0 = fleet.subCpu(), peer0 = fleet.rosPeerCpu();
+    const quint64 lines0 = fleet.subLines, peerReceived0 = fleet.rosPeerReceived;
     const qint64 spanStart = load.elapsed();
     const double counted0 = atLive.messages;
     while (load.elapsed() < (seconds - 3) * 1000LL) // the load's end, but for its last seconds
         QTest::qWait(scrapeS * 1000); // a scrape interval
     const double watchCpu = fleet.watchCpu() - cpu0, subCpu = fleet.subCpu() - sub0;
+    const double peerCpu = fleet.rosPeerCpu() - peer0;
+    const quint64 peerReceived = fleet.rosPeerReceived - peerReceived0;
     const double spanS = double(load.elapsed() - spanStart) / 1000;
     QTest::qWait(200); // mosquitto_sub's last lines of the span
     const quint64 subMessages = fleet.subLines - lines0;
@@ -269,6 +366,16 @@ int runWatchFleet(const QString& program)
     Bench::row(
         u"seconds from the first message until every link is live"_s, liveS,
         u"%1 of %2 links live at the last scrape (goal: all within 60 s)"_s.arg(atLive.live).arg(links));
+    Bench::row(u"  seconds until 99 % of the links are live"_s, live99S,
+               u"scraped every %1 s"_s.arg(scrapeS));
+    if (fleet.rosPeer.processId() > 0) {
+        Bench::row(u"peer: seconds from the first message until bench_rossub heard every topic"_s,
+                   fleet.rosPeerAllHeardS,
+                   u"%1 of %2 topics heard at the load's end"_s.arg(fleet.rosPeerHeard).arg(links));
+        Bench::row(u"peer: bench_rossub CPU per message in the steady span (us)"_s,
+                   peerReceived ? peerCpu / double(peerReceived) * 1e6 : 0,
+                   u"%1 messages"_s.arg(peerReceived));
+    }
     Bench::row(u"peer: messages mosquitto_sub received"_s, double(subMessages));
     Bench::row(u"messages the watch counted (both ends) in the steady span"_s, loaded.messages,
                u"%1 s, from every link live to the load's end"_s.arg(spanS, 0, 'f', 0));
