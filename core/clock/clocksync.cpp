@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "clock/clocksync.h"
 
+#include "base/ioappend.h"
+
 #include <cmath>
 #include <QDeadlineTimer>
 #include <QProcess>
@@ -157,7 +159,7 @@ QByteArray ClockSync::run(const QString& program, const QStringList& arguments, 
         return {};
     while (process.state() != QProcess::NotRunning && !deadline.hasExpired()) {
         process.waitForReadyRead(int(qMax<qint64>(1, deadline.remainingTime())));
-        output += process.read(kMaxOutputBytes + 1 - output.size());
+        IoAppend::available(process, output, kMaxOutputBytes + 1);
         if (output.size() > kMaxOutputBytes)
             break;
     }
@@ -166,7 +168,7 @@ QByteArray ClockSync::run(const QString& program, const QStringList& arguments, 
         process.waitForFinished(1000);
         return {};
     }
-    output += process.read(kMaxOutputBytes + 1 - output.size());
+    IoAppend::available(process, output, kMaxOutputBytes + 1);
     if (output.size() > kMaxOutputBytes || process.exitStatus() != QProcess::NormalExit
         || process.exitCode() != 0)
         return {};

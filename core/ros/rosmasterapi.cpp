@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rosmasterapi.h"
 
+#include "base/ioappend.h"
+
 #include <algorithm>
 #include <QDeadlineTimer>
 #include <QSet>
@@ -234,6 +236,8 @@ Result<QByteArray> RosMasterApi::rawAnswer(const QString& method, const QVariant
                 if (at >= 0)
                     contentLength
                         = headers.mid(at + 15, headers.indexOf('\n', at) - at - 15).trimmed().toLongLong();
+                if (contentLength > 0 && contentLength <= kMaxAnswerBytes)
+                    response.reserve(headerEnd + 4 + contentLength); // one allocation, no growth copies
             }
         }
         if (headerEnd >= 0 && contentLength >= 0 && response.size() - headerEnd - 4 >= contentLength)
@@ -247,7 +251,7 @@ Result<QByteArray> RosMasterApi::rawAnswer(const QString& method, const QVariant
             && socket.state() == QAbstractSocket::ConnectedState && deadline.hasExpired())
             return LocatedError {
                 tr("the ROS master at %1 did not answer within %2 ms").arg(m_uri).arg(timeoutMs)};
-        response += socket.read(kMaxAnswerBytes + 1 - response.size());
+        IoAppend::available(socket, response, kMaxAnswerBytes + 1);
         if (response.size() > kMaxAnswerBytes)
             return LocatedError {
                 tr("the ROS master at %1 sent more than %2 MiB").arg(m_uri).arg(kMaxAnswerBytes >> 20)};

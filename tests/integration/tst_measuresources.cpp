@@ -2,19 +2,21 @@
 // Stamps from a real rosmaster (a roscpp node publishing TimeStamped and Float64) and a real
 // mosquitto (mqtt_client's wire format, stamped, and JSON stamps) end up as exact statistics.
 #include "models/latencystatsmodel.h"
-#include "widgets/measure/stamptopicmodel.h"
+#include "models/mqtttopictree.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttstampdecoder.h"
 #include "session/liveparts.h"
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "testservers.h"
+#include "widgets/measure/stamptopicmodel.h"
 #include "wire/mqttclientwire.h"
 #include "wire/stampcodec.h"
 
 #include <algorithm>
 #include <chrono>
 #include <QAbstractItemModelTester>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QTest>
 
@@ -228,6 +230,51 @@ private slots:
         model.update(measure.discovery(), measure.pipeline(), flood);
         QCOMPARE(model.rowCount(), 2 + 100);
         QCOMPARE(model.index(2).data(StampTopicModel::TopicRole).toString(), u"junk/4999"_s);
+    }
+
+    // A watch has no topic views: its session works out no topic rates, and still measures.
+    void aSessionWithoutTopicViewsMeasuresButWorksOutNoRates()
+    {
+        LiveSession shown, bare;
+        bare.setNoTopicViews();
+        for (LiveSession* live : {&shown, &bare}) {
+            live->setRosMasterUri(m_servers.rosMasterUri());
+            live->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        }
+        MeasureSession measure(LiveParts::measure(&bare));
+        measure.setTimeoutNs(60'000'000'000LL);
+        Pipeline pipeline({u"/views/a"_s, u"/views/b"_s}, 0);
+        measure.setPipeline(pipeline);
+        QTRY_COMPARE_WITH_TIMEOUT(shown.mqtt()->state(), MqttConnection::State::Connected, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(bare.mqtt()->state(), MqttConnection::State::Connected, 10000);
+        MqttConnection mqtt;
+        mqtt.open(MqttProfile::fromUrl(m_servers.brokerUrl()));
+        QTRY_COMPARE_WITH_TIMEOUT(mqtt.state(), MqttConnection::State::Connected, 10000);
+        const auto rateOf = [](const LiveSession& live) {
+            const auto* n = live.mqttTopics()->topicData().store().topic(u"views/a"_s);
+            return n ? n->rate : -1.0;
+        };
+        // A sample every 50 ms until the shown session has a rate (its figures: once a second).
+        int s = 0;
+        QElapsedTimer sending;
+        sending.start();
+        while (rateOf(shown) <= 0 && sending.elapsed() < 20000) {
+            QVERIFY(mqtt.publish(u"views/a"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 0, 0)), 1));
+            QVERIFY(mqtt.publish(u"views/b"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 0, 700)), 1));
+            ++s;
+            QTest::qWait(50); // the pace of the samples, not a wait for a result
+        }
+        QVERIFY(rateOf(shown) > 0);
+        QTRY_VERIFY_WITH_TIMEOUT(measure.engine().samples() >= s - 1, 20000);
+        QVERIFY(rateOf(bare) == 0.0); // the topic is known and counted, its rate not worked out
+        QVERIFY(bare.mqttTopics()->topicData().store().topic(u"views/a"_s)->subMessages >= quint64(s - 1));
+        QCOMPARE(e2eMedian(measure), 0.7); // ms
+    }
+
+    static double e2eMedian(const MeasureSession& measure)
+    {
+        const LatencyEngine& e = measure.engine();
+        return e.series(e.pipelineSeries().stageSeries(0)).stats().median;
     }
 };
 
