@@ -302,24 +302,32 @@ QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
     const auto by = [](const QString& op, const QString& labels, const QString& expr) {
         return u"%1 by (%2) (%3)"_s.arg(op, labels, expr);
     };
+    // A link's series that says only what its absence says is not asked for: a loss or stall
+    // count where it is above 0 (build() takes any other as 0, NaN too), a quantile where it is a
+    // number (NaN otherwise), `seen` where it is 0 (a link is seen otherwise). A healthy fleet's
+    // losses, stalls and blind links are then empty answers, and so are the quantiles of links
+    // without stamps, not one series a link each. The per-side answers stay whole: both sides of
+    // a working link count.
     const QString quantile = u"1000 * histogram_quantile(%1, sum by (host, bridge, link, direction, le) "
-                             "(rate(bridgescope_link_latency_seconds_bucket[1m])))"_s;
+                             "(rate(bridgescope_link_latency_seconds_bucket[1m]))) >= 0"_s;
+    const auto above0 = [&](const QString& labels, const QString& expr) -> QString {
+        return by(u"sum"_s, labels, expr) + u" > 0"_s;
+    };
     return {
         // The last hour's links only of hosts not reporting now: the others' are in `state`.
         {u"links"_s,
          by(u"max"_s, perLink, u"last_over_time(bridgescope_link_state[1h])"_s)
              + u" unless on (host) bridgescope_watch_info"_s},
         {u"state"_s, by(u"max"_s, perLink, u"bridgescope_link_state"_s)},
-        {u"seen"_s, by(u"min"_s, perLink, u"bridgescope_link_seen"_s)},
+        {u"seen"_s, by(u"min"_s, perLink, u"bridgescope_link_seen"_s) + u" == 0"_s},
         {u"rate"_s, by(u"sum"_s, perSide, u"bridgescope_link_rate_hz"_s)},
         {u"messages"_s, by(u"sum"_s, perSide, u"bridgescope_link_messages_total"_s)},
         {u"bytes"_s, by(u"sum"_s, perSide, u"bridgescope_link_bytes_total"_s)},
-        {u"lost"_s, by(u"sum"_s, perLink, u"bridgescope_link_lost_total"_s)},
-        {u"stalls"_s, by(u"sum"_s, perLink, u"bridgescope_link_stalls_total"_s)},
+        {u"lost"_s, above0(perLink, u"bridgescope_link_lost_total"_s)},
+        {u"stalls"_s, above0(perLink, u"bridgescope_link_stalls_total"_s)},
         {u"recent"_s,
          by(u"sum"_s, perSide, u"increase(bridgescope_link_messages_total%1)"_s.arg(rateRange()))},
-        {u"recentLost"_s,
-         by(u"sum"_s, perLink, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange()))},
+        {u"recentLost"_s, above0(perLink, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange()))},
         {u"p50"_s, quantile.arg(u"0.5"_s)},
         {u"p99"_s, quantile.arg(u"0.99"_s)},
         {u"bridges"_s, by(u"min"_s, u"host, bridge"_s, u"bridgescope_bridge_up"_s)},

@@ -110,6 +110,30 @@ const FleetLink* find(const FleetSnapshot& s, const QString& host, const QString
     return nullptr;
 }
 
+/// What a snapshot shows and judges of each link, a line a link.
+QStringList printed(const FleetSnapshot& s)
+{
+    QStringList out;
+    for (const FleetLink& l : s.links)
+        out << u"%1 %2 %3 %4 src %5/%6 Hz dst %7/%8 Hz loss %9 p50 %10 p99 %11 lost %12 stalls %13 %14 %15"_s
+                    .arg(l.host, l.link)
+                    .arg(int(l.verdict.level))
+                    .arg(l.verdict.detail)
+                    .arg(l.figures.source.messages)
+                    .arg(l.figures.source.rateHz)
+                    .arg(l.figures.destination.messages)
+                    .arg(l.figures.destination.rateHz)
+                    .arg(l.figures.lossPercent)
+                    .arg(l.figures.latencyP50Ms)
+                    .arg(l.figures.latencyP99Ms)
+                    .arg(l.figures.lost)
+                    .arg(l.figures.stalls)
+                    .arg(l.hostReporting)
+                    .arg(l.reportedState)
+                + u' ' + (l.verdict.unknown ? u"unknown"_s : u"known"_s);
+    return out;
+}
+
 /// A one-shot HTTP server: answers each request with `head` and `body` (or nothing, when `silent`).
 class TinyServer : public QTcpServer
 {
@@ -681,24 +705,6 @@ private slots:
     /// strings' text decides, the data only finds it sooner).
     void answersOfOnePoolGiveTheSnapshotOfSeparateOnes()
     {
-        const auto print = [](const FleetSnapshot& s) {
-            QStringList out;
-            for (const FleetLink& l : s.links)
-                out << u"%1 %2 %3 %4 src %5/%6 Hz dst %7/%8 Hz loss %9 p99 %10 lost %11 %12 %13"_s
-                           .arg(l.host, l.link)
-                           .arg(int(l.verdict.level))
-                           .arg(l.verdict.detail)
-                           .arg(l.figures.source.messages)
-                           .arg(l.figures.source.rateHz)
-                           .arg(l.figures.destination.messages)
-                           .arg(l.figures.destination.rateHz)
-                           .arg(l.figures.lossPercent)
-                           .arg(l.figures.latencyP99Ms)
-                           .arg(l.figures.lost)
-                           .arg(l.hostReporting)
-                           .arg(l.reportedState);
-            return out;
-        };
         PrometheusLabelPool pool;
         const QHash<QString, PrometheusAnswer> pooled = twoHosts(&pool);
         const auto linkOf = [&](const QString& answer) -> const QString& {
@@ -713,7 +719,45 @@ private slots:
         const FleetSnapshot separate = FleetSnapshotBuilder::build(twoHosts(), WatchRules(), 1000, &seen);
         const FleetSnapshot shared = FleetSnapshotBuilder::build(pooled, WatchRules(), 1000, &seenPooled);
         QCOMPARE(separate.links.size(), 5);
-        QCOMPARE(print(shared), print(separate));
+        QCOMPARE(printed(shared), printed(separate));
+    }
+
+    /// Issue 44, fourth stop: the per-link answers carry only the series that say more than their
+    /// absence (a loss or stall count above 0, a quantile that is a number, a link not seen), and
+    /// the snapshot is the one of the whole answers.
+    void seriesThatSayWhatTheirAbsenceSaysAreNotAsked()
+    {
+        QHash<QString, PrometheusAnswer> whole = twoHosts();
+        whole[u"stalls"_s]
+            = vector({{link(u"a"_s, u"/x → x"_s), u"0"_s}, {link(u"a"_s, u"/s → s"_s), u"2"_s}});
+        whole[u"seen"_s].series.append(vector({{link(u"b"_s, u"/y → y"_s), u"0"_s}}).series);
+        QHash<QString, PrometheusAnswer> asked = whole;
+        const auto keep = [&](const QString& name, bool (*kept)(double)) {
+            QList<PrometheusAnswer::Series>& series = asked[name].series;
+            series.removeIf(
+                [kept](const PrometheusAnswer::Series& x) { return !kept(x.points.constLast().value); });
+        };
+        for (const QString& count : {u"lost"_s, u"stalls"_s, u"recentLost"_s})
+            keep(count, [](double v) { return v > 0; });
+        for (const QString& quantile : {u"p50"_s, u"p99"_s})
+            keep(quantile, [](double v) { return v >= 0; });
+        keep(u"seen"_s, [](double v) { return v == 0; });
+        QCOMPARE(asked[u"recentLost"_s].series.size(), 1);
+        QCOMPARE(asked[u"seen"_s].series.size(), 1);
+        QHash<QString, double> seen, seenAsked;
+        QCOMPARE(printed(FleetSnapshotBuilder::build(asked, WatchRules(), 1000, &seenAsked)),
+                 printed(FleetSnapshotBuilder::build(whole, WatchRules(), 1000, &seen)));
+        // And the queries ask so.
+        QHash<QString, QString> promql;
+        for (const auto& [name, query] : FleetSnapshotBuilder::queries())
+            promql.insert(name, query);
+        for (const QString& count : {u"lost"_s, u"stalls"_s, u"recentLost"_s})
+            QVERIFY2(promql[count].endsWith(u") > 0"_s), qPrintable(promql[count]));
+        for (const QString& quantile : {u"p50"_s, u"p99"_s})
+            QVERIFY2(promql[quantile].endsWith(u") >= 0"_s), qPrintable(promql[quantile]));
+        QVERIFY2(promql[u"seen"_s].endsWith(u") == 0"_s), qPrintable(promql[u"seen"_s]));
+        for (const QString& perSide : {u"rate"_s, u"recent"_s, u"messages"_s, u"bytes"_s})
+            QVERIFY2(promql[perSide].endsWith(u')'), qPrintable(promql[perSide]));
     }
 
     void theLabelPoolSharesStringsWithinItsBound()
