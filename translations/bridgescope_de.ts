@@ -6490,6 +6490,10 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
+    <message>
+        <source>the answers in flight are larger than %1 MiB together: refused</source>
+        <translation>die laufenden Antworten sind zusammen größer als %1 MiB: abgelehnt</translation>
+    </message>
 </context>
 <context>
     <name>PublishDialog</name>

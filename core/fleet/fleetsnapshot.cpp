@@ -2,9 +2,11 @@
 #include "fleetsnapshot.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <QDateTime>
 #include <tuple>
+#include <vector>
 
 using namespace Qt::StringLiterals;
 
@@ -15,11 +17,83 @@ constexpr qint64 kRateWindowNs = 5 * kSecondNs;
 /// The window of the increase() queries.
 constexpr qint64 kRecentWindowNs = FleetSnapshotBuilder::kRateWindowSeconds * kSecondNs;
 
-QString linkKey(const PrometheusAnswer::Series& s)
+/// The labels of a link's series, found in one pass over its labels (empty when absent).
+struct LinkLabels
 {
-    return s.label(u"host"_s) + u'|' + s.label(u"bridge"_s) + u'|' + s.label(u"link"_s) + u'|'
-        + s.label(u"direction"_s);
+    enum { Host, Bridge, Link, Direction, Side, Count };
+    std::array<const QString*, Count> at {};
+
+    explicit LinkLabels(const PrometheusAnswer::Series& s)
+    {
+        static const QString none;
+        static const std::array<QString, Count> names {u"host"_s, u"bridge"_s, u"link"_s, u"direction"_s,
+                                                       u"side"_s};
+        at.fill(&none);
+        for (const PrometheusAnswer::Label& l : s.labels)
+            for (int i = 0; i < Count; ++i)
+                if (l.first == names[i]) {
+                    at[i] = &l.second;
+                    break;
+                }
+    }
+    const QString& operator[](int i) const { return *at[i]; }
+    QString key() const
+    {
+        return (*this)[Host] + u'|' + (*this)[Bridge] + u'|' + (*this)[Link] + u'|' + (*this)[Direction];
+    }
+};
+
+/// A link's four label strings by their data: the answers of a refresh are read with one label
+/// pool (PrometheusClient), so the series of one link in every answer share these strings.
+struct LabelData
+{
+    std::array<const QChar*, 4> data {};
+    std::array<qsizetype, 4> size {};
+
+    explicit LabelData(const LinkLabels& l)
+    {
+        for (int i = 0; i < 4; ++i) {
+            data[i] = l[i].constData();
+            size[i] = l[i].size();
+        }
+    }
+    bool operator==(const LabelData& o) const { return data == o.data && size == o.size; }
+};
+
+size_t qHash(const LabelData& d, size_t seed = 0)
+{
+    return qHashBits(&d, sizeof d, seed);
 }
+
+/// One id for each link (host, bridge, link, direction) a refresh's answers name. A series finds
+/// its id by the data of its label strings, shared across the answers: the text of its labels is
+/// only built and hashed the first time a string is met (once per refresh for a link, with one
+/// pool), not for every series of every answer.
+class LinkIndex
+{
+public:
+    /// The id of the link `l` names; a new one when `add`, else -1 for a link not met yet.
+    int id(const LinkLabels& l, bool add)
+    {
+        const LabelData data(l);
+        if (const auto it = m_byData.constFind(data); it != m_byData.cend())
+            return *it;
+        const QString key = l.key();
+        auto it = m_byKey.constFind(key);
+        if (it == m_byKey.cend()) {
+            if (!add)
+                return -1;
+            it = m_byKey.insert(key, int(m_byKey.size()));
+        }
+        m_byData.insert(data, *it); // the strings live as long as the answers, past build()'s use
+        return *it;
+    }
+    int size() const { return int(m_byKey.size()); }
+
+private:
+    QHash<LabelData, int> m_byData;
+    QHash<QString, int> m_byKey;
+};
 
 double valueOf(const PrometheusAnswer::Series& s)
 {
@@ -57,16 +131,34 @@ quint64 whole(double v)
     return quint64(std::min(v, 1.8e19));
 }
 
+/// The links listed in a snapshot: their ids and, for each id, its row in `links` (-1: not listed).
+struct LinkTable
+{
+    LinkIndex index;
+    QList<FleetLink> links;
+    std::vector<int> rowOf;
+    std::vector<Figures> figures; ///< by row
+
+    /// The row of the link a series names, -1 when it is not listed.
+    int row(const LinkLabels& l)
+    {
+        const int id = index.id(l, false);
+        return id >= 0 && id < int(rowOf.size()) ? rowOf[size_t(id)] : -1;
+    }
+};
+
 using Setter = void (*)(Figures&, bool source, double value);
 
-void collect(const QHash<QString, PrometheusAnswer>& answers, const QString& name,
-             QHash<QString, Figures>* figures, Setter set)
+void collect(const QHash<QString, PrometheusAnswer>& answers, const QString& name, LinkTable* table,
+             Setter set)
 {
-    const PrometheusAnswer answer = answers.value(name);
-    for (const PrometheusAnswer::Series& s : answer.series) {
-        const auto it = figures->find(linkKey(s));
-        if (it != figures->end())
-            set(*it, s.label(u"side"_s) != "destination"_L1, valueOf(s));
+    const auto answer = answers.constFind(name);
+    if (answer == answers.cend())
+        return;
+    for (const PrometheusAnswer::Series& s : answer->series) {
+        const LinkLabels l(s);
+        if (const int row = table->row(l); row >= 0)
+            set(table->figures[size_t(row)], l[LinkLabels::Side] != "destination"_L1, valueOf(s));
     }
 }
 
@@ -129,69 +221,73 @@ QHash<QString, FleetHost> hostsOf(const QHash<QString, PrometheusAnswer>& answer
 }
 
 /// The links: every link of a reporting host that its watch serves now; a silent host's last ones.
-QHash<QString, FleetLink> linksOf(const QHash<QString, PrometheusAnswer>& answers,
-                                  QHash<QString, FleetHost>& hosts, double now)
+void linksOf(const QHash<QString, PrometheusAnswer>& answers, QHash<QString, FleetHost>& hosts, double now,
+             LinkTable* table)
 {
-    QHash<QString, bool> current;
-    for (const PrometheusAnswer::Series& s : answers.value(u"state"_s).series)
-        current.insert(linkKey(s), true);
-    QHash<QString, FleetLink> links;
+    const QList<PrometheusAnswer::Series> state = answers.value(u"state"_s).series;
+    std::vector<char> current;
+    for (const PrometheusAnswer::Series& s : state) {
+        const size_t id = size_t(table->index.id(LinkLabels(s), true));
+        current.resize(std::max(current.size(), id + 1));
+        current[id] = 1;
+    }
+    std::vector<int>& rowOf = table->rowOf;
     // `links` holds the hour's links of the hosts not reporting (all of them, from an older
     // server's answer), `state` those served now.
-    QList<PrometheusAnswer::Series> named = answers.value(u"links"_s).series;
-    named += answers.value(u"state"_s).series;
-    for (const PrometheusAnswer::Series& s : std::as_const(named)) {
-        FleetLink l;
-        l.host = s.label(u"host"_s);
-        l.bridge = s.label(u"bridge"_s);
-        l.link = s.label(u"link"_s);
-        l.direction = s.label(u"direction"_s);
-        if (l.host.isEmpty() || l.link.isEmpty())
-            continue;
-        const QString key = l.key();
-        auto h = hosts.find(l.host);
-        if (h == hosts.end()) {
-            // Links of a host whose info was never seen: taken as reporting while they are served.
-            h = hosts.insert(l.host, FleetHost {l.host, {}, current.contains(key), now});
+    const QList<PrometheusAnswer::Series> hour = answers.value(u"links"_s).series;
+    for (const QList<PrometheusAnswer::Series>* named : {&hour, &state}) {
+        for (const PrometheusAnswer::Series& s : *named) {
+            const LinkLabels labels(s);
+            const QString& host = labels[LinkLabels::Host];
+            if (host.isEmpty() || labels[LinkLabels::Link].isEmpty())
+                continue;
+            const size_t id = size_t(table->index.id(labels, true));
+            current.resize(std::max(current.size(), id + 1));
+            rowOf.resize(current.size(), -1);
+            auto h = hosts.find(host);
+            if (h == hosts.end()) {
+                // Links of a host whose info was never seen: taken as reporting while they are served.
+                h = hosts.insert(host, FleetHost {host, {}, current[id] != 0, now});
+            }
+            if ((h->reporting && !current[id]) || rowOf[id] >= 0)
+                continue; // the watch no longer watches it, or it is listed already
+            FleetLink l;
+            l.host = host;
+            l.bridge = labels[LinkLabels::Bridge];
+            l.link = labels[LinkLabels::Link];
+            l.direction = labels[LinkLabels::Direction];
+            l.hostReporting = h->reporting;
+            l.def = FleetSnapshotBuilder::linkDef(l.bridge, l.link, l.direction);
+            rowOf[id] = int(table->links.size());
+            table->links.append(std::move(l));
         }
-        l.hostReporting = h->reporting;
-        if ((l.hostReporting && !current.contains(key)) || links.contains(key))
-            continue; // the watch no longer watches it, or it is listed already
-        l.def = FleetSnapshotBuilder::linkDef(l.bridge, l.link, l.direction);
-        links.insert(key, l);
     }
-
-    return links;
 }
 
-/// The figures of `links` from the answers.
-QHash<QString, Figures> figuresOf(const QHash<QString, PrometheusAnswer>& answers,
-                                  const QHash<QString, FleetLink>& links)
+/// The figures of the table's links from the answers.
+void figuresOf(const QHash<QString, PrometheusAnswer>& answers, LinkTable* table)
 {
-    QHash<QString, Figures> figures;
-    for (auto it = links.cbegin(); it != links.cend(); ++it)
-        figures.insert(it.key(), Figures {});
-    collect(answers, u"state"_s, &figures,
+    table->figures.assign(size_t(table->links.size()), Figures {});
+    collect(answers, u"state"_s, table,
             [](Figures& f, bool, double v) { f.state = std::isfinite(v) && v >= 0 && v <= 2 ? int(v) : -1; });
-    collect(answers, u"seen"_s, &figures, [](Figures& f, bool, double v) { f.seen = !(v == 0); });
-    collect(answers, u"rate"_s, &figures, [](Figures& f, bool source, double v) {
+    collect(answers, u"seen"_s, table, [](Figures& f, bool, double v) { f.seen = !(v == 0); });
+    collect(answers, u"rate"_s, table, [](Figures& f, bool source, double v) {
         (source ? f.sourceRate : f.destinationRate) = count(v);
     });
-    collect(answers, u"messages"_s, &figures, [](Figures& f, bool source, double v) {
+    collect(answers, u"messages"_s, table, [](Figures& f, bool source, double v) {
         (source ? f.sourceMessages : f.destinationMessages) = count(v);
     });
-    collect(answers, u"bytes"_s, &figures, [](Figures& f, bool source, double v) {
+    collect(answers, u"bytes"_s, table, [](Figures& f, bool source, double v) {
         (source ? f.sourceBytes : f.destinationBytes) = count(v);
     });
-    collect(answers, u"recent"_s, &figures, [](Figures& f, bool source, double v) {
+    collect(answers, u"recent"_s, table, [](Figures& f, bool source, double v) {
         (source ? f.sourceRecent : f.destinationRecent) = count(v);
     });
-    collect(answers, u"lost"_s, &figures, [](Figures& f, bool, double v) { f.lost = count(v); });
-    collect(answers, u"recentLost"_s, &figures, [](Figures& f, bool, double v) { f.recentLost = count(v); });
-    collect(answers, u"stalls"_s, &figures, [](Figures& f, bool, double v) { f.stalls = count(v); });
-    collect(answers, u"p50"_s, &figures, [](Figures& f, bool, double v) { f.p50 = latencyMs(v); });
-    collect(answers, u"p99"_s, &figures, [](Figures& f, bool, double v) { f.p99 = latencyMs(v); });
-    return figures;
+    collect(answers, u"lost"_s, table, [](Figures& f, bool, double v) { f.lost = count(v); });
+    collect(answers, u"recentLost"_s, table, [](Figures& f, bool, double v) { f.recentLost = count(v); });
+    collect(answers, u"stalls"_s, table, [](Figures& f, bool, double v) { f.stalls = count(v); });
+    collect(answers, u"p50"_s, table, [](Figures& f, bool, double v) { f.p50 = latencyMs(v); });
+    collect(answers, u"p99"_s, table, [](Figures& f, bool, double v) { f.p99 = latencyMs(v); });
 }
 
 } // namespace
@@ -206,24 +302,32 @@ QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
     const auto by = [](const QString& op, const QString& labels, const QString& expr) {
         return u"%1 by (%2) (%3)"_s.arg(op, labels, expr);
     };
+    // A link's series that says only what its absence says is not asked for: a loss or stall
+    // count where it is above 0 (build() takes any other as 0, NaN too), a quantile where it is a
+    // number (NaN otherwise), `seen` where it is 0 (a link is seen otherwise). A healthy fleet's
+    // losses, stalls and blind links are then empty answers, and so are the quantiles of links
+    // without stamps, not one series a link each. The per-side answers stay whole: both sides of
+    // a working link count.
     const QString quantile = u"1000 * histogram_quantile(%1, sum by (host, bridge, link, direction, le) "
-                             "(rate(bridgescope_link_latency_seconds_bucket[1m])))"_s;
+                             "(rate(bridgescope_link_latency_seconds_bucket[1m]))) >= 0"_s;
+    const auto above0 = [&](const QString& labels, const QString& expr) -> QString {
+        return by(u"sum"_s, labels, expr) + u" > 0"_s;
+    };
     return {
         // The last hour's links only of hosts not reporting now: the others' are in `state`.
         {u"links"_s,
          by(u"max"_s, perLink, u"last_over_time(bridgescope_link_state[1h])"_s)
              + u" unless on (host) bridgescope_watch_info"_s},
         {u"state"_s, by(u"max"_s, perLink, u"bridgescope_link_state"_s)},
-        {u"seen"_s, by(u"min"_s, perLink, u"bridgescope_link_seen"_s)},
+        {u"seen"_s, by(u"min"_s, perLink, u"bridgescope_link_seen"_s) + u" == 0"_s},
         {u"rate"_s, by(u"sum"_s, perSide, u"bridgescope_link_rate_hz"_s)},
         {u"messages"_s, by(u"sum"_s, perSide, u"bridgescope_link_messages_total"_s)},
         {u"bytes"_s, by(u"sum"_s, perSide, u"bridgescope_link_bytes_total"_s)},
-        {u"lost"_s, by(u"sum"_s, perLink, u"bridgescope_link_lost_total"_s)},
-        {u"stalls"_s, by(u"sum"_s, perLink, u"bridgescope_link_stalls_total"_s)},
+        {u"lost"_s, above0(perLink, u"bridgescope_link_lost_total"_s)},
+        {u"stalls"_s, above0(perLink, u"bridgescope_link_stalls_total"_s)},
         {u"recent"_s,
          by(u"sum"_s, perSide, u"increase(bridgescope_link_messages_total%1)"_s.arg(rateRange()))},
-        {u"recentLost"_s,
-         by(u"sum"_s, perLink, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange()))},
+        {u"recentLost"_s, above0(perLink, u"increase(bridgescope_link_lost_total%1)"_s.arg(rateRange()))},
         {u"p50"_s, quantile.arg(u"0.5"_s)},
         {u"p99"_s, quantile.arg(u"0.99"_s)},
         {u"bridges"_s, by(u"min"_s, u"host, bridge"_s, u"bridgescope_bridge_up"_s)},
@@ -279,15 +383,18 @@ FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>
     }
 
     QHash<QString, FleetHost> hosts = hostsOf(answers, now, hostsSeen);
-    QHash<QString, FleetLink> links = linksOf(answers, hosts, now);
-    QHash<QString, Figures> figures = figuresOf(answers, links);
+    LinkTable table;
+    linksOf(answers, hosts, now, &table);
+    figuresOf(answers, &table);
+    QList<FleetLink>& links = table.links;
     QHash<QString, bool> bridgeDown;
     for (const PrometheusAnswer::Series& s : answers.value(u"bridges"_s).series)
         if (valueOf(s) == 0)
             bridgeDown.insert(s.label(u"host"_s) + u'|' + s.label(u"bridge"_s), true);
 
-    for (FleetLink& l : links) {
-        const Figures& f = figures[l.key()];
+    for (qsizetype row = 0; row < links.size(); ++row) {
+        FleetLink& l = links[row];
+        const Figures& f = table.figures[size_t(row)];
         LinkFigures& lf = l.figures;
         // The mean over the chart's window (the watch's own 5-s rate is 0 for a slow link); a
         // discovered link has no source side to give a rate of.
@@ -324,7 +431,7 @@ FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>
         }
     }
 
-    snap.links = links.values();
+    snap.links = std::move(links);
     std::sort(snap.links.begin(), snap.links.end(), [](const FleetLink& a, const FleetLink& b) {
         return std::tie(a.host, a.bridge, a.link, a.direction)
             < std::tie(b.host, b.bridge, b.link, b.direction);

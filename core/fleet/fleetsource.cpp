@@ -18,44 +18,66 @@ void FleetSource::setServer(const QUrl& base, const QString& user, const QString
     m_client->setServer(base, user, password);
     m_snapshot = {};
     m_hostsSeen.clear();
+    m_totals.clear();
     m_error.clear();
+}
+
+bool FleetSource::isTotal(const QString& name)
+{
+    return name == "messages"_L1 || name == "bytes"_L1;
 }
 
 void FleetSource::refresh()
 {
     if (m_pending > 0)
         return;
-    const auto queries = FleetSnapshotBuilder::queries();
+    const double now = double(QDateTime::currentMSecsSinceEpoch()) / 1000.0;
+    const bool totals = m_totals.isEmpty() || !(now - m_totalsAt < m_totalsSeconds);
+    auto queries = FleetSnapshotBuilder::queries();
+    if (!totals)
+        queries.removeIf([](const auto& query) { return isTotal(query.first); });
     m_answers.clear();
     m_pending = int(queries.size());
     const quint64 generation = m_generation;
-    const double now = double(QDateTime::currentMSecsSinceEpoch()) / 1000.0;
     for (const auto& [name, promql] : queries) {
         m_client->query(
             promql,
-            [this, name = name, generation, now](const PrometheusAnswer& answer) {
+            [this, name = name, generation, now, totals](const PrometheusAnswer& answer) {
                 if (generation != m_generation)
                     return;
                 m_answers.insert(name, answer);
-                if (--m_pending > 0)
-                    return;
-                ++m_refreshes;
-                QString error;
-                for (auto it = m_answers.cbegin(); it != m_answers.cend() && error.isEmpty(); ++it)
-                    if (!it->ok())
-                        error = it->error;
-                if (error.isEmpty()) {
-                    m_error.clear();
-                    m_snapshot = FleetSnapshotBuilder::build(m_answers, m_rules, now, &m_hostsSeen);
-                } else {
-                    m_error = tr("cannot read the fleet from %1: %2")
-                                  .arg(m_client->server().toDisplayString(QUrl::RemoveUserInfo), error);
-                }
-                m_answers.clear();
-                emit refreshed();
+                if (--m_pending == 0)
+                    answered(now, totals);
             },
             now);
     }
+}
+
+void FleetSource::answered(double now, bool totals)
+{
+    ++m_refreshes;
+    QString error;
+    for (auto it = m_answers.cbegin(); it != m_answers.cend() && error.isEmpty(); ++it)
+        if (!it->ok())
+            error = it->error;
+    if (error.isEmpty()) {
+        m_error.clear();
+        if (totals) {
+            m_totals.clear();
+            for (auto it = m_answers.cbegin(); it != m_answers.cend(); ++it)
+                if (isTotal(it.key()))
+                    m_totals.insert(it.key(), it.value());
+            m_totalsAt = now;
+        } else {
+            m_answers.insert(m_totals);
+        }
+        m_snapshot = FleetSnapshotBuilder::build(m_answers, m_rules, now, &m_hostsSeen);
+    } else {
+        m_error = tr("cannot read the fleet from %1: %2")
+                      .arg(m_client->server().toDisplayString(QUrl::RemoveUserInfo), error);
+    }
+    m_answers.clear();
+    emit refreshed();
 }
 
 void FleetSource::history(const FleetLink& link, double now, double minutes, double stepSeconds,

@@ -19,15 +19,29 @@ struct FleetHistory
 /// (the page asks every 5 s). Nothing is subscribed on any broker or master: it only asks
 /// Prometheus. While the server cannot be reached the last snapshot stays, and error() says why:
 /// the window's own outage is not the links going down.
+///
+/// The counters' totals (the `messages` and `bytes` queries, two series a link) are asked at the
+/// first refresh and then once they are kTotalsSeconds old; the refreshes between reuse them. The
+/// table shows neither, and the judge only asks whether a side ever counted when it counted
+/// nothing over the last minute (kRateWindowSeconds): a side's first message is in the minute's
+/// increase for longer than the totals are old, so the verdicts are those of totals asked each time.
+/// A snapshot's figures' `messages` and `bytes` are as old as the totals.
 class FleetSource : public QObject
 {
     Q_OBJECT
 public:
+    /// How old the totals may be before a refresh asks them again: half the rates' window.
+    static constexpr double kTotalsSeconds = FleetSnapshotBuilder::kRateWindowSeconds / 2.0;
+
     explicit FleetSource(QObject* parent = nullptr);
 
     void setServer(const QUrl& base, const QString& user = {}, const QString& password = {});
     QUrl server() const { return m_client->server(); }
     void setRules(const WatchRules& rules) { m_rules = rules; }
+    /// kTotalsSeconds, for tests (0: the totals at every refresh).
+    void setTotalsSeconds(double seconds) { m_totalsSeconds = seconds; }
+    /// Whether `name` (of FleetSnapshotBuilder::queries()) is one of the totals asked less often.
+    static bool isTotal(const QString& name);
     PrometheusClient* client() const { return m_client; }
 
     /// Asks the server for a new snapshot; nothing when a refresh is under way.
@@ -46,6 +60,9 @@ signals:
     void refreshed();
 
 private:
+    /// Every answer of the refresh asked at `now` came (`totals`: the totals among them).
+    void answered(double now, bool totals);
+
     PrometheusClient* m_client;
     WatchRules m_rules;
     FleetSnapshot m_snapshot;
@@ -55,4 +72,7 @@ private:
     quint64 m_refreshes = 0;
     QHash<QString, PrometheusAnswer> m_answers;
     QHash<QString, double> m_hostsSeen;
+    QHash<QString, PrometheusAnswer> m_totals; ///< the last totals' answers (empty: none yet)
+    double m_totalsAt = 0; ///< when they were asked (seconds since the epoch)
+    double m_totalsSeconds = kTotalsSeconds;
 };

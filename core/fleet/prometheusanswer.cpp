@@ -63,9 +63,10 @@ bool readLabels(const QJsonValue& metric, QList<PrometheusAnswer::Label>* out)
 class FastReader
 {
 public:
-    explicit FastReader(const QByteArray& json)
+    FastReader(const QByteArray& json, PrometheusLabelPool* labels)
         : m_p(json.constData())
         , m_end(json.constData() + json.size())
+        , m_labels(labels ? labels : &m_own)
     { }
 
     bool read(PrometheusAnswer* out)
@@ -126,16 +127,13 @@ private:
         ++m_p;
         return ascii || out->isValidUtf8();
     }
-    /// A label name or value within its bound, made once per answer.
+    /// A label name or value within its bound, made once per answer (or per pool).
     bool text(QString* out)
     {
         QByteArrayView bytes;
         if (!rawString(&bytes) || bytes.size() > PrometheusAnswer::kMaxTextChars)
             return false;
-        auto it = m_strings.constFind(bytes);
-        if (it == m_strings.cend())
-            it = m_strings.insert(bytes, QString::fromUtf8(bytes));
-        *out = *it;
+        *out = m_labels->intern(bytes);
         return true;
     }
     /// A number as JSON writes it, finite: false for anything else.
@@ -186,6 +184,7 @@ private:
             return false;
         if (eat('}'))
             return true;
+        out->reserve(6); // the fleet's queries keep at most 5 labels: one allocation, not three
         do {
             QString name, value;
             if (out->size() >= PrometheusAnswer::kMaxLabels || !text(&name) || !eat(':') || !text(&value))
@@ -280,9 +279,26 @@ private:
 
     const char* m_p;
     const char* m_end;
-    QHash<QByteArrayView, QString> m_strings;
+    PrometheusLabelPool m_own;
+    PrometheusLabelPool* m_labels;
 };
 } // namespace
+
+QString PrometheusLabelPool::intern(QByteArrayView utf8)
+{
+    if (const auto it = m_strings.constFind(utf8); it != m_strings.cend())
+        return *it;
+    if (m_total + utf8.size() > kMaxBytes) {
+        m_strings.clear();
+        m_bytes.clear();
+        m_total = 0;
+    }
+    m_bytes.append(utf8.toByteArray());
+    m_total += utf8.size();
+    const QString text = QString::fromUtf8(utf8);
+    m_strings.insert(QByteArrayView(m_bytes.constLast()), text);
+    return text;
+}
 
 bool PrometheusAnswer::readValue(const QString& text, double* out)
 {
@@ -308,16 +324,16 @@ bool PrometheusAnswer::readValue(const QString& text, double* out)
     return true;
 }
 
-PrometheusAnswer PrometheusAnswer::read(const QByteArray& json)
+PrometheusAnswer PrometheusAnswer::read(const QByteArray& json, PrometheusLabelPool* labels)
 {
     PrometheusAnswer a;
-    return readUsual(json, &a) ? a : readGeneral(json);
+    return readUsual(json, &a, labels) ? a : readGeneral(json);
 }
 
-bool PrometheusAnswer::readUsual(const QByteArray& json, PrometheusAnswer* out)
+bool PrometheusAnswer::readUsual(const QByteArray& json, PrometheusAnswer* out, PrometheusLabelPool* labels)
 {
     PrometheusAnswer a;
-    if (!FastReader(json).read(&a))
+    if (!FastReader(json, labels).read(&a))
         return false;
     *out = std::move(a);
     return true;

@@ -1,11 +1,32 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QByteArray>
+#include <QByteArrayView>
 #include <QCoreApplication>
+#include <QHash>
 #include <QList>
 #include <QString>
 #include <QStringList>
 #include <utility>
+
+/// The label strings of the answers read with it, each text made once: the fleet view's answers of
+/// one refresh name the same links, so their series share one string for each label value, and a
+/// series finds its link by the strings' data (FleetSnapshotBuilder) without hashing their text.
+/// Bounded: past kMaxBytes of text it starts again empty (a hostile server's ever new labels).
+class PrometheusLabelPool
+{
+public:
+    static constexpr qsizetype kMaxBytes = 16 * 1024 * 1024;
+    /// The string of `utf8` (valid UTF-8), the same one each time while the pool holds it.
+    QString intern(QByteArrayView utf8);
+    qsizetype size() const { return m_strings.size(); }
+
+private:
+    QHash<QByteArrayView, QString> m_strings; ///< viewing the bytes kept in m_bytes
+    QList<QByteArray> m_bytes; ///< their data never moves (a QByteArray moves only its handle)
+    qsizetype m_total = 0;
+};
 
 /// What one answer of Prometheus's HTTP API (/api/v1/query, /api/v1/query_range) said, as far as
 /// the fleet view reads it: a vector or a matrix of series, each its labels and its samples.
@@ -58,11 +79,13 @@ public:
 
     bool ok() const { return error.isEmpty(); }
     /// Reads an answer's bytes (already bounded in size by the client): Prometheus's usual form
-    /// straight from the bytes, anything else as readGeneral() does, with the same result.
-    static PrometheusAnswer read(const QByteArray& json);
+    /// straight from the bytes, anything else as readGeneral() does, with the same result. The
+    /// usual form's label strings come from `labels` when given (shared with other answers).
+    static PrometheusAnswer read(const QByteArray& json, PrometheusLabelPool* labels = nullptr);
     /// Reads Prometheus's usual form of an answer (success, a vector or a matrix, strings without
     /// escapes, within the bounds) straight from the bytes; false, `out` untouched, for any other.
-    static bool readUsual(const QByteArray& json, PrometheusAnswer* out);
+    static bool readUsual(const QByteArray& json, PrometheusAnswer* out,
+                          PrometheusLabelPool* labels = nullptr);
     /// Reads any answer through a JSON document: errors, warnings, scalars, escapes, what is past
     /// a bound or of the wrong form (counted).
     static PrometheusAnswer readGeneral(const QByteArray& json);

@@ -9,6 +9,13 @@
 
 using namespace Qt::StringLiterals;
 
+namespace {
+QString mebibytes(qint64 bytes)
+{
+    return QString::number(double(bytes) / 1048576.0, 'g', 3);
+}
+} // namespace
+
 PrometheusClient::PrometheusClient(QObject* parent)
     : QObject(parent)
     , m_network(new QNetworkAccessManager(this))
@@ -142,14 +149,21 @@ bool PrometheusClient::take(QNetworkReply* reply)
         return false;
     // An answer that announces more than the bound is refused before its body is read.
     const QVariant announced = reply->header(QNetworkRequest::ContentLengthHeader);
-    if (it->second.body.size() + reply->bytesAvailable() > m_maxBytes
+    const qint64 incoming = reply->bytesAvailable();
+    if (it->second.body.size() + incoming > m_maxBytes
         || (announced.isValid() && announced.toLongLong() > m_maxBytes)) {
-        finish(
-            reply, {},
-            tr("the answer is larger than %1 MiB: refused").arg(double(m_maxBytes) / 1048576.0, 0, 'g', 3));
+        finish(reply, {}, tr("the answer is larger than %1 MiB: refused").arg(mebibytes(m_maxBytes)));
         return false;
     }
-    it->second.body += reply->readAll();
+    if (m_inFlightBytes + incoming > m_maxInFlightBytes) {
+        finish(reply, {},
+               tr("the answers in flight are larger than %1 MiB together: refused")
+                   .arg(mebibytes(m_maxInFlightBytes)));
+        return false;
+    }
+    const QByteArray bytes = reply->readAll();
+    it->second.body += bytes;
+    m_inFlightBytes += bytes.size();
     return true;
 }
 
@@ -164,6 +178,7 @@ void PrometheusClient::finish(QNetworkReply* reply, QByteArray body, const QStri
     if (it == m_replies.end())
         return;
     Callback done = std::move(it->second.done);
+    m_inFlightBytes -= it->second.body.size();
     m_replies.erase(it);
     reply->disconnect(this);
     if (reply->isRunning())
@@ -171,7 +186,7 @@ void PrometheusClient::finish(QNetworkReply* reply, QByteArray body, const QStri
     reply->deleteLater();
     PrometheusAnswer answer;
     if (error.isEmpty())
-        answer = PrometheusAnswer::read(body);
+        answer = PrometheusAnswer::read(body, &m_labels);
     else
         answer.error = error;
     if (!answer.ok())

@@ -17,14 +17,21 @@ class QNetworkReply;
 /// every call returns at once and its answer comes later, so a window's thread never waits on the
 /// network. Each answer is bounded before it is parsed: at most kMaxAnswerBytes (the reply is
 /// aborted past them), at most kTimeoutMs from the request to the last byte, then
-/// PrometheusAnswer::read's bounds. The password of basic auth is only held in memory and only
-/// sent in the Authorization header; it is never logged or shown.
+/// PrometheusAnswer::read's bounds; and the answers in flight together at most kMaxInFlightBytes
+/// (the reply whose bytes would pass it is aborted), so a refresh's parallel queries cannot each
+/// take a whole budget. A refused reply is aborted while it runs, which closes its connection
+/// (Qt closes a connection whose reply did not finish): the next query never waits on it. The password of
+/// basic auth is only held in memory and only sent in the Authorization header; it is never logged or shown.
 class PrometheusClient : public QObject
 {
     Q_OBJECT
 public:
     static constexpr qint64 kMaxAnswerBytes = 32 * 1024 * 1024;
     static constexpr int kTimeoutMs = 10'000;
+    /// The bodies of all answers in flight: two answers' budgets. All 15 answers of a refresh are
+    /// about 22 MB at 10,000 links (2.2 MB at 1,000, bench_fleetscale), and at most 6 are in flight
+    /// at a time (QNetworkAccessManager's connections to one host).
+    static constexpr qint64 kMaxInFlightBytes = 2 * kMaxAnswerBytes;
 
     explicit PrometheusClient(QObject* parent = nullptr);
     ~PrometheusClient() override;
@@ -37,6 +44,10 @@ public:
     QUrl server() const { return m_base; }
     /// The answer bound, for tests (default kMaxAnswerBytes).
     void setMaxAnswerBytes(qint64 bytes) { m_maxBytes = bytes; }
+    /// The bound of all answers in flight, for tests (default kMaxInFlightBytes).
+    void setMaxInFlightBytes(qint64 bytes) { m_maxInFlightBytes = bytes; }
+    /// The bytes of the answers in flight now (their bodies read so far).
+    qint64 inFlightBytes() const { return m_inFlightBytes; }
     void setTimeoutMs(int ms) { m_timeoutMs = ms; }
 
     using Callback = std::function<void(const PrometheusAnswer&)>;
@@ -66,6 +77,10 @@ private:
     QUrl m_base;
     QByteArray m_authorization;
     qint64 m_maxBytes = kMaxAnswerBytes;
+    qint64 m_maxInFlightBytes = kMaxInFlightBytes;
+    qint64 m_inFlightBytes = 0;
+    /// The label strings of all answers: those of one refresh share them (see PrometheusLabelPool).
+    PrometheusLabelPool m_labels;
     int m_timeoutMs = kTimeoutMs;
     quint64 m_failures = 0;
     struct Pending

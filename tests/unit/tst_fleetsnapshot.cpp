@@ -7,8 +7,10 @@
 #include "fleet/prometheusclient.h"
 #include "peakrss.h"
 
+#include <limits>
 #include <memory>
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -36,15 +38,17 @@ QJsonObject metric(const Labels& labels)
     return m;
 }
 
-/// A vector answer of `series` (labels, value as Prometheus writes it).
-PrometheusAnswer vector(const QList<std::pair<Labels, QString>>& series, double time = 1000)
+/// A vector answer of `series` (labels, value as Prometheus writes it), its label strings from
+/// `pool` when given.
+PrometheusAnswer vector(const QList<std::pair<Labels, QString>>& series, double time = 1000,
+                        PrometheusLabelPool* pool = nullptr)
 {
     QJsonArray result;
     for (const auto& [labels, value] : series)
         result.append(QJsonObject {{u"metric"_s, metric(labels)}, {u"value"_s, QJsonArray {time, value}}});
     const QJsonObject top {{u"status"_s, u"success"_s},
                            {u"data"_s, QJsonObject {{u"resultType"_s, u"vector"_s}, {u"result"_s, result}}}};
-    return PrometheusAnswer::read(QJsonDocument(top).toJson(QJsonDocument::Compact));
+    return PrometheusAnswer::read(QJsonDocument(top).toJson(QJsonDocument::Compact), pool);
 }
 
 Labels link(const QString& host, const QString& name, const QString& side = {})
@@ -59,8 +63,10 @@ Labels link(const QString& host, const QString& name, const QString& side = {})
 /// Answers for two hosts: "a" reporting with links "/x → x" (healthy), "/s → s" (stalled),
 /// "/l → l" (losing 10 %), "/p → p" (p99 300 ms); "b" stopped reporting, its link "/y → y" known
 /// from the hour.
-QHash<QString, PrometheusAnswer> twoHosts()
+QHash<QString, PrometheusAnswer> twoHosts(PrometheusLabelPool* pool = nullptr)
 {
+    const auto vector
+        = [pool](const QList<std::pair<Labels, QString>>& series) { return ::vector(series, 1000, pool); };
     const QStringList names {u"/x → x"_s, u"/s → s"_s, u"/l → l"_s, u"/p → p"_s};
     QList<std::pair<Labels, QString>> state, rate, messages, recent, lost, recentLost, seen;
     for (const QString& n : names) {
@@ -104,6 +110,30 @@ const FleetLink* find(const FleetSnapshot& s, const QString& host, const QString
     return nullptr;
 }
 
+/// What a snapshot shows and judges of each link, a line a link.
+QStringList printed(const FleetSnapshot& s)
+{
+    QStringList out;
+    for (const FleetLink& l : s.links)
+        out << u"%1 %2 %3 %4 src %5/%6 Hz dst %7/%8 Hz loss %9 p50 %10 p99 %11 lost %12 stalls %13 %14 %15"_s
+                    .arg(l.host, l.link)
+                    .arg(int(l.verdict.level))
+                    .arg(l.verdict.detail)
+                    .arg(l.figures.source.messages)
+                    .arg(l.figures.source.rateHz)
+                    .arg(l.figures.destination.messages)
+                    .arg(l.figures.destination.rateHz)
+                    .arg(l.figures.lossPercent)
+                    .arg(l.figures.latencyP50Ms)
+                    .arg(l.figures.latencyP99Ms)
+                    .arg(l.figures.lost)
+                    .arg(l.figures.stalls)
+                    .arg(l.hostReporting)
+                    .arg(l.reportedState)
+                + u' ' + (l.verdict.unknown ? u"unknown"_s : u"known"_s);
+    return out;
+}
+
 /// A one-shot HTTP server: answers each request with `head` and `body` (or nothing, when `silent`).
 class TinyServer : public QTcpServer
 {
@@ -129,6 +159,8 @@ public:
 
 /// A hostile HTTP server: every request gets a body past any budget, 1 MiB at a time as the client
 /// takes it: `kLength` bytes announced in Content-Length, or (endless) no length and no end.
+/// With `keepAlive`, only the first connection floods, without Connection: close (it reads no second
+/// request all the same), and every later one answers an empty vector.
 class FloodServer : public QTcpServer
 {
 public:
@@ -136,10 +168,19 @@ public:
     static constexpr qint64 kLength = qint64(48) << 20;
     qint64 written = 0; ///< body bytes, all connections
     qint64 most = 0; ///< body bytes of the connection that took the most
-    explicit FloodServer(bool endless)
+    int connections = 0;
+    explicit FloodServer(bool endless, bool keepAlive = false)
     {
-        connect(this, &QTcpServer::newConnection, this, [this, endless] {
+        connect(this, &QTcpServer::newConnection, this, [this, endless, keepAlive] {
             while (QTcpSocket* s = nextPendingConnection()) {
+                connect(s, &QTcpSocket::disconnected, s, &QObject::deleteLater);
+                if (keepAlive && ++connections > 1) {
+                    connect(s, &QTcpSocket::readyRead, s, [s] {
+                        if (s->readAll().contains("\r\n\r\n"))
+                            s->write(okAnswer());
+                    });
+                    continue;
+                }
                 auto sent = std::make_shared<qint64>(-1); // -1: not asked yet
                 const auto feed = [this, s, sent, endless] {
                     while (*sent >= 0 && s->bytesToWrite() < kChunk && (endless || *sent < kLength)) {
@@ -149,34 +190,92 @@ public:
                         most = std::max(most, *sent);
                     }
                 };
-                connect(s, &QTcpSocket::readyRead, s, [s, sent, feed, endless] {
+                connect(s, &QTcpSocket::readyRead, s, [s, sent, feed, endless, keepAlive] {
                     if (!s->readAll().contains("\r\n\r\n") || *sent >= 0)
                         return;
                     // One answer a connection (it reads no second request): Connection: close, so
-                    // that the client does not send the next query on it.
+                    // that the client does not send the next query on it (unless `keepAlive`).
                     s->write(
-                        "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\nConnection: close\r\n"
+                        "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\n"
+                        + (keepAlive ? QByteArray() : "Connection: close\r\n"_ba)
                         + (endless ? QByteArray() : "Content-Length: " + QByteArray::number(kLength) + "\r\n")
                         + "\r\n");
                     *sent = 0;
                     feed();
                 });
                 connect(s, &QTcpSocket::bytesWritten, s, feed);
+            }
+        });
+        listen(QHostAddress::LocalHost);
+    }
+    QUrl url() const { return QUrl(u"http://127.0.0.1:%1"_s.arg(serverPort())); }
+    static QByteArray okAnswer()
+    {
+        const QByteArray body = R"({"status":"success","data":{"resultType":"vector","result":[]}})";
+        return "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\nContent-Length: "
+            + QByteArray::number(body.size()) + "\r\n\r\n" + body;
+    }
+
+private:
+    const QByteArray m_chunk = QByteArray(kChunk, ' ');
+};
+
+/// A Prometheus of one link: every query gets the link "/x → x" of host "a" (a source side, a
+/// version) with the value `value`, and is counted.
+class OneLinkServer : public QTcpServer
+{
+public:
+    QByteArray value = "7";
+    int requests = 0;
+    OneLinkServer()
+    {
+        connect(this, &QTcpServer::newConnection, this, [this] {
+            while (QTcpSocket* s = nextPendingConnection()) {
+                auto request = std::make_shared<QByteArray>();
+                connect(s, &QTcpSocket::readyRead, s, [this, s, request] {
+                    *request += s->readAll();
+                    const qsizetype end = request->indexOf("\r\n\r\n");
+                    if (end < 0)
+                        return;
+                    ++requests;
+                    request->clear();
+                    const QByteArray body
+                        = R"({"status":"success","data":{"resultType":"vector","result":[{"metric":{"host":"a",)"
+                          R"("bridge":"b","link":"/x → x","direction":"ros2mqtt","side":"source","version":"1"},)"
+                          R"("value":[1000,")"
+                        + value + R"("]}]}})";
+                    s->write("HTTP/1.1 200 OK\r\nContent-Type: application/json\r\nContent-Length: "
+                             + QByteArray::number(body.size()) + "\r\n\r\n" + body);
+                });
                 connect(s, &QTcpSocket::disconnected, s, &QObject::deleteLater);
             }
         });
         listen(QHostAddress::LocalHost);
     }
     QUrl url() const { return QUrl(u"http://127.0.0.1:%1"_s.arg(serverPort())); }
-
-private:
-    const QByteArray m_chunk = QByteArray(kChunk, ' ');
 };
 
 QByteArray http(const QByteArray& body)
 {
     return "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\nContent-Length: "
         + QByteArray::number(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
+}
+
+/// One refresh of `source` from the flood `server`: how much the peak RSS grew (-1: no refresh).
+qint64 refreshFlooded(FleetSource& source, const FloodServer& server)
+{
+    source.client()->setTimeoutMs(60000); // the budget of bytes is under test, not the one of time
+    if (!PeakRss::reset())
+        return -1;
+    const qint64 before = PeakRss::of();
+    QSignalSpy refreshed(&source, &FleetSource::refreshed);
+    source.refresh();
+    if (!refreshed.wait(120000))
+        return -1;
+    const qint64 grew = PeakRss::of() - before;
+    qInfo("%lld MiB sent, at most %lld MiB on one connection; peak RSS grew by %lld MiB",
+          server.written >> 20, server.most >> 20, grew >> 20);
+    return grew;
 }
 
 PrometheusAnswer ask(PrometheusClient& client)
@@ -575,15 +674,10 @@ private slots:
         FloodServer server(endless);
         FleetSource source;
         source.setServer(server.url());
-        source.client()->setTimeoutMs(60000); // the budget of bytes is under test, not the one of time
-        QVERIFY(PeakRss::reset());
-        const qint64 before = PeakRss::of();
-        QSignalSpy refreshed(&source, &FleetSource::refreshed);
-        source.refresh();
-        QVERIFY(refreshed.wait(120000));
-        const qint64 grew = PeakRss::of() - before;
-        qInfo("%lld MiB sent, at most %lld MiB on one connection; peak RSS grew by %lld MiB",
-              server.written >> 20, server.most >> 20, grew >> 20);
+        // Each answer's budget is under test, not the one of all in flight (see below).
+        source.client()->setMaxInFlightBytes(std::numeric_limits<qint64>::max());
+        const qint64 grew = refreshFlooded(source, server);
+        QVERIFY(grew >= 0);
         const qint64 queries = FleetSnapshotBuilder::queries().size();
         QCOMPARE(source.client()->failures(), quint64(queries));
         QCOMPARE(source.refreshes(), 1u);
@@ -604,6 +698,165 @@ private slots:
                      "the budget was reached, not a short read");
         QVERIFY2(grew < bound + PeakRss::kSanitizerSlack,
                  qPrintable(u"peak RSS grew by %1 MiB, bound %2 MiB"_s.arg(grew >> 20).arg(bound >> 20)));
+    }
+
+    /// Issue 44, fourth stop: a refresh's answers are read with one label pool, and a series finds
+    /// its link by its strings' data. The snapshot is the one of answers read each on its own (the
+    /// strings' text decides, the data only finds it sooner).
+    void answersOfOnePoolGiveTheSnapshotOfSeparateOnes()
+    {
+        PrometheusLabelPool pool;
+        const QHash<QString, PrometheusAnswer> pooled = twoHosts(&pool);
+        const auto linkOf = [&](const QString& answer) -> const QString& {
+            for (const PrometheusAnswer::Label& l : pooled[answer].series.constFirst().labels)
+                if (l.first == "link"_L1)
+                    return l.second;
+            Q_UNREACHABLE();
+        };
+        QVERIFY2(linkOf(u"state"_s).constData() == linkOf(u"rate"_s).constData(),
+                 "the answers share the link's string");
+        QHash<QString, double> seen, seenPooled;
+        const FleetSnapshot separate = FleetSnapshotBuilder::build(twoHosts(), WatchRules(), 1000, &seen);
+        const FleetSnapshot shared = FleetSnapshotBuilder::build(pooled, WatchRules(), 1000, &seenPooled);
+        QCOMPARE(separate.links.size(), 5);
+        QCOMPARE(printed(shared), printed(separate));
+    }
+
+    /// Issue 44, fourth stop: the per-link answers carry only the series that say more than their
+    /// absence (a loss or stall count above 0, a quantile that is a number, a link not seen), and
+    /// the snapshot is the one of the whole answers.
+    void seriesThatSayWhatTheirAbsenceSaysAreNotAsked()
+    {
+        QHash<QString, PrometheusAnswer> whole = twoHosts();
+        whole[u"stalls"_s]
+            = vector({{link(u"a"_s, u"/x → x"_s), u"0"_s}, {link(u"a"_s, u"/s → s"_s), u"2"_s}});
+        whole[u"seen"_s].series.append(vector({{link(u"b"_s, u"/y → y"_s), u"0"_s}}).series);
+        QHash<QString, PrometheusAnswer> asked = whole;
+        const auto keep = [&](const QString& name, bool (*kept)(double)) {
+            QList<PrometheusAnswer::Series>& series = asked[name].series;
+            series.removeIf(
+                [kept](const PrometheusAnswer::Series& x) { return !kept(x.points.constLast().value); });
+        };
+        for (const QString& count : {u"lost"_s, u"stalls"_s, u"recentLost"_s})
+            keep(count, [](double v) { return v > 0; });
+        for (const QString& quantile : {u"p50"_s, u"p99"_s})
+            keep(quantile, [](double v) { return v >= 0; });
+        keep(u"seen"_s, [](double v) { return v == 0; });
+        QCOMPARE(asked[u"recentLost"_s].series.size(), 1);
+        QCOMPARE(asked[u"seen"_s].series.size(), 1);
+        QHash<QString, double> seen, seenAsked;
+        QCOMPARE(printed(FleetSnapshotBuilder::build(asked, WatchRules(), 1000, &seenAsked)),
+                 printed(FleetSnapshotBuilder::build(whole, WatchRules(), 1000, &seen)));
+        // And the queries ask so.
+        QHash<QString, QString> promql;
+        for (const auto& [name, query] : FleetSnapshotBuilder::queries())
+            promql.insert(name, query);
+        for (const QString& count : {u"lost"_s, u"stalls"_s, u"recentLost"_s})
+            QVERIFY2(promql[count].endsWith(u") > 0"_s), qPrintable(promql[count]));
+        for (const QString& quantile : {u"p50"_s, u"p99"_s})
+            QVERIFY2(promql[quantile].endsWith(u") >= 0"_s), qPrintable(promql[quantile]));
+        QVERIFY2(promql[u"seen"_s].endsWith(u") == 0"_s), qPrintable(promql[u"seen"_s]));
+        for (const QString& perSide : {u"rate"_s, u"recent"_s, u"messages"_s, u"bytes"_s})
+            QVERIFY2(promql[perSide].endsWith(u')'), qPrintable(promql[perSide]));
+    }
+
+    void theLabelPoolSharesStringsWithinItsBound()
+    {
+        PrometheusLabelPool pool;
+        const QString a = pool.intern("host");
+        const QString b = pool.intern(QByteArray("host"));
+        QCOMPARE(b, u"host"_s);
+        QVERIFY(a.constData() == b.constData());
+        QCOMPARE(pool.size(), 1);
+        const QByteArray big(PrometheusAnswer::kMaxTextChars, 'x');
+        for (qsizetype i = 0; i * big.size() <= PrometheusLabelPool::kMaxBytes; ++i)
+            pool.intern(QByteArray(QByteArray::number(i) + big));
+        QVERIFY2(pool.size() * big.size() <= PrometheusLabelPool::kMaxBytes,
+                 qPrintable(QString::number(pool.size())));
+        QCOMPARE(pool.intern("host"), u"host"_s);
+    }
+
+    /// Issue 44, fourth stop: the totals (`messages`, `bytes`) are asked at the first refresh and
+    /// again once kTotalsSeconds old; a refresh between asks the other 13 queries and keeps the
+    /// totals it has.
+    void theTotalsAreAskedOnlyOnceTheyAreOld()
+    {
+        OneLinkServer server;
+        FleetSource source;
+        source.setServer(server.url());
+        QSignalSpy refreshed(&source, &FleetSource::refreshed);
+        const auto refresh = [&] {
+            const int before = server.requests;
+            source.refresh();
+            if (!refreshed.wait(20000) || !source.error().isEmpty())
+                return -1;
+            return server.requests - before;
+        };
+        const int all = int(FleetSnapshotBuilder::queries().size());
+        QCOMPARE(refresh(), all);
+        QCOMPARE(source.snapshot().links.size(), 1);
+        QCOMPARE(source.snapshot().links[0].figures.source.messages, 7u);
+        QCOMPARE(source.snapshot().links[0].figures.source.bytes, 7u);
+        QCOMPARE(source.snapshot().links[0].figures.lost, 7u);
+        server.value = "9";
+        QCOMPARE(refresh(), all - 2);
+        QCOMPARE(source.snapshot().links[0].figures.lost, 9u); // the others are new
+        QCOMPARE(source.snapshot().links[0].figures.source.messages, 7u); // the totals kept
+        QCOMPARE(source.snapshot().links[0].figures.source.bytes, 7u);
+        QVERIFY(source.snapshot().links[0].verdict.unknown == false);
+        source.setTotalsSeconds(0);
+        QCOMPARE(refresh(), all);
+        QCOMPARE(source.snapshot().links[0].figures.source.messages, 9u);
+        QCOMPARE(source.snapshot().links[0].figures.source.bytes, 9u);
+    }
+
+    /// The answers of a refresh in flight together are bounded, not only each: a server that
+    /// floods every parallel query endlessly gets the refresh refused at the total budget, within
+    /// it in memory.
+    void theAnswersInFlightAreBoundedTogether()
+    {
+        FloodServer server(true);
+        FleetSource source;
+        source.setServer(server.url());
+        constexpr qint64 kTotal = qint64(8) << 20;
+        source.client()->setMaxInFlightBytes(kTotal);
+        const qint64 grew = refreshFlooded(source, server);
+        QVERIFY(grew >= 0);
+        QCOMPARE(source.client()->failures(), quint64(FleetSnapshotBuilder::queries().size()));
+        QVERIFY2(source.error().endsWith(u"the answers in flight are larger than 8 MiB together: refused"_s),
+                 qPrintable(source.error()));
+        QCOMPARE(source.client()->inFlightBytes(), 0);
+        QCOMPARE(source.client()->inFlight(), 0);
+        // The bodies held: the total budget (a QByteArray grows by half again), and the buffers.
+        const qint64 bound = kTotal * 3 / 2 + (qint64(32) << 20);
+        QVERIFY2(grew < bound + PeakRss::kSanitizerSlack,
+                 qPrintable(u"peak RSS grew by %1 MiB, bound %2 MiB"_s.arg(grew >> 20).arg(bound >> 20)));
+    }
+
+    /// A refused answer's connection is not used again: the server kept it alive but reads no
+    /// second request on it, and the next query is answered at once, not after its time budget.
+    void theNextQueryDoesNotWaitOnARefusedAnswersConnection_data()
+    {
+        QTest::addColumn<bool>("endless");
+        QTest::newRow("refused by its announced length") << false;
+        QTest::newRow("refused in the middle of its body") << true;
+    }
+    void theNextQueryDoesNotWaitOnARefusedAnswersConnection()
+    {
+        QFETCH(bool, endless);
+        FloodServer server(endless, true);
+        PrometheusClient client;
+        client.setServer(server.url());
+        client.setMaxAnswerBytes(qint64(4) << 20);
+        client.setTimeoutMs(60000);
+        const PrometheusAnswer refused = ask(client);
+        QVERIFY2(refused.error.startsWith(u"the answer is larger than 4 MiB"_s), qPrintable(refused.error));
+        QElapsedTimer took;
+        took.start();
+        const PrometheusAnswer next = ask(client);
+        QVERIFY2(next.ok(), qPrintable(next.error));
+        QVERIFY2(took.elapsed() < 5000, qPrintable(u"the next query took %1 ms"_s.arg(took.elapsed())));
+        QCOMPARE(server.connections, 2);
     }
 
     void aSilentServerTimesOutAnAbsentOneIsSaid()
