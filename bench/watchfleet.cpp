@@ -405,6 +405,7 @@ int runWatchFleet(const QString& program)
     Bench::row(u"/metrics scrape idle (ms)"_s, last.ms, u"%1 links"_s.arg(last.links));
     Bench::gate("watchfleet_cpu_per_message_vs_mosquitto_sub", subPer > 0 ? watchPer / subPer : 0);
     Bench::gate("watchfleet_seconds_to_every_link_live", liveS < 0 ? 1e9 : liveS);
+    Bench::gate("watchfleet_seconds_to_99_percent_live", live99S < 0 ? 1e9 : live99S);
     Bench::gate("watchfleet_links_missing_from_metrics", double(links - loaded.links));
     Bench::gate("watchfleet_idle_cpu_percent_after_load", idleAfter);
     if (settleS > 0)
