@@ -16,9 +16,9 @@
 #include <algorithm>
 #include <chrono>
 #include <QAbstractItemModelTester>
-#include <QElapsedTimer>
 #include <QProcess>
 #include <QTest>
+#include <QTimer>
 
 using namespace Qt::StringLiterals;
 
@@ -254,17 +254,18 @@ private slots:
             const auto* n = live.mqttTopics()->topicData().store().topic(u"views/a"_s);
             return n ? n->rate : -1.0;
         };
-        // A sample every 50 ms until the shown session has a rate (its figures: once a second).
+        // A sample every 50 ms (a timer: the pace of the stimulus) until the shown session has a
+        // rate (its figures: once a second).
         int s = 0;
-        QElapsedTimer sending;
-        sending.start();
-        while (rateOf(shown) <= 0 && sending.elapsed() < 20000) {
-            QVERIFY(mqtt.publish(u"views/a"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 0, 0)), 1));
-            QVERIFY(mqtt.publish(u"views/b"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 0, 700)), 1));
+        QTimer pace;
+        QObject::connect(&pace, &QTimer::timeout, &pace, [&] {
+            mqtt.publish(u"views/a"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 0, 0)), 1);
+            mqtt.publish(u"views/b"_s, StampCodec::encodeJson(sampleNs(s), stampNs(s, 0, 700)), 1);
             ++s;
-            QTest::qWait(50); // the pace of the samples, not a wait for a result
-        }
-        QVERIFY(rateOf(shown) > 0);
+        });
+        pace.start(50);
+        QTRY_VERIFY_WITH_TIMEOUT(rateOf(shown) > 0, 20000);
+        pace.stop();
         QTRY_VERIFY_WITH_TIMEOUT(measure.engine().samples() >= s - 1, 20000);
         QVERIFY(rateOf(bare) == 0.0); // the topic is known and counted, its rate not worked out
         QVERIFY(bare.mqttTopics()->topicData().store().topic(u"views/a"_s)->subMessages >= quint64(s - 1));

@@ -157,6 +157,14 @@ public:
     QUrl url() const { return QUrl(u"http://127.0.0.1:%1"_s.arg(serverPort())); }
 };
 
+/// The rows of the flood tests: a FloodServer that announces its length, and an endless one.
+static void floodRows(const char* announced, const char* endless)
+{
+    QTest::addColumn<bool>("endless");
+    QTest::newRow(announced) << false;
+    QTest::newRow(endless) << true;
+}
+
 /// A hostile HTTP server: every request gets a body past any budget, 1 MiB at a time as the client
 /// takes it: `kLength` bytes announced in Content-Length, or (endless) no length and no end.
 /// With `keepAlive`, only the first connection floods, without Connection: close (it reads no second
@@ -662,12 +670,7 @@ private slots:
     /// A server that answers every query of a refresh with more than 32 MiB (announced, or endless):
     /// each answer is refused at its budget, counted, the refresh says so, and this process's
     /// memory stays bounded while the whole refresh is refused.
-    void aHugeOrEndlessAnswerIsRefusedAtItsBudget_data()
-    {
-        QTest::addColumn<bool>("endless");
-        QTest::newRow("48 MiB announced") << false;
-        QTest::newRow("endless") << true;
-    }
+    void aHugeOrEndlessAnswerIsRefusedAtItsBudget_data() { floodRows("48 MiB announced", "endless"); }
     void aHugeOrEndlessAnswerIsRefusedAtItsBudget()
     {
         QFETCH(bool, endless);
@@ -837,9 +840,7 @@ private slots:
     /// second request on it, and the next query is answered at once, not after its time budget.
     void theNextQueryDoesNotWaitOnARefusedAnswersConnection_data()
     {
-        QTest::addColumn<bool>("endless");
-        QTest::newRow("refused by its announced length") << false;
-        QTest::newRow("refused in the middle of its body") << true;
+        floodRows("refused by its announced length", "refused in the middle of its body");
     }
     void theNextQueryDoesNotWaitOnARefusedAnswersConnection()
     {
