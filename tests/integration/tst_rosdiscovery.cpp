@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ROS discovery against a real rosmaster: topics, types, publishers and subscribers of real nodes
 // (rostopic), monitoring through roscpp, and a master that dies and comes back.
+#include "peakrss.h"
 #include "resulttext.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmasterapi.h"
@@ -288,6 +289,42 @@ private slots:
         const int stopped = poller.polls();
         QTest::qWait(400); // a stimulus: the time for three more polls, had it not stopped
         QVERIFY(poller.polls() <= stopped + 1); // at most one already on its way
+    }
+
+    /// A "master" that answers with an endless body: the answer is refused at its bound, said,
+    /// and what this process holds meanwhile stays within it (one array of the answer, read as it
+    /// comes: no array of the whole bound made before each read).
+    void anEndlessMasterAnswerIsRefusedAtItsBound()
+    {
+        QProcess flood;
+        flood.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        flood.start(u"/usr/bin/python3"_s, {u"-c"_s, uR"(import socket, sys
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(1)
+print(s.getsockname()[1], flush=True)
+c, _ = s.accept(); c.recv(65536)
+c.sendall(b"HTTP/1.0 200 OK\r\nContent-Type: text/xml\r\n\r\n")
+chunk = b" " * (1 << 20)
+try:
+    while True: c.sendall(chunk)
+except OSError: pass
+)"_s});
+        QVERIFY(flood.waitForReadyRead(10000));
+        const int port = flood.readLine().trimmed().toInt();
+        QVERIFY(port > 0);
+        QVERIFY(PeakRss::reset());
+        const qint64 before = PeakRss::of();
+        const Result<QByteArray> answer = RosMasterApi(u"http://127.0.0.1:%1/"_s.arg(port))
+                                              .rawAnswer(u"getSystemState"_s, {u"/t"_s}, 60000);
+        const qint64 grew = PeakRss::of() - before;
+        flood.kill();
+        flood.waitForFinished(5000);
+        QVERIFY(!answer);
+        QVERIFY2(answer.error().toString().contains(u"sent more than 256 MiB"_s),
+                 qPrintable(answer.error().toString()));
+        // The answer's array (growing by half again) and the socket's 1-MiB read buffer.
+        const qint64 bound = RosMasterApi::kMaxAnswerBytes * 3 / 2 + (qint64(16) << 20);
+        QVERIFY2(grew < bound + PeakRss::kSanitizerSlack,
+                 qPrintable(u"peak RSS grew by %1 MiB, bound %2 MiB"_s.arg(grew >> 20).arg(bound >> 20)));
     }
 
     void deadMasterIsReportedNotWaitedFor()
