@@ -123,6 +123,10 @@ void PrometheusClient::send(const QString& path, const QList<std::pair<QString, 
         request.setRawHeader("Authorization", m_authorization);
     request.setTransferTimeout(m_timeoutMs);
     QNetworkReply* reply = m_network->post(request, form.query(QUrl::FullyEncoded).toUtf8());
+    // Qt starts a POST's transfer in its next event (where it connects the reply to its network
+    // thread), and a read buffer size set before is never passed there: set it after, queued.
+    QMetaObject::invokeMethod(
+        reply, [reply] { reply->setReadBufferSize(kReadAheadBytes); }, Qt::QueuedConnection);
     m_replies[reply] = Pending {std::move(done), {}};
     // The transfer timeout ends a silent transfer; this one a slow one that trickles.
     QTimer::singleShot(m_timeoutMs, reply, [this, reply] { finish(reply, {}, timedOut()); });

@@ -32,6 +32,11 @@ public:
     /// about 22 MB at 10,000 links (2.2 MB at 1,000, bench_fleetscale), and at most 6 are in flight
     /// at a time (QNetworkAccessManager's connections to one host).
     static constexpr qint64 kMaxInFlightBytes = 2 * kMaxAnswerBytes;
+    /// What Qt's network thread reads of one answer ahead of this client. Without a bound that
+    /// thread reads an answer for as long as its socket has bytes, and does nothing else meanwhile:
+    /// a server that sends faster than it reads kept it there, so a refused reply's abort was never
+    /// handled and its connection read on (43 GB in a minute under ASan) while other queries waited.
+    static constexpr qint64 kReadAheadBytes = 1024 * 1024;
 
     explicit PrometheusClient(QObject* parent = nullptr);
     ~PrometheusClient() override;

@@ -11,6 +11,7 @@
 #include <memory>
 #include <QDateTime>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -284,6 +285,21 @@ qint64 refreshFlooded(FleetSource& source, const FloodServer& server)
     qInfo("%lld MiB sent, at most %lld MiB on one connection; peak RSS grew by %lld MiB",
           server.written >> 20, server.most >> 20, grew >> 20);
     return grew;
+}
+
+/// What a server can send on one connection past what the client read: the kernel's buffers at
+/// their largest (the receive one grows under autotuning), the read-ahead of Qt's network thread
+/// (PrometheusClient::kReadAheadBytes, twice: its buffer and the reply's) and the server's chunk.
+qint64 sentPastWhatWasRead()
+{
+    const auto largest = [](const char* path) {
+        QFile f(QString::fromLatin1(path));
+        const QList<QByteArray> fields
+            = f.open(QIODevice::ReadOnly) ? f.readAll().simplified().split(' ') : QList<QByteArray>();
+        return fields.size() == 3 ? fields[2].toLongLong() : qint64(64) << 20;
+    };
+    return largest("/proc/sys/net/ipv4/tcp_rmem") + largest("/proc/sys/net/ipv4/tcp_wmem")
+        + 2 * PrometheusClient::kReadAheadBytes + FloodServer::kChunk;
 }
 
 PrometheusAnswer ask(PrometheusClient& client)
@@ -699,6 +715,9 @@ private slots:
         if (endless)
             QVERIFY2(server.most >= PrometheusClient::kMaxAnswerBytes,
                      "the budget was reached, not a short read");
+        // A refused answer's connection is closed: the server cannot go on sending on it.
+        QVERIFY2(server.most < PrometheusClient::kMaxAnswerBytes + sentPastWhatWasRead(),
+                 qPrintable(u"%1 MiB sent on one connection"_s.arg(server.most >> 20)));
         QVERIFY2(grew < bound + PeakRss::kSanitizerSlack,
                  qPrintable(u"peak RSS grew by %1 MiB, bound %2 MiB"_s.arg(grew >> 20).arg(bound >> 20)));
     }
@@ -830,6 +849,10 @@ private slots:
                  qPrintable(source.error()));
         QCOMPARE(source.client()->inFlightBytes(), 0);
         QCOMPARE(source.client()->inFlight(), 0);
+        // Refused answers' connections are closed at once, not read on while their abort waits
+        // (Qt's network thread read an endless one at 750 MB/s for a minute, without a read-ahead).
+        QVERIFY2(server.most < kTotal + sentPastWhatWasRead(),
+                 qPrintable(u"%1 MiB sent on one connection"_s.arg(server.most >> 20)));
         // The bodies held: the total budget (a QByteArray grows by half again), and the buffers.
         const qint64 bound = kTotal * 3 / 2 + (qint64(32) << 20);
         QVERIFY2(grew < bound + PeakRss::kSanitizerSlack,
