@@ -220,32 +220,28 @@ QHash<QString, FleetHost> hostsOf(const QHash<QString, PrometheusAnswer>& answer
     return hosts;
 }
 
-/// The links: every link of a reporting host that its watch serves now (both sides of each are in
-/// `rate`: a watch exports every link's rate, 0 too); a silent host's last ones (`links`).
+/// The links: every link of a reporting host that its watch serves now; a silent host's last ones.
 void linksOf(const QHash<QString, PrometheusAnswer>& answers, QHash<QString, FleetHost>& hosts, double now,
              LinkTable* table)
 {
-    const QList<PrometheusAnswer::Series> served = answers.value(u"rate"_s).series;
-    std::vector<int> servedIds;
-    servedIds.reserve(size_t(served.size()));
+    const QList<PrometheusAnswer::Series> state = answers.value(u"state"_s).series;
     std::vector<char> current;
-    for (const PrometheusAnswer::Series& s : served) {
-        const int id = table->index.id(LinkLabels(s), true);
-        servedIds.push_back(id);
-        current.resize(std::max(current.size(), size_t(id) + 1));
-        current[size_t(id)] = 1;
+    for (const PrometheusAnswer::Series& s : state) {
+        const size_t id = size_t(table->index.id(LinkLabels(s), true));
+        current.resize(std::max(current.size(), id + 1));
+        current[id] = 1;
     }
     std::vector<int>& rowOf = table->rowOf;
     // `links` holds the hour's links of the hosts not reporting (all of them, from an older
-    // server's answer), `rate` those served now.
+    // server's answer), `state` those served now.
     const QList<PrometheusAnswer::Series> hour = answers.value(u"links"_s).series;
-    for (const QList<PrometheusAnswer::Series>* named : {&hour, &served}) {
-        for (qsizetype i = 0; i < named->size(); ++i) {
-            const LinkLabels labels((*named)[i]);
+    for (const QList<PrometheusAnswer::Series>* named : {&hour, &state}) {
+        for (const PrometheusAnswer::Series& s : *named) {
+            const LinkLabels labels(s);
             const QString& host = labels[LinkLabels::Host];
             if (host.isEmpty() || labels[LinkLabels::Link].isEmpty())
                 continue;
-            const size_t id = size_t(named == &served ? servedIds[size_t(i)] : table->index.id(labels, true));
+            const size_t id = size_t(table->index.id(labels, true));
             current.resize(std::max(current.size(), id + 1));
             rowOf.resize(current.size(), -1);
             auto h = hosts.find(host);
@@ -308,11 +304,10 @@ QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
     };
     // A link's series that says only what its absence says is not asked for: a loss or stall
     // count where it is above 0 (build() takes any other as 0, NaN too), a quantile where it is a
-    // number (NaN otherwise), `seen` where it is 0 (a link is seen otherwise), the watch's own
-    // state where it is not ok (0 otherwise: the view judges each link itself and lists the links
-    // served now from `rate`). A healthy fleet's losses, stalls, states and blind links are then
-    // empty answers, and so are the quantiles of links without stamps, not one series a link each.
-    // The per-side answers stay whole: both sides of a working link count.
+    // number (NaN otherwise), `seen` where it is 0 (a link is seen otherwise). A healthy fleet's
+    // losses, stalls and blind links are then empty answers, and so are the quantiles of links
+    // without stamps, not one series a link each. The per-side answers stay whole: both sides of
+    // a working link count.
     const QString quantile = u"1000 * histogram_quantile(%1, sum by (host, bridge, link, direction, le) "
                              "(rate(bridgescope_link_latency_seconds_bucket[1m]))) >= 0"_s;
     const auto above0 = [&](const QString& labels, const QString& expr) -> QString {
@@ -323,8 +318,7 @@ QList<std::pair<QString, QString>> FleetSnapshotBuilder::queries()
         {u"links"_s,
          by(u"max"_s, perLink, u"last_over_time(bridgescope_link_state[1h])"_s)
              + u" unless on (host) bridgescope_watch_info"_s},
-        // The watch's own verdict where it is not ok (the links served now are those of `rate`).
-        {u"state"_s, by(u"max"_s, perLink, u"bridgescope_link_state"_s) + u" > 0"_s},
+        {u"state"_s, by(u"max"_s, perLink, u"bridgescope_link_state"_s)},
         {u"seen"_s, by(u"min"_s, perLink, u"bridgescope_link_seen"_s) + u" == 0"_s},
         {u"rate"_s, by(u"sum"_s, perSide, u"bridgescope_link_rate_hz"_s)},
         {u"messages"_s, by(u"sum"_s, perSide, u"bridgescope_link_messages_total"_s)},
@@ -417,7 +411,7 @@ FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>
         lf.latencyP99Ms = f.p99;
         if (std::isfinite(f.p99))
             lf.latencySource = LatencySource::Stamps;
-        l.reportedState = f.state >= 0 ? f.state : (l.hostReporting ? 0 : -1); // served: 0 unless asked
+        l.reportedState = f.state;
         if (!l.hostReporting) {
             l.verdict.unknown = true;
             l.verdict.detail = stoppedText(hosts.value(l.host).lastSeen);

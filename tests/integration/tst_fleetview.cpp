@@ -135,31 +135,18 @@ private slots:
                      qPrintable(QString::number(l->figures.source.rateHz)));
         }
         // Issue 44, point 5: the hour's links are asked only of hosts not reporting; the links of
-        // the others come from their sides' rates, and the answers carry only the labels the view
-        // reads. The watch's own state is asked only where it is not ok.
+        // the others come from their state, and the answers carry only the labels the view reads.
         const PrometheusAnswer hour = answerTo(m_source, u"links"_s);
         QVERIFY2(hour.ok(), qPrintable(hour.error));
         QCOMPARE(hostsOf(hour), QStringList());
-        const PrometheusAnswer rate = answerTo(m_source, u"rate"_s);
-        // Two links, two sides each.
-        QCOMPARE(hostsOf(rate), (QStringList {u"edge-1"_s, u"edge-1"_s, u"vehicle-1"_s, u"vehicle-1"_s}));
         const PrometheusAnswer state = answerTo(m_source, u"state"_s);
-        QVERIFY2(state.ok(), qPrintable(state.error));
-        const auto labelNames = [](const PrometheusAnswer::Series& series) {
+        QCOMPARE(hostsOf(state), (QStringList {u"edge-1"_s, u"vehicle-1"_s}));
+        for (const PrometheusAnswer::Series& series : state.series) {
             QStringList names;
             for (const auto& [name, value] : series.labels)
                 names << name;
             names.sort();
-            return names;
-        };
-        for (const PrometheusAnswer::Series& series : rate.series)
-            QCOMPARE(labelNames(series),
-                     (QStringList {u"bridge"_s, u"direction"_s, u"host"_s, u"link"_s, u"side"_s}));
-        for (const PrometheusAnswer::Series& series : state.series) {
-            QCOMPARE(labelNames(series), (QStringList {u"bridge"_s, u"direction"_s, u"host"_s, u"link"_s}));
-            QVERIFY(series.points.constLast().value > 0);
-            QCOMPARE(double(linkOf(s, series.label(u"host"_s))->reportedState),
-                     series.points.constLast().value);
+            QCOMPARE(names, (QStringList {u"bridge"_s, u"direction"_s, u"host"_s, u"link"_s}));
         }
         // The p99 from the histograms, in the bucket the backdates put it: 3 s in (2.5, 5], 6 s in (5, 10].
         const double vehicleP99 = linkOf(s, u"vehicle-1"_s)->figures.latencyP99Ms;

@@ -69,9 +69,9 @@ QHash<QString, PrometheusAnswer> twoHosts(PrometheusLabelPool* pool = nullptr)
     const auto vector
         = [pool](const QList<std::pair<Labels, QString>>& series) { return ::vector(series, 1000, pool); };
     const QStringList names {u"/x → x"_s, u"/s → s"_s, u"/l → l"_s, u"/p → p"_s};
-    QList<std::pair<Labels, QString>> links, rate, messages, recent, lost, recentLost, seen;
+    QList<std::pair<Labels, QString>> state, rate, messages, recent, lost, recentLost, seen;
     for (const QString& n : names) {
-        links.append({link(u"a"_s, n), u"0"_s});
+        state.append({link(u"a"_s, n), u"0"_s});
         seen.append({link(u"a"_s, n), u"1"_s});
         rate.append({link(u"a"_s, n, u"source"_s), u"10"_s});
         rate.append({link(u"a"_s, n, u"destination"_s), n.startsWith(u"/s"_s) ? u"0"_s : u"10"_s});
@@ -82,10 +82,11 @@ QHash<QString, PrometheusAnswer> twoHosts(PrometheusLabelPool* pool = nullptr)
         lost.append({link(u"a"_s, n), u"100"_s});
         recentLost.append({link(u"a"_s, n), n.startsWith(u"/l"_s) ? u"60"_s : u"0"_s});
     }
+    QList<std::pair<Labels, QString>> links = state;
     links.append({link(u"b"_s, u"/y → y"_s), u"0"_s});
     QHash<QString, PrometheusAnswer> a;
     a[u"links"_s] = vector(links);
-    a[u"state"_s] = vector({{link(u"a"_s, u"/s → s"_s), u"2"_s}}); // the watch's own, where not ok
+    a[u"state"_s] = vector(state);
     a[u"seen"_s] = vector(seen);
     a[u"rate"_s] = vector(rate);
     a[u"messages"_s] = vector(messages);
@@ -519,13 +520,6 @@ private slots:
         QCOMPARE(x->verdict.level, LinkLevel::Ok);
         QVERIFY(!x->verdict.unknown);
         QCOMPARE(x->def.rosTopic, u"/x"_s);
-        // Listed as served by its sides' rates; the watch's own state is asked only where not ok.
-        QCOMPARE(x->reportedState, 0);
-        QCOMPARE(find(s, u"a"_s, u"/s → s"_s)->reportedState, 2);
-        QCOMPARE(find(s, u"b"_s, u"/y → y"_s)->reportedState, -1);
-        for (const auto& [name, promql] : FleetSnapshotBuilder::queries())
-            if (name == "state"_L1)
-                QVERIFY2(promql.endsWith(u" > 0"_s), qPrintable(promql));
 
         const FleetLink* st = find(s, u"a"_s, u"/s → s"_s);
         QCOMPARE(st->verdict.level, LinkLevel::Alert);
@@ -563,8 +557,7 @@ private slots:
         FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
         // Host a's series are gone now (its watch stopped), and the server forgot the hour.
         answers[u"info"_s] = vector({});
-        for (const QString& query : {u"state"_s, u"rate"_s, u"recent"_s, u"messages"_s, u"seen"_s})
-            answers[query] = vector({});
+        answers[u"state"_s] = vector({});
         answers[u"lastSeen"_s] = vector({});
         const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1060, &seen);
         QCOMPARE(s.hosts.size(), 2);
@@ -582,10 +575,7 @@ private slots:
     {
         QHash<QString, double> seen;
         QHash<QString, PrometheusAnswer> answers = twoHosts();
-        // The watch serves only /x now: the others' series are gone from every answer.
-        answers[u"state"_s] = vector({});
-        answers[u"rate"_s] = vector({{link(u"a"_s, u"/x → x"_s, u"source"_s), u"10"_s},
-                                     {link(u"a"_s, u"/x → x"_s, u"destination"_s), u"10"_s}});
+        answers[u"state"_s] = vector({{link(u"a"_s, u"/x → x"_s), u"0"_s}});
         answers[u"bridges"_s] = vector({{{{u"host"_s, u"a"_s}, {u"bridge"_s, u"bridge1"_s}}, u"0"_s}});
         const FleetSnapshot s = FleetSnapshotBuilder::build(answers, WatchRules(), 1000, &seen);
         QCOMPARE(s.links.size(), 2); // a's /x and b's /y
@@ -745,7 +735,7 @@ private slots:
                     return l.second;
             Q_UNREACHABLE();
         };
-        QVERIFY2(linkOf(u"lost"_s).constData() == linkOf(u"rate"_s).constData(),
+        QVERIFY2(linkOf(u"state"_s).constData() == linkOf(u"rate"_s).constData(),
                  "the answers share the link's string");
         QHash<QString, double> seen, seenPooled;
         const FleetSnapshot separate = FleetSnapshotBuilder::build(twoHosts(), WatchRules(), 1000, &seen);
