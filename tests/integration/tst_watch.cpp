@@ -593,14 +593,21 @@ private slots:
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly) && f.write(config.toUtf8()) > 0);
         f.close();
+        // The storm is of stopped sources: no stall may start while the test still publishes to
+        // make every source heard, however long that takes on a loaded machine (the default, five
+        // periods of the source, is a second here; CI once saw 602 stalls instead of the storm).
+        const QString rules = m_servers.tempPath() + u"/storm-rules.yaml"_s;
+        QFile r(rules);
+        QVERIFY(r.open(QIODevice::WriteOnly) && r.write("defaults:\n  stall_seconds: 600\n") > 0);
+        r.close();
         const quint16 port = TestServers::freePort();
         const QString jsonl = m_servers.tempPath() + u"/storm.jsonl"_s;
         QProcess watch;
         watch.setProcessEnvironment(m_servers.rosEnvironment());
         watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
         watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
-                    {u"watch"_s, path, u"--ros-master"_s, m_servers.rosMasterUri(), u"--metrics"_s,
-                     u"127.0.0.1:%1"_s.arg(port), u"--events-jsonl"_s, jsonl});
+                    {u"watch"_s, path, u"--ros-master"_s, m_servers.rosMasterUri(), u"--rules"_s, rules,
+                     u"--metrics"_s, u"127.0.0.1:%1"_s.arg(port), u"--events-jsonl"_s, jsonl});
         QVERIFY(watch.waitForStarted(5000));
         QVERIFY(TestServers::waitForPort(port, 10000));
         // Every source is heard (the watch's subscriptions are up), then all fall silent at once:
