@@ -66,13 +66,33 @@ size_t qHash(const LabelData& d, size_t seed = 0)
 }
 
 /// One id for each link (host, bridge, link, direction) a refresh's answers name. A series finds
-/// its id by the data of its label strings, shared across the answers: the text of its labels is
-/// only built and hashed the first time a string is met (once per refresh for a link, with one
-/// pool), not for every series of every answer.
+/// its id by the data of its list of labels, shared by the series of the same metric object in
+/// every answer (PrometheusLabelPool), else by the data of its label strings, shared across the
+/// answers: the text of its labels is only built and hashed the first time a string is met (once
+/// per refresh for a link, with one pool), not for every series of every answer.
 class LinkIndex
 {
 public:
-    /// The id of the link `l` names; a new one when `add`, else -1 for a link not met yet.
+    struct Entry
+    {
+        int id = -1; ///< -1: a link not met yet
+        bool source = true; ///< the series is not of the destination side
+    };
+    /// The link the series `s` names; a new id when `add`, else -1 for a link not met yet.
+    Entry of(const PrometheusAnswer::Series& s, bool add)
+    {
+        const void* list = s.labels.constData();
+        if (const auto it = m_byList.constFind(list); it != m_byList.cend())
+            return *it;
+        const LinkLabels l(s);
+        const Entry e {id(l, add), l[LinkLabels::Side] != "destination"_L1};
+        if (e.id >= 0)
+            m_byList.insert(list, e); // the lists live as long as the answers, past build()'s use
+        return e;
+    }
+    int size() const { return int(m_byKey.size()); }
+
+private:
     int id(const LinkLabels& l, bool add)
     {
         const LabelData data(l);
@@ -88,9 +108,8 @@ public:
         m_byData.insert(data, *it); // the strings live as long as the answers, past build()'s use
         return *it;
     }
-    int size() const { return int(m_byKey.size()); }
 
-private:
+    QHash<const void*, Entry> m_byList;
     QHash<LabelData, int> m_byData;
     QHash<QString, int> m_byKey;
 };
@@ -139,11 +158,12 @@ struct LinkTable
     std::vector<int> rowOf;
     std::vector<Figures> figures; ///< by row
 
-    /// The row of the link a series names, -1 when it is not listed.
-    int row(const LinkLabels& l)
+    /// The row of the link a series names, -1 when it is not listed; `source`: of its source side.
+    int row(const PrometheusAnswer::Series& s, bool* source)
     {
-        const int id = index.id(l, false);
-        return id >= 0 && id < int(rowOf.size()) ? rowOf[size_t(id)] : -1;
+        const LinkIndex::Entry e = index.of(s, false);
+        *source = e.source;
+        return e.id >= 0 && e.id < int(rowOf.size()) ? rowOf[size_t(e.id)] : -1;
     }
 };
 
@@ -156,9 +176,9 @@ void collect(const QHash<QString, PrometheusAnswer>& answers, const QString& nam
     if (answer == answers.cend())
         return;
     for (const PrometheusAnswer::Series& s : answer->series) {
-        const LinkLabels l(s);
-        if (const int row = table->row(l); row >= 0)
-            set(table->figures[size_t(row)], l[LinkLabels::Side] != "destination"_L1, valueOf(s));
+        bool source = true;
+        if (const int row = table->row(s, &source); row >= 0)
+            set(table->figures[size_t(row)], source, valueOf(s));
     }
 }
 
@@ -227,7 +247,7 @@ void linksOf(const QHash<QString, PrometheusAnswer>& answers, QHash<QString, Fle
     const QList<PrometheusAnswer::Series> state = answers.value(u"state"_s).series;
     std::vector<char> current;
     for (const PrometheusAnswer::Series& s : state) {
-        const size_t id = size_t(table->index.id(LinkLabels(s), true));
+        const size_t id = size_t(table->index.of(s, true).id);
         current.resize(std::max(current.size(), id + 1));
         current[id] = 1;
     }
@@ -241,7 +261,7 @@ void linksOf(const QHash<QString, PrometheusAnswer>& answers, QHash<QString, Fle
             const QString& host = labels[LinkLabels::Host];
             if (host.isEmpty() || labels[LinkLabels::Link].isEmpty())
                 continue;
-            const size_t id = size_t(table->index.id(labels, true));
+            const size_t id = size_t(table->index.of(s, true).id);
             current.resize(std::max(current.size(), id + 1));
             rowOf.resize(current.size(), -1);
             auto h = hosts.find(host);
@@ -423,7 +443,7 @@ FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>
             continue;
         }
         l.verdict = judge(rules.forLink(l.def.key()), l, f);
-        if (bridgeDown.contains(l.host + u'|' + l.bridge)) {
+        if (!bridgeDown.isEmpty() && bridgeDown.contains(l.host + u'|' + l.bridge)) {
             l.bridgeDown = true;
             l.verdict.level = LinkLevel::Alert;
             l.verdict.reasons.prepend(LinkReason::BridgeDown);
@@ -433,8 +453,15 @@ FleetSnapshot FleetSnapshotBuilder::build(const QHash<QString, PrometheusAnswer>
 
     snap.links = std::move(links);
     std::sort(snap.links.begin(), snap.links.end(), [](const FleetLink& a, const FleetLink& b) {
-        return std::tie(a.host, a.bridge, a.link, a.direction)
-            < std::tie(b.host, b.bridge, b.link, b.direction);
+        // The links of a host share its strings (one pool): the same data is the same text.
+        for (const auto& [x, y] : {std::tie(a.host, b.host), std::tie(a.bridge, b.bridge),
+                                   std::tie(a.link, b.link), std::tie(a.direction, b.direction)}) {
+            if (x.constData() == y.constData() && x.size() == y.size())
+                continue;
+            if (const int c = x.compare(y); c != 0)
+                return c < 0;
+        }
+        return false;
     });
     snap.hosts = hosts.values();
     std::sort(snap.hosts.begin(), snap.hosts.end(),

@@ -71,6 +71,7 @@ public:
 
     bool read(PrometheusAnswer* out)
     {
+        m_labels->startAnswer();
         bool success = false, data = false;
         if (!eat('{'))
             return false;
@@ -159,8 +160,19 @@ private:
             if ((i = digits(i)) < 0)
                 return false;
         }
+        if (i != text.size())
+            return false;
+        if (const qsizetype sign = text.startsWith('-') ? 1 : 0;
+            i - sign <= 15 && !text.contains('.') && !text.contains('e') && !text.contains('E')) {
+            // A whole number of at most 15 digits is exact as a double: most counts and states.
+            qint64 whole = 0;
+            for (qsizetype d = sign; d < i; ++d)
+                whole = whole * 10 + (text[d] - '0');
+            *out = sign ? -double(whole) : double(whole);
+            return true;
+        }
         bool ok = false;
-        *out = i == text.size() ? text.toDouble(&ok) : 0;
+        *out = text.toDouble(&ok);
         return ok && std::isfinite(*out);
     }
     /// [time, "value"], as readPoint() takes it.
@@ -170,15 +182,69 @@ private:
         const char* start = m_p;
         while (m_p < m_end && *m_p != ',' && *m_p != ']' && *m_p != ' ')
             ++m_p;
+        // The samples of an instant query share their time: read once.
+        const QByteArrayView time(start, m_p - start);
+        if (time.isEmpty() || time != m_lastTime) {
+            if (!number(time, &m_lastTimeValue)) {
+                m_lastTime = {};
+                return false;
+            }
+            m_lastTime = time;
+        }
+        out->time = m_lastTimeValue;
         QByteArrayView value;
-        if (!number(QByteArrayView(start, m_p - start), &out->time) || !eat(',') || !rawString(&value)
-            || !eat(']'))
+        if (!eat(',') || !rawString(&value) || !eat(']'))
             return false;
         if (value == "NaN" || value == "+Inf" || value == "Inf" || value == "-Inf")
             return PrometheusAnswer::readValue(QString::fromLatin1(value), &out->value);
         return value.size() <= 64 && number(value, &out->value);
     }
+    /// Past a metric object of strings without escapes, from its '{' to its '}': false, and
+    /// nowhere in particular, for anything else.
+    bool skipObject()
+    {
+        if (!eat('{'))
+            return false;
+        for (; m_p < m_end; ++m_p) {
+            const char c = *m_p;
+            if (c == '}') {
+                ++m_p;
+                return true;
+            }
+            if (c == '{' || c == '[')
+                return false;
+            if (c == '"') {
+                while (++m_p < m_end && *m_p != '"')
+                    if (*m_p == '\\' || static_cast<unsigned char>(*m_p) < 0x20)
+                        return false;
+                if (m_p == m_end)
+                    return false;
+            }
+        }
+        return false;
+    }
+    /// The labels of a metric object: those of an object of the same bytes read before (the
+    /// pool's), else read label by label and kept in the pool.
     bool labels(QList<PrometheusAnswer::Label>* out)
+    {
+        space();
+        const char* start = m_p;
+        QByteArrayView raw;
+        if (skipObject()) {
+            raw = QByteArrayView(start, m_p - start);
+            if (const QList<PrometheusAnswer::Label>* known = m_labels->labels(raw)) {
+                *out = *known;
+                return true;
+            }
+        }
+        m_p = start;
+        if (!readLabels(out))
+            return false;
+        if (!raw.isNull())
+            m_labels->keep(raw, *out);
+        return true;
+    }
+    bool readLabels(QList<PrometheusAnswer::Label>* out)
     {
         if (!eat('{'))
             return false;
@@ -279,25 +345,66 @@ private:
 
     const char* m_p;
     const char* m_end;
+    QByteArrayView m_lastTime; ///< the bytes of the last time read, in the answer
+    double m_lastTimeValue = 0;
     PrometheusLabelPool m_own;
     PrometheusLabelPool* m_labels;
 };
 } // namespace
 
+void PrometheusLabelPool::reserve(qsizetype bytes)
+{
+    if (m_total + bytes > kMaxBytes) {
+        m_strings.clear();
+        m_bytes.clear();
+        m_byRaw.clear();
+        m_lists.clear();
+        m_cursor = nullptr;
+        m_total = 0;
+    }
+    m_total += bytes;
+}
+
 QString PrometheusLabelPool::intern(QByteArrayView utf8)
 {
     if (const auto it = m_strings.constFind(utf8); it != m_strings.cend())
         return *it;
-    if (m_total + utf8.size() > kMaxBytes) {
-        m_strings.clear();
-        m_bytes.clear();
-        m_total = 0;
-    }
+    reserve(utf8.size());
     m_bytes.append(utf8.toByteArray());
-    m_total += utf8.size();
     const QString text = QString::fromUtf8(utf8);
     m_strings.insert(QByteArrayView(m_bytes.constLast()), text);
     return text;
+}
+
+const QList<PrometheusLabel>* PrometheusLabelPool::met(Known* known)
+{
+    if (m_cursor)
+        m_cursor->next = known;
+    m_cursor = known;
+    return &known->labels;
+}
+
+const QList<PrometheusLabel>* PrometheusLabelPool::labels(QByteArrayView raw)
+{
+    if (m_cursor && m_cursor->next && m_cursor->next->raw == raw) {
+        ++m_followed;
+        m_cursor = m_cursor->next;
+        return &m_cursor->labels;
+    }
+    const auto it = m_byRaw.constFind(raw);
+    return it == m_byRaw.cend() ? nullptr : met(*it);
+}
+
+void PrometheusLabelPool::keep(QByteArrayView raw, const QList<PrometheusLabel>& labels)
+{
+    // The list's strings are the pool's own (intern()), or else its own: counted with the list.
+    qsizetype bytes = raw.size() + kListBytes;
+    for (const PrometheusLabel& l : labels)
+        bytes += 2 * (l.first.size() + l.second.size());
+    reserve(bytes);
+    Known& known = m_lists.emplace_back(Known {raw.toByteArray(), labels});
+    m_byRaw.insert(QByteArrayView(known.raw), &known);
+    met(&known);
 }
 
 bool PrometheusAnswer::readValue(const QString& text, double* out)

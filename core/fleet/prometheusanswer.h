@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <deque>
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QCoreApplication>
@@ -10,21 +11,55 @@
 #include <QStringList>
 #include <utility>
 
+/// A label of a series: its name and its value.
+using PrometheusLabel = std::pair<QString, QString>;
+
 /// The label strings of the answers read with it, each text made once: the fleet view's answers of
 /// one refresh name the same links, so their series share one string for each label value, and a
 /// series finds its link by the strings' data (FleetSnapshotBuilder) without hashing their text.
+/// The labels of a whole metric object (`{"host":"a",…}`) are kept by its bytes too: a series
+/// whose object was met before, in this answer or an earlier one, shares that list of labels (the
+/// same data) and is not read label by label again. Prometheus gives the series of its answers in
+/// the order of their labels, the same for every answer of a kind: the object met after another
+/// last time is tried first, by its bytes alone, before the hash of all objects.
 /// Bounded: past kMaxBytes of text it starts again empty (a hostile server's ever new labels).
 class PrometheusLabelPool
 {
 public:
     static constexpr qsizetype kMaxBytes = 16 * 1024 * 1024;
+    /// What a list of labels costs the pool beside its object's bytes: a few of its own pointers.
+    static constexpr qsizetype kListBytes = 128;
     /// The string of `utf8` (valid UTF-8), the same one each time while the pool holds it.
     QString intern(QByteArrayView utf8);
+    /// An answer begins: no object was met before its first.
+    void startAnswer() { m_cursor = nullptr; }
+    /// The labels read from the metric object `raw` before (its bytes from '{' to '}'), or null.
+    const QList<PrometheusLabel>* labels(QByteArrayView raw);
+    /// Keeps `labels`, read from the metric object `raw`, for the next object of the same bytes.
+    void keep(QByteArrayView raw, const QList<PrometheusLabel>& labels);
     qsizetype size() const { return m_strings.size(); }
+    qsizetype lists() const { return qsizetype(m_lists.size()); }
+    /// Objects found as the one that followed the object before them last time (no hash).
+    quint64 followed() const { return m_followed; }
 
 private:
+    struct Known
+    {
+        QByteArray raw;
+        QList<PrometheusLabel> labels;
+        Known* next = nullptr; ///< the object met after this one last time
+    };
+    /// Empties the pool when `bytes` more would pass kMaxBytes, then counts them.
+    void reserve(qsizetype bytes);
+    /// `known` was met now: after the object before it, and before the next.
+    const QList<PrometheusLabel>* met(Known* known);
+
     QHash<QByteArrayView, QString> m_strings; ///< viewing the bytes kept in m_bytes
     QList<QByteArray> m_bytes; ///< their data never moves (a QByteArray moves only its handle)
+    std::deque<Known> m_lists; ///< never moved while kept (a deque keeps its elements in place)
+    QHash<QByteArrayView, Known*> m_byRaw; ///< viewing their raw bytes
+    Known* m_cursor = nullptr; ///< the object met last in this answer
+    quint64 m_followed = 0;
     qsizetype m_total = 0;
 };
 
@@ -53,7 +88,7 @@ public:
         double time = 0; ///< seconds since the epoch
         double value = 0; ///< may be NaN or ±Inf (Prometheus writes them as "NaN", "+Inf")
     };
-    using Label = std::pair<QString, QString>; ///< a name and its value
+    using Label = PrometheusLabel;
     struct Series
     {
         /// In name order: a few a series (the fleet's queries aggregate to the labels

@@ -6,7 +6,8 @@
 // kMaxSeries series, kMaxPoints points and kMaxLabels labels a series, each label within its bound;
 // every time a finite number; the counts of what was dropped or skipped never negative; what the
 // direct reader of the usual form takes (readUsual) is what the JSON document's reader gives
-// (readGeneral), series by series, label by label, point by point.
+// (readGeneral), series by series, label by label, point by point, and so is what it takes with a
+// label pool that met the same metric objects before.
 #include "fleet/prometheusanswer.h"
 #include "fuzzcheck.h"
 
@@ -44,8 +45,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QByteArray bytes = fuzz::bytes(data, size);
     const PrometheusAnswer a = PrometheusAnswer::read(bytes);
     PrometheusAnswer usual;
-    if (PrometheusAnswer::readUsual(bytes, &usual))
+    if (PrometheusAnswer::readUsual(bytes, &usual)) {
         FUZZ_CHECK(sameAnswer(usual, PrometheusAnswer::readGeneral(bytes)), "the two readers disagree");
+        // Read twice with one pool, the second time from the metric objects it keeps.
+        PrometheusLabelPool pool;
+        for (int time = 0; time < 2; ++time) {
+            PrometheusAnswer pooled;
+            FUZZ_CHECK(PrometheusAnswer::readUsual(bytes, &pooled, &pool), "the pool changed the form");
+            FUZZ_CHECK(sameAnswer(pooled, usual), "the pool changed the answer");
+        }
+    }
     FUZZ_CHECK(a.droppedSeries >= 0 && a.droppedPoints >= 0 && a.badSamples >= 0, "a negative count");
     if (!a.ok()) {
         FUZZ_CHECK(a.series.isEmpty(), "a refused answer with series");

@@ -386,6 +386,28 @@ private slots:
         QTest::newRow("error") << j("{'status':'error','errorType':'bad_data','error':'x'}") << false;
         QTest::newRow("garbage after") << QByteArray(vectorOf("") + " x") << false;
         QTest::newRow("not UTF-8") << vectorOf("{'metric':{'a':'\xff'},'value':[1,'1']}") << false;
+        // Stop 57: whole numbers are read without the general conversion, and a time like the one
+        // before is not read again; the results stay the document's.
+        QTest::newRow("numbers") << vectorOf(
+            "{'metric':{},'value':[1,'0']},{'metric':{},'value':[1,'-12']},"
+            "{'metric':{},'value':[1.5,'123456789012345']},"
+            "{'metric':{},'value':[1.5,'1234567890123456789']},"
+            "{'metric':{},'value':[1,'-0']},{'metric':{},'value':[-2,'0.1']},"
+            "{'metric':{},'value':[1e3,'1E2']},{'metric':{},'value':[1e3,'7']}")
+                                 << true;
+        QTest::newRow("leading zero")
+            << vectorOf("{'metric':{},'value':[1,'1']},{'metric':{},'value':[1,'01']}") << false;
+        QTest::newRow("a time like the last one") << vectorOf("{'metric':{},'value':[1,'1']},{'metric':{},"
+                                                              "'value':[01,'1']}")
+                                                  << false;
+        // Stop 57: an object met again shares its labels; the same labels written otherwise are read.
+        QTest::newRow("objects met again") << vectorOf(
+            "{'metric':{'b':'2','a':'1'},'value':[1,'1']},{'metric':{'b':'2','a':'1'},'value':[1,'2']},"
+            "{'metric':{ 'b':'2','a':'1'},'value':[1,'3']},{'metric':{'a':'1'},'value':[1,'4']}")
+                                           << true;
+        QTest::newRow("an object met again, then a duplicate")
+            << vectorOf("{'metric':{'a':'1'},'value':[1,'1']},{'metric':{'a':'1','a':'1'},'value':[1,'2']}")
+            << false;
     }
 
     void theUsualFormIsReadAsTheGeneralReaderReadsIt()
@@ -413,6 +435,61 @@ private slots:
         QCOMPARE(print(read), print(general));
         if (usual)
             QCOMPARE(print(fast), print(general));
+        // With a pool, read twice: the second time every metric object is one met before.
+        PrometheusLabelPool pool;
+        for (int time = 0; time < 2; ++time) {
+            PrometheusAnswer pooled;
+            QCOMPARE(PrometheusAnswer::readUsual(json, &pooled, &pool), usual);
+            if (usual)
+                QCOMPARE(print(pooled), print(general));
+            QCOMPARE(print(PrometheusAnswer::read(json, &pool)), print(general));
+        }
+    }
+
+    /// Stop 57: the series of one metric object share one list of labels, within an answer and
+    /// across the answers read with one pool; objects of other bytes have their own.
+    void aMetricObjectMetAgainSharesItsLabels()
+    {
+        PrometheusLabelPool pool;
+        const Labels labels = link(u"a"_s, u"/x → x"_s, u"source"_s);
+        const PrometheusAnswer first = vector({{labels, u"1"_s}, {labels, u"2"_s}}, 1000, &pool);
+        const PrometheusAnswer second
+            = vector({{labels, u"3"_s}, {link(u"b"_s, u"/x → x"_s), u"4"_s}}, 1000, &pool);
+        QCOMPARE(first.series.size(), 2);
+        QCOMPARE(second.series.size(), 2);
+        QVERIFY(first.series[0].labels.constData() == first.series[1].labels.constData());
+        QVERIFY(first.series[0].labels.constData() == second.series[0].labels.constData());
+        QVERIFY(first.series[0].labels.constData() != second.series[1].labels.constData());
+        QCOMPARE(second.series[0].label(u"side"_s), u"source"_s);
+        QCOMPARE(second.series[1].label(u"host"_s), u"b"_s);
+        QCOMPARE(pool.lists(), 2);
+        // Met again in the same order, each object after the first is the one that followed the
+        // object before it last time; in another order, the hash finds the right ones.
+        PrometheusLabelPool ordered;
+        const QList<std::pair<Labels, QString>> three {{link(u"a"_s, u"/x → x"_s), u"1"_s},
+                                                       {link(u"a"_s, u"/y → y"_s), u"2"_s},
+                                                       {link(u"a"_s, u"/z → z"_s), u"3"_s}};
+        vector(three, 1000, &ordered);
+        const quint64 followed = ordered.followed();
+        const PrometheusAnswer again = vector(three, 1000, &ordered);
+        QCOMPARE(ordered.followed() - followed, quint64(2));
+        QCOMPARE(again.series[2].label(u"link"_s), u"/z → z"_s);
+        const PrometheusAnswer reordered = vector({three[2], three[0], three[1]}, 1000, &ordered);
+        QCOMPARE(reordered.series[0].label(u"link"_s), u"/z → z"_s);
+        QCOMPARE(reordered.series[1].label(u"link"_s), u"/x → x"_s);
+        QCOMPARE(reordered.series[2].label(u"link"_s), u"/y → y"_s);
+        QCOMPARE(ordered.lists(), 3);
+        // Bounded with its strings: ever new objects never hold more than kMaxBytes.
+        const QByteArray big(PrometheusAnswer::kMaxTextChars - 16, 'x');
+        qsizetype most = 0;
+        for (int i = 0; i * big.size() <= 2 * PrometheusLabelPool::kMaxBytes; ++i) {
+            const QByteArray json = "{\"status\":\"success\",\"data\":{\"resultType\":\"vector\",\"result\":"
+                                    "[{\"metric\":{\"a\":\""
+                + QByteArray::number(i) + big + "\"},\"value\":[1,\"1\"]}]}}";
+            QVERIFY(PrometheusAnswer::read(json, &pool).series.size() == 1);
+            most = std::max(most, pool.lists());
+        }
+        QVERIFY2(most * 2 * big.size() <= PrometheusLabelPool::kMaxBytes, qPrintable(QString::number(most)));
     }
 
     void hostileAnswersAreCountedNotTrusted_data()
