@@ -28,6 +28,7 @@ gate() {
         "bench_ros2bridge      BENCH_COUNT=40 BENCH_LARGE=1"
         "bench_pages           BENCH_WARMUP_S=10 BENCH_SECONDS=8"
         "bench_startup         BENCH_RUNS=3"
+        "bench_fleetrefresh    BENCH_LINKS=10000 BENCH_RUNS=5"
     )
     local targets=()
     for r in "${runs[@]}"; do targets+=("${r%% *}"); done
