@@ -146,11 +146,13 @@ private:
                 ++i;
             return i > from ? i : -1;
         };
-        qsizetype i = text.startsWith('-') ? 1 : 0;
+        const qsizetype sign = text.startsWith('-') ? 1 : 0;
+        qsizetype i = sign;
         if (i + 1 < text.size() && text[i] == '0' && text[i + 1] >= '0' && text[i + 1] <= '9')
             return false; // JSON has no leading zeros: the document refuses "08", so must this
         if ((i = digits(i)) < 0)
             return false;
+        const qsizetype wholeEnd = i; // where the integer part ends
         if (i < text.size() && text[i] == '.' && (i = digits(i + 1)) < 0)
             return false;
         if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
@@ -162,8 +164,7 @@ private:
         }
         if (i != text.size())
             return false;
-        if (const qsizetype sign = text.startsWith('-') ? 1 : 0;
-            i - sign <= 15 && !text.contains('.') && !text.contains('e') && !text.contains('E')) {
+        if (wholeEnd == i && i - sign <= 15) {
             // A whole number of at most 15 digits is exact as a double: most counts and states.
             qint64 whole = 0;
             for (qsizetype d = sign; d < i; ++d)
@@ -352,7 +353,7 @@ private:
 };
 } // namespace
 
-void PrometheusLabelPool::reserve(qsizetype bytes)
+void PrometheusLabelPool::admit(qsizetype bytes)
 {
     if (m_total + bytes > kMaxBytes) {
         m_strings.clear();
@@ -369,7 +370,7 @@ QString PrometheusLabelPool::intern(QByteArrayView utf8)
 {
     if (const auto it = m_strings.constFind(utf8); it != m_strings.cend())
         return *it;
-    reserve(utf8.size());
+    admit(utf8.size());
     m_bytes.append(utf8.toByteArray());
     const QString text = QString::fromUtf8(utf8);
     m_strings.insert(QByteArrayView(m_bytes.constLast()), text);
@@ -401,7 +402,7 @@ void PrometheusLabelPool::keep(QByteArrayView raw, const QList<PrometheusLabel>&
     qsizetype bytes = raw.size() + kListBytes;
     for (const PrometheusLabel& l : labels)
         bytes += 2 * (l.first.size() + l.second.size());
-    reserve(bytes);
+    admit(bytes);
     Known& known = m_lists.emplace_back(Known {raw.toByteArray(), labels});
     m_byRaw.insert(QByteArrayView(known.raw), &known);
     met(&known);

@@ -50,7 +50,7 @@ private:
         Known* next = nullptr; ///< the object met after this one last time
     };
     /// Empties the pool when `bytes` more would pass kMaxBytes, then counts them.
-    void reserve(qsizetype bytes);
+    void admit(qsizetype bytes);
     /// `known` was met now: after the object before it, and before the next.
     const QList<PrometheusLabel>* met(Known* known);
 
