@@ -585,24 +585,6 @@ Siehe bridgescope clock serve --help und bridgescope clock probe --help.</transl
 <context>
     <name>ConfigCommand</name>
     <message>
-        <source>Usage: bridgescope config &lt;command&gt; [options]
-
-Commands:
-  validate FILE...                         check bridge configs; exit 0 valid, 1 invalid, 2 unreadable
-  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout (a valid one, or --force)
-  peer FILE [--client-id ID]               write the config for the other end of the link (a valid one, or --force)
-
-Run &apos;bridgescope config &lt;command&gt; --help&apos; for the options of a command.</source>
-        <translation>Aufruf: bridgescope config &lt;Befehl&gt; [Optionen]
-
-Befehle:
-  validate DATEI...                        Bridge-Konfigurationen prüfen; Status 0 gültig, 1 ungültig, 2 unlesbar
-  convert DATEI --to ros1|ros2|mqtt_bridge Konfiguration in einem anderen Layout schreiben (eine gültige, oder --force)
-  peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben (eine gültige, oder --force)
-
-&apos;bridgescope config &lt;Befehl&gt; --help&apos; zeigt die Optionen eines Befehls.</translation>
-    </message>
-    <message>
         <source>%1: error: cannot read the file: %2</source>
         <translation>%1: error: Datei nicht lesbar: %2</translation>
     </message>
@@ -705,6 +687,32 @@ Befehle:
     <message>
         <source>Run &apos;bridgescope config --help&apos; for the commands.</source>
         <translation>&apos;bridgescope config --help&apos; nennt die Befehle.</translation>
+    </message>
+    <message>
+        <source>Usage: bridgescope config &lt;command&gt; [options]
+
+Commands:
+  validate FILE... [--target RELEASE]      check bridge configs (against an mqtt_client release); exit 0 valid, 1 invalid, 2 unreadable
+  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout (a valid one, or --force)
+  peer FILE [--client-id ID]               write the config for the other end of the link (a valid one, or --force)
+
+Run &apos;bridgescope config &lt;command&gt; --help&apos; for the options of a command.</source>
+        <translation>Aufruf: bridgescope config &lt;Befehl&gt; [Optionen]
+
+Befehle:
+  validate DATEI... [--target RELEASE]     Bridge-Konfigurationen prüfen (gegen ein Release von mqtt_client); Status 0 gültig, 1 ungültig, 2 unlesbar
+  convert DATEI --to ros1|ros2|mqtt_bridge Konfiguration in einem anderen Layout schreiben (eine gültige, oder --force)
+  peer DATEI [--client-id ID]              Konfiguration für das andere Ende der Strecke schreiben (eine gültige, oder --force)
+
+&apos;bridgescope config &lt;Befehl&gt; --help&apos; zeigt die Optionen eines Befehls.</translation>
+    </message>
+    <message>
+        <source>Check against this mqtt_client release: %1, or auto (the newest release that loads the file&apos;s layout, the default). Says which on a note line.</source>
+        <translation>Gegen dieses Release von mqtt_client prüfen: %1, oder auto (das neueste Release, das das Layout der Datei lädt, die Vorgabe). Eine Hinweiszeile sagt, welches.</translation>
+    </message>
+    <message>
+        <source>bridgescope config validate: --target &apos;%1&apos; is not a release of mqtt_client; use one of %2, or auto</source>
+        <translation>bridgescope config validate: --target &apos;%1&apos; ist kein Release von mqtt_client; eines von %2 verwenden, oder auto</translation>
     </message>
 </context>
 <context>
@@ -1370,6 +1378,30 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Write the value itself, or keep the config in the ROS 1 layout for roslaunch.</source>
         <translation>Den Wert selbst schreiben oder die Konfiguration für roslaunch im ROS-1-Layout lassen.</translation>
+    </message>
+    <message>
+        <source>The config is in the ROS 1 layout, which mqtt_client loads only up to 2.3.0: %1 has no ROS 1 node (2.4.0 dropped ROS 1).</source>
+        <translation>Die Konfiguration hat das ROS-1-Layout, das mqtt_client nur bis 2.3.0 lädt: %1 hat keinen ROS-1-Knoten (2.4.0 hat ROS 1 entfernt).</translation>
+    </message>
+    <message>
+        <source>Convert it (bridgescope config convert FILE --to ros2), or target 2.3.</source>
+        <translation>Umwandeln (bridgescope config convert DATEI --to ros2), oder 2.3 als Ziel wählen.</translation>
+    </message>
+    <message>
+        <source>%1: mqtt_client bridges %2 as a primitive from 2.4.2 on; %3, the release this config targets, does not.</source>
+        <translation>%1: mqtt_client überträgt %2 erst ab 2.4.2 als Primitive; %3, das Ziel-Release dieser Konfiguration, nicht.</translation>
+    </message>
+    <message>
+        <source>Target mqtt_client 2.4.2 or later, or bridge it without primitive.</source>
+        <translation>mqtt_client 2.4.2 oder neuer als Ziel wählen, oder ohne primitive übertragen.</translation>
+    </message>
+    <message>
+        <source>%1: mqtt_client reads &apos;%2&apos; from %3 on; %4, the release this config targets, ignores it.</source>
+        <translation>%1: mqtt_client liest &apos;%2&apos; erst ab %3; %4, das Ziel-Release dieser Konfiguration, ignoriert es.</translation>
+    </message>
+    <message>
+        <source>Target mqtt_client %1 or later, or remove &apos;%2&apos;.</source>
+        <translation>mqtt_client %1 oder neuer als Ziel wählen, oder &apos;%2&apos; entfernen.</translation>
     </message>
 </context>
 <context>
@@ -5077,6 +5109,41 @@ factors:
     </message>
 </context>
 <context>
+    <name>MqttClientReleases</name>
+    <message>
+        <source>the ROS 1 layout (up to %1)</source>
+        <translation>das ROS-1-Layout (bis %1)</translation>
+    </message>
+    <message>
+        <source>a primitive %1</source>
+        <translation>ein Primitive %1</translation>
+    </message>
+    <message>
+        <source>an mqtt_bridge config: no release of mqtt_client loads it</source>
+        <translation>eine mqtt_bridge-Konfiguration: kein Release von mqtt_client lädt sie</translation>
+    </message>
+    <message>
+        <source>no release loads all of it</source>
+        <translation>kein Release lädt sie ganz</translation>
+    </message>
+    <message>
+        <source>it loads in %1 only</source>
+        <translation>sie lädt nur in %1</translation>
+    </message>
+    <message>
+        <source>it loads in %1 to %2</source>
+        <translation>sie lädt in %1 bis %2</translation>
+    </message>
+    <message>
+        <source>checked against mqtt_client %1%2; %3%4</source>
+        <translation>geprüft gegen mqtt_client %1%2; %3%4</translation>
+    </message>
+    <message>
+        <source> (auto)</source>
+        <translation> (auto)</translation>
+    </message>
+</context>
+<context>
     <name>MqttClientWire</name>
     <message>
         <source>type announcement ends before the length of &apos;%1&apos; (byte %2)</source>
@@ -5704,6 +5771,10 @@ factors:
     <message>
         <source>benchmarking suite: publish in/out time stamps under this prefix</source>
         <translation>Benchmarking-Suite: Ein-/Ausgangs-Zeitstempel unter diesem Präfix veröffentlichen</translation>
+    </message>
+    <message>
+        <source>verify the broker&apos;s certificate (mqtt_client 2.4.1)</source>
+        <translation>das Zertifikat des Brokers prüfen (mqtt_client 2.4.1)</translation>
     </message>
 </context>
 <context>
@@ -9407,6 +9478,18 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
     <message>
         <source>Line %1 is past the part shown.</source>
         <translation>Zeile %1 liegt hinter dem gezeigten Teil.</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>The mqtt_client release the config is checked against. Keys it does not read are flagged with the release that brings them; auto is the newest release that loads the layout.</source>
+        <translation>Das Release von mqtt_client, gegen das die Konfiguration geprüft wird. Schlüssel, die es nicht liest, werden mit dem Release gemeldet, das sie bringt; auto ist das neueste Release, das das Layout lädt.</translation>
+    </message>
+    <message>
+        <source>mqtt_client &amp;release:</source>
+        <translation>mqtt_client-&amp;Release:</translation>
     </message>
 </context>
 <context>

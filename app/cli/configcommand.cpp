@@ -2,13 +2,14 @@
 #include "configcommand.h"
 
 #include "app/cli/clioutput.h"
-#include "files/atomicfile.h"
-#include "files/regularfile.h"
-#include "yaml/yamllimits.h"
 #include "config/configreader.h"
 #include "config/configvalidator.h"
 #include "config/configwriter.h"
+#include "config/mqttclientrelease.h"
 #include "config/peerconfig.h"
+#include "files/atomicfile.h"
+#include "files/regularfile.h"
+#include "yaml/yamllimits.h"
 
 #include <limits>
 #include <QCommandLineParser>
@@ -34,8 +35,9 @@ public:
             "Usage: bridgescope config <command> [options]\n"
             "\n"
             "Commands:\n"
-            "  validate FILE...                         check bridge configs; exit 0 valid, 1 invalid, 2 "
-            "unreadable\n"
+            "  validate FILE... [--target RELEASE]      check bridge configs (against an mqtt_client "
+            "release); "
+            "exit 0 valid, 1 invalid, 2 unreadable\n"
             "  convert FILE --to ros1|ros2|mqtt_bridge  write the config in another layout (a valid one, "
             "or --force)\n"
             "  peer FILE [--client-id ID]               write the config for the other end of the link (a "
@@ -136,7 +138,13 @@ public:
     {
         QCommandLineParser parser;
         const QCommandLineOption quiet({u"q"_s, u"quiet"_s}, tr("Print errors only, no warnings."));
-        parser.addOption(quiet);
+        const QCommandLineOption target(
+            u"target"_s,
+            tr("Check against this mqtt_client release: %1, or auto (the newest release that loads the "
+               "file's layout, the default). Says which on a note line.")
+                .arg(MqttClientReleases::names().join(u", "_s)),
+            u"RELEASE"_s);
+        parser.addOptions({quiet, target});
         parser.addPositionalArgument(u"FILE"_s, tr("Bridge configs (mqtt_client ROS 1/ROS 2, mqtt_bridge)."),
                                      u"FILE..."_s);
         if (const int r
@@ -151,6 +159,17 @@ public:
             err(tr("bridgescope config validate: no FILE given"));
             return ExitUsage;
         }
+        ConfigValidator::Options options;
+        if (parser.isSet(target) && parser.value(target) != u"auto"_s) {
+            options.target = MqttClientReleases::fromName(parser.value(target));
+            if (!options.target) {
+                err(tr("bridgescope config validate: --target '%1' is not a release of mqtt_client; use one "
+                       "of "
+                       "%2, or auto")
+                        .arg(parser.value(target), MqttClientReleases::names().join(u", "_s)));
+                return ExitUsage;
+            }
+        }
         int worst = ExitOk;
         for (const QString& path : files) {
             Loaded l = load(path);
@@ -158,10 +177,12 @@ public:
                 worst = std::max(worst, l.exit);
                 continue;
             }
-            QList<Problem> problems = l.read.problems + ConfigValidator::validate(l.read.config);
+            QList<Problem> problems = l.read.problems + ConfigValidator::validate(l.read.config, options);
             std::stable_sort(problems.begin(), problems.end(), [](const Problem& a, const Problem& b) {
                 return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.column < b.pos.column;
             });
+            if (parser.isSet(target) && !parser.isSet(quiet))
+                out(tr("%1: note: %2").arg(path, MqttClientReleases::summary(l.read.config, options.target)));
             for (const Problem& p : std::as_const(problems)) {
                 if (p.severity == Severity::Error || !parser.isSet(quiet))
                     out(p.format(path));

@@ -100,6 +100,7 @@ public:
     QList<Problem> problemsOf(quint64 mappingId) const;
     Severity worstSeverity(quint64 mappingId, bool* any) const;
     void setValidationOptions(const ConfigValidator::Options& options);
+    const ConfigValidator::Options& validationOptions() const { return m_validation; }
 
     // Edits (each one emits its signals and revalidates).
     void insertMappings(int row, const QList<Mapping>& mappings);

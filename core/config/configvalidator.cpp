@@ -434,9 +434,54 @@ public:
         }
     }
 
+    /// What the targeted mqtt_client release does not load or read (issue 45): the ROS 1 layout
+    /// past 2.3, keys newer than it, a primitive type it does not bridge.
+    void checkRelease()
+    {
+        if (m_cfg.layout == ConfigLayout::MqttBridge)
+            return; // not mqtt_client's
+        const MqttClientRelease target = m_opts.target.value_or(MqttClientReleases::defaultTarget(m_cfg));
+        const QString release = MqttClientReleases::name(target);
+        if (m_cfg.layout == ConfigLayout::Ros1 && target > MqttClientReleases::kLastRos1)
+            add(Severity::Error, u"ros1-layout-after-2.3"_s, nullptr, OptionScope::Broker, QString(),
+                tr("The config is in the ROS 1 layout, which mqtt_client loads only up to 2.3.0: %1 has no "
+                   "ROS 1 node (2.4.0 dropped ROS 1).")
+                    .arg(release),
+                tr("Convert it (bridgescope config convert FILE --to ros2), or target 2.3."));
+        for (OptionScope scope : {OptionScope::Broker, OptionScope::Client})
+            for (const QString& path : m_cfg.block(scope).values.paths())
+                checkSince({scope, m_cfg.block(scope), nullptr, OptionSchema::scopeKey(scope)}, path, target);
+        for (const Mapping& m : m_cfg.mappings) {
+            for (const QString& path : m.block.values.paths())
+                checkSince({m.scope(), m.block, &m, describe(m)}, path, target);
+            const QString type = m.value(u"ros_type"_s);
+            if (YamlText::isTrue(m.effective(u"primitive"_s))
+                && !MqttClientReleases::primitiveTypeKnown(type, target))
+                add(Severity::Warning, u"primitive-type-before-2.4.2"_s, &m, m.scope(), u"ros_type"_s,
+                    tr("%1: mqtt_client bridges %2 as a primitive from 2.4.2 on; %3, the release this config "
+                       "targets, does not.")
+                        .arg(describe(m), type, release),
+                    tr("Target mqtt_client 2.4.2 or later, or bridge it without primitive."));
+        }
+    }
+
+    /// A key the targeted release does not read yet: it ignores it, and what it does is not done.
+    void checkSince(const ValueSite& at, const QString& path, MqttClientRelease target)
+    {
+        const OptionSpec* spec = OptionSchema::find(at.scope, path);
+        if (!spec || spec->since <= target || (spec->ros2Only && m_cfg.layout == ConfigLayout::Ros1))
+            return; // unknown keys and ROS 2 keys in the ROS 1 layout are said on their own
+        add(Severity::Warning, u"option-newer-than-target"_s, at.m, at.scope, path,
+            tr("%1: mqtt_client reads '%2' from %3 on; %4, the release this config targets, ignores it.")
+                .arg(at.where, path, MqttClientReleases::name(spec->since), MqttClientReleases::name(target)),
+            tr("Target mqtt_client %1 or later, or remove '%2'.")
+                .arg(MqttClientReleases::name(spec->since), path));
+    }
+
     void run()
     {
         checkSettings();
+        checkRelease();
         for (const Mapping& m : m_cfg.mappings) {
             checkRosName(m);
             checkMqttTopic(m);

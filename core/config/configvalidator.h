@@ -5,6 +5,7 @@
 #include "config/problem.h"
 
 #include <functional>
+#include <optional>
 #include <QCoreApplication>
 
 /// Checks a config against what mqtt_client accepts and what works on a real link.
@@ -21,6 +22,9 @@ public:
         QString rosHome;
         /// Whether a file exists (replaceable in tests); default: QFileInfo::exists.
         std::function<bool(const QString&)> fileExists;
+        /// The mqtt_client release checked against; none: the newest that loads the layout
+        /// (MqttClientReleases::defaultTarget).
+        std::optional<MqttClientRelease> target;
     };
 
     static QList<Problem> validate(const BridgeConfig& config, const Options& options = {});

@@ -39,6 +39,13 @@ OptionSpec ros2(OptionSpec s)
     return s;
 }
 
+/// An option mqtt_client reads from `release` on.
+OptionSpec since(MqttClientRelease release, OptionSpec s)
+{
+    s.since = release;
+    return s;
+}
+
 OptionSpec secret(OptionSpec s)
 {
     s.secret = true;
@@ -106,6 +113,10 @@ QList<OptionSpec> clientOptions()
             QT_TRANSLATE_NOOP("OptionSchema", "verify the broker's certificate")),
         opt(u"tls.alpn_protos"_s, OptionKind::StringList, QString(),
             QT_TRANSLATE_NOOP("OptionSchema", "ALPN protocols to negotiate (e.g. x-amzn-mqtt-ca)")),
+        since(MqttClientRelease::V2_4_1,
+              ros2(opt(
+                  u"tls.server_cert_auth"_s, OptionKind::Bool, u"true"_s,
+                  QT_TRANSLATE_NOOP("OptionSchema", "verify the broker's certificate (mqtt_client 2.4.1)")))),
     };
 }
 
@@ -128,10 +139,13 @@ QList<OptionSpec> mappingOptions(OptionScope scope)
         list << mqttTopic << rosTopic;
     list << opt(u"primitive"_s, OptionKind::Bool, u"false"_s,
                 QT_TRANSLATE_NOOP("OptionSchema", "send std_msgs primitives as plain text"))
-         << ros2(opt(u"json"_s, OptionKind::Bool, u"false"_s,
-                     QT_TRANSLATE_NOOP("OptionSchema", "send messages as JSON (needs ros_type)")))
-         << ros2(opt(u"ros_type"_s, OptionKind::String, QString(),
-                     QT_TRANSLATE_NOOP("OptionSchema", "fixed ROS message type, e.g. std_msgs/msg/Bool")));
+         << since(MqttClientRelease::V2_5,
+                  ros2(opt(u"json"_s, OptionKind::Bool, u"false"_s,
+                           QT_TRANSLATE_NOOP("OptionSchema", "send messages as JSON (needs ros_type)"))))
+         << since(MqttClientRelease::V2_3,
+                  ros2(opt(
+                      u"ros_type"_s, OptionKind::String, QString(),
+                      QT_TRANSLATE_NOOP("OptionSchema", "fixed ROS message type, e.g. std_msgs/msg/Bool"))));
     if (out)
         list << opt(u"inject_timestamp"_s, OptionKind::Bool, u"false"_s,
                     QT_TRANSLATE_NOOP("OptionSchema", "prepend a send time stamp for latency measurement"));
@@ -141,10 +155,19 @@ QList<OptionSpec> mappingOptions(OptionScope scope)
     if (!out)
         list << opt(u"advanced.ros.latched"_s, OptionKind::Bool, u"false"_s,
                     QT_TRANSLATE_NOOP("OptionSchema", "latch the ROS publisher"));
-    list << enumOpt(u"advanced.ros.qos.reliability"_s, kReliability,
-                    QT_TRANSLATE_NOOP("OptionSchema", "ROS 2 QoS reliability"))
-         << enumOpt(u"advanced.ros.qos.durability"_s, kDurability,
-                    QT_TRANSLATE_NOOP("OptionSchema", "ROS 2 QoS durability"))
+    // "auto" (the QoS of the publishers the bridge discovers) is ros2mqtt's default; mqtt2ros has
+    // no publishers to follow: mqtt_client 2.3-2.5 exits on it ("Unexpected reliability auto").
+    const auto qos = [out](const QString& path, QStringList values, const char* summary) {
+        if (!out)
+            values.removeAll(u"auto"_s);
+        OptionSpec spec = since(MqttClientRelease::V2_3, enumOpt(path, std::move(values), summary));
+        spec.defaultText = out ? u"auto"_s : u"system_default"_s;
+        return spec;
+    };
+    list << qos(u"advanced.ros.qos.reliability"_s, kReliability,
+                QT_TRANSLATE_NOOP("OptionSchema", "ROS 2 QoS reliability"))
+         << qos(u"advanced.ros.qos.durability"_s, kDurability,
+                QT_TRANSLATE_NOOP("OptionSchema", "ROS 2 QoS durability"))
          << intOpt(u"advanced.mqtt.qos"_s, u"0"_s, 0, 2,
                    QT_TRANSLATE_NOOP("OptionSchema", "MQTT QoS (0, 1 or 2)"));
     if (out)

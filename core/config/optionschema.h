@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "config/mqttclientrelease.h"
+
 #include <QList>
 #include <QString>
 #include <QStringList>
@@ -25,6 +27,8 @@ struct OptionSpec
     int maximum = 0; ///< for OptionKind::Int; minimum == maximum means unbounded
     const char* summary = nullptr; ///< untranslated; translate with OptionSchema context
     bool ros2Only = false; ///< only understood by the ROS 2 mqtt_client (>= 2.3)
+    /// The first mqtt_client release that reads it (extensions: the oldest, they are not its own).
+    MqttClientRelease since = MqttClientRelease::V2_2;
     bool extension = false; ///< not mqtt_client's own (benchmarking suite fork)
     bool secret = false; ///< a password: never shown in previews or logs in clear
 

@@ -159,6 +159,44 @@ private slots:
         QCOMPARE(r.out, QString());
     }
 
+    /// Issue 45: `--target` checks against one mqtt_client release and says which on a note line.
+    void validateTargetsARelease()
+    {
+        const QString ros1 = Fixtures::release(u"v2.3.0/params.yaml"_s);
+        const QString json = Fixtures::release(u"v2.5.0/params.json.yaml"_s);
+        Run r = bridgescope({u"config"_s, u"validate"_s, u"--target"_s, u"2.3"_s, ros1});
+        QCOMPARE(r.exit, 0);
+        QVERIFY2(
+            r.out.startsWith(ros1 + u": note: checked against mqtt_client 2.3; it loads in 2.2 to 2.3"_s),
+            qPrintable(r.out));
+        r = bridgescope({u"config"_s, u"validate"_s, u"--target"_s, u"v2.4.0"_s, ros1});
+        QCOMPARE(r.exit, 1);
+        QVERIFY2(
+            r.out.contains(u": error: The config is in the ROS 1 layout, which mqtt_client loads only up to "
+                           "2.3.0: 2.4.0 has no ROS 1 node"_s),
+            qPrintable(r.out));
+        r = bridgescope({u"config"_s, u"validate"_s, u"--target"_s, u"2.4.2"_s, json});
+        QCOMPARE(r.exit, 0); // warnings: the release ignores json
+        QVERIFY2(r.out.contains(u": warning: "_s)
+                     && r.out.contains(u"mqtt_client reads 'json' from 2.5 on"_s),
+                 qPrintable(r.out));
+        r = bridgescope({u"config"_s, u"validate"_s, u"--target"_s, u"auto"_s, json});
+        QCOMPARE(r.exit, 0);
+        QCOMPARE(r.out.trimmed().split(u'\n').size(), 1);
+        QVERIFY2(r.out.contains(u"checked against mqtt_client 2.5 (auto); it loads in 2.5 only ("_s)
+                     && r.out.contains(u"json (2.5)"_s),
+                 qPrintable(r.out));
+        for (const QString& bad : {u"2.4"_s, u"2.6"_s, u""_s}) {
+            r = bridgescope({u"config"_s, u"validate"_s, u"--target"_s, bad, json});
+            QCOMPARE(r.exit, 2);
+            QVERIFY2(
+                r.err.contains(u"is not a release of mqtt_client; use one of 2.2, 2.3, 2.4.0, 2.4.1, 2.4.2, "
+                               "2.5, or auto"_s),
+                qPrintable(r.err));
+            QCOMPARE(r.out, QString());
+        }
+    }
+
     void convertAndPeerWriteFiles()
     {
         QTemporaryDir dir;

@@ -22,6 +22,14 @@ inline QByteArray read(const QString& relative)
     return f.readAll();
 }
 
+/// A file of every mqtt_client release's example configs (issue 45), kept in this repository:
+/// "v2.5.0/params.json.yaml".
+inline QString release(const QString& relative)
+{
+    return QDir(QStringLiteral(BRIDGESCOPE_SOURCE_DIR "/tests/data/fixtures/mqtt_client/releases"))
+        .filePath(relative);
+}
+
 /// Every bridge config among the fixtures (mqtt_client, the suite's bridge configs, mqtt_bridge).
 inline QStringList bridgeConfigs()
 {

@@ -2,6 +2,7 @@
 #include "yamlpreview.h"
 
 #include "config/configdocument.h"
+#include "config/mqttclientrelease.h"
 #include "widgets/common/chartstyle.h"
 
 #include <QComboBox>
@@ -80,6 +81,21 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     label->setBuddy(m_layout);
     h->addWidget(label);
     h->addWidget(m_layout);
+    // Issue 45: the release checked against; keys it does not read are flagged with the release
+    // that brings them. "auto" is the newest release that loads the layout.
+    m_release = new QComboBox(this);
+    m_release->setObjectName(u"targetRelease"_s);
+    m_release->addItem(tr("auto"), QString());
+    for (const QString& name : MqttClientReleases::names())
+        m_release->addItem(name, name);
+    m_release->setToolTip(tr("The mqtt_client release the config is checked against. Keys it does not "
+                             "read are flagged with the release that brings them; auto is the newest "
+                             "release that loads the layout."));
+    auto* releaseLabel = new QLabel(tr("mqtt_client &release:"), this);
+    releaseLabel->setBuddy(m_release);
+    h->addSpacing(12);
+    h->addWidget(releaseLabel);
+    h->addWidget(m_release);
     h->addStretch(1);
     v->addLayout(h);
     m_note = new QLabel(this);
@@ -112,6 +128,11 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     });
     connect(m_doc, &ConfigDocument::layoutChanged, this, [this](ConfigLayout l) { setLayout(l); });
     connect(m_layout, &QComboBox::currentIndexChanged, this, later);
+    connect(m_release, &QComboBox::currentIndexChanged, this, [this] {
+        ConfigValidator::Options options = m_doc->validationOptions();
+        options.target = MqttClientReleases::fromName(m_release->currentData().toString());
+        m_doc->setValidationOptions(options); // the problems change, and the preview with them
+    });
     m_stale = true;
 }
 
@@ -158,6 +179,7 @@ void YamlPreview::refreshNow()
                         : tr("Saving in this layout writes the file anew: its comments are not kept."));
     }
     lines += notes;
+    lines << MqttClientReleases::summary(m_doc->config(), m_doc->validationOptions().target);
     m_note->setText(lines.join(u'\n'));
     m_note->setVisible(!lines.isEmpty());
     // Keep the reader's place when the text is replaced.
