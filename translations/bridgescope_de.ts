@@ -1312,14 +1312,6 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
         <translation>Eines von beiden ausschalten.</translation>
     </message>
     <message>
-        <source>%1: ROS topic &apos;%2&apos; is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
-        <translation>%1: ROS-Topic &apos;%2&apos; wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
-    </message>
-    <message>
-        <source>Remove one of the two mappings, or bridge a different ROS topic.</source>
-        <translation>Eine der beiden Zuordnungen entfernen oder ein anderes ROS-Topic übertragen.</translation>
-    </message>
-    <message>
         <source>%1: MQTT topic &apos;%2&apos; is already bridged by %3 (line %4); mqtt_client keeps only one of them.</source>
         <translation>%1: MQTT-Topic &apos;%2&apos; wird schon von %3 übertragen (Zeile %4); mqtt_client behält nur eine davon.</translation>
     </message>
@@ -1402,6 +1394,14 @@ Beim Speichern wird sie neu geschrieben (die vorige Datei bleibt als %2.bak erha
     <message>
         <source>Target mqtt_client %1 or later, or remove &apos;%2&apos;.</source>
         <translation>mqtt_client %1 oder neuer als Ziel wählen, oder &apos;%2&apos; entfernen.</translation>
+    </message>
+    <message>
+        <source>%1: ROS topic &apos;%2&apos; is already bridged by %3 (line %4); mqtt_client keeps one bridge per ROS topic, so only one of the two MQTT topics is published (mqtt_client issue #18).</source>
+        <translation>%1: Das ROS-Topic &apos;%2&apos; wird schon von %3 (Zeile %4) übertragen; mqtt_client hält eine Bridge je ROS-Topic, also wird nur eines der beiden MQTT-Topics veröffentlicht (mqtt_client-Issue #18).</translation>
+    </message>
+    <message>
+        <source>Remove one of the two mappings. To publish one ROS topic on two MQTT topics, relay it to a second ROS topic (topic_tools relay) and bridge that one.</source>
+        <translation>Eine der beiden Zuordnungen entfernen. Um ein ROS-Topic auf zwei MQTT-Topics zu veröffentlichen, es auf ein zweites ROS-Topic weiterleiten (topic_tools relay) und dieses übertragen.</translation>
     </message>
 </context>
 <context>
@@ -2204,6 +2204,77 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
     <message>
         <source>%1 messages on topics not tracked (budget %2 topics, %3 MiB of names)</source>
         <translation>%1 Nachrichten auf nicht erfassten Topics (Budget %2 Topics, %3 MiB Namen)</translation>
+    </message>
+</context>
+<context>
+    <name>DiscoveryLints</name>
+    <message>
+        <source>If its publishers send text or numbers, set primitive: true (a std_msgs type is chosen from the payload)</source>
+        <translation>Senden seine Publisher Text oder Zahlen, primitive: true setzen (ein std_msgs-Typ wird nach den Nutzdaten gewählt)</translation>
+    </message>
+    <message>
+        <source>or set ros_type to the std_msgs type of the payload (e.g. std_msgs/msg/Float64) together with primitive: true</source>
+        <translation>oder ros_type auf den std_msgs-Typ der Nutzdaten setzen (z. B. std_msgs/msg/Float64), zusammen mit primitive: true</translation>
+    </message>
+    <message>
+        <source>if they send JSON, set json: true and ros_type to the message its fields fill</source>
+        <translation>senden sie JSON, json: true setzen und ros_type auf die Nachricht, die seine Felder füllen</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; carries messages but no mqtt_client announced their type on &apos;mqtt_client/ros_msg_type/%2&apos;, so the bridge waits for one and never publishes them on ROS (mqtt_client issues #12, #78).</source>
+        <translation>%1: Auf &apos;%2&apos; kommen Nachrichten, aber kein mqtt_client hat ihren Typ auf &apos;mqtt_client/ros_msg_type/%2&apos; angekündigt; die Bridge wartet darauf und veröffentlicht sie nie auf ROS (mqtt_client-Issues #12, #78).</translation>
+    </message>
+    <message>
+        <source>Set ros_type to the type the bridge must carry; publishers of other types are then left out.</source>
+        <translation>ros_type auf den Typ setzen, den die Bridge übertragen soll; Publisher anderer Typen bleiben dann außen vor.</translation>
+    </message>
+    <message>
+        <source>Give the topics of different types different names: ros_type, which fixes the type, needs mqtt_client 2.3.</source>
+        <translation>Den Topics verschiedener Typen verschiedene Namen geben: ros_type, das den Typ festlegt, braucht mqtt_client 2.3.</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is published with %3 types (%4); without ros_type the bridge takes the type of the publisher it finds first, and a publisher of another type stops or breaks the link (mqtt_client issues #15, #45).</source>
+        <translation>%1: &apos;%2&apos; wird mit %3 Typen veröffentlicht (%4); ohne ros_type nimmt die Bridge den Typ des Publishers, den sie zuerst findet, und ein Publisher eines anderen Typs hält die Verbindung an oder bricht sie (mqtt_client-Issues #15, #45).</translation>
+    </message>
+    <message>
+        <source>%1: ros_type is &apos;%2&apos;, but &apos;%3&apos; is published as %4 only: the bridge&apos;s subscription matches no publisher.</source>
+        <translation>%1: ros_type ist &apos;%2&apos;, aber &apos;%3&apos; wird nur als %4 veröffentlicht: das Abonnement der Bridge passt zu keinem Publisher.</translation>
+    </message>
+    <message>
+        <source>Set ros_type to %1, or remove it to take the publishers&apos; type.</source>
+        <translation>ros_type auf %1 setzen oder entfernen, um den Typ der Publisher zu nehmen.</translation>
+    </message>
+    <message>
+        <source>Set advanced.ros.qos.reliability and .durability to auto (the default from mqtt_client 2.3), or to what the publishers offer.</source>
+        <translation>advanced.ros.qos.reliability und .durability auf auto setzen (die Vorgabe ab mqtt_client 2.3) oder auf das, was die Publisher anbieten.</translation>
+    </message>
+    <message>
+        <source>Offer at least what the subscribers ask for in advanced.ros.qos.reliability and .durability.</source>
+        <translation>In advanced.ros.qos.reliability und .durability mindestens bieten, was die Subscriber verlangen.</translation>
+    </message>
+    <message>
+        <source>mqtt_client 2.2 has no advanced.ros.qos: make the publishers offer reliable, volatile, or target 2.3 or later.</source>
+        <translation>mqtt_client 2.2 kennt advanced.ros.qos nicht: die Publisher reliable, volatile anbieten lassen oder 2.3 oder neuer als Ziel wählen.</translation>
+    </message>
+    <message>
+        <source>%1: mqtt_client&apos;s subscription to &apos;%2&apos; cannot match a publisher: %3 (mqtt_client issue #48).</source>
+        <translation>%1: Das Abonnement von mqtt_client auf &apos;%2&apos; passt zu keinem Publisher: %3 (mqtt_client-Issue #48).</translation>
+    </message>
+    <message>
+        <source>%1: subscribers of &apos;%2&apos; cannot get mqtt_client&apos;s messages: %3 (mqtt_client issue #48).</source>
+        <translation>%1: Subscriber von &apos;%2&apos; können die Nachrichten von mqtt_client nicht erhalten: %3 (mqtt_client-Issue #48).</translation>
+    </message>
+    <message>
+        <source>Nodes that are discovery clients announce themselves to the server only: Bridgescope joins the domain by simple discovery and does not see them either.</source>
+        <translation>Knoten, die Discovery-Clients sind, melden sich nur beim Server: Bridgescope tritt der Domäne per Simple Discovery bei und sieht sie ebenfalls nicht.</translation>
+    </message>
+    <message>
+        <source>This lab uses a Fast DDS discovery server (ROS_DISCOVERY_SERVER=%1). A bridge started there as a plain client is told only of the endpoints it matches, and then bridges nothing of the ROS topics it has to find by name (mqtt_client issue #67).%2</source>
+        <translation>Dieses Labor nutzt einen Fast-DDS-Discovery-Server (ROS_DISCOVERY_SERVER=%1). Eine dort als einfacher Client gestartete Bridge erfährt nur von den Endpunkten, zu denen sie passt, und überträgt dann nichts von den ROS-Topics, die sie über den Namen finden muss (mqtt_client-Issue #67).%2</translation>
+    </message>
+    <message>
+        <source>Start mqtt_client as a super client: export ROS_SUPER_CLIENT=TRUE, or give it a FASTRTPS_DEFAULT_PROFILES_FILE whose participant&apos;s discovery protocol is SUPER_CLIENT.</source>
+        <translation>mqtt_client als Super-Client starten: export ROS_SUPER_CLIENT=TRUE, oder eine FASTRTPS_DEFAULT_PROFILES_FILE mitgeben, deren Participant das Discovery-Protokoll SUPER_CLIENT hat.</translation>
     </message>
 </context>
 <context>
@@ -6495,6 +6566,18 @@ Exit-Status: 0 gemessen, 1 Broker nicht erreichbar oder nichts kam zurück, 2 fa
         <source>&amp;Problems: %1</source>
         <translation>&amp;Probleme: %1</translation>
     </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>The mqtt_client release the config is checked against. Keys it does not read are flagged with the release that brings them; auto is the newest release that loads the layout. The choice is kept for this file.</source>
+        <translation>Das mqtt_client-Release, gegen das die Konfiguration geprüft wird. Schlüssel, die es nicht liest, werden mit dem Release markiert, das sie bringt; auto ist das neueste Release, das das Layout lädt. Die Wahl bleibt für diese Datei erhalten.</translation>
+    </message>
+    <message>
+        <source>Tar&amp;get: mqtt_client</source>
+        <translation>&amp;Ziel: mqtt_client</translation>
+    </message>
 </context>
 <context>
     <name>PrometheusAnswer</name>
@@ -9478,18 +9561,6 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
     <message>
         <source>Line %1 is past the part shown.</source>
         <translation>Zeile %1 liegt hinter dem gezeigten Teil.</translation>
-    </message>
-    <message>
-        <source>auto</source>
-        <translation>auto</translation>
-    </message>
-    <message>
-        <source>The mqtt_client release the config is checked against. Keys it does not read are flagged with the release that brings them; auto is the newest release that loads the layout.</source>
-        <translation>Das Release von mqtt_client, gegen das die Konfiguration geprüft wird. Schlüssel, die es nicht liest, werden mit dem Release gemeldet, das sie bringt; auto ist das neueste Release, das das Layout lädt.</translation>
-    </message>
-    <message>
-        <source>mqtt_client &amp;release:</source>
-        <translation>mqtt_client-&amp;Release:</translation>
     </message>
 </context>
 <context>

@@ -161,6 +161,15 @@ void ConfigDocument::setLayout(ConfigLayout layout)
     changed();
 }
 
+void ConfigDocument::setDiscoveryProblems(const QList<Problem>& problems)
+{
+    if (sameProblems(problems, m_discoveryProblems))
+        return;
+    m_discoveryProblems = problems;
+    revalidate();
+    emit problemsChanged();
+}
+
 void ConfigDocument::setValidationOptions(const ConfigValidator::Options& options)
 {
     m_validation = options;
@@ -375,6 +384,7 @@ void ConfigDocument::changed()
 
 void ConfigDocument::finishReset()
 {
+    m_discoveryProblems.clear(); // about the mappings that were
     revalidate();
     emit resetDone();
     emit filePathChanged(m_path);
@@ -387,6 +397,10 @@ void ConfigDocument::revalidate()
 {
     // Reading problems (structure) stay visible beside the rule checks.
     m_problems = m_readProblems + ConfigValidator::validate(m_current, m_validation);
+    // The lab's findings stay with the mappings they are about until the lab is looked at again.
+    for (const Problem& p : std::as_const(m_discoveryProblems))
+        if (p.mappingId == 0 || m_current.indexOfMapping(p.mappingId) >= 0)
+            m_problems << p;
     m_severity.clear();
     for (const Problem& p : std::as_const(m_problems)) {
         if (p.mappingId == 0)

@@ -101,6 +101,10 @@ public:
     Severity worstSeverity(quint64 mappingId, bool* any) const;
     void setValidationOptions(const ConfigValidator::Options& options);
     const ConfigValidator::Options& validationOptions() const { return m_validation; }
+    /// Problems only the running lab shows (DiscoveryLints), listed after the file's own; they go
+    /// with the document's reset. Emits problemsChanged only when they differ from the last ones.
+    void setDiscoveryProblems(const QList<Problem>& problems);
+    const QList<Problem>& discoveryProblems() const { return m_discoveryProblems; }
 
     // Edits (each one emits its signals and revalidates).
     void insertMappings(int row, const QList<Mapping>& mappings);
@@ -140,6 +144,7 @@ private:
     QList<Problem> m_readProblems; ///< structure problems found when the file was read
     ReadOnlyView m_readOnly;
     QList<Problem> m_problems;
+    QList<Problem> m_discoveryProblems; ///< DiscoveryLints' of the running lab
     QHash<quint64, Severity> m_severity;
     ConfigValidator::Options m_validation;
 };

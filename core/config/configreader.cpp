@@ -66,12 +66,8 @@ public:
     void problem(Severity sev, const QString& code, const TextPos& pos, const QString& message,
                  const QString& fix = QString())
     {
-        Problem p;
-        p.severity = sev;
-        p.code = code;
+        Problem p = Problem::about(nullptr, sev, code, QString(), message, fix);
         p.pos = pos;
-        p.message = message;
-        p.fix = fix;
         result.problems.append(p);
     }
 

@@ -59,17 +59,8 @@ public:
     void add(Severity sev, const QString& code, const Mapping* m, OptionScope scope, const QString& field,
              const QString& message, const QString& fix)
     {
-        Problem p;
-        p.severity = sev;
-        p.code = code;
-        p.message = message;
-        p.fix = fix;
-        p.field = field;
-        if (m) {
-            p.mappingId = m->id;
-            p.scope = m->scope();
-            p.pos = m->block.source.keyPos(field);
-        } else if (!field.isEmpty()) {
+        Problem p = Problem::about(m, sev, code, field, message, fix);
+        if (!m && !field.isEmpty()) {
             p.scope = scope;
             const OptionBlock& b = m_cfg.block(scope);
             p.pos = b.source.keyPos(field);
@@ -77,12 +68,7 @@ public:
         problems.append(p);
     }
 
-    static QString describe(const Mapping& m)
-    {
-        return m.direction == Direction::Ros2Mqtt
-            ? tr("ros2mqtt '%1' → '%2'").arg(m.rosTopic(), m.mqttTopic())
-            : tr("mqtt2ros '%1' → '%2'").arg(m.mqttTopic(), m.rosTopic());
-    }
+    static QString describe(const Mapping& m) { return ConfigValidator::describe(m); }
 
     void checkTypedValues(OptionScope scope, const OptionBlock& block, const Mapping* m)
     {
@@ -325,11 +311,14 @@ public:
                     continue;
                 if (const Mapping* first = outByRos.value(m.rosTopic())) {
                     add(Severity::Error, u"duplicate-ros-topic"_s, &m, m.scope(), u"ros_topic"_s,
-                        tr("%1: ROS topic '%2' is already bridged by %3 (line %4); mqtt_client keeps only "
-                           "one of them.")
+                        tr("%1: ROS topic '%2' is already bridged by %3 (line %4); mqtt_client keeps one "
+                           "bridge per ROS topic, so only one of the two MQTT topics is published "
+                           "(mqtt_client issue #18).")
                             .arg(describe(m), m.rosTopic(), describe(*first))
                             .arg(first->block.source.start.line + 1),
-                        tr("Remove one of the two mappings, or bridge a different ROS topic."));
+                        tr("Remove one of the two mappings. To publish one ROS topic on two MQTT "
+                           "topics, relay it to a second ROS topic (topic_tools relay) and bridge "
+                           "that one."));
                 } else {
                     outByRos.insert(m.rosTopic(), &m);
                 }
@@ -503,6 +492,12 @@ QList<Problem> ConfigValidator::validate(const BridgeConfig& config, const Optio
     Checker c(config, options);
     c.run();
     return c.problems;
+}
+
+QString ConfigValidator::describe(const Mapping& m)
+{
+    return m.direction == Direction::Ros2Mqtt ? tr("ros2mqtt '%1' → '%2'").arg(m.rosTopic(), m.mqttTopic())
+                                              : tr("mqtt2ros '%1' → '%2'").arg(m.mqttTopic(), m.rosTopic());
 }
 
 QString ConfigValidator::resolvePath(const QString& path, const QString& rosHome)

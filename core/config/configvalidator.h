@@ -29,6 +29,8 @@ public:
 
     static QList<Problem> validate(const BridgeConfig& config, const Options& options = {});
 
+    /// "ros2mqtt '/a' → 'a'": how problems name a mapping.
+    static QString describe(const Mapping& m);
     /// How mqtt_client resolves a relative file path.
     static QString resolvePath(const QString& path, const QString& rosHome);
 };

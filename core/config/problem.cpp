@@ -38,3 +38,31 @@ bool hasErrors(const QList<Problem>& problems)
     }
     return false;
 }
+
+bool sameProblems(const QList<Problem>& a, const QList<Problem>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (qsizetype i = 0; i < a.size(); ++i)
+        if (a[i].severity != b[i].severity || a[i].code != b[i].code || a[i].mappingId != b[i].mappingId
+            || a[i].message != b[i].message || a[i].fix != b[i].fix)
+            return false;
+    return true;
+}
+
+Problem Problem::about(const Mapping* m, Severity severity, const QString& code, const QString& field,
+                       const QString& message, const QString& fix)
+{
+    Problem p;
+    p.severity = severity;
+    p.code = code;
+    p.message = message;
+    p.fix = fix;
+    p.field = field;
+    if (m) {
+        p.mappingId = m->id;
+        p.scope = m->scope();
+        p.pos = m->block.source.keyPos(field);
+    }
+    return p;
+}

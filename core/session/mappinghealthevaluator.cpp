@@ -42,9 +42,7 @@ bool MappingHealthEvaluator::bridgeQos(const Mapping& m, const Ros2Qos& matched,
     return true;
 }
 
-namespace {
-/// ROS 2: why no endpoint on the other side of the bridge's ROS endpoint can match it, or empty.
-QString qosProblem(const Mapping& m, const Ros2Topic& topic)
+QString MappingHealthEvaluator::qosProblem(const Mapping& m, const Ros2Topic& topic)
 {
     const QString fixedType = m.value(u"ros_type"_s).trimmed();
     QStringList why;
@@ -80,6 +78,7 @@ QString qosProblem(const Mapping& m, const Ros2Topic& topic)
     return why.join(u"; "_s);
 }
 
+namespace {
 /// A rate's figure: one decimal below 1000 Hz, so that two rates side by side have one precision.
 QString rateFigure(double hz)
 {

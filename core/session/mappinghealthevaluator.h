@@ -11,6 +11,7 @@ struct TopicGraph;
 struct TopicInfo;
 struct Ros2Graph;
 struct Ros2Qos;
+struct Ros2Topic;
 struct TopicFigures;
 class FlowRates;
 
@@ -44,6 +45,9 @@ public:
     /// ros2mqtt subscription `auto` (the default) takes the publisher's `matched` QoS. False when a
     /// value is not known (a substitution, a typo).
     static bool bridgeQos(const Mapping& m, const Ros2Qos& matched, Ros2Qos* qos);
+    /// ROS 2: why no endpoint on the other side of the bridge's ROS endpoint can match it (its
+    /// publishers for ros2mqtt, its subscribers for mqtt2ros), or empty.
+    static QString qosProblem(const Mapping& m, const Ros2Topic& topic);
 
 private:
     /// A flowing mapping's rates and words from both ends counted over the same interval.

@@ -7,12 +7,16 @@
 #include "config/configreader.h"
 #include "config/mappinghealth.h"
 #include "config/mappingmodel.h"
+#include "config/mqttclientrelease.h"
+#include "config/problemmodel.h"
 #include "fixtures.h"
+#include "guisession.h"
 #include "models/mqtttopictree.h"
 #include "session/livesession.h"
 #include "testservers.h"
 #include "topics/topictablemodel.h"
 #include "viewhelpers.h"
+#include "widgets/common/problemspanel.h"
 #include "widgets/discover/discoverpage.h"
 #include "widgets/map/configeditor.h"
 #include "widgets/map/configfilecontroller.h"
@@ -21,9 +25,12 @@
 
 #include <QAbstractItemModelTester>
 #include <QAction>
+#include <QComboBox>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QProcess>
+#include <QScopeGuard>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -58,6 +65,22 @@ int healthOf(MapPage* page, const QString& ros, const QString& mqtt)
     }
     return -2;
 }
+
+/// The problems the list shows: each row's message, as the user reads it.
+QStringList shownProblems(const MapPage& page)
+{
+    const auto* view = named<QTreeView>(page, u"problemsView"_s);
+    QStringList rows;
+    for (int r = 0; r < view->model()->rowCount(); ++r)
+        rows << view->model()->index(r, ProblemModel::MessageColumn).data().toString();
+    return rows;
+}
+
+bool showsProblem(const MapPage& page, const QString& part)
+{
+    const QStringList rows = shownProblems(page);
+    return std::any_of(rows.cbegin(), rows.cend(), [&](const QString& r) { return r.contains(part); });
+}
 } // namespace
 
 class TestMapPage : public QObject
@@ -66,6 +89,7 @@ class TestMapPage : public QObject
 private:
     TestServers m_servers;
     std::vector<std::unique_ptr<QProcess>> m_nodes;
+    QTemporaryDir m_settings; ///< the sessions' one settings folder, not the user's
 
     void rostopic(const QStringList& args)
     {
@@ -87,6 +111,7 @@ private slots:
     void initTestCase()
     {
         QStandardPaths::setTestModeEnabled(true);
+        GuiSession::useSettingsFolder(m_settings.path());
         QVERIFY(m_servers.startMosquitto());
         QVERIFY(m_servers.startRosMaster());
         const QProcessEnvironment env = m_servers.rosEnvironment();
@@ -314,6 +339,99 @@ private slots:
             w.grab().save(shots + u"/map.png"_s);
             traffic.stop();
         }
+    }
+
+    // Issue 45 on the Map page: a release chosen beside the Problems list is kept for the file
+    // across sessions (one settings folder) and changes what is flagged; what the broker carries
+    // adds the lab's traps to the same list (text with no mqtt_client type announced, #12/#78), and
+    // a Fast DDS discovery server in the environment is said once (#67).
+    void releaseKeptPerFileAndLabLints()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bridge.yaml"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("mqtt_client:\n"
+                "  ros__parameters:\n"
+                "    bridge:\n"
+                "      mqtt2ros:\n"
+                "        mqtt_topics: [plant/temperature, cloud/objects, site/humidity]\n"
+                "        plant/temperature:\n"
+                "          ros_topic: /plant/temperature\n"
+                "        cloud/objects:\n"
+                "          ros_topic: /cloud/objects\n"
+                "        site/humidity:\n"
+                "          ros_topic: /site/humidity\n"
+                "          primitive: true\n"
+                "          ros_type: std_msgs/msg/String\n");
+        f.close();
+        qputenv("ROS_DISCOVERY_SERVER", "127.0.0.1:11811");
+        const auto restore = qScopeGuard([] { qunsetenv("ROS_DISCOVERY_SERVER"); });
+        {
+            MainWindow w;
+            w.resize(1280, 800);
+            w.discoverPage()->connectBroker(MqttProfile::fromUrl(m_servers.brokerUrl()));
+            MapPage* page = mapPage(w);
+            QVERIFY(w.files()->openFile(path));
+            w.pages()->setCurrentWidget(page);
+            w.show();
+            auto* release = named<QComboBox>(*page, u"targetRelease"_s);
+            QCOMPARE(release->currentText(), u"auto"_s);
+            QTRY_VERIFY_WITH_TIMEOUT(w.session()->mqtt()->state() == MqttConnection::State::Connected, 10000);
+            // plant/temperature is retained text from a plain publisher; cloud/objects is mqtt_client's.
+            QTRY_VERIFY2_WITH_TIMEOUT(showsProblem(*page, u"'plant/temperature' carries messages"_s),
+                                      qPrintable(shownProblems(*page).join(u'\n')), 15000);
+            QVERIFY(!showsProblem(*page, u"'cloud/objects' carries messages"_s));
+            QVERIFY(!showsProblem(*page, u"'site/humidity' carries messages"_s));
+            QVERIFY(showsProblem(*page, u"ROS_DISCOVERY_SERVER=127.0.0.1:11811"_s));
+            QVERIFY(!showsProblem(*page, u"reads 'ros_type' from 2.3 on"_s));
+            if (const QString shots = qEnvironmentVariable("BRIDGESCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+                w.grab().save(shots + u"/map-release-lints.png"_s);
+
+            // The user picks 2.2 with the keyboard (Alt+G, Down): ros_type came with 2.3.
+            QVERIFY(QTest::qWaitForWindowActive(&w));
+            QTest::keyClick(&w, Qt::Key_G, Qt::AltModifier);
+            QTRY_VERIFY(release->hasFocus());
+            QTest::keyClick(release, Qt::Key_Down);
+            QCOMPARE(release->currentText(), u"2.2"_s);
+            QTRY_VERIFY2(showsProblem(*page, u"reads 'ros_type' from 2.3 on"_s),
+                         qPrintable(shownProblems(*page).join(u'\n')));
+            QVERIFY(release->toolTip().contains(u"2.2"_s));
+        }
+        {
+            // The next session, same settings: the file opens against 2.2 again.
+            MainWindow w;
+            w.resize(1280, 800);
+            MapPage* page = mapPage(w);
+            QVERIFY(w.files()->openFile(path));
+            auto* release = named<QComboBox>(*page, u"targetRelease"_s);
+            QCOMPARE(release->currentText(), u"2.2"_s);
+            QVERIFY(showsProblem(*page, u"reads 'ros_type' from 2.3 on"_s));
+            // Another file is not: it is checked against the newest release its layout loads.
+            w.files()->newFile();
+            QCOMPARE(release->currentText(), u"auto"_s);
+            QVERIFY(w.files()->openFile(path));
+            QCOMPARE(release->currentText(), u"2.2"_s);
+            // Back to auto: forgotten for the file.
+            release->setFocus();
+            QTest::keyClick(release, Qt::Key_Up);
+            QCOMPARE(release->currentText(), u"auto"_s);
+            QTRY_VERIFY(!showsProblem(*page, u"reads 'ros_type' from 2.3 on"_s));
+            QVERIFY(!ProblemsPanel::savedTarget(QFileInfo(path).absoluteFilePath()));
+        }
+        // What the settings file holds is not trusted: an entry without a tab or with a release no
+        // one has reads as auto, and the list is kept to its bound however long it was.
+        QStringList entries {u"no tab here"_s, u"2.9\t/x.yaml"_s, u"\t/y.yaml"_s};
+        for (int i = 0; i < 500; ++i)
+            entries << u"2.3\t/f%1.yaml"_s.arg(i);
+        QSettings().setValue(u"map/releaseTargets"_s, entries);
+        QVERIFY(!ProblemsPanel::savedTarget(u"/x.yaml"_s));
+        QVERIFY(!ProblemsPanel::savedTarget(u"/y.yaml"_s));
+        QCOMPARE(ProblemsPanel::savedTarget(u"/f7.yaml"_s), MqttClientRelease::V2_3);
+        ProblemsPanel::saveTarget(u"/z.yaml"_s, MqttClientRelease::V2_4_1);
+        QCOMPARE(QSettings().value(u"map/releaseTargets"_s).toStringList().size(),
+                 ProblemsPanel::kMaxSavedTargets);
+        QCOMPARE(ProblemsPanel::savedTarget(u"/z.yaml"_s), MqttClientRelease::V2_4_1);
     }
 };
 

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Names and options proposed for new mappings, and health from synthetic discovery data.
-#include "text/topicnames.h"
 #include "config/mappingfactory.h"
-#include "mqtt/mqttsource.h"
 #include "models/mqtttopictree.h"
+#include "mqtt/mqttsource.h"
 #include "ros/rosmasterapi.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2graph.h"
+#include "session/discoverylints.h"
 #include "session/flowrates.h"
 #include "session/mappinghealthevaluator.h"
+#include "text/topicnames.h"
 #include "wire/mqttclientwire.h"
 
 #include <QTest>
@@ -333,6 +334,130 @@ private slots:
         // Without the ROS 2 domain, nothing is claimed, and the message says which side.
         in.rosReachable = false;
         QCOMPARE(MappingHealthEvaluator::evaluate(cfg, in)[autoQos.id].summary, u"ROS 2 domain not joined"_s);
+    }
+
+    // Issue 45: the traps of mqtt_client's tracker that only the lab shows, one case each, with a
+    // case beside it that must not be flagged.
+    void discoveryLints()
+    {
+        BridgeConfig cfg;
+        cfg.layout = ConfigLayout::Ros2;
+        const Mapping plain = Mapping::create(Direction::Mqtt2Ros, u"/plant/temp"_s, u"plant/temp"_s);
+        const Mapping announced
+            = Mapping::create(Direction::Mqtt2Ros, u"/cloud/objects"_s, u"cloud/objects"_s);
+        Mapping primitive = Mapping::create(Direction::Mqtt2Ros, u"/site/hum"_s, u"site/hum"_s);
+        primitive.set(u"primitive"_s, u"true"_s);
+        const Mapping twoTypes = Mapping::create(Direction::Ros2Mqtt, u"/mixed"_s, u"mixed"_s);
+        Mapping fixedTwoTypes = Mapping::create(Direction::Ros2Mqtt, u"/mixed"_s, u"mixed2"_s);
+        fixedTwoTypes.set(u"ros_type"_s, u"std_msgs/msg/String"_s);
+        Mapping fixedNobody = Mapping::create(Direction::Ros2Mqtt, u"/odom"_s, u"odom"_s);
+        fixedNobody.set(u"ros_type"_s, u"nav_msgs/msg/Path"_s);
+        Mapping reliable = Mapping::create(Direction::Ros2Mqtt, u"/scan"_s, u"scan"_s);
+        reliable.set(u"advanced.ros.qos.reliability"_s, u"reliable"_s);
+        const Mapping autoQos = Mapping::create(Direction::Ros2Mqtt, u"/scan"_s, u"scan2"_s);
+        cfg.mappings = {plain, announced, primitive, twoTypes, fixedTwoTypes, fixedNobody, reliable, autoQos};
+
+        auto endpoint = [](int n, const QString& topic, const QString& type, Ros2Qos::Reliability r) {
+            Ros2Endpoint e;
+            e.gid = QByteArray(15, '\2') + char(n);
+            e.topic = topic;
+            e.type = type;
+            e.qos.reliability = r;
+            e.node = u"/n%1"_s.arg(n);
+            return e;
+        };
+        const Ros2Graph ros2
+            = Ros2Graph::build({endpoint(1, u"/mixed"_s, u"std_msgs/msg/String"_s, Ros2Qos::Reliable),
+                                endpoint(2, u"/mixed"_s, u"std_msgs/msg/Float64"_s, Ros2Qos::Reliable),
+                                endpoint(3, u"/odom"_s, u"nav_msgs/msg/Odometry"_s, Ros2Qos::Reliable),
+                                endpoint(4, u"/scan"_s, u"sensor_msgs/msg/LaserScan"_s, Ros2Qos::BestEffort)},
+                               {}, 2);
+        TopicGraph graph;
+        for (const Ros2Topic& t : ros2.topics)
+            graph.topics.append({t.name, t.type(), {u"/x"_s}, {}});
+
+        MqttTopicTree tree;
+        const qint64 now = 100'000'000'000LL;
+        std::vector<MqttMessage> batch;
+        RosMsgTypeInfo pose {u"d3812c3cbc69362b77dc0b19b345f8f5"_s, u"geometry_msgs/PoseStamped"_s,
+                             u"Header header"_s, false};
+        batch.push_back(
+            {u"mqtt_client/ros_msg_type/cloud/objects"_s, MqttClientWire::encodeType(pose), now, 0, true});
+        for (const QString& t : {u"plant/temp"_s, u"cloud/objects"_s, u"site/hum"_s})
+            batch.push_back({t, "21.5", now - 1'000'000'000LL, 0, false});
+        const QHash<QString, TopicFigures> mqtt = mqttFigures(tree, cfg, std::move(batch), now);
+        MappingHealthEvaluator::Inputs in;
+        in.graph = &graph;
+        in.ros2 = &ros2;
+        in.rosReachable = true;
+        in.mqtt = &mqtt;
+        in.mqttConnected = true;
+        in.nowNs = now;
+
+        auto codesOf = [](const QList<Problem>& problems, const Mapping& m) {
+            QStringList codes;
+            for (const Problem& p : problems)
+                if (p.mappingId == m.id)
+                    codes << p.code;
+            return codes;
+        };
+        auto find = [](const QList<Problem>& problems, const QString& code, quint64 id) {
+            for (const Problem& p : problems)
+                if (p.code == code && p.mappingId == id)
+                    return p;
+            return Problem();
+        };
+        QList<Problem> lints = DiscoveryLints::check(cfg, in, {});
+        // #12, #78: text on a topic mqtt_client reads as ROS messages, with no type announced.
+        QCOMPARE(codesOf(lints, plain), QStringList {u"non-ros-publisher"_s});
+        const Problem nonRos = find(lints, u"non-ros-publisher"_s, plain.id);
+        QCOMPARE(nonRos.severity, Severity::Warning);
+        QVERIFY2(nonRos.message.contains(u"#12, #78"_s), qPrintable(nonRos.message));
+        QVERIFY2(nonRos.fix.contains(u"primitive: true"_s) && nonRos.fix.contains(u"json: true"_s),
+                 qPrintable(nonRos.fix));
+        QCOMPARE(codesOf(lints, announced), QStringList()); // mqtt_client's own, announced
+        QCOMPARE(codesOf(lints, primitive), QStringList()); // read as text
+        // #15, #45: two types on one topic, the bridge takes whichever it meets first.
+        QCOMPARE(codesOf(lints, twoTypes), QStringList {u"ros-type-changes"_s});
+        QVERIFY2(find(lints, u"ros-type-changes"_s, twoTypes.id).message.contains(u"std_msgs/msg/Float64"_s),
+                 qPrintable(find(lints, u"ros-type-changes"_s, twoTypes.id).message));
+        QCOMPARE(codesOf(lints, fixedTwoTypes), QStringList()); // ros_type decides
+        QCOMPARE(codesOf(lints, fixedNobody), QStringList {u"ros-type-changes"_s});
+        QVERIFY(find(lints, u"ros-type-changes"_s, fixedNobody.id).fix.contains(u"nav_msgs/msg/Odometry"_s));
+        // #48: a reliable subscription to a best-effort publisher never matches; auto takes its QoS.
+        QCOMPARE(codesOf(lints, reliable), QStringList {u"qos-incompatible"_s});
+        QVERIFY(
+            find(lints, u"qos-incompatible"_s, reliable.id).message.contains(u"/n4 publishes best effort"_s));
+        QCOMPARE(codesOf(lints, autoQos), QStringList());
+        QVERIFY(std::none_of(lints.cbegin(), lints.cend(),
+                             [](const Problem& p) { return p.code == u"fastdds-discovery-server"_s; }));
+
+        // Older releases get fixes they can load: no json before 2.5, no ros_type before 2.3.
+        DiscoveryLints::Options old;
+        old.target = MqttClientRelease::V2_2;
+        lints = DiscoveryLints::check(cfg, in, old);
+        const Problem oldNonRos = find(lints, u"non-ros-publisher"_s, plain.id);
+        QVERIFY2(!oldNonRos.fix.contains(u"json"_s) && !oldNonRos.fix.contains(u"ros_type"_s),
+                 qPrintable(oldNonRos.fix));
+        QVERIFY(find(lints, u"ros-type-changes"_s, twoTypes.id).fix.contains(u"2.3"_s));
+
+        // #67: a Fast DDS discovery server in the lab, said once for the file.
+        DiscoveryLints::Options server;
+        server.discoveryServer = u"127.0.0.1:11811"_s;
+        lints = DiscoveryLints::check(cfg, in, server);
+        const Problem ds = find(lints, u"fastdds-discovery-server"_s, 0);
+        QVERIFY2(ds.message.contains(u"ROS_DISCOVERY_SERVER=127.0.0.1:11811"_s)
+                     && ds.message.contains(u"#67"_s),
+                 qPrintable(ds.message));
+        QVERIFY(ds.fix.contains(u"ROS_SUPER_CLIENT=TRUE"_s));
+        BridgeConfig ros1 = cfg;
+        ros1.layout = ConfigLayout::Ros1; // mqtt_client's ROS 1 node has no DDS
+        QCOMPARE(find(DiscoveryLints::check(ros1, in, server), u"fastdds-discovery-server"_s, 0).code,
+                 QString());
+
+        // Nothing is claimed about a side that cannot be seen.
+        in.mqttConnected = false;
+        QCOMPARE(codesOf(DiscoveryLints::check(cfg, in, {}), plain), QStringList());
     }
 };
 

@@ -7,6 +7,7 @@
 #include "config/mappingmodel.h"
 #include "models/mqtttopicfilter.h"
 #include "models/mqtttopictree.h"
+#include "session/discoverylints.h"
 #include "session/graphstatus.h"
 #include "session/mappinghealthevaluator.h"
 #include "topics/topictablemodel.h"
@@ -497,6 +498,11 @@ void MapPage::updateHealth()
     in.flows = &m_flows;
     const QHash<quint64, MappingHealth> shown = MappingHealthEvaluator::evaluate(m_doc->config(), in);
     m_editor->model()->setHealth(shown);
+    // The traps only the running lab shows go to the Problems list (issue 45).
+    DiscoveryLints::Options lint;
+    lint.target = m_doc->validationOptions().target;
+    lint.discoveryServer = qEnvironmentVariable("ROS_DISCOVERY_SERVER");
+    m_doc->setDiscoveryProblems(DiscoveryLints::check(m_doc->config(), in, lint));
     if (!m_tabs)
         return;
     for (int i = 0; i < m_files->openCount(); ++i)

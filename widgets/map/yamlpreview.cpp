@@ -81,21 +81,6 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     label->setBuddy(m_layout);
     h->addWidget(label);
     h->addWidget(m_layout);
-    // Issue 45: the release checked against; keys it does not read are flagged with the release
-    // that brings them. "auto" is the newest release that loads the layout.
-    m_release = new QComboBox(this);
-    m_release->setObjectName(u"targetRelease"_s);
-    m_release->addItem(tr("auto"), QString());
-    for (const QString& name : MqttClientReleases::names())
-        m_release->addItem(name, name);
-    m_release->setToolTip(tr("The mqtt_client release the config is checked against. Keys it does not "
-                             "read are flagged with the release that brings them; auto is the newest "
-                             "release that loads the layout."));
-    auto* releaseLabel = new QLabel(tr("mqtt_client &release:"), this);
-    releaseLabel->setBuddy(m_release);
-    h->addSpacing(12);
-    h->addWidget(releaseLabel);
-    h->addWidget(m_release);
     h->addStretch(1);
     v->addLayout(h);
     m_note = new QLabel(this);
@@ -128,11 +113,6 @@ YamlPreview::YamlPreview(ConfigDocument* document, QWidget* parent)
     });
     connect(m_doc, &ConfigDocument::layoutChanged, this, [this](ConfigLayout l) { setLayout(l); });
     connect(m_layout, &QComboBox::currentIndexChanged, this, later);
-    connect(m_release, &QComboBox::currentIndexChanged, this, [this] {
-        ConfigValidator::Options options = m_doc->validationOptions();
-        options.target = MqttClientReleases::fromName(m_release->currentData().toString());
-        m_doc->setValidationOptions(options); // the problems change, and the preview with them
-    });
     m_stale = true;
 }
 

@@ -32,7 +32,6 @@ public:
 private:
     ConfigDocument* m_doc;
     QComboBox* m_layout;
-    QComboBox* m_release; ///< the mqtt_client release the config is checked against
     QLabel* m_note;
     QPlainTextEdit* m_text;
     QTimer* m_timer;
