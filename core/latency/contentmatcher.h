@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <QByteArrayView>
+#include <QHash>
+#include <QtGlobal>
+
+/// What both ends of a bridge can tell of one message's content without a stamp (issue 45): a hash
+/// of its bytes and their count. mqtt_client sends a ROS message's serialization as it is (after
+/// the injected stamp when stamped), so the message going into a bridge and the payload coming out
+/// have one key. At most kHashedBytes are hashed (bounded work per message); two messages that
+/// differ only past them, with one size, have one key and are told apart no better than identical
+/// ones (ContentMatcher counts them as ambiguous).
+struct ContentKey
+{
+    quint64 hash = 0;
+    qsizetype size = 0;
+
+    static constexpr qsizetype kHashedBytes = 4096;
+    static ContentKey of(QByteArrayView bytes);
+    /// An MQTT payload of mqtt_client's wire: the message after `stampBytes` of injected stamp
+    /// (MqttClientWire::stampBytes(), 0 when not stamped); nullopt when the payload is shorter.
+    static std::optional<ContentKey> ofPayload(QByteArrayView payload, qsizetype stampBytes);
+
+    bool operator==(const ContentKey& o) const { return hash == o.hash && size == o.size; }
+};
+
+inline size_t qHash(const ContentKey& key, size_t seed = 0) noexcept
+{
+    return qHashMulti(seed, key.hash, key.size);
+}
+
+/// Matches the messages that go into a bridge with those that come out of it by their content, in
+/// arrival order, with bounded state: the hop latency of each message Bridgescope sees at both ends
+/// (on its one clock), what never arrives (loss) and what cannot be told apart.
+///
+/// Both ends are held alike: a message seen at one end waits for its copy at the other, so a copy
+/// that Bridgescope happens to get before the original is matched too (its latency is then
+/// negative: the two subscriptions' delivery, not the bridge). A message waits at most `maxWaitNs`:
+/// an original that waited that long is lost, a copy that did is an arrival nobody sent through the
+/// bridge (another publisher on the destination). At most `maxPending` wait at each end; beyond
+/// it the oldest is dropped unjudged and counted. Identical contents in flight at one time cannot be
+/// told apart: each such match is counted as ambiguous and gives no latency.
+///
+/// Work per message: a hash lookup and a deque step; expiry is amortised over the messages.
+class ContentMatcher
+{
+public:
+    struct Limits
+    {
+        std::size_t maxPending = 512;
+        qint64 maxWaitNs = 2'000'000'000LL;
+    };
+    struct Counts
+    {
+        quint64 sources = 0; ///< messages seen going in
+        quint64 destinations = 0; ///< messages seen coming out
+        quint64 matched = 0; ///< with a latency
+        quint64 ambiguous = 0; ///< matched to one of several identical contents: no latency
+        quint64 lost = 0; ///< went in, did not come out within maxWaitNs
+        quint64 unexplained = 0; ///< came out with nothing gone in within maxWaitNs
+        quint64 overflow = 0; ///< dropped unjudged: more than maxPending waited at one end
+        /// Lost among the messages judged (matched, ambiguous or lost); 0 before any.
+        double lossRatio() const
+        {
+            const quint64 judged = matched + ambiguous + lost;
+            return judged ? double(lost) / double(judged) : 0.0;
+        }
+    };
+
+    ContentMatcher();
+    explicit ContentMatcher(Limits limits);
+
+    /// A message went into the bridge at `ns`: the latency (ns) when its copy came out before and
+    /// is told apart.
+    std::optional<qint64> source(const ContentKey& key, qint64 ns);
+    /// A message came out at `ns`: its latency (ns) when it matches one message that went in.
+    std::optional<qint64> destination(const ContentKey& key, qint64 ns);
+    /// Judges what waited past maxWaitNs at `nowNs` (source() and destination() do it as they go).
+    void expire(qint64 nowNs);
+
+    const Counts& counts() const { return m_counts; }
+    /// Messages waiting at both ends: the state held now.
+    std::size_t pending() const { return m_in.size() + m_out.size(); }
+    void clear();
+
+private:
+    /// The messages of one end that wait for their copies, oldest first.
+    class End
+    {
+    public:
+        enum class Take { None, Unique, Ambiguous };
+        /// Consumes the oldest waiting message with `key`; `ns` is its time when Unique.
+        Take take(const ContentKey& key, qint64* ns);
+        /// Adds a message; false when it made room by dropping the oldest (counted by the caller).
+        bool add(const ContentKey& key, qint64 ns, std::size_t maxPending);
+        /// Drops the oldest when it waited past `beforeNs` (or `force`): true when it went unmatched.
+        bool expireOldest(qint64 beforeNs, bool force, bool* dropped);
+        std::size_t size() const { return m_entries.size(); }
+        void clear();
+
+    private:
+        struct Entry
+        {
+            ContentKey key;
+            qint64 ns = 0;
+            bool taken = false;
+        };
+        struct Slot
+        {
+            quint64 firstSeq = 0; ///< the oldest waiting entry with the key, while it is unique
+            int waiting = 0; ///< entries with the key in m_entries, taken ones included
+            int taken = 0; ///< of those, consumed by ambiguous matches (taken from the oldest on)
+            bool ambiguous = false; ///< two with the key waited at once
+        };
+        std::deque<Entry> m_entries;
+        quint64 m_base = 0; ///< the sequence number of m_entries.front()
+        QHash<ContentKey, Slot> m_slots;
+    };
+
+    std::optional<qint64> arrive(End& here, End& there, const ContentKey& key, qint64 ns, bool isSource);
+
+    Limits m_limits;
+    End m_in; ///< gone in, waiting to come out
+    End m_out; ///< come out, waiting for what went in
+    Counts m_counts;
+};

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Issue 45: the two ends of a bridge matched by content, without stamps: latency per message, loss,
+// what cannot be told apart, and the bound on what is held.
+#include "fixtures.h"
+#include "latency/contentmatcher.h"
+#include "wire/mqttclientwire.h"
+
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qint64 kMs = 1'000'000;
+
+ContentKey keyOf(int n)
+{
+    return ContentKey::of(QByteArray::number(n).repeated(3));
+}
+} // namespace
+
+class TestContentMatcher : public QObject
+{
+    Q_OBJECT
+private slots:
+    // What mqtt_client put on the broker (captured from v2.2.1) has the key of what went in on ROS:
+    // the std_msgs/String after its 8-byte injected stamp is the ROS serialization rostopic sent.
+    void aStampedPayloadHasItsMessagesKey()
+    {
+        const QByteArray payload = Fixtures::read(u"mqtt_client/wire/string_stamped.payload.bin"_s);
+        const QByteArray ros("\x0a\x00\x00\x00hello mqtt", 14);
+        const auto key = ContentKey::ofPayload(payload, MqttClientWire::kRos1StampBytes);
+        QVERIFY(key);
+        QCOMPARE(*key, ContentKey::of(ros));
+        QVERIFY(!(ContentKey::of(payload) == ContentKey::of(ros))); // the stamp is not content
+        // ROS 2's stamp is 12 bytes of CDR, written by the same function mqtt_client's wire has.
+        const QByteArray cdr = QByteArray("\x00\x01\x00\x00", 4) + ros;
+        const QByteArray ros2
+            = MqttClientWire::stamped(1'700'000'000'123'456'789LL, cdr, MqttClientWire::Dialect::Ros2);
+        QCOMPARE(*ContentKey::ofPayload(ros2, MqttClientWire::kRos2StampBytes), ContentKey::of(cdr));
+        QVERIFY(!ContentKey::ofPayload(QByteArray(5, 'x'), MqttClientWire::kRos1StampBytes));
+    }
+
+    // At most kHashedBytes are read: a change past them with one size is one key (and so
+    // ambiguous when both are in flight); a change of size is not.
+    void hashingIsBounded()
+    {
+        QByteArray a(3 * ContentKey::kHashedBytes, 'a');
+        QByteArray b = a;
+        b[2 * ContentKey::kHashedBytes] = 'b';
+        QCOMPARE(ContentKey::of(a), ContentKey::of(b));
+        QVERIFY(!(ContentKey::of(a) == ContentKey::of(a.chopped(1))));
+        b = a;
+        b[10] = 'b';
+        QVERIFY(!(ContentKey::of(a) == ContentKey::of(b)));
+    }
+
+    void everyMessageGetsItsLatency()
+    {
+        ContentMatcher m;
+        QList<qint64> latencies;
+        for (int i = 0; i < 100; ++i) {
+            const qint64 t = 1000 * kMs + i * 10 * kMs;
+            QVERIFY(!m.source(keyOf(i), t));
+            const auto l = m.destination(keyOf(i), t + kMs / 3 + i);
+            QVERIFY(l);
+            latencies << *l;
+        }
+        QCOMPARE(latencies.first(), kMs / 3);
+        QCOMPARE(latencies.last(), kMs / 3 + 99);
+        QCOMPARE(m.counts().matched, 100u);
+        QCOMPARE(m.counts().lost, 0u);
+        QVERIFY(m.pending() > 0); // matched ones leave once past the window, unjudged by then
+        m.expire(10'000 * kMs);
+        QCOMPARE(m.pending(), 0u);
+        QCOMPARE(m.counts().lost, 0u);
+    }
+
+    // A bridge that drops every tenth message: 10 % loss once they waited past the window.
+    void everyTenthDroppedIsTenPercentLoss()
+    {
+        ContentMatcher m;
+        qint64 t = 0;
+        for (int i = 0; i < 1000; ++i) {
+            t = i * 10 * kMs;
+            m.source(keyOf(i), t);
+            if (i % 10 != 9)
+                QVERIFY(m.destination(keyOf(i), t + kMs));
+        }
+        QCOMPARE(m.counts().matched, 900u);
+        QVERIFY(m.counts().lost < 100u); // the last ones still wait
+        m.expire(t + 3000 * kMs);
+        QCOMPARE(m.counts().lost, 100u);
+        QCOMPARE(m.counts().lossRatio(), 0.1);
+        QCOMPARE(m.counts().unexplained, 0u);
+        QCOMPARE(m.pending(), 0u);
+    }
+
+    // Bridgescope's two subscriptions may deliver the copy first: matched, with the negative
+    // latency that says so, not a loss and an unexplained arrival.
+    void aCopySeenFirstIsMatched()
+    {
+        ContentMatcher m;
+        QVERIFY(!m.destination(keyOf(1), 100 * kMs));
+        const auto l = m.source(keyOf(1), 100 * kMs + 50'000);
+        QVERIFY(l);
+        QCOMPARE(*l, -50'000);
+        m.expire(10'000 * kMs);
+        QCOMPARE(m.counts().matched, 1u);
+        QCOMPARE(m.counts().lost + m.counts().unexplained, 0u);
+    }
+
+    // The same content twice in flight cannot be told apart: both matches count as ambiguous,
+    // give no latency, and neither is lost; the next distinct content is matched again.
+    void identicalContentsAreAmbiguous()
+    {
+        ContentMatcher m;
+        const ContentKey same = ContentKey::of("21.5");
+        m.source(same, 0);
+        m.source(same, 10 * kMs);
+        QVERIFY(!m.destination(same, 11 * kMs));
+        QVERIFY(!m.destination(same, 12 * kMs));
+        QCOMPARE(m.counts().ambiguous, 2u);
+        QVERIFY(!m.destination(same, 13 * kMs)); // a third copy: nothing went in for it
+        m.source(keyOf(7), 20 * kMs);
+        QCOMPARE(m.destination(keyOf(7), 21 * kMs), std::optional<qint64>(kMs));
+        m.expire(10'000 * kMs);
+        QCOMPARE(m.counts().lost, 0u);
+        QCOMPARE(m.counts().unexplained, 1u);
+        QCOMPARE(m.counts().matched, 1u);
+        QCOMPARE(m.pending(), 0u);
+        // Identical contents one after another, each through before the next: each is matched.
+        for (int i = 0; i < 5; ++i) {
+            m.source(same, 20'000 * kMs + i * kMs);
+            QVERIFY(m.destination(same, 20'000 * kMs + i * kMs + 1000));
+            m.expire(20'000 * kMs + i * kMs + 1000 + 3000 * kMs); // the matched one leaves
+        }
+        QCOMPARE(m.counts().matched, 6u);
+    }
+
+    // A hostile or broken peer cannot make it hold more than its bound: the oldest go unjudged,
+    // counted.
+    void stateIsBounded()
+    {
+        ContentMatcher m({8, 2000 * kMs});
+        for (int i = 0; i < 100; ++i)
+            m.source(keyOf(i), i);
+        for (int i = 0; i < 100; ++i)
+            m.destination(keyOf(1000 + i), 200 + i);
+        QCOMPARE(m.pending(), 16u);
+        QCOMPARE(m.counts().overflow, 184u);
+        QCOMPARE(m.destination(keyOf(99), 1000), std::optional<qint64>(1000 - 99)); // the newest stay
+        QVERIFY(!m.destination(keyOf(0), 1001)); // the oldest were dropped
+        m.clear();
+        QCOMPARE(m.pending(), 0u);
+        QCOMPARE(m.counts().sources, 0u);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestContentMatcher)
+#include "tst_contentmatcher.moc"
