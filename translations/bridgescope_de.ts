@@ -3985,6 +3985,30 @@ factors:
         <source>(announced by a bridge)</source>
         <translation>(von einer Bridge angekündigt)</translation>
     </message>
+    <message>
+        <source>Observed hop latency: not for primitive and JSON links yet (their two ends carry different bytes).</source>
+        <translation>Beobachtete Latenz des Abschnitts: noch nicht für primitive und JSON-Links (ihre beiden Enden tragen verschiedene Bytes).</translation>
+    </message>
+    <message>
+        <source>Observed hop latency: needs both ends; only the MQTT end of a discovered link is watched.</source>
+        <translation>Beobachtete Latenz des Abschnitts: braucht beide Enden; von einem entdeckten Link wird nur das MQTT-Ende beobachtet.</translation>
+    </message>
+    <message>
+        <source>Observed hop latency: each message seen going in matched by its content with the copy seen coming out, on this computer&apos;s clock, over the last 60 s (median). Matched %1, lost %2, identical contents not told apart %3, arrived with nothing seen going in %4.</source>
+        <translation>Beobachtete Latenz des Abschnitts: jede hineingehende Nachricht über ihren Inhalt mit der herauskommenden Kopie verknüpft, nach der Uhr dieses Rechners, über die letzten 60 s (Median). Zugeordnet %1, verloren %2, gleiche Inhalte nicht unterscheidbar %3, angekommen ohne gesehenen Eingang %4.</translation>
+    </message>
+    <message>
+        <source>%1 dropped unjudged: more waited than the matcher holds.</source>
+        <translation>%1 unbeurteilt verworfen: es warteten mehr, als die Zuordnung hält.</translation>
+    </message>
+    <message>
+        <source>Negative: this computer got the copies before the originals (its two subscriptions&apos; delivery, not the bridge).</source>
+        <translation>Negativ: dieser Rechner bekam die Kopien vor den Originalen (die Zustellung seiner beiden Abonnements, nicht die Bridge).</translation>
+    </message>
+    <message>
+        <source>Observed ms</source>
+        <translation>Beobachtet ms</translation>
+    </message>
 </context>
 <context>
     <name>LinkMonitor</name>

@@ -3,21 +3,6 @@
 
 #include <algorithm>
 
-ContentKey ContentKey::of(QByteArrayView bytes)
-{
-    ContentKey key;
-    key.size = bytes.size();
-    key.hash = qHashBits(bytes.data(), size_t(std::min(bytes.size(), kHashedBytes)), 0);
-    return key;
-}
-
-std::optional<ContentKey> ContentKey::ofPayload(QByteArrayView payload, qsizetype stampBytes)
-{
-    if (stampBytes < 0 || payload.size() < stampBytes)
-        return std::nullopt;
-    return of(payload.sliced(stampBytes));
-}
-
 ContentMatcher::ContentMatcher()
     : ContentMatcher(Limits())
 { }
@@ -41,6 +26,11 @@ ContentMatcher::End::Take ContentMatcher::End::take(const ContentKey& key, qint6
     e.taken = true;
     *ns = e.ns;
     m_slots.erase(it); // it was the only one waiting
+    // In order, as a bridge delivers: what was matched leaves at once, the state stays small.
+    while (!m_entries.empty() && m_entries.front().taken) {
+        m_entries.pop_front();
+        ++m_base;
+    }
     return Take::Unique;
 }
 
@@ -63,7 +53,7 @@ bool ContentMatcher::End::add(const ContentKey& key, qint64 ns, std::size_t maxP
     return !droppedUnmatched;
 }
 
-bool ContentMatcher::End::expireOldest(qint64 beforeNs, bool force, bool* unmatched)
+bool ContentMatcher::End::expireOldest(qint64 beforeNs, bool force, bool* unmatched, qint64* ns)
 {
     *unmatched = false;
     if (m_entries.empty() || (!force && m_entries.front().ns >= beforeNs))
@@ -71,6 +61,8 @@ bool ContentMatcher::End::expireOldest(qint64 beforeNs, bool force, bool* unmatc
     const Entry e = m_entries.front();
     m_entries.pop_front();
     ++m_base;
+    if (ns)
+        *ns = e.ns;
     if (e.taken)
         return true;
     const auto it = m_slots.find(e.key);
@@ -91,14 +83,25 @@ void ContentMatcher::End::clear()
     m_base = 0;
 }
 
+void ContentMatcher::judge(qint64 ns, std::optional<qint64> otherFirstNs, quint64* count)
+{
+    if (otherFirstNs && ns >= *otherFirstNs)
+        ++*count;
+    else
+        ++m_counts.unjudged;
+}
+
 void ContentMatcher::expire(qint64 nowNs)
 {
     const qint64 before = nowNs - m_limits.maxWaitNs;
     bool unmatched = false;
-    while (m_in.expireOldest(before, false, &unmatched))
-        m_counts.lost += unmatched;
-    while (m_out.expireOldest(before, false, &unmatched))
-        m_counts.unexplained += unmatched;
+    qint64 ns = 0;
+    while (m_in.expireOldest(before, false, &unmatched, &ns))
+        if (unmatched)
+            judge(ns, m_firstOut, &m_counts.lost);
+    while (m_out.expireOldest(before, false, &unmatched, &ns))
+        if (unmatched)
+            judge(ns, m_firstIn, &m_counts.unexplained);
 }
 
 std::optional<qint64> ContentMatcher::arrive(End& here, End& there, const ContentKey& key, qint64 ns,
@@ -124,18 +127,29 @@ std::optional<qint64> ContentMatcher::arrive(End& here, End& there, const Conten
 std::optional<qint64> ContentMatcher::source(const ContentKey& key, qint64 ns)
 {
     ++m_counts.sources;
+    if (!m_firstIn)
+        m_firstIn = ns;
     return arrive(m_in, m_out, key, ns, true);
 }
 
 std::optional<qint64> ContentMatcher::destination(const ContentKey& key, qint64 ns)
 {
     ++m_counts.destinations;
+    if (!m_firstOut)
+        m_firstOut = ns;
     return arrive(m_out, m_in, key, ns, false);
+}
+
+void ContentMatcher::restart()
+{
+    m_in.clear();
+    m_out.clear();
+    m_firstIn.reset();
+    m_firstOut.reset();
 }
 
 void ContentMatcher::clear()
 {
-    m_in.clear();
-    m_out.clear();
+    restart();
     m_counts = {};
 }

@@ -1,36 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "wire/contentkey.h"
+
 #include <deque>
 #include <optional>
-#include <QByteArrayView>
 #include <QHash>
 #include <QtGlobal>
-
-/// What both ends of a bridge can tell of one message's content without a stamp (issue 45): a hash
-/// of its bytes and their count. mqtt_client sends a ROS message's serialization as it is (after
-/// the injected stamp when stamped), so the message going into a bridge and the payload coming out
-/// have one key. At most kHashedBytes are hashed (bounded work per message); two messages that
-/// differ only past them, with one size, have one key and are told apart no better than identical
-/// ones (ContentMatcher counts them as ambiguous).
-struct ContentKey
-{
-    quint64 hash = 0;
-    qsizetype size = 0;
-
-    static constexpr qsizetype kHashedBytes = 4096;
-    static ContentKey of(QByteArrayView bytes);
-    /// An MQTT payload of mqtt_client's wire: the message after `stampBytes` of injected stamp
-    /// (MqttClientWire::stampBytes(), 0 when not stamped); nullopt when the payload is shorter.
-    static std::optional<ContentKey> ofPayload(QByteArrayView payload, qsizetype stampBytes);
-
-    bool operator==(const ContentKey& o) const { return hash == o.hash && size == o.size; }
-};
-
-inline size_t qHash(const ContentKey& key, size_t seed = 0) noexcept
-{
-    return qHashMulti(seed, key.hash, key.size);
-}
 
 /// Matches the messages that go into a bridge with those that come out of it by their content, in
 /// arrival order, with bounded state: the hop latency of each message Bridgescope sees at both ends
@@ -62,6 +38,9 @@ public:
         quint64 lost = 0; ///< went in, did not come out within maxWaitNs
         quint64 unexplained = 0; ///< came out with nothing gone in within maxWaitNs
         quint64 overflow = 0; ///< dropped unjudged: more than maxPending waited at one end
+        /// Went unmatched, but waited from before the other end's first message (since the start or
+        /// restart()): the other end's subscription may not have been up; neither lost nor unexplained.
+        quint64 unjudged = 0;
         /// Lost among the messages judged (matched, ambiguous or lost); 0 before any.
         double lossRatio() const
         {
@@ -82,6 +61,9 @@ public:
     void expire(qint64 nowNs);
 
     const Counts& counts() const { return m_counts; }
+    /// Forgets what waits, unjudged, and judges as after a start (the counts stay): after the
+    /// watcher lost sight of an end, whose subscription is made again.
+    void restart();
     /// Messages waiting at both ends: the state held now.
     std::size_t pending() const { return m_in.size() + m_out.size(); }
     void clear();
@@ -96,8 +78,9 @@ private:
         Take take(const ContentKey& key, qint64* ns);
         /// Adds a message; false when it made room by dropping the oldest (counted by the caller).
         bool add(const ContentKey& key, qint64 ns, std::size_t maxPending);
-        /// Drops the oldest when it waited past `beforeNs` (or `force`): true when it went unmatched.
-        bool expireOldest(qint64 beforeNs, bool force, bool* dropped);
+        /// Drops the oldest when it waited past `beforeNs` (or `force`): true when one was dropped;
+        /// `*unmatched` whether it went without its copy, `*ns` its time.
+        bool expireOldest(qint64 beforeNs, bool force, bool* unmatched, qint64* ns = nullptr);
         std::size_t size() const { return m_entries.size(); }
         void clear();
 
@@ -121,9 +104,14 @@ private:
     };
 
     std::optional<qint64> arrive(End& here, End& there, const ContentKey& key, qint64 ns, bool isSource);
+    /// An unmatched message of one end judged: lost (or unexplained) when the other end had been
+    /// heard from by then, else unjudged.
+    void judge(qint64 ns, std::optional<qint64> otherFirstNs, quint64* count);
 
     Limits m_limits;
     End m_in; ///< gone in, waiting to come out
     End m_out; ///< come out, waiting for what went in
     Counts m_counts;
+    std::optional<qint64> m_firstIn; ///< the first message in since the start or restart()
+    std::optional<qint64> m_firstOut;
 };

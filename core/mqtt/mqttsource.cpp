@@ -16,10 +16,23 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
     if (m_monitored.isEmpty() && m_taps.empty())
         return;
     QHash<QString, QString> types; // a watched topic's announced type, looked up once per batch
+    QHash<QString, qint8> stamps; // a monitored topic's injected stamp bytes, once per batch
     for (const MqttMessage& m : batch) {
-        if (m_heads.active() && m_monitored.contains(m.topic))
-            m_heads.deliver({SourceGraph::Mqtt, m.topic, m.receivedNs, int(m.payload.size()),
-                             m.payload.left(SourceHead::kHeadBytes)});
+        if (m_heads.active() && m_monitored.contains(m.topic)) {
+            auto stamp = stamps.find(m.topic);
+            if (stamp == stamps.end()) {
+                const auto announced = m_topics->announcedType(m.topic);
+                stamp = stamps.insert(m.topic,
+                                      announced && announced->stamped
+                                          ? qint8(MqttClientWire::stampBytes(announced->dialect))
+                                          : qint8(0));
+            }
+            SourceHead head {SourceGraph::Mqtt, m.topic, m.receivedNs, int(m.payload.size()),
+                             m.payload.left(SourceHead::kHeadBytes),
+                             // the content after mqtt_client's stamp is the ROS message's (issue 45)
+                             ContentKey::ofPayload(m.payload, *stamp), *stamp};
+            m_heads.deliver(std::move(head));
+        }
         if (m_taps.tapped(m.topic)) {
             auto type = types.find(m.topic);
             if (type == types.end()) {

@@ -99,7 +99,8 @@ struct RosMonitor::Private
             ++typesLearned;
         }
         if (heads.active())
-            heads.deliver({SourceGraph::Ros1, topic, now, t.stats.lastSize, bytes.left(SourceHead::kHeadBytes)});
+            heads.deliver({SourceGraph::Ros1, topic, now, t.stats.lastSize,
+                           bytes.left(SourceHead::kHeadBytes), ContentKey::of(bytes)});
         taps.deliver({SourceGraph::Ros1, topic, {}, now, bytes}); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
         t.rates.add(now, t.stats.lastSize);

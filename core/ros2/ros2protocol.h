@@ -109,6 +109,13 @@ public:
     void field(const QByteArray& v) { bytes(v); }
     void field(const QString& v) { string(v); }
     void field(const QStringList& v) { strings(v); }
+    /// A content key: a byte saying whether there is one, its hash and its size.
+    void field(const std::optional<ContentKey>& v)
+    {
+        u8(v ? 1 : 0);
+        u64(v ? v->hash : 0);
+        i64(v ? v->size : 0);
+    }
     /// An enum in one byte; `max` is for the reader.
     template <class E>
     void enumeration(E v, int /*max*/)
@@ -173,6 +180,18 @@ public:
     void field(QByteArray& v) { v = bytes(); }
     void field(QString& v) { v = string(); }
     void field(QStringList& v) { v = strings(); }
+    /// Writer's content key read back: a negative size fails.
+    void field(std::optional<ContentKey>& v)
+    {
+        bool has = false;
+        field(has);
+        ContentKey k;
+        k.hash = u64();
+        k.size = qsizetype(i64());
+        if (k.size < 0)
+            fail();
+        v = has && m_ok ? std::optional<ContentKey>(k) : std::nullopt;
+    }
     /// An enum of at most `max`: a byte past it fails and leaves `v` as it was (never an enum
     /// holding a value it does not have).
     template <class E>

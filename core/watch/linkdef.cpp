@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "linkdef.h"
 
+#include "yaml/yamltree.h"
+
 #include <cmath>
 #include <QDateTime>
 #include <QJsonArray>
@@ -63,6 +65,8 @@ QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& na
         l.willTopic = will;
         l.willMessage = will.isEmpty() ? QByteArray() : willMessage;
         l.stampPrefix = m.effective(u"timestamp_topic_prefix"_s);
+        l.rawPayload
+            = !YamlText::isTrue(m.effective(u"primitive"_s)) && !YamlText::isTrue(m.effective(u"json"_s));
         out << l;
     }
     return out;
@@ -97,6 +101,14 @@ QJsonObject LinkFigures::toJson() const
                         {u"latency_p50_ms"_s, number(latencyP50Ms)},
                         {u"latency_p99_ms"_s, number(latencyP99Ms)},
                         {u"latency_source"_s, latencySourceName(latencySource)},
+                        {u"observed"_s,
+                         QJsonObject {{u"samples"_s, double(observedSamples)},
+                                      {u"p50_ms"_s, number(observedP50Ms)},
+                                      {u"p99_ms"_s, number(observedP99Ms)},
+                                      {u"lost"_s, double(observedLost)},
+                                      {u"ambiguous"_s, double(observedAmbiguous)},
+                                      {u"unexplained"_s, double(observedUnexplained)},
+                                      {u"overflow"_s, double(observedOverflow)}}},
                         {u"stalls"_s, double(stalls)}};
 }
 

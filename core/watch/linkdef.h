@@ -26,6 +26,9 @@ struct LinkDef
     /// The mapping's `timestamp_topic_prefix` (the benchmarking suite's mqtt_client stamps every
     /// message at PREFIX/in and PREFIX/out): with a pipeline holding both, the link's latency.
     QString stampPrefix;
+    /// mqtt_client carries the ROS serialization as it is (no `primitive`, no `json`): the two ends'
+    /// contents can be matched without stamps (issue 45).
+    bool rawPayload = true;
 
     /// "config|ros2mqtt|/ros/topic|mqtt/topic": stable across runs, unique within a watch.
     QString id() const;
@@ -83,6 +86,15 @@ struct LinkFigures
     double latencyP50Ms = qQNaN(); ///< over the last 60 s (NaN: no stamps)
     double latencyP99Ms = qQNaN();
     LatencySource latencySource = LatencySource::None;
+    /// Observed hop latency (issue 45): each message Bridgescope saw go in matched by its content
+    /// with the copy it saw come out, on its one clock; over the last 60 s (NaN: none matched).
+    quint64 observedSamples = 0;
+    double observedP50Ms = qQNaN();
+    double observedP99Ms = qQNaN();
+    quint64 observedLost = 0; ///< went in and never came out (within the matcher's wait)
+    quint64 observedAmbiguous = 0; ///< identical contents in flight at once: no latency
+    quint64 observedUnexplained = 0; ///< came out with nothing seen going in
+    quint64 observedOverflow = 0; ///< dropped unjudged past the matcher's bound
     quint64 stalls = 0; ///< stall events so far
     QJsonObject toJson() const;
     static QString latencySourceName(LatencySource source); ///< as in the JSON: "stamps", ...

@@ -158,6 +158,13 @@ void LinkReader::addMqttHead(const SourceHead& m)
         heard(i);
         LinkTrack& t = *m_tracks[std::size_t(i)];
         // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
+        // The content after the stamp the link's announcement says it has (issue 45).
+        if (m.key && t.def.rawPayload && !t.def.discovered
+            && m.keySkipped
+                == (t.stamped() ? MqttClientWire::stampBytes(t.ros2 ? MqttClientWire::Dialect::Ros2
+                                                                    : MqttClientWire::Dialect::Ros1)
+                                : 0))
+            t.addContent(t.def.direction == Direction::Mqtt2Ros, *m.key, m.receivedNs);
         if (t.def.direction == Direction::Mqtt2Ros) {
             t.src.add(m.receivedNs, m.size);
             if (t.srcHeader && !t.ros2)
@@ -190,6 +197,8 @@ void LinkReader::addRosHead(const SourceHead& a)
         for (int i : *it) {
             heard(i);
             LinkTrack& t = *m_tracks[std::size_t(i)];
+            if (a.key && t.def.rawPayload)
+                t.addContent(t.def.direction == Direction::Ros2Mqtt, *a.key, a.receivedNs);
             if (t.def.direction == Direction::Ros2Mqtt) {
                 t.src.add(a.receivedNs, a.size);
                 if (t.srcHeader && hasSeq)

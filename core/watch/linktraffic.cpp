@@ -102,6 +102,20 @@ void LinkTraffic::addLatency(qint64 ns, double ms, LatencySource source)
         newLatencies.push_back(ms);
 }
 
+void LinkTraffic::addContent(bool atSource, const ContentKey& key, qint64 ns)
+{
+    if (blind)
+        return; // an end the watcher cannot see: nothing is judged
+    if (!content)
+        content = std::make_unique<ContentMatcher>();
+    const std::optional<qint64> latency = atSource ? content->source(key, ns) : content->destination(key, ns);
+    if (!latency)
+        return;
+    observed.emplace_back(ns, double(*latency) / 1e6);
+    if (observed.size() > kMaxLatencies)
+        observed.pop_front();
+}
+
 void LinkTraffic::refresh(qint64 nowNs)
 {
     src.refresh(nowNs);
@@ -117,11 +131,23 @@ void LinkTraffic::refresh(qint64 nowNs)
         values.push_back(l.second);
     figures.latencyP50Ms = Quantile::of(values, 0.50);
     figures.latencyP99Ms = Quantile::of(values, 0.99);
+    if (content) {
+        content->expire(nowNs);
+        while (!observed.empty() && nowNs - observed.front().first > kLatencyWindowNs)
+            observed.pop_front();
+        values.clear();
+        for (const auto& l : observed)
+            values.push_back(l.second);
+        figures.observedP50Ms = Quantile::of(values, 0.50);
+        figures.observedP99Ms = Quantile::of(values, 0.99);
+    }
 }
 
 void LinkTraffic::loseSight()
 {
     blind = true;
+    if (content)
+        content->restart(); // what waits now is neither lost nor matched: the watcher did not see
 }
 
 void LinkTraffic::regainSight(qint64 nowNs)
@@ -203,5 +229,13 @@ LinkFigures LinkTraffic::liveFigures() const
     f.duplicates = seq.duplicates;
     f.reordered = seq.reordered;
     f.latencySamples = latencySamples;
+    if (content) { // the counts so far; what waits is judged at refreshes
+        const ContentMatcher::Counts& c = content->counts();
+        f.observedSamples = c.matched;
+        f.observedLost = c.lost;
+        f.observedAmbiguous = c.ambiguous;
+        f.observedUnexplained = c.unexplained;
+        f.observedOverflow = c.overflow;
+    }
     return f;
 }

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "latency/contentmatcher.h"
 #include "watch/linkdef.h"
 
 #include <deque>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -78,6 +80,10 @@ struct LinkTraffic
     quint64 latencySamples = 0;
     std::vector<double> newLatencies; ///< since the last takeNewLatencies(), for histograms
     LinkFigures figures; ///< as of the last refresh
+    /// The two ends matched by content (issue 45): made at the first message with a key, for links
+    /// whose payloads are the ROS serialization.
+    std::unique_ptr<ContentMatcher> content;
+    std::deque<std::pair<qint64, double>> observed; ///< (time, ms) of matched messages, the latency window
     quint64 lostMax = 0;
     /// The watcher cannot see a side (its broker connection, the ROS master): nothing is lost then.
     bool blind = false;
@@ -101,6 +107,9 @@ struct LinkTraffic
 
     /// A latency sample (ms) at `ns`; one beyond a day is a stamp of another day and ignored.
     void addLatency(qint64 ns, double ms, LatencySource source);
+    /// A message with its content key at the source (`atSource`) or the destination, at `ns`:
+    /// matched with its copy at the other end for the observed hop latency. Not while blind.
+    void addContent(bool atSource, const ContentKey& key, qint64 ns);
     /// Rates, loss and the latency percentiles at `nowNs` into `figures`.
     void refresh(qint64 nowNs);
     /// The figures with the live counts (rates and percentiles are those of the last refresh).

@@ -86,7 +86,7 @@ void linkFamily(QByteArray& out, const std::vector<const Link*>& links, const Fa
 /// Most bytes one sample of a link takes beside its labels and stage: the longest name with its
 /// suffix (39), the extra label (19), braces, commas, space, the longest number (24) and the newline.
 constexpr qsizetype kSampleOverhead = 100;
-constexpr int kLinkSamples = 10; ///< without the histogram
+constexpr int kLinkSamples = 13; ///< without the histogram
 constexpr int kLatencySamples
     = int(MetricsSnapshot::kLatencyBounds.size()) + 3; ///< buckets, +Inf, count, sum
 
@@ -108,6 +108,14 @@ std::size_t linksWithin(const Links& links, qsizetype budget)
 const auto always = [](const Link&) { return true; };
 } // namespace
 
+namespace {
+/// Equal, NaN to NaN included (a gauge of nothing yet does not move).
+bool same(double a, double b)
+{
+    return a == b || (std::isnan(a) && std::isnan(b));
+}
+} // namespace
+
 bool MetricsSnapshot::Link::operator==(const Link& o) const
 {
     return labels == o.labels && stage == o.stage && sourceMessages == o.sourceMessages
@@ -116,7 +124,8 @@ bool MetricsSnapshot::Link::operator==(const Link& o) const
         && seqGaps == o.seqGaps && hasSeqGaps == o.hasSeqGaps && sourceRate == o.sourceRate
         && destinationRate == o.destinationRate && state == o.state && seen == o.seen
         && hasLatency == o.hasLatency && buckets == o.buckets && latencyCount == o.latencyCount
-        && latencySum == o.latencySum;
+        && latencySum == o.latencySum && hasObserved == o.hasObserved && same(observedP50, o.observedP50)
+        && same(observedP99, o.observedP99) && observedLost == o.observedLost;
 }
 
 QByteArray MetricsExposition::label(const char* name, const QByteArray& utf8Value)
@@ -183,6 +192,26 @@ QByteArray MetricsExposition::contentType(MetricsFormat format)
 }
 
 namespace {
+/// Issue 45: the observed hop latency and its losses, of the links that matched a message.
+void writeObserved(QByteArray& out, const std::vector<const Link*>& links, MetricsFormat format)
+{
+    static constexpr Family observed {"bridgescope_link_observed_seconds", "gauge",
+                                      "Hop latency of the link's messages matched by content at both "
+                                      "ends, on the watch's clock, over the last 60 s"};
+    static constexpr Family observedLost {"bridgescope_link_observed_lost", "counter",
+                                          "Messages seen going into the bridge whose content never came "
+                                          "out"};
+    const auto hasObserved = [](const Link& l) { return l.hasObserved; };
+    head(out, observed, format);
+    linkFamily(
+        out, links, observed, ",quantile=\"0.5\"", [](const Link& l) { return l.observedP50; }, hasObserved);
+    linkFamily(
+        out, links, observed, ",quantile=\"0.99\"", [](const Link& l) { return l.observedP99; }, hasObserved);
+    head(out, observedLost, format);
+    linkFamily(
+        out, links, observedLost, nullptr, [](const Link& l) { return l.observedLost; }, hasObserved);
+}
+
 /// The families of the links and bridges.
 void writeLinks(QByteArray& out, const std::vector<const Link*>& links,
                 const std::vector<MetricsSnapshot::Bridge>& bridges, MetricsFormat format)
@@ -246,6 +275,8 @@ void writeLinks(QByteArray& out, const std::vector<const Link*>& links,
     head(out, seen, format);
     linkFamily(
         out, links, seen, nullptr, [](const Link& l) { return l.seen ? 1.0 : 0.0; }, always);
+
+    writeObserved(out, links, format);
 
     head(out, latency, format);
     for (const Link* link : links) {

@@ -33,6 +33,10 @@ struct MetricsSnapshot
         std::array<quint64, kLatencyBounds.size()> buckets {}; ///< per bucket, not cumulative
         quint64 latencyCount = 0; ///< all observations (the +Inf bucket)
         double latencySum = 0; ///< seconds
+        /// Observed hop latency (issue 45: the ends matched by content), from the first match on.
+        bool hasObserved = false;
+        double observedP50 = 0, observedP99 = 0; ///< seconds, over the last 60 s
+        double observedLost = 0;
 
         bool operator==(const Link& o) const;
         bool operator!=(const Link& o) const { return !(*this == o); }

@@ -6,6 +6,7 @@
 #include "watch/metricsserver.h"
 
 #include <algorithm>
+#include <cmath>
 #include <QHash>
 #include <QRegularExpression>
 #include <QSet>
@@ -118,6 +119,13 @@ struct WatchMetrics::Private
         l.hasSeqGaps = l.hasSeqGaps || f.seqGaps > 0;
         l.sourceRate = f.source.rateHz;
         l.destinationRate = f.destination.rateHz;
+        if (f.observedSamples > 0) {
+            l.hasObserved = true;
+            // NaN once nothing matched for a window: a figure of the past is not served as today's
+            l.observedP50 = f.observedP50Ms / 1000.0;
+            l.observedP99 = f.observedP99Ms / 1000.0;
+        }
+        counter(l.observedLost, f.observedLost);
         l.state = int(monitor.level(i));
         l.seen = monitor.unknown(i).isEmpty();
         for (double ms : monitor.takeNewLatencies(i)) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "wire/contentkey.h"
 #include "wire/mqttclientwire.h"
 #include "wire/rosmessage.h"
 #include "wire/stampcodec.h"
@@ -37,6 +38,12 @@ struct SourceHead
     qint64 receivedNs = 0; ///< wall clock
     int size = 0; ///< serialized bytes (on ROS 2 the encapsulation header included)
     QByteArray head; ///< the first kHeadBytes bytes (fewer when the message is shorter)
+    /// The whole message's content, for matching a bridge's two ends without stamps (issue 45):
+    /// ROS 1 its serialization, ROS 2 its CDR with the encapsulation header, MQTT its payload after
+    /// `keySkipped` bytes (the injected stamp of a topic announced as stamped). None when the source
+    /// computed none.
+    std::optional<ContentKey> key;
+    qint8 keySkipped = 0;
 };
 
 /// What one arrival on a stamp topic or a latency topic gives: a stamp, a latency, or why neither.

@@ -8,6 +8,8 @@
 #include "session/livesession.h"
 #include "session/measuresession.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkmodel.h"
+#include "widgets/links/linkspage.h"
 #include "widgets/map/configfilecontroller.h"
 
 #include <QElapsedTimer>
@@ -109,7 +111,8 @@ private slots:
         QVERIFY2(error.isEmpty(), qPrintable(error));
         const auto* servers = w.statusBar()->findChild<QLabel*>(u"demoServers"_s);
         QVERIFY(servers && servers->isVisible());
-        QCOMPARE(servers->text(), u"demo lab (ROS 2, domain %1): broker %2"_s.arg(lab.rosDomain()).arg(lab.brokerUrl()));
+        QCOMPARE(servers->text(),
+                 u"demo lab (ROS 2, domain %1): broker %2"_s.arg(lab.rosDomain()).arg(lab.brokerUrl()));
         QVERIFY(servers->geometry().right() <= w.statusBar()->width());
         DiscoverPage* discover = w.discoverPage();
         QCOMPARE(discover->rosGraphs(), DiscoverPage::RosGraphs::Ros2);
@@ -119,6 +122,31 @@ private slots:
         const LatencyEngine& engine = w.measure()->engine();
         QTRY_VERIFY_WITH_TIMEOUT(engine.counters().complete >= 20, 30000);
         QVERIFY(engine.joiner().allTopicsSeen());
+
+        // Issue 45 on ROS 2: each link's two ends matched by their content (CDR on the domain, the
+        // same bytes after the stamp on the broker) give the hop latency the pipeline's stamps give,
+        // within 1 ms at the median.
+        LinkModel* links = w.linksPage()->linkModel();
+        QTRY_COMPARE_WITH_TIMEOUT(links->rowCount(), 4, 20000);
+        QString why;
+        const auto observedAgrees = [&] {
+            for (int r = 0; r < links->rowCount(); ++r) {
+                const double observed
+                    = links->index(r, LinkModel::ObservedColumn).data(LinkModel::ValueRole).toDouble();
+                const double stamps
+                    = links->index(r, LinkModel::P50Column).data(LinkModel::ValueRole).toDouble();
+                why = u"%1: observed %2 ms, stamps %3 ms; %4"_s
+                          .arg(links->index(r, LinkModel::SourceColumn).data().toString())
+                          .arg(observed)
+                          .arg(stamps)
+                          .arg(links->index(r, LinkModel::ObservedColumn).data(Qt::ToolTipRole).toString());
+                if (!std::isfinite(observed) || !std::isfinite(stamps) || std::abs(observed - stamps) > 1.0)
+                    return false;
+            }
+            return true;
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(observedAgrees(), qPrintable(why), 30000);
+        qInfo().noquote() << "last link:" << why;
     }
 
     void aLabThatCannotStartSaysWhy()

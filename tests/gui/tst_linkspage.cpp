@@ -6,7 +6,6 @@
 // the log, a notification is raised while the window is not active, and the events are written into
 // the run the Measure page records.
 #include "app/gui/mainwindow.h"
-#include "text/niceticks.h"
 #include "demo/demolab.h"
 #include "namecheck.h"
 #include "record/runfile.h"
@@ -15,13 +14,14 @@
 #include "session/measuresession.h"
 #include "signalprocess.h"
 #include "testservers.h"
+#include "text/niceticks.h"
 #include "viewhelpers.h"
-#include "widgets/links/linkmodel.h"
 #include "watch/watchsession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/livetext.h"
 #include "widgets/common/ratechart.h"
 #include "widgets/discover/discoverpage.h"
+#include "widgets/links/linkmodel.h"
 #include "widgets/links/linkspage.h"
 #include "widgets/links/ruleseditor.h"
 #include "widgets/map/configfilecontroller.h"
@@ -322,6 +322,27 @@ private slots:
             return true;
         };
         QTRY_VERIFY_WITH_TIMEOUT(allHaveLatency(), 10000);
+        // Issue 45: each link's two ends matched by their content, without stamps, give the same hop
+        // latency as the bridges' stamps, within 1 ms at the median.
+        const auto observedAgrees = [&](QString* why) {
+            for (int r = 0; r < model->rowCount(); ++r) {
+                const double observed
+                    = model->index(r, LinkModel::ObservedColumn).data(LinkModel::ValueRole).toDouble();
+                const double stamps
+                    = model->index(r, LinkModel::P50Column).data(LinkModel::ValueRole).toDouble();
+                *why = u"%1: observed %2 ms, stamps %3 ms; %4"_s
+                           .arg(model->index(r, LinkModel::SourceColumn).data().toString())
+                           .arg(observed)
+                           .arg(stamps)
+                           .arg(model->index(r, LinkModel::ObservedColumn).data(Qt::ToolTipRole).toString());
+                if (!std::isfinite(observed) || std::abs(observed - stamps) > 1.0)
+                    return false;
+            }
+            return true;
+        };
+        QString why;
+        QTRY_VERIFY2_WITH_TIMEOUT(observedAgrees(&why), qPrintable(why), 15000);
+        qInfo().noquote() << "last link:" << why;
 
         // Filtering and the detail pane.
         QTableView* table = named<QTableView>(*page, u"linkTable"_s);
@@ -399,8 +420,8 @@ private slots:
         const QStyleOptionViewItem option = cellOption(table);
         const auto cutProblem = [&]() -> QString {
             for (int r = 0; r < table->model()->rowCount(); ++r)
-                for (int c :
-                     {int(LinkModel::StateColumn), int(LinkModel::LossColumn), int(LinkModel::P99Column)}) {
+                for (int c : {int(LinkModel::StateColumn), int(LinkModel::LossColumn),
+                              int(LinkModel::P99Column), int(LinkModel::ObservedColumn)}) {
                     const QModelIndex index = table->model()->index(r, c);
                     const int needs = table->itemDelegateForIndex(index)->sizeHint(option, index).width();
                     if (needs > table->columnWidth(c))

@@ -152,7 +152,7 @@ class TestRestoredState : public QObject
         checkFigures(links,
                      {LinkModel::StateColumn, LinkModel::BridgeColumn, LinkModel::DirectionColumn,
                       LinkModel::SourceRateColumn, LinkModel::DestinationRateColumn, LinkModel::LossColumn,
-                      LinkModel::P50Column, LinkModel::P99Column});
+                      LinkModel::P50Column, LinkModel::P99Column, LinkModel::ObservedColumn});
         checkNames(links, LinkModel::SourceColumn, 1);
         checkNames(links, LinkModel::DestinationColumn, 1);
 

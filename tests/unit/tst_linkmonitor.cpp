@@ -66,21 +66,26 @@ MqttMessage mqtt(const QString& topic, const QByteArray& payload, qint64 ns)
 SourceHead ros(const QString& topic, const QByteArray& bytes, qint64 ns,
                SourceGraph graph = SourceGraph::Ros1)
 {
-    return SourceHead {graph, topic, ns, int(bytes.size()), bytes.left(SourceHead::kHeadBytes)};
+    return SourceHead {
+        graph, topic, ns, int(bytes.size()), bytes.left(SourceHead::kHeadBytes), ContentKey::of(bytes)};
 }
 
 /// What the watch hands a monitor of a drain's MQTT batch: mqtt_client's control messages, then
 /// the heads the MQTT source kept of the links' topics.
-void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch)
+/// With `tree`, the broker's topics as the session keeps them: announcements of earlier batches
+/// tell the source which payloads carry a stamp (issue 45: their content is after it).
+void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch, MqttTopicTree* tree = nullptr)
 {
-    MqttTopicTree tree;
-    MqttSource source(&tree.topicData());
+    MqttTopicTree own;
+    MqttTopicTree& topics = tree ? *tree : own;
+    MqttSource source(&topics.topicData());
     for (const QString& topic : m.reader().mqttTopics())
         source.monitor(topic);
     const std::unique_ptr<HeadTap> heads = source.openHeadTap(batch.size() + 1);
     source.add(batch);
     m.addMqttControl(batch);
     m.reader().add(heads->take());
+    topics.apply(std::vector<MqttMessage>(batch));
 }
 
 /// Drives a monitor with a clock: `step` advances by 100 ms (10 Hz) and ticks it.
@@ -139,8 +144,10 @@ private slots:
         std::memcpy(seconds.data(), &twentyMs, 8);
         RosMsgTypeInfo type {u"0123456789abcdef0123456789abcdef"_s, u"test_msgs/Stamped"_s,
                              kStampedDefinition, true};
-        fromBroker(m,
-            {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)});
+        MqttTopicTree broker;
+        fromBroker(
+            m, {mqtt(u"mqtt_client/ros_msg_type/vehicle/pose"_s, MqttClientWire::encodeType(type), kStart)},
+            &broker);
         Clock clock {m};
         quint32 seq = 0;
         for (int i = 0; i < 200; ++i) { // 20 s at 10 Hz
@@ -148,9 +155,11 @@ private slots:
             m.reader().add({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
             // The bridge skips seq 50 and 51 (two messages never sent on), latency 5 ms.
             if (seq != 50 && seq != 51)
-                fromBroker(m, {mqtt(u"vehicle/pose"_s, MqttClientWire::stamped(sent, headerMessage(seq)),
-                                sent + 5 * kMs)});
-            fromBroker(m, {mqtt(u"vehicle/cmd"_s, headerMessage(seq), sent)});
+                fromBroker(m,
+                           {mqtt(u"vehicle/pose"_s, MqttClientWire::stamped(sent, headerMessage(seq)),
+                                 sent + 5 * kMs)},
+                           &broker);
+            fromBroker(m, {mqtt(u"vehicle/cmd"_s, headerMessage(seq), sent)}, &broker);
             if (i % 10 != 9) {
                 m.reader().add({ros(u"/vehicle/cmd"_s, headerMessage(seq), sent + 2 * kMs)});
                 m.reader().add({ros(latencyTopic, seconds, sent + 2 * kMs)});
@@ -181,6 +190,23 @@ private slots:
         // 10 % lost is above the default alert level of 5 %.
         QCOMPARE(m.level(m.indexOf(in.id())), LinkLevel::Alert);
         QVERIFY(m.reasons(m.indexOf(in.id())).contains(u"loss"_s));
+
+        // Issue 45: the same figures without stamps, each message matched by its content at both
+        // ends (after the stamp the announcement says the payloads carry).
+        QCOMPARE(o.observedSamples, quint64(198));
+        QVERIFY2(qAbs(o.observedP50Ms - 5) < 0.01 && qAbs(o.observedP99Ms - 5) < 0.01,
+                 qPrintable(QString::number(o.observedP50Ms)));
+        QCOMPARE(o.observedLost, quint64(2)); // seq 50 and 51
+        QCOMPARE(i.observedSamples, quint64(180));
+        QVERIFY2(qAbs(i.observedP50Ms - 2) < 0.01, qPrintable(QString::number(i.observedP50Ms)));
+        QCOMPARE(i.observedLost, quint64(17)); // the last three lost wait for their copies (2 s)
+        clock.advance(3000 * kMs);
+        const LinkFigures later = m.figures(m.indexOf(in.id()));
+        QCOMPARE(later.observedLost, quint64(20)); // every tenth: 10 % of what went in
+        QCOMPARE(later.observedAmbiguous + later.observedUnexplained + later.observedOverflow, quint64(0));
+        const QJsonObject observed = later.toJson().value(u"observed"_s).toObject();
+        QCOMPARE(observed.value(u"lost"_s).toInt(), 20);
+        QCOMPARE(observed.value(u"samples"_s).toInt(), 180);
     }
 
     // A ROS 2 link: mqtt_client's ROS 2 latency topic (std_msgs/msg/Float64) gives the latency, and
@@ -756,7 +782,7 @@ private slots:
         fromBroker(m, {mqtt(u"mqtt_client/ros_msg_type/c"_s, "\x01\x02", kStart),
                    mqtt(u"c"_s, QByteArray(), kStart), mqtt(u"c"_s, "123", kStart),
                    mqtt(u"c"_s, QByteArray(8, '\xff'), kStart)});
-        m.reader().add({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray()}});
+        m.reader().add({SourceHead {SourceGraph::Ros1, u"/c"_s, kStart, 0, QByteArray(), std::nullopt}});
         m.tick(kStart + 2000 * kMs);
         const LinkFigures f = m.figures(0);
         QCOMPARE(f.destination.messages, quint64(3));

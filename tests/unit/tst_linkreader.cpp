@@ -25,7 +25,7 @@ std::unique_ptr<LinkTrack> track(Direction d, const QString& ros, const QString&
 
 SourceHead head(SourceGraph graph, const QString& topic, const QByteArray& bytes, qint64 ns)
 {
-    return {graph, topic, ns, int(bytes.size()), bytes.left(SourceHead::kHeadBytes)};
+    return {graph, topic, ns, int(bytes.size()), bytes.left(SourceHead::kHeadBytes), ContentKey::of(bytes)};
 }
 
 QByteArray float64(double value)

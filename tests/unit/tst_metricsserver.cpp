@@ -154,9 +154,10 @@ private slots:
                 current = family;
             }
         }
-        // 10 of the links and bridges (bridgescope_link_seen since issue 40), 5 of the answer and the
-        // history budgets, 3 of the announced ones, the watch's info (issue 44)
-        QCOMPARE(typeOf.size(), 19);
+        // 12 of the links and bridges (bridgescope_link_seen since issue 40, the observed hop latency
+        // and its lost since issue 45), 5 of the answer and the history budgets, 3 of the announced
+        // ones, the watch's info (issue 44)
+        QCOMPARE(typeOf.size(), 21);
     }
 
     void theScraperChoosesTheFormat()

@@ -352,7 +352,8 @@ void TestRos2Link::eachHeadTapGetsEveryHeadAndTheChildKeepsForTheLargest()
         Ros2Protocol::ArrivalBatch b;
         b.dropped = dropped;
         for (int i = 0; i < heads; ++i)
-            b.arrivals.push_back({SourceGraph::Ros2, i % 2 ? u"/unmonitored"_s : u"/a"_s, i, 8, "head"});
+            b.arrivals.push_back(
+                {SourceGraph::Ros2, i % 2 ? u"/unmonitored"_s : u"/a"_s, i, 8, "head", std::nullopt});
         return Ros2Protocol::Frame {Kind::Arrivals, Ros2Protocol::encodeArrivals(b)};
     };
     QVERIFY(link.handle(arrivals(3, 8))); // four of /a; the child dropped three

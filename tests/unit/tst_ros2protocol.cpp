@@ -165,8 +165,10 @@ private slots:
         QCOMPARE(samples->samples[1].bytes.size(), 100000);
 
         // The graph is not on the wire: what the child sends reads back as ROS 2's, whatever it was.
-        const auto arrivals = decodeArrivals(
-            encodeArrivals({3, {{SourceGraph::Mqtt, u"/t"_s, 5, 100, "0123456789abcdef"}}}));
+        const auto arrivals
+            = decodeArrivals(encodeArrivals({3,
+                                             {{SourceGraph::Mqtt, u"/t"_s, 5, 100, "0123456789abcdef",
+                                               ContentKey::of("0123456789abcdef")}}}));
         QVERIFY(arrivals);
         QCOMPARE(arrivals->dropped, 3u);
         QCOMPARE(arrivals->arrivals.front().graph, SourceGraph::Ros2);

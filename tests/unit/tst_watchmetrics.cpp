@@ -35,7 +35,7 @@ QList<LinkDef> links()
 
 SourceHead mqttHead(int link, qint64 ns)
 {
-    return SourceHead {SourceGraph::Mqtt, u"fleet/%1"_s.arg(link), ns, 12, QByteArray(12, 'x')};
+    return SourceHead {SourceGraph::Mqtt, u"fleet/%1"_s.arg(link), ns, 12, QByteArray(12, 'x'), std::nullopt};
 }
 
 /// The exposition's lines that are in `a` and not in `b`.

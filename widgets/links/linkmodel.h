@@ -24,6 +24,7 @@ public:
         LossColumn,
         P50Column,
         P99Column,
+        ObservedColumn, ///< the observed hop latency's p50 (issue 45: both ends matched by content)
         HistoryColumn, ///< the destination rate of the last minutes, drawn as a sparkline
         LastEventColumn,
         ColumnCount
@@ -52,6 +53,8 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
 
 private:
+    /// The tooltip of the observed hop latency: how it was measured, the counts, why there is none.
+    static QString observedText(const LinkDef& d, const LinkFigures& f);
     void onEvent(const WatchEvent& e);
 
     LinkMonitor* m_monitor;

@@ -268,7 +268,7 @@ QWidget* LinksPage::createLinkTable()
     auto* fitter = new ColumnFitter(m_links);
     fitter->figures({LinkModel::StateColumn, LinkModel::BridgeColumn, LinkModel::DirectionColumn,
                      LinkModel::SourceRateColumn, LinkModel::DestinationRateColumn, LinkModel::LossColumn,
-                     LinkModel::P50Column, LinkModel::P99Column});
+                     LinkModel::P50Column, LinkModel::P99Column, LinkModel::ObservedColumn});
     fitter->fill({LinkModel::SourceColumn, LinkModel::DestinationColumn});
     connect(m_links->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &LinksPage::showDetail);
     return m_links;
