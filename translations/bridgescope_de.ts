@@ -3934,14 +3934,6 @@ factors:
         <translation>Ziel</translation>
     </message>
     <message>
-        <source>Source Hz</source>
-        <translation>Quelle Hz</translation>
-    </message>
-    <message>
-        <source>Dest. Hz</source>
-        <translation>Ziel Hz</translation>
-    </message>
-    <message>
         <source>Lost</source>
         <translation>Verloren</translation>
     </message>
@@ -3952,10 +3944,6 @@ factors:
     <message>
         <source>p99 ms</source>
         <translation>p99 ms</translation>
-    </message>
-    <message>
-        <source>Rate, 5 min</source>
-        <translation>Rate, 5 min</translation>
     </message>
     <message>
         <source>Last event</source>
@@ -4006,8 +3994,36 @@ factors:
         <translation>Negativ: dieser Rechner bekam die Kopien vor den Originalen (die Zustellung seiner beiden Abonnements, nicht die Bridge).</translation>
     </message>
     <message>
-        <source>Observed ms</source>
-        <translation>Beobachtet ms</translation>
+        <source>Messages per second at the source, over the last 5 s</source>
+        <translation>Nachrichten je Sekunde an der Quelle, über die letzten 5 s</translation>
+    </message>
+    <message>
+        <source>Messages per second at the destination, over the last 5 s</source>
+        <translation>Nachrichten je Sekunde am Ziel, über die letzten 5 s</translation>
+    </message>
+    <message>
+        <source>Observed hop latency, median over the last 60 s: each message seen going into the bridge matched by its content with the copy seen coming out, on this computer&apos;s clock. No stamps needed.</source>
+        <translation>Beobachtete Latenz des Abschnitts, Median über die letzten 60 s: jede in die Bridge gehende Nachricht über ihren Inhalt mit der herauskommenden Kopie verknüpft, nach der Uhr dieses Rechners. Ohne Zeitstempel.</translation>
+    </message>
+    <message>
+        <source>The destination&apos;s rate over the last 5 minutes</source>
+        <translation>Die Rate am Ziel über die letzten 5 Minuten</translation>
+    </message>
+    <message>
+        <source>Src Hz</source>
+        <translation>Qu. Hz</translation>
+    </message>
+    <message>
+        <source>Dst Hz</source>
+        <translation>Ziel Hz</translation>
+    </message>
+    <message>
+        <source>Hop ms</source>
+        <translation>Abschn. ms</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 min</translation>
     </message>
 </context>
 <context>

@@ -236,6 +236,23 @@ QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
 
 QVariant LinkModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
+    // Short titles, so that every column's text fits at 1280x800; the tooltips say them whole.
+    if (orientation == Qt::Horizontal && role == Qt::ToolTipRole) {
+        switch (section) {
+        case SourceRateColumn:
+            return tr("Messages per second at the source, over the last 5 s");
+        case DestinationRateColumn:
+            return tr("Messages per second at the destination, over the last 5 s");
+        case ObservedColumn:
+            return tr("Observed hop latency, median over the last 60 s: each message seen going into "
+                      "the bridge matched by its content with the copy seen coming out, on this "
+                      "computer's clock. No stamps needed.");
+        case HistoryColumn:
+            return tr("The destination's rate over the last 5 minutes");
+        default:
+            return {};
+        }
+    }
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return {};
     switch (section) {
@@ -250,9 +267,9 @@ QVariant LinkModel::headerData(int section, Qt::Orientation orientation, int rol
     case DestinationColumn:
         return tr("Destination");
     case SourceRateColumn:
-        return tr("Source Hz");
+        return tr("Src Hz");
     case DestinationRateColumn:
-        return tr("Dest. Hz");
+        return tr("Dst Hz");
     case LossColumn:
         return tr("Lost");
     case P50Column:
@@ -260,9 +277,9 @@ QVariant LinkModel::headerData(int section, Qt::Orientation orientation, int rol
     case P99Column:
         return tr("p99 ms");
     case ObservedColumn:
-        return tr("Observed ms");
+        return tr("Hop ms");
     case HistoryColumn:
-        return tr("Rate, 5 min");
+        return tr("5 min");
     case LastEventColumn:
         return tr("Last event");
     }

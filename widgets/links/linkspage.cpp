@@ -261,7 +261,7 @@ QWidget* LinksPage::createLinkTable()
     // an outage its reasons, `source stopped`) take the width they need, measured when they change.
     QHeaderView* header = m_links->horizontalHeader();
     header->setSectionResizeMode(QHeaderView::Interactive);
-    m_links->setColumnWidth(LinkModel::HistoryColumn, 90);
+    m_links->setColumnWidth(LinkModel::HistoryColumn, 60); // a sparkline: room left for the names at 1280x800
     m_links->setColumnHidden(LinkModel::LastEventColumn, true); // the event log says it; the tooltip too
     NameDelegate::install(m_links, LinkModel::SourceColumn);
     NameDelegate::install(m_links, LinkModel::DestinationColumn);
