@@ -166,7 +166,7 @@ void ConfigDocument::setDiscoveryProblems(const QList<Problem>& problems)
     if (sameProblems(problems, m_discoveryProblems))
         return;
     m_discoveryProblems = problems;
-    revalidate();
+    listProblems(); // the file's own problems have not changed: not checked again
     emit problemsChanged();
 }
 
@@ -395,8 +395,14 @@ void ConfigDocument::finishReset()
 
 void ConfigDocument::revalidate()
 {
+    m_ruleProblems = ConfigValidator::validate(m_current, m_validation);
+    listProblems();
+}
+
+void ConfigDocument::listProblems()
+{
     // Reading problems (structure) stay visible beside the rule checks.
-    m_problems = m_readProblems + ConfigValidator::validate(m_current, m_validation);
+    m_problems = m_readProblems + m_ruleProblems;
     // The lab's findings stay with the mappings they are about until the lab is looked at again.
     for (const Problem& p : std::as_const(m_discoveryProblems))
         if (p.mappingId == 0 || m_current.indexOfMapping(p.mappingId) >= 0)

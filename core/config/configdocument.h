@@ -129,6 +129,8 @@ signals:
 private:
     void changed();
     void revalidate();
+    /// m_problems and the worst severity per mapping from the read, rule and lab problems.
+    void listProblems();
     /// After the state was replaced whole: checks it and says everything changed.
     void finishReset();
     void adoptSaved(const QByteArray& text, const ConfigReadResult& read);
@@ -144,6 +146,7 @@ private:
     QList<Problem> m_readProblems; ///< structure problems found when the file was read
     ReadOnlyView m_readOnly;
     QList<Problem> m_problems;
+    QList<Problem> m_ruleProblems; ///< ConfigValidator's, as of the last revalidate()
     QList<Problem> m_discoveryProblems; ///< DiscoveryLints' of the running lab
     QHash<quint64, Severity> m_severity;
     ConfigValidator::Options m_validation;

@@ -159,11 +159,7 @@ void LinkReader::addMqttHead(const SourceHead& m)
         LinkTrack& t = *m_tracks[std::size_t(i)];
         // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
         // The content after the stamp the link's announcement says it has (issue 45).
-        if (m.key && t.def.rawPayload && !t.def.discovered
-            && m.keySkipped
-                == (t.stamped() ? MqttClientWire::stampBytes(t.ros2 ? MqttClientWire::Dialect::Ros2
-                                                                    : MqttClientWire::Dialect::Ros1)
-                                : 0))
+        if (m.key && t.def.rawPayload && !t.def.discovered && m.keySkipped == t.stampBytes())
             t.addContent(t.def.direction == Direction::Mqtt2Ros, *m.key, m.receivedNs);
         if (t.def.direction == Direction::Mqtt2Ros) {
             t.src.add(m.receivedNs, m.size);
@@ -175,12 +171,11 @@ void LinkReader::addMqttHead(const SourceHead& m)
         t.dst.add(m.receivedNs, m.size);
         qsizetype offset = 0;
         if (t.stamped()) {
-            const auto dialect = t.ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
-            if (const auto s = MqttClientWire::splitStamped(m.head, dialect)) {
+            if (const auto s = MqttClientWire::splitStamped(m.head, t.dialect())) {
                 if (!t.pipelineLatency)
                     t.addLatency(m.receivedNs, double(m.receivedNs - s->stampNs) / 1e6,
                                  LatencySource::Stamps);
-                offset = MqttClientWire::stampBytes(dialect);
+                offset = t.stampBytes();
             }
         }
         if (t.dstHeader && !t.ros2)

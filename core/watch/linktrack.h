@@ -5,6 +5,7 @@
 #include "watch/linkjudge.h"
 #include "watch/linktraffic.h"
 #include "watch/watchrules.h"
+#include "wire/mqttclientwire.h"
 
 #include <algorithm>
 #include <deque>
@@ -43,6 +44,12 @@ struct LinkTrack : LinkTraffic
     QString unknown; ///< the judge's sentence while it cannot see a side
 
     bool stamped() const { return announcedStamped.value_or(def.stamped); }
+    MqttClientWire::Dialect dialect() const
+    {
+        return ros2 ? MqttClientWire::Dialect::Ros2 : MqttClientWire::Dialect::Ros1;
+    }
+    /// The injected stamp before its MQTT payloads' message (0: not stamped).
+    qsizetype stampBytes() const { return stamped() ? MqttClientWire::stampBytes(dialect()) : 0; }
     /// Nothing has arrived at either end yet: no silence counts and no figure moves, so the judge's
     /// verdict cannot change while the watcher sees what it saw (see LinkMonitor::tick()).
     bool dormant() const
