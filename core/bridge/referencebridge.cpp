@@ -6,6 +6,7 @@
 #include "mqtt/mqttlink.h"
 #include "ros/rosendpoint.h"
 #include "wire/mqttclientwire.h"
+#include "wire/primitivetext.h"
 #include "wire/stampcodec.h"
 
 #include <cmath>
@@ -16,91 +17,44 @@
 
 using namespace Qt::StringLiterals;
 
-namespace PrimitiveText {
 namespace {
-QString md5Of(const QString& simpleDefinition)
-{
-    // For a message without dependencies ROS hashes its definition's field lines.
-    return QString::fromLatin1(
-        QCryptographicHash::hash(simpleDefinition.trimmed().toUtf8(), QCryptographicHash::Md5).toHex());
-}
-
-RosRawMessage make(const QString& field, const QByteArray& bytes)
+/// A std_msgs primitive of mqtt_client's ROS 1 mqtt2primitive(): its bytes and its type.
+RosRawMessage primitiveMessage(const QString& field, const QByteArray& bytes)
 {
     const QString name = field.front().toUpper() + field.mid(1);
     const QString definition = field + u" data\n"_s;
-    return {bytes, u"std_msgs/"_s + (field == u"string"_s ? u"String"_s : name), md5Of(definition),
-            definition};
+    // For a message without dependencies ROS hashes its definition's field lines.
+    const QString md5 = QString::fromLatin1(
+        QCryptographicHash::hash(definition.trimmed().toUtf8(), QCryptographicHash::Md5).toHex());
+    return {bytes, u"std_msgs/"_s + (field == u"string"_s ? u"String"_s : name), md5, definition};
 }
 
-template<typename T> T read(const QByteArray& bytes)
-{
-    T v {};
-    std::memcpy(&v, bytes.constData(), sizeof(T));
-    return v;
-}
-
-/// std::to_string's text, as mqtt_client writes numbers.
-QByteArray floatText(double v)
-{
-    return QByteArray::number(v, 'f', 6);
-}
 } // namespace
 
-std::optional<QByteArray> toText(const QString& type, const QByteArray& b)
+namespace PrimitiveText {
+std::optional<QByteArray> toText(const QString& type, const QByteArray& bytes)
 {
-    const QString t = type.startsWith(u"std_msgs/"_s) ? type.mid(9) : QString();
-    const auto fits = [&b](qsizetype n) { return b.size() == n; };
-    if (t == u"String"_s && b.size() >= 4) {
-        const quint32 n = qFromLittleEndian<quint32>(b.constData());
-        if (qsizetype(n) == b.size() - 4)
-            return b.mid(4);
-    } else if (t == u"Bool"_s && fits(1)) {
-        return b[0] ? QByteArray("true") : QByteArray("false");
-    } else if ((t == u"Int8"_s || t == u"Byte"_s) && fits(1)) {
-        return QByteArray::number(int(read<qint8>(b)));
-    } else if ((t == u"UInt8"_s || t == u"Char"_s) && fits(1)) {
-        return QByteArray::number(uint(read<quint8>(b)));
-    } else if (t == u"Int16"_s && fits(2)) {
-        return QByteArray::number(int(read<qint16>(b)));
-    } else if (t == u"UInt16"_s && fits(2)) {
-        return QByteArray::number(uint(read<quint16>(b)));
-    } else if (t == u"Int32"_s && fits(4)) {
-        return QByteArray::number(read<qint32>(b));
-    } else if (t == u"UInt32"_s && fits(4)) {
-        return QByteArray::number(read<quint32>(b));
-    } else if (t == u"Int64"_s && fits(8)) {
-        return QByteArray::number(read<qint64>(b));
-    } else if (t == u"UInt64"_s && fits(8)) {
-        return QByteArray::number(read<quint64>(b));
-    } else if (t == u"Float32"_s && fits(4)) {
-        return floatText(double(read<float>(b)));
-    } else if (t == u"Float64"_s && fits(8)) {
-        return floatText(read<double>(b));
-    }
-    return std::nullopt;
+    return ofRos1(type, bytes);
 }
 
 RosRawMessage fromText(const QByteArray& text)
 {
-    if (text == "true" || text == "false")
-        return make(u"bool"_s, QByteArray(1, text == "true" ? '\1' : '\0'));
-    bool ok = false;
-    const qint32 i = text.toInt(&ok);
-    if (ok) {
-        QByteArray b(4, Qt::Uninitialized);
-        qToLittleEndian(i, b.data());
-        return make(u"int32"_s, b);
-    }
-    const double d = text.toDouble(&ok);
-    if (ok && std::isfinite(d)) {
-        QByteArray b(8, Qt::Uninitialized);
-        std::memcpy(b.data(), &d, 8);
-        return make(u"float64"_s, b);
-    }
+    const PrimitiveText::Parsed p = PrimitiveText::parse(text);
     QByteArray b(4, Qt::Uninitialized);
+    switch (p.kind) {
+    case PrimitiveText::Parsed::Kind::Bool:
+        return primitiveMessage(u"bool"_s, QByteArray(1, p.boolean ? '\1' : '\0'));
+    case PrimitiveText::Parsed::Kind::Int32:
+        qToLittleEndian(p.integer, b.data());
+        return primitiveMessage(u"int32"_s, b);
+    case PrimitiveText::Parsed::Kind::Float32:
+        qToLittleEndian(p.real, b.data());
+        return primitiveMessage(u"float32"_s, b);
+    case PrimitiveText::Parsed::Kind::String:
+        break;
+    }
     qToLittleEndian(quint32(text.size()), b.data());
-    return make(u"string"_s, b + text);
+    return primitiveMessage(u"string"_s, b + text);
 }
 } // namespace PrimitiveText
 

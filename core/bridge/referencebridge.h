@@ -13,13 +13,15 @@
 
 struct RosRawMessage;
 
-/// std_msgs primitives as text, the way mqtt_client sends `primitive: true` mappings.
+/// std_msgs primitives as text, the way mqtt_client (up to 2.3, the last for ROS 1) sends
+/// `primitive: true` mappings (wire/primitivetext.h has the rest of the namespace).
 namespace PrimitiveText {
-/// The text of a std_msgs primitive message (String, Bool, Int*/UInt*, Float32/64, Char, Byte);
-/// nullopt for other types.
+/// The text of a std_msgs primitive message (String, Bool, Int*/UInt*, Float32/64, Char);
+/// nullopt for other types (ofRos1()).
 std::optional<QByteArray> toText(const QString& type, const QByteArray& bytes);
-/// A std_msgs message for received text: Bool for "true"/"false", Int32 for an integer that
-/// fits, Float64 for another number, else String.
+/// The std_msgs message mqtt2primitive() makes of received text (parse()): Bool for "true" or
+/// "false" in any case, Int32 for a whole integer that fits, Float32 for another whole number,
+/// else String.
 RosRawMessage fromText(const QByteArray& text);
 } // namespace PrimitiveText
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "bridge/ros2bridgewire.h"
 
+#include "wire/primitivetext.h"
 #include "wire/rosmessageencoder.h"
 
 #include <cmath>
@@ -103,7 +104,7 @@ std::optional<QByteArray> primitiveText(const RosTypeRegistry& registry, const Q
     if (t == u"Bool"_s)
         return data->value.toBool() ? QByteArray("true") : QByteArray("false");
     if (t == u"Float32"_s || t == u"Float64"_s)
-        return QByteArray::number(data->value.toDouble(), 'f', 6); // std::to_string
+        return PrimitiveText::fixed(data->value.toDouble()); // std::to_string
     if (t == u"UInt8MultiArray"_s)
         return QByteArray::fromHex(data->value.toByteArray()); // the decoder gives byte arrays as hex
     return data->value.toString().toUtf8();
@@ -111,25 +112,23 @@ std::optional<QByteArray> primitiveText(const RosTypeRegistry& registry, const Q
 
 Typed primitiveFromText(const QByteArray& text)
 {
-    const QByteArray lower = text.toLower();
-    bool ok = false;
-    if (lower == "true" || lower == "false")
-        return {u"std_msgs/msg/Bool"_s, kHeader + QByteArray(1, lower == "true" ? '\1' : '\0')};
-    const qint32 i = text.toInt(&ok); // std::stoi over the whole text
-    if (ok) {
-        QByteArray out = kHeader;
-        putU32(out, quint32(i));
+    const PrimitiveText::Parsed p = PrimitiveText::parse(text);
+    QByteArray out = kHeader;
+    switch (p.kind) {
+    case PrimitiveText::Parsed::Kind::Bool:
+        return {u"std_msgs/msg/Bool"_s, out + QByteArray(1, p.boolean ? '\1' : '\0')};
+    case PrimitiveText::Parsed::Kind::Int32:
+        putU32(out, quint32(p.integer));
         return {u"std_msgs/msg/Int32"_s, out};
-    }
-    const float f = text.toFloat(&ok); // std::stof over the whole text
-    if (ok) {
-        QByteArray out = kHeader;
+    case PrimitiveText::Parsed::Kind::Float32: {
         char b[4];
-        qToLittleEndian(f, b);
+        qToLittleEndian(p.real, b);
         out.append(b, 4);
         return {u"std_msgs/msg/Float32"_s, out};
     }
-    QByteArray out = kHeader;
+    case PrimitiveText::Parsed::Kind::String:
+        break;
+    }
     putU32(out, quint32(text.size() + 1));
     out += text;
     out.append('\0');

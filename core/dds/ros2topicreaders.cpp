@@ -110,9 +110,7 @@ void Ros2TopicReaders::onSample(const QString& topic, const unsigned char* data,
     if (it->second.watched)
         it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
     if (m_arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
-        m_arrivals->push(SourceHead {SourceGraph::Ros2, topic, now, s.lastSize,
-                                     s.lastMessage.mid(4, SourceHead::kHeadBytes),
-                                     ContentKey::of(s.lastMessage)});
+        m_arrivals->push(SourceHead::ofRos(SourceGraph::Ros2, topic, s.type, now, s.lastMessage));
 }
 
 bool Ros2TopicReaders::isSubscribed(const QString& topic) const

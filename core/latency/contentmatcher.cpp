@@ -19,19 +19,50 @@ ContentMatcher::End::Take ContentMatcher::End::take(const ContentKey& key, qint6
     if (it == m_slots.end() || it->waiting - it->taken <= 0)
         return Take::None;
     if (it->ambiguous) {
-        ++it->taken; // the oldest untaken ones are the taken ones: expiry tells them from the lost
+        // Which of them this is cannot be told. A bridge delivers in order, soon: the newest is
+        // taken, so the older ones that stay are the lost, judged as they expire; once none with
+        // the key waits, the next is told apart again (one loss in a stream of equal messages does
+        // not make every later match ambiguous).
+        for (auto e = m_entries.rbegin(); e != m_entries.rend(); ++e) {
+            if (!e->taken && e->key == key) {
+                e->taken = true;
+                e->inSlot = true;
+                break;
+            }
+        }
+        ++it->taken;
+        popTaken();
         return Take::Ambiguous;
     }
     Entry& e = m_entries[std::size_t(it->firstSeq - m_base)];
     e.taken = true;
     *ns = e.ns;
     m_slots.erase(it); // it was the only one waiting
+    popTaken();
+    return Take::Unique;
+}
+
+void ContentMatcher::End::popTaken()
+{
     // In order, as a bridge delivers: what was matched leaves at once, the state stays small.
     while (!m_entries.empty() && m_entries.front().taken) {
+        release(m_entries.front());
         m_entries.pop_front();
         ++m_base;
     }
-    return Take::Unique;
+}
+
+bool ContentMatcher::End::release(const Entry& e)
+{
+    if (e.taken && !e.inSlot)
+        return false; // told apart: its slot went when it was taken
+    const auto it = m_slots.find(e.key);
+    Q_ASSERT(it != m_slots.end());
+    if (e.taken)
+        --it->taken;
+    if (--it->waiting == 0)
+        m_slots.erase(it);
+    return !e.taken;
 }
 
 bool ContentMatcher::End::add(const ContentKey& key, qint64 ns, std::size_t maxPending)
@@ -63,16 +94,8 @@ bool ContentMatcher::End::expireOldest(qint64 beforeNs, bool force, bool* unmatc
     ++m_base;
     if (ns)
         *ns = e.ns;
-    if (e.taken)
-        return true;
-    const auto it = m_slots.find(e.key);
-    Q_ASSERT(it != m_slots.end());
-    if (it->taken > 0)
-        --it->taken; // consumed by an ambiguous match
-    else
-        *unmatched = true;
-    if (--it->waiting == 0)
-        m_slots.erase(it);
+    *unmatched = release(e);
+    popTaken();
     return true;
 }
 

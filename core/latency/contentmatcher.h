@@ -90,14 +90,20 @@ private:
             ContentKey key;
             qint64 ns = 0;
             bool taken = false;
+            bool inSlot = false; ///< taken by an ambiguous match: still counted in its key's slot
         };
         struct Slot
         {
             quint64 firstSeq = 0; ///< the oldest waiting entry with the key, while it is unique
             int waiting = 0; ///< entries with the key in m_entries, taken ones included
-            int taken = 0; ///< of those, consumed by ambiguous matches (taken from the oldest on)
+            int taken = 0; ///< of those, consumed by ambiguous matches
             bool ambiguous = false; ///< two with the key waited at once
         };
+        /// Drops the taken entries at the front.
+        void popTaken();
+        /// Takes a leaving entry out of its key's slot: true when it went unmatched.
+        bool release(const Entry& e);
+
         std::deque<Entry> m_entries;
         quint64 m_base = 0; ///< the sequence number of m_entries.front()
         QHash<ContentKey, Slot> m_slots;

@@ -30,7 +30,9 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
             SourceHead head {SourceGraph::Mqtt, m.topic, m.receivedNs, int(m.payload.size()),
                              m.payload.left(SourceHead::kHeadBytes),
                              // the content after mqtt_client's stamp is the ROS message's (issue 45)
-                             ContentKey::ofPayload(m.payload, *stamp), *stamp};
+                             ContentKey::ofPayload(m.payload, *stamp), *stamp, std::nullopt};
+            if (m.payload.size() <= PrimitiveText::kMaxRoundTripBytes) // what a primitive link makes of it
+                head.textKey = ContentKey::of(PrimitiveText::roundTrip(m.payload));
             m_heads.deliver(std::move(head));
         }
         if (m_taps.tapped(m.topic)) {

@@ -99,8 +99,7 @@ struct RosMonitor::Private
             ++typesLearned;
         }
         if (heads.active())
-            heads.deliver({SourceGraph::Ros1, topic, now, t.stats.lastSize,
-                           bytes.left(SourceHead::kHeadBytes), ContentKey::of(bytes)});
+            heads.deliver(SourceHead::ofRos(SourceGraph::Ros1, topic, t.stats.type, now, bytes));
         taps.deliver({SourceGraph::Ros1, topic, {}, now, bytes}); // shares the bytes, no copy
         t.stats.lastMessage = std::move(bytes);
         t.rates.add(now, t.stats.lastSize);
@@ -118,7 +117,12 @@ struct RosMonitor::Private
                       p->record(topic, msg);
               };
         try {
-            subscribers.insert(topic, node.subscribe<topic_tools::ShapeShifter>(topic.toStdString(), 10, cb));
+            // TCP_NODELAY: what arrives is timed as it comes, not after Nagle's wait for the next
+            // small message (up to 40 ms, which the observed hop latency would take for the bridge's).
+            subscribers.insert(topic,
+                               node.subscribe<topic_tools::ShapeShifter>(topic.toStdString(), 10, cb,
+                                                                         ros::VoidConstPtr(),
+                                                                         ros::TransportHints().tcpNoDelay()));
         } catch (const ros::Exception& e) {
             const QString why = QString::fromStdString(e.what());
             QMetaObject::invokeMethod(

@@ -253,12 +253,13 @@ template <class IO, class B>
 IfBody<B, ArrivalBatch> fieldsOf(IO& io, B& b)
 {
     io.field(b.dropped);
-    io.list(b.arrivals, 4 + 8 + 4 + 4 + 1 + 8 + 8, [&](auto& a) {
+    io.list(b.arrivals, 4 + 8 + 4 + 4 + 1 + 8 + 8 + 1, [&](auto& a) {
         io.field(a.topic);
         io.field(a.receivedNs);
         io.field(a.size);
         io.field(a.head);
         io.field(a.key);
+        io.field(a.textKey);
     });
 }
 

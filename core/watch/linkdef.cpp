@@ -65,8 +65,8 @@ QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& na
         l.willTopic = will;
         l.willMessage = will.isEmpty() ? QByteArray() : willMessage;
         l.stampPrefix = m.effective(u"timestamp_topic_prefix"_s);
-        l.rawPayload
-            = !YamlText::isTrue(m.effective(u"primitive"_s)) && !YamlText::isTrue(m.effective(u"json"_s));
+        l.primitive = YamlText::isTrue(m.effective(u"primitive"_s));
+        l.rawPayload = !l.primitive && !YamlText::isTrue(m.effective(u"json"_s));
         out << l;
     }
     return out;

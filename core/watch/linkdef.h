@@ -29,6 +29,8 @@ struct LinkDef
     /// mqtt_client carries the ROS serialization as it is (no `primitive`, no `json`): the two ends'
     /// contents can be matched without stamps (issue 45).
     bool rawPayload = true;
+    /// mqtt_client sends the ROS message's value as text (`primitive`): matched by that text.
+    bool primitive = false;
 
     /// "config|ros2mqtt|/ros/topic|mqtt/topic": stable across runs, unique within a watch.
     QString id() const;

@@ -138,6 +138,21 @@ std::vector<int> LinkReader::takeHeard()
     return take(m_heard, &LinkTrack::heard);
 }
 
+void LinkReader::addDrained(std::vector<std::vector<SourceHead>> batches)
+{
+    std::vector<SourceHead> all;
+    for (std::vector<SourceHead>& b : batches) {
+        if (all.empty())
+            all = std::move(b);
+        else
+            all.insert(all.end(), std::make_move_iterator(b.begin()), std::make_move_iterator(b.end()));
+    }
+    // Each source's batch is in its arrival order; stable: one topic's messages keep theirs.
+    std::stable_sort(all.begin(), all.end(),
+                     [](const SourceHead& a, const SourceHead& b) { return a.receivedNs < b.receivedNs; });
+    add(all);
+}
+
 void LinkReader::add(const std::vector<SourceHead>& batch)
 {
     m_read += batch.size();
@@ -147,6 +162,24 @@ void LinkReader::add(const std::vector<SourceHead>& batch)
         else
             addRosHead(a);
     }
+}
+
+/// What a link matches its two ends by (issue 45): the ROS serialization on a raw link, the text on
+/// a primitive one; an MQTT payload a primitive link receives counts as the text its ROS message
+/// has. None for JSON links and discovered ones (only one end known).
+std::optional<ContentKey> LinkReader::contentKey(const LinkDef& link, const SourceHead& head)
+{
+    if (link.discovered)
+        return std::nullopt;
+    if (link.rawPayload)
+        return head.key;
+    if (!link.primitive)
+        return std::nullopt;
+    if (head.graph != SourceGraph::Mqtt)
+        return head.textKey;
+    if (link.direction == Direction::Mqtt2Ros && head.textKey)
+        return head.textKey;
+    return head.key;
 }
 
 void LinkReader::addMqttHead(const SourceHead& m)
@@ -159,8 +192,8 @@ void LinkReader::addMqttHead(const SourceHead& m)
         LinkTrack& t = *m_tracks[std::size_t(i)];
         // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
         // The content after the stamp the link's announcement says it has (issue 45).
-        if (m.key && t.def.rawPayload && !t.def.discovered && m.keySkipped == t.stampBytes())
-            t.addContent(t.def.direction == Direction::Mqtt2Ros, *m.key, m.receivedNs);
+        if (const std::optional<ContentKey> key = contentKey(t.def, m); key && m.keySkipped == t.stampBytes())
+            t.addContent(t.def.direction == Direction::Mqtt2Ros, *key, m.receivedNs);
         if (t.def.direction == Direction::Mqtt2Ros) {
             t.src.add(m.receivedNs, m.size);
             if (t.srcHeader && !t.ros2)
@@ -192,8 +225,8 @@ void LinkReader::addRosHead(const SourceHead& a)
         for (int i : *it) {
             heard(i);
             LinkTrack& t = *m_tracks[std::size_t(i)];
-            if (a.key && t.def.rawPayload)
-                t.addContent(t.def.direction == Direction::Ros2Mqtt, *a.key, a.receivedNs);
+            if (const std::optional<ContentKey> key = contentKey(t.def, a))
+                t.addContent(t.def.direction == Direction::Ros2Mqtt, *key, a.receivedNs);
             if (t.def.direction == Direction::Ros2Mqtt) {
                 t.src.add(a.receivedNs, a.size);
                 if (t.srcHeader && hasSeq)

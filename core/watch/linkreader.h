@@ -2,8 +2,10 @@
 #pragma once
 
 #include "watch/announcedtypes.h"
+#include "wire/contentkey.h"
 
 #include <memory>
+#include <optional>
 #include <QHash>
 #include <QStringList>
 #include <vector>
@@ -50,6 +52,11 @@ public:
     /// Messages of the links' topics, from their MessageSources (MQTT, ROS 1, ROS 2): the first
     /// bytes of each are enough for a stamp, a Header.seq and a Float64 latency.
     void add(const std::vector<SourceHead>& batch);
+    /// The batches of one drain, one per source, taken together in the order their messages
+    /// arrived. Taken source by source, a copy seen at one end would come before its original at
+    /// the other whenever its source's batch is first: after one missed copy, each original would
+    /// then pair with the next copy, one period late, for as long as the stream goes on.
+    void addDrained(std::vector<std::vector<SourceHead>> batches);
     /// Messages and pipeline samples read so far (whether they were a link's or not).
     quint64 read() const { return m_read; }
     /// The links that heard something since the last call, each once (the monitor judges them).
@@ -71,6 +78,7 @@ private:
     void mark(std::vector<int>& list, bool LinkTrack::*in, int i);
     /// Empties `list`, clearing its tracks' flag `in`; what it held.
     std::vector<int> take(std::vector<int>& list, bool LinkTrack::*in);
+    static std::optional<ContentKey> contentKey(const LinkDef& link, const SourceHead& head);
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
     void indexPipeline();

@@ -177,8 +177,11 @@ bool WatchSession::discoverLinks()
 
 void WatchSession::update(qint64 nowNs)
 {
+    std::vector<std::vector<SourceHead>> drained;
+    drained.reserve(m_heads.size());
     for (const std::unique_ptr<HeadTap>& heads : m_heads)
-        m_monitor->reader().add(heads->take());
+        drained.push_back(heads->take());
+    m_monitor->reader().addDrained(std::move(drained));
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())

@@ -22,6 +22,11 @@ struct ContentKey
     /// An MQTT payload of mqtt_client's wire: the message after `stampBytes` of injected stamp
     /// (MqttClientWire::stampBytes(), 0 when not stamped); nullopt when the payload is shorter.
     static std::optional<ContentKey> ofPayload(QByteArrayView payload, qsizetype stampBytes);
+    /// The key of a text, none without one (PrimitiveText's answers).
+    static std::optional<ContentKey> ofText(const std::optional<QByteArray>& text)
+    {
+        return text ? std::optional<ContentKey>(of(*text)) : std::nullopt;
+    }
 
     bool operator==(const ContentKey& o) const { return hash == o.hash && size == o.size; }
 };

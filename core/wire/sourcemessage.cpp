@@ -49,3 +49,18 @@ QString SourceMessage::stampType(SourceGraph graph)
 {
     return QLatin1StringView(graph == SourceGraph::Ros2 ? StampCodec::ros2TypeName() : StampCodec::typeName());
 }
+
+SourceHead SourceHead::ofRos(SourceGraph graph, const QString& topic, QStringView type, qint64 receivedNs,
+                             const QByteArray& bytes)
+{
+    const bool ros2 = graph == SourceGraph::Ros2;
+    return SourceHead {
+        graph,
+        topic,
+        receivedNs,
+        int(bytes.size()),
+        ros2 ? bytes.mid(4, kHeadBytes) : bytes.left(kHeadBytes),
+        ContentKey::of(bytes),
+        0,
+        ContentKey::ofText(ros2 ? PrimitiveText::ofCdr(type, bytes) : PrimitiveText::ofRos1(type, bytes))};
+}

@@ -3,6 +3,7 @@
 
 #include "wire/contentkey.h"
 #include "wire/mqttclientwire.h"
+#include "wire/primitivetext.h"
 #include "wire/rosmessage.h"
 #include "wire/stampcodec.h"
 
@@ -44,6 +45,14 @@ struct SourceHead
     /// computed none.
     std::optional<ContentKey> key;
     qint8 keySkipped = 0;
+    /// On ROS, for a std_msgs primitive: the key of the text mqtt_client's `primitive` sends for it
+    /// (PrimitiveText), so that a primitive link's ends match too. On MQTT, for a payload of at most
+    /// PrimitiveText::kMaxRoundTripBytes: the key of the text its primitive ROS message has.
+    std::optional<ContentKey> textKey = std::nullopt;
+
+    /// The head of a whole ROS message (`graph` Ros1 or Ros2) of `type`, as the ROS sources make it.
+    static SourceHead ofRos(SourceGraph graph, const QString& topic, QStringView type, qint64 receivedNs,
+                            const QByteArray& bytes);
 };
 
 /// What one arrival on a stamp topic or a latency topic gives: a stamp, a latency, or why neither.

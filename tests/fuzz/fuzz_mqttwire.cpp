@@ -5,12 +5,15 @@
 // with the announced type, and the stamp decoder that reads a batch of both.
 //
 // Input: a 16-bit little-endian length, that many bytes of type announcement, then the payload.
+// The payload is also a primitive link's (issue 45): its text as mqtt_client reads it back, and the
+// text of each std_msgs primitive whose ROS 1 or CDR bytes it may be.
 // Properties: a decoded announcement encodes to bytes that decode to the same announcement; a
 // stamped payload split and joined again gives the same stamp and message (and the same bytes,
 // where the stamp was written as Bridgescope writes it); errors come with a message.
 #include "fuzzcheck.h"
 #include "mqtt/mqttstampdecoder.h"
 #include "wire/mqttclientwire.h"
+#include "wire/primitivetext.h"
 #include "wire/rosmessage.h"
 
 namespace {
@@ -74,6 +77,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
     splitAndJoin(payload, Dialect::Ros1);
     splitAndJoin(payload, Dialect::Ros2);
+
+    const QByteArray text = PrimitiveText::roundTrip(payload);
+    if (payload.size() > PrimitiveText::kMaxRoundTripBytes)
+        FUZZ_CHECK(text == payload, "a long payload read back as another text");
+    for (const char* type :
+         {"String", "Bool", "Char", "Int16", "UInt32", "Int64", "Float32", "Float64", "UInt8MultiArray"}) {
+        const QString ros1 = QStringLiteral("std_msgs/") + QString::fromLatin1(type);
+        const QString ros2 = QStringLiteral("std_msgs/msg/") + QString::fromLatin1(type);
+        for (const std::optional<QByteArray>& t :
+             {PrimitiveText::ofRos1(ros1, payload), PrimitiveText::ofCdr(ros2, payload)})
+            FUZZ_CHECK(!t || t->size() <= payload.size() + 400,
+                       "a primitive's text longer than its bytes allow");
+    }
 
     if (info) {
         const QByteArray encoded = MqttClientWire::encodeType(*info);

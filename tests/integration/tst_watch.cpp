@@ -35,6 +35,7 @@
 #include <QTimer>
 #include <QUrl>
 #include <QUrlQuery>
+#include <std_msgs/Int32.h>
 #include <std_msgs/String.h>
 
 using namespace Qt::StringLiterals;
@@ -60,9 +61,11 @@ const QString kConfigTemplate
       u"bridge:\n  ros2mqtt:\n"
       u"    - {ros_topic: /w/stamped, mqtt_topic: w/stamped, inject_timestamp: true}\n"
       u"    - {ros_topic: /w/plain, mqtt_topic: w/plain}\n"
+      u"    - {ros_topic: /w/count, mqtt_topic: w/count, primitive: true}\n"
       u"  mqtt2ros:\n"
       u"    - {mqtt_topic: w/in_stamped, ros_topic: /w/in_stamped}\n"
-      u"    - {mqtt_topic: w/in_plain, ros_topic: /w/in_plain}\n"_s;
+      u"    - {mqtt_topic: w/in_plain, ros_topic: /w/in_plain}\n"
+      u"    - {mqtt_topic: w/in_text, ros_topic: /w/in_text, primitive: true}\n"_s;
 } // namespace
 
 class TestWatch : public QObject
@@ -82,6 +85,8 @@ private:
     QByteArray m_pending;
     int m_stampedPub = -1;
     int m_plainPub = -1;
+    int m_countPub = -1; ///< std_msgs/Int32 on a primitive link
+    qint32 m_count = 0;
     quint32 m_seq = 0;
     quint32 m_inSeq = 0;
     bool m_skipSeq = false; ///< the next stamped message skips one seq value
@@ -120,6 +125,18 @@ private:
             s.data = "plain";
             if (m_ros.publish(m_plainPub, RosBytes::of(s)))
                 ++m_sent[u"/w/plain"_s];
+        }
+        if (!m_paused.contains(u"/w/count"_s)) {
+            std_msgs::Int32 c;
+            c.data = m_count++ * 37 - 1000;
+            if (m_ros.publish(m_countPub, RosBytes::of(c)))
+                ++m_sent[u"/w/count"_s];
+        }
+        if (!m_paused.contains(u"w/in_text"_s)) {
+            // What a script sends (Python's str() of a float): the bridge makes it a Float32.
+            const QByteArray text = QByteArray::number(0.8444218515250481 + m_count, 'g', 17);
+            if (m_mqtt->publish(u"w/in_text"_s, text, 0, false))
+                ++m_sent[u"w/in_text"_s];
         }
         if (!m_paused.contains(u"w/in_stamped"_s)) {
             geometry_msgs::PointStamped p;
@@ -207,7 +224,8 @@ private:
         QTest::qWait(ms);
         const QByteArray after = metrics();
         QStringList still;
-        for (const QString& t : {u"/w/stamped"_s, u"/w/plain"_s, u"/w/in_stamped"_s, u"/w/in_plain"_s}) {
+        for (const QString& t : {u"/w/stamped"_s, u"/w/plain"_s, u"/w/count"_s, u"/w/in_stamped"_s,
+                                 u"/w/in_plain"_s, u"/w/in_text"_s}) {
             const double a = linkValue(before, u"bridgescope_link_messages_total"_s, t, u"destination"_s);
             const double b = linkValue(after, u"bridgescope_link_messages_total"_s, t, u"destination"_s);
             if (!(b > a))
@@ -250,6 +268,11 @@ private slots:
                            &error)
                          .value_or(-1);
         QVERIFY2(m_plainPub >= 0, qPrintable(error));
+        const RosRawMessage int32 = rosMessage(std_msgs::Int32());
+        m_countPub = noted(m_ros.advertise(u"/w/count"_s, int32.type, int32.md5, int32.definition, 10, false),
+                           &error)
+                         .value_or(-1);
+        QVERIFY2(m_countPub >= 0, qPrintable(error));
         announce();
 
         m_config = m_servers.tempPath() + u"/lab.yaml"_s;
@@ -367,6 +390,38 @@ private slots:
         QVERIFY(qIsNaN(meanMs(u"/w/plain"_s)));
     }
 
+    // Issue 45: every link gets an observed hop latency from the content of its two ends, without
+    // stamps: the plain ones (the ROS serialization) and the primitive ones (text: an Int32 out, a
+    // script's float in, which the bridge makes a Float32), all with nothing lost.
+    void linksWithoutStampsGetObservedFigures()
+    {
+        const auto observed = [&](const QByteArray& text, const QString& rosTopic) {
+            return sampleOf(text, u"bridgescope_link_observed_seconds"_s, rosTopic, {u"quantile=\"0.5\""_s});
+        };
+        const QStringList topics {u"/w/plain"_s, u"/w/in_plain"_s, u"/w/count"_s, u"/w/in_text"_s};
+        QByteArray text;
+        const auto allMeasured = [&] {
+            text = metrics();
+            return std::all_of(topics.cbegin(), topics.cend(),
+                               [&](const QString& t) { return !qIsNaN(observed(text, t)); });
+        };
+        const auto observedLines = [&] {
+            QByteArrayList lines = text.split('\n');
+            lines.removeIf([](const QByteArray& l) { return !l.startsWith("bridgescope_link_observed"); });
+            return lines.join('\n');
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(allMeasured(), observedLines().constData(), 20000);
+        for (const QString& t : topics) {
+            const double ms = 1000 * observed(text, t);
+            qInfo().noquote() << t << "observed p50" << ms << "ms";
+            // /w/count is the third small message the bridge publishes in each burst of its
+            // subscriptions: Nagle holds it for the broker's delayed ACK, ~40 ms, and its observed
+            // hop says so (the stamped link, first in the burst, does not meet it).
+            QVERIFY2(ms >= 0 && ms < 100, qPrintable(t + u": "_s + QString::number(ms)));
+            QVERIFY2(linkValue(text, u"bridgescope_link_observed_lost_total"_s, t) == 0, qPrintable(t));
+        }
+    }
+
     void aKilledBridgeStallsAndARestartEndsIt()
     {
         const int from = int(m_events.size());
@@ -377,7 +432,7 @@ private slots:
         // Stall: 5 periods of 100 ms, at least 1 s. Two thresholds, and the 250 ms of a check.
         QTRY_VERIFY_WITH_TIMEOUT(
             events(from, u"start"_s, u"bridge:watch_bridge"_s, u"bridge_down"_s).size() == 1, 2500);
-        QTRY_VERIFY_WITH_TIMEOUT(events(from, u"start"_s, u"|/w/"_s, u"stall"_s).size() == 4, 2500);
+        QTRY_VERIFY_WITH_TIMEOUT(events(from, u"start"_s, u"|/w/"_s, u"stall"_s).size() == 6, 2500);
         const qint64 detected = clock.elapsed();
         QVERIFY2(detected <= 2500, qPrintable(QString::number(detected)));
         // What the watch wrote to its events file is what it printed.
@@ -385,7 +440,7 @@ private slots:
         QVERIFY(file.open(QIODevice::ReadOnly));
         QVERIFY(file.readAll().contains("\"bridge_down\""));
 
-        // The restart ends these four stalls. A link may have more episodes once the bridge is back (a slow
+        // The restart ends these six stalls. A link may have more episodes once the bridge is back (a slow
         // build delivers its first messages in a burst); those are not the ones this test follows.
         QSet<QString> stalls;
         for (const QJsonObject& e : events(from, u"start"_s, u"|/w/"_s, u"stall"_s))
@@ -400,7 +455,7 @@ private slots:
         const int restarted = int(m_events.size());
         startBridge();
         announce();
-        QTRY_VERIFY_WITH_TIMEOUT(stallEnds().size() == 4, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(stallEnds().size() == 6, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(events(restarted, u"end"_s, u"bridge:watch_bridge"_s).size() == 1, 5000);
         for (const QJsonObject& e : stallEnds()) {
             const QByteArray what = QJsonDocument(e).toJson(QJsonDocument::Compact);
@@ -523,7 +578,8 @@ private slots:
         const int masterRestarts = envInt("WATCH_MASTER_RESTARTS", 1);
         const quint16 brokerPort = m_servers.mosquittoPort();
         const quint16 masterPort = m_servers.rosMasterPort();
-        const QStringList topics {u"/w/stamped"_s, u"/w/plain"_s, u"/w/in_stamped"_s, u"/w/in_plain"_s};
+        const QStringList topics {u"/w/stamped"_s,    u"/w/plain"_s,    u"/w/count"_s,
+                                  u"/w/in_stamped"_s, u"/w/in_plain"_s, u"/w/in_text"_s};
         const auto total = [&](const QByteArray& text, const QString& name) {
             double sum = 0;
             for (const QString& t : topics)
@@ -708,7 +764,7 @@ private slots:
         const QList<QJsonObject> summaries = events(0, u"summary"_s, QString());
         QCOMPARE(summaries.size(), 1);
         const QJsonObject summary = summaries.first();
-        QCOMPARE(summary.value(u"links"_s).toInt(), 4);
+        QCOMPARE(summary.value(u"links"_s).toInt(), 6);
         QCOMPARE(summary.value(u"events"_s).toInt(), started.size());
         QVERIFY(summary.value(u"destination_messages"_s).toDouble() > 100);
         QVERIFY(summary.value(u"source_messages"_s).toDouble()

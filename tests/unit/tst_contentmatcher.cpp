@@ -137,6 +137,29 @@ private slots:
 
     // A hostile or broken peer cannot make it hold more than its bound: the oldest go unjudged,
     // counted.
+    // A stream of equal messages (a status "OK", a Bool) with one lost: the messages in flight
+    // with it cannot be told apart for as long as it waits, then it is judged lost and every later
+    // message is matched again; nothing else is lost, and the state drains.
+    void oneLossInAnEqualStreamPassesOver()
+    {
+        ContentMatcher m;
+        const ContentKey ok = ContentKey::of("OK");
+        for (int i = 0; i < 100; ++i) {
+            const qint64 t = 1000 * kMs + i * 100 * kMs;
+            QVERIFY(!m.source(ok, t));
+            if (i != 10)
+                m.destination(ok, t + kMs);
+        }
+        m.expire(1000 * kMs + 100 * 100 * kMs + 3000 * kMs);
+        QCOMPARE(m.counts().lost, 1u);
+        QCOMPARE(m.counts().unexplained, 0u);
+        QVERIFY2(m.counts().ambiguous <= 20,
+                 qPrintable(QString::number(m.counts().ambiguous))); // 2 s at 10 Hz
+        QCOMPARE(m.counts().matched + m.counts().ambiguous, 99u);
+        QVERIFY(m.counts().matched >= 79);
+        QCOMPARE(m.pending(), 0u);
+    }
+
     void stateIsBounded()
     {
         ContentMatcher m({8, 2000 * kMs});

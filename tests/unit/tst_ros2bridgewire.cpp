@@ -6,6 +6,7 @@
 #include "bridge/ros2bridgewire.h"
 #include "mqttclientros2.h"
 #include "resulttext.h"
+#include "wire/primitivetext.h"
 #include "wire/ros2definitions.h"
 
 #include <QJsonArray>
@@ -92,6 +93,64 @@ private slots:
                  std::optional<QByteArray>(QByteArray("a\0\xff", 3)));
         QVERIFY(!primitiveText(m_types, u"geometry_msgs/msg/Point"_s, QByteArray(28, '\0')));
         QVERIFY(!primitiveText(m_types, u"std_msgs/msg/Int32"_s, QByteArray::fromHex("000100")));
+    }
+
+    // Issue 45: the text a primitive link is matched by (PrimitiveText, which needs no type registry
+    // and runs in the DDS child) is the text the bridge sends, in either byte order; what a payload
+    // reads back as is what the bridge makes of it.
+    void primitiveTextAsTheBridgeWritesIt()
+    {
+        const auto big = Cdr::BIG_ENDIANNESS;
+        const QList<std::pair<QString, QByteArray>> messages {
+            {u"std_msgs/msg/String"_s, MqttClientRos2::string("hi there")},
+            {u"std_msgs/msg/String"_s, MqttClientRos2::string("", big)},
+            {u"std_msgs/msg/Bool"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << true; })},
+            {u"std_msgs/msg/Int8"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << int8_t(-5); })},
+            {u"std_msgs/msg/UInt8"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint8_t(200); })},
+            {u"std_msgs/msg/Char"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint8_t(65); })},
+            {u"std_msgs/msg/Byte"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint8_t(7); })},
+            {u"std_msgs/msg/Int16"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << int16_t(-300); }, big)},
+            {u"std_msgs/msg/UInt16"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint16_t(65000); })},
+            {u"std_msgs/msg/Int32"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << int32_t(-42); })},
+            {u"std_msgs/msg/UInt32"_s,
+             MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint32_t(4000000000U); })},
+            {u"std_msgs/msg/Int64"_s,
+             MqttClientRos2::serialize([](Cdr& cdr) { cdr << int64_t(-7000000000000LL); }, big)},
+            {u"std_msgs/msg/UInt64"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << uint64_t(~0ULL); })},
+            {u"std_msgs/msg/Float32"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << 2.5f; })},
+            {u"std_msgs/msg/Float32"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << 0.1f; }, big)},
+            {u"std_msgs/msg/Float64"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << -0.125; })},
+            {u"std_msgs/msg/Float64"_s, MqttClientRos2::serialize([](Cdr& cdr) { cdr << 1e20; })},
+            {u"std_msgs/msg/UInt8MultiArray"_s, MqttClientRos2::serialize([](Cdr& cdr) {
+                 cdr << uint32_t(1) << std::string("x") << uint32_t(3) << uint32_t(3) << uint32_t(0)
+                     << std::vector<uint8_t> {'a', 0, 0xff};
+             })},
+        };
+        for (const auto& [type, cdr] : messages) {
+            const std::optional<QByteArray> text = PrimitiveText::ofCdr(type, cdr);
+            QVERIFY2(text, qPrintable(type));
+            QCOMPARE(*text, *primitiveText(m_types, type, cdr));
+        }
+        QCOMPARE(*PrimitiveText::ofCdr(u"std_msgs/msg/UInt8MultiArray"_s, messages.last().second),
+                 QByteArray("a\0\xff", 3));
+        QVERIFY(!PrimitiveText::ofCdr(u"geometry_msgs/msg/Point"_s, QByteArray(28, '\0')));
+        QVERIFY(!PrimitiveText::ofCdr(u"std_msgs/msg/Int32"_s, QByteArray::fromHex("000100")));
+        QVERIFY(
+            !PrimitiveText::ofCdr(u"std_msgs/msg/String"_s, MqttClientRos2::string("hi there").chopped(4)));
+        QVERIFY(!PrimitiveText::ofCdr(u"std_msgs/msg/Int32"_s, QByteArray::fromHex("0201000007000000")));
+        QVERIFY(!PrimitiveText::ofCdr(u"std_msgs/msg/UInt8MultiArray"_s, messages.last().second.chopped(2)));
+        // A million dimensions claimed in 12 bytes: refused at the first that is not there.
+        QVERIFY(!PrimitiveText::ofCdr(u"std_msgs/msg/UInt8MultiArray"_s,
+                                      QByteArray::fromHex("0001000040420f00")));
+
+        for (const QByteArray& text :
+             {QByteArray("TRUE"), QByteArray("false"), QByteArray("-42"), QByteArray(" 7"), QByteArray("7 "),
+              QByteArray("2.5"), QByteArray("0.8444218515250481"), QByteArray("99999999999"),
+              QByteArray("1e3"), QByteArray("hello"), QByteArray(), QByteArray("12abc"), QByteArray("inf"),
+              QByteArray("3\0", 2)}) {
+            const Typed typed = primitiveFromText(text);
+            QCOMPARE(PrimitiveText::roundTrip(text), *PrimitiveText::ofCdr(typed.type, typed.cdr));
+        }
     }
 
     void jsonToCdr()

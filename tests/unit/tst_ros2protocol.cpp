@@ -168,7 +168,8 @@ private slots:
         const auto arrivals
             = decodeArrivals(encodeArrivals({3,
                                              {{SourceGraph::Mqtt, u"/t"_s, 5, 100, "0123456789abcdef",
-                                               ContentKey::of("0123456789abcdef")}}}));
+                                               ContentKey::of("0123456789abcdef"), 0, ContentKey::of("17")},
+                                              {SourceGraph::Ros2, u"/u"_s, 6, 1, "x", std::nullopt}}}));
         QVERIFY(arrivals);
         QCOMPARE(arrivals->dropped, 3u);
         QCOMPARE(arrivals->arrivals.front().graph, SourceGraph::Ros2);
@@ -176,6 +177,12 @@ private slots:
         QCOMPARE(arrivals->arrivals.front().receivedNs, 5);
         QCOMPARE(arrivals->arrivals.front().size, 100);
         QCOMPARE(arrivals->arrivals.front().head, QByteArray("0123456789abcdef"));
+        QCOMPARE(arrivals->arrivals.front().key,
+                 std::optional<ContentKey>(ContentKey::of("0123456789abcdef")));
+        QCOMPARE(arrivals->arrivals.front().textKey,
+                 std::optional<ContentKey>(ContentKey::of("17"))); // issue 45
+        QCOMPARE(arrivals->arrivals.back().key, std::nullopt);
+        QCOMPARE(arrivals->arrivals.back().textKey, std::nullopt);
     }
 
     // Every prefix of a body is refused (no partial value is taken), and so is a body with a byte

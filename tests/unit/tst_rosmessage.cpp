@@ -5,6 +5,7 @@
 #include "resulttext.h"
 #include "rosserialize.h"
 #include "wire/mqttclientwire.h"
+#include "wire/primitivetext.h"
 #include "wire/rosmessage.h"
 
 #include <geometry_msgs/PoseStamped.h>
@@ -14,9 +15,16 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/PointCloud2.h>
+#include <std_msgs/Bool.h>
+#include <std_msgs/Char.h>
 #include <std_msgs/Duration.h>
+#include <std_msgs/Float32.h>
+#include <std_msgs/Float64.h>
 #include <std_msgs/Float64MultiArray.h>
+#include <std_msgs/Int64.h>
+#include <std_msgs/Int8.h>
 #include <std_msgs/String.h>
+#include <std_msgs/UInt64.h>
 
 using namespace Qt::StringLiterals;
 
@@ -45,6 +53,47 @@ class TestRosMessage : public QObject
 {
     Q_OBJECT
 private slots:
+    // Issue 45: a primitive link's ROS 1 end is matched by the text mqtt_client (up to 2.3) sends for
+    // the message, std::to_string of its data (String its data, Bool "true"/"false").
+    void primitiveTextAsMqttClientWritesIt()
+    {
+        const auto text = [](const char* type, const QByteArray& bytes) {
+            return PrimitiveText::ofRos1(QString::fromLatin1(type), bytes).value_or("(none)");
+        };
+        std_msgs::String s;
+        s.data = "hi there";
+        QCOMPARE(text("std_msgs/String", rosSerialize(s)), QByteArray("hi there"));
+        std_msgs::Bool b;
+        b.data = true;
+        QCOMPARE(text("std_msgs/Bool", rosSerialize(b)), QByteArray("true"));
+        std_msgs::Int8 i8;
+        i8.data = -5;
+        QCOMPARE(text("std_msgs/Int8", rosSerialize(i8)), QByteArray(std::to_string(i8.data).c_str()));
+        std_msgs::Char c;
+        c.data = 200;
+        QCOMPARE(text("std_msgs/Char", rosSerialize(c)), QByteArray(std::to_string(c.data).c_str()));
+        std_msgs::Int64 i64;
+        i64.data = -7000000000000LL;
+        QCOMPARE(text("std_msgs/Int64", rosSerialize(i64)), QByteArray(std::to_string(i64.data).c_str()));
+        std_msgs::UInt64 u64;
+        u64.data = ~0ULL;
+        QCOMPARE(text("std_msgs/UInt64", rosSerialize(u64)), QByteArray(std::to_string(u64.data).c_str()));
+        for (const float v : {2.5f, 0.1f, -1e10f, 123456.789f}) {
+            std_msgs::Float32 f;
+            f.data = v;
+            QCOMPARE(text("std_msgs/Float32", rosSerialize(f)), QByteArray(std::to_string(f.data).c_str()));
+        }
+        std_msgs::Float64 d;
+        d.data = 0.8444218515250481;
+        QCOMPARE(text("std_msgs/Float64", rosSerialize(d)), QByteArray(std::to_string(d.data).c_str()));
+        // Not a primitive, a byte array (mqtt_client for ROS 1 has none), too short or too long.
+        QCOMPARE(text("std_msgs/Duration", QByteArray(8, '\0')), QByteArray("(none)"));
+        QCOMPARE(text("std_msgs/UInt8MultiArray", QByteArray(12, '\0')), QByteArray("(none)"));
+        QCOMPARE(text("std_msgs/Int32", QByteArray(3, '\0')), QByteArray("(none)"));
+        QCOMPARE(text("std_msgs/Int32", QByteArray(5, '\0')), QByteArray("(none)"));
+        QCOMPARE(text("std_msgs/String", rosSerialize(s).chopped(1)), QByteArray("(none)"));
+    }
+
     void decodesWhatMqttClientSent_data()
     {
         QTest::addColumn<QString>("name");
