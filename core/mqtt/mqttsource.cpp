@@ -31,8 +31,9 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
                              m.payload.left(SourceHead::kHeadBytes),
                              // the content after mqtt_client's stamp is the ROS message's (issue 45)
                              ContentKey::ofPayload(m.payload, *stamp), *stamp, std::nullopt};
-            if (m.payload.size() <= PrimitiveText::kMaxRoundTripBytes) // what a primitive link makes of it
-                head.textKey = ContentKey::of(PrimitiveText::roundTrip(m.payload));
+            // What a primitive link makes of it, when that is not the payload (whose key it has).
+            if (m.payload.size() <= PrimitiveText::kMaxRoundTripBytes)
+                head.textKey = ContentKey::ofText(PrimitiveText::roundTripChanged(m.payload));
             m_heads.deliver(std::move(head));
         }
         if (m_taps.tapped(m.topic)) {

@@ -211,18 +211,32 @@ std::optional<QByteArray> ofCdr(QStringView type, QByteArrayView cdr)
 Parsed parse(QByteArrayView payload)
 {
     Parsed p;
-    const QByteArray lower = payload.toByteArray().toLower();
-    if (lower == "true" || lower == "false") {
+    if (qstrnicmp(payload.data(), payload.size(), "true") == 0
+        || qstrnicmp(payload.data(), payload.size(), "false") == 0) {
         p.kind = Parsed::Kind::Bool;
-        p.boolean = lower == "true";
+        p.boolean = payload.size() == 4;
         return p;
     }
     // std::stoi and std::stof over a C string: a NUL ends it, and the text must be used whole.
-    const std::string s = lower.toStdString();
-    if (s.empty() || s.find('\0') != std::string::npos)
+    // Neither reads a text whose first character after white space cannot start a number (most
+    // payloads a watch sees: it reads them all, without copying them).
+    qsizetype first = 0;
+    while (first < payload.size() && std::strchr(" \t\n\v\f\r", payload[first]) && payload[first] != '\0')
+        ++first;
+    if (first == payload.size() || !std::strchr("+-.0123456789iInN", payload[first]) || payload[first] == '\0'
+        || std::memchr(payload.data(), '\0', size_t(payload.size())))
         return p;
-    const char* const begin = s.c_str();
-    const char* const whole = begin + s.size();
+    char small[kMaxRoundTripBytes + 1];
+    std::string large;
+    const char* begin = small;
+    if (payload.size() <= kMaxRoundTripBytes) {
+        std::memcpy(small, payload.data(), size_t(payload.size()));
+        small[payload.size()] = '\0';
+    } else {
+        large.assign(payload.data(), size_t(payload.size()));
+        begin = large.c_str();
+    }
+    const char* const whole = begin + payload.size();
     char* end = nullptr;
     errno = 0;
     const long i = std::strtol(begin, &end, 10);
@@ -239,6 +253,17 @@ Parsed parse(QByteArrayView payload)
         p.real = f;
     }
     return p;
+}
+
+std::optional<QByteArray> roundTripChanged(QByteArrayView payload)
+{
+    if (payload.size() > kMaxRoundTripBytes)
+        return std::nullopt;
+    const Parsed p = parse(payload);
+    if (p.kind == Parsed::Kind::String)
+        return std::nullopt;
+    QByteArray text = roundTrip(payload);
+    return text == payload ? std::nullopt : std::optional<QByteArray>(std::move(text));
 }
 
 QByteArray roundTrip(QByteArrayView payload)

@@ -38,6 +38,8 @@ Parsed parse(QByteArrayView payload);
 /// written as ofRos1() writes it).
 /// Payloads longer than kMaxRoundTripBytes are texts, not numbers: their key is the payload's.
 QByteArray roundTrip(QByteArrayView payload);
+/// roundTrip() when it is not the payload itself (nullopt for most payloads: texts, binary data).
+std::optional<QByteArray> roundTripChanged(QByteArrayView payload);
 inline constexpr qsizetype kMaxRoundTripBytes = 64;
 
 } // namespace PrimitiveText

@@ -47,7 +47,8 @@ struct SourceHead
     qint8 keySkipped = 0;
     /// On ROS, for a std_msgs primitive: the key of the text mqtt_client's `primitive` sends for it
     /// (PrimitiveText), so that a primitive link's ends match too. On MQTT, for a payload of at most
-    /// PrimitiveText::kMaxRoundTripBytes: the key of the text its primitive ROS message has.
+    /// PrimitiveText::kMaxRoundTripBytes: the key of the text its primitive ROS message has, when
+    /// that is not the payload (else `key` is it).
     std::optional<ContentKey> textKey = std::nullopt;
 
     /// The head of a whole ROS message (`graph` Ros1 or Ros2) of `type`, as the ROS sources make it.

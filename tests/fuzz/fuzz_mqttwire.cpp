@@ -81,6 +81,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QByteArray text = PrimitiveText::roundTrip(payload);
     if (payload.size() > PrimitiveText::kMaxRoundTripBytes)
         FUZZ_CHECK(text == payload, "a long payload read back as another text");
+    FUZZ_CHECK(PrimitiveText::roundTripChanged(payload).value_or(payload) == text,
+               "a payload's text read back differs from its change");
     for (const char* type :
          {"String", "Bool", "Char", "Int16", "UInt32", "Int64", "Float32", "Float64", "UInt8MultiArray"}) {
         const QString ros1 = QStringLiteral("std_msgs/") + QString::fromLatin1(type);
