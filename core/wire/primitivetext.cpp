@@ -260,28 +260,26 @@ std::optional<QByteArray> roundTripChanged(QByteArrayView payload)
     if (payload.size() > kMaxRoundTripBytes)
         return std::nullopt;
     const Parsed p = parse(payload);
-    if (p.kind == Parsed::Kind::String)
+    QByteArray text;
+    switch (p.kind) {
+    case Parsed::Kind::Bool:
+        text = p.boolean ? QByteArray("true") : QByteArray("false");
+        break;
+    case Parsed::Kind::Int32:
+        text = QByteArray::number(p.integer);
+        break;
+    case Parsed::Kind::Float32:
+        text = fixed(double(p.real));
+        break;
+    case Parsed::Kind::String:
         return std::nullopt;
-    QByteArray text = roundTrip(payload);
+    }
     return text == payload ? std::nullopt : std::optional<QByteArray>(std::move(text));
 }
 
 QByteArray roundTrip(QByteArrayView payload)
 {
-    if (payload.size() > kMaxRoundTripBytes)
-        return payload.toByteArray();
-    const Parsed p = parse(payload);
-    switch (p.kind) {
-    case Parsed::Kind::Bool:
-        return p.boolean ? QByteArray("true") : QByteArray("false");
-    case Parsed::Kind::Int32:
-        return QByteArray::number(p.integer);
-    case Parsed::Kind::Float32:
-        return fixed(double(p.real));
-    case Parsed::Kind::String:
-        break;
-    }
-    return payload.toByteArray();
+    return roundTripChanged(payload).value_or(payload.toByteArray());
 }
 
 } // namespace PrimitiveText
