@@ -577,8 +577,11 @@ Status Ros2Engine::subscribe(const QString& topic, bool monitored)
         ddsType = type;
     auto reader = std::make_unique<Ros2RawReader>();
     Ros2TopicReaders* readers = &m_readers;
-    reader->onSample = [readers, topic](const Ros2RawSample& s, const dds_sample_info_t&) {
-        readers->onSample(topic, s.data, s.size);
+    reader->onSample = [readers, topic](const Ros2RawSample& s, const dds_sample_info_t& info) {
+        // Cyclone gives each sample its writer's source timestamp (DDS_TIME_INVALID: none), but no
+        // sequence number (dds_sample_info_t has none in 0.10): loss is its sample-lost status.
+        readers->onSample(topic, s.data, s.size,
+                          info.source_timestamp == DDS_TIME_INVALID ? 0 : info.source_timestamp);
     };
     reader->topic = Ros2RawType::createTopic(d->participant, Ros2Names::ddsTopic(topic).toStdString(),
                                              ddsType.toStdString());

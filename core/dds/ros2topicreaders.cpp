@@ -7,12 +7,54 @@
 #include "base/wallclock.h"
 #include "dds/ros2rawreader.h"
 
+#include <algorithm>
+#include <array>
+#include <optional>
+
+namespace {
+/// The ages of the last TopicFigures::kAgeSamples samples with a source timestamp, oldest overwritten.
+struct AgeRing
+{
+    std::array<qint64, TopicFigures::kAgeSamples> ns {};
+    std::size_t count = 0;
+    std::size_t next = 0;
+    mutable std::optional<double> median; ///< as of the last medianMs(), until a sample comes
+
+    void add(qint64 ageNs)
+    {
+        ns[next] = ageNs;
+        next = (next + 1) % ns.size();
+        count = std::min(count + 1, ns.size());
+        median.reset();
+    }
+    /// Sorted only when a sample came since the last call: a snapshot every 100 ms of many quiet topics.
+    double medianMs() const
+    {
+        if (count == 0)
+            return qQNaN();
+        if (!median)
+            median = sortedMedianMs();
+        return *median;
+    }
+    double sortedMedianMs() const
+    {
+        std::array<qint64, TopicFigures::kAgeSamples> sorted = ns;
+        std::sort(sorted.begin(), sorted.begin() + qsizetype(count));
+        const std::size_t mid = count / 2;
+        const double ns50
+            = count % 2 ? double(sorted[mid]) : (double(sorted[mid - 1]) + double(sorted[mid])) / 2;
+        return ns50 / 1e6;
+    }
+};
+} // namespace
+
 /// A read topic: monitored, watched, or both.
 struct Ros2TopicReaders::Entry
 {
     std::unique_ptr<Ros2RawReader> reader;
     Ros2MonitorStats stats;
     RateWindow rates;
+    AgeRing ages;
     bool monitored = false; ///< asked for by monitor()
     std::unique_ptr<NewestQueue<Ros2Sample>> watched; ///< set while watchMessages() asks
 };
@@ -93,7 +135,8 @@ void Ros2TopicReaders::clear()
     m_arrivals.reset();
 }
 
-void Ros2TopicReaders::onSample(const QString& topic, const unsigned char* data, std::size_t size)
+void Ros2TopicReaders::onSample(const QString& topic, const unsigned char* data, std::size_t size,
+                                qint64 sourceNs)
 {
     const qint64 now = wallClockNs();
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -107,6 +150,8 @@ void Ros2TopicReaders::onSample(const QString& topic, const unsigned char* data,
     s.lastNs = now;
     s.lastMessage = QByteArray(reinterpret_cast<const char*>(data), qsizetype(size));
     it->second.rates.add(now, s.lastSize);
+    if (sourceNs > 0) // a writer's clock far off gives a large or negative age: shown as it is
+        it->second.ages.add(now - sourceNs);
     if (it->second.watched)
         it->second.watched->push({now, s.lastMessage}, s.lastSize); // shares the bytes
     if (m_arrivals && it->second.monitored) // as keepArrivals() says: not those only watched
@@ -137,6 +182,7 @@ QHash<QString, Ros2MonitorStats> Ros2TopicReaders::snapshot(qint64 nowNs) const
         std::tie(s.rateHz, s.bytesPerSecond) = e.rates.rates(nowNs);
         s.matchedPublishers = e.reader ? e.reader->matched.load() : 0;
         s.lost = e.reader ? e.reader->lost.load() : 0;
+        s.ageMs = e.ages.medianMs();
         out.insert(topic, s);
     }
     return out;

@@ -44,8 +44,9 @@ public:
     void clear();
 
     /// A sample of `topic` as Cyclone passed it (on its listener thread): counted, queued when
-    /// watched, and an arrival when monitored.
-    void onSample(const QString& topic, const unsigned char* data, std::size_t size);
+    /// watched, and an arrival when monitored. `sourceNs`: its DDS source timestamp (the writer's
+    /// clock, ns since the epoch; 0 or less: none), which gives its age.
+    void onSample(const QString& topic, const unsigned char* data, std::size_t size, qint64 sourceNs = 0);
 
     bool isSubscribed(const QString& topic) const;
     bool isMonitored(const QString& topic) const;

@@ -233,6 +233,7 @@ IfBody<B, TopicStats> fieldsOf(IO& io, B& t)
     io.field(s.type);
     io.field(s.lost);
     io.field(s.matchedPublishers);
+    io.field(s.ageMs);
     io.field(t.withMessage);
     if (t.withMessage)
         io.field(s.lastMessage);
@@ -315,7 +316,7 @@ std::optional<B> decodeBody(const QByteArray& bytes, Valid valid)
 constexpr int kMinEndpointBytes = 4 + 4 + 4 + 1 + 1 + 1 + 4 + 4; // gid, topic, type, flags, depth, node
 constexpr int kMinTopicBytes = 4 * 4; // name, types, publishers, subscribers
 constexpr int kMinNodeBytes = 4 * 3;
-constexpr int kMinStatsBytes = 4 + 8 + 8 + 4 + 8 + 8 + 8 + 4 + 8 + 4 + 1;
+constexpr int kMinStatsBytes = 4 + 8 + 8 + 4 + 8 + 8 + 8 + 4 + 8 + 4 + 8 + 1;
 
 } // namespace
 
@@ -515,7 +516,8 @@ std::optional<QList<TopicStats>> decodeStats(const QByteArray& body)
         fieldsOf(r, t);
         const Ros2MonitorStats& s = t.stats;
         if (s.lastSize < 0 || s.matchedPublishers < 0 || !std::isfinite(s.rateHz)
-            || !std::isfinite(s.bytesPerSecond) || s.rateHz < 0 || s.bytesPerSecond < 0)
+            || !std::isfinite(s.bytesPerSecond) || s.rateHz < 0 || s.bytesPerSecond < 0
+            || std::isinf(s.ageMs))
             r.fail();
     });
     if (!r.done())

@@ -6,6 +6,7 @@
 #include <QHash>
 #include <QString>
 #include <QtGlobal>
+#include <QtNumeric>
 
 /// What a monitor knows of one subscribed topic, ROS 1 (TopicStats) and ROS 2
 /// (Ros2MonitorStats) alike, so that the views show both from one model.
@@ -22,6 +23,11 @@ struct TopicFigures
     quint64 lost = 0; ///< ROS 2: samples DDS reports lost (roscpp tells none)
     /// MQTT: the latency of the last payload mqtt_client stamped, when one came (ROS: none).
     std::optional<double> lastLatencyMs;
+    /// ROS 2: how old the samples were when they came, by their DDS source timestamp (the writer's
+    /// clock: true as far as it agrees with this one), whatever their type, Header or not; the
+    /// median of the last kAgeSamples. NaN: none came with a source timestamp (ROS 1: none).
+    double ageMs = qQNaN();
+    static constexpr int kAgeSamples = 64;
 };
 
 /// The figures of every topic of a monitor's snapshot, without what only its graph knows (md5,

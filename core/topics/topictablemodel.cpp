@@ -4,6 +4,7 @@
 #include "text/topicmime.h"
 
 #include <algorithm>
+#include <cmath>
 #include <QLocale>
 #include <QMimeData>
 
@@ -134,6 +135,12 @@ QVariant TopicTableModel::data(const QModelIndex& index, int role) const
             return t.subscribers.join(u'\n');
         if (index.column() == MonitorColumn)
             return tr("Subscribe and show rate, bandwidth and the last message");
+        if (index.column() == AgeColumn && any && std::isfinite(s->ageMs))
+            return tr("The last message came %1 s ago; the messages were %2 ms old when they came (median "
+                      "of the last %3, by their DDS source timestamps: the writer's clock).")
+                .arg(double(m_nowNs - s->lastNs) / 1e9, 0, 'f', 1)
+                .arg(s->ageMs, 0, 'f', 2)
+                .arg(TopicFigures::kAgeSamples);
         return t.name;
     case SortRole:
         switch (index.column()) {

@@ -5,6 +5,8 @@
 // take over, so its frames are input like any other.
 #include "ros2/ros2protocol.h"
 
+#include <cmath>
+#include <limits>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -149,9 +151,14 @@ private slots:
         s.lastMessage = QByteArray("\0\1\0\0abc", 7);
         s.lost = 2;
         s.matchedPublishers = 1;
+        s.ageMs = 0.25;
         const auto stats = decodeStats(encodeStats({{u"/a"_s, s, true}, {u"/b"_s, s, false}}));
         QVERIFY(stats);
         QCOMPARE(stats->size(), 2);
+        QCOMPARE(stats->at(0).stats.ageMs, 0.25);
+        // no source timestamp: NaN, and so it stays
+        QVERIFY(
+            std::isnan(decodeStats(encodeStats({{u"/a"_s, Ros2MonitorStats {}, false}}))->at(0).stats.ageMs));
         QCOMPARE(stats->at(0).stats.lastMessage, s.lastMessage);
         QCOMPARE(stats->at(0).stats.rateHz, 9.5);
         QCOMPARE(stats->at(0).stats.lastNs, s.lastNs);
@@ -256,6 +263,9 @@ private slots:
         QVERIFY(!decodeGraph(encodeGraph({g, 0})));
         Ros2MonitorStats s;
         s.rateHz = std::numeric_limits<double>::quiet_NaN();
+        QVERIFY(!decodeStats(encodeStats({{u"/a"_s, s, false}})));
+        s = {};
+        s.ageMs = std::numeric_limits<double>::infinity();
         QVERIFY(!decodeStats(encodeStats({{u"/a"_s, s, false}})));
         QVERIFY(!decodeWatch(encodeWatch({u"/a"_s, 1, -1})));
         // a flag is 0 or 1 (issue 42: one field list for both sides, the check in the reader)

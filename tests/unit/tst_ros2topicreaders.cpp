@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Ros2TopicReaders: what the DDS child keeps of the topics it reads, without a domain (the
 // samples are handed in as Cyclone's listener would).
+#include "base/wallclock.h"
 #include "dds/ros2topicreaders.h"
 
+#include <cmath>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
@@ -39,6 +41,31 @@ private slots:
         QCOMPARE(arrivals[0].topic, u"/chatter"_s);
         QCOMPARE(arrivals[0].head, QByteArray("payload")); // after the encapsulation header
         QVERIFY(readers.takeMessages(u"/chatter"_s).empty()); // not watched
+    }
+
+    // Issue 45: a ROS 2 topic's age, Header or not, from its samples' DDS source timestamps: the
+    // median of the last 64, none without them, and a sort only after a sample came.
+    void theAgeIsTheSourceTimestampsMedian()
+    {
+        Ros2TopicReaders readers;
+        readers.add(u"/count"_s, u"std_msgs/msg/Int32"_s, true);
+        deliver(readers, u"/count"_s, kCdr);
+        QVERIFY(std::isnan(readers.snapshot(0)[u"/count"_s].ageMs)); // no source timestamp
+        const auto at = [&](qint64 ageNs) {
+            readers.onSample(u"/count"_s, reinterpret_cast<const unsigned char*>(kCdr.constData()),
+                             std::size_t(kCdr.size()), wallClockNs() - ageNs);
+        };
+        for (int i = 0; i < 100; ++i) // 100 samples 2 ms old, then 40 that were 500 ms old: 64 kept
+            at(2'000'000);
+        for (int i = 0; i < 40; ++i)
+            at(500'000'000);
+        const double ms = readers.snapshot(0)[u"/count"_s].ageMs;
+        QVERIFY2(ms >= 500 && ms < 600, qPrintable(QString::number(ms))); // 40 of the 64 are the old ones
+        for (int i = 0; i < 64; ++i)
+            at(2'000'000);
+        const double fresh = readers.snapshot(0)[u"/count"_s].ageMs;
+        QVERIFY2(fresh >= 2 && fresh < 100, qPrintable(QString::number(fresh)));
+        QCOMPARE(readers.snapshot(0)[u"/count"_s].ageMs, fresh);
     }
 
     void aTopicOnlyWatchedIsQueuedNotShownNorAnArrival()

@@ -639,6 +639,14 @@ void DetailPane::refreshRos(bool force)
     // ROS 2: samples DDS knows were sent and never came (a full receive buffer, a lossy link)
     if (s->lost)
         title += u", "_s + tr("%1 lost").arg(s->lost);
+    // ROS 2, Header or not: the age its DDS source timestamp gives (rqt and ros2 topic give none
+    // without a Header)
+    if (std::isfinite(s->ageMs))
+        title += u"<br>"_s
+            + tr("%1 ms old when it came (median of the last %2, by the DDS source timestamp: the "
+                 "writer's clock, true as far as it agrees with this one)")
+                  .arg(s->ageMs, 0, 'f', 2)
+                  .arg(TopicFigures::kAgeSamples);
     m_title->setText(title);
     m_lastPayload = s->lastMessage;
     showPayload(m_lastPayload);
