@@ -1938,6 +1938,10 @@ Exit-Status: 0 Proben gemessen, 1 Labor ausgefallen oder nichts gemessen, 2 fals
         <source>points per field (%L1 at most: %2 MiB for %3 fields)</source>
         <translation>Punkte je Feld (höchstens %L1: %2 MiB für %3 Felder)</translation>
     </message>
+    <message>
+        <source>%1 ms old when it came (median of the last %2, by the DDS source timestamp: the writer&apos;s clock, true as far as it agrees with this one)</source>
+        <translation>%1 ms alt beim Eintreffen (Median der letzten %2, nach dem DDS-Quellzeitstempel: der Uhr des Schreibers, so genau, wie sie mit dieser übereinstimmt)</translation>
+    </message>
 </context>
 <context>
     <name>DiscoverCommand</name>
@@ -3840,6 +3844,10 @@ factors:
         <source>Crosses from %1 to %2: the raw value includes the clock offset between the hosts. Corrected by the measured clocks (pinned above): median %3 ms %4.</source>
         <translation>Geht von %1 zu %2: Der Rohwert enthält den Uhrenversatz zwischen den Rechnern. Mit den gemessenen Uhren korrigiert (oben angeheftet): Median %3 ms %4.</translation>
     </message>
+    <message>
+        <source>Observed hop latency, without stamps: each message Bridgescope saw going into the bridge matched by its content with the copy it saw coming out, on this computer&apos;s clock (its own delivery of both included). The Links page has the link&apos;s loss.</source>
+        <translation>Beobachtete Sprunglatenz, ohne Zeitstempel: jede Nachricht, die Bridgescope in die Brücke gehen sah, nach ihrem Inhalt der Kopie zugeordnet, die es herauskommen sah, auf der Uhr dieses Rechners (seine eigene Zustellung beider eingeschlossen). Die Seite Verbindungen zeigt den Verlust der Verbindung.</translation>
+    </message>
 </context>
 <context>
     <name>LatencyWarnings</name>
@@ -3974,10 +3982,6 @@ factors:
         <translation>(von einer Bridge angekündigt)</translation>
     </message>
     <message>
-        <source>Observed hop latency: not for primitive and JSON links yet (their two ends carry different bytes).</source>
-        <translation>Beobachtete Latenz des Abschnitts: noch nicht für primitive und JSON-Links (ihre beiden Enden tragen verschiedene Bytes).</translation>
-    </message>
-    <message>
         <source>Observed hop latency: needs both ends; only the MQTT end of a discovered link is watched.</source>
         <translation>Beobachtete Latenz des Abschnitts: braucht beide Enden; von einem entdeckten Link wird nur das MQTT-Ende beobachtet.</translation>
     </message>
@@ -4024,6 +4028,18 @@ factors:
     <message>
         <source>5 min</source>
         <translation>5 min</translation>
+    </message>
+    <message>
+        <source>Observed hop latency: not for JSON links (their MQTT end is the message&apos;s fields as text; matching it to the ROS bytes needs the type&apos;s definition).</source>
+        <translation>Beobachtete Sprunglatenz: nicht für JSON-Verbindungen (ihr MQTT-Ende sind die Felder der Nachricht als Text; sie den ROS-Bytes zuzuordnen braucht die Definition des Typs).</translation>
+    </message>
+    <message>
+        <source>Observed hop (no stamps): p50 %1 ms, p99 %2 ms over 60 s; %3 matched, %4 lost (%5 %), %6 not told apart, %7 with nothing seen going in</source>
+        <translation>Beobachteter Sprung (ohne Zeitstempel): p50 %1 ms, p99 %2 ms über 60 s; %3 zugeordnet, %4 verloren (%5 %), %6 nicht unterscheidbar, %7 ohne gesehenen Eingang</translation>
+    </message>
+    <message>
+        <source>%1 dropped unjudged</source>
+        <translation>%1 unbewertet verworfen</translation>
     </message>
 </context>
 <context>
@@ -5175,6 +5191,13 @@ factors:
     <message>
         <source>Each host&apos;s clock against the pipeline&apos;s first host, from the clock service&apos;s probes: the crossings between measured hosts are corrected by it (rows &quot;clocks measured&quot;), each within the uncertainty shown.</source>
         <translation>Die Uhr jedes Rechners gegenüber dem ersten Rechner der Pipeline, aus den Proben des Uhrendienstes: Übergänge zwischen gemessenen Rechnern werden damit korrigiert (Zeilen „Uhren gemessen“), jeweils auf die angezeigte Unsicherheit genau.</translation>
+    </message>
+    <message numerus="yes">
+        <source> · the observed hop latency of %n more link(s) is on the Links page only (the first links to match have a series here, a bounded number)</source>
+        <translation>
+            <numerusform> · die beobachtete Sprunglatenz %n weiteren Verbindung steht nur auf der Seite Verbindungen (die ersten zugeordneten Verbindungen haben hier eine Reihe, in begrenzter Zahl)</numerusform>
+            <numerusform> · die beobachtete Sprunglatenz %n weiterer Verbindungen steht nur auf der Seite Verbindungen (die ersten zugeordneten Verbindungen haben hier eine Reihe, in begrenzter Zahl)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7605,6 +7628,10 @@ Exit-Status: 0 Bericht geschrieben, 1 ein Lauf mit Pipeline hat keine vollständ
         <source>clocks measured: %1</source>
         <translation>Uhren gemessen: %1</translation>
     </message>
+    <message>
+        <source>Rows named &quot;observed&quot;: a bridge&apos;s hop latency without stamps, each message Bridgescope saw going into the bridge matched by its content with the copy it saw coming out, on Bridgescope&apos;s one clock (its own delivery included).</source>
+        <translation>Zeilen namens „observed“: die Sprunglatenz einer Brücke ohne Zeitstempel, jede Nachricht, die Bridgescope in die Brücke gehen sah, nach ihrem Inhalt der Kopie zugeordnet, die es herauskommen sah, auf der einen Uhr von Bridgescope (seine eigene Zustellung eingeschlossen).</translation>
+    </message>
 </context>
 <context>
     <name>ReportsPage</name>
@@ -9172,6 +9199,10 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
     <message>
         <source>Last</source>
         <translation>Zuletzt</translation>
+    </message>
+    <message>
+        <source>The last message came %1 s ago; the messages were %2 ms old when they came (median of the last %3, by their DDS source timestamps: the writer&apos;s clock).</source>
+        <translation>Die letzte Nachricht kam vor %1 s; die Nachrichten waren beim Eintreffen %2 ms alt (Median der letzten %3, nach ihren DDS-Quellzeitstempeln: der Uhr des Schreibers).</translation>
     </message>
 </context>
 <context>

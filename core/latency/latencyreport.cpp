@@ -3,6 +3,7 @@
 
 #include "latency/latencyengine.h"
 #include "latency/latencywarnings.h"
+#include "latency/seriesid.h"
 
 #include <cmath>
 #include <QJsonArray>
@@ -102,5 +103,17 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
         clocks.insert(c.key(), clockJson(*c));
     if (!clocks.isEmpty())
         doc.insert(u"clocks"_s, clocks);
+    // Single-stage series: mqtt_client's own latencies and the watch's observed hop latencies.
+    QJsonArray single;
+    for (int i = 0; i < series.count(); ++i) {
+        const PipelineSeries::Info& info = series.info(i);
+        if (info.kind != PipelineSeries::Kind::External || series.series(i).count() == 0)
+            continue;
+        single.append(QJsonObject {{u"name"_s, info.label},
+                                   {u"observed"_s, SeriesId::isObserved(info.label)},
+                                   {u"stats"_s, statsOf(i)}});
+    }
+    if (!single.isEmpty())
+        doc.insert(u"single_stage"_s, single);
     return doc;
 }

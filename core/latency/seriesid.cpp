@@ -6,6 +6,7 @@ using namespace Qt::StringLiterals;
 namespace {
 constexpr QStringView stagePrefix = u"stage:";
 constexpr QStringView externalPrefix = u"ext:";
+constexpr QStringView observedPrefix = u"observed ";
 constexpr QStringView correctedPrefix = u"corrected:";
 constexpr std::pair<SeriesKind, QStringView> fixedIds[] = {
     {SeriesKind::Total, u"total"},         {SeriesKind::RoundTrip, u"round_trip"},
@@ -57,4 +58,14 @@ std::optional<SeriesId> SeriesId::parse(const QString& text)
         if (text == id)
             return ofKind(k);
     return std::nullopt;
+}
+
+QString SeriesId::observedName(const QString& source, const QString& destination)
+{
+    return observedPrefix.toString() + source + u" \u2192 "_s + destination;
+}
+
+bool SeriesId::isObserved(const QString& name)
+{
+    return name.startsWith(observedPrefix);
 }

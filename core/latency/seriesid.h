@@ -31,6 +31,11 @@ struct SeriesId
     static SeriesId ofCorrected(int stage) { return {SeriesKind::Corrected, stage, {}}; }
     static SeriesId ofKind(SeriesKind kind) { return {kind, -1, {}}; } ///< not Stage, Corrected or External
     static SeriesId external(const QString& name) { return {SeriesKind::External, -1, name}; }
+    /// The name of the external series of a link's observed hop latency (issue 45: both ends of a
+    /// bridge matched by content, no stamps): "observed SOURCE → DESTINATION".
+    static QString observedName(const QString& source, const QString& destination);
+    /// Whether the external series `name` is an observed hop latency (observedName()).
+    static bool isObserved(const QString& name);
 
     QString toString() const;
     /// nullopt when `text` is not an id.

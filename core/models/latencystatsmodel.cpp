@@ -257,6 +257,10 @@ QString LatencyStatsModel::seriesToolTip(const Row& r) const
             + offsetExplanation(m_offsetBounds));
     if (r.info.kind == LatencyEngine::Kind::There || r.info.kind == LatencyEngine::Kind::Back)
         return tr("One clock: this direction's own one-way latency, stamp to stamp.");
+    if (r.info.kind == LatencyEngine::Kind::External && SeriesId::isObserved(r.info.label))
+        return tr("Observed hop latency, without stamps: each message Bridgescope saw going into the "
+                  "bridge matched by its content with the copy it saw coming out, on this computer's "
+                  "clock (its own delivery of both included). The Links page has the link's loss.");
     if (r.info.kind == LatencyEngine::Kind::External)
         return tr("Measured by the bridge itself (single-stage series).");
     return r.info.detail;

@@ -127,10 +127,29 @@ QString Report::title() const
     return tr("Latency comparison: %1").arg(names.join(u", "_s));
 }
 
-bool Report::hasLatency() const
+bool Report::hasPipeline() const
 {
     return std::any_of(m_runs.cbegin(), m_runs.cend(),
                        [](const auto& r) { return r->engine->pipeline().topicCount() > 0; });
+}
+
+namespace {
+/// The single-stage series of `engine` that hold values.
+QList<int> externalSeries(const LatencyEngine& engine)
+{
+    QList<int> out;
+    for (int i = 0; i < engine.seriesCount(); ++i)
+        if (engine.info(i).kind == LatencyEngine::Kind::External && engine.series(i).count() > 0)
+            out << i;
+    return out;
+}
+} // namespace
+
+bool Report::hasLatency() const
+{
+    return hasPipeline() || std::any_of(m_runs.cbegin(), m_runs.cend(), [](const auto& r) {
+               return !externalSeries(*r->engine).isEmpty();
+           });
 }
 
 bool Report::hasEvents() const
@@ -152,7 +171,8 @@ QList<Report::Row> Report::rows() const
             out.append({info.label, info.id, info.crossing, false, false});
         }
     }
-    out.append({tr("total"), SeriesId::ofKind(SeriesKind::Total).toString(), false, true, false});
+    if (hasPipeline())
+        out.append({tr("total"), SeriesId::ofKind(SeriesKind::Total).toString(), false, true, false});
     bool roundTrip = false;
     bool offset = false;
     bool legs = false;
@@ -190,7 +210,17 @@ QList<Report::Row> Report::rows() const
     if (asymmetry)
         out.append({tr("path asymmetry (there − half the round trip)"),
                     SeriesId::ofKind(SeriesKind::Asymmetry).toString(), false, false, true});
-    return out;
+    QList<Row> external;
+    for (const auto& run : m_runs)
+        for (int i : externalSeries(*run->engine)) {
+            const LatencyEngine::SeriesInfo& info = run->engine->info(i);
+            if (!seen.contains(info.id)) {
+                seen.insert(info.id);
+                external.append({info.label, info.id, false, false, false});
+            }
+        }
+    std::sort(external.begin(), external.end(), [](const Row& a, const Row& b) { return a.label < b.label; });
+    return out + external;
 }
 
 std::optional<double> Report::uncertaintyMs(const ReportRun& run, const Row& row) const

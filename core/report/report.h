@@ -54,11 +54,15 @@ public:
     QString title() const;
     const Options& options() const { return m_options; }
     /// Whether any run has a pipeline to measure (a run of `watch` may hold events only).
+    bool hasPipeline() const;
+    /// Whether any run has latencies: a pipeline, or single-stage series (mqtt_client's own, the
+    /// watch's observed hop latencies).
     bool hasLatency() const;
     /// Whether any run recorded watch events.
     bool hasEvents() const;
 
-    /// The rows of the stage table: stage labels in order over all runs, then total and derived.
+    /// The rows of the stage table: stage labels in order over all runs, then total and derived,
+    /// then the single-stage series (observed hop latencies, mqtt_client's), by name.
     struct Row
     {
         QString label;

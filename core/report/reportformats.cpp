@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include "reportformats.h"
 
-#include "text/nameelider.h"
 #include "latency/clocktext.h"
 #include "latency/latencyreport.h"
-#include "models/latencystatsmodel.h"
 #include "latency/palette.h"
+#include "latency/seriesid.h"
+#include "models/latencystatsmodel.h"
 #include "record/suitecsv.h"
 #include "report/ecdfsvg.h"
 #include "report/report.h"
 #include "report/reportpdf.h"
 #include "report/reporttable.h"
+#include "text/nameelider.h"
 
 #include <algorithm>
 #include <cmath>
@@ -383,16 +384,30 @@ QString eventsNote(qsizetype more)
     return out;
 }
 
-QString note()
+QString note(const Report& report)
 {
+    const QList<Report::Row> rows = report.rows();
+    const bool observed = std::any_of(rows.cbegin(), rows.cend(), [](const Report::Row& r) {
+        const std::optional<SeriesId> id = SeriesId::parse(r.seriesId);
+        return id && id->kind == SeriesKind::External && SeriesId::isObserved(id->name);
+    });
+    const QString more = observed
+        ? u' '
+            + QCoreApplication::translate(
+                "ReportFormats",
+                "Rows named \"observed\": a bridge's hop latency without stamps, each message Bridgescope "
+                "saw going into the bridge matched by its content with the copy it saw coming out, on "
+                "Bridgescope's one clock (its own delivery included).")
+        : QString();
     return QCoreApplication::translate(
-        "ReportFormats",
-        "Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows "
-        "in italics cross between hosts: their raw values include the clock offset. "
-        "Communication: total minus every stage on one host, one way being half of it. "
-        "With two clocks, a clock offset and a difference between the two legs cannot be told apart "
-        "within the offset's range (neither leg takes negative time); with one clock (one_clock: true "
-        "in the pipeline, or --one-clock) each direction's own one-way latency is given instead.");
+               "ReportFormats",
+               "Statistics in ms; std is the corrected standard deviation (ddof = 1). Rows "
+               "in italics cross between hosts: their raw values include the clock offset. "
+               "Communication: total minus every stage on one host, one way being half of it. "
+               "With two clocks, a clock offset and a difference between the two legs cannot be told apart "
+               "within the offset's range (neither leg takes negative time); with one clock (one_clock: true "
+               "in the pipeline, or --one-clock) each direction's own one-way latency is given instead.")
+        + more;
 }
 } // namespace
 
@@ -494,11 +509,11 @@ QByteArray ReportFormats::markdown(const Report& report)
     if (report.hasLatency()) {
         out += u"## "_s + tr("Latency per stage") + u"\n\n"_s;
         table(stageTable(report));
-        if (report.isComparison()) {
+        if (report.isComparison() && report.hasPipeline()) {
             out += u"## "_s + tr("Total latency per run") + u"\n\n"_s;
             table(totalsTable(report));
         }
-        out += note() + u"\n"_s;
+        out += note(report) + u"\n"_s;
     }
     if (report.hasEvents()) {
         qsizetype more = 0;
@@ -524,9 +539,9 @@ QByteArray ReportFormats::latex(const Report& report)
                     + tr("Not a measurement (%1): %2").arg(shown(run->name), shown(line, kMaxShownText))
                     + u'\n';
         table(stageTable(report), tr("Latency per stage"));
-        if (report.isComparison())
+        if (report.isComparison() && report.hasPipeline())
             table(totalsTable(report), tr("Total latency per run"));
-        out += u"% "_s + note() + u'\n';
+        out += u"% "_s + note(report) + u'\n';
     }
     if (report.hasEvents()) {
         qsizetype more = 0;
@@ -562,9 +577,9 @@ QString ReportFormats::htmlBody(const Report& report, bool forQtRichText)
     };
     if (report.hasLatency()) {
         table(stageTable(report), tr("Latency per stage"));
-        if (report.isComparison())
+        if (report.isComparison() && report.hasPipeline())
             table(totalsTable(report), tr("Total latency per run"));
-        out += u"<p class=\"note\">"_s + note().toHtmlEscaped() + u"</p>\n"_s;
+        out += u"<p class=\"note\">"_s + note(report).toHtmlEscaped() + u"</p>\n"_s;
     }
     if (report.hasEvents()) {
         qsizetype more = 0;
@@ -609,7 +624,7 @@ QByteArray ReportFormats::html(const Report& report)
           ".note { color: #555; font-size: 0.9em; }\n"
           "</style>\n</head>\n<body>\n"_s;
     out += htmlBody(report, false);
-    if (report.hasLatency())
+    if (report.hasPipeline())
         out += u"<h2>"_s + tr("ECDF").toHtmlEscaped() + u"</h2>\n<figure>\n"_s
             + QString::fromUtf8(ecdfSvg(report)) + u"</figure>\n"_s;
     out += u"<p class=\"note\">"_s

@@ -17,7 +17,7 @@ using namespace Qt::StringLiterals;
 QByteArray ReportPdf::render(const Report& report)
 {
     QList<QByteArray> figures;
-    if (report.hasLatency())
+    if (report.hasPipeline())
         figures << ReportFormats::ecdfSvg(report);
     // The body's texts are cut where they are laid out (ReportFormats); the title is the document's.
     return render(report.title().left(1000), ReportFormats::htmlBody(report, true), figures);

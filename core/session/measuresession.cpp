@@ -226,6 +226,19 @@ void MeasureSession::onDrained(qint64 nowNs)
         publishSoon();
 }
 
+void MeasureSession::addObserved(std::vector<LatencyValue>&& values, int linksLeftOut, qint64 nowNs)
+{
+    Q_ASSERT(QThread::currentThread() == thread());
+    m_observedLeftOut = linksLeftOut;
+    if (m_showingRun)
+        return; // as the stamps: a recorded run is on screen
+    m_recorder->add({}, values, nowNs);
+    for (const LatencyValue& v : values)
+        m_engine.ingest(v);
+    if (!m_paused)
+        publishSoon();
+}
+
 void MeasureSession::publishSoon()
 {
     if (!m_shown || m_engine.revision() == m_publishedRevision)

@@ -118,6 +118,12 @@ public:
     /// device sends garbage), and how many topics had any.
     std::pair<std::vector<std::pair<quint64, QString>>, qsizetype> worstMalformedTopics(std::size_t count) const;
 
+    /// The watch's observed hop latencies (WatchSession::setObservedSink()): measured and recorded
+    /// as single-stage series, as mqtt_client's own latencies are; not while a run is shown.
+    /// `linksLeftOut`: links whose observed figures have no series here (observedLeftOut()).
+    void addObserved(std::vector<LatencyValue>&& values, int linksLeftOut, qint64 nowNs);
+    int observedLeftOut() const { return m_observedLeftOut; }
+
     /// Called with every complete sample.
     void setSampleListener(LatencyEngine::SampleListener listener)
     {
@@ -190,6 +196,7 @@ private:
     bool m_paused = false;
     bool m_firstSampleSaid = false;
     int m_proposedTopics = 0;
+    int m_observedLeftOut = 0;
     bool m_proposedWithCompleteSamples = false;
     quint64 m_publishedRevision = ~quint64(0);
     int m_publishIntervalMs = 0;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <utility>
 
 using namespace Qt::StringLiterals;
 
@@ -45,6 +46,7 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
             t->startNs = nowNs;
         }
         t->def = def;
+        t->keepObserved = m_keepObserved;
         if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
             t->rules = m_ruleBook.forLink(def);
         m_tracks.push_back(std::move(t));
@@ -138,6 +140,24 @@ std::vector<double> LinkMonitor::takeNewLatencies(int index)
     std::vector<double> out;
     out.swap(m_tracks.at(std::size_t(index))->newLatencies);
     return out;
+}
+
+void LinkMonitor::setKeepObserved(bool keep)
+{
+    m_keepObserved = keep;
+    for (auto& t : m_tracks) {
+        t->keepObserved = keep;
+        if (!keep)
+            t->newObserved = {};
+    }
+}
+
+quint64 LinkMonitor::takeNewObserved(int index, std::vector<std::pair<qint64, qint64>>& out)
+{
+    Track& t = *m_tracks.at(std::size_t(index));
+    out.insert(out.end(), t.newObserved.cbegin(), t.newObserved.cend());
+    t.newObserved.clear();
+    return std::exchange(t.newObservedDropped, 0);
 }
 
 void LinkMonitor::addMqttControl(const std::vector<MqttMessage>& batch)

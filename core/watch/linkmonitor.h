@@ -88,6 +88,11 @@ public:
     std::vector<HistoryPoint> history(int index) const;
     /// Latency samples (ms) since the last call, for histograms (at most 10,000 are kept).
     std::vector<double> takeNewLatencies(int index);
+    /// Whether the links keep their matched messages for takeNewObserved() (off: none is kept).
+    void setKeepObserved(bool keep);
+    /// The observed hop latencies (time, latency, both ns) matched since the last call, appended to
+    /// `out`; returns how many were dropped past the bound (10,000 a link) meanwhile.
+    quint64 takeNewObserved(int index, std::vector<std::pair<qint64, qint64>>& out);
     /// Bridges by name: up, down, or unknown (no traffic to judge by).
     using BridgeState = ::BridgeState;
     const LinkBridges& bridges() const { return m_bridges; }
@@ -144,6 +149,7 @@ private:
     quint64 m_changes = 0; ///< refreshes of hearing links, level and sight changes
     quint64 m_judgements = 0;
     std::size_t m_historyPoints = kHistoryPoints;
+    bool m_keepObserved = false;
     /// (time, link): when a silence may change a link's verdict, earliest first; one live entry a
     /// link (LinkTrack::queuedNs), older ones are dropped when they come up.
     std::priority_queue<std::pair<qint64, int>, std::vector<std::pair<qint64, int>>, std::greater<>>

@@ -114,6 +114,12 @@ void LinkTraffic::addContent(bool atSource, const ContentKey& key, qint64 ns)
     observed.emplace_back(ns, double(*latency) / 1e6);
     if (observed.size() > kMaxLatencies)
         observed.pop_front();
+    if (!keepObserved)
+        return;
+    if (newObserved.size() < kMaxLatencies)
+        newObserved.emplace_back(ns, *latency);
+    else
+        ++newObservedDropped;
 }
 
 void LinkTraffic::refresh(qint64 nowNs)

@@ -84,6 +84,11 @@ struct LinkTraffic
     /// whose payloads are the ROS serialization.
     std::unique_ptr<ContentMatcher> content;
     std::deque<std::pair<qint64, double>> observed; ///< (time, ms) of matched messages, the latency window
+    /// Matched messages since the last LinkMonitor::takeNewObserved() (time, latency, both ns), kept
+    /// only while a measurement takes them (keepObserved), at most kMaxLatencies.
+    std::vector<std::pair<qint64, qint64>> newObserved;
+    bool keepObserved = false;
+    quint64 newObservedDropped = 0; ///< past the bound since the last take
     quint64 lostMax = 0;
     /// The watcher cannot see a side (its broker connection, the ROS master): nothing is lost then.
     bool blind = false;

@@ -43,11 +43,22 @@ RunRecorder* LiveWatch::recorder() const
 
 Result<void> LiveWatch::startRecording(const QString& path, const RunInfo& info)
 {
-    return m_measure ? m_measure->startRecording(path, info) : m_ownRecorder->start(path, info);
+    if (m_measure)
+        return m_measure->startRecording(path, info);
+    Result<void> started = m_ownRecorder->start(path, info);
+    if (started) // the observed hop latencies too, as the measurement records them
+        m_watch->setObservedSink(
+            [recorder = m_ownRecorder](std::vector<LatencyValue>&& values, int, qint64 nowNs) {
+                recorder->add({}, values, nowNs);
+            });
+    return started;
 }
 
 Result<void> LiveWatch::stopRecording()
 {
     m_live->drainNow(); // the last stamps and events
-    return m_measure ? m_measure->stopRecording() : m_ownRecorder->stop();
+    if (m_measure)
+        return m_measure->stopRecording();
+    m_watch->setObservedSink({});
+    return m_ownRecorder->stop();
 }

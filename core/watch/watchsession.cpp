@@ -3,12 +3,15 @@
 
 #include "base/logging.h"
 #include "base/wallclock.h"
+#include "latency/seriesid.h"
 #include "mqtt/mqttconnection.h"
 #include "record/runrecorder.h"
 #include "ros/rosgraphpoller.h"
 #include "ros/rosmonitor.h"
 #include "ros2/ros2participant.h"
 #include "session/measuresession.h"
+
+using namespace Qt::StringLiterals;
 
 namespace {
 constexpr qint64 kTickNs = 250'000'000LL;
@@ -182,6 +185,7 @@ void WatchSession::update(qint64 nowNs)
     for (const std::unique_ptr<HeadTap>& heads : m_heads)
         drained.push_back(heads->take());
     m_monitor->reader().addDrained(std::move(drained));
+    handOverObserved(nowNs);
     if (nowNs - m_lastSyncNs >= kSyncNs) {
         m_lastSyncNs = nowNs;
         if (discoverLinks())
@@ -201,6 +205,52 @@ void WatchSession::update(qint64 nowNs)
         updateSight();
         m_monitor->tick(nowNs);
     }
+}
+
+void WatchSession::setObservedSink(ObservedSink sink)
+{
+    m_observedSink = std::move(sink);
+    m_monitor->setKeepObserved(bool(m_observedSink));
+}
+
+void WatchSession::handOverObserved(qint64 nowNs)
+{
+    if (!m_observedSink)
+        return;
+    std::vector<LatencyValue> values;
+    std::vector<std::pair<qint64, qint64>> matched;
+    for (int i = 0; i < m_monitor->linkCount(); ++i) {
+        matched.clear();
+        m_monitor->takeNewObserved(i, matched);
+        if (matched.empty())
+            continue;
+        const QString series = observedSeries(m_monitor->link(i));
+        if (series.isEmpty())
+            continue;
+        for (const auto& [atNs, latencyNs] : matched)
+            values.push_back({series, latencyNs, atNs});
+    }
+    if (!values.empty())
+        m_observedSink(std::move(values), int(m_observedLeftOut.size()), nowNs);
+}
+
+QString WatchSession::observedSeries(const LinkDef& d)
+{
+    const QString id = d.id();
+    if (const auto it = m_observedSeries.constFind(id); it != m_observedSeries.cend())
+        return *it;
+    if (m_observedSeries.size() >= kMaxObservedSeries) {
+        m_observedLeftOut.insert(id); // at most one per link
+        return {};
+    }
+    const QString plain = SeriesId::observedName(d.sourceTopic(), d.destinationTopic());
+    QString name = plain;
+    // The same topics bridged twice (two configs, two clients): told apart by the bridge.
+    for (int n = 2; m_observedNames.contains(name); ++n)
+        name = plain + u" ("_s + d.bridge() + (n > 2 ? u' ' + QString::number(n) : QString()) + u')';
+    m_observedNames.insert(name);
+    m_observedSeries.insert(id, name);
+    return name;
 }
 
 void WatchSession::takeRosTypes(qint64 nowNs)
@@ -273,6 +323,11 @@ void WatchSession::useMeasurement(MeasureSession* measure)
     setPipeline();
     // Samples complete on this thread, in the measurement's drain; a recorded run shown (replayed)
     // is not live.
+    setObservedSink([source = QPointer<MeasureSession>(measure)](std::vector<LatencyValue>&& values,
+                                                                 int linksLeftOut, qint64 nowNs) {
+        if (source)
+            source->addObserved(std::move(values), linksLeftOut, nowNs);
+    });
     measure->setSampleListener(
         [monitor = QPointer<LinkMonitor>(m_monitor),
          source = QPointer<MeasureSession>(measure)](qint64, const std::vector<qint64>& times) {

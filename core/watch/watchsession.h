@@ -5,9 +5,12 @@
 #include "session/livesources.h"
 #include "watch/linkmonitor.h"
 
+#include <functional>
 #include <memory>
+#include <QHash>
 #include <QObject>
 #include <QPointer>
+#include <QSet>
 #include <vector>
 
 class MqttConnection;
@@ -93,6 +96,15 @@ public:
     /// open at its stop stays open there), and links whose stamps are in its pipeline take their
     /// latency from its samples. Takes its sample listener.
     void useMeasurement(MeasureSession* measure);
+    /// Hands each link's observed hop latencies (issue 45: its two ends matched by content) to
+    /// `sink` after every drain that matched any, as single-stage series named
+    /// SeriesId::observedName(): at most kMaxObservedSeries links get a series (the first to match);
+    /// `linksLeftOut` counts the links that matched beyond them, whose figures are on the Links page
+    /// only. An empty sink stops it. useMeasurement() sets the measurement's.
+    using ObservedSink
+        = std::function<void(std::vector<LatencyValue>&& values, int linksLeftOut, qint64 nowNs)>;
+    static constexpr int kMaxObservedSeries = 32;
+    void setObservedSink(ObservedSink sink);
     /// Runs the ROS and tick work now (tests; the live session's drain does it otherwise).
     void update(qint64 nowNs);
 
@@ -107,6 +119,9 @@ private:
     /// The ROS 2 domain's topics that have publishers (empty when it is not joined).
     QSet<QString> ros2Published() const;
     void updateSight();
+    void handOverObserved(qint64 nowNs);
+    /// The observed series of link `d` (empty: past kMaxObservedSeries, counted).
+    QString observedSeries(const LinkDef& d);
 
     Parts m_parts; ///< the sources may go first (siblings in a window die in the order they were made)
     LinkMonitor* m_monitor;
@@ -126,4 +141,8 @@ private:
     int m_unwatched = 0;
     int m_linkLimit = 0;
     bool m_discovering = true;
+    ObservedSink m_observedSink;
+    QHash<QString, QString> m_observedSeries; ///< link id → its series' name
+    QSet<QString> m_observedNames;
+    QSet<QString> m_observedLeftOut; ///< ids of the links that matched past kMaxObservedSeries
 };

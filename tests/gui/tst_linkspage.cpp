@@ -7,8 +7,12 @@
 // the run the Measure page records.
 #include "app/gui/mainwindow.h"
 #include "demo/demolab.h"
+#include "latency/seriesid.h"
+#include "models/latencystatsmodel.h"
 #include "namecheck.h"
 #include "record/runfile.h"
+#include "report/report.h"
+#include "report/reportformats.h"
 #include "resulttext.h"
 #include "ros/rosmasterapi.h"
 #include "session/measuresession.h"
@@ -343,6 +347,24 @@ private slots:
         QString why;
         QTRY_VERIFY2_WITH_TIMEOUT(observedAgrees(&why), qPrintable(why), 15000);
         qInfo().noquote() << "last link:" << why;
+        // The Measure page has each link's observed hop as a single-stage series beside the stamps'
+        // stages, by its name, with its count (issue 45: "shown on Links and Measure").
+        LatencyStatsModel* stats = window.measure()->statsModel();
+        const auto observedRows = [&] {
+            QStringList rows;
+            for (int r = 0; r < stats->rowCount(); ++r) {
+                const QString label = stats->index(r, LatencyStatsModel::SeriesColumn).data().toString();
+                if (label.contains(u"observed "_s)
+                    && stats->index(r, LatencyStatsModel::CountColumn)
+                            .data(LatencyStatsModel::ValueRole)
+                            .toLongLong()
+                        > 0)
+                    rows << label;
+            }
+            return rows;
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(observedRows().size() == 4, qPrintable(observedRows().join(u"; "_s)),
+                                  10000);
 
         // Filtering and the detail pane.
         QTableView* table = named<QTableView>(*page, u"linkTable"_s);
@@ -353,6 +375,10 @@ private slots:
         table->setCurrentIndex(table->model()->index(0, 0));
         QTRY_VERIFY_WITH_TIMEOUT(
             named<LiveText>(*page, u"linkDetail"_s)->text().contains(u"messages at the source"_s), 3000);
+        // Its observed hop, with the loss in percent.
+        QVERIFY2(
+            named<LiveText>(*page, u"linkDetail"_s)->text().contains(u"Observed hop (no stamps): p50 "_s),
+            qPrintable(named<LiveText>(*page, u"linkDetail"_s)->text()));
         // Sorted by destination rate, numerically.
         table->sortByColumn(LinkModel::DestinationRateColumn, Qt::DescendingOrder);
         const double first = table->model()
@@ -443,6 +469,18 @@ private slots:
         }));
         QVERIFY(std::any_of(run->events.cbegin(), run->events.cend(),
                             [](const RecordedEvent& e) { return e.reasons.contains(u"stall"_s); }));
+        // The observed hop latencies were recorded with the run, and its report has their rows.
+        const qsizetype observedSeries
+            = std::count_if(run->series.cbegin(), run->series.cend(),
+                            [](const QString& s) { return SeriesId::isObserved(s); });
+        QVERIFY2(observedSeries >= 1, qPrintable(run->series.join(u"; "_s)));
+        QVERIFY(!run->latencies.empty());
+        std::vector<RunData> runsIn;
+        runsIn.push_back(*run);
+        const Report report = Report::fromRuns(std::move(runsIn), pipeline, {});
+        const QString markdown = QString::fromUtf8(ReportFormats::markdown(report));
+        QVERIFY2(markdown.contains(u"| observed /"_s) && markdown.contains(u"Rows named \"observed\""_s),
+                 qPrintable(markdown));
         lab.stop();
     }
 };

@@ -760,6 +760,13 @@ private slots:
         QVERIFY2(md.contains(u"## Events"_s) && md.contains(u"| bridge watch_bridge | alert |"_s)
                      && md.contains(u"lab: /w/plain → w/plain"_s),
                  qPrintable(md));
+        // Issue 45: a watch without a pipeline records each link's observed hop latency with its
+        // events, and the report of the run has their rows (a latency table of them alone).
+        QVERIFY2(run->series.contains(u"observed /w/plain \u2192 w/plain"_s),
+                 qPrintable(run->series.join(u"; "_s)));
+        QVERIFY2(md.contains(u"## Latency per stage"_s) && md.contains(u"| observed /w/plain → w/plain | "_s)
+                     && !md.contains(u"| total"_s),
+                 qPrintable(md));
         // Issue 40: a report says where each event came from: the config file and its bridge.
         QVERIFY2(md.contains(u"| From |"_s) && md.contains(u"| lab.yaml, bridge watch_bridge |"_s),
                  qPrintable(md));

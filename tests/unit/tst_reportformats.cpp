@@ -4,6 +4,7 @@
 // pages and text poppler reads.
 #include "fixtures.h"
 #include "latency/latencyseries.h"
+#include "latency/seriesid.h"
 #include "record/suitecsv.h"
 #include "report/ecdfsvg.h"
 #include "report/report.h"
@@ -12,6 +13,7 @@
 #include "resulttext.h"
 #include "syntheticrun.h"
 
+#include <algorithm>
 #include <limits>
 #include <QDir>
 #include <QElapsedTimer>
@@ -318,6 +320,60 @@ private slots:
         QVERIFY(!mdEvents.contains(u"Pipeline"_s));
         QVERIFY(mdEvents.contains(u"## Events"_s));
         QVERIFY(!ReportFormats::html(onlyEvents).contains("<svg"));
+    }
+
+    // Issue 45: a watch's run holds the observed hop latencies of its links (single-stage series,
+    // no pipeline): a report has their rows, says what they are, and draws no pipeline's figure; a
+    // measured run has them below its stages.
+    void observedHopsAreReported()
+    {
+        const QString name = SeriesId::observedName(u"/w/plain"_s, u"w/plain"_s);
+        QCOMPARE(name, u"observed /w/plain \u2192 w/plain"_s);
+        QVERIFY(SeriesId::isObserved(name));
+        QVERIFY(!SeriesId::isObserved(u"/bridge/latencies"_s));
+        RunData watched;
+        watched.info.name = u"watched"_s;
+        watched.series = {name, u"/bridge/latencies"_s};
+        const qint64 t0 = 1'700'000'000'000'000'000LL;
+        for (int i = 0; i < 100; ++i) { // 1.00 to 1.99 ms, and the bridge's own 5 ms
+            watched.latencies.push_back(
+                {0, 1'000'000LL + i * 10'000LL, t0 + i * 1'000'000LL, t0 + i * 1'000'000LL});
+            watched.latencies.push_back({1, 5'000'000LL, t0 + i * 1'000'000LL, t0 + i * 1'000'000LL});
+        }
+        const Report onlyObserved = Report::fromRuns({watched}, std::nullopt, {});
+        QVERIFY(onlyObserved.hasLatency());
+        QVERIFY(!onlyObserved.hasPipeline());
+        const QString md = QString::fromUtf8(ReportFormats::markdown(onlyObserved));
+        QVERIFY2(md.contains(u"| observed /w/plain → w/plain | 1.49 | 1.50 |"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"| /bridge/latencies | 5.00 | 5.00 |"_s), qPrintable(md));
+        QVERIFY2(md.contains(u"Rows named \"observed\""_s), qPrintable(md));
+        QVERIFY2(!md.contains(u"| total"_s), qPrintable(md)); // no pipeline, no total
+        QVERIFY(!ReportFormats::html(onlyObserved).contains("<svg"));
+        const QJsonArray single = QJsonDocument::fromJson(ReportFormats::json(onlyObserved))
+                                      .object()
+                                      .value(u"single_stage"_s)
+                                      .toArray();
+        QCOMPARE(single.size(), 2);
+        // in the order their first values came
+        QCOMPARE(single[0].toObject().value(u"name"_s).toString(), name);
+        QVERIFY(single[0].toObject().value(u"observed"_s).toBool());
+        QCOMPARE(single[0].toObject().value(u"stats"_s).toObject().value(u"count"_s).toInt(), 100);
+        QCOMPARE(single[1].toObject().value(u"name"_s).toString(), u"/bridge/latencies"_s);
+        QVERIFY(!single[1].toObject().value(u"observed"_s).toBool());
+
+        // Beside a measured run's stages, after its total; a run without them has no figure there.
+        RunData measured = RunData::fromSamples(paperWithHosts(), SyntheticRun::paper(50, 0, 7).samples);
+        measured.info.name = u"measured"_s;
+        const Report one = Report::fromRuns({measured}, std::nullopt, {});
+        QVERIFY(!QString::fromUtf8(ReportFormats::markdown(one)).contains(u"observed"_s));
+        const Report both = Report::fromRuns({measured, watched}, std::nullopt, {});
+        const QList<Report::Row> rows = both.rows();
+        QCOMPARE(rows.back().label, name);
+        const auto total
+            = std::find_if(rows.cbegin(), rows.cend(), [](const Report::Row& r) { return r.emphasized; });
+        QVERIFY(total != rows.cend() && total < rows.cend() - 2);
+        QVERIFY(!both.stats(*both.runs().front(), rows.back()));
+        QCOMPARE(both.stats(*both.runs().back(), rows.back())->count, 100);
     }
 
     // Issue 40: editing a config raised events that went into a run's Events table with no word of

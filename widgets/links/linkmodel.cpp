@@ -211,9 +211,9 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
 
 QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
 {
-    if (!d.rawPayload)
-        return tr("Observed hop latency: not for primitive and JSON links yet (their two ends carry "
-                  "different bytes).");
+    if (!d.rawPayload && !d.primitive)
+        return tr("Observed hop latency: not for JSON links (their MQTT end is the message's fields "
+                  "as text; matching it to the ROS bytes needs the type's definition).");
     if (d.discovered)
         return tr("Observed hop latency: needs both ends; only the MQTT end of a discovered link is "
                   "watched.");
@@ -231,6 +231,24 @@ QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
         text += u' '
             + tr("Negative: this computer got the copies before the originals (its two subscriptions' "
                  "delivery, not the bridge).");
+    return text;
+}
+
+QString LinkModel::observedLine(const LinkDef& d, const LinkFigures& f)
+{
+    if ((!d.rawPayload && !d.primitive) || d.discovered || f.observedSamples + f.observedLost == 0)
+        return observedText(d, f);
+    const double loss = 100.0 * double(f.observedLost) / double(f.observedSamples + f.observedLost);
+    QString text = tr("Observed hop (no stamps): p50 %1 ms, p99 %2 ms over 60 s; %3 matched, %4 lost "
+                      "(%5 %), %6 not told apart, %7 with nothing seen going in")
+                       .arg(LinkCells::figure(f.observedP50Ms, 2), LinkCells::figure(f.observedP99Ms, 2))
+                       .arg(f.observedSamples)
+                       .arg(f.observedLost)
+                       .arg(loss, 0, 'f', 1)
+                       .arg(f.observedAmbiguous)
+                       .arg(f.observedUnexplained);
+    if (f.observedOverflow > 0)
+        text += u", "_s + tr("%1 dropped unjudged").arg(f.observedOverflow);
     return text;
 }
 

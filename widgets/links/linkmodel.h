@@ -43,6 +43,9 @@ public:
     explicit LinkModel(LinkMonitor* monitor, QObject* parent = nullptr);
 
     static QString latencySourceText(LatencySource source);
+    /// The detail pane's line of the observed hop: p50, p99, the counts and the loss in percent
+    /// (observedText() where there is none).
+    static QString observedLine(const LinkDef& d, const LinkFigures& f);
 
     /// Takes the monitor's links and figures (connected to LinkMonitor::refreshed).
     void refresh();

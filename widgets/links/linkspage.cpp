@@ -589,7 +589,8 @@ void LinksPage::showDetail()
                           .arg(f.duplicates)
                           .arg(f.reordered)
                           .arg(f.stalls)
-                      + u'\n' + LinkModel::latencySourceText(f.latencySource));
+                      + u'\n' + LinkModel::latencySourceText(f.latencySource) + u'\n'
+                      + LinkModel::observedLine(d, f));
     QList<double> rates;
     QList<double> p99;
     for (const LinkMonitor::HistoryPoint& h : monitor->history(i)) {

@@ -602,6 +602,10 @@ void MeasurePage::updateCounts()
                     .arg(bad)
                     .arg(names.join(u", "), m_measure->lastStampError());
     }
+    if (const int left = m_measure->observedLeftOut())
+        text += tr(" · the observed hop latency of %n more link(s) is on the Links page only (the first "
+                   "links to match have a series here, a bounded number)",
+                   nullptr, left);
     if (m_measure->isPaused())
         text += tr(" · paused");
     m_counts->setText(text);
