@@ -5199,6 +5199,10 @@ factors:
             <numerusform> · die beobachtete Sprunglatenz %n weiterer Verbindungen steht nur auf der Seite Verbindungen (die ersten zugeordneten Verbindungen haben hier eine Reihe, in begrenzter Zahl)</numerusform>
         </translation>
     </message>
+    <message>
+        <source> · %1 observed hop latencies dropped unmeasured (more came between two reads than a link keeps)</source>
+        <translation> · %1 beobachtete Sprunglatenzen ungemessen verworfen (zwischen zwei Lesevorgängen kamen mehr, als eine Verbindung behält)</translation>
+    </message>
 </context>
 <context>
     <name>MeasureSession</name>

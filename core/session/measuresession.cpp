@@ -226,10 +226,12 @@ void MeasureSession::onDrained(qint64 nowNs)
         publishSoon();
 }
 
-void MeasureSession::addObserved(std::vector<LatencyValue>&& values, int linksLeftOut, qint64 nowNs)
+void MeasureSession::addObserved(std::vector<LatencyValue>&& values, int linksLeftOut, quint64 dropped,
+                                 qint64 nowNs)
 {
     Q_ASSERT(QThread::currentThread() == thread());
     m_observedLeftOut = linksLeftOut;
+    m_observedDropped = dropped;
     if (m_showingRun)
         return; // as the stamps: a recorded run is on screen
     m_recorder->add({}, values, nowNs);

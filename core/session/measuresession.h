@@ -120,9 +120,11 @@ public:
 
     /// The watch's observed hop latencies (WatchSession::setObservedSink()): measured and recorded
     /// as single-stage series, as mqtt_client's own latencies are; not while a run is shown.
-    /// `linksLeftOut`: links whose observed figures have no series here (observedLeftOut()).
-    void addObserved(std::vector<LatencyValue>&& values, int linksLeftOut, qint64 nowNs);
+    /// `linksLeftOut`: links whose observed figures have no series here (observedLeftOut());
+    /// `dropped`: values the watch dropped past its bound before handing them over (observedDropped()).
+    void addObserved(std::vector<LatencyValue>&& values, int linksLeftOut, quint64 dropped, qint64 nowNs);
     int observedLeftOut() const { return m_observedLeftOut; }
+    quint64 observedDropped() const { return m_observedDropped; }
 
     /// Called with every complete sample.
     void setSampleListener(LatencyEngine::SampleListener listener)
@@ -197,6 +199,7 @@ private:
     bool m_firstSampleSaid = false;
     int m_proposedTopics = 0;
     int m_observedLeftOut = 0;
+    quint64 m_observedDropped = 0;
     bool m_proposedWithCompleteSamples = false;
     quint64 m_publishedRevision = ~quint64(0);
     int m_publishIntervalMs = 0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "livewatch.h"
 
+#include "base/logging.h"
 #include "record/runrecorder.h"
 #include "session/liveparts.h"
 #include "session/livesession.h"
@@ -48,8 +49,14 @@ Result<void> LiveWatch::startRecording(const QString& path, const RunInfo& info)
     Result<void> started = m_ownRecorder->start(path, info);
     if (started) // the observed hop latencies too, as the measurement records them
         m_watch->setObservedSink(
-            [recorder = m_ownRecorder](std::vector<LatencyValue>&& values, int, qint64 nowNs) {
-                recorder->add({}, values, nowNs);
+            [this](std::vector<LatencyValue>&& values, WatchSession::ObservedLeftOut leftOut, qint64 nowNs) {
+                m_ownRecorder->add({}, values, nowNs);
+                if (leftOut.dropped > m_observedDroppedSaid) { // said once per change, not per drain
+                    m_observedDroppedSaid = leftOut.dropped;
+                    qCWarning(lcSession).noquote() << "observed hop latencies dropped unrecorded, past a "
+                                                      "link's bound between two drains:"
+                                                   << leftOut.dropped;
+                }
             });
     return started;
 }

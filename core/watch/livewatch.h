@@ -41,4 +41,5 @@ private:
     MeasureSession* m_measure = nullptr;
     WatchSession* m_watch;
     RunRecorder* m_ownRecorder = nullptr;
+    quint64 m_observedDroppedSaid = 0; ///< the observed values dropped, as last logged
 };

@@ -221,7 +221,7 @@ void WatchSession::handOverObserved(qint64 nowNs)
     std::vector<std::pair<qint64, qint64>> matched;
     for (int i = 0; i < m_monitor->linkCount(); ++i) {
         matched.clear();
-        m_monitor->takeNewObserved(i, matched);
+        m_observedDropped += m_monitor->takeNewObserved(i, matched);
         if (matched.empty())
             continue;
         const QString series = observedSeries(m_monitor->link(i));
@@ -230,8 +230,10 @@ void WatchSession::handOverObserved(qint64 nowNs)
         for (const auto& [atNs, latencyNs] : matched)
             values.push_back({series, latencyNs, atNs});
     }
-    if (!values.empty())
-        m_observedSink(std::move(values), int(m_observedLeftOut.size()), nowNs);
+    if (!values.empty() || m_observedDropped > m_observedDroppedSaid) {
+        m_observedDroppedSaid = m_observedDropped;
+        m_observedSink(std::move(values), {int(m_observedLeftOut.size()), m_observedDropped}, nowNs);
+    }
 }
 
 QString WatchSession::observedSeries(const LinkDef& d)
@@ -324,9 +326,9 @@ void WatchSession::useMeasurement(MeasureSession* measure)
     // Samples complete on this thread, in the measurement's drain; a recorded run shown (replayed)
     // is not live.
     setObservedSink([source = QPointer<MeasureSession>(measure)](std::vector<LatencyValue>&& values,
-                                                                 int linksLeftOut, qint64 nowNs) {
+                                                                 ObservedLeftOut leftOut, qint64 nowNs) {
         if (source)
-            source->addObserved(std::move(values), linksLeftOut, nowNs);
+            source->addObserved(std::move(values), leftOut.links, leftOut.dropped, nowNs);
     });
     measure->setSampleListener(
         [monitor = QPointer<LinkMonitor>(m_monitor),

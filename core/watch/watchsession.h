@@ -99,10 +99,16 @@ public:
     /// Hands each link's observed hop latencies (issue 45: its two ends matched by content) to
     /// `sink` after every drain that matched any, as single-stage series named
     /// SeriesId::observedName(): at most kMaxObservedSeries links get a series (the first to match);
-    /// `linksLeftOut` counts the links that matched beyond them, whose figures are on the Links page
-    /// only. An empty sink stops it. useMeasurement() sets the measurement's.
+    /// `leftOut.links` counts the links that matched beyond them, whose figures are on the Links
+    /// page only; `leftOut.dropped` the values dropped so far past a link's bound between two drains
+    /// (10,000). An empty sink stops it. useMeasurement() sets the measurement's.
+    struct ObservedLeftOut
+    {
+        int links = 0;
+        quint64 dropped = 0;
+    };
     using ObservedSink
-        = std::function<void(std::vector<LatencyValue>&& values, int linksLeftOut, qint64 nowNs)>;
+        = std::function<void(std::vector<LatencyValue>&& values, ObservedLeftOut leftOut, qint64 nowNs)>;
     static constexpr int kMaxObservedSeries = 32;
     void setObservedSink(ObservedSink sink);
     /// Runs the ROS and tick work now (tests; the live session's drain does it otherwise).
@@ -145,4 +151,6 @@ private:
     QHash<QString, QString> m_observedSeries; ///< link id → its series' name
     QSet<QString> m_observedNames;
     QSet<QString> m_observedLeftOut; ///< ids of the links that matched past kMaxObservedSeries
+    quint64 m_observedDropped = 0;
+    quint64 m_observedDroppedSaid = 0; ///< as handed to the sink last
 };

@@ -259,6 +259,42 @@ private slots:
         QCOMPARE(m.figures(m.indexOf(json.id())).observedSamples, quint64(0));
     }
 
+    // Issue 45: the matched messages a measurement takes (the Measure page's observed series) are
+    // kept only while it takes them, at most 10,000 a link between two takes, the rest counted.
+    void observedValuesAreHandedOverBounded()
+    {
+        LinkMonitor m;
+        const LinkDef l = link(Direction::Ros2Mqtt, u"/count"_s, u"count"_s);
+        m.setLinks({l}, kStart);
+        const int index = m.indexOf(l.id());
+        Clock clock {m};
+        const auto send = [&](int n) {
+            for (int i = 0; i < n; ++i) {
+                const QByteArray bytes = QByteArray::number(clock.now) + QByteArray::number(i);
+                m.reader().add({ros(u"/count"_s, bytes, clock.now)});
+                fromBroker(m, {mqtt(u"count"_s, bytes, clock.now + 2 * kMs)});
+                clock.now += 1000; // 1 us apart: many between two takes
+            }
+        };
+        send(10);
+        std::vector<std::pair<qint64, qint64>> taken;
+        QCOMPARE(m.takeNewObserved(index, taken), quint64(0));
+        QVERIFY(taken.empty()); // nobody takes them: none kept
+        m.setKeepObserved(true);
+        send(10'005);
+        QCOMPARE(m.takeNewObserved(index, taken), quint64(5));
+        QCOMPARE(taken.size(), std::size_t(10'000));
+        QCOMPARE(taken.front().second, 2 * kMs);
+        send(3);
+        QCOMPARE(m.takeNewObserved(index, taken), quint64(0));
+        QCOMPARE(taken.size(), std::size_t(10'003)); // appended
+        m.setKeepObserved(false);
+        send(3);
+        taken.clear();
+        m.takeNewObserved(index, taken);
+        QVERIFY(taken.empty());
+    }
+
     // A drain hands over one batch per source, the broker's first. Fed source by source, a stream
     // of equal messages with one copy missed was matched one period late from then on (101 ms
     // for a 0.3 ms hop in tst_watch); in arrival order the missed one is lost and the rest matched.

@@ -606,6 +606,10 @@ void MeasurePage::updateCounts()
         text += tr(" · the observed hop latency of %n more link(s) is on the Links page only (the first "
                    "links to match have a series here, a bounded number)",
                    nullptr, left);
+    if (const quint64 dropped = m_measure->observedDropped())
+        text += tr(" · %1 observed hop latencies dropped unmeasured (more came between two reads than a "
+                   "link keeps)")
+                    .arg(dropped);
     if (m_measure->isPaused())
         text += tr(" · paused");
     m_counts->setText(text);
