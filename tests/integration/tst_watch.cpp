@@ -121,8 +121,11 @@ private:
                 ++m_sent[u"/w/stamped"_s];
         }
         if (!m_paused.contains(u"/w/plain"_s)) {
+            // Distinct texts: an equal stream whose message the watch itself misses once (its own
+            // ROS subscription, under ASan) is matched one period off from then on, a limitation of
+            // content matching that tst_contentmatcher covers, not what this test is about.
             std_msgs::String s;
-            s.data = "plain";
+            s.data = "plain " + std::to_string(m_sent.value(u"/w/plain"_s));
             if (m_ros.publish(m_plainPub, RosBytes::of(s)))
                 ++m_sent[u"/w/plain"_s];
         }
@@ -148,7 +151,7 @@ private:
         }
         if (!m_paused.contains(u"w/in_plain"_s)) {
             std_msgs::String s;
-            s.data = "in";
+            s.data = "in " + std::to_string(m_sent.value(u"w/in_plain"_s));
             if (m_mqtt->publish(u"w/in_plain"_s, RosBytes::of(s), 0, false))
                 ++m_sent[u"w/in_plain"_s];
         }
