@@ -65,7 +65,22 @@ bool ContentMatcher::End::release(const Entry& e)
     return !e.taken;
 }
 
-bool ContentMatcher::End::add(const ContentKey& key, qint64 ns, std::size_t maxPending)
+bool ContentMatcher::End::dropStale(const ContentKey& key, qint64 nowNs, qint64* ns)
+{
+    const auto it = m_slots.find(key);
+    if (it == m_slots.end() || it->ambiguous || it->waiting - it->taken != 1)
+        return false;
+    Entry& e = m_entries[std::size_t(it->firstSeq - m_base)];
+    if (e.gapNs <= 0 || nowNs - e.ns <= e.gapNs / 2)
+        return false;
+    e.taken = true;
+    *ns = e.ns;
+    m_slots.erase(it);
+    popTaken();
+    return true;
+}
+
+bool ContentMatcher::End::add(const ContentKey& key, qint64 ns, qint64 gapNs, std::size_t maxPending)
 {
     bool droppedUnmatched = false;
     while (m_entries.size() >= maxPending) {
@@ -74,7 +89,7 @@ bool ContentMatcher::End::add(const ContentKey& key, qint64 ns, std::size_t maxP
         droppedUnmatched = droppedUnmatched || unmatched;
     }
     const quint64 seq = m_base + m_entries.size();
-    m_entries.push_back({key, ns, false});
+    m_entries.push_back({key, ns, gapNs, false});
     Slot& slot = m_slots[key];
     if (slot.waiting == 0)
         slot.firstSeq = seq;
@@ -127,10 +142,29 @@ void ContentMatcher::expire(qint64 nowNs)
             judge(ns, m_firstIn, &m_counts.unexplained);
 }
 
+qint64 ContentMatcher::copyGap(const ContentKey& key, qint64 ns)
+{
+    const auto it = m_lastOut.find(key);
+    if (it != m_lastOut.end()) {
+        const qint64 gap = std::max<qint64>(ns - *it, 0);
+        *it = ns;
+        return gap;
+    }
+    if (m_lastOut.size() >= kMaxGapKeys)
+        m_lastOut.clear(); // amortised: a stream of distinct contents has no gaps to remember
+    m_lastOut.insert(key, ns);
+    return 0;
+}
+
 std::optional<qint64> ContentMatcher::arrive(End& here, End& there, const ContentKey& key, qint64 ns,
                                              bool isSource)
 {
     expire(ns);
+    // A copy waiting since before half its stream's period: its original was missed (above).
+    qint64 staleNs = 0;
+    if (m_out.dropStale(key, ns, &staleNs))
+        judge(staleNs, m_firstIn, &m_counts.unexplained);
+    const qint64 gapNs = isSource ? 0 : copyGap(key, ns);
     qint64 otherNs = 0;
     switch (there.take(key, &otherNs)) {
     case End::Take::Unique:
@@ -142,7 +176,7 @@ std::optional<qint64> ContentMatcher::arrive(End& here, End& there, const Conten
     case End::Take::None:
         break;
     }
-    if (!here.add(key, ns, m_limits.maxPending))
+    if (!here.add(key, ns, gapNs, m_limits.maxPending))
         ++m_counts.overflow;
     return std::nullopt;
 }
@@ -169,6 +203,7 @@ void ContentMatcher::restart()
     m_out.clear();
     m_firstIn.reset();
     m_firstOut.reset();
+    m_lastOut.clear();
 }
 
 void ContentMatcher::clear()

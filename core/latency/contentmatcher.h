@@ -20,6 +20,11 @@
 /// it the oldest is dropped unjudged and counted. Identical contents in flight at one time cannot be
 /// told apart: each such match is counted as ambiguous and gives no latency.
 ///
+/// A copy waits for its original only while it can be the earlier of the two by the subscriptions'
+/// delivery: once it waited more than half the time since the last copy with its content (an equal
+/// stream's period), it is judged unexplained (its original was missed) rather than matched with
+/// the next original, which would put every later match of the stream one period off.
+///
 /// Work per message: a hash lookup and a deque step; expiry is amortised over the messages.
 class ContentMatcher
 {
@@ -77,7 +82,11 @@ private:
         /// Consumes the oldest waiting message with `key`; `ns` is its time when Unique.
         Take take(const ContentKey& key, qint64* ns);
         /// Adds a message; false when it made room by dropping the oldest (counted by the caller).
-        bool add(const ContentKey& key, qint64 ns, std::size_t maxPending);
+        /// `gapNs`: the time since the last message with the key at this end (0: none known).
+        bool add(const ContentKey& key, qint64 ns, qint64 gapNs, std::size_t maxPending);
+        /// Drops the one message waiting with `key` when, at `nowNs`, it waited more than half its
+        /// gap: true, with `*ns` its time, when it did.
+        bool dropStale(const ContentKey& key, qint64 nowNs, qint64* ns);
         /// Drops the oldest when it waited past `beforeNs` (or `force`): true when one was dropped;
         /// `*unmatched` whether it went without its copy, `*ns` its time.
         bool expireOldest(qint64 beforeNs, bool force, bool* unmatched, qint64* ns = nullptr);
@@ -89,6 +98,7 @@ private:
         {
             ContentKey key;
             qint64 ns = 0;
+            qint64 gapNs = 0;
             bool taken = false;
             bool inSlot = false; ///< taken by an ambiguous match: still counted in its key's slot
         };
@@ -110,6 +120,8 @@ private:
     };
 
     std::optional<qint64> arrive(End& here, End& there, const ContentKey& key, qint64 ns, bool isSource);
+    /// The time since the last copy with `key` came out (0: none remembered), remembering `ns`.
+    qint64 copyGap(const ContentKey& key, qint64 ns);
     /// An unmatched message of one end judged: lost (or unexplained) when the other end had been
     /// heard from by then, else unjudged.
     void judge(qint64 ns, std::optional<qint64> otherFirstNs, quint64* count);
@@ -120,4 +132,7 @@ private:
     Counts m_counts;
     std::optional<qint64> m_firstIn; ///< the first message in since the start or restart()
     std::optional<qint64> m_firstOut;
+    /// When the last copy with each content came out: at most kMaxGapKeys, forgotten all at once.
+    QHash<ContentKey, qint64> m_lastOut;
+    static constexpr qsizetype kMaxGapKeys = 256;
 };
