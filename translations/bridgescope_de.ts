@@ -4030,16 +4030,24 @@ factors:
         <translation>5 min</translation>
     </message>
     <message>
-        <source>Observed hop latency: not for JSON links (their MQTT end is the message&apos;s fields as text; matching it to the ROS bytes needs the type&apos;s definition).</source>
-        <translation>Beobachtete Sprunglatenz: nicht für JSON-Verbindungen (ihr MQTT-Ende sind die Felder der Nachricht als Text; sie den ROS-Bytes zuzuordnen braucht die Definition des Typs).</translation>
-    </message>
-    <message>
         <source>Observed hop (no stamps): p50 %1 ms, p99 %2 ms over 60 s; %3 matched, %4 lost (%5 %), %6 not told apart, %7 with nothing seen going in</source>
         <translation>Beobachteter Sprung (ohne Zeitstempel): p50 %1 ms, p99 %2 ms über 60 s; %3 zugeordnet, %4 verloren (%5 %), %6 nicht unterscheidbar, %7 ohne gesehenen Eingang</translation>
     </message>
     <message>
         <source>%1 dropped unjudged</source>
         <translation>%1 unbewertet verworfen</translation>
+    </message>
+    <message>
+        <source>Observed hop latency: a JSON link is matched by the message its payload makes, which needs the mapping&apos;s ros_type (mqtt_client 2.5 requires it too).</source>
+        <translation>Beobachtete Hop-Latenz: Eine JSON-Verbindung wird über die Nachricht abgeglichen, die ihre Nutzlast ergibt; dafür braucht es den ros_type der Zuordnung (auch mqtt_client 2.5 verlangt ihn).</translation>
+    </message>
+    <message>
+        <source>JSON: each MQTT payload is converted to %1 as mqtt_client 2.5 converts it, and matched with the ROS 2 message by the bytes that makes (%2 did not convert and are not matched; a message whose JSON the bridge shortened, such as a byte array of more than 100 elements, counts as lost).</source>
+        <translation>JSON: Jede MQTT-Nutzlast wird wie von mqtt_client 2.5 in %1 umgewandelt und über die so entstehenden Bytes mit der ROS-2-Nachricht abgeglichen (%2 ließen sich nicht umwandeln und werden nicht abgeglichen; eine Nachricht, deren JSON die Bridge gekürzt hat, etwa um ein Byte-Array mit mehr als 100 Elementen, zählt als verloren).</translation>
+    </message>
+    <message>
+        <source>%1 JSON payloads not converted to %2</source>
+        <translation>%1 JSON-Nutzlasten nicht in %2 umgewandelt</translation>
     </message>
 </context>
 <context>

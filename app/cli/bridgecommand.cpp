@@ -2,13 +2,13 @@
 #include "bridgecommand.h"
 
 #include "app/cli/clioutput.h"
-#include "base/logging.h"
-#include "yaml/yamllimits.h"
-#include "files/regularfile.h"
 #include "app/cli/rosoptions.h"
+#include "base/logging.h"
 #include "bridge/referencebridge.h"
 #include "bridge/ros2bridge.h"
-#include "bridge/ros2bridgewire.h"
+#include "files/regularfile.h"
+#include "wire/ros2bridgewire.h"
+#include "yaml/yamllimits.h"
 
 #include <cerrno>
 #include <cmath>

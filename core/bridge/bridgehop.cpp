@@ -2,8 +2,8 @@
 #include "bridge/bridgehop.h"
 
 #include "base/wallclock.h"
-#include "bridge/ros2bridgewire.h"
 #include "mqtt/mqttlink.h"
+#include "wire/ros2bridgewire.h"
 
 #include <QCoreApplication>
 

@@ -3,10 +3,10 @@
 
 #include "base/logging.h"
 #include "bridge/bridgespec.h"
-#include "bridge/ros2bridgewire.h"
 #include "mqtt/mqttlink.h"
 #include "ros2/ros2participant.h"
 #include "wire/mqttclientwire.h"
+#include "wire/ros2bridgewire.h"
 #include "wire/ros2definitions.h"
 
 #include <atomic>

@@ -2,17 +2,17 @@
 #include "ros2demonodes.h"
 
 #include "base/wallclock.h"
-#include "bridge/ros2bridgewire.h"
 #include "ros2/ros2participant.h"
+#include "wire/ros2bridgewire.h"
 #include "wire/ros2definitions.h"
 #include "wire/rosmessageencoder.h"
 
 #include <initializer_list>
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QtEndian>
 #include <QThread>
 #include <QTimer>
-#include <QtEndian>
 #include <QVariantList>
 #include <QVariantMap>
 #include <random>

@@ -2,6 +2,7 @@
 #include "mqttsource.h"
 
 #include "mqtt/mqtttopics.h"
+#include "wire/ros2bridgewire.h"
 
 #include <algorithm>
 
@@ -34,6 +35,8 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
             // What a primitive link makes of it, when that is not the payload (whose key it has).
             if (m.payload.size() <= PrimitiveText::kMaxRoundTripBytes)
                 head.textKey = ContentKey::ofText(PrimitiveText::roundTripChanged(m.payload));
+            if (const auto json = m_jsonTypes.constFind(m.topic); json != m_jsonTypes.cend())
+                head.jsonKey = jsonKey(*json, m.payload);
             m_heads.deliver(std::move(head));
         }
         if (m_taps.tapped(m.topic)) {
@@ -45,6 +48,18 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
             m_taps.deliver(SourceArrival {SourceGraph::Mqtt, m.topic, *type, m.receivedNs, m.payload});
         }
     }
+}
+
+std::optional<ContentKey> MqttSource::jsonKey(const QString& type, const QByteArray& payload)
+{
+    // As mqtt_client v2.5 makes the ROS message of it (issue 45): the fields in the JSON, defaults
+    // for those it lacks. fromJson() refuses more than kMaxJsonBytes before parsing anything.
+    if (m_ros2Types) {
+        if (const Result<QByteArray> cdr = Ros2BridgeWire::fromJson(*m_ros2Types, type, payload))
+            return ContentKey::of(*cdr);
+    }
+    ++m_jsonUnconverted;
+    return std::nullopt;
 }
 
 void MqttSource::monitor(const QString& topic)

@@ -7,10 +7,12 @@
 #include "mqtt/mqttconnection.h"
 
 #include <memory>
+#include <optional>
 #include <QHash>
 #include <vector>
 
 class MqttTopics;
+class RosTypeRegistry;
 
 /// The broker's topics as a MessageSource, for the views that take any graph (field plots, Watch,
 /// Map health): what RosMonitor is to ROS 1 and Ros2Participant to ROS 2.
@@ -40,7 +42,25 @@ public:
     /// mqtt_client announced for the topic.
     std::unique_ptr<Tap> openTap(const QString& topic, std::size_t maxMessages, qint64 maxBytes) override;
 
+    /// The ROS 2 definitions a JSON payload is converted with (the live session's).
+    void setRos2Registry(std::shared_ptr<const RosTypeRegistry> registry)
+    {
+        m_ros2Types = std::move(registry);
+    }
+    /// The monitored topics that `json` links read, with their ROS 2 types (replacing those set
+    /// before): their heads carry the key of the CDR each payload converts to (SourceHead::jsonKey),
+    /// at most Ros2BridgeWire::kMaxJsonBytes of it parsed.
+    void setJsonTypes(const QHash<QString, QString>& types) { m_jsonTypes = types; }
+    /// Payloads of those topics that did not convert (not JSON, not the type, too large).
+    quint64 jsonUnconverted() const { return m_jsonUnconverted; }
+
 private:
+    /// The key of the CDR a JSON payload of `type` converts to, none when it does not.
+    std::optional<ContentKey> jsonKey(const QString& type, const QByteArray& payload);
+
+    std::shared_ptr<const RosTypeRegistry> m_ros2Types;
+    QHash<QString, QString> m_jsonTypes;
+    quint64 m_jsonUnconverted = 0;
     const MqttTopics* m_topics;
     QHash<QString, int> m_monitored; ///< topic → monitor() calls not yet balanced
     HeadHub m_heads;

@@ -28,6 +28,7 @@ LiveSession::LiveSession(QObject* parent)
     , m_ros2Types(std::make_shared<RosTypeRegistry>(Ros2Definitions::registry()))
 {
     m_tree->setRos2Registry(m_ros2Types); // mqtt_client's ROS 2 payloads decode as ROS 2 samples do
+    m_mqttSource->setRos2Registry(m_ros2Types);
     m_sources.ros1 = m_monitor;
     m_sources.ros2 = m_ros2;
     m_sources.mqtt = m_mqttSource.get();
@@ -39,6 +40,10 @@ LiveSession::LiveSession(QObject* parent)
     };
     m_sources.everyMqttBatch = [self = QPointer<LiveSession>(this)](MqttListener listener) {
         return self ? self->addMqttListener(std::move(listener)) : -1;
+    };
+    m_sources.setMqttJsonTypes = [self = QPointer<LiveSession>(this)](const QHash<QString, QString>& types) {
+        if (self)
+            self->m_mqttSource->setJsonTypes(types);
     };
     connect(m_ros2, &Ros2Participant::graphChanged, m_ros2Topics,
             [this](const Ros2Graph& graph) { m_ros2Topics->setGraph(graph.topicGraph()); });
@@ -103,6 +108,7 @@ void LiveSession::setRos2DefinitionFolders(const QStringList& folders, QStringLi
 {
     m_ros2Types = std::make_shared<RosTypeRegistry>(Ros2Definitions::registry(folders, errors));
     m_tree->setRos2Registry(m_ros2Types);
+    m_mqttSource->setRos2Registry(m_ros2Types);
 }
 
 void LiveSession::connectBroker(const MqttProfile& profile)

@@ -30,6 +30,8 @@ struct LiveSources
     /// Hands every drain's MQTT batch to the listener (before the tree has it, after the MQTT
     /// source); the id removes it again (LiveSession::removeMqttListener()).
     std::function<int(MqttListener listener)> everyMqttBatch;
+    /// The MQTT topics `json` links read and their ROS 2 types (MqttSource::setJsonTypes()).
+    std::function<void(const QHash<QString, QString>& types)> setMqttJsonTypes;
 
     bool alive() const { return !owner.isNull(); }
     /// A user's own counted subscriptions on the source of `graph`.

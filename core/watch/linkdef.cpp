@@ -66,7 +66,9 @@ QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& na
         l.willMessage = will.isEmpty() ? QByteArray() : willMessage;
         l.stampPrefix = m.effective(u"timestamp_topic_prefix"_s);
         l.primitive = YamlText::isTrue(m.effective(u"primitive"_s));
-        l.rawPayload = !l.primitive && !YamlText::isTrue(m.effective(u"json"_s));
+        l.json = !l.primitive && YamlText::isTrue(m.effective(u"json"_s));
+        l.rawPayload = !l.primitive && !l.json;
+        l.rosType = m.effective(u"ros_type"_s);
         out << l;
     }
     return out;
@@ -108,7 +110,8 @@ QJsonObject LinkFigures::toJson() const
                                       {u"lost"_s, double(observedLost)},
                                       {u"ambiguous"_s, double(observedAmbiguous)},
                                       {u"unexplained"_s, double(observedUnexplained)},
-                                      {u"overflow"_s, double(observedOverflow)}}},
+                                      {u"overflow"_s, double(observedOverflow)},
+                                      {u"unconverted"_s, double(observedUnconverted)}}},
                         {u"stalls"_s, double(stalls)}};
 }
 

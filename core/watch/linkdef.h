@@ -31,6 +31,10 @@ struct LinkDef
     bool rawPayload = true;
     /// mqtt_client sends the ROS message's value as text (`primitive`): matched by that text.
     bool primitive = false;
+    /// mqtt_client (v2.5) sends the message's fields as JSON (`json`, not `primitive`): matched by
+    /// the CDR that JSON makes as `rosType` (the mapping's `ros_type`), as the bridge converts it.
+    bool json = false;
+    QString rosType;
 
     /// "config|ros2mqtt|/ros/topic|mqtt/topic": stable across runs, unique within a watch.
     QString id() const;
@@ -97,6 +101,8 @@ struct LinkFigures
     quint64 observedAmbiguous = 0; ///< identical contents in flight at once: no latency
     quint64 observedUnexplained = 0; ///< came out with nothing seen going in
     quint64 observedOverflow = 0; ///< dropped unjudged past the matcher's bound
+    /// A `json` link's MQTT payloads that did not convert to its ros_type: not matched.
+    quint64 observedUnconverted = 0;
     quint64 stalls = 0; ///< stall events so far
     QJsonObject toJson() const;
     static QString latencySourceName(LatencySource source); ///< as in the JSON: "stamps", ...

@@ -166,13 +166,19 @@ void LinkReader::add(const std::vector<SourceHead>& batch)
 
 /// What a link matches its two ends by (issue 45): the ROS serialization on a raw link, the text on
 /// a primitive one; an MQTT payload a primitive link receives counts as the text its ROS message
-/// has. None for JSON links and discovered ones (only one end known).
+/// has; on a JSON link, the CDR its MQTT payload converts to and the ROS 2 message's CDR (mqtt_client
+/// bridges JSON on ROS 2 only). None for discovered links (only one end known).
 std::optional<ContentKey> LinkReader::contentKey(const LinkDef& link, const SourceHead& head)
 {
     if (link.discovered)
         return std::nullopt;
     if (link.rawPayload)
         return head.key;
+    if (link.json) {
+        if (head.graph == SourceGraph::Mqtt)
+            return head.jsonKey;
+        return head.graph == SourceGraph::Ros2 ? head.key : std::nullopt;
+    }
     if (!link.primitive)
         return std::nullopt;
     if (head.graph != SourceGraph::Mqtt)
@@ -194,6 +200,8 @@ void LinkReader::addMqttHead(const SourceHead& m)
         // The content after the stamp the link's announcement says it has (issue 45).
         if (const std::optional<ContentKey> key = contentKey(t.def, m); key && m.keySkipped == t.stampBytes())
             t.addContent(t.def.direction == Direction::Mqtt2Ros, *key, m.receivedNs);
+        else if (t.def.json && !t.blind)
+            ++t.unconverted; // not JSON, not the link's type, too large (MqttSource::jsonKey())
         if (t.def.direction == Direction::Mqtt2Ros) {
             t.src.add(m.receivedNs, m.size);
             if (t.srcHeader && !t.ros2)

@@ -243,5 +243,6 @@ LinkFigures LinkTraffic::liveFigures() const
         f.observedUnexplained = c.unexplained;
         f.observedOverflow = c.overflow;
     }
+    f.observedUnconverted = unconverted;
     return f;
 }

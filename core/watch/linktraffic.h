@@ -83,6 +83,7 @@ struct LinkTraffic
     /// The two ends matched by content (issue 45): made at the first message with a key, for links
     /// whose payloads are the ROS serialization.
     std::unique_ptr<ContentMatcher> content;
+    quint64 unconverted = 0; ///< a `json` link's MQTT payloads that did not convert: not matched
     std::deque<std::pair<qint64, double>> observed; ///< (time, ms) of matched messages, the latency window
     /// Matched messages since the last LinkMonitor::takeNewObserved() (time, latency, both ns), kept
     /// only while a measurement takes them (keepObserved), at most kMaxLatencies.

@@ -44,6 +44,8 @@ WatchSession::WatchSession(const Parts& parts, QObject* parent)
 WatchSession::~WatchSession()
 {
     // The heads taps and subscriptions end themselves; they may outlive their sources.
+    if (m_parts.sources.setMqttJsonTypes && m_parts.sources.alive())
+        m_parts.sources.setMqttJsonTypes({});
 }
 
 quint64 WatchSession::droppedHeads() const
@@ -144,6 +146,13 @@ void WatchSession::applyLinks()
         links << LinkDef::discoveredAt(topic,
                                        m_monitor->reader().announcedTypes().all().value(topic).stamped);
     m_monitor->setLinks(links, wallClockNs());
+    // A json link's MQTT payloads are matched by the CDR they convert to (issue 45).
+    QHash<QString, QString> jsonTypes;
+    for (const LinkDef& l : std::as_const(m_configLinks))
+        if (l.json && !l.rosType.isEmpty())
+            jsonTypes.insert(l.mqttTopic, l.rosType);
+    if (m_parts.sources.setMqttJsonTypes && m_parts.sources.alive())
+        m_parts.sources.setMqttJsonTypes(jsonTypes);
     syncMqttTopics();
     syncRosTopics();
 }

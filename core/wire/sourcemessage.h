@@ -50,6 +50,10 @@ struct SourceHead
     /// PrimitiveText::kMaxRoundTripBytes: the key of the text its primitive ROS message has, when
     /// that is not the payload (else `key` is it).
     std::optional<ContentKey> textKey = std::nullopt;
+    /// On MQTT, for a topic a `json` link reads (MqttSource::setJsonTypes()): the key of the ROS 2
+    /// message (CDR, its encapsulation header included) the payload converts to as the link's type,
+    /// the way mqtt_client v2.5 converts it; none when it does not convert.
+    std::optional<ContentKey> jsonKey = std::nullopt;
 
     /// The head of a whole ROS message (`graph` Ros1 or Ros2) of `type`, as the ROS sources make it.
     static SourceHead ofRos(SourceGraph graph, const QString& topic, QStringView type, qint64 receivedNs,

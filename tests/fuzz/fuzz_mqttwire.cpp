@@ -14,6 +14,7 @@
 #include "mqtt/mqttstampdecoder.h"
 #include "wire/mqttclientwire.h"
 #include "wire/primitivetext.h"
+#include "wire/ros2bridgewire.h"
 #include "wire/rosmessage.h"
 
 namespace {
@@ -135,5 +136,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     decoder.decode(batch, stamps, latencies);
     if (decoder.malformed() > 0)
         FUZZ_CHECK(!decoder.lastError().isEmpty(), "a malformed stamp counted without a message");
+
+    // The payload of a json link as the watch converts it (MqttSource::jsonKey(), issue 45).
+    for (const char* type : {"geometry_msgs/msg/PoseStamped", "std_msgs/msg/String"})
+        if (const Result<QByteArray> cdr
+            = Ros2BridgeWire::fromJson(ros2Types(), QString::fromLatin1(type), payload);
+            !cdr)
+            FUZZ_CHECK(!cdr.error().toString().isEmpty(), "a JSON payload refused without a message");
     return 0;
 }

@@ -672,6 +672,68 @@ private slots:
         QVERIFY(m_fromMqtt.on(u"mqtt_client/ros_msg_type/out/posej"_s).isEmpty());
         stop(b);
     }
+
+    // Issue 45: json links (mqtt_client 2.5) carry no stamp and their MQTT end is text, yet `watch`
+    // gives each its observed hop: the MQTT payload converted to the mapping's ros_type as the
+    // bridge converts it is the CDR the ROS 2 end carries, both ways.
+    void jsonLinksGetObservedFigures()
+    {
+        const QByteArray config
+            = "/**:\n"
+              "  ros__parameters:\n"
+              "    broker: {host: localhost, port: 1883}\n"
+              "    bridge:\n"
+              "      ros2mqtt:\n"
+              "        ros_topics: [/wj]\n"
+              "        /wj: {mqtt_topic: w/j, json: true, ros_type: geometry_msgs/msg/PoseStamped}\n"
+              "      mqtt2ros:\n"
+              "        mqtt_topics: [w/jin]\n"
+              "        w/jin: {ros_topic: /wj_back, json: true,"
+              " ros_type: geometry_msgs/msg/PoseStamped}\n";
+        auto b = bridge(config);
+        Ros2Peer peer(m_domain,
+                      {u"--node"_s, u"/jpeer"_s, u"--pub"_s, u"/wj:geometry_msgs/msg/PoseStamped:20"_s,
+                       u"--duration"_s, u"60"_s});
+        QVERIFY2(peer.waitFor(u"ready"_s), qPrintable(peer.errors()));
+        const quint16 port = TestServers::freePort();
+        QProcess watch;
+        watch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        watch.start(QStringLiteral(BRIDGESCOPE_BINARY),
+                    {u"watch"_s, m_dir.filePath(u"bridge.yaml"_s), u"--broker"_s, m_servers.brokerUrl(),
+                     u"--ros"_s, u"2"_s, u"--ros-domain"_s, QString::number(m_domain),
+                     u"--ros-localhost-only"_s, u"--no-discover"_s, u"--metrics"_s,
+                     u"127.0.0.1:%1"_s.arg(port), u"--seconds"_s, u"60"_s});
+        QVERIFY(watch.waitForStarted(5000));
+        QVERIFY(TestServers::waitForPort(port, 10000));
+        QByteArray metrics;
+        const auto observed = [&](const QString& link) {
+            return TestServers::metricSample(metrics, u"bridgescope_link_observed_seconds"_s,
+                                             {u"link=\"%1\""_s.arg(link), u"quantile=\"0.5\""_s});
+        };
+        const auto sane = [](double s) { return std::isfinite(s) && s > -0.01 && s < 0.25; };
+        QElapsedTimer t;
+        t.start();
+        int i = 0;
+        while (t.elapsed() < 30000
+               && !(sane(observed(u"/wj → w/j"_s)) && sane(observed(u"w/jin → /wj_back"_s)))) {
+            for (int k = 0; k < 5; ++k, ++i) // distinct messages, 50 ms apart
+                m_mqtt->publish(u"w/jin"_s,
+                                "{\"header\": {\"stamp\": {\"sec\": 5, \"nanosec\": " + QByteArray::number(i)
+                                    + "}, \"frame_id\": \"map\"}, \"pose\": {\"position\": {\"x\": "
+                                    + QByteArray::number(i) + "}, \"orientation\": {\"w\": 1}}}",
+                                0, false);
+            QTest::qWait(250);
+            metrics = TestServers::httpGet(port, u"/metrics"_s);
+        }
+        QVERIFY2(sane(observed(u"/wj → w/j"_s)) && sane(observed(u"w/jin → /wj_back"_s)),
+                 metrics.constData());
+        qInfo().noquote() << "observed p50: out" << observed(u"/wj → w/j"_s) * 1000 << "ms, in"
+                          << observed(u"w/jin → /wj_back"_s) * 1000 << "ms";
+        watch.terminate();
+        QVERIFY(watch.waitForFinished(10000));
+        QCOMPARE(watch.exitCode(), 0);
+        stop(b);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRos2Bridge)

@@ -66,7 +66,7 @@ inline QByteArray string(const std::string& data, Cdr::Endianness endianness = C
 inline QByteArray stamped(int32_t sec, uint32_t nanosec, const QByteArray& message,
                           Cdr::Endianness endianness = Cdr::LITTLE_ENDIANNESS)
 {
-    return stamp(sec, nanosec, endianness) + message;
+    return stamp(sec, nanosec, endianness).append(message);
 }
 
 } // namespace MqttClientRos2

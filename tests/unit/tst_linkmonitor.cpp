@@ -5,15 +5,18 @@
 #include "config/configreader.h"
 #include "fixtures.h"
 #include "latency/latencyengine.h"
-#include "models/latencystatsmodel.h"
 #include "latency/pipeline.h"
+#include "models/latencystatsmodel.h"
+#include "models/mqtttopictree.h"
 #include "mqtt/mqttconnection.h"
 #include "mqtt/mqttsource.h"
-#include "models/mqtttopictree.h"
 #include "resulttext.h"
-#include "widgets/links/linkmodel.h"
 #include "watch/linkmonitor.h"
+#include "widgets/links/linkmodel.h"
 #include "wire/mqttclientwire.h"
+#include "wire/ros2bridgewire.h"
+#include "wire/ros2definitions.h"
+#include "wire/rosmessageencoder.h"
 #include "wire/sourcemessage.h"
 
 #include <cstring>
@@ -77,11 +80,24 @@ SourceHead ros(const QString& topic, const QByteArray& bytes, qint64 ns,
 /// the heads the MQTT source kept of the links' topics.
 /// With `tree`, the broker's topics as the session keeps them: announcements of earlier batches
 /// tell the source which payloads carry a stamp (issue 45: their content is after it).
-void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch, MqttTopicTree* tree = nullptr)
+/// The bytes a step that cannot fail here made (a failure stops the test with its reason).
+QByteArray ok(const Result<QByteArray>& made)
+{
+    if (!made)
+        qFatal("%s", qPrintable(made.error().toString()));
+    return *made;
+}
+
+/// With `jsonTypes`, the MQTT source converts those topics' JSON as their ROS 2 types (json links).
+void fromBroker(LinkMonitor& m, const std::vector<MqttMessage>& batch, MqttTopicTree* tree = nullptr,
+                const QHash<QString, QString>& jsonTypes = {})
 {
     MqttTopicTree own;
     MqttTopicTree& topics = tree ? *tree : own;
     MqttSource source(&topics.topicData());
+    static const auto ros2Types = std::make_shared<const RosTypeRegistry>(Ros2Definitions::registry());
+    source.setRos2Registry(ros2Types);
+    source.setJsonTypes(jsonTypes);
     for (const QString& topic : m.reader().mqttTopics())
         source.monitor(topic);
     const std::unique_ptr<HeadTap> heads = source.openHeadTap(batch.size() + 1);
@@ -225,7 +241,9 @@ private slots:
             l->primitive = true;
             l->rawPayload = false;
         }
-        json.rawPayload = false; // `json: true`
+        json.rawPayload = false; // `json: true` on ROS 1, which mqtt_client never bridged as JSON
+        json.json = true;
+        json.rosType = u"geometry_msgs/msg/Point"_s;
         m.setLinks({out, in, json}, kStart);
         Clock clock {m};
         for (int i = 0; i < 100; ++i) {
@@ -255,8 +273,64 @@ private slots:
         QCOMPARE(i.observedSamples, quint64(100));
         QVERIFY2(qAbs(i.observedP50Ms - 4) < 0.01, qPrintable(QString::number(i.observedP50Ms)));
         QCOMPARE(i.observedLost + i.observedUnexplained + i.observedAmbiguous, quint64(0));
-        // A JSON link's payload is the message's fields: no figure is made up for it.
+        // A JSON link's ROS end on ROS 1 is not the CDR its payload makes: no figure is made up.
         QCOMPARE(m.figures(m.indexOf(json.id())).observedSamples, quint64(0));
+    }
+
+    // Issue 45: a `json` link (mqtt_client 2.5, ROS 2) has no stamps and its MQTT end is the
+    // message's fields as text, yet each message is matched: the payload converted to the link's
+    // ros_type as the bridge converts it makes the very CDR the ROS 2 end carries. Out: the JSON the
+    // bridge writes of each Point, every tenth lost (10 %); in: a script's {"x": N}, which the bridge
+    // completes with defaults. A payload that is not the type's JSON is counted, not matched.
+    void jsonLinksAreMatchedByTheMessageTheirPayloadMakes()
+    {
+        const RosTypeRegistry types = Ros2Definitions::registry();
+        const QString point = u"geometry_msgs/msg/Point"_s;
+        LinkMonitor m;
+        LinkDef out = link(Direction::Ros2Mqtt, u"/pose"_s, u"pose"_s);
+        LinkDef in = link(Direction::Mqtt2Ros, u"/goal"_s, u"goal"_s);
+        for (LinkDef* l : {&out, &in}) {
+            l->json = true;
+            l->rawPayload = false;
+            l->rosType = point;
+        }
+        m.setLinks({out, in}, kStart);
+        const QHash<QString, QString> json {{u"pose"_s, point}, {u"goal"_s, point}};
+        Clock clock {m};
+        for (int i = 0; i < 100; ++i) {
+            const qint64 sent = clock.now;
+            const QByteArray cdr = ok(RosMessageEncoder::encodeCdr(
+                types, point, QVariantMap {{u"x"_s, i + 0.25}, {u"y"_s, 2.0 * i}, {u"z"_s, -1.5}}));
+            m.reader().add({ros(u"/pose"_s, cdr, sent, SourceGraph::Ros2, point)});
+            if (i % 10 != 3)
+                fromBroker(m,
+                           {mqtt(u"pose"_s, ok(Ros2BridgeWire::toJson(types, point, cdr)), sent + 3 * kMs)},
+                           nullptr, json);
+            fromBroker(m, {mqtt(u"goal"_s, "{\"x\": " + QByteArray::number(i) + "}", sent)}, nullptr, json);
+            const QByteArray goal = ok(RosMessageEncoder::encodeCdr(types, point, QVariantMap {{u"x"_s, i}}));
+            m.reader().add({ros(u"/goal"_s, goal, sent + 4 * kMs, SourceGraph::Ros2, point)});
+            clock.advance(100 * kMs);
+        }
+        fromBroker(m, {mqtt(u"goal"_s, "not json", clock.now)}, nullptr, json);
+        clock.advance(3000 * kMs);
+        const LinkFigures o = m.figures(m.indexOf(out.id()));
+        QCOMPARE(o.observedSamples, quint64(90));
+        QVERIFY2(qAbs(o.observedP50Ms - 3) < 0.01, qPrintable(QString::number(o.observedP50Ms)));
+        QCOMPARE(o.observedLost, quint64(10)); // every tenth: 10 %
+        QCOMPARE(o.observedUnconverted, quint64(0));
+        const LinkFigures i = m.figures(m.indexOf(in.id()));
+        QCOMPARE(i.observedSamples, quint64(100));
+        QVERIFY2(qAbs(i.observedP50Ms - 4) < 0.01, qPrintable(QString::number(i.observedP50Ms)));
+        QCOMPARE(i.observedLost + i.observedUnexplained + i.observedAmbiguous, quint64(0));
+        QCOMPARE(i.observedUnconverted, quint64(1));
+        QCOMPARE(i.toJson().value(u"observed"_s).toObject().value(u"unconverted"_s).toInt(), 1);
+        QVERIFY2(LinkModel::observedLine(in, i).contains(
+                     u"1 JSON payloads not converted to geometry_msgs/msg/Point"_s),
+                 qPrintable(LinkModel::observedLine(in, i)));
+        // Without the type there is nothing to convert to, and the Links page says why.
+        LinkDef untyped = in;
+        untyped.rosType.clear();
+        QVERIFY(LinkModel::observedLine(untyped, i).contains(u"ros_type"_s));
     }
 
     // Issue 45: the matched messages a measurement takes (the Measure page's observed series) are

@@ -3,10 +3,10 @@
 // serializes (tests/support/mqttclientros2.h): the suite's ROS 2 TimeStamped, the Float64 of
 // ~/latencies, std_msgs primitives from and to text as mqtt_client v2.5 converts them
 // (mqtt2primitive(), fixedMqtt2PrimitiveRos(), primitiveRosMessageToString()), JSON to CDR.
-#include "bridge/ros2bridgewire.h"
 #include "mqttclientros2.h"
 #include "resulttext.h"
 #include "wire/primitivetext.h"
+#include "wire/ros2bridgewire.h"
 #include "wire/ros2definitions.h"
 
 #include <QJsonArray>

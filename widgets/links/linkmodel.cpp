@@ -211,9 +211,9 @@ QVariant LinkModel::data(const QModelIndex& index, int role) const
 
 QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
 {
-    if (!d.rawPayload && !d.primitive)
-        return tr("Observed hop latency: not for JSON links (their MQTT end is the message's fields "
-                  "as text; matching it to the ROS bytes needs the type's definition).");
+    if (d.json && d.rosType.isEmpty())
+        return tr("Observed hop latency: a JSON link is matched by the message its payload makes, "
+                  "which needs the mapping's ros_type (mqtt_client 2.5 requires it too).");
     if (d.discovered)
         return tr("Observed hop latency: needs both ends; only the MQTT end of a discovered link is "
                   "watched.");
@@ -227,6 +227,14 @@ QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
                        .arg(f.observedUnexplained);
     if (f.observedOverflow > 0)
         text += u' ' + tr("%1 dropped unjudged: more waited than the matcher holds.").arg(f.observedOverflow);
+    if (d.json)
+        text += u' '
+            + tr("JSON: each MQTT payload is converted to %1 as mqtt_client 2.5 converts it, and matched "
+                 "with the ROS 2 message by the bytes that makes (%2 did not convert and are not matched; "
+                 "a message whose JSON the bridge shortened, such as a byte array of more than 100 "
+                 "elements, counts as lost).")
+                  .arg(d.rosType)
+                  .arg(f.observedUnconverted);
     if (f.observedP50Ms < 0)
         text += u' '
             + tr("Negative: this computer got the copies before the originals (its two subscriptions' "
@@ -236,7 +244,7 @@ QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
 
 QString LinkModel::observedLine(const LinkDef& d, const LinkFigures& f)
 {
-    if ((!d.rawPayload && !d.primitive) || d.discovered || f.observedSamples + f.observedLost == 0)
+    if ((d.json && d.rosType.isEmpty()) || d.discovered || f.observedSamples + f.observedLost == 0)
         return observedText(d, f);
     const double loss = 100.0 * double(f.observedLost) / double(f.observedSamples + f.observedLost);
     QString text = tr("Observed hop (no stamps): p50 %1 ms, p99 %2 ms over 60 s; %3 matched, %4 lost "
@@ -249,6 +257,9 @@ QString LinkModel::observedLine(const LinkDef& d, const LinkFigures& f)
                        .arg(f.observedUnexplained);
     if (f.observedOverflow > 0)
         text += u", "_s + tr("%1 dropped unjudged").arg(f.observedOverflow);
+    if (f.observedUnconverted > 0)
+        text
+            += u", "_s + tr("%1 JSON payloads not converted to %2").arg(f.observedUnconverted).arg(d.rosType);
     return text;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "bridge/ros2bridgewire.h"
+#include "wire/ros2bridgewire.h"
 
 #include "wire/primitivetext.h"
 #include "wire/rosmessageencoder.h"
