@@ -105,10 +105,8 @@ QJsonObject LatencyReport::json(const LatencyEngine& engine, qint64 extraDropped
         doc.insert(u"clocks"_s, clocks);
     // Single-stage series: mqtt_client's own latencies and the watch's observed hop latencies.
     QJsonArray single;
-    for (int i = 0; i < series.count(); ++i) {
+    for (int i : series.externalWithValues()) {
         const PipelineSeries::Info& info = series.info(i);
-        if (info.kind != PipelineSeries::Kind::External || series.series(i).count() == 0)
-            continue;
         single.append(QJsonObject {{u"name"_s, info.label},
                                    {u"observed"_s, SeriesId::isObserved(info.label)},
                                    {u"stats"_s, statsOf(i)}});

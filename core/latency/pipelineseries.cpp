@@ -320,3 +320,12 @@ std::optional<std::pair<double, double>> PipelineSeries::clockOffsetBoundsMs() c
         return std::nullopt;
     return std::make_pair(-back.min, out.min);
 }
+
+QList<int> PipelineSeries::externalWithValues() const
+{
+    QList<int> out;
+    for (int i = 0; i < count(); ++i)
+        if (m_info[std::size_t(i)].kind == Kind::External && m_series[std::size_t(i)]->count() > 0)
+            out << i;
+    return out;
+}

@@ -70,6 +70,9 @@ public:
     ClockEstimate clockBetween(const QString& from, const QString& to) const;
 
     int count() const { return int(m_series.size()); }
+    /// The single-stage series (mqtt_client's latencies, the watch's observed hops) that hold values,
+    /// in the order they were made: what a report lists after the stages.
+    QList<int> externalWithValues() const;
     const Info& info(int series) const { return m_info[std::size_t(series)]; }
     const LatencySeries& series(int series) const { return *m_series[std::size_t(series)]; }
     LatencySeries& series(int series) { return *m_series[std::size_t(series)]; }

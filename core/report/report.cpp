@@ -133,22 +133,10 @@ bool Report::hasPipeline() const
                        [](const auto& r) { return r->engine->pipeline().topicCount() > 0; });
 }
 
-namespace {
-/// The single-stage series of `engine` that hold values.
-QList<int> externalSeries(const LatencyEngine& engine)
-{
-    QList<int> out;
-    for (int i = 0; i < engine.seriesCount(); ++i)
-        if (engine.info(i).kind == LatencyEngine::Kind::External && engine.series(i).count() > 0)
-            out << i;
-    return out;
-}
-} // namespace
-
 bool Report::hasLatency() const
 {
     return hasPipeline() || std::any_of(m_runs.cbegin(), m_runs.cend(), [](const auto& r) {
-               return !externalSeries(*r->engine).isEmpty();
+               return !r->engine->pipelineSeries().externalWithValues().isEmpty();
            });
 }
 
@@ -212,7 +200,7 @@ QList<Report::Row> Report::rows() const
                     SeriesId::ofKind(SeriesKind::Asymmetry).toString(), false, false, true});
     QList<Row> external;
     for (const auto& run : m_runs)
-        for (int i : externalSeries(*run->engine)) {
+        for (int i : run->engine->pipelineSeries().externalWithValues()) {
             const LatencyEngine::SeriesInfo& info = run->engine->info(i);
             if (!seen.contains(info.id)) {
                 seen.insert(info.id);

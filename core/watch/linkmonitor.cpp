@@ -47,6 +47,7 @@ void LinkMonitor::setLinks(const QList<LinkDef>& links, qint64 nowNs)
         }
         t->def = def;
         t->keepObserved = m_keepObserved;
+        t->keepLatencies = m_keepLatencies;
         if (!sameKey) // the rules of a link that stays are kept: setRules() sets them anew
             t->rules = m_ruleBook.forLink(def);
         m_tracks.push_back(std::move(t));
@@ -140,6 +141,18 @@ std::vector<double> LinkMonitor::takeNewLatencies(int index)
     std::vector<double> out;
     out.swap(m_tracks.at(std::size_t(index))->newLatencies);
     return out;
+}
+
+void LinkMonitor::setKeepLatencies(bool keep)
+{
+    if (keep == m_keepLatencies)
+        return;
+    m_keepLatencies = keep;
+    for (auto& t : m_tracks) {
+        t->keepLatencies = keep;
+        if (!keep)
+            t->newLatencies = {};
+    }
 }
 
 void LinkMonitor::setKeepObserved(bool keep)

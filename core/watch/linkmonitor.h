@@ -86,8 +86,10 @@ public:
     void setHistoryPoints(std::size_t points);
     static constexpr std::size_t kHistoryPoints = 600;
     std::vector<HistoryPoint> history(int index) const;
-    /// Latency samples (ms) since the last call, for histograms (at most 10,000 are kept).
+    /// Latency samples (ms) since the last call, for histograms (at most 10,000 are kept), kept
+    /// only once setKeepLatencies() asked for them (the metrics do; a window does not).
     std::vector<double> takeNewLatencies(int index);
+    void setKeepLatencies(bool keep);
     /// Whether the links keep their matched messages for takeNewObserved() (off: none is kept).
     void setKeepObserved(bool keep);
     /// The observed hop latencies (time, latency, both ns) matched since the last call, appended to
@@ -150,6 +152,7 @@ private:
     quint64 m_judgements = 0;
     std::size_t m_historyPoints = kHistoryPoints;
     bool m_keepObserved = false;
+    bool m_keepLatencies = false;
     /// (time, link): when a silence may change a link's verdict, earliest first; one live entry a
     /// link (LinkTrack::queuedNs), older ones are dropped when they come up.
     std::priority_queue<std::pair<qint64, int>, std::vector<std::pair<qint64, int>>, std::greater<>>

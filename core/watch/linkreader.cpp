@@ -32,10 +32,14 @@ void LinkReader::index()
     m_byLatencyTopic.clear();
     m_heard.clear(); // their indexes are gone: the monitor judges every link after a change of links
     m_moved.clear(); // and a reader of every link's figures takes them all again (linksVersion())
+    m_observedNew.clear();
     for (int i = 0; i < int(m_tracks.size()); ++i) {
         LinkTrack& t = *m_tracks[std::size_t(i)];
         t.heard = false;
         t.moved = false;
+        t.observedNew = false;
+        if (!t.newObserved.empty() || t.newObservedDropped > 0) // kept before the change of links
+            mark(m_observedNew, &LinkTrack::observedNew, i);
         m_byMqtt[t.def.mqttTopic] << i;
         if (!t.def.rosTopic.isEmpty())
             m_byRos[t.def.rosTopic] << i;
@@ -133,6 +137,21 @@ std::vector<int> LinkReader::takeMoved()
     return take(m_moved, &LinkTrack::moved);
 }
 
+std::vector<int> LinkReader::takeObservedNew()
+{
+    std::vector<int> out = take(m_observedNew, &LinkTrack::observedNew);
+    std::sort(out.begin(), out.end()); // the first links get the measurement's series first
+    return out;
+}
+
+void LinkReader::addContent(int i, bool atSource, const ContentKey& key, qint64 ns)
+{
+    LinkTrack& t = *m_tracks[std::size_t(i)];
+    t.addContent(atSource, key, ns);
+    if (t.keepObserved && (!t.newObserved.empty() || t.newObservedDropped > 0))
+        mark(m_observedNew, &LinkTrack::observedNew, i);
+}
+
 std::vector<int> LinkReader::takeHeard()
 {
     return take(m_heard, &LinkTrack::heard);
@@ -199,7 +218,7 @@ void LinkReader::addMqttHead(const SourceHead& m)
         // mqtt_client's ROS 2 payloads are CDR: their Header has no seq.
         // The content after the stamp the link's announcement says it has (issue 45).
         if (const std::optional<ContentKey> key = contentKey(t.def, m); key && m.keySkipped == t.stampBytes())
-            t.addContent(t.def.direction == Direction::Mqtt2Ros, *key, m.receivedNs);
+            addContent(i, t.def.direction == Direction::Mqtt2Ros, *key, m.receivedNs);
         else if (t.def.json && !t.blind)
             ++t.unconverted; // not JSON, not the link's type, too large (MqttSource::jsonKey())
         if (t.def.direction == Direction::Mqtt2Ros) {
@@ -234,7 +253,7 @@ void LinkReader::addRosHead(const SourceHead& a)
             heard(i);
             LinkTrack& t = *m_tracks[std::size_t(i)];
             if (const std::optional<ContentKey> key = contentKey(t.def, a))
-                t.addContent(t.def.direction == Direction::Ros2Mqtt, *key, a.receivedNs);
+                addContent(i, t.def.direction == Direction::Ros2Mqtt, *key, a.receivedNs);
             if (t.def.direction == Direction::Ros2Mqtt) {
                 t.src.add(a.receivedNs, a.size);
                 if (t.srcHeader && hasSeq)

@@ -67,11 +67,15 @@ public:
     /// The links that moved since the last call, each once, for the one reader of every link's
     /// figures (the metrics); after index() it starts empty (the indexes are gone).
     std::vector<int> takeMoved();
+    /// The links that kept matched messages (or dropped some) for LinkMonitor::takeNewObserved()
+    /// since the last call, each once, in index order: the measurement visits only those.
+    std::vector<int> takeObservedNew();
 
 private:
     quint64 m_read = 0;
     std::vector<int> m_heard;
     std::vector<int> m_moved;
+    std::vector<int> m_observedNew;
     /// Track `i` heard something: into m_heard and m_moved unless it is there already.
     void heard(int i);
     /// Puts track `i` into `list` unless its flag `in` says it is there.
@@ -79,6 +83,8 @@ private:
     /// Empties `list`, clearing its tracks' flag `in`; what it held.
     std::vector<int> take(std::vector<int>& list, bool LinkTrack::*in);
     static std::optional<ContentKey> contentKey(const LinkDef& link, const SourceHead& head);
+    /// Track `i`'s message with `key` at its source (`atSource`) or destination, into its matcher.
+    void addContent(int i, bool atSource, const ContentKey& key, qint64 ns);
     void addMqttHead(const SourceHead& head);
     void addRosHead(const SourceHead& head);
     void indexPipeline();

@@ -64,6 +64,7 @@ struct LinkTrack : LinkTraffic
     qint64 queuedNs = 0; ///< the time of its entry in the monitor's deadlines (0: none)
     bool heard = false; ///< in the reader's list of links heard since the judge last saw them
     bool moved = false; ///< in the reader's list of links moved since the metrics last took them
+    bool observedNew = false; ///< in the reader's list of links with matched messages to hand over
     struct BridgeLiveness* bridge = nullptr; ///< the bridge that carries it (none: discovered)
 
     /// How long after the last thing a link heard its figures stop moving: past every window.

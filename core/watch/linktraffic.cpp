@@ -98,7 +98,7 @@ void LinkTraffic::addLatency(qint64 ns, double ms, LatencySource source)
     if (latencies.size() > kMaxLatencies)
         latencies.pop_front();
     ++latencySamples;
-    if (newLatencies.size() < kMaxLatencies)
+    if (keepLatencies && newLatencies.size() < kMaxLatencies)
         newLatencies.push_back(ms);
 }
 

@@ -78,7 +78,9 @@ struct LinkTraffic
     std::optional<quint64> beforeDestination;
     std::deque<std::pair<qint64, double>> latencies; ///< (time, ms) of the latency window
     quint64 latencySamples = 0;
-    std::vector<double> newLatencies; ///< since the last takeNewLatencies(), for histograms
+    /// Since the last takeNewLatencies(), for histograms: only while they are taken (keepLatencies).
+    std::vector<double> newLatencies;
+    bool keepLatencies = false;
     LinkFigures figures; ///< as of the last refresh
     /// The two ends matched by content (issue 45): made at the first message with a key, for links
     /// whose payloads are the ROS serialization.

@@ -235,6 +235,7 @@ quint64 WatchMetrics::droppedClients() const
 
 void WatchMetrics::update(LinkMonitor& monitor, const MqttTopicTree* topics, int unwatchedLinks)
 {
+    monitor.setKeepLatencies(true); // the histograms' samples, from now on
     auto snapshot = std::make_shared<MetricsSnapshot>();
     if (topics) {
         snapshot->historyEvicted = topics->topicData().store().evictedPayloads();

@@ -228,12 +228,20 @@ void WatchSession::handOverObserved(qint64 nowNs)
         return;
     std::vector<LatencyValue> values;
     std::vector<std::pair<qint64, qint64>> matched;
-    for (int i = 0; i < m_monitor->linkCount(); ++i) {
+    for (int i : m_monitor->reader().takeObservedNew()) { // not every link at every drain
         matched.clear();
         m_observedDropped += m_monitor->takeNewObserved(i, matched);
         if (matched.empty())
             continue;
-        const QString series = observedSeries(m_monitor->link(i));
+        if (m_observedAtVersion != m_monitor->linksVersion()
+            || m_observedAt.size() != std::size_t(m_monitor->linkCount())) {
+            m_observedAt.assign(std::size_t(m_monitor->linkCount()), std::nullopt);
+            m_observedAtVersion = m_monitor->linksVersion();
+        }
+        std::optional<QString>& at = m_observedAt.at(std::size_t(i));
+        if (!at)
+            at = observedSeries(m_monitor->link(i));
+        const QString& series = *at;
         if (series.isEmpty())
             continue;
         for (const auto& [atNs, latencyNs] : matched)

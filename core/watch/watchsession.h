@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <QHash>
 #include <QObject>
 #include <QPointer>
@@ -149,6 +150,10 @@ private:
     bool m_discovering = true;
     ObservedSink m_observedSink;
     QHash<QString, QString> m_observedSeries; ///< link id → its series' name
+    /// Link index → its series' name (empty: left out; none: not looked up yet) for the links as
+    /// of linksVersion m_observedAtVersion: the id is not built at every drain.
+    std::vector<std::optional<QString>> m_observedAt;
+    quint64 m_observedAtVersion = 0;
     QSet<QString> m_observedNames;
     QSet<QString> m_observedLeftOut; ///< ids of the links that matched past kMaxObservedSeries
     quint64 m_observedDropped = 0;

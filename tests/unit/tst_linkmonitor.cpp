@@ -171,6 +171,8 @@ private slots:
         quint32 seq = 0;
         for (int i = 0; i < 200; ++i) { // 20 s at 10 Hz
             const qint64 sent = clock.now;
+            if (i == 100)
+                m.setKeepLatencies(true); // the metrics' histograms take samples from then on
             m.reader().add({ros(u"/vehicle/pose"_s, headerMessage(seq), sent)});
             // The bridge skips seq 50 and 51 (two messages never sent on), latency 5 ms.
             if (seq != 50 && seq != 51)
@@ -194,6 +196,8 @@ private slots:
         QCOMPARE(o.seqGaps, quint64(2));
         QCOMPARE(o.lost, quint64(2));
         QCOMPARE(o.latencySamples, quint64(198));
+        QCOMPARE(m.takeNewLatencies(m.indexOf(out.id())).size(), std::size_t(100)); // none kept before
+        QVERIFY(m.takeNewLatencies(m.indexOf(out.id())).empty());
         QVERIFY2(qAbs(o.latencyP50Ms - 5) < 0.01 && qAbs(o.latencyP99Ms - 5) < 0.01,
                  qPrintable(QString::number(o.latencyP50Ms)));
         QCOMPARE(m.level(m.indexOf(out.id())), LinkLevel::Ok);
@@ -352,10 +356,14 @@ private slots:
         };
         send(10);
         std::vector<std::pair<qint64, qint64>> taken;
+        QVERIFY(m.reader().takeObservedNew().empty());
         QCOMPARE(m.takeNewObserved(index, taken), quint64(0));
         QVERIFY(taken.empty()); // nobody takes them: none kept
         m.setKeepObserved(true);
         send(10'005);
+        // the taker visits only the links that kept something, each once
+        QCOMPARE(m.reader().takeObservedNew(), std::vector<int>({index}));
+        QVERIFY(m.reader().takeObservedNew().empty());
         QCOMPARE(m.takeNewObserved(index, taken), quint64(5));
         QCOMPARE(taken.size(), std::size_t(10'000));
         QCOMPARE(taken.front().second, 2 * kMs);
