@@ -5211,6 +5211,13 @@ factors:
         <source> · %1 observed hop latencies dropped unmeasured (more came between two reads than a link keeps)</source>
         <translation> · %1 beobachtete Sprunglatenzen ungemessen verworfen (zwischen zwei Lesevorgängen kamen mehr, als eine Verbindung behält)</translation>
     </message>
+    <message numerus="yes">
+        <source> · %n observed hop(s) without stamps: the last rows of the stage table</source>
+        <translation>
+            <numerusform> · %n beobachteter Hop ohne Stempel: die letzte Zeile der Stufentabelle</numerusform>
+            <numerusform> · %n beobachtete Hops ohne Stempel: die letzten Zeilen der Stufentabelle</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>MeasureSession</name>

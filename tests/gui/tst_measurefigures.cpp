@@ -226,6 +226,34 @@ private slots:
                 && named<QValueAxis>(*chart.chart(), u"latencyAxis"_s)->max() <= 40);
     }
 
+    // The time labels stay whole whatever second the timeline starts at: the ends rounded out to a
+    // step add ticks, which took the labels' room ("01:47…" on the Measure page at 1280x800).
+    void theTimeLabelsAreWhole()
+    {
+        TimelineChart chart;
+        chart.resize(300, 240); // the Measure page's timeline at 1280x800
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        for (qint64 start : {1'700'000'000LL, 1'700'000'007LL, 1'700'000'013LL, 1'700'000'049LL}) {
+            LatencyTimeline timeline;
+            for (qint64 s = start; s <= start + 26; ++s)
+                timeline.add(s * 1'000'000'000LL, 40'000'000);
+            chart.setTimeline(&timeline);
+            const auto whole = [&] {
+                const QStringList texts = drawnTexts(&chart);
+                const bool times = std::any_of(texts.cbegin(), texts.cend(),
+                                               [](const QString& t) { return t.count(u':') >= 1; });
+                const bool elided = std::any_of(texts.cbegin(), texts.cend(), [](const QString& t) {
+                    return t.contains(QChar(0x2026)) || t.contains(u"..."_s);
+                });
+                return times && !elided;
+            };
+            QTRY_VERIFY2(whole(),
+                         qPrintable(QString::number(start) + u": "_s + drawnTexts(&chart).join(u" | ")));
+            chart.setTimeline(nullptr);
+        }
+    }
+
     void rateChartTicksAreRound()
     {
         RateChart chart;

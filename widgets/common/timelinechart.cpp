@@ -19,13 +19,28 @@ using namespace Qt::StringLiterals;
 
 namespace {
 /// Seconds between time ticks: a round step that gives at most `wanted` ticks.
-qint64 timeStep(qint64 spanSeconds, int wanted)
+/// Ticks every `step` seconds from `from` to `to`, the ends on a step.
+struct TimeTicks
 {
+    qint64 step = 1;
+    qint64 from = 0;
+    qint64 to = 0;
+    int count() const { return int((to - from) / step) + 1; }
+};
+
+/// The finest round step whose ticks, the ends rounded out to it, are at most `wanted`: rounding
+/// out adds up to a tick at each end, which would leave a label less room than its text.
+TimeTicks timeTicks(qint64 first, qint64 last, int wanted)
+{
+    const auto at = [&](qint64 step) {
+        const qint64 from = first - ((first % step) + step) % step;
+        return TimeTicks {step, from, from + (last - from + step - 1) / step * step};
+    };
     for (qint64 step : {1, 2, 5, 10, 15, 30, 60, 120, 300, 600, 900, 1800, 3600, 7200, 21600, 86400})
-        if (spanSeconds / step + 1 <= wanted)
-            return step;
+        if (const TimeTicks t = at(step); t.count() <= wanted)
+            return t;
     // Stamps days apart (a clock that is not set): whole days, never thousands of ticks.
-    return (spanSeconds / (wanted - 1) / 86400 + 1) * 86400;
+    return at(((last - first) / std::max(1, wanted - 2) / 86400 + 1) * 86400);
 }
 } // namespace
 
@@ -130,12 +145,10 @@ void TimelineChart::fitTimeAxis()
     // Each label gets the plot's width over the ticks; room for its text and a gap.
     const int labelWidth = labels.horizontalAdvance(u"00:00:00"_s) + labels.horizontalAdvance(u"00"_s);
     const int wanted = std::clamp(int(plot) / std::max(1, labelWidth), 2, 7);
-    const qint64 step = timeStep(last - first, wanted);
-    const qint64 from = first - ((first % step) + step) % step;
-    const qint64 to = from + (last - from + step - 1) / step * step;
-    m_x->setRange(QDateTime::fromSecsSinceEpoch(from), QDateTime::fromSecsSinceEpoch(to));
-    m_x->setTickCount(int((to - from) / step) + 1);
-    m_x->setFormat(step < 60 ? u"HH:mm:ss"_s : step < 86400 ? u"HH:mm"_s : u"yyyy-MM-dd"_s);
+    const TimeTicks ticks = timeTicks(first, last, wanted);
+    m_x->setRange(QDateTime::fromSecsSinceEpoch(ticks.from), QDateTime::fromSecsSinceEpoch(ticks.to));
+    m_x->setTickCount(ticks.count());
+    m_x->setFormat(ticks.step < 60 ? u"HH:mm:ss"_s : ticks.step < 86400 ? u"HH:mm"_s : u"yyyy-MM-dd"_s);
 }
 
 void TimelineChart::resizeEvent(QResizeEvent* event)

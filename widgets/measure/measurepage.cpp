@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "measurepage.h"
 
+#include "latency/seriesid.h"
 #include "models/latencystatsmodel.h"
-#include "widgets/measure/pipelinemodel.h"
-#include "widgets/measure/stamptopicmodel.h"
 #include "session/measuresession.h"
 #include "widgets/common/columnfitter.h"
 #include "widgets/common/ecdfchart.h"
@@ -11,7 +10,9 @@
 #include "widgets/common/namedelegate.h"
 #include "widgets/common/timelinechart.h"
 #include "widgets/common/viewsetup.h"
+#include "widgets/measure/pipelinemodel.h"
 #include "widgets/measure/runbar.h"
+#include "widgets/measure/stamptopicmodel.h"
 
 #include <algorithm>
 #include <climits>
@@ -602,6 +603,14 @@ void MeasurePage::updateCounts()
                     .arg(bad)
                     .arg(names.join(u", "), m_measure->lastStampError());
     }
+    // Below the stages, out of sight at 1280x800 until scrolled to: said where they are.
+    const PipelineSeries& series = e.pipelineSeries();
+    const QList<int> single = series.externalWithValues();
+    if (const auto observed = std::count_if(single.cbegin(), single.cend(), [&](int i) {
+            return SeriesId::isObserved(series.info(i).label);
+        }))
+        text += tr(" · %n observed hop(s) without stamps: the last rows of the stage table", nullptr,
+                   int(observed));
     if (const int left = m_measure->observedLeftOut())
         text += tr(" · the observed hop latency of %n more link(s) is on the Links page only (the first "
                    "links to match have a series here, a bounded number)",
