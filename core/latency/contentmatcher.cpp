@@ -144,16 +144,13 @@ void ContentMatcher::expire(qint64 nowNs)
 
 qint64 ContentMatcher::copyGap(const ContentKey& key, qint64 ns)
 {
-    const auto it = m_lastOut.find(key);
-    if (it != m_lastOut.end()) {
-        const qint64 gap = std::max<qint64>(ns - *it, 0);
-        *it = ns;
-        return gap;
-    }
-    if (m_lastOut.size() >= kMaxGapKeys)
-        m_lastOut.clear(); // amortised: a stream of distinct contents has no gaps to remember
-    m_lastOut.insert(key, ns);
-    return 0;
+    if (!m_lastOut)
+        m_lastOut = std::make_unique<std::array<LastCopy, kGapSlots>>();
+    const quint64 id = (key.hash ^ (quint64(key.size) * 0x9E3779B97F4A7C15ULL)) | 1; // never 0
+    LastCopy& slot = (*m_lastOut)[std::size_t(id >> 32) % kGapSlots];
+    const qint64 gap = slot.id == id ? std::max<qint64>(ns - slot.ns, 0) : 0;
+    slot = {id, ns};
+    return gap;
 }
 
 std::optional<qint64> ContentMatcher::arrive(End& here, End& there, const ContentKey& key, qint64 ns,
@@ -203,7 +200,7 @@ void ContentMatcher::restart()
     m_out.clear();
     m_firstIn.reset();
     m_firstOut.reset();
-    m_lastOut.clear();
+    m_lastOut.reset();
 }
 
 void ContentMatcher::clear()

@@ -3,7 +3,9 @@
 
 #include "wire/contentkey.h"
 
+#include <array>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <QHash>
 #include <QtGlobal>
@@ -132,7 +134,14 @@ private:
     Counts m_counts;
     std::optional<qint64> m_firstIn; ///< the first message in since the start or restart()
     std::optional<qint64> m_firstOut;
-    /// When the last copy with each content came out: at most kMaxGapKeys, forgotten all at once.
-    QHash<ContentKey, qint64> m_lastOut;
-    static constexpr qsizetype kMaxGapKeys = 256;
+    /// When the last copy with a content came out, by its hash: kGapSlots slots (1 KiB, made with the
+    /// first copy), a content taking the slot of another (no allocation per message; an equal
+    /// stream keeps its slot while it is the topic's only content in its slot).
+    struct LastCopy
+    {
+        quint64 id = 0; ///< the content's hash and size mixed; 0: empty
+        qint64 ns = 0;
+    };
+    static constexpr std::size_t kGapSlots = 64;
+    std::unique_ptr<std::array<LastCopy, kGapSlots>> m_lastOut;
 };
