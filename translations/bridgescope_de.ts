@@ -4042,12 +4042,12 @@ factors:
         <translation>Beobachtete Hop-Latenz: Eine JSON-Verbindung wird über die Nachricht abgeglichen, die ihre Nutzlast ergibt; dafür braucht es den ros_type der Zuordnung (auch mqtt_client 2.5 verlangt ihn).</translation>
     </message>
     <message>
-        <source>JSON: each MQTT payload is converted to %1 as mqtt_client 2.5 converts it, and matched with the ROS 2 message by the bytes that makes (%2 did not convert and are not matched; a message whose JSON the bridge shortened, such as a byte array of more than 100 elements, counts as lost).</source>
-        <translation>JSON: Jede MQTT-Nutzlast wird wie von mqtt_client 2.5 in %1 umgewandelt und über die so entstehenden Bytes mit der ROS-2-Nachricht abgeglichen (%2 ließen sich nicht umwandeln und werden nicht abgeglichen; eine Nachricht, deren JSON die Bridge gekürzt hat, etwa um ein Byte-Array mit mehr als 100 Elementen, zählt als verloren).</translation>
-    </message>
-    <message>
         <source>%1 JSON payloads not converted to %2</source>
         <translation>%1 JSON-Nutzlasten nicht in %2 umgewandelt</translation>
+    </message>
+    <message>
+        <source>JSON: each MQTT payload is converted to %1 as mqtt_client 2.5 converts it, and matched with the ROS 2 message by the bytes that makes (%2 were not converted and are not matched: not the type&apos;s JSON, or past the watch&apos;s 4 MiB of JSON a drain; a message whose JSON the bridge shortened, such as a byte array of more than 100 elements, counts as lost).</source>
+        <translation>JSON: Jede MQTT-Nutzlast wird wie von mqtt_client 2.5 in %1 umgewandelt und über die so entstehenden Bytes mit der ROS-2-Nachricht abgeglichen (%2 wurden nicht umgewandelt und werden nicht abgeglichen: kein JSON des Typs oder jenseits der 4 MiB JSON je Durchgang der Überwachung; eine Nachricht, deren JSON die Bridge gekürzt hat, etwa um ein Byte-Array mit mehr als 100 Elementen, zählt als verloren).</translation>
     </message>
 </context>
 <context>

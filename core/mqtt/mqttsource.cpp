@@ -18,6 +18,7 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
         return;
     QHash<QString, QString> types; // a watched topic's announced type, looked up once per batch
     QHash<QString, qint8> stamps; // a monitored topic's injected stamp bytes, once per batch
+    qint64 jsonBudget = kMaxJsonBytesPerBatch;
     for (const MqttMessage& m : batch) {
         if (m_heads.active() && m_monitored.contains(m.topic)) {
             auto stamp = stamps.find(m.topic);
@@ -35,8 +36,14 @@ void MqttSource::add(const std::vector<MqttMessage>& batch)
             // What a primitive link makes of it, when that is not the payload (whose key it has).
             if (m.payload.size() <= PrimitiveText::kMaxRoundTripBytes)
                 head.textKey = ContentKey::ofText(PrimitiveText::roundTripChanged(m.payload));
-            if (const auto json = m_jsonTypes.constFind(m.topic); json != m_jsonTypes.cend())
-                head.jsonKey = jsonKey(*json, m.payload);
+            if (const auto json = m_jsonTypes.constFind(m.topic); json != m_jsonTypes.cend()) {
+                // Parsing is the costly part, on the GUI thread: bounded per drain, not only per message.
+                jsonBudget -= m.payload.size();
+                if (jsonBudget >= 0)
+                    head.jsonKey = jsonKey(*json, m.payload);
+                else
+                    ++m_jsonOverBudget;
+            }
             m_heads.deliver(std::move(head));
         }
         if (m_taps.tapped(m.topic)) {

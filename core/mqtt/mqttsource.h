@@ -53,6 +53,10 @@ public:
     void setJsonTypes(const QHash<QString, QString>& types) { m_jsonTypes = types; }
     /// Payloads of those topics that did not convert (not JSON, not the type, too large).
     quint64 jsonUnconverted() const { return m_jsonUnconverted; }
+    /// The most JSON converted in one drain's batch; past it payloads are not converted (counted
+    /// in jsonOverBudget(); their links count them as not converted).
+    static constexpr qint64 kMaxJsonBytesPerBatch = 4 * 1024 * 1024;
+    quint64 jsonOverBudget() const { return m_jsonOverBudget; }
 
 private:
     /// The key of the CDR a JSON payload of `type` converts to, none when it does not.
@@ -61,6 +65,7 @@ private:
     std::shared_ptr<const RosTypeRegistry> m_ros2Types;
     QHash<QString, QString> m_jsonTypes;
     quint64 m_jsonUnconverted = 0;
+    quint64 m_jsonOverBudget = 0;
     const MqttTopics* m_topics;
     QHash<QString, int> m_monitored; ///< topic → monitor() calls not yet balanced
     HeadHub m_heads;

@@ -67,6 +67,7 @@ private slots:
     {
         LinkReader::Tracks tracks;
         tracks.push_back(track(Direction::Mqtt2Ros, u"/b"_s, u"b"_s));
+        tracks[0]->keepLatencies = true; // as while the metrics take them
         LinkReader reader(tracks);
         reader.index();
         const QString latencyTopic = u"/bridge/latencies/b"_s;
@@ -84,6 +85,7 @@ private slots:
         LinkReader::Tracks tracks;
         tracks.push_back(track(Direction::Mqtt2Ros, u"/b"_s, u"b"_s));
         tracks[0]->def.stampPrefix = u"/hop/"_s;
+        tracks[0]->keepLatencies = true; // as while the metrics take them
         const QString latencyTopic = u"/bridge/latencies/b"_s;
         LinkReader reader(tracks);
         reader.index();

@@ -3,9 +3,11 @@
 // bounded heads and watched queues that count what they drop, and types from mqtt_client's
 // announcements, fed as the live session feeds it (the batch, then the topic tree).
 #include "latency/subscriptions.h"
-#include "mqtt/mqttsource.h"
 #include "models/mqtttopictree.h"
+#include "mqtt/mqttsource.h"
 #include "wire/mqttclientwire.h"
+#include "wire/ros2definitions.h"
+#include "wire/rosmessageencoder.h"
 
 #include <QTest>
 
@@ -145,6 +147,46 @@ private slots:
         source.reset(); // a tap may outlive its source
         QVERIFY(large->take().empty());
         large.reset();
+    }
+
+    // Issue 45: a json link's payloads are converted as its ROS 2 type (their key is the CDR's), at
+    // most 1 MiB each and 4 MiB of them a drain; what is not converted has no key and is counted.
+    void jsonPayloadsAreConvertedWithinTheirBudget()
+    {
+        MqttTopicTree tree;
+        MqttSource source(&tree.topicData());
+        const auto types = std::make_shared<const RosTypeRegistry>(Ros2Definitions::registry());
+        source.setRos2Registry(types);
+        const QString point = u"geometry_msgs/msg/Point"_s;
+        source.setJsonTypes({{u"p"_s, point}});
+        source.monitor(u"p"_s);
+        source.monitor(u"q"_s);
+        const std::unique_ptr<HeadTap> heads = source.openHeadTap(100);
+        source.add({message(u"p"_s, "{\"x\": 1.5}", kStart), message(u"p"_s, "[1]", kStart + 1),
+                    message(u"q"_s, "{\"x\": 1.5}", kStart + 2)});
+        std::vector<SourceHead> got = heads->take();
+        QCOMPARE(got.size(), std::size_t(3));
+        const Result<QByteArray> cdr
+            = RosMessageEncoder::encodeCdr(*types, point, QVariantMap {{u"x"_s, 1.5}});
+        QVERIFY(cdr.ok());
+        QCOMPARE(got[0].jsonKey, std::optional<ContentKey>(ContentKey::of(*cdr)));
+        QVERIFY(!got[1].jsonKey); // not an object of the type
+        QVERIFY(!got[2].jsonKey); // not a json link's topic
+        QCOMPARE(source.jsonUnconverted(), quint64(1));
+        // A flood of large JSON: 4 MiB of it converted a drain, the rest skipped and counted.
+        QByteArray large = "{\"x\": 2, \"y\": 3, \"z\": 4" + QByteArray(900 * 1024, ' ') + "}";
+        std::vector<MqttMessage> flood;
+        for (int i = 0; i < 10; ++i)
+            flood.push_back(message(u"p"_s, large, kStart + 10 + i));
+        source.add(flood);
+        got = heads->take();
+        QCOMPARE(got.size(), std::size_t(10));
+        const auto converted
+            = std::count_if(got.cbegin(), got.cend(), [](const SourceHead& h) { return bool(h.jsonKey); });
+        QCOMPARE(converted, qint64(MqttSource::kMaxJsonBytesPerBatch / large.size()));
+        QCOMPARE(source.jsonOverBudget(), quint64(10 - converted));
+        source.add({message(u"p"_s, large, kStart + 30)}); // the next drain has its own budget
+        QVERIFY(heads->take().front().jsonKey);
     }
 
     void watchedTopicsKeepTheNewestWithinTheirBoundsAndTheirType()

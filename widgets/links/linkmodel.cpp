@@ -230,9 +230,10 @@ QString LinkModel::observedText(const LinkDef& d, const LinkFigures& f)
     if (d.json)
         text += u' '
             + tr("JSON: each MQTT payload is converted to %1 as mqtt_client 2.5 converts it, and matched "
-                 "with the ROS 2 message by the bytes that makes (%2 did not convert and are not matched; "
-                 "a message whose JSON the bridge shortened, such as a byte array of more than 100 "
-                 "elements, counts as lost).")
+                 "with the ROS 2 message by the bytes that makes (%2 were not converted and are not "
+                 "matched: not the type's JSON, or past the watch's 4 MiB of JSON a drain; a message "
+                 "whose JSON the bridge shortened, such as a byte array of more than 100 elements, "
+                 "counts as lost).")
                   .arg(d.rosType)
                   .arg(f.observedUnconverted);
     if (f.observedP50Ms < 0)
