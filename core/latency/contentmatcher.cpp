@@ -34,12 +34,17 @@ ContentMatcher::End::Take ContentMatcher::End::take(const ContentKey& key, qint6
         popTaken();
         return Take::Ambiguous;
     }
-    Entry& e = m_entries[std::size_t(it->firstSeq - m_base)];
+    takeOnly(it, ns);
+    return Take::Unique;
+}
+
+void ContentMatcher::End::takeOnly(QHash<ContentKey, Slot>::iterator slot, qint64* ns)
+{
+    Entry& e = m_entries[std::size_t(slot->firstSeq - m_base)];
     e.taken = true;
     *ns = e.ns;
-    m_slots.erase(it); // it was the only one waiting
+    m_slots.erase(slot); // it was the only one waiting
     popTaken();
-    return Take::Unique;
 }
 
 void ContentMatcher::End::popTaken()
@@ -70,13 +75,10 @@ bool ContentMatcher::End::dropStale(const ContentKey& key, qint64 nowNs, qint64*
     const auto it = m_slots.find(key);
     if (it == m_slots.end() || it->ambiguous || it->waiting - it->taken != 1)
         return false;
-    Entry& e = m_entries[std::size_t(it->firstSeq - m_base)];
+    const Entry& e = m_entries[std::size_t(it->firstSeq - m_base)];
     if (e.gapNs <= 0 || nowNs - e.ns <= e.gapNs / 2)
         return false;
-    e.taken = true;
-    *ns = e.ns;
-    m_slots.erase(it);
-    popTaken();
+    takeOnly(it, ns);
     return true;
 }
 

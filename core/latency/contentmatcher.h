@@ -111,6 +111,8 @@ private:
             int taken = 0; ///< of those, consumed by ambiguous matches
             bool ambiguous = false; ///< two with the key waited at once
         };
+        /// Takes the one entry waiting in `slot`, its time into `*ns`.
+        void takeOnly(QHash<ContentKey, Slot>::iterator slot, qint64* ns);
         /// Drops the taken entries at the front.
         void popTaken();
         /// Takes a leaving entry out of its key's slot: true when it went unmatched.

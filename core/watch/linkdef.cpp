@@ -67,7 +67,6 @@ QList<LinkDef> LinkDef::fromConfig(const BridgeConfig& config, const QString& na
         l.stampPrefix = m.effective(u"timestamp_topic_prefix"_s);
         l.primitive = YamlText::isTrue(m.effective(u"primitive"_s));
         l.json = !l.primitive && YamlText::isTrue(m.effective(u"json"_s));
-        l.rawPayload = !l.primitive && !l.json;
         l.rosType = m.effective(u"ros_type"_s);
         out << l;
     }

@@ -26,15 +26,15 @@ struct LinkDef
     /// The mapping's `timestamp_topic_prefix` (the benchmarking suite's mqtt_client stamps every
     /// message at PREFIX/in and PREFIX/out): with a pipeline holding both, the link's latency.
     QString stampPrefix;
-    /// mqtt_client carries the ROS serialization as it is (no `primitive`, no `json`): the two ends'
-    /// contents can be matched without stamps (issue 45).
-    bool rawPayload = true;
     /// mqtt_client sends the ROS message's value as text (`primitive`): matched by that text.
     bool primitive = false;
     /// mqtt_client (v2.5) sends the message's fields as JSON (`json`, not `primitive`): matched by
     /// the CDR that JSON makes as `rosType` (the mapping's `ros_type`), as the bridge converts it.
     bool json = false;
     QString rosType;
+    /// mqtt_client carries the ROS serialization as it is (no `primitive`, no `json`): the two ends'
+    /// contents can be matched without stamps (issue 45).
+    bool rawPayload() const { return !primitive && !json; }
 
     /// "config|ros2mqtt|/ros/topic|mqtt/topic": stable across runs, unique within a watch.
     QString id() const;

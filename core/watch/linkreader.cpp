@@ -38,7 +38,7 @@ void LinkReader::index()
         t.heard = false;
         t.moved = false;
         t.observedNew = false;
-        if (!t.newObserved.empty() || t.newObservedDropped > 0) // kept before the change of links
+        if (t.observedToHandOver()) // kept before the change of links
             mark(m_observedNew, &LinkTrack::observedNew, i);
         m_byMqtt[t.def.mqttTopic] << i;
         if (!t.def.rosTopic.isEmpty())
@@ -148,7 +148,7 @@ void LinkReader::addContent(int i, bool atSource, const ContentKey& key, qint64 
 {
     LinkTrack& t = *m_tracks[std::size_t(i)];
     t.addContent(atSource, key, ns);
-    if (t.keepObserved && (!t.newObserved.empty() || t.newObservedDropped > 0))
+    if (t.keepObserved && t.observedToHandOver())
         mark(m_observedNew, &LinkTrack::observedNew, i);
 }
 
@@ -191,7 +191,7 @@ std::optional<ContentKey> LinkReader::contentKey(const LinkDef& link, const Sour
 {
     if (link.discovered)
         return std::nullopt;
-    if (link.rawPayload)
+    if (link.rawPayload())
         return head.key;
     if (link.json) {
         if (head.graph == SourceGraph::Mqtt)

@@ -91,6 +91,8 @@ struct LinkTraffic
     /// only while a measurement takes them (keepObserved), at most kMaxLatencies.
     std::vector<std::pair<qint64, qint64>> newObserved;
     bool keepObserved = false;
+    /// Matched messages or drops since the last take: the measurement should visit this link.
+    bool observedToHandOver() const { return !newObserved.empty() || newObservedDropped > 0; }
     quint64 newObservedDropped = 0; ///< past the bound since the last take
     quint64 lostMax = 0;
     /// The watcher cannot see a side (its broker connection, the ROS master): nothing is lost then.

@@ -243,10 +243,8 @@ private slots:
         LinkDef json = link(Direction::Ros2Mqtt, u"/pose"_s, u"pose"_s);
         for (LinkDef* l : {&out, &in}) {
             l->primitive = true;
-            l->rawPayload = false;
         }
-        json.rawPayload = false; // `json: true` on ROS 1, which mqtt_client never bridged as JSON
-        json.json = true;
+        json.json = true; // on ROS 1, which mqtt_client never bridged as JSON
         json.rosType = u"geometry_msgs/msg/Point"_s;
         m.setLinks({out, in, json}, kStart);
         Clock clock {m};
@@ -295,7 +293,6 @@ private slots:
         LinkDef in = link(Direction::Mqtt2Ros, u"/goal"_s, u"goal"_s);
         for (LinkDef* l : {&out, &in}) {
             l->json = true;
-            l->rawPayload = false;
             l->rosType = point;
         }
         m.setLinks({out, in}, kStart);
