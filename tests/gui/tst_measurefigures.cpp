@@ -7,9 +7,9 @@
 #include "guisession.h"
 #include "latency/ecdfsource.h"
 #include "latency/latencyseries.h"
-#include "models/latencystatsmodel.h"
 #include "latency/latencytimeline.h"
 #include "latency/pipeline.h"
+#include "models/latencystatsmodel.h"
 #include "mqtt/mqttprofile.h"
 #include "resulttext.h"
 #include "session/measuresession.h"
@@ -35,6 +35,7 @@
 #include <QTabWidget>
 #include <QTest>
 #include <QValueAxis>
+#include <QVBoxLayout>
 
 using namespace Qt::StringLiterals;
 using ViewHelpers::named;
@@ -276,6 +277,43 @@ private slots:
         // The same decimals in every label of an axis: "10.0" beside "7.5", never "10" beside "7.5".
         QVERIFY2(labels.contains(u"10.0"_s) || labels.contains(u"10"_s), qPrintable(labels.join(u" | ")));
         QVERIFY2(!(labels.contains(u"10"_s) && labels.contains(u"7.5"_s)), qPrintable(labels.join(u" | ")));
+    }
+
+    // The Links detail pane gives its charts their minimum height at 1280x800 (its text keeps its
+    // lines): the y axis shows fewer labels there, never "..." (Qt Charts' elision of a label with
+    // no room), and the time axis stays whole.
+    void aLowRateChartShowsFewerLabelsNotElidedOnes()
+    {
+        QWidget window; // ViewAudit looks at the charts inside a widget
+        auto* layout = new QVBoxLayout(&window);
+        layout->setContentsMargins(0, 0, 0, 0);
+        auto& chart = *new RateChart(&window);
+        layout->addWidget(&chart);
+        window.resize(200, chart.minimumHeight()); // as low as it goes
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        // A link that carries nothing yet: 0 to 1 in steps of 0.25, five labels on a tall chart.
+        chart.setSamples(QList<double>(30, 0.0), u"Hz"_s);
+        const auto shown = [&] { // the y labels above 0 (the time axis's are 0 and below)
+            QStringList above;
+            for (const QString& t : numericTexts(&chart))
+                if (t.toDouble() > 0)
+                    above << t;
+            return above;
+        };
+        QTRY_VERIFY2(
+            !shown().isEmpty() && ViewAudit::elidedChartTexts(&window).isEmpty(),
+            qPrintable(QString::number(chart.height()) + u" px: "_s + drawnTexts(&chart).join(u" | ")));
+        QVERIFY2(shown().size() < 4, qPrintable(drawnTexts(&chart).join(u" | "))); // fewer, not cut
+        // Whole at every height up from there, and at 260 px its five labels are back.
+        for (int h = chart.minimumHeight() + 6; h <= 260; h += 6) {
+            const double plot = chart.chart()->plotArea().height();
+            window.resize(200, h);
+            QTRY_VERIFY(chart.chart()->plotArea().height() != plot); // laid out again
+            QVERIFY2(ViewAudit::elidedChartTexts(&window).isEmpty(),
+                     qPrintable(QString::number(h) + u" px: "_s + drawnTexts(&chart).join(u" | ")));
+        }
+        QTRY_VERIFY2(shown().size() == 4, qPrintable(drawnTexts(&chart).join(u" | ")));
     }
 };
 

@@ -36,7 +36,11 @@ void ChartStyle::apply(QChart* chart, const QPalette& palette)
 
 void ChartStyle::setNiceRange(QValueAxis* axis, double lo, double hi, int wantedTicks)
 {
-    const NiceTicks::Axis a = NiceTicks::axis(lo, hi, wantedTicks);
+    setNiceRange(axis, NiceTicks::axis(lo, hi, wantedTicks));
+}
+
+void ChartStyle::setNiceRange(QValueAxis* axis, const NiceTicks::Axis& a)
+{
     axis->setRange(a.lo, a.hi);
     axis->setTickType(QValueAxis::TicksFixed);
     axis->setTickCount(a.tickCount());

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "ratechart.h"
 
-#include "widgets/common/chartstyle.h"
-
 #include "text/niceticks.h"
+#include "widgets/common/chartstyle.h"
 
 #include <algorithm>
 #include <cmath>
 #include <QChart>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -43,7 +43,9 @@ RateChart::RateChart(QWidget* parent)
     chart->setMargins(QMargins(2, 2, 2, 2));
     ChartStyle::apply(chart, palette());
     setRenderHint(QPainter::Antialiasing);
-    setMinimumHeight(160);
+    // The lowest the chart stays legible: below about eight lines Qt Charts draws the time axis's
+    // labels and title as "..." (measured offscreen: whole at 125 px with 16 px labels, cut at 120).
+    setMinimumHeight(8 * lineHeight());
 }
 
 void RateChart::setSamples(const QList<double>& samples, const QString& unit)
@@ -66,12 +68,42 @@ void RateChart::setSamples(const QList<double>& samples, const QString& unit)
     const double span = timeSpanFor(n - 1);
     if (m_x->min() != -span || m_x->max() != 0)
         ChartStyle::setRoundTicks(m_x, -span, 0);
-    const double lo = bottom < 0 ? bottom * 1.05 : 0;
-    const double hi = top > 0 ? top * 1.05 : (bottom < 0 ? 0 : 1);
-    const NiceTicks::Axis y = NiceTicks::axis(lo, hi, 5);
-    if (y.lo != m_y->min() || y.hi != m_y->max())
-        ChartStyle::setNiceRange(m_y, lo, hi, 5);
+    m_lo = bottom < 0 ? bottom * 1.05 : 0;
+    m_hi = top > 0 ? top * 1.05 : (bottom < 0 ? 0 : 1);
+    fitYAxis();
     m_y->setTitleText(unit);
+}
+
+void RateChart::fitYAxis()
+{
+    // Qt Charts gives each y label the plot's height over the tick count, less its padding
+    // (VerticalAxis::updateGeometry), and draws one that does not fit as "...". The plot is the
+    // view's height less about four and a half lines (margins, the time axis's labels and title:
+    // 71 px of 125 with 16 px labels, measured offscreen); from the view's height, not from
+    // QChart::plotAreaChanged, since a new range relays the chart out within setRange().
+    const int line = lineHeight();
+    const double room = height() - 4.5 * line;
+    NiceTicks::Axis y = NiceTicks::axis(m_lo, m_hi, 2);
+    for (int wanted = 5; wanted > 2; --wanted) {
+        const NiceTicks::Axis a = NiceTicks::axis(m_lo, m_hi, wanted);
+        if (a.tickCount() * (line + 6) <= room) {
+            y = a;
+            break;
+        }
+    }
+    if (y.lo != m_y->min() || y.hi != m_y->max() || y.tickCount() != m_y->tickCount())
+        ChartStyle::setNiceRange(m_y, y);
+}
+
+int RateChart::lineHeight() const
+{
+    return QFontMetrics(m_y->labelsFont()).height() + 2; // a label item's height: 16 px for 14
+}
+
+void RateChart::resizeEvent(QResizeEvent* event)
+{
+    QChartView::resizeEvent(event);
+    fitYAxis();
 }
 
 void RateChart::changeEvent(QEvent* event)

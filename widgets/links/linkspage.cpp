@@ -290,10 +290,6 @@ QWidget* LinksPage::createDetailPane()
     m_detail->setWordWrap(true);
     m_rateChart = new RateChart(pane);
     m_latencyChart = new RateChart(pane);
-    // At 1280x800 the pane is ~550 px high: the charts give up height before the figures' text
-    // loses its last line (the layout squeezes everything once the minimums do not fit).
-    for (RateChart* chart : {m_rateChart, m_latencyChart})
-        chart->setMinimumHeight(110);
     v->addWidget(m_detailTitle);
     v->addWidget(m_detail);
     v->addWidget(new QLabel(tr("Destination rate:"), pane));
