@@ -9387,10 +9387,6 @@ Was zuvor festgeschrieben wurde, bleibt erhalten.</translation>
         <translation>Metriken unter http://%1:%2/metrics</translation>
     </message>
     <message>
-        <source>watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 alerts), messages %9 at the sources and %10 at the destinations, lost %11, stalls %12</source>
-        <translation>Beobachtung nach %1 s beendet: Verbindungen %2 (%3 ok, %4 Warnung, %5 Alarm, %6 unbekannt), Ereignisse %7 (%8 Alarme), Nachrichten %9 an den Quellen und %10 an den Zielen, verloren %11, Stillstände %12</translation>
-    </message>
-    <message>
         <source>, %1 unknown (the watch&apos;s own connection is down)</source>
         <translation>, %1 unbekannt (die eigene Verbindung der Beobachtung ist unterbrochen)</translation>
     </message>
@@ -9436,6 +9432,10 @@ Exit-Status: 0 beendet, 1 nichts zu hören: kein Broker, kein Master, niemand au
     <message>
         <source>; ROS publishers asked again for %1 topics (the master listed them, none connected), %2 subscribed again, %3 silent now</source>
         <translation>; ROS-Publisher für %1 Topics erneut angefragt (der Master nannte sie, keiner verband sich), %2 neu abonniert, %3 jetzt stumm</translation>
+    </message>
+    <message>
+        <source>watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 alerts), messages %9 at the sources and %10 at the destinations, lost %11 by the counts and %13 by content, stalls %12</source>
+        <translation>Beobachtung nach %1 s beendet: Verbindungen %2 (%3 ok, %4 Warnung, %5 Alarm, %6 unbekannt), Ereignisse %7 (%8 Alarme), Nachrichten %9 an den Quellen und %10 an den Zielen, verloren %11 nach den Zählungen und %13 nach dem Inhalt, Stillstände %12</translation>
     </message>
 </context>
 <context>

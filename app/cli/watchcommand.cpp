@@ -326,7 +326,8 @@ struct WatchTally
     int unknown = 0; ///< links the watch cannot see a side of now
     quint64 sourceMessages = 0;
     quint64 destinationMessages = 0;
-    quint64 lost = 0;
+    quint64 lost = 0; ///< by the counts: a lower bound while the sources run (LinkTraffic::refreshLoss)
+    quint64 observedLost = 0; ///< by content: each message that went in and never came out
     quint64 stalls = 0;
     int links = 0;
 
@@ -343,6 +344,7 @@ struct WatchTally
             t.sourceMessages += f.source.messages;
             t.destinationMessages += f.destination.messages;
             t.lost += f.lost;
+            t.observedLost += f.observedLost;
             t.stalls += f.stalls;
         }
         return t;
@@ -354,8 +356,12 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
                   const RosMonitor& ros1)
 {
     const WatchTally t = WatchTally::of(monitor);
+    // Both losses: the counts' is a lower bound while a source runs (what it sent in the last second
+    // is not judged), the content's is exact where the two ends were matched; a summary of 10 %
+    // dropped in 13 s read "lost 3" with the counts' alone.
     err(Watch::tr("watch ended after %1 s: links %2 (%3 ok, %4 warning, %5 alert, %6 unknown), events %7 (%8 "
-                  "alerts), messages %9 at the sources and %10 at the destinations, lost %11, stalls %12")
+                  "alerts), messages %9 at the sources and %10 at the destinations, lost %11 by the counts "
+                  "and %13 by content, stalls %12")
             .arg(elapsedMs / 1000)
             .arg(t.links)
             .arg(t.levels[0])
@@ -367,7 +373,8 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
             .arg(t.sourceMessages)
             .arg(t.destinationMessages)
             .arg(t.lost)
-            .arg(t.stalls));
+            .arg(t.stalls)
+            .arg(t.observedLost));
     const QJsonObject summary {{u"event"_s, u"summary"_s},
                                {u"seconds"_s, double(elapsedMs) / 1000},
                                {u"links"_s, t.links},
@@ -376,6 +383,7 @@ void printSummary(const LinkMonitor& monitor, qint64 elapsedMs, int events, int 
                                {u"source_messages"_s, double(t.sourceMessages)},
                                {u"destination_messages"_s, double(t.destinationMessages)},
                                {u"lost"_s, double(t.lost)},
+                               {u"observed_lost"_s, double(t.observedLost)},
                                {u"stalls"_s, double(t.stalls)},
                                {u"ok"_s, t.levels[0]},
                                {u"warning"_s, t.levels[1]},

@@ -511,8 +511,9 @@ private slots:
         QVERIFY2(r.exit == 0, qPrintable(r.err));
         QVERIFY2(
             r.err.contains(u"watch ended after 1 s: links 1 (0 ok, 0 warning, 0 alert, 1 unknown), events 0 "
-                           u"(0 alerts), messages 0 at the sources and 0 at the destinations, lost 0, "
-                           u"stalls 0"_s),
+                           u"(0 alerts), messages 0 at the sources and 0 at the destinations, lost 0 by the "
+                           u"counts and 0 "
+                           u"by content, stalls 0"_s),
             qPrintable(r.err));
         const QStringList lines = r.out.trimmed().split(u'\n');
         const QJsonObject summary = QJsonDocument::fromJson(lines.last().toUtf8()).object();
@@ -521,6 +522,7 @@ private slots:
         QCOMPARE(summary.value(u"events"_s).toInt(), 0);
         QCOMPARE(summary.value(u"unknown"_s).toInt(), 1); // the broker was never reached
         QCOMPARE(summary.value(u"lost"_s).toDouble(), 0.0);
+        QCOMPARE(summary.value(u"observed_lost"_s).toDouble(), 0.0);
     }
 
     // Issue 31: a watch whose broker and master never answer says so within seconds and exits 1
