@@ -524,7 +524,10 @@ Status DemoLab::launchServers(const Options& o)
     if (d->masterUri.isEmpty() && o.ros != 2) {
         if (rosmaster.isEmpty())
             return stopWith(tr("the demo needs rosmaster (scripts/setup.sh installs it) or --ros-master"));
-        const quint16 port = LoopbackPorts::freePort();
+        QList<quint16> taken; // the broker's, which may not listen yet
+        for (const auto& s : std::as_const(started))
+            taken << s.second;
+        const quint16 port = LoopbackPorts::freePort(taken);
         d->masterUri = u"http://127.0.0.1:%1/"_s.arg(port);
         d->masterPort = port;
         // With a far side the master listens on every address (ROS_IP not a loopback one), and

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The test helper itself: real mosquitto and rosmaster on free loopback ports, reachable with the
 // standard tools, and gone without a trace when stopped.
+#include "base/loopbackports.h"
 #include "testservers.h"
 
 #include <csignal>
@@ -35,6 +36,19 @@ class TestTestServers : public QObject
 {
     Q_OBJECT
 private slots:
+    // The demo lab's broker and master once got the same port (the broker launched, not yet
+    // listening): a port handed out is never handed out again, though nothing listens on it yet.
+    void aTakenPortIsNotHandedOutAgain()
+    {
+        QList<quint16> taken;
+        for (int i = 0; i < 200; ++i) {
+            const quint16 port = LoopbackPorts::freePort(taken);
+            QVERIFY(port != 0);
+            QVERIFY2(!taken.contains(port), qPrintable(QString::number(port)));
+            taken << port;
+        }
+    }
+
     void mosquittoCarriesMessagesOnItsOwnPort()
     {
         TestServers servers;
