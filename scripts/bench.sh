@@ -23,7 +23,7 @@ gate() {
         "bench_metrics         BENCH_LINKS=1000"
         "bench_discovery       BENCH_TOPICS=2000 BENCH_RATE=5000 BENCH_SECONDS=8"
         "bench_watch           BENCH_LINKS=300 BENCH_SECONDS=12"
-        "bench_watch           BENCH_FORM=fleet BENCH_LINKS=2000 BENCH_RATE=2000 BENCH_SECONDS=60 BENCH_IDLE_S=5 BENCH_SETTLE_S=0 BENCH_SCRAPE_S=2"
+        "bench_watch           BENCH_FORM=fleet BENCH_LINKS=2000 BENCH_RATE=2000 BENCH_SECONDS=60 BENCH_IDLE_S=10 BENCH_SETTLE_S=0 BENCH_SCRAPE_S=2"
         "bench_bridge          BENCH_COUNT=40 BENCH_SWEEP=0"
         "bench_ros2bridge      BENCH_COUNT=40 BENCH_LARGE=1"
         "bench_pages           BENCH_WARMUP_S=10 BENCH_SECONDS=8"
